@@ -1,0 +1,46 @@
+// Stage 3: the contact lines. One line per facet normal n of Q1 ⊕ (−Q2) (faces of P1, faces of P2,
+// crossing Gauss-map arcs of edge pairs): the pair is separated by the plane of normal n iff
+//   n·d > ρ1·h1(n) + ρ2·h2(n),  i.e.  ρ2 < (n·d − ρ1·h1)/h2  =  slope·ρ1 + intercept.
+#pragma once
+#include "scalecert/polyhedron.hpp"
+#include "scalecert/scene.hpp"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace scalecert {
+
+struct ContactLine {
+    Vec3z normal;                 // primitive, pointing from P1 towards P2
+    Q h1, h2, nd;                 // h1 = max n·(v−s1), h2 = max −n·(w−s2), nd = n·d; h1, h2 > 0
+    Q slope, intercept;           // slope = −h1/h2 < 0, intercept = nd/h2
+    std::vector<int> feat1, feat2;  // contact features: maximisers of n on P1, of −n on P2
+    std::string contact;          // "FV", "VF", "EE", "FF", "FE", "EF"
+    Q at(const Q& rho1) const { return slope * rho1 + intercept; }
+};
+
+// "V", "E" or "F" for a feature of 1, 2 or more vertices.
+char feature_letter(size_t n_vertices);
+
+struct LineStats {
+    std::uint64_t face_normals = 0, edge_pairs_tested = 0, arc_crossings = 0, distinct_normals = 0;
+};
+
+struct Model {
+    Scene scene;
+    Polyhedron P[2];
+    Vec3q s[2];
+    Vec3q d;  // s2 − s1
+    std::vector<ContactLine> lines;  // sorted by normal
+    LineStats stats;
+};
+
+// Builds the exact polyhedra, checks the seeds, and enumerates every contact line.
+Model build_model(const Scene& scene);
+
+// The line of normal n (any nonzero direction, not necessarily a facet normal of the sum):
+// support values, features and the line, computed by scanning the polyhedra.
+ContactLine line_for_normal(const Model& m, const Vec3z& n);
+
+}  // namespace scalecert

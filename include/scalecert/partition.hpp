@@ -1,0 +1,29 @@
+// Stage 6: the certified partition of I1 × I2.
+#pragma once
+#include "scalecert/query.hpp"
+
+namespace scalecert {
+
+using Pt2 = std::array<Q, 2>;
+
+struct SeparatedRegion {
+    size_t piece;             // index into Curve::pieces; its line's normal separates the region
+    std::vector<Pt2> verts;   // closed polygon, counter-clockwise; the points on the curve excluded
+};
+
+struct Partition {
+    std::vector<Pt2> overlap;              // convex polygon (may be empty, a point or a segment)
+    std::vector<Witness> overlap_witnesses;  // one per vertex of `overlap`
+    std::vector<SeparatedRegion> separated;  // nonempty interiors only
+    std::vector<Witness> switch_witnesses;   // one per switch point with ρ2 > 0 (touching)
+    std::optional<Witness> growth_witness;   // at (ρ*, ρ*) when ρ* > 0
+};
+
+// Clips a convex polygon (counter-clockwise) to ρ2 ≥ a·ρ1 + b (above = true) or ≤. Drops repeated
+// and collinear vertices; the result starts at its lowest, then leftmost vertex.
+std::vector<Pt2> clip(const std::vector<Pt2>& poly, const Q& a, const Q& b, bool above);
+std::vector<Pt2> normalize_polygon(std::vector<Pt2> poly);
+
+Partition build_partition(const Model& m, const Curve& c);
+
+}  // namespace scalecert

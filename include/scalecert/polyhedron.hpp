@@ -1,0 +1,42 @@
+// Stage 2: exact convex polyhedra. Faces are true faces (coplanar hull triangles merged), every
+// normal a primitive integer vector, every index an index into the input point list.
+#pragma once
+#include "scalecert/exact.hpp"
+
+#include <vector>
+
+namespace scalecert {
+
+struct Face {
+    Vec3z normal;            // outward, primitive
+    std::vector<int> verts;  // true vertices on the face, counter-clockwise seen from outside
+};
+
+struct Edge {
+    int a, b;    // vertex indices, a < b
+    int f0, f1;  // the two faces that meet along the edge
+};
+
+struct Polyhedron {
+    std::vector<Vec3q> points;           // input points, as given
+    std::vector<int> vertices;           // indices of the extreme points (first copy of duplicates)
+    std::vector<Face> faces;
+    std::vector<Edge> edges;
+    std::vector<std::vector<int>> adj;   // per input index: adjacent vertices (empty for non-vertices)
+
+    // The vertices maximising n·x (a vertex, an edge's two ends or a face's vertices), sorted,
+    // and the maximum value. Hill-climbs the vertex graph, then collects the tied face.
+    std::vector<int> argmax(const Vec3z& n, Q* value = nullptr) const;
+    Q support(const Vec3z& n) const;     // max over vertices of n·x
+    bool strictly_inside(const Vec3q& p) const;
+};
+
+// Triangles of the convex hull of pts (CGAL), as index triples oriented outward.
+// Precondition: pts has 4 affinely independent points.
+std::vector<std::array<int, 3>> hull_triangles(const std::vector<Vec3q>& pts);
+
+// Builds the exact polyhedron. Throws InputError (prefixed with `name`) when the points do not
+// span 3 dimensions.
+Polyhedron build_polyhedron(const std::vector<Vec3q>& pts, const std::string& name);
+
+}  // namespace scalecert

@@ -1,0 +1,31 @@
+// Stage 1: the scene as the user wrote it, read exactly.
+#pragma once
+#include "scalecert/exact.hpp"
+
+#include <string>
+#include <vector>
+
+namespace scalecert {
+
+struct PolyInput {
+    std::vector<Vec3q> points;  // as given (duplicates and non-extreme points allowed)
+    Vec3q seed;                 // given, or the mean of the points
+    bool seed_given = false;
+};
+
+struct Scene {
+    PolyInput P[2];
+    Q lo[2], hi[2];  // I1 = [lo[0], hi[0]], I2 = [lo[1], hi[1]]
+};
+
+struct ReadOptions {
+    bool binary_doubles = false;  // JSON/OFF numbers read as the IEEE doubles strtod gives
+};
+
+// Reads and checks a scene file. Throws InputError naming the file and the offending field.
+// (Geometric checks that need the hull — rank, seed strictly inside — are done by build_model.)
+Scene load_scene(const std::string& path, const ReadOptions& opt = {});
+Scene parse_scene_text(const std::string& text, const std::string& name, const std::string& base_dir,
+                       const ReadOptions& opt = {});
+
+}  // namespace scalecert

@@ -1,0 +1,19 @@
+// Exact witnesses by linear programming (CGAL's exact LP solver), kept in one translation unit.
+#pragma once
+#include "scalecert/exact.hpp"
+
+#include <optional>
+#include <vector>
+
+namespace scalecert {
+
+// Finds λ ≥ 0 (Σλ = 1) on A and μ ≥ 0 (Σμ = 1) on B with Σ λ_i A_i = Σ μ_j B_j: a common point of
+// conv(A) and conv(B). None when they do not meet.
+struct CommonPoint { std::vector<Q> lambda, mu; };
+std::optional<CommonPoint> common_point(const std::vector<Vec3q>& A, const std::vector<Vec3q>& B);
+
+// Weights λ_i > 0 (all of them), Σλ = 1, Σ λ_i V_i = p: proves p is interior to conv(V) when V
+// spans 3 dimensions. None when p is not in the relative interior.
+std::optional<std::vector<Q>> positive_combination(const std::vector<Vec3q>& V, const Vec3q& p);
+
+}  // namespace scalecert

@@ -1,0 +1,193 @@
+#include "scalecert/certificate.hpp"
+
+#include "scalecert/closed_forms.hpp"
+#include "scalecert/witness.hpp"
+
+namespace scalecert {
+
+namespace {
+const char* kFormat = "scalecert-1";
+
+// An exact value and, in `key_double`, its nearest double.
+void put(Json& o, const std::string& key, const Q& q) {
+    o[key] = to_exact_string(q);
+    o[key + "_double"] = to_double_rn(q);
+}
+void put(Json& o, const std::string& key, const std::vector<Q>& qs) {
+    Json a = Json::array(), b = Json::array();
+    for (const Q& q : qs) a.push_back(to_exact_string(q)), b.push_back(to_double_rn(q));
+    o[key] = a;
+    o[key + "_double"] = b;
+}
+void put(Json& o, const std::string& key, const Vec3q& v) { put(o, key, std::vector<Q>(v.begin(), v.end())); }
+Json ints(const Vec3z& v) { return Json::array({v[0].get_str(), v[1].get_str(), v[2].get_str()}); }
+Json weights(const std::vector<std::pair<int, Q>>& w) {
+    Json a = Json::array();
+    for (const auto& [i, q] : w) a.push_back(Json::array({i, to_exact_string(q)}));
+    return a;
+}
+Json features(const std::vector<int>& f1, const std::vector<int>& f2) {
+    return Json{{"P1", f1}, {"P2", f2}};
+}
+
+Json scene_json(const Model& m) {
+    Json s;
+    const char* names[2] = {"P1", "P2"};
+    for (int i = 0; i < 2; ++i) {
+        Json verts = Json::array();
+        for (const Vec3q& v : m.scene.P[i].points)
+            verts.push_back(Json::array({to_exact_string(v[0]), to_exact_string(v[1]), to_exact_string(v[2])}));
+        const Vec3q& sd = m.s[i];
+        s[names[i]] = Json{{"vertices", verts},
+                           {"seed", Json::array({to_exact_string(sd[0]), to_exact_string(sd[1]), to_exact_string(sd[2])})}};
+    }
+    s["I1"] = Json::array({to_exact_string(m.scene.lo[0]), to_exact_string(m.scene.hi[0])});
+    s["I2"] = Json::array({to_exact_string(m.scene.lo[1]), to_exact_string(m.scene.hi[1])});
+    return s;
+}
+
+Json model_json(const Model& m) {
+    Json j;
+    const char* names[2] = {"P1", "P2"};
+    for (int i = 0; i < 2; ++i)
+        j[names[i]] = Json{{"vertices", m.P[i].vertices.size()}, {"edges", m.P[i].edges.size()}, {"faces", m.P[i].faces.size()}};
+    j["contact_lines"] = m.lines.size();
+    j["edge_pairs_tested"] = m.stats.edge_pairs_tested;
+    j["gauss_arc_crossings"] = m.stats.arc_crossings;
+    return j;
+}
+
+Json witness_json(const Witness& w) {
+    Json j;
+    put(j, "rho1", w.rho1);
+    put(j, "rho2", w.rho2);
+    put(j, "point", w.point);
+    j["P1"] = weights(w.w1);
+    j["P2"] = weights(w.w2);
+    return j;
+}
+
+Json piece_json(const Model& m, const Curve& c, const CurvePiece& p, bool certificate) {
+    const EnvPiece& e = c.env.pieces[p.env];
+    const ContactLine& L = m.lines[e.line];
+    Json j;
+    put(j, "rho1", std::vector<Q>{p.from, p.to});
+    put(j, "slope", L.slope);
+    put(j, "intercept", L.intercept);
+    j["contact"] = L.contact;
+    j["features"] = features(L.feat1, L.feat2);
+    j["closed_form"] = closed_form_line(m, L).formula;
+    j["normal"] = ints(L.normal);
+    if (certificate) {
+        put(j, "h1", L.h1);
+        put(j, "h2", L.h2);
+        j["support_vertices"] = Json{{"P1", L.feat1.front()}, {"P2", L.feat2.front()}};
+    }
+    if (e.same.size() > 1) {
+        Json also = Json::array();
+        for (size_t k : e.same)
+            if (k != e.line) also.push_back(ints(m.lines[k].normal));
+        j["same_line_normals"] = also;
+    }
+    return j;
+}
+
+Json switch_json(const SwitchPoint& s) {
+    Json j;
+    put(j, "rho1", s.rho1);
+    put(j, "rho2", s.rho2);
+    j["contact"] = s.contact.label;
+    j["features"] = features(s.contact.feat1, s.contact.feat2);
+    j["equation"] = s.equation;
+    return j;
+}
+
+Json curve_body(const Model& m, const Curve& c, bool certificate) {
+    Json j;
+    j["format"] = kFormat;
+    Json pieces = Json::array();
+    for (const CurvePiece& p : c.pieces) pieces.push_back(piece_json(m, c, p, certificate));
+    j["pieces"] = pieces;
+    Json sw = Json::array();
+    for (const SwitchPoint& s : c.switches) sw.push_back(switch_json(s));
+    j["switch_points"] = sw;
+    put(j, "growth_distance", c.growth.value);
+    j["growth_distance_in_rectangle"] = c.growth.in_rectangle;
+    if (sgn(c.growth.value) == 0) j["growth_distance_note"] = "the seeds coincide: every scaling pair overlaps";
+    j["model"] = model_json(m);
+    return j;
+}
+}  // namespace
+
+Json curve_json(const Model& m, const Curve& c) { return curve_body(m, c, false); }
+
+Json query_json(const Model& m, const QueryResult& r) {
+    Json j;
+    j["verdict"] = verdict_name(r.verdict);
+    j["format"] = kFormat;
+    put(j, "rho1", r.rho1);
+    put(j, "rho2", r.rho2);
+    Json cert;
+    if (r.plane) {
+        const PlaneCert& p = *r.plane;
+        const ContactLine& L = m.lines[p.line];
+        Json pl;
+        pl["normal"] = ints(L.normal);
+        put(pl, "offset", p.offset);
+        put(pl, "P1_max", p.c1);
+        put(pl, "P2_min", p.c2);
+        pl["support_vertices"] = Json{{"P1", p.support1}, {"P2", p.support2}};
+        pl["contact"] = L.contact;
+        cert["plane"] = pl;
+    }
+    if (r.witness) cert["witness"] = witness_json(*r.witness);
+    j["certificate"] = cert;
+    j["scene"] = scene_json(m);
+    return j;
+}
+
+Json partition_json(const Model& m, const Curve& c, const Partition& p) {
+    Json j = curve_body(m, c, true);
+    for (size_t k = 0, w = 0; k < c.switches.size(); ++k)
+        if (sgn(c.switches[k].rho2) > 0) j["switch_points"][k]["witness"] = witness_json(p.switch_witnesses[w++]);
+    if (p.growth_witness) j["growth_distance_witness"] = witness_json(*p.growth_witness);
+    Json regions;
+    auto poly = [](const std::vector<Pt2>& v) {
+        Json a = Json::array(), b = Json::array();
+        for (const Pt2& x : v) {
+            a.push_back(Json::array({to_exact_string(x[0]), to_exact_string(x[1])}));
+            b.push_back(Json::array({to_double_rn(x[0]), to_double_rn(x[1])}));
+        }
+        return std::make_pair(a, b);
+    };
+    auto [ov, ovd] = poly(p.overlap);
+    Json wit = Json::array();
+    for (const Witness& w : p.overlap_witnesses) wit.push_back(witness_json(w));
+    regions["overlap"] = Json{{"vertices", ov}, {"vertices_double", ovd}, {"witnesses", wit}};
+    Json seps = Json::array();
+    for (const SeparatedRegion& r : p.separated) {
+        auto [a, b] = poly(r.verts);
+        seps.push_back(Json{{"piece", r.piece}, {"vertices", a}, {"vertices_double", b}});
+    }
+    regions["separated"] = seps;
+    j["regions"] = regions;
+    // Seeds strictly inside: strictly positive weights on the vertices.
+    Json seeds;
+    const char* names[2] = {"P1", "P2"};
+    for (int i = 0; i < 2; ++i) {
+        std::vector<Vec3q> V;
+        for (int v : m.P[i].vertices) V.push_back(m.P[i].points[v]);
+        auto lam = positive_combination(V, m.s[i]);
+        if (!lam) throw std::logic_error("seed inside but no positive combination found");
+        std::vector<std::pair<int, Q>> w;
+        for (size_t k = 0; k < V.size(); ++k) w.push_back({m.P[i].vertices[k], (*lam)[k]});
+        seeds[names[i]] = weights(w);
+    }
+    j["seed_interior"] = seeds;
+    j["scene"] = scene_json(m);
+    return j;
+}
+
+std::string dump(const Json& j) { return j.dump(1) + "\n"; }
+
+}  // namespace scalecert

@@ -1,0 +1,113 @@
+// The scalecert command: curve, query, partition.
+#include "scalecert/certificate.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <unistd.h>
+
+using namespace scalecert;
+
+namespace {
+
+// Writes through a temporary file and a rename, so a failed run never leaves a half-written file.
+void emit(const std::string& text, const std::string& out) {
+    if (out.empty()) {
+        std::cout << text;
+        std::cout.flush();
+        if (!std::cout) throw InputError("cannot write to standard output");
+        return;
+    }
+    std::string tmp = out + ".tmp." + std::to_string(::getpid());
+    {
+        std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
+        if (!f) throw InputError(out + ": cannot open for writing");
+        f << text;
+        f.flush();
+        if (!f) {
+            std::remove(tmp.c_str());
+            throw InputError(out + ": write failed");
+        }
+    }
+    if (std::rename(tmp.c_str(), out.c_str()) != 0) {
+        std::remove(tmp.c_str());
+        throw InputError(out + ": cannot rename the temporary file into place");
+    }
+}
+
+Q read_rho(const std::string& text, const char* name, const ReadOptions& opt) {
+    Q r;
+    try {
+        if (opt.binary_doubles) {
+            char* end = nullptr;
+            double d = std::strtod(text.c_str(), &end);
+            if (end == text.c_str() || *end) throw InputError("'" + text + "' is not a number");
+            r = exact_from_double(d);
+        } else {
+            r = parse_exact(text);
+        }
+    } catch (const InputError& e) {
+        throw InputError(std::string(name) + ": " + e.what());
+    }
+    if (sgn(r) <= 0) throw InputError(std::string(name) + ": a scaling factor must be > 0");
+    return r;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{"scalecert: exact, certified collision of uniformly scaled convex polyhedra"};
+    app.require_subcommand(1);
+    ReadOptions opt;
+    std::string scene_path, out, rho1s, rho2s;
+    bool as_json = false;
+    auto common = [&](CLI::App* sub) {
+        sub->add_option("SCENE", scene_path, "scene file (JSON)")->required();
+        sub->add_option("--out", out, "write the output to this file (atomically)");
+        sub->add_flag("--binary-doubles", opt.binary_doubles, "read JSON/OFF numbers as IEEE doubles");
+    };
+    CLI::App* curve = app.add_subcommand("curve", "the touching curve over I1, its switch points and the growth distance");
+    common(curve);
+    CLI::App* query = app.add_subcommand("query", "separated / touching / overlapping at (RHO1, RHO2)");
+    common(query);
+    query->add_option("RHO1", rho1s, "scaling of P1 (exact: 3/2, 1.5, 15e-1)")->required();
+    query->add_option("RHO2", rho2s, "scaling of P2")->required();
+    query->add_flag("--json", as_json, "the verdict with its certificate, as JSON");
+    CLI::App* part = app.add_subcommand("partition", "the certified partition of I1 x I2 (the certificate)");
+    common(part);
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        std::cerr << "scalecert: error: " << e.what() << " (see scalecert --help)\n";
+        return 2;
+    }
+    try {
+        Model m = build_model(load_scene(scene_path, opt));
+        Curve c = build_curve(m);
+        std::string text;
+        if (*curve) {
+            text = dump(curve_json(m, c));
+        } else if (*query) {
+            Q r1 = read_rho(rho1s, "RHO1", opt), r2 = read_rho(rho2s, "RHO2", opt);
+            QueryResult r = scalecert::query(m, c, r1, r2, as_json);
+            text = as_json ? dump(query_json(m, r)) : std::string(verdict_name(r.verdict)) + "\n";
+        } else {
+            text = dump(partition_json(m, c, build_partition(m, c)));
+        }
+        emit(text, out);
+        return 0;
+    } catch (const InputError& e) {
+        std::cerr << "scalecert: error: " << e.what() << "\n";
+        return 2;
+    } catch (const std::bad_alloc&) {
+        std::cerr << "scalecert: error: out of memory\n";
+        return 2;
+    } catch (const std::exception& e) {
+        std::cerr << "scalecert: internal error: " << e.what() << "\n";
+        return 3;
+    }
+}

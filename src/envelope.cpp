@@ -1,0 +1,129 @@
+#include "scalecert/envelope.hpp"
+
+#include "scalecert/closed_forms.hpp"
+
+#include <algorithm>
+#include <numeric>
+
+namespace scalecert {
+
+namespace {
+// ρ1 where lines i and j (different slopes) meet.
+Q meet(const ContactLine& a, const ContactLine& b) { return (b.intercept - a.intercept) / (a.slope - b.slope); }
+}  // namespace
+
+Envelope upper_envelope(const std::vector<ContactLine>& lines) {
+    std::vector<size_t> order(lines.size());
+    std::iota(order.begin(), order.end(), size_t{0});
+    // Increasing slope; for one slope the highest line first; ties by normal (lines are sorted).
+    std::stable_sort(order.begin(), order.end(), [&](size_t i, size_t j) {
+        if (lines[i].slope != lines[j].slope) return lines[i].slope < lines[j].slope;
+        return lines[i].intercept > lines[j].intercept;
+    });
+    std::vector<EnvPiece> st;
+    for (size_t k = 0; k < order.size(); ++k) {
+        const ContactLine& L = lines[order[k]];
+        if (!st.empty()) {
+            const ContactLine& top = lines[st.back().line];
+            if (top.slope == L.slope) {
+                if (top.intercept == L.intercept) st.back().same.push_back(order[k]);
+                continue;  // lower parallel line: never on the envelope
+            }
+        }
+        // Max-envelope with increasing slopes: drop the top while it is nowhere strictly highest.
+        while (st.size() >= 2 &&
+               meet(lines[st[st.size() - 2].line], lines[st.back().line]) >= meet(lines[st.back().line], L))
+            st.pop_back();
+        st.push_back({order[k], {order[k]}, Q(0), std::nullopt});
+    }
+    for (size_t k = 0; k + 1 < st.size(); ++k) st[k].to = meet(lines[st[k].line], lines[st[k + 1].line]);
+    for (size_t k = 1; k < st.size(); ++k) st[k].from = *st[k - 1].to;
+    // Keep ρ1 ≥ 0 only.
+    size_t first = 0;
+    while (first + 1 < st.size() && sgn(*st[first].to) <= 0) ++first;
+    st.erase(st.begin(), st.begin() + static_cast<long>(first));
+    st.front().from = 0;
+    for (auto& p : st) std::sort(p.same.begin(), p.same.end());
+    return Envelope{st};
+}
+
+size_t Envelope::locate(const Q& x) const {
+    // First piece whose right end is > x (or the last piece).
+    size_t lo = 0, hi = pieces.size() - 1;
+    while (lo < hi) {
+        size_t mid = (lo + hi) / 2;
+        if (*pieces[mid].to > x) hi = mid; else lo = mid + 1;
+    }
+    return lo;
+}
+
+Q Envelope::value(const std::vector<ContactLine>& lines, const Q& x) const {
+    return lines[pieces[locate(x)].line].at(x);
+}
+
+Contact contact_at(const Model& m, const Q& rho1, const Q& rho2) {
+    Contact c;
+    bool first = true;
+    for (const ContactLine& L : m.lines) {
+        if (L.at(rho1) != rho2) continue;
+        if (first) {
+            c.feat1 = L.feat1;
+            c.feat2 = L.feat2;
+            first = false;
+            continue;
+        }
+        std::vector<int> a, b;
+        std::set_intersection(c.feat1.begin(), c.feat1.end(), L.feat1.begin(), L.feat1.end(), std::back_inserter(a));
+        std::set_intersection(c.feat2.begin(), c.feat2.end(), L.feat2.begin(), L.feat2.end(), std::back_inserter(b));
+        c.feat1 = std::move(a);
+        c.feat2 = std::move(b);
+    }
+    if (first || c.feat1.empty() || c.feat2.empty()) throw std::logic_error("contact_at: point not on a consistent contact");
+    c.label = {feature_letter(c.feat1.size()), feature_letter(c.feat2.size())};
+    return c;
+}
+
+Curve build_curve(const Model& m) {
+    Curve c;
+    c.env = upper_envelope(m.lines);
+    const Q& lo = m.scene.lo[0];
+    const Q& hi = m.scene.hi[0];
+    for (size_t k = c.env.locate(lo); k < c.env.pieces.size(); ++k) {
+        const EnvPiece& p = c.env.pieces[k];
+        Q from = std::max(p.from, lo);
+        Q to = p.to ? std::min(*p.to, hi) : hi;
+        if (!c.pieces.empty() && from >= hi) break;
+        c.pieces.push_back({from, to, k});
+        if (to >= hi) break;
+    }
+    for (size_t k = 0; k + 1 < c.pieces.size(); ++k) {
+        const ContactLine& L = m.lines[c.env.pieces[c.pieces[k].env].line];
+        const ContactLine& R = m.lines[c.env.pieces[c.pieces[k + 1].env].line];
+        ClosedSwitch cs = closed_form_switch(m, L, R);
+        SwitchPoint sp;
+        sp.rho1 = cs.rho1;
+        sp.rho2 = L.at(sp.rho1);
+        sp.left = k;
+        sp.right = k + 1;
+        sp.equation = cs.equation;
+        if (sp.rho1 != c.pieces[k].to) throw std::logic_error("closed-form switch point disagrees with the envelope");
+        sp.contact = contact_at(m, sp.rho1, sp.rho2);
+        c.switches.push_back(std::move(sp));
+    }
+    // Growth distance: f(ρ) = ρ. g(ρ) = f(ρ) − ρ decreases strictly, g(0) = max intercept ≥ 0.
+    size_t lo_k = 0, hi_k = c.env.pieces.size() - 1;
+    while (lo_k < hi_k) {
+        size_t mid = (lo_k + hi_k) / 2;
+        const Q& x = *c.env.pieces[mid].to;
+        if (m.lines[c.env.pieces[mid].line].at(x) <= x) hi_k = mid; else lo_k = mid + 1;
+    }
+    const ContactLine& G = m.lines[c.env.pieces[lo_k].line];
+    c.growth.value = G.intercept / (Q(1) - G.slope);
+    c.growth.env = lo_k;
+    const Scene& s = m.scene;
+    c.growth.in_rectangle = c.growth.value >= s.lo[0] && c.growth.value <= s.hi[0] &&
+                            c.growth.value >= s.lo[1] && c.growth.value <= s.hi[1];
+    return c;
+}
+
+}  // namespace scalecert

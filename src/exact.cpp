@@ -1,0 +1,118 @@
+#include "scalecert/exact.hpp"
+
+#include <mpfr.h>
+#include <cmath>
+
+namespace scalecert {
+
+Vec3z primitive(const Vec3z& v) {
+    Z g = 0;
+    for (const Z& c : v) mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), c.get_mpz_t());
+    if (g == 0) throw std::logic_error("primitive(): zero vector");
+    Vec3z r;
+    for (int k = 0; k < 3; ++k) mpz_divexact(r[k].get_mpz_t(), v[k].get_mpz_t(), g.get_mpz_t());
+    return r;
+}
+
+Vec3z primitive(const Vec3q& v) {
+    Z l = 1;
+    for (const Q& c : v) mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), c.get_den_mpz_t());
+    Vec3z z;
+    for (int k = 0; k < 3; ++k) z[k] = Z(v[k] * l);
+    return primitive(z);
+}
+
+namespace {
+bool all_digits(const std::string& s, size_t b, size_t e) {
+    if (b >= e) return false;
+    for (size_t i = b; i < e; ++i)
+        if (s[i] < '0' || s[i] > '9') return false;
+    return true;
+}
+// [+-]digits
+Z parse_integer(const std::string& s) {
+    size_t b = (!s.empty() && (s[0] == '-' || s[0] == '+')) ? 1 : 0;
+    if (!all_digits(s, b, s.size())) throw InputError("'" + s + "' is not an exact number");
+    return Z(s[0] == '+' ? s.substr(1) : s, 10);
+}
+}  // namespace
+
+Q parse_exact(const std::string& text) {
+    const std::string bad = "'" + text + "' is not an exact number";
+    if (text.empty() || text.size() > 100000) throw InputError(bad);
+    size_t slash = text.find('/');
+    if (slash != std::string::npos) {
+        Z p = parse_integer(text.substr(0, slash));
+        std::string ds = text.substr(slash + 1);
+        if (ds.empty() || ds[0] == '-' || ds[0] == '+') throw InputError(bad);
+        Z q = parse_integer(ds);
+        if (q == 0) throw InputError("'" + text + "' has a zero denominator");
+        Q r(p, q);
+        r.canonicalize();
+        return r;
+    }
+    size_t i = 0;
+    bool negative = false;
+    if (text[i] == '+' || text[i] == '-') negative = text[i++] == '-';
+    size_t int_b = i;
+    while (i < text.size() && std::isdigit(static_cast<unsigned char>(text[i]))) ++i;
+    std::string digits = text.substr(int_b, i - int_b);
+    long frac_len = 0;
+    if (i < text.size() && text[i] == '.') {
+        size_t fb = ++i;
+        while (i < text.size() && std::isdigit(static_cast<unsigned char>(text[i]))) ++i;
+        digits += text.substr(fb, i - fb);
+        frac_len = static_cast<long>(i - fb);
+    }
+    if (digits.empty()) throw InputError(bad);
+    long exponent = 0;
+    if (i < text.size() && (text[i] == 'e' || text[i] == 'E')) {
+        ++i;
+        size_t eb = i;
+        if (i < text.size() && (text[i] == '+' || text[i] == '-')) ++i;
+        if (!all_digits(text, i, text.size())) throw InputError(bad);
+        if (text.size() - i > 6) throw InputError("'" + text + "' has an exponent too large to read exactly");
+        exponent = std::stol(text.substr(eb));
+        i = text.size();
+    }
+    if (i != text.size()) throw InputError(bad);
+    long e = exponent - frac_len;
+    if (e > 100000 || e < -100000) throw InputError("'" + text + "' has an exponent too large to read exactly");
+    Z m(digits, 10);
+    Z p10;
+    mpz_ui_pow_ui(p10.get_mpz_t(), 10, static_cast<unsigned long>(e < 0 ? -e : e));
+    Q r = e >= 0 ? Q(m * p10) : Q(m, p10);
+    r.canonicalize();
+    return negative ? Q(-r) : r;
+}
+
+Q exact_from_double(double d) {
+    if (!std::isfinite(d)) throw InputError("value is not finite");
+    Q r;
+    mpq_set_d(r.get_mpq_t(), d);
+    return r;
+}
+
+std::string to_exact_string(const Q& q) {
+    Q c = q;
+    c.canonicalize();
+    return c.get_str(10);  // GMP prints "p" when q = 1 and "p/q" otherwise, q > 0
+}
+
+double to_double_rn(const Q& q) {
+    mpfr_t x;
+    mpfr_init2(x, 53);
+    mpfr_exp_t emin = mpfr_get_emin(), emax = mpfr_get_emax();
+    mpfr_set_emin(-1073);  // IEEE binary64 range, so subnormals round as in hardware
+    mpfr_set_emax(1024);
+    int t = mpfr_set_q(x, q.get_mpq_t(), MPFR_RNDN);
+    t = mpfr_check_range(x, t, MPFR_RNDN);
+    mpfr_subnormalize(x, t, MPFR_RNDN);
+    double d = mpfr_get_d(x, MPFR_RNDN);
+    mpfr_clear(x);
+    mpfr_set_emin(emin);
+    mpfr_set_emax(emax);
+    return d;
+}
+
+}  // namespace scalecert

@@ -1,0 +1,106 @@
+#include "scalecert/partition.hpp"
+
+#include <algorithm>
+
+namespace scalecert {
+
+namespace {
+Q cross2(const Pt2& o, const Pt2& a, const Pt2& b) {
+    return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
+}
+}  // namespace
+
+std::vector<Pt2> normalize_polygon(std::vector<Pt2> p) {
+    // Remove repeats (cyclically), then collinear middle vertices.
+    std::vector<Pt2> q;
+    for (const Pt2& v : p)
+        if (q.empty() || q.back() != v) q.push_back(v);
+    while (q.size() > 1 && q.front() == q.back()) q.pop_back();
+    for (bool changed = true; changed && q.size() > 2;) {
+        changed = false;
+        for (size_t i = 0; i < q.size() && q.size() > 2; ++i) {
+            const Pt2& a = q[(i + q.size() - 1) % q.size()];
+            const Pt2& c = q[(i + 1) % q.size()];
+            if (sgn(cross2(a, q[i], c)) == 0) {
+                q.erase(q.begin() + static_cast<long>(i));
+                changed = true;
+                break;
+            }
+        }
+    }
+    if (q.size() == 2 && q[1] < q[0]) std::swap(q[0], q[1]);
+    if (q.size() > 2) {
+        auto low = std::min_element(q.begin(), q.end(), [](const Pt2& a, const Pt2& b) {
+            return a[1] != b[1] ? a[1] < b[1] : a[0] < b[0];
+        });
+        std::rotate(q.begin(), low, q.end());
+    }
+    return q;
+}
+
+std::vector<Pt2> clip(const std::vector<Pt2>& poly, const Q& a, const Q& b, bool above) {
+    auto side = [&](const Pt2& p) {  // > 0 inside, 0 on the line
+        Q v = p[1] - (a * p[0] + b);
+        return above ? sgn(v) : -sgn(v);
+    };
+    std::vector<Pt2> out;
+    for (size_t i = 0; i < poly.size(); ++i) {
+        const Pt2& p = poly[i];
+        const Pt2& q = poly[(i + 1) % poly.size()];
+        int sp = side(p), sq = side(q);
+        if (sp >= 0) out.push_back(p);
+        if ((sp > 0 && sq < 0) || (sp < 0 && sq > 0)) {
+            // ρ2 − aρ1 − b changes sign between p and q.
+            Q fp = p[1] - a * p[0] - b, fq = q[1] - a * q[0] - b;
+            Q t = fp / (fp - fq);
+            out.push_back({p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1])});
+        }
+    }
+    return normalize_polygon(out);
+}
+
+static Q area2(const std::vector<Pt2>& p) {
+    Q s = 0;
+    for (size_t i = 0; i < p.size(); ++i) {
+        const Pt2& a = p[i];
+        const Pt2& b = p[(i + 1) % p.size()];
+        s += a[0] * b[1] - a[1] * b[0];
+    }
+    return s;
+}
+
+Partition build_partition(const Model& m, const Curve& c) {
+    const Scene& s = m.scene;
+    Partition P;
+    std::vector<Pt2> rect = normalize_polygon(
+        {{s.lo[0], s.lo[1]}, {s.hi[0], s.lo[1]}, {s.hi[0], s.hi[1]}, {s.lo[0], s.hi[1]}});
+    std::vector<Pt2> over = rect;
+    for (const CurvePiece& p : c.pieces) {
+        const ContactLine& L = m.lines[c.env.pieces[p.env].line];
+        if (!over.empty()) over = clip(over, L.slope, L.intercept, true);
+    }
+    P.overlap = over;
+    for (const Pt2& v : over) {
+        // A vertex on the curve gets the witness of its contact; one strictly above, any common point.
+        size_t k = c.env.locate(v[0]);
+        size_t line = c.env.pieces[k].line;
+        bool on = m.lines[line].at(v[0]) == v[1];
+        P.overlap_witnesses.push_back(make_witness(m, v[0], v[1], on ? line : size_t(-1)));
+    }
+    for (size_t k = 0; k < c.pieces.size(); ++k) {
+        const CurvePiece& p = c.pieces[k];
+        const ContactLine& L = m.lines[c.env.pieces[p.env].line];
+        std::vector<Pt2> box = normalize_polygon({{p.from, s.lo[1]}, {p.to, s.lo[1]}, {p.to, s.hi[1]}, {p.from, s.hi[1]}});
+        if (box.size() < 3) continue;
+        std::vector<Pt2> sep = clip(box, L.slope, L.intercept, false);
+        if (sep.size() >= 3 && sgn(area2(sep)) > 0) P.separated.push_back({k, sep});
+    }
+    for (const SwitchPoint& sp : c.switches)
+        if (sgn(sp.rho2) > 0)
+            P.switch_witnesses.push_back(make_witness(m, sp.rho1, sp.rho2, c.env.pieces[c.pieces[sp.left].env].line));
+    if (sgn(c.growth.value) > 0)
+        P.growth_witness = make_witness(m, c.growth.value, c.growth.value, c.env.pieces[c.growth.env].line);
+    return P;
+}
+
+}  // namespace scalecert

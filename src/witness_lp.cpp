@@ -1,0 +1,85 @@
+// The only translation unit that includes CGAL's LP solver.
+#include "scalecert/witness.hpp"
+
+#include <CGAL/Gmpz.h>
+#include <CGAL/QP_functions.h>
+#include <CGAL/QP_models.h>
+
+namespace scalecert {
+
+namespace {
+using ET = CGAL::Gmpz;
+using Program = CGAL::Quadratic_program<ET>;
+
+ET to_et(const Z& z) { return ET(z.get_mpz_t()); }
+Q to_q(const CGAL::Quotient<ET>& q) {
+    Q r(Z(q.numerator().mpz()), Z(q.denominator().mpz()));
+    r.canonicalize();
+    return r;
+}
+
+// Adds the equality row Σ coeff_j x_j = rhs with rational data, scaled to integers.
+void set_row(Program& lp, int row, const std::vector<std::pair<int, Q>>& coeffs, const Q& rhs,
+             CGAL::Comparison_result rel = CGAL::EQUAL) {
+    Z l = rhs.get_den();
+    for (const auto& [j, c] : coeffs) mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), c.get_den_mpz_t());
+    for (const auto& [j, c] : coeffs)
+        if (sgn(c)) lp.set_a(j, row, to_et(Z(c * l)));
+    lp.set_b(row, to_et(Z(rhs * l)));
+    lp.set_r(row, rel);
+}
+
+std::vector<Q> values(const CGAL::Quadratic_program_solution<ET>& s, size_t n) {
+    std::vector<Q> out;
+    for (auto it = s.variable_values_begin(); it != s.variable_values_end() && out.size() < n; ++it)
+        out.push_back(to_q(*it));
+    return out;
+}
+}  // namespace
+
+std::optional<CommonPoint> common_point(const std::vector<Vec3q>& A, const std::vector<Vec3q>& B) {
+    Program lp(CGAL::EQUAL, true, ET(0), false, ET(0));
+    const int na = static_cast<int>(A.size()), nb = static_cast<int>(B.size());
+    std::vector<std::pair<int, Q>> r0, r1;
+    for (int i = 0; i < na; ++i) r0.push_back({i, Q(1)});
+    for (int j = 0; j < nb; ++j) r1.push_back({na + j, Q(1)});
+    set_row(lp, 0, r0, Q(1));
+    set_row(lp, 1, r1, Q(1));
+    for (int k = 0; k < 3; ++k) {
+        std::vector<std::pair<int, Q>> r;
+        for (int i = 0; i < na; ++i) r.push_back({i, A[i][k]});
+        for (int j = 0; j < nb; ++j) r.push_back({na + j, Q(-B[j][k])});
+        set_row(lp, 2 + k, r, Q(0));
+    }
+    auto s = CGAL::solve_linear_program(lp, ET());
+    if (s.is_infeasible() || !s.is_optimal()) return std::nullopt;
+    std::vector<Q> v = values(s, A.size() + B.size());
+    CommonPoint cp;
+    cp.lambda.assign(v.begin(), v.begin() + na);
+    cp.mu.assign(v.begin() + na, v.end());
+    return cp;
+}
+
+std::optional<std::vector<Q>> positive_combination(const std::vector<Vec3q>& V, const Vec3q& p) {
+    // maximise δ subject to λ_i ≥ δ, Σλ = 1, Σλ V = p. Variable n is δ.
+    const int n = static_cast<int>(V.size());
+    Program lp(CGAL::EQUAL, true, ET(0), false, ET(0));
+    std::vector<std::pair<int, Q>> r0;
+    for (int i = 0; i < n; ++i) r0.push_back({i, Q(1)});
+    set_row(lp, 0, r0, Q(1));
+    for (int k = 0; k < 3; ++k) {
+        std::vector<std::pair<int, Q>> r;
+        for (int i = 0; i < n; ++i) r.push_back({i, V[i][k]});
+        set_row(lp, 1 + k, r, p[k]);
+    }
+    for (int i = 0; i < n; ++i) set_row(lp, 4 + i, {{i, Q(1)}, {n, Q(-1)}}, Q(0), CGAL::LARGER);
+    lp.set_c(n, ET(-1));
+    auto s = CGAL::solve_linear_program(lp, ET());
+    if (!s.is_optimal()) return std::nullopt;
+    std::vector<Q> v = values(s, V.size() + 1);
+    if (sgn(v[n]) <= 0) return std::nullopt;
+    v.pop_back();
+    return v;
+}
+
+}  // namespace scalecert
