@@ -96,8 +96,12 @@ Json switch_json(const SwitchPoint& s) {
     Json j;
     put(j, "rho1", s.rho1);
     put(j, "rho2", s.rho2);
-    j["contact"] = s.contact.label;
-    j["features"] = features(s.contact.feat1, s.contact.feat2);
+    if (s.contact.label.empty()) {
+        j["contact"] = nullptr;  // ρ2 ≤ 0: outside the scaling domain, nothing touches
+    } else {
+        j["contact"] = s.contact.label;
+        j["features"] = features(s.contact.feat1, s.contact.feat2);
+    }
     j["equation"] = s.equation;
     return j;
 }

@@ -107,7 +107,8 @@ Curve build_curve(const Model& m) {
         sp.right = k + 1;
         sp.equation = cs.equation;
         if (sp.rho1 != c.pieces[k].to) throw std::logic_error("closed-form switch point disagrees with the envelope");
-        sp.contact = contact_at(m, sp.rho1, sp.rho2);
+        // For ρ2 ≤ 0 nothing touches (P2 would be a point or reflected): no contact there.
+        if (sgn(sp.rho2) > 0) sp.contact = contact_at(m, sp.rho1, sp.rho2);
         c.switches.push_back(std::move(sp));
     }
     // Growth distance: f(ρ) = ρ. g(ρ) = f(ρ) − ρ decreases strictly, g(0) = max intercept ≥ 0.

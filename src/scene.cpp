@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <map>
 #include <memory>
@@ -25,16 +26,65 @@ struct JNode {
     }
 };
 
+// nlohmann's lexer turns number tokens into doubles (and rejects 1e999 as an overflow), so every
+// number token outside strings is first wrapped as a string carrying a marker; the tree builder
+// turns it back into a number with its text intact. `map` records (new offset, old offset) pairs
+// so that error positions still name bytes of the user's file.
+const std::string kNumMark = "\\u0000#";  // JSON escape for NUL, then '#'
+const std::string kNumMarkDecoded = std::string(1, '\0') + "#";
+
+std::string quote_numbers(const std::string& in, std::vector<std::pair<size_t, size_t>>& map) {
+    std::string out;
+    out.reserve(in.size() + in.size() / 4);
+    bool in_str = false;
+    for (size_t i = 0; i < in.size(); ++i) {
+        char c = in[i];
+        if (in_str) {
+            out += c;
+            if (c == '\\' && i + 1 < in.size()) out += in[++i];
+            else if (c == '"') in_str = false;
+            continue;
+        }
+        if (c == '"') { in_str = true; out += c; continue; }
+        if (c == '-' || (c >= '0' && c <= '9')) {
+            size_t j = i;
+            while (j < in.size() && (std::isdigit(static_cast<unsigned char>(in[j])) || std::strchr("+-.eE", in[j]))) ++j;
+            out += '"' + kNumMark + in.substr(i, j - i) + '"';
+            map.push_back({out.size(), j});
+            i = j - 1;
+            continue;
+        }
+        out += c;
+    }
+    return out;
+}
+
+size_t original_position(size_t pos, const std::vector<std::pair<size_t, size_t>>& map) {
+    size_t shift_new = 0, shift_old = 0;
+    for (const auto& [n, o] : map) {
+        if (n > pos) break;
+        shift_new = n;
+        shift_old = o;
+    }
+    return shift_old + (pos - shift_new);
+}
+
 class TreeBuilder : public nlohmann::json_sax<nlohmann::json> {
 public:
     JNode root;
-    std::string error;
+    size_t error_pos = 0;
     bool null() override { return put(JNode{}); }
     bool boolean(bool) override { JNode n; n.kind = JNode::Bool; return put(std::move(n)); }
     bool number_integer(number_integer_t v) override { return num(std::to_string(v), true); }
     bool number_unsigned(number_unsigned_t v) override { return num(std::to_string(v), true); }
     bool number_float(number_float_t, const string_t& s) override { return num(s, false); }
-    bool string(string_t& s) override { JNode n; n.kind = JNode::String; n.text = s; return put(std::move(n)); }
+    bool string(string_t& s) override {
+        if (s.compare(0, kNumMarkDecoded.size(), kNumMarkDecoded) == 0) {
+            std::string t = s.substr(kNumMarkDecoded.size());
+            return num(t, t.find_first_of(".eE") == std::string::npos);
+        }
+        JNode n; n.kind = JNode::String; n.text = s; return put(std::move(n));
+    }
     bool binary(binary_t&) override { return false; }
     bool start_object(std::size_t) override { return open(JNode::Object); }
     bool key(string_t& k) override { stack_.back()->keys.push_back(k); return true; }
@@ -42,7 +92,7 @@ public:
     bool start_array(std::size_t) override { return open(JNode::Array); }
     bool end_array() override { stack_.pop_back(); return true; }
     bool parse_error(std::size_t pos, const std::string&, const nlohmann::detail::exception&) override {
-        error = "malformed JSON near byte " + std::to_string(pos);
+        error_pos = pos;
         return false;
     }
 
@@ -73,10 +123,9 @@ struct Reader {
     [[noreturn]] void fail(const std::string& where, const std::string& what) const {
         throw InputError(file + ": " + (where.empty() ? "" : where + ": ") + what);
     }
-    Q number_text(const std::string& text, bool integer_token, bool is_string, const std::string& where) const {
+    Q number_text(const std::string& text, bool /*integer_token*/, bool is_string, const std::string& where) const {
         try {
             if (opt.binary_doubles && !is_string) {
-                if (integer_token) return exact_from_double(static_cast<double>(std::stold(text)));
                 char* end = nullptr;
                 double d = std::strtod(text.c_str(), &end);
                 if (end == text.c_str() || *end != '\0') fail(where, "'" + text + "' is not a number");
@@ -148,9 +197,10 @@ std::vector<Vec3q> read_off(const std::string& path, const ReadOptions& opt) {
 Scene parse_scene_text(const std::string& text, const std::string& name, const std::string& base_dir,
                        const ReadOptions& opt) {
     TreeBuilder tb;
-    bool ok = nlohmann::json::sax_parse(text, &tb, nlohmann::json::input_format_t::json, true, true);
+    std::vector<std::pair<size_t, size_t>> map;
+    bool ok = nlohmann::json::sax_parse(quote_numbers(text, map), &tb, nlohmann::json::input_format_t::json, true, true);
     Reader r{name, opt};
-    if (!ok) r.fail("", tb.error.empty() ? "malformed JSON" : tb.error);
+    if (!ok) r.fail("", "malformed JSON near byte " + std::to_string(original_position(tb.error_pos, map)));
     const JNode& root = tb.root;
     if (root.kind != JNode::Object) r.fail("", "the scene must be a JSON object");
     Scene sc;

@@ -1,0 +1,104 @@
+// Test helpers: random exact scenes, and a brute-force classifier that shares nothing with the
+// engine (no hull, no Gauss map, no envelope): every cross product of two vertex differences is a
+// candidate normal, and the largest gap min_B n·x − max_A n·x over them decides.
+#pragma once
+#include "scalecert/certificate.hpp"
+
+#include <algorithm>
+#include <random>
+#include <set>
+
+namespace scalecert {
+inline std::ostream& operator<<(std::ostream& o, Verdict v) { return o << verdict_name(v); }
+}  // namespace scalecert
+
+namespace test {
+using namespace scalecert;
+
+// p/q in lowest terms (GMP's rational arithmetic requires canonical operands).
+inline Q qc(long p, long q) {
+    Q r(p, q);
+    r.canonicalize();
+    return r;
+}
+
+inline Vec3q scaled(const Vec3q& v, const Vec3q& s, const Q& rho) {
+    return {s[0] + rho * (v[0] - s[0]), s[1] + rho * (v[1] - s[1]), s[2] + rho * (v[2] - s[2])};
+}
+
+struct Brute {
+    // Per candidate direction n: n·s1, max over P1 of n·v, n·s2, min over P2 of n·w. For ρ > 0 the
+    // scaled extremes are n·s + ρ(extreme − n·s).
+    struct Dir { Q ns1, max1, ns2, min2; };
+    std::vector<Dir> dirs;
+    explicit Brute(const Scene& sc) {
+        std::vector<Vec3q> diffs;
+        for (int i = 0; i < 2; ++i) {
+            const auto& p = sc.P[i].points;
+            for (size_t a = 0; a < p.size(); ++a)
+                for (size_t b = a + 1; b < p.size(); ++b)
+                    if (p[a] != p[b]) diffs.push_back(sub(p[b], p[a]));
+        }
+        std::set<Vec3z> seen;
+        for (size_t a = 0; a < diffs.size(); ++a)
+            for (size_t b = a + 1; b < diffs.size(); ++b) {
+                Vec3q c = cross(diffs[a], diffs[b]);
+                if (sgn(c[0]) == 0 && sgn(c[1]) == 0 && sgn(c[2]) == 0) continue;
+                Vec3z n = primitive(c);
+                for (const Vec3z& m : {n, neg(n)})
+                    if (seen.insert(m).second) dirs.push_back(extremes(sc, to_q(m)));
+            }
+    }
+    static Dir extremes(const Scene& sc, const Vec3q& n) {
+        Dir d{dot(n, sc.P[0].seed), dot(n, sc.P[0].points[0]), dot(n, sc.P[1].seed), dot(n, sc.P[1].points[0])};
+        for (const Vec3q& v : sc.P[0].points) d.max1 = std::max(d.max1, dot(n, v));
+        for (const Vec3q& w : sc.P[1].points) d.min2 = std::min(d.min2, dot(n, w));
+        return d;
+    }
+    // +1 separated, 0 touching, −1 overlapping.
+    int classify(const Scene&, const Q& r1, const Q& r2) const {
+        int best = -1;
+        for (const Dir& d : dirs) {
+            int s = cmp(d.ns2 + r2 * (d.min2 - d.ns2), d.ns1 + r1 * (d.max1 - d.ns1));
+            if (s > 0) return 1;
+            best = std::max(best, s);
+        }
+        return best;
+    }
+};
+
+inline int verdict_sign(Verdict v) { return v == Verdict::Separated ? 1 : v == Verdict::Touching ? 0 : -1; }
+
+// A random non-flat polytope of n points with coordinates k/den, k in [-range, range], offset by o.
+inline std::vector<Vec3q> random_points(std::mt19937& g, int n, int range, int den, const Vec3q& o) {
+    std::uniform_int_distribution<int> u(-range, range);
+    for (;;) {
+        std::vector<Vec3q> p;
+        for (int i = 0; i < n; ++i) p.push_back({o[0] + qc(u(g), den), o[1] + qc(u(g), den), o[2] + qc(u(g), den)});
+        // non-flat: some 4 points with nonzero volume
+        for (size_t a = 1; a < p.size(); ++a)
+            for (size_t b = a + 1; b < p.size(); ++b)
+                for (size_t c = b + 1; c < p.size(); ++c)
+                    if (sgn(dot(sub(p[a], p[0]), cross(sub(p[b], p[0]), sub(p[c], p[0]))))) {
+                        return p;
+                    }
+    }
+}
+
+inline Scene random_scene(std::mt19937& g, int n1, int n2) {
+    Scene sc;
+    std::uniform_int_distribution<int> off(-6, 6);
+    sc.P[0].points = random_points(g, n1, 4, 1, {Q(0), Q(0), Q(0)});
+    sc.P[1].points = random_points(g, n2, 4, 2, {Q(off(g)), Q(off(g)), Q(off(g))});
+    for (int i = 0; i < 2; ++i) {
+        Vec3q c{Q(0), Q(0), Q(0)};
+        for (const auto& v : sc.P[i].points) for (int k = 0; k < 3; ++k) c[k] += v[k];
+        for (int k = 0; k < 3; ++k) c[k] /= Q(static_cast<long>(sc.P[i].points.size()));
+        sc.P[i].seed = c;
+        sc.lo[i] = Q(1, 4);
+        sc.hi[i] = Q(4);
+    }
+    return sc;
+}
+
+}  // namespace test

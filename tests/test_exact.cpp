@@ -1,0 +1,59 @@
+#define BOOST_TEST_MODULE exact
+#include <boost/test/unit_test.hpp>
+
+#include "scalecert/exact.hpp"
+
+#include <random>
+
+using namespace scalecert;
+
+BOOST_AUTO_TEST_CASE(decimal_and_fraction_text_is_read_exactly) {
+    BOOST_TEST(parse_exact("0.1") == Q(1, 10));
+    BOOST_TEST(parse_exact("3/7") == Q(3, 7));
+    BOOST_TEST(parse_exact("6/14") == Q(3, 7));
+    BOOST_TEST(parse_exact("-6/14") == Q(-3, 7));
+    BOOST_TEST(parse_exact("1e-3") == Q(1, 1000));
+    BOOST_TEST(parse_exact("-2.5E+2") == Q(-250));
+    BOOST_TEST(parse_exact("+.5") == Q(1, 2));
+    BOOST_TEST(parse_exact("12.") == Q(12));
+    BOOST_TEST(parse_exact("123456789012345678901234567890") == Q(Z("123456789012345678901234567890")));
+    for (const char* bad : {"", "abc", "1/0", "1e", "--1", "1.2.3", "nan", "inf", "1/-2", "0x10", " 1", "1e9999999"})
+        BOOST_CHECK_THROW(parse_exact(bad), InputError);
+}
+
+BOOST_AUTO_TEST_CASE(exact_strings_are_lowest_terms) {
+    BOOST_TEST(to_exact_string(Q(6, 4)) == "3/2");
+    BOOST_TEST(to_exact_string(Q(-6, 4)) == "-3/2");
+    BOOST_TEST(to_exact_string(Q(8, 4)) == "2");
+    BOOST_TEST(to_exact_string(Q(0, 5)) == "0");
+}
+
+BOOST_AUTO_TEST_CASE(binary_doubles_are_dyadic) {
+    // 0.1 as a double is 3602879701896397 / 2^55.
+    BOOST_TEST(exact_from_double(0.1) == Q(Z(3602879701896397), Z(1) << 55));
+    BOOST_CHECK_THROW(exact_from_double(std::nan("")), InputError);
+}
+
+BOOST_AUTO_TEST_CASE(display_doubles_are_correctly_rounded) {
+    // IEEE division of exactly representable integers is correctly rounded: an independent oracle.
+    std::mt19937 g(7);
+    std::uniform_int_distribution<long> u(-(1L << 40), 1L << 40);
+    for (int i = 0; i < 2000; ++i) {
+        long p = u(g), q = u(g);
+        if (q == 0) continue;
+        Q r(p, q);
+        r.canonicalize();
+        BOOST_TEST(to_double_rn(r) == static_cast<double>(p) / static_cast<double>(q));
+    }
+    // Ties round to even: 2^53 + 1 lies halfway between 2^53 and 2^53 + 2.
+    BOOST_TEST(to_double_rn(Q((Z(1) << 53) + 1)) == 9007199254740992.0);
+    BOOST_TEST(to_double_rn(Q((Z(1) << 53) + 3)) == 9007199254740996.0);
+}
+
+BOOST_AUTO_TEST_CASE(primitive_normals) {
+    Vec3q v{Q(1, 2), Q(-3, 4), Q(0)};
+    Vec3z p = primitive(v);
+    BOOST_TEST(p[0] == 2);
+    BOOST_TEST(p[1] == -3);
+    BOOST_TEST(p[2] == 0);
+}

@@ -1,0 +1,16 @@
+#!/usr/bin/env bash
+# Installs the Debian packages scalecert needs, only those that are missing.
+set -euo pipefail
+PKGS=(build-essential cmake pkg-config libcgal-dev libgmp-dev libmpfr-dev libeigen3-dev
+      libboost-test-dev nlohmann-json3-dev libcli11-dev python3)
+missing=()
+for p in "${PKGS[@]}" "$@"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "installing: ${missing[*]}"
+  SUDO=""
+  [ "$(id -u)" -ne 0 ] && SUDO="sudo"
+  $SUDO apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq "${missing[@]}" >/dev/null
+fi
