@@ -57,6 +57,22 @@ Json model_json(const Model& m) {
     return j;
 }
 
+// Seeds strictly inside: strictly positive weights on all the vertices.
+Json seed_interior_json(const Model& m) {
+    Json seeds;
+    const char* names[2] = {"P1", "P2"};
+    for (int i = 0; i < 2; ++i) {
+        std::vector<Vec3q> V;
+        for (int v : m.P[i].vertices) V.push_back(m.P[i].points[v]);
+        auto lam = positive_combination(V, m.s[i]);
+        if (!lam) throw std::logic_error("seed inside but no positive combination found");
+        std::vector<std::pair<int, Q>> w;
+        for (size_t k = 0; k < V.size(); ++k) w.push_back({m.P[i].vertices[k], (*lam)[k]});
+        seeds[names[i]] = weights(w);
+    }
+    return seeds;
+}
+
 Json witness_json(const Witness& w) {
     Json j;
     put(j, "rho1", w.rho1);
@@ -146,6 +162,7 @@ Json query_json(const Model& m, const QueryResult& r) {
     }
     if (r.witness) cert["witness"] = witness_json(*r.witness);
     j["certificate"] = cert;
+    j["seed_interior"] = seed_interior_json(m);
     j["scene"] = scene_json(m);
     return j;
 }
@@ -154,7 +171,28 @@ Json partition_json(const Model& m, const Curve& c, const Partition& p) {
     Json j = curve_body(m, c, true);
     for (size_t k = 0, w = 0; k < c.switches.size(); ++k)
         if (sgn(c.switches[k].rho2) > 0) j["switch_points"][k]["witness"] = witness_json(p.switch_witnesses[w++]);
-    if (p.growth_witness) j["growth_distance_witness"] = witness_json(*p.growth_witness);
+    Json ends = Json::array();
+    for (int e = 0; e < 2; ++e) {
+        const CurvePiece& cp = e == 0 ? c.pieces.front() : c.pieces.back();
+        Q x = e == 0 ? cp.from : cp.to;
+        Json end;
+        put(end, "rho1", x);
+        put(end, "rho2", m.lines[c.env.pieces[cp.env].line].at(x));
+        if (p.end_witness[e]) end["witness"] = witness_json(*p.end_witness[e]);
+        ends.push_back(end);
+    }
+    j["curve_ends"] = ends;
+    Json g;
+    if (p.growth_witness) {
+        const ContactLine& L = m.lines[c.env.pieces[c.growth.env].line];
+        g["normal"] = ints(L.normal);
+        put(g, "h1", L.h1);
+        put(g, "h2", L.h2);
+        g["witness"] = witness_json(*p.growth_witness);
+    } else {
+        g["seeds_coincide"] = true;
+    }
+    j["growth_distance_certificate"] = g;
     Json regions;
     auto poly = [](const std::vector<Pt2>& v) {
         Json a = Json::array(), b = Json::array();
@@ -175,19 +213,7 @@ Json partition_json(const Model& m, const Curve& c, const Partition& p) {
     }
     regions["separated"] = seps;
     j["regions"] = regions;
-    // Seeds strictly inside: strictly positive weights on the vertices.
-    Json seeds;
-    const char* names[2] = {"P1", "P2"};
-    for (int i = 0; i < 2; ++i) {
-        std::vector<Vec3q> V;
-        for (int v : m.P[i].vertices) V.push_back(m.P[i].points[v]);
-        auto lam = positive_combination(V, m.s[i]);
-        if (!lam) throw std::logic_error("seed inside but no positive combination found");
-        std::vector<std::pair<int, Q>> w;
-        for (size_t k = 0; k < V.size(); ++k) w.push_back({m.P[i].vertices[k], (*lam)[k]});
-        seeds[names[i]] = weights(w);
-    }
-    j["seed_interior"] = seeds;
+    j["seed_interior"] = seed_interior_json(m);
     j["scene"] = scene_json(m);
     return j;
 }

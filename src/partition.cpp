@@ -98,6 +98,13 @@ Partition build_partition(const Model& m, const Curve& c) {
     for (const SwitchPoint& sp : c.switches)
         if (sgn(sp.rho2) > 0)
             P.switch_witnesses.push_back(make_witness(m, sp.rho1, sp.rho2, c.env.pieces[c.pieces[sp.left].env].line));
+    for (int e = 0; e < 2; ++e) {
+        const CurvePiece& p = e == 0 ? c.pieces.front() : c.pieces.back();
+        Q x = e == 0 ? p.from : p.to;
+        size_t line = c.env.pieces[p.env].line;
+        Q y = m.lines[line].at(x);
+        if (sgn(y) > 0) P.end_witness[e] = make_witness(m, x, y, line);
+    }
     if (sgn(c.growth.value) > 0)
         P.growth_witness = make_witness(m, c.growth.value, c.growth.value, c.env.pieces[c.growth.env].line);
     return P;

@@ -17,6 +17,7 @@ struct Partition {
     std::vector<SeparatedRegion> separated;  // nonempty interiors only
     std::vector<Witness> switch_witnesses;   // one per switch point with ρ2 > 0 (touching)
     std::optional<Witness> growth_witness;   // at (ρ*, ρ*) when ρ* > 0
+    std::optional<Witness> end_witness[2];   // at (lo1, f(lo1)) and (hi1, f(hi1)) when f > 0
 };
 
 // Clips a convex polygon (counter-clockwise) to ρ2 ≥ a·ρ1 + b (above = true) or ≤. Drops repeated
