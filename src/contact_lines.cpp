@@ -1,5 +1,7 @@
 #include "scalecert/contact_lines.hpp"
 
+#include "scalecert/gauss_map.hpp"
+
 #include <algorithm>
 #include <map>
 
@@ -54,24 +56,24 @@ Model build_model(const Scene& scene) {
     const Polyhedron& A = m.P[0];
     const Polyhedron& B = m.P[1];
     std::vector<Vec3z> pa(A.edges.size()), pb(B.edges.size());
-    for (size_t i = 0; i < A.edges.size(); ++i)
-        pa[i] = cross(A.faces[A.edges[i].f0].normal, A.faces[A.edges[i].f1].normal);
-    for (size_t j = 0; j < B.edges.size(); ++j)
-        pb[j] = cross(neg(B.faces[B.edges[j].f0].normal), neg(B.faces[B.edges[j].f1].normal));
+    std::vector<Arc> arcs_a(A.edges.size()), arcs_b(B.edges.size());
     for (size_t i = 0; i < A.edges.size(); ++i) {
-        const Vec3z& a0 = A.faces[A.edges[i].f0].normal;
-        const Vec3z& a1 = A.faces[A.edges[i].f1].normal;
-        for (size_t j = 0; j < B.edges.size(); ++j) {
-            ++m.stats.edge_pairs_tested;
-            Vec3z x = cross(pa[i], pb[j]);
-            if (is_zero(x)) continue;
-            Vec3z b0 = neg(B.faces[B.edges[j].f0].normal), b1 = neg(B.faces[B.edges[j].f1].normal);
-            for (int sign = 0; sign < 2; ++sign, x = neg(x)) {
-                if (in_open_arc(x, a0, a1, pa[i]) && in_open_arc(x, b0, b1, pb[j])) {
-                    normals.emplace(primitive(x), 2);
-                    ++m.stats.arc_crossings;
-                    break;
-                }
+        arcs_a[i] = {A.faces[A.edges[i].f0].normal, A.faces[A.edges[i].f1].normal};
+        pa[i] = cross(arcs_a[i].from, arcs_a[i].to);
+    }
+    for (size_t j = 0; j < B.edges.size(); ++j) {
+        arcs_b[j] = {neg(B.faces[B.edges[j].f0].normal), neg(B.faces[B.edges[j].f1].normal)};
+        pb[j] = cross(arcs_b[j].from, arcs_b[j].to);
+    }
+    for (const auto& [i, j] : arc_candidates(arcs_a, arcs_b)) {
+        ++m.stats.edge_pairs_tested;
+        Vec3z x = cross(pa[i], pb[j]);
+        if (is_zero(x)) continue;
+        for (int sign = 0; sign < 2; ++sign, x = neg(x)) {
+            if (in_open_arc(x, arcs_a[i].from, arcs_a[i].to, pa[i]) && in_open_arc(x, arcs_b[j].from, arcs_b[j].to, pb[j])) {
+                normals.emplace(primitive(x), 2);
+                ++m.stats.arc_crossings;
+                break;
             }
         }
     }
