@@ -3,6 +3,9 @@
 #include "scalecert/gauss_map.hpp"
 
 #include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
 #include <map>
 
 namespace scalecert {
@@ -34,7 +37,22 @@ bool in_open_arc(const Vec3z& x, const Vec3z& a0, const Vec3z& a1, const Vec3z& 
 
 }  // namespace
 
+namespace {
+// SCALECERT_TIMING=1 prints the time of each stage on stderr (never in the output).
+struct StageClock {
+    bool on = std::getenv("SCALECERT_TIMING") != nullptr;
+    std::chrono::steady_clock::time_point t = std::chrono::steady_clock::now();
+    void lap(const char* what) {
+        if (!on) return;
+        auto now = std::chrono::steady_clock::now();
+        std::fprintf(stderr, "scalecert: timing: %-22s %9.3f ms\n", what, std::chrono::duration<double, std::milli>(now - t).count());
+        t = now;
+    }
+};
+}  // namespace
+
 Model build_model(const Scene& scene) {
+    StageClock clock;
     Model m;
     m.scene = scene;
     const char* names[2] = {"P1", "P2"};
@@ -46,6 +64,7 @@ Model build_model(const Scene& scene) {
                              (scene.P[i].seed_given ? "" : " (the default seed is the mean of the vertices)"));
     }
     m.d = sub(m.s[1], m.s[0]);
+    clock.lap("hulls");
 
     std::map<Vec3z, int> normals;  // normal -> origin (for statistics only)
     for (const Face& f : m.P[0].faces) normals.emplace(f.normal, 0), ++m.stats.face_normals;
@@ -77,9 +96,11 @@ Model build_model(const Scene& scene) {
             }
         }
     }
+    clock.lap("gauss map overlay");
     m.stats.distinct_normals = normals.size();
     m.lines.reserve(normals.size());
     for (const auto& [n, origin] : normals) m.lines.push_back(line_for_normal(m, n));
+    clock.lap("contact lines");
     return m;
 }
 

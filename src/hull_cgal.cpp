@@ -5,9 +5,11 @@
 #include "scalecert/polyhedron.hpp"
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/convex_hull_3.h>
 
+#include <cmath>
 #include <map>
 
 namespace scalecert {
@@ -15,30 +17,56 @@ namespace scalecert {
 using K = CGAL::Exact_predicates_exact_constructions_kernel;
 static_assert(std::is_same<K::FT::Exact_type, mpq_class>::value, "Epeck must run on mpq_class");
 
-std::vector<std::array<int, 3>> hull_triangles(const std::vector<Vec3q>& pts) {
-    std::vector<K::Point_3> cp;
+namespace {
+// The hull's triangles as input indices, for any CGAL kernel whose points we can key exactly.
+template <class Kernel, class Key, class ToPoint, class ToKey>
+std::vector<std::array<int, 3>> hull_with(const std::vector<Vec3q>& pts, ToPoint to_point, ToKey to_key) {
+    using Point = typename Kernel::Point_3;
+    std::vector<Point> cp;
     cp.reserve(pts.size());
-    std::map<Vec3q, int> index;  // exact coordinates -> first input index
+    std::map<Key, int> index;  // exact coordinates -> first input index
     for (size_t i = 0; i < pts.size(); ++i) {
-        cp.emplace_back(K::FT(pts[i][0]), K::FT(pts[i][1]), K::FT(pts[i][2]));
-        index.emplace(pts[i], static_cast<int>(i));
+        cp.push_back(to_point(pts[i]));
+        index.emplace(to_key(cp.back()), static_cast<int>(i));
     }
-    CGAL::Surface_mesh<K::Point_3> mesh;
+    CGAL::Surface_mesh<Point> mesh;
     CGAL::convex_hull_3(cp.begin(), cp.end(), mesh);
     std::vector<std::array<int, 3>> tris;
     for (auto f : mesh.faces()) {
         std::array<int, 3> t{};
         int k = 0;
         for (auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) {
-            const K::Point_3& p = mesh.point(v);
-            Vec3q q{CGAL::exact(p.x()), CGAL::exact(p.y()), CGAL::exact(p.z())};
-            if (k < 3) t[k] = index.at(q);
+            if (k < 3) t[k] = index.at(to_key(mesh.point(v)));
             ++k;
         }
         if (k != 3) throw std::logic_error("convex_hull_3 returned a non-triangle");
         tris.push_back(t);
     }
     return tris;
+}
+
+bool all_exact_doubles(const std::vector<Vec3q>& pts) {
+    for (const Vec3q& v : pts)
+        for (const Q& c : v) {
+            double d = c.get_d();
+            if (!std::isfinite(d) || Q(d) != c) return false;
+        }
+    return true;
+}
+}  // namespace
+
+std::vector<std::array<int, 3>> hull_triangles(const std::vector<Vec3q>& pts) {
+    // Doubles that hold the coordinates exactly: Epick, whose predicates are exact (filtered),
+    // and the hull needs no constructions. Otherwise Epeck on mpq_class.
+    if (all_exact_doubles(pts)) {
+        using KI = CGAL::Exact_predicates_inexact_constructions_kernel;
+        return hull_with<KI, std::array<double, 3>>(
+            pts, [](const Vec3q& p) { return KI::Point_3(p[0].get_d(), p[1].get_d(), p[2].get_d()); },
+            [](const KI::Point_3& p) { return std::array<double, 3>{p.x(), p.y(), p.z()}; });
+    }
+    return hull_with<K, Vec3q>(
+        pts, [](const Vec3q& p) { return K::Point_3(K::FT(p[0]), K::FT(p[1]), K::FT(p[2])); },
+        [](const K::Point_3& p) { return Vec3q{CGAL::exact(p.x()), CGAL::exact(p.y()), CGAL::exact(p.z())}; });
 }
 
 }  // namespace scalecert

@@ -1,37 +1,58 @@
 #include "scalecert/polyhedron.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <set>
 
 namespace scalecert {
 
+namespace {
+constexpr int kG = 16;  // start table resolution per cube face
+using D3 = std::array<double, 3>;
+// The cube-map cell of a direction.
+int cube_cell(const D3& v) {
+    int ax = 0;
+    for (int k = 1; k < 3; ++k)
+        if (std::fabs(v[k]) > std::fabs(v[ax])) ax = k;
+    double m = std::fabs(v[ax]);
+    if (!(m > 0)) return 0;
+    int face = 2 * ax + (v[ax] < 0 ? 1 : 0);
+    double a = v[(ax + 1) % 3] / m, b = v[(ax + 2) % 3] / m;  // in [-1, 1]
+    int i = std::clamp(static_cast<int>((a + 1) * 0.5 * kG), 0, kG - 1);
+    int j = std::clamp(static_cast<int>((b + 1) * 0.5 * kG), 0, kG - 1);
+    return (face * kG + i) * kG + j;
+}
+}  // namespace
+
+int Polyhedron::start_vertex(const Vec3z& n) const {
+    if (start_table.empty()) return vertices.front();
+    return start_table[cube_cell({n[0].get_d(), n[1].get_d(), n[2].get_d()})];
+}
+
 std::vector<int> Polyhedron::argmax(const Vec3z& n, Q* value) const {
-    const Vec3q nq = to_q(n);
-    int cur = vertices.front();
-    Q best = dot(nq, points[cur]);
+    int cur = start_vertex(n);
+    Z best = dotz(n, ipts[cur]), val;
     for (bool moved = true; moved;) {
         moved = false;
         for (int w : adj[cur]) {
-            Q val = dot(nq, points[w]);
+            val = dotz(n, ipts[w]);
             if (val > best) { best = val; cur = w; moved = true; break; }
         }
     }
     // The face of maximisers is connected in the vertex graph.
     std::vector<int> out{cur}, stack{cur};
-    std::set<int> seen{cur};
     while (!stack.empty()) {
         int v = stack.back();
         stack.pop_back();
         for (int w : adj[v])
-            if (!seen.count(w) && dot(nq, points[w]) == best) {
-                seen.insert(w);
+            if (std::find(out.begin(), out.end(), w) == out.end() && dotz(n, ipts[w]) == best) {
                 out.push_back(w);
                 stack.push_back(w);
             }
     }
     std::sort(out.begin(), out.end());
-    if (value) *value = best;
+    if (value) *value = Q(best, scale), value->canonicalize();
     return out;
 }
 
@@ -52,23 +73,24 @@ namespace {
 // Sorts the vertices of a convex polygon with outward normal n counter-clockwise (seen from
 // outside), exactly: angular order around an interior point, in the plane projected along the
 // dominant axis of n.
-void order_ccw(std::vector<int>& vs, const std::vector<Vec3q>& pts, const Vec3z& n) {
+void order_ccw(std::vector<int>& vs, const std::vector<Vec3z>& pts, const Vec3z& n) {
     int drop = 0;
     for (int k = 1; k < 3; ++k)
         if (abs(n[k]) > abs(n[drop])) drop = k;
     int u = (drop + 1) % 3, w = (drop + 2) % 3;
-    Q cu = 0, cw = 0;
+    // Centre (times the vertex count, to stay in integers).
+    const Z cnt = static_cast<long>(vs.size());
+    Z cu = 0, cw = 0;
     for (int v : vs) { cu += pts[v][u]; cw += pts[v][w]; }
-    cu /= Q(static_cast<long>(vs.size()));
-    cw /= Q(static_cast<long>(vs.size()));
+    auto du = [&](int v) { return Z(pts[v][u] * cnt - cu); };
+    auto dw = [&](int v) { return Z(pts[v][w] * cnt - cw); };
     // In the (u, w) projection, counter-clockwise around +drop axis means ccw seen from outside
     // when n[drop] > 0; reverse otherwise.
-    auto half = [&](int v) { Q du = pts[v][u] - cu, dw = pts[v][w] - cw; return (dw > 0 || (dw == 0 && du > 0)) ? 0 : 1; };
+    auto half = [&](int v) { Z a = du(v), b = dw(v); return (sgn(b) > 0 || (sgn(b) == 0 && sgn(a) > 0)) ? 0 : 1; };
     std::sort(vs.begin(), vs.end(), [&](int a, int b) {
         int ha = half(a), hb = half(b);
         if (ha != hb) return ha < hb;
-        Q au = pts[a][u] - cu, aw = pts[a][w] - cw, bu = pts[b][u] - cu, bw = pts[b][w] - cw;
-        return au * bw - aw * bu > 0;
+        return sgn(Z(du(a) * dw(b) - dw(a) * du(b))) > 0;
     });
     if (sgn(n[drop]) < 0) std::reverse(vs.begin(), vs.end());
 }
@@ -96,13 +118,21 @@ Polyhedron build_polyhedron(const std::vector<Vec3q>& pts, const std::string& na
         throw InputError(name + ": fewer than 4 affinely independent vertices (the points are flat)");
     Polyhedron P;
     P.points = pts;
+    // Integer coordinates: every point times the lcm of all denominators (same planes, same order).
+    P.scale = 1;
+    for (const Vec3q& v : pts)
+        for (const Q& c : v) mpz_lcm(P.scale.get_mpz_t(), P.scale.get_mpz_t(), c.get_den_mpz_t());
+    P.ipts.resize(pts.size());
+    for (size_t i = 0; i < pts.size(); ++i)
+        for (int k = 0; k < 3; ++k) P.ipts[i][k] = Z(pts[i][k] * P.scale);
+    const std::vector<Vec3z>& ip = P.ipts;
     auto tris = hull_triangles(pts);
     // Group hull triangles by their supporting plane: on a convex polytope one plane, one face.
     std::map<Vec3z, int> plane_of;
     std::vector<std::set<int>> face_pts;
     std::map<int, std::set<int>> faces_at;  // hull point -> faces through it
     for (const auto& t : tris) {
-        Vec3z n = primitive(cross(sub(pts[t[1]], pts[t[0]]), sub(pts[t[2]], pts[t[0]])));
+        Vec3z n = primitive(cross(sub(ip[t[1]], ip[t[0]]), sub(ip[t[2]], ip[t[0]])));
         auto [it, fresh] = plane_of.emplace(n, static_cast<int>(face_pts.size()));
         if (fresh) face_pts.emplace_back();
         for (int v : t) {
@@ -121,7 +151,7 @@ Polyhedron build_polyhedron(const std::vector<Vec3q>& pts, const std::string& na
         f.normal = n;
         for (int v : face_pts[fi])
             if (is_vertex.count(v)) f.verts.push_back(v);
-        order_ccw(f.verts, pts, n);
+        order_ccw(f.verts, ip, n);
     }
     // Order faces deterministically by normal, so output never depends on CGAL's traversal.
     std::sort(P.faces.begin(), P.faces.end(), [](const Face& a, const Face& b) { return a.normal < b.normal; });
@@ -142,6 +172,28 @@ Polyhedron build_polyhedron(const std::vector<Vec3q>& pts, const std::string& na
     }
     if (P.vertices.size() + P.faces.size() != P.edges.size() + 2)
         throw std::logic_error("hull fails Euler's formula");
+    // Start table: for each cube-map cell centre, the argmax found by climbing in doubles from the
+    // previous cell's answer. Only a hint: argmax always finishes the climb exactly.
+    std::vector<D3> dp(pts.size());
+    for (size_t i = 0; i < pts.size(); ++i) dp[i] = {pts[i][0].get_d(), pts[i][1].get_d(), pts[i][2].get_d()};
+    P.start_table.assign(6 * kG * kG, P.vertices.front());
+    int cur = P.vertices.front();
+    for (int face = 0; face < 6; ++face)
+        for (int i = 0; i < kG; ++i)
+            for (int j = 0; j < kG; ++j) {
+                int ax = face / 2;
+                D3 dir{};
+                dir[ax] = face % 2 ? -1.0 : 1.0;
+                dir[(ax + 1) % 3] = (i + 0.5) / kG * 2 - 1;
+                dir[(ax + 2) % 3] = (j + 0.5) / kG * 2 - 1;
+                auto f = [&](int v) { return dir[0] * dp[v][0] + dir[1] * dp[v][1] + dir[2] * dp[v][2]; };
+                for (int steps = 0, moved = 1; moved && steps < 100000; ++steps) {
+                    moved = 0;
+                    for (int w : P.adj[cur])
+                        if (f(w) > f(cur)) { cur = w; moved = 1; break; }
+                }
+                P.start_table[(face * kG + i) * kG + j] = cur;
+            }
     return P;
 }
 

@@ -23,10 +23,14 @@ struct Polyhedron {
     std::vector<Face> faces;
     std::vector<Edge> edges;
     std::vector<std::vector<int>> adj;   // per input index: adjacent vertices (empty for non-vertices)
+    std::vector<Vec3z> ipts;             // points × scale: integers, same order of n·x as points
+    Z scale;                             // lcm of the denominators of the points
+    std::vector<int> start_table;        // cube-map cells (6 × G × G) -> a vertex near the argmax
 
     // The vertices maximising n·x (a vertex, an edge's two ends or a face's vertices), sorted,
     // and the maximum value. Hill-climbs the vertex graph, then collects the tied face.
     std::vector<int> argmax(const Vec3z& n, Q* value = nullptr) const;
+    int start_vertex(const Vec3z& n) const;  // a good vertex to start climbing from (doubles; a hint only)
     Q support(const Vec3z& n) const;     // max over vertices of n·x
     bool strictly_inside(const Vec3q& p) const;
 };

@@ -3,7 +3,9 @@
 
 #include <CLI/CLI.hpp>
 
+#include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <iostream>
 #include <unistd.h>
@@ -86,8 +88,20 @@ int main(int argc, char** argv) {
         return 2;
     }
     try {
-        Model m = build_model(load_scene(scene_path, opt));
+        const bool timing = std::getenv("SCALECERT_TIMING") != nullptr;
+        auto t0 = std::chrono::steady_clock::now();
+        auto lap = [&](const char* what) {
+            if (!timing) return;
+            auto now = std::chrono::steady_clock::now();
+            std::fprintf(stderr, "scalecert: timing: %-22s %9.3f ms\n", what, std::chrono::duration<double, std::milli>(now - t0).count());
+            t0 = now;
+        };
+        Scene scene = load_scene(scene_path, opt);
+        lap("read scene");
+        Model m = build_model(scene);
+        t0 = std::chrono::steady_clock::now();
         Curve c = build_curve(m);
+        lap("envelope and curve");
         std::string text;
         if (*curve) {
             text = dump(curve_json(m, c));
@@ -98,6 +112,7 @@ int main(int argc, char** argv) {
         } else {
             text = dump(partition_json(m, c, build_partition(m, c)));
         }
+        lap("output");
         emit(text, out);
         return 0;
     } catch (const InputError& e) {
