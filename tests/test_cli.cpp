@@ -137,6 +137,20 @@ BOOST_AUTO_TEST_CASE(query_words_and_exact_numbers) {
     BOOST_TEST(run("query " + g.string() + " 0.1 2.9 --binary-doubles").out == "separated\n");
 }
 
+BOOST_AUTO_TEST_CASE(classify_many_pairs) {
+    fs::path g = write("good4.json", scene(poly(kCube1), poly(kCube2)));
+    // ρ1 + ρ2 = 3 touches (test_hand_curves); 0.5 + 2.5 is exact in doubles.
+    fs::path p = write("pairs.txt", "1 2\n# comment\n\n0.5 2.5\n1 1.99\n2 2\n");
+    Run r = run("classify " + g.string() + " " + p.string());
+    BOOST_TEST(r.status == 0);
+    BOOST_TEST(r.out == "touching\ntouching\nseparated\noverlapping\n");
+    fs::path bad = write("bad-pairs.txt", "1 2\n1 x\n");
+    Run e = run("classify " + g.string() + " " + bad.string());
+    BOOST_TEST(e.status == 2);
+    BOOST_TEST(e.err.find("line 2") != std::string::npos);
+    BOOST_TEST(e.out.empty());
+}
+
 BOOST_AUTO_TEST_CASE(out_file_is_written_whole) {
     fs::path g = write("good3.json", scene(poly(kCube1), poly(kCube2)));
     fs::path out = workdir() / "p.json";

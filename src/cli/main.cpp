@@ -1,5 +1,6 @@
 // The scalecert command: curve, query, partition.
 #include "scalecert/certificate.hpp"
+#include "scalecert/fast_query.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -9,6 +10,10 @@
 #include <fstream>
 #include <iostream>
 #include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <thread>
 
 using namespace scalecert;
 
@@ -57,6 +62,33 @@ Q read_rho(const std::string& text, const char* name, const ReadOptions& opt) {
     return r;
 }
 
+// Pairs "rho1 rho2", one per line; blank lines and '#' comments skipped.
+void read_pairs(const std::string& path, std::vector<double>& r1, std::vector<double>& r2) {
+    std::ifstream file;
+    if (path != "-") {
+        file.open(path);
+        if (!file) throw InputError(path + ": cannot open pairs file");
+    }
+    std::istream& in = path == "-" ? std::cin : file;
+    std::string line;
+    for (long no = 1; std::getline(in, line); ++no) {
+        auto hash = line.find('#');
+        if (hash != std::string::npos) line.resize(hash);
+        if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+        const char* p = line.c_str();
+        char* end = nullptr;
+        double a = std::strtod(p, &end);
+        bool ok = end != p;
+        p = end;
+        double b = std::strtod(p, &end);
+        ok = ok && end != p && std::string(end).find_first_not_of(" \t\r") == std::string::npos;
+        if (!ok || !std::isfinite(a) || !std::isfinite(b) || !(a > 0) || !(b > 0))
+            throw InputError(path + ": line " + std::to_string(no) + ": expected two finite numbers > 0");
+        r1.push_back(a);
+        r2.push_back(b);
+    }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -79,6 +111,12 @@ int main(int argc, char** argv) {
     query->add_flag("--json", as_json, "the verdict with its certificate, as JSON");
     CLI::App* part = app.add_subcommand("partition", "the certified partition of I1 x I2 (the certificate)");
     common(part);
+    CLI::App* batch = app.add_subcommand("classify", "exact verdicts for many pairs: lines 'rho1 rho2' (doubles, classified at their exact values)");
+    std::string pairs_path = "-";
+    unsigned threads = std::max(1u, std::thread::hardware_concurrency());
+    common(batch);
+    batch->add_option("PAIRS", pairs_path, "file of pairs, one 'rho1 rho2' per line ('-': standard input)");
+    batch->add_option("--threads", threads, "threads (default: all cores)")->check(CLI::Range(1u, 256u));
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -109,6 +147,15 @@ int main(int argc, char** argv) {
             Q r1 = read_rho(rho1s, "RHO1", opt), r2 = read_rho(rho2s, "RHO2", opt);
             QueryResult r = scalecert::query(m, c, r1, r2, as_json);
             text = as_json ? dump(query_json(m, r)) : std::string(verdict_name(r.verdict)) + "\n";
+        } else if (*batch) {
+            std::vector<double> r1, r2;
+            read_pairs(pairs_path, r1, r2);
+            std::vector<Verdict> out;
+            FastCurve fc(m, c);
+            StageCounts sc = classify_batch(fc, r1, r2, out, threads);
+            text.reserve(out.size() * 12);
+            for (Verdict v : out) text += verdict_name(v), text += '\n';
+            if (timing) std::fprintf(stderr, "scalecert: stages: %lu filtered, %lu exact\n", (unsigned long)sc.filtered, (unsigned long)sc.exact);
         } else {
             text = dump(partition_json(m, c, build_partition(m, c)));
         }

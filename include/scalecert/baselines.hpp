@@ -1,0 +1,50 @@
+// Floating-point baselines, behind one interface: classify (ρ1, ρ2), and where a method can,
+// estimate the touching curve. They read the scene as doubles (the nearest double to each exact
+// coordinate), as a floating-point program would. Nothing here is on the certified path.
+#pragma once
+#include "scalecert/contact_lines.hpp"
+
+#include <array>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace scalecert::fp {
+
+using D3 = std::array<double, 3>;
+struct Polytope {
+    std::vector<D3> pts;
+    D3 seed;
+};
+struct FpScene {
+    Polytope P[2];
+    double lo[2], hi[2];
+};
+FpScene to_fp(const Scene& s);
+
+// +1 separated, 0 touching (only methods that can say so), −1 overlapping.
+class Method {
+public:
+    virtual ~Method() = default;
+    virtual std::string name() const = 0;
+    virtual int classify(double r1, double r2) const = 0;
+};
+
+// libccd's GJK and MPR on the two scaled vertex sets (support function per polytope).
+std::unique_ptr<Method> make_libccd_gjk(const FpScene& s);
+std::unique_ptr<Method> make_libccd_mpr(const FpScene& s);
+// scalecert's own contact lines evaluated in plain double, no filter: h1, h2 recomputed in
+// double from the double vertices for each of the engine's normals.
+std::unique_ptr<Method> make_double_envelope(const Model& m, const FpScene& s);
+
+// The paper's pipeline: classify an n × n grid over I1 × I2; in each column, the touching ρ2 is
+// estimated by `bisections` rounds of bisection between the last separated and the first
+// overlapping node, repeated `repeats` times from jittered brackets and averaged (Section 3.2).
+struct GridCurve {
+    std::vector<double> rho1, rho2;  // one estimate per column where the column changes state
+    long classifications = 0;
+};
+GridCurve grid_search(const Method& method, const FpScene& s, int n, int bisections = 0, int repeats = 1);
+
+}  // namespace scalecert::fp

@@ -1,0 +1,133 @@
+#include "scalecert/baselines.hpp"
+
+#include <ccd/ccd.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace scalecert::fp {
+
+FpScene to_fp(const Scene& s) {
+    FpScene f;
+    for (int i = 0; i < 2; ++i) {
+        for (const Vec3q& v : s.P[i].points) f.P[i].pts.push_back({to_double_rn(v[0]), to_double_rn(v[1]), to_double_rn(v[2])});
+        f.P[i].seed = {to_double_rn(s.P[i].seed[0]), to_double_rn(s.P[i].seed[1]), to_double_rn(s.P[i].seed[2])};
+        f.lo[i] = to_double_rn(s.lo[i]);
+        f.hi[i] = to_double_rn(s.hi[i]);
+    }
+    return f;
+}
+
+namespace {
+
+// A scaled polytope as libccd sees it: s + ρ(v − s).
+struct Scaled {
+    const Polytope* p;
+    double rho;
+};
+
+void support(const void* obj, const ccd_vec3_t* dir, ccd_vec3_t* out) {
+    const Scaled& s = *static_cast<const Scaled*>(obj);
+    const D3& c = s.p->seed;
+    double best = -INFINITY;
+    const D3* arg = &s.p->pts[0];
+    for (const D3& v : s.p->pts) {
+        double d = dir->v[0] * v[0] + dir->v[1] * v[1] + dir->v[2] * v[2];
+        if (d > best) { best = d; arg = &v; }
+    }
+    for (int k = 0; k < 3; ++k) out->v[k] = c[k] + s.rho * ((*arg)[k] - c[k]);
+}
+
+void center(const void* obj, ccd_vec3_t* out) {
+    const Scaled& s = *static_cast<const Scaled*>(obj);
+    for (int k = 0; k < 3; ++k) out->v[k] = s.p->seed[k];
+}
+
+class Libccd : public Method {
+public:
+    Libccd(const FpScene& s, bool mpr) : s_(s), mpr_(mpr) {}
+    std::string name() const override { return mpr_ ? "libccd-mpr" : "libccd-gjk"; }
+    int classify(double r1, double r2) const override {
+        Scaled a{&s_.P[0], r1}, b{&s_.P[1], r2};
+        ccd_t ccd;
+        CCD_INIT(&ccd);
+        ccd.support1 = support;
+        ccd.support2 = support;
+        ccd.center1 = center;
+        ccd.center2 = center;
+        ccd.max_iterations = 500;
+        int hit = mpr_ ? ccdMPRIntersect(&a, &b, &ccd) : ccdGJKIntersect(&a, &b, &ccd);
+        return hit ? -1 : 1;
+    }
+
+private:
+    FpScene s_;
+    bool mpr_;
+};
+
+class DoubleEnvelope : public Method {
+public:
+    DoubleEnvelope(const Model& m, const FpScene& s) {
+        const D3 d{s.P[1].seed[0] - s.P[0].seed[0], s.P[1].seed[1] - s.P[0].seed[1], s.P[1].seed[2] - s.P[0].seed[2]};
+        for (const ContactLine& L : m.lines) {
+            D3 n{L.normal[0].get_d(), L.normal[1].get_d(), L.normal[2].get_d()};
+            double h1 = -INFINITY, h2 = -INFINITY;
+            for (const D3& v : s.P[0].pts) h1 = std::max(h1, n[0] * (v[0] - s.P[0].seed[0]) + n[1] * (v[1] - s.P[0].seed[1]) + n[2] * (v[2] - s.P[0].seed[2]));
+            for (const D3& w : s.P[1].pts) h2 = std::max(h2, -(n[0] * (w[0] - s.P[1].seed[0]) + n[1] * (w[1] - s.P[1].seed[1]) + n[2] * (w[2] - s.P[1].seed[2])));
+            nd_.push_back(n[0] * d[0] + n[1] * d[1] + n[2] * d[2]);
+            h1_.push_back(h1);
+            h2_.push_back(h2);
+        }
+    }
+    std::string name() const override { return "double-envelope"; }
+    int classify(double r1, double r2) const override {
+        double best = -INFINITY;
+        for (size_t i = 0; i < nd_.size(); ++i) best = std::max(best, nd_[i] - r1 * h1_[i] - r2 * h2_[i]);
+        return best > 0 ? 1 : best == 0 ? 0 : -1;
+    }
+
+private:
+    std::vector<double> nd_, h1_, h2_;
+};
+
+}  // namespace
+
+std::unique_ptr<Method> make_libccd_gjk(const FpScene& s) { return std::make_unique<Libccd>(s, false); }
+std::unique_ptr<Method> make_libccd_mpr(const FpScene& s) { return std::make_unique<Libccd>(s, true); }
+std::unique_ptr<Method> make_double_envelope(const Model& m, const FpScene& s) { return std::make_unique<DoubleEnvelope>(m, s); }
+
+GridCurve grid_search(const Method& method, const FpScene& s, int n, int bisections, int repeats) {
+    GridCurve g;
+    auto at = [](double lo, double hi, int i, int n) { return n == 1 ? lo : lo + (hi - lo) * i / (n - 1); };
+    for (int i = 0; i < n; ++i) {
+        double x = at(s.lo[0], s.hi[0], i, n);
+        int prev = 0;
+        for (int j = 0; j < n; ++j) {
+            double y = at(s.lo[1], s.hi[1], j, n);
+            int c = method.classify(x, y);
+            ++g.classifications;
+            if (j > 0 && prev > 0 && c <= 0) {
+                // The touching ρ2 lies in (y_prev, y]: bisection, repeated and averaged.
+                double y0 = at(s.lo[1], s.hi[1], j - 1, n), sum = 0;
+                for (int r = 0; r < repeats; ++r) {
+                    double lo = y0, hi = y;
+                    double jitter = (hi - lo) * 1e-3 * r;  // the paper averages several runs
+                    lo += jitter;
+                    for (int b = 0; b < bisections; ++b) {
+                        double mid = 0.5 * (lo + hi);
+                        ++g.classifications;
+                        (method.classify(x, mid) > 0 ? lo : hi) = mid;
+                    }
+                    sum += bisections ? 0.5 * (lo + hi) : y;
+                }
+                g.rho1.push_back(x);
+                g.rho2.push_back(sum / repeats);
+                break;
+            }
+            prev = c;
+        }
+    }
+    return g;
+}
+
+}  // namespace scalecert::fp

@@ -1,0 +1,81 @@
+// The filtered queries (doubles with a proven error bound, exact fallback) give exactly the exact
+// verdicts: at random pairs, at doubles exactly on the curve and one ulp either side of it.
+#define BOOST_TEST_MODULE fast
+#include <boost/test/unit_test.hpp>
+
+#include "scalecert/baselines.hpp"
+#include "scalecert/fast_query.hpp"
+#include "support.hpp"
+
+#include <cmath>
+
+using namespace scalecert;
+
+BOOST_AUTO_TEST_CASE(filtered_equals_exact) {
+    std::mt19937 g(41);
+    std::uniform_real_distribution<double> u(0.25, 4.0);
+    std::uint64_t exact_stage = 0;
+    for (int t = 0; t < 25; ++t) {
+        Scene sc = test::random_scene(g, 4 + t % 6, 4 + t % 5);
+        Model m = build_model(sc);
+        Curve c = build_curve(m);
+        FastCurve fc(m, c);
+        FastDirect fd(m);
+        test::Brute brute(sc);
+        auto probe = [&](double a, double b) {
+            Verdict e = query(m, c, exact_from_double(a), exact_from_double(b), false).verdict;
+            BOOST_TEST(fc.classify(a, b) == e);
+            BOOST_TEST(fd.classify(a, b) == e);
+            BOOST_TEST(test::verdict_sign(e) == brute.classify(sc, exact_from_double(a), exact_from_double(b)));
+        };
+        for (int k = 0; k < 200; ++k) probe(u(g), u(g));
+        for (int k = 0; k < 50; ++k) {
+            double a = u(g);
+            Q f = c.env.value(m.lines, exact_from_double(a));
+            double b = to_double_rn(f);
+            if (!(b > 0)) continue;
+            probe(a, b);
+            probe(a, std::nextafter(b, 0.0));
+            probe(a, std::nextafter(b, 10.0));
+        }
+        exact_stage += fc.counts.exact;
+    }
+    BOOST_TEST(exact_stage > 0u);  // the near-curve probes did reach the exact stage
+}
+
+BOOST_AUTO_TEST_CASE(batch_on_two_threads_equals_one_by_one) {
+    Model m = build_model(load_scene(std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/fig5_vf_ve_ee.json"));
+    Curve c = build_curve(m);
+    FastCurve fc(m, c);
+    std::mt19937 g(5);
+    std::uniform_real_distribution<double> u(0.8, 3.0);
+    std::vector<double> a(20000), b(20000);
+    for (size_t i = 0; i < a.size(); ++i) a[i] = u(g), b[i] = u(g);
+    std::vector<Verdict> out;
+    StageCounts s = classify_batch(fc, a, b, out, 2);
+    BOOST_TEST(s.filtered + s.exact == a.size());
+    for (size_t i = 0; i < a.size(); i += 97)
+        BOOST_TEST(out[i] == query(m, c, exact_from_double(a[i]), exact_from_double(b[i]), false).verdict);
+}
+
+BOOST_AUTO_TEST_CASE(libccd_baseline_agrees_away_from_the_curve) {
+    // A small audit: away from the curve (|ρ2 − f(ρ1)| > 1/10) GJK and MPR must agree with the
+    // exact verdict; this checks the baseline's wiring, not its precision.
+    Model m = build_model(load_scene(std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/fig5_vf_ve_ee.json"));
+    Curve c = build_curve(m);
+    fp::FpScene f = fp::to_fp(m.scene);
+    auto gjk = fp::make_libccd_gjk(f), mpr = fp::make_libccd_mpr(f), dbl = fp::make_double_envelope(m, f);
+    int checked = 0;
+    for (int i = 0; i <= 40; ++i)
+        for (int j = 0; j <= 40; ++j) {
+            Q r1 = Q(4, 5) + Q(11, 200) * i, r2 = Q(4, 5) + Q(11, 200) * j;
+            Q f1 = c.env.value(m.lines, r1);
+            if (abs(r2 - f1) < Q(1, 10)) continue;
+            int e = r2 < f1 ? 1 : -1;
+            BOOST_TEST(gjk->classify(r1.get_d(), r2.get_d()) == e);
+            BOOST_TEST(mpr->classify(r1.get_d(), r2.get_d()) == e);
+            BOOST_TEST(dbl->classify(r1.get_d(), r2.get_d()) == e);
+            ++checked;
+        }
+    BOOST_TEST(checked > 1000);
+}

@@ -1,0 +1,164 @@
+// scalecert-bench: speed of the exact engine against floating-point baselines measured in the
+// same run, reported as ratios. Usage: scalecert-bench [--quick]
+#include "scalecert/baselines.hpp"
+#include "scalecert/fast_query.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <random>
+
+using namespace scalecert;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+
+// Seconds per call of f (best of `reps` runs of `n` calls).
+template <class F>
+double per_call(F&& f, long n, int reps = 3) {
+    double best = 1e300;
+    for (int r = 0; r < reps; ++r) {
+        auto t0 = Clock::now();
+        for (long i = 0; i < n; ++i) f(i);
+        best = std::min(best, std::chrono::duration<double>(Clock::now() - t0).count() / static_cast<double>(n));
+    }
+    return best;
+}
+
+Q qc(long p, long q) { Q r(p, q); r.canonicalize(); return r; }
+
+// Two boxes: P1 = [−1,1]^3; P2 a 2×1×1 box turned by the exact rotation with cos 3/5, sin 4/5
+// about z, then about x, centred at (3, 1/2, 1/3).
+Scene boxes() {
+    Scene s;
+    for (int x : {-1, 1}) for (int y : {-1, 1}) for (int z : {-1, 1}) s.P[0].points.push_back({Q(x), Q(y), Q(z)});
+    for (int x : {-2, 2}) for (int y : {-1, 1}) for (int z : {-1, 1}) {
+        Q X = qc(3 * x - 4 * y, 5), Y = qc(4 * x + 3 * y, 5), Z = Q(z);
+        Q Y2 = qc(3, 5) * Y - qc(4, 5) * Z, Z2 = qc(4, 5) * Y + qc(3, 5) * Z;
+        s.P[1].points.push_back({X + 3, Y2 + qc(1, 2), Z2 + qc(1, 3)});
+    }
+    s.P[0].seed = {Q(0), Q(0), Q(0)};
+    s.P[1].seed = {Q(3), qc(1, 2), qc(1, 3)};
+    s.lo[0] = s.lo[1] = qc(1, 2);
+    s.hi[0] = s.hi[1] = Q(3);
+    return s;
+}
+
+// n integer points near spheres of radius R (a many-vertex hull), the second offset by 3R.
+Scene spheres(int n, long R, unsigned seed) {
+    std::mt19937_64 g(seed);
+    std::normal_distribution<double> N(0, 1);
+    Scene s;
+    for (int i = 0; i < 2; ++i) {
+        for (int k = 0; k < n; ++k) {
+            double x = N(g), y = N(g), z = N(g), l = std::sqrt(x * x + y * y + z * z);
+            s.P[i].points.push_back({Q(std::lround(R * x / l) + (i ? 3 * R : 0)), Q(std::lround(R * y / l) + (i ? R / 10 : 0)), Q(std::lround(R * z / l))});
+        }
+        Vec3q c{Q(0), Q(0), Q(0)};
+        for (auto& v : s.P[i].points) for (int k = 0; k < 3; ++k) c[k] += v[k];
+        for (int k = 0; k < 3; ++k) c[k] /= Q(n);
+        s.P[i].seed = c;
+        s.lo[i] = qc(1, 2);
+        s.hi[i] = Q(2);
+    }
+    return s;
+}
+
+struct Row { std::string method, scene; double seconds; std::string ratio; };
+std::vector<Row> rows;
+void row(const std::string& m, const std::string& sc, double t, const std::string& ratio = "") {
+    rows.push_back({m, sc, t, ratio});
+    std::fprintf(stderr, "  %-44s %-14s %12.3g s %s\n", m.c_str(), sc.c_str(), t, ratio.c_str());
+}
+std::string ratio(const char* fmt, double x) { char b[64]; std::snprintf(b, sizeof b, fmt, x); return b; }
+
+void query_benchmarks(const std::string& name, const Scene& sc, long nq) {
+    Model m = build_model(sc);
+    Curve c = build_curve(m);
+    fp::FpScene f = fp::to_fp(sc);
+    auto gjk = fp::make_libccd_gjk(f);
+    FastCurve fc(m, c);
+    FastDirect fd(m);
+    std::mt19937_64 g(7);
+    std::uniform_real_distribution<double> u1(f.lo[0], f.hi[0]), u2(f.lo[1], f.hi[1]);
+    std::vector<double> r1(nq), r2(nq);
+    for (long i = 0; i < nq; ++i) r1[i] = u1(g), r2[i] = u2(g);
+    volatile int sink = 0;
+    double t_gjk = per_call([&](long i) { sink += gjk->classify(r1[i], r2[i]); }, nq);
+    double t_curve = per_call([&](long i) { sink += static_cast<int>(fc.classify(r1[i], r2[i])); }, nq);
+    double t_direct = per_call([&](long i) { sink += static_cast<int>(fd.classify(r1[i], r2[i])); }, nq);
+    long wrong = 0;
+    for (long i = 0; i < nq; ++i) {
+        int e = fc.classify(r1[i], r2[i]) == Verdict::Separated ? 1 : -1;
+        wrong += gjk->classify(r1[i], r2[i]) != e;
+    }
+    row("libccd GJK, one query", name, t_gjk, "1 (baseline)");
+    row("exact query with curve (filtered)", name, t_curve, ratio("%.1fx faster than GJK", t_gjk / t_curve));
+    row("exact query, no curve (filtered)", name, t_direct, ratio("%.2fx GJK's time", t_direct / t_gjk));
+    std::fprintf(stderr, "    stages: with curve %lu filtered / %lu exact; no curve %lu / %lu; GJK verdicts differing from exact: %ld of %ld\n",
+                 (unsigned long)fc.counts.filtered, (unsigned long)fc.counts.exact, (unsigned long)fd.counts.filtered,
+                 (unsigned long)fd.counts.exact, wrong, nq);
+    // Points exactly on the curve: the filter cannot decide them; all go to the exact stage.
+    FastCurve fc2(m, c);
+    long on = 0;
+    for (long i = 0; i < 1000; ++i) {
+        double x = r1[i];
+        Q y = c.env.value(m.lines, exact_from_double(x));
+        double yd = to_double_rn(y);
+        if (exact_from_double(yd) == y) { fc2.classify(x, yd); ++on; }
+    }
+    std::fprintf(stderr, "    on-curve points representable as doubles: %ld, decided exactly: %lu\n", on, (unsigned long)fc2.counts.exact);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
+    long nq = quick ? 20000 : 200000;
+    std::fprintf(stderr, "scalecert-bench%s (times per call, best of 3)\n", quick ? " --quick" : "");
+    Scene bx = boxes(), h1000 = spheres(1000, 1000000, 1), h10k = spheres(10000, 10000000, 2);
+    query_benchmarks("boxes (8+8)", bx, nq);
+    query_benchmarks("hulls (1000)", h1000, nq / 10);
+    // The whole curve: exact engine against the paper's grid search at 256 x 256 (libccd GJK at
+    // each node, with 20 bisection steps per column as in Section 3.2).
+    for (auto* sc : {&bx, &h1000}) {
+        const char* nm = sc == &bx ? "boxes (8+8)" : "hulls (1000)";
+        fp::FpScene f = fp::to_fp(*sc);
+        auto gjk = fp::make_libccd_gjk(f);
+        double t_exact = per_call([&](long) { Model m = build_model(*sc); Curve c = build_curve(m); }, 1, quick ? 1 : 3);
+        int n = 256;
+        fp::GridCurve gc;
+        double t_grid = per_call([&](long) { gc = fp::grid_search(*gjk, f, n, 20, 1); }, 1, 1);
+        row("paper's grid search 256x256 + bisection (GJK)", nm, t_grid, "1 (baseline)");
+        row("exact curve (hull, lines, envelope)", nm, t_exact, ratio("%.0fx faster than the grid", t_grid / t_exact));
+    }
+    double t10k = per_call([&](long) { Model m = build_model(h10k); Curve c = build_curve(m); }, 1, 1);
+    row("exact curve, two 10,000-vertex hulls", "hulls (10000)", t10k, "target < 1 s");
+    // Batch: many pairs on one core and on two.
+    {
+        Model m = build_model(bx);
+        Curve c = build_curve(m);
+        FastCurve fc(m, c);
+        long n = quick ? 200000 : 2000000;
+        std::mt19937_64 g(3);
+        std::uniform_real_distribution<double> u(0.5, 3);
+        std::vector<double> a(n), b(n);
+        for (long i = 0; i < n; ++i) a[i] = u(g), b[i] = u(g);
+        std::vector<Verdict> out;
+        double t1 = per_call([&](long) { classify_batch(fc, a, b, out, 1); }, 1);
+        double t2 = per_call([&](long) { classify_batch(fc, a, b, out, 2); }, 1);
+        row("batch " + std::to_string(n) + " pairs, 1 thread", "boxes (8+8)", t1, "1 (baseline)");
+        row("batch " + std::to_string(n) + " pairs, 2 threads", "boxes (8+8)", t2, ratio("%.2fx faster", t1 / t2));
+    }
+    std::printf("| method | case | time | ratio |\n|---|---|---|---|\n");
+    for (const Row& r : rows) {
+        double t = r.seconds;
+        char buf[32];
+        if (t < 1e-6) std::snprintf(buf, sizeof buf, "%.0f ns", t * 1e9);
+        else if (t < 1e-3) std::snprintf(buf, sizeof buf, "%.2f µs", t * 1e6);
+        else if (t < 1) std::snprintf(buf, sizeof buf, "%.1f ms", t * 1e3);
+        else std::snprintf(buf, sizeof buf, "%.2f s", t);
+        std::printf("| %s | %s | %s | %s |\n", r.method.c_str(), r.scene.c_str(), buf, r.ratio.c_str());
+    }
+}
