@@ -3,6 +3,8 @@
 #include "scalecert/closed_forms.hpp"
 #include "scalecert/witness.hpp"
 
+#include <mpfr.h>
+
 namespace scalecert {
 
 namespace {
@@ -216,6 +218,80 @@ Json partition_json(const Model& m, const Curve& c, const Partition& p) {
     j["seed_interior"] = seed_interior_json(m);
     j["scene"] = scene_json(m);
     return j;
+}
+
+double scaled_length(const Vec3q& v1, const Vec3q& v2, const Q& g) {
+    Vec3q e = sub(v2, v1);
+    Q len2 = dot(e, e);
+    mpfr_t x, y;
+    mpfr_inits2(256, x, y, static_cast<mpfr_ptr>(nullptr));
+    mpfr_set_q(x, len2.get_mpq_t(), MPFR_RNDN);
+    mpfr_sqrt(x, x, MPFR_RNDN);
+    mpfr_set_q(y, g.get_mpq_t(), MPFR_RNDN);
+    mpfr_mul(x, x, y, MPFR_RNDN);
+    double d = mpfr_get_d(x, MPFR_RNDN);
+    mpfr_clears(x, y, static_cast<mpfr_ptr>(nullptr));
+    return d;
+}
+
+namespace {
+Json pieces_json(const std::vector<LinearPiece>& f) {
+    Json a = Json::array();
+    for (const LinearPiece& p : f) {
+        Json o;
+        put(o, "rho", std::vector<Q>{p.from, p.to});
+        put(o, "slope", p.slope);
+        put(o, "intercept", p.intercept);
+        a.push_back(o);
+    }
+    return a;
+}
+}  // namespace
+
+void add_segment_json(Json& j, const Model& m, const Curve& c, const Segment& s) {
+    Json seg;
+    put(seg, "from", s.v1);
+    put(seg, "to", s.v2);
+    seg["t1"] = pieces_json(s.t[0]);
+    seg["t2"] = pieces_json(s.t[1]);
+    j["segment"] = seg;
+    Json tc = Json::array(), tcd = Json::array();
+    for (const auto& p : t_curve(m, c, s)) {
+        tc.push_back(Json::array({to_exact_string(p[0]), to_exact_string(p[1])}));
+        tcd.push_back(Json::array({to_double_rn(p[0]), to_double_rn(p[1])}));
+    }
+    j["t_curve"] = tc;
+    j["t_curve_double"] = tcd;
+    // Contact loci: the common point at each curve vertex (the contact point moves linearly
+    // between them on (V,F), (F,V) and (E,E) pieces).
+    Json loci = Json::array();
+    for (const auto& v : curve_vertices(m, c)) {
+        size_t line = c.env.pieces[c.env.locate(v[0])].line;
+        loci.push_back(witness_json(make_witness(m, v[0], v[1], line)));
+    }
+    j["contact_loci"] = loci;
+    Json faces;
+    const char* names[2] = {"P1", "P2"};
+    for (int i = 0; i < 2; ++i) {
+        Json fs = Json::array();
+        for (const Face& f : m.P[i].faces) fs.push_back(f.verts);
+        faces[names[i]] = fs;
+    }
+    j["faces"] = faces;
+    j["scene"] = scene_json(m);
+}
+
+void add_query_segment_json(Json& j, const Segment& s, const Q& rho1, const Q& rho2) {
+    Json seg;
+    put(seg, "from", s.v1);
+    put(seg, "to", s.v2);
+    put(seg, "t1", eval(s.t[0], rho1));
+    put(seg, "t2", eval(s.t[1], rho2));
+    Q g = directional_gap(s, rho1, rho2);
+    put(seg, "gap_fraction", g);
+    seg["gap_distance_double"] = scaled_length(s.v1, s.v2, g);
+    seg["gap_meaning"] = g > 0 ? "gap along the segment" : g < 0 ? "penetration along the segment" : "contact on the segment";
+    j["segment"] = seg;
 }
 
 std::string dump(const Json& j) { return j.dump(1) + "\n"; }

@@ -2,6 +2,7 @@
 // format, described field by field in certificates/FORMAT.md).
 #pragma once
 #include "scalecert/partition.hpp"
+#include "scalecert/segment.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -12,6 +13,14 @@ using Json = nlohmann::ordered_json;
 Json curve_json(const Model& m, const Curve& c);
 Json query_json(const Model& m, const QueryResult& r);
 Json partition_json(const Model& m, const Curve& c, const Partition& p);
+
+// Adds the segment, t1/t2 pieces, the t-plane curve, the contact loci and the hull faces (for
+// figures) to a curve document.
+void add_segment_json(Json& j, const Model& m, const Curve& c, const Segment& s);
+// Adds t1, t2 and the directional gap to a query document.
+void add_query_segment_json(Json& j, const Segment& s, const Q& rho1, const Q& rho2);
+// |v2 − v1|·g to the nearest double (MPFR at 256 bits, then rounded).
+double scaled_length(const Vec3q& v1, const Vec3q& v2, const Q& g);
 
 // Serialises with a trailing newline; byte-identical for identical input.
 std::string dump(const Json& j);

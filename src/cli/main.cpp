@@ -1,6 +1,7 @@
 // The scalecert command: curve, query, partition.
 #include "scalecert/certificate.hpp"
 #include "scalecert/fast_query.hpp"
+#include "scalecert/baselines.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -13,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <thread>
 
 using namespace scalecert;
@@ -62,6 +64,28 @@ Q read_rho(const std::string& text, const char* name, const ReadOptions& opt) {
     return r;
 }
 
+Segment parse_segment(const std::string& spec, const Model& m, const ReadOptions&) {
+    if (spec == "seeds") return make_segment(m, m.s[0], m.s[1]);
+    auto colon = spec.find(':');
+    if (colon == std::string::npos) throw InputError("--segment: expected 'seeds' or x1,y1,z1:x2,y2,z2");
+    Vec3q v[2];
+    std::string parts[2] = {spec.substr(0, colon), spec.substr(colon + 1)};
+    for (int i = 0; i < 2; ++i) {
+        std::string p = parts[i];
+        for (int k = 0; k < 3; ++k) {
+            auto comma = p.find(',');
+            if ((k < 2) != (comma != std::string::npos)) throw InputError("--segment: expected three coordinates per end");
+            try {
+                v[i][k] = parse_exact(p.substr(0, comma));
+            } catch (const InputError& e) {
+                throw InputError(std::string("--segment: ") + e.what());
+            }
+            p = k < 2 ? p.substr(comma + 1) : "";
+        }
+    }
+    return make_segment(m, v[0], v[1]);
+}
+
 // Pairs "rho1 rho2", one per line; blank lines and '#' comments skipped.
 void read_pairs(const std::string& path, std::vector<double>& r1, std::vector<double>& r2) {
     std::ifstream file;
@@ -96,7 +120,8 @@ int main(int argc, char** argv) {
     app.require_subcommand(1);
     ReadOptions opt;
     std::string scene_path, out, rho1s, rho2s;
-    bool as_json = false;
+    bool as_json = false, in_t = false;
+    std::string segment_spec;
     auto common = [&](CLI::App* sub) {
         sub->add_option("SCENE", scene_path, "scene file (JSON)")->required();
         sub->add_option("--out", out, "write the output to this file (atomically)");
@@ -104,13 +129,23 @@ int main(int argc, char** argv) {
     };
     CLI::App* curve = app.add_subcommand("curve", "the touching curve over I1, its switch points and the growth distance");
     common(curve);
+    curve->add_option("--segment", segment_spec, "add the t1-t2 curve along a segment: seeds | x1,y1,z1:x2,y2,z2");
     CLI::App* query = app.add_subcommand("query", "separated / touching / overlapping at (RHO1, RHO2)");
     common(query);
     query->add_option("RHO1", rho1s, "scaling of P1 (exact: 3/2, 1.5, 15e-1)")->required();
     query->add_option("RHO2", rho2s, "scaling of P2")->required();
     query->add_flag("--json", as_json, "the verdict with its certificate, as JSON");
+    query->add_option("--segment", segment_spec, "report t1, t2 and the gap along a segment: seeds | x1,y1,z1:x2,y2,z2");
+    query->add_flag("--in-t", in_t, "RHO1 RHO2 are t1 t2 along the segment (default: seeds)");
     CLI::App* part = app.add_subcommand("partition", "the certified partition of I1 x I2 (the certificate)");
     common(part);
+    CLI::App* grid = app.add_subcommand("grid", "the paper's floating-point grid search (a baseline, not certified)");
+    common(grid);
+    int grid_n = 64, grid_bis = 0;
+    std::string grid_method = "libccd-gjk";
+    grid->add_option("--n", grid_n, "grid resolution per axis")->check(CLI::Range(2, 4096));
+    grid->add_option("--bisections", grid_bis, "bisection steps per column")->check(CLI::Range(0, 60));
+    grid->add_option("--method", grid_method, "libccd-gjk | libccd-mpr | double-envelope");
     CLI::App* batch = app.add_subcommand("classify", "exact verdicts for many pairs: lines 'rho1 rho2' (doubles, classified at their exact values)");
     std::string pairs_path = "-";
     unsigned threads = std::max(1u, std::thread::hardware_concurrency());
@@ -141,12 +176,58 @@ int main(int argc, char** argv) {
         Curve c = build_curve(m);
         lap("envelope and curve");
         std::string text;
+        std::optional<Segment> seg;
+        if (in_t && segment_spec.empty()) segment_spec = "seeds";
+        if (!segment_spec.empty()) seg = parse_segment(segment_spec, m, opt);
         if (*curve) {
-            text = dump(curve_json(m, c));
+            Json j = curve_json(m, c);
+            if (seg) add_segment_json(j, m, c, *seg);
+            text = dump(j);
         } else if (*query) {
-            Q r1 = read_rho(rho1s, "RHO1", opt), r2 = read_rho(rho2s, "RHO2", opt);
+            Q r1, r2;
+            if (in_t) {
+                Q t1 = read_rho(rho1s, "T1", opt), t2 = read_rho(rho2s, "T2", opt);
+                auto a = rho_from_t(*seg, 0, t1), b = rho_from_t(*seg, 1, t2);
+                if (!a) throw InputError("T1: outside t1(I1)");
+                if (!b) throw InputError("T2: outside t2(I2)");
+                r1 = *a;
+                r2 = *b;
+            } else {
+                r1 = read_rho(rho1s, "RHO1", opt);
+                r2 = read_rho(rho2s, "RHO2", opt);
+            }
             QueryResult r = scalecert::query(m, c, r1, r2, as_json);
-            text = as_json ? dump(query_json(m, r)) : std::string(verdict_name(r.verdict)) + "\n";
+            if (as_json) {
+                Json j = query_json(m, r);
+                if (seg) add_query_segment_json(j, *seg, r1, r2);
+                text = dump(j);
+            } else {
+                text = std::string(verdict_name(r.verdict)) + "\n";
+                if (in_t) text += "rho1 " + to_exact_string(r1) + "\nrho2 " + to_exact_string(r2) + "\n";
+                if (seg) {
+                    Q g = directional_gap(*seg, r1, r2);
+                    text += "t1 " + to_exact_string(eval(seg->t[0], r1)) + "\nt2 " + to_exact_string(eval(seg->t[1], r2)) +
+                            "\ngap_fraction " + to_exact_string(g) + "\ngap_distance ~" +
+                            std::to_string(scaled_length(seg->v1, seg->v2, g)) + "\n";
+                }
+            }
+        } else if (*grid) {
+            fp::FpScene f = fp::to_fp(m.scene);
+            std::unique_ptr<fp::Method> meth;
+            if (grid_method == "libccd-gjk") meth = fp::make_libccd_gjk(f);
+            else if (grid_method == "libccd-mpr") meth = fp::make_libccd_mpr(f);
+            else if (grid_method == "double-envelope") meth = fp::make_double_envelope(m, f);
+            else throw InputError("--method: unknown method '" + grid_method + "'");
+            fp::GridCurve gc = fp::grid_search(*meth, f, grid_n, grid_bis, grid_bis ? 3 : 1);
+            Json j;
+            j["method"] = meth->name();
+            j["n"] = grid_n;
+            j["bisections"] = grid_bis;
+            j["classifications"] = gc.classifications;
+            Json samples = Json::array();
+            for (size_t i = 0; i < gc.rho1.size(); ++i) samples.push_back(Json::array({gc.rho1[i], gc.rho2[i]}));
+            j["samples"] = samples;
+            text = dump(j);
         } else if (*batch) {
             std::vector<double> r1, r2;
             read_pairs(pairs_path, r1, r2);

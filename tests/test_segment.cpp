@@ -1,0 +1,69 @@
+// The t1–t2 decision curve along a segment (the paper's Section III).
+#define BOOST_TEST_MODULE segment
+#include <boost/test/unit_test.hpp>
+
+#include "scalecert/segment.hpp"
+#include "support.hpp"
+
+using namespace scalecert;
+
+static Model hand_model() {
+    return build_model(load_scene(std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/tetra_box_switch.json"));
+}
+
+BOOST_AUTO_TEST_CASE(seed_segment_by_hand) {
+    // Tetrahedron seed s1 = (0,0,9/2), box seed s2 = 0: the segment runs straight down the z axis.
+    // It leaves the tetrahedron through face c,a,b at (0,0,4) (barycentric 2/7, 2/7, 3/7 of c, a, b,
+    // worked out in test_hand_curves' scene notes), i.e. t_s1 = (9/2 − 4)/(9/2) = 1/9; it leaves the
+    // box through its top z = 1, t_s2 = 1/(9/2) = 2/9. The Remark: t1 = ρ1/9, t2 = 2ρ2/9.
+    Model m = hand_model();
+    Curve c = build_curve(m);
+    Segment s = make_segment(m, m.s[0], m.s[1]);
+    BOOST_TEST_REQUIRE(s.t[0].size() == 1u);
+    BOOST_TEST_REQUIRE(s.t[1].size() == 1u);
+    BOOST_TEST(s.t[0][0].slope == Q(1, 9));
+    BOOST_TEST(s.t[0][0].intercept == 0);
+    BOOST_TEST(s.t[1][0].slope == Q(2, 9));
+    BOOST_TEST(s.t[1][0].intercept == 0);
+    // gap along the segment: 1 − ρ1/9 − 2ρ2/9; at (1, 1): 2/3.
+    BOOST_TEST(directional_gap(s, Q(1), Q(1)) == Q(2, 3));
+    // The t-curve: (V,F) ρ2 = 9/2 − 5ρ1/2 maps to t2 = 2/9(9/2 − 5·(9 t1)/2) = 1 − 5 t1, so the
+    // switch (1, 2) maps to (1/9, 4/9).
+    auto tc = t_curve(m, c, s);
+    bool found = false;
+    for (const auto& p : tc) found |= (p[0] == Q(1, 9) && p[1] == Q(4, 9));
+    BOOST_TEST(found);
+}
+
+BOOST_AUTO_TEST_CASE(t_plane_query_agrees_with_rho_plane) {
+    std::mt19937 g(3);
+    int touching = 0;
+    for (int t = 0; t < 10; ++t) {
+        Scene sc = test::random_scene(g, 5 + t % 4, 5);
+        Model m = build_model(sc);
+        Curve c = build_curve(m);
+        Segment s = make_segment(m, m.s[0], m.s[1]);
+        std::uniform_int_distribution<int> u(25, 400);
+        for (int k = 0; k < 30; ++k) {
+            Q r1 = test::qc(u(g), 100), r2 = test::qc(u(g), 100);
+            auto b1 = rho_from_t(s, 0, eval(s.t[0], r1)), b2 = rho_from_t(s, 1, eval(s.t[1], r2));
+            BOOST_TEST_REQUIRE((b1 && b2));
+            BOOST_TEST(*b1 == r1);
+            BOOST_TEST(*b2 == r2);
+        }
+        // every vertex of the t-curve is the image of a touching pair
+        for (const auto& p : t_curve(m, c, s)) {
+            auto r1 = rho_from_t(s, 0, p[0]), r2 = rho_from_t(s, 1, p[1]);
+            BOOST_TEST_REQUIRE((r1 && r2));
+            BOOST_TEST(test::Brute(sc).classify(sc, *r1, *r2) == 0);
+            ++touching;
+        }
+    }
+    BOOST_TEST(touching > 0);
+}
+
+BOOST_AUTO_TEST_CASE(segment_ends_must_be_inside) {
+    Model m = hand_model();
+    BOOST_CHECK_THROW(make_segment(m, {Q(0), Q(0), Q(100)}, m.s[1]), InputError);
+    BOOST_CHECK_THROW(make_segment(m, m.s[0], {Q(1), Q(1), Q(1)}), InputError);  // a box corner: on P2(lo2)'s... outside
+}
