@@ -141,6 +141,8 @@ Json curve_body(const Model& m, const Curve& c, bool certificate) {
 }
 }  // namespace
 
+void put_exact(Json& o, const std::string& key, const Q& q) { put(o, key, q); }
+
 Json curve_json(const Model& m, const Curve& c) { return curve_body(m, c, false); }
 
 Json query_json(const Model& m, const QueryResult& r) {

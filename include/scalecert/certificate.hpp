@@ -10,6 +10,9 @@ namespace scalecert {
 
 using Json = nlohmann::ordered_json;
 
+// o[key] = exact string, o[key + "_double"] = nearest double.
+void put_exact(Json& o, const std::string& key, const Q& q);
+
 Json curve_json(const Model& m, const Curve& c);
 Json query_json(const Model& m, const QueryResult& r);
 Json partition_json(const Model& m, const Curve& c, const Partition& p);

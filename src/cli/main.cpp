@@ -1,6 +1,7 @@
 // The scalecert command: curve, query, partition.
 #include "scalecert/certificate.hpp"
 #include "scalecert/fast_query.hpp"
+#include "scalecert/audit.hpp"
 #include "scalecert/baselines.hpp"
 
 #include <CLI/CLI.hpp>
@@ -13,6 +14,8 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <filesystem>
+#include <sstream>
 #include <cmath>
 #include <optional>
 #include <thread>
@@ -146,6 +149,34 @@ int main(int argc, char** argv) {
     grid->add_option("--n", grid_n, "grid resolution per axis")->check(CLI::Range(2, 4096));
     grid->add_option("--bisections", grid_bis, "bisection steps per column")->check(CLI::Range(0, 60));
     grid->add_option("--method", grid_method, "libccd-gjk | libccd-mpr | double-envelope");
+    CLI::App* certify = app.add_subcommand("certify-fp", "mark a floating-point program's claims right or wrong, exactly");
+    std::string claims_path;
+    common(certify);
+    certify->add_option("CLAIMS", claims_path, "claims: 'RHO1 RHO2 VERDICT', 'curve RHO1 RHO2' or 'growth RHO' per line")->required();
+    certify->add_flag("--json", as_json, "the report as JSON");
+    CLI::App* golden = app.add_subcommand("golden", "scenes of a family with exact answers, as JSON and CSV");
+    std::string family, eps_text = "1/1048576", out_dir;
+    int count = 1;
+    unsigned long long seed = 1;
+    golden->add_option("--family", family, "random | parallel-faces | nearly-equal-slopes | nearly-parallel-edges | vertex-vertex | far-from-origin | sliver | near-sphere")->required();
+    golden->add_option("--count", count, "how many scenes")->check(CLI::Range(1, 100000));
+    golden->add_option("--seed", seed, "random seed");
+    golden->add_option("--eps", eps_text, "degeneracy parameter (exact, default 2^-20)");
+    golden->add_option("--out", out_dir, "output directory (created)")->required();
+    CLI::App* audit = app.add_subcommand("audit", "run floating-point methods on scenes and compare with the exact answers (CSV and JSON)");
+    std::vector<std::string> audit_scenes, methods{"libccd-gjk", "libccd-mpr", "double-envelope", "grid"};
+    std::vector<int> grid_ns{16, 64, 256};
+    int sweep_from = 0, sweep_to = 0;
+    std::string audit_out = "audit";
+    audit->add_option("SCENES", audit_scenes, "scene files");
+    audit->add_option("--methods", methods, "libccd-gjk libccd-mpr double-envelope grid")->delimiter(',');
+    audit->add_option("--grid", grid_ns, "grid resolutions for the grid method")->delimiter(',');
+    audit->add_option("--family", family, "also audit a family over an eps sweep (with --sweep)");
+    audit->add_option("--sweep", sweep_from, "eps = 2^-K for K from this ...");
+    audit->add_option("--sweep-to", sweep_to, "... to this (inclusive)");
+    audit->add_option("--count", count, "scenes per eps in the sweep")->check(CLI::Range(1, 10000));
+    audit->add_option("--seed", seed, "random seed for the sweep");
+    audit->add_option("--out", audit_out, "write OUT.csv and OUT.json");
     CLI::App* batch = app.add_subcommand("classify", "exact verdicts for many pairs: lines 'rho1 rho2' (doubles, classified at their exact values)");
     std::string pairs_path = "-";
     unsigned threads = std::max(1u, std::thread::hardware_concurrency());
@@ -161,6 +192,40 @@ int main(int argc, char** argv) {
         return 2;
     }
     try {
+        if (*golden) {
+            Q eps = parse_exact(eps_text);
+            if (sgn(eps) <= 0) throw InputError("--eps must be > 0");
+            std::filesystem::create_directories(out_dir);
+            write_golden(family, count, seed, eps, out_dir);
+            std::cerr << "scalecert: wrote " << count << " " << family << " scenes with exact answers to " << out_dir << "\n";
+            return 0;
+        }
+        if (*audit) {
+            std::vector<AuditRow> rows;
+            for (const std::string& p : audit_scenes) {
+                std::cerr << "scalecert: audit: " << p << "\n";
+                auto r = audit_scene(p, load_scene(p, opt), Q(0), methods, grid_ns);
+                rows.insert(rows.end(), r.begin(), r.end());
+            }
+            if (!family.empty()) {
+                if (sweep_to < sweep_from) throw InputError("--sweep-to must be >= --sweep");
+                for (int k = sweep_from; k <= sweep_to; ++k) {
+                    Q eps(1, Z(1) << k);
+                    Rng g(seed);
+                    for (int i = 0; i < count; ++i) {
+                        std::cerr << "scalecert: audit: " << family << " eps = 2^-" << k << ", scene " << i + 1 << "/" << count << "\r";
+                        auto r = audit_scene(family + "-" + std::to_string(i), make_family_scene(family, eps, g), eps, methods, grid_ns);
+                        rows.insert(rows.end(), r.begin(), r.end());
+                    }
+                }
+                std::cerr << "\n";
+            }
+            if (rows.empty()) throw InputError("audit: no scenes (give SCENES or --family with --sweep)");
+            emit(audit_csv(rows), audit_out + ".csv");
+            emit(dump(audit_json(rows)), audit_out + ".json");
+            std::cerr << "scalecert: audit: " << rows.size() << " rows in " << audit_out << ".csv and " << audit_out << ".json\n";
+            return 0;
+        }
         const bool timing = std::getenv("SCALECERT_TIMING") != nullptr;
         auto t0 = std::chrono::steady_clock::now();
         auto lap = [&](const char* what) {
@@ -228,6 +293,13 @@ int main(int argc, char** argv) {
             for (size_t i = 0; i < gc.rho1.size(); ++i) samples.push_back(Json::array({gc.rho1[i], gc.rho2[i]}));
             j["samples"] = samples;
             text = dump(j);
+        } else if (*certify) {
+            std::ifstream f(claims_path);
+            if (!f) throw InputError(claims_path + ": cannot open claims file");
+            std::stringstream ss;
+            ss << f.rdbuf();
+            long wrong = 0;
+            text = certify_fp(m, c, ss.str(), claims_path, opt.binary_doubles, as_json, &wrong);
         } else if (*batch) {
             std::vector<double> r1, r2;
             read_pairs(pairs_path, r1, r2);

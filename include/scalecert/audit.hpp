@@ -1,0 +1,41 @@
+// Audits of floating-point collision code against the exact engine: certifying a program's
+// claims, golden data for test suites, and per-method error and speed tables.
+#pragma once
+#include "scalecert/baselines.hpp"
+#include "scalecert/certificate.hpp"
+#include "scalecert/families.hpp"
+
+namespace scalecert {
+
+// Reads claims, one per line ('#' comments):
+//   RHO1 RHO2 VERDICT   VERDICT: separated | touching | overlapping | intersecting (= not separated)
+//   curve RHO1 RHO2     a claimed point of the touching curve (e.g. a breakpoint)
+//   growth RHO          a claimed growth distance
+// and marks each right or wrong exactly. Returns the report (text or JSON); counts in *wrong.
+std::string certify_fp(const Model& m, const Curve& c, const std::string& claims, const std::string& name,
+                       bool binary_doubles, bool json, long* wrong);
+
+// Writes COUNT scenes of a family with their exact answers into DIR: NAME-i.scene.json,
+// NAME-i.golden.json and NAME-i.golden.csv. Byte-identical for the same arguments.
+void write_golden(const std::string& family, int count, std::uint64_t seed, const Q& eps, const std::string& dir);
+
+struct AuditRow {
+    std::string scene, method;
+    Q eps;
+    long queries = 0, false_separated = 0, false_overlapping = 0;
+    double seconds_per_query = 0;
+    // curve methods (grid search): errors against the exact curve
+    bool has_curve = false;
+    int grid_n = 0;
+    double growth_error = 0, max_junction_error = 0, seconds_per_curve = 0;
+    int exact_junctions = 0, junctions_found = 0, junctions_missed = 0;
+};
+
+// Runs every method on the scene: random pairs plus pairs at relative distances 2^-k above and
+// below the curve; and the grid search at each resolution in grid_ns.
+std::vector<AuditRow> audit_scene(const std::string& name, const Scene& s, const Q& eps,
+                                  const std::vector<std::string>& methods, const std::vector<int>& grid_ns);
+std::string audit_csv(const std::vector<AuditRow>& rows);
+Json audit_json(const std::vector<AuditRow>& rows);
+
+}  // namespace scalecert

@@ -1,0 +1,330 @@
+#include "scalecert/audit.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+namespace scalecert {
+
+namespace {
+Q read_number(const std::string& t, bool binary_doubles, const std::string& where) {
+    try {
+        if (binary_doubles) {
+            char* end = nullptr;
+            double d = std::strtod(t.c_str(), &end);
+            if (end == t.c_str() || *end) throw InputError("'" + t + "' is not a number");
+            return exact_from_double(d);
+        }
+        return parse_exact(t);
+    } catch (const InputError& e) {
+        throw InputError(where + ": " + e.what());
+    }
+}
+
+std::string num_text(const Q& q) {
+    char b[64];
+    std::snprintf(b, sizeof b, "%.17g", to_double_rn(q));
+    return to_exact_string(q) + " (~" + b + ")";
+}
+}  // namespace
+
+std::string certify_fp(const Model& m, const Curve& c, const std::string& claims, const std::string& name,
+                       bool binary_doubles, bool json, long* wrong) {
+    std::istringstream in(claims);
+    std::string line, text;
+    Json arr = Json::array();
+    long n = 0, bad = 0;
+    for (long no = 1; std::getline(in, line); ++no) {
+        auto hash = line.find('#');
+        if (hash != std::string::npos) line.resize(hash);
+        std::istringstream ls(line);
+        std::vector<std::string> w;
+        for (std::string t; ls >> t;) w.push_back(t);
+        if (w.empty()) continue;
+        const std::string where = name + ": line " + std::to_string(no);
+        Json o;
+        o["line"] = no;
+        bool right = false;
+        std::string detail;
+        if (w[0] == "curve" && w.size() == 3) {
+            Q r1 = read_number(w[1], binary_doubles, where), r2 = read_number(w[2], binary_doubles, where);
+            if (sgn(r1) <= 0) throw InputError(where + ": rho1 must be > 0");
+            Q f = c.env.value(m.lines, r1);
+            right = f == r2;
+            o["claim"] = "curve";
+            put_exact(o, "rho1", r1);
+            put_exact(o, "rho2", r2);
+            put_exact(o, "curve_rho2", f);
+            put_exact(o, "rho2_minus_curve", r2 - f);
+            detail = "curve point (" + w[1] + ", " + w[2] + "): exact curve at rho1 is " + num_text(f) + ", off by " + num_text(r2 - f);
+        } else if (w[0] == "growth" && w.size() == 2) {
+            Q g = read_number(w[1], binary_doubles, where);
+            right = g == c.growth.value;
+            o["claim"] = "growth";
+            put_exact(o, "claimed", g);
+            put_exact(o, "exact", c.growth.value);
+            detail = "growth distance " + w[1] + ": exact " + num_text(c.growth.value) + ", off by " + num_text(g - c.growth.value);
+        } else if (w.size() == 3) {
+            Q r1 = read_number(w[0], binary_doubles, where), r2 = read_number(w[1], binary_doubles, where);
+            if (sgn(r1) <= 0 || sgn(r2) <= 0) throw InputError(where + ": scalings must be > 0");
+            const std::string& v = w[2];
+            if (v != "separated" && v != "touching" && v != "overlapping" && v != "intersecting")
+                throw InputError(where + ": unknown verdict '" + v + "' (separated, touching, overlapping, intersecting)");
+            Verdict e = query(m, c, r1, r2, false).verdict;
+            std::string en = verdict_name(e);
+            right = v == "intersecting" ? e != Verdict::Separated : v == en;
+            Q f = c.env.value(m.lines, r1);
+            o["claim"] = v;
+            put_exact(o, "rho1", r1);
+            put_exact(o, "rho2", r2);
+            o["exact"] = en;
+            put_exact(o, "rho2_minus_curve", r2 - f);
+            detail = "(" + w[0] + ", " + w[1] + ") claimed " + v + ": exact " + en + ", rho2 - curve = " + num_text(r2 - f);
+        } else {
+            throw InputError(where + ": expected 'RHO1 RHO2 VERDICT', 'curve RHO1 RHO2' or 'growth RHO'");
+        }
+        ++n;
+        bad += !right;
+        o["right"] = right;
+        arr.push_back(o);
+        text += std::string(right ? "right  " : "WRONG  ") + detail + "\n";
+    }
+    if (wrong) *wrong = bad;
+    if (json) {
+        Json j;
+        j["claims"] = arr;
+        j["right"] = n - bad;
+        j["wrong"] = bad;
+        return dump(j);
+    }
+    return text + "claims: " + std::to_string(n) + ", right: " + std::to_string(n - bad) + ", wrong: " + std::to_string(bad) + "\n";
+}
+
+// ---- golden data ----------------------------------------------------------------------------
+
+namespace {
+Json exact_scene_json(const Scene& s) {
+    Json j;
+    const char* names[2] = {"P1", "P2"};
+    for (int i = 0; i < 2; ++i) {
+        Json vs = Json::array();
+        for (const Vec3q& v : s.P[i].points) vs.push_back({to_exact_string(v[0]), to_exact_string(v[1]), to_exact_string(v[2])});
+        j[names[i]] = {{"vertices", vs}, {"seed", {to_exact_string(s.P[i].seed[0]), to_exact_string(s.P[i].seed[1]), to_exact_string(s.P[i].seed[2])}}};
+    }
+    j["I1"] = {to_exact_string(s.lo[0]), to_exact_string(s.hi[0])};
+    j["I2"] = {to_exact_string(s.lo[1]), to_exact_string(s.hi[1])};
+    return j;
+}
+
+void write_file(const std::string& path, const std::string& text) {
+    std::string tmp = path + ".tmp";
+    {
+        std::ofstream f(tmp, std::ios::binary);
+        if (!f) throw InputError(path + ": cannot open for writing");
+        f << text;
+        if (!f) throw InputError(path + ": write failed");
+    }
+    if (std::rename(tmp.c_str(), path.c_str()) != 0) throw InputError(path + ": cannot rename into place");
+}
+}  // namespace
+
+void write_golden(const std::string& family, int count, std::uint64_t seed, const Q& eps, const std::string& dir) {
+    family_description(family);  // validates the name
+    Rng g(seed);
+    for (int i = 0; i < count; ++i) {
+        Scene s = make_family_scene(family, eps, g);
+        Model m = build_model(s);
+        Curve c = build_curve(m);
+        std::string stem = dir + "/" + family + "-" + std::to_string(i);
+        write_file(stem + ".scene.json", dump(exact_scene_json(s)));
+        Json j = curve_json(m, c);
+        j["family"] = family;
+        j["eps"] = to_exact_string(eps);
+        j["index"] = i;
+        j["seed"] = std::to_string(seed);
+        Json qs = Json::array();
+        std::string csv = "rho1,rho2,where,verdict_at_doubles\n";
+        std::vector<Q> xs;
+        for (int k = 1; k < 8; ++k) xs.push_back(s.lo[0] + (s.hi[0] - s.lo[0]) * Q(k, 8));
+        for (const SwitchPoint& sp : c.switches) xs.push_back(sp.rho1);
+        for (Q x : xs) {
+            x.canonicalize();
+            Q f = c.env.value(m.lines, x);
+            if (sgn(f) <= 0) continue;
+            std::vector<std::pair<std::string, Q>> pts{{"on", f}};
+            for (int k : {4, 12, 20, 30, 40, 52}) {
+                Q d = f / Q(Z(1) << k);
+                pts.push_back({"above 2^-" + std::to_string(k), f + d});
+                pts.push_back({"below 2^-" + std::to_string(k), f - d});
+            }
+            for (const auto& [where, y] : pts) {
+                Verdict v = query(m, c, x, y, false).verdict;
+                Json o;
+                put_exact(o, "rho1", x);
+                put_exact(o, "rho2", y);
+                o["where"] = where;
+                o["verdict"] = verdict_name(v);
+                // what a floating-point suite will feed: the nearest doubles, and their exact verdict
+                double xd = to_double_rn(x), yd = to_double_rn(y);
+                Verdict vd = query(m, c, exact_from_double(xd), exact_from_double(yd), false).verdict;
+                o["verdict_at_doubles"] = verdict_name(vd);
+                qs.push_back(o);
+                char b[128];
+                std::snprintf(b, sizeof b, "%.17g,%.17g,", xd, yd);
+                csv += b + where + "," + verdict_name(vd) + "\n";
+            }
+        }
+        j["queries"] = qs;
+        write_file(stem + ".golden.json", dump(j));
+        write_file(stem + ".golden.csv", csv);
+    }
+}
+
+// ---- audits -----------------------------------------------------------------------------------
+
+std::vector<AuditRow> audit_scene(const std::string& name, const Scene& s, const Q& eps,
+                                  const std::vector<std::string>& methods, const std::vector<int>& grid_ns) {
+    using Clock = std::chrono::steady_clock;
+    auto t_exact = Clock::now();
+    Model m = build_model(s);
+    Curve c = build_curve(m);
+    double exact_seconds = std::chrono::duration<double>(Clock::now() - t_exact).count();
+    fp::FpScene f = fp::to_fp(s);
+    // Query pairs (doubles) and their exact verdicts.
+    std::vector<double> r1, r2;
+    Rng g(12345);
+    for (int k = 0; k < 200; ++k) {
+        r1.push_back(f.lo[0] + (f.hi[0] - f.lo[0]) * (g.next() >> 11) * 0x1.0p-53);
+        r2.push_back(f.lo[1] + (f.hi[1] - f.lo[1]) * (g.next() >> 11) * 0x1.0p-53);
+    }
+    for (int k = 1; k < 16; ++k) {
+        Q x = s.lo[0] + (s.hi[0] - s.lo[0]) * Q(k, 16);
+        x.canonicalize();
+        Q y = c.env.value(m.lines, x);
+        if (sgn(y) <= 0) continue;
+        for (int e : {8, 16, 24, 32, 40, 48})
+            for (int sg : {-1, 1}) {
+                r1.push_back(to_double_rn(x));
+                r2.push_back(to_double_rn(y + sg * y / Q(Z(1) << e)));
+            }
+    }
+    std::vector<Verdict> exact(r1.size());
+    for (size_t i = 0; i < r1.size(); ++i) exact[i] = query(m, c, exact_from_double(r1[i]), exact_from_double(r2[i]), false).verdict;
+    std::vector<AuditRow> rows;
+    for (const std::string& meth : methods) {
+        std::unique_ptr<fp::Method> mm;
+        if (meth == "libccd-gjk") mm = fp::make_libccd_gjk(f);
+        else if (meth == "libccd-mpr") mm = fp::make_libccd_mpr(f);
+        else if (meth == "double-envelope") mm = fp::make_double_envelope(m, f);
+        else if (meth == "grid") continue;
+        else throw InputError("--methods: unknown method '" + meth + "'");
+        AuditRow r;
+        r.scene = name;
+        r.method = mm->name();
+        r.eps = eps;
+        r.queries = static_cast<long>(r1.size());
+        auto t0 = Clock::now();
+        for (size_t i = 0; i < r1.size(); ++i) {
+            int v = mm->classify(r1[i], r2[i]);
+            if (v > 0 && exact[i] != Verdict::Separated) ++r.false_separated;
+            if (v < 0 && exact[i] == Verdict::Separated) ++r.false_overlapping;
+        }
+        r.seconds_per_query = std::chrono::duration<double>(Clock::now() - t0).count() / static_cast<double>(r1.size());
+        rows.push_back(r);
+    }
+    {
+        AuditRow r;  // the exact engine itself: no errors by construction, for the speed chart
+        r.scene = name;
+        r.method = "scalecert (exact)";
+        r.eps = eps;
+        r.has_curve = true;
+        r.seconds_per_curve = exact_seconds;
+        for (const SwitchPoint& sp : c.switches) r.exact_junctions += sp.rho2 >= s.lo[1] && sp.rho2 <= s.hi[1];
+        r.junctions_found = r.exact_junctions;
+        rows.push_back(r);
+    }
+    if (std::find(methods.begin(), methods.end(), "grid") != methods.end()) {
+        auto gjk = fp::make_libccd_gjk(f);
+        for (int n : grid_ns) {
+            AuditRow r;
+            r.scene = name;
+            r.method = "grid+bisection (libccd-gjk)";
+            r.eps = eps;
+            r.has_curve = true;
+            r.grid_n = n;
+            auto t0 = Clock::now();
+            fp::GridCurve gc = fp::grid_search(*gjk, f, n, 20, 3);
+            r.seconds_per_curve = std::chrono::duration<double>(Clock::now() - t0).count();
+            // Growth distance: where the sampled polyline crosses ρ1 = ρ2.
+            double gexact = to_double_rn(c.growth.value), gest = NAN;
+            for (size_t i = 0; i + 1 < gc.rho1.size(); ++i) {
+                double a = gc.rho2[i] - gc.rho1[i], b = gc.rho2[i + 1] - gc.rho1[i + 1];
+                if (a >= 0 && b <= 0) { gest = gc.rho1[i] + (gc.rho1[i + 1] - gc.rho1[i]) * a / (a - b); break; }
+            }
+            r.growth_error = c.growth.in_rectangle ? std::fabs(gest - gexact) : 0;
+            // Junctions: slope changes between consecutive sample segments beyond a tolerance,
+            // located by intersecting the neighbouring segments' lines.
+            std::vector<double> jx;
+            for (size_t i = 0; i + 2 < gc.rho1.size(); ++i) {
+                double s1 = (gc.rho2[i + 1] - gc.rho2[i]) / (gc.rho1[i + 1] - gc.rho1[i]);
+                double s2 = (gc.rho2[i + 2] - gc.rho2[i + 1]) / (gc.rho1[i + 2] - gc.rho1[i + 1]);
+                if (std::fabs(s2 - s1) > 1e-3 * (1 + std::fabs(s1))) {
+                    jx.push_back(gc.rho1[i + 1]);
+                    ++i;
+                }
+            }
+            r.junctions_found = static_cast<int>(jx.size());
+            double cell = (f.hi[0] - f.lo[0]) / (n - 1);
+            for (const SwitchPoint& sp : c.switches) {
+                if (sp.rho2 < s.lo[1] || sp.rho2 > s.hi[1]) continue;
+                ++r.exact_junctions;
+                double x = to_double_rn(sp.rho1), best = INFINITY;
+                for (double v : jx) best = std::min(best, std::fabs(v - x));
+                if (best > 2 * cell) ++r.junctions_missed;
+                else r.max_junction_error = std::max(r.max_junction_error, best);
+            }
+            rows.push_back(r);
+        }
+    }
+    return rows;
+}
+
+std::string audit_csv(const std::vector<AuditRow>& rows) {
+    std::string s = "scene,eps,method,queries,false_separated,false_overlapping,seconds_per_query,grid_n,seconds_per_curve,growth_error,exact_junctions,junctions_found,junctions_missed,max_junction_error\n";
+    char b[512];
+    for (const AuditRow& r : rows) {
+        std::snprintf(b, sizeof b, "%s,%.17g,%s,%ld,%ld,%ld,%.6g,%d,%.6g,%.6g,%d,%d,%d,%.6g\n", r.scene.c_str(), to_double_rn(r.eps),
+                      r.method.c_str(), r.queries, r.false_separated, r.false_overlapping, r.seconds_per_query, r.grid_n,
+                      r.seconds_per_curve, r.growth_error, r.exact_junctions, r.junctions_found, r.junctions_missed,
+                      r.max_junction_error);
+        s += b;
+    }
+    return s;
+}
+
+Json audit_json(const std::vector<AuditRow>& rows) {
+    Json a = Json::array();
+    for (const AuditRow& r : rows) {
+        Json o{{"scene", r.scene}, {"eps", to_exact_string(r.eps)}, {"method", r.method}};
+        if (r.has_curve) {
+            o["grid_n"] = r.grid_n;
+            o["seconds_per_curve"] = r.seconds_per_curve;
+            o["growth_error"] = r.growth_error;
+            o["exact_junctions"] = r.exact_junctions;
+            o["junctions_found"] = r.junctions_found;
+            o["junctions_missed"] = r.junctions_missed;
+            o["max_junction_error"] = r.max_junction_error;
+        } else {
+            o["queries"] = r.queries;
+            o["false_separated"] = r.false_separated;
+            o["false_overlapping"] = r.false_overlapping;
+            o["seconds_per_query"] = r.seconds_per_query;
+        }
+        a.push_back(o);
+    }
+    return a;
+}
+
+}  // namespace scalecert

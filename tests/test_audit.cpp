@@ -1,0 +1,93 @@
+// Golden data, certify-fp, and a small audit and stability sweep.
+#define BOOST_TEST_MODULE audit
+#include <boost/test/unit_test.hpp>
+
+#include "scalecert/audit.hpp"
+#include "support.hpp"
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace fs = std::filesystem;
+using namespace scalecert;
+
+static std::string slurp(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+BOOST_AUTO_TEST_CASE(certify_fp_marks_hand_derived_claims) {
+    // Stacked cubes: the touching line is ρ1 + ρ2 = 3 and ρ* = 3/2 (test_hand_curves).
+    Model m = build_model(load_scene(std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/stacked_cubes.json"));
+    Curve c = build_curve(m);
+    long wrong = -1;
+    std::string r = certify_fp(m, c,
+                               "1 2 touching\n1 1.99 separated\n1 2.01 separated\n1 2.01 intersecting\n"
+                               "curve 1 2\ncurve 1 2.000001\ngrowth 3/2\ngrowth 1.5000001\n",
+                               "claims", false, false, &wrong);
+    BOOST_TEST(wrong == 3);  // (1, 2.01) is overlapping; the curve is at 2; ρ* is 3/2 exactly
+    BOOST_TEST(r.find("claims: 8, right: 5, wrong: 3") != std::string::npos);
+    BOOST_CHECK_THROW(certify_fp(m, c, "1 2 maybe\n", "claims", false, false, &wrong), InputError);
+    BOOST_CHECK_THROW(certify_fp(m, c, "-1 2 touching\n", "claims", false, false, &wrong), InputError);
+}
+
+BOOST_AUTO_TEST_CASE(golden_data_is_deterministic_and_exact) {
+    fs::path a = fs::temp_directory_path() / ("sc-golden-a-" + std::to_string(::getpid()));
+    fs::path b = fs::temp_directory_path() / ("sc-golden-b-" + std::to_string(::getpid()));
+    fs::create_directories(a);
+    fs::create_directories(b);
+    for (const std::string& fam : family_names()) {
+        write_golden(fam, 1, 9, Q(1, 1 << 20), a.string());
+        write_golden(fam, 1, 9, Q(1, 1 << 20), b.string());
+        for (const char* ext : {".scene.json", ".golden.json", ".golden.csv"}) {
+            std::string f = fam + "-0" + ext;
+            BOOST_TEST(slurp(a / f) == slurp(b / f), f);
+        }
+        // Every golden verdict agrees with the brute-force classifier on the stored scene.
+        Scene sc = load_scene((a / (fam + "-0.scene.json")).string());
+        if (sc.P[0].points.size() > 20) continue;  // the brute force is quartic; near-spheres skip it
+        test::Brute brute(sc);
+        auto j = nlohmann::json::parse(slurp(a / (fam + "-0.golden.json")));
+        int checked = 0;
+        for (const auto& q : j["queries"]) {
+            int want = q["verdict"] == "separated" ? 1 : q["verdict"] == "touching" ? 0 : -1;
+            BOOST_TEST(brute.classify(sc, parse_exact(q["rho1"]), parse_exact(q["rho2"])) == want);
+            if (q["where"] == "on") BOOST_TEST(q["verdict"] == "touching");
+            ++checked;
+        }
+        BOOST_TEST(checked > 10);
+    }
+    fs::remove_all(a);
+    fs::remove_all(b);
+}
+
+BOOST_AUTO_TEST_CASE(small_audit_and_stability_sweep) {
+    // Every method gives a row per ε (and the grid one per resolution); the exact engine's row
+    // finds every junction.
+    std::vector<AuditRow> rows;
+    for (int k : {4, 16, 30}) {
+        Rng g(3);
+        Q eps(1, Z(1) << k);
+        auto r = audit_scene("nearly-equal-slopes", make_family_scene("nearly-equal-slopes", eps, g), eps,
+                             {"libccd-gjk", "libccd-mpr", "double-envelope", "grid"}, {16, 64});
+        rows.insert(rows.end(), r.begin(), r.end());
+    }
+    int query_rows = 0, curve_rows = 0;
+    for (const AuditRow& r : rows) {
+        if (r.has_curve) {
+            ++curve_rows;
+            if (r.method == "scalecert (exact)") BOOST_TEST(r.junctions_missed == 0);
+        } else {
+            ++query_rows;
+            BOOST_TEST(r.queries > 200);
+            BOOST_TEST(r.false_separated + r.false_overlapping <= r.queries);
+        }
+    }
+    BOOST_TEST(query_rows == 9);
+    BOOST_TEST(curve_rows == 9);
+    std::string csv = audit_csv(rows);
+    BOOST_TEST(std::count(csv.begin(), csv.end(), '\n') == static_cast<long>(rows.size()) + 1);
+}

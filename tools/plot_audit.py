@@ -1,0 +1,76 @@
+#!/usr/bin/python3
+"""Charts from `scalecert audit` JSON (PNG and SVG).
+
+usage: tools/plot_audit.py AUDIT.json OUTDIR
+
+  stability       wrong-verdict rate against the degeneracy eps, per method
+  speed_accuracy  time per curve against switch-point error (grid at each resolution, exact engine)
+"""
+import json
+import os
+import sys
+from collections import defaultdict
+from fractions import Fraction
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+
+def save(fig, outdir, name):
+    for ext in ("png", "svg"):
+        fig.savefig(os.path.join(outdir, f"{name}.{ext}"), dpi=130, bbox_inches="tight")
+    plt.close(fig)
+
+
+def main():
+    if len(sys.argv) != 3:
+        print(__doc__)
+        sys.exit(2)
+    rows = json.load(open(sys.argv[1]))
+    outdir = sys.argv[2]
+    os.makedirs(outdir, exist_ok=True)
+    # Stability: per method, per eps: wrong verdicts / queries over all scenes.
+    acc = defaultdict(lambda: defaultdict(lambda: [0, 0]))
+    for r in rows:
+        if "queries" in r and float(Fraction(r["eps"])) > 0:
+            a = acc[r["method"]][float(Fraction(r["eps"]))]
+            a[0] += r["false_separated"] + r["false_overlapping"]
+            a[1] += r["queries"]
+    fig, ax = plt.subplots(figsize=(6, 4))
+    for method, by_eps in sorted(acc.items()):
+        xs = sorted(by_eps)
+        ax.plot(xs, [by_eps[x][0] / by_eps[x][1] for x in xs], "o-", ms=3, label=method)
+    ax.axhline(0, color="green", lw=2, label="scalecert (exact): 0 by construction")
+    ax.set_xscale("log", base=2)
+    ax.set_xlabel("degeneracy eps")
+    ax.set_ylabel("wrong-verdict rate (pairs on and near the curve)")
+    ax.set_title("stability")
+    ax.legend(fontsize=8)
+    save(fig, outdir, "stability")
+    # Speed against accuracy.
+    fig, ax = plt.subplots(figsize=(6, 4))
+    pts = defaultdict(list)
+    for r in rows:
+        # only scenes with a switch point in the rectangle say anything about junction error
+        if "seconds_per_curve" in r and r["exact_junctions"] > 0:
+            err = r["max_junction_error"] if r["junctions_missed"] == 0 else float("nan")
+            label = r["method"] + (f" n={r['grid_n']}" if r.get("grid_n") else "")
+            pts[label].append((r["seconds_per_curve"], max(err, 1e-17) if err == err else None))
+    for label, v in sorted(pts.items()):
+        xs = [t for t, e in v if e is not None]
+        ys = [e for t, e in v if e is not None]
+        if xs:
+            ax.plot(xs, ys, "o", ms=4, label=label)
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_xlabel("seconds per curve")
+    ax.set_ylabel("switch-point error in rho1 (exact: plotted at 1e-17)")
+    ax.set_title("speed against accuracy")
+    ax.legend(fontsize=7)
+    save(fig, outdir, "speed_accuracy")
+
+
+if __name__ == "__main__":
+    main()
