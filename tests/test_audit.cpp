@@ -3,6 +3,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include "scalecert/audit.hpp"
+#include "files.hpp"
 #include "support.hpp"
 
 #include <filesystem>
@@ -12,12 +13,7 @@
 namespace fs = std::filesystem;
 using namespace scalecert;
 
-static std::string slurp(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
+using test::slurp;
 
 BOOST_AUTO_TEST_CASE(certify_fp_marks_hand_derived_claims) {
     // Stacked cubes: the touching line is ρ1 + ρ2 = 3 and ρ* = 3/2 (test_hand_curves).
@@ -35,10 +31,7 @@ BOOST_AUTO_TEST_CASE(certify_fp_marks_hand_derived_claims) {
 }
 
 BOOST_AUTO_TEST_CASE(golden_data_is_deterministic_and_exact) {
-    fs::path a = fs::temp_directory_path() / ("sc-golden-a-" + std::to_string(::getpid()));
-    fs::path b = fs::temp_directory_path() / ("sc-golden-b-" + std::to_string(::getpid()));
-    fs::create_directories(a);
-    fs::create_directories(b);
+    fs::path a = test::scratch_dir("golden-a"), b = test::scratch_dir("golden-b");
     for (const std::string& fam : family_names()) {
         write_golden(fam, 1, 9, Q(1, 1 << 20), a.string());
         write_golden(fam, 1, 9, Q(1, 1 << 20), b.string());

@@ -2,23 +2,19 @@
 #define BOOST_TEST_MODULE certificates
 #include <boost/test/unit_test.hpp>
 
+#include "files.hpp"
+
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
 namespace fs = std::filesystem;
 
-static std::string slurp(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
+using test::slurp;
 
 BOOST_AUTO_TEST_CASE(bundled_certificates_regenerate_byte_identically) {
     fs::path dir = fs::path(SCALECERT_SOURCE_DIR) / "certificates";
-    fs::path tmp = fs::temp_directory_path() / ("scalecert-cert-" + std::to_string(::getpid()));
-    fs::create_directories(tmp);
+    fs::path tmp = test::scratch_dir("cert");
     int n = 0;
     for (const auto& e : fs::directory_iterator(dir / "scenes")) {
         if (e.path().extension() != ".json") continue;

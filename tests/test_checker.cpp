@@ -5,6 +5,7 @@
 #define BOOST_TEST_MODULE checker
 #include <boost/test/unit_test.hpp>
 
+#include "files.hpp"
 #include "support.hpp"
 
 #include <sys/wait.h>
@@ -21,11 +22,7 @@ using OJ = nlohmann::ordered_json;
 
 namespace {
 fs::path tmpdir() {
-    static fs::path d = [] {
-        fs::path p = fs::temp_directory_path() / ("scalecert-checker-" + std::to_string(::getpid()));
-        fs::create_directories(p);
-        return p;
-    }();
+    static fs::path d = test::scratch_dir("checker");
     return d;
 }
 

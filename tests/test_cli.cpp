@@ -3,6 +3,8 @@
 #define BOOST_TEST_MODULE cli
 #include <boost/test/unit_test.hpp>
 
+#include "files.hpp"
+
 #include <sys/wait.h>
 
 #include <filesystem>
@@ -17,19 +19,10 @@ struct Run {
     std::string out, err;
 };
 
-std::string slurp(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
+using test::slurp;
 
 fs::path workdir() {
-    static fs::path d = [] {
-        fs::path p = fs::temp_directory_path() / ("scalecert-cli-" + std::to_string(::getpid()));
-        fs::create_directories(p);
-        return p;
-    }();
+    static fs::path d = test::scratch_dir("cli");
     return d;
 }
 
