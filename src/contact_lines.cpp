@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <optional>
 #include <cstdio>
 #include <cstdlib>
 #include <map>
@@ -29,11 +31,6 @@ ContactLine line_for_normal(const Model& m, const Vec3z& n) {
 }
 
 namespace {
-
-// x strictly inside the great-circle arc from a0 to a1 (|arc| < π), given p = a0 × a1 and x·p = 0.
-bool in_open_arc(const Vec3z& x, const Vec3z& a0, const Vec3z& a1, const Vec3z& p) {
-    return sgn(dotz(cross(a0, x), p)) > 0 && sgn(dotz(cross(x, a1), p)) > 0;
-}
 
 }  // namespace
 
@@ -84,13 +81,46 @@ Model build_model(const Scene& scene) {
         arcs_b[j] = {neg(B.faces[B.edges[j].f0].normal), neg(B.faces[B.edges[j].f1].normal)};
         pb[j] = cross(arcs_b[j].from, arcs_b[j].to);
     }
+    // Doubles of the arc data for a filter: a sign is taken from doubles only when it exceeds a
+    // bound far above their rounding error; otherwise it is computed exactly.
+    using D3 = std::array<double, 3>;
+    auto dbl = [](const Vec3z& v) { return D3{v[0].get_d(), v[1].get_d(), v[2].get_d()}; };
+    auto crossd = [](const D3& a, const D3& b) { return D3{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}; };
+    auto norm = [](const D3& a) { return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]); };
+    auto dotd = [](const D3& a, const D3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
+    std::vector<std::array<D3, 3>> da(A.edges.size()), db(B.edges.size());  // from, to, plane normal
+    for (size_t i = 0; i < A.edges.size(); ++i) da[i] = {dbl(arcs_a[i].from), dbl(arcs_a[i].to), dbl(pa[i])};
+    for (size_t j = 0; j < B.edges.size(); ++j) db[j] = {dbl(arcs_b[j].from), dbl(arcs_b[j].to), dbl(pb[j])};
+    // Sign of (u × x)·p (or (x × u)·p): filtered, exact when unsure; x = ±(pa × pb), computed
+    // exactly only when some sign or the accepted normal needs it.
     for (const auto& [i, j] : arc_candidates(arcs_a, arcs_b)) {
         ++m.stats.edge_pairs_tested;
-        Vec3z x = cross(pa[i], pb[j]);
-        if (is_zero(x)) continue;
-        for (int sign = 0; sign < 2; ++sign, x = neg(x)) {
-            if (in_open_arc(x, arcs_a[i].from, arcs_a[i].to, pa[i]) && in_open_arc(x, arcs_b[j].from, arcs_b[j].to, pb[j])) {
-                normals.emplace(primitive(x), 2);
+        const auto& A3 = da[i];
+        const auto& B3 = db[j];
+        std::optional<Vec3z> xe;
+        auto exact_x = [&]() -> const Vec3z& {
+            if (!xe) xe = cross(pa[i], pb[j]);
+            return *xe;
+        };
+        D3 xd = crossd(A3[2], B3[2]);
+        double xb = 1e-10 * norm(A3[2]) * norm(B3[2]);
+        if (!(std::fabs(xd[0]) > xb || std::fabs(xd[1]) > xb || std::fabs(xd[2]) > xb)) {
+            if (is_zero(exact_x())) continue;  // parallel edges: no facet of the sum
+            xd = dbl(exact_x());
+        }
+        for (int sign : {1, -1}) {
+            D3 xs{sign * xd[0], sign * xd[1], sign * xd[2]};
+            auto side = [&](const D3& ud, const D3& pd, bool x_first, const Vec3z& u, const Vec3z& p) {
+                D3 c = x_first ? crossd(xs, ud) : crossd(ud, xs);
+                double v = dotd(c, pd), bound = 1e-10 * norm(ud) * norm(xs) * norm(pd);
+                if (v > bound) return 1;
+                if (v < -bound) return -1;
+                Vec3z x = sign > 0 ? exact_x() : neg(exact_x());
+                return sgn(dotz(x_first ? cross(x, u) : cross(u, x), p));
+            };
+            if (side(A3[0], A3[2], false, arcs_a[i].from, pa[i]) > 0 && side(A3[1], A3[2], true, arcs_a[i].to, pa[i]) > 0 &&
+                side(B3[0], B3[2], false, arcs_b[j].from, pb[j]) > 0 && side(B3[1], B3[2], true, arcs_b[j].to, pb[j]) > 0) {
+                normals.emplace(primitive(sign > 0 ? exact_x() : neg(exact_x())), 2);
                 ++m.stats.arc_crossings;
                 break;
             }

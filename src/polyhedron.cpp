@@ -31,13 +31,30 @@ int Polyhedron::start_vertex(const Vec3z& n) const {
 }
 
 std::vector<int> Polyhedron::argmax(const Vec3z& n, Q* value) const {
+    // n·x compared through a double filter: the products and sums of doubles of the integer
+    // data err by at most a few ulps of Σ|n_k x_k|; 1e-14 of it bounds that with room. Only
+    // comparisons the filter cannot decide (or non-finite ones) use exact integers.
+    const D3 nd{n[0].get_d(), n[1].get_d(), n[2].get_d()};
+    auto approx = [&](int v, double& err) {
+        const D3& x = dpts[v];
+        double a = nd[0] * x[0], b = nd[1] * x[1], c = nd[2] * x[2];
+        err = 1e-14 * (std::fabs(a) + std::fabs(b) + std::fabs(c));
+        return a + b + c;
+    };
+    // sign of n·x_w − n·x_v, exactly
+    auto compare = [&](int w, double wd, double we, int v, double vd, double ve) {
+        double diff = wd - vd, tol = we + ve;
+        if (diff > tol) return 1;
+        if (diff < -tol) return -1;
+        return cmp(dotz(n, ipts[w]), dotz(n, ipts[v]));
+    };
     int cur = start_vertex(n);
-    Z best = dotz(n, ipts[cur]), val;
+    double ce, cd = approx(cur, ce);
     for (bool moved = true; moved;) {
         moved = false;
         for (int w : adj[cur]) {
-            val = dotz(n, ipts[w]);
-            if (val > best) { best = val; cur = w; moved = true; break; }
+            double we, wd = approx(w, we);
+            if (compare(w, wd, we, cur, cd, ce) > 0) { cur = w; cd = wd; ce = we; moved = true; break; }
         }
     }
     // The face of maximisers is connected in the vertex graph.
@@ -45,14 +62,17 @@ std::vector<int> Polyhedron::argmax(const Vec3z& n, Q* value) const {
     while (!stack.empty()) {
         int v = stack.back();
         stack.pop_back();
-        for (int w : adj[v])
-            if (std::find(out.begin(), out.end(), w) == out.end() && dotz(n, ipts[w]) == best) {
+        for (int w : adj[v]) {
+            if (std::find(out.begin(), out.end(), w) != out.end()) continue;
+            double we, wd = approx(w, we);
+            if (compare(w, wd, we, cur, cd, ce) == 0) {
                 out.push_back(w);
                 stack.push_back(w);
             }
+        }
     }
     std::sort(out.begin(), out.end());
-    if (value) *value = Q(best, scale), value->canonicalize();
+    if (value) *value = Q(dotz(n, ipts[cur]), scale), value->canonicalize();
     return out;
 }
 
@@ -126,6 +146,8 @@ Polyhedron build_polyhedron(const std::vector<Vec3q>& pts, const std::string& na
     for (size_t i = 0; i < pts.size(); ++i)
         for (int k = 0; k < 3; ++k) P.ipts[i][k] = Z(pts[i][k] * P.scale);
     const std::vector<Vec3z>& ip = P.ipts;
+    P.dpts.resize(pts.size());
+    for (size_t i = 0; i < pts.size(); ++i) P.dpts[i] = {ip[i][0].get_d(), ip[i][1].get_d(), ip[i][2].get_d()};
     auto tris = hull_triangles(pts);
     // Group hull triangles by their supporting plane: on a convex polytope one plane, one face.
     std::map<Vec3z, int> plane_of;

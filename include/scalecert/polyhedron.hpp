@@ -25,6 +25,7 @@ struct Polyhedron {
     std::vector<std::vector<int>> adj;   // per input index: adjacent vertices (empty for non-vertices)
     std::vector<Vec3z> ipts;             // points × scale: integers, same order of n·x as points
     Z scale;                             // lcm of the denominators of the points
+    std::vector<std::array<double, 3>> dpts;  // ipts as doubles: a filter for comparisons only
     std::vector<int> start_table;        // cube-map cells (6 × G × G) -> a vertex near the argmax
 
     // The vertices maximising n·x (a vertex, an edge's two ends or a face's vertices), sorted,
