@@ -15,17 +15,24 @@ namespace scalecert {
 char feature_letter(size_t n) { return n == 1 ? 'V' : n == 2 ? 'E' : 'F'; }
 
 ContactLine line_for_normal(const Model& m, const Vec3z& n) {
+    // In integers: with S_i = max ±n·x over P_i's scaled points (x·scale_i),
+    //   h1 = (S_1·sden_1 − n·sz_1) / (scale_1·sden_1),  h2 = (S_2·sden_2 + n·sz_2) / (scale_2·sden_2),
+    //   n·d = n·dz / dden.
     ContactLine L;
     L.normal = n;
-    const Vec3q nq = to_q(n);
-    Q sup1, sup2;
-    L.feat1 = m.P[0].argmax(n, &sup1);
-    L.feat2 = m.P[1].argmax(neg(n), &sup2);
-    L.h1 = sup1 - dot(nq, m.s[0]);
-    L.h2 = sup2 + dot(nq, m.s[1]);
-    L.nd = dot(nq, m.d);
-    L.slope = -L.h1 / L.h2;
-    L.intercept = L.nd / L.h2;
+    Z sup1, sup2;
+    L.feat1 = m.P[0].argmax(n, nullptr, &sup1);
+    L.feat2 = m.P[1].argmax(neg(n), nullptr, &sup2);
+    const Z H1 = sup1 * m.sden[0] - dotz(n, m.sz[0]);
+    const Z H2 = sup2 * m.sden[1] + dotz(n, m.sz[1]);
+    const Z D1 = m.P[0].scale * m.sden[0], D2 = m.P[1].scale * m.sden[1];
+    const Z ND = dotz(n, m.dz);
+    auto frac = [](const Z& p, const Z& q) { Q r(p, q); r.canonicalize(); return r; };
+    L.h1 = frac(H1, D1);
+    L.h2 = frac(H2, D2);
+    L.nd = frac(ND, m.dden);
+    L.slope = frac(-H1 * D2, H2 * D1);
+    L.intercept = frac(ND * D2, m.dden * H2);
     L.contact = {feature_letter(L.feat1.size()), feature_letter(L.feat2.size())};
     return L;
 }
@@ -61,6 +68,16 @@ Model build_model(const Scene& scene) {
                              (scene.P[i].seed_given ? "" : " (the default seed is the mean of the vertices)"));
     }
     m.d = sub(m.s[1], m.s[0]);
+    auto integral = [](const Vec3q& v, Vec3z& z, Z& den) {  // v = z / den
+        den = 1;
+        for (const Q& c : v) mpz_lcm(den.get_mpz_t(), den.get_mpz_t(), c.get_den_mpz_t());
+        for (int k = 0; k < 3; ++k) z[k] = Z(v[k] * den);
+    };
+    for (int i = 0; i < 2; ++i) {
+        Vec3q ss{m.s[i][0] * m.P[i].scale, m.s[i][1] * m.P[i].scale, m.s[i][2] * m.P[i].scale};
+        integral(ss, m.sz[i], m.sden[i]);
+    }
+    integral(m.d, m.dz, m.dden);
     clock.lap("hulls");
 
     std::map<Vec3z, int> normals;  // normal -> origin (for statistics only)

@@ -30,7 +30,7 @@ int Polyhedron::start_vertex(const Vec3z& n) const {
     return start_table[cube_cell({n[0].get_d(), n[1].get_d(), n[2].get_d()})];
 }
 
-std::vector<int> Polyhedron::argmax(const Vec3z& n, Q* value) const {
+std::vector<int> Polyhedron::argmax(const Vec3z& n, Q* value, Z* scaled_value) const {
     // n·x compared through a double filter: the products and sums of doubles of the integer
     // data err by at most a few ulps of Σ|n_k x_k|; 1e-14 of it bounds that with room. Only
     // comparisons the filter cannot decide (or non-finite ones) use exact integers.
@@ -72,7 +72,11 @@ std::vector<int> Polyhedron::argmax(const Vec3z& n, Q* value) const {
         }
     }
     std::sort(out.begin(), out.end());
-    if (value) *value = Q(dotz(n, ipts[cur]), scale), value->canonicalize();
+    if (value || scaled_value) {
+        Z best = dotz(n, ipts[cur]);  // = max n·x times scale
+        if (value) *value = Q(best, scale), value->canonicalize();
+        if (scaled_value) *scaled_value = std::move(best);
+    }
     return out;
 }
 
@@ -151,28 +155,41 @@ Polyhedron build_polyhedron(const std::vector<Vec3q>& pts, const std::string& na
     auto tris = hull_triangles(pts);
     // Group hull triangles by their supporting plane: on a convex polytope one plane, one face.
     std::map<Vec3z, int> plane_of;
-    std::vector<std::set<int>> face_pts;
-    std::map<int, std::set<int>> faces_at;  // hull point -> faces through it
+    std::vector<std::vector<int>> face_pts;       // hull points of each face (with repeats)
+    std::vector<int> face_tris;                   // triangles per face
+    std::vector<std::array<int, 3>> first_tri;    // a triangle of each face, outward
+    std::vector<std::vector<int>> faces_at(pts.size());  // hull point -> faces through it
     for (const auto& t : tris) {
         Vec3z n = primitive(cross(sub(ip[t[1]], ip[t[0]]), sub(ip[t[2]], ip[t[0]])));
         auto [it, fresh] = plane_of.emplace(n, static_cast<int>(face_pts.size()));
-        if (fresh) face_pts.emplace_back();
+        if (fresh) face_pts.emplace_back(), face_tris.push_back(0), first_tri.push_back(t);
+        ++face_tris[it->second];
         for (int v : t) {
-            face_pts[it->second].insert(v);
-            faces_at[v].insert(it->second);
+            face_pts[it->second].push_back(v);
+            auto& fa = faces_at[v];
+            if (std::find(fa.begin(), fa.end(), it->second) == fa.end()) fa.push_back(it->second);
         }
     }
     // True vertices lie on at least three faces; points inside a face or an edge are dropped.
-    std::set<int> is_vertex;
-    for (const auto& [v, fs] : faces_at)
-        if (fs.size() >= 3) is_vertex.insert(v);
-    P.vertices.assign(is_vertex.begin(), is_vertex.end());
+    std::vector<char> is_vertex(pts.size(), 0);
+    for (size_t v = 0; v < pts.size(); ++v)
+        if (faces_at[v].size() >= 3) is_vertex[v] = 1, P.vertices.push_back(static_cast<int>(v));
     P.faces.resize(face_pts.size());
     for (const auto& [n, fi] : plane_of) {
         Face& f = P.faces[fi];
         f.normal = n;
-        for (int v : face_pts[fi])
-            if (is_vertex.count(v)) f.verts.push_back(v);
+        const auto& t = first_tri[fi];
+        if (face_tris[fi] == 1 && is_vertex[t[0]] && is_vertex[t[1]] && is_vertex[t[2]]) {
+            // a triangular face: CGAL's triangle is already counter-clockwise from outside
+            int r = static_cast<int>(std::min_element(t.begin(), t.end()) - t.begin());
+            f.verts = {t[r], t[(r + 1) % 3], t[(r + 2) % 3]};
+            continue;
+        }
+        std::vector<int> vs = face_pts[fi];
+        std::sort(vs.begin(), vs.end());
+        vs.erase(std::unique(vs.begin(), vs.end()), vs.end());
+        for (int v : vs)
+            if (is_vertex[v]) f.verts.push_back(v);
         order_ccw(f.verts, ip, n);
     }
     // Order faces deterministically by normal, so output never depends on CGAL's traversal.

@@ -34,6 +34,10 @@ struct Model {
     Vec3q d;  // s2 − s1
     std::vector<ContactLine> lines;  // sorted by normal
     LineStats stats;
+    // The seeds and d in integers, for fast support values: s_i·scale_i = sz[i] / sden[i] and
+    // d = dz / dden.
+    Vec3z sz[2], dz;
+    Z sden[2], dden;
 };
 
 // Builds the exact polyhedra, checks the seeds, and enumerates every contact line.

@@ -30,7 +30,7 @@ struct Polyhedron {
 
     // The vertices maximising n·x (a vertex, an edge's two ends or a face's vertices), sorted,
     // and the maximum value. Hill-climbs the vertex graph, then collects the tied face.
-    std::vector<int> argmax(const Vec3z& n, Q* value = nullptr) const;
+    std::vector<int> argmax(const Vec3z& n, Q* value = nullptr, Z* scaled_value = nullptr) const;
     int start_vertex(const Vec3z& n) const;  // a good vertex to start climbing from (doubles; a hint only)
     Q support(const Vec3z& n) const;     // max over vertices of n·x
     bool strictly_inside(const Vec3q& p) const;
