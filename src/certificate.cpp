@@ -250,10 +250,27 @@ Json pieces_json(const std::vector<LinearPiece>& f) {
 }
 }  // namespace
 
-void add_segment_json(Json& j, const Model& m, const Curve& c, const Segment& s) {
+namespace {
+Json segment_head(const Segment& s) {
     Json seg;
+    seg["kind"] = s.kind;
+    if (!s.note.empty()) seg["note"] = s.note;
     put(seg, "from", s.v1);
     put(seg, "to", s.v2);
+    if (s.path) {  // floating point: the ellipsoids themselves are not certified, the ends are checked
+        Json es;
+        const char* names[2] = {"P1", "P2"};
+        for (int i = 0; i < 2; ++i)
+            es[names[i]] = Json{{"center", s.path->E[i].center}, {"matrix", s.path->E[i].matrix}};
+        es["distance_double"] = s.path->distance;
+        seg["inner_ellipsoids"] = es;
+    }
+    return seg;
+}
+}  // namespace
+
+void add_segment_json(Json& j, const Model& m, const Curve& c, const Segment& s) {
+    Json seg = segment_head(s);
     seg["t1"] = pieces_json(s.t[0]);
     seg["t2"] = pieces_json(s.t[1]);
     j["segment"] = seg;
@@ -284,9 +301,7 @@ void add_segment_json(Json& j, const Model& m, const Curve& c, const Segment& s)
 }
 
 void add_query_segment_json(Json& j, const Segment& s, const Q& rho1, const Q& rho2) {
-    Json seg;
-    put(seg, "from", s.v1);
-    put(seg, "to", s.v2);
+    Json seg = segment_head(s);
     put(seg, "t1", eval(s.t[0], rho1));
     put(seg, "t2", eval(s.t[1], rho2));
     Q g = directional_gap(s, rho1, rho2);

@@ -60,7 +60,9 @@ Q eval(const std::vector<LinearPiece>& f, const Q& x) {
 }
 
 Segment make_segment(const Model& m, const Vec3q& v1, const Vec3q& v2) {
-    Segment s{v1, v2, {}};
+    Segment s;
+    s.v1 = v1;
+    s.v2 = v2;
     const Vec3q* v[2] = {&v1, &v2};
     for (int i = 0; i < 2; ++i) {
         const Q& lo = m.scene.lo[i];
@@ -82,6 +84,27 @@ std::optional<Q> rho_from_t(const Segment& s, int i, const Q& t) {
         if (t >= a && t <= b) return (t - p.intercept) / p.slope;
     }
     return std::nullopt;
+}
+
+Segment segment_by_kind(const Model& m, const std::string& kind) {
+    if (kind == "seeds") {
+        Segment s = make_segment(m, m.s[0], m.s[1]);
+        s.kind = "seeds";
+        return s;
+    }
+    if (kind != "ellipsoids") throw InputError("--segment: unknown kind '" + kind + "'");
+    EllipsoidPath p = ellipsoid_path(m);
+    Segment s;
+    try {
+        s = make_segment(m, p.v1, p.v2);
+        s.kind = "ellipsoids";
+    } catch (const InputError& e) {
+        s = make_segment(m, m.s[0], m.s[1]);
+        s.kind = "seeds";
+        s.note = std::string("the inner-ellipsoid path failed the exact check (") + e.what() + "); using the seeds";
+    }
+    s.path = p;
+    return s;
 }
 
 Q directional_gap(const Segment& s, const Q& rho1, const Q& rho2) {

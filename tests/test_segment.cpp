@@ -5,6 +5,8 @@
 #include "scalecert/segment.hpp"
 #include "support.hpp"
 
+#include <cmath>
+
 using namespace scalecert;
 
 static Model hand_model() {
@@ -66,4 +68,27 @@ BOOST_AUTO_TEST_CASE(segment_ends_must_be_inside) {
     Model m = hand_model();
     BOOST_CHECK_THROW(make_segment(m, {Q(0), Q(0), Q(100)}, m.s[1]), InputError);
     BOOST_CHECK_THROW(make_segment(m, m.s[0], {Q(1), Q(1), Q(1)}), InputError);  // a box corner: on P2(lo2)'s... outside
+}
+
+BOOST_AUTO_TEST_CASE(inner_ellipsoid_path_of_stacked_cubes) {
+    // Stacked cubes (test_hand_curves): P1(1/2) = [1/2, 3/2]^3 and P2(1/2) = [1/2, 3/2]^2 × [7/2, 9/2].
+    // By symmetry each maximum-volume inscribed ellipsoid is the inscribed ball of radius 1/2, at
+    // (1,1,1) and (1,1,4); the shortest path between them runs from (1,1,3/2) to (1,1,7/2).
+    Model m = build_model(load_scene(std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/stacked_cubes.json"));
+    Segment s = segment_by_kind(m, "ellipsoids");
+    BOOST_TEST(s.kind == "ellipsoids");
+    BOOST_TEST_REQUIRE(s.path.has_value());
+    for (int i = 0; i < 3; ++i)
+        for (int k = 0; k < 3; ++k) BOOST_TEST(std::fabs(s.path->E[0].matrix[i][k] - (i == k ? 0.5 : 0.0)) < 2e-3);
+    BOOST_TEST(std::fabs(s.path->E[1].center[2] - 4.0) < 1e-3);
+    BOOST_TEST(std::fabs(s.path->distance - 2.0) < 2e-3);
+    BOOST_TEST(std::fabs(s.v1[2].get_d() - 1.5) < 2e-3);
+    BOOST_TEST(std::fabs(s.v2[2].get_d() - 3.5) < 2e-3);
+    // The exit point p = v1 + t1·(v2 − v1) lies on the boundary of P1(ρ1), the cube of half-width
+    // ρ1 about (1,1,1): max_k |p_k − 1| = ρ1, exactly.
+    for (Q r : {Q(1, 2), Q(1), Q(2)}) {
+        Q t = eval(s.t[0], r), far = 0;
+        for (int k = 0; k < 3; ++k) far = std::max(far, Q(abs(s.v1[k] + t * (s.v2[k] - s.v1[k]) - 1)));
+        BOOST_TEST(far == r);
+    }
 }

@@ -132,6 +132,13 @@ int main(int argc, char** argv) {
         double t_grid = per_call([&](long) { gc = fp::grid_search(*gjk, f, n, 20, 1); }, 1, 1);
         row("paper's grid search 256x256 + bisection (GJK)", nm, t_grid, "1 (baseline)");
         row("exact curve (hull, lines, envelope)", nm, t_exact, ratio("%.0fx faster than the grid", t_grid / t_exact));
+        if (sc == &bx) {  // the paper's own node test: triangle-triangle on the triangulated faces
+            Model m = build_model(*sc);
+            auto tt = fp::make_paper_tritri(m, f);
+            double t_tt = per_call([&](long) { gc = fp::grid_search(*tt, f, n, 20, 3); }, 1, 1);
+            row("paper's grid search 256x256 + bisection x3 (triangle-triangle)", nm, t_tt, "1 (baseline)");
+            row("exact curve (hull, lines, envelope)", nm, t_exact, ratio("%.0fx faster than the grid (target 1000x)", t_tt / t_exact));
+        }
     }
     double t10k = per_call([&](long) { Model m = build_model(h10k); Curve c = build_curve(m); }, 1, 1);
     row("exact curve, two 10,000-vertex hulls", "hulls (10000)", t10k, "target < 1 s");

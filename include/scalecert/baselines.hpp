@@ -38,6 +38,10 @@ std::unique_ptr<Method> make_libccd_mpr(const FpScene& s);
 // double from the double vertices for each of the engine's normals.
 std::unique_ptr<Method> make_double_envelope(const Model& m, const FpScene& s);
 
+// The paper's node test: any pair of triangulated faces intersecting (double precision).
+std::unique_ptr<Method> make_paper_tritri(const Model& m, const FpScene& s);
+bool triangles_intersect(const std::array<D3, 3>& a, const std::array<D3, 3>& b);
+
 // The paper's pipeline: classify an n × n grid over I1 × I2; in each column, the touching ρ2 is
 // estimated by `bisections` rounds of bisection between the last separated and the first
 // overlapping node, repeated `repeats` times from jittered brackets and averaged (Section 3.2).

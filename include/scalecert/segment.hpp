@@ -3,6 +3,7 @@
 // fraction of its length from v1), t2(ρ2) where it leaves P2(ρ2) from v2; both exact and
 // piecewise linear in ρ (t = ρ·t_s for the seed segment, the paper's Remark).
 #pragma once
+#include "scalecert/ellipsoid.hpp"
 #include "scalecert/envelope.hpp"
 
 #include <optional>
@@ -14,7 +15,14 @@ struct LinearPiece { Q from, to, slope, intercept; };  // y = slope·x + interce
 struct Segment {
     Vec3q v1, v2;
     std::vector<LinearPiece> t[2];  // t1 over I1, t2 over I2
+    std::string kind = "explicit";  // "seeds", "ellipsoids", "explicit"
+    std::string note;               // e.g. why the ellipsoid path fell back to the seeds
+    std::optional<EllipsoidPath> path;
 };
+
+// The segment named by --segment: "seeds", "ellipsoids" (the paper's Step 2, falling back to the
+// seeds when its rounded ends fail the exact check), or explicit ends.
+Segment segment_by_kind(const Model& m, const std::string& kind);
 
 // Throws InputError when v_i is not strictly inside P_i(lo_i) (then it is inside P_i(ρ) for every
 // ρ in I_i, since the polyhedra grow with ρ about interior seeds).

@@ -218,6 +218,7 @@ std::vector<AuditRow> audit_scene(const std::string& name, const Scene& s, const
         if (meth == "libccd-gjk") mm = fp::make_libccd_gjk(f);
         else if (meth == "libccd-mpr") mm = fp::make_libccd_mpr(f);
         else if (meth == "double-envelope") mm = fp::make_double_envelope(m, f);
+        else if (meth == "paper-tritri") mm = fp::make_paper_tritri(m, f);
         else if (meth == "grid") continue;
         else throw InputError("--methods: unknown method '" + meth + "'");
         AuditRow r;

@@ -68,7 +68,7 @@ Q read_rho(const std::string& text, const char* name, const ReadOptions& opt) {
 }
 
 Segment parse_segment(const std::string& spec, const Model& m, const ReadOptions&) {
-    if (spec == "seeds") return make_segment(m, m.s[0], m.s[1]);
+    if (spec == "seeds" || spec == "ellipsoids") return segment_by_kind(m, spec);
     auto colon = spec.find(':');
     if (colon == std::string::npos) throw InputError("--segment: expected 'seeds' or x1,y1,z1:x2,y2,z2");
     Vec3q v[2];
@@ -132,13 +132,13 @@ int main(int argc, char** argv) {
     };
     CLI::App* curve = app.add_subcommand("curve", "the touching curve over I1, its switch points and the growth distance");
     common(curve);
-    curve->add_option("--segment", segment_spec, "add the t1-t2 curve along a segment: seeds | x1,y1,z1:x2,y2,z2");
+    curve->add_option("--segment", segment_spec, "add the t1-t2 curve along a segment: seeds | ellipsoids | x1,y1,z1:x2,y2,z2");
     CLI::App* query = app.add_subcommand("query", "separated / touching / overlapping at (RHO1, RHO2)");
     common(query);
     query->add_option("RHO1", rho1s, "scaling of P1 (exact: 3/2, 1.5, 15e-1)")->required();
     query->add_option("RHO2", rho2s, "scaling of P2")->required();
     query->add_flag("--json", as_json, "the verdict with its certificate, as JSON");
-    query->add_option("--segment", segment_spec, "report t1, t2 and the gap along a segment: seeds | x1,y1,z1:x2,y2,z2");
+    query->add_option("--segment", segment_spec, "report t1, t2 and the gap along a segment: seeds | ellipsoids | x1,y1,z1:x2,y2,z2");
     query->add_flag("--in-t", in_t, "RHO1 RHO2 are t1 t2 along the segment (default: seeds)");
     CLI::App* part = app.add_subcommand("partition", "the certified partition of I1 x I2 (the certificate)");
     common(part);
@@ -148,7 +148,7 @@ int main(int argc, char** argv) {
     std::string grid_method = "libccd-gjk";
     grid->add_option("--n", grid_n, "grid resolution per axis")->check(CLI::Range(2, 4096));
     grid->add_option("--bisections", grid_bis, "bisection steps per column")->check(CLI::Range(0, 60));
-    grid->add_option("--method", grid_method, "libccd-gjk | libccd-mpr | double-envelope");
+    grid->add_option("--method", grid_method, "libccd-gjk | libccd-mpr | double-envelope | paper-tritri");
     CLI::App* certify = app.add_subcommand("certify-fp", "mark a floating-point program's claims right or wrong, exactly");
     std::string claims_path;
     common(certify);
@@ -270,6 +270,7 @@ int main(int argc, char** argv) {
                 text = std::string(verdict_name(r.verdict)) + "\n";
                 if (in_t) text += "rho1 " + to_exact_string(r1) + "\nrho2 " + to_exact_string(r2) + "\n";
                 if (seg) {
+                    if (!seg->note.empty()) text += "note " + seg->note + "\n";
                     Q g = directional_gap(*seg, r1, r2);
                     text += "t1 " + to_exact_string(eval(seg->t[0], r1)) + "\nt2 " + to_exact_string(eval(seg->t[1], r2)) +
                             "\ngap_fraction " + to_exact_string(g) + "\ngap_distance ~" +
@@ -282,6 +283,7 @@ int main(int argc, char** argv) {
             if (grid_method == "libccd-gjk") meth = fp::make_libccd_gjk(f);
             else if (grid_method == "libccd-mpr") meth = fp::make_libccd_mpr(f);
             else if (grid_method == "double-envelope") meth = fp::make_double_envelope(m, f);
+            else if (grid_method == "paper-tritri") meth = fp::make_paper_tritri(m, f);
             else throw InputError("--method: unknown method '" + grid_method + "'");
             fp::GridCurve gc = fp::grid_search(*meth, f, grid_n, grid_bis, grid_bis ? 3 : 1);
             Json j;
