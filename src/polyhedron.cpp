@@ -152,7 +152,11 @@ Polyhedron build_polyhedron(const std::vector<Vec3q>& pts, const std::string& na
     const std::vector<Vec3z>& ip = P.ipts;
     P.dpts.resize(pts.size());
     for (size_t i = 0; i < pts.size(); ++i) P.dpts[i] = {ip[i][0].get_d(), ip[i][1].get_d(), ip[i][2].get_d()};
-    auto tris = hull_triangles(pts);
+    // The hull of the integer-scaled points (a uniform scaling: same faces), which lets CGAL use
+    // Epick's exact filtered predicates whenever these integers are exact doubles.
+    std::vector<Vec3q> ipq(ip.size());
+    for (size_t i = 0; i < ip.size(); ++i) ipq[i] = {Q(ip[i][0]), Q(ip[i][1]), Q(ip[i][2])};
+    auto tris = hull_triangles(ipq);
     // Group hull triangles by their supporting plane: on a convex polytope one plane, one face.
     std::map<Vec3z, int> plane_of;
     std::vector<std::vector<int>> face_pts;       // hull points of each face (with repeats)
