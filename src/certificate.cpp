@@ -56,6 +56,10 @@ Json model_json(const Model& m) {
     j["contact_lines"] = m.lines.size();
     j["edge_pairs_tested"] = m.stats.edge_pairs_tested;
     j["gauss_arc_crossings"] = m.stats.arc_crossings;
+    j["decided_by_filter"] = Json{{"arc_signs", m.stats.arc_signs_filtered},
+                                  {"support_comparisons", m.P[0].cmp_filtered + m.P[1].cmp_filtered}};
+    j["decided_exactly"] = Json{{"arc_signs", m.stats.arc_signs_exact},
+                                {"support_comparisons", m.P[0].cmp_exact + m.P[1].cmp_exact}};
     return j;
 }
 

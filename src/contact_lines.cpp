@@ -130,8 +130,9 @@ Model build_model(const Scene& scene) {
             auto side = [&](const D3& ud, const D3& pd, bool x_first, const Vec3z& u, const Vec3z& p) {
                 D3 c = x_first ? crossd(xs, ud) : crossd(ud, xs);
                 double v = dotd(c, pd), bound = 1e-10 * norm(ud) * norm(xs) * norm(pd);
-                if (v > bound) return 1;
-                if (v < -bound) return -1;
+                if (v > bound) return ++m.stats.arc_signs_filtered, 1;
+                if (v < -bound) return ++m.stats.arc_signs_filtered, -1;
+                ++m.stats.arc_signs_exact;
                 Vec3z x = sign > 0 ? exact_x() : neg(exact_x());
                 return sgn(dotz(x_first ? cross(x, u) : cross(u, x), p));
             };

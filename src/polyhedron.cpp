@@ -44,8 +44,9 @@ std::vector<int> Polyhedron::argmax(const Vec3z& n, Q* value, Z* scaled_value) c
     // sign of n·x_w − n·x_v, exactly
     auto compare = [&](int w, double wd, double we, int v, double vd, double ve) {
         double diff = wd - vd, tol = we + ve;
-        if (diff > tol) return 1;
-        if (diff < -tol) return -1;
+        if (diff > tol) return ++cmp_filtered, 1;
+        if (diff < -tol) return ++cmp_filtered, -1;
+        ++cmp_exact;
         return cmp(dotz(n, ipts[w]), dotz(n, ipts[v]));
     };
     int cur = start_vertex(n);

@@ -1,6 +1,7 @@
 // scalecert-bench: speed of the exact engine against floating-point baselines measured in the
 // same run, reported as ratios. Usage: scalecert-bench [--quick]
 #include "scalecert/baselines.hpp"
+#include "scalecert/families.hpp"
 #include "scalecert/fast_query.hpp"
 
 #include <chrono>
@@ -111,6 +112,31 @@ void query_benchmarks(const std::string& name, const Scene& sc, long nq) {
     std::fprintf(stderr, "    on-curve points representable as doubles: %ld, decided exactly: %lu\n", on, (unsigned long)fc2.counts.exact);
 }
 
+std::vector<std::string> growth_rows;
+void growth(const std::string& name, const Scene& sc) {
+    auto t0 = Clock::now();
+    Model m = build_model(sc);
+    Curve c = build_curve(m);
+    double t = std::chrono::duration<double>(Clock::now() - t0).count();
+    FastCurve fc(m, c);
+    for (int i = 1; i < 200; ++i) {  // pairs at relative distances 2^-10 .. 2^-50 from the curve
+        Q x = sc.lo[0] + (sc.hi[0] - sc.lo[0]) * Q(i, 200);
+        x.canonicalize();
+        Q y = c.env.value(m.lines, x);
+        if (sgn(y) <= 0) continue;
+        Q d = y / Q(Z(1) << (10 + i % 41));
+        fc.classify(to_double_rn(x), to_double_rn(y + d));
+        fc.classify(to_double_rn(x), to_double_rn(y - d));
+    }
+    char b[512];
+    std::snprintf(b, sizeof b, "| %s | %.3g s | %lu / %lu | %lu / %lu | %lu / %lu |", name.c_str(), t,
+                  (unsigned long)(m.P[0].cmp_filtered + m.P[1].cmp_filtered), (unsigned long)(m.P[0].cmp_exact + m.P[1].cmp_exact),
+                  (unsigned long)m.stats.arc_signs_filtered, (unsigned long)m.stats.arc_signs_exact,
+                  (unsigned long)fc.counts.filtered, (unsigned long)fc.counts.exact);
+    growth_rows.push_back(b);
+    std::fprintf(stderr, "  %s\n", b);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -142,6 +168,15 @@ int main(int argc, char** argv) {
     }
     double t10k = per_call([&](long) { Model m = build_model(h10k); Curve c = build_curve(m); }, 1, 1);
     row("exact curve, two 10,000-vertex hulls", "hulls (10000)", t10k, "target < 1 s");
+    // Growth with size and with degeneracy: curve time, and how often each stage decided.
+    std::fprintf(stderr, "growth (exact curve; filter/exact decisions in support climbs, arc signs, queries near the curve):\n");
+    growth_rows.push_back("| case | curve time | support comparisons filtered / exact | arc signs filtered / exact | queries near the curve filtered / exact |");
+    growth_rows.push_back("|---|---|---|---|---|");
+    for (int n : {100, 1000, 10000}) growth("near-sphere, " + std::to_string(n) + " vertices", spheres(n, 10 * n * 1000L, 5));
+    for (int k : {4, 20, 40}) {
+        Rng g(1);
+        growth("nearly-equal-slopes, eps = 2^-" + std::to_string(k), make_family_scene("nearly-equal-slopes", Q(1, Z(1) << k), g));
+    }
     // Batch: many pairs on one core and on two.
     {
         Model m = build_model(bx);
@@ -168,4 +203,6 @@ int main(int argc, char** argv) {
         else std::snprintf(buf, sizeof buf, "%.2f s", t);
         std::printf("| %s | %s | %s | %s |\n", r.method.c_str(), r.scene.c_str(), buf, r.ratio.c_str());
     }
+    std::printf("\n");
+    for (const std::string& g : growth_rows) std::printf("%s\n", g.c_str());
 }

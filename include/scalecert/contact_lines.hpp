@@ -25,6 +25,7 @@ char feature_letter(size_t n_vertices);
 
 struct LineStats {
     std::uint64_t face_normals = 0, edge_pairs_tested = 0, arc_crossings = 0, distinct_normals = 0;
+    std::uint64_t arc_signs_filtered = 0, arc_signs_exact = 0;  // Gauss-arc sign tests by stage
 };
 
 struct Model {

@@ -3,6 +3,7 @@
 #pragma once
 #include "scalecert/exact.hpp"
 
+#include <cstdint>
 #include <vector>
 
 namespace scalecert {
@@ -26,6 +27,9 @@ struct Polyhedron {
     std::vector<Vec3z> ipts;             // points × scale: integers, same order of n·x as points
     Z scale;                             // lcm of the denominators of the points
     std::vector<std::array<double, 3>> dpts;  // ipts as doubles: a filter for comparisons only
+    // How often argmax's comparisons were decided by the double filter, and exactly (statistics;
+    // argmax is called from one thread at a time).
+    mutable std::uint64_t cmp_filtered = 0, cmp_exact = 0;
     std::vector<int> start_table;        // cube-map cells (6 × G × G) -> a vertex near the argmax
 
     // The vertices maximising n·x (a vertex, an edge's two ends or a face's vertices), sorted,
