@@ -38,6 +38,11 @@ std::unique_ptr<Method> make_libccd_mpr(const FpScene& s);
 // double from the double vertices for each of the engine's normals.
 std::unique_ptr<Method> make_double_envelope(const Model& m, const FpScene& s);
 
+// FCL's collide() on Convex shapes (GJK via libccd, or FCL's own GJK), and Bullet's
+// btGjkEpaSolver2::Distance on btConvexHullShape (collision margin 0).
+std::unique_ptr<Method> make_fcl(const Model& m, const FpScene& s, bool libccd);
+std::unique_ptr<Method> make_bullet(const FpScene& s);
+
 // The paper's node test: any pair of triangulated faces intersecting (double precision).
 std::unique_ptr<Method> make_paper_tritri(const Model& m, const FpScene& s);
 bool triangles_intersect(const std::array<D3, 3>& a, const std::array<D3, 3>& b);

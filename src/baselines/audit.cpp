@@ -219,6 +219,9 @@ std::vector<AuditRow> audit_scene(const std::string& name, const Scene& s, const
         else if (meth == "libccd-mpr") mm = fp::make_libccd_mpr(f);
         else if (meth == "double-envelope") mm = fp::make_double_envelope(m, f);
         else if (meth == "paper-tritri") mm = fp::make_paper_tritri(m, f);
+        else if (meth == "fcl-gjk-libccd") mm = fp::make_fcl(m, f, true);
+        else if (meth == "fcl-gjk-indep") mm = fp::make_fcl(m, f, false);
+        else if (meth == "bullet-gjk-epa") mm = fp::make_bullet(f);
         else if (meth == "grid") continue;
         else throw InputError("--methods: unknown method '" + meth + "'");
         AuditRow r;

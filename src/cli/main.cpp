@@ -148,7 +148,7 @@ int main(int argc, char** argv) {
     std::string grid_method = "libccd-gjk";
     grid->add_option("--n", grid_n, "grid resolution per axis")->check(CLI::Range(2, 4096));
     grid->add_option("--bisections", grid_bis, "bisection steps per column")->check(CLI::Range(0, 60));
-    grid->add_option("--method", grid_method, "libccd-gjk | libccd-mpr | double-envelope | paper-tritri");
+    grid->add_option("--method", grid_method, "libccd-gjk | libccd-mpr | double-envelope | paper-tritri | fcl-gjk-libccd | fcl-gjk-indep | bullet-gjk-epa");
     CLI::App* certify = app.add_subcommand("certify-fp", "mark a floating-point program's claims right or wrong, exactly");
     std::string claims_path;
     common(certify);
@@ -164,12 +164,12 @@ int main(int argc, char** argv) {
     golden->add_option("--eps", eps_text, "degeneracy parameter (exact, default 2^-20)");
     golden->add_option("--out", out_dir, "output directory (created)")->required();
     CLI::App* audit = app.add_subcommand("audit", "run floating-point methods on scenes and compare with the exact answers (CSV and JSON)");
-    std::vector<std::string> audit_scenes, methods{"libccd-gjk", "libccd-mpr", "double-envelope", "grid"};
+    std::vector<std::string> audit_scenes, methods{"libccd-gjk", "libccd-mpr", "fcl-gjk-libccd", "fcl-gjk-indep", "bullet-gjk-epa", "double-envelope", "paper-tritri", "grid"};
     std::vector<int> grid_ns{16, 64, 256};
     int sweep_from = 0, sweep_to = 0;
     std::string audit_out = "audit";
     audit->add_option("SCENES", audit_scenes, "scene files");
-    audit->add_option("--methods", methods, "libccd-gjk libccd-mpr double-envelope grid")->delimiter(',');
+    audit->add_option("--methods", methods, "libccd-gjk libccd-mpr double-envelope paper-tritri fcl-gjk-libccd fcl-gjk-indep bullet-gjk-epa grid")->delimiter(',');
     audit->add_option("--grid", grid_ns, "grid resolutions for the grid method")->delimiter(',');
     audit->add_option("--family", family, "also audit a family over an eps sweep (with --sweep)");
     audit->add_option("--sweep", sweep_from, "eps = 2^-K for K from this ...");
@@ -284,6 +284,9 @@ int main(int argc, char** argv) {
             else if (grid_method == "libccd-mpr") meth = fp::make_libccd_mpr(f);
             else if (grid_method == "double-envelope") meth = fp::make_double_envelope(m, f);
             else if (grid_method == "paper-tritri") meth = fp::make_paper_tritri(m, f);
+            else if (grid_method == "fcl-gjk-libccd") meth = fp::make_fcl(m, f, true);
+            else if (grid_method == "fcl-gjk-indep") meth = fp::make_fcl(m, f, false);
+            else if (grid_method == "bullet-gjk-epa") meth = fp::make_bullet(f);
             else throw InputError("--method: unknown method '" + grid_method + "'");
             fp::GridCurve gc = fp::grid_search(*meth, f, grid_n, grid_bis, grid_bis ? 3 : 1);
             Json j;
