@@ -58,7 +58,7 @@ BOOST_AUTO_TEST_CASE(golden_data_is_deterministic_and_exact) {
 }
 
 BOOST_AUTO_TEST_CASE(small_audit_and_stability_sweep) {
-    // Every method gives a row per ε (and the grid one per resolution); the exact engine's row
+    // Every method gives a row per ε (and the grid two per resolution); the exact engine's row
     // finds every junction.
     std::vector<AuditRow> rows;
     for (int k : {4, 16, 30}) {
@@ -73,6 +73,10 @@ BOOST_AUTO_TEST_CASE(small_audit_and_stability_sweep) {
         if (r.has_curve) {
             ++curve_rows;
             if (r.method == "scalecert (exact)") BOOST_TEST(r.junctions_missed == 0);
+            // The Appendix's equations put a junction they find at the exact switch up to rounding,
+            // which the slope difference (about ε) amplifies: a tight bound only for ε = 2^-4.
+            if (r.method.rfind("grid+analytical", 0) == 0 && r.eps == Q(1, 16) && r.exact_junctions > r.junctions_missed)
+                BOOST_TEST(r.max_junction_error < 1e-9);
         } else {
             ++query_rows;
             BOOST_TEST(r.queries > 200);
@@ -80,7 +84,7 @@ BOOST_AUTO_TEST_CASE(small_audit_and_stability_sweep) {
         }
     }
     BOOST_TEST(query_rows == 9);
-    BOOST_TEST(curve_rows == 9);
+    BOOST_TEST(curve_rows == 15);  // per ε: the exact row, and per resolution bisection and analytical
     std::string csv = audit_csv(rows);
     BOOST_TEST(std::count(csv.begin(), csv.end(), '\n') == static_cast<long>(rows.size()) + 1);
 }

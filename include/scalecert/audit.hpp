@@ -28,7 +28,7 @@ struct AuditRow {
     bool has_curve = false;
     int grid_n = 0;
     double growth_error = 0, max_junction_error = 0, seconds_per_curve = 0;
-    int exact_junctions = 0, junctions_found = 0, junctions_missed = 0;
+    int exact_junctions = 0, junctions_found = 0, junctions_missed = 0, junctions_merged = 0;
 };
 
 // Runs every method on the scene: random pairs plus pairs at relative distances 2^-k above and
