@@ -47,6 +47,10 @@ std::unique_ptr<Method> make_bullet(const FpScene& s);
 std::unique_ptr<Method> make_paper_tritri(const Model& m, const FpScene& s);
 bool triangles_intersect(const std::array<D3, 3>& a, const std::array<D3, 3>& b);
 
+// The method of that name (libccd-gjk, libccd-mpr, fcl-gjk-libccd, fcl-gjk-indep,
+// bullet-gjk-epa, paper-tritri, double-envelope); none for an unknown name.
+std::unique_ptr<Method> make_method(const std::string& name, const Model& m, const FpScene& s);
+
 // The paper's pipeline: classify an n × n grid over I1 × I2; in each column, the touching ρ2 is
 // estimated by `bisections` rounds of bisection between the last separated and the first
 // overlapping node, repeated `repeats` times from jittered brackets and averaged (Section 3.2).

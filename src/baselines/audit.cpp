@@ -235,16 +235,9 @@ std::vector<AuditRow> audit_scene(const std::string& name, const Scene& s, const
     for (size_t i = 0; i < r1.size(); ++i) exact[i] = query(m, c, exact_from_double(r1[i]), exact_from_double(r2[i]), false).verdict;
     std::vector<AuditRow> rows;
     for (const std::string& meth : methods) {
-        std::unique_ptr<fp::Method> mm;
-        if (meth == "libccd-gjk") mm = fp::make_libccd_gjk(f);
-        else if (meth == "libccd-mpr") mm = fp::make_libccd_mpr(f);
-        else if (meth == "double-envelope") mm = fp::make_double_envelope(m, f);
-        else if (meth == "paper-tritri") mm = fp::make_paper_tritri(m, f);
-        else if (meth == "fcl-gjk-libccd") mm = fp::make_fcl(m, f, true);
-        else if (meth == "fcl-gjk-indep") mm = fp::make_fcl(m, f, false);
-        else if (meth == "bullet-gjk-epa") mm = fp::make_bullet(f);
-        else if (meth == "grid") continue;
-        else throw InputError("--methods: unknown method '" + meth + "'");
+        if (meth == "grid") continue;
+        std::unique_ptr<fp::Method> mm = fp::make_method(meth, m, f);
+        if (!mm) throw InputError("--methods: unknown method '" + meth + "'");
         AuditRow r;
         r.scene = name;
         r.method = mm->name();

@@ -96,6 +96,17 @@ std::unique_ptr<Method> make_libccd_gjk(const FpScene& s) { return std::make_uni
 std::unique_ptr<Method> make_libccd_mpr(const FpScene& s) { return std::make_unique<Libccd>(s, true); }
 std::unique_ptr<Method> make_double_envelope(const Model& m, const FpScene& s) { return std::make_unique<DoubleEnvelope>(m, s); }
 
+std::unique_ptr<Method> make_method(const std::string& name, const Model& m, const FpScene& s) {
+    if (name == "libccd-gjk") return make_libccd_gjk(s);
+    if (name == "libccd-mpr") return make_libccd_mpr(s);
+    if (name == "double-envelope") return make_double_envelope(m, s);
+    if (name == "paper-tritri") return make_paper_tritri(m, s);
+    if (name == "fcl-gjk-libccd") return make_fcl(m, s, true);
+    if (name == "fcl-gjk-indep") return make_fcl(m, s, false);
+    if (name == "bullet-gjk-epa") return make_bullet(s);
+    return nullptr;
+}
+
 GridCurve grid_search(const Method& method, const FpScene& s, int n, int bisections, int repeats) {
     GridCurve g;
     auto at = [](double lo, double hi, int i, int n) { return n == 1 ? lo : lo + (hi - lo) * i / (n - 1); };

@@ -279,15 +279,8 @@ int main(int argc, char** argv) {
             }
         } else if (*grid) {
             fp::FpScene f = fp::to_fp(m.scene);
-            std::unique_ptr<fp::Method> meth;
-            if (grid_method == "libccd-gjk") meth = fp::make_libccd_gjk(f);
-            else if (grid_method == "libccd-mpr") meth = fp::make_libccd_mpr(f);
-            else if (grid_method == "double-envelope") meth = fp::make_double_envelope(m, f);
-            else if (grid_method == "paper-tritri") meth = fp::make_paper_tritri(m, f);
-            else if (grid_method == "fcl-gjk-libccd") meth = fp::make_fcl(m, f, true);
-            else if (grid_method == "fcl-gjk-indep") meth = fp::make_fcl(m, f, false);
-            else if (grid_method == "bullet-gjk-epa") meth = fp::make_bullet(f);
-            else throw InputError("--method: unknown method '" + grid_method + "'");
+            std::unique_ptr<fp::Method> meth = fp::make_method(grid_method, m, f);
+            if (!meth) throw InputError("--method: unknown method '" + grid_method + "'");
             fp::GridCurve gc = fp::grid_search(*meth, f, grid_n, grid_bis, grid_bis ? 3 : 1);
             Json j;
             j["method"] = meth->name();
