@@ -53,7 +53,8 @@ Json model_json(const Model& m) {
     const char* names[2] = {"P1", "P2"};
     for (int i = 0; i < 2; ++i)
         j[names[i]] = Json{{"vertices", m.P[i].vertices.size()}, {"edges", m.P[i].edges.size()}, {"faces", m.P[i].faces.size()}};
-    j["contact_lines"] = m.lines.size();
+    j["facet_normals"] = m.stats.distinct_normals;
+    j["contact_lines"] = m.lines.size();  // after dropping the certainly dominated ones
     j["edge_pairs_tested"] = m.stats.edge_pairs_tested;
     j["gauss_arc_crossings"] = m.stats.arc_crossings;
     j["decided_by_filter"] = Json{{"arc_signs", m.stats.arc_signs_filtered},

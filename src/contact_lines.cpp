@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <numeric>
 #include <optional>
 #include <cstdio>
 #include <cstdlib>
@@ -40,6 +41,30 @@ ContactLine line_for_normal(const Model& m, const Vec3z& n) {
 namespace {
 
 }  // namespace
+
+std::vector<size_t> undominated(const std::vector<double>& a, const std::vector<double>& b) {
+    const size_t n = a.size();
+    std::vector<size_t> by_slope(n);
+    std::iota(by_slope.begin(), by_slope.end(), size_t{0});
+    std::sort(by_slope.begin(), by_slope.end(), [&](size_t i, size_t j) { return a[i] > a[j]; });
+    constexpr double kRel = 1e-12;
+    auto lower = [&](size_t i) { return a[i] - kRel * std::fabs(a[i]); };  // below the true slope
+    auto upper = [&](size_t i) { return a[i] + kRel * std::fabs(a[i]); };  // above it
+    std::vector<size_t> keep;
+    double bmax = -INFINITY, bmax_err = 0;
+    size_t j = 0;  // lines by_slope[0..j) have a slope certainly larger than the current line's
+    for (size_t k = 0; k < n; ++k) {
+        size_t i = by_slope[k];
+        while (j < k && lower(by_slope[j]) > upper(i)) {
+            size_t m = by_slope[j++];
+            if (b[m] - kRel * std::fabs(b[m]) > bmax - bmax_err) bmax = b[m], bmax_err = kRel * std::fabs(b[m]);
+        }
+        if (bmax - bmax_err > b[i] + kRel * std::fabs(b[i])) continue;  // certainly dominated
+        keep.push_back(i);
+    }
+    std::sort(keep.begin(), keep.end());
+    return keep;
+}
 
 namespace {
 // SCALECERT_TIMING=1 prints the time of each stage on stderr (never in the output).
@@ -146,8 +171,25 @@ Model build_model(const Scene& scene) {
     }
     clock.lap("gauss map overlay");
     m.stats.distinct_normals = normals.size();
-    m.lines.reserve(normals.size());
-    for (const auto& [n, origin] : normals) m.lines.push_back(line_for_normal(m, n));
+    // Approximate lines from the exact maximisers (the filtered climb decides exactly): slope and
+    // intercept as doubles of exact integers, within 10^-15 relative. Certainly dominated lines
+    // are dropped; the rest are built exactly, with their contact features.
+    std::vector<const Vec3z*> ns;
+    std::vector<double> sa, sb;
+    const double D1 = Z(m.P[0].scale * m.sden[0]).get_d(), D2 = Z(m.P[1].scale * m.sden[1]).get_d(), DD = m.dden.get_d();
+    for (const auto& [n, origin] : normals) {
+        int v1 = m.P[0].climb(n), v2 = m.P[1].climb(neg(n));
+        double H1 = Z(dotz(n, m.P[0].ipts[v1]) * m.sden[0] - dotz(n, m.sz[0])).get_d();
+        double H2 = Z(dotz(neg(n), m.P[1].ipts[v2]) * m.sden[1] + dotz(n, m.sz[1])).get_d();
+        double ND = dotz(n, m.dz).get_d();
+        ns.push_back(&n);
+        sa.push_back(-(H1 * D2) / (H2 * D1));
+        sb.push_back((ND * D2) / (DD * H2));
+    }
+    std::vector<size_t> keep = undominated(sa, sb);
+    m.stats.dominated_lines = normals.size() - keep.size();
+    m.lines.reserve(keep.size());
+    for (size_t i : keep) m.lines.push_back(line_for_normal(m, *ns[i]));
     clock.lap("contact lines");
     return m;
 }

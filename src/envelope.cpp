@@ -13,39 +13,10 @@ namespace {
 Q meet(const ContactLine& a, const ContactLine& b) { return (b.intercept - a.intercept) / (a.slope - b.slope); }
 }  // namespace
 
-namespace {
-// Lines certainly dominated by another (larger slope and larger intercept, so strictly below it
-// for every ρ1 ≥ 0) are never on the envelope. Doubles decide only with margins far above their
-// rounding error (mpq → double is within 2^-52 relative); anything unsure is kept.
-std::vector<size_t> undominated(const std::vector<ContactLine>& lines) {
-    const size_t n = lines.size();
-    std::vector<double> a(n), b(n);
-    for (size_t i = 0; i < n; ++i) a[i] = lines[i].slope.get_d(), b[i] = lines[i].intercept.get_d();
-    std::vector<size_t> by_slope(n);
-    std::iota(by_slope.begin(), by_slope.end(), size_t{0});
-    std::sort(by_slope.begin(), by_slope.end(), [&](size_t i, size_t j) { return a[i] > a[j]; });
-    constexpr double kRel = 1e-12;
-    auto lower = [&](size_t i) { return a[i] - kRel * std::fabs(a[i]); };  // below the true slope
-    auto upper = [&](size_t i) { return a[i] + kRel * std::fabs(a[i]); };  // above it
-    std::vector<size_t> keep;
-    double bmax = -INFINITY, bmax_err = 0;
-    size_t j = 0;  // lines by_slope[0..j) have a slope certainly larger than the current line's
-    for (size_t k = 0; k < n; ++k) {
-        size_t i = by_slope[k];
-        while (j < k && lower(by_slope[j]) > upper(i)) {
-            size_t m = by_slope[j++];
-            if (b[m] - kRel * std::fabs(b[m]) > bmax - bmax_err) bmax = b[m], bmax_err = kRel * std::fabs(b[m]);
-        }
-        if (bmax - bmax_err > b[i] + kRel * std::fabs(b[i])) continue;  // certainly dominated
-        keep.push_back(i);
-    }
-    std::sort(keep.begin(), keep.end());
-    return keep;
-}
-}  // namespace
-
 Envelope upper_envelope(const std::vector<ContactLine>& lines) {
-    std::vector<size_t> order = undominated(lines);
+    std::vector<double> sa(lines.size()), sb(lines.size());
+    for (size_t i = 0; i < lines.size(); ++i) sa[i] = lines[i].slope.get_d(), sb[i] = lines[i].intercept.get_d();
+    std::vector<size_t> order = undominated(sa, sb);
     // Increasing slope; for one slope the highest line first; ties by normal (lines are sorted).
     std::stable_sort(order.begin(), order.end(), [&](size_t i, size_t j) {
         if (lines[i].slope != lines[j].slope) return lines[i].slope < lines[j].slope;

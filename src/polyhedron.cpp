@@ -30,43 +30,58 @@ int Polyhedron::start_vertex(const Vec3z& n) const {
     return start_table[cube_cell({n[0].get_d(), n[1].get_d(), n[2].get_d()})];
 }
 
-std::vector<int> Polyhedron::argmax(const Vec3z& n, Q* value, Z* scaled_value) const {
-    // n·x compared through a double filter: the products and sums of doubles of the integer
-    // data err by at most a few ulps of Σ|n_k x_k|; 1e-14 of it bounds that with room. Only
-    // comparisons the filter cannot decide (or non-finite ones) use exact integers.
-    const D3 nd{n[0].get_d(), n[1].get_d(), n[2].get_d()};
-    auto approx = [&](int v, double& err) {
-        const D3& x = dpts[v];
+namespace {
+// n·x compared through a double filter: the products and sums of doubles of the integer data err
+// by at most a few ulps of Σ|n_k x_k|; 1e-14 of it bounds that with room. Only comparisons the
+// filter cannot decide (or non-finite ones) use exact integers.
+struct FilteredDot {
+    const Polyhedron& P;
+    const Vec3z& n;
+    D3 nd{n[0].get_d(), n[1].get_d(), n[2].get_d()};
+    double approx(int v, double& err) const {
+        const D3& x = P.dpts[v];
         double a = nd[0] * x[0], b = nd[1] * x[1], c = nd[2] * x[2];
         err = 1e-14 * (std::fabs(a) + std::fabs(b) + std::fabs(c));
         return a + b + c;
-    };
+    }
     // sign of n·x_w − n·x_v, exactly
-    auto compare = [&](int w, double wd, double we, int v, double vd, double ve) {
+    int compare(int w, double wd, double we, int v, double vd, double ve) const {
         double diff = wd - vd, tol = we + ve;
-        if (diff > tol) return ++cmp_filtered, 1;
-        if (diff < -tol) return ++cmp_filtered, -1;
-        ++cmp_exact;
-        return cmp(dotz(n, ipts[w]), dotz(n, ipts[v]));
-    };
+        if (diff > tol) return ++P.cmp_filtered, 1;
+        if (diff < -tol) return ++P.cmp_filtered, -1;
+        ++P.cmp_exact;
+        return cmp(dotz(n, P.ipts[w]), dotz(n, P.ipts[v]));
+    }
+};
+}  // namespace
+
+int Polyhedron::climb(const Vec3z& n) const {
+    FilteredDot f{*this, n};
     int cur = start_vertex(n);
-    double ce, cd = approx(cur, ce);
+    double ce, cd = f.approx(cur, ce);
     for (bool moved = true; moved;) {
         moved = false;
         for (int w : adj[cur]) {
-            double we, wd = approx(w, we);
-            if (compare(w, wd, we, cur, cd, ce) > 0) { cur = w; cd = wd; ce = we; moved = true; break; }
+            double we, wd = f.approx(w, we);
+            if (f.compare(w, wd, we, cur, cd, ce) > 0) { cur = w; cd = wd; ce = we; moved = true; break; }
         }
     }
+    return cur;
+}
+
+std::vector<int> Polyhedron::argmax(const Vec3z& n, Q* value, Z* scaled_value) const {
+    FilteredDot f{*this, n};
+    const int top = climb(n);
+    double ce, cd = f.approx(top, ce);
     // The face of maximisers is connected in the vertex graph.
-    std::vector<int> out{cur}, stack{cur};
+    std::vector<int> out{top}, stack{top};
     while (!stack.empty()) {
         int v = stack.back();
         stack.pop_back();
         for (int w : adj[v]) {
             if (std::find(out.begin(), out.end(), w) != out.end()) continue;
-            double we, wd = approx(w, we);
-            if (compare(w, wd, we, cur, cd, ce) == 0) {
+            double we, wd = f.approx(w, we);
+            if (f.compare(w, wd, we, top, cd, ce) == 0) {
                 out.push_back(w);
                 stack.push_back(w);
             }
@@ -74,7 +89,7 @@ std::vector<int> Polyhedron::argmax(const Vec3z& n, Q* value, Z* scaled_value) c
     }
     std::sort(out.begin(), out.end());
     if (value || scaled_value) {
-        Z best = dotz(n, ipts[cur]);  // = max n·x times scale
+        Z best = dotz(n, ipts[top]);  // = max n·x times scale
         if (value) *value = Q(best, scale), value->canonicalize();
         if (scaled_value) *scaled_value = std::move(best);
     }

@@ -36,6 +36,7 @@ struct Polyhedron {
     // and the maximum value. Hill-climbs the vertex graph, then collects the tied face.
     std::vector<int> argmax(const Vec3z& n, Q* value = nullptr, Z* scaled_value = nullptr) const;
     int start_vertex(const Vec3z& n) const;  // a good vertex to start climbing from (doubles; a hint only)
+    int climb(const Vec3z& n) const;          // a vertex maximising n·x (exact decisions, filtered)
     Q support(const Vec3z& n) const;     // max over vertices of n·x
     bool strictly_inside(const Vec3q& p) const;
 };
