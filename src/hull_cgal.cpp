@@ -20,7 +20,7 @@ static_assert(std::is_same<K::FT::Exact_type, mpq_class>::value, "Epeck must run
 namespace {
 // The hull's triangles as input indices, for any CGAL kernel whose points we can key exactly.
 template <class Kernel, class Key, class ToPoint, class ToKey>
-std::vector<std::array<int, 3>> hull_with(const std::vector<Vec3q>& pts, ToPoint to_point, ToKey to_key) {
+std::vector<std::array<int, 3>> hull_with(const std::vector<Vec3z>& pts, ToPoint to_point, ToKey to_key) {
     using Point = typename Kernel::Point_3;
     std::vector<Point> cp;
     cp.reserve(pts.size());
@@ -45,27 +45,25 @@ std::vector<std::array<int, 3>> hull_with(const std::vector<Vec3q>& pts, ToPoint
     return tris;
 }
 
-bool all_exact_doubles(const std::vector<Vec3q>& pts) {
-    for (const Vec3q& v : pts)
-        for (const Q& c : v) {
-            double d = c.get_d();
-            if (!std::isfinite(d) || Q(d) != c) return false;
-        }
+bool all_exact_doubles(const std::vector<Vec3z>& pts) {
+    for (const Vec3z& v : pts)
+        for (const Z& c : v)
+            if (mpz_sizeinbase(c.get_mpz_t(), 2) > 53) return false;
     return true;
 }
 }  // namespace
 
-std::vector<std::array<int, 3>> hull_triangles(const std::vector<Vec3q>& pts) {
-    // Doubles that hold the coordinates exactly: Epick, whose predicates are exact (filtered),
+std::vector<std::array<int, 3>> hull_triangles(const std::vector<Vec3z>& pts) {
+    // Integers of at most 53 bits are exact doubles: Epick, whose predicates are exact (filtered),
     // and the hull needs no constructions. Otherwise Epeck on mpq_class.
     if (all_exact_doubles(pts)) {
         using KI = CGAL::Exact_predicates_inexact_constructions_kernel;
         return hull_with<KI, std::array<double, 3>>(
-            pts, [](const Vec3q& p) { return KI::Point_3(p[0].get_d(), p[1].get_d(), p[2].get_d()); },
+            pts, [](const Vec3z& p) { return KI::Point_3(p[0].get_d(), p[1].get_d(), p[2].get_d()); },
             [](const KI::Point_3& p) { return std::array<double, 3>{p.x(), p.y(), p.z()}; });
     }
     return hull_with<K, Vec3q>(
-        pts, [](const Vec3q& p) { return K::Point_3(K::FT(p[0]), K::FT(p[1]), K::FT(p[2])); },
+        pts, [](const Vec3z& p) { return K::Point_3(K::FT(Q(p[0])), K::FT(Q(p[1])), K::FT(Q(p[2]))); },
         [](const K::Point_3& p) { return Vec3q{CGAL::exact(p.x()), CGAL::exact(p.y()), CGAL::exact(p.z())}; });
 }
 

@@ -164,15 +164,16 @@ Polyhedron build_polyhedron(const std::vector<Vec3q>& pts, const std::string& na
         for (const Q& c : v) mpz_lcm(P.scale.get_mpz_t(), P.scale.get_mpz_t(), c.get_den_mpz_t());
     P.ipts.resize(pts.size());
     for (size_t i = 0; i < pts.size(); ++i)
-        for (int k = 0; k < 3; ++k) P.ipts[i][k] = Z(pts[i][k] * P.scale);
+        for (int k = 0; k < 3; ++k) {
+            mpz_divexact(P.ipts[i][k].get_mpz_t(), P.scale.get_mpz_t(), pts[i][k].get_den_mpz_t());
+            P.ipts[i][k] *= pts[i][k].get_num();
+        }
     const std::vector<Vec3z>& ip = P.ipts;
     P.dpts.resize(pts.size());
     for (size_t i = 0; i < pts.size(); ++i) P.dpts[i] = {ip[i][0].get_d(), ip[i][1].get_d(), ip[i][2].get_d()};
     // The hull of the integer-scaled points (a uniform scaling: same faces), which lets CGAL use
     // Epick's exact filtered predicates whenever these integers are exact doubles.
-    std::vector<Vec3q> ipq(ip.size());
-    for (size_t i = 0; i < ip.size(); ++i) ipq[i] = {Q(ip[i][0]), Q(ip[i][1]), Q(ip[i][2])};
-    auto tris = hull_triangles(ipq);
+    auto tris = hull_triangles(ip);
     // Group hull triangles by their supporting plane: on a convex polytope one plane, one face.
     std::map<Vec3z, int> plane_of;
     std::vector<std::vector<int>> face_pts;       // hull points of each face (with repeats)
@@ -233,8 +234,7 @@ Polyhedron build_polyhedron(const std::vector<Vec3q>& pts, const std::string& na
         throw std::logic_error("hull fails Euler's formula");
     // Start table: for each cube-map cell centre, the argmax found by climbing in doubles from the
     // previous cell's answer. Only a hint: argmax always finishes the climb exactly.
-    std::vector<D3> dp(pts.size());
-    for (size_t i = 0; i < pts.size(); ++i) dp[i] = {pts[i][0].get_d(), pts[i][1].get_d(), pts[i][2].get_d()};
+    const std::vector<D3>& dp = P.dpts;  // scaled coordinates: the same maximisers
     P.start_table.assign(6 * kG * kG, P.vertices.front());
     int cur = P.vertices.front();
     for (int face = 0; face < 6; ++face)

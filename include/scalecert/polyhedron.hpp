@@ -41,9 +41,9 @@ struct Polyhedron {
     bool strictly_inside(const Vec3q& p) const;
 };
 
-// Triangles of the convex hull of pts (CGAL), as index triples oriented outward.
+// Triangles of the convex hull of integer points (CGAL), as index triples oriented outward.
 // Precondition: pts has 4 affinely independent points.
-std::vector<std::array<int, 3>> hull_triangles(const std::vector<Vec3q>& pts);
+std::vector<std::array<int, 3>> hull_triangles(const std::vector<Vec3z>& pts);
 
 // Builds the exact polyhedron. Throws InputError (prefixed with `name`) when the points do not
 // span 3 dimensions.
