@@ -96,7 +96,7 @@ void query_benchmarks(const std::string& name, const Scene& sc, long nq) {
     }
     row("libccd GJK, one query", name, t_gjk, "1 (baseline)");
     row("exact query with curve (filtered)", name, t_curve, ratio("%.1fx faster than GJK", t_gjk / t_curve));
-    row("exact query, no curve (filtered)", name, t_direct, ratio("%.2fx GJK's time", t_direct / t_gjk));
+    row("exact query, no curve (filtered)", name, t_direct, ratio("%.3gx GJK's time", t_direct / t_gjk));
     std::fprintf(stderr, "    stages: with curve %lu filtered / %lu exact; no curve %lu / %lu; GJK verdicts differing from exact: %ld of %ld\n",
                  (unsigned long)fc.counts.filtered, (unsigned long)fc.counts.exact, (unsigned long)fd.counts.filtered,
                  (unsigned long)fd.counts.exact, wrong, nq);
