@@ -2,6 +2,7 @@
 
 #include <mpfr.h>
 #include <cmath>
+#include <cstdlib>
 
 namespace scalecert {
 
@@ -91,6 +92,14 @@ Q exact_from_double(double d) {
     Q r;
     mpq_set_d(r.get_mpq_t(), d);
     return r;
+}
+
+Q parse_number(const std::string& text, bool binary_doubles) {
+    if (!binary_doubles) return parse_exact(text);
+    char* end = nullptr;
+    double d = std::strtod(text.c_str(), &end);
+    if (text.empty() || end == text.c_str() || *end != '\0') throw InputError("'" + text + "' is not a number");
+    return exact_from_double(d);
 }
 
 std::string to_exact_string(const Q& q) {

@@ -125,13 +125,7 @@ struct Reader {
     }
     Q number_text(const std::string& text, bool /*integer_token*/, bool is_string, const std::string& where) const {
         try {
-            if (opt.binary_doubles && !is_string) {
-                char* end = nullptr;
-                double d = std::strtod(text.c_str(), &end);
-                if (end == text.c_str() || *end != '\0') fail(where, "'" + text + "' is not a number");
-                return exact_from_double(d);
-            }
-            return parse_exact(text);
+            return parse_number(text, opt.binary_doubles && !is_string);
         } catch (const InputError& e) {
             fail(where, e.what());
         }

@@ -45,6 +45,9 @@ Vec3z primitive(const Vec3z& v);
 Q parse_exact(const std::string& text);
 // The double's exact value (every finite double is a dyadic rational).
 Q exact_from_double(double d);
+// Number text read exactly (parse_exact), or with binary_doubles as the double strtod gives (its
+// exact value). Throws InputError (without location) for text that is neither.
+Q parse_number(const std::string& text, bool binary_doubles);
 
 // "p/q" in lowest terms with q > 0, or "p" when q = 1.
 std::string to_exact_string(const Q& q);

@@ -13,13 +13,7 @@ namespace scalecert {
 namespace {
 Q read_number(const std::string& t, bool binary_doubles, const std::string& where) {
     try {
-        if (binary_doubles) {
-            char* end = nullptr;
-            double d = std::strtod(t.c_str(), &end);
-            if (end == t.c_str() || *end) throw InputError("'" + t + "' is not a number");
-            return exact_from_double(d);
-        }
-        return parse_exact(t);
+        return parse_number(t, binary_doubles);
     } catch (const InputError& e) {
         throw InputError(where + ": " + e.what());
     }

@@ -52,14 +52,7 @@ void emit(const std::string& text, const std::string& out) {
 Q read_rho(const std::string& text, const char* name, const ReadOptions& opt) {
     Q r;
     try {
-        if (opt.binary_doubles) {
-            char* end = nullptr;
-            double d = std::strtod(text.c_str(), &end);
-            if (end == text.c_str() || *end) throw InputError("'" + text + "' is not a number");
-            r = exact_from_double(d);
-        } else {
-            r = parse_exact(text);
-        }
+        r = parse_number(text, opt.binary_doubles);
     } catch (const InputError& e) {
         throw InputError(std::string(name) + ": " + e.what());
     }
