@@ -4,6 +4,10 @@
 #include "scalecert/witness.hpp"
 
 #include <mpfr.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <fstream>
 
 namespace scalecert {
 
@@ -317,5 +321,23 @@ void add_query_segment_json(Json& j, const Segment& s, const Q& rho1, const Q& r
 }
 
 std::string dump(const Json& j) { return j.dump(1) + "\n"; }
+
+void write_file_atomically(const std::string& path, const std::string& text) {
+    std::string tmp = path + ".tmp." + std::to_string(::getpid());
+    {
+        std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
+        if (!f) throw InputError(path + ": cannot open for writing");
+        f << text;
+        f.flush();
+        if (!f) {
+            std::remove(tmp.c_str());
+            throw InputError(path + ": write failed");
+        }
+    }
+    if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+        std::remove(tmp.c_str());
+        throw InputError(path + ": cannot rename the temporary file into place");
+    }
+}
 
 }  // namespace scalecert

@@ -114,16 +114,6 @@ Json exact_scene_json(const Scene& s) {
     return j;
 }
 
-void write_file(const std::string& path, const std::string& text) {
-    std::string tmp = path + ".tmp";
-    {
-        std::ofstream f(tmp, std::ios::binary);
-        if (!f) throw InputError(path + ": cannot open for writing");
-        f << text;
-        if (!f) throw InputError(path + ": write failed");
-    }
-    if (std::rename(tmp.c_str(), path.c_str()) != 0) throw InputError(path + ": cannot rename into place");
-}
 }  // namespace
 
 void write_golden(const std::string& family, int count, std::uint64_t seed, const Q& eps, const std::string& dir) {
@@ -134,7 +124,7 @@ void write_golden(const std::string& family, int count, std::uint64_t seed, cons
         Model m = build_model(s);
         Curve c = build_curve(m);
         std::string stem = dir + "/" + family + "-" + std::to_string(i);
-        write_file(stem + ".scene.json", dump(exact_scene_json(s)));
+        write_file_atomically(stem + ".scene.json", dump(exact_scene_json(s)));
         Json j = curve_json(m, c);
         j["family"] = family;
         j["eps"] = to_exact_string(eps);
@@ -173,8 +163,8 @@ void write_golden(const std::string& family, int count, std::uint64_t seed, cons
             }
         }
         j["queries"] = qs;
-        write_file(stem + ".golden.json", dump(j));
-        write_file(stem + ".golden.csv", csv);
+        write_file_atomically(stem + ".golden.json", dump(j));
+        write_file_atomically(stem + ".golden.csv", csv);
     }
 }
 

@@ -24,29 +24,12 @@ using namespace scalecert;
 
 namespace {
 
-// Writes through a temporary file and a rename, so a failed run never leaves a half-written file.
+// To standard output, or to --out through a temporary file and a rename.
 void emit(const std::string& text, const std::string& out) {
-    if (out.empty()) {
-        std::cout << text;
-        std::cout.flush();
-        if (!std::cout) throw InputError("cannot write to standard output");
-        return;
-    }
-    std::string tmp = out + ".tmp." + std::to_string(::getpid());
-    {
-        std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
-        if (!f) throw InputError(out + ": cannot open for writing");
-        f << text;
-        f.flush();
-        if (!f) {
-            std::remove(tmp.c_str());
-            throw InputError(out + ": write failed");
-        }
-    }
-    if (std::rename(tmp.c_str(), out.c_str()) != 0) {
-        std::remove(tmp.c_str());
-        throw InputError(out + ": cannot rename the temporary file into place");
-    }
+    if (!out.empty()) return write_file_atomically(out, text);
+    std::cout << text;
+    std::cout.flush();
+    if (!std::cout) throw InputError("cannot write to standard output");
 }
 
 Q read_rho(const std::string& text, const char* name, const ReadOptions& opt) {
