@@ -36,22 +36,6 @@ Json features(const std::vector<int>& f1, const std::vector<int>& f2) {
     return Json{{"P1", f1}, {"P2", f2}};
 }
 
-Json scene_json(const Model& m) {
-    Json s;
-    const char* names[2] = {"P1", "P2"};
-    for (int i = 0; i < 2; ++i) {
-        Json verts = Json::array();
-        for (const Vec3q& v : m.scene.P[i].points)
-            verts.push_back(Json::array({to_exact_string(v[0]), to_exact_string(v[1]), to_exact_string(v[2])}));
-        const Vec3q& sd = m.s[i];
-        s[names[i]] = Json{{"vertices", verts},
-                           {"seed", Json::array({to_exact_string(sd[0]), to_exact_string(sd[1]), to_exact_string(sd[2])})}};
-    }
-    s["I1"] = Json::array({to_exact_string(m.scene.lo[0]), to_exact_string(m.scene.hi[0])});
-    s["I2"] = Json::array({to_exact_string(m.scene.lo[1]), to_exact_string(m.scene.hi[1])});
-    return s;
-}
-
 Json model_json(const Model& m) {
     Json j;
     const char* names[2] = {"P1", "P2"};
@@ -152,6 +136,22 @@ Json curve_body(const Model& m, const Curve& c, bool certificate) {
 
 void put_exact(Json& o, const std::string& key, const Q& q) { put(o, key, q); }
 
+Json scene_json(const Scene& sc) {
+    Json s;
+    const char* names[2] = {"P1", "P2"};
+    for (int i = 0; i < 2; ++i) {
+        Json verts = Json::array();
+        for (const Vec3q& v : sc.P[i].points)
+            verts.push_back(Json::array({to_exact_string(v[0]), to_exact_string(v[1]), to_exact_string(v[2])}));
+        const Vec3q& sd = sc.P[i].seed;
+        s[names[i]] = Json{{"vertices", verts},
+                           {"seed", Json::array({to_exact_string(sd[0]), to_exact_string(sd[1]), to_exact_string(sd[2])})}};
+    }
+    s["I1"] = Json::array({to_exact_string(sc.lo[0]), to_exact_string(sc.hi[0])});
+    s["I2"] = Json::array({to_exact_string(sc.lo[1]), to_exact_string(sc.hi[1])});
+    return s;
+}
+
 Json curve_json(const Model& m, const Curve& c) { return curve_body(m, c, false); }
 
 Json query_json(const Model& m, const QueryResult& r) {
@@ -176,7 +176,7 @@ Json query_json(const Model& m, const QueryResult& r) {
     if (r.witness) cert["witness"] = witness_json(*r.witness);
     j["certificate"] = cert;
     j["seed_interior"] = seed_interior_json(m);
-    j["scene"] = scene_json(m);
+    j["scene"] = scene_json(m.scene);
     return j;
 }
 
@@ -227,7 +227,7 @@ Json partition_json(const Model& m, const Curve& c, const Partition& p) {
     regions["separated"] = seps;
     j["regions"] = regions;
     j["seed_interior"] = seed_interior_json(m);
-    j["scene"] = scene_json(m);
+    j["scene"] = scene_json(m.scene);
     return j;
 }
 
@@ -306,7 +306,7 @@ void add_segment_json(Json& j, const Model& m, const Curve& c, const Segment& s)
         faces[names[i]] = fs;
     }
     j["faces"] = faces;
-    j["scene"] = scene_json(m);
+    j["scene"] = scene_json(m.scene);
 }
 
 void add_query_segment_json(Json& j, const Segment& s, const Q& rho1, const Q& rho2) {

@@ -10,6 +10,9 @@ namespace scalecert {
 
 using Json = nlohmann::ordered_json;
 
+// The scene exactly, in the scene-file format (every number an exact string, seeds explicit).
+Json scene_json(const Scene& s);
+
 // o[key] = exact string, o[key + "_double"] = nearest double.
 void put_exact(Json& o, const std::string& key, const Q& q);
 

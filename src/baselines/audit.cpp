@@ -101,19 +101,6 @@ std::string certify_fp(const Model& m, const Curve& c, const std::string& claims
 // ---- golden data ----------------------------------------------------------------------------
 
 namespace {
-Json exact_scene_json(const Scene& s) {
-    Json j;
-    const char* names[2] = {"P1", "P2"};
-    for (int i = 0; i < 2; ++i) {
-        Json vs = Json::array();
-        for (const Vec3q& v : s.P[i].points) vs.push_back({to_exact_string(v[0]), to_exact_string(v[1]), to_exact_string(v[2])});
-        j[names[i]] = {{"vertices", vs}, {"seed", {to_exact_string(s.P[i].seed[0]), to_exact_string(s.P[i].seed[1]), to_exact_string(s.P[i].seed[2])}}};
-    }
-    j["I1"] = {to_exact_string(s.lo[0]), to_exact_string(s.hi[0])};
-    j["I2"] = {to_exact_string(s.lo[1]), to_exact_string(s.hi[1])};
-    return j;
-}
-
 }  // namespace
 
 void write_golden(const std::string& family, int count, std::uint64_t seed, const Q& eps, const std::string& dir) {
@@ -124,7 +111,7 @@ void write_golden(const std::string& family, int count, std::uint64_t seed, cons
         Model m = build_model(s);
         Curve c = build_curve(m);
         std::string stem = dir + "/" + family + "-" + std::to_string(i);
-        write_file_atomically(stem + ".scene.json", dump(exact_scene_json(s)));
+        write_file_atomically(stem + ".scene.json", dump(scene_json(s)));
         Json j = curve_json(m, c);
         j["family"] = family;
         j["eps"] = to_exact_string(eps);
