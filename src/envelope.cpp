@@ -14,9 +14,10 @@ Q meet(const ContactLine& a, const ContactLine& b) { return (b.intercept - a.int
 }  // namespace
 
 Envelope upper_envelope(const std::vector<ContactLine>& lines) {
-    std::vector<double> sa(lines.size()), sb(lines.size());
-    for (size_t i = 0; i < lines.size(); ++i) sa[i] = lines[i].slope.get_d(), sb[i] = lines[i].intercept.get_d();
-    std::vector<size_t> order = undominated(sa, sb);
+    // build_model already dropped the certainly dominated lines; the hull sweep below handles any
+    // that remain.
+    std::vector<size_t> order(lines.size());
+    std::iota(order.begin(), order.end(), size_t{0});
     // Increasing slope; for one slope the highest line first; ties by normal (lines are sorted).
     std::stable_sort(order.begin(), order.end(), [&](size_t i, size_t j) {
         if (lines[i].slope != lines[j].slope) return lines[i].slope < lines[j].slope;
