@@ -51,15 +51,19 @@ double barrier(const Halfspaces& h, const M3& B, const V3& c, double mu, bool& o
     return f;
 }
 
-InnerEllipsoid mvie(const Halfspaces& h, const V3& start) {
+// None when floating point cannot even start (the seed not inside in doubles, or overflow).
+std::optional<InnerEllipsoid> mvie(const Halfspaces& h, const V3& start) {
     V3 c = start;
     double r = INFINITY;
     for (size_t j = 0; j < h.a.size(); ++j) r = std::min(r, h.b[j] - h.a[j].dot(c));
+    if (!(r > 0) || !std::isfinite(r) || !c.allFinite()) return std::nullopt;
     M3 B = 0.5 * r * M3::Identity();
+    std::vector<double> s0;
+    if (!slacks(h, B, c, s0)) return std::nullopt;
     for (double mu : {1.0, 0.1, 0.01, 1e-3, 1e-4}) {
         for (int it = 0; it < 400; ++it) {
             std::vector<double> s;
-            slacks(h, B, c, s);
+            if (!slacks(h, B, c, s)) break;  // the line search keeps (B, c) feasible; never expected
             M3 gB = B.inverse();
             V3 gc = V3::Zero();
             for (size_t j = 0; j < h.a.size(); ++j) {
@@ -93,13 +97,15 @@ InnerEllipsoid mvie(const Halfspaces& h, const V3& start) {
 }
 }  // namespace
 
-EllipsoidPath ellipsoid_path(const Model& m) {
+std::optional<EllipsoidPath> ellipsoid_path(const Model& m) {
     EllipsoidPath p;
     M3 B[2];
     V3 c[2];
     for (int i = 0; i < 2; ++i) {
         Halfspaces h = halfspaces(m.P[i], m.s[i], m.scene.lo[i]);
-        p.E[i] = mvie(h, V3(m.s[i][0].get_d(), m.s[i][1].get_d(), m.s[i][2].get_d()));
+        auto e = mvie(h, V3(m.s[i][0].get_d(), m.s[i][1].get_d(), m.s[i][2].get_d()));
+        if (!e) return std::nullopt;
+        p.E[i] = *e;
         for (int r = 0; r < 3; ++r) {
             c[i][r] = p.E[i].center[r];
             for (int k = 0; k < 3; ++k) B[i](r, k) = p.E[i].matrix[r][k];
@@ -131,6 +137,7 @@ EllipsoidPath ellipsoid_path(const Model& m) {
         x1 = c[0] + 0.999 * (x1 - c[0]);
         x2 = c[1] + 0.999 * (x2 - c[1]);
     }
+    if (!x1.allFinite() || !x2.allFinite()) return std::nullopt;
     for (int k = 0; k < 3; ++k) {
         p.v1[k] = exact_from_double(x1[k]);
         p.v2[k] = exact_from_double(x2[k]);

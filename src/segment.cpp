@@ -93,10 +93,16 @@ Segment segment_by_kind(const Model& m, const std::string& kind) {
         return s;
     }
     if (kind != "ellipsoids") throw InputError("--segment: unknown kind '" + kind + "'");
-    EllipsoidPath p = ellipsoid_path(m);
+    std::optional<EllipsoidPath> p = ellipsoid_path(m);
     Segment s;
+    if (!p) {
+        s = make_segment(m, m.s[0], m.s[1]);
+        s.kind = "seeds";
+        s.note = "the inner ellipsoids could not be computed in floating point; using the seeds";
+        return s;
+    }
     try {
-        s = make_segment(m, p.v1, p.v2);
+        s = make_segment(m, p->v1, p->v2);
         s.kind = "ellipsoids";
     } catch (const InputError& e) {
         s = make_segment(m, m.s[0], m.s[1]);

@@ -92,3 +92,24 @@ BOOST_AUTO_TEST_CASE(inner_ellipsoid_path_of_stacked_cubes) {
         BOOST_TEST(far == r);
     }
 }
+
+BOOST_AUTO_TEST_CASE(ellipsoids_fall_back_to_the_seeds_when_floating_point_fails) {
+    // A needle 10^29 long next to a point 10^31 away: the inner ellipsoid cannot be computed in
+    // doubles (this once crashed); the segment falls back to the seeds and says so.
+    Scene sc;
+    sc.P[0].points = {{Q(Z("123456789012345678901234567890")), Q(0), Q(0)}, {Q(0), Q(1), Q(0)}, {Q(0), Q(0), Q(1)}, {Q(-1), Q(-1), Q(-1)}};
+    Z far("10000000000000000000000000000000");
+    sc.P[1].points = {{Q(far), Q(0), Q(0)}, {Q(far + 1), Q(0), Q(0)}, {Q(far), Q(1), Q(0)}, {Q(far), Q(0), Q(1)}};
+    for (int i = 0; i < 2; ++i) {
+        Vec3q c{Q(0), Q(0), Q(0)};
+        for (const auto& v : sc.P[i].points) for (int k = 0; k < 3; ++k) c[k] += v[k] / 4;
+        sc.P[i].seed = c;
+        sc.lo[i] = Q(1, 2);
+        sc.hi[i] = Q(2);
+    }
+    Model m = build_model(sc);
+    Segment s = segment_by_kind(m, "ellipsoids");
+    BOOST_TEST(s.kind == "seeds");
+    BOOST_TEST(!s.note.empty());
+    BOOST_TEST((s.v1 == m.s[0] && s.v2 == m.s[1]));
+}

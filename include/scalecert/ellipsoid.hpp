@@ -23,7 +23,8 @@ struct EllipsoidPath {
 
 // Maximum-volume ellipsoid inscribed in polyhedron i scaled by lo_i (log-barrier gradient
 // method), then the closest points of the two (projected gradient). When the ellipsoids meet,
-// the segment joins their centres.
-EllipsoidPath ellipsoid_path(const Model& m);
+// the segment joins their centres. None when floating point fails (overflow, a seed not inside
+// in doubles).
+std::optional<EllipsoidPath> ellipsoid_path(const Model& m);
 
 }  // namespace scalecert
