@@ -103,8 +103,13 @@ Q Polyhedron::support(const Vec3z& n) const {
 }
 
 bool Polyhedron::strictly_inside(const Vec3q& p) const {
+    // In the integer frame: p·scale = z/den, so n·p < n·v  iff  n·z < den·(n·ipts[v]).
+    Z den = 1;
+    for (const Q& c : p) mpz_lcm(den.get_mpz_t(), den.get_mpz_t(), c.get_den_mpz_t());
+    Vec3z z;
+    for (int k = 0; k < 3; ++k) z[k] = Z(p[k] * scale * den);
     for (const Face& f : faces)
-        if (dot(to_q(f.normal), p) >= dot(to_q(f.normal), points[f.verts[0]])) return false;
+        if (dotz(f.normal, z) >= den * dotz(f.normal, ipts[f.verts[0]])) return false;
     return true;
 }
 
@@ -235,6 +240,7 @@ Polyhedron build_polyhedron(const std::vector<Vec3q>& pts, const std::string& na
     // Start table: for each cube-map cell centre, the argmax found by climbing in doubles from the
     // previous cell's answer. Only a hint: argmax always finishes the climb exactly.
     const std::vector<D3>& dp = P.dpts;  // scaled coordinates: the same maximisers
+    if (P.vertices.size() <= 64) return P;  // small: climbing from any vertex is already short
     P.start_table.assign(6 * kG * kG, P.vertices.front());
     int cur = P.vertices.front();
     for (int face = 0; face < 6; ++face)
