@@ -1,14 +1,12 @@
 #include "scalecert/contact_lines.hpp"
 
 #include "scalecert/gauss_map.hpp"
+#include "scalecert/timing.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <numeric>
 #include <optional>
-#include <cstdio>
-#include <cstdlib>
 #include <map>
 
 namespace scalecert {
@@ -66,19 +64,6 @@ std::vector<size_t> undominated(const std::vector<double>& a, const std::vector<
     return keep;
 }
 
-namespace {
-// SCALECERT_TIMING=1 prints the time of each stage on stderr (never in the output).
-struct StageClock {
-    bool on = std::getenv("SCALECERT_TIMING") != nullptr;
-    std::chrono::steady_clock::time_point t = std::chrono::steady_clock::now();
-    void lap(const char* what) {
-        if (!on) return;
-        auto now = std::chrono::steady_clock::now();
-        std::fprintf(stderr, "scalecert: timing: %-22s %9.3f ms\n", what, std::chrono::duration<double, std::milli>(now - t).count());
-        t = now;
-    }
-};
-}  // namespace
 
 Model build_model(const Scene& scene) {
     StageClock clock;

@@ -1,12 +1,12 @@
 // The scalecert command: curve, query, partition.
 #include "scalecert/certificate.hpp"
 #include "scalecert/fast_query.hpp"
+#include "scalecert/timing.hpp"
 #include "scalecert/audit.hpp"
 #include "scalecert/baselines.hpp"
 
 #include <CLI/CLI.hpp>
 
-#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -202,20 +202,14 @@ int main(int argc, char** argv) {
             std::cerr << "scalecert: audit: " << rows.size() << " rows in " << audit_out << ".csv and " << audit_out << ".json\n";
             return 0;
         }
-        const bool timing = std::getenv("SCALECERT_TIMING") != nullptr;
-        auto t0 = std::chrono::steady_clock::now();
-        auto lap = [&](const char* what) {
-            if (!timing) return;
-            auto now = std::chrono::steady_clock::now();
-            std::fprintf(stderr, "scalecert: timing: %-22s %9.3f ms\n", what, std::chrono::duration<double, std::milli>(now - t0).count());
-            t0 = now;
-        };
+        StageClock clock;
+        const bool timing = clock.on;
         Scene scene = load_scene(scene_path, opt);
-        lap("read scene");
+        clock.lap("read scene");
         Model m = build_model(scene);
-        t0 = std::chrono::steady_clock::now();
+        clock.restart();
         Curve c = build_curve(m);
-        lap("envelope and curve");
+        clock.lap("envelope and curve");
         std::string text;
         std::optional<Segment> seg;
         if (in_t && segment_spec.empty()) segment_spec = "seeds";
@@ -286,7 +280,7 @@ int main(int argc, char** argv) {
         } else {
             text = dump(partition_json(m, c, build_partition(m, c)));
         }
-        lap("output");
+        clock.lap("output");
         emit(text, out);
         return 0;
     } catch (const InputError& e) {
