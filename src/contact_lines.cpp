@@ -13,19 +13,23 @@ namespace scalecert {
 
 char feature_letter(size_t n) { return n == 1 ? 'V' : n == 2 ? 'E' : 'F'; }
 
+namespace {
+// In integers: with S1 = max n·x over P1's scaled points and S2 = max −n·x over P2's (x·scale_i),
+//   h1 = H1 / (scale_1·sden_1),  h2 = H2 / (scale_2·sden_2),  n·d = ND / dden.
+struct Numerators { Z H1, H2, ND; };
+Numerators numerators(const Model& m, const Vec3z& n, const Z& S1, const Z& S2) {
+    return {S1 * m.sden[0] - dotz(n, m.sz[0]), S2 * m.sden[1] + dotz(n, m.sz[1]), dotz(n, m.dz)};
+}
+}  // namespace
+
 ContactLine line_for_normal(const Model& m, const Vec3z& n) {
-    // In integers: with S_i = max ±n·x over P_i's scaled points (x·scale_i),
-    //   h1 = (S_1·sden_1 − n·sz_1) / (scale_1·sden_1),  h2 = (S_2·sden_2 + n·sz_2) / (scale_2·sden_2),
-    //   n·d = n·dz / dden.
     ContactLine L;
     L.normal = n;
     Z sup1, sup2;
     L.feat1 = m.P[0].argmax(n, nullptr, &sup1);
     L.feat2 = m.P[1].argmax(neg(n), nullptr, &sup2);
-    const Z H1 = sup1 * m.sden[0] - dotz(n, m.sz[0]);
-    const Z H2 = sup2 * m.sden[1] + dotz(n, m.sz[1]);
+    const auto [H1, H2, ND] = numerators(m, n, sup1, sup2);
     const Z D1 = m.P[0].scale * m.sden[0], D2 = m.P[1].scale * m.sden[1];
-    const Z ND = dotz(n, m.dz);
     auto frac = [](const Z& p, const Z& q) { Q r(p, q); r.canonicalize(); return r; };
     L.h1 = frac(H1, D1);
     L.h2 = frac(H2, D2);
@@ -163,10 +167,9 @@ Model build_model(const Scene& scene) {
     std::vector<double> sa, sb;
     const double D1 = Z(m.P[0].scale * m.sden[0]).get_d(), D2 = Z(m.P[1].scale * m.sden[1]).get_d(), DD = m.dden.get_d();
     for (const auto& [n, origin] : normals) {
-        int v1 = m.P[0].climb(n), v2 = m.P[1].climb(neg(n));
-        double H1 = Z(dotz(n, m.P[0].ipts[v1]) * m.sden[0] - dotz(n, m.sz[0])).get_d();
-        double H2 = Z(dotz(neg(n), m.P[1].ipts[v2]) * m.sden[1] + dotz(n, m.sz[1])).get_d();
-        double ND = dotz(n, m.dz).get_d();
+        const Vec3z mn = neg(n);
+        const Numerators u = numerators(m, n, dotz(n, m.P[0].ipts[m.P[0].climb(n)]), dotz(mn, m.P[1].ipts[m.P[1].climb(mn)]));
+        const double H1 = u.H1.get_d(), H2 = u.H2.get_d(), ND = u.ND.get_d();
         ns.push_back(&n);
         sa.push_back(-(H1 * D2) / (H2 * D1));
         sb.push_back((ND * D2) / (DD * H2));

@@ -3,7 +3,6 @@
 #include "scalecert/closed_forms.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <numeric>
 
 namespace scalecert {
