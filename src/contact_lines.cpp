@@ -1,13 +1,14 @@
 #include "scalecert/contact_lines.hpp"
 
 #include "scalecert/gauss_map.hpp"
+#include "scalecert/small_int.hpp"
 #include "scalecert/timing.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <numeric>
 #include <optional>
-#include <map>
+#include <type_traits>
 
 namespace scalecert {
 
@@ -69,6 +70,171 @@ std::vector<size_t> undominated(const std::vector<double>& a, const std::vector<
 }
 
 
+namespace {
+
+using D3 = std::array<double, 3>;
+D3 dir_d(const Vec3z& v) { return direction_d(v); }
+D3 dir_d(const Vec3s& v) { return {static_cast<double>(v[0]), static_cast<double>(v[1]), static_cast<double>(v[2])}; }
+D3 crossd(const D3& a, const D3& b) { return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}; }
+double normd(const D3& a) { return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]); }
+double dotd(const D3& a, const D3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+const Vec3z& face_normal(const Polyhedron& P, int f, const Vec3z*) { return P.faces[f].normal; }
+const Vec3s& face_normal(const Polyhedron& P, int f, const Vec3s*) { return P.faces[f].normal_s; }
+const std::vector<Vec3z>& points(const Polyhedron& P, const Vec3z*) { return P.ipts; }
+const std::vector<Vec3s>& points(const Polyhedron& P, const Vec3s*) { return P.ipts_s; }
+Vec3s vneg(const Vec3s& v) { return neg_s(v); }
+Vec3z vneg(const Vec3z& v) { return neg(v); }
+Vec3s vsub(const Vec3s& a, const Vec3s& b) { return sub_s(a, b); }
+Vec3z vsub(const Vec3z& a, const Vec3z& b) { return sub(a, b); }
+Vec3s vcross(const Vec3s& a, const Vec3s& b) { return cross_s(a, b); }  // |a|, |b| < 2^31
+Vec3z vcross(const Vec3z& a, const Vec3z& b) { return cross(a, b); }
+// Sign of component k of a × b.
+int cross_sign(const Vec3s& a, const Vec3s& b, int k) { return sgn128(cross_k(a, b, k)); }
+int cross_sign(const Vec3z& a, const Vec3z& b, int k) {
+    int i = (k + 1) % 3, j = (k + 2) % 3;
+    return sgn(Z(a[i] * b[j] - a[j] * b[i]));
+}
+Vec3z as_z(const Vec3s& v) { return to_z(v); }
+const Vec3z& as_z(const Vec3z& v) { return v; }
+
+// The Gauss arc of an edge: from the normal of one face to the other's, and the edge direction
+// oriented so that from × to is a positive multiple of it (the normal of the arc's plane; the
+// edge is perpendicular to both faces' normals, and far smaller than their cross product).
+template <class V>
+struct EdgeArc { V from, to, p; D3 fd, td, pd; };
+
+template <class V>
+std::vector<EdgeArc<V>> edge_arcs(const Polyhedron& P, bool negate) {
+    const V* tag = nullptr;
+    const auto& ip = points(P, tag);
+    std::vector<EdgeArc<V>> out(P.edges.size());
+    for (size_t i = 0; i < P.edges.size(); ++i) {
+        const Edge& e = P.edges[i];
+        EdgeArc<V>& a = out[i];
+        a.from = face_normal(P, e.f0, tag);
+        a.to = face_normal(P, e.f1, tag);
+        if (negate) a.from = vneg(a.from), a.to = vneg(a.to);
+        a.p = vsub(ip[e.b], ip[e.a]);
+        a.pd = dir_d(a.p);
+        int k = 0;  // the largest component of the edge: nonzero, and so is from × to's
+        for (int c = 1; c < 3; ++c)
+            if (std::fabs(a.pd[c]) > std::fabs(a.pd[k])) k = c;
+        if (cross_sign(a.from, a.to, k) * sgn(as_z(a.p)[k]) < 0) a.p = vneg(a.p);
+        a.fd = dir_d(a.from), a.td = dir_d(a.to), a.pd = dir_d(a.p);
+    }
+    return out;
+}
+
+// Every facet normal of Q1 ⊕ (−Q2), primitive and sorted: faces of P1, negated faces of P2, and
+// the proper crossings of an edge's Gauss arc of P1 with one of −P2 (arcs that only touch give a
+// face normal already listed; parallel edges give none).
+template <class V>
+std::vector<V> facet_normals(Model& m) {
+    const V* tag = nullptr;
+    std::vector<V> normals;
+    for (size_t f = 0; f < m.P[0].faces.size(); ++f) normals.push_back(face_normal(m.P[0], static_cast<int>(f), tag));
+    for (size_t f = 0; f < m.P[1].faces.size(); ++f) normals.push_back(vneg(face_normal(m.P[1], static_cast<int>(f), tag)));
+    m.stats.face_normals = normals.size();
+    const auto A = edge_arcs<V>(m.P[0], false), B = edge_arcs<V>(m.P[1], true);
+    std::vector<Arc> arcs_a(A.size()), arcs_b(B.size());
+    for (size_t i = 0; i < A.size(); ++i) arcs_a[i] = {A[i].fd, A[i].td};
+    for (size_t j = 0; j < B.size(); ++j) arcs_b[j] = {B[j].fd, B[j].td};
+    for (const auto& [i, j] : arc_candidates(arcs_a, arcs_b)) {
+        ++m.stats.edge_pairs_tested;
+        const EdgeArc<V>& a = A[i];
+        const EdgeArc<V>& b = B[j];
+        // x = ±(p_a × p_b), the direction where the two great circles meet. Exactly for machine
+        // integers (cheap); for GMP only when a filter cannot decide.
+        std::optional<V> xe;
+        auto exact_x = [&]() -> const V& {
+            if (!xe) xe = vcross(a.p, b.p);
+            return *xe;
+        };
+        D3 xd;
+        if constexpr (std::is_same_v<V, Vec3s>) {
+            if (is_zero(exact_x())) continue;  // parallel edges: no facet of the sum
+            xd = dir_d(exact_x());
+        } else {
+            xd = crossd(a.pd, b.pd);
+            if (!(normd(xd) > 1e-10 * normd(a.pd) * normd(b.pd))) {
+                if (is_zero(exact_x())) continue;
+                xd = dir_d(exact_x());
+            }
+        }
+        // Sign of (u × x)·p (or (x × u)·p): filtered, exact when unsure.
+        for (int sign : {1, -1}) {
+            D3 xs{sign * xd[0], sign * xd[1], sign * xd[2]};
+            auto side = [&](const D3& ud, const D3& pd, bool x_first, const V& u, const V& p) {
+                D3 c = x_first ? crossd(xs, ud) : crossd(ud, xs);
+                double v = dotd(c, pd), bound = 1e-10 * normd(ud) * normd(xs) * normd(pd);
+                if (v > bound) return ++m.stats.arc_signs_filtered, 1;
+                if (v < -bound) return ++m.stats.arc_signs_filtered, -1;
+                ++m.stats.arc_signs_exact;
+                Vec3z x = as_z(exact_x()), uz = as_z(u);
+                if (sign < 0) x = neg(x);
+                return sgn(dotz(x_first ? cross(x, uz) : cross(uz, x), as_z(p)));
+            };
+            if (side(a.fd, a.pd, false, a.from, a.p) > 0 && side(a.td, a.pd, true, a.to, a.p) > 0 &&
+                side(b.fd, b.pd, false, b.from, b.p) > 0 && side(b.td, b.pd, true, b.to, b.p) > 0) {
+                normals.push_back(primitive(sign > 0 ? exact_x() : vneg(exact_x())));
+                ++m.stats.arc_crossings;
+                break;
+            }
+        }
+    }
+    std::sort(normals.begin(), normals.end());
+    normals.erase(std::unique(normals.begin(), normals.end()), normals.end());
+    m.stats.distinct_normals = normals.size();
+    return normals;
+}
+
+// The approximate line of each normal from its exact maximisers (the filtered climb decides
+// exactly): slope and intercept as doubles of exact integers, within 10^-15 relative. Lines
+// certainly dominated are dropped; the rest are built exactly, with their contact features.
+template <class V>
+void add_lines(Model& m, const std::vector<V>& normals) {
+    const double D1 = Z(m.P[0].scale * m.sden[0]).get_d(), D2 = Z(m.P[1].scale * m.sden[1]).get_d(), DD = m.dden.get_d();
+    // The seeds' integers in 128 bits, when they fit: numerators then need no GMP unless a
+    // product overflows (checked).
+    I128 sden0 = 0, sden1 = 0, sz0[3], sz1[3], dz[3];
+    bool seeds128 = to_i128(m.sden[0], sden0) && to_i128(m.sden[1], sden1);
+    for (int k = 0; k < 3 && seeds128; ++k)
+        seeds128 = to_i128(m.sz[0][k], sz0[k]) && to_i128(m.sz[1][k], sz1[k]) && to_i128(m.dz[k], dz[k]);
+    std::vector<double> sa, sb;
+    sa.reserve(normals.size()), sb.reserve(normals.size());
+    for (const V& n : normals) {
+        const V mn = vneg(n);
+        double H1 = 0, H2 = 0, ND = 0;
+        bool done = false;
+        if constexpr (std::is_same_v<V, Vec3s>) {
+            if (seeds128) {
+                // H1 = S1·sden1 − n·sz1, H2 = S2·sden2 + n·sz2, ND = n·dz, overflow-checked.
+                const I128 S1 = dot_s(n, m.P[0].ipts_s[m.P[0].climb(n)]), S2 = dot_s(mn, m.P[1].ipts_s[m.P[1].climb(mn)]);
+                I128 h1, h2, nd = 0, t, a1 = 0, a2 = 0;
+                bool ok = mul_ok(S1, sden0, h1) && mul_ok(S2, sden1, h2);
+                for (int k = 0; k < 3 && ok; ++k)
+                    ok = mul_ok(n[k], sz0[k], t) && add_ok(a1, t, a1) && mul_ok(n[k], sz1[k], t) && add_ok(a2, t, a2) &&
+                         mul_ok(n[k], dz[k], t) && add_ok(nd, t, nd);
+                ok = ok && sub_ok(h1, a1, h1) && add_ok(h2, a2, h2);
+                if (ok) H1 = static_cast<double>(h1), H2 = static_cast<double>(h2), ND = static_cast<double>(nd), done = true;
+            }
+        }
+        if (!done) {
+            const Vec3z nz = as_z(n), mz = neg(nz);
+            const Numerators u = numerators(m, nz, dotz(nz, m.P[0].ipts[m.P[0].climb(nz)]), dotz(mz, m.P[1].ipts[m.P[1].climb(mz)]));
+            H1 = u.H1.get_d(), H2 = u.H2.get_d(), ND = u.ND.get_d();
+        }
+        sa.push_back(-(H1 * D2) / (H2 * D1));
+        sb.push_back((ND * D2) / (DD * H2));
+    }
+    std::vector<size_t> keep = undominated(sa, sb);
+    m.stats.dominated_lines = normals.size() - keep.size();
+    m.lines.reserve(keep.size());
+    for (size_t i : keep) m.lines.push_back(line_for_normal(m, as_z(normals[i])));
+}
+
+}  // namespace
+
 Model build_model(const Scene& scene) {
     StageClock clock;
     Model m;
@@ -94,90 +260,17 @@ Model build_model(const Scene& scene) {
     integral(m.d, m.dz, m.dden);
     clock.lap("hulls");
 
-    std::map<Vec3z, int> normals;  // normal -> origin (for statistics only)
-    for (const Face& f : m.P[0].faces) normals.emplace(f.normal, 0), ++m.stats.face_normals;
-    for (const Face& f : m.P[1].faces) normals.emplace(neg(f.normal), 1), ++m.stats.face_normals;
-    // Edge pairs: e1 of P1 has the Gauss arc from n(f0) to n(f1); e2 of P2, in −Q2, the arc from
-    // −n(g0) to −n(g1). A proper crossing of the two arcs is a facet normal of the Minkowski sum.
-    // Arcs that only touch give a face normal already listed; parallel edges give none.
-    const Polyhedron& A = m.P[0];
-    const Polyhedron& B = m.P[1];
-    std::vector<Vec3z> pa(A.edges.size()), pb(B.edges.size());
-    std::vector<Arc> arcs_a(A.edges.size()), arcs_b(B.edges.size());
-    for (size_t i = 0; i < A.edges.size(); ++i) {
-        arcs_a[i] = {A.faces[A.edges[i].f0].normal, A.faces[A.edges[i].f1].normal};
-        pa[i] = cross(arcs_a[i].from, arcs_a[i].to);
+    // Machine integers when both polyhedra are small (exact within small_int.hpp's bounds), GMP
+    // otherwise: the same normals, lines and statistics either way.
+    if (m.P[0].small() && m.P[1].small()) {
+        auto ns = facet_normals<Vec3s>(m);
+        clock.lap("gauss map overlay");
+        add_lines(m, ns);
+    } else {
+        auto ns = facet_normals<Vec3z>(m);
+        clock.lap("gauss map overlay");
+        add_lines(m, ns);
     }
-    for (size_t j = 0; j < B.edges.size(); ++j) {
-        arcs_b[j] = {neg(B.faces[B.edges[j].f0].normal), neg(B.faces[B.edges[j].f1].normal)};
-        pb[j] = cross(arcs_b[j].from, arcs_b[j].to);
-    }
-    // Doubles of the arc data for a filter: a sign is taken from doubles only when it exceeds a
-    // bound far above their rounding error; otherwise it is computed exactly.
-    using D3 = std::array<double, 3>;
-    auto dbl = [](const Vec3z& v) { return D3{v[0].get_d(), v[1].get_d(), v[2].get_d()}; };
-    auto crossd = [](const D3& a, const D3& b) { return D3{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}; };
-    auto norm = [](const D3& a) { return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]); };
-    auto dotd = [](const D3& a, const D3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
-    std::vector<std::array<D3, 3>> da(A.edges.size()), db(B.edges.size());  // from, to, plane normal
-    for (size_t i = 0; i < A.edges.size(); ++i) da[i] = {dbl(arcs_a[i].from), dbl(arcs_a[i].to), dbl(pa[i])};
-    for (size_t j = 0; j < B.edges.size(); ++j) db[j] = {dbl(arcs_b[j].from), dbl(arcs_b[j].to), dbl(pb[j])};
-    // Sign of (u × x)·p (or (x × u)·p): filtered, exact when unsure; x = ±(pa × pb), computed
-    // exactly only when some sign or the accepted normal needs it.
-    for (const auto& [i, j] : arc_candidates(arcs_a, arcs_b)) {
-        ++m.stats.edge_pairs_tested;
-        const auto& A3 = da[i];
-        const auto& B3 = db[j];
-        std::optional<Vec3z> xe;
-        auto exact_x = [&]() -> const Vec3z& {
-            if (!xe) xe = cross(pa[i], pb[j]);
-            return *xe;
-        };
-        D3 xd = crossd(A3[2], B3[2]);
-        double xb = 1e-10 * norm(A3[2]) * norm(B3[2]);
-        if (!(std::fabs(xd[0]) > xb || std::fabs(xd[1]) > xb || std::fabs(xd[2]) > xb)) {
-            if (is_zero(exact_x())) continue;  // parallel edges: no facet of the sum
-            xd = dbl(exact_x());
-        }
-        for (int sign : {1, -1}) {
-            D3 xs{sign * xd[0], sign * xd[1], sign * xd[2]};
-            auto side = [&](const D3& ud, const D3& pd, bool x_first, const Vec3z& u, const Vec3z& p) {
-                D3 c = x_first ? crossd(xs, ud) : crossd(ud, xs);
-                double v = dotd(c, pd), bound = 1e-10 * norm(ud) * norm(xs) * norm(pd);
-                if (v > bound) return ++m.stats.arc_signs_filtered, 1;
-                if (v < -bound) return ++m.stats.arc_signs_filtered, -1;
-                ++m.stats.arc_signs_exact;
-                Vec3z x = sign > 0 ? exact_x() : neg(exact_x());
-                return sgn(dotz(x_first ? cross(x, u) : cross(u, x), p));
-            };
-            if (side(A3[0], A3[2], false, arcs_a[i].from, pa[i]) > 0 && side(A3[1], A3[2], true, arcs_a[i].to, pa[i]) > 0 &&
-                side(B3[0], B3[2], false, arcs_b[j].from, pb[j]) > 0 && side(B3[1], B3[2], true, arcs_b[j].to, pb[j]) > 0) {
-                normals.emplace(primitive(sign > 0 ? exact_x() : neg(exact_x())), 2);
-                ++m.stats.arc_crossings;
-                break;
-            }
-        }
-    }
-    clock.lap("gauss map overlay");
-    m.stats.distinct_normals = normals.size();
-    // Approximate lines from the exact maximisers (the filtered climb decides exactly): slope and
-    // intercept as doubles of exact integers, within 10^-15 relative. Certainly dominated lines
-    // are dropped; the rest are built exactly, with their contact features.
-    std::vector<const Vec3z*> ns;
-    std::vector<double> sa, sb;
-    const double D1 = Z(m.P[0].scale * m.sden[0]).get_d(), D2 = Z(m.P[1].scale * m.sden[1]).get_d(), DD = m.dden.get_d();
-    for (const auto& [n, origin] : normals) {
-        const Vec3z mn = neg(n);
-        const Numerators u = numerators(m, n, dotz(n, m.P[0].ipts[m.P[0].climb(n)]), dotz(mn, m.P[1].ipts[m.P[1].climb(mn)]));
-        const double H1 = u.H1.get_d(), H2 = u.H2.get_d(), ND = u.ND.get_d();
-        ns.push_back(&n);
-        sa.push_back(-(H1 * D2) / (H2 * D1));
-        sb.push_back((ND * D2) / (DD * H2));
-    }
-    std::vector<size_t> keep = undominated(sa, sb);
-    m.stats.dominated_lines = normals.size() - keep.size();
-    m.lines.reserve(keep.size());
-    for (size_t i : keep) m.lines.push_back(line_for_normal(m, *ns[i]));
     clock.lap("contact lines");
     return m;
 }

@@ -1,4 +1,5 @@
 #include "scalecert/exact.hpp"
+#include "scalecert/small_int.hpp"
 
 #include <mpfr.h>
 #include <cmath>
@@ -13,6 +14,37 @@ Vec3z primitive(const Vec3z& v) {
     Vec3z r;
     for (int k = 0; k < 3; ++k) mpz_divexact(r[k].get_mpz_t(), v[k].get_mpz_t(), g.get_mpz_t());
     return r;
+}
+
+Z to_z(I128 v) {
+    const bool negative = v < 0;
+    unsigned __int128 u = negative ? -static_cast<unsigned __int128>(v) : static_cast<unsigned __int128>(v);
+    Z r;
+    mpz_set_ui(r.get_mpz_t(), static_cast<unsigned long>(u >> 64));
+    mpz_mul_2exp(r.get_mpz_t(), r.get_mpz_t(), 64);
+    Z lo;
+    mpz_set_ui(lo.get_mpz_t(), static_cast<unsigned long>(u & ~std::uint64_t{0}));
+    r += lo;
+    if (negative) r = -r;
+    return r;
+}
+
+bool to_i128(const Z& z, I128& out) {
+    if (mpz_sizeinbase(z.get_mpz_t(), 2) > 126) return false;
+    Z a = abs(z), hi, lo;
+    mpz_fdiv_q_2exp(hi.get_mpz_t(), a.get_mpz_t(), 64);
+    mpz_fdiv_r_2exp(lo.get_mpz_t(), a.get_mpz_t(), 64);
+    I128 r = (I128(mpz_get_ui(hi.get_mpz_t())) << 64) | I128(mpz_get_ui(lo.get_mpz_t()));
+    out = sgn(z) < 0 ? -r : r;
+    return true;
+}
+
+bool to_small_normal(const Vec3z& v, Vec3s& out) {
+    for (int k = 0; k < 3; ++k) {
+        if (mpz_sizeinbase(v[k].get_mpz_t(), 2) > 62) return false;
+        out[k] = mpz_get_si(v[k].get_mpz_t());
+    }
+    return true;
 }
 
 Vec3z primitive(const Vec3q& v) {

@@ -1,15 +1,15 @@
 #include "scalecert/gauss_map.hpp"
 
 #include <algorithm>
+#include <climits>
 #include <cmath>
-#include <unordered_map>
+#include <cstdint>
 
 namespace scalecert {
 
 namespace {
 using D3 = std::array<double, 3>;
-D3 unit(const Vec3z& v) {
-    D3 d{v[0].get_d(), v[1].get_d(), v[2].get_d()};
+D3 unit(const D3& d) {
     double l = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
     return {d[0] / l, d[1] / l, d[2] / l};
 }
@@ -56,6 +56,18 @@ Box arc_box(const Arc& arc) {
 }
 }  // namespace
 
+std::array<double, 3> direction_d(const Vec3z& v) {
+    long e[3], emax = LONG_MIN;
+    double m[3];
+    for (int k = 0; k < 3; ++k) {
+        m[k] = mpz_get_d_2exp(&e[k], v[k].get_mpz_t());  // v_k = m·2^e, |m| in [1/2, 1) (0 for 0)
+        if (m[k] != 0) emax = std::max(emax, e[k]);
+    }
+    D3 d{};
+    for (int k = 0; k < 3; ++k) d[k] = m[k] == 0 ? 0.0 : std::ldexp(m[k], static_cast<int>(std::max(e[k] - emax, -2000L)));
+    return d;
+}
+
 std::vector<std::pair<int, int>> arc_candidates(const std::vector<Arc>& A, const std::vector<Arc>& B) {
     std::vector<Box> ba(A.size()), bb(B.size());
     double extent = 0;
@@ -68,33 +80,45 @@ std::vector<std::pair<int, int>> arc_candidates(const std::vector<Arc>& A, const
     double mean = A.empty() ? 2.0 : extent / (3.0 * static_cast<double>(A.size()));
     int R = static_cast<int>(std::clamp(2.0 / std::max(mean, 1e-9), 1.0, 128.0));
     auto cell = [&](double x) { return std::clamp(static_cast<int>((x + 1.0) * 0.5 * R), 0, R - 1); };
-    std::unordered_map<long, std::vector<int>> grid;
-    auto key = [&](int x, int y, int z) { return (static_cast<long>(x) * R + y) * R + z; };
-    for (size_t i = 0; i < A.size(); ++i)
-        for (int x = cell(ba[i].lo[0]); x <= cell(ba[i].hi[0]); ++x)
-            for (int y = cell(ba[i].lo[1]); y <= cell(ba[i].hi[1]); ++y)
-                for (int z = cell(ba[i].lo[2]); z <= cell(ba[i].hi[2]); ++z) grid[key(x, y, z)].push_back(static_cast<int>(i));
+    // (cell, arc) entries of both sets sorted by cell, then joined cell by cell: flat arrays, no
+    // hashing. A pair met in several shared cells is kept once.
+    using Entry = std::pair<std::uint32_t, int>;
+    auto entries = [&](const std::vector<Box>& boxes) {
+        std::vector<Entry> e;
+        e.reserve(boxes.size() * 2);
+        for (size_t i = 0; i < boxes.size(); ++i) {
+            const Box& b = boxes[i];
+            for (int x = cell(b.lo[0]); x <= cell(b.hi[0]); ++x)
+                for (int y = cell(b.lo[1]); y <= cell(b.hi[1]); ++y)
+                    for (int z = cell(b.lo[2]); z <= cell(b.hi[2]); ++z)
+                        e.push_back({static_cast<std::uint32_t>((x * R + y) * R + z), static_cast<int>(i)});
+        }
+        std::sort(e.begin(), e.end());
+        return e;
+    };
+    const std::vector<Entry> ea = entries(ba), eb = entries(bb);
     std::vector<std::pair<int, int>> out;
-    std::vector<int> stamp(A.size(), -1);
-    for (size_t j = 0; j < B.size(); ++j) {
-        const Box& b = bb[j];
-        for (int x = cell(b.lo[0]); x <= cell(b.hi[0]); ++x)
-            for (int y = cell(b.lo[1]); y <= cell(b.hi[1]); ++y)
-                for (int z = cell(b.lo[2]); z <= cell(b.hi[2]); ++z) {
-                    auto it = grid.find(key(x, y, z));
-                    if (it == grid.end()) continue;
-                    for (int i : it->second) {
-                        if (stamp[i] == static_cast<int>(j)) continue;
-                        stamp[i] = static_cast<int>(j);
-                        const Box& a = ba[i];
-                        if (a.lo[0] <= b.hi[0] && b.lo[0] <= a.hi[0] && a.lo[1] <= b.hi[1] && b.lo[1] <= a.hi[1] &&
-                            a.lo[2] <= b.hi[2] && b.lo[2] <= a.hi[2])
-                            out.push_back({i, static_cast<int>(j)});
-                    }
-                }
+    for (size_t p = 0, q = 0; p < ea.size() && q < eb.size();) {
+        if (ea[p].first < eb[q].first) { ++p; continue; }
+        if (eb[q].first < ea[p].first) { ++q; continue; }
+        const std::uint32_t key = ea[p].first;
+        size_t p1 = p, q1 = q;
+        while (p1 < ea.size() && ea[p1].first == key) ++p1;
+        while (q1 < eb.size() && eb[q1].first == key) ++q1;
+        for (size_t u = p; u < p1; ++u)
+            for (size_t v = q; v < q1; ++v) {
+                const Box& a = ba[ea[u].second];
+                const Box& b = bb[eb[v].second];
+                if (a.lo[0] <= b.hi[0] && b.lo[0] <= a.hi[0] && a.lo[1] <= b.hi[1] && b.lo[1] <= a.hi[1] &&
+                    a.lo[2] <= b.hi[2] && b.lo[2] <= a.hi[2])
+                    out.push_back({ea[u].second, eb[v].second});
+            }
+        p = p1, q = q1;
     }
     std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
     return out;
+
 }
 
 }  // namespace scalecert

@@ -10,7 +10,7 @@
 #include <CGAL/convex_hull_3.h>
 
 #include <cmath>
-#include <map>
+#include <algorithm>
 
 namespace scalecert {
 
@@ -24,11 +24,18 @@ std::vector<std::array<int, 3>> hull_with(const std::vector<Vec3z>& pts, ToPoint
     using Point = typename Kernel::Point_3;
     std::vector<Point> cp;
     cp.reserve(pts.size());
-    std::map<Key, int> index;  // exact coordinates -> first input index
+    std::vector<std::pair<Key, int>> index;  // exact coordinates -> first input index, sorted
+    index.reserve(pts.size());
     for (size_t i = 0; i < pts.size(); ++i) {
         cp.push_back(to_point(pts[i]));
-        index.emplace(to_key(cp.back()), static_cast<int>(i));
+        index.push_back({to_key(cp.back()), static_cast<int>(i)});
     }
+    std::sort(index.begin(), index.end());  // equal points: the first input index comes first
+    auto lookup = [&](const Key& k) {
+        auto it = std::lower_bound(index.begin(), index.end(), k, [](const std::pair<Key, int>& e, const Key& x) { return e.first < x; });
+        if (it == index.end() || !(it->first == k)) throw std::logic_error("hull point not among the input");
+        return it->second;
+    };
     CGAL::Surface_mesh<Point> mesh;
     CGAL::convex_hull_3(cp.begin(), cp.end(), mesh);
     std::vector<std::array<int, 3>> tris;
@@ -36,7 +43,7 @@ std::vector<std::array<int, 3>> hull_with(const std::vector<Vec3z>& pts, ToPoint
         std::array<int, 3> t{};
         int k = 0;
         for (auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) {
-            if (k < 3) t[k] = index.at(to_key(mesh.point(v)));
+            if (k < 3) t[k] = lookup(to_key(mesh.point(v)));
             ++k;
         }
         if (k != 3) throw std::logic_error("convex_hull_3 returned a non-triangle");

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
-#include <set>
+#include <numeric>
+#include <type_traits>
 
 namespace scalecert {
 
@@ -16,7 +16,7 @@ int cube_cell(const D3& v) {
     for (int k = 1; k < 3; ++k)
         if (std::fabs(v[k]) > std::fabs(v[ax])) ax = k;
     double m = std::fabs(v[ax]);
-    if (!(m > 0)) return 0;
+    if (!(m > 0) || !std::isfinite(m)) return 0;
     int face = 2 * ax + (v[ax] < 0 ? 1 : 0);
     double a = v[(ax + 1) % 3] / m, b = v[(ax + 2) % 3] / m;  // in [-1, 1]
     int i = std::clamp(static_cast<int>((a + 1) * 0.5 * kG), 0, kG - 1);
@@ -25,24 +25,39 @@ int cube_cell(const D3& v) {
 }
 }  // namespace
 
-int Polyhedron::start_vertex(const Vec3z& n) const {
+int Polyhedron::start_vertex(const std::array<double, 3>& n) const {
     if (start_table.empty()) return vertices.front();
-    return start_table[cube_cell({n[0].get_d(), n[1].get_d(), n[2].get_d()})];
+    return start_table[cube_cell(n)];
 }
 
 namespace {
 // n·x compared through a double filter: the products and sums of doubles of the integer data err
 // by at most a few ulps of Σ|n_k x_k|; 1e-14 of it bounds that with room. Only comparisons the
-// filter cannot decide (or non-finite ones) use exact integers.
+// filter cannot decide (or non-finite ones) are made exactly: in 128-bit integers for a small
+// normal on a small polyhedron, in GMP otherwise.
+template <class N>
 struct FilteredDot {
     const Polyhedron& P;
-    const Vec3z& n;
-    D3 nd{n[0].get_d(), n[1].get_d(), n[2].get_d()};
+    const N& n;
+    D3 nd;
+    FilteredDot(const Polyhedron& p, const N& normal) : P(p), n(normal) {
+        for (int k = 0; k < 3; ++k) nd[k] = static_cast<double>(to_double(normal[k]));
+    }
+    static double to_double(const Z& z) { return z.get_d(); }
+    static double to_double(std::int64_t v) { return static_cast<double>(v); }
     double approx(int v, double& err) const {
         const D3& x = P.dpts[v];
         double a = nd[0] * x[0], b = nd[1] * x[1], c = nd[2] * x[2];
         err = 1e-14 * (std::fabs(a) + std::fabs(b) + std::fabs(c));
         return a + b + c;
+    }
+    int exact_cmp(int w, int v) const {
+        if constexpr (std::is_same_v<N, Vec3s>) {
+            I128 a = dot_s(n, P.ipts_s[w]), b = dot_s(n, P.ipts_s[v]);
+            return (a > b) - (a < b);
+        } else {
+            return cmp(dotz(n, P.ipts[w]), dotz(n, P.ipts[v]));
+        }
     }
     // sign of n·x_w − n·x_v, exactly
     int compare(int w, double wd, double we, int v, double vd, double ve) const {
@@ -50,18 +65,17 @@ struct FilteredDot {
         if (diff > tol) return ++P.cmp_filtered, 1;
         if (diff < -tol) return ++P.cmp_filtered, -1;
         ++P.cmp_exact;
-        return cmp(dotz(n, P.ipts[w]), dotz(n, P.ipts[v]));
+        return exact_cmp(w, v);
     }
 };
-}  // namespace
 
-int Polyhedron::climb(const Vec3z& n) const {
-    FilteredDot f{*this, n};
-    int cur = start_vertex(n);
+template <class N>
+int climb_with(const FilteredDot<N>& f) {
+    int cur = f.P.start_vertex(f.nd);
     double ce, cd = f.approx(cur, ce);
     for (bool moved = true; moved;) {
         moved = false;
-        for (int w : adj[cur]) {
+        for (int w : f.P.adj[cur]) {
             double we, wd = f.approx(w, we);
             if (f.compare(w, wd, we, cur, cd, ce) > 0) { cur = w; cd = wd; ce = we; moved = true; break; }
         }
@@ -69,16 +83,16 @@ int Polyhedron::climb(const Vec3z& n) const {
     return cur;
 }
 
-std::vector<int> Polyhedron::argmax(const Vec3z& n, Q* value, Z* scaled_value) const {
-    FilteredDot f{*this, n};
-    const int top = climb(n);
+// The vertices tied with `top` for the maximum of n·x: the face of maximisers is connected in
+// the vertex graph.
+template <class N>
+std::vector<int> tied_with(const FilteredDot<N>& f, int top) {
     double ce, cd = f.approx(top, ce);
-    // The face of maximisers is connected in the vertex graph.
     std::vector<int> out{top}, stack{top};
     while (!stack.empty()) {
         int v = stack.back();
         stack.pop_back();
-        for (int w : adj[v]) {
+        for (int w : f.P.adj[v]) {
             if (std::find(out.begin(), out.end(), w) != out.end()) continue;
             double we, wd = f.approx(w, we);
             if (f.compare(w, wd, we, top, cd, ce) == 0) {
@@ -88,6 +102,26 @@ std::vector<int> Polyhedron::argmax(const Vec3z& n, Q* value, Z* scaled_value) c
         }
     }
     std::sort(out.begin(), out.end());
+    return out;
+}
+}  // namespace
+
+int Polyhedron::climb(const Vec3s& n) const {
+    if (!small()) return climb(to_z(n));
+    return climb_with(FilteredDot<Vec3s>(*this, n));
+}
+
+int Polyhedron::climb(const Vec3z& n) const {
+    Vec3s ns;
+    if (small() && to_small_normal(n, ns)) return climb_with(FilteredDot<Vec3s>(*this, ns));
+    return climb_with(FilteredDot<Vec3z>(*this, n));
+}
+
+std::vector<int> Polyhedron::argmax(const Vec3z& n, Q* value, Z* scaled_value) const {
+    const int top = climb(n);
+    Vec3s ns;
+    std::vector<int> out = small() && to_small_normal(n, ns) ? tied_with(FilteredDot<Vec3s>(*this, ns), top)
+                                                             : tied_with(FilteredDot<Vec3z>(*this, n), top);
     if (value || scaled_value) {
         Z best = dotz(n, ipts[top]);  // = max n·x times scale
         if (value) *value = Q(best, scale), value->canonicalize();
@@ -115,29 +149,135 @@ bool Polyhedron::strictly_inside(const Vec3q& p) const {
 
 namespace {
 
+// Integer vectors of either kind: machine integers (within the bounds of small_int.hpp, with
+// 128-bit products) or GMP.
+template <class V> struct Wide;
+template <> struct Wide<Vec3s> { using type = I128; };
+template <> struct Wide<Vec3z> { using type = Z; };
+Vec3s vsub(const Vec3s& a, const Vec3s& b) { return sub_s(a, b); }
+Vec3z vsub(const Vec3z& a, const Vec3z& b) { return sub(a, b); }
+Vec3s vcross(const Vec3s& a, const Vec3s& b) { return cross_s(a, b); }
+Vec3z vcross(const Vec3z& a, const Vec3z& b) { return cross(a, b); }
+int sign_of(I128 v) { return sgn128(v); }
+int sign_of(const Z& v) { return sgn(v); }
+std::int64_t mag(std::int64_t v) { return v < 0 ? -v : v; }
+Z mag(const Z& v) { return abs(v); }
+const Vec3z& as_z(const Vec3z& v) { return v; }
+Vec3z as_z(const Vec3s& v) { return to_z(v); }
+
 // Sorts the vertices of a convex polygon with outward normal n counter-clockwise (seen from
 // outside), exactly: angular order around an interior point, in the plane projected along the
 // dominant axis of n.
-void order_ccw(std::vector<int>& vs, const std::vector<Vec3z>& pts, const Vec3z& n) {
+template <class V>
+void order_ccw(std::vector<int>& vs, const std::vector<V>& pts, const V& n) {
+    using W = typename Wide<V>::type;
     int drop = 0;
     for (int k = 1; k < 3; ++k)
-        if (abs(n[k]) > abs(n[drop])) drop = k;
+        if (mag(n[k]) > mag(n[drop])) drop = k;
     int u = (drop + 1) % 3, w = (drop + 2) % 3;
     // Centre (times the vertex count, to stay in integers).
-    const Z cnt = static_cast<long>(vs.size());
-    Z cu = 0, cw = 0;
+    const W cnt = static_cast<long>(vs.size());
+    W cu = 0, cw = 0;
     for (int v : vs) { cu += pts[v][u]; cw += pts[v][w]; }
-    auto du = [&](int v) { return Z(pts[v][u] * cnt - cu); };
-    auto dw = [&](int v) { return Z(pts[v][w] * cnt - cw); };
+    auto du = [&](int v) { return W(W(pts[v][u]) * cnt - cu); };
+    auto dw = [&](int v) { return W(W(pts[v][w]) * cnt - cw); };
     // In the (u, w) projection, counter-clockwise around +drop axis means ccw seen from outside
     // when n[drop] > 0; reverse otherwise.
-    auto half = [&](int v) { Z a = du(v), b = dw(v); return (sgn(b) > 0 || (sgn(b) == 0 && sgn(a) > 0)) ? 0 : 1; };
+    auto half = [&](int v) { W a = du(v), b = dw(v); return (sign_of(b) > 0 || (sign_of(b) == 0 && sign_of(a) > 0)) ? 0 : 1; };
     std::sort(vs.begin(), vs.end(), [&](int a, int b) {
         int ha = half(a), hb = half(b);
         if (ha != hb) return ha < hb;
-        return sgn(Z(du(a) * dw(b) - dw(a) * du(b))) > 0;
+        return sign_of(W(du(a) * dw(b) - dw(a) * du(b))) > 0;
     });
-    if (sgn(n[drop]) < 0) std::reverse(vs.begin(), vs.end());
+    if (sign_of(W(n[drop])) < 0) std::reverse(vs.begin(), vs.end());
+}
+
+// A supporting plane of the hull, as found: its outward primitive normal, the hull points on it,
+// and (from CGAL's triangles) the number of triangles and one of them, counter-clockwise.
+template <class V>
+struct Plane {
+    V normal;
+    std::vector<int> on;
+    int ntris = 0;
+    std::array<int, 3> tri{};
+};
+
+// Groups CGAL's hull triangles by their supporting plane (on a convex polytope one plane, one
+// face), in the order of the normals.
+template <class V>
+std::vector<Plane<V>> planes_from_triangles(const std::vector<std::array<int, 3>>& tris, const std::vector<V>& ip) {
+    std::vector<V> tn(tris.size());
+    for (size_t t = 0; t < tris.size(); ++t)
+        tn[t] = primitive(vcross(vsub(ip[tris[t][1]], ip[tris[t][0]]), vsub(ip[tris[t][2]], ip[tris[t][0]])));
+    std::vector<size_t> order(tris.size());
+    std::iota(order.begin(), order.end(), size_t{0});
+    std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return tn[a] < tn[b] || (tn[a] == tn[b] && a < b); });
+    std::vector<Plane<V>> planes;
+    for (size_t k = 0; k < order.size(); ++k) {
+        size_t t = order[k];
+        if (k == 0 || !(tn[t] == tn[order[k - 1]])) planes.push_back({tn[t], {}, 0, tris[t]});
+        Plane<V>& p = planes.back();
+        ++p.ntris;
+        p.on.insert(p.on.end(), tris[t].begin(), tris[t].end());
+    }
+    for (auto& p : planes) {
+        std::sort(p.on.begin(), p.on.end());
+        p.on.erase(std::unique(p.on.begin(), p.on.end()), p.on.end());
+    }
+    return planes;
+}
+
+// Faces, vertices, edges and adjacency from the supporting planes (sorted by normal).
+template <class V>
+void assemble(Polyhedron& P, const std::vector<Plane<V>>& planes, const std::vector<V>& ip) {
+    const size_t np = ip.size();
+    // True vertices lie on at least three faces; points inside a face or an edge are dropped.
+    std::vector<int> nfaces(np, 0);
+    for (const auto& p : planes)
+        for (int v : p.on) ++nfaces[v];
+    std::vector<char> is_vertex(np, 0);
+    for (size_t v = 0; v < np; ++v)
+        if (nfaces[v] >= 3) is_vertex[v] = 1, P.vertices.push_back(static_cast<int>(v));
+    P.faces.resize(planes.size());
+    for (size_t fi = 0; fi < planes.size(); ++fi) {
+        const Plane<V>& pl = planes[fi];
+        Face& f = P.faces[fi];
+        f.normal = as_z(pl.normal);
+        if constexpr (std::is_same_v<V, Vec3s>) f.normal_s = pl.normal;
+        const auto& t = pl.tri;
+        if (pl.ntris == 1 && is_vertex[t[0]] && is_vertex[t[1]] && is_vertex[t[2]]) {
+            // a triangular face: CGAL's triangle is already counter-clockwise from outside
+            int r = static_cast<int>(std::min_element(t.begin(), t.end()) - t.begin());
+            f.verts = {t[r], t[(r + 1) % 3], t[(r + 2) % 3]};
+            continue;
+        }
+        for (int v : pl.on)
+            if (is_vertex[v]) f.verts.push_back(v);
+        order_ccw(f.verts, ip, pl.normal);
+        std::rotate(f.verts.begin(), std::min_element(f.verts.begin(), f.verts.end()), f.verts.end());  // smallest first
+    }
+    // Edges: (a, b, face) for every side of every face, sorted; each edge appears twice.
+    std::vector<std::array<int, 3>> sides;
+    for (size_t fi = 0; fi < P.faces.size(); ++fi) {
+        const auto& vs = P.faces[fi].verts;
+        for (size_t k = 0; k < vs.size(); ++k) {
+            int a = vs[k], b = vs[(k + 1) % vs.size()];
+            sides.push_back({std::min(a, b), std::max(a, b), static_cast<int>(fi)});
+        }
+    }
+    std::sort(sides.begin(), sides.end());
+    P.adj.assign(np, {});
+    for (size_t k = 0; k < sides.size(); k += 2) {
+        if (k + 1 >= sides.size() || sides[k][0] != sides[k + 1][0] || sides[k][1] != sides[k + 1][1] ||
+            (k + 2 < sides.size() && sides[k + 2][0] == sides[k][0] && sides[k + 2][1] == sides[k][1]))
+            throw std::logic_error("hull edge not shared by exactly two faces");
+        const int a = sides[k][0], b = sides[k][1];
+        P.edges.push_back({a, b, sides[k][2], sides[k + 1][2]});
+        P.adj[a].push_back(b);
+        P.adj[b].push_back(a);
+    }
+    if (P.vertices.size() + P.faces.size() != P.edges.size() + 2)
+        throw std::logic_error("hull fails Euler's formula");
 }
 
 bool affinely_3d(const std::vector<Vec3q>& pts) {
@@ -158,6 +298,44 @@ bool affinely_3d(const std::vector<Vec3q>& pts) {
 
 }  // namespace
 
+std::vector<HullPlane> hull_planes_brute(const std::vector<Vec3s>& pts) {
+    std::vector<int> uniq;  // first copies of distinct points
+    for (size_t i = 0; i < pts.size(); ++i) {
+        bool seen = false;
+        for (int u : uniq) seen = seen || pts[u] == pts[i];
+        if (!seen) uniq.push_back(static_cast<int>(i));
+    }
+    std::vector<HullPlane> out;
+    const size_t m = uniq.size();
+    for (size_t a = 0; a < m; ++a)
+        for (size_t b = a + 1; b < m; ++b)
+            for (size_t c = b + 1; c < m; ++c) {
+                const Vec3s& p = pts[uniq[a]];
+                Vec3s n = cross_s(sub_s(pts[uniq[b]], p), sub_s(pts[uniq[c]], p));
+                if (is_zero(n)) continue;
+                n = primitive(n);
+                const I128 at = dot_s(n, p);
+                bool above = false, below = false;
+                for (int u : uniq) {
+                    I128 v = dot_s(n, pts[u]);
+                    above = above || v > at;
+                    below = below || v < at;
+                }
+                if (above && below) continue;
+                if (above) n = neg_s(n);
+                bool known = false;
+                for (const auto& h : out) known = known || h.normal == n;
+                if (known) continue;
+                HullPlane h{n, {}};
+                const I128 top = dot_s(n, p);
+                for (int u : uniq)
+                    if (dot_s(n, pts[u]) == top) h.on.push_back(u);
+                out.push_back(std::move(h));
+            }
+    std::sort(out.begin(), out.end(), [](const HullPlane& x, const HullPlane& y) { return x.normal < y.normal; });
+    return out;
+}
+
 Polyhedron build_polyhedron(const std::vector<Vec3q>& pts, const std::string& name) {
     if (!affinely_3d(pts))
         throw InputError(name + ": fewer than 4 affinely independent vertices (the points are flat)");
@@ -168,75 +346,33 @@ Polyhedron build_polyhedron(const std::vector<Vec3q>& pts, const std::string& na
     for (const Vec3q& v : pts)
         for (const Q& c : v) mpz_lcm(P.scale.get_mpz_t(), P.scale.get_mpz_t(), c.get_den_mpz_t());
     P.ipts.resize(pts.size());
+    bool small = true;
     for (size_t i = 0; i < pts.size(); ++i)
         for (int k = 0; k < 3; ++k) {
             mpz_divexact(P.ipts[i][k].get_mpz_t(), P.scale.get_mpz_t(), pts[i][k].get_den_mpz_t());
             P.ipts[i][k] *= pts[i][k].get_num();
+            small = small && fits_small(P.ipts[i][k]);
         }
     const std::vector<Vec3z>& ip = P.ipts;
     P.dpts.resize(pts.size());
     for (size_t i = 0; i < pts.size(); ++i) P.dpts[i] = {ip[i][0].get_d(), ip[i][1].get_d(), ip[i][2].get_d()};
-    // The hull of the integer-scaled points (a uniform scaling: same faces), which lets CGAL use
-    // Epick's exact filtered predicates whenever these integers are exact doubles.
-    auto tris = hull_triangles(ip);
-    // Group hull triangles by their supporting plane: on a convex polytope one plane, one face.
-    std::map<Vec3z, int> plane_of;
-    std::vector<std::vector<int>> face_pts;       // hull points of each face (with repeats)
-    std::vector<int> face_tris;                   // triangles per face
-    std::vector<std::array<int, 3>> first_tri;    // a triangle of each face, outward
-    std::vector<std::vector<int>> faces_at(pts.size());  // hull point -> faces through it
-    for (const auto& t : tris) {
-        Vec3z n = primitive(cross(sub(ip[t[1]], ip[t[0]]), sub(ip[t[2]], ip[t[0]])));
-        auto [it, fresh] = plane_of.emplace(n, static_cast<int>(face_pts.size()));
-        if (fresh) face_pts.emplace_back(), face_tris.push_back(0), first_tri.push_back(t);
-        ++face_tris[it->second];
-        for (int v : t) {
-            face_pts[it->second].push_back(v);
-            auto& fa = faces_at[v];
-            if (std::find(fa.begin(), fa.end(), it->second) == fa.end()) fa.push_back(it->second);
-        }
+    if (small) {
+        P.ipts_s.resize(pts.size());
+        for (size_t i = 0; i < pts.size(); ++i)
+            for (int k = 0; k < 3; ++k) P.ipts_s[i][k] = mpz_get_si(ip[i][k].get_mpz_t());
     }
-    // True vertices lie on at least three faces; points inside a face or an edge are dropped.
-    std::vector<char> is_vertex(pts.size(), 0);
-    for (size_t v = 0; v < pts.size(); ++v)
-        if (faces_at[v].size() >= 3) is_vertex[v] = 1, P.vertices.push_back(static_cast<int>(v));
-    P.faces.resize(face_pts.size());
-    for (const auto& [n, fi] : plane_of) {
-        Face& f = P.faces[fi];
-        f.normal = n;
-        const auto& t = first_tri[fi];
-        if (face_tris[fi] == 1 && is_vertex[t[0]] && is_vertex[t[1]] && is_vertex[t[2]]) {
-            // a triangular face: CGAL's triangle is already counter-clockwise from outside
-            int r = static_cast<int>(std::min_element(t.begin(), t.end()) - t.begin());
-            f.verts = {t[r], t[(r + 1) % 3], t[(r + 2) % 3]};
-            continue;
-        }
-        std::vector<int> vs = face_pts[fi];
-        std::sort(vs.begin(), vs.end());
-        vs.erase(std::unique(vs.begin(), vs.end()), vs.end());
-        for (int v : vs)
-            if (is_vertex[v]) f.verts.push_back(v);
-        order_ccw(f.verts, ip, n);
+    // The hull of the integer-scaled points (a uniform scaling: same faces). A few small points:
+    // every triple tested in machine integers. Otherwise CGAL, with Epick's exact filtered
+    // predicates whenever these integers are exact doubles.
+    if (small && pts.size() <= kBrutePoints) {
+        std::vector<Plane<Vec3s>> planes;
+        for (auto& h : hull_planes_brute(P.ipts_s)) planes.push_back({h.normal, std::move(h.on), 0, {}});
+        assemble(P, planes, P.ipts_s);
+    } else if (small) {
+        assemble(P, planes_from_triangles(hull_triangles(ip), P.ipts_s), P.ipts_s);
+    } else {
+        assemble(P, planes_from_triangles(hull_triangles(ip), ip), ip);
     }
-    // Order faces deterministically by normal, so output never depends on CGAL's traversal.
-    std::sort(P.faces.begin(), P.faces.end(), [](const Face& a, const Face& b) { return a.normal < b.normal; });
-    std::map<std::pair<int, int>, std::vector<int>> edge_faces;
-    for (size_t fi = 0; fi < P.faces.size(); ++fi) {
-        const auto& vs = P.faces[fi].verts;
-        for (size_t k = 0; k < vs.size(); ++k) {
-            int a = vs[k], b = vs[(k + 1) % vs.size()];
-            edge_faces[{std::min(a, b), std::max(a, b)}].push_back(static_cast<int>(fi));
-        }
-    }
-    P.adj.assign(pts.size(), {});
-    for (const auto& [ab, fs] : edge_faces) {
-        if (fs.size() != 2) throw std::logic_error("hull edge not shared by exactly two faces");
-        P.edges.push_back({ab.first, ab.second, fs[0], fs[1]});
-        P.adj[ab.first].push_back(ab.second);
-        P.adj[ab.second].push_back(ab.first);
-    }
-    if (P.vertices.size() + P.faces.size() != P.edges.size() + 2)
-        throw std::logic_error("hull fails Euler's formula");
     // Start table: for each cube-map cell centre, the argmax found by climbing in doubles from the
     // previous cell's answer. Only a hint: argmax always finishes the climb exactly.
     const std::vector<D3>& dp = P.dpts;  // scaled coordinates: the same maximisers

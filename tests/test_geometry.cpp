@@ -92,3 +92,113 @@ BOOST_AUTO_TEST_CASE(random_hulls_contain_every_point_and_satisfy_euler) {
         }
     }
 }
+
+namespace {
+// The whole structure of a polyhedron, for comparing two builds.
+struct Shape {
+    std::vector<std::pair<Vec3z, std::vector<int>>> faces;
+    std::vector<std::array<int, 4>> edges;
+    std::vector<int> vertices;
+    bool operator==(const Shape& o) const { return faces == o.faces && edges == o.edges && vertices == o.vertices; }
+};
+Shape shape(const Polyhedron& P) {
+    Shape s;
+    for (const Face& f : P.faces) s.faces.push_back({f.normal, f.verts});
+    for (const Edge& e : P.edges) s.edges.push_back({e.a, e.b, e.f0, e.f1});
+    s.vertices = P.vertices;
+    return s;
+}
+std::vector<Vec3q> times(const std::vector<Vec3q>& pts, const Q& f) {
+    std::vector<Vec3q> out;
+    for (const Vec3q& p : pts) out.push_back({p[0] * f, p[1] * f, p[2] * f});
+    return out;
+}
+}  // namespace
+
+// Three routes to the same polyhedron: machine integers with every triple tested (at most 16
+// points), machine integers on CGAL's triangles (the same points plus interior clutter), and GMP
+// on CGAL's triangles (all coordinates times 2^40, beyond the machine-integer bound). A uniform
+// scaling keeps every primitive face normal, so all three must agree exactly.
+BOOST_AUTO_TEST_CASE(machine_integer_and_gmp_hulls_agree) {
+    std::mt19937 g(5);
+    const Q big(Z(1) << 40);
+    int brute = 0, cgal_small = 0, gmp = 0;
+    for (int t = 0; t < 60; ++t) {
+        auto pts = test::random_points(g, 4 + t % 13, 3 + t % 4, 1 + t % 3, {Q(0), Q(0), Q(0)});
+        Polyhedron A = build_polyhedron(pts, "P");
+        // clutter: midpoints of the centroid and each point, strictly inside
+        Vec3q c{Q(0), Q(0), Q(0)};
+        for (const Vec3q& p : pts) for (int k = 0; k < 3; ++k) c[k] += p[k] / Q(static_cast<long>(pts.size()));
+        auto cluttered = pts;
+        while (cluttered.size() <= kBrutePoints)
+            for (size_t i = 0; i < pts.size() && cluttered.size() <= kBrutePoints + 3; ++i)
+                cluttered.push_back({(c[0] + pts[i][0]) / 2, (c[1] + pts[i][1]) / 2, (c[2] + pts[i][2]) / 2});
+        Polyhedron B = build_polyhedron(cluttered, "P");
+        Polyhedron C = build_polyhedron(times(pts, big), "P");
+        BOOST_TEST(A.small());
+        BOOST_TEST(B.small());
+        BOOST_TEST(!C.small());
+        brute += pts.size() <= kBrutePoints;
+        cgal_small += cluttered.size() > kBrutePoints;
+        gmp += !C.small();
+        BOOST_TEST((shape(A) == shape(B)));
+        BOOST_TEST((shape(A) == shape(C)));
+        for (const Face& f : A.faces) BOOST_TEST((to_z(f.normal_s) == f.normal));
+    }
+    BOOST_TEST(brute == 60);
+    BOOST_TEST(cgal_small == 60);
+    BOOST_TEST(gmp == 60);
+}
+
+// The brute-force planes of a cube with clutter, by hand: six faces, the right points on each.
+BOOST_AUTO_TEST_CASE(brute_force_planes_of_a_cube) {
+    std::vector<Vec3s> p;
+    for (const Vec3q& v : cube_with_clutter()) {  // times 2: integers
+        Vec3s s;
+        for (int k = 0; k < 3; ++k) s[k] = Z(v[k] * 2).get_si();
+        p.push_back(s);
+    }
+    auto planes = hull_planes_brute(p);
+    BOOST_TEST(planes.size() == 6u);
+    // x = 0 (normal (−1,0,0)) holds corners 0..3; z = 2 holds 1,3,5,7 and the face centre 9;
+    // the duplicate 11 of corner 7 counts once; z = 0 holds 0,2,4,6, the edge midpoint 10 and 12.
+    BOOST_TEST((planes[0].normal == Vec3s{-1, 0, 0}));
+    BOOST_TEST((planes[0].on == std::vector<int>{0, 1, 2, 3}));
+    BOOST_TEST((planes[1].normal == Vec3s{0, -1, 0}));
+    BOOST_TEST((planes[1].on == std::vector<int>{0, 1, 4, 5, 10}));
+    BOOST_TEST((planes[2].normal == Vec3s{0, 0, -1}));
+    BOOST_TEST((planes[2].on == std::vector<int>{0, 2, 4, 6, 10, 12}));
+    BOOST_TEST((planes[5].normal == Vec3s{1, 0, 0}));
+    BOOST_TEST((planes[3].on == std::vector<int>{1, 3, 5, 7, 9}));
+}
+
+// The contact lines through machine integers and through GMP (the same scene times 2^40: every
+// line's slope and intercept are invariant under a uniform scaling about the origin).
+BOOST_AUTO_TEST_CASE(machine_integer_and_gmp_models_agree) {
+    std::mt19937 g(9);
+    const Q big(Z(1) << 40);
+    size_t lines = 0;
+    for (int t = 0; t < 40; ++t) {
+        Scene a = test::random_scene(g, 4 + t % 14, 4 + (t * 7) % 30);
+        Scene b = a;
+        for (int i = 0; i < 2; ++i) {
+            b.P[i].points = times(a.P[i].points, big);
+            for (int k = 0; k < 3; ++k) b.P[i].seed[k] *= big;
+        }
+        Model ma = build_model(a), mb = build_model(b);
+        BOOST_TEST((ma.P[0].small() && ma.P[1].small() && !mb.P[0].small() && !mb.P[1].small()));
+        BOOST_TEST(ma.stats.distinct_normals == mb.stats.distinct_normals);
+        BOOST_TEST(ma.stats.arc_crossings == mb.stats.arc_crossings);
+        BOOST_REQUIRE(ma.lines.size() == mb.lines.size());
+        for (size_t k = 0; k < ma.lines.size(); ++k) {
+            const ContactLine &x = ma.lines[k], &y = mb.lines[k];
+            BOOST_TEST((x.normal == y.normal));
+            BOOST_TEST(x.slope == y.slope);
+            BOOST_TEST(x.intercept == y.intercept);
+            BOOST_TEST((x.feat1 == y.feat1 && x.feat2 == y.feat2 && x.contact == y.contact));
+            BOOST_TEST(x.h1 * big == y.h1);
+        }
+        lines += ma.lines.size();
+    }
+    BOOST_TEST(lines > 200u);
+}

@@ -2,6 +2,7 @@
 // normal a primitive integer vector, every index an index into the input point list.
 #pragma once
 #include "scalecert/exact.hpp"
+#include "scalecert/small_int.hpp"
 
 #include <cstdint>
 #include <vector>
@@ -10,7 +11,8 @@ namespace scalecert {
 
 struct Face {
     Vec3z normal;            // outward, primitive
-    std::vector<int> verts;  // true vertices on the face, counter-clockwise seen from outside
+    Vec3s normal_s{};        // the same in machine integers, when the polyhedron is small()
+    std::vector<int> verts;  // true vertices on the face, counter-clockwise seen from outside, smallest index first
 };
 
 struct Edge {
@@ -26,6 +28,7 @@ struct Polyhedron {
     std::vector<std::vector<int>> adj;   // per input index: adjacent vertices (empty for non-vertices)
     std::vector<Vec3z> ipts;             // points × scale: integers, same order of n·x as points
     Z scale;                             // lcm of the denominators of the points
+    std::vector<Vec3s> ipts_s;           // ipts in machine integers when all |ipts| < 2^29, else empty
     std::vector<std::array<double, 3>> dpts;  // ipts as doubles: a filter for comparisons only
     // How often argmax's comparisons were decided by the double filter, and exactly (statistics;
     // argmax is called from one thread at a time).
@@ -35,8 +38,10 @@ struct Polyhedron {
     // The vertices maximising n·x (a vertex, an edge's two ends or a face's vertices), sorted,
     // and the maximum value. Hill-climbs the vertex graph, then collects the tied face.
     std::vector<int> argmax(const Vec3z& n, Q* value = nullptr, Z* scaled_value = nullptr) const;
-    int start_vertex(const Vec3z& n) const;  // a good vertex to start climbing from (doubles; a hint only)
+    int start_vertex(const std::array<double, 3>& n) const;  // a good vertex to start climbing from (doubles; a hint only)
     int climb(const Vec3z& n) const;          // a vertex maximising n·x (exact decisions, filtered)
+    int climb(const Vec3s& n) const;          // the same for |n| < 2^62 on a small() polyhedron
+    bool small() const { return !ipts_s.empty(); }
     Q support(const Vec3z& n) const;     // max over vertices of n·x
     bool strictly_inside(const Vec3q& p) const;
 };
@@ -44,6 +49,13 @@ struct Polyhedron {
 // Triangles of the convex hull of integer points (CGAL), as index triples oriented outward.
 // Precondition: pts has 4 affinely independent points.
 std::vector<std::array<int, 3>> hull_triangles(const std::vector<Vec3z>& pts);
+
+// Supporting planes of the hull of at most kBrutePoints small integer points, found by testing
+// every triple (no CGAL): each with its outward primitive normal and the indices on it, sorted.
+// Duplicate points count once (the first copy). Precondition: the points span 3 dimensions.
+constexpr size_t kBrutePoints = 16;
+struct HullPlane { Vec3s normal; std::vector<int> on; };
+std::vector<HullPlane> hull_planes_brute(const std::vector<Vec3s>& pts);
 
 // Builds the exact polyhedron. Throws InputError (prefixed with `name`) when the points do not
 // span 3 dimensions.
