@@ -170,6 +170,15 @@ std::vector<V> facet_normals(Model& m) {
                 if (v > bound) return ++m.stats.arc_signs_filtered, 1;
                 if (v < -bound) return ++m.stats.arc_signs_filtered, -1;
                 ++m.stats.arc_signs_exact;
+                if constexpr (std::is_same_v<V, Vec3s>) {
+                    // u × x exactly in 128 bits (|u|, |x| < 2^62), then its dot with p, checked
+                    const Vec3s xv = sign > 0 ? exact_x() : neg_s(exact_x());
+                    I128 c[3], r = 0, t;
+                    for (int k = 0; k < 3; ++k) c[k] = x_first ? cross_k(xv, u, k) : cross_k(u, xv, k);
+                    bool ok = true;
+                    for (int k = 0; k < 3 && ok; ++k) ok = mul_ok(c[k], p[k], t) && add_ok(r, t, r);
+                    if (ok) return sgn128(r);
+                }
                 Vec3z x = as_z(exact_x()), uz = as_z(u);
                 if (sign < 0) x = neg(x);
                 return sgn(dotz(x_first ? cross(x, uz) : cross(uz, x), as_z(p)));

@@ -30,11 +30,12 @@ Z to_z(I128 v) {
 }
 
 bool to_i128(const Z& z, I128& out) {
-    if (mpz_sizeinbase(z.get_mpz_t(), 2) > 126) return false;
-    Z a = abs(z), hi, lo;
-    mpz_fdiv_q_2exp(hi.get_mpz_t(), a.get_mpz_t(), 64);
-    mpz_fdiv_r_2exp(lo.get_mpz_t(), a.get_mpz_t(), 64);
-    I128 r = (I128(mpz_get_ui(hi.get_mpz_t())) << 64) | I128(mpz_get_ui(lo.get_mpz_t()));
+    static_assert(sizeof(mp_limb_t) == 8, "64-bit limbs");
+    const size_t n = mpz_size(z.get_mpz_t());
+    if (n > 2) return false;
+    const unsigned __int128 lo = mpz_getlimbn(z.get_mpz_t(), 0), hi = n > 1 ? mpz_getlimbn(z.get_mpz_t(), 1) : 0;
+    if (hi >> 62) return false;  // 126 bits at most
+    const I128 r = static_cast<I128>((hi << 64) | lo);
     out = sgn(z) < 0 ? -r : r;
     return true;
 }

@@ -76,6 +76,17 @@ std::vector<std::pair<int, int>> arc_candidates(const std::vector<Arc>& A, const
         extent += ba[i].hi[0] - ba[i].lo[0] + ba[i].hi[1] - ba[i].lo[1] + ba[i].hi[2] - ba[i].lo[2];
     }
     for (size_t j = 0; j < B.size(); ++j) bb[j] = arc_box(B[j]);
+    auto overlap = [](const Box& a, const Box& b) {
+        return a.lo[0] <= b.hi[0] && b.lo[0] <= a.hi[0] && a.lo[1] <= b.hi[1] && b.lo[1] <= a.hi[1] && a.lo[2] <= b.hi[2] &&
+               b.lo[2] <= a.hi[2];
+    };
+    std::vector<std::pair<int, int>> out;
+    if (A.size() * B.size() <= 4096) {  // few arcs: every pair's boxes, no grid
+        for (size_t i = 0; i < A.size(); ++i)
+            for (size_t j = 0; j < B.size(); ++j)
+                if (overlap(ba[i], bb[j])) out.push_back({static_cast<int>(i), static_cast<int>(j)});
+        return out;
+    }
     // Cells about the size of an average arc, at most 128 per axis.
     double mean = A.empty() ? 2.0 : extent / (3.0 * static_cast<double>(A.size()));
     int R = static_cast<int>(std::clamp(2.0 / std::max(mean, 1e-9), 1.0, 128.0));
@@ -97,7 +108,6 @@ std::vector<std::pair<int, int>> arc_candidates(const std::vector<Arc>& A, const
         return e;
     };
     const std::vector<Entry> ea = entries(ba), eb = entries(bb);
-    std::vector<std::pair<int, int>> out;
     for (size_t p = 0, q = 0; p < ea.size() && q < eb.size();) {
         if (ea[p].first < eb[q].first) { ++p; continue; }
         if (eb[q].first < ea[p].first) { ++q; continue; }
@@ -107,11 +117,7 @@ std::vector<std::pair<int, int>> arc_candidates(const std::vector<Arc>& A, const
         while (q1 < eb.size() && eb[q1].first == key) ++q1;
         for (size_t u = p; u < p1; ++u)
             for (size_t v = q; v < q1; ++v) {
-                const Box& a = ba[ea[u].second];
-                const Box& b = bb[eb[v].second];
-                if (a.lo[0] <= b.hi[0] && b.lo[0] <= a.hi[0] && a.lo[1] <= b.hi[1] && b.lo[1] <= a.hi[1] &&
-                    a.lo[2] <= b.hi[2] && b.lo[2] <= a.hi[2])
-                    out.push_back({ea[u].second, eb[v].second});
+                if (overlap(ba[ea[u].second], bb[eb[v].second])) out.push_back({ea[u].second, eb[v].second});
             }
         p = p1, q = q1;
     }

@@ -142,6 +142,20 @@ bool Polyhedron::strictly_inside(const Vec3q& p) const {
     for (const Q& c : p) mpz_lcm(den.get_mpz_t(), den.get_mpz_t(), c.get_den_mpz_t());
     Vec3z z;
     for (int k = 0; k < 3; ++k) z[k] = Z(p[k] * scale * den);
+    I128 z128[3], den128;
+    bool fits = small() && to_i128(den, den128);
+    for (int k = 0; k < 3 && fits; ++k) fits = to_i128(z[k], z128[k]);
+    if (fits) {  // in 128 bits, overflow-checked, while it fits
+        bool inside = true, ok = true;
+        for (size_t i = 0; i < faces.size() && inside && ok; ++i) {
+            const Face& f = faces[i];
+            I128 lhs = 0, t, rhs;
+            for (int k = 0; k < 3 && ok; ++k) ok = mul_ok(f.normal_s[k], z128[k], t) && add_ok(lhs, t, lhs);
+            ok = ok && mul_ok(den128, dot_s(f.normal_s, ipts_s[f.verts[0]]), rhs);
+            inside = !ok || lhs < rhs;
+        }
+        if (ok) return inside;
+    }
     for (const Face& f : faces)
         if (dotz(f.normal, z) >= den * dotz(f.normal, ipts[f.verts[0]])) return false;
     return true;
@@ -158,6 +172,8 @@ Vec3s vsub(const Vec3s& a, const Vec3s& b) { return sub_s(a, b); }
 Vec3z vsub(const Vec3z& a, const Vec3z& b) { return sub(a, b); }
 Vec3s vcross(const Vec3s& a, const Vec3s& b) { return cross_s(a, b); }
 Vec3z vcross(const Vec3z& a, const Vec3z& b) { return cross(a, b); }
+I128 vdot(const Vec3s& a, const Vec3s& b) { return dot_s(a, b); }  // |a|, |b| < 2^62
+Z vdot(const Vec3z& a, const Vec3z& b) { return dotz(a, b); }
 int sign_of(I128 v) { return sgn128(v); }
 int sign_of(const Z& v) { return sgn(v); }
 std::int64_t mag(std::int64_t v) { return v < 0 ? -v : v; }
@@ -280,19 +296,21 @@ void assemble(Polyhedron& P, const std::vector<Plane<V>>& planes, const std::vec
         throw std::logic_error("hull fails Euler's formula");
 }
 
-bool affinely_3d(const std::vector<Vec3q>& pts) {
+// Whether the (integer-scaled) points span 3 dimensions.
+template <class V>
+bool affinely_3d(const std::vector<V>& pts) {
     size_t i1 = 0, i2 = 0;
     for (i1 = 1; i1 < pts.size() && pts[i1] == pts[0]; ++i1) {}
     if (i1 == pts.size()) return false;
-    Vec3q e1 = sub(pts[i1], pts[0]);
-    Vec3q c;
+    const V e1 = vsub(pts[i1], pts[0]);
+    V c;
     for (i2 = i1 + 1; i2 < pts.size(); ++i2) {
-        c = cross(e1, sub(pts[i2], pts[0]));
-        if (sgn(c[0]) || sgn(c[1]) || sgn(c[2])) break;
+        c = vcross(e1, vsub(pts[i2], pts[0]));
+        if (!is_zero(c)) break;
     }
     if (i2 >= pts.size()) return false;
     for (size_t i3 = i2 + 1; i3 < pts.size(); ++i3)
-        if (sgn(dot(c, sub(pts[i3], pts[0])))) return true;
+        if (sign_of(vdot(c, vsub(pts[i3], pts[0])))) return true;
     return false;
 }
 
@@ -305,7 +323,9 @@ std::vector<HullPlane> hull_planes_brute(const std::vector<Vec3s>& pts) {
         for (int u : uniq) seen = seen || pts[u] == pts[i];
         if (!seen) uniq.push_back(static_cast<int>(i));
     }
+    if (uniq.size() > 32) throw std::logic_error("hull_planes_brute: too many points");
     std::vector<HullPlane> out;
+    std::vector<std::uint32_t> masks;  // per plane, the positions in uniq of the points on it
     const size_t m = uniq.size();
     for (size_t a = 0; a < m; ++a)
         for (size_t b = a + 1; b < m; ++b)
@@ -313,7 +333,11 @@ std::vector<HullPlane> hull_planes_brute(const std::vector<Vec3s>& pts) {
                 const Vec3s& p = pts[uniq[a]];
                 Vec3s n = cross_s(sub_s(pts[uniq[b]], p), sub_s(pts[uniq[c]], p));
                 if (is_zero(n)) continue;
-                n = primitive(n);
+                // Three points not on a line lie on one plane: known if a plane found holds them.
+                const std::uint32_t tri = (1u << a) | (1u << b) | (1u << c);
+                bool known = false;
+                for (std::uint32_t mask : masks) known = known || (mask & tri) == tri;
+                if (known) continue;
                 const I128 at = dot_s(n, p);
                 bool above = false, below = false;
                 for (int u : uniq) {
@@ -322,23 +346,20 @@ std::vector<HullPlane> hull_planes_brute(const std::vector<Vec3s>& pts) {
                     below = below || v < at;
                 }
                 if (above && below) continue;
-                if (above) n = neg_s(n);
-                bool known = false;
-                for (const auto& h : out) known = known || h.normal == n;
-                if (known) continue;
+                n = primitive(above ? neg_s(n) : n);
                 HullPlane h{n, {}};
                 const I128 top = dot_s(n, p);
-                for (int u : uniq)
-                    if (dot_s(n, pts[u]) == top) h.on.push_back(u);
+                std::uint32_t mask = 0;
+                for (size_t q = 0; q < m; ++q)
+                    if (dot_s(n, pts[uniq[q]]) == top) h.on.push_back(uniq[q]), mask |= 1u << q;
                 out.push_back(std::move(h));
+                masks.push_back(mask);
             }
     std::sort(out.begin(), out.end(), [](const HullPlane& x, const HullPlane& y) { return x.normal < y.normal; });
     return out;
 }
 
 Polyhedron build_polyhedron(const std::vector<Vec3q>& pts, const std::string& name) {
-    if (!affinely_3d(pts))
-        throw InputError(name + ": fewer than 4 affinely independent vertices (the points are flat)");
     Polyhedron P;
     P.points = pts;
     // Integer coordinates: every point times the lcm of all denominators (same planes, same order).
@@ -361,6 +382,8 @@ Polyhedron build_polyhedron(const std::vector<Vec3q>& pts, const std::string& na
         for (size_t i = 0; i < pts.size(); ++i)
             for (int k = 0; k < 3; ++k) P.ipts_s[i][k] = mpz_get_si(ip[i][k].get_mpz_t());
     }
+    if (small ? !affinely_3d(P.ipts_s) : !affinely_3d(ip))
+        throw InputError(name + ": fewer than 4 affinely independent vertices (the points are flat)");
     // The hull of the integer-scaled points (a uniform scaling: same faces). A few small points:
     // every triple tested in machine integers. Otherwise CGAL, with Epick's exact filtered
     // predicates whenever these integers are exact doubles.

@@ -2,6 +2,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include "scalecert/exact.hpp"
+#include "scalecert/small_int.hpp"
 
 #include <random>
 
@@ -56,4 +57,28 @@ BOOST_AUTO_TEST_CASE(primitive_normals) {
     BOOST_TEST(p[0] == 2);
     BOOST_TEST(p[1] == -3);
     BOOST_TEST(p[2] == 0);
+}
+
+// 128-bit conversions against GMP's own decimal reading.
+BOOST_AUTO_TEST_CASE(int128_conversions) {
+    const Z two100("1267650600228229401496703205376", 10);  // 2^100
+    I128 v = 0;
+    BOOST_TEST(to_i128(Z(two100 + 7), v));
+    BOOST_TEST((v == (I128(1) << 100) + 7));
+    BOOST_TEST(to_i128(Z(-two100), v));
+    BOOST_TEST((v == -(I128(1) << 100)));
+    BOOST_TEST((to_z(-(I128(1) << 100)) == -two100));
+    BOOST_TEST((to_z((I128(1) << 100) + 7) == two100 + 7));
+    const Z two126 = two100 * Z(1 << 26);
+    BOOST_TEST(!to_i128(two126, v));
+    BOOST_TEST(to_i128(Z(two126 - 1), v));
+    BOOST_TEST((to_z(v) == two126 - 1));
+    BOOST_TEST(to_i128(Z(0), v));
+    BOOST_TEST((v == 0));
+    Vec3s s;
+    BOOST_TEST(to_small_normal({Z(-3), Z(0), Z("4611686018427387903", 10)}, s));  // 2^62 − 1 fits
+    BOOST_TEST((s == Vec3s{-3, 0, 4611686018427387903LL}));
+    BOOST_TEST(!to_small_normal({Z(1), Z("4611686018427387904", 10), Z(0)}, s));  // 2^62 does not
+    BOOST_TEST((primitive(Vec3s{6, -9, 12}) == Vec3s{2, -3, 4}));
+    BOOST_TEST((to_z(primitive(Vec3s{6, -9, 12})) == primitive(Vec3z{Z(6), Z(-9), Z(12)})));
 }

@@ -107,17 +107,18 @@ std::unique_ptr<Method> make_method(const std::string& name, const Model& m, con
     return nullptr;
 }
 
-GridCurve grid_search(const Method& method, const FpScene& s, int n, int bisections, int repeats) {
+GridCurve grid_search(const Method& method, const FpScene& s, int n, int bisections, int repeats, bool exhaustive) {
     GridCurve g;
     auto at = [](double lo, double hi, int i, int n) { return n == 1 ? lo : lo + (hi - lo) * i / (n - 1); };
     for (int i = 0; i < n; ++i) {
         double x = at(s.lo[0], s.hi[0], i, n);
         int prev = 0;
+        bool found = false;
         for (int j = 0; j < n; ++j) {
             double y = at(s.lo[1], s.hi[1], j, n);
             int c = method.classify(x, y);
             ++g.classifications;
-            if (j > 0 && prev > 0 && c <= 0) {
+            if (!found && j > 0 && prev > 0 && c <= 0) {
                 // The touching ρ2 lies in (y_prev, y]: bisection, repeated and averaged.
                 double y0 = at(s.lo[1], s.hi[1], j - 1, n), sum = 0;
                 for (int r = 0; r < repeats; ++r) {
@@ -133,7 +134,8 @@ GridCurve grid_search(const Method& method, const FpScene& s, int n, int bisecti
                 }
                 g.rho1.push_back(x);
                 g.rho2.push_back(sum / repeats);
-                break;
+                found = true;
+                if (!exhaustive) break;
             }
             prev = c;
         }
