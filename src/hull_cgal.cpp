@@ -6,11 +6,12 @@
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Surface_mesh.h>
+#include <CGAL/Extreme_points_traits_adapter_3.h>
 #include <CGAL/convex_hull_3.h>
+#include <CGAL/property_map.h>
 
-#include <cmath>
 #include <algorithm>
+#include <numeric>
 
 namespace scalecert {
 
@@ -18,36 +19,38 @@ using K = CGAL::Exact_predicates_exact_constructions_kernel;
 static_assert(std::is_same<K::FT::Exact_type, mpq_class>::value, "Epeck must run on mpq_class");
 
 namespace {
-// The hull's triangles as input indices, for any CGAL kernel whose points we can key exactly.
-template <class Kernel, class Key, class ToPoint, class ToKey>
-std::vector<std::array<int, 3>> hull_with(const std::vector<Vec3z>& pts, ToPoint to_point, ToKey to_key) {
+// The hull's triangles as input indices. CGAL runs on the indices of the first copies of the
+// distinct points (through its extreme-points traits adapter) and writes an indexed triangle set
+// whose vertices are those indices: no mesh, no lookup of coordinates.
+template <class Kernel, class ToPoint>
+std::vector<std::array<int, 3>> hull_with(const std::vector<Vec3z>& pts, ToPoint to_point) {
     using Point = typename Kernel::Point_3;
     std::vector<Point> cp;
     cp.reserve(pts.size());
-    std::vector<std::pair<Key, int>> index;  // exact coordinates -> first input index, sorted
-    index.reserve(pts.size());
-    for (size_t i = 0; i < pts.size(); ++i) {
-        cp.push_back(to_point(pts[i]));
-        index.push_back({to_key(cp.back()), static_cast<int>(i)});
-    }
-    std::sort(index.begin(), index.end());  // equal points: the first input index comes first
-    auto lookup = [&](const Key& k) {
-        auto it = std::lower_bound(index.begin(), index.end(), k, [](const std::pair<Key, int>& e, const Key& x) { return e.first < x; });
-        if (it == index.end() || !(it->first == k)) throw std::logic_error("hull point not among the input");
-        return it->second;
-    };
-    CGAL::Surface_mesh<Point> mesh;
-    CGAL::convex_hull_3(cp.begin(), cp.end(), mesh);
+    for (const Vec3z& p : pts) cp.push_back(to_point(p));
+    std::vector<std::size_t> first(pts.size());
+    std::iota(first.begin(), first.end(), std::size_t{0});
+    std::sort(first.begin(), first.end(), [&](std::size_t a, std::size_t b) { return pts[a] < pts[b] || (pts[a] == pts[b] && a < b); });
+    first.erase(std::unique(first.begin(), first.end(), [&](std::size_t a, std::size_t b) { return pts[a] == pts[b]; }), first.end());
+    std::vector<std::size_t> verts;
+    std::vector<std::array<std::size_t, 3>> faces;
+    const auto traits = CGAL::make_extreme_points_traits_adapter(CGAL::make_property_map(cp), CGAL::Convex_hull_traits_3<Kernel>());
+    using It = std::vector<std::size_t>::iterator;
+    // CGAL 5.5's overload with traits has a template parameter it cannot deduce: all are named.
+    CGAL::convex_hull_3<It, std::size_t, decltype(verts), decltype(faces), decltype(traits)>(first.begin(), first.end(), verts, faces, traits);
     std::vector<std::array<int, 3>> tris;
-    for (auto f : mesh.faces()) {
-        std::array<int, 3> t{};
-        int k = 0;
-        for (auto v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) {
-            if (k < 3) t[k] = lookup(to_key(mesh.point(v)));
-            ++k;
-        }
-        if (k != 3) throw std::logic_error("convex_hull_3 returned a non-triangle");
-        tris.push_back(t);
+    tris.reserve(faces.size());
+    for (const auto& f : faces)
+        tris.push_back({static_cast<int>(verts[f[0]]), static_cast<int>(verts[f[1]]), static_cast<int>(verts[f[2]])});
+    // For exactly four distinct points CGAL 5.5 writes the tetrahedron into an indexed triangle
+    // set inside out (its mesh version swaps two corners; this one does not): orient it here.
+    if (first.size() == 4 && tris.size() == 4) {
+        const auto& t = tris[0];
+        int d = -1;  // the corner not on triangle t
+        for (std::size_t q : first)
+            if (static_cast<int>(q) != t[0] && static_cast<int>(q) != t[1] && static_cast<int>(q) != t[2]) d = static_cast<int>(q);
+        if (sgn(dotz(cross(sub(pts[t[1]], pts[t[0]]), sub(pts[t[2]], pts[t[0]])), sub(pts[d], pts[t[0]]))) > 0)
+            for (auto& tri : tris) std::swap(tri[1], tri[2]);
     }
     return tris;
 }
@@ -65,13 +68,9 @@ std::vector<std::array<int, 3>> hull_triangles(const std::vector<Vec3z>& pts) {
     // and the hull needs no constructions. Otherwise Epeck on mpq_class.
     if (all_exact_doubles(pts)) {
         using KI = CGAL::Exact_predicates_inexact_constructions_kernel;
-        return hull_with<KI, std::array<double, 3>>(
-            pts, [](const Vec3z& p) { return KI::Point_3(p[0].get_d(), p[1].get_d(), p[2].get_d()); },
-            [](const KI::Point_3& p) { return std::array<double, 3>{p.x(), p.y(), p.z()}; });
+        return hull_with<KI>(pts, [](const Vec3z& p) { return KI::Point_3(p[0].get_d(), p[1].get_d(), p[2].get_d()); });
     }
-    return hull_with<K, Vec3q>(
-        pts, [](const Vec3z& p) { return K::Point_3(K::FT(Q(p[0])), K::FT(Q(p[1])), K::FT(Q(p[2]))); },
-        [](const K::Point_3& p) { return Vec3q{CGAL::exact(p.x()), CGAL::exact(p.y()), CGAL::exact(p.z())}; });
+    return hull_with<K>(pts, [](const Vec3z& p) { return K::Point_3(K::FT(Q(p[0])), K::FT(Q(p[1])), K::FT(Q(p[2]))); });
 }
 
 }  // namespace scalecert

@@ -283,6 +283,7 @@ void assemble(Polyhedron& P, const std::vector<Plane<V>>& planes, const std::vec
     }
     std::sort(sides.begin(), sides.end());
     P.adj.assign(np, {});
+    for (int v : P.vertices) P.adj[v].reserve(static_cast<size_t>(nfaces[v]));  // degree = faces at v
     for (size_t k = 0; k < sides.size(); k += 2) {
         if (k + 1 >= sides.size() || sides[k][0] != sides[k + 1][0] || sides[k][1] != sides[k + 1][1] ||
             (k + 2 < sides.size() && sides[k + 2][0] == sides[k][0] && sides[k + 2][1] == sides[k][1]))
@@ -340,8 +341,8 @@ std::vector<HullPlane> hull_planes_brute(const std::vector<Vec3s>& pts) {
                 if (known) continue;
                 const I128 at = dot_s(n, p);
                 bool above = false, below = false;
-                for (int u : uniq) {
-                    I128 v = dot_s(n, pts[u]);
+                for (size_t q = 0; q < m && !(above && below); ++q) {
+                    I128 v = dot_s(n, pts[uniq[q]]);
                     above = above || v > at;
                     below = below || v < at;
                 }
