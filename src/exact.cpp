@@ -72,6 +72,17 @@ Z parse_integer(const std::string& s) {
 }  // namespace
 
 Q parse_exact(const std::string& text) {
+    // Plain integers of up to 18 digits (most coordinates): no detour through strings.
+    if (!text.empty() && text.size() <= 19) {
+        size_t b = text[0] == '-' || text[0] == '+' ? 1 : 0;
+        if (text.size() - b >= 1 && text.size() - b <= 18 && all_digits(text, b, text.size())) {
+            long v = 0;
+            for (size_t i = b; i < text.size(); ++i) v = v * 10 + (text[i] - '0');
+            Q r;
+            mpq_set_si(r.get_mpq_t(), text[0] == '-' ? -v : v, 1);
+            return r;
+        }
+    }
     const std::string bad = "'" + text + "' is not an exact number";
     if (text.empty() || text.size() > 100000) throw InputError(bad);
     size_t slash = text.find('/');

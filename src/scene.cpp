@@ -123,22 +123,30 @@ struct Reader {
     [[noreturn]] void fail(const std::string& where, const std::string& what) const {
         throw InputError(file + ": " + (where.empty() ? "" : where + ": ") + what);
     }
-    Q number_text(const std::string& text, bool /*integer_token*/, bool is_string, const std::string& where) const {
+    // `where` names the place in the file; it is a string, or a function building one, called
+    // only on an error (a scene has tens of thousands of numbers).
+    static std::string text_of(const std::string& w) { return w; }
+    template <class F>
+    static std::string text_of(const F& w) { return w(); }
+    template <class W>
+    Q number_text(const std::string& text, bool is_string, const W& where) const {
         try {
             return parse_number(text, opt.binary_doubles && !is_string);
         } catch (const InputError& e) {
-            fail(where, e.what());
+            fail(text_of(where), e.what());
         }
     }
-    Q number(const JNode& n, const std::string& where) const {
-        if (n.kind == JNode::Number) return number_text(n.text, n.integer_token, false, where);
-        if (n.kind == JNode::String) return number_text(n.text, false, true, where);
-        fail(where, "expected a number or a string such as \"3/7\"");
+    template <class W>
+    Q number(const JNode& n, const W& where) const {
+        if (n.kind == JNode::Number) return number_text(n.text, false, where);
+        if (n.kind == JNode::String) return number_text(n.text, true, where);
+        fail(text_of(where), "expected a number or a string such as \"3/7\"");
     }
-    Vec3q point(const JNode& n, const std::string& where) const {
-        if (n.kind != JNode::Array || n.items.size() != 3) fail(where, "expected an array of 3 coordinates");
-        return {number(n.items[0], where + "[0]"), number(n.items[1], where + "[1]"),
-                number(n.items[2], where + "[2]")};
+    template <class W>
+    Vec3q point(const JNode& n, const W& where) const {
+        if (n.kind != JNode::Array || n.items.size() != 3) fail(text_of(where), "expected an array of 3 coordinates");
+        auto at = [&](int k) { return [&where, k] { return text_of(where) + "[" + std::to_string(k) + "]"; }; };
+        return {number(n.items[0], at(0)), number(n.items[1], at(1)), number(n.items[2], at(2))};
     }
 };
 
@@ -181,8 +189,8 @@ std::vector<Vec3q> read_off(const std::string& path, const ReadOptions& opt) {
     std::vector<Vec3q> pts(nv);
     for (size_t i = 0; i < nv; ++i)
         for (int k = 0; k < 3; ++k)
-            pts[i][k] = r.number_text(tokens[4 + 3 * i + k], false, false,
-                                      "vertex " + std::to_string(i) + " coordinate " + std::to_string(k));
+            pts[i][k] = r.number_text(tokens[4 + 3 * i + k], false,
+                                      [&] { return "vertex " + std::to_string(i) + " coordinate " + std::to_string(k); });
     return pts;
 }
 
@@ -209,8 +217,9 @@ Scene parse_scene_text(const std::string& text, const std::string& name, const s
         if (verts && off) r.fail(pname[i], "give either \"vertices\" or \"off\", not both");
         if (verts) {
             if (verts->kind != JNode::Array) r.fail(std::string(pname[i]) + ".vertices", "expected an array of points");
+            in.points.reserve(verts->items.size());
             for (size_t j = 0; j < verts->items.size(); ++j)
-                in.points.push_back(r.point(verts->items[j], std::string(pname[i]) + ".vertices[" + std::to_string(j) + "]"));
+                in.points.push_back(r.point(verts->items[j], [&] { return std::string(pname[i]) + ".vertices[" + std::to_string(j) + "]"; }));
         } else if (off) {
             if (off->kind != JNode::String) r.fail(std::string(pname[i]) + ".off", "expected a file name");
             std::string path = off->text;
@@ -225,10 +234,15 @@ Scene parse_scene_text(const std::string& text, const std::string& name, const s
             in.seed = r.point(*s, std::string(pname[i]) + ".seed");
             in.seed_given = true;
         } else {
+            // The mean, summed in integers while the coordinates are integers.
             Vec3q c{Q(0), Q(0), Q(0)};
+            Z zs[3] = {0, 0, 0};
             for (const Vec3q& v : in.points)
-                for (int k = 0; k < 3; ++k) c[k] += v[k];
-            for (int k = 0; k < 3; ++k) c[k] /= Q(static_cast<long>(in.points.size()));
+                for (int k = 0; k < 3; ++k) {
+                    if (v[k].get_den() == 1) zs[k] += v[k].get_num();
+                    else c[k] += v[k];
+                }
+            for (int k = 0; k < 3; ++k) c[k] = (c[k] + Q(zs[k])) / Q(static_cast<long>(in.points.size()));
             in.seed = c;
         }
     }
