@@ -8,10 +8,9 @@
 namespace scalecert {
 
 namespace {
-constexpr int kG = 16;  // start table resolution per cube face
 using D3 = std::array<double, 3>;
 // The cube-map cell of a direction.
-int cube_cell(const D3& v) {
+int cube_cell(const D3& v, int kG) {
     int ax = 0;
     for (int k = 1; k < 3; ++k)
         if (std::fabs(v[k]) > std::fabs(v[ax])) ax = k;
@@ -27,7 +26,7 @@ int cube_cell(const D3& v) {
 
 int Polyhedron::start_vertex(const std::array<double, 3>& n) const {
     if (start_table.empty()) return vertices.front();
-    return start_table[cube_cell(n)];
+    return start_table[cube_cell(n, start_g)];
 }
 
 namespace {
@@ -401,6 +400,9 @@ Polyhedron build_polyhedron(const std::vector<Vec3q>& pts, const std::string& na
     // previous cell's answer. Only a hint: argmax always finishes the climb exactly.
     const std::vector<D3>& dp = P.dpts;  // scaled coordinates: the same maximisers
     if (P.vertices.size() <= 64) return P;  // small: climbing from any vertex is already short
+    // About four vertices per cell, so that a climb from the cell's vertex is a few steps.
+    const int kG = std::clamp(static_cast<int>(std::sqrt(static_cast<double>(P.vertices.size()) / 24.0)), 16, 256);
+    P.start_g = kG;
     P.start_table.assign(6 * kG * kG, P.vertices.front());
     int cur = P.vertices.front();
     for (int face = 0; face < 6; ++face)

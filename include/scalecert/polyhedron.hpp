@@ -34,6 +34,7 @@ struct Polyhedron {
     // argmax is called from one thread at a time).
     mutable std::uint64_t cmp_filtered = 0, cmp_exact = 0;
     std::vector<int> start_table;        // cube-map cells (6 × G × G) -> a vertex near the argmax
+    int start_g = 0;                     // G
 
     // The vertices maximising n·x (a vertex, an edge's two ends or a face's vertices), sorted,
     // and the maximum value. Hill-climbs the vertex graph, then collects the tied face.
