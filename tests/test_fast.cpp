@@ -85,3 +85,40 @@ BOOST_AUTO_TEST_CASE(baselines_agree_away_from_the_curve) {
         }
     BOOST_TEST(checked > 1000);
 }
+
+// Pair files: doubles written with 17 significant digits read back bit for bit, across the chunk
+// boundary of two threads; strtod's other forms; blank lines and comments; the first bad line.
+BOOST_AUTO_TEST_CASE(pair_text_is_read_exactly_on_two_threads) {
+    std::mt19937_64 g(4);
+    std::uniform_real_distribution<double> u(1e-3, 1e3);
+    std::vector<double> a, b;
+    std::string text;
+    char buf[64];
+    for (int i = 0; i < 20000; ++i) {
+        a.push_back(u(g)), b.push_back(u(g));
+        std::snprintf(buf, sizeof buf, i % 3 ? "%.17g %.17g\n" : "\t%.17g\t %.17g  # note\r\n", a.back(), b.back());
+        text += buf;
+        if (i % 1000 == 7) text += "\n   \n# a comment line\n";
+    }
+    text += "+1.5 0x1.8p+1";  // a leading '+' and a hexadecimal double (3), no final newline
+    a.push_back(1.5), b.push_back(3.0);
+    BOOST_REQUIRE(text.size() > (1u << 16));
+    for (unsigned threads : {1u, 2u, 3u}) {
+        std::vector<double> r1, r2;
+        parse_pairs(text, r1, r2, threads);
+        BOOST_TEST(r1 == a, boost::test_tools::per_element());
+        BOOST_TEST(r2 == b, boost::test_tools::per_element());
+    }
+    // A bad line far into the second half: its number is counted over all lines before it.
+    std::string lines;
+    for (int i = 1; i <= 19999; ++i) lines += "1 2\n";  // 80 KB: two chunks
+    for (const char* bad : {"1 x", "1", "1 2 3", "0 1", "-1 2", "inf 1", "1 nan"}) {
+        std::vector<double> r1, r2;
+        try {
+            parse_pairs(lines + bad + "\n1 2\n", r1, r2, 2);
+            BOOST_ERROR("accepted '" << bad << "'");
+        } catch (const InputError& e) {
+            BOOST_TEST(std::string(e.what()) == "line 20000: expected two finite numbers > 0");
+        }
+    }
+}

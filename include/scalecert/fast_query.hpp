@@ -5,6 +5,7 @@
 #include "scalecert/query.hpp"
 
 #include <cstdint>
+#include <string>
 
 namespace scalecert {
 
@@ -41,5 +42,13 @@ private:
 // (r1[i], r2[i]). Returns the stage counts summed over the threads.
 StageCounts classify_batch(const FastCurve& f, const std::vector<double>& r1, const std::vector<double>& r2,
                     std::vector<Verdict>& out, unsigned threads);
+
+// Reads pairs, one "rho1 rho2" per line (text after '#' and blank lines ignored), each number
+// read as the double strtod gives, on `threads` threads over chunks of the text. Throws
+// InputError("line N: ...") for the first bad line: two finite numbers > 0 are required.
+void parse_pairs(const std::string& text, std::vector<double>& r1, std::vector<double>& r2, unsigned threads);
+
+// The verdicts as text, one name per line.
+std::string verdict_lines(const std::vector<Verdict>& v);
 
 }  // namespace scalecert
