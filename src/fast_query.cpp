@@ -82,40 +82,49 @@ StageCounts classify_batch(const FastCurve& f, const std::vector<double>& r1, co
 namespace {
 bool blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
 
-// One number token [b, e): std::from_chars (correctly rounded, like strtod); forms it does not
-// take (a leading '+', hexadecimal, "infinity"...) go to strtod itself.
-bool number(const char* b, const char* e, double& out) {
-    auto r = std::from_chars(b, e, out);
-    if (r.ec == std::errc() && r.ptr == e) return true;
-    std::string t(b, e);
+bool delimiter(const char* p, const char* e) { return p == e || blank(*p) || *p == '\n' || *p == '#'; }
+
+// One number at p: std::from_chars (correctly rounded, like strtod); forms it does not take (a
+// leading '+', hexadecimal, "infinity"...) go to strtod itself. Advances p past the token.
+bool number(const char*& p, const char* e, double& out) {
+    auto r = std::from_chars(p, e, out);
+    if (r.ec == std::errc() && delimiter(r.ptr, e)) {
+        p = r.ptr;
+        return true;
+    }
+    const char* q = p;
+    while (!delimiter(q, e)) ++q;
+    std::string t(p, q);
     char* end = nullptr;
     out = std::strtod(t.c_str(), &end);
-    return end == t.c_str() + t.size() && !t.empty();
+    p = q;
+    return !t.empty() && end == t.c_str() + t.size();
 }
 
-// Parses the lines in [b, e); returns the offset of the first bad line, or npos.
-size_t parse_chunk(const char* base, const char* b, const char* e, std::vector<double>& r1, std::vector<double>& r2) {
-    const size_t lines = static_cast<size_t>(std::count(b, e, '\n')) + 1;
-    r1.reserve(lines), r2.reserve(lines);
-    while (b < e) {
-        const char* nl = std::find(b, e, '\n');
-        const char* end = std::find(b, nl, '#');
+// Parses the lines in [b, e) in one pass; returns the offset of the first bad line, or npos.
+// Writes the pairs to o1, o2 (room for one per line) and their count to count (once, at the
+// end: the threads' counts share a cache line).
+size_t parse_chunk(const char* base, const char* b, const char* e, double* o1, double* o2, size_t& count) {
+    size_t n = 0;
+    const char* p = b;
+    while (p < e) {
+        const char* line = p;
         double v[2];
         int k = 0;
         bool ok = true;
-        for (const char* p = b; ok;) {
-            while (p < end && blank(*p)) ++p;
-            if (p == end) break;
-            const char* q = p;
-            while (q < end && !blank(*q)) ++q;
-            ok = k < 2 && number(p, q, v[k]) && std::isfinite(v[k]) && v[k] > 0;
+        for (;;) {
+            while (p < e && blank(*p)) ++p;
+            if (p == e || *p == '\n' || *p == '#') break;
+            ok = ok && k < 2 && number(p, e, v[k]) && std::isfinite(v[k]) && v[k] > 0;
             ++k;
-            p = q;
+            if (!ok) break;
         }
-        if (!ok || (k != 0 && k != 2)) return static_cast<size_t>(b - base);
-        if (k == 2) r1.push_back(v[0]), r2.push_back(v[1]);
-        b = nl == e ? e : nl + 1;
+        if (!ok || (k != 0 && k != 2)) return count = n, static_cast<size_t>(line - base);
+        if (k == 2) o1[n] = v[0], o2[n] = v[1], ++n;
+        if (p < e && *p == '#') p = std::find(p, e, '\n');
+        if (p < e) ++p;  // the newline
     }
+    count = n;
     return std::string::npos;
 }
 }  // namespace
@@ -123,33 +132,38 @@ size_t parse_chunk(const char* base, const char* b, const char* e, std::vector<d
 void parse_pairs(const std::string& text, std::vector<double>& r1, std::vector<double>& r2, unsigned threads) {
     threads = std::max(1u, threads);
     if (text.size() < (1u << 16)) threads = 1;
-    // Chunks end at line ends.
+    // Chunks end at line ends. Each thread counts its lines, then writes its pairs straight into
+    // the output at its offset (one slot per line); the gaps left by blank lines are closed last.
+    const char* const end = text.data() + text.size();
     std::vector<const char*> cut{text.data()};
     for (unsigned t = 1; t < threads; ++t) {
-        const char* p = text.data() + text.size() * t / threads;
-        p = std::find(std::max(p, cut.back()), text.data() + text.size(), '\n');
-        cut.push_back(p == text.data() + text.size() ? p : p + 1);
+        const char* p = std::find(std::max(text.data() + text.size() * t / threads, cut.back()), end, '\n');
+        cut.push_back(p == end ? p : p + 1);
     }
-    cut.push_back(text.data() + text.size());
-    std::vector<std::vector<double>> a(threads), b(threads);
-    std::vector<size_t> bad(threads, std::string::npos);
-    std::vector<std::thread> pool;
-    for (unsigned t = 0; t < threads; ++t)
-        pool.emplace_back([&, t] { bad[t] = parse_chunk(text.data(), cut[t], cut[t + 1], a[t], b[t]); });
-    for (auto& th : pool) th.join();
+    cut.push_back(end);
+    std::vector<size_t> lines(threads), got(threads), bad(threads, std::string::npos), off(threads + 1, 0);
+    auto each = [&](auto&& f) {
+        std::vector<std::thread> pool;
+        for (unsigned t = 1; t < threads; ++t) pool.emplace_back(f, t);
+        f(0u);
+        for (auto& th : pool) th.join();
+    };
+    each([&](unsigned t) { lines[t] = static_cast<size_t>(std::count(cut[t], cut[t + 1], '\n')) + 1; });
+    for (unsigned t = 0; t < threads; ++t) off[t + 1] = off[t] + lines[t];
+    r1.resize(off[threads]), r2.resize(off[threads]);
+    each([&](unsigned t) { bad[t] = parse_chunk(text.data(), cut[t], cut[t + 1], r1.data() + off[t], r2.data() + off[t], got[t]); });
     for (unsigned t = 0; t < threads; ++t)
         if (bad[t] != std::string::npos) {
             long line = 1 + std::count(text.begin(), text.begin() + static_cast<long>(bad[t]), '\n');
             throw InputError("line " + std::to_string(line) + ": expected two finite numbers > 0");
         }
-    size_t n = 0;
-    for (const auto& v : a) n += v.size();
-    r1.clear(), r2.clear();
-    r1.reserve(n), r2.reserve(n);
-    for (unsigned t = 0; t < threads; ++t) {
-        r1.insert(r1.end(), a[t].begin(), a[t].end());
-        r2.insert(r2.end(), b[t].begin(), b[t].end());
+    size_t n = got[0];
+    for (unsigned t = 1; t < threads; ++t) {
+        std::copy(r1.begin() + static_cast<long>(off[t]), r1.begin() + static_cast<long>(off[t] + got[t]), r1.begin() + static_cast<long>(n));
+        std::copy(r2.begin() + static_cast<long>(off[t]), r2.begin() + static_cast<long>(off[t] + got[t]), r2.begin() + static_cast<long>(n));
+        n += got[t];
     }
+    r1.resize(n), r2.resize(n);
 }
 
 std::string verdict_lines(const std::vector<Verdict>& v) {

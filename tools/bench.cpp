@@ -201,6 +201,15 @@ int main(int argc, char** argv) {
         double t2 = per_call([&](long) { classify_batch(fc, a, b, out, 2); }, 1);
         row("batch " + std::to_string(n) + " pairs, 1 thread", "boxes (8+8)", t1, "1 (baseline)");
         row("batch " + std::to_string(n) + " pairs, 2 threads", "boxes (8+8)", t2, ratio("%.2fx faster", t1 / t2));
+        // The same pairs as text, as `scalecert classify` reads them from a file.
+        std::string text;
+        char buf[64];
+        for (long i = 0; i < n; ++i) text.append(buf, static_cast<size_t>(std::snprintf(buf, sizeof buf, "%.17g %.17g\n", a[i], b[i])));
+        std::vector<double> pa, pb;
+        double p1 = per_call([&](long) { parse_pairs(text, pa, pb, 1); }, 1);
+        double p2 = per_call([&](long) { parse_pairs(text, pa, pb, 2); }, 1);
+        row("reading " + std::to_string(n) + " pairs from text, 1 thread", "boxes (8+8)", p1, "1 (baseline)");
+        row("reading " + std::to_string(n) + " pairs from text, 2 threads", "boxes (8+8)", p2, ratio("%.2fx faster", p1 / p2));
     }
     std::printf("| method | case | time | ratio |\n|---|---|---|---|\n");
     for (const Row& r : rows) {
