@@ -56,15 +56,7 @@ Json model_json(const Model& m) {
 Json seed_interior_json(const Model& m) {
     Json seeds;
     const char* names[2] = {"P1", "P2"};
-    for (int i = 0; i < 2; ++i) {
-        std::vector<Vec3q> V;
-        for (int v : m.P[i].vertices) V.push_back(m.P[i].points[v]);
-        auto lam = positive_combination(V, m.s[i]);
-        if (!lam) throw std::logic_error("seed inside but no positive combination found");
-        std::vector<std::pair<int, Q>> w;
-        for (size_t k = 0; k < V.size(); ++k) w.push_back({m.P[i].vertices[k], (*lam)[k]});
-        seeds[names[i]] = weights(w);
-    }
+    for (int i = 0; i < 2; ++i) seeds[names[i]] = weights(m.P[i].interior_weights(m.s[i]));
     return seeds;
 }
 

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <numeric>
+#include <optional>
 #include <type_traits>
 
 namespace scalecert {
@@ -158,6 +160,65 @@ bool Polyhedron::strictly_inside(const Vec3q& p) const {
     for (const Face& f : faces)
         if (dotz(f.normal, z) >= den * dotz(f.normal, ipts[f.verts[0]])) return false;
     return true;
+}
+
+std::vector<std::pair<int, Q>> Polyhedron::interior_weights(const Vec3q& p) const {
+    // Four affinely independent vertices (they exist: the polyhedron spans 3 dimensions).
+    std::vector<int> tet{vertices[0]};
+    for (int v : vertices) {
+        if (tet.size() == 4) break;
+        const Vec3z e = sub(ipts[v], ipts[tet[0]]);
+        if (tet.size() == 1 && !is_zero(e)) tet.push_back(v);
+        else if (tet.size() == 2 && !is_zero(cross(sub(ipts[tet[1]], ipts[tet[0]]), e))) tet.push_back(v);
+        else if (tet.size() == 3 && sgn(dotz(cross(sub(ipts[tet[1]], ipts[tet[0]]), sub(ipts[tet[2]], ipts[tet[0]])), e))) tet.push_back(v);
+    }
+    if (tet.size() != 4) throw std::logic_error("interior_weights: no four independent vertices");
+    Vec3q c{Q(0), Q(0), Q(0)};
+    for (int v : tet)
+        for (int k = 0; k < 3; ++k) c[k] += points[v][k] / 4;
+    std::map<int, Q> w;
+    const Vec3q u = sub(p, c);
+    Q t = 0;  // p = (1 − t)·c + t·q
+    if (sgn(u[0]) || sgn(u[1]) || sgn(u[2])) {
+        // The exit of the ray c + λu: the smallest λ over the faces it heads towards.
+        std::optional<Q> best;
+        size_t bf = 0;
+        for (size_t f = 0; f < faces.size(); ++f) {
+            const Vec3q n = to_q(faces[f].normal);
+            const Q nu = dot(n, u);
+            if (sgn(nu) <= 0) continue;
+            Q lam = (dot(n, points[faces[f].verts[0]]) - dot(n, c)) / nu;
+            if (!best || lam < *best) best = lam, bf = f;
+        }
+        if (!best || *best <= 1) throw std::logic_error("interior_weights: point not strictly inside");
+        t = 1 / *best;
+        Vec3q q;
+        for (int k = 0; k < 3; ++k) q[k] = c[k] + *best * u[k];
+        // q in a fan triangle (v0, v_i, v_i+1) of the face: barycentric coordinates in the plane
+        // projected along the normal's largest component, all ≥ 0 for the triangle holding q.
+        const Face& F = faces[bf];
+        int drop = 0;
+        for (int k = 1; k < 3; ++k)
+            if (abs(F.normal[k]) > abs(F.normal[drop])) drop = k;
+        const int a = (drop + 1) % 3, b = (drop + 2) % 3;
+        auto area = [&](const Vec3q& x, const Vec3q& y, const Vec3q& z) {
+            return Q((y[a] - x[a]) * (z[b] - x[b]) - (y[b] - x[b]) * (z[a] - x[a]));
+        };
+        bool found = false;
+        for (size_t i = 1; i + 1 < F.verts.size() && !found; ++i) {
+            const Vec3q &A = points[F.verts[0]], &B = points[F.verts[i]], &C = points[F.verts[i + 1]];
+            const Q whole = area(A, B, C), la = area(q, B, C) / whole, lb = area(A, q, C) / whole, lc = area(A, B, q) / whole;
+            if (sgn(la) < 0 || sgn(lb) < 0 || sgn(lc) < 0) continue;
+            found = true;
+            const int idx[3] = {F.verts[0], F.verts[i], F.verts[i + 1]};
+            const Q bary[3] = {la, lb, lc};
+            for (int k = 0; k < 3; ++k)
+                if (sgn(bary[k]) > 0) w[idx[k]] += t * bary[k];
+        }
+        if (!found) throw std::logic_error("interior_weights: exit point outside its face");
+    }
+    for (int v : tet) w[v] += (1 - t) / 4;
+    return {w.begin(), w.end()};
 }
 
 namespace {

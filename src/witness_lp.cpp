@@ -60,26 +60,4 @@ std::optional<CommonPoint> common_point(const std::vector<Vec3q>& A, const std::
     return cp;
 }
 
-std::optional<std::vector<Q>> positive_combination(const std::vector<Vec3q>& V, const Vec3q& p) {
-    // maximise δ subject to λ_i ≥ δ, Σλ = 1, Σλ V = p. Variable n is δ.
-    const int n = static_cast<int>(V.size());
-    Program lp(CGAL::EQUAL, true, ET(0), false, ET(0));
-    std::vector<std::pair<int, Q>> r0;
-    for (int i = 0; i < n; ++i) r0.push_back({i, Q(1)});
-    set_row(lp, 0, r0, Q(1));
-    for (int k = 0; k < 3; ++k) {
-        std::vector<std::pair<int, Q>> r;
-        for (int i = 0; i < n; ++i) r.push_back({i, V[i][k]});
-        set_row(lp, 1 + k, r, p[k]);
-    }
-    for (int i = 0; i < n; ++i) set_row(lp, 4 + i, {{i, Q(1)}, {n, Q(-1)}}, Q(0), CGAL::LARGER);
-    lp.set_c(n, ET(-1));
-    auto s = CGAL::solve_linear_program(lp, ET());
-    if (!s.is_optimal()) return std::nullopt;
-    std::vector<Q> v = values(s, V.size() + 1);
-    if (sgn(v[n]) <= 0) return std::nullopt;
-    v.pop_back();
-    return v;
-}
-
 }  // namespace scalecert

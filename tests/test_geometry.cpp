@@ -202,3 +202,49 @@ BOOST_AUTO_TEST_CASE(machine_integer_and_gmp_models_agree) {
     }
     BOOST_TEST(lines > 200u);
 }
+
+// Seed-interior weights: positive, summing to 1, combining to the point, on vertices spanning 3
+// dimensions (checked directly), for centroids and random interior points; none for a point on
+// the boundary.
+BOOST_AUTO_TEST_CASE(interior_weights_prove_interior_points) {
+    std::mt19937 g(17);
+    int checked = 0;
+    for (int t = 0; t < 40; ++t) {
+        auto pts = test::random_points(g, 5 + t % 20, 6, 1 + t % 3, {Q(0), Q(0), Q(0)});
+        Polyhedron P = build_polyhedron(pts, "P");
+        std::vector<Vec3q> targets;
+        Vec3q c{Q(0), Q(0), Q(0)};
+        for (const Vec3q& p : pts) for (int k = 0; k < 3; ++k) c[k] += p[k] / Q(static_cast<long>(pts.size()));
+        targets.push_back(c);
+        std::uniform_int_distribution<int> u(1, 9);
+        for (int r = 0; r < 3; ++r) {  // (c + vertex)/2 pulled towards c by random amounts: interior
+            const Vec3q& v = P.points[P.vertices[static_cast<size_t>(u(g)) % P.vertices.size()]];
+            Q f = test::qc(u(g), 10);
+            targets.push_back({c[0] + f * (v[0] - c[0]), c[1] + f * (v[1] - c[1]), c[2] + f * (v[2] - c[2])});
+        }
+        for (const Vec3q& p : targets) {
+            BOOST_REQUIRE(P.strictly_inside(p));
+            auto w = P.interior_weights(p);
+            Q sum = 0;
+            Vec3q comb{Q(0), Q(0), Q(0)};
+            for (const auto& [i, x] : w) {
+                BOOST_TEST(sgn(x) > 0);
+                sum += x;
+                for (int k = 0; k < 3; ++k) comb[k] += x * P.points[i][k];
+            }
+            BOOST_TEST(sum == Q(1));
+            BOOST_TEST((comb == p));
+            bool spans = false;
+            for (size_t a = 1; a < w.size(); ++a)
+                for (size_t b = a + 1; b < w.size(); ++b)
+                    for (size_t e = b + 1; e < w.size(); ++e)
+                        spans = spans || sgn(dot(cross(sub(P.points[w[a].first], P.points[w[0].first]), sub(P.points[w[b].first], P.points[w[0].first])),
+                                                 sub(P.points[w[e].first], P.points[w[0].first])));
+            BOOST_TEST(spans);
+            BOOST_TEST(w.size() <= 7u);
+            ++checked;
+        }
+        BOOST_CHECK_THROW(P.interior_weights(P.points[P.vertices[0]]), std::logic_error);
+    }
+    BOOST_TEST(checked == 160);
+}

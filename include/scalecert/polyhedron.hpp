@@ -45,6 +45,11 @@ struct Polyhedron {
     bool small() const { return !ipts_s.empty(); }
     Q support(const Vec3z& n) const;     // max over vertices of n·x
     bool strictly_inside(const Vec3q& p) const;
+    // For p strictly inside: weights w > 0 on vertices spanning 3 dimensions, Σw = 1, Σ w·v = p
+    // (a proof that p is interior), sorted by vertex. From the centroid c of four affinely
+    // independent vertices, the ray through p leaves at a point q of some face, a convex
+    // combination of one of its fan triangles, and p lies strictly between c and q.
+    std::vector<std::pair<int, Q>> interior_weights(const Vec3q& p) const;
 };
 
 // Triangles of the convex hull of integer points (CGAL), as index triples oriented outward.

@@ -12,8 +12,4 @@ namespace scalecert {
 struct CommonPoint { std::vector<Q> lambda, mu; };
 std::optional<CommonPoint> common_point(const std::vector<Vec3q>& A, const std::vector<Vec3q>& B);
 
-// Weights λ_i > 0 (all of them), Σλ = 1, Σ λ_i V_i = p: proves p is interior to conv(V) when V
-// spans 3 dimensions. None when p is not in the relative interior.
-std::optional<std::vector<Q>> positive_combination(const std::vector<Vec3q>& V, const Vec3q& p);
-
 }  // namespace scalecert
