@@ -147,7 +147,7 @@ int main(int argc, char** argv) {
     query_benchmarks("boxes (8+8)", bx, nq);
     query_benchmarks("hulls (1000)", h1000, nq / 10);
     // The whole curve: exact engine against the paper's grid search at 256 x 256 with 20 bisection
-    // steps per column. The paper classifies every node (exhaustive search, Section 3.1) with its
+    // steps per column. The paper classifies every node (exhaustive search, Section 2.3.2) with its
     // triangle-triangle test, and repeats each bisection and averages (x3). For comparison, the
     // same grid with libccd GJK at the nodes, and a grid that stops each column at its first
     // overlapping node (a shortcut the paper does not take).

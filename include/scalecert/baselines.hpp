@@ -54,7 +54,7 @@ std::unique_ptr<Method> make_method(const std::string& name, const Model& m, con
 // The paper's pipeline: classify an n × n grid over I1 × I2; in each column, the touching ρ2 is
 // estimated by `bisections` rounds of bisection between the last separated and the first
 // overlapping node, repeated `repeats` times from jittered brackets and averaged (Section 3.2).
-// With `exhaustive`, every node is classified, as in the paper's exhaustive search (Section 3.1);
+// With `exhaustive`, every node is classified, as in the paper's exhaustive search (Section 2.3.2);
 // without, a column stops at its first overlapping node (the region above the curve overlaps,
 // so the estimates are the same; only the cost differs).
 struct GridCurve {
