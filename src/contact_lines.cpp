@@ -82,20 +82,12 @@ const Vec3z& face_normal(const Polyhedron& P, int f, const Vec3z*) { return P.fa
 const Vec3s& face_normal(const Polyhedron& P, int f, const Vec3s*) { return P.faces[f].normal_s; }
 const std::vector<Vec3z>& points(const Polyhedron& P, const Vec3z*) { return P.ipts; }
 const std::vector<Vec3s>& points(const Polyhedron& P, const Vec3s*) { return P.ipts_s; }
-Vec3s vneg(const Vec3s& v) { return neg_s(v); }
-Vec3z vneg(const Vec3z& v) { return neg(v); }
-Vec3s vsub(const Vec3s& a, const Vec3s& b) { return sub_s(a, b); }
-Vec3z vsub(const Vec3z& a, const Vec3z& b) { return sub(a, b); }
-Vec3s vcross(const Vec3s& a, const Vec3s& b) { return cross_s(a, b); }  // |a|, |b| < 2^31
-Vec3z vcross(const Vec3z& a, const Vec3z& b) { return cross(a, b); }
 // Sign of component k of a × b.
 int cross_sign(const Vec3s& a, const Vec3s& b, int k) { return sgn128(cross_k(a, b, k)); }
 int cross_sign(const Vec3z& a, const Vec3z& b, int k) {
     int i = (k + 1) % 3, j = (k + 2) % 3;
     return sgn(Z(a[i] * b[j] - a[j] * b[i]));
 }
-Vec3z as_z(const Vec3s& v) { return to_z(v); }
-const Vec3z& as_z(const Vec3z& v) { return v; }
 
 // The Gauss arc of an edge: from the normal of one face to the other's, and the edge direction
 // oriented so that from × to is a positive multiple of it (the normal of the arc's plane; the

@@ -228,18 +228,6 @@ namespace {
 template <class V> struct Wide;
 template <> struct Wide<Vec3s> { using type = I128; };
 template <> struct Wide<Vec3z> { using type = Z; };
-Vec3s vsub(const Vec3s& a, const Vec3s& b) { return sub_s(a, b); }
-Vec3z vsub(const Vec3z& a, const Vec3z& b) { return sub(a, b); }
-Vec3s vcross(const Vec3s& a, const Vec3s& b) { return cross_s(a, b); }
-Vec3z vcross(const Vec3z& a, const Vec3z& b) { return cross(a, b); }
-I128 vdot(const Vec3s& a, const Vec3s& b) { return dot_s(a, b); }  // |a|, |b| < 2^62
-Z vdot(const Vec3z& a, const Vec3z& b) { return dotz(a, b); }
-int sign_of(I128 v) { return sgn128(v); }
-int sign_of(const Z& v) { return sgn(v); }
-std::int64_t mag(std::int64_t v) { return v < 0 ? -v : v; }
-Z mag(const Z& v) { return abs(v); }
-const Vec3z& as_z(const Vec3z& v) { return v; }
-Vec3z as_z(const Vec3s& v) { return to_z(v); }
 
 // Sorts the vertices of a convex polygon with outward normal n counter-clockwise (seen from
 // outside), exactly: angular order around an interior point, in the plane projected along the

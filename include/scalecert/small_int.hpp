@@ -61,4 +61,21 @@ inline bool sub_ok(I128 a, I128 b, I128& r) { return !__builtin_sub_overflow(a, 
 // z as a 128-bit integer if it fits in 126 bits.
 bool to_i128(const Z& z, I128& out);
 
+// The same operations on either kind of integer vector, for code written once for both (the
+// machine-integer overloads keep the bounds stated above).
+inline Vec3s vsub(const Vec3s& a, const Vec3s& b) { return sub_s(a, b); }
+inline Vec3z vsub(const Vec3z& a, const Vec3z& b) { return sub(a, b); }
+inline Vec3s vcross(const Vec3s& a, const Vec3s& b) { return cross_s(a, b); }
+inline Vec3z vcross(const Vec3z& a, const Vec3z& b) { return cross(a, b); }
+inline I128 vdot(const Vec3s& a, const Vec3s& b) { return dot_s(a, b); }
+inline Z vdot(const Vec3z& a, const Vec3z& b) { return dotz(a, b); }
+inline Vec3s vneg(const Vec3s& v) { return neg_s(v); }
+inline Vec3z vneg(const Vec3z& v) { return neg(v); }
+inline int sign_of(I128 v) { return sgn128(v); }
+inline int sign_of(const Z& v) { return sgn(v); }
+inline std::int64_t mag(std::int64_t v) { return v < 0 ? -v : v; }
+inline Z mag(const Z& v) { return abs(v); }
+inline Vec3z as_z(const Vec3s& v) { return to_z(v); }
+inline const Vec3z& as_z(const Vec3z& v) { return v; }
+
 }  // namespace scalecert
