@@ -73,6 +73,7 @@ inline Vec3s vneg(const Vec3s& v) { return neg_s(v); }
 inline Vec3z vneg(const Vec3z& v) { return neg(v); }
 inline int sign_of(I128 v) { return sgn128(v); }
 inline int sign_of(const Z& v) { return sgn(v); }
+inline int sign_of(std::int64_t v) { return (v > 0) - (v < 0); }
 inline std::int64_t mag(std::int64_t v) { return v < 0 ? -v : v; }
 inline Z mag(const Z& v) { return abs(v); }
 inline Vec3z as_z(const Vec3s& v) { return to_z(v); }
