@@ -201,9 +201,24 @@ void add_lines(Model& m, const std::vector<V>& normals) {
     bool seeds128 = to_i128(m.sden[0], sden0) && to_i128(m.sden[1], sden1);
     for (int k = 0; k < 3 && seeds128; ++k)
         seeds128 = to_i128(m.sz[0][k], sz0[k]) && to_i128(m.sz[1][k], sz1[k]) && to_i128(m.dz[k], dz[k]);
-    std::vector<double> sa, sb;
-    sa.reserve(normals.size()), sb.reserve(normals.size());
-    for (const V& n : normals) {
+    // Normals visited in the order of a space-filling curve over the cube map of directions, so
+    // consecutive support climbs touch the same vertices (the results do not depend on it).
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> order(normals.size());
+    for (size_t i = 0; i < normals.size(); ++i) {
+        const D3 d = dir_d(normals[i]);
+        int ax = 0;
+        for (int k = 1; k < 3; ++k)
+            if (std::fabs(d[k]) > std::fabs(d[ax])) ax = k;
+        const double mx = std::fabs(d[ax]);
+        auto q = [&](double x) { return static_cast<std::uint32_t>(std::clamp((x / mx + 1) * 128.0, 0.0, 255.0)); };
+        std::uint32_t u = q(d[(ax + 1) % 3]), v = q(d[(ax + 2) % 3]), key = 0;
+        for (int b = 0; b < 8; ++b) key |= ((u >> b) & 1u) << (2 * b) | ((v >> b) & 1u) << (2 * b + 1);
+        order[i] = {static_cast<std::uint32_t>(2 * ax + (d[ax] < 0)) << 16 | key, static_cast<std::uint32_t>(i)};
+    }
+    std::sort(order.begin(), order.end());
+    std::vector<double> sa(normals.size()), sb(normals.size());
+    for (const auto& [key, idx] : order) {
+        const V& n = normals[idx];
         const V mn = vneg(n);
         double H1 = 0, H2 = 0, ND = 0;
         bool done = false;
@@ -225,8 +240,8 @@ void add_lines(Model& m, const std::vector<V>& normals) {
             const Numerators u = numerators(m, nz, dotz(nz, m.P[0].ipts[m.P[0].climb(nz)]), dotz(mz, m.P[1].ipts[m.P[1].climb(mz)]));
             H1 = u.H1.get_d(), H2 = u.H2.get_d(), ND = u.ND.get_d();
         }
-        sa.push_back(-(H1 * D2) / (H2 * D1));
-        sb.push_back((ND * D2) / (DD * H2));
+        sa[idx] = -(H1 * D2) / (H2 * D1);
+        sb[idx] = (ND * D2) / (DD * H2);
     }
     std::vector<size_t> keep = undominated(sa, sb);
     m.stats.dominated_lines = normals.size() - keep.size();
