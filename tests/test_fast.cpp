@@ -5,6 +5,7 @@
 
 #include "scalecert/baselines.hpp"
 #include "scalecert/fast_query.hpp"
+#include "scalecert/quick_query.hpp"
 #include "support.hpp"
 
 #include <cmath>
@@ -121,4 +122,42 @@ BOOST_AUTO_TEST_CASE(pair_text_is_read_exactly_on_two_threads) {
             BOOST_TEST(std::string(e.what()) == "line 20000: expected two finite numbers > 0");
         }
     }
+}
+
+// One query from the scene with no model: the GJK proposal and its filtered certificate give the
+// exact verdict at random pairs, at doubles on the curve and one ulp either side; undecided pairs
+// go to the exact model.
+BOOST_AUTO_TEST_CASE(model_free_queries_equal_exact) {
+    std::mt19937 g(43);
+    std::uniform_real_distribution<double> u(0.25, 4.0);
+    std::uint64_t random_filtered = 0, random_exact = 0, near = 0, near_exact = 0, touch = 0;
+    for (int t = 0; t < 30; ++t) {
+        Scene sc = test::random_scene(g, 4 + t % 9, 4 + t % 7);
+        Model m = build_model(sc);
+        Curve c = build_curve(m);
+        QuickScene qs(sc);
+        for (int k = 0; k < 60; ++k) {  // random pairs: the filter should decide nearly all
+            double x = u(g), y = u(g);
+            BOOST_TEST(qs.classify(x, y) == query_direct(m, exact_from_double(x), exact_from_double(y)));
+        }
+        random_filtered += qs.counts.filtered, random_exact += qs.counts.exact;
+        qs.counts = {};
+        for (int k = 0; k < 20; ++k) {  // on the curve (to the nearest double) and one ulp either side
+            double x = u(g);
+            double y = to_double_rn(c.env.value(m.lines, exact_from_double(x)));
+            if (!(y > 0)) continue;
+            for (double yy : {y, std::nextafter(y, 0.0), std::nextafter(y, INFINITY)}) {
+                Verdict want = query_direct(m, exact_from_double(x), exact_from_double(yy));
+                BOOST_TEST(qs.classify(x, yy) == want);
+                touch += want == Verdict::Touching;
+                ++near;
+            }
+        }
+        near_exact += qs.counts.exact;
+    }
+    std::cout << "model-free queries: random pairs " << random_filtered << " certified by the filter, " << random_exact
+              << " exact; pairs within an ulp of the curve " << near - near_exact << " certified, " << near_exact << " exact ("
+              << touch << " touching)\n";
+    BOOST_TEST(random_filtered >= 50 * random_exact);
+    BOOST_TEST(near_exact > 0u);
 }
