@@ -1,5 +1,6 @@
 #include "scalecert/contact_lines.hpp"
 
+#include "scalecert/double3.hpp"
 #include "scalecert/gauss_map.hpp"
 #include "scalecert/small_int.hpp"
 #include "scalecert/timing.hpp"
@@ -72,12 +73,8 @@ std::vector<size_t> undominated(const std::vector<double>& a, const std::vector<
 
 namespace {
 
-using D3 = std::array<double, 3>;
 D3 dir_d(const Vec3z& v) { return direction_d(v); }
 D3 dir_d(const Vec3s& v) { return {static_cast<double>(v[0]), static_cast<double>(v[1]), static_cast<double>(v[2])}; }
-D3 crossd(const D3& a, const D3& b) { return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}; }
-double normd(const D3& a) { return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]); }
-double dotd(const D3& a, const D3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 const Vec3z& face_normal(const Polyhedron& P, int f, const Vec3z*) { return P.faces[f].normal; }
 const Vec3s& face_normal(const Polyhedron& P, int f, const Vec3s*) { return P.faces[f].normal_s; }
 const std::vector<Vec3z>& points(const Polyhedron& P, const Vec3z*) { return P.ipts; }

@@ -1,4 +1,5 @@
 #include "scalecert/gauss_map.hpp"
+#include "scalecert/double3.hpp"
 
 #include <algorithm>
 #include <climits>
@@ -8,13 +9,10 @@
 namespace scalecert {
 
 namespace {
-using D3 = std::array<double, 3>;
 D3 unit(const D3& d) {
     double l = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
     return {d[0] / l, d[1] / l, d[2] / l};
 }
-D3 crossd(const D3& a, const D3& b) { return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}; }
-double dotd(const D3& a, const D3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
 struct Box { D3 lo, hi; };
 constexpr double kPad = 1e-7;  // far above the rounding error of these few operations

@@ -1,15 +1,12 @@
 #include "scalecert/quick_query.hpp"
 
+#include "scalecert/double3.hpp"
+
 #include <cmath>
 
 namespace scalecert {
 
 namespace {
-using D3 = std::array<double, 3>;
-D3 sub(const D3& a, const D3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-D3 neg(const D3& a) { return {-a[0], -a[1], -a[2]}; }
-D3 cross(const D3& a, const D3& b) { return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}; }
-double dot(const D3& a, const D3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 D3 rounded(const Vec3q& v) { return {to_double_rn(v[0]), to_double_rn(v[1]), to_double_rn(v[2])}; }
 
 // A point w = ρ1 q1_i − ρ2 q2_j − d of P1(ρ1) − P2(ρ2), in doubles, with its vertex pair and a
@@ -20,32 +17,32 @@ struct Pt { D3 w, W; int i, j; };
 // nearest the origin and sets the next search direction v; true when the tetrahedron encloses it.
 // Only a proposal: its rounding is not trusted, the certificate is checked apart.
 void line_step(std::vector<Pt>& s, const Pt& b, const Pt& a, D3& v) {
-    const D3 ab = sub(b.w, a.w), ao = neg(a.w);
-    if (dot(ab, ao) > 0) s = {b, a}, v = cross(cross(ab, ao), ab);
+    const D3 ab = subd(b.w, a.w), ao = negd(a.w);
+    if (dotd(ab, ao) > 0) s = {b, a}, v = crossd(crossd(ab, ao), ab);
     else s = {a}, v = ao;
 }
 void triangle_step(std::vector<Pt>& s, D3& v) {
     const Pt c = s[0], b = s[1], a = s[2];
-    const D3 ab = sub(b.w, a.w), ac = sub(c.w, a.w), ao = neg(a.w), abc = cross(ab, ac);
-    if (dot(cross(abc, ac), ao) > 0) {
-        if (dot(ac, ao) > 0) s = {c, a}, v = cross(cross(ac, ao), ac);
+    const D3 ab = subd(b.w, a.w), ac = subd(c.w, a.w), ao = negd(a.w), abc = crossd(ab, ac);
+    if (dotd(crossd(abc, ac), ao) > 0) {
+        if (dotd(ac, ao) > 0) s = {c, a}, v = crossd(crossd(ac, ao), ac);
         else line_step(s, b, a, v);
-    } else if (dot(cross(ab, abc), ao) > 0) {
+    } else if (dotd(crossd(ab, abc), ao) > 0) {
         line_step(s, b, a, v);
-    } else if (dot(abc, ao) > 0) {
+    } else if (dotd(abc, ao) > 0) {
         s = {c, b, a}, v = abc;
     } else {
-        s = {b, c, a}, v = neg(abc);
+        s = {b, c, a}, v = negd(abc);
     }
 }
 bool simplex_step(std::vector<Pt>& s, D3& v) {
     if (s.size() == 2) { const Pt b = s[0], a = s[1]; line_step(s, b, a, v); return false; }
     if (s.size() == 3) { triangle_step(s, v); return false; }
     const Pt d = s[0], c = s[1], b = s[2], a = s[3];
-    const D3 ab = sub(b.w, a.w), ac = sub(c.w, a.w), ad = sub(d.w, a.w), ao = neg(a.w);
-    if (dot(cross(ab, ac), ao) > 0) { s = {c, b, a}; triangle_step(s, v); return false; }
-    if (dot(cross(ac, ad), ao) > 0) { s = {d, c, a}; triangle_step(s, v); return false; }
-    if (dot(cross(ad, ab), ao) > 0) { s = {b, d, a}; triangle_step(s, v); return false; }
+    const D3 ab = subd(b.w, a.w), ac = subd(c.w, a.w), ad = subd(d.w, a.w), ao = negd(a.w);
+    if (dotd(crossd(ab, ac), ao) > 0) { s = {c, b, a}; triangle_step(s, v); return false; }
+    if (dotd(crossd(ac, ad), ao) > 0) { s = {d, c, a}; triangle_step(s, v); return false; }
+    if (dotd(crossd(ad, ab), ao) > 0) { s = {b, d, a}; triangle_step(s, v); return false; }
     return true;
 }
 
@@ -72,9 +69,9 @@ Verdict QuickScene::classify(double r1, double r2) const {
         Pt p{{}, {}, 0, 0};
         double best1 = -INFINITY, best2 = INFINITY;
         for (size_t i = 0; i < q1_.size(); ++i)
-            if (double x = dot(v, q1_[i]); x > best1) best1 = x, p.i = static_cast<int>(i);
+            if (double x = dotd(v, q1_[i]); x > best1) best1 = x, p.i = static_cast<int>(i);
         for (size_t j = 0; j < q2_.size(); ++j)
-            if (double x = dot(v, q2_[j]); x < best2) best2 = x, p.j = static_cast<int>(j);
+            if (double x = dotd(v, q2_[j]); x < best2) best2 = x, p.j = static_cast<int>(j);
         const D3 &a = q1_[p.i], &b = q2_[p.j];
         for (int k = 0; k < 3; ++k) {
             p.w[k] = r1 * a[k] - r2 * b[k] - d_[k];
@@ -86,14 +83,14 @@ Verdict QuickScene::classify(double r1, double r2) const {
     auto separates = [&](const D3& n) {
         double h1 = -INFINITY, h2 = -INFINITY, m1 = 0, m2 = 0;
         for (const D3& q : q1_) {
-            h1 = std::max(h1, dot(n, q));
+            h1 = std::max(h1, dotd(n, q));
             m1 = std::max(m1, std::fabs(n[0] * q[0]) + std::fabs(n[1] * q[1]) + std::fabs(n[2] * q[2]));
         }
         for (const D3& q : q2_) {
-            h2 = std::max(h2, -dot(n, q));
+            h2 = std::max(h2, -dotd(n, q));
             m2 = std::max(m2, std::fabs(n[0] * q[0]) + std::fabs(n[1] * q[1]) + std::fabs(n[2] * q[2]));
         }
-        const double g = dot(n, d_) - r1 * h1 - r2 * h2;
+        const double g = dotd(n, d_) - r1 * h1 - r2 * h2;
         const double scale = std::fabs(n[0] * d_[0]) + std::fabs(n[1] * d_[1]) + std::fabs(n[2] * d_[2]) + r1 * m1 + r2 * m2;
         return std::isfinite(g) && std::isfinite(scale) && scale > 1e-250 && g > 1e-14 * scale;
     };
@@ -105,7 +102,7 @@ Verdict QuickScene::classify(double r1, double r2) const {
             const Pt* o[3];
             for (int m = 0, t = 0; m < 4; ++m)
                 if (m != k) o[t++] = &s[static_cast<size_t>(m)];
-            double det = dot(o[0]->w, cross(o[1]->w, o[2]->w)) * (k % 2 ? -1 : 1);
+            double det = dotd(o[0]->w, crossd(o[1]->w, o[2]->w)) * (k % 2 ? -1 : 1);
             double bound = 1e-13 * permanent(o[0]->W, o[1]->W, o[2]->W);
             if (!std::isfinite(det) || !std::isfinite(bound) || !(bound > 1e-250) || std::fabs(det) <= bound) return false;
             const int sk = det > 0 ? 1 : -1;
@@ -116,13 +113,13 @@ Verdict QuickScene::classify(double r1, double r2) const {
     };
     bool separated = false, overlapping = false;
     if (std::isfinite(r1) && std::isfinite(r2) && r1 > 0 && r2 > 0) {
-        D3 v = dot(d_, d_) > 0 ? neg(d_) : D3{1, 0, 0};
+        D3 v = dotd(d_, d_) > 0 ? negd(d_) : D3{1, 0, 0};
         std::vector<Pt> s{support(v)};
-        v = neg(s[0].w);
+        v = negd(s[0].w);
         for (int iter = 0; iter < 64; ++iter) {
-            if (!(dot(v, v) > 0) || !std::isfinite(dot(v, v))) break;  // the origin on the simplex: too close to call
+            if (!(dotd(v, v) > 0) || !std::isfinite(dotd(v, v))) break;  // the origin on the simplex: too close to call
             const Pt p = support(v);
-            if (dot(p.w, v) < 0) {
+            if (dotd(p.w, v) < 0) {
                 separated = separates(v);
                 break;
             }

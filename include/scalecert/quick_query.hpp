@@ -6,6 +6,7 @@
 // When neither is proven (touching, or too close to call) the exact model is built once and
 // decides. The answer is always the exact one.
 #pragma once
+#include "scalecert/double3.hpp"
 #include "scalecert/fast_query.hpp"
 
 #include <array>
@@ -13,6 +14,7 @@
 
 namespace scalecert {
 
+// Not for concurrent use: the counts and the lazily built model are per object (one per thread).
 class QuickScene {
 public:
     explicit QuickScene(const Scene& scene);
@@ -21,7 +23,6 @@ public:
     mutable StageCounts counts;  // filtered = certified by GJK and the filter; exact = model built or used
 
 private:
-    using D3 = std::array<double, 3>;
     Scene scene_;
     std::vector<D3> q1_, q2_;  // v − s1 and w − s2 rounded to nearest (relative error ≤ 2^-53 per component)
     D3 d_{};                   // s2 − s1 rounded to nearest
