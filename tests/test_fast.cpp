@@ -161,3 +161,28 @@ BOOST_AUTO_TEST_CASE(model_free_queries_equal_exact) {
     BOOST_TEST(random_filtered >= 50 * random_exact);
     BOOST_TEST(near_exact > 0u);
 }
+
+// Coordinates far outside the comfortable double range (10^200 and 10^-200 times a random scene):
+// whatever the doubles do, the answer is the exact one.
+BOOST_AUTO_TEST_CASE(model_free_queries_at_extreme_scales) {
+    std::mt19937 g(47);
+    std::uniform_real_distribution<double> u(0.25, 4.0);
+    for (int e : {200, -200}) {
+        Z p10;
+        mpz_ui_pow_ui(p10.get_mpz_t(), 10, 200);
+        const Q f = e > 0 ? Q(p10) : Q(1, p10);
+        for (int t = 0; t < 4; ++t) {
+            Scene sc = test::random_scene(g, 5 + t, 6);
+            for (int i = 0; i < 2; ++i) {
+                for (Vec3q& v : sc.P[i].points) for (Q& c : v) c *= f;
+                for (Q& c : sc.P[i].seed) c *= f;
+            }
+            Model m = build_model(sc);
+            QuickScene qs(sc);
+            for (int k = 0; k < 20; ++k) {
+                double x = u(g), y = u(g);
+                BOOST_TEST(qs.classify(x, y) == query_direct(m, exact_from_double(x), exact_from_double(y)));
+            }
+        }
+    }
+}
