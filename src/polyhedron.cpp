@@ -119,10 +119,12 @@ int Polyhedron::climb(const Vec3z& n) const {
 }
 
 std::vector<int> Polyhedron::argmax(const Vec3z& n, Q* value, Z* scaled_value) const {
-    const int top = climb(n);
+    // One filter (machine integers when the normal fits) serves the climb and the ties.
+    auto climb_and_ties = [](const auto& f) { return tied_with(f, climb_with(f)); };
     Vec3s ns;
-    std::vector<int> out = small() && to_small_normal(n, ns) ? tied_with(FilteredDot<Vec3s>(*this, ns), top)
-                                                             : tied_with(FilteredDot<Vec3z>(*this, n), top);
+    std::vector<int> out = small() && to_small_normal(n, ns) ? climb_and_ties(FilteredDot<Vec3s>(*this, ns))
+                                                             : climb_and_ties(FilteredDot<Vec3z>(*this, n));
+    const int top = out.front();  // every vertex in out attains the maximum
     if (value || scaled_value) {
         Z best = dotz(n, ipts[top]);  // = max n·x times scale
         if (value) *value = Q(best, scale), value->canonicalize();
