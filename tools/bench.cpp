@@ -106,19 +106,13 @@ void query_benchmarks(const std::string& name, const Scene& sc, long nq) {
                  (unsigned long)fd.counts.exact, (unsigned long)qs.counts.filtered, (unsigned long)qs.counts.exact, wrong, nq);
     // Points exactly on the curve: the filter cannot decide them; all go to the exact stage.
     FastCurve fc2(m, c);
+    QuickScene qs2(sc);
     long on = 0;
     for (long i = 0; i < 1000; ++i) {
         double x = r1[i];
         Q y = c.env.value(m.lines, exact_from_double(x));
         double yd = to_double_rn(y);
-        if (exact_from_double(yd) == y) { fc2.classify(x, yd); ++on; }
-    }
-    QuickScene qs2(sc);
-    for (long i = 0; i < 1000; ++i) {
-        double x = r1[i];
-        Q y = c.env.value(m.lines, exact_from_double(x));
-        double yd = to_double_rn(y);
-        if (exact_from_double(yd) == y) qs2.classify(x, yd);
+        if (exact_from_double(yd) == y) { fc2.classify(x, yd); qs2.classify(x, yd); ++on; }
     }
     std::fprintf(stderr, "    on-curve points representable as doubles: %ld, decided exactly: %lu with the curve, %lu from the scene\n", on,
                  (unsigned long)fc2.counts.exact, (unsigned long)qs2.counts.exact);
