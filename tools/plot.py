@@ -31,6 +31,17 @@ def save(fig, outdir, name):
     plt.close(fig)
 
 
+def finish(fig, ax, outdir, name, title, xlabel=None, ylabel=None, legend_size=8, legend_loc="best"):
+    """Axis labels, title and legend, then the PNG and SVG files (shared with plot_audit.py)."""
+    if xlabel:
+        ax.set_xlabel(xlabel)
+    if ylabel:
+        ax.set_ylabel(ylabel)
+    ax.set_title(title)
+    ax.legend(loc=legend_loc, fontsize=legend_size)
+    save(fig, outdir, name)
+
+
 def fig6_rho(part, outdir):
     fig, ax = plt.subplots(figsize=(6, 5.5))
     reg = part["regions"]
@@ -58,11 +69,7 @@ def fig6_rho(part, outdir):
     ax.plot(g, g, "s", color="green", ms=7, label=f"growth distance {part['growth_distance']}")
     ax.set_xlim(lo1, hi1)
     ax.set_ylim(lo2, hi2)
-    ax.set_xlabel("rho1")
-    ax.set_ylabel("rho2")
-    ax.set_title("touching curve and certified partition")
-    ax.legend(loc="upper right", fontsize=8)
-    save(fig, outdir, "fig6_rho")
+    finish(fig, ax, outdir, "fig6_rho", "touching curve and certified partition", "rho1", "rho2", legend_loc="upper right")
 
 
 def fig3_grid(part, grid, outdir):
@@ -85,11 +92,7 @@ def fig3_grid(part, grid, outdir):
         ax.plot(*zip(*pts), "k+", label=f"grid search ({grid['method']}, n = {grid['n']})")
     ax.plot(x, y, "o", mfc="none", mec="red", ms=12, label=f"exact junction ({s['rho1']}, {s['rho2']})")
     ax.set_xlim(x - w, x + w)
-    ax.set_xlabel("rho1")
-    ax.set_ylabel("rho2")
-    ax.set_title("grid samples and the exact lines near a switch")
-    ax.legend(fontsize=7)
-    save(fig, outdir, "fig3_grid")
+    finish(fig, ax, outdir, "fig3_grid", "grid samples and the exact lines near a switch", "rho1", "rho2", legend_size=7)
 
 
 def fig6_t(curve, outdir):
@@ -98,12 +101,8 @@ def fig6_t(curve, outdir):
     pts = curve.get("t_curve_double", [])
     if pts:
         ax.plot(*zip(*pts), "k-o", ms=3, lw=2, label="t-plane decision curve")
-    ax.set_xlabel("t1")
-    ax.set_ylabel("t2")
     ax.set_aspect("equal")
-    ax.set_title("decision curve along the seed segment")
-    ax.legend(fontsize=8)
-    save(fig, outdir, "fig6_t")
+    finish(fig, ax, outdir, "fig6_t", "decision curve along the seed segment", "t1", "t2")
 
 
 def fig7_loci(curve, outdir):
@@ -114,9 +113,7 @@ def fig7_loci(curve, outdir):
         ax.plot(*zip(*pts), "r-o", ms=4, label="contact point")
         for w, p in zip(curve["contact_loci"], pts):
             ax.text(*p, f" ({w['rho1']}, {w['rho2']})", fontsize=7)
-    ax.set_title("loci of contact points along the curve")
-    ax.legend(fontsize=8)
-    save(fig, outdir, "fig7_loci")
+    finish(fig, ax, outdir, "fig7_loci", "loci of contact points along the curve")
 
 
 def fig5_3d(curve, outdir):

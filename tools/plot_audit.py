@@ -17,11 +17,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-
-def save(fig, outdir, name):
-    for ext in ("png", "svg"):
-        fig.savefig(os.path.join(outdir, f"{name}.{ext}"), dpi=130, bbox_inches="tight")
-    plt.close(fig)
+from plot import finish  # noqa: E402  (tools/plot.py, beside this script)
 
 
 def main():
@@ -44,11 +40,7 @@ def main():
         ax.plot(xs, [by_eps[x][0] / by_eps[x][1] for x in xs], "o-", ms=3, label=method)
     ax.axhline(0, color="green", lw=2, label="scalecert (exact): 0 by construction")
     ax.set_xscale("log", base=2)
-    ax.set_xlabel("degeneracy eps")
-    ax.set_ylabel("wrong-verdict rate (pairs on and near the curve)")
-    ax.set_title("stability")
-    ax.legend(fontsize=8)
-    save(fig, outdir, "stability")
+    finish(fig, ax, outdir, "stability", "stability", "degeneracy eps", "wrong-verdict rate (pairs on and near the curve)")
     # Speed against accuracy.
     fig, ax = plt.subplots(figsize=(6, 4))
     pts = defaultdict(list)
@@ -65,11 +57,8 @@ def main():
             ax.plot(xs, ys, "o", ms=4, label=label)
     ax.set_xscale("log")
     ax.set_yscale("log")
-    ax.set_xlabel("seconds per curve")
-    ax.set_ylabel("switch-point error in rho1 (exact: plotted at 1e-17)")
-    ax.set_title("speed against accuracy")
-    ax.legend(fontsize=7)
-    save(fig, outdir, "speed_accuracy")
+    finish(fig, ax, outdir, "speed_accuracy", "speed against accuracy", "seconds per curve",
+           "switch-point error in rho1 (exact: plotted at 1e-17)", legend_size=7)
 
 
 if __name__ == "__main__":
