@@ -108,8 +108,8 @@ std::vector<EdgeArc<V>> edge_arcs(const Polyhedron& P, bool negate) {
         int k = 0;  // the largest component of the edge: nonzero, and so is from × to's
         for (int c = 1; c < 3; ++c)
             if (std::fabs(a.pd[c]) > std::fabs(a.pd[k])) k = c;
-        if (cross_sign(a.from, a.to, k) * sign_of(a.p[k]) < 0) a.p = vneg(a.p);
-        a.fd = dir_d(a.from), a.td = dir_d(a.to), a.pd = dir_d(a.p);
+        if (cross_sign(a.from, a.to, k) * sign_of(a.p[k]) < 0) a.p = vneg(a.p), a.pd = negd(a.pd);
+        a.fd = dir_d(a.from), a.td = dir_d(a.to);
     }
     return out;
 }
