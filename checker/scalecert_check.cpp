@@ -1,38 +1,144 @@
 // scalecert-check: an independent checker for scalecert certificates (partition files and query
 // answers). It shares no code with the engine: GMP rationals, the standard library and a JSON
-// reader. Every claim is re-derived from the scene stored in the file; see certificates/FORMAT.md.
-// Exit 0: valid. Exit 1: the first claim that fails, on stderr. Exit 2: the file cannot be read.
+// reader. Every claim is re-derived from the scene stored in the file, and nothing in the file is
+// trusted: its kind is an explicit field, every object must have exactly the documented keys,
+// duplicate keys are rejected, indices must be exact integers in range, and contact labels are
+// recomputed from all maximisers. See certificates/FORMAT.md ("What the checker rejects").
+// Exit 0: valid. Exit 1: the first claim that fails, on stderr. Exit 2: the file cannot be read
+// (missing, too large, not strict JSON, too deeply nested, out of memory).
 #include <gmpxx.h>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <fstream>
+#include <cstdio>
 #include <iostream>
+#include <new>
 #include <set>
-#include <sstream>
 #include <string>
 #include <vector>
 
-namespace {
+namespace scalecert_check {
 using J = nlohmann::json;
 using Q = mpq_class;
 using V3 = std::array<Q, 3>;
 using P2 = std::array<Q, 2>;
 
-struct Invalid { std::string what; };
+// Limits on what is read at all (FORMAT.md): beyond them the file is unreadable (exit 2).
+constexpr size_t kMaxFileBytes = size_t(1) << 30;  // 1 GiB
+constexpr size_t kMaxDepth = 32;                    // certificates nest 7 levels deep
+
+struct Invalid { std::string what; };  // a claim that fails: exit 1
+struct Unreadable { std::string what; };  // not a readable file: exit 2
+
 long g_claims = 0;
 void claim(bool ok, const std::string& what) {
     ++g_claims;
     if (!ok) throw Invalid{what};
 }
 
+// ---- strict JSON (RFC 8259) -----------------------------------------------------------------
+// nlohmann's SAX parser in strict mode without comments; this handler builds the tree itself so
+// that it can reject duplicate keys (nlohmann keeps the last) and nesting deeper than kMaxDepth.
+class StrictTree : public nlohmann::json_sax<J> {
+public:
+    J root;
+    std::string error;
+    bool null() override { return put(J(nullptr)); }
+    bool boolean(bool v) override { return put(J(v)); }
+    bool number_integer(number_integer_t v) override { return put(J(v)); }
+    bool number_unsigned(number_unsigned_t v) override { return put(J(v)); }
+    bool number_float(number_float_t v, const string_t&) override { return put(J(v)); }
+    bool string(string_t& s) override { return put(J(std::move(s))); }
+    bool binary(binary_t&) override { return fail("binary values are not JSON"); }
+    bool start_object(std::size_t) override { return open(J::object()); }
+    bool start_array(std::size_t) override { return open(J::array()); }
+    bool end_object() override { stack_.pop_back(); return true; }
+    bool end_array() override { stack_.pop_back(); return true; }
+    bool key(string_t& k) override {
+        if (stack_.back()->contains(k)) return fail("duplicate key \"" + printable(k) + "\"");
+        key_ = std::move(k);
+        return true;
+    }
+    bool parse_error(std::size_t pos, const std::string&, const nlohmann::detail::exception&) override {
+        if (error.empty()) error = "not strict JSON (RFC 8259) near byte " + std::to_string(pos);
+        return false;
+    }
+    static std::string printable(const std::string& s) {
+        std::string out;
+        for (unsigned char c : s.substr(0, 40)) out += (c < 0x20 || c == 0x7f) ? '?' : static_cast<char>(c);
+        return s.size() > 40 ? out + "..." : out;
+    }
+
+private:
+    std::vector<J*> stack_;
+    std::string key_;
+    bool fail(const std::string& why) {
+        if (error.empty()) error = why;
+        return false;
+    }
+    J* place(J v) {
+        if (stack_.empty()) { root = std::move(v); return &root; }
+        J& top = *stack_.back();
+        if (top.is_array()) { top.push_back(std::move(v)); return &top.back(); }
+        return &(top[key_] = std::move(v));
+    }
+    bool put(J v) { place(std::move(v)); return true; }
+    bool open(J v) {
+        if (stack_.size() >= kMaxDepth) return fail("nested deeper than " + std::to_string(kMaxDepth) + " levels");
+        stack_.push_back(place(std::move(v)));
+        return true;
+    }
+};
+
+J parse_strict(const std::string& text) {
+    StrictTree t;
+    if (!J::sax_parse(text, &t, J::input_format_t::json, true, false)) throw Unreadable{t.error.empty() ? "not strict JSON" : t.error};
+    return std::move(t.root);
+}
+
+// ---- shapes ---------------------------------------------------------------------------------
+// o is an object with every key of `required`, and no key outside required ∪ optional.
+void shape(const J& o, const std::string& where, std::initializer_list<const char*> required,
+           std::initializer_list<const char*> optional = {}) {
+    claim(o.is_object(), (where.empty() ? std::string("the file") : where) + " is an object");
+    for (const char* k : required) claim(o.contains(k), where + (where.empty() ? "" : ".") + k + " is present");
+    for (auto it = o.begin(); it != o.end(); ++it) {
+        bool known = false;
+        for (const char* k : required) known = known || it.key() == k;
+        for (const char* k : optional) known = known || it.key() == k;
+        claim(known, (where.empty() ? std::string("the file") : where) + " has no field \"" + StrictTree::printable(it.key()) + "\"");
+    }
+}
+const J& at(const J& o, const char* k) { return o.find(k).value(); }  // after shape(): present
+
+// An index: a JSON integer (no fraction, no exponent) with 0 <= i < n.
+size_t index(const J& j, size_t n, const std::string& where) {
+    claim(j.is_number_unsigned() || (j.is_number_integer() && j.get<long long>() == 0), where + " is a non-negative JSON integer");
+    const unsigned long long v = j.get<unsigned long long>();
+    claim(v < n, where + " = " + std::to_string(v) + " is an index below " + std::to_string(n));
+    return static_cast<size_t>(v);
+}
+// A nonempty list of distinct indices below n.
+std::vector<int> index_list(const J& j, size_t n, const std::string& where) {
+    claim(j.is_array() && !j.empty(), where + " is a nonempty list of indices");
+    std::vector<int> out;
+    std::set<size_t> seen;
+    for (size_t k = 0; k < j.size(); ++k) {
+        size_t i = index(j[k], n, where + "[" + std::to_string(k) + "]");
+        claim(seen.insert(i).second, where + " names each vertex once");
+        out.push_back(static_cast<int>(i));
+    }
+    return out;
+}
+bool has(const std::vector<int>& v, int x) { return std::find(v.begin(), v.end(), x) != v.end(); }
+
 // ---- numbers -------------------------------------------------------------------------------
 // An exact number: "p" or "p/q", in lowest terms, q > 0.
 Q num(const J& j, const std::string& where) {
     claim(j.is_string(), where + " is an exact number string");
-    const std::string s = j.get<std::string>();
+    const std::string& s = j.get_ref<const std::string&>();
     size_t slash = s.find('/');
     auto is_int = [](const std::string& t, bool sign) {
         size_t b = (sign && !t.empty() && t[0] == '-') ? 1 : 0;
@@ -40,16 +146,16 @@ Q num(const J& j, const std::string& where) {
                (t.size() == b + 1 || t[b] != '0');
     };
     bool ok = slash == std::string::npos ? is_int(s, true) : is_int(s.substr(0, slash), true) && is_int(s.substr(slash + 1), false);
-    claim(ok, where + " = '" + s + "' is an integer or p/q");
+    claim(ok, where + " = '" + StrictTree::printable(s) + "' is an integer or p/q");
     Q q(s, 10);
-    claim(sgn(q.get_den()) > 0 && q.get_den() != 0, where + " has a nonzero denominator");
+    claim(sgn(q.get_den()) > 0, where + " has a nonzero denominator");
     Q c = q;
     c.canonicalize();
-    claim(c.get_str() == s, where + " = '" + s + "' is in lowest terms");
+    claim(c.get_str() == s, where + " = '" + StrictTree::printable(s) + "' is in lowest terms");
     return c;
 }
 
-// The double nearest to q, ties to even (GMP only).
+// The double nearest to q, ties to even (GMP only); ±infinity when that rounding overflows.
 double nearest(const Q& q) {
     if (sgn(q) == 0) return 0.0;
     mpz_class n = abs(q.get_num()), d = q.get_den(), m, r, D;
@@ -58,35 +164,45 @@ double nearest(const Q& q) {
         mpz_class N = n;
         D = d;
         if (e < -1074) e = -1074;
+        if (e > 2000) break;  // far beyond the double range: infinity below
         if (e < 0) N <<= static_cast<unsigned long>(-e); else D <<= static_cast<unsigned long>(e);
         mpz_fdiv_qr(m.get_mpz_t(), r.get_mpz_t(), N.get_mpz_t(), D.get_mpz_t());
         if (m >= (mpz_class(1) << 53)) { ++e; continue; }
         if (m < (mpz_class(1) << 52) && e > -1074) { --e; continue; }
         break;
     }
+    if (e > 2000) return sgn(q) < 0 ? -HUGE_VAL : HUGE_VAL;
     int c = cmp(mpz_class(2 * r), D);
     if (c > 0 || (c == 0 && mpz_odd_p(m.get_mpz_t()))) ++m;
-    double v = std::ldexp(m.get_d(), static_cast<int>(e));
+    double v = std::ldexp(m.get_d(), static_cast<int>(e));  // overflows to infinity past the range
     return sgn(q) < 0 ? -v : v;
 }
+// The `_double` of q: the nearest double, bit for bit (so -0 is not 0), or null exactly when the
+// nearest double would be infinite (the value is beyond the double range).
+bool is_nearest(const J& d, const Q& q) {
+    const double x = nearest(q);
+    if (std::isinf(x)) return d.is_null();
+    if (!d.is_number()) return false;
+    const double y = d.get<double>();
+    return y == x && std::signbit(y) == std::signbit(x);
+}
 
-// An exact field `key` of o, with its neighbour `key_double` equal to the nearest double.
+// An exact field `key` of o, with its neighbour `key_double` (shape() has required both).
 Q field(const J& o, const std::string& key, const std::string& where) {
-    claim(o.is_object() && o.contains(key), where + "." + key + " is present");
-    Q q = num(o[key], where + "." + key);
-    claim(o.contains(key + "_double") && o[key + "_double"].is_number() && o[key + "_double"].get<double>() == nearest(q),
-          where + "." + key + "_double is the nearest double to " + q.get_str());
+    const std::string w = where.empty() ? key : where + "." + key;
+    Q q = num(o.at(key), w);
+    claim(is_nearest(o.at(key + "_double"), q), w + "_double is the nearest double to " + StrictTree::printable(q.get_str()));
     return q;
 }
 std::vector<Q> fields(const J& o, const std::string& key, size_t n, const std::string& where) {
-    claim(o.is_object() && o.contains(key) && o[key].is_array() && o[key].size() == n, where + "." + key + " has " + std::to_string(n) + " entries");
-    const J& dd = o.contains(key + "_double") ? o[key + "_double"] : J();
+    claim(o.at(key).is_array() && o.at(key).size() == n, where + "." + key + " has " + std::to_string(n) + " entries");
+    const J& dd = o.at(key + "_double");
     claim(dd.is_array() && dd.size() == n, where + "." + key + "_double has " + std::to_string(n) + " entries");
     std::vector<Q> out;
     for (size_t i = 0; i < n; ++i) {
         std::string w = where + "." + key + "[" + std::to_string(i) + "]";
-        out.push_back(num(o[key][i], w));
-        claim(dd[i].is_number() && dd[i].get<double>() == nearest(out.back()), w + "_double is the nearest double");
+        out.push_back(num(o.at(key)[i], w));
+        claim(is_nearest(dd[i], out.back()), w + "_double is the nearest double");
     }
     return out;
 }
@@ -96,6 +212,7 @@ V3 sub(const V3& a, const V3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]
 V3 cross(const V3& a, const V3& b) {
     return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
 }
+bool nonzero(const V3& v) { return sgn(v[0]) || sgn(v[1]) || sgn(v[2]); }
 V3 point(const J& j, const std::string& where) {
     claim(j.is_array() && j.size() == 3, where + " is a point of 3 coordinates");
     return {num(j[0], where + "[0]"), num(j[1], where + "[1]"), num(j[2], where + "[2]")};
@@ -106,7 +223,8 @@ struct Scene {
     std::vector<V3> P[2];
     V3 s[2], d;
     Q lo[2], hi[2];
-    // h(n) for polyhedron i: max over vertices of σ n·(v − s_i), σ = +1 for P1, −1 for P2.
+    // h(n) for polyhedron i: max over vertices of σ n·(v − s_i), σ = +1 for P1, −1 for P2, and
+    // every vertex attaining it (ascending).
     Q h(int i, const V3& n, std::vector<int>* argmax = nullptr) const {
         Q best;
         for (size_t k = 0; k < P[i].size(); ++k) {
@@ -117,26 +235,35 @@ struct Scene {
         }
         return best;
     }
+    // The point s_i + ρ (v − s_i).
+    V3 scaled(int i, int k, const Q& rho) const {
+        V3 y;
+        for (int c = 0; c < 3; ++c) y[c] = s[i][c] + rho * (P[i][k][c] - s[i][c]);
+        return y;
+    }
 };
+const char* kPoly[2] = {"P1", "P2"};
 
 Scene read_scene(const J& j) {
-    claim(j.is_object(), "scene is an object");
+    shape(j, "scene", {"P1", "P2", "I1", "I2"});
     Scene sc;
-    const char* names[2] = {"P1", "P2"};
     for (int i = 0; i < 2; ++i) {
-        claim(j.contains(names[i]) && j[names[i]].contains("vertices") && j[names[i]]["vertices"].is_array(), std::string("scene.") + names[i] + ".vertices is present");
-        const J& vs = j[names[i]]["vertices"];
-        for (size_t k = 0; k < vs.size(); ++k) sc.P[i].push_back(point(vs[k], std::string("scene.") + names[i] + ".vertices[" + std::to_string(k) + "]"));
-        claim(sc.P[i].size() >= 4, std::string("scene.") + names[i] + " has at least 4 vertices");
-        claim(j[names[i]].contains("seed"), std::string("scene.") + names[i] + ".seed is present");
-        sc.s[i] = point(j[names[i]]["seed"], std::string("scene.") + names[i] + ".seed");
+        const std::string w = std::string("scene.") + kPoly[i];
+        const J& p = at(j, kPoly[i]);
+        shape(p, w, {"vertices", "seed"});
+        const J& vs = at(p, "vertices");
+        claim(vs.is_array(), w + ".vertices is a list");
+        for (size_t k = 0; k < vs.size(); ++k) sc.P[i].push_back(point(vs[k], w + ".vertices[" + std::to_string(k) + "]"));
+        claim(sc.P[i].size() >= 4, w + " has at least 4 vertices");
+        sc.s[i] = point(at(p, "seed"), w + ".seed");
     }
     sc.d = sub(sc.s[1], sc.s[0]);
     const char* iv[2] = {"I1", "I2"};
     for (int i = 0; i < 2; ++i) {
-        claim(j.contains(iv[i]) && j[iv[i]].is_array() && j[iv[i]].size() == 2, std::string("scene.") + iv[i] + " is [lo, hi]");
-        sc.lo[i] = num(j[iv[i]][0], std::string("scene.") + iv[i] + "[0]");
-        sc.hi[i] = num(j[iv[i]][1], std::string("scene.") + iv[i] + "[1]");
+        const J& r = at(j, iv[i]);
+        claim(r.is_array() && r.size() == 2, std::string("scene.") + iv[i] + " is [lo, hi]");
+        sc.lo[i] = num(r[0], std::string("scene.") + iv[i] + "[0]");
+        sc.hi[i] = num(r[1], std::string("scene.") + iv[i] + "[1]");
         claim(sgn(sc.lo[i]) > 0 && sc.lo[i] <= sc.hi[i], std::string("scene.") + iv[i] + " has 0 < lo <= hi");
     }
     return sc;
@@ -145,14 +272,14 @@ Scene read_scene(const J& j) {
 // Weights [[index, "w"], ...] over polyhedron i: distinct indices, w > 0, sum 1. Returns Σ w v.
 V3 combination(const Scene& sc, int i, const J& w, const std::string& where, std::vector<int>* used = nullptr) {
     claim(w.is_array() && !w.empty(), where + " is a nonempty list of weights");
-    std::set<long> seen;
+    std::set<size_t> seen;
     Q total = 0;
     V3 x{0, 0, 0};
     for (size_t k = 0; k < w.size(); ++k) {
         std::string wk = where + "[" + std::to_string(k) + "]";
-        claim(w[k].is_array() && w[k].size() == 2 && w[k][0].is_number_integer(), wk + " is [index, weight]");
-        long idx = w[k][0].get<long>();
-        claim(idx >= 0 && idx < static_cast<long>(sc.P[i].size()) && seen.insert(idx).second, wk + " names a distinct vertex");
+        claim(w[k].is_array() && w[k].size() == 2, wk + " is [index, weight]");
+        size_t idx = index(w[k][0], sc.P[i].size(), wk + " index");
+        claim(seen.insert(idx).second, wk + " names a distinct vertex");
         Q l = num(w[k][1], wk + " weight");
         claim(sgn(l) > 0, wk + " weight is > 0");
         total += l;
@@ -165,12 +292,11 @@ V3 combination(const Scene& sc, int i, const J& w, const std::string& where, std
 
 // The seed is a strictly positive combination of vertices that span 3 dimensions: interior.
 void check_seed_interior(const Scene& sc, const J& j) {
-    const char* names[2] = {"P1", "P2"};
+    shape(j, "seed_interior", {"P1", "P2"});
     for (int i = 0; i < 2; ++i) {
-        std::string w = std::string("seed_interior.") + names[i];
-        claim(j.is_object() && j.contains(names[i]), w + " is present");
+        std::string w = std::string("seed_interior.") + kPoly[i];
         std::vector<int> used;
-        claim(combination(sc, i, j[names[i]], w, &used) == sc.s[i], w + " combines to the seed");
+        claim(combination(sc, i, at(j, kPoly[i]), w, &used) == sc.s[i], w + " combines to the seed");
         const V3& o = sc.P[i][used[0]];
         bool spans = false;
         for (size_t a = 1; a < used.size() && !spans; ++a)
@@ -184,18 +310,17 @@ void check_seed_interior(const Scene& sc, const J& j) {
 
 // A witness: a common point of P1(ρ1) and P2(ρ2), s + ρ Σ λ (v − s) on each side.
 P2 check_witness(const Scene& sc, const J& w, const std::string& where) {
+    shape(w, where, {"rho1", "rho1_double", "rho2", "rho2_double", "point", "point_double", "P1", "P2"});
     Q r1 = field(w, "rho1", where), r2 = field(w, "rho2", where);
     claim(sgn(r1) >= 0 && sgn(r2) >= 0, where + " scalings are >= 0");
     std::vector<Q> x = fields(w, "point", 3, where);
     V3 p{x[0], x[1], x[2]};
     const Q* r[2] = {&r1, &r2};
-    const char* names[2] = {"P1", "P2"};
     for (int i = 0; i < 2; ++i) {
-        claim(w.contains(names[i]), where + "." + names[i] + " is present");
-        V3 c = combination(sc, i, w[names[i]], where + "." + names[i]);
+        V3 c = combination(sc, i, at(w, kPoly[i]), where + "." + kPoly[i]);
         V3 y;
         for (int k = 0; k < 3; ++k) y[k] = sc.s[i][k] + *r[i] * (c[k] - sc.s[i][k]);
-        claim(y == p, where + ".point lies in " + names[i] + "(rho" + std::to_string(i + 1) + ")");
+        claim(y == p, where + ".point lies in " + kPoly[i] + "(rho" + std::to_string(i + 1) + ")");
     }
     return {r1, r2};
 }
@@ -204,22 +329,26 @@ V3 normal(const J& j, const std::string& where) {
     claim(j.is_array() && j.size() == 3, where + " is a normal of 3 integers");
     V3 n = point(j, where);
     for (const Q& c : n) claim(c.get_den() == 1, where + " has integer components");
-    claim(sgn(n[0]) || sgn(n[1]) || sgn(n[2]), where + " is nonzero");
+    claim(nonzero(n), where + " is nonzero");
     return n;
 }
 
-// Feature lists: every listed vertex attains the support value; the letter is the dimension of
-// the set of all maximisers (V: one point, E: a segment, F: a polygon).
+// The letter of a vertex set: the dimension of its affine hull (V: a point, E: a segment, F: a
+// polygon or more).
 char dimension_letter(const Scene& sc, int i, const std::vector<int>& idx) {
     const V3& o = sc.P[i][idx[0]];
     int dim = 0;
-    V3 e1, c;
+    V3 e1;
     for (int k : idx) {
         V3 v = sub(sc.P[i][k], o);
-        if (dim == 0 && (sgn(v[0]) || sgn(v[1]) || sgn(v[2]))) { e1 = v; dim = 1; }
-        else if (dim == 1) { c = cross(e1, v); if (sgn(c[0]) || sgn(c[1]) || sgn(c[2])) dim = 2; }
+        if (dim == 0 && nonzero(v)) { e1 = v; dim = 1; }
+        else if (dim == 1 && nonzero(cross(e1, v))) dim = 2;
     }
     return "VEF"[dim];
+}
+std::string contact_string(const J& j, const std::string& where) {
+    claim(j.is_string() && j.get_ref<const std::string&>().size() == 2, where + " is a two-letter contact");
+    return j.get<std::string>();
 }
 
 // ---- the partition ----------------------------------------------------------------------------
@@ -252,34 +381,93 @@ std::vector<P2> clip(const std::vector<P2>& p, const Line& L, bool above) {
 }
 
 std::vector<P2> polygon(const J& j, const std::string& where) {
-    claim(j.is_object() && j.contains("vertices") && j["vertices"].is_array() && j.contains("vertices_double") && j["vertices_double"].size() == j["vertices"].size(), where + ".vertices is present");
+    const J& vs = at(j, "vertices");
+    const J& ds = at(j, "vertices_double");
+    claim(vs.is_array() && ds.is_array() && ds.size() == vs.size(), where + ".vertices and vertices_double are lists of one length");
     std::vector<P2> out;
-    for (size_t k = 0; k < j["vertices"].size(); ++k) {
+    for (size_t k = 0; k < vs.size(); ++k) {
         std::string w = where + ".vertices[" + std::to_string(k) + "]";
-        const J& v = j["vertices"][k];
-        const J& dv = j["vertices_double"][k];
-        claim(v.is_array() && v.size() == 2 && dv.is_array() && dv.size() == 2, w + " is a point");
-        P2 p{num(v[0], w), num(v[1], w)};
-        claim(dv[0].is_number() && dv[1].is_number() && dv[0].get<double>() == nearest(p[0]) && dv[1].get<double>() == nearest(p[1]), w + "_double is the nearest double");
+        claim(vs[k].is_array() && vs[k].size() == 2 && ds[k].is_array() && ds[k].size() == 2, w + " is a point");
+        P2 p{num(vs[k][0], w), num(vs[k][1], w)};
+        claim(is_nearest(ds[k][0], p[0]) && is_nearest(ds[k][1], p[1]), w + "_double is the nearest double");
         out.push_back(p);
     }
     return out;
 }
 
+// Engine statistics: an annotation, but of a fixed shape (non-negative integers).
+void check_model(const J& m) {
+    auto count = [](const J& j, const std::string& w) { claim(j.is_number_unsigned() || (j.is_number_integer() && j.get<long long>() == 0), w + " is a count"); };
+    shape(m, "model", {"P1", "P2", "facet_normals", "contact_lines", "edge_pairs_tested", "gauss_arc_crossings", "decided_by_filter", "decided_exactly"});
+    for (const char* p : kPoly) {
+        shape(at(m, p), std::string("model.") + p, {"vertices", "edges", "faces"});
+        for (const char* k : {"vertices", "edges", "faces"}) count(at(at(m, p), k), std::string("model.") + p + "." + k);
+    }
+    for (const char* k : {"facet_normals", "contact_lines", "edge_pairs_tested", "gauss_arc_crossings"}) count(at(m, k), std::string("model.") + k);
+    for (const char* k : {"decided_by_filter", "decided_exactly"}) {
+        shape(at(m, k), std::string("model.") + k, {"arc_signs", "support_comparisons"});
+        for (const char* s : {"arc_signs", "support_comparisons"}) count(at(at(m, k), s), std::string("model.") + k + "." + s);
+    }
+}
+void annotation_string(const J& o, const char* key, const std::string& where) {
+    if (o.contains(key)) claim(at(o, key).is_string(), where + "." + key + " is a string");
+}
+
+// The contact at a switch point between pieces with normals n and m, both touching at (ρ1, ρ2):
+// P_i(ρ_i) ∩ P_j(ρ_j) lies on both planes, so on their common line ℓ (n × m). On polyhedron i the
+// vertices maximising both normals (A_i, all of them) scale onto ℓ, spanning a segment S_i; the
+// touching set is T = S_1 ∩ S_2, and the contact feature of i is the smallest face holding T: S_i
+// (E) when T reaches into S_i's interior, else the one end it meets (V). Returns the letters, and
+// in g the vertices of each feature.
+std::string switch_contact(const Scene& sc, const V3& n, const V3& m, const Q rho[2], const std::vector<int> A[2],
+                           std::vector<int> g[2], const std::string& where) {
+    const V3 u = cross(n, m);
+    claim(nonzero(u), where + ": the neighbouring pieces' normals are not parallel");
+    std::vector<Q> t[2];
+    Q lo[2], hi[2];
+    for (int i = 0; i < 2; ++i) {
+        claim(!A[i].empty(), where + ": some vertex of " + kPoly[i] + " attains both neighbouring pieces' support values");
+        for (int k : A[i]) t[i].push_back(dot(u, sc.scaled(i, k, rho[i])));
+        lo[i] = *std::min_element(t[i].begin(), t[i].end());
+        hi[i] = *std::max_element(t[i].begin(), t[i].end());
+    }
+    const Q tlo = std::max(lo[0], lo[1]), thi = std::min(hi[0], hi[1]);
+    claim(tlo <= thi, where + ": the contact features of P1 and P2 meet");
+    std::string label;
+    for (int i = 0; i < 2; ++i) {
+        const bool edge = lo[i] < hi[i] && thi > lo[i] && tlo < hi[i];
+        const Q end = thi == lo[i] ? lo[i] : hi[i];  // the end T meets, when it is a vertex
+        g[i].clear();
+        for (size_t k = 0; k < A[i].size(); ++k)
+            if (edge || t[i][k] == end) g[i].push_back(A[i][k]);
+        label += edge ? 'E' : 'V';
+    }
+    return label;
+}
+
 void check_partition(const J& c) {
-    const Scene sc = read_scene(c.at("scene"));
-    check_seed_interior(sc, c.at("seed_interior"));
-    const J& pieces = c.at("pieces");
+    shape(c, "", {"format", "kind", "pieces", "switch_points", "growth_distance", "growth_distance_double",
+                  "growth_distance_in_rectangle", "curve_ends", "growth_distance_certificate", "regions", "seed_interior", "scene"},
+          {"model", "growth_distance_note"});
+    const Scene sc = read_scene(at(c, "scene"));
+    check_seed_interior(sc, at(c, "seed_interior"));
+    if (c.contains("model")) check_model(at(c, "model"));
+    const J& pieces = at(c, "pieces");
     claim(pieces.is_array() && !pieces.empty(), "pieces is a nonempty list");
     std::vector<Line> lines;
+    std::vector<V3> normals;
     std::vector<std::array<Q, 2>> ranges;
     std::vector<std::array<std::vector<int>, 2>> maxi;  // each piece's maximisers on P1, P2
     for (size_t k = 0; k < pieces.size(); ++k) {
         const J& p = pieces[k];
         std::string w = "pieces[" + std::to_string(k) + "]";
-        V3 n = normal(p.at("normal"), w + ".normal");
-        std::vector<int> f1, f2;
-        Q h1 = sc.h(0, n, &f1), h2 = sc.h(1, n, &f2);
+        shape(p, w, {"rho1", "rho1_double", "slope", "slope_double", "intercept", "intercept_double", "contact", "features",
+                     "normal", "h1", "h1_double", "h2", "h2_double", "support_vertices"},
+              {"closed_form", "same_line_normals"});
+        annotation_string(p, "closed_form", w);
+        V3 n = normal(at(p, "normal"), w + ".normal");
+        std::vector<int> f[2];
+        Q h1 = sc.h(0, n, &f[0]), h2 = sc.h(1, n, &f[1]);
         claim(field(p, "h1", w) == h1 && sgn(h1) > 0, w + ".h1 = max n.(v - s1) over P1, recomputed: " + h1.get_str());
         claim(field(p, "h2", w) == h2 && sgn(h2) > 0, w + ".h2 = max -n.(w - s2) over P2, recomputed: " + h2.get_str());
         Line L{-h1 / h2, dot(n, sc.d) / h2};
@@ -287,85 +475,110 @@ void check_partition(const J& c) {
         claim(field(p, "intercept", w) == L.b, w + ".intercept = n.d/h2");
         std::vector<Q> r = fields(p, "rho1", 2, w);
         claim(r[0] < r[1] || (pieces.size() == 1 && r[0] == r[1]), w + ".rho1 is a nonempty range");
-        const J& feats = p.at("features");
-        const std::vector<int>* all[2] = {&f1, &f2};
+        const J& feats = at(p, "features");
+        shape(feats, w + ".features", {"P1", "P2"});
+        const J& sv = at(p, "support_vertices");
+        shape(sv, w + ".support_vertices", {"P1", "P2"});
         for (int i = 0; i < 2; ++i) {
-            std::vector<int> listed = feats.at(i == 0 ? "P1" : "P2").get<std::vector<int>>();
-            for (int v : listed) claim(std::count(all[i]->begin(), all[i]->end(), v) == 1, w + ".features lists only maximisers");
-            claim(p.at("contact").get<std::string>() == std::string{dimension_letter(sc, 0, f1), dimension_letter(sc, 1, f2)}, w + ".contact is the dimension of the contact features");
+            for (int v : index_list(at(feats, kPoly[i]), sc.P[i].size(), w + ".features." + kPoly[i]))
+                claim(has(f[i], v), w + ".features lists only maximisers");
+            claim(has(f[i], static_cast<int>(index(at(sv, kPoly[i]), sc.P[i].size(), w + ".support_vertices." + kPoly[i]))),
+                  w + ".support_vertices attain the support values");
         }
-        const J& sv = p.at("support_vertices");
-        for (int i = 0; i < 2; ++i) {
-            long v = sv.at(i == 0 ? "P1" : "P2").get<long>();
-            claim(std::count(all[i]->begin(), all[i]->end(), v) == 1, w + ".support_vertices attain the support values");
-        }
-        if (p.contains("same_line_normals"))
-            for (const J& o : p["same_line_normals"]) {
+        claim(contact_string(at(p, "contact"), w + ".contact") == std::string{dimension_letter(sc, 0, f[0]), dimension_letter(sc, 1, f[1])},
+              w + ".contact is the dimension of all maximisers of its normal");
+        if (p.contains("same_line_normals")) {
+            const J& sl = at(p, "same_line_normals");
+            claim(sl.is_array() && !sl.empty(), w + ".same_line_normals is a nonempty list");
+            for (const J& o : sl) {
                 V3 m = normal(o, w + ".same_line_normals[]");
                 Q g1 = sc.h(0, m), g2 = sc.h(1, m);
                 claim(sgn(g2) > 0 && -g1 / g2 == L.a && dot(m, sc.d) / g2 == L.b, w + ".same_line_normals give the same line");
             }
+        }
         lines.push_back(L);
-        maxi.push_back({f1, f2});
+        normals.push_back(n);
+        maxi.push_back({f[0], f[1]});
         ranges.push_back({r[0], r[1]});
     }
     claim(ranges.front()[0] == sc.lo[0] && ranges.back()[1] == sc.hi[0], "the pieces cover I1 from end to end");
-    const J& sw = c.at("switch_points");
+    const J& sw = at(c, "switch_points");
     claim(sw.is_array() && sw.size() + 1 == pieces.size(), "one switch point between each two pieces");
     for (size_t k = 0; k + 1 < pieces.size(); ++k) {
         std::string w = "switch_points[" + std::to_string(k) + "]";
         claim(ranges[k][1] == ranges[k + 1][0], "pieces " + std::to_string(k) + " and " + std::to_string(k + 1) + " are contiguous");
         claim(lines[k].a < lines[k + 1].a, "the curve is convex: slopes increase at " + w);
+        claim(sw[k].is_object() && sw[k].contains("rho2") && sw[k]["rho2"].is_string(), w + ".rho2 is present");
+        const bool touching = sgn(num(sw[k]["rho2"], w + ".rho2")) > 0;
+        if (touching) shape(sw[k], w, {"rho1", "rho1_double", "rho2", "rho2_double", "contact", "features", "witness"}, {"equation"});
+        else shape(sw[k], w, {"rho1", "rho1_double", "rho2", "rho2_double", "contact"}, {"equation"});
+        annotation_string(sw[k], "equation", w);
         Q x = field(sw[k], "rho1", w), y = field(sw[k], "rho2", w);
         claim(x == ranges[k][1] && y == lines[k].at(x) && y == lines[k + 1].at(x), w + " is where the neighbouring lines meet");
-        if (sgn(y) <= 0) continue;
-        claim(sw[k].contains("witness") && check_witness(sc, sw[k]["witness"], w + ".witness") == P2{x, y}, w + " is touching (witness at the switch point)");
-        // The contact label: listed features are maximisers on both sides of the switch, and the
-        // letters are the dimensions of the listed sets.
-        std::string label;
-        for (int i = 0; i < 2; ++i) {
-            std::vector<int> listed = sw[k].at("features").at(i == 0 ? "P1" : "P2").get<std::vector<int>>();
-            claim(!listed.empty(), w + ".features are nonempty");
-            for (int v : listed)
-                claim(std::count(maxi[k][i].begin(), maxi[k][i].end(), v) && std::count(maxi[k + 1][i].begin(), maxi[k + 1][i].end(), v), w + ".features touch on both neighbouring pieces");
-            label += dimension_letter(sc, i, listed);
+        if (!touching) {
+            claim(at(sw[k], "contact").is_null(), w + ".contact is null: at rho2 <= 0 nothing touches");
+            continue;
         }
-        claim(sw[k].at("contact").get<std::string>() == label, w + ".contact is the dimension of its features");
+        claim(check_witness(sc, at(sw[k], "witness"), w + ".witness") == P2{x, y}, w + " is touching (witness at the switch point)");
+        // The contact label, recomputed from all maximisers of both neighbouring normals.
+        std::vector<int> A[2], g[2];
+        for (int i = 0; i < 2; ++i)
+            std::set_intersection(maxi[k][i].begin(), maxi[k][i].end(), maxi[k + 1][i].begin(), maxi[k + 1][i].end(), std::back_inserter(A[i]));
+        const Q rho[2] = {x, y};
+        const std::string label = switch_contact(sc, normals[k], normals[k + 1], rho, A, g, w);
+        claim(contact_string(at(sw[k], "contact"), w + ".contact") == label, w + ".contact is " + label + ", the features touching there");
+        const J& feats = at(sw[k], "features");
+        shape(feats, w + ".features", {"P1", "P2"});
+        for (int i = 0; i < 2; ++i)
+            for (int v : index_list(at(feats, kPoly[i]), sc.P[i].size(), w + ".features." + kPoly[i]))
+                claim(has(g[i], v), w + ".features lists only vertices of the contact feature");
     }
-    const J& ends = c.at("curve_ends");
+    const J& ends = at(c, "curve_ends");
     claim(ends.is_array() && ends.size() == 2, "curve_ends has the two ends");
     for (int e = 0; e < 2; ++e) {
         std::string w = "curve_ends[" + std::to_string(e) + "]";
+        claim(ends[e].is_object() && ends[e].contains("rho2") && ends[e]["rho2"].is_string(), w + ".rho2 is present");
+        const bool touching = sgn(num(ends[e]["rho2"], w + ".rho2")) > 0;
+        if (touching) shape(ends[e], w, {"rho1", "rho1_double", "rho2", "rho2_double", "witness"});
+        else shape(ends[e], w, {"rho1", "rho1_double", "rho2", "rho2_double"});
         Q x = field(ends[e], "rho1", w), y = field(ends[e], "rho2", w);
         const Line& L = e == 0 ? lines.front() : lines.back();
         claim(x == (e == 0 ? sc.lo[0] : sc.hi[0]) && y == L.at(x), w + " is the curve at the end of I1");
-        if (sgn(y) > 0) claim(ends[e].contains("witness") && check_witness(sc, ends[e]["witness"], w + ".witness") == P2{x, y}, w + " is touching");
+        if (touching) claim(check_witness(sc, at(ends[e], "witness"), w + ".witness") == P2{x, y}, w + " is touching");
     }
     // Growth distance: (ρ*, ρ*) touches — the plane of n has n.d = ρ*(h1 + h2) and a witness — or
     // the seeds coincide and ρ* = 0.
     Q g = field(c, "growth_distance", "");
-    const J& gc = c.at("growth_distance_certificate");
+    const J& gc = at(c, "growth_distance_certificate");
+    claim(gc.is_object(), "growth_distance_certificate is an object");
     if (gc.contains("seeds_coincide")) {
+        shape(gc, "growth_distance_certificate", {"seeds_coincide"});
+        claim(at(gc, "seeds_coincide") == J(true), "growth_distance_certificate.seeds_coincide is true");
         claim(sc.d == V3{0, 0, 0} && sgn(g) == 0, "growth distance 0: the seeds coincide");
     } else {
-        V3 n = normal(gc.at("normal"), "growth_distance_certificate.normal");
+        shape(gc, "growth_distance_certificate", {"normal", "h1", "h1_double", "h2", "h2_double", "witness"});
+        V3 n = normal(at(gc, "normal"), "growth_distance_certificate.normal");
         Q h1 = sc.h(0, n), h2 = sc.h(1, n);
         claim(field(gc, "h1", "growth_distance_certificate") == h1 && field(gc, "h2", "growth_distance_certificate") == h2, "growth_distance_certificate support values recomputed");
         claim(sgn(h1) > 0 && sgn(h2) > 0 && dot(n, sc.d) == g * (h1 + h2), "the growth distance's plane touches at (rho*, rho*)");
-        claim(check_witness(sc, gc.at("witness"), "growth_distance_certificate.witness") == P2{g, g}, "growth distance witness is at (rho*, rho*)");
+        claim(check_witness(sc, at(gc, "witness"), "growth_distance_certificate.witness") == P2{g, g}, "growth distance witness is at (rho*, rho*)");
     }
+    if (c.contains("growth_distance_note"))
+        claim(at(c, "growth_distance_note").is_string() && sgn(g) == 0, "growth_distance_note is a string, written only when the growth distance is 0");
     bool inside = g >= sc.lo[0] && g <= sc.hi[0] && g >= sc.lo[1] && g <= sc.hi[1];
-    claim(c.at("growth_distance_in_rectangle").get<bool>() == inside, "growth_distance_in_rectangle is right");
+    claim(at(c, "growth_distance_in_rectangle").is_boolean() && at(c, "growth_distance_in_rectangle").get<bool>() == inside, "growth_distance_in_rectangle is right");
     for (size_t k = 0; k < lines.size(); ++k)
         if (g >= ranges[k][0] && g <= ranges[k][1]) claim(lines[k].at(g) == g, "the growth distance lies on piece " + std::to_string(k));
     // Regions: the rectangle cut along the curve, recomputed here and compared vertex by vertex.
-    const J& reg = c.at("regions");
+    const J& reg = at(c, "regions");
+    shape(reg, "regions", {"overlap", "separated"});
     std::vector<P2> rect = normalize({{sc.lo[0], sc.lo[1]}, {sc.hi[0], sc.lo[1]}, {sc.hi[0], sc.hi[1]}, {sc.lo[0], sc.hi[1]}});
     std::vector<P2> over = rect;
     for (const Line& L : lines) if (!over.empty()) over = clip(over, L, true);
-    std::vector<P2> claimed = polygon(reg.at("overlap"), "regions.overlap");
-    claim(claimed == over, "regions.overlap is the rectangle on and above the curve");
-    const J& wit = reg["overlap"].at("witnesses");
+    const J& ov = at(reg, "overlap");
+    shape(ov, "regions.overlap", {"vertices", "vertices_double", "witnesses"});
+    claim(polygon(ov, "regions.overlap") == over, "regions.overlap is the rectangle on and above the curve");
+    const J& wit = at(ov, "witnesses");
     claim(wit.is_array() && wit.size() == over.size(), "every vertex of the overlap polygon has a witness");
     for (size_t k = 0; k < over.size(); ++k)
         claim(check_witness(sc, wit[k], "regions.overlap.witnesses[" + std::to_string(k) + "]") == over[k], "overlap witness " + std::to_string(k) + " is at its vertex");
@@ -379,70 +592,118 @@ void check_partition(const J& c) {
         for (size_t i = 0; i < s.size(); ++i) area += s[i][0] * s[(i + 1) % s.size()][1] - s[i][1] * s[(i + 1) % s.size()][0];
         if (s.size() >= 3 && sgn(area) > 0) { seps.push_back(s); owners.push_back(k); }
     }
-    const J& sr = reg.at("separated");
+    const J& sr = at(reg, "separated");
     claim(sr.is_array() && sr.size() == seps.size(), "regions.separated has one polygon per piece with area below the curve");
     for (size_t k = 0; k < seps.size(); ++k) {
         std::string w = "regions.separated[" + std::to_string(k) + "]";
-        claim(sr[k].at("piece").is_number_integer() && sr[k]["piece"].get<long>() == static_cast<long>(owners[k]), w + ".piece names its piece");
+        shape(sr[k], w, {"piece", "vertices", "vertices_double"});
+        claim(index(at(sr[k], "piece"), lines.size(), w + ".piece") == owners[k], w + ".piece names its piece");
         claim(polygon(sr[k], w) == seps[k], w + " is the rectangle strictly below its piece");
     }
 }
 
 // ---- a query answer ----------------------------------------------------------------------------
 void check_query(const J& c) {
-    const Scene sc = read_scene(c.at("scene"));
-    check_seed_interior(sc, c.at("seed_interior"));
-    const std::string v = c.at("verdict").get<std::string>();
+    shape(c, "", {"format", "kind", "verdict", "rho1", "rho1_double", "rho2", "rho2_double", "certificate", "seed_interior", "scene"},
+          {"segment"});
+    claim(!c.contains("segment") || at(c, "segment").is_object(), "segment is an object (an annotation: not checked)");
+    const J& vj = at(c, "verdict");
+    claim(vj.is_string(), "verdict is a string");
+    const std::string v = vj.get<std::string>();
+    claim(v == "separated" || v == "touching" || v == "overlapping", "the verdict is separated, touching or overlapping");
+    const Scene sc = read_scene(at(c, "scene"));
+    check_seed_interior(sc, at(c, "seed_interior"));
     Q r1 = field(c, "rho1", ""), r2 = field(c, "rho2", "");
     claim(sgn(r1) > 0 && sgn(r2) > 0, "the scalings are > 0");
-    const J& cert = c.at("certificate");
+    const J& cert = at(c, "certificate");
+    if (v == "separated") shape(cert, "certificate", {"plane"});
+    if (v == "touching") shape(cert, "certificate", {"plane", "witness"});
+    if (v == "overlapping") shape(cert, "certificate", {"witness"});
     if (v == "separated" || v == "touching") {
-        const J& pl = cert.at("plane");
-        V3 n = normal(pl.at("normal"), "plane.normal");
+        const J& pl = at(cert, "plane");
+        shape(pl, "plane", {"normal", "offset", "offset_double", "P1_max", "P1_max_double", "P2_min", "P2_min_double", "support_vertices", "contact"});
+        V3 n = normal(at(pl, "normal"), "plane.normal");
         std::vector<int> f1, f2;
         Q c1 = dot(n, sc.s[0]) + r1 * sc.h(0, n, &f1), c2 = dot(n, sc.s[1]) - r2 * sc.h(1, n, &f2);
-        claim(std::count(f1.begin(), f1.end(), pl.at("support_vertices").at("P1").get<long>()) == 1 &&
-              std::count(f2.begin(), f2.end(), pl.at("support_vertices").at("P2").get<long>()) == 1, "plane.support_vertices attain the extremes");
-        claim(pl.at("contact").get<std::string>() == std::string{dimension_letter(sc, 0, f1), dimension_letter(sc, 1, f2)}, "plane.contact is the dimension of the extreme sets");
+        const J& sv = at(pl, "support_vertices");
+        shape(sv, "plane.support_vertices", {"P1", "P2"});
+        claim(has(f1, static_cast<int>(index(at(sv, "P1"), sc.P[0].size(), "plane.support_vertices.P1"))) &&
+              has(f2, static_cast<int>(index(at(sv, "P2"), sc.P[1].size(), "plane.support_vertices.P2"))), "plane.support_vertices attain the extremes");
+        claim(contact_string(at(pl, "contact"), "plane.contact") == std::string{dimension_letter(sc, 0, f1), dimension_letter(sc, 1, f2)}, "plane.contact is the dimension of the extreme sets");
         claim(field(pl, "P1_max", "plane") == c1 && field(pl, "P2_min", "plane") == c2, "plane.P1_max and P2_min recomputed from the vertices");
         claim(field(pl, "offset", "plane") == (c1 + c2) / 2, "plane.offset is midway");
         claim(v == "separated" ? c1 < c2 : c1 == c2, v == "separated" ? "the plane separates strictly" : "the plane supports both");
     }
-    if (v == "touching") claim(check_witness(sc, cert.at("witness"), "witness") == P2{r1, r2}, "the witness is at the queried pair");
+    if (v == "touching") claim(check_witness(sc, at(cert, "witness"), "witness") == P2{r1, r2}, "the witness is at the queried pair");
     if (v == "overlapping") {
-        P2 w = check_witness(sc, cert.at("witness"), "witness");
+        P2 w = check_witness(sc, at(cert, "witness"), "witness");
         claim(w[0] < r1 && w[1] < r2, "the witness is at a smaller pair, hence interior to both");
     }
-    claim(v == "separated" || v == "touching" || v == "overlapping", "the verdict is a known word");
 }
-}  // namespace
 
+// Checks a whole file's text. Returns the exit status; `message` is the line to print.
+int check_text(const std::string& text, std::string& message) {
+    g_claims = 0;
+    try {
+        if (text.size() > kMaxFileBytes) throw Unreadable{"larger than " + std::to_string(kMaxFileBytes) + " bytes"};
+        const J c = parse_strict(text);
+        try {
+            claim(c.is_object() && c.contains("format") && c["format"] == J("scalecert-2"), "format is scalecert-2");
+            claim(c.contains("kind") && c["kind"].is_string(), "kind is present");
+            const std::string kind = c["kind"].get<std::string>();
+            if (kind == "partition") check_partition(c);
+            else if (kind == "query") check_query(c);
+            else claim(false, "kind is partition or query (got '" + StrictTree::printable(kind) + "': not a certificate)");
+        } catch (const Invalid& e) {
+            message = "invalid: " + e.what;
+            return 1;
+        } catch (const J::exception& e) {
+            message = std::string("invalid: mistyped field (") + e.what() + ")";
+            return 1;
+        }
+    } catch (const Unreadable& e) {
+        message = "error: " + e.what;
+        return 2;
+    } catch (const std::bad_alloc&) {
+        message = "error: out of memory";
+        return 2;
+    } catch (const std::length_error&) {
+        message = "error: out of memory";
+        return 2;
+    }
+    message = "valid: " + std::to_string(g_claims) + " claims checked";
+    return 0;
+}
+}  // namespace scalecert_check
+
+#ifndef SCALECERT_CHECK_NO_MAIN
 int main(int argc, char** argv) {
     if (argc != 2) {
         std::cerr << "usage: scalecert-check CERTIFICATE.json\n";
         return 2;
     }
-    J c;
-    {
-        std::ifstream in(argv[1], std::ios::binary);
-        if (!in) { std::cerr << "scalecert-check: error: cannot open " << argv[1] << "\n"; return 2; }
-        std::stringstream ss;
-        ss << in.rdbuf();
-        try { c = J::parse(ss.str()); } catch (const J::exception&) {
-            std::cerr << "scalecert-check: error: " << argv[1] << " is not JSON\n";
-            return 2;
-        }
-    }
+    std::string name = scalecert_check::StrictTree::printable(argv[1]), text;
     try {
-        claim(c.is_object() && c.value("format", "") == "scalecert-1", "format is scalecert-1");
-        if (c.contains("verdict")) check_query(c); else check_partition(c);
-    } catch (const Invalid& e) {
-        std::cerr << "scalecert-check: invalid: " << e.what << "\n";
-        return 1;
-    } catch (const J::exception& e) {
-        std::cerr << "scalecert-check: invalid: missing or mistyped field (" << e.what() << ")\n";
-        return 1;
+        std::FILE* f = std::fopen(argv[1], "rb");
+        if (!f) { std::cerr << "scalecert-check: error: " << name << ": cannot open\n"; return 2; }
+        char buf[1 << 16];
+        size_t got;
+        bool too_big = false;
+        while ((got = std::fread(buf, 1, sizeof buf, f)) > 0) {
+            text.append(buf, got);
+            if (text.size() > scalecert_check::kMaxFileBytes) { too_big = true; break; }
+        }
+        const bool failed = std::ferror(f) != 0;
+        std::fclose(f);
+        if (failed) { std::cerr << "scalecert-check: error: " << name << ": cannot read (is it a directory?)\n"; return 2; }
+        if (too_big) { std::cerr << "scalecert-check: error: " << name << ": larger than 1 GiB\n"; return 2; }
+        std::string message;
+        int status = scalecert_check::check_text(text, message);
+        (status == 0 ? std::cout : std::cerr) << (status == 0 ? "" : "scalecert-check: ") << (status == 2 ? "error: " + name + ": " + message.substr(7) : message) << "\n";
+        return status;
+    } catch (const std::bad_alloc&) {
+        std::cerr << "scalecert-check: error: " << name << ": out of memory\n";
+        return 2;
     }
-    std::cout << "valid: " << g_claims << " claims checked\n";
-    return 0;
 }
+#endif

@@ -4,7 +4,11 @@
 #include "scalecert/witness.hpp"
 
 #include <mpfr.h>
+#include <sys/stat.h>
 #include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
 
 #include <cstdio>
 #include <fstream>
@@ -12,7 +16,7 @@
 namespace scalecert {
 
 namespace {
-const char* kFormat = "scalecert-1";
+const char* kFormat = "scalecert-2";
 
 // An exact value and, in `key_double`, its nearest double.
 void put(Json& o, const std::string& key, const Q& q) {
@@ -112,6 +116,7 @@ Json switch_json(const SwitchPoint& s) {
 Json curve_body(const Model& m, const Curve& c, bool certificate) {
     Json j;
     j["format"] = kFormat;
+    j["kind"] = certificate ? "partition" : "curve";
     Json pieces = Json::array();
     for (const CurvePiece& p : c.pieces) pieces.push_back(piece_json(m, c, p, certificate));
     j["pieces"] = pieces;
@@ -148,8 +153,9 @@ Json curve_json(const Model& m, const Curve& c) { return curve_body(m, c, false)
 
 Json query_json(const Model& m, const QueryResult& r) {
     Json j;
-    j["verdict"] = verdict_name(r.verdict);
     j["format"] = kFormat;
+    j["kind"] = "query";
+    j["verdict"] = verdict_name(r.verdict);
     put(j, "rho1", r.rho1);
     put(j, "rho2", r.rho2);
     Json cert;
@@ -314,22 +320,55 @@ void add_query_segment_json(Json& j, const Segment& s, const Q& rho1, const Q& r
 
 std::string dump(const Json& j) { return j.dump(1) + "\n"; }
 
-void write_file_atomically(const std::string& path, const std::string& text) {
-    std::string tmp = path + ".tmp." + std::to_string(::getpid());
-    {
-        std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
-        if (!f) throw InputError(path + ": cannot open for writing");
-        f << text;
-        f.flush();
-        if (!f) {
-            std::remove(tmp.c_str());
-            throw InputError(path + ": write failed");
-        }
+namespace {
+// A temporary file beside `path`, created exclusively (mkstemp: O_CREAT | O_EXCL, an unpredictable
+// name) so that nothing planted there is followed, holding `text` on disk (fsync). Refuses a
+// target that exists and is not a regular file (a device, a directory, a symbolic link).
+std::string write_temporary(const std::string& path, const std::string& text) {
+    struct stat st {};
+    if (::lstat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode))
+        throw InputError(path + ": exists and is not a regular file (refused as an output)");
+    const auto slash = path.rfind('/');
+    const std::string dir = slash == std::string::npos ? "." : path.substr(0, slash == 0 ? 1 : slash);
+    const std::string base = slash == std::string::npos ? path : path.substr(slash + 1);
+    if (base.empty()) throw InputError(path + ": not a file name");
+    std::string tmp = dir + "/." + base + ".tmp.XXXXXX";
+    int fd = ::mkstemp(&tmp[0]);
+    if (fd < 0) throw InputError(path + ": cannot create a file in " + dir + " (" + std::strerror(errno) + ")");
+    const mode_t mask = ::umask(0);
+    ::umask(mask);
+    bool ok = ::fchmod(fd, 0666 & ~mask) == 0;
+    for (size_t done = 0; ok && done < text.size();) {
+        const ssize_t w = ::write(fd, text.data() + done, text.size() - done);
+        if (w < 0 && errno == EINTR) continue;
+        ok = w > 0;
+        if (ok) done += static_cast<size_t>(w);
     }
-    if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-        std::remove(tmp.c_str());
-        throw InputError(path + ": cannot rename the temporary file into place");
+    ok = ok && ::fsync(fd) == 0;
+    ok = ::close(fd) == 0 && ok;
+    if (!ok) {
+        ::unlink(tmp.c_str());
+        throw InputError(path + ": write failed");
     }
+    return tmp;
 }
+}  // namespace
+
+void write_files_atomically(const std::vector<std::pair<std::string, std::string>>& files) {
+    std::vector<std::string> tmps;
+    try {
+        for (const auto& [path, text] : files) tmps.push_back(write_temporary(path, text));
+    } catch (...) {
+        for (const std::string& t : tmps) ::unlink(t.c_str());
+        throw;
+    }
+    for (size_t i = 0; i < files.size(); ++i)
+        if (std::rename(tmps[i].c_str(), files[i].first.c_str()) != 0) {
+            for (size_t k = i; k < tmps.size(); ++k) ::unlink(tmps[k].c_str());
+            throw InputError(files[i].first + ": cannot rename the temporary file into place");
+        }
+}
+
+void write_file_atomically(const std::string& path, const std::string& text) { write_files_atomically({{path, text}}); }
 
 }  // namespace scalecert

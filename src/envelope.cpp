@@ -3,6 +3,7 @@
 #include "scalecert/closed_forms.hpp"
 
 #include <algorithm>
+#include <iterator>
 #include <numeric>
 
 namespace scalecert {
@@ -63,25 +64,41 @@ Q Envelope::value(const std::vector<ContactLine>& lines, const Q& x) const {
     return lines[pieces[locate(x)].line].at(x);
 }
 
-Contact contact_at(const Model& m, const Q& rho1, const Q& rho2) {
-    Contact c;
-    bool first = true;
-    for (const ContactLine& L : m.lines) {
-        if (L.at(rho1) != rho2) continue;
-        if (first) {
-            c.feat1 = L.feat1;
-            c.feat2 = L.feat2;
-            first = false;
-            continue;
+Contact contact_at(const Model& m, const ContactLine& L, const ContactLine& R, const Q& rho1, const Q& rho2) {
+    // Both planes touch, so P1(ρ1) ∩ P2(ρ2) lies on their common line, direction u = nL × nR. The
+    // vertices of P_i maximising both normals scale onto that line and span a segment S_i; the
+    // touching set is S_1 ∩ S_2, and the contact feature of P_i is the smallest face holding it:
+    // S_i (an edge) when the touching set reaches into S_i's interior, else the end it meets.
+    const Vec3z u = cross(L.normal, R.normal);
+    const std::vector<int>* fl[2] = {&L.feat1, &L.feat2};
+    const std::vector<int>* fr[2] = {&R.feat1, &R.feat2};
+    const Q rho[2] = {rho1, rho2};
+    std::vector<int> A[2];
+    std::vector<Q> t[2];
+    Q lo[2], hi[2];
+    for (int i = 0; i < 2; ++i) {
+        std::set_intersection(fl[i]->begin(), fl[i]->end(), fr[i]->begin(), fr[i]->end(), std::back_inserter(A[i]));
+        if (A[i].empty() || is_zero(u)) throw std::logic_error("contact_at: point not on a consistent contact");
+        for (int k : A[i]) {
+            const Vec3q& v = m.P[i].points[k];
+            Q x = 0;
+            for (int c = 0; c < 3; ++c) x += Q(u[c]) * (m.s[i][c] + rho[i] * (v[c] - m.s[i][c]));
+            t[i].push_back(x);
         }
-        std::vector<int> a, b;
-        std::set_intersection(c.feat1.begin(), c.feat1.end(), L.feat1.begin(), L.feat1.end(), std::back_inserter(a));
-        std::set_intersection(c.feat2.begin(), c.feat2.end(), L.feat2.begin(), L.feat2.end(), std::back_inserter(b));
-        c.feat1 = std::move(a);
-        c.feat2 = std::move(b);
+        lo[i] = *std::min_element(t[i].begin(), t[i].end());
+        hi[i] = *std::max_element(t[i].begin(), t[i].end());
     }
-    if (first || c.feat1.empty() || c.feat2.empty()) throw std::logic_error("contact_at: point not on a consistent contact");
-    c.label = {feature_letter(c.feat1.size()), feature_letter(c.feat2.size())};
+    const Q tlo = std::max(lo[0], lo[1]), thi = std::min(hi[0], hi[1]);
+    if (tlo > thi) throw std::logic_error("contact_at: the contact features do not meet");
+    Contact c;
+    std::vector<int>* out[2] = {&c.feat1, &c.feat2};
+    for (int i = 0; i < 2; ++i) {
+        const bool edge = lo[i] < hi[i] && thi > lo[i] && tlo < hi[i];
+        const Q& end = thi == lo[i] ? lo[i] : hi[i];
+        for (size_t k = 0; k < A[i].size(); ++k)
+            if (edge || t[i][k] == end) out[i]->push_back(A[i][k]);
+        c.label += edge ? 'E' : 'V';
+    }
     return c;
 }
 
@@ -110,7 +127,7 @@ Curve build_curve(const Model& m) {
         sp.equation = cs.equation;
         if (sp.rho1 != c.pieces[k].to) throw std::logic_error("closed-form switch point disagrees with the envelope");
         // For ρ2 ≤ 0 nothing touches (P2 would be a point or reflected): no contact there.
-        if (sgn(sp.rho2) > 0) sp.contact = contact_at(m, sp.rho1, sp.rho2);
+        if (sgn(sp.rho2) > 0) sp.contact = contact_at(m, L, R, sp.rho1, sp.rho2);
         c.switches.push_back(std::move(sp));
     }
     // Growth distance: f(ρ) = ρ. g(ρ) = f(ρ) − ρ decreases strictly, g(0) = max intercept ≥ 0.

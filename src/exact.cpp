@@ -3,7 +3,9 @@
 
 #include <mpfr.h>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
+#include <sys/stat.h>
 
 namespace scalecert {
 
@@ -63,13 +65,32 @@ bool all_digits(const std::string& s, size_t b, size_t e) {
         if (s[i] < '0' || s[i] > '9') return false;
     return true;
 }
-// [+-]digits
-Z parse_integer(const std::string& s) {
+// [+-]digits into z; false for anything else.
+bool parse_integer(const std::string& s, Z& z) {
     size_t b = (!s.empty() && (s[0] == '-' || s[0] == '+')) ? 1 : 0;
-    if (!all_digits(s, b, s.size())) throw InputError("'" + s + "' is not an exact number");
-    return Z(s[0] == '+' ? s.substr(1) : s, 10);
+    if (!all_digits(s, b, s.size())) return false;
+    z = Z(s[0] == '+' ? s.substr(1) : s, 10);
+    return true;
 }
 }  // namespace
+
+std::string quoted(const std::string& text) {
+    constexpr size_t kShown = 40;
+    std::string out = "'";
+    for (size_t i = 0; i < text.size() && i < kShown; ++i) {
+        const unsigned char c = static_cast<unsigned char>(text[i]);
+        if (c == '\\') out += "\\\\";
+        else if (c == '\'') out += "\\'";
+        else if (c < 0x20 || c == 0x7f) {
+            char buf[8];
+            std::snprintf(buf, sizeof buf, "\\x%02x", c);
+            out += buf;
+        } else out += static_cast<char>(c);
+    }
+    out += "'";
+    if (text.size() > kShown) out += " (" + std::to_string(text.size()) + " characters, cut)";
+    return out;
+}
 
 Q parse_exact(const std::string& text) {
     // Plain integers of up to 18 digits (most coordinates): no detour through strings.
@@ -83,15 +104,18 @@ Q parse_exact(const std::string& text) {
             return r;
         }
     }
-    const std::string bad = "'" + text + "' is not an exact number";
-    if (text.empty() || text.size() > 100000) throw InputError(bad);
+    auto bad = [&text] { return InputError(quoted(text) + " is not an exact number"); };
+    if (text.size() > kMaxNumberChars)
+        throw InputError(quoted(text) + " is longer than " + std::to_string(kMaxNumberChars) + " characters, the limit for one number");
+    if (text.empty()) throw bad();
     size_t slash = text.find('/');
     if (slash != std::string::npos) {
-        Z p = parse_integer(text.substr(0, slash));
+        Z p, q;
+        if (!parse_integer(text.substr(0, slash), p)) throw bad();
         std::string ds = text.substr(slash + 1);
-        if (ds.empty() || ds[0] == '-' || ds[0] == '+') throw InputError(bad);
-        Z q = parse_integer(ds);
-        if (q == 0) throw InputError("'" + text + "' has a zero denominator");
+        if (ds.empty() || ds[0] == '-' || ds[0] == '+') throw bad();
+        if (!parse_integer(ds, q)) throw bad();
+        if (q == 0) throw InputError(quoted(text) + " has a zero denominator");
         Q r(p, q);
         r.canonicalize();
         return r;
@@ -109,26 +133,57 @@ Q parse_exact(const std::string& text) {
         digits += text.substr(fb, i - fb);
         frac_len = static_cast<long>(i - fb);
     }
-    if (digits.empty()) throw InputError(bad);
+    if (digits.empty()) throw bad();
     long exponent = 0;
     if (i < text.size() && (text[i] == 'e' || text[i] == 'E')) {
         ++i;
         size_t eb = i;
         if (i < text.size() && (text[i] == '+' || text[i] == '-')) ++i;
-        if (!all_digits(text, i, text.size())) throw InputError(bad);
-        if (text.size() - i > 6) throw InputError("'" + text + "' has an exponent too large to read exactly");
+        if (!all_digits(text, i, text.size())) throw bad();
+        if (text.size() - i > 6) throw InputError(quoted(text) + " has an exponent too large to read exactly");
         exponent = std::stol(text.substr(eb));
         i = text.size();
     }
-    if (i != text.size()) throw InputError(bad);
+    if (i != text.size()) throw bad();
     long e = exponent - frac_len;
-    if (e > 100000 || e < -100000) throw InputError("'" + text + "' has an exponent too large to read exactly");
+    if (e > 100000 || e < -100000) throw InputError(quoted(text) + " has an exponent too large to read exactly");
     Z m(digits, 10);
     Z p10;
     mpz_ui_pow_ui(p10.get_mpz_t(), 10, static_cast<unsigned long>(e < 0 ? -e : e));
     Q r = e >= 0 ? Q(m * p10) : Q(m, p10);
     r.canonicalize();
     return negative ? Q(-r) : r;
+}
+
+std::string read_input(const std::string& path, const std::string& what, size_t max_bytes) {
+    const std::string name = path == "-" ? std::string("standard input") : path;
+    std::FILE* f = path == "-" ? stdin : std::fopen(path.c_str(), "rb");
+    if (!f) throw InputError(name + ": cannot open " + what);
+    struct stat st {};
+    const bool known = fstat(fileno(f), &st) == 0;
+    auto refuse = [&](const std::string& why) {
+        if (f != stdin) std::fclose(f);
+        return InputError(name + ": " + why);
+    };
+    if (known && S_ISDIR(st.st_mode)) throw refuse("is a directory, not a " + what);
+    if (known && S_ISREG(st.st_mode) && static_cast<unsigned long long>(st.st_size) > max_bytes)
+        throw refuse(what + " larger than " + std::to_string(max_bytes >> 20) + " MiB (the limit)");
+    // A regular file in one read of its size; a stream in growing blocks, up to the limit.
+    std::string text;
+    size_t used = 0, cap = 1 << 20;
+    if (known && S_ISREG(st.st_mode) && st.st_size > 0) cap = static_cast<size_t>(st.st_size) + 1;
+    for (;; cap *= 2) {
+        cap = std::min(cap, max_bytes + 1);
+        text.resize(cap);
+        used += std::fread(&text[used], 1, cap - used, f);
+        if (used < cap || used > max_bytes) break;
+    }
+    const bool failed = std::ferror(f) != 0;
+    if (failed) throw refuse("cannot read " + what);
+    if (f != stdin) std::fclose(f);
+    if (used > max_bytes) throw InputError(name + ": " + what + " larger than " + std::to_string(max_bytes >> 20) + " MiB (the limit)");
+    text.resize(used);
+    return text;
 }
 
 Q exact_from_double(double d) {
@@ -142,7 +197,7 @@ Q parse_number(const std::string& text, bool binary_doubles) {
     if (!binary_doubles) return parse_exact(text);
     char* end = nullptr;
     double d = std::strtod(text.c_str(), &end);
-    if (text.empty() || end == text.c_str() || *end != '\0') throw InputError("'" + text + "' is not a number");
+    if (text.empty() || end == text.c_str() || *end != '\0') throw InputError(quoted(text) + " is not a number");
     return exact_from_double(d);
 }
 

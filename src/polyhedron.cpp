@@ -415,8 +415,12 @@ Polyhedron build_polyhedron(const std::vector<Vec3q>& pts, const std::string& na
     P.points = pts;
     // Integer coordinates: every point times the lcm of all denominators (same planes, same order).
     P.scale = 1;
-    for (const Vec3q& v : pts)
+    for (const Vec3q& v : pts) {
         for (const Q& c : v) mpz_lcm(P.scale.get_mpz_t(), P.scale.get_mpz_t(), c.get_den_mpz_t());
+        if (mpz_sizeinbase(P.scale.get_mpz_t(), 2) > kMaxDenominatorBits)
+            throw InputError(name + ": the common denominator of the coordinates has more than " + std::to_string(kMaxDenominatorBits) +
+                             " bits (the limit; README \"Limits\")");
+    }
     P.ipts.resize(pts.size());
     bool small = true;
     for (size_t i = 0; i < pts.size(); ++i)

@@ -1,7 +1,5 @@
 #include "scalecert/scene.hpp"
 
-#include <nlohmann/json.hpp>
-
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
@@ -16,7 +14,6 @@ namespace {
 struct JNode {
     enum Kind { Null, Bool, Number, String, Array, Object } kind = Null;
     std::string text;         // number as written, or string value
-    bool integer_token = false;
     std::vector<JNode> items;  // array items, or object values
     std::vector<std::string> keys;
     const JNode* find(const std::string& k) const {
@@ -26,94 +23,168 @@ struct JNode {
     }
 };
 
-// nlohmann's lexer turns number tokens into doubles (and rejects 1e999 as an overflow), so every
-// number token outside strings is first wrapped as a string carrying a marker; the tree builder
-// turns it back into a number with its text intact. `map` records (new offset, old offset) pairs
-// so that error positions still name bytes of the user's file.
-const std::string kNumMark = "\\u0000#";  // JSON escape for NUL, then '#'
-const std::string kNumMarkDecoded = std::string(1, '\0') + "#";
+// A strict RFC 8259 reader: no comments, no leading zeros, no bare keys, no trailing commas,
+// UTF-8 only, duplicate keys rejected (a file must not mean two things), and at most kMaxDepth
+// levels of nesting (scenes need 4), so neither the reader nor the tree's destructor can exhaust
+// the stack. Throws JsonError with the byte offset.
+constexpr int kMaxDepth = 64;
+struct JsonError { size_t pos; std::string what; };
 
-std::string quote_numbers(const std::string& in, std::vector<std::pair<size_t, size_t>>& map) {
-    std::string out;
-    out.reserve(in.size() + in.size() / 4);
-    bool in_str = false;
-    for (size_t i = 0; i < in.size(); ++i) {
-        char c = in[i];
-        if (in_str) {
-            out += c;
-            if (c == '\\' && i + 1 < in.size()) out += in[++i];
-            else if (c == '"') in_str = false;
-            continue;
-        }
-        if (c == '"') { in_str = true; out += c; continue; }
-        if (c == '-' || (c >= '0' && c <= '9')) {
-            size_t j = i;
-            while (j < in.size() && (std::isdigit(static_cast<unsigned char>(in[j])) || std::strchr("+-.eE", in[j]))) ++j;
-            out += '"' + kNumMark + in.substr(i, j - i) + '"';
-            map.push_back({out.size(), j});
-            i = j - 1;
-            continue;
-        }
-        out += c;
-    }
-    return out;
-}
-
-size_t original_position(size_t pos, const std::vector<std::pair<size_t, size_t>>& map) {
-    size_t shift_new = 0, shift_old = 0;
-    for (const auto& [n, o] : map) {
-        if (n > pos) break;
-        shift_new = n;
-        shift_old = o;
-    }
-    return shift_old + (pos - shift_new);
-}
-
-class TreeBuilder : public nlohmann::json_sax<nlohmann::json> {
+class StrictJson {
 public:
-    JNode root;
-    size_t error_pos = 0;
-    bool null() override { return put(JNode{}); }
-    bool boolean(bool) override { JNode n; n.kind = JNode::Bool; return put(std::move(n)); }
-    bool number_integer(number_integer_t v) override { return num(std::to_string(v), true); }
-    bool number_unsigned(number_unsigned_t v) override { return num(std::to_string(v), true); }
-    bool number_float(number_float_t, const string_t& s) override { return num(s, false); }
-    bool string(string_t& s) override {
-        if (s.compare(0, kNumMarkDecoded.size(), kNumMarkDecoded) == 0) {
-            std::string t = s.substr(kNumMarkDecoded.size());
-            return num(t, t.find_first_of(".eE") == std::string::npos);
-        }
-        JNode n; n.kind = JNode::String; n.text = s; return put(std::move(n));
-    }
-    bool binary(binary_t&) override { return false; }
-    bool start_object(std::size_t) override { return open(JNode::Object); }
-    bool key(string_t& k) override { stack_.back()->keys.push_back(k); return true; }
-    bool end_object() override { stack_.pop_back(); return true; }
-    bool start_array(std::size_t) override { return open(JNode::Array); }
-    bool end_array() override { stack_.pop_back(); return true; }
-    bool parse_error(std::size_t pos, const std::string&, const nlohmann::detail::exception&) override {
-        error_pos = pos;
-        return false;
+    explicit StrictJson(const std::string& t) : s_(t) {}
+    JNode parse() {
+        JNode root;
+        ws();
+        value(root, 0);
+        ws();
+        if (i_ != s_.size()) unexpected("unexpected text after the JSON value");
+        return root;
     }
 
 private:
-    std::vector<JNode*> stack_;
-    bool started_ = false;
-    bool num(const std::string& s, bool integer) {
-        JNode n; n.kind = JNode::Number; n.text = s; n.integer_token = integer;
-        return put(std::move(n));
+    const std::string& s_;
+    size_t i_ = 0;
+    [[noreturn]] void fail(const std::string& what) const { throw JsonError{i_, what}; }
+    [[noreturn]] void unexpected(const std::string& what) const {
+        fail(i_ < s_.size() && s_[i_] == '/' ? "comments are not JSON (RFC 8259)" : what);
     }
-    bool put(JNode n) {
-        if (stack_.empty()) { root = std::move(n); started_ = true; return true; }
-        stack_.back()->items.push_back(std::move(n));
-        return true;
+    void ws() {
+        while (i_ < s_.size() && (s_[i_] == ' ' || s_[i_] == '\t' || s_[i_] == '\n' || s_[i_] == '\r')) ++i_;
     }
-    bool open(JNode::Kind k) {
-        JNode n; n.kind = k;
-        if (stack_.empty()) { root = std::move(n); stack_.push_back(&root); return true; }
-        stack_.back()->items.push_back(std::move(n));
-        stack_.push_back(&stack_.back()->items.back());
-        return true;
+    bool eat(char c) {
+        if (i_ < s_.size() && s_[i_] == c) { ++i_; return true; }
+        return false;
+    }
+    void literal(const char* word) {
+        for (const char* p = word; *p; ++p)
+            if (!eat(*p)) fail("unexpected character");
+    }
+    bool digit() const { return i_ < s_.size() && s_[i_] >= '0' && s_[i_] <= '9'; }
+    void value(JNode& n, int depth) {
+        if (i_ >= s_.size()) fail("unexpected end of the file");
+        const char c = s_[i_];
+        if (c == '{' || c == '[') {
+            if (depth >= kMaxDepth) fail("nested deeper than " + std::to_string(kMaxDepth) + " levels");
+            ++i_;
+            n.kind = c == '{' ? JNode::Object : JNode::Array;
+            const char close = c == '{' ? '}' : ']';
+            ws();
+            if (eat(close)) return;
+            for (;;) {
+                ws();
+                if (n.kind == JNode::Object) {
+                    if (i_ >= s_.size() || s_[i_] != '"') unexpected("expected a string key");
+                    const size_t at = i_;
+                    std::string k = string();
+                    if (n.find(k)) { i_ = at; fail("duplicate key " + quoted(k)); }
+                    n.keys.push_back(std::move(k));
+                    ws();
+                    if (!eat(':')) fail("expected ':'");
+                    ws();
+                }
+                n.items.emplace_back();
+                value(n.items.back(), depth + 1);
+                ws();
+                if (eat(close)) return;
+                if (!eat(',')) unexpected(std::string("expected ',' or '") + close + "'");
+            }
+        }
+        if (c == '"') { n.kind = JNode::String; n.text = string(); return; }
+        if (c == 't') { literal("true"); n.kind = JNode::Bool; return; }
+        if (c == 'f') { literal("false"); n.kind = JNode::Bool; return; }
+        if (c == 'n') { literal("null"); return; }
+        if (c == '-' || (c >= '0' && c <= '9')) { n.kind = JNode::Number; n.text = number(); return; }
+        unexpected("unexpected character");
+    }
+    // -?(0|[1-9][0-9]*)(.[0-9]+)?([eE][+-]?[0-9]+)?
+    std::string number() {
+        const size_t b = i_;
+        eat('-');
+        if (eat('0')) {
+            if (digit()) fail("a number has a leading zero");
+        } else if (digit()) {
+            while (digit()) ++i_;
+        } else {
+            fail("malformed number");
+        }
+        if (eat('.')) {
+            if (!digit()) fail("malformed number");
+            while (digit()) ++i_;
+        }
+        if (eat('e') || eat('E')) {
+            if (!eat('+')) eat('-');
+            if (!digit()) fail("malformed number");
+            while (digit()) ++i_;
+        }
+        return s_.substr(b, i_ - b);
+    }
+    unsigned hex4() {
+        unsigned v = 0;
+        for (int k = 0; k < 4; ++k, ++i_) {
+            if (i_ >= s_.size() || !std::isxdigit(static_cast<unsigned char>(s_[i_]))) fail("malformed \\u escape");
+            const char h = s_[i_];
+            v = v * 16 + static_cast<unsigned>(h <= '9' ? h - '0' : (h | 0x20) - 'a' + 10);
+        }
+        return v;
+    }
+    static void utf8(std::string& out, unsigned cp) {
+        if (cp < 0x80) out += static_cast<char>(cp);
+        else if (cp < 0x800) { out += static_cast<char>(0xC0 | (cp >> 6)); out += static_cast<char>(0x80 | (cp & 0x3F)); }
+        else if (cp < 0x10000) { out += static_cast<char>(0xE0 | (cp >> 12)); out += static_cast<char>(0x80 | ((cp >> 6) & 0x3F)); out += static_cast<char>(0x80 | (cp & 0x3F)); }
+        else { out += static_cast<char>(0xF0 | (cp >> 18)); out += static_cast<char>(0x80 | ((cp >> 12) & 0x3F)); out += static_cast<char>(0x80 | ((cp >> 6) & 0x3F)); out += static_cast<char>(0x80 | (cp & 0x3F)); }
+    }
+    // One UTF-8 sequence starting at i_ (well-formed, shortest form, no surrogates), copied.
+    void utf8_sequence(std::string& out) {
+        const unsigned char c = static_cast<unsigned char>(s_[i_]);
+        int n = c >= 0xF0 && c <= 0xF4 ? 3 : c >= 0xE0 ? 2 : c >= 0xC2 && c < 0xE0 ? 1 : -1;
+        if (n < 0 || i_ + static_cast<size_t>(n) >= s_.size()) fail("invalid UTF-8");
+        unsigned cp = c & (0x3F >> n);
+        for (int k = 1; k <= n; ++k) {
+            const unsigned char d = static_cast<unsigned char>(s_[i_ + static_cast<size_t>(k)]);
+            if ((d & 0xC0) != 0x80) fail("invalid UTF-8");
+            cp = cp << 6 | (d & 0x3F);
+        }
+        if ((n == 2 && cp < 0x800) || (n == 3 && (cp < 0x10000 || cp > 0x10FFFF)) || (cp >= 0xD800 && cp <= 0xDFFF)) fail("invalid UTF-8");
+        out.append(s_, i_, static_cast<size_t>(n) + 1);
+        i_ += static_cast<size_t>(n) + 1;
+    }
+    std::string string() {
+        ++i_;  // the opening quote
+        std::string out;
+        for (;;) {
+            if (i_ >= s_.size()) fail("unterminated string");
+            const unsigned char c = static_cast<unsigned char>(s_[i_]);
+            if (c == '"') { ++i_; return out; }
+            if (c < 0x20) fail("control character in a string");
+            if (c >= 0x80) { utf8_sequence(out); continue; }
+            if (c != '\\') { out += static_cast<char>(c); ++i_; continue; }
+            if (++i_ >= s_.size()) fail("unterminated string");
+            const char e = s_[i_++];
+            switch (e) {
+                case '"': out += '"'; break;
+                case '\\': out += '\\'; break;
+                case '/': out += '/'; break;
+                case 'b': out += '\b'; break;
+                case 'f': out += '\f'; break;
+                case 'n': out += '\n'; break;
+                case 'r': out += '\r'; break;
+                case 't': out += '\t'; break;
+                case 'u': {
+                    unsigned cp = hex4();
+                    if (cp >= 0xDC00 && cp <= 0xDFFF) fail("unpaired surrogate in a \\u escape");
+                    if (cp >= 0xD800 && cp <= 0xDBFF) {
+                        if (!eat('\\') || !eat('u')) fail("unpaired surrogate in a \\u escape");
+                        unsigned lo = hex4();
+                        if (lo < 0xDC00 || lo > 0xDFFF) fail("unpaired surrogate in a \\u escape");
+                        cp = 0x10000 + ((cp - 0xD800) << 10) + (lo - 0xDC00);
+                    }
+                    utf8(out, cp);
+                    break;
+                }
+                default: --i_; fail("invalid escape in a string");
+            }
+        }
     }
 };
 
@@ -150,19 +221,10 @@ struct Reader {
     }
 };
 
-std::string read_file(const std::string& path, const std::string& what) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw InputError(path + ": cannot open " + what);
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    if (in.bad()) throw InputError(path + ": cannot read " + what);
-    return ss.str();
-}
-
 // OFF: "OFF" header (optionally with counts on the same line), "nv nf ne", nv vertex lines.
 // Faces are not needed: the polyhedron is the convex hull of the vertices.
 std::vector<Vec3q> read_off(const std::string& path, const ReadOptions& opt) {
-    std::string text = read_file(path, "OFF file");
+    std::string text = read_input(path, "OFF file", kMaxSceneBytes);
     std::vector<std::string> tokens;
     std::istringstream lines(text);
     std::string line;
@@ -179,10 +241,11 @@ std::vector<Vec3q> read_off(const std::string& path, const ReadOptions& opt) {
         if (i >= tokens.size()) r.fail("", std::string("malformed OFF file: missing ") + what);
         const std::string& t = tokens[i];
         if (t.empty() || t.size() > 9 || t.find_first_not_of("0123456789") != std::string::npos)
-            r.fail("", std::string("malformed OFF file: bad ") + what + " '" + t + "'");
+            r.fail("", std::string("malformed OFF file: bad ") + what + " " + quoted(t));
         return std::stoul(t);
     };
     size_t nv = count(1, "vertex count");
+    if (nv > kMaxPoints) r.fail("", "more than " + std::to_string(kMaxPoints) + " vertices (the limit)");
     count(2, "face count");
     count(3, "edge count");
     if (tokens.size() < 4 + 3 * nv) r.fail("", "malformed OFF file: fewer than the " + std::to_string(nv) + " vertices announced");
@@ -198,25 +261,42 @@ std::vector<Vec3q> read_off(const std::string& path, const ReadOptions& opt) {
 
 Scene parse_scene_text(const std::string& text, const std::string& name, const std::string& base_dir,
                        const ReadOptions& opt) {
-    TreeBuilder tb;
-    std::vector<std::pair<size_t, size_t>> map;
-    bool ok = nlohmann::json::sax_parse(quote_numbers(text, map), &tb, nlohmann::json::input_format_t::json, true, true);
     Reader r{name, opt};
-    if (!ok) r.fail("", "malformed JSON near byte " + std::to_string(original_position(tb.error_pos, map)));
-    const JNode& root = tb.root;
+    JNode tree;
+    try {
+        tree = StrictJson(text).parse();
+    } catch (const JsonError& e) {
+        r.fail("", "malformed JSON near byte " + std::to_string(e.pos) + ": " + e.what);
+    }
+    const JNode& root = tree;
     if (root.kind != JNode::Object) r.fail("", "the scene must be a JSON object");
+    // A misspelt key would otherwise be ignored silently.
+    auto only = [&](const JNode& o, const std::string& where, std::initializer_list<const char*> known) {
+        for (const std::string& k : o.keys) {
+            bool ok = false;
+            for (const char* n : known) ok = ok || k == n;
+            if (!ok) r.fail(where, "unknown field " + quoted(k) + " (expected " + [&] {
+                std::string l;
+                for (const char* n : known) l += (l.empty() ? "" : ", ") + std::string(n);
+                return l;
+            }() + ")");
+        }
+    };
+    only(root, "", {"P1", "P2", "I1", "I2"});
     Scene sc;
     const char* pname[2] = {"P1", "P2"};
     for (int i = 0; i < 2; ++i) {
         const JNode* p = root.find(pname[i]);
         if (!p) r.fail("", std::string("missing field \"") + pname[i] + "\"");
         if (p->kind != JNode::Object) r.fail(pname[i], "expected an object with \"vertices\" or \"off\"");
+        only(*p, pname[i], {"vertices", "off", "seed"});
         PolyInput& in = sc.P[i];
         const JNode* verts = p->find("vertices");
         const JNode* off = p->find("off");
         if (verts && off) r.fail(pname[i], "give either \"vertices\" or \"off\", not both");
         if (verts) {
             if (verts->kind != JNode::Array) r.fail(std::string(pname[i]) + ".vertices", "expected an array of points");
+            if (verts->items.size() > kMaxPoints) r.fail(std::string(pname[i]) + ".vertices", "more than " + std::to_string(kMaxPoints) + " points (the limit)");
             in.points.reserve(verts->items.size());
             for (size_t j = 0; j < verts->items.size(); ++j)
                 in.points.push_back(r.point(verts->items[j], [&] { return std::string(pname[i]) + ".vertices[" + std::to_string(j) + "]"; }));
@@ -253,14 +333,14 @@ Scene parse_scene_text(const std::string& text, const std::string& name, const s
         if (n->kind != JNode::Array || n->items.size() != 2) r.fail(iname[i], "expected [lo, hi]");
         sc.lo[i] = r.number(n->items[0], std::string(iname[i]) + "[0]");
         sc.hi[i] = r.number(n->items[1], std::string(iname[i]) + "[1]");
-        if (sgn(sc.lo[i]) <= 0) r.fail(iname[i], "lo must be > 0 (got " + to_exact_string(sc.lo[i]) + ")");
+        if (sgn(sc.lo[i]) <= 0) r.fail(iname[i], "lo must be > 0 (got " + quoted(to_exact_string(sc.lo[i])) + ")");
         if (sc.lo[i] > sc.hi[i]) r.fail(iname[i], "lo > hi");
     }
     return sc;
 }
 
 Scene load_scene(const std::string& path, const ReadOptions& opt) {
-    std::string text = read_file(path, "scene file");
+    std::string text = read_input(path, "scene file", kMaxSceneBytes);
     std::string dir;
     auto slash = path.rfind('/');
     if (slash != std::string::npos) dir = path.substr(0, slash);

@@ -92,7 +92,7 @@ Segment segment_by_kind(const Model& m, const std::string& kind) {
         s.kind = "seeds";
         return s;
     }
-    if (kind != "ellipsoids") throw InputError("--segment: unknown kind '" + kind + "'");
+    if (kind != "ellipsoids") throw InputError("--segment: unknown kind " + quoted(kind));
     std::optional<EllipsoidPath> p = ellipsoid_path(m);
     Segment s;
     if (!p) {

@@ -1,7 +1,10 @@
 // The independent checker: it accepts every certificate the engine writes (bundled and fresh,
 // for random scenes), and it rejects tampered ones — every numeric field changed, every list
-// element deleted or duplicated, every verdict and flag flipped — except changes that leave a
-// still-true certificate, each listed below with the reason.
+// element deleted or duplicated, every verdict and flag flipped, and the structural attacks:
+// keys added, removed or duplicated, kinds changed, indices made fractional, negative, too large
+// or strings — except changes that leave a still-true certificate, each listed below with the
+// reason. The mutations run the checker's own check_text in this process (the binary is that
+// function behind main); the exit statuses of the binary are tested at the end.
 #define BOOST_TEST_MODULE checker
 #include <boost/test/unit_test.hpp>
 
@@ -9,6 +12,9 @@
 #include "support.hpp"
 
 #include <sys/wait.h>
+
+#define SCALECERT_CHECK_NO_MAIN
+#include "../checker/scalecert_check.cpp"
 
 #include <cmath>
 #include <filesystem>
@@ -49,6 +55,7 @@ const std::vector<StillTrue> kStillTrue = {
     {std::regex(".* at /model/.*"), "engine statistics (hull sizes, pairs tested): not a claim", false},
     {std::regex(".* at .*/closed_form$"), "name of the paper's formula that also gives the line: provenance, not a claim", false},
     {std::regex(".* at .*/equation$"), "name of the paper's equation that gives the switch point: provenance, not a claim", false},
+    {std::regex("optional member removed at (/model|.*/closed_form|.*/equation|.*/same_line_normals|/growth_distance_note)$"), "an annotation left out (it is optional)", false},
     {std::regex(".* at .*/features/P[12]/[0-9]+$"), "another vertex of the same contact feature: still a maximiser", false},
     {std::regex(".* at .*/support_vertices/P[12]$"), "another vertex attaining the same support value", false},
     {std::regex("element duplicated at /scene/P[12]/vertices/[0-9]+$"), "a repeated vertex is the same polyhedron (a copy of the last vertex shifts no index)", false},
@@ -89,12 +96,13 @@ bool moves_an_unnamed_vertex(const std::string& key) {
     return std::regex_match(key, m, re) && !g_named.count({std::stoi(m[1]), std::stol(m[2])});
 }
 
-void try_mutation(const OJ& j, const std::string& path, const std::string& what, Tally& t) {
-    fs::path f = tmpdir() / "m.json";
-    save(j, f);
+// The checker's verdict on a text: 1 (invalid) is a rejection; 2 (unreadable) is one too for the
+// attacks that make the text non-strict JSON (a duplicated key).
+void try_text(const std::string& text, const std::string& path, const std::string& what, Tally& t, int expected = 1) {
     ++t.tried;
-    int st = check_file(f);
-    if (st == 1) { ++t.rejected; return; }
+    std::string msg;
+    int st = scalecert_check::check_text(text, msg);
+    if (st == expected) { ++t.rejected; return; }
     const std::string key = what + " at " + path;
     for (const StillTrue& s : kStillTrue)
         if ((!s.query_only || g_query) && std::regex_match(key, s.re)) { ++t.still_true[s.why]; return; }
@@ -102,8 +110,9 @@ void try_mutation(const OJ& j, const std::string& path, const std::string& what,
         ++t.still_true["a vertex in no weighted combination, moved with every support value unchanged: every claim still holds for the new points"];
         return;
     }
-    BOOST_ERROR("tampered certificate accepted (exit " << st << "): " << key);
+    BOOST_ERROR("tampered certificate accepted (exit " << st << "): " << key << " (" << msg << ")");
 }
+void try_mutation(const OJ& j, const std::string& path, const std::string& what, Tally& t) { try_text(j.dump(1), path, what, t); }
 
 bool is_exact(const std::string& s) { return std::regex_match(s, std::regex("-?[0-9]+(/[0-9]+)?")); }
 
@@ -123,16 +132,44 @@ void mutate_all(const OJ& root, const OJ& node, const OJ::json_pointer& ptr, Tal
         } else if (s == "separated" || s == "touching" || s == "overlapping") {
             for (const char* v : {"separated", "touching", "overlapping"})
                 if (s != v) with(v, std::string("verdict flipped to ") + v);
+        } else if (s == "partition" || s == "query") {
+            for (const char* v : {"partition", "query", "curve"})
+                if (s != v) with(v, std::string("kind changed to ") + v);
         } else {
             with(s + "X", "string changed");
         }
     } else if (node.is_number_float()) {
         with(std::nextafter(node.get<double>(), INFINITY), "double moved to the next double");
     } else if (node.is_number_integer()) {
-        with(node.get<long>() + 1, "integer + 1");
+        const long i = node.get<long>();
+        with(i + 1, "integer + 1");
+        // Indices and counts that are not exact non-negative integers in range.
+        with(static_cast<double>(i), "integer written as a double");
+        with(static_cast<double>(i) + 0.5, "integer + 1/2");
+        with(static_cast<double>(i) + 0.9, "integer + 9/10");
+        with(i + (1L << 32), "integer + 2^32");
+        with(-1 - i, "integer made negative");
+        with(std::to_string(i), "integer written as a string");
     } else if (node.is_boolean()) {
         with(!node.get<bool>(), "flag flipped");
     } else if (node.is_object()) {
+        {  // a key added
+            OJ m = root;
+            m[ptr]["extra"] = 1;
+            try_mutation(m, path, "key added", t);
+        }
+        if (!node.empty()) {  // the first key written twice, with its own value: the file means two things
+            OJ m = root;
+            m[ptr]["__duplicate__"] = node.begin().value();
+            std::string text = m.dump(1);
+            text.replace(text.find("\"__duplicate__\""), 15, "\"" + node.begin().key() + "\"");
+            try_text(text, path, "key duplicated", t, 2);
+        }
+        for (auto it = node.begin(); it != node.end(); ++it) {  // each member removed
+            OJ m = root;
+            m[ptr].erase(it.key());
+            try_mutation(m, (ptr / it.key()).to_string(), "optional member removed", t);
+        }
         for (auto it = node.begin(); it != node.end(); ++it) mutate_all(root, it.value(), ptr / it.key(), t);
     } else if (node.is_array()) {
         for (size_t i = 0; i < node.size(); ++i) {
@@ -229,4 +266,157 @@ BOOST_AUTO_TEST_CASE(unreadable_files_exit_2) {
     BOOST_TEST(check_file(tmpdir() / "absent.json") == 2);
     std::ofstream(tmpdir() / "junk.json") << "{not json";
     BOOST_TEST(check_file(tmpdir() / "junk.json") == 2);
+}
+
+// ---- forgeries reported by the adversarial review (issue 14), each written by hand ------------
+namespace {
+OJ bundled(const std::string& name) { return load(fs::path(SCALECERT_SOURCE_DIR) / "certificates" / (name + ".partition.json")); }
+int verdict_of(const std::string& text) {
+    std::string msg;
+    return scalecert_check::check_text(text, msg);
+}
+int verdict_of(const OJ& j) { return verdict_of(j.dump(1)); }
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(a_partition_with_a_verdict_key_is_not_checked_as_a_query) {
+    // Before: any "verdict" key made the checker check the file as a query answer only, so every
+    // partition claim could be false. Now the kind is explicit and unknown keys are rejected.
+    OJ j = bundled("tetra_box_switch");
+    BOOST_TEST_REQUIRE(verdict_of(j) == 0);
+    OJ f = j;
+    f["verdict"] = "overlapping";
+    BOOST_TEST(verdict_of(f) == 1);
+    f["growth_distance"] = "1";  // and a false claim beside it
+    BOOST_TEST(verdict_of(f) == 1);
+    OJ q = j;
+    q["kind"] = "query";
+    BOOST_TEST(verdict_of(q) == 1);
+    OJ none = j;
+    none.erase("kind");
+    BOOST_TEST(verdict_of(none) == 1);
+}
+
+BOOST_AUTO_TEST_CASE(duplicate_keys_are_refused_not_resolved) {
+    // {"growth_distance": <false>, "growth_distance": <true>}: the last value wins in nlohmann's
+    // DOM parser, the first won in the engine's old reader. Both now refuse the file.
+    OJ j = bundled("tetra_box_switch");
+    std::string text = j.dump(1);
+    const std::string key = "\"growth_distance\": \"18/11\"";
+    BOOST_TEST_REQUIRE(text.find(key) != std::string::npos);
+    text.replace(text.find(key), key.size(), "\"growth_distance\": \"1\",\n \"growth_distance\": \"18/11\"");
+    BOOST_TEST(verdict_of(text) == 2);
+    fs::path f = tmpdir() / "dup.json";
+    std::ofstream(f) << text;
+    BOOST_TEST(check_file(f) == 2);
+}
+
+BOOST_AUTO_TEST_CASE(switch_contact_labels_are_recomputed_from_all_maximisers) {
+    // tetra_box_switch: P1's vertex 0 touches the middle of P2's edge {5, 7} at (1, 2), a (V,E)
+    // contact (derived by hand in test_hand_curves). Listing one end of the edge does not make
+    // it (V,V); listing a vertex that is not on the contact is refused; the true label passes.
+    OJ j = bundled("tetra_box_switch");
+    OJ& sp = j["switch_points"][0];
+    BOOST_TEST_REQUIRE(sp["contact"] == "VE");
+    OJ vv = j;
+    vv["switch_points"][0]["contact"] = "VV";
+    vv["switch_points"][0]["features"]["P2"] = OJ::array({5});
+    BOOST_TEST(verdict_of(vv) == 1);
+    OJ sub = j;
+    sub["switch_points"][0]["features"]["P2"] = OJ::array({5});  // a subset with the true label: still true
+    BOOST_TEST(verdict_of(sub) == 0);
+    OJ off = j;
+    off["switch_points"][0]["features"]["P2"] = OJ::array({4});  // on the (V,F) face, not on the contact
+    BOOST_TEST(verdict_of(off) == 1);
+    OJ ee = j;
+    ee["switch_points"][0]["contact"] = "EE";
+    ee["switch_points"][0]["features"]["P1"] = OJ::array({0, 1});
+    BOOST_TEST(verdict_of(ee) == 1);
+}
+
+BOOST_AUTO_TEST_CASE(indices_must_be_exact_integers_in_range) {
+    // 2^32, 0.9 and 0.5 were read as vertex 0. Every index field: features, support vertices,
+    // witness and seed weights, region pieces.
+    OJ j = bundled("tetra_box_switch");
+    const std::vector<std::string> where = {"/pieces/0/features/P1/0", "/pieces/0/support_vertices/P1",
+                                            "/switch_points/0/features/P1/0", "/switch_points/0/witness/P1/0/0",
+                                            "/seed_interior/P1/0/0", "/regions/separated/0/piece"};
+    for (const std::string& w : where) {
+        OJ::json_pointer ptr(w);
+        BOOST_TEST_REQUIRE(j[ptr].is_number_integer(), w);
+        const long v = j[ptr].get<long>();
+        for (const OJ& bad : {OJ(v + 4294967296L), OJ(0.9 + static_cast<double>(v)), OJ(0.5 + static_cast<double>(v)),
+                              OJ(static_cast<double>(v)), OJ(-1), OJ(std::to_string(v)), OJ(1e300)}) {
+            OJ f = j;
+            f[ptr] = bad;
+            BOOST_TEST(verdict_of(f) == 1, w << " = " << bad.dump());
+        }
+    }
+}
+
+BOOST_AUTO_TEST_CASE(doubles_beyond_the_double_range_are_null) {
+    // A vertex at 10^400: its nearest double would be infinite; the engine writes null there and
+    // the checker accepts null exactly then (FORMAT.md "Numbers").
+    fs::path sp = tmpdir() / "far.json", cp = tmpdir() / "far.cert.json", qp = tmpdir() / "far.q.json";
+    std::ofstream(sp) << R"({"P1": {"vertices": [[0,0,0],[1,0,0],[0,1,0],[0,0,"1e400"]]},
+        "P2": {"vertices": [[5,0,0],[6,0,0],[5,1,0],[5,0,1]]}, "I1": [1,2], "I2": [1,2]})";
+    BOOST_TEST_REQUIRE(engine("partition " + sp.string() + " --out " + cp.string()) == 0);
+    BOOST_TEST(check_file(cp) == 0);
+    std::string text = test::slurp(cp);
+    BOOST_TEST(text.find("null") != std::string::npos);
+    BOOST_TEST_REQUIRE(engine("query --json " + sp.string() + " 1e99999 2 --out " + qp.string()) == 0);
+    BOOST_TEST(check_file(qp) == 0);
+    OJ q = load(qp);
+    BOOST_TEST(q["rho1_double"].is_null());
+    q["rho1_double"] = 1.7976931348623157e308;  // the largest double is not the nearest: refused
+    BOOST_TEST(verdict_of(q) == 1);
+    OJ r = load(qp);
+    r["rho2_double"] = nullptr;  // null for a value in range: refused
+    BOOST_TEST(verdict_of(r) == 1);
+    // Hand-derived neighbours of the overflow threshold 2^1024 - 2^970 (halfway between the
+    // largest double and 2^1024, which rounds to even: infinity).
+    using scalecert_check::nearest;
+    using scalecert_check::Q;
+    const mpz_class two1024 = mpz_class(1) << 1024, half = mpz_class(1) << 970;
+    BOOST_TEST(std::isinf(nearest(Q(two1024 - half))));
+    BOOST_TEST(nearest(Q(two1024 - half - 1)) == 1.7976931348623157e308);
+    BOOST_TEST(std::isinf(nearest(Q(-two1024))));
+}
+
+BOOST_AUTO_TEST_CASE(hostile_files_exit_2_without_crashing) {
+    // Nested 10^6 levels (a stack overflow in a recursive reader or destructor), not JSON,
+    // comments, leading zeros, and a directory.
+    fs::path deep = tmpdir() / "deep.json";
+    std::ofstream(deep) << std::string(1000000, '[') << std::string(1000000, ']');
+    BOOST_TEST(check_file(deep) == 2);
+    std::string t = bundled("stacked_cubes").dump(1);
+    for (const auto& [what, text] : std::vector<std::pair<std::string, std::string>>{
+             {"comment", "// c\n" + t}, {"leading zero", "{\"format\": 01}"}, {"trailing comma", "{\"a\": 1,}"},
+             {"bare key", "{a: 1}"}, {"NaN", "{\"a\": NaN}"}, {"two values", t + t}}) {
+        BOOST_TEST(verdict_of(text) == 2, what);
+    }
+    BOOST_TEST(check_file(tmpdir()) == 2);
+}
+
+BOOST_AUTO_TEST_CASE(out_of_memory_in_the_checker_exits_2) {
+    // Under a 300 MB address-space limit, a 200 MB certificate cannot be held: exit 2, one line.
+    fs::path big = tmpdir() / "big.json";
+    {
+        std::ofstream f(big);
+        f << "{\"format\": \"scalecert-2\", \"kind\": \"partition\", \"pad\": \"";
+        std::string block(1 << 20, 'x');
+        for (int i = 0; i < 200; ++i) f << block;
+        f << "\"}";
+    }
+#if defined(__SANITIZE_ADDRESS__)
+    BOOST_TEST_MESSAGE("skipped under AddressSanitizer, which reserves more address space than the limit");
+    return;
+#endif
+    fs::path err = tmpdir() / "err.txt";
+    int raw = std::system(("ulimit -v 300000; " + std::string(SCALECERT_CHECK_BIN) + " " + big.string() + " >/dev/null 2>" + err.string()).c_str());
+    int st = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+    BOOST_TEST(st == 2);
+    std::string e = test::slurp(err);
+    BOOST_TEST(e.find("out of memory") != std::string::npos, e);
+    BOOST_TEST(std::count(e.begin(), e.end(), '\n') == 1);
+    fs::remove(big);
 }

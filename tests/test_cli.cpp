@@ -103,7 +103,7 @@ BOOST_AUTO_TEST_CASE(bad_inputs) {
     // An unwritable output file: the error names it and nothing is left behind.
     Run r = run("curve " + g.string() + " --out " + (workdir() / "no-such-dir" / "x.json").string());
     BOOST_TEST(r.status == 2);
-    BOOST_TEST(r.err.find("cannot open for writing") != std::string::npos);
+    BOOST_TEST(r.err.find("cannot create a file in") != std::string::npos);
 }
 
 BOOST_AUTO_TEST_CASE(off_input_reads_exactly_like_json) {
@@ -151,4 +151,144 @@ BOOST_AUTO_TEST_CASE(out_file_is_written_whole) {
     BOOST_TEST(r.status == 0);
     BOOST_TEST(r.out.empty());
     BOOST_TEST(slurp(out) == run("partition " + g.string()).out);
+}
+
+// ---- hostile input (issue 14): each class the adversarial review reproduced ------------------
+
+BOOST_AUTO_TEST_CASE(json_is_read_as_rfc_8259_says) {
+    const std::string P1 = poly(kCube1), P2 = poly(kCube2);
+    auto S = [&](const std::string& name, const std::string& text) { return "curve " + write(name, text).string(); };
+    // 10^6 levels of nesting overflowed the stack in the tree's recursive destructor.
+    expect_error("nested 10^6 deep", S("deep.json", std::string(1000000, '[') + std::string(1000000, ']')), "nested deeper than 64");
+    expect_error("leading zero", S("lz.json", scene(poly("[[0,0,0],[2,0,0],[0,2,0],[0,0,02]]"), P2)), "leading zero");
+    expect_error("line comment", S("cm.json", "{\"P1\": " + P1 + ", // P2 next\n\"P2\": " + P2 + ", \"I1\": [1,2], \"I2\": [1,2]}"), "comments are not JSON");
+    expect_error("numeric key", S("nk.json", "{\"P1\": " + P1 + ", 5: 1, \"P2\": " + P2 + ", \"I1\": [1,2], \"I2\": [1,2]}"), "expected a string key");
+    expect_error("trailing comma", S("tc.json", scene(P1, P2, "[1, 2,]")), "malformed JSON");
+    // The first value used to win here, the last in the checker: one file, two meanings.
+    expect_error("duplicate key", S("dk.json", scene(P1, P2) .substr(0, scene(P1, P2).size() - 1) + ", \"I1\": [1, 3]}"), "duplicate key 'I1'");
+    expect_error("duplicate key in P1", S("dk2.json", scene("{\"vertices\": " + kCube1 + ", \"vertices\": " + kCube2 + "}", P2)), "duplicate key 'vertices'");
+    expect_error("unknown field", S("uf.json", scene(poly(kCube1, ", \"sead\": [1,1,1]"), P2)), "unknown field 'sead'");
+    expect_error("invalid UTF-8", S("u8.json", scene(P1, P2, "[\"1\xff\", 2]")), "invalid UTF-8");
+}
+
+BOOST_AUTO_TEST_CASE(error_messages_are_one_line_with_the_file_and_cut) {
+    const std::string P2 = poly(kCube2);
+    auto S = [&](const std::string& name, const std::string& text) { return "curve " + write(name, text).string(); };
+    // '1/2/3' was reported as '2/3'.
+    expect_error("1/2/3", S("s3.json", scene(poly(kCube1), P2, "[\"1/2/3\", 2]")), "I1[0]: '1/2/3' is not an exact number");
+    // A newline inside a number string (a JSON escape) stays inside the one line.
+    expect_error("newline in a number", S("nl.json", scene(poly(kCube1), P2, "[\"1\\n2\", 2]")), "'1\\x0a2' is not an exact number");
+    // A 1 MB number is cut, not echoed.
+    const std::string huge(1000000, '7');
+    fs::path hp = write("huge.json", scene(poly(kCube1), P2, "[\"" + huge + "x\", 2]"));
+    expect_error("1 MB number", "curve " + hp.string(), "1000001 characters, cut");
+    Run r = run("curve " + hp.string());
+    BOOST_TEST(r.err.size() < 400u);
+    // A newline in a file name.
+    fs::path odd = write("bad\nname.json", scene(poly(kCube1), P2));
+    fs::remove(odd);
+    expect_error("newline in a file name", "curve '" + odd.string() + "'", "bad\\x0aname.json: cannot open");
+    // Geometric errors found after reading name the file too.
+    fs::path flat = write("flat.json", scene(poly("[[0,0,0],[1,0,0],[0,1,0],[1,1,0]]"), P2));
+    expect_error("flat names its file", "curve " + flat.string(), flat.string() + ": P1: fewer than 4 affinely independent");
+}
+
+BOOST_AUTO_TEST_CASE(audit_arguments_that_crashed_or_never_ended_are_refused) {
+    fs::path g = write("audit-scene.json", scene(poly(kCube1), poly(kCube2)));
+    // --grid 1 dereferenced an empty junction list; a negative --sweep overflowed GMP; --grid
+    // 100000 ran without end.
+    expect_error("grid 1", "audit " + g.string() + " --methods grid --grid 1", "--grid");
+    expect_error("grid 0", "audit " + g.string() + " --methods grid --grid 0", "--grid");
+    expect_error("grid -3", "audit " + g.string() + " --methods grid --grid -3", "--grid");
+    expect_error("grid 100000", "audit " + g.string() + " --methods grid --grid 100000", "--grid");
+    expect_error("negative sweep", "audit --family random --sweep -2 --sweep-to 1", "--sweep");
+    expect_error("sweep-to too far", "audit --family random --sweep 1 --sweep-to 5000", "--sweep-to");
+    expect_error("unknown family", "audit --family bogus --sweep 1 --sweep-to 2", "unknown family 'bogus'");
+    // The CSV was written before the JSON failed: now both or neither.
+    fs::path prefix = workdir() / "both";
+    fs::create_directories(workdir() / "both.json");  // the JSON target cannot be replaced
+    Run a = run("audit " + g.string() + " --methods libccd-gjk --out " + prefix.string());
+    BOOST_TEST(a.status == 2);
+    BOOST_TEST(!fs::exists(workdir() / "both.csv"));
+    fs::remove_all(workdir() / "both.json");
+    Run b = run("audit " + g.string() + " --methods libccd-gjk --out " + prefix.string());
+    BOOST_TEST(b.status == 0);
+    BOOST_TEST(fs::exists(workdir() / "both.csv"));
+    BOOST_TEST(fs::exists(workdir() / "both.json"));
+}
+
+BOOST_AUTO_TEST_CASE(outputs_go_only_to_regular_files_and_directories_we_can_make) {
+    fs::path g = write("out-scene.json", scene(poly(kCube1), poly(kCube2)));
+    // A device node or a symbolic link at the target is refused, and is left as it was.
+    Run d = run("curve " + g.string() + " --out /dev/null");
+    BOOST_TEST(d.status == 2);
+    BOOST_TEST(d.err.find("not a regular file") != std::string::npos);
+    fs::path victim = write("victim.txt", "untouched");
+    fs::path link = workdir() / "link.json";
+    fs::remove(link);
+    fs::create_symlink(victim, link);
+    Run l = run("curve " + g.string() + " --out " + link.string());
+    BOOST_TEST(l.status == 2);
+    BOOST_TEST(fs::is_symlink(link));
+    BOOST_TEST(slurp(victim) == "untouched");
+    // The temporary name is not predictable: a planted OUT.tmp.PID symlink is never followed
+    // (the engine creates its temporary file exclusively, under a random name).
+    fs::path out = workdir() / "fresh.json";
+    for (int pid = 1; pid < 64; ++pid) {
+        fs::path planted = workdir() / ("fresh.json.tmp." + std::to_string(pid));
+        fs::remove(planted);
+    }
+    Run ok = run("curve " + g.string() + " --out " + out.string());
+    BOOST_TEST(ok.status == 0);
+    BOOST_TEST(slurp(out) == run("curve " + g.string()).out);
+    BOOST_TEST(((fs::status(out).permissions() & fs::perms::others_read) != fs::perms::none));  // not mkstemp's 0600
+    // golden: under a file (was exit 3), and an unknown family (left its directory behind).
+    write("plain-file", "x");
+    Run gf = run("golden --family random --count 1 --out " + (workdir() / "plain-file" / "g").string());
+    BOOST_TEST(gf.status == 2);
+    BOOST_TEST(gf.err.find("cannot create the output directory") != std::string::npos, gf.err);
+    Run gu = run("golden --family bogus --out " + (workdir() / "never-made").string());
+    BOOST_TEST(gu.status == 2);
+    BOOST_TEST(!fs::exists(workdir() / "never-made"));
+}
+
+BOOST_AUTO_TEST_CASE(claims_and_pairs_must_be_files_with_content) {
+    fs::path g = write("claims-scene.json", scene(poly(kCube1), poly(kCube2)));
+    // certify-fp SCENE DIR exited 0 with "claims: 0".
+    expect_error("claims directory", "certify-fp " + g.string() + " " + workdir().string(), "is a directory");
+    fs::path empty = write("empty-claims.txt", "# nothing\n\n");
+    expect_error("no claims", "certify-fp " + g.string() + " " + empty.string(), "no claims");
+    expect_error("pairs directory", "classify " + g.string() + " " + workdir().string(), "is a directory");
+    expect_error("scene directory", "curve " + workdir().string(), "is a directory");
+    fs::path bad = write("bad-verdict.txt", "1 2 touch\n");
+    expect_error("bad verdict", "certify-fp " + g.string() + " " + bad.string(), "unknown verdict 'touch'");
+}
+
+BOOST_AUTO_TEST_CASE(inputs_beyond_the_limits_are_refused_with_exit_2) {
+    // README "Limits": each refused before the work that would exhaust memory or time.
+    fs::path sparse = workdir() / "sparse.json";
+    { std::ofstream(sparse) << "{"; }
+    fs::resize_file(sparse, (std::uintmax_t(256) << 20) + 1);  // a sparse file one byte over 256 MiB
+    expect_error("scene over 256 MiB", "curve " + sparse.string(), "larger than 256 MiB");
+    fs::remove(sparse);
+    write("many.off", "OFF\n1000001 0 0\n0 0 0\n");
+    expect_error("OFF over 10^6 vertices", "curve " + write("many.json", scene("{\"off\": \"many.off\"}", poly(kCube2))).string(), "more than 1000000");
+    std::string pts = "[";
+    for (int i = 0; i < 1000001; ++i) pts += i ? ",[0,0,0]" : "[0,0,0]";
+    pts += "]";
+    expect_error("JSON over 10^6 points", "curve " + write("many2.json", scene(poly(pts), poly(kCube2))).string(), "more than 1000000 points");
+    // The common denominator of a polyhedron's coordinates: 2,000 distinct primes above 2^15
+    // give far more than 16,384 bits (each adds about 15).
+    std::string v = "[[0,0,0],[1,0,0],[0,1,0],[0,0,1]";
+    int found = 0;
+    for (int p = 32771; found < 2000; p += 2) {
+        bool prime = true;
+        for (int d = 3; d * d <= p && prime; d += 2) prime = p % d != 0;
+        if (!prime) continue;
+        ++found;
+        v += ",[\"1/" + std::to_string(p) + "\",\"1/" + std::to_string(p) + "\",\"1/" + std::to_string(p) + "\"]";
+    }
+    v += "]";
+    expect_error("common denominator over 16384 bits", "curve " + write("dens.json", scene(poly(v), poly(kCube2))).string(),
+                 "common denominator of the coordinates has more than 16384 bits");
 }

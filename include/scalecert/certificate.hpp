@@ -28,9 +28,13 @@ void add_query_segment_json(Json& j, const Segment& s, const Q& rho1, const Q& r
 // |v2 − v1|·g to the nearest double (MPFR at 256 bits, then rounded).
 double scaled_length(const Vec3q& v1, const Vec3q& v2, const Q& g);
 
-// Writes text to path through a temporary file and a rename, so a failed run never leaves a
-// half-written file. Throws InputError naming the path.
+// Writes text to path through a temporary file created exclusively beside it, synced to disk,
+// then renamed into place, so a failed run never leaves a half-written file. Refuses a target
+// that exists and is not a regular file. Throws InputError naming the path.
 void write_file_atomically(const std::string& path, const std::string& text);
+// The same for several files: every text is written and synced before any rename, so a failure
+// while writing leaves none of them.
+void write_files_atomically(const std::vector<std::pair<std::string, std::string>>& files);
 
 // Serialises with a trailing newline; byte-identical for identical input.
 std::string dump(const Json& j);

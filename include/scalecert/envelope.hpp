@@ -53,8 +53,10 @@ struct Curve {
     GrowthDistance growth;
 };
 
-// The contact at a point of the curve: the features shared by every line through it.
-Contact contact_at(const Model& m, const Q& rho1, const Q& rho2);
+// The contact at a switch point (ρ1, ρ2) between neighbouring pieces on lines L and R: the
+// smallest face of each polyhedron holding the touching set (a vertex or an edge: both planes
+// touch, so the touching set lies on their common line).
+Contact contact_at(const Model& m, const ContactLine& L, const ContactLine& R, const Q& rho1, const Q& rho2);
 
 Curve build_curve(const Model& m);
 

@@ -1,5 +1,7 @@
 // Exact number layer: rationals (GMP), integer vectors, exact parsing and display rounding.
 #pragma once
+#include "scalecert/limits.hpp"
+
 #include <gmpxx.h>
 #include <array>
 #include <stdexcept>
@@ -39,6 +41,15 @@ inline Vec3z neg(const Vec3z& v) { return {Z(-v[0]), Z(-v[1]), Z(-v[2])}; }
 // common factor removed. Two normals are the same direction iff their primitive forms are equal.
 Vec3z primitive(const Vec3q& v);
 Vec3z primitive(const Vec3z& v);
+
+// User text for an error message: quoted, control characters escaped (so the message stays one
+// line), and cut after 40 characters.
+std::string quoted(const std::string& text);
+
+// The whole of a file (or standard input for "-"), at most max_bytes; `what` names it in
+// errors ("scene file"). Throws InputError naming the path for a missing file, a directory or
+// other non-readable file, and a file over the limit.
+std::string read_input(const std::string& path, const std::string& what, size_t max_bytes);
 
 // Reads a number exactly as written: "-12", "0.1" (= 1/10), "1e-3", "2.5E+7", "3/7".
 // Throws InputError (without location; callers add it) when the text is not such a number.

@@ -67,7 +67,7 @@ std::string certify_fp(const Model& m, const Curve& c, const std::string& claims
             if (sgn(r1) <= 0 || sgn(r2) <= 0) throw InputError(where + ": scalings must be > 0");
             const std::string& v = w[2];
             if (v != "separated" && v != "touching" && v != "overlapping" && v != "intersecting")
-                throw InputError(where + ": unknown verdict '" + v + "' (separated, touching, overlapping, intersecting)");
+                throw InputError(where + ": unknown verdict " + quoted(v) + " (separated, touching, overlapping, intersecting)");
             Verdict e = query(m, c, r1, r2, false).verdict;
             std::string en = verdict_name(e);
             right = v == "intersecting" ? e != Verdict::Separated : v == en;
@@ -87,6 +87,7 @@ std::string certify_fp(const Model& m, const Curve& c, const std::string& claims
         arr.push_back(o);
         text += std::string(right ? "right  " : "WRONG  ") + detail + "\n";
     }
+    if (n == 0) throw InputError(name + ": no claims (expected 'RHO1 RHO2 VERDICT', 'curve RHO1 RHO2' or 'growth RHO' lines)");
     if (wrong) *wrong = bad;
     if (json) {
         Json j;
@@ -169,7 +170,7 @@ void match_junctions(const Curve& c, const Scene& s, const std::vector<double>& 
         size_t arg = 0;
         for (size_t k = 0; k < found.size(); ++k)
             if (std::fabs(found[k] - x) < best) best = std::fabs(found[k] - x), arg = k;
-        if (best > 2 * cell) { ++r.junctions_missed; continue; }
+        if (found.empty() || !(best <= 2 * cell)) { ++r.junctions_missed; continue; }  // (a NaN cell misses too)
         r.max_junction_error = std::max(r.max_junction_error, best);
         if (claimed[arg]++) ++r.junctions_merged;
     }
@@ -208,7 +209,7 @@ std::vector<AuditRow> audit_scene(const std::string& name, const Scene& s, const
     for (const std::string& meth : methods) {
         if (meth == "grid") continue;
         std::unique_ptr<fp::Method> mm = fp::make_method(meth, m, f);
-        if (!mm) throw InputError("--methods: unknown method '" + meth + "'");
+        if (!mm) throw InputError("--methods: unknown method " + quoted(meth));
         AuditRow r;
         r.scene = name;
         r.method = mm->name();

@@ -66,26 +66,30 @@ Segment parse_segment(const std::string& spec, const Model& m, const ReadOptions
     return make_segment(m, v[0], v[1]);
 }
 
-// Pairs "rho1 rho2", one per line; blank lines and '#' comments skipped.
-// The whole file (or standard input for "-") in one string: a regular file in one read of its
-// size, a stream in growing blocks.
-std::string read_text(const std::string& path, const std::string& what) {
-    std::FILE* f = path == "-" ? stdin : std::fopen(path.c_str(), "rb");
-    if (!f) throw InputError(path + ": cannot open " + what);
-    std::string text;
-    struct stat st {};
-    size_t used = 0, cap = 1 << 20;
-    if (fstat(fileno(f), &st) == 0 && S_ISREG(st.st_mode) && st.st_size > 0) cap = static_cast<size_t>(st.st_size) + 1;
-    for (;; cap *= 2) {
-        text.resize(cap);
-        used += std::fread(&text[used], 1, cap - used, f);
-        if (used < cap) break;
+// An error message as one line: control characters (a newline in a file name or a number)
+// escaped, and at most 1000 characters.
+std::string one_line(const std::string& msg) {
+    std::string out;
+    for (unsigned char c : msg) {
+        if (out.size() >= 1000) return out + "... (cut)";
+        if (c < 0x20 || c == 0x7f) {
+            char buf[8];
+            std::snprintf(buf, sizeof buf, "\\x%02x", c);
+            out += buf;
+        } else {
+            out += static_cast<char>(c);
+        }
     }
-    const bool failed = std::ferror(f) != 0;
-    if (f != stdin) std::fclose(f);
-    if (failed) throw InputError(path + ": cannot read " + what);
-    text.resize(used);
-    return text;
+    return out;
+}
+
+// The model of a scene read from `path`; geometric errors name the file too.
+Model model_of(const Scene& scene, const std::string& path) {
+    try {
+        return build_model(scene);
+    } catch (const InputError& e) {
+        throw InputError(path + ": " + e.what());
+    }
 }
 
 }  // namespace
@@ -142,10 +146,10 @@ int main(int argc, char** argv) {
     std::string audit_out = "audit";
     audit->add_option("SCENES", audit_scenes, "scene files");
     audit->add_option("--methods", methods, "libccd-gjk libccd-mpr double-envelope paper-tritri fcl-gjk-libccd fcl-gjk-indep bullet-gjk-epa grid")->delimiter(',');
-    audit->add_option("--grid", grid_ns, "grid resolutions for the grid method")->delimiter(',');
+    audit->add_option("--grid", grid_ns, "grid resolutions for the grid method (2 to 4096)")->delimiter(',')->check(CLI::Range(2, 4096));
     audit->add_option("--family", family, "also audit a family over an eps sweep (with --sweep)");
-    audit->add_option("--sweep", sweep_from, "eps = 2^-K for K from this ...");
-    audit->add_option("--sweep-to", sweep_to, "... to this (inclusive)");
+    audit->add_option("--sweep", sweep_from, "eps = 2^-K for K from this (0 to 1074) ...")->check(CLI::Range(0, 1074));
+    audit->add_option("--sweep-to", sweep_to, "... to this (inclusive, 0 to 1074)")->check(CLI::Range(0, 1074));
     audit->add_option("--count", count, "scenes per eps in the sweep")->check(CLI::Range(1, 10000));
     audit->add_option("--seed", seed, "random seed for the sweep");
     audit->add_option("--out", audit_out, "write OUT.csv and OUT.json");
@@ -160,23 +164,34 @@ int main(int argc, char** argv) {
     } catch (const CLI::CallForHelp& e) {
         return app.exit(e);
     } catch (const CLI::ParseError& e) {
-        std::cerr << "scalecert: error: " << e.what() << " (see scalecert --help)\n";
+        std::cerr << "scalecert: error: " << one_line(e.what()) << " (see scalecert --help)\n";
         return 2;
     }
     try {
         if (*golden) {
             Q eps = parse_exact(eps_text);
             if (sgn(eps) <= 0) throw InputError("--eps must be > 0");
-            std::filesystem::create_directories(out_dir);
+            family_description(family);  // an unknown family is refused before anything is created
+            std::error_code ec;
+            std::filesystem::create_directories(out_dir, ec);
+            if (ec || !std::filesystem::is_directory(out_dir))
+                throw InputError(out_dir + ": cannot create the output directory (" + (ec ? ec.message() : "not a directory") + ")");
             write_golden(family, count, seed, eps, out_dir);
             std::cerr << "scalecert: wrote " << count << " " << family << " scenes with exact answers to " << out_dir << "\n";
             return 0;
         }
         if (*audit) {
             std::vector<AuditRow> rows;
+            if (!family.empty()) family_description(family);  // refused before any work
             for (const std::string& p : audit_scenes) {
                 std::cerr << "scalecert: audit: " << p << "\n";
-                auto r = audit_scene(p, load_scene(p, opt), Q(0), methods, grid_ns);
+                std::vector<AuditRow> r;
+                try {
+                    r = audit_scene(p, load_scene(p, opt), Q(0), methods, grid_ns);
+                } catch (const InputError& e) {
+                    const std::string w = e.what();
+                    throw InputError(w.compare(0, p.size() + 1, p + ":") == 0 ? w : p + ": " + w);
+                }
                 rows.insert(rows.end(), r.begin(), r.end());
             }
             if (!family.empty()) {
@@ -193,8 +208,8 @@ int main(int argc, char** argv) {
                 std::cerr << "\n";
             }
             if (rows.empty()) throw InputError("audit: no scenes (give SCENES or --family with --sweep)");
-            emit(audit_csv(rows), audit_out + ".csv");
-            emit(dump(audit_json(rows)), audit_out + ".json");
+            // Both texts first, then both files together: a failure leaves neither.
+            write_files_atomically({{audit_out + ".csv", audit_csv(rows)}, {audit_out + ".json", dump(audit_json(rows))}});
             std::cerr << "scalecert: audit: " << rows.size() << " rows in " << audit_out << ".csv and " << audit_out << ".json\n";
             return 0;
         }
@@ -202,7 +217,7 @@ int main(int argc, char** argv) {
         const bool timing = clock.on;
         Scene scene = load_scene(scene_path, opt);
         clock.lap("read scene");
-        Model m = build_model(scene);
+        Model m = model_of(scene, scene_path);
         clock.restart();
         Curve c = build_curve(m);
         clock.lap("envelope and curve");
@@ -258,15 +273,12 @@ int main(int argc, char** argv) {
             j["samples"] = samples;
             text = dump(j);
         } else if (*certify) {
-            std::ifstream f(claims_path);
-            if (!f) throw InputError(claims_path + ": cannot open claims file");
-            std::stringstream ss;
-            ss << f.rdbuf();
+            const std::string claims = read_input(claims_path, "claims file", kMaxSceneBytes);
             long wrong = 0;
-            text = certify_fp(m, c, ss.str(), claims_path, opt.binary_doubles, as_json, &wrong);
+            text = certify_fp(m, c, claims, claims_path, opt.binary_doubles, as_json, &wrong);
         } else if (*batch) {
             std::vector<double> r1, r2;
-            const std::string pairs = read_text(pairs_path, "pairs file");
+            const std::string pairs = read_input(pairs_path, "pairs file", kMaxPairsBytes);
             clock.lap("read pairs");
             try {
                 parse_pairs(pairs, r1, r2, threads);
@@ -287,13 +299,13 @@ int main(int argc, char** argv) {
         emit(text, out);
         return 0;
     } catch (const InputError& e) {
-        std::cerr << "scalecert: error: " << e.what() << "\n";
+        std::cerr << "scalecert: error: " << one_line(e.what()) << "\n";
         return 2;
     } catch (const std::bad_alloc&) {
         std::cerr << "scalecert: error: out of memory\n";
         return 2;
     } catch (const std::exception& e) {
-        std::cerr << "scalecert: internal error: " << e.what() << "\n";
+        std::cerr << "scalecert: internal error: " << one_line(e.what()) << "\n";
         return 3;
     }
 }

@@ -1,0 +1,17 @@
+// The largest inputs scalecert reads (README "Limits"). Past any of them the input is refused
+// with one line naming the limit and exit status 2, before the work that would exhaust memory or
+// time: never an abort or an out-of-memory kill.
+#pragma once
+#include <cstddef>
+
+namespace scalecert {
+
+constexpr std::size_t kMaxNumberChars = 100000;           // one number's text
+constexpr std::size_t kMaxSceneBytes = std::size_t(256) << 20;  // a scene, OFF or claims file
+constexpr std::size_t kMaxPairsBytes = std::size_t(2) << 30;    // a pairs file for classify
+constexpr std::size_t kMaxPoints = 1000000;               // points of one polyhedron
+// Bits of the common denominator of one polyhedron's coordinates (the engine works on the
+// points times that denominator, in integers).
+constexpr std::size_t kMaxDenominatorBits = 16384;
+
+}  // namespace scalecert
