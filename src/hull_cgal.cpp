@@ -27,7 +27,7 @@ std::vector<std::array<int, 3>> hull_with(const std::vector<Vec3z>& pts, ToPoint
     using Point = typename Kernel::Point_3;
     std::vector<Point> cp;
     cp.reserve(pts.size());
-    for (const Vec3z& p : pts) cp.push_back(to_point(p));
+    for (size_t i = 0; i < pts.size(); ++i) cp.push_back(to_point(i));
     std::vector<std::size_t> first(pts.size());
     std::iota(first.begin(), first.end(), std::size_t{0});
     std::sort(first.begin(), first.end(), [&](std::size_t a, std::size_t b) { return pts[a] < pts[b] || (pts[a] == pts[b] && a < b); });
@@ -63,14 +63,17 @@ bool all_exact_doubles(const std::vector<Vec3z>& pts) {
 }
 }  // namespace
 
-std::vector<std::array<int, 3>> hull_triangles(const std::vector<Vec3z>& pts) {
+std::vector<std::array<int, 3>> hull_triangles(const std::vector<Vec3z>& pts, const std::vector<Vec3q>& given) {
     // Integers of at most 53 bits are exact doubles: Epick, whose predicates are exact (filtered),
-    // and the hull needs no constructions. Otherwise Epeck on mpq_class.
+    // and the hull needs no constructions. Otherwise Epeck on mpq_class, on the points as given
+    // (the integers divided by one positive scale: the same orientations), whose interval
+    // filters work where the integers' would overflow the double range (a common denominator of
+    // thousands of bits).
     if (all_exact_doubles(pts)) {
         using KI = CGAL::Exact_predicates_inexact_constructions_kernel;
-        return hull_with<KI>(pts, [](const Vec3z& p) { return KI::Point_3(p[0].get_d(), p[1].get_d(), p[2].get_d()); });
+        return hull_with<KI>(pts, [&](size_t i) { return KI::Point_3(pts[i][0].get_d(), pts[i][1].get_d(), pts[i][2].get_d()); });
     }
-    return hull_with<K>(pts, [](const Vec3z& p) { return K::Point_3(K::FT(Q(p[0])), K::FT(Q(p[1])), K::FT(Q(p[2]))); });
+    return hull_with<K>(pts, [&](size_t i) { return K::Point_3(K::FT(given[i][0]), K::FT(given[i][1]), K::FT(given[i][2])); });
 }
 
 }  // namespace scalecert

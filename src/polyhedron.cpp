@@ -447,9 +447,9 @@ Polyhedron build_polyhedron(const std::vector<Vec3q>& pts, const std::string& na
         for (auto& h : hull_planes_brute(P.ipts_s)) planes.push_back({h.normal, std::move(h.on), 0, {}});
         assemble(P, planes, P.ipts_s);
     } else if (small) {
-        assemble(P, planes_from_triangles(hull_triangles(ip), P.ipts_s), P.ipts_s);
+        assemble(P, planes_from_triangles(hull_triangles(ip, pts), P.ipts_s), P.ipts_s);
     } else {
-        assemble(P, planes_from_triangles(hull_triangles(ip), ip), ip);
+        assemble(P, planes_from_triangles(hull_triangles(ip, pts), ip), ip);
     }
     // Start table: for each cube-map cell centre, the argmax found by climbing in doubles from the
     // previous cell's answer. Only a hint: argmax always finishes the climb exactly.

@@ -53,8 +53,9 @@ struct Polyhedron {
 };
 
 // Triangles of the convex hull of integer points (CGAL), as index triples oriented outward.
-// Precondition: pts has 4 affinely independent points.
-std::vector<std::array<int, 3>> hull_triangles(const std::vector<Vec3z>& pts);
+// `given` holds the same points divided by one positive scale (the points as the user wrote
+// them). Precondition: pts has 4 affinely independent points.
+std::vector<std::array<int, 3>> hull_triangles(const std::vector<Vec3z>& pts, const std::vector<Vec3q>& given);
 
 // Supporting planes of the hull of at most kBrutePoints small integer points, found by testing
 // every triple (no CGAL): each with its outward primitive normal and the indices on it, sorted.
