@@ -223,8 +223,9 @@ struct Reader {
 
 // OFF: "OFF" header (optionally with counts on the same line), "nv nf ne", nv vertex lines.
 // Faces are not needed: the polyhedron is the convex hull of the vertices.
-std::vector<Vec3q> read_off(const std::string& path, const ReadOptions& opt) {
-    std::string text = read_input(path, "OFF file", kMaxSceneBytes);
+}  // namespace
+
+std::vector<Vec3q> parse_off_text(const std::string& text, const std::string& path, const ReadOptions& opt) {
     std::vector<std::string> tokens;
     std::istringstream lines(text);
     std::string line;
@@ -257,6 +258,10 @@ std::vector<Vec3q> read_off(const std::string& path, const ReadOptions& opt) {
     return pts;
 }
 
+namespace {
+std::vector<Vec3q> read_off(const std::string& path, const ReadOptions& opt) {
+    return parse_off_text(read_input(path, "OFF file", kMaxSceneBytes), path, opt);
+}
 }  // namespace
 
 Scene parse_scene_text(const std::string& text, const std::string& name, const std::string& base_dir,
@@ -302,6 +307,7 @@ Scene parse_scene_text(const std::string& text, const std::string& name, const s
                 in.points.push_back(r.point(verts->items[j], [&] { return std::string(pname[i]) + ".vertices[" + std::to_string(j) + "]"; }));
         } else if (off) {
             if (off->kind != JNode::String) r.fail(std::string(pname[i]) + ".off", "expected a file name");
+            if (!opt.allow_off_files) r.fail(std::string(pname[i]) + ".off", "OFF files are not read here");
             std::string path = off->text;
             if (!path.empty() && path[0] != '/' && !base_dir.empty()) path = base_dir + "/" + path;
             in.points = read_off(path, opt);

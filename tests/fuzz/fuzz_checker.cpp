@@ -1,0 +1,56 @@
+// The checker on any bytes (seeded with the bundled certificates and query answers). It must
+// never crash, and what it accepts must be true: for an accepted file, the engine recomputes the
+// answer for the scene stored in it and every claim compared here must agree.
+#include "fuzz_common.hpp"
+
+namespace {
+using J = nlohmann::json;
+using namespace scalecert;
+
+void compare_with_engine(const J& c) {
+    Scene sc;
+    try {
+        sc = parse_scene_text(c.at("scene").dump(), "scene", "");
+    } catch (const InputError& e) {
+        fuzz::finding(std::string("the checker accepted a scene the engine cannot read: ") + e.what());
+    }
+    Model m;
+    try {
+        m = build_model(sc);
+    } catch (const InputError&) {
+        return;  // a seed the engine's own (stricter) checks refuse, or a limit: nothing to compare
+    }
+    Curve cv = build_curve(m);
+    auto exact = [](const J& j) { return j.get<std::string>(); };
+    if (c.at("kind") == "query") {
+        Q r1(exact(c.at("rho1"))), r2(exact(c.at("rho2")));
+        if (verdict_name(query(m, cv, r1, r2, false).verdict) != c.at("verdict").get<std::string>())
+            fuzz::finding("the checker accepted a wrong verdict");
+        return;
+    }
+    if (exact(c.at("growth_distance")) != to_exact_string(cv.growth.value)) fuzz::finding("the checker accepted a wrong growth distance");
+    const J& pieces = c.at("pieces");
+    if (pieces.size() != cv.pieces.size()) fuzz::finding("the checker accepted a wrong number of pieces");
+    for (size_t k = 0; k < pieces.size(); ++k) {
+        const ContactLine& L = m.lines[cv.env.pieces[cv.pieces[k].env].line];
+        if (exact(pieces[k].at("slope")) != to_exact_string(L.slope) || exact(pieces[k].at("intercept")) != to_exact_string(L.intercept) ||
+            exact(pieces[k].at("rho1")[1]) != to_exact_string(cv.pieces[k].to))
+            fuzz::finding("the checker accepted a wrong piece " + std::to_string(k));
+        if (pieces[k].at("contact").get<std::string>() != L.contact) fuzz::finding("the checker accepted a wrong piece contact");
+    }
+    for (size_t k = 0; k < cv.switches.size(); ++k) {
+        const J& sw = c.at("switch_points")[k];
+        const std::string want = cv.switches[k].contact.label;
+        if (sw.at("contact").is_null() ? !want.empty() : sw.at("contact").get<std::string>() != want)
+            fuzz::finding("the checker accepted a wrong switch contact at " + std::to_string(k));
+    }
+}
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+    const std::string text(reinterpret_cast<const char*>(data), size);
+    std::string msg;
+    if (scalecert_check::check_text(text, msg) != 0) return 0;
+    compare_with_engine(scalecert_check::parse_strict(text));
+    return 0;
+}

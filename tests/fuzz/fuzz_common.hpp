@@ -1,0 +1,48 @@
+// Shared by the libFuzzer targets (tools/fuzz.sh): the oracles that turn a wrong answer into a
+// crash libFuzzer reports. The checker is compiled in from its own source (it shares no code
+// with the engine; here both live in one process only to compare them).
+#pragma once
+#include "scalecert/certificate.hpp"
+#include "scalecert/fast_query.hpp"
+#include "../support.hpp"
+
+#define SCALECERT_CHECK_NO_MAIN
+#include "../../checker/scalecert_check.cpp"
+
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+namespace fuzz {
+using namespace scalecert;
+
+[[noreturn]] inline void finding(const std::string& what) {
+    std::fprintf(stderr, "FUZZ FINDING: %s\n", what.c_str());
+    std::fflush(stderr);
+    __builtin_trap();
+}
+
+// The checker must accept what the engine writes.
+inline void must_pass_checker(const std::string& text, const std::string& what) {
+    std::string msg;
+    if (scalecert_check::check_text(text, msg) != 0) finding("the checker rejects the engine's " + what + ": " + msg);
+}
+
+// For a small scene the engine accepts: the curve, the partition and its certificate, which the
+// checker must accept. Returns false when the engine refuses the scene (InputError).
+inline bool certify(const Scene& sc, Model* out_model = nullptr, Curve* out_curve = nullptr) {
+    Model m;
+    try {
+        m = build_model(sc);
+    } catch (const InputError&) {
+        return false;
+    }
+    Curve c = build_curve(m);
+    must_pass_checker(dump(partition_json(m, c, build_partition(m, c))), "partition");
+    if (out_curve) *out_curve = c;
+    if (out_model) *out_model = std::move(m);
+    return true;
+}
+
+inline size_t total_points(const Scene& sc) { return sc.P[0].points.size() + sc.P[1].points.size(); }
+}  // namespace fuzz
