@@ -13,6 +13,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
 #include <new>
 #include <set>
@@ -677,7 +678,21 @@ int check_text(const std::string& text, std::string& message) {
 }  // namespace scalecert_check
 
 #ifndef SCALECERT_CHECK_NO_MAIN
+namespace {
+// GMP aborts when an allocation fails: here that becomes std::bad_alloc, exit 2.
+void* gmp_alloc(size_t n) {
+    if (void* p = std::malloc(n)) return p;
+    throw std::bad_alloc();
+}
+void* gmp_realloc(void* p, size_t, size_t n) {
+    if (void* q = std::realloc(p, n)) return q;
+    throw std::bad_alloc();
+}
+void gmp_free(void* p, size_t) { std::free(p); }
+}  // namespace
+
 int main(int argc, char** argv) {
+    mp_set_memory_functions(gmp_alloc, gmp_realloc, gmp_free);
     if (argc != 2) {
         std::cerr << "usage: scalecert-check CERTIFICATE.json\n";
         return 2;

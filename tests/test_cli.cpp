@@ -9,6 +9,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <random>
 #include <sstream>
 
 namespace fs = std::filesystem;
@@ -291,4 +292,27 @@ BOOST_AUTO_TEST_CASE(inputs_beyond_the_limits_are_refused_with_exit_2) {
     v += "]";
     expect_error("common denominator over 16384 bits", "curve " + write("dens.json", scene(poly(v), poly(kCube2))).string(),
                  "common denominator of the coordinates has more than 16384 bits");
+}
+
+BOOST_AUTO_TEST_CASE(out_of_memory_exits_2_with_one_line) {
+    // 2,000 points with 100,000-digit coordinates need far more than 120 MB of GMP integers. GMP
+    // aborts on a failed allocation; the command turns it into "out of memory" and exit 2.
+#if defined(__has_feature)
+#if __has_feature(address_sanitizer)
+    BOOST_TEST_MESSAGE("skipped under AddressSanitizer, which reserves more address space than the limit");
+    return;
+#endif
+#endif
+    std::mt19937 g(5);
+    std::uniform_int_distribution<int> u(1, 999999);
+    std::string v = "[";
+    for (int i = 0; i < 2000; ++i)
+        v += std::string(i ? "," : "") + "[\"" + std::to_string(u(g)) + "e99990\",\"" + std::to_string(u(g)) + "e99990\",\"" + std::to_string(u(g)) + "e99990\"]";
+    v += "]";
+    fs::path p = write("gmp-big.json", scene(poly(v), poly(kCube2)));
+    fs::path err = workdir() / "oom-err.txt";
+    int raw = std::system(("ulimit -v 120000; " + std::string(SCALECERT_BIN) + " curve " + p.string() + " >/dev/null 2>" + err.string()).c_str());
+    BOOST_TEST((WIFEXITED(raw) && WEXITSTATUS(raw) == 2));
+    const std::string e = slurp(err);
+    BOOST_TEST(e == "scalecert: error: out of memory\n", e);
 }

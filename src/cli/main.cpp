@@ -92,9 +92,22 @@ Model model_of(const Scene& scene, const std::string& path) {
     }
 }
 
+// GMP aborts the process when an allocation fails; this program (not the library, which must not
+// replace its host's allocator) turns that into std::bad_alloc, reported below with exit 2.
+void* gmp_alloc(size_t n) {
+    if (void* p = std::malloc(n)) return p;
+    throw std::bad_alloc();
+}
+void* gmp_realloc(void* p, size_t, size_t n) {
+    if (void* q = std::realloc(p, n)) return q;
+    throw std::bad_alloc();
+}
+void gmp_free(void* p, size_t) { std::free(p); }
+
 }  // namespace
 
 int main(int argc, char** argv) {
+    mp_set_memory_functions(gmp_alloc, gmp_realloc, gmp_free);
     CLI::App app{"scalecert: exact, certified collision of uniformly scaled convex polyhedra"};
     app.require_subcommand(1);
     ReadOptions opt;
