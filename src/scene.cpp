@@ -1,5 +1,7 @@
 #include "scalecert/scene.hpp"
 
+#include "scalecert/mesh.hpp"
+
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
@@ -225,44 +227,6 @@ struct Reader {
 // Faces are not needed: the polyhedron is the convex hull of the vertices.
 }  // namespace
 
-std::vector<Vec3q> parse_off_text(const std::string& text, const std::string& path, const ReadOptions& opt) {
-    std::vector<std::string> tokens;
-    std::istringstream lines(text);
-    std::string line;
-    while (std::getline(lines, line)) {
-        auto hash = line.find('#');
-        if (hash != std::string::npos) line.resize(hash);
-        std::istringstream ls(line);
-        std::string t;
-        while (ls >> t) tokens.push_back(t);
-    }
-    Reader r{path, opt};
-    if (tokens.empty() || tokens[0] != "OFF") r.fail("", "malformed OFF file: it does not start with OFF");
-    auto count = [&](size_t i, const char* what) -> size_t {
-        if (i >= tokens.size()) r.fail("", std::string("malformed OFF file: missing ") + what);
-        const std::string& t = tokens[i];
-        if (t.empty() || t.size() > 9 || t.find_first_not_of("0123456789") != std::string::npos)
-            r.fail("", std::string("malformed OFF file: bad ") + what + " " + quoted(t));
-        return std::stoul(t);
-    };
-    size_t nv = count(1, "vertex count");
-    if (nv > kMaxPoints) r.fail("", "more than " + std::to_string(kMaxPoints) + " vertices (the limit)");
-    count(2, "face count");
-    count(3, "edge count");
-    if (tokens.size() < 4 + 3 * nv) r.fail("", "malformed OFF file: fewer than the " + std::to_string(nv) + " vertices announced");
-    std::vector<Vec3q> pts(nv);
-    for (size_t i = 0; i < nv; ++i)
-        for (int k = 0; k < 3; ++k)
-            pts[i][k] = r.number_text(tokens[4 + 3 * i + k], false,
-                                      [&] { return "vertex " + std::to_string(i) + " coordinate " + std::to_string(k); });
-    return pts;
-}
-
-namespace {
-std::vector<Vec3q> read_off(const std::string& path, const ReadOptions& opt) {
-    return parse_off_text(read_input(path, "OFF file", kMaxSceneBytes), path, opt);
-}
-}  // namespace
 
 Scene parse_scene_text(const std::string& text, const std::string& name, const std::string& base_dir,
                        const ReadOptions& opt) {
@@ -294,11 +258,13 @@ Scene parse_scene_text(const std::string& text, const std::string& name, const s
         const JNode* p = root.find(pname[i]);
         if (!p) r.fail("", std::string("missing field \"") + pname[i] + "\"");
         if (p->kind != JNode::Object) r.fail(pname[i], "expected an object with \"vertices\" or \"off\"");
-        only(*p, pname[i], {"vertices", "off", "seed"});
+        only(*p, pname[i], {"vertices", "off", "mesh", "seed"});
         PolyInput& in = sc.P[i];
         const JNode* verts = p->find("vertices");
         const JNode* off = p->find("off");
-        if (verts && off) r.fail(pname[i], "give either \"vertices\" or \"off\", not both");
+        const JNode* mesh = p->find("mesh");
+        if ((verts != nullptr) + (off != nullptr) + (mesh != nullptr) > 1) r.fail(pname[i], "give one of \"vertices\", \"mesh\" and \"off\"");
+        if (mesh) off = mesh;
         if (verts) {
             if (verts->kind != JNode::Array) r.fail(std::string(pname[i]) + ".vertices", "expected an array of points");
             if (verts->items.size() > kMaxPoints) r.fail(std::string(pname[i]) + ".vertices", "more than " + std::to_string(kMaxPoints) + " points (the limit)");
@@ -306,20 +272,43 @@ Scene parse_scene_text(const std::string& text, const std::string& name, const s
             for (size_t j = 0; j < verts->items.size(); ++j)
                 in.points.push_back(r.point(verts->items[j], [&] { return std::string(pname[i]) + ".vertices[" + std::to_string(j) + "]"; }));
         } else if (off) {
-            if (off->kind != JNode::String) r.fail(std::string(pname[i]) + ".off", "expected a file name");
-            if (!opt.allow_off_files) r.fail(std::string(pname[i]) + ".off", "OFF files are not read here");
+            const std::string key = std::string(pname[i]) + (mesh ? ".mesh" : ".off");
+            if (off->kind != JNode::String) r.fail(key, "expected a file name");
+            if (!opt.allow_off_files) r.fail(key, "mesh files are not read here");
             std::string path = off->text;
             if (!path.empty() && path[0] != '/' && !base_dir.empty()) path = base_dir + "/" + path;
-            in.points = read_off(path, opt);
+            // "mesh": OFF, OBJ, PLY or STL by extension; "off": an OFF file whatever its name.
+            in.points = mesh ? read_mesh(path, opt) : parse_mesh(read_input(path, "OFF file", kMaxSceneBytes), MeshFormat::Off, path, opt);
         } else {
-            r.fail(pname[i], "missing field \"vertices\" (or \"off\")");
+            r.fail(pname[i], "missing field \"vertices\" (or \"mesh\", \"off\")");
         }
-        if (in.points.size() < 4)
-            r.fail(pname[i], "fewer than 4 vertices (" + std::to_string(in.points.size()) + ")");
         if (const JNode* s = p->find("seed")) {
             in.seed = r.point(*s, std::string(pname[i]) + ".seed");
             in.seed_given = true;
-        } else {
+        }
+    }
+    const char* iname[2] = {"I1", "I2"};
+    for (int i = 0; i < 2; ++i) {
+        const JNode* n = root.find(iname[i]);
+        if (!n) r.fail("", std::string("missing field \"") + iname[i] + "\"");
+        if (n->kind != JNode::Array || n->items.size() != 2) r.fail(iname[i], "expected [lo, hi]");
+        sc.lo[i] = r.number(n->items[0], std::string(iname[i]) + "[0]");
+        sc.hi[i] = r.number(n->items[1], std::string(iname[i]) + "[1]");
+    }
+    finish_scene(sc, name);
+    return sc;
+}
+
+void finish_scene(Scene& sc, const std::string& name) {
+    const char* pname[2] = {"P1", "P2"};
+    const char* iname[2] = {"I1", "I2"};
+    for (int i = 0; i < 2; ++i) {
+        PolyInput& in = sc.P[i];
+        if (in.points.size() < 4)
+            throw InputError(name + ": " + pname[i] + ": fewer than 4 vertices (" + std::to_string(in.points.size()) + ")");
+        if (in.points.size() > kMaxPoints)
+            throw InputError(name + ": " + pname[i] + ": more than " + std::to_string(kMaxPoints) + " points (the limit)");
+        if (!in.seed_given) {
             // The mean, summed in integers while the coordinates are integers.
             Vec3q c{Q(0), Q(0), Q(0)};
             Z zs[3] = {0, 0, 0};
@@ -331,18 +320,9 @@ Scene parse_scene_text(const std::string& text, const std::string& name, const s
             for (int k = 0; k < 3; ++k) c[k] = (c[k] + Q(zs[k])) / Q(static_cast<long>(in.points.size()));
             in.seed = c;
         }
+        if (sgn(sc.lo[i]) <= 0) throw InputError(name + ": " + iname[i] + ": lo must be > 0 (got " + quoted(to_exact_string(sc.lo[i])) + ")");
+        if (sc.lo[i] > sc.hi[i]) throw InputError(name + ": " + iname[i] + ": lo > hi");
     }
-    const char* iname[2] = {"I1", "I2"};
-    for (int i = 0; i < 2; ++i) {
-        const JNode* n = root.find(iname[i]);
-        if (!n) r.fail("", std::string("missing field \"") + iname[i] + "\"");
-        if (n->kind != JNode::Array || n->items.size() != 2) r.fail(iname[i], "expected [lo, hi]");
-        sc.lo[i] = r.number(n->items[0], std::string(iname[i]) + "[0]");
-        sc.hi[i] = r.number(n->items[1], std::string(iname[i]) + "[1]");
-        if (sgn(sc.lo[i]) <= 0) r.fail(iname[i], "lo must be > 0 (got " + quoted(to_exact_string(sc.lo[i])) + ")");
-        if (sc.lo[i] > sc.hi[i]) r.fail(iname[i], "lo > hi");
-    }
-    return sc;
 }
 
 Scene load_scene(const std::string& path, const ReadOptions& opt) {

@@ -9,6 +9,11 @@
 
 #include <filesystem>
 #include <fstream>
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <map>
 #include <random>
 #include <sstream>
 
@@ -315,4 +320,112 @@ BOOST_AUTO_TEST_CASE(out_of_memory_exits_2_with_one_line) {
     BOOST_TEST((WIFEXITED(raw) && WEXITSTATUS(raw) == 2));
     const std::string e = slurp(err);
     BOOST_TEST(e == "scalecert: error: out of memory\n", e);
+}
+
+// ---- mesh formats (issue 10): OBJ, PLY and STL read exactly like the same points in JSON ------
+namespace {
+// The tetrahedron on a box (tests/test_hand_curves.cpp derives its curve by hand).
+const std::vector<std::array<int, 3>> kTetra = {{2, 0, 2}, {-2, 2, 5}, {-1, -2, 6}, {2, 0, 7}};
+const std::vector<std::array<int, 3>> kBox = {{-1, -1, -1}, {1, -1, -1}, {-1, 1, -1}, {1, 1, -1}, {-1, -1, 1}, {1, -1, 1}, {-1, 1, 1}, {1, 1, 1}};
+template <class T>
+void put_bytes(std::string& out, T v, bool big_endian) {
+    char b[sizeof(T)];
+    std::memcpy(b, &v, sizeof(T));
+    if (big_endian) std::reverse(b, b + sizeof(T));
+    out.append(b, sizeof(T));
+}
+// Consecutive vertices as "triangles" (wrapping at the end): first appearance is list order.
+std::vector<std::array<std::array<int, 3>, 3>> triangles(const std::vector<std::array<int, 3>>& v) {
+    std::vector<std::array<std::array<int, 3>, 3>> t;
+    for (size_t i = 0; i < v.size(); i += 3) t.push_back({v[i % v.size()], v[(i + 1) % v.size()], v[(i + 2) % v.size()]});
+    return t;
+}
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(mesh_files_read_exactly_like_json) {
+    const fs::path ref = fs::path(SCALECERT_SOURCE_DIR) / "certificates/scenes/tetra_box_switch.json";
+    const std::string want = run("partition " + ref.string()).out;
+    BOOST_TEST_REQUIRE(!want.empty());
+    std::string obj = "# tetrahedron\nvn 0 0 1\n";
+    for (const auto& v : kTetra) obj += "v " + std::to_string(v[0]) + " " + std::to_string(v[1]) + " " + std::to_string(v[2]) + "\n";
+    obj += "f 1 2 3\n";
+    write("p1.obj", obj);
+    std::string obj_w = "v 4 0 4 2\nv -4 4 10 2\nv -1 -2 6\nv 6 0 21 3\n";  // homogeneous: the same points
+    write("p1w.obj", obj_w);
+    std::map<std::string, std::string> p2;
+    {
+        std::string t = "ply\nformat ascii 1.0\ncomment a box\nelement vertex 8\nproperty float x\nproperty float y\nproperty float z\n"
+                        "element face 0\nproperty list uchar int vertex_indices\nend_header\n";
+        for (const auto& v : kBox) t += std::to_string(v[0]) + " " + std::to_string(v[1]) + " " + std::to_string(v[2]) + "\n";
+        p2["ascii.ply"] = t;
+    }
+    for (bool be : {false, true}) {  // doubles, an extra byte and ints, after an element with a list
+        std::string t = std::string("ply\nformat ") + (be ? "binary_big_endian" : "binary_little_endian") +
+                        " 1.0\nelement skipped 2\nproperty list uchar short ids\nelement vertex 8\nproperty double x\n"
+                        "property uchar junk\nproperty float y\nproperty int z\nend_header\n";
+        for (int k = 0; k < 2; ++k) { put_bytes<unsigned char>(t, 2, be); put_bytes<short>(t, 7, be); put_bytes<short>(t, 9, be); }
+        for (const auto& v : kBox) { put_bytes<double>(t, v[0], be); put_bytes<unsigned char>(t, 5, be); put_bytes<float>(t, static_cast<float>(v[1]), be); put_bytes<int>(t, v[2], be); }
+        p2[be ? "be.ply" : "le.ply"] = t;
+    }
+    {
+        std::string a = "solid box\n", b(80, ' ');
+        const auto tris = triangles(kBox);
+        put_bytes<std::uint32_t>(b, static_cast<std::uint32_t>(tris.size()), false);
+        for (const auto& tri : tris) {
+            a += " facet normal 0 0 1\n  outer loop\n";
+            for (int k = 0; k < 3; ++k) put_bytes<float>(b, 0.0f, false);
+            for (const auto& v : tri) {
+                a += "   vertex " + std::to_string(v[0]) + " " + std::to_string(v[1]) + " " + std::to_string(v[2]) + "\n";
+                for (int k = 0; k < 3; ++k) put_bytes<float>(b, static_cast<float>(v[k]), false);
+            }
+            a += "  endloop\n endfacet\n";
+            b += std::string(2, '\0');
+        }
+        p2["ascii.stl"] = a + "endsolid box\n";
+        p2["binary.stl"] = b;
+    }
+    for (const auto& [name, bytes] : p2) {
+        fs::path f = write("p2-" + name, bytes);
+        for (const char* p1 : {"p1.obj", "p1w.obj"}) {
+            Run r = run("partition --p1 " + (workdir() / p1).string() + " --p2 " + f.string() + " --i1 1/2,2 --i2 1,4 --seed1 0,0,9/2 --seed2 0,0,0");
+            BOOST_TEST(r.status == 0, name << ": " << r.err);
+            BOOST_TEST((r.out == want), name << " with " << p1 << ": the certificate differs from the JSON scene's");
+        }
+        // The same through a scene file's "mesh" key.
+        fs::path sf = write("mesh-scene.json", "{\"P1\": {\"mesh\": \"p1.obj\", \"seed\": [0,0,\"9/2\"]}, \"P2\": {\"mesh\": \"p2-" + name +
+                                                    "\", \"seed\": [0,0,0]}, \"I1\": [\"1/2\", 2], \"I2\": [1, 4]}");
+        BOOST_TEST((run("partition " + sf.string()).out == want), name << " through \"mesh\"");
+    }
+}
+
+BOOST_AUTO_TEST_CASE(bad_mesh_files_and_options) {
+    write("good.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n");
+    const std::string g = (workdir() / "good.obj").string();
+    auto M = [&](const std::string& name, const std::string& bytes) {
+        return "curve --p1 " + write(name, bytes).string() + " --p2 " + g + " --i1 1,2 --i2 1,2";
+    };
+    expect_error("OBJ without v lines", M("none.obj", "f 1 2 3\n"), "no 'v' lines");
+    expect_error("OBJ w = 0", M("w0.obj", "v 1 2 3 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n"), "w = 0");
+    expect_error("OBJ bad number", M("bad.obj", "v 1 2 x\n"), "vertex 0 coordinate 2");
+    expect_error("PLY truncated", M("short.ply", "ply\nformat binary_little_endian 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\nend_header\nabc"), "ends early");
+    expect_error("PLY huge element", M("huge.ply", "ply\nformat binary_little_endian 1.0\nelement junk 99999999999\nproperty int a\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\nend_header\n"), "ends early");
+    expect_error("PLY without z", M("noz.ply", "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nend_header\n"), "lacks x, y or z");
+    expect_error("PLY unknown format", M("fmt.ply", "ply\nformat binary_middle_endian 1.0\nend_header\n"), "unknown PLY format");
+    expect_error("PLY not PLY", M("not.ply", "OFF\n"), "does not start with 'ply'");
+    expect_error("STL neither", M("neither.stl", "hello"), "neither binary");
+    expect_error("STL bad vertex", M("bad.stl", "solid x\nvertex 1 2\n"), "expected 'vertex x y z'");
+    std::string nan_stl(80, ' ');
+    put_bytes<std::uint32_t>(nan_stl, 1, false);
+    for (int k = 0; k < 12; ++k) put_bytes<float>(nan_stl, k == 5 ? std::numeric_limits<float>::quiet_NaN() : 1.0f, false);
+    nan_stl += std::string(2, '\0');
+    expect_error("STL NaN", M("nan.stl", nan_stl), "not finite");
+    expect_error("unknown extension", M("m.xyz", "1 2 3\n"), "unknown mesh format");
+    expect_error("flat mesh", M("flat.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\n"), "affinely independent");
+    expect_error("--p2 missing", "curve --p1 " + g + " --i1 1,2 --i2 1,2", "give SCENE, or --p1 and --p2");
+    expect_error("--i1 three numbers", "curve --p1 " + g + " --p2 " + g + " --i1 1,2,3 --i2 1,2", "--i1: expected 2 numbers");
+    expect_error("--i1 lo > hi", "curve --p1 " + g + " --p2 " + g + " --i1 2,1 --i2 1,2", "I1: lo > hi");
+    expect_error("--seed2 bad", "curve --p1 " + g + " --p2 " + g + " --i1 1,2 --i2 1,2 --seed2 1,x,2", "--seed2");
+    fs::path sc = write("both.json", scene(poly(kCube1), poly(kCube2)));
+    expect_error("SCENE and --p1", "curve " + sc.string() + " --p1 " + g, "not both");
+    expect_error("mesh and vertices", "curve " + write("mv.json", scene("{\"mesh\": \"good.obj\", \"vertices\": " + kCube1 + "}", poly(kCube2))).string(), "give one of");
 }

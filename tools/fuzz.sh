@@ -2,7 +2,7 @@
 # Runs every libFuzzer target for SECONDS each (default 60), under AddressSanitizer and
 # UndefinedBehaviorSanitizer, two at a time on this machine's cores. Builds them first with
 # clang-14 in build-san/ (installing clang-14 and libclang-rt-14-dev if missing).
-#   tools/fuzz.sh [SECONDS] [TARGET...]   targets: scene off pairs claims checker differential
+#   tools/fuzz.sh [SECONDS] [TARGET...]   targets: scene mesh pairs claims checker differential
 # Seeds: tests/fuzz/corpus/TARGET (committed); what a run finds new goes to
 # build-san/corpus/TARGET. A finding (crash, sanitizer report, oracle failure, timeout, memory
 # blow-up) is saved in build-san/artifacts/ and makes the script exit 1.
@@ -11,7 +11,7 @@ cd "$(dirname "$0")/.."
 SECONDS_EACH="${1:-60}"
 shift || true
 TARGETS=("$@")
-[ ${#TARGETS[@]} -eq 0 ] && TARGETS=(scene off pairs claims checker differential)
+[ ${#TARGETS[@]} -eq 0 ] && TARGETS=(scene mesh pairs claims checker differential)
 tools/install-deps.sh clang-14 libclang-rt-14-dev
 if [ ! -f build-san/CMakeCache.txt ]; then
   CC=clang-14 CXX=clang++-14 cmake -S . -B build-san -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSCALECERT_FUZZ=ON >/dev/null

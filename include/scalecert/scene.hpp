@@ -20,14 +20,16 @@ struct Scene {
 
 struct ReadOptions {
     bool binary_doubles = false;  // JSON/OFF numbers read as the IEEE doubles strtod gives
-    bool allow_off_files = true;  // "off": "FILE" in a scene (off for text from untrusted sources)
+    bool allow_off_files = true;  // "mesh" / "off": "FILE" in a scene (off for text from untrusted sources)
 };
 
 // Reads and checks a scene file. Throws InputError naming the file and the offending field.
 // (Geometric checks that need the hull — rank, seed strictly inside — are done by build_model.)
 Scene load_scene(const std::string& path, const ReadOptions& opt = {});
-// OFF text (a polyhedron's points; faces are not needed). `name` labels errors.
-std::vector<Vec3q> parse_off_text(const std::string& text, const std::string& name, const ReadOptions& opt = {});
+// Completes and checks a scene assembled in code (or read): at least 4 and at most kMaxPoints
+// points each, 0 < lo <= hi, and the mean of the points as the seed where none was given. The
+// same rules and messages as the reader, prefixed with `name`. Throws InputError.
+void finish_scene(Scene& sc, const std::string& name);
 Scene parse_scene_text(const std::string& text, const std::string& name, const std::string& base_dir,
                        const ReadOptions& opt = {});
 

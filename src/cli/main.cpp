@@ -4,6 +4,7 @@
 #include "scalecert/timing.hpp"
 #include "scalecert/audit.hpp"
 #include "scalecert/baselines.hpp"
+#include "scalecert/mesh.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -83,6 +84,45 @@ std::string one_line(const std::string& msg) {
     return out;
 }
 
+// "A,B" or "A,B,C": numbers separated by commas, read as the scene reader reads them.
+std::vector<Q> number_list(const std::string& text, size_t n, const std::string& option, const ReadOptions& opt) {
+    std::vector<Q> out;
+    size_t b = 0;
+    for (;;) {
+        const size_t e = text.find(',', b);
+        try {
+            out.push_back(parse_number(text.substr(b, e == std::string::npos ? std::string::npos : e - b), opt.binary_doubles));
+        } catch (const InputError& err) {
+            throw InputError(option + ": " + err.what());
+        }
+        if (e == std::string::npos) break;
+        b = e + 1;
+    }
+    if (out.size() != n) throw InputError(option + ": expected " + std::to_string(n) + " numbers separated by commas, got " + quoted(text));
+    return out;
+}
+
+// A scene straight from two mesh files and the ranges, checked as a scene file would be.
+Scene scene_from_options(const std::string mesh[2], const std::string interval[2], const std::string seed[2], const ReadOptions& opt) {
+    if (mesh[0].empty() || mesh[1].empty() || interval[0].empty() || interval[1].empty())
+        throw InputError("give SCENE, or --p1 and --p2 (mesh files) with --i1 and --i2 (LO,HI)");
+    Scene sc;
+    for (int i = 0; i < 2; ++i) {
+        const std::string n = std::to_string(i + 1);
+        sc.P[i].points = read_mesh(mesh[i], opt);
+        const std::vector<Q> r = number_list(interval[i], 2, "--i" + n, opt);
+        sc.lo[i] = r[0];
+        sc.hi[i] = r[1];
+        if (!seed[i].empty()) {
+            const std::vector<Q> s = number_list(seed[i], 3, "--seed" + n, opt);
+            sc.P[i].seed = {s[0], s[1], s[2]};
+            sc.P[i].seed_given = true;
+        }
+    }
+    finish_scene(sc, "command line");
+    return sc;
+}
+
 // The model of a scene read from `path`; geometric errors name the file too.
 Model model_of(const Scene& scene, const std::string& path) {
     try {
@@ -114,8 +154,15 @@ int main(int argc, char** argv) {
     std::string scene_path, out, rho1s, rho2s;
     bool as_json = false, in_t = false;
     std::string segment_spec;
+    std::string mesh_path[2], interval_text[2], seed_text[2];
     auto common = [&](CLI::App* sub) {
-        sub->add_option("SCENE", scene_path, "scene file (JSON)")->required();
+        sub->add_option("SCENE", scene_path, "scene file (JSON); or --p1, --p2, --i1, --i2");
+        sub->add_option("--p1", mesh_path[0], "P1 from a mesh file (.off .obj .ply .stl), with --p2, --i1, --i2 instead of SCENE");
+        sub->add_option("--p2", mesh_path[1], "P2 from a mesh file");
+        sub->add_option("--i1", interval_text[0], "I1 as LO,HI (exact: 1/2,3)");
+        sub->add_option("--i2", interval_text[1], "I2 as LO,HI");
+        sub->add_option("--seed1", seed_text[0], "P1's seed as X,Y,Z (default: the mean of its vertices)");
+        sub->add_option("--seed2", seed_text[1], "P2's seed as X,Y,Z");
         sub->add_option("--out", out, "write the output to this file (atomically)");
         sub->add_flag("--binary-doubles", opt.binary_doubles, "read JSON/OFF numbers as IEEE doubles");
     };
@@ -228,7 +275,11 @@ int main(int argc, char** argv) {
         }
         StageClock clock;
         const bool timing = clock.on;
-        Scene scene = load_scene(scene_path, opt);
+        if (!scene_path.empty() && (!mesh_path[0].empty() || !mesh_path[1].empty() || !interval_text[0].empty() || !interval_text[1].empty() ||
+                                    !seed_text[0].empty() || !seed_text[1].empty()))
+            throw InputError("give SCENE or --p1, --p2, --i1, --i2, not both");
+        Scene scene = scene_path.empty() ? scene_from_options(mesh_path, interval_text, seed_text, opt) : load_scene(scene_path, opt);
+        if (scene_path.empty()) scene_path = "--p1 " + mesh_path[0] + " --p2 " + mesh_path[1];
         clock.lap("read scene");
         Model m = model_of(scene, scene_path);
         clock.restart();

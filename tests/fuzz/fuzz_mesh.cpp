@@ -1,11 +1,15 @@
-// The OFF reader on any bytes; a polyhedron it accepts is paired with a cube and certified.
+// A mesh reader (OFF, OBJ, PLY, STL: the first byte chooses) on any bytes; a polyhedron it
+// accepts is paired with a cube and certified.
 #include "fuzz_common.hpp"
+#include "scalecert/mesh.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-    const std::string text(reinterpret_cast<const char*>(data), size);
+    if (size == 0) return 0;
+    const scalecert::MeshFormat f = static_cast<scalecert::MeshFormat>(data[0] % 4);
+    const std::string text(reinterpret_cast<const char*>(data) + 1, size - 1);
     scalecert::Scene sc;
     try {
-        sc.P[0].points = scalecert::parse_off_text(text, "fuzz.off");
+        sc.P[0].points = scalecert::parse_mesh(text, f, "fuzz.mesh");
     } catch (const scalecert::InputError&) {
         return 0;
     }
