@@ -249,6 +249,7 @@ void add_lines(Model& m, const std::vector<V>& normals) {
 }  // namespace
 
 Model build_model(const Scene& scene) {
+    check_scene(scene, "scene");  // a scene built in code gets the reader's checks too
     StageClock clock;
     Model m;
     m.scene = scene;

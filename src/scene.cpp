@@ -299,29 +299,34 @@ Scene parse_scene_text(const std::string& text, const std::string& name, const s
     return sc;
 }
 
-void finish_scene(Scene& sc, const std::string& name) {
+void check_scene(const Scene& sc, const std::string& name) {
     const char* pname[2] = {"P1", "P2"};
     const char* iname[2] = {"I1", "I2"};
     for (int i = 0; i < 2; ++i) {
-        PolyInput& in = sc.P[i];
-        if (in.points.size() < 4)
-            throw InputError(name + ": " + pname[i] + ": fewer than 4 vertices (" + std::to_string(in.points.size()) + ")");
-        if (in.points.size() > kMaxPoints)
-            throw InputError(name + ": " + pname[i] + ": more than " + std::to_string(kMaxPoints) + " points (the limit)");
-        if (!in.seed_given) {
-            // The mean, summed in integers while the coordinates are integers.
-            Vec3q c{Q(0), Q(0), Q(0)};
-            Z zs[3] = {0, 0, 0};
-            for (const Vec3q& v : in.points)
-                for (int k = 0; k < 3; ++k) {
-                    if (v[k].get_den() == 1) zs[k] += v[k].get_num();
-                    else c[k] += v[k];
-                }
-            for (int k = 0; k < 3; ++k) c[k] = (c[k] + Q(zs[k])) / Q(static_cast<long>(in.points.size()));
-            in.seed = c;
-        }
+        const size_t n = sc.P[i].points.size();
+        if (n < 4) throw InputError(name + ": " + pname[i] + ": fewer than 4 vertices (" + std::to_string(n) + ")");
+        if (n > kMaxPoints) throw InputError(name + ": " + pname[i] + ": more than " + std::to_string(kMaxPoints) + " points (the limit)");
+    }
+    for (int i = 0; i < 2; ++i) {
         if (sgn(sc.lo[i]) <= 0) throw InputError(name + ": " + iname[i] + ": lo must be > 0 (got " + quoted(to_exact_string(sc.lo[i])) + ")");
         if (sc.lo[i] > sc.hi[i]) throw InputError(name + ": " + iname[i] + ": lo > hi");
+    }
+}
+
+void finish_scene(Scene& sc, const std::string& name) {
+    check_scene(sc, name);
+    for (PolyInput& in : sc.P) {
+        if (in.seed_given) continue;
+        // The mean, summed in integers while the coordinates are integers.
+        Vec3q c{Q(0), Q(0), Q(0)};
+        Z zs[3] = {0, 0, 0};
+        for (const Vec3q& v : in.points)
+            for (int k = 0; k < 3; ++k) {
+                if (v[k].get_den() == 1) zs[k] += v[k].get_num();
+                else c[k] += v[k];
+            }
+        for (int k = 0; k < 3; ++k) c[k] = (c[k] + Q(zs[k])) / Q(static_cast<long>(in.points.size()));
+        in.seed = c;
     }
 }
 

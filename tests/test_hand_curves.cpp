@@ -84,3 +84,40 @@ BOOST_AUTO_TEST_CASE(coincident_seeds_overlap_everywhere) {
     BOOST_TEST(p.separated.empty());
     BOOST_TEST(p.overlap.size() == 4u);
 }
+
+BOOST_AUTO_TEST_CASE(scenes_built_in_code_get_the_readers_checks) {
+    // The stacked cubes of the first case, assembled in code. With lo > hi, build_curve used to
+    // return a piece [3, 1/2]; now build_model refuses the scene as the reader would.
+    Scene sc;
+    for (int k = 0; k < 8; ++k) {
+        sc.P[0].points.push_back({Q(2 * (k & 1)), Q((k & 2)), Q((k & 4) / 2)});
+        sc.P[1].points.push_back({Q(2 * (k & 1)), Q((k & 2)), Q(3 + (k & 4) / 2)});
+    }
+    sc.lo[0] = Q(3);
+    sc.hi[0] = Q(1, 2);
+    sc.lo[1] = Q(1, 2);
+    sc.hi[1] = Q(5, 2);
+    auto message = [](const Scene& s) {
+        try {
+            build_model(s);
+        } catch (const InputError& e) {
+            return std::string(e.what());
+        }
+        return std::string("accepted");
+    };
+    BOOST_TEST(message(sc) == "scene: I1: lo > hi");
+    sc.lo[0] = Q(1, 2);
+    sc.hi[0] = Q(5, 2);
+    sc.lo[1] = Q(0);
+    BOOST_TEST(message(sc) == "scene: I2: lo must be > 0 (got '0')");
+    sc.lo[1] = Q(1, 2);
+    Scene three = sc;
+    three.P[1].points.resize(3);
+    BOOST_TEST(message(three) == "scene: P2: fewer than 4 vertices (3)");
+    // finish_scene gives the default seeds, the means: (1, 1, 1) and (1, 1, 4) by hand.
+    finish_scene(sc, "scene");
+    BOOST_TEST((sc.P[0].seed == Vec3q{Q(1), Q(1), Q(1)}));
+    BOOST_TEST((sc.P[1].seed == Vec3q{Q(1), Q(1), Q(4)}));
+    Curve c = build_curve(build_model(sc));
+    BOOST_TEST(c.growth.value == Q(3, 2));  // ρ1 + ρ2 = 3 meets ρ1 = ρ2 at 3/2
+}

@@ -26,9 +26,12 @@ struct ReadOptions {
 // Reads and checks a scene file. Throws InputError naming the file and the offending field.
 // (Geometric checks that need the hull — rank, seed strictly inside — are done by build_model.)
 Scene load_scene(const std::string& path, const ReadOptions& opt = {});
-// Completes and checks a scene assembled in code (or read): at least 4 and at most kMaxPoints
-// points each, 0 < lo <= hi, and the mean of the points as the seed where none was given. The
-// same rules and messages as the reader, prefixed with `name`. Throws InputError.
+// Checks a scene by the reader's rules and messages, prefixed with `name`: at least 4 and at most
+// kMaxPoints points each, 0 < lo <= hi. Throws InputError. (build_model calls it; rank and the
+// seeds' interiority are its own checks.)
+void check_scene(const Scene& sc, const std::string& name);
+// check_scene, then the mean of the points as the seed of each polyhedron without seed_given:
+// call it for a scene assembled in code.
 void finish_scene(Scene& sc, const std::string& name);
 Scene parse_scene_text(const std::string& text, const std::string& name, const std::string& base_dir,
                        const ReadOptions& opt = {});
