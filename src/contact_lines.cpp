@@ -47,17 +47,17 @@ namespace {
 }  // namespace
 
 std::vector<size_t> undominated(const std::vector<double>& a, const std::vector<double>& b) {
-    const size_t n = a.size();
-    std::vector<size_t> by_slope(n);
-    std::iota(by_slope.begin(), by_slope.end(), size_t{0});
+    // A line whose approximations are not finite is kept, and takes no part in the sweep: it is
+    // neither dropped nor used to drop another.
+    std::vector<size_t> keep, by_slope;
+    for (size_t i = 0; i < a.size(); ++i) (std::isfinite(a[i]) && std::isfinite(b[i]) ? by_slope : keep).push_back(i);
     std::sort(by_slope.begin(), by_slope.end(), [&](size_t i, size_t j) { return a[i] > a[j]; });
     constexpr double kRel = 1e-12;
     auto lower = [&](size_t i) { return a[i] - kRel * std::fabs(a[i]); };  // below the true slope
     auto upper = [&](size_t i) { return a[i] + kRel * std::fabs(a[i]); };  // above it
-    std::vector<size_t> keep;
     double bmax = -INFINITY, bmax_err = 0;
     size_t j = 0;  // lines by_slope[0..j) have a slope certainly larger than the current line's
-    for (size_t k = 0; k < n; ++k) {
+    for (size_t k = 0; k < by_slope.size(); ++k) {
         size_t i = by_slope[k];
         while (j < k && lower(by_slope[j]) > upper(i)) {
             size_t m = by_slope[j++];
@@ -72,6 +72,20 @@ std::vector<size_t> undominated(const std::vector<double>& a, const std::vector<
 
 
 namespace {
+
+// x·y / (z·w) for integers, within a few ulps: each factor as mantissa · 2^exponent, so nothing
+// overflows on the way. NaN when z·w = 0 or the result is outside [2^-1000, 2^1000].
+double ratio(const Z& x, const Z& y, const Z& z, const Z& w) {
+    long ex, ey, ez, ew;
+    const double mx = mpz_get_d_2exp(&ex, x.get_mpz_t()), my = mpz_get_d_2exp(&ey, y.get_mpz_t());
+    const double mz = mpz_get_d_2exp(&ez, z.get_mpz_t()), mw = mpz_get_d_2exp(&ew, w.get_mpz_t());
+    if (mz == 0 || mw == 0) return NAN;
+    const double mant = mx * my / (mz * mw);
+    if (mant == 0) return 0.0;  // x or y is 0: exactly 0
+    const long e = ex + ey - ez - ew;
+    if (e > 1000 || e < -1000) return NAN;
+    return std::ldexp(mant, static_cast<int>(e));
+}
 
 D3 dir_d(const Vec3z& v) { return direction_d(v); }
 D3 dir_d(const Vec3s& v) { return {static_cast<double>(v[0]), static_cast<double>(v[1]), static_cast<double>(v[2])}; }
@@ -191,7 +205,8 @@ std::vector<V> facet_normals(Model& m) {
 // certainly dominated are dropped; the rest are built exactly, with their contact features.
 template <class V>
 void add_lines(Model& m, const std::vector<V>& normals) {
-    const double D1 = Z(m.P[0].scale * m.sden[0]).get_d(), D2 = Z(m.P[1].scale * m.sden[1]).get_d(), DD = m.dden.get_d();
+    const Z Dz1 = m.P[0].scale * m.sden[0], Dz2 = m.P[1].scale * m.sden[1];
+    const double D1 = Dz1.get_d(), D2 = Dz2.get_d(), DD = m.dden.get_d();
     // The seeds' integers in 128 bits, when they fit: numerators then need no GMP unless a
     // product overflows (checked).
     I128 sden0 = 0, sden1 = 0, sz0[3], sz1[3], dz[3];
@@ -232,13 +247,18 @@ void add_lines(Model& m, const std::vector<V>& normals) {
                 if (ok) H1 = static_cast<double>(h1), H2 = static_cast<double>(h2), ND = static_cast<double>(nd), done = true;
             }
         }
-        if (!done) {
+        if (done) {
+            sa[idx] = -(H1 * D2) / (H2 * D1);
+            sb[idx] = (ND * D2) / (DD * H2);
+        } else {
+            // Integers of any size: the products would overflow doubles (and an intercept of 0
+            // from inf in a denominator once dropped a line of the curve), so the ratios are
+            // formed from mantissas and exponents, NaN outside the double range.
             const Vec3z nz = as_z(n), mz = neg(nz);
             const Numerators u = numerators(m, nz, dotz(nz, m.P[0].ipts[m.P[0].climb(nz)]), dotz(mz, m.P[1].ipts[m.P[1].climb(mz)]));
-            H1 = u.H1.get_d(), H2 = u.H2.get_d(), ND = u.ND.get_d();
+            sa[idx] = -ratio(u.H1, Dz2, u.H2, Dz1);
+            sb[idx] = ratio(u.ND, Dz2, m.dden, u.H2);
         }
-        sa[idx] = -(H1 * D2) / (H2 * D1);
-        sb[idx] = (ND * D2) / (DD * H2);
     }
     std::vector<size_t> keep = undominated(sa, sb);
     m.stats.dominated_lines = normals.size() - keep.size();

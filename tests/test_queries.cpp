@@ -102,3 +102,26 @@ BOOST_AUTO_TEST_CASE(partition_regions_agree_with_brute_force) {
         }
     }
 }
+
+BOOST_AUTO_TEST_CASE(a_face_with_a_143_digit_normal_is_not_dropped) {
+    // Found by the `scene` fuzz target: one vertex with a 117-digit denominator gives a face of
+    // P1 a 143-digit normal. The dominance pre-filter approximated its line with doubles whose
+    // products overflowed, read the intercept as 0, and dropped a line of the curve: the engine's
+    // curve lay below the true one. Brute force (no hull, no pre-filter) is the oracle here, on
+    // and 2^-30 around the curve at every switch point and mid-piece.
+    const Scene sc = load_scene(std::string(SCALECERT_SOURCE_DIR) + "/tests/data/fuzz_huge_denominator_face.json");
+    const Model m = build_model(sc);
+    const Curve c = build_curve(m);
+    const test::Brute brute(sc);
+    int checked = 0;
+    for (const CurvePiece& p : c.pieces)
+        for (const Q& x : {p.from, Q((p.from + p.to) / 2), p.to}) {
+            const Q y = c.env.value(m.lines, x);
+            if (sgn(y) <= 0) continue;
+            BOOST_TEST(brute.classify(sc, x, y) == 0, "on the curve at rho1 = " << x);
+            BOOST_TEST(brute.classify(sc, x, y * Q(1073741823, 1073741824)) == 1);
+            BOOST_TEST(brute.classify(sc, x, y * Q(1073741825, 1073741824)) == -1);
+            ++checked;
+        }
+    BOOST_TEST(checked >= 3);
+}
