@@ -139,7 +139,7 @@ private:
     // One UTF-8 sequence starting at i_ (well-formed, shortest form, no surrogates), copied.
     void utf8_sequence(std::string& out) {
         const unsigned char c = static_cast<unsigned char>(s_[i_]);
-        int n = c >= 0xF0 && c <= 0xF4 ? 3 : c >= 0xE0 ? 2 : c >= 0xC2 && c < 0xE0 ? 1 : -1;
+        const int n = c >= 0xC2 && c <= 0xDF ? 1 : c >= 0xE0 && c <= 0xEF ? 2 : c >= 0xF0 && c <= 0xF4 ? 3 : -1;
         if (n < 0 || i_ + static_cast<size_t>(n) >= s_.size()) fail("invalid UTF-8");
         unsigned cp = c & (0x3F >> n);
         for (int k = 1; k <= n; ++k) {
