@@ -175,7 +175,7 @@ BOOST_AUTO_TEST_CASE(json_is_read_as_rfc_8259_says) {
     expect_error("duplicate key in P1", S("dk2.json", scene("{\"vertices\": " + kCube1 + ", \"vertices\": " + kCube2 + "}", P2)), "duplicate key 'vertices'");
     expect_error("unknown field", S("uf.json", scene(poly(kCube1, ", \"sead\": [1,1,1]"), P2)), "unknown field 'sead'");
     // Lead bytes 0xF5-0xFF and 0xC0-0xC1, overlong forms, surrogates and lone continuation bytes.
-    for (const char* bad : {"\xff", "\xf5\x80\x80\x80", "\xc0\xaf", "\xe0\x80\xaf", "\xed\xa0\x80", "\x80", "\xe2\x82"})
+    for (const char* bad : {"\xff", "\xf5\x80\x80", "\xc0\xaf", "\xe0\x80\xaf", "\xed\xa0\x80", "\x80", "\xe2\x82"})
         expect_error("invalid UTF-8", S("u8.json", scene(P1, P2, "[\"1" + std::string(bad) + "\", 2]")), "invalid UTF-8");
     // Valid UTF-8 in a string is read (and the number it spoils reported, quoted).
     expect_error("valid UTF-8", S("u8ok.json", scene(P1, P2, "[\"1\xe2\x82\xac\", 2]")), "is not an exact number");
