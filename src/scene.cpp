@@ -8,6 +8,7 @@
 #include <map>
 #include <memory>
 #include <sstream>
+#include <unordered_set>
 
 namespace scalecert {
 namespace {
@@ -28,7 +29,8 @@ struct JNode {
 // A strict RFC 8259 reader: no comments, no leading zeros, no bare keys, no trailing commas,
 // UTF-8 only, duplicate keys rejected (a file must not mean two things), and at most kMaxDepth
 // levels of nesting (scenes need 4), so neither the reader nor the tree's destructor can exhaust
-// the stack. Throws JsonError with the byte offset.
+// the stack, and at most kMaxJsonValues values, so the tree stays within about 1 GB. Throws
+// JsonError with the byte offset.
 constexpr int kMaxDepth = 64;
 struct JsonError { size_t pos; std::string what; };
 
@@ -47,6 +49,7 @@ public:
 private:
     const std::string& s_;
     size_t i_ = 0;
+    size_t values_ = 0;
     [[noreturn]] void fail(const std::string& what) const { throw JsonError{i_, what}; }
     [[noreturn]] void unexpected(const std::string& what) const {
         fail(i_ < s_.size() && s_[i_] == '/' ? "comments are not JSON (RFC 8259)" : what);
@@ -65,6 +68,7 @@ private:
     bool digit() const { return i_ < s_.size() && s_[i_] >= '0' && s_[i_] <= '9'; }
     void value(JNode& n, int depth) {
         if (i_ >= s_.size()) fail("unexpected end of the file");
+        if (++values_ > kMaxJsonValues) fail("more than " + std::to_string(kMaxJsonValues) + " JSON values (the limit)");
         const char c = s_[i_];
         if (c == '{' || c == '[') {
             if (depth >= kMaxDepth) fail("nested deeper than " + std::to_string(kMaxDepth) + " levels");
@@ -73,13 +77,14 @@ private:
             const char close = c == '{' ? '}' : ']';
             ws();
             if (eat(close)) return;
+            std::unordered_set<std::string> seen;  // the object's keys: duplicates found in O(1)
             for (;;) {
                 ws();
                 if (n.kind == JNode::Object) {
                     if (i_ >= s_.size() || s_[i_] != '"') unexpected("expected a string key");
                     const size_t at = i_;
                     std::string k = string();
-                    if (n.find(k)) { i_ = at; fail("duplicate key " + quoted(k)); }
+                    if (!seen.insert(k).second) { i_ = at; fail("duplicate key " + quoted(k)); }
                     n.keys.push_back(std::move(k));
                     ws();
                     if (!eat(':')) fail("expected ':'");

@@ -181,6 +181,26 @@ BOOST_AUTO_TEST_CASE(json_is_read_as_rfc_8259_says) {
     expect_error("valid UTF-8", S("u8ok.json", scene(P1, P2, "[\"1\xe2\x82\xac\", 2]")), "is not an exact number");
 }
 
+BOOST_AUTO_TEST_CASE(huge_json_objects_and_arrays_are_bounded) {
+    // One object of 10^6 keys with the duplicate last: found in a second or two (the key list was
+    // scanned for each key, 5·10^11 comparisons); `timeout 20` turns such a slowdown into a failure.
+    std::string keys = "{\"P1\": {";
+    for (int i = 0; i < 1000000; ++i) keys += "\"k" + std::to_string(i) + "\": 1,";
+    keys += "\"k7\": 1}}";
+    fs::path kp = write("many-keys.json", keys);
+    fs::path e = workdir() / "keys-err.txt";
+    int raw = std::system(("timeout 20 " + std::string(SCALECERT_BIN) + " curve " + kp.string() + " >/dev/null 2>" + e.string()).c_str());
+    BOOST_TEST((WIFEXITED(raw) && WEXITSTATUS(raw) == 2), "exit " << (WIFEXITED(raw) ? WEXITSTATUS(raw) : -1));
+    BOOST_TEST(slurp(e).find("duplicate key 'k7'") != std::string::npos, slurp(e));
+    // 8,100,001 values: refused by the reader, before a tree of 100 million nodes could be built
+    // from a 256 MiB file of "1,1,1,...".
+    std::string vals = "{\"P1\": {\"vertices\": [0";
+    vals.reserve(16300000);
+    for (int i = 0; i < 8100000; ++i) vals += ",0";
+    vals += "]}}";
+    expect_error("too many JSON values", "curve " + write("many-values.json", vals).string(), "more than 8100000 JSON values");
+}
+
 BOOST_AUTO_TEST_CASE(error_messages_are_one_line_with_the_file_and_cut) {
     const std::string P2 = poly(kCube2);
     auto S = [&](const std::string& name, const std::string& text) { return "curve " + write(name, text).string(); };

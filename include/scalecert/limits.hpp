@@ -10,6 +10,9 @@ constexpr std::size_t kMaxNumberChars = 100000;           // one number's text
 constexpr std::size_t kMaxSceneBytes = std::size_t(256) << 20;  // a scene, OFF or claims file
 constexpr std::size_t kMaxPairsBytes = std::size_t(2) << 30;    // a pairs file for classify
 constexpr std::size_t kMaxPoints = 1000000;               // points of one polyhedron
+// Values in a JSON scene (numbers, strings, arrays, ...): two polyhedra of kMaxPoints points as
+// [x, y, z] arrays need 8,000,000; the parsed tree takes about 90 bytes a value.
+constexpr std::size_t kMaxJsonValues = 8100000;
 // Bits of the common denominator of one polyhedron's coordinates (the engine works on the
 // points times that denominator, in integers).
 constexpr std::size_t kMaxDenominatorBits = 16384;
