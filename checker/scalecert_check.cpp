@@ -114,9 +114,12 @@ void shape(const J& o, const std::string& where, std::initializer_list<const cha
 }
 const J& at(const J& o, const char* k) { return o.find(k).value(); }  // after shape(): present
 
+// A JSON integer >= 0 written without fraction or exponent (nlohmann reads "-0" as a signed 0).
+bool natural(const J& j) { return j.is_number_unsigned() || (j.is_number_integer() && j.get<long long>() == 0); }
+
 // An index: a JSON integer (no fraction, no exponent) with 0 <= i < n.
 size_t index(const J& j, size_t n, const std::string& where) {
-    claim(j.is_number_unsigned() || (j.is_number_integer() && j.get<long long>() == 0), where + " is a non-negative JSON integer");
+    claim(natural(j), where + " is a non-negative JSON integer");
     const unsigned long long v = j.get<unsigned long long>();
     claim(v < n, where + " = " + std::to_string(v) + " is an index below " + std::to_string(n));
     return static_cast<size_t>(v);
@@ -398,7 +401,7 @@ std::vector<P2> polygon(const J& j, const std::string& where) {
 
 // Engine statistics: an annotation, but of a fixed shape (non-negative integers).
 void check_model(const J& m) {
-    auto count = [](const J& j, const std::string& w) { claim(j.is_number_unsigned() || (j.is_number_integer() && j.get<long long>() == 0), w + " is a count"); };
+    auto count = [](const J& j, const std::string& w) { claim(natural(j), w + " is a count"); };
     shape(m, "model", {"P1", "P2", "facet_normals", "contact_lines", "edge_pairs_tested", "gauss_arc_crossings", "decided_by_filter", "decided_exactly"});
     for (const char* p : kPoly) {
         shape(at(m, p), std::string("model.") + p, {"vertices", "edges", "faces"});

@@ -45,24 +45,33 @@ Q read_rho(const std::string& text, const char* name, const ReadOptions& opt) {
     return r;
 }
 
-Segment parse_segment(const std::string& spec, const Model& m, const ReadOptions&) {
+// "A,B" or "A,B,C": numbers separated by commas, read as the scene reader reads them.
+std::vector<Q> number_list(const std::string& text, size_t n, const std::string& option, const ReadOptions& opt) {
+    std::vector<Q> out;
+    size_t b = 0;
+    for (;;) {
+        const size_t e = text.find(',', b);
+        try {
+            out.push_back(parse_number(text.substr(b, e == std::string::npos ? std::string::npos : e - b), opt.binary_doubles));
+        } catch (const InputError& err) {
+            throw InputError(option + ": " + err.what());
+        }
+        if (e == std::string::npos) break;
+        b = e + 1;
+    }
+    if (out.size() != n) throw InputError(option + ": expected " + std::to_string(n) + " numbers separated by commas, got " + quoted(text));
+    return out;
+}
+
+Segment parse_segment(const std::string& spec, const Model& m) {
     if (spec == "seeds" || spec == "ellipsoids") return segment_by_kind(m, spec);
     auto colon = spec.find(':');
     if (colon == std::string::npos) throw InputError("--segment: expected 'seeds' or x1,y1,z1:x2,y2,z2");
     Vec3q v[2];
-    std::string parts[2] = {spec.substr(0, colon), spec.substr(colon + 1)};
+    const std::string parts[2] = {spec.substr(0, colon), spec.substr(colon + 1)};
     for (int i = 0; i < 2; ++i) {
-        std::string p = parts[i];
-        for (int k = 0; k < 3; ++k) {
-            auto comma = p.find(',');
-            if ((k < 2) != (comma != std::string::npos)) throw InputError("--segment: expected three coordinates per end");
-            try {
-                v[i][k] = parse_exact(p.substr(0, comma));
-            } catch (const InputError& e) {
-                throw InputError(std::string("--segment: ") + e.what());
-            }
-            p = k < 2 ? p.substr(comma + 1) : "";
-        }
+        const std::vector<Q> c = number_list(parts[i], 3, "--segment", ReadOptions{});  // exact, as written
+        v[i] = {c[0], c[1], c[2]};
     }
     return make_segment(m, v[0], v[1]);
 }
@@ -81,24 +90,6 @@ std::string one_line(const std::string& msg) {
             out += static_cast<char>(c);
         }
     }
-    return out;
-}
-
-// "A,B" or "A,B,C": numbers separated by commas, read as the scene reader reads them.
-std::vector<Q> number_list(const std::string& text, size_t n, const std::string& option, const ReadOptions& opt) {
-    std::vector<Q> out;
-    size_t b = 0;
-    for (;;) {
-        const size_t e = text.find(',', b);
-        try {
-            out.push_back(parse_number(text.substr(b, e == std::string::npos ? std::string::npos : e - b), opt.binary_doubles));
-        } catch (const InputError& err) {
-            throw InputError(option + ": " + err.what());
-        }
-        if (e == std::string::npos) break;
-        b = e + 1;
-    }
-    if (out.size() != n) throw InputError(option + ": expected " + std::to_string(n) + " numbers separated by commas, got " + quoted(text));
     return out;
 }
 
@@ -245,12 +236,12 @@ int main(int argc, char** argv) {
             if (!family.empty()) family_description(family);  // refused before any work
             for (const std::string& p : audit_scenes) {
                 std::cerr << "scalecert: audit: " << p << "\n";
+                const Scene sc = load_scene(p, opt);  // its errors name the file already
                 std::vector<AuditRow> r;
                 try {
-                    r = audit_scene(p, load_scene(p, opt), Q(0), methods, grid_ns);
+                    r = audit_scene(p, sc, Q(0), methods, grid_ns);
                 } catch (const InputError& e) {
-                    const std::string w = e.what();
-                    throw InputError(w.compare(0, p.size() + 1, p + ":") == 0 ? w : p + ": " + w);
+                    throw InputError(p + ": " + e.what());
                 }
                 rows.insert(rows.end(), r.begin(), r.end());
             }
@@ -288,7 +279,7 @@ int main(int argc, char** argv) {
         std::string text;
         std::optional<Segment> seg;
         if (in_t && segment_spec.empty()) segment_spec = "seeds";
-        if (!segment_spec.empty()) seg = parse_segment(segment_spec, m, opt);
+        if (!segment_spec.empty()) seg = parse_segment(segment_spec, m);
         if (*curve) {
             Json j = curve_json(m, c);
             if (seg) add_segment_json(j, m, c, *seg);

@@ -18,13 +18,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
             for (int c = 0; c < 3; ++c) v[c] = Q(next() % 9 - 4 + (i ? shift[c] : 0));
             sc.P[i].points.push_back(v);
         }
-        Vec3q c{Q(0), Q(0), Q(0)};
-        for (const auto& v : sc.P[i].points) for (int k = 0; k < 3; ++k) c[k] += v[k];
-        for (int k = 0; k < 3; ++k) c[k] /= Q(n[i]);
-        sc.P[i].seed = c;
         sc.lo[i] = Q(1, 4);
         sc.hi[i] = Q(4);
     }
+    finish_scene(sc, "fuzz");  // the mean seeds
     Model m;
     Curve cv;
     if (!fuzz::certify(sc, &m, &cv)) return 0;

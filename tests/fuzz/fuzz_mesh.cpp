@@ -17,13 +17,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     using scalecert::Q;
     for (int k = 0; k < 8; ++k) sc.P[1].points.push_back({Q(40 + (k & 1)), Q((k >> 1) & 1), Q((k >> 2) & 1)});
     for (int i = 0; i < 2; ++i) {
-        scalecert::Vec3q c{Q(0), Q(0), Q(0)};
-        for (const auto& v : sc.P[i].points) for (int k = 0; k < 3; ++k) c[k] += v[k];
-        for (int k = 0; k < 3; ++k) c[k] /= Q(static_cast<long>(sc.P[i].points.size()));
-        sc.P[i].seed = c;
         sc.lo[i] = Q(1, 2);
         sc.hi[i] = Q(3);
     }
+    scalecert::finish_scene(sc, "fuzz");  // the mean seeds
     fuzz::certify(sc);
     return 0;
 }
