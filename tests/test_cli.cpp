@@ -263,13 +263,21 @@ BOOST_AUTO_TEST_CASE(outputs_go_only_to_regular_files_and_directories_we_can_mak
     BOOST_TEST(slurp(victim) == "untouched");
     // The temporary name is not predictable: a planted OUT.tmp.PID symlink is never followed
     // (the engine creates its temporary file exclusively, under a random name).
+    // The old writer used OUT.tmp.PID: symlinks planted for the next 400 process ids (the command
+    // runs as one of them) would have redirected its write into the victim.
     fs::path out = workdir() / "fresh.json";
-    for (int pid = 1; pid < 64; ++pid) {
-        fs::path planted = workdir() / ("fresh.json.tmp." + std::to_string(pid));
-        fs::remove(planted);
+    fs::path victim2 = write("victim2.txt", "untouched");
+    std::vector<fs::path> planted;
+    for (int pid = ::getpid() + 1; pid <= ::getpid() + 400; ++pid) {
+        planted.push_back(workdir() / ("fresh.json.tmp." + std::to_string(pid)));
+        fs::remove(planted.back());
+        fs::create_symlink(victim2, planted.back());
     }
     Run ok = run("curve " + g.string() + " --out " + out.string());
     BOOST_TEST(ok.status == 0);
+    BOOST_TEST(slurp(victim2) == "untouched");
+    for (const fs::path& p : planted) BOOST_TEST(fs::is_symlink(p));
+    for (const fs::path& p : planted) fs::remove(p);
     BOOST_TEST(slurp(out) == run("curve " + g.string()).out);
     BOOST_TEST(((fs::status(out).permissions() & fs::perms::others_read) != fs::perms::none));  // not mkstemp's 0600
     // golden: under a file (was exit 3), and an unknown family (left its directory behind).
