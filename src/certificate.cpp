@@ -13,7 +13,7 @@
 #include <cstdio>
 #include <fstream>
 
-namespace scalecert {
+namespace scalecert::internal {
 
 namespace {
 const char* kFormat = "scalecert-2";
@@ -371,4 +371,4 @@ void write_files_atomically(const std::vector<std::pair<std::string, std::string
 
 void write_file_atomically(const std::string& path, const std::string& text) { write_files_atomically({{path, text}}); }
 
-}  // namespace scalecert
+}  // namespace scalecert::internal

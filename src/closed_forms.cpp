@@ -1,6 +1,6 @@
 #include "scalecert/closed_forms.hpp"
 
-namespace scalecert {
+namespace scalecert::internal {
 
 namespace {
 Q det3(const Vec3q& a, const Vec3q& b, const Vec3q& c) { return dot(a, cross(b, c)); }
@@ -73,4 +73,4 @@ ClosedSwitch closed_form_switch(const Model& m, const ContactLine& left, const C
     return s;
 }
 
-}  // namespace scalecert
+}  // namespace scalecert::internal

@@ -11,7 +11,7 @@
 #include <optional>
 #include <type_traits>
 
-namespace scalecert {
+namespace scalecert::internal {
 
 char feature_letter(size_t n) { return n == 1 ? 'V' : n == 2 ? 'E' : 'F'; }
 
@@ -309,4 +309,4 @@ Model build_model(const Scene& scene) {
     return m;
 }
 
-}  // namespace scalecert
+}  // namespace scalecert::internal

@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-namespace scalecert {
+namespace scalecert::internal {
 
 namespace {
 using M3 = Eigen::Matrix3d;
@@ -145,4 +145,4 @@ std::optional<EllipsoidPath> ellipsoid_path(const Model& m) {
     return p;
 }
 
-}  // namespace scalecert
+}  // namespace scalecert::internal

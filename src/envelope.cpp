@@ -6,7 +6,7 @@
 #include <iterator>
 #include <numeric>
 
-namespace scalecert {
+namespace scalecert::internal {
 
 namespace {
 // ρ1 where lines i and j (different slopes) meet.
@@ -146,4 +146,4 @@ Curve build_curve(const Model& m) {
     return c;
 }
 
-}  // namespace scalecert
+}  // namespace scalecert::internal

@@ -7,7 +7,7 @@
 #include <cstdlib>
 #include <sys/stat.h>
 
-namespace scalecert {
+namespace scalecert::internal {
 
 Vec3z primitive(const Vec3z& v) {
     Z g = 0;
@@ -223,4 +223,4 @@ double to_double_rn(const Q& q) {
     return d;
 }
 
-}  // namespace scalecert
+}  // namespace scalecert::internal

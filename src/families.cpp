@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-namespace scalecert {
+namespace scalecert::internal {
 
 std::uint64_t Rng::next() {  // splitmix64
     std::uint64_t z = (s_ += 0x9E3779B97F4A7C15ull);
@@ -114,4 +114,4 @@ Scene make_family_scene(const std::string& name, const Q& eps, Rng& g) {
     return s;
 }
 
-}  // namespace scalecert
+}  // namespace scalecert::internal

@@ -6,7 +6,7 @@
 #include <cstdlib>
 #include <thread>
 
-namespace scalecert {
+namespace scalecert::internal {
 
 namespace {
 // Relative error budget of a few roundings (conversions to double, a product and two sums):
@@ -173,4 +173,4 @@ std::string verdict_lines(const std::vector<Verdict>& v) {
     return text;
 }
 
-}  // namespace scalecert
+}  // namespace scalecert::internal

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <cstdint>
 
-namespace scalecert {
+namespace scalecert::internal {
 
 namespace {
 D3 unit(const D3& d) {
@@ -125,4 +125,4 @@ std::vector<std::pair<int, int>> arc_candidates(const std::vector<Arc>& A, const
 
 }
 
-}  // namespace scalecert
+}  // namespace scalecert::internal

@@ -13,7 +13,7 @@
 #include <algorithm>
 #include <numeric>
 
-namespace scalecert {
+namespace scalecert::internal {
 
 using K = CGAL::Exact_predicates_exact_constructions_kernel;
 static_assert(std::is_same<K::FT::Exact_type, mpq_class>::value, "Epeck must run on mpq_class");
@@ -76,4 +76,4 @@ std::vector<std::array<int, 3>> hull_triangles(const std::vector<Vec3z>& pts, co
     return hull_with<K>(pts, [&](size_t i) { return K::Point_3(K::FT(given[i][0]), K::FT(given[i][1]), K::FT(given[i][2])); });
 }
 
-}  // namespace scalecert
+}  // namespace scalecert::internal

@@ -8,7 +8,7 @@
 #include <map>
 #include <sstream>
 
-namespace scalecert {
+namespace scalecert::internal {
 
 namespace {
 [[noreturn]] void fail(const std::string& name, const std::string& what) { throw InputError(name + ": " + what); }
@@ -346,4 +346,4 @@ std::vector<Vec3q> read_mesh(const std::string& path, const ReadOptions& opt) {
     return parse_mesh(read_input(path, "mesh file", kMaxSceneBytes), f, path, opt);
 }
 
-}  // namespace scalecert
+}  // namespace scalecert::internal

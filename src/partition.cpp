@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-namespace scalecert {
+namespace scalecert::internal {
 
 namespace {
 Q cross2(const Pt2& o, const Pt2& a, const Pt2& b) {
@@ -110,4 +110,4 @@ Partition build_partition(const Model& m, const Curve& c) {
     return P;
 }
 
-}  // namespace scalecert
+}  // namespace scalecert::internal

@@ -7,7 +7,7 @@
 #include <optional>
 #include <type_traits>
 
-namespace scalecert {
+namespace scalecert::internal {
 
 namespace {
 using D3 = std::array<double, 3>;
@@ -479,4 +479,4 @@ Polyhedron build_polyhedron(const std::vector<Vec3q>& pts, const std::string& na
     return P;
 }
 
-}  // namespace scalecert
+}  // namespace scalecert::internal

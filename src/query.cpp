@@ -2,7 +2,7 @@
 
 #include "scalecert/witness.hpp"
 
-namespace scalecert {
+namespace scalecert::internal {
 
 const char* verdict_name(Verdict v) {
     switch (v) {
@@ -105,4 +105,4 @@ Verdict query_direct(const Model& m, const Q& rho1, const Q& rho2) {
     return best == 0 ? Verdict::Touching : Verdict::Overlapping;
 }
 
-}  // namespace scalecert
+}  // namespace scalecert::internal

@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-namespace scalecert {
+namespace scalecert::internal {
 
 namespace {
 D3 rounded(const Vec3q& v) { return {to_double_rn(v[0]), to_double_rn(v[1]), to_double_rn(v[2])}; }
@@ -139,4 +139,4 @@ Verdict QuickScene::classify(double r1, double r2) const {
     return query_direct(*model_, exact_from_double(r1), exact_from_double(r2));
 }
 
-}  // namespace scalecert
+}  // namespace scalecert::internal

@@ -10,7 +10,7 @@
 #include <sstream>
 #include <unordered_set>
 
-namespace scalecert {
+namespace scalecert::internal {
 namespace {
 
 // A JSON tree that keeps every number's text as written, so that 0.1 can be read as 1/10.
@@ -343,4 +343,4 @@ Scene load_scene(const std::string& path, const ReadOptions& opt) {
     return parse_scene_text(text, path, dir.empty() ? "." : dir, opt);
 }
 
-}  // namespace scalecert
+}  // namespace scalecert::internal

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-namespace scalecert {
+namespace scalecert::internal {
 
 namespace {
 // Lower envelope of y = a·x + b over [lo, hi] (brute force: fine for the face counts of scenes
@@ -156,4 +156,4 @@ std::vector<std::array<Q, 2>> curve_vertices(const Model& m, const Curve& c) {
     return v;
 }
 
-}  // namespace scalecert
+}  // namespace scalecert::internal

@@ -5,7 +5,7 @@
 #include <CGAL/QP_functions.h>
 #include <CGAL/QP_models.h>
 
-namespace scalecert {
+namespace scalecert::internal {
 
 namespace {
 using ET = CGAL::Gmpz;
@@ -60,4 +60,4 @@ std::optional<CommonPoint> common_point(const std::vector<Vec3q>& A, const std::
     return cp;
 }
 
-}  // namespace scalecert
+}  // namespace scalecert::internal

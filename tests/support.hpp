@@ -9,11 +9,11 @@
 #include <set>
 
 namespace scalecert {
-inline std::ostream& operator<<(std::ostream& o, Verdict v) { return o << verdict_name(v); }
+inline std::ostream& operator<<(std::ostream& o, Verdict v) { return o << name(v); }
 }  // namespace scalecert
 
 namespace test {
-using namespace scalecert;
+using namespace scalecert::internal;
 
 // p/q in lowest terms (GMP's rational arithmetic requires canonical operands).
 inline Q qc(long p, long q) {

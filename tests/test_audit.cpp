@@ -3,6 +3,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include "scalecert/audit.hpp"
+#include "scalecert/fast_query.hpp"
 #include "files.hpp"
 #include "support.hpp"
 
@@ -11,7 +12,7 @@
 #include <sstream>
 
 namespace fs = std::filesystem;
-using namespace scalecert;
+using namespace scalecert::internal;
 
 using test::slurp;
 
@@ -87,4 +88,32 @@ BOOST_AUTO_TEST_CASE(small_audit_and_stability_sweep) {
     BOOST_TEST(curve_rows == 15);  // per ε: the exact row, and per resolution bisection and analytical
     std::string csv = audit_csv(rows);
     BOOST_TEST(std::count(csv.begin(), csv.end(), '\n') == static_cast<long>(rows.size()) + 1);
+}
+
+BOOST_AUTO_TEST_CASE(baselines_agree_away_from_the_curve) {
+    // A small audit: away from the curve (|ρ2 − f(ρ1)| > 1/10) every baseline (libccd GJK and MPR,
+    // FCL with either GJK, Bullet, the paper's triangle test, plain doubles) must agree with the
+    // exact verdict; this checks their wiring, not their precision.
+    Model m = build_model(load_scene(std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/fig5_vf_ve_ee.json"));
+    Curve c = build_curve(m);
+    fp::FpScene f = fp::to_fp(m.scene);
+    std::vector<std::unique_ptr<fp::Method>> methods;
+    methods.push_back(fp::make_libccd_gjk(f));
+    methods.push_back(fp::make_libccd_mpr(f));
+    methods.push_back(fp::make_double_envelope(m, f));
+    methods.push_back(fp::make_fcl(m, f, true));
+    methods.push_back(fp::make_fcl(m, f, false));
+    methods.push_back(fp::make_bullet(f));
+    methods.push_back(fp::make_paper_tritri(m, f));
+    int checked = 0;
+    for (int i = 0; i <= 40; ++i)
+        for (int j = 0; j <= 40; ++j) {
+            Q r1 = Q(4, 5) + Q(11, 200) * i, r2 = Q(4, 5) + Q(11, 200) * j;
+            Q f1 = c.env.value(m.lines, r1);
+            if (abs(r2 - f1) < Q(1, 10)) continue;
+            int e = r2 < f1 ? 1 : -1;
+            for (const auto& meth : methods) BOOST_TEST(meth->classify(r1.get_d(), r2.get_d()) == e, meth->name());
+            ++checked;
+        }
+    BOOST_TEST(checked > 1000);
 }

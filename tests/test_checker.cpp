@@ -126,8 +126,8 @@ void mutate_all(const OJ& root, const OJ& node, const OJ::json_pointer& ptr, Tal
     if (node.is_string()) {
         std::string s = node.get<std::string>();
         if (is_exact(s)) {
-            scalecert::Q q(s);
-            q += scalecert::Q(1, q.get_den());  // numerator + 1, written in lowest terms
+            scalecert::internal::Q q(s);
+            q += scalecert::internal::Q(1, q.get_den());  // numerator + 1, written in lowest terms
             with(q.get_str(), "numerator + 1");
         } else if (s == "separated" || s == "touching" || s == "overlapping") {
             for (const char* v : {"separated", "touching", "overlapping"})
@@ -239,7 +239,7 @@ BOOST_AUTO_TEST_CASE(fresh_certificates_for_random_scenes_are_valid) {
     std::mt19937 g(31);
     int partitions = 0, queries = 0;
     for (int t = 0; t < 12; ++t) {
-        scalecert::Scene sc = test::random_scene(g, 4 + t % 6, 5 + t % 4);
+        scalecert::internal::Scene sc = test::random_scene(g, 4 + t % 6, 5 + t % 4);
         OJ s;
         for (int i = 0; i < 2; ++i) {
             OJ vs = OJ::array();

@@ -7,7 +7,7 @@
 
 #include <filesystem>
 
-using namespace scalecert;
+using namespace scalecert::internal;
 
 namespace {
 int lines_checked = 0, switches_checked = 0;

@@ -6,7 +6,7 @@
 
 #include <random>
 
-using namespace scalecert;
+using namespace scalecert::internal;
 
 BOOST_AUTO_TEST_CASE(decimal_and_fraction_text_is_read_exactly) {
     BOOST_TEST(parse_exact("0.1") == Q(1, 10));

@@ -3,7 +3,7 @@
 
 #include "support.hpp"
 
-using namespace scalecert;
+using namespace scalecert::internal;
 
 namespace {
 std::vector<Vec3q> cube_with_clutter() {

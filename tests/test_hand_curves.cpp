@@ -4,7 +4,7 @@
 
 #include "support.hpp"
 
-using namespace scalecert;
+using namespace scalecert::internal;
 
 static std::string scene_path(const char* name) { return std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/" + name; }
 

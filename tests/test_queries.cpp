@@ -5,7 +5,7 @@
 
 #include "support.hpp"
 
-using namespace scalecert;
+using namespace scalecert::internal;
 
 namespace {
 // Checks a query certificate by direct evaluation on the scaled vertices.

@@ -7,7 +7,7 @@
 
 #include <cmath>
 
-using namespace scalecert;
+using namespace scalecert::internal;
 
 static Model hand_model() {
     return build_model(load_scene(std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/tetra_box_switch.json"));

@@ -11,7 +11,7 @@
 #include <cstring>
 #include <random>
 
-using namespace scalecert;
+using namespace scalecert::internal;
 using Clock = std::chrono::steady_clock;
 
 namespace {

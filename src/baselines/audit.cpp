@@ -8,7 +8,7 @@
 #include <fstream>
 #include <sstream>
 
-namespace scalecert {
+namespace scalecert::internal {
 
 namespace {
 Q read_number(const std::string& t, bool binary_doubles, const std::string& where) {
@@ -340,4 +340,4 @@ Json audit_json(const std::vector<AuditRow>& rows) {
     return a;
 }
 
-}  // namespace scalecert
+}  // namespace scalecert::internal

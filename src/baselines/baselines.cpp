@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace scalecert::fp {
+namespace scalecert::internal::fp {
 
 FpScene to_fp(const Scene& s) {
     FpScene f;
@@ -143,4 +143,4 @@ GridCurve grid_search(const Method& method, const FpScene& s, int n, int bisecti
     return g;
 }
 
-}  // namespace scalecert::fp
+}  // namespace scalecert::internal::fp

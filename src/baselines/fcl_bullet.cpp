@@ -7,7 +7,7 @@
 #include <fcl/geometry/shape/convex.h>
 #include <fcl/narrowphase/collision.h>
 
-namespace scalecert::fp {
+namespace scalecert::internal::fp {
 
 namespace {
 
@@ -83,4 +83,4 @@ std::unique_ptr<Method> make_fcl(const Model& m, const FpScene& s, bool libccd) 
 }
 std::unique_ptr<Method> make_bullet(const FpScene& s) { return std::make_unique<Bullet>(s); }
 
-}  // namespace scalecert::fp
+}  // namespace scalecert::internal::fp

@@ -8,7 +8,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace scalecert::fp {
+namespace scalecert::internal::fp {
 
 namespace {
 using T3 = std::array<D3, 3>;
@@ -124,4 +124,4 @@ private:
 
 std::unique_ptr<Method> make_paper_tritri(const Model& m, const FpScene& s) { return std::make_unique<PaperTriTri>(m, s); }
 
-}  // namespace scalecert::fp
+}  // namespace scalecert::internal::fp

@@ -5,7 +5,7 @@
 
 namespace {
 using J = nlohmann::json;
-using namespace scalecert;
+using namespace scalecert::internal;
 
 void compare_with_engine(const J& c) {
     Scene sc;

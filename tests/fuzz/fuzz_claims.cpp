@@ -5,15 +5,15 @@
 
 namespace {
 struct Fixed {
-    scalecert::Model m;
-    scalecert::Curve c;
+    scalecert::internal::Model m;
+    scalecert::internal::Curve c;
     Fixed() {
-        scalecert::Scene sc = scalecert::parse_scene_text(
+        scalecert::internal::Scene sc = scalecert::internal::parse_scene_text(
             R"({"P1": {"vertices": [[2,0,2],[-2,2,5],[-1,-2,6],[2,0,7]], "seed": [0,0,"9/2"]},
                 "P2": {"vertices": [[-1,-1,-1],[1,-1,-1],[-1,1,-1],[1,1,-1],[-1,-1,1],[1,-1,1],[-1,1,1],[1,1,1]], "seed": [0,0,0]},
                 "I1": ["1/2", 2], "I2": [1, 4]})", "tetra_box", "");
-        m = scalecert::build_model(sc);
-        c = scalecert::build_curve(m);
+        m = scalecert::internal::build_model(sc);
+        c = scalecert::internal::build_curve(m);
     }
 };
 }  // namespace
@@ -25,9 +25,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         for (bool json : {false, true}) {
             try {
                 long wrong = -1;
-                std::string out = scalecert::certify_fp(f.m, f.c, text, "fuzz.claims", bin, json, &wrong);
+                std::string out = scalecert::internal::certify_fp(f.m, f.c, text, "fuzz.claims", bin, json, &wrong);
                 if (wrong < 0 || out.empty()) fuzz::finding("certify_fp returned no report");
-            } catch (const scalecert::InputError&) {
+            } catch (const scalecert::internal::InputError&) {
             }
         }
     return 0;

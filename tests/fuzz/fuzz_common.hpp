@@ -14,7 +14,7 @@
 #include <string>
 
 namespace fuzz {
-using namespace scalecert;
+using namespace scalecert::internal;
 
 [[noreturn]] inline void finding(const std::string& what) {
     std::fprintf(stderr, "FUZZ FINDING: %s\n", what.c_str());

@@ -5,7 +5,7 @@
 #include "fuzz_common.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-    using namespace scalecert;
+    using namespace scalecert::internal;
     if (size < 4) return 0;
     size_t at = 0;
     auto next = [&]() -> int { return at < size ? data[at++] : 0; };

@@ -5,22 +5,22 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     if (size == 0) return 0;
-    const scalecert::MeshFormat f = static_cast<scalecert::MeshFormat>(data[0] % 4);
+    const scalecert::internal::MeshFormat f = static_cast<scalecert::internal::MeshFormat>(data[0] % 4);
     const std::string text(reinterpret_cast<const char*>(data) + 1, size - 1);
-    scalecert::Scene sc;
+    scalecert::internal::Scene sc;
     try {
-        sc.P[0].points = scalecert::parse_mesh(text, f, "fuzz.mesh");
-    } catch (const scalecert::InputError&) {
+        sc.P[0].points = scalecert::internal::parse_mesh(text, f, "fuzz.mesh");
+    } catch (const scalecert::internal::InputError&) {
         return 0;
     }
     if (sc.P[0].points.size() < 4 || sc.P[0].points.size() > 40) return 0;
-    using scalecert::Q;
+    using scalecert::internal::Q;
     for (int k = 0; k < 8; ++k) sc.P[1].points.push_back({Q(40 + (k & 1)), Q((k >> 1) & 1), Q((k >> 2) & 1)});
     for (int i = 0; i < 2; ++i) {
         sc.lo[i] = Q(1, 2);
         sc.hi[i] = Q(3);
     }
-    scalecert::finish_scene(sc, "fuzz");  // the mean seeds
+    scalecert::internal::finish_scene(sc, "fuzz");  // the mean seeds
     fuzz::certify(sc);
     return 0;
 }

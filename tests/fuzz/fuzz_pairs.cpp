@@ -8,8 +8,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     const std::string text(reinterpret_cast<const char*>(data), size);
     std::vector<double> a1, a2, b1, b2;
     std::string ea, eb;
-    try { scalecert::parse_pairs(text, a1, a2, 1); } catch (const scalecert::InputError& e) { ea = e.what(); }
-    try { scalecert::parse_pairs(text, b1, b2, 2); } catch (const scalecert::InputError& e) { eb = e.what(); }
+    try { scalecert::internal::parse_pairs(text, a1, a2, 1); } catch (const scalecert::internal::InputError& e) { ea = e.what(); }
+    try { scalecert::internal::parse_pairs(text, b1, b2, 2); } catch (const scalecert::internal::InputError& e) { eb = e.what(); }
     if (ea != eb) fuzz::finding("pairs: 1 and 2 threads disagree: '" + ea + "' / '" + eb + "'");
     if (!ea.empty()) return 0;
     if (a1.size() != b1.size() || std::memcmp(a1.data(), b1.data(), a1.size() * sizeof(double)) ||

@@ -1,6 +1,7 @@
 // Exact number layer: rationals (GMP), integer vectors, exact parsing and display rounding.
 #pragma once
 #include "scalecert/limits.hpp"
+#include "scalecert/scalecert.hpp"
 
 #include <gmpxx.h>
 #include <array>
@@ -8,17 +9,15 @@
 #include <string>
 #include <vector>
 
-namespace scalecert {
+namespace scalecert::internal {
 
 using Q = mpq_class;
 using Z = mpz_class;
 using Vec3q = std::array<Q, 3>;
 using Vec3z = std::array<Z, 3>;
 
-// Any problem with the user's input: reported as one line, exit status 2.
-struct InputError : std::runtime_error {
-    using std::runtime_error::runtime_error;
-};
+// Any problem with the user's input (the public scalecert::InputError): one line, exit status 2.
+using scalecert::InputError;
 
 template <class A, class B>
 inline auto dot(const std::array<A, 3>& a, const std::array<B, 3>& b) {
@@ -65,4 +64,4 @@ std::string to_exact_string(const Q& q);
 // The double nearest to q (round-to-nearest-even), computed with MPFR.
 double to_double_rn(const Q& q);
 
-}  // namespace scalecert
+}  // namespace scalecert::internal

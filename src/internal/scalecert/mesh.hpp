@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-namespace scalecert {
+namespace scalecert::internal {
 
 enum class MeshFormat { Off, Obj, Ply, Stl };
 
@@ -23,4 +23,4 @@ std::vector<Vec3q> parse_mesh(const std::string& bytes, MeshFormat f, const std:
 // Reads a mesh file (format by extension, at most kMaxSceneBytes).
 std::vector<Vec3q> read_mesh(const std::string& path, const ReadOptions& opt = {});
 
-}  // namespace scalecert
+}  // namespace scalecert::internal

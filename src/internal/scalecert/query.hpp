@@ -2,9 +2,9 @@
 #pragma once
 #include "scalecert/envelope.hpp"
 
-namespace scalecert {
+namespace scalecert::internal {
 
-enum class Verdict { Separated, Touching, Overlapping };
+using scalecert::Verdict;  // the public enum
 const char* verdict_name(Verdict v);
 
 // A common point of P1(ρ1) and P2(ρ2): point = s1 + ρ1 Σ λ_i (v_i − s1) = s2 + ρ2 Σ μ_j (w_j − s2),
@@ -39,4 +39,4 @@ PlaneCert plane_certificate(const Model& m, size_t line, const Q& rho1, const Q&
 // A common point at a point on the line's contact (touching) — or, with line = npos, anywhere.
 Witness make_witness(const Model& m, const Q& rho1, const Q& rho2, size_t line);
 
-}  // namespace scalecert
+}  // namespace scalecert::internal

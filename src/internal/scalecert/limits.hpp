@@ -4,7 +4,7 @@
 #pragma once
 #include <cstddef>
 
-namespace scalecert {
+namespace scalecert::internal {
 
 constexpr std::size_t kMaxNumberChars = 100000;           // one number's text
 constexpr std::size_t kMaxSceneBytes = std::size_t(256) << 20;  // a scene, OFF or claims file
@@ -17,4 +17,4 @@ constexpr std::size_t kMaxJsonValues = 8100000;
 // points times that denominator, in integers).
 constexpr std::size_t kMaxDenominatorBits = 16384;
 
-}  // namespace scalecert
+}  // namespace scalecert::internal

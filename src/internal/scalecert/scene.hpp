@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-namespace scalecert {
+namespace scalecert::internal {
 
 struct PolyInput {
     std::vector<Vec3q> points;  // as given (duplicates and non-extreme points allowed)
@@ -36,4 +36,4 @@ void finish_scene(Scene& sc, const std::string& name);
 Scene parse_scene_text(const std::string& text, const std::string& name, const std::string& base_dir,
                        const ReadOptions& opt = {});
 
-}  // namespace scalecert
+}  // namespace scalecert::internal

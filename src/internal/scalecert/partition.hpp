@@ -2,7 +2,7 @@
 #pragma once
 #include "scalecert/query.hpp"
 
-namespace scalecert {
+namespace scalecert::internal {
 
 using Pt2 = std::array<Q, 2>;
 
@@ -27,4 +27,4 @@ std::vector<Pt2> normalize_polygon(std::vector<Pt2> poly);
 
 Partition build_partition(const Model& m, const Curve& c);
 
-}  // namespace scalecert
+}  // namespace scalecert::internal

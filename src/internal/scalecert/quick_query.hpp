@@ -12,7 +12,7 @@
 #include <array>
 #include <memory>
 
-namespace scalecert {
+namespace scalecert::internal {
 
 // Not for concurrent use: the counts and the lazily built model are per object (one per thread).
 class QuickScene {
@@ -29,4 +29,4 @@ private:
     mutable std::unique_ptr<Model> model_;  // built on the first undecided query
 };
 
-}  // namespace scalecert
+}  // namespace scalecert::internal

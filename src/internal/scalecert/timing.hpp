@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <cstdlib>
 
-namespace scalecert {
+namespace scalecert::internal {
 
 struct StageClock {
     bool on = std::getenv("SCALECERT_TIMING") != nullptr;
@@ -18,4 +18,4 @@ struct StageClock {
     }
 };
 
-}  // namespace scalecert
+}  // namespace scalecert::internal

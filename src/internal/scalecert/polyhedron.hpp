@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace scalecert {
+namespace scalecert::internal {
 
 struct Face {
     Vec3z normal;            // outward, primitive
@@ -68,4 +68,4 @@ std::vector<HullPlane> hull_planes_brute(const std::vector<Vec3s>& pts);
 // span 3 dimensions.
 Polyhedron build_polyhedron(const std::vector<Vec3q>& pts, const std::string& name);
 
-}  // namespace scalecert
+}  // namespace scalecert::internal

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-namespace scalecert::fp {
+namespace scalecert::internal::fp {
 
 using D3 = std::array<double, 3>;
 struct Polytope {
@@ -64,4 +64,4 @@ struct GridCurve {
 GridCurve grid_search(const Method& method, const FpScene& s, int n, int bisections = 0, int repeats = 1,
                       bool exhaustive = false);
 
-}  // namespace scalecert::fp
+}  // namespace scalecert::internal::fp

@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <string>
 
-namespace scalecert {
+namespace scalecert::internal {
 
 // How often each stage decided (per object: use one object per thread).
 struct StageCounts {
@@ -51,4 +51,4 @@ void parse_pairs(const std::string& text, std::vector<double>& r1, std::vector<d
 // The verdicts as text, one name per line.
 std::string verdict_lines(const std::vector<Verdict>& v);
 
-}  // namespace scalecert
+}  // namespace scalecert::internal

@@ -5,7 +5,7 @@
 #include "scalecert/certificate.hpp"
 #include "scalecert/families.hpp"
 
-namespace scalecert {
+namespace scalecert::internal {
 
 // Reads claims, one per line ('#' comments):
 //   RHO1 RHO2 VERDICT   VERDICT: separated | touching | overlapping | intersecting (= not separated)
@@ -38,4 +38,4 @@ std::vector<AuditRow> audit_scene(const std::string& name, const Scene& s, const
 std::string audit_csv(const std::vector<AuditRow>& rows);
 Json audit_json(const std::vector<AuditRow>& rows);
 
-}  // namespace scalecert
+}  // namespace scalecert::internal

@@ -4,7 +4,7 @@
 #pragma once
 #include "scalecert/contact_lines.hpp"
 
-namespace scalecert {
+namespace scalecert::internal {
 
 struct ClosedLine {
     Q alpha, beta, gamma;  // ρ2 = (α·ρ1 + β)/γ
@@ -27,4 +27,4 @@ struct ClosedSwitch {
 //   case (a) for (F,V)↔(E,E).
 ClosedSwitch closed_form_switch(const Model& m, const ContactLine& left, const ContactLine& right);
 
-}  // namespace scalecert
+}  // namespace scalecert::internal

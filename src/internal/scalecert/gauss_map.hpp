@@ -7,7 +7,7 @@
 #include <utility>
 #include <vector>
 
-namespace scalecert {
+namespace scalecert::internal {
 
 // A great-circle arc shorter than π, between two face normals (their doubles: the overlay only
 // prunes with them, with padding far above their rounding error).
@@ -20,4 +20,4 @@ std::array<double, 3> direction_d(const Vec3z& v);
 // Every (i, j) with arcs A[i] and B[j] possibly crossing (a superset of the crossing pairs).
 std::vector<std::pair<int, int>> arc_candidates(const std::vector<Arc>& A, const std::vector<Arc>& B);
 
-}  // namespace scalecert
+}  // namespace scalecert::internal

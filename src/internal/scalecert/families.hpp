@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-namespace scalecert {
+namespace scalecert::internal {
 
 // A small deterministic generator (same seed, same numbers on every platform).
 class Rng {
@@ -25,4 +25,4 @@ std::string family_description(const std::string& name);
 // Throws InputError for an unknown family.
 Scene make_family_scene(const std::string& name, const Q& eps, Rng& rng);
 
-}  // namespace scalecert
+}  // namespace scalecert::internal

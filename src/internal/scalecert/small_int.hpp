@@ -9,7 +9,7 @@
 #include <cstdlib>
 #include <numeric>
 
-namespace scalecert {
+namespace scalecert::internal {
 
 using I128 = __int128;
 using Vec3s = std::array<std::int64_t, 3>;
@@ -79,4 +79,4 @@ inline Z mag(const Z& v) { return abs(v); }
 inline Vec3z as_z(const Vec3s& v) { return to_z(v); }
 inline const Vec3z& as_z(const Vec3z& v) { return v; }
 
-}  // namespace scalecert
+}  // namespace scalecert::internal

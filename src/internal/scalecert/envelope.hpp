@@ -5,7 +5,7 @@
 
 #include <optional>
 
-namespace scalecert {
+namespace scalecert::internal {
 
 struct EnvPiece {
     size_t line;                 // representative line (smallest normal among identical lines)
@@ -60,4 +60,4 @@ Contact contact_at(const Model& m, const ContactLine& L, const ContactLine& R, c
 
 Curve build_curve(const Model& m);
 
-}  // namespace scalecert
+}  // namespace scalecert::internal

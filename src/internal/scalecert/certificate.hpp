@@ -6,7 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
-namespace scalecert {
+namespace scalecert::internal {
 
 using Json = nlohmann::ordered_json;
 
@@ -39,4 +39,4 @@ void write_files_atomically(const std::vector<std::pair<std::string, std::string
 // Serialises with a trailing newline; byte-identical for identical input.
 std::string dump(const Json& j);
 
-}  // namespace scalecert
+}  // namespace scalecert::internal

@@ -8,7 +8,7 @@
 #include <optional>
 #include <string>
 
-namespace scalecert {
+namespace scalecert::internal {
 
 struct InnerEllipsoid {
     std::array<double, 3> center;
@@ -27,4 +27,4 @@ struct EllipsoidPath {
 // in doubles).
 std::optional<EllipsoidPath> ellipsoid_path(const Model& m);
 
-}  // namespace scalecert
+}  // namespace scalecert::internal

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-namespace scalecert {
+namespace scalecert::internal {
 
 struct ContactLine {
     Vec3z normal;                 // primitive, pointing from P1 towards P2
@@ -56,4 +56,4 @@ Model build_model(const Scene& scene);
 // support values, features and the line, computed by scanning the polyhedra.
 ContactLine line_for_normal(const Model& m, const Vec3z& n);
 
-}  // namespace scalecert
+}  // namespace scalecert::internal

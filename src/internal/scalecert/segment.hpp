@@ -8,7 +8,7 @@
 
 #include <optional>
 
-namespace scalecert {
+namespace scalecert::internal {
 
 struct LinearPiece { Q from, to, slope, intercept; };  // y = slope·x + intercept on [from, to]
 
@@ -44,4 +44,4 @@ Q directional_gap(const Segment& s, const Q& rho1, const Q& rho2);
 // the loci of contact points (the paper's Fig. 7) run between them.
 std::vector<std::array<Q, 2>> curve_vertices(const Model& m, const Curve& c);
 
-}  // namespace scalecert
+}  // namespace scalecert::internal

@@ -1,0 +1,106 @@
+// scalecert: exact, certified collision of two convex polyhedra P1, P2, each scaled about a seed
+// s_i strictly inside it by a factor ρ_i in a range I_i. P_i(ρ) = s_i + ρ·(P_i − s_i). Every answer
+// is exact (GMP rationals); certificates are JSON documents that scalecert-check verifies.
+// This header is the whole public API. Link the CMake target scalecert::core.
+#pragma once
+#include <gmpxx.h>
+
+#include <array>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace scalecert {
+
+const char* version();  // "MAJOR.MINOR.PATCH"
+
+using Rational = mpq_class;
+using Point = std::array<Rational, 3>;
+struct Interval { Rational lo, hi; };  // a closed range of scaling factors, 0 < lo <= hi
+
+Rational exact(double x);                // the double's exact binary value (x finite)
+Rational parse_rational(const std::string& text);  // "3/7", "-12", "0.1" (= 1/10), "1e-3", exactly
+std::string to_string(const Rational& q);          // "p/q" in lowest terms, or "p"
+
+// Bad input: a scene, a number, a file. what() is one line naming the problem.
+struct InputError : std::runtime_error { using std::runtime_error::runtime_error; };
+
+enum class Verdict { Separated, Touching, Overlapping };
+enum class Feature { Vertex, Edge, Face };
+enum class ContactKind { VV, VE, VF, EV, EE, EF, FV, FE, FF };  // feature of P1, then of P2
+const char* name(Verdict v);       // "separated", "touching", "overlapping"
+const char* name(ContactKind k);   // "VE"
+Feature feature1(ContactKind k);
+Feature feature2(ContactKind k);
+
+// Two features in contact: the vertices (indices into the input points) spanning each.
+struct Contact { ContactKind kind; std::vector<int> verts1, verts2; };
+
+namespace internal { struct Model; }  // the exact polyhedra and their contact lines
+
+// A validated scene: each polyhedron is the convex hull of its points (duplicates and interior
+// points allowed); the seed defaults to the mean of the points. Checked at construction by the
+// scene file's rules and messages: 4 to 10^6 points each, 0 < lo <= hi, the points spanning 3
+// dimensions, each seed strictly inside. Throws InputError.
+class Scene {
+public:
+    Scene(std::vector<Point> p1, std::vector<Point> p2, Interval i1, Interval i2,
+          std::optional<Point> seed1 = {}, std::optional<Point> seed2 = {});
+    static Scene load(const std::string& scene_json_path);  // the scene file format
+    // Mesh files (.off .obj .ply .stl; text numbers exact as written, binary floats at their value).
+    static Scene from_meshes(const std::string& p1_path, const std::string& p2_path, Interval i1, Interval i2);
+    const std::vector<Point>& points(int i) const;  // i = 0 (P1) or 1 (P2), as given
+    const Point& seed(int i) const;
+    Interval range(int i) const;
+    std::string json() const;  // the scene file, every number exact
+    std::shared_ptr<const internal::Model> internal_model() const { return model_; }
+
+private:
+    explicit Scene(std::shared_ptr<const internal::Model> m) : model_(std::move(m)) {}
+    std::shared_ptr<const internal::Model> model_;
+};
+
+// The touching curve over I1: ρ2 = slope·ρ1 + intercept on each piece, descending and convex.
+// Below a piece, the plane of its normal separates; above the curve, the polyhedra overlap.
+struct Piece { Rational from, to, slope, intercept; Point normal; Contact contact; };
+struct SwitchPoint { Rational rho1, rho2; std::optional<Contact> contact; };  // none if ρ2 <= 0
+struct GrowthDistance { Rational value; bool in_rectangle; };  // f(ρ*) = ρ* (0: seeds coincide)
+struct Curve { std::vector<Piece> pieces; std::vector<SwitchPoint> switches; GrowthDistance growth; };
+
+// P1(ρ1) ⊆ {normal·x <= c1} and P2(ρ2) ⊆ {normal·x >= c2}: c1 < c2 separates, c1 = c2 touches.
+struct Plane { Point normal; Rational c1, c2, offset; };  // offset = (c1 + c2) / 2
+struct CommonPoint { Rational rho1, rho2; Point point; };  // a point of P1(rho1) ∩ P2(rho2)
+struct QueryResult {
+    Verdict verdict;
+    std::optional<Plane> plane;         // separated, touching
+    std::optional<CommonPoint> common;  // touching (at the pair), overlapping (at a pair <= it)
+};
+struct PlaneCheck { bool separates; Rational c1, c2; };  // exact c1, c2 as in Plane
+
+// Calls on one Analysis from several threads at once are not supported; classify() itself runs
+// on many threads.
+class Analysis {
+public:
+    explicit Analysis(const Scene& scene);  // builds the curve; keeps the scene's model alive
+    const Curve& curve() const { return curve_; }
+    QueryResult query(const Rational& rho1, const Rational& rho2) const;  // ρ1, ρ2 > 0
+    // The exact verdicts at doubles' exact values (> 0, finite), on `threads` threads (0: all cores).
+    std::vector<Verdict> classify(const std::vector<double>& rho1, const std::vector<double>& rho2,
+                                  unsigned threads = 0) const;
+    // Is n·x = offset (or, without offset, some plane of normal n) strictly between P1(ρ1), P2(ρ2)?
+    PlaneCheck check_plane(const Rational& rho1, const Rational& rho2, const Point& normal,
+                           const std::optional<Rational>& offset = {}) const;
+    // JSON documents (certificates/FORMAT.md); byte-identical to the scalecert command's output.
+    std::string curve_json() const;
+    std::string query_json(const Rational& rho1, const Rational& rho2) const;
+    std::string partition_json() const;  // the certificate: check it with scalecert-check
+
+private:
+    struct Impl;
+    std::shared_ptr<const Impl> impl_;
+    Curve curve_;
+};
+
+}  // namespace scalecert

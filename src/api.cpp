@@ -1,0 +1,215 @@
+// The public API (include/scalecert/scalecert.hpp) over the internal stages.
+#include "scalecert/scalecert.hpp"
+
+#include "scalecert/certificate.hpp"
+#include "scalecert/fast_query.hpp"
+#include "scalecert/mesh.hpp"
+
+#include <cmath>
+#include <thread>
+
+namespace scalecert {
+
+// The internal names used here (several others, such as Scene and Curve, have public namesakes).
+using internal::build_curve;
+using internal::build_model;
+using internal::build_partition;
+using internal::classify_batch;
+using internal::ContactLine;
+using internal::CurvePiece;
+using internal::dot;
+using internal::dump;
+using internal::exact_from_double;
+using internal::FastCurve;
+using internal::finish_scene;
+using internal::load_scene;
+using internal::Model;
+using internal::neg;
+using internal::parse_exact;
+using internal::primitive;
+using internal::read_mesh;
+using internal::scene_json;
+using internal::to_exact_string;
+using internal::to_q;
+using internal::Vec3z;
+using internal::verdict_name;
+
+const char* version() { return SCALECERT_VERSION_STRING; }
+
+Rational exact(double x) {
+    if (!std::isfinite(x)) throw InputError("not a finite number");
+    return exact_from_double(x);
+}
+Rational parse_rational(const std::string& text) { return parse_exact(text); }
+std::string to_string(const Rational& q) { return to_exact_string(q); }
+
+const char* name(Verdict v) { return verdict_name(v); }
+const char* name(ContactKind k) {
+    static const char* const names[] = {"VV", "VE", "VF", "EV", "EE", "EF", "FV", "FE", "FF"};
+    return names[static_cast<int>(k)];
+}
+Feature feature1(ContactKind k) { return static_cast<Feature>(static_cast<int>(k) / 3); }
+Feature feature2(ContactKind k) { return static_cast<Feature>(static_cast<int>(k) % 3); }
+
+namespace {
+
+int feature_index(char c) {
+    switch (c) {
+    case 'V': return 0;
+    case 'E': return 1;
+    case 'F': return 2;
+    }
+    throw std::logic_error("unknown feature letter");
+}
+
+Contact contact_of(const std::string& label, const std::vector<int>& f1, const std::vector<int>& f2) {
+    if (label.size() != 2) throw std::logic_error("contact label of two letters expected");
+    return {static_cast<ContactKind>(3 * feature_index(label[0]) + feature_index(label[1])), f1, f2};
+}
+
+Point canonical(Point p) {
+    for (Rational& x : p) x.canonicalize();
+    return p;
+}
+
+std::shared_ptr<const Model> model_from(internal::Scene sc, const std::string& name) {
+    finish_scene(sc, name);
+    try {
+        return std::make_shared<const Model>(build_model(sc));
+    } catch (const InputError& e) {
+        throw InputError(name + ": " + e.what());
+    }
+}
+
+}  // namespace
+
+Scene::Scene(std::vector<Point> p1, std::vector<Point> p2, Interval i1, Interval i2, std::optional<Point> seed1,
+             std::optional<Point> seed2) {
+    internal::Scene sc;
+    std::vector<Point>* pts[2] = {&p1, &p2};
+    const std::optional<Point>* seeds[2] = {&seed1, &seed2};
+    const Interval* ranges[2] = {&i1, &i2};
+    for (int i = 0; i < 2; ++i) {
+        for (Point& v : *pts[i]) v = canonical(std::move(v));
+        sc.P[i].points = std::move(*pts[i]);
+        if (*seeds[i]) {
+            sc.P[i].seed = canonical(**seeds[i]);
+            sc.P[i].seed_given = true;
+        }
+        sc.lo[i] = ranges[i]->lo;
+        sc.hi[i] = ranges[i]->hi;
+        sc.lo[i].canonicalize();
+        sc.hi[i].canonicalize();
+    }
+    model_ = model_from(std::move(sc), "scene");
+}
+
+Scene Scene::load(const std::string& path) {
+    const internal::Scene sc = load_scene(path);
+    try {
+        return Scene(std::make_shared<const Model>(build_model(sc)));
+    } catch (const InputError& e) {
+        throw InputError(path + ": " + e.what());
+    }
+}
+
+Scene Scene::from_meshes(const std::string& p1_path, const std::string& p2_path, Interval i1, Interval i2) {
+    return Scene(read_mesh(p1_path), read_mesh(p2_path), std::move(i1), std::move(i2));
+}
+
+const std::vector<Point>& Scene::points(int i) const { return model_->scene.P[i & 1].points; }
+const Point& Scene::seed(int i) const { return model_->s[i & 1]; }
+Interval Scene::range(int i) const { return {model_->scene.lo[i & 1], model_->scene.hi[i & 1]}; }
+std::string Scene::json() const { return dump(scene_json(model_->scene)); }
+
+struct Analysis::Impl {
+    std::shared_ptr<const Model> model;
+    internal::Curve curve;
+};
+
+Analysis::Analysis(const Scene& scene) {
+    auto impl = std::make_shared<Impl>();
+    impl->model = scene.internal_model();
+    impl->curve = build_curve(*impl->model);
+    const Model& m = *impl->model;
+    const internal::Curve& c = impl->curve;
+    for (const CurvePiece& p : c.pieces) {
+        const ContactLine& L = m.lines[c.env.pieces[p.env].line];
+        curve_.pieces.push_back({p.from, p.to, L.slope, L.intercept, to_q(L.normal), contact_of(L.contact, L.feat1, L.feat2)});
+    }
+    for (const internal::SwitchPoint& s : c.switches) {
+        std::optional<Contact> k;
+        if (!s.contact.label.empty()) k = contact_of(s.contact.label, s.contact.feat1, s.contact.feat2);
+        curve_.switches.push_back({s.rho1, s.rho2, k});
+    }
+    curve_.growth = {c.growth.value, c.growth.in_rectangle};
+    impl_ = std::move(impl);
+}
+
+static void check_rho(const Rational& r, const char* what) {
+    if (sgn(r) <= 0) throw InputError(std::string(what) + ": a scaling factor must be > 0");
+}
+
+QueryResult Analysis::query(const Rational& rho1, const Rational& rho2) const {
+    check_rho(rho1, "rho1");
+    check_rho(rho2, "rho2");
+    const Model& m = *impl_->model;
+    const internal::QueryResult r = internal::query(m, impl_->curve, rho1, rho2, true);
+    QueryResult out{r.verdict, std::nullopt, std::nullopt};
+    if (r.plane) out.plane = Plane{to_q(m.lines[r.plane->line].normal), r.plane->c1, r.plane->c2, r.plane->offset};
+    if (r.witness) out.common = CommonPoint{r.witness->rho1, r.witness->rho2, r.witness->point};
+    return out;
+}
+
+std::vector<Verdict> Analysis::classify(const std::vector<double>& rho1, const std::vector<double>& rho2,
+                                        unsigned threads) const {
+    if (rho1.size() != rho2.size())
+        throw InputError("classify: " + std::to_string(rho1.size()) + " values of rho1 but " + std::to_string(rho2.size()) + " of rho2");
+    for (size_t i = 0; i < rho1.size(); ++i)
+        if (!(std::isfinite(rho1[i]) && std::isfinite(rho2[i]) && rho1[i] > 0 && rho2[i] > 0))
+            throw InputError("classify: pair " + std::to_string(i) + ": two finite numbers > 0 are required");
+    if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
+    FastCurve f(*impl_->model, impl_->curve);
+    std::vector<Verdict> out;
+    classify_batch(f, rho1, rho2, out, threads);
+    return out;
+}
+
+PlaneCheck Analysis::check_plane(const Rational& rho1, const Rational& rho2, const Point& normal,
+                                 const std::optional<Rational>& offset) const {
+    check_rho(rho1, "rho1");
+    check_rho(rho2, "rho2");
+    const Point n = canonical(normal);
+    if (sgn(n[0]) == 0 && sgn(n[1]) == 0 && sgn(n[2]) == 0) throw InputError("check_plane: the normal is zero");
+    const Model& m = *impl_->model;
+    // n = k·p with p primitive and k > 0: max over P1 of n·x is k·support(p), min over P2 is
+    // −k·support(−p); scaling about the seed maps a value t to n·s + ρ(t − n·s).
+    const Vec3z p = primitive(n);
+    Rational k;
+    for (int i = 0; i < 3; ++i)
+        if (sgn(p[i]) != 0) { k = n[i] / Rational(p[i]); break; }
+    const Rational ns1 = dot(n, m.s[0]), ns2 = dot(n, m.s[1]);
+    const Rational max1 = k * m.P[0].support(p);
+    const Rational min2 = -k * m.P[1].support(neg(p));
+    PlaneCheck r;
+    r.c1 = ns1 + rho1 * (max1 - ns1);
+    r.c2 = ns2 + rho2 * (min2 - ns2);
+    r.separates = r.c1 < r.c2 && (!offset || (r.c1 < *offset && *offset < r.c2));
+    return r;
+}
+
+std::string Analysis::curve_json() const { return dump(internal::curve_json(*impl_->model, impl_->curve)); }
+
+std::string Analysis::query_json(const Rational& rho1, const Rational& rho2) const {
+    check_rho(rho1, "rho1");
+    check_rho(rho2, "rho2");
+    const Model& m = *impl_->model;
+    return dump(internal::query_json(m, internal::query(m, impl_->curve, rho1, rho2, true)));
+}
+
+std::string Analysis::partition_json() const {
+    const Model& m = *impl_->model;
+    return dump(internal::partition_json(m, impl_->curve, build_partition(m, impl_->curve)));
+}
+
+}  // namespace scalecert

@@ -1,0 +1,157 @@
+// The public API (include/scalecert/scalecert.hpp) alone: values derived by hand.
+#define BOOST_TEST_MODULE api
+#include <boost/test/unit_test.hpp>
+
+#include <scalecert/scalecert.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+using scalecert::Rational;
+using R = Rational;
+
+namespace {
+
+std::vector<scalecert::Point> box(long x0, long y0, long z0, long x1, long y1, long z1) {
+    std::vector<scalecert::Point> v;
+    for (long x : {x0, x1})
+        for (long y : {y0, y1})
+            for (long z : {z0, z1}) v.push_back({R(x), R(y), R(z)});
+    return v;
+}
+
+// The stacked cubes: [0,2]^3 below [0,2]^2 x [3,5], seeds the centres (1,1,1) and (1,1,4). The
+// gap between the scaled cubes along z is (4 − 2ρ2/2·... ) : P1(ρ1) reaches z = 1 + ρ1, P2(ρ2)
+// starts at z = 4 − ρ2, so they touch on ρ1 + ρ2 = 3, face to face (FF); ρ* = 3/2.
+scalecert::Scene stacked(R lo = R(1, 2), R hi = R(5, 2)) {
+    return scalecert::Scene(box(0, 0, 0, 2, 2, 2), box(0, 0, 3, 2, 2, 5), {lo, hi}, {lo, hi});
+}
+
+template <class F>
+std::string error_of(F f) {
+    try {
+        f();
+    } catch (const scalecert::InputError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(stacked_cubes_by_hand) {
+    const scalecert::Scene s = stacked();
+    BOOST_TEST(s.seed(0)[2] == R(1));
+    BOOST_TEST(s.seed(1)[2] == R(4));
+    const scalecert::Analysis a(s);
+    const scalecert::Curve& c = a.curve();
+    BOOST_TEST_REQUIRE(c.pieces.size() == 1u);
+    BOOST_TEST(c.pieces[0].slope == R(-1));
+    BOOST_TEST(c.pieces[0].intercept == R(3));
+    BOOST_TEST(c.pieces[0].from == R(1, 2));
+    BOOST_TEST(c.pieces[0].to == R(5, 2));
+    BOOST_TEST((c.pieces[0].contact.kind == scalecert::ContactKind::FF));
+    BOOST_TEST(c.pieces[0].contact.verts1.size() == 4u);  // the top face of P1
+    BOOST_TEST(c.pieces[0].normal[2] > 0);
+    BOOST_TEST(c.pieces[0].normal[0] == 0);
+    BOOST_TEST(c.switches.empty());
+    BOOST_TEST(c.growth.value == R(3, 2));
+    BOOST_TEST(c.growth.in_rectangle);
+
+    // Below the line: separated, the plane z = const between 1 + ρ1 and 4 − ρ2.
+    scalecert::QueryResult q = a.query(R(1), R(3, 2));
+    BOOST_TEST((q.verdict == scalecert::Verdict::Separated));
+    BOOST_TEST_REQUIRE(q.plane.has_value());
+    const R scale = q.plane->normal[2];  // the normal is (0, 0, k), k > 0
+    BOOST_TEST(q.plane->c1 == scale * 2);
+    BOOST_TEST(q.plane->c2 == scale * R(5, 2));
+    BOOST_TEST(!q.common.has_value());
+    // On it: touching, a common point at height 1 + ρ1.
+    q = a.query(R(1, 2), R(5, 2));
+    BOOST_TEST((q.verdict == scalecert::Verdict::Touching));
+    BOOST_TEST_REQUIRE(q.common.has_value());
+    BOOST_TEST(q.common->point[2] == R(3, 2));
+    BOOST_TEST(q.plane->c1 == q.plane->c2);
+    // Above: overlapping, with a common point at a pair on the ray below it.
+    q = a.query(R(2), R(2));
+    BOOST_TEST((q.verdict == scalecert::Verdict::Overlapping));
+    BOOST_TEST_REQUIRE(q.common.has_value());
+    BOOST_TEST(q.common->rho1 + q.common->rho2 == R(3));  // t·(2, 2) on ρ1 + ρ2 = 3
+    BOOST_TEST(!q.plane.has_value());
+
+    // Doubles at their exact values: 1.5 + 1.5 = 3 touches; the next double above overlaps.
+    const std::vector<scalecert::Verdict> v =
+        a.classify({1.0, 1.5, 1.5, 2.0}, {1.0, 1.5, std::nextafter(1.5, 2.0), 2.0}, 2);
+    BOOST_TEST((v[0] == scalecert::Verdict::Separated));
+    BOOST_TEST((v[1] == scalecert::Verdict::Touching));
+    BOOST_TEST((v[2] == scalecert::Verdict::Overlapping));
+    BOOST_TEST((v[3] == scalecert::Verdict::Overlapping));
+}
+
+BOOST_AUTO_TEST_CASE(claimed_planes_are_checked_exactly) {
+    const scalecert::Analysis a(stacked());
+    // At (1, 1): P1 reaches z = 2, P2 starts at z = 3.
+    scalecert::PlaneCheck p = a.check_plane(R(1), R(1), {R(0), R(0), R(1, 3)});
+    BOOST_TEST(p.separates);
+    BOOST_TEST(p.c1 == R(2, 3));
+    BOOST_TEST(p.c2 == R(1));
+    BOOST_TEST(a.check_plane(R(1), R(1), {R(0), R(0), R(1)}, R(5, 2)).separates);
+    BOOST_TEST(!a.check_plane(R(1), R(1), {R(0), R(0), R(1)}, R(3)).separates);  // touches P2
+    BOOST_TEST(!a.check_plane(R(1), R(1), {R(0), R(0), R(-1)}).separates);        // wrong way round
+    BOOST_TEST(!a.check_plane(R(1), R(1), {R(1), R(0), R(0)}).separates);         // side by side in x
+    // x + z: P1's max is 2 + 2 = 4 at (2, y, 2); P2's min 0 + 3 = 3: overlap in that direction.
+    p = a.check_plane(R(1), R(1), {R(1), R(0), R(1)});
+    BOOST_TEST(p.c1 == R(4));
+    BOOST_TEST(p.c2 == R(3));
+    BOOST_TEST(!p.separates);
+    BOOST_TEST(error_of([&] { a.check_plane(R(1), R(1), {R(0), R(0), R(0)}); }).find("normal is zero") != std::string::npos);
+}
+
+BOOST_AUTO_TEST_CASE(scenes_in_code_are_checked_like_scene_files) {
+    BOOST_TEST(error_of([] { stacked(R(3), R(1, 2)); }) == "scene: I1: lo > hi");
+    BOOST_TEST(error_of([] { stacked(R(0), R(1)); }) == "scene: I1: lo must be > 0 (got '0')");
+    BOOST_TEST(error_of([] {
+        scalecert::Scene(box(0, 0, 0, 2, 2, 0), box(0, 0, 3, 2, 2, 5), {R(1), R(2)}, {R(1), R(2)});
+    }).find("flat") != std::string::npos);
+    BOOST_TEST(error_of([] {
+        scalecert::Scene(box(0, 0, 0, 2, 2, 2), box(0, 0, 3, 2, 2, 5), {R(1), R(2)}, {R(1), R(2)},
+                         scalecert::Point{R(2), R(1), R(1)});
+    }).find("seed: not strictly inside") != std::string::npos);
+    BOOST_TEST(error_of([] {
+        scalecert::Scene(std::vector<scalecert::Point>(3), box(0, 0, 3, 2, 2, 5), {R(1), R(2)}, {R(1), R(2)});
+    }) == "scene: P1: fewer than 4 vertices (3)");
+    // A rational given in non-canonical form is the same number.
+    scalecert::Scene s(box(0, 0, 0, 2, 2, 2), box(0, 0, 3, 2, 2, 5), {R(2, 4), R(5, 2)}, {R(1, 2), R(5, 2)});
+    BOOST_TEST(s.range(0).lo.get_den() == 2);
+}
+
+BOOST_AUTO_TEST_CASE(doubles_are_exact_and_names_are_fixed) {
+    BOOST_TEST(scalecert::exact(0.1) == R(3602879701896397, mpz_class(1) << 55));
+    BOOST_TEST(scalecert::parse_rational("0.1") == R(1, 10));
+    BOOST_TEST(scalecert::to_string(R(6, -4)) == "-3/2");
+    BOOST_TEST(std::string(scalecert::name(scalecert::ContactKind::VE)) == "VE");
+    BOOST_TEST((scalecert::feature1(scalecert::ContactKind::FE) == scalecert::Feature::Face));
+    BOOST_TEST((scalecert::feature2(scalecert::ContactKind::FE) == scalecert::Feature::Edge));
+    BOOST_TEST(std::string(scalecert::name(scalecert::Verdict::Touching)) == "touching");
+    BOOST_TEST(std::string(scalecert::version()).find('.') != std::string::npos);
+}
+
+// The tetrahedron on the box (certificates/scenes/tetra_box_switch.json), loaded through the API:
+// its JSON documents are the engine's, and the partition passes the independent checker.
+BOOST_AUTO_TEST_CASE(loaded_scene_certificate_passes_the_checker) {
+    const std::string dir = std::string(SCALECERT_SOURCE_DIR) + "/certificates/";
+    const scalecert::Analysis a(scalecert::Scene::load(dir + "scenes/tetra_box_switch.json"));
+    const std::string cert = a.partition_json();
+    std::FILE* f = std::fopen((dir + "tetra_box_switch.partition.json").c_str(), "rb");
+    BOOST_TEST_REQUIRE(f != nullptr);
+    std::string bundled;
+    char buf[4096];
+    for (size_t n; (n = std::fread(buf, 1, sizeof buf, f)) > 0;) bundled.append(buf, n);
+    std::fclose(f);
+    BOOST_TEST(cert == bundled);  // the bundled certificate was written by the scalecert command
+    // The tetrahedron's lowest vertex (2,0,2) on the box's top face: the first piece is (V,F) and a
+    // switch follows (the scene's name: its curve switches inside I1).
+    BOOST_TEST_REQUIRE(!a.curve().pieces.empty());
+    BOOST_TEST(!a.curve().switches.empty());
+}
