@@ -235,13 +235,13 @@ BOOST_AUTO_TEST_CASE(audit_arguments_that_crashed_or_never_ended_are_refused) {
     expect_error("sweep-to too far", "audit --family random --sweep 1 --sweep-to 5000", "--sweep-to");
     expect_error("unknown family", "audit --family bogus --sweep 1 --sweep-to 2", "unknown family 'bogus'");
     // The CSV was written before the JSON failed: now both or neither.
-    fs::path prefix = workdir() / "both";
+    const std::string both = " --out " + (workdir() / "both.json").string() + " --csv " + (workdir() / "both.csv").string();
     fs::create_directories(workdir() / "both.json");  // the JSON target cannot be replaced
-    Run a = run("audit " + g.string() + " --methods libccd-gjk --out " + prefix.string());
+    Run a = run("audit " + g.string() + " --methods libccd-gjk" + both);
     BOOST_TEST(a.status == 2);
     BOOST_TEST(!fs::exists(workdir() / "both.csv"));
     fs::remove_all(workdir() / "both.json");
-    Run b = run("audit " + g.string() + " --methods libccd-gjk --out " + prefix.string());
+    Run b = run("audit " + g.string() + " --methods libccd-gjk" + both);
     BOOST_TEST(b.status == 0);
     BOOST_TEST(fs::exists(workdir() / "both.csv"));
     BOOST_TEST(fs::exists(workdir() / "both.json"));
@@ -282,10 +282,10 @@ BOOST_AUTO_TEST_CASE(outputs_go_only_to_regular_files_and_directories_we_can_mak
     BOOST_TEST(((fs::status(out).permissions() & fs::perms::others_read) != fs::perms::none));  // not mkstemp's 0600
     // golden: under a file (was exit 3), and an unknown family (left its directory behind).
     write("plain-file", "x");
-    Run gf = run("golden --family random --count 1 --out " + (workdir() / "plain-file" / "g").string());
+    Run gf = run("golden --family random --count 1 --dir " + (workdir() / "plain-file" / "g").string());
     BOOST_TEST(gf.status == 2);
     BOOST_TEST(gf.err.find("cannot create the output directory") != std::string::npos, gf.err);
-    Run gu = run("golden --family bogus --out " + (workdir() / "never-made").string());
+    Run gu = run("golden --family bogus --dir " + (workdir() / "never-made").string());
     BOOST_TEST(gu.status == 2);
     BOOST_TEST(!fs::exists(workdir() / "never-made"));
 }
@@ -460,4 +460,47 @@ BOOST_AUTO_TEST_CASE(bad_mesh_files_and_options) {
     fs::path sc = write("both.json", scene(poly(kCube1), poly(kCube2)));
     expect_error("SCENE and --p1", "curve " + sc.string() + " --p1 " + g, "not both");
     expect_error("mesh and vertices", "curve " + write("mv.json", scene("{\"mesh\": \"good.obj\", \"vertices\": " + kCube1 + "}", poly(kCube2))).string(), "give one of");
+}
+
+// ---- the command line (issue 10): exit 1 for a wrong claim, --help examples, one --out ----------
+BOOST_AUTO_TEST_CASE(certify_fp_exit_status_gates_ci) {
+    // Stacked cubes: the touching line is ρ1 + ρ2 = 3 (test_hand_curves), so (1, 1) is separated,
+    // (3/2, 3/2) touching and the growth distance 3/2.
+    const std::string sc = std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/stacked_cubes.json";
+    fs::path right = write("right.claims", "1 1 separated\n1.5 1.5 touching\ngrowth 3/2\n");
+    fs::path wrong = write("wrong.claims", "1 1 separated\n2 2 separated\n");
+    Run r = run("certify-fp " + sc + " " + right.string());
+    BOOST_TEST(r.status == 0, r.err);
+    BOOST_TEST(r.out.find("wrong: 0") != std::string::npos, r.out);
+    Run w = run("certify-fp " + sc + " " + wrong.string());
+    BOOST_TEST(w.status == 1);
+    BOOST_TEST(w.out.find("wrong: 1") != std::string::npos, w.out);
+    // With --out the report goes to the file, and the status is the same.
+    fs::path rep = workdir() / "report.txt";
+    Run o = run("certify-fp " + sc + " " + wrong.string() + " --out " + rep.string());
+    BOOST_TEST(o.status == 1);
+    BOOST_TEST(slurp(rep) == w.out);
+}
+
+BOOST_AUTO_TEST_CASE(every_subcommand_help_shows_an_example) {
+    for (const char* c : {"curve", "query", "partition", "classify", "certify-fp", "golden", "audit", "grid"}) {
+        Run h = run(std::string(c) + " --help");
+        BOOST_TEST(h.status == 0, c);
+        BOOST_TEST(h.out.find("scalecert " + std::string(c) + " ") != std::string::npos, c);
+        BOOST_TEST(h.out.find("Example") != std::string::npos, c);
+    }
+    // --out is a file everywhere; golden takes a directory under its own name.
+    Run g = run("golden --family random --count 1 --dir " + (workdir() / "gd").string() + " --out x");
+    BOOST_TEST(g.status == 2);
+    BOOST_TEST(g.err.find("--out") != std::string::npos, g.err);
+}
+
+BOOST_AUTO_TEST_CASE(help_examples_run_as_written) {
+    // The examples that name bundled files run from the source tree and succeed.
+    const std::string src = SCALECERT_SOURCE_DIR;
+    const std::string ex = src + "/examples/";
+    Run c = run("curve --p1 " + ex + "tetra.obj --p2 " + ex + "box.stl --i1 1/2,2 --i2 1,4");
+    BOOST_TEST(c.status == 0, c.err);
+    Run q = run("query " + src + "/certificates/scenes/stacked_cubes.json 3/2 3/2");
+    BOOST_TEST(q.out == "touching\n");
 }

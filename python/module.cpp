@@ -1,0 +1,233 @@
+// The Python module scalecert: exact numbers in and out as fractions.Fraction.
+#include <scalecert/scalecert.hpp>
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#ifdef SCALECERT_WITH_TOOLS
+#include "scalecert/audit.hpp"
+#endif
+
+#include <cmath>
+#include <filesystem>
+
+namespace py = pybind11;
+using scalecert::Rational;
+
+namespace {
+
+py::object fraction(const Rational& q) {
+    static py::object F = py::module_::import("fractions").attr("Fraction");
+    return F(py::int_(py::str(q.get_num().get_str())), py::int_(py::str(q.get_den().get_str())));
+}
+
+py::tuple fractions(const scalecert::Point& p) { return py::make_tuple(fraction(p[0]), fraction(p[1]), fraction(p[2])); }
+
+// int, fractions.Fraction, decimal.Decimal, numpy integers and floats, decimal strings ("0.1" is
+// 1/10, "3/7"), and floats at their exact binary value.
+Rational rational(const py::handle& h, const char* what) {
+    try {
+        if (py::isinstance<py::bool_>(h)) throw scalecert::InputError("a bool is not a number");
+        if (py::isinstance<py::str>(h)) return scalecert::parse_rational(h.cast<std::string>());
+        if (py::isinstance<py::float_>(h) || py::hasattr(h, "dtype") && py::str(h.attr("dtype").attr("kind")).cast<std::string>() == "f") {
+            const double d = py::float_(h.cast<py::object>()).cast<double>();
+            if (!std::isfinite(d)) throw scalecert::InputError("not a finite number");
+            return scalecert::exact(d);
+        }
+        if (py::hasattr(h, "numerator") && py::hasattr(h, "denominator")) {  // int, Fraction, numpy integers
+            Rational q(mpz_class(py::str(py::int_(h.attr("numerator"))).cast<std::string>()),
+                       mpz_class(py::str(py::int_(h.attr("denominator"))).cast<std::string>()));
+            q.canonicalize();
+            return q;
+        }
+        if (py::isinstance(h, py::module_::import("decimal").attr("Decimal"))) return scalecert::parse_rational(py::str(h).cast<std::string>());
+    } catch (const scalecert::InputError& e) {
+        throw scalecert::InputError(std::string(what) + ": " + e.what());
+    } catch (const py::error_already_set&) {
+        throw scalecert::InputError(std::string(what) + ": not a number");
+    }
+    throw scalecert::InputError(std::string(what) + ": not a number (int, Fraction, Decimal, float or decimal string)");
+}
+
+py::list as_list(const py::handle& h, const std::string& what) {
+    if (py::hasattr(h, "tolist")) return h.attr("tolist")();  // numpy arrays
+    if (py::isinstance<py::str>(h) || !py::isinstance<py::sequence>(h)) throw scalecert::InputError(what + ": expected a list");
+    return py::list(py::reinterpret_borrow<py::object>(h));
+}
+
+scalecert::Point point(const py::handle& h, const std::string& what) {
+    py::list l = as_list(h, what);
+    if (l.size() != 3) throw scalecert::InputError(what + ": expected 3 coordinates");
+    return {rational(l[0], what.c_str()), rational(l[1], what.c_str()), rational(l[2], what.c_str())};
+}
+
+std::vector<scalecert::Point> points(const py::handle& h, const std::string& what) {
+    std::vector<scalecert::Point> out;
+    py::list l = as_list(h, what);
+    for (size_t i = 0; i < l.size(); ++i) out.push_back(point(l[i], what + "[" + std::to_string(i) + "]"));
+    return out;
+}
+
+scalecert::Interval interval(const py::handle& h, const std::string& what) {
+    py::list l = as_list(h, what);
+    if (l.size() != 2) throw scalecert::InputError(what + ": expected (lo, hi)");
+    return {rational(l[0], what.c_str()), rational(l[1], what.c_str())};
+}
+
+py::object json_loads(const std::string& text) { return py::module_::import("json").attr("loads")(text); }
+
+py::dict contact_dict(const scalecert::Contact& c) {
+    py::dict d;
+    d["contact"] = scalecert::name(c.kind);
+    d["features"] = py::make_tuple(c.verts1, c.verts2);
+    return d;
+}
+
+// A scene with its analysis, built on first use.
+struct PyScene {
+    scalecert::Scene scene;
+    mutable std::shared_ptr<const scalecert::Analysis> analysis;
+    const scalecert::Analysis& a() const {
+        if (!analysis) analysis = std::make_shared<const scalecert::Analysis>(scene);
+        return *analysis;
+    }
+};
+
+PyScene make_scene(const py::handle& p1, const py::handle& p2, const py::handle& i1, const py::handle& i2, const py::handle& seeds) {
+    std::optional<scalecert::Point> s[2];
+    if (!seeds.is_none()) {
+        py::list l = as_list(seeds, "seeds");
+        if (l.size() != 2) throw scalecert::InputError("seeds: expected (seed1, seed2); either may be None");
+        for (int i = 0; i < 2; ++i)
+            if (!l[i].is_none()) s[i] = point(l[i], "seeds[" + std::to_string(i) + "]");
+    }
+    return PyScene{scalecert::Scene(points(p1, "P1"), points(p2, "P2"), interval(i1, "I1"), interval(i2, "I2"), s[0], s[1]), nullptr};
+}
+
+py::dict curve_dict(const scalecert::Curve& c) {
+    py::list pieces, switches;
+    for (const scalecert::Piece& p : c.pieces) {
+        py::dict d = contact_dict(p.contact);
+        d["rho1"] = py::make_tuple(fraction(p.from), fraction(p.to));
+        d["slope"] = fraction(p.slope);
+        d["intercept"] = fraction(p.intercept);
+        d["normal"] = fractions(p.normal);
+        pieces.append(d);
+    }
+    for (const scalecert::SwitchPoint& s : c.switches) {
+        py::dict d = s.contact ? contact_dict(*s.contact) : py::dict();
+        if (!s.contact) d["contact"] = py::none();
+        d["rho1"] = fraction(s.rho1);
+        d["rho2"] = fraction(s.rho2);
+        switches.append(d);
+    }
+    py::dict out;
+    out["pieces"] = pieces;
+    out["switch_points"] = switches;
+    out["growth_distance"] = fraction(c.growth.value);
+    out["growth_distance_in_rectangle"] = c.growth.in_rectangle;
+    return out;
+}
+
+}  // namespace
+
+PYBIND11_MODULE(scalecert, m) {
+    m.doc() = "Exact, certified collision of uniformly scaled convex polyhedra.";
+    m.attr("__version__") = scalecert::version();
+    py::register_exception<scalecert::InputError>(m, "InputError", PyExc_ValueError);
+
+    py::enum_<scalecert::Verdict>(m, "Verdict", "classify() returns these as int8 codes")
+        .value("Separated", scalecert::Verdict::Separated)
+        .value("Touching", scalecert::Verdict::Touching)
+        .value("Overlapping", scalecert::Verdict::Overlapping);
+
+    py::class_<PyScene>(m, "Scene")
+        .def(py::init([](const py::handle& p1, const py::handle& p2, const py::handle& i1, const py::handle& i2, const py::handle& seeds) {
+                 return make_scene(p1, p2, i1, i2, seeds);
+             }),
+             py::arg("P1"), py::arg("P2"), py::arg("I1"), py::arg("I2"), py::arg("seeds") = py::none(),
+             "Vertices as lists or numpy arrays of ints, Fractions, Decimals, decimal strings or floats "
+             "(a float is taken at its exact value); I1, I2 = (lo, hi); seeds = (s1, s2), default the means.")
+        .def_static("load", [](const std::string& path) { return PyScene{scalecert::Scene::load(path), nullptr}; },
+                    py::arg("path"), "a scene file (JSON)")
+        .def_static("from_meshes", [](const std::string& p1, const std::string& p2, const py::handle& i1, const py::handle& i2) {
+                        return PyScene{scalecert::Scene::from_meshes(p1, p2, interval(i1, "I1"), interval(i2, "I2")), nullptr};
+                    }, py::arg("p1"), py::arg("p2"), py::arg("I1"), py::arg("I2"), "mesh files: .off .obj .ply .stl")
+        .def("seeds", [](const PyScene& s) { return py::make_tuple(fractions(s.scene.seed(0)), fractions(s.scene.seed(1))); })
+        .def("json", [](const PyScene& s) { return s.scene.json(); }, "the scene file text, every number exact")
+        .def("curve", [](const PyScene& s) { return curve_dict(s.a().curve()); },
+             "pieces (rho1 range, slope, intercept, normal, contact, features), switch points, growth distance")
+        .def("query", [](const PyScene& s, const py::handle& r1, const py::handle& r2) {
+                 const Rational a = rational(r1, "rho1"), b = rational(r2, "rho2");
+                 const scalecert::QueryResult q = s.a().query(a, b);
+                 py::dict d;
+                 d["verdict"] = q.verdict;
+                 if (q.plane) {
+                     py::dict p;
+                     p["normal"] = fractions(q.plane->normal);
+                     p["c1"] = fraction(q.plane->c1);
+                     p["c2"] = fraction(q.plane->c2);
+                     p["offset"] = fraction(q.plane->offset);
+                     d["plane"] = p;
+                 } else {
+                     d["plane"] = py::none();
+                 }
+                 if (q.common) d["common_point"] = py::dict(py::arg("rho1") = fraction(q.common->rho1), py::arg("rho2") = fraction(q.common->rho2), py::arg("point") = fractions(q.common->point));
+                 else d["common_point"] = py::none();
+                 d["certificate"] = json_loads(s.a().query_json(a, b));
+                 return d;
+             }, py::arg("rho1"), py::arg("rho2"), "the exact verdict at (rho1, rho2) > 0, with its certificate")
+        .def("classify", [](const PyScene& s, py::array_t<double, py::array::c_style | py::array::forcecast> r1,
+                            py::array_t<double, py::array::c_style | py::array::forcecast> r2) {
+                 if (r1.ndim() != 1 || r2.ndim() != 1) throw scalecert::InputError("classify: one-dimensional arrays expected");
+                 std::vector<double> a(r1.data(), r1.data() + r1.size()), b(r2.data(), r2.data() + r2.size());
+                 const scalecert::Analysis& an = s.a();
+                 std::vector<scalecert::Verdict> v;
+                 {
+                     py::gil_scoped_release free;
+                     v = an.classify(a, b, 0);
+                 }
+                 py::array_t<std::int8_t> out(static_cast<py::ssize_t>(v.size()));
+                 auto w = out.mutable_unchecked<1>();
+                 for (size_t i = 0; i < v.size(); ++i) w(static_cast<py::ssize_t>(i)) = static_cast<std::int8_t>(v[i]);
+                 return out;
+             }, py::arg("rho1"), py::arg("rho2"),
+             "exact verdicts at the doubles' exact values, on all cores: an int8 array of Verdict values")
+        .def("check_plane", [](const PyScene& s, const py::handle& r1, const py::handle& r2, const py::handle& n, const py::handle& offset) {
+                 std::optional<Rational> off;
+                 if (!offset.is_none()) off = rational(offset, "offset");
+                 const scalecert::PlaneCheck c = s.a().check_plane(rational(r1, "rho1"), rational(r2, "rho2"), point(n, "normal"), off);
+                 return py::dict(py::arg("separates") = c.separates, py::arg("c1") = fraction(c.c1), py::arg("c2") = fraction(c.c2));
+             }, py::arg("rho1"), py::arg("rho2"), py::arg("normal"), py::arg("offset") = py::none(),
+             "does the plane normal.x = offset (or some plane of that normal) separate P1(rho1) and P2(rho2)?")
+        .def("curve_json", [](const PyScene& s) { return json_loads(s.a().curve_json()); })
+        .def("partition", [](const PyScene& s) { return json_loads(s.a().partition_json()); },
+             "the certified partition of I1 x I2 (the certificate), as a dict")
+        .def("partition_json", [](const PyScene& s) { return s.a().partition_json(); },
+             "the certificate as text, byte-identical to scalecert partition")
+#ifdef SCALECERT_WITH_TOOLS
+        .def("certify_fp", [](const PyScene& s, const std::string& claims, bool binary_doubles) {
+                 const auto& model = *s.scene.internal_model();
+                 const scalecert::internal::Curve c = scalecert::internal::build_curve(model);
+                 long wrong = 0;
+                 const std::string report = scalecert::internal::certify_fp(model, c, claims, "claims", binary_doubles, true, &wrong);
+                 return json_loads(report);
+             }, py::arg("claims"), py::arg("binary_doubles") = false,
+             "marks claims ('RHO1 RHO2 VERDICT', 'curve RHO1 RHO2', 'growth RHO' per line) right or wrong; "
+             "the report of scalecert certify-fp --json, as a dict")
+#endif
+        ;
+#ifdef SCALECERT_WITH_TOOLS
+    m.def("golden", [](const std::string& family, int count, unsigned long long seed, const py::handle& eps, const std::string& dir) {
+              if (count < 1 || count > 100000) throw scalecert::InputError("count: 1 to 100000");
+              const Rational e = rational(eps, "eps");
+              if (sgn(e) <= 0) throw scalecert::InputError("eps must be > 0");
+              std::error_code ec;
+              std::filesystem::create_directories(dir, ec);
+              if (ec || !std::filesystem::is_directory(dir)) throw scalecert::InputError(dir + ": cannot create the output directory");
+              scalecert::internal::write_golden(family, count, seed, e, dir);
+          }, py::arg("family"), py::arg("count"), py::arg("seed"), py::arg("eps"), py::arg("dir"),
+          "writes COUNT scenes of FAMILY with exact answers into DIR, as scalecert golden does");
+#endif
+}

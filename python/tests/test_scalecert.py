@@ -1,0 +1,201 @@
+"""The Python module: hand-derived values, a brute-force envelope, and agreement with the CLI."""
+import itertools
+import json
+import os
+import random
+import re
+import subprocess
+import sys
+from decimal import Decimal
+from fractions import Fraction as F
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import scalecert
+
+SRC = Path(os.environ.get("SCALECERT_SOURCE_DIR", Path(__file__).resolve().parents[2]))
+CLI = os.environ.get("SCALECERT_BIN", "scalecert")
+CHECK = os.environ.get("SCALECERT_CHECK_BIN", "scalecert-check")
+
+
+def box(x0, y0, z0, x1, y1, z1):
+    return [[x, y, z] for x in (x0, x1) for y in (y0, y1) for z in (z0, z1)]
+
+
+def stacked():
+    # [0,2]^3 below [0,2]^2 x [3,5], seeds the centres: P1(r1) reaches z = 1 + r1, P2(r2) starts
+    # at z = 4 - r2, so they touch on r1 + r2 = 3 (face on face) and the growth distance is 3/2.
+    return scalecert.Scene(box(0, 0, 0, 2, 2, 2), box(0, 0, 3, 2, 2, 5), ("1/2", "5/2"), (F(1, 2), 2.5))
+
+
+def test_stacked_cubes_by_hand():
+    c = stacked().curve()
+    assert len(c["pieces"]) == 1
+    p = c["pieces"][0]
+    assert (p["slope"], p["intercept"], p["rho1"]) == (-1, 3, (F(1, 2), F(5, 2)))
+    assert p["contact"] == "FF"
+    assert c["switch_points"] == []
+    assert c["growth_distance"] == F(3, 2) and c["growth_distance_in_rectangle"]
+
+
+def test_queries_carry_their_certificates():
+    s = stacked()
+    q = s.query(1, F(3, 2))
+    assert q["verdict"] == scalecert.Verdict.Separated
+    k = q["plane"]["normal"][2]  # (0, 0, k): P1 up to z = 2, P2 from z = 5/2
+    assert q["plane"]["c1"] == 2 * k and q["plane"]["c2"] == F(5, 2) * k
+    assert q["certificate"]["verdict"] == "separated"
+    q = s.query("0.5", Decimal("2.5"))
+    assert q["verdict"] == scalecert.Verdict.Touching
+    assert q["common_point"]["point"][2] == F(3, 2)
+    q = s.query(2, 2)
+    assert q["verdict"] == scalecert.Verdict.Overlapping
+    assert q["common_point"]["rho1"] + q["common_point"]["rho2"] == 3
+
+
+def test_tetrahedron_on_box_by_hand():
+    # The tetrahedron's lowest vertex v = (2,0,2), about the seed (0,0,9/2), sits at
+    # (2 r1, 0, 9/2 - 5/2 r1); the box [-1,1]^3 scaled by r2 has its top at z = r2. Vertex on face
+    # (VF) while v is over the top face: r2 = 9/2 - 5/2 r1, until x = 2 r1 reaches the edge
+    # x = r2 at r1 = 1, r2 = 2, where v touches the edge (a VE switch).
+    s = scalecert.Scene.load(str(SRC / "certificates/scenes/tetra_box_switch.json"))
+    c = s.curve()
+    p = c["pieces"][0]
+    assert (p["slope"], p["intercept"], p["contact"]) == (F(-5, 2), F(9, 2), "VF")
+    assert p["rho1"] == (F(1, 2), 1)
+    sw = c["switch_points"][0]
+    assert (sw["rho1"], sw["rho2"], sw["contact"]) == (1, 2, "VE")
+    assert sw["features"] == ([0], [5, 7])
+
+
+def test_classify_takes_doubles_at_their_exact_values():
+    s = stacked()
+    r1 = np.array([1.0, 1.5, 1.5, 2.0, 0.1])
+    r2 = np.array([1.0, 1.5, np.nextafter(1.5, 2.0), 2.0, 2.9])
+    v = s.classify(r1, r2)
+    assert v.dtype == np.int8
+    S, T, O = (int(x) for x in (scalecert.Verdict.Separated, scalecert.Verdict.Touching, scalecert.Verdict.Overlapping))
+    # 0.1 + 2.9 in doubles: 0.1 is above 1/10 and 2.9 below 29/10 by different amounts.
+    exact = F(0.1) + F(2.9)
+    assert list(v) == [S, T, O, O, S if exact < 3 else T if exact == 3 else O]
+    big = np.random.default_rng(1).uniform(0.5, 2.5, size=(2, 20000))
+    v = s.classify(big[0], big[1])
+    want = [S if F(a) + F(b) < 3 else T if F(a) + F(b) == 3 else O for a, b in zip(big[0], big[1])]
+    assert v.tolist() == want
+
+
+def test_check_plane_is_exact():
+    s = stacked()
+    assert s.check_plane(1, 1, [0, 0, 1], "2.5")["separates"]
+    assert not s.check_plane(1, 1, [0, 0, 1], 3)["separates"]  # touches P2's bottom face
+    # A plane that misses P1's top (z = 2) by 10^-17: rejected.
+    assert not s.check_plane(1, 1, [0, 0, 1], Decimal("1.99999999999999999"))["separates"]
+    r = s.check_plane(1, 1, [1, 0, 1])
+    assert (r["c1"], r["c2"], r["separates"]) == (4, 3, False)
+
+
+def test_bad_input_is_one_line():
+    with pytest.raises(ValueError, match="I1: lo > hi"):
+        scalecert.Scene(box(0, 0, 0, 2, 2, 2), box(0, 0, 3, 2, 2, 5), (3, 1), (1, 2))
+    with pytest.raises(ValueError, match="flat"):
+        scalecert.Scene(box(0, 0, 0, 2, 2, 0), box(0, 0, 3, 2, 2, 5), (1, 2), (1, 2))
+    with pytest.raises(ValueError, match="not strictly inside"):
+        scalecert.Scene(box(0, 0, 0, 2, 2, 2), box(0, 0, 3, 2, 2, 5), (1, 2), (1, 2), seeds=([2, 1, 1], None))
+    with pytest.raises(ValueError, match="not a number"):
+        scalecert.Scene(box(0, 0, 0, 2, 2, 2), box(0, 0, 3, 2, 2, 5), (1, 2), (1, [2]))
+    with pytest.raises(ValueError, match="finite"):
+        scalecert.Scene(box(0, 0, 0, 2, 2, 2), box(0, 0, 3, 2, 2, 5), (1, float("inf")), (1, 2))
+    with pytest.raises(ValueError, match="> 0"):
+        stacked().query(0, 1)
+    with pytest.raises(ValueError, match="finite"):
+        stacked().classify(np.array([1.0]), np.array([np.nan]))
+
+
+# ---- a brute-force envelope: every cross product of two difference vectors is a candidate normal
+def brute_f(P1, P2, s1, s2, r1):
+    diffs = [np.subtract(a, b) for P in (P1, P2) for a, b in itertools.combinations(P, 2)]
+    d = [s2[i] - s1[i] for i in range(3)]
+    best = None
+    for a, b in itertools.combinations(diffs, 2):
+        n0 = [int(a[1] * b[2] - a[2] * b[1]), int(a[2] * b[0] - a[0] * b[2]), int(a[0] * b[1] - a[1] * b[0])]
+        if n0 == [0, 0, 0]:
+            continue
+        for n in (n0, [-x for x in n0]):
+            h1 = max(sum(n[i] * (v[i] - s1[i]) for i in range(3)) for v in P1)
+            h2 = max(-sum(n[i] * (w[i] - s2[i]) for i in range(3)) for w in P2)
+            val = (sum(n[i] * d[i] for i in range(3)) - r1 * h1) / h2
+            best = val if best is None or val > best else best
+    return best
+
+
+def random_scene(rng, n1, n2):
+    P1 = [[rng.randint(-4, 4) for _ in range(3)] for _ in range(n1)]
+    P2 = [[rng.randint(-4, 4) + 7 * (k == 0) for k in range(3)] for _ in range(n2)]
+    return P1, P2
+
+
+def test_random_scenes_match_brute_force_and_the_cli(tmp_path):
+    rng = random.Random(7)
+    done = 0
+    while done < 6:
+        P1, P2 = random_scene(rng, 5 + done % 3, 6)
+        try:
+            s = scalecert.Scene(P1, P2, ("1/3", 3), (F(1, 2), "2.75"))
+        except ValueError:
+            continue  # flat point sets: drawn again
+        s1, s2 = s.seeds()
+        c = s.curve()
+        for p in c["pieces"]:
+            for r1 in (p["rho1"][0], (p["rho1"][0] + p["rho1"][1]) / 2, p["rho1"][1]):
+                assert p["slope"] * r1 + p["intercept"] == brute_f(
+                    [[F(x) for x in v] for v in P1], [[F(x) for x in v] for v in P2], s1, s2, r1)
+        scene = tmp_path / f"s{done}.json"
+        scene.write_text(s.json())
+        for cmd, mine in (("curve", json.dumps(s.curve_json(), indent=2)), ("partition", s.partition_json())):
+            out = subprocess.run([CLI, cmd, str(scene)], capture_output=True, text=True, check=True).stdout
+            if cmd == "partition":
+                assert out == mine  # byte for byte
+            else:
+                assert json.loads(out)["pieces"] == json.loads(mine)["pieces"]
+        cert = tmp_path / f"s{done}.partition.json"
+        cert.write_text(s.partition_json())
+        assert subprocess.run([CHECK, str(cert)], capture_output=True).returncode == 0
+        done += 1
+
+
+def test_numpy_and_exact_inputs_agree():
+    P1 = np.array(box(0, 0, 0, 2, 2, 2), dtype=np.int64)
+    a = scalecert.Scene(P1, np.array(box(0, 0, 3, 2, 2, 5), dtype=np.float64), (0.5, 2.5), (0.5, 2.5))
+    b = scalecert.Scene([[F(x) for x in v] for v in box(0, 0, 0, 2, 2, 2)],
+                        [[str(x) for x in v] for v in box(0, 0, 3, 2, 2, 5)], ("1/2", "5/2"), ("0.5", "2.5"))
+    assert a.json() == b.json()
+    assert a.partition_json() == b.partition_json()
+    c = scalecert.Scene([[0.1, 0, 0]] + box(0, 0, 0, 2, 2, 2)[1:], box(0, 0, 3, 2, 2, 5), (1, 2), (1, 2))
+    assert json.loads(c.json())["P1"]["vertices"][0][0] == str(F(0.1))  # the double's exact value
+
+
+def test_golden_and_claims(tmp_path):
+    scalecert.golden("random", 2, 5, "1/1024", str(tmp_path / "g"))
+    names = sorted(p.name for p in (tmp_path / "g").iterdir())
+    assert names == ["random-0.golden.csv", "random-0.golden.json", "random-0.scene.json",
+                     "random-1.golden.csv", "random-1.golden.json", "random-1.scene.json"]
+    out = subprocess.run([CLI, "golden", "--family", "random", "--count", "2", "--seed", "5", "--eps", "1/1024",
+                          "--dir", str(tmp_path / "h")], capture_output=True, check=True)
+    for n in names:
+        assert (tmp_path / "g" / n).read_bytes() == (tmp_path / "h" / n).read_bytes()
+    # Stacked cubes: (1, 1) separated, (3/2, 3/2) touching, growth 3/2; a false claim is caught.
+    r = stacked().certify_fp("1 1 separated\n1.5 1.5 touching\ngrowth 1.5\n2 2 separated\n")
+    assert r["wrong"] == 1
+
+
+def test_readme_example_runs(tmp_path):
+    text = (SRC / "README.md").read_text()
+    m = re.search(r"<!-- python-example -->\s*```python\n(.*?)```", text, re.S)
+    assert m, "README has no python example"
+    code = m.group(1)
+    assert len(code.strip().splitlines()) <= 12
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=SRC)
+    assert out.returncode == 0, out.stderr
+    assert "touching" in out.stdout.lower()
