@@ -1,0 +1,36 @@
+// scalecert certify-fp: a floating-point program's claims marked right or wrong, exactly. Exit 1
+// when any claim is wrong, so that it can gate another project's CI.
+#include "common.hpp"
+
+#include "scalecert/audit.hpp"
+
+namespace scalecert::cli {
+
+using namespace internal;
+
+Command add_certify_fp(CLI::App& app) {
+    struct Args {
+        SceneArgs scene;
+        std::string out, claims;
+        bool json = false;
+    };
+    auto a = std::make_shared<Args>();
+    CLI::App* sub = app.add_subcommand("certify-fp", "mark a floating-point program's claims right or wrong, exactly (exit 1 if any is wrong)");
+    a->scene.add(sub);
+    sub->add_option("CLAIMS", a->claims, "claims: 'RHO1 RHO2 VERDICT', 'curve RHO1 RHO2' or 'growth RHO' per line")->required();
+    sub->add_flag("--json", a->json, "the report as JSON");
+    add_out(sub, a->out);
+    example(sub, "Exit status: 0 all claims right, 1 some claim wrong, 2 bad input. Example:\n"
+                 "  printf '1 1 separated\\ngrowth 1.5\\n' > claims.txt\n"
+                 "  scalecert certify-fp certificates/scenes/stacked_cubes.json claims.txt");
+    return {sub, [a] {
+                StageClock clock;
+                const Analysed an = analyse(a->scene, clock);
+                const std::string claims = read_input(a->claims, "claims file", kMaxSceneBytes);
+                long wrong = 0;
+                emit(certify_fp(an.m, an.c, claims, a->claims, a->scene.opt.binary_doubles, a->json, &wrong), a->out);
+                return wrong > 0 ? 1 : 0;
+            }};
+}
+
+}  // namespace scalecert::cli

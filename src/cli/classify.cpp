@@ -1,0 +1,50 @@
+// scalecert classify: exact verdicts for many pairs of doubles, filtered, on every core.
+#include "common.hpp"
+
+#include "scalecert/fast_query.hpp"
+
+#include <algorithm>
+#include <thread>
+
+namespace scalecert::cli {
+
+using namespace internal;
+
+Command add_classify(CLI::App& app) {
+    struct Args {
+        SceneArgs scene;
+        std::string out, pairs = "-";
+        unsigned threads = std::max(1u, std::thread::hardware_concurrency());
+    };
+    auto a = std::make_shared<Args>();
+    CLI::App* sub = app.add_subcommand("classify", "exact verdicts for many pairs: lines 'rho1 rho2' (doubles, classified at their exact values)");
+    a->scene.add(sub);
+    sub->add_option("PAIRS", a->pairs, "file of pairs, one 'rho1 rho2' per line ('-': standard input)");
+    sub->add_option("--threads", a->threads, "threads (default: all cores)")->check(CLI::Range(1u, 256u));
+    add_out(sub, a->out);
+    example(sub, "Writes one verdict per line. Example:\n"
+                 "  printf '1 1\\n1.5 1.5\\n2 2\\n' | scalecert classify certificates/scenes/stacked_cubes.json -");
+    return {sub, [a] {
+                StageClock clock;
+                const Analysed an = analyse(a->scene, clock);
+                std::vector<double> r1, r2;
+                const std::string pairs = read_input(a->pairs, "pairs file", kMaxPairsBytes);
+                clock.lap("read pairs");
+                try {
+                    parse_pairs(pairs, r1, r2, a->threads);
+                } catch (const InputError& e) {
+                    throw InputError(a->pairs + ": " + e.what());
+                }
+                clock.lap("parse pairs");
+                std::vector<Verdict> out;
+                FastCurve fc(an.m, an.c);
+                const StageCounts sc = classify_batch(fc, r1, r2, out, a->threads);
+                clock.lap("classify");
+                emit(verdict_lines(out), a->out);
+                clock.lap("output");
+                if (clock.on) std::fprintf(stderr, "scalecert: stages: %lu filtered, %lu exact\n", (unsigned long)sc.filtered, (unsigned long)sc.exact);
+                return 0;
+            }};
+}
+
+}  // namespace scalecert::cli

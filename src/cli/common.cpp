@@ -1,0 +1,120 @@
+#include "common.hpp"
+
+#include "scalecert/mesh.hpp"
+
+#include <iostream>
+
+namespace scalecert::cli {
+
+using namespace internal;
+
+void SceneArgs::add(CLI::App* sub) {
+    sub->add_option("SCENE", path, "scene file (JSON); or --p1, --p2, --i1, --i2");
+    sub->add_option("--p1", mesh[0], "P1 from a mesh file (.off .obj .ply .stl), with --p2, --i1, --i2 instead of SCENE");
+    sub->add_option("--p2", mesh[1], "P2 from a mesh file");
+    sub->add_option("--i1", interval[0], "I1 as LO,HI (exact: 1/2,3)");
+    sub->add_option("--i2", interval[1], "I2 as LO,HI");
+    sub->add_option("--seed1", seed[0], "P1's seed as X,Y,Z (default: the mean of its vertices)");
+    sub->add_option("--seed2", seed[1], "P2's seed as X,Y,Z");
+    sub->add_flag("--binary-doubles", opt.binary_doubles, "read text numbers as the IEEE doubles strtod gives");
+}
+
+internal::Scene SceneArgs::load() const {
+    const bool any_mesh_option = !mesh[0].empty() || !mesh[1].empty() || !interval[0].empty() || !interval[1].empty() ||
+                                 !seed[0].empty() || !seed[1].empty();
+    if (!path.empty() && any_mesh_option) throw InputError("give SCENE or --p1, --p2, --i1, --i2, not both");
+    if (!path.empty()) return load_scene(path, opt);
+    if (mesh[0].empty() || mesh[1].empty() || interval[0].empty() || interval[1].empty())
+        throw InputError("give SCENE, or --p1 and --p2 (mesh files) with --i1 and --i2 (LO,HI)");
+    internal::Scene sc;
+    for (int i = 0; i < 2; ++i) {
+        const std::string n = std::to_string(i + 1);
+        sc.P[i].points = read_mesh(mesh[i], opt);
+        const std::vector<Q> r = number_list(interval[i], 2, "--i" + n, opt);
+        sc.lo[i] = r[0];
+        sc.hi[i] = r[1];
+        if (!seed[i].empty()) {
+            const std::vector<Q> s = number_list(seed[i], 3, "--seed" + n, opt);
+            sc.P[i].seed = {s[0], s[1], s[2]};
+            sc.P[i].seed_given = true;
+        }
+    }
+    finish_scene(sc, "command line");
+    return sc;
+}
+
+std::string SceneArgs::name() const { return path.empty() ? "--p1 " + mesh[0] + " --p2 " + mesh[1] : path; }
+
+void add_out(CLI::App* sub, std::string& out) {
+    sub->add_option("--out", out, "write the output to FILE (atomically) instead of standard output")->type_name("FILE");
+}
+
+void emit(const std::string& text, const std::string& out) {
+    if (!out.empty()) return write_file_atomically(out, text);
+    std::cout << text;
+    std::cout.flush();
+    if (!std::cout) throw InputError("cannot write to standard output");
+}
+
+Model model_of(const internal::Scene& scene, const std::string& name) {
+    try {
+        return build_model(scene);
+    } catch (const InputError& e) {
+        throw InputError(name + ": " + e.what());
+    }
+}
+
+Q read_rho(const std::string& text, const char* name, const ReadOptions& opt) {
+    Q r;
+    try {
+        r = parse_number(text, opt.binary_doubles);
+    } catch (const InputError& e) {
+        throw InputError(std::string(name) + ": " + e.what());
+    }
+    if (sgn(r) <= 0) throw InputError(std::string(name) + ": a scaling factor must be > 0");
+    return r;
+}
+
+std::vector<Q> number_list(const std::string& text, size_t n, const std::string& option, const ReadOptions& opt) {
+    std::vector<Q> out;
+    size_t b = 0;
+    for (;;) {
+        const size_t e = text.find(',', b);
+        try {
+            out.push_back(parse_number(text.substr(b, e == std::string::npos ? std::string::npos : e - b), opt.binary_doubles));
+        } catch (const InputError& err) {
+            throw InputError(option + ": " + err.what());
+        }
+        if (e == std::string::npos) break;
+        b = e + 1;
+    }
+    if (out.size() != n) throw InputError(option + ": expected " + std::to_string(n) + " numbers separated by commas, got " + quoted(text));
+    return out;
+}
+
+Analysed analyse(const SceneArgs& args, StageClock& clock) {
+    const internal::Scene scene = args.load();
+    clock.lap("read scene");
+    Analysed a{model_of(scene, args.name()), {}};
+    clock.restart();
+    a.c = build_curve(a.m);
+    clock.lap("envelope and curve");
+    return a;
+}
+
+internal::Segment parse_segment(const std::string& spec, const Model& m) {
+    if (spec == "seeds" || spec == "ellipsoids") return segment_by_kind(m, spec);
+    auto colon = spec.find(':');
+    if (colon == std::string::npos) throw InputError("--segment: expected 'seeds' or x1,y1,z1:x2,y2,z2");
+    Vec3q v[2];
+    const std::string parts[2] = {spec.substr(0, colon), spec.substr(colon + 1)};
+    for (int i = 0; i < 2; ++i) {
+        const std::vector<Q> c = number_list(parts[i], 3, "--segment", ReadOptions{});  // exact, as written
+        v[i] = {c[0], c[1], c[2]};
+    }
+    return make_segment(m, v[0], v[1]);
+}
+
+void example(CLI::App* sub, const std::string& text) { sub->footer("\n" + text); }
+
+}  // namespace scalecert::cli

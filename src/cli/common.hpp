@@ -1,0 +1,64 @@
+// The scalecert command: what every subcommand shares. Each subcommand lives in its own file,
+// registers its options and returns the function that runs it.
+#pragma once
+#include "scalecert/certificate.hpp"
+#include "scalecert/timing.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <functional>
+#include <memory>
+#include <string>
+
+namespace scalecert::cli {
+
+using internal::Model;
+using internal::Q;
+using internal::ReadOptions;
+
+// The scene, from a scene file or from mesh files and ranges (--p1 --p2 --i1 --i2 [--seed1 --seed2]).
+struct SceneArgs {
+    std::string path, mesh[2], interval[2], seed[2];
+    ReadOptions opt;
+    void add(CLI::App* sub);        // the options, with --binary-doubles
+    internal::Scene load() const;   // refuses both forms at once, and neither
+    std::string name() const;       // the scene file, or "--p1 A --p2 B": prefixes geometric errors
+};
+
+// --out FILE means the same for every command: its one output document goes to FILE, written
+// atomically (a temporary file beside it, synced, renamed), instead of standard output.
+void add_out(CLI::App* sub, std::string& out);
+void emit(const std::string& text, const std::string& out);
+
+// The model of a scene; geometric errors (flat points, a seed outside) name it.
+Model model_of(const internal::Scene& scene, const std::string& name);
+Q read_rho(const std::string& text, const char* name, const ReadOptions& opt);
+// "A,B" or "A,B,C": numbers separated by commas, read as the scene reader reads them.
+std::vector<Q> number_list(const std::string& text, size_t n, const std::string& option, const ReadOptions& opt);
+// Sets the --help footer: what the command writes, and an example.
+void example(CLI::App* sub, const std::string& text);
+
+// The scene read, modelled and its curve built, with SCALECERT_TIMING laps.
+struct Analysed {
+    Model m;
+    internal::Curve c;
+};
+Analysed analyse(const SceneArgs& scene, internal::StageClock& clock);
+// A segment for --segment: seeds | ellipsoids | x1,y1,z1:x2,y2,z2.
+internal::Segment parse_segment(const std::string& spec, const Model& m);
+
+// A subcommand: its CLI11 app and what runs it (returns the exit status).
+struct Command {
+    CLI::App* app;
+    std::function<int()> run;
+};
+Command add_curve(CLI::App& app);
+Command add_query(CLI::App& app);
+Command add_partition(CLI::App& app);
+Command add_classify(CLI::App& app);
+Command add_grid(CLI::App& app);
+Command add_certify_fp(CLI::App& app);
+Command add_golden(CLI::App& app);
+Command add_audit(CLI::App& app);
+
+}  // namespace scalecert::cli

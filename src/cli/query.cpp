@@ -1,0 +1,68 @@
+// scalecert query: separated / touching / overlapping at one scaling pair, with its certificate.
+#include "common.hpp"
+
+namespace scalecert::cli {
+
+using namespace internal;
+
+Command add_query(CLI::App& app) {
+    struct Args {
+        SceneArgs scene;
+        std::string out, rho1, rho2, segment;
+        bool json = false, in_t = false;
+    };
+    auto a = std::make_shared<Args>();
+    CLI::App* sub = app.add_subcommand("query", "separated / touching / overlapping at (RHO1, RHO2)");
+    a->scene.add(sub);
+    sub->add_option("RHO1", a->rho1, "scaling of P1 (exact: 3/2, 1.5, 15e-1)")->required();
+    sub->add_option("RHO2", a->rho2, "scaling of P2")->required();
+    sub->add_flag("--json", a->json, "the verdict with its certificate, as JSON");
+    sub->add_option("--segment", a->segment, "report t1, t2 and the gap along a segment: seeds | ellipsoids | x1,y1,z1:x2,y2,z2");
+    sub->add_flag("--in-t", a->in_t, "RHO1 RHO2 are t1 t2 along the segment (default: seeds)");
+    add_out(sub, a->out);
+    example(sub, "Examples:\n  scalecert query certificates/scenes/stacked_cubes.json 3/2 3/2        # touching\n"
+                 "  scalecert query certificates/scenes/stacked_cubes.json 1 1.9 --json  # with its certificate");
+    return {sub, [a] {
+                StageClock clock;
+                const Analysed an = analyse(a->scene, clock);
+                const Model& m = an.m;
+                std::string segment = a->segment;
+                if (a->in_t && segment.empty()) segment = "seeds";
+                std::optional<Segment> seg;
+                if (!segment.empty()) seg = parse_segment(segment, m);
+                Q r1, r2;
+                if (a->in_t) {
+                    const Q t1 = read_rho(a->rho1, "T1", a->scene.opt), t2 = read_rho(a->rho2, "T2", a->scene.opt);
+                    auto x = rho_from_t(*seg, 0, t1), y = rho_from_t(*seg, 1, t2);
+                    if (!x) throw InputError("T1: outside t1(I1)");
+                    if (!y) throw InputError("T2: outside t2(I2)");
+                    r1 = *x;
+                    r2 = *y;
+                } else {
+                    r1 = read_rho(a->rho1, "RHO1", a->scene.opt);
+                    r2 = read_rho(a->rho2, "RHO2", a->scene.opt);
+                }
+                const internal::QueryResult r = internal::query(m, an.c, r1, r2, a->json);
+                std::string text;
+                if (a->json) {
+                    Json j = query_json(m, r);
+                    if (seg) add_query_segment_json(j, *seg, r1, r2);
+                    text = dump(j);
+                } else {
+                    text = std::string(verdict_name(r.verdict)) + "\n";
+                    if (a->in_t) text += "rho1 " + to_exact_string(r1) + "\nrho2 " + to_exact_string(r2) + "\n";
+                    if (seg) {
+                        if (!seg->note.empty()) text += "note " + seg->note + "\n";
+                        const Q g = directional_gap(*seg, r1, r2);
+                        text += "t1 " + to_exact_string(eval(seg->t[0], r1)) + "\nt2 " + to_exact_string(eval(seg->t[1], r2)) +
+                                "\ngap_fraction " + to_exact_string(g) + "\ngap_distance ~" +
+                                std::to_string(scaled_length(seg->v1, seg->v2, g)) + "\n";
+                    }
+                }
+                emit(text, a->out);
+                clock.lap("query and output");
+                return 0;
+            }};
+}
+
+}  // namespace scalecert::cli
