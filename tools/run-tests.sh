@@ -11,4 +11,5 @@ tools/build.sh
 tools/sanitize.sh
 tools/fuzz.sh "${SCALECERT_FUZZ_SECONDS:-60}"
 n=$(cd build && ctest -N | sed -n 's/^Total Tests: *//p')
-echo "ci: $((2 * n + 6)) passed, 0 failed ($n tests, again under ASan+UBSan, and 6 fuzz targets)"
+m=$(cd build-san && ctest -N | sed -n 's/^Total Tests: *//p')
+echo "ci: $((n + m + 6)) passed, 0 failed ($n tests, $m of them again under ASan+UBSan, and 6 fuzz targets)"
