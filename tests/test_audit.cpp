@@ -8,6 +8,8 @@
 #include "support.hpp"
 
 #include <filesystem>
+#include <map>
+#include <set>
 #include <fstream>
 #include <sstream>
 
@@ -116,4 +118,42 @@ BOOST_AUTO_TEST_CASE(baselines_agree_away_from_the_curve) {
             ++checked;
         }
     BOOST_TEST(checked > 1000);
+}
+
+// ---- campaigns (issue 12): hashes, shard plans, and per-scene seeds -----------------------------
+#include "scalecert/campaign.hpp"
+
+BOOST_AUTO_TEST_CASE(sha256_known_answers) {
+    // FIPS 180-4's examples: one block, the empty message, and a message that spills into a second block.
+    BOOST_TEST(sha256_hex("abc") == "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad");
+    BOOST_TEST(sha256_hex("") == "e3b0c44298fc1c149afbf4c8996fb92427ae41e4649b934ca495991b7852b855");
+    BOOST_TEST(sha256_hex("abcdbcdecdefdefgefghfghighijhijkijkljklmklmnlmnomnopnopq") ==
+               "248d6a61d20638b8e5c026930c3e6039a33ce45964ff2167f6ecedd419db06c1");
+    BOOST_TEST(sha256_hex(std::string(1000000, 'a')) == "cdc76e5c9914fb9281a1c7e284d73e67f1809a48a497200e046d39ccc7112cd0");
+}
+
+BOOST_AUTO_TEST_CASE(shard_plans_cover_every_scene_once) {
+    CampaignArgs a;
+    a.scenes = {"x.json", "y.json"};
+    a.family = "random";
+    a.sweep_from = 3;
+    a.sweep_to = 5;
+    a.count = 10;
+    a.shard_size = 4;
+    const std::vector<Shard> p = plan(a);
+    BOOST_TEST(p.size() == 2u + 3u * 3u);  // two files, then 3 values of k × ceil(10/4) ranges
+    std::map<std::pair<int, int>, int> seen;
+    for (size_t i = 0; i < p.size(); ++i) {
+        BOOST_TEST(p[i].index == static_cast<int>(i));
+        if (p[i].scene_file >= 0) continue;
+        for (int s = p[i].first; s < p[i].last; ++s) ++seen[{p[i].k, s}];
+    }
+    BOOST_TEST(seen.size() == 30u);
+    for (const auto& [key, n] : seen) BOOST_TEST(n == 1);
+    // A scene's seed depends on the run's seed, k and its index only (not on the shard size).
+    std::set<std::uint64_t> seeds;
+    for (int k = 0; k < 3; ++k)
+        for (int i = 0; i < 100; ++i) seeds.insert(scene_seed(7, k, i));
+    BOOST_TEST(seeds.size() == 300u);
+    BOOST_TEST(scene_seed(7, 1, 2) != scene_seed(8, 1, 2));
 }

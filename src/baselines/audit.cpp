@@ -104,20 +104,20 @@ std::string certify_fp(const Model& m, const Curve& c, const std::string& claims
 namespace {
 }  // namespace
 
-void write_golden(const std::string& family, int count, std::uint64_t seed, const Q& eps, const std::string& dir) {
-    family_description(family);  // validates the name
-    Rng g(seed);
-    for (int i = 0; i < count; ++i) {
+std::vector<std::pair<std::string, std::string>> golden_scene(const std::string& family, int i, std::uint64_t scene_seed,
+                                                              std::uint64_t run_seed, const Q& eps) {
+    Rng g(scene_seed);
+    {
         Scene s = make_family_scene(family, eps, g);
         Model m = build_model(s);
         Curve c = build_curve(m);
-        std::string stem = dir + "/" + family + "-" + std::to_string(i);
-        write_file_atomically(stem + ".scene.json", dump(scene_json(s)));
+        const std::string stem = family + "-" + std::to_string(i);
+        std::vector<std::pair<std::string, std::string>> files{{stem + ".scene.json", dump(scene_json(s))}};
         Json j = curve_json(m, c);
         j["family"] = family;
         j["eps"] = to_exact_string(eps);
         j["index"] = i;
-        j["seed"] = std::to_string(seed);
+        j["seed"] = std::to_string(run_seed);
         Json qs = Json::array();
         std::string csv = "rho1,rho2,where,verdict_at_doubles\n";
         std::vector<Q> xs;
@@ -151,8 +151,9 @@ void write_golden(const std::string& family, int count, std::uint64_t seed, cons
             }
         }
         j["queries"] = qs;
-        write_file_atomically(stem + ".golden.json", dump(j));
-        write_file_atomically(stem + ".golden.csv", csv);
+        files.push_back({stem + ".golden.json", dump(j)});
+        files.push_back({stem + ".golden.csv", csv});
+        return files;
     }
 }
 
@@ -303,7 +304,7 @@ std::vector<AuditRow> audit_scene(const std::string& name, const Scene& s, const
     return rows;
 }
 
-std::string audit_csv(const std::vector<AuditRow>& rows) {
+std::string audit_csv(const std::vector<AuditRow>& rows, bool timing) {
     std::string s = "scene,eps,method,queries,false_separated,false_overlapping,seconds_per_query,grid_n,seconds_per_curve,growth_error,exact_junctions,junctions_found,junctions_missed,junctions_merged,max_junction_error\n";
     char b[512];
     for (const AuditRow& r : rows) {
@@ -311,18 +312,34 @@ std::string audit_csv(const std::vector<AuditRow>& rows) {
                       r.method.c_str(), r.queries, r.false_separated, r.false_overlapping, r.seconds_per_query, r.grid_n,
                       r.seconds_per_curve, r.growth_error, r.exact_junctions, r.junctions_found, r.junctions_missed,
                       r.junctions_merged, r.max_junction_error);
-        s += b;
+        if (!timing) {  // the columns seconds_per_query (7th) and seconds_per_curve (9th) left empty
+            std::string line = b;
+            std::vector<std::string> cols;
+            for (size_t p = 0;;) {
+                const size_t q = line.find_first_of(",\n", p);
+                cols.push_back(line.substr(p, q - p));
+                if (line[q] == '\n') break;
+                p = q + 1;
+            }
+            cols[6].clear();
+            cols[8].clear();
+            line.clear();
+            for (size_t k = 0; k < cols.size(); ++k) line += cols[k] + (k + 1 < cols.size() ? "," : "\n");
+            s += line;
+        } else {
+            s += b;
+        }
     }
     return s;
 }
 
-Json audit_json(const std::vector<AuditRow>& rows) {
+Json audit_json(const std::vector<AuditRow>& rows, bool timing) {
     Json a = Json::array();
     for (const AuditRow& r : rows) {
         Json o{{"scene", r.scene}, {"eps", to_exact_string(r.eps)}, {"method", r.method}};
         if (r.has_curve) {
             o["grid_n"] = r.grid_n;
-            o["seconds_per_curve"] = r.seconds_per_curve;
+            if (timing) o["seconds_per_curve"] = r.seconds_per_curve;
             o["growth_error"] = r.growth_error;
             o["exact_junctions"] = r.exact_junctions;
             o["junctions_found"] = r.junctions_found;
@@ -333,7 +350,7 @@ Json audit_json(const std::vector<AuditRow>& rows) {
             o["queries"] = r.queries;
             o["false_separated"] = r.false_separated;
             o["false_overlapping"] = r.false_overlapping;
-            o["seconds_per_query"] = r.seconds_per_query;
+            if (timing) o["seconds_per_query"] = r.seconds_per_query;
         }
         a.push_back(o);
     }

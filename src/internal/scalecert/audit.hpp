@@ -15,8 +15,13 @@ namespace scalecert::internal {
 std::string certify_fp(const Model& m, const Curve& c, const std::string& claims, const std::string& name,
                        bool binary_doubles, bool json, long* wrong);
 
-// Writes COUNT scenes of a family with their exact answers into DIR: NAME-i.scene.json,
-// NAME-i.golden.json and NAME-i.golden.csv. Byte-identical for the same arguments.
+// Scene i of a family with its exact answers, drawn with scene_seed (campaign.hpp derives it from
+// the run's seed): the files NAME-i.scene.json, NAME-i.golden.json and NAME-i.golden.csv, by name
+// and text. The golden JSON records the run's seed and i.
+std::vector<std::pair<std::string, std::string>> golden_scene(const std::string& family, int i, std::uint64_t scene_seed,
+                                                              std::uint64_t run_seed, const Q& eps);
+// Writes COUNT scenes of a family with their exact answers into DIR (campaign.cpp: the same
+// shards as scalecert-mpi). Byte-identical for the same arguments.
 void write_golden(const std::string& family, int count, std::uint64_t seed, const Q& eps, const std::string& dir);
 
 struct AuditRow {
@@ -35,7 +40,9 @@ struct AuditRow {
 // below the curve; and the grid search at each resolution in grid_ns.
 std::vector<AuditRow> audit_scene(const std::string& name, const Scene& s, const Q& eps,
                                   const std::vector<std::string>& methods, const std::vector<int>& grid_ns);
-std::string audit_csv(const std::vector<AuditRow>& rows);
-Json audit_json(const std::vector<AuditRow>& rows);
+// Without timing, the timing columns are left empty (CSV) and out (JSON): the rest is the same
+// bytes for the same arguments, on any number of processes.
+std::string audit_csv(const std::vector<AuditRow>& rows, bool timing = true);
+Json audit_json(const std::vector<AuditRow>& rows, bool timing = true);
 
 }  // namespace scalecert::internal
