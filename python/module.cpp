@@ -207,15 +207,16 @@ PYBIND11_MODULE(scalecert, m) {
         .def("partition_json", [](const PyScene& s) { return s.a().partition_json(); },
              "the certificate as text, byte-identical to scalecert partition")
 #ifdef SCALECERT_WITH_TOOLS
-        .def("certify_fp", [](const PyScene& s, const std::string& claims, bool binary_doubles) {
+        .def("certify_fp", [](const PyScene& s, const std::string& claims, bool binary_doubles, const py::handle& tolerance) {
                  const auto& model = *s.scene.internal_model();
                  const scalecert::internal::Curve c = scalecert::internal::build_curve(model);
                  long wrong = 0;
-                 const std::string report = scalecert::internal::certify_fp(model, c, claims, "claims", binary_doubles, true, &wrong);
+                 const scalecert::internal::ClaimOptions opt{binary_doubles, rational(tolerance, "tolerance")};
+                 const std::string report = scalecert::internal::certify_fp(model, c, claims, "claims", opt, true, &wrong);
                  return json_loads(report);
-             }, py::arg("claims"), py::arg("binary_doubles") = false,
-             "marks claims ('RHO1 RHO2 VERDICT', 'curve RHO1 RHO2', 'growth RHO' per line) right or wrong; "
-             "the report of scalecert certify-fp --json, as a dict")
+             }, py::arg("claims"), py::arg("binary_doubles") = false, py::arg("tolerance") = 0,
+             "marks claims (JSON scalecert-claims-1 text, or 'RHO1 RHO2 VERDICT' / 'curve RHO1 RHO2' / 'growth RHO' "
+             "lines) right or wrong; the report of scalecert certify-fp --json, as a dict")
 #endif
         ;
 #ifdef SCALECERT_WITH_TOOLS

@@ -3,6 +3,7 @@
 
 #include "scalecert/certificate.hpp"
 #include "scalecert/fast_query.hpp"
+#include "scalecert/measures.hpp"
 #include "scalecert/mesh.hpp"
 
 #include <cmath>
@@ -181,19 +182,10 @@ PlaneCheck Analysis::check_plane(const Rational& rho1, const Rational& rho2, con
     check_rho(rho2, "rho2");
     const Point n = canonical(normal);
     if (sgn(n[0]) == 0 && sgn(n[1]) == 0 && sgn(n[2]) == 0) throw InputError("check_plane: the normal is zero");
-    const Model& m = *impl_->model;
-    // n = k·p with p primitive and k > 0: max over P1 of n·x is k·support(p), min over P2 is
-    // −k·support(−p); scaling about the seed maps a value t to n·s + ρ(t − n·s).
-    const Vec3z p = primitive(n);
-    Rational k;
-    for (int i = 0; i < 3; ++i)
-        if (sgn(p[i]) != 0) { k = n[i] / Rational(p[i]); break; }
-    const Rational ns1 = dot(n, m.s[0]), ns2 = dot(n, m.s[1]);
-    const Rational max1 = k * m.P[0].support(p);
-    const Rational min2 = -k * m.P[1].support(neg(p));
+    const auto [c1, c2] = internal::plane_extents(*impl_->model, n, rho1, rho2);
     PlaneCheck r;
-    r.c1 = ns1 + rho1 * (max1 - ns1);
-    r.c2 = ns2 + rho2 * (min2 - ns2);
+    r.c1 = c1;
+    r.c2 = c2;
     r.separates = r.c1 < r.c2 && (!offset || (r.c1 < *offset && *offset < r.c2));
     return r;
 }

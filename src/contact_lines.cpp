@@ -132,18 +132,18 @@ std::vector<EdgeArc<V>> edge_arcs(const Polyhedron& P, bool negate) {
 // the proper crossings of an edge's Gauss arc of P1 with one of −P2 (arcs that only touch give a
 // face normal already listed; parallel edges give none).
 template <class V>
-std::vector<V> facet_normals(Model& m) {
+std::vector<V> facet_normals(const Model& m, LineStats& st) {
     const V* tag = nullptr;
     std::vector<V> normals;
     for (size_t f = 0; f < m.P[0].faces.size(); ++f) normals.push_back(face_normal(m.P[0], static_cast<int>(f), tag));
     for (size_t f = 0; f < m.P[1].faces.size(); ++f) normals.push_back(vneg(face_normal(m.P[1], static_cast<int>(f), tag)));
-    m.stats.face_normals = normals.size();
+    st.face_normals = normals.size();
     const auto A = edge_arcs<V>(m.P[0], false), B = edge_arcs<V>(m.P[1], true);
     std::vector<Arc> arcs_a(A.size()), arcs_b(B.size());
     for (size_t i = 0; i < A.size(); ++i) arcs_a[i] = {A[i].fd, A[i].td};
     for (size_t j = 0; j < B.size(); ++j) arcs_b[j] = {B[j].fd, B[j].td};
     for (const auto& [i, j] : arc_candidates(arcs_a, arcs_b)) {
-        ++m.stats.edge_pairs_tested;
+        ++st.edge_pairs_tested;
         const EdgeArc<V>& a = A[i];
         const EdgeArc<V>& b = B[j];
         // x = ±(p_a × p_b), the direction where the two great circles meet. Exactly for machine
@@ -170,9 +170,9 @@ std::vector<V> facet_normals(Model& m) {
             auto side = [&](const D3& ud, const D3& pd, bool x_first, const V& u, const V& p) {
                 D3 c = x_first ? crossd(xs, ud) : crossd(ud, xs);
                 double v = dotd(c, pd), bound = 1e-10 * normd(ud) * normd(xs) * normd(pd);
-                if (v > bound) return ++m.stats.arc_signs_filtered, 1;
-                if (v < -bound) return ++m.stats.arc_signs_filtered, -1;
-                ++m.stats.arc_signs_exact;
+                if (v > bound) return ++st.arc_signs_filtered, 1;
+                if (v < -bound) return ++st.arc_signs_filtered, -1;
+                ++st.arc_signs_exact;
                 if constexpr (std::is_same_v<V, Vec3s>) {
                     // u × x exactly in 128 bits (|u|, |x| < 2^62), then its dot with p, checked
                     const Vec3s xv = sign > 0 ? exact_x() : neg_s(exact_x());
@@ -189,14 +189,14 @@ std::vector<V> facet_normals(Model& m) {
             if (side(a.fd, a.pd, false, a.from, a.p) > 0 && side(a.td, a.pd, true, a.to, a.p) > 0 &&
                 side(b.fd, b.pd, false, b.from, b.p) > 0 && side(b.td, b.pd, true, b.to, b.p) > 0) {
                 normals.push_back(primitive(sign > 0 ? exact_x() : vneg(exact_x())));
-                ++m.stats.arc_crossings;
+                ++st.arc_crossings;
                 break;
             }
         }
     }
     std::sort(normals.begin(), normals.end());
     normals.erase(std::unique(normals.begin(), normals.end()), normals.end());
-    m.stats.distinct_normals = normals.size();
+    st.distinct_normals = normals.size();
     return normals;
 }
 
@@ -268,6 +268,16 @@ void add_lines(Model& m, const std::vector<V>& normals) {
 
 }  // namespace
 
+std::vector<Vec3z> all_facet_normals(const Model& m) {
+    LineStats scratch;
+    if (m.P[0].small() && m.P[1].small()) {
+        std::vector<Vec3z> out;
+        for (const Vec3s& n : facet_normals<Vec3s>(m, scratch)) out.push_back(to_z(n));
+        return out;
+    }
+    return facet_normals<Vec3z>(m, scratch);
+}
+
 Model build_model(const Scene& scene) {
     check_scene(scene, "scene");  // a scene built in code gets the reader's checks too
     StageClock clock;
@@ -297,11 +307,11 @@ Model build_model(const Scene& scene) {
     // Machine integers when both polyhedra are small (exact within small_int.hpp's bounds), GMP
     // otherwise: the same normals, lines and statistics either way.
     if (m.P[0].small() && m.P[1].small()) {
-        auto ns = facet_normals<Vec3s>(m);
+        auto ns = facet_normals<Vec3s>(m, m.stats);
         clock.lap("gauss map overlay");
         add_lines(m, ns);
     } else {
-        auto ns = facet_normals<Vec3z>(m);
+        auto ns = facet_normals<Vec3z>(m, m.stats);
         clock.lap("gauss map overlay");
         add_lines(m, ns);
     }

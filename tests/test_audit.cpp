@@ -122,6 +122,7 @@ BOOST_AUTO_TEST_CASE(baselines_agree_away_from_the_curve) {
 
 // ---- campaigns (issue 12): hashes, shard plans, and per-scene seeds -----------------------------
 #include "scalecert/campaign.hpp"
+#include "scalecert/measures.hpp"
 
 BOOST_AUTO_TEST_CASE(sha256_known_answers) {
     // FIPS 180-4's examples: one block, the empty message, and a message that spills into a second block.
@@ -156,4 +157,178 @@ BOOST_AUTO_TEST_CASE(shard_plans_cover_every_scene_once) {
         for (int i = 0; i < 100; ++i) seeds.insert(scene_seed(7, k, i));
     BOOST_TEST(seeds.size() == 300u);
     BOOST_TEST(scene_seed(7, 1, 2) != scene_seed(8, 1, 2));
+}
+
+// ---- JSON claims (issue 11): every kind, against values worked out by hand ----------------------
+namespace {
+
+struct Claims {
+    Model m;
+    Curve c;
+    explicit Claims(const Scene& s) : m(build_model(s)), c(build_curve(m)) {}
+    explicit Claims(const std::string& bundled)
+        : Claims(load_scene(std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/" + bundled + ".json")) {}
+    // The report of one claim (JSON), and whether it was right.
+    nlohmann::json one(const std::string& claim, const std::string& tolerance = "0", bool binary_doubles = false) {
+        long wrong = -1;
+        const std::string r = certify_fp(m, c, "{\"format\": \"scalecert-claims-1\", \"claims\": [" + claim + "]}", "c.json",
+                                         ClaimOptions{binary_doubles, parse_exact(tolerance)}, true, &wrong);
+        auto j = nlohmann::json::parse(r)["claims"][0];
+        BOOST_TEST(wrong == (j["right"].get<bool>() ? 0 : 1));
+        return j;
+    }
+    bool right(const std::string& claim, const std::string& tolerance = "0", bool binary_doubles = false) {
+        return one(claim, tolerance, binary_doubles)["right"].get<bool>();
+    }
+};
+
+std::vector<Vec3q> cube(long x0, long y0, long z0, long side) {
+    std::vector<Vec3q> v;
+    for (long x : {x0, x0 + side})
+        for (long y : {y0, y0 + side})
+            for (long z : {z0, z0 + side}) v.push_back({Q(x), Q(y), Q(z)});
+    return v;
+}
+
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(claimed_planes_must_separate_exactly) {
+    // Stacked cubes at (1, 1): P1 = [0,2]^3 reaches z = 2, P2 = [0,2]^2 x [3,5] starts at z = 3.
+    Claims k("stacked_cubes");
+    BOOST_TEST(k.right(R"({"kind": "separating_plane", "rho1": 1, "rho2": 1, "normal": [0, 0, 1], "offset": 2.5})"));
+    // The plane z = 2 − 10^-17 leaves P1's top vertices on the wrong side by 10^-17.
+    auto j = k.one(R"({"kind": "separating_plane", "rho1": 1, "rho2": 1, "normal": [0, 0, 1], "offset": "1.99999999999999999"})");
+    BOOST_TEST(!j["right"].get<bool>());
+    BOOST_TEST(j["offset_minus_P1"] == "-1/100000000000000000");
+    // A correct plane with rounded coefficients (the doubles nearest 0.1, 1e-3 and 2.6): still
+    // strictly between P1 (max 0.1·2 + 0.002 + 2 ≈ 2.202) and P2 (min 3).
+    BOOST_TEST(k.right(R"({"kind": "separating_plane", "rho1": 1, "rho2": 1, "normal": [0.1, 0.001, 1], "offset": 2.6})", "0", true));
+    // At a touching pair no plane separates strictly, and the normal's direction matters.
+    BOOST_TEST(!k.right(R"({"kind": "separating_plane", "rho1": 1.5, "rho2": 1.5, "normal": [0, 0, 1]})"));
+    BOOST_TEST(!k.right(R"({"kind": "separating_plane", "rho1": 1, "rho2": 1, "normal": [0, 0, -1]})"));
+    // A witness point: (1, 1, 5/2) is in both at (3/2, 3/2); 2.5 + 10^-17 is above P1(3/2).
+    BOOST_TEST(k.right(R"({"kind": "witness_point", "rho1": 1.5, "rho2": 1.5, "point": [1, 1, 2.5]})"));
+    j = k.one(R"({"kind": "witness_point", "rho1": 1.5, "rho2": 1.5, "point": [1, 1, "2.50000000000000001"]})");
+    BOOST_TEST(!j["right"].get<bool>());
+    BOOST_TEST(!j["in_P1"].get<bool>());
+    BOOST_TEST(j["in_P2"].get<bool>());
+}
+
+BOOST_AUTO_TEST_CASE(distances_and_depths_by_hand) {
+    // Unit-side... side-2 cubes [0,2]^3 and [3,5] x [0,2] x [3,5], seeds at their centres: at (1, 1)
+    // they are 1 apart in x and 1 apart in z, and overlap in y: the closest features are two edges,
+    // the squared distance 1 + 1 = 2, attained from (2, y, 2) to (3, y, 3).
+    Scene s;
+    s.P[0].points = cube(0, 0, 0, 2);
+    s.P[1].points = cube(3, 0, 3, 2);
+    s.lo[0] = s.lo[1] = Q(1, 2);
+    s.hi[0] = s.hi[1] = Q(3);
+    finish_scene(s, "diagonal cubes");
+    Claims k(s);
+    const ExactDistance d = exact_distance(k.m, Q(1), Q(1));
+    BOOST_TEST(d.squared == Q(2));
+    BOOST_TEST(d.p1[0] == Q(2));
+    BOOST_TEST(d.p1[2] == Q(2));
+    BOOST_TEST(d.p2[0] == Q(3));
+    BOOST_TEST(d.p2[2] == Q(3));
+    // At (1, 1/2): P2(1/2) = [3.5, 4.5] x [0.5, 1.5] x [3.5, 4.5]: gaps 1.5 and 1.5, squared 9/2.
+    BOOST_TEST(exact_distance(k.m, Q(1), Q(1, 2)).squared == Q(9, 2));
+    // sqrt(2) as a double is not the distance; within 10^-15 it is.
+    auto j = k.one(R"({"kind": "distance", "rho1": 1, "rho2": 1, "value": 1.4142135623730951})", "0", true);
+    BOOST_TEST(!j["right"].get<bool>());
+    BOOST_TEST(j["exact_squared"] == "2");
+    const double err = j["abs_error_double"].get<double>();
+    BOOST_TEST((err > 0 && err < 2.3e-16));  // |fl(√2) − √2| < ulp(√2)/2 = 1.1e-16
+    BOOST_TEST(k.right(R"({"kind": "distance", "rho1": 1, "rho2": 1, "value": 1.4142135623730951})", "1e-15", true));
+    BOOST_TEST(k.right(R"({"kind": "distance", "rho1": 1, "rho2": 1, "value": 1.4142135623730951,
+                           "closest": [[2, 1, 2], [3, 1, 3]]})", "1e-15", true));
+    BOOST_TEST(!k.right(R"({"kind": "distance", "rho1": 1, "rho2": 1, "value": 1.4142135623730951,
+                            "closest": [[2, 1, 2], [3, 1, 4]]})", "1e-15", true));  // |(1,0,2)|² = 5
+    // Meeting bodies have distance 0: at (2, 2) P1(2) = [-1,3]^3 and P2(2) = [2,6] x [-1,3] x [2,6].
+    BOOST_TEST(exact_distance(k.m, Q(2), Q(2)).squared == Q(0));
+
+    // Penetration depth, stacked cubes at (2, 5/2): P1(2) = [-1,3]^3, P2(5/2) = [-1.5,3.5]^2 x
+    // [1.5, 6.5]. Separating along z needs 3 − 1.5 = 3/2; along x, 3 + 1.5 = 9/2; so the depth is
+    // 3/2 (squared 9/4) along (0,0,1), and 9/2 along (1,0,0).
+    Claims st("stacked_cubes");
+    const ExactDepth e = exact_penetration_depth(st.m, all_facet_normals(st.m), Q(2), Q(5, 2));
+    BOOST_TEST(e.squared == Q(9, 4));
+    BOOST_TEST((e.direction == Vec3z{Z(0), Z(0), Z(1)}));
+    BOOST_TEST(directional_depth_squared(st.m, {Q(1), Q(0), Q(0)}, Q(2), Q(5, 2)) == Q(81, 4));
+    BOOST_TEST(st.right(R"({"kind": "penetration_depth", "rho1": 2, "rho2": 2.5, "value": 1.5, "direction": [0, 0, 1]})"));
+    j = st.one(R"({"kind": "penetration_depth", "rho1": 2, "rho2": 2.5, "value": 1.5, "direction": [1, 0, 0]})");
+    BOOST_TEST(!j["right"].get<bool>());
+    BOOST_TEST(!j["direction_right"].get<bool>());
+    BOOST_TEST(!st.right(R"({"kind": "penetration_depth", "rho1": 2, "rho2": 2.5, "value": 1.4})"));
+    BOOST_TEST(!st.right(R"({"kind": "penetration_depth", "rho1": 1, "rho2": 1, "value": 0})"));  // separated
+    // Touching: depth 0.
+    BOOST_TEST(st.right(R"({"kind": "penetration_depth", "rho1": 1.5, "rho2": 1.5, "value": 0})"));
+}
+
+BOOST_AUTO_TEST_CASE(claimed_curves_switches_and_labels) {
+    // The tetrahedron on the box (test_hand_curves): (V,F) ρ2 = 9/2 − 5ρ1/2 on [1/2, 1], then
+    // (E,E) ρ2 = (18 − 4ρ1)/7, switching at (1, 2) with a (V,E) contact; ρ* = 18/11.
+    Claims k("tetra_box_switch");
+    const std::string exact_pieces = R"({"kind": "curve", "pieces": [
+        {"rho1": ["1/2", 1], "slope": "-5/2", "intercept": "9/2", "contact": "VF"},
+        {"rho1": [1, 2], "slope": "-4/7", "intercept": "18/7", "contact": "EE"}]})";
+    BOOST_TEST(k.right(exact_pieces));
+    // A wrong label on the second piece.
+    auto j = k.one(R"({"kind": "curve", "pieces": [
+        {"rho1": ["1/2", 1], "slope": "-5/2", "intercept": "9/2", "contact": "VF"},
+        {"rho1": [1, 2], "slope": "-4/7", "intercept": "18/7", "contact": "FE"}]})");
+    BOOST_TEST(!j["right"].get<bool>());
+    BOOST_TEST(j["wrong_contacts"].size() == 1u);
+    BOOST_TEST(j["wrong_contacts"][0]["exact"] == "EE");
+    // The switch moved to ρ1 = 101/100: misplaced, and the curve is off there.
+    j = k.one(R"({"kind": "curve", "pieces": [
+        {"rho1": ["1/2", "101/100"], "slope": "-5/2", "intercept": "9/2"},
+        {"rho1": ["101/100", 2], "slope": "-4/7", "intercept": "18/7"}]})");
+    BOOST_TEST(!j["right"].get<bool>());
+    BOOST_TEST(j["switch_points_misplaced"].size() == 1u);
+    BOOST_TEST(j["switch_points_misplaced"][0]["claimed_rho1"] == "101/100");
+    // At 101/100 the claimed first piece gives 9/2 − 5/2 · 101/100 = 79/40, and the exact (E,E)
+    // line (18 − 404/100)/7 = 349/175: error 79/40 − 349/175 = (2765 − 2792)/1400 = −27/1400.
+    BOOST_TEST(j["max_vertical_error"] == "27/1400");
+    BOOST_TEST(j["max_vertical_error_at_rho1"] == "101/100");
+    // A polyline that skips the switch: from (1/2, 13/4) to (2, 10/7), at ρ1 = 1 it gives
+    // 13/4 + (10/7 − 13/4)/3 = 37/14 where the curve is 2: error 9/14, and the switch is missed.
+    j = k.one(R"({"kind": "curve", "vertices": [["1/2", "13/4"], [2, "10/7"]]})");
+    BOOST_TEST(j["max_vertical_error"] == "9/14");
+    BOOST_TEST(j["max_vertical_error_at_rho1"] == "1");
+    BOOST_TEST(j["switch_points_missed"].size() == 1u);
+    BOOST_TEST(k.right(R"({"kind": "curve", "vertices": [["1/2", "13/4"], [1, 2], [2, "10/7"]], "switch_points": [[1, 2]]})"));
+    // An extra switch point.
+    j = k.one(R"({"kind": "curve", "vertices": [["1/2", "13/4"], [1, 2], [2, "10/7"]], "switch_points": [[1, 2], ["3/2", "12/7"]]})");
+    BOOST_TEST(j["switch_points_extra"].size() == 1u);
+    // Switch points and the growth distance, exact or within a tolerance.
+    BOOST_TEST(k.right(R"({"kind": "switch_point", "rho1": 1, "rho2": 2, "contact": "VE"})"));
+    BOOST_TEST(!k.right(R"({"kind": "switch_point", "rho1": 1, "rho2": 2, "contact": "VV"})"));
+    BOOST_TEST(!k.right(R"({"kind": "switch_point", "rho1": "1.0000001", "rho2": 2})"));
+    BOOST_TEST(k.right(R"({"kind": "switch_point", "rho1": "1.0000001", "rho2": 2})", "1e-6"));
+    BOOST_TEST(k.right(R"({"kind": "growth_distance", "value": "18/11"})"));
+    j = k.one(R"({"kind": "growth_distance", "value": 1.6363636363636365})", "0", true);
+    BOOST_TEST(!j["right"].get<bool>());
+    BOOST_TEST(j["exact"] == "18/11");
+    BOOST_TEST(k.right(R"({"kind": "growth_distance", "value": 1.6363636363636365})", "1e-15", true));
+}
+
+BOOST_AUTO_TEST_CASE(malformed_claims_get_one_line) {
+    Claims k("stacked_cubes");
+    auto err = [&](const std::string& text) {
+        long wrong = 0;
+        try {
+            certify_fp(k.m, k.c, text, "c.json", ClaimOptions{}, false, &wrong);
+        } catch (const InputError& e) {
+            return std::string(e.what());
+        }
+        return std::string();
+    };
+    BOOST_TEST(err(R"({"format": "scalecert-claims-1", "claims": [{"kind": "area"}]})").find("claims[0].kind: unknown kind 'area'") != std::string::npos);
+    BOOST_TEST(err(R"({"format": "scalecert-claims-1", "claims": [{"kind": "distance", "rho1": 1, "rho2": 1}]})") == "c.json: claims[0].value: missing");
+    BOOST_TEST(err(R"({"format": "scalecert-claims-1", "claims": [{"kind": "growth_distance", "value": 1, "valu": 2}]})") == "c.json: claims[0].valu: unknown field");
+    BOOST_TEST(err(R"({"format": "scalecert-claims-2", "claims": []})").find("format") != std::string::npos);
+    BOOST_TEST(err(R"({"format": "scalecert-claims-1", "claims": [], "claims": []})").find("duplicate") != std::string::npos);
+    BOOST_TEST(err(R"({"format": "scalecert-claims-1", "claims": [{"kind": "separating_plane", "rho1": 1, "rho2": 1, "normal": [0, 0, 0]}]})").find("normal") != std::string::npos);
+    BOOST_TEST(err(R"({"format": "scalecert-claims-1", "claims": [{"kind": "verdict", "rho1": 0, "rho2": 1, "verdict": "separated"}]})").find("> 0") != std::string::npos);
 }

@@ -504,3 +504,18 @@ BOOST_AUTO_TEST_CASE(help_examples_run_as_written) {
     Run q = run("query " + src + "/certificates/scenes/stacked_cubes.json 3/2 3/2");
     BOOST_TEST(q.out == "touching\n");
 }
+
+BOOST_AUTO_TEST_CASE(json_claims_from_the_command_line) {
+    // examples/claims.json: one right claim of each kind on the stacked cubes (values by hand in
+    // tests/test_audit.cpp); a rounded growth distance is wrong unless a tolerance admits it.
+    const std::string sc = std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/stacked_cubes.json";
+    Run r = run("certify-fp " + sc + " " + SCALECERT_SOURCE_DIR + "/examples/claims.json");
+    BOOST_TEST(r.status == 0, r.err);
+    BOOST_TEST(r.out.find("claims: 7, right: 7, wrong: 0") != std::string::npos, r.out);
+    fs::path g = write("g.claims.json", R"({"format": "scalecert-claims-1", "claims": [{"kind": "growth_distance", "value": "1.5000000001"}]})");
+    BOOST_TEST(run("certify-fp " + sc + " " + g.string()).status == 1);
+    BOOST_TEST(run("certify-fp " + sc + " " + g.string() + " --tolerance 1e-9").status == 0);
+    BOOST_TEST(run("certify-fp " + sc + " " + g.string() + " --tolerance 1e-11").status == 1);
+    expect_error("negative tolerance", "certify-fp " + sc + " " + g.string() + " --tolerance -1", "--tolerance must be >= 0");
+    expect_error("bad tolerance", "certify-fp " + sc + " " + g.string() + " --tolerance x", "--tolerance");
+}

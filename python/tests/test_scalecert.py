@@ -188,6 +188,10 @@ def test_golden_and_claims(tmp_path):
     # Stacked cubes: (1, 1) separated, (3/2, 3/2) touching, growth 3/2; a false claim is caught.
     r = stacked().certify_fp("1 1 separated\n1.5 1.5 touching\ngrowth 1.5\n2 2 separated\n")
     assert r["wrong"] == 1
+    # JSON claims: the distance at (1, 1/2) is 3/2 (P1 reaches z = 2, P2(1/2) starts at 3.5).
+    claims = {"format": "scalecert-claims-1", "claims": [{"kind": "distance", "rho1": 1, "rho2": "1/2", "value": "1.5000001"}]}
+    assert stacked().certify_fp(json.dumps(claims))["wrong"] == 1
+    assert stacked().certify_fp(json.dumps(claims), tolerance="1e-6")["wrong"] == 0
 
 
 def test_readme_example_runs(tmp_path):

@@ -26,8 +26,8 @@ std::string num_text(const Q& q) {
 }
 }  // namespace
 
-std::string certify_fp(const Model& m, const Curve& c, const std::string& claims, const std::string& name,
-                       bool binary_doubles, bool json, long* wrong) {
+std::string certify_claim_lines(const Model& m, const Curve& c, const std::string& claims, const std::string& name,
+                                bool binary_doubles, bool json, long* wrong) {
     std::istringstream in(claims);
     std::string line, text;
     Json arr = Json::array();

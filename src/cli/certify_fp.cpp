@@ -11,24 +11,32 @@ using namespace internal;
 Command add_certify_fp(CLI::App& app) {
     struct Args {
         SceneArgs scene;
-        std::string out, claims;
+        std::string out, claims, tolerance = "0";
         bool json = false;
     };
     auto a = std::make_shared<Args>();
     CLI::App* sub = app.add_subcommand("certify-fp", "mark a floating-point program's claims right or wrong, exactly (exit 1 if any is wrong)");
     a->scene.add(sub);
-    sub->add_option("CLAIMS", a->claims, "claims: 'RHO1 RHO2 VERDICT', 'curve RHO1 RHO2' or 'growth RHO' per line")->required();
+    sub->add_option("CLAIMS", a->claims, "claims: JSON (scalecert-claims-1, certificates/CLAIMS.md), or lines 'RHO1 RHO2 VERDICT', 'curve RHO1 RHO2', 'growth RHO'")->required();
+    sub->add_option("--tolerance", a->tolerance, "accept numeric claims within this relative error (exact, e.g. 1e-9; JSON claims); verdicts, contacts, planes and witness points must be exact");
     sub->add_flag("--json", a->json, "the report as JSON");
     add_out(sub, a->out);
     example(sub, "Exit status: 0 all claims right, 1 some claim wrong, 2 bad input. Example:\n"
                  "  printf '1 1 separated\\ngrowth 1.5\\n' > claims.txt\n"
-                 "  scalecert certify-fp certificates/scenes/stacked_cubes.json claims.txt");
+                 "  scalecert certify-fp certificates/scenes/stacked_cubes.json claims.txt\n"
+                 "  scalecert certify-fp certificates/scenes/stacked_cubes.json examples/claims.json --tolerance 1e-12");
     return {sub, [a] {
                 StageClock clock;
                 const Analysed an = analyse(a->scene, clock);
                 const std::string claims = read_input(a->claims, "claims file", kMaxSceneBytes);
                 long wrong = 0;
-                emit(certify_fp(an.m, an.c, claims, a->claims, a->scene.opt.binary_doubles, a->json, &wrong), a->out);
+                ClaimOptions opt{a->scene.opt.binary_doubles, Q(0)};
+                try {
+                    opt.tolerance = parse_exact(a->tolerance);
+                } catch (const InputError& e) {
+                    throw InputError(std::string("--tolerance: ") + e.what());
+                }
+                emit(certify_fp(an.m, an.c, claims, a->claims, opt, a->json, &wrong), a->out);
                 return wrong > 0 ? 1 : 0;
             }};
 }

@@ -7,13 +7,29 @@
 
 namespace scalecert::internal {
 
-// Reads claims, one per line ('#' comments):
-//   RHO1 RHO2 VERDICT   VERDICT: separated | touching | overlapping | intersecting (= not separated)
-//   curve RHO1 RHO2     a claimed point of the touching curve (e.g. a breakpoint)
-//   growth RHO          a claimed growth distance
-// and marks each right or wrong exactly. Returns the report (text or JSON); counts in *wrong.
+// Marks a floating-point program's claims right or wrong, exactly, and reports the exact values
+// and errors (text, or JSON with `json`); the number of wrong claims in *wrong. Two formats:
+// - JSON (text starting with '{'): {"format": "scalecert-claims-1", "claims": [...]} with the kinds
+//   verdict, curve, switch_point, growth_distance, separating_plane, witness_point, distance and
+//   penetration_depth (certificates/CLAIMS.md);
+// - lines ('#' comments): 'RHO1 RHO2 VERDICT' (separated | touching | overlapping | intersecting,
+//   = not separated), 'curve RHO1 RHO2' (a claimed point of the touching curve) or 'growth RHO'.
+// Numbers are exact as written (with binary_doubles, JSON numbers and line numbers are the doubles
+// strtod gives). `tolerance` (a relative error, >= 0) accepts numeric values within it; verdicts,
+// labels, planes and witness points must be exactly right.
+struct ClaimOptions {
+    bool binary_doubles = false;
+    Q tolerance = 0;
+};
 std::string certify_fp(const Model& m, const Curve& c, const std::string& claims, const std::string& name,
-                       bool binary_doubles, bool json, long* wrong);
+                       const ClaimOptions& opt, bool json, long* wrong);
+inline std::string certify_fp(const Model& m, const Curve& c, const std::string& claims, const std::string& name,
+                              bool binary_doubles, bool json, long* wrong) {
+    return certify_fp(m, c, claims, name, ClaimOptions{binary_doubles, Q(0)}, json, wrong);
+}
+// The line format alone.
+std::string certify_claim_lines(const Model& m, const Curve& c, const std::string& claims, const std::string& name,
+                                bool binary_doubles, bool json, long* wrong);
 
 // Scene i of a family with its exact answers, drawn with scene_seed (campaign.hpp derives it from
 // the run's seed): the files NAME-i.scene.json, NAME-i.golden.json and NAME-i.golden.csv, by name

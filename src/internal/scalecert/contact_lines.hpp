@@ -52,6 +52,10 @@ std::vector<size_t> undominated(const std::vector<double>& a, const std::vector<
 // never deciding a query) are dropped before their exact values are computed.
 Model build_model(const Scene& scene);
 
+// Every facet normal of Q1 ⊕ (−Q2), primitive and sorted, the dominated ones included (Model::lines
+// keeps only those that can be on the curve). Recomputed on each call.
+std::vector<Vec3z> all_facet_normals(const Model& m);
+
 // The line of normal n (any nonzero direction, not necessarily a facet normal of the sum):
 // support values, features and the line, computed by scanning the polyhedra.
 ContactLine line_for_normal(const Model& m, const Vec3z& n);
