@@ -1,5 +1,7 @@
 #include "scalecert/measures.hpp"
 
+#include <mpfr.h>
+
 namespace scalecert::internal {
 
 Vec3q scaled_point(const Model& m, int i, const Q& rho, const Vec3q& x) {
@@ -49,6 +51,20 @@ ExactDepth exact_penetration_depth(const Model& m, const std::vector<Vec3z>& nor
         if (sgn(best.squared) < 0 || sq < best.squared) best = {sq, n};
     }
     return best;
+}
+
+double sqrt_minus_rn(const Q& square, const Q& c) {
+    mpfr_t a, b;
+    mpfr_init2(a, 256);
+    mpfr_init2(b, 256);
+    mpfr_set_q(a, square.get_mpq_t(), MPFR_RNDN);
+    mpfr_sqrt(a, a, MPFR_RNDN);
+    mpfr_set_q(b, c.get_mpq_t(), MPFR_RNDN);
+    mpfr_sub(a, a, b, MPFR_RNDN);
+    const double d = mpfr_get_d(a, MPFR_RNDN);
+    mpfr_clear(a);
+    mpfr_clear(b);
+    return d;
 }
 
 }  // namespace scalecert::internal

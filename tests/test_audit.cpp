@@ -332,3 +332,34 @@ BOOST_AUTO_TEST_CASE(malformed_claims_get_one_line) {
     BOOST_TEST(err(R"({"format": "scalecert-claims-1", "claims": [{"kind": "separating_plane", "rho1": 1, "rho2": 1, "normal": [0, 0, 0]}]})").find("normal") != std::string::npos);
     BOOST_TEST(err(R"({"format": "scalecert-claims-1", "claims": [{"kind": "verdict", "rho1": 0, "rho2": 1, "verdict": "separated"}]})").find("> 0") != std::string::npos);
 }
+
+BOOST_AUTO_TEST_CASE(baseline_measures_follow_one_convention) {
+    // Stacked cubes (test_hand_curves): at (2, 5/2) the depth is 3/2 along (0,0,1), P1 towards P2
+    // (distances_and_depths_by_hand); at (1, 1/2) the distance is 3/2 (P1's top z = 2, P2(1/2)'s
+    // bottom z = 3.5). Each adapter reports its library's values in that convention: libccd's
+    // direction moves P2, FCL's normal points from P1 to P2, Bullet's is negated.
+    Scene s = load_scene(std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/stacked_cubes.json");
+    Model m = build_model(s);
+    fp::FpScene f = fp::to_fp(s);
+    for (const char* name : {"libccd-gjk", "libccd-mpr", "fcl-gjk-libccd", "fcl-gjk-indep", "bullet-gjk-epa"}) {
+        auto mm = fp::make_method(name, m, f);
+        auto d = mm->measure(2, 2.5, false);
+        BOOST_TEST_REQUIRE(d.has_value(), name);
+        BOOST_TEST(d->depth);
+        // FCL's own GJK returns the depth negated: the audit reports that as a relative error of 2.
+        BOOST_TEST(std::fabs(std::fabs(d->value) - 1.5) < 1e-12, name << " depth " << d->value);
+        BOOST_TEST_REQUIRE(d->direction.has_value(), name);
+        BOOST_TEST((*d->direction)[2] > 0.999, name);
+        auto e = mm->measure(1, 0.5, true);
+        if (std::string(name).rfind("libccd", 0) == 0) {
+            BOOST_TEST(!e.has_value(), name);  // libccd has no distance query
+            continue;
+        }
+        BOOST_TEST_REQUIRE(e.has_value(), name);
+        BOOST_TEST(std::fabs(e->value - 1.5) < 1e-6, name << " distance " << e->value);
+    }
+    // The audit row's counts: every right verdict with a measure is compared with the exact value.
+    const std::vector<AuditRow> rows = audit_scene("cubes", s, Q(0), {"fcl-gjk-libccd"}, {});
+    BOOST_TEST(rows[0].distances > 50);
+    BOOST_TEST(rows[0].depths > 50);
+}

@@ -1,6 +1,7 @@
 #include "scalecert/audit.hpp"
 
 #include "scalecert/closed_forms.hpp"
+#include "scalecert/measures.hpp"
 
 #include <chrono>
 #include <cmath>
@@ -178,6 +179,65 @@ void match_junctions(const Curve& c, const Scene& s, const std::vector<double>& 
 }
 }  // namespace
 
+namespace {
+
+// Exact squared distances and depths at the audit's pairs, computed once for all methods.
+struct ExactCache {
+    explicit ExactCache(size_t n) : squared(n) {}
+    std::vector<std::optional<Q>> squared;
+    std::optional<std::vector<Vec3z>> normals;
+};
+
+double median(std::vector<double> v) {
+    if (v.empty()) return 0;
+    std::sort(v.begin(), v.end());
+    const size_t h = v.size() / 2;
+    return v.size() % 2 ? v[h] : (v[h - 1] + v[h]) / 2;
+}
+
+// The method's distances and depths where its verdict is right, against the exact ones.
+void measure_errors(const fp::Method& mm, const Model& m, const std::vector<double>& r1, const std::vector<double>& r2,
+                    const std::vector<Verdict>& exact, ExactCache& cache, AuditRow& row) {
+    std::vector<double> dist_err, depth_err;
+    for (size_t i = 0; i < r1.size(); ++i) {
+        if (exact[i] == Verdict::Touching) continue;
+        const bool sep = exact[i] == Verdict::Separated;
+        const int v = mm.classify(r1[i], r2[i]);
+        if ((v > 0) != sep || v == 0) continue;  // wrong verdicts are counted already
+        const std::optional<fp::Measure> me = mm.measure(r1[i], r2[i], sep);
+        if (!me || me->depth == sep || !std::isfinite(me->value)) continue;
+        const Q a = exact_from_double(r1[i]), b = exact_from_double(r2[i]);
+        if (!cache.squared[i]) {
+            if (sep) {
+                cache.squared[i] = exact_distance(m, a, b).squared;
+            } else {
+                if (!cache.normals) cache.normals = all_facet_normals(m);
+                cache.squared[i] = exact_penetration_depth(m, *cache.normals, a, b).squared;
+            }
+        }
+        const Q& E = *cache.squared[i];
+        const double root = std::sqrt(to_double_rn(E));
+        if (!(root > 0)) continue;
+        const double err = std::fabs(sqrt_minus_rn(E, exact_from_double(me->value))) / root;
+        (sep ? dist_err : depth_err).push_back(err);
+        if (me->direction && ((*me->direction)[0] != 0 || (*me->direction)[1] != 0 || (*me->direction)[2] != 0) &&
+            std::isfinite((*me->direction)[0] + (*me->direction)[1] + (*me->direction)[2])) {
+            const Vec3q n{exact_from_double((*me->direction)[0]), exact_from_double((*me->direction)[1]), exact_from_double((*me->direction)[2])};
+            const Q along = directional_depth_squared(m, n, a, b);
+            if (sgn(along) >= 0)  // (a plane separating an overlapping pair does not exist)
+                row.direction_err_max = std::max(row.direction_err_max, (sqrt_minus_rn(along, Q(0)) - root) / root);
+        }
+    }
+    row.distances = static_cast<long>(dist_err.size());
+    row.depths = static_cast<long>(depth_err.size());
+    row.distance_err_median = median(dist_err);
+    row.depth_err_median = median(depth_err);
+    for (double e : dist_err) row.distance_err_max = std::max(row.distance_err_max, e);
+    for (double e : depth_err) row.depth_err_max = std::max(row.depth_err_max, e);
+}
+
+}  // namespace
+
 std::vector<AuditRow> audit_scene(const std::string& name, const Scene& s, const Q& eps,
                                   const std::vector<std::string>& methods, const std::vector<int>& grid_ns) {
     using Clock = std::chrono::steady_clock;
@@ -207,6 +267,7 @@ std::vector<AuditRow> audit_scene(const std::string& name, const Scene& s, const
     std::vector<Verdict> exact(r1.size());
     for (size_t i = 0; i < r1.size(); ++i) exact[i] = query(m, c, exact_from_double(r1[i]), exact_from_double(r2[i]), false).verdict;
     std::vector<AuditRow> rows;
+    ExactCache cache(r1.size());
     for (const std::string& meth : methods) {
         if (meth == "grid") continue;
         std::unique_ptr<fp::Method> mm = fp::make_method(meth, m, f);
@@ -223,6 +284,7 @@ std::vector<AuditRow> audit_scene(const std::string& name, const Scene& s, const
             if (v < 0 && exact[i] == Verdict::Separated) ++r.false_overlapping;
         }
         r.seconds_per_query = std::chrono::duration<double>(Clock::now() - t0).count() / static_cast<double>(r1.size());
+        measure_errors(*mm, m, r1, r2, exact, cache, r);
         rows.push_back(r);
     }
     {
@@ -305,13 +367,15 @@ std::vector<AuditRow> audit_scene(const std::string& name, const Scene& s, const
 }
 
 std::string audit_csv(const std::vector<AuditRow>& rows, bool timing) {
-    std::string s = "scene,eps,method,queries,false_separated,false_overlapping,seconds_per_query,grid_n,seconds_per_curve,growth_error,exact_junctions,junctions_found,junctions_missed,junctions_merged,max_junction_error\n";
-    char b[512];
+    std::string s = "scene,eps,method,queries,false_separated,false_overlapping,seconds_per_query,grid_n,seconds_per_curve,growth_error,exact_junctions,junctions_found,junctions_missed,junctions_merged,max_junction_error,"
+                    "distances,distance_err_median,distance_err_max,depths,depth_err_median,depth_err_max,direction_err_max\n";
+    char b[1024];
     for (const AuditRow& r : rows) {
-        std::snprintf(b, sizeof b, "%s,%.17g,%s,%ld,%ld,%ld,%.6g,%d,%.6g,%.6g,%d,%d,%d,%d,%.6g\n", r.scene.c_str(), to_double_rn(r.eps),
+        std::snprintf(b, sizeof b, "%s,%.17g,%s,%ld,%ld,%ld,%.6g,%d,%.6g,%.6g,%d,%d,%d,%d,%.6g,%ld,%.6g,%.6g,%ld,%.6g,%.6g,%.6g\n", r.scene.c_str(), to_double_rn(r.eps),
                       r.method.c_str(), r.queries, r.false_separated, r.false_overlapping, r.seconds_per_query, r.grid_n,
                       r.seconds_per_curve, r.growth_error, r.exact_junctions, r.junctions_found, r.junctions_missed,
-                      r.junctions_merged, r.max_junction_error);
+                      r.junctions_merged, r.max_junction_error, r.distances, r.distance_err_median, r.distance_err_max, r.depths,
+                      r.depth_err_median, r.depth_err_max, r.direction_err_max);
         if (!timing) {  // the columns seconds_per_query (7th) and seconds_per_curve (9th) left empty
             std::string line = b;
             std::vector<std::string> cols;
@@ -351,6 +415,17 @@ Json audit_json(const std::vector<AuditRow>& rows, bool timing) {
             o["false_separated"] = r.false_separated;
             o["false_overlapping"] = r.false_overlapping;
             if (timing) o["seconds_per_query"] = r.seconds_per_query;
+            if (r.distances) {
+                o["distances"] = r.distances;
+                o["distance_err_median"] = r.distance_err_median;
+                o["distance_err_max"] = r.distance_err_max;
+            }
+            if (r.depths) {
+                o["depths"] = r.depths;
+                o["depth_err_median"] = r.depth_err_median;
+                o["depth_err_max"] = r.depth_err_max;
+                o["direction_err_max"] = r.direction_err_max;
+            }
         }
         a.push_back(o);
     }

@@ -59,6 +59,27 @@ public:
         int hit = mpr_ ? ccdMPRIntersect(&a, &b, &ccd) : ccdGJKIntersect(&a, &b, &ccd);
         return hit ? -1 : 1;
     }
+    // libccd gives penetration only (GJK+EPA or MPR): obj2 translated by depth along dir touches.
+    std::optional<Measure> measure(double r1, double r2, bool separated) const override {
+        if (separated) return std::nullopt;
+        Scaled a{&s_.P[0], r1}, b{&s_.P[1], r2};
+        ccd_t ccd;
+        CCD_INIT(&ccd);
+        ccd.support1 = support;
+        ccd.support2 = support;
+        ccd.center1 = center;
+        ccd.center2 = center;
+        ccd.max_iterations = 500;
+        ccd_real_t depth = 0;
+        ccd_vec3_t dir, pos;
+        const int r = mpr_ ? ccdMPRPenetration(&a, &b, &ccd, &depth, &dir, &pos) : ccdGJKPenetration(&a, &b, &ccd, &depth, &dir, &pos);
+        if (r != 0) return std::nullopt;
+        Measure m;
+        m.depth = true;
+        m.value = depth;
+        m.direction = D3{dir.v[0], dir.v[1], dir.v[2]};
+        return m;
+    }
 
 private:
     FpScene s_;

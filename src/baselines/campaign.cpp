@@ -113,7 +113,10 @@ Json row_json(const AuditRow& r) {
                 {"growth_error", r.growth_error}, {"max_junction_error", r.max_junction_error},
                 {"seconds_per_curve", r.seconds_per_curve}, {"exact_junctions", r.exact_junctions},
                 {"junctions_found", r.junctions_found}, {"junctions_missed", r.junctions_missed},
-                {"junctions_merged", r.junctions_merged}};
+                {"junctions_merged", r.junctions_merged}, {"distances", r.distances}, {"depths", r.depths},
+                {"distance_err_median", r.distance_err_median}, {"distance_err_max", r.distance_err_max},
+                {"depth_err_median", r.depth_err_median}, {"depth_err_max", r.depth_err_max},
+                {"direction_err_max", r.direction_err_max}};
 }
 
 AuditRow row_of(const Json& j) {
@@ -134,6 +137,13 @@ AuditRow row_of(const Json& j) {
     r.junctions_found = j.at("junctions_found").get<int>();
     r.junctions_missed = j.at("junctions_missed").get<int>();
     r.junctions_merged = j.at("junctions_merged").get<int>();
+    r.distances = j.at("distances").get<long>();
+    r.depths = j.at("depths").get<long>();
+    r.distance_err_median = j.at("distance_err_median").get<double>();
+    r.distance_err_max = j.at("distance_err_max").get<double>();
+    r.depth_err_median = j.at("depth_err_median").get<double>();
+    r.depth_err_max = j.at("depth_err_max").get<double>();
+    r.direction_err_max = j.at("direction_err_max").get<double>();
     return r;
 }
 

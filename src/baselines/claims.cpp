@@ -5,8 +5,6 @@
 #include "scalecert/measures.hpp"
 #include "scalecert/strict_json.hpp"
 
-#include <mpfr.h>
-
 #include <algorithm>
 #include <cstdio>
 #include <optional>
@@ -17,21 +15,6 @@ namespace {
 
 void put_point(Json& o, const std::string& key, const Vec3q& v) {
     o[key] = Json::array({to_exact_string(v[0]), to_exact_string(v[1]), to_exact_string(v[2])});
-}
-
-// sqrt(q) − c as the nearest double (MPFR, 256 bits, then rounded): display only.
-double sqrt_minus(const Q& q, const Q& c) {
-    mpfr_t a, b;
-    mpfr_init2(a, 256);
-    mpfr_init2(b, 256);
-    mpfr_set_q(a, q.get_mpq_t(), MPFR_RNDN);
-    mpfr_sqrt(a, a, MPFR_RNDN);
-    mpfr_set_q(b, c.get_mpq_t(), MPFR_RNDN);
-    mpfr_sub(a, a, b, MPFR_RNDN);
-    const double d = mpfr_get_d(a, MPFR_RNDN);
-    mpfr_clear(a);
-    mpfr_clear(b);
-    return d;
 }
 
 std::string dbl(double d) {
@@ -138,7 +121,7 @@ private:
         put_exact(o, "claimed", claimed);
         put_exact(o, "exact_squared", E);
         put_exact(o, "squared_error", Q(claimed * claimed - E));
-        const double d = -sqrt_minus(E, claimed);  // c − √E
+        const double d = -sqrt_minus_rn(E, claimed);  // c − √E
         o["abs_error_double"] = std::fabs(d);
         o["rel_error_double"] = sgn(E) ? Json(std::fabs(d) / std::sqrt(to_double_rn(E))) : Json(nullptr);
     }

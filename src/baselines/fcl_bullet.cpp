@@ -6,6 +6,7 @@
 #include <BulletCollision/NarrowPhaseCollision/btGjkEpa2.h>
 #include <fcl/geometry/shape/convex.h>
 #include <fcl/narrowphase/collision.h>
+#include <fcl/narrowphase/distance.h>
 
 namespace scalecert::internal::fp {
 
@@ -25,21 +26,47 @@ public:
         }
     }
     std::string name() const override { return type_ == fcl::GST_LIBCCD ? "fcl-gjk-libccd" : "fcl-gjk-indep"; }
+    std::shared_ptr<fcl::CollisionGeometryd> shape(int i, double rho) const {
+        auto v = std::make_shared<std::vector<fcl::Vector3d>>();
+        const D3& c = s_.P[i].seed;
+        for (const D3& p : s_.P[i].pts) v->emplace_back(c[0] + rho * (p[0] - c[0]), c[1] + rho * (p[1] - c[1]), c[2] + rho * (p[2] - c[2]));
+        return std::make_shared<fcl::Convexd>(v, nfaces_[i], faces_[i]);
+    }
     int classify(double r1, double r2) const override {
-        std::shared_ptr<fcl::CollisionGeometryd> g[2];
-        const double r[2] = {r1, r2};
-        for (int i = 0; i < 2; ++i) {
-            auto v = std::make_shared<std::vector<fcl::Vector3d>>();
-            const D3& c = s_.P[i].seed;
-            for (const D3& p : s_.P[i].pts) v->emplace_back(c[0] + r[i] * (p[0] - c[0]), c[1] + r[i] * (p[1] - c[1]), c[2] + r[i] * (p[2] - c[2]));
-            g[i] = std::make_shared<fcl::Convexd>(v, nfaces_[i], faces_[i]);
-        }
-        fcl::CollisionObjectd a(g[0], fcl::Transform3d::Identity()), b(g[1], fcl::Transform3d::Identity());
+        fcl::CollisionObjectd a(shape(0, r1), fcl::Transform3d::Identity()), b(shape(1, r2), fcl::Transform3d::Identity());
         fcl::CollisionRequestd req;
         req.gjk_solver_type = type_;
         fcl::CollisionResultd res;
         fcl::collide(&a, &b, req, res);
         return res.isCollision() ? -1 : 1;
+    }
+    // distance() with nearest points when separated; collide() with a contact (its depth and
+    // normal, from P1 towards P2) when not. The depth is taken as returned: FCL 0.7's own GJK
+    // (GST_INDEP) returns it negated (−1.5 where libccd's gives 1.5), which the audit reports.
+    std::optional<Measure> measure(double r1, double r2, bool separated) const override {
+        fcl::CollisionObjectd a(shape(0, r1), fcl::Transform3d::Identity()), b(shape(1, r2), fcl::Transform3d::Identity());
+        Measure m;
+        if (separated) {
+            fcl::DistanceRequestd req(true);
+            req.gjk_solver_type = type_;
+            fcl::DistanceResultd res;
+            fcl::distance(&a, &b, req, res);
+            if (!(res.min_distance >= 0)) return std::nullopt;
+            m.value = res.min_distance;
+            const auto& p = res.nearest_points;
+            m.closest = std::array<D3, 2>{D3{p[0][0], p[0][1], p[0][2]}, D3{p[1][0], p[1][1], p[1][2]}};
+            return m;
+        }
+        fcl::CollisionRequestd req(1, true);
+        req.gjk_solver_type = type_;
+        fcl::CollisionResultd res;
+        fcl::collide(&a, &b, req, res);
+        if (res.numContacts() == 0) return std::nullopt;
+        const fcl::Contactd& c = res.getContact(0);
+        m.depth = true;
+        m.value = c.penetration_depth;
+        m.direction = D3{c.normal[0], c.normal[1], c.normal[2]};
+        return m;
     }
 
 private:
@@ -68,6 +95,26 @@ public:
         btGjkEpaSolver2::sResults res;
         bool separated = btGjkEpaSolver2::Distance(&shape_[0], xf_[0], &shape_[1], xf_[1], btVector3(1, 0, 0), res);
         return separated && res.distance > 0 ? 1 : -1;
+    }
+    // Distance() with its witness points when separated; Penetration() (EPA) when not. Its normal
+    // points from P2 towards P1 (stacked cubes: (0,0,−1) for P2 above P1), so it is negated here.
+    std::optional<Measure> measure(double r1, double r2, bool separated) const override {
+        shape_[0].setLocalScaling(btVector3(r1, r1, r1));
+        shape_[1].setLocalScaling(btVector3(r2, r2, r2));
+        btGjkEpaSolver2::sResults res;
+        Measure m;
+        auto d3 = [](const btVector3& v) { return D3{v.x(), v.y(), v.z()}; };
+        if (separated) {
+            if (!btGjkEpaSolver2::Distance(&shape_[0], xf_[0], &shape_[1], xf_[1], btVector3(1, 0, 0), res)) return std::nullopt;
+            m.value = res.distance;
+            m.closest = std::array<D3, 2>{d3(res.witnesses[0]), d3(res.witnesses[1])};
+            return m;
+        }
+        if (!btGjkEpaSolver2::Penetration(&shape_[0], xf_[0], &shape_[1], xf_[1], btVector3(1, 0, 0), res)) return std::nullopt;
+        m.depth = true;
+        m.value = -res.distance;
+        m.direction = d3(-res.normal);
+        return m;
     }
 
 private:

@@ -50,6 +50,12 @@ struct AuditRow {
     int grid_n = 0;
     double growth_error = 0, max_junction_error = 0, seconds_per_curve = 0;
     int exact_junctions = 0, junctions_found = 0, junctions_missed = 0, junctions_merged = 0;
+    // What the method measures (distances of separated pairs, depths of overlapping ones, where
+    // its API gives them and its verdict is right), against the exact values: how many, and the
+    // relative errors |c − exact| / exact (median and largest); for depth directions, the relative
+    // excess of the depth along the reported direction over the true depth.
+    long distances = 0, depths = 0;
+    double distance_err_median = 0, distance_err_max = 0, depth_err_median = 0, depth_err_max = 0, direction_err_max = 0;
 };
 
 // Runs every method on the scene: random pairs plus pairs at relative distances 2^-k above and

@@ -7,6 +7,7 @@
 #include <array>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -23,12 +24,24 @@ struct FpScene {
 };
 FpScene to_fp(const Scene& s);
 
+// What a method measures besides its verdict, as its API returns it: the distance between
+// separated bodies (with closest points where it gives them), or the penetration depth of
+// overlapping ones with the direction in which translating P2 by the depth makes them touch.
+struct Measure {
+    double value = 0;
+    bool depth = false;  // a penetration depth, else a distance
+    std::optional<D3> direction;
+    std::optional<std::array<D3, 2>> closest;  // on P1, on P2
+};
+
 // +1 separated, 0 touching (only methods that can say so), −1 overlapping.
 class Method {
 public:
     virtual ~Method() = default;
     virtual std::string name() const = 0;
     virtual int classify(double r1, double r2) const = 0;
+    // The distance (separated = true) or the penetration depth, where the method's API gives it.
+    virtual std::optional<Measure> measure(double /*r1*/, double /*r2*/, bool /*separated*/) const { return std::nullopt; }
 };
 
 // libccd's GJK and MPR on the two scaled vertex sets (support function per polytope).

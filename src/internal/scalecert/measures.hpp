@@ -33,4 +33,8 @@ ExactDepth exact_penetration_depth(const Model& m, const std::vector<Vec3z>& fac
 // when that plane separates (a translation along n of that length separates them exactly).
 Q directional_depth_squared(const Model& m, const Vec3q& n, const Q& rho1, const Q& rho2);
 
+// √square − c as the nearest double (MPFR at 256 bits, then rounded): for display and error
+// statistics only, never for a decision.
+double sqrt_minus_rn(const Q& square, const Q& c);
+
 }  // namespace scalecert::internal
