@@ -363,3 +363,22 @@ BOOST_AUTO_TEST_CASE(baseline_measures_follow_one_convention) {
     BOOST_TEST(rows[0].distances > 50);
     BOOST_TEST(rows[0].depths > 50);
 }
+
+BOOST_AUTO_TEST_CASE(wrong_verdicts_by_distance_from_the_curve) {
+    // Stacked cubes: f(ρ1) = 3 − ρ1 > 0 on all 15 verticals of [1/2, 5/2], so each k has 30 pairs,
+    // each either scored or, when rounding to doubles lands exactly on the curve, touching.
+    Scene s = load_scene(std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/stacked_cubes.json");
+    const std::vector<AuditRow> rows = audit_scene("cubes", s, Q(0), {"libccd-gjk", "double-envelope"}, {}, true);
+    for (const AuditRow& r : rows) {
+        if (r.has_curve) continue;
+        BOOST_TEST_REQUIRE(r.by_distance.size() == 13u);
+        for (const AuditRow::ByDistance& b : r.by_distance) {
+            BOOST_TEST(b.pairs + b.touching == 30);
+            BOOST_TEST(b.wrong <= b.pairs);
+        }
+        // At 2^-4 of the curve (a sixteenth of ρ2 ≥ 1/2: at least 1/32 away) every method is right.
+        BOOST_TEST(r.by_distance[0].wrong == 0, r.method);
+    }
+    // Without the option, nothing is added.
+    BOOST_TEST(audit_scene("cubes", s, Q(0), {"libccd-gjk"}, {})[0].by_distance.empty());
+}

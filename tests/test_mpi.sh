@@ -14,7 +14,7 @@ run_mpi() { local np="$1"; shift; mpirun -np "$np" "$MPI" "$@"; }
 
 S="$SRC/certificates/scenes"
 AUDIT=("$S/stacked_cubes.json" "$S/tetra_box_switch.json" --family random --sweep 2 --sweep-to 3 --count 3
-       --methods libccd-gjk,bullet-gjk-epa,grid --grid 8 --no-timing)
+       --methods libccd-gjk,bullet-gjk-epa,grid --grid 8 --no-timing --by-distance)
 GOLDEN=(--family nearly-equal-slopes --count 9 --seed 11 --eps 1/4096)
 
 "$CLI" audit "${AUDIT[@]}" --out one.json --csv one.csv 2>/dev/null

@@ -5,6 +5,8 @@ usage: tools/plot_audit.py AUDIT.json OUTDIR
 
   stability       wrong-verdict rate against the degeneracy eps, per method
   speed_accuracy  time per curve against switch-point error (grid at each resolution, exact engine)
+  by_distance     wrong-verdict rate against the relative distance 2^-k from the curve, per method
+                  (audits run with --by-distance; pairs exactly touching once rounded are counted apart)
 """
 import json
 import os
@@ -41,6 +43,26 @@ def main():
     ax.axhline(0, color="green", lw=2, label="scalecert (exact): 0 by construction")
     ax.set_xscale("log", base=2)
     finish(fig, ax, outdir, "stability", "stability", "degeneracy eps", "wrong-verdict rate (pairs on and near the curve)")
+    # Wrong-verdict rate against the relative distance from the curve.
+    bd = defaultdict(lambda: defaultdict(lambda: [0, 0]))
+    touching = defaultdict(int)
+    for r in rows:
+        for b in r.get("by_distance", []):
+            a = bd[r["method"]][b["k"]]
+            a[0] += b["wrong"]
+            a[1] += b["pairs"]
+            touching[b["k"]] += b["touching"]
+    if bd:
+        fig, ax = plt.subplots(figsize=(6, 4))
+        for method, by_k in sorted(bd.items()):
+            ks = sorted(by_k)
+            ax.plot([2.0 ** -k for k in ks], [by_k[k][0] / max(1, by_k[k][1]) for k in ks], "o-", ms=3, label=method)
+        ax.axhline(0, color="green", lw=2, label="scalecert (exact): 0 by construction")
+        ax.set_xscale("log", base=2)
+        ax.invert_xaxis()
+        t = ", ".join(f"2^-{k}: {n}" for k, n in sorted(touching.items()) if n)
+        finish(fig, ax, outdir, "by_distance", "wrong verdicts near the curve" + (f" (touching, apart: {t})" if t else ""),
+               "relative distance from the curve", "wrong-verdict rate")
     # Speed against accuracy.
     fig, ax = plt.subplots(figsize=(6, 4))
     pts = defaultdict(list)

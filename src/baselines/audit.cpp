@@ -236,10 +236,35 @@ void measure_errors(const fp::Method& mm, const Model& m, const std::vector<doub
     for (double e : depth_err) row.depth_err_max = std::max(row.depth_err_max, e);
 }
 
+// Wrong verdicts at relative distances 2^-k from the curve, on 15 verticals, above and below.
+void wrong_by_distance(const fp::Method& mm, const Model& m, const Curve& c, const Scene& s, AuditRow& row) {
+    for (int k = 4; k <= 52; k += 4) {
+        AuditRow::ByDistance b{k};
+        for (int j = 1; j < 16; ++j) {
+            Q x = s.lo[0] + (s.hi[0] - s.lo[0]) * Q(j, 16);
+            x.canonicalize();
+            const Q y = c.env.value(m.lines, x);
+            if (sgn(y) <= 0) continue;
+            for (int sg : {-1, 1}) {
+                const double xd = to_double_rn(x), yd = to_double_rn(y + sg * y / Q(Z(1) << k));
+                const Verdict e = query(m, c, exact_from_double(xd), exact_from_double(yd), false).verdict;
+                if (e == Verdict::Touching) {
+                    ++b.touching;
+                    continue;
+                }
+                ++b.pairs;
+                const int v = mm.classify(xd, yd);
+                b.wrong += (v > 0) != (e == Verdict::Separated) || v == 0;
+            }
+        }
+        row.by_distance.push_back(b);
+    }
+}
+
 }  // namespace
 
 std::vector<AuditRow> audit_scene(const std::string& name, const Scene& s, const Q& eps,
-                                  const std::vector<std::string>& methods, const std::vector<int>& grid_ns) {
+                                  const std::vector<std::string>& methods, const std::vector<int>& grid_ns, bool by_distance) {
     using Clock = std::chrono::steady_clock;
     auto t_exact = Clock::now();
     Model m = build_model(s);
@@ -285,6 +310,7 @@ std::vector<AuditRow> audit_scene(const std::string& name, const Scene& s, const
         }
         r.seconds_per_query = std::chrono::duration<double>(Clock::now() - t0).count() / static_cast<double>(r1.size());
         measure_errors(*mm, m, r1, r2, exact, cache, r);
+        if (by_distance) wrong_by_distance(*mm, m, c, s, r);
         rows.push_back(r);
     }
     {
@@ -419,6 +445,12 @@ Json audit_json(const std::vector<AuditRow>& rows, bool timing) {
                 o["distances"] = r.distances;
                 o["distance_err_median"] = r.distance_err_median;
                 o["distance_err_max"] = r.distance_err_max;
+            }
+            if (!r.by_distance.empty()) {
+                Json bd = Json::array();
+                for (const AuditRow::ByDistance& b : r.by_distance)
+                    bd.push_back(Json{{"k", b.k}, {"pairs", b.pairs}, {"wrong", b.wrong}, {"touching", b.touching}});
+                o["by_distance"] = bd;
             }
             if (r.depths) {
                 o["depths"] = r.depths;

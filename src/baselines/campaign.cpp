@@ -116,7 +116,11 @@ Json row_json(const AuditRow& r) {
                 {"junctions_merged", r.junctions_merged}, {"distances", r.distances}, {"depths", r.depths},
                 {"distance_err_median", r.distance_err_median}, {"distance_err_max", r.distance_err_max},
                 {"depth_err_median", r.depth_err_median}, {"depth_err_max", r.depth_err_max},
-                {"direction_err_max", r.direction_err_max}};
+                {"direction_err_max", r.direction_err_max}, {"by_distance", [&] {
+                     Json a = Json::array();
+                     for (const AuditRow::ByDistance& b : r.by_distance) a.push_back(Json::array({b.k, b.pairs, b.wrong, b.touching}));
+                     return a;
+                 }()}};
 }
 
 AuditRow row_of(const Json& j) {
@@ -144,6 +148,8 @@ AuditRow row_of(const Json& j) {
     r.depth_err_median = j.at("depth_err_median").get<double>();
     r.depth_err_max = j.at("depth_err_max").get<double>();
     r.direction_err_max = j.at("direction_err_max").get<double>();
+    for (const Json& b : j.at("by_distance"))
+        r.by_distance.push_back({b.at(0).get<int>(), b.at(1).get<long>(), b.at(2).get<long>(), b.at(3).get<long>()});
     return r;
 }
 
@@ -175,7 +181,7 @@ std::string run_shard(const CampaignArgs& a, const Shard& s) {
         const std::string& p = a.scenes[static_cast<size_t>(s.scene_file)];
         const Scene sc = load_scene(p, a.opt);  // its errors name the file already
         try {
-            rows = audit_scene(p, sc, Q(0), a.methods, a.grid);
+            rows = audit_scene(p, sc, Q(0), a.methods, a.grid, a.by_distance);
         } catch (const InputError& e) {
             throw InputError(p + ": " + e.what());
         }
@@ -183,7 +189,7 @@ std::string run_shard(const CampaignArgs& a, const Shard& s) {
         const Q eps(1, Z(1) << s.k);
         for (int i = s.first; i < s.last; ++i) {
             Rng g(scene_seed(a.seed, s.k, i));
-            auto r = audit_scene(a.family + "-" + std::to_string(i), make_family_scene(a.family, eps, g), eps, a.methods, a.grid);
+            auto r = audit_scene(a.family + "-" + std::to_string(i), make_family_scene(a.family, eps, g), eps, a.methods, a.grid, a.by_distance);
             rows.insert(rows.end(), r.begin(), r.end());
         }
     }
@@ -261,6 +267,7 @@ std::string campaign_identity(const CampaignArgs& a) {
         j["grid"] = a.grid;
         j["sweep"] = Json::array({a.sweep_from, a.sweep_to});
         j["binary_doubles"] = a.opt.binary_doubles;
+        j["by_distance"] = a.by_distance;
     }
     j["shard_size"] = a.shard_size;
     return j.dump();

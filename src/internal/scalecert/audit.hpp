@@ -56,12 +56,20 @@ struct AuditRow {
     // excess of the depth along the reported direction over the true depth.
     long distances = 0, depths = 0;
     double distance_err_median = 0, distance_err_max = 0, depth_err_median = 0, depth_err_max = 0, direction_err_max = 0;
+    // With by_distance: at relative distances 2^-k above and below the curve (k = 4, 8, ..., 52),
+    // how many pairs, how many wrong verdicts, and how many pairs were exactly touching once
+    // rounded to doubles (counted apart, not in the rate).
+    struct ByDistance { int k; long pairs = 0, wrong = 0, touching = 0; };
+    std::vector<ByDistance> by_distance;
 };
 
 // Runs every method on the scene: random pairs plus pairs at relative distances 2^-k above and
 // below the curve; and the grid search at each resolution in grid_ns.
+// With by_distance, also the wrong-verdict counts on 15 verticals at relative distances 2^-4 …
+// 2^-52 above and below the curve (their own 390 pairs; the other counts are unchanged).
 std::vector<AuditRow> audit_scene(const std::string& name, const Scene& s, const Q& eps,
-                                  const std::vector<std::string>& methods, const std::vector<int>& grid_ns);
+                                  const std::vector<std::string>& methods, const std::vector<int>& grid_ns,
+                                  bool by_distance = false);
 // Without timing, the timing columns are left empty (CSV) and out (JSON): the rest is the same
 // bytes for the same arguments, on any number of processes.
 std::string audit_csv(const std::vector<AuditRow>& rows, bool timing = true);

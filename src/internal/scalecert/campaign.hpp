@@ -24,6 +24,7 @@ struct CampaignArgs {
     int sweep_from = 0, sweep_to = 0;  // audit: ε = 2^-k, k in [sweep_from, sweep_to], with family
     std::string out, csv;              // audit: JSON (or standard output) and CSV files
     bool no_timing = false;            // audit: leave the timing columns out
+    bool by_distance = false;          // audit: wrong verdicts by relative distance from the curve
     ReadOptions opt;
     int shard_size = 0;  // family scenes per shard; 0: 16 for golden, 4 for audits
 };
