@@ -220,6 +220,12 @@ void measure_errors(const fp::Method& mm, const Model& m, const std::vector<doub
         if (!(root > 0)) continue;
         const double err = std::fabs(sqrt_minus_rn(E, exact_from_double(me->value))) / root;
         (sep ? dist_err : depth_err).push_back(err);
+        if (me->closest) {
+            const auto& cp = *me->closest;
+            const Vec3q p{exact_from_double(cp[0][0]), exact_from_double(cp[0][1]), exact_from_double(cp[0][2])};
+            const Vec3q q{exact_from_double(cp[1][0]), exact_from_double(cp[1][1]), exact_from_double(cp[1][2])};
+            row.closest_outside += !contains(m, 0, a, p) || !contains(m, 1, b, q);
+        }
         if (me->direction && ((*me->direction)[0] != 0 || (*me->direction)[1] != 0 || (*me->direction)[2] != 0) &&
             std::isfinite((*me->direction)[0] + (*me->direction)[1] + (*me->direction)[2])) {
             const Vec3q n{exact_from_double((*me->direction)[0]), exact_from_double((*me->direction)[1]), exact_from_double((*me->direction)[2])};
@@ -443,6 +449,7 @@ Json audit_json(const std::vector<AuditRow>& rows, bool timing) {
             if (timing) o["seconds_per_query"] = r.seconds_per_query;
             if (r.distances) {
                 o["distances"] = r.distances;
+                o["closest_outside"] = r.closest_outside;
                 o["distance_err_median"] = r.distance_err_median;
                 o["distance_err_max"] = r.distance_err_max;
             }

@@ -113,7 +113,7 @@ Json row_json(const AuditRow& r) {
                 {"growth_error", r.growth_error}, {"max_junction_error", r.max_junction_error},
                 {"seconds_per_curve", r.seconds_per_curve}, {"exact_junctions", r.exact_junctions},
                 {"junctions_found", r.junctions_found}, {"junctions_missed", r.junctions_missed},
-                {"junctions_merged", r.junctions_merged}, {"distances", r.distances}, {"depths", r.depths},
+                {"junctions_merged", r.junctions_merged}, {"distances", r.distances}, {"depths", r.depths}, {"closest_outside", r.closest_outside},
                 {"distance_err_median", r.distance_err_median}, {"distance_err_max", r.distance_err_max},
                 {"depth_err_median", r.depth_err_median}, {"depth_err_max", r.depth_err_max},
                 {"direction_err_max", r.direction_err_max}, {"by_distance", [&] {
@@ -143,6 +143,7 @@ AuditRow row_of(const Json& j) {
     r.junctions_merged = j.at("junctions_merged").get<int>();
     r.distances = j.at("distances").get<long>();
     r.depths = j.at("depths").get<long>();
+    r.closest_outside = j.at("closest_outside").get<long>();
     r.distance_err_median = j.at("distance_err_median").get<double>();
     r.distance_err_max = j.at("distance_err_max").get<double>();
     r.depth_err_median = j.at("depth_err_median").get<double>();

@@ -55,6 +55,7 @@ struct AuditRow {
     // relative errors |c − exact| / exact (median and largest); for depth directions, the relative
     // excess of the depth along the reported direction over the true depth.
     long distances = 0, depths = 0;
+    long closest_outside = 0;  // reported closest (witness) points not in their scaled body, exactly
     double distance_err_median = 0, distance_err_max = 0, depth_err_median = 0, depth_err_max = 0, direction_err_max = 0;
     // With by_distance: at relative distances 2^-k above and below the curve (k = 4, 8, ..., 52),
     // how many pairs, how many wrong verdicts, and how many pairs were exactly touching once
