@@ -382,3 +382,24 @@ BOOST_AUTO_TEST_CASE(wrong_verdicts_by_distance_from_the_curve) {
     // Without the option, nothing is added.
     BOOST_TEST(audit_scene("cubes", s, Q(0), {"libccd-gjk"}, {})[0].by_distance.empty());
 }
+
+BOOST_AUTO_TEST_CASE(rows_with_nan_survive_the_shard_round_trip) {
+    // The paper's grid at n = 16 on the thin boxes of FCL issue #399 never crosses ρ1 = ρ2, so its
+    // growth error is NaN. Rows pass through shard text (JSON, which has no NaN) on their way to the
+    // outputs; that once threw "type must be number, but is null".
+    CampaignArgs a;
+    a.scenes = {std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/reported_fcl399_thin_boxes.json"};
+    a.methods = {"grid"};
+    a.grid = {16};
+    a.no_timing = true;
+    const fs::path dir = test::scratch_dir("nan-rows");
+    a.out = (dir / "a.json").string();
+    a.csv = (dir / "a.csv").string();
+    BOOST_TEST(run_campaign(a) == 3);  // the exact engine's row and the grid's two
+    const std::string csv = slurp(dir / "a.csv");
+    BOOST_TEST(csv.find(",16,,nan,") != std::string::npos, csv);
+    // The same rows straight from audit_scene, written without the round trip.
+    const std::vector<AuditRow> rows = audit_scene(a.scenes[0], load_scene(a.scenes[0]), Q(0), a.methods, a.grid);
+    BOOST_TEST(audit_csv(rows, false) == csv);
+    fs::remove_all(dir);
+}

@@ -1,6 +1,8 @@
 #include "scalecert/campaign.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdlib>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
@@ -106,17 +108,28 @@ std::uint64_t scene_seed(std::uint64_t run_seed, int k, int i) {
 
 namespace {
 
+// Doubles as JSON numbers, or as "nan", "inf", "-inf" (a grid that never crosses ρ1 = ρ2 has no
+// growth estimate): JSON has no number for them, and the row must come back bit for bit.
+Json num_json(double x) {
+    if (std::isfinite(x)) return x;
+    return std::isnan(x) ? "nan" : x > 0 ? "inf" : "-inf";
+}
+double num_of(const Json& j) {
+    if (j.is_string()) return std::strtod(j.get<std::string>().c_str(), nullptr);
+    return j.get<double>();
+}
+
 Json row_json(const AuditRow& r) {
     return Json{{"scene", r.scene}, {"method", r.method}, {"eps", to_exact_string(r.eps)}, {"queries", r.queries},
                 {"false_separated", r.false_separated}, {"false_overlapping", r.false_overlapping},
-                {"seconds_per_query", r.seconds_per_query}, {"has_curve", r.has_curve}, {"grid_n", r.grid_n},
-                {"growth_error", r.growth_error}, {"max_junction_error", r.max_junction_error},
-                {"seconds_per_curve", r.seconds_per_curve}, {"exact_junctions", r.exact_junctions},
+                {"seconds_per_query", num_json(r.seconds_per_query)}, {"has_curve", r.has_curve}, {"grid_n", r.grid_n},
+                {"growth_error", num_json(r.growth_error)}, {"max_junction_error", num_json(r.max_junction_error)},
+                {"seconds_per_curve", num_json(r.seconds_per_curve)}, {"exact_junctions", r.exact_junctions},
                 {"junctions_found", r.junctions_found}, {"junctions_missed", r.junctions_missed},
                 {"junctions_merged", r.junctions_merged}, {"distances", r.distances}, {"depths", r.depths}, {"closest_outside", r.closest_outside},
-                {"distance_err_median", r.distance_err_median}, {"distance_err_max", r.distance_err_max},
-                {"depth_err_median", r.depth_err_median}, {"depth_err_max", r.depth_err_max},
-                {"direction_err_max", r.direction_err_max}, {"by_distance", [&] {
+                {"distance_err_median", num_json(r.distance_err_median)}, {"distance_err_max", num_json(r.distance_err_max)},
+                {"depth_err_median", num_json(r.depth_err_median)}, {"depth_err_max", num_json(r.depth_err_max)},
+                {"direction_err_max", num_json(r.direction_err_max)}, {"by_distance", [&] {
                      Json a = Json::array();
                      for (const AuditRow::ByDistance& b : r.by_distance) a.push_back(Json::array({b.k, b.pairs, b.wrong, b.touching}));
                      return a;
@@ -131,12 +144,12 @@ AuditRow row_of(const Json& j) {
     r.queries = j.at("queries").get<long>();
     r.false_separated = j.at("false_separated").get<long>();
     r.false_overlapping = j.at("false_overlapping").get<long>();
-    r.seconds_per_query = j.at("seconds_per_query").get<double>();
+    r.seconds_per_query = num_of(j.at("seconds_per_query"));
     r.has_curve = j.at("has_curve").get<bool>();
     r.grid_n = j.at("grid_n").get<int>();
-    r.growth_error = j.at("growth_error").get<double>();
-    r.max_junction_error = j.at("max_junction_error").get<double>();
-    r.seconds_per_curve = j.at("seconds_per_curve").get<double>();
+    r.growth_error = num_of(j.at("growth_error"));
+    r.max_junction_error = num_of(j.at("max_junction_error"));
+    r.seconds_per_curve = num_of(j.at("seconds_per_curve"));
     r.exact_junctions = j.at("exact_junctions").get<int>();
     r.junctions_found = j.at("junctions_found").get<int>();
     r.junctions_missed = j.at("junctions_missed").get<int>();
@@ -144,11 +157,11 @@ AuditRow row_of(const Json& j) {
     r.distances = j.at("distances").get<long>();
     r.depths = j.at("depths").get<long>();
     r.closest_outside = j.at("closest_outside").get<long>();
-    r.distance_err_median = j.at("distance_err_median").get<double>();
-    r.distance_err_max = j.at("distance_err_max").get<double>();
-    r.depth_err_median = j.at("depth_err_median").get<double>();
-    r.depth_err_max = j.at("depth_err_max").get<double>();
-    r.direction_err_max = j.at("direction_err_max").get<double>();
+    r.distance_err_median = num_of(j.at("distance_err_median"));
+    r.distance_err_max = num_of(j.at("distance_err_max"));
+    r.depth_err_median = num_of(j.at("depth_err_median"));
+    r.depth_err_max = num_of(j.at("depth_err_max"));
+    r.direction_err_max = num_of(j.at("direction_err_max"));
     for (const Json& b : j.at("by_distance"))
         r.by_distance.push_back({b.at(0).get<int>(), b.at(1).get<long>(), b.at(2).get<long>(), b.at(3).get<long>()});
     return r;
