@@ -298,6 +298,23 @@ BOOST_AUTO_TEST_CASE(claimed_curves_switches_and_labels) {
     BOOST_TEST(j["max_vertical_error_at_rho1"] == "1");
     BOOST_TEST(j["switch_points_missed"].size() == 1u);
     BOOST_TEST(k.right(R"({"kind": "curve", "vertices": [["1/2", "13/4"], [1, 2], [2, "10/7"]], "switch_points": [[1, 2]]})"));
+    BOOST_TEST(k.right(R"({"kind": "curve", "vertices": [["1/2", "13/4"], [1, 2], [2, "10/7"]]})"));  // its bend is the switch
+    // The paper's grid (libccd GJK at 8 × 8 nodes, bisection) as a sampled curve that claims no
+    // switch point: the (V,E) switch at ρ1 = 1 is reported missing, and the samples are off.
+    {
+        const fp::FpScene f = fp::to_fp(k.m.scene);
+        const fp::GridCurve g = fp::grid_search(*fp::make_libccd_gjk(f), f, 8, 20, 3);
+        std::string vs;
+        for (size_t i = 0; i < g.rho1.size(); ++i) {
+            char b[80];
+            std::snprintf(b, sizeof b, "%s[%.17g, %.17g]", i ? ", " : "", g.rho1[i], g.rho2[i]);
+            vs += b;
+        }
+        j = k.one(R"({"kind": "curve", "vertices": [)" + vs + R"(], "switch_points": []})", "0", true);
+        BOOST_TEST(!j["right"].get<bool>());
+        BOOST_TEST(j["switch_points_missed"] == nlohmann::json::array({"1"}));
+        BOOST_TEST(parse_exact(j["max_vertical_error"].get<std::string>()) > 0);
+    }
     // An extra switch point.
     j = k.one(R"({"kind": "curve", "vertices": [["1/2", "13/4"], [1, 2], [2, "10/7"]], "switch_points": [[1, 2], ["3/2", "12/7"]]})");
     BOOST_TEST(j["switch_points_extra"].size() == 1u);

@@ -220,6 +220,12 @@ private:
                 if (!(v[i].first < v[i + 1].first)) fail("vertices", "rho1 must increase");
                 segs.push_back({v[i].first, v[i].second, v[i + 1].first, v[i + 1].second, std::nullopt});
             }
+            // The polyline's own vertices where its slope changes (exactly) are its switch points,
+            // unless "switch_points" lists them (a sampled curve would have one at every sample).
+            for (size_t i = 1; i + 1 < v.size(); ++i)
+                if ((v[i].second - v[i - 1].second) * (v[i + 1].first - v[i].first) !=
+                    (v[i + 1].second - v[i].second) * (v[i].first - v[i - 1].first))
+                    claimed_switches.push_back(v[i].first);
         } else {
             if (pieces->kind != JNode::Array || pieces->items.empty()) fail("pieces", "expected a list of pieces");
             for (const JNode& p : pieces->items) {
