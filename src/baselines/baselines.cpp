@@ -116,15 +116,33 @@ std::unique_ptr<Method> make_libccd_gjk(const FpScene& s) { return std::make_uni
 std::unique_ptr<Method> make_libccd_mpr(const FpScene& s) { return std::make_unique<Libccd>(s, true); }
 std::unique_ptr<Method> make_double_envelope(const Model& m, const FpScene& s) { return std::make_unique<DoubleEnvelope>(m, s); }
 
+namespace {
+using Factory = std::unique_ptr<Method> (*)(const Model&, const FpScene&);
+// Every method by name: make_method and method_names read the same table.
+const std::vector<std::pair<std::string, Factory>>& methods() {
+    static const std::vector<std::pair<std::string, Factory>> table{
+        {"libccd-gjk", [](const Model&, const FpScene& s) { return make_libccd_gjk(s); }},
+        {"libccd-mpr", [](const Model&, const FpScene& s) { return make_libccd_mpr(s); }},
+        {"double-envelope", [](const Model& m, const FpScene& s) { return make_double_envelope(m, s); }},
+        {"paper-tritri", [](const Model& m, const FpScene& s) { return make_paper_tritri(m, s); }},
+        {"fcl-gjk-libccd", [](const Model& m, const FpScene& s) { return make_fcl(m, s, true); }},
+        {"fcl-gjk-indep", [](const Model& m, const FpScene& s) { return make_fcl(m, s, false); }},
+        {"bullet-gjk-epa", [](const Model&, const FpScene& s) { return make_bullet(s); }},
+    };
+    return table;
+}
+}  // namespace
+
 std::unique_ptr<Method> make_method(const std::string& name, const Model& m, const FpScene& s) {
-    if (name == "libccd-gjk") return make_libccd_gjk(s);
-    if (name == "libccd-mpr") return make_libccd_mpr(s);
-    if (name == "double-envelope") return make_double_envelope(m, s);
-    if (name == "paper-tritri") return make_paper_tritri(m, s);
-    if (name == "fcl-gjk-libccd") return make_fcl(m, s, true);
-    if (name == "fcl-gjk-indep") return make_fcl(m, s, false);
-    if (name == "bullet-gjk-epa") return make_bullet(s);
+    for (const auto& [n, make] : methods())
+        if (n == name) return make(m, s);
     return nullptr;
+}
+
+std::vector<std::string> method_names() {
+    std::vector<std::string> out;
+    for (const auto& entry : methods()) out.push_back(entry.first);
+    return out;
 }
 
 GridCurve grid_search(const Method& method, const FpScene& s, int n, int bisections, int repeats, bool exhaustive) {

@@ -66,9 +66,9 @@ void validate(const CampaignArgs& a) {
     }
     if (!a.family.empty()) family_description(a.family);
     if (!a.family.empty() && a.sweep_to < a.sweep_from) throw InputError("--sweep-to must be >= --sweep");
+    const std::vector<std::string> known = fp::method_names();
     for (const std::string& m : a.methods)
-        if (m != "grid" && m != "libccd-gjk" && m != "libccd-mpr" && m != "fcl-gjk-libccd" && m != "fcl-gjk-indep" &&
-            m != "bullet-gjk-epa" && m != "double-envelope" && m != "paper-tritri")
+        if (m != "grid" && std::find(known.begin(), known.end(), m) == known.end())
             throw InputError("--methods: unknown method " + quoted(m));
     if (a.scenes.empty() && a.family.empty()) throw InputError("audit: no scenes (give SCENES or --family with --sweep)");
 }

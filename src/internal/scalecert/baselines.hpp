@@ -63,6 +63,8 @@ bool triangles_intersect(const std::array<D3, 3>& a, const std::array<D3, 3>& b)
 // The method of that name (libccd-gjk, libccd-mpr, fcl-gjk-libccd, fcl-gjk-indep,
 // bullet-gjk-epa, paper-tritri, double-envelope); none for an unknown name.
 std::unique_ptr<Method> make_method(const std::string& name, const Model& m, const FpScene& s);
+// Those names, in that order.
+std::vector<std::string> method_names();
 
 // The paper's pipeline: classify an n × n grid over I1 × I2; in each column, the touching ρ2 is
 // estimated by `bisections` rounds of bisection between the last separated and the first
