@@ -10,7 +10,6 @@
 #endif
 
 #include <cmath>
-#include <filesystem>
 
 namespace py = pybind11;
 using scalecert::Rational;
@@ -224,9 +223,6 @@ PYBIND11_MODULE(scalecert, m) {
               if (count < 1 || count > 100000) throw scalecert::InputError("count: 1 to 100000");
               const Rational e = rational(eps, "eps");
               if (sgn(e) <= 0) throw scalecert::InputError("eps must be > 0");
-              std::error_code ec;
-              std::filesystem::create_directories(dir, ec);
-              if (ec || !std::filesystem::is_directory(dir)) throw scalecert::InputError(dir + ": cannot create the output directory");
               scalecert::internal::write_golden(family, count, seed, e, dir);
           }, py::arg("family"), py::arg("count"), py::arg("seed"), py::arg("eps"), py::arg("dir"),
           "writes COUNT scenes of FAMILY with exact answers into DIR, as scalecert golden does");

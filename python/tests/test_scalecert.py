@@ -177,6 +177,10 @@ def test_numpy_and_exact_inputs_agree():
 
 
 def test_golden_and_claims(tmp_path):
+    # An unknown family is refused before the directory is made (as by scalecert golden).
+    with pytest.raises(ValueError, match="unknown family 'bogus'"):
+        scalecert.golden("bogus", 1, 5, "1/1024", str(tmp_path / "never-made"))
+    assert not (tmp_path / "never-made").exists()
     scalecert.golden("random", 2, 5, "1/1024", str(tmp_path / "g"))
     names = sorted(p.name for p in (tmp_path / "g").iterdir())
     assert names == ["random-0.golden.csv", "random-0.golden.json", "random-0.scene.json",

@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -253,6 +254,13 @@ long run_campaign(const CampaignArgs& a) {
     return finish_campaign(a, texts);
 }
 
+void make_output_dir(const std::string& dir) {
+    std::error_code ec;
+    std::filesystem::create_directories(dir, ec);
+    if (ec || !std::filesystem::is_directory(dir))
+        throw InputError(dir + ": cannot create the output directory (" + (ec ? ec.message() : "not a directory") + ")");
+}
+
 void write_golden(const std::string& family, int count, std::uint64_t seed, const Q& eps, const std::string& dir) {
     CampaignArgs a;
     a.golden = true;
@@ -261,7 +269,8 @@ void write_golden(const std::string& family, int count, std::uint64_t seed, cons
     a.seed = seed;
     a.eps_text = to_exact_string(eps);
     a.dir = dir;
-    validate(a);
+    validate(a);  // an unknown family is refused before the directory is made
+    make_output_dir(dir);
     run_campaign(a);
 }
 

@@ -35,8 +35,6 @@ Model model_of(const internal::Scene& scene, const std::string& name);
 Q read_rho(const std::string& text, const char* name, const ReadOptions& opt);
 // "A,B" or "A,B,C": numbers separated by commas, read as the scene reader reads them.
 std::vector<Q> number_list(const std::string& text, size_t n, const std::string& option, const ReadOptions& opt);
-// Creates a directory for output (and its parents); one line naming it if it cannot.
-void make_output_dir(const std::string& dir);
 // Sets the --help footer: what the command writes, and an example.
 void example(CLI::App* sub, const std::string& text);
 

@@ -2,19 +2,11 @@
 #include "campaign_options.hpp"
 #include "common.hpp"
 
-#include <filesystem>
 #include <iostream>
 
 namespace scalecert::cli {
 
 using namespace internal;
-
-void make_output_dir(const std::string& dir) {
-    std::error_code ec;
-    std::filesystem::create_directories(dir, ec);
-    if (ec || !std::filesystem::is_directory(dir))
-        throw InputError(dir + ": cannot create the output directory (" + (ec ? ec.message() : "not a directory") + ")");
-}
 
 Command add_golden(CLI::App& app) {
     auto a = std::make_shared<CampaignArgs>();

@@ -151,11 +151,7 @@ int main(int argc, char** argv) {
     size_t done_before = 0, redone = 0;
     if (rank == 0) {
         try {
-            if (a.golden) {
-                std::error_code ec;
-                fs::create_directories(a.dir, ec);
-                if (ec || !fs::is_directory(a.dir)) throw InputError(a.dir + ": cannot create the output directory");
-            }
+            if (a.golden) make_output_dir(a.dir);
             std::map<int, std::string> done;
             if (resume) {
                 done = read_manifest(run, identity);

@@ -56,6 +56,10 @@ long finish_campaign(const CampaignArgs& a, const std::vector<std::string>& shar
 // The whole campaign in this process: what scalecert golden and audit run.
 long run_campaign(const CampaignArgs& a);
 
+// Creates an output directory (and its parents). Throws InputError naming it, with the reason,
+// when it cannot (a file in the way, no permission).
+void make_output_dir(const std::string& dir);
+
 // What a run folder records of the command: shards from one command cannot mix with another's.
 std::string campaign_identity(const CampaignArgs& a);
 
