@@ -196,13 +196,14 @@ double median(std::vector<double> v) {
 }
 
 // The method's distances and depths where its verdict is right, against the exact ones.
+// `verdicts` are the method's own at those pairs.
 void measure_errors(const fp::Method& mm, const Model& m, const std::vector<double>& r1, const std::vector<double>& r2,
-                    const std::vector<Verdict>& exact, ExactCache& cache, AuditRow& row) {
+                    const std::vector<Verdict>& exact, const std::vector<int>& verdicts, ExactCache& cache, AuditRow& row) {
     std::vector<double> dist_err, depth_err;
     for (size_t i = 0; i < r1.size(); ++i) {
         if (exact[i] == Verdict::Touching) continue;
         const bool sep = exact[i] == Verdict::Separated;
-        const int v = mm.classify(r1[i], r2[i]);
+        const int v = verdicts[i];
         if ((v > 0) != sep || v == 0) continue;  // wrong verdicts are counted already
         const std::optional<fp::Measure> me = mm.measure(r1[i], r2[i], sep);
         if (!me || me->depth == sep || !std::isfinite(me->value)) continue;
@@ -226,9 +227,10 @@ void measure_errors(const fp::Method& mm, const Model& m, const std::vector<doub
             const Vec3q q{exact_from_double(cp[1][0]), exact_from_double(cp[1][1]), exact_from_double(cp[1][2])};
             row.closest_outside += !contains(m, 0, a, p) || !contains(m, 1, b, q);
         }
-        if (me->direction && ((*me->direction)[0] != 0 || (*me->direction)[1] != 0 || (*me->direction)[2] != 0) &&
-            std::isfinite((*me->direction)[0] + (*me->direction)[1] + (*me->direction)[2])) {
-            const Vec3q n{exact_from_double((*me->direction)[0]), exact_from_double((*me->direction)[1]), exact_from_double((*me->direction)[2])};
+        if (!me->direction) continue;
+        const fp::D3& d = *me->direction;
+        if ((d[0] != 0 || d[1] != 0 || d[2] != 0) && std::isfinite(d[0] + d[1] + d[2])) {
+            const Vec3q n{exact_from_double(d[0]), exact_from_double(d[1]), exact_from_double(d[2])};
             const Q along = directional_depth_squared(m, n, a, b);
             if (sgn(along) >= 0)  // (a plane separating an overlapping pair does not exist)
                 row.direction_err_max = std::max(row.direction_err_max, (sqrt_minus_rn(along, Q(0)) - root) / root);
@@ -242,10 +244,16 @@ void measure_errors(const fp::Method& mm, const Model& m, const std::vector<doub
     for (double e : depth_err) row.depth_err_max = std::max(row.depth_err_max, e);
 }
 
-// Wrong verdicts at relative distances 2^-k from the curve, on 15 verticals, above and below.
-void wrong_by_distance(const fp::Method& mm, const Model& m, const Curve& c, const Scene& s, AuditRow& row) {
-    for (int k = 4; k <= 52; k += 4) {
-        AuditRow::ByDistance b{k};
+// The pairs at relative distances 2^-k from the curve (k = 4, 8, ..., 52), on 15 verticals, above
+// and below, rounded to doubles, with the exact verdicts of those doubles: built once per scene.
+struct DistancePairs {
+    std::vector<int> k;
+    std::vector<double> x, y;
+    std::vector<Verdict> exact;
+};
+DistancePairs distance_pairs(const Model& m, const Curve& c, const Scene& s) {
+    DistancePairs p;
+    for (int k = 4; k <= 52; k += 4)
         for (int j = 1; j < 16; ++j) {
             Q x = s.lo[0] + (s.hi[0] - s.lo[0]) * Q(j, 16);
             x.canonicalize();
@@ -253,17 +261,27 @@ void wrong_by_distance(const fp::Method& mm, const Model& m, const Curve& c, con
             if (sgn(y) <= 0) continue;
             for (int sg : {-1, 1}) {
                 const double xd = to_double_rn(x), yd = to_double_rn(y + sg * y / Q(Z(1) << k));
-                const Verdict e = query(m, c, exact_from_double(xd), exact_from_double(yd), false).verdict;
-                if (e == Verdict::Touching) {
-                    ++b.touching;
-                    continue;
-                }
-                ++b.pairs;
-                const int v = mm.classify(xd, yd);
-                b.wrong += (v > 0) != (e == Verdict::Separated) || v == 0;
+                p.k.push_back(k);
+                p.x.push_back(xd);
+                p.y.push_back(yd);
+                p.exact.push_back(query(m, c, exact_from_double(xd), exact_from_double(yd), false).verdict);
             }
         }
-        row.by_distance.push_back(b);
+    return p;
+}
+
+// The method's wrong verdicts on those pairs, per k; exactly touching pairs counted apart.
+void wrong_by_distance(const fp::Method& mm, const DistancePairs& p, AuditRow& row) {
+    for (int k = 4; k <= 52; k += 4) row.by_distance.push_back(AuditRow::ByDistance{k});
+    for (size_t i = 0; i < p.k.size(); ++i) {
+        AuditRow::ByDistance& b = row.by_distance[static_cast<size_t>(p.k[i] / 4 - 1)];
+        if (p.exact[i] == Verdict::Touching) {
+            ++b.touching;
+            continue;
+        }
+        ++b.pairs;
+        const int v = mm.classify(p.x[i], p.y[i]);
+        b.wrong += (v > 0) != (p.exact[i] == Verdict::Separated) || v == 0;
     }
 }
 
@@ -299,6 +317,8 @@ std::vector<AuditRow> audit_scene(const std::string& name, const Scene& s, const
     for (size_t i = 0; i < r1.size(); ++i) exact[i] = query(m, c, exact_from_double(r1[i]), exact_from_double(r2[i]), false).verdict;
     std::vector<AuditRow> rows;
     ExactCache cache(r1.size());
+    const DistancePairs near = by_distance ? distance_pairs(m, c, s) : DistancePairs{};
+    std::vector<int> verdicts(r1.size());
     for (const std::string& meth : methods) {
         if (meth == "grid") continue;
         std::unique_ptr<fp::Method> mm = fp::make_method(meth, m, f);
@@ -310,13 +330,13 @@ std::vector<AuditRow> audit_scene(const std::string& name, const Scene& s, const
         r.queries = static_cast<long>(r1.size());
         auto t0 = Clock::now();
         for (size_t i = 0; i < r1.size(); ++i) {
-            int v = mm->classify(r1[i], r2[i]);
+            const int v = verdicts[i] = mm->classify(r1[i], r2[i]);
             if (v > 0 && exact[i] != Verdict::Separated) ++r.false_separated;
             if (v < 0 && exact[i] == Verdict::Separated) ++r.false_overlapping;
         }
         r.seconds_per_query = std::chrono::duration<double>(Clock::now() - t0).count() / static_cast<double>(r1.size());
-        measure_errors(*mm, m, r1, r2, exact, cache, r);
-        if (by_distance) wrong_by_distance(*mm, m, c, s, r);
+        measure_errors(*mm, m, r1, r2, exact, verdicts, cache, r);
+        if (by_distance) wrong_by_distance(*mm, near, r);
         rows.push_back(r);
     }
     {
