@@ -89,6 +89,13 @@ struct Progress {
     }
 };
 
+// Runs a shard, writes its file atomically into the run folder, and returns the file's hash.
+std::string run_and_store(const CampaignArgs& a, const Shard& s, const std::string& run) {
+    const std::string text = run_shard(a, s);
+    scalecert::internal::write_file_atomically(shard_path(run, s.index), text);
+    return sha256_hex(text);
+}
+
 int fail(int rank, const std::string& msg, int status) {
     if (rank == 0) std::fprintf(stderr, "scalecert-mpi: error: %s\n", msg.c_str());
     MPI_Finalize();
@@ -203,9 +210,7 @@ int main(int argc, char** argv) {
                 while (may_start()) {
                     const int idx = todo[next++];
                     ++started;
-                    const std::string text = run_shard(a, shards[static_cast<size_t>(idx)]);
-                    scalecert::internal::write_file_atomically(shard_path(run, idx), text);
-                    record(idx, sha256_hex(text));
+                    record(idx, run_and_store(a, shards[static_cast<size_t>(idx)], run));
                 }
             } else {
                 int active = size - 1;
@@ -274,9 +279,7 @@ int main(int argc, char** argv) {
             MPI_Recv(&work, 1, MPI_INT, 0, kTagWork, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
             if (work < 0) break;
             try {
-                const std::string text = run_shard(a, shards[static_cast<size_t>(work)]);
-                scalecert::internal::write_file_atomically(shard_path(run, work), text);
-                result = Json{{"shard", work}, {"sha256", sha256_hex(text)}};
+                result = Json{{"shard", work}, {"sha256", run_and_store(a, shards[static_cast<size_t>(work)], run)}};
             } catch (const std::exception& e) {
                 result = Json{{"shard", work}, {"error", e.what()}};
             }
