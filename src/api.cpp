@@ -73,13 +73,8 @@ Point canonical(Point p) {
     return p;
 }
 
-std::shared_ptr<const Model> model_from(internal::Scene sc, const std::string& name) {
-    finish_scene(sc, name);
-    try {
-        return std::make_shared<const Model>(build_model(sc));
-    } catch (const InputError& e) {
-        throw InputError(name + ": " + e.what());
-    }
+std::shared_ptr<const Model> shared_model(const internal::Scene& sc, const std::string& name) {
+    return std::make_shared<const Model>(build_model(sc, name));
 }
 
 }  // namespace
@@ -102,16 +97,12 @@ Scene::Scene(std::vector<Point> p1, std::vector<Point> p2, Interval i1, Interval
         sc.lo[i].canonicalize();
         sc.hi[i].canonicalize();
     }
-    model_ = model_from(std::move(sc), "scene");
+    finish_scene(sc, "scene");
+    model_ = shared_model(sc, "scene");
 }
 
 Scene Scene::load(const std::string& path) {
-    const internal::Scene sc = load_scene(path);
-    try {
-        return Scene(std::make_shared<const Model>(build_model(sc)));
-    } catch (const InputError& e) {
-        throw InputError(path + ": " + e.what());
-    }
+    return Scene(shared_model(load_scene(path), path));
 }
 
 Scene Scene::from_meshes(const std::string& p1_path, const std::string& p2_path, Interval i1, Interval i2) {

@@ -319,4 +319,12 @@ Model build_model(const Scene& scene) {
     return m;
 }
 
+Model build_model(const Scene& scene, const std::string& name) {
+    try {
+        return build_model(scene);
+    } catch (const InputError& e) {
+        throw InputError(name + ": " + e.what());
+    }
+}
+
 }  // namespace scalecert::internal

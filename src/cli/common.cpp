@@ -56,14 +56,6 @@ void emit(const std::string& text, const std::string& out) {
     if (!std::cout) throw InputError("cannot write to standard output");
 }
 
-Model model_of(const internal::Scene& scene, const std::string& name) {
-    try {
-        return build_model(scene);
-    } catch (const InputError& e) {
-        throw InputError(name + ": " + e.what());
-    }
-}
-
 Q read_rho(const std::string& text, const char* name, const ReadOptions& opt) {
     Q r;
     try {
@@ -95,7 +87,7 @@ std::vector<Q> number_list(const std::string& text, size_t n, const std::string&
 Analysed analyse(const SceneArgs& args, StageClock& clock) {
     const internal::Scene scene = args.load();
     clock.lap("read scene");
-    Analysed a{model_of(scene, args.name()), {}};
+    Analysed a{build_model(scene, args.name()), {}};
     clock.restart();
     a.c = build_curve(a.m);
     clock.lap("envelope and curve");

@@ -30,8 +30,6 @@ struct SceneArgs {
 void add_out(CLI::App* sub, std::string& out);
 void emit(const std::string& text, const std::string& out);
 
-// The model of a scene; geometric errors (flat points, a seed outside) name it.
-Model model_of(const internal::Scene& scene, const std::string& name);
 Q read_rho(const std::string& text, const char* name, const ReadOptions& opt);
 // "A,B" or "A,B,C": numbers separated by commas, read as the scene reader reads them.
 std::vector<Q> number_list(const std::string& text, size_t n, const std::string& option, const ReadOptions& opt);

@@ -51,6 +51,8 @@ std::vector<size_t> undominated(const std::vector<double>& a, const std::vector<
 // normal of the Minkowski sum is found; lines certainly dominated (never on the touching curve,
 // never deciding a query) are dropped before their exact values are computed.
 Model build_model(const Scene& scene);
+// The same, with its errors (flat points, a seed outside) prefixed by `name` ("FILE: ...").
+Model build_model(const Scene& scene, const std::string& name);
 
 // Every facet normal of Q1 ⊕ (−Q2), primitive and sorted, the dominated ones included (Model::lines
 // keeps only those that can be on the curve). Recomputed on each call.
