@@ -106,6 +106,11 @@ private:
         const Q c2 = c * c;
         return (sgn(lo) <= 0 || lo * lo * E <= c2) && c2 <= hi * hi * E;
     }
+    // A squared length x that cannot be below the exact minimum E (a pair of points in the bodies,
+    // the depth along a direction), within the tolerance above it: E ≤ x ≤ (1 + tol)² E.
+    bool within_above(const Q& x, const Q& E) const {
+        return E <= x && x <= (1 + opt_.tolerance) * (1 + opt_.tolerance) * E;
+    }
     // claimed, exact, and the absolute and relative errors (exact, with nearest doubles).
     void errors(Json& o, const Q& claimed, const Q& exact) const {
         put_exact(o, "claimed", claimed);
@@ -384,8 +389,7 @@ private:
             o["closest_in_P1"] = in1;
             o["closest_in_P2"] = in2;
             put_exact(o, "closest_squared_distance", sq);
-            const bool ok = in1 && in2 && sgn(e.squared - sq) <= 0 &&
-                            (opt_.tolerance == 0 ? sq == e.squared : sq <= (1 + opt_.tolerance) * (1 + opt_.tolerance) * e.squared);
+            const bool ok = in1 && in2 && within_above(sq, e.squared);
             o["closest_right"] = ok;
             right = right && ok;
         }
@@ -416,8 +420,7 @@ private:
             // Moving P2 by the depth along n separates them exactly iff n attains the minimum.
             const Q along = directional_depth_squared(m_, n, r1, r2);
             put_exact(o, "depth_squared_along_direction", along);
-            const bool ok = opt_.tolerance == 0 ? along == e.squared
-                                                : along <= (1 + opt_.tolerance) * (1 + opt_.tolerance) * e.squared;
+            const bool ok = within_above(along, e.squared);
             o["direction_right"] = ok;
             right = right && ok;
         }
