@@ -6,6 +6,8 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <unistd.h>
 #include <string>
 
 using scalecert::Rational;
@@ -150,8 +152,26 @@ BOOST_AUTO_TEST_CASE(loaded_scene_certificate_passes_the_checker) {
     for (size_t n; (n = std::fread(buf, 1, sizeof buf, f)) > 0;) bundled.append(buf, n);
     std::fclose(f);
     BOOST_TEST(cert == bundled);  // the bundled certificate was written by the scalecert command
-    // The tetrahedron's lowest vertex (2,0,2) on the box's top face: the first piece is (V,F) and a
-    // switch follows (the scene's name: its curve switches inside I1).
-    BOOST_TEST_REQUIRE(!a.curve().pieces.empty());
-    BOOST_TEST(!a.curve().switches.empty());
+    // The independent checker accepts what the API wrote.
+    const std::string path = "/tmp/scalecert-test-api-" + std::to_string(::getpid()) + ".json";
+    std::FILE* out = std::fopen(path.c_str(), "wb");
+    BOOST_TEST_REQUIRE(out != nullptr);
+    std::fwrite(cert.data(), 1, cert.size(), out);
+    std::fclose(out);
+    const int st = std::system((std::string(SCALECERT_CHECK_BIN) + " " + path + " >/dev/null").c_str());
+    std::remove(path.c_str());
+    BOOST_TEST(st == 0);
+    // By hand (test_hand_curves): the lowest vertex v = (2,0,2), about the seed (0,0,9/2), is at
+    // (2ρ1, 0, 9/2 − 5ρ1/2); the box's top is at z = ρ2. Vertex on face: ρ2 = 9/2 − 5ρ1/2, until
+    // x = 2ρ1 reaches the top's edge x = ρ2 at (1, 2), a (V,E) switch.
+    const scalecert::Curve& c = a.curve();
+    BOOST_TEST_REQUIRE(c.pieces.size() >= 2u);
+    BOOST_TEST(c.pieces[0].slope == R(-5, 2));
+    BOOST_TEST(c.pieces[0].intercept == R(9, 2));
+    BOOST_TEST((c.pieces[0].contact.kind == scalecert::ContactKind::VF));
+    BOOST_TEST_REQUIRE(c.switches.size() >= 1u);
+    BOOST_TEST(c.switches[0].rho1 == R(1));
+    BOOST_TEST(c.switches[0].rho2 == R(2));
+    BOOST_TEST_REQUIRE(c.switches[0].contact.has_value());
+    BOOST_TEST((c.switches[0].contact->kind == scalecert::ContactKind::VE));
 }
