@@ -43,6 +43,18 @@ Json features(const std::vector<int>& f1, const std::vector<int>& f2) {
 Json model_json(const Model& m) {
     Json j;
     const char* names[2] = {"P1", "P2"};
+    if (m.scan) {  // the scan path (scan.hpp): no hull; what the walk did
+        const ScanStats& s = m.scan_stats;
+        j["engine"] = "scan";
+        for (int i = 0; i < 2; ++i) j[names[i]] = Json{{"points", m.scan->P[i].size()}};
+        j["contact_lines"] = m.lines.size();
+        j["support_queries"] = s.support_queries;
+        j["gift_wrap_steps"] = s.gift_wrap_steps;
+        j["start_lp"] = Json{{"solves", s.lp_solves}, {"rows", s.lp_rows}};
+        j["decided_by_filter"] = Json{{"support_comparisons", s.points_visited - s.candidates_exact}};
+        j["decided_exactly"] = Json{{"support_comparisons", s.candidates_exact}};
+        return j;
+    }
     for (int i = 0; i < 2; ++i)
         j[names[i]] = Json{{"vertices", m.P[i].vertices.size()}, {"edges", m.P[i].edges.size()}, {"faces", m.P[i].faces.size()}};
     j["facet_normals"] = m.stats.distinct_normals;

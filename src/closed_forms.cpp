@@ -5,10 +5,11 @@ namespace scalecert::internal {
 namespace {
 Q det3(const Vec3q& a, const Vec3q& b, const Vec3q& c) { return dot(a, cross(b, c)); }
 
-// Outward normal of the face through three of its vertices, from the vertices alone.
-Vec3q face_normal(const std::vector<Vec3q>& pts, const std::vector<int>& f, const Vec3q& seed) {
-    Vec3q n = cross(sub(pts[f[1]], pts[f[0]]), sub(pts[f[2]], pts[f[0]]));
-    if (sgn(dot(n, sub(pts[f[0]], seed))) < 0) n = {Q(-n[0]), Q(-n[1]), Q(-n[2])};
+// Outward normal of face f of polyhedron i through three of its vertices, from the vertices alone.
+Vec3q face_normal(const Model& m, int i, const std::vector<int>& f) {
+    const Vec3q a = m.pt(i, f[0]), b = m.pt(i, f[1]), c = m.pt(i, f[2]);
+    Vec3q n = cross(sub(b, a), sub(c, a));
+    if (sgn(dot(n, sub(a, m.s[i]))) < 0) n = {Q(-n[0]), Q(-n[1]), Q(-n[2])};
     return n;
 }
 
@@ -20,15 +21,13 @@ int kind(const std::string& c) {  // 1: face of P1, 2: face of P2, 3: edge-edge
 }  // namespace
 
 ClosedLine closed_form_line(const Model& m, const ContactLine& L) {
-    const auto& p1 = m.P[0].points;
-    const auto& p2 = m.P[1].points;
     const Vec3q &s1 = m.s[0], &s2 = m.s[1];
     ClosedLine c;
     switch (kind(L.contact)) {
     case 1: {  // (F,V): ρ2 = (ρ1 n1·(a1−s1) + n1·(s1−s2)) / n1·(c2−s2)
-        Vec3q n1 = face_normal(p1, L.feat1, s1);
-        const Vec3q& a1 = p1[L.feat1[0]];
-        const Vec3q& c2 = p2[L.feat2[0]];
+        Vec3q n1 = face_normal(m, 0, L.feat1);
+        const Vec3q a1 = m.pt(0, L.feat1[0]);
+        const Vec3q c2 = m.pt(1, L.feat2[0]);
         c.alpha = dot(n1, sub(a1, s1));
         c.beta = dot(n1, sub(s1, s2));
         c.gamma = dot(n1, sub(c2, s2));
@@ -36,9 +35,9 @@ ClosedLine closed_form_line(const Model& m, const ContactLine& L) {
         break;
     }
     case 2: {  // (V,F): (i) with the roles exchanged, solved for ρ2
-        Vec3q n2 = face_normal(p2, L.feat2, s2);
-        const Vec3q& a2 = p2[L.feat2[0]];
-        const Vec3q& c1 = p1[L.feat1[0]];
+        Vec3q n2 = face_normal(m, 1, L.feat2);
+        const Vec3q a2 = m.pt(1, L.feat2[0]);
+        const Vec3q c1 = m.pt(0, L.feat1[0]);
         c.alpha = dot(n2, sub(c1, s1));
         c.beta = dot(n2, sub(s1, s2));
         c.gamma = dot(n2, sub(a2, s2));
@@ -46,8 +45,8 @@ ClosedLine closed_form_line(const Model& m, const ContactLine& L) {
         break;
     }
     default: {  // (E,E): ρ2 = (det[VS] + ρ1 det[VV]) / det[A]
-        const Vec3q &v11 = p1[L.feat1[0]], &v12 = p1[L.feat1[1]];
-        const Vec3q &v21 = p2[L.feat2[0]], &v22 = p2[L.feat2[1]];
+        const Vec3q v11 = m.pt(0, L.feat1[0]), v12 = m.pt(0, L.feat1[1]);
+        const Vec3q v21 = m.pt(1, L.feat2[0]), v22 = m.pt(1, L.feat2[1]);
         Vec3q e1 = sub(v11, v12);  // −(v12 − v11)
         Vec3q e2 = sub(v22, v21);
         c.alpha = det3(e1, sub(v11, s1), e2);

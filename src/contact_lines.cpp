@@ -24,12 +24,12 @@ Numerators numerators(const Model& m, const Vec3z& n, const Z& S1, const Z& S2) 
 }
 }  // namespace
 
-ContactLine line_for_normal(const Model& m, const Vec3z& n) {
+ContactLine make_line(const Model& m, const Vec3z& n, std::vector<int> feat1, std::vector<int> feat2, const Z& sup1,
+                      const Z& sup2) {
     ContactLine L;
     L.normal = n;
-    Z sup1, sup2;
-    L.feat1 = m.P[0].argmax(n, nullptr, &sup1);
-    L.feat2 = m.P[1].argmax(neg(n), nullptr, &sup2);
+    L.feat1 = std::move(feat1);
+    L.feat2 = std::move(feat2);
     const auto [H1, H2, ND] = numerators(m, n, sup1, sup2);
     const Z D1 = m.P[0].scale * m.sden[0], D2 = m.P[1].scale * m.sden[1];
     auto frac = [](const Z& p, const Z& q) { Q r(p, q); r.canonicalize(); return r; };
@@ -42,9 +42,12 @@ ContactLine line_for_normal(const Model& m, const Vec3z& n) {
     return L;
 }
 
-namespace {
-
-}  // namespace
+ContactLine line_for_normal(const Model& m, const Vec3z& n) {
+    Z sup1, sup2;
+    std::vector<int> f1 = m.P[0].argmax(n, nullptr, &sup1);
+    std::vector<int> f2 = m.P[1].argmax(neg(n), nullptr, &sup2);
+    return make_line(m, n, std::move(f1), std::move(f2), sup1, sup2);
+}
 
 std::vector<size_t> undominated(const std::vector<double>& a, const std::vector<double>& b) {
     // A line whose approximations are not finite is kept, and takes no part in the sweep: it is

@@ -80,7 +80,7 @@ Contact contact_at(const Model& m, const ContactLine& L, const ContactLine& R, c
         std::set_intersection(fl[i]->begin(), fl[i]->end(), fr[i]->begin(), fr[i]->end(), std::back_inserter(A[i]));
         if (A[i].empty() || is_zero(u)) throw std::logic_error("contact_at: point not on a consistent contact");
         for (int k : A[i]) {
-            const Vec3q& v = m.P[i].points[k];
+            const Vec3q v = m.pt(i, k);
             Q x = 0;
             for (int c = 0; c < 3; ++c) x += Q(u[c]) * (m.s[i][c] + rho[i] * (v[c] - m.s[i][c]));
             t[i].push_back(x);

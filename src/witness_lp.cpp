@@ -60,4 +60,23 @@ std::optional<CommonPoint> common_point(const std::vector<Vec3q>& A, const std::
     return cp;
 }
 
+std::optional<std::vector<Q>> maximise_free(const std::vector<std::vector<Q>>& A, const std::vector<Q>& b,
+                                            const std::vector<Q>& c) {
+    Program lp(CGAL::SMALLER, false, ET(0), false, ET(0));
+    for (size_t i = 0; i < A.size(); ++i) {
+        std::vector<std::pair<int, Q>> r;
+        for (size_t j = 0; j < A[i].size(); ++j) r.push_back({static_cast<int>(j), A[i][j]});
+        set_row(lp, static_cast<int>(i), r, b[i], CGAL::SMALLER);
+    }
+    Z l = 1;  // the objective in integers: minimise −c·x
+    for (const Q& q : c) mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), q.get_den_mpz_t());
+    for (size_t j = 0; j < c.size(); ++j)
+        if (sgn(c[j])) lp.set_c(static_cast<int>(j), to_et(Z(-c[j] * l)));
+    auto s = CGAL::solve_linear_program(lp, ET());
+    if (!s.is_optimal()) return std::nullopt;
+    std::vector<Q> v = values(s, c.size());
+    if (v.size() != c.size()) v.resize(c.size(), Q(0));
+    return v;
+}
+
 }  // namespace scalecert::internal

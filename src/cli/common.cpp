@@ -1,7 +1,9 @@
 #include "common.hpp"
 
 #include "scalecert/mesh.hpp"
+#include "scalecert/scan.hpp"
 
+#include <future>
 #include <iostream>
 
 namespace scalecert::cli {
@@ -41,6 +43,45 @@ internal::Scene SceneArgs::load() const {
     }
     finish_scene(sc, "command line");
     return sc;
+}
+
+std::shared_ptr<const internal::CompactScene> SceneArgs::load_compact() const {
+    const bool meshes = path.empty() && !mesh[0].empty() && !mesh[1].empty() && !interval[0].empty() && !interval[1].empty();
+    if (meshes && !opt.binary_doubles) {
+        auto cs = std::make_shared<internal::CompactScene>();
+        bool fast = true;
+        // Both files at once (a thread each); errors in the order of the files.
+        std::future<std::optional<internal::IntPoints>> read[2];
+        for (int i = 0; i < 2; ++i)
+            read[i] = std::async(std::launch::async, [this, i]() -> std::optional<internal::IntPoints> {
+                if (internal::mesh_format_of(mesh[i]) != internal::MeshFormat::Off) return std::nullopt;
+                return internal::parse_off_fast(read_input(mesh[i], "mesh file", internal::kMaxSceneBytes));
+            });
+        std::optional<internal::IntPoints> pts[2];
+        for (int i = 0; i < 2; ++i) pts[i] = read[i].get();
+        for (int i = 0; i < 2 && fast; ++i) {
+            std::optional<internal::IntPoints>& p = pts[i];
+            if (!p) {
+                fast = false;
+                break;
+            }
+            cs->P[i] = std::move(*p);
+            const std::string n = std::to_string(i + 1);
+            const std::vector<Q> r = number_list(interval[i], 2, "--i" + n, opt);
+            cs->lo[i] = r[0];
+            cs->hi[i] = r[1];
+            if (!seed[i].empty()) {
+                const std::vector<Q> sd = number_list(seed[i], 3, "--seed" + n, opt);
+                cs->seed[i] = {sd[0], sd[1], sd[2]};
+                cs->seed_given[i] = true;
+            } else {
+                cs->seed[i] = cs->P[i].mean();
+            }
+        }
+        if (fast) return cs;
+    }
+    auto cs = internal::compact_scene(load());
+    return cs ? std::make_shared<internal::CompactScene>(std::move(*cs)) : nullptr;
 }
 
 std::string SceneArgs::name() const { return path.empty() ? "--p1 " + mesh[0] + " --p2 " + mesh[1] : path; }
@@ -92,6 +133,31 @@ Analysed analyse(const SceneArgs& args, StageClock& clock) {
     a.c = build_curve(a.m);
     clock.lap("envelope and curve");
     return a;
+}
+
+Analysed analyse_curve(const SceneArgs& args, Engine engine, StageClock& clock) {
+    if (engine != Engine::Hull) {
+        std::shared_ptr<const internal::CompactScene> cs = args.load_compact();
+        clock.lap("read scene (compact)");
+        if (cs && (engine == Engine::Scan || cs->P[0].size() + cs->P[1].size() >= kScanFrom)) {
+            try {
+                Analysed a{internal::scan_model(cs), {}};
+                a.c = build_curve(a.m);
+                clock.lap("envelope and curve");
+                return a;
+            } catch (const internal::NeedHull& e) {
+                if (std::getenv("SCALECERT_TIMING")) std::fprintf(stderr, "scalecert: scan path: %s; the hull path decides\n", e.what());
+            }
+        }
+        if (cs) {  // the hull path on the same points (read once)
+            Analysed a{build_model(internal::full_scene(*cs), args.name()), {}};
+            clock.restart();
+            a.c = build_curve(a.m);
+            clock.lap("envelope and curve");
+            return a;
+        }
+    }
+    return analyse(args, clock);
 }
 
 internal::Segment parse_segment(const std::string& spec, const Model& m) {

@@ -22,6 +22,9 @@ struct SceneArgs {
     ReadOptions opt;
     void add(CLI::App* sub);        // the options, with --binary-doubles
     internal::Scene load() const;   // refuses both forms at once, and neither
+    // The scene in compact form (IntPoints), read straight from OFF files of plain decimals when
+    // given as --p1/--p2; otherwise through load(). Null when the points do not fit IntPoints.
+    std::shared_ptr<const internal::CompactScene> load_compact() const;
     std::string name() const;       // the scene file, or "--p1 A --p2 B": prefixes geometric errors
 };
 
@@ -42,6 +45,11 @@ struct Analysed {
     internal::Curve c;
 };
 Analysed analyse(const SceneArgs& scene, internal::StageClock& clock);
+// Which engine builds the curve: the scan path (scan.hpp) with the hull path as its fallback, or
+// the hull path alone. Auto takes the scan path from kScanFrom points (both polyhedra together).
+enum class Engine { Auto, Scan, Hull };
+constexpr size_t kScanFrom = 2000;
+Analysed analyse_curve(const SceneArgs& scene, Engine engine, internal::StageClock& clock);
 // A segment for --segment: seeds | ellipsoids | x1,y1,z1:x2,y2,z2.
 internal::Segment parse_segment(const std::string& spec, const Model& m);
 

@@ -8,18 +8,24 @@ using namespace internal;
 Command add_curve(CLI::App& app) {
     struct Args {
         SceneArgs scene;
-        std::string out, segment;
+        std::string out, segment, engine = "auto";
     };
     auto a = std::make_shared<Args>();
     CLI::App* sub = app.add_subcommand("curve", "the touching curve over I1, its switch points and the growth distance (JSON)");
     a->scene.add(sub);
     add_out(sub, a->out);
     sub->add_option("--segment", a->segment, "add the t1-t2 curve along a segment: seeds | ellipsoids | x1,y1,z1:x2,y2,z2");
+    sub->add_option("--engine", a->engine, "auto (default) | scan (walk the curve: no hull; the hull path if it cannot) | hull")
+        ->check(CLI::IsMember({"auto", "scan", "hull"}));
     example(sub, "Examples:\n  scalecert curve certificates/scenes/tetra_box_switch.json\n"
                  "  scalecert curve --p1 examples/tetra.obj --p2 examples/box.stl --i1 1/2,2 --i2 1,4 --out curve.json");
     return {sub, [a] {
                 StageClock clock;
-                const Analysed an = analyse(a->scene, clock);
+                // --segment lists the faces of both hulls: the hull path.
+                const Engine e = !a->segment.empty() || a->engine == "hull" ? Engine::Hull
+                                 : a->engine == "scan"                       ? Engine::Scan
+                                                                             : Engine::Auto;
+                const Analysed an = analyse_curve(a->scene, e, clock);
                 Json j = curve_json(an.m, an.c);
                 if (!a->segment.empty()) add_segment_json(j, an.m, an.c, parse_segment(a->segment, an.m));
                 emit(dump(j), a->out);

@@ -2,10 +2,12 @@
 // crossing Gauss-map arcs of edge pairs): the pair is separated by the plane of normal n iff
 //   n·d > ρ1·h1(n) + ρ2·h2(n),  i.e.  ρ2 < (n·d − ρ1·h1)/h2  =  slope·ρ1 + intercept.
 #pragma once
+#include "scalecert/int_points.hpp"
 #include "scalecert/polyhedron.hpp"
 #include "scalecert/scene.hpp"
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -29,8 +31,16 @@ struct LineStats {
     std::uint64_t dominated_lines = 0;  // facet normals whose lines were certainly dominated
 };
 
+// What the scan path did (scan.hpp): engine statistics, reported in its curve's "model".
+struct ScanStats {
+    std::uint64_t support_queries = 0, points_visited = 0;  // exact support queries, points whose value was formed
+    std::uint64_t candidates_exact = 0;                     // points whose value was then formed exactly
+    std::uint64_t lp_solves = 0, lp_rows = 0;               // the start: exact LPs and their final size
+    std::uint64_t gift_wrap_steps = 0, pieces_walked = 0;
+};
+
 struct Model {
-    Scene scene;
+    Scene scene;  // on the scan path: seeds and ranges only (the points are in `scan`)
     Polyhedron P[2];
     Vec3q s[2];
     Vec3q d;  // s2 − s1
@@ -40,6 +50,11 @@ struct Model {
     // d = dz / dden.
     Vec3z sz[2], dz;
     Z sden[2], dden;
+    // The scan path's points (scan.hpp); null on the hull path.
+    std::shared_ptr<const CompactScene> scan;
+    ScanStats scan_stats;
+    // Point k of polyhedron i as given, on either path.
+    Vec3q pt(int i, size_t k) const { return scan ? scan->P[i].point(k) : P[i].points[k]; }
 };
 
 // The indices of the lines y = a[i]·x + b[i] not certainly dominated by another (larger slope and
@@ -61,5 +76,9 @@ std::vector<Vec3z> all_facet_normals(const Model& m);
 // The line of normal n (any nonzero direction, not necessarily a facet normal of the sum):
 // support values, features and the line, computed by scanning the polyhedra.
 ContactLine line_for_normal(const Model& m, const Vec3z& n);
+// The line of normal n from its contact features (maximisers, sorted) and the maxima of n·x over
+// P1's and of −n·x over P2's points times their scales.
+ContactLine make_line(const Model& m, const Vec3z& n, std::vector<int> feat1, std::vector<int> feat2, const Z& sup1,
+                      const Z& sup2);
 
 }  // namespace scalecert::internal

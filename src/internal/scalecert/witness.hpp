@@ -12,4 +12,9 @@ namespace scalecert::internal {
 struct CommonPoint { std::vector<Q> lambda, mu; };
 std::optional<CommonPoint> common_point(const std::vector<Vec3q>& A, const std::vector<Vec3q>& B);
 
+// Maximises c·x over free x ∈ Q^k subject to A_i·x ≤ b_i, exactly: a basic optimal solution, or
+// none when the program is infeasible or unbounded.
+std::optional<std::vector<Q>> maximise_free(const std::vector<std::vector<Q>>& A, const std::vector<Q>& b,
+                                            const std::vector<Q>& c);
+
 }  // namespace scalecert::internal

@@ -1,0 +1,35 @@
+// Stage 3, output-sensitive: the contact lines of the touching curve only, found by walking along
+// it (no hull, no Gauss-map overlay). Cost grows with the pieces of the curve over the range it
+// reports, times the cost of an exact support query (a bounding-volume tree over the points,
+// double filter with a proven bound, exact stage on the few candidates).
+//
+// The walk is its own proof. A piece with normal n holds over [xl, xr] when, for every x there,
+// d lies in the face G(x) = x·(F1 − s1) + y(x)·(s2 − F2) of the Minkowski sum with normal n (F1,
+// F2: the exact support polygons of n); then the pair touches at (x, y(x)), so the curve is that
+// line there. Consecutive pieces share their end points, and their union covers I1 and the
+// growth distance. A floating-point free start (an exact LP by column generation at ρ1 = lo1)
+// and the next normal at each switch (exact gift wrapping about the exit edge of G) only propose;
+// the intervals decide.
+#pragma once
+#include "scalecert/contact_lines.hpp"
+#include "scalecert/int_points.hpp"
+
+#include <memory>
+#include <stdexcept>
+
+namespace scalecert::internal {
+
+// The scan path meets something it does not handle (a curve vertex where d is at a corner of a
+// face, identical lines, a range where ρ2 ≤ 0, a seed it cannot prove interior quickly):
+// build_model on the full scene decides instead, with the same output.
+struct NeedHull : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+// The model of the curve: Model::lines holds the lines of the pieces walked (sorted by normal),
+// Model::scan the points; the polyhedra carry no hull. Enough for build_curve and curve_json.
+// Throws InputError for a scene the hull path would refuse too (fewer than 4 points, lo > hi),
+// and NeedHull.
+Model scan_model(std::shared_ptr<const CompactScene> sc);
+
+}  // namespace scalecert::internal

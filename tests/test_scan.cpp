@@ -1,0 +1,177 @@
+// The scan path (scan.hpp) against the hull path: the same curve document, byte for byte apart
+// from the engine statistics ("model"), on random scenes of every number kind and on the bundled
+// scenes; and the compact OFF reader against the full one.
+#define BOOST_TEST_MODULE scan
+#include <boost/test/unit_test.hpp>
+
+#include "files.hpp"
+#include "scalecert/mesh.hpp"
+#include "scalecert/scan.hpp"
+#include "support.hpp"
+
+#include <cmath>
+#include <filesystem>
+
+using namespace scalecert::internal;
+using test::qc;
+
+namespace {
+
+std::string without_model(const Model& m, const Curve& c) {
+    Json j = curve_json(m, c);
+    j.erase("model");
+    return dump(j);
+}
+
+struct Tally {
+    int scanned = 0, fell_back = 0;
+};
+
+// Compares both paths on a scene; returns whether the scan path decided it.
+bool compare(const Scene& sc, const std::string& what, Tally& t) {
+    const Model hm = build_model(sc);
+    const std::string hull = without_model(hm, build_curve(hm));
+    auto cs = compact_scene(sc);
+    if (!cs) {  // beyond machine integers (e.g. doubles with 52-bit fractions): the hull path only
+        ++t.fell_back;
+        return false;
+    }
+    try {
+        const Model sm = scan_model(std::make_shared<CompactScene>(std::move(*cs)));
+        const Curve c = build_curve(sm);
+        BOOST_TEST(curve_json(sm, c)["model"]["engine"] == "scan");
+        BOOST_TEST(without_model(sm, c) == hull, what);
+        ++t.scanned;
+        return true;
+    } catch (const NeedHull&) {
+        ++t.fell_back;
+        return false;
+    }
+}
+
+// Points near a sphere of radius R about o, coordinates multiples of 1/den.
+std::vector<Vec3q> sphere(std::mt19937& g, int n, double R, long den, const Vec3q& o) {
+    std::normal_distribution<double> N(0, 1);
+    std::vector<Vec3q> p;
+    for (int i = 0; i < n; ++i) {
+        double x = N(g), y = N(g), z = N(g), l = std::sqrt(x * x + y * y + z * z);
+        p.push_back({o[0] + qc(std::lround(R * den * x / l), den), o[1] + qc(std::lround(R * den * y / l), den),
+                     o[2] + qc(std::lround(R * den * z / l), den)});
+    }
+    return p;
+}
+
+Scene with_means(Scene sc, const Q& lo, const Q& hi) {
+    for (int i = 0; i < 2; ++i) {
+        sc.lo[i] = lo;
+        sc.hi[i] = hi;
+    }
+    finish_scene(sc, "test");
+    return sc;
+}
+
+}  // namespace
+
+// Near-spheres, the case the scan path exists for, in integers, decimals (k/1000), fractions
+// (k/7) and binary fractions (k/2^20, what doubles of that grid are): the scan path must decide
+// every one and agree with the hull path.
+BOOST_AUTO_TEST_CASE(near_spheres_of_every_number_kind) {
+    std::mt19937 g(11);
+    Tally t;
+    const long dens[] = {1, 1000, 7, 1L << 20};
+    for (long den : dens)
+        for (int rep = 0; rep < 6; ++rep) {
+            std::uniform_int_distribution<int> n(40, 400), off(-3, 3);
+            const double R = 50 + 10 * rep;
+            Scene sc;
+            sc.P[0].points = sphere(g, n(g), R, den, {Q(0), Q(0), Q(0)});
+            sc.P[1].points = sphere(g, n(g), R * (1 + 0.2 * rep), den, {Q(3 * R), Q(off(g) * 10), Q(off(g) * 10)});
+            sc = with_means(sc, qc(1, 2), Q(2));
+            BOOST_TEST(compare(sc, "near-sphere den " + std::to_string(den) + " #" + std::to_string(rep), t));
+        }
+    BOOST_TEST_MESSAGE("near-spheres: " << t.scanned << " by the scan path");
+}
+
+// Random small polytopes (many coplanar points, degenerate contacts): whatever the scan path
+// decides must agree; it may hand the rest to the hull path, but not most of them.
+BOOST_AUTO_TEST_CASE(random_scenes_agree_or_fall_back) {
+    std::mt19937 g(5);
+    Tally t;
+    for (int rep = 0; rep < 120; ++rep) {
+        std::uniform_int_distribution<int> n(4, 30);
+        Scene sc = test::random_scene(g, n(g), n(g));
+        // Keep I1 where the curve is above 0 for most scenes, and vary it.
+        std::uniform_int_distribution<int> a(1, 8);
+        const Q lo = qc(a(g), 8), hi = lo + qc(a(g), 4);
+        for (int i = 0; i < 2; ++i) sc.lo[i] = lo, sc.hi[i] = hi;
+        compare(sc, "random #" + std::to_string(rep), t);
+    }
+    BOOST_TEST_MESSAGE("random: " << t.scanned << " by the scan path, " << t.fell_back << " by the hull path");
+    BOOST_TEST(t.scanned >= 60);
+}
+
+// Decimal boxes turned by exact rotations (faces, edges and vertices in contact, (V,E) switches).
+BOOST_AUTO_TEST_CASE(turned_boxes_in_decimals) {
+    Tally t;
+    for (int rep = 0; rep < 12; ++rep) {
+        Scene sc;
+        for (int x : {-1, 1}) for (int y : {-1, 1}) for (int z : {-1, 1}) sc.P[0].points.push_back({Q(x), Q(y), qc(z * 3, 2)});
+        // cos = 0.6, sin = 0.8 (3-4-5): decimals, turned about z then x, shifted by rep/10.
+        for (int x : {-2, 2}) for (int y : {-1, 1}) for (int z : {-1, 1}) {
+            const Q X = qc(6 * x - 8 * y, 10), Y = qc(8 * x + 6 * y, 10), Z = Q(z);
+            const Q Y2 = qc(6, 10) * Y - qc(8, 10) * Z, Z2 = qc(8, 10) * Y + qc(6, 10) * Z;
+            sc.P[1].points.push_back({X + 4, Y2 + qc(rep, 10), Z2 + qc(rep, 20)});
+        }
+        sc = with_means(sc, qc(1, 2), Q(3));
+        compare(sc, "turned box #" + std::to_string(rep), t);
+    }
+    BOOST_TEST_MESSAGE("boxes: " << t.scanned << " by the scan path, " << t.fell_back << " by the hull path");
+    BOOST_TEST(t.scanned >= 6);
+}
+
+// Every bundled scene: the same document either way (each may fall back).
+BOOST_AUTO_TEST_CASE(bundled_scenes) {
+    Tally t;
+    for (const auto& e : std::filesystem::directory_iterator(std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes")) {
+        const Scene sc = load_scene(e.path().string());
+        compare(sc, e.path().filename().string(), t);
+    }
+    BOOST_TEST_MESSAGE("bundled: " << t.scanned << " by the scan path, " << t.fell_back << " by the hull path");
+    BOOST_TEST(t.scanned + t.fell_back == 7);
+}
+
+// The compact reader gives exactly the full reader's points, or leaves the file to it.
+BOOST_AUTO_TEST_CASE(compact_off_reader) {
+    auto same = [](const std::string& text) {
+        auto fast = parse_off_fast(text);
+        BOOST_REQUIRE_MESSAGE(fast, text);
+        BOOST_TEST((q_points(*fast) == parse_mesh(text, MeshFormat::Off, "t")));
+    };
+    same("OFF\n4 0 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n");
+    same("OFF 4 4 6\n1.5 -2.25e1 +3E-2\n-0.001 7 100e-3\n1234567890123 0 0\n0 0 -1e3\n3 0 1 2\n");
+    same("OFF\n4 0 0\n0.10 0.2 0.300\n-0 -0.0 5\n1e0 2E+1 3e-1\n9 9 9\n trailing text is not read\n");
+    // Random decimals with random exponents.
+    std::mt19937 g(3);
+    std::uniform_int_distribution<long> m(-99999, 99999);
+    std::uniform_int_distribution<int> e(-3, 3), f(0, 3);
+    for (int rep = 0; rep < 50; ++rep) {
+        std::string t = "OFF\n20 0 0\n";
+        for (int i = 0; i < 60; ++i) {
+            std::string s = std::to_string(m(g));
+            const int fd = f(g);
+            if (fd && s.size() > static_cast<size_t>(fd + 1)) s.insert(s.size() - static_cast<size_t>(fd), ".");
+            const int x = e(g);
+            if (x) s += "e" + std::to_string(x);
+            t += s + (i % 3 == 2 ? "\n" : " ");
+        }
+        same(t);
+    }
+    // Left to the full reader: comments, fractions, too many digits, huge values, a bad header.
+    for (const char* t : {"OFF\n4 0 0\n0 0 0 # here\n1 0 0\n0 1 0\n0 0 1\n", "OFF\n4 0 0\n1/2 0 0\n1 0 0\n0 1 0\n0 0 1\n",
+                          "OFF\n4 0 0\n1234567890123456789 0 0\n1 0 0\n0 1 0\n0 0 1\n",
+                          "OFF\n4 0 0\n1e30 0 0\n1 0 0\n0 1 0\n0 0 1\n", "OFF\n4 0 0\n1e-30 0 0\n1 0 0\n0 1 0\n0 0 1\n",
+                          "OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n", "OFF\n4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n",
+                          "OFF\n4 0 0\n0 0 0\n1 0 0\n0 1 0\n0 0\n", "OFF\n4 0 0\n1. 0 0\n1 0 0\n0 1 0\n0 0 1\n",
+                          "OFF\n4 0 0\n.5 0 0\n1 0 0\n0 1 0\n0 0 1\n", "COFF\n4 0 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n"})
+        BOOST_TEST(!parse_off_fast(t), t);
+}
