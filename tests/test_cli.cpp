@@ -5,7 +5,10 @@
 
 #include "files.hpp"
 
+#include <nlohmann/json.hpp>
 #include <sys/wait.h>
+
+#include <cmath>
 
 #include <filesystem>
 #include <fstream>
@@ -518,4 +521,57 @@ BOOST_AUTO_TEST_CASE(json_claims_from_the_command_line) {
     BOOST_TEST(run("certify-fp " + sc + " " + g.string() + " --tolerance 1e-11").status == 1);
     expect_error("negative tolerance", "certify-fp " + sc + " " + g.string() + " --tolerance -1", "--tolerance must be >= 0");
     expect_error("bad tolerance", "certify-fp " + sc + " " + g.string() + " --tolerance x", "--tolerance");
+}
+
+// ---- the scan path (issue 13): the same curve as the hull path; large meshes take it by default --
+namespace {
+// n points near a sphere of radius 50 about (cx, 0, 0), written as decimals with two places.
+std::string sphere_off(int n, double cx, unsigned seed) {
+    std::mt19937 g(seed);
+    std::normal_distribution<double> N(0, 1);
+    std::ostringstream o;
+    o << "OFF\n" << n << " 0 0\n";
+    char buf[128];
+    for (int i = 0; i < n; ++i) {
+        double x = N(g), y = N(g), z = N(g), l = std::sqrt(x * x + y * y + z * z);
+        std::snprintf(buf, sizeof buf, "%.2f %.2f %.2f\n", cx + 50 * x / l, 50 * y / l, 50 * z / l);
+        o << buf;
+    }
+    return o.str();
+}
+std::string without_model(const std::string& json) {
+    auto j = nlohmann::json::parse(json);
+    j.erase("model");
+    return j.dump();
+}
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(curve_engines_agree_and_large_meshes_scan) {
+    const std::string a = write("s1.off", sphere_off(1200, 0, 1)).string(), b = write("s2.off", sphere_off(1300, 160, 2)).string();
+    const std::string args = "curve --p1 " + a + " --p2 " + b + " --i1 1/2,2 --i2 1/2,2";
+    const Run automatic = run(args), hull = run(args + " --engine hull"), scan = run(args + " --engine scan");
+    BOOST_REQUIRE(automatic.status == 0);
+    BOOST_REQUIRE(hull.status == 0);
+    BOOST_TEST(nlohmann::json::parse(automatic.out)["model"]["engine"] == "scan");  // 2,500 points: the scan path
+    BOOST_TEST(!nlohmann::json::parse(hull.out)["model"].contains("engine"));
+    BOOST_TEST(without_model(automatic.out) == without_model(hull.out));
+    BOOST_TEST(scan.out == automatic.out);
+    // The bundled scenes through the command: the same document with either engine.
+    for (const auto& e : fs::directory_iterator(fs::path(SCALECERT_SOURCE_DIR) / "certificates" / "scenes")) {
+        const Run s = run("curve --engine scan " + e.path().string()), h = run("curve --engine hull " + e.path().string());
+        BOOST_TEST(s.status == 0);
+        BOOST_TEST(without_model(s.out) == without_model(h.out), e.path().filename());
+    }
+    // Bad input: the same one line whichever engine reads it.
+    const std::string small = write("s3.off", sphere_off(30, 0, 3)).string();
+    for (const std::string& bad : {"--p1 " + a + " --p2 " + b + " --i1 0,2 --i2 1,2", "--p1 " + a + " --p2 " + b + " --i1 2,1 --i2 1,2",
+                                   "--p1 " + a + " --p2 " + write("three.off", "OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n").string() + " --i1 1,2 --i2 1,2",
+                                   "--p1 " + a + " --p2 " + small + " --i1 1,2 --i2 1,2 --seed1 500,0,0",
+                                   "--p1 " + a + " --p2 /nonexistent.off --i1 1,2 --i2 1,2"}) {
+        const Run s = run("curve --engine scan " + bad), h = run("curve --engine hull " + bad);
+        BOOST_TEST(s.status == 2, bad);
+        BOOST_TEST(s.err == h.err, bad);
+        BOOST_TEST(s.out.empty());
+    }
+    expect_error("--engine unknown", "curve --engine fast --p1 " + a + " --p2 " + b + " --i1 1,2 --i2 1,2", "--engine");
 }

@@ -1,13 +1,23 @@
 // scalecert-bench: speed of the exact engine against floating-point baselines measured in the
-// same run, reported as ratios. Usage: scalecert-bench [--quick]
+// same run, reported as ratios. Usage: scalecert-bench [--quick] [--sizes] [--with-slow]
+// (--sizes: only the whole-process table of the hull and scan paths on 10^3..10^6 points;
+// --with-slow adds the hull path on two 10^6-point near-spheres: two minutes and 7 GB.)
 #include "scalecert/audit.hpp"
 #include "scalecert/baselines.hpp"
 #include "scalecert/families.hpp"
 #include "scalecert/fast_query.hpp"
 #include "scalecert/quick_query.hpp"
 
+#include <spawn.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <chrono>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
 #include <cstdio>
 #include <cstring>
 #include <random>
@@ -144,10 +154,112 @@ void growth(const std::string& name, const Scene& sc) {
     std::fprintf(stderr, "  %s\n", b);
 }
 
+// ---- The whole `scalecert curve` process on large meshes: hull path against scan path ----------
+
+extern "C" char** environ;
+
+struct ProcessRun { double seconds; long peak_kb; int status; };
+// Runs `scalecert args...` with its output in `out`, and measures wall time and peak resident size.
+ProcessRun run_scalecert(const std::vector<std::string>& args) {
+    static const std::string bin = (std::filesystem::canonical("/proc/self/exe").parent_path() / "scalecert").string();
+    std::vector<std::string> all{bin};
+    all.insert(all.end(), args.begin(), args.end());
+    std::vector<char*> argv;
+    for (auto& a : all) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    auto t0 = Clock::now();
+    pid_t pid;
+    if (posix_spawn(&pid, bin.c_str(), nullptr, nullptr, argv.data(), environ) != 0) return {0, 0, -1};
+    int st = 0;
+    struct rusage ru {};
+    wait4(pid, &st, 0, &ru);
+    return {std::chrono::duration<double>(Clock::now() - t0).count(), ru.ru_maxrss, WIFEXITED(st) ? WEXITSTATUS(st) : -1};
+}
+
+// n points per polytope as an OFF file of integers: near a sphere of radius R (every point a
+// hull vertex, or nearly), or uniform in the ball (most points interior), offset by (3R, R/10, 0).
+void write_cloud(const std::string& path, int n, long R, bool on_sphere, bool second, unsigned seed) {
+    std::mt19937_64 g(seed);
+    std::normal_distribution<double> N(0, 1);
+    std::uniform_real_distribution<double> U(0, 1);
+    std::ofstream o(path);
+    o << "OFF\n" << n << " 0 0\n";
+    for (int k = 0; k < n; ++k) {
+        double x = N(g), y = N(g), z = N(g), l = std::sqrt(x * x + y * y + z * z);
+        const double r = on_sphere ? R : R * std::cbrt(U(g));
+        o << std::lround(r * x / l) + (second ? 3 * R : 0) << ' ' << std::lround(r * y / l) + (second ? R / 10 : 0) << ' '
+          << std::lround(r * z / l) << '\n';
+    }
+}
+
+std::string curve_without_model(const std::string& path) {
+    std::ifstream in(path);
+    auto j = nlohmann::json::parse(in);
+    j.erase("model");
+    return j.dump();
+}
+
+std::vector<std::string> size_rows;
+void curve_sizes(bool with_slow) {
+    const auto dir = std::filesystem::temp_directory_path() / ("scalecert-bench-" + std::to_string(::getpid()));
+    std::filesystem::create_directories(dir);
+    std::fprintf(stderr, "whole `scalecert curve` process, hull path against scan path (best of 3 below 10^6 points):\n");
+    size_rows.push_back("| polytopes (points each) | hull path: time | peak memory | scan path: time | peak memory | scan path faster by | same curve |");
+    size_rows.push_back("|---|---|---|---|---|---|---|");
+    for (bool sphere : {true, false})
+        for (int n : {1000, 10000, 100000, 1000000}) {
+            const std::string a = (dir / "a.off").string(), b = (dir / "b.off").string();
+            const long R = sphere ? 10L * n * 1000 : 1000000;
+            write_cloud(a, n, R, sphere, false, 5 + n);
+            write_cloud(b, n, R, sphere, true, 6 + n);
+            auto best = [&](const std::string& engine, const std::string& out, int reps) {
+                ProcessRun r{1e300, 0, 0};
+                for (int k = 0; k < reps; ++k) {
+                    ProcessRun x = run_scalecert({"curve", "--engine", engine, "--p1", a, "--p2", b, "--i1", "1/2,2", "--i2", "1/2,2", "--out", out});
+                    if (x.seconds < r.seconds) r.seconds = x.seconds;
+                    r.peak_kb = std::max(r.peak_kb, x.peak_kb);
+                    r.status = x.status;
+                }
+                return r;
+            };
+            const int reps = n >= 1000000 ? 1 : 3;
+            const std::string so = (dir / "scan.json").string(), ho = (dir / "hull.json").string();
+            const ProcessRun s = best("scan", so, reps);
+            const bool slow = n >= 1000000 && sphere && !with_slow;
+            ProcessRun h{0, 0, 0};
+            if (!slow) h = best("hull", ho, reps);
+            char buf[512];
+            const std::string name = std::string(sphere ? "near-spheres, " : "random in balls, ") + std::to_string(n);
+            if (slow)
+                std::snprintf(buf, sizeof buf, "| %s | (--with-slow) | | %.3g s | %.0f MB | | |", name.c_str(), s.seconds, s.peak_kb / 1024.0);
+            else
+                std::snprintf(buf, sizeof buf, "| %s | %.3g s | %.0f MB | %.3g s | %.0f MB | %.1fx | %s |", name.c_str(), h.seconds,
+                              h.peak_kb / 1024.0, s.seconds, s.peak_kb / 1024.0, h.seconds / s.seconds,
+                              s.status || h.status ? "exit status!" : curve_without_model(so) == curve_without_model(ho) ? "yes" : "NO");
+            size_rows.push_back(buf);
+            std::fprintf(stderr, "  %s\n", buf);
+        }
+    std::filesystem::remove_all(dir);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-    bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
+    bool quick = false, with_slow = false, sizes_only = false;
+    for (int i = 1; i < argc; ++i) {
+        if (std::strcmp(argv[i], "--quick") == 0) quick = true;
+        else if (std::strcmp(argv[i], "--with-slow") == 0) with_slow = true;
+        else if (std::strcmp(argv[i], "--sizes") == 0) sizes_only = true;
+        else {
+            std::fprintf(stderr, "usage: scalecert-bench [--quick] [--sizes] [--with-slow]\n");
+            return 2;
+        }
+    }
+    if (sizes_only) {  // only the whole-process table (its 10^6 hull run with --with-slow: minutes, GBs)
+        curve_sizes(with_slow);
+        for (const std::string& r : size_rows) std::printf("%s\n", r.c_str());
+        return 0;
+    }
     long nq = quick ? 20000 : 200000;
     std::fprintf(stderr, "scalecert-bench%s (times per call, best of 3)\n", quick ? " --quick" : "");
     Scene bx = boxes(), h1000 = spheres(1000, 1000000, 1), h10k = spheres(10000, 10000000, 2);
@@ -259,4 +371,9 @@ int main(int argc, char** argv) {
     }
     std::printf("\n");
     for (const std::string& g : growth_rows) std::printf("%s\n", g.c_str());
+    if (!quick) {
+        curve_sizes(with_slow);
+        std::printf("\n");
+        for (const std::string& r : size_rows) std::printf("%s\n", r.c_str());
+    }
 }
