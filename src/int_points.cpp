@@ -2,6 +2,11 @@
 
 #include "scalecert/small_int.hpp"
 
+#include <fcntl.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <cctype>
 
 namespace scalecert::internal {
@@ -116,33 +121,54 @@ bool count(const char* b, const char* e, size_t& out) {
 }
 }  // namespace
 
-std::optional<IntPoints> parse_off_fast(const std::string& text) {
-    Cursor c{text.data(), text.data() + text.size()};
+std::optional<IntPoints> parse_off_fast(const std::string& text) { return parse_off_fast(text.data(), text.size()); }
+
+std::optional<IntPoints> read_off_fast(const std::string& path) {
+    // Mapped, not copied: the text is read once, from the page cache. Anything unusual (not a
+    // regular file, empty, over the limit, unreadable) is left to the full reader.
+    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0) return std::nullopt;
+    struct stat st {};
+    std::optional<IntPoints> r;
+    if (::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && st.st_size > 0 && static_cast<unsigned long long>(st.st_size) <= kMaxSceneBytes) {
+        const auto size = static_cast<size_t>(st.st_size);
+        void* p = ::mmap(nullptr, size, PROT_READ, MAP_PRIVATE | MAP_POPULATE, fd, 0);
+        if (p != MAP_FAILED) {
+            r = parse_off_fast(static_cast<const char*>(p), size);
+            ::munmap(p, size);
+        }
+    }
+    ::close(fd);
+    return r;
+}
+
+std::optional<IntPoints> parse_off_fast(const char* data, size_t size) {
+    Cursor c{data, data + size};
     const char *b, *e;
     if (!c.next(b, e) || std::string(b, e) != "OFF") return std::nullopt;
     size_t nv = 0, nf = 0, ne = 0;
     if (!c.next(b, e) || !count(b, e, nv) || !c.next(b, e) || !count(b, e, nf) || !c.next(b, e) || !count(b, e, ne))
         return std::nullopt;
     if (nv < 4 || nv > kMaxPoints) return std::nullopt;
-    std::vector<std::int64_t> mant(3 * nv);
+    // Mantissas go straight into the output, then are scaled in place to the common power of ten.
+    IntPoints r;
+    r.x.resize(3 * nv);
     std::vector<std::int8_t> ex(3 * nv);
     int lowest = 0;
     for (size_t i = 0; i < 3 * nv; ++i) {
         int x10;
-        if (!c.next(b, e) || !decimal(b, e, mant[i], x10) || x10 < -18 || x10 > 18) return std::nullopt;
+        if (!c.next(b, e) || !decimal(b, e, r.x[i], x10) || x10 < -18 || x10 > 18) return std::nullopt;
         ex[i] = static_cast<std::int8_t>(x10);
-        if (mant[i] != 0 && x10 < lowest) lowest = x10;
+        if (r.x[i] != 0 && x10 < lowest) lowest = x10;
     }
     // Every token read so far passed the grammar above, which has no '#': the file has no
     // comment before its last vertex, and the full reader would read the same numbers.
-    IntPoints r;
     mpz_ui_pow_ui(r.scale.get_mpz_t(), 10, static_cast<unsigned long>(-lowest));
-    r.x.resize(3 * nv);
     static const std::int64_t p10[19] = {1, 10, 100, 1000, 10000, 100000, 1000000, 10000000, 100000000, 1000000000,
                                         10000000000, 100000000000, 1000000000000, 10000000000000, 100000000000000,
                                         1000000000000000, 10000000000000000, 100000000000000000, 1000000000000000000};
     for (size_t i = 0; i < 3 * nv; ++i) {
-        std::int64_t v = mant[i];
+        std::int64_t v = r.x[i];
         if (v != 0) {
             const int shift = ex[i] - lowest;  // 0..36
             if (shift > 18 || __builtin_mul_overflow(v, p10[shift], &v)) return std::nullopt;

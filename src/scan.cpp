@@ -59,19 +59,58 @@ public:
         const size_t n = P.size();
         for (int k = 0; k < 3; ++k) maxabs_[k] = 0;
         for (size_t i = 0; i < 3 * n; ++i) maxabs_[i % 3] = std::max(maxabs_[i % 3], std::fabs(static_cast<double>(P.x[i])));
-        // Build on a contiguous copy (doubles and index together), then keep the order.
-        std::vector<Pt> pts(n);
+        // Points in Morton order (a space-filling curve over their box), then a balanced tree
+        // over that order: halves of the order are spatially coherent, and no sort by axis is
+        // needed (radix sort of the codes).
+        double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
         for (size_t i = 0; i < n; ++i)
-            pts[i] = {{static_cast<double>(P.x[3 * i]), static_cast<double>(P.x[3 * i + 1]), static_cast<double>(P.x[3 * i + 2])},
-                      static_cast<std::uint32_t>(i)};
-        nodes_.reserve(4 * n / kLeaf + 2);
-        build(pts, 0, static_cast<std::uint32_t>(n));
-        perm_.resize(n);
-        xd_.resize(3 * n);
+            for (int k = 0; k < 3; ++k) {
+                const double v = static_cast<double>(P.x[3 * i + k]);
+                lo[k] = std::min(lo[k], v), hi[k] = std::max(hi[k], v);
+            }
+        // Spreads the low 21 bits of v to every third bit.
+        auto spread = [](std::uint64_t v) {
+            v &= 0x1fffff;
+            v = (v | v << 32) & 0x1f00000000ffffULL;
+            v = (v | v << 16) & 0x1f0000ff0000ffULL;
+            v = (v | v << 8) & 0x100f00f00f00f00fULL;
+            v = (v | v << 4) & 0x10c30c30c30c30c3ULL;
+            v = (v | v << 2) & 0x1249249249249249ULL;
+            return v;
+        };
+        std::vector<std::uint64_t> key(n);
         for (size_t i = 0; i < n; ++i) {
-            perm_[i] = pts[i].idx;
-            for (int k = 0; k < 3; ++k) xd_[3 * i + k] = pts[i].x[k];
+            std::uint64_t code = 0;
+            for (int k = 0; k < 3; ++k) {
+                const double span = hi[k] - lo[k];
+                auto c = static_cast<std::uint64_t>(span > 0 ? (static_cast<double>(P.x[3 * i + k]) - lo[k]) / span * 2097151.0 : 0.0);
+                code |= spread(std::min<std::uint64_t>(c, 2097151)) << k;
+            }
+            key[i] = code;
         }
+        perm_.resize(n);
+        std::iota(perm_.begin(), perm_.end(), 0u);
+        {  // LSD radix sort of (key, index), 11 bits a pass
+            std::vector<std::uint32_t> tmp(n);
+            std::vector<std::uint64_t> ktmp(n);
+            for (int shift = 0; shift < 63; shift += 11) {
+                std::uint32_t cnt[2049] = {};
+                for (size_t i = 0; i < n; ++i) ++cnt[((key[i] >> shift) & 0x7ff) + 1];
+                for (size_t d = 1; d < 2049; ++d) cnt[d] += cnt[d - 1];
+                for (size_t i = 0; i < n; ++i) {
+                    const std::uint32_t at = cnt[(key[i] >> shift) & 0x7ff]++;
+                    tmp[at] = perm_[i];
+                    ktmp[at] = key[i];
+                }
+                perm_.swap(tmp);
+                key.swap(ktmp);
+            }
+        }
+        xd_.resize(3 * n);
+        for (size_t i = 0; i < n; ++i)
+            for (int k = 0; k < 3; ++k) xd_[3 * i + k] = static_cast<double>(P.x[3 * perm_[i] + k]);
+        nodes_.reserve(4 * n / kLeaf + 2);
+        build(0, static_cast<std::uint32_t>(n));
     }
 
     const IntPoints& points() const { return P_; }
@@ -155,12 +194,8 @@ private:
         c.erase(std::remove_if(c.begin(), c.end(), [&](const auto& p) { return p.first < floor; }), c.end());
     }
 
-    struct Pt {
-        double x[3];
-        std::uint32_t idx;
-    };
-    // Median splits on the widest axis of the points' box; boxes from the children's.
-    std::int32_t build(std::vector<Pt>& pts, std::uint32_t b, std::uint32_t e) {
+    // A balanced tree over the order; boxes from the children's.
+    std::int32_t build(std::uint32_t b, std::uint32_t e) {
         const auto id = static_cast<std::int32_t>(nodes_.size());
         nodes_.push_back({});
         Node nd;
@@ -169,21 +204,11 @@ private:
         if (e - b <= kLeaf) {
             for (int k = 0; k < 3; ++k) nd.lo[k] = INFINITY, nd.hi[k] = -INFINITY;
             for (std::uint32_t i = b; i < e; ++i)
-                for (int k = 0; k < 3; ++k) nd.lo[k] = std::min(nd.lo[k], pts[i].x[k]), nd.hi[k] = std::max(nd.hi[k], pts[i].x[k]);
+                for (int k = 0; k < 3; ++k) nd.lo[k] = std::min(nd.lo[k], xd_[3 * i + k]), nd.hi[k] = std::max(nd.hi[k], xd_[3 * i + k]);
         } else {
-            // The widest axis of a sample (any axis is correct; a good one keeps boxes small).
-            double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
-            const std::uint32_t step = std::max<std::uint32_t>(1, (e - b) / 64);
-            for (std::uint32_t i = b; i < e; i += step)
-                for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], pts[i].x[k]), hi[k] = std::max(hi[k], pts[i].x[k]);
-            int ax = 0;
-            for (int k = 1; k < 3; ++k)
-                if (hi[k] - lo[k] > hi[ax] - lo[ax]) ax = k;
             const std::uint32_t mid = b + (e - b) / 2;
-            std::nth_element(pts.begin() + b, pts.begin() + mid, pts.begin() + e,
-                             [ax](const Pt& p, const Pt& q) { return p.x[ax] < q.x[ax]; });
-            nd.left = build(pts, b, mid);
-            nd.right = build(pts, mid, e);
+            nd.left = build(b, mid);
+            nd.right = build(mid, e);
             const Node &l = nodes_[static_cast<size_t>(nd.left)], &r = nodes_[static_cast<size_t>(nd.right)];
             for (int k = 0; k < 3; ++k) nd.lo[k] = std::min(l.lo[k], r.lo[k]), nd.hi[k] = std::max(l.hi[k], r.hi[k]);
         }

@@ -1,5 +1,8 @@
 // FCL (GJK through libccd, and FCL's own GJK) and Bullet (GJK/EPA) as baselines, as their users
 // call them, on the scaled polyhedra. Kept in one translation unit: their headers are heavy.
+// Built as a module (libscalecert_fcl_bullet.so) that the tools load on first use
+// (fcl_bullet_loader.cpp): FCL alone brings 29,000 relocations, which every start of the
+// scalecert command would otherwise pay. The module uses no scalecert symbol, only its headers.
 #include "scalecert/baselines.hpp"
 
 #include <BulletCollision/CollisionShapes/btConvexHullShape.h>
@@ -125,9 +128,15 @@ private:
 
 }  // namespace
 
-std::unique_ptr<Method> make_fcl(const Model& m, const FpScene& s, bool libccd) {
-    return std::make_unique<Fcl>(m, s, libccd ? fcl::GST_LIBCCD : fcl::GST_INDEP);
-}
-std::unique_ptr<Method> make_bullet(const FpScene& s) { return std::make_unique<Bullet>(s); }
-
 }  // namespace scalecert::internal::fp
+
+// The module's entry points (fcl_bullet_loader.cpp declares them).
+extern "C" __attribute__((visibility("default"))) scalecert::internal::fp::Method* scalecert_make_fcl(
+    const scalecert::internal::Model* m, const scalecert::internal::fp::FpScene* s, bool libccd) {
+    using namespace scalecert::internal::fp;
+    return new Fcl(*m, *s, libccd ? fcl::GST_LIBCCD : fcl::GST_INDEP);
+}
+extern "C" __attribute__((visibility("default"))) scalecert::internal::fp::Method* scalecert_make_bullet(
+    const scalecert::internal::fp::FpScene* s) {
+    return new scalecert::internal::fp::Bullet(*s);
+}

@@ -58,7 +58,7 @@ std::shared_ptr<const internal::CompactScene> SceneArgs::load_compact() const {
             for (int i = 0; i < 2; ++i)
                 read[i] = std::async(std::launch::async, [this, i]() -> std::optional<internal::IntPoints> {
                     if (internal::mesh_format_of(mesh[i]) != internal::MeshFormat::Off) return std::nullopt;
-                    return internal::parse_off_fast(read_input(mesh[i], "mesh file", internal::kMaxSceneBytes));
+                    return internal::read_off_fast(mesh[i]);
                 });
             std::optional<internal::IntPoints> pts[2];
             for (int i = 0; i < 2; ++i) pts[i] = read[i].get();

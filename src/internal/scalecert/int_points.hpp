@@ -34,6 +34,10 @@ std::vector<Vec3q> q_points(const IntPoints& p);
 // the full reader expects (no comments among the header and vertices, 4 to kMaxPoints vertices).
 // None means "read it with parse_mesh" (which gives the same points, or the error).
 std::optional<IntPoints> parse_off_fast(const std::string& text);
+std::optional<IntPoints> parse_off_fast(const char* data, size_t size);
+// The same on a file, mapped into memory rather than copied; none also when the file is not a
+// regular file of at most kMaxSceneBytes bytes (the full reader then reads it, or words the error).
+std::optional<IntPoints> read_off_fast(const std::string& path);
 
 // A scene whose polyhedra are IntPoints (what the scan path reads).
 struct CompactScene {
