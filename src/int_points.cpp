@@ -110,6 +110,62 @@ bool decimal(const char* b, const char* e, std::int64_t& mant, int& exp10) {
     return true;
 }
 
+// RFC 8259's number grammar: -?(0|[1-9][0-9]*)(.[0-9]+)?([eE][+-]?[0-9]+)?
+bool json_number(const char* b, const char* e) {
+    if (b < e && *b == '-') ++b;
+    if (b == e || *b < '0' || *b > '9') return false;
+    if (*b == '0') ++b;
+    else while (b < e && *b >= '0' && *b <= '9') ++b;
+    if (b < e && *b == '.') {
+        ++b;
+        if (b == e || *b < '0' || *b > '9') return false;
+        while (b < e && *b >= '0' && *b <= '9') ++b;
+    }
+    if (b < e && (*b == 'e' || *b == 'E')) {
+        ++b;
+        if (b < e && (*b == '+' || *b == '-')) ++b;
+        if (b == e || *b < '0' || *b > '9') return false;
+        while (b < e && *b >= '0' && *b <= '9') ++b;
+    }
+    return b == e;
+}
+
+// Mantissas × 10^ex to integers over the common scale 10^-lowest, within kMaxIntCoord.
+bool scale_to(IntPoints& r, const std::vector<std::int8_t>& ex, int lowest) {
+    mpz_ui_pow_ui(r.scale.get_mpz_t(), 10, static_cast<unsigned long>(-lowest));
+    static const std::int64_t p10[19] = {1, 10, 100, 1000, 10000, 100000, 1000000, 10000000, 100000000, 1000000000,
+                                        10000000000, 100000000000, 1000000000000, 10000000000000, 100000000000000,
+                                        1000000000000000, 10000000000000000, 100000000000000000, 1000000000000000000};
+    for (size_t i = 0; i < r.x.size(); ++i) {
+        std::int64_t v = r.x[i];
+        if (v != 0) {
+            const int shift = ex[i] - lowest;  // 0..36
+            if (shift > 18 || __builtin_mul_overflow(v, p10[shift], &v)) return false;
+        }
+        if (v > kMaxIntCoord || v < -kMaxIntCoord) return false;
+        r.x[i] = v;
+    }
+    return true;
+}
+
+// Calls f on the file's bytes, mapped; nothing for anything but a regular, non-empty file of at
+// most kMaxSceneBytes (the full reader then reads it, or words the error).
+template <class F>
+void map_file(const std::string& path, F&& f) {
+    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0) return;
+    struct stat st {};
+    if (::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && st.st_size > 0 && static_cast<unsigned long long>(st.st_size) <= kMaxSceneBytes) {
+        const auto size = static_cast<size_t>(st.st_size);
+        void* p = ::mmap(nullptr, size, PROT_READ, MAP_PRIVATE | MAP_POPULATE, fd, 0);
+        if (p != MAP_FAILED) {
+            f(static_cast<const char*>(p), size);
+            ::munmap(p, size);
+        }
+    }
+    ::close(fd);
+}
+
 bool count(const char* b, const char* e, size_t& out) {
     if (e - b < 1 || e - b > 9) return false;
     out = 0;
@@ -124,21 +180,8 @@ bool count(const char* b, const char* e, size_t& out) {
 std::optional<IntPoints> parse_off_fast(const std::string& text) { return parse_off_fast(text.data(), text.size()); }
 
 std::optional<IntPoints> read_off_fast(const std::string& path) {
-    // Mapped, not copied: the text is read once, from the page cache. Anything unusual (not a
-    // regular file, empty, over the limit, unreadable) is left to the full reader.
-    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-    if (fd < 0) return std::nullopt;
-    struct stat st {};
     std::optional<IntPoints> r;
-    if (::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && st.st_size > 0 && static_cast<unsigned long long>(st.st_size) <= kMaxSceneBytes) {
-        const auto size = static_cast<size_t>(st.st_size);
-        void* p = ::mmap(nullptr, size, PROT_READ, MAP_PRIVATE | MAP_POPULATE, fd, 0);
-        if (p != MAP_FAILED) {
-            r = parse_off_fast(static_cast<const char*>(p), size);
-            ::munmap(p, size);
-        }
-    }
-    ::close(fd);
+    map_file(path, [&](const char* p, size_t n) { r = parse_off_fast(p, n); });
     return r;
 }
 
@@ -163,19 +206,199 @@ std::optional<IntPoints> parse_off_fast(const char* data, size_t size) {
     }
     // Every token read so far passed the grammar above, which has no '#': the file has no
     // comment before its last vertex, and the full reader would read the same numbers.
-    mpz_ui_pow_ui(r.scale.get_mpz_t(), 10, static_cast<unsigned long>(-lowest));
-    static const std::int64_t p10[19] = {1, 10, 100, 1000, 10000, 100000, 1000000, 10000000, 100000000, 1000000000,
-                                        10000000000, 100000000000, 1000000000000, 10000000000000, 100000000000000,
-                                        1000000000000000, 10000000000000000, 100000000000000000, 1000000000000000000};
-    for (size_t i = 0; i < 3 * nv; ++i) {
-        std::int64_t v = r.x[i];
-        if (v != 0) {
-            const int shift = ex[i] - lowest;  // 0..36
-            if (shift > 18 || __builtin_mul_overflow(v, p10[shift], &v)) return std::nullopt;
+    if (!scale_to(r, ex, lowest)) return std::nullopt;
+    return r;
+}
+
+namespace {
+// A scene file in the one shape the fast reader takes: {"P1": {"vertices": [[x,y,z], ...],
+// "seed": [x,y,z]}, "P2": ..., "I1": [lo,hi], "I2": [lo,hi]}, keys in any order, each once, JSON
+// numbers only. Everything it accepts, parse_scene_text accepts with the same values; the rest
+// goes there.
+class SceneScanner {
+public:
+    SceneScanner(const char* b, const char* e) : p_(b), e_(e) {}
+
+    std::optional<CompactScene> scene() {
+        CompactScene cs;
+        bool seen[4] = {false, false, false, false};
+        size_t values = 1;
+        if (!lit('{')) return std::nullopt;
+        for (bool first = true;; first = false) {
+            if (!first && !lit(',')) break;
+            std::string k;
+            if (!key(k)) return std::nullopt;
+            const int which = k == "P1" ? 0 : k == "P2" ? 1 : k == "I1" ? 2 : k == "I2" ? 3 : -1;
+            if (which < 0 || seen[which]) return std::nullopt;
+            seen[which] = true;
+            ++values;
+            if (which < 2) {
+                if (!poly(cs, which, values)) return std::nullopt;
+            } else {
+                std::vector<Q> r;
+                if (!numbers(r, 2)) return std::nullopt;
+                values += 2;
+                cs.lo[which - 2] = r[0];
+                cs.hi[which - 2] = r[1];
+            }
         }
-        if (v > kMaxIntCoord || v < -kMaxIntCoord) return std::nullopt;
-        r.x[i] = v;
+        if (!lit('}')) return std::nullopt;
+        ws();
+        if (p_ != e_ || !(seen[0] && seen[1] && seen[2] && seen[3]) || values > kMaxJsonValues) return std::nullopt;
+        for (int i = 0; i < 2; ++i) {
+            if (cs.P[i].size() < 4 || sgn(cs.lo[i]) <= 0 || cs.lo[i] > cs.hi[i]) return std::nullopt;  // the reader words these
+            if (!cs.seed_given[i]) cs.seed[i] = cs.P[i].mean();
+        }
+        return cs;
     }
+
+private:
+    void ws() {
+        while (p_ < e_ && (*p_ == ' ' || *p_ == '\t' || *p_ == '\n' || *p_ == '\r')) ++p_;
+    }
+    bool lit(char c) {
+        ws();
+        if (p_ < e_ && *p_ == c) return ++p_, true;
+        return false;
+    }
+    bool key(std::string& k) {
+        if (!lit('"')) return false;
+        const char* b = p_;
+        while (p_ < e_ && *p_ != '"') {
+            if (*p_ == '\\' || static_cast<unsigned char>(*p_) < 0x20 || static_cast<unsigned char>(*p_) >= 0x80) return false;
+            ++p_;
+        }
+        if (p_ == e_) return false;
+        k.assign(b, p_++);
+        return lit(':');
+    }
+    // A JSON number's text.
+    bool number(const char*& b, const char*& e) {
+        ws();
+        b = p_;
+        while (p_ < e_ && (*p_ == '-' || *p_ == '+' || *p_ == '.' || *p_ == 'e' || *p_ == 'E' || (*p_ >= '0' && *p_ <= '9'))) ++p_;
+        e = p_;
+        return json_number(b, e);
+    }
+    bool numbers(std::vector<Q>& out, size_t n) {
+        if (!lit('[')) return false;
+        for (size_t i = 0; i < n; ++i) {
+            if (i && !lit(',')) return false;
+            const char *b, *e;
+            if (!number(b, e)) return false;
+            try {
+                out.push_back(parse_exact(std::string(b, e)));
+            } catch (const InputError&) {
+                return false;
+            }
+        }
+        return lit(']');
+    }
+    bool poly(CompactScene& cs, int i, size_t& values) {
+        if (!lit('{')) return false;
+        bool verts = false, seed = false;
+        for (bool first = true;; first = false) {
+            if (!first && !lit(',')) break;
+            std::string k;
+            if (!key(k)) return false;
+            ++values;
+            if (k == "vertices" && !verts) {
+                verts = true;
+                if (!vertices(cs.P[i], values)) return false;
+            } else if (k == "seed" && !seed) {
+                seed = true;
+                std::vector<Q> s;
+                if (!numbers(s, 3)) return false;
+                values += 3;
+                cs.seed[i] = {s[0], s[1], s[2]};
+                cs.seed_given[i] = true;
+            } else {
+                return false;
+            }
+        }
+        return verts && lit('}');
+    }
+    // A JSON number as mantissa × 10^x10, in one pass (at most 18 significant digits and a
+    // 3-digit exponent, as parse_off_fast's decimals).
+    static bool digit(char c) { return c >= '0' && c <= '9'; }
+    bool json_decimal(std::int64_t& m, int& x10) {
+        ws();
+        const char* p = p_;
+        bool neg = false;
+        if (p < e_ && *p == '-') neg = true, ++p;
+        if (p == e_ || !digit(*p)) return false;
+        std::int64_t v = 0;
+        int digits = 0, frac = 0;
+        auto take = [&] {
+            if ((v != 0 || *p != '0') && ++digits > 18) return false;
+            v = v * 10 + (*p++ - '0');
+            return true;
+        };
+        if (*p == '0') ++p;
+        else while (p < e_ && digit(*p)) if (!take()) return false;
+        if (p < e_ && *p == '.') {
+            if (++p == e_ || !digit(*p)) return false;
+            while (p < e_ && digit(*p)) {
+                if (!take()) return false;
+                ++frac;
+            }
+        }
+        int ex = 0;
+        if (p < e_ && (*p == 'e' || *p == 'E')) {
+            bool eneg = false;
+            if (++p < e_ && (*p == '+' || *p == '-')) eneg = *p++ == '-';
+            if (p == e_ || !digit(*p)) return false;
+            for (int nd = 0; p < e_ && digit(*p);) {
+                if (++nd > 3) return false;
+                ex = ex * 10 + (*p++ - '0');
+            }
+            if (eneg) ex = -ex;
+        }
+        p_ = p;
+        m = neg ? -v : v;
+        x10 = ex - frac;
+        return true;
+    }
+    bool vertices(IntPoints& P, size_t& values) {
+        if (!lit('[')) return false;
+        std::vector<std::int8_t> ex;
+        // Room for the rest of the file at 3 numbers in 6 bytes (address space only: pages are
+        // touched as they fill).
+        const auto room = std::min<size_t>(3 * kMaxPoints + 3, static_cast<size_t>(e_ - p_) / 2);
+        P.x.reserve(room);
+        ex.reserve(room);
+        int lowest = 0;
+        if (!lit(']')) {
+            for (;;) {
+                if (!lit('[')) return false;
+                for (int k = 0; k < 3; ++k) {
+                    if (k && !lit(',')) return false;
+                    std::int64_t m;
+                    int x10;
+                    if (!json_decimal(m, x10) || x10 < -18 || x10 > 18) return false;
+                    P.x.push_back(m);
+                    ex.push_back(static_cast<std::int8_t>(x10));
+                    if (m != 0 && x10 < lowest) lowest = x10;
+                }
+                if (!lit(']')) return false;
+                if (P.size() > kMaxPoints) return false;
+                if (lit(']')) break;
+                if (!lit(',')) return false;
+            }
+        }
+        values += 4 * P.size();
+        return scale_to(P, ex, lowest);
+    }
+    const char* p_;
+    const char* e_;
+};
+}  // namespace
+
+std::optional<CompactScene> parse_scene_fast(const char* data, size_t size) { return SceneScanner(data, data + size).scene(); }
+
+std::optional<CompactScene> read_scene_fast(const std::string& path) {
+    std::optional<CompactScene> r;
+    map_file(path, [&](const char* p, size_t n) { r = parse_scene_fast(p, n); });
     return r;
 }
 

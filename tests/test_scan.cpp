@@ -175,3 +175,36 @@ BOOST_AUTO_TEST_CASE(compact_off_reader) {
                           "OFF\n4 0 0\n.5 0 0\n1 0 0\n0 1 0\n0 0 1\n", "COFF\n4 0 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n"})
         BOOST_TEST(!parse_off_fast(t), t);
 }
+
+// The compact scene reader: the full reader's scene exactly, or the file left to it.
+BOOST_AUTO_TEST_CASE(compact_scene_reader) {
+    auto same = [](const std::string& text) {
+        auto fast = parse_scene_fast(text.data(), text.size());
+        BOOST_REQUIRE_MESSAGE(fast, text);
+        const Scene full = parse_scene_text(text, "t", ".");
+        const Scene back = full_scene(*fast);
+        for (int i = 0; i < 2; ++i) {
+            BOOST_TEST((back.P[i].points == full.P[i].points));
+            BOOST_TEST((back.P[i].seed == full.P[i].seed));
+            BOOST_TEST(back.P[i].seed_given == full.P[i].seed_given);
+            BOOST_TEST((back.lo[i] == full.lo[i] && back.hi[i] == full.hi[i]));
+        }
+    };
+    const std::string cube = "[[0,0,0],[2,0,0],[0,2,0],[2,2,0],[0,0,2],[2,0,2],[0,2,2],[2,2,2]]";
+    same("{\"P1\": {\"vertices\": " + cube + "}, \"P2\": {\"vertices\": [[0,0,3],[2,0,3.5],[0,2e0,3],[2,2,3],[0,0,5],[2,0,5],[0,2,5],[2,2,5.25]]}, \"I1\": [0.5, 2.5], \"I2\": [1e-1, 3]}");
+    same("\n{ \"I2\" : [0.5,2], \"P2\":{\"seed\":[1,1,4],\"vertices\":" + cube + "},\r\n\"I1\":[1,2],\t\"P1\":{\"vertices\":[[-0.001,0,0],[1,0,0],[0,1,0],[0,0,1]], \"seed\": [0.1, 0.1, 0.1]} }\n");
+    // Left to the full reader (which accepts some and refuses the rest with its own message).
+    for (const std::string& t : {
+             "{\"P1\": {\"vertices\": " + cube + "}, \"P2\": {\"vertices\": " + cube + "}, \"I1\": [\"1/2\", 2], \"I2\": [1, 2]}",  // a string number
+             "{\"P1\": {\"vertices\": " + cube + "}, \"P1\": {\"vertices\": " + cube + "}, \"I1\": [1, 2], \"I2\": [1, 2]}",       // duplicate key
+             "{\"P1\": {\"vertices\": " + cube + "}, \"P2\": {\"vertices\": [[01,0,0],[1,0,0],[0,1,0],[0,0,1]]}, \"I1\": [1, 2], \"I2\": [1, 2]}",  // leading zero
+             "{\"P1\": {\"vertices\": " + cube + "}, \"P2\": {\"off\": \"x.off\"}, \"I1\": [1, 2], \"I2\": [1, 2]}",            // a file
+             "{\"P1\": {\"vertices\": " + cube + "}, \"P2\": {\"vertices\": " + cube + "}, \"I1\": [1, 2], \"I2\": [1, 2]} x",  // trailing text
+             "{\"P1\": {\"vertices\": " + cube + "}, \"P2\": {\"vertices\": " + cube + "}, \"I1\": [2, 1], \"I2\": [1, 2]}",    // lo > hi
+             "{\"P1\": {\"vertices\": " + cube + "}, \"P2\": {\"vertices\": " + cube + "}, \"I1\": [1, 2]}",                    // I2 missing
+             "{\"P1\": {\"vertices\": [[0,0,0],[1,0,0],[0,1,0]]}, \"P2\": {\"vertices\": " + cube + "}, \"I1\": [1, 2], \"I2\": [1, 2]}",  // 3 points
+             "{\"P1\": {\"vertices\": " + cube + ", \"color\": 1}, \"P2\": {\"vertices\": " + cube + "}, \"I1\": [1, 2], \"I2\": [1, 2]}",  // unknown key
+             "{\"P1\": {\"vertices\": " + cube + "}, \"P2\": {\"vertices\": " + cube + "}, \"I1\": [1, 2], \"I2\": [1, 2],}",   // trailing comma
+             "{\"P1\": {\"vertices\": " + cube + "}, \"P2\": {\"vertices\": " + cube + "}, \"I1\": [+1, 2], \"I2\": [1, 2]}"})  // '+'
+        BOOST_TEST(!parse_scene_fast(t.data(), t.size()), t);
+}

@@ -46,6 +46,10 @@ internal::Scene SceneArgs::load() const {
 }
 
 std::shared_ptr<const internal::CompactScene> SceneArgs::load_compact() const {
+    const bool scene_only = !path.empty() && mesh[0].empty() && mesh[1].empty() && interval[0].empty() && interval[1].empty() &&
+                            seed[0].empty() && seed[1].empty();
+    if (scene_only && !opt.binary_doubles && path != "-")
+        if (auto cs = internal::read_scene_fast(path)) return std::make_shared<internal::CompactScene>(std::move(*cs));
     const bool meshes = path.empty() && !mesh[0].empty() && !mesh[1].empty() && !interval[0].empty() && !interval[1].empty();
     if (meshes && !opt.binary_doubles) {
         // Any problem sends the scene to load(), whose checks come in its own order: the same

@@ -48,6 +48,12 @@ struct CompactScene {
 };
 // The scene in compact form, when both polyhedra fit IntPoints.
 std::optional<CompactScene> compact_scene(const Scene& sc);
+// A scene file's text in compact form, when it has the plain shape {"P1": {"vertices": [...],
+// "seed": [...]}, "P2": ..., "I1": [lo, hi], "I2": [lo, hi]} with JSON numbers (decimals as in
+// parse_off_fast for the vertices) and passes the reader's checks; none means "read it with
+// parse_scene_text" (the same scene, or the error). read_scene_fast maps the file.
+std::optional<CompactScene> parse_scene_fast(const char* data, size_t size);
+std::optional<CompactScene> read_scene_fast(const std::string& path);
 // Back to the exact scene (for the hull path), with the same seeds.
 Scene full_scene(const CompactScene& cs);
 
