@@ -1,5 +1,7 @@
 #include "scalecert/contact_lines.hpp"
 
+#include "scalecert/predicates.hpp"
+
 #include "scalecert/double3.hpp"
 #include "scalecert/gauss_map.hpp"
 #include "scalecert/small_int.hpp"
@@ -55,7 +57,7 @@ std::vector<size_t> undominated(const std::vector<double>& a, const std::vector<
     std::vector<size_t> keep, by_slope;
     for (size_t i = 0; i < a.size(); ++i) (std::isfinite(a[i]) && std::isfinite(b[i]) ? by_slope : keep).push_back(i);
     std::sort(by_slope.begin(), by_slope.end(), [&](size_t i, size_t j) { return a[i] > a[j]; });
-    constexpr double kRel = 1e-12;
+    constexpr double kRel = filter::kDominatedRel;  // predicates.hpp, bound 3
     auto lower = [&](size_t i) { return a[i] - kRel * std::fabs(a[i]); };  // below the true slope
     auto upper = [&](size_t i) { return a[i] + kRel * std::fabs(a[i]); };  // above it
     double bmax = -INFINITY, bmax_err = 0;
@@ -162,7 +164,7 @@ std::vector<V> facet_normals(const Model& m, LineStats& st) {
             xd = dir_d(exact_x());
         } else {
             xd = crossd(a.pd, b.pd);
-            if (!(normd(xd) > 1e-10 * normd(a.pd) * normd(b.pd))) {
+            if (!(normd(xd) > filter::kArcDirectionMin * normd(a.pd) * normd(b.pd))) {  // predicates.hpp, bound 2
                 if (is_zero(exact_x())) continue;
                 xd = dir_d(exact_x());
             }
@@ -172,22 +174,25 @@ std::vector<V> facet_normals(const Model& m, LineStats& st) {
             D3 xs{sign * xd[0], sign * xd[1], sign * xd[2]};
             auto side = [&](const D3& ud, const D3& pd, bool x_first, const V& u, const V& p) {
                 D3 c = x_first ? crossd(xs, ud) : crossd(ud, xs);
-                double v = dotd(c, pd), bound = 1e-10 * normd(ud) * normd(xs) * normd(pd);
+                double v = dotd(c, pd), bound = filter::kArcRel * normd(ud) * normd(xs) * normd(pd);
                 if (v > bound) return ++st.arc_signs_filtered, 1;
                 if (v < -bound) return ++st.arc_signs_filtered, -1;
                 ++st.arc_signs_exact;
+                auto gmp = [&] {
+                    Vec3z x = as_z(exact_x()), uz = as_z(u);
+                    if (sign < 0) x = neg(x);
+                    return sgn(dotz(x_first ? cross(x, uz) : cross(uz, x), as_z(p)));
+                };
                 if constexpr (std::is_same_v<V, Vec3s>) {
                     // u × x exactly in 128 bits (|u|, |x| < 2^62), then its dot with p, checked
                     const Vec3s xv = sign > 0 ? exact_x() : neg_s(exact_x());
-                    I128 c[3], r = 0, t;
-                    for (int k = 0; k < 3; ++k) c[k] = x_first ? cross_k(xv, u, k) : cross_k(u, xv, k);
-                    bool ok = true;
-                    for (int k = 0; k < 3 && ok; ++k) ok = mul_ok(c[k], p[k], t) && add_ok(r, t, r);
-                    if (ok) return sgn128(r);
+                    return filter::exact_sign(
+                        [&](filter::Acc128& acc) {
+                            for (int k = 0; k < 3; ++k) acc.add(x_first ? cross_k(xv, u, k) : cross_k(u, xv, k), p[k]);
+                        },
+                        gmp);
                 }
-                Vec3z x = as_z(exact_x()), uz = as_z(u);
-                if (sign < 0) x = neg(x);
-                return sgn(dotz(x_first ? cross(x, uz) : cross(uz, x), as_z(p)));
+                return gmp();
             };
             if (side(a.fd, a.pd, false, a.from, a.p) > 0 && side(a.td, a.pd, true, a.to, a.p) > 0 &&
                 side(b.fd, b.pd, false, b.from, b.p) > 0 && side(b.td, b.pd, true, b.to, b.p) > 0) {
@@ -241,13 +246,12 @@ void add_lines(Model& m, const std::vector<V>& normals) {
             if (seeds128) {
                 // H1 = S1·sden1 − n·sz1, H2 = S2·sden2 + n·sz2, ND = n·dz, overflow-checked.
                 const I128 S1 = dot_s(n, m.P[0].ipts_s[m.P[0].climb(n)]), S2 = dot_s(mn, m.P[1].ipts_s[m.P[1].climb(mn)]);
-                I128 h1, h2, nd = 0, t, a1 = 0, a2 = 0;
-                bool ok = mul_ok(S1, sden0, h1) && mul_ok(S2, sden1, h2);
-                for (int k = 0; k < 3 && ok; ++k)
-                    ok = mul_ok(n[k], sz0[k], t) && add_ok(a1, t, a1) && mul_ok(n[k], sz1[k], t) && add_ok(a2, t, a2) &&
-                         mul_ok(n[k], dz[k], t) && add_ok(nd, t, nd);
-                ok = ok && sub_ok(h1, a1, h1) && add_ok(h2, a2, h2);
-                if (ok) H1 = static_cast<double>(h1), H2 = static_cast<double>(h2), ND = static_cast<double>(nd), done = true;
+                filter::Acc128 h1, h2, nd;
+                h1.add(S1, sden0);
+                h2.add(S2, sden1);
+                for (int k = 0; k < 3; ++k) h1.sub(n[k], sz0[k]), h2.add(n[k], sz1[k]), nd.add(n[k], dz[k]);
+                if (h1.ok() && h2.ok() && nd.ok())
+                    H1 = static_cast<double>(h1.value()), H2 = static_cast<double>(h2.value()), ND = static_cast<double>(nd.value()), done = true;
             }
         }
         if (done) {

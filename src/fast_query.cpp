@@ -1,5 +1,7 @@
 #include "scalecert/fast_query.hpp"
 
+#include "scalecert/predicates.hpp"
+
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -9,9 +11,7 @@
 namespace scalecert::internal {
 
 namespace {
-// Relative error budget of a few roundings (conversions to double, a product and two sums):
-// the true bound is under 10 ulps; 1e-12 leaves three orders of magnitude to spare.
-constexpr double kRel = 1e-12;
+constexpr double kRel = filter::kQueryRel;  // predicates.hpp, bound 4
 }  // namespace
 
 FastCurve::FastCurve(const Model& m, const Curve& c) : m_(m), c_(c) {

@@ -1,4 +1,6 @@
 #include "scalecert/gauss_map.hpp"
+
+#include "scalecert/predicates.hpp"
 #include "scalecert/double3.hpp"
 
 #include <algorithm>
@@ -15,7 +17,7 @@ D3 unit(const D3& d) {
 }
 
 struct Box { D3 lo, hi; };
-constexpr double kPad = 1e-7;  // far above the rounding error of these few operations
+constexpr double kPad = filter::kArcBoxPad;  // predicates.hpp, bound 6
 
 // Bounding box of the arc on the unit sphere: its ends, plus each coordinate's extreme on the
 // great circle where that extreme lies on the arc (tested with slack, so never missed).

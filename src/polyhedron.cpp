@@ -1,5 +1,7 @@
 #include "scalecert/polyhedron.hpp"
 
+#include "scalecert/predicates.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -32,8 +34,7 @@ int Polyhedron::start_vertex(const std::array<double, 3>& n) const {
 }
 
 namespace {
-// n·x compared through a double filter: the products and sums of doubles of the integer data err
-// by at most a few ulps of Σ|n_k x_k|; 1e-14 of it bounds that with room. Only comparisons the
+// n·x compared through a double filter (predicates.hpp, bound 1). Only comparisons the
 // filter cannot decide (or non-finite ones) are made exactly: in 128-bit integers for a small
 // normal on a small polyhedron, in GMP otherwise.
 template <class N>
@@ -49,7 +50,7 @@ struct FilteredDot {
     double approx(int v, double& err) const {
         const D3& x = P.dpts[v];
         double a = nd[0] * x[0], b = nd[1] * x[1], c = nd[2] * x[2];
-        err = 1e-14 * (std::fabs(a) + std::fabs(b) + std::fabs(c));
+        err = filter::kSupportRel * (std::fabs(a) + std::fabs(b) + std::fabs(c));
         return a + b + c;
     }
     int exact_cmp(int w, int v) const {
@@ -148,19 +149,18 @@ bool Polyhedron::strictly_inside(const Vec3q& p) const {
     I128 z128[3], den128;
     bool fits = small() && to_i128(den, den128);
     for (int k = 0; k < 3 && fits; ++k) fits = to_i128(z[k], z128[k]);
-    if (fits) {  // in 128 bits, overflow-checked, while it fits
-        bool inside = true, ok = true;
-        for (size_t i = 0; i < faces.size() && inside && ok; ++i) {
-            const Face& f = faces[i];
-            I128 lhs = 0, t, rhs;
-            for (int k = 0; k < 3 && ok; ++k) ok = mul_ok(f.normal_s[k], z128[k], t) && add_ok(lhs, t, lhs);
-            ok = ok && mul_ok(den128, dot_s(f.normal_s, ipts_s[f.verts[0]]), rhs);
-            inside = !ok || lhs < rhs;
-        }
-        if (ok) return inside;
+    // Strictly below every face: n·z − den·(n·v) < 0, in 128 bits while it fits, else GMP.
+    for (const Face& f : faces) {
+        auto gmp = [&] { return sgn(dotz(f.normal, z) - den * dotz(f.normal, ipts[f.verts[0]])); };
+        const int side = !fits ? gmp()
+                               : filter::exact_sign(
+                                     [&](filter::Acc128& acc) {
+                                         for (int k = 0; k < 3; ++k) acc.add(f.normal_s[k], z128[k]);
+                                         acc.sub(den128, dot_s(f.normal_s, ipts_s[f.verts[0]]));
+                                     },
+                                     gmp);
+        if (side >= 0) return false;
     }
-    for (const Face& f : faces)
-        if (dotz(f.normal, z) >= den * dotz(f.normal, ipts[f.verts[0]])) return false;
     return true;
 }
 

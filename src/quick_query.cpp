@@ -1,5 +1,7 @@
 #include "scalecert/quick_query.hpp"
 
+#include "scalecert/predicates.hpp"
+
 #include "scalecert/double3.hpp"
 
 #include <cmath>
@@ -63,7 +65,7 @@ QuickScene::~QuickScene() = default;
 Verdict QuickScene::classify(double r1, double r2) const {
     // Error budget: q1_, q2_, d_ are within 2^-53 relative of the exact values, and each formula
     // below adds a few roundings, so the true errors stay under 20 units of 2^-53 (4.4e-15) of
-    // the magnitudes named; the bounds use 1e-14 and 1e-13. Values too small for relative bounds
+    // the magnitudes named; the bounds are predicates.hpp's 5. Values too small for relative bounds
     // (underflow) or not finite are never certified.
     auto support = [&](const D3& v) {
         Pt p{{}, {}, 0, 0};
@@ -92,7 +94,7 @@ Verdict QuickScene::classify(double r1, double r2) const {
         }
         const double g = dotd(n, d_) - r1 * h1 - r2 * h2;
         const double scale = std::fabs(n[0] * d_[0]) + std::fabs(n[1] * d_[1]) + std::fabs(n[2] * d_[2]) + r1 * m1 + r2 * m2;
-        return std::isfinite(g) && std::isfinite(scale) && scale > 1e-250 && g > 1e-14 * scale;
+        return std::isfinite(g) && std::isfinite(scale) && scale > 1e-250 && g > filter::kQuickGapRel * scale;
     };
     // The origin strictly inside the tetrahedron: 0 = Σ λ_k w_k with every λ_k > 0, i.e. the four
     // cofactors (−1)^k det(w without k) nonzero and of one sign.
@@ -103,7 +105,7 @@ Verdict QuickScene::classify(double r1, double r2) const {
             for (int m = 0, t = 0; m < 4; ++m)
                 if (m != k) o[t++] = &s[static_cast<size_t>(m)];
             double det = dotd(o[0]->w, crossd(o[1]->w, o[2]->w)) * (k % 2 ? -1 : 1);
-            double bound = 1e-13 * permanent(o[0]->W, o[1]->W, o[2]->W);
+            double bound = filter::kQuickDetRel * permanent(o[0]->W, o[1]->W, o[2]->W);
             if (!std::isfinite(det) || !std::isfinite(bound) || !(bound > 1e-250) || std::fabs(det) <= bound) return false;
             const int sk = det > 0 ? 1 : -1;
             if (sign && sk != sign) return false;

@@ -1,5 +1,6 @@
 #include "scalecert/scan.hpp"
 
+#include "scalecert/predicates.hpp"
 #include "scalecert/small_int.hpp"
 #include "scalecert/timing.hpp"
 #include "scalecert/witness.hpp"
@@ -115,18 +116,16 @@ public:
 
     const IntPoints& points() const { return P_; }
 
-    // Every maximiser of n·x, exactly. Filter: each value n·x formed in doubles is within
-    // E = 2^-50·Σ|n_k|·max|x_k| of the truth (n rounded: 2^-53 relative; three products and two
-    // sums: γ3 < 3.01·2^-53), and so is each box's bound. So every true maximiser has a computed
-    // value ≥ best − 2E, and a box whose bound is below best − 4E holds no such point. The
-    // candidates are then compared exactly.
+    // Every maximiser of n·x, exactly. Filter (predicates.hpp, bound 7): every true maximiser has
+    // a computed value ≥ best − 2E, and a box whose bound is below best − 4E holds no such point,
+    // for E = kScanSupport·Σ|n_k|·max|x_k|. The candidates are then compared exactly.
     Support support(const Vec3z& nz) const {
         ++st_.support_queries;
         const Dir n(nz);
         double B = 0;
         for (int k = 0; k < 3; ++k) B += std::fabs(n.d[k]) * maxabs_[k];
         if (!(B > 0) || !std::isfinite(B)) throw NeedHull("a zero or huge normal");
-        const double E = std::ldexp(B, -50);
+        const double E = filter::kScanSupport * B;
         double best = -INFINITY;
         std::vector<std::pair<double, std::uint32_t>> cand;
         std::vector<std::pair<double, std::uint32_t>> stack;
