@@ -5,8 +5,10 @@
 #include "scalecert/fast_query.hpp"
 #include "scalecert/measures.hpp"
 #include "scalecert/mesh.hpp"
+#include "scalecert/scan.hpp"
 
 #include <cmath>
+#include <mutex>
 #include <thread>
 
 namespace scalecert {
@@ -73,9 +75,7 @@ Point canonical(Point p) {
     return p;
 }
 
-std::shared_ptr<const Model> shared_model(const internal::Scene& sc, const std::string& name) {
-    return std::make_shared<const Model>(build_model(sc, name));
-}
+size_t point_count(const internal::Scene& sc) { return sc.P[0].points.size() + sc.P[1].points.size(); }
 
 }  // namespace
 
@@ -98,32 +98,83 @@ Scene::Scene(std::vector<Point> p1, std::vector<Point> p2, Interval i1, Interval
         sc.hi[i].canonicalize();
     }
     finish_scene(sc, "scene");
-    model_ = shared_model(sc, "scene");
+    d_ = validated(std::move(sc), "scene");
 }
 
-Scene Scene::load(const std::string& path) {
-    return Scene(shared_model(load_scene(path), path));
+struct Scene::Data {
+    internal::Scene sc;
+    std::string name;  // prefixes the hull model's errors
+    std::once_flag once;
+    std::shared_ptr<const Model> model;
+};
+
+// Rank and seeds: proved from a few extreme points on large scenes (scan.hpp), else by the hull
+// model, built now (its errors are the scene's).
+std::shared_ptr<Scene::Data> Scene::validated(internal::Scene sc, const std::string& name) {
+    auto d = std::make_shared<Data>();
+    d->sc = std::move(sc);
+    d->name = name;
+    bool proved = false;
+    if (point_count(d->sc) >= internal::kScanFromPoints)
+        if (auto cs = internal::compact_scene(d->sc)) proved = internal::scan_seeds_proved(*cs);
+    if (!proved) std::call_once(d->once, [&] { d->model = std::make_shared<const Model>(build_model(d->sc, d->name)); });
+    return d;
 }
+
+std::shared_ptr<const Model> Scene::internal_model() const {
+    std::call_once(d_->once, [this] { d_->model = std::make_shared<const Model>(build_model(d_->sc, d_->name)); });
+    return d_->model;
+}
+
+const internal::Scene& Scene::internal_scene() const { return d_->sc; }
+
+Scene Scene::load(const std::string& path) { return Scene(validated(load_scene(path), path)); }
 
 Scene Scene::from_meshes(const std::string& p1_path, const std::string& p2_path, Interval i1, Interval i2) {
     return Scene(read_mesh(p1_path), read_mesh(p2_path), std::move(i1), std::move(i2));
 }
 
-const std::vector<Point>& Scene::points(int i) const { return model_->scene.P[i & 1].points; }
-const Point& Scene::seed(int i) const { return model_->s[i & 1]; }
-Interval Scene::range(int i) const { return {model_->scene.lo[i & 1], model_->scene.hi[i & 1]}; }
-std::string Scene::json() const { return dump(scene_json(model_->scene)); }
+const std::vector<Point>& Scene::points(int i) const { return d_->sc.P[i & 1].points; }
+const Point& Scene::seed(int i) const { return d_->sc.P[i & 1].seed; }
+Interval Scene::range(int i) const { return {d_->sc.lo[i & 1], d_->sc.hi[i & 1]}; }
+std::string Scene::json() const { return dump(scene_json(d_->sc)); }
 
 struct Analysis::Impl {
-    std::shared_ptr<const Model> model;
-    internal::Curve curve;
+    Scene scene;
+    std::optional<Model> scan;  // the scan path's model, when it built the curve
+    internal::Curve curve;      // the curve, from `scan` or from the hull model
+    // The hull model and its curve, for queries and the partition: built on first use.
+    mutable std::once_flag once;
+    mutable std::shared_ptr<const Model> hull;
+    mutable internal::Curve hull_curve;
+    explicit Impl(const Scene& s) : scene(s) {}
+    const Model& model() const {
+        std::call_once(once, [this] {
+            hull = scene.internal_model();
+            hull_curve = scan ? build_curve(*hull) : curve;
+        });
+        return *hull;
+    }
+    const internal::Curve& model_curve() const {
+        model();
+        return hull_curve;
+    }
 };
 
 Analysis::Analysis(const Scene& scene) {
-    auto impl = std::make_shared<Impl>();
-    impl->model = scene.internal_model();
-    impl->curve = build_curve(*impl->model);
-    const Model& m = *impl->model;
+    auto impl = std::make_shared<Impl>(scene);
+    const internal::Scene& sc = scene.internal_scene();
+    if (point_count(sc) >= internal::kScanFromPoints)
+        if (auto cs = internal::compact_scene(sc)) {
+            try {
+                impl->scan.emplace(internal::scan_model(std::make_shared<const internal::CompactScene>(std::move(*cs))));
+                impl->curve = build_curve(*impl->scan);
+            } catch (const internal::NeedHull&) {
+                impl->scan.reset();
+            }
+        }
+    if (!impl->scan) impl->curve = build_curve(*scene.internal_model());
+    const Model& m = impl->scan ? *impl->scan : *scene.internal_model();
     const internal::Curve& c = impl->curve;
     for (const CurvePiece& p : c.pieces) {
         const ContactLine& L = m.lines[c.env.pieces[p.env].line];
@@ -145,8 +196,8 @@ static void check_rho(const Rational& r, const char* what) {
 QueryResult Analysis::query(const Rational& rho1, const Rational& rho2) const {
     check_rho(rho1, "rho1");
     check_rho(rho2, "rho2");
-    const Model& m = *impl_->model;
-    const internal::QueryResult r = internal::query(m, impl_->curve, rho1, rho2, true);
+    const Model& m = impl_->model();
+    const internal::QueryResult r = internal::query(m, impl_->model_curve(), rho1, rho2, true);
     QueryResult out{r.verdict, std::nullopt, std::nullopt};
     if (r.plane) out.plane = Plane{to_q(m.lines[r.plane->line].normal), r.plane->c1, r.plane->c2, r.plane->offset};
     if (r.witness) out.common = CommonPoint{r.witness->rho1, r.witness->rho2, r.witness->point};
@@ -161,7 +212,7 @@ std::vector<Verdict> Analysis::classify(const std::vector<double>& rho1, const s
         if (!(std::isfinite(rho1[i]) && std::isfinite(rho2[i]) && rho1[i] > 0 && rho2[i] > 0))
             throw InputError("classify: pair " + std::to_string(i) + ": two finite numbers > 0 are required");
     if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
-    FastCurve f(*impl_->model, impl_->curve);
+    FastCurve f(impl_->model(), impl_->model_curve());
     std::vector<Verdict> out;
     classify_batch(f, rho1, rho2, out, threads);
     return out;
@@ -173,7 +224,7 @@ PlaneCheck Analysis::check_plane(const Rational& rho1, const Rational& rho2, con
     check_rho(rho2, "rho2");
     const Point n = canonical(normal);
     if (sgn(n[0]) == 0 && sgn(n[1]) == 0 && sgn(n[2]) == 0) throw InputError("check_plane: the normal is zero");
-    const auto [c1, c2] = internal::plane_extents(*impl_->model, n, rho1, rho2);
+    const auto [c1, c2] = internal::plane_extents(impl_->model(), n, rho1, rho2);
     PlaneCheck r;
     r.c1 = c1;
     r.c2 = c2;
@@ -181,18 +232,20 @@ PlaneCheck Analysis::check_plane(const Rational& rho1, const Rational& rho2, con
     return r;
 }
 
-std::string Analysis::curve_json() const { return dump(internal::curve_json(*impl_->model, impl_->curve)); }
+std::string Analysis::curve_json() const {
+    return dump(internal::curve_json(impl_->scan ? *impl_->scan : impl_->model(), impl_->curve));
+}
 
 std::string Analysis::query_json(const Rational& rho1, const Rational& rho2) const {
     check_rho(rho1, "rho1");
     check_rho(rho2, "rho2");
-    const Model& m = *impl_->model;
-    return dump(internal::query_json(m, internal::query(m, impl_->curve, rho1, rho2, true)));
+    const Model& m = impl_->model();
+    return dump(internal::query_json(m, internal::query(m, impl_->model_curve(), rho1, rho2, true)));
 }
 
 std::string Analysis::partition_json() const {
-    const Model& m = *impl_->model;
-    return dump(internal::partition_json(m, impl_->curve, build_partition(m, impl_->curve)));
+    const Model& m = impl_->model();
+    return dump(internal::partition_json(m, impl_->model_curve(), build_partition(m, impl_->model_curve())));
 }
 
 }  // namespace scalecert

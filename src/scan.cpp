@@ -555,7 +555,39 @@ bool strictly_inside_few(const IntPoints& P, const std::vector<int>& W, const Ve
     return solid;
 }
 
+// The extreme points of polyhedron i in 14 directions (the axes and the diagonals), sorted, once
+// each: the seeds' proof of interiority, and the start LP's first rows (which keep it bounded).
+std::vector<int> extreme_points(const Walker& w, int i) {
+    std::vector<int> out;
+    for (int a = -1; a <= 1; ++a)
+        for (int b = -1; b <= 1; ++b)
+            for (int c = -1; c <= 1; ++c)
+                if (std::abs(a) + std::abs(b) + std::abs(c) == 1 || (a && b && c)) out.push_back(w.support(i, {Z(a), Z(b), Z(c)}).all.front());
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    return out;
+}
+
+// The two trees, one thread each.
+std::pair<std::unique_ptr<Cloud>, std::unique_ptr<Cloud>> trees(const CompactScene& sc, ScanStats& st) {
+    auto second = std::async(std::launch::async, [&] { return std::make_unique<Cloud>(sc.P[1], st); });
+    auto first = std::make_unique<Cloud>(sc.P[0], st);
+    return {std::move(first), second.get()};
+}
+
 }  // namespace
+
+bool scan_seeds_proved(const CompactScene& sc) {
+    for (int i = 0; i < 2; ++i)
+        if (sc.P[i].size() < 4 || sc.P[i].size() > kMaxPoints) return false;
+    Model m;  // supports only: the walker needs no lines
+    m.scan = std::shared_ptr<const CompactScene>(&sc, [](const CompactScene*) {});
+    const auto t = trees(sc, m.scan_stats);
+    const Walker w(m, *t.first, *t.second);
+    for (int i = 0; i < 2; ++i)
+        if (!strictly_inside_few(sc.P[i], extreme_points(w, i), sc.seed[i])) return false;
+    return true;
+}
 
 Model scan_model(std::shared_ptr<const CompactScene> sc) {
     StageClock clock;
@@ -587,24 +619,13 @@ Model scan_model(std::shared_ptr<const CompactScene> sc) {
     integral(m.d, m.dz, m.dden);
     if (is_zero(m.dz)) throw NeedHull("the seeds coincide");
 
-    // The two trees at once (a thread each).
-    auto tree2 = std::async(std::launch::async, [&] { return std::make_unique<Cloud>(sc->P[1], m.scan_stats); });
-    const Cloud c1(sc->P[0], m.scan_stats);
-    const std::unique_ptr<Cloud> t2 = tree2.get();
-    const Cloud& c2 = *t2;
+    const auto t = trees(*sc, m.scan_stats);
+    const Cloud &c1 = *t.first, &c2 = *t.second;
     clock.lap("scan: trees");
     Walker w(m, c1, c2);
-    // The seeds: strictly inside the hull of the extreme points in 14 directions (the axes and
-    // the diagonals), which also start the LP bounded.
     std::vector<int> init[2];
     for (int i = 0; i < 2; ++i) {
-        for (int a = -1; a <= 1; ++a)
-            for (int b = -1; b <= 1; ++b)
-                for (int c = -1; c <= 1; ++c)
-                    if (std::abs(a) + std::abs(b) + std::abs(c) == 1 || (a && b && c))
-                        init[i].push_back(w.support(i, {Z(a), Z(b), Z(c)}).all.front());
-        std::sort(init[i].begin(), init[i].end());
-        init[i].erase(std::unique(init[i].begin(), init[i].end()), init[i].end());
+        init[i] = extreme_points(w, i);
         if (!strictly_inside_few(sc->P[i], init[i], m.s[i])) throw NeedHull(std::string(names[i]) + ": seed not proved inside");
     }
     const Vec3z dn = primitive(m.dz);

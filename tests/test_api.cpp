@@ -175,3 +175,61 @@ BOOST_AUTO_TEST_CASE(loaded_scene_certificate_passes_the_checker) {
     BOOST_TEST_REQUIRE(c.switches[0].contact.has_value());
     BOOST_TEST((c.switches[0].contact->kind == scalecert::ContactKind::VE));
 }
+
+// The same tetrahedron and box with 1,200 strictly interior points each (dyadic convex
+// combinations, so the hulls are unchanged): 2,400 points, so the library builds the curve by the
+// scan path, as the command does. The curve must be the small scene's (built by the hull path) and
+// start with the hand-derived piece; queries (hull model, built on first use) agree.
+BOOST_AUTO_TEST_CASE(large_scene_takes_the_scan_path) {
+    const std::string dir = std::string(SCALECERT_SOURCE_DIR) + "/certificates/";
+    const scalecert::Scene small = scalecert::Scene::load(dir + "scenes/tetra_box_switch.json");
+    std::vector<scalecert::Point> p[2] = {small.points(0), small.points(1)};
+    unsigned s = 12345;
+    auto next = [&s] { return (s = s * 1103515245u + 12345u) >> 16; };
+    for (int i = 0; i < 2; ++i) {
+        const std::vector<scalecert::Point> corners = p[i];
+        for (int k = 0; k < 1200; ++k) {
+            // Weights >= 1 out of 64·n: strictly inside the hull of the corners.
+            std::vector<long> w(corners.size(), 1);
+            long left = 64 * long(corners.size()) - long(corners.size());
+            for (size_t j = 0; j + 1 < w.size(); ++j) {
+                const long t = long(next() % (left + 1));
+                w[j] += t;
+                left -= t;
+            }
+            w.back() += left;
+            scalecert::Point q{R(0), R(0), R(0)};
+            for (size_t j = 0; j < corners.size(); ++j)
+                for (int c = 0; c < 3; ++c) q[c] += corners[j][c] * R(w[j], 64 * long(corners.size()));
+            for (int c = 0; c < 3; ++c) q[c].canonicalize();
+            p[i].push_back(q);
+        }
+    }
+    const scalecert::Scene large(p[0], p[1], small.range(0), small.range(1), small.seed(0), small.seed(1));
+    const scalecert::Analysis a(large), b(small);
+    BOOST_TEST(a.curve_json().find("\"engine\": \"scan\"") != std::string::npos);
+    BOOST_TEST(b.curve_json().find("\"engine\": \"scan\"") == std::string::npos);
+    const scalecert::Curve &ca = a.curve(), &cb = b.curve();
+    BOOST_TEST_REQUIRE(ca.pieces.size() == cb.pieces.size());
+    for (size_t k = 0; k < ca.pieces.size(); ++k) {
+        BOOST_TEST(ca.pieces[k].from == cb.pieces[k].from);
+        BOOST_TEST(ca.pieces[k].to == cb.pieces[k].to);
+        BOOST_TEST(ca.pieces[k].slope == cb.pieces[k].slope);
+        BOOST_TEST(ca.pieces[k].intercept == cb.pieces[k].intercept);
+        BOOST_TEST((ca.pieces[k].contact.kind == cb.pieces[k].contact.kind));
+        BOOST_TEST(ca.pieces[k].contact.verts1 == cb.pieces[k].contact.verts1);
+        BOOST_TEST(ca.pieces[k].contact.verts2 == cb.pieces[k].contact.verts2);
+    }
+    BOOST_TEST_REQUIRE(ca.switches.size() == cb.switches.size());
+    for (size_t k = 0; k < ca.switches.size(); ++k) {
+        BOOST_TEST(ca.switches[k].rho1 == cb.switches[k].rho1);
+        BOOST_TEST(ca.switches[k].rho2 == cb.switches[k].rho2);
+    }
+    BOOST_TEST(ca.growth.value == cb.growth.value);
+    BOOST_TEST(ca.pieces[0].slope == R(-5, 2));  // by hand, as above
+    BOOST_TEST(ca.pieces[0].intercept == R(9, 2));
+    // Below, on and above the first piece at ρ1 = 3/5 (ρ2 = 9/2 − 3/2 = 3).
+    BOOST_TEST((a.query(R(3, 5), R(2)).verdict == scalecert::Verdict::Separated));
+    BOOST_TEST((a.query(R(3, 5), R(3)).verdict == scalecert::Verdict::Touching));
+    BOOST_TEST((a.query(R(3, 5), R(4)).verdict == scalecert::Verdict::Overlapping));
+}

@@ -38,7 +38,10 @@ Feature feature2(ContactKind k);
 // Two features in contact: the vertices (indices into the input points) spanning each.
 struct Contact { ContactKind kind; std::vector<int> verts1, verts2; };
 
-namespace internal { struct Model; }  // the exact polyhedra and their contact lines
+namespace internal {
+struct Model;  // the exact polyhedra and their contact lines
+struct Scene;  // the scene as read
+}  // namespace internal
 
 // A validated scene: each polyhedron is the convex hull of its points (duplicates and interior
 // points allowed); the seed defaults to the mean of the points. Checked at construction by the
@@ -55,11 +58,16 @@ public:
     const Point& seed(int i) const;
     Interval range(int i) const;
     std::string json() const;  // the scene file, every number exact
-    std::shared_ptr<const internal::Model> internal_model() const { return model_; }
+    const internal::Scene& internal_scene() const;
+    // The hull model (polyhedra, every contact line), built on first use. Large scenes whose seeds
+    // a few extreme points prove interior are validated without it.
+    std::shared_ptr<const internal::Model> internal_model() const;
 
 private:
-    explicit Scene(std::shared_ptr<const internal::Model> m) : model_(std::move(m)) {}
-    std::shared_ptr<const internal::Model> model_;
+    struct Data;
+    static std::shared_ptr<Data> validated(internal::Scene sc, const std::string& name);
+    explicit Scene(std::shared_ptr<Data> d) : d_(std::move(d)) {}
+    std::shared_ptr<Data> d_;
 };
 
 // The touching curve over I1: ρ2 = slope·ρ1 + intercept on each piece, descending and convex.
@@ -83,7 +91,10 @@ struct PlaneCheck { bool separates; Rational c1, c2; };  // exact c1, c2 as in P
 // on many threads.
 class Analysis {
 public:
-    explicit Analysis(const Scene& scene);  // builds the curve; keeps the scene's model alive
+    // Builds the curve: by walking it (the scan path, no hull) from 2,000 points, as the scalecert
+    // command does, else from the hull model; queries and the partition use the hull model,
+    // built on first use.
+    explicit Analysis(const Scene& scene);
     const Curve& curve() const { return curve_; }
     QueryResult query(const Rational& rho1, const Rational& rho2) const;  // ρ1, ρ2 > 0
     // The exact verdicts at doubles' exact values (> 0, finite), on `threads` threads (0: all cores).

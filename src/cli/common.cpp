@@ -149,7 +149,7 @@ Analysed analyse_curve(const SceneArgs& args, Engine engine, StageClock& clock) 
     if (engine != Engine::Hull) {
         std::shared_ptr<const internal::CompactScene> cs = args.load_compact();
         clock.lap("read scene (compact)");
-        if (cs && (engine == Engine::Scan || cs->P[0].size() + cs->P[1].size() >= kScanFrom)) {
+        if (cs && (engine == Engine::Scan || cs->P[0].size() + cs->P[1].size() >= internal::kScanFromPoints)) {
             try {
                 Analysed a{internal::scan_model(cs), {}};
                 a.c = build_curve(a.m);

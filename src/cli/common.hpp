@@ -46,9 +46,8 @@ struct Analysed {
 };
 Analysed analyse(const SceneArgs& scene, internal::StageClock& clock);
 // Which engine builds the curve: the scan path (scan.hpp) with the hull path as its fallback, or
-// the hull path alone. Auto takes the scan path from kScanFrom points (both polyhedra together).
+// the hull path alone. Auto takes the scan path from kScanFromPoints (both polyhedra together).
 enum class Engine { Auto, Scan, Hull };
-constexpr size_t kScanFrom = 2000;
 Analysed analyse_curve(const SceneArgs& scene, Engine engine, internal::StageClock& clock);
 // A segment for --segment: seeds | ellipsoids | x1,y1,z1:x2,y2,z2.
 internal::Segment parse_segment(const std::string& spec, const Model& m);

@@ -32,4 +32,12 @@ struct NeedHull : std::runtime_error {
 // and NeedHull.
 Model scan_model(std::shared_ptr<const CompactScene> sc);
 
+// Both seeds proved strictly inside from a few extreme points (as scan_model does); false means
+// "not proved" (the hull decides), not "outside".
+bool scan_seeds_proved(const CompactScene& sc);
+
+// From this many points (both polyhedra together) the scan path is the faster one: the command
+// and the library take it by default (scalecert-bench --sizes).
+constexpr size_t kScanFromPoints = 2000;
+
 }  // namespace scalecert::internal
