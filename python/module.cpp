@@ -29,7 +29,7 @@ Rational rational(const py::handle& h, const char* what) {
     try {
         if (py::isinstance<py::bool_>(h)) throw scalecert::InputError("a bool is not a number");
         if (py::isinstance<py::str>(h)) return scalecert::parse_rational(h.cast<std::string>());
-        if (py::isinstance<py::float_>(h) || py::hasattr(h, "dtype") && py::str(h.attr("dtype").attr("kind")).cast<std::string>() == "f") {
+        if (py::isinstance<py::float_>(h) || (py::hasattr(h, "dtype") && py::str(h.attr("dtype").attr("kind")).cast<std::string>() == "f")) {
             const double d = py::float_(h.cast<py::object>()).cast<double>();
             if (!std::isfinite(d)) throw scalecert::InputError("not a finite number");
             return scalecert::exact(d);

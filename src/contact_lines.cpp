@@ -285,6 +285,20 @@ std::vector<Vec3z> all_facet_normals(const Model& m) {
     return facet_normals<Vec3z>(m, scratch);
 }
 
+void set_seeds_in_integers(Model& m) {
+    m.d = sub(m.s[1], m.s[0]);
+    auto integral = [](const Vec3q& v, Vec3z& z, Z& den) {  // v = z / den
+        den = 1;
+        for (const Q& c : v) mpz_lcm(den.get_mpz_t(), den.get_mpz_t(), c.get_den_mpz_t());
+        for (int k = 0; k < 3; ++k) z[k] = Z(v[k] * den);
+    };
+    for (int i = 0; i < 2; ++i) {
+        Vec3q ss{m.s[i][0] * m.P[i].scale, m.s[i][1] * m.P[i].scale, m.s[i][2] * m.P[i].scale};
+        integral(ss, m.sz[i], m.sden[i]);
+    }
+    integral(m.d, m.dz, m.dden);
+}
+
 Model build_model(const Scene& scene) {
     check_scene(scene, "scene");  // a scene built in code gets the reader's checks too
     StageClock clock;
@@ -298,17 +312,7 @@ Model build_model(const Scene& scene) {
             throw InputError(std::string(names[i]) + ".seed: not strictly inside the polyhedron" +
                              (scene.P[i].seed_given ? "" : " (the default seed is the mean of the vertices)"));
     }
-    m.d = sub(m.s[1], m.s[0]);
-    auto integral = [](const Vec3q& v, Vec3z& z, Z& den) {  // v = z / den
-        den = 1;
-        for (const Q& c : v) mpz_lcm(den.get_mpz_t(), den.get_mpz_t(), c.get_den_mpz_t());
-        for (int k = 0; k < 3; ++k) z[k] = Z(v[k] * den);
-    };
-    for (int i = 0; i < 2; ++i) {
-        Vec3q ss{m.s[i][0] * m.P[i].scale, m.s[i][1] * m.P[i].scale, m.s[i][2] * m.P[i].scale};
-        integral(ss, m.sz[i], m.sden[i]);
-    }
-    integral(m.d, m.dz, m.dden);
+    set_seeds_in_integers(m);
     clock.lap("hulls");
 
     // Machine integers when both polyhedra are small (exact within small_int.hpp's bounds), GMP

@@ -62,6 +62,9 @@ struct Model {
 // 10^-14 relative (or are not finite); a line is dropped only when margins of 10^-12 prove it.
 std::vector<size_t> undominated(const std::vector<double>& a, const std::vector<double>& b);
 
+// d = s2 − s1, and sz, sden, dz, dden (above) from the seeds m.s and the scales m.P[i].scale.
+void set_seeds_in_integers(Model& m);
+
 // Builds the exact polyhedra, checks the seeds, and enumerates the contact lines: every facet
 // normal of the Minkowski sum is found; lines certainly dominated (never on the touching curve,
 // never deciding a query) are dropped before their exact values are computed.
