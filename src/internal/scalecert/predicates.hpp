@@ -5,9 +5,11 @@
 //
 // A filter may only answer when its computed value clears its bound; otherwise the exact stage
 // decides. Each bound below is the proven worst case times a safety factor (stated, and checked
-// by a static_assert), so that a slip of a few ulps in the reasoning cannot make a filter lie. The counts of filtered and exact
-// decisions are engine statistics, reported with each model ("decided_by_filter",
-// "decided_exactly"); they live in Counts.
+// by a static_assert), so that a slip of a few ulps in the reasoning cannot make a filter lie.
+// The counts of filtered and exact decisions are engine statistics, reported with each model
+// ("decided_by_filter", "decided_exactly"); each is kept by the object that decides, so that
+// threads share none: Polyhedron::cmp_filtered/cmp_exact (1), LineStats::arc_signs_* (2),
+// StageCounts of the fast and quick queries (4, 5) and ScanStats (7).
 //
 // Notation: u = 2^-53 (the unit roundoff of double), γ_n = n·u / (1 − n·u) (Higham): a sum of n
 // rounded products, or a product of n rounded factors, is within γ_n of the exact value
@@ -77,12 +79,6 @@ constexpr double kArcBoxPad = 1e-7;
 //    box's bound at least best − 3e ≥ best − 4E (the pruning margin). Factor 2.
 constexpr double kScanSupport = 0x1p-50;
 static_assert(kScanSupport > 1.9 * (kUnit + gamma(3)), "scan support bound");
-
-// ---- Decisions, counted ------------------------------------------------------------------------
-
-struct Counts {
-    std::uint64_t filtered = 0, exact = 0;
-};
 
 // ---- The exact stage: 128 bits with overflow checks, else GMP ---------------------------------
 
