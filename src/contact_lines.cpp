@@ -287,16 +287,11 @@ std::vector<Vec3z> all_facet_normals(const Model& m) {
 
 void set_seeds_in_integers(Model& m) {
     m.d = sub(m.s[1], m.s[0]);
-    auto integral = [](const Vec3q& v, Vec3z& z, Z& den) {  // v = z / den
-        den = 1;
-        for (const Q& c : v) mpz_lcm(den.get_mpz_t(), den.get_mpz_t(), c.get_den_mpz_t());
-        for (int k = 0; k < 3; ++k) z[k] = Z(v[k] * den);
-    };
     for (int i = 0; i < 2; ++i) {
-        Vec3q ss{m.s[i][0] * m.P[i].scale, m.s[i][1] * m.P[i].scale, m.s[i][2] * m.P[i].scale};
-        integral(ss, m.sz[i], m.sden[i]);
+        const Vec3q ss{m.s[i][0] * m.P[i].scale, m.s[i][1] * m.P[i].scale, m.s[i][2] * m.P[i].scale};
+        m.sz[i] = over_common_denominator(ss, m.sden[i]);
     }
-    integral(m.d, m.dz, m.dden);
+    m.dz = over_common_denominator(m.d, m.dden);
 }
 
 Model build_model(const Scene& scene) {

@@ -22,9 +22,9 @@ std::vector<K::Point_3> scaled_vertices(const Model& m, int i, const Q& rho) {
     std::vector<K::Point_3> out;
     for (int v : m.P[i].vertices) {
         const Vec3q p = scaled_point(m, i, rho, m.P[i].points[static_cast<size_t>(v)]);
-        Z w = 1;
-        for (const Q& c : p) mpz_lcm(w.get_mpz_t(), w.get_mpz_t(), c.get_den_mpz_t());
-        out.emplace_back(gz(Z(p[0] * w)), gz(Z(p[1] * w)), gz(Z(p[2] * w)), gz(w));
+        Z w;
+        const Vec3z z = over_common_denominator(p, w);
+        out.emplace_back(gz(z[0]), gz(z[1]), gz(z[2]), gz(w));
     }
     return out;
 }

@@ -50,12 +50,17 @@ bool to_small_normal(const Vec3z& v, Vec3s& out) {
     return true;
 }
 
-Vec3z primitive(const Vec3q& v) {
-    Z l = 1;
-    for (const Q& c : v) mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), c.get_den_mpz_t());
+Vec3z over_common_denominator(const Vec3q& v, Z& den) {
+    den = 1;
+    for (const Q& c : v) mpz_lcm(den.get_mpz_t(), den.get_mpz_t(), c.get_den_mpz_t());
     Vec3z z;
-    for (int k = 0; k < 3; ++k) z[k] = Z(v[k] * l);
-    return primitive(z);
+    for (int k = 0; k < 3; ++k) z[k] = Z(v[k] * den);
+    return z;
+}
+
+Vec3z primitive(const Vec3q& v) {
+    Z den;
+    return primitive(over_common_denominator(v, den));
 }
 
 namespace {

@@ -142,10 +142,8 @@ Q Polyhedron::support(const Vec3z& n) const {
 
 bool Polyhedron::strictly_inside(const Vec3q& p) const {
     // In the integer frame: p·scale = z/den, so n·p < n·v  iff  n·z < den·(n·ipts[v]).
-    Z den = 1;
-    for (const Q& c : p) mpz_lcm(den.get_mpz_t(), den.get_mpz_t(), c.get_den_mpz_t());
-    Vec3z z;
-    for (int k = 0; k < 3; ++k) z[k] = Z(p[k] * scale * den);
+    Z den;
+    const Vec3z z = over_common_denominator({p[0] * scale, p[1] * scale, p[2] * scale}, den);
     I128 z128[3], den128;
     bool fits = small() && to_i128(den, den128);
     for (int k = 0; k < 3 && fits; ++k) fits = to_i128(z[k], z128[k]);

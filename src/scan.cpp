@@ -528,11 +528,8 @@ private:
 bool strictly_inside_few(const IntPoints& P, const std::vector<int>& W, const Vec3q& s) {
     std::vector<Vec3z> x;
     for (int k : W) x.push_back(zpoint(P, k));
-    // s·scale = sz / den.
-    Z den = 1;
-    for (const Q& c : s) mpz_lcm(den.get_mpz_t(), den.get_mpz_t(), c.get_den_mpz_t());
-    Vec3z sz;
-    for (int k = 0; k < 3; ++k) sz[k] = Z(s[k] * P.scale * den);
+    Z den;  // s·scale = sz / den
+    const Vec3z sz = over_common_denominator({s[0] * P.scale, s[1] * P.scale, s[2] * P.scale}, den);
     bool solid = false;
     const size_t m = x.size();
     for (size_t a = 0; a < m; ++a)

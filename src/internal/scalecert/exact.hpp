@@ -40,6 +40,8 @@ inline Vec3z neg(const Vec3z& v) { return {Z(-v[0]), Z(-v[1]), Z(-v[2])}; }
 // common factor removed. Two normals are the same direction iff their primitive forms are equal.
 Vec3z primitive(const Vec3q& v);
 Vec3z primitive(const Vec3z& v);
+// v over its common denominator: v = z / den, den > 0 the lcm of the coordinates' denominators.
+Vec3z over_common_denominator(const Vec3q& v, Z& den);
 
 // User text for an error message: quoted, control characters escaped (so the message stays one
 // line), and cut after 40 characters.
