@@ -75,36 +75,42 @@ struct Cursor {
     }
 };
 
-// A plain decimal as mantissa × 10^exp10; false for anything else.
-bool decimal(const char* b, const char* e, std::int64_t& mant, int& exp10) {
+inline bool digit(char c) { return c >= '0' && c <= '9'; }
+
+// A decimal at p as mantissa × 10^exp10 (at most 18 significant digits and a 3-digit
+// exponent), moving p past it; false for anything else. The OFF reader's grammar,
+// [+-]digits[.digits][e[+-]digits], or with `json` RFC 8259's: no '+', no leading zeros.
+__attribute__((always_inline)) inline bool read_decimal(const char*& p, const char* e, bool json, std::int64_t& mant, int& exp10) {
+    const char* q = p;
     bool neg = false;
-    if (b < e && (*b == '+' || *b == '-')) neg = *b++ == '-';
+    if (q < e && (*q == '-' || (!json && *q == '+'))) neg = *q++ == '-';
+    if (q == e || !digit(*q)) return false;
     std::int64_t m = 0;
     int digits = 0, frac = 0;
-    bool any = false;
-    auto digit = [&](char ch) {
-        if (m != 0 || ch != '0') ++digits;
-        m = m * 10 + (ch - '0');
+    auto take = [&] {
+        if ((m != 0 || *q != '0') && ++digits > 18) return false;
+        m = m * 10 + (*q++ - '0');
+        return true;
     };
-    while (b < e && *b >= '0' && *b <= '9') { if (digits >= 18) return false; digit(*b++); any = true; }
-    if (!any) return false;
-    if (b < e && *b == '.') {
-        ++b;
-        bool f = false;
-        while (b < e && *b >= '0' && *b <= '9') { if (digits >= 18) return false; digit(*b++); ++frac; f = true; }
-        if (!f) return false;
+    if (json && *q == '0') ++q;
+    else while (q < e && digit(*q)) if (!take()) return false;
+    if (q < e && *q == '.') {
+        if (++q == e || !digit(*q)) return false;
+        for (; q < e && digit(*q); ++frac)
+            if (!take()) return false;
     }
     int ex = 0;
-    if (b < e && (*b == 'e' || *b == 'E')) {
-        ++b;
+    if (q < e && (*q == 'e' || *q == 'E')) {
         bool eneg = false;
-        if (b < e && (*b == '+' || *b == '-')) eneg = *b++ == '-';
-        int nd = 0;
-        while (b < e && *b >= '0' && *b <= '9') { if (++nd > 3) return false; ex = ex * 10 + (*b++ - '0'); }
-        if (nd == 0) return false;
+        if (++q < e && (*q == '+' || *q == '-')) eneg = *q++ == '-';
+        if (q == e || !digit(*q)) return false;
+        for (int nd = 0; q < e && digit(*q);) {
+            if (++nd > 3) return false;
+            ex = ex * 10 + (*q++ - '0');
+        }
         if (eneg) ex = -ex;
     }
-    if (b != e) return false;
+    p = q;
     mant = neg ? -m : m;
     exp10 = ex - frac;
     return true;
@@ -200,7 +206,7 @@ std::optional<IntPoints> parse_off_fast(const char* data, size_t size) {
     int lowest = 0;
     for (size_t i = 0; i < 3 * nv; ++i) {
         int x10;
-        if (!c.next(b, e) || !decimal(b, e, r.x[i], x10) || x10 < -18 || x10 > 18) return std::nullopt;
+        if (!c.next(b, e) || !read_decimal(b, e, false, r.x[i], x10) || b != e || x10 < -18 || x10 > 18) return std::nullopt;
         ex[i] = static_cast<std::int8_t>(x10);
         if (r.x[i] != 0 && x10 < lowest) lowest = x10;
     }
@@ -318,47 +324,6 @@ private:
         }
         return verts && lit('}');
     }
-    // A JSON number as mantissa × 10^x10, in one pass (at most 18 significant digits and a
-    // 3-digit exponent, as parse_off_fast's decimals).
-    static bool digit(char c) { return c >= '0' && c <= '9'; }
-    bool json_decimal(std::int64_t& m, int& x10) {
-        ws();
-        const char* p = p_;
-        bool neg = false;
-        if (p < e_ && *p == '-') neg = true, ++p;
-        if (p == e_ || !digit(*p)) return false;
-        std::int64_t v = 0;
-        int digits = 0, frac = 0;
-        auto take = [&] {
-            if ((v != 0 || *p != '0') && ++digits > 18) return false;
-            v = v * 10 + (*p++ - '0');
-            return true;
-        };
-        if (*p == '0') ++p;
-        else while (p < e_ && digit(*p)) if (!take()) return false;
-        if (p < e_ && *p == '.') {
-            if (++p == e_ || !digit(*p)) return false;
-            while (p < e_ && digit(*p)) {
-                if (!take()) return false;
-                ++frac;
-            }
-        }
-        int ex = 0;
-        if (p < e_ && (*p == 'e' || *p == 'E')) {
-            bool eneg = false;
-            if (++p < e_ && (*p == '+' || *p == '-')) eneg = *p++ == '-';
-            if (p == e_ || !digit(*p)) return false;
-            for (int nd = 0; p < e_ && digit(*p);) {
-                if (++nd > 3) return false;
-                ex = ex * 10 + (*p++ - '0');
-            }
-            if (eneg) ex = -ex;
-        }
-        p_ = p;
-        m = neg ? -v : v;
-        x10 = ex - frac;
-        return true;
-    }
     bool vertices(IntPoints& P, size_t& values) {
         if (!lit('[')) return false;
         std::vector<std::int8_t> ex;
@@ -375,7 +340,10 @@ private:
                     if (k && !lit(',')) return false;
                     std::int64_t m;
                     int x10;
-                    if (!json_decimal(m, x10) || x10 < -18 || x10 > 18) return false;
+                    ws();
+                    const char* q = p_;  // a local cursor: kept in a register
+                    if (!read_decimal(q, e_, true, m, x10) || x10 < -18 || x10 > 18) return false;
+                    p_ = q;
                     P.x.push_back(m);
                     ex.push_back(static_cast<std::int8_t>(x10));
                     if (m != 0 && x10 < lowest) lowest = x10;
