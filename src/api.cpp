@@ -104,8 +104,14 @@ Scene::Scene(std::vector<Point> p1, std::vector<Point> p2, Interval i1, Interval
 struct Scene::Data {
     internal::Scene sc;
     std::string name;  // prefixes the hull model's errors
+    // The points as machine integers, for the scan path: large scenes only, when they fit.
+    std::shared_ptr<const internal::CompactScene> compact;
     std::once_flag once;
     std::shared_ptr<const Model> model;
+    const std::shared_ptr<const Model>& hull() {
+        std::call_once(once, [this] { model = std::make_shared<const Model>(build_model(sc, name)); });
+        return model;
+    }
 };
 
 // Rank and seeds: proved from a few extreme points on large scenes (scan.hpp), else by the hull
@@ -114,19 +120,13 @@ std::shared_ptr<Scene::Data> Scene::validated(internal::Scene sc, const std::str
     auto d = std::make_shared<Data>();
     d->sc = std::move(sc);
     d->name = name;
-    bool proved = false;
     if (point_count(d->sc) >= internal::kScanFromPoints)
-        if (auto cs = internal::compact_scene(d->sc)) proved = internal::scan_seeds_proved(*cs);
-    if (!proved) std::call_once(d->once, [&] { d->model = std::make_shared<const Model>(build_model(d->sc, d->name)); });
+        if (auto cs = internal::compact_scene(d->sc)) d->compact = std::make_shared<const internal::CompactScene>(std::move(*cs));
+    if (!d->compact || !internal::scan_seeds_proved(*d->compact)) d->hull();
     return d;
 }
 
-std::shared_ptr<const Model> Scene::internal_model() const {
-    std::call_once(d_->once, [this] { d_->model = std::make_shared<const Model>(build_model(d_->sc, d_->name)); });
-    return d_->model;
-}
-
-const internal::Scene& Scene::internal_scene() const { return d_->sc; }
+std::shared_ptr<const Model> Scene::internal_model() const { return d_->hull(); }
 
 Scene Scene::load(const std::string& path) { return Scene(validated(load_scene(path), path)); }
 
@@ -163,16 +163,14 @@ struct Analysis::Impl {
 
 Analysis::Analysis(const Scene& scene) {
     auto impl = std::make_shared<Impl>(scene);
-    const internal::Scene& sc = scene.internal_scene();
-    if (point_count(sc) >= internal::kScanFromPoints)
-        if (auto cs = internal::compact_scene(sc)) {
-            try {
-                impl->scan.emplace(internal::scan_model(std::make_shared<const internal::CompactScene>(std::move(*cs))));
-                impl->curve = build_curve(*impl->scan);
-            } catch (const internal::NeedHull&) {
-                impl->scan.reset();
-            }
+    if (scene.d_->compact) {  // the scan path, on the points the scene holds in integers
+        try {
+            impl->scan.emplace(internal::scan_model(scene.d_->compact));
+            impl->curve = build_curve(*impl->scan);
+        } catch (const internal::NeedHull&) {
+            impl->scan.reset();
         }
+    }
     if (!impl->scan) impl->curve = build_curve(*scene.internal_model());
     const Model& m = impl->scan ? *impl->scan : *scene.internal_model();
     const internal::Curve& c = impl->curve;

@@ -552,14 +552,22 @@ bool strictly_inside_few(const IntPoints& P, const std::vector<int>& W, const Ve
     return solid;
 }
 
-// The extreme points of polyhedron i in 14 directions (the axes and the diagonals), sorted, once
-// each: the seeds' proof of interiority, and the start LP's first rows (which keep it bounded).
-std::vector<int> extreme_points(const Walker& w, int i) {
-    std::vector<int> out;
-    for (int a = -1; a <= 1; ++a)
-        for (int b = -1; b <= 1; ++b)
-            for (int c = -1; c <= 1; ++c)
-                if (std::abs(a) + std::abs(b) + std::abs(c) == 1 || (a && b && c)) out.push_back(w.support(i, {Z(a), Z(b), Z(c)}).all.front());
+// The extreme points in 14 directions (the axes and the diagonals; the first index on ties),
+// sorted, once each: the seeds' proof of interiority, and the start LP's first rows (which keep
+// it bounded). One pass, no tree: exact in int64, as |a·x + b·y + c·z| ≤ 3·2^53.
+std::vector<int> extreme_points(const IntPoints& P) {
+    std::int64_t best[7][2];
+    for (auto& b : best) b[0] = b[1] = INT64_MIN;  // below every value
+    int arg[7][2] = {};
+    for (size_t k = 0; k < P.size(); ++k) {
+        const std::int64_t *p = P.at(k), x = p[0], y = p[1], z = p[2];
+        const std::int64_t v[7] = {x, y, z, x + y + z, x + y - z, x - y + z, x - y - z};
+        for (int d = 0; d < 7; ++d) {
+            if (v[d] > best[d][0]) best[d][0] = v[d], arg[d][0] = static_cast<int>(k);  // + direction
+            if (-v[d] > best[d][1]) best[d][1] = -v[d], arg[d][1] = static_cast<int>(k);  // − direction
+        }
+    }
+    std::vector<int> out(&arg[0][0], &arg[0][0] + 14);
     std::sort(out.begin(), out.end());
     out.erase(std::unique(out.begin(), out.end()), out.end());
     return out;
@@ -576,13 +584,8 @@ std::pair<std::unique_ptr<Cloud>, std::unique_ptr<Cloud>> trees(const CompactSce
 
 bool scan_seeds_proved(const CompactScene& sc) {
     for (int i = 0; i < 2; ++i)
-        if (sc.P[i].size() < 4 || sc.P[i].size() > kMaxPoints) return false;
-    Model m;  // supports only: the walker needs no lines
-    m.scan = std::shared_ptr<const CompactScene>(&sc, [](const CompactScene*) {});
-    const auto t = trees(sc, m.scan_stats);
-    const Walker w(m, *t.first, *t.second);
-    for (int i = 0; i < 2; ++i)
-        if (!strictly_inside_few(sc.P[i], extreme_points(w, i), sc.seed[i])) return false;
+        if (sc.P[i].size() < 4 || sc.P[i].size() > kMaxPoints || !strictly_inside_few(sc.P[i], extreme_points(sc.P[i]), sc.seed[i]))
+            return false;
     return true;
 }
 
@@ -612,7 +615,7 @@ Model scan_model(std::shared_ptr<const CompactScene> sc) {
     Walker w(m, c1, c2);
     std::vector<int> init[2];
     for (int i = 0; i < 2; ++i) {
-        init[i] = extreme_points(w, i);
+        init[i] = extreme_points(sc->P[i]);
         if (!strictly_inside_few(sc->P[i], init[i], m.s[i])) throw NeedHull(std::string(names[i]) + ": seed not proved inside");
     }
     const Vec3z dn = primitive(m.dz);

@@ -58,12 +58,12 @@ public:
     const Point& seed(int i) const;
     Interval range(int i) const;
     std::string json() const;  // the scene file, every number exact
-    const internal::Scene& internal_scene() const;
     // The hull model (polyhedra, every contact line), built on first use. Large scenes whose seeds
     // a few extreme points prove interior are validated without it.
     std::shared_ptr<const internal::Model> internal_model() const;
 
 private:
+    friend class Analysis;
     struct Data;
     static std::shared_ptr<Data> validated(internal::Scene sc, const std::string& name);
     explicit Scene(std::shared_ptr<Data> d) : d_(std::move(d)) {}
