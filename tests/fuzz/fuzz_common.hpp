@@ -4,6 +4,7 @@
 #pragma once
 #include "scalecert/certificate.hpp"
 #include "scalecert/fast_query.hpp"
+#include "scalecert/scan.hpp"
 #include "../support.hpp"
 
 #define SCALECERT_CHECK_NO_MAIN
@@ -42,6 +43,23 @@ inline bool certify(const Scene& sc, Model* out_model = nullptr, Curve* out_curv
     if (out_curve) *out_curve = c;
     if (out_model) *out_model = std::move(m);
     return true;
+}
+
+// The scan path on a scene the hull path accepted: where it decides, its curve document must
+// be the hull path's byte for byte, but for the engine statistics.
+inline void scan_agrees(const Scene& sc, const Model& hm, const Curve& hc) {
+    auto cs = compact_scene(sc);
+    if (!cs) return;
+    auto without_model = [](const Model& m, const Curve& c) {
+        Json j = curve_json(m, c);
+        j.erase("model");
+        return dump(j);
+    };
+    try {
+        const Model sm = scan_model(std::make_shared<CompactScene>(std::move(*cs)));
+        if (without_model(sm, build_curve(sm)) != without_model(hm, hc)) finding("the scan path's curve differs from the hull path's");
+    } catch (const NeedHull&) {
+    }
 }
 
 inline size_t total_points(const Scene& sc) { return sc.P[0].points.size() + sc.P[1].points.size(); }
