@@ -136,7 +136,8 @@ std::vector<int> index_list(const J& j, size_t n, const std::string& where) {
     }
     return out;
 }
-bool has(const std::vector<int>& v, int x) { return std::find(v.begin(), v.end(), x) != v.end(); }
+// x is in v (ascending: every vertex list the checker builds is).
+bool has(const std::vector<int>& v, int x) { return std::binary_search(v.begin(), v.end(), x); }
 
 // ---- numbers -------------------------------------------------------------------------------
 // An exact number: "p" or "p/q", in lowest terms, q > 0.
@@ -248,6 +249,24 @@ struct Scene {
 };
 const char* kPoly[2] = {"P1", "P2"};
 
+// The dimension of the affine hull of a vertex set, in one pass: a vertex that does not raise it
+// lies in the hull of those before, which only grows.
+int affine_dim(const Scene& sc, int i, const std::vector<int>& idx) {
+    const V3& o = sc.P[i][idx[0]];
+    int dim = 0;
+    V3 e1, c;
+    for (int k : idx) {
+        V3 v = sub(sc.P[i][k], o);
+        if (dim == 0 && nonzero(v)) { e1 = v; dim = 1; }
+        else if (dim == 1 && nonzero(cross(e1, v))) { c = cross(e1, v); dim = 2; }
+        else if (dim == 2 && sgn(dot(c, v)) != 0) return 3;
+    }
+    return dim;
+}
+// The letter of a vertex set: the dimension of its affine hull (V: a point, E: a segment, F: a
+// polygon or more).
+char dimension_letter(const Scene& sc, int i, const std::vector<int>& idx) { return "VEFF"[affine_dim(sc, i, idx)]; }
+
 Scene read_scene(const J& j) {
     shape(j, "scene", {"P1", "P2", "I1", "I2"});
     Scene sc;
@@ -301,19 +320,13 @@ void check_seed_interior(const Scene& sc, const J& j) {
         std::string w = std::string("seed_interior.") + kPoly[i];
         std::vector<int> used;
         claim(combination(sc, i, at(j, kPoly[i]), w, &used) == sc.s[i], w + " combines to the seed");
-        const V3& o = sc.P[i][used[0]];
-        bool spans = false;
-        for (size_t a = 1; a < used.size() && !spans; ++a)
-            for (size_t b = a + 1; b < used.size() && !spans; ++b) {
-                V3 c = cross(sub(sc.P[i][used[a]], o), sub(sc.P[i][used[b]], o));
-                for (size_t e = b + 1; e < used.size() && !spans; ++e) spans = sgn(dot(c, sub(sc.P[i][used[e]], o))) != 0;
-            }
+        const bool spans = affine_dim(sc, i, used) == 3;
         claim(spans, w + " uses vertices spanning 3 dimensions");
     }
 }
 
 // A witness: a common point of P1(ρ1) and P2(ρ2), s + ρ Σ λ (v − s) on each side.
-P2 check_witness(const Scene& sc, const J& w, const std::string& where) {
+P2 check_witness(const Scene& sc, const J& w, const std::string& where, std::vector<int>* used = nullptr) {
     shape(w, where, {"rho1", "rho1_double", "rho2", "rho2_double", "point", "point_double", "P1", "P2"});
     Q r1 = field(w, "rho1", where), r2 = field(w, "rho2", where);
     claim(sgn(r1) >= 0 && sgn(r2) >= 0, where + " scalings are >= 0");
@@ -321,7 +334,7 @@ P2 check_witness(const Scene& sc, const J& w, const std::string& where) {
     V3 p{x[0], x[1], x[2]};
     const Q* r[2] = {&r1, &r2};
     for (int i = 0; i < 2; ++i) {
-        V3 c = combination(sc, i, at(w, kPoly[i]), where + "." + kPoly[i]);
+        V3 c = combination(sc, i, at(w, kPoly[i]), where + "." + kPoly[i], used ? &used[i] : nullptr);
         V3 y;
         for (int k = 0; k < 3; ++k) y[k] = sc.s[i][k] + *r[i] * (c[k] - sc.s[i][k]);
         claim(y == p, where + ".point lies in " + kPoly[i] + "(rho" + std::to_string(i + 1) + ")");
@@ -337,19 +350,6 @@ V3 normal(const J& j, const std::string& where) {
     return n;
 }
 
-// The letter of a vertex set: the dimension of its affine hull (V: a point, E: a segment, F: a
-// polygon or more).
-char dimension_letter(const Scene& sc, int i, const std::vector<int>& idx) {
-    const V3& o = sc.P[i][idx[0]];
-    int dim = 0;
-    V3 e1;
-    for (int k : idx) {
-        V3 v = sub(sc.P[i][k], o);
-        if (dim == 0 && nonzero(v)) { e1 = v; dim = 1; }
-        else if (dim == 1 && nonzero(cross(e1, v))) dim = 2;
-    }
-    return "VEF"[dim];
-}
 std::string contact_string(const J& j, const std::string& where) {
     claim(j.is_string() && j.get_ref<const std::string&>().size() == 2, where + " is a two-letter contact");
     return j.get<std::string>();
@@ -465,9 +465,16 @@ void check_partition(const J& c) {
     for (size_t k = 0; k < pieces.size(); ++k) {
         const J& p = pieces[k];
         std::string w = "pieces[" + std::to_string(k) + "]";
-        shape(p, w, {"rho1", "rho1_double", "slope", "slope_double", "intercept", "intercept_double", "contact", "features",
-                     "normal", "h1", "h1_double", "h2", "h2_double", "support_vertices"},
-              {"closed_form", "same_line_normals"});
+        claim(p.is_object() && p.contains("contact"), w + ".contact is present");
+        const bool touches = !at(p, "contact").is_null();
+        if (touches)
+            shape(p, w, {"rho1", "rho1_double", "slope", "slope_double", "intercept", "intercept_double", "contact", "features",
+                         "contact_witness", "normal", "h1", "h1_double", "h2", "h2_double", "support_vertices"},
+                  {"closed_form", "same_line_normals"});
+        else
+            shape(p, w, {"rho1", "rho1_double", "slope", "slope_double", "intercept", "intercept_double", "contact",
+                         "normal", "h1", "h1_double", "h2", "h2_double", "support_vertices"},
+                  {"closed_form", "same_line_normals"});
         annotation_string(p, "closed_form", w);
         V3 n = normal(at(p, "normal"), w + ".normal");
         std::vector<int> f[2];
@@ -479,25 +486,52 @@ void check_partition(const J& c) {
         claim(field(p, "intercept", w) == L.b, w + ".intercept = n.d/h2");
         std::vector<Q> r = fields(p, "rho1", 2, w);
         claim(r[0] < r[1] || (pieces.size() == 1 && r[0] == r[1]), w + ".rho1 is a nonempty range");
-        const J& feats = at(p, "features");
-        shape(feats, w + ".features", {"P1", "P2"});
         const J& sv = at(p, "support_vertices");
         shape(sv, w + ".support_vertices", {"P1", "P2"});
-        for (int i = 0; i < 2; ++i) {
-            for (int v : index_list(at(feats, kPoly[i]), sc.P[i].size(), w + ".features." + kPoly[i]))
-                claim(has(f[i], v), w + ".features lists only maximisers");
+        for (int i = 0; i < 2; ++i)
             claim(has(f[i], static_cast<int>(index(at(sv, kPoly[i]), sc.P[i].size(), w + ".support_vertices." + kPoly[i]))),
                   w + ".support_vertices attain the support values");
-        }
-        claim(contact_string(at(p, "contact"), w + ".contact") == std::string{dimension_letter(sc, 0, f[0]), dimension_letter(sc, 1, f[1])},
-              w + ".contact is the dimension of all maximisers of its normal");
+        // The contact features G1, G2: the vertices maximising every listed normal with this line.
+        // Every touching normal maximises on the touching set T, so T lies in G1(ρ1) ∩ G2(ρ2)
+        // whatever normals are listed; the witness below, a point of T in the relative interiors of
+        // both, shows no smaller face holds T (a list missing a touching normal cannot have one).
+        std::vector<int> G[2] = {f[0], f[1]};
         if (p.contains("same_line_normals")) {
             const J& sl = at(p, "same_line_normals");
             claim(sl.is_array() && !sl.empty(), w + ".same_line_normals is a nonempty list");
             for (const J& o : sl) {
                 V3 m = normal(o, w + ".same_line_normals[]");
-                Q g1 = sc.h(0, m), g2 = sc.h(1, m);
+                std::vector<int> fm[2];
+                Q g1 = sc.h(0, m, &fm[0]), g2 = sc.h(1, m, &fm[1]);
                 claim(sgn(g2) > 0 && -g1 / g2 == L.a && dot(m, sc.d) / g2 == L.b, w + ".same_line_normals give the same line");
+                for (int i = 0; i < 2; ++i) {
+                    std::vector<int> both;
+                    std::set_intersection(G[i].begin(), G[i].end(), fm[i].begin(), fm[i].end(), std::back_inserter(both));
+                    G[i] = std::move(both);
+                }
+            }
+        }
+        if (!touches) {
+            claim(sgn(L.at(r[0])) <= 0, w + ".contact is null only where rho2 <= 0 all along the piece");
+        } else {
+            claim(!G[0].empty() && !G[1].empty(), w + ": the same-line normals share maximisers on P1 and on P2");
+            const std::string label{dimension_letter(sc, 0, G[0]), dimension_letter(sc, 1, G[1])};
+            claim(contact_string(at(p, "contact"), w + ".contact") == label,
+                  w + ".contact is " + label + ", the smallest faces holding the touching set");
+            const J& feats = at(p, "features");
+            shape(feats, w + ".features", {"P1", "P2"});
+            std::vector<int> used[2];
+            const P2 at_ = check_witness(sc, at(p, "contact_witness"), w + ".contact_witness", used);
+            claim(sgn(at_[0]) > 0 && sgn(at_[1]) > 0 && r[0] <= at_[0] && at_[0] <= r[1] && at_[1] == L.at(at_[0]),
+                  w + ".contact_witness is at a point of the piece with rho2 > 0");
+            for (int i = 0; i < 2; ++i) {
+                std::vector<int> fl = index_list(at(feats, kPoly[i]), sc.P[i].size(), w + ".features." + kPoly[i]);
+                std::sort(fl.begin(), fl.end());
+                claim(fl == G[i], w + ".features." + kPoly[i] + " lists the vertices of the contact feature");
+                std::sort(used[i].begin(), used[i].end());
+                for (int v : used[i]) claim(has(G[i], v), w + ".contact_witness." + kPoly[i] + " weights only vertices of the contact feature");
+                claim(affine_dim(sc, i, used[i]) == affine_dim(sc, i, G[i]),
+                      w + ".contact_witness." + kPoly[i] + " lies in the relative interior of the contact feature");
             }
         }
         lines.push_back(L);

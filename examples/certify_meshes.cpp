@@ -18,7 +18,7 @@ int main(int argc, char** argv) {
         const scalecert::Analysis a(scene);
         for (const scalecert::Piece& p : a.curve().pieces)
             std::cout << "piece rho1 in [" << p.from << ", " << p.to << "]: rho2 = " << p.slope << " rho1 + "
-                      << p.intercept << "  (" << scalecert::name(p.contact.kind) << ")\n";
+                      << p.intercept << "  (" << (p.contact ? scalecert::name(p.contact->kind) : "-") << ")\n";
         for (const scalecert::SwitchPoint& s : a.curve().switches)
             std::cout << "switch (" << s.rho1 << ", " << s.rho2 << ") "
                       << (s.contact ? scalecert::name(s.contact->kind) : "-") << "\n";

@@ -76,10 +76,15 @@ scalecert::Interval interval(const py::handle& h, const std::string& what) {
 
 py::object json_loads(const std::string& text) { return py::module_::import("json").attr("loads")(text); }
 
-py::dict contact_dict(const scalecert::Contact& c) {
+// {"contact": "VE", "features": (P1's vertices, P2's)}, or {"contact": None} where nothing touches.
+py::dict contact_dict(const std::optional<scalecert::Contact>& c) {
     py::dict d;
-    d["contact"] = scalecert::name(c.kind);
-    d["features"] = py::make_tuple(c.verts1, c.verts2);
+    if (!c) {
+        d["contact"] = py::none();
+        return d;
+    }
+    d["contact"] = scalecert::name(c->kind);
+    d["features"] = py::make_tuple(c->verts1, c->verts2);
     return d;
 }
 
@@ -115,8 +120,7 @@ py::dict curve_dict(const scalecert::Curve& c) {
         pieces.append(d);
     }
     for (const scalecert::SwitchPoint& s : c.switches) {
-        py::dict d = s.contact ? contact_dict(*s.contact) : py::dict();
-        if (!s.contact) d["contact"] = py::none();
+        py::dict d = contact_dict(s.contact);
         d["rho1"] = fraction(s.rho1);
         d["rho2"] = fraction(s.rho2);
         switches.append(d);

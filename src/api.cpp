@@ -176,7 +176,9 @@ Analysis::Analysis(const Scene& scene) {
     const internal::Curve& c = impl->curve;
     for (const CurvePiece& p : c.pieces) {
         const ContactLine& L = m.lines[c.env.pieces[p.env].line];
-        curve_.pieces.push_back({p.from, p.to, L.slope, L.intercept, to_q(L.normal), contact_of(L.contact, L.feat1, L.feat2)});
+        std::optional<Contact> k;
+        if (!p.contact.label.empty()) k = contact_of(p.contact.label, p.contact.feat1, p.contact.feat2);
+        curve_.pieces.push_back({p.from, p.to, L.slope, L.intercept, to_q(L.normal), k});
     }
     for (const internal::SwitchPoint& s : c.switches) {
         std::optional<Contact> k;

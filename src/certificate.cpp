@@ -93,8 +93,12 @@ Json piece_json(const Model& m, const Curve& c, const CurvePiece& p, bool certif
     put(j, "rho1", std::vector<Q>{p.from, p.to});
     put(j, "slope", L.slope);
     put(j, "intercept", L.intercept);
-    j["contact"] = L.contact;
-    j["features"] = features(L.feat1, L.feat2);
+    if (p.contact.label.empty()) {
+        j["contact"] = nullptr;  // ρ2 ≤ 0 all along the piece: nothing touches
+    } else {
+        j["contact"] = p.contact.label;
+        j["features"] = features(p.contact.feat1, p.contact.feat2);
+    }
     j["closed_form"] = closed_form_line(m, L).formula;
     j["normal"] = ints(L.normal);
     if (certificate) {
@@ -192,6 +196,8 @@ Json query_json(const Model& m, const QueryResult& r) {
 
 Json partition_json(const Model& m, const Curve& c, const Partition& p) {
     Json j = curve_body(m, c, true);
+    for (size_t k = 0; k < c.pieces.size(); ++k)
+        if (p.piece_witnesses[k]) j["pieces"][k]["contact_witness"] = witness_json(*p.piece_witnesses[k]);
     for (size_t k = 0, w = 0; k < c.switches.size(); ++k)
         if (sgn(c.switches[k].rho2) > 0) j["switch_points"][k]["witness"] = witness_json(p.switch_witnesses[w++]);
     Json ends = Json::array();

@@ -102,6 +102,30 @@ Contact contact_at(const Model& m, const ContactLine& L, const ContactLine& R, c
     return c;
 }
 
+Contact piece_contact(const Model& m, const EnvPiece& e) {
+    Contact c;
+    c.feat1 = m.lines[e.same.front()].feat1;
+    c.feat2 = m.lines[e.same.front()].feat2;
+    for (size_t k : e.same) {
+        std::vector<int> a, b;
+        std::set_intersection(c.feat1.begin(), c.feat1.end(), m.lines[k].feat1.begin(), m.lines[k].feat1.end(), std::back_inserter(a));
+        std::set_intersection(c.feat2.begin(), c.feat2.end(), m.lines[k].feat2.begin(), m.lines[k].feat2.end(), std::back_inserter(b));
+        c.feat1 = std::move(a);
+        c.feat2 = std::move(b);
+    }
+    if (c.feat1.empty() || c.feat2.empty()) throw std::logic_error("piece_contact: identical lines with no common maximiser");
+    c.label = {feature_letter(c.feat1.size()), feature_letter(c.feat2.size())};
+    return c;
+}
+
+std::optional<Q> contact_rho1(const Model& m, const Curve& c, const CurvePiece& p) {
+    const ContactLine& L = m.lines[c.env.pieces[p.env].line];
+    if (sgn(L.at(p.from)) <= 0) return std::nullopt;
+    Q to = p.to;
+    if (sgn(L.at(to)) <= 0) to = -L.intercept / L.slope;  // where ρ2 reaches 0
+    return (p.from + to) / 2;
+}
+
 Curve build_curve(const Model& m) {
     Curve c;
     c.env = upper_envelope(m.lines);
@@ -112,9 +136,11 @@ Curve build_curve(const Model& m) {
         Q from = std::max(p.from, lo);
         Q to = p.to ? std::min(*p.to, hi) : hi;
         if (!c.pieces.empty() && from >= hi) break;
-        c.pieces.push_back({from, to, k});
+        c.pieces.push_back({from, to, k, {}});
         if (to >= hi) break;
     }
+    for (CurvePiece& p : c.pieces)
+        if (contact_rho1(m, c, p)) p.contact = piece_contact(m, c.env.pieces[p.env]);
     for (size_t k = 0; k + 1 < c.pieces.size(); ++k) {
         const ContactLine& L = m.lines[c.env.pieces[c.pieces[k].env].line];
         const ContactLine& R = m.lines[c.env.pieces[c.pieces[k + 1].env].line];

@@ -95,6 +95,12 @@ Partition build_partition(const Model& m, const Curve& c) {
         std::vector<Pt2> sep = clip(box, L.slope, L.intercept, false);
         if (sep.size() >= 3 && sgn(area2(sep)) > 0) P.separated.push_back({k, sep});
     }
+    for (const CurvePiece& p : c.pieces) {
+        std::optional<Witness> w;
+        if (const std::optional<Q> x = contact_rho1(m, c, p))
+            w = make_witness(m, *x, m.lines[c.env.pieces[p.env].line].at(*x), p.contact.feat1, p.contact.feat2, true);
+        P.piece_witnesses.push_back(std::move(w));
+    }
     for (const SwitchPoint& sp : c.switches)
         if (sgn(sp.rho2) > 0)
             P.switch_witnesses.push_back(make_witness(m, sp.rho1, sp.rho2, c.env.pieces[c.pieces[sp.left].env].line));

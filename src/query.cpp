@@ -29,14 +29,14 @@ static Vec3q scaled(const Vec3q& v, const Vec3q& s, const Q& rho) {
     return {s[0] + rho * (v[0] - s[0]), s[1] + rho * (v[1] - s[1]), s[2] + rho * (v[2] - s[2])};
 }
 
-Witness make_witness(const Model& m, const Q& rho1, const Q& rho2, size_t line) {
-    std::vector<int> i1 = line == size_t(-1) ? m.P[0].vertices : m.lines[line].feat1;
-    std::vector<int> i2 = line == size_t(-1) ? m.P[1].vertices : m.lines[line].feat2;
+Witness make_witness(const Model& m, const Q& rho1, const Q& rho2, const std::vector<int>& i1, const std::vector<int>& i2,
+                     bool interior) {
     std::vector<Vec3q> A, B;
     for (int i : i1) A.push_back(scaled(m.P[0].points[i], m.s[0], rho1));
     for (int j : i2) B.push_back(scaled(m.P[1].points[j], m.s[1], rho2));
-    auto cp = common_point(A, B);
-    if (!cp) throw std::logic_error("no common point where the curve says the polyhedra meet");
+    auto cp = interior ? interior_common_point(A, B) : common_point(A, B);
+    if (!cp) throw std::logic_error(interior ? "the contact features' relative interiors do not meet on the curve"
+                                             : "no common point where the curve says the polyhedra meet");
     Witness w;
     w.rho1 = rho1;
     w.rho2 = rho2;
@@ -54,6 +54,11 @@ Witness make_witness(const Model& m, const Q& rho1, const Q& rho2, size_t line) 
     if (x != y) throw std::logic_error("LP witness is not a common point");
     w.point = x;
     return w;
+}
+
+Witness make_witness(const Model& m, const Q& rho1, const Q& rho2, size_t line) {
+    if (line == size_t(-1)) return make_witness(m, rho1, rho2, m.P[0].vertices, m.P[1].vertices, false);
+    return make_witness(m, rho1, rho2, m.lines[line].feat1, m.lines[line].feat2, false);
 }
 
 QueryResult query(const Model& m, const Curve& c, const Q& rho1, const Q& rho2, bool with_certificate) {

@@ -37,8 +37,9 @@ std::vector<Q> values(const CGAL::Quadratic_program_solution<ET>& s, size_t n) {
 }
 }  // namespace
 
-std::optional<CommonPoint> common_point(const std::vector<Vec3q>& A, const std::vector<Vec3q>& B) {
-    Program lp(CGAL::EQUAL, true, ET(0), false, ET(0));
+namespace {
+// Σλ = 1, Σμ = 1 and Σ λ_i A_i − Σ μ_j B_j = 0 over the variables λ (0..na−1), μ (na..).
+void common_point_rows(Program& lp, const std::vector<Vec3q>& A, const std::vector<Vec3q>& B) {
     const int na = static_cast<int>(A.size()), nb = static_cast<int>(B.size());
     std::vector<std::pair<int, Q>> r0, r1;
     for (int i = 0; i < na; ++i) r0.push_back({i, Q(1)});
@@ -51,13 +52,36 @@ std::optional<CommonPoint> common_point(const std::vector<Vec3q>& A, const std::
         for (int j = 0; j < nb; ++j) r.push_back({na + j, Q(-B[j][k])});
         set_row(lp, 2 + k, r, Q(0));
     }
+}
+CommonPoint split(const std::vector<Q>& v, size_t na) {
+    CommonPoint cp;
+    cp.lambda.assign(v.begin(), v.begin() + static_cast<long>(na));
+    cp.mu.assign(v.begin() + static_cast<long>(na), v.end());
+    return cp;
+}
+}  // namespace
+
+std::optional<CommonPoint> common_point(const std::vector<Vec3q>& A, const std::vector<Vec3q>& B) {
+    Program lp(CGAL::EQUAL, true, ET(0), false, ET(0));
+    common_point_rows(lp, A, B);
     auto s = CGAL::solve_linear_program(lp, ET());
     if (s.is_infeasible() || !s.is_optimal()) return std::nullopt;
-    std::vector<Q> v = values(s, A.size() + B.size());
-    CommonPoint cp;
-    cp.lambda.assign(v.begin(), v.begin() + na);
-    cp.mu.assign(v.begin() + na, v.end());
-    return cp;
+    return split(values(s, A.size() + B.size()), A.size());
+}
+
+std::optional<CommonPoint> interior_common_point(const std::vector<Vec3q>& A, const std::vector<Vec3q>& B) {
+    // Variables λ, μ ≥ 0 and t ≥ 0 (index n); maximise t subject to λ_i − t ≥ 0, μ_j − t ≥ 0.
+    Program lp(CGAL::EQUAL, true, ET(0), false, ET(0));
+    common_point_rows(lp, A, B);
+    const int n = static_cast<int>(A.size() + B.size());
+    for (int i = 0; i < n; ++i) set_row(lp, 5 + i, {{i, Q(1)}, {n, Q(-1)}}, Q(0), CGAL::LARGER);
+    lp.set_c(n, ET(-1));
+    auto s = CGAL::solve_linear_program(lp, ET());
+    if (!s.is_optimal()) return std::nullopt;
+    std::vector<Q> v = values(s, static_cast<size_t>(n) + 1);
+    if (v.size() != static_cast<size_t>(n) + 1 || sgn(v.back()) <= 0) return std::nullopt;
+    v.pop_back();
+    return split(v, A.size());
 }
 
 std::optional<std::vector<Q>> maximise_free(const std::vector<std::vector<Q>>& A, const std::vector<Q>& b,

@@ -67,6 +67,58 @@ struct Brute {
     }
 };
 
+// The contact at a point (ρ1, ρ2) of the touching curve, by brute force: the vertices (indices
+// into the points, duplicates and points inside faces included) of the smallest face of each
+// polytope that holds the touching set. Every candidate direction whose planes touch there
+// (max over P1(ρ1) = min over P2(ρ2)) holds the touching set in its maximisers; intersecting them
+// over all candidates (every facet normal of the Minkowski sum is one) gives the smallest faces.
+// Empty when no candidate touches (the pair is not touching there).
+inline std::pair<std::vector<int>, std::vector<int>> brute_contact(const Scene& sc, const Q& r1, const Q& r2) {
+    std::vector<int> g[2];
+    bool any = false;
+    std::set<Vec3z> seen;
+    for (int i = 0; i < 2; ++i) {
+        const auto& p = sc.P[i].points;
+        for (size_t a = 0; a < p.size(); ++a)
+            for (size_t c = a + 1; c < p.size(); ++c)
+                for (int j = 0; j < 2; ++j)
+                    for (size_t e = 0; e < sc.P[j].points.size(); ++e)
+                        for (size_t f = e + 1; f < sc.P[j].points.size(); ++f) {
+                            const Vec3q n = cross(sub(p[c], p[a]), sub(sc.P[j].points[f], sc.P[j].points[e]));
+                            if (sgn(n[0]) == 0 && sgn(n[1]) == 0 && sgn(n[2]) == 0) continue;
+                            for (const Vec3z& m : {primitive(n), neg(primitive(n))}) {
+                                if (!seen.insert(m).second) continue;
+                                const Vec3q mq = to_q(m);
+                                const Brute::Dir d = Brute::extremes(sc, mq);
+                                if (d.ns1 + r1 * (d.max1 - d.ns1) != d.ns2 + r2 * (d.min2 - d.ns2)) continue;
+                                const Q ext[2] = {d.max1, d.min2};
+                                for (int k = 0; k < 2; ++k) {
+                                    std::vector<int> att;
+                                    for (size_t v = 0; v < sc.P[k].points.size(); ++v)
+                                        if (dot(mq, sc.P[k].points[v]) == ext[k] && (!any || std::binary_search(g[k].begin(), g[k].end(), int(v))))
+                                            att.push_back(static_cast<int>(v));
+                                    g[k] = att;
+                                }
+                                any = true;
+                            }
+                        }
+    }
+    return {g[0], g[1]};
+}
+
+// The affine dimension of some of the points (0 for a point, 3 for a solid).
+inline int affine_dimension(const std::vector<Vec3q>& pts, const std::vector<int>& idx) {
+    int dim = 0;
+    Vec3q e1, c;
+    for (int k : idx) {
+        const Vec3q v = sub(pts[k], pts[idx[0]]);
+        if (dim == 0 && (sgn(v[0]) || sgn(v[1]) || sgn(v[2]))) e1 = v, dim = 1;
+        else if (dim == 1) { const Vec3q x = cross(e1, v); if (sgn(x[0]) || sgn(x[1]) || sgn(x[2])) c = x, dim = 2; }
+        else if (dim == 2 && sgn(dot(c, v))) return 3;
+    }
+    return dim;
+}
+
 inline int verdict_sign(Verdict v) { return v == Verdict::Separated ? 1 : v == Verdict::Touching ? 0 : -1; }
 
 // A random non-flat polytope of n points with coordinates k/den, k in [-range, range], offset by o.

@@ -53,8 +53,8 @@ BOOST_AUTO_TEST_CASE(stacked_cubes_by_hand) {
     BOOST_TEST(c.pieces[0].intercept == R(3));
     BOOST_TEST(c.pieces[0].from == R(1, 2));
     BOOST_TEST(c.pieces[0].to == R(5, 2));
-    BOOST_TEST((c.pieces[0].contact.kind == scalecert::ContactKind::FF));
-    BOOST_TEST(c.pieces[0].contact.verts1.size() == 4u);  // the top face of P1
+    BOOST_TEST((c.pieces[0].contact->kind == scalecert::ContactKind::FF));
+    BOOST_TEST(c.pieces[0].contact->verts1.size() == 4u);  // the top face of P1
     BOOST_TEST(c.pieces[0].normal[2] > 0);
     BOOST_TEST(c.pieces[0].normal[0] == 0);
     BOOST_TEST(c.switches.empty());
@@ -168,7 +168,7 @@ BOOST_AUTO_TEST_CASE(loaded_scene_certificate_passes_the_checker) {
     BOOST_TEST_REQUIRE(c.pieces.size() >= 2u);
     BOOST_TEST(c.pieces[0].slope == R(-5, 2));
     BOOST_TEST(c.pieces[0].intercept == R(9, 2));
-    BOOST_TEST((c.pieces[0].contact.kind == scalecert::ContactKind::VF));
+    BOOST_TEST((c.pieces[0].contact->kind == scalecert::ContactKind::VF));
     BOOST_TEST_REQUIRE(c.switches.size() >= 1u);
     BOOST_TEST(c.switches[0].rho1 == R(1));
     BOOST_TEST(c.switches[0].rho2 == R(2));
@@ -216,9 +216,9 @@ BOOST_AUTO_TEST_CASE(large_scene_takes_the_scan_path) {
         BOOST_TEST(ca.pieces[k].to == cb.pieces[k].to);
         BOOST_TEST(ca.pieces[k].slope == cb.pieces[k].slope);
         BOOST_TEST(ca.pieces[k].intercept == cb.pieces[k].intercept);
-        BOOST_TEST((ca.pieces[k].contact.kind == cb.pieces[k].contact.kind));
-        BOOST_TEST(ca.pieces[k].contact.verts1 == cb.pieces[k].contact.verts1);
-        BOOST_TEST(ca.pieces[k].contact.verts2 == cb.pieces[k].contact.verts2);
+        BOOST_TEST((ca.pieces[k].contact->kind == cb.pieces[k].contact->kind));
+        BOOST_TEST(ca.pieces[k].contact->verts1 == cb.pieces[k].contact->verts1);
+        BOOST_TEST(ca.pieces[k].contact->verts2 == cb.pieces[k].contact->verts2);
     }
     BOOST_TEST_REQUIRE(ca.switches.size() == cb.switches.size());
     for (size_t k = 0; k < ca.switches.size(); ++k) {

@@ -192,6 +192,80 @@ std::vector<Vec3q> cube(long x0, long y0, long z0, long side) {
 
 }  // namespace
 
+BOOST_AUTO_TEST_CASE(curve_claim_rules) {
+    // CLAIMS.md, "Curve claims", rule by rule. The tetrahedron on the box (test_hand_curves) with
+    // I1 narrowed to [1/2, 3/4]: the exact curve is (V,F) ρ2 = 9/2 − 5ρ1/2 for 0 < ρ1 ≤ 1 and (E,E)
+    // ρ2 = (18 − 4ρ1)/7 on [1, 27/13], so its switch point (1, 2) now lies outside I1.
+    Scene sc = load_scene(std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/tetra_box_switch.json");
+    sc.hi[0] = Q(3, 4);
+    Claims k(sc);
+    auto refused = [&](const std::string& claim) {
+        try {
+            k.one(claim);
+        } catch (const InputError& e) {
+            return std::string(e.what());
+        }
+        return std::string("accepted");
+    };
+    // Rule 2 outside I1: the chord from (1/2, 13/4) to (3/2, 12/7) is exact at both ends, but at the
+    // switch point it gives 13/4 + (12/7 − 13/4)/2 = 139/56 where f(1) = 2: off by 27/56.
+    auto j = k.one(R"({"kind": "curve", "vertices": [["1/2", "13/4"], ["3/2", "12/7"]], "switch_points": []})");
+    BOOST_TEST(!j["right"].get<bool>());
+    BOOST_TEST(j["max_vertical_error"] == "27/56");
+    BOOST_TEST(j["max_vertical_error_at_rho1"] == "1");
+    BOOST_TEST(j["switch_points_missed"] == nlohmann::json::parse(R"([["1", "2"]])"));
+    // The exact curve outside I1, with its labels, is right (its switch point is no longer "extra").
+    BOOST_TEST(k.right(R"({"kind": "curve", "pieces": [
+        {"rho1": ["1/2", 1], "slope": "-5/2", "intercept": "9/2", "contact": "VF"},
+        {"rho1": [1, "3/2"], "slope": "-4/7", "intercept": "18/7", "contact": "EE"}]})"));
+    BOOST_TEST(k.right(R"({"kind": "switch_point", "rho1": 1, "rho2": 2, "contact": "VE"})"));
+    // Rule 3 at the ends: a range ending at the switch point may list it or not; listed with the
+    // wrong ρ2 it is misplaced. Starting there, likewise.
+    const std::string first = R"({"kind": "curve", "pieces": [{"rho1": ["1/2", 1], "slope": "-5/2", "intercept": "9/2"}])";
+    BOOST_TEST(k.right(first + "}"));
+    BOOST_TEST(k.right(first + R"(, "switch_points": [[1, 2]]})"));
+    j = k.one(first + R"(, "switch_points": [[1, 999]]})");
+    BOOST_TEST(!j["right"].get<bool>());
+    BOOST_TEST(j["switch_points_misplaced"].size() == 1u);
+    BOOST_TEST(j["switch_points_misplaced"][0]["claimed_rho2"] == "999");
+    BOOST_TEST(k.right(R"({"kind": "curve", "vertices": [[1, 2], ["3/2", "12/7"]], "switch_points": [[1, 2]]})"));
+    // Rule 3 inside: the switch point's ρ2 is compared too, between pieces and as a claim.
+    j = k.one(R"({"kind": "curve", "pieces": [
+        {"rho1": ["1/2", 1], "slope": "-5/2", "intercept": "9/2"},
+        {"rho1": [1, "3/2"], "slope": "-4/7", "intercept": "18/7"}], "switch_points": [[1, 999]]})");
+    BOOST_TEST(!j["right"].get<bool>());
+    BOOST_TEST(j["switch_points_misplaced"].size() == 1u);
+    BOOST_TEST(!k.right(R"({"kind": "switch_point", "rho1": 1, "rho2": 999})"));
+    BOOST_TEST(k.right(R"({"kind": "switch_point", "rho1": 1, "rho2": "2.0000001"})", "1e-7"));
+    BOOST_TEST(!k.right(R"({"kind": "switch_point", "rho1": 1, "rho2": "2.0000003"})", "1e-7"));
+    // Scalings <= 0 are refused in every form, and so are switch points outside the range and
+    // pieces with gaps between them.
+    BOOST_TEST(refused(R"({"kind": "curve", "vertices": [[0, "9/2"], [1, 2]]})").find("scalings must be > 0") != std::string::npos);
+    BOOST_TEST(refused(R"({"kind": "curve", "vertices": [[1, 2], [2, 0]]})").find("scalings must be > 0") != std::string::npos);
+    BOOST_TEST(refused(R"({"kind": "curve", "pieces": [{"rho1": [1, 5], "slope": "-4/7", "intercept": "18/7"}]})")
+                   .find("rho2 <= 0") != std::string::npos);  // (18 − 20)/7 < 0 at ρ1 = 5
+    BOOST_TEST(refused(R"({"kind": "curve", "vertices": [[1, 2], ["3/2", "12/7"]], "switch_points": [[-1, 2]]})") != "accepted");
+    BOOST_TEST(refused(R"({"kind": "curve", "vertices": [[1, 2], ["3/2", "12/7"]], "switch_points": [[2, "10/7"]]})")
+                   .find("outside the claimed range") != std::string::npos);
+    BOOST_TEST(refused(R"({"kind": "curve", "pieces": [
+        {"rho1": ["1/2", 1], "slope": "-5/2", "intercept": "9/2"},
+        {"rho1": ["11/10", "3/2"], "slope": "-4/7", "intercept": "18/7"}]})").find("start where") != std::string::npos);
+    BOOST_TEST(refused(R"({"kind": "switch_point", "rho1": 1, "rho2": -2})") != "accepted");
+    BOOST_TEST(refused(R"({"kind": "growth_distance", "value": "-18/11"})").find(">= 0") != std::string::npos);
+    long wrong = -1;
+    for (const char* line : {"curve 1 0\n", "curve 0 9/2\n", "curve 1 -2\n", "growth -1\n"})
+        BOOST_CHECK_THROW(certify_fp(k.m, k.c, line, "c.txt", ClaimOptions{}, false, &wrong), InputError);
+    BOOST_TEST(certify_fp(k.m, k.c, "curve 1 2\ncurve 3/2 12/7\n", "c.txt", ClaimOptions{}, false, &wrong).find("wrong: 0") !=
+               std::string::npos);
+    // Rule 1: the stacked cubes' curve ρ2 = 3 − ρ1 (one (F,F) line for every ρ1 > 0) reaches 0 at
+    // ρ1 = 3. A claim that stays above 0 up to ρ1 = 4 is wrong, however large the tolerance.
+    Claims cubes("stacked_cubes");
+    j = cubes.one(R"({"kind": "curve", "vertices": [[1, 2], [4, "1/1000"]]})", "1000");
+    BOOST_TEST(!j["right"].get<bool>());
+    BOOST_TEST(!j["exact_rho2_positive_over_range"].get<bool>());
+    BOOST_TEST(cubes.right(R"({"kind": "curve", "vertices": [[1, 2], ["5/2", "1/2"]], "switch_points": []})"));
+}
+
 BOOST_AUTO_TEST_CASE(claimed_planes_must_separate_exactly) {
     // Stacked cubes at (1, 1): P1 = [0,2]^3 reaches z = 2, P2 = [0,2]^2 x [3,5] starts at z = 3.
     Claims k("stacked_cubes");
@@ -312,7 +386,7 @@ BOOST_AUTO_TEST_CASE(claimed_curves_switches_and_labels) {
         }
         j = k.one(R"({"kind": "curve", "vertices": [)" + vs + R"(], "switch_points": []})", "0", true);
         BOOST_TEST(!j["right"].get<bool>());
-        BOOST_TEST(j["switch_points_missed"] == nlohmann::json::array({"1"}));
+        BOOST_TEST(j["switch_points_missed"] == nlohmann::json::parse(R"([["1", "2"]])"));
         BOOST_TEST(parse_exact(j["max_vertical_error"].get<std::string>()) > 0);
     }
     // An extra switch point.

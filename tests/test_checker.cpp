@@ -56,8 +56,10 @@ const std::vector<StillTrue> kStillTrue = {
     {std::regex(".* at .*/closed_form$"), "name of the paper's formula that also gives the line: provenance, not a claim", false},
     {std::regex(".* at .*/equation$"), "name of the paper's equation that gives the switch point: provenance, not a claim", false},
     {std::regex("optional member removed at (/model|.*/closed_form|.*/equation|.*/same_line_normals|/growth_distance_note)$"), "an annotation left out (it is optional)", false},
-    {std::regex(".* at .*/features/P[12]/[0-9]+$"), "another vertex of the same contact feature: still a maximiser", false},
+    {std::regex(".* at /switch_points/[0-9]+/features/P[12]/[0-9]+$"), "another vertex of the same contact feature: still a maximiser (a piece lists all of them)", false},
     {std::regex(".* at .*/support_vertices/P[12]$"), "another vertex attaining the same support value", false},
+    {std::regex(".* at /pieces/[0-9]+/same_line_normals/[0-9]+(/[0-2])?$"),
+     "another normal that gives the very same line (the checker recomputes its line and maximisers), or one listed twice", false},
     {std::regex("element duplicated at /scene/P[12]/vertices/[0-9]+$"), "a repeated vertex is the same polyhedron (a copy of the last vertex shifts no index)", false},
     {std::regex(".* at /scene/I[12]/.*"), "the scaling ranges I1, I2 take no part in a single query's claim", true},
 };
@@ -340,6 +342,50 @@ BOOST_AUTO_TEST_CASE(switch_contact_labels_are_recomputed_from_all_maximisers) {
     ee["switch_points"][0]["contact"] = "EE";
     ee["switch_points"][0]["features"]["P1"] = OJ::array({0, 1});
     BOOST_TEST(verdict_of(ee) == 1);
+}
+
+BOOST_AUTO_TEST_CASE(piece_contacts_where_normals_share_a_line_are_proved_minimal) {
+    // Cubes [0,2]^3 and [2,4]×[2,4]×[0,2] (tests/data/cubes_sharing_an_edge.json) touch along the
+    // edge {x = y = 2} on the line ρ2 = 2 − ρ1, given by the normals (1,0,0) and (0,1,0) alike:
+    // each plane alone supports a face (FF), the contact is EE (derived in test_hand_curves).
+    const fs::path scene = fs::path(SCALECERT_SOURCE_DIR) / "tests/data/cubes_sharing_an_edge.json";
+    const fs::path cert = tmpdir() / "cubes_edge.partition.json";
+    BOOST_TEST_REQUIRE(engine("partition " + scene.string() + " --out " + cert.string()) == 0);
+    OJ j = load(cert);
+    BOOST_TEST_REQUIRE(verdict_of(j) == 0);
+    OJ& p = j["pieces"][0];
+    BOOST_TEST_REQUIRE(p["contact"] == "EE");
+    BOOST_TEST_REQUIRE(p["same_line_normals"].size() == 1u);
+    // The old label, one normal's faces, with that normal's maximisers and no other normal: no
+    // witness can lie inside both faces, so the file's own witness (on the edge) is refused.
+    OJ ff = j;
+    const OJ face1 = OJ::array({4, 5, 6, 7}), face2 = OJ::array({0, 1, 2, 3});
+    const bool x_first = p["normal"] == OJ::array({"1", "0", "0"});
+    ff["pieces"][0]["contact"] = "FF";
+    ff["pieces"][0]["features"]["P1"] = x_first ? face1 : OJ::array({2, 3, 6, 7});
+    ff["pieces"][0]["features"]["P2"] = x_first ? face2 : OJ::array({0, 1, 4, 5});
+    ff["pieces"][0].erase("same_line_normals");
+    BOOST_TEST(verdict_of(ff) == 1);
+    // Leaving the other normal out alone, or keeping it and claiming FF, or listing part of the
+    // edge, or a null contact: each refused.
+    OJ drop = j;
+    drop["pieces"][0].erase("same_line_normals");
+    BOOST_TEST(verdict_of(drop) == 1);
+    OJ lie = j;
+    lie["pieces"][0]["contact"] = "FF";
+    BOOST_TEST(verdict_of(lie) == 1);
+    OJ part = j;
+    part["pieces"][0]["features"]["P1"] = OJ::array({7});
+    BOOST_TEST(verdict_of(part) == 1);
+    OJ none = j;
+    none["pieces"][0]["contact"] = nullptr;
+    BOOST_TEST(verdict_of(none) == 1);
+    // And every mutation of the whole file, as for the bundled ones.
+    Tally t;
+    g_named.clear();
+    collect_named(j, false);
+    mutate_all(j, j, OJ::json_pointer(), t);
+    report("cubes_sharing_an_edge", t);
 }
 
 BOOST_AUTO_TEST_CASE(indices_must_be_exact_integers_in_range) {

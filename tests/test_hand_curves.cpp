@@ -121,3 +121,139 @@ BOOST_AUTO_TEST_CASE(scenes_built_in_code_get_the_readers_checks) {
     Curve c = build_curve(build_model(sc));
     BOOST_TEST(c.growth.value == Q(3, 2));  // ρ1 + ρ2 = 3 meets ρ1 = ρ2 at 3/2
 }
+
+namespace {
+// Eight corners of the cube [x, x+2] × [y, y+2] × [z, z+2], in the order (a, b, c) ∈ {0,2}^3 with c
+// fastest: index 4a/2 + 2b/2 + c/2.
+std::vector<Vec3q> cube(long x, long y, long z) {
+    std::vector<Vec3q> v;
+    for (long a : {0, 2})
+        for (long b : {0, 2})
+            for (long c : {0, 2}) v.push_back({Q(x + a), Q(y + b), Q(z + c)});
+    return v;
+}
+std::vector<Vec3q> pts(std::initializer_list<std::array<long, 3>> l) {
+    std::vector<Vec3q> v;
+    for (const auto& p : l) v.push_back({Q(p[0]), Q(p[1]), Q(p[2])});
+    return v;
+}
+Scene two(std::vector<Vec3q> a, std::vector<Vec3q> b) {
+    Scene sc;
+    sc.P[0].points = std::move(a);
+    sc.P[1].points = std::move(b);
+    for (int i = 0; i < 2; ++i) sc.lo[i] = Q(1, 2), sc.hi[i] = Q(3, 2);
+    finish_scene(sc, "scene");
+    return sc;
+}
+struct HandContact { const char* name; Scene sc; Q slope, intercept; std::string label; std::vector<int> f1, f2; };
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(contact_labels_are_the_smallest_faces_holding_the_touching_set) {
+    // P1 is the cube [0,2]^3 (seed (1,1,1)) in every case but the last. Each P2 is placed so that
+    // at ρ1 = ρ2 = 1 the bodies touch as named, and its seed (the mean of its points) lies on the
+    // line through P1's seed and the contact, so the contact keeps its kind along the whole line.
+    //  - edge:    P2 = [2,4]×[2,4]×[0,2], seed (3,3,1). The faces x = 1+ρ1 and x = 3−ρ2 (normal
+    //             (1,0,0)) and y (normal (0,1,0)) give the same line ρ2 = 2 − ρ1; the touching set
+    //             is the common part of the edges {x = y = 2} of both: EE, vertices 6, 7 of P1
+    //             ((2,2,0), (2,2,2)) and 0, 1 of P2.
+    //  - corner:  P2 = [2,4]^3: three normals, one line ρ2 = 2 − ρ1, touching at the corner
+    //             (2,2,2) = P1's vertex 7, P2's vertex 0: VV.
+    //  - face:    P2 = [2,4]×[0,2]×[0,2]: only (1,0,0) touches; the faces x = 2 are concentric
+    //             squares, and the smaller one is the touching set: FF, P1's 4..7, P2's 0..3.
+    //  - ridge:   P2 = prism with ridge (2,1,0)–(2,1,2) and back face x = 4, seed (10/3, 1, 1).
+    //             (1,0,0): h1 = 1, h2 = 10/3 − 2 = 4/3, n·d = 7/3, so ρ2 = 7/4 − (3/4)ρ1. The
+    //             ridge stays at y = 1, z ∈ [1 − ρ2, 1 + ρ2], inside P1's face: FE.
+    //  - tipface: P2 = square pyramid with tip (2,1,1), base x = 4, seed (18/5, 1, 1): h2 = 8/5,
+    //             n·d = 13/5, ρ2 = 13/8 − (5/8)ρ1; the tip stays at the centre of P1's face: FV.
+    //  - tips:    two square pyramids tip to tip at (0,0,2): P1 tip up over the base z = 0, seed
+    //             (0,0,2/5); P2 tip down under z = 4, seed (0,0,18/5). The tips sit on the z axis,
+    //             at 2/5 + (8/5)ρ1 and 18/5 − (8/5)ρ2: they meet when ρ2 = 2 − ρ1, and then the
+    //             touching set is the single tip (each pyramid lies on its side of z = tip). The
+    //             four slanted faces of each and their edge pairs all give that line: VV.
+    const std::vector<HandContact> cases = {
+        {"edge", two(cube(0, 0, 0), cube(2, 2, 0)), Q(-1), Q(2), "EE", {6, 7}, {0, 1}},
+        {"corner", two(cube(0, 0, 0), cube(2, 2, 2)), Q(-1), Q(2), "VV", {7}, {0}},
+        {"face", two(cube(0, 0, 0), cube(2, 0, 0)), Q(-1), Q(2), "FF", {4, 5, 6, 7}, {0, 1, 2, 3}},
+        {"ridge", two(cube(0, 0, 0), pts({{2, 1, 0}, {2, 1, 2}, {4, 0, 0}, {4, 2, 0}, {4, 0, 2}, {4, 2, 2}})), Q(-3, 4), Q(7, 4), "FE",
+         {4, 5, 6, 7}, {0, 1}},
+        {"tipface", two(cube(0, 0, 0), pts({{2, 1, 1}, {4, 0, 0}, {4, 2, 0}, {4, 0, 2}, {4, 2, 2}})), Q(-5, 8), Q(13, 8), "FV",
+         {4, 5, 6, 7}, {0}},
+        {"tips", two(pts({{0, 0, 2}, {-1, -1, 0}, {1, -1, 0}, {-1, 1, 0}, {1, 1, 0}}), pts({{0, 0, 2}, {-1, -1, 4}, {1, -1, 4}, {-1, 1, 4}, {1, 1, 4}})),
+         Q(-1), Q(2), "VV", {0}, {0}},
+    };
+    for (const HandContact& h : cases) {
+        BOOST_TEST_CONTEXT(h.name) {
+            const Model m = build_model(h.sc);
+            const Curve c = build_curve(m);
+            BOOST_TEST_REQUIRE(c.pieces.size() == 1u);
+            const ContactLine& L = m.lines[c.env.pieces[c.pieces[0].env].line];
+            BOOST_TEST(L.slope == h.slope);
+            BOOST_TEST(L.intercept == h.intercept);
+            BOOST_TEST(c.pieces[0].contact.label == h.label);
+            BOOST_TEST(c.pieces[0].contact.feat1 == h.f1);
+            BOOST_TEST(c.pieces[0].contact.feat2 == h.f2);
+            // The brute force (support.hpp) agrees at ρ1 = ρ2 = 1 and at ρ1 = 3/4.
+            for (const Q& x : {Q(1), Q(3, 4)}) {
+                const auto [g1, g2] = test::brute_contact(h.sc, x, h.slope * x + h.intercept);
+                BOOST_TEST(g1 == h.f1);
+                BOOST_TEST(g2 == h.f2);
+            }
+            // The certificate carries a witness in both features' relative interiors, and the
+            // checker accepts it.
+            const Partition p = build_partition(m, c);
+            BOOST_TEST_REQUIRE(p.piece_witnesses.size() == 1u);
+            BOOST_TEST_REQUIRE(p.piece_witnesses[0].has_value());
+            BOOST_TEST(p.piece_witnesses[0]->w1.size() == h.f1.size());
+            BOOST_TEST(p.piece_witnesses[0]->w2.size() == h.f2.size());
+        }
+    }
+}
+
+BOOST_AUTO_TEST_CASE(contact_labels_match_the_brute_force_on_lattice_boxes_and_polytopes) {
+    // Axis-aligned boxes and small lattice polytopes meet edge to edge, corner to face and so on
+    // far more often than random ones: many facet normals share one line. At the middle of every
+    // piece (where ρ2 > 0), the engine's features are the hull vertices of the brute force's
+    // smallest faces, and its label their dimensions.
+    std::mt19937 g(20261123);
+    std::uniform_int_distribution<int> u(0, 3), off(-2, 2);
+    int compared = 0, shared_lines = 0;
+    for (int t = 0; t < 300; ++t) {
+        Scene sc;
+        for (int i = 0; i < 2; ++i) {
+            const long ox = i ? off(g) : 0, oy = i ? off(g) : 0, oz = i ? off(g) : 0;
+            if (t % 2 == 0) {  // a box
+                const long a = 1 + u(g) % 3, b = t % 4 == 0 ? a : 1 + u(g) % 3, c = t % 4 == 0 ? a : 1 + u(g) % 3;  // cubes often
+                for (long x : {0L, a})
+                    for (long y : {0L, b})
+                        for (long z : {0L, c}) sc.P[i].points.push_back({Q(ox + x), Q(oy + y), Q(oz + z)});
+            } else {
+                sc.P[i].points = test::random_points(g, 6, 2, 1, {Q(ox), Q(oy), Q(oz)});
+            }
+        }
+        for (int i = 0; i < 2; ++i) sc.lo[i] = Q(1, 2), sc.hi[i] = Q(2);
+        finish_scene(sc, "scene");
+        Model m;
+        try {
+            m = build_model(sc);
+        } catch (const InputError&) {
+            continue;  // a seed on the boundary (flat lattice hulls are skipped by random_points)
+        }
+        const Curve c = build_curve(m);
+        for (const CurvePiece& p : c.pieces) {
+            const std::optional<Q> x = contact_rho1(m, c, p);
+            if (!x) continue;
+            const Q y = m.lines[c.env.pieces[p.env].line].at(*x);
+            const auto [g1, g2] = test::brute_contact(sc, *x, y);
+            BOOST_TEST_REQUIRE(!g1.empty());
+            for (int k : p.contact.feat1) BOOST_TEST(std::binary_search(g1.begin(), g1.end(), k));
+            for (int k : p.contact.feat2) BOOST_TEST(std::binary_search(g2.begin(), g2.end(), k));
+            const std::string brute{"VEF"[test::affine_dimension(sc.P[0].points, g1)], "VEF"[test::affine_dimension(sc.P[1].points, g2)]};
+            BOOST_TEST(p.contact.label == brute);
+            shared_lines += c.env.pieces[p.env].same.size() > 1;
+            ++compared;
+        }
+    }
+    BOOST_TEST(compared > 300);
+    BOOST_TEST_MESSAGE(compared << " pieces compared, " << shared_lines << " with several normals on one line");
+    BOOST_TEST(shared_lines > 10);  // the case this test is for
+}

@@ -72,7 +72,9 @@ private:
 
 // The touching curve over I1: ρ2 = slope·ρ1 + intercept on each piece, descending and convex.
 // Below a piece, the plane of its normal separates; above the curve, the polyhedra overlap.
-struct Piece { Rational from, to, slope, intercept; Point normal; Contact contact; };
+// A piece's contact: the smallest faces holding the touching set P1(ρ1) ∩ P2(ρ2) along it; none
+// if ρ2 <= 0 all along the piece.
+struct Piece { Rational from, to, slope, intercept; Point normal; std::optional<Contact> contact; };
 struct SwitchPoint { Rational rho1, rho2; std::optional<Contact> contact; };  // none if ρ2 <= 0
 struct GrowthDistance { Rational value; bool in_rectangle; };  // f(ρ*) = ρ* (0: seeds coincide)
 struct Curve { std::vector<Piece> pieces; std::vector<SwitchPoint> switches; GrowthDistance growth; };

@@ -47,7 +47,7 @@ std::string certify_claim_lines(const Model& m, const Curve& c, const std::strin
         std::string detail;
         if (w[0] == "curve" && w.size() == 3) {
             Q r1 = read_number(w[1], binary_doubles, where), r2 = read_number(w[2], binary_doubles, where);
-            if (sgn(r1) <= 0) throw InputError(where + ": rho1 must be > 0");
+            if (sgn(r1) <= 0 || sgn(r2) <= 0) throw InputError(where + ": scalings must be > 0");
             Q f = c.env.value(m.lines, r1);
             right = f == r2;
             o["claim"] = "curve";
@@ -58,6 +58,7 @@ std::string certify_claim_lines(const Model& m, const Curve& c, const std::strin
             detail = "curve point (" + w[1] + ", " + w[2] + "): exact curve at rho1 is " + num_text(f) + ", off by " + num_text(r2 - f);
         } else if (w[0] == "growth" && w.size() == 2) {
             Q g = read_number(w[1], binary_doubles, where);
+            if (sgn(g) < 0) throw InputError(where + ": a growth distance is >= 0 (0 when the seeds coincide)");
             right = g == c.growth.value;
             o["claim"] = "growth";
             put_exact(o, "claimed", g);

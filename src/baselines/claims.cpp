@@ -54,6 +54,8 @@ private:
     std::string name_, where_;
     ClaimOptions opt_;
     std::optional<std::vector<Vec3z>> normals_;  // every facet normal, for depths (built on first use)
+    struct ExactSwitch { Q rho1, rho2; std::string label; };
+    std::optional<std::vector<ExactSwitch>> switches_;  // the exact switch points (built on first use)
 
     [[noreturn]] void fail(const std::string& key, const std::string& what) const {
         throw InputError(where_ + (key.empty() ? "" : "." + key) + ": " + what);
@@ -151,48 +153,68 @@ private:
     bool growth(const JNode& j, Json& o, std::string& text) {
         only(j, {"kind", "value"});
         const Q g = field(j, "value");
+        if (sgn(g) < 0) fail("value", "a growth distance is >= 0 (0 when the seeds coincide)");
         errors(o, g, c_.growth.value);
         text = "growth distance " + num(g) + ": exact " + num(c_.growth.value);
         return close(g, c_.growth.value);
     }
 
-    // The exact switch points with ρ2 > 0 whose ρ1 is in I1.
-    std::vector<const SwitchPoint*> exact_switches() const {
-        std::vector<const SwitchPoint*> out;
-        for (const SwitchPoint& s : c_.switches)
-            if (!s.contact.label.empty()) out.push_back(&s);
-        return out;
+    // The exact switch points: every break of the exact curve ρ2 = f(ρ1) over ρ1 > 0 where
+    // ρ2 > 0, inside I1 or not, with its contact (built on first use).
+    const std::vector<ExactSwitch>& exact_switches() {
+        if (switches_) return *switches_;
+        switches_.emplace();
+        const auto& P = c_.env.pieces;
+        for (size_t k = 0; k + 1 < P.size(); ++k) {
+            const Q& x = *P[k].to;
+            const ContactLine &L = m_.lines[P[k].line], &R = m_.lines[P[k + 1].line];
+            const Q y = L.at(x);
+            if (sgn(x) <= 0) continue;
+            if (sgn(y) <= 0) break;  // f descends: nothing touches from here on
+            switches_->push_back({x, y, contact_at(m_, L, R, x, y).label});
+        }
+        return *switches_;
+    }
+    // A claimed scaling: a number > 0 (P(ρ) is a point or reflected otherwise).
+    Q scaling(const JNode& n, const std::string& key) const {
+        const Q q = number(n, key);
+        if (sgn(q) <= 0) fail(key, "scalings must be > 0 (got " + to_exact_string(q) + ")");
+        return q;
+    }
+    std::pair<Q, Q> scaling_pair(const JNode& p, const std::string& key) const {
+        if (p.kind != JNode::Array || p.items.size() != 2) fail(key, "expected [rho1, rho2] pairs");
+        return {scaling(p.items[0], key), scaling(p.items[1], key)};
     }
 
     bool switch_point(const JNode& j, Json& o, std::string& text) {
         only(j, {"kind", "rho1", "rho2", "contact"});
-        const Q r1 = field(j, "rho1"), r2 = field(j, "rho2");
+        const auto [r1, r2] = pair_at(j);
         const std::optional<std::string> lab = label(j);
-        const auto ex = exact_switches();
+        const auto& ex = exact_switches();
         put_exact(o, "rho1", r1);
         put_exact(o, "rho2", r2);
         if (ex.empty()) {
             o["nearest"] = nullptr;
-            text = "switch point (" + num(r1) + ", " + num(r2) + "): the exact curve has no switch point in I1";
+            text = "switch point (" + num(r1) + ", " + num(r2) + "): the exact curve has no switch point at rho1, rho2 > 0";
             return false;
         }
-        const SwitchPoint* best = ex.front();
-        for (const SwitchPoint* s : ex)
-            if (abs(Q(s->rho1 - r1)) < abs(Q(best->rho1 - r1))) best = s;
+        const ExactSwitch* best = &ex.front();
+        for (const ExactSwitch& s : ex)
+            if (abs(Q(s.rho1 - r1)) < abs(Q(best->rho1 - r1))) best = &s;
         Json n;
         put_exact(n, "rho1", best->rho1);
         put_exact(n, "rho2", best->rho2);
-        n["contact"] = best->contact.label;
+        n["contact"] = best->label;
         o["nearest"] = n;
         Json e1, e2;
         errors(e1, r1, best->rho1);
         errors(e2, r2, best->rho2);
         o["rho1_error"] = e1;
         o["rho2_error"] = e2;
-        const bool label_right = !lab || *lab == best->contact.label;
+        const bool label_right = !lab || *lab == best->label;
         o["contact_right"] = lab ? Json(label_right) : Json(nullptr);
         text = "switch point (" + num(r1) + ", " + num(r2) + (lab ? ", " + *lab : "") + "): nearest exact (" + num(best->rho1) +
-               ", " + num(best->rho2) + ", " + best->contact.label + ")";
+               ", " + num(best->rho2) + ", " + best->label + ")";
         return close(r1, best->rho1) && close(r2, best->rho2) && label_right;
     }
 
@@ -206,21 +228,20 @@ private:
         return std::nullopt;
     }
 
+    // A curve claim: the rules of CLAIMS.md ("Curve claims"), each applied here once.
     bool curve(const JNode& j, Json& o, std::string& text) {
         only(j, {"kind", "vertices", "pieces", "switch_points"});
         struct Seg { Q x0, y0, x1, y1; std::optional<std::string> label; };
+        struct Claimed { Q x, y; };
         std::vector<Seg> segs;
-        std::vector<Q> claimed_switches;
+        std::vector<Claimed> claimed_switches;
         const JNode* verts = j.find("vertices");
         const JNode* pieces = j.find("pieces");
         if ((verts != nullptr) == (pieces != nullptr)) fail("", "give \"vertices\" (a polyline) or \"pieces\"");
         if (verts) {
             if (verts->kind != JNode::Array || verts->items.size() < 2) fail("vertices", "expected at least 2 [rho1, rho2] pairs");
             std::vector<std::pair<Q, Q>> v;
-            for (const JNode& p : verts->items) {
-                if (p.kind != JNode::Array || p.items.size() != 2) fail("vertices", "expected [rho1, rho2] pairs");
-                v.push_back({number(p.items[0], "vertices"), number(p.items[1], "vertices")});
-            }
+            for (const JNode& p : verts->items) v.push_back(scaling_pair(p, "vertices"));
             for (size_t i = 0; i + 1 < v.size(); ++i) {
                 if (!(v[i].first < v[i + 1].first)) fail("vertices", "rho1 must increase");
                 segs.push_back({v[i].first, v[i].second, v[i + 1].first, v[i + 1].second, std::nullopt});
@@ -230,7 +251,7 @@ private:
             for (size_t i = 1; i + 1 < v.size(); ++i)
                 if ((v[i].second - v[i - 1].second) * (v[i + 1].first - v[i].first) !=
                     (v[i + 1].second - v[i].second) * (v[i].first - v[i - 1].first))
-                    claimed_switches.push_back(v[i].first);
+                    claimed_switches.push_back({v[i].first, v[i].second});
         } else {
             if (pieces->kind != JNode::Array || pieces->items.empty()) fail("pieces", "expected a list of pieces");
             for (const JNode& p : pieces->items) {
@@ -238,25 +259,31 @@ private:
                 only(p, {"rho1", "slope", "intercept", "contact"});
                 const JNode& r = need(p, "rho1");
                 if (r.kind != JNode::Array || r.items.size() != 2) fail("pieces.rho1", "expected [from, to]");
-                const Q x0 = number(r.items[0], "pieces.rho1"), x1 = number(r.items[1], "pieces.rho1");
+                const Q x0 = scaling(r.items[0], "pieces.rho1"), x1 = scaling(r.items[1], "pieces.rho1");
                 if (!(x0 < x1)) fail("pieces.rho1", "from < to is required");
-                if (!segs.empty() && x0 < segs.back().x1) fail("pieces.rho1", "pieces must be in order, without overlap");
+                if (!segs.empty() && x0 != segs.back().x1) fail("pieces.rho1", "each piece must start where the one before ends");
                 const Q a = field(p, "slope"), b = field(p, "intercept");
-                if (!segs.empty()) claimed_switches.push_back(x0);
-                segs.push_back({x0, a * x0 + b, x1, a * x1 + b, label(p)});
+                const Q y0 = a * x0 + b, y1 = a * x1 + b;
+                if (sgn(y0) <= 0 || sgn(y1) <= 0) fail("pieces", "the piece reaches rho2 <= 0 (scalings must be > 0)");
+                if (!segs.empty()) claimed_switches.push_back({x0, segs.back().y1});
+                segs.push_back({x0, y0, x1, y1, label(p)});
             }
         }
+        const Q lo = segs.front().x0, hi = segs.back().x1;
         if (const JNode* sw = j.find("switch_points")) {
             if (sw->kind != JNode::Array) fail("switch_points", "expected a list of [rho1, rho2]");
             claimed_switches.clear();
             for (const JNode& p : sw->items) {
-                if (p.kind != JNode::Array || p.items.size() != 2) fail("switch_points", "expected [rho1, rho2] pairs");
-                claimed_switches.push_back(number(p.items[0], "switch_points"));
+                const auto [x, y] = scaling_pair(p, "switch_points");
+                if (x < lo || x > hi) fail("switch_points", "rho1 = " + to_exact_string(x) + " lies outside the claimed range");
+                claimed_switches.push_back({x, y});
             }
         }
-        // Vertical error: the difference of two piecewise-linear functions is largest at a break
-        // of either, so the claimed ends and the exact switch points inside each segment suffice.
-        Q max_v = 0, max_h = 0, worst_v_at = segs.front().x0;
+        // Vertical error: on a stretch where the claim and f are both linear, so is their
+        // difference (and so are the tolerance's bounds), so the claimed ends and the exact
+        // breaks inside each segment suffice.
+        const auto& ex = exact_switches();
+        Q max_v = 0, max_h = 0, worst_v_at = lo;
         bool within = true;
         auto check_v = [&](const Q& x, const Q& y) {
             const Q f = c_.env.value(m_.lines, x);
@@ -267,47 +294,59 @@ private:
         for (const Seg& s : segs) {
             check_v(s.x0, s.y0);
             check_v(s.x1, s.y1);
-            for (const SwitchPoint& sp : c_.switches)
-                if (sp.rho1 > s.x0 && sp.rho1 < s.x1) check_v(sp.rho1, s.y0 + (s.y1 - s.y0) * (sp.rho1 - s.x0) / (s.x1 - s.x0));
+            for (const EnvPiece& p : c_.env.pieces)
+                if (p.to && *p.to > s.x0 && *p.to < s.x1) check_v(*p.to, s.y0 + (s.y1 - s.y0) * (*p.to - s.x0) / (s.x1 - s.x0));
             for (const auto& [x, y] : {std::pair{s.x0, s.y0}, std::pair{s.x1, s.y1}})
                 if (auto xi = inverse(y)) max_h = std::max(max_h, Q(abs(Q(*xi - x))));
         }
+        // Nothing touches where f ≤ 0; f descends, so it is > 0 on the whole range iff at hi.
+        const bool exact_positive = sgn(c_.env.value(m_.lines, hi)) > 0;
+        o["exact_rho2_positive_over_range"] = exact_positive;
         put_exact(o, "max_vertical_error", max_v);
         put_exact(o, "max_vertical_error_at_rho1", worst_v_at);
         put_exact(o, "max_horizontal_error", max_h);
-        // Switch points inside the claimed range: matched when each is the other's nearest.
-        const Q lo = segs.front().x0, hi = segs.back().x1;
-        std::vector<Q> exact;
-        for (const SwitchPoint* s : exact_switches())
-            if (s->rho1 > lo && s->rho1 < hi) exact.push_back(s->rho1);
-        auto nearest = [](const std::vector<Q>& in, const Q& x) {
+        // Switch points: the exact ones in the closed range [lo, hi], each matched with the claimed
+        // one nearest to it in ρ1 when that one's nearest exact switch is it. An exact switch
+        // strictly inside the range that is not matched is missed; one at an end of the range
+        // may go unclaimed. A claimed one not matched is extra; a matched pair must agree in ρ1
+        // and ρ2 within the tolerance, or it is misplaced.
+        std::vector<const ExactSwitch*> exact;
+        for (const ExactSwitch& s : ex)
+            if (s.rho1 >= lo && s.rho1 <= hi) exact.push_back(&s);
+        auto nearest_claimed = [&](const Q& x) {
             size_t b = 0;
-            for (size_t i = 1; i < in.size(); ++i)
-                if (abs(Q(in[i] - x)) < abs(Q(in[b] - x))) b = i;
+            for (size_t i = 1; i < claimed_switches.size(); ++i)
+                if (abs(Q(claimed_switches[i].x - x)) < abs(Q(claimed_switches[b].x - x))) b = i;
+            return b;
+        };
+        auto nearest_exact = [&](const Q& x) {
+            size_t b = 0;
+            for (size_t i = 1; i < exact.size(); ++i)
+                if (abs(Q(exact[i]->rho1 - x)) < abs(Q(exact[b]->rho1 - x))) b = i;
             return b;
         };
         Json missed = Json::array(), extra = Json::array(), misplaced = Json::array();
         std::vector<bool> used(claimed_switches.size(), false);
         for (size_t i = 0; i < exact.size(); ++i) {
-            if (claimed_switches.empty()) {
-                missed.push_back(to_exact_string(exact[i]));
-                continue;
-            }
-            const size_t k = nearest(claimed_switches, exact[i]);
-            if (nearest(exact, claimed_switches[k]) != i) {
-                missed.push_back(to_exact_string(exact[i]));
+            const bool at_end = exact[i]->rho1 == lo || exact[i]->rho1 == hi;
+            size_t k = 0;
+            if (claimed_switches.empty() || nearest_exact(claimed_switches[k = nearest_claimed(exact[i]->rho1)].x) != i) {
+                if (!at_end) missed.push_back(Json::array({to_exact_string(exact[i]->rho1), to_exact_string(exact[i]->rho2)}));
                 continue;
             }
             used[k] = true;
-            if (!close(claimed_switches[k], exact[i])) {
+            if (!close(claimed_switches[k].x, exact[i]->rho1) || !close(claimed_switches[k].y, exact[i]->rho2)) {
                 Json mp;
-                put_exact(mp, "exact_rho1", exact[i]);
-                put_exact(mp, "claimed_rho1", claimed_switches[k]);
+                put_exact(mp, "exact_rho1", exact[i]->rho1);
+                put_exact(mp, "exact_rho2", exact[i]->rho2);
+                put_exact(mp, "claimed_rho1", claimed_switches[k].x);
+                put_exact(mp, "claimed_rho2", claimed_switches[k].y);
                 misplaced.push_back(mp);
             }
         }
         for (size_t k = 0; k < claimed_switches.size(); ++k)
-            if (!used[k]) extra.push_back(to_exact_string(claimed_switches[k]));
+            if (!used[k])
+                extra.push_back(Json::array({to_exact_string(claimed_switches[k].x), to_exact_string(claimed_switches[k].y)}));
         o["switch_points_missed"] = missed;
         o["switch_points_extra"] = extra;
         o["switch_points_misplaced"] = misplaced;
@@ -316,7 +355,7 @@ private:
         for (const Seg& s : segs) {
             if (!s.label) continue;
             const Q mid = (s.x0 + s.x1) / 2;
-            const std::string& e = m_.lines[c_.env.pieces[c_.env.locate(mid)].line].contact;
+            const std::string e = exact_positive ? piece_contact(m_, c_.env.pieces[c_.env.locate(mid)]).label : std::string("none");
             if (*s.label != e) {
                 Json w;
                 put_exact(w, "rho1", mid);
@@ -328,8 +367,9 @@ private:
         o["wrong_contacts"] = wrong_labels;
         text = "curve of " + std::to_string(segs.size()) + " segments: max vertical error " + num(max_v) + ", max horizontal error " +
                num(max_h) + ", switch points missed " + std::to_string(missed.size()) + ", extra " + std::to_string(extra.size()) +
-               ", misplaced " + std::to_string(misplaced.size()) + ", wrong contacts " + std::to_string(wrong_labels.size());
-        return within && missed.empty() && extra.empty() && misplaced.empty() && wrong_labels.empty();
+               ", misplaced " + std::to_string(misplaced.size()) + ", wrong contacts " + std::to_string(wrong_labels.size()) +
+               (exact_positive ? "" : ", and the exact curve reaches rho2 <= 0 in the claimed range");
+        return exact_positive && within && missed.empty() && extra.empty() && misplaced.empty() && wrong_labels.empty();
     }
 
     bool plane(const JNode& j, Json& o, std::string& text) {

@@ -30,7 +30,8 @@ struct Contact {
 
 struct CurvePiece {
     Q from, to;
-    size_t env;  // index into Envelope::pieces
+    size_t env;       // index into Envelope::pieces
+    Contact contact;  // piece_contact of its envelope piece; empty label if ρ2 ≤ 0 all along it
 };
 
 struct SwitchPoint {
@@ -57,6 +58,18 @@ struct Curve {
 // smallest face of each polyhedron holding the touching set (a vertex or an edge: both planes
 // touch, so the touching set lies on their common line).
 Contact contact_at(const Model& m, const ContactLine& L, const ContactLine& R, const Q& rho1, const Q& rho2);
+
+// The contact along an envelope piece: the smallest faces of P1(ρ1) and P2(ρ2) that hold their
+// touching set, the same at every inner point of the piece with ρ2 > 0. Every normal whose line is
+// the piece's (EnvPiece::same, all of them) touches there, so the touching set T lies in each one's
+// maximisers and in their intersections G1, G2 (faces). And T = G1 ∩ G2 meets both relative
+// interiors: the face of the Minkowski sum holding the origin in its relative interior is the
+// difference of the faces that the normals in its normal cone pick out, i.e. of G2 and G1. So G_i
+// is the smallest face holding T. The label follows from the vertex counts of G1 and G2.
+Contact piece_contact(const Model& m, const EnvPiece& e);
+// A ρ1 of the curve piece with ρ2 > 0 (the middle of that part): where its contact is witnessed.
+// None when ρ2 ≤ 0 all along it (nothing touches there).
+std::optional<Q> contact_rho1(const Model& m, const Curve& c, const CurvePiece& p);
 
 Curve build_curve(const Model& m);
 

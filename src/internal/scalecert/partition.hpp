@@ -16,6 +16,9 @@ struct Partition {
     std::vector<Witness> overlap_witnesses;  // one per vertex of `overlap`
     std::vector<SeparatedRegion> separated;  // nonempty interiors only
     std::vector<Witness> switch_witnesses;   // one per switch point with ρ2 > 0 (touching)
+    // Per curve piece with a contact: a point of the touching set in the relative interiors of
+    // both contact features (every feature vertex weighted > 0), at contact_rho1.
+    std::vector<std::optional<Witness>> piece_witnesses;
     std::optional<Witness> growth_witness;   // at (ρ*, ρ*) when ρ* > 0
     std::optional<Witness> end_witness[2];   // at (lo1, f(lo1)) and (hi1, f(hi1)) when f > 0
 };

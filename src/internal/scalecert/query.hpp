@@ -38,5 +38,9 @@ Verdict query_direct(const Model& m, const Q& rho1, const Q& rho2);
 PlaneCert plane_certificate(const Model& m, size_t line, const Q& rho1, const Q& rho2);
 // A common point at a point on the line's contact (touching) — or, with line = npos, anywhere.
 Witness make_witness(const Model& m, const Q& rho1, const Q& rho2, size_t line);
+// A common point of conv(vertices i1 of P1(ρ1)) and conv(vertices i2 of P2(ρ2)); with interior,
+// one in both relative interiors, every listed vertex weighted > 0.
+Witness make_witness(const Model& m, const Q& rho1, const Q& rho2, const std::vector<int>& i1, const std::vector<int>& i2,
+                     bool interior);
 
 }  // namespace scalecert::internal

@@ -11,6 +11,9 @@ namespace scalecert::internal {
 // conv(A) and conv(B). None when they do not meet.
 struct CommonPoint { std::vector<Q> lambda, mu; };
 std::optional<CommonPoint> common_point(const std::vector<Vec3q>& A, const std::vector<Vec3q>& B);
+// The same with every weight strictly positive: a point of relint conv(A) ∩ relint conv(B) (it
+// maximises the smallest weight). None when the relative interiors do not meet.
+std::optional<CommonPoint> interior_common_point(const std::vector<Vec3q>& A, const std::vector<Vec3q>& B);
 
 // Maximises c·x over free x ∈ Q^k subject to A_i·x ≤ b_i, exactly: a basic optimal solution, or
 // none when the program is infeasible or unbounded.
