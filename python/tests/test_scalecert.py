@@ -207,3 +207,26 @@ def test_readme_example_runs(tmp_path):
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=SRC)
     assert out.returncode == 0, out.stderr
     assert "touching" in out.stdout.lower()
+
+
+def test_a_fifo_is_refused_not_waited_on(tmp_path):
+    # A named pipe with no writer as a scene or mesh file: InputError at once (the read used to
+    # wait for a writer forever). In a child process with a timeout, so a regression fails.
+    fifo = tmp_path / "p.json"
+    os.mkfifo(fifo)
+    os.mkfifo(tmp_path / "p.off")
+    code = (
+        "import scalecert, sys\n"
+        "for f in (lambda: scalecert.Scene.load(sys.argv[1] + '/p.json'),\n"
+        "          lambda: scalecert.Scene.from_meshes(sys.argv[1] + '/p.off', sys.argv[2], (1, 2), (1, 2))):\n"
+        "    try:\n"
+        "        f()\n"
+        "    except scalecert.InputError as e:\n"
+        "        print(e)\n"
+    )
+    mesh = SRC / "examples" / "tetra.obj"
+    out = subprocess.run([sys.executable, "-c", code, str(tmp_path), str(mesh)], capture_output=True, text=True, timeout=30)
+    assert out.returncode == 0, out.stderr
+    lines = out.stdout.splitlines()
+    assert lines == [f"{tmp_path}/p.json: is a named pipe (FIFO), not a scene file (only regular files are read)",
+                     f"{tmp_path}/p.off: is a named pipe (FIFO), not a mesh file (only regular files are read)"]
