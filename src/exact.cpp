@@ -166,6 +166,8 @@ Q parse_exact(const std::string& text) {
 }
 
 namespace {
+thread_local const InputObserver::Fn* t_observer = nullptr;
+
 // What a file is, when it is not a regular file: for the one-line refusal.
 std::string kind_of(mode_t m) {
     if (S_ISDIR(m)) return "is a directory";
@@ -193,6 +195,9 @@ std::string read_stdin(const std::string& what, size_t max_bytes) {
     return text;
 }
 }  // namespace
+
+InputObserver::InputObserver(Fn f) : f_(std::move(f)), prev_(t_observer) { t_observer = &f_; }
+InputObserver::~InputObserver() { t_observer = prev_; }
 
 int open_regular_file(const std::string& path, const std::string& what, bool no_follow, size_t* size) {
     // A name that is there and not a regular file is refused before it is opened at all (opening
@@ -248,12 +253,15 @@ std::string read_regular_file(const std::string& path, const std::string& what, 
     ::close(fd);
     if (used > max_bytes) throw too_large();
     text.resize(used);
+    if (t_observer) (*t_observer)(path, text);
     return text;
 }
 
 std::string read_input(const std::string& path, const std::string& what, size_t max_bytes) {
     if (path != "-") return read_regular_file(path, what, max_bytes, false);
-    return read_stdin(what, max_bytes);
+    std::string text = read_stdin(what, max_bytes);
+    if (t_observer) (*t_observer)(path, text);
+    return text;
 }
 
 Q exact_from_double(double d) {

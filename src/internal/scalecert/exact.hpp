@@ -5,6 +5,7 @@
 
 #include <gmpxx.h>
 #include <array>
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -59,6 +60,20 @@ std::string read_regular_file(const std::string& path, const std::string& what, 
 // read_regular_file, or standard input for "-" (where a command documents it).
 std::string read_input(const std::string& path, const std::string& what, size_t max_bytes);
 
+// While an InputObserver lives, every file read_input and read_regular_file read on this thread
+// is passed to it, with the path as given: campaigns hash the bytes an audit actually read.
+class InputObserver {
+public:
+    using Fn = std::function<void(const std::string& path, const std::string& bytes)>;
+    explicit InputObserver(Fn f);
+    ~InputObserver();
+    InputObserver(const InputObserver&) = delete;
+    InputObserver& operator=(const InputObserver&) = delete;
+
+private:
+    Fn f_;
+    const Fn* prev_;
+};
 
 // Reads a number exactly as written: "-12", "0.1" (= 1/10), "1e-3", "2.5E+7", "3/7".
 // Throws InputError (without location; callers add it) when the text is not such a number.
