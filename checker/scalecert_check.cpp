@@ -8,12 +8,17 @@
 // (missing, too large, not strict JSON, too deeply nested, out of memory).
 #include <gmpxx.h>
 #include <nlohmann/json.hpp>
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cerrno>
+#include <cstring>
 #include <iostream>
 #include <new>
 #include <set>
@@ -736,19 +741,50 @@ int main(int argc, char** argv) {
     }
     std::string name = scalecert_check::StrictTree::printable(argv[1]), text;
     try {
-        std::FILE* f = std::fopen(argv[1], "rb");
-        if (!f) { std::cerr << "scalecert-check: error: " << name << ": cannot open\n"; return 2; }
+        // Opened without blocking (a FIFO with no writer, a terminal) and refused unless a
+        // regular file: a FIFO, socket, device or directory is never read. (The engine has the
+        // same rule in its own code; the checker shares none.)
+        auto refuse = [&](const std::string& why) {
+            std::cerr << "scalecert-check: error: " << name << ": " << why << "\n";
+            return 2;
+        };
+        auto kind = [](mode_t m) -> std::string {
+            if (S_ISDIR(m)) return "is a directory";
+            if (S_ISFIFO(m)) return "is a named pipe (FIFO)";
+            if (S_ISSOCK(m)) return "is a socket";
+            if (S_ISCHR(m)) return "is a character device";
+            if (S_ISBLK(m)) return "is a block device";
+            return "is not a regular file";
+        };
+        const std::string not_regular = ", not a certificate file (only regular files are read)";
+        struct stat st {};
+        if (::stat(argv[1], &st) == 0 && !S_ISREG(st.st_mode)) return refuse(kind(st.st_mode) + not_regular);
+        const int fd = ::open(argv[1], O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+        if (fd < 0) return refuse(std::string("cannot open (") + std::strerror(errno) + ")");
+        if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+            ::close(fd);
+            return refuse(kind(st.st_mode) + not_regular);
+        }
+        if (static_cast<unsigned long long>(st.st_size) > scalecert_check::kMaxFileBytes) {
+            ::close(fd);
+            return refuse("larger than 1 GiB");
+        }
+        ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) & ~O_NONBLOCK);
         char buf[1 << 16];
-        size_t got;
-        bool too_big = false;
-        while ((got = std::fread(buf, 1, sizeof buf, f)) > 0) {
-            text.append(buf, got);
+        bool too_big = false, failed = false;
+        for (;;) {
+            const ssize_t got = ::read(fd, buf, sizeof buf);
+            if (got < 0 && errno == EINTR) continue;
+            if (got <= 0) {
+                failed = got < 0;
+                break;
+            }
+            text.append(buf, static_cast<size_t>(got));
             if (text.size() > scalecert_check::kMaxFileBytes) { too_big = true; break; }
         }
-        const bool failed = std::ferror(f) != 0;
-        std::fclose(f);
-        if (failed) { std::cerr << "scalecert-check: error: " << name << ": cannot read (is it a directory?)\n"; return 2; }
-        if (too_big) { std::cerr << "scalecert-check: error: " << name << ": larger than 1 GiB\n"; return 2; }
+        ::close(fd);
+        if (failed) return refuse("cannot read");
+        if (too_big) return refuse("larger than 1 GiB");
         std::string message;
         int status = scalecert_check::check_text(text, message);
         (status == 0 ? std::cout : std::cerr) << (status == 0 ? "" : "scalecert-check: ") << (status == 2 ? "error: " + name + ": " + message.substr(7) : message) << "\n";

@@ -16,9 +16,53 @@ using scalecert::Rational;
 
 namespace {
 
+// Integers cross between GMP and Python as bytes (mpz_export / int.from_bytes, int.to_bytes /
+// mpz_import), never as decimal text: CPython 3.11 refuses int(str) and str(int) past 4,300 digits,
+// and exact answers have more.
+py::object pyint(const mpz_class& z) {
+    if (z.fits_slong_p()) return py::int_(z.get_si());
+    static const py::object* from_bytes = new py::object(py::reinterpret_borrow<py::object>(reinterpret_cast<PyObject*>(&PyLong_Type)).attr("from_bytes"));
+    std::string buf((mpz_sizeinbase(z.get_mpz_t(), 2) + 7) / 8, '\0');
+    size_t count = 0;
+    mpz_export(buf.data(), &count, -1, 1, 0, 0, z.get_mpz_t());  // |z|, least significant byte first
+    buf.resize(count);
+    py::object v = (*from_bytes)(py::bytes(buf), "little");
+    if (sgn(z) < 0) v = py::reinterpret_steal<py::object>(PyNumber_Negative(v.ptr()));
+    if (!v) throw py::error_already_set();
+    return v;
+}
+
+// Bits of an integer read from Python: those of 10^100000, the largest number a text may write
+// (README "Limits": 100,000 characters, exponent within ±100,000).
+constexpr size_t kMaxIntBits = 332193;
+
+// A Python int (or anything with __index__) as a GMP integer, through its bytes.
+mpz_class mpz_of(const py::handle& h) {
+    py::object i = py::reinterpret_steal<py::object>(PyNumber_Index(h.ptr()));
+    if (!i) throw py::error_already_set();
+    int overflow = 0;
+    const long small = PyLong_AsLongAndOverflow(i.ptr(), &overflow);
+    if (!overflow) {
+        if (small == -1 && PyErr_Occurred()) throw py::error_already_set();
+        return mpz_class(small);
+    }
+    const size_t bits = i.attr("bit_length")().cast<size_t>();
+    if (bits > kMaxIntBits)
+        throw scalecert::InputError("an integer of " + std::to_string(bits) + " bits, more than " + std::to_string(kMaxIntBits) +
+                                    " (the limit: 10^100000 has that many)");
+    const bool negative = overflow < 0;
+    py::object a = py::reinterpret_steal<py::object>(PyNumber_Absolute(i.ptr()));
+    if (!a) throw py::error_already_set();
+    const std::string b = a.attr("to_bytes")((bits + 7) / 8, "little").cast<std::string>();
+    mpz_class z;
+    mpz_import(z.get_mpz_t(), b.size(), -1, 1, 0, 0, b.data());
+    if (negative) z = -z;
+    return z;
+}
+
 py::object fraction(const Rational& q) {
-    static py::object F = py::module_::import("fractions").attr("Fraction");
-    return F(py::int_(py::str(q.get_num().get_str())), py::int_(py::str(q.get_den().get_str())));
+    static const py::object* F = new py::object(py::module_::import("fractions").attr("Fraction"));
+    return (*F)(pyint(q.get_num()), pyint(q.get_den()));
 }
 
 py::tuple fractions(const scalecert::Point& p) { return py::make_tuple(fraction(p[0]), fraction(p[1]), fraction(p[2])); }
@@ -35,8 +79,9 @@ Rational rational(const py::handle& h, const char* what) {
             return scalecert::exact(d);
         }
         if (py::hasattr(h, "numerator") && py::hasattr(h, "denominator")) {  // int, Fraction, numpy integers
-            Rational q(mpz_class(py::str(py::int_(h.attr("numerator"))).cast<std::string>()),
-                       mpz_class(py::str(py::int_(h.attr("denominator"))).cast<std::string>()));
+            const mpz_class n = mpz_of(py::int_(h.attr("numerator"))), d = mpz_of(py::int_(h.attr("denominator")));
+            if (sgn(d) == 0) throw scalecert::InputError("zero denominator");
+            Rational q(n, d);
             q.canonicalize();
             return q;
         }

@@ -155,14 +155,18 @@ bool scale_to(IntPoints& r, const std::vector<std::int8_t>& ex, int lowest) {
 }
 
 // Calls f on the file's bytes, mapped; nothing for anything but a regular, non-empty file of at
-// most kMaxSceneBytes (the full reader then reads it, or words the error).
+// most kMaxSceneBytes (the full reader then reads it, or words the error). Opened as every input
+// is (open_regular_file): never blocking, a FIFO or device never read.
 template <class F>
 void map_file(const std::string& path, F&& f) {
-    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-    if (fd < 0) return;
-    struct stat st {};
-    if (::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && st.st_size > 0 && static_cast<unsigned long long>(st.st_size) <= kMaxSceneBytes) {
-        const auto size = static_cast<size_t>(st.st_size);
+    int fd = -1;
+    size_t size = 0;
+    try {
+        fd = open_regular_file(path, "file", false, &size);
+    } catch (const InputError&) {
+        return;
+    }
+    if (size > 0 && size <= kMaxSceneBytes) {
         void* p = ::mmap(nullptr, size, PROT_READ, MAP_PRIVATE | MAP_POPULATE, fd, 0);
         if (p != MAP_FAILED) {
             f(static_cast<const char*>(p), size);

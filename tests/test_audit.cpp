@@ -494,3 +494,36 @@ BOOST_AUTO_TEST_CASE(rows_with_nan_survive_the_shard_round_trip) {
     BOOST_TEST(audit_csv(rows, false) == csv);
     fs::remove_all(dir);
 }
+
+BOOST_AUTO_TEST_CASE(campaigns_are_keyed_by_the_contents_of_their_inputs) {
+    // The run's identity and each scene shard record [path, SHA-256] of every file read: the scene
+    // and the mesh it names. A shard computed from other contents than the run's is found stale.
+    const fs::path dir = test::scratch_dir("content-keys");
+    const std::string mesh = (dir / "t.obj").string(), sc = (dir / "s.json").string();
+    const std::string obj = "v 2 0 2\nv -2 2 5\nv -1 -2 6\nv 2 0 7\n";
+    std::ofstream(mesh, std::ios::binary) << obj;
+    const std::string scene_text = "{\"P1\": {\"mesh\": \"t.obj\"}, \"P2\": {\"vertices\": [[-1,-1,-1],[1,-1,-1],[-1,1,-1],[1,1,-1],"
+                                   "[-1,-1,1],[1,-1,1],[-1,1,1],[1,1,1]]}, \"I1\": [0.5, 2], \"I2\": [1, 4]}";
+    std::ofstream(sc, std::ios::binary) << scene_text;
+    CampaignArgs a;
+    a.scenes = {sc};
+    a.methods = {"libccd-gjk"};
+    const Json inputs = campaign_inputs(a);
+    BOOST_TEST(inputs.dump() == Json::array({Json::array({sc, sha256_hex(scene_text)}), Json::array({mesh, sha256_hex(obj)})}).dump());
+    BOOST_TEST(campaign_identity(a, inputs).find(sha256_hex(obj)) != std::string::npos);
+    const std::string shard = run_shard(a, plan(a)[0]);
+    BOOST_TEST(Json::parse(shard).at("inputs") == inputs);
+    BOOST_TEST(stale_input(inputs, shard).empty());
+    // The mesh changes: the inputs now differ, and the old shard is stale, naming the mesh.
+    std::ofstream(mesh, std::ios::binary | std::ios::app) << "v 0 0 9\n";
+    const Json changed = campaign_inputs(a);
+    BOOST_TEST(campaign_identity(a, changed) != campaign_identity(a, inputs));
+    BOOST_TEST(stale_input(changed, shard) == mesh);
+    // Golden and family runs read no files; standard input cannot be checked again, so is refused.
+    CampaignArgs f;
+    f.family = "random";
+    BOOST_TEST(campaign_inputs(f).empty());
+    a.scenes = {"-"};
+    BOOST_CHECK_THROW(campaign_inputs(a), InputError);
+    fs::remove_all(dir);
+}

@@ -6,6 +6,9 @@
 #include "files.hpp"
 
 #include <nlohmann/json.hpp>
+#include <sys/socket.h>
+#include <sys/stat.h>
+#include <sys/un.h>
 #include <sys/wait.h>
 
 #include <cmath>
@@ -13,6 +16,7 @@
 #include <filesystem>
 #include <fstream>
 #include <algorithm>
+#include <chrono>
 #include <cstdint>
 #include <cstring>
 #include <limits>
@@ -574,4 +578,88 @@ BOOST_AUTO_TEST_CASE(curve_engines_agree_and_large_meshes_scan) {
         BOOST_TEST(s.out.empty());
     }
     expect_error("--engine unknown", "curve --engine fast --p1 " + a + " --p2 " + b + " --i1 1,2 --i2 1,2", "--engine");
+}
+
+// ---- no input blocks: a FIFO, socket or device given as any file input is refused at once ----
+namespace {
+// The command under `timeout`, so that an input that blocks fails the test instead of hanging it;
+// the elapsed wall time in *seconds.
+Run run_timed(const std::string& cmd, double* seconds) {
+    fs::path o = workdir() / "stdout", e = workdir() / "stderr";
+    const auto t0 = std::chrono::steady_clock::now();
+    int st = std::system(("timeout -k 5 30 " + cmd + " >" + o.string() + " 2>" + e.string() + " </dev/null").c_str());
+    *seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return {WIFEXITED(st) ? WEXITSTATUS(st) : -1, slurp(o), slurp(e)};
+}
+
+// One line on stderr naming the file and what it is, exit 2 within seconds, no output file.
+void expect_refused(const std::string& label, const std::string& cmd, const std::string& prefix, const fs::path& file,
+                    const std::string& kind, const fs::path& out) {
+    fs::remove(out);
+    double s = 0;
+    Run r = run_timed(cmd, &s);
+    BOOST_TEST_CONTEXT(label) {
+        BOOST_TEST(r.status == 2, "exit " << r.status << " (124: timed out, blocked on the input): " << r.err);
+        BOOST_TEST(s < 10.0, s << " s");
+        BOOST_TEST(r.out.empty());
+        BOOST_TEST(r.err.rfind(prefix, 0) == 0u, r.err);
+        BOOST_TEST(std::count(r.err.begin(), r.err.end(), '\n') == 1, r.err);
+        BOOST_TEST(r.err.find(file.string() + ": " + kind) != std::string::npos, "'" << file.string() << ": " << kind << "' in: " << r.err);
+        BOOST_TEST(!fs::exists(out));
+        for (const auto& e : fs::directory_iterator(workdir()))
+            BOOST_TEST(e.path().filename().string().find(".tmp.") == std::string::npos);
+        BOOST_TEST_MESSAGE(label << ": refused in " << s << " s");
+    }
+}
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(no_file_input_blocks_fifos_sockets_and_devices_are_refused) {
+    // Named pipes with no writer: opening one for reading without O_NONBLOCK waits for a writer
+    // forever. Every file input of every command is tried.
+    const fs::path d = workdir() / "pipes";
+    fs::remove_all(d);
+    fs::create_directories(d);
+    const fs::path fj = d / "p.json", foff = d / "p.off", fobj = d / "p.obj", ftxt = d / "p.txt";
+    for (const fs::path& p : {fj, foff, fobj, ftxt}) BOOST_REQUIRE(::mkfifo(p.c_str(), 0600) == 0);
+    const fs::path g = write("fifo-scene.json", scene(poly(kCube1), poly(kCube2)));
+    const fs::path cube = write("fifo-cube.off", "OFF\n8 0 0\n0 0 3\n2 0 3\n0 2 3\n2 2 3\n0 0 5\n2 0 5\n0 2 5\n2 2 5\n");
+    const fs::path via_mesh = write("fifo-mesh.json", scene("{\"mesh\": \"pipes/p.obj\"}", poly(kCube2)));
+    const fs::path via_off = write("fifo-off.json", scene(poly(kCube1), "{\"off\": \"pipes/p.off\"}"));
+    const fs::path out = workdir() / "fifo-out.json", csv = workdir() / "fifo-out.csv";
+    const std::string B = std::string(SCALECERT_BIN) + " ", O = " --out " + out.string();
+    const std::string fifo = "is a named pipe (FIFO)", E = "scalecert: error: ";
+    for (const char* c : {"curve ", "partition ", "grid --n 4 ", "classify "})
+        expect_refused(std::string(c) + "SCENE", B + c + fj.string() + O, E, fj, fifo, out);
+    expect_refused("query SCENE", B + "query " + fj.string() + " 1 1" + O, E, fj, fifo, out);
+    expect_refused("scene naming a mesh", B + "curve " + via_mesh.string() + O, E, workdir() / "pipes/p.obj", fifo, out);
+    expect_refused("scene naming an OFF file", B + "partition " + via_off.string() + O, E, workdir() / "pipes/p.off", fifo, out);
+    expect_refused("--p1 OFF (the mapped reader)", B + "curve --p1 " + foff.string() + " --p2 " + cube.string() + " --i1 1,2 --i2 1,2" + O, E, foff, fifo, out);
+    expect_refused("--p2 OFF", B + "partition --p1 " + cube.string() + " --p2 " + foff.string() + " --i1 1,2 --i2 1,2" + O, E, foff, fifo, out);
+    expect_refused("--p1 OBJ", B + "curve --p1 " + fobj.string() + " --p2 " + cube.string() + " --i1 1,2 --i2 1,2" + O, E, fobj, fifo, out);
+    expect_refused("classify PAIRS", B + "classify " + g.string() + " " + ftxt.string() + O, E, ftxt, fifo, out);
+    expect_refused("certify-fp CLAIMS", B + "certify-fp " + g.string() + " " + ftxt.string() + O, E, ftxt, fifo, out);
+    expect_refused("certify-fp SCENE", B + "certify-fp " + fj.string() + " " + ftxt.string() + O, E, fj, fifo, out);
+    expect_refused("audit SCENES", B + "audit " + g.string() + " " + fj.string() + " --methods libccd-gjk" + O + " --csv " + csv.string(), E, fj, fifo, out);
+    BOOST_TEST(!fs::exists(csv));
+    expect_refused("scalecert-check", std::string(SCALECERT_CHECK_BIN) + " " + fj.string(), "scalecert-check: error: ", fj, fifo, out);
+    // A socket and a character device: refused the same way (/dev/zero was read to the size limit).
+    const fs::path sock = d / "s.json";
+    const int fd = ::socket(AF_UNIX, SOCK_STREAM, 0);
+    sockaddr_un addr{};
+    addr.sun_family = AF_UNIX;
+    std::strncpy(addr.sun_path, sock.c_str(), sizeof addr.sun_path - 1);
+    BOOST_REQUIRE(sock.string().size() < sizeof addr.sun_path);
+    BOOST_REQUIRE(::bind(fd, reinterpret_cast<sockaddr*>(&addr), sizeof addr) == 0);
+    expect_refused("socket scene", B + "curve " + sock.string() + O, E, sock, "is a socket", out);
+    expect_refused("socket certificate", std::string(SCALECERT_CHECK_BIN) + " " + sock.string(), "scalecert-check: error: ", sock, "is a socket", out);
+    ::close(fd);
+    expect_refused("device scene", B + "curve /dev/zero" + O, E, "/dev/zero", "is a character device", out);
+    expect_refused("device pairs", B + "classify " + g.string() + " /dev/zero" + O, E, "/dev/zero", "is a character device", out);
+    expect_refused("device certificate", std::string(SCALECERT_CHECK_BIN) + " /dev/zero", "scalecert-check: error: ", "/dev/zero", "is a character device", out);
+    // Standard input stays where it is documented ("-": classify's pairs, a scene).
+    fs::path pairs = write("fifo-pairs.txt", "1 2\n2 2\n");
+    Run p = run("classify " + g.string() + " - < " + pairs.string());
+    BOOST_TEST(p.status == 0, p.err);
+    BOOST_TEST(p.out == "touching\noverlapping\n");
+    fs::remove_all(d);
 }

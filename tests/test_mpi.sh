@@ -68,3 +68,74 @@ set -e
 [ "$st4" -eq 2 ] && [ "$(grep -c "unknown family 'bogus'" log-bad2)" -eq 1 ] || fail "unknown family: $st4 $(cat log-bad2)"
 [ ! -e rbad ] && [ ! -e gbad ] && [ ! -e x.json ] || fail "bad arguments left files behind"
 echo "ok: bad arguments exit 2 with one line, before any work"
+
+# Campaigns are keyed by content: the run's identity and each scene shard record the SHA-256 of
+# every scene file and every mesh file it names. A resume after either changed is refused (exit 2,
+# one line naming the file, no output; mpirun adds its own lines): no shard computed from the old
+# contents is merged.
+mkdir -p content && cp "$S/stacked_cubes.json" content/a.json && cp "$SRC/examples/tetra.obj" content/t.obj
+printf '{"P1": {"mesh": "t.obj"}, "P2": {"vertices": [[-1,-1,-1],[1,-1,-1],[-1,1,-1],[1,1,-1],[-1,-1,1],[1,-1,1],[-1,1,1],[1,1,1]]}, "I1": [0.5, 2], "I2": [1, 4]}\n' > content/b.json
+CONTENT=(content/a.json content/b.json --methods libccd-gjk,grid --grid 8 --no-timing)
+"$CLI" audit "${CONTENT[@]}" --out c-one.json 2>/dev/null
+set +e
+run_mpi 2 audit "${CONTENT[@]}" --out c.json --run rc --stop-after 1 2>log-c1; st=$?
+set -e
+[ "$st" -eq 3 ] || fail "content run: a stopped run should exit 3, got $st"
+grep -q '"inputs"' rc/manifest.jsonl || fail "the manifest's identity records no input hashes"
+grep -q "$(sha256sum content/a.json | cut -c1-64)" rc/manifest.jsonl || fail "the identity lacks a.json's SHA-256"
+grep -q "$(sha256sum content/t.obj | cut -c1-64)" rc/manifest.jsonl || fail "the identity lacks the mesh's SHA-256"
+grep -q "$(sha256sum content/a.json | cut -c1-64)" rc/shards/00000000.json || fail "shard 0 records no SHA-256 of a.json"
+cp -r rc rc-mesh
+sed -i 's/\[0,0,3\]/[0,0,4]/' content/a.json   # P2 moved: other answers
+set +e
+run_mpi 2 audit "${CONTENT[@]}" --out c.json --run rc --resume 2>log-c2; st=$?
+set -e
+[ "$st" -eq 2 ] && [ "$(grep -c 'scalecert-mpi' log-c2)" -eq 1 ] || fail "a changed scene file: $st $(cat log-c2)"
+grep -q "content/a.json: changed since the run" log-c2 || fail "the refusal should name a.json: $(cat log-c2)"
+[ ! -e c.json ] || fail "a refused resume wrote output"
+cp "$S/stacked_cubes.json" content/a.json && echo "v 0 0 9" >> content/t.obj   # the mesh a scene names
+set +e
+run_mpi 2 audit "${CONTENT[@]}" --out c.json --run rc-mesh --resume 2>log-c3; st=$?
+set -e
+[ "$st" -eq 2 ] && grep -q "content/t.obj: changed since the run" log-c3 || fail "a changed mesh: $st $(cat log-c3)"
+[ ! -e c.json ] || fail "a refused resume wrote output"
+cp "$SRC/examples/tetra.obj" content/t.obj   # contents restored: the resume goes on, and equals one process
+run_mpi 2 audit "${CONTENT[@]}" --out c.json --run rc --resume 2>log-c4
+grep -q "(1 done before, 0 redone as damaged, 1 run now)" log-c4 || fail "resume on restored contents: $(tail -1 log-c4)"
+cmp c-one.json c.json || fail "resumed content run differs"
+echo "ok: a resume after a scene file or mesh changed is refused; never merged stale"
+
+# Nothing in a run folder may be a symbolic link: a dangling manifest.jsonl planted there made a
+# new run create the link's target, outside the folder.
+mkdir -p rsym outside && ln -s "$PWD/outside/planted" rsym/manifest.jsonl
+mkdir -p rsym2 && ln -s "$PWD/outside" rsym2/shards
+set +e
+run_mpi 2 audit "${CONTENT[@]}" --out s.json --run rsym 2>log-s1; st1=$?
+run_mpi 2 audit "${CONTENT[@]}" --out s.json --run rsym --resume 2>log-s2; st2=$?
+run_mpi 2 audit "${CONTENT[@]}" --out s.json --run rsym2 2>log-s3; st3=$?
+set -e
+for i in 1 2 3; do
+  eval st=\$st$i
+  [ "$st" -eq 2 ] && [ "$(grep -c 'scalecert-mpi' log-s$i)" -eq 1 ] && grep -q "symbolic link" log-s$i || fail "planted link $i: $st $(cat log-s$i)"
+done
+[ ! -e outside/planted ] && [ -z "$(ls outside)" ] && [ ! -e s.json ] || fail "a planted link was followed: $(ls outside)"
+[ -L rsym/manifest.jsonl ] && [ ! -e rsym2/manifest.jsonl ] || fail "the run folder was changed"
+# A shard file replaced by a link: the resume refuses it rather than read through it.
+cp -r rc rc-link && rm rc-link/shards/00000000.json && echo secret > outside/secret && ln -s "$PWD/outside/secret" rc-link/shards/00000000.json
+set +e
+run_mpi 2 audit "${CONTENT[@]}" --out s.json --run rc-link --resume 2>log-s4; st=$?
+set -e
+[ "$st" -eq 2 ] && grep -q "00000000.json: is a symbolic link" log-s4 || fail "a linked shard file: $st $(cat log-s4)"
+[ "$(cat outside/secret)" = secret ] && [ ! -e s.json ] || fail "a linked shard file was written through"
+echo "ok: symbolic links in a run folder are refused, nothing made at their targets"
+
+# An input that is a FIFO with no writer: refused at once, not waited on.
+mkfifo content/fifo.json
+set +e
+t0=$(date +%s.%N)
+timeout -k 5 30 mpirun -np 2 "$MPI" audit content/a.json content/fifo.json --methods libccd-gjk --out f.json --run rfifo 2>log-f; st=$?
+t1=$(date +%s.%N)
+set -e
+[ "$st" -eq 2 ] && [ "$(grep -c 'scalecert-mpi' log-f)" -eq 1 ] && grep -q "content/fifo.json: is a named pipe (FIFO)" log-f || fail "a FIFO scene: $st $(cat log-f)"
+[ ! -e f.json ] && [ ! -e rfifo ] || fail "a FIFO scene left files behind"
+echo "ok: a FIFO scene is refused in $(echo "$t1 - $t0" | bc) s"

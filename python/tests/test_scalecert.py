@@ -207,3 +207,83 @@ def test_readme_example_runs(tmp_path):
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=SRC)
     assert out.returncode == 0, out.stderr
     assert "touching" in out.stdout.lower()
+
+
+# ---- numbers past CPython's 4,300-digit int <-> str limit (3.11: a bare ValueError) -----------
+def no_str_limit(f):
+    """f() with CPython's int <-> str digit limit lifted (the test's own text only)."""
+    old = getattr(sys, "get_int_max_str_digits", lambda: None)()
+    if old is not None:
+        sys.set_int_max_str_digits(0)
+    try:
+        return f()
+    finally:
+        if old is not None:
+            sys.set_int_max_str_digits(old)
+
+
+def test_exact_results_past_4300_digits_come_back_as_fractions():
+    # P1 = [-a, a]^3 about the origin, P2 = [-1, 1]^2 x [c - 1, c + 1] about (0, 0, c). P1(r1)
+    # reaches z = a r1 and P2(r2) starts at z = c - r2: they touch on a r1 + r2 = c, face on face
+    # (slope -a, intercept c), and the growth distance is rho* = c / (a + 1). With a = 1 + 5^-6000
+    # and c = 3 + 3^-9100 the common denominators are 13,932 and 14,423 bits (README "Limits":
+    # 16,384), and rho* has about 8,540 digits above and below.
+    a, c = 1 + F(1, 5**6000), 3 + F(1, 3**9100)
+    rho = c / (a + 1)  # derived here, in Python's own Fractions
+    assert min(rho.numerator.bit_length(), rho.denominator.bit_length()) > 4300 * 3.33
+    P1 = [[x, y, z] for x in (-a, a) for y in (-a, a) for z in (-a, a)]
+    P2 = [[x, y, z] for x in (-1, 1) for y in (-1, 1) for z in (c - 1, c + 1)]
+    text = lambda q: no_str_limit(lambda: f"{q.numerator}/{q.denominator}")
+    # Fractions in (their ints read through bytes), and the same numbers as "p/q" strings.
+    for p1, p2 in ((P1, P2), ([[text(v) for v in p] for p in P1], [[text(v) for v in p] for p in P2])):
+        s = scalecert.Scene(p1, p2, (F(1, 2), 3), ("1/2", 3))
+        cv = s.curve()
+        g = cv["growth_distance"]
+        assert isinstance(g, F) and g == rho
+        assert len(cv["pieces"]) == 1
+        assert (cv["pieces"][0]["slope"], cv["pieces"][0]["intercept"]) == (-a, c)
+        assert s.seeds()[1] == (0, 0, c)
+        q = s.query(rho, rho)
+        assert q["verdict"] == scalecert.Verdict.Touching
+        assert (q["common_point"]["rho1"], q["common_point"]["rho2"]) == (rho, rho)
+        r = s.check_plane(1, 1, [0, 0, 1])  # P1(1) up to z = a, P2(1) from z = c - 1
+        assert (r["c1"], r["c2"], r["separates"]) == (a, c - 1, True)
+
+
+def test_too_large_numbers_are_input_errors():
+    # Past 10^100000 (README "Limits": one number's text 100,000 characters, exponent within
+    # +-100,000), an int or Fraction is refused as scalecert.InputError, never a bare ValueError.
+    s = stacked()
+    for bad in (2**400000, -(2**400000), F(1, 2**400000), F(2**400000 + 1, 3)):
+        with pytest.raises(scalecert.InputError, match="332193"):
+            s.query(bad, 1)
+    with pytest.raises(scalecert.InputError, match="longer than 100000"):
+        s.query("9" * 200000, 1)
+    # Within the limit: read exactly, however many digits (the touching line is r1 + r2 = 3).
+    assert s.query(2**300000, 1)["verdict"] == scalecert.Verdict.Overlapping
+    t = F(1, 3**20000)
+    assert s.query(3 - t, t)["verdict"] == scalecert.Verdict.Touching
+    assert s.query(3 - t, t / 2)["verdict"] == scalecert.Verdict.Separated
+
+
+def test_a_fifo_is_refused_not_waited_on(tmp_path):
+    # A named pipe with no writer as a scene or mesh file: InputError at once (the read used to
+    # wait for a writer forever). In a child process with a timeout, so a regression fails.
+    fifo = tmp_path / "p.json"
+    os.mkfifo(fifo)
+    os.mkfifo(tmp_path / "p.off")
+    code = (
+        "import scalecert, sys\n"
+        "for f in (lambda: scalecert.Scene.load(sys.argv[1] + '/p.json'),\n"
+        "          lambda: scalecert.Scene.from_meshes(sys.argv[1] + '/p.off', sys.argv[2], (1, 2), (1, 2))):\n"
+        "    try:\n"
+        "        f()\n"
+        "    except scalecert.InputError as e:\n"
+        "        print(e)\n"
+    )
+    mesh = SRC / "examples" / "tetra.obj"
+    out = subprocess.run([sys.executable, "-c", code, str(tmp_path), str(mesh)], capture_output=True, text=True, timeout=30)
+    assert out.returncode == 0, out.stderr
+    lines = out.stdout.splitlines()
+    assert lines == [f"{tmp_path}/p.json: is a named pipe (FIFO), not a scene file (only regular files are read)",
+                     f"{tmp_path}/p.off: is a named pipe (FIFO), not a mesh file (only regular files are read)"]

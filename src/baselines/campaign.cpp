@@ -168,11 +168,23 @@ AuditRow row_of(const Json& j) {
     return r;
 }
 
+// A golden output file's bytes, or "" when it is missing or not a regular file (its shard is then
+// redone, and writing it refuses anything but a regular file). Never blocks on a planted FIFO.
 std::string slurp_or_empty(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
+    try {
+        return read_regular_file(path, "golden output file", kMaxRunFileBytes);
+    } catch (const InputError&) {
+        return "";
+    }
+}
+
+// Runs f with every file it reads recorded as [path, SHA-256 of the bytes read], in order.
+template <class F>
+Json reading(F&& f) {
+    Json files = Json::array();
+    InputObserver watch([&](const std::string& path, const std::string& bytes) { files.push_back(Json::array({path, sha256_hex(bytes)})); });
+    f();
+    return files;
 }
 
 }  // namespace
@@ -194,7 +206,10 @@ std::string run_shard(const CampaignArgs& a, const Shard& s) {
     std::vector<AuditRow> rows;
     if (s.scene_file >= 0) {
         const std::string& p = a.scenes[static_cast<size_t>(s.scene_file)];
-        const Scene sc = load_scene(p, a.opt);  // its errors name the file already
+        Scene sc;
+        // The scene file and the meshes it names, as read: a resumed run checks them against the
+        // run's inputs, so that no shard computed from older contents is merged.
+        j["inputs"] = reading([&] { sc = load_scene(p, a.opt); });  // its errors name the file already
         try {
             rows = audit_scene(p, sc, Q(0), a.methods, a.grid, a.by_distance);
         } catch (const InputError& e) {
@@ -274,7 +289,38 @@ void write_golden(const std::string& family, int count, std::uint64_t seed, cons
     run_campaign(a);
 }
 
-std::string campaign_identity(const CampaignArgs& a) {
+Json campaign_inputs(const CampaignArgs& a) {
+    Json files = Json::array();
+    if (a.golden) return files;
+    for (const std::string& p : a.scenes) {
+        if (p == "-") throw InputError("standard input cannot be a scene of a resumable run (its contents could not be checked on --resume)");
+        for (const Json& f : reading([&] { load_scene(p, a.opt); })) files.push_back(f);
+    }
+    return files;
+}
+
+std::string stale_input(const Json& inputs, const std::string& shard_text) {
+    Json j;
+    try {
+        j = Json::parse(shard_text);
+    } catch (const std::exception&) {
+        return "";  // not JSON: the caller's hash check redoes it
+    }
+    if (!j.is_object() || !j.contains("inputs")) return "";
+    for (const Json& f : j.at("inputs")) {
+        const std::string path = f.at(0).get<std::string>(), hash = f.at(1).get<std::string>();
+        bool known = false;
+        for (const Json& g : inputs)
+            if (g.at(0).get<std::string>() == path) {
+                if (g.at(1).get<std::string>() != hash) return path;
+                known = true;
+            }
+        if (!known) return path;
+    }
+    return "";
+}
+
+std::string campaign_identity(const CampaignArgs& a, const Json& inputs) {
     Json j;
     j["command"] = a.golden ? "golden" : "audit";
     j["family"] = a.family;
@@ -293,6 +339,7 @@ std::string campaign_identity(const CampaignArgs& a) {
         j["by_distance"] = a.by_distance;
     }
     j["shard_size"] = a.shard_size;
+    j["inputs"] = inputs;  // [path, SHA-256] of every scene file and mesh file read
     return j.dump();
 }
 

@@ -4,19 +4,26 @@
 // is byte-identical to scalecert golden / audit with the same arguments, whatever the number of
 // ranks. With one rank, rank 0 runs every shard itself.
 //
-// Run folder: manifest.jsonl (line 1: the command's identity; then one line per finished shard,
-// {"shard": i, "sha256": h}, appended and synced) and shards/NNNNNNNN.json (each written
-// atomically). --resume redoes only shards that are missing, whose file's hash differs from the
-// manifest's, or (golden) whose output files no longer match their hashes.
+// Run folder: manifest.jsonl (line 1: the command's identity, with the SHA-256 of every scene file
+// and mesh file the audit reads; then one line per finished shard, {"shard": i, "sha256": h},
+// appended and synced) and shards/NNNNNNNN.json (each written atomically; an audit shard of a
+// scene file records the SHA-256 of the files it read). --resume redoes only shards that are
+// missing, whose file's hash differs from the manifest's, or (golden) whose output files no longer
+// match their hashes; it refuses (exit 2) when an input's contents changed since the run began,
+// so no shard computed from old contents is merged. Nothing in the run folder may be a symbolic
+// link: every file there is opened with O_NOFOLLOW (the manifest created with O_EXCL).
 #include "../cli/campaign_options.hpp"
 
 #include <mpi.h>
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <chrono>
 #include <cstdio>
+#include <cerrno>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -36,31 +43,90 @@ std::string shard_path(const std::string& run, int i) {
     return run + "/shards/" + b;
 }
 
+// Every file in the run folder is opened with O_NOFOLLOW and must be a regular file: a symbolic
+// link (even a dangling one) planted there cannot make the run read or write outside the folder.
+bool run_file_exists(const std::string& path) {
+    struct stat st {};
+    if (::lstat(path.c_str(), &st) != 0) return false;
+    if (!S_ISREG(st.st_mode))
+        throw InputError(path + ": " + (S_ISLNK(st.st_mode) ? "is a symbolic link" : "is not a regular file") + " (refused in a run folder)");
+    return true;
+}
+
+// A shard file's bytes; "" when it is missing (the shard is then redone).
 std::string slurp(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
+    if (!run_file_exists(path)) return "";
+    return read_regular_file(path, "shard file", kMaxRunFileBytes, true);
 }
 
 // Appends one line to the manifest and syncs it: a crash leaves at most a torn last line, which
-// the reader ignores.
-void append_line(const std::string& path, const std::string& line) {
-    const int fd = ::open(path.c_str(), O_WRONLY | O_APPEND | O_CREAT, 0644);
-    if (fd < 0) throw InputError(path + ": cannot write the manifest");
+// the reader ignores. `create`: the manifest is new (O_EXCL: nothing may be there, not even a
+// dangling symbolic link); else it must be the regular file already there (O_NOFOLLOW).
+void append_line(const std::string& path, const std::string& line, bool create = false) {
+    const int fd = ::open(path.c_str(), O_WRONLY | O_APPEND | O_CLOEXEC | O_NOFOLLOW | (create ? O_CREAT | O_EXCL : 0), 0644);
+    if (fd < 0 && (errno == ELOOP || errno == EEXIST)) run_file_exists(path);  // words a symbolic link
+    if (fd < 0) throw InputError(path + ": cannot write the manifest (" + std::strerror(errno) + ")");
+    struct stat st {};
+    if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+        ::close(fd);
+        throw InputError(path + ": is not a regular file (refused in a run folder)");
+    }
     const std::string l = line + "\n";
     const bool ok = ::write(fd, l.data(), l.size()) == static_cast<ssize_t>(l.size()) && ::fsync(fd) == 0;
     ::close(fd);
     if (!ok) throw InputError(path + ": cannot write the manifest");
 }
 
+// The run folder's shards/ must be a directory of its own, not a symbolic link to one elsewhere.
+void check_shards_dir(const std::string& run) {
+    const std::string d = run + "/shards";
+    struct stat st {};
+    if (::lstat(d.c_str(), &st) != 0) {
+        std::error_code ec;
+        fs::create_directories(d, ec);
+        if (ec) throw InputError(run + ": cannot create the run folder (" + ec.message() + ")");
+        if (::lstat(d.c_str(), &st) != 0) throw InputError(d + ": cannot create the shards folder");
+    }
+    if (!S_ISDIR(st.st_mode))
+        throw InputError(d + ": " + (S_ISLNK(st.st_mode) ? "is a symbolic link" : "is not a directory") + " (refused in a run folder)");
+}
+
+// Why the manifest's first line differs from this command's identity: another command, or the
+// same command on files whose contents changed since the run began.
+std::string identity_mismatch(const std::string& run, const std::string& recorded, const std::string& identity) {
+    const std::string other = run + ": the run folder holds another command's run (its manifest's first line differs)";
+    Json was, now;
+    try {
+        was = Json::parse(recorded);
+        now = Json::parse(identity);
+    } catch (const std::exception&) {
+        return other;
+    }
+    if (!was.is_object() || !was.contains("inputs")) return other;
+    const Json old_inputs = was["inputs"], new_inputs = now["inputs"];
+    was.erase("inputs");
+    now.erase("inputs");
+    if (was != now) return other;
+    for (const Json& f : new_inputs) {
+        const std::string path = f.at(0).get<std::string>();
+        bool same = false;
+        for (const Json& g : old_inputs)
+            if (g.is_array() && g.size() == 2 && g.at(0) == f.at(0) && g.at(1) == f.at(1)) same = true;
+        if (!same)
+            return path + ": changed since the run in " + run + " began (its SHA-256 differs); refused: no shard computed from the old contents is merged (start a new --run folder)";
+    }
+    return run + ": the files the run read changed since it began (their SHA-256 differ); refused: no shard computed from the old contents is merged (start a new --run folder)";
+}
+
 // The shards the manifest records as finished, with their hashes; checks the identity line.
 std::map<int, std::string> read_manifest(const std::string& run, const std::string& identity) {
     std::map<int, std::string> done;
-    std::ifstream in(run + "/manifest.jsonl");
+    const std::string path = run + "/manifest.jsonl";
+    if (!run_file_exists(path)) throw InputError(run + ": no manifest to resume from");
+    std::istringstream in(read_regular_file(path, "manifest", kMaxRunFileBytes, true));
     std::string line;
     if (!std::getline(in, line)) throw InputError(run + ": no manifest to resume from");
-    if (line != identity) throw InputError(run + ": the run folder holds another command's run (its manifest's first line differs)");
+    if (line != identity) throw InputError(identity_mismatch(run, line, identity));
     while (std::getline(in, line)) {
         try {
             const Json j = Json::parse(line);
@@ -142,15 +208,14 @@ int main(int argc, char** argv) {
     CampaignArgs& a = *golden ? golden_args : audit_args;
     a.shard_size = shard_size;
     std::vector<Shard> shards;
-    std::string identity;
     // Every rank checks the arguments the same way; rank 0 alone speaks, and every rank exits.
     try {
         validate(a);
         shards = plan(a);
-        identity = campaign_identity(a);
     } catch (const InputError& e) {
         return fail(rank, e.what(), 2);
     }
+    Json inputs = Json::array();
     int setup_ok = 1;
     std::string setup_error;
     std::vector<int> todo;
@@ -158,22 +223,26 @@ int main(int argc, char** argv) {
     size_t done_before = 0, redone = 0;
     if (rank == 0) {
         try {
+            // The inputs' contents (scene files and the meshes they name) are part of the identity.
+            inputs = campaign_inputs(a);
+            const std::string identity = campaign_identity(a, inputs);
             if (a.golden) make_output_dir(a.dir);
             std::map<int, std::string> done;
             if (resume) {
                 done = read_manifest(run, identity);
+                check_shards_dir(run);
             } else {
-                if (fs::exists(run + "/manifest.jsonl")) throw InputError(run + ": a run is already there (add --resume to go on with it)");
-                std::error_code ec;
-                fs::create_directories(run + "/shards", ec);
-                if (ec) throw InputError(run + ": cannot create the run folder (" + ec.message() + ")");
-                append_line(run + "/manifest.jsonl", identity);
+                if (run_file_exists(run + "/manifest.jsonl")) throw InputError(run + ": a run is already there (add --resume to go on with it)");
+                check_shards_dir(run);
+                append_line(run + "/manifest.jsonl", identity, true);
             }
             for (const Shard& s : shards) {
                 auto it = done.find(s.index);
                 if (it != done.end()) {
                     const std::string text = slurp(shard_path(run, s.index));
-                    if (sha256_hex(text) == it->second && shard_outputs_intact(a, text)) {
+                    // (A shard that read other contents than the run's inputs, changed and changed
+                    // back while the run was stopped, is redone like a damaged one.)
+                    if (sha256_hex(text) == it->second && shard_outputs_intact(a, text) && stale_input(inputs, text).empty()) {
                         hashes[static_cast<size_t>(s.index)] = it->second;
                         ++done_before;
                         continue;
@@ -259,6 +328,10 @@ int main(int argc, char** argv) {
                     texts.push_back(slurp(shard_path(run, s.index)));
                     if (sha256_hex(texts.back()) != hashes[static_cast<size_t>(s.index)])
                         throw InputError(shard_path(run, s.index) + ": changed during the run (hash mismatch)");
+                    // A scene file (or a mesh it names) changed after the run hashed it: refused, not merged.
+                    const std::string stale = stale_input(inputs, texts.back());
+                    if (!stale.empty())
+                        throw InputError(stale + ": changed during the run (its SHA-256 differs from the run's); refused: not merged (start a new --run folder)");
                 }
                 const long n = finish_campaign(a, texts);
                 const double merge = std::chrono::duration<double>(std::chrono::steady_clock::now() - merge_start).count();

@@ -60,8 +60,19 @@ long run_campaign(const CampaignArgs& a);
 // when it cannot (a file in the way, no permission).
 void make_output_dir(const std::string& dir);
 
-// What a run folder records of the command: shards from one command cannot mix with another's.
-std::string campaign_identity(const CampaignArgs& a);
+// The files an audit reads, each scene file and the mesh files it names, as [[path, SHA-256 of
+// its bytes], ...] in reading order (golden and family runs: none). Reads every scene as its
+// shard will (InputError names a bad one); standard input is refused (it cannot be read twice).
+Json campaign_inputs(const CampaignArgs& a);
+// What a run folder records of the command, the contents of its inputs (campaign_inputs)
+// included: shards from one command, or from other contents of its files, cannot mix with another's.
+std::string campaign_identity(const CampaignArgs& a, const Json& inputs);
+// The first file an audit shard's text records as read ("inputs") that `inputs` does not list with
+// the same hash; "" when there is none (golden and family shards record none).
+std::string stale_input(const Json& inputs, const std::string& shard_text);
+
+// Files in a run folder (manifest, shards) and golden outputs are read up to this size.
+constexpr std::size_t kMaxRunFileBytes = std::size_t(1) << 40;
 
 std::string sha256_hex(const std::string& bytes);
 

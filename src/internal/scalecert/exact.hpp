@@ -5,6 +5,7 @@
 
 #include <gmpxx.h>
 #include <array>
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -47,10 +48,32 @@ Vec3z over_common_denominator(const Vec3q& v, Z& den);
 // line), and cut after 40 characters.
 std::string quoted(const std::string& text);
 
-// The whole of a file (or standard input for "-"), at most max_bytes; `what` names it in
-// errors ("scene file"). Throws InputError naming the path for a missing file, a directory or
-// other non-readable file, and a file over the limit.
+// Every file scalecert reads is opened here. open_regular_file opens `path` with O_RDONLY |
+// O_NONBLOCK | O_CLOEXEC (and O_NOFOLLOW when no_follow): the open never blocks (a FIFO with no
+// writer, a terminal) and the descriptor is not inherited. Anything but a regular file (a FIFO,
+// socket, device or directory; with no_follow, a symbolic link) is refused, before it is opened
+// when its name already says so. Throws InputError "PATH: problem" (one line; `what` names the
+// file's role, "scene file"). Returns the descriptor, blocking again, and its size in *size.
+int open_regular_file(const std::string& path, const std::string& what, bool no_follow = false, size_t* size = nullptr);
+// The whole of a regular file (open_regular_file), at most max_bytes, else InputError naming the limit.
+std::string read_regular_file(const std::string& path, const std::string& what, size_t max_bytes, bool no_follow = false);
+// read_regular_file, or standard input for "-" (where a command documents it).
 std::string read_input(const std::string& path, const std::string& what, size_t max_bytes);
+
+// While an InputObserver lives, every file read_input and read_regular_file read on this thread
+// is passed to it, with the path as given: campaigns hash the bytes an audit actually read.
+class InputObserver {
+public:
+    using Fn = std::function<void(const std::string& path, const std::string& bytes)>;
+    explicit InputObserver(Fn f);
+    ~InputObserver();
+    InputObserver(const InputObserver&) = delete;
+    InputObserver& operator=(const InputObserver&) = delete;
+
+private:
+    Fn f_;
+    const Fn* prev_;
+};
 
 // Reads a number exactly as written: "-12", "0.1" (= 1/10), "1e-3", "2.5E+7", "3/7".
 // Throws InputError (without location; callers add it) when the text is not such a number.
