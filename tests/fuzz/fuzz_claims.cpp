@@ -1,34 +1,92 @@
 // certify-fp's claims reader on any bytes, against the tetrahedron-on-a-box scene (its curve
-// derived by hand in test_hand_curves).
+// derived by hand in test_hand_curves), once with I1 = [1/2, 2] and once with I1 = [1/2, 3/4], so
+// that curve claims reach beyond I1 and across its switch point (1, 2) outside it. Oracle: a curve
+// or switch point claim judged right (no tolerance) must touch at each claimed point by the brute
+// force (tests/support.hpp: no hull, no envelope): at its vertices, piece ends and midpoints.
 #include "fuzz_common.hpp"
 #include "scalecert/audit.hpp"
 
+#include <nlohmann/json.hpp>
+
 namespace {
+using namespace scalecert::internal;
 struct Fixed {
-    scalecert::internal::Model m;
-    scalecert::internal::Curve c;
-    Fixed() {
-        scalecert::internal::Scene sc = scalecert::internal::parse_scene_text(
-            R"({"P1": {"vertices": [[2,0,2],[-2,2,5],[-1,-2,6],[2,0,7]], "seed": [0,0,"9/2"]},
+    Scene sc;
+    Model m;
+    Curve c;
+    explicit Fixed(const char* i1) {
+        sc = parse_scene_text(std::string(R"({"P1": {"vertices": [[2,0,2],[-2,2,5],[-1,-2,6],[2,0,7]], "seed": [0,0,"9/2"]},
                 "P2": {"vertices": [[-1,-1,-1],[1,-1,-1],[-1,1,-1],[1,1,-1],[-1,-1,1],[1,-1,1],[-1,1,1],[1,1,1]], "seed": [0,0,0]},
-                "I1": ["1/2", 2], "I2": [1, 4]})", "tetra_box", "");
-        m = scalecert::internal::build_model(sc);
-        c = scalecert::internal::build_curve(m);
+                "I1": )") + i1 + R"(, "I2": [1, 4]})", "tetra_box", "");
+        m = build_model(sc);
+        c = build_curve(m);
     }
 };
+
+// A number as the claims reader takes it (exact decimals and p/q), or none.
+std::optional<Q> exact_of(const nlohmann::json& j) {
+    try {
+        if (j.is_string()) return parse_number(j.get<std::string>(), false);
+        if (j.is_number()) return parse_number(j.dump(), false);
+    } catch (const InputError&) {
+    }
+    return std::nullopt;
+}
+
+void must_touch(const Fixed& f, const test::Brute& b, const Q& x, const Q& y, const std::string& what) {
+    if (b.classify(f.sc, x, y) != 0)
+        fuzz::finding("a " + what + " claim judged right is not touching at (" + x.get_str() + ", " + y.get_str() + ") by brute force");
+}
+
+// The points a right curve or switch point claim says are on the curve.
+void check_right_claims(const Fixed& f, const test::Brute& b, const std::string& text, const std::string& report) {
+    nlohmann::json in, out;
+    try {
+        in = nlohmann::json::parse(text);
+        out = nlohmann::json::parse(report);
+    } catch (const nlohmann::json::exception&) {
+        return;
+    }
+    for (const auto& r : out["claims"]) {
+        if (!r["right"].get<bool>()) continue;
+        const auto& cl = in["claims"][r["index"].get<size_t>()];
+        const std::string kind = r["kind"];
+        if (kind == "switch_point") {
+            if (auto x = exact_of(cl["rho1"]), y = exact_of(cl["rho2"]); x && y) must_touch(f, b, *x, *y, kind);
+        } else if (kind == "curve" && cl.contains("vertices")) {
+            std::optional<std::pair<Q, Q>> prev;
+            for (const auto& v : cl["vertices"]) {
+                auto x = exact_of(v[0]), y = exact_of(v[1]);
+                if (!x || !y) return;
+                must_touch(f, b, *x, *y, kind);
+                if (prev) must_touch(f, b, (prev->first + *x) / 2, (prev->second + *y) / 2, kind + " (a segment's midpoint)");
+                prev = {{*x, *y}};
+            }
+        } else if (kind == "curve") {
+            for (const auto& p : cl["pieces"]) {
+                auto x0 = exact_of(p["rho1"][0]), x1 = exact_of(p["rho1"][1]), a = exact_of(p["slope"]), c = exact_of(p["intercept"]);
+                if (!x0 || !x1 || !a || !c) return;
+                for (const Q& x : {*x0, *x1, Q((*x0 + *x1) / 2)}) must_touch(f, b, x, *a * x + *c, kind);
+            }
+        }
+    }
+}
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-    static Fixed f;
+    static Fixed wide(R"(["1/2", 2])"), narrow(R"(["1/2", "3/4"])");
+    static test::Brute brute(wide.sc);  // the same polyhedra and seeds in both
     const std::string text(reinterpret_cast<const char*>(data), size);
-    for (bool bin : {false, true})
-        for (bool json : {false, true}) {
-            try {
-                long wrong = -1;
-                std::string out = scalecert::internal::certify_fp(f.m, f.c, text, "fuzz.claims", bin, json, &wrong);
-                if (wrong < 0 || out.empty()) fuzz::finding("certify_fp returned no report");
-            } catch (const scalecert::internal::InputError&) {
+    for (const Fixed* f : {&wide, &narrow})
+        for (bool bin : {false, true})
+            for (bool json : {false, true}) {
+                try {
+                    long wrong = -1;
+                    std::string out = certify_fp(f->m, f->c, text, "fuzz.claims", bin, json, &wrong);
+                    if (wrong < 0 || out.empty()) fuzz::finding("certify_fp returned no report");
+                    if (json && !bin) check_right_claims(*f, brute, text, out);
+                } catch (const InputError&) {
+                }
             }
-        }
     return 0;
 }

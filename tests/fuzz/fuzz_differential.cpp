@@ -1,7 +1,10 @@
 // Random small integer scenes from the bytes: the engine's verdicts must equal the brute-force
 // classifier's (tests/support.hpp: no hull, every cross product of vertex differences), at
 // pairs from the bytes and at pairs on, just above and just below the curve; and every
-// certificate the engine writes (the partition, each query answer) must pass the checker.
+// certificate the engine writes (the partition, each query answer) must pass the checker. Half
+// the scenes are two axis-aligned boxes (cubes, often), which touch edge to edge, corner to face
+// and so on, where many facet normals give one line: there every piece's contact label must be
+// the brute force's smallest faces holding the touching set (test::brute_contact).
 #include "fuzz_common.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
@@ -10,16 +13,29 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     size_t at = 0;
     auto next = [&]() -> int { return at < size ? data[at++] : 0; };
     Scene sc;
-    const int n[2] = {4 + next() % 6, 4 + next() % 6};
-    const int shift[3] = {next() % 15 - 7, next() % 15 - 7, next() % 15 - 7};
-    for (int i = 0; i < 2; ++i) {
-        for (int k = 0; k < n[i]; ++k) {
-            Vec3q v;
-            for (int c = 0; c < 3; ++c) v[c] = Q(next() % 9 - 4 + (i ? shift[c] : 0));
-            sc.P[i].points.push_back(v);
+    const int mode = next();
+    if (mode & 1) {  // two boxes
+        for (int i = 0; i < 2; ++i) {
+            const long o[3] = {next() % 9 - 4L, next() % 9 - 4L, next() % 9 - 4L};
+            long e[3] = {1 + next() % 4L, 1 + next() % 4L, 1 + next() % 4L};
+            if (mode & 2) e[1] = e[2] = e[0];
+            for (int k = 0; k < 8; ++k)
+                sc.P[i].points.push_back({Q(o[0] + (k & 1) * e[0]), Q(o[1] + ((k >> 1) & 1) * e[1]), Q(o[2] + ((k >> 2) & 1) * e[2])});
+            sc.lo[i] = Q(1, 4);
+            sc.hi[i] = Q(4);
         }
-        sc.lo[i] = Q(1, 4);
-        sc.hi[i] = Q(4);
+    } else {
+        const int n[2] = {4 + next() % 6, 4 + next() % 6};
+        const int shift[3] = {next() % 15 - 7, next() % 15 - 7, next() % 15 - 7};
+        for (int i = 0; i < 2; ++i) {
+            for (int k = 0; k < n[i]; ++k) {
+                Vec3q v;
+                for (int c = 0; c < 3; ++c) v[c] = Q(next() % 9 - 4 + (i ? shift[c] : 0));
+                sc.P[i].points.push_back(v);
+            }
+            sc.lo[i] = Q(1, 4);
+            sc.hi[i] = Q(4);
+        }
     }
     finish_scene(sc, "fuzz");  // the mean seeds
     Model m;
@@ -32,6 +48,17 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         r1.canonicalize();
         r2.canonicalize();
         pairs.push_back({r1, r2});
+    }
+    for (const CurvePiece& p : cv.pieces) {  // the contact label against the brute force
+        const std::optional<Q> x = contact_rho1(m, cv, p);
+        if (!x) continue;
+        const auto [g1, g2] = test::brute_contact(sc, *x, m.lines[cv.env.pieces[p.env].line].at(*x));
+        const std::string want{"VEF"[test::affine_dimension(sc.P[0].points, g1)], "VEF"[test::affine_dimension(sc.P[1].points, g2)]};
+        if (g1.empty() || p.contact.label != want)
+            fuzz::finding("contact " + p.contact.label + " at rho1 = " + x->get_str() + ", brute force says " + want);
+        for (int i = 0; i < 2; ++i)
+            for (int k : i ? p.contact.feat2 : p.contact.feat1)
+                if (!std::binary_search((i ? g2 : g1).begin(), (i ? g2 : g1).end(), k)) fuzz::finding("a contact feature vertex outside the touching face");
     }
     for (const CurvePiece& p : cv.pieces) {  // on the curve, and 2^-20 of it above and below
         Q x = (p.from + p.to) / 2, y = m.lines[cv.env.pieces[p.env].line].at(x);
