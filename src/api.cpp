@@ -1,5 +1,6 @@
 // The public API (include/scalecert/scalecert.hpp) over the internal stages.
 #include "scalecert/scalecert.hpp"
+#include "scalecert/session.hpp"
 
 #include "scalecert/certificate.hpp"
 #include "scalecert/fast_query.hpp"
@@ -7,6 +8,7 @@
 #include "scalecert/mesh.hpp"
 #include "scalecert/scan.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <mutex>
 #include <thread>
@@ -141,39 +143,18 @@ std::string Scene::json() const { return dump(scene_json(d_->sc)); }
 
 struct Analysis::Impl {
     Scene scene;
-    std::optional<Model> scan;  // the scan path's model, when it built the curve
-    internal::Curve curve;      // the curve, from `scan` or from the hull model
-    // The hull model and its curve, for queries and the partition: built on first use.
-    mutable std::once_flag once;
-    mutable std::shared_ptr<const Model> hull;
-    mutable internal::Curve hull_curve;
-    explicit Impl(const Scene& s) : scene(s) {}
-    const Model& model() const {
-        std::call_once(once, [this] {
-            hull = scene.internal_model();
-            hull_curve = scan ? build_curve(*hull) : curve;
-        });
-        return *hull;
-    }
-    const internal::Curve& model_curve() const {
-        model();
-        return hull_curve;
+    // Calls on one Analysis from several threads at once are not supported (scalecert.hpp), so
+    // the session may build its models lazily behind the const interface.
+    mutable internal::Session session;
+    explicit Impl(const Scene& s) : scene(s), session(s.d_->compact, s.d_->name) {
+        session.set_hull_source([d = s.d_] { return d->hull(); });
     }
 };
 
 Analysis::Analysis(const Scene& scene) {
     auto impl = std::make_shared<Impl>(scene);
-    if (scene.d_->compact) {  // the scan path, on the points the scene holds in integers
-        try {
-            impl->scan.emplace(internal::scan_model(scene.d_->compact));
-            impl->curve = build_curve(*impl->scan);
-        } catch (const internal::NeedHull&) {
-            impl->scan.reset();
-        }
-    }
-    if (!impl->scan) impl->curve = build_curve(*scene.internal_model());
-    const Model& m = impl->scan ? *impl->scan : *scene.internal_model();
-    const internal::Curve& c = impl->curve;
+    const internal::Curve& c = impl->session.curve();
+    const Model& m = impl->session.curve_model();
     for (const CurvePiece& p : c.pieces) {
         const ContactLine& L = m.lines[c.env.pieces[p.env].line];
         std::optional<Contact> k;
@@ -196,8 +177,8 @@ static void check_rho(const Rational& r, const char* what) {
 QueryResult Analysis::query(const Rational& rho1, const Rational& rho2) const {
     check_rho(rho1, "rho1");
     check_rho(rho2, "rho2");
-    const Model& m = impl_->model();
-    const internal::QueryResult r = internal::query(m, impl_->model_curve(), rho1, rho2, true);
+    const Model& m = impl_->session.hull();
+    const internal::QueryResult r = internal::query(m, impl_->session.hull_curve(), rho1, rho2, true);
     QueryResult out{r.verdict, std::nullopt, std::nullopt};
     if (r.plane) out.plane = Plane{to_q(m.lines[r.plane->line].normal), r.plane->c1, r.plane->c2, r.plane->offset};
     if (r.witness) out.common = CommonPoint{r.witness->rho1, r.witness->rho2, r.witness->point};
@@ -212,7 +193,12 @@ std::vector<Verdict> Analysis::classify(const std::vector<double>& rho1, const s
         if (!(std::isfinite(rho1[i]) && std::isfinite(rho2[i]) && rho1[i] > 0 && rho2[i] > 0))
             throw InputError("classify: pair " + std::to_string(i) + ": two finite numbers > 0 are required");
     if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
-    FastCurve f(impl_->model(), impl_->model_curve());
+    internal::Session& s = impl_->session;
+    // The walk's curve where it proved every pair's ρ1, else the hull model's.
+    const bool walk = !rho1.empty() && s.walked() &&
+                      s.walk_covers(internal::exact_from_double(*std::min_element(rho1.begin(), rho1.end())),
+                                    internal::exact_from_double(*std::max_element(rho1.begin(), rho1.end())));
+    FastCurve f(walk ? s.curve_model() : s.hull(), walk ? s.curve() : s.hull_curve());
     std::vector<Verdict> out;
     classify_batch(f, rho1, rho2, out, threads);
     return out;
@@ -224,7 +210,7 @@ PlaneCheck Analysis::check_plane(const Rational& rho1, const Rational& rho2, con
     check_rho(rho2, "rho2");
     const Point n = canonical(normal);
     if (sgn(n[0]) == 0 && sgn(n[1]) == 0 && sgn(n[2]) == 0) throw InputError("check_plane: the normal is zero");
-    const auto [c1, c2] = internal::plane_extents(impl_->model(), n, rho1, rho2);
+    const auto [c1, c2] = internal::plane_extents(impl_->session.hull(), n, rho1, rho2);
     PlaneCheck r;
     r.c1 = c1;
     r.c2 = c2;
@@ -233,19 +219,20 @@ PlaneCheck Analysis::check_plane(const Rational& rho1, const Rational& rho2, con
 }
 
 std::string Analysis::curve_json() const {
-    return dump(internal::curve_json(impl_->scan ? *impl_->scan : impl_->model(), impl_->curve));
+    return dump(internal::curve_json(impl_->session.curve_model(), impl_->session.curve()));
 }
 
 std::string Analysis::query_json(const Rational& rho1, const Rational& rho2) const {
     check_rho(rho1, "rho1");
     check_rho(rho2, "rho2");
-    const Model& m = impl_->model();
-    return dump(internal::query_json(m, internal::query(m, impl_->model_curve(), rho1, rho2, true)));
+    const Model& m = impl_->session.hull();
+    return dump(internal::query_json(m, internal::query(m, impl_->session.hull_curve(), rho1, rho2, true)));
 }
 
 std::string Analysis::partition_json() const {
-    const Model& m = impl_->model();
-    return dump(internal::partition_json(m, impl_->model_curve(), build_partition(m, impl_->model_curve())));
+    const Model& m = impl_->session.hull();
+    const internal::Curve& c = impl_->session.hull_curve();
+    return dump(internal::partition_json(m, c, build_partition(m, c)));
 }
 
 }  // namespace scalecert

@@ -647,6 +647,11 @@ Model scan_model(std::shared_ptr<const CompactScene> sc) {
     } else {
         while (right.back().hi && *right.back().hi < crossing(right.back().L)) right.push_back(w.next(right.back(), true));
     }
+    // The proof's range: the walked pieces are contiguous, from the leftmost one's start to the
+    // rightmost one's end.
+    const Piece& leftmost = left.empty() ? right.front() : left.back();
+    m.walk_lo = leftmost.lo ? *leftmost.lo : Q(0);
+    m.walk_hi = right.back().hi;
     for (auto* v : {&left, &right})
         for (Piece& p : *v) m.lines.push_back(std::move(p.L));
     std::sort(m.lines.begin(), m.lines.end(), [](const ContactLine& a, const ContactLine& b) { return a.normal < b.normal; });

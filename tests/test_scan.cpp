@@ -8,6 +8,7 @@
 #include "scalecert/mesh.hpp"
 #include "scalecert/scan.hpp"
 #include "support.hpp"
+#include "scalecert/session.hpp"
 
 #include <cmath>
 #include <filesystem>
@@ -90,6 +91,44 @@ BOOST_AUTO_TEST_CASE(near_spheres_of_every_number_kind) {
             BOOST_TEST(compare(sc, "near-sphere den " + std::to_string(den) + " #" + std::to_string(rep), t));
         }
     BOOST_TEST_MESSAGE("near-spheres: " << t.scanned << " by the scan path");
+}
+
+// The session (session.hpp) takes verdicts from the walk where it proved the curve, with no hull,
+// and from the hull elsewhere: both must be the hull path's verdicts, at pairs on, above and
+// below the curve, inside the walked range and far outside it (ρ1 up to 8 with I1 = [1/2, 2]).
+BOOST_AUTO_TEST_CASE(session_verdicts_from_the_walk_equal_the_hull_paths) {
+    std::mt19937 g(23);
+    int walked = 0, checked = 0, on_walk = 0;
+    for (int rep = 0; rep < 4; ++rep) {
+        Scene sc;
+        sc.P[0].points = sphere(g, 1200, 60, 1, {Q(0), Q(0), Q(0)});
+        sc.P[1].points = sphere(g, 1200, 70, 1, {Q(200), Q(10 * rep), Q(-5)});
+        sc = with_means(sc, qc(1, 2), Q(2));
+        Session s(sc, "test");
+        const Model hm = build_model(sc);
+        const Curve hc = build_curve(hm);
+        if (!s.walked()) continue;
+        ++walked;
+        std::uniform_int_distribution<int> x(1, 64);
+        for (int k = 0; k < 60; ++k) {
+            const Q r1 = qc(x(g), 8), f = hc.env.value(hm.lines, r1);
+            for (const Q& r2 : {f, Q(f * qc(1023, 1024)), Q(f * qc(1025, 1024)), qc(x(g), 8)}) {
+                if (sgn(r2) <= 0) continue;
+                on_walk += s.walk_covers(r1, r1);
+                BOOST_TEST(s.verdict(r1, r2) == query(hm, hc, r1, r2, false).verdict);
+                ++checked;
+            }
+        }
+        BOOST_TEST(s.curve_value(Q(1)) == hc.env.value(hm.lines, Q(1)));
+        // Verdicts inside the walked range alone build no hull.
+        Session t(sc, "test");
+        for (int k = 0; k < 20; ++k) t.verdict(qc(x(g) % 12 + 4, 8), Q(1));  // ρ1 in [1/2, 15/8] ⊂ I1
+        BOOST_TEST(!t.hull_built());
+        BOOST_TEST(t.walked());
+    }
+    BOOST_TEST(walked >= 3);
+    BOOST_TEST(on_walk > 0);
+    BOOST_TEST(on_walk < checked);  // some pairs lie outside the walked range
 }
 
 // Random small polytopes (many coplanar points, degenerate contacts): whatever the scan path

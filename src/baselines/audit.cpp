@@ -27,7 +27,7 @@ std::string num_text(const Q& q) {
 }
 }  // namespace
 
-std::string certify_claim_lines(const Model& m, const Curve& c, const std::string& claims, const std::string& name,
+std::string certify_claim_lines(const ClaimModels& models, const std::string& claims, const std::string& name,
                                 bool binary_doubles, bool json, long* wrong) {
     std::istringstream in(claims);
     std::string line, text;
@@ -48,7 +48,7 @@ std::string certify_claim_lines(const Model& m, const Curve& c, const std::strin
         if (w[0] == "curve" && w.size() == 3) {
             Q r1 = read_number(w[1], binary_doubles, where), r2 = read_number(w[2], binary_doubles, where);
             if (sgn(r1) <= 0 || sgn(r2) <= 0) throw InputError(where + ": scalings must be > 0");
-            Q f = c.env.value(m.lines, r1);
+            Q f = models.curve_value(r1);
             right = f == r2;
             o["claim"] = "curve";
             put_exact(o, "rho1", r1);
@@ -59,21 +59,22 @@ std::string certify_claim_lines(const Model& m, const Curve& c, const std::strin
         } else if (w[0] == "growth" && w.size() == 2) {
             Q g = read_number(w[1], binary_doubles, where);
             if (sgn(g) < 0) throw InputError(where + ": a growth distance is >= 0 (0 when the seeds coincide)");
-            right = g == c.growth.value;
+            const Q exact_g = models.growth();
+            right = g == exact_g;
             o["claim"] = "growth";
             put_exact(o, "claimed", g);
-            put_exact(o, "exact", c.growth.value);
-            detail = "growth distance " + w[1] + ": exact " + num_text(c.growth.value) + ", off by " + num_text(g - c.growth.value);
+            put_exact(o, "exact", exact_g);
+            detail = "growth distance " + w[1] + ": exact " + num_text(exact_g) + ", off by " + num_text(g - exact_g);
         } else if (w.size() == 3) {
             Q r1 = read_number(w[0], binary_doubles, where), r2 = read_number(w[1], binary_doubles, where);
             if (sgn(r1) <= 0 || sgn(r2) <= 0) throw InputError(where + ": scalings must be > 0");
             const std::string& v = w[2];
             if (v != "separated" && v != "touching" && v != "overlapping" && v != "intersecting")
                 throw InputError(where + ": unknown verdict " + quoted(v) + " (separated, touching, overlapping, intersecting)");
-            Verdict e = query(m, c, r1, r2, false).verdict;
+            Verdict e = models.verdict(r1, r2);
             std::string en = verdict_name(e);
             right = v == "intersecting" ? e != Verdict::Separated : v == en;
-            Q f = c.env.value(m.lines, r1);
+            Q f = models.curve_value(r1);
             o["claim"] = v;
             put_exact(o, "rho1", r1);
             put_exact(o, "rho2", r2);

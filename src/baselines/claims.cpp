@@ -26,8 +26,8 @@ std::string num(const Q& q) { return to_exact_string(q) + " (~" + dbl(to_double_
 
 class Certifier {
 public:
-    Certifier(const Model& m, const Curve& c, const std::string& name, const ClaimOptions& opt)
-        : m_(m), c_(c), name_(name), opt_(opt) {}
+    Certifier(const ClaimModels& models, const std::string& name, const ClaimOptions& opt)
+        : models_(models), name_(name), opt_(opt) {}
 
     // One claim: its report object and a one-line text; right or wrong.
     bool run(const JNode& claim, size_t index, Json& o, std::string& text) {
@@ -49,9 +49,10 @@ public:
     }
 
 private:
-    const Model& m_;
-    const Curve& c_;
+    const ClaimModels& models_;
     std::string name_, where_;
+    const Model& m() const { return models_.model(); }  // the hull model: built on first use
+    const Curve& c() const { return models_.curve(); }
     ClaimOptions opt_;
     std::optional<std::vector<Vec3z>> normals_;  // every facet normal, for depths (built on first use)
     struct ExactSwitch { Q rho1, rho2; std::string label; };
@@ -139,13 +140,13 @@ private:
         const std::string v = str(j, "verdict");
         if (v != "separated" && v != "touching" && v != "overlapping" && v != "intersecting")
             fail("verdict", "unknown verdict " + quoted(v) + " (separated, touching, overlapping, intersecting)");
-        const Verdict e = query(m_, c_, r1, r2, false).verdict;
+        const Verdict e = models_.verdict(r1, r2);
         const bool right = v == "intersecting" ? e != Verdict::Separated : v == verdict_name(e);
         put_exact(o, "rho1", r1);
         put_exact(o, "rho2", r2);
         o["claimed"] = v;
         o["exact"] = verdict_name(e);
-        put_exact(o, "rho2_minus_curve", r2 - c_.env.value(m_.lines, r1));
+        put_exact(o, "rho2_minus_curve", r2 - models_.curve_value(r1));
         text = "verdict at (" + num(r1) + ", " + num(r2) + "): claimed " + v + ", exact " + verdict_name(e);
         return right;
     }
@@ -154,9 +155,10 @@ private:
         only(j, {"kind", "value"});
         const Q g = field(j, "value");
         if (sgn(g) < 0) fail("value", "a growth distance is >= 0 (0 when the seeds coincide)");
-        errors(o, g, c_.growth.value);
-        text = "growth distance " + num(g) + ": exact " + num(c_.growth.value);
-        return close(g, c_.growth.value);
+        const Q exact = models_.growth();
+        errors(o, g, exact);
+        text = "growth distance " + num(g) + ": exact " + num(exact);
+        return close(g, exact);
     }
 
     // The exact switch points: every break of the exact curve ρ2 = f(ρ1) over ρ1 > 0 where
@@ -164,14 +166,14 @@ private:
     const std::vector<ExactSwitch>& exact_switches() {
         if (switches_) return *switches_;
         switches_.emplace();
-        const auto& P = c_.env.pieces;
+        const auto& P = c().env.pieces;
         for (size_t k = 0; k + 1 < P.size(); ++k) {
             const Q& x = *P[k].to;
-            const ContactLine &L = m_.lines[P[k].line], &R = m_.lines[P[k + 1].line];
+            const ContactLine &L = m().lines[P[k].line], &R = m().lines[P[k + 1].line];
             const Q y = L.at(x);
             if (sgn(x) <= 0) continue;
             if (sgn(y) <= 0) break;  // f descends: nothing touches from here on
-            switches_->push_back({x, y, contact_at(m_, L, R, x, y).label});
+            switches_->push_back({x, y, contact_at(m(), L, R, x, y).label});
         }
         return *switches_;
     }
@@ -220,8 +222,8 @@ private:
 
     // ρ1 with f(ρ1) = y (f is strictly decreasing), or none outside f's range over ρ1 ≥ 0.
     std::optional<Q> inverse(const Q& y) const {
-        for (const EnvPiece& p : c_.env.pieces) {
-            const ContactLine& L = m_.lines[p.line];
+        for (const EnvPiece& p : c().env.pieces) {
+            const ContactLine& L = m().lines[p.line];
             const Q x = (y - L.intercept) / L.slope;
             if (x >= p.from && (!p.to || x <= *p.to)) return x;
         }
@@ -286,7 +288,7 @@ private:
         Q max_v = 0, max_h = 0, worst_v_at = lo;
         bool within = true;
         auto check_v = [&](const Q& x, const Q& y) {
-            const Q f = c_.env.value(m_.lines, x);
+            const Q f = c().env.value(m().lines, x);
             const Q e = abs(Q(y - f));
             if (e > max_v) max_v = e, worst_v_at = x;
             within = within && close(y, f);
@@ -294,13 +296,13 @@ private:
         for (const Seg& s : segs) {
             check_v(s.x0, s.y0);
             check_v(s.x1, s.y1);
-            for (const EnvPiece& p : c_.env.pieces)
+            for (const EnvPiece& p : c().env.pieces)
                 if (p.to && *p.to > s.x0 && *p.to < s.x1) check_v(*p.to, s.y0 + (s.y1 - s.y0) * (*p.to - s.x0) / (s.x1 - s.x0));
             for (const auto& [x, y] : {std::pair{s.x0, s.y0}, std::pair{s.x1, s.y1}})
                 if (auto xi = inverse(y)) max_h = std::max(max_h, Q(abs(Q(*xi - x))));
         }
         // Nothing touches where f ≤ 0; f descends, so it is > 0 on the whole range iff at hi.
-        const bool exact_positive = sgn(c_.env.value(m_.lines, hi)) > 0;
+        const bool exact_positive = sgn(c().env.value(m().lines, hi)) > 0;
         o["exact_rho2_positive_over_range"] = exact_positive;
         put_exact(o, "max_vertical_error", max_v);
         put_exact(o, "max_vertical_error_at_rho1", worst_v_at);
@@ -355,7 +357,7 @@ private:
         for (const Seg& s : segs) {
             if (!s.label) continue;
             const Q mid = (s.x0 + s.x1) / 2;
-            const std::string e = exact_positive ? piece_contact(m_, c_.env.pieces[c_.env.locate(mid)]).label : std::string("none");
+            const std::string e = exact_positive ? piece_contact(m(), c().env.pieces[c().env.locate(mid)]).label : std::string("none");
             if (*s.label != e) {
                 Json w;
                 put_exact(w, "rho1", mid);
@@ -378,7 +380,7 @@ private:
         const Vec3q n = point(need(j, "normal"), "normal");
         if (sgn(n[0]) == 0 && sgn(n[1]) == 0 && sgn(n[2]) == 0) fail("normal", "the zero vector is not a normal");
         const JNode* off = j.find("offset");
-        const auto [c1, c2] = plane_extents(m_, n, r1, r2);
+        const auto [c1, c2] = plane_extents(m(), n, r1, r2);
         put_exact(o, "rho1", r1);
         put_exact(o, "rho2", r2);
         put_exact(o, "max_over_P1", c1);  // P1(ρ1) ⊆ {n·x ≤ c1}
@@ -400,10 +402,10 @@ private:
         only(j, {"kind", "rho1", "rho2", "point"});
         const auto [r1, r2] = pair_at(j);
         const Vec3q x = point(need(j, "point"), "point");
-        const bool in1 = contains(m_, 0, r1, x), in2 = contains(m_, 1, r2, x);
+        const bool in1 = contains(m(), 0, r1, x), in2 = contains(m(), 1, r2, x);
         o["in_P1"] = in1;
         o["in_P2"] = in2;
-        o["exact_verdict"] = verdict_name(query(m_, c_, r1, r2, false).verdict);
+        o["exact_verdict"] = verdict_name(models_.verdict(r1, r2));
         text = "witness point at (" + num(r1) + ", " + num(r2) + "): in P1 " + (in1 ? "yes" : "NO") + ", in P2 " + (in2 ? "yes" : "NO");
         return in1 && in2;
     }
@@ -412,7 +414,7 @@ private:
         only(j, {"kind", "rho1", "rho2", "value", "closest"});
         const auto [r1, r2] = pair_at(j);
         const Q d = field(j, "value");
-        const ExactDistance e = exact_distance(m_, r1, r2);
+        const ExactDistance e = exact_distance(m(), r1, r2);
         put_exact(o, "rho1", r1);
         put_exact(o, "rho2", r2);
         errors_sq(o, d, e.squared);
@@ -425,7 +427,7 @@ private:
             const Vec3q p = point(cl->items[0], "closest"), q = point(cl->items[1], "closest");
             const Vec3q pq = sub(q, p);
             const Q sq = dot(pq, pq);
-            const bool in1 = contains(m_, 0, r1, p), in2 = contains(m_, 1, r2, q);
+            const bool in1 = contains(m(), 0, r1, p), in2 = contains(m(), 1, r2, q);
             o["closest_in_P1"] = in1;
             o["closest_in_P2"] = in2;
             put_exact(o, "closest_squared_distance", sq);
@@ -440,8 +442,8 @@ private:
         only(j, {"kind", "rho1", "rho2", "value", "direction"});
         const auto [r1, r2] = pair_at(j);
         const Q d = field(j, "value");
-        if (!normals_) normals_ = all_facet_normals(m_);
-        const ExactDepth e = exact_penetration_depth(m_, *normals_, r1, r2);
+        if (!normals_) normals_ = all_facet_normals(m());
+        const ExactDepth e = exact_penetration_depth(m(), *normals_, r1, r2);
         put_exact(o, "rho1", r1);
         put_exact(o, "rho2", r2);
         if (sgn(e.squared) < 0) {
@@ -458,7 +460,7 @@ private:
             const Vec3q n = point(*dir, "direction");
             if (sgn(n[0]) == 0 && sgn(n[1]) == 0 && sgn(n[2]) == 0) fail("direction", "the zero vector is not a direction");
             // Moving P2 by the depth along n separates them exactly iff n attains the minimum.
-            const Q along = directional_depth_squared(m_, n, r1, r2);
+            const Q along = directional_depth_squared(m(), n, r1, r2);
             put_exact(o, "depth_squared_along_direction", along);
             const bool ok = within_above(along, e.squared);
             o["direction_right"] = ok;
@@ -470,13 +472,25 @@ private:
 
 }  // namespace
 
-std::string certify_fp(const Model& m, const Curve& c, const std::string& claims, const std::string& name,
-                       const ClaimOptions& opt, bool json, long* wrong) {
+ClaimModels ClaimModels::of(const Model& m, const Curve& c) {
+    return {[&m]() -> const Model& { return m; }, [&c]() -> const Curve& { return c; },
+            [&m, &c](const Q& r1, const Q& r2) { return query(m, c, r1, r2, false).verdict; },
+            [&m, &c](const Q& r1) { return c.env.value(m.lines, r1); }, [&c] { return c.growth.value; }};
+}
+
+ClaimModels ClaimModels::of(Session& s) {
+    return {[&s]() -> const Model& { return s.hull(); }, [&s]() -> const Curve& { return s.hull_curve(); },
+            [&s](const Q& r1, const Q& r2) { return s.verdict(r1, r2); }, [&s](const Q& r1) { return s.curve_value(r1); },
+            [&s] { return s.curve().growth.value; }};
+}
+
+std::string certify_fp(const ClaimModels& models, const std::string& claims, const std::string& name, const ClaimOptions& opt,
+                       bool json, long* wrong) {
     if (sgn(opt.tolerance) < 0) throw InputError("--tolerance must be >= 0");
     const size_t first = claims.find_first_not_of(" \t\r\n");
     if (first == std::string::npos || claims[first] != '{') {
         if (sgn(opt.tolerance) != 0) throw InputError(name + ": --tolerance applies to JSON claims (scalecert-claims-1)");
-        return certify_claim_lines(m, c, claims, name, opt.binary_doubles, json, wrong);
+        return certify_claim_lines(models, claims, name, opt.binary_doubles, json, wrong);
     }
     JNode root;
     try {
@@ -491,7 +505,7 @@ std::string certify_fp(const Model& m, const Curve& c, const std::string& claims
     for (const std::string& k : root.keys)
         if (k != "format" && k != "claims") throw InputError(name + ": " + k + ": unknown field");
     if (!list || list->kind != JNode::Array || list->items.empty()) throw InputError(name + ": claims: expected a non-empty list");
-    Certifier cert(m, c, name, opt);
+    Certifier cert(models, name, opt);
     Json arr = Json::array();
     std::string text;
     long bad = 0;

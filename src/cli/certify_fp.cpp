@@ -27,7 +27,7 @@ Command add_certify_fp(CLI::App& app) {
                  "  scalecert certify-fp certificates/scenes/stacked_cubes.json examples/claims.json --tolerance 1e-12");
     return {sub, [a] {
                 StageClock clock;
-                const Analysed an = analyse(a->scene, clock);
+                internal::Session session = open_session(a->scene, Engine::Auto, clock);
                 const std::string claims = read_input(a->claims, "claims file", kMaxSceneBytes);
                 long wrong = 0;
                 ClaimOptions opt{a->scene.opt.binary_doubles, Q(0)};
@@ -36,7 +36,7 @@ Command add_certify_fp(CLI::App& app) {
                 } catch (const InputError& e) {
                     throw InputError(std::string("--tolerance: ") + e.what());
                 }
-                emit(certify_fp(an.m, an.c, claims, a->claims, opt, a->json, &wrong), a->out);
+                emit(certify_fp(session, claims, a->claims, opt, a->json, &wrong), a->out);
                 return wrong > 0 ? 1 : 0;
             }};
 }

@@ -26,7 +26,7 @@ Command add_classify(CLI::App& app) {
                  "  printf '1 1\\n1.5 1.5\\n2 2\\n' | scalecert classify certificates/scenes/stacked_cubes.json -");
     return {sub, [a] {
                 StageClock clock;
-                const Analysed an = analyse(a->scene, clock);
+                internal::Session session = open_session(a->scene, Engine::Auto, clock);
                 std::vector<double> r1, r2;
                 const std::string pairs = read_input(a->pairs, "pairs file", kMaxPairsBytes);
                 clock.lap("read pairs");
@@ -37,7 +37,11 @@ Command add_classify(CLI::App& app) {
                 }
                 clock.lap("parse pairs");
                 std::vector<Verdict> out;
-                FastCurve fc(an.m, an.c);
+                // The walk's curve where it proved every pair's ρ1, else the hull model's.
+                const bool walk = !r1.empty() && session.walked() &&
+                                  session.walk_covers(exact_from_double(*std::min_element(r1.begin(), r1.end())),
+                                                      exact_from_double(*std::max_element(r1.begin(), r1.end())));
+                FastCurve fc(walk ? session.curve_model() : session.hull(), walk ? session.curve() : session.hull_curve());
                 const StageCounts sc = classify_batch(fc, r1, r2, out, a->threads);
                 clock.lap("classify");
                 emit(verdict_lines(out), a->out);

@@ -135,39 +135,18 @@ std::vector<Q> number_list(const std::string& text, size_t n, const std::string&
     return out;
 }
 
-Analysed analyse(const SceneArgs& args, StageClock& clock) {
-    const internal::Scene scene = args.load();
+internal::Session open_session(const SceneArgs& args, Engine engine, StageClock& clock) {
+    if (engine != Engine::Hull)
+        if (std::shared_ptr<const internal::CompactScene> cs = args.load_compact()) {
+            clock.lap("read scene (compact)");
+            internal::Session s(std::move(cs), args.name(), engine);
+            s.set_clock(&clock);
+            return s;
+        }
+    internal::Session s(args.load(), args.name(), engine);
     clock.lap("read scene");
-    Analysed a{build_model(scene, args.name()), {}};
-    clock.restart();
-    a.c = build_curve(a.m);
-    clock.lap("envelope and curve");
-    return a;
-}
-
-Analysed analyse_curve(const SceneArgs& args, Engine engine, StageClock& clock) {
-    if (engine != Engine::Hull) {
-        std::shared_ptr<const internal::CompactScene> cs = args.load_compact();
-        clock.lap("read scene (compact)");
-        if (cs && (engine == Engine::Scan || cs->P[0].size() + cs->P[1].size() >= internal::kScanFromPoints)) {
-            try {
-                Analysed a{internal::scan_model(cs), {}};
-                a.c = build_curve(a.m);
-                clock.lap("envelope and curve");
-                return a;
-            } catch (const internal::NeedHull& e) {
-                if (std::getenv("SCALECERT_TIMING")) std::fprintf(stderr, "scalecert: scan path: %s; the hull path decides\n", e.what());
-            }
-        }
-        if (cs) {  // the hull path on the same points (read once)
-            Analysed a{build_model(internal::full_scene(*cs), args.name()), {}};
-            clock.restart();
-            a.c = build_curve(a.m);
-            clock.lap("envelope and curve");
-            return a;
-        }
-    }
-    return analyse(args, clock);
+    s.set_clock(&clock);
+    return s;
 }
 
 internal::Segment parse_segment(const std::string& spec, const Model& m) {

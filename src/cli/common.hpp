@@ -2,6 +2,7 @@
 // registers its options and returns the function that runs it.
 #pragma once
 #include "scalecert/certificate.hpp"
+#include "scalecert/session.hpp"
 #include "scalecert/timing.hpp"
 
 #include <CLI/CLI.hpp>
@@ -39,16 +40,10 @@ std::vector<Q> number_list(const std::string& text, size_t n, const std::string&
 // Sets the --help footer: what the command writes, and an example.
 void example(CLI::App* sub, const std::string& text);
 
-// The scene read, modelled and its curve built, with SCALECERT_TIMING laps.
-struct Analysed {
-    Model m;
-    internal::Curve c;
-};
-Analysed analyse(const SceneArgs& scene, internal::StageClock& clock);
-// Which engine builds the curve: the scan path (scan.hpp) with the hull path as its fallback, or
-// the hull path alone. Auto takes the scan path from kScanFromPoints (both polyhedra together).
-enum class Engine { Auto, Scan, Hull };
-Analysed analyse_curve(const SceneArgs& scene, Engine engine, internal::StageClock& clock);
+// The scene read into a session (session.hpp), with SCALECERT_TIMING laps on `clock`: in machine
+// integers when it fits them and the engine may walk, else by the strict reader.
+using internal::Engine;
+internal::Session open_session(const SceneArgs& scene, Engine engine, internal::StageClock& clock);
 // A segment for --segment: seeds | ellipsoids | x1,y1,z1:x2,y2,z2.
 internal::Segment parse_segment(const std::string& spec, const Model& m);
 

@@ -25,9 +25,11 @@ Command add_curve(CLI::App& app) {
                 const Engine e = !a->segment.empty() || a->engine == "hull" ? Engine::Hull
                                  : a->engine == "scan"                       ? Engine::Scan
                                                                              : Engine::Auto;
-                const Analysed an = analyse_curve(a->scene, e, clock);
-                Json j = curve_json(an.m, an.c);
-                if (!a->segment.empty()) add_segment_json(j, an.m, an.c, parse_segment(a->segment, an.m));
+                internal::Session session = open_session(a->scene, e, clock);
+                const Model& m = session.curve_model();
+                const internal::Curve& c = session.curve();
+                Json j = curve_json(m, c);
+                if (!a->segment.empty()) add_segment_json(j, m, c, parse_segment(a->segment, m));
                 emit(dump(j), a->out);
                 clock.lap("output");
                 return 0;

@@ -23,9 +23,10 @@ Command add_grid(CLI::App& app) {
     example(sub, "Example:\n  scalecert grid certificates/scenes/tetra_box_switch.json --n 40 --bisections 8 --method fcl-gjk-indep");
     return {sub, [a] {
                 StageClock clock;
-                const Analysed an = analyse(a->scene, clock);
-                const fp::FpScene f = fp::to_fp(an.m.scene);
-                std::unique_ptr<fp::Method> meth = fp::make_method(a->method, an.m, f);
+                internal::Session session = open_session(a->scene, Engine::Hull, clock);
+                const Model& m = session.hull();
+                const fp::FpScene f = fp::to_fp(m.scene);
+                std::unique_ptr<fp::Method> meth = fp::make_method(a->method, m, f);
                 if (!meth) throw InputError("--method: unknown method '" + a->method + "'");
                 const fp::GridCurve gc = fp::grid_search(*meth, f, a->n, a->bisections, a->bisections ? 3 : 1);
                 Json j;

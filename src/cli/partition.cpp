@@ -17,8 +17,10 @@ Command add_partition(CLI::App& app) {
     example(sub, "Example:\n  scalecert partition certificates/scenes/stacked_cubes.json --out cert.json && scalecert-check cert.json");
     return {sub, [a] {
                 StageClock clock;
-                const Analysed an = analyse(a->scene, clock);
-                emit(dump(partition_json(an.m, an.c, build_partition(an.m, an.c))), a->out);
+                internal::Session session = open_session(a->scene, Engine::Hull, clock);
+                const Model& m = session.hull();
+                const internal::Curve& c = session.hull_curve();
+                emit(dump(partition_json(m, c, build_partition(m, c))), a->out);
                 clock.lap("partition and output");
                 return 0;
             }};

@@ -24,12 +24,12 @@ Command add_query(CLI::App& app) {
                  "  scalecert query certificates/scenes/stacked_cubes.json 1 1.9 --json  # with its certificate");
     return {sub, [a] {
                 StageClock clock;
-                const Analysed an = analyse(a->scene, clock);
-                const Model& m = an.m;
+                // The verdict alone may come from the walk; a certificate or a segment needs the hull.
+                internal::Session session = open_session(a->scene, Engine::Auto, clock);
                 std::string segment = a->segment;
                 if (a->in_t && segment.empty()) segment = "seeds";
                 std::optional<Segment> seg;
-                if (!segment.empty()) seg = parse_segment(segment, m);
+                if (!segment.empty()) seg = parse_segment(segment, session.hull());
                 Q r1, r2;
                 if (a->in_t) {
                     const Q t1 = read_rho(a->rho1, "T1", a->scene.opt), t2 = read_rho(a->rho2, "T2", a->scene.opt);
@@ -42,14 +42,14 @@ Command add_query(CLI::App& app) {
                     r1 = read_rho(a->rho1, "RHO1", a->scene.opt);
                     r2 = read_rho(a->rho2, "RHO2", a->scene.opt);
                 }
-                const internal::QueryResult r = internal::query(m, an.c, r1, r2, a->json);
                 std::string text;
                 if (a->json) {
-                    Json j = query_json(m, r);
+                    const Model& m = session.hull();
+                    Json j = query_json(m, internal::query(m, session.hull_curve(), r1, r2, true));
                     if (seg) add_query_segment_json(j, *seg, r1, r2);
                     text = dump(j);
                 } else {
-                    text = std::string(verdict_name(r.verdict)) + "\n";
+                    text = std::string(verdict_name(session.verdict(r1, r2))) + "\n";
                     if (a->in_t) text += "rho1 " + to_exact_string(r1) + "\nrho2 " + to_exact_string(r2) + "\n";
                     if (seg) {
                         if (!seg->note.empty()) text += "note " + seg->note + "\n";

@@ -4,6 +4,9 @@
 #include "scalecert/baselines.hpp"
 #include "scalecert/certificate.hpp"
 #include "scalecert/families.hpp"
+#include "scalecert/session.hpp"
+
+#include <functional>
 
 namespace scalecert::internal {
 
@@ -21,14 +24,34 @@ struct ClaimOptions {
     bool binary_doubles = false;
     Q tolerance = 0;
 };
-std::string certify_fp(const Model& m, const Curve& c, const std::string& claims, const std::string& name,
-                       const ClaimOptions& opt, bool json, long* wrong);
+// What claims are checked against: the hull model and its curve over all ρ1 > 0 (built on first
+// use), and the exact verdict and curve value at a pair (a session takes them from the walk where
+// it proved the curve: no hull for verdicts on a large scene).
+struct ClaimModels {
+    std::function<const Model&()> model;
+    std::function<const Curve&()> curve;
+    std::function<Verdict(const Q&, const Q&)> verdict;
+    std::function<Q(const Q&)> curve_value;
+    std::function<Q()> growth;  // ρ*
+    static ClaimModels of(const Model& m, const Curve& c);
+    static ClaimModels of(Session& s);
+};
+std::string certify_fp(const ClaimModels& models, const std::string& claims, const std::string& name, const ClaimOptions& opt,
+                       bool json, long* wrong);
+inline std::string certify_fp(Session& s, const std::string& claims, const std::string& name, const ClaimOptions& opt,
+                              bool json, long* wrong) {
+    return certify_fp(ClaimModels::of(s), claims, name, opt, json, wrong);
+}
+inline std::string certify_fp(const Model& m, const Curve& c, const std::string& claims, const std::string& name,
+                              const ClaimOptions& opt, bool json, long* wrong) {
+    return certify_fp(ClaimModels::of(m, c), claims, name, opt, json, wrong);
+}
 inline std::string certify_fp(const Model& m, const Curve& c, const std::string& claims, const std::string& name,
                               bool binary_doubles, bool json, long* wrong) {
     return certify_fp(m, c, claims, name, ClaimOptions{binary_doubles, Q(0)}, json, wrong);
 }
 // The line format alone.
-std::string certify_claim_lines(const Model& m, const Curve& c, const std::string& claims, const std::string& name,
+std::string certify_claim_lines(const ClaimModels& models, const std::string& claims, const std::string& name,
                                 bool binary_doubles, bool json, long* wrong);
 
 // Scene i of a family with its exact answers, drawn with scene_seed (campaign.hpp derives it from

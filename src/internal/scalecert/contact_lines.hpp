@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -53,6 +54,10 @@ struct Model {
     // The scan path's points (scan.hpp); null on the hull path.
     std::shared_ptr<const CompactScene> scan;
     ScanStats scan_stats;
+    // The scan path's proof covers ρ1 in [walk_lo, walk_hi] (none: unbounded): there the walked
+    // lines' envelope is the whole curve. Outside it, it is only a lower bound.
+    Q walk_lo;
+    std::optional<Q> walk_hi;
     // Point k of polyhedron i as given, on either path.
     Vec3q pt(int i, size_t k) const { return scan ? scan->P[i].point(k) : P[i].points[k]; }
 };

@@ -1,0 +1,77 @@
+#include "scalecert/session.hpp"
+
+#include <cstdio>
+#include <cstdlib>
+
+namespace scalecert::internal {
+
+Session::Session(Scene scene, std::string name, Engine engine)
+    : scene_(std::move(scene)), name_(std::move(name)), engine_(engine) {}
+
+Session::Session(std::shared_ptr<const CompactScene> scene, std::string name, Engine engine)
+    : compact_(std::move(scene)), name_(std::move(name)), engine_(engine) {}
+
+void Session::decide() {
+    if (decided_) return;
+    decided_ = true;
+    if (engine_ == Engine::Hull) return;
+    if (!compact_ && scene_ && (engine_ == Engine::Scan || scene_->P[0].points.size() + scene_->P[1].points.size() >= kScanFromPoints))
+        if (auto cs = compact_scene(*scene_)) compact_ = std::make_shared<const CompactScene>(std::move(*cs));
+    if (!compact_ || (engine_ == Engine::Auto && compact_->P[0].size() + compact_->P[1].size() < kScanFromPoints)) return;
+    try {
+        walk_.emplace(scan_model(compact_));
+        walk_curve_ = build_curve(*walk_);
+        lap("envelope and curve");
+    } catch (const NeedHull& e) {
+        walk_.reset();
+        handover_ = e.what();
+        if (std::getenv("SCALECERT_TIMING")) std::fprintf(stderr, "scalecert: scan path: %s; the hull path decides\n", e.what());
+    }
+}
+
+bool Session::walked() {
+    decide();
+    return walk_.has_value();
+}
+
+const Model& Session::hull() {
+    if (!hull_) {
+        if (hull_source_) {
+            hull_ = hull_source_();
+        } else {
+            if (clock_) clock_->restart();
+            if (!scene_ && !compact_) throw std::logic_error("Session: no scene and no hull source");
+            hull_ = std::make_shared<const Model>(build_model(scene_ ? *scene_ : full_scene(*compact_), name_));
+        }
+    }
+    return *hull_;
+}
+
+const Curve& Session::hull_curve() {
+    if (!hull_curve_) {
+        const Model& m = hull();
+        if (clock_) clock_->restart();
+        hull_curve_ = build_curve(m);
+        lap("envelope and curve");
+    }
+    return *hull_curve_;
+}
+
+const Curve& Session::curve() { return walked() ? walk_curve_ : hull_curve(); }
+const Model& Session::curve_model() { return walked() ? *walk_ : hull(); }
+
+bool Session::walk_covers(const Q& lo, const Q& hi) {
+    return walked() && walk_->walk_lo <= lo && (!walk_->walk_hi || hi <= *walk_->walk_hi);
+}
+
+Verdict Session::verdict(const Q& rho1, const Q& rho2) {
+    if (walk_covers(rho1, rho1)) return query(*walk_, walk_curve_, rho1, rho2, false).verdict;
+    return query(hull(), hull_curve(), rho1, rho2, false).verdict;
+}
+
+Q Session::curve_value(const Q& rho1) {
+    if (walk_covers(rho1, rho1)) return walk_curve_.env.value(walk_->lines, rho1);
+    return hull_curve().env.value(hull().lines, rho1);
+}
+
+}  // namespace scalecert::internal
