@@ -437,6 +437,33 @@ BOOST_AUTO_TEST_CASE(mesh_files_read_exactly_like_json) {
     }
 }
 
+BOOST_AUTO_TEST_CASE(mesh_scenes_take_the_commands_own_positionals) {
+    // With --p1/--p2 there is no SCENE: "query 1/2 13/4 --p1 ..." used to read 1/2 as the scene.
+    // The tetrahedron and box of tetra_box_switch (test_hand_curves): at ρ1 = 1/2 the curve is at
+    // 13/4 (touching), below it at 3 separated, above it at 7/2 overlapping.
+    std::string obj;
+    for (const auto& v : kTetra) obj += "v " + std::to_string(v[0]) + " " + std::to_string(v[1]) + " " + std::to_string(v[2]) + "\n";
+    std::string off = "OFF\n8 0 0\n";
+    for (const auto& v : kBox) off += std::to_string(v[0]) + " " + std::to_string(v[1]) + " " + std::to_string(v[2]) + "\n";
+    const std::string meshes = " --p1 " + write("pos-p1.obj", obj).string() + " --p2 " + write("pos-p2.off", off).string() +
+                               " --i1 1/2,2 --i2 1,4 --seed1 0,0,9/2 --seed2 0,0,0";
+    BOOST_TEST(run("query 1/2 13/4" + meshes).out == "touching\n");
+    BOOST_TEST(run("query 1/2 3" + meshes).out == "separated\n");
+    BOOST_TEST(run("query '' 1/2 7/2" + meshes).out == "overlapping\n");  // the empty SCENE still works
+    const fs::path claims = write("pos-claims.txt", "1/2 13/4 touching\n1/2 3 separated\n");
+    Run c = run("certify-fp " + claims.string() + meshes);
+    BOOST_TEST(c.status == 0, c.err);
+    BOOST_TEST(c.out.find("right: 2, wrong: 0") != std::string::npos);
+    const fs::path pairs = write("pos-pairs.txt", "0.5 3.25\n0.5 3\n");
+    BOOST_TEST(run("classify " + pairs.string() + meshes).out == "touching\nseparated\n");
+    // Too many words, or too few, are still one line and exit 2.
+    Run extra = run("query 1/2 13/4 5" + meshes);
+    BOOST_TEST(extra.status == 2);
+    Run few = run("query 1/2" + meshes);
+    BOOST_TEST(few.status == 2);
+    BOOST_TEST(few.err.find("RHO1 and RHO2 are required") != std::string::npos);
+}
+
 BOOST_AUTO_TEST_CASE(bad_mesh_files_and_options) {
     write("good.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n");
     const std::string g = (workdir() / "good.obj").string();

@@ -242,18 +242,81 @@ void curve_sizes(bool with_slow) {
     std::filesystem::remove_all(dir);
 }
 
+// Crossed prisms: a regular n-gon (rounded to integers on a circle of radius R) extruded along z
+// for P1 and along x for P2 above it: O(n^2) facet normals of the Minkowski sum, few on the curve.
+void write_prism(const std::string& path, int n, long R, bool second) {
+    std::ofstream o(path);
+    o << "OFF\n" << 2 * n << " 0 0\n";
+    const double pi = std::acos(-1.0);
+    for (int k = 0; k < n; ++k) {
+        const long x = std::lround(R * std::cos(2 * pi * k / n + 0.1)), y = std::lround(R * std::sin(2 * pi * k / n + 0.1));
+        for (long z : {-3 * R, 3 * R}) {
+            if (second) o << z + 12345 << ' ' << y + R / 5 << ' ' << x + 3 * R << '\n';
+            else o << x << ' ' << y << ' ' << z << '\n';
+        }
+    }
+}
+
+std::vector<std::string> query_rows;
+// Whole-process verdicts: `query` (a verdict: the walk where it proved the curve) against
+// `query --json` (a certificate: the hull model), and `partition`, in the same run.
+void query_costs(bool with_slow) {
+    const auto dir = std::filesystem::temp_directory_path() / ("scalecert-bench-" + std::to_string(::getpid()));
+    std::filesystem::create_directories(dir);
+    std::fprintf(stderr, "whole process: query (verdict) against query --json (certificate, hull model):\n");
+    query_rows.push_back("| scene | query: time | peak memory | query --json: time | peak memory | ratio |");
+    query_rows.push_back("|---|---|---|---|---|---|");
+    const std::string a = (dir / "a.off").string(), b = (dir / "b.off").string(), out = (dir / "out.txt").string();
+    auto row = [&](const std::string& name, bool hull_too) {
+        const std::vector<std::string> scene = {"--p1", a, "--p2", b, "--i1", "1/2,2", "--i2", "1/2,2", "--out", out};
+        std::vector<std::string> q = {"query", "", "1", "1"}, qj = {"query", "", "1", "1", "--json"};
+        q.insert(q.end(), scene.begin(), scene.end());
+        qj.insert(qj.end(), scene.begin(), scene.end());
+        const ProcessRun v = run_scalecert(q);
+        ProcessRun h{0, 0, 0};
+        if (hull_too) h = run_scalecert(qj);
+        char buf[512];
+        if (hull_too)
+            std::snprintf(buf, sizeof buf, "| %s | %.3g s | %.0f MB | %.3g s | %.0f MB | %.1fx |%s", name.c_str(), v.seconds, v.peak_kb / 1024.0,
+                          h.seconds, h.peak_kb / 1024.0, h.seconds / v.seconds, v.status || h.status ? " exit status!" : "");
+        else
+            std::snprintf(buf, sizeof buf, "| %s | %.3g s | %.0f MB | (--with-slow) | | |%s", name.c_str(), v.seconds, v.peak_kb / 1024.0,
+                          v.status ? " exit status!" : "");
+        query_rows.push_back(buf);
+        std::fprintf(stderr, "  %s\n", buf);
+    };
+    for (int n : {100000, 1000000}) {
+        const long R = 10L * n * 1000;
+        write_cloud(a, n, R, true, false, 5 + n);
+        write_cloud(b, n, R, true, true, 6 + n);
+        row("near-spheres, " + std::to_string(n) + " points each", n < 1000000 || with_slow);
+    }
+    for (int n : {200, 400, 800}) {
+        write_prism(a, n, 1000000, false);
+        write_prism(b, n, 1000000, true);
+        row("crossed " + std::to_string(n) + "-gon prisms", true);
+    }
+    std::filesystem::remove_all(dir);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-    bool quick = false, with_slow = false, sizes_only = false;
+    bool quick = false, with_slow = false, sizes_only = false, queries_only = false;
     for (int i = 1; i < argc; ++i) {
         if (std::strcmp(argv[i], "--quick") == 0) quick = true;
         else if (std::strcmp(argv[i], "--with-slow") == 0) with_slow = true;
         else if (std::strcmp(argv[i], "--sizes") == 0) sizes_only = true;
+        else if (std::strcmp(argv[i], "--queries") == 0) queries_only = true;
         else {
-            std::fprintf(stderr, "usage: scalecert-bench [--quick] [--sizes] [--with-slow]\n");
+            std::fprintf(stderr, "usage: scalecert-bench [--quick] [--sizes] [--queries] [--with-slow]\n");
             return 2;
         }
+    }
+    if (queries_only) {  // only the query table (its 10^6 hull run with --with-slow: minutes, GBs)
+        query_costs(with_slow);
+        for (const std::string& r : query_rows) std::printf("%s\n", r.c_str());
+        return 0;
     }
     if (sizes_only) {  // only the whole-process table (its 10^6 hull run with --with-slow: minutes, GBs)
         curve_sizes(with_slow);

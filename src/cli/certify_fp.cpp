@@ -17,7 +17,7 @@ Command add_certify_fp(CLI::App& app) {
     auto a = std::make_shared<Args>();
     CLI::App* sub = app.add_subcommand("certify-fp", "mark a floating-point program's claims right or wrong, exactly (exit 1 if any is wrong)");
     a->scene.add(sub);
-    sub->add_option("CLAIMS", a->claims, "claims: JSON (scalecert-claims-1, certificates/CLAIMS.md), or lines 'RHO1 RHO2 VERDICT', 'curve RHO1 RHO2', 'growth RHO'")->required();
+    sub->add_option("CLAIMS", a->claims, "claims: JSON (scalecert-claims-1, certificates/CLAIMS.md), or lines 'RHO1 RHO2 VERDICT', 'curve RHO1 RHO2', 'growth RHO'");
     sub->add_option("--tolerance", a->tolerance, "accept numeric claims within this relative error (exact, e.g. 1e-9; JSON claims); verdicts, contacts, planes and witness points must be exact");
     sub->add_flag("--json", a->json, "the report as JSON");
     add_out(sub, a->out);
@@ -26,6 +26,8 @@ Command add_certify_fp(CLI::App& app) {
                  "  scalecert certify-fp certificates/scenes/stacked_cubes.json claims.txt\n"
                  "  scalecert certify-fp certificates/scenes/stacked_cubes.json examples/claims.json --tolerance 1e-12");
     return {sub, [a] {
+                a->scene.shift_positionals({&a->claims});
+                if (a->claims.empty()) throw InputError("CLAIMS is required (see scalecert certify-fp --help)");
                 StageClock clock;
                 internal::Session session = open_session(a->scene, Engine::Auto, clock);
                 const std::string claims = read_input(a->claims, "claims file", kMaxSceneBytes);

@@ -13,18 +13,20 @@ using namespace internal;
 Command add_classify(CLI::App& app) {
     struct Args {
         SceneArgs scene;
-        std::string out, pairs = "-";
+        std::string out, pairs;
         unsigned threads = std::max(1u, std::thread::hardware_concurrency());
     };
     auto a = std::make_shared<Args>();
     CLI::App* sub = app.add_subcommand("classify", "exact verdicts for many pairs: lines 'rho1 rho2' (doubles, classified at their exact values)");
     a->scene.add(sub);
-    sub->add_option("PAIRS", a->pairs, "file of pairs, one 'rho1 rho2' per line ('-': standard input)");
+    sub->add_option("PAIRS", a->pairs, "file of pairs, one 'rho1 rho2' per line ('-', the default: standard input)");
     sub->add_option("--threads", a->threads, "threads (default: all cores)")->check(CLI::Range(1u, 256u));
     add_out(sub, a->out);
     example(sub, "Writes one verdict per line. Example:\n"
                  "  printf '1 1\\n1.5 1.5\\n2 2\\n' | scalecert classify certificates/scenes/stacked_cubes.json -");
     return {sub, [a] {
+                a->scene.shift_positionals({&a->pairs});
+                if (a->pairs.empty()) a->pairs = "-";
                 StageClock clock;
                 internal::Session session = open_session(a->scene, Engine::Auto, clock);
                 std::vector<double> r1, r2;

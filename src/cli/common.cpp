@@ -94,6 +94,14 @@ std::shared_ptr<const internal::CompactScene> SceneArgs::load_compact() const {
     return cs ? std::make_shared<internal::CompactScene>(std::move(*cs)) : nullptr;
 }
 
+void SceneArgs::shift_positionals(std::initializer_list<std::string*> rest) {
+    const bool meshes = !mesh[0].empty() || !mesh[1].empty();
+    if (!meshes || path.empty() || rest.size() == 0 || !(*(rest.end() - 1))->empty()) return;
+    std::string carry = path;
+    path.clear();
+    for (std::string* p : rest) std::swap(carry, *p);
+}
+
 std::string SceneArgs::name() const { return path.empty() ? "--p1 " + mesh[0] + " --p2 " + mesh[1] : path; }
 
 void add_out(CLI::App* sub, std::string& out) {

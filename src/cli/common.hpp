@@ -27,6 +27,10 @@ struct SceneArgs {
     // given as --p1/--p2; otherwise through load(). Null when the points do not fit IntPoints.
     std::shared_ptr<const internal::CompactScene> load_compact() const;
     std::string name() const;       // the scene file, or "--p1 A --p2 B": prefixes geometric errors
+    // With --p1/--p2 there is no SCENE, but the first positional word lands there: move it and
+    // the words after it one place on, into the command's own positionals (in order), when the
+    // last of those is empty. Then SCENE is empty, or the words were too many and load() says so.
+    void shift_positionals(std::initializer_list<std::string*> rest);
 };
 
 // --out FILE means the same for every command: its one output document goes to FILE, written

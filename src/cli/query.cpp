@@ -14,8 +14,8 @@ Command add_query(CLI::App& app) {
     auto a = std::make_shared<Args>();
     CLI::App* sub = app.add_subcommand("query", "separated / touching / overlapping at (RHO1, RHO2)");
     a->scene.add(sub);
-    sub->add_option("RHO1", a->rho1, "scaling of P1 (exact: 3/2, 1.5, 15e-1)")->required();
-    sub->add_option("RHO2", a->rho2, "scaling of P2")->required();
+    sub->add_option("RHO1", a->rho1, "scaling of P1 (exact: 3/2, 1.5, 15e-1)");
+    sub->add_option("RHO2", a->rho2, "scaling of P2");
     sub->add_flag("--json", a->json, "the verdict with its certificate, as JSON");
     sub->add_option("--segment", a->segment, "report t1, t2 and the gap along a segment: seeds | ellipsoids | x1,y1,z1:x2,y2,z2");
     sub->add_flag("--in-t", a->in_t, "RHO1 RHO2 are t1 t2 along the segment (default: seeds)");
@@ -23,6 +23,8 @@ Command add_query(CLI::App& app) {
     example(sub, "Examples:\n  scalecert query certificates/scenes/stacked_cubes.json 3/2 3/2        # touching\n"
                  "  scalecert query certificates/scenes/stacked_cubes.json 1 1.9 --json  # with its certificate");
     return {sub, [a] {
+                a->scene.shift_positionals({&a->rho1, &a->rho2});
+                if (a->rho1.empty() || a->rho2.empty()) throw InputError("RHO1 and RHO2 are required (see scalecert query --help)");
                 StageClock clock;
                 // The verdict alone may come from the walk; a certificate or a segment needs the hull.
                 internal::Session session = open_session(a->scene, Engine::Auto, clock);
