@@ -530,9 +530,10 @@ void check_partition(const J& c) {
             claim(sgn(at_[0]) > 0 && sgn(at_[1]) > 0 && r[0] <= at_[0] && at_[0] <= r[1] && at_[1] == L.at(at_[0]),
                   w + ".contact_witness is at a point of the piece with rho2 > 0");
             for (int i = 0; i < 2; ++i) {
+                // Vertices of the feature that span it (the scene may hold more points on it).
                 std::vector<int> fl = index_list(at(feats, kPoly[i]), sc.P[i].size(), w + ".features." + kPoly[i]);
-                std::sort(fl.begin(), fl.end());
-                claim(fl == G[i], w + ".features." + kPoly[i] + " lists the vertices of the contact feature");
+                for (int v : fl) claim(has(G[i], v), w + ".features." + kPoly[i] + " lists only points of the contact feature");
+                claim(affine_dim(sc, i, fl) == affine_dim(sc, i, G[i]), w + ".features." + kPoly[i] + " spans the contact feature");
                 std::sort(used[i].begin(), used[i].end());
                 for (int v : used[i]) claim(has(G[i], v), w + ".contact_witness." + kPoly[i] + " weights only vertices of the contact feature");
                 claim(affine_dim(sc, i, used[i]) == affine_dim(sc, i, G[i]),

@@ -74,35 +74,42 @@ struct Brute {
 // over all candidates (every facet normal of the Minkowski sum is one) gives the smallest faces.
 // Empty when no candidate touches (the pair is not touching there).
 inline std::pair<std::vector<int>, std::vector<int>> brute_contact(const Scene& sc, const Q& r1, const Q& r2) {
-    std::vector<int> g[2];
-    bool any = false;
-    std::set<Vec3z> seen;
+    // Candidate normals: cross products of two distinct directions between points (of either
+    // polytope), each direction taken once up to sign.
+    std::set<Vec3z> dirs;
     for (int i = 0; i < 2; ++i) {
         const auto& p = sc.P[i].points;
         for (size_t a = 0; a < p.size(); ++a)
             for (size_t c = a + 1; c < p.size(); ++c)
-                for (int j = 0; j < 2; ++j)
-                    for (size_t e = 0; e < sc.P[j].points.size(); ++e)
-                        for (size_t f = e + 1; f < sc.P[j].points.size(); ++f) {
-                            const Vec3q n = cross(sub(p[c], p[a]), sub(sc.P[j].points[f], sc.P[j].points[e]));
-                            if (sgn(n[0]) == 0 && sgn(n[1]) == 0 && sgn(n[2]) == 0) continue;
-                            for (const Vec3z& m : {primitive(n), neg(primitive(n))}) {
-                                if (!seen.insert(m).second) continue;
-                                const Vec3q mq = to_q(m);
-                                const Brute::Dir d = Brute::extremes(sc, mq);
-                                if (d.ns1 + r1 * (d.max1 - d.ns1) != d.ns2 + r2 * (d.min2 - d.ns2)) continue;
-                                const Q ext[2] = {d.max1, d.min2};
-                                for (int k = 0; k < 2; ++k) {
-                                    std::vector<int> att;
-                                    for (size_t v = 0; v < sc.P[k].points.size(); ++v)
-                                        if (dot(mq, sc.P[k].points[v]) == ext[k] && (!any || std::binary_search(g[k].begin(), g[k].end(), int(v))))
-                                            att.push_back(static_cast<int>(v));
-                                    g[k] = att;
-                                }
-                                any = true;
-                            }
-                        }
+                if (p[a] != p[c]) {
+                    const Vec3z d = primitive(sub(p[c], p[a]));
+                    dirs.insert(std::max(d, neg(d)));
+                }
     }
+    const std::vector<Vec3z> D(dirs.begin(), dirs.end());
+    std::vector<int> g[2];
+    bool any = false;
+    std::set<Vec3z> seen;
+    for (size_t a = 0; a < D.size(); ++a)
+        for (size_t b = a + 1; b < D.size(); ++b) {
+            const Vec3q n = cross(to_q(D[a]), to_q(D[b]));
+            if (sgn(n[0]) == 0 && sgn(n[1]) == 0 && sgn(n[2]) == 0) continue;
+            for (const Vec3z& m : {primitive(n), neg(primitive(n))}) {
+                if (!seen.insert(m).second) continue;
+                const Vec3q mq = to_q(m);
+                const Brute::Dir d = Brute::extremes(sc, mq);
+                if (d.ns1 + r1 * (d.max1 - d.ns1) != d.ns2 + r2 * (d.min2 - d.ns2)) continue;
+                const Q ext[2] = {d.max1, d.min2};
+                for (int k = 0; k < 2; ++k) {
+                    std::vector<int> att;
+                    for (size_t v = 0; v < sc.P[k].points.size(); ++v)
+                        if (dot(mq, sc.P[k].points[v]) == ext[k] && (!any || std::binary_search(g[k].begin(), g[k].end(), int(v))))
+                            att.push_back(static_cast<int>(v));
+                    g[k] = att;
+                }
+                any = true;
+            }
+        }
     return {g[0], g[1]};
 }
 

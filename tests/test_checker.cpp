@@ -56,7 +56,7 @@ const std::vector<StillTrue> kStillTrue = {
     {std::regex(".* at .*/closed_form$"), "name of the paper's formula that also gives the line: provenance, not a claim", false},
     {std::regex(".* at .*/equation$"), "name of the paper's equation that gives the switch point: provenance, not a claim", false},
     {std::regex("optional member removed at (/model|.*/closed_form|.*/equation|.*/same_line_normals|/growth_distance_note)$"), "an annotation left out (it is optional)", false},
-    {std::regex(".* at /switch_points/[0-9]+/features/P[12]/[0-9]+$"), "another vertex of the same contact feature: still a maximiser (a piece lists all of them)", false},
+    {std::regex(".* at .*/features/P[12]/[0-9]+$"), "another vertex of the same contact feature, or fewer that still span it", false},
     {std::regex(".* at .*/support_vertices/P[12]$"), "another vertex attaining the same support value", false},
     {std::regex(".* at /pieces/[0-9]+/same_line_normals/[0-9]+(/[0-2])?$"),
      "another normal that gives the very same line (the checker recomputes its line and maximisers), or one listed twice", false},
@@ -260,6 +260,28 @@ BOOST_AUTO_TEST_CASE(fresh_certificates_for_random_scenes_are_valid) {
             BOOST_TEST(check_file(cp) == 0, q);
             ++queries;
         }
+    }
+    // Boxes with the midpoints of their edges and faces as extra points, at lattice offsets:
+    // contact faces then hold points that are not vertices, and several normals share a line
+    // (the fuzzer's first finding against the piece contacts: the checker wanted every point).
+    for (int t = 0; t < 6; ++t) {
+        OJ s;
+        for (int i = 0; i < 2; ++i) {
+            const int o[3] = {i ? 2 : 0, i ? (t % 3) : 0, i ? 2 * (t / 3) : 0};
+            OJ vs = OJ::array();
+            for (int x = 0; x <= 2; ++x)
+                for (int y = 0; y <= 2; ++y)
+                    for (int z = 0; z <= 2; ++z)
+                        if (x != 1 || y != 1 || z != 1) vs.push_back({std::to_string(o[0] + x), std::to_string(o[1] + y), std::to_string(o[2] + z)});
+            s[i == 0 ? "P1" : "P2"] = {{"vertices", vs}};
+        }
+        s["I1"] = {"1/2", "3/2"};
+        s["I2"] = {"1/2", "3/2"};
+        fs::path sp = tmpdir() / "scene.json", cp = tmpdir() / "cert.json";
+        save(s, sp);
+        BOOST_TEST_REQUIRE(engine("partition " + sp.string() + " --out " + cp.string()) == 0);
+        BOOST_TEST(check_file(cp) == 0, "boxes with midpoints #" << t);
+        ++partitions;
     }
     std::cout << "fresh certificates checked: " << partitions << " partitions, " << queries << " query answers\n";
 }
