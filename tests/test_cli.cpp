@@ -523,6 +523,15 @@ BOOST_AUTO_TEST_CASE(every_subcommand_help_shows_an_example) {
         BOOST_TEST(h.out.find("scalecert " + std::string(c) + " ") != std::string::npos, c);
         BOOST_TEST(h.out.find("Example") != std::string::npos, c);
     }
+    // --version prints the project's version (CMakeLists.txt: project(scalecert VERSION ...)).
+    std::ifstream cm(std::string(SCALECERT_SOURCE_DIR) + "/CMakeLists.txt");
+    const std::string cml((std::istreambuf_iterator<char>(cm)), std::istreambuf_iterator<char>());
+    const size_t at = cml.find("project(scalecert VERSION ");
+    BOOST_TEST_REQUIRE(at != std::string::npos);
+    const std::string ver = cml.substr(at + 26, cml.find(' ', at + 26) - (at + 26));
+    Run v = run("--version");
+    BOOST_TEST(v.status == 0);
+    BOOST_TEST(v.out == "scalecert " + ver + "\n");
     // --out is a file everywhere; golden takes a directory under its own name.
     Run g = run("golden --family random --count 1 --dir " + (workdir() / "gd").string() + " --out x");
     BOOST_TEST(g.status == 2);

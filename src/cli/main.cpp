@@ -44,6 +44,7 @@ int main(int argc, char** argv) {
     mp_set_memory_functions(gmp_alloc, gmp_realloc, gmp_free);
     CLI::App app{"scalecert: exact, certified collision of uniformly scaled convex polyhedra"};
     app.require_subcommand(1);
+    app.set_version_flag("--version", std::string("scalecert ") + scalecert::version());
     app.footer("\n--out FILE, wherever it appears, writes the command's output to FILE atomically instead of\n"
                "standard output. Exit status: 0 done, 1 certify-fp found a wrong claim, 2 bad input.\n"
                "scalecert COMMAND --help shows an example.");
@@ -53,6 +54,8 @@ int main(int argc, char** argv) {
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForVersion& e) {
         return app.exit(e);
     } catch (const CLI::ParseError& e) {
         std::cerr << "scalecert: error: " << one_line(e.what()) << " (see scalecert --help)\n";
