@@ -475,11 +475,11 @@ void check_partition(const J& c) {
         if (touches)
             shape(p, w, {"rho1", "rho1_double", "slope", "slope_double", "intercept", "intercept_double", "contact", "features",
                          "contact_witness", "normal", "h1", "h1_double", "h2", "h2_double", "support_vertices"},
-                  {"closed_form", "same_line_normals"});
+                  {"closed_form", "same_line_normals", "zero_witness"});
         else
             shape(p, w, {"rho1", "rho1_double", "slope", "slope_double", "intercept", "intercept_double", "contact",
                          "normal", "h1", "h1_double", "h2", "h2_double", "support_vertices"},
-                  {"closed_form", "same_line_normals"});
+                  {"closed_form", "same_line_normals", "zero_witness"});
         annotation_string(p, "closed_form", w);
         V3 n = normal(at(p, "normal"), w + ".normal");
         std::vector<int> f[2];
@@ -503,17 +503,22 @@ void check_partition(const J& c) {
         std::vector<int> G[2] = {f[0], f[1]};
         if (p.contains("same_line_normals")) {
             const J& sl = at(p, "same_line_normals");
-            claim(sl.is_array() && !sl.empty(), w + ".same_line_normals is a nonempty list");
+            // At most four: each must shrink G1 or G2 to a proper face, of lower dimension, so more
+            // are never needed, and each costs a scan of every vertex.
+            claim(sl.is_array() && !sl.empty() && sl.size() <= 4, w + ".same_line_normals is a list of 1 to 4 normals");
             for (const J& o : sl) {
                 V3 m = normal(o, w + ".same_line_normals[]");
                 std::vector<int> fm[2];
                 Q g1 = sc.h(0, m, &fm[0]), g2 = sc.h(1, m, &fm[1]);
                 claim(sgn(g2) > 0 && -g1 / g2 == L.a && dot(m, sc.d) / g2 == L.b, w + ".same_line_normals give the same line");
+                bool shrinks = false;
                 for (int i = 0; i < 2; ++i) {
                     std::vector<int> both;
                     std::set_intersection(G[i].begin(), G[i].end(), fm[i].begin(), fm[i].end(), std::back_inserter(both));
+                    shrinks = shrinks || both.size() < G[i].size();
                     G[i] = std::move(both);
                 }
+                claim(shrinks, w + ".same_line_normals each shrink the contact features");
             }
         }
         if (!touches) {
@@ -540,6 +545,15 @@ void check_partition(const J& c) {
                       w + ".contact_witness." + kPoly[i] + " lies in the relative interior of the contact feature");
             }
         }
+        // A piece whose ρ2 falls from > 0 to ≤ 0 is proved touching down to ρ2 = 0 by a witness at
+        // the crossing (x0, 0): there P2(0) is the seed s2, which must lie in P1(x0). (Its other
+        // end is a switch point or curve end with ρ2 > 0, witnessed below; the set of meeting
+        // pairs is convex, so the piece between is touching: not only where I2 reaches.)
+        const bool crosses = sgn(L.at(r[0])) > 0 && sgn(L.at(r[1])) <= 0;
+        claim(p.contains("zero_witness") == crosses, w + ".zero_witness is given exactly when rho2 falls to 0 along the piece");
+        if (crosses)
+            claim(check_witness(sc, at(p, "zero_witness"), w + ".zero_witness") == P2{-L.b / L.a, Q(0)},
+                  w + ".zero_witness is where the piece reaches rho2 = 0");
         lines.push_back(L);
         normals.push_back(n);
         maxi.push_back({f[0], f[1]});

@@ -3,6 +3,9 @@
 #include "scalecert/closed_forms.hpp"
 #include "scalecert/witness.hpp"
 
+#include <algorithm>
+#include <iterator>
+
 #include <mpfr.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -106,11 +109,24 @@ Json piece_json(const Model& m, const Curve& c, const CurvePiece& p, bool certif
         put(j, "h2", L.h2);
         j["support_vertices"] = Json{{"P1", L.feat1.front()}, {"P2", L.feat2.front()}};
     }
+    // The other normals with the piece's line that cut its maximisers down to the contact
+    // features, each one that shrinks them (a face's proper face has lower dimension, so at most
+    // two per polyhedron): the checker scans every vertex for each, so it takes at most four.
     if (e.same.size() > 1) {
         Json also = Json::array();
-        for (size_t k : e.same)
-            if (k != e.line) also.push_back(ints(m.lines[k].normal));
-        j["same_line_normals"] = also;
+        std::vector<int> G[2] = {L.feat1, L.feat2};
+        for (size_t k : e.same) {
+            if (k == e.line) continue;
+            bool shrinks = false;
+            for (int i = 0; i < 2; ++i) {
+                const std::vector<int>& f = i ? m.lines[k].feat2 : m.lines[k].feat1;
+                std::vector<int> both;
+                std::set_intersection(G[i].begin(), G[i].end(), f.begin(), f.end(), std::back_inserter(both));
+                if (both.size() < G[i].size()) shrinks = true, G[i] = std::move(both);
+            }
+            if (shrinks) also.push_back(ints(m.lines[k].normal));
+        }
+        if (!also.empty()) j["same_line_normals"] = also;
     }
     return j;
 }
@@ -198,6 +214,8 @@ Json partition_json(const Model& m, const Curve& c, const Partition& p) {
     Json j = curve_body(m, c, true);
     for (size_t k = 0; k < c.pieces.size(); ++k)
         if (p.piece_witnesses[k]) j["pieces"][k]["contact_witness"] = witness_json(*p.piece_witnesses[k]);
+    for (size_t k = 0; k < c.pieces.size(); ++k)
+        if (p.zero_witnesses[k]) j["pieces"][k]["zero_witness"] = witness_json(*p.zero_witnesses[k]);
     for (size_t k = 0, w = 0; k < c.switches.size(); ++k)
         if (sgn(c.switches[k].rho2) > 0) j["switch_points"][k]["witness"] = witness_json(p.switch_witnesses[w++]);
     Json ends = Json::array();

@@ -100,6 +100,10 @@ Partition build_partition(const Model& m, const Curve& c) {
         if (const std::optional<Q> x = contact_rho1(m, c, p))
             w = make_witness(m, *x, m.lines[c.env.pieces[p.env].line].at(*x), p.contact.feat1, p.contact.feat2, true);
         P.piece_witnesses.push_back(std::move(w));
+        const ContactLine& L = m.lines[c.env.pieces[p.env].line];
+        std::optional<Witness> z;
+        if (sgn(L.at(p.from)) > 0 && sgn(L.at(p.to)) <= 0) z = make_witness(m, -L.intercept / L.slope, Q(0), c.env.pieces[p.env].line);
+        P.zero_witnesses.push_back(std::move(z));
     }
     for (const SwitchPoint& sp : c.switches)
         if (sgn(sp.rho2) > 0)

@@ -257,6 +257,14 @@ BOOST_AUTO_TEST_CASE(curve_claim_rules) {
         BOOST_CHECK_THROW(certify_fp(k.m, k.c, line, "c.txt", ClaimOptions{}, false, &wrong), InputError);
     BOOST_TEST(certify_fp(k.m, k.c, "curve 1 2\ncurve 3/2 12/7\n", "c.txt", ClaimOptions{}, false, &wrong).find("wrong: 0") !=
                std::string::npos);
+    // Rule 4 at a switch point: the chord over [1/2, 3/2] (within a tolerance of 1/2 of the curve)
+    // has its midpoint at the switch point (1, 2), whose contact is VE (the hostile review: EE,
+    // the next piece's, was judged right there and VE wrong).
+    const std::string chord = R"({"kind": "curve", "pieces": [{"rho1": ["1/2", "3/2"], "slope": "-43/28", "intercept": "225/56", "contact": ")";
+    BOOST_TEST(k.right(chord + R"(VE"}], "switch_points": [[1, 2]]})", "1/2"));
+    j = k.one(chord + R"(EE"}], "switch_points": [[1, 2]]})", "1/2");
+    BOOST_TEST(!j["right"].get<bool>());
+    BOOST_TEST(j["wrong_contacts"][0]["exact"] == "VE");
     // Rule 1: the stacked cubes' curve ρ2 = 3 − ρ1 (one (F,F) line for every ρ1 > 0) reaches 0 at
     // ρ1 = 3. A claim that stays above 0 up to ρ1 = 4 is wrong, however large the tolerance.
     Claims cubes("stacked_cubes");

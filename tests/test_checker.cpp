@@ -410,6 +410,79 @@ BOOST_AUTO_TEST_CASE(piece_contacts_where_normals_share_a_line_are_proved_minima
     report("cubes_sharing_an_edge", t);
 }
 
+BOOST_AUTO_TEST_CASE(pieces_below_I2_are_proved_down_to_rho2_zero) {
+    // The hostile review's forgery. The tetrahedron-and-box scene with P1 and P2 swapped (tests/
+    // data/tetra_on_box_curve_below_I2.json), I1 = [1/2, 10], I2 = [3/2, 4]. Swapping ρ1 and ρ2 in
+    // test_hand_curves' derivation: (V,F) becomes (F,V) ρ2 = 9/5 − 2ρ1/5 for ρ1 ≥ 2, (E,E) becomes
+    // ρ2 = (18 − 7ρ1)/4 on [18/13, 2], switching at (2, 1) — below lo2, where no overlap witness
+    // reaches. The last piece reaches ρ2 = 0 at ρ1 = 9/2, where the seed (0,0,9/2) of the
+    // tetrahedron lies on the top face z = 9/2 of the box scaled by 9/2: its zero witness.
+    const fs::path scene = fs::path(SCALECERT_SOURCE_DIR) / "tests/data/tetra_on_box_curve_below_I2.json";
+    const fs::path cert = tmpdir() / "below_I2.partition.json";
+    BOOST_TEST_REQUIRE(engine("partition " + scene.string() + " --out " + cert.string()) == 0);
+    OJ j = load(cert);
+    BOOST_TEST_REQUIRE(verdict_of(j) == 0);
+    BOOST_TEST_REQUIRE(j["pieces"].size() == 3u);
+    BOOST_TEST(j["pieces"][2]["contact"] == "FV");
+    BOOST_TEST(j["pieces"][2]["intercept"] == "9/5");
+    BOOST_TEST(j["switch_points"][1]["rho1"] == "2");
+    BOOST_TEST(j["switch_points"][1]["rho2"] == "1");
+    BOOST_TEST(!j["pieces"][1].contains("zero_witness"));
+    const OJ& z = j["pieces"][2]["zero_witness"];
+    BOOST_TEST(z["rho1"] == "9/2");
+    BOOST_TEST(z["rho2"] == "0");
+    BOOST_TEST((z["point"] == OJ::array({"0", "0", "9/2"})));
+    // The forgery: the (E,E) piece stretched over [18/13, 10], hiding the switch point (2, 1) and
+    // the (F,V) piece; accepted before, as the curve below lo2 was witnessed nowhere.
+    OJ f = j;
+    f["pieces"][1]["rho1"] = OJ::array({"18/13", "10"});
+    f["pieces"][1]["rho1_double"] = OJ::array({18.0 / 13, 10.0});
+    f["pieces"].erase(2);
+    f["switch_points"].erase(1);
+    f["curve_ends"][1] = OJ{{"rho1", "10"}, {"rho1_double", 10.0}, {"rho2", "-13"}, {"rho2_double", -13.0}};
+    OJ sep = OJ::array();
+    for (const auto& r : f["regions"]["separated"])
+        if (r["piece"] != 2) sep.push_back(r);
+    f["regions"]["separated"] = sep;
+    BOOST_TEST(verdict_of(f) == 1);
+    f["pieces"][1]["zero_witness"] = z;  // the true zero witness is not on this line
+    BOOST_TEST(verdict_of(f) == 1);
+    // A zero witness where ρ2 stays > 0, or none where it falls to 0: refused.
+    OJ extra = j;
+    extra["pieces"][1]["zero_witness"] = z;
+    BOOST_TEST(verdict_of(extra) == 1);
+    OJ none = j;
+    none["pieces"][2].erase("zero_witness");
+    BOOST_TEST(verdict_of(none) == 1);
+}
+
+BOOST_AUTO_TEST_CASE(same_line_normals_are_few_and_each_shrinks_the_features) {
+    // Cubes sharing an edge: (1,0,0) and (0,1,0) give the line; (1,1,0) and (2,1,0), in their
+    // normal cone, give it too, but add nothing once the edge is reached. Listing the same normal
+    // again, or the piece's own normal, or five, made the checker scan every vertex for each
+    // (the hostile review: 30,000 repeats of one normal in an 845 KB file took 496 s).
+    const fs::path scene = fs::path(SCALECERT_SOURCE_DIR) / "tests/data/cubes_sharing_an_edge.json";
+    const fs::path cert = tmpdir() / "cubes_edge2.partition.json";
+    BOOST_TEST_REQUIRE(engine("partition " + scene.string() + " --out " + cert.string()) == 0);
+    OJ j = load(cert);
+    BOOST_TEST_REQUIRE(verdict_of(j) == 0);
+    const OJ other = j["pieces"][0]["same_line_normals"][0];
+    OJ twice = j;
+    twice["pieces"][0]["same_line_normals"].push_back(other);
+    BOOST_TEST(verdict_of(twice) == 1);
+    OJ own = j;
+    own["pieces"][0]["same_line_normals"].push_back(j["pieces"][0]["normal"]);
+    BOOST_TEST(verdict_of(own) == 1);
+    OJ cone = j;
+    cone["pieces"][0]["same_line_normals"] = OJ::array({OJ::array({"1", "1", "0"})});  // shrinks the face to the edge itself
+    BOOST_TEST(verdict_of(cone) == 0);
+    cone["pieces"][0]["same_line_normals"].push_back(OJ::array({"2", "1", "0"}));  // shrinks nothing more
+    BOOST_TEST(verdict_of(cone) == 1);
+    OJ five = j;
+    for (int k = 0; k < 4; ++k) five["pieces"][0]["same_line_normals"].push_back(OJ::array({"1", std::to_string(k + 2), "0"}));
+    BOOST_TEST(verdict_of(five) == 1);
+}
+
 BOOST_AUTO_TEST_CASE(indices_must_be_exact_integers_in_range) {
     // 2^32, 0.9 and 0.5 were read as vertex 0. Every index field: features, support vertices,
     // witness and seed weights, region pieces.

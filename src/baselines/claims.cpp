@@ -357,7 +357,10 @@ private:
         for (const Seg& s : segs) {
             if (!s.label) continue;
             const Q mid = (s.x0 + s.x1) / 2;
-            const std::string e = exact_positive ? piece_contact(m(), c().env.pieces[c().env.locate(mid)]).label : std::string("none");
+            // At an exact switch point the contact is the switch point's.
+            std::string e = exact_positive ? piece_contact(m(), c().env.pieces[c().env.locate(mid)]).label : std::string("none");
+            for (const ExactSwitch& sw : ex)
+                if (sw.rho1 == mid) e = sw.label;
             if (*s.label != e) {
                 Json w;
                 put_exact(w, "rho1", mid);

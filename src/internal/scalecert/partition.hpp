@@ -19,6 +19,9 @@ struct Partition {
     // Per curve piece with a contact: a point of the touching set in the relative interiors of
     // both contact features (every feature vertex weighted > 0), at contact_rho1.
     std::vector<std::optional<Witness>> piece_witnesses;
+    // Per curve piece whose ρ2 falls from > 0 to ≤ 0 along it: a witness at the crossing (x0, 0),
+    // the seed s2 on P1(x0), so that the piece is proved touching all the way down to ρ2 = 0.
+    std::vector<std::optional<Witness>> zero_witnesses;
     std::optional<Witness> growth_witness;   // at (ρ*, ρ*) when ρ* > 0
     std::optional<Witness> end_witness[2];   // at (lo1, f(lo1)) and (hi1, f(hi1)) when f > 0
 };
