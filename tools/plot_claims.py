@@ -30,6 +30,7 @@ def main():
         print(__doc__)
         sys.exit(2)
     scene, claims_path, outdir = sys.argv[1:4]
+    os.makedirs(outdir, exist_ok=True)
     exe = sys.argv[4] if len(sys.argv) == 5 else os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "build", "scalecert")
     curve = json.loads(subprocess.run([exe, "curve", scene], capture_output=True, text=True, check=True).stdout)
     rep = subprocess.run([exe, "certify-fp", scene, claims_path, "--json"], capture_output=True, text=True)

@@ -46,7 +46,8 @@ int main(int argc, char** argv) {
     app.require_subcommand(1);
     app.set_version_flag("--version", std::string("scalecert ") + scalecert::version());
     app.footer("\n--out FILE, wherever it appears, writes the command's output to FILE atomically instead of\n"
-               "standard output. Exit status: 0 done, 1 certify-fp found a wrong claim, 2 bad input.\n"
+               "standard output. Exit status: 0 done, 1 certify-fp found a wrong claim, 2 bad input,\n"
+               "3 internal error (a bug: please report it).\n"
                "scalecert COMMAND --help shows an example.");
     const std::vector<cli::Command> commands = {
         cli::add_curve(app),     cli::add_query(app),      cli::add_partition(app), cli::add_classify(app),
