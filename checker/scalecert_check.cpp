@@ -13,9 +13,13 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <cstdint>
 #include <cstdlib>
 #include <iostream>
+#include <map>
+#include <memory>
 #include <new>
+#include <numeric>
 #include <set>
 #include <string>
 #include <vector>
@@ -37,6 +41,13 @@ long g_claims = 0;
 void claim(bool ok, const std::string& what) {
     ++g_claims;
     if (!ok) throw Invalid{what};
+}
+// The same, with the message built only when the claim fails (one that prints a number: a
+// conversion to decimal costs more than the comparison).
+template <class F>
+void claim_lazy(bool ok, F what) {
+    ++g_claims;
+    if (!ok) throw Invalid{what()};
 }
 
 // ---- strict JSON (RFC 8259) -----------------------------------------------------------------
@@ -196,7 +207,7 @@ bool is_nearest(const J& d, const Q& q) {
 Q field(const J& o, const std::string& key, const std::string& where) {
     const std::string w = where.empty() ? key : where + "." + key;
     Q q = num(o.at(key), w);
-    claim(is_nearest(o.at(key + "_double"), q), w + "_double is the nearest double to " + StrictTree::printable(q.get_str()));
+    claim_lazy(is_nearest(o.at(key + "_double"), q), [&] { return w + "_double is the nearest double to " + StrictTree::printable(q.get_str()); });
     return q;
 }
 std::vector<Q> fields(const J& o, const std::string& key, size_t n, const std::string& where) {
@@ -223,43 +234,252 @@ V3 point(const J& j, const std::string& where) {
     return {num(j[0], where + "[0]"), num(j[1], where + "[1]"), num(j[2], where + "[2]")};
 }
 
+// ---- support scans --------------------------------------------------------------------------
+// Every support value h_i(n) and every list of maximisers is a scan of all the vertices of a
+// polytope, once per normal direction: with the lists of normals a file may hold, the checker's
+// largest cost. The scan compares u·X_k, X_k = D v_k, over the vertices v_k, where D > 0 is the
+// lcm of the denominators of the polytope's vertex coordinates (at most 2^16384, the engine's own
+// limit): this orders the vertices as u·(v_k − s_i) does. Exact in every case, in the cheapest
+// arithmetic the numbers allow. With every |X| < 2^b (X held as int64 when b <= 62) and an integer
+// u with every |u_c| < 2^c:
+//   - b + c <= 61: in int64. Each product u_c X_c is below 2^61 in magnitude, each partial sum
+//     below 3·2^61 < 2^63: no overflow;
+//   - b <= 62 and c <= 62: in __int128. Each product is below 2^124 in magnitude, each partial
+//     sum below 3·2^124 < 2^126 < 2^127;
+//   - otherwise: in mpz.
+// The maximisers found are exactly those of the rational comparison, in ascending order
+// (tests/test_checker.cpp compares both on random scenes of every number kind).
+class Scan {
+public:
+    Scan(const std::vector<V3>& v, const std::string& what) : n_(v.size()) {
+        for (const V3& p : v)
+            for (const Q& c : p) {
+                if (mpz_cmp_ui(c.get_den_mpz_t(), 1) != 0) mpz_lcm(D_.get_mpz_t(), D_.get_mpz_t(), c.get_den_mpz_t());
+                if (mpz_sizeinbase(D_.get_mpz_t(), 2) > 16384)
+                    throw Unreadable{"the common denominator of " + what + "'s vertex coordinates has more than 16384 bits (scalecert's own limit)"};
+            }
+        Z_.resize(n_);
+        for (size_t k = 0; k < n_; ++k)
+            for (int c = 0; c < 3; ++c) {
+                mpz_divexact(Z_[k][c].get_mpz_t(), D_.get_mpz_t(), v[k][c].get_den_mpz_t());
+                Z_[k][c] *= v[k][c].get_num();
+            }
+        machine_ = sizeof(long) >= 8;  // mpz_*_si take the int64 values as long
+        for (int c = 0; c < 3 && machine_; ++c) {
+            X_[c].resize(n_);
+            for (size_t k = 0; k < n_ && machine_; ++k) {
+                machine_ = small_int(Z_[k][c].get_mpz_t(), X_[c][k]);
+                bits_ = std::max(bits_, static_cast<int>(mpz_sizeinbase(Z_[k][c].get_mpz_t(), 2)));
+            }
+        }
+        if (!machine_)
+            for (auto& x : X_) { x.clear(); x.shrink_to_fit(); }
+    }
+    // The vertices k (of `subset`, ascending, or of all) at which u·v_k is largest, ascending.
+    // u has integer coordinates.
+    std::vector<int> argmax(const std::array<mpz_class, 3>& u, const std::vector<int>* subset = nullptr) const {
+        const size_t n = subset ? subset->size() : n_;
+        const int* at = subset ? subset->data() : nullptr;
+        int ub = 0;
+        for (const mpz_class& c : u) ub = std::max(ub, static_cast<int>(mpz_sizeinbase(c.get_mpz_t(), 2)));
+        int64_t w[3];
+        const bool small_u = small_int(u[0].get_mpz_t(), w[0]) && small_int(u[1].get_mpz_t(), w[1]) && small_int(u[2].get_mpz_t(), w[2]);
+        const int64_t *x = X_[0].data(), *y = X_[1].data(), *z = X_[2].data();
+        if (machine_ && small_u && bits_ + ub <= 61) {
+            const int64_t a = w[0], b = w[1], c = w[2];
+            auto value = [=](size_t k) { return a * x[k] + b * y[k] + c * z[k]; };
+            return at ? scan<int64_t>(n, at, value) : scan<int64_t>(n, value);
+        }
+        if (machine_ && small_u) {
+            const __int128 a = w[0], b = w[1], c = w[2];
+            auto value = [=](size_t k) { return a * x[k] + b * y[k] + c * z[k]; };
+            return at ? scan<__int128>(n, at, value) : scan<__int128>(n, value);
+        }
+        std::vector<int> out;
+        mpz_class v, best;
+        for (size_t j = 0; j < n; ++j) {
+            const size_t k = at ? static_cast<size_t>(at[j]) : j;
+            mpz_mul(v.get_mpz_t(), u[0].get_mpz_t(), Z_[k][0].get_mpz_t());
+            mpz_addmul(v.get_mpz_t(), u[1].get_mpz_t(), Z_[k][1].get_mpz_t());
+            mpz_addmul(v.get_mpz_t(), u[2].get_mpz_t(), Z_[k][2].get_mpz_t());
+            const int c = out.empty() ? 1 : cmp(v, best);
+            if (c > 0) { mpz_swap(best.get_mpz_t(), v.get_mpz_t()); out.clear(); }
+            if (c >= 0) out.push_back(static_cast<int>(k));
+        }
+        return out;
+    }
+    const mpz_class& D() const { return D_; }
+    const std::array<mpz_class, 3>& X(size_t k) const { return Z_[k]; }  // D v_k
+    size_t size() const { return n_; }
+
+private:
+    size_t n_;
+    mpz_class D_ = 1;
+    std::vector<std::array<mpz_class, 3>> Z_;  // X_k = D v_k
+    bool machine_ = false;                     // every |X| < 2^62: also held in X_
+    int bits_ = 0;                             // every |X| < 2^bits_
+    std::vector<int64_t> X_[3];
+
+    // z as an int64 when |z| < 2^62 (and long holds it); false otherwise.
+    static bool small_int(mpz_srcptr z, int64_t& out) {
+        if (mpz_sizeinbase(z, 2) > 62 || !mpz_fits_slong_p(z)) return false;
+        out = mpz_get_si(z);
+        return true;
+    }
+    // All vertices, in one pass: the running maximum in a register, the list touched only when
+    // a vertex reaches it (rarely, once the maximum is found).
+    template <class T, class F>
+    static std::vector<int> scan(size_t n, F value) {
+        std::vector<int> out;
+        if (n == 0) return out;
+        out.reserve(8);
+        out.push_back(0);
+        T best = value(0);
+        for (size_t k = 1; k < n; ++k) {
+            const T v = value(k);
+            if (__builtin_expect(v >= best, 0)) {
+                if (v > best) { best = v; out.clear(); }
+                out.push_back(static_cast<int>(k));
+            }
+        }
+        return out;
+    }
+    // The vertices of a subset (ascending), in one pass.
+    template <class T, class F>
+    static std::vector<int> scan(size_t n, const int* at, F value) {
+        std::vector<int> out;
+        T best{};
+        for (size_t j = 0; j < n; ++j) {
+            const size_t k = static_cast<size_t>(at[j]);
+            const T v = value(k);
+            if (out.empty() || v >= best) {
+                if (out.empty() || v > best) { best = v; out.clear(); }
+                out.push_back(static_cast<int>(k));
+            }
+        }
+        return out;
+    }
+};
+
+using Z3 = std::array<mpz_class, 3>;
+mpz_class dotz(const Z3& a, const Z3& b) {
+    mpz_class r;
+    mpz_mul(r.get_mpz_t(), a[0].get_mpz_t(), b[0].get_mpz_t());
+    mpz_addmul(r.get_mpz_t(), a[1].get_mpz_t(), b[1].get_mpz_t());
+    mpz_addmul(r.get_mpz_t(), a[2].get_mpz_t(), b[2].get_mpz_t());
+    return r;
+}
+Z3 ints(const V3& n) { return {n[0].get_num(), n[1].get_num(), n[2].get_num()}; }  // an integer vector
+
 // ---- the scene ------------------------------------------------------------------------------
+// The claims compare exact values of the file against values recomputed from the scene. A value
+// from the scene is an integer over one joint denominator D*, the lcm of both polytopes' vertex
+// denominators and the seeds' (S_i = D* s_i, Delta = D* (s2 − s1), H_i = D* h_i): every
+// recomputed quantity is then an integer combination of the scene's numbers, and each comparison
+// with a number p/q of the file, p D* = q H, costs a product by the file's own number, never a gcd
+// of two of the scene's numbers (which would cost, per normal or per named vertex, a power of
+// digits the file pays for once).
 struct Scene {
     std::vector<V3> P[2];
-    V3 s[2], d;
+    V3 s[2];
     Q lo[2], hi[2];
-    // h(n) for polyhedron i: max over vertices of σ n·(v − s_i), σ = +1 for P1, −1 for P2, and
-    // every vertex attaining it (ascending).
-    Q h(int i, const V3& n, std::vector<int>* argmax = nullptr) const {
-        Q best;
-        for (size_t k = 0; k < P[i].size(); ++k) {
-            Q v = dot(n, sub(P[i][k], s[i]));
-            if (i == 1) v = -v;
-            if (k == 0 || v > best) { best = v; if (argmax) argmax->clear(); }
-            if (argmax && v == best) argmax->push_back(static_cast<int>(k));
+    std::unique_ptr<Scan> scan[2];
+    mpz_class Dj = 1, E[2];  // D* and D*/D_i
+    Z3 S[2], Delta;          // D* s_i and D* (s2 − s1)
+    std::array<Q, 3> sdv[2]; // D_i s_i = S_i / E_i (exact rationals), for the combinations over D_i
+    void prepare() {
+        for (int i = 0; i < 2; ++i) {
+            mpz_lcm(Dj.get_mpz_t(), Dj.get_mpz_t(), scan[i]->D().get_mpz_t());
+            for (const Q& c : s[i]) mpz_lcm(Dj.get_mpz_t(), Dj.get_mpz_t(), c.get_den_mpz_t());
         }
-        return best;
+        for (int i = 0; i < 2; ++i) {
+            E[i] = Dj / scan[i]->D();
+            for (int c = 0; c < 3; ++c) {
+                mpz_divexact(S[i][c].get_mpz_t(), Dj.get_mpz_t(), s[i][c].get_den_mpz_t());
+                S[i][c] *= s[i][c].get_num();
+            }
+            sdv[i] = {Q(S[i][0], E[i]), Q(S[i][1], E[i]), Q(S[i][2], E[i])};
+            for (Q& q : sdv[i]) q.canonicalize();
+        }
+        for (int c = 0; c < 3; ++c) Delta[c] = S[1][c] - S[0][c];
     }
-    // The point s_i + ρ (v − s_i).
-    V3 scaled(int i, int k, const Q& rho) const {
-        V3 y;
-        for (int c = 0; c < 3; ++c) y[c] = s[i][c] + rho * (P[i][k][c] - s[i][c]);
-        return y;
+
+    // D* h_i(u) for an integer u, given a vertex k attaining the maximum of u·v: u·X_k E_i − u·S_i
+    // (h_1(n) = n·(v − s1) with u = n; h_2(n) = −n·(w − s2) with u = −n).
+    mpz_class support_at(int i, const Z3& u, int k) const {
+        mpz_class r = dotz(u, scan[i]->X(static_cast<size_t>(k))) * E[i];
+        r -= dotz(u, S[i]);
+        return r;
     }
+    // h_i(n), max over the vertices of σ n·(v − s_i) (σ = +1 for P1, −1 for P2), and every vertex
+    // attaining it (ascending): the rational value (tests compare it with a plain rational scan).
+    Q h(int i, const V3& n, std::vector<int>* argmax = nullptr) const {
+        Z3 u = ints(n);
+        if (i == 1) for (auto& c : u) c = -c;
+        std::vector<int> m = scan[i]->argmax(u);
+        Q r(support_at(i, u, m[0]), Dj);
+        r.canonicalize();
+        if (argmax) *argmax = std::move(m);
+        return r;
+    }
+    // Both support values of n over D* (H_i = D* h_i(n)) and their maximisers, computed once per
+    // direction: n = g p with p primitive and g > 0 has the maximisers of p and H_i(n) = g H_i(p)
+    // (h is positively homogeneous), so a normal repeated, or listed again as a multiple, costs no
+    // second scan. Returns the direction's entry (the same pointer for the same direction).
+    struct Support { mpz_class H[2]; std::vector<int> max[2]; };
+    const Support* support(const V3& n, mpz_class H_out[2], const std::vector<int>* max_out[2] = nullptr) const {
+        mpz_class g = 0;
+        for (const Q& c : n) mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), c.get_num_mpz_t());
+        Z3 p;
+        std::string key;
+        for (int c = 0; c < 3; ++c) {
+            mpz_divexact(p[c].get_mpz_t(), n[c].get_num_mpz_t(), g.get_mpz_t());
+            key += p[c].get_str(16) + ",";
+        }
+        auto it = cache_.find(key);
+        if (it == cache_.end()) {
+            Support e;
+            for (int i = 0; i < 2; ++i) {
+                Z3 u = p;
+                if (i == 1) for (auto& c : u) c = -c;
+                e.max[i] = scan[i]->argmax(u);
+                e.H[i] = support_at(i, u, e.max[i][0]);
+            }
+            it = cache_.emplace(std::move(key), std::move(e)).first;
+        }
+        for (int i = 0; i < 2; ++i) {
+            H_out[i] = it->second.H[i] * g;
+            if (max_out) max_out[i] = &it->second.max[i];
+        }
+        return &it->second;
+    }
+    // q == H / D* (q a number of the file, H over D*).
+    bool over(const Q& q, const mpz_class& H) const { return q.get_num() * Dj == q.get_den() * H; }
+    Q value(const mpz_class& H) const { Q r(H, Dj); r.canonicalize(); return r; }  // H / D*, for messages
+
+private:
+    mutable std::map<std::string, Support> cache_;
 };
 const char* kPoly[2] = {"P1", "P2"};
 
 // The dimension of the affine hull of a vertex set, in one pass: a vertex that does not raise it
-// lies in the hull of those before, which only grows.
+// lies in the hull of those before, which only grows. On X_k = D v_k (the same dimension).
 int affine_dim(const Scene& sc, int i, const std::vector<int>& idx) {
-    const V3& o = sc.P[i][idx[0]];
+    const Scan& s = *sc.scan[i];
+    const Z3& o = s.X(static_cast<size_t>(idx[0]));
     int dim = 0;
-    V3 e1, c;
+    Z3 e1, c, v, x;
     for (int k : idx) {
-        V3 v = sub(sc.P[i][k], o);
-        if (dim == 0 && nonzero(v)) { e1 = v; dim = 1; }
-        else if (dim == 1 && nonzero(cross(e1, v))) { c = cross(e1, v); dim = 2; }
-        else if (dim == 2 && sgn(dot(c, v)) != 0) return 3;
+        const Z3& p = s.X(static_cast<size_t>(k));
+        for (int j = 0; j < 3; ++j) v[j] = p[j] - o[j];
+        const bool nz = sgn(v[0]) || sgn(v[1]) || sgn(v[2]);
+        if (dim == 0 && nz) { e1 = v; dim = 1; continue; }
+        if (dim == 1) {
+            x = {e1[1] * v[2] - e1[2] * v[1], e1[2] * v[0] - e1[0] * v[2], e1[0] * v[1] - e1[1] * v[0]};
+            if (sgn(x[0]) || sgn(x[1]) || sgn(x[2])) { c = x; dim = 2; }
+            continue;
+        }
+        if (dim == 2 && sgn(dotz(c, v)) != 0) return 3;
     }
     return dim;
 }
@@ -279,8 +499,9 @@ Scene read_scene(const J& j) {
         for (size_t k = 0; k < vs.size(); ++k) sc.P[i].push_back(point(vs[k], w + ".vertices[" + std::to_string(k) + "]"));
         claim(sc.P[i].size() >= 4, w + " has at least 4 vertices");
         sc.s[i] = point(at(p, "seed"), w + ".seed");
+        sc.scan[i] = std::make_unique<Scan>(sc.P[i], kPoly[i]);
     }
-    sc.d = sub(sc.s[1], sc.s[0]);
+    sc.prepare();
     const char* iv[2] = {"I1", "I2"};
     for (int i = 0; i < 2; ++i) {
         const J& r = at(j, iv[i]);
@@ -292,12 +513,13 @@ Scene read_scene(const J& j) {
     return sc;
 }
 
-// Weights [[index, "w"], ...] over polyhedron i: distinct indices, w > 0, sum 1. Returns Σ w v.
-V3 combination(const Scene& sc, int i, const J& w, const std::string& where, std::vector<int>* used = nullptr) {
+// Weights [[index, "w"], ...] over polyhedron i: distinct indices, w > 0, sum 1. Returns
+// D_i Σ w v = Σ w X: each term a product of the file's weight and the scene's integers.
+std::array<Q, 3> combination(const Scene& sc, int i, const J& w, const std::string& where, std::vector<int>* used = nullptr) {
     claim(w.is_array() && !w.empty(), where + " is a nonempty list of weights");
     std::set<size_t> seen;
     Q total = 0;
-    V3 x{0, 0, 0};
+    std::array<Q, 3> x{Q(0), Q(0), Q(0)};
     for (size_t k = 0; k < w.size(); ++k) {
         std::string wk = where + "[" + std::to_string(k) + "]";
         claim(w[k].is_array() && w[k].size() == 2, wk + " is [index, weight]");
@@ -306,7 +528,8 @@ V3 combination(const Scene& sc, int i, const J& w, const std::string& where, std
         Q l = num(w[k][1], wk + " weight");
         claim(sgn(l) > 0, wk + " weight is > 0");
         total += l;
-        for (int c = 0; c < 3; ++c) x[c] += l * sc.P[i][idx][c];
+        const Z3& X = sc.scan[i]->X(idx);
+        for (int c = 0; c < 3; ++c) x[c] += l * Q(X[c]);
         if (used) used->push_back(static_cast<int>(idx));
     }
     claim(total == 1, where + " weights sum to 1");
@@ -319,25 +542,27 @@ void check_seed_interior(const Scene& sc, const J& j) {
     for (int i = 0; i < 2; ++i) {
         std::string w = std::string("seed_interior.") + kPoly[i];
         std::vector<int> used;
-        claim(combination(sc, i, at(j, kPoly[i]), w, &used) == sc.s[i], w + " combines to the seed");
+        claim(combination(sc, i, at(j, kPoly[i]), w, &used) == sc.sdv[i], w + " combines to the seed");
         const bool spans = affine_dim(sc, i, used) == 3;
         claim(spans, w + " uses vertices spanning 3 dimensions");
     }
 }
 
-// A witness: a common point of P1(ρ1) and P2(ρ2), s + ρ Σ λ (v − s) on each side.
+// A witness: a common point of P1(ρ1) and P2(ρ2), s + ρ Σ λ (v − s) on each side. With
+// c = Σ λ X / D_i (combination()), the point y = s + ρ (c − s) equals p iff
+// ρ D_i c = D_i p + (ρ − 1) D_i s: products of the file's numbers and the scene's.
 P2 check_witness(const Scene& sc, const J& w, const std::string& where, std::vector<int>* used = nullptr) {
     shape(w, where, {"rho1", "rho1_double", "rho2", "rho2_double", "point", "point_double", "P1", "P2"});
     Q r1 = field(w, "rho1", where), r2 = field(w, "rho2", where);
     claim(sgn(r1) >= 0 && sgn(r2) >= 0, where + " scalings are >= 0");
     std::vector<Q> x = fields(w, "point", 3, where);
-    V3 p{x[0], x[1], x[2]};
     const Q* r[2] = {&r1, &r2};
     for (int i = 0; i < 2; ++i) {
-        V3 c = combination(sc, i, at(w, kPoly[i]), where + "." + kPoly[i], used ? &used[i] : nullptr);
-        V3 y;
-        for (int k = 0; k < 3; ++k) y[k] = sc.s[i][k] + *r[i] * (c[k] - sc.s[i][k]);
-        claim(y == p, where + ".point lies in " + kPoly[i] + "(rho" + std::to_string(i + 1) + ")");
+        std::array<Q, 3> c = combination(sc, i, at(w, kPoly[i]), where + "." + kPoly[i], used ? &used[i] : nullptr);
+        const Q D(sc.scan[i]->D());
+        bool on = true;
+        for (int k = 0; k < 3; ++k) on = on && *r[i] * c[k] == x[k] * D + (*r[i] - 1) * sc.sdv[i][k];
+        claim(on, where + ".point lies in " + kPoly[i] + "(rho" + std::to_string(i + 1) + ")");
     }
     return {r1, r2};
 }
@@ -425,25 +650,32 @@ void annotation_string(const J& o, const char* key, const std::string& where) {
 // in g the vertices of each feature.
 std::string switch_contact(const Scene& sc, const V3& n, const V3& m, const Q rho[2], const std::vector<int> A[2],
                            std::vector<int> g[2], const std::string& where) {
-    const V3 u = cross(n, m);
-    claim(nonzero(u), where + ": the neighbouring pieces' normals are not parallel");
-    std::vector<Q> t[2];
+    const V3 uq = cross(n, m);
+    claim(nonzero(uq), where + ": the neighbouring pieces' normals are not parallel");
+    const Z3 u = ints(uq), minus_u{-u[0], -u[1], -u[2]};
+    // A vertex's place on ℓ is t_k = u·(s_i + ρ_i (v_k − s_i)), which increases with u·v_k since
+    // ρ_i > 0 (ρ1 >= lo1 > 0; ρ2 > 0 at a touching switch): the ends of S_i are the vertices of A_i
+    // extreme along u and −u, which the exact scan finds. D* t_k = (1 − ρ_i) u·S_i + ρ_i u·X_k E_i.
+    std::vector<int> top[2], bottom[2];
     Q lo[2], hi[2];
     for (int i = 0; i < 2; ++i) {
         claim(!A[i].empty(), where + ": some vertex of " + kPoly[i] + " attains both neighbouring pieces' support values");
-        for (int k : A[i]) t[i].push_back(dot(u, sc.scaled(i, k, rho[i])));
-        lo[i] = *std::min_element(t[i].begin(), t[i].end());
-        hi[i] = *std::max_element(t[i].begin(), t[i].end());
+        top[i] = sc.scan[i]->argmax(u, &A[i]);
+        bottom[i] = sc.scan[i]->argmax(minus_u, &A[i]);
+        const Q us(dotz(u, sc.S[i]));
+        auto place = [&](int k) -> Q {
+            return (1 - rho[i]) * us + rho[i] * Q(dotz(u, sc.scan[i]->X(static_cast<size_t>(k))) * sc.E[i]);
+        };
+        hi[i] = place(top[i][0]);
+        lo[i] = place(bottom[i][0]);
     }
     const Q tlo = std::max(lo[0], lo[1]), thi = std::min(hi[0], hi[1]);
     claim(tlo <= thi, where + ": the contact features of P1 and P2 meet");
     std::string label;
     for (int i = 0; i < 2; ++i) {
         const bool edge = lo[i] < hi[i] && thi > lo[i] && tlo < hi[i];
-        const Q end = thi == lo[i] ? lo[i] : hi[i];  // the end T meets, when it is a vertex
-        g[i].clear();
-        for (size_t k = 0; k < A[i].size(); ++k)
-            if (edge || t[i][k] == end) g[i].push_back(A[i][k]);
+        // all of S_i, or the vertices at the end T meets (t_k == lo_i: bottom; t_k == hi_i: top)
+        g[i] = edge ? A[i] : thi == lo[i] ? bottom[i] : top[i];
         label += edge ? 'E' : 'V';
     }
     return label;
@@ -461,7 +693,7 @@ void check_partition(const J& c) {
     std::vector<Line> lines;
     std::vector<V3> normals;
     std::vector<std::array<Q, 2>> ranges;
-    std::vector<std::array<std::vector<int>, 2>> maxi;  // each piece's maximisers on P1, P2
+    std::vector<std::array<const std::vector<int>*, 2>> maxi;  // each piece's maximisers on P1, P2 (in the scene's cache)
     for (size_t k = 0; k < pieces.size(); ++k) {
         const J& p = pieces[k];
         std::string w = "pieces[" + std::to_string(k) + "]";
@@ -477,45 +709,61 @@ void check_partition(const J& c) {
                   {"closed_form", "same_line_normals"});
         annotation_string(p, "closed_form", w);
         V3 n = normal(at(p, "normal"), w + ".normal");
-        std::vector<int> f[2];
-        Q h1 = sc.h(0, n, &f[0]), h2 = sc.h(1, n, &f[1]);
-        claim(field(p, "h1", w) == h1 && sgn(h1) > 0, w + ".h1 = max n.(v - s1) over P1, recomputed: " + h1.get_str());
-        claim(field(p, "h2", w) == h2 && sgn(h2) > 0, w + ".h2 = max -n.(w - s2) over P2, recomputed: " + h2.get_str());
-        Line L{-h1 / h2, dot(n, sc.d) / h2};
-        claim(field(p, "slope", w) == L.a, w + ".slope = -h1/h2");
-        claim(field(p, "intercept", w) == L.b, w + ".intercept = n.d/h2");
+        mpz_class H[2];  // D* h1, D* h2
+        const std::vector<int>* f[2];
+        const Scene::Support* own = sc.support(n, H, f);
+        const Q h1 = field(p, "h1", w);
+        claim_lazy(sc.over(h1, H[0]) && sgn(H[0]) > 0, [&] { return w + ".h1 = max n.(v - s1) over P1, recomputed: " + sc.value(H[0]).get_str(); });
+        const Q h2 = field(p, "h2", w);
+        claim_lazy(sc.over(h2, H[1]) && sgn(H[1]) > 0, [&] { return w + ".h2 = max -n.(w - s2) over P2, recomputed: " + sc.value(H[1]).get_str(); });
+        // The line from h1, h2 (now known to be the recomputed values): slope −h1/h2, and the
+        // intercept b with b h2 = n·d.
+        const Q a = field(p, "slope", w);
+        claim(a == -h1 / h2, w + ".slope = -h1/h2");
+        const Q b = field(p, "intercept", w);
+        claim(sc.over(b * h2, dotz(ints(n), sc.Delta)), w + ".intercept = n.d/h2");
+        const Line L{a, b};
         std::vector<Q> r = fields(p, "rho1", 2, w);
         claim(r[0] < r[1] || (pieces.size() == 1 && r[0] == r[1]), w + ".rho1 is a nonempty range");
         const J& sv = at(p, "support_vertices");
         shape(sv, w + ".support_vertices", {"P1", "P2"});
         for (int i = 0; i < 2; ++i)
-            claim(has(f[i], static_cast<int>(index(at(sv, kPoly[i]), sc.P[i].size(), w + ".support_vertices." + kPoly[i]))),
+            claim(has(*f[i], static_cast<int>(index(at(sv, kPoly[i]), sc.P[i].size(), w + ".support_vertices." + kPoly[i]))),
                   w + ".support_vertices attain the support values");
         // The contact features G1, G2: the vertices maximising every listed normal with this line.
         // Every touching normal maximises on the touching set T, so T lies in G1(ρ1) ∩ G2(ρ2)
         // whatever normals are listed; the witness below, a point of T in the relative interiors of
         // both, shows no smaller face holds T (a list missing a touching normal cannot have one).
-        std::vector<int> G[2] = {f[0], f[1]};
+        // Each direction's maximisers enter the intersection once (a normal listed again, or a
+        // multiple of one, has the same maximisers): the intersections cost no more than the scans.
+        std::vector<int> Gs[2];
+        const std::vector<int>* G[2] = {f[0], f[1]};
         if (p.contains("same_line_normals")) {
             const J& sl = at(p, "same_line_normals");
             claim(sl.is_array() && !sl.empty(), w + ".same_line_normals is a nonempty list");
+            std::set<const Scene::Support*> seen{own};
             for (const J& o : sl) {
                 V3 m = normal(o, w + ".same_line_normals[]");
-                std::vector<int> fm[2];
-                Q g1 = sc.h(0, m, &fm[0]), g2 = sc.h(1, m, &fm[1]);
-                claim(sgn(g2) > 0 && -g1 / g2 == L.a && dot(m, sc.d) / g2 == L.b, w + ".same_line_normals give the same line");
+                mpz_class g[2];  // D* h1(m), D* h2(m): the same line iff h2 > 0, −h1 = a h2 and m·d = b h2
+                const std::vector<int>* fm[2];
+                const Scene::Support* dir = sc.support(m, g, fm);
+                claim(sgn(g[1]) > 0 && -g[0] * L.a.get_den() == L.a.get_num() * g[1] &&
+                          dotz(ints(m), sc.Delta) * L.b.get_den() == L.b.get_num() * g[1],
+                      w + ".same_line_normals give the same line");
+                if (!seen.insert(dir).second) continue;
                 for (int i = 0; i < 2; ++i) {
                     std::vector<int> both;
-                    std::set_intersection(G[i].begin(), G[i].end(), fm[i].begin(), fm[i].end(), std::back_inserter(both));
-                    G[i] = std::move(both);
+                    std::set_intersection(G[i]->begin(), G[i]->end(), fm[i]->begin(), fm[i]->end(), std::back_inserter(both));
+                    Gs[i] = std::move(both);
+                    G[i] = &Gs[i];
                 }
             }
         }
         if (!touches) {
             claim(sgn(L.at(r[0])) <= 0, w + ".contact is null only where rho2 <= 0 all along the piece");
         } else {
-            claim(!G[0].empty() && !G[1].empty(), w + ": the same-line normals share maximisers on P1 and on P2");
-            const std::string label{dimension_letter(sc, 0, G[0]), dimension_letter(sc, 1, G[1])};
+            claim(!G[0]->empty() && !G[1]->empty(), w + ": the same-line normals share maximisers on P1 and on P2");
+            const std::string label{dimension_letter(sc, 0, *G[0]), dimension_letter(sc, 1, *G[1])};
             claim(contact_string(at(p, "contact"), w + ".contact") == label,
                   w + ".contact is " + label + ", the smallest faces holding the touching set");
             const J& feats = at(p, "features");
@@ -527,10 +775,10 @@ void check_partition(const J& c) {
             for (int i = 0; i < 2; ++i) {
                 std::vector<int> fl = index_list(at(feats, kPoly[i]), sc.P[i].size(), w + ".features." + kPoly[i]);
                 std::sort(fl.begin(), fl.end());
-                claim(fl == G[i], w + ".features." + kPoly[i] + " lists the vertices of the contact feature");
+                claim(fl == *G[i], w + ".features." + kPoly[i] + " lists the vertices of the contact feature");
                 std::sort(used[i].begin(), used[i].end());
-                for (int v : used[i]) claim(has(G[i], v), w + ".contact_witness." + kPoly[i] + " weights only vertices of the contact feature");
-                claim(affine_dim(sc, i, used[i]) == affine_dim(sc, i, G[i]),
+                for (int v : used[i]) claim(has(*G[i], v), w + ".contact_witness." + kPoly[i] + " weights only vertices of the contact feature");
+                claim(affine_dim(sc, i, used[i]) == affine_dim(sc, i, *G[i]),
                       w + ".contact_witness." + kPoly[i] + " lies in the relative interior of the contact feature");
             }
         }
@@ -561,7 +809,7 @@ void check_partition(const J& c) {
         // The contact label, recomputed from all maximisers of both neighbouring normals.
         std::vector<int> A[2], g[2];
         for (int i = 0; i < 2; ++i)
-            std::set_intersection(maxi[k][i].begin(), maxi[k][i].end(), maxi[k + 1][i].begin(), maxi[k + 1][i].end(), std::back_inserter(A[i]));
+            std::set_intersection(maxi[k][i]->begin(), maxi[k][i]->end(), maxi[k + 1][i]->begin(), maxi[k + 1][i]->end(), std::back_inserter(A[i]));
         const Q rho[2] = {x, y};
         const std::string label = switch_contact(sc, normals[k], normals[k + 1], rho, A, g, w);
         claim(contact_string(at(sw[k], "contact"), w + ".contact") == label, w + ".contact is " + label + ", the features touching there");
@@ -592,13 +840,16 @@ void check_partition(const J& c) {
     if (gc.contains("seeds_coincide")) {
         shape(gc, "growth_distance_certificate", {"seeds_coincide"});
         claim(at(gc, "seeds_coincide") == J(true), "growth_distance_certificate.seeds_coincide is true");
-        claim(sc.d == V3{0, 0, 0} && sgn(g) == 0, "growth distance 0: the seeds coincide");
+        claim(!sgn(sc.Delta[0]) && !sgn(sc.Delta[1]) && !sgn(sc.Delta[2]) && sgn(g) == 0, "growth distance 0: the seeds coincide");
     } else {
         shape(gc, "growth_distance_certificate", {"normal", "h1", "h1_double", "h2", "h2_double", "witness"});
         V3 n = normal(at(gc, "normal"), "growth_distance_certificate.normal");
-        Q h1 = sc.h(0, n), h2 = sc.h(1, n);
-        claim(field(gc, "h1", "growth_distance_certificate") == h1 && field(gc, "h2", "growth_distance_certificate") == h2, "growth_distance_certificate support values recomputed");
-        claim(sgn(h1) > 0 && sgn(h2) > 0 && dot(n, sc.d) == g * (h1 + h2), "the growth distance's plane touches at (rho*, rho*)");
+        mpz_class H[2];  // D* h1, D* h2
+        sc.support(n, H);
+        claim(sc.over(field(gc, "h1", "growth_distance_certificate"), H[0]) && sc.over(field(gc, "h2", "growth_distance_certificate"), H[1]),
+              "growth_distance_certificate support values recomputed");
+        claim(sgn(H[0]) > 0 && sgn(H[1]) > 0 && dotz(ints(n), sc.Delta) * g.get_den() == g.get_num() * (H[0] + H[1]),
+              "the growth distance's plane touches at (rho*, rho*)");
         claim(check_witness(sc, at(gc, "witness"), "growth_distance_certificate.witness") == P2{g, g}, "growth distance witness is at (rho*, rho*)");
     }
     if (c.contains("growth_distance_note"))
@@ -661,15 +912,19 @@ void check_query(const J& c) {
         const J& pl = at(cert, "plane");
         shape(pl, "plane", {"normal", "offset", "offset_double", "P1_max", "P1_max_double", "P2_min", "P2_min_double", "support_vertices", "contact"});
         V3 n = normal(at(pl, "normal"), "plane.normal");
-        std::vector<int> f1, f2;
-        Q c1 = dot(n, sc.s[0]) + r1 * sc.h(0, n, &f1), c2 = dot(n, sc.s[1]) - r2 * sc.h(1, n, &f2);
+        mpz_class H[2];  // D* h1, D* h2
+        const std::vector<int>* f[2];
+        sc.support(n, H, f);
+        const std::vector<int> &f1 = *f[0], &f2 = *f[1];
+        // D* times n·s1 + rho1 h1 and n·s2 − rho2 h2 (D* > 0 keeps their order)
+        const Q c1 = Q(dotz(ints(n), sc.S[0])) + r1 * Q(H[0]), c2 = Q(dotz(ints(n), sc.S[1])) - r2 * Q(H[1]), D(sc.Dj);
         const J& sv = at(pl, "support_vertices");
         shape(sv, "plane.support_vertices", {"P1", "P2"});
         claim(has(f1, static_cast<int>(index(at(sv, "P1"), sc.P[0].size(), "plane.support_vertices.P1"))) &&
               has(f2, static_cast<int>(index(at(sv, "P2"), sc.P[1].size(), "plane.support_vertices.P2"))), "plane.support_vertices attain the extremes");
         claim(contact_string(at(pl, "contact"), "plane.contact") == std::string{dimension_letter(sc, 0, f1), dimension_letter(sc, 1, f2)}, "plane.contact is the dimension of the extreme sets");
-        claim(field(pl, "P1_max", "plane") == c1 && field(pl, "P2_min", "plane") == c2, "plane.P1_max and P2_min recomputed from the vertices");
-        claim(field(pl, "offset", "plane") == (c1 + c2) / 2, "plane.offset is midway");
+        claim(field(pl, "P1_max", "plane") * D == c1 && field(pl, "P2_min", "plane") * D == c2, "plane.P1_max and P2_min recomputed from the vertices");
+        claim(field(pl, "offset", "plane") * D == (c1 + c2) / 2, "plane.offset is midway");
         claim(v == "separated" ? c1 < c2 : c1 == c2, v == "separated" ? "the plane separates strictly" : "the plane supports both");
     }
     if (v == "touching") claim(check_witness(sc, at(cert, "witness"), "witness") == P2{r1, r2}, "the witness is at the queried pair");
