@@ -583,14 +583,34 @@ std::string contact_string(const J& j, const std::string& where) {
 // ---- the partition ----------------------------------------------------------------------------
 struct Line { Q a, b; Q at(const Q& x) const { return a * x + b; } };
 
-std::vector<P2> normalize(std::vector<P2> p) {
-    auto cr = [](const P2& o, const P2& a, const P2& b) -> Q { return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]); };
+// A convex polygon given counter-clockwise, whose vertices may repeat or lie inside an edge, in
+// its one written form: its corners only (no repeated or collinear vertices), from the lowest
+// (then leftmost) one; a polygon of two distinct points as the two sorted, of one as that point.
+// One pass with a stack drops every vertex collinear with its neighbours, then the same at the
+// wrap-around: linear. Every polygon the checker builds is such a list (the rectangle, the
+// boxes, their clips by one line, the overlap region below); for them this is what removing
+// collinear vertices one at a time, in any order, gives: the corners of a convex polygon are the
+// vertices at which it turns, and dropping a vertex where it does not turn changes no other turn.
+// (tests/test_checker.cpp compares it with that removal on random polygons.)
+std::vector<P2> normalize(const std::vector<P2>& p) {
+    auto turn = [](const P2& o, const P2& a, const P2& b) { return sgn((a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0])); };
+    std::vector<P2> d;
+    for (const P2& v : p) if (d.empty() || d.back() != v) d.push_back(v);
+    while (d.size() > 1 && d.front() == d.back()) d.pop_back();
     std::vector<P2> q;
-    for (const P2& v : p) if (q.empty() || q.back() != v) q.push_back(v);
-    while (q.size() > 1 && q.front() == q.back()) q.pop_back();
-    for (size_t i = 0; q.size() > 2 && i < q.size();) {
-        if (sgn(cr(q[(i + q.size() - 1) % q.size()], q[i], q[(i + 1) % q.size()])) == 0) { q.erase(q.begin() + static_cast<long>(i)); i = 0; }
-        else ++i;
+    if (d.size() <= 2) q = std::move(d);
+    else {
+        for (P2& v : d) {
+            while (q.size() >= 2 && turn(q[q.size() - 2], q.back(), v) == 0) q.pop_back();
+            q.push_back(std::move(v));
+        }
+        size_t b = 0;  // the polygon is q[b..]: the wrap-around, last against first and first against last
+        while (q.size() - b > 2) {
+            if (q.back() == q[b] || turn(q[q.size() - 2], q.back(), q[b]) == 0) q.pop_back();
+            else if (turn(q.back(), q[b], q[b + 1]) == 0) ++b;
+            else break;
+        }
+        q.erase(q.begin(), q.begin() + static_cast<long>(b));
     }
     if (q.size() == 2 && q[1] < q[0]) std::swap(q[0], q[1]);
     if (q.size() > 2) std::rotate(q.begin(), std::min_element(q.begin(), q.end(), [](const P2& a, const P2& b) { return a[1] != b[1] ? a[1] < b[1] : a[0] < b[0]; }), q.end());
@@ -607,6 +627,57 @@ std::vector<P2> clip(const std::vector<P2>& p, const Line& L, bool above) {
         if (sgn(fu) * sgn(fv) < 0) { Q t = fu / (fu - fv); out.push_back({u[0] + t * (v[0] - u[0]), u[1] + t * (v[1] - u[1])}); }
     }
     return normalize(out);
+}
+
+// The overlap region I1 × I2 ∩ {ρ2 >= curve}, from the pieces once they are verified: contiguous
+// over I1, each nonempty, neighbouring lines equal at their common end (the switch points), slopes
+// increasing. So the curve c is continuous and convex on I1, and each piece's line, which agrees
+// with c on an interval, supports it: L_k <= c on all of I1, and max_k L_k = c there. Clipping the
+// rectangle by every line (the earlier method, O(K) clips of polygons of up to K + 4 vertices)
+// therefore gives the set {(ρ1, ρ2) in the rectangle : ρ2 >= c(ρ1)}, which this walk lists
+// directly, counter-clockwise: the lower chain max(c, lo2) from its left end to hi1 (the curve's
+// breakpoints above lo2, where c meets lo2, the corner (hi1, lo2)), then (hi1, hi2) and the top
+// edge back. Its corners are those of that same convex set, so normalize() writes it exactly as
+// before (tests/test_checker.cpp compares both on random convex curves). Slopes are −h1/h2 < 0:
+// c decreases. A rectangle without area (lo = hi in I1 or I2) keeps the clipping, which is linear
+// for a polygon of at most two points.
+std::vector<P2> overlap_region(const Scene& sc, const std::vector<P2>& rect, const std::vector<Line>& lines,
+                               const std::vector<std::array<Q, 2>>& ranges) {
+    const Q &x0 = sc.lo[0], &x1 = sc.hi[0], &y0 = sc.lo[1], &y1 = sc.hi[1];
+    if (rect.size() < 3) {
+        std::vector<P2> over = rect;
+        for (const Line& L : lines) if (!over.empty()) over = clip(over, L, true);
+        return over;
+    }
+    if (lines.back().at(x1) > y1) return {};  // the rectangle lies below the curve
+    // The left end: lo1 when c(lo1) <= hi2, else where c meets hi2 (in the first piece whose right
+    // end is on or below hi2).
+    size_t k = 0;
+    Q xl = x0;
+    if (lines[0].at(x0) > y1) {
+        while (lines[k].at(ranges[k][1]) > y1) ++k;
+        xl = (y1 - lines[k].b) / lines[k].a;
+    }
+    std::vector<P2> w;
+    Q y = lines[k].at(xl);
+    if (y <= y0) w.push_back({xl, y0});  // the curve is at or below lo2 from xl on
+    else {
+        w.push_back({xl, y});
+        for (;; ++k) {
+            const Q& xr = ranges[k][1];
+            y = lines[k].at(xr);
+            if (y <= y0) {  // c meets lo2 in this piece
+                w.push_back({(y0 - lines[k].b) / lines[k].a, y0});
+                break;
+            }
+            w.push_back({xr, y});
+            if (k + 1 == lines.size()) break;
+        }
+    }
+    w.push_back({x1, y0 > y ? y0 : y});
+    w.push_back({x1, y1});
+    w.push_back({xl, y1});
+    return normalize(w);
 }
 
 std::vector<P2> polygon(const J& j, const std::string& where) {
@@ -862,8 +933,7 @@ void check_partition(const J& c) {
     const J& reg = at(c, "regions");
     shape(reg, "regions", {"overlap", "separated"});
     std::vector<P2> rect = normalize({{sc.lo[0], sc.lo[1]}, {sc.hi[0], sc.lo[1]}, {sc.hi[0], sc.hi[1]}, {sc.lo[0], sc.hi[1]}});
-    std::vector<P2> over = rect;
-    for (const Line& L : lines) if (!over.empty()) over = clip(over, L, true);
+    const std::vector<P2> over = overlap_region(sc, rect, lines, ranges);
     const J& ov = at(reg, "overlap");
     shape(ov, "regions.overlap", {"vertices", "vertices_double", "witnesses"});
     claim(polygon(ov, "regions.overlap") == over, "regions.overlap is the rectangle on and above the curve");

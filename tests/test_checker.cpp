@@ -477,12 +477,18 @@ BOOST_AUTO_TEST_CASE(out_of_memory_in_the_checker_exits_2) {
 }
 
 // ---- the checker's linear stages against plain reimplementations ---------------------------------
-// Support values and maximisers (integer scans in int64, __int128 or GMP integers).
+// Support values and maximisers (integer scans in int64, __int128 or GMP integers), the overlap
+// region (built from the verified pieces) and polygon normalisation (one pass).
 namespace {
 namespace sc_ = scalecert_check;
 using CQ = sc_::Q;
 using CV = sc_::V3;
 
+CQ cq(long p, long q) {
+    CQ x(p, q);
+    x.canonicalize();
+    return x;
+}
 // A random integer in [0, m) (m > 0), from g's words.
 mpz_class rz(std::mt19937_64& g, const mpz_class& m) {
     std::vector<uint64_t> w(mpz_sizeinbase(m.get_mpz_t(), 2) / 64 + 2);
@@ -522,6 +528,31 @@ CQ plain_h(const std::vector<CV>& P, const CV& s, const CV& n, int sigma, std::v
     return best;
 }
 
+// The earlier O(n^2) normalisation and the clip by every line, kept here as references.
+std::vector<sc_::P2> ref_normalize(std::vector<sc_::P2> p) {
+    auto cr = [](const sc_::P2& o, const sc_::P2& a, const sc_::P2& b) -> CQ { return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]); };
+    std::vector<sc_::P2> q;
+    for (const sc_::P2& v : p) if (q.empty() || q.back() != v) q.push_back(v);
+    while (q.size() > 1 && q.front() == q.back()) q.pop_back();
+    for (size_t i = 0; q.size() > 2 && i < q.size();) {
+        if (sgn(cr(q[(i + q.size() - 1) % q.size()], q[i], q[(i + 1) % q.size()])) == 0) { q.erase(q.begin() + static_cast<long>(i)); i = 0; }
+        else ++i;
+    }
+    if (q.size() == 2 && q[1] < q[0]) std::swap(q[0], q[1]);
+    if (q.size() > 2) std::rotate(q.begin(), std::min_element(q.begin(), q.end(), [](const sc_::P2& a, const sc_::P2& b) { return a[1] != b[1] ? a[1] < b[1] : a[0] < b[0]; }), q.end());
+    return q;
+}
+std::vector<sc_::P2> ref_clip(const std::vector<sc_::P2>& p, const sc_::Line& L, bool above) {
+    std::vector<sc_::P2> out;
+    for (size_t i = 0; i < p.size(); ++i) {
+        const sc_::P2 &u = p[i], &v = p[(i + 1) % p.size()];
+        CQ fu = u[1] - L.at(u[0]), fv = v[1] - L.at(v[0]);
+        if (!above) { fu = -fu; fv = -fv; }
+        if (sgn(fu) >= 0) out.push_back(u);
+        if (sgn(fu) * sgn(fv) < 0) { CQ t = fu / (fu - fv); out.push_back({u[0] + t * (v[0] - u[0]), u[1] + t * (v[1] - u[1])}); }
+    }
+    return ref_normalize(out);
+}
 }  // namespace
 
 BOOST_AUTO_TEST_CASE(support_scans_equal_the_plain_rational_definition) {
@@ -593,4 +624,89 @@ BOOST_AUTO_TEST_CASE(support_scans_equal_the_plain_rational_definition) {
     BOOST_TEST(paths[0] > 100);
     BOOST_TEST(paths[1] > 100);
     BOOST_TEST(paths[2] > 100);
+}
+
+BOOST_AUTO_TEST_CASE(normalize_is_the_one_at_a_time_removal_on_convex_polygons) {
+    // Convex polygons (a rectangle clipped by random lines), with repeated vertices and points
+    // inside edges inserted, started anywhere: the one-pass normalisation gives what removing
+    // collinear vertices one at a time gave.
+    std::mt19937_64 g(7);
+    int compared = 0;
+    for (int t = 0; t < 3000; ++t) {
+        const CQ x0 = rq(g, 10, 3), y0 = rq(g, 10, 3);
+        std::vector<sc_::P2> p = ref_normalize({{x0, y0}, {x0 + rq(g, 5, 2) * rq(g, 5, 2) + 1, y0}, {x0 + 6, y0 + 5}, {x0, y0 + rq(g, 4, 1) * rq(g, 4, 1) + 1}});
+        for (int c = static_cast<int>(g() % 4); c > 0 && p.size() >= 3; --c) {
+            const sc_::P2& a = p[g() % p.size()];
+            p = ref_clip(p, sc_::Line{rq(g, 5, 4), a[1] - CQ(rq(g, 5, 4)) * a[0] + rq(g, 2, 3)}, g() % 2);
+        }
+        if (p.size() < 3) continue;
+        std::vector<sc_::P2> q;  // duplicates and edge points, from a random start
+        const size_t start = g() % p.size();
+        for (size_t k = 0; k < p.size(); ++k) {
+            const sc_::P2 &a = p[(start + k) % p.size()], &b = p[(start + k + 1) % p.size()];
+            q.push_back(a);
+            if (g() % 3 == 0) q.push_back(a);
+            for (int m = static_cast<int>(g() % 3); m > 0; --m) {
+                const CQ t1 = cq(static_cast<long>(g() % 7 + 1), 8);
+                q.push_back({a[0] + t1 * (b[0] - a[0]), a[1] + t1 * (b[1] - a[1])});
+            }
+        }
+        BOOST_TEST((sc_::normalize(q) == ref_normalize(q)));
+        BOOST_TEST((sc_::normalize(q) == p));
+        ++compared;
+    }
+    BOOST_TEST(compared > 1000);
+}
+
+BOOST_AUTO_TEST_CASE(overlap_region_equals_the_clip_by_every_line) {
+    // Random convex, decreasing piecewise-linear curves over I1 (slopes increasing, neighbouring
+    // lines meeting at the breakpoints) and random I2, including I2 ends through breakpoints, the
+    // curve through a corner, rectangles without area, one piece and many: the region built from
+    // the pieces equals the rectangle clipped by every line (the earlier O(K^2) method).
+    std::mt19937_64 g(11);
+    int cases = 0, empty = 0, points = 0, polygons = 0;
+    for (int t = 0; t < 3000; ++t) {
+        const size_t K = 1 + g() % (t % 10 == 0 ? 40 : 6);
+        sc_::Scene sc;
+        sc.lo[0] = cq(static_cast<long>(1 + g() % 4), static_cast<long>(1 + g() % 3));
+        sc.hi[0] = t % 50 == 0 && K == 1 ? sc.lo[0] : CQ(sc.lo[0] + cq(static_cast<long>(1 + g() % 9), static_cast<long>(1 + g() % 4)));
+        std::vector<CQ> x{sc.lo[0]}, a;
+        for (size_t k = 1; k < K; ++k) x.push_back(x.back() + cq(static_cast<long>(1 + g() % 5), static_cast<long>(1 + g() % 7)));
+        const CQ stretch = (sc.hi[0] - sc.lo[0]) / (x.back() + 1 - sc.lo[0]);
+        for (CQ& v : x) v = sc.lo[0] + (v - sc.lo[0]) * stretch;
+        x.push_back(sc.hi[0]);
+        for (size_t k = 0; k < K; ++k) a.push_back(-cq(static_cast<long>(1 + g() % 40), static_cast<long>(1 + g() % 5)));
+        std::sort(a.begin(), a.end());
+        a.erase(std::unique(a.begin(), a.end()), a.end());
+        while (a.size() < K) a.push_back(a.back() / 2);  // still increasing and negative
+        std::vector<sc_::Line> lines;
+        std::vector<std::array<CQ, 2>> ranges;
+        CQ y = rq(g, 20, 3) + 10;
+        for (size_t k = 0; k < K; ++k) {
+            lines.push_back({a[k], y - a[k] * x[k]});
+            ranges.push_back({x[k], x[k + 1]});
+            y = lines.back().at(x[k + 1]);
+        }
+        std::vector<CQ> ys;  // values the curve takes at breakpoints, and around them
+        for (size_t k = 0; k <= K; ++k) ys.push_back(k < K ? lines[k].at(x[k]) : lines[K - 1].at(x[K]));
+        auto pick = [&]() { return g() % 3 == 0 ? ys[g() % ys.size()] : ys[g() % ys.size()] + rq(g, 6, 4); };
+        CQ lo2 = pick(), hi2 = pick();
+        if (hi2 < lo2) std::swap(lo2, hi2);
+        if (g() % 25 == 0) hi2 = lo2;
+        if (sgn(lo2) <= 0) { hi2 += 1 - lo2; lo2 = 1; }
+        sc.lo[1] = lo2;
+        sc.hi[1] = hi2;
+        const std::vector<sc_::P2> rect = sc_::normalize({{sc.lo[0], sc.lo[1]}, {sc.hi[0], sc.lo[1]}, {sc.hi[0], sc.hi[1]}, {sc.lo[0], sc.hi[1]}});
+        BOOST_TEST((rect == ref_normalize({{sc.lo[0], sc.lo[1]}, {sc.hi[0], sc.lo[1]}, {sc.hi[0], sc.hi[1]}, {sc.lo[0], sc.hi[1]}})));
+        std::vector<sc_::P2> want = rect;
+        for (const sc_::Line& L : lines) if (!want.empty()) want = ref_clip(want, L, true);
+        const std::vector<sc_::P2> got = sc_::overlap_region(sc, rect, lines, ranges);
+        BOOST_TEST((got == want), "case " << t << ": " << got.size() << " vertices against " << want.size());
+        ++cases;
+        (want.empty() ? empty : want.size() < 3 ? points : polygons)++;
+    }
+    std::cout << "overlap regions compared: " << cases << " (" << empty << " empty, " << points << " of one or two points, " << polygons << " polygons)\n";
+    BOOST_TEST(empty > 20);
+    BOOST_TEST(points > 20);
+    BOOST_TEST(polygons > 1000);
 }
