@@ -234,21 +234,41 @@ V3 point(const J& j, const std::string& where) {
     return {num(j[0], where + "[0]"), num(j[1], where + "[1]"), num(j[2], where + "[2]")};
 }
 
+// ---- the work limit ---------------------------------------------------------------------------
+// The support scans cost (distinct normals) × (vertices), and a vertex named in a list costs its
+// own digits wherever it is named: products of sizes the file does not pay for one by one. Each
+// such step is counted here, in units of about a nanosecond, before it runs; past g_work_per_byte
+// units a byte of the file (at least g_min_work) the file is refused as unreadable (exit 2), at a
+// point that depends on the file only. Certificates the engine writes use a few units a byte
+// (FORMAT.md, "What the checker costs"). (Variables, not constants, for the tests.)
+double g_work_per_byte = 1500, g_min_work = 1.5e9;
+double g_work = 0, g_budget = 1.5e9;
+void spend(double units) {
+    g_work += units;
+    if (g_work > g_budget)
+        throw Unreadable{"beyond the checker's work limit (" + std::to_string(static_cast<long long>(g_work_per_byte)) +
+                         " units a byte of the file; FORMAT.md \"What the checker costs\")"};
+}
+double limbs(const mpz_class& z) { return static_cast<double>(mpz_size(z.get_mpz_t())); }
+
 // ---- support scans --------------------------------------------------------------------------
 // Every support value h_i(n) and every list of maximisers is a scan of all the vertices of a
 // polytope, once per normal direction: with the lists of normals a file may hold, the checker's
 // largest cost. The scan compares u·X_k, X_k = D v_k, over the vertices v_k, where D > 0 is the
 // lcm of the denominators of the polytope's vertex coordinates (at most 2^16384, the engine's own
 // limit): this orders the vertices as u·(v_k − s_i) does. Exact in every case, in the cheapest
-// arithmetic the numbers allow. With every |X| < 2^b (X held as int64 when b <= 62) and an integer
-// u with every |u_c| < 2^c:
+// arithmetic the numbers allow. The vertices whose X coordinates are all below 2^62 in magnitude
+// are also held as int64; with every such |X| < 2^b and an integer u with every |u_c| < 2^c they
+// are scanned
 //   - b + c <= 61: in int64. Each product u_c X_c is below 2^61 in magnitude, each partial sum
 //     below 3·2^61 < 2^63: no overflow;
 //   - b <= 62 and c <= 62: in __int128. Each product is below 2^124 in magnitude, each partial
 //     sum below 3·2^124 < 2^126 < 2^127;
-//   - otherwise: in mpz.
-// The maximisers found are exactly those of the rational comparison, in ascending order
-// (tests/test_checker.cpp compares both on random scenes of every number kind).
+//   - otherwise (a normal past 2^62): in mpz.
+// The other vertices (a few large numbers among many small ones cost the small ones nothing) in
+// mpz, and the two maxima compared in mpz. The maximisers found are exactly those of the
+// rational comparison, in ascending order (tests/test_checker.cpp compares both on random scenes
+// of every number kind, mixed sizes among them).
 class Scan {
 public:
     Scan(const std::vector<V3>& v, const std::string& what) : n_(v.size()) {
@@ -258,55 +278,81 @@ public:
                 if (mpz_sizeinbase(D_.get_mpz_t(), 2) > 16384)
                     throw Unreadable{"the common denominator of " + what + "'s vertex coordinates has more than 16384 bits (scalecert's own limit)"};
             }
+        spend(static_cast<double>(n_) * (10 + 3 * limbs(D_)));
         Z_.resize(n_);
-        for (size_t k = 0; k < n_; ++k)
+        pos_.assign(n_, -1);
+        for (size_t k = 0; k < n_; ++k) {
+            bool machine = sizeof(long) >= 8;  // mpz_get_si gives the int64 values as long
+            int64_t x[3];
             for (int c = 0; c < 3; ++c) {
                 mpz_divexact(Z_[k][c].get_mpz_t(), D_.get_mpz_t(), v[k][c].get_den_mpz_t());
                 Z_[k][c] *= v[k][c].get_num();
+                machine = machine && small_int(Z_[k][c].get_mpz_t(), x[c]);
             }
-        machine_ = sizeof(long) >= 8;  // mpz_*_si take the int64 values as long
-        for (int c = 0; c < 3 && machine_; ++c) {
-            X_[c].resize(n_);
-            for (size_t k = 0; k < n_ && machine_; ++k) {
-                machine_ = small_int(Z_[k][c].get_mpz_t(), X_[c][k]);
+            if (!machine) {
+                big_.push_back(static_cast<int>(k));
+                for (int c = 0; c < 3; ++c) big_limbs_[c] += limbs(Z_[k][c]);
+                continue;
+            }
+            pos_[k] = static_cast<int>(X_[0].size());
+            orig_.push_back(static_cast<int>(k));
+            for (int c = 0; c < 3; ++c) {
+                X_[c].push_back(x[c]);
                 bits_ = std::max(bits_, static_cast<int>(mpz_sizeinbase(Z_[k][c].get_mpz_t(), 2)));
             }
         }
-        if (!machine_)
-            for (auto& x : X_) { x.clear(); x.shrink_to_fit(); }
     }
     // The vertices k (of `subset`, ascending, or of all) at which u·v_k is largest, ascending.
     // u has integer coordinates.
     std::vector<int> argmax(const std::array<mpz_class, 3>& u, const std::vector<int>* subset = nullptr) const {
-        const size_t n = subset ? subset->size() : n_;
-        const int* at = subset ? subset->data() : nullptr;
         int ub = 0;
         for (const mpz_class& c : u) ub = std::max(ub, static_cast<int>(mpz_sizeinbase(c.get_mpz_t(), 2)));
-        int64_t w[3];
+        int64_t w[3] = {0, 0, 0};
         const bool small_u = small_int(u[0].get_mpz_t(), w[0]) && small_int(u[1].get_mpz_t(), w[1]) && small_int(u[2].get_mpz_t(), w[2]);
-        const int64_t *x = X_[0].data(), *y = X_[1].data(), *z = X_[2].data();
-        if (machine_ && small_u && bits_ + ub <= 61) {
-            const int64_t a = w[0], b = w[1], c = w[2];
-            auto value = [=](size_t k) { return a * x[k] + b * y[k] + c * z[k]; };
-            return at ? scan<int64_t>(n, at, value) : scan<int64_t>(n, value);
+        // The machine-size vertices (at compact positions) and the others.
+        std::vector<int> mlist, blist;
+        const bool all = !subset;
+        if (subset)
+            for (int k : *subset) (pos_[static_cast<size_t>(k)] >= 0 ? mlist.push_back(pos_[static_cast<size_t>(k)]) : blist.push_back(k));
+        const std::vector<int>& bl = all ? big_ : blist;
+        const size_t nm = all ? X_[0].size() : mlist.size();
+        std::vector<int> mout, bout;
+        mpz_class mbest, bbest;
+        if (nm > 0) {
+            const int* at = all ? nullptr : mlist.data();
+            const int64_t *x = X_[0].data(), *y = X_[1].data(), *z = X_[2].data();
+            if (small_u && bits_ + ub <= 61) {
+                spend(static_cast<double>(nm));
+                const int64_t a = w[0], b = w[1], c = w[2];
+                auto value = [=](size_t k) { return a * x[k] + b * y[k] + c * z[k]; };
+                const int64_t best = at ? scan<int64_t>(nm, at, value, mout) : scan<int64_t>(nm, value, mout);
+                if (all && bl.empty()) return mout;  // every vertex is at its own position
+                mbest = static_cast<long>(best);
+            } else if (small_u) {
+                spend(2.0 * static_cast<double>(nm));
+                const __int128 a = w[0], b = w[1], c = w[2];
+                auto value = [=](size_t k) { return a * x[k] + b * y[k] + c * z[k]; };
+                const __int128 best = at ? scan<__int128>(nm, at, value, mout) : scan<__int128>(nm, value, mout);
+                if (all && bl.empty()) return mout;
+                mbest = from128(best);
+            }
+            if (small_u) {
+                for (int& p : mout) p = orig_[static_cast<size_t>(p)];
+            } else {  // a normal past 2^62: GMP integers for these vertices too
+                std::vector<int> list;
+                if (all) list = orig_;
+                else for (int p : mlist) list.push_back(orig_[static_cast<size_t>(p)]);
+                mout = mpz_scan(u, list, mbest);
+            }
         }
-        if (machine_ && small_u) {
-            const __int128 a = w[0], b = w[1], c = w[2];
-            auto value = [=](size_t k) { return a * x[k] + b * y[k] + c * z[k]; };
-            return at ? scan<__int128>(n, at, value) : scan<__int128>(n, value);
-        }
-        std::vector<int> out;
-        mpz_class v, best;
-        for (size_t j = 0; j < n; ++j) {
-            const size_t k = at ? static_cast<size_t>(at[j]) : j;
-            mpz_mul(v.get_mpz_t(), u[0].get_mpz_t(), Z_[k][0].get_mpz_t());
-            mpz_addmul(v.get_mpz_t(), u[1].get_mpz_t(), Z_[k][1].get_mpz_t());
-            mpz_addmul(v.get_mpz_t(), u[2].get_mpz_t(), Z_[k][2].get_mpz_t());
-            const int c = out.empty() ? 1 : cmp(v, best);
-            if (c > 0) { mpz_swap(best.get_mpz_t(), v.get_mpz_t()); out.clear(); }
-            if (c >= 0) out.push_back(static_cast<int>(k));
-        }
-        return out;
+        if (!bl.empty()) bout = mpz_scan(u, bl, bbest);
+        if (bout.empty()) return mout;
+        if (mout.empty()) return bout;
+        const int c = cmp(mbest, bbest);
+        if (c != 0) return c > 0 ? mout : bout;
+        std::vector<int> both;  // equal maxima: the two ascending lists merged
+        std::merge(mout.begin(), mout.end(), bout.begin(), bout.end(), std::back_inserter(both));
+        return both;
     }
     const mpz_class& D() const { return D_; }
     const std::array<mpz_class, 3>& X(size_t k) const { return Z_[k]; }  // D v_k
@@ -316,9 +362,12 @@ private:
     size_t n_;
     mpz_class D_ = 1;
     std::vector<std::array<mpz_class, 3>> Z_;  // X_k = D v_k
-    bool machine_ = false;                     // every |X| < 2^62: also held in X_
-    int bits_ = 0;                             // every |X| < 2^bits_
+    // The vertices whose X coordinates are all below 2^62 in magnitude, held as int64 at compact
+    // positions (orig_: position -> vertex, pos_: vertex -> position or -1), and the others (big_).
     std::vector<int64_t> X_[3];
+    std::vector<int> orig_, pos_, big_;
+    int bits_ = 0;         // every machine |X| < 2^bits_
+    double big_limbs_[3] = {0, 0, 0};  // the limbs of the others' X, by coordinate
 
     // z as an int64 when |z| < 2^62 (and long holds it); false otherwise.
     static bool small_int(mpz_srcptr z, int64_t& out) {
@@ -326,12 +375,43 @@ private:
         out = mpz_get_si(z);
         return true;
     }
-    // All vertices, in one pass: the running maximum in a register, the list touched only when
-    // a vertex reaches it (rarely, once the maximum is found).
-    template <class T, class F>
-    static std::vector<int> scan(size_t n, F value) {
+    static mpz_class from128(__int128 v) {
+        const bool neg = v < 0;
+        unsigned __int128 a = neg ? -static_cast<unsigned __int128>(v) : static_cast<unsigned __int128>(v);
+        mpz_class r(static_cast<unsigned long>(static_cast<uint64_t>(a >> 64)));
+        r <<= 64;
+        r += static_cast<unsigned long>(static_cast<uint64_t>(a));
+        return neg ? mpz_class(-r) : r;
+    }
+    // u·X_k over the vertices of `list` (ascending) in GMP integers: the maximisers, ascending, and
+    // the maximum in `best`. About 40 units a vertex and half a unit a limb product (measured: 45 ns
+    // a vertex of one-limb numbers, 250 ns for 256-limb coordinates and a one-limb normal).
+    std::vector<int> mpz_scan(const std::array<mpz_class, 3>& u, const std::vector<int>& list, mpz_class& best) const {
+        double units = 40 * static_cast<double>(list.size());
+        for (int c = 0; c < 3; ++c) {
+            double lx = 0;
+            if (&list == &big_) lx = big_limbs_[c];
+            else for (int k : list) lx += limbs(Z_[static_cast<size_t>(k)][c]);
+            units += 0.5 * std::max(1.0, limbs(u[c])) * lx;
+        }
+        spend(units);
         std::vector<int> out;
-        if (n == 0) return out;
+        mpz_class v;
+        for (int k : list) {
+            const auto& X = Z_[static_cast<size_t>(k)];
+            mpz_mul(v.get_mpz_t(), u[0].get_mpz_t(), X[0].get_mpz_t());
+            mpz_addmul(v.get_mpz_t(), u[1].get_mpz_t(), X[1].get_mpz_t());
+            mpz_addmul(v.get_mpz_t(), u[2].get_mpz_t(), X[2].get_mpz_t());
+            const int c = out.empty() ? 1 : cmp(v, best);
+            if (c > 0) { mpz_swap(best.get_mpz_t(), v.get_mpz_t()); out.clear(); }
+            if (c >= 0) out.push_back(k);
+        }
+        return out;
+    }
+    // All vertices, in one pass: the running maximum in a register, the list touched only when
+    // a vertex reaches it (rarely, once the maximum is found). Returns the maximum.
+    template <class T, class F>
+    static T scan(size_t n, F value, std::vector<int>& out) {
         out.reserve(8);
         out.push_back(0);
         T best = value(0);
@@ -342,12 +422,11 @@ private:
                 out.push_back(static_cast<int>(k));
             }
         }
-        return out;
+        return best;
     }
-    // The vertices of a subset (ascending), in one pass.
+    // The positions of a list (ascending), in one pass.
     template <class T, class F>
-    static std::vector<int> scan(size_t n, const int* at, F value) {
-        std::vector<int> out;
+    static T scan(size_t n, const int* at, F value, std::vector<int>& out) {
         T best{};
         for (size_t j = 0; j < n; ++j) {
             const size_t k = static_cast<size_t>(at[j]);
@@ -357,7 +436,7 @@ private:
                 out.push_back(static_cast<int>(k));
             }
         }
-        return out;
+        return best;
     }
 };
 
@@ -392,6 +471,7 @@ struct Scene {
             mpz_lcm(Dj.get_mpz_t(), Dj.get_mpz_t(), scan[i]->D().get_mpz_t());
             for (const Q& c : s[i]) mpz_lcm(Dj.get_mpz_t(), Dj.get_mpz_t(), c.get_den_mpz_t());
         }
+        spend(100 + 20 * limbs(Dj));
         for (int i = 0; i < 2; ++i) {
             E[i] = Dj / scan[i]->D();
             for (int c = 0; c < 3; ++c) {
@@ -407,6 +487,7 @@ struct Scene {
     // D* h_i(u) for an integer u, given a vertex k attaining the maximum of u·v: u·X_k E_i − u·S_i
     // (h_1(n) = n·(v − s1) with u = n; h_2(n) = −n·(w − s2) with u = −n).
     mpz_class support_at(int i, const Z3& u, int k) const {
+        spend_at(i, k);
         mpz_class r = dotz(u, scan[i]->X(static_cast<size_t>(k))) * E[i];
         r -= dotz(u, S[i]);
         return r;
@@ -456,6 +537,11 @@ struct Scene {
     // q == H / D* (q a number of the file, H over D*).
     bool over(const Q& q, const mpz_class& H) const { return q.get_num() * Dj == q.get_den() * H; }
     Q value(const mpz_class& H) const { Q r(H, Dj); r.canonicalize(); return r; }  // H / D*, for messages
+    // The work of one product by vertex k's integers and D*'s (a place on a line, a support value).
+    void spend_at(int i, int k) const {
+        const Z3& x = scan[i]->X(static_cast<size_t>(k));
+        spend(20 + 4 * (limbs(x[0]) + limbs(x[1]) + limbs(x[2]) + limbs(E[i]) + limbs(S[i][0]) + limbs(S[i][1]) + limbs(S[i][2])));
+    }
 
 private:
     mutable std::map<std::string, Support> cache_;
@@ -471,6 +557,8 @@ int affine_dim(const Scene& sc, int i, const std::vector<int>& idx) {
     Z3 e1, c, v, x;
     for (int k : idx) {
         const Z3& p = s.X(static_cast<size_t>(k));
+        const double l = 1 + limbs(p[0]) + limbs(p[1]) + limbs(p[2]) + limbs(o[0]) + limbs(o[1]) + limbs(o[2]);
+        spend(30 + 4 * l * l);
         for (int j = 0; j < 3; ++j) v[j] = p[j] - o[j];
         const bool nz = sgn(v[0]) || sgn(v[1]) || sgn(v[2]);
         if (dim == 0 && nz) { e1 = v; dim = 1; continue; }
@@ -529,6 +617,7 @@ std::array<Q, 3> combination(const Scene& sc, int i, const J& w, const std::stri
         claim(sgn(l) > 0, wk + " weight is > 0");
         total += l;
         const Z3& X = sc.scan[i]->X(idx);
+        spend(100 + 10 * (1 + limbs(l.get_num()) + limbs(l.get_den())) * (1 + limbs(X[0]) + limbs(X[1]) + limbs(X[2])));
         for (int c = 0; c < 3; ++c) x[c] += l * Q(X[c]);
         if (used) used->push_back(static_cast<int>(idx));
     }
@@ -735,6 +824,7 @@ std::string switch_contact(const Scene& sc, const V3& n, const V3& m, const Q rh
         bottom[i] = sc.scan[i]->argmax(minus_u, &A[i]);
         const Q us(dotz(u, sc.S[i]));
         auto place = [&](int k) -> Q {
+            sc.spend_at(i, k);
             return (1 - rho[i]) * us + rho[i] * Q(dotz(u, sc.scan[i]->X(static_cast<size_t>(k))) * sc.E[i]);
         };
         hi[i] = place(top[i][0]);
@@ -1007,6 +1097,8 @@ void check_query(const J& c) {
 // Checks a whole file's text. Returns the exit status; `message` is the line to print.
 int check_text(const std::string& text, std::string& message) {
     g_claims = 0;
+    g_work = 0;
+    g_budget = std::max(g_min_work, g_work_per_byte * static_cast<double>(text.size()));
     try {
         if (text.size() > kMaxFileBytes) throw Unreadable{"larger than " + std::to_string(kMaxFileBytes) + " bytes"};
         const J c = parse_strict(text);

@@ -478,7 +478,7 @@ BOOST_AUTO_TEST_CASE(out_of_memory_in_the_checker_exits_2) {
 
 // ---- the checker's linear stages against plain reimplementations ---------------------------------
 // Support values and maximisers (integer scans in int64, __int128 or GMP integers), the overlap
-// region (built from the verified pieces) and polygon normalisation (one pass).
+// region (built from the verified pieces), polygon normalisation (one pass) and the work limit.
 namespace {
 namespace sc_ = scalecert_check;
 using CQ = sc_::Q;
@@ -506,6 +506,7 @@ CQ rq(std::mt19937_64& g, const mpz_class& range, const mpz_class& den_range) {
 }
 // A scene of the checker from its vertices and seeds (I1, I2 unused here).
 sc_::Scene make_scene(const std::vector<CV> P[2], const CV s[2]) {
+    sc_::g_work = 0;
     sc_::Scene sc;
     for (int i = 0; i < 2; ++i) {
         sc.P[i] = P[i];
@@ -557,13 +558,14 @@ std::vector<sc_::P2> ref_clip(const std::vector<sc_::P2>& p, const sc_::Line& L,
 
 BOOST_AUTO_TEST_CASE(support_scans_equal_the_plain_rational_definition) {
     // Random scenes of every number kind (small integers, small fractions, integers past 2^62,
-    // 200-bit fractions, few distinct values so that maximisers tie), random integer normals of
+    // 200-bit fractions, few distinct values so that maximisers tie, small and large vertices
+    // mixed in one polytope, tying across the two), random integer normals of
     // every size (int64, __int128 and GMP paths), their multiples through the cache, and scans of
     // subsets (the switch points' ends): value and ascending maximiser list as the definition.
     std::mt19937_64 g(2024);
     const mpz_class one = 1;
     struct Kind { mpz_class range, den; };
-    const std::vector<Kind> kinds = {{20, 1}, {3, 1}, {1000, 7}, {one << 70, 1}, {one << 61, 1}, {one << 200, one << 100}, {5, one << 90}};
+    const std::vector<Kind> kinds = {{20, 1}, {3, 1}, {1000, 7}, {one << 70, 1}, {one << 61, 1}, {one << 200, one << 100}, {5, one << 90}, {-1, 1}};
     const std::vector<mpz_class> normal_sizes = {5, 1000, one << 40, one << 61, one << 90, one << 300};
     int checks = 0, paths[3] = {0, 0, 0};
     for (int t = 0; t < 400; ++t) {
@@ -574,9 +576,12 @@ BOOST_AUTO_TEST_CASE(support_scans_equal_the_plain_rational_definition) {
             const int n = 4 + static_cast<int>(g() % 27);
             for (int k = 0; k < n; ++k) {
                 if (k > 0 && g() % 5 == 0) { P[i].push_back(P[i][g() % static_cast<size_t>(k)]); continue; }  // a repeated vertex
-                P[i].push_back({rq(g, kd.range, kd.den), rq(g, kd.range, kd.den), rq(g, kd.range, kd.den)});
+                if (kd.range < 0)  // mixed: small vertices, and some with a first coordinate past 2^62
+                    P[i].push_back({g() % 3 ? rq(g, 3, 1) : rq(g, one << 70, 1), rq(g, 3, 1), rq(g, 3, 1)});
+                else
+                    P[i].push_back({rq(g, kd.range, kd.den), rq(g, kd.range, kd.den), rq(g, kd.range, kd.den)});
             }
-            s[i] = {rq(g, kd.range, kd.den), rq(g, kd.range, 3), rq(g, 7, 5)};
+            s[i] = {rq(g, abs(kd.range), kd.den), rq(g, abs(kd.range), 3), rq(g, 7, 5)};
         }
         sc_::Scene sc = make_scene(P, s);
         for (int r = 0; r < 12; ++r) {
@@ -585,6 +590,7 @@ BOOST_AUTO_TEST_CASE(support_scans_equal_the_plain_rational_definition) {
             do n = {rq(g, size, 1), rq(g, size, 1), rq(g, size, 1)};
             while (!sgn(n[0]) && !sgn(n[1]) && !sgn(n[2]));
             if (r % 4 == 0) n = {CQ(g() % 3) - 1, CQ(g() % 3) - 1, CQ(1)};  // small normals: many ties on repeated vertices
+            if (r % 4 == 1 && kd.range < 0) n = {CQ(0), CQ(g() % 3) - 1, CQ(1)};  // ties between small and large vertices
             mpz_class H[2];
             const std::vector<int>* cached[2];
             sc.support(n, H, cached);
@@ -615,7 +621,7 @@ BOOST_AUTO_TEST_CASE(support_scans_equal_the_plain_rational_definition) {
                 ++checks;
                 int ub = 0;
                 for (const auto& c : u) ub = std::max(ub, static_cast<int>(mpz_sizeinbase(c.get_mpz_t(), 2)));
-                ++paths[ub <= 62 && kd.range < (one << 62) && kd.den < (one << 20) ? (ub <= 40 ? 0 : 1) : 2];
+                ++paths[ub <= 62 && kd.range >= 0 && kd.range < (one << 62) && kd.den < (one << 20) ? (ub <= 40 ? 0 : 1) : 2];
             }
         }
     }
@@ -709,4 +715,51 @@ BOOST_AUTO_TEST_CASE(overlap_region_equals_the_clip_by_every_line) {
     BOOST_TEST(empty > 20);
     BOOST_TEST(points > 20);
     BOOST_TEST(polygons > 1000);
+}
+
+BOOST_AUTO_TEST_CASE(the_work_limit_and_the_denominator_limit_refuse_with_exit_2) {
+    // Two square pyramids tip to tip: one piece, and every normal (x, y, z) with |x| + |y| < 2z
+    // gives its line. With 2,000 such normals and 2,000 more vertices (copies of the seeds) the
+    // file is valid; under a work limit lowered for the test it is refused with exit status 2, at
+    // a point that depends on the file only (the same message every time).
+    const fs::path scene = tmpdir() / "pyramids.json", cert = tmpdir() / "pyramids.partition.json";
+    std::ofstream(scene) << R"({"P1": {"vertices": [[0,0,10],[10,10,-10],[10,-10,-10],[-10,10,-10],[-10,-10,-10]], "seed": [0,0,0]},
+ "P2": {"vertices": [[0,0,20],[10,10,40],[10,-10,40],[-10,10,40],[-10,-10,40]], "seed": [0,0,30]}, "I1": ["1/2", 2], "I2": ["1/2", 2]})";
+    BOOST_TEST_REQUIRE(engine("partition " + scene.string() + " --out " + cert.string()) == 0);
+    OJ j = load(cert);
+    BOOST_TEST_REQUIRE(j["pieces"].size() == 1u);
+    OJ normals = OJ::array();
+    for (long z = 1; normals.size() < 2000; ++z)
+        for (long x = 1 - 2 * z; x < 2 * z && normals.size() < 2000; ++x)
+            for (long y = 1 - 2 * z + std::labs(x); std::labs(x) + std::labs(y) < 2 * z && normals.size() < 2000; ++y)
+                if (std::gcd(std::gcd(std::labs(x), std::labs(y)), z) == 1) normals.push_back({std::to_string(x), std::to_string(y), std::to_string(z)});
+    j["pieces"][0]["same_line_normals"] = normals;
+    for (int k = 0; k < 1000; ++k) {
+        j["scene"]["P1"]["vertices"].push_back(j["scene"]["P1"]["seed"]);
+        j["scene"]["P2"]["vertices"].push_back(j["scene"]["P2"]["seed"]);
+    }
+    const std::string text = j.dump(1);
+    std::string msg;
+    BOOST_TEST(scalecert_check::check_text(text, msg) == 0, msg);
+    const double work = scalecert_check::g_work;
+    BOOST_TEST(work > 2000.0 * 2010);  // every normal scanned both polytopes
+    const double per_byte = scalecert_check::g_work_per_byte, least = scalecert_check::g_min_work;
+    scalecert_check::g_work_per_byte = 0.5 * work / static_cast<double>(text.size());
+    scalecert_check::g_min_work = 0;
+    std::string first, again;
+    BOOST_TEST(scalecert_check::check_text(text, first) == 2);
+    BOOST_TEST(first.find("work limit") != std::string::npos, first);
+    BOOST_TEST(scalecert_check::check_text(text, again) == 2);
+    BOOST_TEST(first == again);
+    scalecert_check::g_work_per_byte = per_byte;
+    scalecert_check::g_min_work = least;
+    BOOST_TEST(scalecert_check::check_text(text, msg) == 0, msg);
+    // A vertex whose denominator takes the polytope's common denominator past 2^16384 (the
+    // engine's own limit): refused with exit status 2, before any scan.
+    OJ big = bundled("tetra_box_switch");
+    big["scene"]["P2"]["vertices"].push_back(OJ::array({"1/" + mpz_class(mpz_class(1) << 16384).get_str(), "0", "0"}));
+    BOOST_TEST(verdict_of(big) == 2);
+    OJ fits = bundled("tetra_box_switch");
+    fits["scene"]["P2"]["vertices"].push_back(OJ::array({"1/" + mpz_class(mpz_class(1) << 16383).get_str(), "0", "0"}));
+    BOOST_TEST(verdict_of(fits) == 0);  // a point inside the cube: every claim still holds
 }
