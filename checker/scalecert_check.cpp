@@ -241,8 +241,8 @@ V3 point(const J& j, const std::string& where) {
 // units a byte of the file (at least g_min_work) the file is refused as unreadable (exit 2), at a
 // point that depends on the file only. Certificates the engine writes use a few units a byte
 // (FORMAT.md, "What the checker costs"). (Variables, not constants, for the tests.)
-double g_work_per_byte = 1500, g_min_work = 1.5e9;
-double g_work = 0, g_budget = 1.5e9;
+double g_work_per_byte = 600, g_min_work = 6e8;
+double g_work = 0, g_budget = 6e8;
 void spend(double units) {
     g_work += units;
     if (g_work > g_budget)
