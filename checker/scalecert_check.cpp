@@ -16,11 +16,15 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <cstdint>
 #include <cstdlib>
 #include <cerrno>
 #include <cstring>
 #include <iostream>
+#include <map>
+#include <memory>
 #include <new>
+#include <numeric>
 #include <set>
 #include <string>
 #include <vector>
@@ -42,6 +46,13 @@ long g_claims = 0;
 void claim(bool ok, const std::string& what) {
     ++g_claims;
     if (!ok) throw Invalid{what};
+}
+// The same, with the message built only when the claim fails (one that prints a number: a
+// conversion to decimal costs more than the comparison).
+template <class F>
+void claim_lazy(bool ok, F what) {
+    ++g_claims;
+    if (!ok) throw Invalid{what()};
 }
 
 // ---- strict JSON (RFC 8259) -----------------------------------------------------------------
@@ -201,7 +212,7 @@ bool is_nearest(const J& d, const Q& q) {
 Q field(const J& o, const std::string& key, const std::string& where) {
     const std::string w = where.empty() ? key : where + "." + key;
     Q q = num(o.at(key), w);
-    claim(is_nearest(o.at(key + "_double"), q), w + "_double is the nearest double to " + StrictTree::printable(q.get_str()));
+    claim_lazy(is_nearest(o.at(key + "_double"), q), [&] { return w + "_double is the nearest double to " + StrictTree::printable(q.get_str()); });
     return q;
 }
 std::vector<Q> fields(const J& o, const std::string& key, size_t n, const std::string& where) {
@@ -228,43 +239,340 @@ V3 point(const J& j, const std::string& where) {
     return {num(j[0], where + "[0]"), num(j[1], where + "[1]"), num(j[2], where + "[2]")};
 }
 
-// ---- the scene ------------------------------------------------------------------------------
-struct Scene {
-    std::vector<V3> P[2];
-    V3 s[2], d;
-    Q lo[2], hi[2];
-    // h(n) for polyhedron i: max over vertices of σ n·(v − s_i), σ = +1 for P1, −1 for P2, and
-    // every vertex attaining it (ascending).
-    Q h(int i, const V3& n, std::vector<int>* argmax = nullptr) const {
-        Q best;
-        for (size_t k = 0; k < P[i].size(); ++k) {
-            Q v = dot(n, sub(P[i][k], s[i]));
-            if (i == 1) v = -v;
-            if (k == 0 || v > best) { best = v; if (argmax) argmax->clear(); }
-            if (argmax && v == best) argmax->push_back(static_cast<int>(k));
+// ---- the work limit ---------------------------------------------------------------------------
+// The support scans cost (distinct normals) × (vertices), and a vertex named in a list costs its
+// own digits wherever it is named: products of sizes the file does not pay for one by one. Each
+// such step is counted here, in units of about a nanosecond, before it runs; past g_work_per_byte
+// units a byte of the file (at least g_min_work) the file is refused as unreadable (exit 2), at a
+// point that depends on the file only. Certificates the engine writes use a few units a byte
+// (FORMAT.md, "What the checker costs"). (Variables, not constants, for the tests.)
+double g_work_per_byte = 600, g_min_work = 6e8;
+double g_work = 0, g_budget = 6e8;
+void spend(double units) {
+    g_work += units;
+    if (g_work > g_budget)
+        throw Unreadable{"beyond the checker's work limit (" + std::to_string(static_cast<long long>(g_work_per_byte)) +
+                         " units a byte of the file; FORMAT.md \"What the checker costs\")"};
+}
+double limbs(const mpz_class& z) { return static_cast<double>(mpz_size(z.get_mpz_t())); }
+
+// ---- support scans --------------------------------------------------------------------------
+// Every support value h_i(n) and every list of maximisers is a scan of all the vertices of a
+// polytope, once per normal direction: with the lists of normals a file may hold, the checker's
+// largest cost. The scan compares u·X_k, X_k = D v_k, over the vertices v_k, where D > 0 is the
+// lcm of the denominators of the polytope's vertex coordinates (at most 2^16384, the engine's own
+// limit): this orders the vertices as u·(v_k − s_i) does. Exact in every case, in the cheapest
+// arithmetic the numbers allow. The vertices whose X coordinates are all below 2^62 in magnitude
+// are also held as int64; with every such |X| < 2^b and an integer u with every |u_c| < 2^c they
+// are scanned
+//   - b + c <= 61: in int64. Each product u_c X_c is below 2^61 in magnitude, each partial sum
+//     below 3·2^61 < 2^63: no overflow;
+//   - b <= 62 and c <= 62: in __int128. Each product is below 2^124 in magnitude, each partial
+//     sum below 3·2^124 < 2^126 < 2^127;
+//   - otherwise (a normal past 2^62): in mpz.
+// The other vertices (a few large numbers among many small ones cost the small ones nothing) in
+// mpz, and the two maxima compared in mpz. The maximisers found are exactly those of the
+// rational comparison, in ascending order (tests/test_checker.cpp compares both on random scenes
+// of every number kind, mixed sizes among them).
+class Scan {
+public:
+    Scan(const std::vector<V3>& v, const std::string& what) : n_(v.size()) {
+        for (const V3& p : v)
+            for (const Q& c : p) {
+                if (mpz_cmp_ui(c.get_den_mpz_t(), 1) != 0) mpz_lcm(D_.get_mpz_t(), D_.get_mpz_t(), c.get_den_mpz_t());
+                if (mpz_sizeinbase(D_.get_mpz_t(), 2) > 16384)
+                    throw Unreadable{"the common denominator of " + what + "'s vertex coordinates has more than 16384 bits (scalecert's own limit)"};
+            }
+        spend(static_cast<double>(n_) * (10 + 3 * limbs(D_)));
+        Z_.resize(n_);
+        pos_.assign(n_, -1);
+        for (size_t k = 0; k < n_; ++k) {
+            bool machine = sizeof(long) >= 8;  // mpz_get_si gives the int64 values as long
+            int64_t x[3];
+            for (int c = 0; c < 3; ++c) {
+                mpz_divexact(Z_[k][c].get_mpz_t(), D_.get_mpz_t(), v[k][c].get_den_mpz_t());
+                Z_[k][c] *= v[k][c].get_num();
+                machine = machine && small_int(Z_[k][c].get_mpz_t(), x[c]);
+            }
+            if (!machine) {
+                big_.push_back(static_cast<int>(k));
+                for (int c = 0; c < 3; ++c) big_limbs_[c] += limbs(Z_[k][c]);
+                continue;
+            }
+            pos_[k] = static_cast<int>(X_[0].size());
+            orig_.push_back(static_cast<int>(k));
+            for (int c = 0; c < 3; ++c) {
+                X_[c].push_back(x[c]);
+                bits_ = std::max(bits_, static_cast<int>(mpz_sizeinbase(Z_[k][c].get_mpz_t(), 2)));
+            }
+        }
+    }
+    // The vertices k (of `subset`, ascending, or of all) at which u·v_k is largest, ascending.
+    // u has integer coordinates.
+    std::vector<int> argmax(const std::array<mpz_class, 3>& u, const std::vector<int>* subset = nullptr) const {
+        int ub = 0;
+        for (const mpz_class& c : u) ub = std::max(ub, static_cast<int>(mpz_sizeinbase(c.get_mpz_t(), 2)));
+        int64_t w[3] = {0, 0, 0};
+        const bool small_u = small_int(u[0].get_mpz_t(), w[0]) && small_int(u[1].get_mpz_t(), w[1]) && small_int(u[2].get_mpz_t(), w[2]);
+        // The machine-size vertices (at compact positions) and the others.
+        std::vector<int> mlist, blist;
+        const bool all = !subset;
+        if (subset)
+            for (int k : *subset) (pos_[static_cast<size_t>(k)] >= 0 ? mlist.push_back(pos_[static_cast<size_t>(k)]) : blist.push_back(k));
+        const std::vector<int>& bl = all ? big_ : blist;
+        const size_t nm = all ? X_[0].size() : mlist.size();
+        std::vector<int> mout, bout;
+        mpz_class mbest, bbest;
+        if (nm > 0) {
+            const int* at = all ? nullptr : mlist.data();
+            const int64_t *x = X_[0].data(), *y = X_[1].data(), *z = X_[2].data();
+            if (small_u && bits_ + ub <= 61) {
+                spend(static_cast<double>(nm));
+                const int64_t a = w[0], b = w[1], c = w[2];
+                auto value = [=](size_t k) { return a * x[k] + b * y[k] + c * z[k]; };
+                const int64_t best = at ? scan<int64_t>(nm, at, value, mout) : scan<int64_t>(nm, value, mout);
+                if (all && bl.empty()) return mout;  // every vertex is at its own position
+                mbest = static_cast<long>(best);
+            } else if (small_u) {
+                spend(2.0 * static_cast<double>(nm));
+                const __int128 a = w[0], b = w[1], c = w[2];
+                auto value = [=](size_t k) { return a * x[k] + b * y[k] + c * z[k]; };
+                const __int128 best = at ? scan<__int128>(nm, at, value, mout) : scan<__int128>(nm, value, mout);
+                if (all && bl.empty()) return mout;
+                mbest = from128(best);
+            }
+            if (small_u) {
+                for (int& p : mout) p = orig_[static_cast<size_t>(p)];
+            } else {  // a normal past 2^62: GMP integers for these vertices too
+                std::vector<int> list;
+                if (all) list = orig_;
+                else for (int p : mlist) list.push_back(orig_[static_cast<size_t>(p)]);
+                mout = mpz_scan(u, list, mbest);
+            }
+        }
+        if (!bl.empty()) bout = mpz_scan(u, bl, bbest);
+        if (bout.empty()) return mout;
+        if (mout.empty()) return bout;
+        const int c = cmp(mbest, bbest);
+        if (c != 0) return c > 0 ? mout : bout;
+        std::vector<int> both;  // equal maxima: the two ascending lists merged
+        std::merge(mout.begin(), mout.end(), bout.begin(), bout.end(), std::back_inserter(both));
+        return both;
+    }
+    const mpz_class& D() const { return D_; }
+    const std::array<mpz_class, 3>& X(size_t k) const { return Z_[k]; }  // D v_k
+    size_t size() const { return n_; }
+
+private:
+    size_t n_;
+    mpz_class D_ = 1;
+    std::vector<std::array<mpz_class, 3>> Z_;  // X_k = D v_k
+    // The vertices whose X coordinates are all below 2^62 in magnitude, held as int64 at compact
+    // positions (orig_: position -> vertex, pos_: vertex -> position or -1), and the others (big_).
+    std::vector<int64_t> X_[3];
+    std::vector<int> orig_, pos_, big_;
+    int bits_ = 0;         // every machine |X| < 2^bits_
+    double big_limbs_[3] = {0, 0, 0};  // the limbs of the others' X, by coordinate
+
+    // z as an int64 when |z| < 2^62 (and long holds it); false otherwise.
+    static bool small_int(mpz_srcptr z, int64_t& out) {
+        if (mpz_sizeinbase(z, 2) > 62 || !mpz_fits_slong_p(z)) return false;
+        out = mpz_get_si(z);
+        return true;
+    }
+    static mpz_class from128(__int128 v) {
+        const bool neg = v < 0;
+        unsigned __int128 a = neg ? -static_cast<unsigned __int128>(v) : static_cast<unsigned __int128>(v);
+        mpz_class r(static_cast<unsigned long>(static_cast<uint64_t>(a >> 64)));
+        r <<= 64;
+        r += static_cast<unsigned long>(static_cast<uint64_t>(a));
+        return neg ? mpz_class(-r) : r;
+    }
+    // u·X_k over the vertices of `list` (ascending) in GMP integers: the maximisers, ascending, and
+    // the maximum in `best`. About 40 units a vertex and half a unit a limb product (measured: 45 ns
+    // a vertex of one-limb numbers, 250 ns for 256-limb coordinates and a one-limb normal).
+    std::vector<int> mpz_scan(const std::array<mpz_class, 3>& u, const std::vector<int>& list, mpz_class& best) const {
+        double units = 40 * static_cast<double>(list.size());
+        for (int c = 0; c < 3; ++c) {
+            double lx = 0;
+            if (&list == &big_) lx = big_limbs_[c];
+            else for (int k : list) lx += limbs(Z_[static_cast<size_t>(k)][c]);
+            units += 0.5 * std::max(1.0, limbs(u[c])) * lx;
+        }
+        spend(units);
+        std::vector<int> out;
+        mpz_class v;
+        for (int k : list) {
+            const auto& X = Z_[static_cast<size_t>(k)];
+            mpz_mul(v.get_mpz_t(), u[0].get_mpz_t(), X[0].get_mpz_t());
+            mpz_addmul(v.get_mpz_t(), u[1].get_mpz_t(), X[1].get_mpz_t());
+            mpz_addmul(v.get_mpz_t(), u[2].get_mpz_t(), X[2].get_mpz_t());
+            const int c = out.empty() ? 1 : cmp(v, best);
+            if (c > 0) { mpz_swap(best.get_mpz_t(), v.get_mpz_t()); out.clear(); }
+            if (c >= 0) out.push_back(k);
+        }
+        return out;
+    }
+    // All vertices, in one pass: the running maximum in a register, the list touched only when
+    // a vertex reaches it (rarely, once the maximum is found). Returns the maximum.
+    template <class T, class F>
+    static T scan(size_t n, F value, std::vector<int>& out) {
+        out.reserve(8);
+        out.push_back(0);
+        T best = value(0);
+        for (size_t k = 1; k < n; ++k) {
+            const T v = value(k);
+            if (__builtin_expect(v >= best, 0)) {
+                if (v > best) { best = v; out.clear(); }
+                out.push_back(static_cast<int>(k));
+            }
         }
         return best;
     }
-    // The point s_i + ρ (v − s_i).
-    V3 scaled(int i, int k, const Q& rho) const {
-        V3 y;
-        for (int c = 0; c < 3; ++c) y[c] = s[i][c] + rho * (P[i][k][c] - s[i][c]);
-        return y;
+    // The positions of a list (ascending), in one pass.
+    template <class T, class F>
+    static T scan(size_t n, const int* at, F value, std::vector<int>& out) {
+        T best{};
+        for (size_t j = 0; j < n; ++j) {
+            const size_t k = static_cast<size_t>(at[j]);
+            const T v = value(k);
+            if (out.empty() || v >= best) {
+                if (out.empty() || v > best) { best = v; out.clear(); }
+                out.push_back(static_cast<int>(k));
+            }
+        }
+        return best;
     }
+};
+
+using Z3 = std::array<mpz_class, 3>;
+mpz_class dotz(const Z3& a, const Z3& b) {
+    mpz_class r;
+    mpz_mul(r.get_mpz_t(), a[0].get_mpz_t(), b[0].get_mpz_t());
+    mpz_addmul(r.get_mpz_t(), a[1].get_mpz_t(), b[1].get_mpz_t());
+    mpz_addmul(r.get_mpz_t(), a[2].get_mpz_t(), b[2].get_mpz_t());
+    return r;
+}
+Z3 ints(const V3& n) { return {n[0].get_num(), n[1].get_num(), n[2].get_num()}; }  // an integer vector
+
+// ---- the scene ------------------------------------------------------------------------------
+// The claims compare exact values of the file against values recomputed from the scene. A value
+// from the scene is an integer over one joint denominator D*, the lcm of both polytopes' vertex
+// denominators and the seeds' (S_i = D* s_i, Delta = D* (s2 − s1), H_i = D* h_i): every
+// recomputed quantity is then an integer combination of the scene's numbers, and each comparison
+// with a number p/q of the file, p D* = q H, costs a product by the file's own number, never a gcd
+// of two of the scene's numbers (which would cost, per normal or per named vertex, a power of
+// digits the file pays for once).
+struct Scene {
+    std::vector<V3> P[2];
+    V3 s[2];
+    Q lo[2], hi[2];
+    std::unique_ptr<Scan> scan[2];
+    mpz_class Dj = 1, E[2];  // D* and D*/D_i
+    Z3 S[2], Delta;          // D* s_i and D* (s2 − s1)
+    std::array<Q, 3> sdv[2]; // D_i s_i = S_i / E_i (exact rationals), for the combinations over D_i
+    void prepare() {
+        for (int i = 0; i < 2; ++i) {
+            mpz_lcm(Dj.get_mpz_t(), Dj.get_mpz_t(), scan[i]->D().get_mpz_t());
+            for (const Q& c : s[i]) mpz_lcm(Dj.get_mpz_t(), Dj.get_mpz_t(), c.get_den_mpz_t());
+        }
+        spend(100 + 20 * limbs(Dj));
+        for (int i = 0; i < 2; ++i) {
+            E[i] = Dj / scan[i]->D();
+            for (int c = 0; c < 3; ++c) {
+                mpz_divexact(S[i][c].get_mpz_t(), Dj.get_mpz_t(), s[i][c].get_den_mpz_t());
+                S[i][c] *= s[i][c].get_num();
+            }
+            sdv[i] = {Q(S[i][0], E[i]), Q(S[i][1], E[i]), Q(S[i][2], E[i])};
+            for (Q& q : sdv[i]) q.canonicalize();
+        }
+        for (int c = 0; c < 3; ++c) Delta[c] = S[1][c] - S[0][c];
+    }
+
+    // D* h_i(u) for an integer u, given a vertex k attaining the maximum of u·v: u·X_k E_i − u·S_i
+    // (h_1(n) = n·(v − s1) with u = n; h_2(n) = −n·(w − s2) with u = −n).
+    mpz_class support_at(int i, const Z3& u, int k) const {
+        spend_at(i, k);
+        mpz_class r = dotz(u, scan[i]->X(static_cast<size_t>(k))) * E[i];
+        r -= dotz(u, S[i]);
+        return r;
+    }
+    // h_i(n), max over the vertices of σ n·(v − s_i) (σ = +1 for P1, −1 for P2), and every vertex
+    // attaining it (ascending): the rational value (tests compare it with a plain rational scan).
+    Q h(int i, const V3& n, std::vector<int>* argmax = nullptr) const {
+        Z3 u = ints(n);
+        if (i == 1) for (auto& c : u) c = -c;
+        std::vector<int> m = scan[i]->argmax(u);
+        Q r(support_at(i, u, m[0]), Dj);
+        r.canonicalize();
+        if (argmax) *argmax = std::move(m);
+        return r;
+    }
+    // Both support values of n over D* (H_i = D* h_i(n)) and their maximisers, computed once per
+    // direction: n = g p with p primitive and g > 0 has the maximisers of p and H_i(n) = g H_i(p)
+    // (h is positively homogeneous), so a normal repeated, or listed again as a multiple, costs no
+    // second scan. Returns the direction's entry (the same pointer for the same direction).
+    struct Support { mpz_class H[2]; std::vector<int> max[2]; };
+    const Support* support(const V3& n, mpz_class H_out[2], const std::vector<int>* max_out[2] = nullptr) const {
+        mpz_class g = 0;
+        for (const Q& c : n) mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), c.get_num_mpz_t());
+        Z3 p;
+        std::string key;
+        for (int c = 0; c < 3; ++c) {
+            mpz_divexact(p[c].get_mpz_t(), n[c].get_num_mpz_t(), g.get_mpz_t());
+            key += p[c].get_str(16) + ",";
+        }
+        auto it = cache_.find(key);
+        if (it == cache_.end()) {
+            Support e;
+            for (int i = 0; i < 2; ++i) {
+                Z3 u = p;
+                if (i == 1) for (auto& c : u) c = -c;
+                e.max[i] = scan[i]->argmax(u);
+                e.H[i] = support_at(i, u, e.max[i][0]);
+            }
+            it = cache_.emplace(std::move(key), std::move(e)).first;
+        }
+        for (int i = 0; i < 2; ++i) {
+            H_out[i] = it->second.H[i] * g;
+            if (max_out) max_out[i] = &it->second.max[i];
+        }
+        return &it->second;
+    }
+    // q == H / D* (q a number of the file, H over D*).
+    bool over(const Q& q, const mpz_class& H) const { return q.get_num() * Dj == q.get_den() * H; }
+    Q value(const mpz_class& H) const { Q r(H, Dj); r.canonicalize(); return r; }  // H / D*, for messages
+    // The work of one product by vertex k's integers and D*'s (a place on a line, a support value).
+    void spend_at(int i, int k) const {
+        const Z3& x = scan[i]->X(static_cast<size_t>(k));
+        spend(20 + 4 * (limbs(x[0]) + limbs(x[1]) + limbs(x[2]) + limbs(E[i]) + limbs(S[i][0]) + limbs(S[i][1]) + limbs(S[i][2])));
+    }
+
+private:
+    mutable std::map<std::string, Support> cache_;
 };
 const char* kPoly[2] = {"P1", "P2"};
 
 // The dimension of the affine hull of a vertex set, in one pass: a vertex that does not raise it
-// lies in the hull of those before, which only grows.
+// lies in the hull of those before, which only grows. On X_k = D v_k (the same dimension).
 int affine_dim(const Scene& sc, int i, const std::vector<int>& idx) {
-    const V3& o = sc.P[i][idx[0]];
+    const Scan& s = *sc.scan[i];
+    const Z3& o = s.X(static_cast<size_t>(idx[0]));
     int dim = 0;
-    V3 e1, c;
+    Z3 e1, c, v, x;
     for (int k : idx) {
-        V3 v = sub(sc.P[i][k], o);
-        if (dim == 0 && nonzero(v)) { e1 = v; dim = 1; }
-        else if (dim == 1 && nonzero(cross(e1, v))) { c = cross(e1, v); dim = 2; }
-        else if (dim == 2 && sgn(dot(c, v)) != 0) return 3;
+        const Z3& p = s.X(static_cast<size_t>(k));
+        const double l = 1 + limbs(p[0]) + limbs(p[1]) + limbs(p[2]) + limbs(o[0]) + limbs(o[1]) + limbs(o[2]);
+        spend(30 + 4 * l * l);
+        for (int j = 0; j < 3; ++j) v[j] = p[j] - o[j];
+        const bool nz = sgn(v[0]) || sgn(v[1]) || sgn(v[2]);
+        if (dim == 0 && nz) { e1 = v; dim = 1; continue; }
+        if (dim == 1) {
+            x = {e1[1] * v[2] - e1[2] * v[1], e1[2] * v[0] - e1[0] * v[2], e1[0] * v[1] - e1[1] * v[0]};
+            if (sgn(x[0]) || sgn(x[1]) || sgn(x[2])) { c = x; dim = 2; }
+            continue;
+        }
+        if (dim == 2 && sgn(dotz(c, v)) != 0) return 3;
     }
     return dim;
 }
@@ -284,8 +592,9 @@ Scene read_scene(const J& j) {
         for (size_t k = 0; k < vs.size(); ++k) sc.P[i].push_back(point(vs[k], w + ".vertices[" + std::to_string(k) + "]"));
         claim(sc.P[i].size() >= 4, w + " has at least 4 vertices");
         sc.s[i] = point(at(p, "seed"), w + ".seed");
+        sc.scan[i] = std::make_unique<Scan>(sc.P[i], kPoly[i]);
     }
-    sc.d = sub(sc.s[1], sc.s[0]);
+    sc.prepare();
     const char* iv[2] = {"I1", "I2"};
     for (int i = 0; i < 2; ++i) {
         const J& r = at(j, iv[i]);
@@ -297,12 +606,13 @@ Scene read_scene(const J& j) {
     return sc;
 }
 
-// Weights [[index, "w"], ...] over polyhedron i: distinct indices, w > 0, sum 1. Returns Σ w v.
-V3 combination(const Scene& sc, int i, const J& w, const std::string& where, std::vector<int>* used = nullptr) {
+// Weights [[index, "w"], ...] over polyhedron i: distinct indices, w > 0, sum 1. Returns
+// D_i Σ w v = Σ w X: each term a product of the file's weight and the scene's integers.
+std::array<Q, 3> combination(const Scene& sc, int i, const J& w, const std::string& where, std::vector<int>* used = nullptr) {
     claim(w.is_array() && !w.empty(), where + " is a nonempty list of weights");
     std::set<size_t> seen;
     Q total = 0;
-    V3 x{0, 0, 0};
+    std::array<Q, 3> x{Q(0), Q(0), Q(0)};
     for (size_t k = 0; k < w.size(); ++k) {
         std::string wk = where + "[" + std::to_string(k) + "]";
         claim(w[k].is_array() && w[k].size() == 2, wk + " is [index, weight]");
@@ -311,7 +621,9 @@ V3 combination(const Scene& sc, int i, const J& w, const std::string& where, std
         Q l = num(w[k][1], wk + " weight");
         claim(sgn(l) > 0, wk + " weight is > 0");
         total += l;
-        for (int c = 0; c < 3; ++c) x[c] += l * sc.P[i][idx][c];
+        const Z3& X = sc.scan[i]->X(idx);
+        spend(100 + 10 * (1 + limbs(l.get_num()) + limbs(l.get_den())) * (1 + limbs(X[0]) + limbs(X[1]) + limbs(X[2])));
+        for (int c = 0; c < 3; ++c) x[c] += l * Q(X[c]);
         if (used) used->push_back(static_cast<int>(idx));
     }
     claim(total == 1, where + " weights sum to 1");
@@ -324,25 +636,27 @@ void check_seed_interior(const Scene& sc, const J& j) {
     for (int i = 0; i < 2; ++i) {
         std::string w = std::string("seed_interior.") + kPoly[i];
         std::vector<int> used;
-        claim(combination(sc, i, at(j, kPoly[i]), w, &used) == sc.s[i], w + " combines to the seed");
+        claim(combination(sc, i, at(j, kPoly[i]), w, &used) == sc.sdv[i], w + " combines to the seed");
         const bool spans = affine_dim(sc, i, used) == 3;
         claim(spans, w + " uses vertices spanning 3 dimensions");
     }
 }
 
-// A witness: a common point of P1(ρ1) and P2(ρ2), s + ρ Σ λ (v − s) on each side.
+// A witness: a common point of P1(ρ1) and P2(ρ2), s + ρ Σ λ (v − s) on each side. With
+// c = Σ λ X / D_i (combination()), the point y = s + ρ (c − s) equals p iff
+// ρ D_i c = D_i p + (ρ − 1) D_i s: products of the file's numbers and the scene's.
 P2 check_witness(const Scene& sc, const J& w, const std::string& where, std::vector<int>* used = nullptr) {
     shape(w, where, {"rho1", "rho1_double", "rho2", "rho2_double", "point", "point_double", "P1", "P2"});
     Q r1 = field(w, "rho1", where), r2 = field(w, "rho2", where);
     claim(sgn(r1) >= 0 && sgn(r2) >= 0, where + " scalings are >= 0");
     std::vector<Q> x = fields(w, "point", 3, where);
-    V3 p{x[0], x[1], x[2]};
     const Q* r[2] = {&r1, &r2};
     for (int i = 0; i < 2; ++i) {
-        V3 c = combination(sc, i, at(w, kPoly[i]), where + "." + kPoly[i], used ? &used[i] : nullptr);
-        V3 y;
-        for (int k = 0; k < 3; ++k) y[k] = sc.s[i][k] + *r[i] * (c[k] - sc.s[i][k]);
-        claim(y == p, where + ".point lies in " + kPoly[i] + "(rho" + std::to_string(i + 1) + ")");
+        std::array<Q, 3> c = combination(sc, i, at(w, kPoly[i]), where + "." + kPoly[i], used ? &used[i] : nullptr);
+        const Q D(sc.scan[i]->D());
+        bool on = true;
+        for (int k = 0; k < 3; ++k) on = on && *r[i] * c[k] == x[k] * D + (*r[i] - 1) * sc.sdv[i][k];
+        claim(on, where + ".point lies in " + kPoly[i] + "(rho" + std::to_string(i + 1) + ")");
     }
     return {r1, r2};
 }
@@ -363,14 +677,34 @@ std::string contact_string(const J& j, const std::string& where) {
 // ---- the partition ----------------------------------------------------------------------------
 struct Line { Q a, b; Q at(const Q& x) const { return a * x + b; } };
 
-std::vector<P2> normalize(std::vector<P2> p) {
-    auto cr = [](const P2& o, const P2& a, const P2& b) -> Q { return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]); };
+// A convex polygon given counter-clockwise, whose vertices may repeat or lie inside an edge, in
+// its one written form: its corners only (no repeated or collinear vertices), from the lowest
+// (then leftmost) one; a polygon of two distinct points as the two sorted, of one as that point.
+// One pass with a stack drops every vertex collinear with its neighbours, then the same at the
+// wrap-around: linear. Every polygon the checker builds is such a list (the rectangle, the
+// boxes, their clips by one line, the overlap region below); for them this is what removing
+// collinear vertices one at a time, in any order, gives: the corners of a convex polygon are the
+// vertices at which it turns, and dropping a vertex where it does not turn changes no other turn.
+// (tests/test_checker.cpp compares it with that removal on random polygons.)
+std::vector<P2> normalize(const std::vector<P2>& p) {
+    auto turn = [](const P2& o, const P2& a, const P2& b) { return sgn((a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0])); };
+    std::vector<P2> d;
+    for (const P2& v : p) if (d.empty() || d.back() != v) d.push_back(v);
+    while (d.size() > 1 && d.front() == d.back()) d.pop_back();
     std::vector<P2> q;
-    for (const P2& v : p) if (q.empty() || q.back() != v) q.push_back(v);
-    while (q.size() > 1 && q.front() == q.back()) q.pop_back();
-    for (size_t i = 0; q.size() > 2 && i < q.size();) {
-        if (sgn(cr(q[(i + q.size() - 1) % q.size()], q[i], q[(i + 1) % q.size()])) == 0) { q.erase(q.begin() + static_cast<long>(i)); i = 0; }
-        else ++i;
+    if (d.size() <= 2) q = std::move(d);
+    else {
+        for (P2& v : d) {
+            while (q.size() >= 2 && turn(q[q.size() - 2], q.back(), v) == 0) q.pop_back();
+            q.push_back(std::move(v));
+        }
+        size_t b = 0;  // the polygon is q[b..]: the wrap-around, last against first and first against last
+        while (q.size() - b > 2) {
+            if (q.back() == q[b] || turn(q[q.size() - 2], q.back(), q[b]) == 0) q.pop_back();
+            else if (turn(q.back(), q[b], q[b + 1]) == 0) ++b;
+            else break;
+        }
+        q.erase(q.begin(), q.begin() + static_cast<long>(b));
     }
     if (q.size() == 2 && q[1] < q[0]) std::swap(q[0], q[1]);
     if (q.size() > 2) std::rotate(q.begin(), std::min_element(q.begin(), q.end(), [](const P2& a, const P2& b) { return a[1] != b[1] ? a[1] < b[1] : a[0] < b[0]; }), q.end());
@@ -387,6 +721,57 @@ std::vector<P2> clip(const std::vector<P2>& p, const Line& L, bool above) {
         if (sgn(fu) * sgn(fv) < 0) { Q t = fu / (fu - fv); out.push_back({u[0] + t * (v[0] - u[0]), u[1] + t * (v[1] - u[1])}); }
     }
     return normalize(out);
+}
+
+// The overlap region I1 × I2 ∩ {ρ2 >= curve}, from the pieces once they are verified: contiguous
+// over I1, each nonempty, neighbouring lines equal at their common end (the switch points), slopes
+// increasing. So the curve c is continuous and convex on I1, and each piece's line, which agrees
+// with c on an interval, supports it: L_k <= c on all of I1, and max_k L_k = c there. Clipping the
+// rectangle by every line (the earlier method, O(K) clips of polygons of up to K + 4 vertices)
+// therefore gives the set {(ρ1, ρ2) in the rectangle : ρ2 >= c(ρ1)}, which this walk lists
+// directly, counter-clockwise: the lower chain max(c, lo2) from its left end to hi1 (the curve's
+// breakpoints above lo2, where c meets lo2, the corner (hi1, lo2)), then (hi1, hi2) and the top
+// edge back. Its corners are those of that same convex set, so normalize() writes it exactly as
+// before (tests/test_checker.cpp compares both on random convex curves). Slopes are −h1/h2 < 0:
+// c decreases. A rectangle without area (lo = hi in I1 or I2) keeps the clipping, which is linear
+// for a polygon of at most two points.
+std::vector<P2> overlap_region(const Scene& sc, const std::vector<P2>& rect, const std::vector<Line>& lines,
+                               const std::vector<std::array<Q, 2>>& ranges) {
+    const Q &x0 = sc.lo[0], &x1 = sc.hi[0], &y0 = sc.lo[1], &y1 = sc.hi[1];
+    if (rect.size() < 3) {
+        std::vector<P2> over = rect;
+        for (const Line& L : lines) if (!over.empty()) over = clip(over, L, true);
+        return over;
+    }
+    if (lines.back().at(x1) > y1) return {};  // the rectangle lies below the curve
+    // The left end: lo1 when c(lo1) <= hi2, else where c meets hi2 (in the first piece whose right
+    // end is on or below hi2).
+    size_t k = 0;
+    Q xl = x0;
+    if (lines[0].at(x0) > y1) {
+        while (lines[k].at(ranges[k][1]) > y1) ++k;
+        xl = (y1 - lines[k].b) / lines[k].a;
+    }
+    std::vector<P2> w;
+    Q y = lines[k].at(xl);
+    if (y <= y0) w.push_back({xl, y0});  // the curve is at or below lo2 from xl on
+    else {
+        w.push_back({xl, y});
+        for (;; ++k) {
+            const Q& xr = ranges[k][1];
+            y = lines[k].at(xr);
+            if (y <= y0) {  // c meets lo2 in this piece
+                w.push_back({(y0 - lines[k].b) / lines[k].a, y0});
+                break;
+            }
+            w.push_back({xr, y});
+            if (k + 1 == lines.size()) break;
+        }
+    }
+    w.push_back({x1, y0 > y ? y0 : y});
+    w.push_back({x1, y1});
+    w.push_back({xl, y1});
+    return normalize(w);
 }
 
 std::vector<P2> polygon(const J& j, const std::string& where) {
@@ -430,25 +815,33 @@ void annotation_string(const J& o, const char* key, const std::string& where) {
 // in g the vertices of each feature.
 std::string switch_contact(const Scene& sc, const V3& n, const V3& m, const Q rho[2], const std::vector<int> A[2],
                            std::vector<int> g[2], const std::string& where) {
-    const V3 u = cross(n, m);
-    claim(nonzero(u), where + ": the neighbouring pieces' normals are not parallel");
-    std::vector<Q> t[2];
+    const V3 uq = cross(n, m);
+    claim(nonzero(uq), where + ": the neighbouring pieces' normals are not parallel");
+    const Z3 u = ints(uq), minus_u{-u[0], -u[1], -u[2]};
+    // A vertex's place on ℓ is t_k = u·(s_i + ρ_i (v_k − s_i)), which increases with u·v_k since
+    // ρ_i > 0 (ρ1 >= lo1 > 0; ρ2 > 0 at a touching switch): the ends of S_i are the vertices of A_i
+    // extreme along u and −u, which the exact scan finds. D* t_k = (1 − ρ_i) u·S_i + ρ_i u·X_k E_i.
+    std::vector<int> top[2], bottom[2];
     Q lo[2], hi[2];
     for (int i = 0; i < 2; ++i) {
         claim(!A[i].empty(), where + ": some vertex of " + kPoly[i] + " attains both neighbouring pieces' support values");
-        for (int k : A[i]) t[i].push_back(dot(u, sc.scaled(i, k, rho[i])));
-        lo[i] = *std::min_element(t[i].begin(), t[i].end());
-        hi[i] = *std::max_element(t[i].begin(), t[i].end());
+        top[i] = sc.scan[i]->argmax(u, &A[i]);
+        bottom[i] = sc.scan[i]->argmax(minus_u, &A[i]);
+        const Q us(dotz(u, sc.S[i]));
+        auto place = [&](int k) -> Q {
+            sc.spend_at(i, k);
+            return (1 - rho[i]) * us + rho[i] * Q(dotz(u, sc.scan[i]->X(static_cast<size_t>(k))) * sc.E[i]);
+        };
+        hi[i] = place(top[i][0]);
+        lo[i] = place(bottom[i][0]);
     }
     const Q tlo = std::max(lo[0], lo[1]), thi = std::min(hi[0], hi[1]);
     claim(tlo <= thi, where + ": the contact features of P1 and P2 meet");
     std::string label;
     for (int i = 0; i < 2; ++i) {
         const bool edge = lo[i] < hi[i] && thi > lo[i] && tlo < hi[i];
-        const Q end = thi == lo[i] ? lo[i] : hi[i];  // the end T meets, when it is a vertex
-        g[i].clear();
-        for (size_t k = 0; k < A[i].size(); ++k)
-            if (edge || t[i][k] == end) g[i].push_back(A[i][k]);
+        // all of S_i, or the vertices at the end T meets (t_k == lo_i: bottom; t_k == hi_i: top)
+        g[i] = edge ? A[i] : thi == lo[i] ? bottom[i] : top[i];
         label += edge ? 'E' : 'V';
     }
     return label;
@@ -466,7 +859,7 @@ void check_partition(const J& c) {
     std::vector<Line> lines;
     std::vector<V3> normals;
     std::vector<std::array<Q, 2>> ranges;
-    std::vector<std::array<std::vector<int>, 2>> maxi;  // each piece's maximisers on P1, P2
+    std::vector<std::array<const std::vector<int>*, 2>> maxi;  // each piece's maximisers on P1, P2 (in the scene's cache)
     for (size_t k = 0; k < pieces.size(); ++k) {
         const J& p = pieces[k];
         std::string w = "pieces[" + std::to_string(k) + "]";
@@ -482,50 +875,66 @@ void check_partition(const J& c) {
                   {"closed_form", "same_line_normals", "zero_witness"});
         annotation_string(p, "closed_form", w);
         V3 n = normal(at(p, "normal"), w + ".normal");
-        std::vector<int> f[2];
-        Q h1 = sc.h(0, n, &f[0]), h2 = sc.h(1, n, &f[1]);
-        claim(field(p, "h1", w) == h1 && sgn(h1) > 0, w + ".h1 = max n.(v - s1) over P1, recomputed: " + h1.get_str());
-        claim(field(p, "h2", w) == h2 && sgn(h2) > 0, w + ".h2 = max -n.(w - s2) over P2, recomputed: " + h2.get_str());
-        Line L{-h1 / h2, dot(n, sc.d) / h2};
-        claim(field(p, "slope", w) == L.a, w + ".slope = -h1/h2");
-        claim(field(p, "intercept", w) == L.b, w + ".intercept = n.d/h2");
+        mpz_class H[2];  // D* h1, D* h2
+        const std::vector<int>* f[2];
+        const Scene::Support* own = sc.support(n, H, f);
+        const Q h1 = field(p, "h1", w);
+        claim_lazy(sc.over(h1, H[0]) && sgn(H[0]) > 0, [&] { return w + ".h1 = max n.(v - s1) over P1, recomputed: " + sc.value(H[0]).get_str(); });
+        const Q h2 = field(p, "h2", w);
+        claim_lazy(sc.over(h2, H[1]) && sgn(H[1]) > 0, [&] { return w + ".h2 = max -n.(w - s2) over P2, recomputed: " + sc.value(H[1]).get_str(); });
+        // The line from h1, h2 (now known to be the recomputed values): slope −h1/h2, and the
+        // intercept b with b h2 = n·d.
+        const Q a = field(p, "slope", w);
+        claim(a == -h1 / h2, w + ".slope = -h1/h2");
+        const Q b = field(p, "intercept", w);
+        claim(sc.over(b * h2, dotz(ints(n), sc.Delta)), w + ".intercept = n.d/h2");
+        const Line L{a, b};
         std::vector<Q> r = fields(p, "rho1", 2, w);
         claim(r[0] < r[1] || (pieces.size() == 1 && r[0] == r[1]), w + ".rho1 is a nonempty range");
         const J& sv = at(p, "support_vertices");
         shape(sv, w + ".support_vertices", {"P1", "P2"});
         for (int i = 0; i < 2; ++i)
-            claim(has(f[i], static_cast<int>(index(at(sv, kPoly[i]), sc.P[i].size(), w + ".support_vertices." + kPoly[i]))),
+            claim(has(*f[i], static_cast<int>(index(at(sv, kPoly[i]), sc.P[i].size(), w + ".support_vertices." + kPoly[i]))),
                   w + ".support_vertices attain the support values");
         // The contact features G1, G2: the vertices maximising every listed normal with this line.
         // Every touching normal maximises on the touching set T, so T lies in G1(ρ1) ∩ G2(ρ2)
         // whatever normals are listed; the witness below, a point of T in the relative interiors of
         // both, shows no smaller face holds T (a list missing a touching normal cannot have one).
-        std::vector<int> G[2] = {f[0], f[1]};
+        // Each direction's maximisers enter the intersection once (a normal listed again, or a
+        // multiple of one, has the same maximisers): the intersections cost no more than the scans.
+        std::vector<int> Gs[2];
+        const std::vector<int>* G[2] = {f[0], f[1]};
         if (p.contains("same_line_normals")) {
             const J& sl = at(p, "same_line_normals");
             // At most four: each must shrink G1 or G2 to a proper face, of lower dimension, so more
             // are never needed, and each costs a scan of every vertex.
             claim(sl.is_array() && !sl.empty() && sl.size() <= 4, w + ".same_line_normals is a list of 1 to 4 normals");
+            std::set<const Scene::Support*> seen{own};
             for (const J& o : sl) {
                 V3 m = normal(o, w + ".same_line_normals[]");
-                std::vector<int> fm[2];
-                Q g1 = sc.h(0, m, &fm[0]), g2 = sc.h(1, m, &fm[1]);
-                claim(sgn(g2) > 0 && -g1 / g2 == L.a && dot(m, sc.d) / g2 == L.b, w + ".same_line_normals give the same line");
-                bool shrinks = false;
-                for (int i = 0; i < 2; ++i) {
-                    std::vector<int> both;
-                    std::set_intersection(G[i].begin(), G[i].end(), fm[i].begin(), fm[i].end(), std::back_inserter(both));
-                    shrinks = shrinks || both.size() < G[i].size();
-                    G[i] = std::move(both);
-                }
+                mpz_class g[2];  // D* h1(m), D* h2(m): the same line iff h2 > 0, −h1 = a h2 and m·d = b h2
+                const std::vector<int>* fm[2];
+                const Scene::Support* dir = sc.support(m, g, fm);
+                claim(sgn(g[1]) > 0 && -g[0] * L.a.get_den() == L.a.get_num() * g[1] &&
+                          dotz(ints(m), sc.Delta) * L.b.get_den() == L.b.get_num() * g[1],
+                      w + ".same_line_normals give the same line");
+                bool shrinks = false;  // (a direction listed again, or the piece's own, shrinks nothing)
+                if (seen.insert(dir).second)
+                    for (int i = 0; i < 2; ++i) {
+                        std::vector<int> both;
+                        std::set_intersection(G[i]->begin(), G[i]->end(), fm[i]->begin(), fm[i]->end(), std::back_inserter(both));
+                        shrinks = shrinks || both.size() < G[i]->size();
+                        Gs[i] = std::move(both);
+                        G[i] = &Gs[i];
+                    }
                 claim(shrinks, w + ".same_line_normals each shrink the contact features");
             }
         }
         if (!touches) {
             claim(sgn(L.at(r[0])) <= 0, w + ".contact is null only where rho2 <= 0 all along the piece");
         } else {
-            claim(!G[0].empty() && !G[1].empty(), w + ": the same-line normals share maximisers on P1 and on P2");
-            const std::string label{dimension_letter(sc, 0, G[0]), dimension_letter(sc, 1, G[1])};
+            claim(!G[0]->empty() && !G[1]->empty(), w + ": the same-line normals share maximisers on P1 and on P2");
+            const std::string label{dimension_letter(sc, 0, *G[0]), dimension_letter(sc, 1, *G[1])};
             claim(contact_string(at(p, "contact"), w + ".contact") == label,
                   w + ".contact is " + label + ", the smallest faces holding the touching set");
             const J& feats = at(p, "features");
@@ -537,11 +946,11 @@ void check_partition(const J& c) {
             for (int i = 0; i < 2; ++i) {
                 // Vertices of the feature that span it (the scene may hold more points on it).
                 std::vector<int> fl = index_list(at(feats, kPoly[i]), sc.P[i].size(), w + ".features." + kPoly[i]);
-                for (int v : fl) claim(has(G[i], v), w + ".features." + kPoly[i] + " lists only points of the contact feature");
-                claim(affine_dim(sc, i, fl) == affine_dim(sc, i, G[i]), w + ".features." + kPoly[i] + " spans the contact feature");
+                for (int v : fl) claim(has(*G[i], v), w + ".features." + kPoly[i] + " lists only points of the contact feature");
+                claim(affine_dim(sc, i, fl) == affine_dim(sc, i, *G[i]), w + ".features." + kPoly[i] + " spans the contact feature");
                 std::sort(used[i].begin(), used[i].end());
-                for (int v : used[i]) claim(has(G[i], v), w + ".contact_witness." + kPoly[i] + " weights only vertices of the contact feature");
-                claim(affine_dim(sc, i, used[i]) == affine_dim(sc, i, G[i]),
+                for (int v : used[i]) claim(has(*G[i], v), w + ".contact_witness." + kPoly[i] + " weights only vertices of the contact feature");
+                claim(affine_dim(sc, i, used[i]) == affine_dim(sc, i, *G[i]),
                       w + ".contact_witness." + kPoly[i] + " lies in the relative interior of the contact feature");
             }
         }
@@ -581,7 +990,7 @@ void check_partition(const J& c) {
         // The contact label, recomputed from all maximisers of both neighbouring normals.
         std::vector<int> A[2], g[2];
         for (int i = 0; i < 2; ++i)
-            std::set_intersection(maxi[k][i].begin(), maxi[k][i].end(), maxi[k + 1][i].begin(), maxi[k + 1][i].end(), std::back_inserter(A[i]));
+            std::set_intersection(maxi[k][i]->begin(), maxi[k][i]->end(), maxi[k + 1][i]->begin(), maxi[k + 1][i]->end(), std::back_inserter(A[i]));
         const Q rho[2] = {x, y};
         const std::string label = switch_contact(sc, normals[k], normals[k + 1], rho, A, g, w);
         claim(contact_string(at(sw[k], "contact"), w + ".contact") == label, w + ".contact is " + label + ", the features touching there");
@@ -612,13 +1021,16 @@ void check_partition(const J& c) {
     if (gc.contains("seeds_coincide")) {
         shape(gc, "growth_distance_certificate", {"seeds_coincide"});
         claim(at(gc, "seeds_coincide") == J(true), "growth_distance_certificate.seeds_coincide is true");
-        claim(sc.d == V3{0, 0, 0} && sgn(g) == 0, "growth distance 0: the seeds coincide");
+        claim(!sgn(sc.Delta[0]) && !sgn(sc.Delta[1]) && !sgn(sc.Delta[2]) && sgn(g) == 0, "growth distance 0: the seeds coincide");
     } else {
         shape(gc, "growth_distance_certificate", {"normal", "h1", "h1_double", "h2", "h2_double", "witness"});
         V3 n = normal(at(gc, "normal"), "growth_distance_certificate.normal");
-        Q h1 = sc.h(0, n), h2 = sc.h(1, n);
-        claim(field(gc, "h1", "growth_distance_certificate") == h1 && field(gc, "h2", "growth_distance_certificate") == h2, "growth_distance_certificate support values recomputed");
-        claim(sgn(h1) > 0 && sgn(h2) > 0 && dot(n, sc.d) == g * (h1 + h2), "the growth distance's plane touches at (rho*, rho*)");
+        mpz_class H[2];  // D* h1, D* h2
+        sc.support(n, H);
+        claim(sc.over(field(gc, "h1", "growth_distance_certificate"), H[0]) && sc.over(field(gc, "h2", "growth_distance_certificate"), H[1]),
+              "growth_distance_certificate support values recomputed");
+        claim(sgn(H[0]) > 0 && sgn(H[1]) > 0 && dotz(ints(n), sc.Delta) * g.get_den() == g.get_num() * (H[0] + H[1]),
+              "the growth distance's plane touches at (rho*, rho*)");
         claim(check_witness(sc, at(gc, "witness"), "growth_distance_certificate.witness") == P2{g, g}, "growth distance witness is at (rho*, rho*)");
     }
     if (c.contains("growth_distance_note"))
@@ -631,8 +1043,7 @@ void check_partition(const J& c) {
     const J& reg = at(c, "regions");
     shape(reg, "regions", {"overlap", "separated"});
     std::vector<P2> rect = normalize({{sc.lo[0], sc.lo[1]}, {sc.hi[0], sc.lo[1]}, {sc.hi[0], sc.hi[1]}, {sc.lo[0], sc.hi[1]}});
-    std::vector<P2> over = rect;
-    for (const Line& L : lines) if (!over.empty()) over = clip(over, L, true);
+    const std::vector<P2> over = overlap_region(sc, rect, lines, ranges);
     const J& ov = at(reg, "overlap");
     shape(ov, "regions.overlap", {"vertices", "vertices_double", "witnesses"});
     claim(polygon(ov, "regions.overlap") == over, "regions.overlap is the rectangle on and above the curve");
@@ -681,15 +1092,19 @@ void check_query(const J& c) {
         const J& pl = at(cert, "plane");
         shape(pl, "plane", {"normal", "offset", "offset_double", "P1_max", "P1_max_double", "P2_min", "P2_min_double", "support_vertices", "contact"});
         V3 n = normal(at(pl, "normal"), "plane.normal");
-        std::vector<int> f1, f2;
-        Q c1 = dot(n, sc.s[0]) + r1 * sc.h(0, n, &f1), c2 = dot(n, sc.s[1]) - r2 * sc.h(1, n, &f2);
+        mpz_class H[2];  // D* h1, D* h2
+        const std::vector<int>* f[2];
+        sc.support(n, H, f);
+        const std::vector<int> &f1 = *f[0], &f2 = *f[1];
+        // D* times n·s1 + rho1 h1 and n·s2 − rho2 h2 (D* > 0 keeps their order)
+        const Q c1 = Q(dotz(ints(n), sc.S[0])) + r1 * Q(H[0]), c2 = Q(dotz(ints(n), sc.S[1])) - r2 * Q(H[1]), D(sc.Dj);
         const J& sv = at(pl, "support_vertices");
         shape(sv, "plane.support_vertices", {"P1", "P2"});
         claim(has(f1, static_cast<int>(index(at(sv, "P1"), sc.P[0].size(), "plane.support_vertices.P1"))) &&
               has(f2, static_cast<int>(index(at(sv, "P2"), sc.P[1].size(), "plane.support_vertices.P2"))), "plane.support_vertices attain the extremes");
         claim(contact_string(at(pl, "contact"), "plane.contact") == std::string{dimension_letter(sc, 0, f1), dimension_letter(sc, 1, f2)}, "plane.contact is the dimension of the extreme sets");
-        claim(field(pl, "P1_max", "plane") == c1 && field(pl, "P2_min", "plane") == c2, "plane.P1_max and P2_min recomputed from the vertices");
-        claim(field(pl, "offset", "plane") == (c1 + c2) / 2, "plane.offset is midway");
+        claim(field(pl, "P1_max", "plane") * D == c1 && field(pl, "P2_min", "plane") * D == c2, "plane.P1_max and P2_min recomputed from the vertices");
+        claim(field(pl, "offset", "plane") * D == (c1 + c2) / 2, "plane.offset is midway");
         claim(v == "separated" ? c1 < c2 : c1 == c2, v == "separated" ? "the plane separates strictly" : "the plane supports both");
     }
     if (v == "touching") claim(check_witness(sc, at(cert, "witness"), "witness") == P2{r1, r2}, "the witness is at the queried pair");
@@ -702,6 +1117,8 @@ void check_query(const J& c) {
 // Checks a whole file's text. Returns the exit status; `message` is the line to print.
 int check_text(const std::string& text, std::string& message) {
     g_claims = 0;
+    g_work = 0;
+    g_budget = std::max(g_min_work, g_work_per_byte * static_cast<double>(text.size()));
     try {
         if (text.size() > kMaxFileBytes) throw Unreadable{"larger than " + std::to_string(kMaxFileBytes) + " bytes"};
         const J c = parse_strict(text);

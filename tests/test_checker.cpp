@@ -570,3 +570,285 @@ BOOST_AUTO_TEST_CASE(out_of_memory_in_the_checker_exits_2) {
     BOOST_TEST(std::count(e.begin(), e.end(), '\n') == 1);
     fs::remove(big);
 }
+
+// ---- the checker's linear stages against plain reimplementations ---------------------------------
+// Support values and maximisers (integer scans in int64, __int128 or GMP integers), the overlap
+// region (built from the verified pieces), polygon normalisation (one pass) and the work limit.
+namespace {
+namespace sc_ = scalecert_check;
+using CQ = sc_::Q;
+using CV = sc_::V3;
+
+CQ cq(long p, long q) {
+    CQ x(p, q);
+    x.canonicalize();
+    return x;
+}
+// A random integer in [0, m) (m > 0), from g's words.
+mpz_class rz(std::mt19937_64& g, const mpz_class& m) {
+    std::vector<uint64_t> w(mpz_sizeinbase(m.get_mpz_t(), 2) / 64 + 2);
+    for (auto& x : w) x = g();
+    mpz_class z;
+    mpz_import(z.get_mpz_t(), w.size(), 1, sizeof(uint64_t), 0, 0, w.data());
+    return z % m;
+}
+// A random rational p/q with |p| <= range and 1 <= q <= den_range, in lowest terms.
+CQ rq(std::mt19937_64& g, const mpz_class& range, const mpz_class& den_range) {
+    const mpz_class p = rz(g, 2 * range + 1) - range, q = den_range > 1 ? mpz_class(rz(g, den_range) + 1) : mpz_class(1);
+    CQ x(p, q);
+    x.canonicalize();
+    return x;
+}
+// A scene of the checker from its vertices and seeds (I1, I2 unused here).
+sc_::Scene make_scene(const std::vector<CV> P[2], const CV s[2]) {
+    sc_::g_work = 0;
+    sc_::Scene sc;
+    for (int i = 0; i < 2; ++i) {
+        sc.P[i] = P[i];
+        sc.s[i] = s[i];
+        sc.scan[i] = std::make_unique<sc_::Scan>(sc.P[i], i ? "P2" : "P1");
+    }
+    sc.prepare();
+    return sc;
+}
+// The plain rational definition: max over k of σ n·(v_k − s_i) and every k attaining it.
+CQ plain_h(const std::vector<CV>& P, const CV& s, const CV& n, int sigma, std::vector<int>& arg) {
+    CQ best;
+    arg.clear();
+    for (size_t k = 0; k < P.size(); ++k) {
+        CQ v = n[0] * (P[k][0] - s[0]) + n[1] * (P[k][1] - s[1]) + n[2] * (P[k][2] - s[2]);
+        if (sigma < 0) v = -v;
+        if (k == 0 || v > best) { best = v; arg.clear(); }
+        if (v == best) arg.push_back(static_cast<int>(k));
+    }
+    return best;
+}
+
+// The earlier O(n^2) normalisation and the clip by every line, kept here as references.
+std::vector<sc_::P2> ref_normalize(std::vector<sc_::P2> p) {
+    auto cr = [](const sc_::P2& o, const sc_::P2& a, const sc_::P2& b) -> CQ { return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]); };
+    std::vector<sc_::P2> q;
+    for (const sc_::P2& v : p) if (q.empty() || q.back() != v) q.push_back(v);
+    while (q.size() > 1 && q.front() == q.back()) q.pop_back();
+    for (size_t i = 0; q.size() > 2 && i < q.size();) {
+        if (sgn(cr(q[(i + q.size() - 1) % q.size()], q[i], q[(i + 1) % q.size()])) == 0) { q.erase(q.begin() + static_cast<long>(i)); i = 0; }
+        else ++i;
+    }
+    if (q.size() == 2 && q[1] < q[0]) std::swap(q[0], q[1]);
+    if (q.size() > 2) std::rotate(q.begin(), std::min_element(q.begin(), q.end(), [](const sc_::P2& a, const sc_::P2& b) { return a[1] != b[1] ? a[1] < b[1] : a[0] < b[0]; }), q.end());
+    return q;
+}
+std::vector<sc_::P2> ref_clip(const std::vector<sc_::P2>& p, const sc_::Line& L, bool above) {
+    std::vector<sc_::P2> out;
+    for (size_t i = 0; i < p.size(); ++i) {
+        const sc_::P2 &u = p[i], &v = p[(i + 1) % p.size()];
+        CQ fu = u[1] - L.at(u[0]), fv = v[1] - L.at(v[0]);
+        if (!above) { fu = -fu; fv = -fv; }
+        if (sgn(fu) >= 0) out.push_back(u);
+        if (sgn(fu) * sgn(fv) < 0) { CQ t = fu / (fu - fv); out.push_back({u[0] + t * (v[0] - u[0]), u[1] + t * (v[1] - u[1])}); }
+    }
+    return ref_normalize(out);
+}
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(support_scans_equal_the_plain_rational_definition) {
+    // Random scenes of every number kind (small integers, small fractions, integers past 2^62,
+    // 200-bit fractions, few distinct values so that maximisers tie, small and large vertices
+    // mixed in one polytope, tying across the two), random integer normals of
+    // every size (int64, __int128 and GMP paths), their multiples through the cache, and scans of
+    // subsets (the switch points' ends): value and ascending maximiser list as the definition.
+    std::mt19937_64 g(2024);
+    const mpz_class one = 1;
+    struct Kind { mpz_class range, den; };
+    const std::vector<Kind> kinds = {{20, 1}, {3, 1}, {1000, 7}, {one << 70, 1}, {one << 61, 1}, {one << 200, one << 100}, {5, one << 90}, {-1, 1}};
+    const std::vector<mpz_class> normal_sizes = {5, 1000, one << 40, one << 61, one << 90, one << 300};
+    int checks = 0, paths[3] = {0, 0, 0};
+    for (int t = 0; t < 400; ++t) {
+        const Kind& kd = kinds[static_cast<size_t>(t) % kinds.size()];
+        std::vector<CV> P[2];
+        CV s[2];
+        for (int i = 0; i < 2; ++i) {
+            const int n = 4 + static_cast<int>(g() % 27);
+            for (int k = 0; k < n; ++k) {
+                if (k > 0 && g() % 5 == 0) { P[i].push_back(P[i][g() % static_cast<size_t>(k)]); continue; }  // a repeated vertex
+                if (kd.range < 0)  // mixed: small vertices, and some with a first coordinate past 2^62
+                    P[i].push_back({g() % 3 ? rq(g, 3, 1) : rq(g, one << 70, 1), rq(g, 3, 1), rq(g, 3, 1)});
+                else
+                    P[i].push_back({rq(g, kd.range, kd.den), rq(g, kd.range, kd.den), rq(g, kd.range, kd.den)});
+            }
+            s[i] = {rq(g, abs(kd.range), kd.den), rq(g, abs(kd.range), 3), rq(g, 7, 5)};
+        }
+        sc_::Scene sc = make_scene(P, s);
+        for (int r = 0; r < 12; ++r) {
+            const mpz_class& size = normal_sizes[static_cast<size_t>(g() % normal_sizes.size())];
+            CV n;
+            do n = {rq(g, size, 1), rq(g, size, 1), rq(g, size, 1)};
+            while (!sgn(n[0]) && !sgn(n[1]) && !sgn(n[2]));
+            if (r % 4 == 0) n = {CQ(g() % 3) - 1, CQ(g() % 3) - 1, CQ(1)};  // small normals: many ties on repeated vertices
+            if (r % 4 == 1 && kd.range < 0) n = {CQ(0), CQ(g() % 3) - 1, CQ(1)};  // ties between small and large vertices
+            mpz_class H[2];
+            const std::vector<int>* cached[2];
+            sc.support(n, H, cached);
+            for (int i = 0; i < 2; ++i) {
+                std::vector<int> want, got;
+                const CQ h = plain_h(P[i], s[i], n, i ? -1 : 1, want);
+                BOOST_TEST((sc.h(i, n, &got) == h));
+                BOOST_TEST(got == want);
+                BOOST_TEST(*cached[i] == want);
+                BOOST_TEST(sc.over(h, H[i]));
+                // a multiple of the normal: the cached direction, scaled
+                const CV m = {n[0] * 6, n[1] * 6, n[2] * 6};
+                mpz_class Hm[2];
+                const std::vector<int>* cm[2];
+                sc.support(m, Hm, cm);
+                BOOST_TEST(sc.over(h * 6, Hm[i]));
+                BOOST_TEST(*cm[i] == want);
+                // a subset: the vertices of even index
+                std::vector<int> sub, want_sub;
+                for (int k = 0; k < static_cast<int>(P[i].size()); k += 2) sub.push_back(k);
+                sc_::Z3 u = sc_::ints(n);
+                if (i) for (auto& c : u) c = -c;
+                std::vector<CV> Ps;
+                for (int k : sub) Ps.push_back(P[i][static_cast<size_t>(k)]);
+                plain_h(Ps, s[i], n, i ? -1 : 1, want_sub);
+                for (int& k : want_sub) k = sub[static_cast<size_t>(k)];
+                BOOST_TEST(sc.scan[i]->argmax(u, &sub) == want_sub);
+                ++checks;
+                int ub = 0;
+                for (const auto& c : u) ub = std::max(ub, static_cast<int>(mpz_sizeinbase(c.get_mpz_t(), 2)));
+                ++paths[ub <= 62 && kd.range >= 0 && kd.range < (one << 62) && kd.den < (one << 20) ? (ub <= 40 ? 0 : 1) : 2];
+            }
+        }
+    }
+    std::cout << "support scans compared: " << checks << " (normals of up to 40 bits " << paths[0] << ", up to 62 bits " << paths[1]
+              << ", larger or large coordinates " << paths[2] << ")\n";
+    BOOST_TEST(paths[0] > 100);
+    BOOST_TEST(paths[1] > 100);
+    BOOST_TEST(paths[2] > 100);
+}
+
+BOOST_AUTO_TEST_CASE(normalize_is_the_one_at_a_time_removal_on_convex_polygons) {
+    // Convex polygons (a rectangle clipped by random lines), with repeated vertices and points
+    // inside edges inserted, started anywhere: the one-pass normalisation gives what removing
+    // collinear vertices one at a time gave.
+    std::mt19937_64 g(7);
+    int compared = 0;
+    for (int t = 0; t < 3000; ++t) {
+        const CQ x0 = rq(g, 10, 3), y0 = rq(g, 10, 3);
+        std::vector<sc_::P2> p = ref_normalize({{x0, y0}, {x0 + rq(g, 5, 2) * rq(g, 5, 2) + 1, y0}, {x0 + 6, y0 + 5}, {x0, y0 + rq(g, 4, 1) * rq(g, 4, 1) + 1}});
+        for (int c = static_cast<int>(g() % 4); c > 0 && p.size() >= 3; --c) {
+            const sc_::P2& a = p[g() % p.size()];
+            p = ref_clip(p, sc_::Line{rq(g, 5, 4), a[1] - CQ(rq(g, 5, 4)) * a[0] + rq(g, 2, 3)}, g() % 2);
+        }
+        if (p.size() < 3) continue;
+        std::vector<sc_::P2> q;  // duplicates and edge points, from a random start
+        const size_t start = g() % p.size();
+        for (size_t k = 0; k < p.size(); ++k) {
+            const sc_::P2 &a = p[(start + k) % p.size()], &b = p[(start + k + 1) % p.size()];
+            q.push_back(a);
+            if (g() % 3 == 0) q.push_back(a);
+            for (int m = static_cast<int>(g() % 3); m > 0; --m) {
+                const CQ t1 = cq(static_cast<long>(g() % 7 + 1), 8);
+                q.push_back({a[0] + t1 * (b[0] - a[0]), a[1] + t1 * (b[1] - a[1])});
+            }
+        }
+        BOOST_TEST((sc_::normalize(q) == ref_normalize(q)));
+        BOOST_TEST((sc_::normalize(q) == p));
+        ++compared;
+    }
+    BOOST_TEST(compared > 1000);
+}
+
+BOOST_AUTO_TEST_CASE(overlap_region_equals_the_clip_by_every_line) {
+    // Random convex, decreasing piecewise-linear curves over I1 (slopes increasing, neighbouring
+    // lines meeting at the breakpoints) and random I2, including I2 ends through breakpoints, the
+    // curve through a corner, rectangles without area, one piece and many: the region built from
+    // the pieces equals the rectangle clipped by every line (the earlier O(K^2) method).
+    std::mt19937_64 g(11);
+    int cases = 0, empty = 0, points = 0, polygons = 0;
+    for (int t = 0; t < 3000; ++t) {
+        const size_t K = 1 + g() % (t % 10 == 0 ? 40 : 6);
+        sc_::Scene sc;
+        sc.lo[0] = cq(static_cast<long>(1 + g() % 4), static_cast<long>(1 + g() % 3));
+        sc.hi[0] = t % 50 == 0 && K == 1 ? sc.lo[0] : CQ(sc.lo[0] + cq(static_cast<long>(1 + g() % 9), static_cast<long>(1 + g() % 4)));
+        std::vector<CQ> x{sc.lo[0]}, a;
+        for (size_t k = 1; k < K; ++k) x.push_back(x.back() + cq(static_cast<long>(1 + g() % 5), static_cast<long>(1 + g() % 7)));
+        const CQ stretch = (sc.hi[0] - sc.lo[0]) / (x.back() + 1 - sc.lo[0]);
+        for (CQ& v : x) v = sc.lo[0] + (v - sc.lo[0]) * stretch;
+        x.push_back(sc.hi[0]);
+        for (size_t k = 0; k < K; ++k) a.push_back(-cq(static_cast<long>(1 + g() % 40), static_cast<long>(1 + g() % 5)));
+        std::sort(a.begin(), a.end());
+        a.erase(std::unique(a.begin(), a.end()), a.end());
+        while (a.size() < K) a.push_back(a.back() / 2);  // still increasing and negative
+        std::vector<sc_::Line> lines;
+        std::vector<std::array<CQ, 2>> ranges;
+        CQ y = rq(g, 20, 3) + 10;
+        for (size_t k = 0; k < K; ++k) {
+            lines.push_back({a[k], y - a[k] * x[k]});
+            ranges.push_back({x[k], x[k + 1]});
+            y = lines.back().at(x[k + 1]);
+        }
+        std::vector<CQ> ys;  // values the curve takes at breakpoints, and around them
+        for (size_t k = 0; k <= K; ++k) ys.push_back(k < K ? lines[k].at(x[k]) : lines[K - 1].at(x[K]));
+        auto pick = [&]() { return g() % 3 == 0 ? ys[g() % ys.size()] : ys[g() % ys.size()] + rq(g, 6, 4); };
+        CQ lo2 = pick(), hi2 = pick();
+        if (hi2 < lo2) std::swap(lo2, hi2);
+        if (g() % 25 == 0) hi2 = lo2;
+        if (sgn(lo2) <= 0) { hi2 += 1 - lo2; lo2 = 1; }
+        sc.lo[1] = lo2;
+        sc.hi[1] = hi2;
+        const std::vector<sc_::P2> rect = sc_::normalize({{sc.lo[0], sc.lo[1]}, {sc.hi[0], sc.lo[1]}, {sc.hi[0], sc.hi[1]}, {sc.lo[0], sc.hi[1]}});
+        BOOST_TEST((rect == ref_normalize({{sc.lo[0], sc.lo[1]}, {sc.hi[0], sc.lo[1]}, {sc.hi[0], sc.hi[1]}, {sc.lo[0], sc.hi[1]}})));
+        std::vector<sc_::P2> want = rect;
+        for (const sc_::Line& L : lines) if (!want.empty()) want = ref_clip(want, L, true);
+        const std::vector<sc_::P2> got = sc_::overlap_region(sc, rect, lines, ranges);
+        BOOST_TEST((got == want), "case " << t << ": " << got.size() << " vertices against " << want.size());
+        ++cases;
+        (want.empty() ? empty : want.size() < 3 ? points : polygons)++;
+    }
+    std::cout << "overlap regions compared: " << cases << " (" << empty << " empty, " << points << " of one or two points, " << polygons << " polygons)\n";
+    BOOST_TEST(empty > 20);
+    BOOST_TEST(points > 20);
+    BOOST_TEST(polygons > 1000);
+}
+
+BOOST_AUTO_TEST_CASE(the_work_limit_and_the_denominator_limit_refuse_with_exit_2) {
+    // Two square pyramids tip to tip: one piece. With 2,000 more vertices (copies of the seeds)
+    // the file is valid; under a work limit lowered for the test it is refused with exit status 2,
+    // at a point that depends on the file only (the same message every time). (Same-line normals,
+    // which this test once multiplied, are at most four now, each one shrinking the features.)
+    const fs::path scene = tmpdir() / "pyramids.json", cert = tmpdir() / "pyramids.partition.json";
+    std::ofstream(scene) << R"({"P1": {"vertices": [[0,0,10],[10,10,-10],[10,-10,-10],[-10,10,-10],[-10,-10,-10]], "seed": [0,0,0]},
+ "P2": {"vertices": [[0,0,20],[10,10,40],[10,-10,40],[-10,10,40],[-10,-10,40]], "seed": [0,0,30]}, "I1": ["1/2", 2], "I2": ["1/2", 2]})";
+    BOOST_TEST_REQUIRE(engine("partition " + scene.string() + " --out " + cert.string()) == 0);
+    OJ j = load(cert);
+    BOOST_TEST_REQUIRE(j["pieces"].size() == 1u);
+    for (int k = 0; k < 1000; ++k) {
+        j["scene"]["P1"]["vertices"].push_back(j["scene"]["P1"]["seed"]);
+        j["scene"]["P2"]["vertices"].push_back(j["scene"]["P2"]["seed"]);
+    }
+    const std::string text = j.dump(1);
+    std::string msg;
+    BOOST_TEST(scalecert_check::check_text(text, msg) == 0, msg);
+    const double work = scalecert_check::g_work;
+    BOOST_TEST(work > 2.0 * 1005);  // at least one normal scanned both polytopes
+    const double per_byte = scalecert_check::g_work_per_byte, least = scalecert_check::g_min_work;
+    scalecert_check::g_work_per_byte = 0.5 * work / static_cast<double>(text.size());
+    scalecert_check::g_min_work = 0;
+    std::string first, again;
+    BOOST_TEST(scalecert_check::check_text(text, first) == 2);
+    BOOST_TEST(first.find("work limit") != std::string::npos, first);
+    BOOST_TEST(scalecert_check::check_text(text, again) == 2);
+    BOOST_TEST(first == again);
+    scalecert_check::g_work_per_byte = per_byte;
+    scalecert_check::g_min_work = least;
+    BOOST_TEST(scalecert_check::check_text(text, msg) == 0, msg);
+    // A vertex whose denominator takes the polytope's common denominator past 2^16384 (the
+    // engine's own limit): refused with exit status 2, before any scan.
+    OJ big = bundled("tetra_box_switch");
+    big["scene"]["P2"]["vertices"].push_back(OJ::array({"1/" + mpz_class(mpz_class(1) << 16384).get_str(), "0", "0"}));
+    BOOST_TEST(verdict_of(big) == 2);
+    OJ fits = bundled("tetra_box_switch");
+    fits["scene"]["P2"]["vertices"].push_back(OJ::array({"1/" + mpz_class(mpz_class(1) << 16383).get_str(), "0", "0"}));
+    BOOST_TEST(verdict_of(fits) == 0);  // a point inside the cube: every claim still holds
+}

@@ -2,6 +2,8 @@
 // same run, reported as ratios. Usage: scalecert-bench [--quick] [--sizes] [--with-slow]
 // (--sizes: only the whole-process table of the hull and scan paths on 10^3..10^6 points;
 // --with-slow adds the hull path on two 10^6-point near-spheres: two minutes and 7 GB.)
+// scalecert-bench --checker [--timeout S] [--keep DIR] [CHECKER ...]: scalecert-check on 1 MB
+// hostile certificates against reading them as plain JSON (tools/bench_checker.cpp).
 #include "scalecert/audit.hpp"
 #include "scalecert/baselines.hpp"
 #include "scalecert/families.hpp"
@@ -301,7 +303,10 @@ void query_costs(bool with_slow) {
 
 }  // namespace
 
+int checker_bench(int argc, char** argv);  // tools/bench_checker.cpp
+
 int main(int argc, char** argv) {
+    if (argc > 1 && std::strcmp(argv[1], "--checker") == 0) return checker_bench(argc - 2, argv + 2);
     bool quick = false, with_slow = false, sizes_only = false, queries_only = false;
     for (int i = 1; i < argc; ++i) {
         if (std::strcmp(argv[i], "--quick") == 0) quick = true;
@@ -309,7 +314,7 @@ int main(int argc, char** argv) {
         else if (std::strcmp(argv[i], "--sizes") == 0) sizes_only = true;
         else if (std::strcmp(argv[i], "--queries") == 0) queries_only = true;
         else {
-            std::fprintf(stderr, "usage: scalecert-bench [--quick] [--sizes] [--queries] [--with-slow]\n");
+            std::fprintf(stderr, "usage: scalecert-bench [--quick] [--sizes] [--queries] [--with-slow] | --checker [--timeout S] [--keep DIR] [CHECKER ...]\n");
             return 2;
         }
     }
