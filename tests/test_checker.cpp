@@ -309,6 +309,15 @@ int verdict_of(const std::string& text) {
     return scalecert_check::check_text(text, msg);
 }
 int verdict_of(const OJ& j) { return verdict_of(j.dump(1)); }
+// The engine's partition certificate of a scene in tests/data, accepted by the checker.
+OJ fresh_partition(const std::string& data_scene) {
+    const fs::path scene = fs::path(SCALECERT_SOURCE_DIR) / "tests/data" / data_scene;
+    const fs::path cert = tmpdir() / (data_scene + ".partition.json");
+    BOOST_TEST_REQUIRE(engine("partition " + scene.string() + " --out " + cert.string()) == 0);
+    OJ j = load(cert);
+    BOOST_TEST_REQUIRE(verdict_of(j) == 0);
+    return j;
+}
 }  // namespace
 
 BOOST_AUTO_TEST_CASE(a_partition_with_a_verdict_key_is_not_checked_as_a_query) {
@@ -370,11 +379,7 @@ BOOST_AUTO_TEST_CASE(piece_contacts_where_normals_share_a_line_are_proved_minima
     // Cubes [0,2]^3 and [2,4]×[2,4]×[0,2] (tests/data/cubes_sharing_an_edge.json) touch along the
     // edge {x = y = 2} on the line ρ2 = 2 − ρ1, given by the normals (1,0,0) and (0,1,0) alike:
     // each plane alone supports a face (FF), the contact is EE (derived in test_hand_curves).
-    const fs::path scene = fs::path(SCALECERT_SOURCE_DIR) / "tests/data/cubes_sharing_an_edge.json";
-    const fs::path cert = tmpdir() / "cubes_edge.partition.json";
-    BOOST_TEST_REQUIRE(engine("partition " + scene.string() + " --out " + cert.string()) == 0);
-    OJ j = load(cert);
-    BOOST_TEST_REQUIRE(verdict_of(j) == 0);
+    OJ j = fresh_partition("cubes_sharing_an_edge.json");
     OJ& p = j["pieces"][0];
     BOOST_TEST_REQUIRE(p["contact"] == "EE");
     BOOST_TEST_REQUIRE(p["same_line_normals"].size() == 1u);
@@ -417,11 +422,7 @@ BOOST_AUTO_TEST_CASE(pieces_below_I2_are_proved_down_to_rho2_zero) {
     // ρ2 = (18 − 7ρ1)/4 on [18/13, 2], switching at (2, 1) — below lo2, where no overlap witness
     // reaches. The last piece reaches ρ2 = 0 at ρ1 = 9/2, where the seed (0,0,9/2) of the
     // tetrahedron lies on the top face z = 9/2 of the box scaled by 9/2: its zero witness.
-    const fs::path scene = fs::path(SCALECERT_SOURCE_DIR) / "tests/data/tetra_on_box_curve_below_I2.json";
-    const fs::path cert = tmpdir() / "below_I2.partition.json";
-    BOOST_TEST_REQUIRE(engine("partition " + scene.string() + " --out " + cert.string()) == 0);
-    OJ j = load(cert);
-    BOOST_TEST_REQUIRE(verdict_of(j) == 0);
+    OJ j = fresh_partition("tetra_on_box_curve_below_I2.json");
     BOOST_TEST_REQUIRE(j["pieces"].size() == 3u);
     BOOST_TEST(j["pieces"][2]["contact"] == "FV");
     BOOST_TEST(j["pieces"][2]["intercept"] == "9/5");
@@ -461,11 +462,7 @@ BOOST_AUTO_TEST_CASE(same_line_normals_are_few_and_each_shrinks_the_features) {
     // normal cone, give it too, but add nothing once the edge is reached. Listing the same normal
     // again, or the piece's own normal, or five, made the checker scan every vertex for each
     // (the hostile review: 30,000 repeats of one normal in an 845 KB file took 496 s).
-    const fs::path scene = fs::path(SCALECERT_SOURCE_DIR) / "tests/data/cubes_sharing_an_edge.json";
-    const fs::path cert = tmpdir() / "cubes_edge2.partition.json";
-    BOOST_TEST_REQUIRE(engine("partition " + scene.string() + " --out " + cert.string()) == 0);
-    OJ j = load(cert);
-    BOOST_TEST_REQUIRE(verdict_of(j) == 0);
+    OJ j = fresh_partition("cubes_sharing_an_edge.json");
     const OJ other = j["pieces"][0]["same_line_normals"][0];
     OJ twice = j;
     twice["pieces"][0]["same_line_normals"].push_back(other);
