@@ -1167,8 +1167,23 @@ void gmp_free(void* p, size_t) { std::free(p); }
 
 int main(int argc, char** argv) {
     mp_set_memory_functions(gmp_alloc, gmp_realloc, gmp_free);
+    if (argc == 2 && (std::strcmp(argv[1], "--help") == 0 || std::strcmp(argv[1], "-h") == 0)) {
+        std::cout << "usage: scalecert-check CERTIFICATE.json\n\n"
+                     "Checks a scalecert certificate (a partition or a query answer; certificates/FORMAT.md),\n"
+                     "re-deriving every claim from the scene stored in it. Prints one line.\n"
+                     "Exit status: 0 valid, 1 invalid (the first claim that fails), 2 unreadable or refused\n"
+                     "(not a regular file, too large, malformed JSON, past the work limit).\n"
+                     "A file named --help or --version: give it as ./--help.\n";
+        return 0;
+    }
+#ifdef SCALECERT_VERSION_STRING
+    if (argc == 2 && std::strcmp(argv[1], "--version") == 0) {
+        std::cout << "scalecert-check " SCALECERT_VERSION_STRING "\n";
+        return 0;
+    }
+#endif
     if (argc != 2) {
-        std::cerr << "usage: scalecert-check CERTIFICATE.json\n";
+        std::cerr << "usage: scalecert-check CERTIFICATE.json (scalecert-check --help)\n";
         return 2;
     }
     std::string name = scalecert_check::StrictTree::printable(argv[1]), text;

@@ -286,6 +286,24 @@ BOOST_AUTO_TEST_CASE(fresh_certificates_for_random_scenes_are_valid) {
     std::cout << "fresh certificates checked: " << partitions << " partitions, " << queries << " query answers\n";
 }
 
+BOOST_AUTO_TEST_CASE(help_and_version_exit_0) {
+    // --help used to be read as a file name ("cannot open", exit 2). --version prints the version
+    // of CMakeLists.txt's project(scalecert VERSION ...).
+    BOOST_TEST(status_of(std::string(SCALECERT_CHECK_BIN) + " --help") == 0);
+    std::ifstream cm(std::string(SCALECERT_SOURCE_DIR) + "/CMakeLists.txt");
+    const std::string cml((std::istreambuf_iterator<char>(cm)), std::istreambuf_iterator<char>());
+    const size_t at = cml.find("project(scalecert VERSION ");
+    BOOST_TEST_REQUIRE(at != std::string::npos);
+    const std::string ver = cml.substr(at + 26, cml.find(' ', at + 26) - (at + 26));
+    std::FILE* p = ::popen((std::string(SCALECERT_CHECK_BIN) + " --version").c_str(), "r");
+    BOOST_TEST_REQUIRE(p != nullptr);
+    char buf[128] = {0};
+    const size_t n = std::fread(buf, 1, sizeof buf - 1, p);
+    BOOST_TEST(::pclose(p) == 0);
+    BOOST_TEST(std::string(buf, n) == "scalecert-check " + ver + "\n");
+    BOOST_TEST(status_of(std::string(SCALECERT_CHECK_BIN)) == 2);  // no file: the usage, exit 2
+}
+
 BOOST_AUTO_TEST_CASE(unreadable_files_exit_2) {
     BOOST_TEST(check_file(tmpdir() / "absent.json") == 2);
     std::ofstream(tmpdir() / "junk.json") << "{not json";
