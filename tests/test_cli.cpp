@@ -532,6 +532,10 @@ BOOST_AUTO_TEST_CASE(every_subcommand_help_shows_an_example) {
     Run v = run("--version");
     BOOST_TEST(v.status == 0);
     BOOST_TEST(v.out == "scalecert " + ver + "\n");
+    // An unknown command is named as such (it was "A subcommand is required").
+    Run u = run("frobnicate");
+    BOOST_TEST(u.status == 2);
+    BOOST_TEST(u.err.find("unknown command 'frobnicate'") != std::string::npos, u.err);
     // --out is a file everywhere; golden takes a directory under its own name.
     Run g = run("golden --family random --count 1 --dir " + (workdir() / "gd").string() + " --out x");
     BOOST_TEST(g.status == 2);

@@ -52,6 +52,16 @@ int main(int argc, char** argv) {
     const std::vector<cli::Command> commands = {
         cli::add_curve(app),     cli::add_query(app),      cli::add_partition(app), cli::add_classify(app),
         cli::add_certify_fp(app), cli::add_golden(app), cli::add_audit(app),    cli::add_grid(app)};
+    std::string names;
+    bool known = false;
+    for (const cli::Command& c : commands) {
+        names += (names.empty() ? "" : ", ") + c.app->get_name();
+        known = known || (argc > 1 && c.app->get_name() == argv[1]);
+    }
+    if (argc > 1 && argv[1][0] != '-' && !known) {
+        std::cerr << "scalecert: error: unknown command '" << one_line(argv[1]) << "' (" << names << "; see scalecert --help)\n";
+        return 2;
+    }
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
