@@ -620,6 +620,9 @@ std::array<Q, 3> combination(const Scene& sc, int i, const J& w, const std::stri
         claim(seen.insert(idx).second, wk + " names a distinct vertex");
         Q l = num(w[k][1], wk + " weight");
         claim(sgn(l) > 0, wk + " weight is > 0");
+        // The running sums' denominators can grow with every term (weights over coprime
+        // denominators), and each addition costs their size, gcd included: counted first.
+        spend(100 * (limbs(total.get_den()) + limbs(x[0].get_den()) + limbs(x[1].get_den()) + limbs(x[2].get_den())));
         total += l;
         const Z3& X = sc.scan[i]->X(idx);
         spend(100 + 10 * (1 + limbs(l.get_num()) + limbs(l.get_den())) * (1 + limbs(X[0]) + limbs(X[1]) + limbs(X[2])));
@@ -1006,12 +1009,19 @@ void check_partition(const J& c) {
         std::string w = "curve_ends[" + std::to_string(e) + "]";
         claim(ends[e].is_object() && ends[e].contains("rho2") && ends[e]["rho2"].is_string(), w + ".rho2 is present");
         const bool touching = sgn(num(ends[e]["rho2"], w + ".rho2")) > 0;
-        if (touching) shape(ends[e], w, {"rho1", "rho1_double", "rho2", "rho2_double", "witness"});
+        // A curve at or below ρ2 = 0 already at lo1 is anchored by a witness at (lo1, 0): the seed s2
+        // in P1(lo1), so every pair with ρ1 >= lo1 and ρ2 > 0 meets (P1 only grows): the curve is
+        // <= 0 all along I1, as claimed. (Without it any line of some normal could be claimed there.)
+        const bool anchored = touching || e == 0;
+        if (anchored) shape(ends[e], w, {"rho1", "rho1_double", "rho2", "rho2_double", "witness"});
         else shape(ends[e], w, {"rho1", "rho1_double", "rho2", "rho2_double"});
         Q x = field(ends[e], "rho1", w), y = field(ends[e], "rho2", w);
         const Line& L = e == 0 ? lines.front() : lines.back();
         claim(x == (e == 0 ? sc.lo[0] : sc.hi[0]) && y == L.at(x), w + " is the curve at the end of I1");
         if (touching) claim(check_witness(sc, at(ends[e], "witness"), w + ".witness") == P2{x, y}, w + " is touching");
+        else if (anchored)
+            claim(check_witness(sc, at(ends[e], "witness"), w + ".witness") == P2{x, Q(0)},
+                  w + ".witness is at (lo1, 0): the seed of P2 lies in P1(lo1)");
     }
     // Growth distance: (ρ*, ρ*) touches — the plane of n has n.d = ρ*(h1 + h2) and a witness — or
     // the seeds coincide and ρ* = 0.

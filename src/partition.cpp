@@ -114,6 +114,7 @@ Partition build_partition(const Model& m, const Curve& c) {
         size_t line = c.env.pieces[p.env].line;
         Q y = m.lines[line].at(x);
         if (sgn(y) > 0) P.end_witness[e] = make_witness(m, x, y, line);
+        else if (e == 0) P.end_witness[e] = make_witness(m, x, Q(0), size_t(-1));  // s2 in P1(lo1)
     }
     if (sgn(c.growth.value) > 0)
         P.growth_witness = make_witness(m, c.growth.value, c.growth.value, c.env.pieces[c.growth.env].line);

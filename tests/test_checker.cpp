@@ -475,6 +475,50 @@ BOOST_AUTO_TEST_CASE(pieces_below_I2_are_proved_down_to_rho2_zero) {
     BOOST_TEST(verdict_of(none) == 1);
 }
 
+BOOST_AUTO_TEST_CASE(a_curve_below_zero_at_lo1_is_anchored_by_a_witness) {
+    // The second hostile review: with the curve <= 0 at lo1, nothing pinned the pieces, so any
+    // normal's line could be claimed there. Cubes [-1,1]^3 and [1,3]×[-1,1]^2 (seeds at their
+    // centres, d = (2,0,0)) touch on x = 1 + ρ1 = 3 − ρ2: the curve is ρ2 = 2 − ρ1, at or below 0
+    // on I1 = [3, 4]. The witness at (3, 0) is P2's seed (2,0,0), inside P1(3) = [−3,3]^3.
+    OJ j = fresh_partition("cubes_side_by_side_curve_below_zero.json");
+    BOOST_TEST(j["curve_ends"][0]["rho2"] == "-1");
+    BOOST_TEST(j["curve_ends"][0]["witness"]["rho2"] == "0");
+    BOOST_TEST((j["curve_ends"][0]["witness"]["point"] == OJ::array({"2", "0", "0"})));
+    BOOST_TEST(!j["curve_ends"][1].contains("witness"));
+    // The forgery: another normal's line, (−1,0,0) pointing away from P2 (ρ2 = −2 − ρ1), and no
+    // witness; refused. With the witness kept, the line's end no longer meets it: refused too.
+    OJ f = j;
+    f["pieces"][0]["normal"] = OJ::array({"-1", "0", "0"});
+    f["pieces"][0]["intercept"] = "-2";
+    f["pieces"][0]["intercept_double"] = -2.0;
+    f["curve_ends"][0]["rho2"] = "-5";
+    f["curve_ends"][0]["rho2_double"] = -5.0;
+    f["curve_ends"][1]["rho2"] = "-6";
+    f["curve_ends"][1]["rho2_double"] = -6.0;
+    BOOST_TEST(verdict_of(f) == 1);
+    f["curve_ends"][0].erase("witness");
+    BOOST_TEST(verdict_of(f) == 1);
+}
+
+BOOST_AUTO_TEST_CASE(weights_over_coprime_denominators_meet_the_work_limit) {
+    // The second hostile review: 7,031 weights 1/(10^99 + j + 1) made each addition pay for the
+    // whole running denominator: 13 s on 885 KB under the work limit. The additions are counted
+    // now: such a list is refused at the work limit, exit 2.
+    OJ j = bundled("stacked_cubes");
+    OJ& vs = j["scene"]["P1"]["vertices"];
+    const OJ first = vs[0];
+    OJ w = OJ::array();
+    const mpz_class big = mpz_class("1" + std::string(99, '0'));
+    for (int k = 0; k < 7000; ++k) {
+        if (k >= 8) vs.push_back(first);
+        w.push_back(OJ::array({k, "1/" + mpz_class(big + k + 1).get_str()}));
+    }
+    j["seed_interior"]["P1"] = w;
+    std::string msg;
+    BOOST_TEST(scalecert_check::check_text(j.dump(1), msg) == 2);
+    BOOST_TEST(msg.find("work limit") != std::string::npos, msg);
+}
+
 BOOST_AUTO_TEST_CASE(same_line_normals_are_few_and_each_shrinks_the_features) {
     // Cubes sharing an edge: (1,0,0) and (0,1,0) give the line; (1,1,0) and (2,1,0), in their
     // normal cone, give it too, but add nothing once the edge is reached. Listing the same normal

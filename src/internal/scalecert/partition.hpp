@@ -23,7 +23,8 @@ struct Partition {
     // the seed s2 on P1(x0), so that the piece is proved touching all the way down to ρ2 = 0.
     std::vector<std::optional<Witness>> zero_witnesses;
     std::optional<Witness> growth_witness;   // at (ρ*, ρ*) when ρ* > 0
-    std::optional<Witness> end_witness[2];   // at (lo1, f(lo1)) and (hi1, f(hi1)) when f > 0
+    // At (lo1, f(lo1)) and (hi1, f(hi1)) when f > 0; at lo1 when f(lo1) <= 0, at (lo1, 0) instead.
+    std::optional<Witness> end_witness[2];
 };
 
 // Clips a convex polygon (counter-clockwise) to ρ2 ≥ a·ρ1 + b (above = true) or ≤. Drops repeated
