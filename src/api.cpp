@@ -193,12 +193,8 @@ std::vector<Verdict> Analysis::classify(const std::vector<double>& rho1, const s
         if (!(std::isfinite(rho1[i]) && std::isfinite(rho2[i]) && rho1[i] > 0 && rho2[i] > 0))
             throw InputError("classify: pair " + std::to_string(i) + ": two finite numbers > 0 are required");
     if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
-    internal::Session& s = impl_->session;
-    // The walk's curve where it proved every pair's ρ1, else the hull model's.
-    const bool walk = !rho1.empty() && s.walked() &&
-                      s.walk_covers(internal::exact_from_double(*std::min_element(rho1.begin(), rho1.end())),
-                                    internal::exact_from_double(*std::max_element(rho1.begin(), rho1.end())));
-    FastCurve f(walk ? s.curve_model() : s.hull(), walk ? s.curve() : s.hull_curve());
+    const internal::Session::Decider d = impl_->session.decider_for(rho1);
+    FastCurve f(d.model, d.curve);
     std::vector<Verdict> out;
     classify_batch(f, rho1, rho2, out, threads);
     return out;

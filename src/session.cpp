@@ -1,5 +1,6 @@
 #include "scalecert/session.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 
@@ -62,6 +63,14 @@ const Model& Session::curve_model() { return walked() ? *walk_ : hull(); }
 
 bool Session::walk_covers(const Q& lo, const Q& hi) {
     return walked() && walk_->walk_lo <= lo && (!walk_->walk_hi || hi <= *walk_->walk_hi);
+}
+
+Session::Decider Session::decider_for(const std::vector<double>& rho1) {
+    if (!rho1.empty() && walked()) {
+        const auto [lo, hi] = std::minmax_element(rho1.begin(), rho1.end());
+        if (walk_covers(exact_from_double(*lo), exact_from_double(*hi))) return {*walk_, walk_curve_};
+    }
+    return {hull(), hull_curve()};
 }
 
 Verdict Session::verdict(const Q& rho1, const Q& rho2) {

@@ -3,7 +3,6 @@
 
 #include "scalecert/fast_query.hpp"
 
-#include <algorithm>
 #include <thread>
 
 namespace scalecert::cli {
@@ -39,11 +38,8 @@ Command add_classify(CLI::App& app) {
                 }
                 clock.lap("parse pairs");
                 std::vector<Verdict> out;
-                // The walk's curve where it proved every pair's ρ1, else the hull model's.
-                const bool walk = !r1.empty() && session.walked() &&
-                                  session.walk_covers(exact_from_double(*std::min_element(r1.begin(), r1.end())),
-                                                      exact_from_double(*std::max_element(r1.begin(), r1.end())));
-                FastCurve fc(walk ? session.curve_model() : session.hull(), walk ? session.curve() : session.hull_curve());
+                const internal::Session::Decider d = session.decider_for(r1);
+                FastCurve fc(d.model, d.curve);
                 const StageCounts sc = classify_batch(fc, r1, r2, out, a->threads);
                 clock.lap("classify");
                 emit(verdict_lines(out), a->out);

@@ -16,6 +16,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace scalecert::internal {
 
@@ -50,6 +51,13 @@ public:
     Q curve_value(const Q& rho1);
     // Whether the walk proved the curve at every ρ1 in [lo, hi] (false on the hull path).
     bool walk_covers(const Q& lo, const Q& hi);
+    // The model and curve that decide every pair whose ρ1 is among `rho1` (doubles, read
+    // exactly): the walk's where it proved the curve at all of them, else the hull model's.
+    struct Decider {
+        const Model& model;
+        const Curve& curve;
+    };
+    Decider decider_for(const std::vector<double>& rho1);
     const std::string& name() const { return name_; }
     bool hull_built() const { return hull_ != nullptr; }
 
