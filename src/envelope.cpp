@@ -46,6 +46,17 @@ Envelope upper_envelope(const std::vector<ContactLine>& lines) {
     while (first + 1 < st.size() && sgn(*st[first].to) <= 0) ++first;
     st.erase(st.begin(), st.begin() + static_cast<long>(first));
     st.front().from = 0;
+    // Below ρ2 = 0 nothing touches, and the lines' envelope there describes no contact: from the
+    // first x0 >= 0 with ρ2 <= 0, the curve is the line of the piece just right of x0, carried on
+    // to +∞ (with a switch point at (x0, 0) only when the envelope turns exactly there).
+    for (size_t k = 0; k + 1 < st.size(); ++k) {
+        const int s = sgn(lines[st[k].line].at(*st[k].to));
+        if (s > 0) continue;
+        const size_t keep = s < 0 ? k + 1 : k + 2;
+        st.resize(keep);
+        st.back().to.reset();
+        break;
+    }
     for (auto& p : st) std::sort(p.same.begin(), p.same.end());
     return Envelope{st};
 }

@@ -286,11 +286,11 @@ Polygon support_polygon(const IntPoints& P, const Vec3z& n, const std::vector<in
 }
 
 // In-plane outward normals of the polygon's edges (both sides of a segment), each with the
-// polygon's maximum of u·x (in the polyhedron's integer frame).
+// polygon's maximum of u·x (in the polyhedron's integer frame). The cycle is strictly convex, so
+// an edge's outward normal is largest on the edge itself: at its two ends, nowhere else.
 struct EdgeNormal {
     Vec3z u;
     Z top;       // max over the polygon of u·x
-    int at;      // a vertex attaining it
 };
 std::vector<EdgeNormal> edge_normals(const IntPoints& P, const Vec3z& n, const Polygon& g) {
     std::vector<EdgeNormal> out;
@@ -298,18 +298,11 @@ std::vector<EdgeNormal> edge_normals(const IntPoints& P, const Vec3z& n, const P
     if (m < 2) return out;
     std::vector<Vec3z> x;
     for (int k : g.cycle) x.push_back(zpoint(P, k));
-    auto add = [&](Vec3z u) {
-        EdgeNormal e{primitive(u), Z(0), -1};
-        for (size_t i = 0; i < m; ++i) {
-            Z t = dotz(e.u, x[i]);
-            if (e.at < 0 || t > e.top) e.top = t, e.at = g.cycle[i];
-        }
-        out.push_back(std::move(e));
-    };
     if (m == 2) {
-        const Vec3z u = cross(sub(x[1], x[0]), n);
-        add(u);
-        add(neg(u));
+        const Vec3z u = primitive(cross(sub(x[1], x[0]), n));
+        const Z t = dotz(u, x[0]);  // = u·x[1]: u is orthogonal to the segment
+        out.push_back({u, t});
+        out.push_back({neg(u), -t});
         return out;
     }
     for (size_t i = 0; i < m; ++i) {
@@ -317,7 +310,8 @@ std::vector<EdgeNormal> edge_normals(const IntPoints& P, const Vec3z& n, const P
         const Vec3z& q = x[(i + 1) % m];
         Vec3z u = cross(sub(q, p), n);
         if (sgn(dotz(u, sub(x[(i + 2) % m], p))) > 0) u = neg(u);
-        add(u);
+        u = primitive(u);
+        out.push_back({u, dotz(u, p)});
     }
     return out;
 }
@@ -634,8 +628,10 @@ Model scan_model(std::shared_ptr<const CompactScene> sc) {
     clock.lap("scan: start");
     // Rightwards over I1. Everything here holds for ρ2 > 0 only; the curve descends, so it must
     // be above 0 at hi1 (and then it is at every switch point before).
-    while (right.back().hi && *right.back().hi < hi) right.push_back(w.next(right.back(), true));
-    if (sgn(right.back().L.at(hi)) <= 0) throw NeedHull("the curve reaches rho2 <= 0 in I1");
+    // A piece whose line is below ρ2 = 0 at its end reaches 0 at some x0 inside its interval, where
+    // it is proved: from x0 on the curve is that line (envelope.hpp), and the walk stops.
+    auto reaches_zero = [](const Piece& p) { return !p.hi || sgn(p.L.at(*p.hi)) < 0; };
+    while (right.back().hi && *right.back().hi < hi && !reaches_zero(right.back())) right.push_back(w.next(right.back(), true));
     // The growth distance: where y = x. Left of lo1 when the curve is below the diagonal there.
     auto crossing = [](const ContactLine& L) -> Q { return L.intercept / (Q(1) - L.slope); };
     if (right.front().L.at(lo) < lo) {
@@ -652,6 +648,7 @@ Model scan_model(std::shared_ptr<const CompactScene> sc) {
     const Piece& leftmost = left.empty() ? right.front() : left.back();
     m.walk_lo = leftmost.lo ? *leftmost.lo : Q(0);
     m.walk_hi = right.back().hi;
+    if (reaches_zero(right.back())) m.walk_hi.reset();
     for (auto* v : {&left, &right})
         for (Piece& p : *v) m.lines.push_back(std::move(p.L));
     std::sort(m.lines.begin(), m.lines.end(), [](const ContactLine& a, const ContactLine& b) { return a.normal < b.normal; });

@@ -500,6 +500,38 @@ BOOST_AUTO_TEST_CASE(a_curve_below_zero_at_lo1_is_anchored_by_a_witness) {
     BOOST_TEST(verdict_of(f) == 1);
 }
 
+BOOST_AUTO_TEST_CASE(below_rho2_zero_the_curve_is_one_line) {
+    // tests/data/boxes_curve_goes_on_below_zero.json, derived in test_hand_curves: the curve is
+    // ρ2 = 3 − ρ1 (normal (1,0,0)) on I1 = [1, 6], reaching 0 at ρ1 = 3; the line of normal (0,1,0),
+    // ρ2 = (1 − ρ1)/2, overtakes it at (5, −2), below ρ2 = 0. The engine once wrote that switch;
+    // the curve now goes on as one line there, and a certificate with a switch below 0 is refused.
+    OJ j = fresh_partition("boxes_curve_goes_on_below_zero.json");
+    BOOST_TEST_REQUIRE(j["pieces"].size() == 1u);
+    BOOST_TEST(j["switch_points"].empty());
+    BOOST_TEST(j["pieces"][0]["intercept"] == "3");
+    BOOST_TEST(j["pieces"][0]["zero_witness"]["rho1"] == "3");
+    OJ f = j;
+    f["pieces"][0]["rho1"] = OJ::array({"1", "5"});
+    f["pieces"][0]["rho1_double"] = OJ::array({1.0, 5.0});
+    OJ q = OJ::object();
+    q["rho1"] = OJ::array({"5", "6"});
+    q["rho1_double"] = OJ::array({5.0, 6.0});
+    q["slope"] = "-1/2", q["slope_double"] = -0.5, q["intercept"] = "1/2", q["intercept_double"] = 0.5;
+    q["contact"] = nullptr;
+    q["closed_form"] = j["pieces"][0]["closed_form"];
+    q["normal"] = OJ::array({"0", "1", "0"});
+    q["h1"] = "1", q["h1_double"] = 1.0, q["h2"] = "2", q["h2_double"] = 2.0;
+    q["support_vertices"] = OJ{{"P1", 2}, {"P2", 0}};
+    f["pieces"].push_back(q);
+    f["switch_points"].push_back(OJ{{"rho1", "5"}, {"rho1_double", 5.0}, {"rho2", "-2"}, {"rho2_double", -2.0}, {"contact", nullptr}});
+    f["curve_ends"][1]["rho2"] = "-5/2";
+    f["curve_ends"][1]["rho2_double"] = -2.5;
+    BOOST_TEST(verdict_of(f) == 1);
+    std::string msg;
+    scalecert_check::check_text(f.dump(1), msg);
+    BOOST_TEST(msg.find("below rho2 = 0 the curve goes on as one line") != std::string::npos, msg);
+}
+
 BOOST_AUTO_TEST_CASE(weights_over_coprime_denominators_meet_the_work_limit) {
     // The second hostile review: 7,031 weights 1/(10^99 + j + 1) made each addition pay for the
     // whole running denominator: 13 s on 885 KB under the work limit. The additions are counted

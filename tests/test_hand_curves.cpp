@@ -2,6 +2,7 @@
 #define BOOST_TEST_MODULE hand_curves
 #include <boost/test/unit_test.hpp>
 
+#include "scalecert/scan.hpp"
 #include "support.hpp"
 
 using namespace scalecert::internal;
@@ -83,6 +84,51 @@ BOOST_AUTO_TEST_CASE(coincident_seeds_overlap_everywhere) {
     Partition p = build_partition(m, c);
     BOOST_TEST(p.separated.empty());
     BOOST_TEST(p.overlap.size() == 4u);
+}
+
+BOOST_AUTO_TEST_CASE(below_rho2_zero_the_curve_goes_on_as_one_line) {
+    // P1 = [−1,1]^3, seed 0; P2 = [2,4] × [−1,3] × [−2,2], seed (3,1,0): d = (3,1,0). Both are
+    // axis-aligned boxes, so Q1 ⊕ (−Q2) is a box: its facet normals are ±e_k only.
+    //   n = (1,0,0):  h1 = 1, h2 = 1, n·d = 3   →  ρ2 = 3 − ρ1   (face x = ρ1 on face x = 3 − ρ2: FF)
+    //   n = (0,1,0):  h1 = 1, h2 = 2, n·d = 1   →  ρ2 = (1 − ρ1)/2
+    //   the others have n·d ≤ 0 and lie lower for ρ1 > 0.
+    // The lines' envelope is 3 − ρ1 up to their meeting at (5, −2), then (1 − ρ1)/2. The curve
+    // reaches ρ2 = 0 at ρ1 = 3 (the seed s2 on P1(3)'s face x = 3) and goes on as 3 − ρ1: with
+    // I1 = [1, 6], one piece and no switch point at (5, −2), on both engines.
+    Scene sc;
+    for (long x : {-1, 1}) for (long y : {-1, 1}) for (long z : {-1, 1}) sc.P[0].points.push_back({Q(x), Q(y), Q(z)});
+    for (long x : {2, 4}) for (long y : {-1, 3}) for (long z : {-2, 2}) sc.P[1].points.push_back({Q(x), Q(y), Q(z)});
+    sc.lo[0] = Q(1), sc.hi[0] = Q(6), sc.lo[1] = Q(1), sc.hi[1] = Q(2);
+    finish_scene(sc, "scene");
+    BOOST_TEST_REQUIRE((sc.P[1].seed == Vec3q{Q(3), Q(1), Q(0)}));
+    const Model hm = build_model(sc);
+    const ContactLine side = line_for_normal(hm, {Z(0), Z(1), Z(0)});
+    BOOST_TEST(side.slope == Q(-1, 2));
+    BOOST_TEST(side.intercept == Q(1, 2));
+    BOOST_TEST(side.at(Q(6)) > Q(-3));  // above 3 − ρ1 at hi1: the old curve switched to it
+    auto cs = compact_scene(sc);
+    BOOST_TEST_REQUIRE(cs.has_value());
+    const Model sm = scan_model(std::make_shared<CompactScene>(std::move(*cs)));
+    BOOST_TEST(!sm.walk_hi.has_value());  // the walk stops where the curve reaches 0, proved beyond
+    for (const Model* m : {&hm, &sm}) {
+        const Curve c = build_curve(*m);
+        BOOST_TEST_REQUIRE(c.pieces.size() == 1u);
+        const ContactLine& L = m->lines[c.env.pieces[c.pieces[0].env].line];
+        BOOST_TEST(L.slope == -1);
+        BOOST_TEST(L.intercept == 3);
+        BOOST_TEST(c.pieces[0].from == 1);
+        BOOST_TEST(c.pieces[0].to == 6);
+        BOOST_TEST(c.pieces[0].contact.label == "FF");
+        BOOST_TEST(c.switches.empty());
+        BOOST_TEST(c.env.value(m->lines, Q(6)) == -3);
+        BOOST_TEST(c.growth.value == Q(3, 2));
+    }
+    const Curve c = build_curve(hm);
+    const Partition p = build_partition(hm, c);
+    BOOST_TEST_REQUIRE(p.zero_witnesses.size() == 1u);
+    BOOST_TEST_REQUIRE(p.zero_witnesses[0].has_value());
+    BOOST_TEST(p.zero_witnesses[0]->rho1 == 3);
+    BOOST_TEST((p.zero_witnesses[0]->point == Vec3q{Q(3), Q(1), Q(0)}));  // s2 on P1(3)
 }
 
 BOOST_AUTO_TEST_CASE(scenes_built_in_code_get_the_readers_checks) {

@@ -149,6 +149,32 @@ BOOST_AUTO_TEST_CASE(random_scenes_agree_or_fall_back) {
     BOOST_TEST(t.scanned >= 60);
 }
 
+// Crossed prisms (the bench's family, scalecert-bench --queries): a regular n-gon rounded to
+// integers, extruded along z for P1 and along x for P2 above it. The Minkowski sum has O(n^2) facet
+// normals; the curve reaches ρ2 = 0 inside I1 and goes on as one line (envelope.hpp), so the walk
+// decides every one, and the scan path has byte for byte the hull path's curve.
+BOOST_AUTO_TEST_CASE(crossed_prisms_are_walked_to_rho2_zero) {
+    Tally t;
+    for (int n : {8, 13, 40, 100}) {
+        Scene sc;
+        const long R = 1000000;
+        const double pi = std::acos(-1.0);
+        for (int k = 0; k < n; ++k) {
+            const long x = std::lround(R * std::cos(2 * pi * k / n + 0.1)), y = std::lround(R * std::sin(2 * pi * k / n + 0.1));
+            for (long z : {-3 * R, 3 * R}) {
+                sc.P[0].points.push_back({Q(x), Q(y), Q(z)});
+                sc.P[1].points.push_back({Q(z + 12345), Q(y + R / 5), Q(x + 3 * R)});
+            }
+        }
+        sc = with_means(sc, Q(1, 2), Q(2));
+        const Model hm = build_model(sc);
+        const Curve hc = build_curve(hm);
+        BOOST_TEST(sgn(hm.lines[hc.env.pieces[hc.pieces.back().env].line].at(Q(2))) < 0);  // reaches 0 in I1
+        BOOST_TEST(compare(sc, "crossed " + std::to_string(n) + "-gon prisms", t));
+    }
+    BOOST_TEST(t.scanned == 4);
+}
+
 // Decimal boxes turned by exact rotations (faces, edges and vertices in contact, (V,E) switches).
 BOOST_AUTO_TEST_CASE(turned_boxes_in_decimals) {
     Tally t;

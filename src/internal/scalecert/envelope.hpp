@@ -1,5 +1,7 @@
 // Stage 4: the touching curve ρ2 = f(ρ1) = max over contact lines, over all ρ1 ≥ 0, and its
-// restriction to I1 with switch points and the growth distance.
+// restriction to I1 with switch points and the growth distance. Where the envelope reaches
+// ρ2 = 0 (P2(0) is the seed, on P1's boundary) the curve goes on as one line: below ρ2 = 0
+// nothing touches, and the envelope there would describe no contact.
 #pragma once
 #include "scalecert/contact_lines.hpp"
 
@@ -15,7 +17,7 @@ struct EnvPiece {
 };
 
 struct Envelope {
-    std::vector<EnvPiece> pieces;  // in increasing ρ1, covering [0, ∞)
+    std::vector<EnvPiece> pieces;  // in increasing ρ1, covering [0, ∞); none starts below ρ2 = 0
     // Index of the piece whose closed range holds x; at a breakpoint, the piece to its right.
     size_t locate(const Q& x) const;
     Q value(const std::vector<ContactLine>& lines, const Q& x) const;
