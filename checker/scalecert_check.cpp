@@ -795,6 +795,23 @@ std::vector<P2> polygon(const J& j, const std::string& where) {
 // Engine statistics: an annotation, but of a fixed shape (non-negative integers).
 void check_model(const J& m) {
     auto count = [](const J& j, const std::string& w) { claim(natural(j), w + " is a count"); };
+    if (m.is_object() && m.contains("engine")) {  // the walk's statistics (no hull)
+        claim(at(m, "engine") == J("scan"), "model.engine is \"scan\"");
+        shape(m, "model", {"engine", "P1", "P2", "contact_lines", "support_queries", "gift_wrap_steps", "start_lp", "decided_by_filter",
+                           "decided_exactly"});
+        for (const char* p : kPoly) {
+            shape(at(m, p), std::string("model.") + p, {"points"});
+            count(at(at(m, p), "points"), std::string("model.") + p + ".points");
+        }
+        for (const char* k : {"contact_lines", "support_queries", "gift_wrap_steps"}) count(at(m, k), std::string("model.") + k);
+        shape(at(m, "start_lp"), "model.start_lp", {"solves", "rows"});
+        for (const char* k : {"solves", "rows"}) count(at(at(m, "start_lp"), k), std::string("model.start_lp.") + k);
+        for (const char* k : {"decided_by_filter", "decided_exactly"}) {
+            shape(at(m, k), std::string("model.") + k, {"support_comparisons"});
+            count(at(at(m, k), "support_comparisons"), std::string("model.") + k + ".support_comparisons");
+        }
+        return;
+    }
     shape(m, "model", {"P1", "P2", "facet_normals", "contact_lines", "edge_pairs_tested", "gauss_arc_crossings", "decided_by_filter", "decided_exactly"});
     for (const char* p : kPoly) {
         shape(at(m, p), std::string("model.") + p, {"vertices", "edges", "faces"});

@@ -221,14 +221,9 @@ std::string Analysis::curve_json() const {
 std::string Analysis::query_json(const Rational& rho1, const Rational& rho2) const {
     check_rho(rho1, "rho1");
     check_rho(rho2, "rho2");
-    const Model& m = impl_->session.hull();
-    return dump(internal::query_json(m, internal::query(m, impl_->session.hull_curve(), rho1, rho2, true)));
+    return impl_->session.query_text(rho1, rho2);
 }
 
-std::string Analysis::partition_json() const {
-    const Model& m = impl_->session.hull();
-    const internal::Curve& c = impl_->session.hull_curve();
-    return dump(internal::partition_json(m, c, build_partition(m, c)));
-}
+std::string Analysis::partition_json() const { return impl_->session.partition_text(); }
 
 }  // namespace scalecert

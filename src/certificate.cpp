@@ -71,12 +71,62 @@ Json model_json(const Model& m) {
     return j;
 }
 
-// Seeds strictly inside: strictly positive weights on all the vertices.
+// Seeds strictly inside: strictly positive weights on vertices spanning 3 dimensions.
 Json seed_interior_json(const Model& m) {
     Json seeds;
     const char* names[2] = {"P1", "P2"};
-    for (int i = 0; i < 2; ++i) seeds[names[i]] = weights(m.P[i].interior_weights(m.s[i]));
+    for (int i = 0; i < 2; ++i) seeds[names[i]] = weights(seed_weights(m, i));
     return seeds;
+}
+
+// On the walk the points stay in machine integers (up to 10^6 per polyhedron): the scene's vertex
+// lists enter the document as placeholders, and document_text writes them straight into the
+// text, as dump() would have written them.
+const char* kVerticesPlaceholder[2] = {"@scalecert-vertices-P1@", "@scalecert-vertices-P2@"};
+
+Json scene_json_for(const Model& m) {
+    if (!m.scan) return scene_json(m.scene);
+    Scene sc = m.scene;  // seeds and ranges; no points
+    Json j = scene_json(sc);
+    const char* names[2] = {"P1", "P2"};
+    for (int i = 0; i < 2; ++i) j[names[i]]["vertices"] = kVerticesPlaceholder[i];
+    return j;
+}
+
+// An exact coordinate x / scale in lowest terms, as to_exact_string writes it.
+void append_coordinate(std::string& t, std::int64_t x, const Z& scale) {
+    if (scale == 1) {
+        t += std::to_string(x);
+        return;
+    }
+    Q q(Z(static_cast<long>(x)), scale);
+    q.canonicalize();
+    t += to_exact_string(q);
+}
+
+// nlohmann's dump(1) of an array of [x, y, z] arrays of strings, the array at `indent`.
+std::string vertices_text(const IntPoints& P, size_t indent) {
+    std::string t;
+    const size_t n = P.size();
+    if (n == 0) return "[]";
+    t.reserve(n * (3 * (indent + 16) + 2 * indent + 8));
+    t += "[\n";
+    const std::string i1(indent + 1, ' '), i2(indent + 2, ' ');
+    for (size_t k = 0; k < n; ++k) {
+        t += i1;
+        t += "[\n";
+        for (int c = 0; c < 3; ++c) {
+            t += i2;
+            t += '"';
+            append_coordinate(t, P.at(k)[c], P.scale);
+            t += c < 2 ? "\",\n" : "\"\n";
+        }
+        t += i1;
+        t += k + 1 < n ? "],\n" : "]\n";
+    }
+    t += std::string(indent, ' ');
+    t += "]";
+    return t;
 }
 
 Json witness_json(const Witness& w) {
@@ -206,7 +256,7 @@ Json query_json(const Model& m, const QueryResult& r) {
     if (r.witness) cert["witness"] = witness_json(*r.witness);
     j["certificate"] = cert;
     j["seed_interior"] = seed_interior_json(m);
-    j["scene"] = scene_json(m.scene);
+    j["scene"] = scene_json_for(m);
     return j;
 }
 
@@ -261,7 +311,7 @@ Json partition_json(const Model& m, const Curve& c, const Partition& p) {
     regions["separated"] = seps;
     j["regions"] = regions;
     j["seed_interior"] = seed_interior_json(m);
-    j["scene"] = scene_json(m.scene);
+    j["scene"] = scene_json_for(m);
     return j;
 }
 
@@ -355,6 +405,20 @@ void add_query_segment_json(Json& j, const Segment& s, const Q& rho1, const Q& r
 }
 
 std::string dump(const Json& j) { return j.dump(1) + "\n"; }
+
+std::string document_text(const Model& m, const Json& j) {
+    std::string text = dump(j);
+    if (!m.scan) return text;
+    // "scene" is a member of the document (indent 1), "P1" of the scene (2), "vertices" of P1 (3).
+    for (int i = 0; i < 2; ++i) {
+        const std::string key = std::string("\"") + kVerticesPlaceholder[i] + "\"";
+        const size_t at = text.find(key);
+        if (at == std::string::npos || text.find(key, at + 1) != std::string::npos)
+            throw std::logic_error("document_text: the vertex placeholder is not there once");
+        text.replace(at, key.size(), vertices_text(m.scan->P[i], 3));
+    }
+    return text;
+}
 
 namespace {
 // A temporary file beside `path`, created exclusively (mkstemp: O_CREAT | O_EXCL, an unpredictable

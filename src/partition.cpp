@@ -80,12 +80,24 @@ Partition build_partition(const Model& m, const Curve& c) {
         if (!over.empty()) over = clip(over, L.slope, L.intercept, true);
     }
     P.overlap = over;
+    std::vector<std::pair<int, Q>> seed[2];
+    if (m.scan && !over.empty()) seed[0] = seed_weights(m, 0), seed[1] = seed_weights(m, 1);
     for (const Pt2& v : over) {
-        // A vertex on the curve gets the witness of its contact; one strictly above, any common point.
+        // A vertex on the curve gets the witness of its contact; one strictly above, any common
+        // point: on the hull path by a program over every vertex; on the walk (no hull, up to 10^6
+        // points), the witness of the curve point below it, or of where the curve reaches ρ2 = 0
+        // left of it, lifted (lift_witness).
         size_t k = c.env.locate(v[0]);
         size_t line = c.env.pieces[k].line;
-        bool on = m.lines[line].at(v[0]) == v[1];
-        P.overlap_witnesses.push_back(make_witness(m, v[0], v[1], on ? line : size_t(-1)));
+        const ContactLine& L = m.lines[line];
+        bool on = L.at(v[0]) == v[1];
+        if (on || !m.scan) {
+            P.overlap_witnesses.push_back(make_witness(m, v[0], v[1], on ? line : size_t(-1)));
+            continue;
+        }
+        const Q f = L.at(v[0]);
+        const Witness base = sgn(f) > 0 ? make_witness(m, v[0], f, line) : make_witness(m, -L.intercept / L.slope, Q(0), line);
+        P.overlap_witnesses.push_back(lift_witness(base, v[0], v[1], seed));
     }
     for (size_t k = 0; k < c.pieces.size(); ++k) {
         const CurvePiece& p = c.pieces[k];

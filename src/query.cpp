@@ -1,5 +1,9 @@
 #include "scalecert/query.hpp"
 
+#include "scalecert/scan.hpp"
+
+#include <map>
+
 #include "scalecert/witness.hpp"
 
 namespace scalecert::internal {
@@ -32,8 +36,8 @@ static Vec3q scaled(const Vec3q& v, const Vec3q& s, const Q& rho) {
 Witness make_witness(const Model& m, const Q& rho1, const Q& rho2, const std::vector<int>& i1, const std::vector<int>& i2,
                      bool interior) {
     std::vector<Vec3q> A, B;
-    for (int i : i1) A.push_back(scaled(m.P[0].points[i], m.s[0], rho1));
-    for (int j : i2) B.push_back(scaled(m.P[1].points[j], m.s[1], rho2));
+    for (int i : i1) A.push_back(scaled(m.pt(0, static_cast<size_t>(i)), m.s[0], rho1));
+    for (int j : i2) B.push_back(scaled(m.pt(1, static_cast<size_t>(j)), m.s[1], rho2));
     auto cp = interior ? interior_common_point(A, B) : common_point(A, B);
     if (!cp) throw std::logic_error(interior ? "the contact features' relative interiors do not meet on the curve"
                                              : "no common point where the curve says the polyhedra meet");
@@ -59,6 +63,41 @@ Witness make_witness(const Model& m, const Q& rho1, const Q& rho2, const std::ve
 Witness make_witness(const Model& m, const Q& rho1, const Q& rho2, size_t line) {
     if (line == size_t(-1)) return make_witness(m, rho1, rho2, m.P[0].vertices, m.P[1].vertices, false);
     return make_witness(m, rho1, rho2, m.lines[line].feat1, m.lines[line].feat2, false);
+}
+
+std::vector<std::pair<int, Q>> seed_weights(const Model& m, int i) {
+    return m.scan ? scan_seed_weights(*m.scan, i) : m.P[i].interior_weights(m.s[i]);
+}
+
+Witness lift_witness(const Witness& w, const Q& rho1, const Q& rho2, const std::vector<std::pair<int, Q>> seed[2]) {
+    if (rho1 < w.rho1 || rho2 < w.rho2 || sgn(rho1) <= 0 || sgn(rho2) <= 0) throw std::logic_error("lift_witness: not a larger pair");
+    Witness out = w;
+    out.rho1 = rho1;
+    out.rho2 = rho2;
+    auto mix = [](const std::vector<std::pair<int, Q>>& lam, const std::vector<std::pair<int, Q>>& sigma, const Q& t) {
+        std::map<int, Q> sum;  // index order: deterministic
+        for (const auto& [k, q] : lam) sum[k] += t * q;
+        if (t != 1)
+            for (const auto& [k, q] : sigma) sum[k] += (Q(1) - t) * q;
+        std::vector<std::pair<int, Q>> v;
+        for (const auto& [k, q] : sum)
+            if (sgn(q)) v.push_back({k, q});
+        return v;
+    };
+    out.w1 = mix(w.w1, seed[0], w.rho1 / rho1);
+    out.w2 = mix(w.w2, seed[1], w.rho2 / rho2);
+    return out;
+}
+
+std::pair<Q, size_t> ray_crossing(const Model& m, const Curve& c, const Q& rho1, const Q& rho2) {
+    Q best = -1;
+    size_t best_line = 0;
+    for (const EnvPiece& p : c.env.pieces) {
+        const ContactLine& L = m.lines[p.line];
+        Q t = L.intercept / (rho2 - L.slope * rho1);
+        if (t > best) best = t, best_line = p.line;
+    }
+    return {best, best_line};
 }
 
 QueryResult query(const Model& m, const Curve& c, const Q& rho1, const Q& rho2, bool with_certificate) {
@@ -87,13 +126,7 @@ QueryResult query(const Model& m, const Curve& c, const Q& rho1, const Q& rho2, 
         } else {
             // f(tρ1) = tρ2 on some envelope piece: t = b / (ρ2 − a ρ1), the largest over the pieces
             // (each line is ≤ f, so its own crossing t is ≤ t*, with equality on the active piece).
-            Q best = -1;
-            size_t best_line = 0;
-            for (const EnvPiece& p : c.env.pieces) {
-                const ContactLine& L = m.lines[p.line];
-                Q t = L.intercept / (rho2 - L.slope * rho1);
-                if (t > best) { best = t; best_line = p.line; }
-            }
+            const auto [best, best_line] = ray_crossing(m, c, rho1, rho2);
             r.witness = make_witness(m, best * rho1, best * rho2, best_line);
         }
     }

@@ -583,6 +583,18 @@ bool scan_seeds_proved(const CompactScene& sc) {
     return true;
 }
 
+std::vector<std::pair<int, Q>> scan_seed_weights(const CompactScene& sc, int i) {
+    const std::vector<int> W = extreme_points(sc.P[i]);
+    if (!strictly_inside_few(sc.P[i], W, sc.seed[i])) throw std::logic_error("scan_seed_weights: seed not proved inside");
+    std::vector<Vec3q> A;
+    for (int k : W) A.push_back(sc.P[i].point(static_cast<size_t>(k)));
+    const auto cp = interior_common_point(A, {sc.seed[i]});
+    if (!cp) throw std::logic_error("scan_seed_weights: no interior weights");
+    std::vector<std::pair<int, Q>> w;
+    for (size_t k = 0; k < W.size(); ++k) w.push_back({W[k], cp->lambda[k]});
+    return w;
+}
+
 Model scan_model(std::shared_ptr<const CompactScene> sc) {
     StageClock clock;
     Model m;

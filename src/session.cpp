@@ -1,5 +1,7 @@
 #include "scalecert/session.hpp"
 
+#include "scalecert/certificate.hpp"
+
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -81,6 +83,36 @@ Verdict Session::verdict(const Q& rho1, const Q& rho2) {
 Q Session::curve_value(const Q& rho1) {
     if (walk_covers(rho1, rho1)) return walk_curve_.env.value(walk_->lines, rho1);
     return hull_curve().env.value(hull().lines, rho1);
+}
+
+Session::Certified Session::certified_query(const Q& rho1, const Q& rho2) {
+    if (walk_covers(rho1, rho1)) {
+        const Model& m = *walk_;
+        bool proved = true;
+        if (query(m, walk_curve_, rho1, rho2, false).verdict == Verdict::Overlapping) {
+            // The witness sits where the ray meets the walked lines' envelope: the true curve only
+            // where the walk proved it (walked lines are ≤ the curve everywhere, equal there).
+            const auto [t, line] = ray_crossing(m, walk_curve_, rho1, rho2);
+            const Q x = t * rho1;
+            proved = walk_covers(x, x) && walk_curve_.env.value(m.lines, x) == t * rho2;
+        }
+        if (proved) return {m, query(m, walk_curve_, rho1, rho2, true)};
+    }
+    const Model& h = hull();
+    return {h, query(h, hull_curve(), rho1, rho2, true)};
+}
+
+std::string Session::query_text(const Q& rho1, const Q& rho2) {
+    const Certified c = certified_query(rho1, rho2);
+    return document_text(c.model, query_json(c.model, c.result));
+}
+
+std::string Session::partition_text() {
+    const Model& m = walked() ? *walk_ : hull();
+    const Curve& c = walked() ? walk_curve_ : hull_curve();
+    const std::string text = document_text(m, partition_json(m, c, build_partition(m, c)));
+    lap("partition and output");
+    return text;
 }
 
 }  // namespace scalecert::internal

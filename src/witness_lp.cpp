@@ -70,6 +70,8 @@ std::optional<CommonPoint> common_point(const std::vector<Vec3q>& A, const std::
 }
 
 std::optional<CommonPoint> interior_common_point(const std::vector<Vec3q>& A, const std::vector<Vec3q>& B) {
+    if (A.empty() || B.empty()) return std::nullopt;
+    if (A.size() + B.size() > kBoundEveryWeightUpTo) return interior_common_point_by_centroids(A, B);
     // Variables λ, μ ≥ 0 and t ≥ 0 (index n); maximise t subject to λ_i − t ≥ 0, μ_j − t ≥ 0.
     Program lp(CGAL::EQUAL, true, ET(0), false, ET(0));
     common_point_rows(lp, A, B);
@@ -82,6 +84,38 @@ std::optional<CommonPoint> interior_common_point(const std::vector<Vec3q>& A, co
     if (v.size() != static_cast<size_t>(n) + 1 || sgn(v.back()) <= 0) return std::nullopt;
     v.pop_back();
     return split(v, A.size());
+}
+
+std::optional<CommonPoint> interior_common_point_by_centroids(const std::vector<Vec3q>& A, const std::vector<Vec3q>& B) {
+    if (A.empty() || B.empty()) return std::nullopt;
+    // Each set's centroid joins it as its last point, and only the two centroids' weights are
+    // bounded below by t (two rows, not one per point).
+    auto with_centroid = [](std::vector<Vec3q> P) {
+        Vec3q c{Q(0), Q(0), Q(0)};
+        for (const Vec3q& p : P)
+            for (int k = 0; k < 3; ++k) c[k] += p[k];
+        for (int k = 0; k < 3; ++k) c[k] /= Q(static_cast<long>(P.size()));
+        P.push_back(c);
+        return P;
+    };
+    const std::vector<Vec3q> A1 = with_centroid(A), B1 = with_centroid(B);
+    Program lp(CGAL::EQUAL, true, ET(0), false, ET(0));
+    common_point_rows(lp, A1, B1);
+    const int na = static_cast<int>(A1.size()), n = na + static_cast<int>(B1.size());
+    set_row(lp, 5, {{na - 1, Q(1)}, {n, Q(-1)}}, Q(0), CGAL::LARGER);
+    set_row(lp, 6, {{n - 1, Q(1)}, {n, Q(-1)}}, Q(0), CGAL::LARGER);
+    lp.set_c(n, ET(-1));
+    auto s = CGAL::solve_linear_program(lp, ET());
+    if (!s.is_optimal()) return std::nullopt;
+    std::vector<Q> v = values(s, static_cast<size_t>(n) + 1);
+    if (v.size() != static_cast<size_t>(n) + 1 || sgn(v.back()) <= 0) return std::nullopt;
+    // The centroid's weight spread evenly over its set: every weight > 0, the same point.
+    CommonPoint cp;
+    const Q a = v[static_cast<size_t>(na - 1)] / Q(static_cast<long>(A.size()));
+    const Q b = v[static_cast<size_t>(n - 1)] / Q(static_cast<long>(B.size()));
+    for (size_t i = 0; i < A.size(); ++i) cp.lambda.push_back(v[i] + a);
+    for (size_t j = 0; j < B.size(); ++j) cp.mu.push_back(v[static_cast<size_t>(na) + j] + b);
+    return cp;
 }
 
 std::optional<std::vector<Q>> maximise_free(const std::vector<std::vector<Q>>& A, const std::vector<Q>& b,

@@ -21,6 +21,7 @@
 #include <fstream>
 #include <map>
 #include <set>
+#include <random>
 #include <regex>
 #include <sstream>
 
@@ -58,6 +59,7 @@ const std::vector<StillTrue> kStillTrue = {
     {std::regex("optional member removed at (/model|.*/closed_form|.*/equation|.*/same_line_normals|/growth_distance_note)$"), "an annotation left out (it is optional)", false},
     {std::regex(".* at .*/features/P[12]/[0-9]+$"), "another vertex of the same contact feature, or fewer that still span it", false},
     {std::regex(".* at .*/support_vertices/P[12]$"), "another vertex attaining the same support value", false},
+    {std::regex(".* at .*/zero_witness/P2/[0-9]+/0$"), "another vertex under a zero witness's P2 weights: P2(0) is its seed, whatever the weights", false},
     {std::regex(".* at /pieces/[0-9]+/same_line_normals/[0-9]+(/[0-2])?$"),
      "another normal that gives the very same line (the checker recomputes its line and maximisers), or one listed twice", false},
     {std::regex("element duplicated at /scene/P[12]/vertices/[0-9]+$"), "a repeated vertex is the same polyhedron (a copy of the last vertex shifts no index)", false},
@@ -530,6 +532,101 @@ BOOST_AUTO_TEST_CASE(below_rho2_zero_the_curve_is_one_line) {
     std::string msg;
     scalecert_check::check_text(f.dump(1), msg);
     BOOST_TEST(msg.find("below rho2 = 0 the curve goes on as one line") != std::string::npos, msg);
+}
+
+namespace {
+// A scene file with crossed n-gon prisms (scalecert-bench's family) or two near-spheres of n points.
+fs::path write_off(const std::string& name, const std::vector<std::array<long, 3>>& pts) {
+    const fs::path p = tmpdir() / name;
+    std::ofstream o(p);
+    o << "OFF\n" << pts.size() << " 0 0\n";
+    for (const auto& v : pts) o << v[0] << ' ' << v[1] << ' ' << v[2] << '\n';
+    return p;
+}
+std::string crossed_prisms(int n) {
+    std::vector<std::array<long, 3>> a, b;
+    const long R = 1000000;
+    const double pi = std::acos(-1.0);
+    for (int k = 0; k < n; ++k) {
+        const long x = std::lround(R * std::cos(2 * pi * k / n + 0.1)), y = std::lround(R * std::sin(2 * pi * k / n + 0.1));
+        for (long z : {-3 * R, 3 * R}) a.push_back({x, y, z}), b.push_back({z + 12345, y + R / 5, x + 3 * R});
+    }
+    const std::string tag = "prism" + std::to_string(n);
+    return "--p1 " + write_off(tag + "a.off", a).string() + " --p2 " + write_off(tag + "b.off", b).string() + " --i1 1/2,2 --i2 1/2,2";
+}
+std::string near_spheres(int n) {
+    std::mt19937 g(7);
+    std::normal_distribution<double> N(0, 1);
+    std::vector<std::array<long, 3>> pts[2];
+    const long R = 1000000;
+    for (int i = 0; i < 2; ++i)
+        for (int k = 0; k < n; ++k) {
+            const double x = N(g), y = N(g), z = N(g), l = std::sqrt(x * x + y * y + z * z);
+            pts[i].push_back({std::lround(R * x / l) + 3 * R * i, std::lround(R * y / l) + R / 10 * i, std::lround(R * z / l)});
+        }
+    const std::string tag = "sphere" + std::to_string(n);
+    return "--p1 " + write_off(tag + "a.off", pts[0]).string() + " --p2 " + write_off(tag + "b.off", pts[1]).string() +
+           " --i1 1/2,2 --i2 1/2,2";
+}
+OJ run_json(const std::string& args) {
+    const fs::path out = tmpdir() / "walk.json";
+    fs::remove(out);
+    BOOST_TEST_REQUIRE(engine(args + " --out " + out.string()) == 0, args);
+    return load(out);
+}
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(the_walks_partitions_and_query_answers_pass_the_checker) {
+    // The walk (no hull) writes partitions and query answers from its support sets: witnesses
+    // over the features it walked, seed weights over a few extreme points, and overlap witnesses
+    // lifted from the curve point below (query.hpp, lift_witness). Each must pass the checker, give
+    // the hull path's regions and verdicts, and hold the same scene.
+    const std::string boxes = (fs::path(SCALECERT_SOURCE_DIR) / "tests/data/boxes_curve_goes_on_below_zero.json").string();
+    for (const std::string& scene : {boxes, crossed_prisms(8), crossed_prisms(40), near_spheres(300)}) {
+        const OJ w = run_json("partition " + scene + " --engine scan");
+        const OJ h = run_json("partition " + scene + " --engine hull");
+        BOOST_TEST_REQUIRE(w["model"]["engine"] == "scan", scene);
+        BOOST_TEST(verdict_of(w) == 0, scene);
+        BOOST_TEST(w["scene"] == h["scene"]);
+        BOOST_TEST(w["pieces"].size() == h["pieces"].size());
+        BOOST_TEST(w["regions"]["overlap"]["vertices"] == h["regions"]["overlap"]["vertices"]);
+        BOOST_TEST(w["growth_distance"] == h["growth_distance"]);
+        // Queries: on the curve at each overlap vertex and piece end, 1/1000 below and above, and
+        // far above (the ray from the origin may meet the curve left of the walk: the hull answers).
+        std::vector<std::array<mpq_class, 2>> pairs;
+        for (const auto& v : w["regions"]["overlap"]["vertices"])
+            pairs.push_back({mpq_class(v[0].get<std::string>()), mpq_class(v[1].get<std::string>())});
+        for (const auto& e : w["curve_ends"]) {
+            const mpq_class x(e["rho1"].get<std::string>()), y(e["rho2"].get<std::string>());
+            for (const mpq_class& dy : {mpq_class(0), mpq_class(-1, 1000), mpq_class(1, 1000)})
+                if (sgn(y + dy) > 0) pairs.push_back({x, y + dy});
+        }
+        pairs.push_back({mpq_class(1, 2), mpq_class(1000)});
+        for (const auto& [x, y] : pairs) {
+            const std::string q = "query " + scene + " " + x.get_str() + " " + y.get_str() + " --json --engine ";
+            const OJ a = run_json(q + "scan"), b = run_json(q + "hull");
+            BOOST_TEST(verdict_of(a) == 0, q);
+            BOOST_TEST(a["verdict"] == b["verdict"], q);
+        }
+    }
+    // By hand (test_hand_curves): the curve 3 − ρ1 reaches 0 at ρ1 = 3, where P2's seed (3, 1, 0)
+    // lies on P1(3). The overlap vertices (6, 1) and (6, 2) lie above the curve's negative part:
+    // their witnesses are that seed, lifted.
+    const OJ w = run_json("partition " + boxes + " --engine scan");
+    const OJ& ov = w["regions"]["overlap"];
+    BOOST_TEST_REQUIRE(ov["vertices"].size() == 4u);
+    BOOST_TEST((ov["vertices"][0] == OJ::array({"2", "1"})));
+    for (int k : {1, 2}) {
+        BOOST_TEST(ov["vertices"][k][0] == "6");
+        BOOST_TEST((ov["witnesses"][k]["point"] == OJ::array({"3", "1", "0"})));
+    }
+    // The walk's certificate under the structural mutations.
+    Tally t;
+    g_query = false;
+    g_named.clear();
+    collect_named(w, false);
+    mutate_all(w, w, OJ::json_pointer(), t);
+    report("walk partition (boxes)", t);
 }
 
 BOOST_AUTO_TEST_CASE(weights_over_coprime_denominators_meet_the_work_limit) {

@@ -260,32 +260,45 @@ void write_prism(const std::string& path, int n, long R, bool second) {
 }
 
 std::vector<std::string> query_rows;
-// Whole-process verdicts: `query` (a verdict: the walk where it proved the curve) against
-// `query --json` (a certificate: the hull model), and `partition`, in the same run.
+// Whole processes from the scene files: `query` (a verdict), `query --json` (with its
+// certificate) and `partition`, on the walk where it proves the curve (the default from 2,000
+// points), against `partition --engine hull` (the hull model) in the same run; the checker's time
+// on the walk's partition beside.
 void query_costs(bool with_slow) {
     const auto dir = std::filesystem::temp_directory_path() / ("scalecert-bench-" + std::to_string(::getpid()));
     std::filesystem::create_directories(dir);
-    std::fprintf(stderr, "whole process: query (verdict) against query --json (certificate, hull model):\n");
-    query_rows.push_back("| scene | query: time | peak memory | query --json: time | peak memory | ratio |");
-    query_rows.push_back("|---|---|---|---|---|---|");
+    std::fprintf(stderr, "whole process: query, query --json, partition (walk) against partition --engine hull:\n");
+    query_rows.push_back("| scene | query | query --json | partition | partition --engine hull | hull / walk | scalecert-check |");
+    query_rows.push_back("|---|---|---|---|---|---|---|");
     const std::string a = (dir / "a.off").string(), b = (dir / "b.off").string(), out = (dir / "out.txt").string();
+    static const std::string checker = (std::filesystem::canonical("/proc/self/exe").parent_path() / "scalecert-check").string();
+    auto cell = [](const ProcessRun& r) {
+        char buf[96];
+        std::snprintf(buf, sizeof buf, "%.3g s, %.0f MB%s", r.seconds, r.peak_kb / 1024.0, r.status ? " (exit status!)" : "");
+        return std::string(buf);
+    };
     auto row = [&](const std::string& name, bool hull_too) {
         const std::vector<std::string> scene = {"--p1", a, "--p2", b, "--i1", "1/2,2", "--i2", "1/2,2", "--out", out};
-        std::vector<std::string> q = {"query", "", "1", "1"}, qj = {"query", "", "1", "1", "--json"};
-        q.insert(q.end(), scene.begin(), scene.end());
-        qj.insert(qj.end(), scene.begin(), scene.end());
-        const ProcessRun v = run_scalecert(q);
+        auto with = [&](std::vector<std::string> v) {
+            v.insert(v.end(), scene.begin(), scene.end());
+            return v;
+        };
+        const ProcessRun q = run_scalecert(with({"query", "", "1", "1"}));
+        const ProcessRun qj = run_scalecert(with({"query", "", "1", "1", "--json"}));
+        const ProcessRun p = run_scalecert(with({"partition", ""}));
+        const auto t0 = std::chrono::steady_clock::now();
+        const int check = std::system((checker + " " + out + " >/dev/null 2>&1").c_str());
+        const double check_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         ProcessRun h{0, 0, 0};
-        if (hull_too) h = run_scalecert(qj);
-        char buf[512];
-        if (hull_too)
-            std::snprintf(buf, sizeof buf, "| %s | %.3g s | %.0f MB | %.3g s | %.0f MB | %.1fx |%s", name.c_str(), v.seconds, v.peak_kb / 1024.0,
-                          h.seconds, h.peak_kb / 1024.0, h.seconds / v.seconds, v.status || h.status ? " exit status!" : "");
-        else
-            std::snprintf(buf, sizeof buf, "| %s | %.3g s | %.0f MB | (--with-slow) | | |%s", name.c_str(), v.seconds, v.peak_kb / 1024.0,
-                          v.status ? " exit status!" : "");
-        query_rows.push_back(buf);
-        std::fprintf(stderr, "  %s\n", buf);
+        if (hull_too) h = run_scalecert(with({"partition", "", "--engine", "hull"}));
+        char ratio[32] = "";
+        if (hull_too) std::snprintf(ratio, sizeof ratio, "%.0fx", h.seconds / p.seconds);
+        char cs[64];
+        std::snprintf(cs, sizeof cs, "%.3g s%s", check_s, check ? " (REJECTED)" : "");
+        const std::string r = "| " + name + " | " + cell(q) + " | " + cell(qj) + " | " + cell(p) + " | " +
+                              (hull_too ? cell(h) : std::string("(--with-slow)")) + " | " + ratio + " | " + cs + " |";
+        query_rows.push_back(r);
+        std::fprintf(stderr, "  %s\n", r.c_str());
     };
     for (int n : {100000, 1000000}) {
         const long R = 10L * n * 1000;
@@ -293,10 +306,10 @@ void query_costs(bool with_slow) {
         write_cloud(b, n, R, true, true, 6 + n);
         row("near-spheres, " + std::to_string(n) + " points each", n < 1000000 || with_slow);
     }
-    for (int n : {200, 400, 800}) {
+    for (int n : {200, 800, 3200}) {
         write_prism(a, n, 1000000, false);
         write_prism(b, n, 1000000, true);
-        row("crossed " + std::to_string(n) + "-gon prisms", true);
+        row("crossed " + std::to_string(n) + "-gon prisms", n < 3200 || with_slow);
     }
     std::filesystem::remove_all(dir);
 }

@@ -143,6 +143,15 @@ std::vector<Q> number_list(const std::string& text, size_t n, const std::string&
     return out;
 }
 
+void add_engine(CLI::App* sub, std::string& engine) {
+    sub->add_option("--engine", engine, "auto (default: the walk from 2,000 points) | scan (walk the curve: no hull; the hull path if it cannot) | hull")
+        ->check(CLI::IsMember({"auto", "scan", "hull"}));
+}
+
+Engine engine_named(const std::string& engine) {
+    return engine == "hull" ? Engine::Hull : engine == "scan" ? Engine::Scan : Engine::Auto;
+}
+
 internal::Session open_session(const SceneArgs& args, Engine engine, StageClock& clock) {
     if (engine != Engine::Hull)
         if (std::shared_ptr<const internal::CompactScene> cs = args.load_compact()) {

@@ -47,6 +47,9 @@ void example(CLI::App* sub, const std::string& text);
 // The scene read into a session (session.hpp), with SCALECERT_TIMING laps on `clock`: in machine
 // integers when it fits them and the engine may walk, else by the strict reader.
 using internal::Engine;
+// --engine auto|scan|hull (default auto), read into `engine`.
+void add_engine(CLI::App* sub, std::string& engine);
+Engine engine_named(const std::string& engine);
 internal::Session open_session(const SceneArgs& scene, Engine engine, internal::StageClock& clock);
 // A segment for --segment: seeds | ellipsoids | x1,y1,z1:x2,y2,z2.
 internal::Segment parse_segment(const std::string& spec, const Model& m);

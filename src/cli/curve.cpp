@@ -15,16 +15,13 @@ Command add_curve(CLI::App& app) {
     a->scene.add(sub);
     add_out(sub, a->out);
     sub->add_option("--segment", a->segment, "add the t1-t2 curve along a segment: seeds | ellipsoids | x1,y1,z1:x2,y2,z2");
-    sub->add_option("--engine", a->engine, "auto (default) | scan (walk the curve: no hull; the hull path if it cannot) | hull")
-        ->check(CLI::IsMember({"auto", "scan", "hull"}));
+    add_engine(sub, a->engine);
     example(sub, "Examples:\n  scalecert curve certificates/scenes/tetra_box_switch.json\n"
                  "  scalecert curve --p1 examples/tetra.obj --p2 examples/box.stl --i1 1/2,2 --i2 1,4 --out curve.json");
     return {sub, [a] {
                 StageClock clock;
                 // --segment lists the faces of both hulls: the hull path.
-                const Engine e = !a->segment.empty() || a->engine == "hull" ? Engine::Hull
-                                 : a->engine == "scan"                       ? Engine::Scan
-                                                                             : Engine::Auto;
+                const Engine e = !a->segment.empty() ? Engine::Hull : engine_named(a->engine);
                 internal::Session session = open_session(a->scene, e, clock);
                 const Model& m = session.curve_model();
                 const internal::Curve& c = session.curve();

@@ -8,7 +8,7 @@ using namespace internal;
 Command add_query(CLI::App& app) {
     struct Args {
         SceneArgs scene;
-        std::string out, rho1, rho2, segment;
+        std::string out, rho1, rho2, segment, engine = "auto";
         bool json = false, in_t = false;
     };
     auto a = std::make_shared<Args>();
@@ -20,14 +20,15 @@ Command add_query(CLI::App& app) {
     sub->add_option("--segment", a->segment, "report t1, t2 and the gap along a segment: seeds | ellipsoids | x1,y1,z1:x2,y2,z2");
     sub->add_flag("--in-t", a->in_t, "RHO1 RHO2 are t1 t2 along the segment (default: seeds)");
     add_out(sub, a->out);
+    add_engine(sub, a->engine);
     example(sub, "Examples:\n  scalecert query certificates/scenes/stacked_cubes.json 3/2 3/2        # touching\n"
                  "  scalecert query certificates/scenes/stacked_cubes.json 1 1.9 --json  # with its certificate");
     return {sub, [a] {
                 a->scene.shift_positionals({&a->rho1, &a->rho2});
                 if (a->rho1.empty() || a->rho2.empty()) throw InputError("RHO1 and RHO2 are required (see scalecert query --help)");
                 StageClock clock;
-                // The verdict alone may come from the walk; a certificate or a segment needs the hull.
-                internal::Session session = open_session(a->scene, Engine::Auto, clock);
+                // The verdict and its certificate may come from the walk; a segment needs the hull.
+                internal::Session session = open_session(a->scene, engine_named(a->engine), clock);
                 std::string segment = a->segment;
                 if (a->in_t && segment.empty()) segment = "seeds";
                 std::optional<Segment> seg;
@@ -45,10 +46,12 @@ Command add_query(CLI::App& app) {
                     r2 = read_rho(a->rho2, "RHO2", a->scene.opt);
                 }
                 std::string text;
-                if (a->json) {
+                if (a->json && !seg) {
+                    text = session.query_text(r1, r2);
+                } else if (a->json) {
                     const Model& m = session.hull();
                     Json j = query_json(m, internal::query(m, session.hull_curve(), r1, r2, true));
-                    if (seg) add_query_segment_json(j, *seg, r1, r2);
+                    add_query_segment_json(j, *seg, r1, r2);
                     text = dump(j);
                 } else {
                     text = std::string(verdict_name(session.verdict(r1, r2))) + "\n";

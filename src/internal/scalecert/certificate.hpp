@@ -38,5 +38,9 @@ void write_files_atomically(const std::vector<std::pair<std::string, std::string
 
 // Serialises with a trailing newline; byte-identical for identical input.
 std::string dump(const Json& j);
+// A query answer's or partition's text: dump(j), with the scene's points written in on the walk
+// (whose documents hold placeholders for them). Use it for every document from query_json and
+// partition_json.
+std::string document_text(const Model& m, const Json& j);
 
 }  // namespace scalecert::internal

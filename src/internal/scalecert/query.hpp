@@ -32,6 +32,9 @@ struct QueryResult {
 
 // With the curve: a search over its pieces. Requires ρ1, ρ2 > 0.
 QueryResult query(const Model& m, const Curve& c, const Q& rho1, const Q& rho2, bool with_certificate = true);
+// Where the ray t·(ρ1, ρ2), t > 0, meets the highest of the envelope's lines (the largest t over
+// its pieces): the curve's crossing when the lines hold the curve there. The line's index.
+std::pair<Q, size_t> ray_crossing(const Model& m, const Curve& c, const Q& rho1, const Q& rho2);
 // Without a curve: the maximum over all contact lines (verdict only).
 Verdict query_direct(const Model& m, const Q& rho1, const Q& rho2);
 
@@ -42,5 +45,13 @@ Witness make_witness(const Model& m, const Q& rho1, const Q& rho2, size_t line);
 // one in both relative interiors, every listed vertex weighted > 0.
 Witness make_witness(const Model& m, const Q& rho1, const Q& rho2, const std::vector<int>& i1, const std::vector<int>& i2,
                      bool interior);
+
+// Weights > 0 whose weighted mean is the seed of polyhedron i, over vertices spanning 3
+// dimensions: on the hull path every hull vertex, on the walk a few extreme points.
+std::vector<std::pair<int, Q>> seed_weights(const Model& m, int i);
+// The witness w moved to (ρ1, ρ2) ≥ (w.rho1, w.rho2): the same point, which lies in P_i(ρ) for
+// every ρ ≥ w's as the seed is inside. Its weights become (w.ρ/ρ)·λ + (1 − w.ρ/ρ)·σ, σ the seed
+// weights (Σσ(v − s) = 0), merged by index.
+Witness lift_witness(const Witness& w, const Q& rho1, const Q& rho2, const std::vector<std::pair<int, Q>> seed[2]);
 
 }  // namespace scalecert::internal

@@ -36,6 +36,10 @@ Model scan_model(std::shared_ptr<const CompactScene> sc);
 // "not proved" (the hull decides), not "outside".
 bool scan_seeds_proved(const CompactScene& sc);
 
+// Weights > 0 on a few extreme points of polyhedron i (at most 14, spanning 3 dimensions) whose
+// weighted mean is its seed: the seed in the interior, as scan_model proved it. Sorted by index.
+std::vector<std::pair<int, Q>> scan_seed_weights(const CompactScene& sc, int i);
+
 // From this many points (both polyhedra together) the scan path is the faster one: the command
 // and the library take it by default (scalecert-bench --sizes).
 constexpr size_t kScanFromPoints = 2000;

@@ -58,6 +58,16 @@ public:
         const Curve& curve;
     };
     Decider decider_for(const std::vector<double>& rho1);
+    // Certificates (certificate.hpp): on the walk when it proved what they rest on, else on the
+    // hull model. A query answer needs the curve at ρ1 and, when overlapping, where the ray
+    // t·(ρ1, ρ2) meets it; a partition needs it over I1, which the walk always covers.
+    struct Certified {
+        const Model& model;
+        QueryResult result;
+    };
+    Certified certified_query(const Q& rho1, const Q& rho2);
+    std::string query_text(const Q& rho1, const Q& rho2);  // document_text(query_json(...))
+    std::string partition_text();                          // document_text(partition_json(...))
     const std::string& name() const { return name_; }
     bool hull_built() const { return hull_ != nullptr; }
 
