@@ -77,7 +77,6 @@ Point canonical(Point p) {
     return p;
 }
 
-size_t point_count(const internal::Scene& sc) { return sc.P[0].points.size() + sc.P[1].points.size(); }
 
 }  // namespace
 
@@ -122,7 +121,7 @@ std::shared_ptr<Scene::Data> Scene::validated(internal::Scene sc, const std::str
     auto d = std::make_shared<Data>();
     d->sc = std::move(sc);
     d->name = name;
-    if (point_count(d->sc) >= internal::kScanFromPoints)
+    if (internal::walk_by_default(d->sc.P[0].points.size(), d->sc.P[1].points.size()))
         if (auto cs = internal::compact_scene(d->sc)) d->compact = std::make_shared<const internal::CompactScene>(std::move(*cs));
     if (!d->compact || !internal::scan_seeds_proved(*d->compact)) d->hull();
     return d;

@@ -18,9 +18,9 @@ void Session::decide() {
     if (decided_) return;
     decided_ = true;
     if (engine_ == Engine::Hull) return;
-    if (!compact_ && scene_ && (engine_ == Engine::Scan || scene_->P[0].points.size() + scene_->P[1].points.size() >= kScanFromPoints))
+    if (!compact_ && scene_ && (engine_ == Engine::Scan || walk_by_default(scene_->P[0].points.size(), scene_->P[1].points.size())))
         if (auto cs = compact_scene(*scene_)) compact_ = std::make_shared<const CompactScene>(std::move(*cs));
-    if (!compact_ || (engine_ == Engine::Auto && compact_->P[0].size() + compact_->P[1].size() < kScanFromPoints)) return;
+    if (!compact_ || (engine_ == Engine::Auto && !walk_by_default(compact_->P[0].size(), compact_->P[1].size()))) return;
     try {
         walk_.emplace(scan_model(compact_));
         walk_curve_ = build_curve(*walk_);

@@ -20,8 +20,9 @@
 
 namespace scalecert::internal {
 
-// Which engine builds the curve: Auto takes the walk from kScanFromPoints points (both
-// polyhedra together) when the scene is held in integers, Scan always tries it first, Hull never.
+// Which engine builds the curve: Auto takes the walk when walk_by_default (scan.hpp: from 2,000
+// points, both polyhedra together, or 250,000 as their product) and the scene is held in
+// integers; Scan always tries it first, Hull never.
 enum class Engine { Auto, Scan, Hull };
 
 class Session {
