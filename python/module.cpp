@@ -7,6 +7,7 @@
 
 #ifdef SCALECERT_WITH_TOOLS
 #include "scalecert/audit.hpp"
+#include "scalecert/scene_access.hpp"
 #endif
 
 #include <cmath>
@@ -256,7 +257,7 @@ PYBIND11_MODULE(scalecert, m) {
              "the certificate as text, byte-identical to scalecert partition")
 #ifdef SCALECERT_WITH_TOOLS
         .def("certify_fp", [](const PyScene& s, const std::string& claims, bool binary_doubles, const py::handle& tolerance) {
-                 const auto& model = *s.scene.internal_model();
+                 const auto& model = *scalecert::SceneAccess::hull_model(s.scene);
                  const scalecert::internal::Curve c = scalecert::internal::build_curve(model);
                  long wrong = 0;
                  const scalecert::internal::ClaimOptions opt{binary_doubles, rational(tolerance, "tolerance")};

@@ -1,5 +1,6 @@
 // The public API (include/scalecert/scalecert.hpp) over the internal stages.
 #include "scalecert/scalecert.hpp"
+#include "scalecert/scene_access.hpp"
 #include "scalecert/session.hpp"
 
 #include "scalecert/certificate.hpp"
@@ -99,7 +100,7 @@ Scene::Scene(std::vector<Point> p1, std::vector<Point> p2, Interval i1, Interval
         sc.hi[i].canonicalize();
     }
     finish_scene(sc, "scene");
-    d_ = validated(std::move(sc), "scene");
+    d_ = SceneAccess::validated(std::move(sc), "scene");
 }
 
 struct Scene::Data {
@@ -115,10 +116,8 @@ struct Scene::Data {
     }
 };
 
-// Rank and seeds: proved from a few extreme points on large scenes (scan.hpp), else by the hull
-// model, built now (its errors are the scene's).
-std::shared_ptr<Scene::Data> Scene::validated(internal::Scene sc, const std::string& name) {
-    auto d = std::make_shared<Data>();
+std::shared_ptr<Scene::Data> SceneAccess::validated(internal::Scene sc, const std::string& name) {
+    auto d = std::make_shared<Scene::Data>();
     d->sc = std::move(sc);
     d->name = name;
     if (internal::walk_by_default(d->sc.P[0].points.size(), d->sc.P[1].points.size()))
@@ -127,9 +126,9 @@ std::shared_ptr<Scene::Data> Scene::validated(internal::Scene sc, const std::str
     return d;
 }
 
-std::shared_ptr<const Model> Scene::internal_model() const { return d_->hull(); }
+std::shared_ptr<const Model> SceneAccess::hull_model(const Scene& s) { return s.d_->hull(); }
 
-Scene Scene::load(const std::string& path) { return Scene(validated(load_scene(path), path)); }
+Scene Scene::load(const std::string& path) { return Scene(SceneAccess::validated(load_scene(path), path)); }
 
 Scene Scene::from_meshes(const std::string& p1_path, const std::string& p2_path, Interval i1, Interval i2) {
     return Scene(read_mesh(p1_path), read_mesh(p2_path), std::move(i1), std::move(i2));

@@ -7,6 +7,8 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
+#include <iterator>
 #include <unistd.h>
 #include <string>
 
@@ -232,4 +234,13 @@ BOOST_AUTO_TEST_CASE(large_scene_takes_the_scan_path) {
     BOOST_TEST((a.query(R(3, 5), R(2)).verdict == scalecert::Verdict::Separated));
     BOOST_TEST((a.query(R(3, 5), R(3)).verdict == scalecert::Verdict::Touching));
     BOOST_TEST((a.query(R(3, 5), R(4)).verdict == scalecert::Verdict::Overlapping));
+}
+
+BOOST_AUTO_TEST_CASE(the_public_header_names_no_internals) {
+    // The API on one screen: nothing of the engine's namespace or headers leaks into it.
+    std::ifstream in(std::string(SCALECERT_SOURCE_DIR) + "/include/scalecert/scalecert.hpp");
+    BOOST_TEST_REQUIRE(in.good());
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    BOOST_TEST(text.find("internal") == std::string::npos);
+    BOOST_TEST(text.size() > 1000u);
 }

@@ -38,11 +38,6 @@ Feature feature2(ContactKind k);
 // Two features in contact: the vertices (indices into the input points) spanning each.
 struct Contact { ContactKind kind; std::vector<int> verts1, verts2; };
 
-namespace internal {
-struct Model;  // the exact polyhedra and their contact lines
-struct Scene;  // the scene as read
-}  // namespace internal
-
 // A validated scene: each polyhedron is the convex hull of its points (duplicates and interior
 // points allowed); the seed defaults to the mean of the points. Checked at construction by the
 // scene file's rules and messages: 4 to 10^6 points each, 0 < lo <= hi, the points spanning 3
@@ -58,14 +53,11 @@ public:
     const Point& seed(int i) const;
     Interval range(int i) const;
     std::string json() const;  // the scene file, every number exact
-    // The hull model (polyhedra, every contact line), built on first use. Large scenes whose seeds
-    // a few extreme points prove interior are validated without it.
-    std::shared_ptr<const internal::Model> internal_model() const;
 
 private:
     friend class Analysis;
+    friend struct SceneAccess;  // the library's own front ends; not part of the API
     struct Data;
-    static std::shared_ptr<Data> validated(internal::Scene sc, const std::string& name);
     explicit Scene(std::shared_ptr<Data> d) : d_(std::move(d)) {}
     std::shared_ptr<Data> d_;
 };
