@@ -31,14 +31,20 @@ def save(fig, outdir, name):
     plt.close(fig)
 
 
-def finish(fig, ax, outdir, name, title, xlabel=None, ylabel=None, legend_size=8, legend_loc="best"):
-    """Axis labels, title and legend, then the PNG and SVG files (shared with plot_audit.py)."""
+def finish(fig, ax, outdir, name, title, xlabel=None, ylabel=None, legend_size=8, legend_loc="best", zlabel=None):
+    """Axis labels, title and legend, then the PNG and SVG files (shared with plot_audit.py).
+    legend_loc="outside" puts the legend right of the axes, where it covers no line."""
     if xlabel:
         ax.set_xlabel(xlabel)
     if ylabel:
         ax.set_ylabel(ylabel)
+    if zlabel:
+        ax.set_zlabel(zlabel)
     ax.set_title(title)
-    ax.legend(loc=legend_loc, fontsize=legend_size)
+    if legend_loc == "outside":
+        ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0, fontsize=legend_size)
+    else:
+        ax.legend(loc=legend_loc, fontsize=legend_size)
     save(fig, outdir, name)
 
 
@@ -109,11 +115,12 @@ def fig7_loci(curve, outdir):
     pts = [[q(c) for c in w["point"]] for w in curve.get("contact_loci", [])]
     fig = plt.figure(figsize=(6, 5))
     ax = fig.add_subplot(projection="3d")
+    ax.set_box_aspect(None, zoom=0.85)  # room for the z label
     if pts:
         ax.plot(*zip(*pts), "r-o", ms=4, label="contact point")
         for w, p in zip(curve["contact_loci"], pts):
             ax.text(*p, f" ({w['rho1']}, {w['rho2']})", fontsize=7)
-    finish(fig, ax, outdir, "fig7_loci", "loci of contact points along the curve")
+    finish(fig, ax, outdir, "fig7_loci", "loci of contact points along the curve", "x", "y", zlabel="z")
 
 
 def fig5_3d(curve, outdir):
@@ -139,6 +146,15 @@ def fig5_3d(curve, outdir):
             pad = (hi - lo) * 0.6 + 1e-9
             setlim(lo - pad, hi + pad)
         ax.set_title(f"rho = ({w['rho1']}, {w['rho2']})", fontsize=8)
+        ax.set_xlabel("x")
+        ax.set_ylabel("y")
+        ax.set_zlabel("z")
+    from matplotlib.patches import Patch
+    from matplotlib.lines import Line2D
+    fig.legend(handles=[Patch(facecolor="tab:blue", alpha=0.35, edgecolor="k", label="P1(rho1)"),
+                        Patch(facecolor="tab:orange", alpha=0.35, edgecolor="k", label="P2(rho2)"),
+                        Line2D([], [], marker="o", color="red", ls="", ms=5, label="contact point (witness)")],
+               loc="lower center", ncol=3, fontsize=8, bbox_to_anchor=(0.5, -0.02))
     save(fig, outdir, "fig5_3d")
 
 

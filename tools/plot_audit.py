@@ -3,8 +3,10 @@
 
 usage: tools/plot_audit.py AUDIT.json OUTDIR
 
-  stability       wrong-verdict rate against the degeneracy eps, per method
-  speed_accuracy  time per curve against switch-point error (grid at each resolution, exact engine)
+  stability       wrong-verdict rate against the degeneracy eps, per method (family audits only:
+                  a scene-file audit has no eps, and no stability chart is drawn)
+  speed_accuracy  time per curve against switch-point error (grid at each resolution, exact engine;
+                  drawn when some scene has a switch point in its rectangle)
   by_distance     wrong-verdict rate against the relative distance 2^-k from the curve, per method
                   (audits run with --by-distance; pairs exactly touching once rounded are counted apart)
 """
@@ -36,13 +38,16 @@ def main():
             a = acc[r["method"]][float(Fraction(r["eps"]))]
             a[0] += r["false_separated"] + r["false_overlapping"]
             a[1] += r["queries"]
-    fig, ax = plt.subplots(figsize=(6, 4))
-    for method, by_eps in sorted(acc.items()):
-        xs = sorted(by_eps)
-        ax.plot(xs, [by_eps[x][0] / by_eps[x][1] for x in xs], "o-", ms=3, label=method)
-    ax.axhline(0, color="green", lw=2, label="scalecert (exact): 0 by construction")
-    ax.set_xscale("log", base=2)
-    finish(fig, ax, outdir, "stability", "stability", "degeneracy eps", "wrong-verdict rate (pairs on and near the curve)")
+    # (A scene-file audit has no degeneracy eps: no stability chart then, rather than an empty one.)
+    if acc:
+        fig, ax = plt.subplots(figsize=(6, 4))
+        for method, by_eps in sorted(acc.items()):
+            xs = sorted(by_eps)
+            ax.plot(xs, [by_eps[x][0] / by_eps[x][1] for x in xs], "o-", ms=3, label=method)
+        ax.axhline(0, color="green", lw=2, label="scalecert (exact): 0 by construction")
+        ax.set_xscale("log", base=2)
+        finish(fig, ax, outdir, "stability", "stability", "degeneracy eps", "wrong-verdict rate (pairs on and near the curve)",
+               legend_loc="outside")
     # Wrong-verdict rate against the relative distance from the curve.
     bd = defaultdict(lambda: defaultdict(lambda: [0, 0]))
     touching = defaultdict(int)
@@ -62,9 +67,8 @@ def main():
         ax.invert_xaxis()
         t = ", ".join(f"2^-{k}: {n}" for k, n in sorted(touching.items()) if n)
         finish(fig, ax, outdir, "by_distance", "wrong verdicts near the curve" + (f" (touching, apart: {t})" if t else ""),
-               "relative distance from the curve", "wrong-verdict rate")
+               "relative distance from the curve", "wrong-verdict rate", legend_loc="outside")
     # Speed against accuracy.
-    fig, ax = plt.subplots(figsize=(6, 4))
     pts = defaultdict(list)
     for r in rows:
         # only scenes with a switch point in the rectangle say anything about junction error
@@ -72,6 +76,10 @@ def main():
             err = r["max_junction_error"] if r["junctions_missed"] == 0 else float("nan")
             label = r["method"] + (f" n={r['grid_n']}" if r.get("grid_n") else "")
             pts[label].append((r["seconds_per_curve"], max(err, 1e-17) if err == err else None))
+    if not any(e is not None for v in pts.values() for t, e in v):
+        print("plot_audit.py: no scene with a switch point in its rectangle: no speed_accuracy chart", file=sys.stderr)
+        return
+    fig, ax = plt.subplots(figsize=(6, 4))
     for label, v in sorted(pts.items()):
         xs = [t for t, e in v if e is not None]
         ys = [e for t, e in v if e is not None]
@@ -80,7 +88,7 @@ def main():
     ax.set_xscale("log")
     ax.set_yscale("log")
     finish(fig, ax, outdir, "speed_accuracy", "speed against accuracy", "seconds per curve",
-           "switch-point error in rho1 (exact: plotted at 1e-17)", legend_size=7)
+           "switch-point error in rho1 (exact: plotted at 1e-17)", legend_size=7, legend_loc="outside")
 
 
 if __name__ == "__main__":
