@@ -1003,8 +1003,8 @@ void check_partition(const J& c) {
         Q x = field(sw[k], "rho1", w), y = field(sw[k], "rho2", w);
         claim(x == ranges[k][1] && y == lines[k].at(x) && y == lines[k + 1].at(x), w + " is where the neighbouring lines meet");
         if (!touching) {
-            // Below ρ2 = 0 the curve is one line (FORMAT.md): a switch point there is not the curve.
-            claim(sgn(y) == 0, w + " lies at rho2 >= 0: below rho2 = 0 the curve goes on as one line");
+            // From where it reaches ρ2 = 0 the curve is one line (FORMAT.md): no switch point there.
+            claim(false, w + " lies at rho2 > 0: from rho2 = 0 on, the curve goes on as one line");
             claim(at(sw[k], "contact").is_null(), w + ".contact is null: at rho2 <= 0 nothing touches");
             continue;
         }

@@ -47,13 +47,12 @@ Envelope upper_envelope(const std::vector<ContactLine>& lines) {
     st.erase(st.begin(), st.begin() + static_cast<long>(first));
     st.front().from = 0;
     // Below ρ2 = 0 nothing touches, and the lines' envelope there describes no contact: from the
-    // first x0 >= 0 with ρ2 <= 0, the curve is the line of the piece just right of x0, carried on
-    // to +∞ (with a switch point at (x0, 0) only when the envelope turns exactly there).
+    // first x0 >= 0 with ρ2 <= 0, the curve is the line of the piece that reaches 0 there (the
+    // left one where the envelope turns exactly at (x0, 0)), carried on to +∞. So every switch
+    // point has ρ2 > 0, and that line is a touching piece's, pinned by its witnesses.
     for (size_t k = 0; k + 1 < st.size(); ++k) {
-        const int s = sgn(lines[st[k].line].at(*st[k].to));
-        if (s > 0) continue;
-        const size_t keep = s < 0 ? k + 1 : k + 2;
-        st.resize(keep);
+        if (sgn(lines[st[k].line].at(*st[k].to)) > 0) continue;
+        st.resize(k + 1);
         st.back().to.reset();
         break;
     }

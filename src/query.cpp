@@ -70,7 +70,8 @@ std::vector<std::pair<int, Q>> seed_weights(const Model& m, int i) {
 }
 
 Witness lift_witness(const Witness& w, const Q& rho1, const Q& rho2, const std::vector<std::pair<int, Q>> seed[2]) {
-    if (rho1 < w.rho1 || rho2 < w.rho2 || sgn(rho1) <= 0 || sgn(rho2) <= 0) throw std::logic_error("lift_witness: not a larger pair");
+    if (rho1 < w.rho1 || rho2 < w.rho2 || sgn(rho1) <= 0 || sgn(rho2) < 0 || (sgn(rho2) == 0 && sgn(w.rho2) != 0))
+        throw std::logic_error("lift_witness: not a larger pair");
     Witness out = w;
     out.rho1 = rho1;
     out.rho2 = rho2;
@@ -85,8 +86,16 @@ Witness lift_witness(const Witness& w, const Q& rho1, const Q& rho2, const std::
         return v;
     };
     out.w1 = mix(w.w1, seed[0], w.rho1 / rho1);
-    out.w2 = mix(w.w2, seed[1], w.rho2 / rho2);
+    if (sgn(rho2) > 0) out.w2 = mix(w.w2, seed[1], w.rho2 / rho2);  // at ρ2 = 0 P2(0) is its seed, whatever the weights
     return out;
+}
+
+Witness witness_below(const Model& m, const Curve& c, const Q& rho1) {
+    const size_t line = c.env.pieces[c.env.locate(rho1)].line;
+    const ContactLine& L = m.lines[line];
+    const Q f = L.at(rho1);
+    if (sgn(f) > 0) return make_witness(m, rho1, f, line);
+    return make_witness(m, -L.intercept / L.slope, Q(0), line);
 }
 
 std::pair<Q, size_t> ray_crossing(const Model& m, const Curve& c, const Q& rho1, const Q& rho2) {

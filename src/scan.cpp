@@ -397,7 +397,8 @@ public:
     //   max d·n + z  s.t.  x·n·(v − s1) + z ≤ 0 (v ∈ P1),  −n·(w − s2) ≤ 1 (w ∈ P2),
     // whose optimum is f(x) (LP duality with the touching LP); rows enter as support queries
     // find them violated. A basic optimum is a facet normal of the sum.
-    Vec3z start_normal(const Q& x, const std::vector<int> init[2]) {
+    // None when the curve is not above 0 at x.
+    std::optional<Vec3z> start_normal(const Q& x, const std::vector<int> init[2]) {
         std::vector<std::vector<Q>> A;
         std::vector<Q> b;
         std::vector<char> have[2] = {std::vector<char>(m_.scan->P[0].size()), std::vector<char>(m_.scan->P[1].size())};
@@ -418,7 +419,7 @@ public:
             if (!sol) throw NeedHull("the start LP has no optimum");
             const Vec3q nq{(*sol)[0], (*sol)[1], (*sol)[2]};
             const Q& z = (*sol)[3];
-            if (sgn(nq[0]) == 0 && sgn(nq[1]) == 0 && sgn(nq[2]) == 0) throw NeedHull("the curve is not above 0 at lo1");
+            if (sgn(nq[0]) == 0 && sgn(nq[1]) == 0 && sgn(nq[2]) == 0) return std::nullopt;
             const Vec3z N = primitive(nq);
             int k = 0;
             while (sgn(N[k]) == 0) ++k;
@@ -434,7 +435,7 @@ public:
             if (h2 > 1)
                 for (int w : s2.all) added = add(1, w) || added;
             if (!added) {
-                if (sgn(dot(nq, m_.d) + z) <= 0) throw NeedHull("the curve is not above 0 at lo1");
+                if (sgn(dot(nq, m_.d) + z) <= 0) return std::nullopt;
                 m_.scan_stats.lp_rows = A.size();
                 return N;
             }
@@ -632,21 +633,25 @@ Model scan_model(std::shared_ptr<const CompactScene> sc) {
     const Q& lo = sc->lo[0];
     const Q& hi = sc->hi[0];
     std::vector<Piece> left, right;  // walked from the start: leftwards, rightwards
-    right.push_back(w.piece(w.start_normal(lo, init)));
+    // The start: at lo1, or, where the curve is ≤ 0 there, at lo1/2, lo1/4, ... (the curve is > 0
+    // near ρ1 = 0 as d ≠ 0), so that the walk reaches the piece that takes the curve to 0.
+    Q x0 = lo;
+    std::optional<Vec3z> n0;
+    for (int k = 0; k < 64 && !(n0 = w.start_normal(x0, init)); ++k) x0 /= 2;
+    if (!n0) throw NeedHull("the curve is not above 0 near rho1 = 0");
+    right.push_back(w.piece(*n0));
     {
         const Piece& p = right.back();
-        if ((p.lo && *p.lo > lo) || (p.hi && *p.hi < lo)) throw NeedHull("the start face does not hold d");
+        if ((p.lo && *p.lo > x0) || (p.hi && *p.hi < x0)) throw NeedHull("the start face does not hold d");
     }
     clock.lap("scan: start");
-    // Rightwards over I1. Everything here holds for ρ2 > 0 only; the curve descends, so it must
-    // be above 0 at hi1 (and then it is at every switch point before).
-    // A piece whose line is below ρ2 = 0 at its end reaches 0 at some x0 inside its interval, where
-    // it is proved: from x0 on the curve is that line (envelope.hpp), and the walk stops.
-    auto reaches_zero = [](const Piece& p) { return !p.hi || sgn(p.L.at(*p.hi)) < 0; };
+    // Rightwards over I1. A piece whose line is at or below ρ2 = 0 at its end reaches 0 at some x0 inside its interval,
+    // where it is proved: from x0 on the curve is that line (envelope.hpp), and the walk stops.
+    auto reaches_zero = [](const Piece& p) { return !p.hi || sgn(p.L.at(*p.hi)) <= 0; };
     while (right.back().hi && *right.back().hi < hi && !reaches_zero(right.back())) right.push_back(w.next(right.back(), true));
     // The growth distance: where y = x. Left of lo1 when the curve is below the diagonal there.
     auto crossing = [](const ContactLine& L) -> Q { return L.intercept / (Q(1) - L.slope); };
-    if (right.front().L.at(lo) < lo) {
+    if (right.front().L.at(x0) < x0) {
         const Piece* cur = &right.front();
         while (cur->lo && !(*cur->lo < crossing(cur->L))) {
             left.push_back(w.next(*cur, false));

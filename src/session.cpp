@@ -97,6 +97,18 @@ Session::Certified Session::certified_query(const Q& rho1, const Q& rho2) {
             proved = walk_covers(x, x) && walk_curve_.env.value(m.lines, x) == t * rho2;
         }
         if (proved) return {m, query(m, walk_curve_, rho1, rho2, true)};
+        // Overlapping, and the ray meets the curve left of the walk: a touching pair below and
+        // left of (ρ1, ρ2) on the walked curve instead, at x < ρ1 with f(x) < ρ2 (f is continuous
+        // and f(ρ1) < ρ2, so halving the step towards ρ1 finds one).
+        if (m.walk_lo < rho1) {
+            Q step = (rho1 - m.walk_lo) / 2;
+            for (int k = 0; k < 256; ++k, step /= 2)
+                if (walk_curve_.env.value(m.lines, rho1 - step) < rho2) {
+                    QueryResult r = query(m, walk_curve_, rho1, rho2, false);
+                    r.witness = witness_below(m, walk_curve_, rho1 - step);
+                    return {m, r};
+                }
+        }
     }
     const Model& h = hull();
     return {h, query(h, hull_curve(), rho1, rho2, true)};

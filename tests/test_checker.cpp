@@ -531,7 +531,7 @@ BOOST_AUTO_TEST_CASE(below_rho2_zero_the_curve_is_one_line) {
     BOOST_TEST(verdict_of(f) == 1);
     std::string msg;
     scalecert_check::check_text(f.dump(1), msg);
-    BOOST_TEST(msg.find("below rho2 = 0 the curve goes on as one line") != std::string::npos, msg);
+    BOOST_TEST(msg.find("from rho2 = 0 on, the curve goes on as one line") != std::string::npos, msg);
 }
 
 namespace {
@@ -582,7 +582,8 @@ BOOST_AUTO_TEST_CASE(the_walks_partitions_and_query_answers_pass_the_checker) {
     // lifted from the curve point below (query.hpp, lift_witness). Each must pass the checker, give
     // the hull path's regions and verdicts, and hold the same scene.
     const std::string boxes = (fs::path(SCALECERT_SOURCE_DIR) / "tests/data/boxes_curve_goes_on_below_zero.json").string();
-    for (const std::string& scene : {boxes, crossed_prisms(8), crossed_prisms(40), near_spheres(300)}) {
+    const std::string cubes_below = (fs::path(SCALECERT_SOURCE_DIR) / "tests/data/cubes_side_by_side_curve_below_zero.json").string();
+    for (const std::string& scene : {boxes, cubes_below, crossed_prisms(8), crossed_prisms(40), near_spheres(300)}) {
         const OJ w = run_json("partition " + scene + " --engine scan");
         const OJ h = run_json("partition " + scene + " --engine hull");
         BOOST_TEST_REQUIRE(w["model"]["engine"] == "scan", scene);
@@ -627,6 +628,56 @@ BOOST_AUTO_TEST_CASE(the_walks_partitions_and_query_answers_pass_the_checker) {
     collect_named(w, false);
     mutate_all(w, w, OJ::json_pointer(), t);
     report("walk partition (boxes)", t);
+}
+
+BOOST_AUTO_TEST_CASE(where_the_envelope_turns_at_zero_the_piece_reaching_it_goes_on) {
+    // tests/data/boxes_curve_turns_at_zero.json: P1 = [−1,1]^3, P2 = [2,4] × [1,5] × [−1,1] (seeds
+    // at the centres, d = (3,3,0)). n = (1,0,0): h1 = h2 = 1, n·d = 3, ρ2 = 3 − ρ1; n = (0,1,0):
+    // h1 = 1, h2 = 2, n·d = 3, ρ2 = (3 − ρ1)/2. Both reach 0 at ρ1 = 3, where the envelope turns.
+    // The curve is the piece reaching 0, 3 − ρ1 (pinned by its contact and zero witnesses), on all
+    // of I1 = [1, 6]; the next line would be pinned by nothing (the second hostile review's
+    // forgery swapped it for (1,1,0)'s), so a switch at ρ2 = 0 is refused.
+    OJ j = fresh_partition("boxes_curve_turns_at_zero.json");
+    BOOST_TEST_REQUIRE(j["pieces"].size() == 1u);
+    BOOST_TEST(j["pieces"][0]["intercept"] == "3");
+    BOOST_TEST(j["switch_points"].empty());
+    BOOST_TEST(j["pieces"][0]["zero_witness"]["rho1"] == "3");
+    OJ f = j;
+    f["pieces"][0]["rho1"] = OJ::array({"1", "3"});
+    f["pieces"][0]["rho1_double"] = OJ::array({1.0, 3.0});
+    OJ q = OJ::object();
+    q["rho1"] = OJ::array({"3", "6"});
+    q["rho1_double"] = OJ::array({3.0, 6.0});
+    q["slope"] = "-1/2", q["slope_double"] = -0.5, q["intercept"] = "3/2", q["intercept_double"] = 1.5;
+    q["contact"] = nullptr;
+    q["closed_form"] = j["pieces"][0]["closed_form"];
+    q["normal"] = OJ::array({"0", "1", "0"});
+    q["h1"] = "1", q["h1_double"] = 1.0, q["h2"] = "2", q["h2_double"] = 2.0;
+    q["support_vertices"] = OJ{{"P1", 2}, {"P2", 0}};
+    f["pieces"].push_back(q);
+    f["switch_points"].push_back(OJ{{"rho1", "3"}, {"rho1_double", 3.0}, {"rho2", "0"}, {"rho2_double", 0.0}, {"contact", nullptr}});
+    f["curve_ends"][1]["rho2"] = "-3/2";
+    f["curve_ends"][1]["rho2_double"] = -1.5;
+    std::string msg;
+    BOOST_TEST(scalecert_check::check_text(f.dump(1), msg) == 1);
+    BOOST_TEST(msg.find("from rho2 = 0 on, the curve goes on as one line") != std::string::npos, msg);
+}
+
+BOOST_AUTO_TEST_CASE(a_single_rho1_at_a_switch_point_is_refused_by_partition) {
+    // The second hostile review: I1 = [18/13, 18/13], the switch point of the tetrahedron-on-box
+    // scene (tests/data/tetra_on_box_curve_below_I2.json, derived there): a piece of no length has
+    // no contact of its own, and the engine stopped with an internal error (exit 3). Now exit 2.
+    OJ sc = load(fs::path(SCALECERT_SOURCE_DIR) / "tests/data/tetra_on_box_curve_below_I2.json");
+    sc["I1"] = OJ::array({"18/13", "18/13"});
+    const fs::path p = tmpdir() / "single_rho1_at_switch.json";
+    save(sc, p);
+    for (const char* e : {"hull", "scan"})
+        BOOST_TEST(engine("partition " + p.string() + " --engine " + e + " --out " + (tmpdir() / "x.json").string()) == 2);
+    BOOST_TEST(engine("curve " + p.string() + " --out " + (tmpdir() / "x.json").string()) == 0);
+    sc["I1"] = OJ::array({"18/13", "2"});  // a range from the switch point on: fine
+    save(sc, p);
+    BOOST_TEST(engine("partition " + p.string() + " --out " + (tmpdir() / "x.json").string()) == 0);
+    BOOST_TEST(check_file(tmpdir() / "x.json") == 0);
 }
 
 BOOST_AUTO_TEST_CASE(weights_over_coprime_denominators_meet_the_work_limit) {

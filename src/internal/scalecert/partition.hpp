@@ -32,6 +32,9 @@ struct Partition {
 std::vector<Pt2> clip(const std::vector<Pt2>& poly, const Q& a, const Q& b, bool above);
 std::vector<Pt2> normalize_polygon(std::vector<Pt2> poly);
 
+// I1 × I2 ∩ {ρ2 >= curve} (`rect` is I1 × I2, normalized), in time linear in the curve's pieces.
+std::vector<Pt2> overlap_region(const Model& m, const Curve& c, const std::vector<Pt2>& rect);
+
 Partition build_partition(const Model& m, const Curve& c);
 
 }  // namespace scalecert::internal

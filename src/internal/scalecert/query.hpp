@@ -52,6 +52,11 @@ std::vector<std::pair<int, Q>> seed_weights(const Model& m, int i);
 // The witness w moved to (ρ1, ρ2) ≥ (w.rho1, w.rho2): the same point, which lies in P_i(ρ) for
 // every ρ ≥ w's as the seed is inside. Its weights become (w.ρ/ρ)·λ + (1 − w.ρ/ρ)·σ, σ the seed
 // weights (Σσ(v − s) = 0), merged by index.
+// (ρ2 may be 0 only where w's is: P2(0) is the seed, and w's P2 weights stay.)
 Witness lift_witness(const Witness& w, const Q& rho1, const Q& rho2, const std::vector<std::pair<int, Q>> seed[2]);
+// A touching pair at or below-left of the curve point at ρ1 > 0, with its witness: (ρ1, f(ρ1)) when
+// f(ρ1) > 0, else (x0, 0) where the curve's line at ρ1 reaches 0 (x0 ≤ ρ1). The curve must be
+// proved there (on the walk: walk_covers).
+Witness witness_below(const Model& m, const Curve& c, const Q& rho1);
 
 }  // namespace scalecert::internal
