@@ -14,12 +14,13 @@
 # Not run, because they cannot run in a test:
 #   - the set-up commands tools/run-example.sh, tools/run-tests.sh, .ci/run (tools/ci.sh): they
 #     install Debian packages and build;
-#   - ctest, tools/sanitize.sh and tools/fuzz.sh: the suite this test belongs to, a second
-#     (clang) build, and minutes to half an hour of fuzzing;
+#   - ctest, this script, tools/sanitize.sh and tools/fuzz.sh: the suite this test belongs to, a
+#     second (clang) build, and minutes to half an hour of fuzzing;
 #   - mpirun and srun with hundreds of ranks: a cluster;
-#   - runs of minutes, far past this test's minute: build/scalecert-bench (up to 7 GB),
-#     tools/bench-mpi.sh, tools/real_mesh_audit.py (it also installs libcgal-demo) and the audits
-#     over ε sweeps. These run with SCALECERT_DOCS_LONG=1.
+#   - runs of minutes, past this test's minute: build/scalecert-bench (up to 7 GB),
+#     tools/bench-mpi.sh and tools/real_mesh_audit.py (which also installs libcgal-demo). These run
+#     with SCALECERT_DOCS_LONG=1.
+# Everything else runs, the two ε-sweep audits of docs/audits.md included (about half the time).
 # Lines using mpirun are skipped (and said so) when scalecert-mpi or mpirun is missing.
 set -euo pipefail
 SRC="$(cd "$1" && pwd)" BUILD="$(cd "$2" && pwd)" W="$3"
@@ -36,12 +37,12 @@ cd "$W"
 reason() {
   case "$1" in
     tools/run-example.sh*|tools/run-tests.sh*|.ci/run*|tools/ci.sh*) echo "set-up: installs and builds" ;;
-    ctest*|*"&& ctest"*|tools/sanitize.sh*|tools/fuzz.sh*) echo "the test suite itself, or a fuzzing run" ;;
+    ctest*|*"&& ctest"*|*tests/test_docs.sh*|tools/sanitize.sh*|tools/fuzz.sh*) echo "the test suite itself, or a fuzzing run" ;;
     "mpirun -np "[1-9][0-9][0-9]*|srun*) echo "a cluster" ;;
     *)
       if [ "${SCALECERT_DOCS_LONG:-0}" != 1 ]; then
         case "$1" in
-          build/scalecert-bench*|tools/bench-mpi.sh*|*tools/real_mesh_audit.py*|*" --sweep "*)
+          build/scalecert-bench*|tools/bench-mpi.sh*|*tools/real_mesh_audit.py*)
             echo "runs for minutes (SCALECERT_DOCS_LONG=1 runs it)"; return ;;
         esac
       fi
