@@ -140,9 +140,9 @@ set -e
 [ ! -e f.json ] && [ ! -e rfifo ] || fail "a FIFO scene left files behind"
 echo "ok: a FIFO scene is refused in $(echo "$t1 - $t0" | bc) s"
 
-# The README's single-machine command, flags and all, with the OpenMPI variables above unset.
+# The single-machine command of docs/mpi.md, flags and all, with the OpenMPI variables above unset.
 (unset OMPI_ALLOW_RUN_AS_ROOT OMPI_ALLOW_RUN_AS_ROOT_CONFIRM OMPI_MCA_rmaps_base_oversubscribe
  mpirun --allow-run-as-root --oversubscribe -np 3 "$MPI" golden --family random --count 6 --dir readme-g --run readme-g-run >/dev/null 2>&1) ||
-  fail "the README's mpirun command"
-[ "$(ls readme-g/*.scene.json | wc -l)" -eq 6 ] || fail "the README's mpirun command wrote $(ls readme-g | wc -l) files"
-echo "ok: the README's mpirun command"
+  fail "docs/mpi.md's mpirun command"
+[ "$(ls readme-g/*.scene.json | wc -l)" -eq 6 ] || fail "docs/mpi.md's mpirun command wrote $(ls readme-g | wc -l) files"
+echo "ok: docs/mpi.md's mpirun command"
