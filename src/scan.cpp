@@ -621,7 +621,7 @@ std::vector<std::pair<int, Q>> scan_seed_weights(const CompactScene& sc, int i) 
     return w;
 }
 
-Model scan_model(std::shared_ptr<const CompactScene> sc) {
+Model scan_model(std::shared_ptr<const CompactScene> sc, const std::optional<std::pair<Q, Q>>& cover) {
     StageClock clock;
     Model m;
     const char* names[2] = {"P1", "P2"};
@@ -655,8 +655,9 @@ Model scan_model(std::shared_ptr<const CompactScene> sc) {
     init[1].push_back(w.support(1, neg(dn)).all.front());
     clock.lap("scan: seeds");
 
-    const Q& lo = sc->lo[0];
-    const Q& hi = sc->hi[0];
+    // The range the walk must prove: I1, widened to `cover` when asked (queries outside I1).
+    const Q lo = cover ? std::min(sc->lo[0], cover->first) : sc->lo[0];
+    const Q hi = cover ? std::max(sc->hi[0], cover->second) : sc->hi[0];
     std::vector<Piece> left, right;  // walked from the start: leftwards, rightwards
     // The start: at lo1, or, where the curve is ≤ 0 there, at lo1/2, lo1/4, ... (the curve is > 0
     // near ρ1 = 0 as d ≠ 0), so that the walk reaches the piece that takes the curve to 0.

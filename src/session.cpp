@@ -63,8 +63,25 @@ const Curve& Session::hull_curve() {
 const Curve& Session::curve() { return walked() ? walk_curve_ : hull_curve(); }
 const Model& Session::curve_model() { return walked() ? *walk_ : hull(); }
 
+bool Session::walk_proves(const Q& lo, const Q& hi) const {
+    return walk_ && walk_->walk_lo <= lo && (!walk_->walk_hi || hi <= *walk_->walk_hi);
+}
+
 bool Session::walk_covers(const Q& lo, const Q& hi) {
-    return walked() && walk_->walk_lo <= lo && (!walk_->walk_hi || hi <= *walk_->walk_hi);
+    if (!walked()) return false;
+    if (walk_proves(lo, hi)) return true;
+    if (sgn(lo) <= 0 || hi < lo) return false;
+    try {
+        Model wider = scan_model(compact_, std::make_pair(lo, hi));
+        Curve c = build_curve(wider);
+        walk_.emplace(std::move(wider));
+        walk_curve_ = std::move(c);
+        lap("wider walk");
+    } catch (const NeedHull& e) {
+        if (std::getenv("SCALECERT_TIMING")) std::fprintf(stderr, "scalecert: scan path over a wider range: %s\n", e.what());
+        return false;
+    }
+    return walk_proves(lo, hi);
 }
 
 Session::Decider Session::decider_for(const std::vector<double>& rho1) {
@@ -76,6 +93,10 @@ Session::Decider Session::decider_for(const std::vector<double>& rho1) {
 }
 
 Verdict Session::verdict(const Q& rho1, const Q& rho2) {
+    // Coincident seeds: s lies inside P1(ρ1) and P2(ρ2) for every ρ1, ρ2 > 0 (the walk does not
+    // take such scenes; this needs no model at all).
+    if (compact_ ? compact_->seed[0] == compact_->seed[1] : scene_ && scene_->P[0].seed == scene_->P[1].seed)
+        if (sgn(rho1) > 0 && sgn(rho2) > 0) return Verdict::Overlapping;
     if (walk_covers(rho1, rho1)) return query(*walk_, walk_curve_, rho1, rho2, false).verdict;
     return query(hull(), hull_curve(), rho1, rho2, false).verdict;
 }
@@ -94,7 +115,7 @@ Session::Certified Session::certified_query(const Q& rho1, const Q& rho2) {
             // where the walk proved it (walked lines are ≤ the curve everywhere, equal there).
             const auto [t, line] = ray_crossing(m, walk_curve_, rho1, rho2);
             const Q x = t * rho1;
-            proved = walk_covers(x, x) && walk_curve_.env.value(m.lines, x) == t * rho2;
+            proved = walk_proves(x, x) && walk_curve_.env.value(m.lines, x) == t * rho2;
         }
         if (proved) return {m, query(m, walk_curve_, rho1, rho2, true)};
         // Overlapping, and the ray meets the curve left of the walk: a touching pair below and

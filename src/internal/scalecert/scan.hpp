@@ -15,6 +15,7 @@
 #include "scalecert/int_points.hpp"
 
 #include <memory>
+#include <optional>
 #include <stdexcept>
 
 namespace scalecert::internal {
@@ -30,7 +31,9 @@ struct NeedHull : std::runtime_error {
 // Model::scan the points; the polyhedra carry no hull. Enough for build_curve and curve_json.
 // Throws InputError for a scene the hull path would refuse too (fewer than 4 points, lo > hi),
 // and NeedHull.
-Model scan_model(std::shared_ptr<const CompactScene> sc);
+// The walk proves the curve over I1 and the growth distance, and over `cover` too when given
+// (ρ1 > 0 ranges outside I1 that queries need).
+Model scan_model(std::shared_ptr<const CompactScene> sc, const std::optional<std::pair<Q, Q>>& cover = std::nullopt);
 
 // Both seeds proved strictly inside from a few extreme points (as scan_model does); false means
 // "not proved" (the hull decides), not "outside".

@@ -50,7 +50,10 @@ public:
     Verdict verdict(const Q& rho1, const Q& rho2);
     // The curve's ρ2 at ρ1 > 0, likewise.
     Q curve_value(const Q& rho1);
-    // Whether the walk proved the curve at every ρ1 in [lo, hi] (false on the hull path).
+    // Whether the walk proved the curve at every ρ1 in [lo, hi] (false on the hull path). When it
+    // walked I1 but not all of [lo, hi], it walks again over the wider range first (output-sensitive,
+    // as the first walk; queries outside I1 need it): false only if that walk hands over too. The
+    // wider walk replaces the first in place (its curve over I1 is the same, its statistics not).
     bool walk_covers(const Q& lo, const Q& hi);
     // The model and curve that decide every pair whose ρ1 is among `rho1` (doubles, read
     // exactly): the walk's where it proved the curve at all of them, else the hull model's.
@@ -86,6 +89,8 @@ private:
     bool decided_ = false;
     std::optional<Model> walk_;
     Curve walk_curve_;
+    // Proved by the walk as it stands (walk_covers without walking wider).
+    bool walk_proves(const Q& lo, const Q& hi) const;
     std::string handover_;
     std::shared_ptr<const Model> hull_;
     std::optional<Curve> hull_curve_;
