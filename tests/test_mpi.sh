@@ -12,6 +12,12 @@ rm -rf "$W" && mkdir -p "$W" && cd "$W"
 fail() { echo "FAIL: $*" >&2; exit 1; }
 run_mpi() { local np="$1"; shift; mpirun -np "$np" "$MPI" "$@"; }
 
+# --help and --version exit 0; the version is the project's (CMakeLists.txt).
+want=$(sed -n 's/^project(scalecert VERSION \([0-9.]*\).*/\1/p' "$SRC/CMakeLists.txt")
+[ "$("$MPI" --version)" = "scalecert-mpi $want" ] || fail "scalecert-mpi --version: '$("$MPI" --version)', want 'scalecert-mpi $want'"
+"$MPI" --help | grep -q "Usage:" || fail "scalecert-mpi --help"
+echo "ok: --help and --version"
+
 S="$SRC/certificates/scenes"
 AUDIT=("$S/stacked_cubes.json" "$S/tetra_box_switch.json" --family random --sweep 2 --sweep-to 3 --count 3
        --methods libccd-gjk,bullet-gjk-epa,grid --grid 8 --no-timing --by-distance)

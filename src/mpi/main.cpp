@@ -14,6 +14,8 @@
 // link: every file there is opened with O_NOFOLLOW (the manifest created with O_EXCL).
 #include "../cli/campaign_options.hpp"
 
+#include <scalecert/scalecert.hpp>
+
 #include <mpi.h>
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -178,6 +180,7 @@ int main(int argc, char** argv) {
 
     CLI::App app{"scalecert-mpi: golden data and audits sharded over MPI ranks, resumable; output identical to scalecert's"};
     app.require_subcommand(1);
+    app.set_version_flag("--version", std::string("scalecert-mpi ") + scalecert::version());
     CampaignArgs golden_args, audit_args;
     std::string run;
     bool resume = false;
@@ -198,7 +201,7 @@ int main(int argc, char** argv) {
     }
     try {
         app.parse(argc, argv);
-    } catch (const CLI::CallForHelp& e) {
+    } catch (const CLI::Success& e) {  // --help, --version
         const int st = rank == 0 ? app.exit(e) : 0;
         MPI_Finalize();
         return st;
