@@ -2,7 +2,12 @@
 """Audits the floating-point baselines on convex hulls of real meshes from CGAL's data set
 (Debian's libcgal-demo ships it in /usr/share/doc/libcgal-dev/data.tar.gz).
 
-usage: tools/real_mesh_audit.py OUTDIR   (after a build; installs libcgal-demo if missing)
+usage: tools/real_mesh_audit.py [--install] OUTDIR
+
+Needs the meshes (Debian's libcgal-demo, about 60 packages with what it pulls in) and a scalecert
+command: $SCALECERT, else build/scalecert of this checkout, else `scalecert` on the PATH (an
+installed prefix). When libcgal-demo is missing it asks before installing it (tools/install-deps.sh);
+without a terminal it installs only with --install, and otherwise stops with exit status 2.
 
 For each pair (A, B) it reads both OFF files exactly (decimal text as fractions), scales B by a
 power of two to A's size, places B's centre at A's centre plus (size_A + size_B) / 2 along x
@@ -11,6 +16,7 @@ then runs `build/scalecert audit` on the scenes and prints a table of missed col
 "separated") and false "overlapping" per method."""
 import csv
 import os
+import shutil
 import subprocess
 import sys
 import tarfile
@@ -40,11 +46,32 @@ def exact(q):
     return str(q.numerator) if q.denominator == 1 else f"{q.numerator}/{q.denominator}"
 
 
+def scalecert_command():
+    for c in (os.environ.get("SCALECERT"), os.path.join(ROOT, "build/scalecert"), shutil.which("scalecert")):
+        if c and os.path.isfile(c) and os.access(c, os.X_OK):
+            return c
+    print("real_mesh_audit.py: no scalecert command: build it (tools/build.sh), put an installed one on "
+          "the PATH, or name it in $SCALECERT", file=sys.stderr)
+    sys.exit(2)
+
+
 def main():
-    out = sys.argv[1] if len(sys.argv) > 1 else "out/real-meshes"
-    os.makedirs(out, exist_ok=True)
+    args = [a for a in sys.argv[1:] if a != "--install"]
+    install = len(args) < len(sys.argv) - 1
+    if len(args) > 1 or any(a.startswith("-") for a in args):
+        print(__doc__, file=sys.stderr)
+        sys.exit(2)
+    out = args[0] if args else "out/real-meshes"
+    scalecert = scalecert_command()
     if not os.path.exists(DATA):
+        if not install and sys.stdin.isatty():
+            answer = input("real_mesh_audit.py: the meshes need Debian's libcgal-demo (about 60 packages); install it? [y/N] ")
+            install = answer.strip().lower() in ("y", "yes")
+        if not install:
+            print(f"real_mesh_audit.py: {DATA} is missing: install libcgal-demo (or run with --install)", file=sys.stderr)
+            sys.exit(2)
         subprocess.run([os.path.join(ROOT, "tools/install-deps.sh"), "libcgal-demo"], check=True)
+    os.makedirs(out, exist_ok=True)
     meshes = {}
     with tarfile.open(DATA) as t:
         for a, b in PAIRS:
@@ -73,7 +100,7 @@ def main():
         scenes.append(path)
         print(f"{path}: {len(A)} + {len(B)} vertices", file=sys.stderr)
     csv_path = os.path.join(out, "audit.csv")
-    subprocess.run([os.path.join(ROOT, "build/scalecert"), "audit", *scenes, "--methods", METHODS,
+    subprocess.run([scalecert, "audit", *scenes, "--methods", METHODS,
                     "--out", os.path.join(out, "audit.json"), "--csv", csv_path], check=True)
     rows = [r for r in csv.DictReader(open(csv_path)) if not r["method"].startswith("scalecert")]
     methods = list(dict.fromkeys(r["method"] for r in rows))
