@@ -5,6 +5,8 @@
 #include "scalecert/certificate.hpp"
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <random>
 #include <set>
 
@@ -157,6 +159,35 @@ inline Scene random_scene(std::mt19937& g, int n1, int n2) {
         sc.lo[i] = Q(1, 4);
         sc.hi[i] = Q(4);
     }
+    return sc;
+}
+
+// Crossed prisms (scalecert-bench's family): a regular n-gon rounded to integers on a circle of
+// radius 10^6, extruded along z for P1 and along x for P2 above it. The Minkowski sum has O(n^2)
+// facet normals; the curve reaches ρ2 = 0 after a piece or two.
+inline std::array<std::vector<std::array<long, 3>>, 2> crossed_prisms(int n) {
+    std::array<std::vector<std::array<long, 3>>, 2> P;
+    const long R = 1000000;
+    const double pi = std::acos(-1.0);
+    for (int k = 0; k < n; ++k) {
+        const long x = std::lround(R * std::cos(2 * pi * k / n + 0.1)), y = std::lround(R * std::sin(2 * pi * k / n + 0.1));
+        for (long z : {-3 * R, 3 * R}) {
+            P[0].push_back({x, y, z});
+            P[1].push_back({z + 12345, y + R / 5, x + 3 * R});
+        }
+    }
+    return P;
+}
+// The same as a scene, with mean seeds and I1 = I2 = [1/2, 2].
+inline Scene crossed_prism_scene(int n) {
+    Scene sc;
+    const auto P = crossed_prisms(n);
+    for (int i = 0; i < 2; ++i) {
+        for (const auto& v : P[i]) sc.P[i].points.push_back({Q(v[0]), Q(v[1]), Q(v[2])});
+        sc.lo[i] = Q(1, 2);
+        sc.hi[i] = Q(2);
+    }
+    finish_scene(sc, "crossed prisms");
     return sc;
 }
 

@@ -198,6 +198,15 @@ void report(const std::string& name, const Tally& t) {
     BOOST_TEST(t.tried > 50);
     BOOST_TEST(t.rejected + kept == t.tried);
 }
+// Every mutation of a certificate (a query answer's when `query`), tallied and reported.
+void mutate_and_report(const OJ& j, const std::string& name, bool query) {
+    Tally t;
+    g_query = query;
+    g_named.clear();
+    collect_named(j, false);
+    mutate_all(j, j, OJ::json_pointer(), t);
+    report(name, t);
+}
 }  // namespace
 
 BOOST_AUTO_TEST_CASE(bundled_certificates_are_valid) {
@@ -213,12 +222,7 @@ BOOST_AUTO_TEST_CASE(bundled_certificates_are_valid) {
 BOOST_AUTO_TEST_CASE(tampered_partitions_are_rejected) {
     for (const char* name : {"stacked_cubes", "tetra_box_switch", "fig5_vf_ve_ee", "roof_nearly_equal_slopes"}) {
         fs::path p = fs::path(SCALECERT_SOURCE_DIR) / "certificates" / (std::string(name) + ".partition.json");
-        OJ j = load(p);
-        Tally t;
-        g_named.clear();
-        collect_named(j, false);
-        mutate_all(j, j, OJ::json_pointer(), t);
-        report(name, t);
+        mutate_and_report(load(p), name, false);
     }
 }
 
@@ -229,13 +233,8 @@ BOOST_AUTO_TEST_CASE(tampered_query_answers_are_rejected) {
         fs::path out = tmpdir() / "q.json";
         BOOST_TEST_REQUIRE(engine("query " + scene.string() + " " + q + " --json --out " + out.string()) == 0);
         BOOST_TEST_REQUIRE(check_file(out) == 0);
-        OJ j = load(out);
-        Tally t;
-        g_query = true;
-        g_named.clear();
-        collect_named(j, false);
-        mutate_all(j, j, OJ::json_pointer(), t);
-        report(std::string("query ") + q + " (" + j["verdict"].get<std::string>() + ")", t);
+        const OJ j = load(out);
+        mutate_and_report(j, std::string("query ") + q + " (" + j["verdict"].get<std::string>() + ")", true);
     }
 }
 
@@ -428,11 +427,7 @@ BOOST_AUTO_TEST_CASE(piece_contacts_where_normals_share_a_line_are_proved_minima
     none["pieces"][0]["contact"] = nullptr;
     BOOST_TEST(verdict_of(none) == 1);
     // And every mutation of the whole file, as for the bundled ones.
-    Tally t;
-    g_named.clear();
-    collect_named(j, false);
-    mutate_all(j, j, OJ::json_pointer(), t);
-    report("cubes_sharing_an_edge", t);
+    mutate_and_report(j, "cubes_sharing_an_edge", false);
 }
 
 BOOST_AUTO_TEST_CASE(pieces_below_I2_are_proved_down_to_rho2_zero) {
@@ -544,15 +539,9 @@ fs::path write_off(const std::string& name, const std::vector<std::array<long, 3
     return p;
 }
 std::string crossed_prisms(int n) {
-    std::vector<std::array<long, 3>> a, b;
-    const long R = 1000000;
-    const double pi = std::acos(-1.0);
-    for (int k = 0; k < n; ++k) {
-        const long x = std::lround(R * std::cos(2 * pi * k / n + 0.1)), y = std::lround(R * std::sin(2 * pi * k / n + 0.1));
-        for (long z : {-3 * R, 3 * R}) a.push_back({x, y, z}), b.push_back({z + 12345, y + R / 5, x + 3 * R});
-    }
+    const auto P = test::crossed_prisms(n);
     const std::string tag = "prism" + std::to_string(n);
-    return "--p1 " + write_off(tag + "a.off", a).string() + " --p2 " + write_off(tag + "b.off", b).string() + " --i1 1/2,2 --i2 1/2,2";
+    return "--p1 " + write_off(tag + "a.off", P[0]).string() + " --p2 " + write_off(tag + "b.off", P[1]).string() + " --i1 1/2,2 --i2 1/2,2";
 }
 std::string near_spheres(int n) {
     std::mt19937 g(7);
@@ -622,12 +611,7 @@ BOOST_AUTO_TEST_CASE(the_walks_partitions_and_query_answers_pass_the_checker) {
         BOOST_TEST((ov["witnesses"][k]["point"] == OJ::array({"3", "1", "0"})));
     }
     // The walk's certificate under the structural mutations.
-    Tally t;
-    g_query = false;
-    g_named.clear();
-    collect_named(w, false);
-    mutate_all(w, w, OJ::json_pointer(), t);
-    report("walk partition (boxes)", t);
+    mutate_and_report(w, "walk partition (boxes)", false);
 }
 
 BOOST_AUTO_TEST_CASE(where_the_envelope_turns_at_zero_the_piece_reaching_it_goes_on) {

@@ -135,17 +135,7 @@ BOOST_AUTO_TEST_CASE(verdicts_outside_I1_and_at_coincident_seeds_build_no_hull) 
     // The second hostile review: a query far left or right of I1 fell back to the hull model
     // (4,000-gon prisms: 90 s, 8.4 GB); so did every query with coincident seeds, where every
     // pair overlaps. Crossed 100-gon prisms (test above), I1 = [1/2, 2].
-    Scene sc;
-    const long R = 1000000;
-    const double pi = std::acos(-1.0);
-    for (int k = 0; k < 100; ++k) {
-        const long x = std::lround(R * std::cos(2 * pi * k / 100 + 0.1)), y = std::lround(R * std::sin(2 * pi * k / 100 + 0.1));
-        for (long z : {-3 * R, 3 * R}) {
-            sc.P[0].points.push_back({Q(x), Q(y), Q(z)});
-            sc.P[1].points.push_back({Q(z + 12345), Q(y + R / 5), Q(x + 3 * R)});
-        }
-    }
-    sc = with_means(sc, Q(1, 2), Q(2));
+    const Scene sc = test::crossed_prism_scene(100);
     const Model hm = build_model(sc);
     const Curve hc = build_curve(hm);
     Session s(sc, "test", Engine::Scan);
@@ -187,17 +177,7 @@ BOOST_AUTO_TEST_CASE(random_scenes_agree_or_fall_back) {
 BOOST_AUTO_TEST_CASE(crossed_prisms_are_walked_to_rho2_zero) {
     Tally t;
     for (int n : {8, 13, 40, 100}) {
-        Scene sc;
-        const long R = 1000000;
-        const double pi = std::acos(-1.0);
-        for (int k = 0; k < n; ++k) {
-            const long x = std::lround(R * std::cos(2 * pi * k / n + 0.1)), y = std::lround(R * std::sin(2 * pi * k / n + 0.1));
-            for (long z : {-3 * R, 3 * R}) {
-                sc.P[0].points.push_back({Q(x), Q(y), Q(z)});
-                sc.P[1].points.push_back({Q(z + 12345), Q(y + R / 5), Q(x + 3 * R)});
-            }
-        }
-        sc = with_means(sc, Q(1, 2), Q(2));
+        const Scene sc = test::crossed_prism_scene(n);
         const Model hm = build_model(sc);
         const Curve hc = build_curve(hm);
         BOOST_TEST(sgn(hm.lines[hc.env.pieces[hc.pieces.back().env].line].at(Q(2))) < 0);  // reaches 0 in I1
