@@ -5,10 +5,9 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
-#ifdef SCALECERT_WITH_TOOLS
-#include "scalecert/audit.hpp"
-#include "scalecert/scene_access.hpp"
-#endif
+// Families of scenes (golden with a family) come from the campaign library, which needs no
+// floating-point library; everything else goes through the public header.
+#include "campaign/campaign.hpp"
 
 #include <cmath>
 
@@ -255,20 +254,19 @@ PYBIND11_MODULE(scalecert, m) {
              "the certified partition of I1 x I2 (the certificate), as a dict")
         .def("partition_json", [](const PyScene& s) { return s.a().partition_json(); },
              "the certificate as text, byte-identical to scalecert partition")
-#ifdef SCALECERT_WITH_TOOLS
         .def("certify_fp", [](const PyScene& s, const std::string& claims, bool binary_doubles, const py::handle& tolerance) {
-                 const auto& model = *scalecert::SceneAccess::hull_model(s.scene);
-                 const scalecert::internal::Curve c = scalecert::internal::build_curve(model);
-                 long wrong = 0;
-                 const scalecert::internal::ClaimOptions opt{binary_doubles, rational(tolerance, "tolerance")};
-                 const std::string report = scalecert::internal::certify_fp(model, c, claims, "claims", opt, true, &wrong);
-                 return json_loads(report);
+                 scalecert::ClaimOptions opt;
+                 opt.binary_doubles = binary_doubles;
+                 opt.tolerance = rational(tolerance, "tolerance");
+                 return json_loads(s.a().certify_fp(claims, opt).report);
              }, py::arg("claims"), py::arg("binary_doubles") = false, py::arg("tolerance") = 0,
              "marks claims (JSON scalecert-claims-1 text, or 'RHO1 RHO2 VERDICT' / 'curve RHO1 RHO2' / 'growth RHO' "
              "lines) right or wrong; the report of scalecert certify-fp --json, as a dict")
-#endif
+        .def("golden", [](const PyScene& s) {
+                 scalecert::GoldenData g = s.a().golden();
+                 return py::make_tuple(json_loads(g.json), g.csv);
+             }, "the scene's golden data: (the golden JSON as a dict, the CSV text), as scalecert golden writes per scene")
         ;
-#ifdef SCALECERT_WITH_TOOLS
     m.def("golden", [](const std::string& family, int count, unsigned long long seed, const py::handle& eps, const std::string& dir) {
               if (count < 1 || count > 100000) throw scalecert::InputError("count: 1 to 100000");
               const Rational e = rational(eps, "eps");
@@ -276,5 +274,4 @@ PYBIND11_MODULE(scalecert, m) {
               scalecert::internal::write_golden(family, count, seed, e, dir);
           }, py::arg("family"), py::arg("count"), py::arg("seed"), py::arg("eps"), py::arg("dir"),
           "writes COUNT scenes of FAMILY with exact answers into DIR, as scalecert golden does");
-#endif
 }

@@ -2,7 +2,7 @@
 // engine (no hull, no Gauss map, no envelope): every cross product of two vertex differences is a
 // candidate normal, and the largest gap min_B n·x − max_A n·x over them decides.
 #pragma once
-#include "scalecert/certificate.hpp"
+#include "certify/certificate.hpp"
 
 #include <algorithm>
 #include <array>

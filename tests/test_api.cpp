@@ -182,6 +182,34 @@ BOOST_AUTO_TEST_CASE(loaded_scene_certificate_passes_the_checker) {
 // combinations, so the hulls are unchanged): 2,400 points, so the library builds the curve by the
 // scan path, as the command does. The curve must be the small scene's (built by the hull path) and
 // start with the hand-derived piece; queries (hull model, built on first use) agree.
+BOOST_AUTO_TEST_CASE(claims_and_golden_data_through_the_public_api) {
+    // Stacked cubes, by hand: touching on ρ1 + ρ2 = 3, growth distance 3/2.
+    const scalecert::Analysis a(stacked());
+    const scalecert::ClaimReport r = a.certify_fp("1 1 separated\n1.5 1.5 touching\n2 2 separated\ngrowth 1.5\ncurve 1 2\ncurve 1 2.5\n");
+    BOOST_TEST(r.claims == 6);
+    BOOST_TEST(r.wrong == 2);  // (2, 2) overlaps (2 + 2 > 3); the curve at ρ1 = 1 is 2, not 5/2
+    BOOST_TEST(r.report.find("\"wrong\": 2") != std::string::npos);
+    scalecert::ClaimOptions text;
+    text.json = false;
+    BOOST_TEST(a.certify_fp("growth 1.5\n", text).report == "right  growth distance 1.5: exact 3/2 (~1.5), off by 0 (~0)\nclaims: 1, right: 1, wrong: 0\n");
+    // 0.1 + 2.9 = 3: touching as decimals; as doubles, 0.1 and 2.9 sum to just under 3 exactly.
+    scalecert::ClaimOptions doubles;
+    doubles.binary_doubles = true;
+    BOOST_TEST(a.certify_fp("0.1 2.9 touching\n").wrong == 0);
+    BOOST_TEST((scalecert::exact(0.1) + scalecert::exact(2.9) < R(3)));
+    BOOST_TEST(a.certify_fp("0.1 2.9 separated\n", doubles).wrong == 0);
+    BOOST_CHECK_THROW(a.certify_fp("1 1 maybe\n"), scalecert::InputError);
+
+    // Golden data: 7 values of ρ1 across [1/2, 5/2] and no switch point, 13 pairs each (on the
+    // line, and 6 above and 6 below it); the first is ρ1 = 1/2 + 2/8 = 3/4 with ρ2 = 9/4 on it.
+    const scalecert::GoldenData g = a.golden();
+    size_t lines = 0;
+    for (char ch : g.csv) lines += ch == '\n';
+    BOOST_TEST(lines == 1 + 7 * 13u);
+    BOOST_TEST(g.csv.rfind("rho1,rho2,where,verdict_at_doubles\n0.75,2.25,on,touching\n", 0) == 0);
+    BOOST_TEST(g.json.find("\"verdict\": \"touching\"") != std::string::npos);
+}
+
 BOOST_AUTO_TEST_CASE(large_scene_takes_the_scan_path) {
     const std::string dir = std::string(SCALECERT_SOURCE_DIR) + "/certificates/";
     const scalecert::Scene small = scalecert::Scene::load(dir + "scenes/tetra_box_switch.json");

@@ -2,8 +2,9 @@
 #define BOOST_TEST_MODULE audit
 #include <boost/test/unit_test.hpp>
 
-#include "scalecert/audit.hpp"
-#include "scalecert/fast_query.hpp"
+#include "baselines/audit.hpp"
+#include "certify/claims.hpp"
+#include "certify/fast_query.hpp"
 #include "files.hpp"
 #include "support.hpp"
 
@@ -121,8 +122,8 @@ BOOST_AUTO_TEST_CASE(baselines_agree_away_from_the_curve) {
 }
 
 // ---- campaigns (issue 12): hashes, shard plans, and per-scene seeds -----------------------------
-#include "scalecert/campaign.hpp"
-#include "scalecert/measures.hpp"
+#include "campaign/campaign.hpp"
+#include "geometry/measures.hpp"
 
 BOOST_AUTO_TEST_CASE(sha256_known_answers) {
     // FIPS 180-4's examples: one block, the empty message, and a message that spills into a second block.
@@ -172,7 +173,7 @@ struct Claims {
     nlohmann::json one(const std::string& claim, const std::string& tolerance = "0", bool binary_doubles = false) {
         long wrong = -1;
         const std::string r = certify_fp(m, c, "{\"format\": \"scalecert-claims-1\", \"claims\": [" + claim + "]}", "c.json",
-                                         ClaimOptions{binary_doubles, parse_exact(tolerance)}, true, &wrong);
+                                         ClaimOptions{binary_doubles, parse_exact(tolerance), true}, &wrong);
         auto j = nlohmann::json::parse(r)["claims"][0];
         BOOST_TEST(wrong == (j["right"].get<bool>() ? 0 : 1));
         return j;
@@ -254,8 +255,8 @@ BOOST_AUTO_TEST_CASE(curve_claim_rules) {
     BOOST_TEST(refused(R"({"kind": "growth_distance", "value": "-18/11"})").find(">= 0") != std::string::npos);
     long wrong = -1;
     for (const char* line : {"curve 1 0\n", "curve 0 9/2\n", "curve 1 -2\n", "growth -1\n"})
-        BOOST_CHECK_THROW(certify_fp(k.m, k.c, line, "c.txt", ClaimOptions{}, false, &wrong), InputError);
-    BOOST_TEST(certify_fp(k.m, k.c, "curve 1 2\ncurve 3/2 12/7\n", "c.txt", ClaimOptions{}, false, &wrong).find("wrong: 0") !=
+        BOOST_CHECK_THROW(certify_fp(k.m, k.c, line, "c.txt", ClaimOptions{false, Q(0), false}, &wrong), InputError);
+    BOOST_TEST(certify_fp(k.m, k.c, "curve 1 2\ncurve 3/2 12/7\n", "c.txt", ClaimOptions{false, Q(0), false}, &wrong).find("wrong: 0") !=
                std::string::npos);
     // Rule 4 at a switch point: the chord over [1/2, 3/2] (within a tolerance of 1/2 of the curve)
     // has its midpoint at the switch point (1, 2), whose contact is VE (the hostile review: EE,
@@ -417,7 +418,7 @@ BOOST_AUTO_TEST_CASE(malformed_claims_get_one_line) {
     auto err = [&](const std::string& text) {
         long wrong = 0;
         try {
-            certify_fp(k.m, k.c, text, "c.json", ClaimOptions{}, false, &wrong);
+            certify_fp(k.m, k.c, text, "c.json", ClaimOptions{false, Q(0), false}, &wrong);
         } catch (const InputError& e) {
             return std::string(e.what());
         }
@@ -487,6 +488,7 @@ BOOST_AUTO_TEST_CASE(rows_with_nan_survive_the_shard_round_trip) {
     // growth error is NaN. Rows pass through shard text (JSON, which has no NaN) on their way to the
     // outputs; that once threw "type must be number, but is null".
     CampaignArgs a;
+    a.auditor = baseline_auditor();
     a.scenes = {std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/reported_fcl399_thin_boxes.json"};
     a.methods = {"grid"};
     a.grid = {16};
@@ -514,6 +516,7 @@ BOOST_AUTO_TEST_CASE(campaigns_are_keyed_by_the_contents_of_their_inputs) {
                                    "[-1,-1,1],[1,-1,1],[-1,1,1],[1,1,1]]}, \"I1\": [0.5, 2], \"I2\": [1, 4]}";
     std::ofstream(sc, std::ios::binary) << scene_text;
     CampaignArgs a;
+    a.auditor = baseline_auditor();
     a.scenes = {sc};
     a.methods = {"libccd-gjk"};
     const Json inputs = campaign_inputs(a);

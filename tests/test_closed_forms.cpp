@@ -2,7 +2,7 @@
 #define BOOST_TEST_MODULE closed_forms
 #include <boost/test/unit_test.hpp>
 
-#include "scalecert/closed_forms.hpp"
+#include "curve/closed_forms.hpp"
 #include "support.hpp"
 
 #include <filesystem>

@@ -1,8 +1,8 @@
 #define BOOST_TEST_MODULE exact
 #include <boost/test/unit_test.hpp>
 
-#include "scalecert/exact.hpp"
-#include "scalecert/small_int.hpp"
+#include "numeric/exact.hpp"
+#include "numeric/small_int.hpp"
 
 #include <random>
 

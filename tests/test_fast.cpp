@@ -3,8 +3,8 @@
 #define BOOST_TEST_MODULE fast
 #include <boost/test/unit_test.hpp>
 
-#include "scalecert/fast_query.hpp"
-#include "scalecert/quick_query.hpp"
+#include "certify/fast_query.hpp"
+#include "quick_query.hpp"
 #include "support.hpp"
 
 #include <cmath>

@@ -2,7 +2,7 @@
 #define BOOST_TEST_MODULE hand_curves
 #include <boost/test/unit_test.hpp>
 
-#include "scalecert/scan.hpp"
+#include "curve/scan.hpp"
 #include "support.hpp"
 
 using namespace scalecert::internal;

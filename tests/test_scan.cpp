@@ -5,10 +5,10 @@
 #include <boost/test/unit_test.hpp>
 
 #include "files.hpp"
-#include "scalecert/mesh.hpp"
-#include "scalecert/scan.hpp"
+#include "io/mesh.hpp"
+#include "curve/scan.hpp"
 #include "support.hpp"
-#include "scalecert/session.hpp"
+#include "session/session.hpp"
 
 #include <cmath>
 #include <filesystem>

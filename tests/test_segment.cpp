@@ -2,7 +2,7 @@
 #define BOOST_TEST_MODULE segment
 #include <boost/test/unit_test.hpp>
 
-#include "scalecert/segment.hpp"
+#include "segment/segment.hpp"
 #include "support.hpp"
 
 #include <cmath>

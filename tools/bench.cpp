@@ -4,11 +4,12 @@
 // --with-slow adds the hull path on two 10^6-point near-spheres: two minutes and 7 GB.)
 // scalecert-bench --checker [--timeout S] [--keep DIR] [CHECKER ...]: scalecert-check on 1 MB
 // hostile certificates against reading them as plain JSON (tools/bench_checker.cpp).
-#include "scalecert/audit.hpp"
-#include "scalecert/baselines.hpp"
-#include "scalecert/families.hpp"
-#include "scalecert/fast_query.hpp"
-#include "scalecert/quick_query.hpp"
+#include "baselines/audit.hpp"
+#include "certify/claims.hpp"
+#include "baselines/baselines.hpp"
+#include "campaign/families.hpp"
+#include "certify/fast_query.hpp"
+#include "quick_query.hpp"
 
 #include <spawn.h>
 #include <sys/resource.h>
@@ -400,7 +401,7 @@ int main(int argc, char** argv) {
         long wrong = 0;
         volatile int sink = 0;
         const double t_gjk = per_call([&](long) { for (int i = 0; i < 1000; ++i) sink += gjk->classify(a[i], b[i]); }, 1, quick ? 1 : 3);
-        const double t_claims = per_call([&](long) { certify_fp(m, c, claims, "bench", ClaimOptions{true, Q(0)}, true, &wrong); }, 1, 1);
+        const double t_claims = per_call([&](long) { certify_fp(m, c, claims, "bench", ClaimOptions{true, Q(0), true}, &wrong); }, 1, 1);
         row("1,000 verdicts recomputed with libccd GJK", "hulls (1000)", t_gjk, "1 (baseline)");
         row("1,000 claims certified (verdicts, planes, distances, depths)", "hulls (1000)", t_claims, ratio("%.0fx GJK's time", t_claims / t_gjk));
     }

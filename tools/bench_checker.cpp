@@ -6,7 +6,7 @@
 //   scalecert-bench --checker [--timeout SECONDS] [--keep DIR] [CHECKER ...]
 // Prints one markdown row per shape: bytes, the JSON read, and per checker its exit status, its
 // time (best of 3; one run when it exceeds 2 s; "> T s" when killed at the timeout) and the ratio.
-#include "scalecert/exact.hpp"
+#include "numeric/exact.hpp"
 
 #include <nlohmann/json.hpp>
 

@@ -1,13 +1,15 @@
 #!/usr/bin/env bash
-# What CI runs (.ci/run): the test command (tools/run-tests.sh), then the Boost.Test programs again
-# under AddressSanitizer and UndefinedBehaviorSanitizer (tools/sanitize.sh, clang-14), then each
-# libFuzzer target for SCALECERT_FUZZ_SECONDS (default 20) seconds (tools/fuzz.sh).
+# What CI runs (.ci/run): the test command (tools/run-tests.sh); the command and checker built
+# without the floating-point baselines and tried (tools/no-baselines.sh); the Boost.Test programs
+# again under AddressSanitizer and UndefinedBehaviorSanitizer (tools/sanitize.sh, clang-14); then
+# each libFuzzer target for SCALECERT_FUZZ_SECONDS (default 20) seconds (tools/fuzz.sh).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 tools/run-tests.sh
+tools/no-baselines.sh
 tools/install-deps.sh clang-14 libclang-rt-14-dev
 tools/sanitize.sh
 tools/fuzz.sh "${SCALECERT_FUZZ_SECONDS:-20}"
 n=$(cd build && ctest -N | sed -n 's/^Total Tests: *//p')
 m=$(cd build-san && ctest -N | sed -n 's/^Total Tests: *//p')
-echo "ci: $((n + m + 6)) passed, 0 failed ($n tests, $m of them again under ASan+UBSan, and 6 fuzz targets)"
+echo "ci: $((n + m + 7)) passed, 0 failed ($n tests, the build without baselines, $m of them again under ASan+UBSan, and 6 fuzz targets)"

@@ -81,6 +81,18 @@ struct QueryResult {
 };
 struct PlaneCheck { bool separates; Rational c1, c2; };  // exact c1, c2 as in Plane
 
+// A floating-point program's claims (certificates/CLAIMS.md: JSON scalecert-claims-1, or lines
+// 'RHO1 RHO2 VERDICT', 'curve RHO1 RHO2', 'growth RHO'), each marked right or wrong, exactly.
+struct ClaimOptions {
+    bool binary_doubles = false;  // numbers are the doubles strtod reads, not the decimals written
+    Rational tolerance = 0;       // relative error accepted on numeric JSON claims (>= 0)
+    bool json = true;             // the report as JSON (scalecert certify-fp --json), else as text
+};
+struct ClaimReport { std::string report; long claims, wrong; };
+// Golden data: the curve document with, near the curve, exact verdicts of pairs and of their
+// nearest doubles (JSON), and those doubles with their verdicts (CSV).
+struct GoldenData { std::string json, csv; };
+
 // Calls on one Analysis from several threads at once are not supported; classify() itself runs
 // on many threads.
 class Analysis {
@@ -101,6 +113,10 @@ public:
     std::string curve_json() const;
     std::string query_json(const Rational& rho1, const Rational& rho2) const;
     std::string partition_json() const;  // the certificate: check it with scalecert-check
+    // scalecert certify-fp; throws InputError for malformed claims.
+    ClaimReport certify_fp(const std::string& claims, const ClaimOptions& options = {}) const;
+    // What scalecert golden writes for each of its scenes, without the family's fields.
+    GoldenData golden() const;
 
 private:
     struct Impl;

@@ -196,6 +196,12 @@ def test_golden_and_claims(tmp_path):
     claims = {"format": "scalecert-claims-1", "claims": [{"kind": "distance", "rho1": 1, "rho2": "1/2", "value": "1.5000001"}]}
     assert stacked().certify_fp(json.dumps(claims))["wrong"] == 1
     assert stacked().certify_fp(json.dumps(claims), tolerance="1e-6")["wrong"] == 0
+    # A scene's golden data: 7 values of rho1 across [1/2, 5/2] (no switch point), 13 pairs each,
+    # the first on the line at rho1 = 3/4, rho2 = 3 - 3/4 = 9/4; the same rows in the JSON.
+    g, csv = stacked().golden()
+    rows = csv.splitlines()
+    assert len(rows) == 1 + 7 * 13 and rows[1] == "0.75,2.25,on,touching"
+    assert len(g["queries"]) == 7 * 13 and g["queries"][0]["rho2"] == "9/4"
 
 
 def test_readme_example_runs(tmp_path):

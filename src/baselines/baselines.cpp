@@ -1,4 +1,4 @@
-#include "scalecert/baselines.hpp"
+#include "baselines/baselines.hpp"
 
 #include <ccd/ccd.h>
 

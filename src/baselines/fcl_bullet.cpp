@@ -3,7 +3,7 @@
 // Built as a module (libscalecert_fcl_bullet.so) that the tools load on first use
 // (fcl_bullet_loader.cpp): FCL alone brings 29,000 relocations, which every start of the
 // scalecert command would otherwise pay. The module uses no scalecert symbol, only its headers.
-#include "scalecert/baselines.hpp"
+#include "baselines/baselines.hpp"
 
 #include <BulletCollision/CollisionShapes/btConvexHullShape.h>
 #include <BulletCollision/NarrowPhaseCollision/btGjkEpa2.h>

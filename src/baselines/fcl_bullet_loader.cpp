@@ -1,7 +1,7 @@
 // make_fcl and make_bullet: the FCL/Bullet baselines live in a module loaded on first use (see
 // fcl_bullet.cpp), looked for in this order: $SCALECERT_FCL_BULLET_MODULE; the build tree's copy;
 // <executable's directory>/../<libdir>/scalecert/ (an installed command); the install prefix.
-#include "scalecert/baselines.hpp"
+#include "baselines/baselines.hpp"
 
 #include <dlfcn.h>
 #include <unistd.h>

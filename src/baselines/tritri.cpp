@@ -3,7 +3,7 @@
 // against the other's plane, then the overlap of the two intervals where the triangles cross
 // the line common to both planes; coplanar pairs are tested in 2-D. (Like the paper's method it
 // does not see one polyhedron wholly inside the other.)
-#include "scalecert/baselines.hpp"
+#include "baselines/baselines.hpp"
 
 #include <algorithm>
 #include <cmath>

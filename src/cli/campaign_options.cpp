@@ -1,5 +1,9 @@
 #include "campaign_options.hpp"
 
+#ifdef SCALECERT_WITH_BASELINES
+#include "baselines/audit.hpp"
+#endif
+
 namespace scalecert::cli {
 
 void add_golden_options(CLI::App* sub, internal::CampaignArgs& a) {
@@ -13,6 +17,9 @@ void add_golden_options(CLI::App* sub, internal::CampaignArgs& a) {
 
 void add_audit_options(CLI::App* sub, internal::CampaignArgs& a) {
     a.golden = false;
+#ifdef SCALECERT_WITH_BASELINES
+    a.auditor = internal::baseline_auditor();
+#endif
     sub->add_option("SCENES", a.scenes, "scene files");
     sub->add_option("--methods", a.methods, "libccd-gjk libccd-mpr double-envelope paper-tritri fcl-gjk-libccd fcl-gjk-indep bullet-gjk-epa grid")->delimiter(',');
     sub->add_option("--grid", a.grid, "grid resolutions for the grid method (2 to 4096)")->delimiter(',')->check(CLI::Range(2, 4096));

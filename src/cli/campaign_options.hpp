@@ -1,6 +1,6 @@
 // The options of golden and audit, shared by scalecert and scalecert-mpi (same names, same checks).
 #pragma once
-#include "scalecert/campaign.hpp"
+#include "campaign/campaign.hpp"
 
 #include <CLI/CLI.hpp>
 

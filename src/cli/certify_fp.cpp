@@ -2,7 +2,7 @@
 // when any claim is wrong, so that it can gate another project's CI.
 #include "common.hpp"
 
-#include "scalecert/audit.hpp"
+#include "io/files.hpp"
 
 namespace scalecert::cli {
 
@@ -32,13 +32,13 @@ Command add_certify_fp(CLI::App& app) {
                 internal::Session session = open_session(a->scene, Engine::Auto, clock);
                 const std::string claims = read_input(a->claims, "claims file", kMaxSceneBytes);
                 long wrong = 0;
-                ClaimOptions opt{a->scene.opt.binary_doubles, Q(0)};
+                ClaimOptions opt{a->scene.opt.binary_doubles, Q(0), a->json};
                 try {
                     opt.tolerance = parse_exact(a->tolerance);
                 } catch (const InputError& e) {
                     throw InputError(std::string("--tolerance: ") + e.what());
                 }
-                emit(certify_fp(session, claims, a->claims, opt, a->json, &wrong), a->out);
+                emit(certify_fp(session.claim_models(), claims, a->claims, opt, &wrong), a->out);
                 return wrong > 0 ? 1 : 0;
             }};
 }

@@ -1,7 +1,8 @@
 // scalecert classify: exact verdicts for many pairs of doubles, filtered, on every core.
 #include "common.hpp"
+#include "io/files.hpp"
 
-#include "scalecert/fast_query.hpp"
+#include "certify/fast_query.hpp"
 
 #include <thread>
 

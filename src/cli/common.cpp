@@ -1,7 +1,8 @@
 #include "common.hpp"
+#include "io/files.hpp"
 
-#include "scalecert/mesh.hpp"
-#include "scalecert/scan.hpp"
+#include "io/mesh.hpp"
+#include "curve/scan.hpp"
 
 #include <future>
 #include <iostream>

@@ -1,9 +1,9 @@
 // The scalecert command: what every subcommand shares. Each subcommand lives in its own file,
 // registers its options and returns the function that runs it.
 #pragma once
-#include "scalecert/certificate.hpp"
-#include "scalecert/session.hpp"
-#include "scalecert/timing.hpp"
+#include "certify/certificate.hpp"
+#include "session/session.hpp"
+#include "numeric/timing.hpp"
 
 #include <CLI/CLI.hpp>
 

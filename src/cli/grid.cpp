@@ -1,7 +1,7 @@
 // scalecert grid: the paper's floating-point grid search (a baseline, not certified).
 #include "common.hpp"
 
-#include "scalecert/baselines.hpp"
+#include "baselines/baselines.hpp"
 
 namespace scalecert::cli {
 

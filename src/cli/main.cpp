@@ -49,9 +49,12 @@ int main(int argc, char** argv) {
                "standard output. Exit status: 0 done, 1 certify-fp found a wrong claim, 2 bad input,\n"
                "3 internal error (a bug: please report it).\n"
                "scalecert COMMAND --help shows an example.");
-    const std::vector<cli::Command> commands = {
-        cli::add_curve(app),     cli::add_query(app),      cli::add_partition(app), cli::add_classify(app),
-        cli::add_certify_fp(app), cli::add_golden(app), cli::add_audit(app),    cli::add_grid(app)};
+    std::vector<cli::Command> commands = {cli::add_curve(app),      cli::add_query(app),  cli::add_partition(app),
+                                          cli::add_classify(app),   cli::add_certify_fp(app), cli::add_golden(app)};
+#ifdef SCALECERT_WITH_BASELINES  // the floating-point baselines' commands
+    commands.push_back(cli::add_audit(app));
+    commands.push_back(cli::add_grid(app));
+#endif
     std::string names;
     bool known = false;
     for (const cli::Command& c : commands) {

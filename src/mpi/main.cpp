@@ -13,6 +13,7 @@
 // so no shard computed from old contents is merged. Nothing in the run folder may be a symbolic
 // link: every file there is opened with O_NOFOLLOW (the manifest created with O_EXCL).
 #include "../cli/campaign_options.hpp"
+#include "io/files.hpp"
 
 #include <scalecert/scalecert.hpp>
 

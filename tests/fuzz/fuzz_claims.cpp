@@ -4,7 +4,8 @@
 // or switch point claim judged right (no tolerance) must touch at each claimed point by the brute
 // force (tests/support.hpp: no hull, no envelope): at its vertices, piece ends and midpoints.
 #include "fuzz_common.hpp"
-#include "scalecert/audit.hpp"
+#include "baselines/audit.hpp"
+#include "certify/claims.hpp"
 
 #include <nlohmann/json.hpp>
 

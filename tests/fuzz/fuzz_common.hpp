@@ -2,9 +2,9 @@
 // crash libFuzzer reports. The checker is compiled in from its own source (it shares no code
 // with the engine; here both live in one process only to compare them).
 #pragma once
-#include "scalecert/certificate.hpp"
-#include "scalecert/fast_query.hpp"
-#include "scalecert/scan.hpp"
+#include "certify/certificate.hpp"
+#include "certify/fast_query.hpp"
+#include "curve/scan.hpp"
 #include "../support.hpp"
 
 #define SCALECERT_CHECK_NO_MAIN

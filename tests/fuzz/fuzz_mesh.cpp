@@ -1,7 +1,7 @@
 // A mesh reader (OFF, OBJ, PLY, STL: the first byte chooses) on any bytes; a polyhedron it
 // accepts is paired with a cube and certified. For OFF, the compact reader must agree.
 #include "fuzz_common.hpp"
-#include "scalecert/mesh.hpp"
+#include "io/mesh.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     if (size == 0) return 0;

@@ -1,0 +1,82 @@
+// Floating-point baselines, behind one interface: classify (ρ1, ρ2), and where a method can,
+// estimate the touching curve. They read the scene as doubles (the nearest double to each exact
+// coordinate), as a floating-point program would. Nothing here is on the certified path.
+#pragma once
+#include "curve/contact_lines.hpp"
+
+#include <array>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace scalecert::internal::fp {
+
+using D3 = std::array<double, 3>;
+struct Polytope {
+    std::vector<D3> pts;
+    D3 seed;
+};
+struct FpScene {
+    Polytope P[2];
+    double lo[2], hi[2];
+};
+FpScene to_fp(const Scene& s);
+
+// What a method measures besides its verdict, as its API returns it: the distance between
+// separated bodies (with closest points where it gives them), or the penetration depth of
+// overlapping ones with the direction in which translating P2 by the depth makes them touch.
+struct Measure {
+    double value = 0;
+    bool depth = false;  // a penetration depth, else a distance
+    std::optional<D3> direction;
+    std::optional<std::array<D3, 2>> closest;  // on P1, on P2
+};
+
+// +1 separated, 0 touching (only methods that can say so), −1 overlapping.
+class Method {
+public:
+    virtual ~Method() = default;
+    virtual std::string name() const = 0;
+    virtual int classify(double r1, double r2) const = 0;
+    // The distance (separated = true) or the penetration depth, where the method's API gives it.
+    virtual std::optional<Measure> measure(double /*r1*/, double /*r2*/, bool /*separated*/) const { return std::nullopt; }
+};
+
+// libccd's GJK and MPR on the two scaled vertex sets (support function per polytope).
+std::unique_ptr<Method> make_libccd_gjk(const FpScene& s);
+std::unique_ptr<Method> make_libccd_mpr(const FpScene& s);
+// scalecert's own contact lines evaluated in plain double, no filter: h1, h2 recomputed in
+// double from the double vertices for each of the engine's normals.
+std::unique_ptr<Method> make_double_envelope(const Model& m, const FpScene& s);
+
+// FCL's collide() on Convex shapes (GJK via libccd, or FCL's own GJK), and Bullet's
+// btGjkEpaSolver2::Distance on btConvexHullShape (collision margin 0).
+std::unique_ptr<Method> make_fcl(const Model& m, const FpScene& s, bool libccd);
+std::unique_ptr<Method> make_bullet(const FpScene& s);
+
+// The paper's node test: any pair of triangulated faces intersecting (double precision).
+std::unique_ptr<Method> make_paper_tritri(const Model& m, const FpScene& s);
+bool triangles_intersect(const std::array<D3, 3>& a, const std::array<D3, 3>& b);
+
+// The method of that name (libccd-gjk, libccd-mpr, fcl-gjk-libccd, fcl-gjk-indep,
+// bullet-gjk-epa, paper-tritri, double-envelope); none for an unknown name.
+std::unique_ptr<Method> make_method(const std::string& name, const Model& m, const FpScene& s);
+// Those names, in that order.
+std::vector<std::string> method_names();
+
+// The paper's pipeline: classify an n × n grid over I1 × I2; in each column, the touching ρ2 is
+// estimated by `bisections` rounds of bisection between the last separated and the first
+// overlapping node, repeated `repeats` times from jittered brackets and averaged (Section 3.2).
+// With `exhaustive`, every node is classified, as in the paper's exhaustive search (Section 2.3.2);
+// without, a column stops at its first overlapping node (the region above the curve overlaps,
+// so the estimates are the same; only the cost differs).
+struct GridCurve {
+    std::vector<double> rho1, rho2;  // one estimate per column where the column changes state
+    long classifications = 0;
+};
+GridCurve grid_search(const Method& method, const FpScene& s, int n, int bisections = 0, int repeats = 1,
+                      bool exhaustive = false);
+
+}  // namespace scalecert::internal::fp

@@ -1,0 +1,40 @@
+// An audit's rows: what each floating-point method got wrong on a scene, and how fast, written as
+// JSON and CSV. The baselines (src/baselines) fill them; campaigns shard, merge and write them.
+#pragma once
+#include "certify/certificate.hpp"
+
+#include <string>
+#include <vector>
+
+namespace scalecert::internal {
+
+struct AuditRow {
+    std::string scene, method;
+    Q eps;
+    long queries = 0, false_separated = 0, false_overlapping = 0;
+    double seconds_per_query = 0;
+    // curve methods (grid search): errors against the exact curve
+    bool has_curve = false;
+    int grid_n = 0;
+    double growth_error = 0, max_junction_error = 0, seconds_per_curve = 0;
+    int exact_junctions = 0, junctions_found = 0, junctions_missed = 0, junctions_merged = 0;
+    // What the method measures (distances of separated pairs, depths of overlapping ones, where
+    // its API gives them and its verdict is right), against the exact values: how many, and the
+    // relative errors |c − exact| / exact (median and largest); for depth directions, the relative
+    // excess of the depth along the reported direction over the true depth.
+    long distances = 0, depths = 0;
+    long closest_outside = 0;  // reported closest (witness) points not in their scaled body, exactly
+    double distance_err_median = 0, distance_err_max = 0, depth_err_median = 0, depth_err_max = 0, direction_err_max = 0;
+    // With by_distance: at relative distances 2^-k above and below the curve (k = 4, 8, ..., 52),
+    // how many pairs, how many wrong verdicts, and how many pairs were exactly touching once
+    // rounded to doubles (counted apart, not in the rate).
+    struct ByDistance { int k; long pairs = 0, wrong = 0, touching = 0; };
+    std::vector<ByDistance> by_distance;
+};
+
+// Without timing, the timing columns are left empty (CSV) and out (JSON): the rest is the same
+// bytes for the same arguments, on any number of processes.
+std::string audit_csv(const std::vector<AuditRow>& rows, bool timing = true);
+Json audit_json(const std::vector<AuditRow>& rows, bool timing = true);
+
+}  // namespace scalecert::internal

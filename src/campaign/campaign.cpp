@@ -1,0 +1,368 @@
+#include "campaign/campaign.hpp"
+
+#include "certify/golden.hpp"
+#include "io/files.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace scalecert::internal {
+
+// ---- SHA-256 (FIPS 180-4), for the run folder's content hashes ------------------------------
+namespace {
+constexpr std::uint32_t kK[64] = {
+    0x428a2f98, 0x71374491, 0xb5c0fbcf, 0xe9b5dba5, 0x3956c25b, 0x59f111f1, 0x923f82a4, 0xab1c5ed5, 0xd807aa98, 0x12835b01,
+    0x243185be, 0x550c7dc3, 0x72be5d74, 0x80deb1fe, 0x9bdc06a7, 0xc19bf174, 0xe49b69c1, 0xefbe4786, 0x0fc19dc6, 0x240ca1cc,
+    0x2de92c6f, 0x4a7484aa, 0x5cb0a9dc, 0x76f988da, 0x983e5152, 0xa831c66d, 0xb00327c8, 0xbf597fc7, 0xc6e00bf3, 0xd5a79147,
+    0x06ca6351, 0x14292967, 0x27b70a85, 0x2e1b2138, 0x4d2c6dfc, 0x53380d13, 0x650a7354, 0x766a0abb, 0x81c2c92e, 0x92722c85,
+    0xa2bfe8a1, 0xa81a664b, 0xc24b8b70, 0xc76c51a3, 0xd192e819, 0xd6990624, 0xf40e3585, 0x106aa070, 0x19a4c116, 0x1e376c08,
+    0x2748774c, 0x34b0bcb5, 0x391c0cb3, 0x4ed8aa4a, 0x5b9cca4f, 0x682e6ff3, 0x748f82ee, 0x78a5636f, 0x84c87814, 0x8cc70208,
+    0x90befffa, 0xa4506ceb, 0xbef9a3f7, 0xc67178f2};
+inline std::uint32_t rotr(std::uint32_t x, int n) { return (x >> n) | (x << (32 - n)); }
+}  // namespace
+
+std::string sha256_hex(const std::string& bytes) {
+    std::uint32_t h[8] = {0x6a09e667, 0xbb67ae85, 0x3c6ef372, 0xa54ff53a, 0x510e527f, 0x9b05688c, 0x1f83d9ab, 0x5be0cd19};
+    std::string m = bytes;
+    const std::uint64_t bits = static_cast<std::uint64_t>(bytes.size()) * 8;
+    m += static_cast<char>(0x80);
+    while (m.size() % 64 != 56) m += '\0';
+    for (int i = 7; i >= 0; --i) m += static_cast<char>((bits >> (8 * i)) & 0xff);
+    for (size_t off = 0; off < m.size(); off += 64) {
+        std::uint32_t w[64];
+        for (int i = 0; i < 16; ++i) {
+            const auto* p = reinterpret_cast<const unsigned char*>(m.data() + off + 4 * i);
+            w[i] = std::uint32_t(p[0]) << 24 | std::uint32_t(p[1]) << 16 | std::uint32_t(p[2]) << 8 | p[3];
+        }
+        for (int i = 16; i < 64; ++i) {
+            const std::uint32_t s0 = rotr(w[i - 15], 7) ^ rotr(w[i - 15], 18) ^ (w[i - 15] >> 3);
+            const std::uint32_t s1 = rotr(w[i - 2], 17) ^ rotr(w[i - 2], 19) ^ (w[i - 2] >> 10);
+            w[i] = w[i - 16] + s0 + w[i - 7] + s1;
+        }
+        std::uint32_t a = h[0], b = h[1], c = h[2], d = h[3], e = h[4], f = h[5], g = h[6], hh = h[7];
+        for (int i = 0; i < 64; ++i) {
+            const std::uint32_t t1 = hh + (rotr(e, 6) ^ rotr(e, 11) ^ rotr(e, 25)) + ((e & f) ^ (~e & g)) + kK[i] + w[i];
+            const std::uint32_t t2 = (rotr(a, 2) ^ rotr(a, 13) ^ rotr(a, 22)) + ((a & b) ^ (a & c) ^ (b & c));
+            hh = g, g = f, f = e, e = d + t1, d = c, c = b, b = a, a = t1 + t2;
+        }
+        h[0] += a, h[1] += b, h[2] += c, h[3] += d, h[4] += e, h[5] += f, h[6] += g, h[7] += hh;
+    }
+    char out[65];
+    for (int i = 0; i < 8; ++i) std::snprintf(out + 8 * i, 9, "%08x", h[i]);
+    return std::string(out, 64);
+}
+
+// ---- planning ----------------------------------------------------------------------------------
+
+void validate(const CampaignArgs& a) {
+    if (a.golden) {
+        if (a.family.empty()) throw InputError("--family is required");
+        family_description(a.family);
+        const Q eps = parse_exact(a.eps_text);
+        if (sgn(eps) <= 0) throw InputError("--eps must be > 0");
+        return;
+    }
+    if (!a.family.empty()) family_description(a.family);
+    if (!a.family.empty() && a.sweep_to < a.sweep_from) throw InputError("--sweep-to must be >= --sweep");
+    if (!a.auditor.run)
+        throw InputError("audit: this build has no floating-point baselines (configure with SCALECERT_BUILD_BASELINES=ON)");
+    const std::vector<std::string> known = a.auditor.method_names();
+    for (const std::string& m : a.methods)
+        if (m != "grid" && std::find(known.begin(), known.end(), m) == known.end())
+            throw InputError("--methods: unknown method " + quoted(m));
+    if (a.scenes.empty() && a.family.empty()) throw InputError("audit: no scenes (give SCENES or --family with --sweep)");
+}
+
+std::vector<Shard> plan(const CampaignArgs& a) {
+    std::vector<Shard> out;
+    const int size = a.shard_size > 0 ? a.shard_size : a.golden ? 16 : 4;
+    auto ranges = [&](int k) {
+        for (int first = 0; first < a.count; first += size) {
+            Shard s{static_cast<int>(out.size())};
+            s.k = k;
+            s.first = first;
+            s.last = std::min(a.count, first + size);
+            out.push_back(s);
+        }
+    };
+    if (a.golden) {
+        ranges(0);
+        return out;
+    }
+    for (size_t i = 0; i < a.scenes.size(); ++i) {
+        Shard s{static_cast<int>(out.size())};
+        s.scene_file = static_cast<int>(i);
+        out.push_back(s);
+    }
+    if (!a.family.empty())
+        for (int k = a.sweep_from; k <= a.sweep_to; ++k) ranges(k);
+    return out;
+}
+
+std::uint64_t scene_seed(std::uint64_t run_seed, int k, int i) {
+    Rng r(run_seed);
+    return Rng(r.next() ^ (static_cast<std::uint64_t>(k) << 32) ^ static_cast<std::uint64_t>(i)).next();
+}
+
+// ---- running a shard ---------------------------------------------------------------------------
+
+namespace {
+
+// Doubles as JSON numbers, or as "nan", "inf", "-inf" (a grid that never crosses ρ1 = ρ2 has no
+// growth estimate): JSON has no number for them, and the row must come back bit for bit.
+Json num_json(double x) {
+    if (std::isfinite(x)) return x;
+    return std::isnan(x) ? "nan" : x > 0 ? "inf" : "-inf";
+}
+double num_of(const Json& j) {
+    if (j.is_string()) return std::strtod(j.get<std::string>().c_str(), nullptr);
+    return j.get<double>();
+}
+
+Json row_json(const AuditRow& r) {
+    return Json{{"scene", r.scene}, {"method", r.method}, {"eps", to_exact_string(r.eps)}, {"queries", r.queries},
+                {"false_separated", r.false_separated}, {"false_overlapping", r.false_overlapping},
+                {"seconds_per_query", num_json(r.seconds_per_query)}, {"has_curve", r.has_curve}, {"grid_n", r.grid_n},
+                {"growth_error", num_json(r.growth_error)}, {"max_junction_error", num_json(r.max_junction_error)},
+                {"seconds_per_curve", num_json(r.seconds_per_curve)}, {"exact_junctions", r.exact_junctions},
+                {"junctions_found", r.junctions_found}, {"junctions_missed", r.junctions_missed},
+                {"junctions_merged", r.junctions_merged}, {"distances", r.distances}, {"depths", r.depths}, {"closest_outside", r.closest_outside},
+                {"distance_err_median", num_json(r.distance_err_median)}, {"distance_err_max", num_json(r.distance_err_max)},
+                {"depth_err_median", num_json(r.depth_err_median)}, {"depth_err_max", num_json(r.depth_err_max)},
+                {"direction_err_max", num_json(r.direction_err_max)}, {"by_distance", [&] {
+                     Json a = Json::array();
+                     for (const AuditRow::ByDistance& b : r.by_distance) a.push_back(Json::array({b.k, b.pairs, b.wrong, b.touching}));
+                     return a;
+                 }()}};
+}
+
+AuditRow row_of(const Json& j) {
+    AuditRow r;
+    r.scene = j.at("scene").get<std::string>();
+    r.method = j.at("method").get<std::string>();
+    r.eps = parse_exact(j.at("eps").get<std::string>());
+    r.queries = j.at("queries").get<long>();
+    r.false_separated = j.at("false_separated").get<long>();
+    r.false_overlapping = j.at("false_overlapping").get<long>();
+    r.seconds_per_query = num_of(j.at("seconds_per_query"));
+    r.has_curve = j.at("has_curve").get<bool>();
+    r.grid_n = j.at("grid_n").get<int>();
+    r.growth_error = num_of(j.at("growth_error"));
+    r.max_junction_error = num_of(j.at("max_junction_error"));
+    r.seconds_per_curve = num_of(j.at("seconds_per_curve"));
+    r.exact_junctions = j.at("exact_junctions").get<int>();
+    r.junctions_found = j.at("junctions_found").get<int>();
+    r.junctions_missed = j.at("junctions_missed").get<int>();
+    r.junctions_merged = j.at("junctions_merged").get<int>();
+    r.distances = j.at("distances").get<long>();
+    r.depths = j.at("depths").get<long>();
+    r.closest_outside = j.at("closest_outside").get<long>();
+    r.distance_err_median = num_of(j.at("distance_err_median"));
+    r.distance_err_max = num_of(j.at("distance_err_max"));
+    r.depth_err_median = num_of(j.at("depth_err_median"));
+    r.depth_err_max = num_of(j.at("depth_err_max"));
+    r.direction_err_max = num_of(j.at("direction_err_max"));
+    for (const Json& b : j.at("by_distance"))
+        r.by_distance.push_back({b.at(0).get<int>(), b.at(1).get<long>(), b.at(2).get<long>(), b.at(3).get<long>()});
+    return r;
+}
+
+// A golden output file's bytes, or "" when it is missing or not a regular file (its shard is then
+// redone, and writing it refuses anything but a regular file). Never blocks on a planted FIFO.
+std::string slurp_or_empty(const std::string& path) {
+    try {
+        return read_regular_file(path, "golden output file", kMaxRunFileBytes);
+    } catch (const InputError&) {
+        return "";
+    }
+}
+
+// Runs f with every file it reads recorded as [path, SHA-256 of the bytes read], in order.
+template <class F>
+Json reading(F&& f) {
+    Json files = Json::array();
+    InputObserver watch([&](const std::string& path, const std::string& bytes) { files.push_back(Json::array({path, sha256_hex(bytes)})); });
+    f();
+    return files;
+}
+
+}  // namespace
+
+std::vector<std::pair<std::string, std::string>> golden_scene(const std::string& family, int i, std::uint64_t scene_seed,
+                                                              std::uint64_t run_seed, const Q& eps) {
+    Rng g(scene_seed);
+    Scene s = make_family_scene(family, eps, g);
+    Model m = build_model(s);
+    Curve c = build_curve(m);
+    const std::string stem = family + "-" + std::to_string(i);
+    GoldenAnswers a = golden_answers(s, m, c);
+    Json j = std::move(a.curve);
+    j["family"] = family;
+    j["eps"] = to_exact_string(eps);
+    j["index"] = i;
+    j["seed"] = std::to_string(run_seed);
+    j["queries"] = std::move(a.queries);
+    return {{stem + ".scene.json", dump(scene_json(s))}, {stem + ".golden.json", dump(j)}, {stem + ".golden.csv", a.csv}};
+}
+
+std::string run_shard(const CampaignArgs& a, const Shard& s) {
+    Json j;
+    j["shard"] = s.index;
+    if (a.golden) {
+        const Q eps = parse_exact(a.eps_text);
+        Json files = Json::array();
+        for (int i = s.first; i < s.last; ++i)
+            for (const auto& [name, text] : golden_scene(a.family, i, scene_seed(a.seed, 0, i), a.seed, eps)) {
+                write_file_atomically(a.dir + "/" + name, text);
+                files.push_back(Json::array({name, sha256_hex(text)}));
+            }
+        j["files"] = files;
+        return dump(j);
+    }
+    std::vector<AuditRow> rows;
+    if (s.scene_file >= 0) {
+        const std::string& p = a.scenes[static_cast<size_t>(s.scene_file)];
+        Scene sc;
+        // The scene file and the meshes it names, as read: a resumed run checks them against the
+        // run's inputs, so that no shard computed from older contents is merged.
+        j["inputs"] = reading([&] { sc = load_scene(p, a.opt); });  // its errors name the file already
+        try {
+            rows = a.auditor.run(p, sc, Q(0), a.methods, a.grid, a.by_distance);
+        } catch (const InputError& e) {
+            throw InputError(p + ": " + e.what());
+        }
+    } else {
+        const Q eps(1, Z(1) << s.k);
+        for (int i = s.first; i < s.last; ++i) {
+            Rng g(scene_seed(a.seed, s.k, i));
+            auto r = a.auditor.run(a.family + "-" + std::to_string(i), make_family_scene(a.family, eps, g), eps, a.methods, a.grid, a.by_distance);
+            rows.insert(rows.end(), r.begin(), r.end());
+        }
+    }
+    Json rj = Json::array();
+    for (const AuditRow& r : rows) rj.push_back(row_json(r));
+    j["rows"] = rj;
+    return dump(j);
+}
+
+bool shard_outputs_intact(const CampaignArgs& a, const std::string& shard_text) {
+    if (!a.golden) return true;
+    try {
+        const Json j = Json::parse(shard_text);
+        for (const Json& f : j.at("files"))
+            if (sha256_hex(slurp_or_empty(a.dir + "/" + f.at(0).get<std::string>())) != f.at(1).get<std::string>()) return false;
+        return true;
+    } catch (const std::exception&) {
+        return false;
+    }
+}
+
+long finish_campaign(const CampaignArgs& a, const std::vector<std::string>& shard_texts) {
+    if (a.golden) return a.count;
+    std::vector<AuditRow> rows;
+    for (const std::string& t : shard_texts) {
+        const Json doc = Json::parse(t);  // (kept: a range over a temporary's member dangles)
+        for (const Json& r : doc.at("rows")) rows.push_back(row_of(r));
+    }
+    const std::string json = dump(audit_json(rows, !a.no_timing));
+    const std::string csv = audit_csv(rows, !a.no_timing);
+    if (a.out.empty()) {
+        if (!a.csv.empty()) write_file_atomically(a.csv, csv);
+        std::fwrite(json.data(), 1, json.size(), stdout);
+        std::fflush(stdout);
+        if (std::ferror(stdout)) throw InputError("cannot write to standard output");
+    } else if (a.csv.empty()) {
+        write_file_atomically(a.out, json);
+    } else {
+        write_files_atomically({{a.csv, csv}, {a.out, json}});  // both or neither
+    }
+    return static_cast<long>(rows.size());
+}
+
+long run_campaign(const CampaignArgs& a) {
+    std::vector<std::string> texts;
+    for (const Shard& s : plan(a)) texts.push_back(run_shard(a, s));
+    return finish_campaign(a, texts);
+}
+
+void make_output_dir(const std::string& dir) {
+    std::error_code ec;
+    std::filesystem::create_directories(dir, ec);
+    if (ec || !std::filesystem::is_directory(dir))
+        throw InputError(dir + ": cannot create the output directory (" + (ec ? ec.message() : "not a directory") + ")");
+}
+
+void write_golden(const std::string& family, int count, std::uint64_t seed, const Q& eps, const std::string& dir) {
+    CampaignArgs a;
+    a.golden = true;
+    a.family = family;
+    a.count = count;
+    a.seed = seed;
+    a.eps_text = to_exact_string(eps);
+    a.dir = dir;
+    validate(a);  // an unknown family is refused before the directory is made
+    make_output_dir(dir);
+    run_campaign(a);
+}
+
+Json campaign_inputs(const CampaignArgs& a) {
+    Json files = Json::array();
+    if (a.golden) return files;
+    for (const std::string& p : a.scenes) {
+        if (p == "-") throw InputError("standard input cannot be a scene of a resumable run (its contents could not be checked on --resume)");
+        for (const Json& f : reading([&] { load_scene(p, a.opt); })) files.push_back(f);
+    }
+    return files;
+}
+
+std::string stale_input(const Json& inputs, const std::string& shard_text) {
+    Json j;
+    try {
+        j = Json::parse(shard_text);
+    } catch (const std::exception&) {
+        return "";  // not JSON: the caller's hash check redoes it
+    }
+    if (!j.is_object() || !j.contains("inputs")) return "";
+    for (const Json& f : j.at("inputs")) {
+        const std::string path = f.at(0).get<std::string>(), hash = f.at(1).get<std::string>();
+        bool known = false;
+        for (const Json& g : inputs)
+            if (g.at(0).get<std::string>() == path) {
+                if (g.at(1).get<std::string>() != hash) return path;
+                known = true;
+            }
+        if (!known) return path;
+    }
+    return "";
+}
+
+std::string campaign_identity(const CampaignArgs& a, const Json& inputs) {
+    Json j;
+    j["command"] = a.golden ? "golden" : "audit";
+    j["family"] = a.family;
+    j["count"] = a.count;
+    j["seed"] = std::to_string(a.seed);
+    j["shards"] = plan(a).size();
+    if (a.golden) {
+        j["eps"] = to_exact_string(parse_exact(a.eps_text));
+        j["dir"] = a.dir;
+    } else {
+        j["scenes"] = a.scenes;
+        j["methods"] = a.methods;
+        j["grid"] = a.grid;
+        j["sweep"] = Json::array({a.sweep_from, a.sweep_to});
+        j["binary_doubles"] = a.opt.binary_doubles;
+        j["by_distance"] = a.by_distance;
+    }
+    j["shard_size"] = a.shard_size;
+    j["inputs"] = inputs;  // [path, SHA-256] of every scene file and mesh file read
+    return j.dump();
+}
+
+}  // namespace scalecert::internal

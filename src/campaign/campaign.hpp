@@ -1,0 +1,105 @@
+// Campaigns: golden data and audits split into deterministic shards, so that one process
+// (scalecert golden / audit) and many (scalecert-mpi, ranks taking shards dynamically) write the
+// same bytes. A shard is a scene file, or a range of scene indices of the family at one ε; every
+// family scene has its own seed, derived from the run's seed, ε's exponent and its index.
+#pragma once
+#include "campaign/audit_table.hpp"
+#include "campaign/families.hpp"
+#include "certify/certificate.hpp"
+#include "io/scene.hpp"
+
+#include <functional>
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace scalecert::internal {
+
+// What an audit runs: the floating-point methods' names, and the rows of one scene (name, scene,
+// ε, methods, grid resolutions, by_distance). The baselines provide it (baselines/audit.hpp:
+// baseline_auditor); a build without them has none, and its audits are refused.
+struct Auditor {
+    std::function<std::vector<std::string>()> method_names;
+    std::function<std::vector<AuditRow>(const std::string&, const Scene&, const Q&, const std::vector<std::string>&,
+                                        const std::vector<int>&, bool)>
+        run;
+};
+
+struct CampaignArgs {
+    bool golden = false;  // golden data, else an audit
+    std::string family;
+    int count = 1;  // family scenes (golden), or per ε (audit)
+    std::uint64_t seed = 1;
+    std::string eps_text = "1/1048576";  // golden
+    std::string dir;                     // golden: the output directory
+    std::vector<std::string> scenes;     // audit: scene files
+    std::vector<std::string> methods{"libccd-gjk", "libccd-mpr", "fcl-gjk-libccd", "fcl-gjk-indep", "bullet-gjk-epa", "double-envelope", "paper-tritri", "grid"};
+    std::vector<int> grid{16, 64, 256};
+    int sweep_from = 0, sweep_to = 0;  // audit: ε = 2^-k, k in [sweep_from, sweep_to], with family
+    std::string out, csv;              // audit: JSON (or standard output) and CSV files
+    bool no_timing = false;            // audit: leave the timing columns out
+    bool by_distance = false;          // audit: wrong verdicts by relative distance from the curve
+    ReadOptions opt;
+    Auditor auditor;   // audit: the methods (none without the baselines)
+    int shard_size = 0;  // family scenes per shard; 0: 16 for golden, 4 for audits
+};
+
+// Refuses bad arguments (one line, before any work or any file is made): unknown family or
+// method, --sweep-to < --sweep, --eps <= 0, no scenes at all.
+void validate(const CampaignArgs& a);
+
+struct Shard {
+    int index;
+    int scene_file = -1;   // audit: an index into CampaignArgs::scenes; or -1 for a family range
+    int k = 0;             // ε = 2^-k (audit sweeps); golden: 0
+    int first = 0, last = 0;  // family scene indices [first, last)
+    long scenes() const { return scene_file >= 0 ? 1 : last - first; }
+};
+std::vector<Shard> plan(const CampaignArgs& a);
+
+// Family scene i at ε = 2^-k (golden: k = 0) of a run with this seed.
+std::uint64_t scene_seed(std::uint64_t run_seed, int k, int i);
+
+// Runs a shard. Golden: writes its scenes' files into the directory (atomically) and returns
+// their names and SHA-256 hashes; audit: returns its rows. Either as the shard file's text.
+std::string run_shard(const CampaignArgs& a, const Shard& s);
+// Golden: whether the files a shard's text lists are all present with their hashes.
+bool shard_outputs_intact(const CampaignArgs& a, const std::string& shard_text);
+// After every shard: writes the audit's JSON and CSV from the shards' texts, in shard order
+// (golden: nothing left to write). Returns the number of rows or scenes.
+long finish_campaign(const CampaignArgs& a, const std::vector<std::string>& shard_texts);
+// The whole campaign in this process: what scalecert golden and audit run.
+long run_campaign(const CampaignArgs& a);
+
+// Creates an output directory (and its parents). Throws InputError naming it, with the reason,
+// when it cannot (a file in the way, no permission).
+void make_output_dir(const std::string& dir);
+
+// The files an audit reads, each scene file and the mesh files it names, as [[path, SHA-256 of
+// its bytes], ...] in reading order (golden and family runs: none). Reads every scene as its
+// shard will (InputError names a bad one); standard input is refused (it cannot be read twice).
+Json campaign_inputs(const CampaignArgs& a);
+// What a run folder records of the command, the contents of its inputs (campaign_inputs)
+// included: shards from one command, or from other contents of its files, cannot mix with another's.
+std::string campaign_identity(const CampaignArgs& a, const Json& inputs);
+// The first file an audit shard's text records as read ("inputs") that `inputs` does not list with
+// the same hash; "" when there is none (golden and family shards record none).
+std::string stale_input(const Json& inputs, const std::string& shard_text);
+
+// Scene i of a family with its exact answers, drawn with scene_seed (campaign.hpp derives it from
+// the run's seed): the files NAME-i.scene.json, NAME-i.golden.json and NAME-i.golden.csv, by name
+// and text. The golden JSON records the run's seed and i.
+std::vector<std::pair<std::string, std::string>> golden_scene(const std::string& family, int i, std::uint64_t scene_seed,
+                                                              std::uint64_t run_seed, const Q& eps);
+// Writes COUNT scenes of a family with their exact answers into DIR (campaign.cpp: the same
+// shards as scalecert-mpi). Byte-identical for the same arguments.
+void write_golden(const std::string& family, int count, std::uint64_t seed, const Q& eps, const std::string& dir);
+
+
+// Files in a run folder (manifest, shards) and golden outputs are read up to this size.
+constexpr std::size_t kMaxRunFileBytes = std::size_t(1) << 40;
+
+std::string sha256_hex(const std::string& bytes);
+
+}  // namespace scalecert::internal

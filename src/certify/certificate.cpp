@@ -1,0 +1,423 @@
+#include "certify/certificate.hpp"
+
+#include "curve/closed_forms.hpp"
+#include "geometry/witness.hpp"
+
+#include <algorithm>
+#include <iterator>
+
+#include <mpfr.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+
+#include <cstdio>
+#include <fstream>
+
+namespace scalecert::internal {
+
+namespace {
+const char* kFormat = "scalecert-2";
+
+// An exact value and, in `key_double`, its nearest double.
+void put(Json& o, const std::string& key, const Q& q) {
+    o[key] = to_exact_string(q);
+    o[key + "_double"] = to_double_rn(q);
+}
+void put(Json& o, const std::string& key, const std::vector<Q>& qs) {
+    Json a = Json::array(), b = Json::array();
+    for (const Q& q : qs) a.push_back(to_exact_string(q)), b.push_back(to_double_rn(q));
+    o[key] = a;
+    o[key + "_double"] = b;
+}
+void put(Json& o, const std::string& key, const Vec3q& v) { put(o, key, std::vector<Q>(v.begin(), v.end())); }
+Json ints(const Vec3z& v) { return Json::array({v[0].get_str(), v[1].get_str(), v[2].get_str()}); }
+Json weights(const std::vector<std::pair<int, Q>>& w) {
+    Json a = Json::array();
+    for (const auto& [i, q] : w) a.push_back(Json::array({i, to_exact_string(q)}));
+    return a;
+}
+Json features(const std::vector<int>& f1, const std::vector<int>& f2) {
+    return Json{{"P1", f1}, {"P2", f2}};
+}
+
+Json model_json(const Model& m) {
+    Json j;
+    const char* names[2] = {"P1", "P2"};
+    if (m.scan) {  // the scan path (scan.hpp): no hull; what the walk did
+        const ScanStats& s = m.scan_stats;
+        j["engine"] = "scan";
+        for (int i = 0; i < 2; ++i) j[names[i]] = Json{{"points", m.scan->P[i].size()}};
+        j["contact_lines"] = m.lines.size();
+        j["support_queries"] = s.support_queries;
+        j["gift_wrap_steps"] = s.gift_wrap_steps;
+        j["start_lp"] = Json{{"solves", s.lp_solves}, {"rows", s.lp_rows}};
+        j["decided_by_filter"] = Json{{"support_comparisons", s.points_visited - s.candidates_exact}};
+        j["decided_exactly"] = Json{{"support_comparisons", s.candidates_exact}};
+        return j;
+    }
+    for (int i = 0; i < 2; ++i)
+        j[names[i]] = Json{{"vertices", m.P[i].vertices.size()}, {"edges", m.P[i].edges.size()}, {"faces", m.P[i].faces.size()}};
+    j["facet_normals"] = m.stats.distinct_normals;
+    j["contact_lines"] = m.lines.size();  // after dropping the certainly dominated ones
+    j["edge_pairs_tested"] = m.stats.edge_pairs_tested;
+    j["gauss_arc_crossings"] = m.stats.arc_crossings;
+    j["decided_by_filter"] = Json{{"arc_signs", m.stats.arc_signs_filtered},
+                                  {"support_comparisons", m.P[0].cmp_filtered + m.P[1].cmp_filtered}};
+    j["decided_exactly"] = Json{{"arc_signs", m.stats.arc_signs_exact},
+                                {"support_comparisons", m.P[0].cmp_exact + m.P[1].cmp_exact}};
+    return j;
+}
+
+// Seeds strictly inside: strictly positive weights on vertices spanning 3 dimensions.
+Json seed_interior_json(const Model& m) {
+    Json seeds;
+    const char* names[2] = {"P1", "P2"};
+    for (int i = 0; i < 2; ++i) seeds[names[i]] = weights(seed_weights(m, i));
+    return seeds;
+}
+
+// On the walk the points stay in machine integers (up to 10^6 per polyhedron): the scene's vertex
+// lists enter the document as placeholders, and document_text writes them straight into the
+// text, as dump() would have written them.
+const char* kVerticesPlaceholder[2] = {"@scalecert-vertices-P1@", "@scalecert-vertices-P2@"};
+
+Json scene_json_for(const Model& m) {
+    if (!m.scan) return scene_json(m.scene);
+    Scene sc = m.scene;  // seeds and ranges; no points
+    Json j = scene_json(sc);
+    const char* names[2] = {"P1", "P2"};
+    for (int i = 0; i < 2; ++i) j[names[i]]["vertices"] = kVerticesPlaceholder[i];
+    return j;
+}
+
+// An exact coordinate x / scale in lowest terms, as to_exact_string writes it.
+void append_coordinate(std::string& t, std::int64_t x, const Z& scale) {
+    if (scale == 1) {
+        t += std::to_string(x);
+        return;
+    }
+    Q q(Z(static_cast<long>(x)), scale);
+    q.canonicalize();
+    t += to_exact_string(q);
+}
+
+// nlohmann's dump(1) of an array of [x, y, z] arrays of strings, the array at `indent`.
+std::string vertices_text(const IntPoints& P, size_t indent) {
+    std::string t;
+    const size_t n = P.size();
+    if (n == 0) return "[]";
+    t.reserve(n * (3 * (indent + 16) + 2 * indent + 8));
+    t += "[\n";
+    const std::string i1(indent + 1, ' '), i2(indent + 2, ' ');
+    for (size_t k = 0; k < n; ++k) {
+        t += i1;
+        t += "[\n";
+        for (int c = 0; c < 3; ++c) {
+            t += i2;
+            t += '"';
+            append_coordinate(t, P.at(k)[c], P.scale);
+            t += c < 2 ? "\",\n" : "\"\n";
+        }
+        t += i1;
+        t += k + 1 < n ? "],\n" : "]\n";
+    }
+    t += std::string(indent, ' ');
+    t += "]";
+    return t;
+}
+
+Json witness_json(const Witness& w) {
+    Json j;
+    put(j, "rho1", w.rho1);
+    put(j, "rho2", w.rho2);
+    put(j, "point", w.point);
+    j["P1"] = weights(w.w1);
+    j["P2"] = weights(w.w2);
+    return j;
+}
+
+Json piece_json(const Model& m, const Curve& c, const CurvePiece& p, bool certificate) {
+    const EnvPiece& e = c.env.pieces[p.env];
+    const ContactLine& L = m.lines[e.line];
+    Json j;
+    put(j, "rho1", std::vector<Q>{p.from, p.to});
+    put(j, "slope", L.slope);
+    put(j, "intercept", L.intercept);
+    if (p.contact.label.empty()) {
+        j["contact"] = nullptr;  // ρ2 ≤ 0 all along the piece: nothing touches
+    } else {
+        j["contact"] = p.contact.label;
+        j["features"] = features(p.contact.feat1, p.contact.feat2);
+    }
+    j["closed_form"] = closed_form_line(m, L).formula;
+    j["normal"] = ints(L.normal);
+    if (certificate) {
+        put(j, "h1", L.h1);
+        put(j, "h2", L.h2);
+        j["support_vertices"] = Json{{"P1", L.feat1.front()}, {"P2", L.feat2.front()}};
+    }
+    // The other normals with the piece's line that cut its maximisers down to the contact
+    // features, each one that shrinks them (a face's proper face has lower dimension, so at most
+    // two per polyhedron): the checker scans every vertex for each, so it takes at most four.
+    if (e.same.size() > 1) {
+        Json also = Json::array();
+        std::vector<int> G[2] = {L.feat1, L.feat2};
+        for (size_t k : e.same) {
+            if (k == e.line) continue;
+            bool shrinks = false;
+            for (int i = 0; i < 2; ++i) {
+                const std::vector<int>& f = i ? m.lines[k].feat2 : m.lines[k].feat1;
+                std::vector<int> both;
+                std::set_intersection(G[i].begin(), G[i].end(), f.begin(), f.end(), std::back_inserter(both));
+                if (both.size() < G[i].size()) shrinks = true, G[i] = std::move(both);
+            }
+            if (shrinks) also.push_back(ints(m.lines[k].normal));
+        }
+        if (!also.empty()) j["same_line_normals"] = also;
+    }
+    return j;
+}
+
+Json switch_json(const SwitchPoint& s) {
+    Json j;
+    put(j, "rho1", s.rho1);
+    put(j, "rho2", s.rho2);
+    if (s.contact.label.empty()) {
+        j["contact"] = nullptr;  // ρ2 ≤ 0: outside the scaling domain, nothing touches
+    } else {
+        j["contact"] = s.contact.label;
+        j["features"] = features(s.contact.feat1, s.contact.feat2);
+    }
+    j["equation"] = s.equation;
+    return j;
+}
+
+Json curve_body(const Model& m, const Curve& c, bool certificate) {
+    Json j;
+    j["format"] = kFormat;
+    j["kind"] = certificate ? "partition" : "curve";
+    Json pieces = Json::array();
+    for (const CurvePiece& p : c.pieces) pieces.push_back(piece_json(m, c, p, certificate));
+    j["pieces"] = pieces;
+    Json sw = Json::array();
+    for (const SwitchPoint& s : c.switches) sw.push_back(switch_json(s));
+    j["switch_points"] = sw;
+    put(j, "growth_distance", c.growth.value);
+    j["growth_distance_in_rectangle"] = c.growth.in_rectangle;
+    if (sgn(c.growth.value) == 0) j["growth_distance_note"] = "the seeds coincide: every scaling pair overlaps";
+    j["model"] = model_json(m);
+    return j;
+}
+}  // namespace
+
+void put_exact(Json& o, const std::string& key, const Q& q) { put(o, key, q); }
+
+Json scene_json(const Scene& sc) {
+    Json s;
+    const char* names[2] = {"P1", "P2"};
+    for (int i = 0; i < 2; ++i) {
+        Json verts = Json::array();
+        for (const Vec3q& v : sc.P[i].points)
+            verts.push_back(Json::array({to_exact_string(v[0]), to_exact_string(v[1]), to_exact_string(v[2])}));
+        const Vec3q& sd = sc.P[i].seed;
+        s[names[i]] = Json{{"vertices", verts},
+                           {"seed", Json::array({to_exact_string(sd[0]), to_exact_string(sd[1]), to_exact_string(sd[2])})}};
+    }
+    s["I1"] = Json::array({to_exact_string(sc.lo[0]), to_exact_string(sc.hi[0])});
+    s["I2"] = Json::array({to_exact_string(sc.lo[1]), to_exact_string(sc.hi[1])});
+    return s;
+}
+
+Json curve_json(const Model& m, const Curve& c) { return curve_body(m, c, false); }
+
+Json query_json(const Model& m, const QueryResult& r) {
+    Json j;
+    j["format"] = kFormat;
+    j["kind"] = "query";
+    j["verdict"] = verdict_name(r.verdict);
+    put(j, "rho1", r.rho1);
+    put(j, "rho2", r.rho2);
+    Json cert;
+    if (r.plane) {
+        const PlaneCert& p = *r.plane;
+        const ContactLine& L = m.lines[p.line];
+        Json pl;
+        pl["normal"] = ints(L.normal);
+        put(pl, "offset", p.offset);
+        put(pl, "P1_max", p.c1);
+        put(pl, "P2_min", p.c2);
+        pl["support_vertices"] = Json{{"P1", p.support1}, {"P2", p.support2}};
+        pl["contact"] = L.contact;
+        cert["plane"] = pl;
+    }
+    if (r.witness) cert["witness"] = witness_json(*r.witness);
+    j["certificate"] = cert;
+    j["seed_interior"] = seed_interior_json(m);
+    j["scene"] = scene_json_for(m);
+    return j;
+}
+
+Json partition_json(const Model& m, const Curve& c, const Partition& p) {
+    Json j = curve_body(m, c, true);
+    for (size_t k = 0; k < c.pieces.size(); ++k)
+        if (p.piece_witnesses[k]) j["pieces"][k]["contact_witness"] = witness_json(*p.piece_witnesses[k]);
+    for (size_t k = 0; k < c.pieces.size(); ++k)
+        if (p.zero_witnesses[k]) j["pieces"][k]["zero_witness"] = witness_json(*p.zero_witnesses[k]);
+    for (size_t k = 0, w = 0; k < c.switches.size(); ++k)
+        if (sgn(c.switches[k].rho2) > 0) j["switch_points"][k]["witness"] = witness_json(p.switch_witnesses[w++]);
+    Json ends = Json::array();
+    for (int e = 0; e < 2; ++e) {
+        const CurvePiece& cp = e == 0 ? c.pieces.front() : c.pieces.back();
+        Q x = e == 0 ? cp.from : cp.to;
+        Json end;
+        put(end, "rho1", x);
+        put(end, "rho2", m.lines[c.env.pieces[cp.env].line].at(x));
+        if (p.end_witness[e]) end["witness"] = witness_json(*p.end_witness[e]);
+        ends.push_back(end);
+    }
+    j["curve_ends"] = ends;
+    Json g;
+    if (p.growth_witness) {
+        const ContactLine& L = m.lines[c.env.pieces[c.growth.env].line];
+        g["normal"] = ints(L.normal);
+        put(g, "h1", L.h1);
+        put(g, "h2", L.h2);
+        g["witness"] = witness_json(*p.growth_witness);
+    } else {
+        g["seeds_coincide"] = true;
+    }
+    j["growth_distance_certificate"] = g;
+    Json regions;
+    auto poly = [](const std::vector<Pt2>& v) {
+        Json a = Json::array(), b = Json::array();
+        for (const Pt2& x : v) {
+            a.push_back(Json::array({to_exact_string(x[0]), to_exact_string(x[1])}));
+            b.push_back(Json::array({to_double_rn(x[0]), to_double_rn(x[1])}));
+        }
+        return std::make_pair(a, b);
+    };
+    auto [ov, ovd] = poly(p.overlap);
+    Json wit = Json::array();
+    for (const Witness& w : p.overlap_witnesses) wit.push_back(witness_json(w));
+    regions["overlap"] = Json{{"vertices", ov}, {"vertices_double", ovd}, {"witnesses", wit}};
+    Json seps = Json::array();
+    for (const SeparatedRegion& r : p.separated) {
+        auto [a, b] = poly(r.verts);
+        seps.push_back(Json{{"piece", r.piece}, {"vertices", a}, {"vertices_double", b}});
+    }
+    regions["separated"] = seps;
+    j["regions"] = regions;
+    j["seed_interior"] = seed_interior_json(m);
+    j["scene"] = scene_json_for(m);
+    return j;
+}
+
+double scaled_length(const Vec3q& v1, const Vec3q& v2, const Q& g) {
+    Vec3q e = sub(v2, v1);
+    Q len2 = dot(e, e);
+    mpfr_t x, y;
+    mpfr_inits2(256, x, y, static_cast<mpfr_ptr>(nullptr));
+    mpfr_set_q(x, len2.get_mpq_t(), MPFR_RNDN);
+    mpfr_sqrt(x, x, MPFR_RNDN);
+    mpfr_set_q(y, g.get_mpq_t(), MPFR_RNDN);
+    mpfr_mul(x, x, y, MPFR_RNDN);
+    double d = mpfr_get_d(x, MPFR_RNDN);
+    mpfr_clears(x, y, static_cast<mpfr_ptr>(nullptr));
+    return d;
+}
+
+namespace {
+Json pieces_json(const std::vector<LinearPiece>& f) {
+    Json a = Json::array();
+    for (const LinearPiece& p : f) {
+        Json o;
+        put(o, "rho", std::vector<Q>{p.from, p.to});
+        put(o, "slope", p.slope);
+        put(o, "intercept", p.intercept);
+        a.push_back(o);
+    }
+    return a;
+}
+}  // namespace
+
+namespace {
+Json segment_head(const Segment& s) {
+    Json seg;
+    seg["kind"] = s.kind;
+    if (!s.note.empty()) seg["note"] = s.note;
+    put(seg, "from", s.v1);
+    put(seg, "to", s.v2);
+    if (s.path) {  // floating point: the ellipsoids themselves are not certified, the ends are checked
+        Json es;
+        const char* names[2] = {"P1", "P2"};
+        for (int i = 0; i < 2; ++i)
+            es[names[i]] = Json{{"center", s.path->E[i].center}, {"matrix", s.path->E[i].matrix}};
+        es["distance_double"] = s.path->distance;
+        seg["inner_ellipsoids"] = es;
+    }
+    return seg;
+}
+}  // namespace
+
+void add_segment_json(Json& j, const Model& m, const Curve& c, const Segment& s) {
+    Json seg = segment_head(s);
+    seg["t1"] = pieces_json(s.t[0]);
+    seg["t2"] = pieces_json(s.t[1]);
+    j["segment"] = seg;
+    Json tc = Json::array(), tcd = Json::array();
+    for (const auto& p : t_curve(m, c, s)) {
+        tc.push_back(Json::array({to_exact_string(p[0]), to_exact_string(p[1])}));
+        tcd.push_back(Json::array({to_double_rn(p[0]), to_double_rn(p[1])}));
+    }
+    j["t_curve"] = tc;
+    j["t_curve_double"] = tcd;
+    // Contact loci: the common point at each curve vertex (the contact point moves linearly
+    // between them on (V,F), (F,V) and (E,E) pieces).
+    Json loci = Json::array();
+    for (const auto& v : curve_vertices(m, c)) {
+        size_t line = c.env.pieces[c.env.locate(v[0])].line;
+        loci.push_back(witness_json(make_witness(m, v[0], v[1], line)));
+    }
+    j["contact_loci"] = loci;
+    Json faces;
+    const char* names[2] = {"P1", "P2"};
+    for (int i = 0; i < 2; ++i) {
+        Json fs = Json::array();
+        for (const Face& f : m.P[i].faces) fs.push_back(f.verts);
+        faces[names[i]] = fs;
+    }
+    j["faces"] = faces;
+    j["scene"] = scene_json(m.scene);
+}
+
+void add_query_segment_json(Json& j, const Segment& s, const Q& rho1, const Q& rho2) {
+    Json seg = segment_head(s);
+    put(seg, "t1", eval(s.t[0], rho1));
+    put(seg, "t2", eval(s.t[1], rho2));
+    Q g = directional_gap(s, rho1, rho2);
+    put(seg, "gap_fraction", g);
+    seg["gap_distance_double"] = scaled_length(s.v1, s.v2, g);
+    seg["gap_meaning"] = g > 0 ? "gap along the segment" : g < 0 ? "penetration along the segment" : "contact on the segment";
+    j["segment"] = seg;
+}
+
+std::string dump(const Json& j) { return j.dump(1) + "\n"; }
+
+std::string document_text(const Model& m, const Json& j) {
+    std::string text = dump(j);
+    if (!m.scan) return text;
+    // "scene" is a member of the document (indent 1), "P1" of the scene (2), "vertices" of P1 (3).
+    for (int i = 0; i < 2; ++i) {
+        const std::string key = std::string("\"") + kVerticesPlaceholder[i] + "\"";
+        const size_t at = text.find(key);
+        if (at == std::string::npos || text.find(key, at + 1) != std::string::npos)
+            throw std::logic_error("document_text: the vertex placeholder is not there once");
+        text.replace(at, key.size(), vertices_text(m.scan->P[i], 3));
+    }
+    return text;
+}
+
+}  // namespace scalecert::internal

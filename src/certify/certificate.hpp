@@ -1,0 +1,38 @@
+// Stage 7: the JSON documents — curve, query answer and the certified partition (the certificate
+// format, described field by field in certificates/FORMAT.md).
+#pragma once
+#include "certify/partition.hpp"
+#include "segment/segment.hpp"
+
+#include <nlohmann/json.hpp>
+
+namespace scalecert::internal {
+
+using Json = nlohmann::ordered_json;
+
+// The scene exactly, in the scene-file format (every number an exact string, seeds explicit).
+Json scene_json(const Scene& s);
+
+// o[key] = exact string, o[key + "_double"] = nearest double.
+void put_exact(Json& o, const std::string& key, const Q& q);
+
+Json curve_json(const Model& m, const Curve& c);
+Json query_json(const Model& m, const QueryResult& r);
+Json partition_json(const Model& m, const Curve& c, const Partition& p);
+
+// Adds the segment, t1/t2 pieces, the t-plane curve, the contact loci and the hull faces (for
+// figures) to a curve document.
+void add_segment_json(Json& j, const Model& m, const Curve& c, const Segment& s);
+// Adds t1, t2 and the directional gap to a query document.
+void add_query_segment_json(Json& j, const Segment& s, const Q& rho1, const Q& rho2);
+// |v2 − v1|·g to the nearest double (MPFR at 256 bits, then rounded).
+double scaled_length(const Vec3q& v1, const Vec3q& v2, const Q& g);
+
+// Serialises with a trailing newline; byte-identical for identical input.
+std::string dump(const Json& j);
+// A query answer's or partition's text: dump(j), with the scene's points written in on the walk
+// (whose documents hold placeholders for them). Use it for every document from query_json and
+// partition_json.
+std::string document_text(const Model& m, const Json& j);
+
+}  // namespace scalecert::internal

@@ -1,0 +1,626 @@
+// certify-fp for JSON claims: every output a floating-point collision program produces, checked
+// exactly. Squares are compared for distances and depths; no root is taken on the certified path
+// (the display doubles of |claimed − exact| use MPFR's correctly rounded square root).
+#include "certify/claims.hpp"
+#include "certify/certificate.hpp"
+#include "geometry/measures.hpp"
+#include "io/strict_json.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <optional>
+
+namespace scalecert::internal {
+
+namespace {
+
+void put_point(Json& o, const std::string& key, const Vec3q& v) {
+    o[key] = Json::array({to_exact_string(v[0]), to_exact_string(v[1]), to_exact_string(v[2])});
+}
+
+std::string dbl(double d) {
+    char b[40];
+    std::snprintf(b, sizeof b, "%.6g", d);
+    return b;
+}
+std::string num(const Q& q) { return to_exact_string(q) + " (~" + dbl(to_double_rn(q)) + ")"; }
+
+class Certifier {
+public:
+    Certifier(const ClaimModels& models, const std::string& name, const ClaimOptions& opt)
+        : models_(models), name_(name), opt_(opt) {}
+
+    // One claim: its report object and a one-line text; right or wrong.
+    bool run(const JNode& claim, size_t index, Json& o, std::string& text) {
+        where_ = name_ + ": claims[" + std::to_string(index) + "]";
+        if (claim.kind != JNode::Object) fail("", "expected an object with \"kind\"");
+        const std::string kind = str(claim, "kind");
+        o["index"] = index;
+        o["kind"] = kind;
+        if (kind == "verdict") return verdict(claim, o, text);
+        if (kind == "growth_distance") return growth(claim, o, text);
+        if (kind == "switch_point") return switch_point(claim, o, text);
+        if (kind == "curve") return curve(claim, o, text);
+        if (kind == "separating_plane") return plane(claim, o, text);
+        if (kind == "witness_point") return witness(claim, o, text);
+        if (kind == "distance") return distance(claim, o, text);
+        if (kind == "penetration_depth") return depth(claim, o, text);
+        fail("kind", "unknown kind " + quoted(kind) +
+                         " (verdict, curve, switch_point, growth_distance, separating_plane, witness_point, distance, penetration_depth)");
+    }
+
+private:
+    const ClaimModels& models_;
+    std::string name_, where_;
+    const Model& m() const { return models_.model(); }  // the hull model: built on first use
+    const Curve& c() const { return models_.curve(); }
+    ClaimOptions opt_;
+    std::optional<std::vector<Vec3z>> normals_;  // every facet normal, for depths (built on first use)
+    struct ExactSwitch { Q rho1, rho2; std::string label; };
+    std::optional<std::vector<ExactSwitch>> switches_;  // the exact switch points (built on first use)
+
+    [[noreturn]] void fail(const std::string& key, const std::string& what) const {
+        throw InputError(where_ + (key.empty() ? "" : "." + key) + ": " + what);
+    }
+    void only(const JNode& o, std::initializer_list<const char*> keys) const {
+        for (const std::string& k : o.keys)
+            if (std::none_of(keys.begin(), keys.end(), [&](const char* x) { return k == x; })) fail(k, "unknown field");
+    }
+    const JNode& need(const JNode& o, const char* key) const {
+        const JNode* n = o.find(key);
+        if (!n) fail(key, "missing");
+        return *n;
+    }
+    std::string str(const JNode& o, const char* key) const {
+        const JNode& n = need(o, key);
+        if (n.kind != JNode::String) fail(key, "expected a string");
+        return n.text;
+    }
+    Q number(const JNode& n, const std::string& key) const {
+        if (n.kind != JNode::Number && n.kind != JNode::String) fail(key, "expected a number or a string such as \"3/7\"");
+        try {
+            return parse_number(n.text, opt_.binary_doubles && n.kind == JNode::Number);
+        } catch (const InputError& e) {
+            fail(key, e.what());
+        }
+    }
+    Q field(const JNode& o, const char* key) const { return number(need(o, key), key); }
+    Vec3q point(const JNode& n, const std::string& key) const {
+        if (n.kind != JNode::Array || n.items.size() != 3) fail(key, "expected 3 numbers");
+        return {number(n.items[0], key), number(n.items[1], key), number(n.items[2], key)};
+    }
+    std::pair<Q, Q> pair_at(const JNode& o) const {
+        const Q r1 = field(o, "rho1"), r2 = field(o, "rho2");
+        if (sgn(r1) <= 0 || sgn(r2) <= 0) fail("rho1", "scalings must be > 0");
+        return {r1, r2};
+    }
+    std::optional<std::string> label(const JNode& o) const {
+        const JNode* n = o.find("contact");
+        if (!n) return std::nullopt;
+        if (n->kind != JNode::String || n->text.size() != 2 || n->text.find_first_not_of("VEF") != std::string::npos)
+            fail("contact", "expected a contact such as \"VE\"");
+        return n->text;
+    }
+    // Within the relative tolerance: |c − e| ≤ tol·|e| (exact).
+    bool close(const Q& c, const Q& e) const { return abs(Q(c - e)) <= opt_.tolerance * abs(e); }
+    // Claimed c ≥ 0 against an exact square E: (1 − tol)² E ≤ c² ≤ (1 + tol)² E.
+    bool close_sq(const Q& c, const Q& E) const {
+        if (sgn(c) < 0) return false;
+        const Q lo = (1 - opt_.tolerance), hi = (1 + opt_.tolerance);
+        const Q c2 = c * c;
+        return (sgn(lo) <= 0 || lo * lo * E <= c2) && c2 <= hi * hi * E;
+    }
+    // A squared length x that cannot be below the exact minimum E (a pair of points in the bodies,
+    // the depth along a direction), within the tolerance above it: E ≤ x ≤ (1 + tol)² E.
+    bool within_above(const Q& x, const Q& E) const {
+        return E <= x && x <= (1 + opt_.tolerance) * (1 + opt_.tolerance) * E;
+    }
+    // claimed, exact, and the absolute and relative errors (exact, with nearest doubles).
+    void errors(Json& o, const Q& claimed, const Q& exact) const {
+        put_exact(o, "claimed", claimed);
+        put_exact(o, "exact", exact);
+        const Q err = abs(Q(claimed - exact));
+        put_exact(o, "abs_error", err);
+        if (sgn(exact) != 0) put_exact(o, "rel_error", err / abs(exact));
+        else o["rel_error"] = nullptr;
+    }
+    // For a value whose exact square E is known: the error of the squares exactly, and |c − √E|
+    // and its relative size as MPFR-rounded doubles.
+    void errors_sq(Json& o, const Q& claimed, const Q& E) const {
+        put_exact(o, "claimed", claimed);
+        put_exact(o, "exact_squared", E);
+        put_exact(o, "squared_error", Q(claimed * claimed - E));
+        const double d = -sqrt_minus_rn(E, claimed);  // c − √E
+        o["abs_error_double"] = std::fabs(d);
+        o["rel_error_double"] = sgn(E) ? Json(std::fabs(d) / std::sqrt(to_double_rn(E))) : Json(nullptr);
+    }
+
+    bool verdict(const JNode& j, Json& o, std::string& text) {
+        only(j, {"kind", "rho1", "rho2", "verdict"});
+        const auto [r1, r2] = pair_at(j);
+        const std::string v = str(j, "verdict");
+        if (v != "separated" && v != "touching" && v != "overlapping" && v != "intersecting")
+            fail("verdict", "unknown verdict " + quoted(v) + " (separated, touching, overlapping, intersecting)");
+        const Verdict e = models_.verdict(r1, r2);
+        const bool right = v == "intersecting" ? e != Verdict::Separated : v == verdict_name(e);
+        put_exact(o, "rho1", r1);
+        put_exact(o, "rho2", r2);
+        o["claimed"] = v;
+        o["exact"] = verdict_name(e);
+        put_exact(o, "rho2_minus_curve", r2 - models_.curve_value(r1));
+        text = "verdict at (" + num(r1) + ", " + num(r2) + "): claimed " + v + ", exact " + verdict_name(e);
+        return right;
+    }
+
+    bool growth(const JNode& j, Json& o, std::string& text) {
+        only(j, {"kind", "value"});
+        const Q g = field(j, "value");
+        if (sgn(g) < 0) fail("value", "a growth distance is >= 0 (0 when the seeds coincide)");
+        const Q exact = models_.growth();
+        errors(o, g, exact);
+        text = "growth distance " + num(g) + ": exact " + num(exact);
+        return close(g, exact);
+    }
+
+    // The exact switch points: every break of the exact curve ρ2 = f(ρ1) over ρ1 > 0 where
+    // ρ2 > 0, inside I1 or not, with its contact (built on first use).
+    const std::vector<ExactSwitch>& exact_switches() {
+        if (switches_) return *switches_;
+        switches_.emplace();
+        const auto& P = c().env.pieces;
+        for (size_t k = 0; k + 1 < P.size(); ++k) {
+            const Q& x = *P[k].to;
+            const ContactLine &L = m().lines[P[k].line], &R = m().lines[P[k + 1].line];
+            const Q y = L.at(x);
+            if (sgn(x) <= 0) continue;
+            if (sgn(y) <= 0) break;  // f descends: nothing touches from here on
+            switches_->push_back({x, y, contact_at(m(), L, R, x, y).label});
+        }
+        return *switches_;
+    }
+    // A claimed scaling: a number > 0 (P(ρ) is a point or reflected otherwise).
+    Q scaling(const JNode& n, const std::string& key) const {
+        const Q q = number(n, key);
+        if (sgn(q) <= 0) fail(key, "scalings must be > 0 (got " + to_exact_string(q) + ")");
+        return q;
+    }
+    std::pair<Q, Q> scaling_pair(const JNode& p, const std::string& key) const {
+        if (p.kind != JNode::Array || p.items.size() != 2) fail(key, "expected [rho1, rho2] pairs");
+        return {scaling(p.items[0], key), scaling(p.items[1], key)};
+    }
+
+    bool switch_point(const JNode& j, Json& o, std::string& text) {
+        only(j, {"kind", "rho1", "rho2", "contact"});
+        const auto [r1, r2] = pair_at(j);
+        const std::optional<std::string> lab = label(j);
+        const auto& ex = exact_switches();
+        put_exact(o, "rho1", r1);
+        put_exact(o, "rho2", r2);
+        if (ex.empty()) {
+            o["nearest"] = nullptr;
+            text = "switch point (" + num(r1) + ", " + num(r2) + "): the exact curve has no switch point at rho1, rho2 > 0";
+            return false;
+        }
+        const ExactSwitch* best = &ex.front();
+        for (const ExactSwitch& s : ex)
+            if (abs(Q(s.rho1 - r1)) < abs(Q(best->rho1 - r1))) best = &s;
+        Json n;
+        put_exact(n, "rho1", best->rho1);
+        put_exact(n, "rho2", best->rho2);
+        n["contact"] = best->label;
+        o["nearest"] = n;
+        Json e1, e2;
+        errors(e1, r1, best->rho1);
+        errors(e2, r2, best->rho2);
+        o["rho1_error"] = e1;
+        o["rho2_error"] = e2;
+        const bool label_right = !lab || *lab == best->label;
+        o["contact_right"] = lab ? Json(label_right) : Json(nullptr);
+        text = "switch point (" + num(r1) + ", " + num(r2) + (lab ? ", " + *lab : "") + "): nearest exact (" + num(best->rho1) +
+               ", " + num(best->rho2) + ", " + best->label + ")";
+        return close(r1, best->rho1) && close(r2, best->rho2) && label_right;
+    }
+
+    // ρ1 with f(ρ1) = y (f is strictly decreasing), or none outside f's range over ρ1 ≥ 0.
+    std::optional<Q> inverse(const Q& y) const {
+        for (const EnvPiece& p : c().env.pieces) {
+            const ContactLine& L = m().lines[p.line];
+            const Q x = (y - L.intercept) / L.slope;
+            if (x >= p.from && (!p.to || x <= *p.to)) return x;
+        }
+        return std::nullopt;
+    }
+
+    // A curve claim: the rules of CLAIMS.md ("Curve claims"), each applied here once.
+    bool curve(const JNode& j, Json& o, std::string& text) {
+        only(j, {"kind", "vertices", "pieces", "switch_points"});
+        struct Seg { Q x0, y0, x1, y1; std::optional<std::string> label; };
+        struct Claimed { Q x, y; };
+        std::vector<Seg> segs;
+        std::vector<Claimed> claimed_switches;
+        const JNode* verts = j.find("vertices");
+        const JNode* pieces = j.find("pieces");
+        if ((verts != nullptr) == (pieces != nullptr)) fail("", "give \"vertices\" (a polyline) or \"pieces\"");
+        if (verts) {
+            if (verts->kind != JNode::Array || verts->items.size() < 2) fail("vertices", "expected at least 2 [rho1, rho2] pairs");
+            std::vector<std::pair<Q, Q>> v;
+            for (const JNode& p : verts->items) v.push_back(scaling_pair(p, "vertices"));
+            for (size_t i = 0; i + 1 < v.size(); ++i) {
+                if (!(v[i].first < v[i + 1].first)) fail("vertices", "rho1 must increase");
+                segs.push_back({v[i].first, v[i].second, v[i + 1].first, v[i + 1].second, std::nullopt});
+            }
+            // The polyline's own vertices where its slope changes (exactly) are its switch points,
+            // unless "switch_points" lists them (a sampled curve would have one at every sample).
+            for (size_t i = 1; i + 1 < v.size(); ++i)
+                if ((v[i].second - v[i - 1].second) * (v[i + 1].first - v[i].first) !=
+                    (v[i + 1].second - v[i].second) * (v[i].first - v[i - 1].first))
+                    claimed_switches.push_back({v[i].first, v[i].second});
+        } else {
+            if (pieces->kind != JNode::Array || pieces->items.empty()) fail("pieces", "expected a list of pieces");
+            for (const JNode& p : pieces->items) {
+                if (p.kind != JNode::Object) fail("pieces", "expected objects");
+                only(p, {"rho1", "slope", "intercept", "contact"});
+                const JNode& r = need(p, "rho1");
+                if (r.kind != JNode::Array || r.items.size() != 2) fail("pieces.rho1", "expected [from, to]");
+                const Q x0 = scaling(r.items[0], "pieces.rho1"), x1 = scaling(r.items[1], "pieces.rho1");
+                if (!(x0 < x1)) fail("pieces.rho1", "from < to is required");
+                if (!segs.empty() && x0 != segs.back().x1) fail("pieces.rho1", "each piece must start where the one before ends");
+                const Q a = field(p, "slope"), b = field(p, "intercept");
+                const Q y0 = a * x0 + b, y1 = a * x1 + b;
+                if (sgn(y0) <= 0 || sgn(y1) <= 0) fail("pieces", "the piece reaches rho2 <= 0 (scalings must be > 0)");
+                if (!segs.empty()) claimed_switches.push_back({x0, segs.back().y1});
+                segs.push_back({x0, y0, x1, y1, label(p)});
+            }
+        }
+        const Q lo = segs.front().x0, hi = segs.back().x1;
+        if (const JNode* sw = j.find("switch_points")) {
+            if (sw->kind != JNode::Array) fail("switch_points", "expected a list of [rho1, rho2]");
+            claimed_switches.clear();
+            for (const JNode& p : sw->items) {
+                const auto [x, y] = scaling_pair(p, "switch_points");
+                if (x < lo || x > hi) fail("switch_points", "rho1 = " + to_exact_string(x) + " lies outside the claimed range");
+                claimed_switches.push_back({x, y});
+            }
+        }
+        // Vertical error: on a stretch where the claim and f are both linear, so is their
+        // difference (and so are the tolerance's bounds), so the claimed ends and the exact
+        // breaks inside each segment suffice.
+        const auto& ex = exact_switches();
+        Q max_v = 0, max_h = 0, worst_v_at = lo;
+        bool within = true;
+        auto check_v = [&](const Q& x, const Q& y) {
+            const Q f = c().env.value(m().lines, x);
+            const Q e = abs(Q(y - f));
+            if (e > max_v) max_v = e, worst_v_at = x;
+            within = within && close(y, f);
+        };
+        for (const Seg& s : segs) {
+            check_v(s.x0, s.y0);
+            check_v(s.x1, s.y1);
+            for (const EnvPiece& p : c().env.pieces)
+                if (p.to && *p.to > s.x0 && *p.to < s.x1) check_v(*p.to, s.y0 + (s.y1 - s.y0) * (*p.to - s.x0) / (s.x1 - s.x0));
+            for (const auto& [x, y] : {std::pair{s.x0, s.y0}, std::pair{s.x1, s.y1}})
+                if (auto xi = inverse(y)) max_h = std::max(max_h, Q(abs(Q(*xi - x))));
+        }
+        // Nothing touches where f ≤ 0; f descends, so it is > 0 on the whole range iff at hi.
+        const bool exact_positive = sgn(c().env.value(m().lines, hi)) > 0;
+        o["exact_rho2_positive_over_range"] = exact_positive;
+        put_exact(o, "max_vertical_error", max_v);
+        put_exact(o, "max_vertical_error_at_rho1", worst_v_at);
+        put_exact(o, "max_horizontal_error", max_h);
+        // Switch points: the exact ones in the closed range [lo, hi], each matched with the claimed
+        // one nearest to it in ρ1 when that one's nearest exact switch is it. An exact switch
+        // strictly inside the range that is not matched is missed; one at an end of the range
+        // may go unclaimed. A claimed one not matched is extra; a matched pair must agree in ρ1
+        // and ρ2 within the tolerance, or it is misplaced.
+        std::vector<const ExactSwitch*> exact;
+        for (const ExactSwitch& s : ex)
+            if (s.rho1 >= lo && s.rho1 <= hi) exact.push_back(&s);
+        auto nearest_claimed = [&](const Q& x) {
+            size_t b = 0;
+            for (size_t i = 1; i < claimed_switches.size(); ++i)
+                if (abs(Q(claimed_switches[i].x - x)) < abs(Q(claimed_switches[b].x - x))) b = i;
+            return b;
+        };
+        auto nearest_exact = [&](const Q& x) {
+            size_t b = 0;
+            for (size_t i = 1; i < exact.size(); ++i)
+                if (abs(Q(exact[i]->rho1 - x)) < abs(Q(exact[b]->rho1 - x))) b = i;
+            return b;
+        };
+        Json missed = Json::array(), extra = Json::array(), misplaced = Json::array();
+        std::vector<bool> used(claimed_switches.size(), false);
+        for (size_t i = 0; i < exact.size(); ++i) {
+            const bool at_end = exact[i]->rho1 == lo || exact[i]->rho1 == hi;
+            size_t k = 0;
+            if (claimed_switches.empty() || nearest_exact(claimed_switches[k = nearest_claimed(exact[i]->rho1)].x) != i) {
+                if (!at_end) missed.push_back(Json::array({to_exact_string(exact[i]->rho1), to_exact_string(exact[i]->rho2)}));
+                continue;
+            }
+            used[k] = true;
+            if (!close(claimed_switches[k].x, exact[i]->rho1) || !close(claimed_switches[k].y, exact[i]->rho2)) {
+                Json mp;
+                put_exact(mp, "exact_rho1", exact[i]->rho1);
+                put_exact(mp, "exact_rho2", exact[i]->rho2);
+                put_exact(mp, "claimed_rho1", claimed_switches[k].x);
+                put_exact(mp, "claimed_rho2", claimed_switches[k].y);
+                misplaced.push_back(mp);
+            }
+        }
+        for (size_t k = 0; k < claimed_switches.size(); ++k)
+            if (!used[k])
+                extra.push_back(Json::array({to_exact_string(claimed_switches[k].x), to_exact_string(claimed_switches[k].y)}));
+        o["switch_points_missed"] = missed;
+        o["switch_points_extra"] = extra;
+        o["switch_points_misplaced"] = misplaced;
+        // Labels: the exact contact at each claimed piece's midpoint.
+        Json wrong_labels = Json::array();
+        for (const Seg& s : segs) {
+            if (!s.label) continue;
+            const Q mid = (s.x0 + s.x1) / 2;
+            // At an exact switch point the contact is the switch point's.
+            std::string e = exact_positive ? piece_contact(m(), c().env.pieces[c().env.locate(mid)]).label : std::string("none");
+            for (const ExactSwitch& sw : ex)
+                if (sw.rho1 == mid) e = sw.label;
+            if (*s.label != e) {
+                Json w;
+                put_exact(w, "rho1", mid);
+                w["claimed"] = *s.label;
+                w["exact"] = e;
+                wrong_labels.push_back(w);
+            }
+        }
+        o["wrong_contacts"] = wrong_labels;
+        text = "curve of " + std::to_string(segs.size()) + " segments: max vertical error " + num(max_v) + ", max horizontal error " +
+               num(max_h) + ", switch points missed " + std::to_string(missed.size()) + ", extra " + std::to_string(extra.size()) +
+               ", misplaced " + std::to_string(misplaced.size()) + ", wrong contacts " + std::to_string(wrong_labels.size()) +
+               (exact_positive ? "" : ", and the exact curve reaches rho2 <= 0 in the claimed range");
+        return exact_positive && within && missed.empty() && extra.empty() && misplaced.empty() && wrong_labels.empty();
+    }
+
+    bool plane(const JNode& j, Json& o, std::string& text) {
+        only(j, {"kind", "rho1", "rho2", "normal", "offset"});
+        const auto [r1, r2] = pair_at(j);
+        const Vec3q n = point(need(j, "normal"), "normal");
+        if (sgn(n[0]) == 0 && sgn(n[1]) == 0 && sgn(n[2]) == 0) fail("normal", "the zero vector is not a normal");
+        const JNode* off = j.find("offset");
+        const auto [c1, c2] = plane_extents(m(), n, r1, r2);
+        put_exact(o, "rho1", r1);
+        put_exact(o, "rho2", r2);
+        put_exact(o, "max_over_P1", c1);  // P1(ρ1) ⊆ {n·x ≤ c1}
+        put_exact(o, "min_over_P2", c2);  // P2(ρ2) ⊆ {n·x ≥ c2}
+        put_exact(o, "gap", c2 - c1);
+        bool right = c1 < c2;
+        text = "plane at (" + num(r1) + ", " + num(r2) + "): P1 reaches " + num(c1) + ", P2 starts at " + num(c2);
+        if (off) {
+            const Q d = number(*off, "offset");
+            put_exact(o, "offset_minus_P1", d - c1);
+            put_exact(o, "P2_minus_offset", c2 - d);
+            right = right && c1 < d && d < c2;
+            text += ", offset " + num(d);
+        }
+        return right;
+    }
+
+    bool witness(const JNode& j, Json& o, std::string& text) {
+        only(j, {"kind", "rho1", "rho2", "point"});
+        const auto [r1, r2] = pair_at(j);
+        const Vec3q x = point(need(j, "point"), "point");
+        const bool in1 = contains(m(), 0, r1, x), in2 = contains(m(), 1, r2, x);
+        o["in_P1"] = in1;
+        o["in_P2"] = in2;
+        o["exact_verdict"] = verdict_name(models_.verdict(r1, r2));
+        text = "witness point at (" + num(r1) + ", " + num(r2) + "): in P1 " + (in1 ? "yes" : "NO") + ", in P2 " + (in2 ? "yes" : "NO");
+        return in1 && in2;
+    }
+
+    bool distance(const JNode& j, Json& o, std::string& text) {
+        only(j, {"kind", "rho1", "rho2", "value", "closest"});
+        const auto [r1, r2] = pair_at(j);
+        const Q d = field(j, "value");
+        const ExactDistance e = exact_distance(m(), r1, r2);
+        put_exact(o, "rho1", r1);
+        put_exact(o, "rho2", r2);
+        errors_sq(o, d, e.squared);
+        put_point(o, "exact_closest_P1", e.p1);
+        put_point(o, "exact_closest_P2", e.p2);
+        bool right = close_sq(d, e.squared);
+        text = "distance at (" + num(r1) + ", " + num(r2) + "): claimed " + num(d) + ", exact squared " + num(e.squared);
+        if (const JNode* cl = j.find("closest")) {
+            if (cl->kind != JNode::Array || cl->items.size() != 2) fail("closest", "expected [point on P1, point on P2]");
+            const Vec3q p = point(cl->items[0], "closest"), q = point(cl->items[1], "closest");
+            const Vec3q pq = sub(q, p);
+            const Q sq = dot(pq, pq);
+            const bool in1 = contains(m(), 0, r1, p), in2 = contains(m(), 1, r2, q);
+            o["closest_in_P1"] = in1;
+            o["closest_in_P2"] = in2;
+            put_exact(o, "closest_squared_distance", sq);
+            const bool ok = in1 && in2 && within_above(sq, e.squared);
+            o["closest_right"] = ok;
+            right = right && ok;
+        }
+        return right;
+    }
+
+    bool depth(const JNode& j, Json& o, std::string& text) {
+        only(j, {"kind", "rho1", "rho2", "value", "direction"});
+        const auto [r1, r2] = pair_at(j);
+        const Q d = field(j, "value");
+        if (!normals_) normals_ = all_facet_normals(m());
+        const ExactDepth e = exact_penetration_depth(m(), *normals_, r1, r2);
+        put_exact(o, "rho1", r1);
+        put_exact(o, "rho2", r2);
+        if (sgn(e.squared) < 0) {
+            o["exact_verdict"] = "separated";
+            put_exact(o, "claimed", d);
+            text = "penetration depth at (" + num(r1) + ", " + num(r2) + "): claimed " + num(d) + ", but the pair is separated";
+            return false;
+        }
+        errors_sq(o, d, e.squared);
+        o["exact_direction"] = Json::array({e.direction[0].get_str(), e.direction[1].get_str(), e.direction[2].get_str()});
+        bool right = close_sq(d, e.squared);
+        text = "penetration depth at (" + num(r1) + ", " + num(r2) + "): claimed " + num(d) + ", exact squared " + num(e.squared);
+        if (const JNode* dir = j.find("direction")) {
+            const Vec3q n = point(*dir, "direction");
+            if (sgn(n[0]) == 0 && sgn(n[1]) == 0 && sgn(n[2]) == 0) fail("direction", "the zero vector is not a direction");
+            // Moving P2 by the depth along n separates them exactly iff n attains the minimum.
+            const Q along = directional_depth_squared(m(), n, r1, r2);
+            put_exact(o, "depth_squared_along_direction", along);
+            const bool ok = within_above(along, e.squared);
+            o["direction_right"] = ok;
+            right = right && ok;
+        }
+        return right;
+    }
+};
+
+}  // namespace
+
+namespace {
+Q read_number(const std::string& t, bool binary_doubles, const std::string& where) {
+    try {
+        return parse_number(t, binary_doubles);
+    } catch (const InputError& e) {
+        throw InputError(where + ": " + e.what());
+    }
+}
+
+std::string num_text(const Q& q) {
+    char b[64];
+    std::snprintf(b, sizeof b, "%.17g", to_double_rn(q));
+    return to_exact_string(q) + " (~" + b + ")";
+}
+}  // namespace
+
+std::string certify_claim_lines(const ClaimModels& models, const std::string& claims, const std::string& name,
+                                bool binary_doubles, bool json, long* wrong, long* count) {
+    std::istringstream in(claims);
+    std::string line, text;
+    Json arr = Json::array();
+    long n = 0, bad = 0;
+    for (long no = 1; std::getline(in, line); ++no) {
+        auto hash = line.find('#');
+        if (hash != std::string::npos) line.resize(hash);
+        std::istringstream ls(line);
+        std::vector<std::string> w;
+        for (std::string t; ls >> t;) w.push_back(t);
+        if (w.empty()) continue;
+        const std::string where = name + ": line " + std::to_string(no);
+        Json o;
+        o["line"] = no;
+        bool right = false;
+        std::string detail;
+        if (w[0] == "curve" && w.size() == 3) {
+            Q r1 = read_number(w[1], binary_doubles, where), r2 = read_number(w[2], binary_doubles, where);
+            if (sgn(r1) <= 0 || sgn(r2) <= 0) throw InputError(where + ": scalings must be > 0");
+            Q f = models.curve_value(r1);
+            right = f == r2;
+            o["claim"] = "curve";
+            put_exact(o, "rho1", r1);
+            put_exact(o, "rho2", r2);
+            put_exact(o, "curve_rho2", f);
+            put_exact(o, "rho2_minus_curve", r2 - f);
+            detail = "curve point (" + w[1] + ", " + w[2] + "): exact curve at rho1 is " + num_text(f) + ", off by " + num_text(r2 - f);
+        } else if (w[0] == "growth" && w.size() == 2) {
+            Q g = read_number(w[1], binary_doubles, where);
+            if (sgn(g) < 0) throw InputError(where + ": a growth distance is >= 0 (0 when the seeds coincide)");
+            const Q exact_g = models.growth();
+            right = g == exact_g;
+            o["claim"] = "growth";
+            put_exact(o, "claimed", g);
+            put_exact(o, "exact", exact_g);
+            detail = "growth distance " + w[1] + ": exact " + num_text(exact_g) + ", off by " + num_text(g - exact_g);
+        } else if (w.size() == 3) {
+            Q r1 = read_number(w[0], binary_doubles, where), r2 = read_number(w[1], binary_doubles, where);
+            if (sgn(r1) <= 0 || sgn(r2) <= 0) throw InputError(where + ": scalings must be > 0");
+            const std::string& v = w[2];
+            if (v != "separated" && v != "touching" && v != "overlapping" && v != "intersecting")
+                throw InputError(where + ": unknown verdict " + quoted(v) + " (separated, touching, overlapping, intersecting)");
+            Verdict e = models.verdict(r1, r2);
+            std::string en = verdict_name(e);
+            right = v == "intersecting" ? e != Verdict::Separated : v == en;
+            Q f = models.curve_value(r1);
+            o["claim"] = v;
+            put_exact(o, "rho1", r1);
+            put_exact(o, "rho2", r2);
+            o["exact"] = en;
+            put_exact(o, "rho2_minus_curve", r2 - f);
+            detail = "(" + w[0] + ", " + w[1] + ") claimed " + v + ": exact " + en + ", rho2 - curve = " + num_text(r2 - f);
+        } else {
+            throw InputError(where + ": expected 'RHO1 RHO2 VERDICT', 'curve RHO1 RHO2' or 'growth RHO'");
+        }
+        ++n;
+        bad += !right;
+        o["right"] = right;
+        arr.push_back(o);
+        text += std::string(right ? "right  " : "WRONG  ") + detail + "\n";
+    }
+    if (n == 0) throw InputError(name + ": no claims (expected 'RHO1 RHO2 VERDICT', 'curve RHO1 RHO2' or 'growth RHO' lines)");
+    if (wrong) *wrong = bad;
+    if (count) *count = n;
+    if (json) {
+        Json j;
+        j["claims"] = arr;
+        j["right"] = n - bad;
+        j["wrong"] = bad;
+        return dump(j);
+    }
+    return text + "claims: " + std::to_string(n) + ", right: " + std::to_string(n - bad) + ", wrong: " + std::to_string(bad) + "\n";
+}
+
+ClaimModels ClaimModels::of(const Model& m, const Curve& c) {
+    return {[&m]() -> const Model& { return m; }, [&c]() -> const Curve& { return c; },
+            [&m, &c](const Q& r1, const Q& r2) { return query(m, c, r1, r2, false).verdict; },
+            [&m, &c](const Q& r1) { return c.env.value(m.lines, r1); }, [&c] { return c.growth.value; }};
+}
+
+std::string certify_fp(const ClaimModels& models, const std::string& claims, const std::string& name, const ClaimOptions& opt,
+                       long* wrong, long* count) {
+    const bool json = opt.json;
+    if (sgn(opt.tolerance) < 0) throw InputError("--tolerance must be >= 0");
+    const size_t first = claims.find_first_not_of(" \t\r\n");
+    if (first == std::string::npos || claims[first] != '{') {
+        if (sgn(opt.tolerance) != 0) throw InputError(name + ": --tolerance applies to JSON claims (scalecert-claims-1)");
+        return certify_claim_lines(models, claims, name, opt.binary_doubles, json, wrong, count);
+    }
+    JNode root;
+    try {
+        root = parse_strict_json(claims);
+    } catch (const JsonError& e) {
+        throw InputError(name + ": malformed JSON near byte " + std::to_string(e.pos) + ": " + e.what);
+    }
+    const JNode* format = root.find("format");
+    const JNode* list = root.find("claims");
+    if (!format || format->kind != JNode::String || format->text != "scalecert-claims-1")
+        throw InputError(name + ": format: expected \"scalecert-claims-1\"");
+    for (const std::string& k : root.keys)
+        if (k != "format" && k != "claims") throw InputError(name + ": " + k + ": unknown field");
+    if (!list || list->kind != JNode::Array || list->items.empty()) throw InputError(name + ": claims: expected a non-empty list");
+    Certifier cert(models, name, opt);
+    Json arr = Json::array();
+    std::string text;
+    long bad = 0;
+    for (size_t i = 0; i < list->items.size(); ++i) {
+        Json o;
+        std::string line;
+        const bool right = cert.run(list->items[i], i, o, line);
+        o["right"] = right;
+        bad += !right;
+        arr.push_back(o);
+        text += std::string(right ? "right  " : "WRONG  ") + line + "\n";
+    }
+    if (wrong) *wrong = bad;
+    const long n = static_cast<long>(list->items.size());
+    if (count) *count = n;
+    if (json) {
+        Json j;
+        j["claims"] = arr;
+        put_exact(j, "tolerance", opt.tolerance);
+        j["right"] = n - bad;
+        j["wrong"] = bad;
+        return dump(j);
+    }
+    return text + "claims: " + std::to_string(n) + ", right: " + std::to_string(n - bad) + ", wrong: " + std::to_string(bad) + "\n";
+}
+
+}  // namespace scalecert::internal

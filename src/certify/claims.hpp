@@ -1,0 +1,49 @@
+// Certifying a floating-point program's claims: each marked right or wrong, exactly
+// (certificates/CLAIMS.md holds the rules).
+#pragma once
+#include "certify/query.hpp"
+
+#include <functional>
+#include <string>
+
+namespace scalecert::internal {
+
+// Marks a floating-point program's claims right or wrong, exactly, and reports the exact values
+// and errors (text, or JSON with `json`); the number of wrong claims in *wrong. Two formats:
+// - JSON (text starting with '{'): {"format": "scalecert-claims-1", "claims": [...]} with the kinds
+//   verdict, curve, switch_point, growth_distance, separating_plane, witness_point, distance and
+//   penetration_depth (certificates/CLAIMS.md);
+// - lines ('#' comments): 'RHO1 RHO2 VERDICT' (separated | touching | overlapping | intersecting,
+//   = not separated), 'curve RHO1 RHO2' (a claimed point of the touching curve) or 'growth RHO'.
+// Numbers are exact as written (with binary_doubles, JSON numbers and line numbers are the doubles
+// strtod gives). `tolerance` (a relative error, >= 0) accepts numeric values within it; verdicts,
+// labels, planes and witness points must be exactly right.
+// Options: the public ClaimOptions (binary_doubles, tolerance >= 0, json).
+using scalecert::ClaimOptions;
+// What claims are checked against: the hull model and its curve over all ρ1 > 0 (built on first
+// use), and the exact verdict and curve value at a pair (Session::claim_models takes them from the
+// walk where it proved the curve: no hull for verdicts on a large scene).
+struct ClaimModels {
+    std::function<const Model&()> model;
+    std::function<const Curve&()> curve;
+    std::function<Verdict(const Q&, const Q&)> verdict;
+    std::function<Q(const Q&)> curve_value;
+    std::function<Q()> growth;  // ρ*
+    static ClaimModels of(const Model& m, const Curve& c);
+};
+// (*count, when given: the number of claims.)
+std::string certify_fp(const ClaimModels& models, const std::string& claims, const std::string& name, const ClaimOptions& opt,
+                       long* wrong, long* count = nullptr);
+inline std::string certify_fp(const Model& m, const Curve& c, const std::string& claims, const std::string& name,
+                              const ClaimOptions& opt, long* wrong) {
+    return certify_fp(ClaimModels::of(m, c), claims, name, opt, wrong);
+}
+inline std::string certify_fp(const Model& m, const Curve& c, const std::string& claims, const std::string& name,
+                              bool binary_doubles, bool json, long* wrong) {
+    return certify_fp(m, c, claims, name, ClaimOptions{binary_doubles, Q(0), json}, wrong);
+}
+// The line format alone.
+std::string certify_claim_lines(const ClaimModels& models, const std::string& claims, const std::string& name,
+                                bool binary_doubles, bool json, long* wrong, long* count = nullptr);
+
+}  // namespace scalecert::internal

@@ -1,0 +1,43 @@
+#include "certify/golden.hpp"
+
+#include <cstdio>
+
+namespace scalecert::internal {
+
+GoldenAnswers golden_answers(const Scene& s, const Model& m, const Curve& c) {
+    Json qs = Json::array();
+    std::string csv = "rho1,rho2,where,verdict_at_doubles\n";
+    std::vector<Q> xs;
+    for (int k = 1; k < 8; ++k) xs.push_back(s.lo[0] + (s.hi[0] - s.lo[0]) * Q(k, 8));
+    for (const SwitchPoint& sp : c.switches) xs.push_back(sp.rho1);
+    for (Q x : xs) {
+        x.canonicalize();
+        Q f = c.env.value(m.lines, x);
+        if (sgn(f) <= 0) continue;
+        std::vector<std::pair<std::string, Q>> pts{{"on", f}};
+        for (int k : {4, 12, 20, 30, 40, 52}) {
+            Q d = f / Q(Z(1) << k);
+            pts.push_back({"above 2^-" + std::to_string(k), f + d});
+            pts.push_back({"below 2^-" + std::to_string(k), f - d});
+        }
+        for (const auto& [where, y] : pts) {
+            Verdict v = query(m, c, x, y, false).verdict;
+            Json o;
+            put_exact(o, "rho1", x);
+            put_exact(o, "rho2", y);
+            o["where"] = where;
+            o["verdict"] = verdict_name(v);
+            // what a floating-point suite will feed: the nearest doubles, and their exact verdict
+            double xd = to_double_rn(x), yd = to_double_rn(y);
+            Verdict vd = query(m, c, exact_from_double(xd), exact_from_double(yd), false).verdict;
+            o["verdict_at_doubles"] = verdict_name(vd);
+            qs.push_back(o);
+            char b[128];
+            std::snprintf(b, sizeof b, "%.17g,%.17g,", xd, yd);
+            csv += b + where + "," + verdict_name(vd) + "\n";
+        }
+    }
+    return {curve_json(m, c), std::move(qs), std::move(csv)};
+}
+
+}  // namespace scalecert::internal

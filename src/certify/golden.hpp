@@ -1,0 +1,19 @@
+// Golden data for a scene: its exact answers where floating-point code is most likely wrong.
+#pragma once
+#include "certify/certificate.hpp"
+
+#include <string>
+
+namespace scalecert::internal {
+
+// The curve document (curve_json), and its "queries": at 7 values of ρ1 spread over I1 and at every
+// switch point, the pair on the curve and the pairs above and below it at relative distances 2^-k
+// (k = 4, 12, 20, 30, 40, 52), each with its exact verdict and the exact verdict of its nearest
+// doubles ("verdict_at_doubles"). The CSV holds those doubles and verdicts, one pair a line.
+struct GoldenAnswers {
+    Json curve, queries;
+    std::string csv;
+};
+GoldenAnswers golden_answers(const Scene& s, const Model& m, const Curve& c);
+
+}  // namespace scalecert::internal

@@ -1,0 +1,40 @@
+// Stage 6: the certified partition of I1 × I2.
+#pragma once
+#include "certify/query.hpp"
+
+namespace scalecert::internal {
+
+using Pt2 = std::array<Q, 2>;
+
+struct SeparatedRegion {
+    size_t piece;             // index into Curve::pieces; its line's normal separates the region
+    std::vector<Pt2> verts;   // closed polygon, counter-clockwise; the points on the curve excluded
+};
+
+struct Partition {
+    std::vector<Pt2> overlap;              // convex polygon (may be empty, a point or a segment)
+    std::vector<Witness> overlap_witnesses;  // one per vertex of `overlap`
+    std::vector<SeparatedRegion> separated;  // nonempty interiors only
+    std::vector<Witness> switch_witnesses;   // one per switch point with ρ2 > 0 (touching)
+    // Per curve piece with a contact: a point of the touching set in the relative interiors of
+    // both contact features (every feature vertex weighted > 0), at contact_rho1.
+    std::vector<std::optional<Witness>> piece_witnesses;
+    // Per curve piece whose ρ2 falls from > 0 to ≤ 0 along it: a witness at the crossing (x0, 0),
+    // the seed s2 on P1(x0), so that the piece is proved touching all the way down to ρ2 = 0.
+    std::vector<std::optional<Witness>> zero_witnesses;
+    std::optional<Witness> growth_witness;   // at (ρ*, ρ*) when ρ* > 0
+    // At (lo1, f(lo1)) and (hi1, f(hi1)) when f > 0; at lo1 when f(lo1) <= 0, at (lo1, 0) instead.
+    std::optional<Witness> end_witness[2];
+};
+
+// Clips a convex polygon (counter-clockwise) to ρ2 ≥ a·ρ1 + b (above = true) or ≤. Drops repeated
+// and collinear vertices; the result starts at its lowest, then leftmost vertex.
+std::vector<Pt2> clip(const std::vector<Pt2>& poly, const Q& a, const Q& b, bool above);
+std::vector<Pt2> normalize_polygon(std::vector<Pt2> poly);
+
+// I1 × I2 ∩ {ρ2 >= curve} (`rect` is I1 × I2, normalized), in time linear in the curve's pieces.
+std::vector<Pt2> overlap_region(const Model& m, const Curve& c, const std::vector<Pt2>& rect);
+
+Partition build_partition(const Model& m, const Curve& c);
+
+}  // namespace scalecert::internal

@@ -1,0 +1,78 @@
+// Stage 4: the touching curve ρ2 = f(ρ1) = max over contact lines, over all ρ1 ≥ 0, and its
+// restriction to I1 with switch points and the growth distance. Where the envelope reaches
+// ρ2 = 0 (P2(0) is the seed, on P1's boundary) the curve goes on as one line: below ρ2 = 0
+// nothing touches, and the envelope there would describe no contact.
+#pragma once
+#include "curve/contact_lines.hpp"
+
+#include <optional>
+
+namespace scalecert::internal {
+
+struct EnvPiece {
+    size_t line;                 // representative line (smallest normal among identical lines)
+    std::vector<size_t> same;    // every line identical to it (same slope and intercept)
+    Q from;                      // left end (0 for the first piece)
+    std::optional<Q> to;         // right end; none for the last piece (extends to +∞)
+};
+
+struct Envelope {
+    std::vector<EnvPiece> pieces;  // in increasing ρ1, covering [0, ∞); none starts below ρ2 = 0
+    // Index of the piece whose closed range holds x; at a breakpoint, the piece to its right.
+    size_t locate(const Q& x) const;
+    Q value(const std::vector<ContactLine>& lines, const Q& x) const;
+};
+
+Envelope upper_envelope(const std::vector<ContactLine>& lines);
+
+struct Contact {
+    std::vector<int> feat1, feat2;
+    std::string label;  // e.g. "VE"
+};
+
+struct CurvePiece {
+    Q from, to;
+    size_t env;       // index into Envelope::pieces
+    Contact contact;  // piece_contact of its envelope piece; empty label if ρ2 ≤ 0 all along it
+};
+
+struct SwitchPoint {
+    Q rho1, rho2;
+    size_t left, right;  // indices into Curve::pieces
+    Contact contact;
+    std::string equation;  // which closed form of the paper's Appendix gives ρ1
+};
+
+struct GrowthDistance {
+    Q value;
+    size_t env;  // envelope piece holding it
+    bool in_rectangle;
+};
+
+struct Curve {
+    Envelope env;
+    std::vector<CurvePiece> pieces;  // over I1
+    std::vector<SwitchPoint> switches;
+    GrowthDistance growth;
+};
+
+// The contact at a switch point (ρ1, ρ2) between neighbouring pieces on lines L and R: the
+// smallest face of each polyhedron holding the touching set (a vertex or an edge: both planes
+// touch, so the touching set lies on their common line).
+Contact contact_at(const Model& m, const ContactLine& L, const ContactLine& R, const Q& rho1, const Q& rho2);
+
+// The contact along an envelope piece: the smallest faces of P1(ρ1) and P2(ρ2) that hold their
+// touching set, the same at every inner point of the piece with ρ2 > 0. Every normal whose line is
+// the piece's (EnvPiece::same, all of them) touches there, so the touching set T lies in each one's
+// maximisers and in their intersections G1, G2 (faces). And T = G1 ∩ G2 meets both relative
+// interiors: the face of the Minkowski sum holding the origin in its relative interior is the
+// difference of the faces that the normals in its normal cone pick out, i.e. of G2 and G1. So G_i
+// is the smallest face holding T. The label follows from the vertex counts of G1 and G2.
+Contact piece_contact(const Model& m, const EnvPiece& e);
+// A ρ1 of the curve piece with ρ2 > 0 (the middle of that part): where its contact is witnessed.
+// None when ρ2 ≤ 0 all along it (nothing touches there).
+std::optional<Q> contact_rho1(const Model& m, const Curve& c, const CurvePiece& p);
+
+Curve build_curve(const Model& m);
+
+}  // namespace scalecert::internal

@@ -1,0 +1,163 @@
+#include "io/files.hpp"
+
+#include <algorithm>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+namespace scalecert::internal {
+
+namespace {
+thread_local const InputObserver::Fn* t_observer = nullptr;
+
+// What a file is, when it is not a regular file: for the one-line refusal.
+std::string kind_of(mode_t m) {
+    if (S_ISDIR(m)) return "is a directory";
+    if (S_ISFIFO(m)) return "is a named pipe (FIFO)";
+    if (S_ISSOCK(m)) return "is a socket";
+    if (S_ISCHR(m)) return "is a character device";
+    if (S_ISBLK(m)) return "is a block device";
+    if (S_ISLNK(m)) return "is a symbolic link";
+    return "is not a regular file";
+}
+
+// Standard input whole, in growing blocks, up to the limit.
+std::string read_stdin(const std::string& what, size_t max_bytes) {
+    std::string text;
+    size_t used = 0, cap = 1 << 20;
+    for (;; cap *= 2) {
+        cap = std::min(cap, max_bytes + 1);
+        text.resize(cap);
+        used += std::fread(&text[used], 1, cap - used, stdin);
+        if (used < cap || used > max_bytes) break;
+    }
+    if (std::ferror(stdin)) throw InputError("standard input: cannot read " + what);
+    if (used > max_bytes) throw InputError("standard input: " + what + " larger than " + std::to_string(max_bytes >> 20) + " MiB (the limit)");
+    text.resize(used);
+    return text;
+}
+}  // namespace
+
+InputObserver::InputObserver(Fn f) : f_(std::move(f)), prev_(t_observer) { t_observer = &f_; }
+InputObserver::~InputObserver() { t_observer = prev_; }
+
+int open_regular_file(const std::string& path, const std::string& what, bool no_follow, size_t* size) {
+    // A name that is there and not a regular file is refused before it is opened at all (opening
+    // a device can have effects); the descriptor's own fstat below settles any race.
+    struct stat st {};
+    if ((no_follow ? ::lstat(path.c_str(), &st) : ::stat(path.c_str(), &st)) == 0 && !S_ISREG(st.st_mode))
+        throw InputError(path + ": " + kind_of(st.st_mode) + ", not a " + what + " (only regular files are read)");
+    const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC | (no_follow ? O_NOFOLLOW : 0));
+    if (fd < 0) {
+        const int err = errno;
+        if (no_follow && err == ELOOP) throw InputError(path + ": is a symbolic link, not a " + what + " (only regular files are read)");
+        throw InputError(path + ": cannot open " + what + " (" + std::strerror(err) + ")");
+    }
+    if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+        const std::string kind = kind_of(st.st_mode);
+        ::close(fd);
+        throw InputError(path + ": " + kind + ", not a " + what + " (only regular files are read)");
+    }
+    ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) & ~O_NONBLOCK);  // a regular file: reads as usual
+    if (size) *size = static_cast<size_t>(st.st_size);
+    return fd;
+}
+
+std::string read_regular_file(const std::string& path, const std::string& what, size_t max_bytes, bool no_follow) {
+    size_t size = 0;
+    const int fd = open_regular_file(path, what, no_follow, &size);
+    auto too_large = [&] {
+        return InputError(path + ": " + what + " larger than " + std::to_string(max_bytes >> 20) + " MiB (the limit)");
+    };
+    if (size > max_bytes) {
+        ::close(fd);
+        throw too_large();
+    }
+    // One read of its size (plus one byte, to see a file that grew), then on to end of file.
+    std::string text;
+    size_t used = 0;
+    text.resize(std::min(size, max_bytes) + 1);
+    for (;;) {
+        if (used == text.size()) {
+            if (used > max_bytes) break;
+            text.resize(std::min(std::max(text.size() * 2, size_t(1) << 16), max_bytes + 1));
+        }
+        const ssize_t got = ::read(fd, &text[used], text.size() - used);
+        if (got < 0 && errno == EINTR) continue;
+        if (got < 0) {
+            const int err = errno;
+            ::close(fd);
+            throw InputError(path + ": cannot read " + what + " (" + std::strerror(err) + ")");
+        }
+        if (got == 0) break;
+        used += static_cast<size_t>(got);
+    }
+    ::close(fd);
+    if (used > max_bytes) throw too_large();
+    text.resize(used);
+    if (t_observer) (*t_observer)(path, text);
+    return text;
+}
+
+std::string read_input(const std::string& path, const std::string& what, size_t max_bytes) {
+    if (path != "-") return read_regular_file(path, what, max_bytes, false);
+    std::string text = read_stdin(what, max_bytes);
+    if (t_observer) (*t_observer)(path, text);
+    return text;
+}
+
+namespace {
+// A temporary file beside `path`, created exclusively (mkstemp: O_CREAT | O_EXCL, an unpredictable
+// name) so that nothing planted there is followed, holding `text` on disk (fsync). Refuses a
+// target that exists and is not a regular file (a device, a directory, a symbolic link).
+std::string write_temporary(const std::string& path, const std::string& text) {
+    struct stat st {};
+    if (::lstat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode))
+        throw InputError(path + ": exists and is not a regular file (refused as an output)");
+    const auto slash = path.rfind('/');
+    const std::string dir = slash == std::string::npos ? "." : path.substr(0, slash == 0 ? 1 : slash);
+    const std::string base = slash == std::string::npos ? path : path.substr(slash + 1);
+    if (base.empty()) throw InputError(path + ": not a file name");
+    std::string tmp = dir + "/." + base + ".tmp.XXXXXX";
+    int fd = ::mkstemp(&tmp[0]);
+    if (fd < 0) throw InputError(path + ": cannot create a file in " + dir + " (" + std::strerror(errno) + ")");
+    const mode_t mask = ::umask(0);
+    ::umask(mask);
+    bool ok = ::fchmod(fd, 0666 & ~mask) == 0;
+    for (size_t done = 0; ok && done < text.size();) {
+        const ssize_t w = ::write(fd, text.data() + done, text.size() - done);
+        if (w < 0 && errno == EINTR) continue;
+        ok = w > 0;
+        if (ok) done += static_cast<size_t>(w);
+    }
+    ok = ok && ::fsync(fd) == 0;
+    ok = ::close(fd) == 0 && ok;
+    if (!ok) {
+        ::unlink(tmp.c_str());
+        throw InputError(path + ": write failed");
+    }
+    return tmp;
+}
+}  // namespace
+
+void write_files_atomically(const std::vector<std::pair<std::string, std::string>>& files) {
+    std::vector<std::string> tmps;
+    try {
+        for (const auto& [path, text] : files) tmps.push_back(write_temporary(path, text));
+    } catch (...) {
+        for (const std::string& t : tmps) ::unlink(t.c_str());
+        throw;
+    }
+    for (size_t i = 0; i < files.size(); ++i)
+        if (std::rename(tmps[i].c_str(), files[i].first.c_str()) != 0) {
+            for (size_t k = i; k < tmps.size(); ++k) ::unlink(tmps[k].c_str());
+            throw InputError(files[i].first + ": cannot rename the temporary file into place");
+        }
+}
+
+void write_file_atomically(const std::string& path, const std::string& text) { write_files_atomically({{path, text}}); }
+
+}  // namespace scalecert::internal

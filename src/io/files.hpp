@@ -1,0 +1,48 @@
+// Every file scalecert reads or writes goes through here: regular files only, opened without
+// blocking, read up to a limit; outputs written beside their target and renamed into place.
+#pragma once
+#include "numeric/exact.hpp"
+
+#include <functional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace scalecert::internal {
+
+// Every file scalecert reads is opened here. open_regular_file opens `path` with O_RDONLY |
+// O_NONBLOCK | O_CLOEXEC (and O_NOFOLLOW when no_follow): the open never blocks (a FIFO with no
+// writer, a terminal) and the descriptor is not inherited. Anything but a regular file (a FIFO,
+// socket, device or directory; with no_follow, a symbolic link) is refused, before it is opened
+// when its name already says so. Throws InputError "PATH: problem" (one line; `what` names the
+// file's role, "scene file"). Returns the descriptor, blocking again, and its size in *size.
+int open_regular_file(const std::string& path, const std::string& what, bool no_follow = false, size_t* size = nullptr);
+// The whole of a regular file (open_regular_file), at most max_bytes, else InputError naming the limit.
+std::string read_regular_file(const std::string& path, const std::string& what, size_t max_bytes, bool no_follow = false);
+// read_regular_file, or standard input for "-" (where a command documents it).
+std::string read_input(const std::string& path, const std::string& what, size_t max_bytes);
+
+// While an InputObserver lives, every file read_input and read_regular_file read on this thread
+// is passed to it, with the path as given: campaigns hash the bytes an audit actually read.
+class InputObserver {
+public:
+    using Fn = std::function<void(const std::string& path, const std::string& bytes)>;
+    explicit InputObserver(Fn f);
+    ~InputObserver();
+    InputObserver(const InputObserver&) = delete;
+    InputObserver& operator=(const InputObserver&) = delete;
+
+private:
+    Fn f_;
+    const Fn* prev_;
+};
+
+// Writes text to path through a temporary file created exclusively beside it, synced to disk,
+// then renamed into place, so a failed run never leaves a half-written file. Refuses a target
+// that exists and is not a regular file. Throws InputError naming the path.
+void write_file_atomically(const std::string& path, const std::string& text);
+// The same for several files: every text is written and synced before any rename, so a failure
+// while writing leaves none of them.
+void write_files_atomically(const std::vector<std::pair<std::string, std::string>>& files);
+
+}  // namespace scalecert::internal

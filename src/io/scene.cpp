@@ -1,0 +1,166 @@
+#include "io/scene.hpp"
+#include "io/files.hpp"
+
+#include "io/mesh.hpp"
+#include "io/strict_json.hpp"
+
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <sstream>
+#include <unordered_set>
+
+namespace scalecert::internal {
+namespace {
+
+struct Reader {
+    std::string file;
+    ReadOptions opt;
+    [[noreturn]] void fail(const std::string& where, const std::string& what) const {
+        throw InputError(file + ": " + (where.empty() ? "" : where + ": ") + what);
+    }
+    // `where` names the place in the file; it is a string, or a function building one, called
+    // only on an error (a scene has tens of thousands of numbers).
+    static std::string text_of(const std::string& w) { return w; }
+    template <class F>
+    static std::string text_of(const F& w) { return w(); }
+    template <class W>
+    Q number_text(const std::string& text, bool is_string, const W& where) const {
+        try {
+            return parse_number(text, opt.binary_doubles && !is_string);
+        } catch (const InputError& e) {
+            fail(text_of(where), e.what());
+        }
+    }
+    template <class W>
+    Q number(const JNode& n, const W& where) const {
+        if (n.kind == JNode::Number) return number_text(n.text, false, where);
+        if (n.kind == JNode::String) return number_text(n.text, true, where);
+        fail(text_of(where), "expected a number or a string such as \"3/7\"");
+    }
+    template <class W>
+    Vec3q point(const JNode& n, const W& where) const {
+        if (n.kind != JNode::Array || n.items.size() != 3) fail(text_of(where), "expected an array of 3 coordinates");
+        auto at = [&](int k) { return [&where, k] { return text_of(where) + "[" + std::to_string(k) + "]"; }; };
+        return {number(n.items[0], at(0)), number(n.items[1], at(1)), number(n.items[2], at(2))};
+    }
+};
+
+// OFF: "OFF" header (optionally with counts on the same line), "nv nf ne", nv vertex lines.
+// Faces are not needed: the polyhedron is the convex hull of the vertices.
+}  // namespace
+
+
+Scene parse_scene_text(const std::string& text, const std::string& name, const std::string& base_dir,
+                       const ReadOptions& opt) {
+    Reader r{name, opt};
+    JNode tree;
+    try {
+        tree = parse_strict_json(text);
+    } catch (const JsonError& e) {
+        r.fail("", "malformed JSON near byte " + std::to_string(e.pos) + ": " + e.what);
+    }
+    const JNode& root = tree;
+    if (root.kind != JNode::Object) r.fail("", "the scene must be a JSON object");
+    // A misspelt key would otherwise be ignored silently.
+    auto only = [&](const JNode& o, const std::string& where, std::initializer_list<const char*> known) {
+        for (const std::string& k : o.keys) {
+            bool ok = false;
+            for (const char* n : known) ok = ok || k == n;
+            if (!ok) r.fail(where, "unknown field " + quoted(k) + " (expected " + [&] {
+                std::string l;
+                for (const char* n : known) l += (l.empty() ? "" : ", ") + std::string(n);
+                return l;
+            }() + ")");
+        }
+    };
+    only(root, "", {"P1", "P2", "I1", "I2"});
+    Scene sc;
+    const char* pname[2] = {"P1", "P2"};
+    for (int i = 0; i < 2; ++i) {
+        const JNode* p = root.find(pname[i]);
+        if (!p) r.fail("", std::string("missing field \"") + pname[i] + "\"");
+        if (p->kind != JNode::Object) r.fail(pname[i], "expected an object with \"vertices\" or \"off\"");
+        only(*p, pname[i], {"vertices", "off", "mesh", "seed"});
+        PolyInput& in = sc.P[i];
+        const JNode* verts = p->find("vertices");
+        const JNode* off = p->find("off");
+        const JNode* mesh = p->find("mesh");
+        if ((verts != nullptr) + (off != nullptr) + (mesh != nullptr) > 1) r.fail(pname[i], "give one of \"vertices\", \"mesh\" and \"off\"");
+        if (mesh) off = mesh;
+        if (verts) {
+            if (verts->kind != JNode::Array) r.fail(std::string(pname[i]) + ".vertices", "expected an array of points");
+            if (verts->items.size() > kMaxPoints) r.fail(std::string(pname[i]) + ".vertices", "more than " + std::to_string(kMaxPoints) + " points (the limit)");
+            in.points.reserve(verts->items.size());
+            for (size_t j = 0; j < verts->items.size(); ++j)
+                in.points.push_back(r.point(verts->items[j], [&] { return std::string(pname[i]) + ".vertices[" + std::to_string(j) + "]"; }));
+        } else if (off) {
+            const std::string key = std::string(pname[i]) + (mesh ? ".mesh" : ".off");
+            if (off->kind != JNode::String) r.fail(key, "expected a file name");
+            if (!opt.allow_off_files) r.fail(key, "mesh files are not read here");
+            std::string path = off->text;
+            if (!path.empty() && path[0] != '/' && !base_dir.empty()) path = base_dir + "/" + path;
+            // "mesh": OFF, OBJ, PLY or STL by extension; "off": an OFF file whatever its name.
+            in.points = mesh ? read_mesh(path, opt) : parse_mesh(read_input(path, "OFF file", kMaxSceneBytes), MeshFormat::Off, path, opt);
+        } else {
+            r.fail(pname[i], "missing field \"vertices\" (or \"mesh\", \"off\")");
+        }
+        if (const JNode* s = p->find("seed")) {
+            in.seed = r.point(*s, std::string(pname[i]) + ".seed");
+            in.seed_given = true;
+        }
+    }
+    const char* iname[2] = {"I1", "I2"};
+    for (int i = 0; i < 2; ++i) {
+        const JNode* n = root.find(iname[i]);
+        if (!n) r.fail("", std::string("missing field \"") + iname[i] + "\"");
+        if (n->kind != JNode::Array || n->items.size() != 2) r.fail(iname[i], "expected [lo, hi]");
+        sc.lo[i] = r.number(n->items[0], std::string(iname[i]) + "[0]");
+        sc.hi[i] = r.number(n->items[1], std::string(iname[i]) + "[1]");
+    }
+    finish_scene(sc, name);
+    return sc;
+}
+
+void check_scene(const Scene& sc, const std::string& name) {
+    const char* pname[2] = {"P1", "P2"};
+    const char* iname[2] = {"I1", "I2"};
+    for (int i = 0; i < 2; ++i) {
+        const size_t n = sc.P[i].points.size();
+        if (n < 4) throw InputError(name + ": " + pname[i] + ": fewer than 4 vertices (" + std::to_string(n) + ")");
+        if (n > kMaxPoints) throw InputError(name + ": " + pname[i] + ": more than " + std::to_string(kMaxPoints) + " points (the limit)");
+    }
+    for (int i = 0; i < 2; ++i) {
+        if (sgn(sc.lo[i]) <= 0) throw InputError(name + ": " + iname[i] + ": lo must be > 0 (got " + quoted(to_exact_string(sc.lo[i])) + ")");
+        if (sc.lo[i] > sc.hi[i]) throw InputError(name + ": " + iname[i] + ": lo > hi");
+    }
+}
+
+void finish_scene(Scene& sc, const std::string& name) {
+    check_scene(sc, name);
+    for (PolyInput& in : sc.P) {
+        if (in.seed_given) continue;
+        // The mean, summed in integers while the coordinates are integers.
+        Vec3q c{Q(0), Q(0), Q(0)};
+        Z zs[3] = {0, 0, 0};
+        for (const Vec3q& v : in.points)
+            for (int k = 0; k < 3; ++k) {
+                if (v[k].get_den() == 1) zs[k] += v[k].get_num();
+                else c[k] += v[k];
+            }
+        for (int k = 0; k < 3; ++k) c[k] = (c[k] + Q(zs[k])) / Q(static_cast<long>(in.points.size()));
+        in.seed = c;
+    }
+}
+
+Scene load_scene(const std::string& path, const ReadOptions& opt) {
+    std::string text = read_input(path, "scene file", kMaxSceneBytes);
+    std::string dir;
+    auto slash = path.rfind('/');
+    if (slash != std::string::npos) dir = path.substr(0, slash);
+    return parse_scene_text(text, path, dir.empty() ? "." : dir, opt);
+}
+
+}  // namespace scalecert::internal

@@ -1,0 +1,39 @@
+// Stage 1: the scene as the user wrote it, read exactly.
+#pragma once
+#include "numeric/exact.hpp"
+
+#include <string>
+#include <vector>
+
+namespace scalecert::internal {
+
+struct PolyInput {
+    std::vector<Vec3q> points;  // as given (duplicates and non-extreme points allowed)
+    Vec3q seed;                 // given, or the mean of the points
+    bool seed_given = false;
+};
+
+struct Scene {
+    PolyInput P[2];
+    Q lo[2], hi[2];  // I1 = [lo[0], hi[0]], I2 = [lo[1], hi[1]]
+};
+
+struct ReadOptions {
+    bool binary_doubles = false;  // JSON/OFF numbers read as the IEEE doubles strtod gives
+    bool allow_off_files = true;  // "mesh" / "off": "FILE" in a scene (off for text from untrusted sources)
+};
+
+// Reads and checks a scene file. Throws InputError naming the file and the offending field.
+// (Geometric checks that need the hull — rank, seed strictly inside — are done by build_model.)
+Scene load_scene(const std::string& path, const ReadOptions& opt = {});
+// Checks a scene by the reader's rules and messages, prefixed with `name`: at least 4 and at most
+// kMaxPoints points each, 0 < lo <= hi. Throws InputError. (build_model calls it; rank and the
+// seeds' interiority are its own checks.)
+void check_scene(const Scene& sc, const std::string& name);
+// check_scene, then the mean of the points as the seed of each polyhedron without seed_given:
+// call it for a scene assembled in code.
+void finish_scene(Scene& sc, const std::string& name);
+Scene parse_scene_text(const std::string& text, const std::string& name, const std::string& base_dir,
+                       const ReadOptions& opt = {});
+
+}  // namespace scalecert::internal

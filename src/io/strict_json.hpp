@@ -1,0 +1,32 @@
+// A strict RFC 8259 JSON reader that keeps every number's text as written (so that 0.1 can be
+// read as 1/10): for scene and claims files.
+#pragma once
+#include "numeric/limits.hpp"
+
+#include <string>
+#include <vector>
+
+namespace scalecert::internal {
+
+// A JSON tree; numbers and strings keep their text.
+struct JNode {
+    enum Kind { Null, Bool, Number, String, Array, Object } kind = Null;
+    std::string text;         // number as written, or string value
+    std::vector<JNode> items;  // array items, or object values
+    std::vector<std::string> keys;
+    const JNode* find(const std::string& k) const {
+        for (size_t i = 0; i < keys.size(); ++i)
+            if (keys[i] == k) return &items[i];
+        return nullptr;
+    }
+};
+
+// A malformed document: the byte offset and the problem.
+struct JsonError { size_t pos; std::string what; };
+
+// No comments, no leading zeros, no bare keys, no trailing commas, UTF-8 only, duplicate keys
+// rejected (a file must not mean two things), at most 64 levels of nesting and kMaxJsonValues
+// values. Throws JsonError.
+JNode parse_strict_json(const std::string& text);
+
+}  // namespace scalecert::internal

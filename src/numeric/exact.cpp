@@ -1,0 +1,205 @@
+#include "numeric/exact.hpp"
+#include "numeric/small_int.hpp"
+
+#include <mpfr.h>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cerrno>
+#include <cstring>
+#include <algorithm>
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+namespace scalecert::internal {
+
+Vec3z primitive(const Vec3z& v) {
+    Z g = 0;
+    for (const Z& c : v) mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), c.get_mpz_t());
+    if (g == 0) throw std::logic_error("primitive(): zero vector");
+    Vec3z r;
+    for (int k = 0; k < 3; ++k) mpz_divexact(r[k].get_mpz_t(), v[k].get_mpz_t(), g.get_mpz_t());
+    return r;
+}
+
+Z to_z(I128 v) {
+    const bool negative = v < 0;
+    unsigned __int128 u = negative ? -static_cast<unsigned __int128>(v) : static_cast<unsigned __int128>(v);
+    Z r;
+    mpz_set_ui(r.get_mpz_t(), static_cast<unsigned long>(u >> 64));
+    mpz_mul_2exp(r.get_mpz_t(), r.get_mpz_t(), 64);
+    Z lo;
+    mpz_set_ui(lo.get_mpz_t(), static_cast<unsigned long>(u & ~std::uint64_t{0}));
+    r += lo;
+    if (negative) r = -r;
+    return r;
+}
+
+bool to_i128(const Z& z, I128& out) {
+    static_assert(sizeof(mp_limb_t) == 8, "64-bit limbs");
+    const size_t n = mpz_size(z.get_mpz_t());
+    if (n > 2) return false;
+    const unsigned __int128 lo = mpz_getlimbn(z.get_mpz_t(), 0), hi = n > 1 ? mpz_getlimbn(z.get_mpz_t(), 1) : 0;
+    if (hi >> 62) return false;  // 126 bits at most
+    const I128 r = static_cast<I128>((hi << 64) | lo);
+    out = sgn(z) < 0 ? -r : r;
+    return true;
+}
+
+bool to_small_normal(const Vec3z& v, Vec3s& out) {
+    for (int k = 0; k < 3; ++k) {
+        if (mpz_sizeinbase(v[k].get_mpz_t(), 2) > 62) return false;
+        out[k] = mpz_get_si(v[k].get_mpz_t());
+    }
+    return true;
+}
+
+Vec3z over_common_denominator(const Vec3q& v, Z& den) {
+    den = 1;
+    for (const Q& c : v) mpz_lcm(den.get_mpz_t(), den.get_mpz_t(), c.get_den_mpz_t());
+    Vec3z z;
+    for (int k = 0; k < 3; ++k) z[k] = Z(v[k] * den);
+    return z;
+}
+
+Vec3z primitive(const Vec3q& v) {
+    Z den;
+    return primitive(over_common_denominator(v, den));
+}
+
+namespace {
+bool all_digits(const std::string& s, size_t b, size_t e) {
+    if (b >= e) return false;
+    for (size_t i = b; i < e; ++i)
+        if (s[i] < '0' || s[i] > '9') return false;
+    return true;
+}
+// [+-]digits into z; false for anything else.
+bool parse_integer(const std::string& s, Z& z) {
+    size_t b = (!s.empty() && (s[0] == '-' || s[0] == '+')) ? 1 : 0;
+    if (!all_digits(s, b, s.size())) return false;
+    z = Z(s[0] == '+' ? s.substr(1) : s, 10);
+    return true;
+}
+}  // namespace
+
+std::string quoted(const std::string& text) {
+    constexpr size_t kShown = 40;
+    std::string out = "'";
+    for (size_t i = 0; i < text.size() && i < kShown; ++i) {
+        const unsigned char c = static_cast<unsigned char>(text[i]);
+        if (c == '\\') out += "\\\\";
+        else if (c == '\'') out += "\\'";
+        else if (c < 0x20 || c == 0x7f) {
+            char buf[8];
+            std::snprintf(buf, sizeof buf, "\\x%02x", c);
+            out += buf;
+        } else out += static_cast<char>(c);
+    }
+    out += "'";
+    if (text.size() > kShown) out += " (" + std::to_string(text.size()) + " characters, cut)";
+    return out;
+}
+
+Q parse_exact(const std::string& text) {
+    // Plain integers of up to 18 digits (most coordinates): no detour through strings.
+    if (!text.empty() && text.size() <= 19) {
+        size_t b = text[0] == '-' || text[0] == '+' ? 1 : 0;
+        if (text.size() - b >= 1 && text.size() - b <= 18 && all_digits(text, b, text.size())) {
+            long v = 0;
+            for (size_t i = b; i < text.size(); ++i) v = v * 10 + (text[i] - '0');
+            Q r;
+            mpq_set_si(r.get_mpq_t(), text[0] == '-' ? -v : v, 1);
+            return r;
+        }
+    }
+    auto bad = [&text] { return InputError(quoted(text) + " is not an exact number"); };
+    if (text.size() > kMaxNumberChars)
+        throw InputError(quoted(text) + " is longer than " + std::to_string(kMaxNumberChars) + " characters, the limit for one number");
+    if (text.empty()) throw bad();
+    size_t slash = text.find('/');
+    if (slash != std::string::npos) {
+        Z p, q;
+        if (!parse_integer(text.substr(0, slash), p)) throw bad();
+        std::string ds = text.substr(slash + 1);
+        if (ds.empty() || ds[0] == '-' || ds[0] == '+') throw bad();
+        if (!parse_integer(ds, q)) throw bad();
+        if (q == 0) throw InputError(quoted(text) + " has a zero denominator");
+        Q r(p, q);
+        r.canonicalize();
+        return r;
+    }
+    size_t i = 0;
+    bool negative = false;
+    if (text[i] == '+' || text[i] == '-') negative = text[i++] == '-';
+    size_t int_b = i;
+    while (i < text.size() && std::isdigit(static_cast<unsigned char>(text[i]))) ++i;
+    std::string digits = text.substr(int_b, i - int_b);
+    long frac_len = 0;
+    if (i < text.size() && text[i] == '.') {
+        size_t fb = ++i;
+        while (i < text.size() && std::isdigit(static_cast<unsigned char>(text[i]))) ++i;
+        digits += text.substr(fb, i - fb);
+        frac_len = static_cast<long>(i - fb);
+    }
+    if (digits.empty()) throw bad();
+    long exponent = 0;
+    if (i < text.size() && (text[i] == 'e' || text[i] == 'E')) {
+        ++i;
+        size_t eb = i;
+        if (i < text.size() && (text[i] == '+' || text[i] == '-')) ++i;
+        if (!all_digits(text, i, text.size())) throw bad();
+        if (text.size() - i > 6) throw InputError(quoted(text) + " has an exponent too large to read exactly");
+        exponent = std::stol(text.substr(eb));
+        i = text.size();
+    }
+    if (i != text.size()) throw bad();
+    long e = exponent - frac_len;
+    if (e > 100000 || e < -100000) throw InputError(quoted(text) + " has an exponent too large to read exactly");
+    Z m(digits, 10);
+    Z p10;
+    mpz_ui_pow_ui(p10.get_mpz_t(), 10, static_cast<unsigned long>(e < 0 ? -e : e));
+    Q r = e >= 0 ? Q(m * p10) : Q(m, p10);
+    r.canonicalize();
+    return negative ? Q(-r) : r;
+}
+
+Q exact_from_double(double d) {
+    if (!std::isfinite(d)) throw InputError("value is not finite");
+    Q r;
+    mpq_set_d(r.get_mpq_t(), d);
+    return r;
+}
+
+Q parse_number(const std::string& text, bool binary_doubles) {
+    if (!binary_doubles) return parse_exact(text);
+    char* end = nullptr;
+    double d = std::strtod(text.c_str(), &end);
+    if (text.empty() || end == text.c_str() || *end != '\0') throw InputError(quoted(text) + " is not a number");
+    return exact_from_double(d);
+}
+
+std::string to_exact_string(const Q& q) {
+    Q c = q;
+    c.canonicalize();
+    return c.get_str(10);  // GMP prints "p" when q = 1 and "p/q" otherwise, q > 0
+}
+
+double to_double_rn(const Q& q) {
+    mpfr_t x;
+    mpfr_init2(x, 53);
+    mpfr_exp_t emin = mpfr_get_emin(), emax = mpfr_get_emax();
+    mpfr_set_emin(-1073);  // IEEE binary64 range, so subnormals round as in hardware
+    mpfr_set_emax(1024);
+    int t = mpfr_set_q(x, q.get_mpq_t(), MPFR_RNDN);
+    t = mpfr_check_range(x, t, MPFR_RNDN);
+    mpfr_subnormalize(x, t, MPFR_RNDN);
+    double d = mpfr_get_d(x, MPFR_RNDN);
+    mpfr_clear(x);
+    mpfr_set_emin(emin);
+    mpfr_set_emax(emax);
+    return d;
+}
+
+}  // namespace scalecert::internal

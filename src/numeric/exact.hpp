@@ -1,0 +1,65 @@
+// Exact number layer: rationals (GMP), integer vectors, exact parsing and display rounding.
+#pragma once
+#include "numeric/limits.hpp"
+#include "scalecert/scalecert.hpp"
+
+#include <gmpxx.h>
+#include <array>
+#include <functional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace scalecert::internal {
+
+using Q = mpq_class;
+using Z = mpz_class;
+using Vec3q = std::array<Q, 3>;
+using Vec3z = std::array<Z, 3>;
+
+// Any problem with the user's input (the public scalecert::InputError): one line, exit status 2.
+using scalecert::InputError;
+
+template <class A, class B>
+inline auto dot(const std::array<A, 3>& a, const std::array<B, 3>& b) {
+    return Q(a[0] * b[0] + a[1] * b[1] + a[2] * b[2]);
+}
+inline Z dotz(const Vec3z& a, const Vec3z& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+template <class T>
+inline std::array<T, 3> sub(const std::array<T, 3>& a, const std::array<T, 3>& b) {
+    return {T(a[0] - b[0]), T(a[1] - b[1]), T(a[2] - b[2])};
+}
+template <class T>
+inline std::array<T, 3> cross(const std::array<T, 3>& a, const std::array<T, 3>& b) {
+    return {T(a[1] * b[2] - a[2] * b[1]), T(a[2] * b[0] - a[0] * b[2]), T(a[0] * b[1] - a[1] * b[0])};
+}
+inline bool is_zero(const Vec3z& v) { return sgn(v[0]) == 0 && sgn(v[1]) == 0 && sgn(v[2]) == 0; }
+inline Vec3q to_q(const Vec3z& v) { return {Q(v[0]), Q(v[1]), Q(v[2])}; }
+inline Vec3z neg(const Vec3z& v) { return {Z(-v[0]), Z(-v[1]), Z(-v[2])}; }
+
+// The primitive integer vector with the direction of v (v != 0): common denominators cleared,
+// common factor removed. Two normals are the same direction iff their primitive forms are equal.
+Vec3z primitive(const Vec3q& v);
+Vec3z primitive(const Vec3z& v);
+// v over its common denominator: v = z / den, den > 0 the lcm of the coordinates' denominators.
+Vec3z over_common_denominator(const Vec3q& v, Z& den);
+
+// User text for an error message: quoted, control characters escaped (so the message stays one
+// line), and cut after 40 characters.
+std::string quoted(const std::string& text);
+
+// Reads a number exactly as written: "-12", "0.1" (= 1/10), "1e-3", "2.5E+7", "3/7".
+// Throws InputError (without location; callers add it) when the text is not such a number.
+Q parse_exact(const std::string& text);
+// The double's exact value (every finite double is a dyadic rational).
+Q exact_from_double(double d);
+// Number text read exactly (parse_exact), or with binary_doubles as the double strtod gives (its
+// exact value). Throws InputError (without location) for text that is neither.
+Q parse_number(const std::string& text, bool binary_doubles);
+
+// "p/q" in lowest terms with q > 0, or "p" when q = 1.
+std::string to_exact_string(const Q& q);
+// The double nearest to q (round-to-nearest-even), computed with MPFR.
+double to_double_rn(const Q& q);
+
+}  // namespace scalecert::internal

@@ -1,0 +1,157 @@
+#include "session/session.hpp"
+
+#include "certify/certificate.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+
+namespace scalecert::internal {
+
+Session::Session(Scene scene, std::string name, Engine engine)
+    : scene_(std::move(scene)), name_(std::move(name)), engine_(engine) {}
+
+Session::Session(std::shared_ptr<const CompactScene> scene, std::string name, Engine engine)
+    : compact_(std::move(scene)), name_(std::move(name)), engine_(engine) {}
+
+void Session::decide() {
+    if (decided_) return;
+    decided_ = true;
+    if (engine_ == Engine::Hull) return;
+    if (!compact_ && scene_ && (engine_ == Engine::Scan || walk_by_default(scene_->P[0].points.size(), scene_->P[1].points.size())))
+        if (auto cs = compact_scene(*scene_)) compact_ = std::make_shared<const CompactScene>(std::move(*cs));
+    if (!compact_ || (engine_ == Engine::Auto && !walk_by_default(compact_->P[0].size(), compact_->P[1].size()))) return;
+    try {
+        walk_.emplace(scan_model(compact_));
+        walk_curve_ = build_curve(*walk_);
+        lap("envelope and curve");
+    } catch (const NeedHull& e) {
+        walk_.reset();
+        handover_ = e.what();
+        if (std::getenv("SCALECERT_TIMING")) std::fprintf(stderr, "scalecert: scan path: %s; the hull path decides\n", e.what());
+    }
+}
+
+bool Session::walked() {
+    decide();
+    return walk_.has_value();
+}
+
+const Model& Session::hull() {
+    if (!hull_) {
+        if (hull_source_) {
+            hull_ = hull_source_();
+        } else {
+            if (clock_) clock_->restart();
+            if (!scene_ && !compact_) throw std::logic_error("Session: no scene and no hull source");
+            hull_ = std::make_shared<const Model>(build_model(scene_ ? *scene_ : full_scene(*compact_), name_));
+        }
+    }
+    return *hull_;
+}
+
+const Curve& Session::hull_curve() {
+    if (!hull_curve_) {
+        const Model& m = hull();
+        if (clock_) clock_->restart();
+        hull_curve_ = build_curve(m);
+        lap("envelope and curve");
+    }
+    return *hull_curve_;
+}
+
+const Curve& Session::curve() { return walked() ? walk_curve_ : hull_curve(); }
+const Model& Session::curve_model() { return walked() ? *walk_ : hull(); }
+
+bool Session::walk_proves(const Q& lo, const Q& hi) const {
+    return walk_ && walk_->walk_lo <= lo && (!walk_->walk_hi || hi <= *walk_->walk_hi);
+}
+
+bool Session::walk_covers(const Q& lo, const Q& hi) {
+    if (!walked()) return false;
+    if (walk_proves(lo, hi)) return true;
+    if (sgn(lo) <= 0 || hi < lo) return false;
+    try {
+        Model wider = scan_model(compact_, std::make_pair(lo, hi));
+        Curve c = build_curve(wider);
+        walk_.emplace(std::move(wider));
+        walk_curve_ = std::move(c);
+        lap("wider walk");
+    } catch (const NeedHull& e) {
+        if (std::getenv("SCALECERT_TIMING")) std::fprintf(stderr, "scalecert: scan path over a wider range: %s\n", e.what());
+        return false;
+    }
+    return walk_proves(lo, hi);
+}
+
+Session::Decider Session::decider_for(const std::vector<double>& rho1) {
+    if (!rho1.empty() && walked()) {
+        const auto [lo, hi] = std::minmax_element(rho1.begin(), rho1.end());
+        if (walk_covers(exact_from_double(*lo), exact_from_double(*hi))) return {*walk_, walk_curve_};
+    }
+    return {hull(), hull_curve()};
+}
+
+Verdict Session::verdict(const Q& rho1, const Q& rho2) {
+    // Coincident seeds: s lies inside P1(ρ1) and P2(ρ2) for every ρ1, ρ2 > 0 (the walk does not
+    // take such scenes; this needs no model at all).
+    if (compact_ ? compact_->seed[0] == compact_->seed[1] : scene_ && scene_->P[0].seed == scene_->P[1].seed)
+        if (sgn(rho1) > 0 && sgn(rho2) > 0) return Verdict::Overlapping;
+    if (walk_covers(rho1, rho1)) return query(*walk_, walk_curve_, rho1, rho2, false).verdict;
+    return query(hull(), hull_curve(), rho1, rho2, false).verdict;
+}
+
+Q Session::curve_value(const Q& rho1) {
+    if (walk_covers(rho1, rho1)) return walk_curve_.env.value(walk_->lines, rho1);
+    return hull_curve().env.value(hull().lines, rho1);
+}
+
+Session::Certified Session::certified_query(const Q& rho1, const Q& rho2) {
+    if (walk_covers(rho1, rho1)) {
+        const Model& m = *walk_;
+        bool proved = true;
+        if (query(m, walk_curve_, rho1, rho2, false).verdict == Verdict::Overlapping) {
+            // The witness sits where the ray meets the walked lines' envelope: the true curve only
+            // where the walk proved it (walked lines are ≤ the curve everywhere, equal there).
+            const auto [t, line] = ray_crossing(m, walk_curve_, rho1, rho2);
+            const Q x = t * rho1;
+            proved = walk_proves(x, x) && walk_curve_.env.value(m.lines, x) == t * rho2;
+        }
+        if (proved) return {m, query(m, walk_curve_, rho1, rho2, true)};
+        // Overlapping, and the ray meets the curve left of the walk: a touching pair below and
+        // left of (ρ1, ρ2) on the walked curve instead, at x < ρ1 with f(x) < ρ2 (f is continuous
+        // and f(ρ1) < ρ2, so halving the step towards ρ1 finds one).
+        if (m.walk_lo < rho1) {
+            Q step = (rho1 - m.walk_lo) / 2;
+            for (int k = 0; k < 256; ++k, step /= 2)
+                if (walk_curve_.env.value(m.lines, rho1 - step) < rho2) {
+                    QueryResult r = query(m, walk_curve_, rho1, rho2, false);
+                    r.witness = witness_below(m, walk_curve_, rho1 - step);
+                    return {m, r};
+                }
+        }
+    }
+    const Model& h = hull();
+    return {h, query(h, hull_curve(), rho1, rho2, true)};
+}
+
+std::string Session::query_text(const Q& rho1, const Q& rho2) {
+    const Certified c = certified_query(rho1, rho2);
+    return document_text(c.model, query_json(c.model, c.result));
+}
+
+std::string Session::partition_text() {
+    const Model& m = walked() ? *walk_ : hull();
+    const Curve& c = walked() ? walk_curve_ : hull_curve();
+    const std::string text = document_text(m, partition_json(m, c, build_partition(m, c)));
+    lap("partition and output");
+    return text;
+}
+
+ClaimModels Session::claim_models() {
+    return {[this]() -> const Model& { return hull(); }, [this]() -> const Curve& { return hull_curve(); },
+            [this](const Q& r1, const Q& r2) { return verdict(r1, r2); }, [this](const Q& r1) { return curve_value(r1); },
+            [this] { return curve().growth.value; }};
+}
+
+}  // namespace scalecert::internal
