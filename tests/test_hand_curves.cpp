@@ -108,7 +108,9 @@ BOOST_AUTO_TEST_CASE(below_rho2_zero_the_curve_goes_on_as_one_line) {
     BOOST_TEST(side.at(Q(6)) > Q(-3));  // above 3 − ρ1 at hi1: the old curve switched to it
     auto cs = compact_scene(sc);
     BOOST_TEST_REQUIRE(cs.has_value());
-    const Model sm = scan_model(std::make_shared<CompactScene>(std::move(*cs)));
+    const WalkResult walked = scan_model(std::make_shared<CompactScene>(std::move(*cs)));
+    BOOST_TEST_REQUIRE(walked.model.has_value());
+    const Model& sm = *walked.model;
     BOOST_TEST(!sm.walk_hi.has_value());  // the walk stops where the curve reaches 0, proved beyond
     for (const Model* m : {&hm, &sm}) {
         const Curve c = build_curve(*m);

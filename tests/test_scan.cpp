@@ -37,17 +37,17 @@ bool compare(const Scene& sc, const std::string& what, Tally& t) {
         ++t.fell_back;
         return false;
     }
-    try {
-        const Model sm = scan_model(std::make_shared<CompactScene>(std::move(*cs)));
-        const Curve c = build_curve(sm);
-        BOOST_TEST(curve_json(sm, c)["model"]["engine"] == "scan");
-        BOOST_TEST(without_model(sm, c) == hull, what);
-        ++t.scanned;
-        return true;
-    } catch (const NeedHull&) {
+    const WalkResult r = scan_model(std::make_shared<CompactScene>(std::move(*cs)));
+    if (!r.model) {
         ++t.fell_back;
         return false;
     }
+    const Model& sm = *r.model;
+    const Curve c = build_curve(sm);
+    BOOST_TEST(curve_json(sm, c)["model"]["engine"] == "scan");
+    BOOST_TEST(without_model(sm, c) == hull, what);
+    ++t.scanned;
+    return true;
 }
 
 // Points near a sphere of radius R about o, coordinates multiples of 1/den.
@@ -203,6 +203,51 @@ BOOST_AUTO_TEST_CASE(turned_boxes_in_decimals) {
     }
     BOOST_TEST_MESSAGE("boxes: " << t.scanned << " by the scan path, " << t.fell_back << " by the hull path");
     BOOST_TEST(t.scanned >= 6);
+}
+
+// The walk returns why it hands a scene over, and each hand-over is counted, per reason.
+BOOST_AUTO_TEST_CASE(handovers_are_returned_and_counted) {
+    auto cube = [](long cx, long cy, long cz) {
+        std::vector<Vec3q> v;
+        for (long x : {-1, 1}) for (long y : {-1, 1}) for (long z : {-1, 1}) v.push_back({Q(cx + x), Q(cy + y), Q(cz + z)});
+        return v;
+    };
+    auto walk = [](Scene sc) {
+        sc = with_means(sc, Q(1, 2), Q(2));
+        auto cs = compact_scene(sc);
+        BOOST_TEST_REQUIRE(cs.has_value());
+        return scan_model(std::make_shared<CompactScene>(std::move(*cs)));
+    };
+    auto count = [](Handover h) { return handover_counts()[static_cast<size_t>(h)]; };
+    // Cubes about one centre: d = 0, nothing to walk.
+    Scene same;
+    same.P[0].points = cube(0, 0, 0);
+    for (const Vec3q& p : cube(0, 0, 0)) same.P[1].points.push_back({p[0] * 2, p[1] * 2, p[2] * 2});
+    const std::uint64_t before = count(Handover::SeedsCoincide);
+    const WalkResult r = walk(same);
+    BOOST_TEST(!r.model.has_value());
+    BOOST_TEST_REQUIRE(r.stop.has_value());
+    BOOST_TEST((r.stop->reason == Handover::SeedsCoincide));
+    BOOST_TEST(r.stop->text() == "the seeds coincide");
+    BOOST_TEST(count(Handover::SeedsCoincide) == before + 1);
+    // Unit cubes [-1, 1]^3 about 0 and about (3, 3, 0): their Minkowski sum is a box, and d = (3, 3, 0)
+    // runs along its vertical edge between the faces of normals x and y, whose lines are both
+    // ρ1 + ρ2 = 3 (h1 = h2 = 1, n·d = 3): identical lines, which the walk hands over.
+    Scene diag;
+    diag.P[0].points = cube(0, 0, 0);
+    diag.P[1].points = cube(3, 3, 0);
+    const WalkResult e = walk(diag);
+    BOOST_TEST_REQUIRE(e.stop.has_value());
+    BOOST_TEST((e.stop->reason == Handover::IdenticalLines));
+    BOOST_TEST(e.stop->text() == "d on a face's edge all along a piece (identical lines)");
+    // The hull path decides it: ρ2 = 3 − ρ1.
+    const Model hm = build_model(with_means(diag, Q(1, 2), Q(2)));
+    const Curve hc = build_curve(hm);
+    BOOST_TEST_REQUIRE(hc.pieces.size() == 1u);
+    BOOST_TEST(hm.lines[hc.env.pieces[hc.pieces[0].env].line].slope == -1);
+    BOOST_TEST(hm.lines[hc.env.pieces[hc.pieces[0].env].line].intercept == 3);
+    // Every reason has its words.
+    for (int k = 0; k < kHandoverReasons; ++k) BOOST_TEST(std::string(handover_text(static_cast<Handover>(k))) != "unknown");
 }
 
 // Every bundled scene: the same document either way (each may fall back).

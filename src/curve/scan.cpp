@@ -6,15 +6,29 @@
 #include "geometry/witness.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <future>
 #include <memory>
 #include <numeric>
 #include <optional>
+#include <variant>
 
 namespace scalecert::internal {
 
 namespace {
+
+std::atomic<std::uint64_t> g_handovers[kHandoverReasons];
+
+// Each step of the walk returns its value, or where the walk stops (the hull model decides).
+template <class T>
+using Walked = std::variant<T, WalkStop>;
+WalkStop stop(Handover h, int polyhedron = -1) { return {h, polyhedron}; }
+// NAME = the value of EXPR, or return its stop from the enclosing function.
+#define SCALECERT_WALK(name, expr)                                                     \
+    auto name##_walked = (expr);                                                       \
+    if (const WalkStop* name##_stop = std::get_if<WalkStop>(&name##_walked)) return *name##_stop; \
+    auto& name = std::get<0>(name##_walked)
 
 // ---------------------------------------------------------------------------------------------
 // Exact support queries on a point cloud.
@@ -25,11 +39,12 @@ struct Dir {
     double d[3];
     std::int64_t s[3];
     bool small;
+    bool finite = true;  // else the walk stops (Handover::NormalBeyondDoubles)
     explicit Dir(const Vec3z& v) : z(v) {
         small = true;
         for (int k = 0; k < 3; ++k) {
             d[k] = v[k].get_d();
-            if (!std::isfinite(d[k])) throw NeedHull("a normal beyond the double range");
+            finite = finite && std::isfinite(d[k]);
             small = small && mpz_fits_slong_p(v[k].get_mpz_t());
             s[k] = small ? v[k].get_si() : 0;
         }
@@ -52,8 +67,9 @@ Z dot_exact(const Dir& n, const std::int64_t* x) {
 // max|X_k| over these points; only those candidates are formed exactly. Linear in the points, and
 // in machine arithmetic but for the few candidates (a face of 4,000 vertices against every edge
 // normal of another was O(m1·m2) GMP rationals: 33 s).
-Z max_over(const IntPoints& P, const std::vector<int>& idx, const Vec3z& uz) {
+Walked<Z> max_over(const IntPoints& P, const std::vector<int>& idx, const Vec3z& uz) {
     const Dir u(uz);
+    if (!u.finite) return stop(Handover::NormalBeyondDoubles);
     double maxabs[3] = {0, 0, 0};
     for (int k : idx)
         for (int c = 0; c < 3; ++c) maxabs[c] = std::max(maxabs[c], std::fabs(static_cast<double>(P.at(static_cast<size_t>(k))[c])));
@@ -148,12 +164,13 @@ public:
     // Every maximiser of n·x, exactly. Filter (predicates.hpp, bound 7): every true maximiser has
     // a computed value ≥ best − 2E, and a box whose bound is below best − 4E holds no such point,
     // for E = kScanSupport·Σ|n_k|·max|x_k|. The candidates are then compared exactly.
-    Support support(const Vec3z& nz) const {
+    Walked<Support> support(const Vec3z& nz) const {
         ++st_.support_queries;
         const Dir n(nz);
+        if (!n.finite) return stop(Handover::NormalBeyondDoubles);
         double B = 0;
         for (int k = 0; k < 3; ++k) B += std::fabs(n.d[k]) * maxabs_[k];
-        if (!(B > 0) || !std::isfinite(B)) throw NeedHull("a zero or huge normal");
+        if (!(B > 0) || !std::isfinite(B)) return stop(Handover::ZeroOrHugeNormal);
         const double E = filter::kScanSupport * B;
         double best = -INFINITY;
         std::vector<std::pair<double, std::uint32_t>> cand;
@@ -359,11 +376,12 @@ class Walker {
 public:
     Walker(Model& m, const Cloud& c1, const Cloud& c2) : m_(m), C_{&c1, &c2} {}
 
-    Support support(int i, const Vec3z& n) const { return C_[i]->support(n); }
+    Walked<Support> support(int i, const Vec3z& n) const { return C_[i]->support(n); }
 
     // The piece of normal n: exact line, support polygons and the interval where it holds.
-    Piece piece(const Vec3z& n) const {
-        Support s1 = support(0, n), s2 = support(1, neg(n));
+    Walked<Piece> piece(const Vec3z& n) const {
+        SCALECERT_WALK(s1, support(0, n));
+        SCALECERT_WALK(s2, support(1, neg(n)));
         Piece p;
         p.F[0] = support_polygon(m_.scan->P[0], n, s1.all);
         p.F[1] = support_polygon(m_.scan->P[1], n, s2.all);
@@ -373,7 +391,7 @@ public:
                            (p.F[0].cycle.size() == 2 && p.F[1].cycle.size() == 2 &&
                             !is_zero(cross(sub(zpoint(m_.scan->P[0], p.F[0].cycle[1]), zpoint(m_.scan->P[0], p.F[0].cycle[0])),
                                            sub(zpoint(m_.scan->P[1], p.F[1].cycle[1]), zpoint(m_.scan->P[1], p.F[1].cycle[0])))));
-        if (!face2) throw NeedHull("a normal that is not a facet normal of the sum");
+        if (!face2) return stop(Handover::NotFacetNormal);
         // d ∈ G(x) iff for every in-plane edge normal u of either summand:
         //   x·max_{F1} u·(p − s1) + y(x)·max_{F2} u·(s2 − w) ≥ u·d,  y(x) = a·x + b.
         struct Con { Vec3z u; Q k, c; };
@@ -392,8 +410,8 @@ public:
                 // The other summand's maximum of u: max u·(x − s1) = max u·X / S1 − u·s1 over F1,
                 // max u·(s2 − x) = u·s2 + max (−u)·X / S2 over F2.
                 const int j = 1 - i;
-                const Q other = j == 0 ? Q(Q(max_over(m_.scan->P[0], p.F[0].cycle, u)) / S1 - dot(uu, m_.s[0]))
-                                       : Q(dot(uu, m_.s[1]) + Q(max_over(m_.scan->P[1], p.F[1].cycle, neg(u))) / S2);
+                SCALECERT_WALK(top, j == 0 ? max_over(m_.scan->P[0], p.F[0].cycle, u) : max_over(m_.scan->P[1], p.F[1].cycle, neg(u)));
+                const Q other = j == 0 ? Q(Q(top) / S1 - dot(uu, m_.s[0])) : Q(dot(uu, m_.s[1]) + Q(top) / S2);
                 const Q A = i == 0 ? h : other, Bv = i == 0 ? other : h;
                 cons.push_back({u, A + p.L.slope * Bv, p.L.intercept * Bv - dot(uu, m_.d)});
             }
@@ -401,8 +419,8 @@ public:
         // k·x + c ≥ 0 for each.
         for (const Con& c : cons) {
             if (sgn(c.k) == 0) {
-                if (sgn(c.c) < 0) throw NeedHull("a face that never holds d");
-                if (sgn(c.c) == 0) throw NeedHull("d on a face's edge all along a piece (identical lines)");
+                if (sgn(c.c) < 0) return stop(Handover::FaceNeverHoldsD);
+                if (sgn(c.c) == 0) return stop(Handover::IdenticalLines);
                 continue;
             }
             const Q r = -c.c / c.k;
@@ -414,7 +432,7 @@ public:
                 else if (r == *p.hi) p.exit_hi.push_back(c.u);
             }
         }
-        if (p.lo && p.hi && *p.lo >= *p.hi) throw NeedHull("a piece of zero length");
+        if (p.lo && p.hi && *p.lo >= *p.hi) return stop(Handover::ZeroLengthPiece);
         return p;
     }
 
@@ -423,7 +441,7 @@ public:
     // whose optimum is f(x) (LP duality with the touching LP); rows enter as support queries
     // find them violated. A basic optimum is a facet normal of the sum.
     // None when the curve is not above 0 at x.
-    std::optional<Vec3z> start_normal(const Q& x, const std::vector<int> init[2]) {
+    Walked<std::optional<Vec3z>> start_normal(const Q& x, const std::vector<int> init[2]) {
         std::vector<std::vector<Q>> A;
         std::vector<Q> b;
         std::vector<char> have[2] = {std::vector<char>(m_.scan->P[0].size()), std::vector<char>(m_.scan->P[1].size())};
@@ -441,15 +459,16 @@ public:
         for (int it = 0; it < 400; ++it) {
             ++m_.scan_stats.lp_solves;
             auto sol = maximise_free(A, b, c);
-            if (!sol) throw NeedHull("the start LP has no optimum");
+            if (!sol) return stop(Handover::StartLpNoOptimum);
             const Vec3q nq{(*sol)[0], (*sol)[1], (*sol)[2]};
             const Q& z = (*sol)[3];
-            if (sgn(nq[0]) == 0 && sgn(nq[1]) == 0 && sgn(nq[2]) == 0) return std::nullopt;
+            if (sgn(nq[0]) == 0 && sgn(nq[1]) == 0 && sgn(nq[2]) == 0) return std::optional<Vec3z>();
             const Vec3z N = primitive(nq);
             int k = 0;
             while (sgn(N[k]) == 0) ++k;
             const Q lambda = nq[k] / Q(N[k]);  // n = λN, λ > 0
-            const Support s1 = support(0, N), s2 = support(1, neg(N));
+            SCALECERT_WALK(s1, support(0, N));
+            SCALECERT_WALK(s2, support(1, neg(N)));
             // h1(n) = λ(S1/scale1 − N·s1), h2(n) = λ(S2/scale2 + N·s2).
             const Vec3q Nq = to_q(N);
             const Q h1 = lambda * (Q(s1.value) / Q(m_.scan->P[0].scale) - dot(Nq, m_.s[0]));
@@ -460,22 +479,22 @@ public:
             if (h2 > 1)
                 for (int w : s2.all) added = add(1, w) || added;
             if (!added) {
-                if (sgn(dot(nq, m_.d) + z) <= 0) return std::nullopt;
+                if (sgn(dot(nq, m_.d) + z) <= 0) return std::optional<Vec3z>();
                 m_.scan_stats.lp_rows = A.size();
-                return N;
+                return std::optional<Vec3z>(N);
             }
         }
-        throw NeedHull("the start LP did not converge");
+        return stop(Handover::StartLpUnsettled);
     }
 
     // The piece beyond `p`'s end (right: its upper end, else its lower end): gift wrapping about
     // the exit edge of the face, then the new piece's own interval decides.
-    Piece next(const Piece& p, bool right) {
+    Walked<Piece> next(const Piece& p, bool right) {
         const std::vector<Vec3z>& ex = right ? p.exit_hi : p.exit_lo;
         const Q x = right ? *p.hi : *p.lo;
-        if (ex.empty()) throw NeedHull("no exit edge");
+        if (ex.empty()) return stop(Handover::NoExitEdge);
         for (const Vec3z& u : ex)
-            if (u != ex[0]) throw NeedHull("d at a corner of a face at a switch point");
+            if (u != ex[0]) return stop(Handover::CornerAtSwitch);
         const Vec3z& n = p.L.normal;
         const Vec3z& o = ex[0];  // rotate n towards the outward normal of the exit edge
         // Each summand's vertex on the exit edge: P1's maximiser of o on F1; for the summand
@@ -489,7 +508,8 @@ public:
                 Z t = dotz(oi, zpoint(m_.scan->P[i], k));
                 if (a < 0 || t > best) best = t, a = k;
             }
-            c[i] = wrap(i, ni, oi, a);
+            SCALECERT_WALK(turned, wrap(i, ni, oi, a));
+            c[i] = turned;
             if (c[i] && i == 1) c[i] = neg(*c[i]);
         }
         Vec3z nn;
@@ -500,43 +520,43 @@ public:
         } else if (c[0] || c[1]) {
             nn = c[0] ? *c[0] : *c[1];
         } else {
-            throw NeedHull("no neighbouring face within a quarter turn");
+            return stop(Handover::NoNeighbour);
         }
         const Q y = p.L.at(x);
-        if (sgn(y) <= 0) throw NeedHull("the curve reaches rho2 <= 0");
-        Piece q = piece(nn);
-        if (q.L.at(x) != y) throw NeedHull("the next line misses the switch point");
-        if (right ? !(q.L.slope > p.L.slope) : !(q.L.slope < p.L.slope)) throw NeedHull("the next line does not turn the curve");
+        if (sgn(y) <= 0) return stop(Handover::ReachesZero);
+        SCALECERT_WALK(q, piece(nn));
+        if (q.L.at(x) != y) return stop(Handover::MissesSwitch);
+        if (right ? !(q.L.slope > p.L.slope) : !(q.L.slope < p.L.slope)) return stop(Handover::NoTurn);
         const bool covers = right ? (!q.lo || *q.lo <= x) && (!q.hi || *q.hi > x) : (!q.hi || *q.hi >= x) && (!q.lo || *q.lo < x);
-        if (!covers) throw NeedHull("the next piece does not continue the curve");
+        if (!covers) return stop(Handover::NoContinuation);
         ++m_.scan_stats.pieces_walked;
-        return q;
+        return std::move(q);
     }
 
 private:
     // Rotating the plane of normal n (support vertex a) about t = n × o towards o: the first
     // normal at which another point of polyhedron i reaches the plane, if within a quarter turn.
-    std::optional<Vec3z> wrap(int i, const Vec3z& n, const Vec3z& o, int a) {
+    Walked<std::optional<Vec3z>> wrap(int i, const Vec3z& n, const Vec3z& o, int a) {
         const IntPoints& P = m_.scan->P[i];
         const Vec3z t = cross(n, o), xa = zpoint(P, a);
         Vec3z c = o;
         for (int it = 0; it < 200; ++it) {
             ++m_.scan_stats.gift_wrap_steps;
-            const Support s = support(i, c);
+            SCALECERT_WALK(s, support(i, c));
             const Z ca = dotz(c, xa);
             if (s.value == ca) {
-                if (it > 0) return primitive(c);
+                if (it > 0) return std::optional<Vec3z>(primitive(c));
                 for (int q : s.all)  // a quarter turn exactly: a point below the old plane on it
-                    if (sgn(dotz(n, sub(zpoint(P, q), xa))) < 0) return primitive(o);
-                return std::nullopt;
+                    if (sgn(dotz(n, sub(zpoint(P, q), xa))) < 0) return std::optional<Vec3z>(primitive(o));
+                return std::optional<Vec3z>();
             }
             c = cross(t, sub(zpoint(P, s.all.front()), xa));
             const int side = sgn(dotz(c, o));
-            if (side == 0) throw NeedHull("gift wrapping met a point on the old plane");
+            if (side == 0) return stop(Handover::WrapOnOldPlane);
             if (side < 0) c = neg(c);
             c = primitive(c);
         }
-        throw NeedHull("gift wrapping did not settle");
+        return stop(Handover::WrapUnsettled);
     }
 
     Model& m_;
@@ -621,15 +641,15 @@ std::vector<std::pair<int, Q>> scan_seed_weights(const CompactScene& sc, int i) 
     return w;
 }
 
-Model scan_model(std::shared_ptr<const CompactScene> sc, const std::optional<std::pair<Q, Q>>& cover) {
+namespace {
+Walked<Model> walk(std::shared_ptr<const CompactScene> sc, const std::optional<std::pair<Q, Q>>& cover) {
     StageClock clock;
     Model m;
-    const char* names[2] = {"P1", "P2"};
     // The reader's checks, on the counts and ranges (the points are not copied into m.scene).
     for (int i = 0; i < 2; ++i) {
         const size_t n = sc->P[i].size();
-        if (n < 4 || n > kMaxPoints) throw NeedHull("point count");
-        if (sgn(sc->lo[i]) <= 0 || sc->lo[i] > sc->hi[i]) throw NeedHull("range");
+        if (n < 4 || n > kMaxPoints) return stop(Handover::PointCount, i);
+        if (sgn(sc->lo[i]) <= 0 || sc->lo[i] > sc->hi[i]) return stop(Handover::Range, i);
         m.scene.P[i].seed = sc->seed[i];
         m.scene.P[i].seed_given = sc->seed_given[i];
         m.scene.lo[i] = sc->lo[i];
@@ -639,7 +659,7 @@ Model scan_model(std::shared_ptr<const CompactScene> sc, const std::optional<std
     }
     m.scan = sc;
     set_seeds_in_integers(m);
-    if (is_zero(m.dz)) throw NeedHull("the seeds coincide");
+    if (is_zero(m.dz)) return stop(Handover::SeedsCoincide);
 
     const auto t = trees(*sc, m.scan_stats);
     const Cloud &c1 = *t.first, &c2 = *t.second;
@@ -648,11 +668,13 @@ Model scan_model(std::shared_ptr<const CompactScene> sc, const std::optional<std
     std::vector<int> init[2];
     for (int i = 0; i < 2; ++i) {
         init[i] = extreme_points(sc->P[i]);
-        if (!strictly_inside_few(sc->P[i], init[i], m.s[i])) throw NeedHull(std::string(names[i]) + ": seed not proved inside");
+        if (!strictly_inside_few(sc->P[i], init[i], m.s[i])) return stop(Handover::SeedNotProved, i);
     }
     const Vec3z dn = primitive(m.dz);
-    init[0].push_back(w.support(0, dn).all.front());
-    init[1].push_back(w.support(1, neg(dn)).all.front());
+    SCALECERT_WALK(towards, w.support(0, dn));
+    SCALECERT_WALK(away, w.support(1, neg(dn)));
+    init[0].push_back(towards.all.front());
+    init[1].push_back(away.all.front());
     clock.lap("scan: seeds");
 
     // The range the walk must prove: I1, widened to `cover` when asked (queries outside I1).
@@ -663,28 +685,38 @@ Model scan_model(std::shared_ptr<const CompactScene> sc, const std::optional<std
     // near ρ1 = 0 as d ≠ 0), so that the walk reaches the piece that takes the curve to 0.
     Q x0 = lo;
     std::optional<Vec3z> n0;
-    for (int k = 0; k < 64 && !(n0 = w.start_normal(x0, init)); ++k) x0 /= 2;
-    if (!n0) throw NeedHull("the curve is not above 0 near rho1 = 0");
-    right.push_back(w.piece(*n0));
+    for (int k = 0; k < 64; ++k, x0 /= 2) {
+        SCALECERT_WALK(start, w.start_normal(x0, init));
+        if ((n0 = start)) break;
+    }
+    if (!n0) return stop(Handover::CurveNotAbove0);
     {
-        const Piece& p = right.back();
-        if ((p.lo && *p.lo > x0) || (p.hi && *p.hi < x0)) throw NeedHull("the start face does not hold d");
+        SCALECERT_WALK(p, w.piece(*n0));
+        if ((p.lo && *p.lo > x0) || (p.hi && *p.hi < x0)) return stop(Handover::StartFaceMissesD);
+        right.push_back(std::move(p));
     }
     clock.lap("scan: start");
     // Rightwards over I1. A piece whose line is at or below ρ2 = 0 at its end reaches 0 at some x0 inside its interval,
     // where it is proved: from x0 on the curve is that line (envelope.hpp), and the walk stops.
     auto reaches_zero = [](const Piece& p) { return !p.hi || sgn(p.L.at(*p.hi)) <= 0; };
-    while (right.back().hi && *right.back().hi < hi && !reaches_zero(right.back())) right.push_back(w.next(right.back(), true));
+    while (right.back().hi && *right.back().hi < hi && !reaches_zero(right.back())) {
+        SCALECERT_WALK(q, w.next(right.back(), true));
+        right.push_back(std::move(q));
+    }
     // The growth distance: where y = x. Left of lo1 when the curve is below the diagonal there.
     auto crossing = [](const ContactLine& L) -> Q { return L.intercept / (Q(1) - L.slope); };
     if (right.front().L.at(x0) < x0) {
         const Piece* cur = &right.front();
         while (cur->lo && !(*cur->lo < crossing(cur->L))) {
-            left.push_back(w.next(*cur, false));
+            SCALECERT_WALK(q, w.next(*cur, false));
+            left.push_back(std::move(q));
             cur = &left.back();
         }
     } else {
-        while (right.back().hi && *right.back().hi < crossing(right.back().L)) right.push_back(w.next(right.back(), true));
+        while (right.back().hi && *right.back().hi < crossing(right.back().L)) {
+            SCALECERT_WALK(q, w.next(right.back(), true));
+            right.push_back(std::move(q));
+        }
     }
     // The proof's range: the walked pieces are contiguous, from the leftmost one's start to the
     // rightmost one's end.
@@ -696,10 +728,63 @@ Model scan_model(std::shared_ptr<const CompactScene> sc, const std::optional<std
         for (Piece& p : *v) m.lines.push_back(std::move(p.L));
     std::sort(m.lines.begin(), m.lines.end(), [](const ContactLine& a, const ContactLine& b) { return a.normal < b.normal; });
     for (size_t i = 1; i < m.lines.size(); ++i)
-        if (m.lines[i].normal == m.lines[i - 1].normal) throw NeedHull("a normal walked twice");
+        if (m.lines[i].normal == m.lines[i - 1].normal) return stop(Handover::NormalTwice);
     m.stats.distinct_normals = m.lines.size();
     clock.lap("scan: walk");
     return m;
+}
+}  // namespace
+
+#undef SCALECERT_WALK
+
+const char* handover_text(Handover h) {
+    switch (h) {
+        case Handover::PointCount: return "point count";
+        case Handover::Range: return "range";
+        case Handover::SeedsCoincide: return "the seeds coincide";
+        case Handover::SeedNotProved: return "seed not proved inside";
+        case Handover::NormalBeyondDoubles: return "a normal beyond the double range";
+        case Handover::ZeroOrHugeNormal: return "a zero or huge normal";
+        case Handover::CurveNotAbove0: return "the curve is not above 0 near rho1 = 0";
+        case Handover::StartLpNoOptimum: return "the start LP has no optimum";
+        case Handover::StartLpUnsettled: return "the start LP did not converge";
+        case Handover::StartFaceMissesD: return "the start face does not hold d";
+        case Handover::NotFacetNormal: return "a normal that is not a facet normal of the sum";
+        case Handover::FaceNeverHoldsD: return "a face that never holds d";
+        case Handover::IdenticalLines: return "d on a face's edge all along a piece (identical lines)";
+        case Handover::ZeroLengthPiece: return "a piece of zero length";
+        case Handover::NoExitEdge: return "no exit edge";
+        case Handover::CornerAtSwitch: return "d at a corner of a face at a switch point";
+        case Handover::NoNeighbour: return "no neighbouring face within a quarter turn";
+        case Handover::ReachesZero: return "the curve reaches rho2 <= 0";
+        case Handover::MissesSwitch: return "the next line misses the switch point";
+        case Handover::NoTurn: return "the next line does not turn the curve";
+        case Handover::NoContinuation: return "the next piece does not continue the curve";
+        case Handover::WrapOnOldPlane: return "gift wrapping met a point on the old plane";
+        case Handover::WrapUnsettled: return "gift wrapping did not settle";
+        case Handover::NormalTwice: return "a normal walked twice";
+    }
+    return "unknown";
+}
+
+std::string WalkStop::text() const {
+    const std::string t = handover_text(reason);
+    return polyhedron == 0 ? "P1: " + t : polyhedron == 1 ? "P2: " + t : t;
+}
+
+std::vector<std::uint64_t> handover_counts() {
+    std::vector<std::uint64_t> out;
+    for (const auto& c : g_handovers) out.push_back(c.load());
+    return out;
+}
+
+WalkResult scan_model(std::shared_ptr<const CompactScene> sc, const std::optional<std::pair<Q, Q>>& cover) {
+    Walked<Model> w = walk(std::move(sc), cover);
+    if (WalkStop* s = std::get_if<WalkStop>(&w)) {
+        ++g_handovers[static_cast<int>(s->reason)];
+        return {std::nullopt, *s};
+    }
+    return {std::move(std::get<Model>(w)), std::nullopt};
 }
 
 }  // namespace scalecert::internal

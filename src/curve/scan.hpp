@@ -16,24 +16,64 @@
 
 #include <memory>
 #include <optional>
-#include <stdexcept>
+#include <cstdint>
+#include <string>
+#include <vector>
 
 namespace scalecert::internal {
 
-// The scan path meets something it does not handle (a curve vertex where d is at a corner of a
-// face, identical lines, a range where ρ2 ≤ 0, a seed it cannot prove interior quickly):
-// build_model on the full scene decides instead, with the same output.
-struct NeedHull : std::runtime_error {
-    using std::runtime_error::runtime_error;
+// Why the walk hands a scene over to the hull model, which then decides with the same output.
+// Every hand-over is returned (WalkResult), counted per reason in this process
+// (handover_counts) and reported under SCALECERT_TIMING.
+enum class Handover : int {
+    PointCount,           // a polyhedron with fewer than 4 or more than the limit of points
+    Range,                // lo <= 0 or lo > hi
+    SeedsCoincide,        // d = 0: every pair overlaps, there is no curve to walk
+    SeedNotProved,        // a seed that a few extreme points cannot prove interior
+    NormalBeyondDoubles,  // a normal whose coordinates overflow a double
+    ZeroOrHugeNormal,     // a support query's filter bound is 0 or not finite
+    CurveNotAbove0,       // the curve is <= 0 at lo1/2^k for k < 64
+    StartLpNoOptimum,     // the start LP is unbounded or infeasible
+    StartLpUnsettled,     // the start LP's column generation did not settle in 400 rounds
+    StartFaceMissesD,     // the start piece does not hold d at its ρ1
+    NotFacetNormal,       // a normal that is not a facet normal of the Minkowski sum
+    FaceNeverHoldsD,
+    IdenticalLines,       // d on a face's edge all along a piece
+    ZeroLengthPiece,
+    NoExitEdge,
+    CornerAtSwitch,       // d at a corner of a face at a switch point
+    NoNeighbour,          // no neighbouring face within a quarter turn
+    ReachesZero,          // the curve reaches ρ2 <= 0 at a switch point
+    MissesSwitch,         // the next line misses the switch point
+    NoTurn,               // the next line does not turn the curve
+    NoContinuation,       // the next piece does not continue the curve
+    WrapOnOldPlane,       // gift wrapping met a point on the old plane
+    WrapUnsettled,        // gift wrapping did not settle in 200 steps
+    NormalTwice,          // a normal walked twice
 };
+constexpr int kHandoverReasons = static_cast<int>(Handover::NormalTwice) + 1;
+// The reason in words ("d at a corner of a face at a switch point").
+const char* handover_text(Handover h);
+// Where the walk stopped: the reason, and the polyhedron it concerns (0, 1; -1: both or none).
+struct WalkStop {
+    Handover reason;
+    int polyhedron = -1;
+    std::string text() const;  // "P1: seed not proved inside"
+};
+// The walk's model, or where it stopped.
+struct WalkResult {
+    std::optional<Model> model;
+    std::optional<WalkStop> stop;
+};
+// Hand-overs in this process so far, per reason (index: the Handover value).
+std::vector<std::uint64_t> handover_counts();
 
 // The model of the curve: Model::lines holds the lines of the pieces walked (sorted by normal),
 // Model::scan the points; the polyhedra carry no hull. Enough for build_curve and curve_json.
-// Throws InputError for a scene the hull path would refuse too (fewer than 4 points, lo > hi),
-// and NeedHull.
 // The walk proves the curve over I1 and the growth distance, and over `cover` too when given
-// (ρ1 > 0 ranges outside I1 that queries need).
-Model scan_model(std::shared_ptr<const CompactScene> sc, const std::optional<std::pair<Q, Q>>& cover = std::nullopt);
+// (ρ1 > 0 ranges outside I1 that queries need). Where it cannot, the result holds the reason
+// instead of a model; it throws nothing but std::bad_alloc.
+WalkResult scan_model(std::shared_ptr<const CompactScene> sc, const std::optional<std::pair<Q, Q>>& cover = std::nullopt);
 
 // Both seeds proved strictly inside from a few extreme points (as scan_model does); false means
 // "not proved" (the hull decides), not "outside".

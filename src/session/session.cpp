@@ -21,15 +21,15 @@ void Session::decide() {
     if (!compact_ && scene_ && (engine_ == Engine::Scan || walk_by_default(scene_->P[0].points.size(), scene_->P[1].points.size())))
         if (auto cs = compact_scene(*scene_)) compact_ = std::make_shared<const CompactScene>(std::move(*cs));
     if (!compact_ || (engine_ == Engine::Auto && !walk_by_default(compact_->P[0].size(), compact_->P[1].size()))) return;
-    try {
-        walk_.emplace(scan_model(compact_));
-        walk_curve_ = build_curve(*walk_);
-        lap("envelope and curve");
-    } catch (const NeedHull& e) {
-        walk_.reset();
-        handover_ = e.what();
-        if (std::getenv("SCALECERT_TIMING")) std::fprintf(stderr, "scalecert: scan path: %s; the hull path decides\n", e.what());
+    WalkResult r = scan_model(compact_);
+    if (r.stop) {
+        handover_ = r.stop->text();
+        if (std::getenv("SCALECERT_TIMING")) std::fprintf(stderr, "scalecert: scan path: %s; the hull path decides\n", handover_.c_str());
+        return;
     }
+    walk_.emplace(std::move(*r.model));
+    walk_curve_ = build_curve(*walk_);
+    lap("envelope and curve");
 }
 
 bool Session::walked() {
@@ -71,16 +71,15 @@ bool Session::walk_covers(const Q& lo, const Q& hi) {
     if (!walked()) return false;
     if (walk_proves(lo, hi)) return true;
     if (sgn(lo) <= 0 || hi < lo) return false;
-    try {
-        Model wider = scan_model(compact_, std::make_pair(lo, hi));
-        Curve c = build_curve(wider);
-        walk_.emplace(std::move(wider));
-        walk_curve_ = std::move(c);
-        lap("wider walk");
-    } catch (const NeedHull& e) {
-        if (std::getenv("SCALECERT_TIMING")) std::fprintf(stderr, "scalecert: scan path over a wider range: %s\n", e.what());
+    WalkResult r = scan_model(compact_, std::make_pair(lo, hi));
+    if (r.stop) {
+        if (std::getenv("SCALECERT_TIMING")) std::fprintf(stderr, "scalecert: scan path over a wider range: %s\n", r.stop->text().c_str());
         return false;
     }
+    Curve c = build_curve(*r.model);
+    walk_.emplace(std::move(*r.model));
+    walk_curve_ = std::move(c);
+    lap("wider walk");
     return walk_proves(lo, hi);
 }
 
