@@ -21,7 +21,7 @@ using test::slurp;
 
 BOOST_AUTO_TEST_CASE(certify_fp_marks_hand_derived_claims) {
     // Stacked cubes: the touching line is ρ1 + ρ2 = 3 and ρ* = 3/2 (test_hand_curves).
-    Model m = build_model(load_scene(std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/stacked_cubes.json"));
+    HullModel m = build_model(load_scene(std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/stacked_cubes.json"));
     Curve c = build_curve(m);
     long wrong = -1;
     std::string r = certify_fp(m, c,
@@ -97,7 +97,7 @@ BOOST_AUTO_TEST_CASE(baselines_agree_away_from_the_curve) {
     // A small audit: away from the curve (|ρ2 − f(ρ1)| > 1/10) every baseline (libccd GJK and MPR,
     // FCL with either GJK, Bullet, the paper's triangle test, plain doubles) must agree with the
     // exact verdict; this checks their wiring, not their precision.
-    Model m = build_model(load_scene(std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/fig5_vf_ve_ee.json"));
+    HullModel m = build_model(load_scene(std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/fig5_vf_ve_ee.json"));
     Curve c = build_curve(m);
     fp::FpScene f = fp::to_fp(m.scene);
     std::vector<std::unique_ptr<fp::Method>> methods;
@@ -164,7 +164,7 @@ BOOST_AUTO_TEST_CASE(shard_plans_cover_every_scene_once) {
 namespace {
 
 struct Claims {
-    Model m;
+    HullModel m;
     Curve c;
     explicit Claims(const Scene& s) : m(build_model(s)), c(build_curve(m)) {}
     explicit Claims(const std::string& bundled)
@@ -439,7 +439,7 @@ BOOST_AUTO_TEST_CASE(baseline_measures_follow_one_convention) {
     // bottom z = 3.5). Each adapter reports its library's values in that convention: libccd's
     // direction moves P2, FCL's normal points from P1 to P2, Bullet's is negated.
     Scene s = load_scene(std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/stacked_cubes.json");
-    Model m = build_model(s);
+    HullModel m = build_model(s);
     fp::FpScene f = fp::to_fp(s);
     for (const char* name : {"libccd-gjk", "libccd-mpr", "fcl-gjk-libccd", "fcl-gjk-indep", "bullet-gjk-epa"}) {
         auto mm = fp::make_method(name, m, f);

@@ -61,7 +61,7 @@ BOOST_AUTO_TEST_CASE(each_equation_is_exercised) {
     std::set<std::string> seen;
     std::mt19937 g(99);
     for (int t = 0; t < 80; ++t) {
-        Model m = build_model(test::random_scene(g, 4 + t % 9, 4 + (t / 9) % 9));
+        HullModel m = build_model(test::random_scene(g, 4 + t % 9, 4 + (t / 9) % 9));
         for (const SwitchPoint& s : build_curve(m).switches) seen.insert(s.equation);
     }
     for (const char* eq : {"(4)", "(5)", "(a)"}) BOOST_TEST(seen.count(eq) == 1u, eq);

@@ -17,7 +17,7 @@ BOOST_AUTO_TEST_CASE(filtered_equals_exact) {
     std::uint64_t exact_stage = 0;
     for (int t = 0; t < 25; ++t) {
         Scene sc = test::random_scene(g, 4 + t % 6, 4 + t % 5);
-        Model m = build_model(sc);
+        HullModel m = build_model(sc);
         Curve c = build_curve(m);
         FastCurve fc(m, c);
         FastDirect fd(m);
@@ -44,7 +44,7 @@ BOOST_AUTO_TEST_CASE(filtered_equals_exact) {
 }
 
 BOOST_AUTO_TEST_CASE(batch_on_two_threads_equals_one_by_one) {
-    Model m = build_model(load_scene(std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/fig5_vf_ve_ee.json"));
+    HullModel m = build_model(load_scene(std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/fig5_vf_ve_ee.json"));
     Curve c = build_curve(m);
     FastCurve fc(m, c);
     std::mt19937 g(5);
@@ -105,7 +105,7 @@ BOOST_AUTO_TEST_CASE(model_free_queries_equal_exact) {
     std::uint64_t random_filtered = 0, random_exact = 0, near = 0, near_exact = 0, touch = 0;
     for (int t = 0; t < 30; ++t) {
         Scene sc = test::random_scene(g, 4 + t % 9, 4 + t % 7);
-        Model m = build_model(sc);
+        HullModel m = build_model(sc);
         Curve c = build_curve(m);
         QuickScene qs(sc);
         for (int k = 0; k < 60; ++k) {  // random pairs: the filter should decide nearly all
@@ -149,7 +149,7 @@ BOOST_AUTO_TEST_CASE(model_free_queries_at_extreme_scales) {
                 for (Vec3q& v : sc.P[i].points) for (Q& c : v) c *= f;
                 for (Q& c : sc.P[i].seed) c *= f;
             }
-            Model m = build_model(sc);
+            HullModel m = build_model(sc);
             QuickScene qs(sc);
             for (int k = 0; k < 20; ++k) {
                 double x = u(g), y = u(g);

@@ -192,7 +192,7 @@ BOOST_AUTO_TEST_CASE(machine_integer_and_gmp_models_agree) {
             b.P[i].points = times(a.P[i].points, big);
             for (int k = 0; k < 3; ++k) b.P[i].seed[k] *= big;
         }
-        Model ma = build_model(a), mb = build_model(b);
+        HullModel ma = build_model(a), mb = build_model(b);
         BOOST_TEST((ma.P[0].small() && ma.P[1].small() && !mb.P[0].small() && !mb.P[1].small()));
         BOOST_TEST(ma.stats.distinct_normals == mb.stats.distinct_normals);
         BOOST_TEST(ma.stats.arc_crossings == mb.stats.arc_crossings);
@@ -314,7 +314,7 @@ BOOST_AUTO_TEST_CASE(facet_normals_of_nearly_parallel_edges_by_brute_force) {
         }
         for (int i = 0; i < 2; ++i) sc.lo[i] = qc(1, 2), sc.hi[i] = Q(3);
         finish_scene(sc, "test");
-        const Model m = build_model(sc);
+        const HullModel m = build_model(sc);
         BOOST_TEST(!m.P[0].small());
         const std::vector<Vec3z> got = all_facet_normals(m);
         const std::set<Vec3z> want = brute(sc);

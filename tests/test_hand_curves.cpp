@@ -14,7 +14,7 @@ BOOST_AUTO_TEST_CASE(stacked_cubes_single_ff_line) {
     // scale ρ1 is z = 1 + ρ1, the bottom face of P2 at scale ρ2 is z = 4 − ρ2: they touch along
     // the whole face when 1 + ρ1 = 4 − ρ2, i.e. ρ2 = 3 − ρ1 (F,F) — and the cubes are aligned,
     // so no other contact ever occurs. Growth distance: ρ = 3 − ρ, ρ* = 3/2.
-    Model m = build_model(load_scene(scene_path("stacked_cubes.json")));
+    HullModel m = build_model(load_scene(scene_path("stacked_cubes.json")));
     Curve c = build_curve(m);
     BOOST_TEST_REQUIRE(c.pieces.size() == 1u);
     const ContactLine& L = m.lines[c.env.pieces[c.pieces[0].env].line];
@@ -41,7 +41,7 @@ BOOST_AUTO_TEST_CASE(tetrahedron_box_vf_to_ee_switch) {
     //   the edges meet while 1 ≤ ρ1 ≤ 27/13.
     // Switch: 9/2 − 5ρ1/2 = (18 − 4ρ1)/7 at ρ1 = 1, ρ2 = 2: vertex c on the box edge, (V,E).
     // Growth distance: ρ = (18 − 4ρ)/7, ρ* = 18/11 (the (V,F) line would give 9/7 > 1, off its piece).
-    Model m = build_model(load_scene(scene_path("tetra_box_switch.json")));
+    HullModel m = build_model(load_scene(scene_path("tetra_box_switch.json")));
     Curve c = build_curve(m);
     BOOST_TEST_REQUIRE(c.pieces.size() == 2u);
     const ContactLine& A = m.lines[c.env.pieces[c.pieces[0].env].line];
@@ -76,7 +76,7 @@ BOOST_AUTO_TEST_CASE(coincident_seeds_overlap_everywhere) {
         sc.lo[i] = Q(1, 10);
         sc.hi[i] = Q(10);
     }
-    Model m = build_model(sc);
+    HullModel m = build_model(sc);
     Curve c = build_curve(m);
     BOOST_TEST(c.growth.value == 0);
     BOOST_TEST(query(m, c, Q(1, 10), Q(1, 10)).verdict == Verdict::Overlapping);
@@ -101,7 +101,7 @@ BOOST_AUTO_TEST_CASE(below_rho2_zero_the_curve_goes_on_as_one_line) {
     sc.lo[0] = Q(1), sc.hi[0] = Q(6), sc.lo[1] = Q(1), sc.hi[1] = Q(2);
     finish_scene(sc, "scene");
     BOOST_TEST_REQUIRE((sc.P[1].seed == Vec3q{Q(3), Q(1), Q(0)}));
-    const Model hm = build_model(sc);
+    const HullModel hm = build_model(sc);
     const ContactLine side = line_for_normal(hm, {Z(0), Z(1), Z(0)});
     BOOST_TEST(side.slope == Q(-1, 2));
     BOOST_TEST(side.intercept == Q(1, 2));
@@ -112,7 +112,7 @@ BOOST_AUTO_TEST_CASE(below_rho2_zero_the_curve_goes_on_as_one_line) {
     BOOST_TEST_REQUIRE(walked.model.has_value());
     const Model& sm = *walked.model;
     BOOST_TEST(!sm.walk_hi.has_value());  // the walk stops where the curve reaches 0, proved beyond
-    for (const Model* m : {&hm, &sm}) {
+    for (const Model* m : {static_cast<const Model*>(&hm), &sm}) {
         const Curve c = build_curve(*m);
         BOOST_TEST_REQUIRE(c.pieces.size() == 1u);
         const ContactLine& L = m->lines[c.env.pieces[c.pieces[0].env].line];
@@ -231,7 +231,7 @@ BOOST_AUTO_TEST_CASE(contact_labels_are_the_smallest_faces_holding_the_touching_
     };
     for (const HandContact& h : cases) {
         BOOST_TEST_CONTEXT(h.name) {
-            const Model m = build_model(h.sc);
+            const HullModel m = build_model(h.sc);
             const Curve c = build_curve(m);
             BOOST_TEST_REQUIRE(c.pieces.size() == 1u);
             const ContactLine& L = m.lines[c.env.pieces[c.pieces[0].env].line];

@@ -48,7 +48,7 @@ BOOST_AUTO_TEST_CASE(random_points_agree_with_brute_force) {
     int counts[3] = {0, 0, 0};
     for (int t = 0; t < 40; ++t) {
         Scene sc = test::random_scene(g, 4 + t % 6, 4 + (t / 6) % 6);
-        Model m = build_model(sc);
+        HullModel m = build_model(sc);
         Curve c = build_curve(m);
         test::Brute brute(sc);
         auto probe = [&](const Q& r1, const Q& r2) {
@@ -87,7 +87,7 @@ BOOST_AUTO_TEST_CASE(partition_regions_agree_with_brute_force) {
         Scene sc = test::random_scene(g, 5 + t % 5, 5);
         sc.lo[0] = Q(1, 2); sc.hi[0] = Q(3);
         sc.lo[1] = Q(1, 3); sc.hi[1] = Q(5, 2);
-        Model m = build_model(sc);
+        HullModel m = build_model(sc);
         Curve c = build_curve(m);
         Partition p = build_partition(m, c);
         test::Brute brute(sc);
@@ -110,7 +110,7 @@ BOOST_AUTO_TEST_CASE(a_face_with_a_143_digit_normal_is_not_dropped) {
     // curve lay below the true one. Brute force (no hull, no pre-filter) is the oracle here, on
     // and 2^-30 around the curve at every switch point and mid-piece.
     const Scene sc = load_scene(std::string(SCALECERT_SOURCE_DIR) + "/tests/data/fuzz_huge_denominator_face.json");
-    const Model m = build_model(sc);
+    const HullModel m = build_model(sc);
     const Curve c = build_curve(m);
     const test::Brute brute(sc);
     int checked = 0;

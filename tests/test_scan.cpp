@@ -30,7 +30,7 @@ struct Tally {
 
 // Compares both paths on a scene; returns whether the scan path decided it.
 bool compare(const Scene& sc, const std::string& what, Tally& t) {
-    const Model hm = build_model(sc);
+    const HullModel hm = build_model(sc);
     const std::string hull = without_model(hm, build_curve(hm));
     auto cs = compact_scene(sc);
     if (!cs) {  // beyond machine integers (e.g. doubles with 52-bit fractions): the hull path only
@@ -105,7 +105,7 @@ BOOST_AUTO_TEST_CASE(session_verdicts_from_the_walk_equal_the_hull_paths) {
         sc.P[1].points = sphere(g, 1200, 70, 1, {Q(200), Q(10 * rep), Q(-5)});
         sc = with_means(sc, qc(1, 2), Q(2));
         Session s(sc, "test");
-        const Model hm = build_model(sc);
+        const HullModel hm = build_model(sc);
         const Curve hc = build_curve(hm);
         if (!s.walked()) continue;
         ++walked;
@@ -136,7 +136,7 @@ BOOST_AUTO_TEST_CASE(verdicts_outside_I1_and_at_coincident_seeds_build_no_hull) 
     // (4,000-gon prisms: 90 s, 8.4 GB); so did every query with coincident seeds, where every
     // pair overlaps. Crossed 100-gon prisms (test above), I1 = [1/2, 2].
     const Scene sc = test::crossed_prism_scene(100);
-    const Model hm = build_model(sc);
+    const HullModel hm = build_model(sc);
     const Curve hc = build_curve(hm);
     Session s(sc, "test", Engine::Scan);
     for (const Q& r1 : {qc(1, 1000), qc(1, 10), Q(1000)})
@@ -178,7 +178,7 @@ BOOST_AUTO_TEST_CASE(crossed_prisms_are_walked_to_rho2_zero) {
     Tally t;
     for (int n : {8, 13, 40, 100}) {
         const Scene sc = test::crossed_prism_scene(n);
-        const Model hm = build_model(sc);
+        const HullModel hm = build_model(sc);
         const Curve hc = build_curve(hm);
         BOOST_TEST(sgn(hm.lines[hc.env.pieces[hc.pieces.back().env].line].at(Q(2))) < 0);  // reaches 0 in I1
         BOOST_TEST(compare(sc, "crossed " + std::to_string(n) + "-gon prisms", t));
@@ -241,7 +241,7 @@ BOOST_AUTO_TEST_CASE(handovers_are_returned_and_counted) {
     BOOST_TEST((e.stop->reason == Handover::IdenticalLines));
     BOOST_TEST(e.stop->text() == "d on a face's edge all along a piece (identical lines)");
     // The hull path decides it: ρ2 = 3 − ρ1.
-    const Model hm = build_model(with_means(diag, Q(1, 2), Q(2)));
+    const HullModel hm = build_model(with_means(diag, Q(1, 2), Q(2)));
     const Curve hc = build_curve(hm);
     BOOST_TEST_REQUIRE(hc.pieces.size() == 1u);
     BOOST_TEST(hm.lines[hc.env.pieces[hc.pieces[0].env].line].slope == -1);

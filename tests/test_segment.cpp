@@ -9,7 +9,7 @@
 
 using namespace scalecert::internal;
 
-static Model hand_model() {
+static HullModel hand_model() {
     return build_model(load_scene(std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/tetra_box_switch.json"));
 }
 
@@ -18,7 +18,7 @@ BOOST_AUTO_TEST_CASE(seed_segment_by_hand) {
     // It leaves the tetrahedron through face c,a,b at (0,0,4) (barycentric 2/7, 2/7, 3/7 of c, a, b,
     // worked out in test_hand_curves' scene notes), i.e. t_s1 = (9/2 − 4)/(9/2) = 1/9; it leaves the
     // box through its top z = 1, t_s2 = 1/(9/2) = 2/9. The Remark: t1 = ρ1/9, t2 = 2ρ2/9.
-    Model m = hand_model();
+    HullModel m = hand_model();
     Curve c = build_curve(m);
     Segment s = make_segment(m, m.s[0], m.s[1]);
     BOOST_TEST_REQUIRE(s.t[0].size() == 1u);
@@ -42,7 +42,7 @@ BOOST_AUTO_TEST_CASE(t_plane_query_agrees_with_rho_plane) {
     int touching = 0;
     for (int t = 0; t < 10; ++t) {
         Scene sc = test::random_scene(g, 5 + t % 4, 5);
-        Model m = build_model(sc);
+        HullModel m = build_model(sc);
         Curve c = build_curve(m);
         Segment s = make_segment(m, m.s[0], m.s[1]);
         std::uniform_int_distribution<int> u(25, 400);
@@ -65,7 +65,7 @@ BOOST_AUTO_TEST_CASE(t_plane_query_agrees_with_rho_plane) {
 }
 
 BOOST_AUTO_TEST_CASE(segment_ends_must_be_inside) {
-    Model m = hand_model();
+    HullModel m = hand_model();
     BOOST_CHECK_THROW(make_segment(m, {Q(0), Q(0), Q(100)}, m.s[1]), InputError);
     BOOST_CHECK_THROW(make_segment(m, m.s[0], {Q(1), Q(1), Q(1)}), InputError);  // a box corner: on P2(lo2)'s... outside
 }
@@ -74,7 +74,7 @@ BOOST_AUTO_TEST_CASE(inner_ellipsoid_path_of_stacked_cubes) {
     // Stacked cubes (test_hand_curves): P1(1/2) = [1/2, 3/2]^3 and P2(1/2) = [1/2, 3/2]^2 × [7/2, 9/2].
     // By symmetry each maximum-volume inscribed ellipsoid is the inscribed ball of radius 1/2, at
     // (1,1,1) and (1,1,4); the shortest path between them runs from (1,1,3/2) to (1,1,7/2).
-    Model m = build_model(load_scene(std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/stacked_cubes.json"));
+    HullModel m = build_model(load_scene(std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/stacked_cubes.json"));
     Segment s = segment_by_kind(m, "ellipsoids");
     BOOST_TEST(s.kind == "ellipsoids");
     BOOST_TEST_REQUIRE(s.path.has_value());
@@ -107,7 +107,7 @@ BOOST_AUTO_TEST_CASE(ellipsoids_fall_back_to_the_seeds_when_floating_point_fails
         sc.lo[i] = Q(1, 2);
         sc.hi[i] = Q(2);
     }
-    Model m = build_model(sc);
+    HullModel m = build_model(sc);
     Segment s = segment_by_kind(m, "ellipsoids");
     BOOST_TEST(s.kind == "seeds");
     BOOST_TEST(!s.note.empty());

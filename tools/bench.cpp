@@ -90,7 +90,7 @@ void row(const std::string& m, const std::string& sc, double t, const std::strin
 std::string ratio(const char* fmt, double x) { char b[64]; std::snprintf(b, sizeof b, fmt, x); return b; }
 
 void query_benchmarks(const std::string& name, const Scene& sc, long nq) {
-    Model m = build_model(sc);
+    HullModel m = build_model(sc);
     Curve c = build_curve(m);
     fp::FpScene f = fp::to_fp(sc);
     auto gjk = fp::make_libccd_gjk(f);
@@ -135,7 +135,7 @@ void query_benchmarks(const std::string& name, const Scene& sc, long nq) {
 std::vector<std::string> growth_rows;
 void growth(const std::string& name, const Scene& sc) {
     auto t0 = Clock::now();
-    Model m = build_model(sc);
+    HullModel m = build_model(sc);
     Curve c = build_curve(m);
     double t = std::chrono::duration<double>(Clock::now() - t0).count();
     FastCurve fc(m, c);
@@ -358,11 +358,11 @@ int main(int argc, char** argv) {
         fp::FpScene f = fp::to_fp(*sc);
         auto gjk = fp::make_libccd_gjk(f);
         const long calls = small ? (quick ? 200 : 2000) : 3;
-        double t_exact = per_call([&](long) { Model m = build_model(*sc); Curve c = build_curve(m); }, calls, quick ? 1 : 3);
+        double t_exact = per_call([&](long) { HullModel m = build_model(*sc); Curve c = build_curve(m); }, calls, quick ? 1 : 3);
         const int n = 256;
         fp::GridCurve gc;
         if (small) {  // the paper's own node test: triangle-triangle on the triangulated faces
-            Model m = build_model(*sc);
+            HullModel m = build_model(*sc);
             auto tt = fp::make_paper_tritri(m, f);
             double t_tt = per_call([&](long) { gc = fp::grid_search(*tt, f, n, 20, 3, true); }, 1, 1);
             row("paper's grid search: 256x256 exhaustive, 20 bisections x3, triangle-triangle", nm, t_tt, "1 (baseline)");
@@ -379,7 +379,7 @@ int main(int argc, char** argv) {
     // Certifying 1,000 claims on two 1,000-vertex hulls (250 each of verdicts, separating planes,
     // distances and penetration depths at random pairs) against recomputing the verdicts with GJK.
     {
-        Model m = build_model(h1000);
+        HullModel m = build_model(h1000);
         Curve c = build_curve(m);
         fp::FpScene f = fp::to_fp(h1000);
         auto gjk = fp::make_libccd_gjk(f);
@@ -405,7 +405,7 @@ int main(int argc, char** argv) {
         row("1,000 verdicts recomputed with libccd GJK", "hulls (1000)", t_gjk, "1 (baseline)");
         row("1,000 claims certified (verdicts, planes, distances, depths)", "hulls (1000)", t_claims, ratio("%.0fx GJK's time", t_claims / t_gjk));
     }
-    double t10k = per_call([&](long) { Model m = build_model(h10k); Curve c = build_curve(m); }, 1, 1);
+    double t10k = per_call([&](long) { HullModel m = build_model(h10k); Curve c = build_curve(m); }, 1, 1);
     row("exact curve, two 10,000-vertex hulls", "hulls (10000)", t10k, "target < 1 s");
     // Growth with size and with degeneracy: curve time, and how often each stage decided.
     std::fprintf(stderr, "growth (exact curve; filter/exact decisions in support climbs, arc signs, queries near the curve):\n");
@@ -418,7 +418,7 @@ int main(int argc, char** argv) {
     }
     // Batch: many pairs on one core and on two.
     {
-        Model m = build_model(bx);
+        HullModel m = build_model(bx);
         Curve c = build_curve(m);
         FastCurve fc(m, c);
         long n = quick ? 200000 : 2000000;

@@ -50,7 +50,7 @@ double median(std::vector<double> v) {
 
 // The method's distances and depths where its verdict is right, against the exact ones.
 // `verdicts` are the method's own at those pairs.
-void measure_errors(const fp::Method& mm, const Model& m, const std::vector<double>& r1, const std::vector<double>& r2,
+void measure_errors(const fp::Method& mm, const HullModel& m, const std::vector<double>& r1, const std::vector<double>& r2,
                     const std::vector<Verdict>& exact, const std::vector<int>& verdicts, ExactCache& cache, AuditRow& row) {
     std::vector<double> dist_err, depth_err;
     for (size_t i = 0; i < r1.size(); ++i) {
@@ -144,7 +144,7 @@ std::vector<AuditRow> audit_scene(const std::string& name, const Scene& s, const
                                   const std::vector<std::string>& methods, const std::vector<int>& grid_ns, bool by_distance) {
     using Clock = std::chrono::steady_clock;
     auto t_exact = Clock::now();
-    Model m = build_model(s);
+    HullModel m = build_model(s);
     Curve c = build_curve(m);
     double exact_seconds = std::chrono::duration<double>(Clock::now() - t_exact).count();
     fp::FpScene f = fp::to_fp(s);

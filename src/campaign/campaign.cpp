@@ -198,7 +198,7 @@ std::vector<std::pair<std::string, std::string>> golden_scene(const std::string&
                                                               std::uint64_t run_seed, const Q& eps) {
     Rng g(scene_seed);
     Scene s = make_family_scene(family, eps, g);
-    Model m = build_model(s);
+    HullModel m = build_model(s);
     Curve c = build_curve(m);
     const std::string stem = family + "-" + std::to_string(i);
     GoldenAnswers a = golden_answers(s, m, c);

@@ -362,7 +362,7 @@ Json segment_head(const Segment& s) {
 }
 }  // namespace
 
-void add_segment_json(Json& j, const Model& m, const Curve& c, const Segment& s) {
+void add_segment_json(Json& j, const HullModel& m, const Curve& c, const Segment& s) {
     Json seg = segment_head(s);
     seg["t1"] = pieces_json(s.t[0]);
     seg["t2"] = pieces_json(s.t[1]);

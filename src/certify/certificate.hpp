@@ -22,7 +22,7 @@ Json partition_json(const Model& m, const Curve& c, const Partition& p);
 
 // Adds the segment, t1/t2 pieces, the t-plane curve, the contact loci and the hull faces (for
 // figures) to a curve document.
-void add_segment_json(Json& j, const Model& m, const Curve& c, const Segment& s);
+void add_segment_json(Json& j, const HullModel& m, const Curve& c, const Segment& s);
 // Adds t1, t2 and the directional gap to a query document.
 void add_query_segment_json(Json& j, const Segment& s, const Q& rho1, const Q& rho2);
 // |v2 − v1|·g to the nearest double (MPFR at 256 bits, then rounded).

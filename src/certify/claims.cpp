@@ -52,7 +52,7 @@ public:
 private:
     const ClaimModels& models_;
     std::string name_, where_;
-    const Model& m() const { return models_.model(); }  // the hull model: built on first use
+    const HullModel& m() const { return models_.model(); }  // the hull model: built on first use
     const Curve& c() const { return models_.curve(); }
     ClaimOptions opt_;
     std::optional<std::vector<Vec3z>> normals_;  // every facet normal, for depths (built on first use)
@@ -568,8 +568,8 @@ std::string certify_claim_lines(const ClaimModels& models, const std::string& cl
     return text + "claims: " + std::to_string(n) + ", right: " + std::to_string(n - bad) + ", wrong: " + std::to_string(bad) + "\n";
 }
 
-ClaimModels ClaimModels::of(const Model& m, const Curve& c) {
-    return {[&m]() -> const Model& { return m; }, [&c]() -> const Curve& { return c; },
+ClaimModels ClaimModels::of(const HullModel& m, const Curve& c) {
+    return {[&m]() -> const HullModel& { return m; }, [&c]() -> const Curve& { return c; },
             [&m, &c](const Q& r1, const Q& r2) { return query(m, c, r1, r2, false).verdict; },
             [&m, &c](const Q& r1) { return c.env.value(m.lines, r1); }, [&c] { return c.growth.value; }};
 }

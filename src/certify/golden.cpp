@@ -4,7 +4,7 @@
 
 namespace scalecert::internal {
 
-GoldenAnswers golden_answers(const Scene& s, const Model& m, const Curve& c) {
+GoldenAnswers golden_answers(const Scene& s, const HullModel& m, const Curve& c) {
     Json qs = Json::array();
     std::string csv = "rho1,rho2,where,verdict_at_doubles\n";
     std::vector<Q> xs;

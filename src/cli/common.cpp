@@ -167,7 +167,7 @@ internal::Session open_session(const SceneArgs& args, Engine engine, StageClock&
     return s;
 }
 
-internal::Segment parse_segment(const std::string& spec, const Model& m) {
+internal::Segment parse_segment(const std::string& spec, const HullModel& m) {
     if (spec == "seeds" || spec == "ellipsoids") return segment_by_kind(m, spec);
     auto colon = spec.find(':');
     if (colon == std::string::npos) throw InputError("--segment: expected 'seeds' or x1,y1,z1:x2,y2,z2");

@@ -52,7 +52,7 @@ void add_engine(CLI::App* sub, std::string& engine);
 Engine engine_named(const std::string& engine);
 internal::Session open_session(const SceneArgs& scene, Engine engine, internal::StageClock& clock);
 // A segment for --segment: seeds | ellipsoids | x1,y1,z1:x2,y2,z2.
-internal::Segment parse_segment(const std::string& spec, const Model& m);
+internal::Segment parse_segment(const std::string& spec, const internal::HullModel& m);
 
 // A subcommand: its CLI11 app and what runs it (returns the exit status).
 struct Command {

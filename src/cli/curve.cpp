@@ -23,10 +23,15 @@ Command add_curve(CLI::App& app) {
                 // --segment lists the faces of both hulls: the hull path.
                 const Engine e = !a->segment.empty() ? Engine::Hull : engine_named(a->engine);
                 internal::Session session = open_session(a->scene, e, clock);
-                const Model& m = session.curve_model();
-                const internal::Curve& c = session.curve();
-                Json j = curve_json(m, c);
-                if (!a->segment.empty()) add_segment_json(j, m, c, parse_segment(a->segment, m));
+                Json j;
+                if (a->segment.empty()) {
+                    j = curve_json(session.curve_model(), session.curve());
+                } else {
+                    const internal::HullModel& m = session.hull();
+                    const internal::Curve& c = session.hull_curve();
+                    j = curve_json(m, c);
+                    add_segment_json(j, m, c, parse_segment(a->segment, m));
+                }
                 emit(dump(j), a->out);
                 clock.lap("output");
                 return 0;

@@ -44,7 +44,7 @@ ContactLine make_line(const Model& m, const Vec3z& n, std::vector<int> feat1, st
     return L;
 }
 
-ContactLine line_for_normal(const Model& m, const Vec3z& n) {
+ContactLine line_for_normal(const HullModel& m, const Vec3z& n) {
     Z sup1, sup2;
     std::vector<int> f1 = m.P[0].argmax(n, nullptr, &sup1);
     std::vector<int> f2 = m.P[1].argmax(neg(n), nullptr, &sup2);
@@ -137,7 +137,7 @@ std::vector<EdgeArc<V>> edge_arcs(const Polyhedron& P, bool negate) {
 // the proper crossings of an edge's Gauss arc of P1 with one of −P2 (arcs that only touch give a
 // face normal already listed; parallel edges give none).
 template <class V>
-std::vector<V> facet_normals(const Model& m, LineStats& st) {
+std::vector<V> facet_normals(const HullModel& m, LineStats& st) {
     const V* tag = nullptr;
     std::vector<V> normals;
     for (size_t f = 0; f < m.P[0].faces.size(); ++f) normals.push_back(face_normal(m.P[0], static_cast<int>(f), tag));
@@ -212,7 +212,7 @@ std::vector<V> facet_normals(const Model& m, LineStats& st) {
 // exactly): slope and intercept as doubles of exact integers, within 10^-15 relative. Lines
 // certainly dominated are dropped; the rest are built exactly, with their contact features.
 template <class V>
-void add_lines(Model& m, const std::vector<V>& normals) {
+void add_lines(HullModel& m, const std::vector<V>& normals) {
     const Z Dz1 = m.P[0].scale * m.sden[0], Dz2 = m.P[1].scale * m.sden[1];
     const double D1 = Dz1.get_d(), D2 = Dz2.get_d(), DD = m.dden.get_d();
     // The seeds' integers in 128 bits, when they fit: numerators then need no GMP unless a
@@ -275,7 +275,7 @@ void add_lines(Model& m, const std::vector<V>& normals) {
 
 }  // namespace
 
-std::vector<Vec3z> all_facet_normals(const Model& m) {
+std::vector<Vec3z> all_facet_normals(const HullModel& m) {
     LineStats scratch;
     if (m.P[0].small() && m.P[1].small()) {
         std::vector<Vec3z> out;
@@ -294,10 +294,10 @@ void set_seeds_in_integers(Model& m) {
     m.dz = over_common_denominator(m.d, m.dden);
 }
 
-Model build_model(const Scene& scene) {
+HullModel build_model(const Scene& scene) {
     check_scene(scene, "scene");  // a scene built in code gets the reader's checks too
     StageClock clock;
-    Model m;
+    HullModel m;
     m.scene = scene;
     const char* names[2] = {"P1", "P2"};
     for (int i = 0; i < 2; ++i) {
@@ -325,7 +325,7 @@ Model build_model(const Scene& scene) {
     return m;
 }
 
-Model build_model(const Scene& scene, const std::string& name) {
+HullModel build_model(const Scene& scene, const std::string& name) {
     try {
         return build_model(scene);
     } catch (const InputError& e) {

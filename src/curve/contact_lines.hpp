@@ -62,6 +62,14 @@ struct Model {
     Vec3q pt(int i, size_t k) const { return scan ? scan->P[i].point(k) : P[i].points[k]; }
 };
 
+// The two engines' models, each accepted only where it is valid. What both hold (lines, seeds,
+// the scene's ranges) serves the curve, queries, the partition and the documents, which take a
+// Model. The hull model (build_model) also holds the exact polyhedra and every contact line:
+// what needs them (planes, distances, depths, segments, facet normals) takes a HullModel. The
+// walk's model (scan_model) has no polyhedra: its points are in `scan`.
+struct HullModel : Model {};
+struct WalkModel : Model {};
+
 // The indices of the lines y = a[i]·x + b[i] not certainly dominated by another (larger slope and
 // larger intercept: strictly below it for every x ≥ 0). a, b approximate exact values to within
 // 10^-14 relative (or are not finite); a line is dropped only when margins of 10^-12 prove it.
@@ -73,17 +81,17 @@ void set_seeds_in_integers(Model& m);
 // Builds the exact polyhedra, checks the seeds, and enumerates the contact lines: every facet
 // normal of the Minkowski sum is found; lines certainly dominated (never on the touching curve,
 // never deciding a query) are dropped before their exact values are computed.
-Model build_model(const Scene& scene);
+HullModel build_model(const Scene& scene);
 // The same, with its errors (flat points, a seed outside) prefixed by `name` ("FILE: ...").
-Model build_model(const Scene& scene, const std::string& name);
+HullModel build_model(const Scene& scene, const std::string& name);
 
 // Every facet normal of Q1 ⊕ (−Q2), primitive and sorted, the dominated ones included (Model::lines
 // keeps only those that can be on the curve). Recomputed on each call.
-std::vector<Vec3z> all_facet_normals(const Model& m);
+std::vector<Vec3z> all_facet_normals(const HullModel& m);
 
 // The line of normal n (any nonzero direction, not necessarily a facet normal of the sum):
 // support values, features and the line, computed by scanning the polyhedra.
-ContactLine line_for_normal(const Model& m, const Vec3z& n);
+ContactLine line_for_normal(const HullModel& m, const Vec3z& n);
 // The line of normal n from its contact features (maximisers, sorted) and the maxima of n·x over
 // P1's and of −n·x over P2's points times their scales.
 ContactLine make_line(const Model& m, const Vec3z& n, std::vector<int> feat1, std::vector<int> feat2, const Z& sup1,

@@ -642,9 +642,9 @@ std::vector<std::pair<int, Q>> scan_seed_weights(const CompactScene& sc, int i) 
 }
 
 namespace {
-Walked<Model> walk(std::shared_ptr<const CompactScene> sc, const std::optional<std::pair<Q, Q>>& cover) {
+Walked<WalkModel> walk(std::shared_ptr<const CompactScene> sc, const std::optional<std::pair<Q, Q>>& cover) {
     StageClock clock;
-    Model m;
+    WalkModel m;
     // The reader's checks, on the counts and ranges (the points are not copied into m.scene).
     for (int i = 0; i < 2; ++i) {
         const size_t n = sc->P[i].size();
@@ -779,12 +779,12 @@ std::vector<std::uint64_t> handover_counts() {
 }
 
 WalkResult scan_model(std::shared_ptr<const CompactScene> sc, const std::optional<std::pair<Q, Q>>& cover) {
-    Walked<Model> w = walk(std::move(sc), cover);
+    Walked<WalkModel> w = walk(std::move(sc), cover);
     if (WalkStop* s = std::get_if<WalkStop>(&w)) {
         ++g_handovers[static_cast<int>(s->reason)];
         return {std::nullopt, *s};
     }
-    return {std::move(std::get<Model>(w)), std::nullopt};
+    return {std::move(std::get<WalkModel>(w)), std::nullopt};
 }
 
 }  // namespace scalecert::internal

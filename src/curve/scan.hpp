@@ -62,7 +62,7 @@ struct WalkStop {
 };
 // The walk's model, or where it stopped.
 struct WalkResult {
-    std::optional<Model> model;
+    std::optional<WalkModel> model;
     std::optional<WalkStop> stop;
 };
 // Hand-overs in this process so far, per reason (index: the Handover value).

@@ -25,6 +25,6 @@ struct EllipsoidPath {
 // method), then the closest points of the two (projected gradient). When the ellipsoids meet,
 // the segment joins their centres. None when floating point fails (overflow, a seed not inside
 // in doubles).
-std::optional<EllipsoidPath> ellipsoid_path(const Model& m);
+std::optional<EllipsoidPath> ellipsoid_path(const HullModel& m);
 
 }  // namespace scalecert::internal

@@ -18,7 +18,7 @@ bool contains(const Model& m, int i, const Q& rho, const Vec3q& x) {
     return true;
 }
 
-std::pair<Q, Q> plane_extents(const Model& m, const Vec3q& n, const Q& rho1, const Q& rho2) {
+std::pair<Q, Q> plane_extents(const HullModel& m, const Vec3q& n, const Q& rho1, const Q& rho2) {
     // n = k·p with p primitive and k > 0: max over P1 of n·x is k·support(p), min over P2 is
     // −k·support(−p); scaling about the seed maps a value t to n·s + ρ(t − n·s).
     const Vec3z p = primitive(n);
@@ -33,14 +33,14 @@ std::pair<Q, Q> plane_extents(const Model& m, const Vec3q& n, const Q& rho1, con
     return {ns1 + rho1 * (max1 - ns1), ns2 + rho2 * (min2 - ns2)};
 }
 
-Q directional_depth_squared(const Model& m, const Vec3q& n, const Q& rho1, const Q& rho2) {
+Q directional_depth_squared(const HullModel& m, const Vec3q& n, const Q& rho1, const Q& rho2) {
     const auto [c1, c2] = plane_extents(m, n, rho1, rho2);
     const Q h = c1 - c2;  // max over P1(ρ1) − P2(ρ2) of n·x
     const Q sq = h * h / dot(n, n);
     return sgn(h) < 0 ? Q(-sq) : sq;
 }
 
-ExactDepth exact_penetration_depth(const Model& m, const std::vector<Vec3z>& normals, const Q& rho1, const Q& rho2) {
+ExactDepth exact_penetration_depth(const HullModel& m, const std::vector<Vec3z>& normals, const Q& rho1, const Q& rho2) {
     ExactDepth best{Q(-1), {}};
     for (const Vec3z& n : normals) {
         const Q h1 = m.P[0].support(n) - dot(n, m.s[0]);

@@ -59,7 +59,7 @@ Q eval(const std::vector<LinearPiece>& f, const Q& x) {
     return f.back().slope * x + f.back().intercept;
 }
 
-Segment make_segment(const Model& m, const Vec3q& v1, const Vec3q& v2) {
+Segment make_segment(const HullModel& m, const Vec3q& v1, const Vec3q& v2) {
     Segment s;
     s.v1 = v1;
     s.v2 = v2;
@@ -86,7 +86,7 @@ std::optional<Q> rho_from_t(const Segment& s, int i, const Q& t) {
     return std::nullopt;
 }
 
-Segment segment_by_kind(const Model& m, const std::string& kind) {
+Segment segment_by_kind(const HullModel& m, const std::string& kind) {
     if (kind == "seeds") {
         Segment s = make_segment(m, m.s[0], m.s[1]);
         s.kind = "seeds";

@@ -22,11 +22,11 @@ struct Segment {
 
 // The segment named by --segment: "seeds", "ellipsoids" (the paper's Step 2, falling back to the
 // seeds when its rounded ends fail the exact check), or explicit ends.
-Segment segment_by_kind(const Model& m, const std::string& kind);
+Segment segment_by_kind(const HullModel& m, const std::string& kind);
 
 // Throws InputError when v_i is not strictly inside P_i(lo_i) (then it is inside P_i(ρ) for every
 // ρ in I_i, since the polyhedra grow with ρ about interior seeds).
-Segment make_segment(const Model& m, const Vec3q& v1, const Vec3q& v2);
+Segment make_segment(const HullModel& m, const Vec3q& v1, const Vec3q& v2);
 Q eval(const std::vector<LinearPiece>& f, const Q& x);
 
 // The decision curve in the (t1, t2) plane: the image of the part of the touching curve inside

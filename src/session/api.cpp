@@ -30,6 +30,7 @@ using internal::exact_from_double;
 using internal::FastCurve;
 using internal::finish_scene;
 using internal::load_scene;
+using internal::HullModel;
 using internal::Model;
 using internal::neg;
 using internal::parse_exact;
@@ -110,9 +111,9 @@ struct Scene::Data {
     // The points as machine integers, for the scan path: large scenes only, when they fit.
     std::shared_ptr<const internal::CompactScene> compact;
     std::once_flag once;
-    std::shared_ptr<const Model> model;
-    const std::shared_ptr<const Model>& hull() {
-        std::call_once(once, [this] { model = std::make_shared<const Model>(build_model(sc, name)); });
+    std::shared_ptr<const HullModel> model;
+    const std::shared_ptr<const HullModel>& hull() {
+        std::call_once(once, [this] { model = std::make_shared<const HullModel>(build_model(sc, name)); });
         return model;
     }
 };
@@ -127,7 +128,7 @@ std::shared_ptr<Scene::Data> SceneAccess::validated(internal::Scene sc, const st
     return d;
 }
 
-std::shared_ptr<const Model> SceneAccess::hull_model(const Scene& s) { return s.d_->hull(); }
+std::shared_ptr<const HullModel> SceneAccess::hull_model(const Scene& s) { return s.d_->hull(); }
 
 Scene Scene::load(const std::string& path) { return Scene(SceneAccess::validated(load_scene(path), path)); }
 

@@ -16,7 +16,7 @@ struct SceneAccess {
     static std::shared_ptr<Scene::Data> validated(internal::Scene sc, const std::string& name);
     static Scene make(std::shared_ptr<Scene::Data> d) { return Scene(std::move(d)); }
     // The hull model (polyhedra, every contact line), built on first use and shared.
-    static std::shared_ptr<const internal::Model> hull_model(const Scene& s);
+    static std::shared_ptr<const internal::HullModel> hull_model(const Scene& s);
 };
 
 }  // namespace scalecert

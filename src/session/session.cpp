@@ -37,14 +37,14 @@ bool Session::walked() {
     return walk_.has_value();
 }
 
-const Model& Session::hull() {
+const HullModel& Session::hull() {
     if (!hull_) {
         if (hull_source_) {
             hull_ = hull_source_();
         } else {
             if (clock_) clock_->restart();
             if (!scene_ && !compact_) throw std::logic_error("Session: no scene and no hull source");
-            hull_ = std::make_shared<const Model>(build_model(scene_ ? *scene_ : full_scene(*compact_), name_));
+            hull_ = std::make_shared<const HullModel>(build_model(scene_ ? *scene_ : full_scene(*compact_), name_));
         }
     }
     return *hull_;
@@ -61,7 +61,10 @@ const Curve& Session::hull_curve() {
 }
 
 const Curve& Session::curve() { return walked() ? walk_curve_ : hull_curve(); }
-const Model& Session::curve_model() { return walked() ? *walk_ : hull(); }
+const Model& Session::curve_model() {
+    if (walked()) return *walk_;
+    return hull();
+}
 
 bool Session::walk_proves(const Q& lo, const Q& hi) const {
     return walk_ && walk_->walk_lo <= lo && (!walk_->walk_hi || hi <= *walk_->walk_hi);
@@ -140,15 +143,15 @@ std::string Session::query_text(const Q& rho1, const Q& rho2) {
 }
 
 std::string Session::partition_text() {
-    const Model& m = walked() ? *walk_ : hull();
-    const Curve& c = walked() ? walk_curve_ : hull_curve();
+    const Model& m = curve_model();
+    const Curve& c = curve();
     const std::string text = document_text(m, partition_json(m, c, build_partition(m, c)));
     lap("partition and output");
     return text;
 }
 
 ClaimModels Session::claim_models() {
-    return {[this]() -> const Model& { return hull(); }, [this]() -> const Curve& { return hull_curve(); },
+    return {[this]() -> const HullModel& { return hull(); }, [this]() -> const Curve& { return hull_curve(); },
             [this](const Q& r1, const Q& r2) { return verdict(r1, r2); }, [this](const Q& r1) { return curve_value(r1); },
             [this] { return curve().growth.value; }};
 }

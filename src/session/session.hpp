@@ -36,7 +36,7 @@ public:
     void set_clock(StageClock* clock) { clock_ = clock; }
     // A hull model built elsewhere and shared (the library's Scene builds it once for all its
     // analyses); by default the session builds its own.
-    void set_hull_source(std::function<std::shared_ptr<const Model>()> source) { hull_source_ = std::move(source); }
+    void set_hull_source(std::function<std::shared_ptr<const HullModel>()> source) { hull_source_ = std::move(source); }
 
     // The curve and the model it came from: the walk's, or the hull model's.
     const Curve& curve();
@@ -44,7 +44,7 @@ public:
     bool walked();                                   // the curve came from the walk
     const std::string& handover() const { return handover_; }  // why the walk handed over ("" if it did not)
     // The hull model and its curve over all ρ1 > 0, built on first use.
-    const Model& hull();
+    const HullModel& hull();
     const Curve& hull_curve();
     // The exact verdict at (ρ1, ρ2), ρ1, ρ2 > 0: on the walk where it proved the curve, else on
     // the hull model.
@@ -89,14 +89,14 @@ private:
     std::string name_;
     Engine engine_;
     StageClock* clock_ = nullptr;
-    std::function<std::shared_ptr<const Model>()> hull_source_;
+    std::function<std::shared_ptr<const HullModel>()> hull_source_;
     bool decided_ = false;
-    std::optional<Model> walk_;
+    std::optional<WalkModel> walk_;
     Curve walk_curve_;
     // Proved by the walk as it stands (walk_covers without walking wider).
     bool walk_proves(const Q& lo, const Q& hi) const;
     std::string handover_;
-    std::shared_ptr<const Model> hull_;
+    std::shared_ptr<const HullModel> hull_;
     std::optional<Curve> hull_curve_;
 };
 

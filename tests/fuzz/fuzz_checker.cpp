@@ -14,7 +14,7 @@ void compare_with_engine(const J& c) {
     } catch (const InputError& e) {
         fuzz::finding(std::string("the checker accepted a scene the engine cannot read: ") + e.what());
     }
-    Model m;
+    HullModel m;
     try {
         m = build_model(sc);
     } catch (const InputError&) {

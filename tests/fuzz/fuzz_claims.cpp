@@ -13,7 +13,7 @@ namespace {
 using namespace scalecert::internal;
 struct Fixed {
     Scene sc;
-    Model m;
+    HullModel m;
     Curve c;
     explicit Fixed(const char* i1) {
         sc = parse_scene_text(std::string(R"({"P1": {"vertices": [[2,0,2],[-2,2,5],[-1,-2,6],[2,0,7]], "seed": [0,0,"9/2"]},

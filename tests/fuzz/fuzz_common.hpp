@@ -31,8 +31,8 @@ inline void must_pass_checker(const std::string& text, const std::string& what) 
 
 // For a small scene the engine accepts: the curve, the partition and its certificate, which the
 // checker must accept. Returns false when the engine refuses the scene (InputError).
-inline bool certify(const Scene& sc, Model* out_model = nullptr, Curve* out_curve = nullptr) {
-    Model m;
+inline bool certify(const Scene& sc, HullModel* out_model = nullptr, Curve* out_curve = nullptr) {
+    HullModel m;
     try {
         m = build_model(sc);
     } catch (const InputError&) {

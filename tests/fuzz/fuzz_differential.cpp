@@ -38,7 +38,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         }
     }
     finish_scene(sc, "fuzz");  // the mean seeds
-    Model m;
+    HullModel m;
     Curve cv;
     if (!fuzz::certify(sc, &m, &cv)) return 0;
     test::Brute brute(sc);

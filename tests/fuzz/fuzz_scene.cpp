@@ -24,7 +24,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
                   back.lo[i] == sc.lo[i] && back.hi[i] == sc.hi[i]))
                 fuzz::finding("the compact scene reader reads another scene than the strict reader");
     }
-    scalecert::internal::Model m;
+    scalecert::internal::HullModel m;
     scalecert::internal::Curve c;
     if (fuzz::total_points(sc) <= 40 && fuzz::certify(sc, &m, &c)) fuzz::scan_agrees(sc, m, c);
     return 0;
