@@ -72,10 +72,10 @@ Json model_json(const Model& m) {
 }
 
 // Seeds strictly inside: strictly positive weights on vertices spanning 3 dimensions.
-Json seed_interior_json(const Model& m) {
+Json seed_interior_json(const SeedWeights& s) {
     Json seeds;
     const char* names[2] = {"P1", "P2"};
-    for (int i = 0; i < 2; ++i) seeds[names[i]] = weights(seed_weights(m, i));
+    for (int i = 0; i < 2; ++i) seeds[names[i]] = weights(s.w[i]);
     return seeds;
 }
 
@@ -233,7 +233,7 @@ Json scene_json(const Scene& sc) {
 
 Json curve_json(const Model& m, const Curve& c) { return curve_body(m, c, false); }
 
-Json query_json(const Model& m, const QueryResult& r) {
+Json query_json(const Model& m, const QueryResult& r, const SeedWeights& seeds) {
     Json j;
     j["format"] = kFormat;
     j["kind"] = "query";
@@ -255,7 +255,7 @@ Json query_json(const Model& m, const QueryResult& r) {
     }
     if (r.witness) cert["witness"] = witness_json(*r.witness);
     j["certificate"] = cert;
-    j["seed_interior"] = seed_interior_json(m);
+    j["seed_interior"] = seed_interior_json(seeds);
     j["scene"] = scene_json_for(m);
     return j;
 }
@@ -310,7 +310,7 @@ Json partition_json(const Model& m, const Curve& c, const Partition& p) {
     }
     regions["separated"] = seps;
     j["regions"] = regions;
-    j["seed_interior"] = seed_interior_json(m);
+    j["seed_interior"] = seed_interior_json(p.seeds);
     j["scene"] = scene_json_for(m);
     return j;
 }

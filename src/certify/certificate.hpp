@@ -17,7 +17,7 @@ Json scene_json(const Scene& s);
 void put_exact(Json& o, const std::string& key, const Q& q);
 
 Json curve_json(const Model& m, const Curve& c);
-Json query_json(const Model& m, const QueryResult& r);
+Json query_json(const Model& m, const QueryResult& r, const SeedWeights& seeds);
 Json partition_json(const Model& m, const Curve& c, const Partition& p);
 
 // Adds the segment, t1/t2 pieces, the t-plane curve, the contact loci and the hull faces (for

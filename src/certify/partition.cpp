@@ -116,8 +116,8 @@ Partition build_partition(const Model& m, const Curve& c) {
         {{s.lo[0], s.lo[1]}, {s.hi[0], s.lo[1]}, {s.hi[0], s.hi[1]}, {s.lo[0], s.hi[1]}});
     P.overlap = overlap_region(m, c, rect);
     const std::vector<Pt2>& over = P.overlap;
-    std::vector<std::pair<int, Q>> seed[2];
-    if (m.scan) seed[0] = seed_weights(m, 0), seed[1] = seed_weights(m, 1);
+    P.seeds = seed_weights(m);
+    const std::vector<std::pair<int, Q>>(&seed)[2] = P.seeds.w;
     for (const Pt2& v : over) {
         // A vertex on the curve gets the witness of its contact; one strictly above, any common
         // point: on the hull path by a program over every vertex; on the walk (no hull, up to 10^6

@@ -25,6 +25,7 @@ struct Partition {
     std::optional<Witness> growth_witness;   // at (ρ*, ρ*) when ρ* > 0
     // At (lo1, f(lo1)) and (hi1, f(hi1)) when f > 0; at lo1 when f(lo1) <= 0, at (lo1, 0) instead.
     std::optional<Witness> end_witness[2];
+    SeedWeights seeds;  // the seeds proved inside
 };
 
 // Clips a convex polygon (counter-clockwise) to ρ2 ≥ a·ρ1 + b (above = true) or ≤. Drops repeated

@@ -69,6 +69,8 @@ std::vector<std::pair<int, Q>> seed_weights(const Model& m, int i) {
     return m.scan ? scan_seed_weights(*m.scan, i) : m.P[i].interior_weights(m.s[i]);
 }
 
+SeedWeights seed_weights(const Model& m) { return {{seed_weights(m, 0), seed_weights(m, 1)}}; }
+
 Witness lift_witness(const Witness& w, const Q& rho1, const Q& rho2, const std::vector<std::pair<int, Q>> seed[2]) {
     if (rho1 < w.rho1 || rho2 < w.rho2 || sgn(rho1) <= 0 || sgn(rho2) < 0 || (sgn(rho2) == 0 && sgn(w.rho2) != 0))
         throw std::logic_error("lift_witness: not a larger pair");

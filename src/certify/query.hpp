@@ -49,6 +49,11 @@ Witness make_witness(const Model& m, const Q& rho1, const Q& rho2, const std::ve
 // Weights > 0 whose weighted mean is the seed of polyhedron i, over vertices spanning 3
 // dimensions: on the hull path every hull vertex, on the walk a few extreme points.
 std::vector<std::pair<int, Q>> seed_weights(const Model& m, int i);
+// Both seeds' weights: what every certificate shows of the seeds ("seed_interior").
+struct SeedWeights {
+    std::vector<std::pair<int, Q>> w[2];
+};
+SeedWeights seed_weights(const Model& m);
 // The witness w moved to (ρ1, ρ2) ≥ (w.rho1, w.rho2): the same point, which lies in P_i(ρ) for
 // every ρ ≥ w's as the seed is inside. Its weights become (w.ρ/ρ)·λ + (1 − w.ρ/ρ)·σ, σ the seed
 // weights (Σσ(v − s) = 0), merged by index.

@@ -50,7 +50,7 @@ Command add_query(CLI::App& app) {
                     text = session.query_text(r1, r2);
                 } else if (a->json) {
                     const Model& m = session.hull();
-                    Json j = query_json(m, internal::query(m, session.hull_curve(), r1, r2, true));
+                    Json j = query_json(m, internal::query(m, session.hull_curve(), r1, r2, true), internal::seed_weights(m));
                     add_query_segment_json(j, *seg, r1, r2);
                     text = dump(j);
                 } else {

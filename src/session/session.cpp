@@ -139,7 +139,7 @@ Session::Certified Session::certified_query(const Q& rho1, const Q& rho2) {
 
 std::string Session::query_text(const Q& rho1, const Q& rho2) {
     const Certified c = certified_query(rho1, rho2);
-    return document_text(c.model, query_json(c.model, c.result));
+    return document_text(c.model, query_json(c.model, c.result, seed_weights(c.model)));
 }
 
 std::string Session::partition_text() {

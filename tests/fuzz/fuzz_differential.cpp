@@ -70,7 +70,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         const int want = brute.classify(sc, r1, r2);
         if (test::verdict_sign(r.verdict) != want)
             fuzz::finding("verdict " + std::string(verdict_name(r.verdict)) + " at (" + r1.get_str() + ", " + r2.get_str() + "), brute force says " + std::to_string(want));
-        fuzz::must_pass_checker(dump(query_json(m, r)), "query answer");
+        fuzz::must_pass_checker(dump(query_json(m, r, seed_weights(m))), "query answer");
     }
     return 0;
 }
