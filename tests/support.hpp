@@ -33,7 +33,7 @@ struct Brute {
     // scaled extremes are n·s + ρ(extreme − n·s).
     struct Dir { Q ns1, max1, ns2, min2; };
     std::vector<Dir> dirs;
-    explicit Brute(const Scene& sc) {
+    explicit Brute(const ExactScene& sc) {
         std::vector<Vec3q> diffs;
         for (int i = 0; i < 2; ++i) {
             const auto& p = sc.P[i].points;
@@ -51,14 +51,14 @@ struct Brute {
                     if (seen.insert(m).second) dirs.push_back(extremes(sc, to_q(m)));
             }
     }
-    static Dir extremes(const Scene& sc, const Vec3q& n) {
+    static Dir extremes(const ExactScene& sc, const Vec3q& n) {
         Dir d{dot(n, sc.P[0].seed), dot(n, sc.P[0].points[0]), dot(n, sc.P[1].seed), dot(n, sc.P[1].points[0])};
         for (const Vec3q& v : sc.P[0].points) d.max1 = std::max(d.max1, dot(n, v));
         for (const Vec3q& w : sc.P[1].points) d.min2 = std::min(d.min2, dot(n, w));
         return d;
     }
     // +1 separated, 0 touching, −1 overlapping.
-    int classify(const Scene&, const Q& r1, const Q& r2) const {
+    int classify(const ExactScene&, const Q& r1, const Q& r2) const {
         int best = -1;
         for (const Dir& d : dirs) {
             int s = cmp(d.ns2 + r2 * (d.min2 - d.ns2), d.ns1 + r1 * (d.max1 - d.ns1));
@@ -75,7 +75,7 @@ struct Brute {
 // (max over P1(ρ1) = min over P2(ρ2)) holds the touching set in its maximisers; intersecting them
 // over all candidates (every facet normal of the Minkowski sum is one) gives the smallest faces.
 // Empty when no candidate touches (the pair is not touching there).
-inline std::pair<std::vector<int>, std::vector<int>> brute_contact(const Scene& sc, const Q& r1, const Q& r2) {
+inline std::pair<std::vector<int>, std::vector<int>> brute_contact(const ExactScene& sc, const Q& r1, const Q& r2) {
     // Candidate normals: cross products of two distinct directions between points (of either
     // polytope), each direction taken once up to sign.
     std::set<Vec3z> dirs;
@@ -146,8 +146,8 @@ inline std::vector<Vec3q> random_points(std::mt19937& g, int n, int range, int d
     }
 }
 
-inline Scene random_scene(std::mt19937& g, int n1, int n2) {
-    Scene sc;
+inline ExactScene random_scene(std::mt19937& g, int n1, int n2) {
+    ExactScene sc;
     std::uniform_int_distribution<int> off(-6, 6);
     sc.P[0].points = random_points(g, n1, 4, 1, {Q(0), Q(0), Q(0)});
     sc.P[1].points = random_points(g, n2, 4, 2, {Q(off(g)), Q(off(g)), Q(off(g))});
@@ -179,8 +179,8 @@ inline std::array<std::vector<std::array<long, 3>>, 2> crossed_prisms(int n) {
     return P;
 }
 // The same as a scene, with mean seeds and I1 = I2 = [1/2, 2].
-inline Scene crossed_prism_scene(int n) {
-    Scene sc;
+inline ExactScene crossed_prism_scene(int n) {
+    ExactScene sc;
     const auto P = crossed_prisms(n);
     for (int i = 0; i < 2; ++i) {
         for (const auto& v : P[i]) sc.P[i].points.push_back({Q(v[0]), Q(v[1]), Q(v[2])});

@@ -22,7 +22,7 @@ using test::slurp;
 BOOST_AUTO_TEST_CASE(certify_fp_marks_hand_derived_claims) {
     // Stacked cubes: the touching line is ρ1 + ρ2 = 3 and ρ* = 3/2 (test_hand_curves).
     HullModel m = build_model(load_scene(std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/stacked_cubes.json"));
-    Curve c = build_curve(m);
+    TouchingCurve c = build_curve(m);
     long wrong = -1;
     std::string r = certify_fp(m, c,
                                "1 2 touching\n1 1.99 separated\n1 2.01 separated\n1 2.01 intersecting\n"
@@ -44,7 +44,7 @@ BOOST_AUTO_TEST_CASE(golden_data_is_deterministic_and_exact) {
             BOOST_TEST(slurp(a / f) == slurp(b / f), f);
         }
         // Every golden verdict agrees with the brute-force classifier on the stored scene.
-        Scene sc = load_scene((a / (fam + "-0.scene.json")).string());
+        ExactScene sc = load_scene((a / (fam + "-0.scene.json")).string());
         if (sc.P[0].points.size() > 20) continue;  // the brute force is quartic; near-spheres skip it
         test::Brute brute(sc);
         auto j = nlohmann::json::parse(slurp(a / (fam + "-0.golden.json")));
@@ -98,7 +98,7 @@ BOOST_AUTO_TEST_CASE(baselines_agree_away_from_the_curve) {
     // FCL with either GJK, Bullet, the paper's triangle test, plain doubles) must agree with the
     // exact verdict; this checks their wiring, not their precision.
     HullModel m = build_model(load_scene(std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/fig5_vf_ve_ee.json"));
-    Curve c = build_curve(m);
+    TouchingCurve c = build_curve(m);
     fp::FpScene f = fp::to_fp(m.scene);
     std::vector<std::unique_ptr<fp::Method>> methods;
     methods.push_back(fp::make_libccd_gjk(f));
@@ -165,8 +165,8 @@ namespace {
 
 struct Claims {
     HullModel m;
-    Curve c;
-    explicit Claims(const Scene& s) : m(build_model(s)), c(build_curve(m)) {}
+    TouchingCurve c;
+    explicit Claims(const ExactScene& s) : m(build_model(s)), c(build_curve(m)) {}
     explicit Claims(const std::string& bundled)
         : Claims(load_scene(std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/" + bundled + ".json")) {}
     // The report of one claim (JSON), and whether it was right.
@@ -194,10 +194,10 @@ std::vector<Vec3q> cube(long x0, long y0, long z0, long side) {
 }  // namespace
 
 BOOST_AUTO_TEST_CASE(curve_claim_rules) {
-    // CLAIMS.md, "Curve claims", rule by rule. The tetrahedron on the box (test_hand_curves) with
+    // CLAIMS.md, "TouchingCurve claims", rule by rule. The tetrahedron on the box (test_hand_curves) with
     // I1 narrowed to [1/2, 3/4]: the exact curve is (V,F) ρ2 = 9/2 − 5ρ1/2 for 0 < ρ1 ≤ 1 and (E,E)
     // ρ2 = (18 − 4ρ1)/7 on [1, 27/13], so its switch point (1, 2) now lies outside I1.
-    Scene sc = load_scene(std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/tetra_box_switch.json");
+    ExactScene sc = load_scene(std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/tetra_box_switch.json");
     sc.hi[0] = Q(3, 4);
     Claims k(sc);
     auto refused = [&](const std::string& claim) {
@@ -301,7 +301,7 @@ BOOST_AUTO_TEST_CASE(distances_and_depths_by_hand) {
     // Unit-side... side-2 cubes [0,2]^3 and [3,5] x [0,2] x [3,5], seeds at their centres: at (1, 1)
     // they are 1 apart in x and 1 apart in z, and overlap in y: the closest features are two edges,
     // the squared distance 1 + 1 = 2, attained from (2, y, 2) to (3, y, 3).
-    Scene s;
+    ExactScene s;
     s.P[0].points = cube(0, 0, 0, 2);
     s.P[1].points = cube(3, 0, 3, 2);
     s.lo[0] = s.lo[1] = Q(1, 2);
@@ -438,7 +438,7 @@ BOOST_AUTO_TEST_CASE(baseline_measures_follow_one_convention) {
     // (distances_and_depths_by_hand); at (1, 1/2) the distance is 3/2 (P1's top z = 2, P2(1/2)'s
     // bottom z = 3.5). Each adapter reports its library's values in that convention: libccd's
     // direction moves P2, FCL's normal points from P1 to P2, Bullet's is negated.
-    Scene s = load_scene(std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/stacked_cubes.json");
+    ExactScene s = load_scene(std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/stacked_cubes.json");
     HullModel m = build_model(s);
     fp::FpScene f = fp::to_fp(s);
     for (const char* name : {"libccd-gjk", "libccd-mpr", "fcl-gjk-libccd", "fcl-gjk-indep", "bullet-gjk-epa"}) {
@@ -467,7 +467,7 @@ BOOST_AUTO_TEST_CASE(baseline_measures_follow_one_convention) {
 BOOST_AUTO_TEST_CASE(wrong_verdicts_by_distance_from_the_curve) {
     // Stacked cubes: f(ρ1) = 3 − ρ1 > 0 on all 15 verticals of [1/2, 5/2], so each k has 30 pairs,
     // each either scored or, when rounding to doubles lands exactly on the curve, touching.
-    Scene s = load_scene(std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/stacked_cubes.json");
+    ExactScene s = load_scene(std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/stacked_cubes.json");
     const std::vector<AuditRow> rows = audit_scene("cubes", s, Q(0), {"libccd-gjk", "double-envelope"}, {}, true);
     for (const AuditRow& r : rows) {
         if (r.has_curve) continue;

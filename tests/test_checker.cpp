@@ -242,7 +242,7 @@ BOOST_AUTO_TEST_CASE(fresh_certificates_for_random_scenes_are_valid) {
     std::mt19937 g(31);
     int partitions = 0, queries = 0;
     for (int t = 0; t < 12; ++t) {
-        scalecert::internal::Scene sc = test::random_scene(g, 4 + t % 6, 5 + t % 4);
+        scalecert::internal::ExactScene sc = test::random_scene(g, 4 + t % 6, 5 + t % 4);
         OJ s;
         for (int i = 0; i < 2; ++i) {
             OJ vs = OJ::array();

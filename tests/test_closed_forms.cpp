@@ -20,8 +20,8 @@ void check_model(const Model& m) {
         BOOST_TEST(sgn(c.slope()) < 0);  // a < 0, as the paper's (2) states
         ++lines_checked;
     }
-    Curve cv = build_curve(m);  // build_curve computes each switch by its closed form
-    for (const SwitchPoint& s : cv.switches) {
+    TouchingCurve cv = build_curve(m);  // build_curve computes each switch by its closed form
+    for (const CurveSwitch& s : cv.switches) {
         const ContactLine& A = m.lines[cv.env.pieces[cv.pieces[s.left].env].line];
         const ContactLine& B = m.lines[cv.env.pieces[cv.pieces[s.right].env].line];
         // exact intersection of the two neighbouring support-function lines
@@ -44,7 +44,7 @@ BOOST_AUTO_TEST_CASE(bundled_scenes) {
 BOOST_AUTO_TEST_CASE(random_scenes) {
     std::mt19937 g(2024);
     for (int t = 0; t < 60; ++t) {
-        Scene sc = test::random_scene(g, 4 + t % 7, 4 + (t / 7) % 7);
+        ExactScene sc = test::random_scene(g, 4 + t % 7, 4 + (t / 7) % 7);
         try {
             check_model(build_model(sc));
         } catch (const InputError&) {
@@ -62,7 +62,7 @@ BOOST_AUTO_TEST_CASE(each_equation_is_exercised) {
     std::mt19937 g(99);
     for (int t = 0; t < 80; ++t) {
         HullModel m = build_model(test::random_scene(g, 4 + t % 9, 4 + (t / 9) % 9));
-        for (const SwitchPoint& s : build_curve(m).switches) seen.insert(s.equation);
+        for (const CurveSwitch& s : build_curve(m).switches) seen.insert(s.equation);
     }
     for (const char* eq : {"(4)", "(5)", "(a)"}) BOOST_TEST(seen.count(eq) == 1u, eq);
 }

@@ -16,9 +16,9 @@ BOOST_AUTO_TEST_CASE(filtered_equals_exact) {
     std::uniform_real_distribution<double> u(0.25, 4.0);
     std::uint64_t exact_stage = 0;
     for (int t = 0; t < 25; ++t) {
-        Scene sc = test::random_scene(g, 4 + t % 6, 4 + t % 5);
+        ExactScene sc = test::random_scene(g, 4 + t % 6, 4 + t % 5);
         HullModel m = build_model(sc);
-        Curve c = build_curve(m);
+        TouchingCurve c = build_curve(m);
         FastCurve fc(m, c);
         FastDirect fd(m);
         test::Brute brute(sc);
@@ -45,7 +45,7 @@ BOOST_AUTO_TEST_CASE(filtered_equals_exact) {
 
 BOOST_AUTO_TEST_CASE(batch_on_two_threads_equals_one_by_one) {
     HullModel m = build_model(load_scene(std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/fig5_vf_ve_ee.json"));
-    Curve c = build_curve(m);
+    TouchingCurve c = build_curve(m);
     FastCurve fc(m, c);
     std::mt19937 g(5);
     std::uniform_real_distribution<double> u(0.8, 3.0);
@@ -104,9 +104,9 @@ BOOST_AUTO_TEST_CASE(model_free_queries_equal_exact) {
     std::uniform_real_distribution<double> u(0.25, 4.0);
     std::uint64_t random_filtered = 0, random_exact = 0, near = 0, near_exact = 0, touch = 0;
     for (int t = 0; t < 30; ++t) {
-        Scene sc = test::random_scene(g, 4 + t % 9, 4 + t % 7);
+        ExactScene sc = test::random_scene(g, 4 + t % 9, 4 + t % 7);
         HullModel m = build_model(sc);
-        Curve c = build_curve(m);
+        TouchingCurve c = build_curve(m);
         QuickScene qs(sc);
         for (int k = 0; k < 60; ++k) {  // random pairs: the filter should decide nearly all
             double x = u(g), y = u(g);
@@ -144,7 +144,7 @@ BOOST_AUTO_TEST_CASE(model_free_queries_at_extreme_scales) {
         mpz_ui_pow_ui(p10.get_mpz_t(), 10, 200);
         const Q f = e > 0 ? Q(p10) : Q(1, p10);
         for (int t = 0; t < 4; ++t) {
-            Scene sc = test::random_scene(g, 5 + t, 6);
+            ExactScene sc = test::random_scene(g, 5 + t, 6);
             for (int i = 0; i < 2; ++i) {
                 for (Vec3q& v : sc.P[i].points) for (Q& c : v) c *= f;
                 for (Q& c : sc.P[i].seed) c *= f;

@@ -179,7 +179,7 @@ BOOST_AUTO_TEST_CASE(machine_integer_and_gmp_models_agree) {
     const Q big(Z(1) << 40);
     size_t lines = 0;
     for (int t = 0; t < 40; ++t) {
-        Scene a = test::random_scene(g, 4 + t % 14, 4 + (t * 7) % 30);
+        ExactScene a = test::random_scene(g, 4 + t % 14, 4 + (t * 7) % 30);
         // Every other scene times 2^24: integer-scaled coordinates up to about 2^28, near the
         // machine-integer bound of 2^29, so normals and supports use most of their bits.
         const Q near_bound = t % 2 ? Q(Z(1) << 24) : Q(1);
@@ -187,7 +187,7 @@ BOOST_AUTO_TEST_CASE(machine_integer_and_gmp_models_agree) {
             a.P[i].points = times(a.P[i].points, near_bound);
             for (int k = 0; k < 3; ++k) a.P[i].seed[k] *= near_bound;
         }
-        Scene b = a;
+        ExactScene b = a;
         for (int i = 0; i < 2; ++i) {
             b.P[i].points = times(a.P[i].points, big);
             for (int k = 0; k < 3; ++k) b.P[i].seed[k] *= big;
@@ -265,7 +265,7 @@ BOOST_AUTO_TEST_CASE(interior_weights_prove_interior_points) {
 // by a static_assert.
 BOOST_AUTO_TEST_CASE(facet_normals_of_nearly_parallel_edges_by_brute_force) {
     using test::qc;
-    auto brute = [](const Scene& sc) {
+    auto brute = [](const ExactScene& sc) {
         std::vector<Vec3q> diffs;
         for (int i = 0; i < 2; ++i)
             for (const Vec3q& a : sc.P[i].points)
@@ -303,7 +303,7 @@ BOOST_AUTO_TEST_CASE(facet_normals_of_nearly_parallel_edges_by_brute_force) {
     int scenes = 0;
     for (int k : {15, 18, 21, 24, 27, 30, 33, 36}) {
         const Q eps = Q(1, Z(1) << k), big = Q(Z(1) << 31);  // coordinates × 2^31: beyond 2^29
-        Scene sc;
+        ExactScene sc;
         for (int x : {-3, 3}) {
             sc.P[0].points.push_back({Q(x) * big, Q(-1) * big, Q(0)});
             sc.P[0].points.push_back({Q(x) * big, Q(1) * big, Q(0)});

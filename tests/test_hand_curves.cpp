@@ -15,7 +15,7 @@ BOOST_AUTO_TEST_CASE(stacked_cubes_single_ff_line) {
     // the whole face when 1 + ρ1 = 4 − ρ2, i.e. ρ2 = 3 − ρ1 (F,F) — and the cubes are aligned,
     // so no other contact ever occurs. Growth distance: ρ = 3 − ρ, ρ* = 3/2.
     HullModel m = build_model(load_scene(scene_path("stacked_cubes.json")));
-    Curve c = build_curve(m);
+    TouchingCurve c = build_curve(m);
     BOOST_TEST_REQUIRE(c.pieces.size() == 1u);
     const ContactLine& L = m.lines[c.env.pieces[c.pieces[0].env].line];
     BOOST_TEST(L.slope == -1);
@@ -42,7 +42,7 @@ BOOST_AUTO_TEST_CASE(tetrahedron_box_vf_to_ee_switch) {
     // Switch: 9/2 − 5ρ1/2 = (18 − 4ρ1)/7 at ρ1 = 1, ρ2 = 2: vertex c on the box edge, (V,E).
     // Growth distance: ρ = (18 − 4ρ)/7, ρ* = 18/11 (the (V,F) line would give 9/7 > 1, off its piece).
     HullModel m = build_model(load_scene(scene_path("tetra_box_switch.json")));
-    Curve c = build_curve(m);
+    TouchingCurve c = build_curve(m);
     BOOST_TEST_REQUIRE(c.pieces.size() == 2u);
     const ContactLine& A = m.lines[c.env.pieces[c.pieces[0].env].line];
     const ContactLine& B = m.lines[c.env.pieces[c.pieces[1].env].line];
@@ -69,7 +69,7 @@ BOOST_AUTO_TEST_CASE(tetrahedron_box_vf_to_ee_switch) {
 BOOST_AUTO_TEST_CASE(coincident_seeds_overlap_everywhere) {
     // Two cubes around the same seed: every positive scaling pair overlaps; the curve lies below
     // zero, the growth distance is 0, and nothing divides by zero.
-    Scene sc;
+    ExactScene sc;
     for (int i = 0; i < 2; ++i) {
         for (int x : {-1, 1}) for (int y : {-1, 1}) for (int z : {-i - 1, i + 1}) sc.P[i].points.push_back({Q(x), Q(y), Q(z)});
         sc.P[i].seed = {Q(0), Q(0), Q(0)};
@@ -77,7 +77,7 @@ BOOST_AUTO_TEST_CASE(coincident_seeds_overlap_everywhere) {
         sc.hi[i] = Q(10);
     }
     HullModel m = build_model(sc);
-    Curve c = build_curve(m);
+    TouchingCurve c = build_curve(m);
     BOOST_TEST(c.growth.value == 0);
     BOOST_TEST(query(m, c, Q(1, 10), Q(1, 10)).verdict == Verdict::Overlapping);
     BOOST_TEST(query_direct(m, Q(1, 1000), Q(1, 1000)) == Verdict::Overlapping);
@@ -95,7 +95,7 @@ BOOST_AUTO_TEST_CASE(below_rho2_zero_the_curve_goes_on_as_one_line) {
     // The lines' envelope is 3 − ρ1 up to their meeting at (5, −2), then (1 − ρ1)/2. The curve
     // reaches ρ2 = 0 at ρ1 = 3 (the seed s2 on P1(3)'s face x = 3) and goes on as 3 − ρ1: with
     // I1 = [1, 6], one piece and no switch point at (5, −2), on both engines.
-    Scene sc;
+    ExactScene sc;
     for (long x : {-1, 1}) for (long y : {-1, 1}) for (long z : {-1, 1}) sc.P[0].points.push_back({Q(x), Q(y), Q(z)});
     for (long x : {2, 4}) for (long y : {-1, 3}) for (long z : {-2, 2}) sc.P[1].points.push_back({Q(x), Q(y), Q(z)});
     sc.lo[0] = Q(1), sc.hi[0] = Q(6), sc.lo[1] = Q(1), sc.hi[1] = Q(2);
@@ -113,7 +113,7 @@ BOOST_AUTO_TEST_CASE(below_rho2_zero_the_curve_goes_on_as_one_line) {
     const Model& sm = *walked.model;
     BOOST_TEST(!sm.walk_hi.has_value());  // the walk stops where the curve reaches 0, proved beyond
     for (const Model* m : {static_cast<const Model*>(&hm), &sm}) {
-        const Curve c = build_curve(*m);
+        const TouchingCurve c = build_curve(*m);
         BOOST_TEST_REQUIRE(c.pieces.size() == 1u);
         const ContactLine& L = m->lines[c.env.pieces[c.pieces[0].env].line];
         BOOST_TEST(L.slope == -1);
@@ -125,7 +125,7 @@ BOOST_AUTO_TEST_CASE(below_rho2_zero_the_curve_goes_on_as_one_line) {
         BOOST_TEST(c.env.value(m->lines, Q(6)) == -3);
         BOOST_TEST(c.growth.value == Q(3, 2));
     }
-    const Curve c = build_curve(hm);
+    const TouchingCurve c = build_curve(hm);
     const Partition p = build_partition(hm, c);
     BOOST_TEST_REQUIRE(p.zero_witnesses.size() == 1u);
     BOOST_TEST_REQUIRE(p.zero_witnesses[0].has_value());
@@ -136,7 +136,7 @@ BOOST_AUTO_TEST_CASE(below_rho2_zero_the_curve_goes_on_as_one_line) {
 BOOST_AUTO_TEST_CASE(scenes_built_in_code_get_the_readers_checks) {
     // The stacked cubes of the first case, assembled in code. With lo > hi, build_curve used to
     // return a piece [3, 1/2]; now build_model refuses the scene as the reader would.
-    Scene sc;
+    ExactScene sc;
     for (int k = 0; k < 8; ++k) {
         sc.P[0].points.push_back({Q(2 * (k & 1)), Q((k & 2)), Q((k & 4) / 2)});
         sc.P[1].points.push_back({Q(2 * (k & 1)), Q((k & 2)), Q(3 + (k & 4) / 2)});
@@ -145,7 +145,7 @@ BOOST_AUTO_TEST_CASE(scenes_built_in_code_get_the_readers_checks) {
     sc.hi[0] = Q(1, 2);
     sc.lo[1] = Q(1, 2);
     sc.hi[1] = Q(5, 2);
-    auto message = [](const Scene& s) {
+    auto message = [](const ExactScene& s) {
         try {
             build_model(s);
         } catch (const InputError& e) {
@@ -159,14 +159,14 @@ BOOST_AUTO_TEST_CASE(scenes_built_in_code_get_the_readers_checks) {
     sc.lo[1] = Q(0);
     BOOST_TEST(message(sc) == "scene: I2: lo must be > 0 (got '0')");
     sc.lo[1] = Q(1, 2);
-    Scene three = sc;
+    ExactScene three = sc;
     three.P[1].points.resize(3);
     BOOST_TEST(message(three) == "scene: P2: fewer than 4 vertices (3)");
     // finish_scene gives the default seeds, the means: (1, 1, 1) and (1, 1, 4) by hand.
     finish_scene(sc, "scene");
     BOOST_TEST((sc.P[0].seed == Vec3q{Q(1), Q(1), Q(1)}));
     BOOST_TEST((sc.P[1].seed == Vec3q{Q(1), Q(1), Q(4)}));
-    Curve c = build_curve(build_model(sc));
+    TouchingCurve c = build_curve(build_model(sc));
     BOOST_TEST(c.growth.value == Q(3, 2));  // ρ1 + ρ2 = 3 meets ρ1 = ρ2 at 3/2
 }
 
@@ -185,15 +185,15 @@ std::vector<Vec3q> pts(std::initializer_list<std::array<long, 3>> l) {
     for (const auto& p : l) v.push_back({Q(p[0]), Q(p[1]), Q(p[2])});
     return v;
 }
-Scene two(std::vector<Vec3q> a, std::vector<Vec3q> b) {
-    Scene sc;
+ExactScene two(std::vector<Vec3q> a, std::vector<Vec3q> b) {
+    ExactScene sc;
     sc.P[0].points = std::move(a);
     sc.P[1].points = std::move(b);
     for (int i = 0; i < 2; ++i) sc.lo[i] = Q(1, 2), sc.hi[i] = Q(3, 2);
     finish_scene(sc, "scene");
     return sc;
 }
-struct HandContact { const char* name; Scene sc; Q slope, intercept; std::string label; std::vector<int> f1, f2; };
+struct HandContact { const char* name; ExactScene sc; Q slope, intercept; std::string label; std::vector<int> f1, f2; };
 }  // namespace
 
 BOOST_AUTO_TEST_CASE(contact_labels_are_the_smallest_faces_holding_the_touching_set) {
@@ -232,7 +232,7 @@ BOOST_AUTO_TEST_CASE(contact_labels_are_the_smallest_faces_holding_the_touching_
     for (const HandContact& h : cases) {
         BOOST_TEST_CONTEXT(h.name) {
             const HullModel m = build_model(h.sc);
-            const Curve c = build_curve(m);
+            const TouchingCurve c = build_curve(m);
             BOOST_TEST_REQUIRE(c.pieces.size() == 1u);
             const ContactLine& L = m.lines[c.env.pieces[c.pieces[0].env].line];
             BOOST_TEST(L.slope == h.slope);
@@ -266,7 +266,7 @@ BOOST_AUTO_TEST_CASE(contact_labels_match_the_brute_force_on_lattice_boxes_and_p
     std::uniform_int_distribution<int> u(0, 3), off(-2, 2);
     int compared = 0, shared_lines = 0;
     for (int t = 0; t < 300; ++t) {
-        Scene sc;
+        ExactScene sc;
         for (int i = 0; i < 2; ++i) {
             const long ox = i ? off(g) : 0, oy = i ? off(g) : 0, oz = i ? off(g) : 0;
             if (t % 2 == 0) {  // a box
@@ -286,7 +286,7 @@ BOOST_AUTO_TEST_CASE(contact_labels_match_the_brute_force_on_lattice_boxes_and_p
         } catch (const InputError&) {
             continue;  // a seed on the boundary (flat lattice hulls are skipped by random_points)
         }
-        const Curve c = build_curve(m);
+        const TouchingCurve c = build_curve(m);
         for (const CurvePiece& p : c.pieces) {
             const std::optional<Q> x = contact_rho1(m, c, p);
             if (!x) continue;

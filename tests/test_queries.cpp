@@ -9,8 +9,8 @@ using namespace scalecert::internal;
 
 namespace {
 // Checks a query certificate by direct evaluation on the scaled vertices.
-void check_certificate(const Model& m, const QueryResult& r) {
-    const Scene& sc = m.scene;
+void check_certificate(const Model& m, const QueryAnswer& r) {
+    const ExactScene& sc = m.scene;
     if (r.plane) {
         const Vec3q n = to_q(m.lines[r.plane->line].normal);
         for (const Vec3q& v : sc.P[0].points) BOOST_TEST(dot(n, test::scaled(v, m.s[0], r.rho1)) <= r.plane->c1);
@@ -47,13 +47,13 @@ BOOST_AUTO_TEST_CASE(random_points_agree_with_brute_force) {
     std::uniform_int_distribution<int> num(1, 400);
     int counts[3] = {0, 0, 0};
     for (int t = 0; t < 40; ++t) {
-        Scene sc = test::random_scene(g, 4 + t % 6, 4 + (t / 6) % 6);
+        ExactScene sc = test::random_scene(g, 4 + t % 6, 4 + (t / 6) % 6);
         HullModel m = build_model(sc);
-        Curve c = build_curve(m);
+        TouchingCurve c = build_curve(m);
         test::Brute brute(sc);
         auto probe = [&](const Q& r1, const Q& r2) {
             int b = brute.classify(sc, r1, r2);
-            QueryResult r = query(m, c, r1, r2);
+            QueryAnswer r = query(m, c, r1, r2);
             BOOST_TEST(test::verdict_sign(r.verdict) == b);
             BOOST_TEST(test::verdict_sign(query_direct(m, r1, r2)) == b);
             check_certificate(m, r);
@@ -70,7 +70,7 @@ BOOST_AUTO_TEST_CASE(random_points_agree_with_brute_force) {
             probe(r1, f + eps);
             probe(r1, f - eps);
         }
-        for (const SwitchPoint& s : c.switches)
+        for (const CurveSwitch& s : c.switches)
             if (sgn(s.rho2) > 0) probe(s.rho1, s.rho2);
     }
     BOOST_TEST_MESSAGE("overlapping " << counts[0] << ", touching " << counts[1] << ", separated " << counts[2]);
@@ -84,11 +84,11 @@ BOOST_AUTO_TEST_CASE(partition_regions_agree_with_brute_force) {
     // not on the curve is separated, and a point strictly inside each separated polygon too.
     std::mt19937 g(17);
     for (int t = 0; t < 15; ++t) {
-        Scene sc = test::random_scene(g, 5 + t % 5, 5);
+        ExactScene sc = test::random_scene(g, 5 + t % 5, 5);
         sc.lo[0] = Q(1, 2); sc.hi[0] = Q(3);
         sc.lo[1] = Q(1, 3); sc.hi[1] = Q(5, 2);
         HullModel m = build_model(sc);
-        Curve c = build_curve(m);
+        TouchingCurve c = build_curve(m);
         Partition p = build_partition(m, c);
         test::Brute brute(sc);
         BOOST_TEST(p.overlap_witnesses.size() == p.overlap.size());
@@ -109,9 +109,9 @@ BOOST_AUTO_TEST_CASE(a_face_with_a_143_digit_normal_is_not_dropped) {
     // products overflowed, read the intercept as 0, and dropped a line of the curve: the engine's
     // curve lay below the true one. Brute force (no hull, no pre-filter) is the oracle here, on
     // and 2^-30 around the curve at every switch point and mid-piece.
-    const Scene sc = load_scene(std::string(SCALECERT_SOURCE_DIR) + "/tests/data/fuzz_huge_denominator_face.json");
+    const ExactScene sc = load_scene(std::string(SCALECERT_SOURCE_DIR) + "/tests/data/fuzz_huge_denominator_face.json");
     const HullModel m = build_model(sc);
-    const Curve c = build_curve(m);
+    const TouchingCurve c = build_curve(m);
     const test::Brute brute(sc);
     int checked = 0;
     for (const CurvePiece& p : c.pieces)

@@ -18,7 +18,7 @@ using test::qc;
 
 namespace {
 
-std::string without_model(const Model& m, const Curve& c) {
+std::string without_model(const Model& m, const TouchingCurve& c) {
     Json j = curve_json(m, c);
     j.erase("model");
     return dump(j);
@@ -29,7 +29,7 @@ struct Tally {
 };
 
 // Compares both paths on a scene; returns whether the scan path decided it.
-bool compare(const Scene& sc, const std::string& what, Tally& t) {
+bool compare(const ExactScene& sc, const std::string& what, Tally& t) {
     const HullModel hm = build_model(sc);
     const std::string hull = without_model(hm, build_curve(hm));
     auto cs = compact_scene(sc);
@@ -43,7 +43,7 @@ bool compare(const Scene& sc, const std::string& what, Tally& t) {
         return false;
     }
     const Model& sm = *r.model;
-    const Curve c = build_curve(sm);
+    const TouchingCurve c = build_curve(sm);
     BOOST_TEST(curve_json(sm, c)["model"]["engine"] == "scan");
     BOOST_TEST(without_model(sm, c) == hull, what);
     ++t.scanned;
@@ -62,7 +62,7 @@ std::vector<Vec3q> sphere(std::mt19937& g, int n, double R, long den, const Vec3
     return p;
 }
 
-Scene with_means(Scene sc, const Q& lo, const Q& hi) {
+ExactScene with_means(ExactScene sc, const Q& lo, const Q& hi) {
     for (int i = 0; i < 2; ++i) {
         sc.lo[i] = lo;
         sc.hi[i] = hi;
@@ -84,7 +84,7 @@ BOOST_AUTO_TEST_CASE(near_spheres_of_every_number_kind) {
         for (int rep = 0; rep < 6; ++rep) {
             std::uniform_int_distribution<int> n(40, 400), off(-3, 3);
             const double R = 50 + 10 * rep;
-            Scene sc;
+            ExactScene sc;
             sc.P[0].points = sphere(g, n(g), R, den, {Q(0), Q(0), Q(0)});
             sc.P[1].points = sphere(g, n(g), R * (1 + 0.2 * rep), den, {Q(3 * R), Q(off(g) * 10), Q(off(g) * 10)});
             sc = with_means(sc, qc(1, 2), Q(2));
@@ -100,13 +100,13 @@ BOOST_AUTO_TEST_CASE(session_verdicts_from_the_walk_equal_the_hull_paths) {
     std::mt19937 g(23);
     int walked = 0, checked = 0, on_walk = 0;
     for (int rep = 0; rep < 4; ++rep) {
-        Scene sc;
+        ExactScene sc;
         sc.P[0].points = sphere(g, 1200, 60, 1, {Q(0), Q(0), Q(0)});
         sc.P[1].points = sphere(g, 1200, 70, 1, {Q(200), Q(10 * rep), Q(-5)});
         sc = with_means(sc, qc(1, 2), Q(2));
         Session s(sc, "test");
         const HullModel hm = build_model(sc);
-        const Curve hc = build_curve(hm);
+        const TouchingCurve hc = build_curve(hm);
         if (!s.walked()) continue;
         ++walked;
         std::uniform_int_distribution<int> x(1, 64);
@@ -135,16 +135,16 @@ BOOST_AUTO_TEST_CASE(verdicts_outside_I1_and_at_coincident_seeds_build_no_hull) 
     // The second hostile review: a query far left or right of I1 fell back to the hull model
     // (4,000-gon prisms: 90 s, 8.4 GB); so did every query with coincident seeds, where every
     // pair overlaps. Crossed 100-gon prisms (test above), I1 = [1/2, 2].
-    const Scene sc = test::crossed_prism_scene(100);
+    const ExactScene sc = test::crossed_prism_scene(100);
     const HullModel hm = build_model(sc);
-    const Curve hc = build_curve(hm);
+    const TouchingCurve hc = build_curve(hm);
     Session s(sc, "test", Engine::Scan);
     for (const Q& r1 : {qc(1, 1000), qc(1, 10), Q(1000)})
         for (const Q& r2 : {qc(1, 1000), Q(1), Q(1000)}) BOOST_TEST(s.verdict(r1, r2) == query(hm, hc, r1, r2, false).verdict);
     BOOST_TEST(s.walked());
     BOOST_TEST(!s.hull_built());
     // The same prisms about one seed: every pair overlaps (derived: the seed is inside both).
-    Scene co = sc;
+    ExactScene co = sc;
     co.P[1].points = co.P[0].points;
     co.P[1].seed = co.P[0].seed;
     Session c(co, "test", Engine::Scan);
@@ -159,7 +159,7 @@ BOOST_AUTO_TEST_CASE(random_scenes_agree_or_fall_back) {
     Tally t;
     for (int rep = 0; rep < 120; ++rep) {
         std::uniform_int_distribution<int> n(4, 30);
-        Scene sc = test::random_scene(g, n(g), n(g));
+        ExactScene sc = test::random_scene(g, n(g), n(g));
         // Keep I1 where the curve is above 0 for most scenes, and vary it.
         std::uniform_int_distribution<int> a(1, 8);
         const Q lo = qc(a(g), 8), hi = lo + qc(a(g), 4);
@@ -177,9 +177,9 @@ BOOST_AUTO_TEST_CASE(random_scenes_agree_or_fall_back) {
 BOOST_AUTO_TEST_CASE(crossed_prisms_are_walked_to_rho2_zero) {
     Tally t;
     for (int n : {8, 13, 40, 100}) {
-        const Scene sc = test::crossed_prism_scene(n);
+        const ExactScene sc = test::crossed_prism_scene(n);
         const HullModel hm = build_model(sc);
-        const Curve hc = build_curve(hm);
+        const TouchingCurve hc = build_curve(hm);
         BOOST_TEST(sgn(hm.lines[hc.env.pieces[hc.pieces.back().env].line].at(Q(2))) < 0);  // reaches 0 in I1
         BOOST_TEST(compare(sc, "crossed " + std::to_string(n) + "-gon prisms", t));
     }
@@ -190,7 +190,7 @@ BOOST_AUTO_TEST_CASE(crossed_prisms_are_walked_to_rho2_zero) {
 BOOST_AUTO_TEST_CASE(turned_boxes_in_decimals) {
     Tally t;
     for (int rep = 0; rep < 12; ++rep) {
-        Scene sc;
+        ExactScene sc;
         for (int x : {-1, 1}) for (int y : {-1, 1}) for (int z : {-1, 1}) sc.P[0].points.push_back({Q(x), Q(y), qc(z * 3, 2)});
         // cos = 0.6, sin = 0.8 (3-4-5): decimals, turned about z then x, shifted by rep/10.
         for (int x : {-2, 2}) for (int y : {-1, 1}) for (int z : {-1, 1}) {
@@ -212,7 +212,7 @@ BOOST_AUTO_TEST_CASE(handovers_are_returned_and_counted) {
         for (long x : {-1, 1}) for (long y : {-1, 1}) for (long z : {-1, 1}) v.push_back({Q(cx + x), Q(cy + y), Q(cz + z)});
         return v;
     };
-    auto walk = [](Scene sc) {
+    auto walk = [](ExactScene sc) {
         sc = with_means(sc, Q(1, 2), Q(2));
         auto cs = compact_scene(sc);
         BOOST_TEST_REQUIRE(cs.has_value());
@@ -220,7 +220,7 @@ BOOST_AUTO_TEST_CASE(handovers_are_returned_and_counted) {
     };
     auto count = [](Handover h) { return handover_counts()[static_cast<size_t>(h)]; };
     // Cubes about one centre: d = 0, nothing to walk.
-    Scene same;
+    ExactScene same;
     same.P[0].points = cube(0, 0, 0);
     for (const Vec3q& p : cube(0, 0, 0)) same.P[1].points.push_back({p[0] * 2, p[1] * 2, p[2] * 2});
     const std::uint64_t before = count(Handover::SeedsCoincide);
@@ -233,7 +233,7 @@ BOOST_AUTO_TEST_CASE(handovers_are_returned_and_counted) {
     // Unit cubes [-1, 1]^3 about 0 and about (3, 3, 0): their Minkowski sum is a box, and d = (3, 3, 0)
     // runs along its vertical edge between the faces of normals x and y, whose lines are both
     // ρ1 + ρ2 = 3 (h1 = h2 = 1, n·d = 3): identical lines, which the walk hands over.
-    Scene diag;
+    ExactScene diag;
     diag.P[0].points = cube(0, 0, 0);
     diag.P[1].points = cube(3, 3, 0);
     const WalkResult e = walk(diag);
@@ -242,7 +242,7 @@ BOOST_AUTO_TEST_CASE(handovers_are_returned_and_counted) {
     BOOST_TEST(e.stop->text() == "d on a face's edge all along a piece (identical lines)");
     // The hull path decides it: ρ2 = 3 − ρ1.
     const HullModel hm = build_model(with_means(diag, Q(1, 2), Q(2)));
-    const Curve hc = build_curve(hm);
+    const TouchingCurve hc = build_curve(hm);
     BOOST_TEST_REQUIRE(hc.pieces.size() == 1u);
     BOOST_TEST(hm.lines[hc.env.pieces[hc.pieces[0].env].line].slope == -1);
     BOOST_TEST(hm.lines[hc.env.pieces[hc.pieces[0].env].line].intercept == 3);
@@ -254,7 +254,7 @@ BOOST_AUTO_TEST_CASE(handovers_are_returned_and_counted) {
 BOOST_AUTO_TEST_CASE(bundled_scenes) {
     Tally t;
     for (const auto& e : std::filesystem::directory_iterator(std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes")) {
-        const Scene sc = load_scene(e.path().string());
+        const ExactScene sc = load_scene(e.path().string());
         compare(sc, e.path().filename().string(), t);
     }
     BOOST_TEST_MESSAGE("bundled: " << t.scanned << " by the scan path, " << t.fell_back << " by the hull path");
@@ -302,8 +302,8 @@ BOOST_AUTO_TEST_CASE(compact_scene_reader) {
     auto same = [](const std::string& text) {
         auto fast = parse_scene_fast(text.data(), text.size());
         BOOST_REQUIRE_MESSAGE(fast, text);
-        const Scene full = parse_scene_text(text, "t", ".");
-        const Scene back = full_scene(*fast);
+        const ExactScene full = parse_scene_text(text, "t", ".");
+        const ExactScene back = full_scene(*fast);
         for (int i = 0; i < 2; ++i) {
             BOOST_TEST((back.P[i].points == full.P[i].points));
             BOOST_TEST((back.P[i].seed == full.P[i].seed));

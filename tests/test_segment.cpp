@@ -19,7 +19,7 @@ BOOST_AUTO_TEST_CASE(seed_segment_by_hand) {
     // worked out in test_hand_curves' scene notes), i.e. t_s1 = (9/2 − 4)/(9/2) = 1/9; it leaves the
     // box through its top z = 1, t_s2 = 1/(9/2) = 2/9. The Remark: t1 = ρ1/9, t2 = 2ρ2/9.
     HullModel m = hand_model();
-    Curve c = build_curve(m);
+    TouchingCurve c = build_curve(m);
     Segment s = make_segment(m, m.s[0], m.s[1]);
     BOOST_TEST_REQUIRE(s.t[0].size() == 1u);
     BOOST_TEST_REQUIRE(s.t[1].size() == 1u);
@@ -41,9 +41,9 @@ BOOST_AUTO_TEST_CASE(t_plane_query_agrees_with_rho_plane) {
     std::mt19937 g(3);
     int touching = 0;
     for (int t = 0; t < 10; ++t) {
-        Scene sc = test::random_scene(g, 5 + t % 4, 5);
+        ExactScene sc = test::random_scene(g, 5 + t % 4, 5);
         HullModel m = build_model(sc);
-        Curve c = build_curve(m);
+        TouchingCurve c = build_curve(m);
         Segment s = make_segment(m, m.s[0], m.s[1]);
         std::uniform_int_distribution<int> u(25, 400);
         for (int k = 0; k < 30; ++k) {
@@ -96,7 +96,7 @@ BOOST_AUTO_TEST_CASE(inner_ellipsoid_path_of_stacked_cubes) {
 BOOST_AUTO_TEST_CASE(ellipsoids_fall_back_to_the_seeds_when_floating_point_fails) {
     // A needle 10^29 long next to a point 10^31 away: the inner ellipsoid cannot be computed in
     // doubles (this once crashed); the segment falls back to the seeds and says so.
-    Scene sc;
+    ExactScene sc;
     sc.P[0].points = {{Q(Z("123456789012345678901234567890")), Q(0), Q(0)}, {Q(0), Q(1), Q(0)}, {Q(0), Q(0), Q(1)}, {Q(-1), Q(-1), Q(-1)}};
     Z far("10000000000000000000000000000000");
     sc.P[1].points = {{Q(far), Q(0), Q(0)}, {Q(far + 1), Q(0), Q(0)}, {Q(far), Q(1), Q(0)}, {Q(far), Q(0), Q(1)}};

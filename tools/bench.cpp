@@ -46,8 +46,8 @@ Q qc(long p, long q) { Q r(p, q); r.canonicalize(); return r; }
 
 // Two boxes: P1 = [−1,1]^3; P2 a 2×1×1 box turned by the exact rotation with cos 3/5, sin 4/5
 // about z, then about x, centred at (3, 1/2, 1/3).
-Scene boxes() {
-    Scene s;
+ExactScene boxes() {
+    ExactScene s;
     for (int x : {-1, 1}) for (int y : {-1, 1}) for (int z : {-1, 1}) s.P[0].points.push_back({Q(x), Q(y), Q(z)});
     for (int x : {-2, 2}) for (int y : {-1, 1}) for (int z : {-1, 1}) {
         Q X = qc(3 * x - 4 * y, 5), Y = qc(4 * x + 3 * y, 5), Z = Q(z);
@@ -62,10 +62,10 @@ Scene boxes() {
 }
 
 // n integer points near spheres of radius R (a many-vertex hull), the second offset by 3R.
-Scene spheres(int n, long R, unsigned seed) {
+ExactScene spheres(int n, long R, unsigned seed) {
     std::mt19937_64 g(seed);
     std::normal_distribution<double> N(0, 1);
-    Scene s;
+    ExactScene s;
     for (int i = 0; i < 2; ++i) {
         for (int k = 0; k < n; ++k) {
             double x = N(g), y = N(g), z = N(g), l = std::sqrt(x * x + y * y + z * z);
@@ -89,9 +89,9 @@ void row(const std::string& m, const std::string& sc, double t, const std::strin
 }
 std::string ratio(const char* fmt, double x) { char b[64]; std::snprintf(b, sizeof b, fmt, x); return b; }
 
-void query_benchmarks(const std::string& name, const Scene& sc, long nq) {
+void query_benchmarks(const std::string& name, const ExactScene& sc, long nq) {
     HullModel m = build_model(sc);
-    Curve c = build_curve(m);
+    TouchingCurve c = build_curve(m);
     fp::FpScene f = fp::to_fp(sc);
     auto gjk = fp::make_libccd_gjk(f);
     FastCurve fc(m, c);
@@ -133,10 +133,10 @@ void query_benchmarks(const std::string& name, const Scene& sc, long nq) {
 }
 
 std::vector<std::string> growth_rows;
-void growth(const std::string& name, const Scene& sc) {
+void growth(const std::string& name, const ExactScene& sc) {
     auto t0 = Clock::now();
     HullModel m = build_model(sc);
-    Curve c = build_curve(m);
+    TouchingCurve c = build_curve(m);
     double t = std::chrono::duration<double>(Clock::now() - t0).count();
     FastCurve fc(m, c);
     for (int i = 1; i < 200; ++i) {  // pairs at relative distances 2^-10 .. 2^-50 from the curve
@@ -344,7 +344,7 @@ int main(int argc, char** argv) {
     }
     long nq = quick ? 20000 : 200000;
     std::fprintf(stderr, "scalecert-bench%s (times per call, best of 3)\n", quick ? " --quick" : "");
-    Scene bx = boxes(), h1000 = spheres(1000, 1000000, 1), h10k = spheres(10000, 10000000, 2);
+    ExactScene bx = boxes(), h1000 = spheres(1000, 1000000, 1), h10k = spheres(10000, 10000000, 2);
     query_benchmarks("boxes (8+8)", bx, nq);
     query_benchmarks("hulls (1000)", h1000, nq / 10);
     // The whole curve: exact engine against the paper's grid search at 256 x 256 with 20 bisection
@@ -358,7 +358,7 @@ int main(int argc, char** argv) {
         fp::FpScene f = fp::to_fp(*sc);
         auto gjk = fp::make_libccd_gjk(f);
         const long calls = small ? (quick ? 200 : 2000) : 3;
-        double t_exact = per_call([&](long) { HullModel m = build_model(*sc); Curve c = build_curve(m); }, calls, quick ? 1 : 3);
+        double t_exact = per_call([&](long) { HullModel m = build_model(*sc); TouchingCurve c = build_curve(m); }, calls, quick ? 1 : 3);
         const int n = 256;
         fp::GridCurve gc;
         if (small) {  // the paper's own node test: triangle-triangle on the triangulated faces
@@ -380,7 +380,7 @@ int main(int argc, char** argv) {
     // distances and penetration depths at random pairs) against recomputing the verdicts with GJK.
     {
         HullModel m = build_model(h1000);
-        Curve c = build_curve(m);
+        TouchingCurve c = build_curve(m);
         fp::FpScene f = fp::to_fp(h1000);
         auto gjk = fp::make_libccd_gjk(f);
         std::mt19937_64 g(7);
@@ -405,7 +405,7 @@ int main(int argc, char** argv) {
         row("1,000 verdicts recomputed with libccd GJK", "hulls (1000)", t_gjk, "1 (baseline)");
         row("1,000 claims certified (verdicts, planes, distances, depths)", "hulls (1000)", t_claims, ratio("%.0fx GJK's time", t_claims / t_gjk));
     }
-    double t10k = per_call([&](long) { HullModel m = build_model(h10k); Curve c = build_curve(m); }, 1, 1);
+    double t10k = per_call([&](long) { HullModel m = build_model(h10k); TouchingCurve c = build_curve(m); }, 1, 1);
     row("exact curve, two 10,000-vertex hulls", "hulls (10000)", t10k, "target < 1 s");
     // Growth with size and with degeneracy: curve time, and how often each stage decided.
     std::fprintf(stderr, "growth (exact curve; filter/exact decisions in support climbs, arc signs, queries near the curve):\n");
@@ -419,7 +419,7 @@ int main(int argc, char** argv) {
     // Batch: many pairs on one core and on two.
     {
         HullModel m = build_model(bx);
-        Curve c = build_curve(m);
+        TouchingCurve c = build_curve(m);
         FastCurve fc(m, c);
         long n = quick ? 200000 : 2000000;
         std::mt19937_64 g(3);

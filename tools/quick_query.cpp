@@ -54,7 +54,7 @@ double permanent(const D3& a, const D3& b, const D3& c) {
 }
 }  // namespace
 
-QuickScene::QuickScene(const Scene& scene) : scene_(scene) {
+QuickScene::QuickScene(const ExactScene& scene) : scene_(scene) {
     for (const Vec3q& v : scene.P[0].points) q1_.push_back(rounded(sub(v, scene.P[0].seed)));
     for (const Vec3q& w : scene.P[1].points) q2_.push_back(rounded(sub(w, scene.P[1].seed)));
     d_ = rounded(sub(scene.P[1].seed, scene.P[0].seed));

@@ -17,13 +17,13 @@ namespace scalecert::internal {
 // Not for concurrent use: the counts and the lazily built model are per object (one per thread).
 class QuickScene {
 public:
-    explicit QuickScene(const Scene& scene);
+    explicit QuickScene(const ExactScene& scene);
     ~QuickScene();
     Verdict classify(double rho1, double rho2) const;  // ρ1, ρ2 > 0 (their exact values)
     mutable StageCounts counts;  // filtered = certified by GJK and the filter; exact = model built or used
 
 private:
-    Scene scene_;
+    ExactScene scene_;
     std::vector<D3> q1_, q2_;  // v − s1 and w − s2 rounded to nearest (relative error ≤ 2^-53 per component)
     D3 d_{};                   // s2 − s1 rounded to nearest
     mutable std::unique_ptr<Model> model_;  // built on the first undecided query

@@ -16,10 +16,10 @@ namespace scalecert::internal {
 namespace {
 // Matches the exact switch points inside the rectangle with the junctions found: missed when no
 // junction is within two grid cells; merged when two switch points share their nearest junction.
-void match_junctions(const Curve& c, const Scene& s, const std::vector<double>& found, double cell, AuditRow& r) {
+void match_junctions(const TouchingCurve& c, const ExactScene& s, const std::vector<double>& found, double cell, AuditRow& r) {
     r.junctions_found = static_cast<int>(found.size());
     std::vector<int> claimed(found.size(), 0);
-    for (const SwitchPoint& sp : c.switches) {
+    for (const CurveSwitch& sp : c.switches) {
         if (sp.rho2 < s.lo[1] || sp.rho2 > s.hi[1]) continue;
         double x = to_double_rn(sp.rho1), best = INFINITY;
         size_t arg = 0;
@@ -104,7 +104,7 @@ struct DistancePairs {
     std::vector<double> x, y;
     std::vector<Verdict> exact;
 };
-DistancePairs distance_pairs(const Model& m, const Curve& c, const Scene& s) {
+DistancePairs distance_pairs(const Model& m, const TouchingCurve& c, const ExactScene& s) {
     DistancePairs p;
     for (int k = 4; k <= 52; k += 4)
         for (int j = 1; j < 16; ++j) {
@@ -140,12 +140,12 @@ void wrong_by_distance(const fp::Method& mm, const DistancePairs& p, AuditRow& r
 
 }  // namespace
 
-std::vector<AuditRow> audit_scene(const std::string& name, const Scene& s, const Q& eps,
+std::vector<AuditRow> audit_scene(const std::string& name, const ExactScene& s, const Q& eps,
                                   const std::vector<std::string>& methods, const std::vector<int>& grid_ns, bool by_distance) {
     using Clock = std::chrono::steady_clock;
     auto t_exact = Clock::now();
     HullModel m = build_model(s);
-    Curve c = build_curve(m);
+    TouchingCurve c = build_curve(m);
     double exact_seconds = std::chrono::duration<double>(Clock::now() - t_exact).count();
     fp::FpScene f = fp::to_fp(s);
     // Query pairs (doubles) and their exact verdicts.
@@ -199,7 +199,7 @@ std::vector<AuditRow> audit_scene(const std::string& name, const Scene& s, const
         r.eps = eps;
         r.has_curve = true;
         r.seconds_per_curve = exact_seconds;
-        for (const SwitchPoint& sp : c.switches) r.exact_junctions += sp.rho2 >= s.lo[1] && sp.rho2 <= s.hi[1];
+        for (const CurveSwitch& sp : c.switches) r.exact_junctions += sp.rho2 >= s.lo[1] && sp.rho2 <= s.hi[1];
         r.junctions_found = r.exact_junctions;
         rows.push_back(r);
     }
@@ -234,7 +234,7 @@ std::vector<AuditRow> audit_scene(const std::string& name, const Scene& s, const
                 }
             }
             double cell = (f.hi[0] - f.lo[0]) / (n - 1);
-            for (const SwitchPoint& sp : c.switches) r.exact_junctions += sp.rho2 >= s.lo[1] && sp.rho2 <= s.hi[1];
+            for (const CurveSwitch& sp : c.switches) r.exact_junctions += sp.rho2 >= s.lo[1] && sp.rho2 <= s.hi[1];
             match_junctions(c, s, jx, cell, r);
             rows.push_back(r);
             // The same samples with the Appendix's equations (the paper's remedy, Figs. 3-4): at

@@ -10,7 +10,7 @@ namespace scalecert::internal {
 // below the curve; and the grid search at each resolution in grid_ns.
 // With by_distance, also the wrong-verdict counts on 15 verticals at relative distances 2^-4 …
 // 2^-52 above and below the curve (their own 390 pairs; the other counts are unchanged).
-std::vector<AuditRow> audit_scene(const std::string& name, const Scene& s, const Q& eps,
+std::vector<AuditRow> audit_scene(const std::string& name, const ExactScene& s, const Q& eps,
                                   const std::vector<std::string>& methods, const std::vector<int>& grid_ns,
                                   bool by_distance = false);
 // The audit campaigns run (CampaignArgs::auditor): these baselines' methods and audit_scene.

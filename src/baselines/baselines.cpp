@@ -7,7 +7,7 @@
 
 namespace scalecert::internal::fp {
 
-FpScene to_fp(const Scene& s) {
+FpScene to_fp(const ExactScene& s) {
     FpScene f;
     for (int i = 0; i < 2; ++i) {
         for (const Vec3q& v : s.P[i].points) f.P[i].pts.push_back({to_double_rn(v[0]), to_double_rn(v[1]), to_double_rn(v[2])});

@@ -22,7 +22,7 @@ struct FpScene {
     Polytope P[2];
     double lo[2], hi[2];
 };
-FpScene to_fp(const Scene& s);
+FpScene to_fp(const ExactScene& s);
 
 // What a method measures besides its verdict, as its API returns it: the distance between
 // separated bodies (with closest points where it gives them), or the penetration depth of

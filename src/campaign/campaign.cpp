@@ -197,9 +197,9 @@ Json reading(F&& f) {
 std::vector<std::pair<std::string, std::string>> golden_scene(const std::string& family, int i, std::uint64_t scene_seed,
                                                               std::uint64_t run_seed, const Q& eps) {
     Rng g(scene_seed);
-    Scene s = make_family_scene(family, eps, g);
+    ExactScene s = make_family_scene(family, eps, g);
     HullModel m = build_model(s);
-    Curve c = build_curve(m);
+    TouchingCurve c = build_curve(m);
     const std::string stem = family + "-" + std::to_string(i);
     GoldenAnswers a = golden_answers(s, m, c);
     Json j = std::move(a.curve);
@@ -228,7 +228,7 @@ std::string run_shard(const CampaignArgs& a, const Shard& s) {
     std::vector<AuditRow> rows;
     if (s.scene_file >= 0) {
         const std::string& p = a.scenes[static_cast<size_t>(s.scene_file)];
-        Scene sc;
+        ExactScene sc;
         // The scene file and the meshes it names, as read: a resumed run checks them against the
         // run's inputs, so that no shard computed from older contents is merged.
         j["inputs"] = reading([&] { sc = load_scene(p, a.opt); });  // its errors name the file already

@@ -23,7 +23,7 @@ std::vector<Vec3q> box(const Q& hx, const Q& hy, const Q& hz, const Vec3q& c) {
     for (int x : {-1, 1}) for (int y : {-1, 1}) for (int z : {-1, 1}) p.push_back({c[0] + hx * x, c[1] + hy * y, c[2] + hz * z});
     return p;
 }
-void finish(Scene& s, const Q& lo, const Q& hi) {
+void finish(ExactScene& s, const Q& lo, const Q& hi) {
     for (int i = 0; i < 2; ++i) {
         if (!s.P[i].seed_given) {
             Vec3q c{Q(0), Q(0), Q(0)};
@@ -61,8 +61,8 @@ std::string family_description(const std::string& name) {
     throw InputError("--family: unknown family " + quoted(name));
 }
 
-Scene make_family_scene(const std::string& name, const Q& eps, Rng& g) {
-    Scene s;
+ExactScene make_family_scene(const std::string& name, const Q& eps, Rng& g) {
+    ExactScene s;
     const Q lo = qc(1, 2), hi = Q(3);
     if (name == "random") {
         s.P[0].points = random_poly(g, static_cast<int>(g.uniform(6, 12)), 4, v3(Q(0), Q(0), Q(0)));

@@ -86,7 +86,7 @@ const char* kVerticesPlaceholder[2] = {"@scalecert-vertices-P1@", "@scalecert-ve
 
 Json scene_json_for(const Model& m) {
     if (!m.scan) return scene_json(m.scene);
-    Scene sc = m.scene;  // seeds and ranges; no points
+    ExactScene sc = m.scene;  // seeds and ranges; no points
     Json j = scene_json(sc);
     const char* names[2] = {"P1", "P2"};
     for (int i = 0; i < 2; ++i) j[names[i]]["vertices"] = kVerticesPlaceholder[i];
@@ -139,7 +139,7 @@ Json witness_json(const Witness& w) {
     return j;
 }
 
-Json piece_json(const Model& m, const Curve& c, const CurvePiece& p, bool certificate) {
+Json piece_json(const Model& m, const TouchingCurve& c, const CurvePiece& p, bool certificate) {
     const EnvPiece& e = c.env.pieces[p.env];
     const ContactLine& L = m.lines[e.line];
     Json j;
@@ -181,7 +181,7 @@ Json piece_json(const Model& m, const Curve& c, const CurvePiece& p, bool certif
     return j;
 }
 
-Json switch_json(const SwitchPoint& s) {
+Json switch_json(const CurveSwitch& s) {
     Json j;
     put(j, "rho1", s.rho1);
     put(j, "rho2", s.rho2);
@@ -195,7 +195,7 @@ Json switch_json(const SwitchPoint& s) {
     return j;
 }
 
-Json curve_body(const Model& m, const Curve& c, bool certificate) {
+Json curve_body(const Model& m, const TouchingCurve& c, bool certificate) {
     Json j;
     j["format"] = kFormat;
     j["kind"] = certificate ? "partition" : "curve";
@@ -203,7 +203,7 @@ Json curve_body(const Model& m, const Curve& c, bool certificate) {
     for (const CurvePiece& p : c.pieces) pieces.push_back(piece_json(m, c, p, certificate));
     j["pieces"] = pieces;
     Json sw = Json::array();
-    for (const SwitchPoint& s : c.switches) sw.push_back(switch_json(s));
+    for (const CurveSwitch& s : c.switches) sw.push_back(switch_json(s));
     j["switch_points"] = sw;
     put(j, "growth_distance", c.growth.value);
     j["growth_distance_in_rectangle"] = c.growth.in_rectangle;
@@ -215,7 +215,7 @@ Json curve_body(const Model& m, const Curve& c, bool certificate) {
 
 void put_exact(Json& o, const std::string& key, const Q& q) { put(o, key, q); }
 
-Json scene_json(const Scene& sc) {
+Json scene_json(const ExactScene& sc) {
     Json s;
     const char* names[2] = {"P1", "P2"};
     for (int i = 0; i < 2; ++i) {
@@ -231,9 +231,9 @@ Json scene_json(const Scene& sc) {
     return s;
 }
 
-Json curve_json(const Model& m, const Curve& c) { return curve_body(m, c, false); }
+Json curve_json(const Model& m, const TouchingCurve& c) { return curve_body(m, c, false); }
 
-Json query_json(const Model& m, const QueryResult& r, const SeedWeights& seeds) {
+Json query_json(const Model& m, const QueryAnswer& r, const SeedWeights& seeds) {
     Json j;
     j["format"] = kFormat;
     j["kind"] = "query";
@@ -260,7 +260,7 @@ Json query_json(const Model& m, const QueryResult& r, const SeedWeights& seeds) 
     return j;
 }
 
-Json partition_json(const Model& m, const Curve& c, const Partition& p) {
+Json partition_json(const Model& m, const TouchingCurve& c, const Partition& p) {
     Json j = curve_body(m, c, true);
     for (size_t k = 0; k < c.pieces.size(); ++k)
         if (p.piece_witnesses[k]) j["pieces"][k]["contact_witness"] = witness_json(*p.piece_witnesses[k]);
@@ -362,7 +362,7 @@ Json segment_head(const Segment& s) {
 }
 }  // namespace
 
-void add_segment_json(Json& j, const HullModel& m, const Curve& c, const Segment& s) {
+void add_segment_json(Json& j, const HullModel& m, const TouchingCurve& c, const Segment& s) {
     Json seg = segment_head(s);
     seg["t1"] = pieces_json(s.t[0]);
     seg["t2"] = pieces_json(s.t[1]);
@@ -374,7 +374,7 @@ void add_segment_json(Json& j, const HullModel& m, const Curve& c, const Segment
     }
     j["t_curve"] = tc;
     j["t_curve_double"] = tcd;
-    // Contact loci: the common point at each curve vertex (the contact point moves linearly
+    // ContactFeatures loci: the common point at each curve vertex (the contact point moves linearly
     // between them on (V,F), (F,V) and (E,E) pieces).
     Json loci = Json::array();
     for (const auto& v : curve_vertices(m, c)) {

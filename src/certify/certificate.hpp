@@ -11,18 +11,18 @@ namespace scalecert::internal {
 using Json = nlohmann::ordered_json;
 
 // The scene exactly, in the scene-file format (every number an exact string, seeds explicit).
-Json scene_json(const Scene& s);
+Json scene_json(const ExactScene& s);
 
 // o[key] = exact string, o[key + "_double"] = nearest double.
 void put_exact(Json& o, const std::string& key, const Q& q);
 
-Json curve_json(const Model& m, const Curve& c);
-Json query_json(const Model& m, const QueryResult& r, const SeedWeights& seeds);
-Json partition_json(const Model& m, const Curve& c, const Partition& p);
+Json curve_json(const Model& m, const TouchingCurve& c);
+Json query_json(const Model& m, const QueryAnswer& r, const SeedWeights& seeds);
+Json partition_json(const Model& m, const TouchingCurve& c, const Partition& p);
 
 // Adds the segment, t1/t2 pieces, the t-plane curve, the contact loci and the hull faces (for
 // figures) to a curve document.
-void add_segment_json(Json& j, const HullModel& m, const Curve& c, const Segment& s);
+void add_segment_json(Json& j, const HullModel& m, const TouchingCurve& c, const Segment& s);
 // Adds t1, t2 and the directional gap to a query document.
 void add_query_segment_json(Json& j, const Segment& s, const Q& rho1, const Q& rho2);
 // |v2 − v1|·g to the nearest double (MPFR at 256 bits, then rounded).

@@ -53,7 +53,7 @@ private:
     const ClaimModels& models_;
     std::string name_, where_;
     const HullModel& m() const { return models_.model(); }  // the hull model: built on first use
-    const Curve& c() const { return models_.curve(); }
+    const TouchingCurve& c() const { return models_.curve(); }
     ClaimOptions opt_;
     std::optional<std::vector<Vec3z>> normals_;  // every facet normal, for depths (built on first use)
     struct ExactSwitch { Q rho1, rho2; std::string label; };
@@ -231,7 +231,7 @@ private:
         return std::nullopt;
     }
 
-    // A curve claim: the rules of CLAIMS.md ("Curve claims"), each applied here once.
+    // A curve claim: the rules of CLAIMS.md ("TouchingCurve claims"), each applied here once.
     bool curve(const JNode& j, Json& o, std::string& text) {
         only(j, {"kind", "vertices", "pieces", "switch_points"});
         struct Seg { Q x0, y0, x1, y1; std::optional<std::string> label; };
@@ -568,8 +568,8 @@ std::string certify_claim_lines(const ClaimModels& models, const std::string& cl
     return text + "claims: " + std::to_string(n) + ", right: " + std::to_string(n - bad) + ", wrong: " + std::to_string(bad) + "\n";
 }
 
-ClaimModels ClaimModels::of(const HullModel& m, const Curve& c) {
-    return {[&m]() -> const HullModel& { return m; }, [&c]() -> const Curve& { return c; },
+ClaimModels ClaimModels::of(const HullModel& m, const TouchingCurve& c) {
+    return {[&m]() -> const HullModel& { return m; }, [&c]() -> const TouchingCurve& { return c; },
             [&m, &c](const Q& r1, const Q& r2) { return query(m, c, r1, r2, false).verdict; },
             [&m, &c](const Q& r1) { return c.env.value(m.lines, r1); }, [&c] { return c.growth.value; }};
 }

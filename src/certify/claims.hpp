@@ -25,20 +25,20 @@ using scalecert::ClaimOptions;
 // walk where it proved the curve: no hull for verdicts on a large scene).
 struct ClaimModels {
     std::function<const HullModel&()> model;
-    std::function<const Curve&()> curve;
+    std::function<const TouchingCurve&()> curve;
     std::function<Verdict(const Q&, const Q&)> verdict;
     std::function<Q(const Q&)> curve_value;
     std::function<Q()> growth;  // ρ*
-    static ClaimModels of(const HullModel& m, const Curve& c);
+    static ClaimModels of(const HullModel& m, const TouchingCurve& c);
 };
 // (*count, when given: the number of claims.)
 std::string certify_fp(const ClaimModels& models, const std::string& claims, const std::string& name, const ClaimOptions& opt,
                        long* wrong, long* count = nullptr);
-inline std::string certify_fp(const HullModel& m, const Curve& c, const std::string& claims, const std::string& name,
+inline std::string certify_fp(const HullModel& m, const TouchingCurve& c, const std::string& claims, const std::string& name,
                               const ClaimOptions& opt, long* wrong) {
     return certify_fp(ClaimModels::of(m, c), claims, name, opt, wrong);
 }
-inline std::string certify_fp(const HullModel& m, const Curve& c, const std::string& claims, const std::string& name,
+inline std::string certify_fp(const HullModel& m, const TouchingCurve& c, const std::string& claims, const std::string& name,
                               bool binary_doubles, bool json, long* wrong) {
     return certify_fp(m, c, claims, name, ClaimOptions{binary_doubles, Q(0), json}, wrong);
 }

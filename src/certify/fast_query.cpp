@@ -14,7 +14,7 @@ namespace {
 constexpr double kRel = filter::kQueryRel;  // predicates.hpp, bound 4
 }  // namespace
 
-FastCurve::FastCurve(const Model& m, const Curve& c) : m_(m), c_(c) {
+FastCurve::FastCurve(const Model& m, const TouchingCurve& c) : m_(m), c_(c) {
     for (const EnvPiece& p : c.env.pieces) {
         const ContactLine& L = m.lines[p.line];
         a_.push_back(to_double_rn(L.slope));

@@ -16,13 +16,13 @@ struct StageCounts {
 
 class FastCurve {
 public:
-    FastCurve(const Model& m, const Curve& c);
+    FastCurve(const Model& m, const TouchingCurve& c);
     Verdict classify(double rho1, double rho2) const;  // ρ1, ρ2 > 0
     mutable StageCounts counts;
 
 private:
     const Model& m_;
-    const Curve& c_;
+    const TouchingCurve& c_;
     std::vector<double> breaks_;    // right ends of the envelope pieces, nearest doubles
     std::vector<double> a_, b_;     // slope and intercept of each piece, nearest doubles
 };

@@ -4,12 +4,12 @@
 
 namespace scalecert::internal {
 
-GoldenAnswers golden_answers(const Scene& s, const HullModel& m, const Curve& c) {
+GoldenAnswers golden_answers(const ExactScene& s, const HullModel& m, const TouchingCurve& c) {
     Json qs = Json::array();
     std::string csv = "rho1,rho2,where,verdict_at_doubles\n";
     std::vector<Q> xs;
     for (int k = 1; k < 8; ++k) xs.push_back(s.lo[0] + (s.hi[0] - s.lo[0]) * Q(k, 8));
-    for (const SwitchPoint& sp : c.switches) xs.push_back(sp.rho1);
+    for (const CurveSwitch& sp : c.switches) xs.push_back(sp.rho1);
     for (Q x : xs) {
         x.canonicalize();
         Q f = c.env.value(m.lines, x);

@@ -14,6 +14,6 @@ struct GoldenAnswers {
     Json curve, queries;
     std::string csv;
 };
-GoldenAnswers golden_answers(const Scene& s, const HullModel& m, const Curve& c);
+GoldenAnswers golden_answers(const ExactScene& s, const HullModel& m, const TouchingCurve& c);
 
 }  // namespace scalecert::internal

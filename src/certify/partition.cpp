@@ -76,8 +76,8 @@ static Q area2(const std::vector<Pt2>& p) {
 // to hi1 (the curve's breakpoints above lo2 and where c meets lo2), then (hi1, hi2) and (xl, hi2);
 // normalize_polygon drops repeats and collinear points, so the result is the clipping's, vertex for
 // vertex. A rectangle without area keeps the clipping (at most two points).
-std::vector<Pt2> overlap_region(const Model& m, const Curve& c, const std::vector<Pt2>& rect) {
-    const Scene& s = m.scene;
+std::vector<Pt2> overlap_region(const Model& m, const TouchingCurve& c, const std::vector<Pt2>& rect) {
+    const ExactScene& s = m.scene;
     auto line = [&](size_t k) -> const ContactLine& { return m.lines[c.env.pieces[c.pieces[k].env].line]; };
     if (rect.size() < 3) {
         std::vector<Pt2> over = rect;
@@ -109,8 +109,8 @@ std::vector<Pt2> overlap_region(const Model& m, const Curve& c, const std::vecto
     return normalize_polygon(w);
 }
 
-Partition build_partition(const Model& m, const Curve& c) {
-    const Scene& s = m.scene;
+Partition build_partition(const Model& m, const TouchingCurve& c) {
+    const ExactScene& s = m.scene;
     Partition P;
     std::vector<Pt2> rect = normalize_polygon(
         {{s.lo[0], s.lo[1]}, {s.hi[0], s.lo[1]}, {s.hi[0], s.hi[1]}, {s.lo[0], s.hi[1]}});
@@ -163,7 +163,7 @@ Partition build_partition(const Model& m, const Curve& c) {
         if (sgn(L.at(p.from)) > 0 && sgn(L.at(p.to)) <= 0) z = make_witness(m, -L.intercept / L.slope, Q(0), c.env.pieces[p.env].line);
         P.zero_witnesses.push_back(std::move(z));
     }
-    for (const SwitchPoint& sp : c.switches)
+    for (const CurveSwitch& sp : c.switches)
         if (sgn(sp.rho2) > 0)
             P.switch_witnesses.push_back(make_witness(m, sp.rho1, sp.rho2, c.env.pieces[c.pieces[sp.left].env].line));
     for (int e = 0; e < 2; ++e) {

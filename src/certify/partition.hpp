@@ -7,7 +7,7 @@ namespace scalecert::internal {
 using Pt2 = std::array<Q, 2>;
 
 struct SeparatedRegion {
-    size_t piece;             // index into Curve::pieces; its line's normal separates the region
+    size_t piece;             // index into TouchingCurve::pieces; its line's normal separates the region
     std::vector<Pt2> verts;   // closed polygon, counter-clockwise; the points on the curve excluded
 };
 
@@ -34,8 +34,8 @@ std::vector<Pt2> clip(const std::vector<Pt2>& poly, const Q& a, const Q& b, bool
 std::vector<Pt2> normalize_polygon(std::vector<Pt2> poly);
 
 // I1 × I2 ∩ {ρ2 >= curve} (`rect` is I1 × I2, normalized), in time linear in the curve's pieces.
-std::vector<Pt2> overlap_region(const Model& m, const Curve& c, const std::vector<Pt2>& rect);
+std::vector<Pt2> overlap_region(const Model& m, const TouchingCurve& c, const std::vector<Pt2>& rect);
 
-Partition build_partition(const Model& m, const Curve& c);
+Partition build_partition(const Model& m, const TouchingCurve& c);
 
 }  // namespace scalecert::internal

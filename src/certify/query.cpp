@@ -92,7 +92,7 @@ Witness lift_witness(const Witness& w, const Q& rho1, const Q& rho2, const std::
     return out;
 }
 
-Witness witness_below(const Model& m, const Curve& c, const Q& rho1) {
+Witness witness_below(const Model& m, const TouchingCurve& c, const Q& rho1) {
     const size_t line = c.env.pieces[c.env.locate(rho1)].line;
     const ContactLine& L = m.lines[line];
     const Q f = L.at(rho1);
@@ -100,7 +100,7 @@ Witness witness_below(const Model& m, const Curve& c, const Q& rho1) {
     return make_witness(m, -L.intercept / L.slope, Q(0), line);
 }
 
-std::pair<Q, size_t> ray_crossing(const Model& m, const Curve& c, const Q& rho1, const Q& rho2) {
+std::pair<Q, size_t> ray_crossing(const Model& m, const TouchingCurve& c, const Q& rho1, const Q& rho2) {
     Q best = -1;
     size_t best_line = 0;
     for (const EnvPiece& p : c.env.pieces) {
@@ -111,8 +111,8 @@ std::pair<Q, size_t> ray_crossing(const Model& m, const Curve& c, const Q& rho1,
     return {best, best_line};
 }
 
-QueryResult query(const Model& m, const Curve& c, const Q& rho1, const Q& rho2, bool with_certificate) {
-    QueryResult r;
+QueryAnswer query(const Model& m, const TouchingCurve& c, const Q& rho1, const Q& rho2, bool with_certificate) {
+    QueryAnswer r;
     r.rho1 = rho1;
     r.rho2 = rho2;
     size_t k = c.env.locate(rho1);

@@ -23,7 +23,7 @@ struct PlaneCert {
     int support1, support2;  // a vertex of P1 attaining c1, of P2 attaining c2
 };
 
-struct QueryResult {
+struct QueryAnswer {
     Verdict verdict;
     Q rho1, rho2;
     std::optional<PlaneCert> plane;     // separated, touching
@@ -31,10 +31,10 @@ struct QueryResult {
 };
 
 // With the curve: a search over its pieces. Requires ρ1, ρ2 > 0.
-QueryResult query(const Model& m, const Curve& c, const Q& rho1, const Q& rho2, bool with_certificate = true);
+QueryAnswer query(const Model& m, const TouchingCurve& c, const Q& rho1, const Q& rho2, bool with_certificate = true);
 // Where the ray t·(ρ1, ρ2), t > 0, meets the highest of the envelope's lines (the largest t over
 // its pieces): the curve's crossing when the lines hold the curve there. The line's index.
-std::pair<Q, size_t> ray_crossing(const Model& m, const Curve& c, const Q& rho1, const Q& rho2);
+std::pair<Q, size_t> ray_crossing(const Model& m, const TouchingCurve& c, const Q& rho1, const Q& rho2);
 // Without a curve: the maximum over all contact lines (verdict only).
 Verdict query_direct(const Model& m, const Q& rho1, const Q& rho2);
 
@@ -62,6 +62,6 @@ Witness lift_witness(const Witness& w, const Q& rho1, const Q& rho2, const std::
 // A touching pair at or below-left of the curve point at ρ1 > 0, with its witness: (ρ1, f(ρ1)) when
 // f(ρ1) > 0, else (x0, 0) where the curve's line at ρ1 reaches 0 (x0 ≤ ρ1). The curve must be
 // proved there (on the walk: walk_covers).
-Witness witness_below(const Model& m, const Curve& c, const Q& rho1);
+Witness witness_below(const Model& m, const TouchingCurve& c, const Q& rho1);
 
 }  // namespace scalecert::internal

@@ -22,14 +22,14 @@ void SceneArgs::add(CLI::App* sub) {
     sub->add_flag("--binary-doubles", opt.binary_doubles, "read text numbers as the IEEE doubles strtod gives");
 }
 
-internal::Scene SceneArgs::load() const {
+internal::ExactScene SceneArgs::load() const {
     const bool any_mesh_option = !mesh[0].empty() || !mesh[1].empty() || !interval[0].empty() || !interval[1].empty() ||
                                  !seed[0].empty() || !seed[1].empty();
     if (!path.empty() && any_mesh_option) throw InputError("give SCENE or --p1, --p2, --i1, --i2, not both");
     if (!path.empty()) return load_scene(path, opt);
     if (mesh[0].empty() || mesh[1].empty() || interval[0].empty() || interval[1].empty())
         throw InputError("give SCENE, or --p1 and --p2 (mesh files) with --i1 and --i2 (LO,HI)");
-    internal::Scene sc;
+    internal::ExactScene sc;
     for (int i = 0; i < 2; ++i) {
         const std::string n = std::to_string(i + 1);
         sc.P[i].points = read_mesh(mesh[i], opt);

@@ -22,7 +22,7 @@ struct SceneArgs {
     std::string path, mesh[2], interval[2], seed[2];
     ReadOptions opt;
     void add(CLI::App* sub);        // the options, with --binary-doubles
-    internal::Scene load() const;   // refuses both forms at once, and neither
+    internal::ExactScene load() const;   // refuses both forms at once, and neither
     // The scene in compact form (IntPoints), read straight from OFF files of plain decimals when
     // given as --p1/--p2; otherwise through load(). Null when the points do not fit IntPoints.
     std::shared_ptr<const internal::CompactScene> load_compact() const;

@@ -28,7 +28,7 @@ Command add_curve(CLI::App& app) {
                     j = curve_json(session.curve_model(), session.curve());
                 } else {
                     const internal::HullModel& m = session.hull();
-                    const internal::Curve& c = session.hull_curve();
+                    const internal::TouchingCurve& c = session.hull_curve();
                     j = curve_json(m, c);
                     add_segment_json(j, m, c, parse_segment(a->segment, m));
                 }

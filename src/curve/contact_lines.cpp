@@ -294,7 +294,7 @@ void set_seeds_in_integers(Model& m) {
     m.dz = over_common_denominator(m.d, m.dden);
 }
 
-HullModel build_model(const Scene& scene) {
+HullModel build_model(const ExactScene& scene) {
     check_scene(scene, "scene");  // a scene built in code gets the reader's checks too
     StageClock clock;
     HullModel m;
@@ -325,7 +325,7 @@ HullModel build_model(const Scene& scene) {
     return m;
 }
 
-HullModel build_model(const Scene& scene, const std::string& name) {
+HullModel build_model(const ExactScene& scene, const std::string& name) {
     try {
         return build_model(scene);
     } catch (const InputError& e) {

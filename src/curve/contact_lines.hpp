@@ -41,7 +41,7 @@ struct ScanStats {
 };
 
 struct Model {
-    Scene scene;  // on the scan path: seeds and ranges only (the points are in `scan`)
+    ExactScene scene;  // on the scan path: seeds and ranges only (the points are in `scan`)
     Polyhedron P[2];
     Vec3q s[2];
     Vec3q d;  // s2 − s1
@@ -81,9 +81,9 @@ void set_seeds_in_integers(Model& m);
 // Builds the exact polyhedra, checks the seeds, and enumerates the contact lines: every facet
 // normal of the Minkowski sum is found; lines certainly dominated (never on the touching curve,
 // never deciding a query) are dropped before their exact values are computed.
-HullModel build_model(const Scene& scene);
+HullModel build_model(const ExactScene& scene);
 // The same, with its errors (flat points, a seed outside) prefixed by `name` ("FILE: ...").
-HullModel build_model(const Scene& scene, const std::string& name);
+HullModel build_model(const ExactScene& scene, const std::string& name);
 
 // Every facet normal of Q1 ⊕ (−Q2), primitive and sorted, the dominated ones included (Model::lines
 // keeps only those that can be on the curve). Recomputed on each call.

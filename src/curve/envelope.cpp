@@ -74,7 +74,7 @@ Q Envelope::value(const std::vector<ContactLine>& lines, const Q& x) const {
     return lines[pieces[locate(x)].line].at(x);
 }
 
-Contact contact_at(const Model& m, const ContactLine& L, const ContactLine& R, const Q& rho1, const Q& rho2) {
+ContactFeatures contact_at(const Model& m, const ContactLine& L, const ContactLine& R, const Q& rho1, const Q& rho2) {
     // Both planes touch, so P1(ρ1) ∩ P2(ρ2) lies on their common line, direction u = nL × nR. The
     // vertices of P_i maximising both normals scale onto that line and span a segment S_i; the
     // touching set is S_1 ∩ S_2, and the contact feature of P_i is the smallest face holding it:
@@ -100,7 +100,7 @@ Contact contact_at(const Model& m, const ContactLine& L, const ContactLine& R, c
     }
     const Q tlo = std::max(lo[0], lo[1]), thi = std::min(hi[0], hi[1]);
     if (tlo > thi) throw std::logic_error("contact_at: the contact features do not meet");
-    Contact c;
+    ContactFeatures c;
     std::vector<int>* out[2] = {&c.feat1, &c.feat2};
     for (int i = 0; i < 2; ++i) {
         const bool edge = lo[i] < hi[i] && thi > lo[i] && tlo < hi[i];
@@ -112,8 +112,8 @@ Contact contact_at(const Model& m, const ContactLine& L, const ContactLine& R, c
     return c;
 }
 
-Contact piece_contact(const Model& m, const EnvPiece& e) {
-    Contact c;
+ContactFeatures piece_contact(const Model& m, const EnvPiece& e) {
+    ContactFeatures c;
     c.feat1 = m.lines[e.same.front()].feat1;
     c.feat2 = m.lines[e.same.front()].feat2;
     for (size_t k : e.same) {
@@ -128,7 +128,7 @@ Contact piece_contact(const Model& m, const EnvPiece& e) {
     return c;
 }
 
-std::optional<Q> contact_rho1(const Model& m, const Curve& c, const CurvePiece& p) {
+std::optional<Q> contact_rho1(const Model& m, const TouchingCurve& c, const CurvePiece& p) {
     const ContactLine& L = m.lines[c.env.pieces[p.env].line];
     if (sgn(L.at(p.from)) <= 0) return std::nullopt;
     Q to = p.to;
@@ -136,8 +136,8 @@ std::optional<Q> contact_rho1(const Model& m, const Curve& c, const CurvePiece& 
     return (p.from + to) / 2;
 }
 
-Curve build_curve(const Model& m) {
-    Curve c;
+TouchingCurve build_curve(const Model& m) {
+    TouchingCurve c;
     c.env = upper_envelope(m.lines);
     const Q& lo = m.scene.lo[0];
     const Q& hi = m.scene.hi[0];
@@ -155,7 +155,7 @@ Curve build_curve(const Model& m) {
         const ContactLine& L = m.lines[c.env.pieces[c.pieces[k].env].line];
         const ContactLine& R = m.lines[c.env.pieces[c.pieces[k + 1].env].line];
         ClosedSwitch cs = closed_form_switch(m, L, R);
-        SwitchPoint sp;
+        CurveSwitch sp;
         sp.rho1 = cs.rho1;
         sp.rho2 = L.at(sp.rho1);
         sp.left = k;
@@ -176,7 +176,7 @@ Curve build_curve(const Model& m) {
     const ContactLine& G = m.lines[c.env.pieces[lo_k].line];
     c.growth.value = G.intercept / (Q(1) - G.slope);
     c.growth.env = lo_k;
-    const Scene& s = m.scene;
+    const ExactScene& s = m.scene;
     c.growth.in_rectangle = c.growth.value >= s.lo[0] && c.growth.value <= s.hi[0] &&
                             c.growth.value >= s.lo[1] && c.growth.value <= s.hi[1];
     return c;

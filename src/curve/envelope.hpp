@@ -25,7 +25,7 @@ struct Envelope {
 
 Envelope upper_envelope(const std::vector<ContactLine>& lines);
 
-struct Contact {
+struct ContactFeatures {
     std::vector<int> feat1, feat2;
     std::string label;  // e.g. "VE"
 };
@@ -33,33 +33,33 @@ struct Contact {
 struct CurvePiece {
     Q from, to;
     size_t env;       // index into Envelope::pieces
-    Contact contact;  // piece_contact of its envelope piece; empty label if ρ2 ≤ 0 all along it
+    ContactFeatures contact;  // piece_contact of its envelope piece; empty label if ρ2 ≤ 0 all along it
 };
 
-struct SwitchPoint {
+struct CurveSwitch {
     Q rho1, rho2;
-    size_t left, right;  // indices into Curve::pieces
-    Contact contact;
+    size_t left, right;  // indices into TouchingCurve::pieces
+    ContactFeatures contact;
     std::string equation;  // which closed form of the paper's Appendix gives ρ1
 };
 
-struct GrowthDistance {
+struct Growth {
     Q value;
     size_t env;  // envelope piece holding it
     bool in_rectangle;
 };
 
-struct Curve {
+struct TouchingCurve {
     Envelope env;
     std::vector<CurvePiece> pieces;  // over I1
-    std::vector<SwitchPoint> switches;
-    GrowthDistance growth;
+    std::vector<CurveSwitch> switches;
+    Growth growth;
 };
 
 // The contact at a switch point (ρ1, ρ2) between neighbouring pieces on lines L and R: the
 // smallest face of each polyhedron holding the touching set (a vertex or an edge: both planes
 // touch, so the touching set lies on their common line).
-Contact contact_at(const Model& m, const ContactLine& L, const ContactLine& R, const Q& rho1, const Q& rho2);
+ContactFeatures contact_at(const Model& m, const ContactLine& L, const ContactLine& R, const Q& rho1, const Q& rho2);
 
 // The contact along an envelope piece: the smallest faces of P1(ρ1) and P2(ρ2) that hold their
 // touching set, the same at every inner point of the piece with ρ2 > 0. Every normal whose line is
@@ -68,11 +68,11 @@ Contact contact_at(const Model& m, const ContactLine& L, const ContactLine& R, c
 // interiors: the face of the Minkowski sum holding the origin in its relative interior is the
 // difference of the faces that the normals in its normal cone pick out, i.e. of G2 and G1. So G_i
 // is the smallest face holding T. The label follows from the vertex counts of G1 and G2.
-Contact piece_contact(const Model& m, const EnvPiece& e);
+ContactFeatures piece_contact(const Model& m, const EnvPiece& e);
 // A ρ1 of the curve piece with ρ2 > 0 (the middle of that part): where its contact is witnessed.
 // None when ρ2 ≤ 0 all along it (nothing touches there).
-std::optional<Q> contact_rho1(const Model& m, const Curve& c, const CurvePiece& p);
+std::optional<Q> contact_rho1(const Model& m, const TouchingCurve& c, const CurvePiece& p);
 
-Curve build_curve(const Model& m);
+TouchingCurve build_curve(const Model& m);
 
 }  // namespace scalecert::internal

@@ -53,15 +53,15 @@ void common_point_rows(Program& lp, const std::vector<Vec3q>& A, const std::vect
         set_row(lp, 2 + k, r, Q(0));
     }
 }
-CommonPoint split(const std::vector<Q>& v, size_t na) {
-    CommonPoint cp;
+CommonPointWeights split(const std::vector<Q>& v, size_t na) {
+    CommonPointWeights cp;
     cp.lambda.assign(v.begin(), v.begin() + static_cast<long>(na));
     cp.mu.assign(v.begin() + static_cast<long>(na), v.end());
     return cp;
 }
 }  // namespace
 
-std::optional<CommonPoint> common_point(const std::vector<Vec3q>& A, const std::vector<Vec3q>& B) {
+std::optional<CommonPointWeights> common_point(const std::vector<Vec3q>& A, const std::vector<Vec3q>& B) {
     Program lp(CGAL::EQUAL, true, ET(0), false, ET(0));
     common_point_rows(lp, A, B);
     auto s = CGAL::solve_linear_program(lp, ET());
@@ -69,7 +69,7 @@ std::optional<CommonPoint> common_point(const std::vector<Vec3q>& A, const std::
     return split(values(s, A.size() + B.size()), A.size());
 }
 
-std::optional<CommonPoint> interior_common_point(const std::vector<Vec3q>& A, const std::vector<Vec3q>& B) {
+std::optional<CommonPointWeights> interior_common_point(const std::vector<Vec3q>& A, const std::vector<Vec3q>& B) {
     if (A.empty() || B.empty()) return std::nullopt;
     if (A.size() + B.size() > kBoundEveryWeightUpTo) return interior_common_point_by_centroids(A, B);
     // Variables λ, μ ≥ 0 and t ≥ 0 (index n); maximise t subject to λ_i − t ≥ 0, μ_j − t ≥ 0.
@@ -86,7 +86,7 @@ std::optional<CommonPoint> interior_common_point(const std::vector<Vec3q>& A, co
     return split(v, A.size());
 }
 
-std::optional<CommonPoint> interior_common_point_by_centroids(const std::vector<Vec3q>& A, const std::vector<Vec3q>& B) {
+std::optional<CommonPointWeights> interior_common_point_by_centroids(const std::vector<Vec3q>& A, const std::vector<Vec3q>& B) {
     if (A.empty() || B.empty()) return std::nullopt;
     // Each set's centroid joins it as its last point, and only the two centroids' weights are
     // bounded below by t (two rows, not one per point).
@@ -110,7 +110,7 @@ std::optional<CommonPoint> interior_common_point_by_centroids(const std::vector<
     std::vector<Q> v = values(s, static_cast<size_t>(n) + 1);
     if (v.size() != static_cast<size_t>(n) + 1 || sgn(v.back()) <= 0) return std::nullopt;
     // The centroid's weight spread evenly over its set: every weight > 0, the same point.
-    CommonPoint cp;
+    CommonPointWeights cp;
     const Q a = v[static_cast<size_t>(na - 1)] / Q(static_cast<long>(A.size()));
     const Q b = v[static_cast<size_t>(n - 1)] / Q(static_cast<long>(B.size()));
     for (size_t i = 0; i < A.size(); ++i) cp.lambda.push_back(v[i] + a);

@@ -375,7 +375,7 @@ std::optional<CompactScene> read_scene_fast(const std::string& path) {
     return r;
 }
 
-std::optional<CompactScene> compact_scene(const Scene& sc) {
+std::optional<CompactScene> compact_scene(const ExactScene& sc) {
     CompactScene cs;
     for (int i = 0; i < 2; ++i) {
         auto p = int_points(sc.P[i].points);
@@ -389,8 +389,8 @@ std::optional<CompactScene> compact_scene(const Scene& sc) {
     return cs;
 }
 
-Scene full_scene(const CompactScene& cs) {
-    Scene sc;
+ExactScene full_scene(const CompactScene& cs) {
+    ExactScene sc;
     for (int i = 0; i < 2; ++i) {
         sc.P[i].points = q_points(cs.P[i]);
         sc.P[i].seed = cs.seed[i];

@@ -47,7 +47,7 @@ struct CompactScene {
     Q lo[2], hi[2];
 };
 // The scene in compact form, when both polyhedra fit IntPoints.
-std::optional<CompactScene> compact_scene(const Scene& sc);
+std::optional<CompactScene> compact_scene(const ExactScene& sc);
 // A scene file's text in compact form, when it has the plain shape {"P1": {"vertices": [...],
 // "seed": [...]}, "P2": ..., "I1": [lo, hi], "I2": [lo, hi]} with JSON numbers (decimals as in
 // parse_off_fast for the vertices) and passes the reader's checks; none means "read it with
@@ -55,6 +55,6 @@ std::optional<CompactScene> compact_scene(const Scene& sc);
 std::optional<CompactScene> parse_scene_fast(const char* data, size_t size);
 std::optional<CompactScene> read_scene_fast(const std::string& path);
 // Back to the exact scene (for the hull path), with the same seeds.
-Scene full_scene(const CompactScene& cs);
+ExactScene full_scene(const CompactScene& cs);
 
 }  // namespace scalecert::internal

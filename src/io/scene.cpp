@@ -53,7 +53,7 @@ struct Reader {
 }  // namespace
 
 
-Scene parse_scene_text(const std::string& text, const std::string& name, const std::string& base_dir,
+ExactScene parse_scene_text(const std::string& text, const std::string& name, const std::string& base_dir,
                        const ReadOptions& opt) {
     Reader r{name, opt};
     JNode tree;
@@ -77,7 +77,7 @@ Scene parse_scene_text(const std::string& text, const std::string& name, const s
         }
     };
     only(root, "", {"P1", "P2", "I1", "I2"});
-    Scene sc;
+    ExactScene sc;
     const char* pname[2] = {"P1", "P2"};
     for (int i = 0; i < 2; ++i) {
         const JNode* p = root.find(pname[i]);
@@ -124,7 +124,7 @@ Scene parse_scene_text(const std::string& text, const std::string& name, const s
     return sc;
 }
 
-void check_scene(const Scene& sc, const std::string& name) {
+void check_scene(const ExactScene& sc, const std::string& name) {
     const char* pname[2] = {"P1", "P2"};
     const char* iname[2] = {"I1", "I2"};
     for (int i = 0; i < 2; ++i) {
@@ -138,7 +138,7 @@ void check_scene(const Scene& sc, const std::string& name) {
     }
 }
 
-void finish_scene(Scene& sc, const std::string& name) {
+void finish_scene(ExactScene& sc, const std::string& name) {
     check_scene(sc, name);
     for (PolyInput& in : sc.P) {
         if (in.seed_given) continue;
@@ -155,7 +155,7 @@ void finish_scene(Scene& sc, const std::string& name) {
     }
 }
 
-Scene load_scene(const std::string& path, const ReadOptions& opt) {
+ExactScene load_scene(const std::string& path, const ReadOptions& opt) {
     std::string text = read_input(path, "scene file", kMaxSceneBytes);
     std::string dir;
     auto slash = path.rfind('/');

@@ -13,7 +13,7 @@ struct PolyInput {
     bool seed_given = false;
 };
 
-struct Scene {
+struct ExactScene {
     PolyInput P[2];
     Q lo[2], hi[2];  // I1 = [lo[0], hi[0]], I2 = [lo[1], hi[1]]
 };
@@ -25,15 +25,15 @@ struct ReadOptions {
 
 // Reads and checks a scene file. Throws InputError naming the file and the offending field.
 // (Geometric checks that need the hull — rank, seed strictly inside — are done by build_model.)
-Scene load_scene(const std::string& path, const ReadOptions& opt = {});
+ExactScene load_scene(const std::string& path, const ReadOptions& opt = {});
 // Checks a scene by the reader's rules and messages, prefixed with `name`: at least 4 and at most
 // kMaxPoints points each, 0 < lo <= hi. Throws InputError. (build_model calls it; rank and the
 // seeds' interiority are its own checks.)
-void check_scene(const Scene& sc, const std::string& name);
+void check_scene(const ExactScene& sc, const std::string& name);
 // check_scene, then the mean of the points as the seed of each polyhedron without seed_given:
 // call it for a scene assembled in code.
-void finish_scene(Scene& sc, const std::string& name);
-Scene parse_scene_text(const std::string& text, const std::string& name, const std::string& base_dir,
+void finish_scene(ExactScene& sc, const std::string& name);
+ExactScene parse_scene_text(const std::string& text, const std::string& name, const std::string& base_dir,
                        const ReadOptions& opt = {});
 
 }  // namespace scalecert::internal

@@ -117,8 +117,8 @@ Q directional_gap(const Segment& s, const Q& rho1, const Q& rho2) {
     return Q(1) - eval(s.t[0], rho1) - eval(s.t[1], rho2);
 }
 
-std::vector<std::array<Q, 2>> t_curve(const Model& m, const Curve& c, const Segment& s) {
-    const Scene& sc = m.scene;
+std::vector<std::array<Q, 2>> t_curve(const Model& m, const TouchingCurve& c, const Segment& s) {
+    const ExactScene& sc = m.scene;
     auto f = [&](const Q& x) { return c.env.value(m.lines, x); };
     // ρ1 range where the curve is inside I2 (f decreases strictly): [x_top, x_bottom] ∩ I1.
     auto inverse = [&](const Q& y) -> Q {  // the x in I1 with f(x) = y, clamped to I1
@@ -133,7 +133,7 @@ std::vector<std::array<Q, 2>> t_curve(const Model& m, const Curve& c, const Segm
     Q a = inverse(sc.hi[1]), b = inverse(sc.lo[1]);
     if (a > b || f(a) > sc.hi[1] || f(b) < sc.lo[1]) return {};  // the curve misses the rectangle
     std::vector<Q> xs{a, b};
-    for (const SwitchPoint& sp : c.switches) xs.push_back(sp.rho1);
+    for (const CurveSwitch& sp : c.switches) xs.push_back(sp.rho1);
     for (const LinearPiece& p : s.t[0]) xs.push_back(p.from);
     for (const LinearPiece& p : s.t[1]) xs.push_back(inverse(p.from));
     std::vector<std::array<Q, 2>> out;
@@ -144,14 +144,14 @@ std::vector<std::array<Q, 2>> t_curve(const Model& m, const Curve& c, const Segm
     return out;
 }
 
-std::vector<std::array<Q, 2>> curve_vertices(const Model& m, const Curve& c) {
+std::vector<std::array<Q, 2>> curve_vertices(const Model& m, const TouchingCurve& c) {
     std::vector<std::array<Q, 2>> v;
     auto add = [&](const Q& x) {
         Q y = c.env.value(m.lines, x);
         if (sgn(y) > 0) v.push_back({x, y});
     };
     add(c.pieces.front().from);
-    for (const SwitchPoint& sp : c.switches) add(sp.rho1);
+    for (const CurveSwitch& sp : c.switches) add(sp.rho1);
     add(c.pieces.back().to);
     return v;
 }

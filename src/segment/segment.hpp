@@ -31,7 +31,7 @@ Q eval(const std::vector<LinearPiece>& f, const Q& x);
 
 // The decision curve in the (t1, t2) plane: the image of the part of the touching curve inside
 // I1 × I2, as a polyline (exact vertices, in increasing t1).
-std::vector<std::array<Q, 2>> t_curve(const Model& m, const Curve& c, const Segment& s);
+std::vector<std::array<Q, 2>> t_curve(const Model& m, const TouchingCurve& c, const Segment& s);
 
 // Signed estimate along the segment: (1 − t1 − t2) times its length; > 0 a gap, < 0 penetration.
 // Returned as the exact fraction 1 − t1 − t2 (the length is √|v2 − v1|², irrational in general).
@@ -42,6 +42,6 @@ Q directional_gap(const Segment& s, const Q& rho1, const Q& rho2);
 
 // The contact point on the curve at each of its vertices (ends and switch points) with ρ2 > 0:
 // the loci of contact points (the paper's Fig. 7) run between them.
-std::vector<std::array<Q, 2>> curve_vertices(const Model& m, const Curve& c);
+std::vector<std::array<Q, 2>> curve_vertices(const Model& m, const TouchingCurve& c);
 
 }  // namespace scalecert::internal

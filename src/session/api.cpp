@@ -17,30 +17,8 @@
 
 namespace scalecert {
 
-// The internal names used here (several others, such as Scene and Curve, have public namesakes).
-using internal::build_curve;
-using internal::build_model;
-using internal::build_partition;
-using internal::classify_batch;
-using internal::ContactLine;
-using internal::CurvePiece;
-using internal::dot;
-using internal::dump;
-using internal::exact_from_double;
-using internal::FastCurve;
-using internal::finish_scene;
-using internal::load_scene;
-using internal::HullModel;
-using internal::Model;
-using internal::neg;
-using internal::parse_exact;
-using internal::primitive;
-using internal::read_mesh;
-using internal::scene_json;
-using internal::to_exact_string;
-using internal::to_q;
-using internal::Vec3z;
-using internal::verdict_name;
+// The engine's names: none shares a name with the public API's.
+using namespace internal;
 
 const char* version() { return SCALECERT_VERSION_STRING; }
 
@@ -85,7 +63,7 @@ Point canonical(Point p) {
 
 Scene::Scene(std::vector<Point> p1, std::vector<Point> p2, Interval i1, Interval i2, std::optional<Point> seed1,
              std::optional<Point> seed2) {
-    internal::Scene sc;
+    internal::ExactScene sc;
     std::vector<Point>* pts[2] = {&p1, &p2};
     const std::optional<Point>* seeds[2] = {&seed1, &seed2};
     const Interval* ranges[2] = {&i1, &i2};
@@ -106,7 +84,7 @@ Scene::Scene(std::vector<Point> p1, std::vector<Point> p2, Interval i1, Interval
 }
 
 struct Scene::Data {
-    internal::Scene sc;
+    internal::ExactScene sc;
     std::string name;  // prefixes the hull model's errors
     // The points as machine integers, for the scan path: large scenes only, when they fit.
     std::shared_ptr<const internal::CompactScene> compact;
@@ -118,7 +96,7 @@ struct Scene::Data {
     }
 };
 
-std::shared_ptr<Scene::Data> SceneAccess::validated(internal::Scene sc, const std::string& name) {
+std::shared_ptr<Scene::Data> SceneAccess::validated(internal::ExactScene sc, const std::string& name) {
     auto d = std::make_shared<Scene::Data>();
     d->sc = std::move(sc);
     d->name = name;
@@ -153,7 +131,7 @@ struct Analysis::Impl {
 
 Analysis::Analysis(const Scene& scene) {
     auto impl = std::make_shared<Impl>(scene);
-    const internal::Curve& c = impl->session.curve();
+    const internal::TouchingCurve& c = impl->session.curve();
     const Model& m = impl->session.curve_model();
     for (const CurvePiece& p : c.pieces) {
         const ContactLine& L = m.lines[c.env.pieces[p.env].line];
@@ -161,7 +139,7 @@ Analysis::Analysis(const Scene& scene) {
         if (!p.contact.label.empty()) k = contact_of(p.contact.label, p.contact.feat1, p.contact.feat2);
         curve_.pieces.push_back({p.from, p.to, L.slope, L.intercept, to_q(L.normal), k});
     }
-    for (const internal::SwitchPoint& s : c.switches) {
+    for (const internal::CurveSwitch& s : c.switches) {
         std::optional<Contact> k;
         if (!s.contact.label.empty()) k = contact_of(s.contact.label, s.contact.feat1, s.contact.feat2);
         curve_.switches.push_back({s.rho1, s.rho2, k});
@@ -178,7 +156,7 @@ QueryResult Analysis::query(const Rational& rho1, const Rational& rho2) const {
     check_rho(rho1, "rho1");
     check_rho(rho2, "rho2");
     const Model& m = impl_->session.hull();
-    const internal::QueryResult r = internal::query(m, impl_->session.hull_curve(), rho1, rho2, true);
+    const internal::QueryAnswer r = internal::query(m, impl_->session.hull_curve(), rho1, rho2, true);
     QueryResult out{r.verdict, std::nullopt, std::nullopt};
     if (r.plane) out.plane = Plane{to_q(m.lines[r.plane->line].normal), r.plane->c1, r.plane->c2, r.plane->offset};
     if (r.witness) out.common = CommonPoint{r.witness->rho1, r.witness->rho2, r.witness->point};

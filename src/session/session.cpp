@@ -8,7 +8,7 @@
 
 namespace scalecert::internal {
 
-Session::Session(Scene scene, std::string name, Engine engine)
+Session::Session(ExactScene scene, std::string name, Engine engine)
     : scene_(std::move(scene)), name_(std::move(name)), engine_(engine) {}
 
 Session::Session(std::shared_ptr<const CompactScene> scene, std::string name, Engine engine)
@@ -50,7 +50,7 @@ const HullModel& Session::hull() {
     return *hull_;
 }
 
-const Curve& Session::hull_curve() {
+const TouchingCurve& Session::hull_curve() {
     if (!hull_curve_) {
         const Model& m = hull();
         if (clock_) clock_->restart();
@@ -60,7 +60,7 @@ const Curve& Session::hull_curve() {
     return *hull_curve_;
 }
 
-const Curve& Session::curve() { return walked() ? walk_curve_ : hull_curve(); }
+const TouchingCurve& Session::curve() { return walked() ? walk_curve_ : hull_curve(); }
 const Model& Session::curve_model() {
     if (walked()) return *walk_;
     return hull();
@@ -79,7 +79,7 @@ bool Session::walk_covers(const Q& lo, const Q& hi) {
         if (std::getenv("SCALECERT_TIMING")) std::fprintf(stderr, "scalecert: scan path over a wider range: %s\n", r.stop->text().c_str());
         return false;
     }
-    Curve c = build_curve(*r.model);
+    TouchingCurve c = build_curve(*r.model);
     walk_.emplace(std::move(*r.model));
     walk_curve_ = std::move(c);
     lap("wider walk");
@@ -127,7 +127,7 @@ Session::Certified Session::certified_query(const Q& rho1, const Q& rho2) {
             Q step = (rho1 - m.walk_lo) / 2;
             for (int k = 0; k < 256; ++k, step /= 2)
                 if (walk_curve_.env.value(m.lines, rho1 - step) < rho2) {
-                    QueryResult r = query(m, walk_curve_, rho1, rho2, false);
+                    QueryAnswer r = query(m, walk_curve_, rho1, rho2, false);
                     r.witness = witness_below(m, walk_curve_, rho1 - step);
                     return {m, r};
                 }
@@ -144,14 +144,14 @@ std::string Session::query_text(const Q& rho1, const Q& rho2) {
 
 std::string Session::partition_text() {
     const Model& m = curve_model();
-    const Curve& c = curve();
+    const TouchingCurve& c = curve();
     const std::string text = document_text(m, partition_json(m, c, build_partition(m, c)));
     lap("partition and output");
     return text;
 }
 
 ClaimModels Session::claim_models() {
-    return {[this]() -> const HullModel& { return hull(); }, [this]() -> const Curve& { return hull_curve(); },
+    return {[this]() -> const HullModel& { return hull(); }, [this]() -> const TouchingCurve& { return hull_curve(); },
             [this](const Q& r1, const Q& r2) { return verdict(r1, r2); }, [this](const Q& r1) { return curve_value(r1); },
             [this] { return curve().growth.value; }};
 }

@@ -30,22 +30,22 @@ class Session {
 public:
     // `name` prefixes the hull model's geometric errors ("FILE: P1: ..."). A compact scene may be
     // null only with the strict one given.
-    Session(Scene scene, std::string name, Engine engine = Engine::Auto);
+    Session(ExactScene scene, std::string name, Engine engine = Engine::Auto);
     Session(std::shared_ptr<const CompactScene> scene, std::string name, Engine engine = Engine::Auto);
     // Laps for SCALECERT_TIMING (optional; must outlive the session's work).
     void set_clock(StageClock* clock) { clock_ = clock; }
-    // A hull model built elsewhere and shared (the library's Scene builds it once for all its
+    // A hull model built elsewhere and shared (the library's ExactScene builds it once for all its
     // analyses); by default the session builds its own.
     void set_hull_source(std::function<std::shared_ptr<const HullModel>()> source) { hull_source_ = std::move(source); }
 
     // The curve and the model it came from: the walk's, or the hull model's.
-    const Curve& curve();
+    const TouchingCurve& curve();
     const Model& curve_model();
     bool walked();                                   // the curve came from the walk
     const std::string& handover() const { return handover_; }  // why the walk handed over ("" if it did not)
     // The hull model and its curve over all ρ1 > 0, built on first use.
     const HullModel& hull();
-    const Curve& hull_curve();
+    const TouchingCurve& hull_curve();
     // The exact verdict at (ρ1, ρ2), ρ1, ρ2 > 0: on the walk where it proved the curve, else on
     // the hull model.
     Verdict verdict(const Q& rho1, const Q& rho2);
@@ -60,7 +60,7 @@ public:
     // exactly): the walk's where it proved the curve at all of them, else the hull model's.
     struct Decider {
         const Model& model;
-        const Curve& curve;
+        const TouchingCurve& curve;
     };
     Decider decider_for(const std::vector<double>& rho1);
     // Certificates (certificate.hpp): on the walk when it proved what they rest on, else on the
@@ -68,7 +68,7 @@ public:
     // t·(ρ1, ρ2) meets it; a partition needs it over I1, which the walk always covers.
     struct Certified {
         const Model& model;
-        QueryResult result;
+        QueryAnswer result;
     };
     Certified certified_query(const Q& rho1, const Q& rho2);
     std::string query_text(const Q& rho1, const Q& rho2);  // document_text(query_json(...))
@@ -84,7 +84,7 @@ private:
     void lap(const char* what) {
         if (clock_) clock_->lap(what);
     }
-    std::optional<Scene> scene_;
+    std::optional<ExactScene> scene_;
     std::shared_ptr<const CompactScene> compact_;
     std::string name_;
     Engine engine_;
@@ -92,12 +92,12 @@ private:
     std::function<std::shared_ptr<const HullModel>()> hull_source_;
     bool decided_ = false;
     std::optional<WalkModel> walk_;
-    Curve walk_curve_;
+    TouchingCurve walk_curve_;
     // Proved by the walk as it stands (walk_covers without walking wider).
     bool walk_proves(const Q& lo, const Q& hi) const;
     std::string handover_;
     std::shared_ptr<const HullModel> hull_;
-    std::optional<Curve> hull_curve_;
+    std::optional<TouchingCurve> hull_curve_;
 };
 
 }  // namespace scalecert::internal

@@ -8,7 +8,7 @@ using J = nlohmann::json;
 using namespace scalecert::internal;
 
 void compare_with_engine(const J& c) {
-    Scene sc;
+    ExactScene sc;
     try {
         sc = parse_scene_text(c.at("scene").dump(), "scene", "");
     } catch (const InputError& e) {
@@ -20,7 +20,7 @@ void compare_with_engine(const J& c) {
     } catch (const InputError&) {
         return;  // a seed the engine's own (stricter) checks refuse, or a limit: nothing to compare
     }
-    Curve cv = build_curve(m);
+    TouchingCurve cv = build_curve(m);
     auto exact = [](const J& j) { return j.get<std::string>(); };
     if (c.at("kind") == "query") {
         Q r1(exact(c.at("rho1"))), r2(exact(c.at("rho2")));

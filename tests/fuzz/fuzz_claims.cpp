@@ -12,9 +12,9 @@
 namespace {
 using namespace scalecert::internal;
 struct Fixed {
-    Scene sc;
+    ExactScene sc;
     HullModel m;
-    Curve c;
+    TouchingCurve c;
     explicit Fixed(const char* i1) {
         sc = parse_scene_text(std::string(R"({"P1": {"vertices": [[2,0,2],[-2,2,5],[-1,-2,6],[2,0,7]], "seed": [0,0,"9/2"]},
                 "P2": {"vertices": [[-1,-1,-1],[1,-1,-1],[-1,1,-1],[1,1,-1],[-1,-1,1],[1,-1,1],[-1,1,1],[1,1,1]], "seed": [0,0,0]},

@@ -31,14 +31,14 @@ inline void must_pass_checker(const std::string& text, const std::string& what) 
 
 // For a small scene the engine accepts: the curve, the partition and its certificate, which the
 // checker must accept. Returns false when the engine refuses the scene (InputError).
-inline bool certify(const Scene& sc, HullModel* out_model = nullptr, Curve* out_curve = nullptr) {
+inline bool certify(const ExactScene& sc, HullModel* out_model = nullptr, TouchingCurve* out_curve = nullptr) {
     HullModel m;
     try {
         m = build_model(sc);
     } catch (const InputError&) {
         return false;
     }
-    Curve c = build_curve(m);
+    TouchingCurve c = build_curve(m);
     must_pass_checker(dump(partition_json(m, c, build_partition(m, c))), "partition");
     if (out_curve) *out_curve = c;
     if (out_model) *out_model = std::move(m);
@@ -47,10 +47,10 @@ inline bool certify(const Scene& sc, HullModel* out_model = nullptr, Curve* out_
 
 // The scan path on a scene the hull path accepted: where it decides, its curve document must
 // be the hull path's byte for byte, but for the engine statistics.
-inline void scan_agrees(const Scene& sc, const Model& hm, const Curve& hc) {
+inline void scan_agrees(const ExactScene& sc, const Model& hm, const TouchingCurve& hc) {
     auto cs = compact_scene(sc);
     if (!cs) return;
-    auto without_model = [](const Model& m, const Curve& c) {
+    auto without_model = [](const Model& m, const TouchingCurve& c) {
         Json j = curve_json(m, c);
         j.erase("model");
         return dump(j);
@@ -60,5 +60,5 @@ inline void scan_agrees(const Scene& sc, const Model& hm, const Curve& hc) {
         finding("the scan path's curve differs from the hull path's");
 }
 
-inline size_t total_points(const Scene& sc) { return sc.P[0].points.size() + sc.P[1].points.size(); }
+inline size_t total_points(const ExactScene& sc) { return sc.P[0].points.size() + sc.P[1].points.size(); }
 }  // namespace fuzz

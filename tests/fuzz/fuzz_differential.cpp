@@ -12,7 +12,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     if (size < 4) return 0;
     size_t at = 0;
     auto next = [&]() -> int { return at < size ? data[at++] : 0; };
-    Scene sc;
+    ExactScene sc;
     const int mode = next();
     if (mode & 1) {  // two boxes
         for (int i = 0; i < 2; ++i) {
@@ -39,7 +39,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     }
     finish_scene(sc, "fuzz");  // the mean seeds
     HullModel m;
-    Curve cv;
+    TouchingCurve cv;
     if (!fuzz::certify(sc, &m, &cv)) return 0;
     test::Brute brute(sc);
     std::vector<std::pair<Q, Q>> pairs;
@@ -66,7 +66,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         for (const Q& f : {Q(1), Q(1048575, 1048576), Q(1048577, 1048576)}) pairs.push_back({x, y * f});
     }
     for (const auto& [r1, r2] : pairs) {
-        QueryResult r = query(m, cv, r1, r2, true);
+        QueryAnswer r = query(m, cv, r1, r2, true);
         const int want = brute.classify(sc, r1, r2);
         if (test::verdict_sign(r.verdict) != want)
             fuzz::finding("verdict " + std::string(verdict_name(r.verdict)) + " at (" + r1.get_str() + ", " + r2.get_str() + "), brute force says " + std::to_string(want));

@@ -9,7 +9,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     const std::string text(reinterpret_cast<const char*>(data) + 1, size - 1);
     // For OFF, the compact reader must give the full reader's points or nothing.
     const auto fast = f == scalecert::internal::MeshFormat::Off ? scalecert::internal::parse_off_fast(text) : std::nullopt;
-    scalecert::internal::Scene sc;
+    scalecert::internal::ExactScene sc;
     try {
         sc.P[0].points = scalecert::internal::parse_mesh(text, f, "fuzz.mesh");
     } catch (const scalecert::internal::InputError&) {
