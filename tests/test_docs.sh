@@ -36,7 +36,7 @@ cd "$W"
 # reason LINE: why LINE is not run here, or nothing if it is.
 reason() {
   case "$1" in
-    tools/run-example.sh*|tools/run-tests.sh*|.ci/run*|tools/ci.sh*) echo "set-up: installs and builds" ;;
+    tools/run-example.sh*|tools/run-tests.sh*|.ci/run*|tools/ci.sh*|tools/no-baselines.sh*) echo "set-up: installs and builds" ;;
     ctest*|*"&& ctest"*|*tests/test_docs.sh*|tools/sanitize.sh*|tools/fuzz.sh*) echo "the test suite itself, or a fuzzing run" ;;
     "mpirun -np "[1-9][0-9][0-9]*|srun*) echo "a cluster" ;;
     *)
