@@ -230,6 +230,21 @@ BOOST_AUTO_TEST_CASE(error_messages_are_one_line_with_the_file_and_cut) {
     expect_error("flat names its file", "curve " + flat.string(), flat.string() + ": P1: fewer than 4 affinely independent");
 }
 
+BOOST_AUTO_TEST_CASE(empty_output_names_are_refused) {
+    // An empty --out wrote to standard output, as if it were not given; --dir "" and --csv "" alike.
+    const fs::path g = write("empty-out.json", scene(poly(kCube1), poly(kCube2)));
+    for (const std::string& args : std::vector<std::string>{"curve " + g.string() + " --out ''", "partition " + g.string() + " --out ''",
+                                    "golden --family random --count 1 --dir ''",
+                                    "audit " + g.string() + " --methods libccd-gjk --out a.json --csv ''"}) {
+        const Run r = run(args);
+        BOOST_TEST_CONTEXT(args) {
+            BOOST_TEST(r.status == 2);
+            BOOST_TEST(r.out.empty());
+            BOOST_TEST(r.err.find("an empty file name") != std::string::npos, r.err);
+        }
+    }
+}
+
 BOOST_AUTO_TEST_CASE(audit_arguments_that_crashed_or_never_ended_are_refused) {
     fs::path g = write("audit-scene.json", scene(poly(kCube1), poly(kCube2)));
     // --grid 1 dereferenced an empty junction list; a negative --sweep overflowed GMP; --grid

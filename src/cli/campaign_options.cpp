@@ -1,4 +1,5 @@
 #include "campaign_options.hpp"
+#include "file_name.hpp"
 
 #ifdef SCALECERT_WITH_BASELINES
 #include "baselines/audit.hpp"
@@ -12,7 +13,7 @@ void add_golden_options(CLI::App* sub, internal::CampaignArgs& a) {
     sub->add_option("--count", a.count, "how many scenes (1 to 10^7)")->check(CLI::Range(1, 10000000));
     sub->add_option("--seed", a.seed, "the run's random seed (scene i's own seed is derived from it and i)");
     sub->add_option("--eps", a.eps_text, "degeneracy parameter (exact, default 2^-20)");
-    sub->add_option("--dir", a.dir, "output directory (created): NAME-i.scene.json, NAME-i.golden.json, NAME-i.golden.csv")->required();
+    sub->add_option("--dir", a.dir, "output directory (created): NAME-i.scene.json, NAME-i.golden.json, NAME-i.golden.csv")->required()->check(file_name());
 }
 
 void add_audit_options(CLI::App* sub, internal::CampaignArgs& a) {
@@ -29,8 +30,8 @@ void add_audit_options(CLI::App* sub, internal::CampaignArgs& a) {
     sub->add_option("--count", a.count, "scenes per eps in the sweep (1 to 10^6)")->check(CLI::Range(1, 1000000));
     sub->add_option("--seed", a.seed, "the run's random seed (each family scene's own seed is derived from it, K and its index)");
     sub->add_flag("--binary-doubles", a.opt.binary_doubles, "read the scene files' numbers as IEEE doubles");
-    sub->add_option("--out", a.out, "write the JSON to FILE (atomically) instead of standard output")->type_name("FILE");
-    sub->add_option("--csv", a.csv, "also write the rows as CSV to FILE (both files written together)")->type_name("FILE");
+    sub->add_option("--out", a.out, "write the JSON to FILE (atomically) instead of standard output")->type_name("FILE")->check(file_name());
+    sub->add_option("--csv", a.csv, "also write the rows as CSV to FILE (both files written together)")->type_name("FILE")->check(file_name());
     sub->add_flag("--by-distance", a.by_distance, "also count wrong verdicts at relative distances 2^-4 ... 2^-52 from the curve (JSON: by_distance)");
     sub->add_flag("--no-timing", a.no_timing, "leave the timing columns out: the rest is byte-identical on any number of processes");
 }

@@ -1,4 +1,5 @@
 #include "common.hpp"
+#include "file_name.hpp"
 #include "io/files.hpp"
 
 #include "io/mesh.hpp"
@@ -106,7 +107,9 @@ void SceneArgs::shift_positionals(std::initializer_list<std::string*> rest) {
 std::string SceneArgs::name() const { return path.empty() ? "--p1 " + mesh[0] + " --p2 " + mesh[1] : path; }
 
 void add_out(CLI::App* sub, std::string& out) {
-    sub->add_option("--out", out, "write the output to FILE (atomically) instead of standard output")->type_name("FILE");
+    sub->add_option("--out", out, "write the output to FILE (atomically) instead of standard output")
+        ->type_name("FILE")
+        ->check(file_name());
 }
 
 void emit(const std::string& text, const std::string& out) {
