@@ -194,7 +194,7 @@ std::vector<Vec3q> cube(long x0, long y0, long z0, long side) {
 }  // namespace
 
 BOOST_AUTO_TEST_CASE(curve_claim_rules) {
-    // CLAIMS.md, "TouchingCurve claims", rule by rule. The tetrahedron on the box (test_hand_curves) with
+    // CLAIMS.md, "Curve claims", rule by rule. The tetrahedron on the box (test_hand_curves) with
     // I1 narrowed to [1/2, 3/4]: the exact curve is (V,F) ρ2 = 9/2 − 5ρ1/2 for 0 < ρ1 ≤ 1 and (E,E)
     // ρ2 = (18 − 4ρ1)/7 on [1, 27/13], so its switch point (1, 2) now lies outside I1.
     ExactScene sc = load_scene(std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/tetra_box_switch.json");

@@ -87,7 +87,7 @@ std::string campaign_identity(const CampaignArgs& a, const Json& inputs);
 // the same hash; "" when there is none (golden and family shards record none).
 std::string stale_input(const Json& inputs, const std::string& shard_text);
 
-// ExactScene i of a family with its exact answers, drawn with scene_seed (campaign.hpp derives it from
+// Scene i of a family with its exact answers, drawn with scene_seed (campaign.hpp derives it from
 // the run's seed): the files NAME-i.scene.json, NAME-i.golden.json and NAME-i.golden.csv, by name
 // and text. The golden JSON records the run's seed and i.
 std::vector<std::pair<std::string, std::string>> golden_scene(const std::string& family, int i, std::uint64_t scene_seed,

@@ -1,4 +1,4 @@
-// ExactScene families with a degeneracy parameter ε (exact rationals), for golden data and audits.
+// Scene families with a degeneracy parameter ε (exact rationals), for golden data and audits.
 #pragma once
 #include "io/scene.hpp"
 
@@ -21,7 +21,7 @@ private:
 const std::vector<std::string>& family_names();
 std::string family_description(const std::string& name);
 
-// ExactScene `index` of family `name` at degeneracy ε (ε > 0; smaller is more degenerate).
+// Scene `index` of family `name` at degeneracy ε (ε > 0; smaller is more degenerate).
 // Throws InputError for an unknown family.
 ExactScene make_family_scene(const std::string& name, const Q& eps, Rng& rng);
 

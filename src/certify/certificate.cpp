@@ -374,7 +374,7 @@ void add_segment_json(Json& j, const HullModel& m, const TouchingCurve& c, const
     }
     j["t_curve"] = tc;
     j["t_curve_double"] = tcd;
-    // ContactFeatures loci: the common point at each curve vertex (the contact point moves linearly
+    // Contact loci: the common point at each curve vertex (the contact point moves linearly
     // between them on (V,F), (F,V) and (E,E) pieces).
     Json loci = Json::array();
     for (const auto& v : curve_vertices(m, c)) {

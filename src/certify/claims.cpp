@@ -231,7 +231,7 @@ private:
         return std::nullopt;
     }
 
-    // A curve claim: the rules of CLAIMS.md ("TouchingCurve claims"), each applied here once.
+    // A curve claim: the rules of CLAIMS.md ("Curve claims"), each applied here once.
     bool curve(const JNode& j, Json& o, std::string& text) {
         only(j, {"kind", "vertices", "pieces", "switch_points"});
         struct Seg { Q x0, y0, x1, y1; std::optional<std::string> label; };

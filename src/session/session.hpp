@@ -34,7 +34,7 @@ public:
     Session(std::shared_ptr<const CompactScene> scene, std::string name, Engine engine = Engine::Auto);
     // Laps for SCALECERT_TIMING (optional; must outlive the session's work).
     void set_clock(StageClock* clock) { clock_ = clock; }
-    // A hull model built elsewhere and shared (the library's ExactScene builds it once for all its
+    // A hull model built elsewhere and shared (the library's Scene builds it once for all its
     // analyses); by default the session builds its own.
     void set_hull_source(std::function<std::shared_ptr<const HullModel>()> source) { hull_source_ = std::move(source); }
 
