@@ -38,7 +38,7 @@ BOOST_AUTO_TEST_CASE(filtered_equals_exact) {
             probe(a, std::nextafter(b, 0.0));
             probe(a, std::nextafter(b, 10.0));
         }
-        exact_stage += fc.counts.exact;
+        exact_stage += fc.counts().exact;
     }
     BOOST_TEST(exact_stage > 0u);  // the near-curve probes did reach the exact stage
 }
@@ -112,8 +112,8 @@ BOOST_AUTO_TEST_CASE(model_free_queries_equal_exact) {
             double x = u(g), y = u(g);
             BOOST_TEST(qs.classify(x, y) == query_direct(m, exact_from_double(x), exact_from_double(y)));
         }
-        random_filtered += qs.counts.filtered, random_exact += qs.counts.exact;
-        qs.counts = {};
+        random_filtered += qs.counts().filtered, random_exact += qs.counts().exact;
+        qs.stats = {};
         for (int k = 0; k < 20; ++k) {  // on the curve (to the nearest double) and one ulp either side
             double x = u(g);
             double y = to_double_rn(c.env.value(m.lines, exact_from_double(x)));
@@ -125,7 +125,7 @@ BOOST_AUTO_TEST_CASE(model_free_queries_equal_exact) {
                 ++near;
             }
         }
-        near_exact += qs.counts.exact;
+        near_exact += qs.counts().exact;
     }
     std::cout << "model-free queries: random pairs " << random_filtered << " certified by the filter, " << random_exact
               << " exact; pairs within an ulp of the curve " << near - near_exact << " certified, " << near_exact << " exact ("

@@ -116,8 +116,8 @@ void query_benchmarks(const std::string& name, const ExactScene& sc, long nq) {
     row("exact query, model built, no curve (filtered)", name, t_direct, ratio("%.3gx GJK's time", t_direct / t_gjk));
     row("exact query from the scene: no model, no curve", name, t_quick, ratio("%.3gx GJK's time (target <= 3x on boxes)", t_quick / t_gjk));
     std::fprintf(stderr, "    stages: with curve %lu filtered / %lu exact; no curve %lu / %lu; from the scene %lu / %lu; GJK verdicts differing from exact: %ld of %ld\n",
-                 (unsigned long)fc.counts.filtered, (unsigned long)fc.counts.exact, (unsigned long)fd.counts.filtered,
-                 (unsigned long)fd.counts.exact, (unsigned long)qs.counts.filtered, (unsigned long)qs.counts.exact, wrong, nq);
+                 (unsigned long)fc.counts().filtered, (unsigned long)fc.counts().exact, (unsigned long)fd.counts().filtered,
+                 (unsigned long)fd.counts().exact, (unsigned long)qs.counts().filtered, (unsigned long)qs.counts().exact, wrong, nq);
     // Points exactly on the curve: the filter cannot decide them; all go to the exact stage.
     FastCurve fc2(m, c);
     QuickScene qs2(sc);
@@ -129,7 +129,7 @@ void query_benchmarks(const std::string& name, const ExactScene& sc, long nq) {
         if (exact_from_double(yd) == y) { fc2.classify(x, yd); qs2.classify(x, yd); ++on; }
     }
     std::fprintf(stderr, "    on-curve points representable as doubles: %ld, decided exactly: %lu with the curve, %lu from the scene\n", on,
-                 (unsigned long)fc2.counts.exact, (unsigned long)qs2.counts.exact);
+                 (unsigned long)fc2.counts().exact, (unsigned long)qs2.counts().exact);
 }
 
 std::vector<std::string> growth_rows;
@@ -150,9 +150,10 @@ void growth(const std::string& name, const ExactScene& sc) {
     }
     char b[512];
     std::snprintf(b, sizeof b, "| %s | %.3g s | %lu / %lu | %lu / %lu | %lu / %lu |", name.c_str(), t,
-                  (unsigned long)(m.P[0].cmp_filtered + m.P[1].cmp_filtered), (unsigned long)(m.P[0].cmp_exact + m.P[1].cmp_exact),
-                  (unsigned long)m.stats.arc_signs_filtered, (unsigned long)m.stats.arc_signs_exact,
-                  (unsigned long)fc.counts.filtered, (unsigned long)fc.counts.exact);
+                  (unsigned long)(m.P[0].predicates[filter::Predicate::SupportCmp].filtered + m.P[1].predicates[filter::Predicate::SupportCmp].filtered),
+                  (unsigned long)(m.P[0].predicates[filter::Predicate::SupportCmp].exact + m.P[1].predicates[filter::Predicate::SupportCmp].exact),
+                  (unsigned long)m.stats.predicates[filter::Predicate::ArcSide].filtered, (unsigned long)m.stats.predicates[filter::Predicate::ArcSide].exact,
+                  (unsigned long)fc.counts().filtered, (unsigned long)fc.counts().exact);
     growth_rows.push_back(b);
     std::fprintf(stderr, "  %s\n", b);
 }

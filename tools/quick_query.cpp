@@ -94,7 +94,7 @@ Verdict QuickScene::classify(double r1, double r2) const {
         }
         const double g = dotd(n, d_) - r1 * h1 - r2 * h2;
         const double scale = std::fabs(n[0] * d_[0]) + std::fabs(n[1] * d_[1]) + std::fabs(n[2] * d_[2]) + r1 * m1 + r2 * m2;
-        return std::isfinite(g) && std::isfinite(scale) && scale > 1e-250 && g > filter::kQuickGapRel * scale;
+        return filter::quick_gap_certified(g, scale);
     };
     // The origin strictly inside the tetrahedron: 0 = Σ λ_k w_k with every λ_k > 0, i.e. the four
     // cofactors (−1)^k det(w without k) nonzero and of one sign.
@@ -104,10 +104,9 @@ Verdict QuickScene::classify(double r1, double r2) const {
             const Pt* o[3];
             for (int m = 0, t = 0; m < 4; ++m)
                 if (m != k) o[t++] = &s[static_cast<size_t>(m)];
-            double det = dotd(o[0]->w, crossd(o[1]->w, o[2]->w)) * (k % 2 ? -1 : 1);
-            double bound = filter::kQuickDetRel * permanent(o[0]->W, o[1]->W, o[2]->W);
-            if (!std::isfinite(det) || !std::isfinite(bound) || !(bound > 1e-250) || std::fabs(det) <= bound) return false;
-            const int sk = det > 0 ? 1 : -1;
+            const double det = dotd(o[0]->w, crossd(o[1]->w, o[2]->w)) * (k % 2 ? -1 : 1);
+            const int sk = filter::quick_cofactor_sign(det, permanent(o[0]->W, o[1]->W, o[2]->W));
+            if (sk == 0) return false;
             if (sign && sk != sign) return false;
             sign = sk;
         }
@@ -118,7 +117,7 @@ Verdict QuickScene::classify(double r1, double r2) const {
         D3 v = dotd(d_, d_) > 0 ? negd(d_) : D3{1, 0, 0};
         std::vector<Pt> s{support(v)};
         v = negd(s[0].w);
-        for (int iter = 0; iter < 64; ++iter) {
+        for (int iter = 0; iter < filter::kQuickGjkIterations; ++iter) {
             if (!(dotd(v, v) > 0) || !std::isfinite(dotd(v, v))) break;  // the origin on the simplex: too close to call
             const Pt p = support(v);
             if (dotd(p.w, v) < 0) {
@@ -133,10 +132,10 @@ Verdict QuickScene::classify(double r1, double r2) const {
         }
     }
     if (separated || overlapping) {
-        ++counts.filtered;
+        stats.filtered(filter::Predicate::QuickCertificate);
         return separated ? Verdict::Separated : Verdict::Overlapping;
     }
-    ++counts.exact;
+    stats.exact(filter::Predicate::QuickCertificate);
     if (!model_) model_ = std::make_unique<Model>(build_model(scene_));
     return query_direct(*model_, exact_from_double(r1), exact_from_double(r2));
 }

@@ -20,7 +20,9 @@ public:
     explicit QuickScene(const ExactScene& scene);
     ~QuickScene();
     Verdict classify(double rho1, double rho2) const;  // ρ1, ρ2 > 0 (their exact values)
-    mutable StageCounts counts;  // filtered = certified by GJK and the filter; exact = model built or used
+    // quick_certificate: filtered = certified by GJK and the filter; exact = model built or used
+    mutable filter::PredicateStats stats;
+    StageCounts counts() const { return stats[filter::Predicate::QuickCertificate]; }
 
 private:
     ExactScene scene_;

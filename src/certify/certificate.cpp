@@ -54,8 +54,9 @@ Json model_json(const Model& m) {
         j["support_queries"] = s.support_queries;
         j["gift_wrap_steps"] = s.gift_wrap_steps;
         j["start_lp"] = Json{{"solves", s.lp_solves}, {"rows", s.lp_rows}};
-        j["decided_by_filter"] = Json{{"support_comparisons", s.points_visited - s.candidates_exact}};
-        j["decided_exactly"] = Json{{"support_comparisons", s.candidates_exact}};
+        const filter::PredicateCounts& sc = s.predicates[filter::Predicate::ScanSupport];
+        j["decided_by_filter"] = Json{{"support_comparisons", sc.filtered}};
+        j["decided_exactly"] = Json{{"support_comparisons", sc.exact}};
         return j;
     }
     for (int i = 0; i < 2; ++i)
@@ -64,10 +65,14 @@ Json model_json(const Model& m) {
     j["contact_lines"] = m.lines.size();  // after dropping the certainly dominated ones
     j["edge_pairs_tested"] = m.stats.edge_pairs_tested;
     j["gauss_arc_crossings"] = m.stats.arc_crossings;
-    j["decided_by_filter"] = Json{{"arc_signs", m.stats.arc_signs_filtered},
-                                  {"support_comparisons", m.P[0].cmp_filtered + m.P[1].cmp_filtered}};
-    j["decided_exactly"] = Json{{"arc_signs", m.stats.arc_signs_exact},
-                                {"support_comparisons", m.P[0].cmp_exact + m.P[1].cmp_exact}};
+    // From the predicates' statistics (predicates.hpp): the arc sides of the overlay, the
+    // support comparisons of both polyhedra.
+    using filter::Predicate;
+    const filter::PredicateCounts arc = m.stats.predicates[Predicate::ArcSide];
+    filter::PredicateCounts cmp = m.P[0].predicates[Predicate::SupportCmp];
+    cmp += m.P[1].predicates[Predicate::SupportCmp];
+    j["decided_by_filter"] = Json{{"arc_signs", arc.filtered}, {"support_comparisons", cmp.filtered}};
+    j["decided_exactly"] = Json{{"arc_signs", arc.exact}, {"support_comparisons", cmp.exact}};
     return j;
 }
 

@@ -10,10 +10,6 @@
 
 namespace scalecert::internal {
 
-namespace {
-constexpr double kRel = filter::kQueryRel;  // predicates.hpp, bound 4
-}  // namespace
-
 FastCurve::FastCurve(const Model& m, const TouchingCurve& c) : m_(m), c_(c) {
     for (const EnvPiece& p : c.env.pieces) {
         const ContactLine& L = m.lines[p.line];
@@ -24,17 +20,18 @@ FastCurve::FastCurve(const Model& m, const TouchingCurve& c) : m_(m), c_(c) {
 }
 
 Verdict FastCurve::classify(double r1, double r2) const {
-    // The piece: binary search over the breakpoints, unless r1 is too close to one to be sure.
+    // Predicate 4 (predicates.hpp): the piece by binary search over the breakpoints, unless r1 is
+    // too close to one to be sure; then the side of its line; else the exact query.
+    using filter::Predicate;
     size_t k = static_cast<size_t>(std::upper_bound(breaks_.begin(), breaks_.end(), r1) - breaks_.begin());
-    bool near = (k < breaks_.size() && breaks_[k] - r1 <= kRel * std::fabs(r1)) ||
-                (k > 0 && r1 - breaks_[k - 1] <= kRel * std::fabs(r1));
+    bool near = (k < breaks_.size() && filter::near_breakpoint(breaks_[k], r1, false)) ||
+                (k > 0 && filter::near_breakpoint(breaks_[k - 1], r1, true));
     if (!near) {
-        double f = a_[k] * r1 + b_[k];
-        double err = kRel * (std::fabs(a_[k] * r1) + std::fabs(b_[k])) + 1e-300;
-        if (r2 < f - err) { ++counts.filtered; return Verdict::Separated; }
-        if (r2 > f + err) { ++counts.filtered; return Verdict::Overlapping; }
+        const int side = filter::curve_side_filter(a_[k], b_[k], r1, r2);
+        if (side > 0) { stats.filtered(Predicate::CurveSide); return Verdict::Separated; }
+        if (side < 0) { stats.filtered(Predicate::CurveSide); return Verdict::Overlapping; }
     }
-    ++counts.exact;
+    stats.exact(Predicate::CurveSide);
     return query(m_, c_, exact_from_double(r1), exact_from_double(r2), false).verdict;
 }
 
@@ -47,17 +44,16 @@ FastDirect::FastDirect(const Model& m) : m_(m) {
 }
 
 Verdict FastDirect::classify(double r1, double r2) const {
-    // Separated iff some n·d − ρ1 h1 − ρ2 h2 > 0; overlapping iff all < 0.
+    // Separated iff some n·d − ρ1 h1 − ρ2 h2 > 0; overlapping iff all < 0 (predicate 4).
+    using filter::Predicate;
     bool all_negative = true;
     for (size_t i = 0; i < nd_.size(); ++i) {
-        double t1 = r1 * h1_[i], t2 = r2 * h2_[i];
-        double g = nd_[i] - t1 - t2;
-        double err = kRel * (std::fabs(nd_[i]) + std::fabs(t1) + std::fabs(t2)) + 1e-300;
-        if (g > err) { ++counts.filtered; return Verdict::Separated; }
-        if (g >= -err) all_negative = false;
+        const int g = filter::lines_gap_filter(nd_[i], h1_[i], h2_[i], r1, r2);
+        if (g > 0) { stats.filtered(Predicate::LinesGap); return Verdict::Separated; }
+        if (g == 0) all_negative = false;
     }
-    if (all_negative) { ++counts.filtered; return Verdict::Overlapping; }
-    ++counts.exact;
+    if (all_negative) { stats.filtered(Predicate::LinesGap); return Verdict::Overlapping; }
+    stats.exact(Predicate::LinesGap);
     return query_direct(m_, exact_from_double(r1), exact_from_double(r2));
 }
 
@@ -74,9 +70,9 @@ StageCounts classify_batch(const FastCurve& f, const std::vector<double>& r1, co
             for (size_t i = t * chunk; i < end; ++i) out[i] = copies[t].classify(r1[i], r2[i]);
         });
     for (auto& th : pool) th.join();
-    StageCounts sum;
-    for (const FastCurve& c : copies) sum.filtered += c.counts.filtered, sum.exact += c.counts.exact;
-    return sum;
+    filter::PredicateStats sum;
+    for (const FastCurve& c : copies) sum += c.stats;
+    return sum[filter::Predicate::CurveSide];
 }
 
 namespace {

@@ -3,22 +3,23 @@
 // cannot decide. The answers are always the exact ones.
 #pragma once
 #include "certify/query.hpp"
+#include "numeric/predicates.hpp"
 
 #include <cstdint>
 #include <string>
 
 namespace scalecert::internal {
 
-// How often each stage decided (per object: use one object per thread).
-struct StageCounts {
-    std::uint64_t filtered = 0, exact = 0;
-};
+// How often each stage decided: the counts of one predicate (predicates.hpp).
+using StageCounts = filter::PredicateCounts;
 
 class FastCurve {
 public:
     FastCurve(const Model& m, const TouchingCurve& c);
     Verdict classify(double rho1, double rho2) const;  // ρ1, ρ2 > 0
-    mutable StageCounts counts;
+    // Statistics (curve_side), per object: use one object per thread.
+    mutable filter::PredicateStats stats;
+    StageCounts counts() const { return stats[filter::Predicate::CurveSide]; }
 
 private:
     const Model& m_;
@@ -31,7 +32,8 @@ class FastDirect {
 public:
     explicit FastDirect(const Model& m);
     Verdict classify(double rho1, double rho2) const;
-    mutable StageCounts counts;
+    mutable filter::PredicateStats stats;  // lines_gap, per object
+    StageCounts counts() const { return stats[filter::Predicate::LinesGap]; }
 
 private:
     const Model& m_;

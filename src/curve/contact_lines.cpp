@@ -57,18 +57,17 @@ std::vector<size_t> undominated(const std::vector<double>& a, const std::vector<
     std::vector<size_t> keep, by_slope;
     for (size_t i = 0; i < a.size(); ++i) (std::isfinite(a[i]) && std::isfinite(b[i]) ? by_slope : keep).push_back(i);
     std::sort(by_slope.begin(), by_slope.end(), [&](size_t i, size_t j) { return a[i] > a[j]; });
-    constexpr double kRel = filter::kDominatedRel;  // predicates.hpp, bound 3
-    auto lower = [&](size_t i) { return a[i] - kRel * std::fabs(a[i]); };  // below the true slope
-    auto upper = [&](size_t i) { return a[i] + kRel * std::fabs(a[i]); };  // above it
-    double bmax = -INFINITY, bmax_err = 0;
+    // Predicate 3 (predicates.hpp): margins of kDominatedRel below and above each value.
+    using filter::dominated_lower, filter::dominated_upper;
+    double bmax_lower = -INFINITY;  // the largest certain lower bound of those lines' intercepts
     size_t j = 0;  // lines by_slope[0..j) have a slope certainly larger than the current line's
     for (size_t k = 0; k < by_slope.size(); ++k) {
         size_t i = by_slope[k];
-        while (j < k && lower(by_slope[j]) > upper(i)) {
+        while (j < k && dominated_lower(a[by_slope[j]]) > dominated_upper(a[i])) {
             size_t m = by_slope[j++];
-            if (b[m] - kRel * std::fabs(b[m]) > bmax - bmax_err) bmax = b[m], bmax_err = kRel * std::fabs(b[m]);
+            bmax_lower = std::max(bmax_lower, dominated_lower(b[m]));
         }
-        if (bmax - bmax_err > b[i] + kRel * std::fabs(b[i])) continue;  // certainly dominated
+        if (bmax_lower > dominated_upper(b[i])) continue;  // certainly dominated
         keep.push_back(i);
     }
     std::sort(keep.begin(), keep.end());
@@ -169,30 +168,12 @@ std::vector<V> facet_normals(const HullModel& m, LineStats& st) {
                 xd = dir_d(exact_x());
             }
         }
-        // Sign of (u × x)·p (or (x × u)·p): filtered, exact when unsure.
+        // Sign of (u × x)·p (or (x × u)·p): predicate 2, filtered, exact when unsure.
         for (int sign : {1, -1}) {
-            D3 xs{sign * xd[0], sign * xd[1], sign * xd[2]};
+            const D3 xs{sign * xd[0], sign * xd[1], sign * xd[2]};
+            auto signed_x = [&] { return sign > 0 ? exact_x() : vneg(exact_x()); };
             auto side = [&](const D3& ud, const D3& pd, bool x_first, const V& u, const V& p) {
-                D3 c = x_first ? crossd(xs, ud) : crossd(ud, xs);
-                double v = dotd(c, pd), bound = filter::kArcRel * normd(ud) * normd(xs) * normd(pd);
-                if (v > bound) return ++st.arc_signs_filtered, 1;
-                if (v < -bound) return ++st.arc_signs_filtered, -1;
-                ++st.arc_signs_exact;
-                auto gmp = [&] {
-                    Vec3z x = as_z(exact_x()), uz = as_z(u);
-                    if (sign < 0) x = neg(x);
-                    return sgn(dotz(x_first ? cross(x, uz) : cross(uz, x), as_z(p)));
-                };
-                if constexpr (std::is_same_v<V, Vec3s>) {
-                    // u × x exactly in 128 bits (|u|, |x| < 2^62), then its dot with p, checked
-                    const Vec3s xv = sign > 0 ? exact_x() : neg_s(exact_x());
-                    return filter::exact_sign(
-                        [&](filter::Acc128& acc) {
-                            for (int k = 0; k < 3; ++k) acc.add(x_first ? cross_k(xv, u, k) : cross_k(u, xv, k), p[k]);
-                        },
-                        gmp);
-                }
-                return gmp();
+                return filter::arc_side(ud, xs, pd, x_first, u, signed_x, p, st.predicates);
             };
             if (side(a.fd, a.pd, false, a.from, a.p) > 0 && side(a.td, a.pd, true, a.to, a.p) > 0 &&
                 side(b.fd, b.pd, false, b.from, b.p) > 0 && side(b.td, b.pd, true, b.to, b.p) > 0) {
@@ -269,6 +250,8 @@ void add_lines(HullModel& m, const std::vector<V>& normals) {
     }
     std::vector<size_t> keep = undominated(sa, sb);
     m.stats.dominated_lines = normals.size() - keep.size();
+    m.stats.predicates.filtered(filter::Predicate::DominatedLine, m.stats.dominated_lines);
+    m.stats.predicates.exact(filter::Predicate::DominatedLine, keep.size());
     m.lines.reserve(keep.size());
     for (size_t i : keep) m.lines.push_back(line_for_normal(m, as_z(normals[i])));
 }

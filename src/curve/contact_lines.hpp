@@ -28,14 +28,16 @@ char feature_letter(size_t n_vertices);
 
 struct LineStats {
     std::uint64_t face_normals = 0, edge_pairs_tested = 0, arc_crossings = 0, distinct_normals = 0;
-    std::uint64_t arc_signs_filtered = 0, arc_signs_exact = 0;  // Gauss-arc sign tests by stage
     std::uint64_t dominated_lines = 0;  // facet normals whose lines were certainly dominated
+    filter::PredicateStats predicates;  // arc_side (Gauss-arc sign tests) and dominated_line, by stage
 };
 
 // What the scan path did (scan.hpp): engine statistics, reported in its curve's "model".
 struct ScanStats {
-    std::uint64_t support_queries = 0, points_visited = 0;  // exact support queries, points whose value was formed
-    std::uint64_t candidates_exact = 0;                     // points whose value was then formed exactly
+    std::uint64_t support_queries = 0;  // exact support queries
+    // scan_support: points whose double value was formed and ruled out (filtered), candidates
+    // then formed exactly (exact)
+    filter::PredicateStats predicates;
     std::uint64_t lp_solves = 0, lp_rows = 0;               // the start: exact LPs and their final size
     std::uint64_t gift_wrap_steps = 0, pieces_walked = 0;
 };

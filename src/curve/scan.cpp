@@ -75,7 +75,7 @@ Walked<Z> max_over(const IntPoints& P, const std::vector<int>& idx, const Vec3z&
         for (int c = 0; c < 3; ++c) maxabs[c] = std::max(maxabs[c], std::fabs(static_cast<double>(P.at(static_cast<size_t>(k))[c])));
     double B = 0;
     for (int c = 0; c < 3; ++c) B += std::fabs(u.d[c]) * maxabs[c];
-    const double E = filter::kScanSupport * B;
+    const filter::ScanSupportFilter keep(B);
     std::vector<double> v(idx.size());
     double best = -INFINITY;
     for (size_t i = 0; i < idx.size(); ++i) {
@@ -85,7 +85,7 @@ Walked<Z> max_over(const IntPoints& P, const std::vector<int>& idx, const Vec3z&
     }
     std::optional<Z> top;
     for (size_t i = 0; i < idx.size(); ++i)
-        if (v[i] >= best - 2 * E) {
+        if (keep.candidate(v[i], best)) {
             Z t = dot_exact(u, P.at(static_cast<size_t>(idx[i])));
             if (!top || t > *top) top = std::move(t);
         }
@@ -171,27 +171,28 @@ public:
         double B = 0;
         for (int k = 0; k < 3; ++k) B += std::fabs(n.d[k]) * maxabs_[k];
         if (!(B > 0) || !std::isfinite(B)) return stop(Handover::ZeroOrHugeNormal);
-        const double E = filter::kScanSupport * B;
+        const filter::ScanSupportFilter keep(B);
         double best = -INFINITY;
+        std::uint64_t visited = 0;
         std::vector<std::pair<double, std::uint32_t>> cand;
         std::vector<std::pair<double, std::uint32_t>> stack;
         stack.push_back({ub(nodes_[0], n.d), 0});
         while (!stack.empty()) {
             auto [u, id] = stack.back();
             stack.pop_back();
-            if (u < best - 4 * E) continue;
+            if (keep.box_excluded(u, best)) continue;
             const Node& nd = nodes_[id];
             if (nd.left < 0) {
-                st_.points_visited += nd.end - nd.begin;
+                visited += nd.end - nd.begin;
                 for (std::uint32_t i = nd.begin; i < nd.end; ++i) {
                     const double* x = &xd_[3 * i];
                     const double v = n.d[0] * x[0] + n.d[1] * x[1] + n.d[2] * x[2];
-                    if (v >= best - 2 * E) {
+                    if (keep.candidate(v, best)) {
                         cand.push_back({v, i});
                         if (v > best) best = v;
                     }
                 }
-                if (cand.size() > 64) prune(cand, best - 2 * E);
+                if (cand.size() > filter::kScanPruneEvery) prune(cand, keep.floor(best));
             } else {
                 const double ul = ub(nodes_[nd.left], n.d), ur = ub(nodes_[nd.right], n.d);
                 if (ul < ur) {
@@ -203,8 +204,10 @@ public:
                 }
             }
         }
-        prune(cand, best - 2 * E);
-        st_.candidates_exact += cand.size();
+        prune(cand, keep.floor(best));
+        // Predicate 7's statistics: the points ruled out by the filter, the candidates left.
+        st_.predicates.filtered(filter::Predicate::ScanSupport, visited - cand.size());
+        st_.predicates.exact(filter::Predicate::ScanSupport, cand.size());
         Support s;
         bool first = true;
         for (const auto& [v, i] : cand) {

@@ -17,7 +17,7 @@ D3 unit(const D3& d) {
 }
 
 struct Box { D3 lo, hi; };
-constexpr double kPad = filter::kArcBoxPad;  // predicates.hpp, bound 6
+constexpr double kPad = filter::kArcBoxPad;  // predicates.hpp, bound 6 (its other constants too)
 
 // Bounding box of the arc on the unit sphere: its ends, plus each coordinate's extreme on the
 // great circle where that extreme lies on the arc (tested with slack, so never missed).
@@ -30,7 +30,7 @@ Box arc_box(const Arc& arc) {
     }
     D3 p = crossd(a, b);
     double lp = std::sqrt(dotd(p, p));
-    if (lp < 1e-300) {  // numerically degenerate: the whole sphere
+    if (lp < filter::kArcDegenerate) {  // numerically degenerate: the whole sphere
         return {{-1 - kPad, -1 - kPad, -1 - kPad}, {1 + kPad, 1 + kPad, 1 + kPad}};
     }
     for (double& c : p) c /= lp;
@@ -38,11 +38,11 @@ Box arc_box(const Arc& arc) {
         D3 u{-p[k] * p[0], -p[k] * p[1], -p[k] * p[2]};
         u[k] += 1;
         double lu = std::sqrt(dotd(u, u));
-        if (lu < 1e-12) continue;
+        if (lu < filter::kArcExtremeSkip) continue;
         for (double& c : u) c /= lu;
         for (int s : {1, -1}) {
             D3 x{s * u[0], s * u[1], s * u[2]};
-            if (dotd(crossd(a, x), p) > -1e-9 && dotd(crossd(x, b), p) > -1e-9) {
+            if (dotd(crossd(a, x), p) > -filter::kArcExtremeSlack && dotd(crossd(x, b), p) > -filter::kArcExtremeSlack) {
                 bx.lo[k] = std::min(bx.lo[k], x[k]);
                 bx.hi[k] = std::max(bx.hi[k], x[k]);
             }
@@ -81,15 +81,15 @@ std::vector<std::pair<int, int>> arc_candidates(const std::vector<Arc>& A, const
                b.lo[2] <= a.hi[2];
     };
     std::vector<std::pair<int, int>> out;
-    if (A.size() * B.size() <= 4096) {  // few arcs: every pair's boxes, no grid
+    if (A.size() * B.size() <= filter::kArcBrutePairs) {  // few arcs: every pair's boxes, no grid
         for (size_t i = 0; i < A.size(); ++i)
             for (size_t j = 0; j < B.size(); ++j)
                 if (overlap(ba[i], bb[j])) out.push_back({static_cast<int>(i), static_cast<int>(j)});
         return out;
     }
-    // Cells about the size of an average arc, at most 128 per axis.
+    // Cells about the size of an average arc, at most kArcGridMax per axis.
     double mean = A.empty() ? 2.0 : extent / (3.0 * static_cast<double>(A.size()));
-    int R = static_cast<int>(std::clamp(2.0 / std::max(mean, 1e-9), 1.0, 128.0));
+    int R = static_cast<int>(std::clamp(2.0 / std::max(mean, filter::kArcGridMinMean), 1.0, filter::kArcGridMax));
     auto cell = [&](double x) { return std::clamp(static_cast<int>((x + 1.0) * 0.5 * R), 0, R - 1); };
     // (cell, arc) entries of both sets sorted by cell, then joined cell by cell: flat arrays, no
     // hashing. A pair met in several shared cells is kept once.

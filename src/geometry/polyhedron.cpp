@@ -47,12 +47,7 @@ struct FilteredDot {
     }
     static double to_double(const Z& z) { return z.get_d(); }
     static double to_double(std::int64_t v) { return static_cast<double>(v); }
-    double approx(int v, double& err) const {
-        const D3& x = P.dpts[v];
-        double a = nd[0] * x[0], b = nd[1] * x[1], c = nd[2] * x[2];
-        err = filter::kSupportRel * (std::fabs(a) + std::fabs(b) + std::fabs(c));
-        return a + b + c;
-    }
+    filter::SupportApprox approx(int v) const { return filter::support_approx(nd.data(), P.dpts[v].data()); }
     int exact_cmp(int w, int v) const {
         if constexpr (std::is_same_v<N, Vec3s>) {
             I128 a = dot_s(n, P.ipts_s[w]), b = dot_s(n, P.ipts_s[v]);
@@ -61,25 +56,21 @@ struct FilteredDot {
             return cmp(dotz(n, P.ipts[w]), dotz(n, P.ipts[v]));
         }
     }
-    // sign of n·x_w − n·x_v, exactly
-    int compare(int w, double wd, double we, int v, double vd, double ve) const {
-        double diff = wd - vd, tol = we + ve;
-        if (diff > tol) return ++P.cmp_filtered, 1;
-        if (diff < -tol) return ++P.cmp_filtered, -1;
-        ++P.cmp_exact;
-        return exact_cmp(w, v);
+    // sign of n·x_w − n·x_v, exactly (predicate 1)
+    int compare(int w, const filter::SupportApprox& wa, int v, const filter::SupportApprox& va) const {
+        return filter::support_cmp(wa, va, [&] { return exact_cmp(w, v); }, P.predicates);
     }
 };
 
 template <class N>
 int climb_with(const FilteredDot<N>& f) {
     int cur = f.P.start_vertex(f.nd);
-    double ce, cd = f.approx(cur, ce);
+    filter::SupportApprox ca = f.approx(cur);
     for (bool moved = true; moved;) {
         moved = false;
         for (int w : f.P.adj[cur]) {
-            double we, wd = f.approx(w, we);
-            if (f.compare(w, wd, we, cur, cd, ce) > 0) { cur = w; cd = wd; ce = we; moved = true; break; }
+            const filter::SupportApprox wa = f.approx(w);
+            if (f.compare(w, wa, cur, ca) > 0) { cur = w; ca = wa; moved = true; break; }
         }
     }
     return cur;
@@ -89,15 +80,14 @@ int climb_with(const FilteredDot<N>& f) {
 // the vertex graph.
 template <class N>
 std::vector<int> tied_with(const FilteredDot<N>& f, int top) {
-    double ce, cd = f.approx(top, ce);
+    const filter::SupportApprox ta = f.approx(top);
     std::vector<int> out{top}, stack{top};
     while (!stack.empty()) {
         int v = stack.back();
         stack.pop_back();
         for (int w : f.P.adj[v]) {
             if (std::find(out.begin(), out.end(), w) != out.end()) continue;
-            double we, wd = f.approx(w, we);
-            if (f.compare(w, wd, we, top, cd, ce) == 0) {
+            if (f.compare(w, f.approx(w), top, ta) == 0) {
                 out.push_back(w);
                 stack.push_back(w);
             }

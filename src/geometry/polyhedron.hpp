@@ -2,6 +2,7 @@
 // normal a primitive integer vector, every index an index into the input point list.
 #pragma once
 #include "numeric/exact.hpp"
+#include "numeric/predicates.hpp"
 #include "numeric/small_int.hpp"
 
 #include <cstdint>
@@ -30,9 +31,9 @@ struct Polyhedron {
     Z scale;                             // lcm of the denominators of the points
     std::vector<Vec3s> ipts_s;           // ipts in machine integers when all |ipts| < 2^29, else empty
     std::vector<std::array<double, 3>> dpts;  // ipts as doubles: a filter for comparisons only
-    // How often argmax's comparisons were decided by the double filter, and exactly (statistics;
-    // argmax is called from one thread at a time).
-    mutable std::uint64_t cmp_filtered = 0, cmp_exact = 0;
+    // Statistics of the predicates this polyhedron decides (support_cmp: argmax's and climb's
+    // comparisons, by stage); climb and argmax are called from one thread at a time.
+    mutable filter::PredicateStats predicates;
     std::vector<int> start_table;        // cube-map cells (6 × G × G) -> a vertex near the argmax
     int start_g = 0;                     // G
 

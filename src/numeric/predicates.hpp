@@ -1,23 +1,42 @@
 // The engine's filtered predicates in one place: every floating-point filter's error bound, with
-// the proof that it dominates the true rounding error, and the one exact fallback chain (128-bit
-// integers with overflow checks, then GMP). Models: Geogram's numerics/predicates.cpp (a filter
-// with a stated bound, then an exact stage) and CGAL's filtered kernels.
+// the proof that it dominates the true rounding error, the named predicates that apply them
+// (filter, then exact stage), and the one exact fallback chain (128-bit integers with overflow
+// checks, then GMP). Models: Geogram's numerics/predicates.cpp (a filter with a stated bound,
+// then an exact stage) and CGAL's filtered kernels.
 //
 // A filter may only answer when its computed value clears its bound; otherwise the exact stage
 // decides. Each bound below is the proven worst case times a safety factor (stated, and checked
 // by a static_assert), so that a slip of a few ulps in the reasoning cannot make a filter lie.
-// The counts of filtered and exact decisions are engine statistics, reported with each model
-// ("decided_by_filter", "decided_exactly"); each is kept by the object that decides, so that
-// threads share none: Polyhedron::cmp_filtered/cmp_exact (1), LineStats::arc_signs_* (2),
-// StageCounts of the fast and quick queries (4, 5) and ScanStats (7).
+//
+// Statistics: every predicate counts each decision, by stage, into a PredicateStats (one counter
+// pair per predicate, below). A PredicateStats belongs to the object that decides (a Polyhedron,
+// a model's LineStats or ScanStats, a FastCurve, FastDirect or QuickScene), so that threads share
+// none; sums over objects are explicit (operator+=). The statistics each model reports
+// ("decided_by_filter", "decided_exactly") are read from them.
+//
+// The predicates (their filters are in this file; an exact stage that is a whole algorithm of a
+// higher layer is named where it is):
+//   1. support_cmp             sign of n·x_w − n·x_v                 (Polyhedron::climb, argmax)
+//   2. arc_side                sign of (u × x)·p on a Gauss arc       (contact_lines.cpp)
+//   3. line_certainly_dominated  a line below another for all ρ1 ≥ 0   (contact_lines.cpp)
+//   4. curve_side_filter, lines_gap_filter: a query pair against the curve, the lines
+//                                                                    (FastCurve, FastDirect)
+//   5. quick_gap_certified, quick_cofactor_sign: GJK's certificates  (tools/quick_query.cpp)
+//   6. the Gauss-map candidate boxes: a completeness filter, no sign (gauss_map.cpp)
+//   7. ScanSupportFilter       which points may maximise n·x          (scan.cpp)
 //
 // Notation: u = 2^-53 (the unit roundoff of double), γ_n = n·u / (1 − n·u) (Higham): a sum of n
 // rounded products, or a product of n rounded factors, is within γ_n of the exact value
 // relative to the sum of the magnitudes.
 #pragma once
+#include "numeric/double3.hpp"
 #include "numeric/small_int.hpp"
 
+#include <array>
+#include <cmath>
+#include <cstddef>
 #include <cstdint>
+#include <type_traits>
 
 namespace scalecert::internal::filter {
 
@@ -27,11 +46,15 @@ constexpr double gamma(int n) { return n * kUnit / (1 - n * kUnit); }
 // ---- The bounds, one per predicate ----------------------------------------------------------
 
 // 1. Support comparison (polyhedron.cpp, hill climbing): sign of n·x_w − n·x_v. n and x are the
-//    doubles of exact integers (each rounded once), a·b + c·d + e·f is summed in doubles:
-//    |fl(n·x) − n·x| ≤ γ5·Σ|n_k x_k| per value (two input roundings, a product, two sums), so the
-//    difference errs by at most 2γ5 of the magnitudes plus one rounding of it: < 1.2e-15·Σ.
+//    doubles of exact integers, each converted once: get_d truncates (< 2u relative), a cast of
+//    an int64 rounds (≤ u). Each value a·b + c·d + e·f is then a product and two sums in doubles:
+//    |fl(n·x) − n·x| ≤ γ7·Σ|n_k x_k| (2u + 2u + u for a term, 2u for the sums), and the
+//    difference errs by at most γ7 of both magnitudes plus one rounding u of itself. The filter
+//    answers when |diff| > kSupportRel·(Σ_w + Σ_v) (magnitudes as computed, within 5u of the true
+//    ones). Non-finite values (integers beyond 2^1024) never pass: comparisons with NaN or inf
+//    bounds are false. Safety factor 5 over 2γ7 + u.
 constexpr double kSupportRel = 1e-14;
-static_assert(kSupportRel > 8 * (2 * gamma(5) + kUnit), "support filter bound");
+static_assert(kSupportRel > 5 * (2 * gamma(7) + kUnit), "support filter bound");
 
 // 2. Gauss-arc side (contact_lines.cpp): sign of (u × x)·p for arcs' end normals u, their plane
 //    normal p and the crossing direction x. u and p are direction_d of exact integers (scaled by
@@ -55,30 +78,115 @@ static_assert(kDominatedRel > 100 * 4 * kUnit, "dominated-line bound");
 // 4. Queries against the curve and against the lines (fast_query.cpp): a·ρ1 + b − ρ2 and
 //    n·d − ρ1·h1 − ρ2·h2 from the nearest doubles of exact values (one rounding each) and exact
 //    doubles ρ: within γ4 of the magnitudes, < 4.5e-16; and a breakpoint test with the same bound.
+//    The absolute term kQueryTiny covers underflow, where relative bounds fail: a product or a
+//    nearest double of an exact value that falls below 2^-1022 errs by at most 2^-1075 absolutely
+//    (gradual underflow), a handful of such errors is < 2^-1070 ≈ 1e-322, under kQueryTiny by a
+//    factor of 10^22. Non-finite values never pass (comparisons with NaN are false).
 constexpr double kQueryRel = 1e-12;
+constexpr double kQueryTiny = 1e-300;
 static_assert(kQueryRel > 1000 * gamma(4), "query filter bound");
+static_assert(kQueryTiny > 1e20 * 0x1p-1070, "query underflow term");
 
 // 5. Queries from the scene alone (quick_query.cpp, GJK in doubles): the points' doubles are
 //    within u of the exact differences q = v − s, and each formula adds a few roundings, so a
 //    separating gap and a tetrahedron's cofactor are within 20·2^-52 (4.4e-15) of the magnitudes
 //    named there (the gap's sum of |terms|, the cofactor's permanent): factors 2.2 and 22.
+//    Relative bounds need the absence of underflow: a magnitude below kQuickTiny is never
+//    certified. Above it, the few roundings that underflow err by < 2^-1070 absolutely each, far
+//    under the slack left by the factors (1.2·40u·kQuickTiny ≈ 5e-264). kQuickGjkIterations caps
+//    GJK's loop: a heuristic that cannot affect correctness (GJK only proposes; a proposal is
+//    accepted only by the two tests above, and an unfinished one goes to the exact model).
 constexpr double kQuickGapRel = 1e-14;
 constexpr double kQuickDetRel = 1e-13;
+constexpr double kQuickTiny = 1e-250;
+constexpr int kQuickGjkIterations = 64;
 static_assert(kQuickGapRel > 2 * 40 * kUnit && kQuickDetRel > 20 * 40 * kUnit, "quick query bounds");
+static_assert(1.2 * 40 * kUnit * kQuickTiny > 1e20 * 0x1p-1070, "quick query underflow");
 
-// 6. Gauss-map candidate boxes (gauss_map.cpp): not a sign, a completeness filter. Boxes of arcs
-//    on the unit sphere are padded by kArcBoxPad, far above the rounding of the few operations
-//    forming them (normalisations and cross products of unit vectors: < 1e-15), so that no
-//    crossing pair is missed; the crossing itself is then decided by predicate 2.
+// 6. Gauss-map candidate boxes (gauss_map.cpp): not a sign, a completeness filter: every pair of
+//    arcs that cross must be a candidate (extra candidates only cost time: each is then decided
+//    by predicate 2). So each constant may err only towards larger boxes or more pairs.
+//    kArcBoxPad: boxes of arcs on the unit sphere are padded by it, far above the rounding of the
+//      few operations forming them (direction_d's 2u per component, normalisations and cross
+//      products of unit vectors: < 1e-15 each) and of the losses below (< 1e-12).
+//    kArcDegenerate: an arc whose ends' computed cross product is shorter gets the whole sphere
+//      as its box (conservative: any box holding the arc is correct).
+//    kArcExtremeSkip: the extreme of coordinate k on the arc's great circle (normal p) lies at
+//      ±(e_k − p_k·p)/|e_k − p_k·p|; when that length is below kArcExtremeSkip the extreme is not
+//      added. Then every point x of the circle (x·p = 0) has |x_k| = |x·(e_k − p_k·p)| < 1e-12
+//      (plus rounding), so the ends' range of x_k misses the arc's by < 2e-12 ≪ kArcBoxPad.
+//    kArcExtremeSlack: an extreme is added when it is on the arc within this slack. Adding a
+//      point not on the arc only enlarges the box. A true extreme x* rejected has a computed side
+//      value < −slack while its true one is ≥ 0, so it lies within the error of the side (< 1e-8
+//      when |a×b| ≥ 1e-6) of an end; x_k's drop from x* to that end is quadratic in the distance
+//      (x_k is a sinusoid of amplitude ≤ 1 along the circle, stationary at x*): < 1e-16. When
+//      |a×b| < 1e-6 and the arc is short (θ < 1e-6), x_k varies over it by less than θ²/8 beyond
+//      its ends' values. (Not proven here: arcs of length near π, π − θ < 1e-8, where p = a×b
+//      is ill-conditioned: its direction errs by up to ~10u/|a×b|, more than kArcBoxPad. Such
+//      arcs come from knife edges of dihedral angle < 1e-8; see the issue.)
+//    kArcBrutePairs, kArcGridMax, kArcGridMinMean: how candidates are enumerated (every pair of
+//      boxes for few arcs, else a uniform grid of at most kArcGridMax cells per axis sized by the
+//      mean box). Heuristics for speed only: both enumerations return exactly the pairs whose
+//      boxes overlap (the grid's cell index is monotone in the coordinate, so two overlapping
+//      intervals share a cell, clamping included), sorted and without repeats.
 constexpr double kArcBoxPad = 1e-7;
+constexpr double kArcDegenerate = 1e-300;
+constexpr double kArcExtremeSkip = 1e-12;
+constexpr double kArcExtremeSlack = 1e-9;
+constexpr std::size_t kArcBrutePairs = 4096;
+constexpr double kArcGridMax = 128.0;
+constexpr double kArcGridMinMean = 1e-9;
+static_assert(kArcBoxPad > 1e4 * 2 * kArcExtremeSkip && kArcBoxPad > 1e6 * 10 * kUnit, "arc box padding");
 
 // 7. Exact support queries on a point cloud (scan.cpp): n·x for integer points |x| ≤ 2^53 (exact
 //    doubles) and n rounded once: |fl(n·x) − n·x| ≤ (u + γ3)·Σ|n_k|·max|x_k| < 4.01u·B, and a
 //    box's bound Σ max(n_k lo_k, n_k hi_k) errs as much. The filter uses E = kScanSupport·B = 8u·B:
 //    a true maximiser's value is at least best − 2e ≥ best − 2E (the candidate margin), and its
 //    box's bound at least best − 3e ≥ best − 4E (the pruning margin). Factor 2.
+//    kScanPruneEvery: the candidate list is pruned (to values ≥ best − 2E) once it exceeds this
+//    many entries: for memory only; a pruned point is below the final candidate floor too (best
+//    only grows), so the candidates compared exactly are the same whenever pruning happens.
 constexpr double kScanSupport = 0x1p-50;
+constexpr std::size_t kScanPruneEvery = 64;
 static_assert(kScanSupport > 1.9 * (kUnit + gamma(3)), "scan support bound");
+
+
+// ---- Statistics: one counter pair per predicate, per deciding object -------------------------
+
+enum class Predicate : unsigned {
+    SupportCmp,        // 1
+    ArcSide,           // 2
+    DominatedLine,     // 3 (filtered: a line dropped; exact: kept, built exactly)
+    CurveSide,         // 4, FastCurve
+    LinesGap,          // 4, FastDirect
+    QuickCertificate,  // 5 (exact: the model decided)
+    ScanSupport,       // 7 (filtered: points ruled out; exact: candidates formed exactly)
+    Count
+};
+constexpr const char* kPredicateNames[] = {"support_cmp", "arc_side", "dominated_line", "curve_side",
+                                           "lines_gap", "quick_certificate", "scan_support"};
+static_assert(sizeof(kPredicateNames) / sizeof(kPredicateNames[0]) == static_cast<unsigned>(Predicate::Count));
+
+struct PredicateCounts {
+    std::uint64_t filtered = 0, exact = 0;  // decisions by the filter, by the exact stage
+    PredicateCounts& operator+=(const PredicateCounts& o) { return filtered += o.filtered, exact += o.exact, *this; }
+};
+
+// Not shared between threads: one per deciding object; merge with +=.
+class PredicateStats {
+public:
+    PredicateCounts& operator[](Predicate p) { return c_[static_cast<unsigned>(p)]; }
+    const PredicateCounts& operator[](Predicate p) const { return c_[static_cast<unsigned>(p)]; }
+    void filtered(Predicate p, std::uint64_t n = 1) { (*this)[p].filtered += n; }
+    void exact(Predicate p, std::uint64_t n = 1) { (*this)[p].exact += n; }
+    PredicateStats& operator+=(const PredicateStats& o) {
+        for (unsigned k = 0; k < c_.size(); ++k) c_[k] += o.c_[k];
+        return *this;
+    }
+
+private:
+    std::array<PredicateCounts, static_cast<unsigned>(Predicate::Count)> c_{};
+};
 
 // ---- The exact stage: 128 bits with overflow checks, else GMP ---------------------------------
 
@@ -112,5 +220,107 @@ int exact_sign(Small&& small, Gmp&& gmp) {
     if (a.ok()) return sgn128(a.value());
     return gmp();
 }
+
+
+// ---- The predicates ---------------------------------------------------------------------------
+
+// 1. n·x in doubles with its error bound (bound 1), for support_cmp.
+struct SupportApprox { double value, err; };
+inline SupportApprox support_approx(const double* n, const double* x) {
+    const double a = n[0] * x[0], b = n[1] * x[1], c = n[2] * x[2];
+    return {a + b + c, kSupportRel * (std::fabs(a) + std::fabs(b) + std::fabs(c))};
+}
+// Sign of n·x_w − n·x_v: the filter on their approximations, else exact() (the exact sign).
+template <class Exact>
+inline int support_cmp(const SupportApprox& w, const SupportApprox& v, Exact&& exact, PredicateStats& st) {
+    const double diff = w.value - v.value, tol = w.err + v.err;
+    if (diff > tol) return st.filtered(Predicate::SupportCmp), 1;
+    if (diff < -tol) return st.filtered(Predicate::SupportCmp), -1;
+    st.exact(Predicate::SupportCmp);
+    return exact();
+}
+
+// 2. Sign of (u × x)·p, or of (x × u)·p when x_first: doubles ud, xd, pd approximating u, x, p as
+// bound 2 says; exact_x() gives x exactly (called only when the filter cannot decide). V: Vec3s
+// (128 bits, then GMP on overflow) or Vec3z (GMP).
+template <class V, class ExactX>
+int arc_side(const D3& ud, const D3& xd, const D3& pd, bool x_first, const V& u, ExactX&& exact_x, const V& p,
+             PredicateStats& st) {
+    const D3 c = x_first ? crossd(xd, ud) : crossd(ud, xd);
+    const double v = dotd(c, pd), bound = kArcRel * normd(ud) * normd(xd) * normd(pd);
+    if (v > bound) return st.filtered(Predicate::ArcSide), 1;
+    if (v < -bound) return st.filtered(Predicate::ArcSide), -1;
+    st.exact(Predicate::ArcSide);
+    const V x = exact_x();
+    auto gmp = [&] {
+        const Vec3z xz = as_z(x), uz = as_z(u);
+        return sgn(dotz(x_first ? cross(xz, uz) : cross(uz, xz), as_z(p)));
+    };
+    if constexpr (std::is_same_v<V, Vec3s>) {
+        // u × x exactly in 128 bits (|u|, |x| < 2^62), then its dot with p, checked
+        return exact_sign(
+            [&](Acc128& acc) {
+                for (int k = 0; k < 3; ++k) acc.add(x_first ? cross_k(x, u, k) : cross_k(u, x, k), p[k]);
+            },
+            gmp);
+    }
+    return gmp();
+}
+
+// 3. The line y = a_i·x + b_i certainly below y = a_j·x + b_j for every x ≥ 0, from doubles within
+// 4u of the exact slopes and intercepts (bound 3): a larger slope and a larger intercept, each
+// with a margin of kDominatedRel. One-sided: false means "keep the line" (its exact stage is to
+// build it exactly); undominated (contact_lines.cpp) applies it in a sweep.
+inline double dominated_lower(double a) { return a - kDominatedRel * std::fabs(a); }  // below the true value
+inline double dominated_upper(double a) { return a + kDominatedRel * std::fabs(a); }  // above it
+
+// 4. A pair (ρ1, ρ2) against the envelope piece y = a·ρ1 + b (nearest doubles of the exact slope
+// and intercept; ρ exact doubles): +1 when certainly below it (separated), −1 certainly above
+// (overlapping), 0 when the filter cannot tell. Bound 4.
+inline int curve_side_filter(double a, double b, double r1, double r2) {
+    const double f = a * r1 + b;
+    const double err = kQueryRel * (std::fabs(a * r1) + std::fabs(b)) + kQueryTiny;
+    if (r2 < f - err) return 1;
+    if (r2 > f + err) return -1;
+    return 0;
+}
+// Whether ρ1 is too close to a breakpoint (nearest double `bk` of the exact one) for the piece to
+// be certain. Bound 4.
+inline bool near_breakpoint(double bk, double r1, bool right_of) {
+    return (right_of ? r1 - bk : bk - r1) <= kQueryRel * std::fabs(r1);
+}
+// The sign of n·d − ρ1·h1 − ρ2·h2 (nearest doubles nd, h1, h2; ρ exact), 0 when uncertain. Bound 4.
+inline int lines_gap_filter(double nd, double h1, double h2, double r1, double r2) {
+    const double t1 = r1 * h1, t2 = r2 * h2;
+    const double g = nd - t1 - t2;
+    const double err = kQueryRel * (std::fabs(nd) + std::fabs(t1) + std::fabs(t2)) + kQueryTiny;
+    if (g > err) return 1;
+    if (g < -err) return -1;
+    return 0;  // uncertain, or not a number
+}
+
+// 5. GJK's certificates from the scene (tools/quick_query.cpp), bound 5; one-sided (false: the
+// exact model decides). A separating gap g computed with magnitudes `scale`, certainly > 0:
+inline bool quick_gap_certified(double g, double scale) {
+    return std::isfinite(g) && std::isfinite(scale) && scale > kQuickTiny && g > kQuickGapRel * scale;
+}
+// The sign of a cofactor det computed with permanent `perm` of its magnitudes, 0 when uncertain.
+inline int quick_cofactor_sign(double det, double perm) {
+    const double bound = kQuickDetRel * perm;
+    if (!std::isfinite(det) || !std::isfinite(bound) || !(bound > kQuickTiny) || std::fabs(det) <= bound) return 0;
+    return det > 0 ? 1 : -1;
+}
+
+// 7. Exact support on a point cloud: B = Σ|n_k|·max|x_k| (computed), E = kScanSupport·B. A point
+// whose computed value is below best − 2E, and a box whose computed bound is below best − 4E,
+// holds no maximiser (bound 7); the candidates left are compared exactly by the caller, who
+// counts them (filtered: points ruled out; exact: candidates).
+struct ScanSupportFilter {
+    double E;
+    explicit ScanSupportFilter(double B) : E(kScanSupport * B) {}
+    bool candidate(double v, double best) const { return v >= best - 2 * E; }
+    double floor(double best) const { return best - 2 * E; }
+    bool box_excluded(double ub, double best) const { return ub < best - 4 * E; }
+};
 
 }  // namespace scalecert::internal::filter

@@ -1,0 +1,250 @@
+// Each filtered predicate of predicates.hpp at its bound: inputs built by hand so that the
+// filter's value sits just outside its bound (the filter decides) and just inside it (the exact
+// stage decides), the answer checked against exact arithmetic done here, and the deciding stage
+// read from the predicate's statistics.
+#define BOOST_TEST_MODULE predicates
+#include <boost/test/unit_test.hpp>
+
+#include "certify/fast_query.hpp"
+#include "curve/contact_lines.hpp"
+#include "geometry/gauss_map.hpp"
+#include "numeric/predicates.hpp"
+
+#include <cmath>
+#include <random>
+
+using namespace scalecert::internal;
+using filter::Predicate;
+using filter::PredicateStats;
+
+namespace {
+double p2(int e) { return std::ldexp(1.0, e); }
+Z dot3(const Vec3z& a, const Vec3z& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+Vec3z zv(std::int64_t a, std::int64_t b, std::int64_t c) { return {Z(static_cast<long>(a)), Z(static_cast<long>(b)), Z(static_cast<long>(c))}; }
+D3 dv(const Vec3z& v) { return {v[0].get_d(), v[1].get_d(), v[2].get_d()}; }
+int sign_of_z(const Z& z) { return sgn(z); }
+}  // namespace
+
+// ---- 1. support_cmp ----------------------------------------------------------------------------
+
+// sign of n·w − n·v through the predicate, with the exact stage done in GMP here.
+int support_sign(const Vec3z& n, const Vec3z& w, const Vec3z& v, PredicateStats& st) {
+    const D3 nd = dv(n), wd = dv(w), vd = dv(v);
+    return filter::support_cmp(filter::support_approx(nd.data(), wd.data()), filter::support_approx(nd.data(), vd.data()),
+                               [&] { return sign_of_z(dot3(n, w) - dot3(n, v)); }, st);
+}
+
+BOOST_AUTO_TEST_CASE(support_cmp_at_its_bound) {
+    // n = e_x, values V + k and V with V = 2^50: tol = 1e-14·(2V + k) ≈ 22.5.
+    const std::int64_t V = std::int64_t(1) << 50;
+    const Vec3z n = zv(1, 0, 0), v = zv(V, 0, 0);
+    for (std::int64_t k : {23, -23, 22, -22, 1, 0}) {
+        PredicateStats st;
+        const int s = support_sign(n, zv(V + k, 0, 0), v, st);
+        BOOST_TEST(s == (k > 0) - (k < 0));                          // the exact answer
+        const bool filtered = std::abs(k) >= 23;                       // just outside the bound
+        BOOST_TEST(st[Predicate::SupportCmp].filtered == (filtered ? 1u : 0u));
+        BOOST_TEST(st[Predicate::SupportCmp].exact == (filtered ? 0u : 1u));
+    }
+    // One unit at 2^53: n·w = 2^53 + 1 rounds to 2^53 in doubles, the difference is 0 there,
+    // and only the exact stage sees +1.
+    PredicateStats st;
+    const std::int64_t T = std::int64_t(1) << 53;
+    BOOST_TEST(support_sign(zv(1, 1, 0), zv(T, 1, 0), zv(T, 0, 0), st) == 1);
+    BOOST_TEST(support_sign(zv(1, 1, 0), zv(T, 0, 0), zv(T, 1, 0), st) == -1);
+    BOOST_TEST(st[Predicate::SupportCmp].exact == 2u);
+    BOOST_TEST(st[Predicate::SupportCmp].filtered == 0u);
+    // Beyond the double range: not finite, never filtered.
+    Vec3z huge{Z(1) << 1100, Z(0), Z(0)};
+    Vec3z huge1{(Z(1) << 1100) + 1, Z(0), Z(0)};
+    PredicateStats st2;
+    BOOST_TEST(support_sign(zv(1, 0, 0), huge1, huge, st2) == 1);
+    BOOST_TEST(st2[Predicate::SupportCmp].exact == 1u);
+}
+
+// ---- 2. arc_side -------------------------------------------------------------------------------
+
+template <class V>
+void arc_side_cases() {
+    // u = e_x, x = e_y: (u × x)·p = p_z and (x × u)·p = −p_z; bound = 1e-10·|p|.
+    const V u{1, 0, 0}, x{0, 1, 0};
+    struct Case { std::int64_t py, pz; bool filtered; };
+    // |p| = 2^33: bound 0.86 < 1 (filtered); |p| = 2^34: bound 1.72 > 1 (exact); p_z = 0: exact 0.
+    for (const Case& c : {Case{std::int64_t(1) << 33, 1, true}, Case{std::int64_t(1) << 33, -1, true},
+                          Case{std::int64_t(1) << 34, 1, false}, Case{std::int64_t(1) << 34, -1, false},
+                          Case{std::int64_t(1) << 34, 0, false}, Case{1, 0, false}}) {
+        const V p{0, c.py, c.pz};
+        const Vec3z uz = zv(1, 0, 0), xz = zv(0, 1, 0), pz = zv(0, c.py, c.pz);
+        for (bool x_first : {false, true}) {
+            // exact: the determinant here, in GMP
+            const Vec3z cr = x_first ? cross(xz, uz) : cross(uz, xz);
+            const int expect = sign_of_z(dot3(cr, pz));
+            PredicateStats st;
+            int calls = 0;
+            const int s = filter::arc_side(dv(uz), dv(xz), dv(pz), x_first, u, [&] { ++calls; return x; }, p, st);
+            BOOST_TEST(s == expect);
+            BOOST_TEST(st[Predicate::ArcSide].filtered == (c.filtered ? 1u : 0u));
+            BOOST_TEST(st[Predicate::ArcSide].exact == (c.filtered ? 0u : 1u));
+            BOOST_TEST(calls == (c.filtered ? 0 : 1));  // the exact x is formed only when needed
+        }
+    }
+}
+
+BOOST_AUTO_TEST_CASE(arc_side_at_its_bound) {
+    arc_side_cases<Vec3s>();
+    arc_side_cases<Vec3z>();
+    // Machine integers whose 128-bit products overflow: the GMP stage answers.
+    const std::int64_t big = std::int64_t(1) << 61;
+    const Vec3s u{big, 1, 0}, x{0, big, 1}, p{big, big, big};
+    const Vec3z uz = zv(big, 1, 0), xz = zv(0, big, 1), pz = zv(big, big, big);
+    PredicateStats st;
+    const int s = filter::arc_side(dv(uz), dv(xz), dv(pz), false, u, [&] { return x; }, p, st);
+    BOOST_TEST(s == sign_of_z(dot3(cross(uz, xz), pz)));
+}
+
+// ---- 3. dominated lines ------------------------------------------------------------------------
+
+BOOST_AUTO_TEST_CASE(dominated_line_at_its_margin) {
+    // Line 1: y = −x + 1. Line 0 above it by 3e-12 in slope and intercept: margins 1e-12 on each
+    // value are cleared (dropped); by 1.5e-12 in the intercept they are not (kept: one-sided).
+    BOOST_TEST(undominated({-1 + 3e-12, -1.0}, {1 + 3e-12, 1.0}) == std::vector<size_t>({0}));
+    BOOST_TEST(undominated({-1 + 3e-12, -1.0}, {1 + 1.5e-12, 1.0}) == std::vector<size_t>({0, 1}));
+    BOOST_TEST(undominated({-1 + 1.5e-12, -1.0}, {1 + 3e-12, 1.0}) == std::vector<size_t>({0, 1}));
+    // Equal lines: neither certainly below the other.
+    BOOST_TEST(undominated({-1.0, -1.0}, {1.0, 1.0}) == std::vector<size_t>({0, 1}));
+    BOOST_TEST(filter::dominated_lower(1.0) < 1.0);
+    BOOST_TEST(filter::dominated_upper(-1.0) > -1.0);
+}
+
+// ---- 4. queries ----------------------------------------------------------------------------------
+
+BOOST_AUTO_TEST_CASE(query_filters_at_their_bounds) {
+    // y = −ρ1 + 2^20 at ρ1 = 1: f = 2^20 − 1, err = 1e-12·(1 + 2^20) ≈ 1.05e-6.
+    const double a = -1, b = p2(20), f = b - 1;
+    BOOST_TEST(filter::curve_side_filter(a, b, 1, f - 2e-6) == 1);    // outside: separated
+    BOOST_TEST(filter::curve_side_filter(a, b, 1, f + 2e-6) == -1);   // outside: overlapping
+    BOOST_TEST(filter::curve_side_filter(a, b, 1, f - 0.5e-6) == 0);  // inside: exact stage
+    BOOST_TEST(filter::curve_side_filter(a, b, 1, f) == 0);           // on the line
+    BOOST_TEST(filter::curve_side_filter(a, b, 1, std::nextafter(f, 0.0)) == 0);  // one ulp below
+    // The breakpoint: within 1e-12·ρ1 of it the piece is not certain.
+    BOOST_TEST(!filter::near_breakpoint(1.0, 1 + 2e-12, true));
+    BOOST_TEST(filter::near_breakpoint(1.0, 1 + p2(-45), true));
+    BOOST_TEST(filter::near_breakpoint(1.0, 1 - p2(-45), false));
+    BOOST_TEST(filter::near_breakpoint(1.0, 1.0, false));
+    // n·d − ρ1·h1 − ρ2·h2 with nd = 2^20, h1 = h2 = 1, ρ1 = 1: err ≈ 2.1e-6.
+    BOOST_TEST(filter::lines_gap_filter(b, 1, 1, 1, f - p2(-16)) == 1);
+    BOOST_TEST(filter::lines_gap_filter(b, 1, 1, 1, f + p2(-16)) == -1);
+    BOOST_TEST(filter::lines_gap_filter(b, 1, 1, 1, f) == 0);
+    BOOST_TEST(filter::lines_gap_filter(b, 1, 1, 1, std::nextafter(f, 0.0)) == 0);
+    BOOST_TEST(filter::lines_gap_filter(b, 1, 1, 1, f - 1e-6) == 0);
+    BOOST_TEST(filter::lines_gap_filter(INFINITY, INFINITY, 1, 1, 1) == 0);  // not a number: never decided
+    // Underflow: tiny values are never decided on relative bounds alone.
+    BOOST_TEST(filter::lines_gap_filter(1e-310, 1e-310, 1e-310, 1, 1e-320) == 0);
+}
+
+BOOST_AUTO_TEST_CASE(curve_query_on_the_curve_and_one_ulp_away) {
+    HullModel m = build_model(load_scene(std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/fig5_vf_ve_ee.json"));
+    TouchingCurve c = build_curve(m);
+    for (double r1 : {0.9, 1.0, 1.25, 1.7, 2.3}) {
+        const Q y = c.env.value(m.lines, exact_from_double(r1));
+        const double yd = to_double_rn(y);
+        for (double r2 : {yd, std::nextafter(yd, 0.0), std::nextafter(yd, 10.0)}) {
+            FastCurve fc(m, c);
+            const Verdict v = fc.classify(r1, r2);
+            // exact: r2 against the envelope's exact value
+            const int s = cmp(exact_from_double(r2), y);
+            BOOST_TEST((v == (s < 0 ? Verdict::Separated : s > 0 ? Verdict::Overlapping : Verdict::Touching)));
+            BOOST_TEST(fc.stats[Predicate::CurveSide].exact == 1u);  // one ulp is inside the bound
+            BOOST_TEST(fc.stats[Predicate::CurveSide].filtered == 0u);
+        }
+    }
+}
+
+// ---- 5. GJK's certificates ---------------------------------------------------------------------
+
+BOOST_AUTO_TEST_CASE(quick_certificates_at_their_bounds) {
+    BOOST_TEST(filter::quick_gap_certified(1.1e-14, 1.0));
+    BOOST_TEST(!filter::quick_gap_certified(0.9e-14, 1.0));
+    BOOST_TEST(!filter::quick_gap_certified(1e-300, 1e-300));  // magnitudes below kQuickTiny
+    BOOST_TEST(!filter::quick_gap_certified(NAN, 1.0));
+    BOOST_TEST(filter::quick_cofactor_sign(1.1e-13, 1.0) == 1);
+    BOOST_TEST(filter::quick_cofactor_sign(-1.1e-13, 1.0) == -1);
+    BOOST_TEST(filter::quick_cofactor_sign(0.9e-13, 1.0) == 0);
+    BOOST_TEST(filter::quick_cofactor_sign(0.0, 1.0) == 0);
+    BOOST_TEST(filter::quick_cofactor_sign(1.0, INFINITY) == 0);
+    BOOST_TEST(filter::quick_cofactor_sign(1e-260, 1e-260) == 0);
+}
+
+// ---- 6. Gauss-map candidate boxes ----------------------------------------------------------------
+
+BOOST_AUTO_TEST_CASE(arc_candidates_at_the_padding) {
+    // A: a quarter of the equator (box z in [−pad, pad]). B: from (1, 0, t) to (0, 1, t), whose
+    // lowest z is at its ends, t/√(1 + t²): the boxes meet iff that is ≤ 2·pad.
+    const double pad = filter::kArcBoxPad;
+    const std::vector<Arc> A{{{1, 0, 0}, {0, 1, 0}}};
+    auto pairs = [&](double t) { return arc_candidates(A, {Arc{{1, 0, t}, {0, 1, t}}}).size(); };
+    BOOST_TEST(pairs(1.9 * pad) == 1u);
+    BOOST_TEST(pairs(2.1 * pad) == 0u);
+    // Arcs that cross (at (1,1,0)/√2) are always candidates, and so are arcs sharing an end.
+    BOOST_TEST(arc_candidates(A, {Arc{{1, 1, -1}, {1, 1, 1}}}).size() == 1u);
+    BOOST_TEST(arc_candidates(A, {Arc{{0, 1, 0}, {0, 0, 1}}}).size() == 1u);
+    // A box is the whole sphere for a numerically degenerate arc.
+    BOOST_TEST(arc_candidates(A, {Arc{{0, 0, 1}, {0, 0, 1}}}).size() == 1u);
+}
+
+// ---- 7. exact support on a point cloud ---------------------------------------------------------
+
+BOOST_AUTO_TEST_CASE(scan_support_filter_at_its_bound) {
+    // B = 2^53 (n = e_x, |x| ≤ 2^53): E = 2^-50·2^53 = 8. Candidates: v ≥ best − 16; a box is
+    // excluded when its bound is < best − 32.
+    const filter::ScanSupportFilter f(p2(53));
+    BOOST_TEST(f.E == 8.0);
+    const double best = p2(53);
+    BOOST_TEST(f.candidate(best - 16, best));
+    BOOST_TEST(!f.candidate(best - 18, best));
+    BOOST_TEST(!f.box_excluded(best - 32, best));
+    BOOST_TEST(f.box_excluded(best - 34, best));
+    // Soundness against GMP: a true maximiser is always a candidate, for integer points up to 2^53
+    // and normals of any size (their doubles rounded once), even where doubles tie or misorder.
+    std::mt19937_64 g(7);
+    std::uniform_int_distribution<std::int64_t> coord(-(std::int64_t(1) << 53), std::int64_t(1) << 53), small(-3, 3);
+    for (int t = 0; t < 2000; ++t) {
+        Vec3z n{Z(static_cast<long>(coord(g))) * Z(static_cast<long>(coord(g))) + 1, Z(static_cast<long>(coord(g))), Z(static_cast<long>(small(g)))};
+        std::vector<std::array<std::int64_t, 3>> pts;
+        const std::array<std::int64_t, 3> base{coord(g) / 2, coord(g) / 2, coord(g) / 2};
+        for (int k = 0; k < 8; ++k) pts.push_back({base[0] + small(g), base[1] + small(g), base[2] + small(g)});
+        const D3 nd = dv(n);
+        double mx[3] = {0, 0, 0};
+        for (const auto& x : pts)
+            for (int c = 0; c < 3; ++c) mx[c] = std::max(mx[c], std::fabs(static_cast<double>(x[c])));
+        const filter::ScanSupportFilter sf(std::fabs(nd[0]) * mx[0] + std::fabs(nd[1]) * mx[1] + std::fabs(nd[2]) * mx[2]);
+        std::vector<double> v;
+        double top = -INFINITY;
+        Z best_exact;
+        for (size_t k = 0; k < pts.size(); ++k) {
+            const auto& x = pts[k];
+            v.push_back(nd[0] * static_cast<double>(x[0]) + nd[1] * static_cast<double>(x[1]) + nd[2] * static_cast<double>(x[2]));
+            top = std::max(top, v.back());
+            const Z e = dot3(n, zv(x[0], x[1], x[2]));
+            if (k == 0 || e > best_exact) best_exact = e;
+        }
+        for (size_t k = 0; k < pts.size(); ++k)
+            if (dot3(n, zv(pts[k][0], pts[k][1], pts[k][2])) == best_exact) BOOST_TEST(sf.candidate(v[k], top));
+    }
+}
+
+// ---- The statistics ------------------------------------------------------------------------------
+
+BOOST_AUTO_TEST_CASE(stats_merge_per_predicate) {
+    PredicateStats a, b;
+    a.filtered(Predicate::ArcSide, 3);
+    a.exact(Predicate::SupportCmp);
+    b.filtered(Predicate::ArcSide);
+    b.exact(Predicate::ScanSupport, 5);
+    a += b;
+    BOOST_TEST(a[Predicate::ArcSide].filtered == 4u);
+    BOOST_TEST(a[Predicate::SupportCmp].exact == 1u);
+    BOOST_TEST(a[Predicate::ScanSupport].exact == 5u);
+    BOOST_TEST(a[Predicate::CurveSide].filtered + a[Predicate::CurveSide].exact == 0u);
+    BOOST_TEST(std::string(filter::kPredicateNames[static_cast<unsigned>(Predicate::ScanSupport)]) == "scan_support");
+}
