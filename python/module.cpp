@@ -72,6 +72,8 @@ py::tuple fractions(const scalecert::Point& p) { return py::make_tuple(fraction(
 Rational rational(const py::handle& h, const char* what) {
     try {
         if (py::isinstance<py::bool_>(h)) throw scalecert::InputError("a bool is not a number");
+        if (py::hasattr(h, "ndim") && py::int_(h.attr("ndim")).cast<long>() != 0)
+            throw scalecert::InputError("expected one number, not an array");
         if (py::isinstance<py::str>(h)) return scalecert::parse_rational(h.cast<std::string>());
         if (py::isinstance<py::float_>(h) || (py::hasattr(h, "dtype") && py::str(h.attr("dtype").attr("kind")).cast<std::string>() == "f")) {
             const double d = py::float_(h.cast<py::object>()).cast<double>();
@@ -88,7 +90,11 @@ Rational rational(const py::handle& h, const char* what) {
         if (py::isinstance(h, py::module_::import("decimal").attr("Decimal"))) return scalecert::parse_rational(py::str(h).cast<std::string>());
     } catch (const scalecert::InputError& e) {
         throw scalecert::InputError(std::string(what) + ": " + e.what());
-    } catch (const py::error_already_set&) {
+    } catch (const py::error_already_set& e) {
+        // Only errors about the value mean "not a number"; others (KeyboardInterrupt, MemoryError) go on.
+        if (!e.matches(PyExc_TypeError) && !e.matches(PyExc_ValueError) && !e.matches(PyExc_AttributeError) &&
+            !e.matches(PyExc_OverflowError))
+            throw;
         throw scalecert::InputError(std::string(what) + ": not a number");
     }
     throw scalecert::InputError(std::string(what) + ": not a number (int, Fraction, Decimal, float or decimal string)");

@@ -243,6 +243,11 @@ BOOST_AUTO_TEST_CASE(curve_claim_rules) {
     // pieces with gaps between them.
     BOOST_TEST(refused(R"({"kind": "curve", "vertices": [[0, "9/2"], [1, 2]]})").find("scalings must be > 0") != std::string::npos);
     BOOST_TEST(refused(R"({"kind": "curve", "vertices": [[1, 2], [2, 0]]})").find("scalings must be > 0") != std::string::npos);
+    // The message names the scaling at fault, with its value.
+    BOOST_TEST(refused(R"({"kind": "verdict", "rho1": 1, "rho2": -1, "verdict": "separated"})").find("rho2: scalings must be > 0 (got -1)") !=
+               std::string::npos);
+    BOOST_TEST(refused(R"({"kind": "distance", "rho1": 0, "rho2": 1, "value": 1})").find("rho1: scalings must be > 0 (got 0)") !=
+               std::string::npos);
     BOOST_TEST(refused(R"({"kind": "curve", "pieces": [{"rho1": [1, 5], "slope": "-4/7", "intercept": "18/7"}]})")
                    .find("rho2 <= 0") != std::string::npos);  // (18 − 20)/7 < 0 at ρ1 = 5
     BOOST_TEST(refused(R"({"kind": "curve", "vertices": [[1, 2], ["3/2", "12/7"]], "switch_points": [[-1, 2]]})") != "accepted");

@@ -196,6 +196,20 @@ def test_golden_and_claims(tmp_path):
     claims = {"format": "scalecert-claims-1", "claims": [{"kind": "distance", "rho1": 1, "rho2": "1/2", "value": "1.5000001"}]}
     assert stacked().certify_fp(json.dumps(claims))["wrong"] == 1
     assert stacked().certify_fp(json.dumps(claims), tolerance="1e-6")["wrong"] == 0
+    # The library's words, not the command's; one number, not an array; a KeyboardInterrupt raised
+    # while a number is read goes on as itself.
+    with pytest.raises(scalecert.InputError, match="tolerance: must be >= 0"):
+        stacked().certify_fp(json.dumps(claims), tolerance=-1)
+    with pytest.raises(scalecert.InputError, match="not an array"):
+        stacked().certify_fp(json.dumps(claims), tolerance=np.array([1e-3]))
+
+    class Interrupting:
+        @property
+        def dtype(self):
+            raise KeyboardInterrupt
+
+    with pytest.raises(KeyboardInterrupt):
+        stacked().certify_fp(json.dumps(claims), tolerance=Interrupting())
     # A scene's golden data: 7 values of rho1 across [1/2, 5/2] (no switch point), 13 pairs each,
     # the first on the line at rho1 = 3/4, rho2 = 3 - 3/4 = 9/4; the same rows in the JSON.
     g, csv = stacked().golden()

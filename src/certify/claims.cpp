@@ -91,7 +91,8 @@ private:
     }
     std::pair<Q, Q> pair_at(const JNode& o) const {
         const Q r1 = field(o, "rho1"), r2 = field(o, "rho2");
-        if (sgn(r1) <= 0 || sgn(r2) <= 0) fail("rho1", "scalings must be > 0");
+        if (sgn(r1) <= 0) fail("rho1", "scalings must be > 0 (got " + to_exact_string(r1) + ")");
+        if (sgn(r2) <= 0) fail("rho2", "scalings must be > 0 (got " + to_exact_string(r2) + ")");
         return {r1, r2};
     }
     std::optional<std::string> label(const JNode& o) const {
@@ -577,10 +578,10 @@ ClaimModels ClaimModels::of(const HullModel& m, const TouchingCurve& c) {
 std::string certify_fp(const ClaimModels& models, const std::string& claims, const std::string& name, const ClaimOptions& opt,
                        long* wrong, long* count) {
     const bool json = opt.json;
-    if (sgn(opt.tolerance) < 0) throw InputError("--tolerance must be >= 0");
+    if (sgn(opt.tolerance) < 0) throw InputError("tolerance: must be >= 0 (got " + to_exact_string(opt.tolerance) + ")");
     const size_t first = claims.find_first_not_of(" \t\r\n");
     if (first == std::string::npos || claims[first] != '{') {
-        if (sgn(opt.tolerance) != 0) throw InputError(name + ": --tolerance applies to JSON claims (scalecert-claims-1)");
+        if (sgn(opt.tolerance) != 0) throw InputError(name + ": a tolerance applies to JSON claims (scalecert-claims-1) only");
         return certify_claim_lines(models, claims, name, opt.binary_doubles, json, wrong, count);
     }
     JNode root;

@@ -38,6 +38,7 @@ Command add_certify_fp(CLI::App& app) {
                 } catch (const InputError& e) {
                     throw InputError(std::string("--tolerance: ") + e.what());
                 }
+                if (sgn(opt.tolerance) < 0) throw InputError("--tolerance must be >= 0");
                 emit(certify_fp(session.claim_models(), claims, a->claims, opt, &wrong), a->out);
                 return wrong > 0 ? 1 : 0;
             }};
