@@ -69,18 +69,32 @@ py::tuple fractions(const scalecert::Point& p) { return py::make_tuple(fraction(
 
 // int, fractions.Fraction, decimal.Decimal, numpy integers and floats, decimal strings ("0.1" is
 // 1/10, "3/7"), and floats at their exact binary value.
+// Whether h has the attribute: as py::hasattr, but an error other than AttributeError raised
+// while looking (a KeyboardInterrupt in a property) goes on instead of reading as "no".
+bool has_attr(const py::handle& h, const char* name) {
+    if (PyObject* r = PyObject_GetAttrString(h.ptr(), name)) {
+        Py_DECREF(r);
+        return true;
+    }
+    if (PyErr_ExceptionMatches(PyExc_AttributeError)) {
+        PyErr_Clear();
+        return false;
+    }
+    throw py::error_already_set();
+}
+
 Rational rational(const py::handle& h, const char* what) {
     try {
         if (py::isinstance<py::bool_>(h)) throw scalecert::InputError("a bool is not a number");
-        if (py::hasattr(h, "ndim") && py::int_(h.attr("ndim")).cast<long>() != 0)
+        if (has_attr(h, "ndim") && py::int_(h.attr("ndim")).cast<long>() != 0)
             throw scalecert::InputError("expected one number, not an array");
         if (py::isinstance<py::str>(h)) return scalecert::parse_rational(h.cast<std::string>());
-        if (py::isinstance<py::float_>(h) || (py::hasattr(h, "dtype") && py::str(h.attr("dtype").attr("kind")).cast<std::string>() == "f")) {
+        if (py::isinstance<py::float_>(h) || (has_attr(h, "dtype") && py::str(h.attr("dtype").attr("kind")).cast<std::string>() == "f")) {
             const double d = py::float_(h.cast<py::object>()).cast<double>();
             if (!std::isfinite(d)) throw scalecert::InputError("not a finite number");
             return scalecert::exact(d);
         }
-        if (py::hasattr(h, "numerator") && py::hasattr(h, "denominator")) {  // int, Fraction, numpy integers
+        if (has_attr(h, "numerator") && has_attr(h, "denominator")) {  // int, Fraction, numpy integers
             const mpz_class n = mpz_of(py::int_(h.attr("numerator"))), d = mpz_of(py::int_(h.attr("denominator")));
             if (sgn(d) == 0) throw scalecert::InputError("zero denominator");
             Rational q(n, d);
