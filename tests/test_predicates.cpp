@@ -190,6 +190,12 @@ BOOST_AUTO_TEST_CASE(arc_candidates_at_the_padding) {
     BOOST_TEST(arc_candidates(A, {Arc{{0, 1, 0}, {0, 0, 1}}}).size() == 1u);
     // A box is the whole sphere for a numerically degenerate arc.
     BOOST_TEST(arc_candidates(A, {Arc{{0, 0, 1}, {0, 0, 1}}}).size() == 1u);
+    // And for an arc near a half turn, from (1, 0, 0) to (−1, δ, 0): |a×b| ≈ δ. Below
+    // kArcIllConditioned (δ = 1e-7) it is a candidate with an arc at the north pole; above it
+    // (δ = 1e-3, its plane known to 1e-13) it is not: its box stays within the padding of z = 0.
+    const std::vector<Arc> pole{{{0, 0, 1}, {0, 0.1, 1}}};
+    BOOST_TEST(arc_candidates({Arc{{1, 0, 0}, {-1, 1e-7, 0}}}, pole).size() == 1u);
+    BOOST_TEST(arc_candidates({Arc{{1, 0, 0}, {-1, 1e-3, 0}}}, pole).size() == 0u);
 }
 
 // ---- 7. exact support on a point cloud ---------------------------------------------------------

@@ -30,7 +30,9 @@ Box arc_box(const Arc& arc) {
     }
     D3 p = crossd(a, b);
     double lp = std::sqrt(dotd(p, p));
-    if (lp < filter::kArcDegenerate) {  // numerically degenerate: the whole sphere
+    // Numerically degenerate, or near a half turn where a×b does not say which way the arc goes:
+    // the whole sphere (predicates.hpp, bound 6).
+    if (lp < filter::kArcDegenerate || (lp < filter::kArcIllConditioned && dotd(a, b) < 0)) {
         return {{-1 - kPad, -1 - kPad, -1 - kPad}, {1 + kPad, 1 + kPad, 1 + kPad}};
     }
     for (double& c : p) c /= lp;

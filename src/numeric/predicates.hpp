@@ -121,9 +121,14 @@ static_assert(1.2 * 40 * kUnit * kQuickTiny > 1e20 * 0x1p-1070, "quick query und
 //      when |a×b| ≥ 1e-6) of an end; x_k's drop from x* to that end is quadratic in the distance
 //      (x_k is a sinusoid of amplitude ≤ 1 along the circle, stationary at x*): < 1e-16. When
 //      |a×b| < 1e-6 and the arc is short (θ < 1e-6), x_k varies over it by less than θ²/8 beyond
-//      its ends' values. (Not proven here: arcs of length near π, π − θ < 1e-8, where p = a×b
-//      is ill-conditioned: its direction errs by up to ~10u/|a×b|, more than kArcBoxPad. Such
-//      arcs come from knife edges of dihedral angle < 1e-8; see the issue.)
+//      its ends' values.
+//    kArcIllConditioned: an arc longer than a quarter turn (a·b < 0) whose computed |a×b| is below
+//      it gets the whole sphere as its box. Near a half turn p = a×b is ill-conditioned: a and b
+//      err by < 3u per component (direction_d, normalisation), so p errs by < 10u absolute and its
+//      direction by < 10u/|a×b|, which above kArcIllConditioned is < 1.2e-10, far under
+//      kArcBoxPad; below it the direction, and so which half of the circle the arc takes, is not
+//      known (knife edges of dihedral angle < 1e-5). Short arcs (a·b > 0) need no p: they stay
+//      within θ²/8 of their ends' box, as above.
 //    kArcBrutePairs, kArcGridMax, kArcGridMinMean: how candidates are enumerated (every pair of
 //      boxes for few arcs, else a uniform grid of at most kArcGridMax cells per axis sized by the
 //      mean box). Heuristics for speed only: both enumerations return exactly the pairs whose
@@ -131,12 +136,14 @@ static_assert(1.2 * 40 * kUnit * kQuickTiny > 1e20 * 0x1p-1070, "quick query und
 //      intervals share a cell, clamping included), sorted and without repeats.
 constexpr double kArcBoxPad = 1e-7;
 constexpr double kArcDegenerate = 1e-300;
+constexpr double kArcIllConditioned = 1e-5;
 constexpr double kArcExtremeSkip = 1e-12;
 constexpr double kArcExtremeSlack = 1e-9;
 constexpr std::size_t kArcBrutePairs = 4096;
 constexpr double kArcGridMax = 128.0;
 constexpr double kArcGridMinMean = 1e-9;
 static_assert(kArcBoxPad > 1e4 * 2 * kArcExtremeSkip && kArcBoxPad > 1e6 * 10 * kUnit, "arc box padding");
+static_assert(kArcBoxPad > 100 * (10 * kUnit / kArcIllConditioned), "ill-conditioned arcs");
 
 // 7. Exact support queries on a point cloud (scan.cpp): n·x for integer points |x| ≤ 2^53 (exact
 //    doubles) and n rounded once: |fl(n·x) − n·x| ≤ (u + γ3)·Σ|n_k|·max|x_k| < 4.01u·B, and a
