@@ -4,7 +4,7 @@
 
 #include "baselines/audit.hpp"
 #include "certify/claims.hpp"
-#include "certify/fast_query.hpp"
+#include "certify/classify.hpp"
 #include "files.hpp"
 #include "support.hpp"
 

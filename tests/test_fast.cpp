@@ -3,7 +3,7 @@
 #define BOOST_TEST_MODULE fast
 #include <boost/test/unit_test.hpp>
 
-#include "certify/fast_query.hpp"
+#include "certify/classify.hpp"
 #include "quick_query.hpp"
 #include "support.hpp"
 

@@ -5,7 +5,7 @@
 #define BOOST_TEST_MODULE predicates
 #include <boost/test/unit_test.hpp>
 
-#include "certify/fast_query.hpp"
+#include "certify/classify.hpp"
 #include "curve/contact_lines.hpp"
 #include "geometry/gauss_map.hpp"
 #include "numeric/predicates.hpp"

@@ -8,7 +8,7 @@
 #include "certify/claims.hpp"
 #include "baselines/baselines.hpp"
 #include "campaign/families.hpp"
-#include "certify/fast_query.hpp"
+#include "certify/classify.hpp"
 #include "quick_query.hpp"
 
 #include <spawn.h>

@@ -7,7 +7,7 @@
 // decides. The answer is always the exact one.
 #pragma once
 #include "numeric/double3.hpp"
-#include "certify/fast_query.hpp"
+#include "certify/classify.hpp"
 
 #include <array>
 #include <memory>

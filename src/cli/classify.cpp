@@ -2,7 +2,7 @@
 #include "common.hpp"
 #include "io/files.hpp"
 
-#include "certify/fast_query.hpp"
+#include "certify/classify.hpp"
 
 #include <thread>
 

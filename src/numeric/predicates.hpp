@@ -75,7 +75,7 @@ static_assert(kArcRel > 10 * (7 * kUnit / kArcDirectionMin + gamma(4) + 6 * kUni
 constexpr double kDominatedRel = 1e-12;
 static_assert(kDominatedRel > 100 * 4 * kUnit, "dominated-line bound");
 
-// 4. Queries against the curve and against the lines (fast_query.cpp): a·ρ1 + b − ρ2 and
+// 4. Queries against the curve and against the lines (certify/classify.cpp): a·ρ1 + b − ρ2 and
 //    n·d − ρ1·h1 − ρ2·h2 from the nearest doubles of exact values (one rounding each) and exact
 //    doubles ρ: within γ4 of the magnitudes, < 4.5e-16; and a breakpoint test with the same bound.
 //    The absolute term kQueryTiny covers underflow, where relative bounds fail: a product or a

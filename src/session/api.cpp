@@ -4,7 +4,7 @@
 #include "session/session.hpp"
 
 #include "certify/certificate.hpp"
-#include "certify/fast_query.hpp"
+#include "certify/classify.hpp"
 #include "certify/golden.hpp"
 #include "geometry/measures.hpp"
 #include "io/mesh.hpp"

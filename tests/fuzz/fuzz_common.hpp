@@ -3,7 +3,7 @@
 // with the engine; here both live in one process only to compare them).
 #pragma once
 #include "certify/certificate.hpp"
-#include "certify/fast_query.hpp"
+#include "certify/classify.hpp"
 #include "curve/scan.hpp"
 #include "../support.hpp"
 

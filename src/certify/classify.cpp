@@ -1,4 +1,4 @@
-#include "certify/fast_query.hpp"
+#include "certify/classify.hpp"
 
 #include "numeric/predicates.hpp"
 
