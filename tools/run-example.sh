@@ -6,6 +6,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 SCENE="${1:-certificates/scenes/fig5_vf_ve_ee.json}"
 tools/install-deps.sh
+echo "building (a few minutes the first time) ..." >&2
 tools/build.sh >/dev/null
 name="$(basename "$SCENE" .json)"
 out="out/$name"

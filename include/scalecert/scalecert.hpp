@@ -97,9 +97,10 @@ struct GoldenData { std::string json, csv; };
 // on many threads.
 class Analysis {
 public:
-    // Builds the curve: by walking it (the scan path, no hull) from 2,000 points, as the scalecert
-    // command does, else from the hull model; queries and the partition use the hull model,
-    // built on first use.
+    // Builds the curve: by walking it (the scan path, no hull) from 2,000 points (or 250,000 as
+    // the product of the counts), as the scalecert command does, else from the hull model. The
+    // documents, classify and claims' verdicts come from the walk where it proved what they need;
+    // query, check_plane and the other claims use the hull model, built on first use.
     explicit Analysis(const Scene& scene);
     const Curve& curve() const { return curve_; }
     QueryResult query(const Rational& rho1, const Rational& rho2) const;  // ρ1, ρ2 > 0

@@ -18,7 +18,7 @@ Command add_golden(CLI::App& app) {
                 validate(*a);  // an unknown family is refused before anything is created
                 make_output_dir(a->dir);
                 run_campaign(*a);
-                std::cerr << "scalecert: wrote " << a->count << " " << a->family << " scenes with exact answers to " << a->dir << "\n";
+                std::cerr << "scalecert: wrote " << a->count << " " << a->family << (a->count == 1 ? " scene" : " scenes") << " with exact answers to " << a->dir << "\n";
                 return 0;
             }};
 }
