@@ -18,12 +18,14 @@ void put_point(Json& o, const std::string& key, const Vec3q& v) {
     o[key] = Json::array({to_exact_string(v[0]), to_exact_string(v[1]), to_exact_string(v[2])});
 }
 
-std::string dbl(double d) {
+std::string dbl(double d, int digits = 6) {
     char b[40];
-    std::snprintf(b, sizeof b, "%.6g", d);
+    std::snprintf(b, sizeof b, "%.*g", digits, d);
     return b;
 }
-std::string num(const Q& q) { return to_exact_string(q) + " (~" + dbl(to_double_rn(q)) + ")"; }
+// "p/q (~d)": the exact value and its nearest double, to `digits` significant digits (the JSON
+// claims' report uses 6, the line format's 17).
+std::string num(const Q& q, int digits = 6) { return to_exact_string(q) + " (~" + dbl(to_double_rn(q), digits) + ")"; }
 
 class Certifier {
 public:
@@ -485,12 +487,6 @@ Q read_number(const std::string& t, bool binary_doubles, const std::string& wher
         throw InputError(where + ": " + e.what());
     }
 }
-
-std::string num_text(const Q& q) {
-    char b[64];
-    std::snprintf(b, sizeof b, "%.17g", to_double_rn(q));
-    return to_exact_string(q) + " (~" + b + ")";
-}
 }  // namespace
 
 std::string certify_claim_lines(const ClaimModels& models, const std::string& claims, const std::string& name,
@@ -521,7 +517,7 @@ std::string certify_claim_lines(const ClaimModels& models, const std::string& cl
             put_exact(o, "rho2", r2);
             put_exact(o, "curve_rho2", f);
             put_exact(o, "rho2_minus_curve", r2 - f);
-            detail = "curve point (" + w[1] + ", " + w[2] + "): exact curve at rho1 is " + num_text(f) + ", off by " + num_text(r2 - f);
+            detail = "curve point (" + w[1] + ", " + w[2] + "): exact curve at rho1 is " + num(f, 17) + ", off by " + num(r2 - f, 17);
         } else if (w[0] == "growth" && w.size() == 2) {
             Q g = read_number(w[1], binary_doubles, where);
             if (sgn(g) < 0) throw InputError(where + ": a growth distance is >= 0 (0 when the seeds coincide)");
@@ -530,7 +526,7 @@ std::string certify_claim_lines(const ClaimModels& models, const std::string& cl
             o["claim"] = "growth";
             put_exact(o, "claimed", g);
             put_exact(o, "exact", exact_g);
-            detail = "growth distance " + w[1] + ": exact " + num_text(exact_g) + ", off by " + num_text(g - exact_g);
+            detail = "growth distance " + w[1] + ": exact " + num(exact_g, 17) + ", off by " + num(g - exact_g, 17);
         } else if (w.size() == 3) {
             Q r1 = read_number(w[0], binary_doubles, where), r2 = read_number(w[1], binary_doubles, where);
             if (sgn(r1) <= 0 || sgn(r2) <= 0) throw InputError(where + ": scalings must be > 0");
@@ -546,7 +542,7 @@ std::string certify_claim_lines(const ClaimModels& models, const std::string& cl
             put_exact(o, "rho2", r2);
             o["exact"] = en;
             put_exact(o, "rho2_minus_curve", r2 - f);
-            detail = "(" + w[0] + ", " + w[1] + ") claimed " + v + ": exact " + en + ", rho2 - curve = " + num_text(r2 - f);
+            detail = "(" + w[0] + ", " + w[1] + ") claimed " + v + ": exact " + en + ", rho2 - curve = " + num(r2 - f, 17);
         } else {
             throw InputError(where + ": expected 'RHO1 RHO2 VERDICT', 'curve RHO1 RHO2' or 'growth RHO'");
         }
