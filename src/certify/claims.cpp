@@ -480,6 +480,22 @@ private:
 }  // namespace
 
 namespace {
+// The report of n claims, `bad` of them wrong: JSON {"claims", "tolerance" (JSON claims only),
+// "right", "wrong"}, or the claims' text lines and a summary line.
+std::string report(Json arr, const std::string& text, long n, long bad, bool json, const Q* tolerance, long* wrong, long* count) {
+    if (wrong) *wrong = bad;
+    if (count) *count = n;
+    if (json) {
+        Json j;
+        j["claims"] = std::move(arr);
+        if (tolerance) put_exact(j, "tolerance", *tolerance);
+        j["right"] = n - bad;
+        j["wrong"] = bad;
+        return dump(j);
+    }
+    return text + "claims: " + std::to_string(n) + ", right: " + std::to_string(n - bad) + ", wrong: " + std::to_string(bad) + "\n";
+}
+
 Q read_number(const std::string& t, bool binary_doubles, const std::string& where) {
     try {
         return parse_number(t, binary_doubles);
@@ -553,16 +569,7 @@ std::string certify_claim_lines(const ClaimModels& models, const std::string& cl
         text += std::string(right ? "right  " : "WRONG  ") + detail + "\n";
     }
     if (n == 0) throw InputError(name + ": no claims (expected 'RHO1 RHO2 VERDICT', 'curve RHO1 RHO2' or 'growth RHO' lines)");
-    if (wrong) *wrong = bad;
-    if (count) *count = n;
-    if (json) {
-        Json j;
-        j["claims"] = arr;
-        j["right"] = n - bad;
-        j["wrong"] = bad;
-        return dump(j);
-    }
-    return text + "claims: " + std::to_string(n) + ", right: " + std::to_string(n - bad) + ", wrong: " + std::to_string(bad) + "\n";
+    return report(std::move(arr), text, n, bad, json, nullptr, wrong, count);
 }
 
 ClaimModels ClaimModels::of(const HullModel& m, const TouchingCurve& c) {
@@ -606,18 +613,7 @@ std::string certify_fp(const ClaimModels& models, const std::string& claims, con
         arr.push_back(o);
         text += std::string(right ? "right  " : "WRONG  ") + line + "\n";
     }
-    if (wrong) *wrong = bad;
-    const long n = static_cast<long>(list->items.size());
-    if (count) *count = n;
-    if (json) {
-        Json j;
-        j["claims"] = arr;
-        put_exact(j, "tolerance", opt.tolerance);
-        j["right"] = n - bad;
-        j["wrong"] = bad;
-        return dump(j);
-    }
-    return text + "claims: " + std::to_string(n) + ", right: " + std::to_string(n - bad) + ", wrong: " + std::to_string(bad) + "\n";
+    return report(std::move(arr), text, static_cast<long>(list->items.size()), bad, json, &opt.tolerance, wrong, count);
 }
 
 }  // namespace scalecert::internal
