@@ -141,6 +141,39 @@ scalecert::Interval interval(const py::handle& h, const std::string& what) {
 
 py::object json_loads(const std::string& text) { return py::module_::import("json").attr("loads")(text); }
 
+// Claims from Python: a str is a claims file's text; a dict is a scalecert-claims-1 document, and a
+// list (or tuple) its claims. json.dumps writes a float as its shortest repr, which strtod reads
+// back as the same double, so a float claims exactly the double it is; a Fraction or a Decimal
+// becomes the exact string "p/q"; numpy scalars and arrays become numbers and lists (.tolist()).
+// NaN and infinity are refused.
+std::string claims_text(const py::handle& c) {
+    if (py::isinstance<py::str>(c)) return c.cast<std::string>();
+    py::object doc;
+    if (py::isinstance<py::dict>(c)) {
+        doc = py::reinterpret_borrow<py::object>(c);
+    } else if (py::isinstance<py::list>(c) || py::isinstance<py::tuple>(c)) {
+        py::dict d;
+        d["format"] = "scalecert-claims-1";
+        d["claims"] = py::list(py::reinterpret_borrow<py::object>(c));
+        doc = d;
+    } else {
+        throw scalecert::InputError("claims: expected a str (a claims file's text), a dict or a list of claim dicts");
+    }
+    py::object Fraction = py::module_::import("fractions").attr("Fraction");
+    py::object Decimal = py::module_::import("decimal").attr("Decimal");
+    py::cpp_function exact([Fraction, Decimal](const py::handle& o) -> py::object {
+        if (py::isinstance(o, Fraction) || py::isinstance(o, Decimal)) return py::str(Fraction(o));
+        if (has_attr(o, "tolist")) return o.attr("tolist")();
+        throw scalecert::InputError("claims: " + py::repr(o).cast<std::string>() + " is not a number, string, list or dict");
+    });
+    try {
+        return py::module_::import("json").attr("dumps")(doc, py::arg("default") = exact, py::arg("allow_nan") = false).cast<std::string>();
+    } catch (const py::error_already_set& e) {
+        const std::string what = py::str(e.value()).cast<std::string>();
+        throw scalecert::InputError(what.rfind("claims: ", 0) == 0 ? what : "claims: " + what);
+    }
+}
+
 // {"contact": "VE", "features": (P1's vertices, P2's)}, or {"contact": None} where nothing touches.
 py::dict contact_dict(const std::optional<scalecert::Contact>& c) {
     py::dict d;
@@ -274,14 +307,16 @@ PYBIND11_MODULE(scalecert, m) {
              "the certified partition of I1 x I2 (the certificate), as a dict")
         .def("partition_json", [](const PyScene& s) { return s.a().partition_json(); },
              "the certificate as text, byte-identical to scalecert partition")
-        .def("certify_fp", [](const PyScene& s, const std::string& claims, bool binary_doubles, const py::handle& tolerance) {
+        .def("certify_fp", [](const PyScene& s, const py::handle& claims, bool exact_decimals, const py::handle& tolerance) {
                  scalecert::ClaimOptions opt;
-                 opt.binary_doubles = binary_doubles;
+                 opt.exact_decimals = exact_decimals;
                  opt.tolerance = rational(tolerance, "tolerance");
-                 return json_loads(s.a().certify_fp(claims, opt).report);
-             }, py::arg("claims"), py::arg("binary_doubles") = false, py::arg("tolerance") = 0,
-             "marks claims (JSON scalecert-claims-1 text, or 'RHO1 RHO2 VERDICT' / 'curve RHO1 RHO2' / 'growth RHO' "
-             "lines) right or wrong; the report of scalecert certify-fp --json, as a dict")
+                 return json_loads(s.a().certify_fp(claims_text(claims), opt).report);
+             }, py::arg("claims"), py::arg("exact_decimals") = false, py::arg("tolerance") = 0,
+             "marks claims right or wrong: the text of a claims file (JSON scalecert-claims-1, or 'RHO1 RHO2 VERDICT' / "
+             "'curve RHO1 RHO2' / 'growth RHO' lines), a scalecert-claims-1 dict, or a list of claim dicts. A float means "
+             "the double it is (exact_decimals reads JSON text's decimals as written); a str or a Fraction is exact. "
+             "Returns the report of scalecert certify-fp --json, as a dict")
         .def("golden", [](const PyScene& s) {
                  scalecert::GoldenData g = s.a().golden();
                  return py::make_tuple(json_loads(g.json), g.csv);

@@ -192,12 +192,21 @@ BOOST_AUTO_TEST_CASE(claims_and_golden_data_through_the_public_api) {
     scalecert::ClaimOptions text;
     text.json = false;
     BOOST_TEST(a.certify_fp("growth 1.5\n", text).report == "right  growth distance 1.5: exact 3/2 (~1.5), off by 0 (~0)\nclaims: 1, right: 1, wrong: 0\n");
-    // 0.1 + 2.9 = 3: touching as decimals; as doubles, 0.1 and 2.9 sum to just under 3 exactly.
-    scalecert::ClaimOptions doubles;
-    doubles.binary_doubles = true;
-    BOOST_TEST(a.certify_fp("0.1 2.9 touching\n").wrong == 0);
+    // A claim means the double the program held: the doubles 0.1 and 2.9 sum to just under 3
+    // exactly, so (0.1, 2.9) is separated; read as decimals, 1/10 + 29/10 = 3 touches.
     BOOST_TEST((scalecert::exact(0.1) + scalecert::exact(2.9) < R(3)));
-    BOOST_TEST(a.certify_fp("0.1 2.9 separated\n", doubles).wrong == 0);
+    BOOST_TEST(a.certify_fp("0.1 2.9 separated\n").wrong == 0);
+    BOOST_TEST(a.certify_fp("0.1 2.9 touching\n").wrong == 1);
+    scalecert::ClaimOptions decimals;
+    decimals.exact_decimals = true;
+    BOOST_TEST(a.certify_fp("0.1 2.9 touching\n", decimals).wrong == 0);
+    BOOST_TEST(a.certify_fp("1/10 29/10 touching\n").wrong == 0);  // a fraction is exact either way
+    // In JSON, a number is the double and a string exact, whatever the option.
+    const std::string json_claims = R"({"format": "scalecert-claims-1", "claims": [
+        {"kind": "verdict", "rho1": 0.1, "rho2": 2.9, "verdict": "separated"},
+        {"kind": "verdict", "rho1": "0.1", "rho2": "2.9", "verdict": "touching"}]})";
+    BOOST_TEST(a.certify_fp(json_claims).wrong == 0);
+    BOOST_TEST(a.certify_fp(json_claims, decimals).wrong == 1);  // 0.1 + 2.9 = 3 then: touching, not separated
     BOOST_CHECK_THROW(a.certify_fp("1 1 maybe\n"), scalecert::InputError);
 
     // Golden data: 7 values of ρ1 across [1/2, 5/2] and no switch point, 13 pairs each (on the

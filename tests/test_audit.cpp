@@ -169,11 +169,12 @@ struct Claims {
     explicit Claims(const ExactScene& s) : m(build_model(s)), c(build_curve(m)) {}
     explicit Claims(const std::string& bundled)
         : Claims(load_scene(std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/" + bundled + ".json")) {}
-    // The report of one claim (JSON), and whether it was right.
+    // The report of one claim (JSON), and whether it was right. These cases read decimals exactly
+    // (exact_decimals) unless binary_doubles.
     nlohmann::json one(const std::string& claim, const std::string& tolerance = "0", bool binary_doubles = false) {
         long wrong = -1;
         const std::string r = certify_fp(m, c, "{\"format\": \"scalecert-claims-1\", \"claims\": [" + claim + "]}", "c.json",
-                                         ClaimOptions{binary_doubles, parse_exact(tolerance), true}, &wrong);
+                                         ClaimOptions{!binary_doubles, parse_exact(tolerance), true}, &wrong);
         auto j = nlohmann::json::parse(r)["claims"][0];
         BOOST_TEST(wrong == (j["right"].get<bool>() ? 0 : 1));
         return j;
@@ -260,8 +261,8 @@ BOOST_AUTO_TEST_CASE(curve_claim_rules) {
     BOOST_TEST(refused(R"({"kind": "growth_distance", "value": "-18/11"})").find(">= 0") != std::string::npos);
     long wrong = -1;
     for (const char* line : {"curve 1 0\n", "curve 0 9/2\n", "curve 1 -2\n", "growth -1\n"})
-        BOOST_CHECK_THROW(certify_fp(k.m, k.c, line, "c.txt", ClaimOptions{false, Q(0), false}, &wrong), InputError);
-    BOOST_TEST(certify_fp(k.m, k.c, "curve 1 2\ncurve 3/2 12/7\n", "c.txt", ClaimOptions{false, Q(0), false}, &wrong).find("wrong: 0") !=
+        BOOST_CHECK_THROW(certify_fp(k.m, k.c, line, "c.txt", ClaimOptions{true, Q(0), false}, &wrong), InputError);
+    BOOST_TEST(certify_fp(k.m, k.c, "curve 1 2\ncurve 3/2 12/7\n", "c.txt", ClaimOptions{true, Q(0), false}, &wrong).find("wrong: 0") !=
                std::string::npos);
     // Rule 4 at a switch point: the chord over [1/2, 3/2] (within a tolerance of 1/2 of the curve)
     // has its midpoint at the switch point (1, 2), whose contact is VE (the hostile review: EE,
@@ -423,7 +424,7 @@ BOOST_AUTO_TEST_CASE(malformed_claims_get_one_line) {
     auto err = [&](const std::string& text) {
         long wrong = 0;
         try {
-            certify_fp(k.m, k.c, text, "c.json", ClaimOptions{false, Q(0), false}, &wrong);
+            certify_fp(k.m, k.c, text, "c.json", ClaimOptions{true, Q(0), false}, &wrong);
         } catch (const InputError& e) {
             return std::string(e.what());
         }

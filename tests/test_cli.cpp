@@ -529,6 +529,17 @@ BOOST_AUTO_TEST_CASE(certify_fp_exit_status_gates_ci) {
     Run o = run("certify-fp " + sc + " " + wrong.string() + " --out " + rep.string());
     BOOST_TEST(o.status == 1);
     BOOST_TEST(slurp(rep) == w.out);
+    // A claim means the double its writer held: the doubles 0.1 and 2.9 sum to just under 3, so
+    // "0.1 2.9 separated" is right; read as the decimals written (--exact-decimals), 1/10 + 29/10 = 3
+    // touches and it is wrong. The same for a JSON number; a JSON string is exact either way.
+    fs::path dbl = write("dbl.claims", "0.1 2.9 separated\n");
+    BOOST_TEST(run("certify-fp " + sc + " " + dbl.string()).status == 0);
+    BOOST_TEST(run("certify-fp " + sc + " " + dbl.string() + " --exact-decimals").status == 1);
+    fs::path js = write("dbl.json", R"({"format": "scalecert-claims-1", "claims": [{"kind": "verdict", "rho1": 0.1, "rho2": 2.9, "verdict": "separated"}]})");
+    BOOST_TEST(run("certify-fp " + sc + " " + js.string()).status == 0);
+    BOOST_TEST(run("certify-fp " + sc + " " + js.string() + " --exact-decimals").status == 1);
+    fs::path str = write("str.json", R"({"format": "scalecert-claims-1", "claims": [{"kind": "verdict", "rho1": "0.1", "rho2": "2.9", "verdict": "touching"}]})");
+    BOOST_TEST(run("certify-fp " + sc + " " + str.string()).status == 0);
 }
 
 BOOST_AUTO_TEST_CASE(every_subcommand_help_shows_an_example) {

@@ -84,7 +84,11 @@ struct PlaneCheck { bool separates; Rational c1, c2; };  // exact c1, c2 as in P
 // A floating-point program's claims (certificates/CLAIMS.md: JSON scalecert-claims-1, or lines
 // 'RHO1 RHO2 VERDICT', 'curve RHO1 RHO2', 'growth RHO'), each marked right or wrong, exactly.
 struct ClaimOptions {
-    bool binary_doubles = false;  // numbers are the doubles strtod reads, not the decimals written
+    // A claim written by a floating-point program means the double it held: by default a JSON
+    // number or a decimal of the line format is the double strtod reads from it. With
+    // exact_decimals it is the decimal as written (0.1 = 1/10). JSON strings and fractions such as
+    // 3/7 are exact either way. (Scenes are read exactly unless told otherwise: their own option.)
+    bool exact_decimals = false;
     Rational tolerance = 0;       // relative error accepted on numeric JSON claims (>= 0)
     bool json = true;             // the report as JSON (scalecert certify-fp --json), else as text
 };

@@ -210,6 +210,23 @@ def test_golden_and_claims(tmp_path):
 
     with pytest.raises(KeyboardInterrupt):
         stacked().certify_fp(json.dumps(claims), tolerance=Interrupting())
+    # Claims as dicts: a float means the double it is. The doubles 0.1 and 2.9 sum to just under 3,
+    # so the cubes (touching on rho1 + rho2 = 3) are separated there; as decimals they touch.
+    assert F(0.1) + F(2.9) < 3
+    c = [{"kind": "verdict", "rho1": 0.1, "rho2": 2.9, "verdict": "separated"},
+         {"kind": "verdict", "rho1": F(1, 10), "rho2": Decimal("2.9"), "verdict": "touching"},
+         {"kind": "verdict", "rho1": np.float64(0.1), "rho2": np.float32(2.5), "verdict": "separated"},
+         {"kind": "witness_point", "rho1": 2, "rho2": 2, "point": np.array([1, 1, 2.5])}]
+    r = stacked().certify_fp(c)
+    assert r["wrong"] == 0 and [x["right"] for x in r["claims"]] == [True] * 4
+    assert stacked().certify_fp({"format": "scalecert-claims-1", "claims": c[:1]})["wrong"] == 0
+    assert stacked().certify_fp(json.dumps({"format": "scalecert-claims-1", "claims": c[:1]}), exact_decimals=True)["wrong"] == 1
+    with pytest.raises(scalecert.InputError, match="claims: .*NaN|claims: .*nan|Out of range"):
+        stacked().certify_fp([{"kind": "verdict", "rho1": float("nan"), "rho2": 1, "verdict": "separated"}])
+    with pytest.raises(scalecert.InputError, match="not a number, string, list or dict"):
+        stacked().certify_fp([{"kind": "verdict", "rho1": object(), "rho2": 1, "verdict": "separated"}])
+    with pytest.raises(scalecert.InputError, match="expected a str"):
+        stacked().certify_fp(3)
     # A scene's golden data: 7 values of rho1 across [1/2, 5/2] (no switch point), 13 pairs each,
     # the first on the line at rho1 = 3/4, rho2 = 3 - 3/4 = 9/4; the same rows in the JSON.
     g, csv = stacked().golden()

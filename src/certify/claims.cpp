@@ -81,7 +81,7 @@ private:
     Q number(const JNode& n, const std::string& key) const {
         if (n.kind != JNode::Number && n.kind != JNode::String) fail(key, "expected a number or a string such as \"3/7\"");
         try {
-            return parse_number(n.text, opt_.binary_doubles && n.kind == JNode::Number);
+            return parse_number(n.text, !opt_.exact_decimals && n.kind == JNode::Number);
         } catch (const InputError& e) {
             fail(key, e.what());
         }
@@ -428,6 +428,7 @@ private:
         put_point(o, "exact_closest_P1", e.p1);
         put_point(o, "exact_closest_P2", e.p2);
         bool right = close_sq(d, e.squared);
+        o["value_right"] = right;
         text = "distance at (" + num(r1) + ", " + num(r2) + "): claimed " + num(d) + ", exact squared " + num(e.squared);
         if (const JNode* cl = j.find("closest")) {
             if (cl->kind != JNode::Array || cl->items.size() != 2) fail("closest", "expected [point on P1, point on P2]");
@@ -462,6 +463,7 @@ private:
         errors_sq(o, d, e.squared);
         o["exact_direction"] = Json::array({e.direction[0].get_str(), e.direction[1].get_str(), e.direction[2].get_str()});
         bool right = close_sq(d, e.squared);
+        o["value_right"] = right;
         text = "penetration depth at (" + num(r1) + ", " + num(r2) + "): claimed " + num(d) + ", exact squared " + num(e.squared);
         if (const JNode* dir = j.find("direction")) {
             const Vec3q n = point(*dir, "direction");
@@ -496,9 +498,11 @@ std::string report(Json arr, const std::string& text, long n, long bad, bool jso
     return text + "claims: " + std::to_string(n) + ", right: " + std::to_string(n - bad) + ", wrong: " + std::to_string(bad) + "\n";
 }
 
-Q read_number(const std::string& t, bool binary_doubles, const std::string& where) {
+// A number of the line format: the double strtod reads (a floating-point program's output means
+// the double it held), or with exact_decimals the decimal as written; a fraction p/q is exact.
+Q read_number(const std::string& t, bool exact_decimals, const std::string& where) {
     try {
-        return parse_number(t, binary_doubles);
+        return parse_number(t, !exact_decimals && t.find('/') == std::string::npos);
     } catch (const InputError& e) {
         throw InputError(where + ": " + e.what());
     }
@@ -506,7 +510,7 @@ Q read_number(const std::string& t, bool binary_doubles, const std::string& wher
 }  // namespace
 
 std::string certify_claim_lines(const ClaimModels& models, const std::string& claims, const std::string& name,
-                                bool binary_doubles, bool json, long* wrong, long* count) {
+                                bool exact_decimals, bool json, long* wrong, long* count) {
     std::istringstream in(claims);
     std::string line, text;
     Json arr = Json::array();
@@ -524,7 +528,7 @@ std::string certify_claim_lines(const ClaimModels& models, const std::string& cl
         bool right = false;
         std::string detail;
         if (w[0] == "curve" && w.size() == 3) {
-            Q r1 = read_number(w[1], binary_doubles, where), r2 = read_number(w[2], binary_doubles, where);
+            Q r1 = read_number(w[1], exact_decimals, where), r2 = read_number(w[2], exact_decimals, where);
             if (sgn(r1) <= 0 || sgn(r2) <= 0) throw InputError(where + ": scalings must be > 0");
             Q f = models.curve_value(r1);
             right = f == r2;
@@ -535,7 +539,7 @@ std::string certify_claim_lines(const ClaimModels& models, const std::string& cl
             put_exact(o, "rho2_minus_curve", r2 - f);
             detail = "curve point (" + w[1] + ", " + w[2] + "): exact curve at rho1 is " + num(f, 17) + ", off by " + num(r2 - f, 17);
         } else if (w[0] == "growth" && w.size() == 2) {
-            Q g = read_number(w[1], binary_doubles, where);
+            Q g = read_number(w[1], exact_decimals, where);
             if (sgn(g) < 0) throw InputError(where + ": a growth distance is >= 0 (0 when the seeds coincide)");
             const Q exact_g = models.growth();
             right = g == exact_g;
@@ -544,7 +548,7 @@ std::string certify_claim_lines(const ClaimModels& models, const std::string& cl
             put_exact(o, "exact", exact_g);
             detail = "growth distance " + w[1] + ": exact " + num(exact_g, 17) + ", off by " + num(g - exact_g, 17);
         } else if (w.size() == 3) {
-            Q r1 = read_number(w[0], binary_doubles, where), r2 = read_number(w[1], binary_doubles, where);
+            Q r1 = read_number(w[0], exact_decimals, where), r2 = read_number(w[1], exact_decimals, where);
             if (sgn(r1) <= 0 || sgn(r2) <= 0) throw InputError(where + ": scalings must be > 0");
             const std::string& v = w[2];
             if (v != "separated" && v != "touching" && v != "overlapping" && v != "intersecting")
@@ -585,7 +589,7 @@ std::string certify_fp(const ClaimModels& models, const std::string& claims, con
     const size_t first = claims.find_first_not_of(" \t\r\n");
     if (first == std::string::npos || claims[first] != '{') {
         if (sgn(opt.tolerance) != 0) throw InputError(name + ": a tolerance applies to JSON claims (scalecert-claims-1) only");
-        return certify_claim_lines(models, claims, name, opt.binary_doubles, json, wrong, count);
+        return certify_claim_lines(models, claims, name, opt.exact_decimals, json, wrong, count);
     }
     JNode root;
     try {

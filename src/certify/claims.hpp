@@ -15,10 +15,11 @@ namespace scalecert::internal {
 //   penetration_depth (certificates/CLAIMS.md);
 // - lines ('#' comments): 'RHO1 RHO2 VERDICT' (separated | touching | overlapping | intersecting,
 //   = not separated), 'curve RHO1 RHO2' (a claimed point of the touching curve) or 'growth RHO'.
-// Numbers are exact as written (with binary_doubles, JSON numbers and line numbers are the doubles
-// strtod gives). `tolerance` (a relative error, >= 0) accepts numeric values within it; verdicts,
+// A JSON number or a decimal of the line format is the double strtod gives (what the program that
+// wrote it held); with exact_decimals, the decimal as written. JSON strings and fractions p/q are
+// exact either way. `tolerance` (a relative error, >= 0) accepts numeric values within it; verdicts,
 // labels, planes and witness points must be exactly right.
-// Options: the public ClaimOptions (binary_doubles, tolerance >= 0, json).
+// Options: the public ClaimOptions (exact_decimals, tolerance >= 0, json).
 using scalecert::ClaimOptions;
 // What claims are checked against: the hull model and its curve over all ρ1 > 0 (built on first
 // use), and the exact verdict and curve value at a pair (Session::claim_models takes them from the
@@ -39,11 +40,11 @@ inline std::string certify_fp(const HullModel& m, const TouchingCurve& c, const 
     return certify_fp(ClaimModels::of(m, c), claims, name, opt, wrong);
 }
 inline std::string certify_fp(const HullModel& m, const TouchingCurve& c, const std::string& claims, const std::string& name,
-                              bool binary_doubles, bool json, long* wrong) {
-    return certify_fp(m, c, claims, name, ClaimOptions{binary_doubles, Q(0), json}, wrong);
+                              bool exact_decimals, bool json, long* wrong) {
+    return certify_fp(m, c, claims, name, ClaimOptions{exact_decimals, Q(0), json}, wrong);
 }
 // The line format alone.
 std::string certify_claim_lines(const ClaimModels& models, const std::string& claims, const std::string& name,
-                                bool binary_doubles, bool json, long* wrong, long* count = nullptr);
+                                bool exact_decimals, bool json, long* wrong, long* count = nullptr);
 
 }  // namespace scalecert::internal

@@ -12,7 +12,7 @@ Command add_certify_fp(CLI::App& app) {
     struct Args {
         SceneArgs scene;
         std::string out, claims, tolerance = "0";
-        bool json = false;
+        bool json = false, exact_decimals = false;
     };
     auto a = std::make_shared<Args>();
     CLI::App* sub = app.add_subcommand("certify-fp", "mark a floating-point program's claims right or wrong, exactly (exit 1 if any is wrong)");
@@ -20,6 +20,10 @@ Command add_certify_fp(CLI::App& app) {
     sub->add_option("CLAIMS", a->claims, "claims: JSON (scalecert-claims-1, certificates/CLAIMS.md), or lines 'RHO1 RHO2 VERDICT', 'curve RHO1 RHO2', 'growth RHO'");
     sub->add_option("--tolerance", a->tolerance, "accept numeric claims within this relative error (exact, e.g. 1e-9; JSON claims); verdicts, contacts, planes and witness points must be exact");
     sub->add_flag("--json", a->json, "the report as JSON");
+    sub->add_flag("--exact-decimals", a->exact_decimals,
+                  "read the claims' JSON numbers and decimals exactly as written (0.1 = 1/10); by default each is the double "
+                  "strtod reads, as the program that wrote it held it (strings and fractions p/q are exact either way; "
+                  "--binary-doubles is for the scene)");
     add_out(sub, a->out);
     example(sub, "Exit status: 0 all claims right, 1 some claim wrong, 2 bad input. Example:\n"
                  "  printf '1 1 separated\\ngrowth 1.5\\n' > claims.txt\n"
@@ -32,7 +36,7 @@ Command add_certify_fp(CLI::App& app) {
                 internal::Session session = open_session(a->scene, Engine::Auto, clock);
                 const std::string claims = read_input(a->claims, "claims file", kMaxSceneBytes);
                 long wrong = 0;
-                ClaimOptions opt{a->scene.opt.binary_doubles, Q(0), a->json};
+                ClaimOptions opt{a->exact_decimals, Q(0), a->json};
                 try {
                     opt.tolerance = parse_exact(a->tolerance);
                 } catch (const InputError& e) {
