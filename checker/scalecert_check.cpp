@@ -1,6 +1,6 @@
-// scalecert-check: an independent checker for scalecert certificates (partition files and query
-// answers). It shares no code with the engine: GMP rationals, the standard library and a JSON
-// reader. Every claim is re-derived from the scene stored in the file, and nothing in the file is
+// scalecert-check: an independent checker for scalecert certificates (partition files, query
+// answers and certify-fp's judgements). It shares no code with the engine: GMP rationals, the
+// standard library and a JSON reader. Every claim is re-derived from the scene stored in the file, and nothing in the file is
 // trusted: its kind is an explicit field, every object must have exactly the documented keys,
 // duplicate keys are rejected, indices must be exact integers in range, and contact labels are
 // recomputed from all maximisers. See certificates/FORMAT.md ("What the checker rejects").
@@ -25,6 +25,7 @@
 #include <memory>
 #include <new>
 #include <numeric>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -1101,6 +1102,7 @@ void check_partition(const J& c) {
 }
 
 // ---- a query answer ----------------------------------------------------------------------------
+void check_verdict(const Scene& sc, const Q& r1, const Q& r2, const std::string& v, const J& cert);
 void check_query(const J& c) {
     shape(c, "", {"format", "kind", "verdict", "rho1", "rho1_double", "rho2", "rho2_double", "certificate", "seed_interior", "scene"},
           {"segment"});
@@ -1113,7 +1115,12 @@ void check_query(const J& c) {
     check_seed_interior(sc, at(c, "seed_interior"));
     Q r1 = field(c, "rho1", ""), r2 = field(c, "rho2", "");
     claim(sgn(r1) > 0 && sgn(r2) > 0, "the scalings are > 0");
-    const J& cert = at(c, "certificate");
+    check_verdict(sc, r1, r2, v, at(c, "certificate"));
+}
+
+// The certificate of verdict v (separated, touching or overlapping) at (r1, r2) > 0: its plane
+// and witness (a query answer's "certificate"; the seeds are proved interior).
+void check_verdict(const Scene& sc, const Q& r1, const Q& r2, const std::string& v, const J& cert) {
     if (v == "separated") shape(cert, "certificate", {"plane"});
     if (v == "touching") shape(cert, "certificate", {"plane", "witness"});
     if (v == "overlapping") shape(cert, "certificate", {"witness"});
@@ -1143,6 +1150,271 @@ void check_query(const J& c) {
     }
 }
 
+
+// ---- a judgements file --------------------------------------------------------------------------
+// certify-fp's judgements, each re-derived from its claim and its proof (FORMAT.md, "A judgements
+// file"): the file's "right" must be the judgement these rules give, CLAIMS.md's rules.
+namespace judge {
+
+// n·L for the least L > 0 making every component an integer; L in *scale.
+V3 integral(const V3& n, mpz_class* scale) {
+    mpz_class L = 1;
+    for (const Q& c : n) mpz_lcm(L.get_mpz_t(), L.get_mpz_t(), c.get_den_mpz_t());
+    *scale = L;
+    return {n[0] * L, n[1] * L, n[2] * L};
+}
+// max over P_i(rho) of n·x, for a nonzero rational n: n·s_i + rho max_v n·(v − s_i), the maximum a
+// scan of every vertex (h(1, m) is max −m·(w − s2), so P2's takes m = −n).
+Q reach(const Scene& sc, int i, const V3& n, const Q& rho) {
+    mpz_class L;
+    V3 u = integral(n, &L);
+    if (i == 1) for (Q& c : u) c = -c;
+    return dot(n, sc.s[i]) + rho * sc.h(i, u) / Q(L);
+}
+Q reach_min(const Scene& sc, int i, const V3& n, const Q& rho) { return -reach(sc, i, {-n[0], -n[1], -n[2]}, rho); }
+// s_i + rho (Σ w v − s_i) for weights over P_i's vertices.
+V3 body_point(const Scene& sc, int i, const Q& rho, const J& w, const std::string& where) {
+    const std::array<Q, 3> c = combination(sc, i, w, where);
+    const Q D(sc.scan[i]->D());
+    V3 x;
+    for (int k = 0; k < 3; ++k) x[k] = sc.s[i][k] + rho * (c[k] / D - sc.s[i][k]);
+    return x;
+}
+// Is x in P_i(rho)? Proved by {"in": weights} combining to x, or {"out": normal} whose plane x
+// lies strictly beyond.
+bool member(const Scene& sc, int i, const Q& rho, const V3& x, const J& p, const std::string& where) {
+    claim(p.is_object() && p.size() == 1 && (p.contains("in") || p.contains("out")), where + " is {\"in\": weights} or {\"out\": normal}");
+    if (p.contains("in")) {
+        claim(body_point(sc, i, rho, at(p, "in"), where + ".in") == x, where + ".in combines to the point");
+        return true;
+    }
+    const V3 n = normal(at(p, "out"), where + ".out");
+    claim(dot(n, x) > reach(sc, i, n, rho), where + ".out: the point lies strictly beyond the body's extent along the normal");
+    return false;
+}
+struct Rules {
+    Q tol;
+    bool close(const Q& c, const Q& e) const { return abs(c - e) <= tol * abs(e); }
+    bool close_sq(const Q& c, const Q& E) const {
+        if (sgn(c) < 0) return false;
+        const Q lo = 1 - tol, hi = 1 + tol;
+        return (sgn(lo) <= 0 || lo * lo * E <= c * c) && c * c <= hi * hi * E;
+    }
+    bool within_above(const Q& x, const Q& E) const { return E <= x && x <= (1 + tol) * (1 + tol) * E; }
+};
+Q positive(const J& o, const char* key, const std::string& where) {
+    const Q q = num(at(o, key), where + "." + key);
+    claim(sgn(q) > 0, where + "." + key + " is > 0");
+    return q;
+}
+V3 nonzero_vector(const J& j, const std::string& where) {
+    const V3 n = point(j, where);
+    claim(nonzero(n), where + " is nonzero");
+    return n;
+}
+// h_M(n) = max over P1(r1) of n·x − min over P2(r2) of n·y: the depth along n times |n| (< 0: the
+// plane separates).
+Q hM(const Scene& sc, const V3& n, const Q& r1, const Q& r2) { return reach(sc, 0, n, r1) - reach_min(sc, 1, n, r2); }
+
+// A closed surface of triangles over points of the Minkowski difference P1(r1) − P2(r2), each
+// triangle's plane at least sqrt(E) from the origin, which it has on its inner side. The radial
+// projection of such a surface covers every direction (its degree is its total solid angle over
+// 4π, > 0 as every triangle's is), so along every unit u some point t·u of it, hence of the
+// difference, has t >= sqrt(E): the depth is at least sqrt(E).
+void check_lower_bound(const Scene& sc, const Q& r1, const Q& r2, const Q& E, const J& proof, const std::string& where) {
+    const J& pts = at(proof, "points");
+    const J& tris = at(proof, "triangles");
+    claim(pts.is_array() && pts.size() >= 4, where + ".points has at least 4 points");
+    claim(tris.is_array() && tris.size() >= 4, where + ".triangles has at least 4 triangles");
+    std::vector<V3> z;
+    for (size_t k = 0; k < pts.size(); ++k) {
+        const std::string w = where + ".points[" + std::to_string(k) + "]";
+        claim(pts[k].is_array() && pts[k].size() == 2, w + " is [vertex of P1, vertex of P2]");
+        const size_t a = index(pts[k][0], sc.P[0].size(), w), b = index(pts[k][1], sc.P[1].size(), w);
+        spend(200);
+        V3 p;
+        for (int c = 0; c < 3; ++c)
+            p[c] = (sc.s[0][c] + r1 * (sc.P[0][a][c] - sc.s[0][c])) - (sc.s[1][c] + r2 * (sc.P[1][b][c] - sc.s[1][c]));
+        z.push_back(p);
+    }
+    std::map<std::pair<size_t, size_t>, int> edges;
+    for (size_t t = 0; t < tris.size(); ++t) {
+        const std::string w = where + ".triangles[" + std::to_string(t) + "]";
+        claim(tris[t].is_array() && tris[t].size() == 3, w + " is 3 point indices");
+        size_t v[3];
+        for (int k = 0; k < 3; ++k) v[k] = index(tris[t][k], z.size(), w);
+        spend(300);
+        const V3 N = cross(sub(z[v[1]], z[v[0]]), sub(z[v[2]], z[v[0]]));
+        const Q off = dot(N, z[v[0]]);
+        claim(sgn(off) > 0, w + " has the origin strictly on its inner side");
+        claim(off * off >= E * dot(N, N), w + "'s plane lies at least the depth from the origin");
+        for (int k = 0; k < 3; ++k) claim(++edges[{v[k], v[(k + 1) % 3]}] == 1, w + ": each directed edge is used once");
+    }
+    for (const auto& [e, n] : edges)
+        claim(edges.count({e.second, e.first}) == 1, where + ".triangles form a closed surface (every edge is shared with opposite orientation)");
+}
+
+// One judgement; returns whether the claim is right by the rules.
+bool judge(const Scene& sc, const Rules& R, const J& cl, const J& pr, const std::string& where) {
+    claim(cl.is_object() && cl.contains("kind") && cl["kind"].is_string(), where + ".claim has a kind");
+    claim(pr.is_object(), where + ".proof is an object");
+    const std::string kind = cl["kind"].get<std::string>();
+    const std::string wc = where + ".claim", wp = where + ".proof";
+    if (kind == "verdict") {
+        shape(cl, wc, {"kind", "rho1", "rho2", "verdict"});
+        shape(pr, wp, {"verdict", "certificate"});
+        const Q r1 = positive(cl, "rho1", wc), r2 = positive(cl, "rho2", wc);
+        claim(at(cl, "verdict").is_string() && at(pr, "verdict").is_string(), where + ": verdicts are strings");
+        const std::string c = at(cl, "verdict").get<std::string>(), v = at(pr, "verdict").get<std::string>();
+        claim(c == "separated" || c == "touching" || c == "overlapping" || c == "intersecting", wc + ".verdict is separated, touching, overlapping or intersecting");
+        claim(v == "separated" || v == "touching" || v == "overlapping", wp + ".verdict is separated, touching or overlapping");
+        check_verdict(sc, r1, r2, v, at(pr, "certificate"));
+        return c == "intersecting" ? v != "separated" : c == v;
+    }
+    if (kind == "growth_distance") {
+        shape(cl, wc, {"kind", "value"});
+        shape(pr, wp, {"value"}, {"normal", "witness"});
+        const Q c = num(at(cl, "value"), wc + ".value");
+        claim(sgn(c) >= 0, wc + ".value is >= 0");
+        const Q g = num(at(pr, "value"), wp + ".value");
+        if (sgn(g) == 0) {
+            claim(!pr.contains("normal") && !pr.contains("witness"), wp + ": a growth distance of 0 has no normal or witness");
+            claim(sc.s[0] == sc.s[1], wp + ": a growth distance of 0 needs coinciding seeds");
+        } else {
+            claim(sgn(g) > 0 && pr.contains("normal") && pr.contains("witness"), wp + " has a normal and a witness");
+            const V3 n = normal(at(pr, "normal"), wp + ".normal");
+            mpz_class H[2];
+            sc.support(n, H);
+            claim(sgn(H[0] + H[1]) > 0, wp + ".normal: h1 + h2 > 0");
+            claim(Q(dotz(ints(n), sc.Delta)) == g * Q(H[0] + H[1]), wp + ": n·d = value (h1 + h2), so (rho, rho) is separated below it");
+            claim(check_witness(sc, at(pr, "witness"), wp + ".witness") == P2{g, g}, wp + ".witness is at (value, value)");
+        }
+        return R.close(c, g);
+    }
+    if (kind == "separating_plane") {
+        shape(cl, wc, {"kind", "rho1", "rho2", "normal"}, {"offset"});
+        claim(pr.empty(), wp + " is empty (the checker computes the extents)");
+        const Q r1 = positive(cl, "rho1", wc), r2 = positive(cl, "rho2", wc);
+        const V3 n = nonzero_vector(at(cl, "normal"), wc + ".normal");
+        const Q c1 = reach(sc, 0, n, r1), c2 = reach_min(sc, 1, n, r2);
+        bool right = c1 < c2;
+        if (cl.contains("offset")) {
+            const Q d = num(at(cl, "offset"), wc + ".offset");
+            right = right && c1 < d && d < c2;
+        }
+        return right;
+    }
+    if (kind == "witness_point") {
+        shape(cl, wc, {"kind", "rho1", "rho2", "point"});
+        shape(pr, wp, {"P1", "P2"});
+        const Q r1 = positive(cl, "rho1", wc), r2 = positive(cl, "rho2", wc);
+        const V3 x = point(at(cl, "point"), wc + ".point");
+        const bool in1 = member(sc, 0, r1, x, at(pr, "P1"), wp + ".P1"), in2 = member(sc, 1, r2, x, at(pr, "P2"), wp + ".P2");
+        return in1 && in2;
+    }
+    if (kind == "distance") {
+        shape(cl, wc, {"kind", "rho1", "rho2", "value"}, {"closest"});
+        const bool closest = cl.contains("closest");
+        if (closest) shape(pr, wp, {"squared", "P1", "P2", "closest"});
+        else shape(pr, wp, {"squared", "P1", "P2"});
+        const Q r1 = positive(cl, "rho1", wc), r2 = positive(cl, "rho2", wc);
+        const Q c = num(at(cl, "value"), wc + ".value");
+        const Q E = num(at(pr, "squared"), wp + ".squared");
+        const V3 p = body_point(sc, 0, r1, at(pr, "P1"), wp + ".P1"), q = body_point(sc, 1, r2, at(pr, "P2"), wp + ".P2");
+        const V3 u = sub(q, p);
+        claim(dot(u, u) == E, wp + ".squared is |q − p|² of its closest points");
+        if (sgn(E) > 0) {
+            claim(reach(sc, 0, u, r1) == dot(u, p), wp + ": no point of P1 lies beyond p along q − p");
+            claim(reach_min(sc, 1, u, r2) == dot(u, q), wp + ": no point of P2 lies before q along q − p");
+        }
+        bool right = R.close_sq(c, E);
+        if (closest) {
+            const J& cp = at(cl, "closest");
+            claim(cp.is_array() && cp.size() == 2, wc + ".closest is [point, point]");
+            const V3 a = point(cp[0], wc + ".closest[0]"), b = point(cp[1], wc + ".closest[1]");
+            const J& pc = at(pr, "closest");
+            shape(pc, wp + ".closest", {"P1", "P2"});
+            const bool in1 = member(sc, 0, r1, a, at(pc, "P1"), wp + ".closest.P1"), in2 = member(sc, 1, r2, b, at(pc, "P2"), wp + ".closest.P2");
+            const V3 ab = sub(b, a);
+            right = right && in1 && in2 && R.within_above(dot(ab, ab), E);
+        }
+        return right;
+    }
+    if (kind == "penetration_depth") {
+        shape(cl, wc, {"kind", "rho1", "rho2", "value"}, {"direction"});
+        const Q r1 = positive(cl, "rho1", wc), r2 = positive(cl, "rho2", wc);
+        const Q c = num(at(cl, "value"), wc + ".value");
+        std::optional<V3> dir;
+        if (cl.contains("direction")) dir = nonzero_vector(at(cl, "direction"), wc + ".direction");
+        if (pr.contains("separated")) {
+            shape(pr, wp, {"separated"});
+            const V3 n = normal(at(pr, "separated"), wp + ".separated");
+            claim(sgn(hM(sc, n, r1, r2)) < 0, wp + ".separated: the plane separates the pair strictly");
+            return false;  // a depth claimed of a separated pair
+        }
+        Q E;
+        if (pr.contains("common")) {
+            shape(pr, wp, {"squared", "direction", "common"});
+            claim(num(at(pr, "squared"), wp + ".squared") == 0, wp + ".squared is 0 for a touching pair");
+            const V3 n = normal(at(pr, "direction"), wp + ".direction");
+            claim(sgn(hM(sc, n, r1, r2)) == 0, wp + ".direction: the plane supports both bodies");
+            const J& cm = at(pr, "common");
+            shape(cm, wp + ".common", {"P1", "P2"});
+            claim(body_point(sc, 0, r1, at(cm, "P1"), wp + ".common.P1") == body_point(sc, 1, r2, at(cm, "P2"), wp + ".common.P2"),
+                  wp + ".common is a point of both bodies");
+            E = 0;
+        } else {
+            shape(pr, wp, {"squared", "direction", "points", "triangles"});
+            E = num(at(pr, "squared"), wp + ".squared");
+            claim(sgn(E) > 0, wp + ".squared is > 0");
+            const V3 n = normal(at(pr, "direction"), wp + ".direction");
+            const Q g = hM(sc, n, r1, r2);
+            claim(sgn(g) > 0 && g * g == E * dot(n, n), wp + ".direction: the depth along it is sqrt(squared)");
+            check_lower_bound(sc, r1, r2, E, pr, wp);
+        }
+        bool right = R.close_sq(c, E);
+        if (dir) {
+            const Q g = hM(sc, *dir, r1, r2);
+            Q along = g * g / dot(*dir, *dir);
+            if (sgn(g) < 0) along = -along;
+            right = right && R.within_above(along, E);
+        }
+        return right;
+    }
+    claim(false, wc + ".kind is verdict, growth_distance, separating_plane, witness_point, distance or penetration_depth");
+    return false;
+}
+}  // namespace judge
+
+void check_judgements(const J& c) {
+    shape(c, "", {"format", "kind", "tolerance", "judgements", "not_certified", "seed_interior", "scene"});
+    const Scene sc = read_scene(at(c, "scene"));
+    check_seed_interior(sc, at(c, "seed_interior"));
+    judge::Rules R{num(at(c, "tolerance"), "tolerance")};
+    claim(sgn(R.tol) >= 0, "tolerance is >= 0");
+    const J& js = at(c, "judgements");
+    claim(js.is_array() && !js.empty(), "judgements is a nonempty list");
+    std::set<size_t> indices;
+    for (size_t k = 0; k < js.size(); ++k) {
+        const std::string w = "judgements[" + std::to_string(k) + "]";
+        shape(js[k], w, {"index", "claim", "right", "proof"});
+        claim(natural(at(js[k], "index")) && indices.insert(at(js[k], "index").get<size_t>()).second, w + ".index is a distinct natural number");
+        claim(at(js[k], "right").is_boolean(), w + ".right is true or false");
+        const bool right = judge::judge(sc, R, at(js[k], "claim"), at(js[k], "proof"), w);
+        claim(right == at(js[k], "right").get<bool>(), w + ".right is the judgement the rules give (" + (right ? "right" : "wrong") + ")");
+    }
+    const J& nc = at(c, "not_certified");
+    claim(nc.is_array(), "not_certified is a list");
+    for (size_t k = 0; k < nc.size(); ++k) {
+        const std::string w = "not_certified[" + std::to_string(k) + "]";
+        shape(nc[k], w, {"index", "kind"});
+        claim(natural(at(nc[k], "index")) && indices.insert(at(nc[k], "index").get<size_t>()).second, w + ".index is a distinct natural number");
+        claim(at(nc[k], "kind").is_string() &&
+                  (at(nc[k], "kind") == J("curve") || at(nc[k], "kind") == J("switch_point")),
+              w + ".kind is curve or switch_point (the kinds not certified)");
+    }
+}
+
 // Checks a whole file's text. Returns the exit status; `message` is the line to print.
 int check_text(const std::string& text, std::string& message) {
     g_claims = 0;
@@ -1157,7 +1429,8 @@ int check_text(const std::string& text, std::string& message) {
             const std::string kind = c["kind"].get<std::string>();
             if (kind == "partition") check_partition(c);
             else if (kind == "query") check_query(c);
-            else claim(false, "kind is partition or query (got '" + StrictTree::printable(kind) + "': not a certificate)");
+            else if (kind == "judgements") check_judgements(c);
+            else claim(false, "kind is partition, query or judgements (got '" + StrictTree::printable(kind) + "': not a certificate)");
         } catch (const Invalid& e) {
             message = "invalid: " + e.what;
             return 1;
@@ -1198,8 +1471,9 @@ int main(int argc, char** argv) {
     mp_set_memory_functions(gmp_alloc, gmp_realloc, gmp_free);
     if (argc == 2 && (std::strcmp(argv[1], "--help") == 0 || std::strcmp(argv[1], "-h") == 0)) {
         std::cout << "usage: scalecert-check CERTIFICATE.json\n\n"
-                     "Checks a scalecert certificate (a partition or a query answer; certificates/FORMAT.md),\n"
-                     "re-deriving every claim from the scene stored in it. Prints one line.\n"
+                     "Checks a scalecert certificate (a partition, a query answer or certify-fp's judgements;\n"
+                     "certificates/FORMAT.md), re-deriving every claim from the scene stored in it.\n"
+                     "Prints one line.\n"
                      "Exit status: 0 valid, 1 invalid (the first claim that fails), 2 unreadable or refused\n"
                      "(not a regular file, too large, malformed JSON, past the work limit).\n"
                      "A file named --help or --version: give it as ./--help.\n";

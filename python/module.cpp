@@ -307,16 +307,21 @@ PYBIND11_MODULE(scalecert, m) {
              "the certified partition of I1 x I2 (the certificate), as a dict")
         .def("partition_json", [](const PyScene& s) { return s.a().partition_json(); },
              "the certificate as text, byte-identical to scalecert partition")
-        .def("certify_fp", [](const PyScene& s, const py::handle& claims, bool exact_decimals, const py::handle& tolerance) {
+        .def("certify_fp", [](const PyScene& s, const py::handle& claims, bool exact_decimals, const py::handle& tolerance,
+                              bool certificate) -> py::object {
                  scalecert::ClaimOptions opt;
                  opt.exact_decimals = exact_decimals;
                  opt.tolerance = rational(tolerance, "tolerance");
-                 return json_loads(s.a().certify_fp(claims_text(claims), opt).report);
-             }, py::arg("claims"), py::arg("exact_decimals") = false, py::arg("tolerance") = 0,
+                 opt.certificate = certificate;
+                 scalecert::ClaimReport r = s.a().certify_fp(claims_text(claims), opt);
+                 if (!certificate) return json_loads(r.report);
+                 return py::make_tuple(json_loads(r.report), r.certificate);
+             }, py::arg("claims"), py::arg("exact_decimals") = false, py::arg("tolerance") = 0, py::arg("certificate") = false,
              "marks claims right or wrong: the text of a claims file (JSON scalecert-claims-1, or 'RHO1 RHO2 VERDICT' / "
              "'curve RHO1 RHO2' / 'growth RHO' lines), a scalecert-claims-1 dict, or a list of claim dicts. A float means "
              "the double it is (exact_decimals reads JSON text's decimals as written); a str or a Fraction is exact. "
-             "Returns the report of scalecert certify-fp --json, as a dict")
+             "Returns the report of scalecert certify-fp --json, as a dict; with certificate=True, (the report, the "
+             "judgements certificate's text for scalecert-check)")
         .def("golden", [](const PyScene& s) {
                  scalecert::GoldenData g = s.a().golden();
                  return py::make_tuple(json_loads(g.json), g.csv);

@@ -64,7 +64,29 @@ const std::vector<StillTrue> kStillTrue = {
      "another normal that gives the very same line (the checker recomputes its line and maximisers), or one listed twice", false},
     {std::regex("element duplicated at /scene/P[12]/vertices/[0-9]+$"), "a repeated vertex is the same polyhedron (a copy of the last vertex shifts no index)", false},
     {std::regex(".* at /scene/I[12]/.*"), "the scaling ranges I1, I2 take no part in a single query's claim", true},
+    {std::regex(".* at /judgements/[0-9]+/index$"), "a judgement's place in the user's claims file: an annotation", false},
+    {std::regex(".* at /not_certified(/.*)?$"), "the list of claims left uncertified: an annotation", false},
+    {std::regex("element deleted at /judgements/[0-9]+$"), "a judgement left out: the others still hold", false},
 };
+// A changed judgements file that the checker still accepts must state the judgements the engine
+// gives: scalecert certify-fp is re-run here on the changed file's scene, claims and tolerance,
+// and compared claim by claim (a judgement's truth does not depend on its proof).
+bool g_judgements = false;
+bool engine_judges_the_same(const std::string& text) {
+    const OJ j = OJ::parse(text);
+    const fs::path scene = tmpdir() / "rejudge_scene.json", claims = tmpdir() / "rejudge_claims.json", rep = tmpdir() / "rejudge.json";
+    { std::ofstream(scene) << j["scene"].dump(1); }
+    OJ doc{{"format", "scalecert-claims-1"}, {"claims", OJ::array()}};
+    for (const OJ& e : j["judgements"]) doc["claims"].push_back(e["claim"]);
+    { std::ofstream(claims) << doc.dump(1); }
+    const int st = status_of(std::string(SCALECERT_BIN) + " certify-fp " + scene.string() + " " + claims.string() + " --json --tolerance " +
+                             j["tolerance"].get<std::string>() + " --out " + rep.string());
+    if (st != 0 && st != 1) return false;
+    const OJ r = load(rep);
+    for (size_t k = 0; k < j["judgements"].size(); ++k)
+        if (r["claims"][k]["right"] != j["judgements"][k]["right"]) return false;
+    return true;
+}
 
 struct Tally {
     int tried = 0, rejected = 0;
@@ -82,9 +104,9 @@ void collect_named(const OJ& node, bool in_scene) {
     if (node.is_object()) {
         for (auto it = node.begin(); it != node.end(); ++it) {
             const bool scene = in_scene || it.key() == "scene";
-            if (!scene && (it.key() == "P1" || it.key() == "P2") && it.value().is_array()) {
+            if (!scene && (it.key() == "P1" || it.key() == "P2") && (it.value().is_array() || it.value().contains("in"))) {
                 const int poly = it.key() == "P1" ? 1 : 2;
-                for (const OJ& e : it.value()) {
+                for (const OJ& e : it.value().is_array() ? it.value() : it.value()["in"]) {
                     if (e.is_array() && !e.empty() && e[0].is_number_integer()) g_named.insert({poly, e[0].get<long>()});
                 }
             }
@@ -108,6 +130,19 @@ void try_text(const std::string& text, const std::string& path, const std::strin
     int st = scalecert_check::check_text(text, msg);
     if (st == expected) { ++t.rejected; return; }
     const std::string key = what + " at " + path;
+    if (g_judgements) {  // whatever changed: true iff the engine judges the file's claims the same way
+        if (engine_judges_the_same(text)) {
+            static const std::regex claim_or_tolerance(".* at (/judgements/[0-9]+/claim(/.*)?|/tolerance)$");
+            ++t.still_true[std::regex_match(key, claim_or_tolerance)
+                               ? "a changed claim or tolerance that the engine, re-run, judges the same way"
+                               : "a changed proof, scene or annotation, and the engine, re-run on the file's scene, claims and tolerance, "
+                                 "gives every judgement the file states (another normal along the same direction, another "
+                                 "surface of difference points, I1 or I2, which no judgement uses, ...)"];
+            return;
+        }
+        BOOST_ERROR("tampered judgements certificate accepted, and the engine judges its claims otherwise: " << key << " (" << msg << ")");
+        return;
+    }
     for (const StillTrue& s : kStillTrue)
         if ((!s.query_only || g_query) && std::regex_match(key, s.re)) { ++t.still_true[s.why]; return; }
     if (moves_an_unnamed_vertex(key)) {
@@ -136,8 +171,8 @@ void mutate_all(const OJ& root, const OJ& node, const OJ::json_pointer& ptr, Tal
         } else if (s == "separated" || s == "touching" || s == "overlapping") {
             for (const char* v : {"separated", "touching", "overlapping"})
                 if (s != v) with(v, std::string("verdict flipped to ") + v);
-        } else if (s == "partition" || s == "query") {
-            for (const char* v : {"partition", "query", "curve"})
+        } else if (s == "partition" || s == "query" || s == "judgements") {
+            for (const char* v : {"partition", "query", "curve", "judgements"})
                 if (s != v) with(v, std::string("kind changed to ") + v);
         } else {
             with(s + "X", "string changed");
@@ -199,9 +234,10 @@ void report(const std::string& name, const Tally& t) {
     BOOST_TEST(t.rejected + kept == t.tried);
 }
 // Every mutation of a certificate (a query answer's when `query`), tallied and reported.
-void mutate_and_report(const OJ& j, const std::string& name, bool query) {
+void mutate_and_report(const OJ& j, const std::string& name, bool query, bool judgements = false) {
     Tally t;
     g_query = query;
+    g_judgements = judgements;
     g_named.clear();
     collect_named(j, false);
     mutate_all(j, j, OJ::json_pointer(), t);
@@ -238,9 +274,110 @@ BOOST_AUTO_TEST_CASE(tampered_query_answers_are_rejected) {
     }
 }
 
+// certify-fp --certificate: claims of every certified kind, right and wrong, derived by hand.
+// Stacked cubes ([0,2]^3 below [0,2]^2 x [3,5], seeds the centres): P1(r1) reaches z = 1 + r1,
+// P2(r2) starts at z = 4 − r2; they touch on r1 + r2 = 3, growth distance 3/2; at (1, 1/2) the
+// gap is 3.5 − 2 = 3/2; at (2, 2) they overlap by 1 in z (depth 1 along z). The tetrahedron and
+// box (tetra_box_switch): (1, 1) separated, (3/2, 12/7) touching, (2, 2) overlapping
+// (test_hand_curves).
+const char* kCubeClaims = R"({"format": "scalecert-claims-1", "claims": [
+  {"kind": "verdict", "rho1": 1, "rho2": "1.5", "verdict": "separated"},
+  {"kind": "verdict", "rho1": 2, "rho2": 2, "verdict": "separated"},
+  {"kind": "verdict", "rho1": "3/2", "rho2": "3/2", "verdict": "touching"},
+  {"kind": "verdict", "rho1": 2, "rho2": 2, "verdict": "intersecting"},
+  {"kind": "curve", "vertices": [[1, 2], [2, 1]]},
+  {"kind": "growth_distance", "value": 1.5},
+  {"kind": "growth_distance", "value": 1.25},
+  {"kind": "separating_plane", "rho1": 1, "rho2": 1, "normal": [0.1, 0, 1], "offset": 2.6},
+  {"kind": "separating_plane", "rho1": 2, "rho2": 1, "normal": [0, 0, 1]},
+  {"kind": "witness_point", "rho1": 1.5, "rho2": 1.5, "point": [1, 1, 2.5]},
+  {"kind": "witness_point", "rho1": 1, "rho2": 1.5, "point": [1, 1, 2.5]},
+  {"kind": "witness_point", "rho1": 3, "rho2": 3, "point": [0, 0, 2]},
+  {"kind": "distance", "rho1": 1, "rho2": 0.5, "value": 1.5, "closest": [[1, 1, 2], [1, 1, 3.5]]},
+  {"kind": "distance", "rho1": 1, "rho2": 0.5, "value": 1.5, "closest": [[1, 1, 2], [1, 1.5, 3.5]]},
+  {"kind": "distance", "rho1": 1, "rho2": 0.5, "value": 1.25},
+  {"kind": "distance", "rho1": 2, "rho2": 2, "value": 0},
+  {"kind": "penetration_depth", "rho1": 2, "rho2": 2, "value": 1, "direction": [0, 0, 1]},
+  {"kind": "penetration_depth", "rho1": 2, "rho2": 2, "value": 1, "direction": [0, 1, 1]},
+  {"kind": "penetration_depth", "rho1": 2, "rho2": 2, "value": 0.5},
+  {"kind": "penetration_depth", "rho1": 1.5, "rho2": 1.5, "value": 0},
+  {"kind": "penetration_depth", "rho1": 1, "rho2": 1, "value": 0}]})";
+// right or wrong, claim by claim, by hand: the closest points (1, 1.5, 3.5) are not both at the
+// distance (|(0, 1/2, 3/2)|² = 5/2 > 9/4); the depth along (0, 1, 1) is h_M/√2 = (6 − 1)/√2 > 1,
+// as P1(2) = [−1, 3]^3 reaches y + z = 6 and P2(2) = [−1, 3]^2 x [2, 6] starts at y + z = 1;
+// (0, 0, 2) is in P1(3) = [−2, 4]^3 and P2(3) = [−2, 4]^2 x [1, 7].
+const std::vector<bool> kCubeRight = {true, false, true, true, /* curve: not certified */ true, false, true, false,
+                                      true, false, true, true, false, false, true, true, false, false, true, false};
+
+BOOST_AUTO_TEST_CASE(judgements_certificates_are_valid_and_tampering_is_rejected) {
+    const fs::path claims = tmpdir() / "cube_claims.json", cert = tmpdir() / "judgements.json", rep = tmpdir() / "report.json";
+    { std::ofstream(claims) << kCubeClaims; }
+    const std::string cubes = std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/stacked_cubes.json";
+    BOOST_TEST_REQUIRE(engine("certify-fp " + cubes + " " + claims.string() + " --json --out " + rep.string() + " --certificate " +
+                              cert.string()) == 1);
+    BOOST_TEST_REQUIRE(check_file(cert) == 0);
+    const OJ j = load(cert), r = load(rep);
+    BOOST_TEST(j["kind"] == "judgements");
+    BOOST_TEST(j["judgements"].size() == 20u);
+    BOOST_TEST(j["not_certified"] == OJ::parse(R"([{"index": 4, "kind": "curve"}])"));
+    std::vector<bool> rights;
+    for (const OJ& e : j["judgements"]) {
+        rights.push_back(e["right"].get<bool>());
+        BOOST_TEST(r["claims"][e["index"].get<size_t>()]["right"] == e["right"]);  // the report says the same
+    }
+    BOOST_TEST(rights == kCubeRight);
+    // The depth at (2, 2) is 1: its proof's direction is +z and its surface closes around the origin.
+    BOOST_TEST(j["judgements"][15]["proof"]["squared"] == "1");
+    BOOST_TEST(j["judgements"][15]["proof"]["direction"] == OJ::parse(R"(["0", "0", "1"])"));
+    mutate_and_report(j, "judgements (stacked cubes)", false, true);
+
+    // The tetrahedron and the box: verdicts of all three kinds, and a depth and a distance whose
+    // proofs come from facets that are not axis-aligned.
+    const fs::path tclaims = tmpdir() / "tetra_claims.json", tcert = tmpdir() / "tetra_judgements.json";
+    { std::ofstream(tclaims) << R"({"format": "scalecert-claims-1", "claims": [
+      {"kind": "verdict", "rho1": 1, "rho2": 1, "verdict": "separated"},
+      {"kind": "verdict", "rho1": "3/2", "rho2": "12/7", "verdict": "touching"},
+      {"kind": "verdict", "rho1": 2, "rho2": 2, "verdict": "overlapping"},
+      {"kind": "distance", "rho1": 1, "rho2": 1, "value": 0.1},
+      {"kind": "penetration_depth", "rho1": 2.5, "rho2": 2.5, "value": 0.1},
+      {"kind": "growth_distance", "value": 1.6}]})"; }
+    const std::string tetra = std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/tetra_box_switch.json";
+    BOOST_TEST_REQUIRE(engine("certify-fp " + tetra + " " + tclaims.string() + " --certificate " + tcert.string()) == 1);
+    BOOST_TEST_REQUIRE(check_file(tcert) == 0);
+    const OJ t = load(tcert);
+    BOOST_TEST(t["judgements"][0]["right"] == true);
+    BOOST_TEST(t["judgements"][1]["right"] == true);
+    BOOST_TEST(t["judgements"][2]["right"] == true);
+    mutate_and_report(t, "judgements (tetrahedron and box)", false, true);
+}
+
+// Claims of every certified kind at five pairs (separated, touching and overlapping ones among
+// them), with the judgements certificate written and checked; x is a point for witness claims.
+int certify_with_certificate(const fs::path& scene, const scalecert::internal::Vec3q& x) {
+    OJ claims = OJ::array();
+    const std::string xs[3] = {x[0].get_str(), x[1].get_str(), x[2].get_str()};
+    for (const char* q : {"1/2 1/2", "1 1", "2 2", "3 5/2", "7/5 9/11"}) {
+        std::istringstream in(q);
+        std::string a, b;
+        in >> a >> b;
+        claims.push_back({{"kind", "verdict"}, {"rho1", a}, {"rho2", b}, {"verdict", "separated"}});
+        claims.push_back({{"kind", "distance"}, {"rho1", a}, {"rho2", b}, {"value", "1"}, {"closest", {{xs[0], xs[1], xs[2]}, {xs[0], xs[1], xs[2]}}}});
+        claims.push_back({{"kind", "penetration_depth"}, {"rho1", a}, {"rho2", b}, {"value", "1/10"}, {"direction", {"0", "0", "1"}}});
+        claims.push_back({{"kind", "witness_point"}, {"rho1", a}, {"rho2", b}, {"point", {xs[0], xs[1], xs[2]}}});
+        claims.push_back({{"kind", "separating_plane"}, {"rho1", a}, {"rho2", b}, {"normal", {"1", "1", "0"}}});
+    }
+    claims.push_back({{"kind", "growth_distance"}, {"value", "1"}});
+    const fs::path cl = tmpdir() / "claims.json", cp = tmpdir() / "judgements.json";
+    save(OJ{{"format", "scalecert-claims-1"}, {"claims", claims}}, cl);
+    const int st = engine("certify-fp " + scene.string() + " " + cl.string() + " --certificate " + cp.string());
+    BOOST_TEST((st == 0 || st == 1), scene);
+    BOOST_TEST(check_file(cp) == 0, scene);
+    return 1;
+}
+
 BOOST_AUTO_TEST_CASE(fresh_certificates_for_random_scenes_are_valid) {
     std::mt19937 g(31);
-    int partitions = 0, queries = 0;
+    int partitions = 0, queries = 0, judgements = 0;
     for (int t = 0; t < 12; ++t) {
         scalecert::internal::ExactScene sc = test::random_scene(g, 4 + t % 6, 5 + t % 4);
         OJ s;
@@ -261,6 +398,7 @@ BOOST_AUTO_TEST_CASE(fresh_certificates_for_random_scenes_are_valid) {
             BOOST_TEST(check_file(cp) == 0, q);
             ++queries;
         }
+        judgements += certify_with_certificate(sp, sc.P[0].points[0]);
     }
     // Boxes with the midpoints of their edges and faces as extra points, at lattice offsets:
     // contact faces then hold points that are not vertices, and several normals share a line
@@ -283,8 +421,10 @@ BOOST_AUTO_TEST_CASE(fresh_certificates_for_random_scenes_are_valid) {
         BOOST_TEST_REQUIRE(engine("partition " + sp.string() + " --out " + cp.string()) == 0);
         BOOST_TEST(check_file(cp) == 0, "boxes with midpoints #" << t);
         ++partitions;
+        judgements += certify_with_certificate(sp, {1, 0, 2});  // on an edge of P1: boundary weights
     }
-    std::cout << "fresh certificates checked: " << partitions << " partitions, " << queries << " query answers\n";
+    std::cout << "fresh certificates checked: " << partitions << " partitions, " << queries << " query answers, " << judgements
+              << " judgements files\n";
 }
 
 BOOST_AUTO_TEST_CASE(help_and_version_exit_0) {

@@ -91,8 +91,12 @@ struct ClaimOptions {
     bool exact_decimals = false;
     Rational tolerance = 0;       // relative error accepted on numeric JSON claims (>= 0)
     bool json = true;             // the report as JSON (scalecert certify-fp --json), else as text
+    bool certificate = false;     // also the judgements certificate (certify-fp --certificate)
 };
-struct ClaimReport { std::string report; long claims, wrong; };
+// The report; the number of claims and of wrong ones; with options.certificate, the judgements
+// certificate (FORMAT.md, kind "judgements"; scalecert-check verifies it) of every claim whose kind
+// is certified (all but curve and switch_point).
+struct ClaimReport { std::string report; long claims, wrong; std::string certificate; };
 // Golden data: the curve document with, near the curve, exact verdicts of pairs and of their
 // nearest doubles (JSON), and those doubles with their verdicts (CSV).
 struct GoldenData { std::string json, csv; };

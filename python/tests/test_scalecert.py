@@ -227,6 +227,12 @@ def test_golden_and_claims(tmp_path):
         stacked().certify_fp([{"kind": "verdict", "rho1": object(), "rho2": 1, "verdict": "separated"}])
     with pytest.raises(scalecert.InputError, match="expected a str"):
         stacked().certify_fp(3)
+    # With the judgements certificate, which the independent checker verifies.
+    r, cert = stacked().certify_fp(c, certificate=True)
+    assert r["wrong"] == 0 and json.loads(cert)["kind"] == "judgements"
+    (tmp_path / "j.json").write_text(cert)
+    out = subprocess.run([CHECK, str(tmp_path / "j.json")], capture_output=True, text=True)
+    assert out.returncode == 0 and out.stdout.startswith("valid:")
     # A scene's golden data: 7 values of rho1 across [1/2, 5/2] (no switch point), 13 pairs each,
     # the first on the line at rho1 = 3/4, rho2 = 3 - 3/4 = 9/4; the same rows in the JSON.
     g, csv = stacked().golden()

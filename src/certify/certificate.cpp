@@ -238,13 +238,11 @@ Json scene_json(const ExactScene& sc) {
 
 Json curve_json(const Model& m, const TouchingCurve& c) { return curve_body(m, c, false); }
 
-Json query_json(const Model& m, const QueryAnswer& r, const SeedWeights& seeds) {
-    Json j;
-    j["format"] = kFormat;
-    j["kind"] = "query";
-    j["verdict"] = verdict_name(r.verdict);
-    put(j, "rho1", r.rho1);
-    put(j, "rho2", r.rho2);
+Json weights_json(const std::vector<std::pair<int, Q>>& w) { return weights(w); }
+Json witness_object(const Witness& w) { return witness_json(w); }
+Json normal_json(const Vec3z& n) { return ints(n); }
+
+Json query_certificate_json(const Model& m, const QueryAnswer& r) {
     Json cert;
     if (r.plane) {
         const PlaneCert& p = *r.plane;
@@ -259,7 +257,19 @@ Json query_json(const Model& m, const QueryAnswer& r, const SeedWeights& seeds) 
         cert["plane"] = pl;
     }
     if (r.witness) cert["witness"] = witness_json(*r.witness);
-    j["certificate"] = cert;
+    return cert;
+}
+
+Json seed_interior(const SeedWeights& seeds) { return seed_interior_json(seeds); }
+
+Json query_json(const Model& m, const QueryAnswer& r, const SeedWeights& seeds) {
+    Json j;
+    j["format"] = kFormat;
+    j["kind"] = "query";
+    j["verdict"] = verdict_name(r.verdict);
+    put(j, "rho1", r.rho1);
+    put(j, "rho2", r.rho2);
+    j["certificate"] = query_certificate_json(m, r);
     j["seed_interior"] = seed_interior_json(seeds);
     j["scene"] = scene_json_for(m);
     return j;

@@ -17,6 +17,14 @@ Json scene_json(const ExactScene& s);
 void put_exact(Json& o, const std::string& key, const Q& q);
 
 Json curve_json(const Model& m, const TouchingCurve& c);
+// Pieces of the documents, for the judgements certificate (judgements.cpp): a query answer's
+// "certificate" object (its plane and witness), weights [[index, "w"], ...], and the seeds'
+// "seed_interior" object.
+Json query_certificate_json(const Model& m, const QueryAnswer& r);
+Json weights_json(const std::vector<std::pair<int, Q>>& w);
+Json witness_object(const Witness& w);  // {rho1, rho2, point (with _double), P1, P2 weights}
+Json normal_json(const Vec3z& n);       // three integer strings
+Json seed_interior(const SeedWeights& seeds);
 Json query_json(const Model& m, const QueryAnswer& r, const SeedWeights& seeds);
 Json partition_json(const Model& m, const TouchingCurve& c, const Partition& p);
 

@@ -3,6 +3,7 @@
 // (the display doubles of |claimed − exact| use MPFR's correctly rounded square root).
 #include "certify/claims.hpp"
 #include "certify/certificate.hpp"
+#include "certify/judgements.hpp"
 #include "geometry/measures.hpp"
 #include "io/strict_json.hpp"
 
@@ -26,14 +27,21 @@ std::string dbl(double d, int digits = 6) {
 // "p/q (~d)": the exact value and its nearest double, to `digits` significant digits (the JSON
 // claims' report uses 6, the line format's 17).
 std::string num(const Q& q, int digits = 6) { return to_exact_string(q) + " (~" + dbl(to_double_rn(q), digits) + ")"; }
+std::string ex(const Q& q) { return to_exact_string(q); }
+Json ex3(const Vec3q& v) { return Json::array({ex(v[0]), ex(v[1]), ex(v[2])}); }
 
 class Certifier {
 public:
-    Certifier(const ClaimModels& models, const std::string& name, const ClaimOptions& opt)
-        : models_(models), name_(name), opt_(opt) {}
+    Certifier(const ClaimModels& models, const std::string& name, const ClaimOptions& opt, bool prove)
+        : models_(models), name_(name), opt_(opt), prove_(prove) {}
+
+    // With `prove`: the last claim run as exact values, and the proof of its judgement
+    // (judgements.hpp); none for the kinds not certified (curve, switch_point).
+    std::optional<std::pair<Json, Json>> proof;
 
     // One claim: its report object and a one-line text; right or wrong.
     bool run(const JNode& claim, size_t index, Json& o, std::string& text) {
+        proof.reset();
         where_ = name_ + ": claims[" + std::to_string(index) + "]";
         if (claim.kind != JNode::Object) fail("", "expected an object with \"kind\"");
         const std::string kind = str(claim, "kind");
@@ -57,6 +65,7 @@ private:
     const HullModel& m() const { return models_.model(); }  // the hull model: built on first use
     const TouchingCurve& c() const { return models_.curve(); }
     ClaimOptions opt_;
+    bool prove_;
     std::optional<std::vector<Vec3z>> normals_;  // every facet normal, for depths (built on first use)
     struct ExactSwitch { Q rho1, rho2; std::string label; };
     std::optional<std::vector<ExactSwitch>> switches_;  // the exact switch points (built on first use)
@@ -138,6 +147,14 @@ private:
         o["rel_error_double"] = sgn(E) ? Json(std::fabs(d) / std::sqrt(to_double_rn(E))) : Json(nullptr);
     }
 
+    // Proofs that x is (or is not) in P1(ρ1) and y in P2(ρ2), agreeing with the judgements in1, in2.
+    Json membership(const Q& r1, const Q& r2, const Vec3q& x, const Vec3q& y, bool in1, bool in2) const {
+        bool a = false, b = false;
+        Json j{{"P1", membership_proof(m(), 0, r1, x, &a)}, {"P2", membership_proof(m(), 1, r2, y, &b)}};
+        if (a != in1 || b != in2) throw std::logic_error("certify-fp: a membership proof disagrees with its judgement");
+        return j;
+    }
+
     bool verdict(const JNode& j, Json& o, std::string& text) {
         only(j, {"kind", "rho1", "rho2", "verdict"});
         const auto [r1, r2] = pair_at(j);
@@ -152,6 +169,12 @@ private:
         o["exact"] = verdict_name(e);
         put_exact(o, "rho2_minus_curve", r2 - models_.curve_value(r1));
         text = "verdict at (" + num(r1) + ", " + num(r2) + "): claimed " + v + ", exact " + verdict_name(e);
+        if (prove_) {
+            Verdict pv;
+            Json pr = verdict_proof(m(), c(), r1, r2, &pv);
+            if (pv != e) throw std::logic_error("certify-fp: the walk's verdict and the hull's differ");
+            proof.emplace(Json{{"kind", "verdict"}, {"rho1", ex(r1)}, {"rho2", ex(r2)}, {"verdict", v}}, std::move(pr));
+        }
         return right;
     }
 
@@ -162,6 +185,10 @@ private:
         const Q exact = models_.growth();
         errors(o, g, exact);
         text = "growth distance " + num(g) + ": exact " + num(exact);
+        if (prove_) {
+            if (c().growth.value != exact) throw std::logic_error("certify-fp: the walk's growth distance and the hull's differ");
+            proof.emplace(Json{{"kind", "growth_distance"}, {"value", ex(g)}}, growth_proof(m(), c()));
+        }
         return close(g, exact);
     }
 
@@ -402,6 +429,11 @@ private:
             right = right && c1 < d && d < c2;
             text += ", offset " + num(d);
         }
+        if (prove_) {
+            Json cl{{"kind", "separating_plane"}, {"rho1", ex(r1)}, {"rho2", ex(r2)}, {"normal", ex3(n)}};
+            if (off) cl["offset"] = ex(number(*off, "offset"));
+            proof.emplace(std::move(cl), Json::object());
+        }
         return right;
     }
 
@@ -414,6 +446,7 @@ private:
         o["in_P2"] = in2;
         o["exact_verdict"] = verdict_name(models_.verdict(r1, r2));
         text = "witness point at (" + num(r1) + ", " + num(r2) + "): in P1 " + (in1 ? "yes" : "NO") + ", in P2 " + (in2 ? "yes" : "NO");
+        if (prove_) proof.emplace(Json{{"kind", "witness_point"}, {"rho1", ex(r1)}, {"rho2", ex(r2)}, {"point", ex3(x)}}, membership(r1, r2, x, x, in1, in2));
         return in1 && in2;
     }
 
@@ -430,6 +463,11 @@ private:
         bool right = close_sq(d, e.squared);
         o["value_right"] = right;
         text = "distance at (" + num(r1) + ", " + num(r2) + "): claimed " + num(d) + ", exact squared " + num(e.squared);
+        Json pc, pp;
+        if (prove_) {
+            pc = Json{{"kind", "distance"}, {"rho1", ex(r1)}, {"rho2", ex(r2)}, {"value", ex(d)}};
+            pp = distance_proof(m(), e, r1, r2);
+        }
         if (const JNode* cl = j.find("closest")) {
             if (cl->kind != JNode::Array || cl->items.size() != 2) fail("closest", "expected [point on P1, point on P2]");
             const Vec3q p = point(cl->items[0], "closest"), q = point(cl->items[1], "closest");
@@ -442,7 +480,12 @@ private:
             const bool ok = in1 && in2 && within_above(sq, e.squared);
             o["closest_right"] = ok;
             right = right && ok;
+            if (prove_) {
+                pc["closest"] = Json::array({ex3(p), ex3(q)});
+                pp["closest"] = membership(r1, r2, p, q, in1, in2);
+            }
         }
+        if (prove_) proof.emplace(std::move(pc), std::move(pp));
         return right;
     }
 
@@ -454,10 +497,19 @@ private:
         const ExactDepth e = exact_penetration_depth(m(), *normals_, r1, r2);
         put_exact(o, "rho1", r1);
         put_exact(o, "rho2", r2);
+        Json pc, pp;
+        if (prove_) {
+            pc = Json{{"kind", "penetration_depth"}, {"rho1", ex(r1)}, {"rho2", ex(r2)}, {"value", ex(d)}};
+            Q E;
+            pp = depth_proof(m(), c(), r1, r2, &E);
+            if (E != e.squared) throw std::logic_error("certify-fp: the depth's proof and its enumeration differ");
+        }
         if (sgn(e.squared) < 0) {
             o["exact_verdict"] = "separated";
             put_exact(o, "claimed", d);
             text = "penetration depth at (" + num(r1) + ", " + num(r2) + "): claimed " + num(d) + ", but the pair is separated";
+            if (const JNode* dir = j.find("direction"); dir && prove_) pc["direction"] = ex3(point(*dir, "direction"));
+            if (prove_) proof.emplace(std::move(pc), std::move(pp));
             return false;
         }
         errors_sq(o, d, e.squared);
@@ -474,7 +526,9 @@ private:
             const bool ok = within_above(along, e.squared);
             o["direction_right"] = ok;
             right = right && ok;
+            if (prove_) pc["direction"] = ex3(n);
         }
+        if (prove_) proof.emplace(std::move(pc), std::move(pp));
         return right;
     }
 };
@@ -509,8 +563,21 @@ Q read_number(const std::string& t, bool exact_decimals, const std::string& wher
 }
 }  // namespace
 
+// The judgements certificate of claims, from their entries (and the indices of those not certified).
+static std::string certificate_text(const ClaimModels& models, const Q& tolerance, Json entries, Json skipped) {
+    if (entries.empty())
+        throw InputError("certificate: none of the claims is of a kind whose judgement is certified (curve and switch_point "
+                         "claims, and curve lines, are not yet)");
+    return judgements_text(models.model(), tolerance, std::move(entries), std::move(skipped));
+}
+static Json entry(size_t index, Json claim, bool right, Json proof) {
+    return Json{{"index", index}, {"claim", std::move(claim)}, {"right", right}, {"proof", std::move(proof)}};
+}
+
 std::string certify_claim_lines(const ClaimModels& models, const std::string& claims, const std::string& name,
-                                bool exact_decimals, bool json, long* wrong, long* count) {
+                                bool exact_decimals, bool json, long* wrong, long* count, std::string* certificate) {
+    Json entries = Json::array(), skipped = Json::array();
+    std::optional<std::pair<Json, Json>> proof;
     std::istringstream in(claims);
     std::string line, text;
     Json arr = Json::array();
@@ -527,6 +594,7 @@ std::string certify_claim_lines(const ClaimModels& models, const std::string& cl
         o["line"] = no;
         bool right = false;
         std::string detail;
+        proof.reset();
         if (w[0] == "curve" && w.size() == 3) {
             Q r1 = read_number(w[1], exact_decimals, where), r2 = read_number(w[2], exact_decimals, where);
             if (sgn(r1) <= 0 || sgn(r2) <= 0) throw InputError(where + ": scalings must be > 0");
@@ -547,6 +615,7 @@ std::string certify_claim_lines(const ClaimModels& models, const std::string& cl
             put_exact(o, "claimed", g);
             put_exact(o, "exact", exact_g);
             detail = "growth distance " + w[1] + ": exact " + num(exact_g, 17) + ", off by " + num(g - exact_g, 17);
+            if (certificate) proof.emplace(Json{{"kind", "growth_distance"}, {"value", ex(g)}}, growth_proof(models.model(), models.curve()));
         } else if (w.size() == 3) {
             Q r1 = read_number(w[0], exact_decimals, where), r2 = read_number(w[1], exact_decimals, where);
             if (sgn(r1) <= 0 || sgn(r2) <= 0) throw InputError(where + ": scalings must be > 0");
@@ -563,9 +632,17 @@ std::string certify_claim_lines(const ClaimModels& models, const std::string& cl
             o["exact"] = en;
             put_exact(o, "rho2_minus_curve", r2 - f);
             detail = "(" + w[0] + ", " + w[1] + ") claimed " + v + ": exact " + en + ", rho2 - curve = " + num(r2 - f, 17);
+            if (certificate) {
+                Verdict pv;
+                Json pr = verdict_proof(models.model(), models.curve(), r1, r2, &pv);
+                if (pv != e) throw std::logic_error("certify-fp: the walk's verdict and the hull's differ");
+                proof.emplace(Json{{"kind", "verdict"}, {"rho1", ex(r1)}, {"rho2", ex(r2)}, {"verdict", v}}, std::move(pr));
+            }
         } else {
             throw InputError(where + ": expected 'RHO1 RHO2 VERDICT', 'curve RHO1 RHO2' or 'growth RHO'");
         }
+        if (proof) entries.push_back(entry(static_cast<size_t>(n), std::move(proof->first), right, std::move(proof->second)));
+        else skipped.push_back(Json{{"index", n}, {"kind", "curve"}});
         ++n;
         bad += !right;
         o["right"] = right;
@@ -573,6 +650,7 @@ std::string certify_claim_lines(const ClaimModels& models, const std::string& cl
         text += std::string(right ? "right  " : "WRONG  ") + detail + "\n";
     }
     if (n == 0) throw InputError(name + ": no claims (expected 'RHO1 RHO2 VERDICT', 'curve RHO1 RHO2' or 'growth RHO' lines)");
+    if (certificate) *certificate = certificate_text(models, Q(0), std::move(entries), std::move(skipped));
     return report(std::move(arr), text, n, bad, json, nullptr, wrong, count);
 }
 
@@ -583,13 +661,13 @@ ClaimModels ClaimModels::of(const HullModel& m, const TouchingCurve& c) {
 }
 
 std::string certify_fp(const ClaimModels& models, const std::string& claims, const std::string& name, const ClaimOptions& opt,
-                       long* wrong, long* count) {
+                       long* wrong, long* count, std::string* certificate) {
     const bool json = opt.json;
     if (sgn(opt.tolerance) < 0) throw InputError("tolerance: must be >= 0 (got " + to_exact_string(opt.tolerance) + ")");
     const size_t first = claims.find_first_not_of(" \t\r\n");
     if (first == std::string::npos || claims[first] != '{') {
         if (sgn(opt.tolerance) != 0) throw InputError(name + ": a tolerance applies to JSON claims (scalecert-claims-1) only");
-        return certify_claim_lines(models, claims, name, opt.exact_decimals, json, wrong, count);
+        return certify_claim_lines(models, claims, name, opt.exact_decimals, json, wrong, count, certificate);
     }
     JNode root;
     try {
@@ -604,19 +682,24 @@ std::string certify_fp(const ClaimModels& models, const std::string& claims, con
     for (const std::string& k : root.keys)
         if (k != "format" && k != "claims") throw InputError(name + ": " + k + ": unknown field");
     if (!list || list->kind != JNode::Array || list->items.empty()) throw InputError(name + ": claims: expected a non-empty list");
-    Certifier cert(models, name, opt);
-    Json arr = Json::array();
+    Certifier cert(models, name, opt, certificate != nullptr);
+    Json arr = Json::array(), entries = Json::array(), skipped = Json::array();
     std::string text;
     long bad = 0;
     for (size_t i = 0; i < list->items.size(); ++i) {
         Json o;
         std::string line;
         const bool right = cert.run(list->items[i], i, o, line);
+        if (certificate) {
+            if (cert.proof) entries.push_back(entry(i, std::move(cert.proof->first), right, std::move(cert.proof->second)));
+            else skipped.push_back(Json{{"index", i}, {"kind", o["kind"]}});
+        }
         o["right"] = right;
         bad += !right;
         arr.push_back(o);
         text += std::string(right ? "right  " : "WRONG  ") + line + "\n";
     }
+    if (certificate) *certificate = certificate_text(models, opt.tolerance, std::move(entries), std::move(skipped));
     return report(std::move(arr), text, static_cast<long>(list->items.size()), bad, json, &opt.tolerance, wrong, count);
 }
 

@@ -32,9 +32,11 @@ struct ClaimModels {
     std::function<Q()> growth;  // ρ*
     static ClaimModels of(const HullModel& m, const TouchingCurve& c);
 };
-// (*count, when given: the number of claims.)
+// (*count, when given: the number of claims. *certificate, when given: the judgements
+// certificate, kind "judgements" (judgements.hpp, FORMAT.md), of every claim whose kind is
+// certified; an InputError when none is.)
 std::string certify_fp(const ClaimModels& models, const std::string& claims, const std::string& name, const ClaimOptions& opt,
-                       long* wrong, long* count = nullptr);
+                       long* wrong, long* count = nullptr, std::string* certificate = nullptr);
 inline std::string certify_fp(const HullModel& m, const TouchingCurve& c, const std::string& claims, const std::string& name,
                               const ClaimOptions& opt, long* wrong) {
     return certify_fp(ClaimModels::of(m, c), claims, name, opt, wrong);
@@ -45,6 +47,7 @@ inline std::string certify_fp(const HullModel& m, const TouchingCurve& c, const 
 }
 // The line format alone.
 std::string certify_claim_lines(const ClaimModels& models, const std::string& claims, const std::string& name,
-                                bool exact_decimals, bool json, long* wrong, long* count = nullptr);
+                                bool exact_decimals, bool json, long* wrong, long* count = nullptr,
+                                std::string* certificate = nullptr);
 
 }  // namespace scalecert::internal

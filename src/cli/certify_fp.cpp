@@ -2,6 +2,7 @@
 // when any claim is wrong, so that it can gate another project's CI.
 #include "common.hpp"
 
+#include "file_name.hpp"
 #include "io/files.hpp"
 
 namespace scalecert::cli {
@@ -11,7 +12,7 @@ using namespace internal;
 Command add_certify_fp(CLI::App& app) {
     struct Args {
         SceneArgs scene;
-        std::string out, claims, tolerance = "0";
+        std::string out, claims, tolerance = "0", certificate;
         bool json = false, exact_decimals = false;
     };
     auto a = std::make_shared<Args>();
@@ -25,6 +26,11 @@ Command add_certify_fp(CLI::App& app) {
                   "strtod reads, as the program that wrote it held it (strings and fractions p/q are exact either way; "
                   "--binary-doubles is for the scene)");
     add_out(sub, a->out);
+    sub->add_option("--certificate", a->certificate,
+                    "also write the judgements certificate: the proof of every judgement, for scalecert-check "
+                    "(certificates/FORMAT.md; curve and switch_point claims are not certified yet)")
+        ->type_name("FILE")
+        ->check(file_name());
     example(sub, "Exit status: 0 all claims right, 1 some claim wrong, 2 bad input. Example:\n"
                  "  printf '1 1 separated\\ngrowth 1.5\\n' > claims.txt\n"
                  "  scalecert certify-fp certificates/scenes/stacked_cubes.json claims.txt\n"
@@ -43,7 +49,16 @@ Command add_certify_fp(CLI::App& app) {
                     throw InputError(std::string("--tolerance: ") + e.what());
                 }
                 if (sgn(opt.tolerance) < 0) throw InputError("--tolerance must be >= 0");
-                emit(certify_fp(session.claim_models(), claims, a->claims, opt, &wrong), a->out);
+                std::string certificate;
+                const std::string report =
+                    certify_fp(session.claim_models(), claims, a->claims, opt, &wrong, nullptr, a->certificate.empty() ? nullptr : &certificate);
+                if (a->certificate.empty()) emit(report, a->out);
+                else if (a->out.empty()) {
+                    write_file_atomically(a->certificate, certificate);
+                    emit(report, a->out);
+                } else {
+                    write_files_atomically({{a->certificate, certificate}, {a->out, report}});
+                }
                 return wrong > 0 ? 1 : 0;
             }};
 }

@@ -206,8 +206,10 @@ std::string Analysis::partition_json() const { return impl_->session.partition_t
 
 ClaimReport Analysis::certify_fp(const std::string& claims, const ClaimOptions& options) const {
     long wrong = 0, count = 0;
-    std::string report = internal::certify_fp(impl_->session.claim_models(), claims, "claims", options, &wrong, &count);
-    return {std::move(report), count, wrong};
+    std::string certificate;
+    std::string report = internal::certify_fp(impl_->session.claim_models(), claims, "claims", options, &wrong, &count,
+                                              options.certificate ? &certificate : nullptr);
+    return {std::move(report), count, wrong, std::move(certificate)};
 }
 
 GoldenData Analysis::golden() const {

@@ -1,0 +1,43 @@
+// The proof of each judgement certify-fp makes: the document of kind "judgements"
+// (certificates/FORMAT.md, "A judgements file"), which scalecert-check verifies claim by claim
+// with support scans over the scene's vertices.
+#pragma once
+#include "certify/certificate.hpp"
+#include "geometry/measures.hpp"
+
+namespace scalecert::internal {
+
+// Is x in P_i(ρ)? With its proof: {"in": weights} (y = s + (x − s)/ρ as a convex combination of
+// vertices: a face's fan triangle when y is on the boundary, else interior weights), or
+// {"out": normal} (the outward normal of a face of P_i whose plane y lies strictly beyond).
+Json membership_proof(const HullModel& m, int i, const Q& rho, const Vec3q& x, bool* inside);
+
+// The exact verdict at (ρ1, ρ2) with its query certificate: {"verdict", "certificate"}.
+Json verdict_proof(const HullModel& m, const TouchingCurve& c, const Q& rho1, const Q& rho2, Verdict* verdict);
+
+// The exact squared distance E and closest points p ∈ P1(ρ1), q ∈ P2(ρ2) as weights:
+// {"squared", "P1", "P2"}. With u = q − p: E = |u|², and for E > 0 the slab — u·x ≤ u·p over
+// P1(ρ1), u·y ≥ u·q over P2(ρ2) — proves that no pair is closer.
+Json distance_proof(const HullModel& m, const ExactDistance& e, const Q& rho1, const Q& rho2);
+
+// The exact squared penetration depth E at (ρ1, ρ2), proved:
+// - separated: {"separated": normal}, a normal whose plane separates strictly (E = −1 returned);
+// - touching: {"squared": "0", "direction": normal, "common": {"P1", "P2"}}: a supporting plane
+//   and a common point at the pair;
+// - overlapping: {"squared", "direction", "points", "triangles"}: the upper bound from the
+//   direction (translating P2 by √E along it separates), the lower bound from a closed triangulated
+//   surface whose vertices (each [i, j]: vertex i of P1(ρ1) minus vertex j of P2(ρ2)) lie in the
+//   Minkowski difference and whose every triangle's plane lies at least √E from the origin. It is
+//   the final polytope of an exact EPA (expanding polytope) run on support points.
+Json depth_proof(const HullModel& m, const TouchingCurve& c, const Q& rho1, const Q& rho2, Q* squared);
+
+// The growth distance ρ*: {"value"} when the seeds coincide (ρ* = 0); else {"value", "normal",
+// "witness"}: n·d = ρ*(h1(n) + h2(n)), so (ρ, ρ) is separated for every ρ < ρ*, and a common point
+// at (ρ*, ρ*).
+Json growth_proof(const HullModel& m, const TouchingCurve& c);
+
+// The document: {"format", "kind": "judgements", "tolerance", "judgements", "not_certified",
+// "seed_interior", "scene"}, as text.
+std::string judgements_text(const HullModel& m, const Q& tolerance, Json judgements, Json not_certified);
+
+}  // namespace scalecert::internal
