@@ -1226,24 +1226,35 @@ void check_lower_bound(const Scene& sc, const Q& r1, const Q& r2, const Q& E, co
     const J& tris = at(proof, "triangles");
     claim(pts.is_array() && pts.size() >= 4, where + ".points has at least 4 points");
     claim(tris.is_array() && tris.size() >= 4, where + ".triangles has at least 4 triangles");
+    // Each point and each triangle costs products of numbers as long as the scalings, the seeds and
+    // the named vertices together (the file pays for its scalings once, not per point): counted
+    // as the square of their limbs, a bound on one product and its gcd.
+    auto qlimbs = [](const Q& q) { return limbs(q.get_num()) + limbs(q.get_den()); };
+    auto vlimbs = [&](const V3& v) { return qlimbs(v[0]) + qlimbs(v[1]) + qlimbs(v[2]); };
+    const double base = 1 + qlimbs(r1) + qlimbs(r2) + vlimbs(sc.s[0]) + vlimbs(sc.s[1]);
     std::vector<V3> z;
+    std::vector<double> zl;
     for (size_t k = 0; k < pts.size(); ++k) {
         const std::string w = where + ".points[" + std::to_string(k) + "]";
         claim(pts[k].is_array() && pts[k].size() == 2, w + " is [vertex of P1, vertex of P2]");
         const size_t a = index(pts[k][0], sc.P[0].size(), w), b = index(pts[k][1], sc.P[1].size(), w);
-        spend(200);
+        const double l = base + vlimbs(sc.P[0][a]) + vlimbs(sc.P[1][b]);
+        spend(200 + 40 * l * l);
         V3 p;
         for (int c = 0; c < 3; ++c)
             p[c] = (sc.s[0][c] + r1 * (sc.P[0][a][c] - sc.s[0][c])) - (sc.s[1][c] + r2 * (sc.P[1][b][c] - sc.s[1][c]));
         z.push_back(p);
+        zl.push_back(vlimbs(p));
     }
+    const double el = 1 + qlimbs(E);
     std::map<std::pair<size_t, size_t>, int> edges;
     for (size_t t = 0; t < tris.size(); ++t) {
         const std::string w = where + ".triangles[" + std::to_string(t) + "]";
         claim(tris[t].is_array() && tris[t].size() == 3, w + " is 3 point indices");
         size_t v[3];
         for (int k = 0; k < 3; ++k) v[k] = index(tris[t][k], z.size(), w);
-        spend(300);
+        const double l = el + zl[v[0]] + zl[v[1]] + zl[v[2]];
+        spend(300 + 80 * l * l);
         const V3 N = cross(sub(z[v[1]], z[v[0]]), sub(z[v[2]], z[v[0]]));
         const Q off = dot(N, z[v[0]]);
         claim(sgn(off) > 0, w + " has the origin strictly on its inner side");
