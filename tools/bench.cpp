@@ -318,24 +318,120 @@ void query_costs(bool with_slow) {
 
 }  // namespace
 
+// Certifying 1,000 claims on two 1,000-vertex hulls (250 each of verdicts, separating planes,
+// distances and penetration depths at random pairs) against the floating-point libraries
+// producing the same outputs in the same run: libccd GJK verdicts (for verdicts and planes), FCL's
+// GJK distances and libccd's EPA depths. With a judgements certificate too.
+std::vector<std::string> claim_rows;
+void claim_costs(const ExactScene& h1000, bool quick) {
+    HullModel m = build_model(h1000);
+    TouchingCurve c = build_curve(m);
+    fp::FpScene f = fp::to_fp(h1000);
+    auto gjk = fp::make_libccd_gjk(f);
+    auto fcl = fp::make_fcl(m, f, false);
+    std::mt19937_64 g(7);
+    std::uniform_real_distribution<double> u(0.5, 2);
+    std::vector<double> a(1000), b(1000);
+    std::vector<bool> sep(1000);
+    std::string claims = "{\"format\": \"scalecert-claims-1\", \"claims\": [";
+    char buf[256];
+    std::vector<std::string> pieces;
+    for (int i = 0; i < 1000; ++i) {
+        a[i] = u(g), b[i] = u(g);
+        const int kind = i % 4;
+        sep[i] = query(m, c, exact_from_double(a[i]), exact_from_double(b[i]), false).verdict == Verdict::Separated;
+        if (kind == 0) std::snprintf(buf, sizeof buf, "{\"kind\": \"verdict\", \"rho1\": %.17g, \"rho2\": %.17g, \"verdict\": \"separated\"}", a[i], b[i]);
+        if (kind == 1) std::snprintf(buf, sizeof buf, "{\"kind\": \"separating_plane\", \"rho1\": %.17g, \"rho2\": %.17g, \"normal\": [1, 0.1, 0]}", a[i], b[i]);
+        if (kind >= 2) std::snprintf(buf, sizeof buf, "{\"kind\": \"%s\", \"rho1\": %.17g, \"rho2\": %.17g, \"value\": 1}", sep[i] ? "distance" : "penetration_depth", a[i], b[i]);
+        claims += std::string(i ? ", " : "") + buf;
+        pieces.push_back(buf);
+    }
+    claims += "]}";
+    long wrong = 0;
+    volatile double sink = 0;
+    const double t_fp = per_call([&](long) {
+        for (int i = 0; i < 1000; ++i) {
+            if (i % 4 < 2) sink = sink + gjk->classify(a[i], b[i]);
+            else if (auto me = (sep[i] ? *fcl : *gjk).measure(a[i], b[i], sep[i])) sink = sink + me->value;
+        }
+    }, 1, quick ? 1 : 3);
+    // The baseline by output: verdicts (for verdict and plane claims), distances, depths.
+    double t_kind[3] = {0, 0, 0};
+    for (int k = 0; k < 3; ++k)
+        t_kind[k] = per_call([&](long) {
+            for (int i = 0; i < 1000; ++i) {
+                const int kind = i % 4 < 2 ? 0 : sep[i] ? 1 : 2;
+                if (kind != k) continue;
+                if (k == 0) sink = sink + gjk->classify(a[i], b[i]);
+                else if (auto me = (sep[i] ? *fcl : *gjk).measure(a[i], b[i], sep[i])) sink = sink + me->value;
+            }
+        }, 1, quick ? 1 : 3);
+    const double t_claims = per_call([&](long) { certify_fp(m, c, claims, "bench", ClaimOptions{false, Q(0), true}, &wrong); }, 1, 1);
+    // Ours by output too: the same claims, one kind at a time.
+    std::vector<std::string> kind_claims(3, "{\"format\": \"scalecert-claims-1\", \"claims\": [");
+    {
+        std::string items[3];
+        for (size_t i = 0; i < pieces.size(); ++i) {
+            const int k = i % 4 < 2 ? 0 : sep[i] ? 1 : 2;
+            items[k] += (items[k].empty() ? "" : ", ") + pieces[i];
+        }
+        for (int k = 0; k < 3; ++k) kind_claims[static_cast<size_t>(k)] += items[k] + "]}";
+    }
+    double t_ours[3];
+    for (int k = 0; k < 3; ++k)
+        t_ours[k] = per_call([&](long) { certify_fp(m, c, kind_claims[static_cast<size_t>(k)], "bench", ClaimOptions{false, Q(0), true}, &wrong); }, 1, 1);
+    std::string cert;
+    const double t_cert = per_call([&](long) {
+        certify_fp(ClaimModels::of(m, c), claims, "bench", ClaimOptions{false, Q(0), true}, &wrong, nullptr, &cert);
+    }, 1, 1);
+    auto add = [&](const char* what, double t, const std::string& r) {
+        row(what, "hulls (1000)", t, r);
+        char line[256];
+        std::snprintf(line, sizeof line, "| %s | %.3g s | %s |", what, t, r.c_str());
+        claim_rows.push_back(line);
+    };
+    long nk[3] = {0, 0, 0};
+    for (int i = 0; i < 1000; ++i) ++nk[i % 4 < 2 ? 0 : sep[i] ? 1 : 2];
+    char what[160];
+    std::snprintf(what, sizeof what, "1 (baseline: %ld verdicts %.3g s, %ld FCL distances %.3g s, %ld libccd EPA depths %.3g s)", nk[0],
+                  t_kind[0], nk[1], t_kind[1], nk[2], t_kind[2]);
+    add("the same 1,000 outputs from libccd GJK/EPA and FCL", t_fp, what);
+    add("1,000 claims certified (verdicts, planes, distances, depths)", t_claims, ratio("%.2gx the libraries' time (target <= 10x)", t_claims / t_fp));
+    add("the same, with the judgements certificate", t_cert, ratio("%.2gx the libraries' time", t_cert / t_fp));
+    const char* kinds[3] = {"verdicts and planes", "distances", "depths"};
+    const char* libs[3] = {"libccd GJK verdicts", "FCL distances", "libccd EPA depths"};
+    for (int k = 0; k < 3; ++k) {
+        std::snprintf(what, sizeof what, "  of which %ld %s", nk[k], kinds[k]);
+        char r[160];
+        std::snprintf(r, sizeof r, "%.3gx %s (%.3g s)", t_ours[k] / t_kind[k], libs[k], t_kind[k]);
+        add(what, t_ours[k], r);
+    }
+}
+
 int checker_bench(int argc, char** argv);  // tools/bench_checker.cpp
 
 int main(int argc, char** argv) {
     if (argc > 1 && std::strcmp(argv[1], "--checker") == 0) return checker_bench(argc - 2, argv + 2);
-    bool quick = false, with_slow = false, sizes_only = false, queries_only = false;
+    bool quick = false, with_slow = false, sizes_only = false, queries_only = false, claims_only = false;
     for (int i = 1; i < argc; ++i) {
         if (std::strcmp(argv[i], "--quick") == 0) quick = true;
         else if (std::strcmp(argv[i], "--with-slow") == 0) with_slow = true;
         else if (std::strcmp(argv[i], "--sizes") == 0) sizes_only = true;
         else if (std::strcmp(argv[i], "--queries") == 0) queries_only = true;
+        else if (std::strcmp(argv[i], "--claims") == 0) claims_only = true;
         else {
-            std::fprintf(stderr, "usage: scalecert-bench [--quick] [--sizes] [--queries] [--with-slow] | --checker [--timeout S] [--keep DIR] [CHECKER ...]\n");
+            std::fprintf(stderr, "usage: scalecert-bench [--quick] [--sizes] [--queries] [--claims] [--with-slow] | --checker [--timeout S] [--keep DIR] [CHECKER ...]\n");
             return 2;
         }
     }
     if (queries_only) {  // only the query table (its 10^6 hull run with --with-slow: minutes, GBs)
         query_costs(with_slow);
         for (const std::string& r : query_rows) std::printf("%s\n", r.c_str());
+        return 0;
+    }
+    if (claims_only) {  // only the claims' table
+        claim_costs(spheres(1000, 1000000, 1), quick);
+        for (const std::string& r : claim_rows) std::printf("%s\n", r.c_str());
         return 0;
     }
     if (sizes_only) {  // only the whole-process table (its 10^6 hull run with --with-slow: minutes, GBs)
@@ -377,35 +473,7 @@ int main(int argc, char** argv) {
         double t_ge = per_call([&](long) { gc = fp::grid_search(*gjk, f, n, 20, 1, false); }, 1, 1);
         row("same GJK grid, each column stopped at its first overlap", nm, t_ge, ratio("exact curve %.0fx faster", t_ge / t_exact));
     }
-    // Certifying 1,000 claims on two 1,000-vertex hulls (250 each of verdicts, separating planes,
-    // distances and penetration depths at random pairs) against recomputing the verdicts with GJK.
-    {
-        HullModel m = build_model(h1000);
-        TouchingCurve c = build_curve(m);
-        fp::FpScene f = fp::to_fp(h1000);
-        auto gjk = fp::make_libccd_gjk(f);
-        std::mt19937_64 g(7);
-        std::uniform_real_distribution<double> u(0.5, 2);
-        std::vector<double> a(1000), b(1000);
-        std::string claims = "{\"format\": \"scalecert-claims-1\", \"claims\": [";
-        char buf[256];
-        for (int i = 0; i < 1000; ++i) {
-            a[i] = u(g), b[i] = u(g);
-            const int kind = i % 4;
-            const bool sep = query(m, c, exact_from_double(a[i]), exact_from_double(b[i]), false).verdict == Verdict::Separated;
-            if (kind == 0) std::snprintf(buf, sizeof buf, "{\"kind\": \"verdict\", \"rho1\": %.17g, \"rho2\": %.17g, \"verdict\": \"separated\"}", a[i], b[i]);
-            if (kind == 1) std::snprintf(buf, sizeof buf, "{\"kind\": \"separating_plane\", \"rho1\": %.17g, \"rho2\": %.17g, \"normal\": [1, 0.1, 0]}", a[i], b[i]);
-            if (kind >= 2) std::snprintf(buf, sizeof buf, "{\"kind\": \"%s\", \"rho1\": %.17g, \"rho2\": %.17g, \"value\": 1}", sep ? "distance" : "penetration_depth", a[i], b[i]);
-            claims += std::string(i ? ", " : "") + buf;
-        }
-        claims += "]}";
-        long wrong = 0;
-        volatile int sink = 0;
-        const double t_gjk = per_call([&](long) { for (int i = 0; i < 1000; ++i) sink += gjk->classify(a[i], b[i]); }, 1, quick ? 1 : 3);
-        const double t_claims = per_call([&](long) { certify_fp(m, c, claims, "bench", ClaimOptions{false, Q(0), true}, &wrong); }, 1, 1);
-        row("1,000 verdicts recomputed with libccd GJK", "hulls (1000)", t_gjk, "1 (baseline)");
-        row("1,000 claims certified (verdicts, planes, distances, depths)", "hulls (1000)", t_claims, ratio("%.0fx GJK's time", t_claims / t_gjk));
-    }
+    claim_costs(h1000, quick);
     double t10k = per_call([&](long) { HullModel m = build_model(h10k); TouchingCurve c = build_curve(m); }, 1, 1);
     row("exact curve, two 10,000-vertex hulls", "hulls (10000)", t10k, "target < 1 s");
     // Growth with size and with degeneracy: curve time, and how often each stage decided.

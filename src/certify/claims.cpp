@@ -35,6 +35,11 @@ public:
     Certifier(const ClaimModels& models, const std::string& name, const ClaimOptions& opt, bool prove)
         : models_(models), name_(name), opt_(opt), prove_(prove) {}
 
+    // How often the exact fallback ran: the distance by CGAL's QP over all vertices, when the
+    // proof from the floating-point guess did not close (proved_distance).
+    struct Fallbacks { long distance = 0; };
+    Fallbacks fallbacks_;
+
     // With `prove`: the last claim run as exact values, and the proof of its judgement
     // (judgements.hpp); none for the kinds not certified (curve, switch_point).
     std::optional<std::pair<Json, Json>> proof;
@@ -65,8 +70,7 @@ private:
     const HullModel& m() const { return models_.model(); }  // the hull model: built on first use
     const TouchingCurve& c() const { return models_.curve(); }
     ClaimOptions opt_;
-    bool prove_;
-    std::optional<std::vector<Vec3z>> normals_;  // every facet normal, for depths (built on first use)
+    bool prove_;  // every facet normal, for depths (built on first use)
     struct ExactSwitch { Q rho1, rho2; std::string label; };
     std::optional<std::vector<ExactSwitch>> switches_;  // the exact switch points (built on first use)
 
@@ -454,7 +458,9 @@ private:
         only(j, {"kind", "rho1", "rho2", "value", "closest"});
         const auto [r1, r2] = pair_at(j);
         const Q d = field(j, "value");
-        const ExactDistance e = exact_distance(m(), r1, r2);
+        const ProvedDistance pd = proved_distance(m(), r1, r2);
+        fallbacks_.distance += pd.fallback;
+        const ExactDistance& e = pd.d;
         put_exact(o, "rho1", r1);
         put_exact(o, "rho2", r2);
         errors_sq(o, d, e.squared);
@@ -493,16 +499,24 @@ private:
         only(j, {"kind", "rho1", "rho2", "value", "direction"});
         const auto [r1, r2] = pair_at(j);
         const Q d = field(j, "value");
-        if (!normals_) normals_ = all_facet_normals(m());
-        const ExactDepth e = exact_penetration_depth(m(), *normals_, r1, r2);
+        // The exact squared depth (−1 when separated) and a minimising direction: with the proof,
+        // or without it from the verdict and, for an overlapping pair, the exact EPA.
+        ExactDepth e{Q(-1), {}};
         put_exact(o, "rho1", r1);
         put_exact(o, "rho2", r2);
         Json pc, pp;
         if (prove_) {
             pc = Json{{"kind", "penetration_depth"}, {"rho1", ex(r1)}, {"rho2", ex(r2)}, {"value", ex(d)}};
-            Q E;
-            pp = depth_proof(m(), c(), r1, r2, &E);
-            if (E != e.squared) throw std::logic_error("certify-fp: the depth's proof and its enumeration differ");
+            pp = depth_proof(m(), c(), r1, r2, &e.squared, &e.direction);
+        } else {
+            const Verdict v = models_.verdict(r1, r2);
+            if (v == Verdict::Touching) {
+                e = {Q(0), m().lines[query(m(), c(), r1, r2, true).plane->line].normal};
+            } else if (v == Verdict::Overlapping) {
+                const std::optional<ProvedDepth> pd = proved_depth(m(), r1, r2);
+                if (!pd) throw std::logic_error("certify-fp: an overlapping pair whose difference does not hold the origin");
+                e = {pd->squared, pd->direction};
+            }
         }
         if (sgn(e.squared) < 0) {
             o["exact_verdict"] = "separated";
@@ -538,7 +552,9 @@ private:
 namespace {
 // The report of n claims, `bad` of them wrong: JSON {"claims", "tolerance" (JSON claims only),
 // "right", "wrong"}, or the claims' text lines and a summary line.
-std::string report(Json arr, const std::string& text, long n, long bad, bool json, const Q* tolerance, long* wrong, long* count) {
+// (fallbacks >= 0: JSON claims' "exact_fallbacks", how often the exact fallback ran.)
+std::string report(Json arr, const std::string& text, long n, long bad, bool json, const Q* tolerance, long* wrong, long* count,
+                   long fallbacks = -1) {
     if (wrong) *wrong = bad;
     if (count) *count = n;
     if (json) {
@@ -547,6 +563,7 @@ std::string report(Json arr, const std::string& text, long n, long bad, bool jso
         if (tolerance) put_exact(j, "tolerance", *tolerance);
         j["right"] = n - bad;
         j["wrong"] = bad;
+        if (fallbacks >= 0) j["exact_fallbacks"] = Json{{"distance", fallbacks}};
         return dump(j);
     }
     return text + "claims: " + std::to_string(n) + ", right: " + std::to_string(n - bad) + ", wrong: " + std::to_string(bad) + "\n";
@@ -700,7 +717,8 @@ std::string certify_fp(const ClaimModels& models, const std::string& claims, con
         text += std::string(right ? "right  " : "WRONG  ") + line + "\n";
     }
     if (certificate) *certificate = certificate_text(models, opt.tolerance, std::move(entries), std::move(skipped));
-    return report(std::move(arr), text, static_cast<long>(list->items.size()), bad, json, &opt.tolerance, wrong, count);
+    return report(std::move(arr), text, static_cast<long>(list->items.size()), bad, json, &opt.tolerance, wrong, count,
+                  cert.fallbacks_.distance);
 }
 
 }  // namespace scalecert::internal

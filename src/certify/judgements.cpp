@@ -36,142 +36,6 @@ std::vector<std::pair<int, Q>> face_weights(const Polyhedron& P, const Face& f, 
     throw std::logic_error("face_weights: the point is not on the face");
 }
 
-// A support point of M = P1(ρ1) − P2(ρ2) in the integer direction n: vertex i of P1 maximising
-// n·v, vertex j of P2 minimising n·w (the smallest index of each), and i(ρ1) − j(ρ2).
-struct MPoint {
-    int i, j;
-    Vec3q z;
-};
-MPoint support_M(const HullModel& m, const Q& rho1, const Q& rho2, const Vec3z& n) {
-    const int i = m.P[0].argmax(n).front();
-    const int j = m.P[1].argmax(Vec3z{-n[0], -n[1], -n[2]}).front();
-    const Vec3q a = scaled_point(m, 0, rho1, m.P[0].points[static_cast<size_t>(i)]);
-    const Vec3q b = scaled_point(m, 1, rho2, m.P[1].points[static_cast<size_t>(j)]);
-    return {i, j, sub(a, b)};
-}
-
-// The exact EPA: a convex polytope K ⊆ M, grown from a tetrahedron by support points, until its
-// face nearest the origin lies on a face of M. Then every face of K is at least that far from
-// the origin, and that distance is M's: the depth.
-struct Epa {
-    const HullModel& m;
-    Q r1, r2;
-    std::vector<MPoint> pts;
-    struct Tri {
-        std::array<int, 3> v;
-        Vec3q N;  // (b − a) × (c − a), outward
-        Q off;    // N·a
-        Q key;    // signed squared distance of the plane from the origin: sgn(off)·off²/|N|²
-        bool alive = true;
-    };
-    std::vector<Tri> tris;
-    std::map<std::pair<int, int>, size_t> edge;  // directed edge -> its live triangle
-
-    int add_point(const MPoint& p) {
-        pts.push_back(p);
-        return static_cast<int>(pts.size()) - 1;
-    }
-    void add_tri(int a, int b, int c) {
-        Tri t;
-        t.v = {a, b, c};
-        t.N = cross(sub(pts[static_cast<size_t>(b)].z, pts[static_cast<size_t>(a)].z),
-                    sub(pts[static_cast<size_t>(c)].z, pts[static_cast<size_t>(a)].z));
-        t.off = dot(t.N, pts[static_cast<size_t>(a)].z);
-        t.key = Q(t.off * t.off) / dot(t.N, t.N);
-        if (sgn(t.off) < 0) t.key = -t.key;
-        const size_t k = tris.size();
-        tris.push_back(std::move(t));
-        edge[{a, b}] = k;
-        edge[{b, c}] = k;
-        edge[{c, a}] = k;
-    }
-    bool visible(const Tri& t, const Vec3q& z) const { return dot(t.N, z) > t.off; }
-
-    // Four affinely independent support points, from fixed directions and then from directions
-    // off the span found so far (M has an interior when the pair overlaps).
-    void start() {
-        std::vector<Vec3z> dirs;
-        for (int a = 0; a < 3; ++a)
-            for (int s : {1, -1}) {
-                Vec3z d{Z(0), Z(0), Z(0)};
-                d[static_cast<size_t>(a)] = s;
-                dirs.push_back(d);
-            }
-        for (int x : {1, -1})
-            for (int y : {1, -1})
-                for (int z : {1, -1}) dirs.push_back({Z(x), Z(y), Z(z)});
-        std::vector<MPoint> base;
-        auto independent = [&](const Vec3q& z) {
-            if (base.empty()) return true;
-            const Vec3q e1 = sub(z, base[0].z);
-            if (base.size() == 1) return sgn(e1[0]) || sgn(e1[1]) || sgn(e1[2]);
-            const Vec3q c = cross(sub(base[1].z, base[0].z), e1);
-            if (base.size() == 2) return sgn(c[0]) || sgn(c[1]) || sgn(c[2]);
-            return sgn(dot(cross(sub(base[1].z, base[0].z), sub(base[2].z, base[0].z)), e1)) != 0;
-        };
-        for (size_t k = 0; base.size() < 4; ++k) {
-            if (k >= dirs.size()) {
-                // A direction off the span: the plane's normal, or one across the line (both
-                // signs, so that a support point leaves the span).
-                if (k > dirs.size() + 12) throw std::logic_error("EPA: the Minkowski difference is flat");
-                Vec3q d;
-                if (base.size() == 3) d = cross(sub(base[1].z, base[0].z), sub(base[2].z, base[0].z));
-                else if (base.size() == 2) {
-                    const Vec3q e = sub(base[1].z, base[0].z);
-                    d = cross(e, Vec3q{Q(1), Q(0), Q(0)});
-                    if (!sgn(d[0]) && !sgn(d[1]) && !sgn(d[2])) d = cross(e, Vec3q{Q(0), Q(1), Q(0)});
-                } else throw std::logic_error("EPA: no support points");
-                const Vec3z p = primitive(d);
-                dirs.push_back(p);
-                dirs.push_back({-p[0], -p[1], -p[2]});
-            }
-            const MPoint p = support_M(m, r1, r2, dirs[k]);
-            if (independent(p.z)) base.push_back(p);
-        }
-        for (const MPoint& p : base) add_point(p);
-        // Faces of the tetrahedron, each turned to face away from the fourth point.
-        const int f[4][4] = {{0, 1, 2, 3}, {0, 3, 1, 2}, {0, 2, 3, 1}, {1, 3, 2, 0}};
-        for (const auto& q : f) {
-            const Vec3q N = cross(sub(pts[static_cast<size_t>(q[1])].z, pts[static_cast<size_t>(q[0])].z),
-                                  sub(pts[static_cast<size_t>(q[2])].z, pts[static_cast<size_t>(q[0])].z));
-            if (sgn(dot(N, sub(pts[static_cast<size_t>(q[3])].z, pts[static_cast<size_t>(q[0])].z))) > 0) add_tri(q[0], q[2], q[1]);
-            else add_tri(q[0], q[1], q[2]);
-        }
-    }
-
-    // Runs to the end; the index of the nearest triangle.
-    size_t run() {
-        start();
-        for (;;) {
-            size_t best = tris.size();
-            for (size_t k = 0; k < tris.size(); ++k)
-                if (tris[k].alive && (best == tris.size() || tris[k].key < tris[best].key)) best = k;
-            const Vec3z n = primitive(tris[best].N);
-            const MPoint p = support_M(m, r1, r2, n);
-            if (!visible(tris[best], p.z)) return best;  // the plane supports M: a face of M
-            const int k = add_point(p);
-            // Remove every face the point sees, and close the hole with a fan from the horizon.
-            std::vector<std::pair<int, int>> horizon;
-            std::vector<size_t> seen;
-            for (size_t t = 0; t < tris.size(); ++t)
-                if (tris[t].alive && visible(tris[t], p.z)) seen.push_back(t);
-            for (size_t t : seen) tris[t].alive = false;
-            for (size_t t : seen)
-                for (int e = 0; e < 3; ++e) {
-                    const int a = tris[t].v[static_cast<size_t>(e)], b = tris[t].v[static_cast<size_t>((e + 1) % 3)];
-                    const auto other = edge.find({b, a});
-                    if (other != edge.end() && tris[other->second].alive) horizon.push_back({a, b});
-                }
-            for (size_t t : seen)
-                for (int e = 0; e < 3; ++e) {
-                    const auto it = edge.find({tris[t].v[static_cast<size_t>(e)], tris[t].v[static_cast<size_t>((e + 1) % 3)]});
-                    if (it != edge.end() && it->second == t) edge.erase(it);
-                }
-            for (const auto& [a, b] : horizon) add_tri(a, b, k);
-        }
-    }
-};
-
 }  // namespace
 
 Json membership_proof(const HullModel& m, int i, const Q& rho, const Vec3q& x, bool* inside) {
@@ -207,33 +71,34 @@ Json distance_proof(const HullModel& m, const ExactDistance& e, const Q& rho1, c
     return j;
 }
 
-Json depth_proof(const HullModel& m, const TouchingCurve& c, const Q& rho1, const Q& rho2, Q* squared) {
+Json depth_proof(const HullModel& m, const TouchingCurve& c, const Q& rho1, const Q& rho2, Q* squared, Vec3z* direction) {
     const QueryAnswer r = query(m, c, rho1, rho2, true);
     if (r.verdict == Verdict::Separated) {
         *squared = -1;
+        *direction = m.lines[r.plane->line].normal;
         return Json{{"separated", normal_json(m.lines[r.plane->line].normal)}};
     }
     if (r.verdict == Verdict::Touching) {
         *squared = 0;
+        *direction = m.lines[r.plane->line].normal;
         return Json{{"squared", "0"},
                     {"direction", normal_json(m.lines[r.plane->line].normal)},
                     {"common", Json{{"P1", weights_json(r.witness->w1)}, {"P2", weights_json(r.witness->w2)}}}};
     }
-    Epa epa{m, rho1, rho2, {}, {}, {}};
-    const size_t best = epa.run();
-    *squared = epa.tris[best].key;
-    if (sgn(*squared) <= 0) throw std::logic_error("depth_proof: the origin is not inside the Minkowski difference");
-    // Only the live triangles and their points, renumbered in order of first use.
+    const std::optional<ProvedDepth> d = proved_depth(m, rho1, rho2);
+    if (!d) throw std::logic_error("depth_proof: the origin is not inside the Minkowski difference");
+    *squared = d->squared;
+    *direction = d->direction;
+    // The points in order of first use.
     std::map<int, int> renumber;
     Json points = Json::array(), triangles = Json::array();
-    for (const auto& t : epa.tris) {
-        if (!t.alive) continue;
+    for (const auto& t : d->triangles) {
         Json tri = Json::array();
-        for (int v : t.v) {
+        for (int v : t) {
             auto it = renumber.find(v);
             if (it == renumber.end()) {
                 it = renumber.emplace(v, static_cast<int>(renumber.size())).first;
-                points.push_back(Json::array({epa.pts[static_cast<size_t>(v)].i, epa.pts[static_cast<size_t>(v)].j}));
+                points.push_back(Json::array({d->points[static_cast<size_t>(v)].first, d->points[static_cast<size_t>(v)].second}));
             }
             tri.push_back(it->second);
         }
@@ -241,7 +106,7 @@ Json depth_proof(const HullModel& m, const TouchingCurve& c, const Q& rho1, cons
     }
     Json j;
     j["squared"] = to_exact_string(*squared);
-    j["direction"] = normal_json(primitive(epa.tris[best].N));
+    j["direction"] = normal_json(d->direction);
     j["points"] = std::move(points);
     j["triangles"] = std::move(triangles);
     return j;

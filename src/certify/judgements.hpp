@@ -29,7 +29,8 @@ Json distance_proof(const HullModel& m, const ExactDistance& e, const Q& rho1, c
 //   surface whose vertices (each [i, j]: vertex i of P1(ρ1) minus vertex j of P2(ρ2)) lie in the
 //   Minkowski difference and whose every triangle's plane lies at least √E from the origin. It is
 //   the final polytope of an exact EPA (expanding polytope) run on support points.
-Json depth_proof(const HullModel& m, const TouchingCurve& c, const Q& rho1, const Q& rho2, Q* squared);
+// (*direction: the proof's normal.)
+Json depth_proof(const HullModel& m, const TouchingCurve& c, const Q& rho1, const Q& rho2, Q* squared, Vec3z* direction);
 
 // The growth distance ρ*: {"value"} when the seeds coincide (ρ* = 0); else {"value", "normal",
 // "witness"}: n·d = ρ*(h1(n) + h2(n)), so (ρ, ρ) is separated for every ρ < ρ*, and a common point

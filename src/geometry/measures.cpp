@@ -1,5 +1,8 @@
 #include "geometry/measures.hpp"
 
+#include <map>
+#include <stdexcept>
+
 #include <mpfr.h>
 
 namespace scalecert::internal {
@@ -51,6 +54,159 @@ ExactDepth exact_penetration_depth(const HullModel& m, const std::vector<Vec3z>&
         if (sgn(best.squared) < 0 || sq < best.squared) best = {sq, n};
     }
     return best;
+}
+
+namespace {
+// A support point of M = P1(ρ1) − P2(ρ2) in the integer direction n: vertex i of P1 maximising
+// n·v, vertex j of P2 minimising n·w (the smallest index of each), and i(ρ1) − j(ρ2).
+struct MPoint {
+    int i, j;
+    Vec3q z;
+};
+MPoint support_M(const HullModel& m, const Q& rho1, const Q& rho2, const Vec3z& n) {
+    const int i = m.P[0].argmax(n).front();
+    const int j = m.P[1].argmax(Vec3z{-n[0], -n[1], -n[2]}).front();
+    const Vec3q a = scaled_point(m, 0, rho1, m.P[0].points[static_cast<size_t>(i)]);
+    const Vec3q b = scaled_point(m, 1, rho2, m.P[1].points[static_cast<size_t>(j)]);
+    return {i, j, sub(a, b)};
+}
+
+// The exact EPA: a convex polytope K ⊆ M, grown from a tetrahedron by support points, until its
+// face nearest the origin lies on a face of M. Then every face of K is at least that far from
+// the origin, and that distance is M's: the depth.
+struct Epa {
+    const HullModel& m;
+    Q r1, r2;
+    std::vector<MPoint> pts;
+    struct Tri {
+        std::array<int, 3> v;
+        Vec3q N;  // (b − a) × (c − a), outward
+        Q off;    // N·a
+        Q key;    // signed squared distance of the plane from the origin: sgn(off)·off²/|N|²
+        bool alive = true;
+    };
+    std::vector<Tri> tris;
+    std::map<std::pair<int, int>, size_t> edge;  // directed edge -> its live triangle
+
+    int add_point(const MPoint& p) {
+        pts.push_back(p);
+        return static_cast<int>(pts.size()) - 1;
+    }
+    void add_tri(int a, int b, int c) {
+        Tri t;
+        t.v = {a, b, c};
+        t.N = cross(sub(pts[static_cast<size_t>(b)].z, pts[static_cast<size_t>(a)].z),
+                    sub(pts[static_cast<size_t>(c)].z, pts[static_cast<size_t>(a)].z));
+        t.off = dot(t.N, pts[static_cast<size_t>(a)].z);
+        t.key = Q(t.off * t.off) / dot(t.N, t.N);
+        if (sgn(t.off) < 0) t.key = -t.key;
+        const size_t k = tris.size();
+        tris.push_back(std::move(t));
+        edge[{a, b}] = k;
+        edge[{b, c}] = k;
+        edge[{c, a}] = k;
+    }
+    bool visible(const Tri& t, const Vec3q& z) const { return dot(t.N, z) > t.off; }
+
+    // Four affinely independent support points, from fixed directions and then from directions
+    // off the span found so far (M has an interior when the pair overlaps).
+    void start() {
+        std::vector<Vec3z> dirs;
+        for (int a = 0; a < 3; ++a)
+            for (int s : {1, -1}) {
+                Vec3z d{Z(0), Z(0), Z(0)};
+                d[static_cast<size_t>(a)] = s;
+                dirs.push_back(d);
+            }
+        for (int x : {1, -1})
+            for (int y : {1, -1})
+                for (int z : {1, -1}) dirs.push_back({Z(x), Z(y), Z(z)});
+        std::vector<MPoint> base;
+        auto independent = [&](const Vec3q& z) {
+            if (base.empty()) return true;
+            const Vec3q e1 = sub(z, base[0].z);
+            if (base.size() == 1) return sgn(e1[0]) || sgn(e1[1]) || sgn(e1[2]);
+            const Vec3q c = cross(sub(base[1].z, base[0].z), e1);
+            if (base.size() == 2) return sgn(c[0]) || sgn(c[1]) || sgn(c[2]);
+            return sgn(dot(cross(sub(base[1].z, base[0].z), sub(base[2].z, base[0].z)), e1)) != 0;
+        };
+        for (size_t k = 0; base.size() < 4; ++k) {
+            if (k >= dirs.size()) {
+                // A direction off the span: the plane's normal, or one across the line (both
+                // signs, so that a support point leaves the span).
+                if (k > dirs.size() + 12) throw std::logic_error("EPA: the Minkowski difference is flat");
+                Vec3q d;
+                if (base.size() == 3) d = cross(sub(base[1].z, base[0].z), sub(base[2].z, base[0].z));
+                else if (base.size() == 2) {
+                    const Vec3q e = sub(base[1].z, base[0].z);
+                    d = cross(e, Vec3q{Q(1), Q(0), Q(0)});
+                    if (!sgn(d[0]) && !sgn(d[1]) && !sgn(d[2])) d = cross(e, Vec3q{Q(0), Q(1), Q(0)});
+                } else throw std::logic_error("EPA: no support points");
+                const Vec3z p = primitive(d);
+                dirs.push_back(p);
+                dirs.push_back({-p[0], -p[1], -p[2]});
+            }
+            const MPoint p = support_M(m, r1, r2, dirs[k]);
+            if (independent(p.z)) base.push_back(p);
+        }
+        for (const MPoint& p : base) add_point(p);
+        // Faces of the tetrahedron, each turned to face away from the fourth point.
+        const int f[4][4] = {{0, 1, 2, 3}, {0, 3, 1, 2}, {0, 2, 3, 1}, {1, 3, 2, 0}};
+        for (const auto& q : f) {
+            const Vec3q N = cross(sub(pts[static_cast<size_t>(q[1])].z, pts[static_cast<size_t>(q[0])].z),
+                                  sub(pts[static_cast<size_t>(q[2])].z, pts[static_cast<size_t>(q[0])].z));
+            if (sgn(dot(N, sub(pts[static_cast<size_t>(q[3])].z, pts[static_cast<size_t>(q[0])].z))) > 0) add_tri(q[0], q[2], q[1]);
+            else add_tri(q[0], q[1], q[2]);
+        }
+    }
+
+    // Runs to the end; the index of the nearest triangle.
+    size_t run() {
+        start();
+        for (;;) {
+            size_t best = tris.size();
+            for (size_t k = 0; k < tris.size(); ++k)
+                if (tris[k].alive && (best == tris.size() || tris[k].key < tris[best].key)) best = k;
+            const Vec3z n = primitive(tris[best].N);
+            const MPoint p = support_M(m, r1, r2, n);
+            if (!visible(tris[best], p.z)) return best;  // the plane supports M: a face of M
+            const int k = add_point(p);
+            // Remove every face the point sees, and close the hole with a fan from the horizon.
+            std::vector<std::pair<int, int>> horizon;
+            std::vector<size_t> seen;
+            for (size_t t = 0; t < tris.size(); ++t)
+                if (tris[t].alive && visible(tris[t], p.z)) seen.push_back(t);
+            for (size_t t : seen) tris[t].alive = false;
+            for (size_t t : seen)
+                for (int e = 0; e < 3; ++e) {
+                    const int a = tris[t].v[static_cast<size_t>(e)], b = tris[t].v[static_cast<size_t>((e + 1) % 3)];
+                    const auto other = edge.find({b, a});
+                    if (other != edge.end() && tris[other->second].alive) horizon.push_back({a, b});
+                }
+            for (size_t t : seen)
+                for (int e = 0; e < 3; ++e) {
+                    const auto it = edge.find({tris[t].v[static_cast<size_t>(e)], tris[t].v[static_cast<size_t>((e + 1) % 3)]});
+                    if (it != edge.end() && it->second == t) edge.erase(it);
+                }
+            for (const auto& [a, b] : horizon) add_tri(a, b, k);
+        }
+    }
+};
+
+}  // namespace
+
+std::optional<ProvedDepth> proved_depth(const HullModel& m, const Q& rho1, const Q& rho2) {
+    Epa epa{m, rho1, rho2, {}, {}, {}};
+    const size_t best = epa.run();
+    if (sgn(epa.tris[best].key) <= 0) return std::nullopt;  // the origin is not strictly inside M
+    ProvedDepth d;
+    d.squared = epa.tris[best].key;
+    d.direction = primitive(epa.tris[best].N);
+    for (const MPoint& p : epa.pts) d.points.push_back({p.i, p.j});
+    for (const auto& t : epa.tris)
+        if (t.alive) d.triangles.push_back(t.v);
+    d.iterations = static_cast<int>(epa.pts.size()) - 4;
+    return d;
 }
 
 double sqrt_minus_rn(const Q& square, const Q& c) {

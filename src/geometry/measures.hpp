@@ -3,6 +3,9 @@
 #pragma once
 #include "curve/contact_lines.hpp"
 
+#include <array>
+#include <optional>
+
 namespace scalecert::internal {
 
 // P(ρ) = s + ρ(P − s) of polyhedron i of the model.
@@ -19,6 +22,18 @@ struct ExactDistance {
     Vec3q p1, p2;
 };
 ExactDistance exact_distance(const HullModel& m, const Q& rho1, const Q& rho2);
+// The same, found at floating-point speed and proved: a double GJK (gjk.hpp) names a few vertices,
+// CGAL's QP gives the exact closest points of those, and exact supports over all vertices check
+// the slab between them (max over P1(ρ1) of u·x = u·p, min over P2(ρ2) of u·y = u·q, u = q − p),
+// which proves them closest. A vertex beyond the slab joins the few and the round repeats; after
+// kProvedDistanceRounds rounds, exact_distance over all vertices (fallback = true).
+struct ProvedDistance {
+    ExactDistance d;
+    bool fallback = false;
+    int rounds = 0;
+};
+ProvedDistance proved_distance(const HullModel& m, const Q& rho1, const Q& rho2);
+constexpr int kProvedDistanceRounds = 24;
 
 // The squared penetration depth of overlapping P1(ρ1), P2(ρ2): the squared distance from the
 // origin to the boundary of P1(ρ1) ⊕ (−P2(ρ2)), attained at a facet of that sum, whose outward
@@ -29,6 +44,20 @@ struct ExactDepth {
     Vec3z direction;  // a minimising facet normal (pointing from P1 towards P2)
 };
 ExactDepth exact_penetration_depth(const HullModel& m, const std::vector<Vec3z>& facet_normals, const Q& rho1, const Q& rho2);
+// The squared penetration depth of an overlapping pair, proved by an exact EPA (expanding
+// polytope) on support points of M = P1(ρ1) − P2(ρ2): a polytope K ⊆ M grown from a tetrahedron
+// until its face nearest the origin lies on a face of M. Then every face of K is at least that
+// far from the origin (the lower bound: FORMAT.md, "A judgements file") and translating P2 that
+// far along the face's normal separates (the upper bound). The points of K as [vertex of P1,
+// vertex of P2] and its triangles (outward); none unless the origin is strictly inside M.
+struct ProvedDepth {
+    Q squared;
+    Vec3z direction;
+    std::vector<std::pair<int, int>> points;
+    std::vector<std::array<int, 3>> triangles;
+    int iterations = 0;
+};
+std::optional<ProvedDepth> proved_depth(const HullModel& m, const Q& rho1, const Q& rho2);
 // The squared directional depth along n: (ρ1 h1(n) + ρ2 h2(n) − n·d)² / |n|², signed negative
 // when that plane separates (a translation along n of that length separates them exactly).
 Q directional_depth_squared(const HullModel& m, const Vec3q& n, const Q& rho1, const Q& rho2);

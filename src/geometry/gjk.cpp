@@ -1,0 +1,149 @@
+// The double-precision GJK of gjk.hpp: supports by a scan of the hull vertices, and the closest
+// point of the simplex by trying every face of it (at most 15): the one whose affine projection
+// of the origin lies inside it and is nearest.
+#include "geometry/gjk.hpp"
+#include "numeric/double3.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace scalecert::internal {
+
+namespace {
+
+struct Body {
+    std::vector<int> idx;
+    std::vector<D3> x;  // the scaled vertices, in doubles
+    // The vertex maximising d·x.
+    size_t support(const D3& d) const {
+        size_t best = 0;
+        double bv = -INFINITY;
+        for (size_t k = 0; k < x.size(); ++k) {
+            const double v = dotd(d, x[k]);
+            if (v > bv) bv = v, best = k;
+        }
+        return best;
+    }
+};
+Body body(const HullModel& m, int i, double rho) {
+    Body b;
+    const D3 s{to_double_rn(m.s[i][0]), to_double_rn(m.s[i][1]), to_double_rn(m.s[i][2])};
+    for (int v : m.P[i].vertices) {
+        const Vec3q& p = m.P[i].points[static_cast<size_t>(v)];
+        const D3 x{to_double_rn(p[0]), to_double_rn(p[1]), to_double_rn(p[2])};
+        b.idx.push_back(v);
+        b.x.push_back({s[0] + rho * (x[0] - s[0]), s[1] + rho * (x[1] - s[1]), s[2] + rho * (x[2] - s[2])});
+    }
+    return b;
+}
+
+struct Vert {
+    size_t a, b;  // positions in the bodies
+    D3 z;         // a − b
+};
+
+// The point of the affine hull of the subset nearest the origin, if it lies strictly inside the
+// subset's simplex: its barycentric weights.
+bool project(const std::vector<Vert>& s, unsigned mask, std::vector<double>& w, D3& x) {
+    std::vector<size_t> ids;
+    for (size_t k = 0; k < s.size(); ++k)
+        if (mask >> k & 1) ids.push_back(k);
+    const D3& y0 = s[ids[0]].z;
+    const size_t n = ids.size() - 1;
+    double G[3][3] = {}, r[3] = {};
+    std::vector<D3> e(n);
+    for (size_t i = 0; i < n; ++i) e[i] = subd(s[ids[i + 1]].z, y0);
+    for (size_t i = 0; i < n; ++i) {
+        for (size_t j = 0; j < n; ++j) G[i][j] = dotd(e[i], e[j]);
+        r[i] = -dotd(e[i], y0);
+    }
+    double l[3] = {};
+    if (n == 1) {
+        if (!(G[0][0] > 0)) return false;
+        l[0] = r[0] / G[0][0];
+    } else if (n == 2) {
+        const double det = G[0][0] * G[1][1] - G[0][1] * G[1][0];
+        if (!(std::fabs(det) > 1e-300)) return false;
+        l[0] = (r[0] * G[1][1] - G[0][1] * r[1]) / det;
+        l[1] = (G[0][0] * r[1] - r[0] * G[1][0]) / det;
+    } else if (n == 3) {
+        const double det = G[0][0] * (G[1][1] * G[2][2] - G[1][2] * G[2][1]) - G[0][1] * (G[1][0] * G[2][2] - G[1][2] * G[2][0]) +
+                           G[0][2] * (G[1][0] * G[2][1] - G[1][1] * G[2][0]);
+        if (!(std::fabs(det) > 1e-300)) return false;
+        for (int c = 0; c < 3; ++c) {
+            double M[3][3];
+            for (int i = 0; i < 3; ++i)
+                for (int j = 0; j < 3; ++j) M[i][j] = j == c ? r[i] : G[i][j];
+            l[c] = (M[0][0] * (M[1][1] * M[2][2] - M[1][2] * M[2][1]) - M[0][1] * (M[1][0] * M[2][2] - M[1][2] * M[2][0]) +
+                    M[0][2] * (M[1][0] * M[2][1] - M[1][1] * M[2][0])) / det;
+        }
+    }
+    double l0 = 1;
+    for (size_t i = 0; i < n; ++i) l0 -= l[i];
+    if (!(l0 > 0)) return false;
+    for (size_t i = 0; i < n; ++i)
+        if (!(l[i] > 0)) return false;
+    w.assign(s.size(), 0);
+    w[ids[0]] = l0;
+    x = y0;
+    for (size_t i = 0; i < n; ++i) {
+        w[ids[i + 1]] = l[i];
+        for (int c = 0; c < 3; ++c) x[c] += l[i] * e[i][c];
+    }
+    return true;
+}
+}  // namespace
+
+GjkGuess gjk_guess(const HullModel& m, double rho1, double rho2) {
+    const Body A = body(m, 0, rho1), B = body(m, 1, rho2);
+    auto support = [&](const D3& d) {  // the point of M = A − B maximising d·z
+        const size_t a = A.support(d), b = B.support({-d[0], -d[1], -d[2]});
+        return Vert{a, b, subd(A.x[a], B.x[b])};
+    };
+    std::vector<Vert> s{support(D3{1, 0, 0})};
+    D3 v = s[0].z;
+    GjkGuess g;
+    for (g.iterations = 0; g.iterations < 64; ++g.iterations) {
+        const double vv = dotd(v, v);
+        if (!(vv > 0)) break;
+        const Vert w = support({-v[0], -v[1], -v[2]});
+        // No point of M is nearer than v's plane allows: converged (relative 1e-12).
+        if (vv - dotd(v, w.z) <= 1e-12 * vv) break;
+        bool known = false;
+        for (const Vert& t : s) known = known || (t.a == w.a && t.b == w.b);
+        if (known) break;
+        s.push_back(w);
+        double best = INFINITY;
+        std::vector<Vert> next;
+        D3 nv = v;
+        for (unsigned mask = 1; mask < (1u << s.size()); ++mask) {
+            std::vector<double> wt;
+            D3 x;
+            if (!project(s, mask, wt, x)) continue;
+            const double d = dotd(x, x);
+            if (d < best) {
+                best = d, nv = x;
+                next.clear();
+                for (size_t k = 0; k < s.size(); ++k)
+                    if (mask >> k & 1) next.push_back(s[k]);
+            }
+        }
+        if (next.empty()) break;  // degenerate in doubles: keep what there is
+        s = std::move(next);
+        v = nv;
+        if (s.size() == 4) {  // the origin inside the tetrahedron (to doubles)
+            v = {0, 0, 0};
+            break;
+        }
+    }
+    for (const Vert& t : s) g.v1.push_back(A.idx[t.a]), g.v2.push_back(B.idx[t.b]);
+    for (auto* vv : {&g.v1, &g.v2}) {
+        std::sort(vv->begin(), vv->end());
+        vv->erase(std::unique(vv->begin(), vv->end()), vv->end());
+    }
+    g.distance = std::sqrt(dotd(v, v));
+    return g;
+}
+
+}  // namespace scalecert::internal

@@ -1,0 +1,18 @@
+// A double-precision GJK between P1(ρ1) and P2(ρ2): a guess only. It finds the few vertices on
+// which the closest points (or an enclosing simplex) rest; the exact stages prove or correct them
+// (distance_cgal.cpp, proved_distance), and never decide on a double.
+#pragma once
+#include "curve/contact_lines.hpp"
+
+#include <vector>
+
+namespace scalecert::internal {
+
+struct GjkGuess {
+    std::vector<int> v1, v2;  // vertices of P1 and of P2 in the final simplex (input indices, distinct, sorted)
+    double distance = 0;      // the doubles' distance (0 when the simplex holds the origin)
+    int iterations = 0;
+};
+GjkGuess gjk_guess(const HullModel& m, double rho1, double rho2);
+
+}  // namespace scalecert::internal
