@@ -41,17 +41,10 @@ std::vector<std::pair<int, Q>> face_weights(const Polyhedron& P, const Face& f, 
 Json membership_proof(const HullModel& m, int i, const Q& rho, const Vec3q& x, bool* inside) {
     const Polyhedron& P = m.P[i];
     const Vec3q y = unscaled(m, i, rho, x);
-    const Face* on = nullptr;
-    for (const Face& f : P.faces) {
-        const Q v = dot(f.normal, y) - dot(f.normal, P.points[static_cast<size_t>(f.verts.front())]);
-        if (sgn(v) > 0) {
-            *inside = false;
-            return Json{{"out", normal_json(f.normal)}};
-        }
-        if (sgn(v) == 0 && !on) on = &f;
-    }
-    *inside = true;
-    return Json{{"in", weights_json(on ? face_weights(P, *on, y) : P.interior_weights(y))}};
+    const PointPlace at = P.place(y);
+    *inside = at.side <= 0;
+    if (at.side > 0) return Json{{"out", normal_json(at.face->normal)}};
+    return Json{{"in", weights_json(at.side == 0 ? face_weights(P, *at.face, y) : P.interior_weights(y))}};
 }
 
 Json verdict_proof(const HullModel& m, const TouchingCurve& c, const Q& rho1, const Q& rho2, Verdict* verdict) {

@@ -29,9 +29,11 @@ struct Body {
 Body body(const HullModel& m, int i, double rho) {
     Body b;
     const D3 s{to_double_rn(m.s[i][0]), to_double_rn(m.s[i][1]), to_double_rn(m.s[i][2])};
+    // The scaled integer points as doubles over the scale as a double: a guess needs no more.
+    const double scale = to_double_rn(Q(m.P[i].scale));
     for (int v : m.P[i].vertices) {
-        const Vec3q& p = m.P[i].points[static_cast<size_t>(v)];
-        const D3 x{to_double_rn(p[0]), to_double_rn(p[1]), to_double_rn(p[2])};
+        const auto& d = m.P[i].dpts[static_cast<size_t>(v)];
+        const D3 x{d[0] / scale, d[1] / scale, d[2] / scale};
         b.idx.push_back(v);
         b.x.push_back({s[0] + rho * (x[0] - s[0]), s[1] + rho * (x[1] - s[1]), s[2] + rho * (x[2] - s[2])});
     }

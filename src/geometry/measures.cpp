@@ -15,10 +15,7 @@ Vec3q scaled_point(const Model& m, int i, const Q& rho, const Vec3q& x) {
 bool contains(const Model& m, int i, const Q& rho, const Vec3q& x) {
     const Vec3q& s = m.s[i];
     const Vec3q y{s[0] + (x[0] - s[0]) / rho, s[1] + (x[1] - s[1]) / rho, s[2] + (x[2] - s[2]) / rho};  // x = s + ρ(y − s)
-    const Polyhedron& P = m.P[i];
-    for (const Face& f : P.faces)
-        if (dot(f.normal, y) > dot(f.normal, P.points[static_cast<size_t>(f.verts.front())])) return false;
-    return true;
+    return m.P[i].place(y).side <= 0;
 }
 
 std::pair<Q, Q> plane_extents(const HullModel& m, const Vec3q& n, const Q& rho1, const Q& rho2) {
@@ -58,36 +55,65 @@ ExactDepth exact_penetration_depth(const HullModel& m, const std::vector<Vec3z>&
 
 namespace {
 // A support point of M = P1(ρ1) − P2(ρ2) in the integer direction n: vertex i of P1 maximising
-// n·v, vertex j of P2 minimising n·w (the smallest index of each), and i(ρ1) − j(ρ2).
+// n·v, vertex j of P2 minimising n·w (the smallest index of each), and i(ρ1) − j(ρ2) times the
+// run's common denominator D (an integer point).
 struct MPoint {
     int i, j;
-    Vec3q z;
+    Vec3z z;
 };
-MPoint support_M(const HullModel& m, const Q& rho1, const Q& rho2, const Vec3z& n) {
-    const int i = m.P[0].argmax(n).front();
-    const int j = m.P[1].argmax(Vec3z{-n[0], -n[1], -n[2]}).front();
-    const Vec3q a = scaled_point(m, 0, rho1, m.P[0].points[static_cast<size_t>(i)]);
-    const Vec3q b = scaled_point(m, 1, rho2, m.P[1].points[static_cast<size_t>(j)]);
-    return {i, j, sub(a, b)};
-}
 
 // The exact EPA: a convex polytope K ⊆ M, grown from a tetrahedron by support points, until its
 // face nearest the origin lies on a face of M. Then every face of K is at least that far from
-// the origin, and that distance is M's: the depth.
+// the origin, and that distance is M's: the depth. In integers: every point of M is an integer
+// point over one denominator D = lcm(den ρ1 · lcm(scale1, den s1), den ρ2 · lcm(scale2, den s2)).
 struct Epa {
     const HullModel& m;
     Q r1, r2;
+    Z D;
     std::vector<MPoint> pts;
     struct Tri {
         std::array<int, 3> v;
-        Vec3q N;  // (b − a) × (c − a), outward
-        Q off;    // N·a
-        Q key;    // signed squared distance of the plane from the origin: sgn(off)·off²/|N|²
+        Vec3z N;  // (b − a) × (c − a), outward
+        Z off;    // N·a
+        Z NN;     // N·N
         bool alive = true;
     };
     std::vector<Tri> tris;
     std::map<std::pair<int, int>, size_t> edge;  // directed edge -> its live triangle
 
+    Epa(const HullModel& model, const Q& rho1, const Q& rho2) : m(model), r1(rho1), r2(rho2) {
+        Z d[2];
+        const Q* r[2] = {&r1, &r2};
+        for (int i = 0; i < 2; ++i) {
+            Z l = m.P[i].scale;
+            for (const Q& c : m.s[i]) mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), c.get_den_mpz_t());
+            d[i] = l * r[i]->get_den();
+        }
+        mpz_lcm(D.get_mpz_t(), d[0].get_mpz_t(), d[1].get_mpz_t());
+    }
+    Vec3z integral(const Vec3q& x) const {
+        Vec3z z;
+        for (int c = 0; c < 3; ++c) {
+            const Q q = x[c] * D;
+            if (q.get_den() != 1) throw std::logic_error("EPA: a point off the common denominator");
+            z[c] = q.get_num();
+        }
+        return z;
+    }
+    MPoint support_M(const Vec3z& n) const {
+        const int i = m.P[0].argmax(n).front();
+        const int j = m.P[1].argmax(Vec3z{-n[0], -n[1], -n[2]}).front();
+        const Vec3q a = scaled_point(m, 0, r1, m.P[0].points[static_cast<size_t>(i)]);
+        const Vec3q b = scaled_point(m, 1, r2, m.P[1].points[static_cast<size_t>(j)]);
+        return {i, j, integral(sub(a, b))};
+    }
+    // a nearer the origin than b (signed: a plane with the origin beyond it is nearer than any)
+    static bool nearer(const Tri& a, const Tri& b) {
+        const int sa = sgn(a.off), sb = sgn(b.off);
+        if (sa != sb) return sa < sb;
+        const Z l = a.off * a.off * b.NN, r = b.off * b.off * a.NN;
+        return sa >= 0 ? l < r : l > r;
+    }
     int add_point(const MPoint& p) {
         pts.push_back(p);
         return static_cast<int>(pts.size()) - 1;
@@ -95,18 +121,17 @@ struct Epa {
     void add_tri(int a, int b, int c) {
         Tri t;
         t.v = {a, b, c};
-        t.N = cross(sub(pts[static_cast<size_t>(b)].z, pts[static_cast<size_t>(a)].z),
-                    sub(pts[static_cast<size_t>(c)].z, pts[static_cast<size_t>(a)].z));
-        t.off = dot(t.N, pts[static_cast<size_t>(a)].z);
-        t.key = Q(t.off * t.off) / dot(t.N, t.N);
-        if (sgn(t.off) < 0) t.key = -t.key;
+        const Vec3z& A = pts[static_cast<size_t>(a)].z;
+        t.N = cross(sub(pts[static_cast<size_t>(b)].z, A), sub(pts[static_cast<size_t>(c)].z, A));
+        t.off = dotz(t.N, A);
+        t.NN = dotz(t.N, t.N);
         const size_t k = tris.size();
         tris.push_back(std::move(t));
         edge[{a, b}] = k;
         edge[{b, c}] = k;
         edge[{c, a}] = k;
     }
-    bool visible(const Tri& t, const Vec3q& z) const { return dot(t.N, z) > t.off; }
+    bool visible(const Tri& t, const Vec3z& z) const { return dotz(t.N, z) > t.off; }
 
     // Four affinely independent support points, from fixed directions and then from directions
     // off the span found so far (M has an interior when the pair overlaps).
@@ -122,40 +147,41 @@ struct Epa {
             for (int y : {1, -1})
                 for (int z : {1, -1}) dirs.push_back({Z(x), Z(y), Z(z)});
         std::vector<MPoint> base;
-        auto independent = [&](const Vec3q& z) {
+        auto nonzero = [](const Vec3z& v) { return sgn(v[0]) || sgn(v[1]) || sgn(v[2]); };
+        auto independent = [&](const Vec3z& z) {
             if (base.empty()) return true;
-            const Vec3q e1 = sub(z, base[0].z);
-            if (base.size() == 1) return sgn(e1[0]) || sgn(e1[1]) || sgn(e1[2]);
-            const Vec3q c = cross(sub(base[1].z, base[0].z), e1);
-            if (base.size() == 2) return sgn(c[0]) || sgn(c[1]) || sgn(c[2]);
-            return sgn(dot(cross(sub(base[1].z, base[0].z), sub(base[2].z, base[0].z)), e1)) != 0;
+            const Vec3z e1 = sub(z, base[0].z);
+            if (base.size() == 1) return nonzero(e1);
+            const Vec3z c = cross(sub(base[1].z, base[0].z), e1);
+            if (base.size() == 2) return nonzero(c);
+            return sgn(dotz(cross(sub(base[1].z, base[0].z), sub(base[2].z, base[0].z)), e1)) != 0;
         };
         for (size_t k = 0; base.size() < 4; ++k) {
             if (k >= dirs.size()) {
                 // A direction off the span: the plane's normal, or one across the line (both
                 // signs, so that a support point leaves the span).
-                if (k > dirs.size() + 12) throw std::logic_error("EPA: the Minkowski difference is flat");
-                Vec3q d;
+                if (k > 30) throw std::logic_error("EPA: the Minkowski difference is flat");
+                Vec3z d;
                 if (base.size() == 3) d = cross(sub(base[1].z, base[0].z), sub(base[2].z, base[0].z));
                 else if (base.size() == 2) {
-                    const Vec3q e = sub(base[1].z, base[0].z);
-                    d = cross(e, Vec3q{Q(1), Q(0), Q(0)});
-                    if (!sgn(d[0]) && !sgn(d[1]) && !sgn(d[2])) d = cross(e, Vec3q{Q(0), Q(1), Q(0)});
+                    const Vec3z e = sub(base[1].z, base[0].z);
+                    d = cross(e, Vec3z{Z(1), Z(0), Z(0)});
+                    if (!nonzero(d)) d = cross(e, Vec3z{Z(0), Z(1), Z(0)});
                 } else throw std::logic_error("EPA: no support points");
                 const Vec3z p = primitive(d);
                 dirs.push_back(p);
-                dirs.push_back({-p[0], -p[1], -p[2]});
+                dirs.push_back(neg(p));
             }
-            const MPoint p = support_M(m, r1, r2, dirs[k]);
+            const MPoint p = support_M(dirs[k]);
             if (independent(p.z)) base.push_back(p);
         }
         for (const MPoint& p : base) add_point(p);
         // Faces of the tetrahedron, each turned to face away from the fourth point.
         const int f[4][4] = {{0, 1, 2, 3}, {0, 3, 1, 2}, {0, 2, 3, 1}, {1, 3, 2, 0}};
         for (const auto& q : f) {
-            const Vec3q N = cross(sub(pts[static_cast<size_t>(q[1])].z, pts[static_cast<size_t>(q[0])].z),
-                                  sub(pts[static_cast<size_t>(q[2])].z, pts[static_cast<size_t>(q[0])].z));
-            if (sgn(dot(N, sub(pts[static_cast<size_t>(q[3])].z, pts[static_cast<size_t>(q[0])].z))) > 0) add_tri(q[0], q[2], q[1]);
+            const Vec3z& A = pts[static_cast<size_t>(q[0])].z;
+            const Vec3z N = cross(sub(pts[static_cast<size_t>(q[1])].z, A), sub(pts[static_cast<size_t>(q[2])].z, A));
+            if (sgn(dotz(N, sub(pts[static_cast<size_t>(q[3])].z, A))) > 0) add_tri(q[0], q[2], q[1]);
             else add_tri(q[0], q[1], q[2]);
         }
     }
@@ -166,9 +192,8 @@ struct Epa {
         for (;;) {
             size_t best = tris.size();
             for (size_t k = 0; k < tris.size(); ++k)
-                if (tris[k].alive && (best == tris.size() || tris[k].key < tris[best].key)) best = k;
-            const Vec3z n = primitive(tris[best].N);
-            const MPoint p = support_M(m, r1, r2, n);
+                if (tris[k].alive && (best == tris.size() || nearer(tris[k], tris[best]))) best = k;
+            const MPoint p = support_M(primitive(tris[best].N));
             if (!visible(tris[best], p.z)) return best;  // the plane supports M: a face of M
             const int k = add_point(p);
             // Remove every face the point sees, and close the hole with a fan from the horizon.
@@ -196,15 +221,18 @@ struct Epa {
 }  // namespace
 
 std::optional<ProvedDepth> proved_depth(const HullModel& m, const Q& rho1, const Q& rho2) {
-    Epa epa{m, rho1, rho2, {}, {}, {}};
+    Epa epa(m, rho1, rho2);
     const size_t best = epa.run();
-    if (sgn(epa.tris[best].key) <= 0) return std::nullopt;  // the origin is not strictly inside M
+    const auto& t = epa.tris[best];
+    if (sgn(t.off) <= 0) return std::nullopt;  // the origin is not strictly inside M
     ProvedDepth d;
-    d.squared = epa.tris[best].key;
-    d.direction = primitive(epa.tris[best].N);
+    // off and N are D³ and D² times the true ones: the squared distance off²/|N|² over D².
+    d.squared = Q(t.off * t.off, t.NN * epa.D * epa.D);
+    d.squared.canonicalize();
+    d.direction = primitive(t.N);
     for (const MPoint& p : epa.pts) d.points.push_back({p.i, p.j});
-    for (const auto& t : epa.tris)
-        if (t.alive) d.triangles.push_back(t.v);
+    for (const auto& u : epa.tris)
+        if (u.alive) d.triangles.push_back(u.v);
     d.iterations = static_cast<int>(epa.pts.size()) - 4;
     return d;
 }

@@ -130,14 +130,15 @@ Q Polyhedron::support(const Vec3z& n) const {
     return v;
 }
 
-bool Polyhedron::strictly_inside(const Vec3q& p) const {
+PointPlace Polyhedron::place(const Vec3q& p) const {
     // In the integer frame: p·scale = z/den, so n·p < n·v  iff  n·z < den·(n·ipts[v]).
     Z den;
     const Vec3z z = over_common_denominator({p[0] * scale, p[1] * scale, p[2] * scale}, den);
     I128 z128[3], den128;
     bool fits = small() && to_i128(den, den128);
     for (int k = 0; k < 3 && fits; ++k) fits = to_i128(z[k], z128[k]);
-    // Strictly below every face: n·z − den·(n·v) < 0, in 128 bits while it fits, else GMP.
+    // The side of every face: n·z − den·(n·v), in 128 bits while it fits, else GMP.
+    PointPlace r;
     for (const Face& f : faces) {
         auto gmp = [&] { return sgn(dotz(f.normal, z) - den * dotz(f.normal, ipts[f.verts[0]])); };
         const int side = !fits ? gmp()
@@ -147,10 +148,13 @@ bool Polyhedron::strictly_inside(const Vec3q& p) const {
                                          acc.sub(den128, dot_s(f.normal_s, ipts_s[f.verts[0]]));
                                      },
                                      gmp);
-        if (side >= 0) return false;
+        if (side > 0) return {1, &f};
+        if (side == 0 && !r.face) r = {0, &f};
     }
-    return true;
+    return r;
 }
+
+bool Polyhedron::strictly_inside(const Vec3q& p) const { return place(p).side < 0; }
 
 std::vector<std::pair<int, Q>> Polyhedron::interior_weights(const Vec3q& p) const {
     // Four affinely independent vertices (they exist: the polyhedron spans 3 dimensions).

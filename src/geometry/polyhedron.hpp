@@ -21,6 +21,14 @@ struct Edge {
     int f0, f1;  // the two faces that meet along the edge
 };
 
+struct Face;
+// Where a point lies: side −1 strictly inside, 0 on the boundary (face: one holding it), +1
+// outside (face: one whose plane it lies strictly beyond).
+struct PointPlace {
+    int side = -1;
+    const Face* face = nullptr;
+};
+
 struct Polyhedron {
     std::vector<Vec3q> points;           // input points, as given
     std::vector<int> vertices;           // indices of the extreme points (first copy of duplicates)
@@ -46,6 +54,7 @@ struct Polyhedron {
     bool small() const { return !ipts_s.empty(); }
     Q support(const Vec3z& n) const;     // max over vertices of n·x
     bool strictly_inside(const Vec3q& p) const;
+    PointPlace place(const Vec3q& p) const;  // exact, in 128-bit integers while they fit
     // For p strictly inside: weights w > 0 on vertices spanning 3 dimensions, Σw = 1, Σ w·v = p
     // (a proof that p is interior), sorted by vertex. From the centroid c of four affinely
     // independent vertices, the ray through p leaves at a point q of some face, a convex

@@ -6,6 +6,8 @@
 // and so on, where many facet normals give one line: there every piece's contact label must be
 // the brute force's smallest faces holding the touching set (test::brute_contact).
 #include "fuzz_common.hpp"
+#include "certify/claims.hpp"
+#include "geometry/measures.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     using namespace scalecert::internal;
@@ -65,12 +67,34 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         if (sgn(y) <= 0) continue;
         for (const Q& f : {Q(1), Q(1048575, 1048576), Q(1048577, 1048576)}) pairs.push_back({x, y * f});
     }
+    const std::vector<Vec3z> normals = all_facet_normals(m);
+    std::string claims = "{\"format\": \"scalecert-claims-1\", \"claims\": [";
+    bool first = true;
     for (const auto& [r1, r2] : pairs) {
         QueryAnswer r = query(m, cv, r1, r2, true);
         const int want = brute.classify(sc, r1, r2);
         if (test::verdict_sign(r.verdict) != want)
             fuzz::finding("verdict " + std::string(verdict_name(r.verdict)) + " at (" + r1.get_str() + ", " + r2.get_str() + "), brute force says " + std::to_string(want));
         fuzz::must_pass_checker(dump(query_json(m, r, seed_weights(m))), "query answer");
+        // The fast measures against the exact path (test_measures does the same at random).
+        if (proved_distance(m, r1, r2).d.squared != exact_distance(m, r1, r2).squared)
+            fuzz::finding("proved distance differs from the QP at (" + r1.get_str() + ", " + r2.get_str() + ")");
+        const ExactDepth e = exact_penetration_depth(m, normals, r1, r2);
+        const std::optional<ProvedDepth> d = proved_depth(m, r1, r2);
+        if (r.verdict == Verdict::Overlapping ? (!d || d->squared != e.squared) : d.has_value())
+            fuzz::finding("EPA depth differs from the enumeration at (" + r1.get_str() + ", " + r2.get_str() + ")");
+        claims += std::string(first ? "" : ", ") + "{\"kind\": \"distance\", \"rho1\": \"" + r1.get_str() + "\", \"rho2\": \"" +
+                  r2.get_str() + "\", \"value\": 1}, {\"kind\": \"penetration_depth\", \"rho1\": \"" + r1.get_str() + "\", \"rho2\": \"" +
+                  r2.get_str() + "\", \"value\": 1}, {\"kind\": \"verdict\", \"rho1\": \"" + r1.get_str() + "\", \"rho2\": \"" + r2.get_str() +
+                  "\", \"verdict\": \"separated\"}";
+        first = false;
+    }
+    // Every judgement of those claims, with its certificate, must pass the checker.
+    if (!pairs.empty()) {
+        long wrong = 0;
+        std::string cert;
+        certify_fp(ClaimModels::of(m, cv), claims + "]}", "fuzz", ClaimOptions{false, Q(0), true}, &wrong, nullptr, &cert);
+        fuzz::must_pass_checker(cert, "judgements");
     }
     return 0;
 }
