@@ -10,6 +10,7 @@
 #include "campaign/campaign.hpp"
 
 #include <cmath>
+#include <map>
 
 namespace py = pybind11;
 using scalecert::Rational;
@@ -233,6 +234,113 @@ py::dict curve_dict(const scalecert::Curve& c) {
 
 }  // namespace
 
+using namespace pybind11::literals;
+
+// Scene.certify: claims of one kind from arrays, judged by the typed API (Analysis::certify).
+py::dict certify_arrays(const scalecert::Analysis& a, const std::string& kind, const py::handle& rho1, const py::handle& rho2,
+                        const py::handle& value, const py::handle& closest, const py::handle& direction, const py::handle& normal,
+                        const py::handle& offset, const py::handle& point_, const py::handle& verdict, const py::handle& tolerance,
+                        bool certificate, bool fractions) {
+    using scalecert::ClaimKind;
+    static const std::map<std::string, ClaimKind> kinds = {{"distance", ClaimKind::Distance},
+                                                           {"penetration_depth", ClaimKind::PenetrationDepth},
+                                                           {"verdict", ClaimKind::Verdict},
+                                                           {"separating_plane", ClaimKind::SeparatingPlane},
+                                                           {"witness_point", ClaimKind::WitnessPoint}};
+    const auto k = kinds.find(kind);
+    if (k == kinds.end())
+        throw scalecert::InputError("certify: unknown kind '" + kind + "' (distance, penetration_depth, verdict, separating_plane, witness_point)");
+    const py::list r1 = as_list(rho1, "rho1"), r2 = as_list(rho2, "rho2");
+    const size_t n = r1.size();
+    if (n == 0) throw scalecert::InputError("certify: no claims (rho1 is empty)");
+    // An array argument with one row per claim, or none.
+    auto rows = [&](const py::handle& h, const char* what, bool needed) -> std::optional<py::list> {
+        if (h.is_none()) {
+            if (needed) throw scalecert::InputError(std::string("certify: ") + what + " is required for kind '" + kind + "'");
+            return std::nullopt;
+        }
+        py::list l = as_list(h, what);
+        if (l.size() != n)
+            throw scalecert::InputError(std::string("certify: ") + what + " has " + std::to_string(l.size()) + " rows, rho1 has " + std::to_string(n));
+        return l;
+    };
+    if (r2.size() != n) throw scalecert::InputError("certify: rho2 has " + std::to_string(r2.size()) + " rows, rho1 has " + std::to_string(n));
+    const ClaimKind ck = k->second;
+    const bool measure = ck == ClaimKind::Distance || ck == ClaimKind::PenetrationDepth;
+    const auto values = rows(value, "value", measure);
+    const auto cl = rows(closest, "closest", false), dir = rows(direction, "direction", false), nor = rows(normal, "normal", ck == ClaimKind::SeparatingPlane),
+               off = rows(offset, "offset", false), pts = rows(point_, "point", ck == ClaimKind::WitnessPoint);
+    std::optional<py::list> verdicts;
+    if (ck == ClaimKind::Verdict) {
+        if (verdict.is_none()) throw scalecert::InputError("certify: verdict is required for kind 'verdict'");
+        verdicts = py::isinstance<py::str>(verdict) ? py::list() : rows(verdict, "verdict", true);
+    }
+    if ((cl && ck != ClaimKind::Distance) || (dir && ck != ClaimKind::PenetrationDepth) || (nor && ck != ClaimKind::SeparatingPlane) ||
+        (off && ck != ClaimKind::SeparatingPlane) || (pts && ck != ClaimKind::WitnessPoint) || (values && !measure))
+        throw scalecert::InputError("certify: an argument that kind '" + kind + "' does not use");
+    std::vector<scalecert::Claim> claims(n);
+    for (size_t i = 0; i < n; ++i) {
+        const std::string at = "[" + std::to_string(i) + "]";
+        scalecert::Claim& c = claims[i];
+        c.kind = ck;
+        c.rho1 = rational(r1[i], ("rho1" + at).c_str());
+        c.rho2 = rational(r2[i], ("rho2" + at).c_str());
+        if (values) c.value = rational((*values)[i], ("value" + at).c_str());
+        if (cl) {
+            const py::list two = as_list((*cl)[i], "closest" + at);
+            if (two.size() != 2) throw scalecert::InputError("certify: closest" + at + ": expected two points");
+            c.closest = std::array<scalecert::Point, 2>{point(two[0], "closest" + at + "[0]"), point(two[1], "closest" + at + "[1]")};
+        }
+        if (dir) c.direction = point((*dir)[i], "direction" + at);
+        if (nor) c.normal = point((*nor)[i], "normal" + at);
+        if (off) c.offset = rational((*off)[i], ("offset" + at).c_str());
+        if (pts) c.point = point((*pts)[i], "point" + at);
+        if (verdicts) {
+            const std::string v = py::str(verdicts->empty() ? verdict : (*verdicts)[i]).cast<std::string>();
+            if (v == "separated") c.verdict = scalecert::Verdict::Separated;
+            else if (v == "touching") c.verdict = scalecert::Verdict::Touching;
+            else if (v == "overlapping") c.verdict = scalecert::Verdict::Overlapping;
+            else throw scalecert::InputError("certify: verdict" + at + ": '" + v + "' (separated, touching, overlapping)");
+        }
+    }
+    scalecert::ClaimOptions opt;
+    opt.tolerance = rational(tolerance, "tolerance");
+    opt.certificate = certificate;
+    scalecert::Judgements j;
+    {
+        py::gil_scoped_release release;
+        j = a.certify(claims, opt);
+    }
+    py::module_ np = py::module_::import("numpy");
+    py::list right, exact, rel, vr, cr, dr, sq, ev;
+    for (const scalecert::Judgement& g : j.items) {
+        right.append(g.right);
+        exact.append(g.exact_squared ? g.exact : NAN);
+        rel.append(g.exact_squared ? g.rel_error : NAN);
+        // (A depth claimed of a separated pair has no parts: each is wrong.)
+        vr.append(g.value_right.value_or(false));
+        cr.append(g.closest_right.value_or(false));
+        dr.append(g.direction_right.value_or(false));
+        if (fractions) sq.append(g.exact_squared ? fraction(*g.exact_squared) : py::object(py::none()));
+        if (g.exact_verdict) ev.append(*g.exact_verdict == scalecert::Verdict::Separated ? "separated"
+                                       : *g.exact_verdict == scalecert::Verdict::Touching ? "touching" : "overlapping");
+    }
+    py::dict d;
+    d["right"] = np.attr("array")(right, "dtype"_a = "bool");
+    if (measure) {
+        d["exact"] = np.attr("array")(exact, "dtype"_a = "float64");
+        d["rel_error"] = np.attr("array")(rel, "dtype"_a = "float64");
+        d["value_right"] = np.attr("array")(vr, "dtype"_a = "bool");
+    }
+    if (cl) d["closest_right"] = np.attr("array")(cr, "dtype"_a = "bool");
+    if (dir) d["direction_right"] = np.attr("array")(dr, "dtype"_a = "bool");
+    if (fractions && measure) d["exact_squared"] = sq;
+    if (ck == ClaimKind::Verdict) d["exact_verdict"] = ev;
+    d["wrong"] = j.wrong;
+    if (certificate) d["certificate"] = j.certificate;
+    return d;
+}
+
 PYBIND11_MODULE(scalecert, m) {
     m.doc() = "Exact, certified collision of uniformly scaled convex polyhedra.";
     m.attr("__version__") = scalecert::version();
@@ -322,6 +430,23 @@ PYBIND11_MODULE(scalecert, m) {
              "the double it is (exact_decimals reads JSON text's decimals as written); a str or a Fraction is exact. "
              "Returns the report of scalecert certify-fp --json, as a dict; with certificate=True, (the report, the "
              "judgements certificate's text for scalecert-check)")
+        .def("certify", [](const PyScene& s, const std::string& kind, const py::handle& rho1, const py::handle& rho2,
+                           const py::handle& value, const py::handle& closest, const py::handle& direction, const py::handle& normal,
+                           const py::handle& offset, const py::handle& point_, const py::handle& verdict, const py::handle& tolerance,
+                           bool certificate, bool fractions) {
+                 return certify_arrays(s.a(), kind, rho1, rho2, value, closest, direction, normal, offset, point_, verdict,
+                                       tolerance, certificate, fractions);
+             }, py::arg("kind"), py::arg("rho1"), py::arg("rho2"), py::arg("value") = py::none(), py::arg("closest") = py::none(),
+             py::arg("direction") = py::none(), py::arg("normal") = py::none(), py::arg("offset") = py::none(),
+             py::arg("point") = py::none(), py::arg("verdict") = py::none(), py::arg("tolerance") = 0,
+             py::arg("certificate") = false, py::arg("fractions") = false,
+             "claims of one kind over arrays: kind 'distance' (value, optional closest of shape (n, 2, 3)), "
+             "'penetration_depth' (value, optional direction (n, 3)), 'verdict' (verdict: a str or n strs), "
+             "'separating_plane' (normal (n, 3), optional offset) or 'witness_point' (point (n, 3)); rho1, rho2 and value "
+             "of length n. A float is the double it is. Returns a dict of numpy arrays: right (bool), value_right, "
+             "closest_right, direction_right (bool, where given), exact (float64: the exact distance or depth, correctly "
+             "rounded; NaN for a depth of a separated pair) and rel_error (float64), exact_verdict (verdicts); with "
+             "fractions=True exact_squared (Fractions); with certificate=True the judgements certificate's text")
         .def("golden", [](const PyScene& s) {
                  scalecert::GoldenData g = s.a().golden();
                  return py::make_tuple(json_loads(g.json), g.csv);

@@ -281,3 +281,78 @@ BOOST_AUTO_TEST_CASE(the_public_header_names_no_internals) {
     BOOST_TEST(text.find("internal") == std::string::npos);
     BOOST_TEST(text.size() > 1000u);
 }
+
+// The typed claims API, against values derived by hand and a brute-force formula. Stacked cubes:
+// P1(r1) = 1 + r1[−1, 1]^3 and P2(r2) = (1, 1, 4) + r2[−1, 1]^3 are axis-aligned boxes, so their
+// distance is the norm of the per-axis gaps max(0, lo2 − hi1, lo1 − hi2), and when they overlap
+// the depth is the smallest per-axis overlap min(hi1 − lo2, hi2 − lo1) (their difference is a box).
+BOOST_AUTO_TEST_CASE(typed_claims_by_hand_and_by_brute_force) {
+    using scalecert::Claim;
+    using scalecert::ClaimKind;
+    const scalecert::Analysis a(stacked());
+    std::vector<Claim> claims(5);
+    claims[0].kind = ClaimKind::Distance;  // at (1, 1/2): the gap 3.5 − 2 = 3/2 in z
+    claims[0].rho1 = 1, claims[0].rho2 = R(1, 2), claims[0].value = R(3, 2);
+    claims[0].closest = std::array<scalecert::Point, 2>{scalecert::Point{1, 1, 2}, scalecert::Point{1, 1, R(7, 2)}};
+    claims[1] = claims[0];
+    claims[1].closest = std::array<scalecert::Point, 2>{scalecert::Point{1, 1, R(21, 10)}, scalecert::Point{1, 1, R(7, 2)}};  // outside P1
+    claims[2].kind = ClaimKind::PenetrationDepth;  // at (2, 2): overlap 1 in z, 4 in x and y
+    claims[2].rho1 = claims[2].rho2 = 2, claims[2].value = scalecert::exact(1.0000001), claims[2].direction = scalecert::Point{0, 0, 1};
+    claims[3].kind = ClaimKind::Verdict;
+    claims[3].rho1 = claims[3].rho2 = R(3, 2), claims[3].verdict = scalecert::Verdict::Touching;
+    claims[4].kind = ClaimKind::WitnessPoint;
+    claims[4].rho1 = claims[4].rho2 = R(3, 2), claims[4].point = {1, 1, R(5, 2)};
+    scalecert::ClaimOptions opt;
+    opt.certificate = true;
+    const scalecert::Judgements j = a.certify(claims, opt);
+    BOOST_TEST_REQUIRE(j.items.size() == 5u);
+    BOOST_TEST(j.items[0].right);
+    BOOST_TEST((*j.items[0].exact_squared == R(9, 4)));
+    BOOST_TEST(j.items[0].exact == 1.5);
+    BOOST_TEST(!j.items[1].right);
+    BOOST_TEST(*j.items[1].value_right);      // the value is right,
+    BOOST_TEST(!*j.items[1].closest_right);   // the closest points are not
+    BOOST_TEST(!j.items[2].right);            // 1.0000001 is not 1 without a tolerance,
+    BOOST_TEST(*j.items[2].direction_right);  // but the direction attains the depth
+    BOOST_TEST(std::fabs(j.items[2].rel_error - 1e-7) < 1e-12);
+    BOOST_TEST(j.items[3].right);
+    BOOST_TEST((*j.items[3].exact_verdict == scalecert::Verdict::Touching));
+    BOOST_TEST(j.items[4].right);
+    BOOST_TEST(j.wrong == 2);
+    BOOST_TEST(j.certificate.find("\"kind\": \"judgements\"") != std::string::npos);
+    opt.tolerance = R(1, 1000000);
+    opt.certificate = false;
+    BOOST_TEST(a.certify({claims[2]}, opt).items[0].right);  // within 10^-6
+    BOOST_TEST(a.certify({claims[2]}, opt).certificate.empty());
+
+    // Brute force over a grid of pairs: the box formula against the engine's exact squares.
+    std::vector<Claim> grid;
+    std::vector<R> want;
+    for (int i = 1; i <= 12; ++i)
+        for (int k = 1; k <= 12; ++k) {
+            const R r1(i, 4), r2(k, 4);
+            R lo1[3], hi1[3], lo2[3], hi2[3];
+            for (int c = 0; c < 3; ++c) {
+                lo1[c] = 1 - r1, hi1[c] = 1 + r1;
+                const R s2 = c == 2 ? R(4) : R(1);
+                lo2[c] = s2 - r2, hi2[c] = s2 + r2;
+            }
+            R gap2 = 0, depth = -1;
+            bool overlap = true;
+            for (int c = 0; c < 3; ++c) {
+                const R g = std::max({R(0), R(lo2[c] - hi1[c]), R(lo1[c] - hi2[c])});
+                gap2 += g * g;
+                const R o = std::min(R(hi1[c] - lo2[c]), R(hi2[c] - lo1[c]));
+                overlap = overlap && o > 0;
+                if (depth < 0 || o < depth) depth = o;
+            }
+            Claim c;
+            c.rho1 = r1, c.rho2 = r2;
+            c.kind = overlap ? ClaimKind::PenetrationDepth : ClaimKind::Distance;
+            c.value = overlap ? depth : R(0);
+            grid.push_back(c);
+            want.push_back(overlap ? R(depth * depth) : gap2);
+        }
+    const scalecert::Judgements g = a.certify(grid);
+    for (size_t i = 0; i < grid.size(); ++i) BOOST_TEST((g.items[i].exact_squared && *g.items[i].exact_squared == want[i]), i);
+}

@@ -97,6 +97,34 @@ struct ClaimOptions {
 // certificate (FORMAT.md, kind "judgements"; scalecert-check verifies it) of every claim whose kind
 // is certified (all but curve and switch_point).
 struct ClaimReport { std::string report; long claims, wrong; std::string certificate; };
+// One claim of a floating-point program, typed (the JSON kinds of CLAIMS.md, minus curves):
+// the fields its kind uses. A double's claim is its exact value: exact(x).
+enum class ClaimKind { Verdict, SeparatingPlane, WitnessPoint, Distance, PenetrationDepth };
+struct Claim {
+    ClaimKind kind = ClaimKind::Distance;
+    Rational rho1 = 1, rho2 = 1;
+    Verdict verdict = Verdict::Separated;           // Verdict
+    Point normal{};                                 // SeparatingPlane
+    std::optional<Rational> offset;                 // SeparatingPlane
+    Point point{};                                  // WitnessPoint
+    Rational value = 0;                             // Distance, PenetrationDepth
+    std::optional<std::array<Point, 2>> closest;    // Distance: on P1, on P2
+    std::optional<Point> direction;                 // PenetrationDepth
+};
+// Its judgement, part by part (CLAIMS.md): right when every part given is right.
+struct Judgement {
+    bool right = false;
+    std::optional<bool> value_right, closest_right, direction_right;  // distances, depths
+    std::optional<Rational> exact_squared;  // distances, depths (none: a depth claimed of a separated pair)
+    double exact = 0;                       // √exact_squared, correctly rounded (MPFR)
+    double rel_error = 0;                   // |value − exact| / exact, MPFR-rounded (0 when both are 0; inf when only exact is)
+    std::optional<Verdict> exact_verdict;   // verdicts
+};
+struct Judgements {
+    std::vector<Judgement> items;  // one per claim, in order
+    long wrong = 0;
+    std::string certificate;       // with options.certificate: the judgements certificate
+};
 // Golden data: the curve document with, near the curve, exact verdicts of pairs and of their
 // nearest doubles (JSON), and those doubles with their verdicts (CSV).
 struct GoldenData { std::string json, csv; };
@@ -124,6 +152,8 @@ public:
     std::string partition_json() const;  // the certificate: check it with scalecert-check
     // scalecert certify-fp; throws InputError for malformed claims.
     ClaimReport certify_fp(const std::string& claims, const ClaimOptions& options = {}) const;
+    // The same, typed, over an array of claims (options.exact_decimals and .json do not apply).
+    Judgements certify(const std::vector<Claim>& claims, const ClaimOptions& options = {}) const;
     // What scalecert golden writes for each of its scenes, without the family's fields.
     GoldenData golden() const;
 

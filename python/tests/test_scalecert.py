@@ -1,6 +1,7 @@
 """The Python module: hand-derived values, a brute-force envelope, and agreement with the CLI."""
 import itertools
 import json
+import math
 import os
 import random
 import re
@@ -330,3 +331,48 @@ def test_a_fifo_is_refused_not_waited_on(tmp_path):
     lines = out.stdout.splitlines()
     assert lines == [f"{tmp_path}/p.json: is a named pipe (FIFO), not a scene file (only regular files are read)",
                      f"{tmp_path}/p.off: is a named pipe (FIFO), not a mesh file (only regular files are read)"]
+
+
+def test_certify_arrays_by_hand_and_brute_force(tmp_path):
+    # Stacked cubes: P1(r1) = 1 + r1[-1, 1]^3 and P2(r2) = (1, 1, 4) + r2[-1, 1]^3 are axis-aligned
+    # boxes: their distance is the norm of the per-axis gaps, and when they overlap the depth is
+    # the smallest per-axis overlap (the difference is a box). The arrays as doubles.
+    s = stacked()
+    r1 = np.array([1.0, 2.0, 1.5, 0.75, 3.0])
+    r2 = np.array([0.5, 2.0, 1.5, 0.5, 0.25])
+
+    def brute(a, b):
+        lo1, hi1 = [1 - a] * 3, [1 + a] * 3
+        lo2, hi2 = [1 - b, 1 - b, 4 - b], [1 + b, 1 + b, 4 + b]
+        gaps = [max(0, lo2[c] - hi1[c], lo1[c] - hi2[c]) for c in range(3)]
+        over = [min(hi1[c] - lo2[c], hi2[c] - lo1[c]) for c in range(3)]
+        return (sum(g * g for g in gaps), min(over) if min(over) > 0 else None)
+
+    truth = [brute(F(a), F(b)) for a, b in zip(r1, r2)]
+    d = s.certify("distance", r1, r2, value=[math.sqrt(t[0]) for t in truth], fractions=True)
+    assert [x == t[0] for x, t in zip(d["exact_squared"], truth)] == [True] * 5
+    assert d["right"].dtype == bool and d["exact"].dtype == np.float64
+    assert list(d["exact"]) == [math.sqrt(t[0]) for t in truth]  # sqrt of these exact squares is exact or correctly rounded
+    # Depths where they overlap: (2, 2) overlaps by 1 in z; a separated pair's depth claim is wrong.
+    p = s.certify("penetration_depth", [2.0, 1.0], [2.0, 1.0], value=[1.0, 0.0], direction=[[0, 0, 1], [0, 0, 1]])
+    assert list(p["right"]) == [True, False] and list(p["direction_right"]) == [True, False]
+    assert p["exact"][0] == 1.0 and math.isnan(p["exact"][1])
+    # One rounded closest point fails only the closest points, not the value.
+    c = s.certify("distance", [1.0], [0.5], value=[1.5], closest=np.array([[[1, 1, 2.0000000001], [1, 1, 3.5]]]))
+    assert list(c["value_right"]) == [True] and list(c["closest_right"]) == [False] and list(c["right"]) == [False]
+    v = s.certify("verdict", r1, r2, verdict="separated")
+    assert list(v["right"]) == [a + b < 3 for a, b in zip(r1, r2)]
+    # With the judgements certificate, which the independent checker verifies.
+    w = s.certify("witness_point", [1.5], [1.5], point=[[1, 1, 2.5]], certificate=True)
+    (tmp_path / "w.json").write_text(w["certificate"])
+    out = subprocess.run([CHECK, str(tmp_path / "w.json")], capture_output=True, text=True)
+    assert w["right"][0] and out.returncode == 0
+    # Bad input: one line, InputError.
+    with pytest.raises(scalecert.InputError, match="value has 2 rows, rho1 has 5"):
+        s.certify("distance", r1, r2, value=[1.0, 2.0])
+    with pytest.raises(scalecert.InputError, match="not a finite number"):
+        s.certify("distance", [float("nan")], [1.0], value=[1.0])
+    with pytest.raises(scalecert.InputError, match="unknown kind"):
+        s.certify("area", r1, r2)
+    with pytest.raises(scalecert.InputError, match="does not use"):
+        s.certify("verdict", r1, r2, verdict="touching", value=r1)

@@ -4,6 +4,7 @@
 #include "session/session.hpp"
 
 #include "certify/certificate.hpp"
+#include "certify/claims.hpp"
 #include "certify/classify.hpp"
 #include "certify/golden.hpp"
 #include "geometry/measures.hpp"
@@ -210,6 +211,72 @@ ClaimReport Analysis::certify_fp(const std::string& claims, const ClaimOptions& 
     std::string report = internal::certify_fp(impl_->session.claim_models(), claims, "claims", options, &wrong, &count,
                                               options.certificate ? &certificate : nullptr);
     return {std::move(report), count, wrong, std::move(certificate)};
+}
+
+Judgements Analysis::certify(const std::vector<Claim>& claims, const ClaimOptions& options) const {
+    // The claims as scalecert-claims-1 with every number an exact string, judged by the one set of
+    // rules (certify/claims.cpp); the report read back into types.
+    if (claims.empty()) throw InputError("certify: no claims");
+    Json list = Json::array();
+    auto ex = [](const Rational& q) { return to_exact_string(q); };
+    auto pt = [&](const Point& p) { return Json::array({ex(p[0]), ex(p[1]), ex(p[2])}); };
+    for (const Claim& c : claims) {
+        Json j{{"rho1", ex(c.rho1)}, {"rho2", ex(c.rho2)}};
+        switch (c.kind) {
+        case ClaimKind::Verdict:
+            j["kind"] = "verdict";
+            j["verdict"] = verdict_name(c.verdict);
+            break;
+        case ClaimKind::SeparatingPlane:
+            j["kind"] = "separating_plane";
+            j["normal"] = pt(c.normal);
+            if (c.offset) j["offset"] = ex(*c.offset);
+            break;
+        case ClaimKind::WitnessPoint:
+            j["kind"] = "witness_point";
+            j["point"] = pt(c.point);
+            break;
+        case ClaimKind::Distance:
+            j["kind"] = "distance";
+            j["value"] = ex(c.value);
+            if (c.closest) j["closest"] = Json::array({pt((*c.closest)[0]), pt((*c.closest)[1])});
+            break;
+        case ClaimKind::PenetrationDepth:
+            j["kind"] = "penetration_depth";
+            j["value"] = ex(c.value);
+            if (c.direction) j["direction"] = pt(*c.direction);
+            break;
+        }
+        list.push_back(std::move(j));
+    }
+    ClaimOptions opt = options;
+    opt.json = true;
+    long wrong = 0;
+    Judgements out;
+    const std::string report = internal::certify_fp(impl_->session.claim_models(), dump(Json{{"format", "scalecert-claims-1"}, {"claims", list}}),
+                                                    "claims", opt, &wrong, nullptr, options.certificate ? &out.certificate : nullptr);
+    out.wrong = wrong;
+    const Json r = Json::parse(report);
+    auto flag = [](const Json& o, const char* k) { return o.contains(k) ? std::optional<bool>(o[k].get<bool>()) : std::nullopt; };
+    for (const Json& o : r["claims"]) {
+        Judgement g;
+        g.right = o["right"].get<bool>();
+        g.value_right = flag(o, "value_right");
+        g.closest_right = flag(o, "closest_right");
+        g.direction_right = flag(o, "direction_right");
+        if (o.contains("exact_squared")) {
+            g.exact_squared = parse_exact(o["exact_squared"].get<std::string>());
+            g.exact = sqrt_minus_rn(*g.exact_squared, Q(0));
+            g.rel_error = o["rel_error_double"].is_null() ? (o["abs_error_double"].get<double>() == 0 ? 0.0 : INFINITY)
+                                                           : o["rel_error_double"].get<double>();
+        }
+        if (o["kind"] == "verdict") {
+            const std::string e = o["exact"].get<std::string>();
+            g.exact_verdict = e == "separated" ? Verdict::Separated : e == "touching" ? Verdict::Touching : Verdict::Overlapping;
+        }
+        out.items.push_back(std::move(g));
+    }
+    return out;
 }
 
 GoldenData Analysis::golden() const {
