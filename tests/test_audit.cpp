@@ -468,6 +468,12 @@ BOOST_AUTO_TEST_CASE(baseline_measures_follow_one_convention) {
     const std::vector<AuditRow> rows = audit_scene("cubes", s, Q(0), {"fcl-gjk-libccd"}, {});
     BOOST_TEST(rows[0].distances > 50);
     BOOST_TEST(rows[0].depths > 50);
+    // --no-measures: the same verdict counts, no distances or depths compared.
+    const std::vector<AuditRow> v = audit_scene("cubes", s, Q(0), {"fcl-gjk-libccd"}, {}, false, false);
+    BOOST_TEST(v[0].distances == 0);
+    BOOST_TEST(v[0].depths == 0);
+    BOOST_TEST(v[0].false_separated == rows[0].false_separated);
+    BOOST_TEST(v[0].false_overlapping == rows[0].false_overlapping);
 }
 
 BOOST_AUTO_TEST_CASE(wrong_verdicts_by_distance_from_the_curve) {

@@ -18,7 +18,7 @@
 #     second (clang) build, and minutes to half an hour of fuzzing;
 #   - mpirun and srun with hundreds of ranks: a cluster;
 #   - runs of minutes, past this test's minute: build/scalecert-bench (up to 7 GB),
-#     tools/bench-mpi.sh and tools/real_mesh_audit.py (which also installs libcgal-demo). These run
+#     tools/bench-mpi.sh, tools/bench-audit.sh and tools/real_mesh_audit.py (which also installs libcgal-demo). These run
 #     with SCALECERT_DOCS_LONG=1.
 # Everything else runs, the two ε-sweep audits of docs/audits.md included (about half the time).
 # Lines using mpirun are skipped (and said so) when scalecert-mpi or mpirun is missing.
@@ -42,7 +42,7 @@ reason() {
     *)
       if [ "${SCALECERT_DOCS_LONG:-0}" != 1 ]; then
         case "$1" in
-          build/scalecert-bench*|tools/bench-mpi.sh*|*tools/real_mesh_audit.py*)
+          build/scalecert-bench*|tools/bench-mpi.sh*|tools/bench-audit.sh*|*tools/real_mesh_audit.py*)
             echo "runs for minutes (SCALECERT_DOCS_LONG=1 runs it)"; return ;;
         esac
       fi

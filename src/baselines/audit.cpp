@@ -143,7 +143,8 @@ void wrong_by_distance(const fp::Method& mm, const DistancePairs& p, AuditRow& r
 }  // namespace
 
 std::vector<AuditRow> audit_scene(const std::string& name, const ExactScene& s, const Q& eps,
-                                  const std::vector<std::string>& methods, const std::vector<int>& grid_ns, bool by_distance) {
+                                  const std::vector<std::string>& methods, const std::vector<int>& grid_ns, bool by_distance,
+                                  bool measures) {
     using Clock = std::chrono::steady_clock;
     auto t_exact = Clock::now();
     HullModel m = build_model(s);
@@ -190,7 +191,7 @@ std::vector<AuditRow> audit_scene(const std::string& name, const ExactScene& s, 
             if (v < 0 && exact[i] == Verdict::Separated) ++r.false_overlapping;
         }
         r.seconds_per_query = std::chrono::duration<double>(Clock::now() - t0).count() / static_cast<double>(r1.size());
-        measure_errors(*mm, m, r1, r2, exact, verdicts, cache, r);
+        if (measures) measure_errors(*mm, m, r1, r2, exact, verdicts, cache, r);
         if (by_distance) wrong_by_distance(*mm, near, r);
         rows.push_back(r);
     }

@@ -12,7 +12,7 @@ namespace scalecert::internal {
 // 2^-52 above and below the curve (their own 390 pairs; the other counts are unchanged).
 std::vector<AuditRow> audit_scene(const std::string& name, const ExactScene& s, const Q& eps,
                                   const std::vector<std::string>& methods, const std::vector<int>& grid_ns,
-                                  bool by_distance = false);
+                                  bool by_distance = false, bool measures = true);
 // The audit campaigns run (CampaignArgs::auditor): these baselines' methods and audit_scene.
 Auditor baseline_auditor();
 

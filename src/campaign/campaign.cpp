@@ -233,7 +233,7 @@ std::string run_shard(const CampaignArgs& a, const Shard& s) {
         // run's inputs, so that no shard computed from older contents is merged.
         j["inputs"] = reading([&] { sc = load_scene(p, a.opt); });  // its errors name the file already
         try {
-            rows = a.auditor.run(p, sc, Q(0), a.methods, a.grid, a.by_distance);
+            rows = a.auditor.run(p, sc, Q(0), a.methods, a.grid, a.by_distance, a.measures);
         } catch (const InputError& e) {
             throw InputError(p + ": " + e.what());
         }
@@ -241,7 +241,7 @@ std::string run_shard(const CampaignArgs& a, const Shard& s) {
         const Q eps(1, Z(1) << s.k);
         for (int i = s.first; i < s.last; ++i) {
             Rng g(scene_seed(a.seed, s.k, i));
-            auto r = a.auditor.run(a.family + "-" + std::to_string(i), make_family_scene(a.family, eps, g), eps, a.methods, a.grid, a.by_distance);
+            auto r = a.auditor.run(a.family + "-" + std::to_string(i), make_family_scene(a.family, eps, g), eps, a.methods, a.grid, a.by_distance, a.measures);
             rows.insert(rows.end(), r.begin(), r.end());
         }
     }
@@ -358,6 +358,7 @@ std::string campaign_identity(const CampaignArgs& a, const Json& inputs) {
         j["grid"] = a.grid;
         j["sweep"] = Json::array({a.sweep_from, a.sweep_to});
         j["binary_doubles"] = a.opt.binary_doubles;
+        if (!a.golden) j["measures"] = a.measures;
         j["by_distance"] = a.by_distance;
     }
     j["shard_size"] = a.shard_size;

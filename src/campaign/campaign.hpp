@@ -17,12 +17,12 @@
 namespace scalecert::internal {
 
 // What an audit runs: the floating-point methods' names, and the rows of one scene (name, scene,
-// ε, methods, grid resolutions, by_distance). The baselines provide it (baselines/audit.hpp:
+// ε, methods, grid resolutions, by_distance, measures). The baselines provide it (baselines/audit.hpp:
 // baseline_auditor); a build without them has none, and its audits are refused.
 struct Auditor {
     std::function<std::vector<std::string>()> method_names;
     std::function<std::vector<AuditRow>(const std::string&, const ExactScene&, const Q&, const std::vector<std::string>&,
-                                        const std::vector<int>&, bool)>
+                                        const std::vector<int>&, bool, bool)>
         run;
 };
 
@@ -40,6 +40,7 @@ struct CampaignArgs {
     std::string out, csv;              // audit: JSON (or standard output) and CSV files
     bool no_timing = false;            // audit: leave the timing columns out
     bool by_distance = false;          // audit: wrong verdicts by relative distance from the curve
+    bool measures = true;              // audit: the methods' distances and depths against the exact ones
     ReadOptions opt;
     Auditor auditor;   // audit: the methods (none without the baselines)
     int shard_size = 0;  // family scenes per shard; 0: 16 for golden, 4 for audits

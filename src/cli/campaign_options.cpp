@@ -32,6 +32,7 @@ void add_audit_options(CLI::App* sub, internal::CampaignArgs& a) {
     sub->add_flag("--binary-doubles", a.opt.binary_doubles, "read the scene files' numbers as IEEE doubles");
     sub->add_option("--out", a.out, "write the JSON to FILE (atomically) instead of standard output")->type_name("FILE")->check(file_name());
     sub->add_option("--csv", a.csv, "also write the rows as CSV to FILE (both files written together)")->type_name("FILE")->check(file_name());
+    sub->add_flag("!--no-measures", a.measures, "verdicts only: skip comparing the methods' distances and depths with the exact ones (proved at floating-point speed)");
     sub->add_flag("--by-distance", a.by_distance, "also count wrong verdicts at relative distances 2^-4 ... 2^-52 from the curve (JSON: by_distance)");
     sub->add_flag("--no-timing", a.no_timing, "leave the timing columns out: the rest is byte-identical on any number of processes");
 }
