@@ -215,7 +215,11 @@ BOOST_AUTO_TEST_CASE(claims_and_golden_data_through_the_public_api) {
     size_t lines = 0;
     for (char ch : g.csv) lines += ch == '\n';
     BOOST_TEST(lines == 1 + 7 * 13u);
-    BOOST_TEST(g.csv.rfind("rho1,rho2,where,verdict_at_doubles\n0.75,2.25,on,touching\n", 0) == 0);
+    BOOST_TEST(g.csv.rfind("rho1,rho2,where,verdict_at_doubles,measure,value\n0.75,2.25,on,touching,touching,0\n", 0) == 0);
+    // 2^-4 of f(3/4) = 9/4 above the curve they overlap by 9/64 = 0.140625 in z (the depth), and as
+    // far below they are that far apart.
+    BOOST_TEST(g.csv.find("0.75,2.390625,above 2^-4,overlapping,depth,0.140625\n0.75,2.109375,below 2^-4,separated,distance,0.140625\n") !=
+               std::string::npos);
     BOOST_TEST(g.json.find("\"verdict\": \"touching\"") != std::string::npos);
 }
 

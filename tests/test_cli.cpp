@@ -310,6 +310,18 @@ BOOST_AUTO_TEST_CASE(outputs_go_only_to_regular_files_and_directories_we_can_mak
     Run gu = run("golden --family bogus --dir " + (workdir() / "never-made").string());
     BOOST_TEST(gu.status == 2);
     BOOST_TEST(!fs::exists(workdir() / "never-made"));
+    // golden SCENES: each scene's files under its own name; two of one name, or none, refused
+    // before anything is written.
+    const std::string cubes = std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/stacked_cubes.json";
+    const fs::path gd = workdir() / "golden-scenes";
+    BOOST_TEST(run("golden " + cubes + " --dir " + gd.string()).status == 0);
+    BOOST_TEST(fs::exists(gd / "stacked_cubes.golden.csv"));
+    BOOST_TEST(slurp(gd / "stacked_cubes.golden.csv").find("0.75,2.25,on,touching,touching,0\n") != std::string::npos);
+    Run g2 = run("golden " + cubes + " " + cubes + " --dir " + (workdir() / "never-made-2").string());
+    BOOST_TEST(g2.status == 2);
+    BOOST_TEST(g2.err.find("two scenes named 'stacked_cubes'") != std::string::npos, g2.err);
+    BOOST_TEST(!fs::exists(workdir() / "never-made-2"));
+    BOOST_TEST(run("golden --dir " + (workdir() / "never-made-3").string()).status == 2);
 }
 
 BOOST_AUTO_TEST_CASE(claims_and_pairs_must_be_files_with_content) {

@@ -238,7 +238,10 @@ def test_golden_and_claims(tmp_path):
     # the first on the line at rho1 = 3/4, rho2 = 3 - 3/4 = 9/4; the same rows in the JSON.
     g, csv = stacked().golden()
     rows = csv.splitlines()
-    assert len(rows) == 1 + 7 * 13 and rows[1] == "0.75,2.25,on,touching"
+    assert len(rows) == 1 + 7 * 13 and rows[1] == "0.75,2.25,on,touching,touching,0"
+    # 2^-4 of 9/4 above the curve they overlap by 9/64 in z, and as far below they are 9/64 apart.
+    assert rows[2] == "0.75,2.390625,above 2^-4,overlapping,depth,0.140625"
+    assert g["queries"][2]["measure_at_doubles"] == {"kind": "distance", "squared": "81/4096", "value_double": 0.140625}
     assert len(g["queries"]) == 7 * 13 and g["queries"][0]["rho2"] == "9/4"
 
 

@@ -10,6 +10,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 namespace scalecert::internal {
@@ -62,10 +63,14 @@ std::string sha256_hex(const std::string& bytes) {
 
 void validate(const CampaignArgs& a) {
     if (a.golden) {
-        if (a.family.empty()) throw InputError("--family is required");
-        family_description(a.family);
+        if (a.family.empty() && a.scenes.empty()) throw InputError("golden: give SCENES, or --family");
+        if (!a.family.empty()) family_description(a.family);
         const Q eps = parse_exact(a.eps_text);
         if (sgn(eps) <= 0) throw InputError("--eps must be > 0");
+        std::set<std::string> stems;
+        for (const std::string& p : a.scenes)
+            if (!stems.insert(golden_stem(p)).second)
+                throw InputError("golden: two scenes named " + quoted(golden_stem(p)) + " (their files would be the same)");
         return;
     }
     if (!a.family.empty()) family_description(a.family);
@@ -91,16 +96,13 @@ std::vector<Shard> plan(const CampaignArgs& a) {
             out.push_back(s);
         }
     };
-    if (a.golden) {
-        ranges(0);
-        return out;
-    }
     for (size_t i = 0; i < a.scenes.size(); ++i) {
         Shard s{static_cast<int>(out.size())};
         s.scene_file = static_cast<int>(i);
         out.push_back(s);
     }
-    if (!a.family.empty())
+    if (a.golden && !a.family.empty()) ranges(0);
+    if (!a.golden && !a.family.empty())
         for (int k = a.sweep_from; k <= a.sweep_to; ++k) ranges(k);
     return out;
 }
@@ -194,26 +196,50 @@ Json reading(F&& f) {
 
 }  // namespace
 
+std::string golden_stem(const std::string& path) {
+    std::string b = path.substr(path.find_last_of('/') + 1);
+    if (b.size() > 5 && b.compare(b.size() - 5, 5, ".json") == 0) b.resize(b.size() - 5);
+    return b;
+}
+
+std::vector<std::pair<std::string, std::string>> golden_files(const std::string& stem, const ExactScene& s,
+                                                              const std::function<void(Json&)>& fields) {
+    HullModel m = build_model(s);
+    TouchingCurve c = build_curve(m);
+    GoldenAnswers a = golden_answers(s, m, c);
+    Json j = std::move(a.curve);
+    fields(j);
+    j["queries"] = std::move(a.queries);
+    return {{stem + ".scene.json", dump(scene_json(s))}, {stem + ".golden.json", dump(j)}, {stem + ".golden.csv", a.csv}};
+}
+
 std::vector<std::pair<std::string, std::string>> golden_scene(const std::string& family, int i, std::uint64_t scene_seed,
                                                               std::uint64_t run_seed, const Q& eps) {
     Rng g(scene_seed);
-    ExactScene s = make_family_scene(family, eps, g);
-    HullModel m = build_model(s);
-    TouchingCurve c = build_curve(m);
-    const std::string stem = family + "-" + std::to_string(i);
-    GoldenAnswers a = golden_answers(s, m, c);
-    Json j = std::move(a.curve);
-    j["family"] = family;
-    j["eps"] = to_exact_string(eps);
-    j["index"] = i;
-    j["seed"] = std::to_string(run_seed);
-    j["queries"] = std::move(a.queries);
-    return {{stem + ".scene.json", dump(scene_json(s))}, {stem + ".golden.json", dump(j)}, {stem + ".golden.csv", a.csv}};
+    const ExactScene s = make_family_scene(family, eps, g);
+    return golden_files(family + "-" + std::to_string(i), s, [&](Json& j) {
+        j["family"] = family;
+        j["eps"] = to_exact_string(eps);
+        j["index"] = i;
+        j["seed"] = std::to_string(run_seed);
+    });
 }
 
 std::string run_shard(const CampaignArgs& a, const Shard& s) {
     Json j;
     j["shard"] = s.index;
+    if (a.golden && s.scene_file >= 0) {  // a scene of the user's: its golden data beside its own name
+        const std::string& p = a.scenes[static_cast<size_t>(s.scene_file)];
+        ExactScene sc;
+        j["inputs"] = reading([&] { sc = load_scene(p, a.opt); });
+        Json files = Json::array();
+        for (const auto& [name, text] : golden_files(golden_stem(p), sc, [&](Json& g) { g["scene_file"] = p; })) {
+            write_file_atomically(a.dir + "/" + name, text);
+            files.push_back(Json::array({name, sha256_hex(text)}));
+        }
+        j["files"] = files;
+        return dump(j);
+    }
     if (a.golden) {
         const Q eps = parse_exact(a.eps_text);
         Json files = Json::array();

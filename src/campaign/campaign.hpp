@@ -88,6 +88,12 @@ std::string campaign_identity(const CampaignArgs& a, const Json& inputs);
 // the same hash; "" when there is none (golden and family shards record none).
 std::string stale_input(const Json& inputs, const std::string& shard_text);
 
+// A scene's golden files under a stem: STEM.scene.json (the scene exactly), STEM.golden.json (the
+// curve, `fields` added, and the queries of golden_answers) and STEM.golden.csv, by name and text.
+std::vector<std::pair<std::string, std::string>> golden_files(const std::string& stem, const ExactScene& s,
+                                                              const std::function<void(Json&)>& fields);
+// A user's scene file's stem: its file name without ".json" (golden SCENES... names its files so).
+std::string golden_stem(const std::string& path);
 // Scene i of a family with its exact answers, drawn with scene_seed (campaign.hpp derives it from
 // the run's seed): the files NAME-i.scene.json, NAME-i.golden.json and NAME-i.golden.csv, by name
 // and text. The golden JSON records the run's seed and i.

@@ -8,8 +8,10 @@ namespace scalecert::internal {
 
 // The curve document (curve_json), and its "queries": at 7 values of ρ1 spread over I1 and at every
 // switch point, the pair on the curve and the pairs above and below it at relative distances 2^-k
-// (k = 4, 12, 20, 30, 40, 52), each with its exact verdict and the exact verdict of its nearest
-// doubles ("verdict_at_doubles"). The CSV holds those doubles and verdicts, one pair a line.
+// (k = 4, 12, 20, 30, 40, 52), each with its exact verdict and, at its nearest doubles, the exact
+// verdict ("verdict_at_doubles") and the exact distance or penetration depth ("measure_at_doubles":
+// kind distance, depth or touching, the exact square and its root as an MPFR-rounded double).
+// The CSV holds those doubles, verdicts and roots, one pair a line.
 struct GoldenAnswers {
     Json curve, queries;
     std::string csv;

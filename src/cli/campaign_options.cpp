@@ -9,8 +9,9 @@ namespace scalecert::cli {
 
 void add_golden_options(CLI::App* sub, internal::CampaignArgs& a) {
     a.golden = true;
-    sub->add_option("--family", a.family, "random | parallel-faces | nearly-equal-slopes | nearly-parallel-edges | vertex-vertex | far-from-origin | sliver | near-sphere")->required();
-    sub->add_option("--count", a.count, "how many scenes (1 to 10^7)")->check(CLI::Range(1, 10000000));
+    sub->add_option("SCENES", a.scenes, "your own scene files: golden data for each (NAME.golden.json and .csv, NAME its file name without .json)");
+    sub->add_option("--family", a.family, "random | parallel-faces | nearly-equal-slopes | nearly-parallel-edges | vertex-vertex | far-from-origin | sliver | near-sphere");
+    sub->add_option("--count", a.count, "how many scenes of the family (1 to 10^7)")->check(CLI::Range(1, 10000000));
     sub->add_option("--seed", a.seed, "the run's random seed (scene i's own seed is derived from it and i)");
     sub->add_option("--eps", a.eps_text, "degeneracy parameter (exact, default 2^-20)");
     sub->add_option("--dir", a.dir, "output directory (created): NAME-i.scene.json, NAME-i.golden.json, NAME-i.golden.csv")->required()->check(file_name());
