@@ -290,7 +290,7 @@ bool shard_outputs_intact(const CampaignArgs& a, const std::string& shard_text) 
 }
 
 long finish_campaign(const CampaignArgs& a, const std::vector<std::string>& shard_texts) {
-    if (a.golden) return a.count;
+    if (a.golden) return static_cast<long>(a.scenes.size()) + (a.family.empty() ? 0 : a.count);
     std::vector<AuditRow> rows;
     for (const std::string& t : shard_texts) {
         const Json doc = Json::parse(t);  // (kept: a range over a temporary's member dangles)
@@ -339,8 +339,7 @@ void write_golden(const std::string& family, int count, std::uint64_t seed, cons
 
 Json campaign_inputs(const CampaignArgs& a) {
     Json files = Json::array();
-    if (a.golden) return files;
-    for (const std::string& p : a.scenes) {
+    for (const std::string& p : a.scenes) {  // (golden and audit alike)
         if (p == "-") throw InputError("standard input cannot be a scene of a resumable run (its contents could not be checked on --resume)");
         for (const Json& f : reading([&] { load_scene(p, a.opt); })) files.push_back(f);
     }
