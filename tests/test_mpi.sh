@@ -34,6 +34,11 @@ for np in 1 2 3; do
   grep -q "on $np ranks" "log$np" || fail "no summary on $np ranks"
   echo "ok: $np ranks give the one-process bytes"
 done
+# golden for the user's own scene files: the same files on 2 ranks as in one process.
+"$CLI" golden "$S/stacked_cubes.json" "$S/tetra_box_switch.json" --dir one-gs 2>/dev/null
+run_mpi 2 golden "$S/stacked_cubes.json" "$S/tetra_box_switch.json" --dir gs2 --run rgs2 2>log-gs
+diff -r one-gs gs2 >/dev/null && grep -q ": 2 scenes; merge" log-gs || fail "golden SCENES on 2 ranks differs: $(tail -1 log-gs)"
+echo "ok: golden SCENES on 2 ranks gives the one-process bytes"
 
 # Interrupted after 3 shards (as if killed: exit 3, no output), then resumed.
 set +e
