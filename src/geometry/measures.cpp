@@ -1,5 +1,6 @@
 #include "geometry/measures.hpp"
 
+#include <algorithm>
 #include <map>
 #include <stdexcept>
 
@@ -189,19 +190,36 @@ struct Epa {
     // Runs to the end; the index of the nearest triangle.
     size_t run() {
         start();
+        // The live triangles in a heap, nearest on top (dead ones dropped when they surface).
+        auto farther = [this](size_t a, size_t b) { return nearer(tris[b], tris[a]); };
+        std::vector<size_t> heap;
+        for (size_t t = 0; t < tris.size(); ++t) heap.push_back(t);
+        std::make_heap(heap.begin(), heap.end(), farther);
         for (;;) {
-            size_t best = tris.size();
-            for (size_t k = 0; k < tris.size(); ++k)
-                if (tris[k].alive && (best == tris.size() || nearer(tris[k], tris[best]))) best = k;
+            while (!tris[heap.front()].alive) {
+                std::pop_heap(heap.begin(), heap.end(), farther);
+                heap.pop_back();
+            }
+            const size_t best = heap.front();
             const MPoint p = support_M(primitive(tris[best].N));
             if (!visible(tris[best], p.z)) return best;  // the plane supports M: a face of M
             const int k = add_point(p);
-            // Remove every face the point sees, and close the hole with a fan from the horizon.
+            // Remove every face the point sees — a connected patch around the best one, as K is
+            // convex — and close the hole with a fan from its boundary (the horizon).
+            std::vector<size_t> seen{best};
+            tris[best].alive = false;
+            for (size_t q = 0; q < seen.size(); ++q)
+                for (int e = 0; e < 3; ++e) {
+                    const Tri& t = tris[seen[q]];
+                    const auto other = edge.find({t.v[static_cast<size_t>((e + 1) % 3)], t.v[static_cast<size_t>(e)]});
+                    if (other == edge.end()) continue;
+                    Tri& u = tris[other->second];
+                    if (u.alive && visible(u, p.z)) {
+                        u.alive = false;
+                        seen.push_back(other->second);
+                    }
+                }
             std::vector<std::pair<int, int>> horizon;
-            std::vector<size_t> seen;
-            for (size_t t = 0; t < tris.size(); ++t)
-                if (tris[t].alive && visible(tris[t], p.z)) seen.push_back(t);
-            for (size_t t : seen) tris[t].alive = false;
             for (size_t t : seen)
                 for (int e = 0; e < 3; ++e) {
                     const int a = tris[t].v[static_cast<size_t>(e)], b = tris[t].v[static_cast<size_t>((e + 1) % 3)];
@@ -213,7 +231,11 @@ struct Epa {
                     const auto it = edge.find({tris[t].v[static_cast<size_t>(e)], tris[t].v[static_cast<size_t>((e + 1) % 3)]});
                     if (it != edge.end() && it->second == t) edge.erase(it);
                 }
-            for (const auto& [a, b] : horizon) add_tri(a, b, k);
+            for (const auto& [a, b] : horizon) {
+                add_tri(a, b, k);
+                heap.push_back(tris.size() - 1);
+                std::push_heap(heap.begin(), heap.end(), farther);
+            }
         }
     }
 };
