@@ -33,6 +33,13 @@ BOOST_AUTO_TEST_CASE(binary_doubles_are_dyadic) {
     // 0.1 as a double is 3602879701896397 / 2^55.
     BOOST_TEST(exact_from_double(0.1) == Q(Z(3602879701896397), Z(1) << 55));
     BOOST_CHECK_THROW(exact_from_double(std::nan("")), InputError);
+    // Read as a double, a token is the whole text: strtod stops at a NUL, the token does not (the
+    // claims fuzzer read "1<NUL>02" as 1), nor at trailing junk.
+    BOOST_TEST(parse_number("0.1", true) == exact_from_double(0.1));
+    BOOST_CHECK_THROW(parse_number(std::string("1\0" "02", 4), true), InputError);
+    BOOST_CHECK_THROW(parse_number("1x", true), InputError);
+    BOOST_CHECK_THROW(parse_number(" 1", true), InputError);
+    BOOST_CHECK_THROW(parse_number("", true), InputError);
 }
 
 BOOST_AUTO_TEST_CASE(display_doubles_are_correctly_rounded) {

@@ -70,7 +70,7 @@ private:
     const HullModel& m() const { return models_.model(); }  // the hull model: built on first use
     const TouchingCurve& c() const { return models_.curve(); }
     ClaimOptions opt_;
-    bool prove_;  // every facet normal, for depths (built on first use)
+    bool prove_;  // write the proof of each judgement (certify-fp --certificate)
     struct ExactSwitch { Q rho1, rho2; std::string label; };
     std::optional<std::vector<ExactSwitch>> switches_;  // the exact switch points (built on first use)
 

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cerrno>
+#include <cctype>
 #include <cstring>
 #include <algorithm>
 #include <fcntl.h>
@@ -176,7 +177,9 @@ Q parse_number(const std::string& text, bool binary_doubles) {
     if (!binary_doubles) return parse_exact(text);
     char* end = nullptr;
     double d = std::strtod(text.c_str(), &end);
-    if (text.empty() || end == text.c_str() || *end != '\0') throw InputError(quoted(text) + " is not a number");
+    // (The whole text: a NUL inside it ends strtod's reading, not the token.)
+    if (text.empty() || end != text.c_str() + text.size() || std::isspace(static_cast<unsigned char>(text[0])))
+        throw InputError(quoted(text) + " is not a number");
     return exact_from_double(d);
 }
 

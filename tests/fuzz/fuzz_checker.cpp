@@ -2,6 +2,7 @@
 // never crash, and what it accepts must be true: for an accepted file, the engine recomputes the
 // answer for the scene stored in it and every claim compared here must agree.
 #include "fuzz_common.hpp"
+#include "certify/claims.hpp"
 
 namespace {
 using J = nlohmann::json;
@@ -26,6 +27,22 @@ void compare_with_engine(const J& c) {
         Q r1(exact(c.at("rho1"))), r2(exact(c.at("rho2")));
         if (verdict_name(query(m, cv, r1, r2, false).verdict) != c.at("verdict").get<std::string>())
             fuzz::finding("the checker accepted a wrong verdict");
+        return;
+    }
+    if (c.at("kind") == "judgements") {  // every judgement stated must be the engine's for its claim
+        J doc{{"format", "scalecert-claims-1"}, {"claims", J::array()}};
+        for (const J& e : c.at("judgements")) doc["claims"].push_back(e.at("claim"));
+        long wrong = 0;
+        std::string report;
+        try {
+            report = certify_fp(ClaimModels::of(m, cv), doc.dump(), "fuzz", ClaimOptions{true, Q(exact(c.at("tolerance"))), true}, &wrong);
+        } catch (const InputError& e) {
+            fuzz::finding(std::string("the checker accepted claims the engine refuses: ") + e.what());
+        }
+        const J r = J::parse(report);
+        for (size_t k = 0; k < c.at("judgements").size(); ++k)
+            if (r.at("claims")[k].at("right") != c.at("judgements")[k].at("right"))
+                fuzz::finding("the checker accepted a wrong judgement at " + std::to_string(k));
         return;
     }
     if (exact(c.at("growth_distance")) != to_exact_string(cv.growth.value)) fuzz::finding("the checker accepted a wrong growth distance");

@@ -48,6 +48,7 @@ void check_right_claims(const Fixed& f, const test::Brute& b, const std::string&
     } catch (const nlohmann::json::exception&) {
         return;
     }
+    if (!in.is_object() || !in.contains("claims") || !in["claims"].is_array()) return;  // (text with a NUL can parse as "1")
     for (const auto& r : out["claims"]) {
         if (!r["right"].get<bool>()) continue;
         const auto& cl = in["claims"][r["index"].get<size_t>()];
