@@ -552,6 +552,13 @@ BOOST_AUTO_TEST_CASE(certify_fp_exit_status_gates_ci) {
     BOOST_TEST(run("certify-fp " + sc + " " + js.string() + " --exact-decimals").status == 1);
     fs::path str = write("str.json", R"({"format": "scalecert-claims-1", "claims": [{"kind": "verdict", "rho1": "0.1", "rho2": "2.9", "verdict": "touching"}]})");
     BOOST_TEST(run("certify-fp " + sc + " " + str.string()).status == 0);
+    // A nonzero decimal that is 0 as a double was no double the program held: said so, exit 2.
+    fs::path tiny = write("tiny.json", R"({"format": "scalecert-claims-1", "claims": [{"kind": "verdict", "rho1": 1e-400, "rho2": 1, "verdict": "touching"}]})");
+    expect_error("underflowing claim", "certify-fp " + sc + " " + tiny.string(), "'1e-400' is 0 as a double");
+    // The report and the certificate under one name: refused before either is written.
+    // (expect_error adds --out WORKDIR/out.json and checks that nothing was written there.)
+    expect_error("certificate over the report", "certify-fp " + sc + " " + js.string() + " --certificate " + (workdir() / "out.json").string(),
+                 "two outputs name the same file");
 }
 
 BOOST_AUTO_TEST_CASE(every_subcommand_help_shows_an_example) {

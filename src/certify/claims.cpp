@@ -93,11 +93,17 @@ private:
     }
     Q number(const JNode& n, const std::string& key) const {
         if (n.kind != JNode::Number && n.kind != JNode::String) fail(key, "expected a number or a string such as \"3/7\"");
+        const bool as_double = !opt_.exact_decimals && n.kind == JNode::Number;
+        Q q;
         try {
-            return parse_number(n.text, !opt_.exact_decimals && n.kind == JNode::Number);
+            q = parse_number(n.text, as_double);
         } catch (const InputError& e) {
             fail(key, e.what());
         }
+        // A nonzero decimal that is 0 as a double (1e-400) was never a double the program held.
+        if (as_double && sgn(q) == 0 && n.text.find_first_of("123456789") < n.text.find_first_of("eE"))
+            fail(key, quoted(n.text) + " is 0 as a double (it underflows): write it as a string, \"" + n.text + "\", for its exact value");
+        return q;
     }
     Q field(const JNode& o, const char* key) const { return number(need(o, key), key); }
     Vec3q point(const JNode& n, const std::string& key) const {

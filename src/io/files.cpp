@@ -1,5 +1,7 @@
 #include "io/files.hpp"
 
+#include <filesystem>
+
 #include <algorithm>
 #include <cerrno>
 #include <cstdio>
@@ -144,6 +146,16 @@ std::string write_temporary(const std::string& path, const std::string& text) {
 }  // namespace
 
 void write_files_atomically(const std::vector<std::pair<std::string, std::string>>& files) {
+    // Two outputs under one name (--out x --csv x, --out x --certificate x): the second would
+    // replace the first. Compared as absolute, normalised paths (symbolic links to an existing
+    // file followed), before anything is written.
+    for (size_t i = 0; i < files.size(); ++i)
+        for (size_t k = i + 1; k < files.size(); ++k) {
+            std::error_code e1, e2;
+            const auto a = std::filesystem::weakly_canonical(files[i].first, e1), b = std::filesystem::weakly_canonical(files[k].first, e2);
+            if (files[i].first == files[k].first || (!e1 && !e2 && a == b))
+                throw InputError(files[k].first + ": two outputs name the same file");
+        }
     std::vector<std::string> tmps;
     try {
         for (const auto& [path, text] : files) tmps.push_back(write_temporary(path, text));
