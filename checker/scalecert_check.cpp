@@ -868,22 +868,41 @@ std::string switch_contact(const Scene& sc, const V3& n, const V3& m, const Q rh
     return label;
 }
 
-void check_partition(const J& c) {
-    shape(c, "", {"format", "kind", "pieces", "switch_points", "growth_distance", "growth_distance_double",
-                  "growth_distance_in_rectangle", "curve_ends", "growth_distance_certificate", "regions", "seed_interior", "scene"},
-          {"model", "growth_distance_note"});
-    const Scene sc = read_scene(at(c, "scene"));
-    check_seed_interior(sc, at(c, "seed_interior"));
-    if (c.contains("model")) check_model(at(c, "model"));
-    const J& pieces = at(c, "pieces");
-    claim(pieces.is_array() && !pieces.empty(), "pieces is a nonempty list");
+// The curve over [lo, hi] (a partition's over I1, a judgement's proof over its window): the
+// "pieces", "switch_points" and "curve_ends" of c. Each piece's line, from a normal's support
+// values, is a lower bound of the curve f everywhere (below it that normal separates); the
+// witnesses at the switch points and ends (common points) bound f above there, and the set of
+// meeting pairs is convex, so f is each piece's line over the piece's range. Where a piece falls
+// to rho2 = 0 a witness there (s2 in P1(x0)) shows f <= 0 from x0 on. Slopes increase from piece
+// to piece, so every switch point listed is a break of f, and there is no other in (lo, hi).
+// `pre` prefixes the messages; range_name names [lo, hi] in them.
+struct CurveFacts {
     std::vector<Line> lines;
     std::vector<V3> normals;
     std::vector<std::array<Q, 2>> ranges;
+    std::vector<std::string> contacts;  // each piece's contact label; empty where rho2 <= 0 all along it
+    struct Switch { Q x, y; std::string contact; };
+    std::vector<Switch> switches;  // in increasing rho1, all with rho2 > 0
+    Q end_rho2[2];
+    // The piece holding x in [lo, hi] (at a switch point, the one to its right).
+    size_t piece_at(const Q& x) const {
+        size_t k = 0;
+        while (k + 1 < ranges.size() && x >= ranges[k][1]) ++k;
+        return k;
+    }
+    Q at(const Q& x) const { return lines[piece_at(x)].at(x); }
+};
+CurveFacts check_curve(const Scene& sc, const J& c, const Q& lo, const Q& hi, const std::string& pre, const std::string& range_name) {
+    const J& pieces = at(c, "pieces");
+    claim(pieces.is_array() && !pieces.empty(), pre + "pieces is a nonempty list");
+    CurveFacts cf;
+    std::vector<Line>& lines = cf.lines;
+    std::vector<V3>& normals = cf.normals;
+    std::vector<std::array<Q, 2>>& ranges = cf.ranges;
     std::vector<std::array<const std::vector<int>*, 2>> maxi;  // each piece's maximisers on P1, P2 (in the scene's cache)
     for (size_t k = 0; k < pieces.size(); ++k) {
         const J& p = pieces[k];
-        std::string w = "pieces[" + std::to_string(k) + "]";
+        std::string w = pre + "pieces[" + std::to_string(k) + "]";
         claim(p.is_object() && p.contains("contact"), w + ".contact is present");
         const bool touches = !at(p, "contact").is_null();
         if (touches)
@@ -895,6 +914,7 @@ void check_partition(const J& c) {
                          "normal", "h1", "h1_double", "h2", "h2_double", "support_vertices"},
                   {"closed_form", "same_line_normals", "zero_witness"});
         annotation_string(p, "closed_form", w);
+        cf.contacts.emplace_back();
         V3 n = normal(at(p, "normal"), w + ".normal");
         mpz_class H[2];  // D* h1, D* h2
         const std::vector<int>* f[2];
@@ -958,6 +978,7 @@ void check_partition(const J& c) {
             const std::string label{dimension_letter(sc, 0, *G[0]), dimension_letter(sc, 1, *G[1])};
             claim(contact_string(at(p, "contact"), w + ".contact") == label,
                   w + ".contact is " + label + ", the smallest faces holding the touching set");
+            cf.contacts.back() = label;
             const J& feats = at(p, "features");
             shape(feats, w + ".features", {"P1", "P2"});
             std::vector<int> used[2];
@@ -989,12 +1010,12 @@ void check_partition(const J& c) {
         maxi.push_back({f[0], f[1]});
         ranges.push_back({r[0], r[1]});
     }
-    claim(ranges.front()[0] == sc.lo[0] && ranges.back()[1] == sc.hi[0], "the pieces cover I1 from end to end");
+    claim(ranges.front()[0] == lo && ranges.back()[1] == hi, pre + "pieces cover " + range_name + " from end to end");
     const J& sw = at(c, "switch_points");
-    claim(sw.is_array() && sw.size() + 1 == pieces.size(), "one switch point between each two pieces");
+    claim(sw.is_array() && sw.size() + 1 == pieces.size(), pre + "switch_points: one between each two pieces");
     for (size_t k = 0; k + 1 < pieces.size(); ++k) {
-        std::string w = "switch_points[" + std::to_string(k) + "]";
-        claim(ranges[k][1] == ranges[k + 1][0], "pieces " + std::to_string(k) + " and " + std::to_string(k + 1) + " are contiguous");
+        std::string w = pre + "switch_points[" + std::to_string(k) + "]";
+        claim(ranges[k][1] == ranges[k + 1][0], pre + "pieces " + std::to_string(k) + " and " + std::to_string(k + 1) + " are contiguous");
         claim(lines[k].a < lines[k + 1].a, "the curve is convex: slopes increase at " + w);
         claim(sw[k].is_object() && sw[k].contains("rho2") && sw[k]["rho2"].is_string(), w + ".rho2 is present");
         const bool touching = sgn(num(sw[k]["rho2"], w + ".rho2")) > 0;
@@ -1017,6 +1038,7 @@ void check_partition(const J& c) {
         const Q rho[2] = {x, y};
         const std::string label = switch_contact(sc, normals[k], normals[k + 1], rho, A, g, w);
         claim(contact_string(at(sw[k], "contact"), w + ".contact") == label, w + ".contact is " + label + ", the features touching there");
+        cf.switches.push_back({x, y, label});
         const J& feats = at(sw[k], "features");
         shape(feats, w + ".features", {"P1", "P2"});
         for (int i = 0; i < 2; ++i)
@@ -1024,9 +1046,9 @@ void check_partition(const J& c) {
                 claim(has(g[i], v), w + ".features lists only vertices of the contact feature");
     }
     const J& ends = at(c, "curve_ends");
-    claim(ends.is_array() && ends.size() == 2, "curve_ends has the two ends");
+    claim(ends.is_array() && ends.size() == 2, pre + "curve_ends has the two ends");
     for (int e = 0; e < 2; ++e) {
-        std::string w = "curve_ends[" + std::to_string(e) + "]";
+        std::string w = pre + "curve_ends[" + std::to_string(e) + "]";
         claim(ends[e].is_object() && ends[e].contains("rho2") && ends[e]["rho2"].is_string(), w + ".rho2 is present");
         const bool touching = sgn(num(ends[e]["rho2"], w + ".rho2")) > 0;
         // A curve at or below ρ2 = 0 already at lo1 is anchored by a witness at (lo1, 0): the seed s2
@@ -1037,12 +1059,26 @@ void check_partition(const J& c) {
         else shape(ends[e], w, {"rho1", "rho1_double", "rho2", "rho2_double"});
         Q x = field(ends[e], "rho1", w), y = field(ends[e], "rho2", w);
         const Line& L = e == 0 ? lines.front() : lines.back();
-        claim(x == (e == 0 ? sc.lo[0] : sc.hi[0]) && y == L.at(x), w + " is the curve at the end of I1");
+        claim(x == (e == 0 ? lo : hi) && y == L.at(x), w + " is the curve at the end of " + range_name);
+        cf.end_rho2[e] = y;
         if (touching) claim(check_witness(sc, at(ends[e], "witness"), w + ".witness") == P2{x, y}, w + " is touching");
         else if (anchored)
             claim(check_witness(sc, at(ends[e], "witness"), w + ".witness") == P2{x, Q(0)},
-                  w + ".witness is at (lo1, 0): the seed of P2 lies in P1(lo1)");
+                  w + ".witness is at (rho1, 0): the seed of P2 lies in P1(rho1)");
     }
+    return cf;
+}
+
+void check_partition(const J& c) {
+    shape(c, "", {"format", "kind", "pieces", "switch_points", "growth_distance", "growth_distance_double",
+                  "growth_distance_in_rectangle", "curve_ends", "growth_distance_certificate", "regions", "seed_interior", "scene"},
+          {"model", "growth_distance_note"});
+    const Scene sc = read_scene(at(c, "scene"));
+    check_seed_interior(sc, at(c, "seed_interior"));
+    if (c.contains("model")) check_model(at(c, "model"));
+    const CurveFacts cf = check_curve(sc, c, sc.lo[0], sc.hi[0], "", "I1");
+    const std::vector<Line>& lines = cf.lines;
+    const std::vector<std::array<Q, 2>>& ranges = cf.ranges;
     // Growth distance: (ρ*, ρ*) touches — the plane of n has n.d = ρ*(h1 + h2) and a witness — or
     // the seeds coincide and ρ* = 0.
     Q g = field(c, "growth_distance", "");
@@ -1265,6 +1301,159 @@ void check_lower_bound(const Scene& sc, const Q& r1, const Q& r2, const Q& E, co
         claim(edges.count({e.second, e.first}) == 1, where + ".triangles form a closed surface (every edge is shared with opposite orientation)");
 }
 
+// A curve proof: the exact curve over its window [a, b] (check_curve), 0 <= a < b.
+struct Window {
+    CurveFacts f;
+    Q a, b;
+    // f <= 0 at b: nothing touches from b on, so no switch point lies beyond it.
+    bool reaches_zero() const { return sgn(f.end_rho2[1]) <= 0; }
+};
+Window curve_window(const Scene& sc, const J& pr, const std::string& wp) {
+    shape(pr, wp, {"rho1", "rho1_double", "pieces", "switch_points", "curve_ends"});
+    const std::vector<Q> r = fields(pr, "rho1", 2, wp);
+    claim(sgn(r[0]) >= 0 && r[0] < r[1], wp + ".rho1 is a window [a, b] with 0 <= a < b");
+    return {check_curve(sc, pr, r[0], r[1], wp + ".", wp + ".rho1"), r[0], r[1]};
+}
+std::pair<Q, Q> scaling_pair(const J& j, const std::string& where) {
+    claim(j.is_array() && j.size() == 2, where + " is [rho1, rho2]");
+    const Q x = num(j[0], where), y = num(j[1], where);
+    claim(sgn(x) > 0 && sgn(y) > 0, where + " has scalings > 0");
+    return {x, y};
+}
+std::string claimed_contact(const J& o, const std::string& where) {
+    const std::string c = contact_string(at(o, "contact"), where + ".contact");
+    claim(c.find_first_not_of("VEF") == std::string::npos, where + ".contact is two of V, E, F");
+    return c;
+}
+
+// A curve claim, by CLAIMS.md's "Curve claims" (rules 1-4), against the curve proved over a
+// window holding the claimed range [lo, hi] with room on both sides (so every switch point of f
+// in the closed range is known, and whether lo or hi is one).
+bool judge_curve(const Rules& R, const J& cl, const Window& W, const std::string& wc, const std::string& wp) {
+    struct Seg { Q x0, y0, x1, y1; std::optional<std::string> label; };
+    std::vector<Seg> segs;
+    std::vector<std::pair<Q, Q>> claimed;  // the claimed switch points
+    if (cl.contains("vertices")) {
+        shape(cl, wc, {"kind", "vertices"}, {"switch_points"});
+        const J& v = at(cl, "vertices");
+        claim(v.is_array() && v.size() >= 2, wc + ".vertices has at least 2 points");
+        std::vector<std::pair<Q, Q>> p;
+        for (size_t i = 0; i < v.size(); ++i) p.push_back(scaling_pair(v[i], wc + ".vertices[" + std::to_string(i) + "]"));
+        for (size_t i = 0; i + 1 < p.size(); ++i) {
+            claim(p[i].first < p[i + 1].first, wc + ".vertices: rho1 increases");
+            segs.push_back({p[i].first, p[i].second, p[i + 1].first, p[i + 1].second, std::nullopt});
+        }
+        for (size_t i = 1; i + 1 < p.size(); ++i)  // bends: where the polyline's slope changes
+            if ((p[i].second - p[i - 1].second) * (p[i + 1].first - p[i].first) != (p[i + 1].second - p[i].second) * (p[i].first - p[i - 1].first))
+                claimed.push_back(p[i]);
+    } else {
+        shape(cl, wc, {"kind", "pieces"}, {"switch_points"});
+        const J& ps = at(cl, "pieces");
+        claim(ps.is_array() && !ps.empty(), wc + ".pieces is a nonempty list");
+        for (size_t i = 0; i < ps.size(); ++i) {
+            const std::string w = wc + ".pieces[" + std::to_string(i) + "]";
+            shape(ps[i], w, {"rho1", "slope", "intercept"}, {"contact"});
+            const J& r = at(ps[i], "rho1");
+            claim(r.is_array() && r.size() == 2, w + ".rho1 is [from, to]");
+            const Q x0 = num(r[0], w + ".rho1"), x1 = num(r[1], w + ".rho1");
+            const Q a = num(at(ps[i], "slope"), w + ".slope"), b = num(at(ps[i], "intercept"), w + ".intercept");
+            claim(sgn(x0) > 0 && x0 < x1, w + ".rho1 is a range of scalings > 0");
+            claim(segs.empty() || x0 == segs.back().x1, w + " starts where the piece before ends");
+            const Q y0 = a * x0 + b, y1 = a * x1 + b;
+            claim(sgn(y0) > 0 && sgn(y1) > 0, w + " stays at rho2 > 0");
+            if (!segs.empty()) claimed.push_back({x0, segs.back().y1});  // the value there is the left piece's
+            std::optional<std::string> label;
+            if (ps[i].contains("contact")) label = claimed_contact(ps[i], w);
+            segs.push_back({x0, y0, x1, y1, label});
+        }
+    }
+    const Q lo = segs.front().x0, hi = segs.back().x1;
+    if (cl.contains("switch_points")) {
+        const J& sw = at(cl, "switch_points");
+        claim(sw.is_array(), wc + ".switch_points is a list");
+        claimed.clear();
+        for (size_t i = 0; i < sw.size(); ++i) {
+            const auto p = scaling_pair(sw[i], wc + ".switch_points[" + std::to_string(i) + "]");
+            claim(lo <= p.first && p.first <= hi, wc + ".switch_points lie in the claimed range");
+            claimed.push_back(p);
+        }
+    }
+    claim(W.a < lo && hi < W.b, wp + ".rho1 holds the claimed range with room on both sides");
+    const CurveFacts& f = W.f;
+    // 1. f > 0 over the range: f descends, so at hi.
+    const bool positive = sgn(f.at(hi)) > 0;
+    // 2. The values, at the segments' ends and at f's switch points inside them.
+    bool within = true;
+    for (const Seg& s : segs) {
+        within = within && R.close(s.y0, f.at(s.x0)) && R.close(s.y1, f.at(s.x1));
+        for (const auto& sw : f.switches)
+            if (s.x0 < sw.x && sw.x < s.x1) within = within && R.close(s.y0 + (s.y1 - s.y0) * (sw.x - s.x0) / (s.x1 - s.x0), sw.y);
+    }
+    // 3. Switch points: exact ones in [lo, hi] paired with claimed ones, each the other's nearest
+    // in rho1 (ties: the first listed).
+    std::vector<const CurveFacts::Switch*> exact;
+    for (const auto& sw : f.switches)
+        if (lo <= sw.x && sw.x <= hi) exact.push_back(&sw);
+    auto nearest_claimed = [&](const Q& x) {
+        size_t b = 0;
+        for (size_t i = 1; i < claimed.size(); ++i)
+            if (abs(claimed[i].first - x) < abs(claimed[b].first - x)) b = i;
+        return b;
+    };
+    auto nearest_exact = [&](const Q& x) {
+        size_t b = 0;
+        for (size_t i = 1; i < exact.size(); ++i)
+            if (abs(exact[i]->x - x) < abs(exact[b]->x - x)) b = i;
+        return b;
+    };
+    bool switches_right = true;
+    std::vector<bool> used(claimed.size(), false);
+    for (size_t i = 0; i < exact.size(); ++i) {
+        const bool at_end = exact[i]->x == lo || exact[i]->x == hi;
+        size_t k = 0;
+        if (claimed.empty() || nearest_exact(claimed[k = nearest_claimed(exact[i]->x)].first) != i) {
+            if (!at_end) switches_right = false;  // missed
+            continue;
+        }
+        used[k] = true;
+        if (!R.close(claimed[k].first, exact[i]->x) || !R.close(claimed[k].second, exact[i]->y)) switches_right = false;  // misplaced
+    }
+    for (bool u : used) switches_right = switches_right && u;  // none extra
+    // 4. Each claimed contact is f's at its segment's midpoint (a switch point's there).
+    bool contacts_right = true;
+    for (const Seg& s : segs) {
+        if (!s.label) continue;
+        const Q mid = (s.x0 + s.x1) / 2;
+        std::string e = positive ? f.contacts[f.piece_at(mid)] : std::string("none");
+        for (const auto& sw : f.switches)
+            if (sw.x == mid) e = sw.contact;
+        contacts_right = contacts_right && *s.label == e;
+    }
+    return positive && within && switches_right && contacts_right;
+}
+
+// A switch-point claim: right when the exact switch point nearest in rho1 (ties: the smaller
+// rho1) lies within the tolerance in both coordinates, with the claimed contact. The window must
+// hold every rho1 as near to the claim as that one (or reach rho1 = 0, or rho2 <= 0, on its side):
+// then no nearer one exists. With no switch point at all, the window spans 0 to rho2 <= 0.
+bool judge_switch_point(const Rules& R, const J& cl, const Window& W, const std::string& wc, const std::string& wp) {
+    shape(cl, wc, {"kind", "rho1", "rho2"}, {"contact"});
+    const Q c1 = positive(cl, "rho1", wc), c2 = positive(cl, "rho2", wc);
+    std::optional<std::string> label;
+    if (cl.contains("contact")) label = claimed_contact(cl, wc);
+    const CurveFacts::Switch* best = nullptr;
+    for (const auto& sw : W.f.switches)
+        if (!best || abs(sw.x - c1) < abs(best->x - c1)) best = &sw;
+    if (!best) {
+        claim(sgn(W.a) == 0 && W.reaches_zero(), wp + ": with no switch point in it, the window spans rho1 = 0 to rho2 <= 0");
+        return false;
+    }
+    const Q delta = abs(best->x - c1);
+    claim(sgn(W.a) == 0 || W.a < c1 - delta, wp + ".rho1 starts below every rho1 as near to the claim as the nearest switch point");
+    claim(W.reaches_zero() || c1 + delta < W.b, wp + ".rho1 ends beyond every rho1 as near to the claim as the nearest switch point");
+    return R.close(c1, best->x) && R.close(c2, best->y) && (!label || *label == best->contact);
+}
+
 // One judgement; returns whether the claim is right by the rules.
 bool judge(const Scene& sc, const Rules& R, const J& cl, const J& pr, const std::string& where) {
     claim(cl.is_object() && cl.contains("kind") && cl["kind"].is_string(), where + ".claim has a kind");
@@ -1392,13 +1581,24 @@ bool judge(const Scene& sc, const Rules& R, const J& cl, const J& pr, const std:
         }
         return right;
     }
-    claim(false, wc + ".kind is verdict, growth_distance, separating_plane, witness_point, distance or penetration_depth");
+    if (kind == "curve") return judge_curve(R, cl, curve_window(sc, pr, wp), wc, wp);
+    if (kind == "switch_point") return judge_switch_point(R, cl, curve_window(sc, pr, wp), wc, wp);
+    if (kind == "curve_point") {  // a line `curve RHO1 RHO2`: rho2 is f(rho1), exactly (tolerance 0)
+        shape(cl, wc, {"kind", "rho1", "rho2"});
+        const Q r1 = positive(cl, "rho1", wc), r2 = positive(cl, "rho2", wc);
+        const Window W = curve_window(sc, pr, wp);
+        claim(W.a <= r1 && r1 <= W.b, wp + ".rho1 holds the claimed rho1");
+        const Q f = W.f.at(r1);
+        return sgn(f) > 0 && R.close(r2, f);
+    }
+    claim(false, wc + ".kind is verdict, growth_distance, separating_plane, witness_point, distance, penetration_depth, curve, "
+                      "switch_point or curve_point");
     return false;
 }
 }  // namespace judge
 
 void check_judgements(const J& c) {
-    shape(c, "", {"format", "kind", "tolerance", "judgements", "not_certified", "seed_interior", "scene"});
+    shape(c, "", {"format", "kind", "tolerance", "judgements", "seed_interior", "scene"});
     const Scene sc = read_scene(at(c, "scene"));
     check_seed_interior(sc, at(c, "seed_interior"));
     judge::Rules R{num(at(c, "tolerance"), "tolerance")};
@@ -1413,16 +1613,6 @@ void check_judgements(const J& c) {
         claim(at(js[k], "right").is_boolean(), w + ".right is true or false");
         const bool right = judge::judge(sc, R, at(js[k], "claim"), at(js[k], "proof"), w);
         claim(right == at(js[k], "right").get<bool>(), w + ".right is the judgement the rules give (" + (right ? "right" : "wrong") + ")");
-    }
-    const J& nc = at(c, "not_certified");
-    claim(nc.is_array(), "not_certified is a list");
-    for (size_t k = 0; k < nc.size(); ++k) {
-        const std::string w = "not_certified[" + std::to_string(k) + "]";
-        shape(nc[k], w, {"index", "kind"});
-        claim(natural(at(nc[k], "index")) && indices.insert(at(nc[k], "index").get<size_t>()).second, w + ".index is a distinct natural number");
-        claim(at(nc[k], "kind").is_string() &&
-                  (at(nc[k], "kind") == J("curve") || at(nc[k], "kind") == J("switch_point")),
-              w + ".kind is curve or switch_point (the kinds not certified)");
     }
 }
 

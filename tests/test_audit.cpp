@@ -221,6 +221,13 @@ BOOST_AUTO_TEST_CASE(curve_claim_rules) {
         {"rho1": ["1/2", 1], "slope": "-5/2", "intercept": "9/2", "contact": "VF"},
         {"rho1": [1, "3/2"], "slope": "-4/7", "intercept": "18/7", "contact": "EE"}]})"));
     BOOST_TEST(k.right(R"({"kind": "switch_point", "rho1": 1, "rho2": 2, "contact": "VE"})"));
+    // Curve points: f(1/2) = 9/2 − 5/4 = 13/4, f(3/2) = (18 − 6)/7 = 12/7; the double nearest
+    // 12/7 is right within 1e-15 but not exactly.
+    BOOST_TEST(k.right(R"({"kind": "curve_point", "rho1": "1/2", "rho2": "13/4"})"));
+    BOOST_TEST(k.right(R"({"kind": "curve_point", "rho1": "3/2", "rho2": "12/7"})"));
+    BOOST_TEST(!k.right(R"({"kind": "curve_point", "rho1": "3/2", "rho2": 1.7142857142857142})"));
+    BOOST_TEST(k.right(R"({"kind": "curve_point", "rho1": "3/2", "rho2": 1.7142857142857142})", "1e-15"));
+    BOOST_TEST(!k.right(R"({"kind": "curve_point", "rho1": 1, "rho2": "2.001"})", "1e-4"));
     // Rule 3 at the ends: a range ending at the switch point may list it or not; listed with the
     // wrong ρ2 it is misplaced. Starting there, likewise.
     const std::string first = R"({"kind": "curve", "pieces": [{"rho1": ["1/2", 1], "slope": "-5/2", "intercept": "9/2"}])";
@@ -409,6 +416,13 @@ BOOST_AUTO_TEST_CASE(claimed_curves_switches_and_labels) {
     BOOST_TEST(j["switch_points_extra"].size() == 1u);
     // Switch points and the growth distance, exact or within a tolerance.
     BOOST_TEST(k.right(R"({"kind": "switch_point", "rho1": 1, "rho2": 2, "contact": "VE"})"));
+    // Curve points: f(1/2) = 9/2 − 5/4 = 13/4, f(3/2) = (18 − 6)/7 = 12/7; the double nearest
+    // 12/7 is right within 1e-15 but not exactly.
+    BOOST_TEST(k.right(R"({"kind": "curve_point", "rho1": "1/2", "rho2": "13/4"})"));
+    BOOST_TEST(k.right(R"({"kind": "curve_point", "rho1": "3/2", "rho2": "12/7"})"));
+    BOOST_TEST(!k.right(R"({"kind": "curve_point", "rho1": "3/2", "rho2": 1.7142857142857142})"));
+    BOOST_TEST(k.right(R"({"kind": "curve_point", "rho1": "3/2", "rho2": 1.7142857142857142})", "1e-15"));
+    BOOST_TEST(!k.right(R"({"kind": "curve_point", "rho1": 1, "rho2": "2.001"})", "1e-4"));
     BOOST_TEST(!k.right(R"({"kind": "switch_point", "rho1": 1, "rho2": 2, "contact": "VV"})"));
     BOOST_TEST(!k.right(R"({"kind": "switch_point", "rho1": "1.0000001", "rho2": 2})"));
     BOOST_TEST(k.right(R"({"kind": "switch_point", "rho1": "1.0000001", "rho2": 2})", "1e-6"));

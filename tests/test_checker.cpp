@@ -65,7 +65,6 @@ const std::vector<StillTrue> kStillTrue = {
     {std::regex("element duplicated at /scene/P[12]/vertices/[0-9]+$"), "a repeated vertex is the same polyhedron (a copy of the last vertex shifts no index)", false},
     {std::regex(".* at /scene/I[12]/.*"), "the scaling ranges I1, I2 take no part in a single query's claim", true},
     {std::regex(".* at /judgements/[0-9]+/index$"), "a judgement's place in the user's claims file: an annotation", false},
-    {std::regex(".* at /not_certified(/.*)?$"), "the list of claims left uncertified: an annotation", false},
     {std::regex("element deleted at /judgements/[0-9]+$"), "a judgement left out: the others still hold", false},
 };
 // A changed judgements file that the checker still accepts must state the judgements the engine
@@ -306,7 +305,7 @@ const char* kCubeClaims = R"({"format": "scalecert-claims-1", "claims": [
 // distance (|(0, 1/2, 3/2)|² = 5/2 > 9/4); the depth along (0, 1, 1) is h_M/√2 = (6 − 1)/√2 > 1,
 // as P1(2) = [−1, 3]^3 reaches y + z = 6 and P2(2) = [−1, 3]^2 x [2, 6] starts at y + z = 1;
 // (0, 0, 2) is in P1(3) = [−2, 4]^3 and P2(3) = [−2, 4]^2 x [1, 7].
-const std::vector<bool> kCubeRight = {true, false, true, true, /* curve: not certified */ true, false, true, false,
+const std::vector<bool> kCubeRight = {true, false, true, true, /* the curve ρ1 + ρ2 = 3 */ true, true, false, true, false,
                                       true, false, true, true, false, false, true, true, false, false, true, false};
 
 BOOST_AUTO_TEST_CASE(judgements_certificates_are_valid_and_tampering_is_rejected) {
@@ -318,17 +317,19 @@ BOOST_AUTO_TEST_CASE(judgements_certificates_are_valid_and_tampering_is_rejected
     BOOST_TEST_REQUIRE(check_file(cert) == 0);
     const OJ j = load(cert), r = load(rep);
     BOOST_TEST(j["kind"] == "judgements");
-    BOOST_TEST(j["judgements"].size() == 20u);
-    BOOST_TEST(j["not_certified"] == OJ::parse(R"([{"index": 4, "kind": "curve"}])"));
+    BOOST_TEST(j["judgements"].size() == 21u);
     std::vector<bool> rights;
     for (const OJ& e : j["judgements"]) {
         rights.push_back(e["right"].get<bool>());
         BOOST_TEST(r["claims"][e["index"].get<size_t>()]["right"] == e["right"]);  // the report says the same
     }
-    BOOST_TEST(rights == kCubeRight);
+    BOOST_TEST(rights == kCubeRight, [&] { std::string t; for (bool b : rights) t += b ? '1' : '0'; return t; }());
     // The depth at (2, 2) is 1: its proof's direction is +z and its surface closes around the origin.
-    BOOST_TEST(j["judgements"][15]["proof"]["squared"] == "1");
-    BOOST_TEST(j["judgements"][15]["proof"]["direction"] == OJ::parse(R"(["0", "0", "1"])"));
+    BOOST_TEST(j["judgements"][16]["proof"]["squared"] == "1");
+    BOOST_TEST(j["judgements"][16]["proof"]["direction"] == OJ::parse(R"(["0", "0", "1"])"));
+    // The curve ρ1 + ρ2 = 3 (one piece, no switch point): proved over a window around [1, 2].
+    BOOST_TEST(j["judgements"][4]["proof"]["pieces"].size() == 1u);
+    BOOST_TEST(j["judgements"][4]["proof"]["pieces"][0]["slope"] == "-1");
     mutate_and_report(j, "judgements (stacked cubes)", false, true);
 
     // The tetrahedron and the box: verdicts of all three kinds, and a depth and a distance whose
@@ -340,7 +341,15 @@ BOOST_AUTO_TEST_CASE(judgements_certificates_are_valid_and_tampering_is_rejected
       {"kind": "verdict", "rho1": 2, "rho2": 2, "verdict": "overlapping"},
       {"kind": "distance", "rho1": 1, "rho2": 1, "value": 0.1},
       {"kind": "penetration_depth", "rho1": 2.5, "rho2": 2.5, "value": 0.1},
-      {"kind": "growth_distance", "value": 1.6}]})"; }
+      {"kind": "growth_distance", "value": 1.6},
+      {"kind": "switch_point", "rho1": 1, "rho2": 2, "contact": "VE"},
+      {"kind": "switch_point", "rho1": 1, "rho2": 2, "contact": "EE"},
+      {"kind": "switch_point", "rho1": "1/2", "rho2": 2},
+      {"kind": "curve", "pieces": [
+        {"rho1": ["1/2", 1], "slope": "-5/2", "intercept": "9/2", "contact": "VF"},
+        {"rho1": [1, "3/2"], "slope": "-4/7", "intercept": "18/7", "contact": "EE"}]},
+      {"kind": "curve", "vertices": [["1/2", "13/4"], ["3/2", "12/7"]], "switch_points": []},
+      {"kind": "curve", "vertices": [[1, 2], ["3/2", "12/7"]]}]})"; }
     const std::string tetra = std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/tetra_box_switch.json";
     BOOST_TEST_REQUIRE(engine("certify-fp " + tetra + " " + tclaims.string() + " --certificate " + tcert.string()) == 1);
     BOOST_TEST_REQUIRE(check_file(tcert) == 0);
@@ -348,10 +357,17 @@ BOOST_AUTO_TEST_CASE(judgements_certificates_are_valid_and_tampering_is_rejected
     BOOST_TEST(t["judgements"][0]["right"] == true);
     BOOST_TEST(t["judgements"][1]["right"] == true);
     BOOST_TEST(t["judgements"][2]["right"] == true);
+    // Its curve (test_audit.cpp, curve_claim_rules): (V,F) ρ2 = 9/2 − 5ρ1/2 up to the switch point
+    // (1, 2), of contact VE, then (E,E) ρ2 = (18 − 4ρ1)/7. The chord from ρ1 = 1/2 to 3/2 is off at
+    // ρ1 = 1 and misses the switch point; a switch point claimed at ρ1 = 1/2 has the wrong ρ1.
+    const std::vector<bool> tetra_right = {true, false, false, true, false, true};  // claims 6 to 11
+    for (size_t k = 0; k < tetra_right.size(); ++k) BOOST_TEST(t["judgements"][6 + k]["right"] == tetra_right[k], 6 + k);
+    BOOST_TEST(t["judgements"][6]["proof"]["switch_points"].size() == 1u);
+    BOOST_TEST(t["judgements"][6]["proof"]["switch_points"][0]["rho1"] == "1");
     mutate_and_report(t, "judgements (tetrahedron and box)", false, true);
 }
 
-// Claims of every certified kind at five pairs (separated, touching and overlapping ones among
+// Claims of every kind at five pairs (separated, touching and overlapping ones among
 // them), with the judgements certificate written and checked; x is a point for witness claims.
 int certify_with_certificate(const fs::path& scene, const scalecert::internal::Vec3q& x) {
     OJ claims = OJ::array();
@@ -367,6 +383,8 @@ int certify_with_certificate(const fs::path& scene, const scalecert::internal::V
         claims.push_back({{"kind", "separating_plane"}, {"rho1", a}, {"rho2", b}, {"normal", {"1", "1", "0"}}});
     }
     claims.push_back({{"kind", "growth_distance"}, {"value", "1"}});
+    claims.push_back({{"kind", "switch_point"}, {"rho1", "1"}, {"rho2", "1"}});
+    claims.push_back({{"kind", "curve"}, {"vertices", OJ::array({OJ::array({"1/2", "2"}), OJ::array({"1", "1"}), OJ::array({"2", "1/2"})})}});
     const fs::path cl = tmpdir() / "claims.json", cp = tmpdir() / "judgements.json";
     save(OJ{{"format", "scalecert-claims-1"}, {"claims", claims}}, cl);
     const int st = engine("certify-fp " + scene.string() + " " + cl.string() + " --certificate " + cp.string());

@@ -275,8 +275,9 @@ Json query_json(const Model& m, const QueryAnswer& r, const SeedWeights& seeds) 
     return j;
 }
 
-Json partition_json(const Model& m, const TouchingCurve& c, const Partition& p) {
-    Json j = curve_body(m, c, true);
+namespace {
+// Adds to a document holding c's "pieces" and "switch_points" their witnesses, and "curve_ends".
+void put_curve_witnesses(Json& j, const Model& m, const TouchingCurve& c, const CurveWitnesses& p) {
     for (size_t k = 0; k < c.pieces.size(); ++k)
         if (p.piece_witnesses[k]) j["pieces"][k]["contact_witness"] = witness_json(*p.piece_witnesses[k]);
     for (size_t k = 0; k < c.pieces.size(); ++k)
@@ -294,6 +295,25 @@ Json partition_json(const Model& m, const TouchingCurve& c, const Partition& p) 
         ends.push_back(end);
     }
     j["curve_ends"] = ends;
+}
+}  // namespace
+
+Json curve_proof_json(const Model& m, const TouchingCurve& c, const CurveWitnesses& w) {
+    Json j;
+    put(j, "rho1", std::vector<Q>{c.pieces.front().from, c.pieces.back().to});
+    Json pieces = Json::array();
+    for (const CurvePiece& p : c.pieces) pieces.push_back(piece_json(m, c, p, true));
+    j["pieces"] = pieces;
+    Json sw = Json::array();
+    for (const CurveSwitch& s : c.switches) sw.push_back(switch_json(s));
+    j["switch_points"] = sw;
+    put_curve_witnesses(j, m, c, w);
+    return j;
+}
+
+Json partition_json(const Model& m, const TouchingCurve& c, const Partition& p) {
+    Json j = curve_body(m, c, true);
+    put_curve_witnesses(j, m, c, p);
     Json g;
     if (p.growth_witness) {
         const ContactLine& L = m.lines[c.env.pieces[c.growth.env].line];

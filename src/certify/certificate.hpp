@@ -27,6 +27,9 @@ Json normal_json(const Vec3z& n);       // three integer strings
 Json seed_interior(const SeedWeights& seeds);
 Json query_json(const Model& m, const QueryAnswer& r, const SeedWeights& seeds);
 Json partition_json(const Model& m, const TouchingCurve& c, const Partition& p);
+// The curve c over its range [a, b] as a judgement's proof (FORMAT.md, "A judgements file"):
+// {"rho1": [a, b], "pieces", "switch_points", "curve_ends"} in a partition's form, with witnesses.
+Json curve_proof_json(const Model& m, const TouchingCurve& c, const CurveWitnesses& w);
 
 // Adds the segment, t1/t2 pieces, the t-plane curve, the contact loci and the hull faces (for
 // figures) to a curve document.

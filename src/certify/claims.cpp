@@ -41,7 +41,7 @@ public:
     Fallbacks fallbacks_;
 
     // With `prove`: the last claim run as exact values, and the proof of its judgement
-    // (judgements.hpp); none for the kinds not certified (curve, switch_point).
+    // (judgements.hpp).
     std::optional<std::pair<Json, Json>> proof;
 
     // One claim: its report object and a one-line text; right or wrong.
@@ -56,12 +56,14 @@ public:
         if (kind == "growth_distance") return growth(claim, o, text);
         if (kind == "switch_point") return switch_point(claim, o, text);
         if (kind == "curve") return curve(claim, o, text);
+        if (kind == "curve_point") return curve_point(claim, o, text);
         if (kind == "separating_plane") return plane(claim, o, text);
         if (kind == "witness_point") return witness(claim, o, text);
         if (kind == "distance") return distance(claim, o, text);
         if (kind == "penetration_depth") return depth(claim, o, text);
         fail("kind", "unknown kind " + quoted(kind) +
-                         " (verdict, curve, switch_point, growth_distance, separating_plane, witness_point, distance, penetration_depth)");
+                         " (verdict, curve, curve_point, switch_point, growth_distance, separating_plane, witness_point, distance, "
+                         "penetration_depth)");
     }
 
 private:
@@ -233,16 +235,20 @@ private:
         only(j, {"kind", "rho1", "rho2", "contact"});
         const auto [r1, r2] = pair_at(j);
         const std::optional<std::string> lab = label(j);
-        const auto& ex = exact_switches();
+        const auto& exs = exact_switches();
         put_exact(o, "rho1", r1);
         put_exact(o, "rho2", r2);
-        if (ex.empty()) {
+        Json claim_json{{"kind", "switch_point"}, {"rho1", ex(r1)}, {"rho2", ex(r2)}};
+        if (lab) claim_json["contact"] = *lab;
+        if (exs.empty()) {
             o["nearest"] = nullptr;
             text = "switch point (" + num(r1) + ", " + num(r2) + "): the exact curve has no switch point at rho1, rho2 > 0";
+            // The proof: the whole curve from ρ1 = 0 to past where it reaches ρ2 = 0.
+            if (prove_) proof.emplace(std::move(claim_json), curve_proof(m(), c(), Q(0), zero_crossing()));
             return false;
         }
-        const ExactSwitch* best = &ex.front();
-        for (const ExactSwitch& s : ex)
+        const ExactSwitch* best = &exs.front();
+        for (const ExactSwitch& s : exs)
             if (abs(Q(s.rho1 - r1)) < abs(Q(best->rho1 - r1))) best = &s;
         Json n;
         put_exact(n, "rho1", best->rho1);
@@ -254,11 +260,36 @@ private:
         errors(e2, r2, best->rho2);
         o["rho1_error"] = e1;
         o["rho2_error"] = e2;
+        // The proof: the curve over a window holding every ρ1 as near to the claim as the nearest.
+        if (prove_) {
+            const Q delta = abs(Q(best->rho1 - r1));
+            proof.emplace(std::move(claim_json), curve_proof(m(), c(), r1 - delta, r1 + delta));
+        }
         const bool label_right = !lab || *lab == best->label;
         o["contact_right"] = lab ? Json(label_right) : Json(nullptr);
         text = "switch point (" + num(r1) + ", " + num(r2) + (lab ? ", " + *lab : "") + "): nearest exact (" + num(best->rho1) +
                ", " + num(best->rho2) + ", " + best->label + ")";
         return close(r1, best->rho1) && close(r2, best->rho2) && label_right;
+    }
+
+    // A point of the curve: ρ2 = f(ρ1) > 0, within the tolerance (the line `curve RHO1 RHO2`, exactly).
+    bool curve_point(const JNode& j, Json& o, std::string& text) {
+        only(j, {"kind", "rho1", "rho2"});
+        const auto [r1, r2] = pair_at(j);
+        const Q f = models_.curve_value(r1);
+        put_exact(o, "rho1", r1);
+        put_exact(o, "rho2", r2);
+        put_exact(o, "curve_rho2", f);
+        errors(o, r2, f);
+        text = "curve point (" + num(r1) + ", " + num(r2) + "): exact curve at rho1 is " + num(f);
+        if (prove_) proof.emplace(Json{{"kind", "curve_point"}, {"rho1", ex(r1)}, {"rho2", ex(r2)}}, curve_proof(m(), c(), r1, r1));
+        return sgn(f) > 0 && close(r2, f);
+    }
+
+    // Where the curve reaches ρ2 = 0: on its last piece (it goes on as one line from there).
+    Q zero_crossing() const {
+        const ContactLine& L = m().lines[c().env.pieces.back().line];
+        return std::max(Q(0), Q(-L.intercept / L.slope));
     }
 
     // ρ1 with f(ρ1) = y (f is strictly decreasing), or none outside f's range over ρ1 ≥ 0.
@@ -313,6 +344,22 @@ private:
             }
         }
         const Q lo = segs.front().x0, hi = segs.back().x1;
+        Json claim_json{{"kind", "curve"}};  // the claim as read: every number exact
+        if (verts) {
+            Json v = Json::array({Json::array({ex(segs.front().x0), ex(segs.front().y0)})});
+            for (const Seg& s : segs) v.push_back(Json::array({ex(s.x1), ex(s.y1)}));
+            claim_json["vertices"] = std::move(v);
+        } else {
+            Json ps = Json::array();
+            for (size_t i = 0; i < segs.size(); ++i) {
+                const Seg& s = segs[i];
+                const Q a = (s.y1 - s.y0) / (s.x1 - s.x0);
+                Json p{{"rho1", Json::array({ex(s.x0), ex(s.x1)})}, {"slope", ex(a)}, {"intercept", ex(s.y0 - a * s.x0)}};
+                if (s.label) p["contact"] = *s.label;
+                ps.push_back(std::move(p));
+            }
+            claim_json["pieces"] = std::move(ps);
+        }
         if (const JNode* sw = j.find("switch_points")) {
             if (sw->kind != JNode::Array) fail("switch_points", "expected a list of [rho1, rho2]");
             claimed_switches.clear();
@@ -321,11 +368,15 @@ private:
                 if (x < lo || x > hi) fail("switch_points", "rho1 = " + to_exact_string(x) + " lies outside the claimed range");
                 claimed_switches.push_back({x, y});
             }
+            Json cs = Json::array();
+            for (const Claimed& p : claimed_switches) cs.push_back(Json::array({ex(p.x), ex(p.y)}));
+            claim_json["switch_points"] = std::move(cs);
         }
+        if (prove_) proof.emplace(std::move(claim_json), curve_proof(m(), c(), lo, hi));
         // Vertical error: on a stretch where the claim and f are both linear, so is their
         // difference (and so are the tolerance's bounds), so the claimed ends and the exact
         // breaks inside each segment suffice.
-        const auto& ex = exact_switches();
+        const auto& exs = exact_switches();
         Q max_v = 0, max_h = 0, worst_v_at = lo;
         bool within = true;
         auto check_v = [&](const Q& x, const Q& y) {
@@ -354,7 +405,7 @@ private:
         // may go unclaimed. A claimed one not matched is extra; a matched pair must agree in ρ1
         // and ρ2 within the tolerance, or it is misplaced.
         std::vector<const ExactSwitch*> exact;
-        for (const ExactSwitch& s : ex)
+        for (const ExactSwitch& s : exs)
             if (s.rho1 >= lo && s.rho1 <= hi) exact.push_back(&s);
         auto nearest_claimed = [&](const Q& x) {
             size_t b = 0;
@@ -400,7 +451,7 @@ private:
             const Q mid = (s.x0 + s.x1) / 2;
             // At an exact switch point the contact is the switch point's.
             std::string e = exact_positive ? piece_contact(m(), c().env.pieces[c().env.locate(mid)]).label : std::string("none");
-            for (const ExactSwitch& sw : ex)
+            for (const ExactSwitch& sw : exs)
                 if (sw.rho1 == mid) e = sw.label;
             if (*s.label != e) {
                 Json w;
@@ -586,20 +637,13 @@ Q read_number(const std::string& t, bool exact_decimals, const std::string& wher
 }
 }  // namespace
 
-// The judgements certificate of claims, from their entries (and the indices of those not certified).
-static std::string certificate_text(const ClaimModels& models, const Q& tolerance, Json entries, Json skipped) {
-    if (entries.empty())
-        throw InputError("certificate: none of the claims is of a kind whose judgement is certified (curve and switch_point "
-                         "claims, and curve lines, are not yet)");
-    return judgements_text(models.model(), tolerance, std::move(entries), std::move(skipped));
-}
 static Json entry(size_t index, Json claim, bool right, Json proof) {
     return Json{{"index", index}, {"claim", std::move(claim)}, {"right", right}, {"proof", std::move(proof)}};
 }
 
 std::string certify_claim_lines(const ClaimModels& models, const std::string& claims, const std::string& name,
                                 bool exact_decimals, bool json, long* wrong, long* count, std::string* certificate) {
-    Json entries = Json::array(), skipped = Json::array();
+    Json entries = Json::array();
     std::optional<std::pair<Json, Json>> proof;
     std::istringstream in(claims);
     std::string line, text;
@@ -629,6 +673,8 @@ std::string certify_claim_lines(const ClaimModels& models, const std::string& cl
             put_exact(o, "curve_rho2", f);
             put_exact(o, "rho2_minus_curve", r2 - f);
             detail = "curve point (" + w[1] + ", " + w[2] + "): exact curve at rho1 is " + num(f, 17) + ", off by " + num(r2 - f, 17);
+            if (certificate)
+                proof.emplace(Json{{"kind", "curve_point"}, {"rho1", ex(r1)}, {"rho2", ex(r2)}}, curve_proof(models.model(), models.curve(), r1, r1));
         } else if (w[0] == "growth" && w.size() == 2) {
             Q g = read_number(w[1], exact_decimals, where);
             if (sgn(g) < 0) throw InputError(where + ": a growth distance is >= 0 (0 when the seeds coincide)");
@@ -665,7 +711,6 @@ std::string certify_claim_lines(const ClaimModels& models, const std::string& cl
             throw InputError(where + ": expected 'RHO1 RHO2 VERDICT', 'curve RHO1 RHO2' or 'growth RHO'");
         }
         if (proof) entries.push_back(entry(static_cast<size_t>(n), std::move(proof->first), right, std::move(proof->second)));
-        else skipped.push_back(Json{{"index", n}, {"kind", "curve"}});
         ++n;
         bad += !right;
         o["right"] = right;
@@ -673,7 +718,7 @@ std::string certify_claim_lines(const ClaimModels& models, const std::string& cl
         text += std::string(right ? "right  " : "WRONG  ") + detail + "\n";
     }
     if (n == 0) throw InputError(name + ": no claims (expected 'RHO1 RHO2 VERDICT', 'curve RHO1 RHO2' or 'growth RHO' lines)");
-    if (certificate) *certificate = certificate_text(models, Q(0), std::move(entries), std::move(skipped));
+    if (certificate) *certificate = judgements_text(models.model(), Q(0), std::move(entries));
     return report(std::move(arr), text, n, bad, json, nullptr, wrong, count);
 }
 
@@ -706,7 +751,7 @@ std::string certify_fp(const ClaimModels& models, const std::string& claims, con
         if (k != "format" && k != "claims") throw InputError(name + ": " + k + ": unknown field");
     if (!list || list->kind != JNode::Array || list->items.empty()) throw InputError(name + ": claims: expected a non-empty list");
     Certifier cert(models, name, opt, certificate != nullptr);
-    Json arr = Json::array(), entries = Json::array(), skipped = Json::array();
+    Json arr = Json::array(), entries = Json::array();
     std::string text;
     long bad = 0;
     for (size_t i = 0; i < list->items.size(); ++i) {
@@ -714,15 +759,15 @@ std::string certify_fp(const ClaimModels& models, const std::string& claims, con
         std::string line;
         const bool right = cert.run(list->items[i], i, o, line);
         if (certificate) {
-            if (cert.proof) entries.push_back(entry(i, std::move(cert.proof->first), right, std::move(cert.proof->second)));
-            else skipped.push_back(Json{{"index", i}, {"kind", o["kind"]}});
+            if (!cert.proof) throw std::logic_error("certify-fp: a judgement without its proof");
+            entries.push_back(entry(i, std::move(cert.proof->first), right, std::move(cert.proof->second)));
         }
         o["right"] = right;
         bad += !right;
         arr.push_back(o);
         text += std::string(right ? "right  " : "WRONG  ") + line + "\n";
     }
-    if (certificate) *certificate = certificate_text(models, opt.tolerance, std::move(entries), std::move(skipped));
+    if (certificate) *certificate = judgements_text(models.model(), opt.tolerance, std::move(entries));
     return report(std::move(arr), text, static_cast<long>(list->items.size()), bad, json, &opt.tolerance, wrong, count,
                   cert.fallbacks_.distance);
 }

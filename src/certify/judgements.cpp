@@ -1,6 +1,8 @@
 // Proofs of certify-fp's judgements (judgements.hpp), every one exact.
 #include "certify/judgements.hpp"
 
+#include <algorithm>
+#include <iterator>
 #include <map>
 #include <stdexcept>
 
@@ -116,13 +118,30 @@ Json growth_proof(const HullModel& m, const TouchingCurve& c) {
     return j;
 }
 
-std::string judgements_text(const HullModel& m, const Q& tolerance, Json judgements, Json not_certified) {
+Json curve_proof(const HullModel& m, const TouchingCurve& c, const Q& lo_need, const Q& hi_need) {
+    // The envelope's breaks (every one at ρ1, ρ2 > 0: it goes on as one line from ρ2 = 0).
+    std::vector<Q> breaks;
+    for (const EnvPiece& p : c.env.pieces)
+        if (p.to) breaks.push_back(*p.to);
+    Q a = 0;
+    if (sgn(lo_need) > 0) {
+        auto it = std::lower_bound(breaks.begin(), breaks.end(), lo_need);  // first break >= lo_need
+        a = it == breaks.begin() ? Q(lo_need / 2) : Q((*std::prev(it) + lo_need) / 2);
+    }
+    auto it = std::upper_bound(breaks.begin(), breaks.end(), hi_need);  // first break > hi_need
+    const Q b = it == breaks.end() ? Q(hi_need + 1) : Q((*it + hi_need) / 2);
+    TouchingCurve w;
+    w.env = c.env;
+    restrict_curve(m, w, a, b);
+    return curve_proof_json(m, w, curve_witnesses(m, w, SeedWeights{}));
+}
+
+std::string judgements_text(const HullModel& m, const Q& tolerance, Json judgements) {
     Json j;
     j["format"] = "scalecert-2";
     j["kind"] = "judgements";
     j["tolerance"] = to_exact_string(tolerance);
     j["judgements"] = std::move(judgements);
-    j["not_certified"] = std::move(not_certified);
     j["seed_interior"] = seed_interior(seed_weights(m));
     j["scene"] = scene_json(m.scene);
     return dump(j);

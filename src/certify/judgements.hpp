@@ -37,8 +37,15 @@ Json depth_proof(const HullModel& m, const TouchingCurve& c, const Q& rho1, cons
 // at (ρ*, ρ*).
 Json growth_proof(const HullModel& m, const TouchingCurve& c);
 
-// The document: {"format", "kind": "judgements", "tolerance", "judgements", "not_certified",
-// "seed_interior", "scene"}, as text.
-std::string judgements_text(const HullModel& m, const Q& tolerance, Json judgements, Json not_certified);
+// The exact curve over a window [a, b] that holds [lo_need, hi_need] with room on both sides:
+// a < lo_need (a = 0 when lo_need <= 0) and b > hi_need, each halfway to the next break of the
+// curve beyond (lo_need/2 and hi_need + 1 where there is none). Its pieces, switch points and
+// ends with their witnesses (curve_proof_json) prove the curve and all its switch points strictly
+// inside the window: the proof of curve, switch-point and curve-point claims.
+Json curve_proof(const HullModel& m, const TouchingCurve& c, const Q& lo_need, const Q& hi_need);
+
+// The document: {"format", "kind": "judgements", "tolerance", "judgements", "seed_interior",
+// "scene"}, as text.
+std::string judgements_text(const HullModel& m, const Q& tolerance, Json judgements);
 
 }  // namespace scalecert::internal

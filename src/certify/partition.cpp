@@ -109,6 +109,49 @@ std::vector<Pt2> overlap_region(const Model& m, const TouchingCurve& c, const st
     return normalize_polygon(w);
 }
 
+CurveWitnesses curve_witnesses(const Model& m, const TouchingCurve& c, const SeedWeights& seeds) {
+    CurveWitnesses W;
+    const std::vector<std::pair<int, Q>>(&seed)[2] = seeds.w;
+    for (const CurvePiece& p : c.pieces) {
+        // A piece of no length at a switch point (I1 a single point there) has no contact of its
+        // own: the touching set there is smaller than its faces, and no witness can lie in their
+        // relative interiors (FORMAT.md, "The contact along a piece").
+        // (The walk may know only one of the two lines there: the witness itself decides.)
+        std::optional<Witness> w;
+        if (const std::optional<Q> x = contact_rho1(m, c, p)) {
+            try {
+                w = make_witness(m, *x, m.lines[c.env.pieces[p.env].line].at(*x), p.contact.feat1, p.contact.feat2, true);
+            } catch (const std::logic_error&) {
+                if (p.from != p.to) throw;
+                throw InputError("I1 is the single point rho1 = " + to_exact_string(p.from) +
+                                 ", where the curve switches pieces: a partition needs a range of rho1 there (curve, query and "
+                                 "certify-fp take it)");
+            }
+        }
+        W.piece_witnesses.push_back(std::move(w));
+        const ContactLine& L = m.lines[c.env.pieces[p.env].line];
+        std::optional<Witness> z;
+        if (sgn(L.at(p.from)) > 0 && sgn(L.at(p.to)) <= 0) z = make_witness(m, -L.intercept / L.slope, Q(0), c.env.pieces[p.env].line);
+        W.zero_witnesses.push_back(std::move(z));
+    }
+    for (const CurveSwitch& sp : c.switches)
+        if (sgn(sp.rho2) > 0)
+            W.switch_witnesses.push_back(make_witness(m, sp.rho1, sp.rho2, c.env.pieces[c.pieces[sp.left].env].line));
+    for (int e = 0; e < 2; ++e) {
+        const CurvePiece& p = e == 0 ? c.pieces.front() : c.pieces.back();
+        Q x = e == 0 ? p.from : p.to;
+        size_t line = c.env.pieces[p.env].line;
+        Q y = m.lines[line].at(x);
+        if (sgn(y) > 0) {
+            W.end_witness[e] = make_witness(m, x, y, line);
+        } else if (e == 0) {  // s2 in P1(lo1): on the walk, from where the curve reaches 0 (x0 ≤ lo1)
+            if (!m.scan) W.end_witness[e] = make_witness(m, x, Q(0), size_t(-1));
+            else W.end_witness[e] = lift_witness(witness_below(m, c, x), x, Q(0), seed);
+        }
+    }
+    return W;
+}
+
 Partition build_partition(const Model& m, const TouchingCurve& c) {
     const ExactScene& s = m.scene;
     Partition P;
@@ -141,43 +184,7 @@ Partition build_partition(const Model& m, const TouchingCurve& c) {
         std::vector<Pt2> sep = clip(box, L.slope, L.intercept, false);
         if (sep.size() >= 3 && sgn(area2(sep)) > 0) P.separated.push_back({k, sep});
     }
-    for (const CurvePiece& p : c.pieces) {
-        // A piece of no length at a switch point (I1 a single point there) has no contact of its
-        // own: the touching set there is smaller than its faces, and no witness can lie in their
-        // relative interiors (FORMAT.md, "The contact along a piece").
-        // (The walk may know only one of the two lines there: the witness itself decides.)
-        std::optional<Witness> w;
-        if (const std::optional<Q> x = contact_rho1(m, c, p)) {
-            try {
-                w = make_witness(m, *x, m.lines[c.env.pieces[p.env].line].at(*x), p.contact.feat1, p.contact.feat2, true);
-            } catch (const std::logic_error&) {
-                if (p.from != p.to) throw;
-                throw InputError("I1 is the single point rho1 = " + to_exact_string(p.from) +
-                                 ", where the curve switches pieces: a partition needs a range of rho1 there (curve, query and "
-                                 "certify-fp take it)");
-            }
-        }
-        P.piece_witnesses.push_back(std::move(w));
-        const ContactLine& L = m.lines[c.env.pieces[p.env].line];
-        std::optional<Witness> z;
-        if (sgn(L.at(p.from)) > 0 && sgn(L.at(p.to)) <= 0) z = make_witness(m, -L.intercept / L.slope, Q(0), c.env.pieces[p.env].line);
-        P.zero_witnesses.push_back(std::move(z));
-    }
-    for (const CurveSwitch& sp : c.switches)
-        if (sgn(sp.rho2) > 0)
-            P.switch_witnesses.push_back(make_witness(m, sp.rho1, sp.rho2, c.env.pieces[c.pieces[sp.left].env].line));
-    for (int e = 0; e < 2; ++e) {
-        const CurvePiece& p = e == 0 ? c.pieces.front() : c.pieces.back();
-        Q x = e == 0 ? p.from : p.to;
-        size_t line = c.env.pieces[p.env].line;
-        Q y = m.lines[line].at(x);
-        if (sgn(y) > 0) {
-            P.end_witness[e] = make_witness(m, x, y, line);
-        } else if (e == 0) {  // s2 in P1(lo1): on the walk, from where the curve reaches 0 (x0 ≤ lo1)
-            if (!m.scan) P.end_witness[e] = make_witness(m, x, Q(0), size_t(-1));
-            else P.end_witness[e] = lift_witness(witness_below(m, c, x), x, Q(0), seed);
-        }
-    }
+    static_cast<CurveWitnesses&>(P) = curve_witnesses(m, c, P.seeds);
     if (sgn(c.growth.value) > 0)
         P.growth_witness = make_witness(m, c.growth.value, c.growth.value, c.env.pieces[c.growth.env].line);
     return P;

@@ -11,10 +11,10 @@ struct SeparatedRegion {
     std::vector<Pt2> verts;   // closed polygon, counter-clockwise; the points on the curve excluded
 };
 
-struct Partition {
-    std::vector<Pt2> overlap;              // convex polygon (may be empty, a point or a segment)
-    std::vector<Witness> overlap_witnesses;  // one per vertex of `overlap`
-    std::vector<SeparatedRegion> separated;  // nonempty interiors only
+// The witnesses that prove a curve over its range [lo, hi] (the pieces' lines are lower bounds;
+// these, common points, upper bounds; the set of meeting pairs is convex): a partition's over I1,
+// a judgement's over its window.
+struct CurveWitnesses {
     std::vector<Witness> switch_witnesses;   // one per switch point with ρ2 > 0 (touching)
     // Per curve piece with a contact: a point of the touching set in the relative interiors of
     // both contact features (every feature vertex weighted > 0), at contact_rho1.
@@ -22,9 +22,15 @@ struct Partition {
     // Per curve piece whose ρ2 falls from > 0 to ≤ 0 along it: a witness at the crossing (x0, 0),
     // the seed s2 on P1(x0), so that the piece is proved touching all the way down to ρ2 = 0.
     std::vector<std::optional<Witness>> zero_witnesses;
-    std::optional<Witness> growth_witness;   // at (ρ*, ρ*) when ρ* > 0
-    // At (lo1, f(lo1)) and (hi1, f(hi1)) when f > 0; at lo1 when f(lo1) <= 0, at (lo1, 0) instead.
+    // At (lo, f(lo)) and (hi, f(hi)) when f > 0; at lo when f(lo) <= 0, at (lo, 0) instead.
     std::optional<Witness> end_witness[2];
+};
+
+struct Partition : CurveWitnesses {
+    std::vector<Pt2> overlap;              // convex polygon (may be empty, a point or a segment)
+    std::vector<Witness> overlap_witnesses;  // one per vertex of `overlap`
+    std::vector<SeparatedRegion> separated;  // nonempty interiors only
+    std::optional<Witness> growth_witness;   // at (ρ*, ρ*) when ρ* > 0
     SeedWeights seeds;  // the seeds proved inside
 };
 
@@ -37,5 +43,7 @@ std::vector<Pt2> normalize_polygon(std::vector<Pt2> poly);
 std::vector<Pt2> overlap_region(const Model& m, const TouchingCurve& c, const std::vector<Pt2>& rect);
 
 Partition build_partition(const Model& m, const TouchingCurve& c);
+// The witnesses of c's pieces, switch points and ends (seeds: the seeds' weights, for the walk).
+CurveWitnesses curve_witnesses(const Model& m, const TouchingCurve& c, const SeedWeights& seeds);
 
 }  // namespace scalecert::internal

@@ -136,11 +136,9 @@ std::optional<Q> contact_rho1(const Model& m, const TouchingCurve& c, const Curv
     return (p.from + to) / 2;
 }
 
-TouchingCurve build_curve(const Model& m) {
-    TouchingCurve c;
-    c.env = upper_envelope(m.lines);
-    const Q& lo = m.scene.lo[0];
-    const Q& hi = m.scene.hi[0];
+void restrict_curve(const Model& m, TouchingCurve& c, const Q& lo, const Q& hi) {
+    c.pieces.clear();
+    c.switches.clear();
     for (size_t k = c.env.locate(lo); k < c.env.pieces.size(); ++k) {
         const EnvPiece& p = c.env.pieces[k];
         Q from = std::max(p.from, lo);
@@ -166,6 +164,12 @@ TouchingCurve build_curve(const Model& m) {
         if (sgn(sp.rho2) > 0) sp.contact = contact_at(m, L, R, sp.rho1, sp.rho2);
         c.switches.push_back(std::move(sp));
     }
+}
+
+TouchingCurve build_curve(const Model& m) {
+    TouchingCurve c;
+    c.env = upper_envelope(m.lines);
+    restrict_curve(m, c, m.scene.lo[0], m.scene.hi[0]);
     // Growth distance: f(ρ) = ρ. g(ρ) = f(ρ) − ρ decreases strictly, g(0) = max intercept ≥ 0.
     size_t lo_k = 0, hi_k = c.env.pieces.size() - 1;
     while (lo_k < hi_k) {

@@ -74,5 +74,8 @@ ContactFeatures piece_contact(const Model& m, const EnvPiece& e);
 std::optional<Q> contact_rho1(const Model& m, const TouchingCurve& c, const CurvePiece& p);
 
 TouchingCurve build_curve(const Model& m);
+// Sets c.pieces and c.switches to the curve over [lo, hi] (0 ≤ lo ≤ hi) from c.env: build_curve's
+// restriction to I1, and the window a judgement's proof covers (certify/judgements.hpp).
+void restrict_curve(const Model& m, TouchingCurve& c, const Q& lo, const Q& hi);
 
 }  // namespace scalecert::internal
