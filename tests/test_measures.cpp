@@ -9,6 +9,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include "certify/query.hpp"
+#include "curve/scan.hpp"
 #include "geometry/measures.hpp"
 #include "support.hpp"
 
@@ -53,6 +54,19 @@ BOOST_AUTO_TEST_CASE(cubes_by_hand) {
     BOOST_TEST(!proved_depth(m, Q(3, 2), Q(3, 2)).has_value());
     BOOST_TEST(!proved_depth(m, Q(1), Q(1)).has_value());
     BOOST_TEST(proved_distance(m, Q(3, 2), Q(3, 2)).d.squared == Q(0));
+    // measured_depth (what certify-fp runs): touching at (3/2, 3/2), where P1 reaches z = 5/2 and
+    // P2 starts there: the supporting plane is z's, and the common point lies on both faces.
+    const std::optional<MeasuredDepth> t = measured_depth(HullPoints(m), Q(3, 2), Q(3, 2));
+    BOOST_TEST_REQUIRE(t.has_value());
+    BOOST_TEST(t->state == MeasuredDepth::Touching);
+    BOOST_TEST((t->normal == Vec3z{Z(0), Z(0), Z(1)}));
+    BOOST_TEST(t->distance.p1[2] == Q(5, 2));
+    BOOST_TEST(!t->distance.w1.empty());
+    // Separated at (1, 1) (gap 1 in z): the slab's normal is +z; overlapping at (2, 2): depth 1.
+    const std::optional<MeasuredDepth> sep = measured_depth(HullPoints(m), Q(1), Q(1));
+    BOOST_TEST((sep && sep->state == MeasuredDepth::Separated && sep->normal == Vec3z{Z(0), Z(0), Z(1)}));
+    const std::optional<MeasuredDepth> ov = measured_depth(HullPoints(m), Q(2), Q(2));
+    BOOST_TEST((ov && ov->state == MeasuredDepth::Overlapping && ov->depth->squared == Q(1)));
     // At (1, 1/2) shifted sideways: P2 = [3,5] x [0,2] x [3,5] beside and above P1 = [0,2]^3.
     ExactScene s;
     s.P[0].points = box(0, 0, 0, 2, 2, 2);
@@ -108,9 +122,62 @@ BOOST_AUTO_TEST_CASE(fast_measures_equal_the_exact_path) {
                 BOOST_TEST((v == Verdict::Touching ? ee.squared == 0 : sgn(ee.squared) < 0));
                 touching += v == Verdict::Touching;
             }
+            // What certify-fp runs: the depth from support queries alone, with its state.
+            const std::optional<MeasuredDepth> md = measured_depth(HullPoints(m), r1, r2);
+            BOOST_TEST_REQUIRE(md.has_value());
+            const MeasuredDepth::State want_state = v == Verdict::Separated  ? MeasuredDepth::Separated
+                                                    : v == Verdict::Touching ? MeasuredDepth::Touching
+                                                                             : MeasuredDepth::Overlapping;
+            BOOST_TEST(md->state == want_state, "measured depth's state at (" << a << ", " << b << ") in scene " << t);
+            if (md->state == MeasuredDepth::Overlapping && v == Verdict::Overlapping) BOOST_TEST(md->depth->squared == ee.squared);
         }
     }
     std::cout << "differential: " << pairs << " pairs (" << near << " within 2^-k of the curve), " << distances << " distances ("
               << fallbacks << " exact fallbacks), " << depths << " depths of overlapping pairs, " << touching << " touching\n";
     BOOST_TEST(depths > pairs / 10);
+}
+
+BOOST_AUTO_TEST_CASE(cloud_points_equal_the_hull) {
+    // The measures on the scan path's point trees (no hull) against the same on the hull model's
+    // vertices and CGAL's QP over all of them: random integer clouds in and on balls, with points
+    // inside the hulls (which the trees hold and the hull drops), at random pairs.
+    std::mt19937 g(77);
+    long pairs = 0;
+    for (int t = 0; t < 24; ++t) {
+        std::normal_distribution<double> N(0, 1);
+        std::uniform_real_distribution<double> U(0, 1);
+        ExactScene sc;
+        for (int i = 0; i < 2; ++i) {
+            const int n = 50 + 150 * (t % 5);
+            for (int k = 0; k < n; ++k) {
+                double x = N(g), y = N(g), z = N(g);
+                const double l = std::sqrt(x * x + y * y + z * z), r = (k % 3 ? 1000 : 1000 * U(g)) / l;
+                sc.P[i].points.push_back({Q(std::lround(x * r) + (i ? 2500 : 0)), Q(std::lround(y * r) + (i ? 300 * (t % 4) : 0)), Q(std::lround(z * r))});
+            }
+        }
+        sc.lo[0] = sc.lo[1] = Q(1, 2);
+        sc.hi[0] = sc.hi[1] = Q(2);
+        finish_scene(sc, "scene");
+        const HullModel m = build_model(sc);
+        const TouchingCurve c = build_curve(m);
+        auto cs = std::make_shared<const CompactScene>(*compact_scene(sc));
+        const CloudPoints cloud(cs);
+        const HullPoints hull(m);
+        std::uniform_real_distribution<double> u(0.5, 2.5);
+        for (int i = 0; i < 25; ++i, ++pairs) {
+            const Q r1 = exact_from_double(u(g)), r2 = exact_from_double(u(g));
+            const Verdict v = query(m, c, r1, r2, false).verdict;
+            const std::optional<ProvedDistance> dc = proved_distance(cloud, r1, r2);
+            BOOST_TEST_REQUIRE(dc.has_value());
+            BOOST_TEST(dc->d.squared == exact_distance(m, r1, r2).squared);
+            const std::optional<MeasuredDepth> mc = measured_depth(cloud, r1, r2), mh = measured_depth(hull, r1, r2);
+            BOOST_TEST_REQUIRE((mc && mh));
+            BOOST_TEST(mc->state == mh->state);
+            BOOST_TEST((mc->state == MeasuredDepth::Separated) == (v == Verdict::Separated));
+            if (mc->state == MeasuredDepth::Overlapping) BOOST_TEST(mc->depth->squared == mh->depth->squared);
+            const Vec3q n{Q(1), Q(i, 7), Q(-2)};
+            BOOST_TEST((plane_extents(cloud, n, r1, r2) == plane_extents(m, n, r1, r2)));
+        }
+    }
+    std::cout << "cloud points: " << pairs << " pairs, the same distances, depths and extents as the hull\n";
 }

@@ -219,6 +219,7 @@ Json curve_body(const Model& m, const TouchingCurve& c, bool certificate) {
 }  // namespace
 
 void put_exact(Json& o, const std::string& key, const Q& q) { put(o, key, q); }
+Json document_scene(const Model& m) { return scene_json_for(m); }
 
 Json scene_json(const ExactScene& sc) {
     Json s;

@@ -45,5 +45,8 @@ std::string dump(const Json& j);
 // (whose documents hold placeholders for them). Use it for every document from query_json and
 // partition_json.
 std::string document_text(const Model& m, const Json& j);
+// The scene of m for a document: the exact scene, or on the walk its seeds and ranges with
+// placeholders for the points, which document_text fills in.
+Json document_scene(const Model& m);
 
 }  // namespace scalecert::internal

@@ -37,7 +37,7 @@ public:
 
     // How often the exact fallback ran: the distance by CGAL's QP over all vertices, when the
     // proof from the floating-point guess did not close (proved_distance).
-    struct Fallbacks { long distance = 0; };
+    struct Fallbacks { long distance = 0, depth = 0; };
     Fallbacks fallbacks_;
 
     // With `prove`: the last claim run as exact values, and the proof of its judgement
@@ -182,10 +182,9 @@ private:
         put_exact(o, "rho2_minus_curve", r2 - models_.curve_value(r1));
         text = "verdict at (" + num(r1) + ", " + num(r2) + "): claimed " + v + ", exact " + verdict_name(e);
         if (prove_) {
-            Verdict pv;
-            Json pr = verdict_proof(m(), c(), r1, r2, &pv);
-            if (pv != e) throw std::logic_error("certify-fp: the walk's verdict and the hull's differ");
-            proof.emplace(Json{{"kind", "verdict"}, {"rho1", ex(r1)}, {"rho2", ex(r2)}, {"verdict", v}}, std::move(pr));
+            const auto [pm, r] = models_.certified_query(r1, r2);
+            if (r.verdict != e) throw std::logic_error("certify-fp: the certified verdict and the exact one differ");
+            proof.emplace(Json{{"kind", "verdict"}, {"rho1", ex(r1)}, {"rho2", ex(r2)}, {"verdict", v}}, verdict_proof(*pm, r));
         }
         return right;
     }
@@ -198,8 +197,9 @@ private:
         errors(o, g, exact);
         text = "growth distance " + num(g) + ": exact " + num(exact);
         if (prove_) {
-            if (c().growth.value != exact) throw std::logic_error("certify-fp: the walk's growth distance and the hull's differ");
-            proof.emplace(Json{{"kind", "growth_distance"}, {"value", ex(g)}}, growth_proof(m(), c()));
+            Json pr = models_.growth_proof();
+            if (pr["value"] != ex(exact)) throw std::logic_error("certify-fp: the proved growth distance and the exact one differ");
+            proof.emplace(Json{{"kind", "growth_distance"}, {"value", ex(g)}}, std::move(pr));
         }
         return close(g, exact);
     }
@@ -284,6 +284,31 @@ private:
         text = "curve point (" + num(r1) + ", " + num(r2) + "): exact curve at rho1 is " + num(f);
         if (prove_) proof.emplace(Json{{"kind", "curve_point"}, {"rho1", ex(r1)}, {"rho2", ex(r2)}}, curve_proof(m(), c(), r1, r1));
         return sgn(f) > 0 && close(r2, f);
+    }
+
+    // f on the point set for the measures (the cloud's trees on a walked scene), or on the hull
+    // model's vertices where the cloud cannot answer exactly (a normal beyond doubles).
+    template <class F>
+    auto on_points(F f) const {
+        try {
+            return f(models_.points());
+        } catch (const PointSetsCannot&) {
+            return f(HullPoints(m()));
+        }
+    }
+    // The exact distance, proved from the points' supports; CGAL's QP over every hull vertex when
+    // the proof does not close (counted).
+    ExactDistance exact_distance_of(const Q& r1, const Q& r2) {
+        if (std::optional<ProvedDistance> pd = on_points([&](const PointSets& S) { return proved_distance(S, r1, r2); })) return pd->d;
+        ++fallbacks_.distance;
+        return exact_distance(m(), r1, r2);
+    }
+    // The depth with what proves it (measured_depth); when the distance's proof does not close,
+    // from CGAL's exact distance and the EPA on the hull's vertices (counted).
+    MeasuredDepth depth_of(const Q& r1, const Q& r2) {
+        if (std::optional<MeasuredDepth> d = on_points([&](const PointSets& S) { return measured_depth(S, r1, r2); })) return *d;
+        ++fallbacks_.depth;
+        return depth_from_distance(HullPoints(m()), exact_distance(m(), r1, r2), r1, r2);
     }
 
     // Where the curve reaches ρ2 = 0: on its last piece (it goes on as one line from there).
@@ -475,7 +500,7 @@ private:
         const Vec3q n = point(need(j, "normal"), "normal");
         if (sgn(n[0]) == 0 && sgn(n[1]) == 0 && sgn(n[2]) == 0) fail("normal", "the zero vector is not a normal");
         const JNode* off = j.find("offset");
-        const auto [c1, c2] = plane_extents(m(), n, r1, r2);
+        const auto [c1, c2] = on_points([&](const PointSets& S) { return plane_extents(S, n, r1, r2); });
         put_exact(o, "rho1", r1);
         put_exact(o, "rho2", r2);
         put_exact(o, "max_over_P1", c1);  // P1(ρ1) ⊆ {n·x ≤ c1}
@@ -515,9 +540,7 @@ private:
         only(j, {"kind", "rho1", "rho2", "value", "closest"});
         const auto [r1, r2] = pair_at(j);
         const Q d = field(j, "value");
-        const ProvedDistance pd = proved_distance(m(), r1, r2);
-        fallbacks_.distance += pd.fallback;
-        const ExactDistance& e = pd.d;
+        const ExactDistance e = exact_distance_of(r1, r2);
         put_exact(o, "rho1", r1);
         put_exact(o, "rho2", r2);
         errors_sq(o, d, e.squared);
@@ -529,7 +552,7 @@ private:
         Json pc, pp;
         if (prove_) {
             pc = Json{{"kind", "distance"}, {"rho1", ex(r1)}, {"rho2", ex(r2)}, {"value", ex(d)}};
-            pp = distance_proof(m(), e, r1, r2);
+            pp = distance_proof(nullptr, e, r1, r2);
         }
         if (const JNode* cl = j.find("closest")) {
             if (cl->kind != JNode::Array || cl->items.size() != 2) fail("closest", "expected [point on P1, point on P2]");
@@ -556,24 +579,17 @@ private:
         only(j, {"kind", "rho1", "rho2", "value", "direction"});
         const auto [r1, r2] = pair_at(j);
         const Q d = field(j, "value");
-        // The exact squared depth (−1 when separated) and a minimising direction: with the proof,
-        // or without it from the verdict and, for an overlapping pair, the exact EPA.
-        ExactDepth e{Q(-1), {}};
+        // The exact squared depth (−1 when separated) and a minimising direction, with its proof.
+        const MeasuredDepth md = depth_of(r1, r2);
+        ExactDepth e{Q(-1), md.normal};
+        if (md.state == MeasuredDepth::Touching) e.squared = 0;
+        if (md.state == MeasuredDepth::Overlapping) e.squared = md.depth->squared;
         put_exact(o, "rho1", r1);
         put_exact(o, "rho2", r2);
         Json pc, pp;
         if (prove_) {
             pc = Json{{"kind", "penetration_depth"}, {"rho1", ex(r1)}, {"rho2", ex(r2)}, {"value", ex(d)}};
-            pp = depth_proof(m(), c(), r1, r2, &e.squared, &e.direction);
-        } else {
-            const Verdict v = models_.verdict(r1, r2);
-            if (v == Verdict::Touching) {
-                e = {Q(0), m().lines[query(m(), c(), r1, r2, true).plane->line].normal};
-            } else if (v == Verdict::Overlapping) {
-                const std::optional<ProvedDepth> pd = proved_depth(m(), r1, r2);
-                if (!pd) throw std::logic_error("certify-fp: an overlapping pair whose difference does not hold the origin");
-                e = {pd->squared, pd->direction};
-            }
+            pp = depth_proof(nullptr, md, r1, r2);
         }
         if (sgn(e.squared) < 0) {
             o["exact_verdict"] = "separated";
@@ -592,7 +608,7 @@ private:
             const Vec3q n = point(*dir, "direction");
             if (sgn(n[0]) == 0 && sgn(n[1]) == 0 && sgn(n[2]) == 0) fail("direction", "the zero vector is not a direction");
             // Moving P2 by the depth along n separates them exactly iff n attains the minimum.
-            const Q along = directional_depth_squared(m(), n, r1, r2);
+            const Q along = on_points([&](const PointSets& S) { return directional_depth_squared(S, n, r1, r2); });
             put_exact(o, "depth_squared_along_direction", along);
             const bool ok = within_above(along, e.squared);
             o["direction_right"] = ok;
@@ -611,7 +627,7 @@ namespace {
 // "right", "wrong"}, or the claims' text lines and a summary line.
 // (fallbacks >= 0: JSON claims' "exact_fallbacks", how often the exact fallback ran.)
 std::string report(Json arr, const std::string& text, long n, long bad, bool json, const Q* tolerance, long* wrong, long* count,
-                   long fallbacks = -1) {
+                   long fallbacks = -1, long fallbacks_depth = 0) {
     if (wrong) *wrong = bad;
     if (count) *count = n;
     if (json) {
@@ -620,7 +636,7 @@ std::string report(Json arr, const std::string& text, long n, long bad, bool jso
         if (tolerance) put_exact(j, "tolerance", *tolerance);
         j["right"] = n - bad;
         j["wrong"] = bad;
-        if (fallbacks >= 0) j["exact_fallbacks"] = Json{{"distance", fallbacks}};
+        if (fallbacks >= 0) j["exact_fallbacks"] = Json{{"distance", fallbacks}, {"depth", fallbacks_depth}};
         return dump(j);
     }
     return text + "claims: " + std::to_string(n) + ", right: " + std::to_string(n - bad) + ", wrong: " + std::to_string(bad) + "\n";
@@ -684,7 +700,7 @@ std::string certify_claim_lines(const ClaimModels& models, const std::string& cl
             put_exact(o, "claimed", g);
             put_exact(o, "exact", exact_g);
             detail = "growth distance " + w[1] + ": exact " + num(exact_g, 17) + ", off by " + num(g - exact_g, 17);
-            if (certificate) proof.emplace(Json{{"kind", "growth_distance"}, {"value", ex(g)}}, growth_proof(models.model(), models.curve()));
+            if (certificate) proof.emplace(Json{{"kind", "growth_distance"}, {"value", ex(g)}}, models.growth_proof());
         } else if (w.size() == 3) {
             Q r1 = read_number(w[0], exact_decimals, where), r2 = read_number(w[1], exact_decimals, where);
             if (sgn(r1) <= 0 || sgn(r2) <= 0) throw InputError(where + ": scalings must be > 0");
@@ -702,10 +718,9 @@ std::string certify_claim_lines(const ClaimModels& models, const std::string& cl
             put_exact(o, "rho2_minus_curve", r2 - f);
             detail = "(" + w[0] + ", " + w[1] + ") claimed " + v + ": exact " + en + ", rho2 - curve = " + num(r2 - f, 17);
             if (certificate) {
-                Verdict pv;
-                Json pr = verdict_proof(models.model(), models.curve(), r1, r2, &pv);
-                if (pv != e) throw std::logic_error("certify-fp: the walk's verdict and the hull's differ");
-                proof.emplace(Json{{"kind", "verdict"}, {"rho1", ex(r1)}, {"rho2", ex(r2)}, {"verdict", v}}, std::move(pr));
+                const auto [pm, r] = models.certified_query(r1, r2);
+                if (r.verdict != e) throw std::logic_error("certify-fp: the certified verdict and the exact one differ");
+                proof.emplace(Json{{"kind", "verdict"}, {"rho1", ex(r1)}, {"rho2", ex(r2)}, {"verdict", v}}, verdict_proof(*pm, r));
             }
         } else {
             throw InputError(where + ": expected 'RHO1 RHO2 VERDICT', 'curve RHO1 RHO2' or 'growth RHO'");
@@ -718,14 +733,21 @@ std::string certify_claim_lines(const ClaimModels& models, const std::string& cl
         text += std::string(right ? "right  " : "WRONG  ") + detail + "\n";
     }
     if (n == 0) throw InputError(name + ": no claims (expected 'RHO1 RHO2 VERDICT', 'curve RHO1 RHO2' or 'growth RHO' lines)");
-    if (certificate) *certificate = judgements_text(models.model(), Q(0), std::move(entries));
+    if (certificate) *certificate = judgements_text(models.document(), Q(0), std::move(entries));
     return report(std::move(arr), text, n, bad, json, nullptr, wrong, count);
 }
 
 ClaimModels ClaimModels::of(const HullModel& m, const TouchingCurve& c) {
-    return {[&m]() -> const HullModel& { return m; }, [&c]() -> const TouchingCurve& { return c; },
+    auto points = std::make_shared<HullPoints>(m);
+    return {[&m]() -> const HullModel& { return m; },
+            [&c]() -> const TouchingCurve& { return c; },
             [&m, &c](const Q& r1, const Q& r2) { return query(m, c, r1, r2, false).verdict; },
-            [&m, &c](const Q& r1) { return c.env.value(m.lines, r1); }, [&c] { return c.growth.value; }};
+            [&m, &c](const Q& r1) { return c.env.value(m.lines, r1); },
+            [&c] { return c.growth.value; },
+            [points]() -> const PointSets& { return *points; },
+            [&m]() -> const Model& { return m; },
+            [&m, &c](const Q& r1, const Q& r2) { return std::pair<const Model*, QueryAnswer>{&m, query(m, c, r1, r2, true)}; },
+            [&m, &c] { return scalecert::internal::growth_proof(m, c); }};
 }
 
 std::string certify_fp(const ClaimModels& models, const std::string& claims, const std::string& name, const ClaimOptions& opt,
@@ -767,9 +789,9 @@ std::string certify_fp(const ClaimModels& models, const std::string& claims, con
         arr.push_back(o);
         text += std::string(right ? "right  " : "WRONG  ") + line + "\n";
     }
-    if (certificate) *certificate = judgements_text(models.model(), opt.tolerance, std::move(entries));
+    if (certificate) *certificate = judgements_text(models.document(), opt.tolerance, std::move(entries));
     return report(std::move(arr), text, static_cast<long>(list->items.size()), bad, json, &opt.tolerance, wrong, count,
-                  cert.fallbacks_.distance);
+                  cert.fallbacks_.distance, cert.fallbacks_.depth);
 }
 
 }  // namespace scalecert::internal

@@ -1,7 +1,9 @@
 // Certifying a floating-point program's claims: each marked right or wrong, exactly
 // (certificates/CLAIMS.md holds the rules).
 #pragma once
+#include "certify/certificate.hpp"
 #include "certify/query.hpp"
+#include "geometry/point_sets.hpp"
 
 #include <functional>
 #include <string>
@@ -11,8 +13,8 @@ namespace scalecert::internal {
 // Marks a floating-point program's claims right or wrong, exactly, and reports the exact values
 // and errors (text, or JSON with `json`); the number of wrong claims in *wrong. Two formats:
 // - JSON (text starting with '{'): {"format": "scalecert-claims-1", "claims": [...]} with the kinds
-//   verdict, curve, switch_point, growth_distance, separating_plane, witness_point, distance and
-//   penetration_depth (certificates/CLAIMS.md);
+//   verdict, curve, curve_point, switch_point, growth_distance, separating_plane, witness_point,
+//   distance and penetration_depth (certificates/CLAIMS.md);
 // - lines ('#' comments): 'RHO1 RHO2 VERDICT' (separated | touching | overlapping | intersecting,
 //   = not separated), 'curve RHO1 RHO2' (a claimed point of the touching curve) or 'growth RHO'.
 // A JSON number or a decimal of the line format is the double strtod gives (what the program that
@@ -30,6 +32,16 @@ struct ClaimModels {
     std::function<Verdict(const Q&, const Q&)> verdict;
     std::function<Q(const Q&)> curve_value;
     std::function<Q()> growth;  // ρ*
+    // Support queries for planes, distances and depths (measures.hpp): the hull model's vertices,
+    // or on a walked scene the points' trees, with no hull.
+    std::function<const PointSets&()> points;
+    // The model whose scene and seed weights a judgements certificate states (the walk's on a
+    // walked scene: the same points in the same order as the hull model's).
+    std::function<const Model&()> document;
+    // A verdict's query certificate, on the model that proves it.
+    std::function<std::pair<const Model*, QueryAnswer>(const Q&, const Q&)> certified_query;
+    // The growth distance's proof (judgements.hpp, growth_proof), on the model that proves it.
+    std::function<Json()> growth_proof;
     static ClaimModels of(const HullModel& m, const TouchingCurve& c);
 };
 // (*count, when given: the number of claims. *certificate, when given: the judgements

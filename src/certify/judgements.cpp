@@ -49,65 +49,58 @@ Json membership_proof(const HullModel& m, int i, const Q& rho, const Vec3q& x, b
     return Json{{"in", weights_json(at.side == 0 ? face_weights(P, *at.face, y) : P.interior_weights(y))}};
 }
 
-Json verdict_proof(const HullModel& m, const TouchingCurve& c, const Q& rho1, const Q& rho2, Verdict* verdict) {
-    const QueryAnswer r = query(m, c, rho1, rho2, true);
-    *verdict = r.verdict;
+Json verdict_proof(const Model& m, const QueryAnswer& r) {
     return Json{{"verdict", verdict_name(r.verdict)}, {"certificate", query_certificate_json(m, r)}};
 }
 
-Json distance_proof(const HullModel& m, const ExactDistance& e, const Q& rho1, const Q& rho2) {
-    bool in1 = false, in2 = false;
-    Json p1 = membership_proof(m, 0, rho1, e.p1, &in1), p2 = membership_proof(m, 1, rho2, e.p2, &in2);
-    if (!in1 || !in2) throw std::logic_error("distance_proof: a closest point outside its body");
+Json distance_proof(const HullModel* m, const ExactDistance& e, const Q& rho1, const Q& rho2) {
     Json j;
     j["squared"] = to_exact_string(e.squared);
+    if (!e.w1.empty() && !e.w2.empty()) {
+        j["P1"] = weights_json(e.w1);
+        j["P2"] = weights_json(e.w2);
+        return j;
+    }
+    if (!m) throw std::logic_error("distance_proof: closest points without weights, and no hull");
+    bool in1 = false, in2 = false;
+    Json p1 = membership_proof(*m, 0, rho1, e.p1, &in1), p2 = membership_proof(*m, 1, rho2, e.p2, &in2);
+    if (!in1 || !in2) throw std::logic_error("distance_proof: a closest point outside its body");
     j["P1"] = p1["in"];
     j["P2"] = p2["in"];
     return j;
 }
 
-Json depth_proof(const HullModel& m, const TouchingCurve& c, const Q& rho1, const Q& rho2, Q* squared, Vec3z* direction) {
-    const QueryAnswer r = query(m, c, rho1, rho2, true);
-    if (r.verdict == Verdict::Separated) {
-        *squared = -1;
-        *direction = m.lines[r.plane->line].normal;
-        return Json{{"separated", normal_json(m.lines[r.plane->line].normal)}};
+Json depth_proof(const HullModel* m, const MeasuredDepth& d, const Q& rho1, const Q& rho2) {
+    if (d.state == MeasuredDepth::Separated) return Json{{"separated", normal_json(d.normal)}};
+    if (d.state == MeasuredDepth::Touching) {
+        const Json common = distance_proof(m, d.distance, rho1, rho2);
+        return Json{{"squared", "0"}, {"direction", normal_json(d.normal)}, {"common", Json{{"P1", common["P1"]}, {"P2", common["P2"]}}}};
     }
-    if (r.verdict == Verdict::Touching) {
-        *squared = 0;
-        *direction = m.lines[r.plane->line].normal;
-        return Json{{"squared", "0"},
-                    {"direction", normal_json(m.lines[r.plane->line].normal)},
-                    {"common", Json{{"P1", weights_json(r.witness->w1)}, {"P2", weights_json(r.witness->w2)}}}};
-    }
-    const std::optional<ProvedDepth> d = proved_depth(m, rho1, rho2);
-    if (!d) throw std::logic_error("depth_proof: the origin is not inside the Minkowski difference");
-    *squared = d->squared;
-    *direction = d->direction;
+    const ProvedDepth& p = *d.depth;
     // The points in order of first use.
     std::map<int, int> renumber;
     Json points = Json::array(), triangles = Json::array();
-    for (const auto& t : d->triangles) {
+    for (const auto& t : p.triangles) {
         Json tri = Json::array();
         for (int v : t) {
             auto it = renumber.find(v);
             if (it == renumber.end()) {
                 it = renumber.emplace(v, static_cast<int>(renumber.size())).first;
-                points.push_back(Json::array({d->points[static_cast<size_t>(v)].first, d->points[static_cast<size_t>(v)].second}));
+                points.push_back(Json::array({p.points[static_cast<size_t>(v)].first, p.points[static_cast<size_t>(v)].second}));
             }
             tri.push_back(it->second);
         }
         triangles.push_back(tri);
     }
     Json j;
-    j["squared"] = to_exact_string(*squared);
-    j["direction"] = normal_json(d->direction);
+    j["squared"] = to_exact_string(p.squared);
+    j["direction"] = normal_json(p.direction);
     j["points"] = std::move(points);
     j["triangles"] = std::move(triangles);
     return j;
 }
 
-Json growth_proof(const HullModel& m, const TouchingCurve& c) {
+Json growth_proof(const Model& m, const TouchingCurve& c) {
     const Q& g = c.growth.value;
     Json j;
     j["value"] = to_exact_string(g);
@@ -136,15 +129,15 @@ Json curve_proof(const HullModel& m, const TouchingCurve& c, const Q& lo_need, c
     return curve_proof_json(m, w, curve_witnesses(m, w, SeedWeights{}));
 }
 
-std::string judgements_text(const HullModel& m, const Q& tolerance, Json judgements) {
+std::string judgements_text(const Model& m, const Q& tolerance, Json judgements) {
     Json j;
     j["format"] = "scalecert-2";
     j["kind"] = "judgements";
     j["tolerance"] = to_exact_string(tolerance);
     j["judgements"] = std::move(judgements);
     j["seed_interior"] = seed_interior(seed_weights(m));
-    j["scene"] = scene_json(m.scene);
-    return dump(j);
+    j["scene"] = document_scene(m);
+    return document_text(m, j);
 }
 
 }  // namespace scalecert::internal

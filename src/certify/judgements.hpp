@@ -12,30 +12,30 @@ namespace scalecert::internal {
 // {"out": normal} (the outward normal of a face of P_i whose plane y lies strictly beyond).
 Json membership_proof(const HullModel& m, int i, const Q& rho, const Vec3q& x, bool* inside);
 
-// The exact verdict at (ρ1, ρ2) with its query certificate: {"verdict", "certificate"}.
-Json verdict_proof(const HullModel& m, const TouchingCurve& c, const Q& rho1, const Q& rho2, Verdict* verdict);
+// A verdict with its query certificate (on the model that proves it): {"verdict", "certificate"}.
+Json verdict_proof(const Model& m, const QueryAnswer& r);
 
 // The exact squared distance E and closest points p ∈ P1(ρ1), q ∈ P2(ρ2) as weights:
 // {"squared", "P1", "P2"}. With u = q − p: E = |u|², and for E > 0 the slab — u·x ≤ u·p over
-// P1(ρ1), u·y ≥ u·q over P2(ρ2) — proves that no pair is closer.
-Json distance_proof(const HullModel& m, const ExactDistance& e, const Q& rho1, const Q& rho2);
+// P1(ρ1), u·y ≥ u·q over P2(ρ2) — proves that no pair is closer. The weights are the distance's
+// own (proved_distance) or, without them, found on the hull model m (which must then be given).
+Json distance_proof(const HullModel* m, const ExactDistance& e, const Q& rho1, const Q& rho2);
 
-// The exact squared penetration depth E at (ρ1, ρ2), proved:
-// - separated: {"separated": normal}, a normal whose plane separates strictly (E = −1 returned);
-// - touching: {"squared": "0", "direction": normal, "common": {"P1", "P2"}}: a supporting plane
-//   and a common point at the pair;
+// The proof of a measured depth (measures.hpp, measured_depth):
+// - separated: {"separated": normal}, a normal whose plane separates strictly;
+// - touching: {"squared": "0", "direction": normal, "common": {"P1", "P2"}}: a supporting plane of
+//   the Minkowski difference through the origin, and a common point (the distance's);
 // - overlapping: {"squared", "direction", "points", "triangles"}: the upper bound from the
 //   direction (translating P2 by √E along it separates), the lower bound from a closed triangulated
-//   surface whose vertices (each [i, j]: vertex i of P1(ρ1) minus vertex j of P2(ρ2)) lie in the
+//   surface whose vertices (each [i, j]: point i of P1(ρ1) minus point j of P2(ρ2)) lie in the
 //   Minkowski difference and whose every triangle's plane lies at least √E from the origin. It is
 //   the final polytope of an exact EPA (expanding polytope) run on support points.
-// (*direction: the proof's normal.)
-Json depth_proof(const HullModel& m, const TouchingCurve& c, const Q& rho1, const Q& rho2, Q* squared, Vec3z* direction);
+Json depth_proof(const HullModel* m, const MeasuredDepth& d, const Q& rho1, const Q& rho2);
 
 // The growth distance ρ*: {"value"} when the seeds coincide (ρ* = 0); else {"value", "normal",
 // "witness"}: n·d = ρ*(h1(n) + h2(n)), so (ρ, ρ) is separated for every ρ < ρ*, and a common point
 // at (ρ*, ρ*).
-Json growth_proof(const HullModel& m, const TouchingCurve& c);
+Json growth_proof(const Model& m, const TouchingCurve& c);
 
 // The exact curve over a window [a, b] that holds [lo_need, hi_need] with room on both sides:
 // a < lo_need (a = 0 when lo_need <= 0) and b > hi_need, each halfway to the next break of the
@@ -46,6 +46,6 @@ Json curve_proof(const HullModel& m, const TouchingCurve& c, const Q& lo_need, c
 
 // The document: {"format", "kind": "judgements", "tolerance", "judgements", "seed_interior",
 // "scene"}, as text.
-std::string judgements_text(const HullModel& m, const Q& tolerance, Json judgements);
+std::string judgements_text(const Model& m, const Q& tolerance, Json judgements);
 
 }  // namespace scalecert::internal

@@ -14,6 +14,8 @@
 
 namespace scalecert::internal {
 
+class PointSets;  // geometry/point_sets.hpp
+
 struct ContactLine {
     Vec3z normal;                 // primitive, pointing from P1 towards P2
     Q h1, h2, nd;                 // h1 = max n·(v−s1), h2 = max −n·(w−s2), nd = n·d; h1, h2 > 0
@@ -56,6 +58,8 @@ struct Model {
     // The scan path's points (scan.hpp); null on the hull path.
     std::shared_ptr<const CompactScene> scan;
     ScanStats scan_stats;
+    // The scan path's points behind the walk's trees, kept for the measures (CloudPoints).
+    std::shared_ptr<const PointSets> points;
     // The scan path's proof covers ρ1 in [walk_lo, walk_hi] (none: unbounded): there the walked
     // lines' envelope is the whole curve. Outside it, it is only a lower bound.
     Q walk_lo;

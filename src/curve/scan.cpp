@@ -225,6 +225,37 @@ public:
         return s;
     }
 
+    // The point (its index) with the largest double value of d·x: a guess (GJK's), by the same
+    // tree with plain bounds, no filter and no exact stage.
+    int dbest(const double* d) const {
+        double best = -INFINITY;
+        std::uint32_t at = 0;
+        std::vector<std::pair<double, std::uint32_t>> stack{{ub(nodes_[0], d), 0}};
+        while (!stack.empty()) {
+            auto [u, id] = stack.back();
+            stack.pop_back();
+            if (u <= best) continue;
+            const Node& nd = nodes_[id];
+            if (nd.left < 0) {
+                for (std::uint32_t i = nd.begin; i < nd.end; ++i) {
+                    const double* x = &xd_[3 * i];
+                    const double v = d[0] * x[0] + d[1] * x[1] + d[2] * x[2];
+                    if (v > best) best = v, at = i;
+                }
+            } else {
+                const double ul = ub(nodes_[nd.left], d), ur = ub(nodes_[nd.right], d);
+                if (ul < ur) {
+                    stack.push_back({ul, static_cast<std::uint32_t>(nd.left)});
+                    stack.push_back({ur, static_cast<std::uint32_t>(nd.right)});
+                } else {
+                    stack.push_back({ur, static_cast<std::uint32_t>(nd.right)});
+                    stack.push_back({ul, static_cast<std::uint32_t>(nd.left)});
+                }
+            }
+        }
+        return static_cast<int>(perm_[at]);
+    }
+
 private:
     static constexpr std::uint32_t kLeaf = 16;
     struct Node {
@@ -617,7 +648,7 @@ std::vector<int> extreme_points(const IntPoints& P) {
 }
 
 // The two trees, one thread each.
-std::pair<std::unique_ptr<Cloud>, std::unique_ptr<Cloud>> trees(const CompactScene& sc, ScanStats& st) {
+std::pair<std::unique_ptr<Cloud>, std::unique_ptr<Cloud>> internal_trees(const CompactScene& sc, ScanStats& st) {
     auto second = std::async(std::launch::async, [&] { return std::make_unique<Cloud>(sc.P[1], st); });
     auto first = std::make_unique<Cloud>(sc.P[0], st);
     return {std::move(first), second.get()};
@@ -644,6 +675,33 @@ std::vector<std::pair<int, Q>> scan_seed_weights(const CompactScene& sc, int i) 
     return w;
 }
 
+struct CloudPoints::Trees {
+    ScanStats st;
+    std::unique_ptr<Cloud> c[2];
+};
+
+CloudPoints::CloudPoints(std::shared_ptr<const CompactScene> sc) : sc_(std::move(sc)), t_(std::make_unique<Trees>()) {
+    auto [a, b] = internal_trees(*sc_, t_->st);
+    t_->c[0] = std::move(a);
+    t_->c[1] = std::move(b);
+}
+CloudPoints::~CloudPoints() = default;
+Vec3q CloudPoints::point(int i, int k) const { return sc_->P[i].point(static_cast<size_t>(k)); }
+D3 CloudPoints::dpoint(int i, int k) const {
+    const std::int64_t* x = sc_->P[i].at(static_cast<size_t>(k));
+    const double s = sc_->P[i].scale.get_d();
+    return {static_cast<double>(x[0]) / s, static_cast<double>(x[1]) / s, static_cast<double>(x[2]) / s};
+}
+const Vec3q& CloudPoints::seed(int i) const { return sc_->seed[i]; }
+const Z& CloudPoints::scale(int i) const { return sc_->P[i].scale; }
+int CloudPoints::argmax(int i, const Vec3z& n) const {
+    Walked<Support> s = t_->c[i]->support(n);
+    if (std::holds_alternative<WalkStop>(s)) throw PointSetsCannot{};
+    return std::get<Support>(s).all.front();
+}
+int CloudPoints::dargmax(int i, const D3& d) const { return t_->c[i]->dbest(d.data()); }
+std::uint64_t CloudPoints::support_queries() const { return t_->st.support_queries; }
+
 namespace {
 Walked<WalkModel> walk(std::shared_ptr<const CompactScene> sc, const std::optional<std::pair<Q, Q>>& cover) {
     StageClock clock;
@@ -664,8 +722,10 @@ Walked<WalkModel> walk(std::shared_ptr<const CompactScene> sc, const std::option
     set_seeds_in_integers(m);
     if (is_zero(m.dz)) return stop(Handover::SeedsCoincide);
 
-    const auto t = trees(*sc, m.scan_stats);
-    const Cloud &c1 = *t.first, &c2 = *t.second;
+    // The trees, kept with the model for the measures (CloudPoints); their statistics are the
+    // walk's support queries.
+    auto cloud = std::make_shared<CloudPoints>(sc);
+    const Cloud &c1 = *cloud->trees().c[0], &c2 = *cloud->trees().c[1];
     clock.lap("scan: trees");
     Walker w(m, c1, c2);
     std::vector<int> init[2];
@@ -734,6 +794,9 @@ Walked<WalkModel> walk(std::shared_ptr<const CompactScene> sc, const std::option
         if (m.lines[i].normal == m.lines[i - 1].normal) return stop(Handover::NormalTwice);
     m.stats.distinct_normals = m.lines.size();
     clock.lap("scan: walk");
+    m.scan_stats.support_queries = cloud->trees().st.support_queries;
+    m.scan_stats.predicates = cloud->trees().st.predicates;
+    m.points = std::move(cloud);
     return m;
 }
 }  // namespace

@@ -12,6 +12,7 @@
 // the intervals decide.
 #pragma once
 #include "curve/contact_lines.hpp"
+#include "geometry/point_sets.hpp"
 #include "io/int_points.hpp"
 
 #include <memory>
@@ -74,6 +75,29 @@ std::vector<std::uint64_t> handover_counts();
 // (ρ1 > 0 ranges outside I1 that queries need). Where it cannot, the result holds the reason
 // instead of a model; it throws nothing but std::bad_alloc.
 WalkResult scan_model(std::shared_ptr<const CompactScene> sc, const std::optional<std::pair<Q, Q>>& cover = std::nullopt);
+
+// The points of a compact scene behind the walk's bounding-volume trees, for the measures
+// (measures.hpp) of scenes too large for a hull: every support query exact (filter, then the few
+// candidates in integers), no hull built. Building the trees is linear (a radix sort of Morton
+// codes); argmax throws PointSetsCannot for a normal beyond doubles.
+class CloudPoints final : public PointSets {
+public:
+    explicit CloudPoints(std::shared_ptr<const CompactScene> sc);
+    ~CloudPoints() override;
+    Vec3q point(int i, int k) const override;
+    D3 dpoint(int i, int k) const override;
+    const Vec3q& seed(int i) const override;
+    const Z& scale(int i) const override;
+    int argmax(int i, const Vec3z& n) const override;
+    int dargmax(int i, const D3& d) const override;
+    std::uint64_t support_queries() const;  // exact support queries so far
+    struct Trees;                            // the two trees (scan.cpp)
+    const Trees& trees() const { return *t_; }
+
+private:
+    std::shared_ptr<const CompactScene> sc_;
+    std::unique_ptr<Trees> t_;
+};
 
 // Both seeds proved strictly inside from a few extreme points (as scan_model does); false means
 // "not proved" (the hull decides), not "outside".

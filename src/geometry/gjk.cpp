@@ -12,33 +12,29 @@ namespace scalecert::internal {
 
 namespace {
 
+// P_i(ρ) in doubles: supports by the point set's guess, each point scaled as it is named.
 struct Body {
-    std::vector<int> idx;
-    std::vector<D3> x;  // the scaled vertices, in doubles
-    // The vertex maximising d·x.
-    size_t support(const D3& d) const {
-        size_t best = 0;
-        double bv = -INFINITY;
-        for (size_t k = 0; k < x.size(); ++k) {
-            const double v = dotd(d, x[k]);
-            if (v > bv) bv = v, best = k;
-        }
-        return best;
+    const PointSets& S;
+    int i;
+    double rho;
+    D3 s;
+    std::vector<int> idx;  // the points named so far (positions index this)
+    std::vector<D3> x;     // their scaled doubles
+    Body(const PointSets& sets, int poly, double r) : S(sets), i(poly), rho(r) {
+        const Vec3q& q = S.seed(i);
+        s = {to_double_rn(q[0]), to_double_rn(q[1]), to_double_rn(q[2])};
+    }
+    // The position of the point maximising d·x.
+    size_t support(const D3& d) {
+        const int k = S.dargmax(i, d);
+        for (size_t t = 0; t < idx.size(); ++t)
+            if (idx[t] == k) return t;
+        const D3 p = S.dpoint(i, k);
+        idx.push_back(k);
+        x.push_back({s[0] + rho * (p[0] - s[0]), s[1] + rho * (p[1] - s[1]), s[2] + rho * (p[2] - s[2])});
+        return idx.size() - 1;
     }
 };
-Body body(const HullModel& m, int i, double rho) {
-    Body b;
-    const D3 s{to_double_rn(m.s[i][0]), to_double_rn(m.s[i][1]), to_double_rn(m.s[i][2])};
-    // The scaled integer points as doubles over the scale as a double: a guess needs no more.
-    const double scale = to_double_rn(Q(m.P[i].scale));
-    for (int v : m.P[i].vertices) {
-        const auto& d = m.P[i].dpts[static_cast<size_t>(v)];
-        const D3 x{d[0] / scale, d[1] / scale, d[2] / scale};
-        b.idx.push_back(v);
-        b.x.push_back({s[0] + rho * (x[0] - s[0]), s[1] + rho * (x[1] - s[1]), s[2] + rho * (x[2] - s[2])});
-    }
-    return b;
-}
 
 struct Vert {
     size_t a, b;  // positions in the bodies
@@ -97,8 +93,10 @@ bool project(const std::vector<Vert>& s, unsigned mask, std::vector<double>& w, 
 }
 }  // namespace
 
-GjkGuess gjk_guess(const HullModel& m, double rho1, double rho2) {
-    const Body A = body(m, 0, rho1), B = body(m, 1, rho2);
+GjkGuess gjk_guess(const HullModel& m, double rho1, double rho2) { return gjk_guess(HullPoints(m), rho1, rho2); }
+
+GjkGuess gjk_guess(const PointSets& S, double rho1, double rho2) {
+    Body A(S, 0, rho1), B(S, 1, rho2);
     auto support = [&](const D3& d) {  // the point of M = A − B maximising d·z
         const size_t a = A.support(d), b = B.support({-d[0], -d[1], -d[2]});
         return Vert{a, b, subd(A.x[a], B.x[b])};

@@ -2,7 +2,7 @@
 // which the closest points (or an enclosing simplex) rest; the exact stages prove or correct them
 // (distance_cgal.cpp, proved_distance), and never decide on a double.
 #pragma once
-#include "curve/contact_lines.hpp"
+#include "geometry/point_sets.hpp"
 
 #include <vector>
 
@@ -13,6 +13,7 @@ struct GjkGuess {
     double distance = 0;      // the doubles' distance (0 when the simplex holds the origin)
     int iterations = 0;
 };
-GjkGuess gjk_guess(const HullModel& m, double rho1, double rho2);
+GjkGuess gjk_guess(const PointSets& S, double rho1, double rho2);
+GjkGuess gjk_guess(const HullModel& m, double rho1, double rho2);  // on its vertices
 
 }  // namespace scalecert::internal

@@ -1,4 +1,5 @@
 #include "geometry/measures.hpp"
+#include "geometry/gjk.hpp"
 
 #include <algorithm>
 #include <map>
@@ -19,9 +20,9 @@ bool contains(const Model& m, int i, const Q& rho, const Vec3q& x) {
     return m.P[i].place(y).side <= 0;
 }
 
-std::pair<Q, Q> plane_extents(const HullModel& m, const Vec3q& n, const Q& rho1, const Q& rho2) {
-    // n = k·p with p primitive and k > 0: max over P1 of n·x is k·support(p), min over P2 is
-    // −k·support(−p); scaling about the seed maps a value t to n·s + ρ(t − n·s).
+std::pair<Q, Q> plane_extents(const PointSets& S, const Vec3q& n, const Q& rho1, const Q& rho2) {
+    // n = k·p with p primitive and k > 0: max over P1 of n·x is k·max p·x, min over P2 is
+    // k·min p·x; scaling about the seed maps a value t to n·s + ρ(t − n·s).
     const Vec3z p = primitive(n);
     Q k;
     for (int i = 0; i < 3; ++i)
@@ -29,16 +30,23 @@ std::pair<Q, Q> plane_extents(const HullModel& m, const Vec3q& n, const Q& rho1,
             k = n[i] / Q(p[i]);
             break;
         }
-    const Q ns1 = dot(n, m.s[0]), ns2 = dot(n, m.s[1]);
-    const Q max1 = k * m.P[0].support(p), min2 = -k * m.P[1].support(neg(p));
+    const Vec3q p1 = S.point(0, S.argmax(0, p)), p2 = S.point(1, S.argmax(1, neg(p)));
+    const Q ns1 = dot(n, S.seed(0)), ns2 = dot(n, S.seed(1));
+    const Q max1 = dot(n, p1), min2 = dot(n, p2);
     return {ns1 + rho1 * (max1 - ns1), ns2 + rho2 * (min2 - ns2)};
 }
+std::pair<Q, Q> plane_extents(const HullModel& m, const Vec3q& n, const Q& rho1, const Q& rho2) {
+    return plane_extents(HullPoints(m), n, rho1, rho2);
+}
 
-Q directional_depth_squared(const HullModel& m, const Vec3q& n, const Q& rho1, const Q& rho2) {
-    const auto [c1, c2] = plane_extents(m, n, rho1, rho2);
+Q directional_depth_squared(const PointSets& S, const Vec3q& n, const Q& rho1, const Q& rho2) {
+    const auto [c1, c2] = plane_extents(S, n, rho1, rho2);
     const Q h = c1 - c2;  // max over P1(ρ1) − P2(ρ2) of n·x
     const Q sq = h * h / dot(n, n);
     return sgn(h) < 0 ? Q(-sq) : sq;
+}
+Q directional_depth_squared(const HullModel& m, const Vec3q& n, const Q& rho1, const Q& rho2) {
+    return directional_depth_squared(HullPoints(m), n, rho1, rho2);
 }
 
 ExactDepth exact_penetration_depth(const HullModel& m, const std::vector<Vec3z>& normals, const Q& rho1, const Q& rho2) {
@@ -68,7 +76,7 @@ struct MPoint {
 // the origin, and that distance is M's: the depth. In integers: every point of M is an integer
 // point over one denominator D = lcm(den ρ1 · lcm(scale1, den s1), den ρ2 · lcm(scale2, den s2)).
 struct Epa {
-    const HullModel& m;
+    const PointSets& S;
     Q r1, r2;
     Z D;
     std::vector<MPoint> pts;
@@ -82,12 +90,12 @@ struct Epa {
     std::vector<Tri> tris;
     std::map<std::pair<int, int>, size_t> edge;  // directed edge -> its live triangle
 
-    Epa(const HullModel& model, const Q& rho1, const Q& rho2) : m(model), r1(rho1), r2(rho2) {
+    Epa(const PointSets& sets, const Q& rho1, const Q& rho2) : S(sets), r1(rho1), r2(rho2) {
         Z d[2];
         const Q* r[2] = {&r1, &r2};
         for (int i = 0; i < 2; ++i) {
-            Z l = m.P[i].scale;
-            for (const Q& c : m.s[i]) mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), c.get_den_mpz_t());
+            Z l = S.scale(i);
+            for (const Q& c : S.seed(i)) mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), c.get_den_mpz_t());
             d[i] = l * r[i]->get_den();
         }
         mpz_lcm(D.get_mpz_t(), d[0].get_mpz_t(), d[1].get_mpz_t());
@@ -101,12 +109,14 @@ struct Epa {
         }
         return z;
     }
+    Vec3q scaled(int i, const Q& rho, int k) const {
+        const Vec3q x = S.point(i, k), &s = S.seed(i);
+        return {s[0] + rho * (x[0] - s[0]), s[1] + rho * (x[1] - s[1]), s[2] + rho * (x[2] - s[2])};
+    }
     MPoint support_M(const Vec3z& n) const {
-        const int i = m.P[0].argmax(n).front();
-        const int j = m.P[1].argmax(Vec3z{-n[0], -n[1], -n[2]}).front();
-        const Vec3q a = scaled_point(m, 0, r1, m.P[0].points[static_cast<size_t>(i)]);
-        const Vec3q b = scaled_point(m, 1, r2, m.P[1].points[static_cast<size_t>(j)]);
-        return {i, j, integral(sub(a, b))};
+        const int i = S.argmax(0, n);
+        const int j = S.argmax(1, Vec3z{-n[0], -n[1], -n[2]});
+        return {i, j, integral(sub(scaled(0, r1, i), scaled(1, r2, j)))};
     }
     // a nearer the origin than b (signed: a plane with the origin beyond it is nearer than any)
     static bool nearer(const Tri& a, const Tri& b) {
@@ -242,10 +252,15 @@ struct Epa {
 
 }  // namespace
 
-std::optional<ProvedDepth> proved_depth(const HullModel& m, const Q& rho1, const Q& rho2) {
-    Epa epa(m, rho1, rho2);
+namespace {
+// The EPA's result: its nearest triangle's plane, and the proof when it lies strictly beyond the
+// origin.
+std::optional<ProvedDepth> epa_depth(const PointSets& S, const Q& rho1, const Q& rho2, Vec3z* supporting = nullptr, Q* offset = nullptr) {
+    Epa epa(S, rho1, rho2);
     const size_t best = epa.run();
     const auto& t = epa.tris[best];
+    if (supporting) *supporting = primitive(t.N);
+    if (offset) *offset = Q(t.off);
     if (sgn(t.off) <= 0) return std::nullopt;  // the origin is not strictly inside M
     ProvedDepth d;
     // off and N are D³ and D² times the true ones: the squared distance off²/|N|² over D².
@@ -257,6 +272,57 @@ std::optional<ProvedDepth> proved_depth(const HullModel& m, const Q& rho1, const
         if (u.alive) d.triangles.push_back(u.v);
     d.iterations = static_cast<int>(epa.pts.size()) - 4;
     return d;
+}
+}  // namespace
+
+std::optional<ProvedDepth> proved_depth(const PointSets& S, const Q& rho1, const Q& rho2) { return epa_depth(S, rho1, rho2); }
+std::optional<ProvedDepth> proved_depth(const HullModel& m, const Q& rho1, const Q& rho2) { return proved_depth(HullPoints(m), rho1, rho2); }
+
+std::optional<MeasuredDepth> measured_depth(const PointSets& S, const Q& rho1, const Q& rho2) {
+    // Apart by the doubles' guess: the proved distance decides (its slab separates, or it finds
+    // them meeting after all).
+    if (gjk_guess(S, to_double_rn(rho1), to_double_rn(rho2)).distance > 0) {
+        const std::optional<ProvedDistance> pd = proved_distance(S, rho1, rho2);
+        if (!pd) return std::nullopt;
+        return depth_from_distance(S, pd->d, rho1, rho2);
+    }
+    // Meeting by the guess: the EPA decides alone. Its final plane supports M: beyond the origin,
+    // the depth; with the origin strictly beyond it, it separates; through the origin, touching,
+    // and the proved distance (0) names a common point.
+    MeasuredDepth r;
+    Vec3z supporting;
+    Q off;
+    r.depth = epa_depth(S, rho1, rho2, &supporting, &off);
+    r.normal = r.depth ? r.depth->direction : supporting;
+    if (r.depth) {
+        r.state = MeasuredDepth::Overlapping;
+        return r;
+    }
+    if (sgn(off) < 0) {
+        r.state = MeasuredDepth::Separated;
+        return r;
+    }
+    const std::optional<ProvedDistance> pd = proved_distance(S, rho1, rho2);
+    if (!pd) return std::nullopt;
+    if (sgn(pd->d.squared) != 0) throw std::logic_error("measured_depth: a supporting plane through the origin, and the bodies apart");
+    r.state = MeasuredDepth::Touching;
+    r.distance = pd->d;
+    return r;
+}
+
+MeasuredDepth depth_from_distance(const PointSets& S, const ExactDistance& dist, const Q& rho1, const Q& rho2) {
+    MeasuredDepth r;
+    r.distance = dist;
+    if (sgn(dist.squared) > 0) {  // apart: the slab's direction separates
+        r.state = MeasuredDepth::Separated;
+        r.normal = primitive(sub(dist.p2, dist.p1));
+        return r;
+    }
+    Vec3z supporting;
+    r.depth = epa_depth(S, rho1, rho2, &supporting);
+    r.state = r.depth ? MeasuredDepth::Overlapping : MeasuredDepth::Touching;
+    r.normal = r.depth ? r.depth->direction : supporting;
+    return r;
 }
 
 double sqrt_minus_rn(const Q& square, const Q& c) {

@@ -1,7 +1,7 @@
 // Exact measures at one scaling pair (ρ1, ρ2), for certifying what floating-point collision code
 // outputs besides verdicts. Squares throughout: no root is ever taken.
 #pragma once
-#include "curve/contact_lines.hpp"
+#include "geometry/point_sets.hpp"
 
 #include <array>
 #include <optional>
@@ -14,12 +14,16 @@ Vec3q scaled_point(const Model& m, int i, const Q& rho, const Vec3q& x);
 bool contains(const Model& m, int i, const Q& rho, const Vec3q& x);
 // max over P1(ρ1) of n·x and min over P2(ρ2) of n·x (any nonzero rational n).
 std::pair<Q, Q> plane_extents(const HullModel& m, const Vec3q& n, const Q& rho1, const Q& rho2);
+std::pair<Q, Q> plane_extents(const PointSets& S, const Vec3q& n, const Q& rho1, const Q& rho2);
 
 // The squared Euclidean distance between P1(ρ1) and P2(ρ2) (0 when they meet), with a closest
 // pair of points. CGAL's exact polytope-distance QP (distance_cgal.cpp).
 struct ExactDistance {
     Q squared;
     Vec3q p1, p2;
+    // p1, p2 as convex combinations of points (index, weight > 0), when known (proved_distance):
+    // the judgements certificate's closest points.
+    std::vector<std::pair<int, Q>> w1, w2;
 };
 ExactDistance exact_distance(const HullModel& m, const Q& rho1, const Q& rho2);
 // The same, found at floating-point speed and proved: a double GJK (gjk.hpp) names a few vertices,
@@ -33,6 +37,9 @@ struct ProvedDistance {
     int rounds = 0;
 };
 ProvedDistance proved_distance(const HullModel& m, const Q& rho1, const Q& rho2);
+// The same on any point set (a hull's vertices, or a cloud's points with no hull): none when the
+// rounds run out (the caller then asks the hull model's exact_distance).
+std::optional<ProvedDistance> proved_distance(const PointSets& S, const Q& rho1, const Q& rho2);
 constexpr int kProvedDistanceRounds = 24;
 
 // The squared penetration depth of overlapping P1(ρ1), P2(ρ2): the squared distance from the
@@ -58,9 +65,26 @@ struct ProvedDepth {
     int iterations = 0;
 };
 std::optional<ProvedDepth> proved_depth(const HullModel& m, const Q& rho1, const Q& rho2);
+std::optional<ProvedDepth> proved_depth(const PointSets& S, const Q& rho1, const Q& rho2);
+
+// The depth at (ρ1, ρ2) and what proves it, from support queries alone (any point set, no curve):
+// the proved distance first — apart, its slab's direction u = q − p separates (h_M(u) = −|u|² < 0);
+// meeting, its closest point is a common point (weights w1, w2) — then, for a meeting pair, the
+// exact EPA: its nearest plane strictly beyond the origin gives the depth (Overlapping), through
+// the origin a supporting plane of M (Touching: depth 0). None when the distance's rounds run out.
+struct MeasuredDepth {
+    enum State { Separated, Touching, Overlapping } state = Separated;
+    Vec3z normal;                      // separating, supporting, or the depth's direction
+    ExactDistance distance;            // the proved distance (weights of its closest points)
+    std::optional<ProvedDepth> depth;  // Overlapping
+};
+std::optional<MeasuredDepth> measured_depth(const PointSets& S, const Q& rho1, const Q& rho2);
+// Its second half, from an exact distance found otherwise.
+MeasuredDepth depth_from_distance(const PointSets& S, const ExactDistance& dist, const Q& rho1, const Q& rho2);
 // The squared directional depth along n: (ρ1 h1(n) + ρ2 h2(n) − n·d)² / |n|², signed negative
 // when that plane separates (a translation along n of that length separates them exactly).
 Q directional_depth_squared(const HullModel& m, const Vec3q& n, const Q& rho1, const Q& rho2);
+Q directional_depth_squared(const PointSets& S, const Vec3q& n, const Q& rho1, const Q& rho2);
 
 // √square − c as the nearest double (MPFR at 256 bits, then rounded): for display and error
 // statistics only, never for a decision.

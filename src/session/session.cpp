@@ -1,6 +1,7 @@
 #include "session/session.hpp"
 
 #include "certify/certificate.hpp"
+#include "certify/judgements.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -150,10 +151,27 @@ std::string Session::partition_text() {
     return text;
 }
 
+const PointSets& Session::points() {
+    if (!points_) {
+        if (walked() && walk_->points) points_ = walk_->points;  // the walk's trees
+        else points_ = std::make_shared<HullPoints>(hull());
+    }
+    return *points_;
+}
+
 ClaimModels Session::claim_models() {
-    return {[this]() -> const HullModel& { return hull(); }, [this]() -> const TouchingCurve& { return hull_curve(); },
-            [this](const Q& r1, const Q& r2) { return verdict(r1, r2); }, [this](const Q& r1) { return curve_value(r1); },
-            [this] { return curve().growth.value; }};
+    return {[this]() -> const HullModel& { return hull(); },
+            [this]() -> const TouchingCurve& { return hull_curve(); },
+            [this](const Q& r1, const Q& r2) { return verdict(r1, r2); },
+            [this](const Q& r1) { return curve_value(r1); },
+            [this] { return curve().growth.value; },
+            [this]() -> const PointSets& { return points(); },
+            [this]() -> const Model& { return walked() ? static_cast<const Model&>(*walk_) : hull(); },
+            [this](const Q& r1, const Q& r2) {
+                Certified c = certified_query(r1, r2);
+                return std::pair<const Model*, QueryAnswer>{&c.model, std::move(c.result)};
+            },
+            [this] { return growth_proof(curve_model(), curve()); }};
 }
 
 }  // namespace scalecert::internal

@@ -76,6 +76,9 @@ public:
     // What claims are checked against (claims.hpp): verdicts and curve values as verdict() and
     // curve_value() give them, the hull model for what needs every vertex.
     ClaimModels claim_models();
+    // The points for the measures (measures.hpp): on a walked scene their trees, with no hull
+    // (CloudPoints, built on first use); else the hull model's vertices.
+    const PointSets& points();
     const std::string& name() const { return name_; }
     bool hull_built() const { return hull_ != nullptr; }
 
@@ -98,6 +101,7 @@ private:
     std::string handover_;
     std::shared_ptr<const HullModel> hull_;
     std::optional<TouchingCurve> hull_curve_;
+    std::shared_ptr<const PointSets> points_;
 };
 
 }  // namespace scalecert::internal

@@ -1,0 +1,60 @@
+// The points of the two polyhedra as the measures see them (measures.hpp, gjk.hpp): exact support
+// queries, the points and the seeds, whatever holds them — the hull model's vertices (HullPoints,
+// here), or bounding-volume trees over all the points of a large scene, with no hull at all
+// (CloudPoints, curve/scan.hpp). A measure proved on either is proved: every decision is an exact
+// support query or exact arithmetic on the points it names.
+#pragma once
+#include "curve/contact_lines.hpp"
+#include "numeric/double3.hpp"
+
+namespace scalecert::internal {
+
+// Thrown by a point set that cannot answer a query exactly (a cloud's filter needs the normal
+// within doubles): the caller then asks the hull model.
+struct PointSetsCannot {};
+
+class PointSets {
+public:
+    virtual ~PointSets() = default;
+    virtual Vec3q point(int i, int k) const = 0;  // point k of polyhedron i, exactly
+    virtual D3 dpoint(int i, int k) const = 0;    // the same, near enough for a guess
+    virtual const Vec3q& seed(int i) const = 0;
+    // A positive integer whose product with every point of polyhedron i is integral.
+    virtual const Z& scale(int i) const = 0;
+    // The smallest index of a point of polyhedron i maximising n·x, exactly (PointSetsCannot when
+    // this set cannot tell).
+    virtual int argmax(int i, const Vec3z& n) const = 0;
+    // A point nearly maximising d·x: a guess for GJK, never a decision.
+    virtual int dargmax(int i, const D3& d) const = 0;
+};
+
+// The hull model's vertices.
+class HullPoints final : public PointSets {
+public:
+    explicit HullPoints(const HullModel& m) : m_(m) {}
+    Vec3q point(int i, int k) const override { return m_.P[i].points[static_cast<size_t>(k)]; }
+    D3 dpoint(int i, int k) const override {
+        const auto& d = m_.P[i].dpts[static_cast<size_t>(k)];
+        const double s = m_.P[i].scale.get_d();
+        return {d[0] / s, d[1] / s, d[2] / s};
+    }
+    const Vec3q& seed(int i) const override { return m_.s[i]; }
+    const Z& scale(int i) const override { return m_.P[i].scale; }
+    int argmax(int i, const Vec3z& n) const override { return m_.P[i].argmax(n).front(); }
+    int dargmax(int i, const D3& d) const override {
+        int best = m_.P[i].vertices.front();
+        double bv = -INFINITY;
+        for (int v : m_.P[i].vertices) {
+            const auto& x = m_.P[i].dpts[static_cast<size_t>(v)];
+            const double t = d[0] * x[0] + d[1] * x[1] + d[2] * x[2];
+            if (t > bv) bv = t, best = v;
+        }
+        return best;
+    }
+    const HullModel& model() const { return m_; }
+
+private:
+    const HullModel& m_;
+};
+
+}  // namespace scalecert::internal
