@@ -111,6 +111,10 @@ private:
 };
 
 J parse_strict(const std::string& text) {
+    // nlohmann's reader stops at a NUL byte as at the end of the input: what follows one would
+    // go unread. A byte-order mark is not JSON either (RFC 8259 forbids writing one).
+    if (text.find('\0') != std::string::npos) throw Unreadable{"not strict JSON: a NUL byte in the text"};
+    if (text.compare(0, 3, "\xEF\xBB\xBF") == 0) throw Unreadable{"not strict JSON: a byte-order mark"};
     StrictTree t;
     if (!J::sax_parse(text, &t, J::input_format_t::json, true, false)) throw Unreadable{t.error.empty() ? "not strict JSON" : t.error};
     return std::move(t.root);
@@ -131,8 +135,9 @@ void shape(const J& o, const std::string& where, std::initializer_list<const cha
 }
 const J& at(const J& o, const char* k) { return o.find(k).value(); }  // after shape(): present
 
-// A JSON integer >= 0 written without fraction or exponent (nlohmann reads "-0" as a signed 0).
-bool natural(const J& j) { return j.is_number_unsigned() || (j.is_number_integer() && j.get<long long>() == 0); }
+// A JSON integer >= 0 written without sign, fraction or exponent (nlohmann reads "-0" as a signed
+// integer: refused).
+bool natural(const J& j) { return j.is_number_unsigned(); }
 
 // An index: a JSON integer (no fraction, no exponent) with 0 <= i < n.
 size_t index(const J& j, size_t n, const std::string& where) {
@@ -256,6 +261,15 @@ void spend(double units) {
                          " units a byte of the file; FORMAT.md \"What the checker costs\")"};
 }
 double limbs(const mpz_class& z) { return static_cast<double>(mpz_size(z.get_mpz_t())); }
+// Rational arithmetic on numbers of the file and the scene, counted before it runs: `ops`
+// operations (each a product and the gcd that keeps it in lowest terms) whose operands total m
+// limbs, at 30 + m²/16 units each: above the measured cost (GMP's products and gcds are quadratic
+// at the sizes certificates hold, and cost less than counted beyond). A number stored once but
+// used by every judgement — a tolerance, a seed — is counted at each use. (Measured: seeds of
+// 100 and 1,000 limbs cost 36 µs and 1 ms a plane judgement, counted 120,000 and 1.2·10^7 units;
+// a tolerance of 100 limbs 25 µs a distance judgement, counted 88,000.)
+double qsize(const Q& q) { return limbs(q.get_num()) + limbs(q.get_den()); }
+void spend_ops(double ops, double m) { spend(ops * (30 + m * m / 16)); }
 
 // ---- support scans --------------------------------------------------------------------------
 // Every support value h_i(n) and every list of maximisers is a scan of all the vertices of a
@@ -886,11 +900,20 @@ struct CurveFacts {
     Q end_rho2[2];
     // The piece holding x in [lo, hi] (at a switch point, the one to its right).
     size_t piece_at(const Q& x) const {
-        size_t k = 0;
-        while (k + 1 < ranges.size() && x >= ranges[k][1]) ++k;
-        return k;
+        // the first piece whose range ends beyond x (the last one if none does)
+        size_t lo = 0, hi = ranges.size() - 1;
+        while (lo < hi) {
+            const size_t mid = (lo + hi) / 2;
+            spend_ops(1, qsize(x) + qsize(ranges[mid][1]));
+            if (x >= ranges[mid][1]) lo = mid + 1; else hi = mid;
+        }
+        return lo;
     }
-    Q at(const Q& x) const { return lines[piece_at(x)].at(x); }
+    Q at(const Q& x) const {
+        const Line& L = lines[piece_at(x)];
+        spend_ops(2, qsize(x) + qsize(L.a) + qsize(L.b));
+        return L.at(x);
+    }
 };
 CurveFacts check_curve(const Scene& sc, const J& c, const Q& lo, const Q& hi, const std::string& pre, const std::string& range_name) {
     const J& pieces = at(c, "pieces");
@@ -1201,7 +1224,9 @@ V3 integral(const V3& n, mpz_class* scale) {
 }
 // max over P_i(rho) of n·x, for a nonzero rational n: n·s_i + rho max_v n·(v − s_i), the maximum a
 // scan of every vertex (h(1, m) is max −m·(w − s2), so P2's takes m = −n).
+double vsize(const V3& v) { return std::max({qsize(v[0]), qsize(v[1]), qsize(v[2])}); }
 Q reach(const Scene& sc, int i, const V3& n, const Q& rho) {
+    spend_ops(12, vsize(n) + vsize(sc.s[i]) + qsize(rho) + 2 * limbs(sc.Dj));
     mpz_class L;
     V3 u = integral(n, &L);
     if (i == 1) for (Q& c : u) c = -c;
@@ -1211,6 +1236,7 @@ Q reach_min(const Scene& sc, int i, const V3& n, const Q& rho) { return -reach(s
 // s_i + rho (Σ w v − s_i) for weights over P_i's vertices.
 V3 body_point(const Scene& sc, int i, const Q& rho, const J& w, const std::string& where) {
     const std::array<Q, 3> c = combination(sc, i, w, where);
+    spend_ops(12, vsize(sc.s[i]) + qsize(rho) + std::max({qsize(c[0]), qsize(c[1]), qsize(c[2])}) + limbs(sc.scan[i]->D()));
     const Q D(sc.scan[i]->D());
     V3 x;
     for (int k = 0; k < 3; ++k) x[k] = sc.s[i][k] + rho * (c[k] / D - sc.s[i][k]);
@@ -1225,18 +1251,26 @@ bool member(const Scene& sc, int i, const Q& rho, const V3& x, const J& p, const
         return true;
     }
     const V3 n = normal(at(p, "out"), where + ".out");
+    spend_ops(3, vsize(n) + vsize(x));
     claim(dot(n, x) > reach(sc, i, n, rho), where + ".out: the point lies strictly beyond the body's extent along the normal");
     return false;
 }
 struct Rules {
     Q tol;
-    bool close(const Q& c, const Q& e) const { return abs(c - e) <= tol * abs(e); }
+    bool close(const Q& c, const Q& e) const {
+        spend_ops(3, qsize(c) + qsize(e) + qsize(tol));
+        return abs(c - e) <= tol * abs(e);
+    }
     bool close_sq(const Q& c, const Q& E) const {
+        spend_ops(8, 2 * qsize(c) + qsize(E) + 2 * qsize(tol));
         if (sgn(c) < 0) return false;
         const Q lo = 1 - tol, hi = 1 + tol;
         return (sgn(lo) <= 0 || lo * lo * E <= c * c) && c * c <= hi * hi * E;
     }
-    bool within_above(const Q& x, const Q& E) const { return E <= x && x <= (1 + tol) * (1 + tol) * E; }
+    bool within_above(const Q& x, const Q& E) const {
+        spend_ops(5, qsize(x) + qsize(E) + 2 * qsize(tol));
+        return E <= x && x <= (1 + tol) * (1 + tol) * E;
+    }
 };
 Q positive(const J& o, const char* key, const std::string& where) {
     const Q q = num(at(o, key), where + "." + key);
@@ -1262,39 +1296,66 @@ void check_lower_bound(const Scene& sc, const Q& r1, const Q& r2, const Q& E, co
     const J& tris = at(proof, "triangles");
     claim(pts.is_array() && pts.size() >= 4, where + ".points has at least 4 points");
     claim(tris.is_array() && tris.size() >= 4, where + ".triangles has at least 4 triangles");
-    // Each point and each triangle costs products of numbers as long as the scalings, the seeds and
-    // the named vertices together (the file pays for its scalings once, not per point): counted
-    // as the square of their limbs, a bound on one product and its gcd.
-    auto qlimbs = [](const Q& q) { return limbs(q.get_num()) + limbs(q.get_den()); };
-    auto vlimbs = [&](const V3& v) { return qlimbs(v[0]) + qlimbs(v[1]) + qlimbs(v[2]); };
-    const double base = 1 + qlimbs(r1) + qlimbs(r2) + vlimbs(sc.s[0]) + vlimbs(sc.s[1]);
-    std::vector<V3> z;
-    std::vector<double> zl;
+    // In integers, so that no point or triangle pays for the seeds' digits more than once: a point
+    // of M is z = c0 + y with c0 = (1 − r1) s1 − (1 − r2) s2 (the same for all) and y = r1 v − r2 w.
+    // Over Dy = lcm(b1 D1, b2 D2) (r_i = a_i/b_i, D_i the vertices' common denominator, X = D_i v):
+    // Y = Dy y = k1 X_v − k2 X_w, k_i = a_i Dy/(b_i D_i). A triangle's N = (Y_b − Y_a) × (Y_c − Y_a)
+    // is Dy² times the true one (c0 cancels), and with c0 = C/Dc its offset N·(c0 + y_a) is
+    // N·W_a/(Dy³ Dc), W_a = Dy C + Dc Y_a. So off > 0 iff N·W_a > 0, and off² >= E |N|² iff
+    // q (N·W_a)² >= p Dy² Dc² |N|² for E = p/q. Counted before each product, by its operands' limbs.
+    auto prod = [](double la, double lb) { return 2 + la * lb; };
+    const mpz_class b1 = r1.get_den(), b2 = r2.get_den();
+    spend_ops(14, vsize(sc.s[0]) + vsize(sc.s[1]) + qsize(r1) + qsize(r2) + limbs(sc.scan[0]->D()) + limbs(sc.scan[1]->D()));
+    mpz_class Dy, d1 = b1 * sc.scan[0]->D(), d2 = b2 * sc.scan[1]->D();
+    mpz_lcm(Dy.get_mpz_t(), d1.get_mpz_t(), d2.get_mpz_t());
+    const mpz_class k1 = r1.get_num() * (Dy / d1), k2 = r2.get_num() * (Dy / d2);
+    V3 c0;
+    for (int c = 0; c < 3; ++c) c0[c] = (1 - r1) * sc.s[0][c] - (1 - r2) * sc.s[1][c];
+    mpz_class Dc = 1;
+    for (const Q& c : c0) mpz_lcm(Dc.get_mpz_t(), Dc.get_mpz_t(), c.get_den_mpz_t());
+    Z3 DyC;
+    for (int c = 0; c < 3; ++c) DyC[c] = Dy * (c0[c].get_num() * (Dc / c0[c].get_den()));
+    const mpz_class T = E.get_num() * Dy * Dy * Dc * Dc, q = E.get_den();
+    const double lk = std::max(limbs(k1), limbs(k2)), lDc = limbs(Dc), lDyC = std::max({limbs(DyC[0]), limbs(DyC[1]), limbs(DyC[2])});
+    spend(50 * (lDyC + 1) * (limbs(E.get_num()) + 4 * limbs(Dy) + 2 * lDc + 1));
+    std::vector<Z3> Y, W;
+    std::vector<double> yl, wl;
     for (size_t k = 0; k < pts.size(); ++k) {
         const std::string w = where + ".points[" + std::to_string(k) + "]";
         claim(pts[k].is_array() && pts[k].size() == 2, w + " is [vertex of P1, vertex of P2]");
         const size_t a = index(pts[k][0], sc.P[0].size(), w), b = index(pts[k][1], sc.P[1].size(), w);
-        const double l = base + vlimbs(sc.P[0][a]) + vlimbs(sc.P[1][b]);
-        spend(200 + 40 * l * l);
-        V3 p;
-        for (int c = 0; c < 3; ++c)
-            p[c] = (sc.s[0][c] + r1 * (sc.P[0][a][c] - sc.s[0][c])) - (sc.s[1][c] + r2 * (sc.P[1][b][c] - sc.s[1][c]));
-        z.push_back(p);
-        zl.push_back(vlimbs(p));
+        const Z3 &Xa = sc.scan[0]->X(a), &Xb = sc.scan[1]->X(b);
+        double lx = 0;
+        for (int c = 0; c < 3; ++c) lx = std::max({lx, limbs(Xa[c]), limbs(Xb[c])});
+        spend(100 + 6 * prod(lk, lx) + 3 * prod(lDc, lk + lx + 1));
+        Z3 y, wv;
+        double ly = 0, lw = 0;
+        for (int c = 0; c < 3; ++c) {
+            y[c] = k1 * Xa[c] - k2 * Xb[c];
+            wv[c] = DyC[c] + Dc * y[c];
+            ly = std::max(ly, limbs(y[c]));
+            lw = std::max(lw, limbs(wv[c]));
+        }
+        Y.push_back(std::move(y));
+        W.push_back(std::move(wv));
+        yl.push_back(ly);
+        wl.push_back(lw);
     }
-    const double el = 1 + qlimbs(E);
+    const double lT = limbs(T), lq = limbs(q);
     std::map<std::pair<size_t, size_t>, int> edges;
     for (size_t t = 0; t < tris.size(); ++t) {
         const std::string w = where + ".triangles[" + std::to_string(t) + "]";
         claim(tris[t].is_array() && tris[t].size() == 3, w + " is 3 point indices");
         size_t v[3];
-        for (int k = 0; k < 3; ++k) v[k] = index(tris[t][k], z.size(), w);
-        const double l = el + zl[v[0]] + zl[v[1]] + zl[v[2]];
-        spend(300 + 80 * l * l);
-        const V3 N = cross(sub(z[v[1]], z[v[0]]), sub(z[v[2]], z[v[0]]));
-        const Q off = dot(N, z[v[0]]);
+        for (int k = 0; k < 3; ++k) v[k] = index(tris[t][k], Y.size(), w);
+        const double ly = 1 + std::max({yl[v[0]], yl[v[1]], yl[v[2]]}), ln = 2 * ly + 1, lnw = ln + wl[v[0]] + 1;
+        spend(200 + 6 * prod(ly, ly) + 3 * prod(ln, wl[v[0]]) + prod(lnw, lnw) + prod(lq, 2 * lnw) + 3 * prod(ln, ln) + prod(lT, 2 * ln + 2));
+        Z3 e1, e2;
+        for (int c = 0; c < 3; ++c) e1[c] = Y[v[1]][c] - Y[v[0]][c], e2[c] = Y[v[2]][c] - Y[v[0]][c];
+        const Z3 N = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]};
+        const mpz_class off = dotz(N, W[v[0]]);
         claim(sgn(off) > 0, w + " has the origin strictly on its inner side");
-        claim(off * off >= E * dot(N, N), w + "'s plane lies at least the depth from the origin");
+        claim(q * off * off >= T * dotz(N, N), w + "'s plane lies at least the depth from the origin");
         for (int k = 0; k < 3; ++k) claim(++edges[{v[k], v[(k + 1) % 3]}] == 1, w + ": each directed edge is used once");
     }
     for (const auto& [e, n] : edges)
@@ -1382,28 +1443,46 @@ bool judge_curve(const Rules& R, const J& cl, const Window& W, const std::string
     const CurveFacts& f = W.f;
     // 1. f > 0 over the range: f descends, so at hi.
     const bool positive = sgn(f.at(hi)) > 0;
-    // 2. The values, at the segments' ends and at f's switch points inside them.
+    // 2. The values, at the segments' ends and at f's switch points inside them (found by binary
+    // search: the switch points are in increasing rho1).
+    auto first = [&](const Q& x, bool or_at) {  // the first switch point with rho1 > x (or_at: >= x)
+        size_t lo = 0, hi = f.switches.size();
+        while (lo < hi) {
+            const size_t mid = (lo + hi) / 2;
+            spend_ops(1, qsize(x) + qsize(f.switches[mid].x));
+            if (f.switches[mid].x > x || (or_at && f.switches[mid].x == x)) hi = mid; else lo = mid + 1;
+        }
+        return lo;
+    };
+    auto first_after = [&](const Q& x) { return first(x, false); };
     bool within = true;
     for (const Seg& s : segs) {
         within = within && R.close(s.y0, f.at(s.x0)) && R.close(s.y1, f.at(s.x1));
-        for (const auto& sw : f.switches)
-            if (s.x0 < sw.x && sw.x < s.x1) within = within && R.close(s.y0 + (s.y1 - s.y0) * (sw.x - s.x0) / (s.x1 - s.x0), sw.y);
+        for (size_t k = first_after(s.x0); k < f.switches.size() && f.switches[k].x < s.x1; ++k) {
+            const auto& sw = f.switches[k];
+            spend_ops(6, qsize(s.x0) + qsize(s.x1) + qsize(s.y0) + qsize(s.y1) + qsize(sw.x));
+            within = within && R.close(s.y0 + (s.y1 - s.y0) * (sw.x - s.x0) / (s.x1 - s.x0), sw.y);
+        }
     }
     // 3. Switch points: exact ones in [lo, hi] paired with claimed ones, each the other's nearest
     // in rho1 (ties: the first listed).
     std::vector<const CurveFacts::Switch*> exact;
-    for (const auto& sw : f.switches)
-        if (lo <= sw.x && sw.x <= hi) exact.push_back(&sw);
+    for (size_t k = first(lo, true); k < f.switches.size() && f.switches[k].x <= hi; ++k) exact.push_back(&f.switches[k]);
+    // (Linear searches, each comparison counted: quadratic only in what the claim lists.)
     auto nearest_claimed = [&](const Q& x) {
         size_t b = 0;
-        for (size_t i = 1; i < claimed.size(); ++i)
+        for (size_t i = 1; i < claimed.size(); ++i) {
+            spend_ops(4, qsize(claimed[i].first) + qsize(claimed[b].first) + qsize(x));
             if (abs(claimed[i].first - x) < abs(claimed[b].first - x)) b = i;
+        }
         return b;
     };
     auto nearest_exact = [&](const Q& x) {
         size_t b = 0;
-        for (size_t i = 1; i < exact.size(); ++i)
+        for (size_t i = 1; i < exact.size(); ++i) {
+            spend_ops(4, qsize(exact[i]->x) + qsize(exact[b]->x) + qsize(x));
             if (abs(exact[i]->x - x) < abs(exact[b]->x - x)) b = i;
+        }
         return b;
     };
     bool switches_right = true;
@@ -1425,8 +1504,8 @@ bool judge_curve(const Rules& R, const J& cl, const Window& W, const std::string
         if (!s.label) continue;
         const Q mid = (s.x0 + s.x1) / 2;
         std::string e = positive ? f.contacts[f.piece_at(mid)] : std::string("none");
-        for (const auto& sw : f.switches)
-            if (sw.x == mid) e = sw.contact;
+        const size_t k = first_after(mid);
+        if (k > 0 && f.switches[k - 1].x == mid) e = f.switches[k - 1].contact;
         contacts_right = contacts_right && *s.label == e;
     }
     return positive && within && switches_right && contacts_right;
@@ -1442,8 +1521,10 @@ bool judge_switch_point(const Rules& R, const J& cl, const Window& W, const std:
     std::optional<std::string> label;
     if (cl.contains("contact")) label = claimed_contact(cl, wc);
     const CurveFacts::Switch* best = nullptr;
-    for (const auto& sw : W.f.switches)
+    for (const auto& sw : W.f.switches) {
+        spend_ops(4, qsize(sw.x) + qsize(c1) + (best ? qsize(best->x) : 0));
         if (!best || abs(sw.x - c1) < abs(best->x - c1)) best = &sw;
+    }
     if (!best) {
         claim(sgn(W.a) == 0 && W.reaches_zero(), wp + ": with no switch point in it, the window spans rho1 = 0 to rho2 <= 0");
         return false;
@@ -1485,6 +1566,7 @@ bool judge(const Scene& sc, const Rules& R, const J& cl, const J& pr, const std:
             const V3 n = normal(at(pr, "normal"), wp + ".normal");
             mpz_class H[2];
             sc.support(n, H);
+            spend_ops(4, limbs(sc.Delta[0]) + limbs(sc.Delta[1]) + limbs(sc.Delta[2]) + limbs(H[0]) + limbs(H[1]) + qsize(g) + vsize(n));
             claim(sgn(H[0] + H[1]) > 0, wp + ".normal: h1 + h2 > 0");
             claim(Q(dotz(ints(n), sc.Delta)) == g * Q(H[0] + H[1]), wp + ": n·d = value (h1 + h2), so (rho, rho) is separated below it");
             claim(check_witness(sc, at(pr, "witness"), wp + ".witness") == P2{g, g}, wp + ".witness is at (value, value)");
@@ -1521,6 +1603,7 @@ bool judge(const Scene& sc, const Rules& R, const J& cl, const J& pr, const std:
         const Q c = num(at(cl, "value"), wc + ".value");
         const Q E = num(at(pr, "squared"), wp + ".squared");
         const V3 p = body_point(sc, 0, r1, at(pr, "P1"), wp + ".P1"), q = body_point(sc, 1, r2, at(pr, "P2"), wp + ".P2");
+        spend_ops(12, 2 * (vsize(p) + vsize(q)) + qsize(E));
         const V3 u = sub(q, p);
         claim(dot(u, u) == E, wp + ".squared is |q − p|² of its closest points");
         if (sgn(E) > 0) {
@@ -1535,6 +1618,7 @@ bool judge(const Scene& sc, const Rules& R, const J& cl, const J& pr, const std:
             const J& pc = at(pr, "closest");
             shape(pc, wp + ".closest", {"P1", "P2"});
             const bool in1 = member(sc, 0, r1, a, at(pc, "P1"), wp + ".closest.P1"), in2 = member(sc, 1, r2, b, at(pc, "P2"), wp + ".closest.P2");
+            spend_ops(6, 2 * (vsize(a) + vsize(b)));
             const V3 ab = sub(b, a);
             right = right && in1 && in2 && R.within_above(dot(ab, ab), E);
         }
@@ -1569,12 +1653,14 @@ bool judge(const Scene& sc, const Rules& R, const J& cl, const J& pr, const std:
             claim(sgn(E) > 0, wp + ".squared is > 0");
             const V3 n = normal(at(pr, "direction"), wp + ".direction");
             const Q g = hM(sc, n, r1, r2);
+            spend_ops(4, 2 * qsize(g) + qsize(E) + 2 * vsize(n));
             claim(sgn(g) > 0 && g * g == E * dot(n, n), wp + ".direction: the depth along it is sqrt(squared)");
             check_lower_bound(sc, r1, r2, E, pr, wp);
         }
         bool right = R.close_sq(c, E);
         if (dir) {
             const Q g = hM(sc, *dir, r1, r2);
+            spend_ops(4, 2 * qsize(g) + 2 * vsize(*dir));
             Q along = g * g / dot(*dir, *dir);
             if (sgn(g) < 0) along = -along;
             right = right && R.within_above(along, E);
@@ -1597,6 +1683,7 @@ bool judge(const Scene& sc, const Rules& R, const J& cl, const J& pr, const std:
 }
 }  // namespace judge
 
+std::string g_summary;  // appended to the line printed for a valid file
 void check_judgements(const J& c) {
     shape(c, "", {"format", "kind", "tolerance", "judgements", "seed_interior", "scene"});
     const Scene sc = read_scene(at(c, "scene"));
@@ -1606,6 +1693,7 @@ void check_judgements(const J& c) {
     const J& js = at(c, "judgements");
     claim(js.is_array() && !js.empty(), "judgements is a nonempty list");
     std::set<size_t> indices;
+    size_t rights = 0;
     for (size_t k = 0; k < js.size(); ++k) {
         const std::string w = "judgements[" + std::to_string(k) + "]";
         shape(js[k], w, {"index", "claim", "right", "proof"});
@@ -1613,12 +1701,19 @@ void check_judgements(const J& c) {
         claim(at(js[k], "right").is_boolean(), w + ".right is true or false");
         const bool right = judge::judge(sc, R, at(js[k], "claim"), at(js[k], "proof"), w);
         claim(right == at(js[k], "right").get<bool>(), w + ".right is the judgement the rules give (" + (right ? "right" : "wrong") + ")");
+        rights += right;
     }
+    // What the file proves, in the line the checker prints: the judgements and their tolerance
+    // (a forged tolerance makes wrong values right, and stays valid: it is the file's claim).
+    const std::string tol = R.tol.get_str();
+    g_summary = "; judgements: " + std::to_string(rights) + " right, " + std::to_string(js.size() - rights) + " wrong, tolerance " +
+                (tol.size() > 40 ? tol.substr(0, 40) + "..." : tol);
 }
 
 // Checks a whole file's text. Returns the exit status; `message` is the line to print.
 int check_text(const std::string& text, std::string& message) {
     g_claims = 0;
+    g_summary.clear();
     g_work = 0;
     g_budget = std::max(g_min_work, g_work_per_byte * static_cast<double>(text.size()));
     try {
@@ -1649,7 +1744,7 @@ int check_text(const std::string& text, std::string& message) {
         message = "error: out of memory";
         return 2;
     }
-    message = "valid: " + std::to_string(g_claims) + " claims checked";
+    message = "valid: " + std::to_string(g_claims) + " claims checked" + g_summary;
     return 0;
 }
 }  // namespace scalecert_check

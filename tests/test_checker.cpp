@@ -21,6 +21,7 @@
 #include <fstream>
 #include <map>
 #include <set>
+#include <chrono>
 #include <random>
 #include <regex>
 #include <sstream>
@@ -926,6 +927,42 @@ BOOST_AUTO_TEST_CASE(hostile_files_exit_2_without_crashing) {
         BOOST_TEST(verdict_of(text) == 2, what);
     }
     BOOST_TEST(check_file(tmpdir()) == 2);
+    // The tenth hostile review: nlohmann's reader stops at a NUL byte, so anything after one went
+    // unread (a valid certificate, then NUL and garbage, was valid); and a byte-order mark.
+    BOOST_TEST(verdict_of(t + std::string(1, '\0') + "{\"not\": json") == 2);
+    BOOST_TEST(verdict_of("\xEF\xBB\xBF" + t) == 2);
+    BOOST_TEST(verdict_of(t) == 0);
+    // An index written -0 has a sign: refused (the same review).
+    std::string neg = t;
+    const size_t at = neg.find("\"piece\": ");
+    BOOST_TEST_REQUIRE(at != std::string::npos);
+    neg.insert(at + 9, "-");
+    BOOST_TEST(verdict_of(neg) == 1, neg.substr(at, 20));
+}
+
+BOOST_AUTO_TEST_CASE(numbers_every_judgement_uses_are_counted_at_each_use) {
+    // The tenth hostile review: a tolerance of 10^6 digits with 1,000 distance judgements (1.2 MB)
+    // took 29 s, and seeds of 2·10^5 digits with plane judgements 19 ms each: the arithmetic on a
+    // number stored once was not counted per use. Both refused at the work limit now, at once.
+    const fs::path claims = tmpdir() / "one_distance.json", cert = tmpdir() / "one_distance.cert.json";
+    std::ofstream(claims) << R"({"format": "scalecert-claims-1", "claims": [{"kind": "distance", "rho1": 1, "rho2": "1/2", "value": 1.5}]})";
+    const std::string cubes = std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/stacked_cubes.json";
+    BOOST_TEST_REQUIRE(engine("certify-fp " + cubes + " " + claims.string() + " --certificate " + cert.string()) == 0);
+    OJ j = load(cert);
+    BOOST_TEST_REQUIRE(check_file(cert) == 0);
+    const OJ one = j["judgements"][0];
+    j["judgements"] = OJ::array();
+    for (int k = 0; k < 1000; ++k) {
+        OJ e = one;
+        e["index"] = k;
+        j["judgements"].push_back(e);
+    }
+    j["tolerance"] = "1/1" + std::string(1000000, '0') + "1";
+    std::string msg;
+    const auto t0 = std::chrono::steady_clock::now();
+    BOOST_TEST(scalecert_check::check_text(j.dump(), msg) == 2);
+    BOOST_TEST(msg.find("work limit") != std::string::npos, msg);
+    BOOST_TEST(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() < 5.0);
 }
 
 BOOST_AUTO_TEST_CASE(out_of_memory_in_the_checker_exits_2) {

@@ -322,6 +322,35 @@ BOOST_AUTO_TEST_CASE(outputs_go_only_to_regular_files_and_directories_we_can_mak
     BOOST_TEST(g2.err.find("two scenes named 'stacked_cubes'") != std::string::npos, g2.err);
     BOOST_TEST(!fs::exists(workdir() / "never-made-2"));
     BOOST_TEST(run("golden --dir " + (workdir() / "never-made-3").string()).status == 2);
+    // --scene is SCENES; --p1/--p2 a pair of meshes, its scene written as DIR/P1-P2.json. The
+    // tetrahedron (0,0,0), (2,0,0), (0,2,0), (0,0,2) (seed its mean (1/2, 1/2, 1/2)) and the box
+    // [3,5] x [0,2]^2 (seed (4, 1, 1)): the vertex (2,0,0) reaches x = 1/2 + 3ρ1/2 and the box's
+    // face starts at x = 4 − ρ2, where the vertex lies on the face while 1/2 − ρ1/2 >= 1 − ρ2,
+    // i.e. ρ1 <= 3/2: there the curve is ρ2 = 7/2 − 3ρ1/2, by hand.
+    const fs::path gs = workdir() / "golden-scene-option";
+    BOOST_TEST(run("golden --scene " + cubes + " --dir " + gs.string()).status == 0);
+    BOOST_TEST(slurp(gs / "stacked_cubes.golden.csv") == slurp(gd / "stacked_cubes.golden.csv"));
+    const fs::path tet = write("tet.off", "OFF\n4 0 0\n0 0 0\n2 0 0\n0 2 0\n0 0 2\n");
+    const fs::path boxm = write("box.off", "OFF\n8 0 0\n3 0 0\n5 0 0\n3 2 0\n5 2 0\n3 0 2\n5 0 2\n3 2 2\n5 2 2\n");
+    const fs::path gm = workdir() / "golden-meshes";
+    BOOST_TEST(run("golden --p1 " + tet.string() + " --p2 " + boxm.string() + " --i1 1/2,2 --i2 1/2,2 --dir " + gm.string()).status == 0);
+    BOOST_TEST(fs::exists(gm / "tet-box.json"));
+    std::istringstream csv(slurp(gm / "tet-box.golden.csv"));
+    int on = 0;
+    for (std::string line; std::getline(csv, line);) {
+        double a = 0, b = 0;
+        char where[32] = {};
+        if (std::sscanf(line.c_str(), "%lf,%lf,%31[^,]", &a, &b, where) == 3 && std::string(where) == "on" && a <= 1.5) {
+            BOOST_TEST(std::fabs(b - (3.5 - 1.5 * a)) <= 1e-12, line);
+            ++on;
+        }
+    }
+    BOOST_TEST(on > 0);
+    // A missing mesh: one line, exit 2, no directory.
+    Run gx = run("golden --p1 " + tet.string() + " --p2 " + (workdir() / "no.off").string() + " --i1 1/2,2 --i2 1/2,2 --dir " +
+                 (workdir() / "never-made-4").string());
+    BOOST_TEST(gx.status == 2);
+    BOOST_TEST(!fs::exists(workdir() / "never-made-4"));
 }
 
 BOOST_AUTO_TEST_CASE(claims_and_pairs_must_be_files_with_content) {
@@ -559,6 +588,17 @@ BOOST_AUTO_TEST_CASE(certify_fp_exit_status_gates_ci) {
     // (expect_error adds --out WORKDIR/out.json and checks that nothing was written there.)
     expect_error("certificate over the report", "certify-fp " + sc + " " + js.string() + " --certificate " + (workdir() / "out.json").string(),
                  "two outputs name the same file");
+    // The same file named relatively and as ./ (neither existing yet): the same file.
+    {
+        const fs::path here = fs::current_path();
+        fs::current_path(workdir());
+        fs::remove("rel.json");
+        Run r = run("certify-fp " + sc + " " + js.string() + " --out rel.json --certificate ./rel.json");
+        BOOST_TEST(r.status == 2);
+        BOOST_TEST(r.err.find("two outputs name the same file") != std::string::npos);
+        BOOST_TEST(!fs::exists("rel.json"));
+        fs::current_path(here);
+    }
 }
 
 BOOST_AUTO_TEST_CASE(every_subcommand_help_shows_an_example) {

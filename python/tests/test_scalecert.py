@@ -379,3 +379,16 @@ def test_certify_arrays_by_hand_and_brute_force(tmp_path):
         s.certify("area", r1, r2)
     with pytest.raises(scalecert.InputError, match="does not use"):
         s.certify("verdict", r1, r2, verdict="touching", value=r1)
+
+
+def test_certify_values_beyond_the_doubles():
+    # A claimed distance of 10^400 between the stacked cubes at (1, 1) (exactly 1 apart): wrong,
+    # with an infinite relative error, not an exception (the report's doubles overflow to null).
+    s = stacked()
+    r = s.certify("distance", [1], [1], value=["1e400"])
+    assert not r["right"][0]
+    assert np.isinf(r["rel_error"][0])
+    # A depth claimed as 1 where it is about 10^300 (the cubes at (10^300, 1)): relative error 1.
+    d = s.certify("penetration_depth", ["1e300"], [1], value=[1])
+    assert not d["right"][0]
+    assert d["rel_error"][0] == 1.0

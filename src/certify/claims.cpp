@@ -156,7 +156,7 @@ private:
         put_exact(o, "squared_error", Q(claimed * claimed - E));
         const double d = -sqrt_minus_rn(E, claimed);  // c − √E
         o["abs_error_double"] = std::fabs(d);
-        o["rel_error_double"] = sgn(E) ? Json(std::fabs(d) / std::sqrt(to_double_rn(E))) : Json(nullptr);
+        o["rel_error_double"] = sgn(E) ? Json(relative_sqrt_error_rn(E, claimed)) : Json(nullptr);
     }
 
     // Proofs that x is (or is not) in P1(ρ1) and y in P2(ρ2), agreeing with the judgements in1, in2.
@@ -548,7 +548,7 @@ private:
         put_point(o, "exact_closest_P2", e.p2);
         bool right = close_sq(d, e.squared);
         o["value_right"] = right;
-        text = "distance at (" + num(r1) + ", " + num(r2) + "): claimed " + num(d) + ", exact squared " + num(e.squared);
+        text = "distance at (" + num(r1) + ", " + num(r2) + "): claimed " + num(d) + ", exact squared " + num(e.squared) + " (distance ~" + dbl(sqrt_minus_rn(e.squared, Q(0))) + ")";
         Json pc, pp;
         if (prove_) {
             pc = Json{{"kind", "distance"}, {"rho1", ex(r1)}, {"rho2", ex(r2)}, {"value", ex(d)}};
@@ -603,7 +603,7 @@ private:
         o["exact_direction"] = Json::array({e.direction[0].get_str(), e.direction[1].get_str(), e.direction[2].get_str()});
         bool right = close_sq(d, e.squared);
         o["value_right"] = right;
-        text = "penetration depth at (" + num(r1) + ", " + num(r2) + "): claimed " + num(d) + ", exact squared " + num(e.squared);
+        text = "penetration depth at (" + num(r1) + ", " + num(r2) + "): claimed " + num(d) + ", exact squared " + num(e.squared) + " (depth ~" + dbl(sqrt_minus_rn(e.squared, Q(0))) + ")";
         if (const JNode* dir = j.find("direction")) {
             const Vec3q n = point(*dir, "direction");
             if (sgn(n[0]) == 0 && sgn(n[1]) == 0 && sgn(n[2]) == 0) fail("direction", "the zero vector is not a direction");
@@ -725,7 +725,7 @@ std::string certify_claim_lines(const ClaimModels& models, const std::string& cl
         } else {
             throw InputError(where + ": expected 'RHO1 RHO2 VERDICT', 'curve RHO1 RHO2' or 'growth RHO'");
         }
-        if (proof) entries.push_back(entry(static_cast<size_t>(n), std::move(proof->first), right, std::move(proof->second)));
+        if (proof) entries.push_back(entry(static_cast<size_t>(no), std::move(proof->first), right, std::move(proof->second)));  // by line number
         ++n;
         bad += !right;
         o["right"] = right;

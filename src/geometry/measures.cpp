@@ -339,4 +339,20 @@ double sqrt_minus_rn(const Q& square, const Q& c) {
     return d;
 }
 
+double relative_sqrt_error_rn(const Q& square, const Q& c) {
+    mpfr_t a, b;
+    mpfr_init2(a, 256);
+    mpfr_init2(b, 256);
+    mpfr_set_q(a, square.get_mpq_t(), MPFR_RNDN);
+    mpfr_sqrt(a, a, MPFR_RNDN);
+    mpfr_set_q(b, c.get_mpq_t(), MPFR_RNDN);
+    mpfr_sub(b, b, a, MPFR_RNDN);
+    mpfr_abs(b, b, MPFR_RNDN);
+    mpfr_div(b, b, a, MPFR_RNDN);
+    const double d = mpfr_get_d(b, MPFR_RNDN);
+    mpfr_clear(a);
+    mpfr_clear(b);
+    return d;
+}
+
 }  // namespace scalecert::internal

@@ -89,5 +89,7 @@ Q directional_depth_squared(const PointSets& S, const Vec3q& n, const Q& rho1, c
 // √square − c as the nearest double (MPFR at 256 bits, then rounded): for display and error
 // statistics only, never for a decision.
 double sqrt_minus_rn(const Q& square, const Q& c);
+// |c − √square| / √square (square > 0) as the nearest double, likewise (infinite beyond the doubles).
+double relative_sqrt_error_rn(const Q& square, const Q& c);
 
 }  // namespace scalecert::internal

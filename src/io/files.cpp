@@ -151,9 +151,12 @@ void write_files_atomically(const std::vector<std::pair<std::string, std::string
     // file followed), before anything is written.
     for (size_t i = 0; i < files.size(); ++i)
         for (size_t k = i + 1; k < files.size(); ++k) {
-            std::error_code e1, e2;
-            const auto a = std::filesystem::weakly_canonical(files[i].first, e1), b = std::filesystem::weakly_canonical(files[k].first, e2);
-            if (files[i].first == files[k].first || (!e1 && !e2 && a == b))
+            // (weakly_canonical keeps a relative path relative when no part of it exists: x and ./x
+            // would differ. Made absolute first, they compare equal.)
+            std::error_code e1, e2, e3, e4;
+            const auto a = std::filesystem::weakly_canonical(std::filesystem::absolute(files[i].first, e3), e1),
+                       b = std::filesystem::weakly_canonical(std::filesystem::absolute(files[k].first, e4), e2);
+            if (files[i].first == files[k].first || (!e1 && !e2 && !e3 && !e4 && a.lexically_normal() == b.lexically_normal()))
                 throw InputError(files[k].first + ": two outputs name the same file");
         }
     std::vector<std::string> tmps;

@@ -267,8 +267,9 @@ Judgements Analysis::certify(const std::vector<Claim>& claims, const ClaimOption
         if (o.contains("exact_squared")) {
             g.exact_squared = parse_exact(o["exact_squared"].get<std::string>());
             g.exact = sqrt_minus_rn(*g.exact_squared, Q(0));
-            g.rel_error = o["rel_error_double"].is_null() ? (o["abs_error_double"].get<double>() == 0 ? 0.0 : INFINITY)
-                                                           : o["rel_error_double"].get<double>();
+            // (null: beyond the doubles, or relative to 0 — then 0 only for an exact 0.)
+            const Json &rel = o["rel_error_double"], &abs_e = o["abs_error_double"];
+            g.rel_error = !rel.is_null() ? rel.get<double>() : (!abs_e.is_null() && abs_e.get<double>() == 0 ? 0.0 : INFINITY);
         }
         if (o["kind"] == "verdict") {
             const std::string e = o["exact"].get<std::string>();
