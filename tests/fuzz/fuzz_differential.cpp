@@ -5,6 +5,7 @@
 // the scenes are two axis-aligned boxes (cubes, often), which touch edge to edge, corner to face
 // and so on, where many facet normals give one line: there every piece's contact label must be
 // the brute force's smallest faces holding the touching set (test::brute_contact).
+#include <algorithm>
 #include "fuzz_common.hpp"
 #include "certify/claims.hpp"
 #include "geometry/measures.hpp"
@@ -83,14 +84,32 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         const std::optional<ProvedDepth> d = proved_depth(m, r1, r2);
         if (r.verdict == Verdict::Overlapping ? (!d || d->squared != e.squared) : d.has_value())
             fuzz::finding("EPA depth differs from the enumeration at (" + r1.get_str() + ", " + r2.get_str() + ")");
+        // What certify-fp runs for a depth: its state must be the verdict, its depth the enumeration's.
+        const std::optional<MeasuredDepth> md = measured_depth(HullPoints(m), r1, r2);
+        const MeasuredDepth::State st = r.verdict == Verdict::Separated ? MeasuredDepth::Separated
+                                        : r.verdict == Verdict::Touching ? MeasuredDepth::Touching
+                                                                         : MeasuredDepth::Overlapping;
+        if (md && (md->state != st || (st == MeasuredDepth::Overlapping && md->depth->squared != e.squared)))
+            fuzz::finding("measured depth differs from the verdict or the enumeration at (" + r1.get_str() + ", " + r2.get_str() + ")");
         claims += std::string(first ? "" : ", ") + "{\"kind\": \"distance\", \"rho1\": \"" + r1.get_str() + "\", \"rho2\": \"" +
                   r2.get_str() + "\", \"value\": 1}, {\"kind\": \"penetration_depth\", \"rho1\": \"" + r1.get_str() + "\", \"rho2\": \"" +
                   r2.get_str() + "\", \"value\": 1}, {\"kind\": \"verdict\", \"rho1\": \"" + r1.get_str() + "\", \"rho2\": \"" + r2.get_str() +
-                  "\", \"verdict\": \"separated\"}";
+                  "\", \"verdict\": \"separated\"}, {\"kind\": \"curve_point\", \"rho1\": \"" + r1.get_str() + "\", \"rho2\": \"" +
+                  r2.get_str() + "\"}, {\"kind\": \"switch_point\", \"rho1\": \"" + r1.get_str() + "\", \"rho2\": \"" + r2.get_str() + "\"}";
         first = false;
     }
+    // A curve claim over I1 by the curve's own vertices (right, unless the curve is <= 0 there).
+    if (!cv.pieces.empty()) {
+        std::string v = "[";
+        const Q lo = cv.pieces.front().from, hi = cv.pieces.back().to;
+        for (const Q& x : {lo, Q((lo + hi) / 2), hi})
+            if (sgn(x) > 0) v += std::string(v.size() > 1 ? ", " : "") + "[\"" + x.get_str() + "\", \"" + cv.env.value(m.lines, x).get_str() + "\"]";
+        v += "]";
+        if (std::count(v.begin(), v.end(), '[') >= 3 && lo < hi && sgn(cv.env.value(m.lines, hi)) > 0)
+            claims += std::string(first ? "" : ", ") + "{\"kind\": \"curve\", \"vertices\": " + v + ", \"switch_points\": []}", first = false;
+    }
     // Every judgement of those claims, with its certificate, must pass the checker.
-    if (!pairs.empty()) {
+    if (!first) {
         long wrong = 0;
         std::string cert;
         certify_fp(ClaimModels::of(m, cv), claims + "]}", "fuzz", ClaimOptions{false, Q(0), true}, &wrong, nullptr, &cert);
