@@ -1,0 +1,54 @@
+// Compounds (issue 22), first room: the overlap region of two objects made of convex parts, all
+// parts of an object scaled about the object's one seed, in I1 × I2.
+//
+// For parts A of object 1 and B of object 2, with d = s2 − s1, hA(n) = max over A of n·(v − s1)
+// and hB(n) = max over B of −n·(w − s2): A(ρ1) = s1 + ρ1(A − s1) reaches n·s1 + ρ1 hA(n) along
+// n, and B(ρ2) starts at n·s2 − ρ2 hB(n), so the normal n separates them iff
+// n·d > ρ1 hA(n) + ρ2 hB(n). For ρ1, ρ2 > 0 the normal fan of ρ1 A ⊕ (−ρ2 B) is that of A ⊕ (−B):
+// two convex polytopes are apart iff one of its facet normals separates them. So the pair meets
+// exactly on R_AB = {(ρ1, ρ2) : ρ1 hA(n) + ρ2 hB(n) >= n·d for every facet normal n of A ⊕ (−B)},
+// a convex polygon; hA and hB may be negative or zero, as the seed need not lie in a part. The
+// objects meet where some pair does: on the union of the R_AB, which need not be monotone (two
+// parts on either side of a seed move apart as it grows: a band).
+#pragma once
+#include "geometry/polyhedron.hpp"
+
+#include <array>
+#include <vector>
+
+namespace scalecert::internal {
+
+using Point2q = std::array<Q, 2>;  // (ρ1, ρ2)
+
+// a ρ1 + b ρ2 >= c: where a facet normal n of A ⊕ (−B) does not separate the pair
+// (a = hA(n), b = hB(n), c = n·d).
+struct HalfPlane {
+    Q a, b, c;
+    Vec3z normal;
+};
+
+// One part pair's overlap set in the rectangle I1 × I2 (lo, hi: ρ1's and ρ2's ranges): a convex
+// polygon, counter-clockwise from its lowest (then leftmost) corner, without repeated or collinear
+// corners; empty, a point or a segment where the set is. And every facet normal's half-plane.
+struct PairRegion {
+    std::vector<Point2q> polygon;
+    std::vector<HalfPlane> constraints;
+};
+PairRegion pair_region(const Polyhedron& A, const Polyhedron& B, const Vec3q& s1, const Vec3q& s2, const Q lo[2], const Q hi[2]);
+
+// The facet normals of A ⊕ (−B) (the Gauss-map overlay of contact_lines.hpp), primitive.
+std::vector<Vec3z> minkowski_facet_normals(const Polyhedron& A, const Polyhedron& B);
+
+// The convex polygon p (counter-clockwise, corners only) cut to a ρ1 + b ρ2 >= c.
+std::vector<Point2q> cut(const std::vector<Point2q>& p, const Q& a, const Q& b, const Q& c);
+
+// The union of convex polygons with area (CGAL's Boolean set operations on exact rationals):
+// its connected pieces, each an outer boundary (counter-clockwise) and its holes (clockwise),
+// every vertex list from its lowest, then leftmost, corner; the pieces in that corner's order.
+struct RegionPiece {
+    std::vector<Point2q> outer;
+    std::vector<std::vector<Point2q>> holes;
+};
+std::vector<RegionPiece> union_of(const std::vector<std::vector<Point2q>>& convex);
+
+}  // namespace scalecert::internal
