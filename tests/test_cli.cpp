@@ -788,3 +788,30 @@ BOOST_AUTO_TEST_CASE(no_file_input_blocks_fifos_sockets_and_devices_are_refused)
     BOOST_TEST(p.out == "touching\noverlapping\n");
     fs::remove_all(d);
 }
+
+BOOST_AUTO_TEST_CASE(region_of_compounds) {
+    // tests/data/compound_band.json: two boxes either side of P1's seed, P2 a box at x in [4, 5]
+    // (test_compound.cpp derives it by hand): the right part meets the box on the band
+    // 3ρ1 + ρ2/2 >= 9/2, 2ρ1 − ρ2/2 <= 9/2, corners (4/3, 1), (5/2, 1), (3, 3), (1, 3) in [1,4] x [1,3];
+    // the left part's swept box never reaches x >= 4 − ..., so it is pruned. On ρ1 = ρ2 they meet
+    // from 9/7 (7ρ/2 = 9/2) to 3 (the end of I2, where 3ρ/2 <= 9/2 holds too).
+    const std::string band = std::string(SCALECERT_SOURCE_DIR) + "/tests/data/compound_band.json";
+    Run r = run("region " + band);
+    BOOST_TEST_REQUIRE(r.status == 0, r.err);
+    const auto j = nlohmann::json::parse(r.out);
+    BOOST_TEST(j["pairs"]["pruned"] == 1);
+    BOOST_TEST(j["pairs"]["built"] == 1);
+    BOOST_TEST(j["region"].size() == 1u);
+    BOOST_TEST(j["region"][0]["outer"] == nlohmann::json::parse(R"([["4/3", "1"], ["5/2", "1"], ["3", "3"], ["1", "3"]])"));
+    BOOST_TEST(j["growth_set"] == nlohmann::json::parse(R"([{"from": "9/7", "to": "3", "first_contact": {"P1_part": 0, "P2_part": 0}}])"));
+    BOOST_TEST(run("region " + band).out == r.out);  // deterministic
+    // Objects with parts are read by region only; a flat part, an empty list, a part of three points.
+    expect_error("parts elsewhere", "curve " + band, "P1.parts: an object made of parts is read by `scalecert region` only");
+    const std::string tail = R"(, "seed": [0, 0, 0]}, "P2": {"vertices": [[4,0,0],[5,0,0],[4,1,0],[4,0,1]]}, "I1": [1, 2], "I2": [1, 2]})";
+    fs::path flat = write("flat_part.json", R"({"P1": {"parts": [{"vertices": [[0,0,0],[1,0,0],[0,1,0],[1,1,0]]}])" + tail);
+    expect_error("flat part", "region " + flat.string(), "P1.parts[0]");
+    fs::path none = write("no_parts.json", R"({"P1": {"parts": [])" + tail);
+    expect_error("no parts", "region " + none.string(), "P1.parts: expected a nonempty list of parts");
+    fs::path three = write("three_points.json", R"({"P1": {"parts": [{"vertices": [[0,0,0],[1,0,0],[0,1,0]]}])" + tail);
+    expect_error("three points", "region " + three.string(), "P1.parts[0]: fewer than 4 vertices");
+}

@@ -116,4 +116,77 @@ std::vector<RegionPiece> union_of(const std::vector<std::vector<Point2q>>& conve
     return out;
 }
 
+namespace {
+// The box holding P(ρ) = s + ρ(P − s) for every ρ in [lo, hi] (ρ > 0 keeps the order along an
+// axis, and each coordinate is linear in ρ: the ends decide).
+std::array<std::array<Q, 2>, 3> swept_box(const Polyhedron& P, const Vec3q& s, const Q& lo, const Q& hi) {
+    std::array<std::array<Q, 2>, 3> b;
+    for (int c = 0; c < 3; ++c) {
+        Q m = P.points[static_cast<size_t>(P.vertices.front())][c], M = m;
+        for (int v : P.vertices) {
+            const Q& x = P.points[static_cast<size_t>(v)][c];
+            if (x < m) m = x;
+            if (x > M) M = x;
+        }
+        const Q a = s[c] + lo * (m - s[c]), bb = s[c] + hi * (m - s[c]), e = s[c] + lo * (M - s[c]), f = s[c] + hi * (M - s[c]);
+        b[c] = {std::min(a, bb), std::max(e, f)};
+    }
+    return b;
+}
+}  // namespace
+
+CompoundRegion compound_region(const ExactScene& sc, const std::string& name) {
+    std::vector<Polyhedron> parts[2];
+    std::vector<std::array<std::array<Q, 2>, 3>> boxes[2];
+    const char* pname[2] = {"P1", "P2"};
+    for (int i = 0; i < 2; ++i) {
+        const PolyInput& in = sc.P[i];
+        const std::vector<std::vector<Vec3q>> one{in.points};
+        const std::vector<std::vector<Vec3q>>& list = in.parts.empty() ? one : in.parts;
+        for (size_t k = 0; k < list.size(); ++k) {
+            const std::string part = in.parts.empty() ? std::string(pname[i]) : std::string(pname[i]) + ".parts[" + std::to_string(k) + "]";
+            parts[i].push_back(build_polyhedron(list[k], name + ": " + part));
+            boxes[i].push_back(swept_box(parts[i].back(), in.seed, sc.lo[i], sc.hi[i]));
+        }
+    }
+    CompoundRegion r;
+    std::vector<std::vector<Point2q>> polys;
+    const Vec3q &s1 = sc.P[0].seed, &s2 = sc.P[1].seed;
+    for (size_t a = 0; a < parts[0].size(); ++a)
+        for (size_t b = 0; b < parts[1].size(); ++b) {
+            CompoundRegion::Pair p{static_cast<int>(a), static_cast<int>(b), false, {}};
+            for (int c = 0; c < 3; ++c)
+                if (boxes[0][a][c][1] < boxes[1][b][c][0] || boxes[1][b][c][1] < boxes[0][a][c][0]) p.pruned = true;
+            if (p.pruned) {
+                ++r.pruned;
+            } else {
+                ++r.built;
+                p.polygon = pair_region(parts[0][a], parts[1][b], s1, s2, sc.lo, sc.hi).polygon;
+                polys.push_back(p.polygon);
+                // Where it meets ρ1 = ρ2: the polygon cut to the diagonal (a point or a segment).
+                const std::vector<Point2q> diag = cut(cut(p.polygon, Q(1), Q(-1), Q(0)), Q(-1), Q(1), Q(0));
+                if (!diag.empty()) {
+                    Q t0 = diag.front()[0], t1 = t0;
+                    for (const Point2q& x : diag) t0 = std::min(t0, x[0]), t1 = std::max(t1, x[0]);
+                    r.growth.push_back({t0, t1, p.part1, p.part2});
+                }
+            }
+            r.pairs.push_back(std::move(p));
+        }
+    r.region = union_of(polys);
+    // The intervals merged: sorted by start (ties: the first pair), each joined with those that
+    // start within it.
+    std::stable_sort(r.growth.begin(), r.growth.end(), [](const auto& x, const auto& y) { return x.from < y.from; });
+    std::vector<CompoundRegion::Interval> merged;
+    for (const auto& iv : r.growth) {
+        if (!merged.empty() && iv.from <= merged.back().to) {
+            if (iv.to > merged.back().to) merged.back().to = iv.to;
+        } else {
+            merged.push_back(iv);
+        }
+    }
+    r.growth = std::move(merged);
+    return r;
+}
+
 }  // namespace scalecert::internal

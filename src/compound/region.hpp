@@ -12,6 +12,9 @@
 // parts on either side of a seed move apart as it grows: a band).
 #pragma once
 #include "geometry/polyhedron.hpp"
+#include "io/scene.hpp"
+
+#include <optional>
 
 #include <array>
 #include <vector>
@@ -50,5 +53,27 @@ struct RegionPiece {
     std::vector<std::vector<Point2q>> holes;
 };
 std::vector<RegionPiece> union_of(const std::vector<std::vector<Point2q>>& convex);
+
+// The region of a scene whose objects may be compounds (PolyInput::parts; a plain object is one
+// part): every part pair, those whose swept bounding boxes over I1 and I2 are apart pruned before
+// any exact work (they cannot meet anywhere in the rectangle), the others' polygons; their union;
+// and the growth set, where the objects meet on ρ1 = ρ2: intervals of ρ, each with the pair that
+// meets first. Part names for messages: "P1.parts[k]". Throws InputError for a flat part.
+struct CompoundRegion {
+    struct Pair {
+        int part1, part2;
+        bool pruned;
+        std::vector<Point2q> polygon;  // empty when pruned or apart
+    };
+    std::vector<Pair> pairs;  // part1-major
+    std::vector<RegionPiece> region;
+    struct Interval {
+        Q from, to;
+        int part1, part2;  // the pair meeting at `from`
+    };
+    std::vector<Interval> growth;  // in increasing ρ, disjoint
+    long pruned = 0, built = 0;
+};
+CompoundRegion compound_region(const ExactScene& sc, const std::string& name);
 
 }  // namespace scalecert::internal

@@ -83,29 +83,54 @@ ExactScene parse_scene_text(const std::string& text, const std::string& name, co
         const JNode* p = root.find(pname[i]);
         if (!p) r.fail("", std::string("missing field \"") + pname[i] + "\"");
         if (p->kind != JNode::Object) r.fail(pname[i], "expected an object with \"vertices\" or \"off\"");
-        only(*p, pname[i], {"vertices", "off", "mesh", "seed"});
         PolyInput& in = sc.P[i];
-        const JNode* verts = p->find("vertices");
-        const JNode* off = p->find("off");
-        const JNode* mesh = p->find("mesh");
-        if ((verts != nullptr) + (off != nullptr) + (mesh != nullptr) > 1) r.fail(pname[i], "give one of \"vertices\", \"mesh\" and \"off\"");
-        if (mesh) off = mesh;
-        if (verts) {
-            if (verts->kind != JNode::Array) r.fail(std::string(pname[i]) + ".vertices", "expected an array of points");
-            if (verts->items.size() > kMaxPoints) r.fail(std::string(pname[i]) + ".vertices", "more than " + std::to_string(kMaxPoints) + " points (the limit)");
-            in.points.reserve(verts->items.size());
-            for (size_t j = 0; j < verts->items.size(); ++j)
-                in.points.push_back(r.point(verts->items[j], [&] { return std::string(pname[i]) + ".vertices[" + std::to_string(j) + "]"; }));
-        } else if (off) {
-            const std::string key = std::string(pname[i]) + (mesh ? ".mesh" : ".off");
-            if (off->kind != JNode::String) r.fail(key, "expected a file name");
-            if (!opt.allow_off_files) r.fail(key, "mesh files are not read here");
-            std::string path = off->text;
-            if (!path.empty() && path[0] != '/' && !base_dir.empty()) path = base_dir + "/" + path;
-            // "mesh": OFF, OBJ, PLY or STL by extension; "off": an OFF file whatever its name.
-            in.points = mesh ? read_mesh(path, opt) : parse_mesh(read_input(path, "OFF file", kMaxSceneBytes), MeshFormat::Off, path, opt);
+        // The points of one convex body: "vertices", or a mesh file ("mesh": OFF, OBJ, PLY or STL by
+        // extension; "off": an OFF file whatever its name). `where` names the object or the part.
+        auto body = [&](const JNode& o, const std::string& where) {
+            std::vector<Vec3q> pts;
+            const JNode* verts = o.find("vertices");
+            const JNode* off = o.find("off");
+            const JNode* mesh = o.find("mesh");
+            if ((verts != nullptr) + (off != nullptr) + (mesh != nullptr) > 1) r.fail(where, "give one of \"vertices\", \"mesh\" and \"off\"");
+            if (mesh) off = mesh;
+            if (verts) {
+                if (verts->kind != JNode::Array) r.fail(where + ".vertices", "expected an array of points");
+                if (verts->items.size() > kMaxPoints) r.fail(where + ".vertices", "more than " + std::to_string(kMaxPoints) + " points (the limit)");
+                pts.reserve(verts->items.size());
+                for (size_t j = 0; j < verts->items.size(); ++j)
+                    pts.push_back(r.point(verts->items[j], [&] { return where + ".vertices[" + std::to_string(j) + "]"; }));
+            } else if (off) {
+                const std::string key = where + (mesh ? ".mesh" : ".off");
+                if (off->kind != JNode::String) r.fail(key, "expected a file name");
+                if (!opt.allow_off_files) r.fail(key, "mesh files are not read here");
+                std::string path = off->text;
+                if (!path.empty() && path[0] != '/' && !base_dir.empty()) path = base_dir + "/" + path;
+                pts = mesh ? read_mesh(path, opt) : parse_mesh(read_input(path, "OFF file", kMaxSceneBytes), MeshFormat::Off, path, opt);
+            } else {
+                r.fail(where, "missing field \"vertices\" (or \"mesh\", \"off\")");
+            }
+            return pts;
+        };
+        if (const JNode* parts = p->find("parts")) {
+            only(*p, pname[i], {"parts", "seed"});
+            const std::string where = std::string(pname[i]) + ".parts";
+            if (!opt.allow_parts)
+                r.fail(where, "an object made of parts is read by `scalecert region` only (the other commands take convex objects)");
+            if (parts->kind != JNode::Array || parts->items.empty()) r.fail(where, "expected a nonempty list of parts");
+            if (parts->items.size() > kMaxParts) r.fail(where, "more than " + std::to_string(kMaxParts) + " parts (the limit)");
+            for (size_t k = 0; k < parts->items.size(); ++k) {
+                const std::string w = where + "[" + std::to_string(k) + "]";
+                const JNode& part = parts->items[k];
+                if (part.kind != JNode::Object) r.fail(w, "expected an object with \"vertices\" or \"mesh\"");
+                only(part, w, {"vertices", "off", "mesh"});
+                in.parts.push_back(body(part, w));
+                if (in.points.size() + in.parts.back().size() > kMaxPoints)
+                    r.fail(where, "more than " + std::to_string(kMaxPoints) + " points in all (the limit)");
+                in.points.insert(in.points.end(), in.parts.back().begin(), in.parts.back().end());
+            }
         } else {
-            r.fail(pname[i], "missing field \"vertices\" (or \"mesh\", \"off\")");
+            only(*p, pname[i], {"vertices", "off", "mesh", "seed"});
+            in.points = body(*p, pname[i]);
         }
         if (const JNode* s = p->find("seed")) {
             in.seed = r.point(*s, std::string(pname[i]) + ".seed");
@@ -128,6 +153,10 @@ void check_scene(const ExactScene& sc, const std::string& name) {
     const char* pname[2] = {"P1", "P2"};
     const char* iname[2] = {"I1", "I2"};
     for (int i = 0; i < 2; ++i) {
+        for (size_t k = 0; k < sc.P[i].parts.size(); ++k)
+            if (sc.P[i].parts[k].size() < 4)
+                throw InputError(name + ": " + pname[i] + ".parts[" + std::to_string(k) + "]: fewer than 4 vertices (" +
+                                 std::to_string(sc.P[i].parts[k].size()) + ")");
         const size_t n = sc.P[i].points.size();
         if (n < 4) throw InputError(name + ": " + pname[i] + ": fewer than 4 vertices (" + std::to_string(n) + ")");
         if (n > kMaxPoints) throw InputError(name + ": " + pname[i] + ": more than " + std::to_string(kMaxPoints) + " points (the limit)");

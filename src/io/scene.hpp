@@ -8,10 +8,16 @@
 namespace scalecert::internal {
 
 struct PolyInput {
-    std::vector<Vec3q> points;  // as given (duplicates and non-extreme points allowed)
+    std::vector<Vec3q> points;  // as given (duplicates and non-extreme points allowed); a compound's: all its parts' in order
     Vec3q seed;                 // given, or the mean of the points
     bool seed_given = false;
+    // A compound object (issue 22): its convex parts, each the hull of its points, all scaled about
+    // the one seed. Empty for a plain (convex) object. Read only with ReadOptions::allow_parts.
+    std::vector<std::vector<Vec3q>> parts;
 };
+
+// At most this many parts an object (each of at least 4 points, all of them within kMaxPoints).
+constexpr size_t kMaxParts = 10000;
 
 struct ExactScene {
     PolyInput P[2];
@@ -21,6 +27,7 @@ struct ExactScene {
 struct ReadOptions {
     bool binary_doubles = false;  // JSON/OFF numbers read as the IEEE doubles strtod gives
     bool allow_off_files = true;  // "mesh" / "off": "FILE" in a scene (off for text from untrusted sources)
+    bool allow_parts = false;     // objects made of "parts" (scalecert region); refused elsewhere
 };
 
 // Reads and checks a scene file. Throws InputError naming the file and the offending field.
