@@ -94,8 +94,8 @@ struct ClaimOptions {
     bool certificate = false;     // also the judgements certificate (certify-fp --certificate)
 };
 // The report; the number of claims and of wrong ones; with options.certificate, the judgements
-// certificate (FORMAT.md, kind "judgements"; scalecert-check verifies it) of every claim whose kind
-// is certified (all but curve and switch_point).
+// certificate (FORMAT.md, kind "judgements"; scalecert-check verifies it): the proof of every
+// judgement.
 struct ClaimReport { std::string report; long claims, wrong; std::string certificate; };
 // One claim of a floating-point program, typed (the JSON kinds of CLAIMS.md, minus curves):
 // the fields its kind uses. A double's claim is its exact value: exact(x).

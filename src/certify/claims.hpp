@@ -45,8 +45,7 @@ struct ClaimModels {
     static ClaimModels of(const HullModel& m, const TouchingCurve& c);
 };
 // (*count, when given: the number of claims. *certificate, when given: the judgements
-// certificate, kind "judgements" (judgements.hpp, FORMAT.md), of every claim whose kind is
-// certified; an InputError when none is.)
+// certificate, kind "judgements" (judgements.hpp, FORMAT.md): the proof of every judgement.)
 std::string certify_fp(const ClaimModels& models, const std::string& claims, const std::string& name, const ClaimOptions& opt,
                        long* wrong, long* count = nullptr, std::string* certificate = nullptr);
 inline std::string certify_fp(const HullModel& m, const TouchingCurve& c, const std::string& claims, const std::string& name,

@@ -28,7 +28,7 @@ Command add_certify_fp(CLI::App& app) {
     add_out(sub, a->out);
     sub->add_option("--certificate", a->certificate,
                     "also write the judgements certificate: the proof of every judgement, for scalecert-check "
-                    "(certificates/FORMAT.md; curve and switch_point claims are not certified yet)")
+                    "(certificates/FORMAT.md, \"A judgements file\")")
         ->type_name("FILE")
         ->check(file_name());
     example(sub, "Exit status: 0 all claims right, 1 some claim wrong, 2 bad input. Example:\n"
