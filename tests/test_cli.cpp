@@ -805,6 +805,15 @@ BOOST_AUTO_TEST_CASE(region_of_compounds) {
     BOOST_TEST(j["region"][0]["outer"] == nlohmann::json::parse(R"([["4/3", "1"], ["5/2", "1"], ["3", "3"], ["1", "3"]])"));
     BOOST_TEST(j["growth_set"] == nlohmann::json::parse(R"([{"from": "9/7", "to": "3", "first_contact": {"P1_part": 0, "P2_part": 0}}])"));
     BOOST_TEST(run("region " + band).out == r.out);  // deterministic
+    // At ρ2 = 2 the band runs from ρ1 = 7/6 (3ρ1 + 1 = 9/2) to 11/4 (2ρ1 − 1 = 9/2).
+    auto at = [&](const std::string& x) { return nlohmann::json::parse(run("region " + band + " --at " + x).out)["at"]["verdict"]; };
+    BOOST_TEST(at("1,2") == "separated");
+    BOOST_TEST(at("7/6,2") == "touching");
+    BOOST_TEST(at("17/12,2") == "overlapping");
+    BOOST_TEST(at("2,2") == "overlapping");
+    BOOST_TEST(at("11/4,2") == "touching");
+    BOOST_TEST(at("3,2") == "separated");
+    expect_error("outside the rectangle", "region " + band + " --at 5,2", "--at: (5, 2) lies outside I1 x I2");
     // Objects with parts are read by region only; a flat part, an empty list, a part of three points.
     expect_error("parts elsewhere", "curve " + band, "P1.parts: an object made of parts is read by `scalecert region` only");
     const std::string tail = R"(, "seed": [0, 0, 0]}, "P2": {"vertices": [[4,0,0],[5,0,0],[4,1,0],[4,0,1]]}, "I1": [1, 2], "I2": [1, 2]})";

@@ -19,13 +19,14 @@ Json ring_json(const std::vector<Point2q>& p) {
 Command add_region(CLI::App& app) {
     struct Args {
         SceneArgs scene;
-        std::string out;
+        std::string out, at;
     };
     auto a = std::make_shared<Args>();
     CLI::App* sub = app.add_subcommand("region", "where objects made of convex parts overlap in I1 x I2: each part pair's exact polygon and their union (JSON)");
     a->scene.add(sub);
     add_out(sub, a->out);
-    example(sub, "Example:\n  scalecert region tests/data/compound_band.json");
+    sub->add_option("--at", a->at, "also the exact verdict at RHO1,RHO2 (in I1 x I2), with the pair that decides it");
+    example(sub, "Examples:\n  scalecert region tests/data/compound_band.json\n  scalecert region tests/data/compound_band.json --at 7/6,2");
     return {sub, [a] {
                 a->scene.opt.allow_parts = true;
                 const ExactScene sc = a->scene.load();
@@ -50,6 +51,15 @@ Command add_region(CLI::App& app) {
                     growth.push_back(Json{{"from", to_exact_string(iv.from)}, {"to", to_exact_string(iv.to)},
                                           {"first_contact", Json{{"P1_part", iv.part1}, {"P2_part", iv.part2}}}});
                 j["growth_set"] = growth;
+                if (!a->at.empty()) {
+                    const std::vector<Q> x = number_list(a->at, 2, "--at", a->scene.opt);
+                    if (x[0] < sc.lo[0] || x[0] > sc.hi[0] || x[1] < sc.lo[1] || x[1] > sc.hi[1])
+                        throw InputError("--at: (" + to_exact_string(x[0]) + ", " + to_exact_string(x[1]) + ") lies outside I1 x I2");
+                    const CompoundVerdict v = compound_verdict(r, x[0], x[1]);
+                    Json at{{"rho1", to_exact_string(x[0])}, {"rho2", to_exact_string(x[1])}, {"verdict", v.verdict}};
+                    if (v.part1 >= 0) at["pair"] = Json{{"P1_part", v.part1}, {"P2_part", v.part2}};
+                    j["at"] = at;
+                }
                 emit(dump(j), a->out);
                 return 0;
             }};

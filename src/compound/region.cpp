@@ -161,7 +161,9 @@ CompoundRegion compound_region(const ExactScene& sc, const std::string& name) {
                 ++r.pruned;
             } else {
                 ++r.built;
-                p.polygon = pair_region(parts[0][a], parts[1][b], s1, s2, sc.lo, sc.hi).polygon;
+                PairRegion pr = pair_region(parts[0][a], parts[1][b], s1, s2, sc.lo, sc.hi);
+                p.polygon = std::move(pr.polygon);
+                p.constraints = std::move(pr.constraints);
                 polys.push_back(p.polygon);
                 // Where it meets ρ1 = ρ2: the polygon cut to the diagonal (a point or a segment).
                 const std::vector<Point2q> diag = cut(cut(p.polygon, Q(1), Q(-1), Q(0)), Q(-1), Q(1), Q(0));
@@ -187,6 +189,18 @@ CompoundRegion compound_region(const ExactScene& sc, const std::string& name) {
     }
     r.growth = std::move(merged);
     return r;
+}
+
+CompoundVerdict compound_verdict(const CompoundRegion& r, const Q& rho1, const Q& rho2) {
+    CompoundVerdict v{"separated"};
+    for (const CompoundRegion::Pair& p : r.pairs) {
+        if (p.pruned) continue;
+        int least = 1;  // the smallest sign of a ρ1 + b ρ2 − c over the pair's half-planes
+        for (const HalfPlane& h : p.constraints) least = std::min(least, sgn(Q(h.a * rho1 + h.b * rho2 - h.c)));
+        if (least > 0) return {"overlapping", p.part1, p.part2};
+        if (least == 0 && v.part1 < 0) v = {"touching", p.part1, p.part2};
+    }
+    return v;
 }
 
 }  // namespace scalecert::internal

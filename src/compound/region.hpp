@@ -64,6 +64,7 @@ struct CompoundRegion {
         int part1, part2;
         bool pruned;
         std::vector<Point2q> polygon;  // empty when pruned or apart
+        std::vector<HalfPlane> constraints;  // built pairs: every facet normal's half-plane
     };
     std::vector<Pair> pairs;  // part1-major
     std::vector<RegionPiece> region;
@@ -75,5 +76,15 @@ struct CompoundRegion {
     long pruned = 0, built = 0;
 };
 CompoundRegion compound_region(const ExactScene& sc, const std::string& name);
+
+// The objects at (ρ1, ρ2) in I1 × I2, exactly: overlapping when some built pair's every half-plane
+// holds strictly (their interiors meet: the parts have interiors), touching when some pair's hold
+// with equality somewhere and none overlaps, else separated (a pruned pair cannot meet in the
+// rectangle). With the first pair that decides it (none when separated).
+struct CompoundVerdict {
+    const char* verdict;  // "separated", "touching" or "overlapping"
+    int part1 = -1, part2 = -1;
+};
+CompoundVerdict compound_verdict(const CompoundRegion& r, const Q& rho1, const Q& rho2);
 
 }  // namespace scalecert::internal
