@@ -169,7 +169,8 @@ private:
 
     bool verdict(const JNode& j, Json& o, std::string& text) {
         only(j, {"kind", "rho1", "rho2", "verdict"});
-        const auto [r1, r2] = pair_at(j);
+        const auto r12 = pair_at(j);
+        const Q &r1 = r12.first, &r2 = r12.second;  // (not a structured binding: lambdas below capture them)
         const std::string v = str(j, "verdict");
         if (v != "separated" && v != "touching" && v != "overlapping" && v != "intersecting")
             fail("verdict", "unknown verdict " + quoted(v) + " (separated, touching, overlapping, intersecting)");
@@ -233,7 +234,8 @@ private:
 
     bool switch_point(const JNode& j, Json& o, std::string& text) {
         only(j, {"kind", "rho1", "rho2", "contact"});
-        const auto [r1, r2] = pair_at(j);
+        const auto r12 = pair_at(j);
+        const Q &r1 = r12.first, &r2 = r12.second;  // (not a structured binding: lambdas below capture them)
         const std::optional<std::string> lab = label(j);
         const auto& exs = exact_switches();
         put_exact(o, "rho1", r1);
@@ -275,7 +277,8 @@ private:
     // A point of the curve: ρ2 = f(ρ1) > 0, within the tolerance (the line `curve RHO1 RHO2`, exactly).
     bool curve_point(const JNode& j, Json& o, std::string& text) {
         only(j, {"kind", "rho1", "rho2"});
-        const auto [r1, r2] = pair_at(j);
+        const auto r12 = pair_at(j);
+        const Q &r1 = r12.first, &r2 = r12.second;  // (not a structured binding: lambdas below capture them)
         const Q f = models_.curve_value(r1);
         put_exact(o, "rho1", r1);
         put_exact(o, "rho2", r2);
@@ -496,7 +499,8 @@ private:
 
     bool plane(const JNode& j, Json& o, std::string& text) {
         only(j, {"kind", "rho1", "rho2", "normal", "offset"});
-        const auto [r1, r2] = pair_at(j);
+        const auto r12 = pair_at(j);
+        const Q &r1 = r12.first, &r2 = r12.second;  // (not a structured binding: lambdas below capture them)
         const Vec3q n = point(need(j, "normal"), "normal");
         if (sgn(n[0]) == 0 && sgn(n[1]) == 0 && sgn(n[2]) == 0) fail("normal", "the zero vector is not a normal");
         const JNode* off = j.find("offset");
@@ -525,7 +529,8 @@ private:
 
     bool witness(const JNode& j, Json& o, std::string& text) {
         only(j, {"kind", "rho1", "rho2", "point"});
-        const auto [r1, r2] = pair_at(j);
+        const auto r12 = pair_at(j);
+        const Q &r1 = r12.first, &r2 = r12.second;  // (not a structured binding: lambdas below capture them)
         const Vec3q x = point(need(j, "point"), "point");
         const bool in1 = contains(m(), 0, r1, x), in2 = contains(m(), 1, r2, x);
         o["in_P1"] = in1;
@@ -538,7 +543,8 @@ private:
 
     bool distance(const JNode& j, Json& o, std::string& text) {
         only(j, {"kind", "rho1", "rho2", "value", "closest"});
-        const auto [r1, r2] = pair_at(j);
+        const auto r12 = pair_at(j);
+        const Q &r1 = r12.first, &r2 = r12.second;  // (not a structured binding: lambdas below capture them)
         const Q d = field(j, "value");
         const ExactDistance e = exact_distance_of(r1, r2);
         put_exact(o, "rho1", r1);
@@ -577,7 +583,8 @@ private:
 
     bool depth(const JNode& j, Json& o, std::string& text) {
         only(j, {"kind", "rho1", "rho2", "value", "direction"});
-        const auto [r1, r2] = pair_at(j);
+        const auto r12 = pair_at(j);
+        const Q &r1 = r12.first, &r2 = r12.second;  // (not a structured binding: lambdas below capture them)
         const Q d = field(j, "value");
         // The exact squared depth (−1 when separated) and a minimising direction, with its proof.
         const MeasuredDepth md = depth_of(r1, r2);
