@@ -1700,7 +1700,7 @@ void check_judgements(const J& c) {
         claim(natural(at(js[k], "index")) && indices.insert(at(js[k], "index").get<size_t>()).second, w + ".index is a distinct natural number");
         claim(at(js[k], "right").is_boolean(), w + ".right is true or false");
         const bool right = judge::judge(sc, R, at(js[k], "claim"), at(js[k], "proof"), w);
-        claim(right == at(js[k], "right").get<bool>(), w + ".right is the judgement the rules give (" + (right ? "right" : "wrong") + ")");
+        claim(right == at(js[k], "right").get<bool>(), w + ".right must be the judgement the rules give, which is " + (right ? "right" : "wrong"));
         rights += right;
     }
     // What the file proves, in the line the checker prints: the judgements and their tolerance

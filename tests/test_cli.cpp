@@ -322,7 +322,7 @@ BOOST_AUTO_TEST_CASE(outputs_go_only_to_regular_files_and_directories_we_can_mak
     BOOST_TEST(g2.err.find("two scenes named 'stacked_cubes'") != std::string::npos, g2.err);
     BOOST_TEST(!fs::exists(workdir() / "never-made-2"));
     BOOST_TEST(run("golden --dir " + (workdir() / "never-made-3").string()).status == 2);
-    // --scene is SCENES; --p1/--p2 a pair of meshes, its scene written as DIR/P1-P2.json. The
+    // --scene is SCENES; --p1/--p2 a pair of meshes, its scene written as DIR/P1-P2.scene.json. The
     // tetrahedron (0,0,0), (2,0,0), (0,2,0), (0,0,2) (seed its mean (1/2, 1/2, 1/2)) and the box
     // [3,5] x [0,2]^2 (seed (4, 1, 1)): the vertex (2,0,0) reaches x = 1/2 + 3ρ1/2 and the box's
     // face starts at x = 4 − ρ2, where the vertex lies on the face while 1/2 − ρ1/2 >= 1 − ρ2,
@@ -334,7 +334,9 @@ BOOST_AUTO_TEST_CASE(outputs_go_only_to_regular_files_and_directories_we_can_mak
     const fs::path boxm = write("box.off", "OFF\n8 0 0\n3 0 0\n5 0 0\n3 2 0\n5 2 0\n3 0 2\n5 0 2\n3 2 2\n5 2 2\n");
     const fs::path gm = workdir() / "golden-meshes";
     BOOST_TEST(run("golden --p1 " + tet.string() + " --p2 " + boxm.string() + " --i1 1/2,2 --i2 1/2,2 --dir " + gm.string()).status == 0);
-    BOOST_TEST(fs::exists(gm / "tet-box.json"));
+    BOOST_TEST(fs::exists(gm / "tet-box.scene.json"));
+    BOOST_TEST(!fs::exists(gm / "tet-box.json"));  // three files, as for a scene
+    BOOST_TEST(slurp(gm / "tet-box.golden.json").find("\"scene_file\": \"tet-box.scene.json\"") != std::string::npos);
     std::istringstream csv(slurp(gm / "tet-box.golden.csv"));
     int on = 0;
     for (std::string line; std::getline(csv, line);) {

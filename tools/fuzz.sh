@@ -19,6 +19,7 @@ tools/install-deps.sh clang-14 libclang-rt-14-dev
 CC=clang-14 CXX=clang++-14 cmake -S . -B build-san -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSCALECERT_FUZZ=ON -DSCALECERT_BUILD_PYTHON=OFF -DSCALECERT_INSTALL_TEST=OFF -DSCALECERT_BUILD_MPI=OFF >/dev/null
 cmake --build build-san -j"$(nproc)" --target $(printf 'fuzz_%s ' "${TARGETS[@]}") >/dev/null
 mkdir -p build-san/artifacts build-san/logs
+export UBSAN_OPTIONS="${UBSAN_OPTIONS:-}:suppressions=$PWD/tools/ubsan.supp"  # CGAL's arrangement records only (tools/ubsan.supp)
 run() {
   local t="$1" max_len=4096
   [ "$t" = checker ] && max_len=200000

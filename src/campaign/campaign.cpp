@@ -199,6 +199,8 @@ Json reading(F&& f) {
 std::string golden_stem(const std::string& path) {
     std::string b = path.substr(path.find_last_of('/') + 1);
     if (b.size() > 5 && b.compare(b.size() - 5, 5, ".json") == 0) b.resize(b.size() - 5);
+    // A scene golden wrote (NAME.scene.json) gives NAME again.
+    if (b.size() > 6 && b.compare(b.size() - 6, 6, ".scene") == 0) b.resize(b.size() - 6);
     return b;
 }
 
@@ -233,7 +235,11 @@ std::string run_shard(const CampaignArgs& a, const Shard& s) {
         ExactScene sc;
         j["inputs"] = reading([&] { sc = load_scene(p, a.opt); });
         Json files = Json::array();
-        for (const auto& [name, text] : golden_files(golden_stem(p), sc, [&](Json& g) { g["scene_file"] = p; })) {
+        for (const auto& [name, text] : golden_files(golden_stem(p), sc, [&](Json& g) {
+                 // (A scene inside the output directory, as golden --p1/--p2 writes it: named
+                 // relative to it, so that the files do not depend on where they were written.)
+                 g["scene_file"] = p.rfind(a.dir + "/", 0) == 0 ? p.substr(a.dir.size() + 1) : p;
+             })) {
             write_file_atomically(a.dir + "/" + name, text);
             files.push_back(Json::array({name, sha256_hex(text)}));
         }

@@ -490,7 +490,7 @@ private:
             }
         }
         o["wrong_contacts"] = wrong_labels;
-        text = "curve of " + std::to_string(segs.size()) + " segments: max vertical error " + num(max_v) + ", max horizontal error " +
+        text = "curve of " + std::to_string(segs.size()) + (segs.size() == 1 ? " segment" : " segments") + ": max vertical error " + num(max_v) + ", max horizontal error " +
                num(max_h) + ", switch points missed " + std::to_string(missed.size()) + ", extra " + std::to_string(extra.size()) +
                ", misplaced " + std::to_string(misplaced.size()) + ", wrong contacts " + std::to_string(wrong_labels.size()) +
                (exact_positive ? "" : ", and the exact curve reaches rho2 <= 0 in the claimed range");

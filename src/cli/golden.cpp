@@ -19,7 +19,7 @@ Command add_golden(CLI::App& app) {
     add_golden_options(sub, *a);
     sub->add_option("--scene", a->scenes, "a scene file, as SCENES (may be repeated)")->type_name("FILE");
     sub->add_option("--p1", pair->mesh[0], "P1 from a mesh file (.off .obj .ply .stl), with --p2, --i1, --i2: golden data for the pair, "
-                                           "named P1-P2 by the files' names (its scene written to DIR/P1-P2.json)");
+                                           "named P1-P2 by the files' names (its scene is DIR/P1-P2.scene.json)");
     sub->add_option("--p2", pair->mesh[1], "P2 from a mesh file");
     sub->add_option("--i1", pair->interval[0], "I1 as LO,HI (exact: 1/2,3)");
     sub->add_option("--i2", pair->interval[1], "I2 as LO,HI");
@@ -43,7 +43,8 @@ Command add_golden(CLI::App& app) {
                         const size_t dot = b.find_last_of('.');
                         return dot == std::string::npos || dot == 0 ? b : b.substr(0, dot);
                     };
-                    const std::string path = a->dir + "/" + stem(pair->mesh[0]) + "-" + stem(pair->mesh[1]) + ".json";
+                    // Written as golden writes a scene's copy (NAME.scene.json, the same bytes): three files.
+                    const std::string path = a->dir + "/" + stem(pair->mesh[0]) + "-" + stem(pair->mesh[1]) + ".scene.json";
                     mesh_scene.emplace(path, dump(scene_json(sc)));
                     a->scenes.push_back(path);
                 }
