@@ -4,59 +4,9 @@
 
 namespace scalecert::internal {
 
-namespace {
-Q cross2(const Pt2& o, const Pt2& a, const Pt2& b) {
-    return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
-}
-}  // namespace
-
-std::vector<Pt2> normalize_polygon(std::vector<Pt2> p) {
-    // Remove repeats (cyclically), then collinear middle vertices.
-    std::vector<Pt2> q;
-    for (const Pt2& v : p)
-        if (q.empty() || q.back() != v) q.push_back(v);
-    while (q.size() > 1 && q.front() == q.back()) q.pop_back();
-    for (bool changed = true; changed && q.size() > 2;) {
-        changed = false;
-        for (size_t i = 0; i < q.size() && q.size() > 2; ++i) {
-            const Pt2& a = q[(i + q.size() - 1) % q.size()];
-            const Pt2& c = q[(i + 1) % q.size()];
-            if (sgn(cross2(a, q[i], c)) == 0) {
-                q.erase(q.begin() + static_cast<long>(i));
-                changed = true;
-                break;
-            }
-        }
-    }
-    if (q.size() == 2 && q[1] < q[0]) std::swap(q[0], q[1]);
-    if (q.size() > 2) {
-        auto low = std::min_element(q.begin(), q.end(), [](const Pt2& a, const Pt2& b) {
-            return a[1] != b[1] ? a[1] < b[1] : a[0] < b[0];
-        });
-        std::rotate(q.begin(), low, q.end());
-    }
-    return q;
-}
-
 std::vector<Pt2> clip(const std::vector<Pt2>& poly, const Q& a, const Q& b, bool above) {
-    auto side = [&](const Pt2& p) {  // > 0 inside, 0 on the line
-        Q v = p[1] - (a * p[0] + b);
-        return above ? sgn(v) : -sgn(v);
-    };
-    std::vector<Pt2> out;
-    for (size_t i = 0; i < poly.size(); ++i) {
-        const Pt2& p = poly[i];
-        const Pt2& q = poly[(i + 1) % poly.size()];
-        int sp = side(p), sq = side(q);
-        if (sp >= 0) out.push_back(p);
-        if ((sp > 0 && sq < 0) || (sp < 0 && sq > 0)) {
-            // ρ2 − aρ1 − b changes sign between p and q.
-            Q fp = p[1] - a * p[0] - b, fq = q[1] - a * q[0] - b;
-            Q t = fp / (fp - fq);
-            out.push_back({p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1])});
-        }
-    }
-    return normalize_polygon(out);
+    // ρ2 >= a ρ1 + b is −a ρ1 + ρ2 >= b; ρ2 <= a ρ1 + b is a ρ1 − ρ2 >= −b.
+    return above ? cut_polygon(poly, -a, Q(1), b) : cut_polygon(poly, a, Q(-1), -b);
 }
 
 static Q area2(const std::vector<Pt2>& p) {

@@ -1,10 +1,10 @@
 // Stage 6: the certified partition of I1 × I2.
 #pragma once
 #include "certify/query.hpp"
+#include "geometry/polygon2.hpp"
 
 namespace scalecert::internal {
 
-using Pt2 = std::array<Q, 2>;
 
 struct SeparatedRegion {
     size_t piece;             // index into TouchingCurve::pieces; its line's normal separates the region
@@ -37,7 +37,6 @@ struct Partition : CurveWitnesses {
 // Clips a convex polygon (counter-clockwise) to ρ2 ≥ a·ρ1 + b (above = true) or ≤. Drops repeated
 // and collinear vertices; the result starts at its lowest, then leftmost vertex.
 std::vector<Pt2> clip(const std::vector<Pt2>& poly, const Q& a, const Q& b, bool above);
-std::vector<Pt2> normalize_polygon(std::vector<Pt2> poly);
 
 // I1 × I2 ∩ {ρ2 >= curve} (`rect` is I1 × I2, normalized), in time linear in the curve's pieces.
 std::vector<Pt2> overlap_region(const Model& m, const TouchingCurve& c, const std::vector<Pt2>& rect);

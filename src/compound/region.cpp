@@ -21,35 +21,12 @@ using Polygon = CGAL::Polygon_2<K>;
 using PolygonWithHoles = CGAL::Polygon_with_holes_2<K>;
 using PolygonSet = CGAL::Polygon_set_2<K>;
 
-Q cross2(const Point2q& o, const Point2q& a, const Point2q& b) {
-    return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
-}
 bool lower(const Point2q& a, const Point2q& b) { return a[1] != b[1] ? a[1] < b[1] : a[0] < b[0]; }
-
-// Corners only, from the lowest (then leftmost): repeats and collinear vertices dropped, cyclically.
-std::vector<Point2q> corners(std::vector<Point2q> p) {
-    std::vector<Point2q> q;
-    for (const Point2q& v : p)
-        if (q.empty() || q.back() != v) q.push_back(v);
-    while (q.size() > 1 && q.front() == q.back()) q.pop_back();
-    for (bool changed = true; changed && q.size() > 2;) {
-        changed = false;
-        for (size_t i = 0; i < q.size() && q.size() > 2; ++i)
-            if (sgn(cross2(q[(i + q.size() - 1) % q.size()], q[i], q[(i + 1) % q.size()])) == 0) {
-                q.erase(q.begin() + static_cast<long>(i));
-                changed = true;
-                break;
-            }
-    }
-    if (q.size() == 2 && lower(q[1], q[0])) std::swap(q[0], q[1]);
-    if (q.size() > 2) std::rotate(q.begin(), std::min_element(q.begin(), q.end(), lower), q.end());
-    return q;
-}
 
 std::vector<Point2q> ring(const Polygon& p) {
     std::vector<Point2q> v;
     for (auto it = p.vertices_begin(); it != p.vertices_end(); ++it) v.push_back({it->x(), it->y()});
-    return corners(std::move(v));
+    return normalize_polygon(std::move(v));
 }
 }  // namespace
 
@@ -60,25 +37,9 @@ std::vector<Vec3z> minkowski_facet_normals(const Polyhedron& A, const Polyhedron
     return all_facet_normals(m);
 }
 
-std::vector<Point2q> cut(const std::vector<Point2q>& p, const Q& a, const Q& b, const Q& c) {
-    auto value = [&](const Point2q& x) { return Q(a * x[0] + b * x[1] - c); };  // >= 0 inside
-    std::vector<Point2q> out;
-    for (size_t i = 0; i < p.size(); ++i) {
-        const Point2q &x = p[i], &y = p[(i + 1) % p.size()];
-        const Q fx = value(x), fy = value(y);
-        if (sgn(fx) >= 0) out.push_back(x);
-        if ((sgn(fx) > 0 && sgn(fy) < 0) || (sgn(fx) < 0 && sgn(fy) > 0)) {
-            const Q t = fx / (fx - fy);
-            out.push_back({x[0] + t * (y[0] - x[0]), x[1] + t * (y[1] - x[1])});
-        }
-        if (p.size() == 1) break;
-    }
-    return corners(std::move(out));
-}
-
 PairRegion pair_region(const Polyhedron& A, const Polyhedron& B, const Vec3q& s1, const Vec3q& s2, const Q lo[2], const Q hi[2]) {
     PairRegion r;
-    r.polygon = corners({{lo[0], lo[1]}, {hi[0], lo[1]}, {hi[0], hi[1]}, {lo[0], hi[1]}});
+    r.polygon = normalize_polygon({{lo[0], lo[1]}, {hi[0], lo[1]}, {hi[0], hi[1]}, {lo[0], hi[1]}});
     const Vec3q d = sub(s2, s1);
     for (const Vec3z& n : minkowski_facet_normals(A, B)) {
         const Vec3q nq = to_q(n);
@@ -87,7 +48,7 @@ PairRegion pair_region(const Polyhedron& A, const Polyhedron& B, const Vec3q& s1
         h.b = B.support(neg(n)) + dot(nq, s2);
         h.c = dot(nq, d);
         h.normal = n;
-        if (!r.polygon.empty()) r.polygon = cut(r.polygon, h.a, h.b, h.c);
+        if (!r.polygon.empty()) r.polygon = cut_polygon(r.polygon, h.a, h.b, h.c);
         r.constraints.push_back(std::move(h));
     }
     return r;
@@ -166,7 +127,7 @@ CompoundRegion compound_region(const ExactScene& sc, const std::string& name) {
                 p.constraints = std::move(pr.constraints);
                 polys.push_back(p.polygon);
                 // Where it meets ρ1 = ρ2: the polygon cut to the diagonal (a point or a segment).
-                const std::vector<Point2q> diag = cut(cut(p.polygon, Q(1), Q(-1), Q(0)), Q(-1), Q(1), Q(0));
+                const std::vector<Point2q> diag = cut_polygon(cut_polygon(p.polygon, Q(1), Q(-1), Q(0)), Q(-1), Q(1), Q(0));
                 if (!diag.empty()) {
                     Q t0 = diag.front()[0], t1 = t0;
                     for (const Point2q& x : diag) t0 = std::min(t0, x[0]), t1 = std::max(t1, x[0]);

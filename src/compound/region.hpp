@@ -11,6 +11,7 @@
 // objects meet where some pair does: on the union of the R_AB, which need not be monotone (two
 // parts on either side of a seed move apart as it grows: a band).
 #pragma once
+#include "geometry/polygon2.hpp"
 #include "geometry/polyhedron.hpp"
 #include "io/scene.hpp"
 
@@ -21,7 +22,7 @@
 
 namespace scalecert::internal {
 
-using Point2q = std::array<Q, 2>;  // (ρ1, ρ2)
+using Point2q = Pt2;  // (ρ1, ρ2)
 
 // a ρ1 + b ρ2 >= c: where a facet normal n of A ⊕ (−B) does not separate the pair
 // (a = hA(n), b = hB(n), c = n·d).
@@ -41,9 +42,6 @@ PairRegion pair_region(const Polyhedron& A, const Polyhedron& B, const Vec3q& s1
 
 // The facet normals of A ⊕ (−B) (the Gauss-map overlay of contact_lines.hpp), primitive.
 std::vector<Vec3z> minkowski_facet_normals(const Polyhedron& A, const Polyhedron& B);
-
-// The convex polygon p (counter-clockwise, corners only) cut to a ρ1 + b ρ2 >= c.
-std::vector<Point2q> cut(const std::vector<Point2q>& p, const Q& a, const Q& b, const Q& c);
 
 // The union of convex polygons with area (CGAL's Boolean set operations on exact rationals):
 // its connected pieces, each an outer boundary (counter-clockwise) and its holes (clockwise),
