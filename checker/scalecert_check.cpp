@@ -595,6 +595,7 @@ int affine_dim(const Scene& sc, int i, const std::vector<int>& idx) {
 // polygon or more).
 char dimension_letter(const Scene& sc, int i, const std::vector<int>& idx) { return "VEFF"[affine_dim(sc, i, idx)]; }
 
+void read_ranges(Scene& sc, const J& j);
 Scene read_scene(const J& j) {
     shape(j, "scene", {"P1", "P2", "I1", "I2"});
     Scene sc;
@@ -610,6 +611,12 @@ Scene read_scene(const J& j) {
         sc.scan[i] = std::make_unique<Scan>(sc.P[i], kPoly[i]);
     }
     sc.prepare();
+    read_ranges(sc, j);
+    return sc;
+}
+
+// I1 and I2 of a scene object: [lo, hi] with 0 < lo <= hi.
+void read_ranges(Scene& sc, const J& j) {
     const char* iv[2] = {"I1", "I2"};
     for (int i = 0; i < 2; ++i) {
         const J& r = at(j, iv[i]);
@@ -618,12 +625,15 @@ Scene read_scene(const J& j) {
         sc.hi[i] = num(r[1], std::string("scene.") + iv[i] + "[1]");
         claim(sgn(sc.lo[i]) > 0 && sc.lo[i] <= sc.hi[i], std::string("scene.") + iv[i] + " has 0 < lo <= hi");
     }
-    return sc;
 }
 
 // Weights [[index, "w"], ...] over polyhedron i: distinct indices, w > 0, sum 1. Returns
 // D_i Σ w v = Σ w X: each term a product of the file's weight and the scene's integers.
-std::array<Q, 3> combination(const Scene& sc, int i, const J& w, const std::string& where, std::vector<int>* used = nullptr) {
+// Indices are into the vertices [base, base + count) of the polyhedron (a compound's part), base
+// added: by default all of them.
+std::array<Q, 3> combination(const Scene& sc, int i, const J& w, const std::string& where, std::vector<int>* used = nullptr,
+                             size_t base = 0, size_t count = SIZE_MAX) {
+    if (count == SIZE_MAX) count = sc.P[i].size();
     claim(w.is_array() && !w.empty(), where + " is a nonempty list of weights");
     std::set<size_t> seen;
     Q total = 0;
@@ -631,7 +641,7 @@ std::array<Q, 3> combination(const Scene& sc, int i, const J& w, const std::stri
     for (size_t k = 0; k < w.size(); ++k) {
         std::string wk = where + "[" + std::to_string(k) + "]";
         claim(w[k].is_array() && w[k].size() == 2, wk + " is [index, weight]");
-        size_t idx = index(w[k][0], sc.P[i].size(), wk + " index");
+        size_t idx = base + index(w[k][0], count, wk + " index");
         claim(seen.insert(idx).second, wk + " names a distinct vertex");
         Q l = num(w[k][1], wk + " weight");
         claim(sgn(l) > 0, wk + " weight is > 0");
@@ -663,14 +673,17 @@ void check_seed_interior(const Scene& sc, const J& j) {
 // A witness: a common point of P1(ρ1) and P2(ρ2), s + ρ Σ λ (v − s) on each side. With
 // c = Σ λ X / D_i (combination()), the point y = s + ρ (c − s) equals p iff
 // ρ D_i c = D_i p + (ρ − 1) D_i s: products of the file's numbers and the scene's.
-P2 check_witness(const Scene& sc, const J& w, const std::string& where, std::vector<int>* used = nullptr) {
+// parts: for a compound, each side's part as [base, count) of its vertices (combination()).
+P2 check_witness(const Scene& sc, const J& w, const std::string& where, std::vector<int>* used = nullptr,
+                 const std::array<std::array<size_t, 2>, 2>* parts = nullptr) {
     shape(w, where, {"rho1", "rho1_double", "rho2", "rho2_double", "point", "point_double", "P1", "P2"});
     Q r1 = field(w, "rho1", where), r2 = field(w, "rho2", where);
     claim(sgn(r1) >= 0 && sgn(r2) >= 0, where + " scalings are >= 0");
     std::vector<Q> x = fields(w, "point", 3, where);
     const Q* r[2] = {&r1, &r2};
     for (int i = 0; i < 2; ++i) {
-        std::array<Q, 3> c = combination(sc, i, at(w, kPoly[i]), where + "." + kPoly[i], used ? &used[i] : nullptr);
+        std::array<Q, 3> c = combination(sc, i, at(w, kPoly[i]), where + "." + kPoly[i], used ? &used[i] : nullptr,
+                                         parts ? (*parts)[i][0] : 0, parts ? (*parts)[i][1] : SIZE_MAX);
         const Q D(sc.scan[i]->D());
         bool on = true;
         for (int k = 0; k < 3; ++k) on = on && *r[i] * c[k] == x[k] * D + (*r[i] - 1) * sc.sdv[i][k];
@@ -1710,6 +1723,180 @@ void check_judgements(const J& c) {
                 (tol.size() > 40 ? tol.substr(0, 40) + "..." : tol);
 }
 
+// ---- a compound partition ----------------------------------------------------------------------
+// Two objects made of convex parts, every part of object i scaled about its one seed s_i (which
+// need lie in no part). The objects meet at (ρ1, ρ2) iff some part pair (A, B) does, and the file
+// proves each pair's meeting set M in the rectangle on its own (FORMAT.md, "A compound
+// partition"): an entry covers a block of pairs (P1 parts a0..a1 × P2 parts b0..b1) and lists
+// normals n, each giving, over the vertices of the block's parts, the half-plane
+// ρ1 hA(n) + ρ2 hB(n) >= n·d (hA over the P1 parts, hB over the P2 parts: never smaller than one
+// pair's, so a point outside the half-plane is separated for every pair of the block). The
+// rectangle cut by them all is recomputed here and must be the listed polygon: outside it some
+// normal separates. A block of more than one pair must cut it to nothing; a single pair's polygon
+// carries a witness at each corner, and the set of (x, ρ1, ρ2) with x in A(ρ1) ∩ B(ρ2) is convex,
+// so the pair meets on the whole polygon. The blocks must cover every pair exactly once. So a
+// point of the rectangle is in the overlap region iff it lies in some listed polygon.
+constexpr size_t kMaxCompoundParts = 10000;  // parts an object: scalecert's own limit
+
+// The convex polygon p cut to a x + b y >= c (the checker's clip() for lines of any direction).
+std::vector<P2> cut(const std::vector<P2>& p, const Q& a, const Q& b, const Q& c) {
+    spend_ops(6.0 * static_cast<double>(p.size() + 1), qsize(a) + qsize(b) + qsize(c) + (p.empty() ? 0 : qsize(p[0][0]) + qsize(p[0][1])));
+    std::vector<P2> out;
+    for (size_t i = 0; i < p.size(); ++i) {
+        const P2 &u = p[i], &v = p[(i + 1) % p.size()];
+        const Q fu = a * u[0] + b * u[1] - c, fv = a * v[0] + b * v[1] - c;
+        if (sgn(fu) >= 0) out.push_back(u);
+        if (sgn(fu) * sgn(fv) < 0) { Q t = fu / (fu - fv); out.push_back({u[0] + t * (v[0] - u[0]), u[1] + t * (v[1] - u[1])}); }
+    }
+    return normalize(out);
+}
+
+// [first, last] of a part range, 0 <= first <= last < n.
+std::array<size_t, 2> part_range(const J& j, size_t n, const std::string& where) {
+    claim(j.is_array() && j.size() == 2, where + " is [first, last]");
+    const size_t a = index(j[0], n, where + "[0]"), b = index(j[1], n, where + "[1]");
+    claim(a <= b, where + " has first <= last");
+    return {a, b};
+}
+
+void check_compound_partition(const J& c) {
+    shape(c, "", {"format", "kind", "pairs", "growth_set", "scene"}, {"statistics"});
+    // The scene: each object's parts, their vertices held as one list (part k: [start[k], start[k + 1])).
+    const J& sj = at(c, "scene");
+    shape(sj, "scene", {"P1", "P2", "I1", "I2"});
+    Scene sc;
+    std::vector<size_t> start[2];
+    for (int i = 0; i < 2; ++i) {
+        const std::string w = std::string("scene.") + kPoly[i];
+        const J& p = at(sj, kPoly[i]);
+        shape(p, w, {"parts", "seed"});
+        const J& parts = at(p, "parts");
+        claim(parts.is_array() && !parts.empty(), w + ".parts is a nonempty list");
+        if (parts.size() > kMaxCompoundParts)
+            throw Unreadable{w + " has more than " + std::to_string(kMaxCompoundParts) + " parts (scalecert's own limit)"};
+        for (size_t k = 0; k < parts.size(); ++k) {
+            const std::string wk = w + ".parts[" + std::to_string(k) + "]";
+            shape(parts[k], wk, {"vertices"});
+            const J& vs = at(parts[k], "vertices");
+            claim(vs.is_array() && !vs.empty(), wk + ".vertices is a nonempty list");
+            start[i].push_back(sc.P[i].size());
+            for (size_t v = 0; v < vs.size(); ++v) sc.P[i].push_back(point(vs[v], wk + ".vertices[" + std::to_string(v) + "]"));
+        }
+        start[i].push_back(sc.P[i].size());
+        sc.s[i] = point(at(p, "seed"), w + ".seed");
+        sc.scan[i] = std::make_unique<Scan>(sc.P[i], kPoly[i]);
+    }
+    sc.prepare();
+    read_ranges(sc, sj);
+    // Each part spans 3 dimensions, as scalecert requires of its input (the claims would hold for
+    // flat parts too: the file states a scene the engine reads).
+    for (int i = 0; i < 2; ++i)
+        for (size_t k = 0; k + 1 < start[i].size(); ++k) {
+            std::vector<int> idx(start[i][k + 1] - start[i][k]);
+            std::iota(idx.begin(), idx.end(), static_cast<int>(start[i][k]));
+            claim(affine_dim(sc, i, idx) == 3, std::string("scene.") + kPoly[i] + ".parts[" + std::to_string(k) + "] spans 3 dimensions");
+        }
+    if (c.contains("statistics")) {
+        const J& st = at(c, "statistics");
+        shape(st, "statistics", {"pairs", "pruned", "built", "entries"});
+        for (const char* k : {"pairs", "pruned", "built", "entries"}) claim(natural(at(st, k)), std::string("statistics.") + k + " is a count");
+    }
+    const size_t m = start[0].size() - 1, n = start[1].size() - 1;
+    const std::vector<P2> rect = normalize({{sc.lo[0], sc.lo[1]}, {sc.hi[0], sc.lo[1]}, {sc.hi[0], sc.hi[1]}, {sc.lo[0], sc.hi[1]}});
+    // Every pair covered once: a bit a pair.
+    spend(static_cast<double>(m) * static_cast<double>(n) / 8);
+    std::vector<bool> covered(m * n, false);
+    size_t count = 0;
+    struct Diagonal { Q from, to; size_t a, b; };
+    std::vector<Diagonal> diag;  // each listed polygon where it meets ρ1 = ρ2
+    size_t meeting = 0;
+    const J& pairs = at(c, "pairs");
+    claim(pairs.is_array() && !pairs.empty(), "pairs is a nonempty list");
+    std::array<size_t, 2> previous{0, 0};
+    for (size_t e = 0; e < pairs.size(); ++e) {
+        const std::string w = "pairs[" + std::to_string(e) + "]";
+        const J& pe = pairs[e];
+        shape(pe, w, {"P1_parts", "P2_parts", "normals", "vertices", "vertices_double", "witnesses"});
+        const std::array<size_t, 2> ra = part_range(at(pe, "P1_parts"), m, w + ".P1_parts"), rb = part_range(at(pe, "P2_parts"), n, w + ".P2_parts");
+        claim(e == 0 || std::array<size_t, 2>{ra[0], rb[0]} > previous, w + " comes after the entry before it (by first P1 part, then first P2 part)");
+        previous = {ra[0], rb[0]};
+        spend(static_cast<double>(ra[1] - ra[0] + 1) * static_cast<double>(rb[1] - rb[0] + 1));
+        for (size_t a = ra[0]; a <= ra[1]; ++a)
+            for (size_t b = rb[0]; b <= rb[1]; ++b) {
+                claim(!covered[a * n + b], w + " covers the pair (" + std::to_string(a) + ", " + std::to_string(b) + ") a second time");
+                covered[a * n + b] = true;
+                ++count;
+            }
+        // The block's vertices on each side, ascending, and the half-planes of its normals.
+        std::vector<int> verts[2];
+        const std::array<size_t, 2>* r[2] = {&ra, &rb};
+        for (int i = 0; i < 2; ++i)
+            for (size_t k = start[i][(*r[i])[0]]; k < start[i][(*r[i])[1] + 1]; ++k) verts[i].push_back(static_cast<int>(k));
+        const J& ns = at(pe, "normals");
+        claim(ns.is_array(), w + ".normals is a list");
+        std::vector<P2> poly = rect;
+        for (size_t k = 0; k < ns.size(); ++k) {
+            const V3 nv = normal(ns[k], w + ".normals[" + std::to_string(k) + "]");
+            mpz_class H[2];
+            for (int i = 0; i < 2; ++i) {
+                Z3 u = ints(nv);
+                if (i == 1) for (auto& x : u) x = -x;
+                const std::vector<int> best = sc.scan[i]->argmax(u, &verts[i]);
+                H[i] = sc.support_at(i, u, best[0]);  // D* hA(n), D* hB(n)
+            }
+            spend_ops(1, 3 * (limbs(sc.Delta[0]) + limbs(sc.Delta[1]) + limbs(sc.Delta[2])));
+            const mpz_class C = dotz(ints(nv), sc.Delta);  // D* n·d
+            if (!poly.empty()) poly = cut(poly, Q(H[0]), Q(H[1]), Q(C));
+        }
+        claim(polygon(pe, w) == poly, w + ".vertices is the rectangle cut by its normals' half-planes");
+        const J& wit = at(pe, "witnesses");
+        claim(wit.is_array() && wit.size() == poly.size(), w + " has a witness at each vertex");
+        if (poly.empty()) continue;
+        claim(ra[0] == ra[1] && rb[0] == rb[1], w + " is one pair: a block of pairs must meet nowhere in the rectangle");
+        const std::array<std::array<size_t, 2>, 2> parts{{{start[0][ra[0]], start[0][ra[0] + 1] - start[0][ra[0]]},
+                                                          {start[1][rb[0]], start[1][rb[0] + 1] - start[1][rb[0]]}}};
+        for (size_t k = 0; k < poly.size(); ++k)
+            claim(check_witness(sc, wit[k], w + ".witnesses[" + std::to_string(k) + "]", nullptr, &parts) == poly[k],
+                  w + ".witnesses[" + std::to_string(k) + "] is at its vertex");
+        ++meeting;
+        std::vector<P2> d = cut(cut(poly, Q(-1), Q(1), Q(0)), Q(1), Q(-1), Q(0));  // on ρ1 = ρ2
+        if (!d.empty()) {
+            Q t0 = d[0][0], t1 = d[0][0];
+            for (const P2& x : d) t0 = std::min(t0, x[0]), t1 = std::max(t1, x[0]);
+            diag.push_back({t0, t1, ra[0], rb[0]});
+        }
+    }
+    claim(count == m * n, "the entries cover every part pair (" + std::to_string(count) + " of " + std::to_string(m * n) + ")");
+    // The growth set: where the objects meet on ρ1 = ρ2, the union of the pairs' intervals, each
+    // with the pair that meets at its start (the least start, then the first pair by part).
+    std::sort(diag.begin(), diag.end(), [](const Diagonal& x, const Diagonal& y) {
+        return x.from != y.from ? x.from < y.from : std::make_pair(x.a, x.b) < std::make_pair(y.a, y.b);
+    });
+    std::vector<Diagonal> merged;
+    for (const Diagonal& d : diag) {
+        if (!merged.empty() && d.from <= merged.back().to) {
+            if (d.to > merged.back().to) merged.back().to = d.to;
+        } else {
+            merged.push_back(d);
+        }
+    }
+    const J& gs = at(c, "growth_set");
+    claim(gs.is_array() && gs.size() == merged.size(), "growth_set has one interval per connected piece of the overlap region on rho1 = rho2 (" +
+                                                           std::to_string(merged.size()) + ")");
+    for (size_t k = 0; k < merged.size(); ++k) {
+        const std::string w = "growth_set[" + std::to_string(k) + "]";
+        shape(gs[k], w, {"from", "from_double", "to", "to_double", "first_contact"});
+        claim(field(gs[k], "from", w) == merged[k].from && field(gs[k], "to", w) == merged[k].to, w + " is the interval recomputed from the pairs");
+        const J& fc = at(gs[k], "first_contact");
+        shape(fc, w + ".first_contact", {"P1_part", "P2_part"});
+        claim(index(at(fc, "P1_part"), m, w + ".first_contact.P1_part") == merged[k].a &&
+                  index(at(fc, "P2_part"), n, w + ".first_contact.P2_part") == merged[k].b,
+              w + ".first_contact is the first pair meeting at its start");
+    }
+    g_summary = "; compound: " + std::to_string(m) + " x " + std::to_string(n) + " part pairs, " + std::to_string(meeting) +
+                " meeting somewhere in I1 x I2";
+}
+
 // Checks a whole file's text. Returns the exit status; `message` is the line to print.
 int check_text(const std::string& text, std::string& message) {
     g_claims = 0;
@@ -1726,7 +1913,8 @@ int check_text(const std::string& text, std::string& message) {
             if (kind == "partition") check_partition(c);
             else if (kind == "query") check_query(c);
             else if (kind == "judgements") check_judgements(c);
-            else claim(false, "kind is partition, query or judgements (got '" + StrictTree::printable(kind) + "': not a certificate)");
+            else if (kind == "compound_partition") check_compound_partition(c);
+            else claim(false, "kind is partition, query, judgements or compound_partition (got '" + StrictTree::printable(kind) + "': not a certificate)");
         } catch (const Invalid& e) {
             message = "invalid: " + e.what;
             return 1;

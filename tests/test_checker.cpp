@@ -88,6 +88,25 @@ bool engine_judges_the_same(const std::string& text) {
     return true;
 }
 
+// A changed compound partition that the checker still accepts must state what the engine finds
+// for the changed file's scene: scalecert region is re-run on it, and every pair that meets
+// somewhere must have the file's polygon, and the growth set must be the file's.
+bool g_compound = false;
+bool engine_finds_the_same_region(const std::string& text) {
+    const OJ j = OJ::parse(text);
+    const fs::path scene = tmpdir() / "reregion_scene.json", rep = tmpdir() / "reregion.json";
+    { std::ofstream(scene) << j["scene"].dump(1); }
+    if (status_of(std::string(SCALECERT_BIN) + " region " + scene.string() + " --out " + rep.string()) != 0) return false;
+    const OJ r = load(rep);
+    OJ mine = OJ::array();
+    for (const OJ& e : j["pairs"])
+        if (!e["vertices"].empty())
+            mine.push_back(OJ{{"P1_part", e["P1_parts"][0]}, {"P2_part", e["P2_parts"][0]}, {"vertices", e["vertices"]}});
+    OJ growth = OJ::array();
+    for (const OJ& g : j["growth_set"]) growth.push_back(OJ{{"from", g["from"]}, {"to", g["to"]}, {"first_contact", g["first_contact"]}});
+    return r["pair_regions"] == mine && r["growth_set"] == growth;
+}
+
 struct Tally {
     int tried = 0, rejected = 0;
     std::map<std::string, int> still_true;
@@ -143,6 +162,20 @@ void try_text(const std::string& text, const std::string& path, const std::strin
         BOOST_ERROR("tampered judgements certificate accepted, and the engine judges its claims otherwise: " << key << " (" << msg << ")");
         return;
     }
+    if (g_compound) {  // whatever changed: true iff the engine finds the same pair polygons and growth set
+        if (std::regex_match(key, std::regex(".* at /statistics(/.*)?$"))) {
+            ++t.still_true["engine statistics (pairs pruned and built): not a claim"];
+            return;
+        }
+        if (engine_finds_the_same_region(text)) {
+            ++t.still_true["a changed scene or normal, and the engine, re-run on the file's scene, finds the file's pair polygons and "
+                           "growth set (a vertex that no normal's support or witness uses, moved; another normal along the same "
+                           "direction; ...)"];
+            return;
+        }
+        BOOST_ERROR("tampered compound partition accepted, and the engine finds another region: " << key << " (" << msg << ")");
+        return;
+    }
     for (const StillTrue& s : kStillTrue)
         if ((!s.query_only || g_query) && std::regex_match(key, s.re)) { ++t.still_true[s.why]; return; }
     if (moves_an_unnamed_vertex(key)) {
@@ -171,8 +204,8 @@ void mutate_all(const OJ& root, const OJ& node, const OJ::json_pointer& ptr, Tal
         } else if (s == "separated" || s == "touching" || s == "overlapping") {
             for (const char* v : {"separated", "touching", "overlapping"})
                 if (s != v) with(v, std::string("verdict flipped to ") + v);
-        } else if (s == "partition" || s == "query" || s == "judgements") {
-            for (const char* v : {"partition", "query", "curve", "judgements"})
+        } else if (s == "partition" || s == "query" || s == "judgements" || s == "compound_partition") {
+            for (const char* v : {"partition", "query", "curve", "judgements", "compound_partition", "region"})
                 if (s != v) with(v, std::string("kind changed to ") + v);
         } else {
             with(s + "X", "string changed");
@@ -234,10 +267,11 @@ void report(const std::string& name, const Tally& t) {
     BOOST_TEST(t.rejected + kept == t.tried);
 }
 // Every mutation of a certificate (a query answer's when `query`), tallied and reported.
-void mutate_and_report(const OJ& j, const std::string& name, bool query, bool judgements = false) {
+void mutate_and_report(const OJ& j, const std::string& name, bool query, bool judgements = false, bool compound = false) {
     Tally t;
     g_query = query;
     g_judgements = judgements;
+    g_compound = compound;
     g_named.clear();
     collect_named(j, false);
     mutate_all(j, j, OJ::json_pointer(), t);
@@ -1269,4 +1303,120 @@ BOOST_AUTO_TEST_CASE(the_work_limit_and_the_denominator_limit_refuse_with_exit_2
     OJ fits = bundled("tetra_box_switch");
     fits["scene"]["P2"]["vertices"].push_back(OJ::array({"1/" + mpz_class(mpz_class(1) << 16383).get_str(), "0", "0"}));
     BOOST_TEST(verdict_of(fits) == 0);  // a point inside the cube: every claim still holds
+}
+
+// ---- compound partitions (issue 22) ------------------------------------------------------------
+namespace {
+fs::path data(const std::string& name) { return fs::path(SCALECERT_SOURCE_DIR) / "tests" / "data" / name; }
+OJ compound_certificate(const fs::path& scene, const std::string& name) {
+    const fs::path out = tmpdir() / (name + ".cert.json");
+    BOOST_REQUIRE(engine("region " + scene.string() + " --certificate " + out.string()) == 0);
+    BOOST_REQUIRE(check_file(out) == 0);
+    return load(out);
+}
+int check_json(const OJ& j) {
+    std::string msg;
+    return scalecert_check::check_text(j.dump(1), msg);
+}
+// Three parts a side: two near each other and one far off along x, so that some pairs meet,
+// some are apart in the rectangle and some are pruned (in a block).
+fs::path mixed_compound() {
+    const std::string text = R"({
+ "P1": {"parts": [{"vertices": [[0,0,0],[2,0,0],[0,2,0],[0,0,2],[2,2,2]]},
+                  {"vertices": [[0,3,0],[2,3,0],[1,5,1],[0,3,2],["1/2","9/2",2]]},
+                  {"vertices": [[-40,0,0],[-38,0,0],[-40,2,0],[-40,0,2]]}], "seed": [1, 2, 1]},
+ "P2": {"parts": [{"vertices": [[4,0,0],[6,1,0],[4,2,1],[5,0,2],[6,2,2]]},
+                  {"vertices": [[4,3,0],[6,3,0],[4,5,0],[4,3,2],[5,5,2]]},
+                  {"vertices": [[4,-9,0],[6,-9,0],[4,-7,0],[4,-9,2]]}], "seed": [5, 2, 1]},
+ "I1": ["1/2", 3], "I2": ["1/2", 3]})";
+    const fs::path p = tmpdir() / "mixed_compound.json";
+    std::ofstream(p) << text;
+    return p;
+}
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(compound_partitions_are_valid_and_tampering_is_rejected) {
+    // Every mutation of three compound certificates is rejected, or the checker accepts it and the
+    // engine, re-run on the changed file's scene, finds exactly the file's pair polygons and
+    // growth set (so the accepted file is still true).
+    mutate_and_report(compound_certificate(data("compound_band.json"), "band"), "compound band", false, false, true);
+    mutate_and_report(compound_certificate(data("compound_u_peg.json"), "u_peg"), "compound U and peg", false, false, true);
+    const OJ mixed = compound_certificate(mixed_compound(), "mixed");
+    bool block = false, apart = false;
+    for (const OJ& e : mixed["pairs"]) {
+        block = block || e["P1_parts"][0] != e["P1_parts"][1] || e["P2_parts"][0] != e["P2_parts"][1];
+        apart = apart || (e["vertices"].empty() && e["P1_parts"][0] == e["P1_parts"][1] && e["P2_parts"][0] == e["P2_parts"][1]);
+    }
+    BOOST_TEST(block);  // pruned pairs merged into a block
+    mutate_and_report(mixed, "compound mixed", false, false, true);
+}
+
+BOOST_AUTO_TEST_CASE(compound_forgeries_are_rejected) {
+    // The U and peg (test_compound derives it by hand): pairs[0] is the bottom (cut by +z to
+    // rho1 + 3 rho2 >= 6), pairs[1] and [2] the walls (cut by +x, -x to rho2 >= 2 rho1).
+    const OJ u = compound_certificate(data("compound_u_peg.json"), "u_peg_forged");
+    BOOST_TEST(check_json(u) == 0);
+    {  // the bottom's fence dropped and its polygon claimed to be the whole rectangle: no witness at (1/2, 1/2)
+        OJ f = u;
+        f["pairs"][0]["normals"] = OJ::array();
+        f["pairs"][0]["vertices"] = OJ::parse(R"([["1/2", "1/2"], ["2", "1/2"], ["2", "3"], ["1/2", "3"]])");
+        f["pairs"][0]["vertices_double"] = OJ::parse("[[0.5, 0.5], [2.0, 0.5], [2.0, 3.0], [0.5, 3.0]]");
+        OJ w = f["pairs"][0]["witnesses"];
+        f["pairs"][0]["witnesses"] = OJ::array({w[0], w[0], w[1], w[2]});
+        BOOST_TEST(check_json(f) == 1);
+    }
+    {  // a wall claimed apart: its polygon left out (the fence cuts the rectangle to a triangle)
+        OJ f = u;
+        f["pairs"][1]["vertices"] = OJ::array();
+        f["pairs"][1]["vertices_double"] = OJ::array();
+        f["pairs"][1]["witnesses"] = OJ::array();
+        BOOST_TEST(check_json(f) == 1);
+    }
+    {  // both walls as one block: the +x support over both walls is 3 rho1, and the block meets
+        OJ f = u;
+        f["pairs"][1]["P1_parts"] = OJ::parse("[1, 2]");
+        f["pairs"].erase(2);
+        BOOST_TEST(check_json(f) == 1);
+        f["pairs"][1]["vertices"] = OJ::array();
+        f["pairs"][1]["vertices_double"] = OJ::array();
+        f["pairs"][1]["witnesses"] = OJ::array();
+        BOOST_TEST(check_json(f) == 1);
+    }
+    {  // a pair left out, or covered twice
+        OJ f = u;
+        f["pairs"].erase(2);
+        BOOST_TEST(check_json(f) == 1);
+        OJ g = u;
+        g["pairs"].push_back(u["pairs"][2]);
+        BOOST_TEST(check_json(g) == 1);
+    }
+    {  // a witness of the wall indexed into the bottom's vertices (index 7 of the bottom is (3, 1, 1))
+        OJ f = u;
+        f["pairs"][1]["witnesses"][0]["P1"] = OJ::parse(R"([[8, "1"]])");
+        BOOST_TEST(check_json(f) == 1);
+    }
+    {  // the growth set moved or its first contact changed
+        OJ f = u;
+        f["growth_set"][0]["first_contact"]["P1_part"] = 1;
+        BOOST_TEST(check_json(f) == 1);
+        OJ g = u;
+        g["growth_set"] = OJ::array();
+        BOOST_TEST(check_json(g) == 1);
+    }
+    {  // the peg's seed moved: every recomputed line moves, and the listed polygons no longer match
+        OJ f = u;
+        f["scene"]["P2"]["seed"] = OJ::parse(R"(["0", "0", "4"])");
+        BOOST_TEST(check_json(f) == 1);
+    }
+}
+
+BOOST_AUTO_TEST_CASE(compound_partitions_beyond_the_part_limit_are_unreadable) {
+    // 10,001 parts: refused before the pair bitmap (10^8 bits at the limit) is made.
+    std::string parts;
+    for (int k = 0; k <= 10000; ++k) parts += std::string(k ? "," : "") + R"({"vertices": [["0", "0", "0"], ["1", "0", "0"], ["0", "1", "0"], ["0", "0", "1"]]})";
+    const std::string text = R"({"format": "scalecert-2", "kind": "compound_partition", "pairs": [], "growth_set": [], "scene": {"P1": {"parts": [)" +
+                             parts + R"(], "seed": ["0", "0", "0"]}, "P2": {"parts": [{"vertices": [["1", "0", "0"], ["2", "0", "0"], ["1", "1", "0"], ["1", "0", "1"]]}], "seed": ["1", "0", "0"]}, "I1": ["1", "2"], "I2": ["1", "2"]}})";
+    std::string msg;
+    BOOST_TEST(scalecert_check::check_text(text, msg) == 2);
+    BOOST_TEST(msg.find("more than 10000 parts") != std::string::npos, msg);
 }

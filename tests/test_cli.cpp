@@ -825,4 +825,20 @@ BOOST_AUTO_TEST_CASE(region_of_compounds) {
     expect_error("no parts", "region " + none.string(), "P1.parts: expected a nonempty list of parts");
     fs::path three = write("three_points.json", R"({"P1": {"parts": [{"vertices": [[0,0,0],[1,0,0],[0,1,0]]}])" + tail);
     expect_error("three points", "region " + three.string(), "P1.parts[0]: fewer than 4 vertices");
+    // --certificate: the certified partition, accepted by the checker, the same bytes twice; with
+    // bad input, or under the --out name, nothing is written.
+    const fs::path cert = workdir() / "band.cert.json";
+    fs::remove(cert);
+    BOOST_TEST(run("region " + band + " --certificate " + cert.string()).out == r.out);
+    const std::string first = slurp(cert);
+    BOOST_TEST(first.find("\"kind\": \"compound_partition\"") != std::string::npos);
+    BOOST_TEST(std::system((std::string(SCALECERT_CHECK_BIN) + " " + cert.string() + " >/dev/null").c_str()) == 0);
+    BOOST_TEST(run("region " + band + " --certificate " + cert.string()).status == 0);
+    BOOST_TEST(slurp(cert) == first);
+    const fs::path nowhere = workdir() / "never.cert.json";
+    fs::remove(nowhere);
+    expect_error("flat part, certificate", "region " + flat.string() + " --certificate " + nowhere.string(), "P1.parts[0]");
+    BOOST_TEST(!fs::exists(nowhere));
+    expect_error("certificate over the output", "region " + band + " --certificate " + (workdir() / "out.json").string(), "two outputs name the same file");
+    expect_error("empty certificate name", "region " + band + " --certificate ''", "--certificate");
 }

@@ -5,6 +5,7 @@
 #define BOOST_TEST_MODULE compound
 #include <boost/test/unit_test.hpp>
 
+#include "certify/region_certificate.hpp"
 #include "compound/region.hpp"
 #include "support.hpp"
 
@@ -205,4 +206,170 @@ BOOST_AUTO_TEST_CASE(compound_verdicts_equal_the_brute_force_over_all_pairs) {
     }
     BOOST_TEST(meeting > 20);
     std::cout << "compound verdicts: " << checked << " pairs (" << meeting << " meeting), " << pruned << " part pairs pruned\n";
+}
+
+namespace {
+// A compound scene from parts given as boxes [x0,x1] x [y0,y1] x [z0,z1] (in halves: x2 = 2x).
+std::vector<Vec3q> box_points(const std::array<int, 6>& h) {
+    std::vector<Vec3q> v;
+    for (int x : {h[0], h[3]})
+        for (int y : {h[1], h[4]})
+            for (int z : {h[2], h[5]}) v.push_back({Q(x, 2), Q(y, 2), Q(z, 2)});
+    return v;
+}
+ExactScene compound_scene(const std::vector<std::array<int, 6>> parts[2], const Vec3q seeds[2], const Q lo[2], const Q hi[2]) {
+    ExactScene sc;
+    for (int i = 0; i < 2; ++i) {
+        for (const auto& h : parts[i]) {
+            sc.P[i].parts.push_back(box_points(h));
+            sc.P[i].points.insert(sc.P[i].points.end(), sc.P[i].parts.back().begin(), sc.P[i].parts.back().end());
+        }
+        sc.P[i].seed = seeds[i];
+        sc.P[i].seed_given = true;
+        sc.lo[i] = lo[i];
+        sc.hi[i] = hi[i];
+    }
+    return sc;
+}
+Q qs(const nlohmann::ordered_json& j) { return Q(j.get<std::string>()); }
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(a_u_shape_and_a_peg) {
+    // Object 1, a U about the seed (0, 0, 1/2): the bottom [-3,3] x [-1,1] x [0,1] and the walls
+    // [-3,-2] and [2,3] x [-1,1] x [1,4]. Object 2, the peg [-1,1] x [-1/2,1/2] x [2,5] about its
+    // centre (0, 0, 7/2), in the slot. By hand, every part and the peg an axis box (so the axes are
+    // the only facet normals), each interval about its seed's coordinate scaled by ρ:
+    //   bottom: z up to 1/2 + ρ1/2, peg z from 7/2 − 3ρ2/2: they meet iff ρ1 + 3ρ2 >= 6 (x and y
+    //     always overlap, both holding 0);
+    //   left wall: x in [−3ρ1, −2ρ1], peg x from −ρ2: meet iff ρ2 >= 2ρ1 (its z-range
+    //     [1/2 + ρ1/2, 1/2 + 7ρ1/2] reaches the peg's from 7ρ1 + 3ρ2 >= 6, which ρ2 >= 2ρ1 implies
+    //     for ρ1 >= 6/13); the right wall the same by symmetry.
+    // In [1/2, 2] x [1/2, 3]: the bottom's polygon (2, 4/3), (2, 3), (1/2, 3), (1/2, 11/6); each
+    // wall's (1/2, 1), (3/2, 3), (1/2, 3). Their union is not convex: from (1/2, 1) up the wall's
+    // line to where it crosses the bottom's (ρ1 + 6ρ1 = 6: (6/7, 12/7)), then the bottom's line.
+    // On ρ1 = ρ2 only the bottom meets, from 4ρ = 6: the growth set is [3/2, 2].
+    const std::vector<std::array<int, 6>> parts[2] = {{{-6, -2, 0, 6, 2, 2}, {-6, -2, 2, -4, 2, 8}, {4, -2, 2, 6, 2, 8}},
+                                                      {{-2, -1, 4, 2, 1, 10}}};
+    const Vec3q seeds[2] = {{Q(0), Q(0), Q(1, 2)}, {Q(0), Q(0), Q(7, 2)}};
+    const Q lo[2] = {Q(1, 2), Q(1, 2)}, hi[2] = {Q(2), Q(3)};
+    const ExactScene sc = compound_scene(parts, seeds, lo, hi);
+    const CompoundRegion r = compound_region(sc, "u_peg");
+    BOOST_TEST_REQUIRE(r.pairs.size() == 3u);
+    BOOST_TEST(r.pruned == 0);
+    const std::vector<Point2q> bottom = {{Q(2), Q(4, 3)}, {Q(2), Q(3)}, {Q(1, 2), Q(3)}, {Q(1, 2), Q(11, 6)}};
+    const std::vector<Point2q> wall = {{Q(1, 2), Q(1)}, {Q(3, 2), Q(3)}, {Q(1, 2), Q(3)}};
+    BOOST_TEST((r.pairs[0].polygon == bottom));
+    BOOST_TEST((r.pairs[1].polygon == wall));
+    BOOST_TEST((r.pairs[2].polygon == wall));
+    BOOST_TEST_REQUIRE(r.region.size() == 1u);
+    BOOST_TEST((r.region[0].outer == std::vector<Point2q>{{Q(1, 2), Q(1)}, {Q(6, 7), Q(12, 7)}, {Q(2), Q(4, 3)}, {Q(2), Q(3)}, {Q(1, 2), Q(3)}}));
+    BOOST_TEST_REQUIRE(r.growth.size() == 1u);
+    BOOST_TEST(r.growth[0].from == Q(3, 2));
+    BOOST_TEST(r.growth[0].to == Q(2));
+    BOOST_TEST(r.growth[0].part1 == 0);
+    // The certificate's fences, by hand: the bottom is cut by +z alone, the walls by +x and −x.
+    const nlohmann::ordered_json cert = compound_partition_json(sc, r);
+    BOOST_TEST_REQUIRE(cert["pairs"].size() == 3u);
+    BOOST_TEST(cert["pairs"][0]["normals"] == nlohmann::ordered_json::parse(R"([["0", "0", "1"]])"));
+    BOOST_TEST(cert["pairs"][1]["normals"] == nlohmann::ordered_json::parse(R"([["1", "0", "0"]])"));
+    BOOST_TEST(cert["pairs"][2]["normals"] == nlohmann::ordered_json::parse(R"([["-1", "0", "0"]])"));
+    BOOST_TEST(cert["pairs"][0]["witnesses"].size() == 4u);
+    BOOST_TEST(compound_verdict(r, Q(1, 2), Q(1)).verdict == std::string("touching"));       // on the wall's line
+    BOOST_TEST(compound_verdict(r, Q(6, 7), Q(12, 7) - Q(1, 100)).verdict == std::string("separated"));  // below the reflex corner
+    BOOST_TEST(compound_verdict(r, Q(1), Q(3)).verdict == std::string("overlapping"));
+}
+
+BOOST_AUTO_TEST_CASE(far_apart_parts_are_pruned_in_blocks) {
+    // Object 1: a row of 6 unit cubes [3k, 3k + 1] x [0,1] x [0,1] (seed (8, 1/2, 1/2)); object 2:
+    // 5 slabs [0,16] x [20 + 3k, 21 + 3k] x [0,1] (seed (8, 26, 1/2)). With I1 = I2 = [1/2, 1] the
+    // swept boxes overlap along x (all within [0, 16]) and z (both hold [1/4, 3/4]), but object 1
+    // stays in y <= 1 and object 2 in y >= 26 + (20 − 26) = 20: every pair is apart along y, part 1
+    // below, so all 30 pairs are pruned and one block, normal +y, covers them.
+    std::vector<std::array<int, 6>> parts[2];
+    for (int k = 0; k < 6; ++k) parts[0].push_back({6 * k, 0, 0, 6 * k + 2, 2, 2});
+    for (int k = 0; k < 5; ++k) parts[1].push_back({0, 40 + 6 * k, 0, 32, 42 + 6 * k, 2});
+    const Vec3q seeds[2] = {{Q(8), Q(1, 2), Q(1, 2)}, {Q(8), Q(26), Q(1, 2)}};
+    const Q lo[2] = {Q(1, 2), Q(1, 2)}, hi[2] = {Q(1), Q(1)};
+    const CompoundRegion r = compound_region(compound_scene(parts, seeds, lo, hi), "rows");
+    BOOST_TEST(r.pruned == 30);
+    BOOST_TEST(r.built == 0);
+    const nlohmann::ordered_json cert = compound_partition_json(compound_scene(parts, seeds, lo, hi), r);
+    BOOST_TEST_REQUIRE(cert["pairs"].size() == 1u);
+    BOOST_TEST(cert["pairs"][0]["P1_parts"] == nlohmann::ordered_json::parse("[0, 5]"));
+    BOOST_TEST(cert["pairs"][0]["P2_parts"] == nlohmann::ordered_json::parse("[0, 4]"));
+    BOOST_TEST(cert["pairs"][0]["normals"] == nlohmann::ordered_json::parse(R"([["0", "1", "0"]])"));
+    BOOST_TEST(cert["growth_set"].empty());
+}
+
+BOOST_AUTO_TEST_CASE(certificate_polygons_equal_the_brute_force) {
+    // Random compounds (three or four parts each, seeds anywhere): a point of I1 x I2 lies in some
+    // pair polygon of the certificate iff some part pair meets there (separating-axis brute
+    // force), at random points, at every polygon corner and 2^-16 off it; each polygon's witness
+    // is at its corner; entries cover every pair once; a block of several pairs lists no polygon.
+    std::mt19937 g(4242);
+    std::uniform_int_distribution<int> c(-3, 3), off(-6, 6), np(4, 8), nparts(3, 4);
+    long checked = 0, meeting = 0, blocks = 0;
+    for (int t = 0; t < 10; ++t) {
+        ExactScene sc;
+        std::vector<Polyhedron> parts[2];
+        for (int i = 0; i < 2; ++i) {
+            const int want = nparts(g);
+            while (static_cast<int>(sc.P[i].parts.size()) < want) {
+                std::vector<Vec3q> v;
+                const int ox = off(g) * 2 + (i ? 9 : 0), oy = off(g);
+                for (int k = np(g); k > 0; --k) v.push_back({Q(c(g) + ox), Q(c(g) + oy), Q(c(g))});
+                try {
+                    parts[i].push_back(build_polyhedron(v, "part"));
+                } catch (const InputError&) {
+                    continue;
+                }
+                sc.P[i].parts.push_back(v);
+                sc.P[i].points.insert(sc.P[i].points.end(), v.begin(), v.end());
+            }
+            sc.P[i].seed = {Q(off(g) + (i ? 9 : 0)), Q(off(g)), Q(c(g))};
+            sc.P[i].seed_given = true;
+            sc.lo[i] = Q(1, 4);
+            sc.hi[i] = Q(5, 2);
+        }
+        const CompoundRegion r = compound_region(sc, "scene");
+        const nlohmann::ordered_json cert = compound_partition_json(sc, r);
+        std::vector<std::vector<Point2q>> polys;
+        std::set<std::pair<size_t, size_t>> covered;
+        for (const auto& e : cert["pairs"]) {
+            const size_t a0 = e["P1_parts"][0], a1 = e["P1_parts"][1], b0 = e["P2_parts"][0], b1 = e["P2_parts"][1];
+            for (size_t a = a0; a <= a1; ++a)
+                for (size_t b = b0; b <= b1; ++b) BOOST_TEST(covered.insert({a, b}).second);
+            if (a0 != a1 || b0 != b1) {
+                ++blocks;
+                BOOST_TEST(e["vertices"].empty());
+            }
+            std::vector<Point2q> p;
+            for (size_t k = 0; k < e["vertices"].size(); ++k) {
+                p.push_back({qs(e["vertices"][k][0]), qs(e["vertices"][k][1])});
+                BOOST_TEST(qs(e["witnesses"][k]["rho1"]) == p.back()[0]);
+                BOOST_TEST(qs(e["witnesses"][k]["rho2"]) == p.back()[1]);
+            }
+            polys.push_back(p);
+        }
+        BOOST_TEST(covered.size() == parts[0].size() * parts[1].size());
+        std::vector<Point2q> probes;
+        std::uniform_int_distribution<int> q(10, 100);
+        for (int k = 0; k < 50; ++k) probes.push_back({Q(q(g), 40), Q(q(g), 40)});
+        for (const auto& p : polys)
+            for (const Point2q& x : p)
+                for (const Q& e : {Q(0), Q(1, 1 << 16), Q(-1, 1 << 16)}) probes.push_back({x[0] + e, x[1] - e});
+        for (const Point2q& x : probes) {
+            if (x[0] < sc.lo[0] || x[0] > sc.hi[0] || x[1] < sc.lo[1] || x[1] > sc.hi[1]) continue;
+            bool want = false, got = false;
+            for (const Polyhedron& A : parts[0])
+                for (const Polyhedron& B : parts[1]) want = want || meet_brute(A, B, sc.P[0].seed, sc.P[1].seed, x[0], x[1]);
+            for (const auto& p : polys) got = got || inside_convex(p, x);
+            BOOST_TEST(got == want, "scene " << t << " at (" << x[0] << ", " << x[1] << ")");
+            ++checked;
+            meeting += want;
+        }
+    }
+    BOOST_TEST(meeting > 20);
+    std::cout << "compound certificates: " << checked << " points against the brute force (" << meeting << " meeting), " << blocks
+              << " blocks of pruned pairs\n";
 }

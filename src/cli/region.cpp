@@ -3,6 +3,9 @@
 #include "common.hpp"
 #include "compound/region.hpp"
 #include "certify/certificate.hpp"
+#include "certify/region_certificate.hpp"
+#include "file_name.hpp"
+#include "io/files.hpp"
 
 namespace scalecert::cli {
 
@@ -19,14 +22,21 @@ Json ring_json(const std::vector<Point2q>& p) {
 Command add_region(CLI::App& app) {
     struct Args {
         SceneArgs scene;
-        std::string out, at;
+        std::string out, at, certificate;
     };
     auto a = std::make_shared<Args>();
     CLI::App* sub = app.add_subcommand("region", "where objects made of convex parts overlap in I1 x I2: each part pair's exact polygon and their union (JSON)");
     a->scene.add(sub);
     add_out(sub, a->out);
     sub->add_option("--at", a->at, "also the exact verdict at RHO1,RHO2 (in I1 x I2), with the pair that decides it");
-    example(sub, "Examples:\n  scalecert region tests/data/compound_band.json\n  scalecert region tests/data/compound_band.json --at 7/6,2");
+    sub->add_option("--certificate", a->certificate,
+                    "also write the certified partition (kind compound_partition): each part pair's overlap polygon with "
+                    "witnesses at its corners and the normals that separate the pair outside it, for scalecert-check "
+                    "(certificates/FORMAT.md, \"A compound partition\")")
+        ->type_name("FILE")
+        ->check(file_name());
+    example(sub, "Examples:\n  scalecert region tests/data/compound_band.json\n  scalecert region tests/data/compound_band.json --at 7/6,2\n"
+                 "  scalecert region tests/data/compound_band.json --certificate band.cert.json && scalecert-check band.cert.json");
     return {sub, [a] {
                 a->scene.opt.allow_parts = true;
                 const ExactScene sc = a->scene.load();
@@ -60,7 +70,17 @@ Command add_region(CLI::App& app) {
                     if (v.part1 >= 0) at["pair"] = Json{{"P1_part", v.part1}, {"P2_part", v.part2}};
                     j["at"] = at;
                 }
-                emit(dump(j), a->out);
+                if (a->certificate.empty()) {
+                    emit(dump(j), a->out);
+                } else {
+                    const std::string cert = dump(compound_partition_json(sc, r));
+                    if (a->out.empty()) {
+                        write_file_atomically(a->certificate, cert);
+                        emit(dump(j), a->out);
+                    } else {
+                        write_files_atomically({{a->certificate, cert}, {a->out, dump(j)}});
+                    }
+                }
                 return 0;
             }};
 }

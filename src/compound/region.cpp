@@ -48,8 +48,23 @@ PairRegion pair_region(const Polyhedron& A, const Polyhedron& B, const Vec3q& s1
         h.b = B.support(neg(n)) + dot(nq, s2);
         h.c = dot(nq, d);
         h.normal = n;
-        if (!r.polygon.empty()) r.polygon = cut_polygon(r.polygon, h.a, h.b, h.c);
+        if (!r.polygon.empty()) {
+            std::vector<Point2q> cut = cut_polygon(r.polygon, h.a, h.b, h.c);
+            if (cut != r.polygon) {
+                r.fence.push_back(r.constraints.size());
+                r.polygon = std::move(cut);
+            }
+        }
         r.constraints.push_back(std::move(h));
+    }
+    // Fence cuts that a later one made redundant: dropped while the rest still give the polygon
+    // (from the last, so the survivors are the earliest that suffice; each test a few cuts).
+    const std::vector<Point2q> rect = normalize_polygon({{lo[0], lo[1]}, {hi[0], lo[1]}, {hi[0], hi[1]}, {lo[0], hi[1]}});
+    for (size_t k = r.fence.size(); k-- > 0 && r.fence.size() > 1;) {
+        std::vector<Point2q> p = rect;
+        for (size_t j = 0; j < r.fence.size() && !p.empty(); ++j)
+            if (j != k) p = cut_polygon(p, r.constraints[r.fence[j]].a, r.constraints[r.fence[j]].b, r.constraints[r.fence[j]].c);
+        if (p == r.polygon) r.fence.erase(r.fence.begin() + static_cast<long>(k));
     }
     return r;
 }
@@ -97,7 +112,8 @@ std::array<std::array<Q, 2>, 3> swept_box(const Polyhedron& P, const Vec3q& s, c
 }  // namespace
 
 CompoundRegion compound_region(const ExactScene& sc, const std::string& name) {
-    std::vector<Polyhedron> parts[2];
+    CompoundRegion r;
+    std::vector<Polyhedron>(&parts)[2] = r.parts;
     std::vector<std::array<std::array<Q, 2>, 3>> boxes[2];
     const char* pname[2] = {"P1", "P2"};
     for (int i = 0; i < 2; ++i) {
@@ -110,14 +126,15 @@ CompoundRegion compound_region(const ExactScene& sc, const std::string& name) {
             boxes[i].push_back(swept_box(parts[i].back(), in.seed, sc.lo[i], sc.hi[i]));
         }
     }
-    CompoundRegion r;
     std::vector<std::vector<Point2q>> polys;
     const Vec3q &s1 = sc.P[0].seed, &s2 = sc.P[1].seed;
     for (size_t a = 0; a < parts[0].size(); ++a)
         for (size_t b = 0; b < parts[1].size(); ++b) {
-            CompoundRegion::Pair p{static_cast<int>(a), static_cast<int>(b), false, {}};
-            for (int c = 0; c < 3; ++c)
-                if (boxes[0][a][c][1] < boxes[1][b][c][0] || boxes[1][b][c][1] < boxes[0][a][c][0]) p.pruned = true;
+            CompoundRegion::Pair p{static_cast<int>(a), static_cast<int>(b), false, {}, {}, {}};
+            for (int c = 0; c < 3 && !p.pruned; ++c) {
+                const int side = boxes[0][a][c][1] < boxes[1][b][c][0] ? 1 : boxes[1][b][c][1] < boxes[0][a][c][0] ? -1 : 0;
+                if (side) p.pruned = true, p.prune_axis = c, p.prune_side = side;
+            }
             if (p.pruned) {
                 ++r.pruned;
             } else {
@@ -125,6 +142,7 @@ CompoundRegion compound_region(const ExactScene& sc, const std::string& name) {
                 PairRegion pr = pair_region(parts[0][a], parts[1][b], s1, s2, sc.lo, sc.hi);
                 p.polygon = std::move(pr.polygon);
                 p.constraints = std::move(pr.constraints);
+                p.fence = std::move(pr.fence);
                 polys.push_back(p.polygon);
                 // Where it meets ρ1 = ρ2: the polygon cut to the diagonal (a point or a segment).
                 const std::vector<Point2q> diag = cut_polygon(cut_polygon(p.polygon, Q(1), Q(-1), Q(0)), Q(-1), Q(1), Q(0));

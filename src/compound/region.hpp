@@ -34,9 +34,15 @@ struct HalfPlane {
 // One part pair's overlap set in the rectangle I1 × I2 (lo, hi: ρ1's and ρ2's ranges): a convex
 // polygon, counter-clockwise from its lowest (then leftmost) corner, without repeated or collinear
 // corners; empty, a point or a segment where the set is. And every facet normal's half-plane.
+// `fence`: the constraints whose cuts made the polygon (indices into `constraints`, ascending).
+// The rectangle cut by these alone is the same polygon: a cut that left the polygon unchanged
+// leaves it unchanged when skipped, and none of them can be dropped (each one's cut, made last,
+// changes the polygon). So every point of the rectangle outside the polygon is separated by the
+// normal of a fence constraint it violates: the pair's certificate (region_certificate.hpp).
 struct PairRegion {
     std::vector<Point2q> polygon;
     std::vector<HalfPlane> constraints;
+    std::vector<size_t> fence;
 };
 PairRegion pair_region(const Polyhedron& A, const Polyhedron& B, const Vec3q& s1, const Vec3q& s2, const Q lo[2], const Q hi[2]);
 
@@ -63,7 +69,12 @@ struct CompoundRegion {
         bool pruned;
         std::vector<Point2q> polygon;  // empty when pruned or apart
         std::vector<HalfPlane> constraints;  // built pairs: every facet normal's half-plane
+        std::vector<size_t> fence;           // built pairs: PairRegion::fence
+        int prune_axis = -1, prune_side = 0;  // pruned pairs: the axis c on which the swept boxes
+                                              // are apart, +1 when part 1's lies below (normal e_c),
+                                              // −1 when above (normal −e_c)
     };
+    std::vector<Polyhedron> parts[2];  // each object's parts (a plain object: itself)
     std::vector<Pair> pairs;  // part1-major
     std::vector<RegionPiece> region;
     struct Interval {

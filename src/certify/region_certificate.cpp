@@ -1,0 +1,159 @@
+// The compound partition certificate (region_certificate.hpp).
+#include "certify/region_certificate.hpp"
+
+#include "geometry/witness.hpp"
+
+#include <map>
+#include <stdexcept>
+#include <tuple>
+
+namespace scalecert::internal {
+
+namespace {
+void put(Json& o, const std::string& key, const Q& q) { put_exact(o, key, q); }
+
+Json points_json(const std::vector<Vec3q>& pts) {
+    Json a = Json::array();
+    for (const Vec3q& v : pts) a.push_back(Json::array({to_exact_string(v[0]), to_exact_string(v[1]), to_exact_string(v[2])}));
+    return a;
+}
+
+// The scene with every object as a list of parts (a plain object is one part).
+Json compound_scene_json(const ExactScene& sc) {
+    Json s;
+    const char* names[2] = {"P1", "P2"};
+    for (int i = 0; i < 2; ++i) {
+        const PolyInput& in = sc.P[i];
+        Json parts = Json::array();
+        if (in.parts.empty()) parts.push_back(Json{{"vertices", points_json(in.points)}});
+        for (const std::vector<Vec3q>& p : in.parts) parts.push_back(Json{{"vertices", points_json(p)}});
+        s[names[i]] = Json{{"parts", parts}, {"seed", Json::array({to_exact_string(in.seed[0]), to_exact_string(in.seed[1]), to_exact_string(in.seed[2])})}};
+    }
+    for (int i = 0; i < 2; ++i) s[i == 0 ? "I1" : "I2"] = Json::array({to_exact_string(sc.lo[i]), to_exact_string(sc.hi[i])});
+    return s;
+}
+
+Vec3q scaled(const Vec3q& v, const Vec3q& s, const Q& rho) {
+    return {s[0] + rho * (v[0] - s[0]), s[1] + rho * (v[1] - s[1]), s[2] + rho * (v[2] - s[2])};
+}
+
+// A common point of A(ρ1) and B(ρ2) (exact LP over the parts' vertices), weights indexed into
+// each part's own point list.
+Witness pair_witness(const Polyhedron& A, const Polyhedron& B, const Vec3q& s1, const Vec3q& s2, const Q& r1, const Q& r2) {
+    std::vector<Vec3q> a, b;
+    for (int v : A.vertices) a.push_back(scaled(A.points[static_cast<size_t>(v)], s1, r1));
+    for (int v : B.vertices) b.push_back(scaled(B.points[static_cast<size_t>(v)], s2, r2));
+    const auto cp = common_point(a, b);
+    if (!cp) throw std::logic_error("no common point at a corner of a part pair's overlap polygon");
+    Witness w;
+    w.rho1 = r1;
+    w.rho2 = r2;
+    w.point = {Q(0), Q(0), Q(0)};
+    for (size_t k = 0; k < a.size(); ++k)
+        if (sgn(cp->lambda[k])) {
+            w.w1.push_back({A.vertices[k], cp->lambda[k]});
+            for (int c = 0; c < 3; ++c) w.point[c] += cp->lambda[k] * a[k][c];
+        }
+    for (size_t k = 0; k < b.size(); ++k)
+        if (sgn(cp->mu[k])) w.w2.push_back({B.vertices[k], cp->mu[k]});
+    std::sort(w.w1.begin(), w.w1.end());
+    std::sort(w.w2.begin(), w.w2.end());
+    return w;
+}
+
+Json polygon_json(Json& o, const std::vector<Point2q>& poly) {
+    Json v = Json::array(), d = Json::array();
+    for (const Point2q& p : poly) {
+        v.push_back(Json::array({to_exact_string(p[0]), to_exact_string(p[1])}));
+        d.push_back(Json::array({to_double_rn(p[0]), to_double_rn(p[1])}));
+    }
+    o["vertices"] = v;
+    o["vertices_double"] = d;
+    return o;
+}
+
+Json range_json(int from, int to) { return Json::array({from, to}); }
+
+// Blocks of pruned pairs apart along the same axis on the same side: runs along P2 in each row,
+// a run extended down the rows while the next row has the same run. Each block is one entry with
+// the normal ±e_c: every pair in it has part 1's swept box below (or above) part 2's along c, so
+// the maximum over the block's P1 parts lies below the minimum over its P2 parts.
+struct Block { int a0, a1, b0, b1, axis, side; };
+std::vector<Block> pruned_blocks(const CompoundRegion& r) {
+    const int m = static_cast<int>(r.parts[0].size()), n = static_cast<int>(r.parts[1].size());
+    std::vector<Block> done;
+    std::map<std::tuple<int, int, int, int>, size_t> open;  // (b0, b1, axis, side) -> block reaching the previous row
+    for (int a = 0; a < m; ++a) {
+        std::map<std::tuple<int, int, int, int>, size_t> next;
+        for (int b = 0; b < n;) {
+            const CompoundRegion::Pair& p = r.pairs[static_cast<size_t>(a) * static_cast<size_t>(n) + static_cast<size_t>(b)];
+            if (!p.pruned) { ++b; continue; }
+            int e = b + 1;
+            while (e < n) {
+                const CompoundRegion::Pair& q = r.pairs[static_cast<size_t>(a) * static_cast<size_t>(n) + static_cast<size_t>(e)];
+                if (!q.pruned || q.prune_axis != p.prune_axis || q.prune_side != p.prune_side) break;
+                ++e;
+            }
+            const auto key = std::make_tuple(b, e - 1, p.prune_axis, p.prune_side);
+            const auto it = open.find(key);
+            if (it != open.end()) {
+                done[it->second].a1 = a;
+                next[key] = it->second;
+            } else {
+                done.push_back({a, a, b, e - 1, p.prune_axis, p.prune_side});
+                next[key] = done.size() - 1;
+            }
+            b = e;
+        }
+        open = std::move(next);
+    }
+    return done;
+}
+}  // namespace
+
+Json compound_partition_json(const ExactScene& sc, const CompoundRegion& r) {
+    const Vec3q &s1 = sc.P[0].seed, &s2 = sc.P[1].seed;
+    // Entries in (first P1 part, first P2 part) order: built pairs one each, pruned blocks.
+    std::vector<std::pair<std::pair<int, int>, Json>> entries;
+    for (const Block& b : pruned_blocks(r)) {
+        Vec3z nrm{Z(0), Z(0), Z(0)};
+        nrm[static_cast<size_t>(b.axis)] = b.side;
+        Json e{{"P1_parts", range_json(b.a0, b.a1)}, {"P2_parts", range_json(b.b0, b.b1)}, {"normals", Json::array({normal_json(nrm)})}};
+        polygon_json(e, {});
+        e["witnesses"] = Json::array();
+        entries.push_back({{b.a0, b.b0}, std::move(e)});
+    }
+    for (const CompoundRegion::Pair& p : r.pairs) {
+        if (p.pruned) continue;
+        Json normals = Json::array();
+        for (size_t k : p.fence) normals.push_back(normal_json(p.constraints[k].normal));
+        Json e{{"P1_parts", range_json(p.part1, p.part1)}, {"P2_parts", range_json(p.part2, p.part2)}, {"normals", normals}};
+        polygon_json(e, p.polygon);
+        Json wit = Json::array();
+        for (const Point2q& v : p.polygon)
+            wit.push_back(witness_object(pair_witness(r.parts[0][static_cast<size_t>(p.part1)], r.parts[1][static_cast<size_t>(p.part2)], s1, s2, v[0], v[1])));
+        e["witnesses"] = wit;
+        entries.push_back({{p.part1, p.part2}, std::move(e)});
+    }
+    std::sort(entries.begin(), entries.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+    Json j;
+    j["format"] = "scalecert-2";
+    j["kind"] = "compound_partition";
+    Json pairs = Json::array();
+    for (auto& e : entries) pairs.push_back(std::move(e.second));
+    j["pairs"] = pairs;
+    Json growth = Json::array();
+    for (const auto& iv : r.growth) {
+        Json g;
+        put(g, "from", iv.from);
+        put(g, "to", iv.to);
+        g["first_contact"] = Json{{"P1_part", iv.part1}, {"P2_part", iv.part2}};
+        growth.push_back(g);
+    }
+    j["growth_set"] = growth;
+    j["statistics"] = Json{{"pairs", r.pairs.size()}, {"pruned", r.pruned}, {"built", r.built}, {"entries", entries.size()}};
+    j["scene"] = compound_scene_json(sc);
+    return j;
+}
+
+}  // namespace scalecert::internal

@@ -1,0 +1,22 @@
+// Stage 7 for compounds (issue 22): the certified partition of I1 × I2 for two objects made of
+// convex parts (kind "compound_partition", certificates/FORMAT.md "A compound partition").
+//
+// The objects meet at (ρ1, ρ2) iff some part pair does, so the file certifies each pair's meeting
+// set M in the rectangle on its own, and the union needs no further proof: a point lies in the
+// overlap region iff it lies in some pair's M. A pair's entry lists a few facet normals (its
+// fence: PairRegion::fence) whose half-planes ρ1 hA(n) + ρ2 hB(n) >= n·d cut the rectangle to
+// exactly M: outside M one of them fails, and that normal separates the pair there. M's corners
+// carry witnesses (common points), so by convexity the pair meets on all of M. Pairs that meet
+// nowhere in the rectangle need no corners; those pruned by their swept boxes share one entry per
+// block of parts apart along the same axis (one normal for the block's union of vertices), so the
+// file grows with the pairs that can meet, not with all pairs.
+#pragma once
+#include "certify/certificate.hpp"
+#include "compound/region.hpp"
+
+namespace scalecert::internal {
+
+// The certificate of r, the region of scene sc (compound_region(sc, ...)).
+Json compound_partition_json(const ExactScene& sc, const CompoundRegion& r);
+
+}  // namespace scalecert::internal
