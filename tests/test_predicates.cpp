@@ -239,6 +239,31 @@ BOOST_AUTO_TEST_CASE(scan_support_filter_at_its_bound) {
     }
 }
 
+// 8. A scaling pair against a part pair's half-plane: at the bound, on either side of a line with
+// thirds (not doubles) for coefficients, exactly on it, and with inputs the filter must not read.
+BOOST_AUTO_TEST_CASE(half_plane_side_at_its_bound) {
+    using filter::half_plane_side_filter;
+    using filter::region_double;
+    // 1/3 x + 2/3 y >= 1 at (1 + e, 1): f = e/3, exact sign +1 for e > 0, −1 for e < 0.
+    const Q a(1, 3), b(2, 3), c(1);
+    for (int k : {10, 30, 40, 45, 48, 52, 60, 80}) {
+        for (int sign : {1, -1}) {
+            const Q x = Q(1) + Q(sign) / Q(Z(1) << k), y(1);
+            const int f = half_plane_side_filter(region_double(a), region_double(b), region_double(c), region_double(x), region_double(y));
+            const int exact = sgn(Q(a * x + b * y - c));
+            BOOST_TEST((f == 0 || f == exact), "k = " << k);
+            if (k <= 40) BOOST_TEST(f == exact, "k = " << k);  // 2^-40/3 is far above 1e-14: decided
+            if (k >= 48) BOOST_TEST(f == 0, "k = " << k);      // 2^-48/3 < 1e-14: left to the exact stage
+        }
+    }
+    BOOST_TEST(half_plane_side_filter(region_double(a), region_double(b), region_double(c), 1.0, 1.0) == 0);  // on the line
+    // A nonzero value below the normal range, or beyond the double range, is not a number here.
+    BOOST_TEST(std::isnan(region_double(Q(Q(1) / Q(Z(1) << 1060)))));
+    BOOST_TEST(std::isnan(region_double(Q(Z(1) << 1100))));
+    BOOST_TEST(region_double(Q(0)) == 0.0);
+    BOOST_TEST(half_plane_side_filter(std::nan(""), 1, 0, 1, 1) == 0);
+}
+
 // ---- The statistics ------------------------------------------------------------------------------
 
 BOOST_AUTO_TEST_CASE(stats_merge_per_predicate) {

@@ -44,7 +44,9 @@ Command add_region(CLI::App& app) {
                 Json j;
                 j["format"] = "scalecert-2";
                 j["kind"] = "region";
-                j["pairs"] = Json{{"total", r.pairs.size()}, {"pruned", r.pruned}, {"built", r.built}};
+                const auto& hp = r.predicates[filter::Predicate::HalfPlaneSide];
+                j["pairs"] = Json{{"total", r.pairs.size()}, {"pruned", r.pruned}, {"built", r.built},
+                                  {"corner_sides", Json{{"decided_by_filter", hp.filtered}, {"decided_exactly", hp.exact}}}};
                 Json pairs = Json::array();
                 for (const auto& p : r.pairs)
                     if (!p.polygon.empty()) pairs.push_back(Json{{"P1_part", p.part1}, {"P2_part", p.part2}, {"vertices", ring_json(p.polygon)}});

@@ -34,17 +34,17 @@ struct HalfPlane {
 // One part pair's overlap set in the rectangle I1 × I2 (lo, hi: ρ1's and ρ2's ranges): a convex
 // polygon, counter-clockwise from its lowest (then leftmost) corner, without repeated or collinear
 // corners; empty, a point or a segment where the set is. And every facet normal's half-plane.
-// `fence`: the constraints whose cuts made the polygon (indices into `constraints`, ascending).
-// The rectangle cut by these alone is the same polygon: a cut that left the polygon unchanged
-// leaves it unchanged when skipped, and none of them can be dropped (each one's cut, made last,
-// changes the polygon). So every point of the rectangle outside the polygon is separated by the
-// normal of a fence constraint it violates: the pair's certificate (region_certificate.hpp).
+// `fence`: constraints that cut the rectangle to exactly the polygon (indices into `constraints`,
+// ascending), none of them redundant given the others. So every point of the rectangle outside
+// the polygon is separated by the normal of a fence constraint it violates: the pair's
+// certificate (region_certificate.hpp).
 struct PairRegion {
     std::vector<Point2q> polygon;
     std::vector<HalfPlane> constraints;
     std::vector<size_t> fence;
 };
-PairRegion pair_region(const Polyhedron& A, const Polyhedron& B, const Vec3q& s1, const Vec3q& s2, const Q lo[2], const Q hi[2]);
+PairRegion pair_region(const Polyhedron& A, const Polyhedron& B, const Vec3q& s1, const Vec3q& s2, const Q lo[2], const Q hi[2],
+                       filter::PredicateStats* stats = nullptr);
 
 // The facet normals of A ⊕ (−B) (the Gauss-map overlay of contact_lines.hpp), primitive.
 std::vector<Vec3z> minkowski_facet_normals(const Polyhedron& A, const Polyhedron& B);
@@ -83,6 +83,7 @@ struct CompoundRegion {
     };
     std::vector<Interval> growth;  // in increasing ρ, disjoint
     long pruned = 0, built = 0;
+    filter::PredicateStats predicates;  // half_plane_side: the corners' sides, by stage
 };
 CompoundRegion compound_region(const ExactScene& sc, const std::string& name);
 

@@ -157,6 +157,16 @@ constexpr double kScanSupport = 0x1p-50;
 constexpr std::size_t kScanPruneEvery = 64;
 static_assert(kScanSupport > 1.9 * (kUnit + gamma(3)), "scan support bound");
 
+// 8. A scaling pair (x, y) against a part pair's half-plane a·x + b·y >= c (compound/region.cpp):
+//    a, b, c, x, y are exact rationals read by region_double (mpq's get_d truncates: within 2u
+//    relative), each 0 or a finite normal double, else not a number (never certified). Then each
+//    product is within (1 + 2u)²(1 + u) − 1 < 5.1u of its exact value, or, where it falls below
+//    2^-1022, within 2^-1022 absolutely; the two sums add γ2 of the magnitudes: in all under
+//    7.2u·(|ax| + |by| + |c|) + 3·2^-1022. The filter answers when |f| > kHalfPlaneRel·(computed
+//    magnitudes) + kQueryTiny: factor 10 over 8u (the computed magnitudes are within 5.1u of the
+//    true ones), and kQueryTiny ≫ 3·2^-1022.
+constexpr double kHalfPlaneRel = 1e-14;
+static_assert(kHalfPlaneRel > 10 * 8 * kUnit && kQueryTiny > 1e6 * 3 * 0x1p-1022, "half-plane filter bound");
 
 // ---- Statistics: one counter pair per predicate, per deciding object -------------------------
 
@@ -168,10 +178,11 @@ enum class Predicate : unsigned {
     LinesGap,          // 4, FastDirect
     QuickCertificate,  // 5 (exact: the model decided)
     ScanSupport,       // 7 (filtered: points ruled out; exact: candidates formed exactly)
+    HalfPlaneSide,     // 8, compound pair polygons
     Count
 };
 constexpr const char* kPredicateNames[] = {"support_cmp", "arc_side", "dominated_line", "curve_side",
-                                           "lines_gap", "quick_certificate", "scan_support"};
+                                           "lines_gap", "quick_certificate", "scan_support", "half_plane_side"};
 static_assert(sizeof(kPredicateNames) / sizeof(kPredicateNames[0]) == static_cast<unsigned>(Predicate::Count));
 
 struct PredicateCounts {
@@ -329,5 +340,24 @@ struct ScanSupportFilter {
     double floor(double best) const { return best - 2 * E; }
     bool box_excluded(double ub, double best) const { return ub < best - 4 * E; }
 };
+
+// 8. The sign of a·x + b·y − c from region_double values (bound 8), 0 when uncertain (or not a
+// number); the caller decides those exactly and counts both stages.
+inline int half_plane_side_filter(double a, double b, double c, double x, double y) {
+    const double t1 = a * x, t2 = b * y;
+    const double f = t1 + t2 - c;
+    const double err = kHalfPlaneRel * (std::fabs(t1) + std::fabs(t2) + std::fabs(c)) + kQueryTiny;
+    if (f > err) return 1;
+    if (f < -err) return -1;
+    return 0;
+}
+// A rational's double for filter 8: mpq's get_d when that is 0 for 0 or a finite normal double,
+// else not a number (so that the filter never answers).
+template <class Rational>
+double region_double(const Rational& q) {
+    const double d = q.get_d();
+    if (sgn(q) == 0) return 0.0;
+    return std::isfinite(d) && std::fabs(d) >= 0x1p-1022 ? d : std::nan("");
+}
 
 }  // namespace scalecert::internal::filter
