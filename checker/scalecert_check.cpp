@@ -1528,24 +1528,24 @@ bool judge_curve(const Rules& R, const J& cl, const Window& W, const std::string
 // rho1) lies within the tolerance in both coordinates, with the claimed contact. The window must
 // hold every rho1 as near to the claim as that one (or reach rho1 = 0, or rho2 <= 0, on its side):
 // then no nearer one exists. With no switch point at all, the window spans 0 to rho2 <= 0.
+// A switch-point claim is right when some exact switch point matches it: both coordinates within
+// the tolerance (|c − x| <= tol·x) and the contact, when claimed. Every ρ1 = x with |c1 − x| <= tol·x
+// lies in [c1/(1 + tol), c1/(1 − tol)] (beyond c1/(1 + tol) without end when tol >= 1), so the window
+// must hold that range strictly inside (or start at 0, or go on to where the curve reaches ρ2 <= 0,
+// past which there is no switch point): then every switch point that could match is listed.
 bool judge_switch_point(const Rules& R, const J& cl, const Window& W, const std::string& wc, const std::string& wp) {
     shape(cl, wc, {"kind", "rho1", "rho2"}, {"contact"});
     const Q c1 = positive(cl, "rho1", wc), c2 = positive(cl, "rho2", wc);
     std::optional<std::string> label;
     if (cl.contains("contact")) label = claimed_contact(cl, wc);
-    const CurveFacts::Switch* best = nullptr;
-    for (const auto& sw : W.f.switches) {
-        spend_ops(4, qsize(sw.x) + qsize(c1) + (best ? qsize(best->x) : 0));
-        if (!best || abs(sw.x - c1) < abs(best->x - c1)) best = &sw;
-    }
-    if (!best) {
-        claim(sgn(W.a) == 0 && W.reaches_zero(), wp + ": with no switch point in it, the window spans rho1 = 0 to rho2 <= 0");
-        return false;
-    }
-    const Q delta = abs(best->x - c1);
-    claim(sgn(W.a) == 0 || W.a < c1 - delta, wp + ".rho1 starts below every rho1 as near to the claim as the nearest switch point");
-    claim(W.reaches_zero() || c1 + delta < W.b, wp + ".rho1 ends beyond every rho1 as near to the claim as the nearest switch point");
-    return R.close(c1, best->x) && R.close(c2, best->y) && (!label || *label == best->contact);
+    spend_ops(4, 2 * qsize(c1) + 2 * qsize(R.tol));
+    const Q lo = c1 / (1 + R.tol);
+    // (Strictly: the window lists the switch points strictly inside it.)
+    claim(sgn(W.a) == 0 || W.a < lo, wp + ".rho1 starts below every rho1 within the tolerance of the claim");
+    claim(W.reaches_zero() || (R.tol < 1 && c1 / (1 - R.tol) < W.b), wp + ".rho1 ends beyond every rho1 within the tolerance of the claim");
+    for (const auto& sw : W.f.switches)
+        if (R.close(c1, sw.x) && R.close(c2, sw.y) && (!label || *label == sw.contact)) return true;
+    return false;
 }
 
 // One judgement; returns whether the claim is right by the rules.
@@ -1718,9 +1718,15 @@ void check_judgements(const J& c) {
     }
     // What the file proves, in the line the checker prints: the judgements and their tolerance
     // (a forged tolerance makes wrong values right, and stays valid: it is the file's claim).
+    // A long tolerance is shown by its size, never by a prefix (a prefix hides a factor of 10^61).
     const std::string tol = R.tol.get_str();
-    g_summary = "; judgements: " + std::to_string(rights) + " right, " + std::to_string(js.size() - rights) + " wrong, tolerance " +
-                (tol.size() > 40 ? tol.substr(0, 40) + "..." : tol);
+    std::string shown = tol;
+    if (tol.size() > 40) {
+        char b[64];
+        std::snprintf(b, sizeof b, "%.6g", nearest(R.tol));
+        shown = std::string("~") + b + " (an exact fraction of " + std::to_string(tol.size()) + " characters)";
+    }
+    g_summary = "; judgements: " + std::to_string(rights) + " right, " + std::to_string(js.size() - rights) + " wrong, tolerance " + shown;
 }
 
 // ---- a compound partition ----------------------------------------------------------------------

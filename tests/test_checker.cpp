@@ -1306,6 +1306,7 @@ BOOST_AUTO_TEST_CASE(the_work_limit_and_the_denominator_limit_refuse_with_exit_2
 }
 
 // ---- compound partitions (issue 22) ------------------------------------------------------------
+
 namespace {
 fs::path data(const std::string& name) { return fs::path(SCALECERT_SOURCE_DIR) / "tests" / "data" / name; }
 OJ compound_certificate(const fs::path& scene, const std::string& name) {
@@ -1419,4 +1420,52 @@ BOOST_AUTO_TEST_CASE(compound_partitions_beyond_the_part_limit_are_unreadable) {
     std::string msg;
     BOOST_TEST(scalecert_check::check_text(text, msg) == 2);
     BOOST_TEST(msg.find("more than 10000 parts") != std::string::npos, msg);
+}
+
+BOOST_AUTO_TEST_CASE(a_switch_point_claim_is_right_when_any_exact_one_matches) {
+    // The Fig. 5 scene's switch points (README): (23/19, 45/19) VE and (29/13, 18/13) EV. The
+    // claim (7/4, 45/19, VE) is nearer in rho1 to the second (|7/4 − 29/13| = 11/52 against
+    // |7/4 − 23/19| = 41/76), but matches the first within 0.45: |7/4 − 23/19|/(23/19) = 41/92 ≈
+    // 0.4457 and rho2 exactly. Right at tolerance 0.45 (the hostile review's case: it was judged
+    // against the nearest in rho1 alone), wrong at 0.44; and with contact EV wrong at 0.45 (the
+    // second's rho2 18/13 is off by 0.71).
+    const std::string fig5 = std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/fig5_vf_ve_ee.json";
+    const fs::path claims = tmpdir() / "switch_any.json", cert = tmpdir() / "switch_any.cert.json";
+    { std::ofstream(claims) << R"({"format": "scalecert-claims-1", "claims": [
+      {"kind": "switch_point", "rho1": "7/4", "rho2": "45/19", "contact": "VE"},
+      {"kind": "switch_point", "rho1": "7/4", "rho2": "45/19", "contact": "EV"},
+      {"kind": "switch_point", "rho1": "7/4", "rho2": "45/19"}]})"; }
+    for (const auto& [tol, rights] : std::vector<std::pair<std::string, std::vector<bool>>>{
+             {"0.45", {true, false, true}}, {"0.44", {false, false, false}}, {"2", {true, true, true}}}) {
+        // (tolerance 2: the second matches too, 18/13 within 2 x 18/13 of 45/19, so EV is right)
+        const int st = engine("certify-fp " + fig5 + " " + claims.string() + " --tolerance " + tol + " --certificate " + cert.string());
+        BOOST_TEST(st == (std::count(rights.begin(), rights.end(), false) ? 1 : 0), tol);
+        BOOST_TEST_REQUIRE(check_file(cert) == 0);
+        const OJ j = load(cert);
+        for (size_t k = 0; k < rights.size(); ++k) BOOST_TEST(j["judgements"][k]["right"] == rights[k], tol << " claim " << k);
+        // Flipping a judgement is rejected.
+        OJ f = j;
+        f["judgements"][0]["right"] = !rights[0];
+        BOOST_TEST(check_json(f) == 1);
+    }
+}
+
+
+BOOST_AUTO_TEST_CASE(a_long_tolerance_is_shown_by_its_size) {
+    // The hostile review: the summary cut the tolerance to its first 40 characters, so 1.2e-9 and
+    // 1.2e52 written with the same leading digits looked alike. A verdict's judgement does not
+    // depend on the tolerance, so both files are valid; their summaries must differ.
+    const std::string cubes = std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/stacked_cubes.json";
+    const fs::path claims = tmpdir() / "tol_claims.json", cert = tmpdir() / "tol.cert.json";
+    { std::ofstream(claims) << R"({"format": "scalecert-claims-1", "claims": [{"kind": "verdict", "rho1": 1, "rho2": 1, "verdict": "separated"}]})"; }
+    BOOST_REQUIRE(engine("certify-fp " + cubes + " " + claims.string() + " --certificate " + cert.string()) == 0);
+    OJ j = load(cert);
+    const std::string digits = "12345678901234567890123456789012345678901";
+    std::string small_msg, big_msg;
+    j["tolerance"] = digits + "/" + "1" + std::string(49, '0');
+    BOOST_TEST(scalecert_check::check_text(j.dump(1), small_msg) == 0);
+    j["tolerance"] = digits + std::string(12, '0');
+    BOOST_TEST(scalecert_check::check_text(j.dump(1), big_msg) == 0);
+    BOOST_TEST(small_msg.find("tolerance ~1.23457e-09") != std::string::npos, small_msg);
+    BOOST_TEST(big_msg.find("tolerance ~1.23457e+52") != std::string::npos, big_msg);
 }

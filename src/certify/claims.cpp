@@ -249,9 +249,19 @@ private:
             if (prove_) proof.emplace(std::move(claim_json), curve_proof(m(), c(), Q(0), zero_crossing()));
             return false;
         }
-        const ExactSwitch* best = &exs.front();
+        // Right when some exact switch point matches (both coordinates within the tolerance, and
+        // the contact when claimed): the report names the first that does, else the nearest in ρ1.
+        const ExactSwitch* best = nullptr;
         for (const ExactSwitch& s : exs)
-            if (abs(Q(s.rho1 - r1)) < abs(Q(best->rho1 - r1))) best = &s;
+            if (close(r1, s.rho1) && close(r2, s.rho2) && (!lab || *lab == s.label)) {
+                best = &s;
+                break;
+            }
+        if (!best) {
+            best = &exs.front();
+            for (const ExactSwitch& s : exs)
+                if (abs(Q(s.rho1 - r1)) < abs(Q(best->rho1 - r1))) best = &s;
+        }
         Json n;
         put_exact(n, "rho1", best->rho1);
         put_exact(n, "rho2", best->rho2);
@@ -262,14 +272,18 @@ private:
         errors(e2, r2, best->rho2);
         o["rho1_error"] = e1;
         o["rho2_error"] = e2;
-        // The proof: the curve over a window holding every ρ1 as near to the claim as the nearest.
+        // The proof: the curve over a window holding every ρ1 within the tolerance of the claim's
+        // (|x − ρ1| <= tol·x: from ρ1/(1 + tol) to ρ1/(1 − tol), or on to where the curve reaches
+        // ρ2 = 0, past every switch point, when tol >= 1).
         if (prove_) {
-            const Q delta = abs(Q(best->rho1 - r1));
-            proof.emplace(std::move(claim_json), curve_proof(m(), c(), r1 - delta, r1 + delta));
+            const Q& tol = opt_.tolerance;
+            const Q lo = r1 / (1 + tol), hi = tol < 1 ? Q(r1 / (1 - tol)) : std::max(r1, zero_crossing());
+            proof.emplace(std::move(claim_json), curve_proof(m(), c(), lo, hi));
         }
         const bool label_right = !lab || *lab == best->label;
         o["contact_right"] = lab ? Json(label_right) : Json(nullptr);
-        text = "switch point (" + num(r1) + ", " + num(r2) + (lab ? ", " + *lab : "") + "): nearest exact (" + num(best->rho1) +
+        const bool matched = close(r1, best->rho1) && close(r2, best->rho2) && (!lab || *lab == best->label);
+        text = "switch point (" + num(r1) + ", " + num(r2) + (lab ? ", " + *lab : "") + (matched ? "): matches exact (" : "): nearest exact (") + num(best->rho1) +
                ", " + num(best->rho2) + ", " + best->label + ")";
         return close(r1, best->rho1) && close(r2, best->rho2) && label_right;
     }
