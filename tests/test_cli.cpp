@@ -815,7 +815,9 @@ BOOST_AUTO_TEST_CASE(region_of_compounds) {
     BOOST_TEST(at("2,2") == "overlapping");
     BOOST_TEST(at("11/4,2") == "touching");
     BOOST_TEST(at("3,2") == "separated");
-    expect_error("outside the rectangle", "region " + band + " --at 5,2", "--at: (5, 2) lies outside I1 x I2");
+    expect_error("outside the rectangle", "region " + band + " --at 5,2", "--at: '5,2' lies outside I1 x I2");
+    expect_error("empty --at", "region " + band + " --at ''", "--at: '' is not an exact number");
+    expect_error("long --at", "region " + band + " --at 1e1000,1", "--at: '1e1000,1' lies outside I1 x I2");
     // Objects with parts are read by region only; a flat part, an empty list, a part of three points.
     expect_error("parts elsewhere", "curve " + band, "P1.parts: an object made of parts is read by `scalecert region` only");
     const std::string tail = R"(, "seed": [0, 0, 0]}, "P2": {"vertices": [[4,0,0],[5,0,0],[4,1,0],[4,0,1]]}, "I1": [1, 2], "I2": [1, 2]})";
@@ -841,4 +843,39 @@ BOOST_AUTO_TEST_CASE(region_of_compounds) {
     BOOST_TEST(!fs::exists(nowhere));
     expect_error("certificate over the output", "region " + band + " --certificate " + (workdir() / "out.json").string(), "two outputs name the same file");
     expect_error("empty certificate name", "region " + band + " --certificate ''", "--certificate");
+    // The hostile review's explosions, refused before the pair polygons (manual.md "Limits"):
+    // 3,163 x 3,163 parts (10^7 part pairs and more), 150 x 150 overlapping parts (22,500 pairs
+    // whose swept boxes meet), two crossed 1,500-gon prisms (4,500 edges each: 2.0*10^7 edge
+    // pairs), and a zero-width I1 (the region is a set in the plane).
+    auto parts_of = [](int count, const std::string& part) {
+        std::string t = "[";
+        for (int k = 0; k < count; ++k) t += (k ? "," : "") + part;
+        return t + "]";
+    };
+    const std::string cube = R"({"vertices": [[0,0,0],[1,0,0],[0,1,0],[0,0,1],[1,1,1]]})";
+    auto two = [&](int m, int n) {
+        return R"({"P1": {"parts": )" + parts_of(m, cube) + R"(, "seed": [0,0,0]}, "P2": {"parts": )" + parts_of(n, cube) +
+               R"(, "seed": ["1/2","1/2","1/2"]}, "I1": [1, 2], "I2": [1, 2]})";
+    };
+    expect_error("part pairs", "region " + write("many_pairs.json", two(3163, 3163)).string(), "part pairs, more than 10000000 (the limit)");
+    expect_error("built pairs", "region " + write("built_pairs.json", two(150, 150)).string(),
+                 "22500 part pairs can meet in I1 x I2 (their swept boxes meet), more than 20000 (the limit)");
+    auto prism = [](int sides, int axis) {
+        std::string v;
+        for (int k = 0; k < sides; ++k) {
+            const double t = 2 * M_PI * k / sides;
+            const long c = std::lround(1e6 * std::cos(t)), d = std::lround(1e6 * std::sin(t));
+            for (long h : {-2000000L, 2000000L}) {
+                const long p[3] = {axis == 0 ? h : c, axis == 0 ? c : axis == 1 ? h : d, axis == 2 ? h : d};
+                v += (v.empty() ? "" : ",") + std::string("[") + std::to_string(p[0]) + "," + std::to_string(p[1]) + "," + std::to_string(p[2]) + "]";
+            }
+        }
+        return "[" + v + "]";
+    };
+    const std::string prisms = R"({"P1": {"parts": [{"vertices": )" + prism(1500, 0) + R"(}], "seed": [0,0,0]}, "P2": {"parts": [{"vertices": )" +
+                               prism(1500, 1) + R"(}], "seed": [0,0,0]}, "I1": [1, 2], "I2": [1, 2]})";
+    expect_error("edge pairs", "region " + write("crossed_prisms.json", prisms).string(), "edge pairs in all, more than 2*10^7");
+    const std::string flat_range = R"({"P1": {"parts": [)" + cube + R"(], "seed": [0,0,0]}, "P2": {"parts": [)" + cube +
+                                   R"(], "seed": ["1/2","1/2","1/2"]}, "I1": [2, 2], "I2": [1, 2]})";
+    expect_error("zero-width I1", "region " + write("flat_range.json", flat_range).string(), "I1 has no width");
 }

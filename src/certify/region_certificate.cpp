@@ -81,26 +81,23 @@ Json range_json(int from, int to) { return Json::array({from, to}); }
 struct Block { int a0, a1, b0, b1, axis, side; };
 std::vector<Block> pruned_blocks(const CompoundRegion& r) {
     const int m = static_cast<int>(r.parts[0].size()), n = static_cast<int>(r.parts[1].size());
+    auto code = [&](int a, int b) { return r.prune[static_cast<size_t>(a) * static_cast<size_t>(n) + static_cast<size_t>(b)]; };
     std::vector<Block> done;
-    std::map<std::tuple<int, int, int, int>, size_t> open;  // (b0, b1, axis, side) -> block reaching the previous row
+    std::map<std::tuple<int, int, int>, size_t> open;  // (b0, b1, code) -> block reaching the previous row
     for (int a = 0; a < m; ++a) {
-        std::map<std::tuple<int, int, int, int>, size_t> next;
+        std::map<std::tuple<int, int, int>, size_t> next;
         for (int b = 0; b < n;) {
-            const CompoundRegion::Pair& p = r.pairs[static_cast<size_t>(a) * static_cast<size_t>(n) + static_cast<size_t>(b)];
-            if (!p.pruned) { ++b; continue; }
+            const int k = code(a, b);
+            if (!k) { ++b; continue; }
             int e = b + 1;
-            while (e < n) {
-                const CompoundRegion::Pair& q = r.pairs[static_cast<size_t>(a) * static_cast<size_t>(n) + static_cast<size_t>(e)];
-                if (!q.pruned || q.prune_axis != p.prune_axis || q.prune_side != p.prune_side) break;
-                ++e;
-            }
-            const auto key = std::make_tuple(b, e - 1, p.prune_axis, p.prune_side);
+            while (e < n && code(a, e) == k) ++e;
+            const auto key = std::make_tuple(b, e - 1, k);
             const auto it = open.find(key);
             if (it != open.end()) {
                 done[it->second].a1 = a;
                 next[key] = it->second;
             } else {
-                done.push_back({a, a, b, e - 1, p.prune_axis, p.prune_side});
+                done.push_back({a, a, b, e - 1, (k - 1) / 2, (k - 1) % 2 ? 1 : -1});
                 next[key] = done.size() - 1;
             }
             b = e;
@@ -124,7 +121,6 @@ Json compound_partition_json(const ExactScene& sc, const CompoundRegion& r) {
         entries.push_back({{b.a0, b.b0}, std::move(e)});
     }
     for (const CompoundRegion::Pair& p : r.pairs) {
-        if (p.pruned) continue;
         Json normals = Json::array();
         for (size_t k : p.fence) normals.push_back(normal_json(p.constraints[k].normal));
         Json e{{"P1_parts", range_json(p.part1, p.part1)}, {"P2_parts", range_json(p.part2, p.part2)}, {"normals", normals}};
@@ -151,7 +147,7 @@ Json compound_partition_json(const ExactScene& sc, const CompoundRegion& r) {
         growth.push_back(g);
     }
     j["growth_set"] = growth;
-    j["statistics"] = Json{{"pairs", r.pairs.size()}, {"pruned", r.pruned}, {"built", r.built}, {"entries", entries.size()}};
+    j["statistics"] = Json{{"pairs", r.prune.size()}, {"pruned", r.pruned}, {"built", r.built}, {"entries", entries.size()}};
     j["scene"] = compound_scene_json(sc);
     return j;
 }

@@ -37,15 +37,21 @@ Command add_region(CLI::App& app) {
         ->check(file_name());
     example(sub, "Examples:\n  scalecert region tests/data/compound_band.json\n  scalecert region tests/data/compound_band.json --at 7/6,2\n"
                  "  scalecert region tests/data/compound_band.json --certificate band.cert.json && scalecert-check band.cert.json");
-    return {sub, [a] {
+    return {sub, [a, sub] {
                 a->scene.opt.allow_parts = true;
                 const ExactScene sc = a->scene.load();
+                std::vector<Q> x;  // --at, read before the work
+                if (sub->count("--at")) {
+                    x = number_list(a->at, 2, "--at", a->scene.opt);
+                    if (x[0] < sc.lo[0] || x[0] > sc.hi[0] || x[1] < sc.lo[1] || x[1] > sc.hi[1])
+                        throw InputError("--at: " + internal::quoted(a->at) + " lies outside I1 x I2");
+                }
                 const CompoundRegion r = compound_region(sc, a->scene.name());
                 Json j;
                 j["format"] = "scalecert-2";
                 j["kind"] = "region";
                 const auto& hp = r.predicates[filter::Predicate::HalfPlaneSide];
-                j["pairs"] = Json{{"total", r.pairs.size()}, {"pruned", r.pruned}, {"built", r.built},
+                j["pairs"] = Json{{"total", r.prune.size()}, {"pruned", r.pruned}, {"built", r.built},
                                   {"corner_sides", Json{{"decided_by_filter", hp.filtered}, {"decided_exactly", hp.exact}}}};
                 Json pairs = Json::array();
                 for (const auto& p : r.pairs)
@@ -63,10 +69,7 @@ Command add_region(CLI::App& app) {
                     growth.push_back(Json{{"from", to_exact_string(iv.from)}, {"to", to_exact_string(iv.to)},
                                           {"first_contact", Json{{"P1_part", iv.part1}, {"P2_part", iv.part2}}}});
                 j["growth_set"] = growth;
-                if (!a->at.empty()) {
-                    const std::vector<Q> x = number_list(a->at, 2, "--at", a->scene.opt);
-                    if (x[0] < sc.lo[0] || x[0] > sc.hi[0] || x[1] < sc.lo[1] || x[1] > sc.hi[1])
-                        throw InputError("--at: (" + to_exact_string(x[0]) + ", " + to_exact_string(x[1]) + ") lies outside I1 x I2");
+                if (!x.empty()) {
                     const CompoundVerdict v = compound_verdict(r, x[0], x[1]);
                     Json at{{"rho1", to_exact_string(x[0])}, {"rho2", to_exact_string(x[1])}, {"verdict", v.verdict}};
                     if (v.part1 >= 0) at["pair"] = Json{{"P1_part", v.part1}, {"P2_part", v.part2}};

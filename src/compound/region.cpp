@@ -209,6 +209,14 @@ std::array<std::array<Q, 2>, 3> swept_box(const Polyhedron& P, const Vec3q& s, c
 
 CompoundRegion compound_region(const ExactScene& sc, const std::string& name) {
     StageClock clock;
+    for (int i = 0; i < 2; ++i)
+        if (sc.lo[i] == sc.hi[i])
+            throw InputError(name + ": I" + std::to_string(i + 1) + " has no width (lo = hi): the region is a set in the plane of (rho1, rho2), "
+                             "so region needs I1 and I2 with lo < hi");
+    const size_t m = std::max<size_t>(1, sc.P[0].parts.size()), n = std::max<size_t>(1, sc.P[1].parts.size());
+    if (m * n > kMaxPartPairs)
+        throw InputError(name + ": " + std::to_string(m) + " x " + std::to_string(n) + " part pairs, more than " + std::to_string(kMaxPartPairs) +
+                         " (the limit)");
     CompoundRegion r;
     std::vector<Polyhedron>(&parts)[2] = r.parts;
     std::vector<std::array<std::array<Q, 2>, 3>> boxes[2];
@@ -224,31 +232,48 @@ CompoundRegion compound_region(const ExactScene& sc, const std::string& name) {
         }
     }
     clock.lap("parts (hulls)");
+    // Prune first (a byte a pair), and count the exact work the rest would take.
+    r.prune.assign(m * n, 0);
+    double work = 0;
+    for (size_t a = 0; a < m; ++a)
+        for (size_t b = 0; b < n; ++b) {
+            for (int c = 0; c < 3; ++c) {
+                const int side = boxes[0][a][c][1] < boxes[1][b][c][0] ? 1 : boxes[1][b][c][1] < boxes[0][a][c][0] ? -1 : 0;
+                if (side) {
+                    r.prune[a * n + b] = static_cast<std::uint8_t>(1 + 2 * c + (side > 0));
+                    break;
+                }
+            }
+            if (r.prune[a * n + b]) {
+                ++r.pruned;
+                continue;
+            }
+            ++r.built;
+            work += static_cast<double>(parts[0][a].edges.size()) * static_cast<double>(parts[1][b].edges.size());
+        }
+    if (static_cast<size_t>(r.built) > kMaxBuiltPairs)
+        throw InputError(name + ": " + std::to_string(r.built) + " part pairs can meet in I1 x I2 (their swept boxes meet), more than " +
+                         std::to_string(kMaxBuiltPairs) + " (the limit)");
+    if (work > kMaxEdgePairWork)
+        throw InputError(name + ": the part pairs that can meet have " + std::to_string(static_cast<long long>(work)) +
+                         " edge pairs in all, more than 2*10^7 (the limit: each pair's facet normals grow with its edge pairs)");
     std::vector<std::vector<Point2q>> polys;
     const Vec3q &s1 = sc.P[0].seed, &s2 = sc.P[1].seed;
-    for (size_t a = 0; a < parts[0].size(); ++a)
-        for (size_t b = 0; b < parts[1].size(); ++b) {
+    for (size_t a = 0; a < m; ++a)
+        for (size_t b = 0; b < n; ++b) {
+            if (r.prune[a * n + b]) continue;
             CompoundRegion::Pair p{static_cast<int>(a), static_cast<int>(b), false, {}, {}, {}};
-            for (int c = 0; c < 3 && !p.pruned; ++c) {
-                const int side = boxes[0][a][c][1] < boxes[1][b][c][0] ? 1 : boxes[1][b][c][1] < boxes[0][a][c][0] ? -1 : 0;
-                if (side) p.pruned = true, p.prune_axis = c, p.prune_side = side;
-            }
-            if (p.pruned) {
-                ++r.pruned;
-            } else {
-                ++r.built;
-                PairRegion pr = pair_region(parts[0][a], parts[1][b], s1, s2, sc.lo, sc.hi, &r.predicates);
-                p.polygon = std::move(pr.polygon);
-                p.constraints = std::move(pr.constraints);
-                p.fence = std::move(pr.fence);
-                polys.push_back(p.polygon);
-                // Where it meets ρ1 = ρ2: the polygon cut to the diagonal (a point or a segment).
-                const std::vector<Point2q> diag = cut_polygon(cut_polygon(p.polygon, Q(1), Q(-1), Q(0)), Q(-1), Q(1), Q(0));
-                if (!diag.empty()) {
-                    Q t0 = diag.front()[0], t1 = t0;
-                    for (const Point2q& x : diag) t0 = std::min(t0, x[0]), t1 = std::max(t1, x[0]);
-                    r.growth.push_back({t0, t1, p.part1, p.part2});
-                }
+            PairRegion pr = pair_region(parts[0][a], parts[1][b], s1, s2, sc.lo, sc.hi, &r.predicates);
+            p.polygon = std::move(pr.polygon);
+            p.constraints = std::move(pr.constraints);
+            p.fence = std::move(pr.fence);
+            polys.push_back(p.polygon);
+            // Where it meets ρ1 = ρ2: the polygon cut to the diagonal (a point or a segment).
+            const std::vector<Point2q> diag = cut_polygon(cut_polygon(p.polygon, Q(1), Q(-1), Q(0)), Q(-1), Q(1), Q(0));
+            if (!diag.empty()) {
+                Q t0 = diag.front()[0], t1 = t0;
+                for (const Point2q& x : diag) t0 = std::min(t0, x[0]), t1 = std::max(t1, x[0]);
+                r.growth.push_back({t0, t1, p.part1, p.part2});
             }
             r.pairs.push_back(std::move(p));
         }
@@ -273,7 +298,6 @@ CompoundRegion compound_region(const ExactScene& sc, const std::string& name) {
 CompoundVerdict compound_verdict(const CompoundRegion& r, const Q& rho1, const Q& rho2) {
     CompoundVerdict v{"separated"};
     for (const CompoundRegion::Pair& p : r.pairs) {
-        if (p.pruned) continue;
         int least = 1;  // the smallest sign of a ρ1 + b ρ2 − c over the pair's half-planes
         for (const HalfPlane& h : p.constraints) least = std::min(least, sgn(Q(h.a * rho1 + h.b * rho2 - h.c)));
         if (least > 0) return {"overlapping", p.part1, p.part2};

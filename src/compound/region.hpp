@@ -16,6 +16,7 @@
 #include "io/scene.hpp"
 
 #include <optional>
+#include <cstdint>
 
 #include <array>
 #include <vector>
@@ -66,16 +67,17 @@ std::vector<RegionPiece> union_of(const std::vector<std::vector<Point2q>>& conve
 struct CompoundRegion {
     struct Pair {
         int part1, part2;
-        bool pruned;
-        std::vector<Point2q> polygon;  // empty when pruned or apart
-        std::vector<HalfPlane> constraints;  // built pairs: every facet normal's half-plane
-        std::vector<size_t> fence;           // built pairs: PairRegion::fence
-        int prune_axis = -1, prune_side = 0;  // pruned pairs: the axis c on which the swept boxes
-                                              // are apart, +1 when part 1's lies below (normal e_c),
-                                              // −1 when above (normal −e_c)
+        bool pruned;                         // false here: `pairs` holds the built pairs
+        std::vector<Point2q> polygon;        // empty when apart in the rectangle
+        std::vector<HalfPlane> constraints;  // every facet normal's half-plane
+        std::vector<size_t> fence;           // PairRegion::fence
     };
     std::vector<Polyhedron> parts[2];  // each object's parts (a plain object: itself)
-    std::vector<Pair> pairs;  // part1-major
+    std::vector<Pair> pairs;  // the built pairs, part1-major
+    // For every part pair (part1-major, a byte each): 0 when built, else 1 + 2c + (s > 0) when
+    // pruned, c the axis on which the swept boxes are apart and s = +1 when part 1's lies below
+    // (normal e_c), −1 when above (normal −e_c).
+    std::vector<std::uint8_t> prune;
     std::vector<RegionPiece> region;
     struct Interval {
         Q from, to;
@@ -85,6 +87,11 @@ struct CompoundRegion {
     long pruned = 0, built = 0;
     filter::PredicateStats predicates;  // half_plane_side: the corners' sides, by stage
 };
+// Throws InputError, before the pair polygons, past the limits below (manual.md "Limits"), for a
+// zero-width range (the region is a set of the plane) and for a flat part.
+constexpr std::size_t kMaxPartPairs = 10000000;     // part pairs in all (a byte each, a box test each)
+constexpr std::size_t kMaxBuiltPairs = 20000;       // pairs whose swept boxes meet (each built exactly)
+constexpr double kMaxEdgePairWork = 2e7;            // over the built pairs, Σ edges(A) × edges(B)
 CompoundRegion compound_region(const ExactScene& sc, const std::string& name);
 
 // The objects at (ρ1, ρ2) in I1 × I2, exactly: overlapping when some built pair's every half-plane
