@@ -35,7 +35,7 @@ py::object pyint(const mpz_class& z) {
 
 // Bits of an integer read from Python: those of 10^100000, the largest number a text may write
 // (README "Limits": 100,000 characters, exponent within ±100,000).
-constexpr size_t kMaxIntBits = 332193;
+constexpr size_t kMaxIntBits = 16384;  // as for text: limits.hpp, kMaxNumberBits
 
 // A Python int (or anything with __index__) as a GMP integer, through its bytes.
 mpz_class mpz_of(const py::handle& h) {
@@ -50,7 +50,7 @@ mpz_class mpz_of(const py::handle& h) {
     const size_t bits = i.attr("bit_length")().cast<size_t>();
     if (bits > kMaxIntBits)
         throw scalecert::InputError("an integer of " + std::to_string(bits) + " bits, more than " + std::to_string(kMaxIntBits) +
-                                    " (the limit: 10^100000 has that many)");
+                                    " (the limit for one number, as for text)");
     const bool negative = overflow < 0;
     py::object a = py::reinterpret_steal<py::object>(PyNumber_Absolute(i.ptr()));
     if (!a) throw py::error_already_set();

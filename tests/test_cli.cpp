@@ -98,6 +98,12 @@ BOOST_AUTO_TEST_CASE(bad_inputs) {
     expect_error("lo > hi", S("o.json", scene(poly(kCube1), poly(kCube2), "[3, 2]")), "lo > hi");
     expect_error("bad number text", S("p.json", scene(poly(kCube1), poly(kCube2), "[\"1.2.3\", 2]")), "not an exact number");
     expect_error("huge exponent", S("q.json", scene(poly(kCube1), poly(kCube2), "[\"1e99999999\", 2]")), "exponent");
+    // Within the exponent's range but past 16,384 bits (the hostile review: 1e-99990 ran for
+    // seconds a claim); 10^4932 < 2^16384 < 10^4933.
+    expect_error("a number past 16384 bits", S("q2.json", scene(poly(kCube1), poly(kCube2), "[\"1e-99990\", 2]")),
+                 "'1e-99990' has more than 16384 bits in its numerator or denominator");
+    expect_error("10^4933", S("q3.json", scene(poly(kCube1), poly(kCube2), "[\"1e4933\", \"1e4933\"]")), "more than 16384 bits");
+    BOOST_TEST(run("curve " + write("q4.json", scene(poly(kCube1), poly(kCube2), "[\"1e4932\", \"1e4932\"]")).string()).status == 0);
     expect_error("zero denominator", S("r.json", scene(poly(kCube1), poly(kCube2), "[\"1/0\", 2]")), "zero denominator");
     expect_error("point with 2 coordinates", S("s.json", scene(poly("[[0,0],[1,0,0],[0,1,0],[0,0,1]]"), poly(kCube2))), "3 coordinates");
     expect_error("missing OFF", S("t.json", scene("{\"off\": \"nowhere.off\"}", poly(kCube2))), "cannot open");
@@ -397,8 +403,9 @@ BOOST_AUTO_TEST_CASE(inputs_beyond_the_limits_are_refused_with_exit_2) {
 }
 
 BOOST_AUTO_TEST_CASE(out_of_memory_exits_2_with_one_line) {
-    // 2,000 points with 100,000-digit coordinates need far more than 120 MB of GMP integers. GMP
-    // aborts on a failed allocation; the command turns it into "out of memory" and exit 2.
+    // 3,000 points with 4,900-digit coordinates (16,000 bits, under the limit for one number):
+    // their text, its tree and their GMP integers need far more than 120 MB. GMP aborts on a
+    // failed allocation; the command turns it into "out of memory" and exit 2.
 #if defined(__has_feature)
 #if __has_feature(address_sanitizer)
     BOOST_TEST_MESSAGE("skipped under AddressSanitizer, which reserves more address space than the limit");
@@ -408,8 +415,11 @@ BOOST_AUTO_TEST_CASE(out_of_memory_exits_2_with_one_line) {
     std::mt19937 g(5);
     std::uniform_int_distribution<int> u(1, 999999);
     std::string v = "[";
-    for (int i = 0; i < 2000; ++i)
-        v += std::string(i ? "," : "") + "[\"" + std::to_string(u(g)) + "e99990\",\"" + std::to_string(u(g)) + "e99990\",\"" + std::to_string(u(g)) + "e99990\"]";
+    for (int i = 0; i < 3000; ++i) {
+        v += i ? ",[" : "[";
+        for (int c = 0; c < 3; ++c) v += std::string(c ? "," : "") + "\"" + std::to_string(u(g)) + std::string(4894, '7') + "\"";
+        v += "]";
+    }
     v += "]";
     fs::path p = write("gmp-big.json", scene(poly(v), poly(kCube2)));
     fs::path err = workdir() / "oom-err.txt";

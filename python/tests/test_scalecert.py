@@ -275,7 +275,7 @@ def test_exact_results_past_4300_digits_come_back_as_fractions():
     # (slope -a, intercept c), and the growth distance is rho* = c / (a + 1). With a = 1 + 5^-6000
     # and c = 3 + 3^-9100 the common denominators are 13,932 and 14,423 bits (README "Limits":
     # 16,384), and rho* has about 8,540 digits above and below.
-    a, c = 1 + F(1, 5**6000), 3 + F(1, 3**9100)
+    a, c = 1 + F(1, 5**3100), 3 + F(1, 3**4600)  # within 16,384 bits each, as is rho
     rho = c / (a + 1)  # derived here, in Python's own Fractions
     assert min(rho.numerator.bit_length(), rho.denominator.bit_length()) > 4300 * 3.33
     P1 = [[x, y, z] for x in (-a, a) for y in (-a, a) for z in (-a, a)]
@@ -298,17 +298,19 @@ def test_exact_results_past_4300_digits_come_back_as_fractions():
 
 
 def test_too_large_numbers_are_input_errors():
-    # Past 10^100000 (README "Limits": one number's text 100,000 characters, exponent within
-    # +-100,000), an int or Fraction is refused as scalecert.InputError, never a bare ValueError.
+    # Past 16,384 bits in a numerator or denominator (docs/manual.md "Limits", as for text), an int
+    # or Fraction is refused as scalecert.InputError, never a bare ValueError.
     s = stacked()
-    for bad in (2**400000, -(2**400000), F(1, 2**400000), F(2**400000 + 1, 3)):
-        with pytest.raises(scalecert.InputError, match="332193"):
+    for bad in (2**16384, -(2**16384), F(1, 2**16384), F(2**16384 + 1, 3)):
+        with pytest.raises(scalecert.InputError, match="16384"):
             s.query(bad, 1)
+    with pytest.raises(scalecert.InputError, match="16384 bits"):
+        s.query("1e-99990", 1)
     with pytest.raises(scalecert.InputError, match="longer than 100000"):
         s.query("9" * 200000, 1)
     # Within the limit: read exactly, however many digits (the touching line is r1 + r2 = 3).
-    assert s.query(2**300000, 1)["verdict"] == scalecert.Verdict.Overlapping
-    t = F(1, 3**20000)
+    assert s.query(2**16383, 1)["verdict"] == scalecert.Verdict.Overlapping
+    t = F(1, 3**10000)
     assert s.query(3 - t, t)["verdict"] == scalecert.Verdict.Touching
     assert s.query(3 - t, t / 2)["verdict"] == scalecert.Verdict.Separated
 

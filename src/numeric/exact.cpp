@@ -116,6 +116,12 @@ Q parse_exact(const std::string& text) {
         }
     }
     auto bad = [&text] { return InputError(quoted(text) + " is not an exact number"); };
+    auto sized = [&text](Q r) {
+        if (mpz_sizeinbase(r.get_num_mpz_t(), 2) > kMaxNumberBits || mpz_sizeinbase(r.get_den_mpz_t(), 2) > kMaxNumberBits)
+            throw InputError(quoted(text) + " has more than " + std::to_string(kMaxNumberBits) +
+                             " bits in its numerator or denominator (the limit for one number)");
+        return r;
+    };
     if (text.size() > kMaxNumberChars)
         throw InputError(quoted(text) + " is longer than " + std::to_string(kMaxNumberChars) + " characters, the limit for one number");
     if (text.empty()) throw bad();
@@ -129,7 +135,7 @@ Q parse_exact(const std::string& text) {
         if (q == 0) throw InputError(quoted(text) + " has a zero denominator");
         Q r(p, q);
         r.canonicalize();
-        return r;
+        return sized(std::move(r));
     }
     size_t i = 0;
     bool negative = false;
@@ -163,7 +169,7 @@ Q parse_exact(const std::string& text) {
     mpz_ui_pow_ui(p10.get_mpz_t(), 10, static_cast<unsigned long>(e < 0 ? -e : e));
     Q r = e >= 0 ? Q(m * p10) : Q(m, p10);
     r.canonicalize();
-    return negative ? Q(-r) : r;
+    return sized(negative ? Q(-r) : r);
 }
 
 Q exact_from_double(double d) {
