@@ -600,6 +600,15 @@ BOOST_AUTO_TEST_CASE(certify_fp_exit_status_gates_ci) {
     // (expect_error adds --out WORKDIR/out.json and checks that nothing was written there.)
     expect_error("certificate over the report", "certify-fp " + sc + " " + js.string() + " --certificate " + (workdir() / "out.json").string(),
                  "two outputs name the same file");
+    // An output over an input (the hostile review: --certificate CLAIMS replaced the claims it read).
+    {
+        const fs::path mine = write("own_claims.json", slurp(js));
+        const std::string before = slurp(mine);
+        Run r = run("certify-fp " + sc + " " + mine.string() + " --certificate " + mine.string());
+        BOOST_TEST(r.status == 2);
+        BOOST_TEST(r.err.find("an output names an input file") != std::string::npos, r.err);
+        BOOST_TEST(slurp(mine) == before);
+    }
     // The same file named relatively and as ./ (neither existing yet): the same file.
     {
         const fs::path here = fs::current_path();

@@ -38,6 +38,7 @@ Command add_certify_fp(CLI::App& app) {
     return {sub, [a] {
                 a->scene.shift_positionals({&a->claims});
                 if (a->claims.empty()) throw InputError("CLAIMS is required (see scalecert certify-fp --help)");
+                internal::refuse_outputs_over_inputs({a->out, a->certificate}, {a->claims, a->scene.path, a->scene.mesh[0], a->scene.mesh[1]});
                 StageClock clock;
                 internal::Session session = open_session(a->scene, Engine::Auto, clock);
                 const std::string claims = read_input(a->claims, "claims file", kMaxSceneBytes);

@@ -39,6 +39,7 @@ Command add_region(CLI::App& app) {
                  "  scalecert region tests/data/compound_band.json --certificate band.cert.json && scalecert-check band.cert.json");
     return {sub, [a, sub] {
                 a->scene.opt.allow_parts = true;
+                internal::refuse_outputs_over_inputs({a->out, a->certificate}, {a->scene.path, a->scene.mesh[0], a->scene.mesh[1]});
                 const ExactScene sc = a->scene.load();
                 std::vector<Q> x;  // --at, read before the work
                 if (sub->count("--at")) {

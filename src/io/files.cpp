@@ -175,4 +175,16 @@ void write_files_atomically(const std::vector<std::pair<std::string, std::string
 
 void write_file_atomically(const std::string& path, const std::string& text) { write_files_atomically({{path, text}}); }
 
+void refuse_outputs_over_inputs(const std::vector<std::string>& outputs, const std::vector<std::string>& inputs) {
+    for (const std::string& o : outputs) {
+        struct stat so {};
+        if (o.empty() || o == "-" || ::stat(o.c_str(), &so) != 0) continue;  // not there yet: no input is it
+        for (const std::string& i : inputs) {
+            struct stat si {};
+            if (!i.empty() && i != "-" && ::stat(i.c_str(), &si) == 0 && si.st_dev == so.st_dev && si.st_ino == so.st_ino)
+                throw InputError(o + ": an output names an input file (" + i + "), which it would replace");
+        }
+    }
+}
+
 }  // namespace scalecert::internal

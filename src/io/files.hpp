@@ -44,5 +44,8 @@ void write_file_atomically(const std::string& path, const std::string& text);
 // The same for several files: every text is written and synced before any rename, so a failure
 // while writing leaves none of them.
 void write_files_atomically(const std::vector<std::pair<std::string, std::string>>& files);
+// Refuses (InputError) an output that is one of the inputs (the same file, by device and inode):
+// certify-fp --certificate CLAIMS replaced the claims it read.
+void refuse_outputs_over_inputs(const std::vector<std::string>& outputs, const std::vector<std::string>& inputs);
 
 }  // namespace scalecert::internal

@@ -173,7 +173,7 @@ Q parse_exact(const std::string& text) {
 }
 
 Q exact_from_double(double d) {
-    if (!std::isfinite(d)) throw InputError("value is not finite");
+    if (!std::isfinite(d)) throw InputError("value is not finite as a double (beyond the double range: written as a string, \"1e400\", it is read exactly)");
     Q r;
     mpq_set_d(r.get_mpq_t(), d);
     return r;
