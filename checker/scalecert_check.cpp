@@ -1804,8 +1804,9 @@ void check_compound_partition(const J& c) {
         }
     if (c.contains("statistics")) {
         const J& st = at(c, "statistics");
-        shape(st, "statistics", {"pairs", "pruned", "built", "entries"});
-        for (const char* k : {"pairs", "pruned", "built", "entries"}) claim(natural(at(st, k)), std::string("statistics.") + k + " is a count");
+        shape(st, "statistics", {"pairs", "pruned", "built", "entries", "witness_fallbacks"});
+        for (const char* k : {"pairs", "pruned", "built", "entries", "witness_fallbacks"})
+            claim(natural(at(st, k)), std::string("statistics.") + k + " is a count");
     }
     const size_t m = start[0].size() - 1, n = start[1].size() - 1;
     const std::vector<P2> rect = normalize({{sc.lo[0], sc.lo[1]}, {sc.hi[0], sc.lo[1]}, {sc.hi[0], sc.hi[1]}, {sc.lo[0], sc.hi[1]}});

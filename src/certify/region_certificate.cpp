@@ -1,7 +1,9 @@
 // The compound partition certificate (region_certificate.hpp).
 #include "certify/region_certificate.hpp"
 
+#include "geometry/gjk.hpp"
 #include "geometry/witness.hpp"
+#include "numeric/parallel.hpp"
 
 #include <map>
 #include <stdexcept>
@@ -37,28 +39,40 @@ Vec3q scaled(const Vec3q& v, const Vec3q& s, const Q& rho) {
     return {s[0] + rho * (v[0] - s[0]), s[1] + rho * (v[1] - s[1]), s[2] + rho * (v[2] - s[2])};
 }
 
-// A common point of A(ρ1) and B(ρ2) (exact LP over the parts' vertices), weights indexed into
-// each part's own point list.
-Witness pair_witness(const Polyhedron& A, const Polyhedron& B, const Vec3q& s1, const Vec3q& s2, const Q& r1, const Q& r2) {
-    std::vector<Vec3q> a, b;
-    for (int v : A.vertices) a.push_back(scaled(A.points[static_cast<size_t>(v)], s1, r1));
-    for (int v : B.vertices) b.push_back(scaled(B.points[static_cast<size_t>(v)], s2, r2));
-    const auto cp = common_point(a, b);
-    if (!cp) throw std::logic_error("no common point at a corner of a part pair's overlap polygon");
-    Witness w;
-    w.rho1 = r1;
-    w.rho2 = r2;
-    w.point = {Q(0), Q(0), Q(0)};
-    for (size_t k = 0; k < a.size(); ++k)
-        if (sgn(cp->lambda[k])) {
-            w.w1.push_back({A.vertices[k], cp->lambda[k]});
-            for (int c = 0; c < 3; ++c) w.point[c] += cp->lambda[k] * a[k][c];
+// A common point of A(ρ1) and B(ρ2), weights indexed into each part's own point list: an exact LP
+// over the few vertices a double GJK names (hm holds the two parts and the seeds), else over all
+// the parts' vertices. The LP decides; GJK only proposes (its simplex may miss a touching face).
+Witness pair_witness(const HullModel& hm, const Q& r1, const Q& r2, long& fallbacks) {
+    const Polyhedron &A = hm.P[0], &B = hm.P[1];
+    const GjkGuess g = gjk_guess(hm, r1.get_d(), r2.get_d());
+    for (int attempt = 0; attempt < 2; ++attempt) {
+        const std::vector<int>& ia = attempt == 0 ? g.v1 : A.vertices;
+        const std::vector<int>& ib = attempt == 0 ? g.v2 : B.vertices;
+        if (ia.empty() || ib.empty()) continue;
+        std::vector<Vec3q> a, b;
+        for (int v : ia) a.push_back(scaled(A.points[static_cast<size_t>(v)], hm.s[0], r1));
+        for (int v : ib) b.push_back(scaled(B.points[static_cast<size_t>(v)], hm.s[1], r2));
+        const auto cp = common_point(a, b);
+        if (!cp) {
+            if (attempt == 0) ++fallbacks;
+            continue;
         }
-    for (size_t k = 0; k < b.size(); ++k)
-        if (sgn(cp->mu[k])) w.w2.push_back({B.vertices[k], cp->mu[k]});
-    std::sort(w.w1.begin(), w.w1.end());
-    std::sort(w.w2.begin(), w.w2.end());
-    return w;
+        Witness w;
+        w.rho1 = r1;
+        w.rho2 = r2;
+        w.point = {Q(0), Q(0), Q(0)};
+        for (size_t k = 0; k < a.size(); ++k)
+            if (sgn(cp->lambda[k])) {
+                w.w1.push_back({ia[k], cp->lambda[k]});
+                for (int c = 0; c < 3; ++c) w.point[c] += cp->lambda[k] * a[k][c];
+            }
+        for (size_t k = 0; k < b.size(); ++k)
+            if (sgn(cp->mu[k])) w.w2.push_back({ib[k], cp->mu[k]});
+        std::sort(w.w1.begin(), w.w1.end());
+        std::sort(w.w2.begin(), w.w2.end());
+        return w;
+    }
+    throw std::logic_error("no common point at a corner of a part pair's overlap polygon");
 }
 
 Json polygon_json(Json& o, const std::vector<Point2q>& poly) {
@@ -112,6 +126,7 @@ Json compound_partition_json(const ExactScene& sc, const CompoundRegion& r) {
     const Vec3q &s1 = sc.P[0].seed, &s2 = sc.P[1].seed;
     // Entries in (first P1 part, first P2 part) order: built pairs one each, pruned blocks.
     std::vector<std::pair<std::pair<int, int>, Json>> entries;
+    long fallbacks = 0;  // witnesses the GJK's vertices did not hold
     for (const Block& b : pruned_blocks(r)) {
         Vec3z nrm{Z(0), Z(0), Z(0)};
         nrm[static_cast<size_t>(b.axis)] = b.side;
@@ -120,14 +135,29 @@ Json compound_partition_json(const ExactScene& sc, const CompoundRegion& r) {
         e["witnesses"] = Json::array();
         entries.push_back({{b.a0, b.b0}, std::move(e)});
     }
-    for (const CompoundRegion::Pair& p : r.pairs) {
+    // The witnesses, on every core (each pair's in its slot; each task copies its two parts).
+    std::vector<std::vector<Witness>> witnesses(r.pairs.size());
+    const unsigned threads = static_cast<unsigned>(std::min<size_t>(default_threads(), std::max<size_t>(1, r.pairs.size() / 8)));
+    std::vector<long> missed(threads, 0);
+    parallel_tasks(r.pairs.size(), threads, [&](unsigned t, size_t k) {
+        const CompoundRegion::Pair& p = r.pairs[k];
+        if (p.polygon.empty()) return;
+        HullModel hm;  // the two parts and the seeds, for the GJK guess
+        hm.P[0] = r.parts[0][static_cast<size_t>(p.part1)];
+        hm.P[1] = r.parts[1][static_cast<size_t>(p.part2)];
+        hm.s[0] = s1;
+        hm.s[1] = s2;
+        for (const Point2q& v : p.polygon) witnesses[k].push_back(pair_witness(hm, v[0], v[1], missed[t]));
+    });
+    for (long x : missed) fallbacks += x;
+    for (size_t k = 0; k < r.pairs.size(); ++k) {
+        const CompoundRegion::Pair& p = r.pairs[k];
         Json normals = Json::array();
-        for (size_t k : p.fence) normals.push_back(normal_json(p.constraints[k].normal));
+        for (size_t f : p.fence) normals.push_back(normal_json(p.constraints[f].normal));
         Json e{{"P1_parts", range_json(p.part1, p.part1)}, {"P2_parts", range_json(p.part2, p.part2)}, {"normals", normals}};
         polygon_json(e, p.polygon);
         Json wit = Json::array();
-        for (const Point2q& v : p.polygon)
-            wit.push_back(witness_object(pair_witness(r.parts[0][static_cast<size_t>(p.part1)], r.parts[1][static_cast<size_t>(p.part2)], s1, s2, v[0], v[1])));
+        for (const Witness& w : witnesses[k]) wit.push_back(witness_object(w));
         e["witnesses"] = wit;
         entries.push_back({{p.part1, p.part2}, std::move(e)});
     }
@@ -147,7 +177,7 @@ Json compound_partition_json(const ExactScene& sc, const CompoundRegion& r) {
         growth.push_back(g);
     }
     j["growth_set"] = growth;
-    j["statistics"] = Json{{"pairs", r.prune.size()}, {"pruned", r.pruned}, {"built", r.built}, {"entries", entries.size()}};
+    j["statistics"] = Json{{"pairs", r.prune.size()}, {"pruned", r.pruned}, {"built", r.built}, {"entries", entries.size()}, {"witness_fallbacks", fallbacks}};
     j["scene"] = compound_scene_json(sc);
     return j;
 }

@@ -3,6 +3,7 @@
 #include "compound/region.hpp"
 
 #include "curve/contact_lines.hpp"
+#include "numeric/parallel.hpp"
 #include "numeric/timing.hpp"
 
 #include <algorithm>
@@ -257,26 +258,37 @@ CompoundRegion compound_region(const ExactScene& sc, const std::string& name) {
     if (work > kMaxEdgePairWork)
         throw InputError(name + ": the part pairs that can meet have " + std::to_string(static_cast<long long>(work)) +
                          " edge pairs in all, more than 2*10^7 (the limit: each pair's facet normals grow with its edge pairs)");
-    std::vector<std::vector<Point2q>> polys;
+    // The built pairs, on every core: each thread with its own copies of the parts (a part's
+    // predicate statistics are written by its support queries), each pair's result in its slot.
     const Vec3q &s1 = sc.P[0].seed, &s2 = sc.P[1].seed;
+    std::vector<std::pair<int, int>> todo;
     for (size_t a = 0; a < m; ++a)
-        for (size_t b = 0; b < n; ++b) {
-            if (r.prune[a * n + b]) continue;
-            CompoundRegion::Pair p{static_cast<int>(a), static_cast<int>(b), false, {}, {}, {}};
-            PairRegion pr = pair_region(parts[0][a], parts[1][b], s1, s2, sc.lo, sc.hi, &r.predicates);
-            p.polygon = std::move(pr.polygon);
-            p.constraints = std::move(pr.constraints);
-            p.fence = std::move(pr.fence);
-            polys.push_back(p.polygon);
-            // Where it meets ρ1 = ρ2: the polygon cut to the diagonal (a point or a segment).
-            const std::vector<Point2q> diag = cut_polygon(cut_polygon(p.polygon, Q(1), Q(-1), Q(0)), Q(-1), Q(1), Q(0));
-            if (!diag.empty()) {
-                Q t0 = diag.front()[0], t1 = t0;
-                for (const Point2q& x : diag) t0 = std::min(t0, x[0]), t1 = std::max(t1, x[0]);
-                r.growth.push_back({t0, t1, p.part1, p.part2});
-            }
-            r.pairs.push_back(std::move(p));
+        for (size_t b = 0; b < n; ++b)
+            if (!r.prune[a * n + b]) todo.push_back({static_cast<int>(a), static_cast<int>(b)});
+    const unsigned threads = static_cast<unsigned>(std::min<size_t>(default_threads(), std::max<size_t>(1, todo.size() / 8)));
+    std::vector<std::vector<Polyhedron>> copies[2];
+    for (int i = 0; i < 2; ++i) copies[i].assign(threads > 1 ? threads : 0, parts[i]);
+    std::vector<filter::PredicateStats> stats(threads);
+    r.pairs.resize(todo.size());
+    parallel_tasks(todo.size(), threads, [&](unsigned t, size_t k) {
+        const auto [a, b] = todo[k];
+        const Polyhedron& A = threads > 1 ? copies[0][t][static_cast<size_t>(a)] : parts[0][static_cast<size_t>(a)];
+        const Polyhedron& B = threads > 1 ? copies[1][t][static_cast<size_t>(b)] : parts[1][static_cast<size_t>(b)];
+        PairRegion pr = pair_region(A, B, s1, s2, sc.lo, sc.hi, &stats[t]);
+        r.pairs[k] = CompoundRegion::Pair{a, b, false, std::move(pr.polygon), std::move(pr.constraints), std::move(pr.fence)};
+    });
+    for (const auto& st : stats) r.predicates += st;
+    std::vector<std::vector<Point2q>> polys;
+    for (const CompoundRegion::Pair& p : r.pairs) {
+        polys.push_back(p.polygon);
+        // Where it meets ρ1 = ρ2: the polygon cut to the diagonal (a point or a segment).
+        const std::vector<Point2q> diag = cut_polygon(cut_polygon(p.polygon, Q(1), Q(-1), Q(0)), Q(-1), Q(1), Q(0));
+        if (!diag.empty()) {
+            Q t0 = diag.front()[0], t1 = t0;
+            for (const Point2q& x : diag) t0 = std::min(t0, x[0]), t1 = std::max(t1, x[0]);
+            r.growth.push_back({t0, t1, p.part1, p.part2});
         }
+    }
     clock.lap("pair polygons");
     r.region = union_of(polys);
     clock.lap("union (CGAL)");
