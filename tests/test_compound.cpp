@@ -6,6 +6,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include "certify/region_certificate.hpp"
+#include "compound/locate.hpp"
 #include "compound/region.hpp"
 #include "support.hpp"
 
@@ -372,4 +373,98 @@ BOOST_AUTO_TEST_CASE(certificate_polygons_equal_the_brute_force) {
     BOOST_TEST(meeting > 20);
     std::cout << "compound certificates: " << checked << " points against the brute force (" << meeting << " meeting), " << blocks
               << " blocks of pruned pairs\n";
+}
+
+BOOST_AUTO_TEST_CASE(located_verdicts_equal_the_exact_ones) {
+    // The grid's verdicts (locate.hpp) against compound_verdict, which tests every pair's every
+    // constraint exactly, and against the separating-axis brute force for meeting: on the U and
+    // peg (by hand: (1/2, 1) touches on the wall's line, (1, 3) overlaps, (2, 1) is apart) and on
+    // random compounds, at random doubles, at the doubles nearest every polygon corner and its
+    // neighbours, on every grid line and on the rectangle's edges; grids of 1 to 64 cells a side.
+    const std::vector<std::array<int, 6>> u[2] = {{{-6, -2, 0, 6, 2, 2}, {-6, -2, 2, -4, 2, 8}, {4, -2, 2, 6, 2, 8}}, {{-2, -1, 4, 2, 1, 10}}};
+    const Vec3q us[2] = {{Q(0), Q(0), Q(1, 2)}, {Q(0), Q(0), Q(7, 2)}};
+    const Q ulo[2] = {Q(1, 2), Q(1, 2)}, uhi[2] = {Q(2), Q(3)};
+    const CompoundRegion ur = compound_region(compound_scene(u, us, ulo, uhi), "u_peg");
+    filter::PredicateStats st;
+    for (int G : {1, 3, 16, 64}) {
+        const CompoundLocator L(ur, ulo, uhi, G);
+        BOOST_TEST(L.verdict(0.5, 1.0, st) == 1);
+        BOOST_TEST(L.verdict(1.0, 3.0, st) == 2);
+        BOOST_TEST(L.verdict(2.0, 1.0, st) == 0);
+        BOOST_TEST(L.verdict(0.5, std::nextafter(1.0, 0.0), st) == 0);
+    }
+    std::mt19937 g(99);
+    std::uniform_int_distribution<int> c(-3, 3), off(-5, 5), np(4, 8);
+    std::uniform_real_distribution<double> ur01(0, 1);
+    long checked = 0, counts[3] = {0, 0, 0};
+    for (int t = 0; t < 8; ++t) {
+        ExactScene sc;
+        std::vector<Polyhedron> parts[2];
+        for (int i = 0; i < 2; ++i) {
+            while (sc.P[i].parts.size() < 3) {
+                std::vector<Vec3q> v;
+                const int ox = off(g) + (i ? 7 : 0), oy = off(g);
+                for (int k = np(g); k > 0; --k) v.push_back({Q(c(g) + ox), Q(c(g) + oy), Q(c(g))});
+                try {
+                    parts[i].push_back(build_polyhedron(v, "part"));
+                } catch (const InputError&) {
+                    continue;
+                }
+                sc.P[i].parts.push_back(v);
+                sc.P[i].points.insert(sc.P[i].points.end(), v.begin(), v.end());
+            }
+            sc.P[i].seed = {Q(off(g) + (i ? 7 : 0)), Q(off(g)), Q(0)};
+            sc.P[i].seed_given = true;
+            sc.lo[i] = Q(1, 4);
+            sc.hi[i] = Q(3);
+        }
+        const CompoundRegion r = compound_region(sc, "scene");
+        std::vector<std::pair<double, double>> probes;
+        for (int k = 0; k < 300; ++k) probes.push_back({0.25 + 2.75 * ur01(g), 0.25 + 2.75 * ur01(g)});
+        for (const auto& p : r.pairs)
+            for (const Point2q& x : p.polygon)
+                for (double e1 : {-1.0, 0.0, 1.0})
+                    for (double e2 : {-1.0, 0.0, 1.0}) {
+                        double a = x[0].get_d(), b = x[1].get_d();
+                        if (e1) a = std::nextafter(a, e1 * INFINITY);
+                        if (e2) b = std::nextafter(b, e2 * INFINITY);
+                        probes.push_back({a, b});
+                    }
+        for (int G : {1, 5, 32}) {
+            const CompoundLocator L(r, sc.lo, sc.hi, G);
+            std::vector<std::pair<double, double>> all = probes;
+            for (int k = 0; k <= G; ++k) {  // on the grid lines (as the locator draws them) and the rectangle's edges
+                const double x = 0.25 + 2.75 * k / G;
+                all.push_back({x, 0.25}), all.push_back({x, 3.0}), all.push_back({0.25, x}), all.push_back({3.0, x}), all.push_back({x, x});
+            }
+            for (const auto& [a, b] : all) {
+                const Q qa(a), qb(b);
+                if (qa < sc.lo[0] || qa > sc.hi[0] || qb < sc.lo[1] || qb > sc.hi[1]) continue;
+                const std::string want = compound_verdict(r, qa, qb).verdict;
+                const int got = L.verdict(a, b, st);
+                BOOST_TEST(std::string(got == 0 ? "separated" : got == 1 ? "touching" : "overlapping") == want,
+                           "scene " << t << " G " << G << " at (" << a << ", " << b << ")");
+                if (G == 5) {
+                    bool meet = false;
+                    for (const Polyhedron& A : parts[0])
+                        for (const Polyhedron& B : parts[1]) meet = meet || meet_brute(A, B, sc.P[0].seed, sc.P[1].seed, qa, qb);
+                    BOOST_TEST((got > 0) == meet);
+                }
+                ++checked;
+                ++counts[got];
+            }
+        }
+        const std::vector<std::int8_t> batch = CompoundLocator(r, sc.lo, sc.hi, 16).classify({1.0, 2.0, 0.25}, {1.0, 2.0, 3.0}, 2);
+        for (int k = 0; k < 3; ++k) {
+            const double a[3] = {1.0, 2.0, 0.25}, b[3] = {1.0, 2.0, 3.0};
+            const std::string want = compound_verdict(r, Q(a[k]), Q(b[k])).verdict;
+            BOOST_TEST(batch[static_cast<size_t>(k)] == (want == "separated" ? 0 : want == "touching" ? 1 : 2));
+        }
+    }
+    BOOST_TEST(counts[1] > 20);  // touching points (on polygon edges) were reached
+    BOOST_TEST(counts[2] > 100);
+    std::cout << "located verdicts: " << checked << " points (" << counts[0] << " separated, " << counts[1] << " touching, " << counts[2]
+              << " overlapping), filter " << st[filter::Predicate::HalfPlaneSide].filtered << ", exact "
+              << st[filter::Predicate::HalfPlaneSide].exact << "\n";
+    BOOST_CHECK_THROW(CompoundLocator(ur, ulo, uhi, 4).verdict(0.4, 1.0, st), InputError);
 }

@@ -3,9 +3,15 @@
 #include "common.hpp"
 #include "compound/region.hpp"
 #include "certify/certificate.hpp"
+#include "certify/classify.hpp"
 #include "certify/region_certificate.hpp"
+#include "compound/locate.hpp"
 #include "file_name.hpp"
 #include "io/files.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <thread>
 
 namespace scalecert::cli {
 
@@ -22,7 +28,8 @@ Json ring_json(const std::vector<Point2q>& p) {
 Command add_region(CLI::App& app) {
     struct Args {
         SceneArgs scene;
-        std::string out, at, certificate;
+        std::string out, at, certificate, classify;
+        unsigned threads = std::max(1u, std::thread::hardware_concurrency());
     };
     auto a = std::make_shared<Args>();
     CLI::App* sub = app.add_subcommand("region", "where objects made of convex parts overlap in I1 x I2: each part pair's exact polygon and their union (JSON)");
@@ -35,11 +42,17 @@ Command add_region(CLI::App& app) {
                     "(certificates/FORMAT.md, \"A compound partition\")")
         ->type_name("FILE")
         ->check(file_name());
+    sub->add_option("--classify", a->classify,
+                    "instead of the region, the exact verdict of each pair of FILE (lines 'rho1 rho2', doubles; '-': standard "
+                    "input), one per line, located on a grid over I1 x I2 built once")
+        ->type_name("FILE");
+    sub->add_option("--threads", a->threads, "threads for --classify (default: all cores)")->check(CLI::Range(1u, 256u));
     example(sub, "Examples:\n  scalecert region tests/data/compound_band.json\n  scalecert region tests/data/compound_band.json --at 7/6,2\n"
+                 "  printf '1 2\\n1.5 2\\n' | scalecert region tests/data/compound_band.json --classify -\n"
                  "  scalecert region tests/data/compound_band.json --certificate band.cert.json && scalecert-check band.cert.json");
     return {sub, [a, sub] {
                 a->scene.opt.allow_parts = true;
-                internal::refuse_outputs_over_inputs({a->out, a->certificate}, {a->scene.path, a->scene.mesh[0], a->scene.mesh[1]});
+                internal::refuse_outputs_over_inputs({a->out, a->certificate}, {a->scene.path, a->scene.mesh[0], a->scene.mesh[1], a->classify});
                 const ExactScene sc = a->scene.load();
                 std::vector<Q> x;  // --at, read before the work
                 if (sub->count("--at")) {
@@ -47,7 +60,33 @@ Command add_region(CLI::App& app) {
                     if (x[0] < sc.lo[0] || x[0] > sc.hi[0] || x[1] < sc.lo[1] || x[1] > sc.hi[1])
                         throw InputError("--at: " + internal::quoted(a->at) + " lies outside I1 x I2");
                 }
+                std::string pairs_text;  // --classify: read before the work, like --at
+                std::vector<double> p1, p2;
+                if (sub->count("--classify")) {
+                    if (!a->certificate.empty() || !x.empty()) throw InputError("--classify writes verdicts only: not with --certificate or --at");
+                    pairs_text = read_input(a->classify.empty() ? "-" : a->classify, "pairs file", kMaxPairsBytes);
+                    try {
+                        parse_pairs(pairs_text, p1, p2, a->threads);
+                    } catch (const InputError& e) {
+                        throw InputError(a->classify + ": " + e.what());
+                    }
+                    for (size_t k = 0; k < p1.size(); ++k)
+                        if (Q(p1[k]) < sc.lo[0] || Q(p1[k]) > sc.hi[0] || Q(p2[k]) < sc.lo[1] || Q(p2[k]) > sc.hi[1])
+                            throw InputError(a->classify + ": pair " + std::to_string(k + 1) + " lies outside I1 x I2");
+                }
                 const CompoundRegion r = compound_region(sc, a->scene.name());
+                if (sub->count("--classify")) {
+                    // About twice as many cells as the polygons' corners, from 16 x 16 to 128 x 128.
+                    size_t corners = 0;
+                    for (const auto& p : r.pairs) corners += p.polygon.size();
+                    const int G = static_cast<int>(std::clamp<double>(std::sqrt(2.0 * static_cast<double>(corners)), 16, 128));
+                    const CompoundLocator L(r, sc.lo, sc.hi, G);
+                    const std::vector<std::int8_t> v = L.classify(p1, p2, a->threads);
+                    std::vector<Verdict> out(v.size());
+                    for (size_t k = 0; k < v.size(); ++k) out[k] = v[k] == 0 ? Verdict::Separated : v[k] == 1 ? Verdict::Touching : Verdict::Overlapping;
+                    emit(verdict_lines(out), a->out);
+                    return 0;
+                }
                 Json j;
                 j["format"] = "scalecert-2";
                 j["kind"] = "region";
