@@ -835,6 +835,16 @@ BOOST_AUTO_TEST_CASE(region_of_compounds) {
     BOOST_TEST(at("11/4,2") == "touching");
     BOOST_TEST(at("3,2") == "separated");
     expect_error("outside the rectangle", "region " + band + " --at 5,2", "--at: '5,2' lies outside I1 x I2");
+    // --classify: at rho2 = 2 the band runs from 7/6 to 11/4 (2.75, a double: touching).
+    {
+        const fs::path pairs = write("band_pairs.txt", "1 2\n1.5 2\n2.75 2\n3 2\n");
+        Run c = run("region " + band + " --classify " + pairs.string() + " --threads 2");
+        BOOST_TEST(c.status == 0, c.err);
+        BOOST_TEST(c.out == "separated\noverlapping\ntouching\nseparated\n");
+        expect_error("classify outside", "region " + band + " --classify " + write("band_far.txt", "1 2\n5 2\n").string(), "pair 2 lies outside I1 x I2");
+        expect_error("classify with certificate", "region " + band + " --classify " + pairs.string() + " --certificate " + (workdir() / "c.json").string(),
+                     "--classify writes verdicts only");
+    }
     expect_error("empty --at", "region " + band + " --at ''", "--at: '' is not an exact number");
     expect_error("long --at", "region " + band + " --at 1e1000,1", "--at: '1e1000,1' lies outside I1 x I2");
     // Objects with parts are read by region only; a flat part, an empty list, a part of three points.

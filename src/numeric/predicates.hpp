@@ -24,6 +24,7 @@
 //   5. quick_gap_certified, quick_cofactor_sign: GJK's certificates  (tools/quick_query.cpp)
 //   6. the Gauss-map candidate boxes: a completeness filter, no sign (gauss_map.cpp)
 //   7. ScanSupportFilter       which points may maximise n·x          (scan.cpp)
+//   8. half_plane_side_filter  a scaling pair against a part pair's half-plane (compound/region.cpp, locate.cpp)
 //
 // Notation: u = 2^-53 (the unit roundoff of double), γ_n = n·u / (1 − n·u) (Higham): a sum of n
 // rounded products, or a product of n rounded factors, is within γ_n of the exact value
