@@ -1469,3 +1469,35 @@ BOOST_AUTO_TEST_CASE(a_long_tolerance_is_shown_by_its_size) {
     BOOST_TEST(small_msg.find("tolerance ~1.23457e-09") != std::string::npos, small_msg);
     BOOST_TEST(big_msg.find("tolerance ~1.23457e+52") != std::string::npos, big_msg);
 }
+
+BOOST_AUTO_TEST_CASE(a_compound_fence_of_many_normals_over_huge_corners_meets_the_work_limit) {
+    // The second hostile review (helper-2): one pair apart in the rectangle, cut first by two
+    // normals with 16,000-bit entries (the polygon gets corners of twice that size), then by 40,000
+    // copies of (-1, 0, 0), whose half-plane holds everywhere, then emptied by (0, 1, 0). The
+    // certificate is true; checking it re-evaluated the huge corners 40,000 times, counted by the
+    // small first corner only: 97 s. Counted by the largest corner, it is refused at once (exit 2).
+    auto box = [](long x0, long x1, long y0, long y1, long z0, long z1, long dx, long dy, long dz, bool half) {
+        std::string t = "[";
+        for (long x : {x0, x1})
+            for (long y : {y0, y1})
+                for (long z : {z0, z1}) {
+                    // P2's seed (-9/2, 100, -3): its x coordinates are halves
+                    const std::string xs = half ? std::to_string(2 * (x + dx) - 9) + "/2" : std::to_string(x + dx);
+                    t += (t.size() > 1 ? "," : "") + std::string("[\"") + xs + "\",\"" + std::to_string(y + dy) + "\",\"" + std::to_string(z + dz) + "\"]";
+                }
+        return t + "]";
+    };
+    const mpz_class K = (mpz_class(1) << 16000) - 1, K2 = (mpz_class(1) << 16000) - 3;
+    std::string normals = "[[\"" + K.get_str() + "\",\"1\",\"0\"],[\"1\",\"0\",\"" + K2.get_str() + "\"]";
+    for (int k = 0; k < 40000; ++k) normals += ",[\"-1\",\"0\",\"0\"]";
+    normals += ",[\"0\",\"1\",\"0\"]]";
+    const std::string text = R"({"format":"scalecert-2","kind":"compound_partition","pairs":[{"P1_parts":[0,0],"P2_parts":[0,0],"normals":)" + normals +
+                             R"(,"vertices":[],"vertices_double":[],"witnesses":[]}],"growth_set":[],"scene":{"P1":{"parts":[{"vertices":)" +
+                             box(-3, -1, -1, 1, -3, -1, 0, 0, 0, false) + R"(}],"seed":["0","0","0"]},"P2":{"parts":[{"vertices":)" +
+                             box(2, 3, -1, 1, 1, 3, 0, 100, -3, true) + R"(}],"seed":["-9/2","100","-3"]},"I1":["1","2"],"I2":["1","2"]}})";
+    std::string msg;
+    const auto t0 = std::chrono::steady_clock::now();
+    BOOST_TEST(scalecert_check::check_text(text, msg) == 2, msg);
+    BOOST_TEST(msg.find("work limit") != std::string::npos, msg);
+    BOOST_TEST(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() < 30.0);  // not the 97 s it took
+}

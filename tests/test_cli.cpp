@@ -907,4 +907,29 @@ BOOST_AUTO_TEST_CASE(region_of_compounds) {
     const std::string flat_range = R"({"P1": {"parts": [)" + cube + R"(], "seed": [0,0,0]}, "P2": {"parts": [)" + cube +
                                    R"(], "seed": ["1/2","1/2","1/2"]}, "I1": [2, 2], "I2": [1, 2]})";
     expect_error("zero-width I1", "region " + write("flat_range.json", flat_range).string(), "I1 has no width");
+    // The second hostile review: a pair that meets only on the diagonal. A = [1,2] x [2,3] x [1,2] and
+    // B = [2,3] x [1,2] x [1,2] about the origin: A(r1) has x <= 2 r1 and y >= 2 r1, B(r2) x >= 2 r2
+    // and y <= 2 r2, so they meet iff r1 = r2 (then on the edge x = y = 2r). The union of polygons
+    // with area is empty; the segment from (1, 1) to (2, 2) is listed beside it.
+    {
+        const std::string diag = R"({"P1": {"parts": [{"vertices": [[1,2,1],[2,2,1],[1,3,1],[2,3,1],[1,2,2],[2,2,2],[1,3,2],[2,3,2]]}], "seed": [0,0,0]},
+            "P2": {"parts": [{"vertices": [[2,1,1],[3,1,1],[2,2,1],[3,2,1],[2,1,2],[3,1,2],[2,2,2],[3,2,2]]}], "seed": [0,0,0]}, "I1": [1, 2], "I2": [1, 2]})";
+        Run d = run("region " + write("diag_touch.json", diag).string());
+        BOOST_TEST_REQUIRE(d.status == 0, d.err);
+        const auto dj = nlohmann::json::parse(d.out);
+        BOOST_TEST(dj["region"].empty());
+        BOOST_TEST(dj["region_without_area"] == nlohmann::json::parse(R"([{"P1_part": 0, "P2_part": 0, "vertices": [["1", "1"], ["2", "2"]]}])"));
+    }
+    // More than 1,000 polygons with area: the union is not formed (region null, with a note); the
+    // pair polygons are still listed.
+    {
+        const std::string many = R"({"P1": {"parts": )" + parts_of(1001, cube) + R"(, "seed": [0,0,0]}, "P2": {"parts": [)" + cube +
+                                 R"(], "seed": ["1/2","1/2","1/2"]}, "I1": [1, 2], "I2": [1, 2]})";
+        Run m = run("region " + write("many_polygons.json", many).string());
+        BOOST_TEST_REQUIRE(m.status == 0, m.err);
+        const auto mj = nlohmann::json::parse(m.out);
+        BOOST_TEST(mj["region"].is_null());
+        BOOST_TEST(mj["region_note"].get<std::string>().find("more than 1000") != std::string::npos);
+        BOOST_TEST(mj["pair_regions"].size() == 1001u);
+    }
 }

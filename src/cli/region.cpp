@@ -74,7 +74,9 @@ Command add_region(CLI::App& app) {
                         if (Q(p1[k]) < sc.lo[0] || Q(p1[k]) > sc.hi[0] || Q(p2[k]) < sc.lo[1] || Q(p2[k]) > sc.hi[1])
                             throw InputError(a->classify + ": pair " + std::to_string(k + 1) + " lies outside I1 x I2");
                 }
-                const CompoundRegion r = compound_region(sc, a->scene.name());
+                // The union is for the region document only (the certificate and verdicts need none).
+                const bool document = !sub->count("--classify");
+                const CompoundRegion r = compound_region(sc, a->scene.name(), document);
                 if (sub->count("--classify")) {
                     // About twice as many cells as the polygons' corners, from 16 x 16 to 128 x 128.
                     size_t corners = 0;
@@ -103,7 +105,21 @@ Command add_region(CLI::App& app) {
                     for (const auto& h : piece.holes) holes.push_back(ring_json(h));
                     region.push_back(Json{{"outer", ring_json(piece.outer)}, {"holes", holes}});
                 }
-                j["region"] = region;
+                if (r.union_skipped) {
+                    j["region"] = nullptr;
+                    j["region_note"] = "the union of more than " + std::to_string(kMaxUnionPolygons) +
+                                       " pair polygons with area is not formed (its cost grows with their crossings): the region is the union "
+                                       "of pair_regions";
+                } else {
+                    j["region"] = region;
+                }
+                // Meeting sets without area (a pair that only touches, along a segment or at a point)
+                // are part of the region too; the union above is of the polygons with area.
+                Json thin = Json::array();
+                for (const auto& p : r.pairs)
+                    if (!p.polygon.empty() && p.polygon.size() < 3)
+                        thin.push_back(Json{{"P1_part", p.part1}, {"P2_part", p.part2}, {"vertices", ring_json(p.polygon)}});
+                j["region_without_area"] = thin;
                 Json growth = Json::array();
                 for (const auto& iv : r.growth)
                     growth.push_back(Json{{"from", to_exact_string(iv.from)}, {"to", to_exact_string(iv.to)},

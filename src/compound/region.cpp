@@ -208,7 +208,7 @@ std::array<std::array<Q, 2>, 3> swept_box(const Polyhedron& P, const Vec3q& s, c
 }
 }  // namespace
 
-CompoundRegion compound_region(const ExactScene& sc, const std::string& name) {
+CompoundRegion compound_region(const ExactScene& sc, const std::string& name, bool with_union) {
     StageClock clock;
     for (int i = 0; i < 2; ++i)
         if (sc.lo[i] == sc.hi[i])
@@ -290,8 +290,12 @@ CompoundRegion compound_region(const ExactScene& sc, const std::string& name) {
         }
     }
     clock.lap("pair polygons");
-    r.region = union_of(polys);
-    clock.lap("union (CGAL)");
+    if (with_union) {
+        const size_t with_area = static_cast<size_t>(std::count_if(polys.begin(), polys.end(), [](const auto& p) { return p.size() >= 3; }));
+        if (with_area <= kMaxUnionPolygons) r.region = union_of(polys);
+        else r.union_skipped = true;
+        clock.lap("union (CGAL)");
+    }
     // The intervals merged: sorted by start (ties: the first pair), each joined with those that
     // start within it.
     std::stable_sort(r.growth.begin(), r.growth.end(), [](const auto& x, const auto& y) { return x.from < y.from; });

@@ -78,7 +78,8 @@ struct CompoundRegion {
     // pruned, c the axis on which the swept boxes are apart and s = +1 when part 1's lies below
     // (normal e_c), −1 when above (normal −e_c).
     std::vector<std::uint8_t> prune;
-    std::vector<RegionPiece> region;
+    std::vector<RegionPiece> region;  // the union of the polygons with area (when formed)
+    bool union_skipped = false;       // asked for, but more than kMaxUnionPolygons polygons
     struct Interval {
         Q from, to;
         int part1, part2;  // the pair meeting at `from`
@@ -92,7 +93,12 @@ struct CompoundRegion {
 constexpr std::size_t kMaxPartPairs = 10000000;     // part pairs in all (a byte each, a box test each)
 constexpr std::size_t kMaxBuiltPairs = 20000;       // pairs whose swept boxes meet (each built exactly)
 constexpr double kMaxEdgePairWork = 2e7;            // over the built pairs, Σ edges(A) × edges(B)
-CompoundRegion compound_region(const ExactScene& sc, const std::string& name);
+// The union (`region`) is formed only when asked and of at most kMaxUnionPolygons polygons with
+// area: its cost grows with the crossings of their boundaries, up to the square of their edges
+// (the second hostile review: 1,545 crossing strips took 47 s and 1.7 GB, and more ran out of
+// memory inside CGAL). Past the limit `region` stays empty and union_skipped is set.
+constexpr std::size_t kMaxUnionPolygons = 1000;
+CompoundRegion compound_region(const ExactScene& sc, const std::string& name, bool with_union = true);
 
 // The objects at (ρ1, ρ2) in I1 × I2, exactly: overlapping when some built pair's every half-plane
 // holds strictly (their interiors meet: the parts have interiors), touching when some pair's hold
