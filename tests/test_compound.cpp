@@ -68,6 +68,32 @@ bool inside_convex(const std::vector<Point2q>& p, const Point2q& x) {
     }
     return true;
 }
+// Two random compounds of three parts each (4 to 8 points in a cube of side 6 at random offsets,
+// object 2 shifted by 7 along x), seeds anywhere in the plane z = 0, I1 = I2 = [1/4, 3]; the parts'
+// polyhedra in `parts`.
+ExactScene three_part_compounds(std::mt19937& g, std::vector<Polyhedron> parts[2]) {
+    std::uniform_int_distribution<int> c(-3, 3), off(-5, 5), np(4, 8);
+    ExactScene sc;
+    for (int i = 0; i < 2; ++i) {
+        while (sc.P[i].parts.size() < 3) {
+            std::vector<Vec3q> v;
+            const int ox = off(g) + (i ? 7 : 0), oy = off(g);
+            for (int k = np(g); k > 0; --k) v.push_back({Q(c(g) + ox), Q(c(g) + oy), Q(c(g))});
+            try {
+                parts[i].push_back(build_polyhedron(v, "part"));
+            } catch (const InputError&) {
+                continue;
+            }
+            sc.P[i].parts.push_back(v);
+            sc.P[i].points.insert(sc.P[i].points.end(), v.begin(), v.end());
+        }
+        sc.P[i].seed = {Q(off(g) + (i ? 7 : 0)), Q(off(g)), Q(0)};
+        sc.P[i].seed_given = true;
+        sc.lo[i] = Q(1, 4);
+        sc.hi[i] = Q(3);
+    }
+    return sc;
+}
 }  // namespace
 
 BOOST_AUTO_TEST_CASE(a_band_two_parts_either_side_of_the_seed) {
@@ -165,29 +191,10 @@ BOOST_AUTO_TEST_CASE(compound_verdicts_equal_the_brute_force_over_all_pairs) {
     // part pair does (separating-axis brute force), pruned pairs included; at random pairs and at
     // the corners of every pair polygon.
     std::mt19937 g(2022);
-    std::uniform_int_distribution<int> c(-3, 3), off(-5, 5), np(4, 8);
     long checked = 0, meeting = 0, pruned = 0;
     for (int t = 0; t < 12; ++t) {
-        ExactScene sc;
         std::vector<Polyhedron> parts[2];
-        for (int i = 0; i < 2; ++i) {
-            while (sc.P[i].parts.size() < 3) {
-                std::vector<Vec3q> v;
-                const int ox = off(g) + (i ? 7 : 0), oy = off(g);
-                for (int k = np(g); k > 0; --k) v.push_back({Q(c(g) + ox), Q(c(g) + oy), Q(c(g))});
-                try {
-                    parts[i].push_back(build_polyhedron(v, "part"));
-                } catch (const InputError&) {
-                    continue;
-                }
-                sc.P[i].parts.push_back(v);
-                sc.P[i].points.insert(sc.P[i].points.end(), v.begin(), v.end());
-            }
-            sc.P[i].seed = {Q(off(g) + (i ? 7 : 0)), Q(off(g)), Q(0)};
-            sc.P[i].seed_given = true;
-            sc.lo[i] = Q(1, 4);
-            sc.hi[i] = Q(3);
-        }
+        const ExactScene sc = three_part_compounds(g, parts);
         const CompoundRegion r = compound_region(sc, "scene");
         pruned += r.pruned;
         std::vector<Point2q> probes;
@@ -394,30 +401,11 @@ BOOST_AUTO_TEST_CASE(located_verdicts_equal_the_exact_ones) {
         BOOST_TEST(L.verdict(0.5, std::nextafter(1.0, 0.0), st) == 0);
     }
     std::mt19937 g(99);
-    std::uniform_int_distribution<int> c(-3, 3), off(-5, 5), np(4, 8);
     std::uniform_real_distribution<double> ur01(0, 1);
     long checked = 0, counts[3] = {0, 0, 0};
     for (int t = 0; t < 8; ++t) {
-        ExactScene sc;
         std::vector<Polyhedron> parts[2];
-        for (int i = 0; i < 2; ++i) {
-            while (sc.P[i].parts.size() < 3) {
-                std::vector<Vec3q> v;
-                const int ox = off(g) + (i ? 7 : 0), oy = off(g);
-                for (int k = np(g); k > 0; --k) v.push_back({Q(c(g) + ox), Q(c(g) + oy), Q(c(g))});
-                try {
-                    parts[i].push_back(build_polyhedron(v, "part"));
-                } catch (const InputError&) {
-                    continue;
-                }
-                sc.P[i].parts.push_back(v);
-                sc.P[i].points.insert(sc.P[i].points.end(), v.begin(), v.end());
-            }
-            sc.P[i].seed = {Q(off(g) + (i ? 7 : 0)), Q(off(g)), Q(0)};
-            sc.P[i].seed_given = true;
-            sc.lo[i] = Q(1, 4);
-            sc.hi[i] = Q(3);
-        }
+        const ExactScene sc = three_part_compounds(g, parts);
         const CompoundRegion r = compound_region(sc, "scene");
         std::vector<std::pair<double, double>> probes;
         for (int k = 0; k < 300; ++k) probes.push_back({0.25 + 2.75 * ur01(g), 0.25 + 2.75 * ur01(g)});
