@@ -68,24 +68,31 @@ bool inside_convex(const std::vector<Point2q>& p, const Point2q& x) {
     }
     return true;
 }
+// A random part of 4 to 8 points in a cube of side 6 at (ox, oy, 0), added to `in` and `parts`;
+// false (and nothing added) when the points are flat.
+bool add_random_part(std::mt19937& g, int ox, int oy, PolyInput& in, std::vector<Polyhedron>& parts) {
+    std::uniform_int_distribution<int> c(-3, 3), np(4, 8);
+    std::vector<Vec3q> v;
+    for (int k = np(g); k > 0; --k) v.push_back({Q(c(g) + ox), Q(c(g) + oy), Q(c(g))});
+    try {
+        parts.push_back(build_polyhedron(v, "part"));
+    } catch (const InputError&) {
+        return false;
+    }
+    in.parts.push_back(v);
+    in.points.insert(in.points.end(), v.begin(), v.end());
+    return true;
+}
 // Two random compounds of three parts each (4 to 8 points in a cube of side 6 at random offsets,
 // object 2 shifted by 7 along x), seeds anywhere in the plane z = 0, I1 = I2 = [1/4, 3]; the parts'
 // polyhedra in `parts`.
 ExactScene three_part_compounds(std::mt19937& g, std::vector<Polyhedron> parts[2]) {
-    std::uniform_int_distribution<int> c(-3, 3), off(-5, 5), np(4, 8);
+    std::uniform_int_distribution<int> off(-5, 5);
     ExactScene sc;
     for (int i = 0; i < 2; ++i) {
         while (sc.P[i].parts.size() < 3) {
-            std::vector<Vec3q> v;
             const int ox = off(g) + (i ? 7 : 0), oy = off(g);
-            for (int k = np(g); k > 0; --k) v.push_back({Q(c(g) + ox), Q(c(g) + oy), Q(c(g))});
-            try {
-                parts[i].push_back(build_polyhedron(v, "part"));
-            } catch (const InputError&) {
-                continue;
-            }
-            sc.P[i].parts.push_back(v);
-            sc.P[i].points.insert(sc.P[i].points.end(), v.begin(), v.end());
+            add_random_part(g, ox, oy, sc.P[i], parts[i]);
         }
         sc.P[i].seed = {Q(off(g) + (i ? 7 : 0)), Q(off(g)), Q(0)};
         sc.P[i].seed_given = true;
@@ -323,16 +330,8 @@ BOOST_AUTO_TEST_CASE(certificate_polygons_equal_the_brute_force) {
         for (int i = 0; i < 2; ++i) {
             const int want = nparts(g);
             while (static_cast<int>(sc.P[i].parts.size()) < want) {
-                std::vector<Vec3q> v;
                 const int ox = off(g) * 2 + (i ? 9 : 0), oy = off(g);
-                for (int k = np(g); k > 0; --k) v.push_back({Q(c(g) + ox), Q(c(g) + oy), Q(c(g))});
-                try {
-                    parts[i].push_back(build_polyhedron(v, "part"));
-                } catch (const InputError&) {
-                    continue;
-                }
-                sc.P[i].parts.push_back(v);
-                sc.P[i].points.insert(sc.P[i].points.end(), v.begin(), v.end());
+                add_random_part(g, ox, oy, sc.P[i], parts[i]);
             }
             sc.P[i].seed = {Q(off(g) + (i ? 9 : 0)), Q(off(g)), Q(c(g))};
             sc.P[i].seed_given = true;
