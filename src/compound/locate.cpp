@@ -9,8 +9,6 @@
 namespace scalecert::internal {
 
 namespace {
-using filter::half_plane_side_filter;
-using filter::region_double;
 
 // Grid lines over [lo, hi]: G + 1 increasing doubles from the largest double <= lo to the smallest
 // double >= hi (equal neighbours dropped).
@@ -25,13 +23,6 @@ std::vector<double> lines(const Q& lo, const Q& hi, int G) {
     }
     v.push_back(b);
     return v;
-}
-// The sign of a x + b y − c for the exact h at the exact double point (x, y): filter 8, else exactly.
-int sign_at(const HalfPlane& h, const std::array<double, 3>& hd, double x, double y, filter::PredicateStats& st) {
-    const int f = half_plane_side_filter(hd[0], hd[1], hd[2], x, y);
-    if (f) return st.filtered(filter::Predicate::HalfPlaneSide), f;
-    st.exact(filter::Predicate::HalfPlaneSide);
-    return sgn(Q(h.a * Q(x) + h.b * Q(y) - h.c));
 }
 }  // namespace
 
@@ -54,13 +45,11 @@ CompoundLocator::CompoundLocator(const CompoundRegion& r, const Q lo[2], const Q
     auto inner = [&](size_t i, size_t j) {
         return Q(x_[i]) > lo[0] && Q(x_[i + 1]) < hi[0] && Q(y_[j]) > lo[1] && Q(y_[j + 1]) < hi[1];
     };
-    pd_.resize(r.pairs.size());
+    only_touches_.assign(r.pairs.size(), false);
     for (size_t k = 0; k < r.pairs.size(); ++k) {
         const CompoundRegion::Pair& p = r.pairs[k];
-        for (const HalfPlane& h : p.constraints) {
-            pd_[k].h.push_back({region_double(h.a), region_double(h.b), region_double(h.c)});
-            if (!sgn(h.a) && !sgn(h.b) && !sgn(h.c)) pd_[k].null_constraint = true;
-        }
+        for (const HalfPlane& h : p.constraints)
+            if (!sgn(h.a) && !sgn(h.b) && !sgn(h.c)) only_touches_[k] = true;
         if (p.polygon.empty()) continue;  // apart in the whole rectangle: never a candidate
         Q x0 = p.polygon[0][0], x1 = x0, y0 = p.polygon[0][1], y1 = y0;
         for (const Point2q& v : p.polygon) x0 = std::min(x0, v[0]), x1 = std::max(x1, v[0]), y0 = std::min(y0, v[1]), y1 = std::max(y1, v[1]);
@@ -80,9 +69,12 @@ CompoundLocator::CompoundLocator(const CompoundRegion& r, const Q lo[2], const Q
         std::vector<std::int8_t> sg(cw * ch * nf);
         for (size_t j = 0; j < ch; ++j)
             for (size_t i = 0; i < cw; ++i)
-                for (size_t f = 0; f < nf; ++f)
+                for (size_t f = 0; f < nf; ++f) {
+                    const HalfPlane& h = p.constraints[p.fence[f]];
+                    const double x = x_[i0 + i], y = y_[j0 + j];
                     sg[(j * cw + i) * nf + f] = static_cast<std::int8_t>(
-                        sign_at(p.constraints[p.fence[f]], pd_[k].h[p.fence[f]], x_[i0 + i], y_[j0 + j], st));
+                        filter::half_plane_side(h.ad, h.bd, h.cd, x, y, [&] { return sgn(Q(h.a * Q(x) + h.b * Q(y) - h.c)); }, st));
+                }
         for (size_t j = j0; j < j1; ++j)
             for (size_t i = i0; i < i1; ++i) {
                 const size_t c[4] = {(j - j0) * cw + (i - i0), (j - j0) * cw + (i - i0 + 1), (j - j0 + 1) * cw + (i - i0),
@@ -99,7 +91,7 @@ CompoundLocator::CompoundLocator(const CompoundRegion& r, const Q lo[2], const Q
                 }
                 if (clear) continue;
                 Cell& cell = cells_[j * nx + i];
-                if (all_inside && !pd_[k].null_constraint && inner(i, j)) cell.covered = true;
+                if (all_inside && !only_touches_[k] && inner(i, j)) cell.covered = true;
                 else lists[j * nx + i].push_back(static_cast<std::uint32_t>(k));
             }
     }
@@ -115,15 +107,9 @@ int CompoundLocator::pair_verdict(std::uint32_t k, double r1, double r2, filter:
     const CompoundRegion::Pair& p = r_.pairs[k];
     int least = 1;
     for (size_t f = 0; f < p.constraints.size() && least >= 0; ++f) {
-        const auto& hd = pd_[k].h[f];
-        int s = half_plane_side_filter(hd[0], hd[1], hd[2], r1, r2);
-        if (s) st.filtered(filter::Predicate::HalfPlaneSide);
-        else {
-            st.exact(filter::Predicate::HalfPlaneSide);
-            const HalfPlane& h = p.constraints[f];
-            s = sgn(Q(h.a * Q(r1) + h.b * Q(r2) - h.c));  // a double is a dyadic rational: exact
-        }
-        least = std::min(least, s);
+        const HalfPlane& h = p.constraints[f];
+        // (a double is a dyadic rational: its exact value, formed only when the filter cannot tell)
+        least = std::min(least, filter::half_plane_side(h.ad, h.bd, h.cd, r1, r2, [&] { return sgn(Q(h.a * Q(r1) + h.b * Q(r2) - h.c)); }, st));
     }
     return least < 0 ? 0 : least == 0 ? 1 : 2;
 }

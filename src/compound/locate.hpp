@@ -40,10 +40,7 @@ private:
         std::uint32_t first = 0, count = 0;  // candidate pairs in cand_
         bool covered = false;
     };
-    struct PairD {
-        std::vector<std::array<double, 3>> h;  // every constraint's a, b, c by region_double
-        bool null_constraint = false;          // some constraint is 0 = 0: the pair only touches
-    };
+
     const CompoundRegion& r_;
     Q lo_[2], hi_[2];
     double lo_up_[2], hi_down_[2];  // the smallest double >= lo, the largest <= hi: a double x lies
@@ -51,7 +48,7 @@ private:
     std::vector<double> x_, y_;  // grid lines, increasing: x_[0] <= lo1, x_.back() >= hi1
     std::vector<Cell> cells_;    // row-major: cell (i, j) at j * (x_.size() - 1) + i
     std::vector<std::uint32_t> cand_;
-    std::vector<PairD> pd_;
+    std::vector<bool> only_touches_;  // per pair: some constraint is 0 >= 0 everywhere (never overlapping)
     int pair_verdict(std::uint32_t k, double r1, double r2, filter::PredicateStats& st) const;
 };
 

@@ -42,33 +42,24 @@ std::vector<Vec3z> minkowski_facet_normals(const Polyhedron& A, const Polyhedron
 }
 
 namespace {
-using filter::half_plane_side_filter;
 using filter::region_double;
 
-struct HalfPlaneD { double a, b, c; };
 struct PointD { double x, y; };
 std::vector<PointD> doubles(const std::vector<Point2q>& p) {
     std::vector<PointD> d;
     for (const Point2q& v : p) d.push_back({region_double(v[0]), region_double(v[1])});
     return d;
 }
-// The sign of h at v: the filter (predicate 8), else exactly.
-int side(const HalfPlane& h, const HalfPlaneD& hd, const Point2q& v, const PointD& vd, filter::PredicateStats& st) {
-    const int f = half_plane_side_filter(hd.a, hd.b, hd.c, vd.x, vd.y);
-    if (f) return st.filtered(filter::Predicate::HalfPlaneSide), f;
-    st.exact(filter::Predicate::HalfPlaneSide);
-    return sgn(Q(h.a * v[0] + h.b * v[1] - h.c));
-}
 
 // The convex polygon p (corners counter-clockwise) cut to a ρ1 + b ρ2 >= c in doubles: a guess
 // of whether the constraint cuts the polygon at all (it picks the candidates; exact cuts decide).
-std::vector<PointD> cut_d(const std::vector<PointD>& p, const HalfPlaneD& h, bool& cut) {
+std::vector<PointD> cut_d(const std::vector<PointD>& p, const HalfPlane& h, bool& cut) {
     std::vector<PointD> out;
     cut = false;
-    const double scale = std::fabs(h.a) + std::fabs(h.b) + std::fabs(h.c);
+    const double scale = std::fabs(h.ad) + std::fabs(h.bd) + std::fabs(h.cd);
     for (size_t i = 0; i < p.size(); ++i) {
         const PointD &x = p[i], &y = p[(i + 1) % p.size()];
-        const double fx = h.a * x.x + h.b * x.y - h.c, fy = h.a * y.x + h.b * y.y - h.c;
+        const double fx = h.ad * x.x + h.bd * x.y - h.cd, fy = h.ad * y.x + h.bd * y.y - h.cd;
         if (fx >= 0) out.push_back(x);
         if (fx < -1e-12 * scale) cut = true;
         if ((fx > 0 && fy < 0) || (fx < 0 && fy > 0)) {
@@ -94,7 +85,6 @@ PairRegion pair_region(const Polyhedron& A, const Polyhedron& B, const Vec3q& s1
     PairRegion r;
     const std::vector<Point2q> rect = normalize_polygon({{lo[0], lo[1]}, {hi[0], lo[1]}, {hi[0], hi[1]}, {lo[0], hi[1]}});
     const Vec3q d = sub(s2, s1);
-    std::vector<HalfPlaneD> hd;
     for (const Vec3z& n : minkowski_facet_normals(A, B)) {
         const Vec3q nq = to_q(n);
         HalfPlane h;
@@ -102,7 +92,7 @@ PairRegion pair_region(const Polyhedron& A, const Polyhedron& B, const Vec3q& s1
         h.b = B.support(neg(n)) + dot(nq, s2);
         h.c = dot(nq, d);
         h.normal = n;
-        hd.push_back({region_double(h.a), region_double(h.b), region_double(h.c)});
+        h.ad = region_double(h.a), h.bd = region_double(h.b), h.cd = region_double(h.c);
         r.constraints.push_back(std::move(h));
     }
     const std::vector<HalfPlane>& hs = r.constraints;
@@ -111,7 +101,7 @@ PairRegion pair_region(const Polyhedron& A, const Polyhedron& B, const Vec3q& s1
         std::vector<PointD> pd = doubles(rect);
         for (size_t k = 0; k < hs.size() && !pd.empty(); ++k) {
             bool cut = false;
-            std::vector<PointD> q = cut_d(pd, hd[k], cut);
+            std::vector<PointD> q = cut_d(pd, hs[k], cut);
             if (cut) cand.push_back(k), pd = std::move(q);
         }
     }
@@ -124,7 +114,7 @@ PairRegion pair_region(const Polyhedron& A, const Polyhedron& B, const Vec3q& s1
     for (size_t k = 0; k < hs.size() && !p.empty(); ++k) {
         if (in_cand[k]) continue;
         bool holds = true;
-        for (size_t i = 0; i < p.size() && holds; ++i) holds = side(hs[k], hd[k], p[i], pd[i], st) >= 0;
+        for (size_t i = 0; i < p.size() && holds; ++i) holds = hs[k].side(p[i][0], p[i][1], pd[i].x, pd[i].y, st) >= 0;
         if (holds) continue;
         p = cut_polygon(p, hs[k].a, hs[k].b, hs[k].c);
         pd = doubles(p);
@@ -141,7 +131,8 @@ PairRegion pair_region(const Polyhedron& A, const Polyhedron& B, const Vec3q& s1
             if (on_rect_side(u, v)) continue;
             size_t found = hs.size();
             for (size_t k : cand)
-                if (side(hs[k], hd[k], u, pd[i], st) == 0 && side(hs[k], hd[k], v, pd[(i + 1) % p.size()], st) == 0) {
+                if (hs[k].side(u[0], u[1], pd[i].x, pd[i].y, st) == 0 &&
+                    hs[k].side(v[0], v[1], pd[(i + 1) % p.size()].x, pd[(i + 1) % p.size()].y, st) == 0) {
                     found = k;
                     break;
                 }

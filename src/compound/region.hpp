@@ -30,6 +30,12 @@ using Point2q = Pt2;  // (ρ1, ρ2)
 struct HalfPlane {
     Q a, b, c;
     Vec3z normal;
+    double ad = 0, bd = 0, cd = 0;  // a, b, c by filter::region_double, for predicate 8
+    // The sign of a x + b y − c at (x, y), given also as doubles (xd, yd: region_double, or the
+    // doubles themselves when x and y are doubles): predicate 8, exactly when its filter cannot tell.
+    int side(const Q& x, const Q& y, double xd, double yd, filter::PredicateStats& st) const {
+        return filter::half_plane_side(ad, bd, cd, xd, yd, [&] { return sgn(Q(a * x + b * y - c)); }, st);
+    }
 };
 
 // One part pair's overlap set in the rectangle I1 × I2 (lo, hi: ρ1's and ρ2's ranges): a convex

@@ -352,6 +352,14 @@ inline int half_plane_side_filter(double a, double b, double c, double x, double
     if (f < -err) return -1;
     return 0;
 }
+// 8. The sign of a·x + b·y − c: the filter on the doubles, else exact() (the exact sign), counted.
+template <class Exact>
+inline int half_plane_side(double a, double b, double c, double x, double y, Exact&& exact, PredicateStats& st) {
+    const int f = half_plane_side_filter(a, b, c, x, y);
+    if (f) return st.filtered(Predicate::HalfPlaneSide), f;
+    st.exact(Predicate::HalfPlaneSide);
+    return exact();
+}
 // A rational's double for filter 8: mpq's get_d when that is 0 for 0 or a finite normal double,
 // else not a number (so that the filter never answers).
 template <class Rational>
