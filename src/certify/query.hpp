@@ -1,5 +1,6 @@
 // Stage 5: exact three-state queries with certificates.
 #pragma once
+#include <optional>
 #include "curve/envelope.hpp"
 
 namespace scalecert::internal {
@@ -43,6 +44,9 @@ PlaneCert plane_certificate(const Model& m, size_t line, const Q& rho1, const Q&
 Witness make_witness(const Model& m, const Q& rho1, const Q& rho2, size_t line);
 // A common point of conv(vertices i1 of P1(ρ1)) and conv(vertices i2 of P2(ρ2)); with interior,
 // one in both relative interiors, every listed vertex weighted > 0.
+// The same, none when those points hold no common point (make_witness throws then: a bug).
+std::optional<Witness> try_witness(const Model& m, const Q& rho1, const Q& rho2, const std::vector<int>& i1, const std::vector<int>& i2,
+                                   bool interior = false);
 Witness make_witness(const Model& m, const Q& rho1, const Q& rho2, const std::vector<int>& i1, const std::vector<int>& i2,
                      bool interior);
 

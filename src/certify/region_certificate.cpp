@@ -2,7 +2,7 @@
 #include "certify/region_certificate.hpp"
 
 #include "geometry/gjk.hpp"
-#include "geometry/witness.hpp"
+#include "certify/query.hpp"
 #include "numeric/parallel.hpp"
 
 #include <map>
@@ -12,8 +12,6 @@
 namespace scalecert::internal {
 
 namespace {
-void put(Json& o, const std::string& key, const Q& q) { put_exact(o, key, q); }
-
 Json points_json(const std::vector<Vec3q>& pts) {
     Json a = Json::array();
     for (const Vec3q& v : pts) a.push_back(Json::array({to_exact_string(v[0]), to_exact_string(v[1]), to_exact_string(v[2])}));
@@ -35,44 +33,16 @@ Json compound_scene_json(const ExactScene& sc) {
     return s;
 }
 
-Vec3q scaled(const Vec3q& v, const Vec3q& s, const Q& rho) {
-    return {s[0] + rho * (v[0] - s[0]), s[1] + rho * (v[1] - s[1]), s[2] + rho * (v[2] - s[2])};
-}
-
-// A common point of A(ρ1) and B(ρ2), weights indexed into each part's own point list: an exact LP
-// over the few vertices a double GJK names (hm holds the two parts and the seeds), else over all
+// A common point of A(ρ1) and B(ρ2) (hm holds the two parts and the seeds), weights indexed into
+// each part's own point list: an exact LP over the few vertices a double GJK names, else over all
 // the parts' vertices. The LP decides; GJK only proposes (its simplex may miss a touching face).
 Witness pair_witness(const HullModel& hm, const Q& r1, const Q& r2, long& fallbacks) {
-    const Polyhedron &A = hm.P[0], &B = hm.P[1];
     const GjkGuess g = gjk_guess(hm, r1.get_d(), r2.get_d());
-    for (int attempt = 0; attempt < 2; ++attempt) {
-        const std::vector<int>& ia = attempt == 0 ? g.v1 : A.vertices;
-        const std::vector<int>& ib = attempt == 0 ? g.v2 : B.vertices;
-        if (ia.empty() || ib.empty()) continue;
-        std::vector<Vec3q> a, b;
-        for (int v : ia) a.push_back(scaled(A.points[static_cast<size_t>(v)], hm.s[0], r1));
-        for (int v : ib) b.push_back(scaled(B.points[static_cast<size_t>(v)], hm.s[1], r2));
-        const auto cp = common_point(a, b);
-        if (!cp) {
-            if (attempt == 0) ++fallbacks;
-            continue;
-        }
-        Witness w;
-        w.rho1 = r1;
-        w.rho2 = r2;
-        w.point = {Q(0), Q(0), Q(0)};
-        for (size_t k = 0; k < a.size(); ++k)
-            if (sgn(cp->lambda[k])) {
-                w.w1.push_back({ia[k], cp->lambda[k]});
-                for (int c = 0; c < 3; ++c) w.point[c] += cp->lambda[k] * a[k][c];
-            }
-        for (size_t k = 0; k < b.size(); ++k)
-            if (sgn(cp->mu[k])) w.w2.push_back({ib[k], cp->mu[k]});
-        std::sort(w.w1.begin(), w.w1.end());
-        std::sort(w.w2.begin(), w.w2.end());
-        return w;
+    if (!g.v1.empty() && !g.v2.empty()) {
+        if (std::optional<Witness> w = try_witness(hm, r1, r2, g.v1, g.v2)) return std::move(*w);
+        ++fallbacks;
     }
-    throw std::logic_error("no common point at a corner of a part pair's overlap polygon");
+    return make_witness(hm, r1, r2, hm.P[0].vertices, hm.P[1].vertices, false);
 }
 
 Json polygon_json(Json& o, const std::vector<Point2q>& poly) {
@@ -171,8 +141,8 @@ Json compound_partition_json(const ExactScene& sc, const CompoundRegion& r) {
     Json growth = Json::array();
     for (const auto& iv : r.growth) {
         Json g;
-        put(g, "from", iv.from);
-        put(g, "to", iv.to);
+        put_exact(g, "from", iv.from);
+        put_exact(g, "to", iv.to);
         g["first_contact"] = Json{{"P1_part", iv.part1}, {"P2_part", iv.part2}};
         growth.push_back(g);
     }
