@@ -178,7 +178,7 @@ BOOST_AUTO_TEST_CASE(pair_regions_equal_the_separating_axis_brute_force) {
         const PairRegion r = pair_region(P[0], P[1], s1, s2, lo, hi);
         std::vector<Point2q> probes;
         std::uniform_int_distribution<int> q(1, 120);
-        for (int k = 0; k < 40; ++k) probes.push_back({Q(q(g), 40), Q(q(g), 40)});
+        for (int k = 0; k < 40; ++k) probes.push_back({test::qc(q(g), 40), test::qc(q(g), 40)});
         for (const Point2q& x : r.polygon)
             for (const Q& e : {Q(0), Q(1, 1 << 20), Q(-1, 1 << 20)}) probes.push_back({x[0] + e, x[1] - e});
         for (const Point2q& x : probes) {
@@ -206,7 +206,7 @@ BOOST_AUTO_TEST_CASE(compound_verdicts_equal_the_brute_force_over_all_pairs) {
         pruned += r.pruned;
         std::vector<Point2q> probes;
         std::uniform_int_distribution<int> q(10, 120);
-        for (int k = 0; k < 60; ++k) probes.push_back({Q(q(g), 40), Q(q(g), 40)});
+        for (int k = 0; k < 60; ++k) probes.push_back({test::qc(q(g), 40), test::qc(q(g), 40)});
         for (const auto& p : r.pairs)
             for (const Point2q& x : p.polygon) probes.push_back(x);
         for (const Point2q& x : probes) {
@@ -229,7 +229,7 @@ std::vector<Vec3q> box_points(const std::array<int, 6>& h) {
     std::vector<Vec3q> v;
     for (int x : {h[0], h[3]})
         for (int y : {h[1], h[4]})
-            for (int z : {h[2], h[5]}) v.push_back({Q(x, 2), Q(y, 2), Q(z, 2)});
+            for (int z : {h[2], h[5]}) v.push_back({test::qc(x, 2), test::qc(y, 2), test::qc(z, 2)});
     return v;
 }
 ExactScene compound_scene(const std::vector<std::array<int, 6>> parts[2], const Vec3q seeds[2], const Q lo[2], const Q hi[2]) {
@@ -361,7 +361,7 @@ BOOST_AUTO_TEST_CASE(certificate_polygons_equal_the_brute_force) {
         BOOST_TEST(covered.size() == parts[0].size() * parts[1].size());
         std::vector<Point2q> probes;
         std::uniform_int_distribution<int> q(10, 100);
-        for (int k = 0; k < 50; ++k) probes.push_back({Q(q(g), 40), Q(q(g), 40)});
+        for (int k = 0; k < 50; ++k) probes.push_back({test::qc(q(g), 40), test::qc(q(g), 40)});
         for (const auto& p : polys)
             for (const Point2q& x : p)
                 for (const Q& e : {Q(0), Q(1, 1 << 16), Q(-1, 1 << 16)}) probes.push_back({x[0] + e, x[1] - e});
