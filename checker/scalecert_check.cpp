@@ -742,16 +742,20 @@ std::vector<P2> normalize(const std::vector<P2>& p) {
     return q;
 }
 
-std::vector<P2> clip(const std::vector<P2>& p, const Line& L, bool above) {
+// The convex polygon p cut to a x + b y >= c (not counted: the callers count it).
+std::vector<P2> half_plane_cut(const std::vector<P2>& p, const Q& a, const Q& b, const Q& c) {
     std::vector<P2> out;
     for (size_t i = 0; i < p.size(); ++i) {
         const P2 &u = p[i], &v = p[(i + 1) % p.size()];
-        Q fu = u[1] - L.at(u[0]), fv = v[1] - L.at(v[0]);
-        if (!above) { fu = -fu; fv = -fv; }
+        const Q fu = a * u[0] + b * u[1] - c, fv = a * v[0] + b * v[1] - c;
         if (sgn(fu) >= 0) out.push_back(u);
         if (sgn(fu) * sgn(fv) < 0) { Q t = fu / (fu - fv); out.push_back({u[0] + t * (v[0] - u[0]), u[1] + t * (v[1] - u[1])}); }
     }
     return normalize(out);
+}
+// p cut to ρ2 >= L(ρ1) (above) or ρ2 <= L(ρ1).
+std::vector<P2> clip(const std::vector<P2>& p, const Line& L, bool above) {
+    return above ? half_plane_cut(p, -L.a, Q(1), L.b) : half_plane_cut(p, L.a, Q(-1), -L.b);
 }
 
 // The overlap region I1 × I2 ∩ {ρ2 >= curve}, from the pieces once they are verified: contiguous
@@ -1744,22 +1748,14 @@ void check_judgements(const J& c) {
 // point of the rectangle is in the overlap region iff it lies in some listed polygon.
 constexpr size_t kMaxCompoundParts = 10000;  // parts an object: scalecert's own limit
 
-// The convex polygon p cut to a x + b y >= c (the checker's clip() for lines of any direction).
-// Counted before it runs: each vertex's value (3 operations) and each crossing (about 8), every
+// half_plane_cut, counted before it runs: each vertex's value (3 operations) and each crossing (about 8), every
 // operation on the line's numbers and the largest vertex (the hostile review: counting the first
 // vertex only let a polygon with huge corners be cut by 40,000 small normals for 97 s).
 std::vector<P2> cut(const std::vector<P2>& p, const Q& a, const Q& b, const Q& c) {
     double big = 0;
     for (const P2& v : p) big = std::max(big, qsize(v[0]) + qsize(v[1]));
     spend_ops(11.0 * static_cast<double>(p.size() + 1), qsize(a) + qsize(b) + qsize(c) + big);
-    std::vector<P2> out;
-    for (size_t i = 0; i < p.size(); ++i) {
-        const P2 &u = p[i], &v = p[(i + 1) % p.size()];
-        const Q fu = a * u[0] + b * u[1] - c, fv = a * v[0] + b * v[1] - c;
-        if (sgn(fu) >= 0) out.push_back(u);
-        if (sgn(fu) * sgn(fv) < 0) { Q t = fu / (fu - fv); out.push_back({u[0] + t * (v[0] - u[0]), u[1] + t * (v[1] - u[1])}); }
-    }
-    return normalize(out);
+    return half_plane_cut(p, a, b, c);
 }
 
 // [first, last] of a part range, 0 <= first <= last < n.

@@ -509,9 +509,7 @@ void compound_costs(bool quick) {
         const std::string cert = dump(compound_partition_json(sc, r));
         const double t_cert = secs(t0);
         t0 = Clock::now();
-        size_t corners = 0;
-        for (const auto& p : r.pairs) corners += p.polygon.size();
-        const int G = static_cast<int>(std::clamp<double>(std::sqrt(2.0 * static_cast<double>(corners)), 16, 128));
+        const int G = CompoundLocator::grid_for(r);
         const CompoundLocator L(r, sc.lo, sc.hi, G);
         const double t_grid = secs(t0);
         const long nq = quick ? 200000 : 2000000;

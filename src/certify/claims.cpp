@@ -257,6 +257,7 @@ private:
                 best = &s;
                 break;
             }
+        const bool matched = best != nullptr;
         if (!best) {
             best = &exs.front();
             for (const ExactSwitch& s : exs)
@@ -282,10 +283,9 @@ private:
         }
         const bool label_right = !lab || *lab == best->label;
         o["contact_right"] = lab ? Json(label_right) : Json(nullptr);
-        const bool matched = close(r1, best->rho1) && close(r2, best->rho2) && (!lab || *lab == best->label);
         text = "switch point (" + num(r1) + ", " + num(r2) + (lab ? ", " + *lab : "") + (matched ? "): matches exact (" : "): nearest exact (") + num(best->rho1) +
                ", " + num(best->rho2) + ", " + best->label + ")";
-        return close(r1, best->rho1) && close(r2, best->rho2) && label_right;
+        return matched;
     }
 
     // A point of the curve: ρ2 = f(ρ1) > 0, within the tolerance (the line `curve RHO1 RHO2`, exactly).

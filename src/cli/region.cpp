@@ -10,7 +10,6 @@
 #include "io/files.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <thread>
 
 namespace scalecert::cli {
@@ -78,11 +77,7 @@ Command add_region(CLI::App& app) {
                 const bool document = !sub->count("--classify");
                 const CompoundRegion r = compound_region(sc, a->scene.name(), document);
                 if (sub->count("--classify")) {
-                    // About twice as many cells as the polygons' corners, from 16 x 16 to 128 x 128.
-                    size_t corners = 0;
-                    for (const auto& p : r.pairs) corners += p.polygon.size();
-                    const int G = static_cast<int>(std::clamp<double>(std::sqrt(2.0 * static_cast<double>(corners)), 16, 128));
-                    const CompoundLocator L(r, sc.lo, sc.hi, G);
+                    const CompoundLocator L(r, sc.lo, sc.hi, CompoundLocator::grid_for(r));
                     const std::vector<std::int8_t> v = L.classify(p1, p2, a->threads);
                     std::vector<Verdict> out(v.size());
                     for (size_t k = 0; k < v.size(); ++k) out[k] = v[k] == 0 ? Verdict::Separated : v[k] == 1 ? Verdict::Touching : Verdict::Overlapping;

@@ -143,6 +143,12 @@ std::vector<std::int8_t> CompoundLocator::classify(const std::vector<double>& rh
     return out;
 }
 
+int CompoundLocator::grid_for(const CompoundRegion& r) {
+    size_t corners = 0;
+    for (const auto& p : r.pairs) corners += p.polygon.size();
+    return static_cast<int>(std::clamp<double>(std::sqrt(2.0 * static_cast<double>(corners)), 16, 128));
+}
+
 CompoundLocator::Counts CompoundLocator::counts() const {
     Counts c;
     for (const Cell& x : cells_) {

@@ -26,6 +26,9 @@ class CompoundLocator {
 public:
     // G × G cells (G >= 1). The region r must outlive the locator.
     CompoundLocator(const CompoundRegion& r, const Q lo[2], const Q hi[2], int G);
+    // The grid the command and the bench use: about twice as many cells as the polygons' corners,
+    // from 16 x 16 to 128 x 128.
+    static int grid_for(const CompoundRegion& r);
     // 0 separated, 1 touching, 2 overlapping at (ρ1, ρ2), which must lie in I1 × I2 (InputError
     // otherwise). Safe to call from several threads at once (statistics go to `stats`).
     int verdict(double rho1, double rho2, filter::PredicateStats& stats) const;

@@ -227,6 +227,7 @@ CompoundRegion compound_region(const ExactScene& sc, const std::string& name, bo
     // Prune first (a byte a pair), and count the exact work the rest would take.
     r.prune.assign(m * n, 0);
     double work = 0;
+    std::vector<std::pair<int, int>> todo;  // the pairs to build, part1-major
     for (size_t a = 0; a < m; ++a)
         for (size_t b = 0; b < n; ++b) {
             for (int c = 0; c < 3; ++c) {
@@ -241,6 +242,7 @@ CompoundRegion compound_region(const ExactScene& sc, const std::string& name, bo
                 continue;
             }
             ++r.built;
+            todo.push_back({static_cast<int>(a), static_cast<int>(b)});
             work += static_cast<double>(parts[0][a].edges.size()) * static_cast<double>(parts[1][b].edges.size());
         }
     if (static_cast<size_t>(r.built) > kMaxBuiltPairs)
@@ -252,10 +254,6 @@ CompoundRegion compound_region(const ExactScene& sc, const std::string& name, bo
     // The built pairs, on every core: each thread with its own copies of the parts (a part's
     // predicate statistics are written by its support queries), each pair's result in its slot.
     const Vec3q &s1 = sc.P[0].seed, &s2 = sc.P[1].seed;
-    std::vector<std::pair<int, int>> todo;
-    for (size_t a = 0; a < m; ++a)
-        for (size_t b = 0; b < n; ++b)
-            if (!r.prune[a * n + b]) todo.push_back({static_cast<int>(a), static_cast<int>(b)});
     const unsigned threads = static_cast<unsigned>(std::min<size_t>(default_threads(), std::max<size_t>(1, todo.size() / 8)));
     std::vector<std::vector<Polyhedron>> copies[2];
     for (int i = 0; i < 2; ++i) copies[i].assign(threads > 1 ? threads : 0, parts[i]);
@@ -266,7 +264,7 @@ CompoundRegion compound_region(const ExactScene& sc, const std::string& name, bo
         const Polyhedron& A = threads > 1 ? copies[0][t][static_cast<size_t>(a)] : parts[0][static_cast<size_t>(a)];
         const Polyhedron& B = threads > 1 ? copies[1][t][static_cast<size_t>(b)] : parts[1][static_cast<size_t>(b)];
         PairRegion pr = pair_region(A, B, s1, s2, sc.lo, sc.hi, &stats[t]);
-        r.pairs[k] = CompoundRegion::Pair{a, b, false, std::move(pr.polygon), std::move(pr.constraints), std::move(pr.fence)};
+        r.pairs[k] = CompoundRegion::Pair{a, b, std::move(pr.polygon), std::move(pr.constraints), std::move(pr.fence)};
     });
     for (const auto& st : stats) r.predicates += st;
     std::vector<std::vector<Point2q>> polys;

@@ -73,7 +73,6 @@ std::vector<RegionPiece> union_of(const std::vector<std::vector<Point2q>>& conve
 struct CompoundRegion {
     struct Pair {
         int part1, part2;
-        bool pruned;                         // false here: `pairs` holds the built pairs
         std::vector<Point2q> polygon;        // empty when apart in the rectangle
         std::vector<HalfPlane> constraints;  // every facet normal's half-plane
         std::vector<size_t> fence;           // PairRegion::fence
