@@ -6,6 +6,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include "certify/region_certificate.hpp"
+#include "compound/boundary.hpp"
 #include "compound/locate.hpp"
 #include "compound/region.hpp"
 #include "support.hpp"
@@ -249,6 +250,15 @@ ExactScene compound_scene(const std::vector<std::array<int, 6>> parts[2], const 
 Q qs(const nlohmann::ordered_json& j) { return Q(j.get<std::string>()); }
 }  // namespace
 
+// The U and the peg (tests/data/compound_u_peg.json, coordinates doubled): a_u_shape_and_a_peg.
+ExactScene u_peg_scene() {
+    const std::vector<std::array<int, 6>> parts[2] = {{{-6, -2, 0, 6, 2, 2}, {-6, -2, 2, -4, 2, 8}, {4, -2, 2, 6, 2, 8}},
+                                                      {{-2, -1, 4, 2, 1, 10}}};
+    const Vec3q seeds[2] = {{Q(0), Q(0), Q(1, 2)}, {Q(0), Q(0), Q(7, 2)}};
+    const Q lo[2] = {Q(1, 2), Q(1, 2)}, hi[2] = {Q(2), Q(3)};
+    return compound_scene(parts, seeds, lo, hi);
+}
+
 BOOST_AUTO_TEST_CASE(a_u_shape_and_a_peg) {
     // Object 1, a U about the seed (0, 0, 1/2): the bottom [-3,3] x [-1,1] x [0,1] and the walls
     // [-3,-2] and [2,3] x [-1,1] x [1,4]. Object 2, the peg [-1,1] x [-1/2,1/2] x [2,5] about its
@@ -263,11 +273,7 @@ BOOST_AUTO_TEST_CASE(a_u_shape_and_a_peg) {
     // wall's (1/2, 1), (3/2, 3), (1/2, 3). Their union is not convex: from (1/2, 1) up the wall's
     // line to where it crosses the bottom's (ρ1 + 6ρ1 = 6: (6/7, 12/7)), then the bottom's line.
     // On ρ1 = ρ2 only the bottom meets, from 4ρ = 6: the growth set is [3/2, 2].
-    const std::vector<std::array<int, 6>> parts[2] = {{{-6, -2, 0, 6, 2, 2}, {-6, -2, 2, -4, 2, 8}, {4, -2, 2, 6, 2, 8}},
-                                                      {{-2, -1, 4, 2, 1, 10}}};
-    const Vec3q seeds[2] = {{Q(0), Q(0), Q(1, 2)}, {Q(0), Q(0), Q(7, 2)}};
-    const Q lo[2] = {Q(1, 2), Q(1, 2)}, hi[2] = {Q(2), Q(3)};
-    const ExactScene sc = compound_scene(parts, seeds, lo, hi);
+    const ExactScene sc = u_peg_scene();
     const CompoundRegion r = compound_region(sc, "u_peg");
     BOOST_TEST_REQUIRE(r.pairs.size() == 3u);
     BOOST_TEST(r.pruned == 0);
@@ -387,10 +393,9 @@ BOOST_AUTO_TEST_CASE(located_verdicts_equal_the_exact_ones) {
     // peg (by hand: (1/2, 1) touches on the wall's line, (1, 3) overlaps, (2, 1) is apart) and on
     // random compounds, at random doubles, at the doubles nearest every polygon corner and its
     // neighbours, on every grid line and on the rectangle's edges; grids of 1 to 64 cells a side.
-    const std::vector<std::array<int, 6>> u[2] = {{{-6, -2, 0, 6, 2, 2}, {-6, -2, 2, -4, 2, 8}, {4, -2, 2, 6, 2, 8}}, {{-2, -1, 4, 2, 1, 10}}};
-    const Vec3q us[2] = {{Q(0), Q(0), Q(1, 2)}, {Q(0), Q(0), Q(7, 2)}};
-    const Q ulo[2] = {Q(1, 2), Q(1, 2)}, uhi[2] = {Q(2), Q(3)};
-    const CompoundRegion ur = compound_region(compound_scene(u, us, ulo, uhi), "u_peg");
+    const ExactScene usc = u_peg_scene();
+    const Q *ulo = usc.lo, *uhi = usc.hi;
+    const CompoundRegion ur = compound_region(usc, "u_peg");
     filter::PredicateStats st;
     for (int G : {1, 3, 16, 64}) {
         const CompoundLocator L(ur, ulo, uhi, G);
@@ -454,4 +459,169 @@ BOOST_AUTO_TEST_CASE(located_verdicts_equal_the_exact_ones) {
               << " overlapping), filter " << st[filter::Predicate::HalfPlaneSide].filtered << ", exact "
               << st[filter::Predicate::HalfPlaneSide].exact << "\n";
     BOOST_CHECK_THROW(CompoundLocator(ur, ulo, uhi, 4).verdict(0.4, 1.0, st), InputError);
+}
+
+namespace {
+// A labelled contact edge as the test states it: its pair, label and the one tight normal.
+void expect_contact(const BoundaryEdge& e, int p1, int p2, const CompoundRegion& r, const char* label, const Vec3z& n) {
+    BOOST_TEST_REQUIRE(e.contact.has_value());
+    const CompoundRegion::Pair& p = r.pairs[e.contact->pair];
+    BOOST_TEST(p.part1 == p1);
+    BOOST_TEST(p.part2 == p2);
+    BOOST_TEST(e.contact->contact.label == label);
+    BOOST_TEST_REQUIRE(e.contact->tight.size() == 1u);
+    BOOST_TEST((p.constraints[e.contact->tight[0]].normal == n));
+}
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(the_u_and_peg_boundary_labelled_by_hand) {
+    // The U and the peg of a_u_shape_and_a_peg. By hand: up the left wall's line ρ2 = 2ρ1 from
+    // (1/2, 1) to (6/7, 12/7), the wall's inner face x = −2 against the peg's face x = −1, normal
+    // +x (the left wall is the first of the two walls, whose polygons are equal); then the
+    // bottom's line ρ1 + 3ρ2 = 6 to (2, 4/3), the bottom's top z = 1 against the peg's bottom
+    // z = 2, normal +z (box_points lists a box's corners x-major, z fastest: the upper x face is
+    // points 4..7, the lower 0..3, the upper z face 1, 3, 5, 7, the lower 0, 2, 4, 6);
+    // then the rectangle's sides ρ1 = 2, ρ2 = 3, ρ1 = 1/2. One switch point, (6/7, 12/7), where the
+    // pair changes and the peg touches the bottom and both walls, each face to face.
+    const ExactScene sc = u_peg_scene();
+    const CompoundRegion r = compound_region(sc, "u_peg");
+    const CompoundBoundary b = label_boundary(r, sc);
+    BOOST_TEST_REQUIRE(b.rings.size() == 1u);
+    const std::vector<BoundaryEdge>& e = b.rings[0].edges;
+    BOOST_TEST_REQUIRE(e.size() == 5u);
+    BOOST_TEST((e[0].from == Point2q{Q(1, 2), Q(1)}));
+    BOOST_TEST((e[0].to == Point2q{Q(6, 7), Q(12, 7)}));
+    expect_contact(e[0], 1, 0, r, "FF", {Z(1), Z(0), Z(0)});
+    BOOST_TEST((e[0].contact->contact.feat1 == std::vector<int>{4, 5, 6, 7}));
+    BOOST_TEST((e[0].contact->contact.feat2 == std::vector<int>{0, 1, 2, 3}));
+    BOOST_TEST((e[1].to == Point2q{Q(2), Q(4, 3)}));
+    expect_contact(e[1], 0, 0, r, "FF", {Z(0), Z(0), Z(1)});
+    BOOST_TEST((e[1].contact->contact.feat1 == std::vector<int>{1, 3, 5, 7}));
+    BOOST_TEST((e[1].contact->contact.feat2 == std::vector<int>{0, 2, 4, 6}));
+    BOOST_TEST(e[2].bound == 1);  // ρ1 = 2
+    BOOST_TEST(e[3].bound == 3);  // ρ2 = 3
+    BOOST_TEST(e[4].bound == 0);  // ρ1 = 1/2
+    BOOST_TEST_REQUIRE(b.switches.size() == 1u);
+    BOOST_TEST((b.switches[0].at == Point2q{Q(6, 7), Q(12, 7)}));
+    BOOST_TEST(b.switches[0].pair_change);
+    BOOST_TEST_REQUIRE(b.switches[0].contacts.size() == 3u);
+    for (size_t k = 0; k < 3; ++k) {
+        BOOST_TEST(r.pairs[b.switches[0].contacts[k].pair].part1 == static_cast<int>(k));
+        BOOST_TEST(b.switches[0].contacts[k].contact.label == "FF");
+    }
+}
+
+BOOST_AUTO_TEST_CASE(the_band_boundary_labelled_by_hand) {
+    // The band of a_band_two_parts_either_side_of_the_seed: from (4/3, 1) along ρ2 = 1 to (5/2, 1);
+    // up 2ρ1 = 9/2 + ρ2/2 to (3, 3), where the right part's face x = 2 (scaled to 2ρ1) has passed
+    // the box's far face x = 5 (9/2 + ρ2/2): normal −x, a = hA(−x) = −2, b = 1/2, c = −9/2; back
+    // along ρ2 = 3 to (1, 3); down 3ρ1 = 9/2 − ρ2/2, the part's face x = 3 reaching the box's near
+    // face x = 4: normal +x. Face to face, and no switch point (each line runs side to side).
+    const ExactScene sc = load_scene(std::string(SCALECERT_SOURCE_DIR) + "/tests/data/compound_band.json", ReadOptions{false, true, true});
+    const CompoundRegion r = compound_region(sc, "band");
+    const CompoundBoundary b = label_boundary(r, sc);
+    BOOST_TEST_REQUIRE(b.rings.size() == 1u);
+    const std::vector<BoundaryEdge>& e = b.rings[0].edges;
+    BOOST_TEST_REQUIRE(e.size() == 4u);
+    BOOST_TEST(e[0].bound == 2);
+    expect_contact(e[1], 0, 0, r, "FF", {Z(-1), Z(0), Z(0)});
+    const HalfPlane& h = r.pairs[e[1].contact->pair].constraints[e[1].contact->tight[0]];
+    BOOST_TEST((h.a == -2 && h.b == Q(1, 2) && h.c == Q(-9, 2)));
+    BOOST_TEST((e[1].from == Point2q{Q(5, 2), Q(1)} && e[1].to == Point2q{Q(3), Q(3)}));
+    BOOST_TEST(e[2].bound == 3);
+    expect_contact(e[3], 0, 0, r, "FF", {Z(1), Z(0), Z(0)});
+    BOOST_TEST(b.switches.empty());
+}
+
+BOOST_AUTO_TEST_CASE(the_paper_fig5_sequence_on_the_region_boundary) {
+    // The paper's Fig. 5 scene as a region of one part each: its boundary inside [4/5, 3]^2 runs
+    // from (1, 3) (the curve ρ2 = 6 − 3ρ1 leaving ρ2 = 3) through the paper's sequence
+    // (V1,F2) -> (V1,E2) -> (E1,E2) -> (E1,V2) -> (F1,V2): switch points (23/19, 45/19), a vertex of
+    // P1 on an edge of P2, and (29/13, 18/13), an edge of P1 on a vertex of P2 (README, paper).
+    const ExactScene sc = load_scene(std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/fig5_vf_ve_ee.json", ReadOptions{false, true, true});
+    const CompoundRegion r = compound_region(sc, "fig5");
+    const CompoundBoundary b = label_boundary(r, sc);
+    BOOST_TEST_REQUIRE(b.rings.size() == 1u);
+    std::string seq;
+    for (const BoundaryEdge& e : b.rings[0].edges)
+        if (e.contact) seq += e.contact->contact.label + " ";
+    BOOST_TEST(seq == "VF EE FV ");
+    BOOST_TEST_REQUIRE(b.switches.size() == 2u);
+    BOOST_TEST((b.switches[0].at == Point2q{Q(23, 19), Q(45, 19)}));
+    BOOST_TEST((b.switches[1].at == Point2q{Q(29, 13), Q(18, 13)}));
+    BOOST_TEST_REQUIRE(b.switches[0].contacts.size() == 1u);
+    BOOST_TEST_REQUIRE(b.switches[1].contacts.size() == 1u);
+    BOOST_TEST(b.switches[0].contacts[0].contact.label == "VE");
+    BOOST_TEST(b.switches[1].contacts[0].contact.label == "EV");
+    BOOST_TEST(!b.switches[0].pair_change);
+}
+
+BOOST_AUTO_TEST_CASE(boundary_labels_equal_the_brute_force_contacts) {
+    // Random compounds (three parts each, seeds anywhere): at the middle of every contact edge of
+    // the region's boundary the labelled pair meets and no pair overlaps (separating-axis brute
+    // force), and its features are the brute force's smallest faces holding the touching set (over
+    // every cross product of point-to-point directions, support/brute_contact: no Gauss map). At
+    // every switch point the listed pairs are exactly those that meet there, each with the brute
+    // force's features.
+    std::mt19937 g(2211);
+    long edges = 0, switches = 0, contacts = 0, contact_changes = 0;
+    for (int t = 0; t < 12; ++t) {
+        std::vector<Polyhedron> parts[2];
+        const ExactScene sc = three_part_compounds(g, parts);
+        const CompoundRegion r = compound_region(sc, "scene");
+        const CompoundBoundary b = label_boundary(r, sc);
+        // The brute force's features of pair (a, b) at x, restricted to the parts' vertices.
+        auto brute = [&](int a, int bb, const Point2q& x) {
+            ExactScene one;
+            one.P[0].points = sc.P[0].parts[static_cast<size_t>(a)];
+            one.P[1].points = sc.P[1].parts[static_cast<size_t>(bb)];
+            for (int i = 0; i < 2; ++i) one.P[i].seed = sc.P[i].seed;
+            auto [f1, f2] = test::brute_contact(one, x[0], x[1]);
+            const Polyhedron* P[2] = {&parts[0][static_cast<size_t>(a)], &parts[1][static_cast<size_t>(bb)]};
+            std::vector<int>* f[2] = {&f1, &f2};
+            for (int i = 0; i < 2; ++i)
+                f[i]->erase(std::remove_if(f[i]->begin(), f[i]->end(), [&](int v) {
+                                return std::find(P[i]->vertices.begin(), P[i]->vertices.end(), v) == P[i]->vertices.end();
+                            }),
+                            f[i]->end());
+            return std::pair{f1, f2};
+        };
+        auto meets = [&](size_t a, size_t bb, const Point2q& x) {
+            return meet_brute(parts[0][a], parts[1][bb], sc.P[0].seed, sc.P[1].seed, x[0], x[1]);
+        };
+        for (const BoundaryRing& ring : b.rings)
+            for (const BoundaryEdge& e : ring.edges) {
+                if (!e.contact) continue;
+                const Point2q mid{(e.from[0] + e.to[0]) / 2, (e.from[1] + e.to[1]) / 2};
+                const CompoundRegion::Pair& p = r.pairs[e.contact->pair];
+                BOOST_TEST(meets(static_cast<size_t>(p.part1), static_cast<size_t>(p.part2), mid));
+                const auto [f1, f2] = brute(p.part1, p.part2, mid);
+                BOOST_TEST((f1 == e.contact->contact.feat1), "scene " << t);
+                BOOST_TEST((f2 == e.contact->contact.feat2), "scene " << t);
+                BOOST_TEST(compound_verdict(r, mid[0], mid[1]).verdict == std::string("touching"));
+                ++edges;
+            }
+        for (const CompoundSwitch& s : b.switches) {
+            std::vector<std::pair<int, int>> want, got;
+            for (size_t a = 0; a < parts[0].size(); ++a)
+                for (size_t bb = 0; bb < parts[1].size(); ++bb)
+                    if (meets(a, bb, s.at)) want.push_back({static_cast<int>(a), static_cast<int>(bb)});
+            for (const PairContact& c : s.contacts) {
+                const CompoundRegion::Pair& p = r.pairs[c.pair];
+                got.push_back({p.part1, p.part2});
+                const auto [f1, f2] = brute(p.part1, p.part2, s.at);
+                BOOST_TEST((f1 == c.contact.feat1), "scene " << t << " switch");
+                BOOST_TEST((f2 == c.contact.feat2), "scene " << t << " switch");
+                ++contacts;
+            }
+            BOOST_TEST((got == want), "scene " << t << " switch pairs");
+            ++switches;
+            contact_changes += !s.pair_change;
+        }
+    }
+    BOOST_TEST(edges > 20);
+    BOOST_TEST(switches > 5);
+    BOOST_TEST(contact_changes > 5);  // a pair's own contact changing: two tight normals (contact_on_line)
+    std::cout << "compound boundaries: " << edges << " contact edges and " << switches << " switch points (" << contact_changes
+              << " within one pair; " << contacts << " pair contacts) against the brute force\n";
 }

@@ -10,6 +10,7 @@
 #include "campaign/families.hpp"
 #include "certify/classify.hpp"
 #include "certify/region_certificate.hpp"
+#include "compound/boundary.hpp"
 #include "compound/locate.hpp"
 #include "compound/region.hpp"
 #include "quick_query.hpp"
@@ -506,6 +507,11 @@ void compound_costs(bool quick) {
         const CompoundRegion r = compound_region(sc, "bench");
         const double t_region = secs(t0);
         t0 = Clock::now();
+        const CompoundBoundary bd = label_boundary(r, sc);
+        const double t_labels = secs(t0);
+        size_t n_edges = 0;
+        for (const BoundaryRing& ring : bd.rings) n_edges += ring.edges.size();
+        t0 = Clock::now();
         const std::string cert = dump(compound_partition_json(sc, r));
         const double t_cert = secs(t0);
         t0 = Clock::now();
@@ -544,8 +550,8 @@ void compound_costs(bool quick) {
         char b[512], k[64];
         if (kept.empty()) std::snprintf(k, sizeof k, "no pair");
         else std::snprintf(k, sizeof k, "%.1f us (%.0fx)", t_kept * 1e6, t_kept / t_query);
-        std::snprintf(b, sizeof b, "| 10 x 10 parts each, %s | %zu | %ld | %.3f s | %.3f s (%zu KB) | %.3f s (%d x %d cells) | %.0f ns | %s | %.1f us (%.0fx) |",
-                      gap == 30 ? "side by side" : "far apart", r.prune.size(), r.built, t_region, t_cert, cert.size() / 1024, t_grid, G, G,
+        std::snprintf(b, sizeof b, "| 10 x 10 parts each, %s | %zu | %ld | %.3f s | %.3f s (%zu edges, %zu switch points) | %.3f s (%zu KB) | %.3f s (%d x %d cells) | %.0f ns | %s | %.1f us (%.0fx) |",
+                      gap == 30 ? "side by side" : "far apart", r.prune.size(), r.built, t_region, t_labels, n_edges, bd.switches.size(), t_cert, cert.size() / 1024, t_grid, G, G,
                       t_query * 1e9, k, t_all * 1e6, t_all / t_query);
         compound_rows.push_back(b);
         std::fprintf(stderr, "%s\n", b);

@@ -1,6 +1,7 @@
 // scalecert region: where two objects made of convex parts overlap in I1 × I2 (issue 22, first
 // room): each part pair's exact polygon, their union, and the growth set along ρ1 = ρ2.
 #include "common.hpp"
+#include "compound/boundary.hpp"
 #include "compound/region.hpp"
 #include "certify/certificate.hpp"
 #include "certify/classify.hpp"
@@ -21,6 +22,51 @@ Json ring_json(const std::vector<Point2q>& p) {
     Json a = Json::array();
     for (const Point2q& x : p) a.push_back(Json::array({to_exact_string(x[0]), to_exact_string(x[1])}));
     return a;
+}
+Json point_json(const Point2q& x) { return Json::array({to_exact_string(x[0]), to_exact_string(x[1])}); }
+// A pair's contact: its parts, label, features (vertex indices as each part lists its points),
+// tight normals, and the first one's line a rho1 + b rho2 = c (the pair meets on its >= side).
+Json contact_json(const CompoundRegion& r, const PairContact& c, bool with_line) {
+    const CompoundRegion::Pair& p = r.pairs[c.pair];
+    Json j{{"P1_part", p.part1}, {"P2_part", p.part2}, {"contact", c.contact.label},
+           {"features", Json{{"P1", c.contact.feat1}, {"P2", c.contact.feat2}}}};
+    Json normals = Json::array();
+    for (size_t k : c.tight) normals.push_back(normal_json(p.constraints[k].normal));
+    j["normals"] = normals;
+    if (with_line) {
+        const HalfPlane& h = p.constraints[c.tight.front()];
+        j["line"] = Json{{"a", to_exact_string(h.a)}, {"b", to_exact_string(h.b)}, {"c", to_exact_string(h.c)}};
+    }
+    return j;
+}
+void put_boundary(Json& j, const CompoundRegion& r, const ExactScene& sc) {
+    if (r.union_skipped) {
+        j["boundary"] = nullptr;
+        j["switch_points"] = nullptr;
+        return;
+    }
+    static const char* const sides[4] = {"rho1 = I1.lo", "rho1 = I1.hi", "rho2 = I2.lo", "rho2 = I2.hi"};
+    const CompoundBoundary b = label_boundary(r, sc);
+    Json rings = Json::array();
+    for (const BoundaryRing& ring : b.rings) {
+        Json edges = Json::array();
+        for (const BoundaryEdge& e : ring.edges) {
+            Json x{{"from", point_json(e.from)}, {"to", point_json(e.to)}};
+            if (e.contact) x["on"] = contact_json(r, *e.contact, true);
+            else x["on"] = sides[e.bound];
+            edges.push_back(x);
+        }
+        rings.push_back(Json{{"piece", ring.piece}, {"hole", ring.hole < 0 ? Json(nullptr) : Json(ring.hole)}, {"edges", edges}});
+    }
+    j["boundary"] = rings;
+    Json sw = Json::array();
+    for (const CompoundSwitch& s : b.switches) {
+        Json cs = Json::array();
+        for (const PairContact& c : s.contacts) cs.push_back(contact_json(r, c, false));
+        sw.push_back(Json{{"rho1", to_exact_string(s.at[0])}, {"rho2", to_exact_string(s.at[1])},
+                          {"change", s.pair_change ? "pair" : "contact"}, {"contacts", cs}});
+    }
+    j["switch_points"] = sw;
 }
 }  // namespace
 
@@ -120,6 +166,7 @@ Command add_region(CLI::App& app) {
                     growth.push_back(Json{{"from", to_exact_string(iv.from)}, {"to", to_exact_string(iv.to)},
                                           {"first_contact", Json{{"P1_part", iv.part1}, {"P2_part", iv.part2}}}});
                 j["growth_set"] = growth;
+                put_boundary(j, r, sc);
                 if (!x.empty()) {
                     const CompoundVerdict v = compound_verdict(r, x[0], x[1]);
                     Json at{{"rho1", to_exact_string(x[0])}, {"rho2", to_exact_string(x[1])}, {"verdict", v.verdict}};

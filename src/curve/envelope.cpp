@@ -3,6 +3,7 @@
 #include "curve/closed_forms.hpp"
 
 #include <algorithm>
+#include <functional>
 #include <iterator>
 #include <numeric>
 
@@ -74,25 +75,19 @@ Q Envelope::value(const std::vector<ContactLine>& lines, const Q& x) const {
     return lines[pieces[locate(x)].line].at(x);
 }
 
-ContactFeatures contact_at(const Model& m, const ContactLine& L, const ContactLine& R, const Q& rho1, const Q& rho2) {
-    // Both planes touch, so P1(ρ1) ∩ P2(ρ2) lies on their common line, direction u = nL × nR. The
-    // vertices of P_i maximising both normals scale onto that line and span a segment S_i; the
-    // touching set is S_1 ∩ S_2, and the contact feature of P_i is the smallest face holding it:
-    // S_i (an edge) when the touching set reaches into S_i's interior, else the end it meets.
-    const Vec3z u = cross(L.normal, R.normal);
-    const std::vector<int>* fl[2] = {&L.feat1, &L.feat2};
-    const std::vector<int>* fr[2] = {&R.feat1, &R.feat2};
-    const Q rho[2] = {rho1, rho2};
-    std::vector<int> A[2];
+ContactFeatures contact_on_line(const Vec3z& u, const std::vector<int> A[2], const std::function<Vec3q(int, int)>& scaled) {
+    // The vertices A_i of P_i maximising both normals scale onto the common line, direction u,
+    // and span a segment S_i; the touching set is S_1 ∩ S_2, and the contact feature of P_i is the
+    // smallest face holding it: S_i (an edge) when the touching set reaches into S_i's interior,
+    // else the end it meets.
     std::vector<Q> t[2];
     Q lo[2], hi[2];
     for (int i = 0; i < 2; ++i) {
-        std::set_intersection(fl[i]->begin(), fl[i]->end(), fr[i]->begin(), fr[i]->end(), std::back_inserter(A[i]));
         if (A[i].empty() || is_zero(u)) throw std::logic_error("contact_at: point not on a consistent contact");
         for (int k : A[i]) {
-            const Vec3q v = m.pt(i, k);
+            const Vec3q v = scaled(i, k);
             Q x = 0;
-            for (int c = 0; c < 3; ++c) x += Q(u[c]) * (m.s[i][c] + rho[i] * (v[c] - m.s[i][c]));
+            for (int c = 0; c < 3; ++c) x += Q(u[c]) * v[c];
             t[i].push_back(x);
         }
         lo[i] = *std::min_element(t[i].begin(), t[i].end());
@@ -110,6 +105,22 @@ ContactFeatures contact_at(const Model& m, const ContactLine& L, const ContactLi
         c.label += edge ? 'E' : 'V';
     }
     return c;
+}
+
+ContactFeatures contact_at(const Model& m, const ContactLine& L, const ContactLine& R, const Q& rho1, const Q& rho2) {
+    // Both planes touch, so P1(ρ1) ∩ P2(ρ2) lies on their common line, direction nL × nR.
+    const std::vector<int>* fl[2] = {&L.feat1, &L.feat2};
+    const std::vector<int>* fr[2] = {&R.feat1, &R.feat2};
+    const Q rho[2] = {rho1, rho2};
+    std::vector<int> A[2];
+    for (int i = 0; i < 2; ++i)
+        std::set_intersection(fl[i]->begin(), fl[i]->end(), fr[i]->begin(), fr[i]->end(), std::back_inserter(A[i]));
+    return contact_on_line(cross(L.normal, R.normal), A, [&](int i, int k) {
+        const Vec3q v = m.pt(i, static_cast<size_t>(k));
+        Vec3q x;
+        for (int c = 0; c < 3; ++c) x[c] = m.s[i][c] + rho[i] * (v[c] - m.s[i][c]);
+        return x;
+    });
 }
 
 ContactFeatures piece_contact(const Model& m, const EnvPiece& e) {

@@ -5,6 +5,7 @@
 #pragma once
 #include "curve/contact_lines.hpp"
 
+#include <functional>
 #include <optional>
 
 namespace scalecert::internal {
@@ -56,6 +57,10 @@ struct TouchingCurve {
     Growth growth;
 };
 
+// The contact where planes of two independent normals both touch: A[i] the vertices of P_i that
+// maximise both (their common face, −n for P2), u the cross product of the normals (the common
+// line's direction), scaled(i, k) vertex k of P_i scaled about its seed to its ρ_i.
+ContactFeatures contact_on_line(const Vec3z& u, const std::vector<int> A[2], const std::function<Vec3q(int, int)>& scaled);
 // The contact at a switch point (ρ1, ρ2) between neighbouring pieces on lines L and R: the
 // smallest face of each polyhedron holding the touching set (a vertex or an edge: both planes
 // touch, so the touching set lies on their common line).
