@@ -339,24 +339,6 @@ void assemble(Polyhedron& P, const std::vector<Plane<V>>& planes, const std::vec
         throw std::logic_error("hull fails Euler's formula");
 }
 
-// Whether the (integer-scaled) points span 3 dimensions.
-template <class V>
-bool affinely_3d(const std::vector<V>& pts) {
-    size_t i1 = 0, i2 = 0;
-    for (i1 = 1; i1 < pts.size() && pts[i1] == pts[0]; ++i1) {}
-    if (i1 == pts.size()) return false;
-    const V e1 = vsub(pts[i1], pts[0]);
-    V c;
-    for (i2 = i1 + 1; i2 < pts.size(); ++i2) {
-        c = vcross(e1, vsub(pts[i2], pts[0]));
-        if (!is_zero(c)) break;
-    }
-    if (i2 >= pts.size()) return false;
-    for (size_t i3 = i2 + 1; i3 < pts.size(); ++i3)
-        if (sign_of(vdot(c, vsub(pts[i3], pts[0])))) return true;
-    return false;
-}
-
 }  // namespace
 
 std::vector<HullPlane> hull_planes_brute(const std::vector<Vec3s>& pts) {

@@ -78,5 +78,29 @@ inline std::int64_t mag(std::int64_t v) { return v < 0 ? -v : v; }
 inline Z mag(const Z& v) { return abs(v); }
 inline Vec3z as_z(const Vec3s& v) { return to_z(v); }
 inline const Vec3z& as_z(const Vec3z& v) { return v; }
+// ... and on rational vectors (exact, any size).
+inline Vec3q vsub(const Vec3q& a, const Vec3q& b) { return sub(a, b); }
+inline Vec3q vcross(const Vec3q& a, const Vec3q& b) { return cross(a, b); }
+inline Q vdot(const Vec3q& a, const Vec3q& b) { return dot(a, b); }
+inline bool is_zero(const Vec3q& v) { return sgn(v[0]) == 0 && sgn(v[1]) == 0 && sgn(v[2]) == 0; }
+inline int sign_of(const Q& v) { return sgn(v); }
+
+// Whether the points span 3 dimensions (four of them affinely independent), exactly.
+template <class V>
+bool affinely_3d(const std::vector<V>& pts) {
+    size_t i1 = 0, i2 = 0;
+    for (i1 = 1; i1 < pts.size() && pts[i1] == pts[0]; ++i1) {}
+    if (i1 >= pts.size()) return false;
+    const V e1 = vsub(pts[i1], pts[0]);
+    V c;
+    for (i2 = i1 + 1; i2 < pts.size(); ++i2) {
+        c = vcross(e1, vsub(pts[i2], pts[0]));
+        if (!is_zero(c)) break;
+    }
+    if (i2 >= pts.size()) return false;
+    for (size_t i3 = i2 + 1; i3 < pts.size(); ++i3)
+        if (sign_of(vdot(c, vsub(pts[i3], pts[0])))) return true;
+    return false;
+}
 
 }  // namespace scalecert::internal
