@@ -933,3 +933,82 @@ BOOST_AUTO_TEST_CASE(region_of_compounds) {
         BOOST_TEST(mj["pair_regions"].size() == 1001u);
     }
 }
+
+BOOST_AUTO_TEST_CASE(region_parts_from_obj_groups) {
+    // The oracle: compound_band.json's two parts, written here as OBJ groups `g right` and `g left`
+    // (the points from the JSON itself), give region's very bytes for the JSON scene: by
+    // --p1/--p2, by a scene's "mesh" with --parts-from-groups, and by the scene key. The file also
+    // has a group without faces before the points (skipped), a vertex no face names (in no part;
+    // the seeds are given), the left group's points after its `g` line and its faces by negative
+    // numbers; two quads of each box (bottom and top) name all its 8 corners.
+    const fs::path src = fs::path(SCALECERT_SOURCE_DIR) / "tests/data";
+    const std::string band = (src / "compound_band.json").string();
+    const Run want = run("region " + band);
+    BOOST_TEST_REQUIRE(want.status == 0, want.err);
+    const auto sc = nlohmann::json::parse(slurp(band));
+    auto v_lines = [](const nlohmann::json& pts) {
+        std::string t;
+        for (const auto& p : pts) t += "v " + p[0].dump() + " " + p[1].dump() + " " + p[2].dump() + "\n";
+        return t;
+    };
+    const auto& parts = sc["P1"]["parts"];
+    BOOST_TEST_REQUIRE(parts.size() == 2u);
+    const std::string obj = "g default\nv 100 100 100\n" + v_lines(parts[0]["vertices"]) + "g right\nf 2 3 5 4\nf 6 7 9 8\ng left\n" +
+                            v_lines(parts[1]["vertices"]) + "usemtl any\nf -8 -7 -5 -6\nf -4/1 -3/2 -1/3 -2/4\n";
+    const fs::path band_obj = write("band_groups.obj", obj);
+    const fs::path box_obj = write("band_box.obj", v_lines(sc["P2"]["vertices"]) + "f 1 2 4 3\nf 5 6 8 7\n");
+    const std::string meshes = " --p1 " + band_obj.string() + " --p2 " + box_obj.string() + " --i1 1,4 --i2 1,3 --seed1 0,0,0 --seed2 9/2,0,0";
+    const Run by_options = run("region --parts-from-groups" + meshes);
+    BOOST_TEST(by_options.status == 0, by_options.err);
+    BOOST_TEST(by_options.out == want.out);
+    const std::string box = R"("P2": {"vertices": )" + sc["P2"]["vertices"].dump() + R"(, "seed": ["9/2", 0, 0]}, "I1": [1, 4], "I2": [1, 3]})";
+    const fs::path mesh_scene = write("band_mesh.json", R"({"P1": {"mesh": "band_groups.obj", "seed": [0, 0, 0]}, )" + box);
+    BOOST_TEST(run("region --parts-from-groups " + mesh_scene.string()).out == want.out);
+    const fs::path key_scene = write("band_key.json", R"({"P1": {"mesh": "band_groups.obj", "parts_from_groups": true, "seed": [0, 0, 0]}, )" + box);
+    BOOST_TEST(run("region " + key_scene.string()).out == want.out);
+    BOOST_TEST(run("region " + (src / "compound_band_groups.json").string()).out == want.out);  // the manual's example
+    // Without the flag the file is one convex object (the hull of every point, the stray one too).
+    const Run hull = run("region" + meshes);
+    BOOST_TEST(hull.status == 0, hull.err);
+    BOOST_TEST(hull.out != want.out);
+    // "parts_from_groups": false overrides the flag for its object.
+    const fs::path off_key = write("band_key_false.json", R"({"P1": {"mesh": "band_groups.obj", "parts_from_groups": false, "seed": [0, 0, 0]}, )" + box);
+    BOOST_TEST(run("region --parts-from-groups " + off_key.string()).out == hull.out);
+
+    // One group is the plain mesh: the same region, default seeds (the mean of the points) included.
+    const std::string right = v_lines(parts[0]["vertices"]);
+    const fs::path one = write("one_group.obj", right + "g only\nf 1 3 4 2\nf 5 6 8 7\n");
+    const std::string one_args = " --p1 " + one.string() + " --p2 " + box_obj.string() + " --i1 1,4 --i2 1,3";
+    const Run plain = run("region" + one_args);
+    BOOST_TEST_REQUIRE(plain.status == 0, plain.err);
+    BOOST_TEST(nlohmann::json::parse(plain.out)["pair_regions"].size() == 1u);  // they meet: rho1 + rho2 >= 4
+    BOOST_TEST(run("region --parts-from-groups" + one_args).out == plain.out);
+
+    // Bad groups: one line naming the group and its line, exit 2, no output.
+    const std::string tail = " --p2 " + box_obj.string() + " --i1 1,4 --i2 1,3";
+    auto R = [&](const std::string& name, const std::string& text) { return "region --parts-from-groups --p1 " + write(name, text).string() + tail; };
+    const std::string tetra = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n";
+    expect_error("flat group", R("flat_group.obj", tetra + "v 2 2 0\ng solid\nf 1 2 3\nf 1 2 4\ng sheet\nf 1 2 5 3\n"),
+                 "flat_group.obj: group 'sheet' (line 9): flat: the 4 vertices of its faces span fewer than 3 dimensions");
+    expect_error("one triangle", R("triangle_group.obj", tetra + "o tri\nf 1 2 3\n"), "group 'tri' (line 5): flat");
+    expect_error("flat, no o/g lines", R("flat_plain.obj", tetra + "f 1 2 3\n"), "the faces before any 'o' or 'g' line: flat");
+    expect_error("no faces", R("no_faces.obj", tetra), "no faces ('f' lines)");
+    expect_error("face past the vertices", R("far_face.obj", tetra + "f 1 2 5\n"), "line 5: face vertex '5' is not a vertex number (1 to 4");
+    expect_error("face vertex 0", R("zero_face.obj", tetra + "f 0 1 2\n"), "face vertex '0' is not a vertex number");
+    expect_error("negative before its vertex", R("neg_face.obj", "v 0 0 0\nf -1 -2 -1\n" + tetra), "face vertex '-2' is not a vertex number");
+    expect_error("two-vertex face", R("short_face.obj", tetra + "f 1 2\n"), "line 5: expected 'f' and at least 3 vertices");
+    std::string many;
+    for (int k = 0; k <= 10000; ++k) many += "g g" + std::to_string(k) + "\n" + tetra + "f -4 -3 -2\nf -4 -3 -1\n";
+    expect_error("more groups than parts", R("many_groups.obj", many), "more than 10000 groups with faces (the limit on parts)");
+    // Other formats have no groups; the other commands take no flag and no key.
+    const std::string stl = (fs::path(SCALECERT_SOURCE_DIR) / "examples/box.stl").string();
+    expect_error("STL with the flag", "region --parts-from-groups --p1 " + stl + tail, "box.stl: parts from groups need an OBJ file (an STL file has no groups)");
+    expect_error("OFF key with the flag", "region --parts-from-groups " + write("off_key.json", R"({"P1": {"off": "band_groups.obj", "seed": [0, 0, 0]}, )" + box).string(),
+                 "P1.off: an OFF file has no groups");
+    expect_error("key without a mesh", "region " + write("key_vertices.json", R"({"P1": {"vertices": [[0,0,0],[1,0,0],[0,1,0],[0,0,1]], "parts_from_groups": true}, )" + box).string(),
+                 "P1.parts_from_groups: parts from groups need an OBJ \"mesh\"");
+    expect_error("key not a boolean", "region " + write("key_one.json", R"({"P1": {"mesh": "band_groups.obj", "parts_from_groups": 1}, )" + box).string(),
+                 "P1.parts_from_groups: expected true or false");
+    expect_error("key elsewhere", "curve " + key_scene.string(), "P1.parts_from_groups: an object made of parts is read by `scalecert region` only");
+    expect_error("flag elsewhere", "curve --parts-from-groups" + meshes, "--parts-from-groups");
+}

@@ -33,7 +33,7 @@ internal::ExactScene SceneArgs::load() const {
     internal::ExactScene sc;
     for (int i = 0; i < 2; ++i) {
         const std::string n = std::to_string(i + 1);
-        sc.P[i].points = read_mesh(mesh[i], opt);
+        read_mesh_object(mesh[i], opt, sc.P[i]);
         const std::vector<Q> r = number_list(interval[i], 2, "--i" + n, opt);
         sc.lo[i] = r[0];
         sc.hi[i] = r[1];

@@ -1,8 +1,10 @@
 #include "io/mesh.hpp"
 #include "io/files.hpp"
+#include "numeric/small_int.hpp"
 
 #include <algorithm>
 #include <cctype>
+#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -98,6 +100,69 @@ std::vector<Vec3q> parse_obj(const std::string& text, const std::string& name, c
     });
     if (pts.empty()) fail(name, "malformed OBJ file: no 'v' lines");
     return pts;
+}
+
+// OBJ groups as parts (mesh.hpp): the vertices first, read and checked as parse_obj reads them,
+// then the 'o', 'g' and 'f' lines.
+std::vector<std::vector<Vec3q>> parse_obj_groups(const std::string& text, const std::string& name, const ReadOptions& opt) {
+    const std::vector<Vec3q> pts = parse_obj(text, name, opt);
+    std::vector<std::vector<Vec3q>> parts;
+    std::vector<size_t> last(pts.size(), 0);  // the last group (counted from 1) whose faces named each vertex
+    std::vector<size_t> members;              // the vertices of the group being read
+    size_t group = 1, group_line = 0, vertices_so_far = 0, total = 0;
+    std::string group_name;
+    auto label = [&] {
+        return group_line == 0 ? std::string("the faces before any 'o' or 'g' line")
+                               : "group " + quoted(group_name) + " (line " + std::to_string(group_line) + ")";
+    };
+    auto close = [&] {
+        if (members.empty()) return;  // a group without faces
+        if (parts.size() == kMaxParts) fail(name, "more than " + std::to_string(kMaxParts) + " groups with faces (the limit on parts)");
+        total += members.size();
+        if (total > kMaxPoints) fail(name, "more than " + std::to_string(kMaxPoints) + " points in all the groups (the limit)");
+        std::sort(members.begin(), members.end());
+        std::vector<Vec3q> part;
+        part.reserve(members.size());
+        for (size_t v : members) part.push_back(pts[v]);
+        if (!affinely_3d(part))
+            fail(name, label() + ": flat: the " + std::to_string(part.size()) +
+                           " vertices of its faces span fewer than 3 dimensions (a part must be a solid)");
+        parts.push_back(std::move(part));
+        members.clear();
+    };
+    each_line(text, [&](const std::vector<std::string>& t, size_t no) {
+        if (t[0] == "v") {
+            ++vertices_so_far;
+        } else if (t[0] == "o" || t[0] == "g") {
+            close();
+            ++group;
+            group_line = no;
+            group_name.clear();
+            for (size_t k = 1; k < t.size(); ++k) group_name += (k > 1 ? " " : "") + t[k];
+        } else if (t[0] == "f") {
+            if (t.size() < 4) fail(name, "line " + std::to_string(no) + ": expected 'f' and at least 3 vertices");
+            for (size_t k = 1; k < t.size(); ++k) {
+                // 'v', 'v/vt', 'v//vn' or 'v/vt/vn': v counts from 1, or back from -1 (the last vertex so far).
+                const std::string v = t[k].substr(0, t[k].find('/'));
+                long long i = 0;
+                const auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), i);
+                const bool number = ec == std::errc() && end == v.data() + v.size() && !v.empty();
+                const long long n = static_cast<long long>(number && i < 0 ? vertices_so_far : pts.size());
+                if (!number || i == 0 || i > n || i < -n)
+                    fail(name, "line " + std::to_string(no) + ": face vertex " + quoted(t[k]) + " is not a vertex number (1 to " +
+                                   std::to_string(pts.size()) + ", or -1 back to -" + std::to_string(vertices_so_far) + ")");
+                const size_t at = static_cast<size_t>(i > 0 ? i - 1 : n + i);
+                if (last[at] != group) {
+                    last[at] = group;
+                    members.push_back(at);
+                }
+            }
+        }
+        return true;
+    });
+    close();
+    if (parts.empty()) fail(name, "no faces ('f' lines): the parts from groups are the vertices of each group's faces");
+    return parts;
 }
 
 // Vertices in order of first appearance, each once (STL writes every vertex in each triangle).
@@ -345,6 +410,25 @@ std::vector<Vec3q> parse_mesh(const std::string& bytes, MeshFormat f, const std:
 std::vector<Vec3q> read_mesh(const std::string& path, const ReadOptions& opt) {
     const MeshFormat f = mesh_format_of(path);
     return parse_mesh(read_input(path, "mesh file", kMaxSceneBytes), f, path, opt);
+}
+
+std::vector<std::vector<Vec3q>> read_obj_groups(const std::string& path, const ReadOptions& opt) {
+    const MeshFormat f = mesh_format_of(path);
+    if (f != MeshFormat::Obj) {
+        static const char* kind[] = {"an OFF", "an OBJ", "a PLY", "an STL"};
+        throw InputError(path + ": parts from groups need an OBJ file (" + kind[static_cast<int>(f)] + " file has no groups)");
+    }
+    return parse_obj_groups(read_input(path, "mesh file", kMaxSceneBytes), path, opt);
+}
+
+void read_mesh_object(const std::string& path, const ReadOptions& opt, PolyInput& in) {
+    if (!opt.parts_from_groups) {
+        in.points = read_mesh(path, opt);
+        return;
+    }
+    in.parts = read_obj_groups(path, opt);
+    in.points.clear();
+    for (const auto& part : in.parts) in.points.insert(in.points.end(), part.begin(), part.end());
 }
 
 }  // namespace scalecert::internal

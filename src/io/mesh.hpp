@@ -23,4 +23,17 @@ std::vector<Vec3q> parse_mesh(const std::string& bytes, MeshFormat f, const std:
 // Reads a mesh file (format by extension, at most kMaxSceneBytes).
 std::vector<Vec3q> read_mesh(const std::string& path, const ReadOptions& opt = {});
 
+// An OBJ file's groups as the parts of a compound (scalecert region --parts-from-groups): each
+// 'o NAME' or 'g NAME' line starts a part, whose points are the vertices its faces ('f') name,
+// each once, in the file's order (vertex numbers from 1, or back from -1, the last vertex before
+// the face). The faces before any 'o' or 'g' line are a part too (a file without them is one
+// part); groups without faces are skipped, and vertices no face names are in no part. Throws
+// InputError naming the group (its name and line) when its points are flat, and past kMaxParts
+// parts or kMaxPoints points in all. Any other format is refused (OFF, PLY and STL have no groups).
+std::vector<std::vector<Vec3q>> read_obj_groups(const std::string& path, const ReadOptions& opt = {});
+
+// An object's mesh file: its vertices (a convex object), or with opt.parts_from_groups its OBJ
+// groups as parts (in.parts, and in.points all their points in order).
+void read_mesh_object(const std::string& path, const ReadOptions& opt, PolyInput& in);
+
 }  // namespace scalecert::internal

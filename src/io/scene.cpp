@@ -79,6 +79,7 @@ ExactScene parse_scene_text(const std::string& text, const std::string& name, co
     only(root, "", {"P1", "P2", "I1", "I2"});
     ExactScene sc;
     const char* pname[2] = {"P1", "P2"};
+    const char* kRegionOnly = "an object made of parts is read by `scalecert region` only (the other commands take convex objects)";
     for (int i = 0; i < 2; ++i) {
         const JNode* p = root.find(pname[i]);
         if (!p) r.fail("", std::string("missing field \"") + pname[i] + "\"");
@@ -86,8 +87,10 @@ ExactScene parse_scene_text(const std::string& text, const std::string& name, co
         PolyInput& in = sc.P[i];
         // The points of one convex body: "vertices", or a mesh file ("mesh": OFF, OBJ, PLY or STL by
         // extension; "off": an OFF file whatever its name). `where` names the object or the part.
-        auto body = [&](const JNode& o, const std::string& where) {
-            std::vector<Vec3q> pts;
+        // With `groups` (an object's, not a part's), an OBJ "mesh" is read as a compound instead,
+        // a part per group, into `into`.
+        auto body = [&](const JNode& o, const std::string& where, bool groups, PolyInput& into) {
+            std::vector<Vec3q>& pts = into.points;
             const JNode* verts = o.find("vertices");
             const JNode* off = o.find("off");
             const JNode* mesh = o.find("mesh");
@@ -103,19 +106,24 @@ ExactScene parse_scene_text(const std::string& text, const std::string& name, co
                 const std::string key = where + (mesh ? ".mesh" : ".off");
                 if (off->kind != JNode::String) r.fail(key, "expected a file name");
                 if (!opt.allow_off_files) r.fail(key, "mesh files are not read here");
+                if (groups && !mesh) r.fail(key, "an OFF file has no groups (parts from groups need an OBJ \"mesh\")");
                 std::string path = off->text;
                 if (!path.empty() && path[0] != '/' && !base_dir.empty()) path = base_dir + "/" + path;
-                pts = mesh ? read_mesh(path, opt) : parse_mesh(read_input(path, "OFF file", kMaxSceneBytes), MeshFormat::Off, path, opt);
+                if (groups) {
+                    ReadOptions o2 = opt;
+                    o2.parts_from_groups = true;
+                    read_mesh_object(path, o2, into);
+                } else {
+                    pts = mesh ? read_mesh(path, opt) : parse_mesh(read_input(path, "OFF file", kMaxSceneBytes), MeshFormat::Off, path, opt);
+                }
             } else {
                 r.fail(where, "missing field \"vertices\" (or \"mesh\", \"off\")");
             }
-            return pts;
         };
         if (const JNode* parts = p->find("parts")) {
             only(*p, pname[i], {"parts", "seed"});
             const std::string where = std::string(pname[i]) + ".parts";
-            if (!opt.allow_parts)
-                r.fail(where, "an object made of parts is read by `scalecert region` only (the other commands take convex objects)");
+            if (!opt.allow_parts) r.fail(where, kRegionOnly);
             if (parts->kind != JNode::Array || parts->items.empty()) r.fail(where, "expected a nonempty list of parts");
             if (parts->items.size() > kMaxParts) r.fail(where, "more than " + std::to_string(kMaxParts) + " parts (the limit)");
             for (size_t k = 0; k < parts->items.size(); ++k) {
@@ -123,14 +131,25 @@ ExactScene parse_scene_text(const std::string& text, const std::string& name, co
                 const JNode& part = parts->items[k];
                 if (part.kind != JNode::Object) r.fail(w, "expected an object with \"vertices\" or \"mesh\"");
                 only(part, w, {"vertices", "off", "mesh"});
-                in.parts.push_back(body(part, w));
+                PolyInput one;
+                body(part, w, false, one);
+                in.parts.push_back(std::move(one.points));
                 if (in.points.size() + in.parts.back().size() > kMaxPoints)
                     r.fail(where, "more than " + std::to_string(kMaxPoints) + " points in all (the limit)");
                 in.points.insert(in.points.end(), in.parts.back().begin(), in.parts.back().end());
             }
         } else {
-            only(*p, pname[i], {"vertices", "off", "mesh", "seed"});
-            in.points = body(*p, pname[i]);
+            only(*p, pname[i], {"vertices", "off", "mesh", "seed", "parts_from_groups"});
+            // An OBJ "mesh" as a compound: --parts-from-groups, or this object's "parts_from_groups".
+            bool groups = opt.parts_from_groups && !p->find("vertices");
+            if (const JNode* g = p->find("parts_from_groups")) {
+                const std::string w = std::string(pname[i]) + ".parts_from_groups";
+                if (g->kind != JNode::Bool) r.fail(w, "expected true or false");
+                if (!opt.allow_parts) r.fail(w, kRegionOnly);
+                groups = g->text == "true";
+                if (groups && !p->find("mesh")) r.fail(w, "parts from groups need an OBJ \"mesh\"");
+            }
+            body(*p, pname[i], groups, in);
         }
         if (const JNode* s = p->find("seed")) {
             in.seed = r.point(*s, std::string(pname[i]) + ".seed");

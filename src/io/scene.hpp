@@ -28,6 +28,7 @@ struct ReadOptions {
     bool binary_doubles = false;  // JSON/OFF numbers read as the IEEE doubles strtod gives
     bool allow_off_files = true;  // "mesh" / "off": "FILE" in a scene (off for text from untrusted sources)
     bool allow_parts = false;     // objects made of "parts" (scalecert region); refused elsewhere
+    bool parts_from_groups = false;  // an object's OBJ mesh as a compound, a part per group (region --parts-from-groups)
 };
 
 // Reads and checks a scene file. Throws InputError naming the file and the offending field.

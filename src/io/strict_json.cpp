@@ -80,8 +80,8 @@ private:
             }
         }
         if (c == '"') { n.kind = JNode::String; n.text = string(); return; }
-        if (c == 't') { literal("true"); n.kind = JNode::Bool; return; }
-        if (c == 'f') { literal("false"); n.kind = JNode::Bool; return; }
+        if (c == 't') { literal("true"); n.kind = JNode::Bool; n.text = "true"; return; }
+        if (c == 'f') { literal("false"); n.kind = JNode::Bool; n.text = "false"; return; }
         if (c == 'n') { literal("null"); return; }
         if (c == '-' || (c >= '0' && c <= '9')) { n.kind = JNode::Number; n.text = number(); return; }
         unexpected("unexpected character");

@@ -11,7 +11,7 @@ namespace scalecert::internal {
 // A JSON tree; numbers and strings keep their text.
 struct JNode {
     enum Kind { Null, Bool, Number, String, Array, Object } kind = Null;
-    std::string text;         // number as written, or string value
+    std::string text;         // number as written, string value, or "true" / "false"
     std::vector<JNode> items;  // array items, or object values
     std::vector<std::string> keys;
     const JNode* find(const std::string& k) const {
