@@ -351,6 +351,51 @@ PYBIND11_MODULE(scalecert, m) {
         .value("Touching", scalecert::Verdict::Touching)
         .value("Overlapping", scalecert::Verdict::Overlapping);
 
+    py::class_<scalecert::Region>(m, "Region")
+        .def(py::init([](const py::handle& p1, const py::handle& p2, const py::handle& i1, const py::handle& i2, const py::handle& seeds) {
+                 std::vector<std::vector<scalecert::Point>> parts[2];
+                 const char* names[2] = {"P1", "P2"};
+                 const py::handle ps[2] = {p1, p2};
+                 for (int i = 0; i < 2; ++i) {
+                     py::list l = as_list(ps[i], names[i]);
+                     for (size_t k = 0; k < l.size(); ++k) parts[i].push_back(points(l[k], std::string(names[i]) + "[" + std::to_string(k) + "]"));
+                 }
+                 std::optional<scalecert::Point> s[2];
+                 if (!seeds.is_none()) {
+                     py::list l = as_list(seeds, "seeds");
+                     if (l.size() != 2) throw scalecert::InputError("seeds: expected (s1, s2)");
+                     for (int i = 0; i < 2; ++i) s[i] = point(l[i], std::string("seeds[") + std::to_string(i) + "]");
+                 }
+                 return scalecert::Region(std::move(parts[0]), std::move(parts[1]), interval(i1, "I1"), interval(i2, "I2"), s[0], s[1]);
+             }),
+             py::arg("P1"), py::arg("P2"), py::arg("I1"), py::arg("I2"), py::arg("seeds") = py::none(),
+             "Objects made of convex parts: P1, P2 lists of parts, each a list of vertices (numbers as for Scene); "
+             "I1, I2 = (lo, hi); seeds = (s1, s2), default the means of all each object's vertices.")
+        .def_static("load", &scalecert::Region::load, py::arg("path"), "a scene file (JSON) whose objects may hold \"parts\"")
+        .def("verdict", [](const scalecert::Region& r, const py::handle& r1, const py::handle& r2) {
+                 return r.verdict(rational(r1, "rho1"), rational(r2, "rho2"));
+             }, py::arg("rho1"), py::arg("rho2"), "the exact verdict at (rho1, rho2) in I1 x I2")
+        .def("classify", [](const scalecert::Region& r, py::array_t<double, py::array::c_style | py::array::forcecast> r1,
+                            py::array_t<double, py::array::c_style | py::array::forcecast> r2) {
+                 if (r1.ndim() != 1 || r2.ndim() != 1) throw scalecert::InputError("classify: one-dimensional arrays expected");
+                 std::vector<double> a(r1.data(), r1.data() + r1.size()), b(r2.data(), r2.data() + r2.size());
+                 std::vector<scalecert::Verdict> v;
+                 {
+                     py::gil_scoped_release free;
+                     v = r.classify(a, b, 0);
+                 }
+                 py::array_t<std::int8_t> out(static_cast<py::ssize_t>(v.size()));
+                 auto w = out.mutable_unchecked<1>();
+                 for (size_t i = 0; i < v.size(); ++i) w(static_cast<py::ssize_t>(i)) = static_cast<std::int8_t>(v[i]);
+                 return out;
+             }, py::arg("rho1"), py::arg("rho2"),
+             "exact verdicts at the doubles' exact values in I1 x I2, on all cores: an int8 array of Verdict values")
+        .def("region", [](const scalecert::Region& r) { return json_loads(r.region_json()); },
+             "what scalecert region writes, as a dict: pair polygons, their union, the labelled boundary, switch points, growth set")
+        .def("partition", [](const scalecert::Region& r) { return json_loads(r.partition_json()); },
+             "the certified partition (kind compound_partition) as a dict")
+        .def("partition_json", &scalecert::Region::partition_json, "the certificate's text, for scalecert-check");
+
     py::class_<PyScene>(m, "Scene")
         .def(py::init([](const py::handle& p1, const py::handle& p2, const py::handle& i1, const py::handle& i2, const py::handle& seeds) {
                  return make_scene(p1, p2, i1, i2, seeds);

@@ -360,3 +360,29 @@ BOOST_AUTO_TEST_CASE(typed_claims_by_hand_and_by_brute_force) {
     const scalecert::Judgements g = a.certify(grid);
     for (size_t i = 0; i < grid.size(); ++i) BOOST_TEST((g.items[i].exact_squared && *g.items[i].exact_squared == want[i]), i);
 }
+
+BOOST_AUTO_TEST_CASE(a_region_of_parts_by_hand) {
+    // The band of tests/test_compound.cpp through the public API: object 1 the parts
+    // [2,3] x [-1,1]^2 and [-3,-2] x [-1,1]^2 about the origin (in neither), object 2 the box
+    // [4,5] x [-1,1]^2 about (9/2, 0, 0). The right part spans [2ρ1, 3ρ1] in x, the box
+    // [9/2 − ρ2/2, 9/2 + ρ2/2]: they meet iff 3ρ1 >= 9/2 − ρ2/2 and 2ρ1 <= 9/2 + ρ2/2. At ρ2 = 2:
+    // from ρ1 = 7/6 to 11/4, then apart again as object 1 grows.
+    const scalecert::Region r({box(2, -1, -1, 3, 1, 1), box(-3, -1, -1, -2, 1, 1)}, {box(4, -1, -1, 5, 1, 1)}, {R(1), R(4)}, {R(1), R(3)},
+                              scalecert::Point{R(0), R(0), R(0)}, scalecert::Point{R(9, 2), R(0), R(0)});
+    BOOST_TEST((r.verdict(R(1), R(2)) == scalecert::Verdict::Separated));
+    BOOST_TEST((r.verdict(R(7, 6), R(2)) == scalecert::Verdict::Touching));
+    BOOST_TEST((r.verdict(R(2), R(2)) == scalecert::Verdict::Overlapping));
+    BOOST_TEST((r.verdict(R(11, 4), R(2)) == scalecert::Verdict::Touching));
+    BOOST_TEST((r.verdict(R(3), R(2)) == scalecert::Verdict::Separated));
+    const std::vector<scalecert::Verdict> v = r.classify({1.0, 2.0, 2.75, 3.0}, {2.0, 2.0, 2.0, 2.0}, 1);
+    BOOST_TEST((v == std::vector<scalecert::Verdict>{scalecert::Verdict::Separated, scalecert::Verdict::Overlapping,
+                                                     scalecert::Verdict::Touching, scalecert::Verdict::Separated}));
+    BOOST_CHECK_THROW(r.verdict(R(5), R(2)), scalecert::InputError);  // outside I1 x I2
+    BOOST_TEST(r.region_json().find("\"switch_points\": []") != std::string::npos);
+    BOOST_TEST(r.partition_json().find("\"kind\": \"compound_partition\"") != std::string::npos);
+    // A flat part: one line, InputError.
+    BOOST_CHECK_THROW(scalecert::Region({{{R(0), R(0), R(0)}, {R(1), R(0), R(0)}, {R(0), R(1), R(0)}, {R(1), R(1), R(0)}}},
+                                        {box(4, -1, -1, 5, 1, 1)}, {R(1), R(4)}, {R(1), R(3)})
+                          .verdict(R(1), R(1)),
+                      scalecert::InputError);
+}

@@ -163,4 +163,28 @@ private:
     Curve curve_;
 };
 
+// Objects made of convex parts: each object a union of convex parts, all scaled about its one
+// seed, which need not lie in any part. Where they overlap in I1 × I2, exactly (docs/manual.md,
+// "region"). Built on first use; calls on one Region from several threads at once are not
+// supported. Throws InputError (a flat part, the limits, a point outside I1 × I2).
+class Region {
+public:
+    // parts[i]: object i's parts, each the convex hull of at least 4 points spanning 3 dimensions;
+    // a seed defaults to the mean of all the object's points.
+    Region(std::vector<std::vector<Point>> parts1, std::vector<std::vector<Point>> parts2, Interval i1, Interval i2,
+           std::optional<Point> seed1 = {}, std::optional<Point> seed2 = {});
+    static Region load(const std::string& scene_json_path);  // objects with "parts" or plain (one part)
+    Verdict verdict(const Rational& rho1, const Rational& rho2) const;  // exact
+    // The exact verdicts at doubles' exact values in I1 × I2, on `threads` threads (0: all cores).
+    std::vector<Verdict> classify(const std::vector<double>& rho1, const std::vector<double>& rho2,
+                                  unsigned threads = 0) const;
+    std::string region_json() const;     // byte-identical to `scalecert region`
+    std::string partition_json() const;  // the certificate: check it with scalecert-check
+
+private:
+    struct Impl;
+    explicit Region(std::shared_ptr<Impl> impl) : impl_(std::move(impl)) {}
+    std::shared_ptr<Impl> impl_;
+};
+
 }  // namespace scalecert

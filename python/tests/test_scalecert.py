@@ -394,3 +394,32 @@ def test_certify_values_beyond_the_doubles():
     d = s.certify("penetration_depth", ["1e300"], [1], value=[1])
     assert not d["right"][0]
     assert d["rel_error"][0] == 1.0
+
+
+def test_region_of_parts_by_hand_and_the_cli(tmp_path):
+    # The U and the peg (tests/data/compound_u_peg.json, derived by hand in tests/test_compound.cpp):
+    # the bottom meets the peg from r1 + 3 r2 = 6 on, each wall from r2 = 2 r1; the two lines cross
+    # at (6/7, 12/7), where the peg touches the bottom and both walls at once.
+    U = [box(-3, -1, 0, 3, 1, 1), box(-3, -1, 1, -2, 1, 4), box(2, -1, 1, 3, 1, 4)]
+    peg = [box(-1, F(-1, 2), 2, 1, F(1, 2), 5)]
+    r = scalecert.Region(U, peg, ("1/2", 2), (F(1, 2), 3), seeds=((0, 0, F(1, 2)), (0, 0, "7/2")))
+    assert r.verdict(1, 3) == scalecert.Verdict.Overlapping
+    assert r.verdict(F(1, 2), 1) == scalecert.Verdict.Touching          # on the wall's line
+    assert r.verdict(F(6, 7), F(12, 7) - F(1, 100)) == scalecert.Verdict.Separated  # below the reflex corner
+    assert r.verdict(F(3, 2), F(3, 2)) == scalecert.Verdict.Touching    # the growth set starts at 4 rho = 6
+    assert list(r.classify([1.0, 0.5, 2.0], [3.0, 1.0, 1.0])) == [2, 1, 0]
+    d = r.region()
+    assert [(s["rho1"], s["rho2"], s["change"]) for s in d["switch_points"]] == [("6/7", "12/7", "pair")]
+    assert [(g["from"], g["to"]) for g in d["growth_set"]] == [("3/2", "2")]
+    with pytest.raises(ValueError, match="outside I1 x I2"):
+        r.verdict(3, 1)
+    with pytest.raises(ValueError, match="flat"):
+        scalecert.Region([[[0, 0, 0], [1, 0, 0], [0, 1, 0], [1, 1, 0]]], peg, (1, 2), (1, 2)).verdict(1, 1)  # built on first use
+    # The scene file through Region.load and through the command: the same bytes.
+    scene = SRC / "tests" / "data" / "compound_u_peg.json"
+    loaded = scalecert.Region.load(str(scene))
+    cert = tmp_path / "u.cert.json"
+    out = subprocess.run([CLI, "region", str(scene), "--certificate", str(cert)], capture_output=True, text=True, check=True).stdout
+    assert json.loads(out) == loaded.region()
+    assert cert.read_text() == loaded.partition_json()
+    assert subprocess.run([CHECK, str(cert)], capture_output=True).returncode == 0

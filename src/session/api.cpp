@@ -1,6 +1,7 @@
 // The public API (include/scalecert/scalecert.hpp) over the internal stages.
 #include "scalecert/scalecert.hpp"
 #include "session/scene_access.hpp"
+#include "session/compound_session.hpp"
 #include "session/session.hpp"
 
 #include "certify/certificate.hpp"
@@ -286,5 +287,62 @@ GoldenData Analysis::golden() const {
     g.curve["queries"] = std::move(g.queries);
     return {dump(g.curve), std::move(g.csv)};
 }
+
+struct Region::Impl {
+    internal::CompoundSession session;
+};
+
+Region::Region(std::vector<std::vector<Point>> parts1, std::vector<std::vector<Point>> parts2, Interval i1, Interval i2,
+               std::optional<Point> seed1, std::optional<Point> seed2) {
+    internal::ExactScene sc;
+    std::vector<std::vector<Point>>* parts[2] = {&parts1, &parts2};
+    const std::optional<Point>* seeds[2] = {&seed1, &seed2};
+    const Interval* ranges[2] = {&i1, &i2};
+    for (int i = 0; i < 2; ++i) {
+        const std::string name = i ? "P2" : "P1";
+        if (parts[i]->empty()) throw InputError("region: " + name + ": expected a nonempty list of parts");
+        if (parts[i]->size() > internal::kMaxParts)
+            throw InputError("region: " + name + ": more than " + std::to_string(internal::kMaxParts) + " parts (the limit)");
+        for (std::vector<Point>& part : *parts[i]) {
+            for (Point& v : part) v = canonical(std::move(v));
+            if (sc.P[i].points.size() + part.size() > internal::kMaxPoints)
+                throw InputError("region: " + name + ": more than " + std::to_string(internal::kMaxPoints) + " points in all its parts (the limit)");
+            sc.P[i].points.insert(sc.P[i].points.end(), part.begin(), part.end());
+            sc.P[i].parts.push_back(std::move(part));
+        }
+        if (*seeds[i]) {
+            sc.P[i].seed = canonical(**seeds[i]);
+            sc.P[i].seed_given = true;
+        }
+        sc.lo[i] = ranges[i]->lo;
+        sc.hi[i] = ranges[i]->hi;
+        sc.lo[i].canonicalize();
+        sc.hi[i].canonicalize();
+    }
+    finish_scene(sc, "region");
+    impl_ = std::make_shared<Impl>(Impl{internal::CompoundSession(std::move(sc), "region")});
+}
+
+Region Region::load(const std::string& path) {
+    internal::ReadOptions opt;
+    opt.allow_parts = true;
+    return Region(std::make_shared<Impl>(Impl{internal::CompoundSession(load_scene(path, opt), path)}));
+}
+
+Verdict Region::verdict(const Rational& rho1, const Rational& rho2) const {
+    const std::string v = impl_->session.verdict(rho1, rho2).verdict;
+    return v == "separated" ? Verdict::Separated : v == "touching" ? Verdict::Touching : Verdict::Overlapping;
+}
+
+std::vector<Verdict> Region::classify(const std::vector<double>& rho1, const std::vector<double>& rho2, unsigned threads) const {
+    if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
+    const std::vector<std::int8_t> c = impl_->session.classify(rho1, rho2, threads);
+    std::vector<Verdict> out(c.size());
+    for (size_t k = 0; k < c.size(); ++k) out[k] = c[k] == 0 ? Verdict::Separated : c[k] == 1 ? Verdict::Touching : Verdict::Overlapping;
+    return out;
+}
+
+std::string Region::region_json() const { return dump(impl_->session.region_json()); }
+std::string Region::partition_json() const { return dump(impl_->session.partition_json()); }
 
 }  // namespace scalecert

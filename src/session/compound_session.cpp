@@ -1,0 +1,50 @@
+// The orchestration of compounds (compound_session.hpp).
+#include "session/compound_session.hpp"
+
+#include "certify/region_certificate.hpp"
+
+#include <cmath>
+
+namespace scalecert::internal {
+
+const CompoundRegion& CompoundSession::region(bool with_union) {
+    if (!region_ || (with_union && !with_union_)) {
+        locator_.reset();  // it refers to the region it was built on
+        region_.emplace(compound_region(sc_, name_, with_union));
+        with_union_ = with_union;
+    }
+    return *region_;
+}
+
+Json CompoundSession::region_json(const std::optional<std::array<Q, 2>>& at) {
+    if (at) check_in_rectangle((*at)[0], (*at)[1], "the point");
+    return compound_region_json(sc_, region(true), at);
+}
+
+Json CompoundSession::partition_json() { return compound_partition_json(sc_, region(false)); }
+
+void CompoundSession::check_in_rectangle(const Q& rho1, const Q& rho2, const std::string& what) const {
+    if (rho1 < sc_.lo[0] || rho1 > sc_.hi[0] || rho2 < sc_.lo[1] || rho2 > sc_.hi[1])
+        throw InputError(what + " (" + to_exact_string(rho1) + ", " + to_exact_string(rho2) +
+                         ") lies outside I1 x I2, where the region is built");
+}
+
+CompoundVerdict CompoundSession::verdict(const Q& rho1, const Q& rho2) {
+    check_in_rectangle(rho1, rho2, "the point");
+    return compound_verdict(region(false), rho1, rho2);
+}
+
+std::vector<std::int8_t> CompoundSession::classify(const std::vector<double>& rho1, const std::vector<double>& rho2, unsigned threads) {
+    if (rho1.size() != rho2.size())
+        throw InputError("classify: " + std::to_string(rho1.size()) + " values of rho1 but " + std::to_string(rho2.size()) + " of rho2");
+    for (size_t k = 0; k < rho1.size(); ++k) {
+        if (!std::isfinite(rho1[k]) || !std::isfinite(rho2[k])) throw InputError("pair " + std::to_string(k + 1) + " is not finite");
+        if (Q(rho1[k]) < sc_.lo[0] || Q(rho1[k]) > sc_.hi[0] || Q(rho2[k]) < sc_.lo[1] || Q(rho2[k]) > sc_.hi[1])
+            throw InputError("pair " + std::to_string(k + 1) + " lies outside I1 x I2");
+    }
+    const CompoundRegion& r = region(false);
+    if (!locator_) locator_ = std::make_unique<CompoundLocator>(r, sc_.lo, sc_.hi, CompoundLocator::grid_for(r));
+    return locator_->classify(rho1, rho2, threads);
+}
+
+}  // namespace scalecert::internal

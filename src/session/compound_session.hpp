@@ -1,0 +1,45 @@
+// The orchestration of compounds (issue 22): a scene whose objects may be made of convex parts,
+// its region built at most once (with the union when a document needs it), the query grid on
+// first use. The region command and the library's Region (and so Python) go through it, as the
+// convex commands go through Session.
+#pragma once
+#include "certify/certificate.hpp"
+#include "compound/locate.hpp"
+#include "compound/region.hpp"
+
+#include <array>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace scalecert::internal {
+
+class CompoundSession {
+public:
+    // `name` prefixes the errors ("FILE: P1.parts[2]: ..."). Nothing is built yet.
+    CompoundSession(ExactScene scene, std::string name) : sc_(std::move(scene)), name_(std::move(name)) {}
+    const ExactScene& scene() const { return sc_; }
+    // The region; with_union: with the union of the pair polygons and so the boundary (documents).
+    // Throws InputError past the limits of compound_region.
+    const CompoundRegion& region(bool with_union);
+    // The region document (compound_region_json), with the verdict at `at` when given.
+    Json region_json(const std::optional<std::array<Q, 2>>& at = std::nullopt);
+    // The certified partition (kind compound_partition).
+    Json partition_json();
+    // The exact verdict at (ρ1, ρ2) in I1 × I2 (InputError outside), with the pair that decides it.
+    CompoundVerdict verdict(const Q& rho1, const Q& rho2);
+    // The exact verdicts of doubles' exact values in I1 × I2 (InputError naming the first pair
+    // outside), located on the grid, on `threads` threads: 0 separated, 1 touching, 2 overlapping.
+    std::vector<std::int8_t> classify(const std::vector<double>& rho1, const std::vector<double>& rho2, unsigned threads);
+
+private:
+    void check_in_rectangle(const Q& rho1, const Q& rho2, const std::string& what) const;
+    ExactScene sc_;
+    std::string name_;
+    std::optional<CompoundRegion> region_;
+    bool with_union_ = false;
+    std::unique_ptr<CompoundLocator> locator_;
+};
+
+}  // namespace scalecert::internal
