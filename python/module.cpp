@@ -341,6 +341,23 @@ py::dict certify_arrays(const scalecert::Analysis& a, const std::string& kind, c
     return d;
 }
 
+// classify over two one-dimensional arrays: f(rho1, rho2) without the GIL, as an int8 array.
+using DoubleArray = py::array_t<double, py::array::c_style | py::array::forcecast>;
+template <class F>
+py::array_t<std::int8_t> classify_array(const DoubleArray& r1, const DoubleArray& r2, F&& f) {
+    if (r1.ndim() != 1 || r2.ndim() != 1) throw scalecert::InputError("classify: one-dimensional arrays expected");
+    const std::vector<double> a(r1.data(), r1.data() + r1.size()), b(r2.data(), r2.data() + r2.size());
+    std::vector<scalecert::Verdict> v;
+    {
+        py::gil_scoped_release free;
+        v = f(a, b);
+    }
+    py::array_t<std::int8_t> out(static_cast<py::ssize_t>(v.size()));
+    auto w = out.mutable_unchecked<1>();
+    for (size_t i = 0; i < v.size(); ++i) w(static_cast<py::ssize_t>(i)) = static_cast<std::int8_t>(v[i]);
+    return out;
+}
+
 PYBIND11_MODULE(scalecert, m) {
     m.doc() = "Exact, certified collision of uniformly scaled convex polyhedra.";
     m.attr("__version__") = scalecert::version();
@@ -377,17 +394,7 @@ PYBIND11_MODULE(scalecert, m) {
              }, py::arg("rho1"), py::arg("rho2"), "the exact verdict at (rho1, rho2) in I1 x I2")
         .def("classify", [](const scalecert::Region& r, py::array_t<double, py::array::c_style | py::array::forcecast> r1,
                             py::array_t<double, py::array::c_style | py::array::forcecast> r2) {
-                 if (r1.ndim() != 1 || r2.ndim() != 1) throw scalecert::InputError("classify: one-dimensional arrays expected");
-                 std::vector<double> a(r1.data(), r1.data() + r1.size()), b(r2.data(), r2.data() + r2.size());
-                 std::vector<scalecert::Verdict> v;
-                 {
-                     py::gil_scoped_release free;
-                     v = r.classify(a, b, 0);
-                 }
-                 py::array_t<std::int8_t> out(static_cast<py::ssize_t>(v.size()));
-                 auto w = out.mutable_unchecked<1>();
-                 for (size_t i = 0; i < v.size(); ++i) w(static_cast<py::ssize_t>(i)) = static_cast<std::int8_t>(v[i]);
-                 return out;
+                 return classify_array(r1, r2, [&r](const std::vector<double>& a, const std::vector<double>& b) { return r.classify(a, b, 0); });
              }, py::arg("rho1"), py::arg("rho2"),
              "exact verdicts at the doubles' exact values in I1 x I2, on all cores: an int8 array of Verdict values")
         .def("region", [](const scalecert::Region& r) { return json_loads(r.region_json()); },
@@ -434,18 +441,8 @@ PYBIND11_MODULE(scalecert, m) {
              }, py::arg("rho1"), py::arg("rho2"), "the exact verdict at (rho1, rho2) > 0, with its certificate")
         .def("classify", [](const PyScene& s, py::array_t<double, py::array::c_style | py::array::forcecast> r1,
                             py::array_t<double, py::array::c_style | py::array::forcecast> r2) {
-                 if (r1.ndim() != 1 || r2.ndim() != 1) throw scalecert::InputError("classify: one-dimensional arrays expected");
-                 std::vector<double> a(r1.data(), r1.data() + r1.size()), b(r2.data(), r2.data() + r2.size());
                  const scalecert::Analysis& an = s.a();
-                 std::vector<scalecert::Verdict> v;
-                 {
-                     py::gil_scoped_release free;
-                     v = an.classify(a, b, 0);
-                 }
-                 py::array_t<std::int8_t> out(static_cast<py::ssize_t>(v.size()));
-                 auto w = out.mutable_unchecked<1>();
-                 for (size_t i = 0; i < v.size(); ++i) w(static_cast<py::ssize_t>(i)) = static_cast<std::int8_t>(v[i]);
-                 return out;
+                 return classify_array(r1, r2, [&an](const std::vector<double>& a, const std::vector<double>& b) { return an.classify(a, b, 0); });
              }, py::arg("rho1"), py::arg("rho2"),
              "exact verdicts at the doubles' exact values, on all cores: an int8 array of Verdict values")
         .def("check_plane", [](const PyScene& s, const py::handle& r1, const py::handle& r2, const py::handle& n, const py::handle& offset) {

@@ -60,6 +60,18 @@ Point canonical(Point p) {
     return p;
 }
 
+// Object i's seed (when given) and range, in lowest terms.
+void seed_and_range(internal::ExactScene& sc, int i, const std::optional<Point>& seed, const Interval& range) {
+    if (seed) {
+        sc.P[i].seed = canonical(*seed);
+        sc.P[i].seed_given = true;
+    }
+    sc.lo[i] = range.lo;
+    sc.hi[i] = range.hi;
+    sc.lo[i].canonicalize();
+    sc.hi[i].canonicalize();
+}
+
 
 }  // namespace
 
@@ -72,14 +84,7 @@ Scene::Scene(std::vector<Point> p1, std::vector<Point> p2, Interval i1, Interval
     for (int i = 0; i < 2; ++i) {
         for (Point& v : *pts[i]) v = canonical(std::move(v));
         sc.P[i].points = std::move(*pts[i]);
-        if (*seeds[i]) {
-            sc.P[i].seed = canonical(**seeds[i]);
-            sc.P[i].seed_given = true;
-        }
-        sc.lo[i] = ranges[i]->lo;
-        sc.hi[i] = ranges[i]->hi;
-        sc.lo[i].canonicalize();
-        sc.hi[i].canonicalize();
+        seed_and_range(sc, i, *seeds[i], *ranges[i]);
     }
     finish_scene(sc, "scene");
     d_ = SceneAccess::validated(std::move(sc), "scene");
@@ -310,14 +315,7 @@ Region::Region(std::vector<std::vector<Point>> parts1, std::vector<std::vector<P
             sc.P[i].points.insert(sc.P[i].points.end(), part.begin(), part.end());
             sc.P[i].parts.push_back(std::move(part));
         }
-        if (*seeds[i]) {
-            sc.P[i].seed = canonical(**seeds[i]);
-            sc.P[i].seed_given = true;
-        }
-        sc.lo[i] = ranges[i]->lo;
-        sc.hi[i] = ranges[i]->hi;
-        sc.lo[i].canonicalize();
-        sc.hi[i].canonicalize();
+        seed_and_range(sc, i, *seeds[i], *ranges[i]);
     }
     finish_scene(sc, "region");
     impl_ = std::make_shared<Impl>(Impl{internal::CompoundSession(std::move(sc), "region")});
