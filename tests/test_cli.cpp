@@ -609,6 +609,20 @@ BOOST_AUTO_TEST_CASE(certify_fp_exit_status_gates_ci) {
         BOOST_TEST(r.err.find("an output names an input file") != std::string::npos, r.err);
         BOOST_TEST(slurp(mine) == before);
     }
+    // An output over a mesh that the scene file names (the hostile review of 2026-11-26: `region
+    // SCENE --out MESH` and `curve SCENE --out MESH` replaced it): every command that writes refuses.
+    {
+        const fs::path mesh = write("named_mesh.obj", slurp(fs::path(SCALECERT_SOURCE_DIR) / "examples" / "tetra.obj"));
+        const fs::path scene = write("names_a_mesh.json", "{\"P1\": {\"mesh\": \"" + mesh.string() +
+                                                              "\"}, \"P2\": {\"vertices\": [[3,0,0],[4,0,0],[3,1,0],[3,0,1]]}, \"I1\": [1, 2], \"I2\": [1, 2]}");
+        const std::string before = slurp(mesh);
+        for (const std::string cmd : {"curve", "region", "partition"}) {
+            Run r = run(cmd + " " + scene.string() + " --out " + mesh.string());
+            BOOST_TEST(r.status == 2, cmd);
+            BOOST_TEST(r.err.find("an output names an input file") != std::string::npos, cmd << ": " << r.err);
+            BOOST_TEST(slurp(mesh) == before, cmd);
+        }
+    }
     // The same file named relatively and as ./ (neither existing yet): the same file.
     {
         const fs::path here = fs::current_path();
@@ -1009,6 +1023,6 @@ BOOST_AUTO_TEST_CASE(region_parts_from_obj_groups) {
                  "P1.parts_from_groups: parts from groups need an OBJ \"mesh\"");
     expect_error("key not a boolean", "region " + write("key_one.json", R"({"P1": {"mesh": "band_groups.obj", "parts_from_groups": 1}, )" + box).string(),
                  "P1.parts_from_groups: expected true or false");
-    expect_error("key elsewhere", "curve " + key_scene.string(), "P1.parts_from_groups: an object made of parts is read by `scalecert region` only");
+    expect_error("key elsewhere", "curve " + key_scene.string(), "P1.parts_from_groups: read by `scalecert region` only");
     expect_error("flag elsewhere", "curve --parts-from-groups" + meshes, "--parts-from-groups");
 }

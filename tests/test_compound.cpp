@@ -625,3 +625,84 @@ BOOST_AUTO_TEST_CASE(boundary_labels_equal_the_brute_force_contacts) {
     std::cout << "compound boundaries: " << edges << " contact edges and " << switches << " switch points (" << contact_changes
               << " within one pair; " << contacts << " pair contacts) against the brute force\n";
 }
+
+BOOST_AUTO_TEST_CASE(wedges_sharing_two_lines_each_labelled_by_its_own_pair) {
+    // Object 1: six slabs x in [101 c, 100 c + 25/4] (c = 1/2 + k/4), y in [1, 100], z in [-100, 1],
+    // seed 0; object 2: the box [100, 101] x [3/2, 5/2]^2, seed (0, 7/2, 5/2). By hand, slab k meets
+    // the box iff ρ1 + ρ2 >= 5/2 (z: the slab's top ρ1 against the box's bottom 5/2 − ρ2),
+    // ρ1 + ρ2 <= 7/2 (y: the slab's ρ1 against the box's 7/2 − ρ2) and c <= ρ2/ρ1 <= c + 1/16
+    // (x). So six disjoint quadrilaterals, all on the same two lines: each ring is its own pair's,
+    // four face-to-face edges, four corners where two faces' edges cross (EE). (The hostile review's
+    // slivers: pair edges on shared lines were scanned in full for each ring edge.)
+    std::vector<std::array<int, 6>> parts[2];
+    ExactScene sc;
+    for (int k = 0; k < 6; ++k) {
+        const Q c = Q(1, 2) + Q(k, 4), x0 = 101 * c, x1 = 100 * c + Q(25, 4);
+        std::vector<Vec3q> v;
+        for (const Q& x : {x0, x1})
+            for (int y : {1, 100})
+                for (int z : {-100, 1}) v.push_back({x, Q(y), Q(z)});
+        sc.P[0].parts.push_back(v);
+        sc.P[0].points.insert(sc.P[0].points.end(), v.begin(), v.end());
+    }
+    for (int x : {100, 101})
+        for (const Q& y : {Q(3, 2), Q(5, 2)})
+            for (const Q& z : {Q(3, 2), Q(5, 2)}) sc.P[1].points.push_back({Q(x), y, z});
+    sc.P[1].parts.push_back(sc.P[1].points);
+    sc.P[0].seed = {Q(0), Q(0), Q(0)};
+    sc.P[1].seed = {Q(0), Q(7, 2), Q(5, 2)};
+    for (int i = 0; i < 2; ++i) sc.P[i].seed_given = true, sc.lo[i] = Q(1, 2), sc.hi[i] = Q(3);
+    const CompoundRegion r = compound_region(sc, "wedges");
+    const CompoundBoundary b = label_boundary(r, sc);
+    BOOST_TEST_REQUIRE(b.rings.size() == 6u);
+    std::set<int> seen;
+    for (const BoundaryRing& ring : b.rings) {
+        BOOST_TEST_REQUIRE(ring.edges.size() == 4u);
+        const int part = r.pairs[ring.edges[0].contact->pair].part1;
+        seen.insert(part);
+        int on_sum_lines = 0;
+        for (const BoundaryEdge& e : ring.edges) {
+            BOOST_TEST_REQUIRE(e.contact.has_value());
+            BOOST_TEST(r.pairs[e.contact->pair].part1 == part);  // its own pair, not the first on the line
+            BOOST_TEST(e.contact->contact.label == "FF");
+            const HalfPlane& h = r.pairs[e.contact->pair].constraints[e.contact->line];
+            on_sum_lines += h.a == h.b && (h.c / h.a == Q(5, 2) || h.c / h.a == Q(7, 2));
+        }
+        BOOST_TEST(on_sum_lines == 2);
+    }
+    BOOST_TEST(seen.size() == 6u);
+    BOOST_TEST_REQUIRE(b.switches.size() == 24u);
+    for (const CompoundSwitch& s : b.switches) {
+        BOOST_TEST(!s.pair_change);
+        BOOST_TEST_REQUIRE(s.contacts.size() == 1u);
+        BOOST_TEST(s.contacts[0].contact.label == "EE");
+    }
+}
+
+BOOST_AUTO_TEST_CASE(a_normal_tight_everywhere_holds_no_edge) {
+    // Both seeds at the origin, on the plane x = 0 that holds a face of each part: P1's part
+    // [0,2] x [-1,1]^2 spans x in [0, 2ρ1], P2's [-2,0] x [3,5] x [-1,1] spans x in [-2ρ2, 0], so the
+    // normal −x (hA = hB = 0, n·d = 0) touches at every (ρ1, ρ2) and the parts never overlap; in y,
+    // [-ρ1, ρ1] reaches [3ρ2, 5ρ2] iff ρ1 >= 3ρ2. The one contact edge, from (4, 4/3) to
+    // (3/2, 1/2), lies on ρ1 − 3ρ2 = 0 (normal +y: hA = 1, hB = −3), not on −x's 0 = 0; the parts
+    // touch along edges: x = 0, y = 1 of P1's part and x = 0, y = 3 of P2's (the hostile review).
+    const std::vector<std::array<int, 6>> parts[2] = {{{0, -2, -2, 4, 2, 2}}, {{-4, 6, -2, 0, 10, 2}}};
+    const Vec3q seeds[2] = {{Q(0), Q(0), Q(0)}, {Q(0), Q(0), Q(0)}};
+    const Q lo[2] = {Q(1), Q(1, 2)}, hi[2] = {Q(4), Q(2)};
+    const ExactScene sc = compound_scene(parts, seeds, lo, hi);
+    const CompoundRegion r = compound_region(sc, "flat");
+    const CompoundBoundary b = label_boundary(r, sc);
+    BOOST_TEST_REQUIRE(b.rings.size() == 1u);
+    int contacts = 0;
+    for (const BoundaryEdge& e : b.rings[0].edges) {
+        if (!e.contact) continue;
+        ++contacts;
+        BOOST_TEST((e.from == Point2q{Q(4), Q(4, 3)} && e.to == Point2q{Q(3, 2), Q(1, 2)}));
+        const HalfPlane& h = r.pairs[e.contact->pair].constraints[e.contact->line];
+        BOOST_TEST((h.normal == Vec3z{Z(0), Z(1), Z(0)} && h.a == 1 && h.b == -3 && h.c == 0));
+        BOOST_TEST(e.contact->contact.label == "EE");
+        BOOST_TEST(e.contact->tight.size() == 2u);  // −x and +y
+    }
+    BOOST_TEST(contacts == 1);
+    BOOST_TEST(compound_verdict(r, Q(3), Q(1, 2)).verdict == std::string("touching"));  // inside the polygon, yet touching
+}

@@ -161,7 +161,7 @@ Json ring_json(const std::vector<Point2q>& p) {
 }
 Json point_json(const Point2q& x) { return Json::array({to_exact_string(x[0]), to_exact_string(x[1])}); }
 // A pair's contact: its parts, label, features (vertex indices as each part lists its points),
-// tight normals, and the first one's line a rho1 + b rho2 = c (the pair meets on its >= side).
+// tight normals, and the line a rho1 + b rho2 = c that holds the edge (the pair meets on its >= side).
 Json contact_json(const CompoundRegion& r, const PairContact& c, bool with_line) {
     const CompoundRegion::Pair& p = r.pairs[c.pair];
     Json j{{"P1_part", p.part1}, {"P2_part", p.part2}, {"contact", c.contact.label},
@@ -170,7 +170,7 @@ Json contact_json(const CompoundRegion& r, const PairContact& c, bool with_line)
     for (size_t k : c.tight) normals.push_back(normal_json(p.constraints[k].normal));
     j["normals"] = normals;
     if (with_line) {
-        const HalfPlane& h = p.constraints[c.tight.front()];
+        const HalfPlane& h = p.constraints[c.line];
         j["line"] = Json{{"a", to_exact_string(h.a)}, {"b", to_exact_string(h.b)}, {"c", to_exact_string(h.c)}};
     }
     return j;

@@ -31,6 +31,7 @@ Command add_classify(CLI::App& app) {
                 internal::Session session = open_session(a->scene, Engine::Auto, clock);
                 std::vector<double> r1, r2;
                 const std::string pairs = read_input(a->pairs, "pairs file", kMaxPairsBytes);
+                internal::note_inputs({a->pairs});  // --out PAIRS would replace it
                 clock.lap("read pairs");
                 try {
                     parse_pairs(pairs, r1, r2, a->threads);

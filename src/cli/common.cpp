@@ -27,7 +27,13 @@ internal::ExactScene SceneArgs::load() const {
     const bool any_mesh_option = !mesh[0].empty() || !mesh[1].empty() || !interval[0].empty() || !interval[1].empty() ||
                                  !seed[0].empty() || !seed[1].empty();
     if (!path.empty() && any_mesh_option) throw InputError("give SCENE or --p1, --p2, --i1, --i2, not both");
-    if (!path.empty()) return load_scene(path, opt);
+    if (!path.empty()) {
+        internal::ExactScene sc = load_scene(path, opt);
+        internal::note_inputs({path});
+        internal::note_inputs(sc.files);
+        return sc;
+    }
+    internal::note_inputs({mesh[0], mesh[1]});
     if (mesh[0].empty() || mesh[1].empty() || interval[0].empty() || interval[1].empty())
         throw InputError("give SCENE, or --p1 and --p2 (mesh files) with --i1 and --i2 (LO,HI)");
     internal::ExactScene sc;
@@ -48,6 +54,7 @@ internal::ExactScene SceneArgs::load() const {
 }
 
 std::shared_ptr<const internal::CompactScene> SceneArgs::load_compact() const {
+    internal::note_inputs({path, mesh[0], mesh[1]});  // (a scene naming meshes is read by load(), which notes them)
     const bool scene_only = !path.empty() && mesh[0].empty() && mesh[1].empty() && interval[0].empty() && interval[1].empty() &&
                             seed[0].empty() && seed[1].empty();
     if (scene_only && !opt.binary_doubles && path != "-")

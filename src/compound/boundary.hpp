@@ -29,12 +29,16 @@ struct PairContact {
     size_t pair;  // index into CompoundRegion::pairs
     ContactFeatures contact;
     std::vector<size_t> tight;  // indices into the pair's constraints, ascending
+    // Along an edge: the first tight constraint whose line is one (a, b not both 0: a normal
+    // whose planes touch at every (ρ1, ρ2), seeds on a face of each part, is tight everywhere
+    // and holds no edge), the line that holds the edge.
+    size_t line = 0;
 };
 
 struct BoundaryEdge {
     Point2q from, to;  // the region on the left
     // On a side of I1 × I2: 0 ρ1 = lo1, 1 ρ1 = hi1, 2 ρ2 = lo2, 3 ρ2 = hi2. Else −1 and `contact`
-    // (its first tight constraint's line holds the edge).
+    // (its constraint `line` holds the edge).
     int bound = -1;
     std::optional<PairContact> contact;
 };

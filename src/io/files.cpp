@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <cstring>
 #include <fcntl.h>
+#include <mutex>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -145,7 +146,28 @@ std::string write_temporary(const std::string& path, const std::string& text) {
 }
 }  // namespace
 
+namespace {
+// The inputs noted by note_inputs, for every later write of this process.
+std::mutex noted_mutex;
+std::vector<std::string> noted;
+}  // namespace
+
+void note_inputs(const std::vector<std::string>& paths) {
+    const std::lock_guard<std::mutex> lock(noted_mutex);
+    for (const std::string& p : paths)
+        if (!p.empty() && p != "-") noted.push_back(p);
+}
+
 void write_files_atomically(const std::vector<std::pair<std::string, std::string>>& files) {
+    {
+        std::vector<std::string> outs, ins;
+        for (const auto& f : files) outs.push_back(f.first);
+        {
+            const std::lock_guard<std::mutex> lock(noted_mutex);
+            ins = noted;
+        }
+        refuse_outputs_over_inputs(outs, ins);
+    }
     // Two outputs under one name (--out x --csv x, --out x --certificate x): the second would
     // replace the first. Compared as absolute, normalised paths (symbolic links to an existing
     // file followed), before anything is written.

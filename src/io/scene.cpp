@@ -109,6 +109,7 @@ ExactScene parse_scene_text(const std::string& text, const std::string& name, co
                 if (groups && !mesh) r.fail(key, "an OFF file has no groups (parts from groups need an OBJ \"mesh\")");
                 std::string path = off->text;
                 if (!path.empty() && path[0] != '/' && !base_dir.empty()) path = base_dir + "/" + path;
+                sc.files.push_back(path);
                 if (groups) {
                     ReadOptions o2 = opt;
                     o2.parts_from_groups = true;
@@ -145,7 +146,8 @@ ExactScene parse_scene_text(const std::string& text, const std::string& name, co
             if (const JNode* g = p->find("parts_from_groups")) {
                 const std::string w = std::string(pname[i]) + ".parts_from_groups";
                 if (g->kind != JNode::Bool) r.fail(w, "expected true or false");
-                if (!opt.allow_parts) r.fail(w, kRegionOnly);
+                if (!opt.allow_parts)
+                    r.fail(w, "read by `scalecert region` only (the other commands read every mesh as one convex object: drop the key)");
                 groups = g->text == "true";
                 if (groups && !p->find("mesh")) r.fail(w, "parts from groups need an OBJ \"mesh\"");
             }

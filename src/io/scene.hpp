@@ -22,6 +22,7 @@ constexpr size_t kMaxParts = 10000;
 struct ExactScene {
     PolyInput P[2];
     Q lo[2], hi[2];  // I1 = [lo[0], hi[0]], I2 = [lo[1], hi[1]]
+    std::vector<std::string> files;  // the mesh files a scene file named, as opened (no output may replace one)
 };
 
 struct ReadOptions {
