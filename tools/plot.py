@@ -25,14 +25,15 @@ def q(s):
     return float(Fraction(s))
 
 
-def save(fig, outdir, name):
+def save(fig, outdir, name, dpi=130):
     for ext in ("png", "svg"):
-        fig.savefig(os.path.join(outdir, f"{name}.{ext}"), dpi=130, bbox_inches="tight")
+        fig.savefig(os.path.join(outdir, f"{name}.{ext}"), dpi=dpi, bbox_inches="tight")
     plt.close(fig)
 
 
-def finish(fig, ax, outdir, name, title, xlabel=None, ylabel=None, legend_size=8, legend_loc="best", zlabel=None):
-    """Axis labels, title and legend, then the PNG and SVG files (shared with plot_audit.py).
+def finish(fig, ax, outdir, name, title, xlabel=None, ylabel=None, legend_size=8, legend_loc="best", zlabel=None, dpi=130):
+    """Axis labels, title and legend, then the PNG and SVG files (shared with plot_audit.py,
+    plot_claims.py and plot_region.py).
     legend_loc="outside" puts the legend right of the axes, where it covers no line."""
     if xlabel:
         ax.set_xlabel(xlabel)
@@ -45,7 +46,7 @@ def finish(fig, ax, outdir, name, title, xlabel=None, ylabel=None, legend_size=8
         ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), borderaxespad=0, fontsize=legend_size)
     else:
         ax.legend(loc=legend_loc, fontsize=legend_size)
-    save(fig, outdir, name)
+    save(fig, outdir, name, dpi)
 
 
 def fig6_rho(part, outdir):
