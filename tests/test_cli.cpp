@@ -622,6 +622,20 @@ BOOST_AUTO_TEST_CASE(certify_fp_exit_status_gates_ci) {
             BOOST_TEST(r.err.find("an output names an input file") != std::string::npos, cmd << ": " << r.err);
             BOOST_TEST(slurp(mesh) == before, cmd);
         }
+        // The campaigns too (the second hostile review): audit's --out or --csv over its scene, and
+        // golden's output for one scene over a later scene of the same run.
+        const fs::path s = write("s.json", slurp(fs::path(SCALECERT_SOURCE_DIR) / "certificates" / "scenes" / "stacked_cubes.json"));
+        const fs::path later = write("s.golden.json", slurp(s));
+        const std::string scene_text = slurp(s);
+        for (const std::string& cmd : {"audit " + s.string() + " --methods grid --grid 4 --out " + s.string(),
+                                       "audit " + s.string() + " --methods grid --grid 4 --out " + (workdir() / "a.json").string() + " --csv " + s.string(),
+                                       "golden " + s.string() + " " + later.string() + " --dir " + workdir().string()}) {
+            Run r = run(cmd);
+            BOOST_TEST(r.status == 2, cmd);
+            BOOST_TEST(r.err.find("an output names an input file") != std::string::npos, cmd << ": " << r.err);
+            BOOST_TEST(slurp(s) == scene_text, cmd);
+            BOOST_TEST(slurp(later) == scene_text, cmd);
+        }
     }
     // The same file named relatively and as ./ (neither existing yet): the same file.
     {

@@ -80,9 +80,17 @@ def locate(x, ring):
     return "inside" if min(sides) > 0 else "on"
 
 
-def meeting_at(region, x):
-    """The part pairs meeting at x: {(i, j): [state, contact]}, state 'touching' or 'overlapping',
-    contact from the switch point or boundary edge through x (None where no label says it)."""
+def rectangle(scene):
+    """((lo1, hi1), (lo2, hi2)): I1 and I2 of the scene."""
+    return tuple(tuple(Fraction(v) for v in scene[k]) for k in ("I1", "I2"))
+
+
+def meeting_at(region, x, rect):
+    """The part pairs meeting at x: {(i, j): [state, contact]}. 'touching' where x lies on one of
+    the pair's contact lines (a switch point, a labelled boundary edge, or its polygon's edge off
+    the rectangle's sides: a constraint holds with equality there) or the pair meets without area;
+    elsewhere in its polygon 'meeting' (overlapping, or touching along a normal that touches
+    everywhere: `scalecert region --at` tells). The contact from the labels through x, if any."""
     found = {}
     for s in region.get("switch_points") or []:
         if (Fraction(s["rho1"]), Fraction(s["rho2"])) == x:
@@ -93,11 +101,17 @@ def meeting_at(region, x):
             on = e["on"]
             if isinstance(on, dict) and on_segment(x, point(e["from"]), point(e["to"])):
                 found.setdefault((on["P1_part"], on["P2_part"]), ["touching", on["contact"]])
+
+    def on_side(a, b):
+        return any(a[c] == b[c] and a[c] in rect[c] for c in (0, 1))
+
     for p in region["pair_regions"]:
-        where = locate(x, [point(v) for v in p["vertices"]])
-        if where != "outside":
-            state = "overlapping" if where == "inside" else "touching"
-            found.setdefault((p["P1_part"], p["P2_part"]), [state, None])[0] = state
+        ring = [point(v) for v in p["vertices"]]
+        if locate(x, ring) == "outside":
+            continue
+        touching = len(ring) < 3 or any(on_segment(x, a, b) and not on_side(a, b) for a, b in zip(ring, ring[1:] + ring[:1]))
+        entry = found.setdefault((p["P1_part"], p["P2_part"]), [None, None])
+        entry[0] = "touching" if touching or entry[0] == "touching" else "meeting"
     return found
 
 
@@ -168,7 +182,7 @@ def label_run(ax, pts, text, color):
 
 
 def region_rho(scene, region, at, outdir):
-    (lo1, hi1), (lo2, hi2) = ([Fraction(v) for v in scene[k]] for k in ("I1", "I2"))
+    (lo1, hi1), (lo2, hi2) = rectangle(scene)
     fig, ax = plt.subplots(figsize=(6, 5))
     ax.set_xlim(q(lo1), q(hi1))
     ax.set_ylim(q(lo2), q(hi2))
@@ -194,7 +208,7 @@ def region_rho(scene, region, at, outdir):
         label_run(ax, pts, lab, c)
     d0, d1 = max(lo1, lo2), min(hi1, hi2)
     if d0 <= d1:
-        ax.plot([q(d0), q(d1)], [q(d0), q(d1)], ":", color="gray", lw=1)
+        ax.plot([q(d0), q(d1)], [q(d0), q(d1)], ":", color="gray", lw=1, label="rho1 = rho2")
     for k, g in enumerate(region["growth_set"]):
         a, b = q(g["from"]), q(g["to"])
         ax.plot([a, b], [a, b], "-", color="green", lw=4, alpha=0.7, solid_capstyle="butt",
@@ -271,7 +285,7 @@ def object_parts(scene, name):
 
 
 def region_3d(scene, region, at, outdir):
-    meeting = meeting_at(region, at)
+    meeting = meeting_at(region, at, rectangle(scene))
     fig = plt.figure(figsize=(6.5, 5.5))
     ax = fig.add_subplot(projection="3d")
     drawn = []
@@ -330,23 +344,37 @@ def main():
         k = args.index("--at")
         if k + 1 >= len(args) or args[k + 1].count(",") != 1:
             refuse("--at wants RHO1,RHO2, e.g. --at 6/7,12/7")
-        at = tuple(Fraction(v) for v in args[k + 1].split(","))
+        try:
+            at = tuple(Fraction(v) for v in args[k + 1].split(","))
+        except (ValueError, ZeroDivisionError):
+            refuse(f"--at: {args[k + 1]!r} is not two numbers")
         del args[k:k + 2]
     if len(args) != 3:
         print(__doc__)
         sys.exit(2)
-    scene = json.load(open(args[0]), parse_float=Fraction)
-    region = json.load(open(args[1]))
-    if region.get("kind") != "region":
+    try:
+        with open(args[0]) as f:
+            scene = json.load(f, parse_float=Fraction)
+        with open(args[1]) as f:
+            region = json.load(f)
+        rect = rectangle(scene)
+    except (OSError, ValueError, ZeroDivisionError, KeyError, TypeError, AttributeError) as e:
+        refuse(f"cannot read the scene or the region: {e}")
+    if not isinstance(region, dict) or region.get("kind") != "region":
         refuse(f"{args[1]} is not the output of scalecert region")
+    if at is not None and not all(rect[c][0] <= at[c] <= rect[c][1] for c in (0, 1)):
+        refuse(f"--at: {fmt(at)} lies outside I1 x I2 of {args[0]}")
     outdir = args[2]
-    os.makedirs(outdir, exist_ok=True)
-    at = at or default_at(region)
-    region_rho(scene, region, at, outdir)
-    if at is None:
-        print("plot_region.py: no switch point and no edge on a contact: no region_3d (give --at)", file=sys.stderr)
-        return
-    region_3d(scene, region, at, outdir)
+    try:
+        os.makedirs(outdir, exist_ok=True)
+        at = at or default_at(region)
+        region_rho(scene, region, at, outdir)
+        if at is None:
+            print("plot_region.py: no switch point and no edge on a contact: no region_3d (give --at)", file=sys.stderr)
+            return
+        region_3d(scene, region, at, outdir)
+    except (OSError, ValueError, ZeroDivisionError, KeyError, TypeError, AttributeError, IndexError) as e:
+        refuse(f"{args[1]} does not fit {args[0]}, or cannot be drawn: {type(e).__name__}: {e}")
 
 
 if __name__ == "__main__":

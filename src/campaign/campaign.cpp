@@ -62,6 +62,7 @@ std::string sha256_hex(const std::string& bytes) {
 // ---- planning ----------------------------------------------------------------------------------
 
 void validate(const CampaignArgs& a) {
+    note_inputs(a.scenes);  // before any output: none may replace a scene, however they are ordered
     if (a.golden) {
         if (a.family.empty() && a.scenes.empty()) throw InputError("golden: give SCENES, or --family");
         if (!a.family.empty()) family_description(a.family);
@@ -189,7 +190,10 @@ std::string slurp_or_empty(const std::string& path) {
 template <class F>
 Json reading(F&& f) {
     Json files = Json::array();
-    InputObserver watch([&](const std::string& path, const std::string& bytes) { files.push_back(Json::array({path, sha256_hex(bytes)})); });
+    InputObserver watch([&](const std::string& path, const std::string& bytes) {
+        files.push_back(Json::array({path, sha256_hex(bytes)}));
+        note_inputs({path});  // no output of the run may replace it
+    });
     f();
     return files;
 }

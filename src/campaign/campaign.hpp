@@ -47,7 +47,8 @@ struct CampaignArgs {
 };
 
 // Refuses bad arguments (one line, before any work or any file is made): unknown family or
-// method, --sweep-to < --sweep, --eps <= 0, no scenes at all.
+// method, --sweep-to < --sweep, --eps <= 0, no scenes at all. Notes the scenes as inputs
+// (io/files.hpp, note_inputs): no output of the run may replace one.
 void validate(const CampaignArgs& a);
 
 struct Shard {

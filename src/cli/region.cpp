@@ -21,7 +21,7 @@ Command add_region(CLI::App& app) {
         unsigned threads = std::max(1u, std::thread::hardware_concurrency());
     };
     auto a = std::make_shared<Args>();
-    CLI::App* sub = app.add_subcommand("region", "where objects made of convex parts overlap in I1 x I2: each part pair's exact polygon and their union (JSON)");
+    CLI::App* sub = app.add_subcommand("region", "where objects made of convex parts meet (overlap or touch) in I1 x I2: each part pair's exact polygon, their union with its labelled boundary (JSON)");
     a->scene.add(sub);
     add_out(sub, a->out);
     sub->add_flag("--parts-from-groups", a->scene.opt.parts_from_groups,
@@ -35,9 +35,9 @@ Command add_region(CLI::App& app) {
         ->type_name("FILE")
         ->check(file_name());
     sub->add_option("--classify", a->classify,
-                    "instead of the region, the exact verdict of each pair of FILE (lines 'rho1 rho2', doubles; '-': standard "
+                    "instead of the region, the exact verdict of each pair of PAIRS (lines 'rho1 rho2', doubles; '-': standard "
                     "input), one per line, located on a grid over I1 x I2 built once")
-        ->type_name("FILE");
+        ->type_name("PAIRS");
     sub->add_option("--threads", a->threads, "threads for --classify (default: all cores)")->check(CLI::Range(1u, 256u));
     example(sub, "Examples:\n  scalecert region tests/data/compound_band.json\n  scalecert region tests/data/compound_band.json --at 7/6,2\n"
                  "  printf '1 2\\n1.5 2\\n' | scalecert region tests/data/compound_band.json --classify -\n"

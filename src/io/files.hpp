@@ -48,8 +48,9 @@ void write_files_atomically(const std::vector<std::pair<std::string, std::string
 // certify-fp --certificate CLAIMS replaced the claims it read.
 void refuse_outputs_over_inputs(const std::vector<std::string>& outputs, const std::vector<std::string>& inputs);
 // Notes files a command read (its scene, the meshes the scene names): every later
-// write_file(s)_atomically of this process refuses to replace one of them (the hostile review:
-// `region SCENE --out MESH` replaced a mesh the scene named).
+// write_file(s)_atomically of this process refuses to replace one of them with other bytes (the
+// hostile reviews: `region SCENE --out MESH` replaced a mesh the scene named, `audit S --out S`
+// and `golden` the scenes).
 void note_inputs(const std::vector<std::string>& paths);
 
 }  // namespace scalecert::internal
