@@ -1,4 +1,5 @@
 // The Python module scalecert: exact numbers in and out as fractions.Fraction.
+#include <array>
 #include <scalecert/scalecert.hpp>
 
 #include <pybind11/numpy.h>
@@ -197,14 +198,20 @@ struct PyScene {
     }
 };
 
-PyScene make_scene(const py::handle& p1, const py::handle& p2, const py::handle& i1, const py::handle& i2, const py::handle& seeds) {
-    std::optional<scalecert::Point> s[2];
+// seeds = (s1, s2) or None; either may be None (the mean of the object's points).
+std::array<std::optional<scalecert::Point>, 2> seeds_of(const py::handle& seeds) {
+    std::array<std::optional<scalecert::Point>, 2> s;
     if (!seeds.is_none()) {
         py::list l = as_list(seeds, "seeds");
         if (l.size() != 2) throw scalecert::InputError("seeds: expected (seed1, seed2); either may be None");
         for (int i = 0; i < 2; ++i)
-            if (!l[i].is_none()) s[i] = point(l[i], "seeds[" + std::to_string(i) + "]");
+            if (!l[i].is_none()) s[static_cast<size_t>(i)] = point(l[i], "seeds[" + std::to_string(i) + "]");
     }
+    return s;
+}
+
+PyScene make_scene(const py::handle& p1, const py::handle& p2, const py::handle& i1, const py::handle& i2, const py::handle& seeds) {
+    const auto s = seeds_of(seeds);
     return PyScene{scalecert::Scene(points(p1, "P1"), points(p2, "P2"), interval(i1, "I1"), interval(i2, "I2"), s[0], s[1]), nullptr};
 }
 
@@ -377,17 +384,12 @@ PYBIND11_MODULE(scalecert, m) {
                      py::list l = as_list(ps[i], names[i]);
                      for (size_t k = 0; k < l.size(); ++k) parts[i].push_back(points(l[k], std::string(names[i]) + "[" + std::to_string(k) + "]"));
                  }
-                 std::optional<scalecert::Point> s[2];
-                 if (!seeds.is_none()) {
-                     py::list l = as_list(seeds, "seeds");
-                     if (l.size() != 2) throw scalecert::InputError("seeds: expected (s1, s2)");
-                     for (int i = 0; i < 2; ++i) s[i] = point(l[i], std::string("seeds[") + std::to_string(i) + "]");
-                 }
+                 const auto s = seeds_of(seeds);
                  return scalecert::Region(std::move(parts[0]), std::move(parts[1]), interval(i1, "I1"), interval(i2, "I2"), s[0], s[1]);
              }),
              py::arg("P1"), py::arg("P2"), py::arg("I1"), py::arg("I2"), py::arg("seeds") = py::none(),
              "Objects made of convex parts: P1, P2 lists of parts, each a list of vertices (numbers as for Scene); "
-             "I1, I2 = (lo, hi); seeds = (s1, s2), default the means of all each object's vertices.")
+             "I1, I2 = (lo, hi); seeds = (s1, s2), either may be None: the mean of all that object's vertices.")
         .def_static("load", &scalecert::Region::load, py::arg("path"), "a scene file (JSON) whose objects may hold \"parts\"")
         .def("verdict", [](const scalecert::Region& r, const py::handle& r1, const py::handle& r2) {
                  return r.verdict(rational(r1, "rho1"), rational(r2, "rho2"));

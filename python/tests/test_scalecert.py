@@ -408,6 +408,8 @@ def test_region_of_parts_by_hand_and_the_cli(tmp_path):
     assert r.verdict(F(6, 7), F(12, 7) - F(1, 100)) == scalecert.Verdict.Separated  # below the reflex corner
     assert r.verdict(F(3, 2), F(3, 2)) == scalecert.Verdict.Touching    # the growth set starts at 4 rho = 6
     assert list(r.classify([1.0, 0.5, 2.0], [3.0, 1.0, 1.0])) == [2, 1, 0]
+    # Either seed may be None (the mean of that object's points), as for Scene: the peg's mean is its centre.
+    assert scalecert.Region(U, peg, ("1/2", 2), (F(1, 2), 3), seeds=((0, 0, F(1, 2)), None)).verdict(F(1, 2), 1) == scalecert.Verdict.Touching
     d = r.region()
     assert [(s["rho1"], s["rho2"], s["change"]) for s in d["switch_points"]] == [("6/7", "12/7", "pair")]
     assert [(g["from"], g["to"]) for g in d["growth_set"]] == [("3/2", "2")]
