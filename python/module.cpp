@@ -350,8 +350,27 @@ py::dict certify_arrays(const scalecert::Analysis& a, const std::string& kind, c
 
 // classify over two one-dimensional arrays: f(rho1, rho2) without the GIL, as an int8 array.
 using DoubleArray = py::array_t<double, py::array::c_style | py::array::forcecast>;
+// A list or array of real numbers as doubles; anything else (strings, complex numbers, objects)
+// is an InputError, not pybind's TypeError (the hostile review).
+DoubleArray doubles_of(const py::handle& h, const char* what) {
+    const py::object np = py::module_::import("numpy");
+    py::object a = np.attr("asarray")(h);
+    std::string kind = py::str(a.attr("dtype").attr("kind")).cast<std::string>();
+    if (kind == "O") {  // Fractions, Decimals, mixed: as doubles, if they are real numbers
+        try {
+            a = np.attr("asarray")(a, py::arg("dtype") = np.attr("float64"));
+            kind = "f";
+        } catch (const py::error_already_set& e) {
+            if (!e.matches(PyExc_TypeError) && !e.matches(PyExc_ValueError)) throw;
+        }
+    }
+    if (kind != "f" && kind != "i" && kind != "u")
+        throw scalecert::InputError(std::string("classify: ") + what + ": expected real numbers (an array or list of floats or ints)");
+    return DoubleArray::ensure(a);
+}
 template <class F>
-py::array_t<std::int8_t> classify_array(const DoubleArray& r1, const DoubleArray& r2, F&& f) {
+py::array_t<std::int8_t> classify_array(const py::handle& h1, const py::handle& h2, F&& f) {
+    const DoubleArray r1 = doubles_of(h1, "rho1"), r2 = doubles_of(h2, "rho2");
     if (r1.ndim() != 1 || r2.ndim() != 1) throw scalecert::InputError("classify: one-dimensional arrays expected");
     const std::vector<double> a(r1.data(), r1.data() + r1.size()), b(r2.data(), r2.data() + r2.size());
     std::vector<scalecert::Verdict> v;
@@ -394,8 +413,7 @@ PYBIND11_MODULE(scalecert, m) {
         .def("verdict", [](const scalecert::Region& r, const py::handle& r1, const py::handle& r2) {
                  return r.verdict(rational(r1, "rho1"), rational(r2, "rho2"));
              }, py::arg("rho1"), py::arg("rho2"), "the exact verdict at (rho1, rho2) in I1 x I2")
-        .def("classify", [](const scalecert::Region& r, py::array_t<double, py::array::c_style | py::array::forcecast> r1,
-                            py::array_t<double, py::array::c_style | py::array::forcecast> r2) {
+        .def("classify", [](const scalecert::Region& r, const py::handle& r1, const py::handle& r2) {
                  return classify_array(r1, r2, [&r](const std::vector<double>& a, const std::vector<double>& b) { return r.classify(a, b, 0); });
              }, py::arg("rho1"), py::arg("rho2"),
              "exact verdicts at the doubles' exact values in I1 x I2, on all cores: an int8 array of Verdict values")
@@ -441,8 +459,7 @@ PYBIND11_MODULE(scalecert, m) {
                  d["certificate"] = json_loads(s.a().query_json(a, b));
                  return d;
              }, py::arg("rho1"), py::arg("rho2"), "the exact verdict at (rho1, rho2) > 0, with its certificate")
-        .def("classify", [](const PyScene& s, py::array_t<double, py::array::c_style | py::array::forcecast> r1,
-                            py::array_t<double, py::array::c_style | py::array::forcecast> r2) {
+        .def("classify", [](const PyScene& s, const py::handle& r1, const py::handle& r2) {
                  const scalecert::Analysis& an = s.a();
                  return classify_array(r1, r2, [&an](const std::vector<double>& a, const std::vector<double>& b) { return an.classify(a, b, 0); });
              }, py::arg("rho1"), py::arg("rho2"),

@@ -415,6 +415,9 @@ def test_region_of_parts_by_hand_and_the_cli(tmp_path):
     assert [(g["from"], g["to"]) for g in d["growth_set"]] == [("3/2", "2")]
     with pytest.raises(ValueError, match="outside I1 x I2"):
         r.verdict(3, 1)
+    for bad in (["a"], [1 + 2j], [object()]):  # InputError (a ValueError) with one line, not pybind's TypeError
+        with pytest.raises(ValueError, match="expected real numbers"):
+            r.classify(bad, [1.0])
     with pytest.raises(ValueError, match="flat"):
         scalecert.Region([[[0, 0, 0], [1, 0, 0], [0, 1, 0], [1, 1, 0]]], peg, (1, 2), (1, 2)).verdict(1, 1)  # built on first use
     # The scene file through Region.load and through the command: the same bytes.
