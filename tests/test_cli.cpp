@@ -852,7 +852,9 @@ BOOST_AUTO_TEST_CASE(region_of_compounds) {
     BOOST_TEST(j["pairs"]["built"] == 1);
     BOOST_TEST(j["region"].size() == 1u);
     BOOST_TEST(j["region"][0]["outer"] == nlohmann::json::parse(R"([["4/3", "1"], ["5/2", "1"], ["3", "3"], ["1", "3"]])"));
-    BOOST_TEST(j["growth_set"] == nlohmann::json::parse(R"([{"from": "9/7", "to": "3", "first_contact": {"P1_part": 0, "P2_part": 0}}])"));
+    // At 9/7 the right part's face x = 3 (its points 1, 3, 5, 7) reaches the box's face x = 4 (0, 2, 4, 6).
+    BOOST_TEST(j["growth_set"] == nlohmann::json::parse(R"([{"from": "9/7", "to": "3", "first_contact": {"P1_part": 0, "P2_part": 0,
+        "contact": "FF", "features": {"P1": [1, 3, 5, 7], "P2": [0, 2, 4, 6]}}}])"));
     BOOST_TEST(run("region " + band).out == r.out);  // deterministic
     // At ρ2 = 2 the band runs from ρ1 = 7/6 (3ρ1 + 1 = 9/2) to 11/4 (2ρ1 − 1 = 9/2).
     auto at = [&](const std::string& x) { return nlohmann::json::parse(run("region " + band + " --at " + x).out)["at"]["verdict"]; };

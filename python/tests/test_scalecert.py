@@ -412,7 +412,16 @@ def test_region_of_parts_by_hand_and_the_cli(tmp_path):
     assert scalecert.Region(U, peg, ("1/2", 2), (F(1, 2), 3), seeds=((0, 0, F(1, 2)), None)).verdict(F(1, 2), 1) == scalecert.Verdict.Touching
     d = r.region()
     assert [(s["rho1"], s["rho2"], s["change"]) for s in d["switch_points"]] == [("6/7", "12/7", "pair")]
-    assert [(g["from"], g["to"]) for g in d["growth_set"]] == [("3/2", "2")]
+    # The growth set starts where the peg's bottom face (z = 2: its points 0, 2, 4, 6, as box() lists
+    # them, z fastest) reaches the bottom's top (z = 1: points 1, 3, 5, 7 of part 0): 4 rho = 6.
+    assert [(g["from"], g["to"], g["first_contact"]["contact"]) for g in d["growth_set"]] == [("3/2", "2", "FF")]
+    assert d["growth_set"][0]["first_contact"]["features"] == {"P1": [1, 3, 5, 7], "P2": [0, 2, 4, 6]}
+    # The band (tests/test_compound.cpp) from rho = 3/2 on: its pair meets on rho1 = rho2 from 9/7, so
+    # the growth set starts on the rectangle's edge, already overlapping: no contact there.
+    band = scalecert.Region([box(2, -1, -1, 3, 1, 1), box(-3, -1, -1, -2, 1, 1)], [box(4, -1, -1, 5, 1, 1)], ("3/2", 4), (1, 3),
+                            seeds=((0, 0, 0), (F(9, 2), 0, 0)))
+    g = band.region()["growth_set"]
+    assert [(x["from"], x["to"], x["first_contact"]["contact"]) for x in g] == [("3/2", "3", None)]
     with pytest.raises(ValueError, match="outside I1 x I2"):
         r.verdict(3, 1)
     for bad in (["a"], [1 + 2j], [object()]):  # InputError (a ValueError) with one line, not pybind's TypeError

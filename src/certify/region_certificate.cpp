@@ -238,10 +238,19 @@ Json compound_region_json(const ExactScene& sc, const CompoundRegion& r, const s
         if (!p.polygon.empty() && p.polygon.size() < 3)
             thin.push_back(Json{{"P1_part", p.part1}, {"P2_part", p.part2}, {"vertices", ring_json(p.polygon)}});
     j["region_without_area"] = thin;
+    // Each interval's first contact: the pair that meets at its start, with its contact there
+    // (null when it already overlaps there: the interval starts on the rectangle's edge).
     Json growth = Json::array();
-    for (const auto& iv : r.growth)
-        growth.push_back(Json{{"from", to_exact_string(iv.from)}, {"to", to_exact_string(iv.to)},
-                              {"first_contact", Json{{"P1_part", iv.part1}, {"P2_part", iv.part2}}}});
+    for (const auto& iv : r.growth) {
+        Json first{{"P1_part", iv.part1}, {"P2_part", iv.part2}, {"contact", nullptr}};
+        for (size_t k = 0; k < r.pairs.size(); ++k)
+            if (r.pairs[k].part1 == iv.part1 && r.pairs[k].part2 == iv.part2)
+                if (const auto c = pair_contact_at(r, sc, k, {iv.from, iv.from})) {
+                    first["contact"] = c->contact.label;
+                    first["features"] = Json{{"P1", c->contact.feat1}, {"P2", c->contact.feat2}};
+                }
+        growth.push_back(Json{{"from", to_exact_string(iv.from)}, {"to", to_exact_string(iv.to)}, {"first_contact", first}});
+    }
     j["growth_set"] = growth;
     put_boundary(j, r, sc);
     if (at) {
