@@ -62,13 +62,11 @@ Command add_region(CLI::App& app) {
                     } catch (const InputError& e) {
                         throw InputError(a->classify + ": " + e.what());
                     }
-                    for (size_t k = 0; k < p1.size(); ++k)
-                        if (Q(p1[k]) < sc.lo[0] || Q(p1[k]) > sc.hi[0] || Q(p2[k]) < sc.lo[1] || Q(p2[k]) > sc.hi[1])
-                            throw InputError(a->classify + ": pair " + std::to_string(k + 1) + " lies outside I1 x I2");
                 }
                 CompoundSession session(sc, a->scene.name());
                 if (sub->count("--classify")) {
-                    const std::vector<std::int8_t> v = session.classify(p1, p2, a->threads);
+                    // (Each pair is checked, with the file's name, before the region is built.)
+                    const std::vector<std::int8_t> v = session.classify(p1, p2, a->threads, a->classify.empty() ? "-" : a->classify);
                     std::vector<Verdict> out(v.size());
                     for (size_t k = 0; k < v.size(); ++k) out[k] = v[k] == 0 ? Verdict::Separated : v[k] == 1 ? Verdict::Touching : Verdict::Overlapping;
                     emit(verdict_lines(out), a->out);

@@ -79,7 +79,6 @@ ExactScene parse_scene_text(const std::string& text, const std::string& name, co
     only(root, "", {"P1", "P2", "I1", "I2"});
     ExactScene sc;
     const char* pname[2] = {"P1", "P2"};
-    const char* kRegionOnly = "an object made of parts is read by `scalecert region` only (the other commands take convex objects)";
     for (int i = 0; i < 2; ++i) {
         const JNode* p = root.find(pname[i]);
         if (!p) r.fail("", std::string("missing field \"") + pname[i] + "\"");
@@ -124,7 +123,8 @@ ExactScene parse_scene_text(const std::string& text, const std::string& name, co
         if (const JNode* parts = p->find("parts")) {
             only(*p, pname[i], {"parts", "seed"});
             const std::string where = std::string(pname[i]) + ".parts";
-            if (!opt.allow_parts) r.fail(where, kRegionOnly);
+            if (!opt.allow_parts)
+                r.fail(where, "an object made of parts is read by `scalecert region` only (the other commands take convex objects)");
             if (parts->kind != JNode::Array || parts->items.empty()) r.fail(where, "expected a nonempty list of parts");
             if (parts->items.size() > kMaxParts) r.fail(where, "more than " + std::to_string(kMaxParts) + " parts (the limit)");
             for (size_t k = 0; k < parts->items.size(); ++k) {

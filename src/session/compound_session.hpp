@@ -29,9 +29,11 @@ public:
     Json partition_json();
     // The exact verdict at (ρ1, ρ2) in I1 × I2 (InputError outside), with the pair that decides it.
     CompoundVerdict verdict(const Q& rho1, const Q& rho2);
-    // The exact verdicts of doubles' exact values in I1 × I2 (InputError naming the first pair
-    // outside), located on the grid, on `threads` threads: 0 separated, 1 touching, 2 overlapping.
-    std::vector<std::int8_t> classify(const std::vector<double>& rho1, const std::vector<double>& rho2, unsigned threads);
+    // The exact verdicts of doubles' exact values in I1 × I2, located on the grid, on `threads`
+    // threads: 0 separated, 1 touching, 2 overlapping. Every pair is checked first, before the
+    // region is built: one outside gives InputError "SOURCE: pair K lies outside I1 x I2".
+    std::vector<std::int8_t> classify(const std::vector<double>& rho1, const std::vector<double>& rho2, unsigned threads,
+                                      const std::string& source = "classify");
 
 private:
     void check_in_rectangle(const Q& rho1, const Q& rho2, const std::string& what) const;
