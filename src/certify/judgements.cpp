@@ -10,8 +10,7 @@ namespace scalecert::internal {
 
 namespace {
 
-Vec3q unscaled(const Model& m, int i, const Q& rho, const Vec3q& x) {  // y with x = s + ρ(y − s)
-    const Vec3q& s = m.s[i];
+Vec3q unscaled(const Vec3q& s, const Q& rho, const Vec3q& x) {  // y with x = s + ρ(y − s)
     return {s[0] + (x[0] - s[0]) / rho, s[1] + (x[1] - s[1]) / rho, s[2] + (x[2] - s[2]) / rho};
 }
 
@@ -41,8 +40,11 @@ std::vector<std::pair<int, Q>> face_weights(const Polyhedron& P, const Face& f, 
 }  // namespace
 
 Json membership_proof(const HullModel& m, int i, const Q& rho, const Vec3q& x, bool* inside) {
-    const Polyhedron& P = m.P[i];
-    const Vec3q y = unscaled(m, i, rho, x);
+    return membership_proof(m.P[i], m.s[i], rho, x, inside);
+}
+
+Json membership_proof(const Polyhedron& P, const Vec3q& seed, const Q& rho, const Vec3q& x, bool* inside) {
+    const Vec3q y = unscaled(seed, rho, x);
     const PointPlace at = P.place(y);
     *inside = at.side <= 0;
     if (at.side > 0) return Json{{"out", normal_json(at.face->normal)}};

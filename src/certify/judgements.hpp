@@ -11,6 +11,8 @@ namespace scalecert::internal {
 // vertices: a face's fan triangle when y is on the boundary, else interior weights), or
 // {"out": normal} (the outward normal of a face of P_i whose plane y lies strictly beyond).
 Json membership_proof(const HullModel& m, int i, const Q& rho, const Vec3q& x, bool* inside);
+// The same for a polyhedron P scaled by ρ about `seed` (a compound's part).
+Json membership_proof(const Polyhedron& P, const Vec3q& seed, const Q& rho, const Vec3q& x, bool* inside);
 
 // A verdict with its query certificate (on the model that proves it): {"verdict", "certificate"}.
 Json verdict_proof(const Model& m, const QueryAnswer& r);

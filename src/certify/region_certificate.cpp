@@ -1,7 +1,7 @@
 // The compound partition certificate (region_certificate.hpp).
 #include "certify/region_certificate.hpp"
 
-#include "geometry/gjk.hpp"
+#include "certify/compound_judge.hpp"
 #include "certify/query.hpp"
 #include "compound/boundary.hpp"
 #include "numeric/parallel.hpp"
@@ -32,18 +32,6 @@ Json compound_scene_json(const ExactScene& sc) {
     }
     for (int i = 0; i < 2; ++i) s[i == 0 ? "I1" : "I2"] = Json::array({to_exact_string(sc.lo[i]), to_exact_string(sc.hi[i])});
     return s;
-}
-
-// A common point of A(ρ1) and B(ρ2) (hm holds the two parts and the seeds), weights indexed into
-// each part's own point list: an exact LP over the few vertices a double GJK names, else over all
-// the parts' vertices. The LP decides; GJK only proposes (its simplex may miss a touching face).
-Witness pair_witness(const HullModel& hm, const Q& r1, const Q& r2, long& fallbacks) {
-    const GjkGuess g = gjk_guess(hm, r1.get_d(), r2.get_d());
-    if (!g.v1.empty() && !g.v2.empty()) {
-        if (std::optional<Witness> w = try_witness(hm, r1, r2, g.v1, g.v2)) return std::move(*w);
-        ++fallbacks;
-    }
-    return make_witness(hm, r1, r2, hm.P[0].vertices, hm.P[1].vertices, false);
 }
 
 Json polygon_json(Json& o, const std::vector<Point2q>& poly) {
@@ -118,7 +106,7 @@ Json compound_partition_json(const ExactScene& sc, const CompoundRegion& r) {
         hm.P[1] = r.parts[1][static_cast<size_t>(p.part2)];
         hm.s[0] = s1;
         hm.s[1] = s2;
-        for (const Point2q& v : p.polygon) witnesses[k].push_back(pair_witness(hm, v[0], v[1], missed[t]));
+        for (const Point2q& v : p.polygon) witnesses[k].push_back(pair_common_point(hm, v[0], v[1], missed[t]));
     });
     for (long x : missed) fallbacks += x;
     for (size_t k = 0; k < r.pairs.size(); ++k) {

@@ -1,0 +1,87 @@
+// Judgements on two compounds at one scaling pair (issue 22, item 6): the exact verdict, the
+// distance (the least over the part pairs), a point's membership and a plane's extents, each at
+// any (ρ1, ρ2) > 0 (inside I1 × I2 or not) and each with its proof for scalecert-check
+// (certificates/FORMAT.md, "A compound judgements file").
+//
+// Parts A of object 1 and B of object 2 scale about their object's seed. At one (ρ1, ρ2) a pair is
+//   - apart when its scaled bounding boxes are apart along an axis (exact; that axis separates),
+//   - else judged by the facet normals n of A ⊕ (−B): the least of ρ1 hA(n) + ρ2 hB(n) − n·d is
+//     < 0 (separated by n), 0 (touching: n separates weakly) or > 0 (overlapping: the interiors
+//     meet), as in region.hpp.
+// The objects overlap when some pair does (the union's interiors meet iff two parts' interiors
+// do: an open set meets the parts' boundaries in a set of measure zero), touch when no pair
+// overlaps and some pair meets, else are separated.
+#pragma once
+#include "certify/certificate.hpp"
+#include "certify/query.hpp"
+#include "compound/region.hpp"
+
+#include <map>
+#include <memory>
+#include <optional>
+
+namespace scalecert::internal {
+
+// A common point of A(ρ1) and B(ρ2) (hm holds the two parts and the seeds), weights indexed into
+// each part's own point list: an exact LP over the few vertices a double GJK names, else over all
+// the parts' vertices (counted in `fallbacks`). The LP decides; GJK only proposes.
+Witness pair_common_point(const HullModel& hm, const Q& rho1, const Q& rho2, long& fallbacks);
+
+class CompoundJudge {
+public:
+    // Builds every part's hull (InputError for a flat part, named "NAME: P1.parts[k]").
+    CompoundJudge(const ExactScene& sc, const std::string& name);
+    ~CompoundJudge();
+    const ExactScene& scene() const { return sc_; }
+    size_t parts(int i) const { return parts_[i].size(); }
+    const Polyhedron& part(int i, size_t k) const { return parts_[i][k]; }
+
+    // 0 separated, 1 touching, 2 overlapping; the deciding pair (−1 when separated). With
+    // `proof`: {"verdict", and by verdict "blocks" (separated, touching), "pair" and "witness"
+    // (touching: a common point of that pair) or "pair" and "interior" (overlapping: a point
+    // inside both parts, every listed weight > 0 on points spanning 3 dimensions)}.
+    struct Verdict {
+        int verdict = 0;
+        int part1 = -1, part2 = -1;
+    };
+    Verdict verdict(const Q& rho1, const Q& rho2, Json* proof = nullptr);
+
+    // The exact squared distance between the objects (the least over the part pairs; 0 when they
+    // meet) with closest points p ∈ P1(ρ1), q ∈ P2(ρ2) and their parts. With `proof`: {"squared",
+    // "pair", "P1", "P2" (the closest points' weights in their parts), and when squared > 0
+    // "apart": blocks whose normals u each hold gap(u)² ≥ squared·|u|² over the block}.
+    struct Distance {
+        Q squared;
+        Vec3q p1, p2;
+        int part1 = -1, part2 = -1;
+    };
+    Distance distance(const Q& rho1, const Q& rho2, Json* proof = nullptr);
+
+    // Is x in object i scaled by ρ? The first part holding it (−1 if none). With `proof`:
+    // {"part", "in": weights} or {"out": [a normal per part, whose plane x lies beyond]}.
+    int locate(int i, const Q& rho, const Vec3q& x, Json* proof = nullptr) const;
+
+    // max over P1(ρ1) of n·x and min over P2(ρ2) of n·x: over every part's vertices.
+    std::pair<Q, Q> plane_extents(const Vec3q& n, const Q& rho1, const Q& rho2) const;
+
+    // Statistics: pairs judged by their boxes, by their facet normals, exact distances.
+    struct Counts { long boxed = 0, judged = 0, distances = 0; };
+    Counts counts() const { return counts_; }
+
+private:
+    using Box = std::array<std::array<Q, 2>, 3>;
+    struct PairCache;
+    ExactScene sc_;
+    std::string name_;
+    std::vector<Polyhedron> parts_[2];
+    std::vector<Box> unit_[2];  // each part's own box (unscaled)
+    std::map<std::pair<int, int>, std::unique_ptr<PairCache>> cache_;
+    Counts counts_;
+
+    Box scaled_box(int i, size_t k, const Q& rho) const;
+    PairCache& pair(int a, int b);
+    // −1 separated (strictly), 0 touching, +1 overlapping, with a normal for ≤ 0.
+    int pair_sign(int a, int b, const Q& rho1, const Q& rho2, const std::vector<Box>& b1, const std::vector<Box>& b2, Vec3q* normal);
+};
+
+}  // namespace scalecert::internal
