@@ -1701,6 +1701,15 @@ bool judge(const Scene& sc, const Rules& R, const J& cl, const J& pr, const std:
 }  // namespace judge
 
 std::string g_summary;  // appended to the line printed for a valid file
+// A tolerance as the checker prints it: a long one by its size, never by a prefix (a prefix hides
+// a factor of 10^61).
+std::string tolerance_shown(const Q& tol) {
+    const std::string t = tol.get_str();
+    if (t.size() <= 40) return t;
+    char b[64];
+    std::snprintf(b, sizeof b, "%.6g", nearest(tol));
+    return std::string("~") + b + " (an exact fraction of " + std::to_string(t.size()) + " characters)";
+}
 void check_judgements(const J& c) {
     shape(c, "", {"format", "kind", "tolerance", "judgements", "seed_interior", "scene"});
     const Scene sc = read_scene(at(c, "scene"));
@@ -1723,14 +1732,7 @@ void check_judgements(const J& c) {
     // What the file proves, in the line the checker prints: the judgements and their tolerance
     // (a forged tolerance makes wrong values right, and stays valid: it is the file's claim).
     // A long tolerance is shown by its size, never by a prefix (a prefix hides a factor of 10^61).
-    const std::string tol = R.tol.get_str();
-    std::string shown = tol;
-    if (tol.size() > 40) {
-        char b[64];
-        std::snprintf(b, sizeof b, "%.6g", nearest(R.tol));
-        shown = std::string("~") + b + " (an exact fraction of " + std::to_string(tol.size()) + " characters)";
-    }
-    g_summary = "; judgements: " + std::to_string(rights) + " right, " + std::to_string(js.size() - rights) + " wrong, tolerance " + shown;
+    g_summary = "; judgements: " + std::to_string(rights) + " right, " + std::to_string(js.size() - rights) + " wrong, tolerance " + tolerance_shown(R.tol);
 }
 
 // ---- a compound partition ----------------------------------------------------------------------
@@ -1766,13 +1768,24 @@ std::array<size_t, 2> part_range(const J& j, size_t n, const std::string& where)
     return {a, b};
 }
 
-void check_compound_partition(const J& c) {
-    shape(c, "", {"format", "kind", "pairs", "growth_set", "scene"}, {"statistics"});
-    // The scene: each object's parts, their vertices held as one list (part k: [start[k], start[k + 1])).
-    const J& sj = at(c, "scene");
-    shape(sj, "scene", {"P1", "P2", "I1", "I2"});
+// A scene of two objects made of parts: each object's parts, their vertices held as one list
+// (part k: [start[k], start[k + 1])), every part spanning 3 dimensions.
+struct CompoundScene {
     Scene sc;
     std::vector<size_t> start[2];
+    size_t parts(int i) const { return start[i].size() - 1; }
+    // The vertices of parts first..last of object i, ascending.
+    std::vector<int> verts(int i, size_t first, size_t last) const {
+        std::vector<int> v;
+        for (size_t k = start[i][first]; k < start[i][last + 1]; ++k) v.push_back(static_cast<int>(k));
+        return v;
+    }
+};
+CompoundScene read_compound_scene(const J& sj) {
+    CompoundScene cs;
+    Scene& sc = cs.sc;
+    std::vector<size_t>(&start)[2] = cs.start;
+    shape(sj, "scene", {"P1", "P2", "I1", "I2"});
     for (int i = 0; i < 2; ++i) {
         const std::string w = std::string("scene.") + kPoly[i];
         const J& p = at(sj, kPoly[i]);
@@ -1803,6 +1816,14 @@ void check_compound_partition(const J& c) {
             std::iota(idx.begin(), idx.end(), static_cast<int>(start[i][k]));
             claim(affine_dim(sc, i, idx) == 3, std::string("scene.") + kPoly[i] + ".parts[" + std::to_string(k) + "] spans 3 dimensions");
         }
+    return cs;
+}
+
+void check_compound_partition(const J& c) {
+    shape(c, "", {"format", "kind", "pairs", "growth_set", "scene"}, {"statistics"});
+    const CompoundScene cs = read_compound_scene(at(c, "scene"));
+    const Scene& sc = cs.sc;
+    const std::vector<size_t>(&start)[2] = cs.start;
     if (c.contains("statistics")) {
         const J& st = at(c, "statistics");
         shape(st, "statistics", {"pairs", "pruned", "built", "entries", "witness_fallbacks"});
@@ -1905,6 +1926,228 @@ void check_compound_partition(const J& c) {
                 " meeting somewhere in I1 x I2";
 }
 
+// ---- a compound judgements file ----------------------------------------------------------------
+// certify-fp's judgements on two objects made of parts (FORMAT.md, "A compound judgements file"),
+// each re-derived from its claim and its proof by CLAIMS.md's rules ("Objects made of parts").
+namespace compound {
+
+// max over the parts first..last of object i, scaled by rho about the object's seed, of n·x (n a
+// nonzero rational): n·s + rho max over their vertices of n·(v − s), a scan of those vertices.
+Q block_reach(const CompoundScene& cs, int i, const V3& n, const Q& rho, size_t first, size_t last) {
+    const Scene& sc = cs.sc;
+    spend_ops(12, judge::vsize(n) + judge::vsize(sc.s[i]) + qsize(rho) + 2 * limbs(sc.Dj));
+    mpz_class L;
+    const Z3 u = ints(judge::integral(n, &L));
+    const std::vector<int> verts = cs.verts(i, first, last);
+    const std::vector<int> best = sc.scan[i]->argmax(u, &verts);
+    Q h(sc.support_at(i, u, best[0]), sc.Dj * L);  // max over the vertices of u·(v − s), over L
+    h.canonicalize();
+    return dot(n, sc.s[i]) + rho * h;
+}
+// The least over the same parts of n·x.
+Q block_floor(const CompoundScene& cs, int i, const V3& n, const Q& rho, size_t first, size_t last) {
+    return -block_reach(cs, i, {-n[0], -n[1], -n[2]}, rho, first, last);
+}
+// s + rho (Σ w v − s) for weights over part k of object i (indices into the part's own points).
+V3 part_point(const CompoundScene& cs, int i, size_t k, const Q& rho, const J& w, const std::string& where, std::vector<int>* used = nullptr) {
+    const Scene& sc = cs.sc;
+    const std::array<Q, 3> c = combination(sc, i, w, where, used, cs.start[i][k], cs.start[i][k + 1] - cs.start[i][k]);
+    spend_ops(12, judge::vsize(sc.s[i]) + qsize(rho) + std::max({qsize(c[0]), qsize(c[1]), qsize(c[2])}) + limbs(sc.scan[i]->D()));
+    const Q D(sc.scan[i]->D());
+    V3 x;
+    for (int d = 0; d < 3; ++d) x[d] = sc.s[i][d] + rho * (c[d] / D - sc.s[i][d]);
+    return x;
+}
+// [k, j]: a part of P1 and a part of P2.
+std::array<size_t, 2> part_pair(const CompoundScene& cs, const J& j, const std::string& where) {
+    claim(j.is_array() && j.size() == 2, where + " is [P1 part, P2 part]");
+    return {index(j[0], cs.parts(0), where + "[0]"), index(j[1], cs.parts(1), where + "[1]")};
+}
+// Is x in object i at rho? {"part": k, "in": weights} combining to x in part k, or
+// {"out": [a normal per part]}, x strictly beyond each part's extent along its normal.
+bool member(const CompoundScene& cs, int i, const Q& rho, const V3& x, const J& p, const std::string& where) {
+    claim(p.is_object(), where + " is an object");
+    if (p.contains("out")) {
+        shape(p, where, {"out"});
+        const J& o = at(p, "out");
+        claim(o.is_array() && o.size() == cs.parts(i), where + ".out has a normal for each part");
+        for (size_t k = 0; k < o.size(); ++k) {
+            const std::string wk = where + ".out[" + std::to_string(k) + "]";
+            const V3 n = normal(o[k], wk);
+            spend_ops(3, judge::vsize(n) + judge::vsize(x));
+            claim(dot(n, x) > block_reach(cs, i, n, rho, k, k), wk + ": the point lies strictly beyond the part's extent along the normal");
+        }
+        return false;
+    }
+    shape(p, where, {"part", "in"});
+    const size_t k = index(at(p, "part"), cs.parts(i), where + ".part");
+    claim(part_point(cs, i, k, rho, at(p, "in"), where + ".in") == x, where + ".in combines to the point");
+    return true;
+}
+// Blocks {"P1_parts", "P2_parts", "normal"} covering every part pair once, in increasing (first
+// P1 part, first P2 part) order; ok(c1, c2, n) judges each block by the largest n·x over its P1
+// parts at rho1 (c1) and the least over its P2 parts at rho2 (c2).
+template <class Ok>
+void check_blocks(const CompoundScene& cs, const Q& r1, const Q& r2, const J& bs, const std::string& where, Ok ok) {
+    const size_t m = cs.parts(0), n = cs.parts(1);
+    claim(bs.is_array() && !bs.empty(), where + " is a nonempty list");
+    spend(static_cast<double>(m) * static_cast<double>(n) / 8);
+    std::vector<bool> covered(m * n, false);
+    size_t count = 0;
+    std::array<size_t, 2> previous{0, 0};
+    for (size_t e = 0; e < bs.size(); ++e) {
+        const std::string w = where + "[" + std::to_string(e) + "]";
+        shape(bs[e], w, {"P1_parts", "P2_parts", "normal"});
+        const std::array<size_t, 2> ra = part_range(at(bs[e], "P1_parts"), m, w + ".P1_parts"), rb = part_range(at(bs[e], "P2_parts"), n, w + ".P2_parts");
+        claim(e == 0 || std::array<size_t, 2>{ra[0], rb[0]} > previous, w + " comes after the block before it (by first P1 part, then first P2 part)");
+        previous = {ra[0], rb[0]};
+        spend(static_cast<double>(ra[1] - ra[0] + 1) * static_cast<double>(rb[1] - rb[0] + 1));
+        for (size_t a = ra[0]; a <= ra[1]; ++a)
+            for (size_t b = rb[0]; b <= rb[1]; ++b) {
+                claim(!covered[a * n + b], w + " covers the pair (" + std::to_string(a) + ", " + std::to_string(b) + ") a second time");
+                covered[a * n + b] = true;
+                ++count;
+            }
+        const V3 nv = judge::nonzero_vector(at(bs[e], "normal"), w + ".normal");
+        const Q c1 = block_reach(cs, 0, nv, r1, ra[0], ra[1]), c2 = block_floor(cs, 1, nv, r2, rb[0], rb[1]);
+        ok(c1, c2, nv, w);
+    }
+    claim(count == m * n, where + " covers every part pair (" + std::to_string(count) + " of " + std::to_string(m * n) + ")");
+}
+
+bool judge_claim(const CompoundScene& cs, const judge::Rules& R, const J& cl, const J& pr, const std::string& where) {
+    const Scene& sc = cs.sc;
+    claim(cl.is_object() && cl.contains("kind") && cl["kind"].is_string(), where + ".claim has a kind");
+    claim(pr.is_object(), where + ".proof is an object");
+    const std::string kind = cl["kind"].get<std::string>();
+    const std::string wc = where + ".claim", wp = where + ".proof";
+    if (kind == "verdict") {
+        shape(cl, wc, {"kind", "rho1", "rho2", "verdict"});
+        const Q r1 = judge::positive(cl, "rho1", wc), r2 = judge::positive(cl, "rho2", wc);
+        claim(at(cl, "verdict").is_string() && at(pr, "verdict").is_string(), where + ": verdicts are strings");
+        const std::string c = at(cl, "verdict").get<std::string>(), v = at(pr, "verdict").get<std::string>();
+        claim(c == "separated" || c == "touching" || c == "overlapping" || c == "intersecting", wc + ".verdict is separated, touching, overlapping or intersecting");
+        if (v == "overlapping") {
+            // A point inside a part of each: strictly positive weights on points spanning 3
+            // dimensions lie inside their hull, hence inside the part, and scaling keeps it inside.
+            shape(pr, wp, {"verdict", "pair", "interior"});
+            const std::array<size_t, 2> kj = part_pair(cs, at(pr, "pair"), wp + ".pair");
+            const J& in = at(pr, "interior");
+            shape(in, wp + ".interior", {"P1", "P2"});
+            std::vector<int> used[2];
+            const V3 x = part_point(cs, 0, kj[0], r1, at(in, "P1"), wp + ".interior.P1", &used[0]);
+            const V3 y = part_point(cs, 1, kj[1], r2, at(in, "P2"), wp + ".interior.P2", &used[1]);
+            claim(x == y, wp + ".interior is one point of both parts");
+            for (int i = 0; i < 2; ++i)
+                claim(affine_dim(sc, i, used[i]) == 3, wp + ".interior." + kPoly[i] + " uses points spanning 3 dimensions (an interior point)");
+        } else if (v == "touching" || v == "separated") {
+            // Every pair apart by a plane (weakly: no interiors meet; strictly: none meets); touching
+            // also needs a common point of one pair.
+            const bool touching = v == "touching";
+            if (touching) shape(pr, wp, {"verdict", "blocks", "pair", "witness"});
+            else shape(pr, wp, {"verdict", "blocks"});
+            check_blocks(cs, r1, r2, at(pr, "blocks"), wp + ".blocks", [&](const Q& c1, const Q& c2, const V3&, const std::string& w) {
+                spend_ops(1, qsize(c1) + qsize(c2));
+                if (touching) claim(c1 <= c2, w + ": the plane separates its block's pairs (weakly)");
+                else claim(c1 < c2, w + ": the plane separates its block's pairs strictly");
+            });
+            if (touching) {
+                const std::array<size_t, 2> kj = part_pair(cs, at(pr, "pair"), wp + ".pair");
+                const J& wt = at(pr, "witness");
+                shape(wt, wp + ".witness", {"P1", "P2"});
+                claim(part_point(cs, 0, kj[0], r1, at(wt, "P1"), wp + ".witness.P1") == part_point(cs, 1, kj[1], r2, at(wt, "P2"), wp + ".witness.P2"),
+                      wp + ".witness is a point of both parts");
+            }
+        } else {
+            claim(false, wp + ".verdict is separated, touching or overlapping");
+        }
+        return c == "intersecting" ? v != "separated" : c == v;
+    }
+    if (kind == "separating_plane") {
+        shape(cl, wc, {"kind", "rho1", "rho2", "normal"}, {"offset"});
+        claim(pr.empty(), wp + " is empty (the checker computes the extents)");
+        const Q r1 = judge::positive(cl, "rho1", wc), r2 = judge::positive(cl, "rho2", wc);
+        const V3 n = judge::nonzero_vector(at(cl, "normal"), wc + ".normal");
+        const Q c1 = block_reach(cs, 0, n, r1, 0, cs.parts(0) - 1), c2 = block_floor(cs, 1, n, r2, 0, cs.parts(1) - 1);
+        bool right = c1 < c2;
+        if (cl.contains("offset")) {
+            const Q d = num(at(cl, "offset"), wc + ".offset");
+            right = right && c1 < d && d < c2;
+        }
+        return right;
+    }
+    if (kind == "witness_point") {
+        shape(cl, wc, {"kind", "rho1", "rho2", "point"});
+        shape(pr, wp, {"P1", "P2"});
+        const Q r1 = judge::positive(cl, "rho1", wc), r2 = judge::positive(cl, "rho2", wc);
+        const V3 x = point(at(cl, "point"), wc + ".point");
+        const bool in1 = member(cs, 0, r1, x, at(pr, "P1"), wp + ".P1"), in2 = member(cs, 1, r2, x, at(pr, "P2"), wp + ".P2");
+        return in1 && in2;
+    }
+    if (kind == "distance") {
+        shape(cl, wc, {"kind", "rho1", "rho2", "value"}, {"closest"});
+        const Q r1 = judge::positive(cl, "rho1", wc), r2 = judge::positive(cl, "rho2", wc);
+        const Q c = num(at(cl, "value"), wc + ".value");
+        const Q E = num(at(pr, "squared"), wp + ".squared");
+        claim(sgn(E) >= 0, wp + ".squared is >= 0");
+        if (sgn(E) > 0) shape(pr, wp, {"squared", "pair", "P1", "P2", "apart"}, {"closest"});
+        else shape(pr, wp, {"squared", "pair", "P1", "P2"}, {"closest"});
+        claim(cl.contains("closest") == pr.contains("closest"), wp + ".closest is there exactly when the claim has closest points");
+        // The upper bound: two points of the objects, sqrt(E) apart.
+        const std::array<size_t, 2> kj = part_pair(cs, at(pr, "pair"), wp + ".pair");
+        const V3 p = part_point(cs, 0, kj[0], r1, at(pr, "P1"), wp + ".P1"), q = part_point(cs, 1, kj[1], r2, at(pr, "P2"), wp + ".P2");
+        const V3 pq{q[0] - p[0], q[1] - p[1], q[2] - p[2]};
+        spend_ops(6, 2 * judge::vsize(pq));
+        claim(dot(pq, pq) == E, wp + ": the points P1 and P2 are sqrt(squared) apart");
+        // The lower bound: every pair at least sqrt(E) apart, gap(u) >= sqrt(E) |u| over each block.
+        if (sgn(E) > 0)
+            check_blocks(cs, r1, r2, at(pr, "apart"), wp + ".apart", [&](const Q& c1, const Q& c2, const V3& u, const std::string& w) {
+                const Q gap = c2 - c1;
+                spend_ops(6, 2 * qsize(gap) + qsize(E) + 2 * judge::vsize(u));
+                claim(sgn(gap) > 0 && gap * gap >= E * dot(u, u), w + ": its pairs are at least sqrt(squared) apart along the normal");
+            });
+        bool right = R.close_sq(c, E);
+        if (cl.contains("closest")) {
+            const J& cp = at(cl, "closest");
+            claim(cp.is_array() && cp.size() == 2, wc + ".closest is [point, point]");
+            const V3 a = point(cp[0], wc + ".closest[0]"), b = point(cp[1], wc + ".closest[1]");
+            const J& pc = at(pr, "closest");
+            shape(pc, wp + ".closest", {"P1", "P2"});
+            const bool in1 = member(cs, 0, r1, a, at(pc, "P1"), wp + ".closest.P1"), in2 = member(cs, 1, r2, b, at(pc, "P2"), wp + ".closest.P2");
+            const V3 ab{b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+            spend_ops(6, 2 * judge::vsize(ab));
+            right = right && in1 && in2 && R.within_above(dot(ab, ab), E);
+        }
+        return right;
+    }
+    claim(false, wc + ".kind is verdict, separating_plane, witness_point or distance (the claims on objects made of parts)");
+    return false;
+}
+
+}  // namespace compound
+
+void check_compound_judgements(const J& c) {
+    shape(c, "", {"format", "kind", "tolerance", "judgements", "scene"});
+    const CompoundScene cs = read_compound_scene(at(c, "scene"));
+    judge::Rules R{num(at(c, "tolerance"), "tolerance")};
+    claim(sgn(R.tol) >= 0, "tolerance is >= 0");
+    const J& js = at(c, "judgements");
+    claim(js.is_array() && !js.empty(), "judgements is a nonempty list");
+    std::set<size_t> indices;
+    size_t rights = 0;
+    for (size_t k = 0; k < js.size(); ++k) {
+        const std::string w = "judgements[" + std::to_string(k) + "]";
+        shape(js[k], w, {"index", "claim", "right", "proof"});
+        claim(natural(at(js[k], "index")) && indices.insert(at(js[k], "index").get<size_t>()).second, w + ".index is a distinct natural number");
+        claim(at(js[k], "right").is_boolean(), w + ".right is true or false");
+        const bool right = compound::judge_claim(cs, R, at(js[k], "claim"), at(js[k], "proof"), w);
+        claim(right == at(js[k], "right").get<bool>(), w + ".right must be the judgement the rules give, which is " + (right ? "right" : "wrong"));
+        rights += right;
+    }
+    g_summary = "; compound judgements: " + std::to_string(rights) + " right, " + std::to_string(js.size() - rights) + " wrong, tolerance " +
+                tolerance_shown(R.tol) + "; " + std::to_string(cs.parts(0)) + " x " + std::to_string(cs.parts(1)) + " part pairs";
+}
+
 // Checks a whole file's text. Returns the exit status; `message` is the line to print.
 int check_text(const std::string& text, std::string& message) {
     g_claims = 0;
@@ -1922,7 +2165,8 @@ int check_text(const std::string& text, std::string& message) {
             else if (kind == "query") check_query(c);
             else if (kind == "judgements") check_judgements(c);
             else if (kind == "compound_partition") check_compound_partition(c);
-            else claim(false, "kind is partition, query, judgements or compound_partition (got '" + StrictTree::printable(kind) + "': not a certificate)");
+            else if (kind == "compound_judgements") check_compound_judgements(c);
+            else claim(false, "kind is partition, query, judgements, compound_partition or compound_judgements (got '" + StrictTree::printable(kind) + "': not a certificate)");
         } catch (const Invalid& e) {
             message = "invalid: " + e.what;
             return 1;

@@ -421,7 +421,20 @@ PYBIND11_MODULE(scalecert, m) {
              "what scalecert region writes, as a dict: pair polygons, their union, the labelled boundary, switch points, growth set")
         .def("partition", [](const scalecert::Region& r) { return json_loads(r.partition_json()); },
              "the certified partition (kind compound_partition) as a dict")
-        .def("partition_json", &scalecert::Region::partition_json, "the certificate's text, for scalecert-check");
+        .def("partition_json", &scalecert::Region::partition_json, "the certificate's text, for scalecert-check")
+        .def("certify_fp", [](const scalecert::Region& r, const py::handle& claims, bool exact_decimals, const py::handle& tolerance,
+                              bool certificate) -> py::object {
+                 scalecert::ClaimOptions opt;
+                 opt.exact_decimals = exact_decimals;
+                 opt.tolerance = rational(tolerance, "tolerance");
+                 opt.certificate = certificate;
+                 scalecert::ClaimReport rep = r.certify_fp(claims_text(claims), opt);
+                 if (!certificate) return json_loads(rep.report);
+                 return py::make_tuple(json_loads(rep.report), rep.certificate);
+             }, py::arg("claims"), py::arg("exact_decimals") = false, py::arg("tolerance") = 0, py::arg("certificate") = false,
+             "marks claims on the compounds right or wrong, as Scene.certify_fp does: verdict, separating_plane, "
+             "witness_point and distance claims (the least over the part pairs) at any rho1, rho2 > 0, or 'RHO1 RHO2 "
+             "VERDICT' lines; with certificate=True, (the report, the compound_judgements certificate's text)");
 
     py::class_<PyScene>(m, "Scene")
         .def(py::init([](const py::handle& p1, const py::handle& p2, const py::handle& i1, const py::handle& i2, const py::handle& seeds) {

@@ -210,8 +210,8 @@ void mutate_all(const OJ& root, const OJ& node, const OJ::json_pointer& ptr, Tal
         } else if (s == "separated" || s == "touching" || s == "overlapping") {
             for (const char* v : {"separated", "touching", "overlapping"})
                 if (s != v) with(v, std::string("verdict flipped to ") + v);
-        } else if (s == "partition" || s == "query" || s == "judgements" || s == "compound_partition") {
-            for (const char* v : {"partition", "query", "curve", "judgements", "compound_partition", "region"})
+        } else if (s == "partition" || s == "query" || s == "judgements" || s == "compound_partition" || s == "compound_judgements") {
+            for (const char* v : {"partition", "query", "curve", "judgements", "compound_partition", "compound_judgements", "region"})
                 if (s != v) with(v, std::string("kind changed to ") + v);
         } else {
             with(s + "X", "string changed");
@@ -1506,4 +1506,162 @@ BOOST_AUTO_TEST_CASE(a_compound_fence_of_many_normals_over_huge_corners_meets_th
     BOOST_TEST(scalecert_check::check_text(text, msg) == 2, msg);
     BOOST_TEST(msg.find("work limit") != std::string::npos, msg);
     BOOST_TEST(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() < 30.0);  // not the 97 s it took
+}
+
+// ---- compound judgements (issue 22, item 6) -----------------------------------------------------
+
+namespace {
+// certify-fp's certificate for claims on a scene of parts, checked valid.
+OJ compound_judgements(const fs::path& scene, const std::string& claims, const std::string& name) {
+    const fs::path cl = tmpdir() / (name + ".claims.json"), out = tmpdir() / (name + ".judgements.json");
+    std::ofstream(cl) << claims;
+    const int st = engine("certify-fp " + scene.string() + " " + cl.string() + " --certificate " + out.string() + " --out " +
+                          (tmpdir() / (name + ".report")).string());
+    BOOST_REQUIRE(st == 0 || st == 1);
+    BOOST_REQUIRE(check_file(out) == 0);
+    return load(out);
+}
+// The band's claims (test_compound derives each by hand): a verdict of each kind, distances apart
+// and meeting with closest points, planes and witness points in and out.
+const char* kBandClaims = R"({"format": "scalecert-claims-1", "claims": [
+ {"kind": "verdict", "rho1": 1, "rho2": 2, "verdict": "separated"},
+ {"kind": "verdict", "rho1": 1, "rho2": 3, "verdict": "touching"},
+ {"kind": "verdict", "rho1": 1.5, "rho2": 2, "verdict": "overlapping"},
+ {"kind": "verdict", "rho1": 3, "rho2": 2, "verdict": "intersecting"},
+ {"kind": "distance", "rho1": 1, "rho2": 2, "value": 0.5, "closest": [[3, 0, 0], [3.5, 0, 0]]},
+ {"kind": "distance", "rho1": 3, "rho2": 2, "value": 0.5},
+ {"kind": "distance", "rho1": 1.5, "rho2": 2, "value": 0, "closest": [[4, 0, 0], [4, 0, 0]]},
+ {"kind": "separating_plane", "rho1": 1, "rho2": 2, "normal": [1, 0, 0], "offset": 3.25},
+ {"kind": "separating_plane", "rho1": 3, "rho2": 2, "normal": [1, 0, 0]},
+ {"kind": "witness_point", "rho1": 1.5, "rho2": 2, "point": [4, 0, 0]},
+ {"kind": "witness_point", "rho1": 1.5, "rho2": 2, "point": [-4, 0, 0]}
+]})";
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(compound_judgements_are_valid_and_tampering_is_rejected) {
+    // Every mutation is rejected, or the checker accepts it and the engine, re-run on the changed
+    // file's scene, claims and tolerance, gives every judgement the file states.
+    const OJ band = compound_judgements(data("compound_band.json"), kBandClaims, "band");
+    BOOST_TEST(band["kind"] == "compound_judgements");
+    const std::vector<bool> right = {true, true, true, false, true, true, true, true, false, true, false};
+    BOOST_TEST_REQUIRE(band["judgements"].size() == right.size());
+    for (size_t k = 0; k < right.size(); ++k) BOOST_TEST(band["judgements"][k]["right"] == right[k], k);
+    mutate_and_report(band, "compound judgements (band)", false, true);
+    // The mixed compound: blocks of far parts, several pairs apart by their own normals.
+    const std::string mixed_claims = R"({"format": "scalecert-claims-1", "claims": [
+     {"kind": "verdict", "rho1": 1, "rho2": 1, "verdict": "separated"},
+     {"kind": "distance", "rho1": 1, "rho2": 1, "value": 1},
+     {"kind": "verdict", "rho1": "5/2", "rho2": "5/2", "verdict": "overlapping"},
+     {"kind": "distance", "rho1": "1/2", "rho2": "1/2", "value": 3}
+    ]})";
+    const OJ mixed = compound_judgements(mixed_compound(), mixed_claims, "mixed");
+    mutate_and_report(mixed, "compound judgements (mixed)", false, true);
+}
+
+BOOST_AUTO_TEST_CASE(compound_judgement_forgeries_are_rejected) {
+    const OJ band = compound_judgements(data("compound_band.json"), kBandClaims, "band_forged");
+    auto rejected = [](const OJ& j) { return check_json(j) == 1; };
+    // A touching point called overlapping, its common point (on a face) offered as an interior one.
+    {
+        OJ f = band;
+        OJ& e = f["judgements"][1];
+        e["claim"]["verdict"] = "overlapping";
+        const OJ w = e["proof"]["witness"];
+        e["proof"] = OJ{{"verdict", "overlapping"}, {"pair", e["proof"]["pair"]}, {"interior", w}};
+        BOOST_TEST(rejected(f));
+    }
+    // The same touching point called separated, with its weak blocks.
+    {
+        OJ f = band;
+        OJ& e = f["judgements"][1];
+        e["claim"]["verdict"] = "separated";
+        e["proof"].erase("pair");
+        e["proof"].erase("witness");
+        e["proof"]["verdict"] = "separated";
+        BOOST_TEST(rejected(f));
+    }
+    // At (3, 2) the objects are separated but no plane separates them: a block of both parts
+    // under one normal is refused, whichever axis it takes.
+    for (const char* n : {"1", "-1"}) {
+        OJ f = band;
+        OJ& e = f["judgements"][3];
+        e["claim"]["verdict"] = "separated";
+        e["right"] = true;
+        e["proof"]["blocks"] = OJ::parse(std::string(R"([{"P1_parts": [0, 1], "P2_parts": [0, 0], "normal": [")") + n + R"(", "0", "0"]}])");
+        BOOST_TEST(rejected(f), n);
+    }
+    // A distance below the exact one: the two points are farther apart, or the lower bound fails.
+    {
+        OJ f = band;
+        OJ& e = f["judgements"][5];
+        e["proof"]["squared"] = "1/5";
+        BOOST_TEST(rejected(f));
+    }
+    // A block that skips a pair, and one that covers a pair twice.
+    {
+        OJ f = band;
+        f["judgements"][0]["proof"]["blocks"][0]["P1_parts"] = OJ::array({0, 0});
+        BOOST_TEST(rejected(f));
+        OJ g = band;
+        OJ& b = g["judgements"][1]["proof"]["blocks"];
+        b[1]["P1_parts"] = OJ::array({0, 1});
+        BOOST_TEST(rejected(g));
+    }
+    // A witness point outside P2 shown "in" a part it is not in, and "out" with too few normals.
+    {
+        OJ f = band;
+        OJ& e = f["judgements"][10];
+        e["proof"]["P2"] = OJ{{"part", 0}, {"in", OJ::parse(R"([[0, "1"]])")}};
+        BOOST_TEST(rejected(f));
+        OJ g = band;
+        g["judgements"][9]["proof"]["P2"] = OJ{{"out", OJ::array()}};
+        BOOST_TEST(rejected(g));
+    }
+}
+
+BOOST_AUTO_TEST_CASE(fresh_compound_judgements_for_random_scenes_are_valid) {
+    // Random compounds of two to four parts a side (4 to 8 points each in a cube of side 4 at
+    // random offsets; seeds anywhere), claims of the four kinds at eight scaling pairs each: every
+    // certificate the engine writes passes the checker.
+    std::mt19937 g(4242);
+    std::uniform_int_distribution<int> c(-2, 2), off(-4, 4), np(4, 8), nparts(2, 4), q(4, 100);
+    int files = 0, verdicts[3] = {0, 0, 0};
+    for (int t = 0; t < 8; ++t) {
+        OJ scene{{"I1", {"1/4", "3"}}, {"I2", {"1/4", "3"}}};
+        for (int i = 0; i < 2; ++i) {
+            OJ parts = OJ::array();
+            for (int k = nparts(g); k > 0; --k) {
+                const int ox = off(g) + 3 * i, oy = off(g);
+                OJ v = OJ::array();
+                for (int p = np(g); p > 0; --p) v.push_back({c(g) + ox, c(g) + oy, c(g)});
+                v.push_back({ox - 2, oy - 2, -2});  // a tetrahedron's corners keep every part solid
+                v.push_back({ox + 2, oy - 2, -2});
+                v.push_back({ox - 2, oy + 2, -2});
+                v.push_back({ox - 2, oy - 2, 2});
+                parts.push_back({{"vertices", v}});
+            }
+            scene[i ? "P2" : "P1"] = {{"parts", parts}, {"seed", {off(g) + 3 * i, off(g), 0}}};
+        }
+        const fs::path sp = tmpdir() / "random_compound.json";
+        save(scene, sp);
+        OJ claims = OJ::array();
+        for (int k = 0; k < 8; ++k) {
+            const std::string a = std::to_string(q(g)) + "/40", b = std::to_string(q(g)) + "/40";
+            claims.push_back({{"kind", "verdict"}, {"rho1", a}, {"rho2", b}, {"verdict", "touching"}});
+            claims.push_back({{"kind", "distance"}, {"rho1", a}, {"rho2", b}, {"value", "1"}, {"closest", {{"1", "0", "0"}, {"2", "1", "0"}}}});
+            claims.push_back({{"kind", "separating_plane"}, {"rho1", a}, {"rho2", b}, {"normal", {"1", "0", "0"}}});
+            claims.push_back({{"kind", "witness_point"}, {"rho1", a}, {"rho2", b}, {"point", {"1", "1", "0"}}});
+        }
+        const OJ j = compound_judgements(sp, OJ{{"format", "scalecert-claims-1"}, {"claims", claims}}.dump(), "random_compound");
+        for (const OJ& e : j["judgements"])
+            if (e["claim"]["kind"] == "verdict") {
+                const std::string v = e["proof"]["verdict"];
+                ++verdicts[v == "separated" ? 0 : v == "touching" ? 1 : 2];
+            }
+        ++files;
+    }
+    std::cout << "fresh compound judgements: " << files << " files, verdicts " << verdicts[0] << " separated, " << verdicts[1] << " touching, "
+              << verdicts[2] << " overlapping\n";
+    BOOST_TEST(verdicts[0] > 0);
+    BOOST_TEST(verdicts[2] > 0);
 }

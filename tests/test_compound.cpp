@@ -5,7 +5,10 @@
 #define BOOST_TEST_MODULE compound
 #include <boost/test/unit_test.hpp>
 
+#include "certify/claims.hpp"
+#include "certify/compound_judge.hpp"
 #include "certify/region_certificate.hpp"
+#include "geometry/measures.hpp"
 #include "compound/boundary.hpp"
 #include "compound/locate.hpp"
 #include "compound/region.hpp"
@@ -705,4 +708,144 @@ BOOST_AUTO_TEST_CASE(a_normal_tight_everywhere_holds_no_edge) {
     }
     BOOST_TEST(contacts == 1);
     BOOST_TEST(compound_verdict(r, Q(3), Q(1, 2)).verdict == std::string("touching"));  // inside the polygon, yet touching
+}
+
+// ---- certify-fp on compounds (issue 22, item 6) --------------------------------------------------
+namespace {
+// certify-fp's JSON claims on a scene of parts: each judgement, and the certificate text.
+std::vector<bool> judge_claims(const ExactScene& sc, const std::string& claims, std::string* certificate = nullptr, const Q& tol = Q(0)) {
+    CompoundJudge judge(sc, "scene");
+    long wrong = 0;
+    const std::string rep = certify_fp(judge, claims, "claims", ClaimOptions{false, tol, true}, &wrong, nullptr, certificate);
+    std::vector<bool> right;
+    const auto report = nlohmann::ordered_json::parse(rep);
+    for (const auto& c : report["claims"]) right.push_back(c["right"].get<bool>());
+    return right;
+}
+ExactScene band_scene() {
+    const std::vector<std::array<int, 6>> parts[2] = {{{4, -2, -2, 6, 2, 2}, {-6, -2, -2, -4, 2, 2}}, {{8, -2, -2, 10, 2, 2}}};
+    const Vec3q seeds[2] = {{Q(0), Q(0), Q(0)}, {Q(9, 2), Q(0), Q(0)}};
+    return compound_scene(parts, seeds, kLo, kHi);
+}
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(band_claims_judged_by_hand) {
+    // The band (a_band_two_parts_either_side_of_the_seed): the right part spans [2ρ1, 3ρ1] in x,
+    // the left [−3ρ1, −2ρ1], the box [9/2 − ρ2/2, 9/2 + ρ2/2]; y and z always overlap.
+    //  (1, 2): right part [2, 3], box [7/2, 11/2]: apart by 1/2 along x (the left by 11/2).
+    //  (1, 3): box [3, 6]: touches the right part at x = 3. (7/6, 2): [7/3, 7/2] touches at 7/2.
+    //  (3/2, 2): [3, 9/2] and [7/2, 11/2] overlap. (3, 2): [6, 9] is past the box, [−9, −6] before
+    //  it: separated, 1/2 apart (from x = 11/2 to 6), and no plane separates the two objects (the
+    //  box lies between the parts). (4, 3/2, 3/2) at (3/2, 2) is on an edge of the right part, inside the box.
+    const std::string claims = R"({"format": "scalecert-claims-1", "claims": [
+     {"kind": "verdict", "rho1": 1, "rho2": 2, "verdict": "separated"},
+     {"kind": "verdict", "rho1": 1, "rho2": 3, "verdict": "touching"},
+     {"kind": "verdict", "rho1": "7/6", "rho2": 2, "verdict": "touching"},
+     {"kind": "verdict", "rho1": 1.5, "rho2": 2, "verdict": "overlapping"},
+     {"kind": "verdict", "rho1": 3, "rho2": 2, "verdict": "intersecting"},
+     {"kind": "verdict", "rho1": 3, "rho2": 2, "verdict": "separated"},
+     {"kind": "distance", "rho1": 1, "rho2": 2, "value": 0.5, "closest": [[3, 0, 0], [3.5, 0, 0]]},
+     {"kind": "distance", "rho1": 1, "rho2": 2, "value": 0.5, "closest": [[3, 0, 0], [3.5, 2.5, 0]]},
+     {"kind": "distance", "rho1": 3, "rho2": 2, "value": 0.5, "closest": [[6, 1, 1], [5.5, 1, 1]]},
+     {"kind": "distance", "rho1": 3, "rho2": 2, "value": 5.5},
+     {"kind": "distance", "rho1": 1.5, "rho2": 2, "value": 0},
+     {"kind": "separating_plane", "rho1": 1, "rho2": 2, "normal": [1, 0, 0], "offset": 3.25},
+     {"kind": "separating_plane", "rho1": 3, "rho2": 2, "normal": [1, 0, 0]},
+     {"kind": "separating_plane", "rho1": 3, "rho2": 2, "normal": [-1, 0, 0]},
+     {"kind": "witness_point", "rho1": 1.5, "rho2": 2, "point": [4, 0, 0]},
+     {"kind": "witness_point", "rho1": 1.5, "rho2": 2, "point": [-4, 0, 0]},
+     {"kind": "witness_point", "rho1": 1.5, "rho2": 2, "point": [4, 1.5, 1.5]}
+    ]})";
+    const std::vector<bool> want = {true, true, true, true, false, true, true, false, true, false, true, true, false, false, true, false, true};
+    const std::vector<bool> got = judge_claims(band_scene(), claims);
+    BOOST_TEST_REQUIRE(got.size() == want.size());
+    for (size_t k = 0; k < want.size(); ++k) BOOST_TEST(got[k] == want[k], "claim " << k);
+    // The exact values: at (3, 2) the least distance is the right part's (squared 1/4), not the left's.
+    CompoundJudge judge(band_scene(), "band");
+    const CompoundJudge::Distance d = judge.distance(Q(3), Q(2));
+    BOOST_TEST(d.squared == Q(1, 4));
+    BOOST_TEST(d.part1 == 0);
+    BOOST_TEST(judge.verdict(Q(3, 2), Q(2)).verdict == 2);
+    BOOST_TEST(judge.verdict(Q(7, 6), Q(2)).verdict == 1);
+    BOOST_TEST(judge.verdict(Q(7, 6) - Q(1, 1000), Q(2)).verdict == 0);
+    BOOST_TEST(judge.locate(0, Q(3, 2), {Q(-4), Q(0), Q(0)}) == 1);  // in the left part
+}
+
+BOOST_AUTO_TEST_CASE(u_and_peg_claims_judged_by_hand) {
+    // The U and peg (a_u_shape_and_a_peg): the bottom's top at z = (1 + ρ1)/2, the peg's bottom at
+    // 7/2 − 3ρ2/2 (they meet on ρ1 + 3ρ2 >= 6); the right wall from x = 2ρ1, the peg to x = ρ2
+    // (they meet on ρ2 >= 2ρ1). (1, 1): 1 apart in z from the bottom and 1 in x from each wall:
+    // separated, distance 1, and no plane: the walls rise past the peg's bottom. (1, 3/2): 1/4 from
+    // the bottom (z 1 to 5/4), 1/2 from the walls. (1, 2): the peg's bottom at 1/2 sinks into the
+    // bottom (z up to 1) with x in [−2, 2] and y in [−1, 1]: overlapping. (6/7, 12/7): all three touch.
+    const std::string claims = R"({"format": "scalecert-claims-1", "claims": [
+     {"kind": "verdict", "rho1": 1, "rho2": 1, "verdict": "separated"},
+     {"kind": "distance", "rho1": 1, "rho2": 1, "value": 1},
+     {"kind": "separating_plane", "rho1": 1, "rho2": 1, "normal": [0, 0, 1]},
+     {"kind": "distance", "rho1": 1, "rho2": 1.5, "value": 0.25, "closest": [[0, 0, 1], [0, 0, 1.25]]},
+     {"kind": "distance", "rho1": 1, "rho2": 1.5, "value": 0.5},
+     {"kind": "verdict", "rho1": 1, "rho2": 2, "verdict": "overlapping"},
+     {"kind": "verdict", "rho1": "6/7", "rho2": "12/7", "verdict": "touching"},
+     {"kind": "witness_point", "rho1": "6/7", "rho2": "12/7", "point": ["12/7", 0, 1]}
+    ]})";
+    const std::vector<bool> want = {true, true, false, true, false, true, true, true};
+    std::string cert;
+    const std::vector<bool> got = judge_claims(u_peg_scene(), claims, &cert);
+    BOOST_TEST_REQUIRE(got.size() == want.size());
+    for (size_t k = 0; k < want.size(); ++k) BOOST_TEST(got[k] == want[k], "claim " << k);
+    const auto j = nlohmann::ordered_json::parse(cert);
+    BOOST_TEST(j["kind"] == "compound_judgements");
+    BOOST_TEST(j["judgements"][6]["proof"]["verdict"] == "touching");
+    BOOST_TEST(j["judgements"][1]["proof"]["squared"] == "1");
+}
+
+BOOST_AUTO_TEST_CASE(compound_judgements_equal_the_brute_force) {
+    // Random compounds (three_part_compounds), at random pairs and at the corners of the pair
+    // polygons (compound_region): the verdict against the brute force over every part pair (test::Brute: every cross product of point differences, no hull), and the distance
+    // against the least of CGAL's exact polytope distance over every pair (all vertices).
+    std::mt19937 g(7077);
+    long checked = 0, kinds[3] = {0, 0, 0};
+    for (int t = 0; t < 6; ++t) {
+        std::vector<Polyhedron> parts[2];
+        const ExactScene sc = three_part_compounds(g, parts);
+        CompoundJudge judge(sc, "scene");
+        std::uniform_int_distribution<int> q(10, 120);
+        // Random pairs, and the corners of every pair's polygon in I1 × I2 (touching or more).
+        std::vector<Point2q> probes;
+        for (int k = 0; k < 12; ++k) probes.push_back({test::qc(q(g), 40), test::qc(q(g), 40)});
+        for (const auto& p : compound_region(sc, "scene", false).pairs)
+            for (const Point2q& x : p.polygon) probes.push_back(x);
+        for (const Point2q& x : probes) {
+            const Q &r1 = x[0], &r2 = x[1];
+            int want = 0;  // 0 separated, 1 touching, 2 overlapping
+            Q least = -1;
+            for (size_t a = 0; a < 3; ++a)
+                for (size_t b = 0; b < 3; ++b) {
+                    ExactScene pair;
+                    pair.P[0].points = sc.P[0].parts[a];
+                    pair.P[1].points = sc.P[1].parts[b];
+                    pair.P[0].seed = sc.P[0].seed;
+                    pair.P[1].seed = sc.P[1].seed;
+                    const int s = test::Brute(pair).classify(pair, r1, r2);
+                    want = std::max(want, 1 - s);
+                    HullModel hm;
+                    hm.P[0] = parts[0][a];
+                    hm.P[1] = parts[1][b];
+                    hm.s[0] = sc.P[0].seed;
+                    hm.s[1] = sc.P[1].seed;
+                    const Q e = exact_distance(hm, r1, r2).squared;
+                    if (least < 0 || e < least) least = e;
+                }
+            Json proof;
+            BOOST_TEST(judge.verdict(r1, r2, &proof).verdict == want, "scene " << t << " at (" << r1 << ", " << r2 << ")");
+            BOOST_TEST(judge.distance(r1, r2, &proof).squared == least, "scene " << t << " at (" << r1 << ", " << r2 << ")");
+            ++kinds[want];
+            ++checked;
+        }
+    }
+    BOOST_TEST(kinds[0] > 10);
+    BOOST_TEST(kinds[1] > 10);
+    BOOST_TEST(kinds[2] > 10);
+    std::cout << "compound judgements: " << checked << " pairs (" << kinds[0] << " separated, " << kinds[1] << " touching, " << kinds[2]
+              << " overlapping)\n";
 }

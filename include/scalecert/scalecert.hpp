@@ -180,6 +180,11 @@ public:
                                   unsigned threads = 0) const;
     std::string region_json() const;     // byte-identical to `scalecert region`
     std::string partition_json() const;  // the certificate: check it with scalecert-check
+    // scalecert certify-fp on the compounds: verdict, separating_plane, witness_point and distance
+    // claims (the least distance over the part pairs) at any ρ1, ρ2 > 0, and 'RHO1 RHO2 VERDICT'
+    // lines; with options.certificate, the compound_judgements certificate. Throws InputError for
+    // malformed claims and for claims on convex objects only (curves, growth distances, depths).
+    ClaimReport certify_fp(const std::string& claims, const ClaimOptions& options = {}) const;
 
 private:
     struct Impl;

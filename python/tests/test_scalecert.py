@@ -437,3 +437,34 @@ def test_region_of_parts_by_hand_and_the_cli(tmp_path):
     assert json.loads(out) == loaded.region()
     assert cert.read_text() == loaded.partition_json()
     assert subprocess.run([CHECK, str(cert)], capture_output=True).returncode == 0
+
+
+def test_region_certify_fp_by_hand_and_the_cli(tmp_path):
+    # The U and the peg (tests/test_compound.cpp, u_and_peg_claims_judged_by_hand): at (1, 1) the peg
+    # is 1 above the bottom and 1 from each wall (separated, distance 1, no plane: the walls rise past
+    # the peg's bottom); at (1, 2) its bottom sinks into the U's bottom; at (6/7, 12/7) all three touch.
+    scene = SRC / "tests" / "data" / "compound_u_peg.json"
+    r = scalecert.Region.load(str(scene))
+    claims = {"format": "scalecert-claims-1", "claims": [
+        {"kind": "verdict", "rho1": 1, "rho2": 1, "verdict": "separated"},
+        {"kind": "distance", "rho1": 1, "rho2": 1, "value": 1.0},
+        {"kind": "separating_plane", "rho1": 1, "rho2": 1, "normal": [0, 0, 1]},
+        {"kind": "verdict", "rho1": 1, "rho2": 2, "verdict": "touching"},
+        {"kind": "verdict", "rho1": "6/7", "rho2": "12/7", "verdict": "touching"}]}
+    report, cert = r.certify_fp(claims, certificate=True)
+    assert [c["right"] for c in report["claims"]] == [True, True, False, False, True]
+    assert report["claims"][3]["exact"] == "overlapping"
+    # The command gives the same certificate, and scalecert-check accepts it.
+    path, out = tmp_path / "claims.json", tmp_path / "cert.json"
+    path.write_text(json.dumps(claims))
+    p = subprocess.run([CLI, "certify-fp", str(scene), str(path), "--certificate", str(out)], capture_output=True, text=True)
+    assert p.returncode == 1  # two claims are wrong
+    assert out.read_text() == cert
+    assert subprocess.run([CHECK, str(out)], capture_output=True).returncode == 0
+    # Claims on convex objects only are refused with one line.
+    with pytest.raises(ValueError, match="claim on two convex objects"):
+        r.certify_fp({"format": "scalecert-claims-1", "claims": [{"kind": "growth_distance", "value": 1}]})
+    # Verdict lines work; curve lines are refused.
+    assert r.certify_fp("1 1 separated\n1 2 overlapping\n")["wrong"] == 0
+    with pytest.raises(ValueError, match="verdict lines only"):
+        r.certify_fp("curve 1 2\n")

@@ -3,6 +3,8 @@
 // (the display doubles of |claimed − exact| use MPFR's correctly rounded square root).
 #include "certify/claims.hpp"
 #include "certify/certificate.hpp"
+#include "certify/compound_judge.hpp"
+#include "certify/region_certificate.hpp"
 #include "certify/judgements.hpp"
 #include "geometry/measures.hpp"
 #include "io/strict_json.hpp"
@@ -30,51 +32,18 @@ std::string num(const Q& q, int digits = 6) { return to_exact_string(q) + " (~" 
 std::string ex(const Q& q) { return to_exact_string(q); }
 Json ex3(const Vec3q& v) { return Json::array({ex(v[0]), ex(v[1]), ex(v[2])}); }
 
-class Certifier {
+// Reading one claim's fields (every number exact: a JSON number is the double it was read as
+// unless exact_decimals) and the tolerance's rules, for the convex and the compound certifier.
+class ClaimReader {
 public:
-    Certifier(const ClaimModels& models, const std::string& name, const ClaimOptions& opt, bool prove)
-        : models_(models), name_(name), opt_(opt), prove_(prove) {}
-
-    // How often the exact fallback ran: the distance by CGAL's QP over all vertices, when the
-    // proof from the floating-point guess did not close (proved_distance).
-    struct Fallbacks { long distance = 0, depth = 0; };
-    Fallbacks fallbacks_;
-
-    // With `prove`: the last claim run as exact values, and the proof of its judgement
-    // (judgements.hpp).
+    // With `prove`: the last claim run as exact values, and the proof of its judgement.
     std::optional<std::pair<Json, Json>> proof;
 
-    // One claim: its report object and a one-line text; right or wrong.
-    bool run(const JNode& claim, size_t index, Json& o, std::string& text) {
-        proof.reset();
-        where_ = name_ + ": claims[" + std::to_string(index) + "]";
-        if (claim.kind != JNode::Object) fail("", "expected an object with \"kind\"");
-        const std::string kind = str(claim, "kind");
-        o["index"] = index;
-        o["kind"] = kind;
-        if (kind == "verdict") return verdict(claim, o, text);
-        if (kind == "growth_distance") return growth(claim, o, text);
-        if (kind == "switch_point") return switch_point(claim, o, text);
-        if (kind == "curve") return curve(claim, o, text);
-        if (kind == "curve_point") return curve_point(claim, o, text);
-        if (kind == "separating_plane") return plane(claim, o, text);
-        if (kind == "witness_point") return witness(claim, o, text);
-        if (kind == "distance") return distance(claim, o, text);
-        if (kind == "penetration_depth") return depth(claim, o, text);
-        fail("kind", "unknown kind " + quoted(kind) +
-                         " (verdict, curve, curve_point, switch_point, growth_distance, separating_plane, witness_point, distance, "
-                         "penetration_depth)");
-    }
-
-private:
-    const ClaimModels& models_;
+protected:
+    ClaimReader(const std::string& name, const ClaimOptions& opt, bool prove) : name_(name), opt_(opt), prove_(prove) {}
     std::string name_, where_;
-    const HullModel& m() const { return models_.model(); }  // the hull model: built on first use
-    const TouchingCurve& c() const { return models_.curve(); }
     ClaimOptions opt_;
     bool prove_;  // write the proof of each judgement (certify-fp --certificate)
-    struct ExactSwitch { Q rho1, rho2; std::string label; };
-    std::optional<std::vector<ExactSwitch>> switches_;  // the exact switch points (built on first use)
 
     [[noreturn]] void fail(const std::string& key, const std::string& what) const {
         throw InputError(where_ + (key.empty() ? "" : "." + key) + ": " + what);
@@ -158,6 +127,47 @@ private:
         o["abs_error_double"] = std::fabs(d);
         o["rel_error_double"] = sgn(E) ? Json(relative_sqrt_error_rn(E, claimed)) : Json(nullptr);
     }
+
+};
+
+class Certifier : public ClaimReader {
+public:
+    Certifier(const ClaimModels& models, const std::string& name, const ClaimOptions& opt, bool prove)
+        : ClaimReader(name, opt, prove), models_(models) {}
+
+    // How often the exact fallback ran: the distance by CGAL's QP over all vertices, when the
+    // proof from the floating-point guess did not close (proved_distance).
+    struct Fallbacks { long distance = 0, depth = 0; };
+    Fallbacks fallbacks_;
+
+    // One claim: its report object and a one-line text; right or wrong.
+    bool run(const JNode& claim, size_t index, Json& o, std::string& text) {
+        proof.reset();
+        where_ = name_ + ": claims[" + std::to_string(index) + "]";
+        if (claim.kind != JNode::Object) fail("", "expected an object with \"kind\"");
+        const std::string kind = str(claim, "kind");
+        o["index"] = index;
+        o["kind"] = kind;
+        if (kind == "verdict") return verdict(claim, o, text);
+        if (kind == "growth_distance") return growth(claim, o, text);
+        if (kind == "switch_point") return switch_point(claim, o, text);
+        if (kind == "curve") return curve(claim, o, text);
+        if (kind == "curve_point") return curve_point(claim, o, text);
+        if (kind == "separating_plane") return plane(claim, o, text);
+        if (kind == "witness_point") return witness(claim, o, text);
+        if (kind == "distance") return distance(claim, o, text);
+        if (kind == "penetration_depth") return depth(claim, o, text);
+        fail("kind", "unknown kind " + quoted(kind) +
+                         " (verdict, curve, curve_point, switch_point, growth_distance, separating_plane, witness_point, distance, "
+                         "penetration_depth)");
+    }
+
+private:
+    const ClaimModels& models_;
+    const HullModel& m() const { return models_.model(); }  // the hull model: built on first use
+    const TouchingCurve& c() const { return models_.curve(); }
+    struct ExactSwitch { Q rho1, rho2; std::string label; };
+    std::optional<std::vector<ExactSwitch>> switches_;  // the exact switch points (built on first use)
 
     // Proofs that x is (or is not) in P1(ρ1) and y in P2(ρ2), agreeing with the judgements in1, in2.
     Json membership(const Q& r1, const Q& r2, const Vec3q& x, const Vec3q& y, bool in1, bool in2) const {
@@ -643,6 +653,148 @@ private:
 
 }  // namespace
 
+// The claims on two compounds (CLAIMS.md, "Objects made of parts"): verdicts, separating planes,
+// witness points and distances, judged by CompoundJudge at any (ρ1, ρ2) > 0.
+class CompoundCertifier : public ClaimReader {
+public:
+    CompoundCertifier(CompoundJudge& judge, const std::string& name, const ClaimOptions& opt, bool prove)
+        : ClaimReader(name, opt, prove), j_(judge) {}
+
+    bool run(const JNode& claim, size_t index, Json& o, std::string& text) {
+        proof.reset();
+        where_ = name_ + ": claims[" + std::to_string(index) + "]";
+        if (claim.kind != JNode::Object) fail("", "expected an object with \"kind\"");
+        const std::string kind = str(claim, "kind");
+        o["index"] = index;
+        o["kind"] = kind;
+        if (kind == "verdict") return verdict(claim, o, text);
+        if (kind == "separating_plane") return plane(claim, o, text);
+        if (kind == "witness_point") return witness(claim, o, text);
+        if (kind == "distance") return distance(claim, o, text);
+        if (kind == "curve" || kind == "curve_point" || kind == "switch_point" || kind == "growth_distance" || kind == "penetration_depth")
+            fail("kind", quoted(kind) + " is a claim on two convex objects; on objects made of parts certify-fp takes verdict, "
+                         "separating_plane, witness_point and distance (the region and its growth set: scalecert region)");
+        fail("kind", "unknown kind " + quoted(kind) + " (on objects made of parts: verdict, separating_plane, witness_point, distance)");
+    }
+
+    // The line format's 'RHO1 RHO2 VERDICT'.
+    bool verdict_line(const Q& r1, const Q& r2, const std::string& v, Json& o, std::string& text) {
+        proof.reset();
+        Json p;
+        const CompoundJudge::Verdict e = j_.verdict(r1, r2, prove_ ? &p : nullptr);
+        const bool right = v == "intersecting" ? e.verdict > 0 : v == name_of(e.verdict);
+        o["claim"] = v;
+        put_exact(o, "rho1", r1);
+        put_exact(o, "rho2", r2);
+        o["exact"] = name_of(e.verdict);
+        o["pair"] = pair_json(e);
+        text = "(" + num(r1, 17) + ", " + num(r2, 17) + ") claimed " + v + ": exact " + name_of(e.verdict);
+        if (prove_) proof.emplace(Json{{"kind", "verdict"}, {"rho1", ex(r1)}, {"rho2", ex(r2)}, {"verdict", v}}, std::move(p));
+        return right;
+    }
+
+private:
+    CompoundJudge& j_;
+    static const char* name_of(int v) { return v == 2 ? "overlapping" : v == 1 ? "touching" : "separated"; }
+    static Json pair_json(const CompoundJudge::Verdict& e) { return e.part1 < 0 ? Json(nullptr) : Json::array({e.part1, e.part2}); }
+
+    bool verdict(const JNode& j, Json& o, std::string& text) {
+        only(j, {"kind", "rho1", "rho2", "verdict"});
+        const auto [r1, r2] = pair_at(j);
+        const std::string v = str(j, "verdict");
+        if (v != "separated" && v != "touching" && v != "overlapping" && v != "intersecting")
+            fail("verdict", "unknown verdict " + quoted(v) + " (separated, touching, overlapping, intersecting)");
+        const bool right = verdict_line(r1, r2, v, o, text);
+        o.erase("claim");
+        o["claimed"] = v;
+        text = "verdict at (" + num(r1) + ", " + num(r2) + "): claimed " + v + ", exact " + o["exact"].get<std::string>();
+        return right;
+    }
+
+    bool plane(const JNode& j, Json& o, std::string& text) {
+        only(j, {"kind", "rho1", "rho2", "normal", "offset"});
+        const auto [r1, r2] = pair_at(j);
+        const Vec3q n = point(need(j, "normal"), "normal");
+        if (sgn(n[0]) == 0 && sgn(n[1]) == 0 && sgn(n[2]) == 0) fail("normal", "the zero vector is not a normal");
+        const JNode* off = j.find("offset");
+        const auto [c1, c2] = j_.plane_extents(n, r1, r2);
+        put_exact(o, "rho1", r1);
+        put_exact(o, "rho2", r2);
+        put_exact(o, "max_over_P1", c1);
+        put_exact(o, "min_over_P2", c2);
+        put_exact(o, "gap", c2 - c1);
+        bool right = c1 < c2;
+        text = "plane at (" + num(r1) + ", " + num(r2) + "): P1 reaches " + num(c1) + ", P2 starts at " + num(c2);
+        Json cl{{"kind", "separating_plane"}, {"rho1", ex(r1)}, {"rho2", ex(r2)}, {"normal", ex3(n)}};
+        if (off) {
+            const Q d = number(*off, "offset");
+            put_exact(o, "offset_minus_P1", d - c1);
+            put_exact(o, "P2_minus_offset", c2 - d);
+            right = right && c1 < d && d < c2;
+            text += ", offset " + num(d);
+            cl["offset"] = ex(d);
+        }
+        if (prove_) proof.emplace(std::move(cl), Json::object());
+        return right;
+    }
+
+    // Is x in object i at ρ: the part holding it (or −1), its proof in *p.
+    int in(int i, const Q& rho, const Vec3q& x, Json& o, const char* key, Json* p) {
+        const int k = j_.locate(i, rho, x, p);
+        o[key] = k >= 0 ? Json(k) : Json(false);
+        return k;
+    }
+
+    bool witness(const JNode& j, Json& o, std::string& text) {
+        only(j, {"kind", "rho1", "rho2", "point"});
+        const auto [r1, r2] = pair_at(j);
+        const Vec3q x = point(need(j, "point"), "point");
+        Json p1, p2;
+        const int k1 = in(0, r1, x, o, "in_P1_part", prove_ ? &p1 : nullptr), k2 = in(1, r2, x, o, "in_P2_part", prove_ ? &p2 : nullptr);
+        o["exact_verdict"] = name_of(j_.verdict(r1, r2).verdict);
+        text = "witness point at (" + num(r1) + ", " + num(r2) + "): in P1 " + (k1 >= 0 ? "part " + std::to_string(k1) : "NO") + ", in P2 " +
+               (k2 >= 0 ? "part " + std::to_string(k2) : "NO");
+        if (prove_) proof.emplace(Json{{"kind", "witness_point"}, {"rho1", ex(r1)}, {"rho2", ex(r2)}, {"point", ex3(x)}}, Json{{"P1", p1}, {"P2", p2}});
+        return k1 >= 0 && k2 >= 0;
+    }
+
+    bool distance(const JNode& j, Json& o, std::string& text) {
+        only(j, {"kind", "rho1", "rho2", "value", "closest"});
+        const auto [r1, r2] = pair_at(j);
+        const Q d = field(j, "value");
+        Json pp;
+        const CompoundJudge::Distance e = j_.distance(r1, r2, prove_ ? &pp : nullptr);
+        put_exact(o, "rho1", r1);
+        put_exact(o, "rho2", r2);
+        errors_sq(o, d, e.squared);
+        put_point(o, "exact_closest_P1", e.p1);
+        put_point(o, "exact_closest_P2", e.p2);
+        o["exact_pair"] = Json::array({e.part1, e.part2});
+        bool right = close_sq(d, e.squared);
+        o["value_right"] = right;
+        text = "distance at (" + num(r1) + ", " + num(r2) + "): claimed " + num(d) + ", exact squared " + num(e.squared) + " (distance ~" +
+               dbl(sqrt_minus_rn(e.squared, Q(0))) + ", parts " + std::to_string(e.part1) + " and " + std::to_string(e.part2) + ")";
+        Json pc{{"kind", "distance"}, {"rho1", ex(r1)}, {"rho2", ex(r2)}, {"value", ex(d)}};
+        if (const JNode* cl = j.find("closest")) {
+            if (cl->kind != JNode::Array || cl->items.size() != 2) fail("closest", "expected [point on P1, point on P2]");
+            const Vec3q p = point(cl->items[0], "closest"), q = point(cl->items[1], "closest");
+            const Vec3q pq = sub(q, p);
+            const Q sq = dot(pq, pq);
+            Json m1, m2;
+            const int k1 = in(0, r1, p, o, "closest_in_P1_part", prove_ ? &m1 : nullptr);
+            const int k2 = in(1, r2, q, o, "closest_in_P2_part", prove_ ? &m2 : nullptr);
+            put_exact(o, "closest_squared_distance", sq);
+            const bool ok = k1 >= 0 && k2 >= 0 && within_above(sq, e.squared);
+            o["closest_right"] = ok;
+            right = right && ok;
+            pc["closest"] = Json::array({ex3(p), ex3(q)});
+            pp["closest"] = Json{{"P1", m1}, {"P2", m2}};
+        }
+        if (prove_) proof.emplace(std::move(pc), std::move(pp));
+        return right;
+    }
+};
+
 namespace {
 // The report of n claims, `bad` of them wrong: JSON {"claims", "tolerance" (JSON claims only),
 // "right", "wrong"}, or the claims' text lines and a summary line.
@@ -771,15 +923,9 @@ ClaimModels ClaimModels::of(const HullModel& m, const TouchingCurve& c) {
             [&m, &c] { return scalecert::internal::growth_proof(m, c); }};
 }
 
-std::string certify_fp(const ClaimModels& models, const std::string& claims, const std::string& name, const ClaimOptions& opt,
-                       long* wrong, long* count, std::string* certificate) {
-    const bool json = opt.json;
-    if (sgn(opt.tolerance) < 0) throw InputError("tolerance: must be >= 0 (got " + to_exact_string(opt.tolerance) + ")");
-    const size_t first = claims.find_first_not_of(" \t\r\n");
-    if (first == std::string::npos || claims[first] != '{') {
-        if (sgn(opt.tolerance) != 0) throw InputError(name + ": a tolerance applies to JSON claims (scalecert-claims-1) only");
-        return certify_claim_lines(models, claims, name, opt.exact_decimals, json, wrong, count, certificate);
-    }
+namespace {
+// A JSON claims file ({"format": "scalecert-claims-1", "claims": [...]}): its root, checked.
+JNode claims_root(const std::string& claims, const std::string& name) {
     JNode root;
     try {
         root = parse_strict_json(claims);
@@ -793,15 +939,19 @@ std::string certify_fp(const ClaimModels& models, const std::string& claims, con
     for (const std::string& k : root.keys)
         if (k != "format" && k != "claims") throw InputError(name + ": " + k + ": unknown field");
     if (!list || list->kind != JNode::Array || list->items.empty()) throw InputError(name + ": claims: expected a non-empty list");
-    Certifier cert(models, name, opt, certificate != nullptr);
-    Json arr = Json::array(), entries = Json::array();
-    std::string text;
+    return root;
+}
+
+// Every claim of the list through the certifier: the report's entries (arr), the judgements with
+// their proofs (entries, when proving) and the text; the number of wrong claims.
+template <class Cert>
+long run_claims(Cert& cert, const JNode& list, bool prove, Json& arr, Json& entries, std::string& text) {
     long bad = 0;
-    for (size_t i = 0; i < list->items.size(); ++i) {
+    for (size_t i = 0; i < list.items.size(); ++i) {
         Json o;
         std::string line;
-        const bool right = cert.run(list->items[i], i, o, line);
-        if (certificate) {
+        const bool right = cert.run(list.items[i], i, o, line);
+        if (prove) {
             if (!cert.proof) throw std::logic_error("certify-fp: a judgement without its proof");
             entries.push_back(entry(i, std::move(cert.proof->first), right, std::move(cert.proof->second)));
         }
@@ -810,9 +960,78 @@ std::string certify_fp(const ClaimModels& models, const std::string& claims, con
         arr.push_back(o);
         text += std::string(right ? "right  " : "WRONG  ") + line + "\n";
     }
+    return bad;
+}
+
+bool is_json(const std::string& claims, const ClaimOptions& opt, const std::string& name) {
+    if (sgn(opt.tolerance) < 0) throw InputError("tolerance: must be >= 0 (got " + to_exact_string(opt.tolerance) + ")");
+    const size_t first = claims.find_first_not_of(" \t\r\n");
+    if (first != std::string::npos && claims[first] == '{') return true;
+    if (sgn(opt.tolerance) != 0) throw InputError(name + ": a tolerance applies to JSON claims (scalecert-claims-1) only");
+    return false;
+}
+}  // namespace
+
+std::string certify_fp(const ClaimModels& models, const std::string& claims, const std::string& name, const ClaimOptions& opt,
+                       long* wrong, long* count, std::string* certificate) {
+    if (!is_json(claims, opt, name)) return certify_claim_lines(models, claims, name, opt.exact_decimals, opt.json, wrong, count, certificate);
+    const JNode root = claims_root(claims, name);
+    const JNode& list = *root.find("claims");
+    Certifier cert(models, name, opt, certificate != nullptr);
+    Json arr = Json::array(), entries = Json::array();
+    std::string text;
+    const long bad = run_claims(cert, list, certificate != nullptr, arr, entries, text);
     if (certificate) *certificate = judgements_text(models.document(), opt.tolerance, std::move(entries));
-    return report(std::move(arr), text, static_cast<long>(list->items.size()), bad, json, &opt.tolerance, wrong, count,
+    return report(std::move(arr), text, static_cast<long>(list.items.size()), bad, opt.json, &opt.tolerance, wrong, count,
                   cert.fallbacks_.distance, cert.fallbacks_.depth);
+}
+
+std::string certify_fp(CompoundJudge& judge, const std::string& claims, const std::string& name, const ClaimOptions& opt, long* wrong,
+                       long* count, std::string* certificate) {
+    CompoundCertifier cert(judge, name, opt, certificate != nullptr);
+    Json arr = Json::array(), entries = Json::array();
+    std::string text;
+    long n = 0, bad = 0;
+    const bool json = is_json(claims, opt, name);
+    if (json) {
+        const JNode root = claims_root(claims, name);
+        const JNode& list = *root.find("claims");
+        bad = run_claims(cert, list, certificate != nullptr, arr, entries, text);
+        n = static_cast<long>(list.items.size());
+    } else {
+        // Lines: 'RHO1 RHO2 VERDICT' only (a curve and a growth distance are claims on convex objects).
+        std::istringstream in(claims);
+        std::string line;
+        for (long no = 1; std::getline(in, line); ++no) {
+            if (const auto hash = line.find('#'); hash != std::string::npos) line.resize(hash);
+            std::istringstream ls(line);
+            std::vector<std::string> w;
+            for (std::string t; ls >> t;) w.push_back(t);
+            if (w.empty()) continue;
+            const std::string where = name + ": line " + std::to_string(no);
+            if (w.size() != 3 || w[0] == "curve")
+                throw InputError(where + ": expected 'RHO1 RHO2 VERDICT' (on objects made of parts, verdict lines only: a curve and a "
+                                         "growth distance are claims on convex objects)");
+            const Q r1 = read_number(w[0], opt.exact_decimals, where), r2 = read_number(w[1], opt.exact_decimals, where);
+            if (sgn(r1) <= 0 || sgn(r2) <= 0) throw InputError(where + ": scalings must be > 0");
+            const std::string& v = w[2];
+            if (v != "separated" && v != "touching" && v != "overlapping" && v != "intersecting")
+                throw InputError(where + ": unknown verdict " + quoted(v) + " (separated, touching, overlapping, intersecting)");
+            Json o;
+            o["line"] = no;
+            std::string detail;
+            const bool right = cert.verdict_line(r1, r2, v, o, detail);
+            if (certificate) entries.push_back(entry(static_cast<size_t>(no), std::move(cert.proof->first), right, std::move(cert.proof->second)));
+            ++n;
+            bad += !right;
+            o["right"] = right;
+            arr.push_back(o);
+            text += std::string(right ? "right  " : "WRONG  ") + detail + "\n";
+        }
+        if (n == 0) throw InputError(name + ": no claims (expected 'RHO1 RHO2 VERDICT' lines)");
+    }
+    if (certificate) *certificate = compound_judgements_text(judge.scene(), json ? opt.tolerance : Q(0), std::move(entries));
+    return report(std::move(arr), text, n, bad, opt.json, json ? &opt.tolerance : nullptr, wrong, count);
 }
 
 }  // namespace scalecert::internal

@@ -56,6 +56,12 @@ inline std::string certify_fp(const HullModel& m, const TouchingCurve& c, const 
                               bool exact_decimals, bool json, long* wrong) {
     return certify_fp(m, c, claims, name, ClaimOptions{exact_decimals, Q(0), json}, wrong);
 }
+// The same claims on two objects made of parts (CLAIMS.md, "Objects made of parts"): verdict,
+// separating_plane, witness_point and distance (the least over the part pairs), at any
+// (ρ1, ρ2) > 0; the line format's verdict lines. The certificate is of kind "compound_judgements".
+class CompoundJudge;
+std::string certify_fp(CompoundJudge& judge, const std::string& claims, const std::string& name, const ClaimOptions& opt, long* wrong,
+                       long* count = nullptr, std::string* certificate = nullptr);
 // The line format alone.
 std::string certify_claim_lines(const ClaimModels& models, const std::string& claims, const std::string& name,
                                 bool exact_decimals, bool json, long* wrong, long* count = nullptr,

@@ -19,7 +19,8 @@ Json points_json(const std::vector<Vec3q>& pts) {
     return a;
 }
 
-// The scene with every object as a list of parts (a plain object is one part).
+}  // namespace
+
 Json compound_scene_json(const ExactScene& sc) {
     Json s;
     const char* names[2] = {"P1", "P2"};
@@ -33,6 +34,18 @@ Json compound_scene_json(const ExactScene& sc) {
     for (int i = 0; i < 2; ++i) s[i == 0 ? "I1" : "I2"] = Json::array({to_exact_string(sc.lo[i]), to_exact_string(sc.hi[i])});
     return s;
 }
+
+std::string compound_judgements_text(const ExactScene& sc, const Q& tolerance, Json judgements) {
+    Json j;
+    j["format"] = "scalecert-2";
+    j["kind"] = "compound_judgements";
+    j["tolerance"] = to_exact_string(tolerance);
+    j["judgements"] = std::move(judgements);
+    j["scene"] = compound_scene_json(sc);
+    return dump(j);
+}
+
+namespace {
 
 Json polygon_json(Json& o, const std::vector<Point2q>& poly) {
     Json v = Json::array(), d = Json::array();

@@ -19,6 +19,13 @@
 
 namespace scalecert::internal {
 
+// The scene with every object as a list of parts (a plain object is one part), as the compound
+// certificates state it.
+Json compound_scene_json(const ExactScene& sc);
+// The compound judgements document (kind "compound_judgements", FORMAT.md): certify-fp's proofs on
+// objects made of parts, as text.
+std::string compound_judgements_text(const ExactScene& sc, const Q& tolerance, Json judgements);
+
 // The certificate of r, the region of scene sc (compound_region(sc, ...)).
 Json compound_partition_json(const ExactScene& sc, const CompoundRegion& r);
 

@@ -54,6 +54,11 @@ internal::ExactScene SceneArgs::load() const {
 }
 
 std::shared_ptr<const internal::CompactScene> SceneArgs::load_compact() const {
+    internal::ExactScene full;
+    return load_compact(&full);  // (the caller reads it again when null: open_session)
+}
+
+std::shared_ptr<const internal::CompactScene> SceneArgs::load_compact(internal::ExactScene* full) const {
     internal::note_inputs({path, mesh[0], mesh[1]});  // (a scene naming meshes is read by load(), which notes them)
     const bool scene_only = !path.empty() && mesh[0].empty() && mesh[1].empty() && interval[0].empty() && interval[1].empty() &&
                             seed[0].empty() && seed[1].empty();
@@ -99,7 +104,8 @@ std::shared_ptr<const internal::CompactScene> SceneArgs::load_compact() const {
         } catch (const InputError&) {
         }
     }
-    auto cs = internal::compact_scene(load());
+    *full = load();
+    auto cs = internal::compact_scene(*full);
     return cs ? std::make_shared<internal::CompactScene>(std::move(*cs)) : nullptr;
 }
 
@@ -165,12 +171,21 @@ Engine engine_named(const std::string& engine) {
 
 internal::Session open_session(const SceneArgs& args, Engine engine, StageClock& clock) {
     if (engine != Engine::Hull)
-        if (std::shared_ptr<const internal::CompactScene> cs = args.load_compact()) {
+    {
+        internal::ExactScene full;
+        if (std::shared_ptr<const internal::CompactScene> cs = args.load_compact(&full)) {
             clock.lap("read scene (compact)");
             internal::Session s(std::move(cs), args.name(), engine);
             s.set_clock(&clock);
             return s;
         }
+        if (!full.P[0].points.empty()) {  // read already
+            internal::Session s(std::move(full), args.name(), engine);
+            clock.lap("read scene");
+            s.set_clock(&clock);
+            return s;
+        }
+    }
     internal::Session s(args.load(), args.name(), engine);
     clock.lap("read scene");
     s.set_clock(&clock);

@@ -46,7 +46,7 @@ struct CompactScene {
     bool seed_given[2] = {false, false};
     Q lo[2], hi[2];
 };
-// The scene in compact form, when both polyhedra fit IntPoints.
+// The scene in compact form, when both polyhedra fit IntPoints (never for objects made of parts).
 std::optional<CompactScene> compact_scene(const ExactScene& sc);
 // A scene file's text in compact form, when it has the plain shape {"P1": {"vertices": [...],
 // "seed": [...]}, "P2": ..., "I1": [lo, hi], "I2": [lo, hi]} with JSON numbers (decimals as in

@@ -343,4 +343,12 @@ std::vector<Verdict> Region::classify(const std::vector<double>& rho1, const std
 std::string Region::region_json() const { return dump(impl_->session.region_json()); }
 std::string Region::partition_json() const { return dump(impl_->session.partition_json()); }
 
+ClaimReport Region::certify_fp(const std::string& claims, const ClaimOptions& options) const {
+    long wrong = 0, count = 0;
+    std::string certificate;
+    std::string report = internal::certify_fp(impl_->session.judge(), claims, "claims", options, &wrong, &count,
+                                              options.certificate ? &certificate : nullptr);
+    return {std::move(report), count, wrong, std::move(certificate)};
+}
+
 }  // namespace scalecert

@@ -23,6 +23,11 @@ Json CompoundSession::region_json(const std::optional<std::array<Q, 2>>& at) {
 
 Json CompoundSession::partition_json() { return compound_partition_json(sc_, region(false)); }
 
+CompoundJudge& CompoundSession::judge() {
+    if (!judge_) judge_ = std::make_unique<CompoundJudge>(sc_, name_);
+    return *judge_;
+}
+
 void CompoundSession::check_in_rectangle(const Q& rho1, const Q& rho2, const std::string& what) const {
     if (rho1 < sc_.lo[0] || rho1 > sc_.hi[0] || rho2 < sc_.lo[1] || rho2 > sc_.hi[1])
         throw InputError(what + " (" + to_exact_string(rho1) + ", " + to_exact_string(rho2) +

@@ -4,6 +4,7 @@
 // convex commands go through Session.
 #pragma once
 #include "certify/certificate.hpp"
+#include "certify/compound_judge.hpp"
 #include "compound/locate.hpp"
 #include "compound/region.hpp"
 
@@ -34,6 +35,9 @@ public:
     // region is built: one outside gives InputError "SOURCE: pair K lies outside I1 x I2".
     std::vector<std::int8_t> classify(const std::vector<double>& rho1, const std::vector<double>& rho2, unsigned threads,
                                       const std::string& source = "classify");
+    // Judgements at any (ρ1, ρ2) > 0 with their proofs (certify-fp): the parts' hulls, built on
+    // first use.
+    CompoundJudge& judge();
 
 private:
     void check_in_rectangle(const Q& rho1, const Q& rho2, const std::string& what) const;
@@ -42,6 +46,7 @@ private:
     std::optional<CompoundRegion> region_;
     bool with_union_ = false;
     std::unique_ptr<CompoundLocator> locator_;
+    std::unique_ptr<CompoundJudge> judge_;
 };
 
 }  // namespace scalecert::internal
