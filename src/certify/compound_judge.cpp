@@ -6,6 +6,7 @@
 #include "geometry/measures.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace scalecert::internal {
@@ -39,6 +40,10 @@ Vec3q axis(int c, int side) {
 }  // namespace
 
 CompoundJudge::CompoundJudge(const ExactScene& sc, const std::string& name) : sc_(sc), name_(name) {
+    const size_t m = std::max<size_t>(1, sc.P[0].parts.size()), n = std::max<size_t>(1, sc.P[1].parts.size());
+    if (m * n > kMaxPartPairs)
+        throw InputError(name + ": " + std::to_string(m) + " x " + std::to_string(n) + " part pairs, more than " + std::to_string(kMaxPartPairs) +
+                         " (the limit)");
     const char* pname[2] = {"P1", "P2"};
     for (int i = 0; i < 2; ++i) {
         const PolyInput& in = sc.P[i];
@@ -77,6 +82,13 @@ CompoundJudge::Box CompoundJudge::scaled_box(int i, size_t k, const Q& rho) cons
 CompoundJudge::PairCache& CompoundJudge::pair(int a, int b) {
     std::unique_ptr<PairCache>& p = cache_[{a, b}];
     if (!p) {
+        const Polyhedron &A = parts_[0][static_cast<size_t>(a)], &B = parts_[1][static_cast<size_t>(b)];
+        edge_work_ += static_cast<double>(A.edges.size()) * static_cast<double>(B.edges.size());
+        if (cache_.size() > kMaxBuiltPairs || edge_work_ > kMaxEdgePairWork) {
+            cache_.erase({a, b});
+            throw InputError(name_ + ": the claims need more than " + std::to_string(kMaxBuiltPairs) +
+                             " part pairs judged exactly, or more than 2*10^7 edge pairs over them (the limits of a compound scene)");
+        }
         p = std::make_unique<PairCache>();
         p->hm.P[0] = parts_[0][static_cast<size_t>(a)];
         p->hm.P[1] = parts_[1][static_cast<size_t>(b)];
@@ -87,15 +99,44 @@ CompoundJudge::PairCache& CompoundJudge::pair(int a, int b) {
     return *p;
 }
 
+// Doubles enclosing a box's ends: down[c][e] <= end <= up[c][e] (mpq's get_d truncates, within
+// one unit in the last place of a normal double; NaN where get_d is not one, so that the filter
+// below never answers from it).
+struct BoxBounds {
+    double down[3][2], up[3][2];
+};
+
 namespace {
+BoxBounds bounds_of(const std::array<std::array<Q, 2>, 3>& b) {
+    BoxBounds r;
+    for (size_t c = 0; c < 3; ++c)
+        for (size_t e = 0; e < 2; ++e) {
+            const double d = filter::region_double(b[c][e]);
+            r.down[c][e] = std::nextafter(d, -INFINITY);
+            r.up[c][e] = std::nextafter(d, INFINITY);
+        }
+    return r;
+}
+// Is x's end along c below y's start, strictly (x[c][1] < y[c][0])? The doubles decide when they
+// can prove it either way; else the exact ends.
+bool below(const std::array<std::array<Q, 2>, 3>& x, const BoxBounds& xb, const std::array<std::array<Q, 2>, 3>& y, const BoxBounds& yb,
+           size_t c) {
+    if (xb.up[c][1] < yb.down[c][0]) return true;
+    if (xb.down[c][1] >= yb.up[c][0]) return false;
+    return x[c][1] < y[c][0];
+}
 // The axis (and side: +1 when the first box lies below) along which two boxes are strictly apart;
 // {-1, 0} when they are not.
-std::pair<int, int> apart(const std::array<std::array<Q, 2>, 3>& x, const std::array<std::array<Q, 2>, 3>& y) {
-    for (int c = 0; c < 3; ++c) {
-        if (x[static_cast<size_t>(c)][1] < y[static_cast<size_t>(c)][0]) return {c, 1};
-        if (y[static_cast<size_t>(c)][1] < x[static_cast<size_t>(c)][0]) return {c, -1};
+std::pair<int, int> apart(const std::array<std::array<Q, 2>, 3>& x, const BoxBounds& xb, const std::array<std::array<Q, 2>, 3>& y,
+                          const BoxBounds& yb) {
+    for (size_t c = 0; c < 3; ++c) {
+        if (below(x, xb, y, yb, c)) return {static_cast<int>(c), 1};
+        if (below(y, yb, x, xb, c)) return {static_cast<int>(c), -1};
     }
     return {-1, 0};
+}
+std::pair<int, int> apart(const std::array<std::array<Q, 2>, 3>& x, const std::array<std::array<Q, 2>, 3>& y) {
+    return apart(x, bounds_of(x), y, bounds_of(y));
 }
 // The box holding both.
 std::array<std::array<Q, 2>, 3> join(const std::vector<std::array<std::array<Q, 2>, 3>>& boxes) {
@@ -120,8 +161,8 @@ Vec3q gap_vector(const std::array<std::array<Q, 2>, 3>& x, const std::array<std:
 }  // namespace
 
 int CompoundJudge::pair_sign(int a, int b, const Q& r1, const Q& r2, const std::vector<Box>& b1, const std::vector<Box>& b2,
-                             Vec3q* normal) {
-    const auto [c, side] = apart(b1[static_cast<size_t>(a)], b2[static_cast<size_t>(b)]);
+                             const std::vector<BoxBounds>& d1, const std::vector<BoxBounds>& d2, Vec3q* normal) {
+    const auto [c, side] = apart(b1[static_cast<size_t>(a)], d1[static_cast<size_t>(a)], b2[static_cast<size_t>(b)], d2[static_cast<size_t>(b)]);
     if (c >= 0) {
         ++counts_.boxed;
         if (normal) *normal = axis(c, side);
@@ -186,6 +227,10 @@ CompoundJudge::Verdict CompoundJudge::verdict(const Q& r1, const Q& r2, Json* pr
     for (int k = 0; k < m; ++k) b1.push_back(scaled_box(0, static_cast<size_t>(k), r1));
     for (int k = 0; k < n; ++k) b2.push_back(scaled_box(1, static_cast<size_t>(k), r2));
     const Box all2 = join(b2);
+    const BoxBounds all2d = bounds_of(all2);
+    std::vector<BoxBounds> d1, d2;
+    for (const Box& b : b1) d1.push_back(bounds_of(b));
+    for (const Box& b : b2) d2.push_back(bounds_of(b));
     std::vector<Block> blocks;
     Verdict v;
     const auto [c, side] = apart(join(b1), all2);
@@ -193,7 +238,7 @@ CompoundJudge::Verdict CompoundJudge::verdict(const Q& r1, const Q& r2, Json* pr
         blocks.push_back({0, m - 1, 0, n - 1, axis(c, side)});
     } else {
         for (int a = 0; a < m; ++a) {
-            const auto [ca, sa] = apart(b1[static_cast<size_t>(a)], all2);
+            const auto [ca, sa] = apart(b1[static_cast<size_t>(a)], d1[static_cast<size_t>(a)], all2, all2d);
             if (ca >= 0) {
                 counts_.boxed += n;
                 blocks.push_back({a, a, 0, n - 1, axis(ca, sa)});
@@ -201,7 +246,7 @@ CompoundJudge::Verdict CompoundJudge::verdict(const Q& r1, const Q& r2, Json* pr
             }
             for (int b = 0; b < n; ++b) {
                 Vec3q nrm;
-                const int s = pair_sign(a, b, r1, r2, b1, b2, &nrm);
+                const int s = pair_sign(a, b, r1, r2, b1, b2, d1, d2, &nrm);
                 if (s > 0) {
                     v = {2, a, b};
                     if (proof) {
@@ -251,14 +296,24 @@ CompoundJudge::Distance CompoundJudge::distance(const Q& r1, const Q& r2, Json* 
     std::vector<Box> b1, b2;
     for (int k = 0; k < m; ++k) b1.push_back(scaled_box(0, static_cast<size_t>(k), r1));
     for (int k = 0; k < n; ++k) b2.push_back(scaled_box(1, static_cast<size_t>(k), r2));
-    // The pairs by their boxes' distance (a lower bound of theirs; doubles only order the work).
-    std::vector<std::pair<double, std::pair<int, int>>> order;
-    for (int a = 0; a < m; ++a)
-        for (int b = 0; b < n; ++b) {
-            const Vec3q u = gap_vector(b1[static_cast<size_t>(a)], b2[static_cast<size_t>(b)]);
-            order.push_back({dot(u, u).get_d(), {a, b}});
+    // A first guess: the pairs whose boxes (in doubles: they only choose the work) are nearest,
+    // measured exactly; the blocks below then prove every pair at least that far apart, or find
+    // a nearer one and start again.
+    std::vector<std::array<std::array<double, 2>, 3>> f1, f2;
+    auto doubles = [](const Box& b) {
+        return std::array<std::array<double, 2>, 3>{{{b[0][0].get_d(), b[0][1].get_d()}, {b[1][0].get_d(), b[1][1].get_d()}, {b[2][0].get_d(), b[2][1].get_d()}}};
+    };
+    for (const Box& b : b1) f1.push_back(doubles(b));
+    for (const Box& b : b2) f2.push_back(doubles(b));
+    auto box_gap2 = [&](int a, int b) {
+        double g2 = 0;
+        for (size_t c = 0; c < 3; ++c) {
+            const auto &x = f1[static_cast<size_t>(a)][c], &y = f2[static_cast<size_t>(b)][c];
+            const double g = std::max({0.0, y[0] - x[1], x[0] - y[1]});
+            g2 += g * g;
         }
-    std::sort(order.begin(), order.end());
+        return g2;
+    };
     auto exact_pair = [&](int a, int b) -> const ProvedDistance& {
         PairCache& p = pair(a, b);
         if (!p.at || (*p.at)[0] != r1 || (*p.at)[1] != r2) {
@@ -269,22 +324,25 @@ CompoundJudge::Distance CompoundJudge::distance(const Q& r1, const Q& r2, Json* 
         return p.distance;
     };
     Distance best;
-    bool have = false;
-    for (const auto& [lb, ab] : order) {
-        if (have && lb > best.squared.get_d() * (1 + 1e-9)) break;
-        const ProvedDistance& d = exact_pair(ab.first, ab.second);
-        if (!have || d.d.squared < best.squared) best = {d.d.squared, d.d.p1, d.d.p2, ab.first, ab.second}, have = true;
-    }
-    if (!proof) {
-        // Every pair the doubles set aside is checked exactly below only with a proof; without
-        // one, confirm that none is closer by its box bound (exact), measuring those that fail.
-        for (const auto& [lb, ab] : order) {
-            const Vec3q u = gap_vector(b1[static_cast<size_t>(ab.first)], b2[static_cast<size_t>(ab.second)]);
-            if (dot(u, u) >= best.squared) continue;
-            const ProvedDistance& d = exact_pair(ab.first, ab.second);
-            if (d.d.squared < best.squared) best = {d.d.squared, d.d.p1, d.d.p2, ab.first, ab.second};
+    {
+        double least = INFINITY;
+        std::pair<int, int> first{0, 0};
+        for (int a = 0; a < m; ++a)
+            for (int b = 0; b < n; ++b)
+                if (const double g = box_gap2(a, b); g < least) least = g, first = {a, b};
+        const ProvedDistance& d = exact_pair(first.first, first.second);
+        best = {d.d.squared, d.d.p1, d.d.p2, first.first, first.second};
+        // Every pair whose boxes may be nearer than that, nearest first.
+        const double bound = best.squared.get_d() * (1 + 1e-9);
+        std::vector<std::pair<double, std::pair<int, int>>> near;
+        for (int a = 0; a < m; ++a)
+            for (int b = 0; b < n; ++b)
+                if (const double g = box_gap2(a, b); g <= bound) near.push_back({g, {a, b}});
+        std::sort(near.begin(), near.end());
+        for (const auto& [lb, ab] : near) {
+            const ProvedDistance& e = exact_pair(ab.first, ab.second);
+            if (e.d.squared < best.squared) best = {e.d.squared, e.d.p1, e.d.p2, ab.first, ab.second};
         }
-        return best;
     }
     // The lower bound: blocks whose normal u holds gap(u) ≥ |u|² ≥ E (boxes) or gap = |u|² = E_ab ≥ E
     // (a pair's own closest points). A pair found closer restarts the blocks with its distance.
@@ -320,6 +378,7 @@ CompoundJudge::Distance CompoundJudge::distance(const Q& r1, const Q& r2, Json* 
             }
         }
         if (restart) continue;
+        if (!proof) return best;
         // The closest points' weights in their parts.
         const ProvedDistance& d = exact_pair(best.part1, best.part2);
         Json w1, w2;

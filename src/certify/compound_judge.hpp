@@ -27,6 +27,8 @@ namespace scalecert::internal {
 // the parts' vertices (counted in `fallbacks`). The LP decides; GJK only proposes.
 Witness pair_common_point(const HullModel& hm, const Q& rho1, const Q& rho2, long& fallbacks);
 
+struct BoxBounds;  // a box's ends enclosed in doubles (the filter of the box tests)
+
 class CompoundJudge {
 public:
     // Builds every part's hull (InputError for a flat part, named "NAME: P1.parts[k]").
@@ -76,12 +78,14 @@ private:
     std::vector<Polyhedron> parts_[2];
     std::vector<Box> unit_[2];  // each part's own box (unscaled)
     std::map<std::pair<int, int>, std::unique_ptr<PairCache>> cache_;
+    double edge_work_ = 0;  // over the pairs judged exactly: Σ edges(A) × edges(B), within kMaxEdgePairWork
     Counts counts_;
 
     Box scaled_box(int i, size_t k, const Q& rho) const;
     PairCache& pair(int a, int b);
     // −1 separated (strictly), 0 touching, +1 overlapping, with a normal for ≤ 0.
-    int pair_sign(int a, int b, const Q& rho1, const Q& rho2, const std::vector<Box>& b1, const std::vector<Box>& b2, Vec3q* normal);
+    int pair_sign(int a, int b, const Q& rho1, const Q& rho2, const std::vector<Box>& b1, const std::vector<Box>& b2,
+                  const std::vector<BoxBounds>& d1, const std::vector<BoxBounds>& d2, Vec3q* normal);
 };
 
 }  // namespace scalecert::internal
