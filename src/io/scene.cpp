@@ -124,7 +124,7 @@ ExactScene parse_scene_text(const std::string& text, const std::string& name, co
             only(*p, pname[i], {"parts", "seed"});
             const std::string where = std::string(pname[i]) + ".parts";
             if (!opt.allow_parts)
-                r.fail(where, "an object made of parts is read by `scalecert region` only (the other commands take convex objects)");
+                r.fail(where, "an object made of parts is read by `scalecert region` and `scalecert audit` only (the other commands take convex objects)");
             if (parts->kind != JNode::Array || parts->items.empty()) r.fail(where, "expected a nonempty list of parts");
             if (parts->items.size() > kMaxParts) r.fail(where, "more than " + std::to_string(kMaxParts) + " parts (the limit)");
             for (size_t k = 0; k < parts->items.size(); ++k) {
