@@ -8,7 +8,10 @@ usage: tools/plot_audit.py AUDIT.json OUTDIR
   speed_accuracy  time per curve against switch-point error (grid at each resolution, exact engine;
                   drawn when some scene has a switch point in its rectangle)
   by_distance     wrong-verdict rate against the relative distance 2^-k from the curve, per method
-                  (audits run with --by-distance; pairs exactly touching once rounded are counted apart)
+                  (audits run with --by-distance; pairs exactly touching once rounded are counted apart);
+                  for objects made of parts, from the boundary of the overlap region
+  on_boundary     objects made of parts: what each method says at the points exactly on the region's
+                  boundary (touching): separated, touching or overlapping, as shares of those points
 """
 import json
 import os
@@ -58,6 +61,9 @@ def main():
             a[1] += b["pairs"]
             touching[b["k"]] += b["touching"]
     if bd:
+        # (Compound rows, those with on_boundary, measure from the region's boundary.)
+        kinds = {"on_boundary" in r for r in rows if r.get("by_distance")}
+        what = "the boundary" if kinds == {True} else "the curve" if kinds == {False} else "the curve or boundary"
         fig, ax = plt.subplots(figsize=(6, 4))
         for method, by_k in sorted(bd.items()):
             ks = sorted(by_k)
@@ -66,8 +72,29 @@ def main():
         ax.set_xscale("log", base=2)
         ax.invert_xaxis()
         t = ", ".join(f"2^-{k}: {n}" for k, n in sorted(touching.items()) if n)
-        finish(fig, ax, outdir, "by_distance", "wrong verdicts near the curve" + (f" (touching, apart: {t})" if t else ""),
-               "relative distance from the curve", "wrong-verdict rate", legend_loc="outside")
+        finish(fig, ax, outdir, "by_distance", f"wrong verdicts near {what}" + (f" (touching, apart: {t})" if t else ""),
+               f"relative distance from {what}", "wrong-verdict rate", legend_loc="outside")
+    # What each method says exactly on the boundary (objects made of parts).
+    said = defaultdict(lambda: [0, 0, 0])
+    for r in rows:
+        o = r.get("on_boundary")
+        if o:
+            a = said[r["method"]]
+            a[0] += o["said_separated"]
+            a[1] += o["said_touching"]
+            a[2] += o["said_overlapping"]
+    if any(sum(v) for v in said.values()):
+        methods = sorted(m for m, v in said.items() if sum(v))
+        fig, ax = plt.subplots(figsize=(6, 4))
+        left = [0.0] * len(methods)
+        for k, (label, color) in enumerate((("said separated", "#d62728"), ("said touching", "#2ca02c"), ("said overlapping", "#1f77b4"))):
+            share = [said[m][k] / sum(said[m]) for m in methods]
+            ax.barh(methods, share, left=left, color=color, label=label)
+            left = [a + b for a, b in zip(left, share)]
+        ax.set_xlim(0, 1)
+        n = sum(said[methods[0]])
+        finish(fig, ax, outdir, "on_boundary", f"on the boundary: {n} exactly touching points", "share of the points", None,
+               legend_loc="outside")
     # Speed against accuracy.
     pts = defaultdict(list)
     for r in rows:

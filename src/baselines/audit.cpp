@@ -140,11 +140,10 @@ void wrong_by_distance(const fp::Method& mm, const DistancePairs& p, AuditRow& r
     }
 }
 
-}  // namespace
-
-std::vector<AuditRow> audit_scene(const std::string& name, const ExactScene& s, const Q& eps,
-                                  const std::vector<std::string>& methods, const std::vector<int>& grid_ns, bool by_distance,
-                                  bool measures) {
+// The convex audit: the curve, its pairs and every convex method (and the grid).
+std::vector<AuditRow> audit_convex(const std::string& name, const ExactScene& s, const Q& eps,
+                                   const std::vector<std::string>& methods, const std::vector<int>& grid_ns, bool by_distance,
+                                   bool measures) {
     using Clock = std::chrono::steady_clock;
     auto t_exact = Clock::now();
     HullModel m = build_model(s);
@@ -274,6 +273,37 @@ std::vector<AuditRow> audit_scene(const std::string& name, const ExactScene& s, 
     return rows;
 }
 
-Auditor baseline_auditor() { return {fp::method_names, audit_scene}; }
+}  // namespace
+
+std::vector<AuditRow> audit_scene(const std::string& name, const ExactScene& s, const Q& eps,
+                                  const std::vector<std::string>& methods, const std::vector<int>& grid_ns, bool by_distance,
+                                  bool measures) {
+    const std::vector<std::string> cn = fp::compound_method_names();
+    std::vector<std::string> convex, compound;
+    for (const std::string& m : methods) (std::find(cn.begin(), cn.end(), m) != cn.end() ? compound : convex).push_back(m);
+    const bool p1 = !s.P[0].parts.empty(), p2 = !s.P[1].parts.empty();
+    if ((p1 || p2) && !convex.empty()) {
+        std::string all;
+        for (const std::string& m : cn) all += (all.empty() ? "" : ",") + m;
+        throw InputError(std::string(p1 && p2 ? "P1 and P2 are" : p1 ? "P1 is" : "P2 is") + " made of parts, and method " + internal::quoted(convex[0]) +
+                         " audits convex objects only (for objects made of parts: --methods " + all + ")");
+    }
+    std::vector<AuditRow> rows;
+    if (!convex.empty() || (compound.empty() && !p1 && !p2)) rows = audit_convex(name, s, eps, convex, grid_ns, by_distance, measures);
+    if (!compound.empty()) {
+        std::vector<AuditRow> c = audit_compound(name, s, eps, compound, by_distance, measures);
+        rows.insert(rows.end(), c.begin(), c.end());
+    }
+    return rows;
+}
+
+Auditor baseline_auditor() {
+    return {[] {
+                std::vector<std::string> all = fp::method_names(), cn = fp::compound_method_names();
+                all.insert(all.end(), cn.begin(), cn.end());
+                return all;
+            },
+            audit_scene};
+}
 
 }  // namespace scalecert::internal

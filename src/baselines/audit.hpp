@@ -3,6 +3,8 @@
 #pragma once
 #include "baselines/baselines.hpp"
 #include "campaign/campaign.hpp"
+#include "certify/compound_judge.hpp"
+#include "compound/boundary.hpp"
 
 namespace scalecert::internal {
 
@@ -10,9 +12,47 @@ namespace scalecert::internal {
 // below the curve; and the grid search at each resolution in grid_ns.
 // With by_distance, also the wrong-verdict counts on 15 verticals at relative distances 2^-4 …
 // 2^-52 above and below the curve (their own 390 pairs; the other counts are unchanged).
+// The compound methods (fp::compound_method_names) run through audit_compound, on any scene (a
+// plain object is one part); a scene with parts takes only those: any other method is refused
+// (InputError, before any work).
 std::vector<AuditRow> audit_scene(const std::string& name, const ExactScene& s, const Q& eps,
                                   const std::vector<std::string>& methods, const std::vector<int>& grid_ns,
                                   bool by_distance = false, bool measures = true);
+// ---- Objects made of convex parts (compound_audit.cpp) -----------------------------------------
+
+// A point at which the methods are judged: the exact verdict (0 separated, 1 touching,
+// 2 overlapping, by CompoundJudge at the doubles' exact values), and where it comes from: k = −1 a
+// random pair in I1 × I2; k = 0 a point on a contact edge of the region's boundary: a double point
+// exactly on the edge near an exact point of it where one exists (A X + B Y = C 2^m solved in
+// integers, the edge's line in coprime integers A, B, C), else that exact point's nearest doubles;
+// k > 0 that point pushed off the edge by the relative distance 2^-k, inward (side +1, towards the
+// region) or outward (−1), then rounded to doubles. The push moves one coordinate: ρ2 for an edge
+// nearer horizontal (ρ2(1 ± 2^-k)), else ρ1.
+struct CompoundSample {
+    int k = 0;
+    int side = 0;
+    double r1 = 0, r2 = 0;
+    int exact = 0;
+};
+// The samples of a scene: `random` random pairs; up to `points` points on the contact edges of
+// the region's boundary (every edge when there are at most that many, the points spread evenly
+// along each; else `points` edges spread evenly, one point each), each pushed by 2^-k for k = 4,
+// 8, ..., 52 both ways. Deterministic. The region must have its union (b from label_boundary).
+std::vector<CompoundSample> compound_samples(CompoundJudge& judge, const CompoundBoundary& b, int random = 200, int points = 32);
+// A method's verdicts at the samples, counted into `row`: queries, false_separated (said separated
+// where they meet), false_overlapping, by_distance (k > 0: wrong where the method's verdict
+// differs from the exact one; exactly touching samples counted apart) when by_distance, and
+// on_boundary (k = 0). Returns the method's verdicts.
+std::vector<int> score_compound(const fp::Method& m, const std::vector<CompoundSample>& samples, bool by_distance, AuditRow& row);
+// The compound audit of a scene: the region and its labelled boundary (CompoundSession), the
+// samples, every method's verdicts, and where a method measures and its verdict is right, its
+// distances against the exact ones (CompoundJudge::distance). InputError for an unknown method,
+// or when the region's union is not formed (past kMaxUnionPolygons pair polygons).
+std::vector<AuditRow> audit_compound(const std::string& name, const ExactScene& s, const Q& eps,
+                                     const std::vector<std::string>& methods, bool by_distance, bool measures);
+// The doubles the methods see: each part's points (nearest doubles) and its exact hull's faces.
+fp::CompoundFp compound_fp(const CompoundJudge& judge);
+
 // The audit campaigns run (CampaignArgs::auditor): these baselines' methods and audit_scene.
 Auditor baseline_auditor();
 

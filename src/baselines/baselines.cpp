@@ -133,6 +133,49 @@ const std::vector<std::pair<std::string, Factory>>& methods() {
 }
 }  // namespace
 
+namespace {
+// libccd's GJK on every part pair (each part scaled about its object's seed), the first that meets
+// ends the loop: what a program without a broad phase does.
+class LibccdParts : public Method {
+public:
+    explicit LibccdParts(const CompoundFp& s) {
+        for (int i = 0; i < 2; ++i)
+            for (const CompoundFp::Part& p : s.parts[i]) parts_[i].push_back(Polytope{p.pts, s.seed[i]});
+    }
+    std::string name() const override { return "libccd-gjk-parts"; }
+    int classify(double r1, double r2) const override {
+        ccd_t ccd;
+        CCD_INIT(&ccd);
+        ccd.support1 = support;
+        ccd.support2 = support;
+        ccd.center1 = center;
+        ccd.center2 = center;
+        ccd.max_iterations = 500;
+        for (const Polytope& A : parts_[0])
+            for (const Polytope& B : parts_[1]) {
+                Scaled a{&A, r1}, b{&B, r2};
+                if (ccdGJKIntersect(&a, &b, &ccd)) return -1;
+            }
+        return 1;
+    }
+
+private:
+    std::vector<Polytope> parts_[2];
+};
+}  // namespace
+
+std::unique_ptr<Method> make_compound_method(const std::string& name, const CompoundFp& s) {
+    if (name == "bullet-compound") return make_fcl_bullet_compound(s, 0);
+    if (name == "fcl-compound-libccd") return make_fcl_bullet_compound(s, 1);
+    if (name == "fcl-compound-indep") return make_fcl_bullet_compound(s, 2);
+    if (name == "libccd-gjk-parts") return std::make_unique<LibccdParts>(s);
+    return nullptr;
+}
+
+std::vector<std::string> compound_method_names() {
+    return {"bullet-compound", "fcl-compound-libccd", "fcl-compound-indep", "libccd-gjk-parts"};
+}
+
 std::unique_ptr<Method> make_method(const std::string& name, const Model& m, const FpScene& s) {
     for (const auto& [n, make] : methods())
         if (n == name) return make(m, s);

@@ -66,6 +66,36 @@ std::unique_ptr<Method> make_method(const std::string& name, const Model& m, con
 // Those names, in that order.
 std::vector<std::string> method_names();
 
+// ---- Objects made of convex parts (issue 22) ----------------------------------------------------
+// Each object's parts as doubles (the nearest double to each exact coordinate), each part with its
+// exact hull's faces (indices into its own points, as given), all scaled about the object's seed.
+// A plain (convex) object is one part.
+struct CompoundFp {
+    struct Part {
+        std::vector<D3> pts;
+        std::vector<std::vector<int>> faces;
+    };
+    std::vector<Part> parts[2];
+    D3 seed[2];
+    double lo[2], hi[2];
+};
+// The compound methods (their verdicts: the objects collide when any part pair does):
+//   bullet-compound      Bullet's btCompoundShape of btConvexHullShape children (margin 0), each
+//                        child's local scaling set to ρ about the seed, queried by
+//                        btCollisionWorld::contactPairTest: a contact at distance < 0 overlapping,
+//                        = 0 touching, none (or > 0) separated. Distance: btGjkEpaSolver2::Distance,
+//                        the least over the child pairs.
+//   fcl-compound-libccd, fcl-compound-indep
+//                        FCL's fcl::Convex parts in two DynamicAABBTreeCollisionManagers, one per
+//                        object, rebuilt at each (ρ1, ρ2); manager1->collide(manager2) with the
+//                        default callback (libccd's GJK or FCL's own); distance: manager1->distance.
+//   libccd-gjk-parts     libccd's GJK looped over every part pair, stopping at the first that meets.
+std::unique_ptr<Method> make_compound_method(const std::string& name, const CompoundFp& s);
+std::vector<std::string> compound_method_names();
+// The FCL and Bullet ones, from the module (fcl_bullet.cpp): kind 0 Bullet, 1 FCL with libccd's
+// GJK, 2 FCL with its own GJK.
+std::unique_ptr<Method> make_fcl_bullet_compound(const CompoundFp& s, int kind);
+
 // The paper's pipeline: classify an n × n grid over I1 × I2; in each column, the touching ρ2 is
 // estimated by `bisections` rounds of bisection between the last separated and the first
 // overlapping node, repeated `repeats` times from jittered brackets and averaged (Section 3.2).

@@ -5,8 +5,15 @@
 // scalecert command would otherwise pay. The module uses no scalecert symbol, only its headers.
 #include "baselines/baselines.hpp"
 
+#include <BulletCollision/BroadphaseCollision/btDbvtBroadphase.h>
+#include <BulletCollision/CollisionDispatch/btCollisionDispatcher.h>
+#include <BulletCollision/CollisionDispatch/btCollisionWorld.h>
+#include <BulletCollision/CollisionDispatch/btDefaultCollisionConfiguration.h>
+#include <BulletCollision/CollisionShapes/btCompoundShape.h>
 #include <BulletCollision/CollisionShapes/btConvexHullShape.h>
 #include <BulletCollision/NarrowPhaseCollision/btGjkEpa2.h>
+#include <fcl/broadphase/broadphase_dynamic_AABB_tree.h>
+#include <fcl/broadphase/default_broadphase_callbacks.h>
 #include <fcl/geometry/shape/convex.h>
 #include <fcl/narrowphase/collision.h>
 #include <fcl/narrowphase/distance.h>
@@ -126,7 +133,207 @@ private:
     btTransform xf_[2];
 };
 
+// ---- Objects made of convex parts -------------------------------------------------------------
+
+// Bullet's compound shape, as its users build and query one. Each object is a btCompoundShape
+// whose children are btConvexHullShapes of its parts (collision margin 0), with the points given
+// relative to the object's seed and identity child transforms; the object's collision object sits
+// at the seed. Scaling: each child's local scaling is set to (ρ, ρ, ρ), which scales it about the
+// seed exactly as the paper does, and its node in the compound's AABB tree refreshed. (The
+// compound's own setLocalScaling multiplies each child's scaling by new/old, whose rounding would
+// make a verdict depend on the query before it.) The query: btCollisionWorld::contactPairTest,
+// which runs the dispatcher's compound-compound algorithm (children pruned by their AABB trees,
+// each child pair by GJK/EPA); a contact at distance < 0 is overlapping, = 0 touching, none or
+// > 0 separated.
+class BulletCompound : public Method {
+public:
+    explicit BulletCompound(const CompoundFp& s)
+        : dispatcher_(&config_), world_(&dispatcher_, &broadphase_, &config_) {
+        for (int i = 0; i < 2; ++i) {
+            const D3& c = s.seed[i];
+            compound_[i] = std::make_unique<btCompoundShape>(true, static_cast<int>(s.parts[i].size()));
+            for (const CompoundFp::Part& part : s.parts[i]) {
+                auto h = std::make_unique<btConvexHullShape>();
+                for (const D3& p : part.pts) h->addPoint(btVector3(p[0] - c[0], p[1] - c[1], p[2] - c[2]), false);
+                h->recalcLocalAabb();
+                h->setMargin(0);
+                btTransform t;
+                t.setIdentity();
+                compound_[i]->addChildShape(t, h.get());
+                hulls_[i].push_back(std::move(h));
+            }
+            compound_[i]->setMargin(0);
+            btTransform xf;
+            xf.setIdentity();
+            xf.setOrigin(btVector3(c[0], c[1], c[2]));
+            object_[i].setCollisionShape(compound_[i].get());
+            object_[i].setWorldTransform(xf);
+        }
+    }
+    std::string name() const override { return "bullet-compound"; }
+    int classify(double r1, double r2) const override {
+        scale(r1, r2);
+        Contacts cb;
+        world_.contactPairTest(&object_[0], &object_[1], cb);
+        if (cb.count == 0 || cb.least > 0) return 1;
+        return cb.least == 0 ? 0 : -1;
+    }
+    // The distance: btGjkEpaSolver2::Distance over every child pair, the least, with its witnesses.
+    std::optional<Measure> measure(double r1, double r2, bool separated) const override {
+        if (!separated) return std::nullopt;
+        scale(r1, r2);
+        std::optional<Measure> best;
+        for (int a = 0; a < compound_[0]->getNumChildShapes(); ++a)
+            for (int b = 0; b < compound_[1]->getNumChildShapes(); ++b) {
+                btGjkEpaSolver2::sResults res;
+                const auto* A = static_cast<const btConvexShape*>(compound_[0]->getChildShape(a));
+                const auto* B = static_cast<const btConvexShape*>(compound_[1]->getChildShape(b));
+                if (!btGjkEpaSolver2::Distance(A, object_[0].getWorldTransform() * compound_[0]->getChildTransform(a), B,
+                                               object_[1].getWorldTransform() * compound_[1]->getChildTransform(b), btVector3(1, 0, 0), res))
+                    return std::nullopt;  // a pair GJK finds meeting: no distance
+                if (!best || res.distance < best->value) {
+                    Measure m;
+                    m.value = res.distance;
+                    auto d3 = [](const btVector3& v) { return D3{v.x(), v.y(), v.z()}; };
+                    m.closest = std::array<D3, 2>{d3(res.witnesses[0]), d3(res.witnesses[1])};
+                    best = m;
+                }
+            }
+        return best;
+    }
+
+private:
+    struct Contacts : btCollisionWorld::ContactResultCallback {
+        long count = 0;
+        btScalar least = 0;
+        btScalar addSingleResult(btManifoldPoint& cp, const btCollisionObjectWrapper*, int, int, const btCollisionObjectWrapper*, int,
+                                 int) override {
+            if (count++ == 0 || cp.getDistance() < least) least = cp.getDistance();
+            return 0;
+        }
+    };
+    void scale(double r1, double r2) const {
+        const double r[2] = {r1, r2};
+        for (int i = 0; i < 2; ++i) {
+            const btVector3 v(btScalar(r[i]), btScalar(r[i]), btScalar(r[i]));
+            for (int k = 0; k < compound_[i]->getNumChildShapes(); ++k) {
+                compound_[i]->getChildShape(k)->setLocalScaling(v);
+                compound_[i]->updateChildTransform(k, compound_[i]->getChildTransform(k), false);
+            }
+            compound_[i]->recalculateLocalAabb();
+        }
+    }
+    btDefaultCollisionConfiguration config_;
+    btCollisionDispatcher dispatcher_;
+    btDbvtBroadphase broadphase_;
+    mutable btCollisionWorld world_;
+    std::vector<std::unique_ptr<btConvexHullShape>> hulls_[2];
+    std::unique_ptr<btCompoundShape> compound_[2];
+    mutable btCollisionObject object_[2];
+};
+
+// FCL has no compound of convex shapes: its users put one CollisionObject per part into a
+// broad-phase manager per object and collide the managers. Here two DynamicAABBTreeCollisionManagers
+// of fcl::Convex parts, scaled about the seed (FCL's Convex has no scaling: the parts are rebuilt
+// at each (ρ1, ρ2), as the convex FCL baseline rebuilds its shapes); manager1->collide(manager2)
+// with FCL's default callback (stops at the first colliding pair) and manager1->distance(manager2)
+// with its default distance callback (the least over the pairs the trees do not prune).
+class FclCompound : public Method {
+public:
+    FclCompound(const CompoundFp& s, fcl::GJKSolverType type) : s_(s), type_(type) {
+        for (int i = 0; i < 2; ++i)
+            for (const CompoundFp::Part& part : s.parts[i]) {
+                auto faces = std::make_shared<std::vector<int>>();
+                for (const std::vector<int>& f : part.faces) {
+                    faces->push_back(static_cast<int>(f.size()));
+                    faces->insert(faces->end(), f.begin(), f.end());
+                }
+                faces_[i].push_back(faces);
+            }
+    }
+    std::string name() const override { return type_ == fcl::GST_LIBCCD ? "fcl-compound-libccd" : "fcl-compound-indep"; }
+    int classify(double r1, double r2) const override {
+        Scene sc(*this, r1, r2);
+        fcl::DefaultCollisionData<double> data;
+        data.request.gjk_solver_type = type_;
+        sc.manager[0].collide(&sc.manager[1], &data, fcl::DefaultCollisionFunction<double>);
+        return data.result.isCollision() ? -1 : 1;
+    }
+    std::optional<Measure> measure(double r1, double r2, bool separated) const override {
+        if (!separated) return std::nullopt;
+        Scene sc(*this, r1, r2);
+        Nearest data;
+        data.request.enable_nearest_points = true;
+        data.request.gjk_solver_type = type_;
+        sc.manager[0].distance(&sc.manager[1], &data, nearest);
+        if (!data.any || !(data.least >= 0) || !std::isfinite(data.least)) return std::nullopt;
+        Measure m;
+        m.value = data.least;
+        m.closest = data.points;
+        return m;
+    }
+
+private:
+    // The parts at (ρ1, ρ2) as collision objects in one manager per object.
+    struct Scene {
+        std::vector<std::unique_ptr<fcl::CollisionObjectd>> objects[2];
+        fcl::DynamicAABBTreeCollisionManagerd manager[2];
+        Scene(const FclCompound& f, double r1, double r2) {
+            const double r[2] = {r1, r2};
+            for (int i = 0; i < 2; ++i) {
+                std::vector<fcl::CollisionObjectd*> list;
+                for (size_t k = 0; k < f.s_.parts[i].size(); ++k) {
+                    objects[i].push_back(std::make_unique<fcl::CollisionObjectd>(f.shape(i, k, r[i]), fcl::Transform3d::Identity()));
+                    objects[i].back()->setUserData(&kObject[i]);
+                    list.push_back(objects[i].back().get());
+                }
+                manager[i].registerObjects(list);
+                manager[i].setup();
+            }
+        }
+    };
+    std::shared_ptr<fcl::CollisionGeometryd> shape(int i, size_t k, double rho) const {
+        auto v = std::make_shared<std::vector<fcl::Vector3d>>();
+        const D3& c = s_.seed[i];
+        for (const D3& p : s_.parts[i][k].pts) v->emplace_back(c[0] + rho * (p[0] - c[0]), c[1] + rho * (p[1] - c[1]), c[2] + rho * (p[2] - c[2]));
+        return std::make_shared<fcl::Convexd>(v, static_cast<int>(s_.parts[i][k].faces.size()), faces_[i][k]);
+    }
+    // FCL's default distance callback (fcl::distance on each pair the trees bring, the least kept,
+    // stopping at a distance <= 0), which also notes which nearest point lies on P1: the managers
+    // may hand a pair over in either order.
+    static inline int kObject[2] = {0, 1};
+    struct Nearest {
+        fcl::DistanceRequestd request;
+        bool any = false;
+        double least = 0;
+        std::array<D3, 2> points;
+    };
+    static bool nearest(fcl::CollisionObjectd* o1, fcl::CollisionObjectd* o2, void* data, double& dist) {
+        auto* d = static_cast<Nearest*>(data);
+        fcl::DistanceResultd res;
+        fcl::distance(o1, o2, d->request, res);
+        if (!d->any || res.min_distance < d->least) {
+            const bool swap = o1->getUserData() == &kObject[1];
+            const auto& p = res.nearest_points[swap ? 1 : 0];
+            const auto& q = res.nearest_points[swap ? 0 : 1];
+            d->any = true;
+            d->least = res.min_distance;
+            d->points = {D3{p[0], p[1], p[2]}, D3{q[0], q[1], q[2]}};
+        }
+        dist = d->least;
+        return dist <= 0;
+    }
+    CompoundFp s_;
+    fcl::GJKSolverType type_;
+    std::vector<std::shared_ptr<const std::vector<int>>> faces_[2];
+};
+
 }  // namespace
+
+std::unique_ptr<Method> make_compound_module(const CompoundFp& s, int kind) {
+    if (kind == 0) return std::make_unique<BulletCompound>(s);
+    return std::make_unique<FclCompound>(s, kind == 1 ? fcl::GST_LIBCCD : fcl::GST_INDEP);
+}
 
 }  // namespace scalecert::internal::fp
 
@@ -139,4 +346,8 @@ extern "C" __attribute__((visibility("default"))) scalecert::internal::fp::Metho
 extern "C" __attribute__((visibility("default"))) scalecert::internal::fp::Method* scalecert_make_bullet(
     const scalecert::internal::fp::FpScene* s) {
     return new scalecert::internal::fp::Bullet(*s);
+}
+extern "C" __attribute__((visibility("default"))) scalecert::internal::fp::Method* scalecert_make_compound(
+    const scalecert::internal::fp::CompoundFp* s, int kind) {
+    return scalecert::internal::fp::make_compound_module(*s, kind).release();
 }

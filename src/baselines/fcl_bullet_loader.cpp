@@ -16,10 +16,12 @@ namespace scalecert::internal::fp {
 namespace {
 using MakeFcl = Method* (*)(const Model*, const FpScene*, bool);
 using MakeBullet = Method* (*)(const FpScene*);
+using MakeCompound = Method* (*)(const CompoundFp*, int);
 
 struct Module {
     MakeFcl fcl = nullptr;
     MakeBullet bullet = nullptr;
+    MakeCompound compound = nullptr;
 };
 
 const Module& module() {
@@ -43,12 +45,13 @@ const Module& module() {
             }
             mod.fcl = reinterpret_cast<MakeFcl>(::dlsym(h, "scalecert_make_fcl"));
             mod.bullet = reinterpret_cast<MakeBullet>(::dlsym(h, "scalecert_make_bullet"));
-            if (mod.fcl && mod.bullet) return;
+            mod.compound = reinterpret_cast<MakeCompound>(::dlsym(h, "scalecert_make_compound"));
+            if (mod.fcl && mod.bullet && mod.compound) return;
             error = p + ": lacks the entry points";
         }
         if (error.empty()) error = "libscalecert_fcl_bullet.so not found (set SCALECERT_FCL_BULLET_MODULE)";
     });
-    if (!mod.fcl || !mod.bullet) throw std::runtime_error("the FCL/Bullet baselines cannot be loaded: " + error);
+    if (!mod.fcl || !mod.bullet || !mod.compound) throw std::runtime_error("the FCL/Bullet baselines cannot be loaded: " + error);
     return mod;
 }
 }  // namespace
@@ -57,5 +60,8 @@ std::unique_ptr<Method> make_fcl(const Model& m, const FpScene& s, bool libccd) 
     return std::unique_ptr<Method>(module().fcl(&m, &s, libccd));
 }
 std::unique_ptr<Method> make_bullet(const FpScene& s) { return std::unique_ptr<Method>(module().bullet(&s)); }
+std::unique_ptr<Method> make_fcl_bullet_compound(const CompoundFp& s, int kind) {
+    return std::unique_ptr<Method>(module().compound(&s, kind));
+}
 
 }  // namespace scalecert::internal::fp

@@ -7,6 +7,38 @@ namespace scalecert::internal {
 std::string audit_csv(const std::vector<AuditRow>& rows, bool timing) {
     std::string s = "scene,eps,method,queries,false_separated,false_overlapping,seconds_per_query,grid_n,seconds_per_curve,growth_error,exact_junctions,junctions_found,junctions_missed,junctions_merged,max_junction_error,"
                     "distances,distance_err_median,distance_err_max,depths,depth_err_median,depth_err_max,direction_err_max\n";
+    bool with_bd = false, with_on = false;
+    for (const AuditRow& r : rows) with_bd |= !r.by_distance.empty(), with_on |= r.on_boundary.has_value();
+    if (with_bd || with_on) {
+        s.pop_back();
+        if (with_bd)
+            for (int k = 4; k <= 52; k += 4) {
+                const std::string K = "bd" + std::to_string(k);
+                s += "," + K + "_pairs," + K + "_wrong," + K + "_touching";
+            }
+        if (with_on) s += ",on_points,on_touching,on_said_separated,on_said_touching,on_said_overlapping,on_moved,on_moved_wrong";
+        s += "\n";
+    }
+    // The by-distance and on-boundary columns of a row (empty where it has none).
+    auto extra = [&](const AuditRow& r) {
+        std::string e;
+        if (with_bd)
+            for (int k = 4; k <= 52; k += 4) {
+                const AuditRow::ByDistance* b = nullptr;
+                for (const AuditRow::ByDistance& x : r.by_distance)
+                    if (x.k == k) b = &x;
+                e += b ? "," + std::to_string(b->pairs) + "," + std::to_string(b->wrong) + "," + std::to_string(b->touching) : std::string(",,,");
+            }
+        if (with_on) {
+            if (const auto& o = r.on_boundary) {
+                for (long v : {o->points, o->touching, o->said_separated, o->said_touching, o->said_overlapping, o->moved, o->moved_wrong})
+                    e += "," + std::to_string(v);
+            } else {
+                e += ",,,,,,,";
+            }
+        }
+        return e;
+    };
     char b[1024];
     for (const AuditRow& r : rows) {
         std::snprintf(b, sizeof b, "%s,%.17g,%s,%ld,%ld,%ld,%.6g,%d,%.6g,%.6g,%d,%d,%d,%d,%.6g,%ld,%.6g,%.6g,%ld,%.6g,%.6g,%.6g\n", r.scene.c_str(), to_double_rn(r.eps),
@@ -26,10 +58,12 @@ std::string audit_csv(const std::vector<AuditRow>& rows, bool timing) {
             cols[6].clear();
             cols[8].clear();
             line.clear();
-            for (size_t k = 0; k < cols.size(); ++k) line += cols[k] + (k + 1 < cols.size() ? "," : "\n");
-            s += line;
+            for (size_t k = 0; k < cols.size(); ++k) line += cols[k] + (k + 1 < cols.size() ? "," : "");
+            s += line + extra(r) + "\n";
         } else {
-            s += b;
+            std::string line = b;
+            line.pop_back();
+            s += line + extra(r) + "\n";
         }
     }
     return s;
@@ -65,6 +99,11 @@ Json audit_json(const std::vector<AuditRow>& rows, bool timing) {
                     bd.push_back(Json{{"k", b.k}, {"pairs", b.pairs}, {"wrong", b.wrong}, {"touching", b.touching}});
                 o["by_distance"] = bd;
             }
+            if (const auto& ob = r.on_boundary)
+                o["on_boundary"] = Json{{"points", ob->points},           {"touching", ob->touching},
+                                        {"said_separated", ob->said_separated}, {"said_touching", ob->said_touching},
+                                        {"said_overlapping", ob->said_overlapping}, {"moved", ob->moved},
+                                        {"moved_wrong", ob->moved_wrong}};
             if (r.depths) {
                 o["depths"] = r.depths;
                 o["depth_err_median"] = r.depth_err_median;

@@ -3,6 +3,7 @@
 #pragma once
 #include "certify/certificate.hpp"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -30,10 +31,20 @@ struct AuditRow {
     // rounded to doubles (counted apart, not in the rate).
     struct ByDistance { int k; long pairs = 0, wrong = 0, touching = 0; };
     std::vector<ByDistance> by_distance;
+    // Objects made of parts (baselines/compound_audit.cpp): the sample points on the boundary of
+    // the overlap region, as doubles. `touching`: those exactly touching, with what the method said
+    // there; `moved`: those that rounding to doubles moved off the boundary (judged exactly), and
+    // the method's wrong verdicts on them. None for convex audits.
+    struct OnBoundary {
+        long points = 0, touching = 0, said_separated = 0, said_touching = 0, said_overlapping = 0, moved = 0, moved_wrong = 0;
+    };
+    std::optional<OnBoundary> on_boundary;
 };
 
 // Without timing, the timing columns are left empty (CSV) and out (JSON): the rest is the same
-// bytes for the same arguments, on any number of processes.
+// bytes for the same arguments, on any number of processes. When some row has by_distance (or
+// on_boundary), the CSV has their columns too (bdK_pairs, bdK_wrong, bdK_touching for K = 4 ... 52;
+// on_points ... on_moved_wrong), empty in the rows without them.
 std::string audit_csv(const std::vector<AuditRow>& rows, bool timing = true);
 Json audit_json(const std::vector<AuditRow>& rows, bool timing = true);
 

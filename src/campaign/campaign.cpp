@@ -142,7 +142,11 @@ Json row_json(const AuditRow& r) {
                      Json a = Json::array();
                      for (const AuditRow::ByDistance& b : r.by_distance) a.push_back(Json::array({b.k, b.pairs, b.wrong, b.touching}));
                      return a;
-                 }()}};
+                 }()},
+                {"on_boundary", r.on_boundary ? Json::array({r.on_boundary->points, r.on_boundary->touching, r.on_boundary->said_separated,
+                                                             r.on_boundary->said_touching, r.on_boundary->said_overlapping,
+                                                             r.on_boundary->moved, r.on_boundary->moved_wrong})
+                                              : Json()}};
 }
 
 AuditRow row_of(const Json& j) {
@@ -173,6 +177,11 @@ AuditRow row_of(const Json& j) {
     r.direction_err_max = num_of(j.at("direction_err_max"));
     for (const Json& b : j.at("by_distance"))
         r.by_distance.push_back({b.at(0).get<int>(), b.at(1).get<long>(), b.at(2).get<long>(), b.at(3).get<long>()});
+    if (j.contains("on_boundary") && !j.at("on_boundary").is_null()) {
+        const Json& o = j.at("on_boundary");
+        r.on_boundary = AuditRow::OnBoundary{o.at(0).get<long>(), o.at(1).get<long>(), o.at(2).get<long>(), o.at(3).get<long>(),
+                                             o.at(4).get<long>(), o.at(5).get<long>(), o.at(6).get<long>()};
+    }
     return r;
 }
 

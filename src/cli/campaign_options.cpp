@@ -23,7 +23,9 @@ void add_audit_options(CLI::App* sub, internal::CampaignArgs& a) {
     a.auditor = internal::baseline_auditor();
 #endif
     sub->add_option("SCENES", a.scenes, "scene files");
-    sub->add_option("--methods", a.methods, "libccd-gjk libccd-mpr double-envelope paper-tritri fcl-gjk-libccd fcl-gjk-indep bullet-gjk-epa grid")->delimiter(',');
+    a.opt.allow_parts = true;  // scenes of objects made of parts, for the compound methods
+    sub->add_option("--methods", a.methods, "libccd-gjk libccd-mpr double-envelope paper-tritri fcl-gjk-libccd fcl-gjk-indep bullet-gjk-epa grid; "
+                                            "for objects made of parts: bullet-compound fcl-compound-libccd fcl-compound-indep libccd-gjk-parts")->delimiter(',');
     sub->add_option("--grid", a.grid, "grid resolutions for the grid method (2 to 4096)")->delimiter(',')->check(CLI::Range(2, 4096));
     sub->add_option("--family", a.family, "also audit a family over an eps sweep (with --sweep)");
     sub->add_option("--sweep", a.sweep_from, "eps = 2^-K for K from this (0 to 1074) ...")->check(CLI::Range(0, 1074));
@@ -34,7 +36,7 @@ void add_audit_options(CLI::App* sub, internal::CampaignArgs& a) {
     sub->add_option("--out", a.out, "write the JSON to FILE (atomically) instead of standard output")->type_name("FILE")->check(file_name());
     sub->add_option("--csv", a.csv, "also write the rows as CSV to FILE (both files written together)")->type_name("FILE")->check(file_name());
     sub->add_flag("!--no-measures", a.measures, "verdicts only: skip comparing the methods' distances and depths with the exact ones (proved at floating-point speed)");
-    sub->add_flag("--by-distance", a.by_distance, "also count wrong verdicts at relative distances 2^-4 ... 2^-52 from the curve (JSON: by_distance)");
+    sub->add_flag("--by-distance", a.by_distance, "also count wrong verdicts at relative distances 2^-4 ... 2^-52 from the curve, or from the region's boundary for objects made of parts (JSON: by_distance)");
     sub->add_flag("--no-timing", a.no_timing, "leave the timing columns out: the rest is byte-identical on any number of processes");
 }
 
