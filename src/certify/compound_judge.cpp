@@ -32,6 +32,11 @@ struct CompoundJudge::PairCache {
 namespace {
 Json range_json(int from, int to) { return Json::array({from, to}); }
 Json exact3(const Vec3q& v) { return Json::array({to_exact_string(v[0]), to_exact_string(v[1]), to_exact_string(v[2])}); }
+// An axis normal as a code, 2c for +e_c and 2c + 1 for −e_c (cheap to compare in the loops over
+// pairs); −1 for none.
+int axis_code(int c, int side) { return 2 * c + (side > 0 ? 0 : 1); }
+Vec3q axis(int c, int side);
+Vec3q axis_of(int code) { return axis(code / 2, code % 2 ? -1 : 1); }
 Vec3q axis(int c, int side) {
     Vec3q n{Q(0), Q(0), Q(0)};
     n[static_cast<size_t>(c)] = side;
@@ -69,6 +74,12 @@ CompoundJudge::CompoundJudge(const ExactScene& sc, const std::string& name) : sc
 }
 
 CompoundJudge::~CompoundJudge() = default;
+
+void CompoundJudge::check_blocks(size_t more) const {
+    if (static_cast<double>(blocks_) + static_cast<double>(more) > kMaxCertificateBlocks)
+        throw InputError(name_ + ": the certificate would hold more than " + std::to_string(static_cast<long>(kMaxCertificateBlocks)) +
+                         " blocks of part pairs (the limit: parts far from each other in their lists' order cannot share a block)");
+}
 
 // s + ρ(box − s): ρ > 0 keeps the order along every axis.
 CompoundJudge::Box CompoundJudge::scaled_box(int i, size_t k, const Q& rho) const {
@@ -135,6 +146,18 @@ std::pair<int, int> apart(const std::array<std::array<Q, 2>, 3>& x, const BoxBou
     }
     return {-1, 0};
 }
+// Does y start at least √E past x's end along c (y[c][0] − x[c][1] > 0, its square >= E)? Ed is
+// E's double (region_double: NaN when not a normal double). The doubles decide when their bounds
+// prove it either way (each difference and square rounded by one unit outward); else exactly.
+bool axis_gap_at_least(const std::array<std::array<Q, 2>, 3>& x, const BoxBounds& xb, const std::array<std::array<Q, 2>, 3>& y,
+                       const BoxBounds& yb, size_t c, const Q& E, double Ed) {
+    const double lo = std::nextafter(yb.down[c][0] - xb.up[c][1], -INFINITY);
+    if (lo > 0 && std::nextafter(lo * lo, -INFINITY) >= std::nextafter(Ed, INFINITY)) return true;
+    const double hi = std::nextafter(yb.up[c][0] - xb.down[c][1], INFINITY);
+    if (hi <= 0 || std::nextafter(hi * hi, INFINITY) < std::nextafter(Ed, -INFINITY)) return false;
+    const Q g = y[c][0] - x[c][1];
+    return sgn(g) > 0 && g * g >= E;
+}
 std::pair<int, int> apart(const std::array<std::array<Q, 2>, 3>& x, const std::array<std::array<Q, 2>, 3>& y) {
     return apart(x, bounds_of(x), y, bounds_of(y));
 }
@@ -161,11 +184,23 @@ Vec3q gap_vector(const std::array<std::array<Q, 2>, 3>& x, const std::array<std:
 }  // namespace
 
 int CompoundJudge::pair_sign(int a, int b, const Q& r1, const Q& r2, const std::vector<Box>& b1, const std::vector<Box>& b2,
-                             const std::vector<BoxBounds>& d1, const std::vector<BoxBounds>& d2, Vec3q* normal) {
-    const auto [c, side] = apart(b1[static_cast<size_t>(a)], d1[static_cast<size_t>(a)], b2[static_cast<size_t>(b)], d2[static_cast<size_t>(b)]);
+                             const std::vector<BoxBounds>& d1, const std::vector<BoxBounds>& d2, int* code, Vec3q* normal, int prefer) {
+    const Box &x = b1[static_cast<size_t>(a)], &y = b2[static_cast<size_t>(b)];
+    const BoxBounds &xd = d1[static_cast<size_t>(a)], &yd = d2[static_cast<size_t>(b)];
+    *code = -1;
+    // The preferred axis first, when the boxes are apart along it (the run then goes on).
+    if (prefer >= 0) {
+        const size_t c = static_cast<size_t>(prefer / 2);
+        if (prefer % 2 == 0 ? below(x, xd, y, yd, c) : below(y, yd, x, xd, c)) {
+            ++counts_.boxed;
+            *code = prefer;
+            return -1;
+        }
+    }
+    const auto [c, side] = apart(x, xd, y, yd);
     if (c >= 0) {
         ++counts_.boxed;
-        if (normal) *normal = axis(c, side);
+        *code = axis_code(c, side);
         return -1;
     }
     ++counts_.judged;
@@ -199,25 +234,46 @@ int CompoundJudge::pair_sign(int a, int b, const Q& r1, const Q& r2, const std::
 namespace {
 struct Block {
     int a0, a1, b0, b1;
+    int code;      // an axis normal (axis_code), or −1: then `normal`
     Vec3q normal;
 };
 Json blocks_json(const std::vector<Block>& blocks) {
     Json out = Json::array();
     for (const Block& b : blocks)
-        out.push_back(Json{{"P1_parts", range_json(b.a0, b.a1)}, {"P2_parts", range_json(b.b0, b.b1)}, {"normal", exact3(b.normal)}});
+        out.push_back(Json{{"P1_parts", range_json(b.a0, b.a1)}, {"P2_parts", range_json(b.b0, b.b1)},
+                           {"normal", exact3(b.code >= 0 ? axis_of(b.code) : b.normal)}});
     return out;
 }
-// Appends [a, a] x [b, b] with normal n, joining the run before it in the row when the normal is
-// the same (every pair of the run is then separated by n, and so is the block's union).
-void add_block(std::vector<Block>& blocks, int a, int b, const Vec3q& n) {
+// Appends [a, a] x [b, b] with an axis normal (code >= 0) or the normal n, joining the run before
+// it in the row when the normal is the same (every pair of the run is then separated by it, and
+// so is the block's union).
+void add_block(std::vector<Block>& blocks, int a, int b, int code, const Vec3q& n = Vec3q{}) {
     if (!blocks.empty()) {
         Block& last = blocks.back();
-        if (last.a0 == a && last.a1 == a && last.b1 == b - 1 && last.normal == n) {
+        if (last.a0 == a && last.a1 == a && last.b1 == b - 1 && last.code == code && (code >= 0 || last.normal == n)) {
             last.b1 = b;
             return;
         }
     }
-    blocks.push_back({a, a, b, b, n});
+    blocks.push_back({a, a, b, b, code, code >= 0 ? Vec3q{} : n});
+}
+// The run a block ends in at pair b − 1 of row a, if any: its axis code (−1: none, or not an axis).
+int run_code(const std::vector<Block>& blocks, int a, int b) {
+    return !blocks.empty() && blocks.back().a0 == a && blocks.back().a1 == a && blocks.back().b1 == b - 1 ? blocks.back().code : -1;
+}
+// Among the axis normals that ok(b, code) accepts for pair b of a row, the one that holds for the
+// longest run b, b + 1, ... (ties: the first), so that one block covers the run; −1 when ok
+// accepts none. Each candidate is scanned ahead only as far as it holds.
+template <class Ok>
+int longest_axis(int b, int n, Ok ok) {
+    int best = -1, reach = 0;
+    for (int code = 0; code < 6; ++code) {
+        if (!ok(b, code)) continue;
+        int e = b + 1;
+        while (e < n && ok(e, code)) ++e;
+        if (e - b > reach) reach = e - b, best = code;
+    }
+    return best;
 }
 }  // namespace
 
@@ -235,18 +291,25 @@ CompoundJudge::Verdict CompoundJudge::verdict(const Q& r1, const Q& r2, Json* pr
     Verdict v;
     const auto [c, side] = apart(join(b1), all2);
     if (c >= 0) {
-        blocks.push_back({0, m - 1, 0, n - 1, axis(c, side)});
+        blocks.push_back({0, m - 1, 0, n - 1, axis_code(c, side), {}});
     } else {
         for (int a = 0; a < m; ++a) {
             const auto [ca, sa] = apart(b1[static_cast<size_t>(a)], d1[static_cast<size_t>(a)], all2, all2d);
             if (ca >= 0) {
                 counts_.boxed += n;
-                blocks.push_back({a, a, 0, n - 1, axis(ca, sa)});
+                blocks.push_back({a, a, 0, n - 1, axis_code(ca, sa), {}});
                 continue;
             }
+            // Boxes apart along n (+e_c: part a's below part b's).
+            auto apart_along = [&](int b, int code) {
+                const size_t c = static_cast<size_t>(code / 2), ia = static_cast<size_t>(a), ib = static_cast<size_t>(b);
+                return code % 2 == 0 ? below(b1[ia], d1[ia], b2[ib], d2[ib], c) : below(b2[ib], d2[ib], b1[ia], d1[ia], c);
+            };
             for (int b = 0; b < n; ++b) {
                 Vec3q nrm;
-                const int s = pair_sign(a, b, r1, r2, b1, b2, d1, d2, &nrm);
+                int code = run_code(blocks, a, b);
+                if (code < 0 || !apart_along(b, code)) code = longest_axis(b, n, apart_along);
+                const int s = pair_sign(a, b, r1, r2, b1, b2, d1, d2, &code, &nrm, code);
                 if (s > 0) {
                     v = {2, a, b};
                     if (proof) {
@@ -260,11 +323,13 @@ CompoundJudge::Verdict CompoundJudge::verdict(const Q& r1, const Q& r2, Json* pr
                     return v;
                 }
                 if (s == 0 && v.part1 < 0) v = {1, a, b};
-                add_block(blocks, a, b, nrm);
+                add_block(blocks, a, b, code, nrm);
             }
+            if (proof) check_blocks(blocks.size());
         }
     }
     if (proof) {
+        blocks_ += blocks.size();
         *proof = Json{{"verdict", v.verdict == 1 ? "touching" : "separated"}, {"blocks", blocks_json(blocks)}};
         if (v.verdict == 1) {
             long fallbacks = 0;
@@ -346,25 +411,45 @@ CompoundJudge::Distance CompoundJudge::distance(const Q& r1, const Q& r2, Json* 
     }
     // The lower bound: blocks whose normal u holds gap(u) ≥ |u|² ≥ E (boxes) or gap = |u|² = E_ab ≥ E
     // (a pair's own closest points). A pair found closer restarts the blocks with its distance.
+    std::vector<BoxBounds> d1, d2;
+    for (const Box& b : b1) d1.push_back(bounds_of(b));
+    for (const Box& b : b2) d2.push_back(bounds_of(b));
     for (;;) {
         const Q E = best.squared;
+        const double Ed = filter::region_double(E);
         std::vector<Block> blocks;
         bool restart = false;
         const Box all2 = join(b2);
         const Vec3q whole = gap_vector(join(b1), all2);
         if (dot(whole, whole) >= E) {
-            blocks.push_back({0, m - 1, 0, n - 1, whole});
+            blocks.push_back({0, m - 1, 0, n - 1, -1, whole});
         } else {
             for (int a = 0; a < m && !restart; ++a) {
                 const Vec3q row = gap_vector(b1[static_cast<size_t>(a)], all2);
                 if (dot(row, row) >= E) {
-                    blocks.push_back({a, a, 0, n - 1, row});
+                    blocks.push_back({a, a, 0, n - 1, -1, row});
                     continue;
                 }
                 for (int b = 0; b < n; ++b) {
-                    const Vec3q u = gap_vector(b1[static_cast<size_t>(a)], b2[static_cast<size_t>(b)]);
+                    const Box &x = b1[static_cast<size_t>(a)], &y = b2[static_cast<size_t>(b)];
+                    const BoxBounds &xd = d1[static_cast<size_t>(a)], &yd = d2[static_cast<size_t>(b)];
+                    // An axis along which the boxes are √E apart or more (the run's axis first,
+                    // so that the run goes on), else the vector between the boxes.
+                    auto far_along = [&](int bb, int code) {
+                        const Box& yy = b2[static_cast<size_t>(bb)];
+                        const BoxBounds& yyd = d2[static_cast<size_t>(bb)];
+                        const size_t c = static_cast<size_t>(code / 2);
+                        return code % 2 == 0 ? axis_gap_at_least(x, xd, yy, yyd, c, E, Ed) : axis_gap_at_least(yy, yyd, x, xd, c, E, Ed);
+                    };
+                    int code = run_code(blocks, a, b);
+                    if (code < 0 || !far_along(b, code)) code = longest_axis(b, n, far_along);
+                    if (code >= 0) {
+                        add_block(blocks, a, b, code);
+                        continue;
+                    }
+                    const Vec3q u = gap_vector(x, y);
                     if (sgn(dot(u, u)) > 0 && dot(u, u) >= E) {
-                        add_block(blocks, a, b, u);
+                        add_block(blocks, a, b, -1, u);
                         continue;
                     }
                     const ProvedDistance& d = exact_pair(a, b);
@@ -373,12 +458,14 @@ CompoundJudge::Distance CompoundJudge::distance(const Q& r1, const Q& r2, Json* 
                         restart = true;
                         break;
                     }
-                    add_block(blocks, a, b, sub(d.d.p2, d.d.p1));
+                    add_block(blocks, a, b, -1, sub(d.d.p2, d.d.p1));
                 }
+                if (proof) check_blocks(blocks.size());
             }
         }
         if (restart) continue;
         if (!proof) return best;
+        blocks_ += blocks.size();
         // The closest points' weights in their parts.
         const ProvedDistance& d = exact_pair(best.part1, best.part2);
         Json w1, w2;

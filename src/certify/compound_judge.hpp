@@ -29,6 +29,10 @@ Witness pair_common_point(const HullModel& hm, const Q& rho1, const Q& rho2, lon
 
 struct BoxBounds;  // a box's ends enclosed in doubles (the filter of the box tests)
 
+// At most this many blocks in all the proofs of one run (about 100 bytes each in the file): past
+// it certify-fp --certificate is refused with one line (docs/manual.md, "Limits").
+constexpr double kMaxCertificateBlocks = 1e6;
+
 class CompoundJudge {
 public:
     // Builds every part's hull (InputError for a flat part, named "NAME: P1.parts[k]").
@@ -78,14 +82,16 @@ private:
     std::vector<Polyhedron> parts_[2];
     std::vector<Box> unit_[2];  // each part's own box (unscaled)
     std::map<std::pair<int, int>, std::unique_ptr<PairCache>> cache_;
-    double edge_work_ = 0;  // over the pairs judged exactly: Σ edges(A) × edges(B), within kMaxEdgePairWork
+    double edge_work_ = 0;
+    size_t blocks_ = 0;  // blocks written into proofs so far
+    void check_blocks(size_t more) const;  // InputError past kMaxCertificateBlocks  // over the pairs judged exactly: Σ edges(A) × edges(B), within kMaxEdgePairWork
     Counts counts_;
 
     Box scaled_box(int i, size_t k, const Q& rho) const;
     PairCache& pair(int a, int b);
     // −1 separated (strictly), 0 touching, +1 overlapping, with a normal for ≤ 0.
     int pair_sign(int a, int b, const Q& rho1, const Q& rho2, const std::vector<Box>& b1, const std::vector<Box>& b2,
-                  const std::vector<BoxBounds>& d1, const std::vector<BoxBounds>& d2, Vec3q* normal);
+                  const std::vector<BoxBounds>& d1, const std::vector<BoxBounds>& d2, int* code, Vec3q* normal, int prefer = -1);
 };
 
 }  // namespace scalecert::internal
