@@ -1043,3 +1043,45 @@ BOOST_AUTO_TEST_CASE(region_parts_from_obj_groups) {
     expect_error("key elsewhere", "curve " + key_scene.string(), "P1.parts_from_groups: read by `scalecert region`, `scalecert certify-fp` and `scalecert audit` only");
     expect_error("flag elsewhere", "curve --parts-from-groups" + meshes, "--parts-from-groups");
 }
+
+BOOST_AUTO_TEST_CASE(certify_fp_on_compounds) {
+    // The band (region_of_compounds): at (1, 2) the right part [2, 3] is 1/2 short of the box
+    // [7/2, 11/2]; at (3, 2) it is past it, [6, 9], and the left part [−9, −6] before it: separated,
+    // 1/2 apart, with no plane between the objects.
+    const std::string band = std::string(SCALECERT_SOURCE_DIR) + "/tests/data/compound_band.json";
+    const fs::path claims = write("band_claims.json", R"({"format": "scalecert-claims-1", "claims": [
+     {"kind": "verdict", "rho1": 3, "rho2": 2, "verdict": "separated"},
+     {"kind": "distance", "rho1": 3, "rho2": 2, "value": 0.5},
+     {"kind": "separating_plane", "rho1": 1, "rho2": 2, "normal": [1, 0, 0]}]})");
+    const fs::path cert = workdir() / "band.judgements.json";
+    fs::remove(cert);
+    Run r = run("certify-fp " + band + " " + claims.string() + " --json --certificate " + cert.string());
+    BOOST_TEST_REQUIRE(r.status == 0, r.err);
+    const auto j = nlohmann::json::parse(r.out);
+    BOOST_TEST(j["right"] == 3);
+    BOOST_TEST(j["claims"][1]["exact_squared"] == "1/4");
+    BOOST_TEST(j["claims"][1]["exact_pair"] == nlohmann::json::parse("[0, 0]"));
+    BOOST_TEST(std::system((std::string(SCALECERT_CHECK_BIN) + " " + cert.string() + " >/dev/null").c_str()) == 0);
+    BOOST_TEST(run("certify-fp " + band + " " + claims.string() + " --json").out == r.out);  // deterministic
+    // A wrong claim: exit 1. Verdict lines are read; curve and growth lines are refused.
+    const fs::path wrong = write("band_wrong.txt", "3 2 intersecting\n");
+    BOOST_TEST(run("certify-fp " + band + " " + wrong.string()).status == 1);
+    expect_error("curve line on parts", "certify-fp " + band + " " + write("band_curve.txt", "curve 1 2\n").string(), "verdict lines only");
+    expect_error("growth line on parts", "certify-fp " + band + " " + write("band_growth.txt", "growth 1\n").string(), "verdict lines only");
+    for (const char* kind : {"curve_point", "switch_point", "growth_distance", "penetration_depth"})
+        expect_error(kind, "certify-fp " + band + " " +
+                               write("band_kind.json", std::string(R"({"format": "scalecert-claims-1", "claims": [{"kind": ")") + kind +
+                                                           R"(", "rho1": 1, "rho2": 1, "value": 1}]})")
+                                   .string(),
+                     "is a claim on two convex objects");
+    expect_error("unknown kind on parts",
+                 "certify-fp " + band + " " + write("band_unknown.json", R"({"format": "scalecert-claims-1", "claims": [{"kind": "area"}]})").string(),
+                 "unknown kind");
+    expect_error("zero rho on parts",
+                 "certify-fp " + band + " " +
+                     write("band_zero.json", R"({"format": "scalecert-claims-1", "claims": [{"kind": "verdict", "rho1": 0, "rho2": 1, "verdict": "separated"}]})")
+                         .string(),
+                 "scalings must be > 0");
+    // The certificate may not replace the scene or the claims.
+    expect_error("certificate over claims", "certify-fp " + band + " " + claims.string() + " --certificate " + claims.string(), claims.string());
+}
