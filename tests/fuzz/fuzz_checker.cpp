@@ -3,6 +3,7 @@
 // answer for the scene stored in it and every claim compared here must agree.
 #include "fuzz_common.hpp"
 #include "certify/claims.hpp"
+#include "certify/compound_judge.hpp"
 #include "compound/region.hpp"
 
 #include <map>
@@ -47,8 +48,39 @@ void compare_compound_with_engine(const J& c) {
             fuzz::finding("the checker accepted a wrong compound growth interval");
 }
 
+// An accepted compound judgements file: the engine, on the stored scene, claims and tolerance,
+// must give every judgement the file states.
+void compare_compound_judgements_with_engine(const J& c) {
+    ExactScene sc;
+    ReadOptions opt;
+    opt.allow_parts = true;
+    opt.allow_off_files = false;
+    try {
+        sc = parse_scene_text(c.at("scene").dump(), "scene", "", opt);
+    } catch (const InputError& e) {
+        fuzz::finding(std::string("the checker accepted a compound scene the engine cannot read: ") + e.what());
+    }
+    J doc{{"format", "scalecert-claims-1"}, {"claims", J::array()}};
+    for (const J& e : c.at("judgements")) doc["claims"].push_back(e.at("claim"));
+    std::string report;
+    try {
+        CompoundJudge judge(sc, "scene");
+        long wrong = 0;
+        report = certify_fp(judge, doc.dump(), "fuzz", ClaimOptions{true, Q(c.at("tolerance").get<std::string>()), true}, &wrong);
+    } catch (const InputError& e) {
+        const std::string what = e.what();
+        if (what.find("the limit") != std::string::npos) return;  // past the engine's limits: nothing to compare
+        fuzz::finding("the checker accepted compound claims the engine refuses: " + what);
+    }
+    const J r = J::parse(report);
+    for (size_t k = 0; k < c.at("judgements").size(); ++k)
+        if (r.at("claims")[k].at("right") != c.at("judgements")[k].at("right"))
+            fuzz::finding("the checker accepted a wrong compound judgement at " + std::to_string(k));
+}
+
 void compare_with_engine(const J& c) {
     if (c.at("kind") == "compound_partition") return compare_compound_with_engine(c);
+    if (c.at("kind") == "compound_judgements") return compare_compound_judgements_with_engine(c);
     ExactScene sc;
     try {
         sc = parse_scene_text(c.at("scene").dump(), "scene", "");
