@@ -1701,6 +1701,24 @@ bool judge(const Scene& sc, const Rules& R, const J& cl, const J& pr, const std:
 }  // namespace judge
 
 std::string g_summary;  // appended to the line printed for a valid file
+// Every entry {"index", "claim", "right", "proof"} of a judgements list: distinct indices, and
+// "right" the judgement that judge(claim, proof, where) gives. Returns how many are right.
+template <class Judge>
+size_t judge_all(const J& js, Judge judge) {
+    claim(js.is_array() && !js.empty(), "judgements is a nonempty list");
+    std::set<size_t> indices;
+    size_t rights = 0;
+    for (size_t k = 0; k < js.size(); ++k) {
+        const std::string w = "judgements[" + std::to_string(k) + "]";
+        shape(js[k], w, {"index", "claim", "right", "proof"});
+        claim(natural(at(js[k], "index")) && indices.insert(at(js[k], "index").get<size_t>()).second, w + ".index is a distinct natural number");
+        claim(at(js[k], "right").is_boolean(), w + ".right is true or false");
+        const bool right = judge(at(js[k], "claim"), at(js[k], "proof"), w);
+        claim(right == at(js[k], "right").get<bool>(), w + ".right must be the judgement the rules give, which is " + (right ? "right" : "wrong"));
+        rights += right;
+    }
+    return rights;
+}
 // A tolerance as the checker prints it: a long one by its size, never by a prefix (a prefix hides
 // a factor of 10^61).
 std::string tolerance_shown(const Q& tol) {
@@ -1717,18 +1735,7 @@ void check_judgements(const J& c) {
     judge::Rules R{num(at(c, "tolerance"), "tolerance")};
     claim(sgn(R.tol) >= 0, "tolerance is >= 0");
     const J& js = at(c, "judgements");
-    claim(js.is_array() && !js.empty(), "judgements is a nonempty list");
-    std::set<size_t> indices;
-    size_t rights = 0;
-    for (size_t k = 0; k < js.size(); ++k) {
-        const std::string w = "judgements[" + std::to_string(k) + "]";
-        shape(js[k], w, {"index", "claim", "right", "proof"});
-        claim(natural(at(js[k], "index")) && indices.insert(at(js[k], "index").get<size_t>()).second, w + ".index is a distinct natural number");
-        claim(at(js[k], "right").is_boolean(), w + ".right is true or false");
-        const bool right = judge::judge(sc, R, at(js[k], "claim"), at(js[k], "proof"), w);
-        claim(right == at(js[k], "right").get<bool>(), w + ".right must be the judgement the rules give, which is " + (right ? "right" : "wrong"));
-        rights += right;
-    }
+    const size_t rights = judge_all(js, [&](const J& cl, const J& pr, const std::string& w) { return judge::judge(sc, R, cl, pr, w); });
     // What the file proves, in the line the checker prints: the judgements and their tolerance
     // (a forged tolerance makes wrong values right, and stays valid: it is the file's claim).
     // A long tolerance is shown by its size, never by a prefix (a prefix hides a factor of 10^61).
@@ -2024,8 +2031,9 @@ bool judge_claim(const CompoundScene& cs, const judge::Rules& R, const J& cl, co
     if (kind == "verdict") {
         shape(cl, wc, {"kind", "rho1", "rho2", "verdict"});
         const Q r1 = judge::positive(cl, "rho1", wc), r2 = judge::positive(cl, "rho2", wc);
-        claim(at(cl, "verdict").is_string() && at(pr, "verdict").is_string(), where + ": verdicts are strings");
-        const std::string c = at(cl, "verdict").get<std::string>(), v = at(pr, "verdict").get<std::string>();
+        // (at() reads a key that shape() has seen: the proof's verdict is looked up first.)
+        claim(pr.contains("verdict") && pr.find("verdict")->is_string() && at(cl, "verdict").is_string(), where + ": verdicts are strings");
+        const std::string c = at(cl, "verdict").get<std::string>(), v = pr.find("verdict")->get<std::string>();
         claim(c == "separated" || c == "touching" || c == "overlapping" || c == "intersecting", wc + ".verdict is separated, touching, overlapping or intersecting");
         if (v == "overlapping") {
             // A point inside a part of each: strictly positive weights on points spanning 3
@@ -2088,7 +2096,8 @@ bool judge_claim(const CompoundScene& cs, const judge::Rules& R, const J& cl, co
         shape(cl, wc, {"kind", "rho1", "rho2", "value"}, {"closest"});
         const Q r1 = judge::positive(cl, "rho1", wc), r2 = judge::positive(cl, "rho2", wc);
         const Q c = num(at(cl, "value"), wc + ".value");
-        const Q E = num(at(pr, "squared"), wp + ".squared");
+        claim(pr.contains("squared"), wp + ".squared is present");
+        const Q E = num(*pr.find("squared"), wp + ".squared");
         claim(sgn(E) >= 0, wp + ".squared is >= 0");
         if (sgn(E) > 0) shape(pr, wp, {"squared", "pair", "P1", "P2", "apart"}, {"closest"});
         else shape(pr, wp, {"squared", "pair", "P1", "P2"}, {"closest"});
@@ -2132,18 +2141,7 @@ void check_compound_judgements(const J& c) {
     judge::Rules R{num(at(c, "tolerance"), "tolerance")};
     claim(sgn(R.tol) >= 0, "tolerance is >= 0");
     const J& js = at(c, "judgements");
-    claim(js.is_array() && !js.empty(), "judgements is a nonempty list");
-    std::set<size_t> indices;
-    size_t rights = 0;
-    for (size_t k = 0; k < js.size(); ++k) {
-        const std::string w = "judgements[" + std::to_string(k) + "]";
-        shape(js[k], w, {"index", "claim", "right", "proof"});
-        claim(natural(at(js[k], "index")) && indices.insert(at(js[k], "index").get<size_t>()).second, w + ".index is a distinct natural number");
-        claim(at(js[k], "right").is_boolean(), w + ".right is true or false");
-        const bool right = compound::judge_claim(cs, R, at(js[k], "claim"), at(js[k], "proof"), w);
-        claim(right == at(js[k], "right").get<bool>(), w + ".right must be the judgement the rules give, which is " + (right ? "right" : "wrong"));
-        rights += right;
-    }
+    const size_t rights = judge_all(js, [&](const J& cl, const J& pr, const std::string& w) { return compound::judge_claim(cs, R, cl, pr, w); });
     g_summary = "; compound judgements: " + std::to_string(rights) + " right, " + std::to_string(js.size() - rights) + " wrong, tolerance " +
                 tolerance_shown(R.tol) + "; " + std::to_string(cs.parts(0)) + " x " + std::to_string(cs.parts(1)) + " part pairs";
 }

@@ -1607,6 +1607,16 @@ BOOST_AUTO_TEST_CASE(compound_judgement_forgeries_are_rejected) {
         b[1]["P1_parts"] = OJ::array({0, 1});
         BOOST_TEST(rejected(g));
     }
+    // A proof without its verdict or its squared distance: rejected, never read (the mutation test
+    // crashed the checker here before it looked the keys up first).
+    {
+        OJ f = band;
+        f["judgements"][0]["proof"].erase("verdict");
+        BOOST_TEST(rejected(f));
+        OJ g = band;
+        g["judgements"][4]["proof"].erase("squared");
+        BOOST_TEST(rejected(g));
+    }
     // A witness point outside P2 shown "in" a part it is not in, and "out" with too few normals.
     {
         OJ f = band;

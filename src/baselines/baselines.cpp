@@ -43,13 +43,25 @@ void center(const void* obj, ccd_vec3_t* out) {
     for (int k = 0; k < 3; ++k) out->v[k] = s.p->seed[k];
 }
 
+// Both polytopes through the same support and centre functions; at most 500 iterations.
+ccd_t ccd_settings() {
+    ccd_t ccd;
+    CCD_INIT(&ccd);
+    ccd.support1 = support;
+    ccd.support2 = support;
+    ccd.center1 = center;
+    ccd.center2 = center;
+    ccd.max_iterations = 500;
+    return ccd;
+}
+
 class Libccd : public Method {
 public:
     Libccd(const FpScene& s, bool mpr) : s_(s), mpr_(mpr) {}
     std::string name() const override { return mpr_ ? "libccd-mpr" : "libccd-gjk"; }
     int classify(double r1, double r2) const override {
         Scaled a{&s_.P[0], r1}, b{&s_.P[1], r2};
-        const ccd_t ccd = settings();
+        const ccd_t ccd = ccd_settings();
         int hit = mpr_ ? ccdMPRIntersect(&a, &b, &ccd) : ccdGJKIntersect(&a, &b, &ccd);
         return hit ? -1 : 1;
     }
@@ -57,7 +69,7 @@ public:
     std::optional<Measure> measure(double r1, double r2, bool separated) const override {
         if (separated) return std::nullopt;
         Scaled a{&s_.P[0], r1}, b{&s_.P[1], r2};
-        const ccd_t ccd = settings();
+        const ccd_t ccd = ccd_settings();
         ccd_real_t depth = 0;
         ccd_vec3_t dir, pos;
         const int r = mpr_ ? ccdMPRPenetration(&a, &b, &ccd, &depth, &dir, &pos) : ccdGJKPenetration(&a, &b, &ccd, &depth, &dir, &pos);
@@ -72,17 +84,6 @@ public:
 private:
     FpScene s_;
     bool mpr_;
-    // Both polytopes through the same support and centre functions; at most 500 iterations.
-    static ccd_t settings() {
-        ccd_t ccd;
-        CCD_INIT(&ccd);
-        ccd.support1 = support;
-        ccd.support2 = support;
-        ccd.center1 = center;
-        ccd.center2 = center;
-        ccd.max_iterations = 500;
-        return ccd;
-    }
 };
 
 class DoubleEnvelope : public Method {
@@ -144,13 +145,7 @@ public:
     }
     std::string name() const override { return "libccd-gjk-parts"; }
     int classify(double r1, double r2) const override {
-        ccd_t ccd;
-        CCD_INIT(&ccd);
-        ccd.support1 = support;
-        ccd.support2 = support;
-        ccd.center1 = center;
-        ccd.center2 = center;
-        ccd.max_iterations = 500;
+        const ccd_t ccd = ccd_settings();
         for (const Polytope& A : parts_[0])
             for (const Polytope& B : parts_[1]) {
                 Scaled a{&A, r1}, b{&B, r2};

@@ -48,6 +48,16 @@ protected:
     [[noreturn]] void fail(const std::string& key, const std::string& what) const {
         throw InputError(where_ + (key.empty() ? "" : "." + key) + ": " + what);
     }
+    // The start of every claim: its place for messages, its kind, both in the report.
+    std::string begin(const JNode& claim, size_t index, Json& o) {
+        proof.reset();
+        where_ = name_ + ": claims[" + std::to_string(index) + "]";
+        if (claim.kind != JNode::Object) fail("", "expected an object with \"kind\"");
+        const std::string kind = str(claim, "kind");
+        o["index"] = index;
+        o["kind"] = kind;
+        return kind;
+    }
     void only(const JNode& o, std::initializer_list<const char*> keys) const {
         for (const std::string& k : o.keys)
             if (std::none_of(keys.begin(), keys.end(), [&](const char* x) { return k == x; })) fail(k, "unknown field");
@@ -142,12 +152,7 @@ public:
 
     // One claim: its report object and a one-line text; right or wrong.
     bool run(const JNode& claim, size_t index, Json& o, std::string& text) {
-        proof.reset();
-        where_ = name_ + ": claims[" + std::to_string(index) + "]";
-        if (claim.kind != JNode::Object) fail("", "expected an object with \"kind\"");
-        const std::string kind = str(claim, "kind");
-        o["index"] = index;
-        o["kind"] = kind;
+        const std::string kind = begin(claim, index, o);
         if (kind == "verdict") return verdict(claim, o, text);
         if (kind == "growth_distance") return growth(claim, o, text);
         if (kind == "switch_point") return switch_point(claim, o, text);
@@ -661,12 +666,7 @@ public:
         : ClaimReader(name, opt, prove), j_(judge) {}
 
     bool run(const JNode& claim, size_t index, Json& o, std::string& text) {
-        proof.reset();
-        where_ = name_ + ": claims[" + std::to_string(index) + "]";
-        if (claim.kind != JNode::Object) fail("", "expected an object with \"kind\"");
-        const std::string kind = str(claim, "kind");
-        o["index"] = index;
-        o["kind"] = kind;
+        const std::string kind = begin(claim, index, o);
         if (kind == "verdict") return verdict(claim, o, text);
         if (kind == "separating_plane") return plane(claim, o, text);
         if (kind == "witness_point") return witness(claim, o, text);

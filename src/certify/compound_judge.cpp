@@ -45,32 +45,9 @@ Vec3q axis(int c, int side) {
 }  // namespace
 
 CompoundJudge::CompoundJudge(const ExactScene& sc, const std::string& name) : sc_(sc), name_(name) {
-    const size_t m = std::max<size_t>(1, sc.P[0].parts.size()), n = std::max<size_t>(1, sc.P[1].parts.size());
-    if (m * n > kMaxPartPairs)
-        throw InputError(name + ": " + std::to_string(m) + " x " + std::to_string(n) + " part pairs, more than " + std::to_string(kMaxPartPairs) +
-                         " (the limit)");
-    const char* pname[2] = {"P1", "P2"};
-    for (int i = 0; i < 2; ++i) {
-        const PolyInput& in = sc.P[i];
-        const std::vector<std::vector<Vec3q>> one{in.points};
-        const std::vector<std::vector<Vec3q>>& list = in.parts.empty() ? one : in.parts;
-        for (size_t k = 0; k < list.size(); ++k) {
-            const std::string part = in.parts.empty() ? std::string(pname[i]) : std::string(pname[i]) + ".parts[" + std::to_string(k) + "]";
-            parts_[i].push_back(build_polyhedron(list[k], name + ": " + part));
-            const Polyhedron& P = parts_[i].back();
-            Box b;
-            for (int c = 0; c < 3; ++c) {
-                Q lo = P.points[static_cast<size_t>(P.vertices.front())][c], hi = lo;
-                for (int v : P.vertices) {
-                    const Q& x = P.points[static_cast<size_t>(v)][c];
-                    if (x < lo) lo = x;
-                    if (x > hi) hi = x;
-                }
-                b[static_cast<size_t>(c)] = {lo, hi};
-            }
-            unit_[i].push_back(std::move(b));
-        }
-    }
+    build_parts(sc, name, parts_);
+    for (int i = 0; i < 2; ++i)
+        for (const Polyhedron& P : parts_[i]) unit_[i].push_back(bounding_box(P));
 }
 
 CompoundJudge::~CompoundJudge() = default;
@@ -432,7 +409,7 @@ CompoundJudge::Distance CompoundJudge::distance(const Q& r1, const Q& r2, Json* 
                 }
                 for (int b = 0; b < n; ++b) {
                     const Box &x = b1[static_cast<size_t>(a)], &y = b2[static_cast<size_t>(b)];
-                    const BoxBounds &xd = d1[static_cast<size_t>(a)], &yd = d2[static_cast<size_t>(b)];
+                    const BoxBounds& xd = d1[static_cast<size_t>(a)];
                     // An axis along which the boxes are √E apart or more (the run's axis first,
                     // so that the run goes on), else the vector between the boxes.
                     auto far_along = [&](int bb, int code) {

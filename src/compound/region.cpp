@@ -180,18 +180,44 @@ std::vector<RegionPiece> union_of(const std::vector<std::vector<Point2q>>& conve
     return out;
 }
 
-namespace {
-// The box holding P(ρ) = s + ρ(P − s) for every ρ in [lo, hi] (ρ > 0 keeps the order along an
-// axis, and each coordinate is linear in ρ: the ends decide).
-std::array<std::array<Q, 2>, 3> swept_box(const Polyhedron& P, const Vec3q& s, const Q& lo, const Q& hi) {
+std::array<std::array<Q, 2>, 3> bounding_box(const Polyhedron& P) {
     std::array<std::array<Q, 2>, 3> b;
-    for (int c = 0; c < 3; ++c) {
+    for (size_t c = 0; c < 3; ++c) {
         Q m = P.points[static_cast<size_t>(P.vertices.front())][c], M = m;
         for (int v : P.vertices) {
             const Q& x = P.points[static_cast<size_t>(v)][c];
             if (x < m) m = x;
             if (x > M) M = x;
         }
+        b[c] = {m, M};
+    }
+    return b;
+}
+
+void build_parts(const ExactScene& sc, const std::string& name, std::vector<Polyhedron> (&parts)[2]) {
+    const size_t m = std::max<size_t>(1, sc.P[0].parts.size()), n = std::max<size_t>(1, sc.P[1].parts.size());
+    if (m * n > kMaxPartPairs)
+        throw InputError(name + ": " + std::to_string(m) + " x " + std::to_string(n) + " part pairs, more than " + std::to_string(kMaxPartPairs) +
+                         " (the limit)");
+    const char* pname[2] = {"P1", "P2"};
+    for (int i = 0; i < 2; ++i) {
+        const PolyInput& in = sc.P[i];
+        const std::vector<std::vector<Vec3q>> one{in.points};
+        const std::vector<std::vector<Vec3q>>& list = in.parts.empty() ? one : in.parts;
+        for (size_t k = 0; k < list.size(); ++k) {
+            const std::string part = in.parts.empty() ? std::string(pname[i]) : std::string(pname[i]) + ".parts[" + std::to_string(k) + "]";
+            parts[i].push_back(build_polyhedron(list[k], name + ": " + part));
+        }
+    }
+}
+
+namespace {
+// The box holding P(ρ) = s + ρ(P − s) for every ρ in [lo, hi] (ρ > 0 keeps the order along an
+// axis, and each coordinate is linear in ρ: the ends decide).
+std::array<std::array<Q, 2>, 3> swept_box(const Polyhedron& P, const Vec3q& s, const Q& lo, const Q& hi) {
+    std::array<std::array<Q, 2>, 3> b = bounding_box(P);
+    for (size_t c = 0; c < 3; ++c) {
+        const Q m = b[c][0], M = b[c][1];
         const Q a = s[c] + lo * (m - s[c]), bb = s[c] + hi * (m - s[c]), e = s[c] + lo * (M - s[c]), f = s[c] + hi * (M - s[c]);
         b[c] = {std::min(a, bb), std::max(e, f)};
     }
@@ -206,23 +232,12 @@ CompoundRegion compound_region(const ExactScene& sc, const std::string& name, bo
             throw InputError(name + ": I" + std::to_string(i + 1) + " has no width (lo = hi): the region is a set in the plane of (rho1, rho2), "
                              "so region needs I1 and I2 with lo < hi");
     const size_t m = std::max<size_t>(1, sc.P[0].parts.size()), n = std::max<size_t>(1, sc.P[1].parts.size());
-    if (m * n > kMaxPartPairs)
-        throw InputError(name + ": " + std::to_string(m) + " x " + std::to_string(n) + " part pairs, more than " + std::to_string(kMaxPartPairs) +
-                         " (the limit)");
     CompoundRegion r;
     std::vector<Polyhedron>(&parts)[2] = r.parts;
+    build_parts(sc, name, parts);
     std::vector<std::array<std::array<Q, 2>, 3>> boxes[2];
-    const char* pname[2] = {"P1", "P2"};
-    for (int i = 0; i < 2; ++i) {
-        const PolyInput& in = sc.P[i];
-        const std::vector<std::vector<Vec3q>> one{in.points};
-        const std::vector<std::vector<Vec3q>>& list = in.parts.empty() ? one : in.parts;
-        for (size_t k = 0; k < list.size(); ++k) {
-            const std::string part = in.parts.empty() ? std::string(pname[i]) : std::string(pname[i]) + ".parts[" + std::to_string(k) + "]";
-            parts[i].push_back(build_polyhedron(list[k], name + ": " + part));
-            boxes[i].push_back(swept_box(parts[i].back(), in.seed, sc.lo[i], sc.hi[i]));
-        }
-    }
+    for (int i = 0; i < 2; ++i)
+        for (const Polyhedron& P : parts[i]) boxes[i].push_back(swept_box(P, sc.P[i].seed, sc.lo[i], sc.hi[i]));
     clock.lap("parts (hulls)");
     // Prune first (a byte a pair), and count the exact work the rest would take.
     r.prune.assign(m * n, 0);

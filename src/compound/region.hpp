@@ -93,6 +93,12 @@ struct CompoundRegion {
     long pruned = 0, built = 0;
     filter::PredicateStats predicates;  // half_plane_side: the corners' sides, by stage
 };
+// Each object's parts as polyhedra (a plain object: itself), appended to parts[i]; InputError
+// past kMaxPartPairs and for a flat part ("NAME: P1.parts[k]: ...").
+void build_parts(const ExactScene& sc, const std::string& name, std::vector<Polyhedron> (&parts)[2]);
+// Its vertices' least and largest coordinate along each axis.
+std::array<std::array<Q, 2>, 3> bounding_box(const Polyhedron& P);
+
 // Throws InputError, before the pair polygons, past the limits below (manual.md "Limits"), for a
 // zero-width range (the region is a set of the plane) and for a flat part.
 constexpr std::size_t kMaxPartPairs = 10000000;     // part pairs in all (a byte each, a box test each)

@@ -12,18 +12,22 @@ namespace {
 using J = nlohmann::json;
 using namespace scalecert::internal;
 
-// An accepted compound partition: the engine's region for the stored scene must have exactly the
-// file's meeting polygons (pair by pair) and growth set.
-void compare_compound_with_engine(const J& c) {
-    ExactScene sc;
+// The scene of an accepted compound file, as the engine reads it (a finding if it cannot).
+ExactScene compound_scene_of(const J& c) {
     ReadOptions opt;
     opt.allow_parts = true;
     opt.allow_off_files = false;
     try {
-        sc = parse_scene_text(c.at("scene").dump(), "scene", "", opt);
+        return parse_scene_text(c.at("scene").dump(), "scene", "", opt);
     } catch (const InputError& e) {
         fuzz::finding(std::string("the checker accepted a compound scene the engine cannot read: ") + e.what());
     }
+}
+
+// An accepted compound partition: the engine's region for the stored scene must have exactly the
+// file's meeting polygons (pair by pair) and growth set.
+void compare_compound_with_engine(const J& c) {
+    const ExactScene sc = compound_scene_of(c);
     CompoundRegion r;
     try {
         r = compound_region(sc, "scene", false);
@@ -51,15 +55,7 @@ void compare_compound_with_engine(const J& c) {
 // An accepted compound judgements file: the engine, on the stored scene, claims and tolerance,
 // must give every judgement the file states.
 void compare_compound_judgements_with_engine(const J& c) {
-    ExactScene sc;
-    ReadOptions opt;
-    opt.allow_parts = true;
-    opt.allow_off_files = false;
-    try {
-        sc = parse_scene_text(c.at("scene").dump(), "scene", "", opt);
-    } catch (const InputError& e) {
-        fuzz::finding(std::string("the checker accepted a compound scene the engine cannot read: ") + e.what());
-    }
+    const ExactScene sc = compound_scene_of(c);
     J doc{{"format", "scalecert-claims-1"}, {"claims", J::array()}};
     for (const J& e : c.at("judgements")) doc["claims"].push_back(e.at("claim"));
     std::string report;
