@@ -215,7 +215,8 @@ private:
     void scale(double r1, double r2) const {
         const double r[2] = {r1, r2};
         for (int i = 0; i < 2; ++i) {
-            const btVector3 v(btScalar(r[i]), btScalar(r[i]), btScalar(r[i]));
+            const btScalar s = static_cast<btScalar>(r[i]);
+            const btVector3 v(s, s, s);
             for (int k = 0; k < compound_[i]->getNumChildShapes(); ++k) {
                 compound_[i]->getChildShape(k)->setLocalScaling(v);
                 compound_[i]->updateChildTransform(k, compound_[i]->getChildTransform(k), false);
