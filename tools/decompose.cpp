@@ -69,10 +69,14 @@ ET decimal(const std::string& s) {
         else refuse("not a number: " + s);
     }
     if (digits.empty()) refuse("not a number: " + s);
+    // Leading zeros would read as octal (gmpxx's base 0), and "n/d" unreduced is not canonical:
+    // an integer and a power of ten, divided, are canonical in every exact type.
+    auto nz = digits.find_first_not_of('0');
+    digits = nz == std::string::npos ? "0" : digits.substr(nz);
     std::string num = (neg ? "-" : "") + digits, den = "1";
     if (exp10 > 0) num += std::string(exp10, '0');
     else if (exp10 < 0) den += std::string(-exp10, '0');
-    return ET(num + "/" + den);
+    return ET(num) / ET(den);
 }
 
 struct Mesh {
