@@ -805,7 +805,7 @@ BOOST_AUTO_TEST_CASE(compound_judgements_equal_the_brute_force) {
     // against the least of CGAL's exact polytope distance over every pair (all vertices).
     std::mt19937 g(7077);
     long checked = 0, kinds[3] = {0, 0, 0};
-    for (int t = 0; t < 6; ++t) {
+    for (int t = 0; t < 12; ++t) {
         std::vector<Polyhedron> parts[2];
         const ExactScene sc = three_part_compounds(g, parts);
         CompoundJudge judge(sc, "scene");
@@ -815,27 +815,35 @@ BOOST_AUTO_TEST_CASE(compound_judgements_equal_the_brute_force) {
         for (int k = 0; k < 12; ++k) probes.push_back({test::qc(q(g), 40), test::qc(q(g), 40)});
         for (const auto& p : compound_region(sc, "scene", false).pairs)
             for (const Point2q& x : p.polygon) probes.push_back(x);
+        // Each pair's brute force and exact model, built once.
+        std::vector<ExactScene> pairs;
+        std::vector<test::Brute> brutes;
+        std::vector<HullModel> models;
+        for (size_t a = 0; a < 3; ++a)
+            for (size_t b = 0; b < 3; ++b) {
+                ExactScene pair;
+                pair.P[0].points = sc.P[0].parts[a];
+                pair.P[1].points = sc.P[1].parts[b];
+                pair.P[0].seed = sc.P[0].seed;
+                pair.P[1].seed = sc.P[1].seed;
+                brutes.emplace_back(pair);
+                pairs.push_back(std::move(pair));
+                HullModel hm;
+                hm.P[0] = parts[0][a];
+                hm.P[1] = parts[1][b];
+                hm.s[0] = sc.P[0].seed;
+                hm.s[1] = sc.P[1].seed;
+                models.push_back(std::move(hm));
+            }
         for (const Point2q& x : probes) {
             const Q &r1 = x[0], &r2 = x[1];
             int want = 0;  // 0 separated, 1 touching, 2 overlapping
             Q least = -1;
-            for (size_t a = 0; a < 3; ++a)
-                for (size_t b = 0; b < 3; ++b) {
-                    ExactScene pair;
-                    pair.P[0].points = sc.P[0].parts[a];
-                    pair.P[1].points = sc.P[1].parts[b];
-                    pair.P[0].seed = sc.P[0].seed;
-                    pair.P[1].seed = sc.P[1].seed;
-                    const int s = test::Brute(pair).classify(pair, r1, r2);
-                    want = std::max(want, 1 - s);
-                    HullModel hm;
-                    hm.P[0] = parts[0][a];
-                    hm.P[1] = parts[1][b];
-                    hm.s[0] = sc.P[0].seed;
-                    hm.s[1] = sc.P[1].seed;
-                    const Q e = exact_distance(hm, r1, r2).squared;
-                    if (least < 0 || e < least) least = e;
-                }
+            for (size_t k = 0; k < pairs.size(); ++k) {
+                want = std::max(want, 1 - brutes[k].classify(pairs[k], r1, r2));
+                const Q e = exact_distance(models[k], r1, r2).squared;
+                if (least < 0 || e < least) least = e;
+            }
             Json proof;
             BOOST_TEST(judge.verdict(r1, r2, &proof).verdict == want, "scene " << t << " at (" << r1 << ", " << r2 << ")");
             BOOST_TEST(judge.distance(r1, r2, &proof).squared == least, "scene " << t << " at (" << r1 << ", " << r2 << ")");
