@@ -22,7 +22,8 @@ Command add_certify_fp(CLI::App& app) {
     auto a = std::make_shared<Args>();
     CLI::App* sub = app.add_subcommand("certify-fp", "mark a floating-point program's claims right or wrong, exactly (exit 1 if any is wrong)");
     a->scene.add(sub);
-    sub->add_option("CLAIMS", a->claims, "claims: JSON (scalecert-claims-1, certificates/CLAIMS.md), or lines 'RHO1 RHO2 VERDICT', 'curve RHO1 RHO2', 'growth RHO'");
+    sub->add_option("CLAIMS", a->claims, "claims: JSON (scalecert-claims-1, certificates/CLAIMS.md), or lines 'RHO1 RHO2 VERDICT', 'curve RHO1 RHO2', 'growth RHO'; "
+                                         "on objects made of parts: verdict, separating_plane, witness_point and distance claims, and verdict lines");
     sub->add_option("--tolerance", a->tolerance, "accept numeric claims within this relative error (exact, e.g. 1e-9; JSON claims); verdicts, contacts, planes and witness points must be exact");
     sub->add_flag("--json", a->json, "the report as JSON");
     sub->add_flag("--exact-decimals", a->exact_decimals,
@@ -32,13 +33,14 @@ Command add_certify_fp(CLI::App& app) {
     add_out(sub, a->out);
     sub->add_option("--certificate", a->certificate,
                     "also write the judgements certificate: the proof of every judgement, for scalecert-check "
-                    "(certificates/FORMAT.md, \"A judgements file\")")
+                    "(certificates/FORMAT.md, \"A judgements file\"; on objects made of parts, \"A compound judgements file\")")
         ->type_name("FILE")
         ->check(file_name());
     example(sub, "Exit status: 0 all claims right, 1 some claim wrong, 2 bad input. Example:\n"
                  "  printf '1 1 separated\\ngrowth 1.5\\n' > claims.txt\n"
                  "  scalecert certify-fp certificates/scenes/stacked_cubes.json claims.txt\n"
-                 "  scalecert certify-fp certificates/scenes/stacked_cubes.json examples/claims.json --tolerance 1e-12");
+                 "  scalecert certify-fp certificates/scenes/stacked_cubes.json examples/claims.json --tolerance 1e-12\n"
+                 "  scalecert certify-fp tests/data/compound_band.json tests/data/compound_band_claims.json   # objects made of parts");
     return {sub, [a] {
                 a->scene.shift_positionals({&a->claims});
                 if (a->claims.empty()) throw InputError("CLAIMS is required (see scalecert certify-fp --help)");
