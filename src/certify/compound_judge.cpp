@@ -284,8 +284,9 @@ CompoundJudge::Verdict CompoundJudge::verdict(const Q& r1, const Q& r2, Json* pr
             };
             for (int b = 0; b < n; ++b) {
                 Vec3q nrm;
-                int code = run_code(blocks, a, b);
-                if (code < 0 || !apart_along(b, code)) code = longest_axis(b, n, apart_along);
+                // With a proof, the axis that holds longest (one block for the run); without, any.
+                int code = proof ? run_code(blocks, a, b) : -1;
+                if (proof && (code < 0 || !apart_along(b, code))) code = longest_axis(b, n, apart_along);
                 const int s = pair_sign(a, b, r1, r2, b1, b2, d1, d2, &code, &nrm, code);
                 if (s > 0) {
                     v = {2, a, b};
@@ -300,7 +301,7 @@ CompoundJudge::Verdict CompoundJudge::verdict(const Q& r1, const Q& r2, Json* pr
                     return v;
                 }
                 if (s == 0 && v.part1 < 0) v = {1, a, b};
-                add_block(blocks, a, b, code, nrm);
+                if (proof) add_block(blocks, a, b, code, nrm);  // (blocks only for a proof: m·n of them at worst)
             }
             if (proof) check_blocks(blocks.size());
         }
@@ -418,15 +419,17 @@ CompoundJudge::Distance CompoundJudge::distance(const Q& r1, const Q& r2, Json* 
                         const size_t c = static_cast<size_t>(code / 2);
                         return code % 2 == 0 ? axis_gap_at_least(x, xd, yy, yyd, c, E, Ed) : axis_gap_at_least(yy, yyd, x, xd, c, E, Ed);
                     };
-                    int code = run_code(blocks, a, b);
-                    if (code < 0 || !far_along(b, code)) code = longest_axis(b, n, far_along);
+                    int code = proof ? run_code(blocks, a, b) : -1;
+                    if (proof && (code < 0 || !far_along(b, code))) code = longest_axis(b, n, far_along);
+                    for (int k = 0; !proof && k < 6 && code < 0; ++k)
+                        if (far_along(b, k)) code = k;
                     if (code >= 0) {
-                        add_block(blocks, a, b, code);
+                        if (proof) add_block(blocks, a, b, code);
                         continue;
                     }
                     const Vec3q u = gap_vector(x, y);
                     if (sgn(dot(u, u)) > 0 && dot(u, u) >= E) {
-                        add_block(blocks, a, b, -1, u);
+                        if (proof) add_block(blocks, a, b, -1, u);
                         continue;
                     }
                     const ProvedDistance& d = exact_pair(a, b);
@@ -435,7 +438,7 @@ CompoundJudge::Distance CompoundJudge::distance(const Q& r1, const Q& r2, Json* 
                         restart = true;
                         break;
                     }
-                    add_block(blocks, a, b, -1, sub(d.d.p2, d.d.p1));
+                    if (proof) add_block(blocks, a, b, -1, sub(d.d.p2, d.d.p1));
                 }
                 if (proof) check_blocks(blocks.size());
             }
