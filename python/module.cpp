@@ -143,11 +143,83 @@ scalecert::Interval interval(const py::handle& h, const std::string& what) {
 
 py::object json_loads(const std::string& text) { return py::module_::import("json").attr("loads")(text); }
 
+// Arguments that are not numbers, checked here so that a wrong type is an InputError (one line)
+// like every other bad argument, never pybind11's TypeError or a bare OverflowError.
+// A path: a str or an os.PathLike giving one.
+std::string path_arg(const py::handle& h, const char* what) {
+    if (py::isinstance<py::str>(h)) return h.cast<std::string>();
+    try {
+        py::object p = py::module_::import("os").attr("fspath")(h);
+        if (py::isinstance<py::str>(p)) return p.cast<std::string>();
+    } catch (const py::error_already_set& e) {
+        if (!e.matches(PyExc_TypeError)) throw;
+    }
+    throw scalecert::InputError(std::string(what) + ": expected a path (a str or os.PathLike), not " + py::repr(py::type::of(h)).cast<std::string>());
+}
+std::string text_arg(const py::handle& h, const char* what) {
+    if (!py::isinstance<py::str>(h)) throw scalecert::InputError(std::string(what) + ": expected a str, not " + py::repr(py::type::of(h)).cast<std::string>());
+    return h.cast<std::string>();
+}
+bool flag_arg(const py::handle& h, const char* what) {
+    if (!py::isinstance<py::bool_>(h)) throw scalecert::InputError(std::string(what) + ": expected True or False");
+    return h.cast<bool>();
+}
+// A whole number (an int or anything with __index__, not a bool) in [lo, hi].
+long long whole_arg(const py::handle& h, const char* what, long long lo, long long hi) {
+    if (py::isinstance<py::bool_>(h) || !has_attr(h, "__index__"))
+        throw scalecert::InputError(std::string(what) + ": expected an int from " + std::to_string(lo) + " to " + std::to_string(hi));
+    mpz_class z;
+    const mpz_class zlo(static_cast<long>(lo)), zhi(static_cast<long>(hi));
+    try {
+        z = mpz_of(h);
+    } catch (const scalecert::InputError&) {
+        z = zhi + 1;  // beyond any limit
+    }
+    if (z < zlo || z > zhi) throw scalecert::InputError(std::string(what) + ": expected an int from " + std::to_string(lo) + " to " + std::to_string(hi));
+    return static_cast<long long>(z.get_si());
+}
+unsigned long long seed_arg(const py::handle& h, const char* what) {
+    if (py::isinstance<py::bool_>(h) || !has_attr(h, "__index__")) throw scalecert::InputError(std::string(what) + ": expected an int from 0 to 2^64 - 1");
+    mpz_class z;
+    try {
+        z = mpz_of(h);
+    } catch (const scalecert::InputError&) {
+        z = -1;
+    }
+    if (z < 0 || mpz_sizeinbase(z.get_mpz_t(), 2) > 64) throw scalecert::InputError(std::string(what) + ": expected an int from 0 to 2^64 - 1");
+    unsigned long long v = 0;
+    mpz_export(&v, nullptr, -1, sizeof v, 0, 0, z.get_mpz_t());
+    return v;
+}
+
+// The document with every int (Python's, or numpy's through .tolist()) as its exact decimal
+// string: json.dumps would write it as a JSON number, which certify-fp reads as the double a
+// program held (2^53 + 1 would become 2^53), while Scene.certify reads an int exactly. Dicts,
+// lists and tuples are copied; nesting deeper than a claims document's is refused.
+py::object exact_ints(const py::handle& o, int depth) {
+    if (depth > 32) throw scalecert::InputError("claims: nested more than 32 levels deep");
+    if (py::isinstance<py::bool_>(o) || py::isinstance<py::str>(o) || py::isinstance<py::float_>(o) || o.is_none())
+        return py::reinterpret_borrow<py::object>(o);
+    if (py::isinstance<py::int_>(o)) return py::str(mpz_of(o).get_str(10));
+    if (py::isinstance<py::dict>(o)) {
+        py::dict d;
+        for (const auto& kv : py::reinterpret_borrow<py::dict>(o)) d[kv.first] = exact_ints(kv.second, depth + 1);
+        return d;
+    }
+    if (py::isinstance<py::list>(o) || py::isinstance<py::tuple>(o)) {
+        py::list l;
+        for (const py::handle& x : o) l.append(exact_ints(x, depth + 1));
+        return l;
+    }
+    if (has_attr(o, "tolist") && has_attr(o, "dtype")) return exact_ints(o.attr("tolist")(), depth + 1);  // numpy
+    return py::reinterpret_borrow<py::object>(o);
+}
+
 // Claims from Python: a str is a claims file's text; a dict is a scalecert-claims-1 document, and a
 // list (or tuple) its claims. json.dumps writes a float as its shortest repr, which strtod reads
-// back as the same double, so a float claims exactly the double it is; a Fraction or a Decimal
-// becomes the exact string "p/q"; numpy scalars and arrays become numbers and lists (.tolist()).
-// NaN and infinity are refused.
+// back as the same double, so a float claims exactly the double it is; an int, a Fraction or a
+// Decimal becomes an exact string ("12", "p/q"); numpy scalars and arrays become numbers and lists
+// (.tolist()). NaN and infinity are refused.
 std::string claims_text(const py::handle& c) {
     if (py::isinstance<py::str>(c)) return c.cast<std::string>();
     py::object doc;
@@ -161,6 +233,7 @@ std::string claims_text(const py::handle& c) {
     } else {
         throw scalecert::InputError("claims: expected a str (a claims file's text), a dict or a list of claim dicts");
     }
+    doc = exact_ints(doc, 0);
     py::object Fraction = py::module_::import("fractions").attr("Fraction");
     py::object Decimal = py::module_::import("decimal").attr("Decimal");
     py::cpp_function exact([Fraction, Decimal](const py::handle& o) -> py::object {
@@ -356,16 +429,36 @@ DoubleArray doubles_of(const py::handle& h, const char* what) {
     const py::object np = py::module_::import("numpy");
     py::object a = np.attr("asarray")(h);
     std::string kind = py::str(a.attr("dtype").attr("kind")).cast<std::string>();
-    if (kind == "O") {  // Fractions, Decimals, mixed: as doubles, if they are real numbers
+    if (kind == "O") {  // Fractions, Decimals, ints past 64 bits, mixed: as doubles, if they are real numbers
         try {
-            a = np.attr("asarray")(a, py::arg("dtype") = np.attr("float64"));
+            py::object f = np.attr("asarray")(a, py::arg("dtype") = np.attr("float64"));
+            // Each must be exactly that double: classify judges the doubles a program holds, and
+            // an int or a Fraction that is not one would be judged at another value.
+            const py::list orig = a.attr("ravel")().attr("tolist")(), as_f = f.attr("ravel")().attr("tolist")();
+            py::object Fraction = py::module_::import("fractions").attr("Fraction");
+            for (size_t i = 0; i < orig.size(); ++i)
+                if (!py::isinstance<py::float_>(orig[i]) && !Fraction(orig[i]).equal(Fraction(as_f[i])))
+                    throw scalecert::InputError(std::string("classify: ") + what + "[" + std::to_string(i) + "]: " +
+                                                py::repr(orig[i]).cast<std::string>().substr(0, 40) + " is not a double (classify takes doubles)");
+            a = f;
             kind = "f";
         } catch (const py::error_already_set& e) {
-            if (!e.matches(PyExc_TypeError) && !e.matches(PyExc_ValueError)) throw;
+            if (!e.matches(PyExc_TypeError) && !e.matches(PyExc_ValueError) && !e.matches(PyExc_OverflowError)) throw;
         }
     }
     if (kind != "f" && kind != "i" && kind != "u")
         throw scalecert::InputError(std::string("classify: ") + what + ": expected real numbers (an array or list of floats or ints)");
+    if (kind != "f") {  // integers: each must be a double exactly (beyond 2^53 not every one is)
+        py::object f = np.attr("asarray")(a, py::arg("dtype") = np.attr("float64"));
+        py::object back = f.attr("astype")(a.attr("dtype"));
+        py::object bad = np.attr("flatnonzero")(np.attr("logical_or")(np.attr("not_equal")(back, a), np.attr("greater_equal")(np.attr("abs")(f), 9.2e18)));
+        if (py::len(bad) > 0) {
+            const size_t i = py::cast<size_t>(bad[py::int_(0)]);
+            throw scalecert::InputError(std::string("classify: ") + what + "[" + std::to_string(i) + "]: " +
+                                        py::repr(a.attr("ravel")()[py::int_(i)]).cast<std::string>() + " is not a double (classify takes doubles)");
+        }
+        a = f;
+    }
     return DoubleArray::ensure(a);
 }
 template <class F>
@@ -409,7 +502,7 @@ PYBIND11_MODULE(scalecert, m) {
              py::arg("P1"), py::arg("P2"), py::arg("I1"), py::arg("I2"), py::arg("seeds") = py::none(),
              "Objects made of convex parts: P1, P2 lists of parts, each a list of vertices (numbers as for Scene); "
              "I1, I2 = (lo, hi); seeds = (s1, s2), either may be None: the mean of all that object's vertices.")
-        .def_static("load", &scalecert::Region::load, py::arg("path"), "a scene file (JSON) whose objects may hold \"parts\"")
+        .def_static("load", [](const py::handle& path) { return scalecert::Region::load(path_arg(path, "path")); }, py::arg("path"), "a scene file (JSON) whose objects may hold \"parts\"")
         .def("verdict", [](const scalecert::Region& r, const py::handle& r1, const py::handle& r2) {
                  return r.verdict(rational(r1, "rho1"), rational(r2, "rho2"));
              }, py::arg("rho1"), py::arg("rho2"), "the exact verdict at (rho1, rho2) in I1 x I2")
@@ -422,14 +515,14 @@ PYBIND11_MODULE(scalecert, m) {
         .def("partition", [](const scalecert::Region& r) { return json_loads(r.partition_json()); },
              "the certified partition (kind compound_partition) as a dict")
         .def("partition_json", &scalecert::Region::partition_json, "the certificate's text, for scalecert-check")
-        .def("certify_fp", [](const scalecert::Region& r, const py::handle& claims, bool exact_decimals, const py::handle& tolerance,
-                              bool certificate) -> py::object {
+        .def("certify_fp", [](const scalecert::Region& r, const py::handle& claims, const py::handle& exact_decimals, const py::handle& tolerance,
+                              const py::handle& certificate) -> py::object {
                  scalecert::ClaimOptions opt;
-                 opt.exact_decimals = exact_decimals;
+                 opt.exact_decimals = flag_arg(exact_decimals, "exact_decimals");
                  opt.tolerance = rational(tolerance, "tolerance");
-                 opt.certificate = certificate;
+                 opt.certificate = flag_arg(certificate, "certificate");
                  scalecert::ClaimReport rep = r.certify_fp(claims_text(claims), opt);
-                 if (!certificate) return json_loads(rep.report);
+                 if (!opt.certificate) return json_loads(rep.report);
                  return py::make_tuple(json_loads(rep.report), rep.certificate);
              }, py::arg("claims"), py::arg("exact_decimals") = false, py::arg("tolerance") = 0, py::arg("certificate") = false,
              "marks claims on the compounds right or wrong, as Scene.certify_fp does: verdict, separating_plane, "
@@ -443,10 +536,10 @@ PYBIND11_MODULE(scalecert, m) {
              py::arg("P1"), py::arg("P2"), py::arg("I1"), py::arg("I2"), py::arg("seeds") = py::none(),
              "Vertices as lists or numpy arrays of ints, Fractions, Decimals, decimal strings or floats "
              "(a float is taken at its exact value); I1, I2 = (lo, hi); seeds = (s1, s2), default the means.")
-        .def_static("load", [](const std::string& path) { return PyScene{scalecert::Scene::load(path), nullptr}; },
+        .def_static("load", [](const py::handle& path) { return PyScene{scalecert::Scene::load(path_arg(path, "path")), nullptr}; },
                     py::arg("path"), "a scene file (JSON)")
-        .def_static("from_meshes", [](const std::string& p1, const std::string& p2, const py::handle& i1, const py::handle& i2) {
-                        return PyScene{scalecert::Scene::from_meshes(p1, p2, interval(i1, "I1"), interval(i2, "I2")), nullptr};
+        .def_static("from_meshes", [](const py::handle& p1, const py::handle& p2, const py::handle& i1, const py::handle& i2) {
+                        return PyScene{scalecert::Scene::from_meshes(path_arg(p1, "p1"), path_arg(p2, "p2"), interval(i1, "I1"), interval(i2, "I2")), nullptr};
                     }, py::arg("p1"), py::arg("p2"), py::arg("I1"), py::arg("I2"), "mesh files: .off .obj .ply .stl")
         .def("seeds", [](const PyScene& s) { return py::make_tuple(fractions(s.scene.seed(0)), fractions(s.scene.seed(1))); })
         .def("json", [](const PyScene& s) { return s.scene.json(); }, "the scene file text, every number exact")
@@ -489,14 +582,14 @@ PYBIND11_MODULE(scalecert, m) {
              "the certified partition of I1 x I2 (the certificate), as a dict")
         .def("partition_json", [](const PyScene& s) { return s.a().partition_json(); },
              "the certificate as text, byte-identical to scalecert partition")
-        .def("certify_fp", [](const PyScene& s, const py::handle& claims, bool exact_decimals, const py::handle& tolerance,
-                              bool certificate) -> py::object {
+        .def("certify_fp", [](const PyScene& s, const py::handle& claims, const py::handle& exact_decimals, const py::handle& tolerance,
+                              const py::handle& certificate) -> py::object {
                  scalecert::ClaimOptions opt;
-                 opt.exact_decimals = exact_decimals;
+                 opt.exact_decimals = flag_arg(exact_decimals, "exact_decimals");
                  opt.tolerance = rational(tolerance, "tolerance");
-                 opt.certificate = certificate;
+                 opt.certificate = flag_arg(certificate, "certificate");
                  scalecert::ClaimReport r = s.a().certify_fp(claims_text(claims), opt);
-                 if (!certificate) return json_loads(r.report);
+                 if (!opt.certificate) return json_loads(r.report);
                  return py::make_tuple(json_loads(r.report), r.certificate);
              }, py::arg("claims"), py::arg("exact_decimals") = false, py::arg("tolerance") = 0, py::arg("certificate") = false,
              "marks claims right or wrong: the text of a claims file (JSON scalecert-claims-1, or 'RHO1 RHO2 VERDICT' / "
@@ -504,12 +597,12 @@ PYBIND11_MODULE(scalecert, m) {
              "the double it is (exact_decimals reads JSON text's decimals as written); a str or a Fraction is exact. "
              "Returns the report of scalecert certify-fp --json, as a dict; with certificate=True, (the report, the "
              "judgements certificate's text for scalecert-check)")
-        .def("certify", [](const PyScene& s, const std::string& kind, const py::handle& rho1, const py::handle& rho2,
+        .def("certify", [](const PyScene& s, const py::handle& kind, const py::handle& rho1, const py::handle& rho2,
                            const py::handle& value, const py::handle& closest, const py::handle& direction, const py::handle& normal,
                            const py::handle& offset, const py::handle& point_, const py::handle& verdict, const py::handle& tolerance,
-                           bool certificate, bool fractions) {
-                 return certify_arrays(s.a(), kind, rho1, rho2, value, closest, direction, normal, offset, point_, verdict,
-                                       tolerance, certificate, fractions);
+                           const py::handle& certificate, const py::handle& fractions) {
+                 return certify_arrays(s.a(), text_arg(kind, "kind"), rho1, rho2, value, closest, direction, normal, offset, point_, verdict,
+                                       tolerance, flag_arg(certificate, "certificate"), flag_arg(fractions, "fractions"));
              }, py::arg("kind"), py::arg("rho1"), py::arg("rho2"), py::arg("value") = py::none(), py::arg("closest") = py::none(),
              py::arg("direction") = py::none(), py::arg("normal") = py::none(), py::arg("offset") = py::none(),
              py::arg("point") = py::none(), py::arg("verdict") = py::none(), py::arg("tolerance") = 0,
@@ -526,11 +619,13 @@ PYBIND11_MODULE(scalecert, m) {
                  return py::make_tuple(json_loads(g.json), g.csv);
              }, "the scene's golden data: (the golden JSON as a dict, the CSV text), as scalecert golden writes per scene")
         ;
-    m.def("golden", [](const std::string& family, int count, unsigned long long seed, const py::handle& eps, const std::string& dir) {
-              if (count < 1 || count > 100000) throw scalecert::InputError("count: 1 to 100000");
+    m.def("golden", [](const py::handle& family, const py::handle& count, const py::handle& seed, const py::handle& eps, const py::handle& dir) {
+              const std::string f = text_arg(family, "family");
+              const int n = static_cast<int>(whole_arg(count, "count", 1, 100000));
+              const unsigned long long sd = seed_arg(seed, "seed");
               const Rational e = rational(eps, "eps");
               if (sgn(e) <= 0) throw scalecert::InputError("eps must be > 0");
-              scalecert::internal::write_golden(family, count, seed, e, dir);
+              scalecert::internal::write_golden(f, n, sd, e, path_arg(dir, "dir"));
           }, py::arg("family"), py::arg("count"), py::arg("seed"), py::arg("eps"), py::arg("dir"),
           "writes COUNT scenes of FAMILY with exact answers into DIR, as scalecert golden does");
 }

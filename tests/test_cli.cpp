@@ -88,7 +88,7 @@ BOOST_AUTO_TEST_CASE(bad_inputs) {
     expect_error("NaN literal", S("e.json", scene(poly("[[NaN,0,0],[1,0,0],[0,1,0],[0,0,1]]"), poly(kCube2))), "malformed JSON");
     expect_error("NaN string", S("f.json", scene(poly("[[\"NaN\",0,0],[1,0,0],[0,1,0],[0,0,1]]"), poly(kCube2))), "P1.vertices[0][0]");
     expect_error("Inf string", S("g.json", scene(poly(kCube1), poly(kCube2), "[\"inf\", 2]")), "I1[0]");
-    expect_error("inf as binary double", S("h.json", scene(poly(kCube1), poly(kCube2), "[1e999, 2]")) + " --binary-doubles", "not finite");
+    expect_error("inf as binary double", S("h.json", scene(poly(kCube1), poly(kCube2), "[1e999, 2]")) + " --binary-doubles", "beyond the double range");
     expect_error("3 vertices", S("i.json", scene(poly("[[0,0,0],[1,0,0],[0,1,0]]"), poly(kCube2))), "fewer than 4 vertices");
     expect_error("flat", S("j.json", scene(poly("[[0,0,0],[1,0,0],[0,1,0],[1,1,0],[3,3,0]]"), poly(kCube2))), "affinely independent");
     expect_error("seed on boundary", S("k.json", scene(poly(kCube1, ", \"seed\": [1,1,2]"), poly(kCube2))), "P1.seed");
@@ -328,6 +328,32 @@ BOOST_AUTO_TEST_CASE(outputs_go_only_to_regular_files_and_directories_we_can_mak
     BOOST_TEST(g2.err.find("two scenes named 'stacked_cubes'") != std::string::npos, g2.err);
     BOOST_TEST(!fs::exists(workdir() / "never-made-2"));
     BOOST_TEST(run("golden --dir " + (workdir() / "never-made-3").string()).status == 2);
+    // A good scene and then a bad one: exit 2 with one line, and no file (nor the folder) left.
+    const fs::path bad = write("bad_second.json", "{\"P1\": ");
+    const fs::path gb = workdir() / "never-made-4";
+    Run g3 = run("golden " + cubes + " " + bad.string() + " --dir " + gb.string());
+    BOOST_TEST(g3.status == 2);
+    BOOST_TEST(std::count(g3.err.begin(), g3.err.end(), '\n') == 1);
+    BOOST_TEST(g3.err.find("malformed JSON") != std::string::npos, g3.err);
+    BOOST_TEST(!fs::exists(gb));
+    // An output that is a symbolic link: refused before anything is written, in a folder that
+    // already holds files (they stay as they were).
+    const fs::path gl = workdir() / "golden-link";
+    fs::create_directories(gl);
+    write("golden-link/keep.txt", "kept");
+    fs::create_symlink(workdir() / "victim.csv", gl / "stacked_cubes.golden.csv");
+    Run g4 = run("golden " + cubes + " --dir " + gl.string());
+    BOOST_TEST(g4.status == 2);
+    BOOST_TEST(g4.err.find("not a regular file") != std::string::npos, g4.err);
+    BOOST_TEST(!fs::exists(gl / "stacked_cubes.scene.json"));
+    BOOST_TEST(!fs::exists(gl / "stacked_cubes.golden.json"));
+    BOOST_TEST(!fs::exists(workdir() / "victim.csv"));
+    BOOST_TEST(slurp(gl / "keep.txt") == "kept");
+    // Golden's JSON names its scene by file name, however the path was spelled.
+    const fs::path gp = workdir() / "golden-spelled";
+    BOOST_TEST(run("golden " + std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/../scenes/stacked_cubes.json --dir " + gp.string()).status == 0);
+    BOOST_TEST(slurp(gp / "stacked_cubes.golden.json") == slurp(gd / "stacked_cubes.golden.json"));
+    BOOST_TEST(slurp(gd / "stacked_cubes.golden.json").find("\"scene_file\": \"stacked_cubes.json\"") != std::string::npos);
     // --scene is SCENES; --p1/--p2 a pair of meshes, its scene written as DIR/P1-P2.scene.json. The
     // tetrahedron (0,0,0), (2,0,0), (0,2,0), (0,0,2) (seed its mean (1/2, 1/2, 1/2)) and the box
     // [3,5] x [0,2]^2 (seed (4, 1, 1)): the vertex (2,0,0) reaches x = 1/2 + 3ρ1/2 and the box's
@@ -596,6 +622,16 @@ BOOST_AUTO_TEST_CASE(certify_fp_exit_status_gates_ci) {
     // A nonzero decimal that is 0 as a double was no double the program held: said so, exit 2.
     fs::path tiny = write("tiny.json", R"({"format": "scalecert-claims-1", "claims": [{"kind": "verdict", "rho1": 1e-400, "rho2": 1, "verdict": "touching"}]})");
     expect_error("underflowing claim", "certify-fp " + sc + " " + tiny.string(), "'1e-400' is 0 as a double");
+    // The same underflow in the line format and in JSON, and overflow and non-decimals (hex
+    // floats, nan) in the line format: refused in one line, as JSON refuses them.
+    expect_error("underflowing growth line", "certify-fp " + sc + " " + write("tiny.txt", "growth 1e-400\n").string(), "'1e-400' is 0 as a double");
+    fs::path tinyg = write("tinyg.json", R"({"format": "scalecert-claims-1", "claims": [{"kind": "growth_distance", "value": 1e-400}]})");
+    expect_error("underflowing growth claim", "certify-fp " + sc + " " + tinyg.string(), "'1e-400' is 0 as a double");
+    expect_error("overflowing line", "certify-fp " + sc + " " + write("huge.txt", "1e400 1 separated\n").string(), "beyond the double range");
+    expect_error("hex float line", "certify-fp " + sc + " " + write("hex.txt", "0x1.8p0 1 separated\n").string(), "'0x1.8p0' is not a number");
+    expect_error("nan line", "certify-fp " + sc + " " + write("nan.txt", "nan 1 separated\n").string(), "'nan' is not a number");
+    // The smallest double, written as its shortest decimal, is no underflow: it is that double.
+    BOOST_TEST(run("certify-fp " + sc + " " + write("denormal.txt", "growth 5e-324\n").string()).status == 1);
     // The report and the certificate under one name: refused before either is written.
     // (expect_error adds --out WORKDIR/out.json and checks that nothing was written there.)
     expect_error("certificate over the report", "certify-fp " + sc + " " + js.string() + " --certificate " + (workdir() / "out.json").string(),
@@ -872,7 +908,7 @@ BOOST_AUTO_TEST_CASE(region_of_compounds) {
         Run c = run("region " + band + " --classify " + pairs.string() + " --threads 2");
         BOOST_TEST(c.status == 0, c.err);
         BOOST_TEST(c.out == "separated\noverlapping\ntouching\nseparated\n");
-        expect_error("classify outside", "region " + band + " --classify " + write("band_far.txt", "1 2\n5 2\n").string(), "pair 2 lies outside I1 x I2");
+        expect_error("classify outside", "region " + band + " --classify " + write("band_far.txt", "1 2\n5 2\n").string(), "pair 1 (numbered from 0) lies outside I1 x I2");
         expect_error("classify with certificate", "region " + band + " --classify " + pairs.string() + " --certificate " + (workdir() / "c.json").string(),
                      "--classify writes verdicts only");
     }

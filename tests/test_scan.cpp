@@ -9,9 +9,12 @@
 #include "curve/scan.hpp"
 #include "support.hpp"
 #include "session/session.hpp"
+#include "geometry/measures.hpp"
+#include "certify/judgements.hpp"
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 
 using namespace scalecert::internal;
 using test::qc;
@@ -329,4 +332,106 @@ BOOST_AUTO_TEST_CASE(compact_scene_reader) {
              "{\"P1\": {\"vertices\": " + cube + "}, \"P2\": {\"vertices\": " + cube + "}, \"I1\": [1, 2], \"I2\": [1, 2],}",   // trailing comma
              "{\"P1\": {\"vertices\": " + cube + "}, \"P2\": {\"vertices\": " + cube + "}, \"I1\": [+1, 2], \"I2\": [1, 2]}"})  // '+'
         BOOST_TEST(!parse_scene_fast(t.data(), t.size()), t);
+}
+
+// Claims of every kind on a scene the walk takes, judged on the walk, build no hull model (the
+// Gauss-map overlay and a line per Minkowski facet: quadratic on crossed prisms) and give the
+// judgements the hull model gives. The claims are made from the hull model's exact answers (the
+// other engine): right as made, and wrong where one number is moved off them. Both engines'
+// certificates pass scalecert-check.
+BOOST_AUTO_TEST_CASE(claims_on_the_walk_build_no_hull_model) {
+    const ExactScene sc = test::crossed_prism_scene(100);
+    const HullModel hm = build_model(sc);
+    const TouchingCurve hc = build_curve(hm);
+    const auto ex = [](const Q& q) { return to_exact_string(q); };
+    const auto pt = [&](const Vec3q& v) { return Json::array({ex(v[0]), ex(v[1]), ex(v[2])}); };
+    const auto f = [&](const Q& x) { return hc.env.value(hm.lines, x); };
+    const ContactLine& last = hm.lines[hc.env.pieces.back().line];
+    const Q zero = -last.intercept / last.slope;  // where f reaches 0 (the last piece goes on as one line)
+    Json claims = Json::array();
+    std::vector<bool> expect;
+    auto add = [&](Json c, bool right) {
+        claims.push_back(std::move(c));
+        expect.push_back(right);
+    };
+    int switches = 0;
+    for (const Q& x : {qc(1, 2), qc(3, 4), Q(zero * qc(1, 2)), Q(zero * qc(9, 10))}) {
+        const Q y = f(x);
+        BOOST_TEST(sgn(y) > 0);
+        const Q over = y * qc(65, 64), under = y * qc(63, 64);
+        add({{"kind", "verdict"}, {"rho1", ex(x)}, {"rho2", ex(y)}, {"verdict", "touching"}}, true);
+        add({{"kind", "verdict"}, {"rho1", ex(x)}, {"rho2", ex(over)}, {"verdict", "separated"}}, false);
+        add({{"kind", "curve_point"}, {"rho1", ex(x)}, {"rho2", ex(y)}}, true);
+        add({{"kind", "curve_point"}, {"rho1", ex(x)}, {"rho2", ex(Q(y + qc(1, 1000)))}}, false);
+        const ExactDistance meet = exact_distance(hm, x, over);
+        BOOST_TEST(sgn(meet.squared) == 0);
+        add({{"kind", "witness_point"}, {"rho1", ex(x)}, {"rho2", ex(over)}, {"point", pt(meet.p1)}}, true);
+        add({{"kind", "witness_point"}, {"rho1", ex(x)}, {"rho2", ex(under)}, {"point", pt(meet.p1)}}, false);
+        const ExactDistance apart = exact_distance(hm, x, under);
+        BOOST_TEST(sgn(apart.squared) > 0);
+        const double d = sqrt_minus_rn(apart.squared, Q(0));
+        add({{"kind", "distance"}, {"rho1", ex(x)}, {"rho2", ex(under)}, {"value", d}, {"closest", Json::array({pt(apart.p1), pt(apart.p2)})}}, true);
+        add({{"kind", "distance"}, {"rho1", ex(x)}, {"rho2", ex(under)}, {"value", d * 1.01}}, false);
+        const ExactDepth dep = exact_penetration_depth(hm, all_facet_normals(hm), x, over);
+        add({{"kind", "penetration_depth"}, {"rho1", ex(x)}, {"rho2", ex(over)}, {"value", sqrt_minus_rn(dep.squared, Q(0))},
+             {"direction", pt(to_q(dep.direction))}}, true);
+        const Vec3z n = hm.lines[hc.env.pieces[hc.env.locate(x)].line].normal;
+        add({{"kind", "separating_plane"}, {"rho1", ex(x)}, {"rho2", ex(under)}, {"normal", pt(to_q(n))}}, true);
+        add({{"kind", "separating_plane"}, {"rho1", ex(x)}, {"rho2", ex(over)}, {"normal", pt(to_q(n))}}, false);
+    }
+    // The curve from ρ1 = 1/2 to 9/10 of the way to ρ2 = 0, as the polyline of its breaks; a switch
+    // point at every break with ρ2 > 0; and the growth distance.
+    Q lo = qc(1, 2);
+    const Q hi = zero * qc(9, 10);
+    for (size_t k = 0; k + 1 < hc.env.pieces.size(); ++k)
+        if (const Q x = *hc.env.pieces[k].to; sgn(x) > 0 && x < lo * 2) lo = std::min(lo, Q(x / 2));  // a break inside the range
+    Json verts = Json::array({Json::array({ex(lo), ex(f(lo))})});
+    for (size_t k = 0; k + 1 < hc.env.pieces.size(); ++k) {
+        const Q x = *hc.env.pieces[k].to, y = f(x);
+        if (sgn(x) <= 0 || sgn(y) <= 0) continue;
+        const std::string label = contact_at(hm, hm.lines[hc.env.pieces[k].line], hm.lines[hc.env.pieces[k + 1].line], x, y).label;
+        add({{"kind", "switch_point"}, {"rho1", ex(x)}, {"rho2", ex(y)}, {"contact", label}}, true);
+        add({{"kind", "switch_point"}, {"rho1", ex(Q(x * qc(101, 100)))}, {"rho2", ex(y)}}, false);
+        ++switches;
+        if (x > lo && x < hi) verts.push_back(Json::array({ex(x), ex(y)}));
+    }
+    verts.push_back(Json::array({ex(hi), ex(f(hi))}));
+    add({{"kind", "curve"}, {"vertices", verts}}, true);
+    Json off = verts;
+    off[1][1] = ex(Q(f(parse_exact(verts[1][0].get<std::string>())) + qc(1, 1000)));
+    add({{"kind", "curve"}, {"vertices", off}}, false);
+    add({{"kind", "growth_distance"}, {"value", ex(hc.growth.value)}}, true);
+    add({{"kind", "growth_distance"}, {"value", ex(Q(hc.growth.value * 2))}}, false);
+    BOOST_TEST(switches >= 1);
+    BOOST_TEST(verts.size() >= 3u);
+
+    const std::string doc = dump(Json{{"format", "scalecert-claims-1"}, {"claims", claims}});
+    const ClaimOptions opt{false, qc(1, 1000000), true};
+    const std::filesystem::path dir = test::scratch_dir("walk-claims");
+    std::vector<bool> right[2];
+    for (Engine e : {Engine::Scan, Engine::Hull}) {
+        Session s(sc, "crossed", e);
+        long wrong = 0;
+        std::string cert;
+        const Json rep = Json::parse(certify_fp(s.claim_models(), doc, "claims", opt, &wrong, nullptr, &cert));
+        std::vector<bool>& r = right[e == Engine::Hull];
+        for (const Json& c : rep.at("claims")) r.push_back(c.at("right").get<bool>());
+        BOOST_TEST(r == expect, (e == Engine::Hull ? "hull" : "walk"));
+        if (e == Engine::Scan) {
+            BOOST_TEST(s.walked());
+            BOOST_TEST(!s.hull_built());
+        }
+        const std::filesystem::path p = dir / (e == Engine::Hull ? "hull.json" : "walk.json");
+        std::ofstream(p) << cert;
+        BOOST_TEST(std::system((std::string(SCALECERT_CHECK_BIN) + " " + p.string() + " >/dev/null").c_str()) == 0);
+    }
+    // The same claims as lines ('RHO1 RHO2 VERDICT', 'curve', 'growth') build none either.
+    Session s(sc, "crossed", Engine::Scan);
+    long wrong = 0;
+    std::string cert;
+    const std::string lines = ex(lo) + " " + ex(f(lo)) + " touching\ncurve " + ex(lo) + " " + ex(f(lo)) + "\ngrowth " + ex(hc.growth.value) + "\n";
+    certify_fp(s.claim_models(), lines, "lines", ClaimOptions{false, Q(0), true}, &wrong, nullptr, &cert);
+    BOOST_TEST(wrong == 0);
+    BOOST_TEST(!s.hull_built());
+    std::filesystem::remove_all(dir);
 }

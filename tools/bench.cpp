@@ -266,6 +266,51 @@ void write_prism(const std::string& path, int n, long R, bool second) {
     }
 }
 
+// Every claim kind on crossed n-gon prisms (O(n^2) Minkowski facets), one whole `certify-fp
+// --certificate` process per kind, and the checker on its certificate: each claim answers from the
+// walk and the two hulls, none from the hull model (the hostile review: a witness point, a distance
+// with closest points, a curve or a switch point built it, 76 s and 2.26 GB at n = 4,800).
+std::vector<std::string> prism_claim_rows;
+void prism_claim_costs(const std::vector<int>& sizes) {
+    const auto dir = std::filesystem::temp_directory_path() / ("scalecert-bench-pc-" + std::to_string(::getpid()));
+    std::filesystem::create_directories(dir);
+    static const std::string checker = (std::filesystem::canonical("/proc/self/exe").parent_path() / "scalecert-check").string();
+    const std::string a = (dir / "a.off").string(), b = (dir / "b.off").string(), out = (dir / "cert.json").string();
+    prism_claim_rows.push_back("| crossed prisms | claim kind | certify-fp --certificate | scalecert-check |");
+    prism_claim_rows.push_back("|---|---|---|---|");
+    // Points on the curve's first stretch (it reaches rho2 = 0 inside I1 = [1/2, 2]).
+    const std::vector<std::pair<std::string, std::string>> kinds = {
+        {"verdict", R"({"kind": "verdict", "rho1": 0.75, "rho2": 0.75, "verdict": "separated"})"},
+        {"separating_plane", R"({"kind": "separating_plane", "rho1": 0.75, "rho2": 0.5, "normal": [0, 0, 1]})"},
+        {"witness_point", R"({"kind": "witness_point", "rho1": 1.5, "rho2": 1.5, "point": [12345, 200000, 3000000]})"},
+        {"distance", R"({"kind": "distance", "rho1": 0.5, "rho2": 0.5, "value": 1e6, "closest": [[0, 0, 3000000], [12345, 0, 3000000]]})"},
+        {"penetration_depth", R"({"kind": "penetration_depth", "rho1": 2, "rho2": 2, "value": 1e6, "direction": [0, 0, 1]})"},
+        {"curve_point", R"({"kind": "curve_point", "rho1": 0.6, "rho2": 0.9})"},
+        {"curve", R"({"kind": "curve", "vertices": [[0.55, 1.0], [0.6, 0.95], [0.65, 0.9]]})"},
+        {"switch_point", R"({"kind": "switch_point", "rho1": 0.6, "rho2": 0.9})"},
+        {"growth_distance", R"({"kind": "growth_distance", "value": 0.7})"},
+    };
+    for (int n : sizes) {
+        write_prism(a, n, 1000000, false);
+        write_prism(b, n, 1000000, true);
+        for (const auto& [kind, claim] : kinds) {
+            const std::string cf = (dir / "claims.json").string();
+            std::ofstream(cf) << R"({"format": "scalecert-claims-1", "claims": [)" << claim << "]}";
+            const ProcessRun r = run_scalecert({"certify-fp", "--p1", a, "--p2", b, "--i1", "1/2,2", "--i2", "1/2,2", cf, "--certificate", out,
+                                                "--out", (dir / "report.json").string(), "--tolerance", "1/1000"});
+            const auto t0 = std::chrono::steady_clock::now();
+            const int check = std::system((checker + " " + out + " >/dev/null 2>&1").c_str());
+            const double check_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+            char buf[256];
+            std::snprintf(buf, sizeof buf, "| %d-gon | %s | %.3g s, %.0f MB%s | %.3g s%s |", n, kind.c_str(), r.seconds, r.peak_kb / 1024.0,
+                          r.status == 0 || r.status == 1 ? "" : " (exit status 2 or 3!)", check_s, check ? " (REJECTED)" : "");
+            prism_claim_rows.push_back(buf);
+            std::fprintf(stderr, "  %s\n", buf);
+        }
+    }
+    std::filesystem::remove_all(dir);
+}
+
 std::vector<std::string> query_rows;
 // Whole processes from the scene files: `query` (a verdict), `query --json` (with its
 // certificate) and `partition`, on the walk where it proves the curve (the default from 2,000
@@ -570,8 +615,12 @@ int main(int argc, char** argv) {
         else if (std::strcmp(argv[i], "--queries") == 0) queries_only = true;
         else if (std::strcmp(argv[i], "--claims") == 0) claims_only = true;
         else if (std::strcmp(argv[i], "--compound") == 0) compound_only = true;
-        else {
-            std::fprintf(stderr, "usage: scalecert-bench [--quick] [--sizes] [--queries] [--claims] [--compound] [--with-slow] | --checker [--timeout S] [--keep DIR] [CHECKER ...]\n");
+        else if (std::strcmp(argv[i], "--prism-claims") == 0) {  // every claim kind on crossed prisms
+            prism_claim_costs(quick ? std::vector<int>{1200} : std::vector<int>{1200, 4800});
+            for (const std::string& r : prism_claim_rows) std::printf("%s\n", r.c_str());
+            return 0;
+        } else {
+            std::fprintf(stderr, "usage: scalecert-bench [--quick] [--sizes] [--queries] [--claims] [--compound] [--prism-claims] [--with-slow] | --checker [--timeout S] [--keep DIR] [CHECKER ...]\n");
             return 2;
         }
     }

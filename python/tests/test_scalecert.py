@@ -468,3 +468,62 @@ def test_region_certify_fp_by_hand_and_the_cli(tmp_path):
     assert r.certify_fp("1 1 separated\n1 2 overlapping\n")["wrong"] == 0
     with pytest.raises(ValueError, match="verdict lines only"):
         r.certify_fp("curve 1 2\n")
+
+
+def test_a_big_int_is_one_exact_value_through_every_entry_point():
+    # Two unit cubes along x, D = 2^53 + 1 apart (seeds their centres): at (1, 1) the distance is D,
+    # by hand. As a double, 2^53 + 1 is 2^53: a claim of the int must be judged at the int.
+    D = 2**53 + 1
+    a, b = box(0, 0, 0, 1, 1, 1), box(1 + D, 0, 0, 2 + D, 1, 1)
+    s = scalecert.Scene(a, b, (1, 2), (1, 2))
+    r = scalecert.Region([a], [b], (1, 2), (1, 2))
+    claim = [{"kind": "distance", "rho1": 1, "rho2": 1, "value": D}]
+    assert s.certify("distance", [1], [1], value=[D])["right"].tolist() == [True]
+    assert s.certify_fp(claim)["wrong"] == 0
+    assert r.certify_fp(claim)["wrong"] == 0
+    assert s.certify_fp({"format": "scalecert-claims-1", "claims": claim})["wrong"] == 0
+    assert s.certify_fp([{"kind": "distance", "rho1": 1, "rho2": 1, "value": np.int64(2**62)}])["wrong"] == 1
+    # The double 2^53 is 1 short of D: wrong through every entry point.
+    assert s.certify("distance", [1], [1], value=[float(D)])["right"].tolist() == [False]
+    assert s.certify_fp([{"kind": "distance", "rho1": 1, "rho2": 1, "value": float(D)}])["wrong"] == 1
+    assert r.certify_fp([{"kind": "distance", "rho1": 1, "rho2": 1, "value": float(D)}])["wrong"] == 1
+
+
+def test_every_bad_argument_is_an_input_error(tmp_path):
+    s, r = stacked(), scalecert.Region([box(0, 0, 0, 2, 2, 2)], [box(0, 0, 3, 2, 2, 5)], (F(1, 2), 2), (F(1, 2), 2))
+    bad = [
+        lambda: s.classify([2**2000], [1.0]),           # too large for a double (was OverflowError)
+        lambda: r.classify([2**2000], [1.0]),
+        lambda: s.classify([2**53 + 1], [1]),            # an int that is no double
+        lambda: r.classify(np.array([2**53 + 1]), np.array([1])),
+        lambda: s.classify([F(1, 3)], [1.0]),            # a Fraction that is no double
+        lambda: scalecert.golden("random", 2**70, 1, "1/8", str(tmp_path)),  # (was TypeError)
+        lambda: scalecert.golden("random", "3", 1, "1/8", str(tmp_path)),
+        lambda: scalecert.golden("random", 1, -1, "1/8", str(tmp_path)),
+        lambda: scalecert.golden("random", 1, 2**64, "1/8", str(tmp_path)),
+        lambda: scalecert.golden(5, 1, 1, "1/8", str(tmp_path)),
+        lambda: scalecert.golden("random", True, 1, "1/8", str(tmp_path)),
+        lambda: s.certify(5, [1], [1], verdict="separated"),
+        lambda: s.certify("verdict", [1], [1], verdict="separated", certificate="yes"),
+        lambda: s.certify_fp("1 1 separated\n", exact_decimals=1),
+        lambda: r.certify_fp("1 1 separated\n", certificate=None),
+        lambda: scalecert.Scene.load(5),
+        lambda: scalecert.Region.load(None),
+        lambda: scalecert.Scene.from_meshes(1, 2, (1, 2), (1, 2)),
+        lambda: s.certify_fp([{"kind": "verdict", "rho1": 1, "rho2": 1, "verdict": "separated"}] + [[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[1]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]),
+    ]
+    for i, f in enumerate(bad):
+        with pytest.raises(scalecert.InputError) as e:
+            f()
+        assert "\n" not in str(e.value), i
+    assert not any(tmp_path.iterdir())
+    # A path may be an os.PathLike.
+    assert scalecert.Scene.load(SRC / "certificates" / "scenes" / "stacked_cubes.json").curve()["growth_distance"] == F(3, 2)
+
+
+def test_pairs_are_numbered_from_0_in_every_classify():
+    s, r = stacked(), scalecert.Region([box(0, 0, 0, 2, 2, 2)], [box(0, 0, 3, 2, 2, 5)], (F(1, 2), 2), (F(1, 2), 2))
+    with pytest.raises(scalecert.InputError, match=r"pair 1 \(numbered from 0\)"):
+        s.classify([1.0, -1.0], [1.0, 1.0])
+    with pytest.raises(scalecert.InputError, match=r"pair 1 \(numbered from 0\)"):
+        r.classify([1.0, 9.0], [1.0, 1.0])

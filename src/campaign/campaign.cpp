@@ -249,9 +249,9 @@ std::string run_shard(const CampaignArgs& a, const Shard& s) {
         j["inputs"] = reading([&] { sc = load_scene(p, a.opt); });
         Json files = Json::array();
         for (const auto& [name, text] : golden_files(golden_stem(p), sc, [&](Json& g) {
-                 // (A scene inside the output directory, as golden --p1/--p2 writes it: named
-                 // relative to it, so that the files do not depend on where they were written.)
-                 g["scene_file"] = p.rfind(a.dir + "/", 0) == 0 ? p.substr(a.dir.size() + 1) : p;
+                 // The scene's file name, not the path as typed: the same bytes however the path
+                 // was spelled, and wherever the files were written.
+                 g["scene_file"] = p.substr(p.find_last_of('/') + 1);
              })) {
             write_file_atomically(a.dir + "/" + name, text);
             files.push_back(Json::array({name, sha256_hex(text)}));
@@ -338,7 +338,15 @@ long run_campaign(const CampaignArgs& a) {
 
 void make_output_dir(const std::string& dir) {
     std::error_code ec;
+    // The folders it creates, outermost first, for the output journal (files.hpp).
+    std::vector<std::string> created;
+    for (std::filesystem::path p = std::filesystem::path(dir).lexically_normal(); !p.empty() && !std::filesystem::exists(p, ec);
+         p = p.parent_path()) {
+        created.insert(created.begin(), p.string());
+        if (p == p.parent_path()) break;
+    }
     std::filesystem::create_directories(dir, ec);
+    for (const std::string& c : created) journal_dir(c);
     if (ec || !std::filesystem::is_directory(dir))
         throw InputError(dir + ": cannot create the output directory (" + (ec ? ec.message() : "not a directory") + ")");
 }

@@ -81,9 +81,6 @@ protected:
         } catch (const InputError& e) {
             fail(key, e.what());
         }
-        // A nonzero decimal that is 0 as a double (1e-400) was never a double the program held.
-        if (as_double && sgn(q) == 0 && n.text.find_first_of("123456789") < n.text.find_first_of("eE"))
-            fail(key, quoted(n.text) + " is 0 as a double (it underflows): write it as a string, \"" + n.text + "\", for its exact value");
         return q;
     }
     Q field(const JNode& o, const char* key) const { return number(need(o, key), key); }
@@ -169,15 +166,18 @@ public:
 
 private:
     const ClaimModels& models_;
-    const HullModel& m() const { return models_.model(); }  // the hull model: built on first use
-    const TouchingCurve& c() const { return models_.curve(); }
+    // The two exact polyhedra, with no contact line: membership, and the measures' fallbacks.
+    const Model& h() const { return models_.hulls(); }
+    using Curve = ClaimModels::Curve;
+    // The whole curve on the hull model (within the limits: Session::claim_hull).
+    Curve whole() const { return {&models_.model(), &models_.curve(), Q(0), std::nullopt}; }
     struct ExactSwitch { Q rho1, rho2; std::string label; };
-    std::optional<std::vector<ExactSwitch>> switches_;  // the exact switch points (built on first use)
+    std::optional<std::vector<ExactSwitch>> switches_;  // the whole curve's switch points (built on first use)
 
     // Proofs that x is (or is not) in P1(ρ1) and y in P2(ρ2), agreeing with the judgements in1, in2.
     Json membership(const Q& r1, const Q& r2, const Vec3q& x, const Vec3q& y, bool in1, bool in2) const {
         bool a = false, b = false;
-        Json j{{"P1", membership_proof(m(), 0, r1, x, &a)}, {"P2", membership_proof(m(), 1, r2, y, &b)}};
+        Json j{{"P1", membership_proof(h(), 0, r1, x, &a)}, {"P2", membership_proof(h(), 1, r2, y, &b)}};
         if (a != in1 || b != in2) throw std::logic_error("certify-fp: a membership proof disagrees with its judgement");
         return j;
     }
@@ -220,22 +220,30 @@ private:
         return close(g, exact);
     }
 
-    // The exact switch points: every break of the exact curve ρ2 = f(ρ1) over ρ1 > 0 where
-    // ρ2 > 0, inside I1 or not, with its contact (built on first use).
-    const std::vector<ExactSwitch>& exact_switches() {
-        if (switches_) return *switches_;
-        switches_.emplace();
-        const auto& P = c().env.pieces;
+    // The exact switch points where V proves the curve: every break of ρ2 = f(ρ1) at ρ1 > 0
+    // with ρ2 > 0, inside I1 or not, with its contact (on the whole curve: built once).
+    std::vector<ExactSwitch> switches_of(const Curve& V) const {
+        std::vector<ExactSwitch> out;
+        const auto& P = V.curve->env.pieces;
         for (size_t k = 0; k + 1 < P.size(); ++k) {
             const Q& x = *P[k].to;
-            const ContactLine &L = m().lines[P[k].line], &R = m().lines[P[k + 1].line];
+            const ContactLine &L = V.model->lines[P[k].line], &R = V.model->lines[P[k + 1].line];
             const Q y = L.at(x);
-            if (sgn(x) <= 0) continue;
+            if (sgn(x) <= 0 || !V.proves(x)) continue;
             if (sgn(y) <= 0) break;  // f descends: nothing touches from here on
-            switches_->push_back({x, y, contact_at(m(), L, R, x, y).label});
+            out.push_back({x, y, contact_at(*V.model, L, R, x, y).label});
         }
+        return out;
+    }
+    const std::vector<ExactSwitch>& exact_switches(const Curve& V) {
+        if (!V.whole()) {
+            walk_switches_ = switches_of(V);
+            return walk_switches_;
+        }
+        if (!switches_) switches_ = switches_of(V);
         return *switches_;
     }
+    std::vector<ExactSwitch> walk_switches_;
     // A claimed scaling: a number > 0 (P(ρ) is a point or reflected otherwise).
     Q scaling(const JNode& n, const std::string& key) const {
         const Q q = number(n, key);
@@ -252,16 +260,28 @@ private:
         const auto r12 = pair_at(j);
         const Q &r1 = r12.first, &r2 = r12.second;  // (not a structured binding: lambdas below capture them)
         const std::optional<std::string> lab = label(j);
-        const auto& exs = exact_switches();
+        // Every ρ1 within the tolerance of the claim's (|x − ρ1| <= tol·x) lies in [lo, hi]: the
+        // walk proves the curve over a window holding it; a tolerance of 1 or more needs the whole
+        // curve (on to where it reaches ρ2 = 0, past every switch point).
+        const Q& tol = opt_.tolerance;
+        const Q lo = r1 / (1 + tol);
+        const Curve V = tol < 1 ? models_.curve_around(lo, Q(r1 / (1 - tol))) : whole();
+        const auto& exs = exact_switches(V);
         put_exact(o, "rho1", r1);
         put_exact(o, "rho2", r2);
         Json claim_json{{"kind", "switch_point"}, {"rho1", ex(r1)}, {"rho2", ex(r2)}};
         if (lab) claim_json["contact"] = *lab;
         if (exs.empty()) {
             o["nearest"] = nullptr;
-            text = "switch point (" + num(r1) + ", " + num(r2) + "): the exact curve has no switch point at rho1, rho2 > 0";
-            // The proof: the whole curve from ρ1 = 0 to past where it reaches ρ2 = 0.
-            if (prove_) proof.emplace(std::move(claim_json), curve_proof(m(), c(), Q(0), zero_crossing()));
+            if (V.whole()) {
+                text = "switch point (" + num(r1) + ", " + num(r2) + "): the exact curve has no switch point at rho1, rho2 > 0";
+                // The proof: the whole curve from ρ1 = 0 to past where it reaches ρ2 = 0.
+                if (prove_) proof.emplace(std::move(claim_json), curve_proof(*V.model, *V.curve, Q(0), zero_crossing(V)));
+            } else {
+                text = "switch point (" + num(r1) + ", " + num(r2) + "): the exact curve has no switch point from rho1 = " + num(V.lo_proved) +
+                       (V.hi_proved ? " to " + num(*V.hi_proved) : std::string(" on")) + " (the range the walk proved)";
+                if (prove_) proof.emplace(std::move(claim_json), curve_proof(*V.model, *V.curve, lo, Q(r1 / (1 - tol))));
+            }
             return false;
         }
         // Right when some exact switch point matches (both coordinates within the tolerance, and
@@ -289,12 +309,10 @@ private:
         o["rho1_error"] = e1;
         o["rho2_error"] = e2;
         // The proof: the curve over a window holding every ρ1 within the tolerance of the claim's
-        // (|x − ρ1| <= tol·x: from ρ1/(1 + tol) to ρ1/(1 − tol), or on to where the curve reaches
-        // ρ2 = 0, past every switch point, when tol >= 1).
+        // (from ρ1/(1 + tol) to ρ1/(1 − tol), or on to where the curve reaches ρ2 = 0 when tol >= 1).
         if (prove_) {
-            const Q& tol = opt_.tolerance;
-            const Q lo = r1 / (1 + tol), hi = tol < 1 ? Q(r1 / (1 - tol)) : std::max(r1, zero_crossing());
-            proof.emplace(std::move(claim_json), curve_proof(m(), c(), lo, hi));
+            const Q hi = tol < 1 ? Q(r1 / (1 - tol)) : std::max(r1, zero_crossing(V));
+            proof.emplace(std::move(claim_json), curve_proof(*V.model, *V.curve, lo, hi));
         }
         const bool label_right = !lab || *lab == best->label;
         o["contact_right"] = lab ? Json(label_right) : Json(nullptr);
@@ -314,7 +332,10 @@ private:
         put_exact(o, "curve_rho2", f);
         errors(o, r2, f);
         text = "curve point (" + num(r1) + ", " + num(r2) + "): exact curve at rho1 is " + num(f);
-        if (prove_) proof.emplace(Json{{"kind", "curve_point"}, {"rho1", ex(r1)}, {"rho2", ex(r2)}}, curve_proof(m(), c(), r1, r1));
+        if (prove_) {
+            const Curve V = models_.curve_around(r1, r1);
+            proof.emplace(Json{{"kind", "curve_point"}, {"rho1", ex(r1)}, {"rho2", ex(r2)}}, curve_proof(*V.model, *V.curve, r1, r1));
+        }
         return sgn(f) > 0 && close(r2, f);
     }
 
@@ -325,7 +346,7 @@ private:
         try {
             return f(models_.points());
         } catch (const PointSetsCannot&) {
-            return f(HullPoints(m()));
+            return f(HullPoints(h()));
         }
     }
     // The exact distance, proved from the points' supports; CGAL's QP over every hull vertex when
@@ -333,26 +354,27 @@ private:
     ExactDistance exact_distance_of(const Q& r1, const Q& r2) {
         if (std::optional<ProvedDistance> pd = on_points([&](const PointSets& S) { return proved_distance(S, r1, r2); })) return pd->d;
         ++fallbacks_.distance;
-        return exact_distance(m(), r1, r2);
+        return exact_distance(h(), r1, r2);
     }
     // The depth with what proves it (measured_depth); when the distance's proof does not close,
     // from CGAL's exact distance and the EPA on the hull's vertices (counted).
     MeasuredDepth depth_of(const Q& r1, const Q& r2) {
         if (std::optional<MeasuredDepth> d = on_points([&](const PointSets& S) { return measured_depth(S, r1, r2); })) return *d;
         ++fallbacks_.depth;
-        return depth_from_distance(HullPoints(m()), exact_distance(m(), r1, r2), r1, r2);
+        return depth_from_distance(HullPoints(h()), exact_distance(h(), r1, r2), r1, r2);
     }
 
     // Where the curve reaches ρ2 = 0: on its last piece (it goes on as one line from there).
-    Q zero_crossing() const {
-        const ContactLine& L = m().lines[c().env.pieces.back().line];
+    static Q zero_crossing(const Curve& V) {
+        const ContactLine& L = V.model->lines[V.curve->env.pieces.back().line];
         return std::max(Q(0), Q(-L.intercept / L.slope));
     }
 
-    // ρ1 with f(ρ1) = y (f is strictly decreasing), or none outside f's range over ρ1 ≥ 0.
-    std::optional<Q> inverse(const Q& y) const {
-        for (const EnvPiece& p : c().env.pieces) {
-            const ContactLine& L = m().lines[p.line];
+    // ρ1 with f(ρ1) = y (f is strictly decreasing), or none outside f's range over ρ1 ≥ 0; f as
+    // V has it (the exact curve where V proves it).
+    static std::optional<Q> inverse(const Curve& V, const Q& y) {
+        for (const EnvPiece& p : V.curve->env.pieces) {
+            const ContactLine& L = V.model->lines[p.line];
             const Q x = (y - L.intercept) / L.slope;
             if (x >= p.from && (!p.to || x <= *p.to)) return x;
         }
@@ -429,15 +451,35 @@ private:
             for (const Claimed& p : claimed_switches) cs.push_back(Json::array({ex(p.x), ex(p.y)}));
             claim_json["switch_points"] = std::move(cs);
         }
-        if (prove_) proof.emplace(std::move(claim_json), curve_proof(m(), c(), lo, hi));
+        // The curve proved over a window around [lo, hi], and around every ρ1 where f takes a
+        // claimed end's ρ2 (the horizontal error): walked wider until it is, a few rounds, else
+        // the whole curve.
+        Curve V = models_.curve_around(lo, hi);
+        for (int round = 0; !V.whole(); ++round) {
+            Q need_lo = lo, need_hi = hi;
+            bool fits = true, whole_needed = false;
+            for (const Seg& s : segs)
+                for (const Q& y : {s.y0, s.y1}) {
+                    const std::optional<Q> x = inverse(V, y);
+                    if (x && V.proves(*x)) continue;
+                    fits = false;
+                    if (!x || sgn(*x) <= 0) whole_needed = true;  // at or before ρ1 = 0 on the walked lines
+                    else need_lo = std::min(need_lo, *x), need_hi = std::max(need_hi, *x);
+                }
+            if (fits) break;
+            V = whole_needed || round == 8 ? whole() : models_.curve_around(need_lo, need_hi);
+        }
+        const TouchingCurve& cv = *V.curve;
+        const Model& mv = *V.model;
+        if (prove_) proof.emplace(std::move(claim_json), curve_proof(mv, cv, lo, hi));
         // Vertical error: on a stretch where the claim and f are both linear, so is their
         // difference (and so are the tolerance's bounds), so the claimed ends and the exact
         // breaks inside each segment suffice.
-        const auto& exs = exact_switches();
+        const auto& exs = exact_switches(V);
         Q max_v = 0, max_h = 0, worst_v_at = lo;
         bool within = true;
         auto check_v = [&](const Q& x, const Q& y) {
-            const Q f = c().env.value(m().lines, x);
+            const Q f = cv.env.value(mv.lines, x);
             const Q e = abs(Q(y - f));
             if (e > max_v) max_v = e, worst_v_at = x;
             within = within && close(y, f);
@@ -445,13 +487,13 @@ private:
         for (const Seg& s : segs) {
             check_v(s.x0, s.y0);
             check_v(s.x1, s.y1);
-            for (const EnvPiece& p : c().env.pieces)
+            for (const EnvPiece& p : cv.env.pieces)
                 if (p.to && *p.to > s.x0 && *p.to < s.x1) check_v(*p.to, s.y0 + (s.y1 - s.y0) * (*p.to - s.x0) / (s.x1 - s.x0));
             for (const auto& [x, y] : {std::pair{s.x0, s.y0}, std::pair{s.x1, s.y1}})
-                if (auto xi = inverse(y)) max_h = std::max(max_h, Q(abs(Q(*xi - x))));
+                if (auto xi = inverse(V, y)) max_h = std::max(max_h, Q(abs(Q(*xi - x))));
         }
         // Nothing touches where f ≤ 0; f descends, so it is > 0 on the whole range iff at hi.
-        const bool exact_positive = sgn(c().env.value(m().lines, hi)) > 0;
+        const bool exact_positive = sgn(cv.env.value(mv.lines, hi)) > 0;
         o["exact_rho2_positive_over_range"] = exact_positive;
         put_exact(o, "max_vertical_error", max_v);
         put_exact(o, "max_vertical_error_at_rho1", worst_v_at);
@@ -507,7 +549,7 @@ private:
             if (!s.label) continue;
             const Q mid = (s.x0 + s.x1) / 2;
             // At an exact switch point the contact is the switch point's.
-            std::string e = exact_positive ? piece_contact(m(), c().env.pieces[c().env.locate(mid)]).label : std::string("none");
+            std::string e = exact_positive ? piece_contact(mv, cv.env.pieces[cv.env.locate(mid)]).label : std::string("none");
             for (const ExactSwitch& sw : exs)
                 if (sw.rho1 == mid) e = sw.label;
             if (*s.label != e) {
@@ -561,7 +603,7 @@ private:
         const auto r12 = pair_at(j);
         const Q &r1 = r12.first, &r2 = r12.second;  // (not a structured binding: lambdas below capture them)
         const Vec3q x = point(need(j, "point"), "point");
-        const bool in1 = contains(m(), 0, r1, x), in2 = contains(m(), 1, r2, x);
+        const bool in1 = contains(h(), 0, r1, x), in2 = contains(h(), 1, r2, x);
         o["in_P1"] = in1;
         o["in_P2"] = in2;
         o["exact_verdict"] = verdict_name(models_.verdict(r1, r2));
@@ -594,7 +636,7 @@ private:
             const Vec3q p = point(cl->items[0], "closest"), q = point(cl->items[1], "closest");
             const Vec3q pq = sub(q, p);
             const Q sq = dot(pq, pq);
-            const bool in1 = contains(m(), 0, r1, p), in2 = contains(m(), 1, r2, q);
+            const bool in1 = contains(h(), 0, r1, p), in2 = contains(h(), 1, r2, q);
             o["closest_in_P1"] = in1;
             o["closest_in_P2"] = in2;
             put_exact(o, "closest_squared_distance", sq);
@@ -815,11 +857,12 @@ std::string report(Json arr, const std::string& text, long n, long bad, bool jso
     return text + "claims: " + std::to_string(n) + ", right: " + std::to_string(n - bad) + ", wrong: " + std::to_string(bad) + "\n";
 }
 
-// A number of the line format: the double strtod reads (a floating-point program's output means
-// the double it held), or with exact_decimals the decimal as written; a fraction p/q is exact.
+// A number of the line format, read as a JSON claim's number is (parse_number): the double a
+// decimal names (a floating-point program's output means the double it held), or with
+// exact_decimals the decimal as written; a fraction p/q is exact.
 Q read_number(const std::string& t, bool exact_decimals, const std::string& where) {
     try {
-        return parse_number(t, !exact_decimals && t.find('/') == std::string::npos);
+        return parse_number(t, !exact_decimals);
     } catch (const InputError& e) {
         throw InputError(where + ": " + e.what());
     }
@@ -862,8 +905,10 @@ std::string certify_claim_lines(const ClaimModels& models, const std::string& cl
             put_exact(o, "curve_rho2", f);
             put_exact(o, "rho2_minus_curve", r2 - f);
             detail = "curve point (" + w[1] + ", " + w[2] + "): exact curve at rho1 is " + num(f, 17) + ", off by " + num(r2 - f, 17);
-            if (certificate)
-                proof.emplace(Json{{"kind", "curve_point"}, {"rho1", ex(r1)}, {"rho2", ex(r2)}}, curve_proof(models.model(), models.curve(), r1, r1));
+            if (certificate) {
+                const ClaimModels::Curve V = models.curve_around(r1, r1);
+                proof.emplace(Json{{"kind", "curve_point"}, {"rho1", ex(r1)}, {"rho2", ex(r2)}}, curve_proof(*V.model, *V.curve, r1, r1));
+            }
         } else if (w[0] == "growth" && w.size() == 2) {
             Q g = read_number(w[1], exact_decimals, where);
             if (sgn(g) < 0) throw InputError(where + ": a growth distance is >= 0 (0 when the seeds coincide)");
@@ -920,7 +965,9 @@ ClaimModels ClaimModels::of(const HullModel& m, const TouchingCurve& c) {
             [points]() -> const PointSets& { return *points; },
             [&m]() -> const Model& { return m; },
             [&m, &c](const Q& r1, const Q& r2) { return std::pair<const Model*, QueryAnswer>{&m, query(m, c, r1, r2, true)}; },
-            [&m, &c] { return scalecert::internal::growth_proof(m, c); }};
+            [&m, &c] { return scalecert::internal::growth_proof(m, c); },
+            [&m]() -> const Model& { return m; },
+            [&m, &c](const Q&, const Q&) { return ClaimModels::Curve{&m, &c, Q(0), std::nullopt}; }};
 }
 
 namespace {

@@ -6,6 +6,7 @@
 #include "geometry/point_sets.hpp"
 
 #include <functional>
+#include <optional>
 #include <string>
 
 namespace scalecert::internal {
@@ -42,6 +43,21 @@ struct ClaimModels {
     std::function<std::pair<const Model*, QueryAnswer>(const Q&, const Q&)> certified_query;
     // The growth distance's proof (judgements.hpp, growth_proof), on the model that proves it.
     std::function<Json()> growth_proof;
+    // The two exact polyhedra with no contact line (build_hulls, or the hull model's): membership
+    // of witness and closest points, and the exact distance's fallback.
+    std::function<const Model&()> hulls;
+    // The curve proved over curve_proof's window around [lo, hi] (Session::curve_around): the
+    // model, the curve, and the ρ1 range where that curve is the exact one (lo_proved = 0 and no
+    // hi_proved on the hull model).
+    struct Curve {
+        const Model* model;
+        const TouchingCurve* curve;
+        Q lo_proved;
+        std::optional<Q> hi_proved;
+        bool whole() const { return sgn(lo_proved) == 0 && !hi_proved; }
+        bool proves(const Q& x) const { return x >= lo_proved && (!hi_proved || x <= *hi_proved); }
+    };
+    std::function<Curve(const Q&, const Q&)> curve_around;
     static ClaimModels of(const HullModel& m, const TouchingCurve& c);
 };
 // (*count, when given: the number of claims. *certificate, when given: the judgements

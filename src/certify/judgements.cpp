@@ -39,7 +39,7 @@ std::vector<std::pair<int, Q>> face_weights(const Polyhedron& P, const Face& f, 
 
 }  // namespace
 
-Json membership_proof(const HullModel& m, int i, const Q& rho, const Vec3q& x, bool* inside) {
+Json membership_proof(const Model& m, int i, const Q& rho, const Vec3q& x, bool* inside) {
     return membership_proof(m.P[i], m.s[i], rho, x, inside);
 }
 
@@ -55,7 +55,7 @@ Json verdict_proof(const Model& m, const QueryAnswer& r) {
     return Json{{"verdict", verdict_name(r.verdict)}, {"certificate", query_certificate_json(m, r)}};
 }
 
-Json distance_proof(const HullModel* m, const ExactDistance& e, const Q& rho1, const Q& rho2) {
+Json distance_proof(const Model* m, const ExactDistance& e, const Q& rho1, const Q& rho2) {
     Json j;
     j["squared"] = to_exact_string(e.squared);
     if (!e.w1.empty() && !e.w2.empty()) {
@@ -72,7 +72,7 @@ Json distance_proof(const HullModel* m, const ExactDistance& e, const Q& rho1, c
     return j;
 }
 
-Json depth_proof(const HullModel* m, const MeasuredDepth& d, const Q& rho1, const Q& rho2) {
+Json depth_proof(const Model* m, const MeasuredDepth& d, const Q& rho1, const Q& rho2) {
     if (d.state == MeasuredDepth::Separated) return Json{{"separated", normal_json(d.normal)}};
     if (d.state == MeasuredDepth::Touching) {
         const Json common = distance_proof(m, d.distance, rho1, rho2);
@@ -113,7 +113,7 @@ Json growth_proof(const Model& m, const TouchingCurve& c) {
     return j;
 }
 
-Json curve_proof(const HullModel& m, const TouchingCurve& c, const Q& lo_need, const Q& hi_need) {
+std::pair<Q, Q> curve_proof_window(const TouchingCurve& c, const Q& lo_need, const Q& hi_need) {
     // The envelope's breaks (every one at ρ1, ρ2 > 0: it goes on as one line from ρ2 = 0).
     std::vector<Q> breaks;
     for (const EnvPiece& p : c.env.pieces)
@@ -125,6 +125,11 @@ Json curve_proof(const HullModel& m, const TouchingCurve& c, const Q& lo_need, c
     }
     auto it = std::upper_bound(breaks.begin(), breaks.end(), hi_need);  // first break > hi_need
     const Q b = it == breaks.end() ? Q(hi_need + 1) : Q((*it + hi_need) / 2);
+    return {a, b};
+}
+
+Json curve_proof(const Model& m, const TouchingCurve& c, const Q& lo_need, const Q& hi_need) {
+    const auto [a, b] = curve_proof_window(c, lo_need, hi_need);
     TouchingCurve w;
     w.env = c.env;
     restrict_curve(m, w, a, b);

@@ -10,7 +10,7 @@ namespace scalecert::internal {
 // Is x in P_i(ρ)? With its proof: {"in": weights} (y = s + (x − s)/ρ as a convex combination of
 // vertices: a face's fan triangle when y is on the boundary, else interior weights), or
 // {"out": normal} (the outward normal of a face of P_i whose plane y lies strictly beyond).
-Json membership_proof(const HullModel& m, int i, const Q& rho, const Vec3q& x, bool* inside);
+Json membership_proof(const Model& m, int i, const Q& rho, const Vec3q& x, bool* inside);
 // The same for a polyhedron P scaled by ρ about `seed` (a compound's part).
 Json membership_proof(const Polyhedron& P, const Vec3q& seed, const Q& rho, const Vec3q& x, bool* inside);
 
@@ -21,7 +21,7 @@ Json verdict_proof(const Model& m, const QueryAnswer& r);
 // {"squared", "P1", "P2"}. With u = q − p: E = |u|², and for E > 0 the slab — u·x ≤ u·p over
 // P1(ρ1), u·y ≥ u·q over P2(ρ2) — proves that no pair is closer. The weights are the distance's
 // own (proved_distance) or, without them, found on the hull model m (which must then be given).
-Json distance_proof(const HullModel* m, const ExactDistance& e, const Q& rho1, const Q& rho2);
+Json distance_proof(const Model* m, const ExactDistance& e, const Q& rho1, const Q& rho2);
 
 // The proof of a measured depth (measures.hpp, measured_depth):
 // - separated: {"separated": normal}, a normal whose plane separates strictly;
@@ -32,7 +32,7 @@ Json distance_proof(const HullModel* m, const ExactDistance& e, const Q& rho1, c
 //   surface whose vertices (each [i, j]: point i of P1(ρ1) minus point j of P2(ρ2)) lie in the
 //   Minkowski difference and whose every triangle's plane lies at least √E from the origin. It is
 //   the final polytope of an exact EPA (expanding polytope) run on support points.
-Json depth_proof(const HullModel* m, const MeasuredDepth& d, const Q& rho1, const Q& rho2);
+Json depth_proof(const Model* m, const MeasuredDepth& d, const Q& rho1, const Q& rho2);
 
 // The growth distance ρ*: {"value"} when the seeds coincide (ρ* = 0); else {"value", "normal",
 // "witness"}: n·d = ρ*(h1(n) + h2(n)), so (ρ, ρ) is separated for every ρ < ρ*, and a common point
@@ -44,7 +44,10 @@ Json growth_proof(const Model& m, const TouchingCurve& c);
 // curve beyond (lo_need/2 and hi_need + 1 where there is none). Its pieces, switch points and
 // ends with their witnesses (curve_proof_json) prove the curve and all its switch points strictly
 // inside the window: the proof of curve, switch-point and curve-point claims.
-Json curve_proof(const HullModel& m, const TouchingCurve& c, const Q& lo_need, const Q& hi_need);
+Json curve_proof(const Model& m, const TouchingCurve& c, const Q& lo_need, const Q& hi_need);
+// That window [a, b], from the curve's breaks. On a walked model the curve must be proved over it
+// (Session::curve_around walks until it is).
+std::pair<Q, Q> curve_proof_window(const TouchingCurve& c, const Q& lo_need, const Q& hi_need);
 
 // The document: {"format", "kind": "judgements", "tolerance", "judgements", "seed_interior",
 // "scene"}, as text.

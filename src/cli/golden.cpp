@@ -6,6 +6,7 @@
 #include "io/files.hpp"
 
 #include <iostream>
+#include <sys/stat.h>
 #include <optional>
 
 namespace scalecert::cli {
@@ -49,6 +50,18 @@ Command add_golden(CLI::App& app) {
                     a->scenes.push_back(path);
                 }
                 validate(*a);  // an unknown family is refused before anything is created
+                // Every scene read, and every output name checked, before anything is written (and
+                // main's output journal removes what was written if the run fails later).
+                for (const std::string& p : a->scenes) {
+                    if (mesh_scene && p == mesh_scene->first) continue;  // read above, written below
+                    load_scene(p, a->opt);
+                    for (const char* ext : {".scene.json", ".golden.json", ".golden.csv"}) {
+                        const std::string out = a->dir + "/" + golden_stem(p) + ext;
+                        struct stat st {};
+                        if (::lstat(out.c_str(), &st) == 0 && !S_ISREG(st.st_mode))
+                            throw InputError(out + ": exists and is not a regular file (refused as an output)");
+                    }
+                }
                 make_output_dir(a->dir);
                 if (mesh_scene) write_file_atomically(mesh_scene->first, mesh_scene->second);
                 run_campaign(*a);

@@ -1,6 +1,8 @@
 // The scalecert command: each subcommand is a handler in its own file (common.hpp lists them).
 #include "common.hpp"
 
+#include "io/files.hpp"
+
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
@@ -76,17 +78,27 @@ int main(int argc, char** argv) {
         std::cerr << "scalecert: error: " << one_line(e.what()) << " (see scalecert --help)\n";
         return 2;
     }
+    // Exit 2 (or 3) leaves no output file: what the command wrote before it failed is removed, and
+    // what it replaced put back (files.hpp, the output journal).
+    internal::begin_output_journal();
     try {
         for (const cli::Command& c : commands)
-            if (*c.app) return c.run();
+            if (*c.app) {
+                const int status = c.run();
+                internal::commit_outputs();
+                return status;
+            }
         return 2;  // unreachable: CLI11 requires one subcommand
     } catch (const InputError& e) {
+        internal::undo_outputs();
         std::cerr << "scalecert: error: " << one_line(e.what()) << "\n";
         return 2;
     } catch (const std::bad_alloc&) {
+        internal::undo_outputs();
         std::cerr << "scalecert: error: out of memory\n";
         return 2;
     } catch (const std::exception& e) {
+        internal::undo_outputs();
         std::cerr << "scalecert: internal error: " << one_line(e.what()) << "\n";
         return 3;
     }

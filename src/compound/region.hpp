@@ -14,6 +14,7 @@
 #include "geometry/polygon2.hpp"
 #include "geometry/polyhedron.hpp"
 #include "io/scene.hpp"
+#include "numeric/limits.hpp"
 
 #include <optional>
 #include <cstdint>
@@ -103,7 +104,7 @@ std::array<std::array<Q, 2>, 3> bounding_box(const Polyhedron& P);
 // zero-width range (the region is a set of the plane) and for a flat part.
 constexpr std::size_t kMaxPartPairs = 10000000;     // part pairs in all (a byte each, a box test each)
 constexpr std::size_t kMaxBuiltPairs = 20000;       // pairs whose swept boxes meet (each built exactly)
-constexpr double kMaxEdgePairWork = 2e7;            // over the built pairs, Σ edges(A) × edges(B)
+constexpr double kMaxEdgePairWork = kMaxEdgePairs;            // over the built pairs, Σ edges(A) × edges(B)
 // The union (`region`) is formed only when asked and of at most kMaxUnionPolygons polygons with
 // area: its cost grows with the crossings of their boundaries, up to the square of their edges
 // (the second hostile review: 1,545 crossing strips took 47 s and 1.7 GB, and more ran out of

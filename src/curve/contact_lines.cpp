@@ -277,10 +277,9 @@ void set_seeds_in_integers(Model& m) {
     m.dz = over_common_denominator(m.d, m.dden);
 }
 
-HullModel build_model(const ExactScene& scene) {
+Model build_hulls(const ExactScene& scene) {
     check_scene(scene, "scene");  // a scene built in code gets the reader's checks too
-    StageClock clock;
-    HullModel m;
+    Model m;
     m.scene = scene;
     const char* names[2] = {"P1", "P2"};
     for (int i = 0; i < 2; ++i) {
@@ -291,8 +290,14 @@ HullModel build_model(const ExactScene& scene) {
                              (scene.P[i].seed_given ? "" : " (the default seed is the mean of the vertices)"));
     }
     set_seeds_in_integers(m);
-    clock.lap("hulls");
+    return m;
+}
 
+HullModel build_model(Model&& hulls) {
+    StageClock clock;
+    HullModel m;
+    static_cast<Model&>(m) = std::move(hulls);
+    m.lines.clear();
     // Machine integers when both polyhedra are small (exact within small_int.hpp's bounds), GMP
     // otherwise: the same normals, lines and statistics either way.
     if (m.P[0].small() && m.P[1].small()) {
@@ -306,6 +311,21 @@ HullModel build_model(const ExactScene& scene) {
     }
     clock.lap("contact lines");
     return m;
+}
+
+HullModel build_model(const ExactScene& scene) {
+    StageClock clock;
+    Model h = build_hulls(scene);
+    clock.lap("hulls");
+    return build_model(std::move(h));
+}
+
+Model build_hulls(const ExactScene& scene, const std::string& name) {
+    try {
+        return build_hulls(scene);
+    } catch (const InputError& e) {
+        throw InputError(name + ": " + e.what());
+    }
 }
 
 HullModel build_model(const ExactScene& scene, const std::string& name) {

@@ -84,6 +84,14 @@ std::vector<size_t> undominated(const std::vector<double>& a, const std::vector<
 // d = s2 − s1, and sz, sden, dz, dden (above) from the seeds m.s and the scales m.P[i].scale.
 void set_seeds_in_integers(Model& m);
 
+// The exact polyhedra and the seeds of a scene, checked as build_model checks them, with no contact
+// line: what membership, distances and depths need (Model::P built, Model::lines empty). Cheap
+// next to the lines, whose count can grow with the product of the two polyhedra's edges.
+Model build_hulls(const ExactScene& scene);
+Model build_hulls(const ExactScene& scene, const std::string& name);  // errors prefixed by `name`
+// The hull model from those: every contact line added.
+HullModel build_model(Model&& hulls);
+
 // Builds the exact polyhedra, checks the seeds, and enumerates the contact lines: every facet
 // normal of the Minkowski sum is found; lines certainly dominated (never on the touching curve,
 // never deciding a query) are dropped before their exact values are computed.

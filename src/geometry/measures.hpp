@@ -25,7 +25,8 @@ struct ExactDistance {
     // the judgements certificate's closest points.
     std::vector<std::pair<int, Q>> w1, w2;
 };
-ExactDistance exact_distance(const HullModel& m, const Q& rho1, const Q& rho2);
+// (m: a hull model, or build_hulls's polyhedra with no line.)
+ExactDistance exact_distance(const Model& m, const Q& rho1, const Q& rho2);
 // The same, found at floating-point speed and proved: a double GJK (gjk.hpp) names a few vertices,
 // CGAL's QP gives the exact closest points of those, and exact supports over all vertices check
 // the slab between them (max over P1(ρ1) of u·x = u·p, min over P2(ρ2) of u·y = u·q, u = q − p),

@@ -28,10 +28,10 @@ public:
     virtual int dargmax(int i, const D3& d) const = 0;
 };
 
-// The hull model's vertices.
+// The vertices of the exact polyhedra: a hull model's, or build_hulls's (no contact line).
 class HullPoints final : public PointSets {
 public:
-    explicit HullPoints(const HullModel& m) : m_(m) {}
+    explicit HullPoints(const Model& m) : m_(m) {}
     Vec3q point(int i, int k) const override { return m_.P[i].points[static_cast<size_t>(k)]; }
     D3 dpoint(int i, int k) const override {
         const auto& d = m_.P[i].dpts[static_cast<size_t>(k)];
@@ -51,10 +51,10 @@ public:
         }
         return best;
     }
-    const HullModel& model() const { return m_; }
+    const Model& model() const { return m_; }
 
 private:
-    const HullModel& m_;
+    const Model& m_;
 };
 
 }  // namespace scalecert::internal

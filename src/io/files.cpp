@@ -155,6 +155,47 @@ std::mutex noted_mutex;
 std::map<std::pair<dev_t, ino_t>, std::string> noted;
 }  // namespace
 
+namespace {
+// The output journal (begin_output_journal): each file put in place, with the hard link that keeps
+// what it replaced ("" when nothing was there), and each folder make_output_dir created.
+std::mutex journal_mutex;
+bool journal_on = false;
+std::vector<std::pair<std::string, std::string>> journal_files;
+std::vector<std::string> journal_dirs;
+}  // namespace
+
+void begin_output_journal() {
+    const std::lock_guard<std::mutex> lock(journal_mutex);
+    journal_on = true;
+    journal_files.clear();
+    journal_dirs.clear();
+}
+
+void undo_outputs() {
+    const std::lock_guard<std::mutex> lock(journal_mutex);
+    for (auto it = journal_files.rbegin(); it != journal_files.rend(); ++it) {
+        if (it->second.empty()) ::unlink(it->first.c_str());
+        else std::rename(it->second.c_str(), it->first.c_str());
+    }
+    for (auto it = journal_dirs.rbegin(); it != journal_dirs.rend(); ++it) ::rmdir(it->c_str());  // only if empty
+    journal_files.clear();
+    journal_dirs.clear();
+}
+
+void commit_outputs() {
+    const std::lock_guard<std::mutex> lock(journal_mutex);
+    for (const auto& [path, kept] : journal_files)
+        if (!kept.empty()) ::unlink(kept.c_str());
+    journal_files.clear();
+    journal_dirs.clear();
+    journal_on = false;
+}
+
+void journal_dir(const std::string& dir) {
+    const std::lock_guard<std::mutex> lock(journal_mutex);
+    if (journal_on) journal_dirs.push_back(dir);
+}
+
 void note_inputs(const std::vector<std::string>& paths) {
     const std::lock_guard<std::mutex> lock(noted_mutex);
     for (const std::string& p : paths) {
@@ -204,11 +245,24 @@ void write_files_atomically(const std::vector<std::pair<std::string, std::string
         for (const std::string& t : tmps) ::unlink(t.c_str());
         throw;
     }
-    for (size_t i = 0; i < files.size(); ++i)
-        if (std::rename(tmps[i].c_str(), files[i].first.c_str()) != 0) {
-            for (size_t k = i; k < tmps.size(); ++k) ::unlink(tmps[k].c_str());
-            throw InputError(files[i].first + ": cannot rename the temporary file into place");
+    for (size_t i = 0; i < files.size(); ++i) {
+        const std::string& path = files[i].first;
+        const std::lock_guard<std::mutex> lock(journal_mutex);
+        std::string kept;
+        if (journal_on) {  // what the rename replaces, kept under a second name until the run ends
+            struct stat st {};
+            if (::lstat(path.c_str(), &st) == 0) {
+                kept = tmps[i] + ".old";
+                if (::link(path.c_str(), kept.c_str()) != 0) kept.clear();
+            }
         }
+        if (std::rename(tmps[i].c_str(), path.c_str()) != 0) {
+            if (!kept.empty()) ::unlink(kept.c_str());
+            for (size_t k = i; k < tmps.size(); ++k) ::unlink(tmps[k].c_str());
+            throw InputError(path + ": cannot rename the temporary file into place");
+        }
+        if (journal_on) journal_files.emplace_back(path, kept);
+    }
 }
 
 void write_file_atomically(const std::string& path, const std::string& text) { write_files_atomically({{path, text}}); }

@@ -44,6 +44,15 @@ void write_file_atomically(const std::string& path, const std::string& text);
 // The same for several files: every text is written and synced before any rename, so a failure
 // while writing leaves none of them.
 void write_files_atomically(const std::vector<std::pair<std::string, std::string>>& files);
+// The output journal of a command (the scalecert command opens it): from begin_output_journal on,
+// every file write_file(s)_atomically puts in place is recorded, with a hard link to what it
+// replaced, and every folder make_output_dir creates. undo_outputs, on failure, removes what was
+// created and puts back what was replaced, so that a command that exits 2 leaves no output;
+// commit_outputs, on success, drops the kept copies.
+void begin_output_journal();
+void undo_outputs();
+void commit_outputs();
+void journal_dir(const std::string& dir);  // a folder created for outputs (removed on undo when empty)
 // Refuses (InputError) an output that is one of the inputs (the same file, by device and inode):
 // certify-fp --certificate CLAIMS replaced the claims it read.
 void refuse_outputs_over_inputs(const std::vector<std::string>& outputs, const std::vector<std::string>& inputs);

@@ -179,13 +179,39 @@ Q exact_from_double(double d) {
     return r;
 }
 
+namespace {
+// Whether text is a decimal as parse_exact reads one: [+-] digits [. digits] [e|E [+-] digits],
+// with at least one digit before the exponent. strtod reads more (hex floats, "inf", "nan",
+// leading spaces); a program's number is read one way only, so those are refused.
+bool decimal_syntax(const std::string& t) {
+    size_t i = 0, digits = 0;
+    if (i < t.size() && (t[i] == '+' || t[i] == '-')) ++i;
+    for (; i < t.size() && std::isdigit(static_cast<unsigned char>(t[i])); ++i) ++digits;
+    if (i < t.size() && t[i] == '.')
+        for (++i; i < t.size() && std::isdigit(static_cast<unsigned char>(t[i])); ++i) ++digits;
+    if (digits == 0) return false;
+    if (i < t.size() && (t[i] == 'e' || t[i] == 'E')) {
+        ++i;
+        if (i < t.size() && (t[i] == '+' || t[i] == '-')) ++i;
+        const size_t b = i;
+        while (i < t.size() && std::isdigit(static_cast<unsigned char>(t[i]))) ++i;
+        if (i == b) return false;
+    }
+    return i == t.size();
+}
+}  // namespace
+
 Q parse_number(const std::string& text, bool binary_doubles) {
-    if (!binary_doubles) return parse_exact(text);
-    char* end = nullptr;
-    double d = std::strtod(text.c_str(), &end);
-    // (The whole text: a NUL inside it ends strtod's reading, not the token.)
-    if (text.empty() || end != text.c_str() + text.size() || std::isspace(static_cast<unsigned char>(text[0])))
-        throw InputError(quoted(text) + " is not a number");
+    if (!binary_doubles || text.find('/') != std::string::npos) return parse_exact(text);
+    if (text.size() > kMaxNumberChars)
+        throw InputError(quoted(text) + " is longer than " + std::to_string(kMaxNumberChars) + " characters, the limit for one number");
+    if (!decimal_syntax(text)) throw InputError(quoted(text) + " is not a number (a decimal such as -1.5e-3, or a fraction p/q)");
+    const double d = std::strtod(text.c_str(), nullptr);
+    if (!std::isfinite(d))
+        throw InputError(quoted(text) + " is beyond the double range (as a double it overflows): give its exact value as a fraction, or a JSON string");
+    // A nonzero decimal that is 0 as a double was never a double a program held.
+    if (d == 0 && text.find_first_of("123456789") < text.find_first_of("eE"))
+        throw InputError(quoted(text) + " is 0 as a double (it underflows): give its exact value as a fraction, or a JSON string");
     return exact_from_double(d);
 }
 

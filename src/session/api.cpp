@@ -176,7 +176,7 @@ std::vector<Verdict> Analysis::classify(const std::vector<double>& rho1, const s
         throw InputError("classify: " + std::to_string(rho1.size()) + " values of rho1 but " + std::to_string(rho2.size()) + " of rho2");
     for (size_t i = 0; i < rho1.size(); ++i)
         if (!(std::isfinite(rho1[i]) && std::isfinite(rho2[i]) && rho1[i] > 0 && rho2[i] > 0))
-            throw InputError("classify: pair " + std::to_string(i) + ": two finite numbers > 0 are required");
+            throw InputError("classify: pair " + std::to_string(i) + " (numbered from 0): two finite numbers > 0 are required");
     if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
     const internal::Session::Decider d = impl_->session.decider_for(rho1);
     FastCurve f(d.model, d.curve);

@@ -44,9 +44,9 @@ std::vector<std::int8_t> CompoundSession::classify(const std::vector<double>& rh
     if (rho1.size() != rho2.size())
         throw InputError(source + ": " + std::to_string(rho1.size()) + " values of rho1 but " + std::to_string(rho2.size()) + " of rho2");
     for (size_t k = 0; k < rho1.size(); ++k) {
-        if (!std::isfinite(rho1[k]) || !std::isfinite(rho2[k])) throw InputError(source + ": pair " + std::to_string(k + 1) + " is not finite");
+        if (!std::isfinite(rho1[k]) || !std::isfinite(rho2[k])) throw InputError(source + ": pair " + std::to_string(k) + " (numbered from 0) is not finite");
         if (Q(rho1[k]) < sc_.lo[0] || Q(rho1[k]) > sc_.hi[0] || Q(rho2[k]) < sc_.lo[1] || Q(rho2[k]) > sc_.hi[1])
-            throw InputError(source + ": pair " + std::to_string(k + 1) + " lies outside I1 x I2");
+            throw InputError(source + ": pair " + std::to_string(k) + " (numbered from 0) lies outside I1 x I2");
     }
     const CompoundRegion& r = region(false);
     if (!locator_) locator_ = std::make_unique<CompoundLocator>(r, sc_.lo, sc_.hi, CompoundLocator::grid_for(r));

@@ -2,6 +2,7 @@
 
 #include "certify/certificate.hpp"
 #include "certify/judgements.hpp"
+#include "numeric/limits.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -48,10 +49,51 @@ const HullModel& Session::hull() {
         } else {
             if (clock_) clock_->restart();
             if (!scene_ && !compact_) throw std::logic_error("Session: no scene and no hull source");
-            hull_ = std::make_shared<const HullModel>(build_model(scene_ ? *scene_ : full_scene(*compact_), name_));
+            hull_ = std::make_shared<const HullModel>(hulls_ ? build_model(Model(*hulls_)) : build_model(scene_ ? *scene_ : full_scene(*compact_), name_));
         }
     }
     return *hull_;
+}
+
+const Model& Session::hulls() {
+    if (hull_) return *hull_;
+    // (The library's scenes that do not walk hold their hull model already.)
+    if (hull_source_ && !walked()) return hull();
+    if (!hulls_) {
+        if (!scene_ && !compact_) throw std::logic_error("Session: no scene for the hulls");
+        if (clock_) clock_->restart();
+        hulls_ = std::make_shared<const Model>(build_hulls(scene_ ? *scene_ : full_scene(*compact_), name_));
+        lap("hulls");
+    }
+    return *hulls_;
+}
+
+const HullModel& Session::claim_hull() {
+    if (!hull_ && !hull_source_) {
+        const Model& h = hulls();
+        const double pairs = static_cast<double>(h.P[0].edges.size()) * static_cast<double>(h.P[1].edges.size());
+        if (pairs > kMaxEdgePairs)
+            throw InputError(name_ + ": this claim needs the hull model (every contact line), and its polyhedra have " +
+                             std::to_string(h.P[0].edges.size()) + " x " + std::to_string(h.P[1].edges.size()) +
+                             " edges, more than 2*10^7 edge pairs (the limit: the lines grow with them)" +
+                             (handover_.empty() ? "" : "; the walk handed over: " + handover_));
+    }
+    return hull();
+}
+
+Session::CurveView Session::curve_around(const Q& lo_need, const Q& hi_need) {
+    if (walked()) {
+        // The window comes from the walked curve's breaks; once the walk proves it, its breaks
+        // there are the curve's. A few rounds, each walking wider.
+        for (int round = 0; round < 8; ++round) {
+            const auto [a, b] = curve_proof_window(walk_curve_, lo_need, hi_need);
+            if (sgn(a) <= 0) break;  // from ρ1 = 0: the walk proves no range reaching 0
+            if (walk_proves(a, b)) return {*walk_, walk_curve_, walk_->walk_lo, walk_->walk_hi};
+            if (!walk_covers(a, b)) break;
+        }
+    }
+    const HullModel& h = claim_hull();
+    return {h, hull_curve(), Q(0), std::nullopt};
 }
 
 const TouchingCurve& Session::hull_curve() {
@@ -157,24 +199,51 @@ std::string Session::partition_text() {
 const PointSets& Session::points() {
     if (!points_) {
         if (walked() && walk_->points) points_ = walk_->points;  // the walk's trees
-        else points_ = std::make_shared<HullPoints>(hull());
+        else points_ = std::make_shared<HullPoints>(hulls());  // the polyhedra: no contact line needed
     }
     return *points_;
 }
 
 ClaimModels Session::claim_models() {
-    return {[this]() -> const HullModel& { return hull(); },
-            [this]() -> const TouchingCurve& { return hull_curve(); },
-            [this](const Q& r1, const Q& r2) { return verdict(r1, r2); },
-            [this](const Q& r1) { return curve_value(r1); },
-            [this] { return curve().growth.value; },
+    // Each answers with the least model it needs: the walk where it proves the curve, the two
+    // hulls (no contact line) for membership and the measures' fallbacks, and the hull model,
+    // within the limits (claim_hull), only where neither serves.
+    auto hull_unless_walked = [this](const Q& r1) {
+        if (!hull_ && !walk_covers(r1, r1)) claim_hull();
+    };
+    return {[this]() -> const HullModel& { return claim_hull(); },
+            [this]() -> const TouchingCurve& {
+                claim_hull();
+                return hull_curve();
+            },
+            [this, hull_unless_walked](const Q& r1, const Q& r2) {
+                hull_unless_walked(r1);
+                return verdict(r1, r2);
+            },
+            [this, hull_unless_walked](const Q& r1) {
+                hull_unless_walked(r1);
+                return curve_value(r1);
+            },
+            [this] {
+                if (!walked()) claim_hull();
+                return curve().growth.value;
+            },
             [this]() -> const PointSets& { return points(); },
-            [this]() -> const Model& { return walked() ? static_cast<const Model&>(*walk_) : hull(); },
-            [this](const Q& r1, const Q& r2) {
+            [this]() -> const Model& { return walked() ? static_cast<const Model&>(*walk_) : hulls(); },
+            [this, hull_unless_walked](const Q& r1, const Q& r2) {
+                hull_unless_walked(r1);
                 Certified c = certified_query(r1, r2);
                 return std::pair<const Model*, QueryAnswer>{&c.model, std::move(c.result)};
             },
-            [this] { return growth_proof(curve_model(), curve()); }};
+            [this] {
+                if (!walked()) claim_hull();
+                return growth_proof(curve_model(), curve());
+            },
+            [this]() -> const Model& { return hulls(); },
+            [this](const Q& lo, const Q& hi) {
+                const CurveView v = curve_around(lo, hi);
+                return ClaimModels::Curve{&v.model, &v.curve, v.lo, v.hi};
+            }};
 }
 
 }  // namespace scalecert::internal

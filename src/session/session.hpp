@@ -45,6 +45,12 @@ public:
     const std::string& handover() const { return handover_; }  // why the walk handed over ("" if it did not)
     // The hull model and its curve over all ρ1 > 0, built on first use.
     const HullModel& hull();
+    // The hull model for a claim: refused (InputError, before any line is built) when its
+    // polyhedra's edge pairs pass kMaxEdgePairs (limits.hpp).
+    const HullModel& claim_hull();
+    // The two exact polyhedra and seeds, with no contact line (build_hulls): what membership,
+    // closest points and the exact distance's fallback need. The hull model's when it is built.
+    const Model& hulls();
     const TouchingCurve& hull_curve();
     // The exact verdict at (ρ1, ρ2), ρ1, ρ2 > 0: on the walk where it proved the curve, else on
     // the hull model.
@@ -63,6 +69,17 @@ public:
         const TouchingCurve& curve;
     };
     Decider decider_for(const std::vector<double>& rho1);
+    // The curve proved over curve_proof's window around [lo_need, hi_need] (judgements.hpp):
+    // the walk's, walking wider until it proves the window (a few rounds), else the hull model's
+    // (claim_hull: within the limits). `proved` is where that curve is the exact one.
+    struct CurveView {
+        const Model& model;
+        const TouchingCurve& curve;
+        Q lo;                   // proved for ρ1 >= lo (0 on the hull model)
+        std::optional<Q> hi;    // and up to hi (none: unbounded)
+        bool proves(const Q& x) const { return x >= lo && (!hi || x <= *hi); }
+    };
+    CurveView curve_around(const Q& lo_need, const Q& hi_need);
     // Certificates (certificate.hpp): on the walk when it proved what they rest on, else on the
     // hull model. A query answer needs the curve at ρ1 and, when overlapping, where the ray
     // t·(ρ1, ρ2) meets it; a partition needs it over I1, which the walk always covers.
@@ -100,6 +117,7 @@ private:
     bool walk_proves(const Q& lo, const Q& hi) const;
     std::string handover_;
     std::shared_ptr<const HullModel> hull_;
+    std::shared_ptr<const Model> hulls_;  // build_hulls's, when no hull model was built
     std::optional<TouchingCurve> hull_curve_;
     std::shared_ptr<const PointSets> points_;
 };

@@ -7,6 +7,7 @@
 #include "baselines/audit.hpp"
 #include "certify/claims.hpp"
 #include "certify/compound_judge.hpp"
+#include "session/session.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -99,6 +100,42 @@ void compound_claims(const std::string& text) {
     }
 }
 
+// Crossed 40-gon prisms (tests/support.hpp), whose Minkowski sum has O(n^2) facets: the same
+// claims judged on the walk (a fresh session each input, the engine forced to the walk) and on
+// the hull model. Oracle: the same judgement for every claim, the same refusal, and a valid
+// certificate from the walk.
+void walk_claims(const std::string& text) {
+    static const ExactScene prisms = test::crossed_prism_scene(40);
+    static const HullModel hm = build_model(prisms);
+    static const TouchingCurve hc = build_curve(hm);
+    for (bool json : {false, true}) {
+        std::string hull_out, walk_out, cert, hull_err, walk_err;
+        long wrong = -1;
+        try {
+            hull_out = certify_fp(hm, hc, text, "fuzz.claims", ClaimOptions{false, Q(0), json}, &wrong);
+        } catch (const InputError& e) {
+            hull_err = e.what();
+        }
+        try {
+            Session s(prisms, "fuzz.claims", Engine::Scan);
+            walk_out = certify_fp(s.claim_models(), text, "fuzz.claims", ClaimOptions{false, Q(0), json}, &wrong, nullptr, &cert);
+        } catch (const InputError& e) {
+            walk_err = e.what();
+        }
+        if (hull_err.empty() != walk_err.empty()) fuzz::finding("the walk and the hull model disagree on refusing: '" + hull_err + "' / '" + walk_err + "'");
+        if (!hull_err.empty()) continue;
+        if (json) {
+            const nlohmann::json h = nlohmann::json::parse(hull_out), w = nlohmann::json::parse(walk_out);
+            for (size_t i = 0; i < h["claims"].size(); ++i)
+                if (h["claims"][i]["right"] != w["claims"][i]["right"])
+                    fuzz::finding("claim " + std::to_string(i) + " judged differently on the walk and on the hull model");
+        } else if (hull_out != walk_out) {
+            fuzz::finding("the line format's report differs between the walk and the hull model");
+        }
+        fuzz::must_pass_checker(cert, "judgements certificate from the walk");
+    }
+}
+
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     static Fixed wide(R"(["1/2", 2])"), narrow(R"(["1/2", "3/4"])");
     static test::Brute brute(wide.sc);  // the same polyhedra and seeds in both
@@ -115,5 +152,6 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
                 }
             }
     compound_claims(text);
+    walk_claims(text);
     return 0;
 }
