@@ -32,6 +32,18 @@ std::string num(const Q& q, int digits = 6) { return to_exact_string(q) + " (~" 
 std::string ex(const Q& q) { return to_exact_string(q); }
 Json ex3(const Vec3q& v) { return Json::array({ex(v[0]), ex(v[1]), ex(v[2])}); }
 
+}  // namespace
+
+// Is x in P_i(ρ) on the exact polyhedra, with its proof.
+bool hull_member(const Model& m, int i, const Q& rho, const Vec3q& x, Json* proof) {
+    bool inside = false;
+    if (proof) *proof = membership_proof(m, i, rho, x, &inside);
+    else inside = contains(m, i, rho, x);
+    return inside;
+}
+
+namespace {
+
 // Reading one claim's fields (every number exact: a JSON number is the double it was read as
 // unless exact_decimals) and the tolerance's rules, for the convex and the compound certifier.
 class ClaimReader {
@@ -174,12 +186,12 @@ private:
     struct ExactSwitch { Q rho1, rho2; std::string label; };
     std::optional<std::vector<ExactSwitch>> switches_;  // the whole curve's switch points (built on first use)
 
-    // Proofs that x is (or is not) in P1(ρ1) and y in P2(ρ2), agreeing with the judgements in1, in2.
-    Json membership(const Q& r1, const Q& r2, const Vec3q& x, const Vec3q& y, bool in1, bool in2) const {
-        bool a = false, b = false;
-        Json j{{"P1", membership_proof(h(), 0, r1, x, &a)}, {"P2", membership_proof(h(), 1, r2, y, &b)}};
-        if (a != in1 || b != in2) throw std::logic_error("certify-fp: a membership proof disagrees with its judgement");
-        return j;
+    // Whether x is in P1(ρ1) and y in P2(ρ2), with their proofs in *proof when given.
+    std::pair<bool, bool> members(const Q& r1, const Q& r2, const Vec3q& x, const Vec3q& y, Json* proof) const {
+        Json p1, p2;
+        const bool a = models_.member(0, r1, x, proof ? &p1 : nullptr), b = models_.member(1, r2, y, proof ? &p2 : nullptr);
+        if (proof) *proof = Json{{"P1", std::move(p1)}, {"P2", std::move(p2)}};
+        return {a, b};
     }
 
     bool verdict(const JNode& j, Json& o, std::string& text) {
@@ -603,12 +615,13 @@ private:
         const auto r12 = pair_at(j);
         const Q &r1 = r12.first, &r2 = r12.second;  // (not a structured binding: lambdas below capture them)
         const Vec3q x = point(need(j, "point"), "point");
-        const bool in1 = contains(h(), 0, r1, x), in2 = contains(h(), 1, r2, x);
+        Json mp;
+        const auto [in1, in2] = members(r1, r2, x, x, prove_ ? &mp : nullptr);
         o["in_P1"] = in1;
         o["in_P2"] = in2;
         o["exact_verdict"] = verdict_name(models_.verdict(r1, r2));
         text = "witness point at (" + num(r1) + ", " + num(r2) + "): in P1 " + (in1 ? "yes" : "NO") + ", in P2 " + (in2 ? "yes" : "NO");
-        if (prove_) proof.emplace(Json{{"kind", "witness_point"}, {"rho1", ex(r1)}, {"rho2", ex(r2)}, {"point", ex3(x)}}, membership(r1, r2, x, x, in1, in2));
+        if (prove_) proof.emplace(Json{{"kind", "witness_point"}, {"rho1", ex(r1)}, {"rho2", ex(r2)}, {"point", ex3(x)}}, std::move(mp));
         return in1 && in2;
     }
 
@@ -636,7 +649,8 @@ private:
             const Vec3q p = point(cl->items[0], "closest"), q = point(cl->items[1], "closest");
             const Vec3q pq = sub(q, p);
             const Q sq = dot(pq, pq);
-            const bool in1 = contains(h(), 0, r1, p), in2 = contains(h(), 1, r2, q);
+            Json mp;
+            const auto [in1, in2] = members(r1, r2, p, q, prove_ ? &mp : nullptr);
             o["closest_in_P1"] = in1;
             o["closest_in_P2"] = in2;
             put_exact(o, "closest_squared_distance", sq);
@@ -645,7 +659,7 @@ private:
             right = right && ok;
             if (prove_) {
                 pc["closest"] = Json::array({ex3(p), ex3(q)});
-                pp["closest"] = membership(r1, r2, p, q, in1, in2);
+                pp["closest"] = std::move(mp);
             }
         }
         if (prove_) proof.emplace(std::move(pc), std::move(pp));
@@ -967,7 +981,8 @@ ClaimModels ClaimModels::of(const HullModel& m, const TouchingCurve& c) {
             [&m, &c](const Q& r1, const Q& r2) { return std::pair<const Model*, QueryAnswer>{&m, query(m, c, r1, r2, true)}; },
             [&m, &c] { return scalecert::internal::growth_proof(m, c); },
             [&m]() -> const Model& { return m; },
-            [&m, &c](const Q&, const Q&) { return ClaimModels::Curve{&m, &c, Q(0), std::nullopt}; }};
+            [&m, &c](const Q&, const Q&) { return ClaimModels::Curve{&m, &c, Q(0), std::nullopt}; },
+            [&m](int i, const Q& rho, const Vec3q& x, Json* proof) { return hull_member(m, i, rho, x, proof); }};
 }
 
 namespace {

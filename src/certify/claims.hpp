@@ -58,8 +58,13 @@ struct ClaimModels {
         bool proves(const Q& x) const { return x >= lo_proved && (!hi_proved || x <= *hi_proved); }
     };
     std::function<Curve(const Q&, const Q&)> curve_around;
+    // Is x in P_i(ρ)? With its proof (judgements.hpp, membership_proof) in *proof when given:
+    // from the walk's point trees on a walked scene whose hulls are not built, else the hulls.
+    std::function<bool(int, const Q&, const Vec3q&, Json*)> member;
     static ClaimModels of(const HullModel& m, const TouchingCurve& c);
 };
+// Is x in P_i(ρ) on the exact polyhedra of m (a hull model, or build_hulls's), with its proof.
+bool hull_member(const Model& m, int i, const Q& rho, const Vec3q& x, Json* proof);
 // (*count, when given: the number of claims. *certificate, when given: the judgements
 // certificate, kind "judgements" (judgements.hpp, FORMAT.md): the proof of every judgement.)
 std::string certify_fp(const ClaimModels& models, const std::string& claims, const std::string& name, const ClaimOptions& opt,

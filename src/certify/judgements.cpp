@@ -51,6 +51,43 @@ Json membership_proof(const Polyhedron& P, const Vec3q& seed, const Q& rho, cons
     return Json{{"in", weights_json(at.side == 0 ? face_weights(P, *at.face, y) : P.interior_weights(y))}};
 }
 
+namespace {
+// One body of a point set (set 0 here) and one point x (set 1, its own seed: no scaling moves it),
+// so that the distance between them, proved from support queries, says whether x is in the body.
+class BodyAndPoint final : public PointSets {
+public:
+    BodyAndPoint(const PointSets& S, int body, const Vec3q& x) : S_(S), body_(body), x_(x), den_(1) {
+        for (const Q& c : x) mpz_lcm(den_.get_mpz_t(), den_.get_mpz_t(), c.get_den_mpz_t());
+    }
+    Vec3q point(int i, int k) const override { return i == 0 ? S_.point(body_, k) : x_; }
+    D3 dpoint(int i, int k) const override {
+        if (i == 0) return S_.dpoint(body_, k);
+        return {to_double_rn(x_[0]), to_double_rn(x_[1]), to_double_rn(x_[2])};
+    }
+    const Vec3q& seed(int i) const override { return i == 0 ? S_.seed(body_) : x_; }
+    const Z& scale(int i) const override { return i == 0 ? S_.scale(body_) : den_; }
+    int argmax(int i, const Vec3z& n) const override { return i == 0 ? S_.argmax(body_, n) : 0; }
+    int dargmax(int i, const D3& d) const override { return i == 0 ? S_.dargmax(body_, d) : 0; }
+
+private:
+    const PointSets& S_;
+    int body_;
+    Vec3q x_;
+    Z den_;
+};
+}  // namespace
+
+std::optional<bool> membership_by_points(const PointSets& S, int i, const Q& rho, const Vec3q& x, Json* proof) {
+    const std::optional<ProvedDistance> pd = proved_distance(BodyAndPoint(S, i, x), rho, Q(1));
+    if (!pd) return std::nullopt;
+    const bool inside = sgn(pd->d.squared) == 0;
+    if (proof) {
+        if (inside) *proof = Json{{"in", weights_json(pd->d.w1)}};
+        else *proof = Json{{"out", normal_json(primitive(sub(pd->d.p2, pd->d.p1)))}};
+    }
+    return inside;
+}
+
 Json verdict_proof(const Model& m, const QueryAnswer& r) {
     return Json{{"verdict", verdict_name(r.verdict)}, {"certificate", query_certificate_json(m, r)}};
 }

@@ -14,6 +14,12 @@ Json membership_proof(const Model& m, int i, const Q& rho, const Vec3q& x, bool*
 // The same for a polyhedron P scaled by ρ about `seed` (a compound's part).
 Json membership_proof(const Polyhedron& P, const Vec3q& seed, const Q& rho, const Vec3q& x, bool* inside);
 
+// The same from support queries alone, with no hull (a walked scene's point trees): the proved
+// distance between P_i(ρ) and x. Inside: the weights of the closest point (x itself); outside: the
+// direction from the body's closest point to x, whose plane x lies strictly beyond. None when the
+// distance's rounds run out (the caller then builds the hulls).
+std::optional<bool> membership_by_points(const PointSets& S, int i, const Q& rho, const Vec3q& x, Json* proof);
+
 // A verdict with its query certificate (on the model that proves it): {"verdict", "certificate"}.
 Json verdict_proof(const Model& m, const QueryAnswer& r);
 

@@ -243,6 +243,16 @@ ClaimModels Session::claim_models() {
             [this](const Q& lo, const Q& hi) {
                 const CurveView v = curve_around(lo, hi);
                 return ClaimModels::Curve{&v.model, &v.curve, v.lo, v.hi};
+            },
+            [this](int i, const Q& rho, const Vec3q& x, Json* proof) {
+                // A walked scene's trees answer without a hull (CGAL's quickhull is quadratic on
+                // points all on the hull, as crossed prisms' are); the hulls when the distance's
+                // rounds run out, or once built.
+                if (!hull_ && !hulls_ && walked() && walk_->points) try {
+                        if (const std::optional<bool> in = membership_by_points(*walk_->points, i, rho, x, proof)) return *in;
+                    } catch (const PointSetsCannot&) {  // a direction beyond doubles
+                    }
+                return hull_member(hulls(), i, rho, x, proof);
             }};
 }
 
