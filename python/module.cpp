@@ -85,12 +85,27 @@ bool has_attr(const py::handle& h, const char* name) {
     throw py::error_already_set();
 }
 
+// A Python str as UTF-8 (a lone surrogate cannot be: InputError, not pybind11's cast error).
+std::string utf8(const py::handle& h, const std::string& what) {
+    Py_ssize_t n = 0;
+    const char* p = PyUnicode_AsUTF8AndSize(h.ptr(), &n);
+    if (!p) {
+        PyErr_Clear();
+        throw scalecert::InputError(what + ": not valid text (it cannot be UTF-8)");
+    }
+    return std::string(p, static_cast<size_t>(n));
+}
+
+// Whether a Python error raised while reading an argument is the argument's fault (any Exception
+// but MemoryError): then InputError; KeyboardInterrupt, SystemExit and MemoryError go on.
+bool argument_error(const py::error_already_set& e) { return e.matches(PyExc_Exception) && !e.matches(PyExc_MemoryError); }
+
 Rational rational(const py::handle& h, const char* what) {
     try {
         if (py::isinstance<py::bool_>(h)) throw scalecert::InputError("a bool is not a number");
         if (has_attr(h, "ndim") && py::int_(h.attr("ndim")).cast<long>() != 0)
             throw scalecert::InputError("expected one number, not an array");
-        if (py::isinstance<py::str>(h)) return scalecert::parse_rational(h.cast<std::string>());
+        if (py::isinstance<py::str>(h)) return scalecert::parse_rational(utf8(h, "text"));
         if (py::isinstance<py::float_>(h) || (has_attr(h, "dtype") && py::str(h.attr("dtype").attr("kind")).cast<std::string>() == "f")) {
             const double d = py::float_(h.cast<py::object>()).cast<double>();
             if (!std::isfinite(d)) throw scalecert::InputError("not a finite number");
@@ -107,10 +122,8 @@ Rational rational(const py::handle& h, const char* what) {
     } catch (const scalecert::InputError& e) {
         throw scalecert::InputError(std::string(what) + ": " + e.what());
     } catch (const py::error_already_set& e) {
-        // Only errors about the value mean "not a number"; others (KeyboardInterrupt, MemoryError) go on.
-        if (!e.matches(PyExc_TypeError) && !e.matches(PyExc_ValueError) && !e.matches(PyExc_AttributeError) &&
-            !e.matches(PyExc_OverflowError))
-            throw;
+        // Errors about the value mean "not a number"; others (KeyboardInterrupt, MemoryError) go on.
+        if (!argument_error(e)) throw;
         throw scalecert::InputError(std::string(what) + ": not a number");
     }
     throw scalecert::InputError(std::string(what) + ": not a number (int, Fraction, Decimal, float or decimal string)");
@@ -146,19 +159,29 @@ py::object json_loads(const std::string& text) { return py::module_::import("jso
 // Arguments that are not numbers, checked here so that a wrong type is an InputError (one line)
 // like every other bad argument, never pybind11's TypeError or a bare OverflowError.
 // A path: a str or an os.PathLike giving one.
+std::string type_name(const py::handle& h) { return utf8(py::str(py::type::of(h).attr("__name__")), "a type's name"); }
 std::string path_arg(const py::handle& h, const char* what) {
-    if (py::isinstance<py::str>(h)) return h.cast<std::string>();
-    try {
-        py::object p = py::module_::import("os").attr("fspath")(h);
-        if (py::isinstance<py::str>(p)) return p.cast<std::string>();
-    } catch (const py::error_already_set& e) {
-        if (!e.matches(PyExc_TypeError)) throw;
+    std::string path;
+    if (py::isinstance<py::str>(h)) {
+        path = utf8(h, what);
+    } else {
+        py::object p;
+        try {
+            p = py::module_::import("os").attr("fspath")(h);
+        } catch (const py::error_already_set& e) {
+            if (!argument_error(e)) throw;
+        }
+        if (!p || !py::isinstance<py::str>(p))
+            throw scalecert::InputError(std::string(what) + ": expected a path (a str or os.PathLike), not " + type_name(h));
+        path = utf8(p, what);
     }
-    throw scalecert::InputError(std::string(what) + ": expected a path (a str or os.PathLike), not " + py::repr(py::type::of(h)).cast<std::string>());
+    // (The C++ side would read the name up to the NUL: another file than the one named.)
+    if (path.find('\0') != std::string::npos) throw scalecert::InputError(std::string(what) + ": a path with a NUL byte");
+    return path;
 }
 std::string text_arg(const py::handle& h, const char* what) {
-    if (!py::isinstance<py::str>(h)) throw scalecert::InputError(std::string(what) + ": expected a str, not " + py::repr(py::type::of(h)).cast<std::string>());
-    return h.cast<std::string>();
+    if (!py::isinstance<py::str>(h)) throw scalecert::InputError(std::string(what) + ": expected a str, not " + type_name(h));
+    return utf8(h, what);
 }
 bool flag_arg(const py::handle& h, const char* what) {
     if (!py::isinstance<py::bool_>(h)) throw scalecert::InputError(std::string(what) + ": expected True or False");
@@ -174,6 +197,9 @@ long long whole_arg(const py::handle& h, const char* what, long long lo, long lo
         z = mpz_of(h);
     } catch (const scalecert::InputError&) {
         z = zhi + 1;  // beyond any limit
+    } catch (const py::error_already_set& e) {  // an __index__ that raises, or returns no int
+        if (!argument_error(e)) throw;
+        z = zhi + 1;
     }
     if (z < zlo || z > zhi) throw scalecert::InputError(std::string(what) + ": expected an int from " + std::to_string(lo) + " to " + std::to_string(hi));
     return static_cast<long long>(z.get_si());
@@ -184,6 +210,9 @@ unsigned long long seed_arg(const py::handle& h, const char* what) {
     try {
         z = mpz_of(h);
     } catch (const scalecert::InputError&) {
+        z = -1;
+    } catch (const py::error_already_set& e) {
+        if (!argument_error(e)) throw;
         z = -1;
     }
     if (z < 0 || mpz_sizeinbase(z.get_mpz_t(), 2) > 64) throw scalecert::InputError(std::string(what) + ": expected an int from 0 to 2^64 - 1");
@@ -211,7 +240,15 @@ py::object exact_ints(const py::handle& o, int depth) {
         for (const py::handle& x : o) l.append(exact_ints(x, depth + 1));
         return l;
     }
-    if (has_attr(o, "tolist") && has_attr(o, "dtype")) return exact_ints(o.attr("tolist")(), depth + 1);  // numpy
+    if (has_attr(o, "tolist") && has_attr(o, "dtype")) {  // numpy
+        py::object r = o.attr("tolist")();
+        if (!r.get_type().is(py::type::of(o))) return exact_ints(r, depth + 1);
+        // A scalar with no Python counterpart (a long double): its exact value.
+        if (has_attr(o, "as_integer_ratio")) {
+            const py::tuple t = o.attr("as_integer_ratio")();
+            return py::str(mpz_of(t[0]).get_str(10) + "/" + mpz_of(t[1]).get_str(10));
+        }
+    }
     return py::reinterpret_borrow<py::object>(o);
 }
 
@@ -221,7 +258,7 @@ py::object exact_ints(const py::handle& o, int depth) {
 // Decimal becomes an exact string ("12", "p/q"); numpy scalars and arrays become numbers and lists
 // (.tolist()). NaN and infinity are refused.
 std::string claims_text(const py::handle& c) {
-    if (py::isinstance<py::str>(c)) return c.cast<std::string>();
+    if (py::isinstance<py::str>(c)) return utf8(c, "claims");
     py::object doc;
     if (py::isinstance<py::dict>(c)) {
         doc = py::reinterpret_borrow<py::object>(c);
@@ -233,7 +270,12 @@ std::string claims_text(const py::handle& c) {
     } else {
         throw scalecert::InputError("claims: expected a str (a claims file's text), a dict or a list of claim dicts");
     }
-    doc = exact_ints(doc, 0);
+    try {
+        doc = exact_ints(doc, 0);
+    } catch (const py::error_already_set& e) {
+        if (!argument_error(e)) throw;
+        throw scalecert::InputError("claims: " + utf8(py::str(e.value()), "claims"));
+    }
     py::object Fraction = py::module_::import("fractions").attr("Fraction");
     py::object Decimal = py::module_::import("decimal").attr("Decimal");
     py::cpp_function exact([Fraction, Decimal](const py::handle& o) -> py::object {
@@ -242,9 +284,10 @@ std::string claims_text(const py::handle& c) {
         throw scalecert::InputError("claims: " + py::repr(o).cast<std::string>() + " is not a number, string, list or dict");
     });
     try {
-        return py::module_::import("json").attr("dumps")(doc, py::arg("default") = exact, py::arg("allow_nan") = false).cast<std::string>();
+        return utf8(py::module_::import("json").attr("dumps")(doc, py::arg("default") = exact, py::arg("allow_nan") = false), "claims");
     } catch (const py::error_already_set& e) {
-        const std::string what = py::str(e.value()).cast<std::string>();
+        if (!argument_error(e)) throw;
+        const std::string what = utf8(py::str(e.value()), "claims");
         throw scalecert::InputError(what.rfind("claims: ", 0) == 0 ? what : "claims: " + what);
     }
 }
@@ -376,7 +419,7 @@ py::dict certify_arrays(const scalecert::Analysis& a, const std::string& kind, c
         if (off) c.offset = rational((*off)[i], ("offset" + at).c_str());
         if (pts) c.point = point((*pts)[i], "point" + at);
         if (verdicts) {
-            const std::string v = py::str(verdicts->empty() ? verdict : (*verdicts)[i]).cast<std::string>();
+            const std::string v = utf8(py::str(verdicts->empty() ? verdict : (*verdicts)[i]), "certify: verdict" + at);
             if (v == "separated") c.verdict = scalecert::Verdict::Separated;
             else if (v == "touching") c.verdict = scalecert::Verdict::Touching;
             else if (v == "overlapping") c.verdict = scalecert::Verdict::Overlapping;
@@ -503,6 +546,13 @@ PYBIND11_MODULE(scalecert, m) {
              "Objects made of convex parts: P1, P2 lists of parts, each a list of vertices (numbers as for Scene); "
              "I1, I2 = (lo, hi); seeds = (s1, s2), either may be None: the mean of all that object's vertices.")
         .def_static("load", [](const py::handle& path) { return scalecert::Region::load(path_arg(path, "path")); }, py::arg("path"), "a scene file (JSON) whose objects may hold \"parts\"")
+        .def_static("from_meshes", [](const py::handle& p1, const py::handle& p2, const py::handle& i1, const py::handle& i2,
+                                      const py::handle& groups) {
+                        return scalecert::Region::from_meshes(path_arg(p1, "p1"), path_arg(p2, "p2"), interval(i1, "I1"), interval(i2, "I2"),
+                                                              flag_arg(groups, "parts_from_groups"));
+                    }, py::arg("p1"), py::arg("p2"), py::arg("I1"), py::arg("I2"), py::arg("parts_from_groups") = true,
+                    "mesh files (.off .obj .ply .stl); with parts_from_groups (the default) each OBJ file's groups with faces "
+                    "are its convex parts, else each mesh is one convex part")
         .def("verdict", [](const scalecert::Region& r, const py::handle& r1, const py::handle& r2) {
                  return r.verdict(rational(r1, "rho1"), rational(r2, "rho2"));
              }, py::arg("rho1"), py::arg("rho2"), "the exact verdict at (rho1, rho2) in I1 x I2")

@@ -353,7 +353,7 @@ BOOST_AUTO_TEST_CASE(outputs_go_only_to_regular_files_and_directories_we_can_mak
     const fs::path gp = workdir() / "golden-spelled";
     BOOST_TEST(run("golden " + std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/../scenes/stacked_cubes.json --dir " + gp.string()).status == 0);
     BOOST_TEST(slurp(gp / "stacked_cubes.golden.json") == slurp(gd / "stacked_cubes.golden.json"));
-    BOOST_TEST(slurp(gd / "stacked_cubes.golden.json").find("\"scene_file\": \"stacked_cubes.json\"") != std::string::npos);
+    BOOST_TEST(slurp(gd / "stacked_cubes.golden.json").find("\"scene_file\": \"stacked_cubes.scene.json\"") != std::string::npos);
     // --scene is SCENES; --p1/--p2 a pair of meshes, its scene written as DIR/P1-P2.scene.json. The
     // tetrahedron (0,0,0), (2,0,0), (0,2,0), (0,0,2) (seed its mean (1/2, 1/2, 1/2)) and the box
     // [3,5] x [0,2]^2 (seed (4, 1, 1)): the vertex (2,0,0) reaches x = 1/2 + 3ρ1/2 and the box's
@@ -915,7 +915,7 @@ BOOST_AUTO_TEST_CASE(region_of_compounds) {
     expect_error("empty --at", "region " + band + " --at ''", "--at: '' is not an exact number");
     expect_error("long --at", "region " + band + " --at 1e1000,1", "--at: '1e1000,1' lies outside I1 x I2");
     // Objects with parts are read by region only; a flat part, an empty list, a part of three points.
-    expect_error("parts elsewhere", "curve " + band, "P1.parts: an object made of parts is read by `scalecert region`, `scalecert certify-fp` and `scalecert audit` only");
+    expect_error("parts and the curve", "curve " + band, "the touching curve is defined for two convex objects; on objects made of parts, scalecert region");
     const std::string tail = R"(, "seed": [0, 0, 0]}, "P2": {"vertices": [[4,0,0],[5,0,0],[4,1,0],[4,0,1]]}, "I1": [1, 2], "I2": [1, 2]})";
     fs::path flat = write("flat_part.json", R"({"P1": {"parts": [{"vertices": [[0,0,0],[1,0,0],[0,1,0],[1,1,0]]}])" + tail);
     expect_error("flat part", "region " + flat.string(), "P1.parts[0]");
@@ -1076,8 +1076,8 @@ BOOST_AUTO_TEST_CASE(region_parts_from_obj_groups) {
                  "P1.parts_from_groups: parts from groups need an OBJ \"mesh\"");
     expect_error("key not a boolean", "region " + write("key_one.json", R"({"P1": {"mesh": "band_groups.obj", "parts_from_groups": 1}, )" + box).string(),
                  "P1.parts_from_groups: expected true or false");
-    expect_error("key elsewhere", "curve " + key_scene.string(), "P1.parts_from_groups: read by `scalecert region`, `scalecert certify-fp` and `scalecert audit` only");
-    expect_error("flag elsewhere", "curve --parts-from-groups" + meshes, "--parts-from-groups");
+    expect_error("key and the curve", "curve " + key_scene.string(), "the touching curve is defined for two convex objects");
+    expect_error("flag and the curve", "curve --parts-from-groups" + meshes, "the touching curve is defined for two convex objects");
 }
 
 BOOST_AUTO_TEST_CASE(certify_fp_on_compounds) {
@@ -1120,4 +1120,53 @@ BOOST_AUTO_TEST_CASE(certify_fp_on_compounds) {
                  "scalings must be > 0");
     // The certificate may not replace the scene or the claims.
     expect_error("certificate over claims", "certify-fp " + band + " " + claims.string() + " --certificate " + claims.string(), claims.string());
+}
+
+// Every command takes a scene of parts (query, partition, classify) or refuses it in one line
+// naming `region` (curve); meshes with groups are read as parts with --parts-from-groups on every
+// command, and as one hull, with a note on stderr, without it. Values by hand: the U and peg
+// (tests/test_compound.cpp: separated at (1, 1), overlapping at (1, 2), all three pairs touching
+// at (6/7, 12/7)); an L of two boxes, foot [0,3]x[0,1]x[0,1] and leg [0,1]x[0,1]x[1,3], beside the
+// box [2,3]x[0,1]x[2,3] in its notch: at (1, 1) the box is 1 from each part (separated), while
+// the L's hull reaches x + z = 4, which the box's corner (2, ., 2) lies on (touching).
+BOOST_AUTO_TEST_CASE(every_command_takes_objects_made_of_parts) {
+    const std::string u = std::string(SCALECERT_SOURCE_DIR) + "/tests/data/compound_u_peg.json";
+    BOOST_TEST(run("query " + u + " 1 1").out == "separated\n");
+    BOOST_TEST(run("query " + u + " 1 2").out == "overlapping\n");
+    BOOST_TEST(run("query " + u + " 6/7 12/7").out == "touching\n");
+    const fs::path qj = workdir() / "u_query.json";
+    BOOST_TEST(run("query " + u + " 6/7 12/7 --json --out " + qj.string()).status == 0);
+    BOOST_TEST(slurp(qj).find("\"compound_judgements\"") != std::string::npos);
+    BOOST_TEST(std::system((std::string(SCALECERT_CHECK_BIN) + " " + qj.string() + " >/dev/null").c_str()) == 0);
+    const fs::path pc = workdir() / "u_partition.json", rc = workdir() / "u_region_cert.json";
+    BOOST_TEST(run("partition " + u + " --out " + pc.string()).status == 0);
+    BOOST_TEST(run("region " + u + " --certificate " + rc.string() + " --out " + (workdir() / "u_region.json").string()).status == 0);
+    BOOST_TEST(slurp(pc) == slurp(rc));
+    BOOST_TEST(std::system((std::string(SCALECERT_CHECK_BIN) + " " + pc.string() + " >/dev/null").c_str()) == 0);
+    BOOST_TEST(run("classify " + u + " " + write("u_pairs.txt", "1 1\n1 2\n").string()).out == "separated\noverlapping\n");
+    expect_error("curve on parts", "curve " + u, "scalecert region gives where they meet");
+    expect_error("segment on parts", "query " + u + " 1 1 --segment seeds", "for two convex objects");
+    Run gp = run("golden " + u + " --dir " + (workdir() / "never-made-5").string());
+    BOOST_TEST(gp.status == 2);
+    BOOST_TEST(gp.err.find("`curve`, `golden` and `grid` are for two convex objects") != std::string::npos, gp.err);
+    BOOST_TEST(!fs::exists(workdir() / "never-made-5"));
+
+    const fs::path L = write("L.obj",
+                             "v 0 0 0\nv 3 0 0\nv 0 1 0\nv 3 1 0\nv 0 0 1\nv 3 0 1\nv 0 1 1\nv 3 1 1\n"
+                             "v 0 0 1\nv 1 0 1\nv 0 1 1\nv 1 1 1\nv 0 0 3\nv 1 0 3\nv 0 1 3\nv 1 1 3\n"
+                             "g foot\nf 1 2 4 3\nf 5 6 8 7\nf 1 2 6 5\ng leg\nf 9 10 12 11\nf 13 14 16 15\nf 9 10 14 13\n");
+    const fs::path B = write("notch.obj", "v 2 0 2\nv 3 0 2\nv 2 1 2\nv 3 1 2\nv 2 0 3\nv 3 0 3\nv 2 1 3\nv 3 1 3\nf 1 2 4 3\nf 5 6 8 7\n");
+    const std::string meshes = "--p1 " + L.string() + " --p2 " + B.string() + " --i1 1/2,2 --i2 1/2,2";
+    Run hull = run("query " + meshes + " 1 1");
+    BOOST_TEST(hull.out == "touching\n");
+    BOOST_TEST(hull.err.find("scalecert: note: " + L.string() + ": 2 groups with faces, read as one convex object") == 0u, hull.err);
+    Run parts = run("query " + meshes + " 1 1 --parts-from-groups");
+    BOOST_TEST(parts.out == "separated\n");
+    BOOST_TEST(parts.err.empty(), parts.err);
+    BOOST_TEST(run("classify " + meshes + " --parts-from-groups " + write("l_pairs.txt", "1 1\n").string()).out == "separated\n");
+    BOOST_TEST(run("certify-fp " + meshes + " --parts-from-groups " + write("l_claims.txt", "1 1 separated\n").string()).status == 0);
+    BOOST_TEST(run("certify-fp " + meshes + " " + write("l_claims2.txt", "1 1 touching\n").string()).status == 0);
+    Run g = run("golden " + meshes + " --dir " + (workdir() / "golden-L").string());
+    BOOST_TEST(g.status == 0);
+    BOOST_TEST(g.err.find("2 groups with faces") != std::string::npos, g.err);
 }

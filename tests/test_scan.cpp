@@ -378,6 +378,10 @@ BOOST_AUTO_TEST_CASE(claims_on_the_walk_build_no_hull_model) {
         const Vec3z n = hm.lines[hc.env.pieces[hc.env.locate(x)].line].normal;
         add({{"kind", "separating_plane"}, {"rho1", ex(x)}, {"rho2", ex(under)}, {"normal", pt(to_q(n))}}, true);
         add({{"kind", "separating_plane"}, {"rho1", ex(x)}, {"rho2", ex(over)}, {"normal", pt(to_q(n))}}, false);
+        // Beyond doubles: a point far outside both (by its x), and a normal nearly along x, along
+        // which the prisms' x-ranges overlap (P1's x within ±10^6·ρ1 about 0, P2's about 12345).
+        add({{"kind", "witness_point"}, {"rho1", ex(x)}, {"rho2", ex(over)}, {"point", Json::array({"1e400", "0", "0"})}}, false);
+        add({{"kind", "separating_plane"}, {"rho1", ex(x)}, {"rho2", ex(under)}, {"normal", Json::array({"1e400", "0", "1"})}}, false);
     }
     // The curve from ρ1 = 1/2 to 9/10 of the way to ρ2 = 0, as the polyline of its breaks; a switch
     // point at every break with ρ2 > 0; and the growth distance.

@@ -489,6 +489,16 @@ def test_a_big_int_is_one_exact_value_through_every_entry_point():
     assert r.certify_fp([{"kind": "distance", "rho1": 1, "rho2": 1, "value": float(D)}])["wrong"] == 1
 
 
+class BadIndex:
+    def __index__(self):
+        raise ValueError("no index here")
+
+
+class BadPath:
+    def __fspath__(self):
+        raise RuntimeError("no path here")
+
+
 def test_every_bad_argument_is_an_input_error(tmp_path):
     s, r = stacked(), scalecert.Region([box(0, 0, 0, 2, 2, 2)], [box(0, 0, 3, 2, 2, 5)], (F(1, 2), 2), (F(1, 2), 2))
     bad = [
@@ -511,6 +521,17 @@ def test_every_bad_argument_is_an_input_error(tmp_path):
         lambda: scalecert.Region.load(None),
         lambda: scalecert.Scene.from_meshes(1, 2, (1, 2), (1, 2)),
         lambda: s.certify_fp([{"kind": "verdict", "rho1": 1, "rho2": 1, "verdict": "separated"}] + [[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[1]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]),
+        # text that is not UTF-8 (a lone surrogate), a NUL in a path, an __index__ or __fspath__ that raises
+        lambda: scalecert.Scene.load("\udc80x.json"),
+        lambda: scalecert.Region.load("\udc80x.json"),
+        lambda: s.certify_fp("1 1 separated\udc80"),
+        lambda: s.certify("\udc80", [1], [1]),
+        lambda: s.certify("verdict", ["\udc80"], [1], verdict=["separated"]),
+        lambda: scalecert.golden("\udc80", 1, 1, "1/10", str(tmp_path)),
+        lambda: scalecert.Scene.load(str(SRC / "certificates" / "scenes" / "stacked_cubes.json") + "\0junk"),
+        lambda: scalecert.golden("random", BadIndex(), 1, "1/10", str(tmp_path)),
+        lambda: scalecert.golden("random", 1, BadIndex(), "1/10", str(tmp_path)),
+        lambda: scalecert.Scene.load(BadPath()),
     ]
     for i, f in enumerate(bad):
         with pytest.raises(scalecert.InputError) as e:
@@ -527,3 +548,19 @@ def test_pairs_are_numbered_from_0_in_every_classify():
         s.classify([1.0, -1.0], [1.0, 1.0])
     with pytest.raises(scalecert.InputError, match=r"pair 1 \(numbered from 0\)"):
         r.classify([1.0, 9.0], [1.0, 1.0])
+
+
+def test_region_from_meshes_reads_groups_as_parts(tmp_path):
+    # An L of two boxes (foot [0,3]x[0,1]x[0,1], leg [0,1]x[0,1]x[1,3]) and the box [2,3]x[0,1]x[2,3]
+    # in its notch: at (1, 1) the box is 1 from each part (separated), but on the L's hull, whose
+    # face x + z = 4 holds the box's corner (2, ., 2) (touching). By hand.
+    L, B = tmp_path / "L.obj", tmp_path / "B.obj"
+    foot, leg = box(0, 0, 0, 3, 1, 1), box(0, 0, 1, 1, 1, 3)
+    L.write_text("".join("v %d %d %d\n" % tuple(v) for v in foot + leg) +
+                 "g foot\nf 1 2 4 3\nf 5 6 8 7\ng leg\nf 9 10 12 11\nf 13 14 16 15\n")
+    B.write_text("".join("v %d %d %d\n" % tuple(v) for v in box(2, 0, 2, 3, 1, 3)) + "f 1 2 4 3\nf 5 6 8 7\n")
+    r = scalecert.Region.from_meshes(L, str(B), ("1/2", 2), ("1/2", 2))
+    assert r.verdict(1, 1) == scalecert.Verdict.Separated
+    assert scalecert.Region.from_meshes(L, B, ("1/2", 2), ("1/2", 2), parts_from_groups=False).verdict(1, 1) == scalecert.Verdict.Touching
+    with pytest.raises(scalecert.InputError, match="no groups"):
+        scalecert.Region.from_meshes(SRC / "examples" / "box.stl", B, (1, 2), (1, 2))

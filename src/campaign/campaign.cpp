@@ -249,9 +249,9 @@ std::string run_shard(const CampaignArgs& a, const Shard& s) {
         j["inputs"] = reading([&] { sc = load_scene(p, a.opt); });
         Json files = Json::array();
         for (const auto& [name, text] : golden_files(golden_stem(p), sc, [&](Json& g) {
-                 // The scene's file name, not the path as typed: the same bytes however the path
-                 // was spelled, and wherever the files were written.
-                 g["scene_file"] = p.substr(p.find_last_of('/') + 1);
+                 // The scene's copy beside it (NAME.scene.json), not the path as typed: the same
+                 // bytes however the path was spelled, and wherever the files were written.
+                 g["scene_file"] = golden_stem(p) + ".scene.json";
              })) {
             write_file_atomically(a.dir + "/" + name, text);
             files.push_back(Json::array({name, sha256_hex(text)}));

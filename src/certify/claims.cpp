@@ -881,6 +881,13 @@ Q read_number(const std::string& t, bool exact_decimals, const std::string& wher
         throw InputError(where + ": " + e.what());
     }
 }
+// A line's RHO1 RHO2, each > 0; a refusal names the one at fault.
+std::pair<Q, Q> read_scalings(const std::string& a, const std::string& b, bool exact_decimals, const std::string& where) {
+    const Q r1 = read_number(a, exact_decimals, where + ": rho1"), r2 = read_number(b, exact_decimals, where + ": rho2");
+    if (sgn(r1) <= 0) throw InputError(where + ": rho1: scalings must be > 0 (got " + to_exact_string(r1) + ")");
+    if (sgn(r2) <= 0) throw InputError(where + ": rho2: scalings must be > 0 (got " + to_exact_string(r2) + ")");
+    return {r1, r2};
+}
 }  // namespace
 
 static Json entry(size_t index, Json claim, bool right, Json proof) {
@@ -909,8 +916,7 @@ std::string certify_claim_lines(const ClaimModels& models, const std::string& cl
         std::string detail;
         proof.reset();
         if (w[0] == "curve" && w.size() == 3) {
-            Q r1 = read_number(w[1], exact_decimals, where), r2 = read_number(w[2], exact_decimals, where);
-            if (sgn(r1) <= 0 || sgn(r2) <= 0) throw InputError(where + ": scalings must be > 0");
+            const auto [r1, r2] = read_scalings(w[1], w[2], exact_decimals, where);
             Q f = models.curve_value(r1);
             right = f == r2;
             o["claim"] = "curve";
@@ -934,8 +940,7 @@ std::string certify_claim_lines(const ClaimModels& models, const std::string& cl
             detail = "growth distance " + w[1] + ": exact " + num(exact_g, 17) + ", off by " + num(g - exact_g, 17);
             if (certificate) proof.emplace(Json{{"kind", "growth_distance"}, {"value", ex(g)}}, models.growth_proof());
         } else if (w.size() == 3) {
-            Q r1 = read_number(w[0], exact_decimals, where), r2 = read_number(w[1], exact_decimals, where);
-            if (sgn(r1) <= 0 || sgn(r2) <= 0) throw InputError(where + ": scalings must be > 0");
+            const auto [r1, r2] = read_scalings(w[0], w[1], exact_decimals, where);
             const std::string& v = w[2];
             if (v != "separated" && v != "touching" && v != "overlapping" && v != "intersecting")
                 throw InputError(where + ": unknown verdict " + quoted(v) + " (separated, touching, overlapping, intersecting)");
@@ -1074,8 +1079,7 @@ std::string certify_fp(CompoundJudge& judge, const std::string& claims, const st
             if (w.size() != 3 || w[0] == "curve")
                 throw InputError(where + ": expected 'RHO1 RHO2 VERDICT' (on objects made of parts, verdict lines only: a curve and a "
                                          "growth distance are claims on convex objects)");
-            const Q r1 = read_number(w[0], opt.exact_decimals, where), r2 = read_number(w[1], opt.exact_decimals, where);
-            if (sgn(r1) <= 0 || sgn(r2) <= 0) throw InputError(where + ": scalings must be > 0");
+            const auto [r1, r2] = read_scalings(w[0], w[1], opt.exact_decimals, where);
             const std::string& v = w[2];
             if (v != "separated" && v != "touching" && v != "overlapping" && v != "intersecting")
                 throw InputError(where + ": unknown verdict " + quoted(v) + " (separated, touching, overlapping, intersecting)");

@@ -78,6 +78,20 @@ private:
 }  // namespace
 
 std::optional<bool> membership_by_points(const PointSets& S, int i, const Q& rho, const Vec3q& x, Json* proof) {
+    // Beyond the body's box along an axis (six exact support queries): out, with that axis. A
+    // point far away, or beyond doubles (where the distance's guess in doubles is lost), ends here.
+    const Vec3q& s = S.seed(i);
+    for (int a = 0; a < 3; ++a)
+        for (int sign : {1, -1}) {
+            Vec3z e{Z(0), Z(0), Z(0)};
+            e[a] = sign;
+            const Vec3q v = S.point(i, S.argmax(i, e));
+            const Q reach = sign * (s[a] + rho * (v[a] - s[a]));
+            if (sign * x[a] > reach) {
+                if (proof) *proof = Json{{"out", normal_json(e)}};
+                return false;
+            }
+        }
     const std::optional<ProvedDistance> pd = proved_distance(BodyAndPoint(S, i, x), rho, Q(1));
     if (!pd) return std::nullopt;
     const bool inside = sgn(pd->d.squared) == 0;

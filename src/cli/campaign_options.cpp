@@ -33,6 +33,8 @@ void add_audit_options(CLI::App* sub, internal::CampaignArgs& a) {
     sub->add_option("--count", a.count, "scenes per eps in the sweep (1 to 10^6)")->check(CLI::Range(1, 1000000));
     sub->add_option("--seed", a.seed, "the run's random seed (each family scene's own seed is derived from it, K and its index)");
     sub->add_flag("--binary-doubles", a.opt.binary_doubles, "read the scene files' numbers as IEEE doubles");
+    sub->add_flag("--parts-from-groups", a.opt.parts_from_groups,
+                  "read each OBJ mesh a scene names as an object made of convex parts, a part per 'o' or 'g' group");
     sub->add_option("--out", a.out, "write the JSON to FILE (atomically) instead of standard output")->type_name("FILE")->check(file_name());
     sub->add_option("--csv", a.csv, "also write the rows as CSV to FILE (both files written together)")->type_name("FILE")->check(file_name());
     sub->add_flag("!--no-measures", a.measures, "verdicts only: skip comparing the methods' distances and depths with the exact ones (proved at floating-point speed)");

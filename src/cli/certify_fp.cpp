@@ -22,7 +22,7 @@ Command add_certify_fp(CLI::App& app) {
     auto a = std::make_shared<Args>();
     CLI::App* sub = app.add_subcommand("certify-fp", "mark a floating-point program's claims right or wrong, exactly (exit 1 if any is wrong)");
     a->scene.add(sub);
-    sub->add_option("CLAIMS", a->claims, "claims: JSON (scalecert-claims-1, certificates/CLAIMS.md), or lines 'RHO1 RHO2 VERDICT', 'curve RHO1 RHO2', 'growth RHO'; "
+    sub->add_option("CLAIMS", a->claims, "claims ('-': standard input): JSON (scalecert-claims-1, certificates/CLAIMS.md), or lines 'RHO1 RHO2 VERDICT', 'curve RHO1 RHO2', 'growth RHO'; "
                                          "on objects made of parts: verdict, separating_plane, witness_point and distance claims, and verdict lines");
     sub->add_option("--tolerance", a->tolerance, "accept numeric claims within this relative error (exact, e.g. 1e-9; JSON claims); verdicts, contacts, planes and witness points must be exact");
     sub->add_flag("--json", a->json, "the report as JSON");

@@ -28,7 +28,7 @@ Command add_classify(CLI::App& app) {
                 a->scene.shift_positionals({&a->pairs});
                 if (a->pairs.empty()) a->pairs = "-";
                 StageClock clock;
-                internal::Session session = open_session(a->scene, Engine::Auto, clock);
+                OpenScene o = open_any(a->scene, Engine::Auto, clock);
                 std::vector<double> r1, r2;
                 const std::string pairs = read_input(a->pairs, "pairs file", kMaxPairsBytes);
                 internal::note_inputs({a->pairs});  // --out PAIRS would replace it
@@ -40,6 +40,14 @@ Command add_classify(CLI::App& app) {
                 }
                 clock.lap("parse pairs");
                 std::vector<Verdict> out;
+                if (o.compound) {  // objects made of parts: located on the region's grid (pairs in I1 x I2)
+                    const std::vector<std::int8_t> v = o.compound->classify(r1, r2, a->threads, a->pairs);
+                    out.resize(v.size());
+                    for (size_t k = 0; k < v.size(); ++k) out[k] = v[k] == 0 ? Verdict::Separated : v[k] == 1 ? Verdict::Touching : Verdict::Overlapping;
+                    emit(verdict_lines(out), a->out);
+                    return 0;
+                }
+                internal::Session& session = *o.convex;
                 const internal::Session::Decider d = session.decider_for(r1);
                 FastCurve fc(d.model, d.curve);
                 const StageCounts sc = classify_batch(fc, r1, r2, out, a->threads);

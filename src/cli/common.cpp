@@ -21,7 +21,18 @@ void SceneArgs::add(CLI::App* sub) {
     sub->add_option("--seed1", seed[0], "P1's seed as X,Y,Z (default: the mean of its vertices)");
     sub->add_option("--seed2", seed[1], "P2's seed as X,Y,Z");
     sub->add_flag("--binary-doubles", opt.binary_doubles, "read text numbers as the IEEE doubles strtod gives");
+    sub->add_flag("--parts-from-groups", opt.parts_from_groups,
+                  "read each OBJ mesh of an object (--p1, --p2, or an object's \"mesh\" in SCENE) as an object made of convex "
+                  "parts: a part per 'o' or 'g' group, of the vertices its faces name (other mesh formats are refused: they have no groups)");
 }
+
+namespace {
+// The readers' remarks (an OBJ with groups read as one convex object), once each on stderr.
+void say_notes(const internal::ExactScene& sc) {
+    for (const auto& p : sc.P)
+        if (!p.note.empty()) std::cerr << "scalecert: note: " << p.note << "\n";
+}
+}  // namespace
 
 internal::ExactScene SceneArgs::load() const {
     const bool any_mesh_option = !mesh[0].empty() || !mesh[1].empty() || !interval[0].empty() || !interval[1].empty() ||
@@ -31,6 +42,7 @@ internal::ExactScene SceneArgs::load() const {
         internal::ExactScene sc = load_scene(path, opt);
         internal::note_inputs({path});
         internal::note_inputs(sc.files);
+        say_notes(sc);
         return sc;
     }
     internal::note_inputs({mesh[0], mesh[1]});
@@ -50,6 +62,7 @@ internal::ExactScene SceneArgs::load() const {
         }
     }
     finish_scene(sc, "command line");
+    say_notes(sc);
     return sc;
 }
 
@@ -190,6 +203,34 @@ internal::Session open_session(const SceneArgs& args, Engine engine, StageClock&
     clock.lap("read scene");
     s.set_clock(&clock);
     return s;
+}
+
+OpenScene open_any(SceneArgs& args, Engine engine, StageClock& clock) {
+    args.opt.allow_parts = true;
+    OpenScene o;
+    internal::ExactScene full;
+    if (engine != Engine::Hull)
+        if (std::shared_ptr<const internal::CompactScene> cs = args.load_compact(&full)) {
+            clock.lap("read scene (compact)");
+            o.convex.emplace(std::move(cs), args.name(), engine);
+            o.convex->set_clock(&clock);
+            return o;
+        }
+    if (full.P[0].points.empty()) full = args.load();
+    clock.lap("read scene");
+    if (!full.P[0].parts.empty() || !full.P[1].parts.empty()) {
+        o.compound = std::make_unique<internal::CompoundSession>(std::move(full), args.name());
+        return o;
+    }
+    o.convex.emplace(std::move(full), args.name(), engine);
+    o.convex->set_clock(&clock);
+    return o;
+}
+
+void refuse_parts(const OpenScene& o, const std::string& name, const std::string& what) {
+    if (o.compound)
+        throw InputError(name + ": " + what + " is defined for two convex objects; on objects made of parts, scalecert region gives where "
+                                "they meet (its labelled boundary, switch points and growth set)");
 }
 
 internal::Segment parse_segment(const std::string& spec, const HullModel& m) {

@@ -2,6 +2,7 @@
 // registers its options and returns the function that runs it.
 #pragma once
 #include "certify/certificate.hpp"
+#include "session/compound_session.hpp"
 #include "session/session.hpp"
 #include "numeric/timing.hpp"
 
@@ -9,6 +10,7 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace scalecert::cli {
@@ -54,6 +56,16 @@ using internal::Engine;
 void add_engine(CLI::App* sub, std::string& engine);
 Engine engine_named(const std::string& engine);
 internal::Session open_session(const SceneArgs& scene, Engine engine, internal::StageClock& clock);
+// The scene read once, objects made of parts allowed (--parts-from-groups, "parts"): a convex
+// session, or the compound session when either object has parts. Every command but curve, golden
+// and grid takes both.
+struct OpenScene {
+    std::optional<internal::Session> convex;
+    std::unique_ptr<internal::CompoundSession> compound;
+};
+OpenScene open_any(SceneArgs& scene, Engine engine, internal::StageClock& clock);
+// InputError on a scene of parts: `what` ("the touching curve") is for two convex objects.
+void refuse_parts(const OpenScene& o, const std::string& name, const std::string& what);
 // A segment for --segment: seeds | ellipsoids | x1,y1,z1:x2,y2,z2.
 internal::Segment parse_segment(const std::string& spec, const internal::HullModel& m);
 

@@ -22,7 +22,9 @@ Command add_curve(CLI::App& app) {
                 StageClock clock;
                 // --segment lists the faces of both hulls: the hull path.
                 const Engine e = !a->segment.empty() ? Engine::Hull : engine_named(a->engine);
-                internal::Session session = open_session(a->scene, e, clock);
+                OpenScene o = open_any(a->scene, e, clock);
+                refuse_parts(o, a->scene.name(), "the touching curve");
+                internal::Session& session = *o.convex;
                 Json j;
                 if (a->segment.empty()) {
                     j = curve_json(session.curve_model(), session.curve());

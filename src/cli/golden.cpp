@@ -54,7 +54,9 @@ Command add_golden(CLI::App& app) {
                 // main's output journal removes what was written if the run fails later).
                 for (const std::string& p : a->scenes) {
                     if (mesh_scene && p == mesh_scene->first) continue;  // read above, written below
-                    load_scene(p, a->opt);
+                    const ExactScene sc = load_scene(p, a->opt);
+                    for (const auto& o : sc.P)
+                        if (!o.note.empty()) std::cerr << "scalecert: note: " << o.note << "\n";
                     for (const char* ext : {".scene.json", ".golden.json", ".golden.csv"}) {
                         const std::string out = a->dir + "/" + golden_stem(p) + ext;
                         struct stat st {};

@@ -15,12 +15,14 @@ Command add_partition(CLI::App& app) {
     a->scene.add(sub);
     add_out(sub, a->out);
     add_engine(sub, a->engine);
-    example(sub, "Example:\n  scalecert partition certificates/scenes/stacked_cubes.json --out cert.json && scalecert-check cert.json");
+    example(sub, "Examples:\n  scalecert partition certificates/scenes/stacked_cubes.json --out cert.json && scalecert-check cert.json\n"
+                 "  scalecert partition tests/data/compound_u_peg.json --out u_peg.cert.json   # objects made of parts: a compound_partition");
     return {sub, [a] {
                 StageClock clock;
-                // From 2,000 points the walk's curve and witnesses (no hull), as for `curve`.
-                internal::Session session = open_session(a->scene, engine_named(a->engine), clock);
-                emit(session.partition_text(), a->out);
+                // From 2,000 points the walk's curve and witnesses (no hull), as for `curve`; on
+                // objects made of parts, the region's certified partition (region --certificate).
+                OpenScene o = open_any(a->scene, engine_named(a->engine), clock);
+                emit(o.compound ? dump(o.compound->partition_json()) : o.convex->partition_text(), a->out);
                 return 0;
             }};
 }

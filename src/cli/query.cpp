@@ -28,7 +28,26 @@ Command add_query(CLI::App& app) {
                 if (a->rho1.empty() || a->rho2.empty()) throw InputError("RHO1 and RHO2 are required (see scalecert query --help)");
                 StageClock clock;
                 // The verdict and its certificate may come from the walk; a segment needs the hull.
-                internal::Session session = open_session(a->scene, engine_named(a->engine), clock);
+                OpenScene o = open_any(a->scene, engine_named(a->engine), clock);
+                if (o.compound) {
+                    // Objects made of parts: the verdict at any (ρ1, ρ2) > 0 by the compound judge;
+                    // with --json, the compound judgements certificate of that verdict (scalecert-check).
+                    if (!a->segment.empty() || a->in_t) throw InputError("--segment and --in-t are for two convex objects");
+                    const Q r1 = read_rho(a->rho1, "RHO1", a->scene.opt), r2 = read_rho(a->rho2, "RHO2", a->scene.opt);
+                    CompoundJudge& judge = o.compound->judge();
+                    const int v = judge.verdict(r1, r2).verdict;
+                    const char* name = v == 2 ? "overlapping" : v == 1 ? "touching" : "separated";
+                    std::string text = std::string(name) + "\n";
+                    if (a->json) {
+                        const Json claims{{"format", "scalecert-claims-1"},
+                                          {"claims", Json::array({Json{{"kind", "verdict"}, {"rho1", to_exact_string(r1)}, {"rho2", to_exact_string(r2)}, {"verdict", name}}})}};
+                        long wrong = 0;
+                        certify_fp(judge, dump(claims), a->scene.name(), ClaimOptions{false, Q(0), true}, &wrong, nullptr, &text);
+                    }
+                    emit(text, a->out);
+                    return 0;
+                }
+                internal::Session& session = *o.convex;
                 std::string segment = a->segment;
                 if (a->in_t && segment.empty()) segment = "seeds";
                 std::optional<Segment> seg;

@@ -24,9 +24,6 @@ Command add_region(CLI::App& app) {
     CLI::App* sub = app.add_subcommand("region", "where objects made of convex parts meet (overlap or touch) in I1 x I2: each part pair's exact polygon, their union with its labelled boundary (JSON)");
     a->scene.add(sub);
     add_out(sub, a->out);
-    sub->add_flag("--parts-from-groups", a->scene.opt.parts_from_groups,
-                  "read each OBJ mesh of an object (--p1, --p2, or an object's \"mesh\" in SCENE) as a compound: a part per "
-                  "'o' or 'g' group, of the vertices its faces name (other mesh formats are refused: they have no groups)");
     sub->add_option("--at", a->at, "also the exact verdict at RHO1,RHO2 (in I1 x I2), with the pair that decides it");
     sub->add_option("--certificate", a->certificate,
                     "also write the certified partition (kind compound_partition): each part pair's overlap polygon with "

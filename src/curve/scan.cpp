@@ -696,8 +696,22 @@ const Vec3q& CloudPoints::seed(int i) const { return sc_->seed[i]; }
 const Z& CloudPoints::scale(int i) const { return sc_->P[i].scale; }
 int CloudPoints::argmax(int i, const Vec3z& n) const {
     Walked<Support> s = t_->c[i]->support(n);
-    if (std::holds_alternative<WalkStop>(s)) throw PointSetsCannot{};
-    return std::get<Support>(s).all.front();
+    if (!std::holds_alternative<WalkStop>(s)) return std::get<Support>(s).all.front();
+    // A normal the trees' double filter cannot take (beyond doubles, or 0 there): every point,
+    // exactly, in integers (linear, and no hull).
+    const IntPoints& P = sc_->P[i];
+    int best = 0;
+    Z bv, v, t;
+    for (size_t k = 0; k < P.size(); ++k) {
+        const std::int64_t* x = P.at(k);
+        v = 0;
+        for (int c = 0; c < 3; ++c) {
+            mpz_set_si(t.get_mpz_t(), x[c]);
+            v += t * n[c];
+        }
+        if (k == 0 || v > bv) bv = v, best = static_cast<int>(k);
+    }
+    return best;
 }
 int CloudPoints::dargmax(int i, const D3& d) const { return t_->c[i]->dbest(d.data()); }
 std::uint64_t CloudPoints::support_queries() const { return t_->st.support_queries; }

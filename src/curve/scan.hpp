@@ -79,7 +79,7 @@ WalkResult scan_model(std::shared_ptr<const CompactScene> sc, const std::optiona
 // The points of a compact scene behind the walk's bounding-volume trees, for the measures
 // (measures.hpp) of scenes too large for a hull: every support query exact (filter, then the few
 // candidates in integers), no hull built. Building the trees is linear (a radix sort of Morton
-// codes); argmax throws PointSetsCannot for a normal beyond doubles.
+// codes); argmax scans every point exactly for a normal beyond doubles.
 class CloudPoints final : public PointSets {
 public:
     explicit CloudPoints(std::shared_ptr<const CompactScene> sc);

@@ -49,6 +49,7 @@ InputObserver::InputObserver(Fn f) : f_(std::move(f)), prev_(t_observer) { t_obs
 InputObserver::~InputObserver() { t_observer = prev_; }
 
 int open_regular_file(const std::string& path, const std::string& what, bool no_follow, size_t* size) {
+    if (path.find('\0') != std::string::npos) throw InputError(quoted(path) + ": a file name with a NUL byte");
     // A name that is there and not a regular file is refused before it is opened at all (opening
     // a device can have effects); the descriptor's own fstat below settles any race.
     struct stat st {};
@@ -253,7 +254,12 @@ void write_files_atomically(const std::vector<std::pair<std::string, std::string
             struct stat st {};
             if (::lstat(path.c_str(), &st) == 0) {
                 kept = tmps[i] + ".old";
-                if (::link(path.c_str(), kept.c_str()) != 0) kept.clear();
+                // A second name for the old file; where the file system has no hard links, the old
+                // file moved aside instead (the target is then missing for a moment).
+                if (::link(path.c_str(), kept.c_str()) != 0 && std::rename(path.c_str(), kept.c_str()) != 0) {
+                    for (size_t k = i; k < tmps.size(); ++k) ::unlink(tmps[k].c_str());
+                    throw InputError(path + ": cannot keep the file it replaces (to put it back if the command fails)");
+                }
             }
         }
         if (std::rename(tmps[i].c_str(), path.c_str()) != 0) {

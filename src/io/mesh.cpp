@@ -407,9 +407,36 @@ std::vector<Vec3q> parse_mesh(const std::string& bytes, MeshFormat f, const std:
     throw InputError(name + ": unknown mesh format");
 }
 
-std::vector<Vec3q> read_mesh(const std::string& path, const ReadOptions& opt) {
+namespace {
+// The 'o' and 'g' groups of an OBJ text that have faces (the faces before the first such line
+// count as one).
+size_t obj_groups_with_faces(const std::string& text) {
+    size_t groups = 0;
+    bool faces = false;
+    for (size_t b = 0; b < text.size();) {
+        size_t e = text.find('\n', b);
+        if (e == std::string::npos) e = text.size();
+        size_t i = b;
+        while (i < e && (text[i] == ' ' || text[i] == '\t')) ++i;
+        if (i + 1 < e && (text[i + 1] == ' ' || text[i + 1] == '\t')) {
+            if (text[i] == 'f') faces = true;
+            if (text[i] == 'o' || text[i] == 'g') groups += faces, faces = false;
+        }
+        b = e + 1;
+    }
+    return groups + faces;
+}
+}  // namespace
+
+std::vector<Vec3q> read_mesh(const std::string& path, const ReadOptions& opt, std::string* note) {
     const MeshFormat f = mesh_format_of(path);
-    return parse_mesh(read_input(path, "mesh file", kMaxSceneBytes), f, path, opt);
+    const std::string bytes = read_input(path, "mesh file", kMaxSceneBytes);
+    std::vector<Vec3q> pts = parse_mesh(bytes, f, path, opt);
+    if (note && f == MeshFormat::Obj)
+        if (const size_t g = obj_groups_with_faces(bytes); g >= 2)
+            *note = path + ": " + std::to_string(g) + " groups with faces, read as one convex object (the hull of all its vertices); "
+                    "--parts-from-groups (or the scene key \"parts_from_groups\") reads a convex part per group";
+    return pts;
 }
 
 std::vector<std::vector<Vec3q>> read_obj_groups(const std::string& path, const ReadOptions& opt) {
@@ -423,7 +450,7 @@ std::vector<std::vector<Vec3q>> read_obj_groups(const std::string& path, const R
 
 void read_mesh_object(const std::string& path, const ReadOptions& opt, PolyInput& in) {
     if (!opt.parts_from_groups) {
-        in.points = read_mesh(path, opt);
+        in.points = read_mesh(path, opt, &in.note);
         return;
     }
     in.parts = read_obj_groups(path, opt);

@@ -114,7 +114,7 @@ ExactScene parse_scene_text(const std::string& text, const std::string& name, co
                     o2.parts_from_groups = true;
                     read_mesh_object(path, o2, into);
                 } else {
-                    pts = mesh ? read_mesh(path, opt) : parse_mesh(read_input(path, "OFF file", kMaxSceneBytes), MeshFormat::Off, path, opt);
+                    pts = mesh ? read_mesh(path, opt, &into.note) : parse_mesh(read_input(path, "OFF file", kMaxSceneBytes), MeshFormat::Off, path, opt);
                 }
             } else {
                 r.fail(where, "missing field \"vertices\" (or \"mesh\", \"off\")");
@@ -124,7 +124,8 @@ ExactScene parse_scene_text(const std::string& text, const std::string& name, co
             only(*p, pname[i], {"parts", "seed"});
             const std::string where = std::string(pname[i]) + ".parts";
             if (!opt.allow_parts)
-                r.fail(where, "an object made of parts is read by `scalecert region`, `scalecert certify-fp` and `scalecert audit` only (the other commands take convex objects)");
+                r.fail(where, "an object made of parts is read by `scalecert region`, `query`, `partition`, `classify`, `certify-fp` and `audit`; "
+                              "`curve`, `golden` and `grid` are for two convex objects (`scalecert region` gives where objects made of parts meet)");
             if (parts->kind != JNode::Array || parts->items.empty()) r.fail(where, "expected a nonempty list of parts");
             if (parts->items.size() > kMaxParts) r.fail(where, "more than " + std::to_string(kMaxParts) + " parts (the limit)");
             for (size_t k = 0; k < parts->items.size(); ++k) {
@@ -147,7 +148,7 @@ ExactScene parse_scene_text(const std::string& text, const std::string& name, co
                 const std::string w = std::string(pname[i]) + ".parts_from_groups";
                 if (g->kind != JNode::Bool) r.fail(w, "expected true or false");
                 if (!opt.allow_parts)
-                    r.fail(w, "read by `scalecert region`, `scalecert certify-fp` and `scalecert audit` only (the other commands read every mesh as one convex object: drop the key)");
+                    r.fail(w, "not read by `curve`, `golden` and `grid`, which are for two convex objects (drop the key: the mesh is then read as one convex object)");
                 groups = g->text == "true";
                 if (groups && !p->find("mesh")) r.fail(w, "parts from groups need an OBJ \"mesh\"");
             }

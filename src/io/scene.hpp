@@ -14,6 +14,9 @@ struct PolyInput {
     // A compound object (issue 22): its convex parts, each the hull of its points, all scaled about
     // the one seed. Empty for a plain (convex) object. Read only with ReadOptions::allow_parts.
     std::vector<std::vector<Vec3q>> parts;
+    // A remark for the user, said once on stderr by the command (an OBJ mesh with several groups
+    // read as one convex object); empty when there is none.
+    std::string note;
 };
 
 // At most this many parts an object (each of at least 4 points, all of them within kMaxPoints).

@@ -115,7 +115,7 @@ Q parse_exact(const std::string& text) {
             return r;
         }
     }
-    auto bad = [&text] { return InputError(quoted(text) + " is not an exact number"); };
+    auto bad = [&text] { return InputError(quoted(text) + " is not an exact number (a decimal such as -1.5e-3, or a fraction p/q)"); };
     auto sized = [&text](Q r) {
         if (mpz_sizeinbase(r.get_num_mpz_t(), 2) > kMaxNumberBits || mpz_sizeinbase(r.get_den_mpz_t(), 2) > kMaxNumberBits)
             throw InputError(quoted(text) + " has more than " + std::to_string(kMaxNumberBits) +

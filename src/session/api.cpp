@@ -327,6 +327,21 @@ Region Region::load(const std::string& path) {
     return Region(std::make_shared<Impl>(Impl{internal::CompoundSession(load_scene(path, opt), path)}));
 }
 
+Region Region::from_meshes(const std::string& p1_path, const std::string& p2_path, Interval i1, Interval i2, bool parts_from_groups) {
+    internal::ReadOptions opt;
+    opt.allow_parts = true;
+    opt.parts_from_groups = parts_from_groups;
+    internal::ExactScene sc;
+    const std::string* paths[2] = {&p1_path, &p2_path};
+    const Interval* ranges[2] = {&i1, &i2};
+    for (int i = 0; i < 2; ++i) {
+        read_mesh_object(*paths[i], opt, sc.P[i]);
+        seed_and_range(sc, i, std::nullopt, *ranges[i]);
+    }
+    finish_scene(sc, "region");
+    return Region(std::make_shared<Impl>(Impl{internal::CompoundSession(std::move(sc), p1_path + " and " + p2_path)}));
+}
+
 Verdict Region::verdict(const Rational& rho1, const Rational& rho2) const {
     const std::string v = impl_->session.verdict(rho1, rho2).verdict;
     return v == "separated" ? Verdict::Separated : v == "touching" ? Verdict::Touching : Verdict::Overlapping;
