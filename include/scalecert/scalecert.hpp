@@ -174,6 +174,10 @@ public:
     Region(std::vector<std::vector<Point>> parts1, std::vector<std::vector<Point>> parts2, Interval i1, Interval i2,
            std::optional<Point> seed1 = {}, std::optional<Point> seed2 = {});
     static Region load(const std::string& scene_json_path);  // objects with "parts" or plain (one part)
+    // From mesh files (.off .obj .ply .stl): with parts_from_groups, each OBJ file's 'o'/'g' groups
+    // with faces are its parts (other formats are refused); without, each mesh is one convex part.
+    static Region from_meshes(const std::string& p1_path, const std::string& p2_path, Interval i1, Interval i2,
+                              bool parts_from_groups = true);
     Verdict verdict(const Rational& rho1, const Rational& rho2) const;  // exact
     // The exact verdicts at doubles' exact values in I1 × I2, on `threads` threads (0: all cores).
     std::vector<Verdict> classify(const std::vector<double>& rho1, const std::vector<double>& rho2,
