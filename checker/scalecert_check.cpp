@@ -1758,8 +1758,8 @@ void check_judgements(const J& c) {
 constexpr size_t kMaxCompoundParts = 10000;  // parts an object: scalecert's own limit
 
 // half_plane_cut, counted before it runs: each vertex's value (3 operations) and each crossing (about 8), every
-// operation on the line's numbers and the largest vertex (the hostile review: counting the first
-// vertex only let a polygon with huge corners be cut by 40,000 small normals for 97 s).
+// operation on the line's numbers and the largest vertex (counting the first vertex only would let
+// a polygon with huge corners be cut by 40,000 small normals for 97 s).
 std::vector<P2> cut(const std::vector<P2>& p, const Q& a, const Q& b, const Q& c) {
     double big = 0;
     for (const P2& v : p) big = std::max(big, qsize(v[0]) + qsize(v[1]));

@@ -467,7 +467,7 @@ py::dict certify_arrays(const scalecert::Analysis& a, const std::string& kind, c
 // classify over two one-dimensional arrays: f(rho1, rho2) without the GIL, as an int8 array.
 using DoubleArray = py::array_t<double, py::array::c_style | py::array::forcecast>;
 // A list or array of real numbers as doubles; anything else (strings, complex numbers, objects)
-// is an InputError, not pybind's TypeError (the hostile review).
+// is an InputError, not pybind's TypeError.
 DoubleArray doubles_of(const py::handle& h, const char* what) {
     const py::object np = py::module_::import("numpy");
     py::object a = np.attr("asarray")(h);

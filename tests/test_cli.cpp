@@ -1170,3 +1170,23 @@ BOOST_AUTO_TEST_CASE(every_command_takes_objects_made_of_parts) {
     BOOST_TEST(g.status == 0);
     BOOST_TEST(g.err.find("2 groups with faces") != std::string::npos, g.err);
 }
+
+// A claim that needs the hull model where the walk cannot answer is refused in one line past the
+// edge-pair limit, before any contact line is built: two copies of one 3,000-point near-sphere
+// about one seed (the walk does not take coincident seeds), about 9,000 edges each, 8*10^7 edge
+// pairs. A curve point needs the curve; the growth distance, 0 there, needs no model.
+BOOST_AUTO_TEST_CASE(claims_past_the_hull_model_limit_are_refused) {
+    std::mt19937 g(7);
+    std::normal_distribution<double> N(0, 1);
+    std::ostringstream off;
+    off << "OFF\n3000 0 0\n";
+    for (int i = 0; i < 3000; ++i) {
+        const double x = N(g), y = N(g), z = N(g), l = std::sqrt(x * x + y * y + z * z);
+        off << std::lround(1e6 * x / l) << ' ' << std::lround(1e6 * y / l) << ' ' << std::lround(1e6 * z / l) << '\n';
+    }
+    const fs::path s = write("sphere3000.off", off.str());
+    const std::string scene = "--p1 " + s.string() + " --p2 " + s.string() + " --i1 1/2,2 --i2 1/2,2";
+    expect_error("curve point past the limit", "certify-fp " + scene + " " + write("cp.txt", "curve 1 1\n").string(),
+                 "needs the hull model (every contact line)");
+    BOOST_TEST(run("certify-fp " + scene + " " + write("v.txt", "growth 0\n").string()).status == 0);
+}

@@ -268,8 +268,7 @@ void write_prism(const std::string& path, int n, long R, bool second) {
 
 // Every claim kind on crossed n-gon prisms (O(n^2) Minkowski facets), one whole `certify-fp
 // --certificate` process per kind, and the checker on its certificate: each claim answers from the
-// walk and the two hulls, none from the hull model (the hostile review: a witness point, a distance
-// with closest points, a curve or a switch point built it, 76 s and 2.26 GB at n = 4,800).
+// walk and the two hulls, none from the hull model (76 s and 2.26 GB at n = 4,800).
 std::vector<std::string> prism_claim_rows;
 void prism_claim_costs(const std::vector<int>& sizes) {
     const auto dir = std::filesystem::temp_directory_path() / ("scalecert-bench-pc-" + std::to_string(::getpid()));
@@ -517,7 +516,7 @@ void large_claim_costs() {
     add("10^6 + 10^6 points: the depth with its judgements certificate", t_depth_c, "");
 }
 
-// Compounds (issue 22): two objects of k × k parts (random 8-point parts on a grid, 4 apart), at
+// Compounds: two objects of k × k parts (random 8-point parts on a grid, 4 apart), at
 // `gap` along x; I1 = I2 = [1/2, 2]. The region, its certificate, and queries located on the grid
 // against libccd's GJK looped over the part pairs (all of them, and those the boxes do not prune).
 ExactScene compound(int k, int gap, unsigned seed) {

@@ -6,8 +6,8 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 SCENE="${1:-certificates/scenes/fig5_vf_ve_ee.json}"
 tools/install-deps.sh
-echo "building (a few minutes the first time) ..." >&2
-tools/build.sh >/dev/null
+echo "building (about 5 minutes on 2 idle cores the first time) ..." >&2
+tools/build.sh
 name="$(basename "$SCENE" .json)"
 out="out/$name"
 mkdir -p "$out/figures"

@@ -7,6 +7,6 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 tools/install-deps.sh
 tools/build.sh
-(cd build && ctest --output-on-failure)
+(cd build && ctest --output-on-failure -j"$(nproc)")
 n=$(cd build && ctest -N | sed -n 's/^Total Tests: *//p')
 echo "tests: $n passed, 0 failed"

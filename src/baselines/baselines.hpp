@@ -66,7 +66,7 @@ std::unique_ptr<Method> make_method(const std::string& name, const Model& m, con
 // Those names, in that order.
 std::vector<std::string> method_names();
 
-// ---- Objects made of convex parts (issue 22) ----------------------------------------------------
+// ---- Objects made of convex parts ---------------------------------------------------------------
 // Each object's parts as doubles (the nearest double to each exact coordinate), each part with its
 // exact hull's faces (indices into its own points, as given), all scaled about the object's seed.
 // A plain (convex) object is one part.

@@ -1,4 +1,4 @@
-// Audits of floating-point code on objects made of convex parts (issue 22, item 6): Bullet's
+// Audits of floating-point code on objects made of convex parts: Bullet's
 // compound shapes, FCL's broad-phase managers of convex parts and libccd's GJK over the part pairs,
 // judged against CompoundJudge's exact verdicts at points on the overlap region's boundary and
 // pushed off it by relative distances 2^-4 ... 2^-52.

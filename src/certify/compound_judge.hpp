@@ -1,4 +1,4 @@
-// Judgements on two compounds at one scaling pair (issue 22, item 6): the exact verdict, the
+// Judgements on two compounds at one scaling pair: the exact verdict, the
 // distance (the least over the part pairs), a point's membership and a plane's extents, each at
 // any (ρ1, ρ2) > 0 (inside I1 × I2 or not) and each with its proof for scalecert-check
 // (certificates/FORMAT.md, "A compound judgements file").

@@ -1,4 +1,4 @@
-// Stage 7 for compounds (issue 22): the certified partition of I1 × I2 for two objects made of
+// Stage 7 for compounds: the certified partition of I1 × I2 for two objects made of
 // convex parts (kind "compound_partition", certificates/FORMAT.md "A compound partition").
 //
 // The objects meet at (ρ1, ρ2) iff some part pair does, so the file certifies each pair's meeting

@@ -81,7 +81,7 @@ Command add_classify(CLI::App& app);
 Command add_grid(CLI::App& app);
 Command add_certify_fp(CLI::App& app);
 Command add_golden(CLI::App& app);
-Command add_region(CLI::App& app);  // compounds (issue 22)
+Command add_region(CLI::App& app);  // objects made of parts: where they meet
 Command add_audit(CLI::App& app);
 
 }  // namespace scalecert::cli

@@ -1,5 +1,5 @@
-// scalecert region: where two objects made of convex parts overlap in I1 × I2 (issue 22, first
-// room): each part pair's exact polygon, their union, and the growth set along ρ1 = ρ2.
+// scalecert region: where two objects made of convex parts overlap in I1 × I2: each part pair's
+// exact polygon, their union, and the growth set along ρ1 = ρ2.
 #include "common.hpp"
 #include "certify/classify.hpp"
 #include "file_name.hpp"

@@ -131,7 +131,7 @@ CompoundBoundary label_boundary(const CompoundRegion& r, const ExactScene& sc) {
     // start; `reach`, the largest end among the intervals up to each. A ring edge's pair edges are
     // then found from the last one starting before it ends, back while one can still reach it: the
     // work follows the intervals that meet ring edges, not all the line's intervals for each ring
-    // edge (the hostile review: 1,000 pair polygons sharing two lines took 9.6 s, quadratically).
+    // edge (1,000 pair polygons sharing two lines took 9.6 s, quadratically).
     struct PairEdge {
         size_t pair;
         Q s0, s1;

@@ -1,4 +1,4 @@
-// Compounds (issue 22, item 2): the overlap region's boundary, labelled. Each edge of the union's
+// Compounds: the overlap region's boundary, labelled. Each edge of the union's
 // rings lies on a side of I1 × I2 or on an edge of some part pair's polygon, whose line is one of
 // the pair's half-planes a ρ1 + b ρ2 >= c holding with equality (a = hA(n), b = hB(n), c = n·d):
 // there the two parts touch through the contact features that every such normal n picks out. The

@@ -1,5 +1,5 @@
-// Exact verdicts of two compounds at scaling pairs given as doubles, after one build (issue 22,
-// item 4): a grid over I1 × I2 whose lines are doubles, each cell labelled once — inside some
+// Exact verdicts of two compounds at scaling pairs given as doubles, after one build:
+// a grid over I1 × I2 whose lines are doubles, each cell labelled once — inside some
 // pair's overlap polygon, clear of every polygon, or the few pairs whose polygons cross it.
 //
 // Within the rectangle a part pair meets exactly on its polygon (region.hpp), so a query point

@@ -1,4 +1,4 @@
-// Compounds (issue 22), first room: the overlap region of two objects made of convex parts, all
+// Compounds: the overlap region of two objects made of convex parts, all
 // parts of an object scaled about the object's one seed, in I1 × I2.
 //
 // For parts A of object 1 and B of object 2, with d = s2 − s1, hA(n) = max over A of n·(v − s1)
@@ -107,7 +107,7 @@ constexpr std::size_t kMaxBuiltPairs = 20000;       // pairs whose swept boxes m
 constexpr double kMaxEdgePairWork = kMaxEdgePairs;            // over the built pairs, Σ edges(A) × edges(B)
 // The union (`region`) is formed only when asked and of at most kMaxUnionPolygons polygons with
 // area: its cost grows with the crossings of their boundaries, up to the square of their edges
-// (the second hostile review: 1,545 crossing strips took 47 s and 1.7 GB, and more ran out of
+// (1,545 crossing strips took 47 s and 1.7 GB, and more ran out of
 // memory inside CGAL). Past the limit `region` stays empty and union_skipped is set.
 constexpr std::size_t kMaxUnionPolygons = 1000;
 CompoundRegion compound_region(const ExactScene& sc, const std::string& name, bool with_union = true);

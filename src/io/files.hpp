@@ -57,9 +57,8 @@ void journal_dir(const std::string& dir);  // a folder created for outputs (remo
 // certify-fp --certificate CLAIMS replaced the claims it read.
 void refuse_outputs_over_inputs(const std::vector<std::string>& outputs, const std::vector<std::string>& inputs);
 // Notes files a command read (its scene, the meshes the scene names): every later
-// write_file(s)_atomically of this process refuses to replace one of them with other bytes (the
-// hostile reviews: `region SCENE --out MESH` replaced a mesh the scene named, `audit S --out S`
-// and `golden` the scenes).
+// write_file(s)_atomically of this process refuses to replace one of them with other bytes
+// (`region SCENE --out MESH` would replace a mesh the scene names, `audit S --out S` its scene).
 void note_inputs(const std::vector<std::string>& paths);
 
 }  // namespace scalecert::internal

@@ -11,7 +11,7 @@ struct PolyInput {
     std::vector<Vec3q> points;  // as given (duplicates and non-extreme points allowed); a compound's: all its parts' in order
     Vec3q seed;                 // given, or the mean of the points
     bool seed_given = false;
-    // A compound object (issue 22): its convex parts, each the hull of its points, all scaled about
+    // A compound object: its convex parts, each the hull of its points, all scaled about
     // the one seed. Empty for a plain (convex) object. Read only with ReadOptions::allow_parts.
     std::vector<std::vector<Vec3q>> parts;
     // A remark for the user, said once on stderr by the command (an OBJ mesh with several groups

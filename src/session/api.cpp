@@ -162,8 +162,10 @@ static void check_rho(const Rational& r, const char* what) {
 QueryResult Analysis::query(const Rational& rho1, const Rational& rho2) const {
     check_rho(rho1, "rho1");
     check_rho(rho2, "rho2");
-    const Model& m = impl_->session.hull();
-    const internal::QueryAnswer r = internal::query(m, impl_->session.hull_curve(), rho1, rho2, true);
+    // The walk where it proves the curve at ρ1 (as query_json and the command), else the hull model.
+    const internal::Session::Certified c = impl_->session.certified_query(rho1, rho2);
+    const Model& m = c.model;
+    const internal::QueryAnswer& r = c.result;
     QueryResult out{r.verdict, std::nullopt, std::nullopt};
     if (r.plane) out.plane = Plane{to_q(m.lines[r.plane->line].normal), r.plane->c1, r.plane->c2, r.plane->offset};
     if (r.witness) out.common = CommonPoint{r.witness->rho1, r.witness->rho2, r.witness->point};
@@ -191,7 +193,7 @@ PlaneCheck Analysis::check_plane(const Rational& rho1, const Rational& rho2, con
     check_rho(rho2, "rho2");
     const Point n = canonical(normal);
     if (sgn(n[0]) == 0 && sgn(n[1]) == 0 && sgn(n[2]) == 0) throw InputError("check_plane: the normal is zero");
-    const auto [c1, c2] = internal::plane_extents(impl_->session.hull(), n, rho1, rho2);
+    const auto [c1, c2] = internal::plane_extents(impl_->session.points(), n, rho1, rho2);  // support queries: no hull model
     PlaneCheck r;
     r.c1 = c1;
     r.c2 = c2;

@@ -1,4 +1,4 @@
-// The orchestration of compounds (issue 22): a scene whose objects may be made of convex parts,
+// The orchestration of compounds: a scene whose objects may be made of convex parts,
 // its region built at most once (with the union when a document needs it), the query grid on
 // first use. The region command and the library's Region (and so Python) go through it, as the
 // convex commands go through Session.

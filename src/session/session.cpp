@@ -37,6 +37,10 @@ void Session::decide() {
     lap("envelope and curve");
 }
 
+bool Session::seeds_coincide() const {
+    return compact_ ? compact_->seed[0] == compact_->seed[1] : scene_ && scene_->P[0].seed == scene_->P[1].seed;
+}
+
 bool Session::walked() {
     decide();
     return walk_.has_value();
@@ -143,8 +147,7 @@ Session::Decider Session::decider_for(const std::vector<double>& rho1) {
 Verdict Session::verdict(const Q& rho1, const Q& rho2) {
     // Coincident seeds: s lies inside P1(ρ1) and P2(ρ2) for every ρ1, ρ2 > 0 (the walk does not
     // take such scenes; this needs no model at all).
-    if (compact_ ? compact_->seed[0] == compact_->seed[1] : scene_ && scene_->P[0].seed == scene_->P[1].seed)
-        if (sgn(rho1) > 0 && sgn(rho2) > 0) return Verdict::Overlapping;
+    if (seeds_coincide() && sgn(rho1) > 0 && sgn(rho2) > 0) return Verdict::Overlapping;
     if (walk_covers(rho1, rho1)) return query(*walk_, walk_curve_, rho1, rho2, false).verdict;
     return query(hull(), hull_curve(), rho1, rho2, false).verdict;
 }
@@ -209,7 +212,7 @@ ClaimModels Session::claim_models() {
     // hulls (no contact line) for membership and the measures' fallbacks, and the hull model,
     // within the limits (claim_hull), only where neither serves.
     auto hull_unless_walked = [this](const Q& r1) {
-        if (!hull_ && !walk_covers(r1, r1)) claim_hull();
+        if (!hull_ && !seeds_coincide() && !walk_covers(r1, r1)) claim_hull();
     };
     return {[this]() -> const HullModel& { return claim_hull(); },
             [this]() -> const TouchingCurve& {
@@ -220,22 +223,24 @@ ClaimModels Session::claim_models() {
                 hull_unless_walked(r1);
                 return verdict(r1, r2);
             },
-            [this, hull_unless_walked](const Q& r1) {
-                hull_unless_walked(r1);
+            [this](const Q& r1) {
+                if (!hull_ && !walk_covers(r1, r1)) claim_hull();  // (coinciding seeds too: the curve needs a model)
                 return curve_value(r1);
             },
             [this] {
+                if (seeds_coincide()) return Q(0);  // every pair overlaps: no model needed
                 if (!walked()) claim_hull();
                 return curve().growth.value;
             },
             [this]() -> const PointSets& { return points(); },
             [this]() -> const Model& { return walked() ? static_cast<const Model&>(*walk_) : hulls(); },
-            [this, hull_unless_walked](const Q& r1, const Q& r2) {
-                hull_unless_walked(r1);
+            [this](const Q& r1, const Q& r2) {
+                if (!hull_ && !walk_covers(r1, r1)) claim_hull();  // (a certificate needs a model, seeds coinciding or not)
                 Certified c = certified_query(r1, r2);
                 return std::pair<const Model*, QueryAnswer>{&c.model, std::move(c.result)};
             },
             [this] {
+                if (seeds_coincide()) return Json{{"value", "0"}};  // (judgements.hpp: ρ* = 0 needs no normal)
                 if (!walked()) claim_hull();
                 return growth_proof(curve_model(), curve());
             },

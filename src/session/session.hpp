@@ -101,6 +101,7 @@ public:
 
 private:
     void decide();
+    bool seeds_coincide() const;  // every pair overlaps: s lies inside P1(ρ1) and P2(ρ2)
     void lap(const char* what) {
         if (clock_) clock_->lap(what);
     }
