@@ -187,35 +187,29 @@ bool flag_arg(const py::handle& h, const char* what) {
     if (!py::isinstance<py::bool_>(h)) throw scalecert::InputError(std::string(what) + ": expected True or False");
     return h.cast<bool>();
 }
-// A whole number (an int or anything with __index__, not a bool) in [lo, hi].
-long long whole_arg(const py::handle& h, const char* what, long long lo, long long hi) {
-    if (py::isinstance<py::bool_>(h) || !has_attr(h, "__index__"))
-        throw scalecert::InputError(std::string(what) + ": expected an int from " + std::to_string(lo) + " to " + std::to_string(hi));
+// A whole number (an int or anything with __index__, not a bool) in [lo, hi]; `range` words the
+// bounds for the message.
+mpz_class whole_arg(const py::handle& h, const char* what, const mpz_class& lo, const mpz_class& hi, const std::string& range) {
+    const scalecert::InputError bad(std::string(what) + ": expected an int from " + range);
+    if (py::isinstance<py::bool_>(h) || !has_attr(h, "__index__")) throw bad;
     mpz_class z;
-    const mpz_class zlo(static_cast<long>(lo)), zhi(static_cast<long>(hi));
     try {
         z = mpz_of(h);
-    } catch (const scalecert::InputError&) {
-        z = zhi + 1;  // beyond any limit
+    } catch (const scalecert::InputError&) {  // past the bits any number may have
+        throw bad;
     } catch (const py::error_already_set& e) {  // an __index__ that raises, or returns no int
         if (!argument_error(e)) throw;
-        z = zhi + 1;
+        throw bad;
     }
-    if (z < zlo || z > zhi) throw scalecert::InputError(std::string(what) + ": expected an int from " + std::to_string(lo) + " to " + std::to_string(hi));
-    return static_cast<long long>(z.get_si());
+    if (z < lo || z > hi) throw bad;
+    return z;
+}
+int count_arg(const py::handle& h, const char* what, long lo, long hi) {
+    return static_cast<int>(whole_arg(h, what, lo, hi, std::to_string(lo) + " to " + std::to_string(hi)).get_si());
 }
 unsigned long long seed_arg(const py::handle& h, const char* what) {
-    if (py::isinstance<py::bool_>(h) || !has_attr(h, "__index__")) throw scalecert::InputError(std::string(what) + ": expected an int from 0 to 2^64 - 1");
-    mpz_class z;
-    try {
-        z = mpz_of(h);
-    } catch (const scalecert::InputError&) {
-        z = -1;
-    } catch (const py::error_already_set& e) {
-        if (!argument_error(e)) throw;
-        z = -1;
-    }
-    if (z < 0 || mpz_sizeinbase(z.get_mpz_t(), 2) > 64) throw scalecert::InputError(std::string(what) + ": expected an int from 0 to 2^64 - 1");
+    static const mpz_class top = (mpz_class(1) << 64) - 1;
+    const mpz_class z = whole_arg(h, what, 0, top, "0 to 2^64 - 1");
     unsigned long long v = 0;
     mpz_export(&v, nullptr, -1, sizeof v, 0, 0, z.get_mpz_t());
     return v;
@@ -671,7 +665,7 @@ PYBIND11_MODULE(scalecert, m) {
         ;
     m.def("golden", [](const py::handle& family, const py::handle& count, const py::handle& seed, const py::handle& eps, const py::handle& dir) {
               const std::string f = text_arg(family, "family");
-              const int n = static_cast<int>(whole_arg(count, "count", 1, 100000));
+              const int n = count_arg(count, "count", 1, 100000);
               const unsigned long long sd = seed_arg(seed, "seed");
               const Rational e = rational(eps, "eps");
               if (sgn(e) <= 0) throw scalecert::InputError("eps must be > 0");

@@ -351,27 +351,20 @@ private:
         return sgn(f) > 0 && close(r2, f);
     }
 
-    // f on the point set for the measures (the cloud's trees on a walked scene), or on the hull
-    // model's vertices where the cloud cannot answer exactly (a normal beyond doubles).
-    template <class F>
-    auto on_points(F f) const {
-        try {
-            return f(models_.points());
-        } catch (const PointSetsCannot&) {
-            return f(HullPoints(h()));
-        }
-    }
+    // The point set for the measures: the cloud's trees on a walked scene (exact for every normal),
+    // else the exact polyhedra's vertices.
+    const PointSets& points() const { return models_.points(); }
     // The exact distance, proved from the points' supports; CGAL's QP over every hull vertex when
     // the proof does not close (counted).
     ExactDistance exact_distance_of(const Q& r1, const Q& r2) {
-        if (std::optional<ProvedDistance> pd = on_points([&](const PointSets& S) { return proved_distance(S, r1, r2); })) return pd->d;
+        if (std::optional<ProvedDistance> pd = proved_distance(points(), r1, r2)) return pd->d;
         ++fallbacks_.distance;
         return exact_distance(h(), r1, r2);
     }
     // The depth with what proves it (measured_depth); when the distance's proof does not close,
     // from CGAL's exact distance and the EPA on the hull's vertices (counted).
     MeasuredDepth depth_of(const Q& r1, const Q& r2) {
-        if (std::optional<MeasuredDepth> d = on_points([&](const PointSets& S) { return measured_depth(S, r1, r2); })) return *d;
+        if (std::optional<MeasuredDepth> d = measured_depth(points(), r1, r2)) return *d;
         ++fallbacks_.depth;
         return depth_from_distance(HullPoints(h()), exact_distance(h(), r1, r2), r1, r2);
     }
@@ -587,7 +580,7 @@ private:
         const Vec3q n = point(need(j, "normal"), "normal");
         if (sgn(n[0]) == 0 && sgn(n[1]) == 0 && sgn(n[2]) == 0) fail("normal", "the zero vector is not a normal");
         const JNode* off = j.find("offset");
-        const auto [c1, c2] = on_points([&](const PointSets& S) { return plane_extents(S, n, r1, r2); });
+        const auto [c1, c2] = plane_extents(points(), n, r1, r2);
         put_exact(o, "rho1", r1);
         put_exact(o, "rho2", r2);
         put_exact(o, "max_over_P1", c1);  // P1(ρ1) ⊆ {n·x ≤ c1}
@@ -700,7 +693,7 @@ private:
             const Vec3q n = point(*dir, "direction");
             if (sgn(n[0]) == 0 && sgn(n[1]) == 0 && sgn(n[2]) == 0) fail("direction", "the zero vector is not a direction");
             // Moving P2 by the depth along n separates them exactly iff n attains the minimum.
-            const Q along = on_points([&](const PointSets& S) { return directional_depth_squared(S, n, r1, r2); });
+            const Q along = directional_depth_squared(points(), n, r1, r2);
             put_exact(o, "depth_squared_along_direction", along);
             const bool ok = within_above(along, e.squared);
             o["direction_right"] = ok;

@@ -46,18 +46,8 @@ Command add_certify_fp(CLI::App& app) {
                 if (a->claims.empty()) throw InputError("CLAIMS is required (see scalecert certify-fp --help)");
                 internal::refuse_outputs_over_inputs({a->out, a->certificate}, {a->claims, a->scene.path, a->scene.mesh[0], a->scene.mesh[1]});
                 StageClock clock;
-                // A scene of parts goes to the compound judge; a plain one to the session, as before.
-                a->scene.opt.allow_parts = true;
-                std::optional<internal::Session> session;
-                std::unique_ptr<CompoundSession> compound;
-                ExactScene sc;
-                if (std::shared_ptr<const internal::CompactScene> cs = a->scene.load_compact(&sc)) {
-                    session.emplace(std::move(cs), a->scene.name(), Engine::Auto);
-                } else {
-                    if (!sc.P[0].parts.empty() || !sc.P[1].parts.empty()) compound = std::make_unique<CompoundSession>(std::move(sc), a->scene.name());
-                    else session.emplace(std::move(sc), a->scene.name(), Engine::Auto);
-                }
-                if (session) session->set_clock(&clock);
+                // A scene of parts goes to the compound judge; a plain one to the session.
+                OpenScene o = open_any(a->scene, Engine::Auto, clock);
                 const std::string claims = read_input(a->claims, "claims file", kMaxSceneBytes);
                 long wrong = 0;
                 ClaimOptions opt{a->exact_decimals, Q(0), a->json};
@@ -69,8 +59,8 @@ Command add_certify_fp(CLI::App& app) {
                 if (sgn(opt.tolerance) < 0) throw InputError("--tolerance must be >= 0");
                 std::string certificate;
                 std::string* cert = a->certificate.empty() ? nullptr : &certificate;
-                const std::string report = compound ? certify_fp(compound->judge(), claims, a->claims, opt, &wrong, nullptr, cert)
-                                                 : certify_fp(session->claim_models(), claims, a->claims, opt, &wrong, nullptr, cert);
+                const std::string report = o.compound ? certify_fp(o.compound->judge(), claims, a->claims, opt, &wrong, nullptr, cert)
+                                                   : certify_fp(o.convex->claim_models(), claims, a->claims, opt, &wrong, nullptr, cert);
                 if (a->certificate.empty()) emit(report, a->out);
                 else if (a->out.empty()) {
                     write_file_atomically(a->certificate, certificate);

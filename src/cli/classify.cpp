@@ -41,10 +41,7 @@ Command add_classify(CLI::App& app) {
                 clock.lap("parse pairs");
                 std::vector<Verdict> out;
                 if (o.compound) {  // objects made of parts: located on the region's grid (pairs in I1 x I2)
-                    const std::vector<std::int8_t> v = o.compound->classify(r1, r2, a->threads, a->pairs);
-                    out.resize(v.size());
-                    for (size_t k = 0; k < v.size(); ++k) out[k] = v[k] == 0 ? Verdict::Separated : v[k] == 1 ? Verdict::Touching : Verdict::Overlapping;
-                    emit(verdict_lines(out), a->out);
+                    emit(verdict_lines(verdicts_of(o.compound->classify(r1, r2, a->threads, a->pairs))), a->out);
                     return 0;
                 }
                 internal::Session& session = *o.convex;

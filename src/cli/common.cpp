@@ -26,13 +26,10 @@ void SceneArgs::add(CLI::App* sub) {
                   "parts: a part per 'o' or 'g' group, of the vertices its faces name (other mesh formats are refused: they have no groups)");
 }
 
-namespace {
-// The readers' remarks (an OBJ with groups read as one convex object), once each on stderr.
 void say_notes(const internal::ExactScene& sc) {
     for (const auto& p : sc.P)
         if (!p.note.empty()) std::cerr << "scalecert: note: " << p.note << "\n";
 }
-}  // namespace
 
 internal::ExactScene SceneArgs::load() const {
     const bool any_mesh_option = !mesh[0].empty() || !mesh[1].empty() || !interval[0].empty() || !interval[1].empty() ||

@@ -38,6 +38,9 @@ struct SceneArgs {
     void shift_positionals(std::initializer_list<std::string*> rest);
 };
 
+// The readers' remarks on a scene (an OBJ with groups read as one convex object), once each on stderr.
+void say_notes(const internal::ExactScene& sc);
+
 // --out FILE means the same for every command: its one output document goes to FILE, written
 // atomically (a temporary file beside it, synced, renamed), instead of standard output.
 void add_out(CLI::App* sub, std::string& out);

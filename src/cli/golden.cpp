@@ -6,7 +6,6 @@
 #include "io/files.hpp"
 
 #include <iostream>
-#include <sys/stat.h>
 #include <optional>
 
 namespace scalecert::cli {
@@ -54,15 +53,9 @@ Command add_golden(CLI::App& app) {
                 // main's output journal removes what was written if the run fails later).
                 for (const std::string& p : a->scenes) {
                     if (mesh_scene && p == mesh_scene->first) continue;  // read above, written below
-                    const ExactScene sc = load_scene(p, a->opt);
-                    for (const auto& o : sc.P)
-                        if (!o.note.empty()) std::cerr << "scalecert: note: " << o.note << "\n";
-                    for (const char* ext : {".scene.json", ".golden.json", ".golden.csv"}) {
-                        const std::string out = a->dir + "/" + golden_stem(p) + ext;
-                        struct stat st {};
-                        if (::lstat(out.c_str(), &st) == 0 && !S_ISREG(st.st_mode))
-                            throw InputError(out + ": exists and is not a regular file (refused as an output)");
-                    }
+                    say_notes(load_scene(p, a->opt));
+                    for (const char* ext : {".scene.json", ".golden.json", ".golden.csv"})
+                        refuse_non_regular_output(a->dir + "/" + golden_stem(p) + ext);
                 }
                 make_output_dir(a->dir);
                 if (mesh_scene) write_file_atomically(mesh_scene->first, mesh_scene->second);

@@ -63,10 +63,7 @@ Command add_region(CLI::App& app) {
                 CompoundSession session(sc, a->scene.name());
                 if (sub->count("--classify")) {
                     // (Each pair is checked, with the file's name, before the region is built.)
-                    const std::vector<std::int8_t> v = session.classify(p1, p2, a->threads, a->classify.empty() ? "-" : a->classify);
-                    std::vector<Verdict> out(v.size());
-                    for (size_t k = 0; k < v.size(); ++k) out[k] = v[k] == 0 ? Verdict::Separated : v[k] == 1 ? Verdict::Touching : Verdict::Overlapping;
-                    emit(verdict_lines(out), a->out);
+                    emit(verdict_lines(verdicts_of(session.classify(p1, p2, a->threads, a->classify.empty() ? "-" : a->classify))), a->out);
                     return 0;
                 }
                 std::optional<std::array<Q, 2>> at;

@@ -700,17 +700,11 @@ int CloudPoints::argmax(int i, const Vec3z& n) const {
     // A normal the trees' double filter cannot take (beyond doubles, or 0 there): every point,
     // exactly, in integers (linear, and no hull).
     const IntPoints& P = sc_->P[i];
+    const Dir dir(n);
     int best = 0;
-    Z bv, v, t;
-    for (size_t k = 0; k < P.size(); ++k) {
-        const std::int64_t* x = P.at(k);
-        v = 0;
-        for (int c = 0; c < 3; ++c) {
-            mpz_set_si(t.get_mpz_t(), x[c]);
-            v += t * n[c];
-        }
-        if (k == 0 || v > bv) bv = v, best = static_cast<int>(k);
-    }
+    Z bv;
+    for (size_t k = 0; k < P.size(); ++k)
+        if (Z v = dot_exact(dir, P.at(k)); k == 0 || v > bv) bv = std::move(v), best = static_cast<int>(k);
     return best;
 }
 int CloudPoints::dargmax(int i, const D3& d) const { return t_->c[i]->dbest(d.data()); }

@@ -9,10 +9,6 @@
 
 namespace scalecert::internal {
 
-// Thrown by a point set that cannot answer a query exactly (a cloud's filter needs the normal
-// within doubles): the caller then asks the hull model.
-struct PointSetsCannot {};
-
 class PointSets {
 public:
     virtual ~PointSets() = default;
@@ -21,8 +17,7 @@ public:
     virtual const Vec3q& seed(int i) const = 0;
     // A positive integer whose product with every point of polyhedron i is integral.
     virtual const Z& scale(int i) const = 0;
-    // The smallest index of a point of polyhedron i maximising n·x, exactly (PointSetsCannot when
-    // this set cannot tell).
+    // The smallest index of a point of polyhedron i maximising n·x, exactly.
     virtual int argmax(int i, const Vec3z& n) const = 0;
     // A point nearly maximising d·x: a guess for GJK, never a decision.
     virtual int dargmax(int i, const D3& d) const = 0;

@@ -114,14 +114,18 @@ std::string read_input(const std::string& path, const std::string& what, size_t 
     return text;
 }
 
+void refuse_non_regular_output(const std::string& path) {
+    struct stat st {};
+    if (::lstat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode))
+        throw InputError(path + ": exists and is not a regular file (refused as an output)");
+}
+
 namespace {
 // A temporary file beside `path`, created exclusively (mkstemp: O_CREAT | O_EXCL, an unpredictable
 // name) so that nothing planted there is followed, holding `text` on disk (fsync). Refuses a
 // target that exists and is not a regular file (a device, a directory, a symbolic link).
 std::string write_temporary(const std::string& path, const std::string& text) {
-    struct stat st {};
-    if (::lstat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode))
-        throw InputError(path + ": exists and is not a regular file (refused as an output)");
+    refuse_non_regular_output(path);
     const auto slash = path.rfind('/');
     const std::string dir = slash == std::string::npos ? "." : path.substr(0, slash == 0 ? 1 : slash);
     const std::string base = slash == std::string::npos ? path : path.substr(slash + 1);

@@ -41,6 +41,8 @@ private:
 // then renamed into place, so a failed run never leaves a half-written file. Refuses a target
 // that exists and is not a regular file. Throws InputError naming the path.
 void write_file_atomically(const std::string& path, const std::string& text);
+// That refusal alone, for a command that checks its outputs' names before it writes any.
+void refuse_non_regular_output(const std::string& path);
 // The same for several files: every text is written and synced before any rename, so a failure
 // while writing leaves none of them.
 void write_files_atomically(const std::vector<std::pair<std::string, std::string>>& files);

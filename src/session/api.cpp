@@ -351,10 +351,7 @@ Verdict Region::verdict(const Rational& rho1, const Rational& rho2) const {
 
 std::vector<Verdict> Region::classify(const std::vector<double>& rho1, const std::vector<double>& rho2, unsigned threads) const {
     if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
-    const std::vector<std::int8_t> c = impl_->session.classify(rho1, rho2, threads);
-    std::vector<Verdict> out(c.size());
-    for (size_t k = 0; k < c.size(); ++k) out[k] = c[k] == 0 ? Verdict::Separated : c[k] == 1 ? Verdict::Touching : Verdict::Overlapping;
-    return out;
+    return verdicts_of(impl_->session.classify(rho1, rho2, threads));
 }
 
 std::string Region::region_json() const { return dump(impl_->session.region_json()); }

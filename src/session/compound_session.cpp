@@ -34,6 +34,12 @@ void CompoundSession::check_in_rectangle(const Q& rho1, const Q& rho2, const std
                          ") lies outside I1 x I2, where the region is built");
 }
 
+std::vector<Verdict> verdicts_of(const std::vector<std::int8_t>& codes) {
+    std::vector<Verdict> out(codes.size());
+    for (size_t k = 0; k < codes.size(); ++k) out[k] = verdict_of(codes[k]);
+    return out;
+}
+
 CompoundVerdict CompoundSession::verdict(const Q& rho1, const Q& rho2) {
     check_in_rectangle(rho1, rho2, "the point");
     return compound_verdict(region(false), rho1, rho2);

@@ -16,6 +16,10 @@
 
 namespace scalecert::internal {
 
+// The verdict of a compound code (CompoundJudge, classify: 0 separated, 1 touching, 2 overlapping).
+inline Verdict verdict_of(int code) { return code == 0 ? Verdict::Separated : code == 1 ? Verdict::Touching : Verdict::Overlapping; }
+std::vector<Verdict> verdicts_of(const std::vector<std::int8_t>& codes);
+
 class CompoundSession {
 public:
     // `name` prefixes the errors ("FILE: P1.parts[2]: ..."). Nothing is built yet.

@@ -53,6 +53,7 @@ const HullModel& Session::hull() {
         } else {
             if (clock_) clock_->restart();
             if (!scene_ && !compact_) throw std::logic_error("Session: no scene and no hull source");
+            if (limit_hull_) refuse_past_the_edge_pair_limit();
             hull_ = std::make_shared<const HullModel>(hulls_ ? build_model(Model(*hulls_)) : build_model(scene_ ? *scene_ : full_scene(*compact_), name_));
         }
     }
@@ -72,17 +73,14 @@ const Model& Session::hulls() {
     return *hulls_;
 }
 
-const HullModel& Session::claim_hull() {
-    if (!hull_ && !hull_source_) {
-        const Model& h = hulls();
-        const double pairs = static_cast<double>(h.P[0].edges.size()) * static_cast<double>(h.P[1].edges.size());
-        if (pairs > kMaxEdgePairs)
-            throw InputError(name_ + ": this claim needs the hull model (every contact line), and its polyhedra have " +
-                             std::to_string(h.P[0].edges.size()) + " x " + std::to_string(h.P[1].edges.size()) +
-                             " edges, more than 2*10^7 edge pairs (the limit: the lines grow with them)" +
-                             (handover_.empty() ? "" : "; the walk handed over: " + handover_));
-    }
-    return hull();
+void Session::refuse_past_the_edge_pair_limit() {
+    const Model& h = hulls();
+    const double pairs = static_cast<double>(h.P[0].edges.size()) * static_cast<double>(h.P[1].edges.size());
+    if (pairs > kMaxEdgePairs)
+        throw InputError(name_ + ": this claim needs the hull model (every contact line), and its polyhedra have " +
+                         std::to_string(h.P[0].edges.size()) + " x " + std::to_string(h.P[1].edges.size()) +
+                         " edges, more than 2*10^7 edge pairs (the limit: the lines grow with them)" +
+                         (handover_.empty() ? "" : "; the walk handed over: " + handover_));
 }
 
 Session::CurveView Session::curve_around(const Q& lo_need, const Q& hi_need) {
@@ -96,7 +94,7 @@ Session::CurveView Session::curve_around(const Q& lo_need, const Q& hi_need) {
             if (!walk_covers(a, b)) break;
         }
     }
-    const HullModel& h = claim_hull();
+    const HullModel& h = hull();
     return {h, hull_curve(), Q(0), std::nullopt};
 }
 
@@ -209,39 +207,25 @@ const PointSets& Session::points() {
 
 ClaimModels Session::claim_models() {
     // Each answers with the least model it needs: the walk where it proves the curve, the two
-    // hulls (no contact line) for membership and the measures' fallbacks, and the hull model,
-    // within the limits (claim_hull), only where neither serves.
-    auto hull_unless_walked = [this](const Q& r1) {
-        if (!hull_ && !seeds_coincide() && !walk_covers(r1, r1)) claim_hull();
-    };
-    return {[this]() -> const HullModel& { return claim_hull(); },
-            [this]() -> const TouchingCurve& {
-                claim_hull();
-                return hull_curve();
-            },
-            [this, hull_unless_walked](const Q& r1, const Q& r2) {
-                hull_unless_walked(r1);
-                return verdict(r1, r2);
-            },
-            [this](const Q& r1) {
-                if (!hull_ && !walk_covers(r1, r1)) claim_hull();  // (coinciding seeds too: the curve needs a model)
-                return curve_value(r1);
-            },
+    // hulls (no contact line) for membership and the measures' fallbacks, and the hull model only
+    // where neither serves, within the edge-pair limit (hull(), from here on).
+    limit_hull_ = true;
+    return {[this]() -> const HullModel& { return hull(); },
+            [this]() -> const TouchingCurve& { return hull_curve(); },
+            [this](const Q& r1, const Q& r2) { return verdict(r1, r2); },
+            [this](const Q& r1) { return curve_value(r1); },
             [this] {
                 if (seeds_coincide()) return Q(0);  // every pair overlaps: no model needed
-                if (!walked()) claim_hull();
                 return curve().growth.value;
             },
             [this]() -> const PointSets& { return points(); },
             [this]() -> const Model& { return walked() ? static_cast<const Model&>(*walk_) : hulls(); },
             [this](const Q& r1, const Q& r2) {
-                if (!hull_ && !walk_covers(r1, r1)) claim_hull();  // (a certificate needs a model, seeds coinciding or not)
                 Certified c = certified_query(r1, r2);
                 return std::pair<const Model*, QueryAnswer>{&c.model, std::move(c.result)};
             },
             [this] {
                 if (seeds_coincide()) return Json{{"value", "0"}};  // (judgements.hpp: ρ* = 0 needs no normal)
-                if (!walked()) claim_hull();
                 return growth_proof(curve_model(), curve());
             },
             [this]() -> const Model& { return hulls(); },
@@ -253,10 +237,8 @@ ClaimModels Session::claim_models() {
                 // A walked scene's trees answer without a hull (CGAL's quickhull is quadratic on
                 // points all on the hull, as crossed prisms' are); the hulls when the distance's
                 // rounds run out, or once built.
-                if (!hull_ && !hulls_ && walked() && walk_->points) try {
-                        if (const std::optional<bool> in = membership_by_points(*walk_->points, i, rho, x, proof)) return *in;
-                    } catch (const PointSetsCannot&) {  // a direction beyond doubles
-                    }
+                if (!hull_ && !hulls_ && walked() && walk_->points)
+                    if (const std::optional<bool> in = membership_by_points(*walk_->points, i, rho, x, proof)) return *in;
                 return hull_member(hulls(), i, rho, x, proof);
             }};
 }

@@ -43,11 +43,10 @@ public:
     const Model& curve_model();
     bool walked();                                   // the curve came from the walk
     const std::string& handover() const { return handover_; }  // why the walk handed over ("" if it did not)
-    // The hull model and its curve over all ρ1 > 0, built on first use.
+    // The hull model and its curve over all ρ1 > 0, built on first use. Once claim_models() was
+    // called, a hull model this session builds itself is refused (InputError, before any line is
+    // built) when its polyhedra's edge pairs pass kMaxEdgePairs (limits.hpp).
     const HullModel& hull();
-    // The hull model for a claim: refused (InputError, before any line is built) when its
-    // polyhedra's edge pairs pass kMaxEdgePairs (limits.hpp).
-    const HullModel& claim_hull();
     // The two exact polyhedra and seeds, with no contact line (build_hulls): what membership,
     // closest points and the exact distance's fallback need. The hull model's when it is built.
     const Model& hulls();
@@ -71,7 +70,7 @@ public:
     Decider decider_for(const std::vector<double>& rho1);
     // The curve proved over curve_proof's window around [lo_need, hi_need] (judgements.hpp):
     // the walk's, walking wider until it proves the window (a few rounds), else the hull model's
-    // (claim_hull: within the limits). `proved` is where that curve is the exact one.
+    // (within the limits of hull()). `proved` is where that curve is the exact one.
     struct CurveView {
         const Model& model;
         const TouchingCurve& curve;
@@ -102,6 +101,8 @@ public:
 private:
     void decide();
     bool seeds_coincide() const;  // every pair overlaps: s lies inside P1(ρ1) and P2(ρ2)
+    void refuse_past_the_edge_pair_limit();  // InputError when the hulls' edge pairs pass kMaxEdgePairs
+    bool limit_hull_ = false;                // set by claim_models()
     void lap(const char* what) {
         if (clock_) clock_->lap(what);
     }
