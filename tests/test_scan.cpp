@@ -437,5 +437,15 @@ BOOST_AUTO_TEST_CASE(claims_on_the_walk_build_no_hull_model) {
     certify_fp(s.claim_models(), lines, "lines", ClaimOptions{false, Q(0), true}, &wrong, nullptr, &cert);
     BOOST_TEST(wrong == 0);
     BOOST_TEST(!s.hull_built());
+    // A curve point past where the curve reaches 0 (ρ1 = 3 > 20/9 of the way there: wrong), whose
+    // proof's window starts where the curve is <= 0 on the walk (the claims fuzz target's finding:
+    // that end's witness lacked the seeds' weights, and the checker refused the certificate).
+    const std::string past = "curve 3 2\n";
+    certify_fp(s.claim_models(), past, "past", ClaimOptions{false, Q(0), true}, &wrong, nullptr, &cert);
+    BOOST_TEST(wrong == 1);
+    BOOST_TEST(sgn(f(Q(3))) <= 0);
+    const std::filesystem::path pp = dir / "past.json";
+    std::ofstream(pp) << cert;
+    BOOST_TEST(std::system((std::string(SCALECERT_CHECK_BIN) + " " + pp.string() + " >/dev/null").c_str()) == 0);
     std::filesystem::remove_all(dir);
 }

@@ -184,7 +184,9 @@ Json curve_proof(const Model& m, const TouchingCurve& c, const Q& lo_need, const
     TouchingCurve w;
     w.env = c.env;
     restrict_curve(m, w, a, b);
-    return curve_proof_json(m, w, curve_witnesses(m, w, SeedWeights{}));
+    // (On the walk a left end where the curve is <= 0 is witnessed by lifting a witness with the
+    // seeds' weights: curve_witnesses needs them there.)
+    return curve_proof_json(m, w, curve_witnesses(m, w, m.scan ? seed_weights(m) : SeedWeights{}));
 }
 
 std::string judgements_text(const Model& m, const Q& tolerance, Json judgements) {
