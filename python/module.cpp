@@ -11,6 +11,7 @@
 #include "campaign/campaign.hpp"
 
 #include <cmath>
+#include <functional>
 #include <map>
 
 namespace py = pybind11;
@@ -353,8 +354,10 @@ py::dict curve_dict(const scalecert::Curve& c) {
 
 using namespace pybind11::literals;
 
-// Scene.certify: claims of one kind from arrays, judged by the typed API (Analysis::certify).
-py::dict certify_arrays(const scalecert::Analysis& a, const std::string& kind, const py::handle& rho1, const py::handle& rho2,
+// Scene.certify and Region.certify: claims of one kind from arrays, judged by the typed API
+// (Analysis::certify, Region::certify).
+using CertifyFn = std::function<scalecert::Judgements(const std::vector<scalecert::Claim>&, const scalecert::ClaimOptions&)>;
+py::dict certify_arrays(const CertifyFn& certify, const std::string& kind, const py::handle& rho1, const py::handle& rho2,
                         const py::handle& value, const py::handle& closest, const py::handle& direction, const py::handle& normal,
                         const py::handle& offset, const py::handle& point_, const py::handle& verdict, const py::handle& tolerance,
                         bool certificate, bool fractions) {
@@ -426,7 +429,7 @@ py::dict certify_arrays(const scalecert::Analysis& a, const std::string& kind, c
     scalecert::Judgements j;
     {
         py::gil_scoped_release release;
-        j = a.certify(claims, opt);
+        j = certify(claims, opt);
     }
     py::module_ np = py::module_::import("numpy");
     py::list right, exact, rel, vr, cr, dr, sq, ev;
@@ -571,7 +574,21 @@ PYBIND11_MODULE(scalecert, m) {
              }, py::arg("claims"), py::arg("exact_decimals") = false, py::arg("tolerance") = 0, py::arg("certificate") = false,
              "marks claims on the compounds right or wrong, as Scene.certify_fp does: verdict, separating_plane, "
              "witness_point and distance claims (the least over the part pairs) at any rho1, rho2 > 0, or 'RHO1 RHO2 "
-             "VERDICT' lines; with certificate=True, (the report, the compound_judgements certificate's text)");
+             "VERDICT' lines; with certificate=True, (the report, the compound_judgements certificate's text)")
+        .def("certify", [](const scalecert::Region& r, const py::handle& kind, const py::handle& rho1, const py::handle& rho2,
+                           const py::handle& value, const py::handle& closest, const py::handle& normal, const py::handle& offset,
+                           const py::handle& point_, const py::handle& verdict, const py::handle& tolerance,
+                           const py::handle& certificate, const py::handle& fractions) {
+                 return certify_arrays([&r](const auto& c, const auto& o) { return r.certify(c, o); }, text_arg(kind, "kind"), rho1,
+                                       rho2, value, closest, py::none(), normal, offset, point_, verdict, tolerance,
+                                       flag_arg(certificate, "certificate"), flag_arg(fractions, "fractions"));
+             }, py::arg("kind"), py::arg("rho1"), py::arg("rho2"), py::arg("value") = py::none(), py::arg("closest") = py::none(),
+             py::arg("normal") = py::none(), py::arg("offset") = py::none(), py::arg("point") = py::none(),
+             py::arg("verdict") = py::none(), py::arg("tolerance") = 0, py::arg("certificate") = false,
+             py::arg("fractions") = false,
+             "claims of one kind over arrays, as Scene.certify takes them: 'distance' (the least over the part pairs), "
+             "'verdict', 'separating_plane' or 'witness_point' (a penetration depth is a claim on two convex objects); "
+             "with certificate=True the compound_judgements certificate's text");
 
     py::class_<PyScene>(m, "Scene")
         .def(py::init([](const py::handle& p1, const py::handle& p2, const py::handle& i1, const py::handle& i2, const py::handle& seeds) {
@@ -645,7 +662,8 @@ PYBIND11_MODULE(scalecert, m) {
                            const py::handle& value, const py::handle& closest, const py::handle& direction, const py::handle& normal,
                            const py::handle& offset, const py::handle& point_, const py::handle& verdict, const py::handle& tolerance,
                            const py::handle& certificate, const py::handle& fractions) {
-                 return certify_arrays(s.a(), text_arg(kind, "kind"), rho1, rho2, value, closest, direction, normal, offset, point_, verdict,
+                 const scalecert::Analysis& a = s.a();
+                 return certify_arrays([&a](const auto& c, const auto& o) { return a.certify(c, o); }, text_arg(kind, "kind"), rho1, rho2, value, closest, direction, normal, offset, point_, verdict,
                                        tolerance, flag_arg(certificate, "certificate"), flag_arg(fractions, "fractions"));
              }, py::arg("kind"), py::arg("rho1"), py::arg("rho2"), py::arg("value") = py::none(), py::arg("closest") = py::none(),
              py::arg("direction") = py::none(), py::arg("normal") = py::none(), py::arg("offset") = py::none(),

@@ -9,6 +9,8 @@
 #include <cstdlib>
 #include <fstream>
 #include <iterator>
+#include <random>
+#include <nlohmann/json.hpp>
 #include <unistd.h>
 #include <string>
 
@@ -385,4 +387,187 @@ BOOST_AUTO_TEST_CASE(a_region_of_parts_by_hand) {
                                         {box(4, -1, -1, 5, 1, 1)}, {R(1), R(4)}, {R(1), R(3)})
                           .verdict(R(1), R(1)),
                       scalecert::InputError);
+}
+
+// Typed claims on objects made of parts, by hand, on the band above. At (1, 2) the right part
+// spans x in [2, 3] and the box [7/2, 11/2]: the gap is 1/2 along x, between (3, y, z) and
+// (7/2, y, z) for |y|, |z| <= 1; the left part, x in [-3, -2], is farther. At (2, 2) the right
+// part spans [4, 6]: (5, 0, 0) lies in it and in the box.
+BOOST_AUTO_TEST_CASE(typed_claims_on_parts_by_hand) {
+    using scalecert::Claim;
+    using scalecert::ClaimKind;
+    using scalecert::Point;
+    const scalecert::Region r({box(2, -1, -1, 3, 1, 1), box(-3, -1, -1, -2, 1, 1)}, {box(4, -1, -1, 5, 1, 1)}, {R(1), R(4)}, {R(1), R(3)},
+                              Point{R(0), R(0), R(0)}, Point{R(9, 2), R(0), R(0)});
+    std::vector<Claim> c(7);
+    c[0].kind = ClaimKind::Distance, c[0].rho1 = 1, c[0].rho2 = 2, c[0].value = R(1, 2);
+    c[0].closest = std::array<Point, 2>{Point{3, 1, 0}, Point{R(7, 2), 1, 0}};
+    c[1] = c[0], c[1].closest = std::array<Point, 2>{Point{3, 1, 0}, Point{R(7, 2), 0, 0}};  // 1/2 apart in x, 1 in y: too far
+    c[2].kind = ClaimKind::Verdict, c[2].rho1 = R(7, 6), c[2].rho2 = 2, c[2].verdict = scalecert::Verdict::Touching;
+    c[3].kind = ClaimKind::Verdict, c[3].rho1 = 3, c[3].rho2 = 2, c[3].verdict = scalecert::Verdict::Overlapping;  // apart again
+    c[4].kind = ClaimKind::WitnessPoint, c[4].rho1 = 2, c[4].rho2 = 2, c[4].point = {5, 0, 0};
+    c[5].kind = ClaimKind::SeparatingPlane, c[5].rho1 = 1, c[5].rho2 = 2, c[5].normal = {1, 0, 0}, c[5].offset = R(13, 4);
+    c[6] = c[5], c[6].offset = R(4);  // beyond the box's near face at 7/2
+    scalecert::ClaimOptions opt;
+    opt.certificate = true;
+    const scalecert::Judgements j = r.certify(c, opt);
+    BOOST_TEST_REQUIRE(j.items.size() == 7u);
+    BOOST_TEST(j.items[0].right);
+    BOOST_TEST((*j.items[0].exact_squared == R(1, 4)));
+    BOOST_TEST(!j.items[1].right);
+    BOOST_TEST(*j.items[1].value_right);
+    BOOST_TEST(!*j.items[1].closest_right);
+    BOOST_TEST(j.items[2].right);
+    BOOST_TEST(!j.items[3].right);
+    BOOST_TEST((*j.items[3].exact_verdict == scalecert::Verdict::Separated));
+    BOOST_TEST(j.items[4].right);
+    BOOST_TEST(j.items[5].right);
+    BOOST_TEST(!j.items[6].right);
+    BOOST_TEST(j.wrong == 3);
+    // The independent checker accepts the compound_judgements certificate.
+    BOOST_TEST(j.certificate.find("\"kind\": \"compound_judgements\"") != std::string::npos);
+    const std::string path = "/tmp/scalecert-test-api-parts-" + std::to_string(::getpid()) + ".json";
+    std::FILE* out = std::fopen(path.c_str(), "wb");
+    BOOST_TEST_REQUIRE(out != nullptr);
+    std::fwrite(j.certificate.data(), 1, j.certificate.size(), out);
+    std::fclose(out);
+    const int st = std::system((std::string(SCALECERT_CHECK_BIN) + " " + path + " >/dev/null").c_str());
+    std::remove(path.c_str());
+    BOOST_TEST(st == 0);
+    // A depth names no part pair: refused with one line.
+    Claim d;
+    d.kind = ClaimKind::PenetrationDepth, d.rho1 = 2, d.rho2 = 2, d.value = 1;
+    BOOST_CHECK_THROW(r.certify({d}), scalecert::InputError);
+    BOOST_CHECK_THROW(r.certify({}), scalecert::InputError);
+}
+
+namespace {
+// Random claims of every typed kind near two objects in [-4, 4]^3: doubles, as a program writes them.
+std::vector<scalecert::Claim> random_claims(size_t n, unsigned seed, bool depths) {
+    using scalecert::Claim;
+    using scalecert::ClaimKind;
+    std::mt19937_64 g(seed);
+    std::uniform_real_distribution<double> rho(0.25, 3), coord(-4, 4), val(0, 3);
+    auto x = [&](auto& d) { return scalecert::exact(d(g)); };
+    auto pt = [&] { return scalecert::Point{x(coord), x(coord), x(coord)}; };
+    std::vector<Claim> out(n);
+    const int kinds = depths ? 5 : 4;
+    for (size_t i = 0; i < n; ++i) {
+        Claim& c = out[i];
+        c.rho1 = x(rho), c.rho2 = x(rho);
+        switch (static_cast<int>(i % kinds)) {
+        case 0:
+            c.kind = ClaimKind::Verdict;
+            c.verdict = static_cast<scalecert::Verdict>(g() % 3);
+            break;
+        case 1:
+            c.kind = ClaimKind::SeparatingPlane;
+            c.normal = pt();
+            if (g() % 2) c.offset = x(coord);
+            break;
+        case 2:
+            c.kind = ClaimKind::WitnessPoint;
+            c.point = pt();
+            break;
+        case 3:
+            c.kind = ClaimKind::Distance;
+            c.value = x(val);
+            if (g() % 2) c.closest = std::array<scalecert::Point, 2>{pt(), pt()};
+            break;
+        default:
+            c.kind = ClaimKind::PenetrationDepth;
+            c.value = x(val);
+            if (g() % 2) c.direction = pt();
+        }
+    }
+    return out;
+}
+
+std::string exact_text(const R& q) { return "\"" + q.get_str() + "\""; }
+std::string exact_point(const scalecert::Point& p) {
+    return "[" + exact_text(p[0]) + "," + exact_text(p[1]) + "," + exact_text(p[2]) + "]";
+}
+// The same claims as a scalecert-claims-1 file, every number an exact string.
+std::string claims_file(const std::vector<scalecert::Claim>& claims) {
+    using scalecert::ClaimKind;
+    std::string s = "{\"format\": \"scalecert-claims-1\", \"claims\": [";
+    for (size_t i = 0; i < claims.size(); ++i) {
+        const scalecert::Claim& c = claims[i];
+        s += i ? ",{" : "{";
+        s += "\"rho1\":" + exact_text(c.rho1) + ",\"rho2\":" + exact_text(c.rho2) + ",";
+        switch (c.kind) {
+        case ClaimKind::Verdict: {
+            const char* v[] = {"separated", "touching", "overlapping"};
+            s += "\"kind\":\"verdict\",\"verdict\":\"" + std::string(v[static_cast<int>(c.verdict)]) + "\"";
+            break;
+        }
+        case ClaimKind::SeparatingPlane:
+            s += "\"kind\":\"separating_plane\",\"normal\":" + exact_point(c.normal);
+            if (c.offset) s += ",\"offset\":" + exact_text(*c.offset);
+            break;
+        case ClaimKind::WitnessPoint: s += "\"kind\":\"witness_point\",\"point\":" + exact_point(c.point); break;
+        case ClaimKind::Distance:
+            s += "\"kind\":\"distance\",\"value\":" + exact_text(c.value);
+            if (c.closest) s += ",\"closest\":[" + exact_point((*c.closest)[0]) + "," + exact_point((*c.closest)[1]) + "]";
+            break;
+        case ClaimKind::PenetrationDepth:
+            s += "\"kind\":\"penetration_depth\",\"value\":" + exact_text(c.value);
+            if (c.direction) s += ",\"direction\":" + exact_point(*c.direction);
+            break;
+        }
+        s += "}";
+    }
+    return s + "]}";
+}
+
+// The typed judgements against the file's report, claim by claim: every part's verdict and the
+// exact square. Returns how many were right.
+size_t same_judgements(const scalecert::Judgements& typed, const std::string& report_json) {
+    const nlohmann::json rep = nlohmann::json::parse(report_json);
+    const nlohmann::json& list = rep["claims"];
+    BOOST_TEST_REQUIRE(list.size() == typed.items.size());
+    size_t right = 0, bad = 0;
+    auto opt = [](const nlohmann::json& o, const char* k) {
+        return o.contains(k) ? std::optional<bool>(o[k].get<bool>()) : std::nullopt;
+    };
+    for (size_t i = 0; i < list.size(); ++i) {
+        const scalecert::Judgement& t = typed.items[i];
+        const nlohmann::json& o = list[i];
+        const bool same = t.right == o["right"].get<bool>() && t.value_right == opt(o, "value_right") &&
+                          t.closest_right == opt(o, "closest_right") && t.direction_right == opt(o, "direction_right") &&
+                          (t.exact_squared ? o.contains("exact_squared") && o["exact_squared"].get<std::string>() == t.exact_squared->get_str()
+                                           : !o.contains("exact_squared"));
+        if (!same && ++bad <= 5) BOOST_ERROR("claim " << i << " is judged differently: " << o.dump());
+        right += t.right;
+    }
+    BOOST_TEST(rep["wrong"].get<long>() == typed.wrong);
+    return right;
+}
+}  // namespace
+
+// The typed API and certify-fp on a file judge 10,000 random claims of every kind alike, on two
+// convex objects, with and without a tolerance; 2,000 more on objects made of parts.
+BOOST_AUTO_TEST_CASE(typed_and_file_claims_judge_alike) {
+    std::vector<scalecert::Point> p1, p2;
+    std::mt19937_64 g(7);
+    std::uniform_int_distribution<int> u(-30, 30);
+    for (int i = 0; i < 24; ++i) p1.push_back({R(u(g), 10), R(u(g), 10), R(u(g), 10)});
+    for (int i = 0; i < 24; ++i) p2.push_back({R(u(g), 10) + 2, R(u(g), 10), R(u(g), 10) + 1});
+    const scalecert::Analysis a(scalecert::Scene(p1, p2, {R(1, 2), R(2)}, {R(1, 2), R(2)}));
+    for (const R tol : {R(0), R(1, 3)}) {
+        const std::vector<scalecert::Claim> claims = random_claims(5000, 11 + tol.get_den().get_ui(), true);
+        scalecert::ClaimOptions opt;
+        opt.tolerance = tol;
+        const scalecert::Judgements typed = a.certify(claims, opt);
+        const size_t right = same_judgements(typed, a.certify_fp(claims_file(claims), opt).report);
+        BOOST_TEST(right > 0u);  // both outcomes occur
+        BOOST_TEST(right < claims.size());
+    }
+    const scalecert::Region r({box(2, -1, -1, 3, 1, 1), box(-3, -1, -1, -2, 1, 1)}, {box(4, -1, -1, 5, 1, 1)}, {R(1), R(4)}, {R(1), R(3)},
+                              scalecert::Point{R(0), R(0), R(0)}, scalecert::Point{R(9, 2), R(0), R(0)});
+    const std::vector<scalecert::Claim> claims = random_claims(2000, 5, false);
+    const scalecert::Judgements typed = r.certify(claims);
+    const size_t right = same_judgements(typed, r.certify_fp(claims_file(claims)).report);
+    BOOST_TEST(right > 0u);
+    BOOST_TEST(right < claims.size());
 }

@@ -189,6 +189,9 @@ public:
     // lines; with options.certificate, the compound_judgements certificate. Throws InputError for
     // malformed claims and for claims on convex objects only (curves, growth distances, depths).
     ClaimReport certify_fp(const std::string& claims, const ClaimOptions& options = {}) const;
+    // The same, typed: verdict, separating_plane, witness_point and distance claims (a penetration
+    // depth is refused); with options.certificate, the compound_judgements certificate.
+    Judgements certify(const std::vector<Claim>& claims, const ClaimOptions& options = {}) const;
 
 private:
     struct Impl;

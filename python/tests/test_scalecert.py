@@ -564,3 +564,25 @@ def test_region_from_meshes_reads_groups_as_parts(tmp_path):
     assert scalecert.Region.from_meshes(L, B, ("1/2", 2), ("1/2", 2), parts_from_groups=False).verdict(1, 1) == scalecert.Verdict.Touching
     with pytest.raises(scalecert.InputError, match="no groups"):
         scalecert.Region.from_meshes(SRC / "examples" / "box.stl", B, (1, 2), (1, 2))
+
+
+def test_region_certify_over_arrays_by_hand():
+    # The band (tests/test_compound.cpp): at (1, 2) its right part spans x in [2, 3] and the box
+    # [7/2, 11/2], 1/2 apart along x; at (2, 2) the right part spans [4, 6] and holds (5, 0, 0).
+    band = scalecert.Region([box(2, -1, -1, 3, 1, 1), box(-3, -1, -1, -2, 1, 1)], [box(4, -1, -1, 5, 1, 1)], (1, 4), (1, 3),
+                            seeds=((0, 0, 0), (F(9, 2), 0, 0)))
+    d = band.certify("distance", [1.0, 1.0], [2.0, 2.0], value=[0.5, 0.25],
+                     closest=[[[3, 0, 0], [3.5, 0, 0]], [[3, 0, 0], [3.5, 1, 0]]], fractions=True)
+    assert list(d["right"]) == [True, False]
+    assert list(d["value_right"]) == [True, False]
+    assert list(d["closest_right"]) == [True, False]  # the second pair is 1/2 apart in x and 1 in y
+    assert list(d["exact"]) == [0.5, 0.5] and d["exact_squared"] == [F(1, 4), F(1, 4)]
+    v = band.certify("verdict", [F(7, 6), 2, 3], [2, 2, 2], verdict=["touching", "overlapping", "overlapping"])
+    assert list(v["right"]) == [True, True, False] and v["exact_verdict"] == ["touching", "overlapping", "separated"]
+    w = band.certify("witness_point", [2, 1], [2, 2], point=[[5, 0, 0], [5, 0, 0]])
+    assert list(w["right"]) == [True, False]  # at rho1 = 1 the right part ends at x = 3
+    p = band.certify("separating_plane", [1, 1], [2, 2], normal=[[1, 0, 0], [1, 0, 0]], offset=["13/4", 4], certificate=True)
+    assert list(p["right"]) == [True, False] and p["wrong"] == 1
+    assert json.loads(p["certificate"])["kind"] == "compound_judgements"
+    with pytest.raises(scalecert.InputError, match="two convex objects"):
+        band.certify("penetration_depth", [2], [2], value=[1])

@@ -83,9 +83,4 @@ inline std::string certify_fp(const HullModel& m, const TouchingCurve& c, const 
 class CompoundJudge;
 std::string certify_fp(CompoundJudge& judge, const std::string& claims, const std::string& name, const ClaimOptions& opt, long* wrong,
                        long* count = nullptr, std::string* certificate = nullptr);
-// The line format alone.
-std::string certify_claim_lines(const ClaimModels& models, const std::string& claims, const std::string& name,
-                                bool exact_decimals, bool json, long* wrong, long* count = nullptr,
-                                std::string* certificate = nullptr);
-
 }  // namespace scalecert::internal

@@ -5,7 +5,10 @@
 #include "session/session.hpp"
 
 #include "certify/certificate.hpp"
-#include "certify/claims.hpp"
+#include "certify/claim.hpp"
+#include "certify/compound_judge.hpp"
+#include "certify/judgements.hpp"
+#include "certify/region_certificate.hpp"
 #include "certify/classify.hpp"
 #include "certify/golden.hpp"
 #include "geometry/measures.hpp"
@@ -221,71 +224,107 @@ ClaimReport Analysis::certify_fp(const std::string& claims, const ClaimOptions& 
     return {std::move(report), count, wrong, std::move(certificate)};
 }
 
-Judgements Analysis::certify(const std::vector<Claim>& claims, const ClaimOptions& options) const {
-    // The claims as scalecert-claims-1 with every number an exact string, judged by the one set of
-    // rules (certify/claims.cpp); the report read back into types.
+namespace {
+Q canonical_q(Q q) {
+    q.canonicalize();
+    return q;
+}
+// A public claim, typed for the rules (claim.hpp), its faults refused with one line naming it.
+internal::TypedClaim typed_claim(const Claim& c, size_t i, bool parts) {
+    using internal::ClaimType;
+    const std::string where = "certify: claims[" + std::to_string(i) + "]";
+    internal::TypedClaim t;
+    t.rho1 = canonical_q(c.rho1);
+    t.rho2 = canonical_q(c.rho2);
+    if (sgn(t.rho1) <= 0) throw InputError(where + ".rho1: scalings must be > 0 (got " + to_exact_string(t.rho1) + ")");
+    if (sgn(t.rho2) <= 0) throw InputError(where + ".rho2: scalings must be > 0 (got " + to_exact_string(t.rho2) + ")");
+    auto nonzero = [&](const Point& p, const char* key, const char* what) {
+        const Point q = canonical(p);
+        if (sgn(q[0]) == 0 && sgn(q[1]) == 0 && sgn(q[2]) == 0) throw InputError(where + "." + key + ": the zero vector is not a " + what);
+        return q;
+    };
+    switch (c.kind) {
+    case ClaimKind::Verdict:
+        t.type = ClaimType::Verdict;
+        t.verdict = c.verdict == Verdict::Separated ? internal::Claimed::Separated
+                    : c.verdict == Verdict::Touching ? internal::Claimed::Touching
+                                                     : internal::Claimed::Overlapping;
+        break;
+    case ClaimKind::SeparatingPlane:
+        t.type = ClaimType::Plane;
+        t.normal = nonzero(c.normal, "normal", "normal");
+        if (c.offset) t.offset = canonical_q(*c.offset);
+        break;
+    case ClaimKind::WitnessPoint:
+        t.type = ClaimType::Witness;
+        t.point = canonical(c.point);
+        break;
+    case ClaimKind::Distance:
+        t.type = ClaimType::Distance;
+        t.value = canonical_q(c.value);
+        if (c.closest) t.closest = std::array<Point, 2>{canonical((*c.closest)[0]), canonical((*c.closest)[1])};
+        break;
+    case ClaimKind::PenetrationDepth:
+        if (parts) throw InputError(where + ": a penetration depth is a claim on two convex objects");
+        t.type = ClaimType::Depth;
+        t.value = canonical_q(c.value);
+        if (c.direction) t.direction = nonzero(*c.direction, "direction", "direction");
+        break;
+    }
+    return t;
+}
+
+// Its judgement, as the public type has it.
+Judgement public_judgement(const internal::TypedClaim& c, const internal::Judged& g) {
+    Judgement j;
+    j.right = g.right;
+    j.value_right = g.value_right;
+    j.closest_right = g.closest_right;
+    j.direction_right = g.direction_right;
+    if (g.exact_squared) {
+        j.exact_squared = *g.exact_squared;
+        j.exact = sqrt_minus_rn(*g.exact_squared, Q(0));
+        // |value − exact| / exact, MPFR-rounded; relative to an exact 0: 0 for a claimed 0, else inf.
+        j.rel_error = sgn(*g.exact_squared) ? relative_sqrt_error_rn(*g.exact_squared, c.value) : sgn(c.value) == 0 ? 0.0 : INFINITY;
+    }
+    if (c.type == internal::ClaimType::Verdict) j.exact_verdict = g.exact_verdict;
+    return j;
+}
+
+// Typed claims through typed rules: no JSON unless a certificate is asked for.
+template <class Rules, class Certificate>
+Judgements judge_all(Rules& rules, const std::vector<Claim>& claims, const ClaimOptions& options, bool parts, Certificate&& certificate) {
     if (claims.empty()) throw InputError("certify: no claims");
-    Json list = Json::array();
-    auto ex = [](const Rational& q) { return to_exact_string(q); };
-    auto pt = [&](const Point& p) { return Json::array({ex(p[0]), ex(p[1]), ex(p[2])}); };
-    for (const Claim& c : claims) {
-        Json j{{"rho1", ex(c.rho1)}, {"rho2", ex(c.rho2)}};
-        switch (c.kind) {
-        case ClaimKind::Verdict:
-            j["kind"] = "verdict";
-            j["verdict"] = verdict_name(c.verdict);
-            break;
-        case ClaimKind::SeparatingPlane:
-            j["kind"] = "separating_plane";
-            j["normal"] = pt(c.normal);
-            if (c.offset) j["offset"] = ex(*c.offset);
-            break;
-        case ClaimKind::WitnessPoint:
-            j["kind"] = "witness_point";
-            j["point"] = pt(c.point);
-            break;
-        case ClaimKind::Distance:
-            j["kind"] = "distance";
-            j["value"] = ex(c.value);
-            if (c.closest) j["closest"] = Json::array({pt((*c.closest)[0]), pt((*c.closest)[1])});
-            break;
-        case ClaimKind::PenetrationDepth:
-            j["kind"] = "penetration_depth";
-            j["value"] = ex(c.value);
-            if (c.direction) j["direction"] = pt(*c.direction);
-            break;
-        }
-        list.push_back(std::move(j));
-    }
-    ClaimOptions opt = options;
-    opt.json = true;
-    long wrong = 0;
+    std::vector<internal::TypedClaim> typed;
+    typed.reserve(claims.size());
+    for (size_t i = 0; i < claims.size(); ++i) typed.push_back(typed_claim(claims[i], i, parts));
     Judgements out;
-    const std::string report = internal::certify_fp(impl_->session.claim_models(), dump(Json{{"format", "scalecert-claims-1"}, {"claims", list}}),
-                                                    "claims", opt, &wrong, nullptr, options.certificate ? &out.certificate : nullptr);
-    out.wrong = wrong;
-    const Json r = Json::parse(report);
-    auto flag = [](const Json& o, const char* k) { return o.contains(k) ? std::optional<bool>(o[k].get<bool>()) : std::nullopt; };
-    for (const Json& o : r["claims"]) {
-        Judgement g;
-        g.right = o["right"].get<bool>();
-        g.value_right = flag(o, "value_right");
-        g.closest_right = flag(o, "closest_right");
-        g.direction_right = flag(o, "direction_right");
-        if (o.contains("exact_squared")) {
-            g.exact_squared = parse_exact(o["exact_squared"].get<std::string>());
-            g.exact = sqrt_minus_rn(*g.exact_squared, Q(0));
-            // (null: beyond the doubles, or relative to 0 — then 0 only for an exact 0.)
-            const Json &rel = o["rel_error_double"], &abs_e = o["abs_error_double"];
-            g.rel_error = !rel.is_null() ? rel.get<double>() : (!abs_e.is_null() && abs_e.get<double>() == 0 ? 0.0 : INFINITY);
-        }
-        if (o["kind"] == "verdict") {
-            const std::string e = o["exact"].get<std::string>();
-            g.exact_verdict = e == "separated" ? Verdict::Separated : e == "touching" ? Verdict::Touching : Verdict::Overlapping;
-        }
-        out.items.push_back(std::move(g));
+    out.items.reserve(claims.size());
+    Json entries = Json::array();
+    for (size_t i = 0; i < typed.size(); ++i) {
+        internal::Proof p;
+        const internal::Judged g = rules.judge(typed[i], options.certificate ? &p : nullptr);
+        out.wrong += !g.right;
+        out.items.push_back(public_judgement(typed[i], g));
+        if (options.certificate)
+            entries.push_back(Json{{"index", i}, {"claim", std::move(p.claim)}, {"right", g.right}, {"proof", std::move(p.proof)}});
     }
+    if (options.certificate) out.certificate = certificate(std::move(entries));
     return out;
+}
+
+void check_tolerance(const ClaimOptions& options) {
+    if (sgn(options.tolerance) < 0) throw InputError("tolerance: must be >= 0 (got " + to_exact_string(options.tolerance) + ")");
+}
+}  // namespace
+
+Judgements Analysis::certify(const std::vector<Claim>& claims, const ClaimOptions& options) const {
+    check_tolerance(options);
+    const internal::ClaimModels models = impl_->session.claim_models();
+    internal::ConvexRules rules(models, options.tolerance);
+    return judge_all(rules, claims, options, false, [&](Json entries) {
+        return internal::judgements_text(models.document(), options.tolerance, std::move(entries));
+    });
 }
 
 GoldenData Analysis::golden() const {
@@ -363,6 +402,15 @@ ClaimReport Region::certify_fp(const std::string& claims, const ClaimOptions& op
     std::string report = internal::certify_fp(impl_->session.judge(), claims, "claims", options, &wrong, &count,
                                               options.certificate ? &certificate : nullptr);
     return {std::move(report), count, wrong, std::move(certificate)};
+}
+
+Judgements Region::certify(const std::vector<Claim>& claims, const ClaimOptions& options) const {
+    check_tolerance(options);
+    internal::CompoundJudge& judge = impl_->session.judge();
+    internal::PartsRules rules(judge, options.tolerance);
+    return judge_all(rules, claims, options, true, [&](Json entries) {
+        return internal::compound_judgements_text(judge.scene(), options.tolerance, std::move(entries));
+    });
 }
 
 }  // namespace scalecert

@@ -1,0 +1,148 @@
+// The typed claim core: a claim (TypedClaim) is judged by typed rules into a Judged, with its
+// proof when asked. Every front end reads its own form into a TypedClaim and writes its own form
+// from the Judged: the JSON and line formats (claims.cpp), the C++ API (api.cpp) and numpy
+// (python/module.cpp, through the C++ API). The rules are those of certificates/CLAIMS.md, each
+// applied here once, for convex objects (ConvexRules) and objects made of parts (PartsRules).
+#pragma once
+#include "certify/claims.hpp"
+
+#include <array>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace scalecert::internal {
+
+enum class ClaimType { Verdict, Curve, CurvePoint, SwitchPoint, Growth, Plane, Witness, Distance, Depth };
+const char* type_name(ClaimType t);  // the JSON kind: "verdict", "curve", ..., "penetration_depth"
+
+// A claimed verdict: the three exact ones, or intersecting (= not separated).
+enum class Claimed { Separated, Touching, Overlapping, Intersecting };
+const char* claimed_name(Claimed v);
+std::optional<Claimed> claimed_of(const std::string& name);
+bool verdict_matches(Claimed claimed, Verdict exact);
+
+// A claimed curve: segments over increasing ρ1, contiguous, each with its contact when claimed.
+struct CurveSegment {
+    Q x0, y0, x1, y1;
+    std::optional<std::string> contact;
+};
+struct ClaimedCurve {
+    std::vector<CurveSegment> segments;
+    bool as_vertices = true;                  // written as a polyline ("vertices"), else "pieces"
+    std::vector<std::pair<Q, Q>> switches;    // its switch points (listed, or where its slope changes)
+    bool switches_listed = false;             // given as "switch_points"
+};
+
+// One claim, every number exact: the fields its type uses.
+struct TypedClaim {
+    ClaimType type = ClaimType::Verdict;
+    Q rho1 = 1, rho2 = 1;                     // all but Growth and Curve
+    Claimed verdict = Claimed::Separated;     // Verdict
+    Vec3q normal{};                           // Plane (nonzero)
+    std::optional<Q> offset;                  // Plane
+    Vec3q point{};                            // Witness
+    Q value = 0;                              // Growth, Distance, Depth
+    std::optional<std::array<Vec3q, 2>> closest;  // Distance: on P1, on P2
+    std::optional<Vec3q> direction;           // Depth (nonzero)
+    std::optional<std::string> contact;       // SwitchPoint
+    std::shared_ptr<const ClaimedCurve> curve;  // Curve
+};
+
+// An exact switch point of the curve, with its contact label.
+struct ExactSwitch {
+    Q rho1, rho2;
+    std::string label;
+};
+
+// A judgement: right or wrong, each part of the claim judged, and the exact values it rests on.
+// Which fields are set follows the claim's type (and, for parts, the part numbers).
+struct Judged {
+    bool right = false;
+    std::optional<bool> value_right, closest_right, direction_right, contact_right;
+    // Verdict, Witness, and Depth of a separated pair: the exact verdict; on parts, the pair that
+    // decides it (−1 when separated).
+    std::optional<Verdict> exact_verdict;
+    int part1 = -1, part2 = -1;
+    Q rho2_minus_curve;                       // Verdict on convex objects: ρ2 − f(ρ1)
+    Q exact;                                  // Growth: ρ*; CurvePoint: f(ρ1)
+    // Distance and Depth: the exact squared value (Depth: none when separated), the exact closest
+    // points and the pair they lie in (parts), the depth's exact direction.
+    std::optional<Q> exact_squared;
+    Vec3q exact_p1{}, exact_p2{};
+    Vec3z exact_direction{};
+    // Witness and the closest points: in P1, in P2; on parts, the part holding each (−1: none).
+    bool in1 = false, in2 = false;
+    int in_part1 = -1, in_part2 = -1;
+    Q closest_squared;                        // |q − p|² of the claimed closest points
+    Q along;                                  // Depth: the squared depth along the claimed direction
+    Q c1, c2;                                 // Plane: max over P1(ρ1) of n·x, min over P2(ρ2)
+    // SwitchPoint: the exact switch point matched (or the nearest in ρ1), none when the proved
+    // range has none; that range (whole: the whole curve).
+    std::optional<ExactSwitch> nearest;
+    bool matched = false, window_whole = true;
+    Q window_lo;
+    std::optional<Q> window_hi;
+    // Curve: the errors and the switch points' and contacts' faults (CLAIMS.md, "Curve claims").
+    struct Misplaced { Q exact_rho1, exact_rho2, claimed_rho1, claimed_rho2; };
+    struct WrongContact { Q rho1; std::string claimed, exact; };
+    bool exact_positive = true;
+    Q max_vertical, max_vertical_at, max_horizontal;
+    std::vector<std::pair<Q, Q>> missed, extra;
+    std::vector<Misplaced> misplaced;
+    std::vector<WrongContact> wrong_contacts;
+};
+
+// A judgement's proof for the judgements certificates (FORMAT.md): the claim with every number
+// exact, and the proof of its judgement; the certificate's own JSON, written only when asked.
+struct Proof {
+    Json claim, proof;
+};
+
+// Tolerance rules (CLAIMS.md, "Tolerances"), exact.
+struct Tolerance {
+    Q rel = 0;
+    // |c − e| ≤ rel·|e|
+    bool close(const Q& c, const Q& e) const;
+    // A claimed c ≥ 0 against an exact square E: (1 − rel)² E ≤ c² ≤ (1 + rel)² E.
+    bool close_sq(const Q& c, const Q& E) const;
+    // A squared length x that cannot be below the exact minimum E: E ≤ x ≤ (1 + rel)² E.
+    bool within_above(const Q& x, const Q& E) const;
+};
+
+// The rules on two convex objects: every type.
+class ConvexRules {
+public:
+    ConvexRules(const ClaimModels& models, const Q& tolerance);
+    ~ConvexRules();
+    Judged judge(const TypedClaim& c, Proof* proof = nullptr);
+    // How often the exact fallback ran: the distance by CGAL's QP over all vertices, when the
+    // proof from the floating-point guess did not close (proved_distance); the same for depths.
+    long distance_fallbacks() const;
+    long depth_fallbacks() const;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+// The rules on two objects made of parts (CLAIMS.md, "Objects made of parts"): Verdict, Plane,
+// Witness and Distance (the least over the part pairs), at any (ρ1, ρ2) > 0.
+class CompoundJudge;
+class PartsRules {
+public:
+    PartsRules(CompoundJudge& judge, const Q& tolerance) : judge_(judge), tol_{tolerance} {}
+    // Whether the type is judged on parts.
+    static bool takes(ClaimType t);
+    Judged judge(const TypedClaim& c, Proof* proof = nullptr);
+
+private:
+    CompoundJudge& judge_;
+    Tolerance tol_;
+};
+
+// The claim as the certificates state it (FORMAT.md): every number an exact string.
+Json exact_claim_json(const TypedClaim& c);
+
+}  // namespace scalecert::internal

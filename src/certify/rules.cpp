@@ -1,0 +1,535 @@
+// The rules of certificates/CLAIMS.md on typed claims, each applied once. Squares are compared
+// for distances and depths: no root is taken.
+#include "certify/claim.hpp"
+#include "certify/compound_judge.hpp"
+#include "certify/judgements.hpp"
+#include "geometry/measures.hpp"
+
+#include <algorithm>
+
+namespace scalecert::internal {
+
+const char* type_name(ClaimType t) {
+    switch (t) {
+    case ClaimType::Verdict: return "verdict";
+    case ClaimType::Curve: return "curve";
+    case ClaimType::CurvePoint: return "curve_point";
+    case ClaimType::SwitchPoint: return "switch_point";
+    case ClaimType::Growth: return "growth_distance";
+    case ClaimType::Plane: return "separating_plane";
+    case ClaimType::Witness: return "witness_point";
+    case ClaimType::Distance: return "distance";
+    case ClaimType::Depth: return "penetration_depth";
+    }
+    return "";
+}
+
+const char* claimed_name(Claimed v) {
+    switch (v) {
+    case Claimed::Separated: return "separated";
+    case Claimed::Touching: return "touching";
+    case Claimed::Overlapping: return "overlapping";
+    case Claimed::Intersecting: return "intersecting";
+    }
+    return "";
+}
+
+std::optional<Claimed> claimed_of(const std::string& name) {
+    for (Claimed v : {Claimed::Separated, Claimed::Touching, Claimed::Overlapping, Claimed::Intersecting})
+        if (name == claimed_name(v)) return v;
+    return std::nullopt;
+}
+
+bool verdict_matches(Claimed claimed, Verdict exact) {
+    switch (claimed) {
+    case Claimed::Separated: return exact == Verdict::Separated;
+    case Claimed::Touching: return exact == Verdict::Touching;
+    case Claimed::Overlapping: return exact == Verdict::Overlapping;
+    case Claimed::Intersecting: return exact != Verdict::Separated;
+    }
+    return false;
+}
+
+bool Tolerance::close(const Q& c, const Q& e) const { return abs(Q(c - e)) <= rel * abs(e); }
+
+bool Tolerance::close_sq(const Q& c, const Q& E) const {
+    if (sgn(c) < 0) return false;
+    const Q lo = (1 - rel), hi = (1 + rel);
+    const Q c2 = c * c;
+    return (sgn(lo) <= 0 || lo * lo * E <= c2) && c2 <= hi * hi * E;
+}
+
+bool Tolerance::within_above(const Q& x, const Q& E) const { return E <= x && x <= (1 + rel) * (1 + rel) * E; }
+
+namespace {
+std::string ex(const Q& q) { return to_exact_string(q); }
+Json ex3(const Vec3q& v) { return Json::array({ex(v[0]), ex(v[1]), ex(v[2])}); }
+Json ex_pair(const Q& a, const Q& b) { return Json::array({ex(a), ex(b)}); }
+Vec3q diff(const Vec3q& a, const Vec3q& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+Q dot3(const Vec3q& a, const Vec3q& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+}  // namespace
+
+Json exact_claim_json(const TypedClaim& c) {
+    Json j{{"kind", type_name(c.type)}};
+    switch (c.type) {
+    case ClaimType::Growth:
+        j["value"] = ex(c.value);
+        return j;
+    case ClaimType::Curve: {
+        const ClaimedCurve& k = *c.curve;
+        const auto& S = k.segments;
+        if (k.as_vertices) {
+            Json v = Json::array({ex_pair(S.front().x0, S.front().y0)});
+            for (const CurveSegment& s : S) v.push_back(ex_pair(s.x1, s.y1));
+            j["vertices"] = std::move(v);
+        } else {
+            Json ps = Json::array();
+            for (const CurveSegment& s : S) {
+                const Q a = (s.y1 - s.y0) / (s.x1 - s.x0);
+                Json p{{"rho1", ex_pair(s.x0, s.x1)}, {"slope", ex(a)}, {"intercept", ex(s.y0 - a * s.x0)}};
+                if (s.contact) p["contact"] = *s.contact;
+                ps.push_back(std::move(p));
+            }
+            j["pieces"] = std::move(ps);
+        }
+        if (k.switches_listed) {
+            Json cs = Json::array();
+            for (const auto& [x, y] : k.switches) cs.push_back(ex_pair(x, y));
+            j["switch_points"] = std::move(cs);
+        }
+        return j;
+    }
+    default: break;
+    }
+    j["rho1"] = ex(c.rho1);
+    j["rho2"] = ex(c.rho2);
+    switch (c.type) {
+    case ClaimType::Verdict: j["verdict"] = claimed_name(c.verdict); break;
+    case ClaimType::SwitchPoint:
+        if (c.contact) j["contact"] = *c.contact;
+        break;
+    case ClaimType::Plane:
+        j["normal"] = ex3(c.normal);
+        if (c.offset) j["offset"] = ex(*c.offset);
+        break;
+    case ClaimType::Witness: j["point"] = ex3(c.point); break;
+    case ClaimType::Distance:
+        j["value"] = ex(c.value);
+        if (c.closest) j["closest"] = Json::array({ex3((*c.closest)[0]), ex3((*c.closest)[1])});
+        break;
+    case ClaimType::Depth:
+        j["value"] = ex(c.value);
+        if (c.direction) j["direction"] = ex3(*c.direction);
+        break;
+    default: break;
+    }
+    return j;
+}
+
+// ---- two convex objects ----------------------------------------------------------------------
+
+struct ConvexRules::Impl {
+    const ClaimModels& models;
+    Tolerance tol;
+    long distance_fallbacks = 0, depth_fallbacks = 0;
+    using Curve = ClaimModels::Curve;
+    std::optional<std::vector<ExactSwitch>> switches;  // the whole curve's switch points (built on first use)
+    std::vector<ExactSwitch> walk_switches;
+
+    // The two exact polyhedra, with no contact line: the measures' fallbacks.
+    const Model& hulls() const { return models.hulls(); }
+    // The whole curve on the hull model (within the limits: Session::claim_hull).
+    Curve whole() const { return {&models.model(), &models.curve(), Q(0), std::nullopt}; }
+    // The point set for the measures: the cloud's trees on a walked scene (exact for every
+    // normal), else the exact polyhedra's vertices.
+    const PointSets& points() const { return models.points(); }
+
+    // Whether x is in P1(ρ1) and y in P2(ρ2), with their proofs in *proof when given.
+    std::pair<bool, bool> members(const Q& r1, const Q& r2, const Vec3q& x, const Vec3q& y, Json* proof) const {
+        Json p1, p2;
+        const bool a = models.member(0, r1, x, proof ? &p1 : nullptr), b = models.member(1, r2, y, proof ? &p2 : nullptr);
+        if (proof) *proof = Json{{"P1", std::move(p1)}, {"P2", std::move(p2)}};
+        return {a, b};
+    }
+
+    // The exact switch points where V proves the curve: every break of ρ2 = f(ρ1) at ρ1 > 0
+    // with ρ2 > 0, inside I1 or not, with its contact (on the whole curve: built once).
+    std::vector<ExactSwitch> switches_of(const Curve& V) const {
+        std::vector<ExactSwitch> out;
+        const auto& P = V.curve->env.pieces;
+        for (size_t k = 0; k + 1 < P.size(); ++k) {
+            const Q& x = *P[k].to;
+            const ContactLine &L = V.model->lines[P[k].line], &R = V.model->lines[P[k + 1].line];
+            const Q y = L.at(x);
+            if (sgn(x) <= 0 || !V.proves(x)) continue;
+            if (sgn(y) <= 0) break;  // f descends: nothing touches from here on
+            out.push_back({x, y, contact_at(*V.model, L, R, x, y).label});
+        }
+        return out;
+    }
+    const std::vector<ExactSwitch>& exact_switches(const Curve& V) {
+        if (!V.whole()) {
+            walk_switches = switches_of(V);
+            return walk_switches;
+        }
+        if (!switches) switches = switches_of(V);
+        return *switches;
+    }
+
+    // The exact distance, proved from the points' supports; CGAL's QP over every hull vertex when
+    // the proof does not close (counted).
+    ExactDistance exact_distance_of(const Q& r1, const Q& r2) {
+        if (std::optional<ProvedDistance> pd = proved_distance(points(), r1, r2)) return pd->d;
+        ++distance_fallbacks;
+        return exact_distance(hulls(), r1, r2);
+    }
+    // The depth with what proves it (measured_depth); when the distance's proof does not close,
+    // from CGAL's exact distance and the EPA on the hull's vertices (counted).
+    MeasuredDepth depth_of(const Q& r1, const Q& r2) {
+        if (std::optional<MeasuredDepth> d = measured_depth(points(), r1, r2)) return *d;
+        ++depth_fallbacks;
+        return depth_from_distance(HullPoints(hulls()), exact_distance(hulls(), r1, r2), r1, r2);
+    }
+
+    // Where the curve reaches ρ2 = 0: on its last piece (it goes on as one line from there).
+    static Q zero_crossing(const Curve& V) {
+        const ContactLine& L = V.model->lines[V.curve->env.pieces.back().line];
+        return std::max(Q(0), Q(-L.intercept / L.slope));
+    }
+
+    // ρ1 with f(ρ1) = y (f is strictly decreasing), or none outside f's range over ρ1 ≥ 0; f as
+    // V has it (the exact curve where V proves it).
+    static std::optional<Q> inverse(const Curve& V, const Q& y) {
+        for (const EnvPiece& p : V.curve->env.pieces) {
+            const ContactLine& L = V.model->lines[p.line];
+            const Q x = (y - L.intercept) / L.slope;
+            if (x >= p.from && (!p.to || x <= *p.to)) return x;
+        }
+        return std::nullopt;
+    }
+
+    void verdict(const TypedClaim& c, Judged& g, Proof* proof) {
+        const Verdict e = models.verdict(c.rho1, c.rho2);
+        g.right = verdict_matches(c.verdict, e);
+        g.exact_verdict = e;
+        g.rho2_minus_curve = c.rho2 - models.curve_value(c.rho1);
+        if (proof) {
+            const auto [pm, r] = models.certified_query(c.rho1, c.rho2);
+            if (r.verdict != e) throw std::logic_error("certify-fp: the certified verdict and the exact one differ");
+            proof->proof = verdict_proof(*pm, r);
+        }
+    }
+
+    void growth(const TypedClaim& c, Judged& g, Proof* proof) {
+        g.exact = models.growth();
+        g.right = tol.close(c.value, g.exact);
+        if (proof) {
+            proof->proof = models.growth_proof();
+            if (proof->proof["value"] != ex(g.exact))
+                throw std::logic_error("certify-fp: the proved growth distance and the exact one differ");
+        }
+    }
+
+    void curve_point(const TypedClaim& c, Judged& g, Proof* proof) {
+        g.exact = models.curve_value(c.rho1);
+        g.right = sgn(g.exact) > 0 && tol.close(c.rho2, g.exact);
+        if (proof) {
+            const Curve V = models.curve_around(c.rho1, c.rho1);
+            proof->proof = curve_proof(*V.model, *V.curve, c.rho1, c.rho1);
+        }
+    }
+
+    void switch_point(const TypedClaim& c, Judged& g, Proof* proof) {
+        const Q &r1 = c.rho1, &r2 = c.rho2, &t = tol.rel;
+        // Every ρ1 within the tolerance of the claim's (|x − ρ1| <= tol·x) lies in [lo, hi]: the
+        // walk proves the curve over a window holding it; a tolerance of 1 or more needs the whole
+        // curve (on to where it reaches ρ2 = 0, past every switch point).
+        const Q lo = r1 / (1 + t);
+        const Curve V = t < 1 ? models.curve_around(lo, Q(r1 / (1 - t))) : whole();
+        const auto& exs = exact_switches(V);
+        g.window_whole = V.whole();
+        g.window_lo = V.lo_proved;
+        g.window_hi = V.hi_proved;
+        if (exs.empty()) {
+            // The proof: the whole curve from ρ1 = 0 to past where it reaches ρ2 = 0, or the window.
+            if (proof) {
+                proof->proof = V.whole() ? curve_proof(*V.model, *V.curve, Q(0), zero_crossing(V))
+                                         : curve_proof(*V.model, *V.curve, lo, Q(r1 / (1 - t)));
+            }
+            g.right = false;
+            return;
+        }
+        // Right when some exact switch point matches (both coordinates within the tolerance, and
+        // the contact when claimed): the judgement names the first that does, else the nearest in ρ1.
+        const ExactSwitch* best = nullptr;
+        for (const ExactSwitch& s : exs)
+            if (tol.close(r1, s.rho1) && tol.close(r2, s.rho2) && (!c.contact || *c.contact == s.label)) {
+                best = &s;
+                break;
+            }
+        g.matched = best != nullptr;
+        if (!best) {
+            best = &exs.front();
+            for (const ExactSwitch& s : exs)
+                if (abs(Q(s.rho1 - r1)) < abs(Q(best->rho1 - r1))) best = &s;
+        }
+        g.nearest = *best;
+        // The proof: the curve over a window holding every ρ1 within the tolerance of the claim's
+        // (from ρ1/(1 + tol) to ρ1/(1 − tol), or on to where the curve reaches ρ2 = 0 when tol >= 1).
+        if (proof) {
+            const Q hi = t < 1 ? Q(r1 / (1 - t)) : std::max(r1, zero_crossing(V));
+            proof->proof = curve_proof(*V.model, *V.curve, lo, hi);
+        }
+        if (c.contact) g.contact_right = *c.contact == best->label;
+        g.right = g.matched;
+    }
+
+    // A curve claim: the rules of CLAIMS.md ("Curve claims").
+    void curve(const TypedClaim& c, Judged& g, Proof* proof) {
+        const ClaimedCurve& k = *c.curve;
+        const auto& segs = k.segments;
+        const Q lo = segs.front().x0, hi = segs.back().x1;
+        // The curve proved over a window around [lo, hi], and around every ρ1 where f takes a
+        // claimed end's ρ2 (the horizontal error): walked wider until it is, a few rounds, else
+        // the whole curve.
+        Curve V = models.curve_around(lo, hi);
+        for (int round = 0; !V.whole(); ++round) {
+            Q need_lo = lo, need_hi = hi;
+            bool fits = true, whole_needed = false;
+            for (const CurveSegment& s : segs)
+                for (const Q& y : {s.y0, s.y1}) {
+                    const std::optional<Q> x = inverse(V, y);
+                    if (x && V.proves(*x)) continue;
+                    fits = false;
+                    if (!x || sgn(*x) <= 0) whole_needed = true;  // at or before ρ1 = 0 on the walked lines
+                    else need_lo = std::min(need_lo, *x), need_hi = std::max(need_hi, *x);
+                }
+            if (fits) break;
+            V = whole_needed || round == 8 ? whole() : models.curve_around(need_lo, need_hi);
+        }
+        const TouchingCurve& cv = *V.curve;
+        const Model& mv = *V.model;
+        if (proof) proof->proof = curve_proof(mv, cv, lo, hi);
+        // Vertical error: on a stretch where the claim and f are both linear, so is their
+        // difference (and so are the tolerance's bounds), so the claimed ends and the exact
+        // breaks inside each segment suffice.
+        const auto& exs = exact_switches(V);
+        Q max_v = 0, max_h = 0, worst_v_at = lo;
+        bool within = true;
+        auto check_v = [&](const Q& x, const Q& y) {
+            const Q f = cv.env.value(mv.lines, x);
+            const Q e = abs(Q(y - f));
+            if (e > max_v) max_v = e, worst_v_at = x;
+            within = within && tol.close(y, f);
+        };
+        for (const CurveSegment& s : segs) {
+            check_v(s.x0, s.y0);
+            check_v(s.x1, s.y1);
+            for (const EnvPiece& p : cv.env.pieces)
+                if (p.to && *p.to > s.x0 && *p.to < s.x1) check_v(*p.to, s.y0 + (s.y1 - s.y0) * (*p.to - s.x0) / (s.x1 - s.x0));
+            for (const auto& [x, y] : {std::pair{s.x0, s.y0}, std::pair{s.x1, s.y1}})
+                if (auto xi = inverse(V, y)) max_h = std::max(max_h, Q(abs(Q(*xi - x))));
+        }
+        // Nothing touches where f ≤ 0; f descends, so it is > 0 on the whole range iff at hi.
+        g.exact_positive = sgn(cv.env.value(mv.lines, hi)) > 0;
+        g.max_vertical = max_v;
+        g.max_vertical_at = worst_v_at;
+        g.max_horizontal = max_h;
+        // Switch points: the exact ones in the closed range [lo, hi], each matched with the claimed
+        // one nearest to it in ρ1 when that one's nearest exact switch is it. An exact switch
+        // strictly inside the range that is not matched is missed; one at an end of the range
+        // may go unclaimed. A claimed one not matched is extra; a matched pair must agree in ρ1
+        // and ρ2 within the tolerance, or it is misplaced.
+        const auto& claimed = k.switches;
+        std::vector<const ExactSwitch*> exact;
+        for (const ExactSwitch& s : exs)
+            if (s.rho1 >= lo && s.rho1 <= hi) exact.push_back(&s);
+        auto nearest_claimed = [&](const Q& x) {
+            size_t b = 0;
+            for (size_t i = 1; i < claimed.size(); ++i)
+                if (abs(Q(claimed[i].first - x)) < abs(Q(claimed[b].first - x))) b = i;
+            return b;
+        };
+        auto nearest_exact = [&](const Q& x) {
+            size_t b = 0;
+            for (size_t i = 1; i < exact.size(); ++i)
+                if (abs(Q(exact[i]->rho1 - x)) < abs(Q(exact[b]->rho1 - x))) b = i;
+            return b;
+        };
+        std::vector<bool> used(claimed.size(), false);
+        for (size_t i = 0; i < exact.size(); ++i) {
+            const bool at_end = exact[i]->rho1 == lo || exact[i]->rho1 == hi;
+            size_t n = 0;
+            if (claimed.empty() || nearest_exact(claimed[n = nearest_claimed(exact[i]->rho1)].first) != i) {
+                if (!at_end) g.missed.push_back({exact[i]->rho1, exact[i]->rho2});
+                continue;
+            }
+            used[n] = true;
+            if (!tol.close(claimed[n].first, exact[i]->rho1) || !tol.close(claimed[n].second, exact[i]->rho2))
+                g.misplaced.push_back({exact[i]->rho1, exact[i]->rho2, claimed[n].first, claimed[n].second});
+        }
+        for (size_t n = 0; n < claimed.size(); ++n)
+            if (!used[n]) g.extra.push_back(claimed[n]);
+        // Contacts: the exact contact at each claimed piece's midpoint.
+        for (const CurveSegment& s : segs) {
+            if (!s.contact) continue;
+            const Q mid = (s.x0 + s.x1) / 2;
+            // At an exact switch point the contact is the switch point's.
+            std::string e = g.exact_positive ? piece_contact(mv, cv.env.pieces[cv.env.locate(mid)]).label : std::string("none");
+            for (const ExactSwitch& sw : exs)
+                if (sw.rho1 == mid) e = sw.label;
+            if (*s.contact != e) g.wrong_contacts.push_back({mid, *s.contact, e});
+        }
+        g.right = g.exact_positive && within && g.missed.empty() && g.extra.empty() && g.misplaced.empty() && g.wrong_contacts.empty();
+    }
+
+    void plane(const TypedClaim& c, Judged& g, Proof* proof) {
+        std::tie(g.c1, g.c2) = plane_extents(points(), c.normal, c.rho1, c.rho2);
+        g.right = g.c1 < g.c2 && (!c.offset || (g.c1 < *c.offset && *c.offset < g.c2));
+        if (proof) proof->proof = Json::object();
+    }
+
+    void witness(const TypedClaim& c, Judged& g, Proof* proof) {
+        Json mp;
+        std::tie(g.in1, g.in2) = members(c.rho1, c.rho2, c.point, c.point, proof ? &mp : nullptr);
+        g.exact_verdict = models.verdict(c.rho1, c.rho2);
+        g.right = g.in1 && g.in2;
+        if (proof) proof->proof = std::move(mp);
+    }
+
+    void distance(const TypedClaim& c, Judged& g, Proof* proof) {
+        const ExactDistance e = exact_distance_of(c.rho1, c.rho2);
+        g.exact_squared = e.squared;
+        g.exact_p1 = e.p1;
+        g.exact_p2 = e.p2;
+        g.value_right = tol.close_sq(c.value, e.squared);
+        g.right = *g.value_right;
+        if (proof) proof->proof = distance_proof(nullptr, e, c.rho1, c.rho2);
+        if (c.closest) {
+            const auto& [p, q] = *c.closest;
+            const Vec3q pq = diff(q, p);
+            g.closest_squared = dot3(pq, pq);
+            Json mp;
+            std::tie(g.in1, g.in2) = members(c.rho1, c.rho2, p, q, proof ? &mp : nullptr);
+            g.closest_right = g.in1 && g.in2 && tol.within_above(g.closest_squared, e.squared);
+            g.right = g.right && *g.closest_right;
+            if (proof) proof->proof["closest"] = std::move(mp);
+        }
+    }
+
+    void depth(const TypedClaim& c, Judged& g, Proof* proof) {
+        // The exact squared depth (none when separated) and a minimising direction, with its proof.
+        const MeasuredDepth md = depth_of(c.rho1, c.rho2);
+        if (proof) proof->proof = depth_proof(nullptr, md, c.rho1, c.rho2);
+        if (md.state == MeasuredDepth::Separated) {
+            g.exact_verdict = Verdict::Separated;
+            g.right = false;
+            return;
+        }
+        g.exact_squared = md.state == MeasuredDepth::Touching ? Q(0) : md.depth->squared;
+        g.exact_direction = md.normal;
+        g.value_right = tol.close_sq(c.value, *g.exact_squared);
+        g.right = *g.value_right;
+        if (c.direction) {
+            // Moving P2 by the depth along n separates them exactly iff n attains the minimum.
+            g.along = directional_depth_squared(points(), *c.direction, c.rho1, c.rho2);
+            g.direction_right = tol.within_above(g.along, *g.exact_squared);
+            g.right = g.right && *g.direction_right;
+        }
+    }
+};
+
+ConvexRules::ConvexRules(const ClaimModels& models, const Q& tolerance) : impl_(new Impl{models, Tolerance{tolerance}}) {}
+ConvexRules::~ConvexRules() = default;
+long ConvexRules::distance_fallbacks() const { return impl_->distance_fallbacks; }
+long ConvexRules::depth_fallbacks() const { return impl_->depth_fallbacks; }
+
+Judged ConvexRules::judge(const TypedClaim& c, Proof* proof) {
+    Judged g;
+    if (proof) proof->claim = exact_claim_json(c);
+    switch (c.type) {
+    case ClaimType::Verdict: impl_->verdict(c, g, proof); break;
+    case ClaimType::Growth: impl_->growth(c, g, proof); break;
+    case ClaimType::CurvePoint: impl_->curve_point(c, g, proof); break;
+    case ClaimType::SwitchPoint: impl_->switch_point(c, g, proof); break;
+    case ClaimType::Curve: impl_->curve(c, g, proof); break;
+    case ClaimType::Plane: impl_->plane(c, g, proof); break;
+    case ClaimType::Witness: impl_->witness(c, g, proof); break;
+    case ClaimType::Distance: impl_->distance(c, g, proof); break;
+    case ClaimType::Depth: impl_->depth(c, g, proof); break;
+    }
+    return g;
+}
+
+// ---- two objects made of parts ---------------------------------------------------------------
+
+bool PartsRules::takes(ClaimType t) {
+    return t == ClaimType::Verdict || t == ClaimType::Plane || t == ClaimType::Witness || t == ClaimType::Distance;
+}
+
+namespace {
+Verdict verdict_of_code(int v) { return v == 2 ? Verdict::Overlapping : v == 1 ? Verdict::Touching : Verdict::Separated; }
+}  // namespace
+
+Judged PartsRules::judge(const TypedClaim& c, Proof* proof) {
+    if (!takes(c.type)) throw std::logic_error("PartsRules: a claim on two convex objects");
+    Judged g;
+    Json* p = proof ? &proof->proof : nullptr;
+    if (proof) proof->claim = exact_claim_json(c);
+    switch (c.type) {
+    case ClaimType::Verdict: {
+        const CompoundJudge::Verdict e = judge_.verdict(c.rho1, c.rho2, p);
+        g.exact_verdict = verdict_of_code(e.verdict);
+        g.part1 = e.part1;
+        g.part2 = e.part2;
+        g.right = verdict_matches(c.verdict, *g.exact_verdict);
+        break;
+    }
+    case ClaimType::Plane:
+        std::tie(g.c1, g.c2) = judge_.plane_extents(c.normal, c.rho1, c.rho2);
+        g.right = g.c1 < g.c2 && (!c.offset || (g.c1 < *c.offset && *c.offset < g.c2));
+        if (p) *p = Json::object();
+        break;
+    case ClaimType::Witness: {
+        Json p1, p2;
+        g.in_part1 = judge_.locate(0, c.rho1, c.point, p ? &p1 : nullptr);
+        g.in_part2 = judge_.locate(1, c.rho2, c.point, p ? &p2 : nullptr);
+        g.in1 = g.in_part1 >= 0;
+        g.in2 = g.in_part2 >= 0;
+        g.exact_verdict = verdict_of_code(judge_.verdict(c.rho1, c.rho2).verdict);
+        g.right = g.in1 && g.in2;
+        if (p) *p = Json{{"P1", std::move(p1)}, {"P2", std::move(p2)}};
+        break;
+    }
+    case ClaimType::Distance: {
+        Json pp;
+        const CompoundJudge::Distance e = judge_.distance(c.rho1, c.rho2, p ? &pp : nullptr);
+        g.exact_squared = e.squared;
+        g.exact_p1 = e.p1;
+        g.exact_p2 = e.p2;
+        g.part1 = e.part1;
+        g.part2 = e.part2;
+        g.value_right = tol_.close_sq(c.value, e.squared);
+        g.right = *g.value_right;
+        if (c.closest) {
+            const auto& [a, b] = *c.closest;
+            const Vec3q ab = diff(b, a);
+            g.closest_squared = dot3(ab, ab);
+            Json m1, m2;
+            g.in_part1 = judge_.locate(0, c.rho1, a, p ? &m1 : nullptr);
+            g.in_part2 = judge_.locate(1, c.rho2, b, p ? &m2 : nullptr);
+            g.in1 = g.in_part1 >= 0;
+            g.in2 = g.in_part2 >= 0;
+            g.closest_right = g.in1 && g.in2 && tol_.within_above(g.closest_squared, e.squared);
+            g.right = g.right && *g.closest_right;
+            if (p) pp["closest"] = Json{{"P1", std::move(m1)}, {"P2", std::move(m2)}};
+        }
+        if (p) *p = std::move(pp);
+        break;
+    }
+    default: break;
+    }
+    return g;
+}
+
+}  // namespace scalecert::internal
