@@ -98,7 +98,7 @@ BOOST_AUTO_TEST_CASE(bad_inputs) {
     expect_error("lo > hi", S("o.json", scene(poly(kCube1), poly(kCube2), "[3, 2]")), "lo > hi");
     expect_error("bad number text", S("p.json", scene(poly(kCube1), poly(kCube2), "[\"1.2.3\", 2]")), "not an exact number");
     expect_error("huge exponent", S("q.json", scene(poly(kCube1), poly(kCube2), "[\"1e99999999\", 2]")), "exponent");
-    // Within the exponent's range but past 16,384 bits (the hostile review: 1e-99990 ran for
+    // Within the exponent's range but past 16,384 bits (read in full, 1e-99990 would cost
     // seconds a claim); 10^4932 < 2^16384 < 10^4933.
     expect_error("a number past 16384 bits", S("q2.json", scene(poly(kCube1), poly(kCube2), "[\"1e-99990\", 2]")),
                  "'1e-99990' has more than 16384 bits in its numerator or denominator");
@@ -172,7 +172,7 @@ BOOST_AUTO_TEST_CASE(out_file_is_written_whole) {
     BOOST_TEST(slurp(out) == run("partition " + g.string()).out);
 }
 
-// ---- hostile input (issue 14): each class the adversarial review reproduced ------------------
+// ---- hostile input: each class of bad input, one line and exit 2 ------------------------------
 
 BOOST_AUTO_TEST_CASE(json_is_read_as_rfc_8259_says) {
     const std::string P1 = poly(kCube1), P2 = poly(kCube2);
@@ -455,7 +455,7 @@ BOOST_AUTO_TEST_CASE(out_of_memory_exits_2_with_one_line) {
     BOOST_TEST(e == "scalecert: error: out of memory\n", e);
 }
 
-// ---- mesh formats (issue 10): OBJ, PLY and STL read exactly like the same points in JSON ------
+// ---- mesh formats: OBJ, PLY and STL read exactly like the same points in JSON ------
 namespace {
 // The tetrahedron on a box (tests/test_hand_curves.cpp derives its curve by hand).
 const std::vector<std::array<int, 3>> kTetra = {{2, 0, 2}, {-2, 2, 5}, {-1, -2, 6}, {2, 0, 7}};
@@ -590,7 +590,7 @@ BOOST_AUTO_TEST_CASE(bad_mesh_files_and_options) {
     expect_error("mesh and vertices", "curve " + write("mv.json", scene("{\"mesh\": \"good.obj\", \"vertices\": " + kCube1 + "}", poly(kCube2))).string(), "give one of");
 }
 
-// ---- the command line (issue 10): exit 1 for a wrong claim, --help examples, one --out ----------
+// ---- the command line: exit 1 for a wrong claim, --help examples, one --out ----------
 BOOST_AUTO_TEST_CASE(certify_fp_exit_status_gates_ci) {
     // Stacked cubes: the touching line is ρ1 + ρ2 = 3 (test_hand_curves), so (1, 1) is separated,
     // (3/2, 3/2) touching and the growth distance 3/2.
@@ -636,7 +636,7 @@ BOOST_AUTO_TEST_CASE(certify_fp_exit_status_gates_ci) {
     // (expect_error adds --out WORKDIR/out.json and checks that nothing was written there.)
     expect_error("certificate over the report", "certify-fp " + sc + " " + js.string() + " --certificate " + (workdir() / "out.json").string(),
                  "two outputs name the same file");
-    // An output over an input (the hostile review: --certificate CLAIMS replaced the claims it read).
+    // An output over an input: --certificate CLAIMS must not replace the claims it reads.
     {
         const fs::path mine = write("own_claims.json", slurp(js));
         const std::string before = slurp(mine);
@@ -645,8 +645,8 @@ BOOST_AUTO_TEST_CASE(certify_fp_exit_status_gates_ci) {
         BOOST_TEST(r.err.find("an output names an input file") != std::string::npos, r.err);
         BOOST_TEST(slurp(mine) == before);
     }
-    // An output over a mesh that the scene file names (the hostile review of 2026-11-26: `region
-    // SCENE --out MESH` and `curve SCENE --out MESH` replaced it): every command that writes refuses.
+    // An output over a mesh that the scene file names (`region SCENE --out MESH`, `curve SCENE
+    // --out MESH`): every command that writes refuses.
     {
         const fs::path mesh = write("named_mesh.obj", slurp(fs::path(SCALECERT_SOURCE_DIR) / "examples" / "tetra.obj"));
         const fs::path scene = write("names_a_mesh.json", "{\"P1\": {\"mesh\": \"" + mesh.string() +
@@ -658,7 +658,7 @@ BOOST_AUTO_TEST_CASE(certify_fp_exit_status_gates_ci) {
             BOOST_TEST(r.err.find("an output names an input file") != std::string::npos, cmd << ": " << r.err);
             BOOST_TEST(slurp(mesh) == before, cmd);
         }
-        // The campaigns too (the second hostile review): audit's --out or --csv over its scene, and
+        // The campaigns too: audit's --out or --csv over its scene, and
         // golden's output for one scene over a later scene of the same run.
         const fs::path s = write("s.json", slurp(fs::path(SCALECERT_SOURCE_DIR) / "certificates" / "scenes" / "stacked_cubes.json"));
         const fs::path later = write("s.golden.json", slurp(s));
@@ -737,7 +737,7 @@ BOOST_AUTO_TEST_CASE(json_claims_from_the_command_line) {
     expect_error("bad tolerance", "certify-fp " + sc + " " + g.string() + " --tolerance x", "--tolerance");
 }
 
-// ---- the scan path (issue 13): the same curve as the hull path; large meshes take it by default --
+// ---- the scan path: the same curve as the hull path; large meshes take it by default --
 namespace {
 // n points near a sphere of radius 50 about (cx, 0, 0), written as decimals with two places.
 std::string sphere_off(int n, double cx, unsigned seed) {
@@ -939,7 +939,7 @@ BOOST_AUTO_TEST_CASE(region_of_compounds) {
     BOOST_TEST(!fs::exists(nowhere));
     expect_error("certificate over the output", "region " + band + " --certificate " + (workdir() / "out.json").string(), "two outputs name the same file");
     expect_error("empty certificate name", "region " + band + " --certificate ''", "--certificate");
-    // The hostile review's explosions, refused before the pair polygons (manual.md "Limits"):
+    // Inputs whose cost explodes, refused before the pair polygons (manual.md "Limits"):
     // 3,163 x 3,163 parts (10^7 part pairs and more), 150 x 150 overlapping parts (22,500 pairs
     // whose swept boxes meet), two crossed 1,500-gon prisms (4,500 edges each: 2.0*10^7 edge
     // pairs), and a zero-width I1 (the region is a set in the plane).
@@ -974,7 +974,7 @@ BOOST_AUTO_TEST_CASE(region_of_compounds) {
     const std::string flat_range = R"({"P1": {"parts": [)" + cube + R"(], "seed": [0,0,0]}, "P2": {"parts": [)" + cube +
                                    R"(], "seed": ["1/2","1/2","1/2"]}, "I1": [2, 2], "I2": [1, 2]})";
     expect_error("zero-width I1", "region " + write("flat_range.json", flat_range).string(), "I1 has no width");
-    // The second hostile review: a pair that meets only on the diagonal. A = [1,2] x [2,3] x [1,2] and
+    // A pair that meets only on the diagonal. A = [1,2] x [2,3] x [1,2] and
     // B = [2,3] x [1,2] x [1,2] about the origin: A(r1) has x <= 2 r1 and y >= 2 r1, B(r2) x >= 2 r2
     // and y <= 2 r2, so they meet iff r1 = r2 (then on the edge x = y = 2r). The union of polygons
     // with area is empty; the segment from (1, 1) to (2, 2) is listed beside it.

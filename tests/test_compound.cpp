@@ -1,4 +1,4 @@
-// Compounds (issue 22): each part pair's overlap polygon in I1 × I2 and their union, against
+// Compounds: each part pair's overlap polygon in I1 × I2 and their union, against
 // regions derived by hand and against a brute force that shares nothing with the Gauss-map
 // overlay: the separating-axis test over every face normal of both parts and the cross product
 // of every pair of their edges (a superset of the facet normals of A ⊕ (−B)).
@@ -635,8 +635,8 @@ BOOST_AUTO_TEST_CASE(wedges_sharing_two_lines_each_labelled_by_its_own_pair) {
     // the box iff ρ1 + ρ2 >= 5/2 (z: the slab's top ρ1 against the box's bottom 5/2 − ρ2),
     // ρ1 + ρ2 <= 7/2 (y: the slab's ρ1 against the box's 7/2 − ρ2) and c <= ρ2/ρ1 <= c + 1/16
     // (x). So six disjoint quadrilaterals, all on the same two lines: each ring is its own pair's,
-    // four face-to-face edges, four corners where two faces' edges cross (EE). (The hostile review's
-    // slivers: pair edges on shared lines were scanned in full for each ring edge.)
+    // four face-to-face edges, four corners where two faces' edges cross (EE). (Slivers: pair edges
+    // on shared lines must not be scanned in full for each ring edge.)
     std::vector<std::array<int, 6>> parts[2];
     ExactScene sc;
     for (int k = 0; k < 6; ++k) {
@@ -688,7 +688,7 @@ BOOST_AUTO_TEST_CASE(a_normal_tight_everywhere_holds_no_edge) {
     // normal −x (hA = hB = 0, n·d = 0) touches at every (ρ1, ρ2) and the parts never overlap; in y,
     // [-ρ1, ρ1] reaches [3ρ2, 5ρ2] iff ρ1 >= 3ρ2. The one contact edge, from (4, 4/3) to
     // (3/2, 1/2), lies on ρ1 − 3ρ2 = 0 (normal +y: hA = 1, hB = −3), not on −x's 0 = 0; the parts
-    // touch along edges: x = 0, y = 1 of P1's part and x = 0, y = 3 of P2's (the hostile review).
+    // touch along edges: x = 0, y = 1 of P1's part and x = 0, y = 3 of P2's.
     const std::vector<std::array<int, 6>> parts[2] = {{{0, -2, -2, 4, 2, 2}}, {{-4, 6, -2, 0, 10, 2}}};
     const Vec3q seeds[2] = {{Q(0), Q(0), Q(0)}, {Q(0), Q(0), Q(0)}};
     const Q lo[2] = {Q(1), Q(1, 2)}, hi[2] = {Q(4), Q(2)};
@@ -710,7 +710,7 @@ BOOST_AUTO_TEST_CASE(a_normal_tight_everywhere_holds_no_edge) {
     BOOST_TEST(compound_verdict(r, Q(3), Q(1, 2)).verdict == std::string("touching"));  // inside the polygon, yet touching
 }
 
-// ---- certify-fp on compounds (issue 22, item 6) --------------------------------------------------
+// ---- certify-fp on compounds ------------------------------------------------------------------
 namespace {
 // certify-fp's JSON claims on a scene of parts: each judgement, and the certificate text.
 std::vector<bool> judge_claims(const ExactScene& sc, const std::string& claims, std::string* certificate = nullptr, const Q& tol = Q(0)) {

@@ -1,4 +1,4 @@
-// The audit of objects made of convex parts (issue 22, item 6): its sample points labelled against
+// The audit of objects made of convex parts: its sample points labelled against
 // verdicts derived by hand (interval arithmetic on axis-aligned boxes, which shares nothing with
 // the engine), a method counted wrong exactly where its verdict differs, and the command's
 // refusals and bytes.

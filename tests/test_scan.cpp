@@ -135,9 +135,8 @@ BOOST_AUTO_TEST_CASE(session_verdicts_from_the_walk_equal_the_hull_paths) {
 }
 
 BOOST_AUTO_TEST_CASE(verdicts_outside_I1_and_at_coincident_seeds_build_no_hull) {
-    // The second hostile review: a query far left or right of I1 fell back to the hull model
-    // (4,000-gon prisms: 90 s, 8.4 GB); so did every query with coincident seeds, where every
-    // pair overlaps. Crossed 100-gon prisms (test above), I1 = [1/2, 2].
+    // A query far left or right of I1 must not fall back to the hull model (4,000-gon prisms:
+    // 90 s, 8.4 GB), nor a query with coincident seeds, where every pair overlaps. Crossed 100-gon prisms (test above), I1 = [1/2, 2].
     const ExactScene sc = test::crossed_prism_scene(100);
     const HullModel hm = build_model(sc);
     const TouchingCurve hc = build_curve(hm);
