@@ -417,10 +417,11 @@ py::dict certify_arrays(const CertifyFn& certify, const std::string& kind, const
         if (pts) c.point = point((*pts)[i], "point" + at);
         if (verdicts) {
             const std::string v = utf8(py::str(verdicts->empty() ? verdict : (*verdicts)[i]), "certify: verdict" + at);
-            if (v == "separated") c.verdict = scalecert::Verdict::Separated;
-            else if (v == "touching") c.verdict = scalecert::Verdict::Touching;
-            else if (v == "overlapping") c.verdict = scalecert::Verdict::Overlapping;
-            else throw scalecert::InputError("certify: verdict" + at + ": '" + v + "' (separated, touching, overlapping)");
+            if (v == "separated") c.verdict = scalecert::ClaimedVerdict::Separated;
+            else if (v == "touching") c.verdict = scalecert::ClaimedVerdict::Touching;
+            else if (v == "overlapping") c.verdict = scalecert::ClaimedVerdict::Overlapping;
+            else if (v == "intersecting") c.verdict = scalecert::ClaimedVerdict::Intersecting;
+            else throw scalecert::InputError("certify: verdict" + at + ": '" + v + "' (separated, touching, overlapping, intersecting)");
         }
     }
     scalecert::ClaimOptions opt;

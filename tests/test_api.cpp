@@ -305,7 +305,7 @@ BOOST_AUTO_TEST_CASE(typed_claims_by_hand_and_by_brute_force) {
     claims[2].kind = ClaimKind::PenetrationDepth;  // at (2, 2): overlap 1 in z, 4 in x and y
     claims[2].rho1 = claims[2].rho2 = 2, claims[2].value = scalecert::exact(1.0000001), claims[2].direction = scalecert::Point{0, 0, 1};
     claims[3].kind = ClaimKind::Verdict;
-    claims[3].rho1 = claims[3].rho2 = R(3, 2), claims[3].verdict = scalecert::Verdict::Touching;
+    claims[3].rho1 = claims[3].rho2 = R(3, 2), claims[3].verdict = scalecert::ClaimedVerdict::Touching;
     claims[4].kind = ClaimKind::WitnessPoint;
     claims[4].rho1 = claims[4].rho2 = R(3, 2), claims[4].point = {1, 1, R(5, 2)};
     scalecert::ClaimOptions opt;
@@ -330,6 +330,12 @@ BOOST_AUTO_TEST_CASE(typed_claims_by_hand_and_by_brute_force) {
     opt.certificate = false;
     BOOST_TEST(a.certify({claims[2]}, opt).items[0].right);  // within 10^-6
     BOOST_TEST(a.certify({claims[2]}, opt).certificate.empty());
+    // Intersecting (not separated): right at the touching pair (3/2, 3/2), wrong at (1, 1/2), where the gap is 3/2.
+    Claim yes = claims[3];
+    yes.verdict = scalecert::ClaimedVerdict::Intersecting;
+    BOOST_TEST(a.certify({yes}).items[0].right);
+    yes.rho1 = 1, yes.rho2 = R(1, 2);
+    BOOST_TEST(!a.certify({yes}).items[0].right);
 
     // Brute force over a grid of pairs: the box formula against the engine's exact squares.
     std::vector<Claim> grid;
@@ -403,8 +409,8 @@ BOOST_AUTO_TEST_CASE(typed_claims_on_parts_by_hand) {
     c[0].kind = ClaimKind::Distance, c[0].rho1 = 1, c[0].rho2 = 2, c[0].value = R(1, 2);
     c[0].closest = std::array<Point, 2>{Point{3, 1, 0}, Point{R(7, 2), 1, 0}};
     c[1] = c[0], c[1].closest = std::array<Point, 2>{Point{3, 1, 0}, Point{R(7, 2), 0, 0}};  // 1/2 apart in x, 1 in y: too far
-    c[2].kind = ClaimKind::Verdict, c[2].rho1 = R(7, 6), c[2].rho2 = 2, c[2].verdict = scalecert::Verdict::Touching;
-    c[3].kind = ClaimKind::Verdict, c[3].rho1 = 3, c[3].rho2 = 2, c[3].verdict = scalecert::Verdict::Overlapping;  // apart again
+    c[2].kind = ClaimKind::Verdict, c[2].rho1 = R(7, 6), c[2].rho2 = 2, c[2].verdict = scalecert::ClaimedVerdict::Touching;
+    c[3].kind = ClaimKind::Verdict, c[3].rho1 = 3, c[3].rho2 = 2, c[3].verdict = scalecert::ClaimedVerdict::Intersecting;  // apart again
     c[4].kind = ClaimKind::WitnessPoint, c[4].rho1 = 2, c[4].rho2 = 2, c[4].point = {5, 0, 0};
     c[5].kind = ClaimKind::SeparatingPlane, c[5].rho1 = 1, c[5].rho2 = 2, c[5].normal = {1, 0, 0}, c[5].offset = R(13, 4);
     c[6] = c[5], c[6].offset = R(4);  // beyond the box's near face at 7/2
@@ -458,7 +464,7 @@ std::vector<scalecert::Claim> random_claims(size_t n, unsigned seed, bool depths
         switch (static_cast<int>(i % kinds)) {
         case 0:
             c.kind = ClaimKind::Verdict;
-            c.verdict = static_cast<scalecert::Verdict>(g() % 3);
+            c.verdict = static_cast<scalecert::ClaimedVerdict>(g() % 4);
             break;
         case 1:
             c.kind = ClaimKind::SeparatingPlane;
@@ -497,7 +503,7 @@ std::string claims_file(const std::vector<scalecert::Claim>& claims) {
         s += "\"rho1\":" + exact_text(c.rho1) + ",\"rho2\":" + exact_text(c.rho2) + ",";
         switch (c.kind) {
         case ClaimKind::Verdict: {
-            const char* v[] = {"separated", "touching", "overlapping"};
+            const char* v[] = {"separated", "touching", "overlapping", "intersecting"};
             s += "\"kind\":\"verdict\",\"verdict\":\"" + std::string(v[static_cast<int>(c.verdict)]) + "\"";
             break;
         }

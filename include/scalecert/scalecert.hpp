@@ -100,10 +100,13 @@ struct ClaimReport { std::string report; long claims, wrong; std::string certifi
 // One claim of a floating-point program, typed (the JSON kinds of CLAIMS.md, minus curves):
 // the fields its kind uses. A double's claim is its exact value: exact(x).
 enum class ClaimKind { Verdict, SeparatingPlane, WitnessPoint, Distance, PenetrationDepth };
+// A claimed verdict: one of the exact three, or intersecting (overlapping or touching: what a
+// collision test that answers yes or no claims).
+enum class ClaimedVerdict { Separated, Touching, Overlapping, Intersecting };
 struct Claim {
     ClaimKind kind = ClaimKind::Distance;
     Rational rho1 = 1, rho2 = 1;
-    Verdict verdict = Verdict::Separated;           // Verdict
+    ClaimedVerdict verdict = ClaimedVerdict::Separated;  // Verdict
     Point normal{};                                 // SeparatingPlane
     std::optional<Rational> offset;                 // SeparatingPlane
     Point point{};                                  // WitnessPoint

@@ -577,8 +577,9 @@ def test_region_certify_over_arrays_by_hand():
     assert list(d["value_right"]) == [True, False]
     assert list(d["closest_right"]) == [True, False]  # the second pair is 1/2 apart in x and 1 in y
     assert list(d["exact"]) == [0.5, 0.5] and d["exact_squared"] == [F(1, 4), F(1, 4)]
-    v = band.certify("verdict", [F(7, 6), 2, 3], [2, 2, 2], verdict=["touching", "overlapping", "overlapping"])
-    assert list(v["right"]) == [True, True, False] and v["exact_verdict"] == ["touching", "overlapping", "separated"]
+    v = band.certify("verdict", [F(7, 6), 2, 3, F(7, 6)], [2, 2, 2, 2], verdict=["touching", "overlapping", "overlapping", "intersecting"])
+    assert list(v["right"]) == [True, True, False, True]  # intersecting: overlapping or touching
+    assert v["exact_verdict"] == ["touching", "overlapping", "separated", "touching"]
     w = band.certify("witness_point", [2, 1], [2, 2], point=[[5, 0, 0], [5, 0, 0]])
     assert list(w["right"]) == [True, False]  # at rho1 = 1 the right part ends at x = 3
     p = band.certify("separating_plane", [1, 1], [2, 2], normal=[[1, 0, 0], [1, 0, 0]], offset=["13/4", 4], certificate=True)

@@ -246,9 +246,10 @@ internal::TypedClaim typed_claim(const Claim& c, size_t i, bool parts) {
     switch (c.kind) {
     case ClaimKind::Verdict:
         t.type = ClaimType::Verdict;
-        t.verdict = c.verdict == Verdict::Separated ? internal::Claimed::Separated
-                    : c.verdict == Verdict::Touching ? internal::Claimed::Touching
-                                                     : internal::Claimed::Overlapping;
+        t.verdict = c.verdict == ClaimedVerdict::Separated     ? internal::Claimed::Separated
+                    : c.verdict == ClaimedVerdict::Touching    ? internal::Claimed::Touching
+                    : c.verdict == ClaimedVerdict::Overlapping ? internal::Claimed::Overlapping
+                                                               : internal::Claimed::Intersecting;
         break;
     case ClaimKind::SeparatingPlane:
         t.type = ClaimType::Plane;
