@@ -1703,9 +1703,31 @@ bool judge(const Scene& sc, const Rules& R, const J& cl, const J& pr, const std:
 std::string g_summary;  // appended to the line printed for a valid file
 // Every entry {"index", "claim", "right", "proof"} of a judgements list: distinct indices, and
 // "right" the judgement that judge(claim, proof, where) gives. Returns how many are right.
+// A claim the program gave no answer in (FORMAT.md, "A judgements file"): the proof names a field
+// where the claim's kind answers, and the claim has it null, or, for a normal or a direction,
+// three exact zeros. Such a claim is wrong.
+void check_no_answer(const J& cl, const J& pr, const std::string& where) {
+    claim(cl.is_object() && cl.contains("kind") && cl["kind"].is_string(), where + ".claim has a kind");
+    shape(pr, where + ".proof", {"no_answer"});
+    claim(at(pr, "no_answer").is_string(), where + ".proof.no_answer is a string");
+    const std::string kind = cl["kind"].get<std::string>(), f = at(pr, "no_answer").get<std::string>();
+    static const std::map<std::string, std::set<std::string>> answers = {
+        {"growth_distance", {"value"}}, {"curve_point", {"rho2"}}, {"switch_point", {"rho1", "rho2"}},
+        {"separating_plane", {"normal", "offset"}}, {"witness_point", {"point"}}, {"distance", {"value", "closest"}},
+        {"penetration_depth", {"value", "direction"}}};
+    const auto k = answers.find(kind);
+    claim(k != answers.end() && k->second.count(f) == 1, where + ".proof.no_answer names a field where a " + kind + " claim answers");
+    claim(cl.contains(f), where + ".claim has the field " + f);
+    const J& v = cl[f];
+    if (v.is_null()) return;
+    claim(f == "normal" || f == "direction", where + ".claim." + f + " is null");
+    claim(v.is_array() && v.size() == 3, where + ".claim." + f + " is null or three zeros");
+    for (const J& x : v) claim(sgn(num(x, where + ".claim." + f)) == 0, where + ".claim." + f + " is null or three zeros");
+}
+
 template <class Judge>
 size_t judge_all(const J& js, Judge judge) {
-    claim(js.is_array() && !js.empty(), "judgements is a nonempty list");
+    claim(js.is_array(), "judgements is a list");
     std::set<size_t> indices;
     size_t rights = 0;
     for (size_t k = 0; k < js.size(); ++k) {
@@ -1713,7 +1735,10 @@ size_t judge_all(const J& js, Judge judge) {
         shape(js[k], w, {"index", "claim", "right", "proof"});
         claim(natural(at(js[k], "index")) && indices.insert(at(js[k], "index").get<size_t>()).second, w + ".index is a distinct natural number");
         claim(at(js[k], "right").is_boolean(), w + ".right is true or false");
-        const bool right = judge(at(js[k], "claim"), at(js[k], "proof"), w);
+        const J& pr = at(js[k], "proof");
+        const bool no_answer = pr.is_object() && pr.contains("no_answer");
+        if (no_answer) check_no_answer(at(js[k], "claim"), pr, w);
+        const bool right = !no_answer && judge(at(js[k], "claim"), pr, w);
         claim(right == at(js[k], "right").get<bool>(), w + ".right must be the judgement the rules give, which is " + (right ? "right" : "wrong"));
         rights += right;
     }

@@ -130,6 +130,13 @@ Rational rational(const py::handle& h, const char* what) {
     throw scalecert::InputError(std::string(what) + ": not a number (int, Fraction, Decimal, float or decimal string)");
 }
 
+// A float (Python's or numpy's) that is NaN or infinite: a program's output that is no answer.
+bool non_finite(const py::handle& h) {
+    if (!(py::isinstance<py::float_>(h) || (has_attr(h, "dtype") && py::str(h.attr("dtype").attr("kind")).cast<std::string>() == "f")))
+        return false;
+    return !std::isfinite(py::float_(h.cast<py::object>()).cast<double>());
+}
+
 py::list as_list(const py::handle& h, const std::string& what) {
     if (py::hasattr(h, "tolist")) return h.attr("tolist")();  // numpy arrays
     if (py::isinstance<py::str>(h) || !py::isinstance<py::sequence>(h)) throw scalecert::InputError(what + ": expected a list");
@@ -251,7 +258,7 @@ py::object exact_ints(const py::handle& o, int depth) {
 // list (or tuple) its claims. json.dumps writes a float as its shortest repr, which strtod reads
 // back as the same double, so a float claims exactly the double it is; an int, a Fraction or a
 // Decimal becomes an exact string ("12", "p/q"); numpy scalars and arrays become numbers and lists
-// (.tolist()). NaN and infinity are refused.
+// (.tolist()). NaN and infinity are written NaN and Infinity, which certify-fp reads as no answer.
 std::string claims_text(const py::handle& c) {
     if (py::isinstance<py::str>(c)) return utf8(c, "claims");
     py::object doc;
@@ -279,7 +286,7 @@ std::string claims_text(const py::handle& c) {
         throw scalecert::InputError("claims: " + py::repr(o).cast<std::string>() + " is not a number, string, list or dict");
     });
     try {
-        return utf8(py::module_::import("json").attr("dumps")(doc, py::arg("default") = exact, py::arg("allow_nan") = false), "claims");
+        return utf8(py::module_::import("json").attr("dumps")(doc, py::arg("default") = exact, py::arg("allow_nan") = true), "claims");
     } catch (const py::error_already_set& e) {
         if (!argument_error(e)) throw;
         const std::string what = utf8(py::str(e.value()), "claims");
@@ -372,7 +379,6 @@ py::dict certify_arrays(const CertifyFn& certify, const std::string& kind, const
         throw scalecert::InputError("certify: unknown kind '" + kind + "' (distance, penetration_depth, verdict, separating_plane, witness_point)");
     const py::list r1 = as_list(rho1, "rho1"), r2 = as_list(rho2, "rho2");
     const size_t n = r1.size();
-    if (n == 0) throw scalecert::InputError("certify: no claims (rho1 is empty)");
     // An array argument with one row per claim, or none.
     auto rows = [&](const py::handle& h, const char* what, bool needed) -> std::optional<py::list> {
         if (h.is_none()) {
@@ -405,16 +411,34 @@ py::dict certify_arrays(const CertifyFn& certify, const std::string& kind, const
         c.kind = ck;
         c.rho1 = rational(r1[i], ("rho1" + at).c_str());
         c.rho2 = rational(r2[i], ("rho2" + at).c_str());
-        if (values) c.value = rational((*values)[i], ("value" + at).c_str());
+        // The program's answers: a NaN or an infinity there is no answer (the claim is wrong).
+        auto answer = [&](const py::handle& h, const char* field, Rational& q) {
+            if (non_finite(h)) {
+                if (c.no_answer.empty()) c.no_answer = field;
+            } else {
+                q = rational(h, (field + at).c_str());
+            }
+        };
+        auto answer_point = [&](const py::handle& h, const char* field, const std::string& what, scalecert::Point& p) {
+            const py::list l = as_list(h, what);
+            if (l.size() == 3 && (non_finite(l[0]) || non_finite(l[1]) || non_finite(l[2]))) {
+                if (c.no_answer.empty()) c.no_answer = field;
+            } else {
+                p = point(h, what);
+            }
+        };
+        if (values) answer((*values)[i], "value", c.value);
         if (cl) {
             const py::list two = as_list((*cl)[i], "closest" + at);
             if (two.size() != 2) throw scalecert::InputError("certify: closest" + at + ": expected two points");
-            c.closest = std::array<scalecert::Point, 2>{point(two[0], "closest" + at + "[0]"), point(two[1], "closest" + at + "[1]")};
+            auto& pq = c.closest.emplace();
+            answer_point(two[0], "closest", "closest" + at + "[0]", pq[0]);
+            answer_point(two[1], "closest", "closest" + at + "[1]", pq[1]);
         }
-        if (dir) c.direction = point((*dir)[i], "direction" + at);
-        if (nor) c.normal = point((*nor)[i], "normal" + at);
-        if (off) c.offset = rational((*off)[i], ("offset" + at).c_str());
-        if (pts) c.point = point((*pts)[i], "point" + at);
+        if (dir) answer_point((*dir)[i], "direction", "direction" + at, c.direction.emplace());
+        if (nor) answer_point((*nor)[i], "normal", "normal" + at, c.normal);
+        if (off) answer((*off)[i], "offset", c.offset.emplace());
+        if (pts) answer_point((*pts)[i], "point", "point" + at, c.point);
         if (verdicts) {
             const std::string v = utf8(py::str(verdicts->empty() ? verdict : (*verdicts)[i]), "certify: verdict" + at);
             if (v == "separated") c.verdict = scalecert::ClaimedVerdict::Separated;
@@ -433,9 +457,10 @@ py::dict certify_arrays(const CertifyFn& certify, const std::string& kind, const
         j = certify(claims, opt);
     }
     py::module_ np = py::module_::import("numpy");
-    py::list right, exact, rel, vr, cr, dr, sq, ev;
+    py::list right, exact, rel, vr, cr, dr, sq, ev, why;
     for (const scalecert::Judgement& g : j.items) {
         right.append(g.right);
+        why.append(g.reason);
         exact.append(g.exact_squared ? g.exact : NAN);
         rel.append(g.exact_squared ? g.rel_error : NAN);
         // (A depth claimed of a separated pair has no parts: each is wrong.)
@@ -448,6 +473,7 @@ py::dict certify_arrays(const CertifyFn& certify, const std::string& kind, const
     }
     py::dict d;
     d["right"] = np.attr("array")(right, "dtype"_a = "bool");
+    d["reason"] = why;  // "" unless the claim held no answer ("value: not a number")
     if (measure) {
         d["exact"] = np.attr("array")(exact, "dtype"_a = "float64");
         d["rel_error"] = np.attr("array")(rel, "dtype"_a = "float64");

@@ -444,7 +444,18 @@ BOOST_AUTO_TEST_CASE(typed_claims_on_parts_by_hand) {
     Claim d;
     d.kind = ClaimKind::PenetrationDepth, d.rho1 = 2, d.rho2 = 2, d.value = 1;
     BOOST_CHECK_THROW(r.certify({d}), scalecert::InputError);
-    BOOST_CHECK_THROW(r.certify({}), scalecert::InputError);
+    BOOST_TEST(r.certify({}).items.empty());  // an empty batch is judged
+    // A claim with no answer (CLAIMS.md): wrong, with its reason, and the batch goes on.
+    Claim nan = c[0];
+    nan.no_answer = "value";
+    Claim flat = c[5];
+    flat.normal = {0, 0, 0};
+    const scalecert::Judgements na = r.certify({nan, c[0], flat});
+    BOOST_TEST(!na.items[0].right);
+    BOOST_TEST(na.items[0].reason == "value: not a number");
+    BOOST_TEST(na.items[1].right);
+    BOOST_TEST(!na.items[2].right);
+    BOOST_TEST(na.items[2].reason == "normal: the zero vector");
 }
 
 namespace {

@@ -320,7 +320,50 @@ BOOST_AUTO_TEST_CASE(malformed_claims_get_one_line) {
     BOOST_TEST(err(R"({"format": "scalecert-claims-1", "claims": [{"kind": "growth_distance", "value": 1, "valu": 2}]})") == "c.json: claims[0].valu: unknown field");
     BOOST_TEST(err(R"({"format": "scalecert-claims-2", "claims": []})").find("format") != std::string::npos);
     BOOST_TEST(err(R"({"format": "scalecert-claims-1", "claims": [], "claims": []})").find("duplicate") != std::string::npos);
-    BOOST_TEST(err(R"({"format": "scalecert-claims-1", "claims": [{"kind": "separating_plane", "rho1": 1, "rho2": 1, "normal": [0, 0, 0]}]})").find("normal") != std::string::npos);
+    // A zero normal is a wrong claim, not a malformed one (outputs_that_are_no_answer).
+    BOOST_TEST(err(R"({"format": "scalecert-claims-1", "claims": [{"kind": "separating_plane", "rho1": 1, "rho2": 1, "normal": [0, 0, 0]}]})").empty());
     BOOST_TEST(err(R"({"format": "scalecert-claims-1", "claims": [{"kind": "verdict", "rho1": 0, "rho2": 1, "verdict": "separated"}]})").find("> 0") != std::string::npos);
 }
 
+
+BOOST_AUTO_TEST_CASE(outputs_that_are_no_answer) {
+    // CLAIMS.md, "Outputs that are no answer", by hand on the stacked cubes: P1(1) = [0, 2]^3 and
+    // P2(1/2) = [0, 2]^2 x [7/2, 9/2] are 3/2 apart; at (2, 2) they overlap by 1 along z.
+    Claims k("stacked_cubes");
+    long wrong = -1, count = -1;
+    const std::string batch = R"({"format": "scalecert-claims-1", "claims": [
+        {"kind": "distance", "rho1": 1, "rho2": 0.5, "value": 1.5},
+        {"kind": "distance", "rho1": 1, "rho2": 0.5, "value": NaN},
+        {"kind": "penetration_depth", "rho1": 2, "rho2": 2, "value": 1, "direction": [0, 0, 0]},
+        {"kind": "separating_plane", "rho1": 1, "rho2": 0.5, "normal": [0, null, 1]},
+        {"kind": "distance", "rho1": 1, "rho2": 0.5, "value": 1.5, "closest": [[1, 1, 2], [1, 1, -Infinity]]},
+        {"kind": "curve_point", "rho1": 1, "rho2": Infinity},
+        {"kind": "growth_distance", "value": null}]})";
+    const nlohmann::json r = nlohmann::json::parse(certify_fp(k.m, k.c, batch, "c.json", ClaimOptions{false, Q(0), true}, &wrong));
+    BOOST_TEST(wrong == 6);
+    const auto& cl = r["claims"];
+    BOOST_TEST(cl[0]["right"].get<bool>());
+    const char* field[] = {"", "value", "direction", "normal", "closest", "rho2", "value"};
+    const char* reason[] = {"", "not a number", "the zero vector", "not a number", "not a number", "not a number", "not a number"};
+    for (int i = 1; i < 7; ++i) {
+        BOOST_TEST(!cl[i]["right"].get<bool>(), i);
+        BOOST_TEST(cl[i]["no_answer"] == field[i], i);
+        BOOST_TEST(cl[i]["reason"] == reason[i], i);
+    }
+    // The line format: printf's nan and inf where the program answers; a non-number scaling is
+    // bad input, as is a non-number in a curve claim.
+    const std::string lines = certify_fp(ClaimModels::of(k.m, k.c), "growth nan\ncurve 1 -INF\ngrowth 3/2\n", "c.txt", ClaimOptions{false, Q(0), false}, &wrong, &count);
+    BOOST_TEST(wrong == 2);
+    BOOST_TEST(count == 3);
+    BOOST_TEST(lines.find("WRONG  growth distance nan: value is not a number: no answer") != std::string::npos, lines);
+    BOOST_CHECK_THROW(certify_fp(k.m, k.c, "nan 1 separated\n", "c.txt", ClaimOptions{}, &wrong), InputError);
+    BOOST_CHECK_THROW(k.one(R"({"kind": "verdict", "rho1": NaN, "rho2": 1, "verdict": "separated"})"), InputError);
+    BOOST_CHECK_THROW(k.one(R"({"kind": "curve", "vertices": [[1, 2], [2, NaN]]})"), InputError);
+    // An empty batch is judged: 0 claims, none wrong.
+    for (const std::string empty : {std::string(R"({"format": "scalecert-claims-1", "claims": []})"), std::string("# nothing\n\n")}) {
+        wrong = count = -1;
+        certify_fp(ClaimModels::of(k.m, k.c), empty, "c", ClaimOptions{}, &wrong, &count);
+        BOOST_TEST(wrong == 0);
+        BOOST_TEST(count == 0);
+    }
+}

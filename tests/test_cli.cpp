@@ -387,12 +387,19 @@ BOOST_AUTO_TEST_CASE(outputs_go_only_to_regular_files_and_directories_we_can_mak
     BOOST_TEST(!fs::exists(workdir() / "never-made-4"));
 }
 
-BOOST_AUTO_TEST_CASE(claims_and_pairs_must_be_files_with_content) {
+BOOST_AUTO_TEST_CASE(claims_and_pairs_must_be_files) {
     fs::path g = write("claims-scene.json", scene(poly(kCube1), poly(kCube2)));
-    // certify-fp SCENE DIR exited 0 with "claims: 0".
+    // A directory is no claims file (it must not pass as an empty batch).
     expect_error("claims directory", "certify-fp " + g.string() + " " + workdir().string(), "is a directory");
-    fs::path empty = write("empty-claims.txt", "# nothing\n\n");
-    expect_error("no claims", "certify-fp " + g.string() + " " + empty.string(), "no claims");
+    // An empty batch is judged: 0 claims, exit 0; with a certificate the checker accepts.
+    for (const std::string text : {std::string("# nothing\n\n"), std::string(R"({"format": "scalecert-claims-1", "claims": []})")}) {
+        const fs::path empty = write("empty-claims.txt", text), cert = workdir() / "empty.cert.json";
+        fs::remove(cert);
+        Run r = run("certify-fp " + g.string() + " " + empty.string() + " --certificate " + cert.string());
+        BOOST_TEST(r.status == 0, r.err);
+        BOOST_TEST(r.out.find("claims: 0, right: 0, wrong: 0") != std::string::npos, r.out);
+        BOOST_TEST(std::system((std::string(SCALECERT_CHECK_BIN) + " " + cert.string() + " >/dev/null").c_str()) == 0);
+    }
     expect_error("pairs directory", "classify " + g.string() + " " + workdir().string(), "is a directory");
     expect_error("scene directory", "curve " + workdir().string(), "is a directory");
     fs::path bad = write("bad-verdict.txt", "1 2 touch\n");
@@ -630,6 +637,36 @@ BOOST_AUTO_TEST_CASE(certify_fp_exit_status_gates_ci) {
     expect_error("overflowing line", "certify-fp " + sc + " " + write("huge.txt", "1e400 1 separated\n").string(), "beyond the double range");
     expect_error("hex float line", "certify-fp " + sc + " " + write("hex.txt", "0x1.8p0 1 separated\n").string(), "'0x1.8p0' is not a number");
     expect_error("nan line", "certify-fp " + sc + " " + write("nan.txt", "nan 1 separated\n").string(), "'nan' is not a number");
+    // A program's NaN where it answers is a wrong claim and the batch goes on (CLAIMS.md, "Outputs
+    // that are no answer"): exit 1, two of three wrong, each with its reason; the certificate checks.
+    {
+        const fs::path nan = write("nan.json", R"({"format": "scalecert-claims-1", "claims": [
+            {"kind": "distance", "rho1": 1, "rho2": 0.5, "value": 1.5},
+            {"kind": "distance", "rho1": 1, "rho2": 0.5, "value": NaN},
+            {"kind": "penetration_depth", "rho1": 2, "rho2": 2, "value": 1, "direction": [0, 0, 0]}]})");
+        const fs::path cert = workdir() / "nan.cert.json";
+        fs::remove(cert);
+        Run n = run("certify-fp " + sc + " " + nan.string() + " --certificate " + cert.string());
+        BOOST_TEST(n.status == 1, n.err);
+        BOOST_TEST(n.out.find("claims: 3, right: 1, wrong: 2") != std::string::npos, n.out);
+        BOOST_TEST(n.out.find("value is not a number: no answer") != std::string::npos, n.out);
+        BOOST_TEST(n.out.find("direction is the zero vector: no answer") != std::string::npos, n.out);
+        BOOST_TEST(std::system((std::string(SCALECERT_CHECK_BIN) + " " + cert.string() + " >/dev/null").c_str()) == 0);
+        // Forged no-answer judgements: a field that is a number, a field where the kind does not
+        // answer, a direction that is not zero, a right claim with no answer: each rejected (exit 1).
+        const nlohmann::ordered_json good = nlohmann::ordered_json::parse(slurp(cert));
+        auto rejected = [&](const std::string& label, auto&& forge) {
+            nlohmann::ordered_json f = good;
+            forge(f["judgements"]);
+            const fs::path p = write("forged.cert.json", f.dump(1));
+            BOOST_TEST(std::system((std::string(SCALECERT_CHECK_BIN) + " " + p.string() + " >/dev/null 2>&1").c_str()) == 256, label);
+        };
+        rejected("a number", [](auto& js) { js[1]["claim"]["value"] = "3/2"; });
+        rejected("not an answer field", [](auto& js) { js[1]["proof"]["no_answer"] = "rho1"; });
+        rejected("a nonzero direction", [](auto& js) { js[2]["claim"]["direction"] = {"0", "0", "1"}; });
+        rejected("judged right", [](auto& js) { js[1]["right"] = true; });
+        rejected("an extra proof field", [](auto& js) { js[2]["proof"]["squared"] = "1"; });
+    }
     // The smallest double, written as its shortest decimal, is no underflow: it is that double.
     BOOST_TEST(run("certify-fp " + sc + " " + write("denormal.txt", "growth 5e-324\n").string()).status == 1);
     // The report and the certificate under one name: refused before either is written.

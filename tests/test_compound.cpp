@@ -217,7 +217,7 @@ BOOST_AUTO_TEST_CASE(compound_verdicts_equal_the_brute_force_over_all_pairs) {
             bool want = false;
             for (const Polyhedron& A : parts[0])
                 for (const Polyhedron& B : parts[1]) want = want || meet_brute(A, B, sc.P[0].seed, sc.P[1].seed, x[0], x[1]);
-            const std::string v = compound_verdict(r, x[0], x[1]).verdict;
+            const std::string v = verdict_name(compound_verdict(r, x[0], x[1]).verdict);
             BOOST_TEST((v != "separated") == want, "scene " << t << " at (" << x[0] << ", " << x[1] << "): " << v);
             ++checked;
             meeting += want;
@@ -298,9 +298,9 @@ BOOST_AUTO_TEST_CASE(a_u_shape_and_a_peg) {
     BOOST_TEST(cert["pairs"][1]["normals"] == nlohmann::ordered_json::parse(R"([["1", "0", "0"]])"));
     BOOST_TEST(cert["pairs"][2]["normals"] == nlohmann::ordered_json::parse(R"([["-1", "0", "0"]])"));
     BOOST_TEST(cert["pairs"][0]["witnesses"].size() == 4u);
-    BOOST_TEST(compound_verdict(r, Q(1, 2), Q(1)).verdict == std::string("touching"));       // on the wall's line
-    BOOST_TEST(compound_verdict(r, Q(6, 7), Q(12, 7) - Q(1, 100)).verdict == std::string("separated"));  // below the reflex corner
-    BOOST_TEST(compound_verdict(r, Q(1), Q(3)).verdict == std::string("overlapping"));
+    BOOST_TEST(verdict_name(compound_verdict(r, Q(1, 2), Q(1)).verdict) == std::string("touching"));       // on the wall's line
+    BOOST_TEST(verdict_name(compound_verdict(r, Q(6, 7), Q(12, 7) - Q(1, 100)).verdict) == std::string("separated"));  // below the reflex corner
+    BOOST_TEST(verdict_name(compound_verdict(r, Q(1), Q(3)).verdict) == std::string("overlapping"));
 }
 
 BOOST_AUTO_TEST_CASE(far_apart_parts_are_pruned_in_blocks) {
@@ -402,10 +402,10 @@ BOOST_AUTO_TEST_CASE(located_verdicts_equal_the_exact_ones) {
     filter::PredicateStats st;
     for (int G : {1, 3, 16, 64}) {
         const CompoundLocator L(ur, ulo, uhi, G);
-        BOOST_TEST(L.verdict(0.5, 1.0, st) == 1);
-        BOOST_TEST(L.verdict(1.0, 3.0, st) == 2);
-        BOOST_TEST(L.verdict(2.0, 1.0, st) == 0);
-        BOOST_TEST(L.verdict(0.5, std::nextafter(1.0, 0.0), st) == 0);
+        BOOST_TEST(static_cast<int>(L.verdict(0.5, 1.0, st)) == 1);
+        BOOST_TEST(static_cast<int>(L.verdict(1.0, 3.0, st)) == 2);
+        BOOST_TEST(static_cast<int>(L.verdict(2.0, 1.0, st)) == 0);
+        BOOST_TEST(static_cast<int>(L.verdict(0.5, std::nextafter(1.0, 0.0), st)) == 0);
     }
     std::mt19937 g(99);
     std::uniform_real_distribution<double> ur01(0, 1);
@@ -435,8 +435,8 @@ BOOST_AUTO_TEST_CASE(located_verdicts_equal_the_exact_ones) {
             for (const auto& [a, b] : all) {
                 const Q qa(a), qb(b);
                 if (qa < sc.lo[0] || qa > sc.hi[0] || qb < sc.lo[1] || qb > sc.hi[1]) continue;
-                const std::string want = compound_verdict(r, qa, qb).verdict;
-                const int got = L.verdict(a, b, st);
+                const std::string want = verdict_name(compound_verdict(r, qa, qb).verdict);
+                const int got = static_cast<int>(L.verdict(a, b, st));
                 BOOST_TEST(std::string(got == 0 ? "separated" : got == 1 ? "touching" : "overlapping") == want,
                            "scene " << t << " G " << G << " at (" << a << ", " << b << ")");
                 if (G == 5) {
@@ -449,11 +449,11 @@ BOOST_AUTO_TEST_CASE(located_verdicts_equal_the_exact_ones) {
                 ++counts[got];
             }
         }
-        const std::vector<std::int8_t> batch = CompoundLocator(r, sc.lo, sc.hi, 16).classify({1.0, 2.0, 0.25}, {1.0, 2.0, 3.0}, 2);
+        const std::vector<Verdict> batch = CompoundLocator(r, sc.lo, sc.hi, 16).classify({1.0, 2.0, 0.25}, {1.0, 2.0, 3.0}, 2);
         for (int k = 0; k < 3; ++k) {
             const double a[3] = {1.0, 2.0, 0.25}, b[3] = {1.0, 2.0, 3.0};
-            const std::string want = compound_verdict(r, Q(a[k]), Q(b[k])).verdict;
-            BOOST_TEST(batch[static_cast<size_t>(k)] == (want == "separated" ? 0 : want == "touching" ? 1 : 2));
+            const std::string want = verdict_name(compound_verdict(r, Q(a[k]), Q(b[k])).verdict);
+            BOOST_TEST(static_cast<int>(batch[static_cast<size_t>(k)]) == (want == "separated" ? 0 : want == "touching" ? 1 : 2));
         }
     }
     BOOST_TEST(counts[1] > 20);  // touching points (on polygon edges) were reached
@@ -601,7 +601,7 @@ BOOST_AUTO_TEST_CASE(boundary_labels_equal_the_brute_force_contacts) {
                 const auto [f1, f2] = brute(p.part1, p.part2, mid);
                 BOOST_TEST((f1 == e.contact->contact.feat1), "scene " << t);
                 BOOST_TEST((f2 == e.contact->contact.feat2), "scene " << t);
-                BOOST_TEST(compound_verdict(r, mid[0], mid[1]).verdict == std::string("touching"));
+                BOOST_TEST(verdict_name(compound_verdict(r, mid[0], mid[1]).verdict) == std::string("touching"));
                 ++edges;
             }
         for (const CompoundSwitch& s : b.switches) {
@@ -707,7 +707,7 @@ BOOST_AUTO_TEST_CASE(a_normal_tight_everywhere_holds_no_edge) {
         BOOST_TEST(e.contact->tight.size() == 2u);  // −x and +y
     }
     BOOST_TEST(contacts == 1);
-    BOOST_TEST(compound_verdict(r, Q(3), Q(1, 2)).verdict == std::string("touching"));  // inside the polygon, yet touching
+    BOOST_TEST(verdict_name(compound_verdict(r, Q(3), Q(1, 2)).verdict) == std::string("touching"));  // inside the polygon, yet touching
 }
 
 // ---- certify-fp on compounds ------------------------------------------------------------------
@@ -765,9 +765,9 @@ BOOST_AUTO_TEST_CASE(band_claims_judged_by_hand) {
     const CompoundJudge::Distance d = judge.distance(Q(3), Q(2));
     BOOST_TEST(d.squared == Q(1, 4));
     BOOST_TEST(d.part1 == 0);
-    BOOST_TEST(judge.verdict(Q(3, 2), Q(2)).verdict == 2);
-    BOOST_TEST(judge.verdict(Q(7, 6), Q(2)).verdict == 1);
-    BOOST_TEST(judge.verdict(Q(7, 6) - Q(1, 1000), Q(2)).verdict == 0);
+    BOOST_TEST(static_cast<int>(judge.verdict(Q(3, 2), Q(2)).verdict) == 2);
+    BOOST_TEST(static_cast<int>(judge.verdict(Q(7, 6), Q(2)).verdict) == 1);
+    BOOST_TEST(static_cast<int>(judge.verdict(Q(7, 6) - Q(1, 1000), Q(2)).verdict) == 0);
     BOOST_TEST(judge.locate(0, Q(3, 2), {Q(-4), Q(0), Q(0)}) == 1);  // in the left part
 }
 
@@ -845,7 +845,7 @@ BOOST_AUTO_TEST_CASE(compound_judgements_equal_the_brute_force) {
                 if (least < 0 || e < least) least = e;
             }
             Json proof;
-            BOOST_TEST(judge.verdict(r1, r2, &proof).verdict == want, "scene " << t << " at (" << r1 << ", " << r2 << ")");
+            BOOST_TEST(static_cast<int>(judge.verdict(r1, r2, &proof).verdict) == want, "scene " << t << " at (" << r1 << ", " << r2 << ")");
             BOOST_TEST(judge.distance(r1, r2, &proof).squared == least, "scene " << t << " at (" << r1 << ", " << r2 << ")");
             ++kinds[want];
             ++checked;

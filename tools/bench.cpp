@@ -569,7 +569,7 @@ void compound_costs(bool quick) {
         for (long i = 0; i < nq; ++i) r1[static_cast<size_t>(i)] = u1(g), r2[static_cast<size_t>(i)] = u1(g);
         filter::PredicateStats st;
         volatile int sink = 0;
-        const double t_query = per_call([&](long i) { sink += L.verdict(r1[static_cast<size_t>(i)], r2[static_cast<size_t>(i)], st); }, nq);
+        const double t_query = per_call([&](long i) { sink += static_cast<int>(L.verdict(r1[static_cast<size_t>(i)], r2[static_cast<size_t>(i)], st)); }, nq);
         // The baseline: libccd GJK on the part pairs, per query, stopping at the first pair that meets.
         std::vector<std::unique_ptr<fp::Method>> all, kept;
         const size_t n2 = sc.P[1].parts.size();

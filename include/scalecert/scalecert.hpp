@@ -6,6 +6,7 @@
 #include <gmpxx.h>
 
 #include <array>
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -27,7 +28,7 @@ std::string to_string(const Rational& q);          // "p/q" in lowest terms, or 
 // Bad input: a scene, a number, a file. what() is one line naming the problem.
 struct InputError : std::runtime_error { using std::runtime_error::runtime_error; };
 
-enum class Verdict { Separated, Touching, Overlapping };
+enum class Verdict : std::int8_t { Separated, Touching, Overlapping };
 enum class Feature { Vertex, Edge, Face };
 enum class ContactKind { VV, VE, VF, EV, EE, EF, FV, FE, FF };  // feature of P1, then of P2
 const char* name(Verdict v);       // "separated", "touching", "overlapping"
@@ -113,6 +114,10 @@ struct Claim {
     Rational value = 0;                             // Distance, PenetrationDepth
     std::optional<std::array<Point, 2>> closest;    // Distance: on P1, on P2
     std::optional<Point> direction;                 // PenetrationDepth
+    // The field in which the program gave no answer (a NaN or an infinity it wrote, e.g. "value"),
+    // if any: the claim is judged wrong (CLAIMS.md, "Outputs that are no answer"). A zero normal
+    // or direction is no answer too.
+    std::string no_answer;
 };
 // Its judgement, part by part (CLAIMS.md): right when every part given is right.
 struct Judgement {
@@ -122,6 +127,7 @@ struct Judgement {
     double exact = 0;                       // √exact_squared, correctly rounded (MPFR)
     double rel_error = 0;                   // |value − exact| / exact, MPFR-rounded (0 when both are 0; inf when only exact is)
     std::optional<Verdict> exact_verdict;   // verdicts
+    std::string reason;                     // a claim with no answer: the field and why ("value: not a number")
 };
 struct Judgements {
     std::vector<Judgement> items;  // one per claim, in order

@@ -587,3 +587,25 @@ def test_region_certify_over_arrays_by_hand():
     assert json.loads(p["certificate"])["kind"] == "compound_judgements"
     with pytest.raises(scalecert.InputError, match="two convex objects"):
         band.certify("penetration_depth", [2], [2], value=[1])
+
+
+def test_outputs_that_are_no_answer_are_wrong_claims(tmp_path):
+    # CLAIMS.md, "Outputs that are no answer", by hand on the stacked cubes: at (1, 1/2) they are
+    # 3/2 apart. A NaN distance, an infinite coordinate, a zero normal: each wrong with its reason,
+    # the right claim beside them judged as usual; a certificate the checker accepts.
+    s = stacked()
+    d = s.certify("distance", [1.0, 1.0, 1.0], [0.5, 0.5, 0.5], value=[1.5, float("nan"), 1.5],
+                  closest=[[[1, 1, 2], [1, 1, 3.5]], [[1, 1, 2], [1, 1, 3.5]], [[1, 1, 2], [1, 1, float("inf")]]],
+                  certificate=True)
+    assert list(d["right"]) == [True, False, False] and d["wrong"] == 2
+    assert d["reason"] == ["", "value: not a number", "closest: not a number"]
+    (tmp_path / "d.json").write_text(d["certificate"])
+    assert subprocess.run([CHECK, str(tmp_path / "d.json")], capture_output=True).returncode == 0
+    p = s.certify("separating_plane", [1.0], [0.5], normal=[[0, 0, 0]])
+    assert not p["right"][0] and p["reason"] == ["normal: the zero vector"]
+    # Through certify_fp: json.dumps writes NaN, which is read as no answer.
+    r = s.certify_fp([{"kind": "distance", "rho1": 1, "rho2": 0.5, "value": float("nan")},
+                      {"kind": "distance", "rho1": 1, "rho2": 0.5, "value": 1.5}])
+    assert [c["right"] for c in r["claims"]] == [False, True] and r["claims"][0]["no_answer"] == "value"
+    # An empty batch is judged: 0 claims.
+    assert s.certify_fp([])["wrong"] == 0 and len(s.certify("verdict", [], [], verdict="separated")["right"]) == 0

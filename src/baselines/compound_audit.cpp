@@ -60,7 +60,7 @@ std::optional<std::array<double, 2>> double_on_edge(const EdgeRef& e, const Poin
 }
 
 int exact_verdict(CompoundJudge& judge, double r1, double r2) {
-    return judge.verdict(exact_from_double(r1), exact_from_double(r2)).verdict;
+    return static_cast<int>(judge.verdict(exact_from_double(r1), exact_from_double(r2)).verdict);  // 0, 1, 2: Verdict's order
 }
 
 // A method's verdict (+1 separated, 0 touching, −1 overlapping) is wrong on a pair that is not

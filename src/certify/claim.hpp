@@ -48,6 +48,10 @@ struct TypedClaim {
     std::optional<Vec3q> direction;           // Depth (nonzero)
     std::optional<std::string> contact;       // SwitchPoint
     std::shared_ptr<const ClaimedCurve> curve;  // Curve
+    // A field the program wrote no answer in (CLAIMS.md, "Outputs that are no answer"): a NaN, an
+    // infinity or a null where a number is due, or a zero normal or direction. The claim is
+    // judged wrong; that field's value above is not used.
+    std::string no_answer, no_answer_reason;
 };
 
 // An exact switch point of the curve, with its contact label.

@@ -85,48 +85,55 @@ public:
         }
         case ClaimType::Growth:
             only(claim, {"kind", "value"});
-            c.value = field(claim, "value");
-            if (sgn(c.value) < 0) fail("value", "a growth distance is >= 0 (0 when the seeds coincide)");
+            if (answer(need(claim, "value"), "value", c, c.value) && sgn(c.value) < 0)
+                fail("value", "a growth distance is >= 0 (0 when the seeds coincide)");
             break;
-        case ClaimType::SwitchPoint:
+        case ClaimType::SwitchPoint:  // both scalings are the program's answer
             only(claim, {"kind", "rho1", "rho2", "contact"});
-            pair_at(claim, c);
+            for (const char* k : {"rho1", "rho2"}) {
+                Q& r = k[3] == '1' ? c.rho1 : c.rho2;
+                if (answer(need(claim, k), k, c, r) && sgn(r) <= 0) fail(k, "scalings must be > 0 (got " + to_exact_string(r) + ")");
+            }
             c.contact = label(claim);
             break;
-        case ClaimType::CurvePoint:
+        case ClaimType::CurvePoint:  // ρ2 is the program's answer
             only(claim, {"kind", "rho1", "rho2"});
-            pair_at(claim, c);
+            c.rho1 = field(claim, "rho1");
+            if (sgn(c.rho1) <= 0) fail("rho1", "scalings must be > 0 (got " + to_exact_string(c.rho1) + ")");
+            if (answer(need(claim, "rho2"), "rho2", c, c.rho2) && sgn(c.rho2) <= 0)
+                fail("rho2", "scalings must be > 0 (got " + to_exact_string(c.rho2) + ")");
             break;
         case ClaimType::Curve: c.curve = std::make_shared<const ClaimedCurve>(curve(claim)); break;
         case ClaimType::Plane:
             only(claim, {"kind", "rho1", "rho2", "normal", "offset"});
             pair_at(claim, c);
-            c.normal = point(need(claim, "normal"), "normal");
-            if (is_zero(c.normal)) fail("normal", "the zero vector is not a normal");
-            if (const JNode* off = claim.find("offset")) c.offset = number(*off, "offset");
+            if (answer_point(need(claim, "normal"), "normal", c, c.normal) && is_zero(c.normal))
+                set_no_answer(c, "normal", "the zero vector");
+            if (const JNode* off = claim.find("offset")) answer(*off, "offset", c, c.offset.emplace());
             break;
         case ClaimType::Witness:
             only(claim, {"kind", "rho1", "rho2", "point"});
             pair_at(claim, c);
-            c.point = point(need(claim, "point"), "point");
+            answer_point(need(claim, "point"), "point", c, c.point);
             break;
         case ClaimType::Distance:
             only(claim, {"kind", "rho1", "rho2", "value", "closest"});
             pair_at(claim, c);
-            c.value = field(claim, "value");
+            answer(need(claim, "value"), "value", c, c.value);
             if (const JNode* cl = claim.find("closest")) {
-                if (cl->kind != JNode::Array || cl->items.size() != 2) fail("closest", "expected [point on P1, point on P2]");
-                c.closest = std::array<Vec3q, 2>{point(cl->items[0], "closest"), point(cl->items[1], "closest")};
+                std::array<Vec3q, 2>& pq = c.closest.emplace();
+                if (cl->kind == JNode::Null) set_no_answer(c, "closest", "not two points");
+                else if (cl->kind != JNode::Array || cl->items.size() != 2) fail("closest", "expected [point on P1, point on P2]");
+                else answer_point(cl->items[0], "closest", c, pq[0]) && answer_point(cl->items[1], "closest", c, pq[1]);
             }
             break;
         case ClaimType::Depth:
             only(claim, {"kind", "rho1", "rho2", "value", "direction"});
             pair_at(claim, c);
-            c.value = field(claim, "value");
-            if (const JNode* dir = claim.find("direction")) {
-                c.direction = point(*dir, "direction");
-                if (is_zero(*c.direction)) fail("direction", "the zero vector is not a direction");
-            }
+            answer(need(claim, "value"), "value", c, c.value);
+            if (const JNode* dir = claim.find("direction"))
+                if (answer_point(*dir, "direction", c, c.direction.emplace()) && is_zero(*c.direction))
+                    set_no_answer(c, "direction", "the zero vector");
             break;
         }
         return c;
@@ -172,6 +179,35 @@ private:
         return q;
     }
     Q field(const JNode& o, const char* key) const { return number(need(o, key), key); }
+    // A number the program computed, into q: a non-number there (null, NaN, ±Infinity) makes the
+    // claim no answer (false returned, q untouched).
+    static bool non_number(const JNode& n) {
+        return n.kind == JNode::Null || (n.kind == JNode::Number && (n.text == "NaN" || n.text == "Infinity" || n.text == "-Infinity"));
+    }
+    static void set_no_answer(TypedClaim& c, const std::string& key, const char* reason) {
+        if (!c.no_answer.empty()) return;  // the first one found is named
+        c.no_answer = key;
+        c.no_answer_reason = reason;
+    }
+    bool answer(const JNode& n, const std::string& key, TypedClaim& c, Q& q) const {
+        if (non_number(n)) {
+            set_no_answer(c, key, "not a number");
+            return false;
+        }
+        q = number(n, key);
+        return true;
+    }
+    // The same for a point: null, or any coordinate a non-number.
+    bool answer_point(const JNode& n, const std::string& key, TypedClaim& c, Vec3q& p) const {
+        if (n.kind == JNode::Null || (n.kind == JNode::Array && std::any_of(n.items.begin(), n.items.end(), non_number))) {
+            if (n.kind == JNode::Null || n.items.size() == 3) {
+                set_no_answer(c, key, "not a number");
+                return false;
+            }
+        }
+        p = point(n, key);
+        return true;
+    }
     Vec3q point(const JNode& n, const std::string& key) const {
         if (n.kind != JNode::Array || n.items.size() != 3) fail(key, "expected 3 numbers");
         return {number(n.items[0], key), number(n.items[1], key), number(n.items[2], key)};
@@ -287,6 +323,18 @@ void describe(const TypedClaim& c, const Judged& g, bool parts, Json& o, std::st
         put_exact(o, "rho1", c.rho1);
         put_exact(o, "rho2", c.rho2);
     };
+    if (!c.no_answer.empty()) {
+        // The scaling pair it was asked at, where that is a question and not the answer.
+        const bool asked = c.type != ClaimType::Growth && c.type != ClaimType::Curve && c.type != ClaimType::SwitchPoint;
+        if (asked && c.type != ClaimType::CurvePoint) rhos();
+        else if (c.type == ClaimType::CurvePoint) put_exact(o, "rho1", c.rho1);
+        o["no_answer"] = c.no_answer;
+        o["reason"] = c.no_answer_reason;
+        text = std::string(type_name(c.type)) +
+               (asked ? c.type == ClaimType::CurvePoint ? " at rho1 = " + num(c.rho1) : " at " + at(c) : std::string()) + ": " +
+               c.no_answer + " is " + c.no_answer_reason + ": no answer";
+        return;
+    }
     switch (c.type) {
     case ClaimType::Verdict:
         rhos();
@@ -465,6 +513,13 @@ std::pair<Q, Q> read_scalings(const std::string& a, const std::string& b, bool e
     return {r1, r2};
 }
 
+// What printf writes for a non-finite double (any case, any sign): no answer.
+bool non_number_word(std::string w) {
+    if (!w.empty() && (w[0] == '-' || w[0] == '+')) w.erase(0, 1);
+    std::transform(w.begin(), w.end(), w.begin(), [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
+    return w == "nan" || w == "inf" || w == "infinity";
+}
+
 // One line's claim, typed: 'RHO1 RHO2 VERDICT', and on convex objects 'curve RHO1 RHO2' (a curve
 // point, exactly) and 'growth RHO'.
 TypedClaim read_line(const std::vector<std::string>& w, bool exact_decimals, bool parts, const std::string& where) {
@@ -474,9 +529,18 @@ TypedClaim read_line(const std::vector<std::string>& w, bool exact_decimals, boo
                                  "growth distance are claims on convex objects)");
     if (w[0] == "curve" && w.size() == 3) {
         c.type = ClaimType::CurvePoint;
-        std::tie(c.rho1, c.rho2) = read_scalings(w[1], w[2], exact_decimals, where);
+        if (non_number_word(w[2])) {  // ρ2 is the program's answer
+            c.rho1 = read_scalings(w[1], "1", exact_decimals, where).first;
+            c.no_answer = "rho2", c.no_answer_reason = "not a number";
+        } else {
+            std::tie(c.rho1, c.rho2) = read_scalings(w[1], w[2], exact_decimals, where);
+        }
     } else if (w[0] == "growth" && w.size() == 2) {
         c.type = ClaimType::Growth;
+        if (non_number_word(w[1])) {
+            c.no_answer = "value", c.no_answer_reason = "not a number";
+            return c;
+        }
         c.value = read_number(w[1], exact_decimals, where);
         if (sgn(c.value) < 0) throw InputError(where + ": a growth distance is >= 0 (0 when the seeds coincide)");
     } else if (w.size() == 3) {
@@ -493,6 +557,15 @@ TypedClaim read_line(const std::vector<std::string>& w, bool exact_decimals, boo
 
 // A line's report object (beside its line number) and text; w: the line's words as written.
 void describe_line(const TypedClaim& c, const Judged& g, bool parts, const std::vector<std::string>& w, Json& o, std::string& text) {
+    if (!c.no_answer.empty()) {
+        o["claim"] = c.type == ClaimType::Growth ? "growth" : "curve";
+        if (c.type == ClaimType::CurvePoint) put_exact(o, "rho1", c.rho1);
+        o["no_answer"] = c.no_answer;
+        o["reason"] = c.no_answer_reason;
+        text = (c.type == ClaimType::Growth ? "growth distance " + w[1] : "curve point (" + w[1] + ", " + w[2] + ")") + ": " + c.no_answer +
+               " is " + c.no_answer_reason + ": no answer";
+        return;
+    }
     switch (c.type) {
     case ClaimType::CurvePoint:
         o["claim"] = "curve";
@@ -555,7 +628,7 @@ Json entry(size_t index, Proof&& p, bool right) {
 JNode claims_root(const std::string& claims, const std::string& name) {
     JNode root;
     try {
-        root = parse_strict_json(claims);
+        root = parse_strict_json(claims, true);
     } catch (const JsonError& e) {
         throw InputError(name + ": malformed JSON near byte " + std::to_string(e.pos) + ": " + e.what);
     }
@@ -565,7 +638,7 @@ JNode claims_root(const std::string& claims, const std::string& name) {
         throw InputError(name + ": format: expected \"scalecert-claims-1\"");
     for (const std::string& k : root.keys)
         if (k != "format" && k != "claims") throw InputError(name + ": " + k + ": unknown field");
-    if (!list || list->kind != JNode::Array || list->items.empty()) throw InputError(name + ": claims: expected a non-empty list");
+    if (!list || list->kind != JNode::Array) throw InputError(name + ": claims: expected a list");
     return root;
 }
 
@@ -626,9 +699,6 @@ Run run_claims(Rules& rules, const std::string& claims, const std::string& name,
         // The certificate's entries are numbered by line.
         one(c, static_cast<size_t>(no), o, [&](const Judged& g, std::string& text) { describe_line(c, g, parts, w, o, text); });
     }
-    if (r.n == 0)
-        throw InputError(name + (parts ? ": no claims (expected 'RHO1 RHO2 VERDICT' lines)"
-                                       : ": no claims (expected 'RHO1 RHO2 VERDICT', 'curve RHO1 RHO2' or 'growth RHO' lines)"));
     return r;
 }
 }  // namespace

@@ -289,7 +289,7 @@ CompoundJudge::Verdict CompoundJudge::verdict(const Q& r1, const Q& r2, Json* pr
                 if (proof && (code < 0 || !apart_along(b, code))) code = longest_axis(b, n, apart_along);
                 const int s = pair_sign(a, b, r1, r2, b1, b2, d1, d2, &code, &nrm, code);
                 if (s > 0) {
-                    v = {2, a, b};
+                    v = {scalecert::Verdict::Overlapping, a, b};
                     if (proof) {
                         PairCache& p = pair(a, b);
                         std::vector<int> all1(p.hm.P[0].vertices), all2v(p.hm.P[1].vertices);
@@ -300,7 +300,7 @@ CompoundJudge::Verdict CompoundJudge::verdict(const Q& r1, const Q& r2, Json* pr
                     }
                     return v;
                 }
-                if (s == 0 && v.part1 < 0) v = {1, a, b};
+                if (s == 0 && v.part1 < 0) v = {scalecert::Verdict::Touching, a, b};
                 if (proof) add_block(blocks, a, b, code, nrm);  // (blocks only for a proof: m·n of them at worst)
             }
             if (proof) check_blocks(blocks.size());
@@ -308,8 +308,8 @@ CompoundJudge::Verdict CompoundJudge::verdict(const Q& r1, const Q& r2, Json* pr
     }
     if (proof) {
         blocks_ += blocks.size();
-        *proof = Json{{"verdict", v.verdict == 1 ? "touching" : "separated"}, {"blocks", blocks_json(blocks)}};
-        if (v.verdict == 1) {
+        *proof = Json{{"verdict", verdict_name(v.verdict)}, {"blocks", blocks_json(blocks)}};
+        if (v.verdict == scalecert::Verdict::Touching) {
             long fallbacks = 0;
             const Witness w = pair_common_point(pair(v.part1, v.part2).hm, r1, r2, fallbacks);
             (*proof)["pair"] = Json::array({v.part1, v.part2});
@@ -327,7 +327,7 @@ Vec3q scaled(const Vec3q& s, const Q& rho, const Vec3q& y) {
 
 CompoundJudge::Distance CompoundJudge::distance(const Q& r1, const Q& r2, Json* proof) {
     const Verdict v = verdict(r1, r2);
-    if (v.verdict > 0) {
+    if (v.verdict != scalecert::Verdict::Separated) {
         // They meet: a common point of the deciding pair.
         long fallbacks = 0;
         const Witness w = pair_common_point(pair(v.part1, v.part2).hm, r1, r2, fallbacks);

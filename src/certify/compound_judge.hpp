@@ -42,12 +42,12 @@ public:
     size_t parts(int i) const { return parts_[i].size(); }
     const Polyhedron& part(int i, size_t k) const { return parts_[i][k]; }
 
-    // 0 separated, 1 touching, 2 overlapping; the deciding pair (−1 when separated). With
+    // The exact verdict and the deciding pair (−1 when separated). With
     // `proof`: {"verdict", and by verdict "blocks" (separated, touching), "pair" and "witness"
     // (touching: a common point of that pair) or "pair" and "interior" (overlapping: a point
     // inside both parts, every listed weight > 0 on points spanning 3 dimensions)}.
     struct Verdict {
-        int verdict = 0;
+        scalecert::Verdict verdict = scalecert::Verdict::Separated;
         int part1 = -1, part2 = -1;
     };
     Verdict verdict(const Q& rho1, const Q& rho2, Json* proof = nullptr);

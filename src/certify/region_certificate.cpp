@@ -256,7 +256,7 @@ Json compound_region_json(const ExactScene& sc, const CompoundRegion& r, const s
     put_boundary(j, r, sc);
     if (at) {
         const CompoundVerdict v = compound_verdict(r, (*at)[0], (*at)[1]);
-        Json a{{"rho1", to_exact_string((*at)[0])}, {"rho2", to_exact_string((*at)[1])}, {"verdict", v.verdict}};
+        Json a{{"rho1", to_exact_string((*at)[0])}, {"rho2", to_exact_string((*at)[1])}, {"verdict", verdict_name(v.verdict)}};
         if (v.part1 >= 0) a["pair"] = Json{{"P1_part", v.part1}, {"P2_part", v.part2}};
         j["at"] = a;
     }

@@ -69,7 +69,19 @@ Vec3q diff(const Vec3q& a, const Vec3q& b) { return {a[0] - b[0], a[1] - b[1], a
 Q dot3(const Vec3q& a, const Vec3q& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 }  // namespace
 
+namespace {
+Json exact_fields_json(const TypedClaim& c);
+}  // namespace
+
+// The field with no answer is null (a zero normal or direction stays as it was written).
 Json exact_claim_json(const TypedClaim& c) {
+    Json j = exact_fields_json(c);
+    if (!c.no_answer.empty() && c.no_answer_reason != std::string("the zero vector")) j[c.no_answer] = nullptr;
+    return j;
+}
+
+namespace {
+Json exact_fields_json(const TypedClaim& c) {
     Json j{{"kind", type_name(c.type)}};
     switch (c.type) {
     case ClaimType::Growth:
@@ -125,6 +137,7 @@ Json exact_claim_json(const TypedClaim& c) {
     }
     return j;
 }
+}  // namespace
 
 // ---- two convex objects ----------------------------------------------------------------------
 
@@ -444,9 +457,19 @@ ConvexRules::~ConvexRules() = default;
 long ConvexRules::distance_fallbacks() const { return impl_->distance_fallbacks; }
 long ConvexRules::depth_fallbacks() const { return impl_->depth_fallbacks; }
 
+namespace {
+// A claim with no answer in it is wrong; its proof names the field (FORMAT.md).
+bool no_answer(const TypedClaim& c, Proof* proof) {
+    if (c.no_answer.empty()) return false;
+    if (proof) proof->proof = Json{{"no_answer", c.no_answer}};
+    return true;
+}
+}  // namespace
+
 Judged ConvexRules::judge(const TypedClaim& c, Proof* proof) {
     Judged g;
     if (proof) proof->claim = exact_claim_json(c);
+    if (no_answer(c, proof)) return g;
     switch (c.type) {
     case ClaimType::Verdict: impl_->verdict(c, g, proof); break;
     case ClaimType::Growth: impl_->growth(c, g, proof); break;
@@ -467,19 +490,16 @@ bool PartsRules::takes(ClaimType t) {
     return t == ClaimType::Verdict || t == ClaimType::Plane || t == ClaimType::Witness || t == ClaimType::Distance;
 }
 
-namespace {
-Verdict verdict_of_code(int v) { return v == 2 ? Verdict::Overlapping : v == 1 ? Verdict::Touching : Verdict::Separated; }
-}  // namespace
-
 Judged PartsRules::judge(const TypedClaim& c, Proof* proof) {
     if (!takes(c.type)) throw std::logic_error("PartsRules: a claim on two convex objects");
     Judged g;
     Json* p = proof ? &proof->proof : nullptr;
     if (proof) proof->claim = exact_claim_json(c);
+    if (no_answer(c, proof)) return g;
     switch (c.type) {
     case ClaimType::Verdict: {
         const CompoundJudge::Verdict e = judge_.verdict(c.rho1, c.rho2, p);
-        g.exact_verdict = verdict_of_code(e.verdict);
+        g.exact_verdict = e.verdict;
         g.part1 = e.part1;
         g.part2 = e.part2;
         g.right = verdict_matches(c.verdict, *g.exact_verdict);
@@ -496,7 +516,7 @@ Judged PartsRules::judge(const TypedClaim& c, Proof* proof) {
         g.in_part2 = judge_.locate(1, c.rho2, c.point, p ? &p2 : nullptr);
         g.in1 = g.in_part1 >= 0;
         g.in2 = g.in_part2 >= 0;
-        g.exact_verdict = verdict_of_code(judge_.verdict(c.rho1, c.rho2).verdict);
+        g.exact_verdict = judge_.verdict(c.rho1, c.rho2).verdict;
         g.right = g.in1 && g.in2;
         if (p) *p = Json{{"P1", std::move(p1)}, {"P2", std::move(p2)}};
         break;

@@ -41,7 +41,7 @@ Command add_classify(CLI::App& app) {
                 clock.lap("parse pairs");
                 std::vector<Verdict> out;
                 if (o.compound) {  // objects made of parts: located on the region's grid (pairs in I1 x I2)
-                    emit(verdict_lines(verdicts_of(o.compound->classify(r1, r2, a->threads, a->pairs))), a->out);
+                    emit(verdict_lines(o.compound->classify(r1, r2, a->threads, a->pairs)), a->out);
                     return 0;
                 }
                 internal::Session& session = *o.convex;

@@ -35,7 +35,7 @@ Command add_query(CLI::App& app) {
                     if (!a->segment.empty() || a->in_t) throw InputError("--segment and --in-t are for two convex objects");
                     const Q r1 = read_rho(a->rho1, "RHO1", a->scene.opt), r2 = read_rho(a->rho2, "RHO2", a->scene.opt);
                     CompoundJudge& judge = o.compound->judge();
-                    const char* name = verdict_name(verdict_of(judge.verdict(r1, r2).verdict));
+                    const char* name = verdict_name(judge.verdict(r1, r2).verdict);
                     std::string text = std::string(name) + "\n";
                     if (a->json) {
                         const Json claims{{"format", "scalecert-claims-1"},

@@ -63,7 +63,7 @@ Command add_region(CLI::App& app) {
                 CompoundSession session(sc, a->scene.name());
                 if (sub->count("--classify")) {
                     // (Each pair is checked, with the file's name, before the region is built.)
-                    emit(verdict_lines(verdicts_of(session.classify(p1, p2, a->threads, a->classify.empty() ? "-" : a->classify))), a->out);
+                    emit(verdict_lines(session.classify(p1, p2, a->threads, a->classify.empty() ? "-" : a->classify)), a->out);
                     return 0;
                 }
                 std::optional<std::array<Q, 2>> at;

@@ -103,7 +103,7 @@ CompoundLocator::CompoundLocator(const CompoundRegion& r, const Q lo[2], const Q
     }
 }
 
-int CompoundLocator::pair_verdict(std::uint32_t k, double r1, double r2, filter::PredicateStats& st) const {
+Verdict CompoundLocator::pair_verdict(std::uint32_t k, double r1, double r2, filter::PredicateStats& st) const {
     const CompoundRegion::Pair& p = r_.pairs[k];
     int least = 1;
     for (size_t f = 0; f < p.constraints.size() && least >= 0; ++f) {
@@ -111,32 +111,33 @@ int CompoundLocator::pair_verdict(std::uint32_t k, double r1, double r2, filter:
         // (a double is a dyadic rational: its exact value, formed only when the filter cannot tell)
         least = std::min(least, filter::half_plane_side(h.ad, h.bd, h.cd, r1, r2, [&] { return sgn(Q(h.a * Q(r1) + h.b * Q(r2) - h.c)); }, st));
     }
-    return least < 0 ? 0 : least == 0 ? 1 : 2;
+    return least < 0 ? Verdict::Separated : least == 0 ? Verdict::Touching : Verdict::Overlapping;
 }
 
-int CompoundLocator::verdict(double rho1, double rho2, filter::PredicateStats& stats) const {
+Verdict CompoundLocator::verdict(double rho1, double rho2, filter::PredicateStats& stats) const {
     if (!(rho1 >= lo_up_[0] && rho1 <= hi_down_[0] && rho2 >= lo_up_[1] && rho2 <= hi_down_[1]))  // NaN fails too
         throw InputError("(" + std::to_string(rho1) + ", " + std::to_string(rho2) + ") lies outside I1 x I2");
     const size_t nx = x_.size() - 1;
     const size_t i = std::min<size_t>(nx - 1, static_cast<size_t>(std::upper_bound(x_.begin(), x_.end(), rho1) - x_.begin()) - 1);
     const size_t j = std::min<size_t>(y_.size() - 2, static_cast<size_t>(std::upper_bound(y_.begin(), y_.end(), rho2) - y_.begin()) - 1);
     const Cell& c = cells_[j * nx + i];
-    if (c.covered) return 2;
-    int v = 0;
-    for (std::uint32_t t = 0; t < c.count && v < 2; ++t) v = std::max(v, pair_verdict(cand_[c.first + t], rho1, rho2, stats));
+    if (c.covered) return Verdict::Overlapping;
+    Verdict v = Verdict::Separated;  // the most of the candidates' (Separated < Touching < Overlapping)
+    for (std::uint32_t t = 0; t < c.count && v != Verdict::Overlapping; ++t)
+        v = std::max(v, pair_verdict(cand_[c.first + t], rho1, rho2, stats));
     return v;
 }
 
-std::vector<std::int8_t> CompoundLocator::classify(const std::vector<double>& rho1, const std::vector<double>& rho2, unsigned threads,
+std::vector<Verdict> CompoundLocator::classify(const std::vector<double>& rho1, const std::vector<double>& rho2, unsigned threads,
                                                    filter::PredicateStats* stats) const {
     if (rho1.size() != rho2.size()) throw InputError("classify: rho1 and rho2 differ in length");
-    std::vector<std::int8_t> out(rho1.size());
+    std::vector<Verdict> out(rho1.size());
     threads = std::max(1u, threads);
     std::vector<filter::PredicateStats> st(threads);
     const size_t chunk = 4096, n = (rho1.size() + chunk - 1) / chunk;
     parallel_tasks(n, threads, [&](unsigned t, size_t b) {
         for (size_t k = b * chunk; k < std::min(rho1.size(), (b + 1) * chunk); ++k)
-            out[k] = static_cast<std::int8_t>(verdict(rho1[k], rho2[k], st[t]));
+            out[k] = verdict(rho1[k], rho2[k], st[t]);
     });
     if (stats)
         for (const auto& s : st) *stats += s;

@@ -31,9 +31,9 @@ public:
     static int grid_for(const CompoundRegion& r);
     // 0 separated, 1 touching, 2 overlapping at (ρ1, ρ2), which must lie in I1 × I2 (InputError
     // otherwise). Safe to call from several threads at once (statistics go to `stats`).
-    int verdict(double rho1, double rho2, filter::PredicateStats& stats) const;
+    Verdict verdict(double rho1, double rho2, filter::PredicateStats& stats) const;
     // The verdicts of many pairs on `threads` threads; the half-plane statistics summed.
-    std::vector<std::int8_t> classify(const std::vector<double>& rho1, const std::vector<double>& rho2, unsigned threads,
+    std::vector<Verdict> classify(const std::vector<double>& rho1, const std::vector<double>& rho2, unsigned threads,
                                       filter::PredicateStats* stats = nullptr) const;
     struct Counts { long covered = 0, clear = 0, mixed = 0, candidates = 0; };
     Counts counts() const;
@@ -52,7 +52,7 @@ private:
     std::vector<Cell> cells_;    // row-major: cell (i, j) at j * (x_.size() - 1) + i
     std::vector<std::uint32_t> cand_;
     std::vector<bool> only_touches_;  // per pair: some constraint is 0 >= 0 everywhere (never overlapping)
-    int pair_verdict(std::uint32_t k, double r1, double r2, filter::PredicateStats& st) const;
+    Verdict pair_verdict(std::uint32_t k, double r1, double r2, filter::PredicateStats& st) const;
 };
 
 }  // namespace scalecert::internal

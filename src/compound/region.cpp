@@ -316,12 +316,12 @@ CompoundRegion compound_region(const ExactScene& sc, const std::string& name, bo
 }
 
 CompoundVerdict compound_verdict(const CompoundRegion& r, const Q& rho1, const Q& rho2) {
-    CompoundVerdict v{"separated"};
+    CompoundVerdict v;
     for (const CompoundRegion::Pair& p : r.pairs) {
         int least = 1;  // the smallest sign of a ρ1 + b ρ2 − c over the pair's half-planes
         for (const HalfPlane& h : p.constraints) least = std::min(least, sgn(Q(h.a * rho1 + h.b * rho2 - h.c)));
-        if (least > 0) return {"overlapping", p.part1, p.part2};
-        if (least == 0 && v.part1 < 0) v = {"touching", p.part1, p.part2};
+        if (least > 0) return {Verdict::Overlapping, p.part1, p.part2};
+        if (least == 0 && v.part1 < 0) v = {Verdict::Touching, p.part1, p.part2};
     }
     return v;
 }

@@ -117,7 +117,7 @@ CompoundRegion compound_region(const ExactScene& sc, const std::string& name, bo
 // with equality somewhere and none overlaps, else separated (a pruned pair cannot meet in the
 // rectangle). With the first pair that decides it (none when separated).
 struct CompoundVerdict {
-    const char* verdict;  // "separated", "touching" or "overlapping"
+    Verdict verdict = Verdict::Separated;
     int part1 = -1, part2 = -1;
 };
 CompoundVerdict compound_verdict(const CompoundRegion& r, const Q& rho1, const Q& rho2);

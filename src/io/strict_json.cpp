@@ -18,7 +18,7 @@ constexpr int kMaxDepth = 64;
 
 class StrictJson {
 public:
-    explicit StrictJson(const std::string& t) : s_(t) {}
+    StrictJson(const std::string& t, bool non_numbers) : s_(t), non_numbers_(non_numbers) {}
     JNode parse() {
         JNode root;
         ws();
@@ -30,6 +30,7 @@ public:
 
 private:
     const std::string& s_;
+    const bool non_numbers_;
     size_t i_ = 0;
     size_t values_ = 0;
     [[noreturn]] void fail(const std::string& what) const { throw JsonError{i_, what}; }
@@ -83,6 +84,12 @@ private:
         if (c == 't') { literal("true"); n.kind = JNode::Bool; n.text = "true"; return; }
         if (c == 'f') { literal("false"); n.kind = JNode::Bool; n.text = "false"; return; }
         if (c == 'n') { literal("null"); return; }
+        if (non_numbers_ && (c == 'N' || c == 'I' || (c == '-' && i_ + 1 < s_.size() && s_[i_ + 1] == 'I'))) {
+            n.kind = JNode::Number;
+            n.text = c == 'N' ? "NaN" : c == 'I' ? "Infinity" : "-Infinity";
+            literal(n.text.c_str());
+            return;
+        }
         if (c == '-' || (c >= '0' && c <= '9')) { n.kind = JNode::Number; n.text = number(); return; }
         unexpected("unexpected character");
     }
@@ -179,6 +186,6 @@ private:
 
 }  // namespace
 
-JNode parse_strict_json(const std::string& text) { return StrictJson(text).parse(); }
+JNode parse_strict_json(const std::string& text, bool non_numbers) { return StrictJson(text, non_numbers).parse(); }
 
 }  // namespace scalecert::internal

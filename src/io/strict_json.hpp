@@ -26,7 +26,9 @@ struct JsonError { size_t pos; std::string what; };
 
 // No comments, no leading zeros, no bare keys, no trailing commas, UTF-8 only, duplicate keys
 // rejected (a file must not mean two things), at most 64 levels of nesting and kMaxJsonValues
-// values. Throws JsonError.
-JNode parse_strict_json(const std::string& text);
+// values. Throws JsonError. With `non_numbers`, also the tokens NaN, Infinity and -Infinity
+// (what Python's json.dumps writes for non-finite floats), as Number nodes with that text: for
+// claims files, where a program's non-finite output is a wrong answer, not a malformed file.
+JNode parse_strict_json(const std::string& text, bool non_numbers = false);
 
 }  // namespace scalecert::internal

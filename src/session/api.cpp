@@ -238,9 +238,10 @@ internal::TypedClaim typed_claim(const Claim& c, size_t i, bool parts) {
     t.rho2 = canonical_q(c.rho2);
     if (sgn(t.rho1) <= 0) throw InputError(where + ".rho1: scalings must be > 0 (got " + to_exact_string(t.rho1) + ")");
     if (sgn(t.rho2) <= 0) throw InputError(where + ".rho2: scalings must be > 0 (got " + to_exact_string(t.rho2) + ")");
-    auto nonzero = [&](const Point& p, const char* key, const char* what) {
+    if (!c.no_answer.empty()) t.no_answer = c.no_answer, t.no_answer_reason = "not a number";
+    auto nonzero = [&](const Point& p, const char* key) {
         const Point q = canonical(p);
-        if (sgn(q[0]) == 0 && sgn(q[1]) == 0 && sgn(q[2]) == 0) throw InputError(where + "." + key + ": the zero vector is not a " + what);
+        if (sgn(q[0]) == 0 && sgn(q[1]) == 0 && sgn(q[2]) == 0 && t.no_answer.empty()) t.no_answer = key, t.no_answer_reason = "the zero vector";
         return q;
     };
     switch (c.kind) {
@@ -253,7 +254,7 @@ internal::TypedClaim typed_claim(const Claim& c, size_t i, bool parts) {
         break;
     case ClaimKind::SeparatingPlane:
         t.type = ClaimType::Plane;
-        t.normal = nonzero(c.normal, "normal", "normal");
+        t.normal = nonzero(c.normal, "normal");
         if (c.offset) t.offset = canonical_q(*c.offset);
         break;
     case ClaimKind::WitnessPoint:
@@ -269,7 +270,7 @@ internal::TypedClaim typed_claim(const Claim& c, size_t i, bool parts) {
         if (parts) throw InputError(where + ": a penetration depth is a claim on two convex objects");
         t.type = ClaimType::Depth;
         t.value = canonical_q(c.value);
-        if (c.direction) t.direction = nonzero(*c.direction, "direction", "direction");
+        if (c.direction) t.direction = nonzero(*c.direction, "direction");
         break;
     }
     return t;
@@ -289,13 +290,13 @@ Judgement public_judgement(const internal::TypedClaim& c, const internal::Judged
         j.rel_error = sgn(*g.exact_squared) ? relative_sqrt_error_rn(*g.exact_squared, c.value) : sgn(c.value) == 0 ? 0.0 : INFINITY;
     }
     if (c.type == internal::ClaimType::Verdict) j.exact_verdict = g.exact_verdict;
+    if (!c.no_answer.empty()) j.reason = c.no_answer + ": " + c.no_answer_reason;
     return j;
 }
 
 // Typed claims through typed rules: no JSON unless a certificate is asked for.
 template <class Rules, class Certificate>
 Judgements judge_all(Rules& rules, const std::vector<Claim>& claims, const ClaimOptions& options, bool parts, Certificate&& certificate) {
-    if (claims.empty()) throw InputError("certify: no claims");
     std::vector<internal::TypedClaim> typed;
     typed.reserve(claims.size());
     for (size_t i = 0; i < claims.size(); ++i) typed.push_back(typed_claim(claims[i], i, parts));
@@ -385,13 +386,12 @@ Region Region::from_meshes(const std::string& p1_path, const std::string& p2_pat
 }
 
 Verdict Region::verdict(const Rational& rho1, const Rational& rho2) const {
-    const std::string v = impl_->session.verdict(rho1, rho2).verdict;
-    return v == "separated" ? Verdict::Separated : v == "touching" ? Verdict::Touching : Verdict::Overlapping;
+    return impl_->session.verdict(rho1, rho2).verdict;
 }
 
 std::vector<Verdict> Region::classify(const std::vector<double>& rho1, const std::vector<double>& rho2, unsigned threads) const {
     if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
-    return verdicts_of(impl_->session.classify(rho1, rho2, threads));
+    return impl_->session.classify(rho1, rho2, threads);
 }
 
 std::string Region::region_json() const { return dump(impl_->session.region_json()); }

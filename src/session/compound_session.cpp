@@ -34,18 +34,12 @@ void CompoundSession::check_in_rectangle(const Q& rho1, const Q& rho2, const std
                          ") lies outside I1 x I2, where the region is built");
 }
 
-std::vector<Verdict> verdicts_of(const std::vector<std::int8_t>& codes) {
-    std::vector<Verdict> out(codes.size());
-    for (size_t k = 0; k < codes.size(); ++k) out[k] = verdict_of(codes[k]);
-    return out;
-}
-
 CompoundVerdict CompoundSession::verdict(const Q& rho1, const Q& rho2) {
     check_in_rectangle(rho1, rho2, "the point");
     return compound_verdict(region(false), rho1, rho2);
 }
 
-std::vector<std::int8_t> CompoundSession::classify(const std::vector<double>& rho1, const std::vector<double>& rho2, unsigned threads,
+std::vector<Verdict> CompoundSession::classify(const std::vector<double>& rho1, const std::vector<double>& rho2, unsigned threads,
                                                    const std::string& source) {
     if (rho1.size() != rho2.size())
         throw InputError(source + ": " + std::to_string(rho1.size()) + " values of rho1 but " + std::to_string(rho2.size()) + " of rho2");

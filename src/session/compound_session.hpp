@@ -16,9 +16,6 @@
 
 namespace scalecert::internal {
 
-// The verdict of a compound code (CompoundJudge, classify: 0 separated, 1 touching, 2 overlapping).
-inline Verdict verdict_of(int code) { return code == 0 ? Verdict::Separated : code == 1 ? Verdict::Touching : Verdict::Overlapping; }
-std::vector<Verdict> verdicts_of(const std::vector<std::int8_t>& codes);
 
 class CompoundSession {
 public:
@@ -37,7 +34,7 @@ public:
     // The exact verdicts of doubles' exact values in I1 × I2, located on the grid, on `threads`
     // threads: 0 separated, 1 touching, 2 overlapping. Every pair is checked first, before the
     // region is built: one outside gives InputError "SOURCE: pair K lies outside I1 x I2".
-    std::vector<std::int8_t> classify(const std::vector<double>& rho1, const std::vector<double>& rho2, unsigned threads,
+    std::vector<Verdict> classify(const std::vector<double>& rho1, const std::vector<double>& rho2, unsigned threads,
                                       const std::string& source = "classify");
     // Judgements at any (ρ1, ρ2) > 0 with their proofs (certify-fp): the parts' hulls, built on
     // first use.
