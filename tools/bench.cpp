@@ -15,6 +15,7 @@
 #include "compound/region.hpp"
 #include "quick_query.hpp"
 #include "session/session.hpp"
+#include "scalecert/scalecert.hpp"
 
 #include <spawn.h>
 #include <sys/resource.h>
@@ -447,6 +448,25 @@ void claim_costs(const ExactScene& h1000, bool quick) {
     add("the same 1,000 outputs from libccd GJK/EPA and FCL", t_fp, what);
     add("1,000 claims certified (verdicts, planes, distances, depths)", t_claims, ratio("%.2gx the libraries' time (target <= 10x)", t_claims / t_fp));
     add("the same, with the judgements certificate", t_cert, ratio("%.2gx the libraries' time", t_cert / t_fp));
+    // The typed API against certify-fp's text, on the same scene through the public Analysis (both
+    // after the Analysis is built): the same 1,000 claims as scalecert::Claim values.
+    {
+        const scalecert::Analysis an(scalecert::Scene(h1000.P[0].points, h1000.P[1].points, {h1000.lo[0], h1000.hi[0]},
+                                                      {h1000.lo[1], h1000.hi[1]}, h1000.P[0].seed, h1000.P[1].seed));
+        std::vector<scalecert::Claim> typed(1000);
+        for (int i = 0; i < 1000; ++i) {
+            scalecert::Claim& t = typed[static_cast<size_t>(i)];
+            t.rho1 = scalecert::exact(a[i]), t.rho2 = scalecert::exact(b[i]);
+            if (i % 4 == 0) t.kind = scalecert::ClaimKind::Verdict, t.verdict = scalecert::ClaimedVerdict::Separated;
+            if (i % 4 == 1) t.kind = scalecert::ClaimKind::SeparatingPlane, t.normal = {1, scalecert::exact(0.1), 0};
+            if (i % 4 >= 2) t.kind = sep[i] ? scalecert::ClaimKind::Distance : scalecert::ClaimKind::PenetrationDepth, t.value = 1;
+        }
+        an.certify({typed[0]});  // the claim models, built once, in neither time
+        const double t_text = per_call([&](long) { an.certify_fp(claims); }, 1, quick ? 1 : 3);
+        const double t_typed = per_call([&](long) { an.certify(typed); }, 1, quick ? 1 : 3);
+        add("the same 1,000 claims through Analysis::certify_fp (JSON text)", t_text, ratio("%.2gx the libraries' time", t_text / t_fp));
+        add("the same 1,000 claims through Analysis::certify (typed)", t_typed, ratio("%.2gx the JSON text's time (target <= 1)", t_typed / t_text));
+    }
     const char* kinds[3] = {"verdicts and planes", "distances", "depths"};
     const char* libs[3] = {"libccd GJK verdicts", "FCL distances", "libccd EPA depths"};
     for (int k = 0; k < 3; ++k) {
