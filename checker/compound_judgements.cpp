@@ -9,23 +9,13 @@
 #include "numbers.hpp"
 #include "parts.hpp"
 
-#include <algorithm>
-
 namespace scalecert_check {
 namespace {
 // max over the parts first..last of object i, scaled by rho about the object's seed, of n·x (n a
 // nonzero rational): n·s + rho max over their vertices of n·(v − s), a scan of those vertices.
 Q block_reach(Context& cx, const CompoundScene& cs, int i, const V3& n, const Q& rho, size_t first, size_t last) {
-    const Scene& sc = cs.sc;
-    cx.spend_ops(12, vsize(n) + vsize(sc.s[i]) + qsize(rho) + 2 * limbs(sc.Dj));
-    mpz_class L;
-    const Z3 u = ints(integral(n, &L));
     const std::vector<int> verts = cs.verts(i, first, last);
-    cx.spend(5.0 * static_cast<double>(verts.size()));  // the list itself, and the scan's gathering through it
-    const std::vector<int> best = sc.scan[i]->argmax(cx, u, &verts);
-    Q h(sc.support_at(cx, i, u, best[0]), sc.Dj * L);  // max over the vertices of u·(v − s), over L
-    h.canonicalize();
-    return dot(n, sc.s[i]) + rho * h;
+    return reach(cx, cs.sc, i, n, rho, &verts);
 }
 // The least over the same parts of n·x.
 Q block_floor(Context& cx, const CompoundScene& cs, int i, const V3& n, const Q& rho, size_t first, size_t last) {
@@ -34,15 +24,8 @@ Q block_floor(Context& cx, const CompoundScene& cs, int i, const V3& n, const Q&
 // s + rho (Σ w v − s) for weights over part k of object i (indices into the part's own points).
 V3 part_point(Context& cx, const CompoundScene& cs, int i, size_t k, const Q& rho, const J& w,
               const std::string& where, std::vector<int>* used = nullptr) {
-    const Scene& sc = cs.sc;
-    const std::array<Q, 3> c =
-        combination(cx, sc, i, w, where, used, cs.start[i][k], cs.start[i][k + 1] - cs.start[i][k]);
-    cx.spend_ops(12, vsize(sc.s[i]) + qsize(rho) + std::max({qsize(c[0]), qsize(c[1]), qsize(c[2])}) +
-                         limbs(sc.scan[i]->D()));
-    const Q D(sc.scan[i]->D());
-    V3 x;
-    for (int d = 0; d < 3; ++d) x[d] = sc.s[i][d] + rho * (c[d] / D - sc.s[i][d]);
-    return x;
+    const std::array<size_t, 2> part = cs.part(i, k);
+    return body_point(cx, cs.sc, i, rho, w, where, used, part[0], part[1]);
 }
 // [k, j]: a part of P1 and a part of P2.
 std::array<size_t, 2> part_pair(Context& cx, const CompoundScene& cs, const J& j, const std::string& where) {
@@ -73,49 +56,45 @@ bool member(Context& cx, const CompoundScene& cs, int i, const Q& rho, const V3&
     return true;
 }
 
+// The two objects of the scene, scaled.
+class Objects : public Bodies {
+public:
+    explicit Objects(const CompoundScene& cs) : cs_(cs) {}
+    Q reach(Context& cx, int i, const V3& n, const Q& rho) const override {
+        return block_reach(cx, cs_, i, n, rho, 0, cs_.parts(i) - 1);
+    }
+    bool member(Context& cx, int i, const Q& rho, const V3& x, const J& p, const std::string& where) const override {
+        return scalecert_check::member(cx, cs_, i, rho, x, p, where);
+    }
+
+private:
+    const CompoundScene& cs_;
+};
+
 // Blocks {"P1_parts", "P2_parts", "normal"} covering every part pair once, in increasing (first
 // P1 part, first P2 part) order; ok(c1, c2, n) judges each block by the largest n·x over its P1
 // parts at rho1 (c1) and the least over its P2 parts at rho2 (c2).
 template <class Ok>
 void check_blocks(Context& cx, const CompoundScene& cs, const Q& r1, const Q& r2, const J& bs, const std::string& where,
                   Ok ok) {
-    const size_t m = cs.parts(0), n = cs.parts(1);
     cx.claim(bs.is_array() && !bs.empty(), where + " is a nonempty list");
-    cx.spend(static_cast<double>(m) * static_cast<double>(n) / 8);
-    std::vector<bool> covered(m * n, false);
-    size_t count = 0;
-    std::array<size_t, 2> previous{0, 0};
+    PairCover cover(cx, cs.parts(0), cs.parts(1));
     for (size_t e = 0; e < bs.size(); ++e) {
         const std::string w = where + "[" + std::to_string(e) + "]";
         shape(cx, bs[e], w, {"P1_parts", "P2_parts", "normal"});
-        const std::array<size_t, 2> ra = part_range(cx, at(bs[e], "P1_parts"), m, w + ".P1_parts"),
-                                    rb = part_range(cx, at(bs[e], "P2_parts"), n, w + ".P2_parts");
-        cx.claim(e == 0 || std::array<size_t, 2>{ra[0], rb[0]} > previous,
-                 w + " comes after the block before it (by first P1 part, then first P2 part)");
-        previous = {ra[0], rb[0]};
-        cx.spend(static_cast<double>(ra[1] - ra[0] + 1) * static_cast<double>(rb[1] - rb[0] + 1));
-        for (size_t a = ra[0]; a <= ra[1]; ++a)
-            for (size_t b = rb[0]; b <= rb[1]; ++b) {
-                if (covered[a * n + b])  // (the message only when it fails: a block may cover 10^8 pairs)
-                    cx.claim(false, w + " covers the pair (" + std::to_string(a) + ", " + std::to_string(b) +
-                                        ") a second time");
-                covered[a * n + b] = true;
-                ++count;
-            }
+        const auto [ra, rb] = cover.next(cx, bs[e], w, "block");
         const V3 nv = nonzero_vector(cx, at(bs[e], "normal"), w + ".normal");
         const Q c1 = block_reach(cx, cs, 0, nv, r1, ra[0], ra[1]), c2 = block_floor(cx, cs, 1, nv, r2, rb[0], rb[1]);
         ok(c1, c2, nv, w);
     }
-    cx.claim(count == m * n, where + " covers every part pair (" + std::to_string(count) + " of " +
-                                 std::to_string(m * n) + ")");
+    cover.complete(cx, where + " covers every part pair");
 }
 
-bool judge(Context& cx, const CompoundScene& cs, const Rules& R, const J& cl, const J& pr, const std::string& where) {
+bool judge(Context& cx, const CompoundScene& cs, const Rules& R, const Judgement& j) {
     const Scene& sc = cs.sc;
-    cx.claim(cl.is_object() && cl.contains("kind") && cl["kind"].is_string(), where + ".claim has a kind");
-    cx.claim(pr.is_object(), where + ".proof is an object");
-    const std::string kind = cl["kind"].get<std::string>();
-    const std::string wc = where + ".claim", wp = where + ".proof";
+    const J &cl = j.claim, &pr = j.proof;
+    const std::string &kind = j.kind, &where = j.where, &wc = j.wc, &wp = j.wp;
+    const Objects bodies(cs);
     if (kind == "verdict") {
         shape(cx, cl, wc, {"kind", "rho1", "rho2", "verdict"});
         const Q r1 = positive(cx, cl, "rho1", wc), r2 = positive(cx, cl, "rho2", wc);
@@ -123,8 +102,7 @@ bool judge(Context& cx, const CompoundScene& cs, const Rules& R, const J& cl, co
         cx.claim(pr.contains("verdict") && pr.find("verdict")->is_string() && at(cl, "verdict").is_string(),
                  where + ": verdicts are strings");
         const std::string c = at(cl, "verdict").get<std::string>(), v = pr.find("verdict")->get<std::string>();
-        cx.claim(c == "separated" || c == "touching" || c == "overlapping" || c == "intersecting",
-                 wc + ".verdict is separated, touching, overlapping or intersecting");
+        check_claimed_verdict(cx, c, wc);
         if (v == "overlapping") {
             // A point inside a part of each: strictly positive weights on points spanning 3
             // dimensions lie inside their hull, hence inside the part, and scaling keeps it inside.
@@ -162,31 +140,10 @@ bool judge(Context& cx, const CompoundScene& cs, const Rules& R, const J& cl, co
         } else {
             cx.claim(false, wp + ".verdict is separated, touching or overlapping");
         }
-        return c == "intersecting" ? v != "separated" : c == v;
+        return verdict_right(c, v);
     }
-    if (kind == "separating_plane") {
-        shape(cx, cl, wc, {"kind", "rho1", "rho2", "normal"}, {"offset"});
-        cx.claim(pr.empty(), wp + " is empty (the checker computes the extents)");
-        const Q r1 = positive(cx, cl, "rho1", wc), r2 = positive(cx, cl, "rho2", wc);
-        const V3 n = nonzero_vector(cx, at(cl, "normal"), wc + ".normal");
-        const Q c1 = block_reach(cx, cs, 0, n, r1, 0, cs.parts(0) - 1),
-                c2 = block_floor(cx, cs, 1, n, r2, 0, cs.parts(1) - 1);
-        bool right = c1 < c2;
-        if (cl.contains("offset")) {
-            const Q d = num(cx, at(cl, "offset"), wc + ".offset");
-            right = right && c1 < d && d < c2;
-        }
-        return right;
-    }
-    if (kind == "witness_point") {
-        shape(cx, cl, wc, {"kind", "rho1", "rho2", "point"});
-        shape(cx, pr, wp, {"P1", "P2"});
-        const Q r1 = positive(cx, cl, "rho1", wc), r2 = positive(cx, cl, "rho2", wc);
-        const V3 x = point(cx, at(cl, "point"), wc + ".point");
-        const bool in1 = member(cx, cs, 0, r1, x, at(pr, "P1"), wp + ".P1"),
-                   in2 = member(cx, cs, 1, r2, x, at(pr, "P2"), wp + ".P2");
-        return in1 && in2;
-    }
+    if (kind == "separating_plane") return judge_separating_plane(cx, bodies, j);
+    if (kind == "witness_point") return judge_witness_point(cx, bodies, j);
     if (kind == "distance") {
         shape(cx, cl, wc, {"kind", "rho1", "rho2", "value"}, {"closest"});
         const Q r1 = positive(cx, cl, "rho1", wc), r2 = positive(cx, cl, "rho2", wc);
@@ -216,16 +173,10 @@ bool judge(Context& cx, const CompoundScene& cs, const Rules& R, const J& cl, co
                          });
         bool right = R.close_sq(cx, c, E);
         if (cl.contains("closest")) {
-            const J& cp = at(cl, "closest");
-            cx.claim(cp.is_array() && cp.size() == 2, wc + ".closest is [point, point]");
-            const V3 a = point(cx, cp[0], wc + ".closest[0]"), b = point(cx, cp[1], wc + ".closest[1]");
-            const J& pc = at(pr, "closest");
-            shape(cx, pc, wp + ".closest", {"P1", "P2"});
-            const bool in1 = member(cx, cs, 0, r1, a, at(pc, "P1"), wp + ".closest.P1"),
-                       in2 = member(cx, cs, 1, r2, b, at(pc, "P2"), wp + ".closest.P2");
-            const V3 ab{b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+            const Closest cp = closest_points(cx, bodies, j, r1, r2);
+            const V3 ab{cp.b[0] - cp.a[0], cp.b[1] - cp.a[1], cp.b[2] - cp.a[2]};
             cx.spend_ops(6, 2 * vsize(ab));
-            right = right && in1 && in2 && R.within_above(cx, dot(ab, ab), E);
+            right = right && cp.in && R.within_above(cx, dot(ab, ab), E);
         }
         return right;
     }
@@ -238,14 +189,10 @@ bool judge(Context& cx, const CompoundScene& cs, const Rules& R, const J& cl, co
 void check_compound_judgements(Context& cx, const J& c) {
     shape(cx, c, "", {"format", "kind", "tolerance", "judgements", "scene"});
     const CompoundScene cs = read_compound_scene(cx, at(c, "scene"));
-    Rules R{num(cx, at(c, "tolerance"), "tolerance")};
-    cx.claim(sgn(R.tol) >= 0, "tolerance is >= 0");
+    const Rules R = read_rules(cx, c);
     const J& js = at(c, "judgements");
-    const size_t rights = judge_all(cx, js, [&](const J& cl, const J& pr, const std::string& w) {
-        return judge(cx, cs, R, cl, pr, w);
-    });
-    cx.summary = "; compound judgements: " + std::to_string(rights) + " right, " + std::to_string(js.size() - rights) +
-                 " wrong, tolerance " + tolerance_shown(R.tol) + "; " + std::to_string(cs.parts(0)) + " x " +
-                 std::to_string(cs.parts(1)) + " part pairs";
+    const size_t rights = judge_all(cx, js, [&](const Judgement& j) { return judge(cx, cs, R, j); });
+    cx.summary = "; compound judgements: " + judged(rights, js.size(), R.tol) + "; " + std::to_string(cs.parts(0)) +
+                 " x " + std::to_string(cs.parts(1)) + " part pairs";
 }
 }  // namespace scalecert_check

@@ -25,50 +25,27 @@ void check_compound_partition(Context& cx, const J& c) {
     shape(cx, c, "", {"format", "kind", "pairs", "growth_set", "scene"}, {"statistics"});
     const CompoundScene cs = read_compound_scene(cx, at(c, "scene"));
     const Scene& sc = cs.sc;
-    const std::vector<size_t>(&start)[2] = cs.start;
     if (c.contains("statistics")) {
         const J& st = at(c, "statistics");
         shape(cx, st, "statistics", {"pairs", "pruned", "built", "entries", "witness_fallbacks"});
         for (const char* k : {"pairs", "pruned", "built", "entries", "witness_fallbacks"})
             cx.claim(natural(at(st, k)), std::string("statistics.") + k + " is a count");
     }
-    const size_t m = start[0].size() - 1, n = start[1].size() - 1;
-    const std::vector<P2> rect = normalize({{sc.lo[0], sc.lo[1]}, {sc.hi[0], sc.lo[1]}, {sc.hi[0], sc.hi[1]},
-                                            {sc.lo[0], sc.hi[1]}});
-    // Every pair covered once: a bit a pair.
-    cx.spend(static_cast<double>(m) * static_cast<double>(n) / 8);
-    std::vector<bool> covered(m * n, false);
-    size_t count = 0;
+    const size_t m = cs.parts(0), n = cs.parts(1);
+    const std::vector<P2> rect = rectangle(sc);
+    PairCover cover(cx, m, n);
     struct Diagonal { Q from, to; size_t a, b; };
     std::vector<Diagonal> diag;  // each listed polygon where it meets ρ1 = ρ2
     size_t meeting = 0;
     const J& pairs = at(c, "pairs");
     cx.claim(pairs.is_array() && !pairs.empty(), "pairs is a nonempty list");
-    std::array<size_t, 2> previous{0, 0};
     for (size_t e = 0; e < pairs.size(); ++e) {
         const std::string w = "pairs[" + std::to_string(e) + "]";
         const J& pe = pairs[e];
         shape(cx, pe, w, {"P1_parts", "P2_parts", "normals", "vertices", "vertices_double", "witnesses"});
-        const std::array<size_t, 2> ra = part_range(cx, at(pe, "P1_parts"), m, w + ".P1_parts"),
-                                    rb = part_range(cx, at(pe, "P2_parts"), n, w + ".P2_parts");
-        cx.claim(e == 0 || std::array<size_t, 2>{ra[0], rb[0]} > previous,
-                 w + " comes after the entry before it (by first P1 part, then first P2 part)");
-        previous = {ra[0], rb[0]};
-        cx.spend(static_cast<double>(ra[1] - ra[0] + 1) * static_cast<double>(rb[1] - rb[0] + 1));
-        for (size_t a = ra[0]; a <= ra[1]; ++a)
-            for (size_t b = rb[0]; b <= rb[1]; ++b) {
-                if (covered[a * n + b])  // (the message only when it fails: a block may cover 10^8 pairs)
-                    cx.claim(false, w + " covers the pair (" + std::to_string(a) + ", " + std::to_string(b) +
-                                        ") a second time");
-                covered[a * n + b] = true;
-                ++count;
-            }
+        const auto [ra, rb] = cover.next(cx, pe, w, "entry");
         // The block's vertices on each side, ascending, and the half-planes of its normals.
-        std::vector<int> verts[2];
-        const std::array<size_t, 2>* r[2] = {&ra, &rb};
-        for (int i = 0; i < 2; ++i)
-            for (size_t k = start[i][(*r[i])[0]]; k < start[i][(*r[i])[1] + 1]; ++k)
-                verts[i].push_back(static_cast<int>(k));
+        const std::vector<int> verts[2] = {cs.verts(0, ra[0], ra[1]), cs.verts(1, rb[0], rb[1])};
         const J& ns = at(pe, "normals");
         cx.claim(ns.is_array(), w + ".normals is a list");
         std::vector<P2> poly = rect;
@@ -91,8 +68,7 @@ void check_compound_partition(Context& cx, const J& c) {
         if (poly.empty()) continue;
         cx.claim(ra[0] == ra[1] && rb[0] == rb[1],
                  w + " is one pair: a block of pairs must meet nowhere in the rectangle");
-        const std::array<std::array<size_t, 2>, 2> parts{{{start[0][ra[0]], start[0][ra[0] + 1] - start[0][ra[0]]},
-                                                          {start[1][rb[0]], start[1][rb[0] + 1] - start[1][rb[0]]}}};
+        const std::array<std::array<size_t, 2>, 2> parts{{cs.part(0, ra[0]), cs.part(1, rb[0])}};
         for (size_t k = 0; k < poly.size(); ++k)
             cx.claim(check_witness(cx, sc, wit[k], w + ".witnesses[" + std::to_string(k) + "]", nullptr, &parts) ==
                          poly[k],
@@ -105,8 +81,7 @@ void check_compound_partition(Context& cx, const J& c) {
             diag.push_back({t0, t1, ra[0], rb[0]});
         }
     }
-    cx.claim(count == m * n, "the entries cover every part pair (" + std::to_string(count) + " of " +
-                                 std::to_string(m * n) + ")");
+    cover.complete(cx, "the entries cover every part pair");
     // The growth set: where the objects meet on ρ1 = ρ2, the union of the pairs' intervals, each
     // with the pair that meets at its start (the least start, then the first pair by part).
     std::sort(diag.begin(), diag.end(), [](const Diagonal& x, const Diagonal& y) {

@@ -17,28 +17,6 @@
 
 namespace scalecert_check {
 namespace {
-// max over P_i(rho) of n·x, for a nonzero rational n: n·s_i + rho max_v n·(v − s_i), the maximum a
-// scan of every vertex (h(1, m) is max −m·(w − s2), so P2's takes m = −n).
-Q reach(Context& cx, const Scene& sc, int i, const V3& n, const Q& rho) {
-    cx.spend_ops(12, vsize(n) + vsize(sc.s[i]) + qsize(rho) + 2 * limbs(sc.Dj));
-    mpz_class L;
-    V3 u = integral(n, &L);
-    if (i == 1) for (Q& c : u) c = -c;
-    return dot(n, sc.s[i]) + rho * sc.h(cx, i, u) / Q(L);
-}
-Q reach_min(Context& cx, const Scene& sc, int i, const V3& n, const Q& rho) {
-    return -reach(cx, sc, i, {-n[0], -n[1], -n[2]}, rho);
-}
-// s_i + rho (Σ w v − s_i) for weights over P_i's vertices.
-V3 body_point(Context& cx, const Scene& sc, int i, const Q& rho, const J& w, const std::string& where) {
-    const std::array<Q, 3> c = combination(cx, sc, i, w, where);
-    cx.spend_ops(12, vsize(sc.s[i]) + qsize(rho) + std::max({qsize(c[0]), qsize(c[1]), qsize(c[2])}) +
-                         limbs(sc.scan[i]->D()));
-    const Q D(sc.scan[i]->D());
-    V3 x;
-    for (int k = 0; k < 3; ++k) x[k] = sc.s[i][k] + rho * (c[k] / D - sc.s[i][k]);
-    return x;
-}
 // Is x in P_i(rho)? Proved by {"in": weights} combining to x, or {"out": normal} whose plane x
 // lies strictly beyond.
 bool member(Context& cx, const Scene& sc, int i, const Q& rho, const V3& x, const J& p, const std::string& where) {
@@ -53,6 +31,25 @@ bool member(Context& cx, const Scene& sc, int i, const Q& rho, const V3& x, cons
     cx.claim(dot(n, x) > reach(cx, sc, i, n, rho),
              where + ".out: the point lies strictly beyond the body's extent along the normal");
     return false;
+}
+
+// The two polytopes of the scene, scaled.
+class Polytopes : public Bodies {
+public:
+    explicit Polytopes(const Scene& sc) : sc_(sc) {}
+    Q reach(Context& cx, int i, const V3& n, const Q& rho) const override {
+        return scalecert_check::reach(cx, sc_, i, n, rho);
+    }
+    bool member(Context& cx, int i, const Q& rho, const V3& x, const J& p, const std::string& where) const override {
+        return scalecert_check::member(cx, sc_, i, rho, x, p, where);
+    }
+
+private:
+    const Scene& sc_;
+};
+
+Q reach_min(Context& cx, const Scene& sc, int i, const V3& n, const Q& rho) {
+    return -reach(cx, sc, i, {-n[0], -n[1], -n[2]}, rho);
 }
 // h_M(n) = max over P1(r1) of n·x − min over P2(r2) of n·y: the depth along n times |n| (< 0: the
 // plane separates).
@@ -322,23 +319,21 @@ bool judge_switch_point(Context& cx, const Rules& R, const J& cl, const Window& 
 }
 
 // One judgement; returns whether the claim is right by the rules.
-bool judge(Context& cx, const Scene& sc, const Rules& R, const J& cl, const J& pr, const std::string& where) {
-    cx.claim(cl.is_object() && cl.contains("kind") && cl["kind"].is_string(), where + ".claim has a kind");
-    cx.claim(pr.is_object(), where + ".proof is an object");
-    const std::string kind = cl["kind"].get<std::string>();
-    const std::string wc = where + ".claim", wp = where + ".proof";
+bool judge(Context& cx, const Scene& sc, const Rules& R, const Judgement& j) {
+    const J &cl = j.claim, &pr = j.proof;
+    const std::string &kind = j.kind, &where = j.where, &wc = j.wc, &wp = j.wp;
+    const Polytopes bodies(sc);
     if (kind == "verdict") {
         shape(cx, cl, wc, {"kind", "rho1", "rho2", "verdict"});
         shape(cx, pr, wp, {"verdict", "certificate"});
         const Q r1 = positive(cx, cl, "rho1", wc), r2 = positive(cx, cl, "rho2", wc);
         cx.claim(at(cl, "verdict").is_string() && at(pr, "verdict").is_string(), where + ": verdicts are strings");
         const std::string c = at(cl, "verdict").get<std::string>(), v = at(pr, "verdict").get<std::string>();
-        cx.claim(c == "separated" || c == "touching" || c == "overlapping" || c == "intersecting",
-                 wc + ".verdict is separated, touching, overlapping or intersecting");
+        check_claimed_verdict(cx, c, wc);
         cx.claim(v == "separated" || v == "touching" || v == "overlapping",
                  wp + ".verdict is separated, touching or overlapping");
         check_verdict(cx, sc, r1, r2, v, at(pr, "certificate"));
-        return c == "intersecting" ? v != "separated" : c == v;
+        return verdict_right(c, v);
     }
     if (kind == "growth_distance") {
         shape(cx, cl, wc, {"kind", "value"});
@@ -366,28 +361,8 @@ bool judge(Context& cx, const Scene& sc, const Rules& R, const J& cl, const J& p
         }
         return R.close(cx, c, g);
     }
-    if (kind == "separating_plane") {
-        shape(cx, cl, wc, {"kind", "rho1", "rho2", "normal"}, {"offset"});
-        cx.claim(pr.empty(), wp + " is empty (the checker computes the extents)");
-        const Q r1 = positive(cx, cl, "rho1", wc), r2 = positive(cx, cl, "rho2", wc);
-        const V3 n = nonzero_vector(cx, at(cl, "normal"), wc + ".normal");
-        const Q c1 = reach(cx, sc, 0, n, r1), c2 = reach_min(cx, sc, 1, n, r2);
-        bool right = c1 < c2;
-        if (cl.contains("offset")) {
-            const Q d = num(cx, at(cl, "offset"), wc + ".offset");
-            right = right && c1 < d && d < c2;
-        }
-        return right;
-    }
-    if (kind == "witness_point") {
-        shape(cx, cl, wc, {"kind", "rho1", "rho2", "point"});
-        shape(cx, pr, wp, {"P1", "P2"});
-        const Q r1 = positive(cx, cl, "rho1", wc), r2 = positive(cx, cl, "rho2", wc);
-        const V3 x = point(cx, at(cl, "point"), wc + ".point");
-        const bool in1 = member(cx, sc, 0, r1, x, at(pr, "P1"), wp + ".P1"),
-                   in2 = member(cx, sc, 1, r2, x, at(pr, "P2"), wp + ".P2");
-        return in1 && in2;
-    }
+    if (kind == "separating_plane") return judge_separating_plane(cx, bodies, j);
+    if (kind == "witness_point") return judge_witness_point(cx, bodies, j);
     if (kind == "distance") {
         shape(cx, cl, wc, {"kind", "rho1", "rho2", "value"}, {"closest"});
         const bool closest = cl.contains("closest");
@@ -408,16 +383,10 @@ bool judge(Context& cx, const Scene& sc, const Rules& R, const J& cl, const J& p
         }
         bool right = R.close_sq(cx, c, E);
         if (closest) {
-            const J& cp = at(cl, "closest");
-            cx.claim(cp.is_array() && cp.size() == 2, wc + ".closest is [point, point]");
-            const V3 a = point(cx, cp[0], wc + ".closest[0]"), b = point(cx, cp[1], wc + ".closest[1]");
-            const J& pc = at(pr, "closest");
-            shape(cx, pc, wp + ".closest", {"P1", "P2"});
-            const bool in1 = member(cx, sc, 0, r1, a, at(pc, "P1"), wp + ".closest.P1"),
-                       in2 = member(cx, sc, 1, r2, b, at(pc, "P2"), wp + ".closest.P2");
-            cx.spend_ops(6, 2 * (vsize(a) + vsize(b)));
-            const V3 ab = sub(b, a);
-            right = right && in1 && in2 && R.within_above(cx, dot(ab, ab), E);
+            const Closest cp = closest_points(cx, bodies, j, r1, r2);
+            cx.spend_ops(6, 2 * (vsize(cp.a) + vsize(cp.b)));
+            const V3 ab = sub(cp.b, cp.a);
+            right = right && cp.in && R.within_above(cx, dot(ab, ab), E);
         }
         return right;
     }
@@ -488,16 +457,10 @@ void check_judgements(Context& cx, const J& c) {
     shape(cx, c, "", {"format", "kind", "tolerance", "judgements", "seed_interior", "scene"});
     const Scene sc = read_scene(cx, at(c, "scene"));
     check_seed_interior(cx, sc, at(c, "seed_interior"));
-    Rules R{num(cx, at(c, "tolerance"), "tolerance")};
-    cx.claim(sgn(R.tol) >= 0, "tolerance is >= 0");
+    const Rules R = read_rules(cx, c);
     const J& js = at(c, "judgements");
-    const size_t rights = judge_all(cx, js, [&](const J& cl, const J& pr, const std::string& w) {
-        return judge(cx, sc, R, cl, pr, w);
-    });
-    // What the file proves, in the line the checker prints: the judgements and their tolerance
-    // (a forged tolerance makes wrong values right, and stays valid: it is the file's claim).
-    // A long tolerance is shown by its size, never by a prefix (a prefix hides a factor of 10^61).
-    cx.summary = "; judgements: " + std::to_string(rights) + " right, " + std::to_string(js.size() - rights) +
-                 " wrong, tolerance " + tolerance_shown(R.tol);
+    const size_t rights = judge_all(cx, js, [&](const Judgement& j) { return judge(cx, sc, R, j); });
+    // What the file proves, in the line the checker prints: the judgements and their tolerance.
+    cx.summary = "; judgements: " + judged(rights, js.size(), R.tol);
 }
 }  // namespace scalecert_check

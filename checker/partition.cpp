@@ -151,8 +151,7 @@ void check_partition(Context& cx, const J& c) {
     // Regions: the rectangle cut along the curve, recomputed here and compared vertex by vertex.
     const J& reg = at(c, "regions");
     shape(cx, reg, "regions", {"overlap", "separated"});
-    std::vector<P2> rect = normalize({{sc.lo[0], sc.lo[1]}, {sc.hi[0], sc.lo[1]}, {sc.hi[0], sc.hi[1]},
-                                      {sc.lo[0], sc.hi[1]}});
+    std::vector<P2> rect = rectangle(sc);
     const std::vector<P2> over = overlap_region(sc, rect, lines, ranges);
     const J& ov = at(reg, "overlap");
     shape(cx, ov, "regions.overlap", {"vertices", "vertices_double", "witnesses"});

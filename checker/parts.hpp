@@ -18,6 +18,8 @@ struct CompoundScene {
     Scene sc;
     std::vector<size_t> start[2];
     size_t parts(int i) const { return start[i].size() - 1; }
+    // Part k of object i as [base, count) of the object's vertices.
+    std::array<size_t, 2> part(int i, size_t k) const { return {start[i][k], start[i][k + 1] - start[i][k]}; }
     // The vertices of parts first..last of object i, ascending.
     std::vector<int> verts(int i, size_t first, size_t last) const {
         std::vector<int> v;
@@ -29,6 +31,21 @@ struct CompoundScene {
 // object, else unreadable) and `seed`, I1 and I2.
 CompoundScene read_compound_scene(Context& cx, const J& sj);
 
-// [first, last] of a part range, 0 <= first <= last < n.
-std::array<size_t, 2> part_range(Context& cx, const J& j, size_t n, const std::string& where);
+// Blocks of part pairs, {"P1_parts": [a0, a1], "P2_parts": [b0, b1], ...} (P1 parts a0..a1 ×
+// P2 parts b0..b1), listed in increasing (a0, b0) order, that must cover every pair of the
+// m × n exactly once: a bit a pair (10^8 at most), counted.
+class PairCover {
+public:
+    PairCover(Context& cx, size_t m, size_t n);
+    // The block of `entry` (named w; `noun` names an entry in messages): its part ranges, after
+    // the block before it, covering no pair a second time.
+    std::array<std::array<size_t, 2>, 2> next(Context& cx, const J& entry, const std::string& w, const char* noun);
+    // Every pair covered; `what` begins the message.
+    void complete(Context& cx, const std::string& what) const;
+
+private:
+    size_t m_, n_, count_ = 0, blocks_ = 0;
+    std::vector<bool> covered_;
+    std::array<size_t, 2> previous_{0, 0};
+};
 }  // namespace scalecert_check

@@ -2,6 +2,7 @@
 
 #include "json.hpp"
 #include "numbers.hpp"
+#include "scene.hpp"
 
 #include <algorithm>
 
@@ -70,6 +71,10 @@ std::vector<P2> cut(Context& cx, const std::vector<P2>& p, const Q& a, const Q& 
     for (const P2& v : p) big = std::max(big, qsize(v[0]) + qsize(v[1]));
     cx.spend_ops(11.0 * static_cast<double>(p.size() + 1), qsize(a) + qsize(b) + qsize(c) + big);
     return half_plane_cut(p, a, b, c);
+}
+
+std::vector<P2> rectangle(const Scene& sc) {
+    return normalize({{sc.lo[0], sc.lo[1]}, {sc.hi[0], sc.lo[1]}, {sc.hi[0], sc.hi[1]}, {sc.lo[0], sc.hi[1]}});
 }
 
 std::vector<P2> polygon(Context& cx, const J& j, const std::string& where) {

@@ -9,6 +9,8 @@
 #include <vector>
 
 namespace scalecert_check {
+struct Scene;
+
 // The line ρ2 = a ρ1 + b.
 struct Line { Q a, b; Q at(const Q& x) const { return a * x + b; } };
 
@@ -21,6 +23,8 @@ std::vector<P2> half_plane_cut(const std::vector<P2>& p, const Q& a, const Q& b,
 std::vector<P2> clip(const std::vector<P2>& p, const Line& L, bool above);
 // half_plane_cut, counted before it runs.
 std::vector<P2> cut(Context& cx, const std::vector<P2>& p, const Q& a, const Q& b, const Q& c);
+// The rectangle I1 × I2 of the scene, written as above.
+std::vector<P2> rectangle(const Scene& sc);
 
 // The polygon `vertices` of j, with `vertices_double` the nearest doubles of its coordinates.
 std::vector<P2> polygon(Context& cx, const J& j, const std::string& where);

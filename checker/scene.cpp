@@ -115,12 +115,16 @@ Scene read_scene(Context& cx, const J& j) {
         for (size_t k = 0; k < vs.size(); ++k)
             sc.P[i].push_back(point(cx, vs[k], w + ".vertices[" + std::to_string(k) + "]"));
         cx.claim(sc.P[i].size() >= 4, w + " has at least 4 vertices");
-        sc.s[i] = point(cx, at(p, "seed"), w + ".seed");
-        sc.scan[i] = std::make_unique<Scan>(cx, sc.P[i], kPoly[i]);
+        read_seed(cx, sc, i, p, w);
     }
     sc.prepare(cx);
     read_ranges(cx, sc, j);
     return sc;
+}
+
+void read_seed(Context& cx, Scene& sc, int i, const J& p, const std::string& w) {
+    sc.s[i] = point(cx, at(p, "seed"), w + ".seed");
+    sc.scan[i] = std::make_unique<Scan>(cx, sc.P[i], kPoly[i]);
 }
 
 void read_ranges(Context& cx, Scene& sc, const J& j) {

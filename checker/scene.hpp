@@ -61,6 +61,8 @@ private:
 // The scene object of a partition, a query answer or a judgements file: two polyhedra of at
 // least 4 vertices, their seeds, I1 and I2.
 Scene read_scene(Context& cx, const J& j);
+// The seed of polyhedron i (object p of the file, named w) and the scan of its vertices sc.P[i].
+void read_seed(Context& cx, Scene& sc, int i, const J& p, const std::string& w);
 // I1 and I2 of a scene object: [lo, hi] with 0 < lo <= hi.
 void read_ranges(Context& cx, Scene& sc, const J& j);
 
