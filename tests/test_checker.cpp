@@ -4,7 +4,8 @@
 // keys added, removed or duplicated, kinds changed, indices made fractional, negative, too large
 // or strings — except changes that leave a still-true certificate, each listed below with the
 // reason. The mutations run the checker's own check_text in this process (the binary is that
-// function behind main); the exit statuses of the binary are tested at the end.
+// function behind main, both linked from scalecert_check_core); the exit statuses of the binary
+// are tested at the end.
 #define BOOST_TEST_MODULE checker
 #include <boost/test/unit_test.hpp>
 
@@ -13,8 +14,11 @@
 
 #include <sys/wait.h>
 
-#define SCALECERT_CHECK_NO_MAIN
-#include "../checker/scalecert_check.cpp"
+#include "../checker/check.hpp"
+#include "../checker/formats.hpp"
+#include "../checker/numbers.hpp"
+#include "../checker/polygon.hpp"
+#include "../checker/scene.hpp"
 
 #include <cmath>
 #include <filesystem>
@@ -1058,15 +1062,14 @@ CQ rq(std::mt19937_64& g, const mpz_class& range, const mpz_class& den_range) {
     return x;
 }
 // A scene of the checker from its vertices and seeds (I1, I2 unused here).
-sc_::Scene make_scene(const std::vector<CV> P[2], const CV s[2]) {
-    sc_::g_work = 0;
+sc_::Scene make_scene(sc_::Context& cx, const std::vector<CV> P[2], const CV s[2]) {
     sc_::Scene sc;
     for (int i = 0; i < 2; ++i) {
         sc.P[i] = P[i];
         sc.s[i] = s[i];
-        sc.scan[i] = std::make_unique<sc_::Scan>(sc.P[i], i ? "P2" : "P1");
+        sc.scan[i] = std::make_unique<sc_::Scan>(cx, sc.P[i], i ? "P2" : "P1");
     }
-    sc.prepare();
+    sc.prepare(cx);
     return sc;
 }
 // The plain rational definition: max over k of σ n·(v_k − s_i) and every k attaining it.
@@ -1136,7 +1139,8 @@ BOOST_AUTO_TEST_CASE(support_scans_equal_the_plain_rational_definition) {
             }
             s[i] = {rq(g, abs(kd.range), kd.den), rq(g, abs(kd.range), 3), rq(g, 7, 5)};
         }
-        sc_::Scene sc = make_scene(P, s);
+        sc_::Context cx;
+        sc_::Scene sc = make_scene(cx, P, s);
         for (int r = 0; r < 12; ++r) {
             const mpz_class& size = normal_sizes[static_cast<size_t>(g() % normal_sizes.size())];
             CV n;
@@ -1146,11 +1150,11 @@ BOOST_AUTO_TEST_CASE(support_scans_equal_the_plain_rational_definition) {
             if (r % 4 == 1 && kd.range < 0) n = {CQ(0), CQ(g() % 3) - 1, CQ(1)};  // ties between small and large vertices
             mpz_class H[2];
             const std::vector<int>* cached[2];
-            sc.support(n, H, cached);
+            sc.support(cx, n, H, cached);
             for (int i = 0; i < 2; ++i) {
                 std::vector<int> want, got;
                 const CQ h = plain_h(P[i], s[i], n, i ? -1 : 1, want);
-                BOOST_TEST((sc.h(i, n, &got) == h));
+                BOOST_TEST((sc.h(cx, i, n, &got) == h));
                 BOOST_TEST(got == want);
                 BOOST_TEST(*cached[i] == want);
                 BOOST_TEST(sc.over(h, H[i]));
@@ -1158,7 +1162,7 @@ BOOST_AUTO_TEST_CASE(support_scans_equal_the_plain_rational_definition) {
                 const CV m = {n[0] * 6, n[1] * 6, n[2] * 6};
                 mpz_class Hm[2];
                 const std::vector<int>* cm[2];
-                sc.support(m, Hm, cm);
+                sc.support(cx, m, Hm, cm);
                 BOOST_TEST(sc.over(h * 6, Hm[i]));
                 BOOST_TEST(*cm[i] == want);
                 // a subset: the vertices of even index
@@ -1170,7 +1174,7 @@ BOOST_AUTO_TEST_CASE(support_scans_equal_the_plain_rational_definition) {
                 for (int k : sub) Ps.push_back(P[i][static_cast<size_t>(k)]);
                 plain_h(Ps, s[i], n, i ? -1 : 1, want_sub);
                 for (int& k : want_sub) k = sub[static_cast<size_t>(k)];
-                BOOST_TEST(sc.scan[i]->argmax(u, &sub) == want_sub);
+                BOOST_TEST(sc.scan[i]->argmax(cx, u, &sub) == want_sub);
                 ++checks;
                 int ub = 0;
                 for (const auto& c : u) ub = std::max(ub, static_cast<int>(mpz_sizeinbase(c.get_mpz_t(), 2)));
@@ -1287,19 +1291,18 @@ BOOST_AUTO_TEST_CASE(the_work_limit_and_the_denominator_limit_refuse_with_exit_2
     }
     const std::string text = j.dump(1);
     std::string msg;
-    BOOST_TEST(scalecert_check::check_text(text, msg) == 0, msg);
-    const double work = scalecert_check::g_work;
+    scalecert_check::Context cx;
+    BOOST_TEST(scalecert_check::check_text(text, msg, cx) == 0, msg);
+    const double work = cx.work;
     BOOST_TEST(work > 2.0 * 1005);  // at least one normal scanned both polytopes
-    const double per_byte = scalecert_check::g_work_per_byte, least = scalecert_check::g_min_work;
-    scalecert_check::g_work_per_byte = 0.5 * work / static_cast<double>(text.size());
-    scalecert_check::g_min_work = 0;
+    scalecert_check::Context tight;
+    tight.work_per_byte = 0.5 * work / static_cast<double>(text.size());
+    tight.min_work = 0;
     std::string first, again;
-    BOOST_TEST(scalecert_check::check_text(text, first) == 2);
+    BOOST_TEST(scalecert_check::check_text(text, first, tight) == 2);
     BOOST_TEST(first.find("work limit") != std::string::npos, first);
-    BOOST_TEST(scalecert_check::check_text(text, again) == 2);
+    BOOST_TEST(scalecert_check::check_text(text, again, tight) == 2);
     BOOST_TEST(first == again);
-    scalecert_check::g_work_per_byte = per_byte;
-    scalecert_check::g_min_work = least;
     BOOST_TEST(scalecert_check::check_text(text, msg) == 0, msg);
     // A vertex whose denominator takes the polytope's common denominator past 2^16384 (the
     // engine's own limit): refused with exit status 2, before any scan.

@@ -1,14 +1,13 @@
 // Shared by the libFuzzer targets (tools/fuzz.sh): the oracles that turn a wrong answer into a
-// crash libFuzzer reports. The checker is compiled in from its own source (it shares no code
-// with the engine; here both live in one process only to compare them).
+// crash libFuzzer reports. The checker is linked in from its own library, scalecert_check_core
+// (it shares no code with the engine; here both live in one process only to compare them).
 #pragma once
 #include "certify/certificate.hpp"
 #include "certify/classify.hpp"
 #include "curve/scan.hpp"
 #include "../support.hpp"
 
-#define SCALECERT_CHECK_NO_MAIN
-#include "../../checker/scalecert_check.cpp"
+#include "../../checker/check.hpp"
 
 #include <cstdio>
 #include <cstdlib>

@@ -1,0 +1,37 @@
+// Reading a certificate: strict JSON (RFC 8259) into a tree, and the shapes every object must
+// have (certificates/FORMAT.md, "What the checker rejects": exactly the documented keys, no
+// duplicate key, nesting at most kMaxDepth, indices as JSON integers in range).
+#pragma once
+#include "context.hpp"
+
+#include <initializer_list>
+#include <string>
+#include <vector>
+
+namespace scalecert_check {
+// s for a message: its first 40 bytes, control characters as '?', "..." when cut.
+std::string printable(const std::string& s);
+
+// The JSON value of the text: strict JSON, without duplicate keys, nested at most kMaxDepth
+// levels, with no NUL byte and no byte-order mark; else Unreadable.
+J parse_strict(const std::string& text);
+
+// o is an object with every key of `required`, and no key outside required ∪ optional.
+void shape(Context& cx, const J& o, const std::string& where, std::initializer_list<const char*> required,
+           std::initializer_list<const char*> optional = {});
+inline const J& at(const J& o, const char* k) { return o.find(k).value(); }  // after shape(): present
+
+// A JSON integer >= 0 written without sign, fraction or exponent (nlohmann reads "-0" as a signed
+// integer: refused).
+inline bool natural(const J& j) { return j.is_number_unsigned(); }
+
+// An index: a JSON integer (no fraction, no exponent) with 0 <= i < n.
+size_t index(Context& cx, const J& j, size_t n, const std::string& where);
+// A nonempty list of distinct indices below n.
+std::vector<int> index_list(Context& cx, const J& j, size_t n, const std::string& where);
+// x is in v (ascending: every vertex list the checker builds is).
+bool has(const std::vector<int>& v, int x);
+
+// An optional annotation of o, which must be a string when present.
+void annotation_string(Context& cx, const J& o, const char* key, const std::string& where);
+}  // namespace scalecert_check

@@ -1,0 +1,466 @@
+// A judgements file (kind "judgements"; certificates/FORMAT.md, "A judgements file"): certify-fp's
+// judgements on two convex polytopes, each re-derived from its claim and its proof by CLAIMS.md's
+// rules and the file's tolerance; the file's "right" must be the judgement these rules give. The
+// scene and its seeds' interior weights are a partition's; a verdict's proof is a query answer's
+// certificate (query.cpp), a curve proof is a partition's curve over a window (curve.cpp).
+#include "curve.hpp"
+#include "formats.hpp"
+#include "judging.hpp"
+#include "json.hpp"
+#include "numbers.hpp"
+#include "scene.hpp"
+
+#include <algorithm>
+#include <map>
+#include <optional>
+#include <utility>
+
+namespace scalecert_check {
+namespace {
+// Is x in P_i(rho)? Proved by {"in": weights} combining to x, or {"out": normal} whose plane x
+// lies strictly beyond.
+bool member(Context& cx, const Scene& sc, int i, const Q& rho, const V3& x, const J& p, const std::string& where) {
+    cx.claim(p.is_object() && p.size() == 1 && (p.contains("in") || p.contains("out")),
+             where + " is {\"in\": weights} or {\"out\": normal}");
+    if (p.contains("in")) {
+        cx.claim(body_point(cx, sc, i, rho, at(p, "in"), where + ".in") == x, where + ".in combines to the point");
+        return true;
+    }
+    const V3 n = normal(cx, at(p, "out"), where + ".out");
+    cx.spend_ops(3, vsize(n) + vsize(x));
+    cx.claim(dot(n, x) > reach(cx, sc, i, n, rho),
+             where + ".out: the point lies strictly beyond the body's extent along the normal");
+    return false;
+}
+
+// The two polytopes of the scene, scaled.
+class Polytopes : public Bodies {
+public:
+    explicit Polytopes(const Scene& sc) : sc_(sc) {}
+    Q reach(Context& cx, int i, const V3& n, const Q& rho) const override {
+        return scalecert_check::reach(cx, sc_, i, n, rho);
+    }
+    bool member(Context& cx, int i, const Q& rho, const V3& x, const J& p, const std::string& where) const override {
+        return scalecert_check::member(cx, sc_, i, rho, x, p, where);
+    }
+
+private:
+    const Scene& sc_;
+};
+
+Q reach_min(Context& cx, const Scene& sc, int i, const V3& n, const Q& rho) {
+    return -reach(cx, sc, i, {-n[0], -n[1], -n[2]}, rho);
+}
+// h_M(n) = max over P1(r1) of n·x − min over P2(r2) of n·y: the depth along n times |n| (< 0: the
+// plane separates).
+Q hM(Context& cx, const Scene& sc, const V3& n, const Q& r1, const Q& r2) {
+    return reach(cx, sc, 0, n, r1) - reach_min(cx, sc, 1, n, r2);
+}
+
+// A closed surface of triangles over points of the Minkowski difference P1(r1) − P2(r2), each
+// triangle's plane at least sqrt(E) from the origin, which it has on its inner side. The radial
+// projection of such a surface covers every direction (its degree is its total solid angle over
+// 4π, > 0 as every triangle's is), so along every unit u some point t·u of it, hence of the
+// difference, has t >= sqrt(E): the depth is at least sqrt(E).
+void check_lower_bound(Context& cx, const Scene& sc, const Q& r1, const Q& r2, const Q& E, const J& proof,
+                       const std::string& where) {
+    const J& pts = at(proof, "points");
+    const J& tris = at(proof, "triangles");
+    cx.claim(pts.is_array() && pts.size() >= 4, where + ".points has at least 4 points");
+    cx.claim(tris.is_array() && tris.size() >= 4, where + ".triangles has at least 4 triangles");
+    // In integers, so that no point or triangle pays for the seeds' digits more than once: a point
+    // of M is z = c0 + y with c0 = (1 − r1) s1 − (1 − r2) s2 (the same for all) and y = r1 v − r2 w.
+    // Over Dy = lcm(b1 D1, b2 D2) (r_i = a_i/b_i, D_i the vertices' common denominator, X = D_i v):
+    // Y = Dy y = k1 X_v − k2 X_w, k_i = a_i Dy/(b_i D_i). A triangle's N = (Y_b − Y_a) × (Y_c − Y_a)
+    // is Dy² times the true one (c0 cancels), and with c0 = C/Dc its offset N·(c0 + y_a) is
+    // N·W_a/(Dy³ Dc), W_a = Dy C + Dc Y_a. So off > 0 iff N·W_a > 0, and off² >= E |N|² iff
+    // q (N·W_a)² >= p Dy² Dc² |N|² for E = p/q. Counted before each product, by its operands' limbs.
+    auto prod = [](double la, double lb) { return 2 + la * lb; };
+    const mpz_class b1 = r1.get_den(), b2 = r2.get_den();
+    cx.spend_ops(14, vsize(sc.s[0]) + vsize(sc.s[1]) + qsize(r1) + qsize(r2) + limbs(sc.scan[0]->D()) +
+                         limbs(sc.scan[1]->D()));
+    mpz_class Dy, d1 = b1 * sc.scan[0]->D(), d2 = b2 * sc.scan[1]->D();
+    mpz_lcm(Dy.get_mpz_t(), d1.get_mpz_t(), d2.get_mpz_t());
+    const mpz_class k1 = r1.get_num() * (Dy / d1), k2 = r2.get_num() * (Dy / d2);
+    V3 c0;
+    for (int c = 0; c < 3; ++c) c0[c] = (1 - r1) * sc.s[0][c] - (1 - r2) * sc.s[1][c];
+    mpz_class Dc = 1;
+    for (const Q& c : c0) mpz_lcm(Dc.get_mpz_t(), Dc.get_mpz_t(), c.get_den_mpz_t());
+    Z3 DyC;
+    for (int c = 0; c < 3; ++c) DyC[c] = Dy * (c0[c].get_num() * (Dc / c0[c].get_den()));
+    const mpz_class T = E.get_num() * Dy * Dy * Dc * Dc, q = E.get_den();
+    const double lk = std::max(limbs(k1), limbs(k2)), lDc = limbs(Dc),
+                 lDyC = std::max({limbs(DyC[0]), limbs(DyC[1]), limbs(DyC[2])});
+    cx.spend(50 * (lDyC + 1) * (limbs(E.get_num()) + 4 * limbs(Dy) + 2 * lDc + 1));
+    std::vector<Z3> Y, W;
+    std::vector<double> yl, wl;
+    for (size_t k = 0; k < pts.size(); ++k) {
+        const std::string w = where + ".points[" + std::to_string(k) + "]";
+        cx.claim(pts[k].is_array() && pts[k].size() == 2, w + " is [vertex of P1, vertex of P2]");
+        const size_t a = index(cx, pts[k][0], sc.P[0].size(), w), b = index(cx, pts[k][1], sc.P[1].size(), w);
+        const Z3 &Xa = sc.scan[0]->X(a), &Xb = sc.scan[1]->X(b);
+        double lx = 0;
+        for (int c = 0; c < 3; ++c) lx = std::max({lx, limbs(Xa[c]), limbs(Xb[c])});
+        cx.spend(100 + 6 * prod(lk, lx) + 3 * prod(lDc, lk + lx + 1));
+        Z3 y, wv;
+        double ly = 0, lw = 0;
+        for (int c = 0; c < 3; ++c) {
+            y[c] = k1 * Xa[c] - k2 * Xb[c];
+            wv[c] = DyC[c] + Dc * y[c];
+            ly = std::max(ly, limbs(y[c]));
+            lw = std::max(lw, limbs(wv[c]));
+        }
+        Y.push_back(std::move(y));
+        W.push_back(std::move(wv));
+        yl.push_back(ly);
+        wl.push_back(lw);
+    }
+    const double lT = limbs(T), lq = limbs(q);
+    std::map<std::pair<size_t, size_t>, int> edges;
+    for (size_t t = 0; t < tris.size(); ++t) {
+        const std::string w = where + ".triangles[" + std::to_string(t) + "]";
+        cx.claim(tris[t].is_array() && tris[t].size() == 3, w + " is 3 point indices");
+        size_t v[3];
+        for (int k = 0; k < 3; ++k) v[k] = index(cx, tris[t][k], Y.size(), w);
+        const double ly = 1 + std::max({yl[v[0]], yl[v[1]], yl[v[2]]}), ln = 2 * ly + 1, lnw = ln + wl[v[0]] + 1;
+        cx.spend(200 + 6 * prod(ly, ly) + 3 * prod(ln, wl[v[0]]) + prod(lnw, lnw) + prod(lq, 2 * lnw) +
+                 3 * prod(ln, ln) + prod(lT, 2 * ln + 2));
+        Z3 e1, e2;
+        for (int c = 0; c < 3; ++c) e1[c] = Y[v[1]][c] - Y[v[0]][c], e2[c] = Y[v[2]][c] - Y[v[0]][c];
+        const Z3 N = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
+                      e1[0] * e2[1] - e1[1] * e2[0]};
+        const mpz_class off = dotz(N, W[v[0]]);
+        cx.claim(sgn(off) > 0, w + " has the origin strictly on its inner side");
+        cx.claim(q * off * off >= T * dotz(N, N), w + "'s plane lies at least the depth from the origin");
+        for (int k = 0; k < 3; ++k)
+            cx.claim(++edges[{v[k], v[(k + 1) % 3]}] == 1, w + ": each directed edge is used once");
+    }
+    for (const auto& [e, n] : edges)
+        cx.claim(edges.count({e.second, e.first}) == 1,
+                 where + ".triangles form a closed surface (every edge is shared with opposite orientation)");
+}
+
+// A curve proof: the exact curve over its window [a, b] (check_curve), 0 <= a < b.
+struct Window {
+    CurveFacts f;
+    Q a, b;
+    // f <= 0 at b: nothing touches from b on, so no switch point lies beyond it.
+    bool reaches_zero() const { return sgn(f.end_rho2[1]) <= 0; }
+};
+Window curve_window(Context& cx, const Scene& sc, const J& pr, const std::string& wp) {
+    shape(cx, pr, wp, {"rho1", "rho1_double", "pieces", "switch_points", "curve_ends"});
+    const std::vector<Q> r = fields(cx, pr, "rho1", 2, wp);
+    cx.claim(sgn(r[0]) >= 0 && r[0] < r[1], wp + ".rho1 is a window [a, b] with 0 <= a < b");
+    return {check_curve(cx, sc, pr, r[0], r[1], wp + ".", wp + ".rho1"), r[0], r[1]};
+}
+std::pair<Q, Q> scaling_pair(Context& cx, const J& j, const std::string& where) {
+    cx.claim(j.is_array() && j.size() == 2, where + " is [rho1, rho2]");
+    const Q x = num(cx, j[0], where), y = num(cx, j[1], where);
+    cx.claim(sgn(x) > 0 && sgn(y) > 0, where + " has scalings > 0");
+    return {x, y};
+}
+std::string claimed_contact(Context& cx, const J& o, const std::string& where) {
+    const std::string c = contact_string(cx, at(o, "contact"), where + ".contact");
+    cx.claim(c.find_first_not_of("VEF") == std::string::npos, where + ".contact is two of V, E, F");
+    return c;
+}
+
+// A curve claim, by CLAIMS.md's "Curve claims" (rules 1-4), against the curve proved over a
+// window holding the claimed range [lo, hi] with room on both sides (so every switch point of f
+// in the closed range is known, and whether lo or hi is one).
+bool judge_curve(Context& cx, const Rules& R, const J& cl, const Window& W, const std::string& wc,
+                 const std::string& wp) {
+    struct Seg { Q x0, y0, x1, y1; std::optional<std::string> label; };
+    std::vector<Seg> segs;
+    std::vector<std::pair<Q, Q>> claimed;  // the claimed switch points
+    if (cl.contains("vertices")) {
+        shape(cx, cl, wc, {"kind", "vertices"}, {"switch_points"});
+        const J& v = at(cl, "vertices");
+        cx.claim(v.is_array() && v.size() >= 2, wc + ".vertices has at least 2 points");
+        std::vector<std::pair<Q, Q>> p;
+        for (size_t i = 0; i < v.size(); ++i)
+            p.push_back(scaling_pair(cx, v[i], wc + ".vertices[" + std::to_string(i) + "]"));
+        for (size_t i = 0; i + 1 < p.size(); ++i) {
+            cx.claim(p[i].first < p[i + 1].first, wc + ".vertices: rho1 increases");
+            segs.push_back({p[i].first, p[i].second, p[i + 1].first, p[i + 1].second, std::nullopt});
+        }
+        for (size_t i = 1; i + 1 < p.size(); ++i)  // bends: where the polyline's slope changes
+            if ((p[i].second - p[i - 1].second) * (p[i + 1].first - p[i].first) !=
+                (p[i + 1].second - p[i].second) * (p[i].first - p[i - 1].first))
+                claimed.push_back(p[i]);
+    } else {
+        shape(cx, cl, wc, {"kind", "pieces"}, {"switch_points"});
+        const J& ps = at(cl, "pieces");
+        cx.claim(ps.is_array() && !ps.empty(), wc + ".pieces is a nonempty list");
+        for (size_t i = 0; i < ps.size(); ++i) {
+            const std::string w = wc + ".pieces[" + std::to_string(i) + "]";
+            shape(cx, ps[i], w, {"rho1", "slope", "intercept"}, {"contact"});
+            const J& r = at(ps[i], "rho1");
+            cx.claim(r.is_array() && r.size() == 2, w + ".rho1 is [from, to]");
+            const Q x0 = num(cx, r[0], w + ".rho1"), x1 = num(cx, r[1], w + ".rho1");
+            const Q a = num(cx, at(ps[i], "slope"), w + ".slope"),
+                    b = num(cx, at(ps[i], "intercept"), w + ".intercept");
+            cx.claim(sgn(x0) > 0 && x0 < x1, w + ".rho1 is a range of scalings > 0");
+            cx.claim(segs.empty() || x0 == segs.back().x1, w + " starts where the piece before ends");
+            const Q y0 = a * x0 + b, y1 = a * x1 + b;
+            cx.claim(sgn(y0) > 0 && sgn(y1) > 0, w + " stays at rho2 > 0");
+            if (!segs.empty()) claimed.push_back({x0, segs.back().y1});  // the value there is the left piece's
+            std::optional<std::string> label;
+            if (ps[i].contains("contact")) label = claimed_contact(cx, ps[i], w);
+            segs.push_back({x0, y0, x1, y1, label});
+        }
+    }
+    const Q lo = segs.front().x0, hi = segs.back().x1;
+    if (cl.contains("switch_points")) {
+        const J& sw = at(cl, "switch_points");
+        cx.claim(sw.is_array(), wc + ".switch_points is a list");
+        claimed.clear();
+        for (size_t i = 0; i < sw.size(); ++i) {
+            const auto p = scaling_pair(cx, sw[i], wc + ".switch_points[" + std::to_string(i) + "]");
+            cx.claim(lo <= p.first && p.first <= hi, wc + ".switch_points lie in the claimed range");
+            claimed.push_back(p);
+        }
+    }
+    cx.claim(W.a < lo && hi < W.b, wp + ".rho1 holds the claimed range with room on both sides");
+    const CurveFacts& f = W.f;
+    // 1. f > 0 over the range: f descends, so at hi.
+    const bool positive = sgn(f.at(cx, hi)) > 0;
+    // 2. The values, at the segments' ends and at f's switch points inside them (found by binary
+    // search: the switch points are in increasing rho1).
+    auto first = [&](const Q& x, bool or_at) {  // the first switch point with rho1 > x (or_at: >= x)
+        size_t lo = 0, hi = f.switches.size();
+        while (lo < hi) {
+            const size_t mid = (lo + hi) / 2;
+            cx.spend_ops(1, qsize(x) + qsize(f.switches[mid].x));
+            if (f.switches[mid].x > x || (or_at && f.switches[mid].x == x)) hi = mid; else lo = mid + 1;
+        }
+        return lo;
+    };
+    auto first_after = [&](const Q& x) { return first(x, false); };
+    bool within = true;
+    for (const Seg& s : segs) {
+        within = within && R.close(cx, s.y0, f.at(cx, s.x0)) && R.close(cx, s.y1, f.at(cx, s.x1));
+        for (size_t k = first_after(s.x0); k < f.switches.size() && f.switches[k].x < s.x1; ++k) {
+            const auto& sw = f.switches[k];
+            cx.spend_ops(6, qsize(s.x0) + qsize(s.x1) + qsize(s.y0) + qsize(s.y1) + qsize(sw.x));
+            within = within && R.close(cx, s.y0 + (s.y1 - s.y0) * (sw.x - s.x0) / (s.x1 - s.x0), sw.y);
+        }
+    }
+    // 3. Switch points: exact ones in [lo, hi] paired with claimed ones, each the other's nearest
+    // in rho1 (ties: the first listed).
+    std::vector<const CurveFacts::Switch*> exact;
+    for (size_t k = first(lo, true); k < f.switches.size() && f.switches[k].x <= hi; ++k)
+        exact.push_back(&f.switches[k]);
+    // (Linear searches, each comparison counted: quadratic only in what the claim lists.)
+    auto nearest_claimed = [&](const Q& x) {
+        size_t b = 0;
+        for (size_t i = 1; i < claimed.size(); ++i) {
+            cx.spend_ops(4, qsize(claimed[i].first) + qsize(claimed[b].first) + qsize(x));
+            if (abs(claimed[i].first - x) < abs(claimed[b].first - x)) b = i;
+        }
+        return b;
+    };
+    auto nearest_exact = [&](const Q& x) {
+        size_t b = 0;
+        for (size_t i = 1; i < exact.size(); ++i) {
+            cx.spend_ops(4, qsize(exact[i]->x) + qsize(exact[b]->x) + qsize(x));
+            if (abs(exact[i]->x - x) < abs(exact[b]->x - x)) b = i;
+        }
+        return b;
+    };
+    bool switches_right = true;
+    std::vector<bool> used(claimed.size(), false);
+    for (size_t i = 0; i < exact.size(); ++i) {
+        const bool at_end = exact[i]->x == lo || exact[i]->x == hi;
+        size_t k = 0;
+        if (claimed.empty() || nearest_exact(claimed[k = nearest_claimed(exact[i]->x)].first) != i) {
+            if (!at_end) switches_right = false;  // missed
+            continue;
+        }
+        used[k] = true;
+        if (!R.close(cx, claimed[k].first, exact[i]->x) || !R.close(cx, claimed[k].second, exact[i]->y))
+            switches_right = false;  // misplaced
+    }
+    for (bool u : used) switches_right = switches_right && u;  // none extra
+    // 4. Each claimed contact is f's at its segment's midpoint (a switch point's there).
+    bool contacts_right = true;
+    for (const Seg& s : segs) {
+        if (!s.label) continue;
+        const Q mid = (s.x0 + s.x1) / 2;
+        std::string e = positive ? f.contacts[f.piece_at(cx, mid)] : std::string("none");
+        const size_t k = first_after(mid);
+        if (k > 0 && f.switches[k - 1].x == mid) e = f.switches[k - 1].contact;
+        contacts_right = contacts_right && *s.label == e;
+    }
+    return positive && within && switches_right && contacts_right;
+}
+
+// A switch-point claim is right when some exact switch point matches it: both coordinates within
+// the tolerance (|c − x| <= tol·x) and the contact, when claimed. Every ρ1 = x with
+// |c1 − x| <= tol·x lies in [c1/(1 + tol), c1/(1 − tol)] (beyond c1/(1 + tol) without end when
+// tol >= 1), so the window must hold that range strictly inside (or start at 0, or go on to where
+// the curve reaches ρ2 <= 0, past which there is no switch point): then every switch point that
+// could match is listed.
+bool judge_switch_point(Context& cx, const Rules& R, const J& cl, const Window& W, const std::string& wc,
+                        const std::string& wp) {
+    shape(cx, cl, wc, {"kind", "rho1", "rho2"}, {"contact"});
+    const Q c1 = positive(cx, cl, "rho1", wc), c2 = positive(cx, cl, "rho2", wc);
+    std::optional<std::string> label;
+    if (cl.contains("contact")) label = claimed_contact(cx, cl, wc);
+    cx.spend_ops(4, 2 * qsize(c1) + 2 * qsize(R.tol));
+    const Q lo = c1 / (1 + R.tol);
+    // (Strictly: the window lists the switch points strictly inside it.)
+    cx.claim(sgn(W.a) == 0 || W.a < lo, wp + ".rho1 starts below every rho1 within the tolerance of the claim");
+    cx.claim(W.reaches_zero() || (R.tol < 1 && c1 / (1 - R.tol) < W.b),
+             wp + ".rho1 ends beyond every rho1 within the tolerance of the claim");
+    for (const auto& sw : W.f.switches)
+        if (R.close(cx, c1, sw.x) && R.close(cx, c2, sw.y) && (!label || *label == sw.contact)) return true;
+    return false;
+}
+
+// One judgement; returns whether the claim is right by the rules.
+bool judge(Context& cx, const Scene& sc, const Rules& R, const Judgement& j) {
+    const J &cl = j.claim, &pr = j.proof;
+    const std::string &kind = j.kind, &where = j.where, &wc = j.wc, &wp = j.wp;
+    const Polytopes bodies(sc);
+    if (kind == "verdict") {
+        shape(cx, cl, wc, {"kind", "rho1", "rho2", "verdict"});
+        shape(cx, pr, wp, {"verdict", "certificate"});
+        const Q r1 = positive(cx, cl, "rho1", wc), r2 = positive(cx, cl, "rho2", wc);
+        cx.claim(at(cl, "verdict").is_string() && at(pr, "verdict").is_string(), where + ": verdicts are strings");
+        const std::string c = at(cl, "verdict").get<std::string>(), v = at(pr, "verdict").get<std::string>();
+        check_claimed_verdict(cx, c, wc);
+        cx.claim(v == "separated" || v == "touching" || v == "overlapping",
+                 wp + ".verdict is separated, touching or overlapping");
+        check_verdict(cx, sc, r1, r2, v, at(pr, "certificate"));
+        return verdict_right(c, v);
+    }
+    if (kind == "growth_distance") {
+        shape(cx, cl, wc, {"kind", "value"});
+        shape(cx, pr, wp, {"value"}, {"normal", "witness"});
+        const Q c = num(cx, at(cl, "value"), wc + ".value");
+        cx.claim(sgn(c) >= 0, wc + ".value is >= 0");
+        const Q g = num(cx, at(pr, "value"), wp + ".value");
+        if (sgn(g) == 0) {
+            cx.claim(!pr.contains("normal") && !pr.contains("witness"),
+                     wp + ": a growth distance of 0 has no normal or witness");
+            cx.claim(sc.s[0] == sc.s[1], wp + ": a growth distance of 0 needs coinciding seeds");
+        } else {
+            cx.claim(sgn(g) > 0 && pr.contains("normal") && pr.contains("witness"),
+                     wp + " has a normal and a witness");
+            const V3 n = normal(cx, at(pr, "normal"), wp + ".normal");
+            mpz_class H[2];
+            sc.support(cx, n, H);
+            cx.spend_ops(4, limbs(sc.Delta[0]) + limbs(sc.Delta[1]) + limbs(sc.Delta[2]) + limbs(H[0]) + limbs(H[1]) +
+                                qsize(g) + vsize(n));
+            cx.claim(sgn(H[0] + H[1]) > 0, wp + ".normal: h1 + h2 > 0");
+            cx.claim(Q(dotz(ints(n), sc.Delta)) == g * Q(H[0] + H[1]),
+                     wp + ": n·d = value (h1 + h2), so (rho, rho) is separated below it");
+            cx.claim(check_witness(cx, sc, at(pr, "witness"), wp + ".witness") == P2{g, g},
+                     wp + ".witness is at (value, value)");
+        }
+        return R.close(cx, c, g);
+    }
+    if (kind == "separating_plane") return judge_separating_plane(cx, bodies, j);
+    if (kind == "witness_point") return judge_witness_point(cx, bodies, j);
+    if (kind == "distance") {
+        shape(cx, cl, wc, {"kind", "rho1", "rho2", "value"}, {"closest"});
+        const bool closest = cl.contains("closest");
+        if (closest) shape(cx, pr, wp, {"squared", "P1", "P2", "closest"});
+        else shape(cx, pr, wp, {"squared", "P1", "P2"});
+        const Q r1 = positive(cx, cl, "rho1", wc), r2 = positive(cx, cl, "rho2", wc);
+        const Q c = num(cx, at(cl, "value"), wc + ".value");
+        const Q E = num(cx, at(pr, "squared"), wp + ".squared");
+        const V3 p = body_point(cx, sc, 0, r1, at(pr, "P1"), wp + ".P1"),
+                 q = body_point(cx, sc, 1, r2, at(pr, "P2"), wp + ".P2");
+        cx.spend_ops(12, 2 * (vsize(p) + vsize(q)) + qsize(E));
+        const V3 u = sub(q, p);
+        cx.claim(dot(u, u) == E, wp + ".squared is |q − p|² of its closest points");
+        if (sgn(E) > 0) {
+            cx.claim(reach(cx, sc, 0, u, r1) == dot(u, p), wp + ": no point of P1 lies beyond p along q − p");
+            cx.claim(reach_min(cx, sc, 1, u, r2) == dot(u, q),
+                     wp + ": no point of P2 lies before q along q − p");
+        }
+        bool right = R.close_sq(cx, c, E);
+        if (closest) {
+            const Closest cp = closest_points(cx, bodies, j, r1, r2);
+            cx.spend_ops(6, 2 * (vsize(cp.a) + vsize(cp.b)));
+            const V3 ab = sub(cp.b, cp.a);
+            right = right && cp.in && R.within_above(cx, dot(ab, ab), E);
+        }
+        return right;
+    }
+    if (kind == "penetration_depth") {
+        shape(cx, cl, wc, {"kind", "rho1", "rho2", "value"}, {"direction"});
+        const Q r1 = positive(cx, cl, "rho1", wc), r2 = positive(cx, cl, "rho2", wc);
+        const Q c = num(cx, at(cl, "value"), wc + ".value");
+        std::optional<V3> dir;
+        if (cl.contains("direction")) dir = nonzero_vector(cx, at(cl, "direction"), wc + ".direction");
+        if (pr.contains("separated")) {
+            shape(cx, pr, wp, {"separated"});
+            const V3 n = normal(cx, at(pr, "separated"), wp + ".separated");
+            cx.claim(sgn(hM(cx, sc, n, r1, r2)) < 0, wp + ".separated: the plane separates the pair strictly");
+            return false;  // a depth claimed of a separated pair
+        }
+        Q E;
+        if (pr.contains("common")) {
+            shape(cx, pr, wp, {"squared", "direction", "common"});
+            cx.claim(num(cx, at(pr, "squared"), wp + ".squared") == 0,
+                     wp + ".squared is 0 for a touching pair");
+            const V3 n = normal(cx, at(pr, "direction"), wp + ".direction");
+            cx.claim(sgn(hM(cx, sc, n, r1, r2)) == 0, wp + ".direction: the plane supports both bodies");
+            const J& cm = at(pr, "common");
+            shape(cx, cm, wp + ".common", {"P1", "P2"});
+            cx.claim(body_point(cx, sc, 0, r1, at(cm, "P1"), wp + ".common.P1") ==
+                         body_point(cx, sc, 1, r2, at(cm, "P2"), wp + ".common.P2"),
+                     wp + ".common is a point of both bodies");
+            E = 0;
+        } else {
+            shape(cx, pr, wp, {"squared", "direction", "points", "triangles"});
+            E = num(cx, at(pr, "squared"), wp + ".squared");
+            cx.claim(sgn(E) > 0, wp + ".squared is > 0");
+            const V3 n = normal(cx, at(pr, "direction"), wp + ".direction");
+            const Q g = hM(cx, sc, n, r1, r2);
+            cx.spend_ops(4, 2 * qsize(g) + qsize(E) + 2 * vsize(n));
+            cx.claim(sgn(g) > 0 && g * g == E * dot(n, n),
+                     wp + ".direction: the depth along it is sqrt(squared)");
+            check_lower_bound(cx, sc, r1, r2, E, pr, wp);
+        }
+        bool right = R.close_sq(cx, c, E);
+        if (dir) {
+            const Q g = hM(cx, sc, *dir, r1, r2);
+            cx.spend_ops(4, 2 * qsize(g) + 2 * vsize(*dir));
+            Q along = g * g / dot(*dir, *dir);
+            if (sgn(g) < 0) along = -along;
+            right = right && R.within_above(cx, along, E);
+        }
+        return right;
+    }
+    if (kind == "curve") return judge_curve(cx, R, cl, curve_window(cx, sc, pr, wp), wc, wp);
+    if (kind == "switch_point")
+        return judge_switch_point(cx, R, cl, curve_window(cx, sc, pr, wp), wc, wp);
+    if (kind == "curve_point") {  // a line `curve RHO1 RHO2`: rho2 is f(rho1), exactly (tolerance 0)
+        shape(cx, cl, wc, {"kind", "rho1", "rho2"});
+        const Q r1 = positive(cx, cl, "rho1", wc), r2 = positive(cx, cl, "rho2", wc);
+        const Window W = curve_window(cx, sc, pr, wp);
+        cx.claim(W.a <= r1 && r1 <= W.b, wp + ".rho1 holds the claimed rho1");
+        const Q f = W.f.at(cx, r1);
+        return sgn(f) > 0 && R.close(cx, r2, f);
+    }
+    cx.claim(false, wc + ".kind is verdict, growth_distance, separating_plane, witness_point, distance, "
+                         "penetration_depth, curve, switch_point or curve_point");
+    return false;
+}
+}  // namespace
+
+void check_judgements(Context& cx, const J& c) {
+    shape(cx, c, "", {"format", "kind", "tolerance", "judgements", "seed_interior", "scene"});
+    const Scene sc = read_scene(cx, at(c, "scene"));
+    check_seed_interior(cx, sc, at(c, "seed_interior"));
+    const Rules R = read_rules(cx, c);
+    const J& js = at(c, "judgements");
+    const size_t rights = judge_all(cx, js, [&](const Judgement& j) { return judge(cx, sc, R, j); });
+    // What the file proves, in the line the checker prints: the judgements and their tolerance.
+    cx.summary = "; judgements: " + judged(rights, js.size(), R.tol);
+}
+}  // namespace scalecert_check

@@ -1,0 +1,113 @@
+// What the two judgement formats share (certificates/FORMAT.md, "A judgements file" and "A
+// compound judgements file"; CLAIMS.md's rules): the list of judgements, each entry's claim and
+// proof, the tolerance rules, the extents and points of scaled bodies, and the claim kinds whose
+// rules are the same for two convex polytopes and for two objects made of parts
+// (separating_plane, witness_point, a distance claim's closest points).
+#pragma once
+#include "context.hpp"
+#include "json.hpp"
+
+#include <cstdint>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace scalecert_check {
+struct Scene;
+
+// CLAIMS.md's closeness rules at the file's tolerance, each counted before it runs.
+struct Rules {
+    Q tol;
+    bool close(Context& cx, const Q& c, const Q& e) const;
+    bool close_sq(Context& cx, const Q& c, const Q& E) const;
+    bool within_above(Context& cx, const Q& x, const Q& E) const;
+};
+// The file's `tolerance`: an exact number >= 0.
+Rules read_rules(Context& cx, const J& c);
+// "N right, M wrong, tolerance T" for the line printed for a valid file. A long tolerance is
+// shown by its size, never by a prefix (a prefix hides a factor of 10^61): a forged tolerance
+// makes wrong values right, and stays valid (it is the file's claim), so the line shows it.
+std::string judged(size_t rights, size_t total, const Q& tol);
+
+// The largest limbs of a vector's coordinates, for counting.
+double vsize(const V3& v);
+// n·L for the least L > 0 making every component an integer; L in *scale.
+V3 integral(const V3& n, mpz_class* scale);
+// o[key], an exact number > 0.
+Q positive(Context& cx, const J& o, const char* key, const std::string& where);
+// A point that is not the origin.
+V3 nonzero_vector(Context& cx, const J& j, const std::string& where);
+
+// max over P_i(rho) of n·x, for a nonzero rational n: n·s_i + rho max_v n·(v − s_i), the maximum a
+// scan of every vertex of polyhedron i, or of the vertices `verts` (ascending; a compound's parts).
+Q reach(Context& cx, const Scene& sc, int i, const V3& n, const Q& rho, const std::vector<int>* verts = nullptr);
+// s_i + rho (Σ w v − s_i) for weights over P_i's vertices [base, base + count) (combination()).
+V3 body_point(Context& cx, const Scene& sc, int i, const Q& rho, const J& w, const std::string& where,
+              std::vector<int>* used = nullptr, size_t base = 0, size_t count = SIZE_MAX);
+
+// The two bodies a judgement speaks of, scaled: P1(ρ1) and P2(ρ2), two convex polytopes or two
+// objects made of parts.
+class Bodies {
+public:
+    virtual ~Bodies() = default;
+    // max over body i scaled by rho of n·x (n a nonzero rational vector).
+    virtual Q reach(Context& cx, int i, const V3& n, const Q& rho) const = 0;
+    // min over body i scaled by rho of n·x.
+    Q reach_min(Context& cx, int i, const V3& n, const Q& rho) const {
+        return -reach(cx, i, {-n[0], -n[1], -n[2]}, rho);
+    }
+    // Whether x lies in body i scaled by rho, by the membership proof p (Invalid if p proves
+    // neither).
+    virtual bool member(Context& cx, int i, const Q& rho, const V3& x, const J& p, const std::string& where) const = 0;
+};
+
+// One entry of `judgements`: its claim and proof, the claim's kind, and their names in messages.
+struct Judgement {
+    const J& claim;
+    const J& proof;
+    std::string kind;
+    std::string where, wc, wp;  // "judgements[k]", and its ".claim" and ".proof"
+};
+
+// Every entry {"index", "claim", "right", "proof"} of a judgements list: distinct indices, a claim
+// with a kind and a proof object, and "right" the judgement that judge(entry) gives. Returns how
+// many are right.
+template <class Judge>
+size_t judge_all(Context& cx, const J& js, Judge judge) {
+    cx.claim(js.is_array() && !js.empty(), "judgements is a nonempty list");
+    std::set<size_t> indices;
+    size_t rights = 0;
+    for (size_t k = 0; k < js.size(); ++k) {
+        const std::string w = "judgements[" + std::to_string(k) + "]";
+        shape(cx, js[k], w, {"index", "claim", "right", "proof"});
+        cx.claim(natural(at(js[k], "index")) && indices.insert(at(js[k], "index").get<size_t>()).second,
+                 w + ".index is a distinct natural number");
+        cx.claim(at(js[k], "right").is_boolean(), w + ".right is true or false");
+        const J &cl = at(js[k], "claim"), &pr = at(js[k], "proof");
+        cx.claim(cl.is_object() && cl.contains("kind") && cl["kind"].is_string(), w + ".claim has a kind");
+        cx.claim(pr.is_object(), w + ".proof is an object");
+        const bool right = judge(Judgement{cl, pr, cl["kind"].get<std::string>(), w, w + ".claim", w + ".proof"});
+        cx.claim(right == at(js[k], "right").get<bool>(),
+                 w + ".right must be the judgement the rules give, which is " + (right ? "right" : "wrong"));
+        rights += right;
+    }
+    return rights;
+}
+
+// A claimed verdict: separated, touching, overlapping or intersecting (not separated).
+void check_claimed_verdict(Context& cx, const std::string& c, const std::string& wc);
+// Whether the claimed verdict c is right when the exact one is v.
+inline bool verdict_right(const std::string& c, const std::string& v) {
+    return c == "intersecting" ? v != "separated" : c == v;
+}
+
+// The claim kinds judged alike for both formats. separating_plane: the claim's plane separates
+// the bodies strictly (and its offset lies strictly between), computed from every vertex.
+bool judge_separating_plane(Context& cx, const Bodies& B, const Judgement& j);
+// witness_point: the claim's point lies in both bodies, by the proof's two memberships.
+bool judge_witness_point(Context& cx, const Bodies& B, const Judgement& j);
+// A distance claim's closest points ("closest": [a, b]) and whether both lie in their bodies (the
+// proof's "closest": P1, P2).
+struct Closest { V3 a, b; bool in; };
+Closest closest_points(Context& cx, const Bodies& B, const Judgement& j, const Q& r1, const Q& r2);
+}  // namespace scalecert_check

@@ -1,0 +1,54 @@
+// Support scans (certificates/FORMAT.md, "What the checker costs": support values and
+// maximisers). Every support value h_i(n) and every list of maximisers is a scan of all the
+// vertices of a polytope, once per normal direction: with the lists of normals a file may hold,
+// the checker's largest cost. The scan compares u·X_k, X_k = D v_k, over the vertices v_k, where
+// D > 0 is the lcm of the denominators of the polytope's vertex coordinates (at most 2^16384, the
+// engine's own limit): this orders the vertices as u·(v_k − s_i) does. Exact in every case, in the
+// cheapest arithmetic the numbers allow. The vertices whose X coordinates are all below 2^62 in
+// magnitude are also held as int64; with every such |X| < 2^b and an integer u with every
+// |u_c| < 2^c they are scanned
+//   - b + c <= 61: in int64. Each product u_c X_c is below 2^61 in magnitude, each partial sum
+//     below 3·2^61 < 2^63: no overflow;
+//   - b <= 62 and c <= 62: in __int128. Each product is below 2^124 in magnitude, each partial
+//     sum below 3·2^124 < 2^126 < 2^127;
+//   - otherwise (a normal past 2^62): in mpz.
+// The other vertices (a few large numbers among many small ones cost the small ones nothing) in
+// mpz, and the two maxima compared in mpz. The maximisers found are exactly those of the
+// rational comparison, in ascending order (tests/test_checker.cpp compares both on random scenes
+// of every number kind, mixed sizes among them).
+#pragma once
+#include "context.hpp"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace scalecert_check {
+class Scan {
+public:
+    // The vertices v of one polytope (`what` names it in messages); refused as unreadable when
+    // their common denominator passes 16,384 bits.
+    Scan(Context& cx, const std::vector<V3>& v, const std::string& what);
+    // The vertices k (of `subset`, ascending, or of all) at which u·v_k is largest, ascending.
+    // u has integer coordinates.
+    std::vector<int> argmax(Context& cx, const Z3& u, const std::vector<int>* subset = nullptr) const;
+    const mpz_class& D() const { return D_; }
+    const Z3& X(size_t k) const { return Z_[k]; }  // D v_k
+    size_t size() const { return n_; }
+
+private:
+    size_t n_;
+    mpz_class D_ = 1;
+    std::vector<Z3> Z_;  // X_k = D v_k
+    // The vertices whose X coordinates are all below 2^62 in magnitude, held as int64 at compact
+    // positions (orig_: position -> vertex, pos_: vertex -> position or -1), and the others (big_).
+    std::vector<int64_t> X_[3];
+    std::vector<int> orig_, pos_, big_;
+    int bits_ = 0;                     // every machine |X| < 2^bits_
+    double big_limbs_[3] = {0, 0, 0};  // the limbs of the others' X, by coordinate
+
+    // u·X_k over the vertices of `list` (ascending) in GMP integers: the maximisers, ascending,
+    // and the maximum in `best`.
+    std::vector<int> mpz_scan(Context& cx, const Z3& u, const std::vector<int>& list, mpz_class& best) const;
+};
+}  // namespace scalecert_check

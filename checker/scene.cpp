@@ -1,0 +1,206 @@
+#include "scene.hpp"
+
+#include "json.hpp"
+#include "numbers.hpp"
+
+#include <set>
+
+namespace scalecert_check {
+void Scene::prepare(Context& cx) {
+    for (int i = 0; i < 2; ++i) {
+        mpz_lcm(Dj.get_mpz_t(), Dj.get_mpz_t(), scan[i]->D().get_mpz_t());
+        for (const Q& c : s[i]) mpz_lcm(Dj.get_mpz_t(), Dj.get_mpz_t(), c.get_den_mpz_t());
+    }
+    cx.spend(100 + 20 * limbs(Dj));
+    for (int i = 0; i < 2; ++i) {
+        E[i] = Dj / scan[i]->D();
+        for (int c = 0; c < 3; ++c) {
+            mpz_divexact(S[i][c].get_mpz_t(), Dj.get_mpz_t(), s[i][c].get_den_mpz_t());
+            S[i][c] *= s[i][c].get_num();
+        }
+        sdv[i] = {Q(S[i][0], E[i]), Q(S[i][1], E[i]), Q(S[i][2], E[i])};
+        for (Q& q : sdv[i]) q.canonicalize();
+    }
+    for (int c = 0; c < 3; ++c) Delta[c] = S[1][c] - S[0][c];
+}
+
+mpz_class Scene::support_at(Context& cx, int i, const Z3& u, int k) const {
+    spend_at(cx, i, k);
+    mpz_class r = dotz(u, scan[i]->X(static_cast<size_t>(k))) * E[i];
+    r -= dotz(u, S[i]);
+    return r;
+}
+
+Q Scene::h(Context& cx, int i, const V3& n, std::vector<int>* argmax) const {
+    Z3 u = ints(n);
+    if (i == 1) for (auto& c : u) c = -c;
+    std::vector<int> m = scan[i]->argmax(cx, u);
+    Q r(support_at(cx, i, u, m[0]), Dj);
+    r.canonicalize();
+    if (argmax) *argmax = std::move(m);
+    return r;
+}
+
+const Scene::Support* Scene::support(Context& cx, const V3& n, mpz_class H_out[2],
+                                     const std::vector<int>* max_out[2]) const {
+    mpz_class g = 0;
+    for (const Q& c : n) mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), c.get_num_mpz_t());
+    Z3 p;
+    std::string key;
+    for (int c = 0; c < 3; ++c) {
+        mpz_divexact(p[c].get_mpz_t(), n[c].get_num_mpz_t(), g.get_mpz_t());
+        key += p[c].get_str(16) + ",";
+    }
+    auto it = cache_.find(key);
+    if (it == cache_.end()) {
+        Support e;
+        for (int i = 0; i < 2; ++i) {
+            Z3 u = p;
+            if (i == 1) for (auto& c : u) c = -c;
+            e.max[i] = scan[i]->argmax(cx, u);
+            e.H[i] = support_at(cx, i, u, e.max[i][0]);
+        }
+        it = cache_.emplace(std::move(key), std::move(e)).first;
+    }
+    for (int i = 0; i < 2; ++i) {
+        H_out[i] = it->second.H[i] * g;
+        if (max_out) max_out[i] = &it->second.max[i];
+    }
+    return &it->second;
+}
+
+void Scene::spend_at(Context& cx, int i, int k) const {
+    const Z3& x = scan[i]->X(static_cast<size_t>(k));
+    cx.spend(20 + 4 * (limbs(x[0]) + limbs(x[1]) + limbs(x[2]) + limbs(E[i]) + limbs(S[i][0]) + limbs(S[i][1]) +
+                       limbs(S[i][2])));
+}
+
+// In one pass: a vertex that does not raise the dimension lies in the hull of those before,
+// which only grows. On X_k = D v_k (the same dimension).
+int affine_dim(Context& cx, const Scene& sc, int i, const std::vector<int>& idx) {
+    const Scan& s = *sc.scan[i];
+    const Z3& o = s.X(static_cast<size_t>(idx[0]));
+    int dim = 0;
+    Z3 e1, c, v, x;
+    for (int k : idx) {
+        const Z3& p = s.X(static_cast<size_t>(k));
+        const double l = 1 + limbs(p[0]) + limbs(p[1]) + limbs(p[2]) + limbs(o[0]) + limbs(o[1]) + limbs(o[2]);
+        cx.spend(30 + 4 * l * l);
+        for (int j = 0; j < 3; ++j) v[j] = p[j] - o[j];
+        const bool nz = sgn(v[0]) || sgn(v[1]) || sgn(v[2]);
+        if (dim == 0 && nz) { e1 = v; dim = 1; continue; }
+        if (dim == 1) {
+            x = {e1[1] * v[2] - e1[2] * v[1], e1[2] * v[0] - e1[0] * v[2], e1[0] * v[1] - e1[1] * v[0]};
+            if (sgn(x[0]) || sgn(x[1]) || sgn(x[2])) { c = x; dim = 2; }
+            continue;
+        }
+        if (dim == 2 && sgn(dotz(c, v)) != 0) return 3;
+    }
+    return dim;
+}
+
+char dimension_letter(Context& cx, const Scene& sc, int i, const std::vector<int>& idx) {
+    return "VEFF"[affine_dim(cx, sc, i, idx)];
+}
+
+Scene read_scene(Context& cx, const J& j) {
+    shape(cx, j, "scene", {"P1", "P2", "I1", "I2"});
+    Scene sc;
+    for (int i = 0; i < 2; ++i) {
+        const std::string w = std::string("scene.") + kPoly[i];
+        const J& p = at(j, kPoly[i]);
+        shape(cx, p, w, {"vertices", "seed"});
+        const J& vs = at(p, "vertices");
+        cx.claim(vs.is_array(), w + ".vertices is a list");
+        for (size_t k = 0; k < vs.size(); ++k)
+            sc.P[i].push_back(point(cx, vs[k], w + ".vertices[" + std::to_string(k) + "]"));
+        cx.claim(sc.P[i].size() >= 4, w + " has at least 4 vertices");
+        read_seed(cx, sc, i, p, w);
+    }
+    sc.prepare(cx);
+    read_ranges(cx, sc, j);
+    return sc;
+}
+
+void read_seed(Context& cx, Scene& sc, int i, const J& p, const std::string& w) {
+    sc.s[i] = point(cx, at(p, "seed"), w + ".seed");
+    sc.scan[i] = std::make_unique<Scan>(cx, sc.P[i], kPoly[i]);
+}
+
+void read_ranges(Context& cx, Scene& sc, const J& j) {
+    const char* iv[2] = {"I1", "I2"};
+    for (int i = 0; i < 2; ++i) {
+        const J& r = at(j, iv[i]);
+        cx.claim(r.is_array() && r.size() == 2, std::string("scene.") + iv[i] + " is [lo, hi]");
+        sc.lo[i] = num(cx, r[0], std::string("scene.") + iv[i] + "[0]");
+        sc.hi[i] = num(cx, r[1], std::string("scene.") + iv[i] + "[1]");
+        cx.claim(sgn(sc.lo[i]) > 0 && sc.lo[i] <= sc.hi[i], std::string("scene.") + iv[i] + " has 0 < lo <= hi");
+    }
+}
+
+std::array<Q, 3> combination(Context& cx, const Scene& sc, int i, const J& w, const std::string& where,
+                             std::vector<int>* used, size_t base, size_t count) {
+    if (count == SIZE_MAX) count = sc.P[i].size();
+    cx.claim(w.is_array() && !w.empty(), where + " is a nonempty list of weights");
+    std::set<size_t> seen;
+    Q total = 0;
+    std::array<Q, 3> x{Q(0), Q(0), Q(0)};
+    for (size_t k = 0; k < w.size(); ++k) {
+        std::string wk = where + "[" + std::to_string(k) + "]";
+        cx.claim(w[k].is_array() && w[k].size() == 2, wk + " is [index, weight]");
+        size_t idx = base + index(cx, w[k][0], count, wk + " index");
+        cx.claim(seen.insert(idx).second, wk + " names a distinct vertex");
+        Q l = num(cx, w[k][1], wk + " weight");
+        cx.claim(sgn(l) > 0, wk + " weight is > 0");
+        // The running sums' denominators can grow with every term (weights over coprime
+        // denominators), and each addition costs their size, gcd included: counted first.
+        cx.spend(100 * (limbs(total.get_den()) + limbs(x[0].get_den()) + limbs(x[1].get_den()) +
+                        limbs(x[2].get_den())));
+        total += l;
+        const Z3& X = sc.scan[i]->X(idx);
+        cx.spend(100 + 10 * (1 + limbs(l.get_num()) + limbs(l.get_den())) *
+                           (1 + limbs(X[0]) + limbs(X[1]) + limbs(X[2])));
+        for (int c = 0; c < 3; ++c) x[c] += l * Q(X[c]);
+        if (used) used->push_back(static_cast<int>(idx));
+    }
+    cx.claim(total == 1, where + " weights sum to 1");
+    return x;
+}
+
+void check_seed_interior(Context& cx, const Scene& sc, const J& j) {
+    shape(cx, j, "seed_interior", {"P1", "P2"});
+    for (int i = 0; i < 2; ++i) {
+        std::string w = std::string("seed_interior.") + kPoly[i];
+        std::vector<int> used;
+        cx.claim(combination(cx, sc, i, at(j, kPoly[i]), w, &used) == sc.sdv[i], w + " combines to the seed");
+        const bool spans = affine_dim(cx, sc, i, used) == 3;
+        cx.claim(spans, w + " uses vertices spanning 3 dimensions");
+    }
+}
+
+// The point is s + ρ Σ λ (v − s) on each side. With c = Σ λ X / D_i (combination()), the point
+// y = s + ρ (c − s) equals p iff ρ D_i c = D_i p + (ρ − 1) D_i s: products of the file's numbers
+// and the scene's.
+P2 check_witness(Context& cx, const Scene& sc, const J& w, const std::string& where, std::vector<int>* used,
+                 const std::array<std::array<size_t, 2>, 2>* parts) {
+    shape(cx, w, where, {"rho1", "rho1_double", "rho2", "rho2_double", "point", "point_double", "P1", "P2"});
+    Q r1 = field(cx, w, "rho1", where), r2 = field(cx, w, "rho2", where);
+    cx.claim(sgn(r1) >= 0 && sgn(r2) >= 0, where + " scalings are >= 0");
+    std::vector<Q> x = fields(cx, w, "point", 3, where);
+    const Q* r[2] = {&r1, &r2};
+    for (int i = 0; i < 2; ++i) {
+        std::array<Q, 3> c = combination(cx, sc, i, at(w, kPoly[i]), where + "." + kPoly[i], used ? &used[i] : nullptr,
+                                         parts ? (*parts)[i][0] : 0, parts ? (*parts)[i][1] : SIZE_MAX);
+        const Q D(sc.scan[i]->D());
+        bool on = true;
+        for (int k = 0; k < 3; ++k) on = on && *r[i] * c[k] == x[k] * D + (*r[i] - 1) * sc.sdv[i][k];
+        cx.claim(on, where + ".point lies in " + kPoly[i] + "(rho" + std::to_string(i + 1) + ")");
+    }
+    return {r1, r2};
+}
+
+std::string contact_string(Context& cx, const J& j, const std::string& where) {
+    cx.claim(j.is_string() && j.get_ref<const std::string&>().size() == 2, where + " is a two-letter contact");
+    return j.get<std::string>();
+}
+}  // namespace scalecert_check

@@ -1,0 +1,90 @@
+// The scene stored in a certificate (certificates/FORMAT.md, "Fields of a partition file":
+// `scene`, `seed_interior`, and a witness) and the exact values recomputed from it: support
+// values and maximisers, affine dimensions, weighted combinations of vertices.
+//
+// The claims compare exact values of the file against values recomputed from the scene. A value
+// from the scene is an integer over one joint denominator D*, the lcm of both polytopes' vertex
+// denominators and the seeds' (S_i = D* s_i, Delta = D* (s2 − s1), H_i = D* h_i): every
+// recomputed quantity is then an integer combination of the scene's numbers, and each comparison
+// with a number p/q of the file, p D* = q H, costs a product by the file's own number, never a gcd
+// of two of the scene's numbers (which would cost, per normal or per named vertex, a power of
+// digits the file pays for once).
+#pragma once
+#include "context.hpp"
+#include "scan.hpp"
+
+#include <array>
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace scalecert_check {
+inline constexpr const char* kPoly[2] = {"P1", "P2"};
+
+struct Scene {
+    std::vector<V3> P[2];
+    V3 s[2];
+    Q lo[2], hi[2];
+    std::unique_ptr<Scan> scan[2];
+    mpz_class Dj = 1, E[2];   // D* and D*/D_i
+    Z3 S[2], Delta;           // D* s_i and D* (s2 − s1)
+    std::array<Q, 3> sdv[2];  // D_i s_i = S_i / E_i (exact rationals), for the combinations over D_i
+
+    // D*, S_i, Delta and D_i s_i, once the vertices are scanned and the seeds read.
+    void prepare(Context& cx);
+
+    // D* h_i(u) for an integer u, given a vertex k attaining the maximum of u·v: u·X_k E_i − u·S_i
+    // (h_1(n) = n·(v − s1) with u = n; h_2(n) = −n·(w − s2) with u = −n).
+    mpz_class support_at(Context& cx, int i, const Z3& u, int k) const;
+    // h_i(n), max over the vertices of σ n·(v − s_i) (σ = +1 for P1, −1 for P2), and every vertex
+    // attaining it (ascending): the rational value (tests compare it with a plain rational scan).
+    Q h(Context& cx, int i, const V3& n, std::vector<int>* argmax = nullptr) const;
+    // Both support values of n over D* (H_i = D* h_i(n)) and their maximisers, computed once per
+    // direction: n = g p with p primitive and g > 0 has the maximisers of p and H_i(n) = g H_i(p)
+    // (h is positively homogeneous), so a normal repeated, or listed again as a multiple, costs no
+    // second scan. Returns the direction's entry (the same pointer for the same direction).
+    struct Support { mpz_class H[2]; std::vector<int> max[2]; };
+    const Support* support(Context& cx, const V3& n, mpz_class H_out[2],
+                           const std::vector<int>* max_out[2] = nullptr) const;
+    // q == H / D* (q a number of the file, H over D*).
+    bool over(const Q& q, const mpz_class& H) const { return q.get_num() * Dj == q.get_den() * H; }
+    Q value(const mpz_class& H) const { Q r(H, Dj); r.canonicalize(); return r; }  // H / D*, for messages
+    // The work of one product by vertex k's integers and D*'s (a place on a line, a support value).
+    void spend_at(Context& cx, int i, int k) const;
+
+private:
+    mutable std::map<std::string, Support> cache_;
+};
+
+// The scene object of a partition, a query answer or a judgements file: two polyhedra of at
+// least 4 vertices, their seeds, I1 and I2.
+Scene read_scene(Context& cx, const J& j);
+// The seed of polyhedron i (object p of the file, named w) and the scan of its vertices sc.P[i].
+void read_seed(Context& cx, Scene& sc, int i, const J& p, const std::string& w);
+// I1 and I2 of a scene object: [lo, hi] with 0 < lo <= hi.
+void read_ranges(Context& cx, Scene& sc, const J& j);
+
+// The dimension of the affine hull of a vertex set of polyhedron i.
+int affine_dim(Context& cx, const Scene& sc, int i, const std::vector<int>& idx);
+// The letter of a vertex set: the dimension of its affine hull (V: a point, E: a segment, F: a
+// polygon or more).
+char dimension_letter(Context& cx, const Scene& sc, int i, const std::vector<int>& idx);
+
+// Weights [[index, "w"], ...] over polyhedron i: distinct indices, w > 0, sum 1. Returns
+// D_i Σ w v = Σ w X: each term a product of the file's weight and the scene's integers.
+// Indices are into the vertices [base, base + count) of the polyhedron (a compound's part), base
+// added: by default all of them. The vertices named are appended to *used.
+std::array<Q, 3> combination(Context& cx, const Scene& sc, int i, const J& w, const std::string& where,
+                             std::vector<int>* used = nullptr, size_t base = 0, size_t count = SIZE_MAX);
+// The seed is a strictly positive combination of vertices that span 3 dimensions: interior.
+void check_seed_interior(Context& cx, const Scene& sc, const J& j);
+// A witness: a common point of P1(ρ1) and P2(ρ2). Returns (ρ1, ρ2); the vertices each side
+// weights are appended to used[0], used[1]. parts: for a compound, each side's part as
+// [base, count) of its vertices (combination()).
+P2 check_witness(Context& cx, const Scene& sc, const J& w, const std::string& where, std::vector<int>* used = nullptr,
+                 const std::array<std::array<size_t, 2>, 2>* parts = nullptr);
+// A two-letter contact label.
+std::string contact_string(Context& cx, const J& j, const std::string& where);
+}  // namespace scalecert_check
