@@ -4,6 +4,8 @@
 #include "scene.hpp"
 
 #include <algorithm>
+#include <map>
+#include <set>
 #include <cstdio>
 
 namespace scalecert_check {
@@ -131,5 +133,24 @@ Closest closest_points(Context& cx, const Bodies& B, const Judgement& j, const Q
     const bool in1 = B.member(cx, 0, r1, a, at(pc, "P1"), wp + ".closest.P1"),
                in2 = B.member(cx, 1, r2, b, at(pc, "P2"), wp + ".closest.P2");
     return {a, b, in1 && in2};
+}
+void check_no_answer(Context& cx, const Judgement& j) {
+    shape(cx, j.proof, j.wp, {"no_answer"});
+    cx.claim(at(j.proof, "no_answer").is_string(), j.wp + ".no_answer is a string");
+    const std::string f = at(j.proof, "no_answer").get<std::string>();
+    static const std::map<std::string, std::set<std::string>> answers = {
+        {"growth_distance", {"value"}}, {"curve_point", {"rho2"}}, {"switch_point", {"rho1", "rho2"}},
+        {"separating_plane", {"normal", "offset"}}, {"witness_point", {"point"}}, {"distance", {"value", "closest"}},
+        {"penetration_depth", {"value", "direction"}}};
+    const auto k = answers.find(j.kind);
+    cx.claim(k != answers.end() && k->second.count(f) == 1,
+             j.wp + ".no_answer names a field where a " + j.kind + " claim answers");
+    cx.claim(j.claim.contains(f), j.wc + " has the field " + f);
+    const J& v = j.claim[f];
+    if (v.is_null()) return;
+    const std::string wf = j.wc + "." + f;
+    cx.claim(f == "normal" || f == "direction", wf + " is null");
+    cx.claim(v.is_array() && v.size() == 3, wf + " is null or three zeros");
+    for (const J& x : v) cx.claim(sgn(num(cx, x, wf)) == 0, wf + " is null or three zeros");
 }
 }  // namespace scalecert_check

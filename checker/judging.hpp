@@ -69,12 +69,17 @@ struct Judgement {
     std::string where, wc, wp;  // "judgements[k]", and its ".claim" and ".proof"
 };
 
-// Every entry {"index", "claim", "right", "proof"} of a judgements list: distinct indices, a claim
-// with a kind and a proof object, and "right" the judgement that judge(entry) gives. Returns how
-// many are right.
+// A claim the program gave no answer in (FORMAT.md, "A judgements file"), whose proof is
+// {"no_answer": FIELD}: FIELD is a field where the claim's kind answers, and the claim has it null
+// or, for a normal or a direction, three exact zeros. Such a claim is wrong.
+void check_no_answer(Context& cx, const Judgement& j);
+
+// Every entry {"index", "claim", "right", "proof"} of a judgements list (which may be empty):
+// distinct indices, a claim with a kind and a proof object, and "right" the judgement that
+// judge(entry) gives, or wrong for a claim with no answer. Returns how many are right.
 template <class Judge>
 size_t judge_all(Context& cx, const J& js, Judge judge) {
-    cx.claim(js.is_array() && !js.empty(), "judgements is a nonempty list");
+    cx.claim(js.is_array(), "judgements is a list");
     std::set<size_t> indices;
     size_t rights = 0;
     for (size_t k = 0; k < js.size(); ++k) {
@@ -86,7 +91,10 @@ size_t judge_all(Context& cx, const J& js, Judge judge) {
         const J &cl = at(js[k], "claim"), &pr = at(js[k], "proof");
         cx.claim(cl.is_object() && cl.contains("kind") && cl["kind"].is_string(), w + ".claim has a kind");
         cx.claim(pr.is_object(), w + ".proof is an object");
-        const bool right = judge(Judgement{cl, pr, cl["kind"].get<std::string>(), w, w + ".claim", w + ".proof"});
+        const Judgement j{cl, pr, cl["kind"].get<std::string>(), w, w + ".claim", w + ".proof"};
+        const bool no_answer = pr.contains("no_answer");
+        if (no_answer) check_no_answer(cx, j);
+        const bool right = !no_answer && judge(j);
         cx.claim(right == at(js[k], "right").get<bool>(),
                  w + ".right must be the judgement the rules give, which is " + (right ? "right" : "wrong"));
         rights += right;
