@@ -571,7 +571,7 @@ BOOST_AUTO_TEST_CASE(typed_and_file_claims_judge_alike) {
     for (int i = 0; i < 24; ++i) p1.push_back({R(u(g), 10), R(u(g), 10), R(u(g), 10)});
     for (int i = 0; i < 24; ++i) p2.push_back({R(u(g), 10) + 2, R(u(g), 10), R(u(g), 10) + 1});
     const scalecert::Analysis a(scalecert::Scene(p1, p2, {R(1, 2), R(2)}, {R(1, 2), R(2)}));
-    for (const R tol : {R(0), R(1, 3)}) {
+    for (const R& tol : {R(0), R(1, 3)}) {
         const std::vector<scalecert::Claim> claims = random_claims(5000, 11 + tol.get_den().get_ui(), true);
         scalecert::ClaimOptions opt;
         opt.tolerance = tol;

@@ -360,7 +360,7 @@ BOOST_AUTO_TEST_CASE(outputs_that_are_no_answer) {
     BOOST_CHECK_THROW(k.one(R"({"kind": "verdict", "rho1": NaN, "rho2": 1, "verdict": "separated"})"), InputError);
     BOOST_CHECK_THROW(k.one(R"({"kind": "curve", "vertices": [[1, 2], [2, NaN]]})"), InputError);
     // An empty batch is judged: 0 claims, none wrong.
-    for (const std::string empty : {std::string(R"({"format": "scalecert-claims-1", "claims": []})"), std::string("# nothing\n\n")}) {
+    for (const std::string& empty : {std::string(R"({"format": "scalecert-claims-1", "claims": []})"), std::string("# nothing\n\n")}) {
         wrong = count = -1;
         certify_fp(ClaimModels::of(k.m, k.c), empty, "c", ClaimOptions{}, &wrong, &count);
         BOOST_TEST(wrong == 0);

@@ -392,7 +392,7 @@ BOOST_AUTO_TEST_CASE(claims_and_pairs_must_be_files) {
     // A directory is no claims file (it must not pass as an empty batch).
     expect_error("claims directory", "certify-fp " + g.string() + " " + workdir().string(), "is a directory");
     // An empty batch is judged: 0 claims, exit 0; with a certificate the checker accepts.
-    for (const std::string text : {std::string("# nothing\n\n"), std::string(R"({"format": "scalecert-claims-1", "claims": []})")}) {
+    for (const std::string& text : {std::string("# nothing\n\n"), std::string(R"({"format": "scalecert-claims-1", "claims": []})")}) {
         const fs::path empty = write("empty-claims.txt", text), cert = workdir() / "empty.cert.json";
         fs::remove(cert);
         Run r = run("certify-fp " + g.string() + " " + empty.string() + " --certificate " + cert.string());

@@ -31,8 +31,6 @@ std::string dbl(double d, int digits = 6) {
 // "p/q (~d)": the exact value and its nearest double, to `digits` significant digits (the JSON
 // claims' report uses 6, the line format's 17).
 std::string num(const Q& q, int digits = 6) { return to_exact_string(q) + " (~" + dbl(to_double_rn(q), digits) + ")"; }
-std::string ex(const Q& q) { return to_exact_string(q); }
-Json ex3(const Vec3q& v) { return Json::array({ex(v[0]), ex(v[1]), ex(v[2])}); }
 
 }  // namespace
 

@@ -142,6 +142,7 @@ Json exact_fields_json(const TypedClaim& c) {
 // ---- two convex objects ----------------------------------------------------------------------
 
 struct ConvexRules::Impl {
+    Impl(const ClaimModels& m, const Q& tolerance) : models(m), tol{tolerance} {}
     const ClaimModels& models;
     Tolerance tol;
     long distance_fallbacks = 0, depth_fallbacks = 0;
@@ -452,7 +453,7 @@ struct ConvexRules::Impl {
     }
 };
 
-ConvexRules::ConvexRules(const ClaimModels& models, const Q& tolerance) : impl_(new Impl{models, Tolerance{tolerance}}) {}
+ConvexRules::ConvexRules(const ClaimModels& models, const Q& tolerance) : impl_(new Impl(models, tolerance)) {}
 ConvexRules::~ConvexRules() = default;
 long ConvexRules::distance_fallbacks() const { return impl_->distance_fallbacks; }
 long ConvexRules::depth_fallbacks() const { return impl_->depth_fallbacks; }
