@@ -22,7 +22,7 @@ void compound(const scalecert::internal::ExactScene& sc) {
         for (const BoundaryEdge& e : ring.edges) {
             if (!e.contact) continue;
             const Point2q mid{(e.from[0] + e.to[0]) / 2, (e.from[1] + e.to[1]) / 2};
-            if (std::string(compound_verdict(r, mid[0], mid[1]).verdict) != "touching")
+            if (compound_verdict(r, mid[0], mid[1]).verdict != Verdict::Touching)
                 fuzz::finding("a labelled contact edge of the compound region is not touching at its middle");
         }
     for (const CompoundSwitch& s : b.switches)
