@@ -101,13 +101,18 @@ std::string utf8(const py::handle& h, const std::string& what) {
 // but MemoryError): then InputError; KeyboardInterrupt, SystemExit and MemoryError go on.
 bool argument_error(const py::error_already_set& e) { return e.matches(PyExc_Exception) && !e.matches(PyExc_MemoryError); }
 
+// A float, Python's or numpy's (any float dtype).
+bool is_float(const py::handle& h) {
+    return py::isinstance<py::float_>(h) || (has_attr(h, "dtype") && py::str(h.attr("dtype").attr("kind")).cast<std::string>() == "f");
+}
+
 Rational rational(const py::handle& h, const char* what) {
     try {
         if (py::isinstance<py::bool_>(h)) throw scalecert::InputError("a bool is not a number");
         if (has_attr(h, "ndim") && py::int_(h.attr("ndim")).cast<long>() != 0)
             throw scalecert::InputError("expected one number, not an array");
         if (py::isinstance<py::str>(h)) return scalecert::parse_rational(utf8(h, "text"));
-        if (py::isinstance<py::float_>(h) || (has_attr(h, "dtype") && py::str(h.attr("dtype").attr("kind")).cast<std::string>() == "f")) {
+        if (is_float(h)) {
             const double d = py::float_(h.cast<py::object>()).cast<double>();
             if (!std::isfinite(d)) throw scalecert::InputError("not a finite number");
             return scalecert::exact(d);
@@ -131,11 +136,7 @@ Rational rational(const py::handle& h, const char* what) {
 }
 
 // A float (Python's or numpy's) that is NaN or infinite: a program's output that is no answer.
-bool non_finite(const py::handle& h) {
-    if (!(py::isinstance<py::float_>(h) || (has_attr(h, "dtype") && py::str(h.attr("dtype").attr("kind")).cast<std::string>() == "f")))
-        return false;
-    return !std::isfinite(py::float_(h.cast<py::object>()).cast<double>());
-}
+bool non_finite(const py::handle& h) { return is_float(h) && !std::isfinite(py::float_(h.cast<py::object>()).cast<double>()); }
 
 py::list as_list(const py::handle& h, const std::string& what) {
     if (py::hasattr(h, "tolist")) return h.attr("tolist")();  // numpy arrays
