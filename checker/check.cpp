@@ -16,14 +16,21 @@ int check_text(const std::string& text, std::string& message, Context& cx) {
             cx.claim(c.is_object() && c.contains("format") && c["format"] == J("scalecert-2"), "format is scalecert-2");
             cx.claim(c.contains("kind") && c["kind"].is_string(), "kind is present");
             const std::string kind = c["kind"].get<std::string>();
-            if (kind == "partition") check_partition(cx, c);
-            else if (kind == "query") check_query(cx, c);
-            else if (kind == "judgements") check_judgements(cx, c);
-            else if (kind == "compound_partition") check_compound_partition(cx, c);
-            else if (kind == "compound_judgements") check_compound_judgements(cx, c);
+            if (kind == "partition")
+                check_partition(cx, c);
+            else if (kind == "query")
+                check_query(cx, c);
+            else if (kind == "judgements")
+                check_judgements(cx, c);
+            else if (kind == "compound_partition")
+                check_compound_partition(cx, c);
+            else if (kind == "compound_judgements")
+                check_compound_judgements(cx, c);
             else
-                cx.claim(false, "kind is partition, query, judgements, compound_partition or compound_judgements "
-                                "(got '" + printable(kind) + "': not a certificate)");
+                cx.claim(false,
+                         "kind is partition, query, judgements, compound_partition or compound_judgements "
+                         "(got '" +
+                             printable(kind) + "': not a certificate)");
         } catch (const Invalid& e) {
             message = "invalid: " + e.what;
             return 1;

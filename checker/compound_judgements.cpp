@@ -22,8 +22,8 @@ Q block_floor(Context& cx, const CompoundScene& cs, int i, const V3& n, const Q&
     return -block_reach(cx, cs, i, {-n[0], -n[1], -n[2]}, rho, first, last);
 }
 // s + rho (Σ w v − s) for weights over part k of object i (indices into the part's own points).
-V3 part_point(Context& cx, const CompoundScene& cs, int i, size_t k, const Q& rho, const J& w,
-              const std::string& where, std::vector<int>* used = nullptr) {
+V3 part_point(Context& cx, const CompoundScene& cs, int i, size_t k, const Q& rho, const J& w, const std::string& where,
+              std::vector<int>* used = nullptr) {
     const std::array<size_t, 2> part = cs.part(i, k);
     return body_point(cx, cs.sc, i, rho, w, where, used, part[0], part[1]);
 }
@@ -58,7 +58,7 @@ bool member(Context& cx, const CompoundScene& cs, int i, const Q& rho, const V3&
 
 // The two objects of the scene, scaled.
 class Objects : public Bodies {
-public:
+  public:
     explicit Objects(const CompoundScene& cs) : cs_(cs) {}
     Q reach(Context& cx, int i, const V3& n, const Q& rho) const override {
         return block_reach(cx, cs_, i, n, rho, 0, cs_.parts(i) - 1);
@@ -67,7 +67,7 @@ public:
         return scalecert_check::member(cx, cs_, i, rho, x, p, where);
     }
 
-private:
+  private:
     const CompoundScene& cs_;
 };
 
@@ -121,13 +121,17 @@ bool judge(Context& cx, const CompoundScene& cs, const Rules& R, const Judgement
             // Every pair apart by a plane (weakly: no interiors meet; strictly: none meets); touching
             // also needs a common point of one pair.
             const bool touching = v == "touching";
-            if (touching) shape(cx, pr, wp, {"verdict", "blocks", "pair", "witness"});
-            else shape(cx, pr, wp, {"verdict", "blocks"});
+            if (touching)
+                shape(cx, pr, wp, {"verdict", "blocks", "pair", "witness"});
+            else
+                shape(cx, pr, wp, {"verdict", "blocks"});
             check_blocks(cx, cs, r1, r2, at(pr, "blocks"), wp + ".blocks",
                          [&](const Q& c1, const Q& c2, const V3&, const std::string& w) {
                              cx.spend_ops(1, qsize(c1) + qsize(c2));
-                             if (touching) cx.claim(c1 <= c2, w + ": the plane separates its block's pairs (weakly)");
-                             else cx.claim(c1 < c2, w + ": the plane separates its block's pairs strictly");
+                             if (touching)
+                                 cx.claim(c1 <= c2, w + ": the plane separates its block's pairs (weakly)");
+                             else
+                                 cx.claim(c1 < c2, w + ": the plane separates its block's pairs strictly");
                          });
             if (touching) {
                 const std::array<size_t, 2> kj = part_pair(cx, cs, at(pr, "pair"), wp + ".pair");
@@ -151,8 +155,10 @@ bool judge(Context& cx, const CompoundScene& cs, const Rules& R, const Judgement
         cx.claim(pr.contains("squared"), wp + ".squared is present");
         const Q E = num(cx, *pr.find("squared"), wp + ".squared");
         cx.claim(sgn(E) >= 0, wp + ".squared is >= 0");
-        if (sgn(E) > 0) shape(cx, pr, wp, {"squared", "pair", "P1", "P2", "apart"}, {"closest"});
-        else shape(cx, pr, wp, {"squared", "pair", "P1", "P2"}, {"closest"});
+        if (sgn(E) > 0)
+            shape(cx, pr, wp, {"squared", "pair", "P1", "P2", "apart"}, {"closest"});
+        else
+            shape(cx, pr, wp, {"squared", "pair", "P1", "P2"}, {"closest"});
         cx.claim(cl.contains("closest") == pr.contains("closest"),
                  wp + ".closest is there exactly when the claim has closest points");
         // The upper bound: two points of the objects, sqrt(E) apart.

@@ -34,7 +34,10 @@ void check_compound_partition(Context& cx, const J& c) {
     const size_t m = cs.parts(0), n = cs.parts(1);
     const std::vector<P2> rect = rectangle(sc);
     PairCover cover(cx, m, n);
-    struct Diagonal { Q from, to; size_t a, b; };
+    struct Diagonal {
+        Q from, to;
+        size_t a, b;
+    };
     std::vector<Diagonal> diag;  // each listed polygon where it meets ρ1 = ρ2
     size_t meeting = 0;
     const J& pairs = at(c, "pairs");
@@ -54,7 +57,8 @@ void check_compound_partition(Context& cx, const J& c) {
             mpz_class H[2];
             for (int i = 0; i < 2; ++i) {
                 Z3 u = ints(nv);
-                if (i == 1) for (auto& x : u) x = -x;
+                if (i == 1)
+                    for (auto& x : u) x = -x;
                 const std::vector<int> best = sc.scan[i]->argmax(cx, u, &verts[i]);
                 H[i] = sc.support_at(cx, i, u, best[0]);  // D* hA(n), D* hB(n)
             }
@@ -70,9 +74,9 @@ void check_compound_partition(Context& cx, const J& c) {
                  w + " is one pair: a block of pairs must meet nowhere in the rectangle");
         const std::array<std::array<size_t, 2>, 2> parts{{cs.part(0, ra[0]), cs.part(1, rb[0])}};
         for (size_t k = 0; k < poly.size(); ++k)
-            cx.claim(check_witness(cx, sc, wit[k], w + ".witnesses[" + std::to_string(k) + "]", nullptr, &parts) ==
-                         poly[k],
-                     w + ".witnesses[" + std::to_string(k) + "] is at its vertex");
+            cx.claim(
+                check_witness(cx, sc, wit[k], w + ".witnesses[" + std::to_string(k) + "]", nullptr, &parts) == poly[k],
+                w + ".witnesses[" + std::to_string(k) + "] is at its vertex");
         ++meeting;
         std::vector<P2> d = cut(cx, cut(cx, poly, Q(-1), Q(1), Q(0)), Q(1), Q(-1), Q(0));  // on ρ1 = ρ2
         if (!d.empty()) {

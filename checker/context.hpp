@@ -20,10 +20,14 @@ using Z3 = std::array<mpz_class, 3>;
 
 // Limits on what is read at all (FORMAT.md): beyond them the file is unreadable (exit 2).
 constexpr size_t kMaxFileBytes = size_t(1) << 30;  // 1 GiB
-constexpr size_t kMaxDepth = 32;                    // certificates nest 7 levels deep
+constexpr size_t kMaxDepth = 32;                   // certificates nest 7 levels deep
 
-struct Invalid { std::string what; };     // a claim that fails: exit 1
-struct Unreadable { std::string what; };  // not a readable file: exit 2
+struct Invalid {
+    std::string what;
+};  // a claim that fails: exit 1
+struct Unreadable {
+    std::string what;
+};  // not a readable file: exit 2
 
 inline double limbs(const mpz_class& z) { return static_cast<double>(mpz_size(z.get_mpz_t())); }
 inline double qsize(const Q& q) { return limbs(q.get_num()) + limbs(q.get_den()); }
@@ -77,7 +81,7 @@ struct Context {
     // 88,000.)
     void spend_ops(double ops, double m) { spend(ops * (30 + m * m / 16)); }
 
-private:
+  private:
     [[noreturn]] void over_budget() const;
 };
 }  // namespace scalecert_check

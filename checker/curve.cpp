@@ -74,8 +74,8 @@ CurveFacts check_curve(Context& cx, const Scene& sc, const J& c, const Q& lo, co
                   {"closed_form", "same_line_normals", "zero_witness"});
         else
             shape(cx, p, w,
-                  {"rho1", "rho1_double", "slope", "slope_double", "intercept", "intercept_double", "contact",
-                   "normal", "h1", "h1_double", "h2", "h2_double", "support_vertices"},
+                  {"rho1", "rho1_double", "slope", "slope_double", "intercept", "intercept_double", "contact", "normal",
+                   "h1", "h1_double", "h2", "h2_double", "support_vertices"},
                   {"closed_form", "same_line_normals", "zero_witness"});
         annotation_string(cx, p, "closed_form", w);
         cf.contacts.emplace_back();
@@ -101,8 +101,8 @@ CurveFacts check_curve(Context& cx, const Scene& sc, const J& c, const Q& lo, co
         const J& sv = at(p, "support_vertices");
         shape(cx, sv, w + ".support_vertices", {"P1", "P2"});
         for (int i = 0; i < 2; ++i)
-            cx.claim(has(*f[i], static_cast<int>(index(cx, at(sv, kPoly[i]), sc.P[i].size(),
-                                                       w + ".support_vertices." + kPoly[i]))),
+            cx.claim(has(*f[i], static_cast<int>(
+                                    index(cx, at(sv, kPoly[i]), sc.P[i].size(), w + ".support_vertices." + kPoly[i]))),
                      w + ".support_vertices attain the support values");
         // The contact features G1, G2: the vertices maximising every listed normal with this line.
         // Every touching normal maximises on the touching set T, so T lies in G1(ρ1) ∩ G2(ρ2)
@@ -195,7 +195,8 @@ CurveFacts check_curve(Context& cx, const Scene& sc, const J& c, const Q& lo, co
         if (touching)
             shape(cx, sw[k], w, {"rho1", "rho1_double", "rho2", "rho2_double", "contact", "features", "witness"},
                   {"equation"});
-        else shape(cx, sw[k], w, {"rho1", "rho1_double", "rho2", "rho2_double", "contact"}, {"equation"});
+        else
+            shape(cx, sw[k], w, {"rho1", "rho1_double", "rho2", "rho2_double", "contact"}, {"equation"});
         annotation_string(cx, sw[k], "equation", w);
         Q x = field(cx, sw[k], "rho1", w), y = field(cx, sw[k], "rho2", w);
         cx.claim(x == ranges[k][1] && y == lines[k].at(x) && y == lines[k + 1].at(x),
@@ -235,8 +236,10 @@ CurveFacts check_curve(Context& cx, const Scene& sc, const J& c, const Q& lo, co
         // in P1(lo1), so every pair with ρ1 >= lo1 and ρ2 > 0 meets (P1 only grows): the curve is
         // <= 0 all along I1, as claimed. (Without it any line of some normal could be claimed there.)
         const bool anchored = touching || e == 0;
-        if (anchored) shape(cx, ends[e], w, {"rho1", "rho1_double", "rho2", "rho2_double", "witness"});
-        else shape(cx, ends[e], w, {"rho1", "rho1_double", "rho2", "rho2_double"});
+        if (anchored)
+            shape(cx, ends[e], w, {"rho1", "rho1_double", "rho2", "rho2_double", "witness"});
+        else
+            shape(cx, ends[e], w, {"rho1", "rho1_double", "rho2", "rho2_double"});
         Q x = field(cx, ends[e], "rho1", w), y = field(cx, ends[e], "rho2", w);
         const Line& L = e == 0 ? lines.front() : lines.back();
         cx.claim(x == (e == 0 ? lo : hi) && y == L.at(x), w + " is the curve at the end of " + range_name);

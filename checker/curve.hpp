@@ -27,7 +27,10 @@ struct CurveFacts {
     std::vector<V3> normals;
     std::vector<std::array<Q, 2>> ranges;
     std::vector<std::string> contacts;  // each piece's contact label; empty where rho2 <= 0 all along it
-    struct Switch { Q x, y; std::string contact; };
+    struct Switch {
+        Q x, y;
+        std::string contact;
+    };
     std::vector<Switch> switches;  // in increasing rho1, all with rho2 > 0
     Q end_rho2[2];
     // The piece holding x in [lo, hi] (at a switch point, the one to its right).
@@ -37,7 +40,10 @@ struct CurveFacts {
         while (lo < hi) {
             const size_t mid = (lo + hi) / 2;
             cx.spend_ops(1, qsize(x) + qsize(ranges[mid][1]));
-            if (x >= ranges[mid][1]) lo = mid + 1; else hi = mid;
+            if (x >= ranges[mid][1])
+                lo = mid + 1;
+            else
+                hi = mid;
         }
         return lo;
     }

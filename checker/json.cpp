@@ -15,7 +15,7 @@ namespace {
 // nlohmann's SAX parser in strict mode without comments; this handler builds the tree itself so
 // that it can reject duplicate keys (nlohmann keeps the last) and nesting deeper than kMaxDepth.
 class StrictTree : public nlohmann::json_sax<J> {
-public:
+  public:
     J root;
     std::string error;
     bool null() override { return put(J(nullptr)); }
@@ -27,8 +27,14 @@ public:
     bool binary(binary_t&) override { return fail("binary values are not JSON"); }
     bool start_object(std::size_t) override { return open(J::object()); }
     bool start_array(std::size_t) override { return open(J::array()); }
-    bool end_object() override { stack_.pop_back(); return true; }
-    bool end_array() override { stack_.pop_back(); return true; }
+    bool end_object() override {
+        stack_.pop_back();
+        return true;
+    }
+    bool end_array() override {
+        stack_.pop_back();
+        return true;
+    }
     bool key(string_t& k) override {
         if (stack_.back()->contains(k)) return fail("duplicate key \"" + printable(k) + "\"");
         key_ = std::move(k);
@@ -39,7 +45,7 @@ public:
         return false;
     }
 
-private:
+  private:
     std::vector<J*> stack_;
     std::string key_;
     bool fail(const std::string& why) {
@@ -47,12 +53,21 @@ private:
         return false;
     }
     J* place(J v) {
-        if (stack_.empty()) { root = std::move(v); return &root; }
+        if (stack_.empty()) {
+            root = std::move(v);
+            return &root;
+        }
         J& top = *stack_.back();
-        if (top.is_array()) { top.push_back(std::move(v)); return &top.back(); }
+        if (top.is_array()) {
+            top.push_back(std::move(v));
+            return &top.back();
+        }
         return &(top[key_] = std::move(v));
     }
-    bool put(J v) { place(std::move(v)); return true; }
+    bool put(J v) {
+        place(std::move(v));
+        return true;
+    }
     bool open(J v) {
         if (stack_.size() >= kMaxDepth) return fail("nested deeper than " + std::to_string(kMaxDepth) + " levels");
         stack_.push_back(place(std::move(v)));
@@ -80,8 +95,8 @@ void shape(Context& cx, const J& o, const std::string& where, std::initializer_l
         bool known = false;
         for (const char* k : required) known = known || it.key() == k;
         for (const char* k : optional) known = known || it.key() == k;
-        cx.claim(known, (where.empty() ? std::string("the file") : where) + " has no field \"" + printable(it.key()) +
-                            "\"");
+        cx.claim(known,
+                 (where.empty() ? std::string("the file") : where) + " has no field \"" + printable(it.key()) + "\"");
     }
 }
 

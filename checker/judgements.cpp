@@ -35,7 +35,7 @@ bool member(Context& cx, const Scene& sc, int i, const Q& rho, const V3& x, cons
 
 // The two polytopes of the scene, scaled.
 class Polytopes : public Bodies {
-public:
+  public:
     explicit Polytopes(const Scene& sc) : sc_(sc) {}
     Q reach(Context& cx, int i, const V3& n, const Q& rho) const override {
         return scalecert_check::reach(cx, sc_, i, n, rho);
@@ -44,7 +44,7 @@ public:
         return scalecert_check::member(cx, sc_, i, rho, x, p, where);
     }
 
-private:
+  private:
     const Scene& sc_;
 };
 
@@ -77,8 +77,8 @@ void check_lower_bound(Context& cx, const Scene& sc, const Q& r1, const Q& r2, c
     // q (N·W_a)² >= p Dy² Dc² |N|² for E = p/q. Counted before each product, by its operands' limbs.
     auto prod = [](double la, double lb) { return 2 + la * lb; };
     const mpz_class b1 = r1.get_den(), b2 = r2.get_den();
-    cx.spend_ops(14, vsize(sc.s[0]) + vsize(sc.s[1]) + qsize(r1) + qsize(r2) + limbs(sc.scan[0]->D()) +
-                         limbs(sc.scan[1]->D()));
+    cx.spend_ops(
+        14, vsize(sc.s[0]) + vsize(sc.s[1]) + qsize(r1) + qsize(r2) + limbs(sc.scan[0]->D()) + limbs(sc.scan[1]->D()));
     mpz_class Dy, d1 = b1 * sc.scan[0]->D(), d2 = b2 * sc.scan[1]->D();
     mpz_lcm(Dy.get_mpz_t(), d1.get_mpz_t(), d2.get_mpz_t());
     const mpz_class k1 = r1.get_num() * (Dy / d1), k2 = r2.get_num() * (Dy / d2);
@@ -127,8 +127,7 @@ void check_lower_bound(Context& cx, const Scene& sc, const Q& r1, const Q& r2, c
                  3 * prod(ln, ln) + prod(lT, 2 * ln + 2));
         Z3 e1, e2;
         for (int c = 0; c < 3; ++c) e1[c] = Y[v[1]][c] - Y[v[0]][c], e2[c] = Y[v[2]][c] - Y[v[0]][c];
-        const Z3 N = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
-                      e1[0] * e2[1] - e1[1] * e2[0]};
+        const Z3 N = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]};
         const mpz_class off = dotz(N, W[v[0]]);
         cx.claim(sgn(off) > 0, w + " has the origin strictly on its inner side");
         cx.claim(q * off * off >= T * dotz(N, N), w + "'s plane lies at least the depth from the origin");
@@ -170,7 +169,10 @@ std::string claimed_contact(Context& cx, const J& o, const std::string& where) {
 // in the closed range is known, and whether lo or hi is one).
 bool judge_curve(Context& cx, const Rules& R, const J& cl, const Window& W, const std::string& wc,
                  const std::string& wp) {
-    struct Seg { Q x0, y0, x1, y1; std::optional<std::string> label; };
+    struct Seg {
+        Q x0, y0, x1, y1;
+        std::optional<std::string> label;
+    };
     std::vector<Seg> segs;
     std::vector<std::pair<Q, Q>> claimed;  // the claimed switch points
     if (cl.contains("vertices")) {
@@ -232,7 +234,10 @@ bool judge_curve(Context& cx, const Rules& R, const J& cl, const Window& W, cons
         while (lo < hi) {
             const size_t mid = (lo + hi) / 2;
             cx.spend_ops(1, qsize(x) + qsize(f.switches[mid].x));
-            if (f.switches[mid].x > x || (or_at && f.switches[mid].x == x)) hi = mid; else lo = mid + 1;
+            if (f.switches[mid].x > x || (or_at && f.switches[mid].x == x))
+                hi = mid;
+            else
+                lo = mid + 1;
         }
         return lo;
     };
@@ -346,8 +351,7 @@ bool judge(Context& cx, const Scene& sc, const Rules& R, const Judgement& j) {
                      wp + ": a growth distance of 0 has no normal or witness");
             cx.claim(sc.s[0] == sc.s[1], wp + ": a growth distance of 0 needs coinciding seeds");
         } else {
-            cx.claim(sgn(g) > 0 && pr.contains("normal") && pr.contains("witness"),
-                     wp + " has a normal and a witness");
+            cx.claim(sgn(g) > 0 && pr.contains("normal") && pr.contains("witness"), wp + " has a normal and a witness");
             const V3 n = normal(cx, at(pr, "normal"), wp + ".normal");
             mpz_class H[2];
             sc.support(cx, n, H);
@@ -366,8 +370,10 @@ bool judge(Context& cx, const Scene& sc, const Rules& R, const Judgement& j) {
     if (kind == "distance") {
         shape(cx, cl, wc, {"kind", "rho1", "rho2", "value"}, {"closest"});
         const bool closest = cl.contains("closest");
-        if (closest) shape(cx, pr, wp, {"squared", "P1", "P2", "closest"});
-        else shape(cx, pr, wp, {"squared", "P1", "P2"});
+        if (closest)
+            shape(cx, pr, wp, {"squared", "P1", "P2", "closest"});
+        else
+            shape(cx, pr, wp, {"squared", "P1", "P2"});
         const Q r1 = positive(cx, cl, "rho1", wc), r2 = positive(cx, cl, "rho2", wc);
         const Q c = num(cx, at(cl, "value"), wc + ".value");
         const Q E = num(cx, at(pr, "squared"), wp + ".squared");
@@ -378,8 +384,7 @@ bool judge(Context& cx, const Scene& sc, const Rules& R, const Judgement& j) {
         cx.claim(dot(u, u) == E, wp + ".squared is |q − p|² of its closest points");
         if (sgn(E) > 0) {
             cx.claim(reach(cx, sc, 0, u, r1) == dot(u, p), wp + ": no point of P1 lies beyond p along q − p");
-            cx.claim(reach_min(cx, sc, 1, u, r2) == dot(u, q),
-                     wp + ": no point of P2 lies before q along q − p");
+            cx.claim(reach_min(cx, sc, 1, u, r2) == dot(u, q), wp + ": no point of P2 lies before q along q − p");
         }
         bool right = R.close_sq(cx, c, E);
         if (closest) {
@@ -405,8 +410,7 @@ bool judge(Context& cx, const Scene& sc, const Rules& R, const Judgement& j) {
         Q E;
         if (pr.contains("common")) {
             shape(cx, pr, wp, {"squared", "direction", "common"});
-            cx.claim(num(cx, at(pr, "squared"), wp + ".squared") == 0,
-                     wp + ".squared is 0 for a touching pair");
+            cx.claim(num(cx, at(pr, "squared"), wp + ".squared") == 0, wp + ".squared is 0 for a touching pair");
             const V3 n = normal(cx, at(pr, "direction"), wp + ".direction");
             cx.claim(sgn(hM(cx, sc, n, r1, r2)) == 0, wp + ".direction: the plane supports both bodies");
             const J& cm = at(pr, "common");
@@ -422,8 +426,7 @@ bool judge(Context& cx, const Scene& sc, const Rules& R, const Judgement& j) {
             const V3 n = normal(cx, at(pr, "direction"), wp + ".direction");
             const Q g = hM(cx, sc, n, r1, r2);
             cx.spend_ops(4, 2 * qsize(g) + qsize(E) + 2 * vsize(n));
-            cx.claim(sgn(g) > 0 && g * g == E * dot(n, n),
-                     wp + ".direction: the depth along it is sqrt(squared)");
+            cx.claim(sgn(g) > 0 && g * g == E * dot(n, n), wp + ".direction: the depth along it is sqrt(squared)");
             check_lower_bound(cx, sc, r1, r2, E, pr, wp);
         }
         bool right = R.close_sq(cx, c, E);
@@ -437,8 +440,7 @@ bool judge(Context& cx, const Scene& sc, const Rules& R, const Judgement& j) {
         return right;
     }
     if (kind == "curve") return judge_curve(cx, R, cl, curve_window(cx, sc, pr, wp), wc, wp);
-    if (kind == "switch_point")
-        return judge_switch_point(cx, R, cl, curve_window(cx, sc, pr, wp), wc, wp);
+    if (kind == "switch_point") return judge_switch_point(cx, R, cl, curve_window(cx, sc, pr, wp), wc, wp);
     if (kind == "curve_point") {  // a line `curve RHO1 RHO2`: rho2 is f(rho1), exactly (tolerance 0)
         shape(cx, cl, wc, {"kind", "rho1", "rho2"});
         const Q r1 = positive(cx, cl, "rho1", wc), r2 = positive(cx, cl, "rho2", wc);

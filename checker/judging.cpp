@@ -82,8 +82,8 @@ Q reach(Context& cx, const Scene& sc, int i, const V3& n, const Q& rho, const st
 V3 body_point(Context& cx, const Scene& sc, int i, const Q& rho, const J& w, const std::string& where,
               std::vector<int>* used, size_t base, size_t count) {
     const std::array<Q, 3> c = combination(cx, sc, i, w, where, used, base, count);
-    cx.spend_ops(12, vsize(sc.s[i]) + qsize(rho) + std::max({qsize(c[0]), qsize(c[1]), qsize(c[2])}) +
-                         limbs(sc.scan[i]->D()));
+    cx.spend_ops(
+        12, vsize(sc.s[i]) + qsize(rho) + std::max({qsize(c[0]), qsize(c[1]), qsize(c[2])}) + limbs(sc.scan[i]->D()));
     const Q D(sc.scan[i]->D());
     V3 x;
     for (int k = 0; k < 3; ++k) x[k] = sc.s[i][k] + rho * (c[k] / D - sc.s[i][k]);
@@ -138,10 +138,13 @@ void check_no_answer(Context& cx, const Judgement& j) {
     shape(cx, j.proof, j.wp, {"no_answer"});
     cx.claim(at(j.proof, "no_answer").is_string(), j.wp + ".no_answer is a string");
     const std::string f = at(j.proof, "no_answer").get<std::string>();
-    static const std::map<std::string, std::set<std::string>> answers = {
-        {"growth_distance", {"value"}}, {"curve_point", {"rho2"}}, {"switch_point", {"rho1", "rho2"}},
-        {"separating_plane", {"normal", "offset"}}, {"witness_point", {"point"}}, {"distance", {"value", "closest"}},
-        {"penetration_depth", {"value", "direction"}}};
+    static const std::map<std::string, std::set<std::string>> answers = {{"growth_distance", {"value"}},
+                                                                         {"curve_point", {"rho2"}},
+                                                                         {"switch_point", {"rho1", "rho2"}},
+                                                                         {"separating_plane", {"normal", "offset"}},
+                                                                         {"witness_point", {"point"}},
+                                                                         {"distance", {"value", "closest"}},
+                                                                         {"penetration_depth", {"value", "direction"}}};
     const auto k = answers.find(j.kind);
     cx.claim(k != answers.end() && k->second.count(f) == 1,
              j.wp + ".no_answer names a field where a " + j.kind + " claim answers");

@@ -48,7 +48,7 @@ V3 body_point(Context& cx, const Scene& sc, int i, const Q& rho, const J& w, con
 // The two bodies a judgement speaks of, scaled: P1(ρ1) and P2(ρ2), two convex polytopes or two
 // objects made of parts.
 class Bodies {
-public:
+  public:
     virtual ~Bodies() = default;
     // max over body i scaled by rho of n·x (n a nonzero rational vector).
     virtual Q reach(Context& cx, int i, const V3& n, const Q& rho) const = 0;
@@ -116,6 +116,9 @@ bool judge_separating_plane(Context& cx, const Bodies& B, const Judgement& j);
 bool judge_witness_point(Context& cx, const Bodies& B, const Judgement& j);
 // A distance claim's closest points ("closest": [a, b]) and whether both lie in their bodies (the
 // proof's "closest": P1, P2).
-struct Closest { V3 a, b; bool in; };
+struct Closest {
+    V3 a, b;
+    bool in;
+};
 Closest closest_points(Context& cx, const Bodies& B, const Judgement& j, const Q& r1, const Q& r2);
 }  // namespace scalecert_check

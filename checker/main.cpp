@@ -91,16 +91,19 @@ int main(int argc, char** argv) {
                 break;
             }
             text.append(buf, static_cast<size_t>(got));
-            if (text.size() > scalecert_check::kMaxFileBytes) { too_big = true; break; }
+            if (text.size() > scalecert_check::kMaxFileBytes) {
+                too_big = true;
+                break;
+            }
         }
         ::close(fd);
         if (failed) return refuse("cannot read");
         if (too_big) return refuse("larger than 1 GiB");
         std::string message;
         int status = scalecert_check::check_text(text, message);
-        (status == 0 ? std::cout : std::cerr) << (status == 0 ? "" : "scalecert-check: ")
-                                              << (status == 2 ? "error: " + name + ": " + message.substr(7) : message)
-                                              << "\n";
+        (status == 0 ? std::cout : std::cerr)
+            << (status == 0 ? "" : "scalecert-check: ")
+            << (status == 2 ? "error: " + name + ": " + message.substr(7) : message) << "\n";
         return status;
     } catch (const std::bad_alloc&) {
         std::cerr << "scalecert-check: error: " << name << ": out of memory\n";

@@ -14,9 +14,8 @@ Q num(Context& cx, const J& j, const std::string& where) {
         return t.size() > b && t.find_first_not_of("0123456789", b) == std::string::npos &&
                (t.size() == b + 1 || t[b] != '0');
     };
-    bool ok = slash == std::string::npos
-                  ? is_int(s, true)
-                  : is_int(s.substr(0, slash), true) && is_int(s.substr(slash + 1), false);
+    bool ok = slash == std::string::npos ? is_int(s, true)
+                                         : is_int(s.substr(0, slash), true) && is_int(s.substr(slash + 1), false);
     cx.claim(ok, where + " = '" + printable(s) + "' is an integer or p/q");
     Q q(s, 10);
     cx.claim(sgn(q.get_den()) > 0, where + " has a nonzero denominator");
@@ -29,17 +28,26 @@ Q num(Context& cx, const J& j, const std::string& where) {
 double nearest(const Q& q) {
     if (sgn(q) == 0) return 0.0;
     mpz_class n = abs(q.get_num()), d = q.get_den(), m, r, D;
-    long e = static_cast<long>(mpz_sizeinbase(n.get_mpz_t(), 2)) - static_cast<long>(mpz_sizeinbase(d.get_mpz_t(), 2)) -
-             53;
+    long e =
+        static_cast<long>(mpz_sizeinbase(n.get_mpz_t(), 2)) - static_cast<long>(mpz_sizeinbase(d.get_mpz_t(), 2)) - 53;
     for (int it = 0; it < 4; ++it) {
         mpz_class N = n;
         D = d;
         if (e < -1074) e = -1074;
         if (e > 2000) break;  // far beyond the double range: infinity below
-        if (e < 0) N <<= static_cast<unsigned long>(-e); else D <<= static_cast<unsigned long>(e);
+        if (e < 0)
+            N <<= static_cast<unsigned long>(-e);
+        else
+            D <<= static_cast<unsigned long>(e);
         mpz_fdiv_qr(m.get_mpz_t(), r.get_mpz_t(), N.get_mpz_t(), D.get_mpz_t());
-        if (m >= (mpz_class(1) << 53)) { ++e; continue; }
-        if (m < (mpz_class(1) << 52) && e > -1074) { --e; continue; }
+        if (m >= (mpz_class(1) << 53)) {
+            ++e;
+            continue;
+        }
+        if (m < (mpz_class(1) << 52) && e > -1074) {
+            --e;
+            continue;
+        }
         break;
     }
     if (e > 2000) return sgn(q) < 0 ? -HUGE_VAL : HUGE_VAL;

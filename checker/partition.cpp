@@ -28,7 +28,8 @@ std::vector<P2> overlap_region(const Scene& sc, const std::vector<P2>& rect, con
     const Q &x0 = sc.lo[0], &x1 = sc.hi[0], &y0 = sc.lo[1], &y1 = sc.hi[1];
     if (rect.size() < 3) {
         std::vector<P2> over = rect;
-        for (const Line& L : lines) if (!over.empty()) over = clip(over, L, true);
+        for (const Line& L : lines)
+            if (!over.empty()) over = clip(over, L, true);
         return over;
     }
     if (lines.back().at(x1) > y1) return {};  // the rectangle lies below the curve
@@ -42,7 +43,8 @@ std::vector<P2> overlap_region(const Scene& sc, const std::vector<P2>& rect, con
     }
     std::vector<P2> w;
     Q y = lines[k].at(xl);
-    if (y <= y0) w.push_back({xl, y0});  // the curve is at or below lo2 from xl on
+    if (y <= y0)
+        w.push_back({xl, y0});  // the curve is at or below lo2 from xl on
     else {
         w.push_back({xl, y});
         for (;; ++k) {
@@ -171,7 +173,10 @@ void check_partition(Context& cx, const J& c) {
         Q area = 0;
         for (size_t i = 0; i < s.size(); ++i)
             area += s[i][0] * s[(i + 1) % s.size()][1] - s[i][1] * s[(i + 1) % s.size()][0];
-        if (s.size() >= 3 && sgn(area) > 0) { seps.push_back(s); owners.push_back(k); }
+        if (s.size() >= 3 && sgn(area) > 0) {
+            seps.push_back(s);
+            owners.push_back(k);
+        }
     }
     const J& sr = at(reg, "separated");
     cx.claim(sr.is_array() && sr.size() == seps.size(),

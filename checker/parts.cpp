@@ -62,7 +62,7 @@ PairCover::PairCover(Context& cx, size_t m, size_t n) : m_(m), n_(n) {
 }
 
 std::array<std::array<size_t, 2>, 2> PairCover::next(Context& cx, const J& entry, const std::string& w,
-                                                      const char* noun) {
+                                                     const char* noun) {
     const std::array<size_t, 2> ra = part_range(cx, at(entry, "P1_parts"), m_, w + ".P1_parts"),
                                 rb = part_range(cx, at(entry, "P2_parts"), n_, w + ".P2_parts");
     cx.claim(blocks_ == 0 || std::array<size_t, 2>{ra[0], rb[0]} > previous_,
@@ -73,8 +73,8 @@ std::array<std::array<size_t, 2>, 2> PairCover::next(Context& cx, const J& entry
     for (size_t a = ra[0]; a <= ra[1]; ++a)
         for (size_t b = rb[0]; b <= rb[1]; ++b) {
             if (covered_[a * n_ + b])  // (the message only when it fails: a block may cover 10^8 pairs)
-                cx.claim(false, w + " covers the pair (" + std::to_string(a) + ", " + std::to_string(b) +
-                                    ") a second time");
+                cx.claim(false,
+                         w + " covers the pair (" + std::to_string(a) + ", " + std::to_string(b) + ") a second time");
             covered_[a * n_ + b] = true;
             ++count_;
         }

@@ -35,7 +35,7 @@ CompoundScene read_compound_scene(Context& cx, const J& sj);
 // P2 parts b0..b1), listed in increasing (a0, b0) order, that must cover every pair of the
 // m × n exactly once: a bit a pair (10^8 at most), counted.
 class PairCover {
-public:
+  public:
     PairCover(Context& cx, size_t m, size_t n);
     // The block of `entry` (named w; `noun` names an entry in messages): its part ranges, after
     // the block before it, covering no pair a second time.
@@ -43,7 +43,7 @@ public:
     // Every pair covered; `what` begins the message.
     void complete(Context& cx, const std::string& what) const;
 
-private:
+  private:
     size_t m_, n_, count_ = 0, blocks_ = 0;
     std::vector<bool> covered_;
     std::array<size_t, 2> previous_{0, 0};

@@ -20,10 +20,12 @@ std::vector<P2> normalize(const std::vector<P2>& p) {
         return sgn((a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]));
     };
     std::vector<P2> d;
-    for (const P2& v : p) if (d.empty() || d.back() != v) d.push_back(v);
+    for (const P2& v : p)
+        if (d.empty() || d.back() != v) d.push_back(v);
     while (d.size() > 1 && d.front() == d.back()) d.pop_back();
     std::vector<P2> q;
-    if (d.size() <= 2) q = std::move(d);
+    if (d.size() <= 2)
+        q = std::move(d);
     else {
         for (P2& v : d) {
             while (q.size() >= 2 && turn(q[q.size() - 2], q.back(), v) == 0) q.pop_back();
@@ -31,9 +33,12 @@ std::vector<P2> normalize(const std::vector<P2>& p) {
         }
         size_t b = 0;  // the polygon is q[b..]: the wrap-around, last against first and first against last
         while (q.size() - b > 2) {
-            if (q.back() == q[b] || turn(q[q.size() - 2], q.back(), q[b]) == 0) q.pop_back();
-            else if (turn(q.back(), q[b], q[b + 1]) == 0) ++b;
-            else break;
+            if (q.back() == q[b] || turn(q[q.size() - 2], q.back(), q[b]) == 0)
+                q.pop_back();
+            else if (turn(q.back(), q[b], q[b + 1]) == 0)
+                ++b;
+            else
+                break;
         }
         q.erase(q.begin(), q.begin() + static_cast<long>(b));
     }

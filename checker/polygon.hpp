@@ -12,7 +12,10 @@ namespace scalecert_check {
 struct Scene;
 
 // The line ρ2 = a ρ1 + b.
-struct Line { Q a, b; Q at(const Q& x) const { return a * x + b; } };
+struct Line {
+    Q a, b;
+    Q at(const Q& x) const { return a * x + b; }
+};
 
 // A convex polygon given counter-clockwise, whose vertices may repeat or lie inside an edge, in
 // its one written form.

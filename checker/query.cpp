@@ -42,10 +42,9 @@ void check_verdict(Context& cx, const Scene& sc, const Q& r1, const Q& r2, const
         mpz_class H[2];  // D* h1, D* h2
         const std::vector<int>* f[2];
         sc.support(cx, n, H, f);
-        const std::vector<int> &f1 = *f[0], &f2 = *f[1];
+        const std::vector<int>&f1 = *f[0], &f2 = *f[1];
         // D* times n·s1 + rho1 h1 and n·s2 − rho2 h2 (D* > 0 keeps their order)
-        const Q c1 = Q(dotz(ints(n), sc.S[0])) + r1 * Q(H[0]), c2 = Q(dotz(ints(n), sc.S[1])) - r2 * Q(H[1]),
-                D(sc.Dj);
+        const Q c1 = Q(dotz(ints(n), sc.S[0])) + r1 * Q(H[0]), c2 = Q(dotz(ints(n), sc.S[1])) - r2 * Q(H[1]), D(sc.Dj);
         const J& sv = at(pl, "support_vertices");
         shape(cx, sv, "plane.support_vertices", {"P1", "P2"});
         cx.claim(has(f1, static_cast<int>(index(cx, at(sv, "P1"), sc.P[0].size(), "plane.support_vertices.P1"))) &&

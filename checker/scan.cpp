@@ -29,7 +29,10 @@ T scan(size_t n, F value, std::vector<int>& out) {
     for (size_t k = 1; k < n; ++k) {
         const T v = value(k);
         if (__builtin_expect(v >= best, 0)) {
-            if (v > best) { best = v; out.clear(); }
+            if (v > best) {
+                best = v;
+                out.clear();
+            }
             out.push_back(static_cast<int>(k));
         }
     }
@@ -43,7 +46,10 @@ T scan(size_t n, const int* at, F value, std::vector<int>& out) {
         const size_t k = static_cast<size_t>(at[j]);
         const T v = value(k);
         if (out.empty() || v >= best) {
-            if (out.empty() || v > best) { best = v; out.clear(); }
+            if (out.empty() || v > best) {
+                best = v;
+                out.clear();
+            }
             out.push_back(static_cast<int>(k));
         }
     }
@@ -88,8 +94,8 @@ std::vector<int> Scan::argmax(Context& cx, const Z3& u, const std::vector<int>* 
     int ub = 0;
     for (const mpz_class& c : u) ub = std::max(ub, static_cast<int>(mpz_sizeinbase(c.get_mpz_t(), 2)));
     int64_t w[3] = {0, 0, 0};
-    const bool small_u = small_int(u[0].get_mpz_t(), w[0]) && small_int(u[1].get_mpz_t(), w[1]) &&
-                         small_int(u[2].get_mpz_t(), w[2]);
+    const bool small_u =
+        small_int(u[0].get_mpz_t(), w[0]) && small_int(u[1].get_mpz_t(), w[1]) && small_int(u[2].get_mpz_t(), w[2]);
     // The machine-size vertices (at compact positions) and the others.
     std::vector<int> mlist, blist;
     const bool all = !subset;
@@ -124,8 +130,10 @@ std::vector<int> Scan::argmax(Context& cx, const Z3& u, const std::vector<int>* 
             for (int& p : mout) p = orig_[static_cast<size_t>(p)];
         } else {  // a normal past 2^62: GMP integers for these vertices too
             std::vector<int> list;
-            if (all) list = orig_;
-            else for (int p : mlist) list.push_back(orig_[static_cast<size_t>(p)]);
+            if (all)
+                list = orig_;
+            else
+                for (int p : mlist) list.push_back(orig_[static_cast<size_t>(p)]);
             mout = mpz_scan(cx, u, list, mbest);
         }
     }
@@ -145,8 +153,10 @@ std::vector<int> Scan::mpz_scan(Context& cx, const Z3& u, const std::vector<int>
     double units = 40 * static_cast<double>(list.size());
     for (int c = 0; c < 3; ++c) {
         double lx = 0;
-        if (&list == &big_) lx = big_limbs_[c];
-        else for (int k : list) lx += limbs(Z_[static_cast<size_t>(k)][c]);
+        if (&list == &big_)
+            lx = big_limbs_[c];
+        else
+            for (int k : list) lx += limbs(Z_[static_cast<size_t>(k)][c]);
         units += 0.5 * std::max(1.0, limbs(u[c])) * lx;
     }
     cx.spend(units);
@@ -158,7 +168,10 @@ std::vector<int> Scan::mpz_scan(Context& cx, const Z3& u, const std::vector<int>
         mpz_addmul(v.get_mpz_t(), u[1].get_mpz_t(), X[1].get_mpz_t());
         mpz_addmul(v.get_mpz_t(), u[2].get_mpz_t(), X[2].get_mpz_t());
         const int c = out.empty() ? 1 : cmp(v, best);
-        if (c > 0) { mpz_swap(best.get_mpz_t(), v.get_mpz_t()); out.clear(); }
+        if (c > 0) {
+            mpz_swap(best.get_mpz_t(), v.get_mpz_t());
+            out.clear();
+        }
         if (c >= 0) out.push_back(k);
     }
     return out;

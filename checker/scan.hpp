@@ -25,7 +25,7 @@
 
 namespace scalecert_check {
 class Scan {
-public:
+  public:
     // The vertices v of one polytope (`what` names it in messages); refused as unreadable when
     // their common denominator passes 16,384 bits.
     Scan(Context& cx, const std::vector<V3>& v, const std::string& what);
@@ -36,7 +36,7 @@ public:
     const Z3& X(size_t k) const { return Z_[k]; }  // D v_k
     size_t size() const { return n_; }
 
-private:
+  private:
     size_t n_;
     mpz_class D_ = 1;
     std::vector<Z3> Z_;  // X_k = D v_k

@@ -33,7 +33,8 @@ mpz_class Scene::support_at(Context& cx, int i, const Z3& u, int k) const {
 
 Q Scene::h(Context& cx, int i, const V3& n, std::vector<int>* argmax) const {
     Z3 u = ints(n);
-    if (i == 1) for (auto& c : u) c = -c;
+    if (i == 1)
+        for (auto& c : u) c = -c;
     std::vector<int> m = scan[i]->argmax(cx, u);
     Q r(support_at(cx, i, u, m[0]), Dj);
     r.canonicalize();
@@ -56,7 +57,8 @@ const Scene::Support* Scene::support(Context& cx, const V3& n, mpz_class H_out[2
         Support e;
         for (int i = 0; i < 2; ++i) {
             Z3 u = p;
-            if (i == 1) for (auto& c : u) c = -c;
+            if (i == 1)
+                for (auto& c : u) c = -c;
             e.max[i] = scan[i]->argmax(cx, u);
             e.H[i] = support_at(cx, i, u, e.max[i][0]);
         }
@@ -88,10 +90,17 @@ int affine_dim(Context& cx, const Scene& sc, int i, const std::vector<int>& idx)
         cx.spend(30 + 4 * l * l);
         for (int j = 0; j < 3; ++j) v[j] = p[j] - o[j];
         const bool nz = sgn(v[0]) || sgn(v[1]) || sgn(v[2]);
-        if (dim == 0 && nz) { e1 = v; dim = 1; continue; }
+        if (dim == 0 && nz) {
+            e1 = v;
+            dim = 1;
+            continue;
+        }
         if (dim == 1) {
             x = {e1[1] * v[2] - e1[2] * v[1], e1[2] * v[0] - e1[0] * v[2], e1[0] * v[1] - e1[1] * v[0]};
-            if (sgn(x[0]) || sgn(x[1]) || sgn(x[2])) { c = x; dim = 2; }
+            if (sgn(x[0]) || sgn(x[1]) || sgn(x[2])) {
+                c = x;
+                dim = 2;
+            }
             continue;
         }
         if (dim == 2 && sgn(dotz(c, v)) != 0) return 3;
@@ -154,12 +163,12 @@ std::array<Q, 3> combination(Context& cx, const Scene& sc, int i, const J& w, co
         cx.claim(sgn(l) > 0, wk + " weight is > 0");
         // The running sums' denominators can grow with every term (weights over coprime
         // denominators), and each addition costs their size, gcd included: counted first.
-        cx.spend(100 * (limbs(total.get_den()) + limbs(x[0].get_den()) + limbs(x[1].get_den()) +
-                        limbs(x[2].get_den())));
+        cx.spend(100 *
+                 (limbs(total.get_den()) + limbs(x[0].get_den()) + limbs(x[1].get_den()) + limbs(x[2].get_den())));
         total += l;
         const Z3& X = sc.scan[i]->X(idx);
-        cx.spend(100 + 10 * (1 + limbs(l.get_num()) + limbs(l.get_den())) *
-                           (1 + limbs(X[0]) + limbs(X[1]) + limbs(X[2])));
+        cx.spend(100 +
+                 10 * (1 + limbs(l.get_num()) + limbs(l.get_den())) * (1 + limbs(X[0]) + limbs(X[1]) + limbs(X[2])));
         for (int c = 0; c < 3; ++c) x[c] += l * Q(X[c]);
         if (used) used->push_back(static_cast<int>(idx));
     }

@@ -45,16 +45,23 @@ struct Scene {
     // direction: n = g p with p primitive and g > 0 has the maximisers of p and H_i(n) = g H_i(p)
     // (h is positively homogeneous), so a normal repeated, or listed again as a multiple, costs no
     // second scan. Returns the direction's entry (the same pointer for the same direction).
-    struct Support { mpz_class H[2]; std::vector<int> max[2]; };
+    struct Support {
+        mpz_class H[2];
+        std::vector<int> max[2];
+    };
     const Support* support(Context& cx, const V3& n, mpz_class H_out[2],
                            const std::vector<int>* max_out[2] = nullptr) const;
     // q == H / D* (q a number of the file, H over D*).
     bool over(const Q& q, const mpz_class& H) const { return q.get_num() * Dj == q.get_den() * H; }
-    Q value(const mpz_class& H) const { Q r(H, Dj); r.canonicalize(); return r; }  // H / D*, for messages
+    Q value(const mpz_class& H) const {
+        Q r(H, Dj);
+        r.canonicalize();
+        return r;
+    }  // H / D*, for messages
     // The work of one product by vertex k's integers and D*'s (a place on a line, a support value).
     void spend_at(Context& cx, int i, int k) const;
 
-private:
+  private:
     mutable std::map<std::string, Support> cache_;
 };
 

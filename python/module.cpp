@@ -24,7 +24,8 @@ namespace {
 // and exact answers have more.
 py::object pyint(const mpz_class& z) {
     if (z.fits_slong_p()) return py::int_(z.get_si());
-    static const py::object* from_bytes = new py::object(py::reinterpret_borrow<py::object>(reinterpret_cast<PyObject*>(&PyLong_Type)).attr("from_bytes"));
+    static const py::object* from_bytes = new py::object(
+        py::reinterpret_borrow<py::object>(reinterpret_cast<PyObject*>(&PyLong_Type)).attr("from_bytes"));
     std::string buf((mpz_sizeinbase(z.get_mpz_t(), 2) + 7) / 8, '\0');
     size_t count = 0;
     mpz_export(buf.data(), &count, -1, 1, 0, 0, z.get_mpz_t());  // |z|, least significant byte first
@@ -51,8 +52,8 @@ mpz_class mpz_of(const py::handle& h) {
     }
     const size_t bits = i.attr("bit_length")().cast<size_t>();
     if (bits > kMaxIntBits)
-        throw scalecert::InputError("an integer of " + std::to_string(bits) + " bits, more than " + std::to_string(kMaxIntBits) +
-                                    " (the limit for one number, as for text)");
+        throw scalecert::InputError("an integer of " + std::to_string(bits) + " bits, more than " +
+                                    std::to_string(kMaxIntBits) + " (the limit for one number, as for text)");
     const bool negative = overflow < 0;
     py::object a = py::reinterpret_steal<py::object>(PyNumber_Absolute(i.ptr()));
     if (!a) throw py::error_already_set();
@@ -68,7 +69,9 @@ py::object fraction(const Rational& q) {
     return (*F)(pyint(q.get_num()), pyint(q.get_den()));
 }
 
-py::tuple fractions(const scalecert::Point& p) { return py::make_tuple(fraction(p[0]), fraction(p[1]), fraction(p[2])); }
+py::tuple fractions(const scalecert::Point& p) {
+    return py::make_tuple(fraction(p[0]), fraction(p[1]), fraction(p[2]));
+}
 
 // int, fractions.Fraction, decimal.Decimal, numpy integers and floats, decimal strings ("0.1" is
 // 1/10, "3/7"), and floats at their exact binary value.
@@ -99,11 +102,14 @@ std::string utf8(const py::handle& h, const std::string& what) {
 
 // Whether a Python error raised while reading an argument is the argument's fault (any Exception
 // but MemoryError): then InputError; KeyboardInterrupt, SystemExit and MemoryError go on.
-bool argument_error(const py::error_already_set& e) { return e.matches(PyExc_Exception) && !e.matches(PyExc_MemoryError); }
+bool argument_error(const py::error_already_set& e) {
+    return e.matches(PyExc_Exception) && !e.matches(PyExc_MemoryError);
+}
 
 // A float, Python's or numpy's (any float dtype).
 bool is_float(const py::handle& h) {
-    return py::isinstance<py::float_>(h) || (has_attr(h, "dtype") && py::str(h.attr("dtype").attr("kind")).cast<std::string>() == "f");
+    return py::isinstance<py::float_>(h) ||
+           (has_attr(h, "dtype") && py::str(h.attr("dtype").attr("kind")).cast<std::string>() == "f");
 }
 
 Rational rational(const py::handle& h, const char* what) {
@@ -124,7 +130,8 @@ Rational rational(const py::handle& h, const char* what) {
             q.canonicalize();
             return q;
         }
-        if (py::isinstance(h, py::module_::import("decimal").attr("Decimal"))) return scalecert::parse_rational(py::str(h).cast<std::string>());
+        if (py::isinstance(h, py::module_::import("decimal").attr("Decimal")))
+            return scalecert::parse_rational(py::str(h).cast<std::string>());
     } catch (const scalecert::InputError& e) {
         throw scalecert::InputError(std::string(what) + ": " + e.what());
     } catch (const py::error_already_set& e) {
@@ -136,11 +143,14 @@ Rational rational(const py::handle& h, const char* what) {
 }
 
 // A float (Python's or numpy's) that is NaN or infinite: a program's output that is no answer.
-bool non_finite(const py::handle& h) { return is_float(h) && !std::isfinite(py::float_(h.cast<py::object>()).cast<double>()); }
+bool non_finite(const py::handle& h) {
+    return is_float(h) && !std::isfinite(py::float_(h.cast<py::object>()).cast<double>());
+}
 
 py::list as_list(const py::handle& h, const std::string& what) {
     if (py::hasattr(h, "tolist")) return h.attr("tolist")();  // numpy arrays
-    if (py::isinstance<py::str>(h) || !py::isinstance<py::sequence>(h)) throw scalecert::InputError(what + ": expected a list");
+    if (py::isinstance<py::str>(h) || !py::isinstance<py::sequence>(h))
+        throw scalecert::InputError(what + ": expected a list");
     return py::list(py::reinterpret_borrow<py::object>(h));
 }
 
@@ -181,15 +191,18 @@ std::string path_arg(const py::handle& h, const char* what) {
             if (!argument_error(e)) throw;
         }
         if (!p || !py::isinstance<py::str>(p))
-            throw scalecert::InputError(std::string(what) + ": expected a path (a str or os.PathLike), not " + type_name(h));
+            throw scalecert::InputError(std::string(what) + ": expected a path (a str or os.PathLike), not " +
+                                        type_name(h));
         path = utf8(p, what);
     }
     // (The C++ side would read the name up to the NUL: another file than the one named.)
-    if (path.find('\0') != std::string::npos) throw scalecert::InputError(std::string(what) + ": a path with a NUL byte");
+    if (path.find('\0') != std::string::npos)
+        throw scalecert::InputError(std::string(what) + ": a path with a NUL byte");
     return path;
 }
 std::string text_arg(const py::handle& h, const char* what) {
-    if (!py::isinstance<py::str>(h)) throw scalecert::InputError(std::string(what) + ": expected a str, not " + type_name(h));
+    if (!py::isinstance<py::str>(h))
+        throw scalecert::InputError(std::string(what) + ": expected a str, not " + type_name(h));
     return utf8(h, what);
 }
 bool flag_arg(const py::handle& h, const char* what) {
@@ -198,7 +211,8 @@ bool flag_arg(const py::handle& h, const char* what) {
 }
 // A whole number (an int or anything with __index__, not a bool) in [lo, hi]; `range` words the
 // bounds for the message.
-mpz_class whole_arg(const py::handle& h, const char* what, const mpz_class& lo, const mpz_class& hi, const std::string& range) {
+mpz_class whole_arg(const py::handle& h, const char* what, const mpz_class& lo, const mpz_class& hi,
+                    const std::string& range) {
     const scalecert::InputError bad(std::string(what) + ": expected an int from " + range);
     if (py::isinstance<py::bool_>(h) || !has_attr(h, "__index__")) throw bad;
     mpz_class z;
@@ -284,10 +298,13 @@ std::string claims_text(const py::handle& c) {
     py::cpp_function exact([Fraction, Decimal](const py::handle& o) -> py::object {
         if (py::isinstance(o, Fraction) || py::isinstance(o, Decimal)) return py::str(Fraction(o));
         if (has_attr(o, "tolist")) return o.attr("tolist")();
-        throw scalecert::InputError("claims: " + py::repr(o).cast<std::string>() + " is not a number, string, list or dict");
+        throw scalecert::InputError("claims: " + py::repr(o).cast<std::string>() +
+                                    " is not a number, string, list or dict");
     });
     try {
-        return utf8(py::module_::import("json").attr("dumps")(doc, py::arg("default") = exact, py::arg("allow_nan") = true), "claims");
+        return utf8(
+            py::module_::import("json").attr("dumps")(doc, py::arg("default") = exact, py::arg("allow_nan") = true),
+            "claims");
     } catch (const py::error_already_set& e) {
         if (!argument_error(e)) throw;
         const std::string what = utf8(py::str(e.value()), "claims");
@@ -329,9 +346,12 @@ std::array<std::optional<scalecert::Point>, 2> seeds_of(const py::handle& seeds)
     return s;
 }
 
-PyScene make_scene(const py::handle& p1, const py::handle& p2, const py::handle& i1, const py::handle& i2, const py::handle& seeds) {
+PyScene make_scene(const py::handle& p1, const py::handle& p2, const py::handle& i1, const py::handle& i2,
+                   const py::handle& seeds) {
     const auto s = seeds_of(seeds);
-    return PyScene{scalecert::Scene(points(p1, "P1"), points(p2, "P2"), interval(i1, "I1"), interval(i2, "I2"), s[0], s[1]), nullptr};
+    return PyScene{
+        scalecert::Scene(points(p1, "P1"), points(p2, "P2"), interval(i1, "I1"), interval(i2, "I2"), s[0], s[1]),
+        nullptr};
 }
 
 py::dict curve_dict(const scalecert::Curve& c) {
@@ -364,10 +384,12 @@ using namespace pybind11::literals;
 
 // Scene.certify and Region.certify: claims of one kind from arrays, judged by the typed API
 // (Analysis::certify, Region::certify).
-using CertifyFn = std::function<scalecert::Judgements(const std::vector<scalecert::Claim>&, const scalecert::ClaimOptions&)>;
-py::dict certify_arrays(const CertifyFn& certify, const std::string& kind, const py::handle& rho1, const py::handle& rho2,
-                        const py::handle& value, const py::handle& closest, const py::handle& direction, const py::handle& normal,
-                        const py::handle& offset, const py::handle& point_, const py::handle& verdict, const py::handle& tolerance,
+using CertifyFn =
+    std::function<scalecert::Judgements(const std::vector<scalecert::Claim>&, const scalecert::ClaimOptions&)>;
+py::dict certify_arrays(const CertifyFn& certify, const std::string& kind, const py::handle& rho1,
+                        const py::handle& rho2, const py::handle& value, const py::handle& closest,
+                        const py::handle& direction, const py::handle& normal, const py::handle& offset,
+                        const py::handle& point_, const py::handle& verdict, const py::handle& tolerance,
                         bool certificate, bool fractions) {
     using scalecert::ClaimKind;
     static const std::map<std::string, ClaimKind> kinds = {{"distance", ClaimKind::Distance},
@@ -377,33 +399,40 @@ py::dict certify_arrays(const CertifyFn& certify, const std::string& kind, const
                                                            {"witness_point", ClaimKind::WitnessPoint}};
     const auto k = kinds.find(kind);
     if (k == kinds.end())
-        throw scalecert::InputError("certify: unknown kind '" + kind + "' (distance, penetration_depth, verdict, separating_plane, witness_point)");
+        throw scalecert::InputError("certify: unknown kind '" + kind +
+                                    "' (distance, penetration_depth, verdict, separating_plane, witness_point)");
     const py::list r1 = as_list(rho1, "rho1"), r2 = as_list(rho2, "rho2");
     const size_t n = r1.size();
     // An array argument with one row per claim, or none.
     auto rows = [&](const py::handle& h, const char* what, bool needed) -> std::optional<py::list> {
         if (h.is_none()) {
-            if (needed) throw scalecert::InputError(std::string("certify: ") + what + " is required for kind '" + kind + "'");
+            if (needed)
+                throw scalecert::InputError(std::string("certify: ") + what + " is required for kind '" + kind + "'");
             return std::nullopt;
         }
         py::list l = as_list(h, what);
         if (l.size() != n)
-            throw scalecert::InputError(std::string("certify: ") + what + " has " + std::to_string(l.size()) + " rows, rho1 has " + std::to_string(n));
+            throw scalecert::InputError(std::string("certify: ") + what + " has " + std::to_string(l.size()) +
+                                        " rows, rho1 has " + std::to_string(n));
         return l;
     };
-    if (r2.size() != n) throw scalecert::InputError("certify: rho2 has " + std::to_string(r2.size()) + " rows, rho1 has " + std::to_string(n));
+    if (r2.size() != n)
+        throw scalecert::InputError("certify: rho2 has " + std::to_string(r2.size()) + " rows, rho1 has " +
+                                    std::to_string(n));
     const ClaimKind ck = k->second;
     const bool measure = ck == ClaimKind::Distance || ck == ClaimKind::PenetrationDepth;
     const auto values = rows(value, "value", measure);
-    const auto cl = rows(closest, "closest", false), dir = rows(direction, "direction", false), nor = rows(normal, "normal", ck == ClaimKind::SeparatingPlane),
-               off = rows(offset, "offset", false), pts = rows(point_, "point", ck == ClaimKind::WitnessPoint);
+    const auto cl = rows(closest, "closest", false), dir = rows(direction, "direction", false),
+               nor = rows(normal, "normal", ck == ClaimKind::SeparatingPlane), off = rows(offset, "offset", false),
+               pts = rows(point_, "point", ck == ClaimKind::WitnessPoint);
     std::optional<py::list> verdicts;
     if (ck == ClaimKind::Verdict) {
         if (verdict.is_none()) throw scalecert::InputError("certify: verdict is required for kind 'verdict'");
         verdicts = py::isinstance<py::str>(verdict) ? py::list() : rows(verdict, "verdict", true);
     }
-    if ((cl && ck != ClaimKind::Distance) || (dir && ck != ClaimKind::PenetrationDepth) || (nor && ck != ClaimKind::SeparatingPlane) ||
-        (off && ck != ClaimKind::SeparatingPlane) || (pts && ck != ClaimKind::WitnessPoint) || (values && !measure))
+    if ((cl && ck != ClaimKind::Distance) || (dir && ck != ClaimKind::PenetrationDepth) ||
+        (nor && ck != ClaimKind::SeparatingPlane) || (off && ck != ClaimKind::SeparatingPlane) ||
+        (pts && ck != ClaimKind::WitnessPoint) || (values && !measure))
         throw scalecert::InputError("certify: an argument that kind '" + kind + "' does not use");
     std::vector<scalecert::Claim> claims(n);
     for (size_t i = 0; i < n; ++i) {
@@ -442,11 +471,17 @@ py::dict certify_arrays(const CertifyFn& certify, const std::string& kind, const
         if (pts) answer_point((*pts)[i], "point", "point" + at, c.point);
         if (verdicts) {
             const std::string v = utf8(py::str(verdicts->empty() ? verdict : (*verdicts)[i]), "certify: verdict" + at);
-            if (v == "separated") c.verdict = scalecert::ClaimedVerdict::Separated;
-            else if (v == "touching") c.verdict = scalecert::ClaimedVerdict::Touching;
-            else if (v == "overlapping") c.verdict = scalecert::ClaimedVerdict::Overlapping;
-            else if (v == "intersecting") c.verdict = scalecert::ClaimedVerdict::Intersecting;
-            else throw scalecert::InputError("certify: verdict" + at + ": '" + v + "' (separated, touching, overlapping, intersecting)");
+            if (v == "separated")
+                c.verdict = scalecert::ClaimedVerdict::Separated;
+            else if (v == "touching")
+                c.verdict = scalecert::ClaimedVerdict::Touching;
+            else if (v == "overlapping")
+                c.verdict = scalecert::ClaimedVerdict::Overlapping;
+            else if (v == "intersecting")
+                c.verdict = scalecert::ClaimedVerdict::Intersecting;
+            else
+                throw scalecert::InputError("certify: verdict" + at + ": '" + v +
+                                            "' (separated, touching, overlapping, intersecting)");
         }
     }
     scalecert::ClaimOptions opt;
@@ -469,8 +504,10 @@ py::dict certify_arrays(const CertifyFn& certify, const std::string& kind, const
         cr.append(g.closest_right.value_or(false));
         dr.append(g.direction_right.value_or(false));
         if (fractions) sq.append(g.exact_squared ? fraction(*g.exact_squared) : py::object(py::none()));
-        if (g.exact_verdict) ev.append(*g.exact_verdict == scalecert::Verdict::Separated ? "separated"
-                                       : *g.exact_verdict == scalecert::Verdict::Touching ? "touching" : "overlapping");
+        if (g.exact_verdict)
+            ev.append(*g.exact_verdict == scalecert::Verdict::Separated  ? "separated"
+                      : *g.exact_verdict == scalecert::Verdict::Touching ? "touching"
+                                                                         : "overlapping");
     }
     py::dict d;
     d["right"] = np.attr("array")(right, "dtype"_a = "bool");
@@ -506,8 +543,9 @@ DoubleArray doubles_of(const py::handle& h, const char* what) {
             py::object Fraction = py::module_::import("fractions").attr("Fraction");
             for (size_t i = 0; i < orig.size(); ++i)
                 if (!py::isinstance<py::float_>(orig[i]) && !Fraction(orig[i]).equal(Fraction(as_f[i])))
-                    throw scalecert::InputError(std::string("classify: ") + what + "[" + std::to_string(i) + "]: " +
-                                                py::repr(orig[i]).cast<std::string>().substr(0, 40) + " is not a double (classify takes doubles)");
+                    throw scalecert::InputError(std::string("classify: ") + what + "[" + std::to_string(i) +
+                                                "]: " + py::repr(orig[i]).cast<std::string>().substr(0, 40) +
+                                                " is not a double (classify takes doubles)");
             a = f;
             kind = "f";
         } catch (const py::error_already_set& e) {
@@ -515,15 +553,18 @@ DoubleArray doubles_of(const py::handle& h, const char* what) {
         }
     }
     if (kind != "f" && kind != "i" && kind != "u")
-        throw scalecert::InputError(std::string("classify: ") + what + ": expected real numbers (an array or list of floats or ints)");
+        throw scalecert::InputError(std::string("classify: ") + what +
+                                    ": expected real numbers (an array or list of floats or ints)");
     if (kind != "f") {  // integers: each must be a double exactly (beyond 2^53 not every one is)
         py::object f = np.attr("asarray")(a, py::arg("dtype") = np.attr("float64"));
         py::object back = f.attr("astype")(a.attr("dtype"));
-        py::object bad = np.attr("flatnonzero")(np.attr("logical_or")(np.attr("not_equal")(back, a), np.attr("greater_equal")(np.attr("abs")(f), 9.2e18)));
+        py::object bad = np.attr("flatnonzero")(
+            np.attr("logical_or")(np.attr("not_equal")(back, a), np.attr("greater_equal")(np.attr("abs")(f), 9.2e18)));
         if (py::len(bad) > 0) {
             const size_t i = py::cast<size_t>(bad[py::int_(0)]);
-            throw scalecert::InputError(std::string("classify: ") + what + "[" + std::to_string(i) + "]: " +
-                                        py::repr(a.attr("ravel")()[py::int_(i)]).cast<std::string>() + " is not a double (classify takes doubles)");
+            throw scalecert::InputError(std::string("classify: ") + what + "[" + std::to_string(i) +
+                                        "]: " + py::repr(a.attr("ravel")()[py::int_(i)]).cast<std::string>() +
+                                        " is not a double (classify takes doubles)");
         }
         a = f;
     }
@@ -556,166 +597,242 @@ PYBIND11_MODULE(scalecert, m) {
         .value("Overlapping", scalecert::Verdict::Overlapping);
 
     py::class_<scalecert::Region>(m, "Region")
-        .def(py::init([](const py::handle& p1, const py::handle& p2, const py::handle& i1, const py::handle& i2, const py::handle& seeds) {
+        .def(py::init([](const py::handle& p1, const py::handle& p2, const py::handle& i1, const py::handle& i2,
+                         const py::handle& seeds) {
                  std::vector<std::vector<scalecert::Point>> parts[2];
                  const char* names[2] = {"P1", "P2"};
                  const py::handle ps[2] = {p1, p2};
                  for (int i = 0; i < 2; ++i) {
                      py::list l = as_list(ps[i], names[i]);
-                     for (size_t k = 0; k < l.size(); ++k) parts[i].push_back(points(l[k], std::string(names[i]) + "[" + std::to_string(k) + "]"));
+                     for (size_t k = 0; k < l.size(); ++k)
+                         parts[i].push_back(points(l[k], std::string(names[i]) + "[" + std::to_string(k) + "]"));
                  }
                  const auto s = seeds_of(seeds);
-                 return scalecert::Region(std::move(parts[0]), std::move(parts[1]), interval(i1, "I1"), interval(i2, "I2"), s[0], s[1]);
+                 return scalecert::Region(std::move(parts[0]), std::move(parts[1]), interval(i1, "I1"),
+                                          interval(i2, "I2"), s[0], s[1]);
              }),
              py::arg("P1"), py::arg("P2"), py::arg("I1"), py::arg("I2"), py::arg("seeds") = py::none(),
              "Objects made of convex parts: P1, P2 lists of parts, each a list of vertices (numbers as for Scene); "
              "I1, I2 = (lo, hi); seeds = (s1, s2), either may be None: the mean of all that object's vertices.")
-        .def_static("load", [](const py::handle& path) { return scalecert::Region::load(path_arg(path, "path")); }, py::arg("path"), "a scene file (JSON) whose objects may hold \"parts\"")
-        .def_static("from_meshes", [](const py::handle& p1, const py::handle& p2, const py::handle& i1, const py::handle& i2,
-                                      const py::handle& groups) {
-                        return scalecert::Region::from_meshes(path_arg(p1, "p1"), path_arg(p2, "p2"), interval(i1, "I1"), interval(i2, "I2"),
-                                                              flag_arg(groups, "parts_from_groups"));
-                    }, py::arg("p1"), py::arg("p2"), py::arg("I1"), py::arg("I2"), py::arg("parts_from_groups") = true,
-                    "mesh files (.off .obj .ply .stl); with parts_from_groups (the default) each OBJ file's groups with faces "
-                    "are its convex parts, else each mesh is one convex part")
-        .def("verdict", [](const scalecert::Region& r, const py::handle& r1, const py::handle& r2) {
-                 return r.verdict(rational(r1, "rho1"), rational(r2, "rho2"));
-             }, py::arg("rho1"), py::arg("rho2"), "the exact verdict at (rho1, rho2) in I1 x I2")
-        .def("classify", [](const scalecert::Region& r, const py::handle& r1, const py::handle& r2) {
-                 return classify_array(r1, r2, [&r](const std::vector<double>& a, const std::vector<double>& b) { return r.classify(a, b, 0); });
-             }, py::arg("rho1"), py::arg("rho2"),
-             "exact verdicts at the doubles' exact values in I1 x I2, on all cores: an int8 array of Verdict values")
-        .def("region", [](const scalecert::Region& r) { return json_loads(r.region_json()); },
-             "what scalecert region writes, as a dict: pair polygons, their union, the labelled boundary, switch points, growth set")
-        .def("partition", [](const scalecert::Region& r) { return json_loads(r.partition_json()); },
-             "the certified partition (kind compound_partition) as a dict")
+        .def_static(
+            "load", [](const py::handle& path) { return scalecert::Region::load(path_arg(path, "path")); },
+            py::arg("path"), "a scene file (JSON) whose objects may hold \"parts\"")
+        .def_static(
+            "from_meshes",
+            [](const py::handle& p1, const py::handle& p2, const py::handle& i1, const py::handle& i2,
+               const py::handle& groups) {
+                return scalecert::Region::from_meshes(path_arg(p1, "p1"), path_arg(p2, "p2"), interval(i1, "I1"),
+                                                      interval(i2, "I2"), flag_arg(groups, "parts_from_groups"));
+            },
+            py::arg("p1"), py::arg("p2"), py::arg("I1"), py::arg("I2"), py::arg("parts_from_groups") = true,
+            "mesh files (.off .obj .ply .stl); with parts_from_groups (the default) each OBJ file's groups with faces "
+            "are its convex parts, else each mesh is one convex part")
+        .def(
+            "verdict",
+            [](const scalecert::Region& r, const py::handle& r1, const py::handle& r2) {
+                return r.verdict(rational(r1, "rho1"), rational(r2, "rho2"));
+            },
+            py::arg("rho1"), py::arg("rho2"), "the exact verdict at (rho1, rho2) in I1 x I2")
+        .def(
+            "classify",
+            [](const scalecert::Region& r, const py::handle& r1, const py::handle& r2) {
+                return classify_array(r1, r2, [&r](const std::vector<double>& a, const std::vector<double>& b) {
+                    return r.classify(a, b, 0);
+                });
+            },
+            py::arg("rho1"), py::arg("rho2"),
+            "exact verdicts at the doubles' exact values in I1 x I2, on all cores: an int8 array of Verdict values")
+        .def(
+            "region", [](const scalecert::Region& r) { return json_loads(r.region_json()); },
+            "what scalecert region writes, as a dict: pair polygons, their union, the labelled boundary, switch "
+            "points, growth set")
+        .def(
+            "partition", [](const scalecert::Region& r) { return json_loads(r.partition_json()); },
+            "the certified partition (kind compound_partition) as a dict")
         .def("partition_json", &scalecert::Region::partition_json, "the certificate's text, for scalecert-check")
-        .def("certify_fp", [](const scalecert::Region& r, const py::handle& claims, const py::handle& exact_decimals, const py::handle& tolerance,
-                              const py::handle& certificate) -> py::object {
-                 scalecert::ClaimOptions opt;
-                 opt.exact_decimals = flag_arg(exact_decimals, "exact_decimals");
-                 opt.tolerance = rational(tolerance, "tolerance");
-                 opt.certificate = flag_arg(certificate, "certificate");
-                 scalecert::ClaimReport rep = r.certify_fp(claims_text(claims), opt);
-                 if (!opt.certificate) return json_loads(rep.report);
-                 return py::make_tuple(json_loads(rep.report), rep.certificate);
-             }, py::arg("claims"), py::arg("exact_decimals") = false, py::arg("tolerance") = 0, py::arg("certificate") = false,
-             "marks claims on the compounds right or wrong, as Scene.certify_fp does: verdict, separating_plane, "
-             "witness_point and distance claims (the least over the part pairs) at any rho1, rho2 > 0, or 'RHO1 RHO2 "
-             "VERDICT' lines; with certificate=True, (the report, the compound_judgements certificate's text)")
-        .def("certify", [](const scalecert::Region& r, const py::handle& kind, const py::handle& rho1, const py::handle& rho2,
-                           const py::handle& value, const py::handle& closest, const py::handle& normal, const py::handle& offset,
-                           const py::handle& point_, const py::handle& verdict, const py::handle& tolerance,
-                           const py::handle& certificate, const py::handle& fractions) {
-                 return certify_arrays([&r](const auto& c, const auto& o) { return r.certify(c, o); }, text_arg(kind, "kind"), rho1,
-                                       rho2, value, closest, py::none(), normal, offset, point_, verdict, tolerance,
-                                       flag_arg(certificate, "certificate"), flag_arg(fractions, "fractions"));
-             }, py::arg("kind"), py::arg("rho1"), py::arg("rho2"), py::arg("value") = py::none(), py::arg("closest") = py::none(),
-             py::arg("normal") = py::none(), py::arg("offset") = py::none(), py::arg("point") = py::none(),
-             py::arg("verdict") = py::none(), py::arg("tolerance") = 0, py::arg("certificate") = false,
-             py::arg("fractions") = false,
-             "claims of one kind over arrays, as Scene.certify takes them: 'distance' (the least over the part pairs), "
-             "'verdict', 'separating_plane' or 'witness_point' (a penetration depth is a claim on two convex objects); "
-             "with certificate=True the compound_judgements certificate's text");
+        .def(
+            "certify_fp",
+            [](const scalecert::Region& r, const py::handle& claims, const py::handle& exact_decimals,
+               const py::handle& tolerance, const py::handle& certificate) -> py::object {
+                scalecert::ClaimOptions opt;
+                opt.exact_decimals = flag_arg(exact_decimals, "exact_decimals");
+                opt.tolerance = rational(tolerance, "tolerance");
+                opt.certificate = flag_arg(certificate, "certificate");
+                scalecert::ClaimReport rep = r.certify_fp(claims_text(claims), opt);
+                if (!opt.certificate) return json_loads(rep.report);
+                return py::make_tuple(json_loads(rep.report), rep.certificate);
+            },
+            py::arg("claims"), py::arg("exact_decimals") = false, py::arg("tolerance") = 0,
+            py::arg("certificate") = false,
+            "marks claims on the compounds right or wrong, as Scene.certify_fp does: verdict, separating_plane, "
+            "witness_point and distance claims (the least over the part pairs) at any rho1, rho2 > 0, or 'RHO1 RHO2 "
+            "VERDICT' lines; with certificate=True, (the report, the compound_judgements certificate's text)")
+        .def(
+            "certify",
+            [](const scalecert::Region& r, const py::handle& kind, const py::handle& rho1, const py::handle& rho2,
+               const py::handle& value, const py::handle& closest, const py::handle& normal, const py::handle& offset,
+               const py::handle& point_, const py::handle& verdict, const py::handle& tolerance,
+               const py::handle& certificate, const py::handle& fractions) {
+                return certify_arrays([&r](const auto& c, const auto& o) { return r.certify(c, o); },
+                                      text_arg(kind, "kind"), rho1, rho2, value, closest, py::none(), normal, offset,
+                                      point_, verdict, tolerance, flag_arg(certificate, "certificate"),
+                                      flag_arg(fractions, "fractions"));
+            },
+            py::arg("kind"), py::arg("rho1"), py::arg("rho2"), py::arg("value") = py::none(),
+            py::arg("closest") = py::none(), py::arg("normal") = py::none(), py::arg("offset") = py::none(),
+            py::arg("point") = py::none(), py::arg("verdict") = py::none(), py::arg("tolerance") = 0,
+            py::arg("certificate") = false, py::arg("fractions") = false,
+            "claims of one kind over arrays, as Scene.certify takes them: 'distance' (the least over the part pairs), "
+            "'verdict', 'separating_plane' or 'witness_point' (a penetration depth is a claim on two convex objects); "
+            "with certificate=True the compound_judgements certificate's text");
 
     py::class_<PyScene>(m, "Scene")
-        .def(py::init([](const py::handle& p1, const py::handle& p2, const py::handle& i1, const py::handle& i2, const py::handle& seeds) {
-                 return make_scene(p1, p2, i1, i2, seeds);
-             }),
+        .def(py::init([](const py::handle& p1, const py::handle& p2, const py::handle& i1, const py::handle& i2,
+                         const py::handle& seeds) { return make_scene(p1, p2, i1, i2, seeds); }),
              py::arg("P1"), py::arg("P2"), py::arg("I1"), py::arg("I2"), py::arg("seeds") = py::none(),
              "Vertices as lists or numpy arrays of ints, Fractions, Decimals, decimal strings or floats "
              "(a float is taken at its exact value); I1, I2 = (lo, hi); seeds = (s1, s2), default the means.")
-        .def_static("load", [](const py::handle& path) { return PyScene{scalecert::Scene::load(path_arg(path, "path")), nullptr}; },
-                    py::arg("path"), "a scene file (JSON)")
-        .def_static("from_meshes", [](const py::handle& p1, const py::handle& p2, const py::handle& i1, const py::handle& i2) {
-                        return PyScene{scalecert::Scene::from_meshes(path_arg(p1, "p1"), path_arg(p2, "p2"), interval(i1, "I1"), interval(i2, "I2")), nullptr};
-                    }, py::arg("p1"), py::arg("p2"), py::arg("I1"), py::arg("I2"), "mesh files: .off .obj .ply .stl")
-        .def("seeds", [](const PyScene& s) { return py::make_tuple(fractions(s.scene.seed(0)), fractions(s.scene.seed(1))); })
-        .def("json", [](const PyScene& s) { return s.scene.json(); }, "the scene file text, every number exact")
-        .def("curve", [](const PyScene& s) { return curve_dict(s.a().curve()); },
-             "pieces (rho1 range, slope, intercept, normal, contact, features), switch points, growth distance")
-        .def("query", [](const PyScene& s, const py::handle& r1, const py::handle& r2) {
-                 const Rational a = rational(r1, "rho1"), b = rational(r2, "rho2");
-                 const scalecert::QueryResult q = s.a().query(a, b);
-                 py::dict d;
-                 d["verdict"] = q.verdict;
-                 if (q.plane) {
-                     py::dict p;
-                     p["normal"] = fractions(q.plane->normal);
-                     p["c1"] = fraction(q.plane->c1);
-                     p["c2"] = fraction(q.plane->c2);
-                     p["offset"] = fraction(q.plane->offset);
-                     d["plane"] = p;
-                 } else {
-                     d["plane"] = py::none();
-                 }
-                 if (q.common) d["common_point"] = py::dict(py::arg("rho1") = fraction(q.common->rho1), py::arg("rho2") = fraction(q.common->rho2), py::arg("point") = fractions(q.common->point));
-                 else d["common_point"] = py::none();
-                 d["certificate"] = json_loads(s.a().query_json(a, b));
-                 return d;
-             }, py::arg("rho1"), py::arg("rho2"), "the exact verdict at (rho1, rho2) > 0, with its certificate")
-        .def("classify", [](const PyScene& s, const py::handle& r1, const py::handle& r2) {
-                 const scalecert::Analysis& an = s.a();
-                 return classify_array(r1, r2, [&an](const std::vector<double>& a, const std::vector<double>& b) { return an.classify(a, b, 0); });
-             }, py::arg("rho1"), py::arg("rho2"),
-             "exact verdicts at the doubles' exact values, on all cores: an int8 array of Verdict values")
-        .def("check_plane", [](const PyScene& s, const py::handle& r1, const py::handle& r2, const py::handle& n, const py::handle& offset) {
-                 std::optional<Rational> off;
-                 if (!offset.is_none()) off = rational(offset, "offset");
-                 const scalecert::PlaneCheck c = s.a().check_plane(rational(r1, "rho1"), rational(r2, "rho2"), point(n, "normal"), off);
-                 return py::dict(py::arg("separates") = c.separates, py::arg("c1") = fraction(c.c1), py::arg("c2") = fraction(c.c2));
-             }, py::arg("rho1"), py::arg("rho2"), py::arg("normal"), py::arg("offset") = py::none(),
-             "does the plane normal.x = offset (or some plane of that normal) separate P1(rho1) and P2(rho2)?")
+        .def_static(
+            "load",
+            [](const py::handle& path) {
+                return PyScene{scalecert::Scene::load(path_arg(path, "path")), nullptr};
+            },
+            py::arg("path"), "a scene file (JSON)")
+        .def_static(
+            "from_meshes",
+            [](const py::handle& p1, const py::handle& p2, const py::handle& i1, const py::handle& i2) {
+                return PyScene{scalecert::Scene::from_meshes(path_arg(p1, "p1"), path_arg(p2, "p2"), interval(i1, "I1"),
+                                                             interval(i2, "I2")),
+                               nullptr};
+            },
+            py::arg("p1"), py::arg("p2"), py::arg("I1"), py::arg("I2"), "mesh files: .off .obj .ply .stl")
+        .def("seeds",
+             [](const PyScene& s) { return py::make_tuple(fractions(s.scene.seed(0)), fractions(s.scene.seed(1))); })
+        .def(
+            "json", [](const PyScene& s) { return s.scene.json(); }, "the scene file text, every number exact")
+        .def(
+            "curve", [](const PyScene& s) { return curve_dict(s.a().curve()); },
+            "pieces (rho1 range, slope, intercept, normal, contact, features), switch points, growth distance")
+        .def(
+            "query",
+            [](const PyScene& s, const py::handle& r1, const py::handle& r2) {
+                const Rational a = rational(r1, "rho1"), b = rational(r2, "rho2");
+                const scalecert::QueryResult q = s.a().query(a, b);
+                py::dict d;
+                d["verdict"] = q.verdict;
+                if (q.plane) {
+                    py::dict p;
+                    p["normal"] = fractions(q.plane->normal);
+                    p["c1"] = fraction(q.plane->c1);
+                    p["c2"] = fraction(q.plane->c2);
+                    p["offset"] = fraction(q.plane->offset);
+                    d["plane"] = p;
+                } else {
+                    d["plane"] = py::none();
+                }
+                if (q.common)
+                    d["common_point"] =
+                        py::dict(py::arg("rho1") = fraction(q.common->rho1), py::arg("rho2") = fraction(q.common->rho2),
+                                 py::arg("point") = fractions(q.common->point));
+                else
+                    d["common_point"] = py::none();
+                d["certificate"] = json_loads(s.a().query_json(a, b));
+                return d;
+            },
+            py::arg("rho1"), py::arg("rho2"), "the exact verdict at (rho1, rho2) > 0, with its certificate")
+        .def(
+            "classify",
+            [](const PyScene& s, const py::handle& r1, const py::handle& r2) {
+                const scalecert::Analysis& an = s.a();
+                return classify_array(r1, r2, [&an](const std::vector<double>& a, const std::vector<double>& b) {
+                    return an.classify(a, b, 0);
+                });
+            },
+            py::arg("rho1"), py::arg("rho2"),
+            "exact verdicts at the doubles' exact values, on all cores: an int8 array of Verdict values")
+        .def(
+            "check_plane",
+            [](const PyScene& s, const py::handle& r1, const py::handle& r2, const py::handle& n,
+               const py::handle& offset) {
+                std::optional<Rational> off;
+                if (!offset.is_none()) off = rational(offset, "offset");
+                const scalecert::PlaneCheck c =
+                    s.a().check_plane(rational(r1, "rho1"), rational(r2, "rho2"), point(n, "normal"), off);
+                return py::dict(py::arg("separates") = c.separates, py::arg("c1") = fraction(c.c1),
+                                py::arg("c2") = fraction(c.c2));
+            },
+            py::arg("rho1"), py::arg("rho2"), py::arg("normal"), py::arg("offset") = py::none(),
+            "does the plane normal.x = offset (or some plane of that normal) separate P1(rho1) and P2(rho2)?")
         .def("curve_json", [](const PyScene& s) { return json_loads(s.a().curve_json()); })
-        .def("partition", [](const PyScene& s) { return json_loads(s.a().partition_json()); },
-             "the certified partition of I1 x I2 (the certificate), as a dict")
-        .def("partition_json", [](const PyScene& s) { return s.a().partition_json(); },
-             "the certificate as text, byte-identical to scalecert partition")
-        .def("certify_fp", [](const PyScene& s, const py::handle& claims, const py::handle& exact_decimals, const py::handle& tolerance,
-                              const py::handle& certificate) -> py::object {
-                 scalecert::ClaimOptions opt;
-                 opt.exact_decimals = flag_arg(exact_decimals, "exact_decimals");
-                 opt.tolerance = rational(tolerance, "tolerance");
-                 opt.certificate = flag_arg(certificate, "certificate");
-                 scalecert::ClaimReport r = s.a().certify_fp(claims_text(claims), opt);
-                 if (!opt.certificate) return json_loads(r.report);
-                 return py::make_tuple(json_loads(r.report), r.certificate);
-             }, py::arg("claims"), py::arg("exact_decimals") = false, py::arg("tolerance") = 0, py::arg("certificate") = false,
-             "marks claims right or wrong: the text of a claims file (JSON scalecert-claims-1, or 'RHO1 RHO2 VERDICT' / "
-             "'curve RHO1 RHO2' / 'growth RHO' lines), a scalecert-claims-1 dict, or a list of claim dicts. A float means "
-             "the double it is (exact_decimals reads JSON text's decimals as written); a str or a Fraction is exact. "
-             "Returns the report of scalecert certify-fp --json, as a dict; with certificate=True, (the report, the "
-             "judgements certificate's text for scalecert-check)")
-        .def("certify", [](const PyScene& s, const py::handle& kind, const py::handle& rho1, const py::handle& rho2,
-                           const py::handle& value, const py::handle& closest, const py::handle& direction, const py::handle& normal,
-                           const py::handle& offset, const py::handle& point_, const py::handle& verdict, const py::handle& tolerance,
-                           const py::handle& certificate, const py::handle& fractions) {
-                 const scalecert::Analysis& a = s.a();
-                 return certify_arrays([&a](const auto& c, const auto& o) { return a.certify(c, o); }, text_arg(kind, "kind"), rho1, rho2, value, closest, direction, normal, offset, point_, verdict,
-                                       tolerance, flag_arg(certificate, "certificate"), flag_arg(fractions, "fractions"));
-             }, py::arg("kind"), py::arg("rho1"), py::arg("rho2"), py::arg("value") = py::none(), py::arg("closest") = py::none(),
-             py::arg("direction") = py::none(), py::arg("normal") = py::none(), py::arg("offset") = py::none(),
-             py::arg("point") = py::none(), py::arg("verdict") = py::none(), py::arg("tolerance") = 0,
-             py::arg("certificate") = false, py::arg("fractions") = false,
-             "claims of one kind over arrays: kind 'distance' (value, optional closest of shape (n, 2, 3)), "
-             "'penetration_depth' (value, optional direction (n, 3)), 'verdict' (verdict: a str or n strs), "
-             "'separating_plane' (normal (n, 3), optional offset) or 'witness_point' (point (n, 3)); rho1, rho2 and value "
-             "of length n. A float is the double it is. Returns a dict of numpy arrays: right (bool), value_right, "
-             "closest_right, direction_right (bool, where given), exact (float64: the exact distance or depth, correctly "
-             "rounded; NaN for a depth of a separated pair) and rel_error (float64), exact_verdict (verdicts); with "
-             "fractions=True exact_squared (Fractions); with certificate=True the judgements certificate's text")
-        .def("golden", [](const PyScene& s) {
-                 scalecert::GoldenData g = s.a().golden();
-                 return py::make_tuple(json_loads(g.json), g.csv);
-             }, "the scene's golden data: (the golden JSON as a dict, the CSV text), as scalecert golden writes per scene")
-        ;
-    m.def("golden", [](const py::handle& family, const py::handle& count, const py::handle& seed, const py::handle& eps, const py::handle& dir) {
-              const std::string f = text_arg(family, "family");
-              const int n = count_arg(count, "count", 1, 100000);
-              const unsigned long long sd = seed_arg(seed, "seed");
-              const Rational e = rational(eps, "eps");
-              if (sgn(e) <= 0) throw scalecert::InputError("eps must be > 0");
-              scalecert::internal::write_golden(f, n, sd, e, path_arg(dir, "dir"));
-          }, py::arg("family"), py::arg("count"), py::arg("seed"), py::arg("eps"), py::arg("dir"),
-          "writes COUNT scenes of FAMILY with exact answers into DIR, as scalecert golden does");
+        .def(
+            "partition", [](const PyScene& s) { return json_loads(s.a().partition_json()); },
+            "the certified partition of I1 x I2 (the certificate), as a dict")
+        .def(
+            "partition_json", [](const PyScene& s) { return s.a().partition_json(); },
+            "the certificate as text, byte-identical to scalecert partition")
+        .def(
+            "certify_fp",
+            [](const PyScene& s, const py::handle& claims, const py::handle& exact_decimals,
+               const py::handle& tolerance, const py::handle& certificate) -> py::object {
+                scalecert::ClaimOptions opt;
+                opt.exact_decimals = flag_arg(exact_decimals, "exact_decimals");
+                opt.tolerance = rational(tolerance, "tolerance");
+                opt.certificate = flag_arg(certificate, "certificate");
+                scalecert::ClaimReport r = s.a().certify_fp(claims_text(claims), opt);
+                if (!opt.certificate) return json_loads(r.report);
+                return py::make_tuple(json_loads(r.report), r.certificate);
+            },
+            py::arg("claims"), py::arg("exact_decimals") = false, py::arg("tolerance") = 0,
+            py::arg("certificate") = false,
+            "marks claims right or wrong: the text of a claims file (JSON scalecert-claims-1, or 'RHO1 RHO2 VERDICT' / "
+            "'curve RHO1 RHO2' / 'growth RHO' lines), a scalecert-claims-1 dict, or a list of claim dicts. A float "
+            "means "
+            "the double it is (exact_decimals reads JSON text's decimals as written); a str or a Fraction is exact. "
+            "Returns the report of scalecert certify-fp --json, as a dict; with certificate=True, (the report, the "
+            "judgements certificate's text for scalecert-check)")
+        .def(
+            "certify",
+            [](const PyScene& s, const py::handle& kind, const py::handle& rho1, const py::handle& rho2,
+               const py::handle& value, const py::handle& closest, const py::handle& direction,
+               const py::handle& normal, const py::handle& offset, const py::handle& point_, const py::handle& verdict,
+               const py::handle& tolerance, const py::handle& certificate, const py::handle& fractions) {
+                const scalecert::Analysis& a = s.a();
+                return certify_arrays([&a](const auto& c, const auto& o) { return a.certify(c, o); },
+                                      text_arg(kind, "kind"), rho1, rho2, value, closest, direction, normal, offset,
+                                      point_, verdict, tolerance, flag_arg(certificate, "certificate"),
+                                      flag_arg(fractions, "fractions"));
+            },
+            py::arg("kind"), py::arg("rho1"), py::arg("rho2"), py::arg("value") = py::none(),
+            py::arg("closest") = py::none(), py::arg("direction") = py::none(), py::arg("normal") = py::none(),
+            py::arg("offset") = py::none(), py::arg("point") = py::none(), py::arg("verdict") = py::none(),
+            py::arg("tolerance") = 0, py::arg("certificate") = false, py::arg("fractions") = false,
+            "claims of one kind over arrays: kind 'distance' (value, optional closest of shape (n, 2, 3)), "
+            "'penetration_depth' (value, optional direction (n, 3)), 'verdict' (verdict: a str or n strs), "
+            "'separating_plane' (normal (n, 3), optional offset) or 'witness_point' (point (n, 3)); rho1, rho2 and "
+            "value "
+            "of length n. A float is the double it is. Returns a dict of numpy arrays: right (bool), value_right, "
+            "closest_right, direction_right (bool, where given), exact (float64: the exact distance or depth, "
+            "correctly "
+            "rounded; NaN for a depth of a separated pair) and rel_error (float64), exact_verdict (verdicts); with "
+            "fractions=True exact_squared (Fractions); with certificate=True the judgements certificate's text")
+        .def(
+            "golden",
+            [](const PyScene& s) {
+                scalecert::GoldenData g = s.a().golden();
+                return py::make_tuple(json_loads(g.json), g.csv);
+            },
+            "the scene's golden data: (the golden JSON as a dict, the CSV text), as scalecert golden writes per scene");
+    m.def(
+        "golden",
+        [](const py::handle& family, const py::handle& count, const py::handle& seed, const py::handle& eps,
+           const py::handle& dir) {
+            const std::string f = text_arg(family, "family");
+            const int n = count_arg(count, "count", 1, 100000);
+            const unsigned long long sd = seed_arg(seed, "seed");
+            const Rational e = rational(eps, "eps");
+            if (sgn(e) <= 0) throw scalecert::InputError("eps must be > 0");
+            scalecert::internal::write_golden(f, n, sd, e, path_arg(dir, "dir"));
+        },
+        py::arg("family"), py::arg("count"), py::arg("seed"), py::arg("eps"), py::arg("dir"),
+        "writes COUNT scenes of FAMILY with exact answers into DIR, as scalecert golden does");
 }

@@ -18,7 +18,8 @@ inline std::string slurp(const std::filesystem::path& p) {
 
 // A directory under the system's temporary directory, named for `tag` and this process.
 inline std::filesystem::path scratch_dir(const std::string& tag) {
-    std::filesystem::path p = std::filesystem::temp_directory_path() / ("scalecert-" + tag + "-" + std::to_string(::getpid()));
+    std::filesystem::path p =
+        std::filesystem::temp_directory_path() / ("scalecert-" + tag + "-" + std::to_string(::getpid()));
     std::filesystem::create_directories(p);
     return p;
 }

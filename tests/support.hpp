@@ -31,7 +31,9 @@ inline Vec3q scaled(const Vec3q& v, const Vec3q& s, const Q& rho) {
 struct Brute {
     // Per candidate direction n: n·s1, max over P1 of n·v, n·s2, min over P2 of n·w. For ρ > 0 the
     // scaled extremes are n·s + ρ(extreme − n·s).
-    struct Dir { Q ns1, max1, ns2, min2; };
+    struct Dir {
+        Q ns1, max1, ns2, min2;
+    };
     std::vector<Dir> dirs;
     explicit Brute(const ExactScene& sc) {
         std::vector<Vec3q> diffs;
@@ -105,7 +107,8 @@ inline std::pair<std::vector<int>, std::vector<int>> brute_contact(const ExactSc
                 for (int k = 0; k < 2; ++k) {
                     std::vector<int> att;
                     for (size_t v = 0; v < sc.P[k].points.size(); ++v)
-                        if (dot(mq, sc.P[k].points[v]) == ext[k] && (!any || std::binary_search(g[k].begin(), g[k].end(), int(v))))
+                        if (dot(mq, sc.P[k].points[v]) == ext[k] &&
+                            (!any || std::binary_search(g[k].begin(), g[k].end(), int(v))))
                             att.push_back(static_cast<int>(v));
                     g[k] = att;
                 }
@@ -121,9 +124,13 @@ inline int affine_dimension(const std::vector<Vec3q>& pts, const std::vector<int
     Vec3q e1, c;
     for (int k : idx) {
         const Vec3q v = sub(pts[k], pts[idx[0]]);
-        if (dim == 0 && (sgn(v[0]) || sgn(v[1]) || sgn(v[2]))) e1 = v, dim = 1;
-        else if (dim == 1) { const Vec3q x = cross(e1, v); if (sgn(x[0]) || sgn(x[1]) || sgn(x[2])) c = x, dim = 2; }
-        else if (dim == 2 && sgn(dot(c, v))) return 3;
+        if (dim == 0 && (sgn(v[0]) || sgn(v[1]) || sgn(v[2])))
+            e1 = v, dim = 1;
+        else if (dim == 1) {
+            const Vec3q x = cross(e1, v);
+            if (sgn(x[0]) || sgn(x[1]) || sgn(x[2])) c = x, dim = 2;
+        } else if (dim == 2 && sgn(dot(c, v)))
+            return 3;
     }
     return dim;
 }
@@ -153,7 +160,8 @@ inline ExactScene random_scene(std::mt19937& g, int n1, int n2) {
     sc.P[1].points = random_points(g, n2, 4, 2, {Q(off(g)), Q(off(g)), Q(off(g))});
     for (int i = 0; i < 2; ++i) {
         Vec3q c{Q(0), Q(0), Q(0)};
-        for (const auto& v : sc.P[i].points) for (int k = 0; k < 3; ++k) c[k] += v[k];
+        for (const auto& v : sc.P[i].points)
+            for (int k = 0; k < 3; ++k) c[k] += v[k];
         for (int k = 0; k < 3; ++k) c[k] /= Q(static_cast<long>(sc.P[i].points.size()));
         sc.P[i].seed = c;
         sc.lo[i] = Q(1, 4);
@@ -170,7 +178,8 @@ inline std::array<std::vector<std::array<long, 3>>, 2> crossed_prisms(int n) {
     const long R = 1000000;
     const double pi = std::acos(-1.0);
     for (int k = 0; k < n; ++k) {
-        const long x = std::lround(R * std::cos(2 * pi * k / n + 0.1)), y = std::lround(R * std::sin(2 * pi * k / n + 0.1));
+        const long x = std::lround(R * std::cos(2 * pi * k / n + 0.1)),
+                   y = std::lround(R * std::sin(2 * pi * k / n + 0.1));
         for (long z : {-3 * R, 3 * R}) {
             P[0].push_back({x, y, z});
             P[1].push_back({z + 12345, y + R / 5, x + 3 * R});

@@ -104,29 +104,32 @@ BOOST_AUTO_TEST_CASE(claimed_planes_are_checked_exactly) {
     BOOST_TEST(p.c2 == R(1));
     BOOST_TEST(a.check_plane(R(1), R(1), {R(0), R(0), R(1)}, R(5, 2)).separates);
     BOOST_TEST(!a.check_plane(R(1), R(1), {R(0), R(0), R(1)}, R(3)).separates);  // touches P2
-    BOOST_TEST(!a.check_plane(R(1), R(1), {R(0), R(0), R(-1)}).separates);        // wrong way round
-    BOOST_TEST(!a.check_plane(R(1), R(1), {R(1), R(0), R(0)}).separates);         // side by side in x
+    BOOST_TEST(!a.check_plane(R(1), R(1), {R(0), R(0), R(-1)}).separates);       // wrong way round
+    BOOST_TEST(!a.check_plane(R(1), R(1), {R(1), R(0), R(0)}).separates);        // side by side in x
     // x + z: P1's max is 2 + 2 = 4 at (2, y, 2); P2's min 0 + 3 = 3: overlap in that direction.
     p = a.check_plane(R(1), R(1), {R(1), R(0), R(1)});
     BOOST_TEST(p.c1 == R(4));
     BOOST_TEST(p.c2 == R(3));
     BOOST_TEST(!p.separates);
-    BOOST_TEST(error_of([&] { a.check_plane(R(1), R(1), {R(0), R(0), R(0)}); }).find("normal is zero") != std::string::npos);
+    BOOST_TEST(error_of([&] {
+                   a.check_plane(R(1), R(1), {R(0), R(0), R(0)});
+               }).find("normal is zero") != std::string::npos);
 }
 
 BOOST_AUTO_TEST_CASE(scenes_in_code_are_checked_like_scene_files) {
     BOOST_TEST(error_of([] { stacked(R(3), R(1, 2)); }) == "scene: I1: lo > hi");
     BOOST_TEST(error_of([] { stacked(R(0), R(1)); }) == "scene: I1: lo must be > 0 (got '0')");
     BOOST_TEST(error_of([] {
-        scalecert::Scene(box(0, 0, 0, 2, 2, 0), box(0, 0, 3, 2, 2, 5), {R(1), R(2)}, {R(1), R(2)});
-    }).find("flat") != std::string::npos);
+                   scalecert::Scene(box(0, 0, 0, 2, 2, 0), box(0, 0, 3, 2, 2, 5), {R(1), R(2)}, {R(1), R(2)});
+               }).find("flat") != std::string::npos);
     BOOST_TEST(error_of([] {
-        scalecert::Scene(box(0, 0, 0, 2, 2, 2), box(0, 0, 3, 2, 2, 5), {R(1), R(2)}, {R(1), R(2)},
-                         scalecert::Point{R(2), R(1), R(1)});
-    }).find("seed: not strictly inside") != std::string::npos);
-    BOOST_TEST(error_of([] {
-        scalecert::Scene(std::vector<scalecert::Point>(3), box(0, 0, 3, 2, 2, 5), {R(1), R(2)}, {R(1), R(2)});
-    }) == "scene: P1: fewer than 4 vertices (3)");
+                   scalecert::Scene(box(0, 0, 0, 2, 2, 2), box(0, 0, 3, 2, 2, 5), {R(1), R(2)}, {R(1), R(2)},
+                                    scalecert::Point{R(2), R(1), R(1)});
+               }).find("seed: not strictly inside") != std::string::npos);
+    BOOST_TEST(
+        error_of([] {
+            scalecert::Scene(std::vector<scalecert::Point>(3), box(0, 0, 3, 2, 2, 5), {R(1), R(2)}, {R(1), R(2)});
+        }) == "scene: P1: fewer than 4 vertices (3)");
     // A rational given in non-canonical form is the same number.
     scalecert::Scene s(box(0, 0, 0, 2, 2, 2), box(0, 0, 3, 2, 2, 5), {R(2, 4), R(5, 2)}, {R(1, 2), R(5, 2)});
     BOOST_TEST(s.range(0).lo.get_den() == 2);
@@ -187,13 +190,15 @@ BOOST_AUTO_TEST_CASE(loaded_scene_certificate_passes_the_checker) {
 BOOST_AUTO_TEST_CASE(claims_and_golden_data_through_the_public_api) {
     // Stacked cubes, by hand: touching on ρ1 + ρ2 = 3, growth distance 3/2.
     const scalecert::Analysis a(stacked());
-    const scalecert::ClaimReport r = a.certify_fp("1 1 separated\n1.5 1.5 touching\n2 2 separated\ngrowth 1.5\ncurve 1 2\ncurve 1 2.5\n");
+    const scalecert::ClaimReport r =
+        a.certify_fp("1 1 separated\n1.5 1.5 touching\n2 2 separated\ngrowth 1.5\ncurve 1 2\ncurve 1 2.5\n");
     BOOST_TEST(r.claims == 6);
     BOOST_TEST(r.wrong == 2);  // (2, 2) overlaps (2 + 2 > 3); the curve at ρ1 = 1 is 2, not 5/2
     BOOST_TEST(r.report.find("\"wrong\": 2") != std::string::npos);
     scalecert::ClaimOptions text;
     text.json = false;
-    BOOST_TEST(a.certify_fp("growth 1.5\n", text).report == "right  growth distance 1.5: exact 3/2 (~1.5), off by 0 (~0)\nclaims: 1, right: 1, wrong: 0\n");
+    BOOST_TEST(a.certify_fp("growth 1.5\n", text).report ==
+               "right  growth distance 1.5: exact 3/2 (~1.5), off by 0 (~0)\nclaims: 1, right: 1, wrong: 0\n");
     // A claim means the double the program held: the doubles 0.1 and 2.9 sum to just under 3
     // exactly, so (0.1, 2.9) is separated; read as decimals, 1/10 + 29/10 = 3 touches.
     BOOST_TEST((scalecert::exact(0.1) + scalecert::exact(2.9) < R(3)));
@@ -217,11 +222,12 @@ BOOST_AUTO_TEST_CASE(claims_and_golden_data_through_the_public_api) {
     size_t lines = 0;
     for (char ch : g.csv) lines += ch == '\n';
     BOOST_TEST(lines == 1 + 7 * 13u);
-    BOOST_TEST(g.csv.rfind("rho1,rho2,where,verdict_at_doubles,measure,value\n0.75,2.25,on,touching,touching,0\n", 0) == 0);
+    BOOST_TEST(g.csv.rfind("rho1,rho2,where,verdict_at_doubles,measure,value\n0.75,2.25,on,touching,touching,0\n", 0) ==
+               0);
     // 2^-4 of f(3/4) = 9/4 above the curve they overlap by 9/64 = 0.140625 in z (the depth), and as
     // far below they are that far apart.
-    BOOST_TEST(g.csv.find("0.75,2.390625,above 2^-4,overlapping,depth,0.140625\n0.75,2.109375,below 2^-4,separated,distance,0.140625\n") !=
-               std::string::npos);
+    BOOST_TEST(g.csv.find("0.75,2.390625,above 2^-4,overlapping,depth,0.140625\n0.75,2.109375,below "
+                          "2^-4,separated,distance,0.140625\n") != std::string::npos);
     BOOST_TEST(g.json.find("\"verdict\": \"touching\"") != std::string::npos);
 }
 
@@ -301,9 +307,11 @@ BOOST_AUTO_TEST_CASE(typed_claims_by_hand_and_by_brute_force) {
     claims[0].rho1 = 1, claims[0].rho2 = R(1, 2), claims[0].value = R(3, 2);
     claims[0].closest = std::array<scalecert::Point, 2>{scalecert::Point{1, 1, 2}, scalecert::Point{1, 1, R(7, 2)}};
     claims[1] = claims[0];
-    claims[1].closest = std::array<scalecert::Point, 2>{scalecert::Point{1, 1, R(21, 10)}, scalecert::Point{1, 1, R(7, 2)}};  // outside P1
+    claims[1].closest = std::array<scalecert::Point, 2>{scalecert::Point{1, 1, R(21, 10)},
+                                                        scalecert::Point{1, 1, R(7, 2)}};  // outside P1
     claims[2].kind = ClaimKind::PenetrationDepth;  // at (2, 2): overlap 1 in z, 4 in x and y
-    claims[2].rho1 = claims[2].rho2 = 2, claims[2].value = scalecert::exact(1.0000001), claims[2].direction = scalecert::Point{0, 0, 1};
+    claims[2].rho1 = claims[2].rho2 = 2, claims[2].value = scalecert::exact(1.0000001),
+    claims[2].direction = scalecert::Point{0, 0, 1};
     claims[3].kind = ClaimKind::Verdict;
     claims[3].rho1 = claims[3].rho2 = R(3, 2), claims[3].verdict = scalecert::ClaimedVerdict::Touching;
     claims[4].kind = ClaimKind::WitnessPoint;
@@ -366,7 +374,8 @@ BOOST_AUTO_TEST_CASE(typed_claims_by_hand_and_by_brute_force) {
             want.push_back(overlap ? R(depth * depth) : gap2);
         }
     const scalecert::Judgements g = a.certify(grid);
-    for (size_t i = 0; i < grid.size(); ++i) BOOST_TEST((g.items[i].exact_squared && *g.items[i].exact_squared == want[i]), i);
+    for (size_t i = 0; i < grid.size(); ++i)
+        BOOST_TEST((g.items[i].exact_squared && *g.items[i].exact_squared == want[i]), i);
 }
 
 BOOST_AUTO_TEST_CASE(a_region_of_parts_by_hand) {
@@ -375,8 +384,9 @@ BOOST_AUTO_TEST_CASE(a_region_of_parts_by_hand) {
     // [4,5] x [-1,1]^2 about (9/2, 0, 0). The right part spans [2ρ1, 3ρ1] in x, the box
     // [9/2 − ρ2/2, 9/2 + ρ2/2]: they meet iff 3ρ1 >= 9/2 − ρ2/2 and 2ρ1 <= 9/2 + ρ2/2. At ρ2 = 2:
     // from ρ1 = 7/6 to 11/4, then apart again as object 1 grows.
-    const scalecert::Region r({box(2, -1, -1, 3, 1, 1), box(-3, -1, -1, -2, 1, 1)}, {box(4, -1, -1, 5, 1, 1)}, {R(1), R(4)}, {R(1), R(3)},
-                              scalecert::Point{R(0), R(0), R(0)}, scalecert::Point{R(9, 2), R(0), R(0)});
+    const scalecert::Region r({box(2, -1, -1, 3, 1, 1), box(-3, -1, -1, -2, 1, 1)}, {box(4, -1, -1, 5, 1, 1)},
+                              {R(1), R(4)}, {R(1), R(3)}, scalecert::Point{R(0), R(0), R(0)},
+                              scalecert::Point{R(9, 2), R(0), R(0)});
     BOOST_TEST((r.verdict(R(1), R(2)) == scalecert::Verdict::Separated));
     BOOST_TEST((r.verdict(R(7, 6), R(2)) == scalecert::Verdict::Touching));
     BOOST_TEST((r.verdict(R(2), R(2)) == scalecert::Verdict::Overlapping));
@@ -389,10 +399,11 @@ BOOST_AUTO_TEST_CASE(a_region_of_parts_by_hand) {
     BOOST_TEST(r.region_json().find("\"switch_points\": []") != std::string::npos);
     BOOST_TEST(r.partition_json().find("\"kind\": \"compound_partition\"") != std::string::npos);
     // A flat part: one line, InputError.
-    BOOST_CHECK_THROW(scalecert::Region({{{R(0), R(0), R(0)}, {R(1), R(0), R(0)}, {R(0), R(1), R(0)}, {R(1), R(1), R(0)}}},
-                                        {box(4, -1, -1, 5, 1, 1)}, {R(1), R(4)}, {R(1), R(3)})
-                          .verdict(R(1), R(1)),
-                      scalecert::InputError);
+    BOOST_CHECK_THROW(
+        scalecert::Region({{{R(0), R(0), R(0)}, {R(1), R(0), R(0)}, {R(0), R(1), R(0)}, {R(1), R(1), R(0)}}},
+                          {box(4, -1, -1, 5, 1, 1)}, {R(1), R(4)}, {R(1), R(3)})
+            .verdict(R(1), R(1)),
+        scalecert::InputError);
 }
 
 // Typed claims on objects made of parts, by hand, on the band above. At (1, 2) the right part
@@ -403,16 +414,20 @@ BOOST_AUTO_TEST_CASE(typed_claims_on_parts_by_hand) {
     using scalecert::Claim;
     using scalecert::ClaimKind;
     using scalecert::Point;
-    const scalecert::Region r({box(2, -1, -1, 3, 1, 1), box(-3, -1, -1, -2, 1, 1)}, {box(4, -1, -1, 5, 1, 1)}, {R(1), R(4)}, {R(1), R(3)},
-                              Point{R(0), R(0), R(0)}, Point{R(9, 2), R(0), R(0)});
+    const scalecert::Region r({box(2, -1, -1, 3, 1, 1), box(-3, -1, -1, -2, 1, 1)}, {box(4, -1, -1, 5, 1, 1)},
+                              {R(1), R(4)}, {R(1), R(3)}, Point{R(0), R(0), R(0)}, Point{R(9, 2), R(0), R(0)});
     std::vector<Claim> c(7);
     c[0].kind = ClaimKind::Distance, c[0].rho1 = 1, c[0].rho2 = 2, c[0].value = R(1, 2);
     c[0].closest = std::array<Point, 2>{Point{3, 1, 0}, Point{R(7, 2), 1, 0}};
-    c[1] = c[0], c[1].closest = std::array<Point, 2>{Point{3, 1, 0}, Point{R(7, 2), 0, 0}};  // 1/2 apart in x, 1 in y: too far
-    c[2].kind = ClaimKind::Verdict, c[2].rho1 = R(7, 6), c[2].rho2 = 2, c[2].verdict = scalecert::ClaimedVerdict::Touching;
-    c[3].kind = ClaimKind::Verdict, c[3].rho1 = 3, c[3].rho2 = 2, c[3].verdict = scalecert::ClaimedVerdict::Intersecting;  // apart again
+    c[1] = c[0],
+    c[1].closest = std::array<Point, 2>{Point{3, 1, 0}, Point{R(7, 2), 0, 0}};  // 1/2 apart in x, 1 in y: too far
+    c[2].kind = ClaimKind::Verdict, c[2].rho1 = R(7, 6), c[2].rho2 = 2,
+    c[2].verdict = scalecert::ClaimedVerdict::Touching;
+    c[3].kind = ClaimKind::Verdict, c[3].rho1 = 3, c[3].rho2 = 2,
+    c[3].verdict = scalecert::ClaimedVerdict::Intersecting;  // apart again
     c[4].kind = ClaimKind::WitnessPoint, c[4].rho1 = 2, c[4].rho2 = 2, c[4].point = {5, 0, 0};
-    c[5].kind = ClaimKind::SeparatingPlane, c[5].rho1 = 1, c[5].rho2 = 2, c[5].normal = {1, 0, 0}, c[5].offset = R(13, 4);
+    c[5].kind = ClaimKind::SeparatingPlane, c[5].rho1 = 1, c[5].rho2 = 2, c[5].normal = {1, 0, 0},
+    c[5].offset = R(13, 4);
     c[6] = c[5], c[6].offset = R(4);  // beyond the box's near face at 7/2
     scalecert::ClaimOptions opt;
     opt.certificate = true;
@@ -525,7 +540,8 @@ std::string claims_file(const std::vector<scalecert::Claim>& claims) {
         case ClaimKind::WitnessPoint: s += "\"kind\":\"witness_point\",\"point\":" + exact_point(c.point); break;
         case ClaimKind::Distance:
             s += "\"kind\":\"distance\",\"value\":" + exact_text(c.value);
-            if (c.closest) s += ",\"closest\":[" + exact_point((*c.closest)[0]) + "," + exact_point((*c.closest)[1]) + "]";
+            if (c.closest)
+                s += ",\"closest\":[" + exact_point((*c.closest)[0]) + "," + exact_point((*c.closest)[1]) + "]";
             break;
         case ClaimKind::PenetrationDepth:
             s += "\"kind\":\"penetration_depth\",\"value\":" + exact_text(c.value);
@@ -550,10 +566,12 @@ size_t same_judgements(const scalecert::Judgements& typed, const std::string& re
     for (size_t i = 0; i < list.size(); ++i) {
         const scalecert::Judgement& t = typed.items[i];
         const nlohmann::json& o = list[i];
-        const bool same = t.right == o["right"].get<bool>() && t.value_right == opt(o, "value_right") &&
-                          t.closest_right == opt(o, "closest_right") && t.direction_right == opt(o, "direction_right") &&
-                          (t.exact_squared ? o.contains("exact_squared") && o["exact_squared"].get<std::string>() == t.exact_squared->get_str()
-                                           : !o.contains("exact_squared"));
+        const bool same =
+            t.right == o["right"].get<bool>() && t.value_right == opt(o, "value_right") &&
+            t.closest_right == opt(o, "closest_right") && t.direction_right == opt(o, "direction_right") &&
+            (t.exact_squared
+                 ? o.contains("exact_squared") && o["exact_squared"].get<std::string>() == t.exact_squared->get_str()
+                 : !o.contains("exact_squared"));
         if (!same && ++bad <= 5) BOOST_ERROR("claim " << i << " is judged differently: " << o.dump());
         right += t.right;
     }
@@ -580,8 +598,9 @@ BOOST_AUTO_TEST_CASE(typed_and_file_claims_judge_alike) {
         BOOST_TEST(right > 0u);  // both outcomes occur
         BOOST_TEST(right < claims.size());
     }
-    const scalecert::Region r({box(2, -1, -1, 3, 1, 1), box(-3, -1, -1, -2, 1, 1)}, {box(4, -1, -1, 5, 1, 1)}, {R(1), R(4)}, {R(1), R(3)},
-                              scalecert::Point{R(0), R(0), R(0)}, scalecert::Point{R(9, 2), R(0), R(0)});
+    const scalecert::Region r({box(2, -1, -1, 3, 1, 1), box(-3, -1, -1, -2, 1, 1)}, {box(4, -1, -1, 5, 1, 1)},
+                              {R(1), R(4)}, {R(1), R(3)}, scalecert::Point{R(0), R(0), R(0)},
+                              scalecert::Point{R(9, 2), R(0), R(0)});
     const std::vector<scalecert::Claim> claims = random_claims(2000, 5, false);
     const scalecert::Judgements typed = r.certify(claims);
     const size_t right = same_judgements(typed, r.certify_fp(claims_file(claims)).report);

@@ -64,7 +64,8 @@ BOOST_AUTO_TEST_CASE(small_audit_and_stability_sweep) {
             if (r.method == "scalecert (exact)") BOOST_TEST(r.junctions_missed == 0);
             // The Appendix's equations put a junction they find at the exact switch up to rounding,
             // which the slope difference (about ε) amplifies: a tight bound only for ε = 2^-4.
-            if (r.method.rfind("grid+analytical", 0) == 0 && r.eps == Q(1, 16) && r.exact_junctions > r.junctions_missed)
+            if (r.method.rfind("grid+analytical", 0) == 0 && r.eps == Q(1, 16) &&
+                r.exact_junctions > r.junctions_missed)
                 BOOST_TEST(r.max_junction_error < 1e-9);
         } else {
             ++query_rows;
@@ -82,7 +83,8 @@ BOOST_AUTO_TEST_CASE(baselines_agree_away_from_the_curve) {
     // A small audit: away from the curve (|ρ2 − f(ρ1)| > 1/10) every baseline (libccd GJK and MPR,
     // FCL with either GJK, Bullet, the paper's triangle test, plain doubles) must agree with the
     // exact verdict; this checks their wiring, not their precision.
-    HullModel m = build_model(load_scene(std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/fig5_vf_ve_ee.json"));
+    HullModel m =
+        build_model(load_scene(std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/fig5_vf_ve_ee.json"));
     TouchingCurve c = build_curve(m);
     fp::FpScene f = fp::to_fp(m.scene);
     std::vector<std::unique_ptr<fp::Method>> methods;
@@ -116,7 +118,8 @@ BOOST_AUTO_TEST_CASE(sha256_known_answers) {
     BOOST_TEST(sha256_hex("") == "e3b0c44298fc1c149afbf4c8996fb92427ae41e4649b934ca495991b7852b855");
     BOOST_TEST(sha256_hex("abcdbcdecdefdefgefghfghighijhijkijkljklmklmnlmnomnopnopq") ==
                "248d6a61d20638b8e5c026930c3e6039a33ce45964ff2167f6ecedd419db06c1");
-    BOOST_TEST(sha256_hex(std::string(1000000, 'a')) == "cdc76e5c9914fb9281a1c7e284d73e67f1809a48a497200e046d39ccc7112cd0");
+    BOOST_TEST(sha256_hex(std::string(1000000, 'a')) ==
+               "cdc76e5c9914fb9281a1c7e284d73e67f1809a48a497200e046d39ccc7112cd0");
 }
 
 BOOST_AUTO_TEST_CASE(shard_plans_cover_every_scene_once) {
@@ -230,15 +233,17 @@ BOOST_AUTO_TEST_CASE(campaigns_are_keyed_by_the_contents_of_their_inputs) {
     const std::string mesh = (dir / "t.obj").string(), sc = (dir / "s.json").string();
     const std::string obj = "v 2 0 2\nv -2 2 5\nv -1 -2 6\nv 2 0 7\n";
     std::ofstream(mesh, std::ios::binary) << obj;
-    const std::string scene_text = "{\"P1\": {\"mesh\": \"t.obj\"}, \"P2\": {\"vertices\": [[-1,-1,-1],[1,-1,-1],[-1,1,-1],[1,1,-1],"
-                                   "[-1,-1,1],[1,-1,1],[-1,1,1],[1,1,1]]}, \"I1\": [0.5, 2], \"I2\": [1, 4]}";
+    const std::string scene_text =
+        "{\"P1\": {\"mesh\": \"t.obj\"}, \"P2\": {\"vertices\": [[-1,-1,-1],[1,-1,-1],[-1,1,-1],[1,1,-1],"
+        "[-1,-1,1],[1,-1,1],[-1,1,1],[1,1,1]]}, \"I1\": [0.5, 2], \"I2\": [1, 4]}";
     std::ofstream(sc, std::ios::binary) << scene_text;
     CampaignArgs a;
     a.auditor = baseline_auditor();
     a.scenes = {sc};
     a.methods = {"libccd-gjk"};
     const Json inputs = campaign_inputs(a);
-    BOOST_TEST(inputs.dump() == Json::array({Json::array({sc, sha256_hex(scene_text)}), Json::array({mesh, sha256_hex(obj)})}).dump());
+    BOOST_TEST(inputs.dump() ==
+               Json::array({Json::array({sc, sha256_hex(scene_text)}), Json::array({mesh, sha256_hex(obj)})}).dump());
     BOOST_TEST(campaign_identity(a, inputs).find(sha256_hex(obj)) != std::string::npos);
     const std::string shard = run_shard(a, plan(a)[0]);
     BOOST_TEST(Json::parse(shard).at("inputs") == inputs);

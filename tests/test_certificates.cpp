@@ -23,7 +23,8 @@ BOOST_AUTO_TEST_CASE(bundled_certificates_regenerate_byte_identically) {
         BOOST_TEST_REQUIRE(fs::exists(stored), stored);
         for (int rep = 0; rep < 2; ++rep) {  // deterministic: twice the same bytes
             fs::path fresh = tmp / (stem + std::to_string(rep) + ".json");
-            std::string cmd = std::string(SCALECERT_BIN) + " partition " + e.path().string() + " --out " + fresh.string();
+            std::string cmd =
+                std::string(SCALECERT_BIN) + " partition " + e.path().string() + " --out " + fresh.string();
             BOOST_TEST_REQUIRE(std::system(cmd.c_str()) == 0);
             BOOST_TEST(slurp(fresh) == slurp(stored), stem);
         }

@@ -18,7 +18,8 @@ using namespace scalecert::internal;
 
 BOOST_AUTO_TEST_CASE(certify_fp_marks_hand_derived_claims) {
     // Stacked cubes: the touching line is ρ1 + ρ2 = 3 and ρ* = 3/2 (test_hand_curves).
-    HullModel m = build_model(load_scene(std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/stacked_cubes.json"));
+    HullModel m =
+        build_model(load_scene(std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/stacked_cubes.json"));
     TouchingCurve c = build_curve(m);
     long wrong = -1;
     std::string r = certify_fp(m, c,
@@ -44,8 +45,8 @@ struct Claims {
     // (exact_decimals) unless binary_doubles.
     nlohmann::json one(const std::string& claim, const std::string& tolerance = "0", bool binary_doubles = false) {
         long wrong = -1;
-        const std::string r = certify_fp(m, c, "{\"format\": \"scalecert-claims-1\", \"claims\": [" + claim + "]}", "c.json",
-                                         ClaimOptions{!binary_doubles, parse_exact(tolerance), true}, &wrong);
+        const std::string r = certify_fp(m, c, "{\"format\": \"scalecert-claims-1\", \"claims\": [" + claim + "]}",
+                                         "c.json", ClaimOptions{!binary_doubles, parse_exact(tolerance), true}, &wrong);
         auto j = nlohmann::json::parse(r)["claims"][0];
         BOOST_TEST(wrong == (j["right"].get<bool>() ? 0 : 1));
         return j;
@@ -101,7 +102,8 @@ BOOST_AUTO_TEST_CASE(curve_claim_rules) {
     BOOST_TEST(!k.right(R"({"kind": "curve_point", "rho1": 1, "rho2": "2.001"})", "1e-4"));
     // Rule 3 at the ends: a range ending at the switch point may list it or not; listed with the
     // wrong ρ2 it is misplaced. Starting there, likewise.
-    const std::string first = R"({"kind": "curve", "pieces": [{"rho1": ["1/2", 1], "slope": "-5/2", "intercept": "9/2"}])";
+    const std::string first =
+        R"({"kind": "curve", "pieces": [{"rho1": ["1/2", 1], "slope": "-5/2", "intercept": "9/2"}])";
     BOOST_TEST(k.right(first + "}"));
     BOOST_TEST(k.right(first + R"(, "switch_points": [[1, 2]]})"));
     j = k.one(first + R"(, "switch_points": [[1, 999]]})");
@@ -120,32 +122,38 @@ BOOST_AUTO_TEST_CASE(curve_claim_rules) {
     BOOST_TEST(!k.right(R"({"kind": "switch_point", "rho1": 1, "rho2": "2.0000003"})", "1e-7"));
     // Scalings <= 0 are refused in every form, and so are switch points outside the range and
     // pieces with gaps between them.
-    BOOST_TEST(refused(R"({"kind": "curve", "vertices": [[0, "9/2"], [1, 2]]})").find("scalings must be > 0") != std::string::npos);
-    BOOST_TEST(refused(R"({"kind": "curve", "vertices": [[1, 2], [2, 0]]})").find("scalings must be > 0") != std::string::npos);
+    BOOST_TEST(refused(R"({"kind": "curve", "vertices": [[0, "9/2"], [1, 2]]})").find("scalings must be > 0") !=
+               std::string::npos);
+    BOOST_TEST(refused(R"({"kind": "curve", "vertices": [[1, 2], [2, 0]]})").find("scalings must be > 0") !=
+               std::string::npos);
     // The message names the scaling at fault, with its value.
-    BOOST_TEST(refused(R"({"kind": "verdict", "rho1": 1, "rho2": -1, "verdict": "separated"})").find("rho2: scalings must be > 0 (got -1)") !=
-               std::string::npos);
-    BOOST_TEST(refused(R"({"kind": "distance", "rho1": 0, "rho2": 1, "value": 1})").find("rho1: scalings must be > 0 (got 0)") !=
-               std::string::npos);
+    BOOST_TEST(refused(R"({"kind": "verdict", "rho1": 1, "rho2": -1, "verdict": "separated"})")
+                   .find("rho2: scalings must be > 0 (got -1)") != std::string::npos);
+    BOOST_TEST(refused(R"({"kind": "distance", "rho1": 0, "rho2": 1, "value": 1})")
+                   .find("rho1: scalings must be > 0 (got 0)") != std::string::npos);
     BOOST_TEST(refused(R"({"kind": "curve", "pieces": [{"rho1": [1, 5], "slope": "-4/7", "intercept": "18/7"}]})")
                    .find("rho2 <= 0") != std::string::npos);  // (18 − 20)/7 < 0 at ρ1 = 5
-    BOOST_TEST(refused(R"({"kind": "curve", "vertices": [[1, 2], ["3/2", "12/7"]], "switch_points": [[-1, 2]]})") != "accepted");
+    BOOST_TEST(refused(R"({"kind": "curve", "vertices": [[1, 2], ["3/2", "12/7"]], "switch_points": [[-1, 2]]})") !=
+               "accepted");
     BOOST_TEST(refused(R"({"kind": "curve", "vertices": [[1, 2], ["3/2", "12/7"]], "switch_points": [[2, "10/7"]]})")
                    .find("outside the claimed range") != std::string::npos);
     BOOST_TEST(refused(R"({"kind": "curve", "pieces": [
         {"rho1": ["1/2", 1], "slope": "-5/2", "intercept": "9/2"},
-        {"rho1": ["11/10", "3/2"], "slope": "-4/7", "intercept": "18/7"}]})").find("start where") != std::string::npos);
+        {"rho1": ["11/10", "3/2"], "slope": "-4/7", "intercept": "18/7"}]})")
+                   .find("start where") != std::string::npos);
     BOOST_TEST(refused(R"({"kind": "switch_point", "rho1": 1, "rho2": -2})") != "accepted");
     BOOST_TEST(refused(R"({"kind": "growth_distance", "value": "-18/11"})").find(">= 0") != std::string::npos);
     long wrong = -1;
     for (const char* line : {"curve 1 0\n", "curve 0 9/2\n", "curve 1 -2\n", "growth -1\n"})
         BOOST_CHECK_THROW(certify_fp(k.m, k.c, line, "c.txt", ClaimOptions{true, Q(0), false}, &wrong), InputError);
-    BOOST_TEST(certify_fp(k.m, k.c, "curve 1 2\ncurve 3/2 12/7\n", "c.txt", ClaimOptions{true, Q(0), false}, &wrong).find("wrong: 0") !=
-               std::string::npos);
+    BOOST_TEST(certify_fp(k.m, k.c, "curve 1 2\ncurve 3/2 12/7\n", "c.txt", ClaimOptions{true, Q(0), false}, &wrong)
+                   .find("wrong: 0") != std::string::npos);
     // Rule 4 at a switch point: the chord over [1/2, 3/2] (within a tolerance of 1/2 of the curve)
     // has its midpoint at the switch point (1, 2), whose contact is VE (EE, the next
     // piece's, is wrong there).
-    const std::string chord = R"({"kind": "curve", "pieces": [{"rho1": ["1/2", "3/2"], "slope": "-43/28", "intercept": "225/56", "contact": ")";
+    const std::string chord =
+        R"({"kind": "curve", "pieces": [{"rho1": ["1/2", "3/2"], "slope": "-43/28", "intercept": "225/56", )"
+        R"("contact": ")";
     BOOST_TEST(k.right(chord + R"(VE"}], "switch_points": [[1, 2]]})", "1/2"));
     j = k.one(chord + R"(EE"}], "switch_points": [[1, 2]]})", "1/2");
     BOOST_TEST(!j["right"].get<bool>());
@@ -164,12 +172,14 @@ BOOST_AUTO_TEST_CASE(claimed_planes_must_separate_exactly) {
     Claims k("stacked_cubes");
     BOOST_TEST(k.right(R"({"kind": "separating_plane", "rho1": 1, "rho2": 1, "normal": [0, 0, 1], "offset": 2.5})"));
     // The plane z = 2 − 10^-17 leaves P1's top vertices on the wrong side by 10^-17.
-    auto j = k.one(R"({"kind": "separating_plane", "rho1": 1, "rho2": 1, "normal": [0, 0, 1], "offset": "1.99999999999999999"})");
+    auto j = k.one(
+        R"({"kind": "separating_plane", "rho1": 1, "rho2": 1, "normal": [0, 0, 1], "offset": "1.99999999999999999"})");
     BOOST_TEST(!j["right"].get<bool>());
     BOOST_TEST(j["offset_minus_P1"] == "-1/100000000000000000");
     // A correct plane with rounded coefficients (the doubles nearest 0.1, 1e-3 and 2.6): still
     // strictly between P1 (max 0.1·2 + 0.002 + 2 ≈ 2.202) and P2 (min 3).
-    BOOST_TEST(k.right(R"({"kind": "separating_plane", "rho1": 1, "rho2": 1, "normal": [0.1, 0.001, 1], "offset": 2.6})", "0", true));
+    BOOST_TEST(k.right(
+        R"({"kind": "separating_plane", "rho1": 1, "rho2": 1, "normal": [0.1, 0.001, 1], "offset": 2.6})", "0", true));
     // At a touching pair no plane separates strictly, and the normal's direction matters.
     BOOST_TEST(!k.right(R"({"kind": "separating_plane", "rho1": 1.5, "rho2": 1.5, "normal": [0, 0, 1]})"));
     BOOST_TEST(!k.right(R"({"kind": "separating_plane", "rho1": 1, "rho2": 1, "normal": [0, 0, -1]})"));
@@ -208,9 +218,11 @@ BOOST_AUTO_TEST_CASE(distances_and_depths_by_hand) {
     BOOST_TEST((err > 0 && err < 2.3e-16));  // |fl(√2) − √2| < ulp(√2)/2 = 1.1e-16
     BOOST_TEST(k.right(R"({"kind": "distance", "rho1": 1, "rho2": 1, "value": 1.4142135623730951})", "1e-15", true));
     BOOST_TEST(k.right(R"({"kind": "distance", "rho1": 1, "rho2": 1, "value": 1.4142135623730951,
-                           "closest": [[2, 1, 2], [3, 1, 3]]})", "1e-15", true));
+                           "closest": [[2, 1, 2], [3, 1, 3]]})",
+                       "1e-15", true));
     BOOST_TEST(!k.right(R"({"kind": "distance", "rho1": 1, "rho2": 1, "value": 1.4142135623730951,
-                            "closest": [[2, 1, 2], [3, 1, 4]]})", "1e-15", true));  // |(1,0,2)|² = 5
+                            "closest": [[2, 1, 2], [3, 1, 4]]})",
+                        "1e-15", true));  // |(1,0,2)|² = 5
     // Meeting bodies have distance 0: at (2, 2) P1(2) = [-1,3]^3 and P2(2) = [2,6] x [-1,3] x [2,6].
     BOOST_TEST(exact_distance(k.m, Q(2), Q(2)).squared == Q(0));
 
@@ -222,7 +234,8 @@ BOOST_AUTO_TEST_CASE(distances_and_depths_by_hand) {
     BOOST_TEST(e.squared == Q(9, 4));
     BOOST_TEST((e.direction == Vec3z{Z(0), Z(0), Z(1)}));
     BOOST_TEST(directional_depth_squared(st.m, {Q(1), Q(0), Q(0)}, Q(2), Q(5, 2)) == Q(81, 4));
-    BOOST_TEST(st.right(R"({"kind": "penetration_depth", "rho1": 2, "rho2": 2.5, "value": 1.5, "direction": [0, 0, 1]})"));
+    BOOST_TEST(
+        st.right(R"({"kind": "penetration_depth", "rho1": 2, "rho2": 2.5, "value": 1.5, "direction": [0, 0, 1]})"));
     j = st.one(R"({"kind": "penetration_depth", "rho1": 2, "rho2": 2.5, "value": 1.5, "direction": [1, 0, 0]})");
     BOOST_TEST(!j["right"].get<bool>());
     BOOST_TEST(!j["direction_right"].get<bool>());
@@ -264,8 +277,10 @@ BOOST_AUTO_TEST_CASE(claimed_curves_switches_and_labels) {
     BOOST_TEST(j["max_vertical_error"] == "9/14");
     BOOST_TEST(j["max_vertical_error_at_rho1"] == "1");
     BOOST_TEST(j["switch_points_missed"].size() == 1u);
-    BOOST_TEST(k.right(R"({"kind": "curve", "vertices": [["1/2", "13/4"], [1, 2], [2, "10/7"]], "switch_points": [[1, 2]]})"));
-    BOOST_TEST(k.right(R"({"kind": "curve", "vertices": [["1/2", "13/4"], [1, 2], [2, "10/7"]]})"));  // its bend is the switch
+    BOOST_TEST(
+        k.right(R"({"kind": "curve", "vertices": [["1/2", "13/4"], [1, 2], [2, "10/7"]], "switch_points": [[1, 2]]})"));
+    BOOST_TEST(
+        k.right(R"({"kind": "curve", "vertices": [["1/2", "13/4"], [1, 2], [2, "10/7"]]})"));  // its bend is the switch
     // A sampled curve that claims no switch point: 13 samples at ρ1 = 1/2, 5/8, ..., 2, each 1/1000
     // above the exact curve (by hand, as above). The (V,E) switch at ρ1 = 1 is reported missing,
     // and the vertical error is the samples' 1/1000 (the curve is linear between samples, with
@@ -275,7 +290,8 @@ BOOST_AUTO_TEST_CASE(claimed_curves_switches_and_labels) {
         for (int i = 0; i <= 12; ++i) {
             const Q x = Q(1, 2) + Q(i, 8);
             const Q f = x <= 1 ? Q(Q(9, 2) - Q(5, 2) * x) : Q((18 - 4 * x) / 7);
-            vs += std::string(i ? ", " : "") + "[\"" + to_exact_string(x) + "\", \"" + to_exact_string(Q(f + Q(1, 1000))) + "\"]";
+            vs += std::string(i ? ", " : "") + "[\"" + to_exact_string(x) + "\", \"" +
+                  to_exact_string(Q(f + Q(1, 1000))) + "\"]";
         }
         j = k.one(R"({"kind": "curve", "vertices": [)" + vs + R"(], "switch_points": []})");
         BOOST_TEST(!j["right"].get<bool>());
@@ -283,7 +299,9 @@ BOOST_AUTO_TEST_CASE(claimed_curves_switches_and_labels) {
         BOOST_TEST(j["max_vertical_error"] == "1/1000");
     }
     // An extra switch point.
-    j = k.one(R"({"kind": "curve", "vertices": [["1/2", "13/4"], [1, 2], [2, "10/7"]], "switch_points": [[1, 2], ["3/2", "12/7"]]})");
+    j = k.one(
+        R"({"kind": "curve", "vertices": [["1/2", "13/4"], [1, 2], [2, "10/7"]], "switch_points": [[1, 2], ["3/2", )"
+        R"("12/7"]]})");
     BOOST_TEST(j["switch_points_extra"].size() == 1u);
     // Switch points and the growth distance, exact or within a tolerance.
     BOOST_TEST(k.right(R"({"kind": "switch_point", "rho1": 1, "rho2": 2, "contact": "VE"})"));
@@ -315,16 +333,24 @@ BOOST_AUTO_TEST_CASE(malformed_claims_get_one_line) {
         }
         return std::string();
     };
-    BOOST_TEST(err(R"({"format": "scalecert-claims-1", "claims": [{"kind": "area"}]})").find("claims[0].kind: unknown kind 'area'") != std::string::npos);
-    BOOST_TEST(err(R"({"format": "scalecert-claims-1", "claims": [{"kind": "distance", "rho1": 1, "rho2": 1}]})") == "c.json: claims[0].value: missing");
-    BOOST_TEST(err(R"({"format": "scalecert-claims-1", "claims": [{"kind": "growth_distance", "value": 1, "valu": 2}]})") == "c.json: claims[0].valu: unknown field");
+    BOOST_TEST(err(R"({"format": "scalecert-claims-1", "claims": [{"kind": "area"}]})")
+                   .find("claims[0].kind: unknown kind 'area'") != std::string::npos);
+    BOOST_TEST(err(R"({"format": "scalecert-claims-1", "claims": [{"kind": "distance", "rho1": 1, "rho2": 1}]})") ==
+               "c.json: claims[0].value: missing");
+    BOOST_TEST(
+        err(R"({"format": "scalecert-claims-1", "claims": [{"kind": "growth_distance", "value": 1, "valu": 2}]})") ==
+        "c.json: claims[0].valu: unknown field");
     BOOST_TEST(err(R"({"format": "scalecert-claims-2", "claims": []})").find("format") != std::string::npos);
-    BOOST_TEST(err(R"({"format": "scalecert-claims-1", "claims": [], "claims": []})").find("duplicate") != std::string::npos);
+    BOOST_TEST(err(R"({"format": "scalecert-claims-1", "claims": [], "claims": []})").find("duplicate") !=
+               std::string::npos);
     // A zero normal is a wrong claim, not a malformed one (outputs_that_are_no_answer).
-    BOOST_TEST(err(R"({"format": "scalecert-claims-1", "claims": [{"kind": "separating_plane", "rho1": 1, "rho2": 1, "normal": [0, 0, 0]}]})").empty());
-    BOOST_TEST(err(R"({"format": "scalecert-claims-1", "claims": [{"kind": "verdict", "rho1": 0, "rho2": 1, "verdict": "separated"}]})").find("> 0") != std::string::npos);
+    BOOST_TEST(err(R"({"format": "scalecert-claims-1", "claims": [{"kind": "separating_plane", "rho1": 1, "rho2": 1, )"
+                   R"("normal": [0, 0, 0]}]})")
+                   .empty());
+    BOOST_TEST(err(R"({"format": "scalecert-claims-1", "claims": [{"kind": "verdict", "rho1": 0, "rho2": 1, )"
+                   R"("verdict": "separated"}]})")
+                   .find("> 0") != std::string::npos);
 }
-
 
 BOOST_AUTO_TEST_CASE(outputs_that_are_no_answer) {
     // CLAIMS.md, "Outputs that are no answer", by hand on the stacked cubes: P1(1) = [0, 2]^3 and
@@ -339,12 +365,14 @@ BOOST_AUTO_TEST_CASE(outputs_that_are_no_answer) {
         {"kind": "distance", "rho1": 1, "rho2": 0.5, "value": 1.5, "closest": [[1, 1, 2], [1, 1, -Infinity]]},
         {"kind": "curve_point", "rho1": 1, "rho2": Infinity},
         {"kind": "growth_distance", "value": null}]})";
-    const nlohmann::json r = nlohmann::json::parse(certify_fp(k.m, k.c, batch, "c.json", ClaimOptions{false, Q(0), true}, &wrong));
+    const nlohmann::json r =
+        nlohmann::json::parse(certify_fp(k.m, k.c, batch, "c.json", ClaimOptions{false, Q(0), true}, &wrong));
     BOOST_TEST(wrong == 6);
     const auto& cl = r["claims"];
     BOOST_TEST(cl[0]["right"].get<bool>());
     const char* field[] = {"", "value", "direction", "normal", "closest", "rho2", "value"};
-    const char* reason[] = {"", "not a number", "the zero vector", "not a number", "not a number", "not a number", "not a number"};
+    const char* reason[] = {
+        "", "not a number", "the zero vector", "not a number", "not a number", "not a number", "not a number"};
     for (int i = 1; i < 7; ++i) {
         BOOST_TEST(!cl[i]["right"].get<bool>(), i);
         BOOST_TEST(cl[i]["no_answer"] == field[i], i);
@@ -352,7 +380,8 @@ BOOST_AUTO_TEST_CASE(outputs_that_are_no_answer) {
     }
     // The line format: printf's nan and inf where the program answers; a non-number scaling is
     // bad input, as is a non-number in a curve claim.
-    const std::string lines = certify_fp(ClaimModels::of(k.m, k.c), "growth nan\ncurve 1 -INF\ngrowth 3/2\n", "c.txt", ClaimOptions{false, Q(0), false}, &wrong, &count);
+    const std::string lines = certify_fp(ClaimModels::of(k.m, k.c), "growth nan\ncurve 1 -INF\ngrowth 3/2\n", "c.txt",
+                                         ClaimOptions{false, Q(0), false}, &wrong, &count);
     BOOST_TEST(wrong == 2);
     BOOST_TEST(count == 3);
     BOOST_TEST(lines.find("WRONG  growth distance nan: value is not a number: no answer") != std::string::npos, lines);
@@ -360,7 +389,8 @@ BOOST_AUTO_TEST_CASE(outputs_that_are_no_answer) {
     BOOST_CHECK_THROW(k.one(R"({"kind": "verdict", "rho1": NaN, "rho2": 1, "verdict": "separated"})"), InputError);
     BOOST_CHECK_THROW(k.one(R"({"kind": "curve", "vertices": [[1, 2], [2, NaN]]})"), InputError);
     // An empty batch is judged: 0 claims, none wrong.
-    for (const std::string& empty : {std::string(R"({"format": "scalecert-claims-1", "claims": []})"), std::string("# nothing\n\n")}) {
+    for (const std::string& empty :
+         {std::string(R"({"format": "scalecert-claims-1", "claims": []})"), std::string("# nothing\n\n")}) {
         wrong = count = -1;
         certify_fp(ClaimModels::of(k.m, k.c), empty, "c", ClaimOptions{}, &wrong, &count);
         BOOST_TEST(wrong == 0);

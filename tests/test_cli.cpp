@@ -83,29 +83,41 @@ BOOST_AUTO_TEST_CASE(bad_inputs) {
     auto S = [&](const std::string& name, const std::string& text) { return "curve " + write(name, text).string(); };
     expect_error("malformed JSON", S("a.json", "{\"P1\": "), "malformed JSON");
     expect_error("not an object", S("b.json", "[1,2]"), "JSON object");
-    expect_error("missing I2", S("c.json", "{\"P1\": " + poly(kCube1) + ", \"P2\": " + poly(kCube2) + ", \"I1\": [1,2]}"), "\"I2\"");
+    expect_error("missing I2",
+                 S("c.json", "{\"P1\": " + poly(kCube1) + ", \"P2\": " + poly(kCube2) + ", \"I1\": [1,2]}"), "\"I2\"");
     expect_error("missing vertices", S("d.json", scene("{}", poly(kCube2))), "P1");
-    expect_error("NaN literal", S("e.json", scene(poly("[[NaN,0,0],[1,0,0],[0,1,0],[0,0,1]]"), poly(kCube2))), "malformed JSON");
-    expect_error("NaN string", S("f.json", scene(poly("[[\"NaN\",0,0],[1,0,0],[0,1,0],[0,0,1]]"), poly(kCube2))), "P1.vertices[0][0]");
+    expect_error("NaN literal", S("e.json", scene(poly("[[NaN,0,0],[1,0,0],[0,1,0],[0,0,1]]"), poly(kCube2))),
+                 "malformed JSON");
+    expect_error("NaN string", S("f.json", scene(poly("[[\"NaN\",0,0],[1,0,0],[0,1,0],[0,0,1]]"), poly(kCube2))),
+                 "P1.vertices[0][0]");
     expect_error("Inf string", S("g.json", scene(poly(kCube1), poly(kCube2), "[\"inf\", 2]")), "I1[0]");
-    expect_error("inf as binary double", S("h.json", scene(poly(kCube1), poly(kCube2), "[1e999, 2]")) + " --binary-doubles", "beyond the double range");
-    expect_error("3 vertices", S("i.json", scene(poly("[[0,0,0],[1,0,0],[0,1,0]]"), poly(kCube2))), "fewer than 4 vertices");
-    expect_error("flat", S("j.json", scene(poly("[[0,0,0],[1,0,0],[0,1,0],[1,1,0],[3,3,0]]"), poly(kCube2))), "affinely independent");
+    expect_error("inf as binary double",
+                 S("h.json", scene(poly(kCube1), poly(kCube2), "[1e999, 2]")) + " --binary-doubles",
+                 "beyond the double range");
+    expect_error("3 vertices", S("i.json", scene(poly("[[0,0,0],[1,0,0],[0,1,0]]"), poly(kCube2))),
+                 "fewer than 4 vertices");
+    expect_error("flat", S("j.json", scene(poly("[[0,0,0],[1,0,0],[0,1,0],[1,1,0],[3,3,0]]"), poly(kCube2))),
+                 "affinely independent");
     expect_error("seed on boundary", S("k.json", scene(poly(kCube1, ", \"seed\": [1,1,2]"), poly(kCube2))), "P1.seed");
     expect_error("seed outside", S("l.json", scene(poly(kCube1), poly(kCube2, ", \"seed\": [9,9,9]"))), "P2.seed");
     expect_error("lo = 0", S("m.json", scene(poly(kCube1), poly(kCube2), "[0, 2]")), "I1");
     expect_error("lo < 0", S("n.json", scene(poly(kCube1), poly(kCube2), "[1, 2]", "[-1, 2]")), "I2");
     expect_error("lo > hi", S("o.json", scene(poly(kCube1), poly(kCube2), "[3, 2]")), "lo > hi");
-    expect_error("bad number text", S("p.json", scene(poly(kCube1), poly(kCube2), "[\"1.2.3\", 2]")), "not an exact number");
+    expect_error("bad number text", S("p.json", scene(poly(kCube1), poly(kCube2), "[\"1.2.3\", 2]")),
+                 "not an exact number");
     expect_error("huge exponent", S("q.json", scene(poly(kCube1), poly(kCube2), "[\"1e99999999\", 2]")), "exponent");
     // Within the exponent's range but past 16,384 bits (read in full, 1e-99990 would cost
     // seconds a claim); 10^4932 < 2^16384 < 10^4933.
     expect_error("a number past 16384 bits", S("q2.json", scene(poly(kCube1), poly(kCube2), "[\"1e-99990\", 2]")),
                  "'1e-99990' has more than 16384 bits in its numerator or denominator");
-    expect_error("10^4933", S("q3.json", scene(poly(kCube1), poly(kCube2), "[\"1e4933\", \"1e4933\"]")), "more than 16384 bits");
-    BOOST_TEST(run("curve " + write("q4.json", scene(poly(kCube1), poly(kCube2), "[\"1e4932\", \"1e4932\"]")).string()).status == 0);
-    expect_error("zero denominator", S("r.json", scene(poly(kCube1), poly(kCube2), "[\"1/0\", 2]")), "zero denominator");
-    expect_error("point with 2 coordinates", S("s.json", scene(poly("[[0,0],[1,0,0],[0,1,0],[0,0,1]]"), poly(kCube2))), "3 coordinates");
+    expect_error("10^4933", S("q3.json", scene(poly(kCube1), poly(kCube2), "[\"1e4933\", \"1e4933\"]")),
+                 "more than 16384 bits");
+    BOOST_TEST(run("curve " + write("q4.json", scene(poly(kCube1), poly(kCube2), "[\"1e4932\", \"1e4932\"]")).string())
+                   .status == 0);
+    expect_error("zero denominator", S("r.json", scene(poly(kCube1), poly(kCube2), "[\"1/0\", 2]")),
+                 "zero denominator");
+    expect_error("point with 2 coordinates", S("s.json", scene(poly("[[0,0],[1,0,0],[0,1,0],[0,0,1]]"), poly(kCube2))),
+                 "3 coordinates");
     expect_error("missing OFF", S("t.json", scene("{\"off\": \"nowhere.off\"}", poly(kCube2))), "cannot open");
     write("bad1.off", "OFF\n8 6 0\n0 0 0\n1 0 0\n");
     expect_error("short OFF", S("u.json", scene("{\"off\": \"bad1.off\"}", poly(kCube2))), "malformed OFF");
@@ -178,18 +190,27 @@ BOOST_AUTO_TEST_CASE(json_is_read_as_rfc_8259_says) {
     const std::string P1 = poly(kCube1), P2 = poly(kCube2);
     auto S = [&](const std::string& name, const std::string& text) { return "curve " + write(name, text).string(); };
     // 10^6 levels of nesting overflowed the stack in the tree's recursive destructor.
-    expect_error("nested 10^6 deep", S("deep.json", std::string(1000000, '[') + std::string(1000000, ']')), "nested deeper than 64");
+    expect_error("nested 10^6 deep", S("deep.json", std::string(1000000, '[') + std::string(1000000, ']')),
+                 "nested deeper than 64");
     expect_error("leading zero", S("lz.json", scene(poly("[[0,0,0],[2,0,0],[0,2,0],[0,0,02]]"), P2)), "leading zero");
-    expect_error("line comment", S("cm.json", "{\"P1\": " + P1 + ", // P2 next\n\"P2\": " + P2 + ", \"I1\": [1,2], \"I2\": [1,2]}"), "comments are not JSON");
-    expect_error("numeric key", S("nk.json", "{\"P1\": " + P1 + ", 5: 1, \"P2\": " + P2 + ", \"I1\": [1,2], \"I2\": [1,2]}"), "expected a string key");
+    expect_error("line comment",
+                 S("cm.json", "{\"P1\": " + P1 + ", // P2 next\n\"P2\": " + P2 + ", \"I1\": [1,2], \"I2\": [1,2]}"),
+                 "comments are not JSON");
+    expect_error("numeric key",
+                 S("nk.json", "{\"P1\": " + P1 + ", 5: 1, \"P2\": " + P2 + ", \"I1\": [1,2], \"I2\": [1,2]}"),
+                 "expected a string key");
     expect_error("trailing comma", S("tc.json", scene(P1, P2, "[1, 2,]")), "malformed JSON");
     // The first value used to win here, the last in the checker: one file, two meanings.
-    expect_error("duplicate key", S("dk.json", scene(P1, P2) .substr(0, scene(P1, P2).size() - 1) + ", \"I1\": [1, 3]}"), "duplicate key 'I1'");
-    expect_error("duplicate key in P1", S("dk2.json", scene("{\"vertices\": " + kCube1 + ", \"vertices\": " + kCube2 + "}", P2)), "duplicate key 'vertices'");
+    expect_error("duplicate key", S("dk.json", scene(P1, P2).substr(0, scene(P1, P2).size() - 1) + ", \"I1\": [1, 3]}"),
+                 "duplicate key 'I1'");
+    expect_error("duplicate key in P1",
+                 S("dk2.json", scene("{\"vertices\": " + kCube1 + ", \"vertices\": " + kCube2 + "}", P2)),
+                 "duplicate key 'vertices'");
     expect_error("unknown field", S("uf.json", scene(poly(kCube1, ", \"sead\": [1,1,1]"), P2)), "unknown field 'sead'");
     // Lead bytes 0xF5-0xFF and 0xC0-0xC1, overlong forms, surrogates and lone continuation bytes.
     for (const char* bad : {"\xff", "\xf5\x80\x80", "\xc0\xaf", "\xe0\x80\xaf", "\xed\xa0\x80", "\x80", "\xe2\x82"})
-        expect_error("invalid UTF-8", S("u8.json", scene(P1, P2, "[\"1" + std::string(bad) + "\", 2]")), "invalid UTF-8");
+        expect_error("invalid UTF-8", S("u8.json", scene(P1, P2, "[\"1" + std::string(bad) + "\", 2]")),
+                     "invalid UTF-8");
     // Valid UTF-8 in a string is read (and the number it spoils reported, quoted).
     expect_error("valid UTF-8", S("u8ok.json", scene(P1, P2, "[\"1\xe2\x82\xac\", 2]")), "is not an exact number");
 }
@@ -202,7 +223,8 @@ BOOST_AUTO_TEST_CASE(huge_json_objects_and_arrays_are_bounded) {
     keys += "\"k7\": 1}}";
     fs::path kp = write("many-keys.json", keys);
     fs::path e = workdir() / "keys-err.txt";
-    int raw = std::system(("timeout 20 " + std::string(SCALECERT_BIN) + " curve " + kp.string() + " >/dev/null 2>" + e.string()).c_str());
+    int raw = std::system(
+        ("timeout 20 " + std::string(SCALECERT_BIN) + " curve " + kp.string() + " >/dev/null 2>" + e.string()).c_str());
     BOOST_TEST((WIFEXITED(raw) && WEXITSTATUS(raw) == 2), "exit " << (WIFEXITED(raw) ? WEXITSTATUS(raw) : -1));
     BOOST_TEST(slurp(e).find("duplicate key 'k7'") != std::string::npos, slurp(e));
     // 8,100,001 values: refused by the reader, before a tree of 100 million nodes could be built
@@ -211,16 +233,19 @@ BOOST_AUTO_TEST_CASE(huge_json_objects_and_arrays_are_bounded) {
     vals.reserve(16300000);
     for (int i = 0; i < 8100000; ++i) vals += ",0";
     vals += "]}}";
-    expect_error("too many JSON values", "curve " + write("many-values.json", vals).string(), "more than 8100000 JSON values");
+    expect_error("too many JSON values", "curve " + write("many-values.json", vals).string(),
+                 "more than 8100000 JSON values");
 }
 
 BOOST_AUTO_TEST_CASE(error_messages_are_one_line_with_the_file_and_cut) {
     const std::string P2 = poly(kCube2);
     auto S = [&](const std::string& name, const std::string& text) { return "curve " + write(name, text).string(); };
     // '1/2/3' was reported as '2/3'.
-    expect_error("1/2/3", S("s3.json", scene(poly(kCube1), P2, "[\"1/2/3\", 2]")), "I1[0]: '1/2/3' is not an exact number");
+    expect_error("1/2/3", S("s3.json", scene(poly(kCube1), P2, "[\"1/2/3\", 2]")),
+                 "I1[0]: '1/2/3' is not an exact number");
     // A newline inside a number string (a JSON escape) stays inside the one line.
-    expect_error("newline in a number", S("nl.json", scene(poly(kCube1), P2, "[\"1\\n2\", 2]")), "'1\\x0a2' is not an exact number");
+    expect_error("newline in a number", S("nl.json", scene(poly(kCube1), P2, "[\"1\\n2\", 2]")),
+                 "'1\\x0a2' is not an exact number");
     // A 1 MB number is cut, not echoed.
     const std::string huge(1000000, '7');
     fs::path hp = write("huge.json", scene(poly(kCube1), P2, "[\"" + huge + "x\", 2]"));
@@ -233,15 +258,17 @@ BOOST_AUTO_TEST_CASE(error_messages_are_one_line_with_the_file_and_cut) {
     expect_error("newline in a file name", "curve '" + odd.string() + "'", "bad\\x0aname.json: cannot open");
     // Geometric errors found after reading name the file too.
     fs::path flat = write("flat.json", scene(poly("[[0,0,0],[1,0,0],[0,1,0],[1,1,0]]"), P2));
-    expect_error("flat names its file", "curve " + flat.string(), flat.string() + ": P1: fewer than 4 affinely independent");
+    expect_error("flat names its file", "curve " + flat.string(),
+                 flat.string() + ": P1: fewer than 4 affinely independent");
 }
 
 BOOST_AUTO_TEST_CASE(empty_output_names_are_refused) {
     // An empty --out wrote to standard output, as if it were not given; --dir "" and --csv "" alike.
     const fs::path g = write("empty-out.json", scene(poly(kCube1), poly(kCube2)));
-    for (const std::string& args : std::vector<std::string>{"curve " + g.string() + " --out ''", "partition " + g.string() + " --out ''",
-                                    "golden --family random --count 1 --dir ''",
-                                    "audit " + g.string() + " --methods libccd-gjk --out a.json --csv ''"}) {
+    for (const std::string& args :
+         std::vector<std::string>{"curve " + g.string() + " --out ''", "partition " + g.string() + " --out ''",
+                                  "golden --family random --count 1 --dir ''",
+                                  "audit " + g.string() + " --methods libccd-gjk --out a.json --csv ''"}) {
         const Run r = run(args);
         BOOST_TEST_CONTEXT(args) {
             BOOST_TEST(r.status == 2);
@@ -263,7 +290,8 @@ BOOST_AUTO_TEST_CASE(audit_arguments_that_crashed_or_never_ended_are_refused) {
     expect_error("sweep-to too far", "audit --family random --sweep 1 --sweep-to 5000", "--sweep-to");
     expect_error("unknown family", "audit --family bogus --sweep 1 --sweep-to 2", "unknown family 'bogus'");
     // The CSV was written before the JSON failed: now both or neither.
-    const std::string both = " --out " + (workdir() / "both.json").string() + " --csv " + (workdir() / "both.csv").string();
+    const std::string both =
+        " --out " + (workdir() / "both.json").string() + " --csv " + (workdir() / "both.csv").string();
     fs::create_directories(workdir() / "both.json");  // the JSON target cannot be replaced
     Run a = run("audit " + g.string() + " --methods libccd-gjk" + both);
     BOOST_TEST(a.status == 2);
@@ -351,9 +379,12 @@ BOOST_AUTO_TEST_CASE(outputs_go_only_to_regular_files_and_directories_we_can_mak
     BOOST_TEST(slurp(gl / "keep.txt") == "kept");
     // Golden's JSON names its scene by file name, however the path was spelled.
     const fs::path gp = workdir() / "golden-spelled";
-    BOOST_TEST(run("golden " + std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/../scenes/stacked_cubes.json --dir " + gp.string()).status == 0);
+    BOOST_TEST(run("golden " + std::string(SCALECERT_SOURCE_DIR) +
+                   "/certificates/scenes/../scenes/stacked_cubes.json --dir " + gp.string())
+                   .status == 0);
     BOOST_TEST(slurp(gp / "stacked_cubes.golden.json") == slurp(gd / "stacked_cubes.golden.json"));
-    BOOST_TEST(slurp(gd / "stacked_cubes.golden.json").find("\"scene_file\": \"stacked_cubes.scene.json\"") != std::string::npos);
+    BOOST_TEST(slurp(gd / "stacked_cubes.golden.json").find("\"scene_file\": \"stacked_cubes.scene.json\"") !=
+               std::string::npos);
     // --scene is SCENES; --p1/--p2 a pair of meshes, its scene written as DIR/P1-P2.scene.json. The
     // tetrahedron (0,0,0), (2,0,0), (0,2,0), (0,0,2) (seed its mean (1/2, 1/2, 1/2)) and the box
     // [3,5] x [0,2]^2 (seed (4, 1, 1)): the vertex (2,0,0) reaches x = 1/2 + 3ρ1/2 and the box's
@@ -365,7 +396,9 @@ BOOST_AUTO_TEST_CASE(outputs_go_only_to_regular_files_and_directories_we_can_mak
     const fs::path tet = write("tet.off", "OFF\n4 0 0\n0 0 0\n2 0 0\n0 2 0\n0 0 2\n");
     const fs::path boxm = write("box.off", "OFF\n8 0 0\n3 0 0\n5 0 0\n3 2 0\n5 2 0\n3 0 2\n5 0 2\n3 2 2\n5 2 2\n");
     const fs::path gm = workdir() / "golden-meshes";
-    BOOST_TEST(run("golden --p1 " + tet.string() + " --p2 " + boxm.string() + " --i1 1/2,2 --i2 1/2,2 --dir " + gm.string()).status == 0);
+    BOOST_TEST(
+        run("golden --p1 " + tet.string() + " --p2 " + boxm.string() + " --i1 1/2,2 --i2 1/2,2 --dir " + gm.string())
+            .status == 0);
     BOOST_TEST(fs::exists(gm / "tet-box.scene.json"));
     BOOST_TEST(!fs::exists(gm / "tet-box.json"));  // three files, as for a scene
     BOOST_TEST(slurp(gm / "tet-box.golden.json").find("\"scene_file\": \"tet-box.scene.json\"") != std::string::npos);
@@ -374,15 +407,16 @@ BOOST_AUTO_TEST_CASE(outputs_go_only_to_regular_files_and_directories_we_can_mak
     for (std::string line; std::getline(csv, line);) {
         double a = 0, b = 0;
         char where[32] = {};
-        if (std::sscanf(line.c_str(), "%lf,%lf,%31[^,]", &a, &b, where) == 3 && std::string(where) == "on" && a <= 1.5) {
+        if (std::sscanf(line.c_str(), "%lf,%lf,%31[^,]", &a, &b, where) == 3 && std::string(where) == "on" &&
+            a <= 1.5) {
             BOOST_TEST(std::fabs(b - (3.5 - 1.5 * a)) <= 1e-12, line);
             ++on;
         }
     }
     BOOST_TEST(on > 0);
     // A missing mesh: one line, exit 2, no directory.
-    Run gx = run("golden --p1 " + tet.string() + " --p2 " + (workdir() / "no.off").string() + " --i1 1/2,2 --i2 1/2,2 --dir " +
-                 (workdir() / "never-made-4").string());
+    Run gx = run("golden --p1 " + tet.string() + " --p2 " + (workdir() / "no.off").string() +
+                 " --i1 1/2,2 --i2 1/2,2 --dir " + (workdir() / "never-made-4").string());
     BOOST_TEST(gx.status == 2);
     BOOST_TEST(!fs::exists(workdir() / "never-made-4"));
 }
@@ -392,7 +426,8 @@ BOOST_AUTO_TEST_CASE(claims_and_pairs_must_be_files) {
     // A directory is no claims file (it must not pass as an empty batch).
     expect_error("claims directory", "certify-fp " + g.string() + " " + workdir().string(), "is a directory");
     // An empty batch is judged: 0 claims, exit 0; with a certificate the checker accepts.
-    for (const std::string& text : {std::string("# nothing\n\n"), std::string(R"({"format": "scalecert-claims-1", "claims": []})")}) {
+    for (const std::string& text :
+         {std::string("# nothing\n\n"), std::string(R"({"format": "scalecert-claims-1", "claims": []})")}) {
         const fs::path empty = write("empty-claims.txt", text), cert = workdir() / "empty.cert.json";
         fs::remove(cert);
         Run r = run("certify-fp " + g.string() + " " + empty.string() + " --certificate " + cert.string());
@@ -414,11 +449,14 @@ BOOST_AUTO_TEST_CASE(inputs_beyond_the_limits_are_refused_with_exit_2) {
     expect_error("scene over 256 MiB", "curve " + sparse.string(), "larger than 256 MiB");
     fs::remove(sparse);
     write("many.off", "OFF\n1000001 0 0\n0 0 0\n");
-    expect_error("OFF over 10^6 vertices", "curve " + write("many.json", scene("{\"off\": \"many.off\"}", poly(kCube2))).string(), "more than 1000000");
+    expect_error("OFF over 10^6 vertices",
+                 "curve " + write("many.json", scene("{\"off\": \"many.off\"}", poly(kCube2))).string(),
+                 "more than 1000000");
     std::string pts = "[";
     for (int i = 0; i < 1000001; ++i) pts += i ? ",[0,0,0]" : "[0,0,0]";
     pts += "]";
-    expect_error("JSON over 10^6 points", "curve " + write("many2.json", scene(poly(pts), poly(kCube2))).string(), "more than 1000000 points");
+    expect_error("JSON over 10^6 points", "curve " + write("many2.json", scene(poly(pts), poly(kCube2))).string(),
+                 "more than 1000000 points");
     // The common denominator of a polyhedron's coordinates: 2,000 distinct primes above 2^15
     // give far more than 16,384 bits (each adds about 15).
     std::string v = "[[0,0,0],[1,0,0],[0,1,0],[0,0,1]";
@@ -431,7 +469,8 @@ BOOST_AUTO_TEST_CASE(inputs_beyond_the_limits_are_refused_with_exit_2) {
         v += ",[\"1/" + std::to_string(p) + "\",\"1/" + std::to_string(p) + "\",\"1/" + std::to_string(p) + "\"]";
     }
     v += "]";
-    expect_error("common denominator over 16384 bits", "curve " + write("dens.json", scene(poly(v), poly(kCube2))).string(),
+    expect_error("common denominator over 16384 bits",
+                 "curve " + write("dens.json", scene(poly(v), poly(kCube2))).string(),
                  "common denominator of the coordinates has more than 16384 bits");
 }
 
@@ -450,13 +489,16 @@ BOOST_AUTO_TEST_CASE(out_of_memory_exits_2_with_one_line) {
     std::string v = "[";
     for (int i = 0; i < 3000; ++i) {
         v += i ? ",[" : "[";
-        for (int c = 0; c < 3; ++c) v += std::string(c ? "," : "") + "\"" + std::to_string(u(g)) + std::string(4894, '7') + "\"";
+        for (int c = 0; c < 3; ++c)
+            v += std::string(c ? "," : "") + "\"" + std::to_string(u(g)) + std::string(4894, '7') + "\"";
         v += "]";
     }
     v += "]";
     fs::path p = write("gmp-big.json", scene(poly(v), poly(kCube2)));
     fs::path err = workdir() / "oom-err.txt";
-    int raw = std::system(("ulimit -v 120000; " + std::string(SCALECERT_BIN) + " curve " + p.string() + " >/dev/null 2>" + err.string()).c_str());
+    int raw = std::system(
+        ("ulimit -v 120000; " + std::string(SCALECERT_BIN) + " curve " + p.string() + " >/dev/null 2>" + err.string())
+            .c_str());
     BOOST_TEST((WIFEXITED(raw) && WEXITSTATUS(raw) == 2));
     const std::string e = slurp(err);
     BOOST_TEST(e == "scalecert: error: out of memory\n", e);
@@ -466,7 +508,8 @@ BOOST_AUTO_TEST_CASE(out_of_memory_exits_2_with_one_line) {
 namespace {
 // The tetrahedron on a box (tests/test_hand_curves.cpp derives its curve by hand).
 const std::vector<std::array<int, 3>> kTetra = {{2, 0, 2}, {-2, 2, 5}, {-1, -2, 6}, {2, 0, 7}};
-const std::vector<std::array<int, 3>> kBox = {{-1, -1, -1}, {1, -1, -1}, {-1, 1, -1}, {1, 1, -1}, {-1, -1, 1}, {1, -1, 1}, {-1, 1, 1}, {1, 1, 1}};
+const std::vector<std::array<int, 3>> kBox = {{-1, -1, -1}, {1, -1, -1}, {-1, 1, -1}, {1, 1, -1},
+                                              {-1, -1, 1},  {1, -1, 1},  {-1, 1, 1},  {1, 1, 1}};
 template <class T>
 void put_bytes(std::string& out, T v, bool big_endian) {
     char b[sizeof(T)];
@@ -477,7 +520,8 @@ void put_bytes(std::string& out, T v, bool big_endian) {
 // Consecutive vertices as "triangles" (wrapping at the end): first appearance is list order.
 std::vector<std::array<std::array<int, 3>, 3>> triangles(const std::vector<std::array<int, 3>>& v) {
     std::vector<std::array<std::array<int, 3>, 3>> t;
-    for (size_t i = 0; i < v.size(); i += 3) t.push_back({v[i % v.size()], v[(i + 1) % v.size()], v[(i + 2) % v.size()]});
+    for (size_t i = 0; i < v.size(); i += 3)
+        t.push_back({v[i % v.size()], v[(i + 1) % v.size()], v[(i + 2) % v.size()]});
     return t;
 }
 }  // namespace
@@ -487,24 +531,37 @@ BOOST_AUTO_TEST_CASE(mesh_files_read_exactly_like_json) {
     const std::string want = run("partition " + ref.string()).out;
     BOOST_TEST_REQUIRE(!want.empty());
     std::string obj = "# tetrahedron\nvn 0 0 1\n";
-    for (const auto& v : kTetra) obj += "v " + std::to_string(v[0]) + " " + std::to_string(v[1]) + " " + std::to_string(v[2]) + "\n";
+    for (const auto& v : kTetra)
+        obj += "v " + std::to_string(v[0]) + " " + std::to_string(v[1]) + " " + std::to_string(v[2]) + "\n";
     obj += "f 1 2 3\n";
     write("p1.obj", obj);
     std::string obj_w = "v 4 0 4 2\nv -4 4 10 2\nv -1 -2 6\nv 6 0 21 3\n";  // homogeneous: the same points
     write("p1w.obj", obj_w);
     std::map<std::string, std::string> p2;
     {
-        std::string t = "ply\nformat ascii 1.0\ncomment a box\nelement vertex 8\nproperty float x\nproperty float y\nproperty float z\n"
-                        "element face 0\nproperty list uchar int vertex_indices\nend_header\n";
-        for (const auto& v : kBox) t += std::to_string(v[0]) + " " + std::to_string(v[1]) + " " + std::to_string(v[2]) + "\n";
+        std::string t =
+            "ply\nformat ascii 1.0\ncomment a box\nelement vertex 8\nproperty float x\nproperty float y\nproperty "
+            "float z\n"
+            "element face 0\nproperty list uchar int vertex_indices\nend_header\n";
+        for (const auto& v : kBox)
+            t += std::to_string(v[0]) + " " + std::to_string(v[1]) + " " + std::to_string(v[2]) + "\n";
         p2["ascii.ply"] = t;
     }
     for (bool be : {false, true}) {  // doubles, an extra byte and ints, after an element with a list
         std::string t = std::string("ply\nformat ") + (be ? "binary_big_endian" : "binary_little_endian") +
                         " 1.0\nelement skipped 2\nproperty list uchar short ids\nelement vertex 8\nproperty double x\n"
                         "property uchar junk\nproperty float y\nproperty int z\nend_header\n";
-        for (int k = 0; k < 2; ++k) { put_bytes<unsigned char>(t, 2, be); put_bytes<short>(t, 7, be); put_bytes<short>(t, 9, be); }
-        for (const auto& v : kBox) { put_bytes<double>(t, v[0], be); put_bytes<unsigned char>(t, 5, be); put_bytes<float>(t, static_cast<float>(v[1]), be); put_bytes<int>(t, v[2], be); }
+        for (int k = 0; k < 2; ++k) {
+            put_bytes<unsigned char>(t, 2, be);
+            put_bytes<short>(t, 7, be);
+            put_bytes<short>(t, 9, be);
+        }
+        for (const auto& v : kBox) {
+            put_bytes<double>(t, v[0], be);
+            put_bytes<unsigned char>(t, 5, be);
+            put_bytes<float>(t, static_cast<float>(v[1]), be);
+            put_bytes<int>(t, v[2], be);
+        }
         p2[be ? "be.ply" : "le.ply"] = t;
     }
     {
@@ -515,7 +572,8 @@ BOOST_AUTO_TEST_CASE(mesh_files_read_exactly_like_json) {
             a += " facet normal 0 0 1\n  outer loop\n";
             for (int k = 0; k < 3; ++k) put_bytes<float>(b, 0.0f, false);
             for (const auto& v : tri) {
-                a += "   vertex " + std::to_string(v[0]) + " " + std::to_string(v[1]) + " " + std::to_string(v[2]) + "\n";
+                a += "   vertex " + std::to_string(v[0]) + " " + std::to_string(v[1]) + " " + std::to_string(v[2]) +
+                     "\n";
                 for (int k = 0; k < 3; ++k) put_bytes<float>(b, static_cast<float>(v[k]), false);
             }
             a += "  endloop\n endfacet\n";
@@ -527,13 +585,15 @@ BOOST_AUTO_TEST_CASE(mesh_files_read_exactly_like_json) {
     for (const auto& [name, bytes] : p2) {
         fs::path f = write("p2-" + name, bytes);
         for (const char* p1 : {"p1.obj", "p1w.obj"}) {
-            Run r = run("partition --p1 " + (workdir() / p1).string() + " --p2 " + f.string() + " --i1 1/2,2 --i2 1,4 --seed1 0,0,9/2 --seed2 0,0,0");
+            Run r = run("partition --p1 " + (workdir() / p1).string() + " --p2 " + f.string() +
+                        " --i1 1/2,2 --i2 1,4 --seed1 0,0,9/2 --seed2 0,0,0");
             BOOST_TEST(r.status == 0, name << ": " << r.err);
             BOOST_TEST((r.out == want), name << " with " << p1 << ": the certificate differs from the JSON scene's");
         }
         // The same through a scene file's "mesh" key.
-        fs::path sf = write("mesh-scene.json", "{\"P1\": {\"mesh\": \"p1.obj\", \"seed\": [0,0,\"9/2\"]}, \"P2\": {\"mesh\": \"p2-" + name +
-                                                    "\", \"seed\": [0,0,0]}, \"I1\": [\"1/2\", 2], \"I2\": [1, 4]}");
+        fs::path sf = write("mesh-scene.json",
+                            "{\"P1\": {\"mesh\": \"p1.obj\", \"seed\": [0,0,\"9/2\"]}, \"P2\": {\"mesh\": \"p2-" +
+                                name + "\", \"seed\": [0,0,0]}, \"I1\": [\"1/2\", 2], \"I2\": [1, 4]}");
         BOOST_TEST((run("partition " + sf.string()).out == want), name << " through \"mesh\"");
     }
 }
@@ -543,11 +603,13 @@ BOOST_AUTO_TEST_CASE(mesh_scenes_take_the_commands_own_positionals) {
     // The tetrahedron and box of tetra_box_switch (test_hand_curves): at ρ1 = 1/2 the curve is at
     // 13/4 (touching), below it at 3 separated, above it at 7/2 overlapping.
     std::string obj;
-    for (const auto& v : kTetra) obj += "v " + std::to_string(v[0]) + " " + std::to_string(v[1]) + " " + std::to_string(v[2]) + "\n";
+    for (const auto& v : kTetra)
+        obj += "v " + std::to_string(v[0]) + " " + std::to_string(v[1]) + " " + std::to_string(v[2]) + "\n";
     std::string off = "OFF\n8 0 0\n";
-    for (const auto& v : kBox) off += std::to_string(v[0]) + " " + std::to_string(v[1]) + " " + std::to_string(v[2]) + "\n";
-    const std::string meshes = " --p1 " + write("pos-p1.obj", obj).string() + " --p2 " + write("pos-p2.off", off).string() +
-                               " --i1 1/2,2 --i2 1,4 --seed1 0,0,9/2 --seed2 0,0,0";
+    for (const auto& v : kBox)
+        off += std::to_string(v[0]) + " " + std::to_string(v[1]) + " " + std::to_string(v[2]) + "\n";
+    const std::string meshes = " --p1 " + write("pos-p1.obj", obj).string() + " --p2 " +
+                               write("pos-p2.off", off).string() + " --i1 1/2,2 --i2 1,4 --seed1 0,0,9/2 --seed2 0,0,0";
     BOOST_TEST(run("query 1/2 13/4" + meshes).out == "touching\n");
     BOOST_TEST(run("query 1/2 3" + meshes).out == "separated\n");
     BOOST_TEST(run("query '' 1/2 7/2" + meshes).out == "overlapping\n");  // the empty SCENE still works
@@ -574,27 +636,45 @@ BOOST_AUTO_TEST_CASE(bad_mesh_files_and_options) {
     expect_error("OBJ without v lines", M("none.obj", "f 1 2 3\n"), "no 'v' lines");
     expect_error("OBJ w = 0", M("w0.obj", "v 1 2 3 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n"), "w = 0");
     expect_error("OBJ bad number", M("bad.obj", "v 1 2 x\n"), "vertex 0 coordinate 2");
-    expect_error("PLY truncated", M("short.ply", "ply\nformat binary_little_endian 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\nend_header\nabc"), "ends early");
-    expect_error("PLY huge element", M("huge.ply", "ply\nformat binary_little_endian 1.0\nelement junk 99999999999\nproperty int a\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\nend_header\n"), "ends early");
-    expect_error("PLY without z", M("noz.ply", "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nend_header\n"), "lacks x, y or z");
-    expect_error("PLY unknown format", M("fmt.ply", "ply\nformat binary_middle_endian 1.0\nend_header\n"), "unknown PLY format");
+    expect_error("PLY truncated",
+                 M("short.ply",
+                   "ply\nformat binary_little_endian 1.0\nelement vertex 4\nproperty float x\nproperty float "
+                   "y\nproperty float z\nend_header\nabc"),
+                 "ends early");
+    expect_error("PLY huge element",
+                 M("huge.ply",
+                   "ply\nformat binary_little_endian 1.0\nelement junk 99999999999\nproperty int a\nelement vertex "
+                   "4\nproperty float x\nproperty float y\nproperty float z\nend_header\n"),
+                 "ends early");
+    expect_error(
+        "PLY without z",
+        M("noz.ply", "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nend_header\n"),
+        "lacks x, y or z");
+    expect_error("PLY unknown format", M("fmt.ply", "ply\nformat binary_middle_endian 1.0\nend_header\n"),
+                 "unknown PLY format");
     expect_error("PLY not PLY", M("not.ply", "OFF\n"), "does not start with 'ply'");
     expect_error("STL neither", M("neither.stl", "hello"), "neither binary");
     expect_error("STL bad vertex", M("bad.stl", "solid x\nvertex 1 2\n"), "expected 'vertex x y z'");
     std::string nan_stl(80, ' ');
     put_bytes<std::uint32_t>(nan_stl, 1, false);
-    for (int k = 0; k < 12; ++k) put_bytes<float>(nan_stl, k == 5 ? std::numeric_limits<float>::quiet_NaN() : 1.0f, false);
+    for (int k = 0; k < 12; ++k)
+        put_bytes<float>(nan_stl, k == 5 ? std::numeric_limits<float>::quiet_NaN() : 1.0f, false);
     nan_stl += std::string(2, '\0');
     expect_error("STL NaN", M("nan.stl", nan_stl), "not finite");
     expect_error("unknown extension", M("m.xyz", "1 2 3\n"), "unknown mesh format");
     expect_error("flat mesh", M("flat.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\n"), "affinely independent");
     expect_error("--p2 missing", "curve --p1 " + g + " --i1 1,2 --i2 1,2", "give SCENE, or --p1 and --p2");
-    expect_error("--i1 three numbers", "curve --p1 " + g + " --p2 " + g + " --i1 1,2,3 --i2 1,2", "--i1: expected 2 numbers");
+    expect_error("--i1 three numbers", "curve --p1 " + g + " --p2 " + g + " --i1 1,2,3 --i2 1,2",
+                 "--i1: expected 2 numbers");
     expect_error("--i1 lo > hi", "curve --p1 " + g + " --p2 " + g + " --i1 2,1 --i2 1,2", "I1: lo > hi");
     expect_error("--seed2 bad", "curve --p1 " + g + " --p2 " + g + " --i1 1,2 --i2 1,2 --seed2 1,x,2", "--seed2");
     fs::path sc = write("both.json", scene(poly(kCube1), poly(kCube2)));
     expect_error("SCENE and --p1", "curve " + sc.string() + " --p1 " + g, "not both");
-    expect_error("mesh and vertices", "curve " + write("mv.json", scene("{\"mesh\": \"good.obj\", \"vertices\": " + kCube1 + "}", poly(kCube2))).string(), "give one of");
+    expect_error(
+        "mesh and vertices",
+        "curve " +
+            write("mv.json", scene("{\"mesh\": \"good.obj\", \"vertices\": " + kCube1 + "}", poly(kCube2))).string(),
+        "give one of");
 }
 
 // ---- the command line: exit 1 for a wrong claim, --help examples, one --out ----------
@@ -621,22 +701,33 @@ BOOST_AUTO_TEST_CASE(certify_fp_exit_status_gates_ci) {
     fs::path dbl = write("dbl.claims", "0.1 2.9 separated\n");
     BOOST_TEST(run("certify-fp " + sc + " " + dbl.string()).status == 0);
     BOOST_TEST(run("certify-fp " + sc + " " + dbl.string() + " --exact-decimals").status == 1);
-    fs::path js = write("dbl.json", R"({"format": "scalecert-claims-1", "claims": [{"kind": "verdict", "rho1": 0.1, "rho2": 2.9, "verdict": "separated"}]})");
+    fs::path js = write("dbl.json",
+                        R"({"format": "scalecert-claims-1", "claims": [{"kind": "verdict", "rho1": 0.1, "rho2": 2.9, )"
+                        R"("verdict": "separated"}]})");
     BOOST_TEST(run("certify-fp " + sc + " " + js.string()).status == 0);
     BOOST_TEST(run("certify-fp " + sc + " " + js.string() + " --exact-decimals").status == 1);
-    fs::path str = write("str.json", R"({"format": "scalecert-claims-1", "claims": [{"kind": "verdict", "rho1": "0.1", "rho2": "2.9", "verdict": "touching"}]})");
+    fs::path str = write(
+        "str.json", R"({"format": "scalecert-claims-1", "claims": [{"kind": "verdict", "rho1": "0.1", "rho2": "2.9", )"
+                    R"("verdict": "touching"}]})");
     BOOST_TEST(run("certify-fp " + sc + " " + str.string()).status == 0);
     // A nonzero decimal that is 0 as a double was no double the program held: said so, exit 2.
-    fs::path tiny = write("tiny.json", R"({"format": "scalecert-claims-1", "claims": [{"kind": "verdict", "rho1": 1e-400, "rho2": 1, "verdict": "touching"}]})");
+    fs::path tiny = write(
+        "tiny.json", R"({"format": "scalecert-claims-1", "claims": [{"kind": "verdict", "rho1": 1e-400, "rho2": 1, )"
+                     R"("verdict": "touching"}]})");
     expect_error("underflowing claim", "certify-fp " + sc + " " + tiny.string(), "'1e-400' is 0 as a double");
     // The same underflow in the line format and in JSON, and overflow and non-decimals (hex
     // floats, nan) in the line format: refused in one line, as JSON refuses them.
-    expect_error("underflowing growth line", "certify-fp " + sc + " " + write("tiny.txt", "growth 1e-400\n").string(), "'1e-400' is 0 as a double");
-    fs::path tinyg = write("tinyg.json", R"({"format": "scalecert-claims-1", "claims": [{"kind": "growth_distance", "value": 1e-400}]})");
+    expect_error("underflowing growth line", "certify-fp " + sc + " " + write("tiny.txt", "growth 1e-400\n").string(),
+                 "'1e-400' is 0 as a double");
+    fs::path tinyg = write(
+        "tinyg.json", R"({"format": "scalecert-claims-1", "claims": [{"kind": "growth_distance", "value": 1e-400}]})");
     expect_error("underflowing growth claim", "certify-fp " + sc + " " + tinyg.string(), "'1e-400' is 0 as a double");
-    expect_error("overflowing line", "certify-fp " + sc + " " + write("huge.txt", "1e400 1 separated\n").string(), "beyond the double range");
-    expect_error("hex float line", "certify-fp " + sc + " " + write("hex.txt", "0x1.8p0 1 separated\n").string(), "'0x1.8p0' is not a number");
-    expect_error("nan line", "certify-fp " + sc + " " + write("nan.txt", "nan 1 separated\n").string(), "'nan' is not a number");
+    expect_error("overflowing line", "certify-fp " + sc + " " + write("huge.txt", "1e400 1 separated\n").string(),
+                 "beyond the double range");
+    expect_error("hex float line", "certify-fp " + sc + " " + write("hex.txt", "0x1.8p0 1 separated\n").string(),
+                 "'0x1.8p0' is not a number");
+    expect_error("nan line", "certify-fp " + sc + " " + write("nan.txt", "nan 1 separated\n").string(),
+                 "'nan' is not a number");
     // A program's NaN where it answers is a wrong claim and the batch goes on (CLAIMS.md, "Outputs
     // that are no answer"): exit 1, two of three wrong, each with its reason; the certificate checks.
     {
@@ -659,7 +750,9 @@ BOOST_AUTO_TEST_CASE(certify_fp_exit_status_gates_ci) {
             nlohmann::ordered_json f = good;
             forge(f["judgements"]);
             const fs::path p = write("forged.cert.json", f.dump(1));
-            BOOST_TEST(std::system((std::string(SCALECERT_CHECK_BIN) + " " + p.string() + " >/dev/null 2>&1").c_str()) == 256, label);
+            BOOST_TEST(
+                std::system((std::string(SCALECERT_CHECK_BIN) + " " + p.string() + " >/dev/null 2>&1").c_str()) == 256,
+                label);
         };
         rejected("a number", [](auto& js) { js[1]["claim"]["value"] = "3/2"; });
         rejected("not an answer field", [](auto& js) { js[1]["proof"]["no_answer"] = "rho1"; });
@@ -671,7 +764,8 @@ BOOST_AUTO_TEST_CASE(certify_fp_exit_status_gates_ci) {
     BOOST_TEST(run("certify-fp " + sc + " " + write("denormal.txt", "growth 5e-324\n").string()).status == 1);
     // The report and the certificate under one name: refused before either is written.
     // (expect_error adds --out WORKDIR/out.json and checks that nothing was written there.)
-    expect_error("certificate over the report", "certify-fp " + sc + " " + js.string() + " --certificate " + (workdir() / "out.json").string(),
+    expect_error("certificate over the report",
+                 "certify-fp " + sc + " " + js.string() + " --certificate " + (workdir() / "out.json").string(),
                  "two outputs name the same file");
     // An output over an input: --certificate CLAIMS must not replace the claims it reads.
     {
@@ -686,8 +780,10 @@ BOOST_AUTO_TEST_CASE(certify_fp_exit_status_gates_ci) {
     // --out MESH`): every command that writes refuses.
     {
         const fs::path mesh = write("named_mesh.obj", slurp(fs::path(SCALECERT_SOURCE_DIR) / "examples" / "tetra.obj"));
-        const fs::path scene = write("names_a_mesh.json", "{\"P1\": {\"mesh\": \"" + mesh.string() +
-                                                              "\"}, \"P2\": {\"vertices\": [[3,0,0],[4,0,0],[3,1,0],[3,0,1]]}, \"I1\": [1, 2], \"I2\": [1, 2]}");
+        const fs::path scene = write(
+            "names_a_mesh.json",
+            "{\"P1\": {\"mesh\": \"" + mesh.string() +
+                "\"}, \"P2\": {\"vertices\": [[3,0,0],[4,0,0],[3,1,0],[3,0,1]]}, \"I1\": [1, 2], \"I2\": [1, 2]}");
         const std::string before = slurp(mesh);
         for (const std::string cmd : {"curve", "region", "partition"}) {
             Run r = run(cmd + " " + scene.string() + " --out " + mesh.string());
@@ -697,12 +793,15 @@ BOOST_AUTO_TEST_CASE(certify_fp_exit_status_gates_ci) {
         }
         // The campaigns too: audit's --out or --csv over its scene, and
         // golden's output for one scene over a later scene of the same run.
-        const fs::path s = write("s.json", slurp(fs::path(SCALECERT_SOURCE_DIR) / "certificates" / "scenes" / "stacked_cubes.json"));
+        const fs::path s =
+            write("s.json", slurp(fs::path(SCALECERT_SOURCE_DIR) / "certificates" / "scenes" / "stacked_cubes.json"));
         const fs::path later = write("s.golden.json", slurp(s));
         const std::string scene_text = slurp(s);
-        for (const std::string& cmd : {"audit " + s.string() + " --methods grid --grid 4 --out " + s.string(),
-                                       "audit " + s.string() + " --methods grid --grid 4 --out " + (workdir() / "a.json").string() + " --csv " + s.string(),
-                                       "golden " + s.string() + " " + later.string() + " --dir " + workdir().string()}) {
+        for (const std::string& cmd :
+             {"audit " + s.string() + " --methods grid --grid 4 --out " + s.string(),
+              "audit " + s.string() + " --methods grid --grid 4 --out " + (workdir() / "a.json").string() + " --csv " +
+                  s.string(),
+              "golden " + s.string() + " " + later.string() + " --dir " + workdir().string()}) {
             Run r = run(cmd);
             BOOST_TEST(r.status == 2, cmd);
             BOOST_TEST(r.err.find("an output names an input file") != std::string::npos, cmd << ": " << r.err);
@@ -761,16 +860,19 @@ BOOST_AUTO_TEST_CASE(help_examples_run_as_written) {
 
 BOOST_AUTO_TEST_CASE(json_claims_from_the_command_line) {
     // examples/claims.json: one right claim of each kind on the stacked cubes (values by hand in
-    // tests/test_audit.cpp); a rounded growth distance is wrong unless a tolerance admits it.
+    // tests/test_claims.cpp); a rounded growth distance is wrong unless a tolerance admits it.
     const std::string sc = std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/stacked_cubes.json";
     Run r = run("certify-fp " + sc + " " + SCALECERT_SOURCE_DIR + "/examples/claims.json");
     BOOST_TEST(r.status == 0, r.err);
     BOOST_TEST(r.out.find("claims: 7, right: 7, wrong: 0") != std::string::npos, r.out);
-    fs::path g = write("g.claims.json", R"({"format": "scalecert-claims-1", "claims": [{"kind": "growth_distance", "value": "1.5000000001"}]})");
+    fs::path g =
+        write("g.claims.json",
+              R"({"format": "scalecert-claims-1", "claims": [{"kind": "growth_distance", "value": "1.5000000001"}]})");
     BOOST_TEST(run("certify-fp " + sc + " " + g.string()).status == 1);
     BOOST_TEST(run("certify-fp " + sc + " " + g.string() + " --tolerance 1e-9").status == 0);
     BOOST_TEST(run("certify-fp " + sc + " " + g.string() + " --tolerance 1e-11").status == 1);
-    expect_error("negative tolerance", "certify-fp " + sc + " " + g.string() + " --tolerance -1", "--tolerance must be >= 0");
+    expect_error("negative tolerance", "certify-fp " + sc + " " + g.string() + " --tolerance -1",
+                 "--tolerance must be >= 0");
     expect_error("bad tolerance", "certify-fp " + sc + " " + g.string() + " --tolerance x", "--tolerance");
 }
 
@@ -798,7 +900,8 @@ std::string without_model(const std::string& json) {
 }  // namespace
 
 BOOST_AUTO_TEST_CASE(curve_engines_agree_and_large_meshes_scan) {
-    const std::string a = write("s1.off", sphere_off(1200, 0, 1)).string(), b = write("s2.off", sphere_off(1300, 160, 2)).string();
+    const std::string a = write("s1.off", sphere_off(1200, 0, 1)).string(),
+                      b = write("s2.off", sphere_off(1300, 160, 2)).string();
     const std::string args = "curve --p1 " + a + " --p2 " + b + " --i1 1/2,2 --i2 1/2,2";
     const Run automatic = run(args), hull = run(args + " --engine hull"), scan = run(args + " --engine scan");
     BOOST_REQUIRE(automatic.status == 0);
@@ -810,16 +913,19 @@ BOOST_AUTO_TEST_CASE(curve_engines_agree_and_large_meshes_scan) {
     // The bundled scenes through the command: the same document with either engine.
     for (const auto& e : fs::directory_iterator(fs::path(SCALECERT_SOURCE_DIR) / "certificates" / "scenes")) {
         if (!e.is_regular_file()) continue;  // (compound/: objects made of parts)
-        const Run s = run("curve --engine scan " + e.path().string()), h = run("curve --engine hull " + e.path().string());
+        const Run s = run("curve --engine scan " + e.path().string()),
+                  h = run("curve --engine hull " + e.path().string());
         BOOST_TEST(s.status == 0);
         BOOST_TEST(without_model(s.out) == without_model(h.out), e.path().filename());
     }
     // Bad input: the same one line whichever engine reads it.
     const std::string small = write("s3.off", sphere_off(30, 0, 3)).string();
-    for (const std::string& bad : {"--p1 " + a + " --p2 " + b + " --i1 0,2 --i2 1,2", "--p1 " + a + " --p2 " + b + " --i1 2,1 --i2 1,2",
-                                   "--p1 " + a + " --p2 " + write("three.off", "OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n").string() + " --i1 1,2 --i2 1,2",
-                                   "--p1 " + a + " --p2 " + small + " --i1 1,2 --i2 1,2 --seed1 500,0,0",
-                                   "--p1 " + a + " --p2 /nonexistent.off --i1 1,2 --i2 1,2"}) {
+    for (const std::string& bad :
+         {"--p1 " + a + " --p2 " + b + " --i1 0,2 --i2 1,2", "--p1 " + a + " --p2 " + b + " --i1 2,1 --i2 1,2",
+          "--p1 " + a + " --p2 " + write("three.off", "OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n").string() +
+              " --i1 1,2 --i2 1,2",
+          "--p1 " + a + " --p2 " + small + " --i1 1,2 --i2 1,2 --seed1 500,0,0",
+          "--p1 " + a + " --p2 /nonexistent.off --i1 1,2 --i2 1,2"}) {
         const Run s = run("curve --engine scan " + bad), h = run("curve --engine hull " + bad);
         BOOST_TEST(s.status == 2, bad);
         BOOST_TEST(s.err == h.err, bad);
@@ -852,7 +958,8 @@ void expect_refused(const std::string& label, const std::string& cmd, const std:
         BOOST_TEST(r.out.empty());
         BOOST_TEST(r.err.rfind(prefix, 0) == 0u, r.err);
         BOOST_TEST(std::count(r.err.begin(), r.err.end(), '\n') == 1, r.err);
-        BOOST_TEST(r.err.find(file.string() + ": " + kind) != std::string::npos, "'" << file.string() << ": " << kind << "' in: " << r.err);
+        BOOST_TEST(r.err.find(file.string() + ": " + kind) != std::string::npos,
+                   "'" << file.string() << ": " << kind << "' in: " << r.err);
         BOOST_TEST(!fs::exists(out));
         for (const auto& e : fs::directory_iterator(workdir()))
             BOOST_TEST(e.path().filename().string().find(".tmp.") == std::string::npos);
@@ -870,7 +977,8 @@ BOOST_AUTO_TEST_CASE(no_file_input_blocks_fifos_sockets_and_devices_are_refused)
     const fs::path fj = d / "p.json", foff = d / "p.off", fobj = d / "p.obj", ftxt = d / "p.txt";
     for (const fs::path& p : {fj, foff, fobj, ftxt}) BOOST_REQUIRE(::mkfifo(p.c_str(), 0600) == 0);
     const fs::path g = write("fifo-scene.json", scene(poly(kCube1), poly(kCube2)));
-    const fs::path cube = write("fifo-cube.off", "OFF\n8 0 0\n0 0 3\n2 0 3\n0 2 3\n2 2 3\n0 0 5\n2 0 5\n0 2 5\n2 2 5\n");
+    const fs::path cube =
+        write("fifo-cube.off", "OFF\n8 0 0\n0 0 3\n2 0 3\n0 2 3\n2 2 3\n0 0 5\n2 0 5\n0 2 5\n2 2 5\n");
     const fs::path via_mesh = write("fifo-mesh.json", scene("{\"mesh\": \"pipes/p.obj\"}", poly(kCube2)));
     const fs::path via_off = write("fifo-off.json", scene(poly(kCube1), "{\"off\": \"pipes/p.off\"}"));
     const fs::path out = workdir() / "fifo-out.json", csv = workdir() / "fifo-out.csv";
@@ -879,17 +987,28 @@ BOOST_AUTO_TEST_CASE(no_file_input_blocks_fifos_sockets_and_devices_are_refused)
     for (const char* c : {"curve ", "partition ", "grid --n 4 ", "classify "})
         expect_refused(std::string(c) + "SCENE", B + c + fj.string() + O, E, fj, fifo, out);
     expect_refused("query SCENE", B + "query " + fj.string() + " 1 1" + O, E, fj, fifo, out);
-    expect_refused("scene naming a mesh", B + "curve " + via_mesh.string() + O, E, workdir() / "pipes/p.obj", fifo, out);
-    expect_refused("scene naming an OFF file", B + "partition " + via_off.string() + O, E, workdir() / "pipes/p.off", fifo, out);
-    expect_refused("--p1 OFF (the mapped reader)", B + "curve --p1 " + foff.string() + " --p2 " + cube.string() + " --i1 1,2 --i2 1,2" + O, E, foff, fifo, out);
-    expect_refused("--p2 OFF", B + "partition --p1 " + cube.string() + " --p2 " + foff.string() + " --i1 1,2 --i2 1,2" + O, E, foff, fifo, out);
-    expect_refused("--p1 OBJ", B + "curve --p1 " + fobj.string() + " --p2 " + cube.string() + " --i1 1,2 --i2 1,2" + O, E, fobj, fifo, out);
+    expect_refused("scene naming a mesh", B + "curve " + via_mesh.string() + O, E, workdir() / "pipes/p.obj", fifo,
+                   out);
+    expect_refused("scene naming an OFF file", B + "partition " + via_off.string() + O, E, workdir() / "pipes/p.off",
+                   fifo, out);
+    expect_refused("--p1 OFF (the mapped reader)",
+                   B + "curve --p1 " + foff.string() + " --p2 " + cube.string() + " --i1 1,2 --i2 1,2" + O, E, foff,
+                   fifo, out);
+    expect_refused("--p2 OFF",
+                   B + "partition --p1 " + cube.string() + " --p2 " + foff.string() + " --i1 1,2 --i2 1,2" + O, E, foff,
+                   fifo, out);
+    expect_refused("--p1 OBJ", B + "curve --p1 " + fobj.string() + " --p2 " + cube.string() + " --i1 1,2 --i2 1,2" + O,
+                   E, fobj, fifo, out);
     expect_refused("classify PAIRS", B + "classify " + g.string() + " " + ftxt.string() + O, E, ftxt, fifo, out);
     expect_refused("certify-fp CLAIMS", B + "certify-fp " + g.string() + " " + ftxt.string() + O, E, ftxt, fifo, out);
     expect_refused("certify-fp SCENE", B + "certify-fp " + fj.string() + " " + ftxt.string() + O, E, fj, fifo, out);
-    expect_refused("audit SCENES", B + "audit " + g.string() + " " + fj.string() + " --methods libccd-gjk" + O + " --csv " + csv.string(), E, fj, fifo, out);
+    expect_refused(
+        "audit SCENES",
+        B + "audit " + g.string() + " " + fj.string() + " --methods libccd-gjk" + O + " --csv " + csv.string(), E, fj,
+        fifo, out);
     BOOST_TEST(!fs::exists(csv));
-    expect_refused("scalecert-check", std::string(SCALECERT_CHECK_BIN) + " " + fj.string(), "scalecert-check: error: ", fj, fifo, out);
+    expect_refused("scalecert-check", std::string(SCALECERT_CHECK_BIN) + " " + fj.string(),
+                   "scalecert-check: error: ", fj, fifo, out);
     // A socket and a character device: refused the same way (/dev/zero was read to the size limit).
     const fs::path sock = d / "s.json";
     const int fd = ::socket(AF_UNIX, SOCK_STREAM, 0);
@@ -899,11 +1018,14 @@ BOOST_AUTO_TEST_CASE(no_file_input_blocks_fifos_sockets_and_devices_are_refused)
     BOOST_REQUIRE(sock.string().size() < sizeof addr.sun_path);
     BOOST_REQUIRE(::bind(fd, reinterpret_cast<sockaddr*>(&addr), sizeof addr) == 0);
     expect_refused("socket scene", B + "curve " + sock.string() + O, E, sock, "is a socket", out);
-    expect_refused("socket certificate", std::string(SCALECERT_CHECK_BIN) + " " + sock.string(), "scalecert-check: error: ", sock, "is a socket", out);
+    expect_refused("socket certificate", std::string(SCALECERT_CHECK_BIN) + " " + sock.string(),
+                   "scalecert-check: error: ", sock, "is a socket", out);
     ::close(fd);
     expect_refused("device scene", B + "curve /dev/zero" + O, E, "/dev/zero", "is a character device", out);
-    expect_refused("device pairs", B + "classify " + g.string() + " /dev/zero" + O, E, "/dev/zero", "is a character device", out);
-    expect_refused("device certificate", std::string(SCALECERT_CHECK_BIN) + " /dev/zero", "scalecert-check: error: ", "/dev/zero", "is a character device", out);
+    expect_refused("device pairs", B + "classify " + g.string() + " /dev/zero" + O, E, "/dev/zero",
+                   "is a character device", out);
+    expect_refused("device certificate", std::string(SCALECERT_CHECK_BIN) + " /dev/zero",
+                   "scalecert-check: error: ", "/dev/zero", "is a character device", out);
     // Standard input stays where it is documented ("-": classify's pairs, a scene).
     fs::path pairs = write("fifo-pairs.txt", "1 2\n2 2\n");
     Run p = run("classify " + g.string() + " - < " + pairs.string());
@@ -925,13 +1047,17 @@ BOOST_AUTO_TEST_CASE(region_of_compounds) {
     BOOST_TEST(j["pairs"]["pruned"] == 1);
     BOOST_TEST(j["pairs"]["built"] == 1);
     BOOST_TEST(j["region"].size() == 1u);
-    BOOST_TEST(j["region"][0]["outer"] == nlohmann::json::parse(R"([["4/3", "1"], ["5/2", "1"], ["3", "3"], ["1", "3"]])"));
+    BOOST_TEST(j["region"][0]["outer"] ==
+               nlohmann::json::parse(R"([["4/3", "1"], ["5/2", "1"], ["3", "3"], ["1", "3"]])"));
     // At 9/7 the right part's face x = 3 (its points 1, 3, 5, 7) reaches the box's face x = 4 (0, 2, 4, 6).
-    BOOST_TEST(j["growth_set"] == nlohmann::json::parse(R"([{"from": "9/7", "to": "3", "first_contact": {"P1_part": 0, "P2_part": 0,
+    BOOST_TEST(j["growth_set"] ==
+               nlohmann::json::parse(R"([{"from": "9/7", "to": "3", "first_contact": {"P1_part": 0, "P2_part": 0,
         "contact": "FF", "features": {"P1": [1, 3, 5, 7], "P2": [0, 2, 4, 6]}}}])"));
     BOOST_TEST(run("region " + band).out == r.out);  // deterministic
     // At ρ2 = 2 the band runs from ρ1 = 7/6 (3ρ1 + 1 = 9/2) to 11/4 (2ρ1 − 1 = 9/2).
-    auto at = [&](const std::string& x) { return nlohmann::json::parse(run("region " + band + " --at " + x).out)["at"]["verdict"]; };
+    auto at = [&](const std::string& x) {
+        return nlohmann::json::parse(run("region " + band + " --at " + x).out)["at"]["verdict"];
+    };
     BOOST_TEST(at("1,2") == "separated");
     BOOST_TEST(at("7/6,2") == "touching");
     BOOST_TEST(at("17/12,2") == "overlapping");
@@ -945,16 +1071,23 @@ BOOST_AUTO_TEST_CASE(region_of_compounds) {
         Run c = run("region " + band + " --classify " + pairs.string() + " --threads 2");
         BOOST_TEST(c.status == 0, c.err);
         BOOST_TEST(c.out == "separated\noverlapping\ntouching\nseparated\n");
-        expect_error("classify outside", "region " + band + " --classify " + write("band_far.txt", "1 2\n5 2\n").string(), "pair 1 (numbered from 0) lies outside I1 x I2");
-        expect_error("classify with certificate", "region " + band + " --classify " + pairs.string() + " --certificate " + (workdir() / "c.json").string(),
-                     "--classify writes verdicts only");
+        expect_error("classify outside",
+                     "region " + band + " --classify " + write("band_far.txt", "1 2\n5 2\n").string(),
+                     "pair 1 (numbered from 0) lies outside I1 x I2");
+        expect_error(
+            "classify with certificate",
+            "region " + band + " --classify " + pairs.string() + " --certificate " + (workdir() / "c.json").string(),
+            "--classify writes verdicts only");
     }
     expect_error("empty --at", "region " + band + " --at ''", "--at: '' is not an exact number");
     expect_error("long --at", "region " + band + " --at 1e1000,1", "--at: '1e1000,1' lies outside I1 x I2");
     // Objects with parts are read by region only; a flat part, an empty list, a part of three points.
-    expect_error("parts and the curve", "curve " + band, "the touching curve is defined for two convex objects; on objects made of parts, scalecert region");
-    const std::string tail = R"(, "seed": [0, 0, 0]}, "P2": {"vertices": [[4,0,0],[5,0,0],[4,1,0],[4,0,1]]}, "I1": [1, 2], "I2": [1, 2]})";
-    fs::path flat = write("flat_part.json", R"({"P1": {"parts": [{"vertices": [[0,0,0],[1,0,0],[0,1,0],[1,1,0]]}])" + tail);
+    expect_error("parts and the curve", "curve " + band,
+                 "the touching curve is defined for two convex objects; on objects made of parts, scalecert region");
+    const std::string tail =
+        R"(, "seed": [0, 0, 0]}, "P2": {"vertices": [[4,0,0],[5,0,0],[4,1,0],[4,0,1]]}, "I1": [1, 2], "I2": [1, 2]})";
+    fs::path flat =
+        write("flat_part.json", R"({"P1": {"parts": [{"vertices": [[0,0,0],[1,0,0],[0,1,0],[1,1,0]]}])" + tail);
     expect_error("flat part", "region " + flat.string(), "P1.parts[0]");
     fs::path none = write("no_parts.json", R"({"P1": {"parts": [])" + tail);
     expect_error("no parts", "region " + none.string(), "P1.parts: expected a nonempty list of parts");
@@ -972,9 +1105,12 @@ BOOST_AUTO_TEST_CASE(region_of_compounds) {
     BOOST_TEST(slurp(cert) == first);
     const fs::path nowhere = workdir() / "never.cert.json";
     fs::remove(nowhere);
-    expect_error("flat part, certificate", "region " + flat.string() + " --certificate " + nowhere.string(), "P1.parts[0]");
+    expect_error("flat part, certificate", "region " + flat.string() + " --certificate " + nowhere.string(),
+                 "P1.parts[0]");
     BOOST_TEST(!fs::exists(nowhere));
-    expect_error("certificate over the output", "region " + band + " --certificate " + (workdir() / "out.json").string(), "two outputs name the same file");
+    expect_error("certificate over the output",
+                 "region " + band + " --certificate " + (workdir() / "out.json").string(),
+                 "two outputs name the same file");
     expect_error("empty certificate name", "region " + band + " --certificate ''", "--certificate");
     // Inputs whose cost explodes, refused before the pair polygons (manual.md "Limits"):
     // 3,163 x 3,163 parts (10^7 part pairs and more), 150 x 150 overlapping parts (22,500 pairs
@@ -987,10 +1123,11 @@ BOOST_AUTO_TEST_CASE(region_of_compounds) {
     };
     const std::string cube = R"({"vertices": [[0,0,0],[1,0,0],[0,1,0],[0,0,1],[1,1,1]]})";
     auto two = [&](int m, int n) {
-        return R"({"P1": {"parts": )" + parts_of(m, cube) + R"(, "seed": [0,0,0]}, "P2": {"parts": )" + parts_of(n, cube) +
-               R"(, "seed": ["1/2","1/2","1/2"]}, "I1": [1, 2], "I2": [1, 2]})";
+        return R"({"P1": {"parts": )" + parts_of(m, cube) + R"(, "seed": [0,0,0]}, "P2": {"parts": )" +
+               parts_of(n, cube) + R"(, "seed": ["1/2","1/2","1/2"]}, "I1": [1, 2], "I2": [1, 2]})";
     };
-    expect_error("part pairs", "region " + write("many_pairs.json", two(3163, 3163)).string(), "part pairs, more than 10000000 (the limit)");
+    expect_error("part pairs", "region " + write("many_pairs.json", two(3163, 3163)).string(),
+                 "part pairs, more than 10000000 (the limit)");
     expect_error("built pairs", "region " + write("built_pairs.json", two(150, 150)).string(),
                  "22500 part pairs can meet in I1 x I2 (their swept boxes meet), more than 20000 (the limit)");
     auto prism = [](int sides, int axis) {
@@ -1000,14 +1137,17 @@ BOOST_AUTO_TEST_CASE(region_of_compounds) {
             const long c = std::lround(1e6 * std::cos(t)), d = std::lround(1e6 * std::sin(t));
             for (long h : {-2000000L, 2000000L}) {
                 const long p[3] = {axis == 0 ? h : c, axis == 0 ? c : axis == 1 ? h : d, axis == 2 ? h : d};
-                v += (v.empty() ? "" : ",") + std::string("[") + std::to_string(p[0]) + "," + std::to_string(p[1]) + "," + std::to_string(p[2]) + "]";
+                v += (v.empty() ? "" : ",") + std::string("[") + std::to_string(p[0]) + "," + std::to_string(p[1]) +
+                     "," + std::to_string(p[2]) + "]";
             }
         }
         return "[" + v + "]";
     };
-    const std::string prisms = R"({"P1": {"parts": [{"vertices": )" + prism(1500, 0) + R"(}], "seed": [0,0,0]}, "P2": {"parts": [{"vertices": )" +
-                               prism(1500, 1) + R"(}], "seed": [0,0,0]}, "I1": [1, 2], "I2": [1, 2]})";
-    expect_error("edge pairs", "region " + write("crossed_prisms.json", prisms).string(), "edge pairs in all, more than 2*10^7");
+    const std::string prisms = R"({"P1": {"parts": [{"vertices": )" + prism(1500, 0) +
+                               R"(}], "seed": [0,0,0]}, "P2": {"parts": [{"vertices": )" + prism(1500, 1) +
+                               R"(}], "seed": [0,0,0]}, "I1": [1, 2], "I2": [1, 2]})";
+    expect_error("edge pairs", "region " + write("crossed_prisms.json", prisms).string(),
+                 "edge pairs in all, more than 2*10^7");
     const std::string flat_range = R"({"P1": {"parts": [)" + cube + R"(], "seed": [0,0,0]}, "P2": {"parts": [)" + cube +
                                    R"(], "seed": ["1/2","1/2","1/2"]}, "I1": [2, 2], "I2": [1, 2]})";
     expect_error("zero-width I1", "region " + write("flat_range.json", flat_range).string(), "I1 has no width");
@@ -1016,18 +1156,23 @@ BOOST_AUTO_TEST_CASE(region_of_compounds) {
     // and y <= 2 r2, so they meet iff r1 = r2 (then on the edge x = y = 2r). The union of polygons
     // with area is empty; the segment from (1, 1) to (2, 2) is listed beside it.
     {
-        const std::string diag = R"({"P1": {"parts": [{"vertices": [[1,2,1],[2,2,1],[1,3,1],[2,3,1],[1,2,2],[2,2,2],[1,3,2],[2,3,2]]}], "seed": [0,0,0]},
-            "P2": {"parts": [{"vertices": [[2,1,1],[3,1,1],[2,2,1],[3,2,1],[2,1,2],[3,1,2],[2,2,2],[3,2,2]]}], "seed": [0,0,0]}, "I1": [1, 2], "I2": [1, 2]})";
+        const std::string diag =
+            R"({"P1": {"parts": [{"vertices": [[1,2,1],[2,2,1],[1,3,1],[2,3,1],[1,2,2],[2,2,2],[1,3,2],[2,3,2]]}],
+            "seed": [0,0,0]},
+            "P2": {"parts": [{"vertices": [[2,1,1],[3,1,1],[2,2,1],[3,2,1],[2,1,2],[3,1,2],[2,2,2],[3,2,2]]}],
+            "seed": [0,0,0]}, "I1": [1, 2], "I2": [1, 2]})";
         Run d = run("region " + write("diag_touch.json", diag).string());
         BOOST_TEST_REQUIRE(d.status == 0, d.err);
         const auto dj = nlohmann::json::parse(d.out);
         BOOST_TEST(dj["region"].empty());
-        BOOST_TEST(dj["region_without_area"] == nlohmann::json::parse(R"([{"P1_part": 0, "P2_part": 0, "vertices": [["1", "1"], ["2", "2"]]}])"));
+        BOOST_TEST(dj["region_without_area"] ==
+                   nlohmann::json::parse(R"([{"P1_part": 0, "P2_part": 0, "vertices": [["1", "1"], ["2", "2"]]}])"));
     }
     // More than 1,000 polygons with area: the union is not formed (region null, with a note); the
     // pair polygons are still listed.
     {
-        const std::string many = R"({"P1": {"parts": )" + parts_of(1001, cube) + R"(, "seed": [0,0,0]}, "P2": {"parts": [)" + cube +
+        const std::string many = R"({"P1": {"parts": )" + parts_of(1001, cube) +
+                                 R"(, "seed": [0,0,0]}, "P2": {"parts": [)" + cube +
                                  R"(], "seed": ["1/2","1/2","1/2"]}, "I1": [1, 2], "I2": [1, 2]})";
         Run m = run("region " + write("many_polygons.json", many).string());
         BOOST_TEST_REQUIRE(m.status == 0, m.err);
@@ -1057,18 +1202,23 @@ BOOST_AUTO_TEST_CASE(region_parts_from_obj_groups) {
     };
     const auto& parts = sc["P1"]["parts"];
     BOOST_TEST_REQUIRE(parts.size() == 2u);
-    const std::string obj = "g default\nv 100 100 100\n" + v_lines(parts[0]["vertices"]) + "g right\nf 2 3 5 4\nf 6 7 9 8\ng left\n" +
-                            v_lines(parts[1]["vertices"]) + "usemtl any\nf -8 -7 -5 -6\nf -4/1 -3/2 -1/3 -2/4\n";
+    const std::string obj = "g default\nv 100 100 100\n" + v_lines(parts[0]["vertices"]) +
+                            "g right\nf 2 3 5 4\nf 6 7 9 8\ng left\n" + v_lines(parts[1]["vertices"]) +
+                            "usemtl any\nf -8 -7 -5 -6\nf -4/1 -3/2 -1/3 -2/4\n";
     const fs::path band_obj = write("band_groups.obj", obj);
     const fs::path box_obj = write("band_box.obj", v_lines(sc["P2"]["vertices"]) + "f 1 2 4 3\nf 5 6 8 7\n");
-    const std::string meshes = " --p1 " + band_obj.string() + " --p2 " + box_obj.string() + " --i1 1,4 --i2 1,3 --seed1 0,0,0 --seed2 9/2,0,0";
+    const std::string meshes =
+        " --p1 " + band_obj.string() + " --p2 " + box_obj.string() + " --i1 1,4 --i2 1,3 --seed1 0,0,0 --seed2 9/2,0,0";
     const Run by_options = run("region --parts-from-groups" + meshes);
     BOOST_TEST(by_options.status == 0, by_options.err);
     BOOST_TEST(by_options.out == want.out);
-    const std::string box = R"("P2": {"vertices": )" + sc["P2"]["vertices"].dump() + R"(, "seed": ["9/2", 0, 0]}, "I1": [1, 4], "I2": [1, 3]})";
-    const fs::path mesh_scene = write("band_mesh.json", R"({"P1": {"mesh": "band_groups.obj", "seed": [0, 0, 0]}, )" + box);
+    const std::string box = R"("P2": {"vertices": )" + sc["P2"]["vertices"].dump() +
+                            R"(, "seed": ["9/2", 0, 0]}, "I1": [1, 4], "I2": [1, 3]})";
+    const fs::path mesh_scene =
+        write("band_mesh.json", R"({"P1": {"mesh": "band_groups.obj", "seed": [0, 0, 0]}, )" + box);
     BOOST_TEST(run("region --parts-from-groups " + mesh_scene.string()).out == want.out);
-    const fs::path key_scene = write("band_key.json", R"({"P1": {"mesh": "band_groups.obj", "parts_from_groups": true, "seed": [0, 0, 0]}, )" + box);
+    const fs::path key_scene = write(
+        "band_key.json", R"({"P1": {"mesh": "band_groups.obj", "parts_from_groups": true, "seed": [0, 0, 0]}, )" + box);
     BOOST_TEST(run("region " + key_scene.string()).out == want.out);
     BOOST_TEST(run("region " + (src / "compound_band_groups.json").string()).out == want.out);  // the manual's example
     // Without the flag the file is one convex object (the hull of every point, the stray one too).
@@ -1076,7 +1226,9 @@ BOOST_AUTO_TEST_CASE(region_parts_from_obj_groups) {
     BOOST_TEST(hull.status == 0, hull.err);
     BOOST_TEST(hull.out != want.out);
     // "parts_from_groups": false overrides the flag for its object.
-    const fs::path off_key = write("band_key_false.json", R"({"P1": {"mesh": "band_groups.obj", "parts_from_groups": false, "seed": [0, 0, 0]}, )" + box);
+    const fs::path off_key =
+        write("band_key_false.json",
+              R"({"P1": {"mesh": "band_groups.obj", "parts_from_groups": false, "seed": [0, 0, 0]}, )" + box);
     BOOST_TEST(run("region --parts-from-groups " + off_key.string()).out == hull.out);
 
     // One group is the plain mesh: the same region, default seeds (the mean of the points) included.
@@ -1090,31 +1242,52 @@ BOOST_AUTO_TEST_CASE(region_parts_from_obj_groups) {
 
     // Bad groups: one line naming the group and its line, exit 2, no output.
     const std::string tail = " --p2 " + box_obj.string() + " --i1 1,4 --i2 1,3";
-    auto R = [&](const std::string& name, const std::string& text) { return "region --parts-from-groups --p1 " + write(name, text).string() + tail; };
+    auto R = [&](const std::string& name, const std::string& text) {
+        return "region --parts-from-groups --p1 " + write(name, text).string() + tail;
+    };
     const std::string tetra = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n";
-    expect_error("flat group", R("flat_group.obj", tetra + "v 2 2 0\ng solid\nf 1 2 3\nf 1 2 4\ng sheet\nf 1 2 5 3\n"),
-                 "flat_group.obj: group 'sheet' (line 9): flat: the 4 vertices of its faces span fewer than 3 dimensions");
+    expect_error(
+        "flat group", R("flat_group.obj", tetra + "v 2 2 0\ng solid\nf 1 2 3\nf 1 2 4\ng sheet\nf 1 2 5 3\n"),
+        "flat_group.obj: group 'sheet' (line 9): flat: the 4 vertices of its faces span fewer than 3 dimensions");
     expect_error("one triangle", R("triangle_group.obj", tetra + "o tri\nf 1 2 3\n"), "group 'tri' (line 5): flat");
-    expect_error("flat, no o/g lines", R("flat_plain.obj", tetra + "f 1 2 3\n"), "the faces before any 'o' or 'g' line: flat");
+    expect_error("flat, no o/g lines", R("flat_plain.obj", tetra + "f 1 2 3\n"),
+                 "the faces before any 'o' or 'g' line: flat");
     expect_error("no faces", R("no_faces.obj", tetra), "no faces ('f' lines)");
-    expect_error("face past the vertices", R("far_face.obj", tetra + "f 1 2 5\n"), "line 5: face vertex '5' is not a vertex number (1 to 4");
+    expect_error("face past the vertices", R("far_face.obj", tetra + "f 1 2 5\n"),
+                 "line 5: face vertex '5' is not a vertex number (1 to 4");
     expect_error("face vertex 0", R("zero_face.obj", tetra + "f 0 1 2\n"), "face vertex '0' is not a vertex number");
-    expect_error("negative before its vertex", R("neg_face.obj", "v 0 0 0\nf -1 -2 -1\n" + tetra), "face vertex '-2' is not a vertex number");
-    expect_error("two-vertex face", R("short_face.obj", tetra + "f 1 2\n"), "line 5: expected 'f' and at least 3 vertices");
+    expect_error("negative before its vertex", R("neg_face.obj", "v 0 0 0\nf -1 -2 -1\n" + tetra),
+                 "face vertex '-2' is not a vertex number");
+    expect_error("two-vertex face", R("short_face.obj", tetra + "f 1 2\n"),
+                 "line 5: expected 'f' and at least 3 vertices");
     std::string many;
     for (int k = 0; k <= 10000; ++k) many += "g g" + std::to_string(k) + "\n" + tetra + "f -4 -3 -2\nf -4 -3 -1\n";
-    expect_error("more groups than parts", R("many_groups.obj", many), "more than 10000 groups with faces (the limit on parts)");
+    expect_error("more groups than parts", R("many_groups.obj", many),
+                 "more than 10000 groups with faces (the limit on parts)");
     // Other formats have no groups; the other commands take no flag and no key.
     const std::string stl = (fs::path(SCALECERT_SOURCE_DIR) / "examples/box.stl").string();
-    expect_error("STL with the flag", "region --parts-from-groups --p1 " + stl + tail, "box.stl: parts from groups need an OBJ file (an STL file has no groups)");
-    expect_error("OFF key with the flag", "region --parts-from-groups " + write("off_key.json", R"({"P1": {"off": "band_groups.obj", "seed": [0, 0, 0]}, )" + box).string(),
+    expect_error("STL with the flag", "region --parts-from-groups --p1 " + stl + tail,
+                 "box.stl: parts from groups need an OBJ file (an STL file has no groups)");
+    expect_error("OFF key with the flag",
+                 "region --parts-from-groups " +
+                     write("off_key.json", R"({"P1": {"off": "band_groups.obj", "seed": [0, 0, 0]}, )" + box).string(),
                  "P1.off: an OFF file has no groups");
-    expect_error("key without a mesh", "region " + write("key_vertices.json", R"({"P1": {"vertices": [[0,0,0],[1,0,0],[0,1,0],[0,0,1]], "parts_from_groups": true}, )" + box).string(),
-                 "P1.parts_from_groups: parts from groups need an OBJ \"mesh\"");
-    expect_error("key not a boolean", "region " + write("key_one.json", R"({"P1": {"mesh": "band_groups.obj", "parts_from_groups": 1}, )" + box).string(),
-                 "P1.parts_from_groups: expected true or false");
-    expect_error("key and the curve", "curve " + key_scene.string(), "the touching curve is defined for two convex objects");
-    expect_error("flag and the curve", "curve --parts-from-groups" + meshes, "the touching curve is defined for two convex objects");
+    expect_error(
+        "key without a mesh",
+        "region " +
+            write("key_vertices.json",
+                  R"({"P1": {"vertices": [[0,0,0],[1,0,0],[0,1,0],[0,0,1]], "parts_from_groups": true}, )" + box)
+                .string(),
+        "P1.parts_from_groups: parts from groups need an OBJ \"mesh\"");
+    expect_error(
+        "key not a boolean",
+        "region " +
+            write("key_one.json", R"({"P1": {"mesh": "band_groups.obj", "parts_from_groups": 1}, )" + box).string(),
+        "P1.parts_from_groups: expected true or false");
+    expect_error("key and the curve", "curve " + key_scene.string(),
+                 "the touching curve is defined for two convex objects");
+    expect_error("flag and the curve", "curve --parts-from-groups" + meshes,
+                 "the touching curve is defined for two convex objects");
 }
 
 BOOST_AUTO_TEST_CASE(certify_fp_on_compounds) {
@@ -1139,24 +1312,33 @@ BOOST_AUTO_TEST_CASE(certify_fp_on_compounds) {
     // A wrong claim: exit 1. Verdict lines are read; curve and growth lines are refused.
     const fs::path wrong = write("band_wrong.txt", "3 2 intersecting\n");
     BOOST_TEST(run("certify-fp " + band + " " + wrong.string()).status == 1);
-    expect_error("curve line on parts", "certify-fp " + band + " " + write("band_curve.txt", "curve 1 2\n").string(), "verdict lines only");
-    expect_error("growth line on parts", "certify-fp " + band + " " + write("band_growth.txt", "growth 1\n").string(), "verdict lines only");
+    expect_error("curve line on parts", "certify-fp " + band + " " + write("band_curve.txt", "curve 1 2\n").string(),
+                 "verdict lines only");
+    expect_error("growth line on parts", "certify-fp " + band + " " + write("band_growth.txt", "growth 1\n").string(),
+                 "verdict lines only");
     for (const char* kind : {"curve_point", "switch_point", "growth_distance", "penetration_depth"})
-        expect_error(kind, "certify-fp " + band + " " +
-                               write("band_kind.json", std::string(R"({"format": "scalecert-claims-1", "claims": [{"kind": ")") + kind +
-                                                           R"(", "rho1": 1, "rho2": 1, "value": 1}]})")
-                                   .string(),
-                     "is a claim on two convex objects");
-    expect_error("unknown kind on parts",
-                 "certify-fp " + band + " " + write("band_unknown.json", R"({"format": "scalecert-claims-1", "claims": [{"kind": "area"}]})").string(),
-                 "unknown kind");
+        expect_error(
+            kind,
+            "certify-fp " + band + " " +
+                write("band_kind.json", std::string(R"({"format": "scalecert-claims-1", "claims": [{"kind": ")") +
+                                            kind + R"(", "rho1": 1, "rho2": 1, "value": 1}]})")
+                    .string(),
+            "is a claim on two convex objects");
+    expect_error(
+        "unknown kind on parts",
+        "certify-fp " + band + " " +
+            write("band_unknown.json", R"({"format": "scalecert-claims-1", "claims": [{"kind": "area"}]})").string(),
+        "unknown kind");
     expect_error("zero rho on parts",
                  "certify-fp " + band + " " +
-                     write("band_zero.json", R"({"format": "scalecert-claims-1", "claims": [{"kind": "verdict", "rho1": 0, "rho2": 1, "verdict": "separated"}]})")
+                     write("band_zero.json",
+                           R"({"format": "scalecert-claims-1", "claims": [{"kind": "verdict", "rho1": 0, "rho2": 1, )"
+                           R"("verdict": "separated"}]})")
                          .string(),
                  "scalings must be > 0");
     // The certificate may not replace the scene or the claims.
-    expect_error("certificate over claims", "certify-fp " + band + " " + claims.string() + " --certificate " + claims.string(), claims.string());
+    expect_error("certificate over claims",
+                 "certify-fp " + band + " " + claims.string() + " --certificate " + claims.string(), claims.string());
 }
 
 // Every command takes a scene of parts (query, partition, classify) or refuses it in one line
@@ -1177,10 +1359,12 @@ BOOST_AUTO_TEST_CASE(every_command_takes_objects_made_of_parts) {
     BOOST_TEST(std::system((std::string(SCALECERT_CHECK_BIN) + " " + qj.string() + " >/dev/null").c_str()) == 0);
     const fs::path pc = workdir() / "u_partition.json", rc = workdir() / "u_region_cert.json";
     BOOST_TEST(run("partition " + u + " --out " + pc.string()).status == 0);
-    BOOST_TEST(run("region " + u + " --certificate " + rc.string() + " --out " + (workdir() / "u_region.json").string()).status == 0);
+    BOOST_TEST(run("region " + u + " --certificate " + rc.string() + " --out " + (workdir() / "u_region.json").string())
+                   .status == 0);
     BOOST_TEST(slurp(pc) == slurp(rc));
     BOOST_TEST(std::system((std::string(SCALECERT_CHECK_BIN) + " " + pc.string() + " >/dev/null").c_str()) == 0);
-    BOOST_TEST(run("classify " + u + " " + write("u_pairs.txt", "1 1\n1 2\n").string()).out == "separated\noverlapping\n");
+    BOOST_TEST(run("classify " + u + " " + write("u_pairs.txt", "1 1\n1 2\n").string()).out ==
+               "separated\noverlapping\n");
     expect_error("curve on parts", "curve " + u, "scalecert region gives where they meet");
     expect_error("segment on parts", "query " + u + " 1 1 --segment seeds", "for two convex objects");
     Run gp = run("golden " + u + " --dir " + (workdir() / "never-made-5").string());
@@ -1188,20 +1372,26 @@ BOOST_AUTO_TEST_CASE(every_command_takes_objects_made_of_parts) {
     BOOST_TEST(gp.err.find("`curve`, `golden` and `grid` are for two convex objects") != std::string::npos, gp.err);
     BOOST_TEST(!fs::exists(workdir() / "never-made-5"));
 
-    const fs::path L = write("L.obj",
-                             "v 0 0 0\nv 3 0 0\nv 0 1 0\nv 3 1 0\nv 0 0 1\nv 3 0 1\nv 0 1 1\nv 3 1 1\n"
-                             "v 0 0 1\nv 1 0 1\nv 0 1 1\nv 1 1 1\nv 0 0 3\nv 1 0 3\nv 0 1 3\nv 1 1 3\n"
-                             "g foot\nf 1 2 4 3\nf 5 6 8 7\nf 1 2 6 5\ng leg\nf 9 10 12 11\nf 13 14 16 15\nf 9 10 14 13\n");
-    const fs::path B = write("notch.obj", "v 2 0 2\nv 3 0 2\nv 2 1 2\nv 3 1 2\nv 2 0 3\nv 3 0 3\nv 2 1 3\nv 3 1 3\nf 1 2 4 3\nf 5 6 8 7\n");
+    const fs::path L =
+        write("L.obj",
+              "v 0 0 0\nv 3 0 0\nv 0 1 0\nv 3 1 0\nv 0 0 1\nv 3 0 1\nv 0 1 1\nv 3 1 1\n"
+              "v 0 0 1\nv 1 0 1\nv 0 1 1\nv 1 1 1\nv 0 0 3\nv 1 0 3\nv 0 1 3\nv 1 1 3\n"
+              "g foot\nf 1 2 4 3\nf 5 6 8 7\nf 1 2 6 5\ng leg\nf 9 10 12 11\nf 13 14 16 15\nf 9 10 14 13\n");
+    const fs::path B = write(
+        "notch.obj", "v 2 0 2\nv 3 0 2\nv 2 1 2\nv 3 1 2\nv 2 0 3\nv 3 0 3\nv 2 1 3\nv 3 1 3\nf 1 2 4 3\nf 5 6 8 7\n");
     const std::string meshes = "--p1 " + L.string() + " --p2 " + B.string() + " --i1 1/2,2 --i2 1/2,2";
     Run hull = run("query " + meshes + " 1 1");
     BOOST_TEST(hull.out == "touching\n");
-    BOOST_TEST(hull.err.find("scalecert: note: " + L.string() + ": 2 groups with faces, read as one convex object") == 0u, hull.err);
+    BOOST_TEST(
+        hull.err.find("scalecert: note: " + L.string() + ": 2 groups with faces, read as one convex object") == 0u,
+        hull.err);
     Run parts = run("query " + meshes + " 1 1 --parts-from-groups");
     BOOST_TEST(parts.out == "separated\n");
     BOOST_TEST(parts.err.empty(), parts.err);
-    BOOST_TEST(run("classify " + meshes + " --parts-from-groups " + write("l_pairs.txt", "1 1\n").string()).out == "separated\n");
-    BOOST_TEST(run("certify-fp " + meshes + " --parts-from-groups " + write("l_claims.txt", "1 1 separated\n").string()).status == 0);
+    BOOST_TEST(run("classify " + meshes + " --parts-from-groups " + write("l_pairs.txt", "1 1\n").string()).out ==
+               "separated\n");
+    BOOST_TEST(run("certify-fp " + meshes + " --parts-from-groups " + write("l_claims.txt", "1 1 separated\n").string())
+                   .status == 0);
     BOOST_TEST(run("certify-fp " + meshes + " " + write("l_claims2.txt", "1 1 touching\n").string()).status == 0);
     Run g = run("golden " + meshes + " --dir " + (workdir() / "golden-L").string());
     BOOST_TEST(g.status == 0);

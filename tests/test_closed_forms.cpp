@@ -37,7 +37,8 @@ void check_model(const Model& m) {
 }  // namespace
 
 BOOST_AUTO_TEST_CASE(bundled_scenes) {
-    for (const auto& e : std::filesystem::directory_iterator(std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes"))
+    for (const auto& e :
+         std::filesystem::directory_iterator(std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes"))
         if (e.path().extension() == ".json") check_model(build_model(load_scene(e.path().string())));
 }
 

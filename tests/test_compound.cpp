@@ -194,7 +194,8 @@ BOOST_AUTO_TEST_CASE(pair_regions_equal_the_separating_axis_brute_force) {
         }
     }
     BOOST_TEST(inside > 50);
-    std::cout << "compound pairs: " << checked << " pairs against the separating-axis brute force, " << inside << " meeting\n";
+    std::cout << "compound pairs: " << checked << " pairs against the separating-axis brute force, " << inside
+              << " meeting\n";
 }
 
 BOOST_AUTO_TEST_CASE(compound_verdicts_equal_the_brute_force_over_all_pairs) {
@@ -216,7 +217,8 @@ BOOST_AUTO_TEST_CASE(compound_verdicts_equal_the_brute_force_over_all_pairs) {
         for (const Point2q& x : probes) {
             bool want = false;
             for (const Polyhedron& A : parts[0])
-                for (const Polyhedron& B : parts[1]) want = want || meet_brute(A, B, sc.P[0].seed, sc.P[1].seed, x[0], x[1]);
+                for (const Polyhedron& B : parts[1])
+                    want = want || meet_brute(A, B, sc.P[0].seed, sc.P[1].seed, x[0], x[1]);
             const std::string v = verdict_name(compound_verdict(r, x[0], x[1]).verdict);
             BOOST_TEST((v != "separated") == want, "scene " << t << " at (" << x[0] << ", " << x[1] << "): " << v);
             ++checked;
@@ -224,7 +226,8 @@ BOOST_AUTO_TEST_CASE(compound_verdicts_equal_the_brute_force_over_all_pairs) {
         }
     }
     BOOST_TEST(meeting > 20);
-    std::cout << "compound verdicts: " << checked << " pairs (" << meeting << " meeting), " << pruned << " part pairs pruned\n";
+    std::cout << "compound verdicts: " << checked << " pairs (" << meeting << " meeting), " << pruned
+              << " part pairs pruned\n";
 }
 
 namespace {
@@ -236,7 +239,8 @@ std::vector<Vec3q> box_points(const std::array<int, 6>& h) {
             for (int z : {h[2], h[5]}) v.push_back({test::qc(x, 2), test::qc(y, 2), test::qc(z, 2)});
     return v;
 }
-ExactScene compound_scene(const std::vector<std::array<int, 6>> parts[2], const Vec3q seeds[2], const Q lo[2], const Q hi[2]) {
+ExactScene compound_scene(const std::vector<std::array<int, 6>> parts[2], const Vec3q seeds[2], const Q lo[2],
+                          const Q hi[2]) {
     ExactScene sc;
     for (int i = 0; i < 2; ++i) {
         for (const auto& h : parts[i]) {
@@ -255,8 +259,8 @@ Q qs(const nlohmann::ordered_json& j) { return Q(j.get<std::string>()); }
 
 // The U and the peg (tests/data/compound_u_peg.json, coordinates doubled): a_u_shape_and_a_peg.
 ExactScene u_peg_scene() {
-    const std::vector<std::array<int, 6>> parts[2] = {{{-6, -2, 0, 6, 2, 2}, {-6, -2, 2, -4, 2, 8}, {4, -2, 2, 6, 2, 8}},
-                                                      {{-2, -1, 4, 2, 1, 10}}};
+    const std::vector<std::array<int, 6>> parts[2] = {
+        {{-6, -2, 0, 6, 2, 2}, {-6, -2, 2, -4, 2, 8}, {4, -2, 2, 6, 2, 8}}, {{-2, -1, 4, 2, 1, 10}}};
     const Vec3q seeds[2] = {{Q(0), Q(0), Q(1, 2)}, {Q(0), Q(0), Q(7, 2)}};
     const Q lo[2] = {Q(1, 2), Q(1, 2)}, hi[2] = {Q(2), Q(3)};
     return compound_scene(parts, seeds, lo, hi);
@@ -286,7 +290,9 @@ BOOST_AUTO_TEST_CASE(a_u_shape_and_a_peg) {
     BOOST_TEST((r.pairs[1].polygon == wall));
     BOOST_TEST((r.pairs[2].polygon == wall));
     BOOST_TEST_REQUIRE(r.region.size() == 1u);
-    BOOST_TEST((r.region[0].outer == std::vector<Point2q>{{Q(1, 2), Q(1)}, {Q(6, 7), Q(12, 7)}, {Q(2), Q(4, 3)}, {Q(2), Q(3)}, {Q(1, 2), Q(3)}}));
+    BOOST_TEST(
+        (r.region[0].outer ==
+         std::vector<Point2q>{{Q(1, 2), Q(1)}, {Q(6, 7), Q(12, 7)}, {Q(2), Q(4, 3)}, {Q(2), Q(3)}, {Q(1, 2), Q(3)}}));
     BOOST_TEST_REQUIRE(r.growth.size() == 1u);
     BOOST_TEST(r.growth[0].from == Q(3, 2));
     BOOST_TEST(r.growth[0].to == Q(2));
@@ -298,8 +304,10 @@ BOOST_AUTO_TEST_CASE(a_u_shape_and_a_peg) {
     BOOST_TEST(cert["pairs"][1]["normals"] == nlohmann::ordered_json::parse(R"([["1", "0", "0"]])"));
     BOOST_TEST(cert["pairs"][2]["normals"] == nlohmann::ordered_json::parse(R"([["-1", "0", "0"]])"));
     BOOST_TEST(cert["pairs"][0]["witnesses"].size() == 4u);
-    BOOST_TEST(verdict_name(compound_verdict(r, Q(1, 2), Q(1)).verdict) == std::string("touching"));       // on the wall's line
-    BOOST_TEST(verdict_name(compound_verdict(r, Q(6, 7), Q(12, 7) - Q(1, 100)).verdict) == std::string("separated"));  // below the reflex corner
+    BOOST_TEST(verdict_name(compound_verdict(r, Q(1, 2), Q(1)).verdict) ==
+               std::string("touching"));  // on the wall's line
+    BOOST_TEST(verdict_name(compound_verdict(r, Q(6, 7), Q(12, 7) - Q(1, 100)).verdict) ==
+               std::string("separated"));  // below the reflex corner
     BOOST_TEST(verdict_name(compound_verdict(r, Q(1), Q(3)).verdict) == std::string("overlapping"));
 }
 
@@ -378,7 +386,8 @@ BOOST_AUTO_TEST_CASE(certificate_polygons_equal_the_brute_force) {
             if (x[0] < sc.lo[0] || x[0] > sc.hi[0] || x[1] < sc.lo[1] || x[1] > sc.hi[1]) continue;
             bool want = false, got = false;
             for (const Polyhedron& A : parts[0])
-                for (const Polyhedron& B : parts[1]) want = want || meet_brute(A, B, sc.P[0].seed, sc.P[1].seed, x[0], x[1]);
+                for (const Polyhedron& B : parts[1])
+                    want = want || meet_brute(A, B, sc.P[0].seed, sc.P[1].seed, x[0], x[1]);
             for (const auto& p : polys) got = got || inside_convex(p, x);
             BOOST_TEST(got == want, "scene " << t << " at (" << x[0] << ", " << x[1] << ")");
             ++checked;
@@ -386,8 +395,8 @@ BOOST_AUTO_TEST_CASE(certificate_polygons_equal_the_brute_force) {
         }
     }
     BOOST_TEST(meeting > 20);
-    std::cout << "compound certificates: " << checked << " points against the brute force (" << meeting << " meeting), " << blocks
-              << " blocks of pruned pairs\n";
+    std::cout << "compound certificates: " << checked << " points against the brute force (" << meeting << " meeting), "
+              << blocks << " blocks of pruned pairs\n";
 }
 
 BOOST_AUTO_TEST_CASE(located_verdicts_equal_the_exact_ones) {
@@ -430,37 +439,44 @@ BOOST_AUTO_TEST_CASE(located_verdicts_equal_the_exact_ones) {
             std::vector<std::pair<double, double>> all = probes;
             for (int k = 0; k <= G; ++k) {  // on the grid lines (as the locator draws them) and the rectangle's edges
                 const double x = 0.25 + 2.75 * k / G;
-                all.push_back({x, 0.25}), all.push_back({x, 3.0}), all.push_back({0.25, x}), all.push_back({3.0, x}), all.push_back({x, x});
+                all.push_back({x, 0.25}), all.push_back({x, 3.0}), all.push_back({0.25, x}), all.push_back({3.0, x}),
+                    all.push_back({x, x});
             }
             for (const auto& [a, b] : all) {
                 const Q qa(a), qb(b);
                 if (qa < sc.lo[0] || qa > sc.hi[0] || qb < sc.lo[1] || qb > sc.hi[1]) continue;
                 const std::string want = verdict_name(compound_verdict(r, qa, qb).verdict);
                 const int got = static_cast<int>(L.verdict(a, b, st));
-                BOOST_TEST(std::string(got == 0 ? "separated" : got == 1 ? "touching" : "overlapping") == want,
+                BOOST_TEST(std::string(got == 0   ? "separated"
+                                       : got == 1 ? "touching"
+                                                  : "overlapping") == want,
                            "scene " << t << " G " << G << " at (" << a << ", " << b << ")");
                 if (G == 5) {
                     bool meet = false;
                     for (const Polyhedron& A : parts[0])
-                        for (const Polyhedron& B : parts[1]) meet = meet || meet_brute(A, B, sc.P[0].seed, sc.P[1].seed, qa, qb);
+                        for (const Polyhedron& B : parts[1])
+                            meet = meet || meet_brute(A, B, sc.P[0].seed, sc.P[1].seed, qa, qb);
                     BOOST_TEST((got > 0) == meet);
                 }
                 ++checked;
                 ++counts[got];
             }
         }
-        const std::vector<Verdict> batch = CompoundLocator(r, sc.lo, sc.hi, 16).classify({1.0, 2.0, 0.25}, {1.0, 2.0, 3.0}, 2);
+        const std::vector<Verdict> batch =
+            CompoundLocator(r, sc.lo, sc.hi, 16).classify({1.0, 2.0, 0.25}, {1.0, 2.0, 3.0}, 2);
         for (int k = 0; k < 3; ++k) {
             const double a[3] = {1.0, 2.0, 0.25}, b[3] = {1.0, 2.0, 3.0};
             const std::string want = verdict_name(compound_verdict(r, Q(a[k]), Q(b[k])).verdict);
-            BOOST_TEST(static_cast<int>(batch[static_cast<size_t>(k)]) == (want == "separated" ? 0 : want == "touching" ? 1 : 2));
+            BOOST_TEST(static_cast<int>(batch[static_cast<size_t>(k)]) == (want == "separated"  ? 0
+                                                                           : want == "touching" ? 1
+                                                                                                : 2));
         }
     }
     BOOST_TEST(counts[1] > 20);  // touching points (on polygon edges) were reached
     BOOST_TEST(counts[2] > 100);
-    std::cout << "located verdicts: " << checked << " points (" << counts[0] << " separated, " << counts[1] << " touching, " << counts[2]
-              << " overlapping), filter " << st[filter::Predicate::HalfPlaneSide].filtered << ", exact "
-              << st[filter::Predicate::HalfPlaneSide].exact << "\n";
+    std::cout << "located verdicts: " << checked << " points (" << counts[0] << " separated, " << counts[1]
+              << " touching, " << counts[2] << " overlapping), filter " << st[filter::Predicate::HalfPlaneSide].filtered
+              << ", exact " << st[filter::Predicate::HalfPlaneSide].exact << "\n";
     BOOST_CHECK_THROW(CompoundLocator(ur, ulo, uhi, 4).verdict(0.4, 1.0, st), InputError);
 }
 
@@ -520,7 +536,8 @@ BOOST_AUTO_TEST_CASE(the_band_boundary_labelled_by_hand) {
     // the box's far face x = 5 (9/2 + ρ2/2): normal −x, a = hA(−x) = −2, b = 1/2, c = −9/2; back
     // along ρ2 = 3 to (1, 3); down 3ρ1 = 9/2 − ρ2/2, the part's face x = 3 reaching the box's near
     // face x = 4: normal +x. Face to face, and no switch point (each line runs side to side).
-    const ExactScene sc = load_scene(std::string(SCALECERT_SOURCE_DIR) + "/tests/data/compound_band.json", ReadOptions{false, true, true});
+    const ExactScene sc = load_scene(std::string(SCALECERT_SOURCE_DIR) + "/tests/data/compound_band.json",
+                                     ReadOptions{false, true, true});
     const CompoundRegion r = compound_region(sc, "band");
     const CompoundBoundary b = label_boundary(r, sc);
     BOOST_TEST_REQUIRE(b.rings.size() == 1u);
@@ -541,7 +558,8 @@ BOOST_AUTO_TEST_CASE(the_paper_fig5_sequence_on_the_region_boundary) {
     // from (1, 3) (the curve ρ2 = 6 − 3ρ1 leaving ρ2 = 3) through the paper's sequence
     // (V1,F2) -> (V1,E2) -> (E1,E2) -> (E1,V2) -> (F1,V2): switch points (23/19, 45/19), a vertex of
     // P1 on an edge of P2, and (29/13, 18/13), an edge of P1 on a vertex of P2 (README, paper).
-    const ExactScene sc = load_scene(std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/fig5_vf_ve_ee.json", ReadOptions{false, true, true});
+    const ExactScene sc = load_scene(std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/fig5_vf_ve_ee.json",
+                                     ReadOptions{false, true, true});
     const CompoundRegion r = compound_region(sc, "fig5");
     const CompoundBoundary b = label_boundary(r, sc);
     BOOST_TEST_REQUIRE(b.rings.size() == 1u);
@@ -583,9 +601,11 @@ BOOST_AUTO_TEST_CASE(boundary_labels_equal_the_brute_force_contacts) {
             const Polyhedron* P[2] = {&parts[0][static_cast<size_t>(a)], &parts[1][static_cast<size_t>(bb)]};
             std::vector<int>* f[2] = {&f1, &f2};
             for (int i = 0; i < 2; ++i)
-                f[i]->erase(std::remove_if(f[i]->begin(), f[i]->end(), [&](int v) {
-                                return std::find(P[i]->vertices.begin(), P[i]->vertices.end(), v) == P[i]->vertices.end();
-                            }),
+                f[i]->erase(std::remove_if(f[i]->begin(), f[i]->end(),
+                                           [&](int v) {
+                                               return std::find(P[i]->vertices.begin(), P[i]->vertices.end(), v) ==
+                                                      P[i]->vertices.end();
+                                           }),
                             f[i]->end());
             return std::pair{f1, f2};
         };
@@ -625,8 +645,8 @@ BOOST_AUTO_TEST_CASE(boundary_labels_equal_the_brute_force_contacts) {
     BOOST_TEST(edges > 20);
     BOOST_TEST(switches > 5);
     BOOST_TEST(contact_changes > 5);  // a pair's own contact changing: two tight normals (contact_on_line)
-    std::cout << "compound boundaries: " << edges << " contact edges and " << switches << " switch points (" << contact_changes
-              << " within one pair; " << contacts << " pair contacts) against the brute force\n";
+    std::cout << "compound boundaries: " << edges << " contact edges and " << switches << " switch points ("
+              << contact_changes << " within one pair; " << contacts << " pair contacts) against the brute force\n";
 }
 
 BOOST_AUTO_TEST_CASE(wedges_sharing_two_lines_each_labelled_by_its_own_pair) {
@@ -707,23 +727,27 @@ BOOST_AUTO_TEST_CASE(a_normal_tight_everywhere_holds_no_edge) {
         BOOST_TEST(e.contact->tight.size() == 2u);  // −x and +y
     }
     BOOST_TEST(contacts == 1);
-    BOOST_TEST(verdict_name(compound_verdict(r, Q(3), Q(1, 2)).verdict) == std::string("touching"));  // inside the polygon, yet touching
+    BOOST_TEST(verdict_name(compound_verdict(r, Q(3), Q(1, 2)).verdict) ==
+               std::string("touching"));  // inside the polygon, yet touching
 }
 
 // ---- certify-fp on compounds ------------------------------------------------------------------
 namespace {
 // certify-fp's JSON claims on a scene of parts: each judgement, and the certificate text.
-std::vector<bool> judge_claims(const ExactScene& sc, const std::string& claims, std::string* certificate = nullptr, const Q& tol = Q(0)) {
+std::vector<bool> judge_claims(const ExactScene& sc, const std::string& claims, std::string* certificate = nullptr,
+                               const Q& tol = Q(0)) {
     CompoundJudge judge(sc, "scene");
     long wrong = 0;
-    const std::string rep = certify_fp(judge, claims, "claims", ClaimOptions{false, tol, true}, &wrong, nullptr, certificate);
+    const std::string rep =
+        certify_fp(judge, claims, "claims", ClaimOptions{false, tol, true}, &wrong, nullptr, certificate);
     std::vector<bool> right;
     const auto report = nlohmann::ordered_json::parse(rep);
     for (const auto& c : report["claims"]) right.push_back(c["right"].get<bool>());
     return right;
 }
 ExactScene band_scene() {
-    const std::vector<std::array<int, 6>> parts[2] = {{{4, -2, -2, 6, 2, 2}, {-6, -2, -2, -4, 2, 2}}, {{8, -2, -2, 10, 2, 2}}};
+    const std::vector<std::array<int, 6>> parts[2] = {{{4, -2, -2, 6, 2, 2}, {-6, -2, -2, -4, 2, 2}},
+                                                      {{8, -2, -2, 10, 2, 2}}};
     const Vec3q seeds[2] = {{Q(0), Q(0), Q(0)}, {Q(9, 2), Q(0), Q(0)}};
     return compound_scene(parts, seeds, kLo, kHi);
 }
@@ -756,7 +780,8 @@ BOOST_AUTO_TEST_CASE(band_claims_judged_by_hand) {
      {"kind": "witness_point", "rho1": 1.5, "rho2": 2, "point": [-4, 0, 0]},
      {"kind": "witness_point", "rho1": 1.5, "rho2": 2, "point": [4, 1.5, 1.5]}
     ]})";
-    const std::vector<bool> want = {true, true, true, true, false, true, true, false, true, false, true, true, false, false, true, false, true};
+    const std::vector<bool> want = {true,  true, true, true,  false, true, true,  false, true,
+                                    false, true, true, false, false, true, false, true};
     const std::vector<bool> got = judge_claims(band_scene(), claims);
     BOOST_TEST_REQUIRE(got.size() == want.size());
     for (size_t k = 0; k < want.size(); ++k) BOOST_TEST(got[k] == want[k], "claim " << k);
@@ -801,8 +826,9 @@ BOOST_AUTO_TEST_CASE(u_and_peg_claims_judged_by_hand) {
 
 BOOST_AUTO_TEST_CASE(compound_judgements_equal_the_brute_force) {
     // Random compounds (three_part_compounds), at random pairs and at the corners of the pair
-    // polygons (compound_region): the verdict against the brute force over every part pair (test::Brute: every cross product of point differences, no hull), and the distance
-    // against the least of CGAL's exact polytope distance over every pair (all vertices).
+    // polygons (compound_region): the verdict against the brute force over every part pair
+    // (test::Brute: every cross product of point differences, no hull), and the distance against
+    // the least of CGAL's exact polytope distance over every pair (all vertices).
     std::mt19937 g(7077);
     long checked = 0, kinds[3] = {0, 0, 0};
     for (int t = 0; t < 12; ++t) {
@@ -845,8 +871,10 @@ BOOST_AUTO_TEST_CASE(compound_judgements_equal_the_brute_force) {
                 if (least < 0 || e < least) least = e;
             }
             Json proof;
-            BOOST_TEST(static_cast<int>(judge.verdict(r1, r2, &proof).verdict) == want, "scene " << t << " at (" << r1 << ", " << r2 << ")");
-            BOOST_TEST(judge.distance(r1, r2, &proof).squared == least, "scene " << t << " at (" << r1 << ", " << r2 << ")");
+            BOOST_TEST(static_cast<int>(judge.verdict(r1, r2, &proof).verdict) == want,
+                       "scene " << t << " at (" << r1 << ", " << r2 << ")");
+            BOOST_TEST(judge.distance(r1, r2, &proof).squared == least,
+                       "scene " << t << " at (" << r1 << ", " << r2 << ")");
             ++kinds[want];
             ++checked;
         }
@@ -854,6 +882,6 @@ BOOST_AUTO_TEST_CASE(compound_judgements_equal_the_brute_force) {
     BOOST_TEST(kinds[0] > 10);
     BOOST_TEST(kinds[1] > 10);
     BOOST_TEST(kinds[2] > 10);
-    std::cout << "compound judgements: " << checked << " pairs (" << kinds[0] << " separated, " << kinds[1] << " touching, " << kinds[2]
-              << " overlapping)\n";
+    std::cout << "compound judgements: " << checked << " pairs (" << kinds[0] << " separated, " << kinds[1]
+              << " touching, " << kinds[2] << " overlapping)\n";
 }

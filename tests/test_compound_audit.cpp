@@ -18,7 +18,9 @@ using namespace scalecert::internal;
 
 namespace {
 
-std::string scene_path(const std::string& name) { return std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/" + name; }
+std::string scene_path(const std::string& name) {
+    return std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/" + name;
+}
 
 ExactScene load(const std::string& name) {
     ReadOptions o;
@@ -76,7 +78,7 @@ Q q(double x) { return exact_from_double(x); }
 
 // A method whose verdicts are given: a fixed, scattered function of the pair (+1, 0 or −1).
 class Scripted : public fp::Method {
-public:
+  public:
     std::string name() const override { return "scripted"; }
     int classify(double r1, double r2) const override {
         const std::uint64_t h = std::hash<double>()(r1) * 31 + std::hash<double>()(r2) * 17;
@@ -85,12 +87,12 @@ public:
 };
 // One that is always right, by the hand verdicts (+1 separated, 0 touching, −1 overlapping).
 class ByHand : public fp::Method {
-public:
+  public:
     explicit ByHand(const ExactScene& s) : s_(s) {}
     std::string name() const override { return "by-hand"; }
     int classify(double r1, double r2) const override { return 1 - boxes_by_hand(s_, q(r1), q(r2)); }
 
-private:
+  private:
     ExactScene s_;
 };
 
@@ -104,7 +106,8 @@ fs::path workdir() {
 }
 Run run(const std::string& args) {
     const fs::path o = workdir() / "stdout", e = workdir() / "stderr";
-    const int st = std::system((std::string(SCALECERT_BIN) + " " + args + " >" + o.string() + " 2>" + e.string()).c_str());
+    const int st =
+        std::system((std::string(SCALECERT_BIN) + " " + args + " >" + o.string() + " 2>" + e.string()).c_str());
     return {WIFEXITED(st) ? WEXITSTATUS(st) : -1, test::slurp(o), test::slurp(e)};
 }
 
@@ -134,7 +137,8 @@ BOOST_AUTO_TEST_CASE(band_samples_lie_where_derived_by_hand) {
         } else if (c.k <= 48) {
             // 2^-48 of a coordinate is 2^5 of its last bit: the side survives rounding, and the
             // band is wide (at ρ2 = 1 it spans 4/3 ... 5/2): inward overlapping, outward separated.
-            BOOST_TEST(c.exact == (c.side > 0 ? 2 : 0), "(" << c.r1 << ", " << c.r2 << ") k " << c.k << " side " << c.side);
+            BOOST_TEST(c.exact == (c.side > 0 ? 2 : 0),
+                       "(" << c.r1 << ", " << c.r2 << ") k " << c.k << " side " << c.side);
         }
     }
     BOOST_TEST(random == 60);
@@ -150,7 +154,8 @@ BOOST_AUTO_TEST_CASE(box_compounds_are_labelled_by_interval_arithmetic) {
         const Audited a = samples_of(name);
         long on = 0, touching = 0;
         for (const CompoundSample& c : a.samples) {
-            BOOST_TEST(c.exact == boxes_by_hand(a.scene, q(c.r1), q(c.r2)), name << " (" << c.r1 << ", " << c.r2 << ") k " << c.k);
+            BOOST_TEST(c.exact == boxes_by_hand(a.scene, q(c.r1), q(c.r2)),
+                       name << " (" << c.r1 << ", " << c.r2 << ") k " << c.k);
             if (c.k == 0) ++on, touching += c.exact == 1;
         }
         BOOST_TEST(on == 32);
@@ -256,12 +261,15 @@ BOOST_AUTO_TEST_CASE(convex_methods_are_refused_on_parts_and_compound_methods_ta
         audit_scene("band", band, Q(0), {"bullet-compound", "libccd-gjk"}, {});
         BOOST_FAIL("libccd-gjk on parts was not refused");
     } catch (const InputError& e) {
-        BOOST_TEST(std::string(e.what()).find("P1 is made of parts, and method 'libccd-gjk' audits convex objects only") != std::string::npos, e.what());
+        BOOST_TEST(std::string(e.what()).find(
+                       "P1 is made of parts, and method 'libccd-gjk' audits convex objects only") != std::string::npos,
+                   e.what());
     }
     // Stacked cubes (a plain scene: each object one part): they touch on ρ1 + ρ2 = 3 and overlap
     // above it, by hand.
     const ExactScene cubes = load("stacked_cubes.json");
-    const std::vector<AuditRow> rows = audit_scene("cubes", cubes, Q(0), {"libccd-gjk", "bullet-compound"}, {}, true, false);
+    const std::vector<AuditRow> rows =
+        audit_scene("cubes", cubes, Q(0), {"libccd-gjk", "bullet-compound"}, {}, true, false);
     BOOST_TEST_REQUIRE(rows.size() == 3u);  // libccd-gjk, the exact row, bullet-compound
     BOOST_TEST(!rows[0].on_boundary.has_value());
     BOOST_TEST(rows[2].method == "bullet-compound");
@@ -290,9 +298,12 @@ BOOST_AUTO_TEST_CASE(the_command_refuses_bad_input_in_one_line_and_repeats_its_b
         }
     };
     // The default methods are convex ones: the line names the compound ones.
-    refused(band, band + ": P1 is made of parts, and method 'libccd-gjk' audits convex objects only (for objects made of parts: --methods "
-                         "bullet-compound,fcl-compound-libccd,fcl-compound-indep,libccd-gjk-parts)");
-    refused(cubes + " " + band + " --methods bullet-compound,grid --grid 8", band + ": P1 is made of parts, and method 'grid'");
+    refused(band, band +
+                      ": P1 is made of parts, and method 'libccd-gjk' audits convex objects only (for objects made of "
+                      "parts: --methods "
+                      "bullet-compound,fcl-compound-libccd,fcl-compound-indep,libccd-gjk-parts)");
+    refused(cubes + " " + band + " --methods bullet-compound,grid --grid 8",
+            band + ": P1 is made of parts, and method 'grid'");
     refused(band + " --methods bullet-compound,no-such", "--methods: unknown method 'no-such'");
     const std::string flat = (workdir() / "flat.json").string();
     std::ofstream(flat) << R"({"P1": {"parts": [{"vertices": [[0,0,0],[1,0,0],[0,1,0],[1,1,0]]}], "seed": [0, 0, 0]},)"
@@ -300,7 +311,8 @@ BOOST_AUTO_TEST_CASE(the_command_refuses_bad_input_in_one_line_and_repeats_its_b
     refused(flat + " --methods bullet-compound", "P1.parts[0]");
     // The same input, the same bytes (without timing); the CSV with the by-distance and
     // on-boundary columns.
-    const std::string args = "audit " + band + " " + cubes + " --methods fcl-compound-libccd,libccd-gjk-parts --by-distance --no-timing --out " +
+    const std::string args = "audit " + band + " " + cubes +
+                             " --methods fcl-compound-libccd,libccd-gjk-parts --by-distance --no-timing --out " +
                              out.string() + " --csv " + csv.string();
     BOOST_TEST_REQUIRE(run(args).status == 0);
     const std::string j1 = test::slurp(out), c1 = test::slurp(csv);
@@ -315,6 +327,7 @@ BOOST_AUTO_TEST_CASE(the_command_refuses_bad_input_in_one_line_and_repeats_its_b
         BOOST_TEST(!r.contains("seconds_per_query"));
     }
     BOOST_TEST(c1.find(",bd4_pairs,bd4_wrong,bd4_touching,") != std::string::npos);
-    BOOST_TEST(c1.find(",on_points,on_touching,on_said_separated,on_said_touching,on_said_overlapping,on_moved,on_moved_wrong\n") != std::string::npos);
+    BOOST_TEST(c1.find(",on_points,on_touching,on_said_separated,on_said_touching,on_said_overlapping,on_moved,on_"
+                       "moved_wrong\n") != std::string::npos);
     BOOST_TEST(std::count(c1.begin(), c1.end(), '\n') == 5);
 }

@@ -36,7 +36,11 @@ BOOST_AUTO_TEST_CASE(binary_doubles_are_dyadic) {
     // Read as a double, a token is the whole text: strtod stops at a NUL, the token does not (the
     // claims fuzzer read "1<NUL>02" as 1), nor at trailing junk.
     BOOST_TEST(parse_number("0.1", true) == exact_from_double(0.1));
-    BOOST_CHECK_THROW(parse_number(std::string("1\0" "02", 4), true), InputError);
+    BOOST_CHECK_THROW(parse_number(std::string("1\0"
+                                               "02",
+                                               4),
+                                   true),
+                      InputError);
     BOOST_CHECK_THROW(parse_number("1x", true), InputError);
     BOOST_CHECK_THROW(parse_number(" 1", true), InputError);
     BOOST_CHECK_THROW(parse_number("", true), InputError);

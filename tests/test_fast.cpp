@@ -44,7 +44,8 @@ BOOST_AUTO_TEST_CASE(filtered_equals_exact) {
 }
 
 BOOST_AUTO_TEST_CASE(batch_on_two_threads_equals_one_by_one) {
-    HullModel m = build_model(load_scene(std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/fig5_vf_ve_ee.json"));
+    HullModel m =
+        build_model(load_scene(std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/fig5_vf_ve_ee.json"));
     TouchingCurve c = build_curve(m);
     FastCurve fc(m, c);
     std::mt19937 g(5);
@@ -57,7 +58,6 @@ BOOST_AUTO_TEST_CASE(batch_on_two_threads_equals_one_by_one) {
     for (size_t i = 0; i < a.size(); i += 97)
         BOOST_TEST(out[i] == query(m, c, exact_from_double(a[i]), exact_from_double(b[i]), false).verdict);
 }
-
 
 // Pair files: doubles written with 17 significant digits read back bit for bit, across the chunk
 // boundary of two threads; strtod's other forms; blank lines and comments; the first bad line.
@@ -128,8 +128,8 @@ BOOST_AUTO_TEST_CASE(model_free_queries_equal_exact) {
         near_exact += qs.counts().exact;
     }
     std::cout << "model-free queries: random pairs " << random_filtered << " certified by the filter, " << random_exact
-              << " exact; pairs within an ulp of the curve " << near - near_exact << " certified, " << near_exact << " exact ("
-              << touch << " touching)\n";
+              << " exact; pairs within an ulp of the curve " << near - near_exact << " certified, " << near_exact
+              << " exact (" << touch << " touching)\n";
     BOOST_TEST(random_filtered >= 50 * random_exact);
     BOOST_TEST(near_exact > 0u);
 }
@@ -146,7 +146,8 @@ BOOST_AUTO_TEST_CASE(model_free_queries_at_extreme_scales) {
         for (int t = 0; t < 4; ++t) {
             ExactScene sc = test::random_scene(g, 5 + t, 6);
             for (int i = 0; i < 2; ++i) {
-                for (Vec3q& v : sc.P[i].points) for (Q& c : v) c *= f;
+                for (Vec3q& v : sc.P[i].points)
+                    for (Q& c : v) c *= f;
                 for (Q& c : sc.P[i].seed) c *= f;
             }
             HullModel m = build_model(sc);

@@ -8,11 +8,13 @@ using namespace scalecert::internal;
 namespace {
 std::vector<Vec3q> cube_with_clutter() {
     std::vector<Vec3q> p;
-    for (int x : {0, 2}) for (int y : {0, 2}) for (int z : {0, 2}) p.push_back({Q(x), Q(y), Q(z)});
-    p.push_back({Q(1), Q(1), Q(1)});  // interior
-    p.push_back({Q(1), Q(1), Q(2)});  // face centre
-    p.push_back({Q(1), Q(0), Q(0)});  // edge midpoint
-    p.push_back({Q(2), Q(2), Q(2)});  // duplicate of vertex 7
+    for (int x : {0, 2})
+        for (int y : {0, 2})
+            for (int z : {0, 2}) p.push_back({Q(x), Q(y), Q(z)});
+    p.push_back({Q(1), Q(1), Q(1)});        // interior
+    p.push_back({Q(1), Q(1), Q(2)});        // face centre
+    p.push_back({Q(1), Q(0), Q(0)});        // edge midpoint
+    p.push_back({Q(2), Q(2), Q(2)});        // duplicate of vertex 7
     p.push_back({Q(1, 2), Q(3, 2), Q(0)});  // inside the bottom face
     return p;
 }
@@ -128,7 +130,8 @@ BOOST_AUTO_TEST_CASE(machine_integer_and_gmp_hulls_agree) {
         Polyhedron A = build_polyhedron(pts, "P");
         // clutter: midpoints of the centroid and each point, strictly inside
         Vec3q c{Q(0), Q(0), Q(0)};
-        for (const Vec3q& p : pts) for (int k = 0; k < 3; ++k) c[k] += p[k] / Q(static_cast<long>(pts.size()));
+        for (const Vec3q& p : pts)
+            for (int k = 0; k < 3; ++k) c[k] += p[k] / Q(static_cast<long>(pts.size()));
         auto cluttered = pts;
         while (cluttered.size() <= kBrutePoints)
             for (size_t i = 0; i < pts.size() && cluttered.size() <= kBrutePoints + 3; ++i)
@@ -221,7 +224,8 @@ BOOST_AUTO_TEST_CASE(interior_weights_prove_interior_points) {
         Polyhedron P = build_polyhedron(pts, "P");
         std::vector<Vec3q> targets;
         Vec3q c{Q(0), Q(0), Q(0)};
-        for (const Vec3q& p : pts) for (int k = 0; k < 3; ++k) c[k] += p[k] / Q(static_cast<long>(pts.size()));
+        for (const Vec3q& p : pts)
+            for (int k = 0; k < 3; ++k) c[k] += p[k] / Q(static_cast<long>(pts.size()));
         targets.push_back(c);
         std::uniform_int_distribution<int> u(1, 9);
         for (int r = 0; r < 3; ++r) {  // (c + vertex)/2 pulled towards c by random amounts: interior
@@ -245,7 +249,8 @@ BOOST_AUTO_TEST_CASE(interior_weights_prove_interior_points) {
             for (size_t a = 1; a < w.size(); ++a)
                 for (size_t b = a + 1; b < w.size(); ++b)
                     for (size_t e = b + 1; e < w.size(); ++e)
-                        spans = spans || sgn(dot(cross(sub(P.points[w[a].first], P.points[w[0].first]), sub(P.points[w[b].first], P.points[w[0].first])),
+                        spans = spans || sgn(dot(cross(sub(P.points[w[a].first], P.points[w[0].first]),
+                                                       sub(P.points[w[b].first], P.points[w[0].first])),
                                                  sub(P.points[w[e].first], P.points[w[0].first])));
             BOOST_TEST(spans);
             BOOST_TEST(w.size() <= 7u);

@@ -7,7 +7,9 @@
 
 using namespace scalecert::internal;
 
-static std::string scene_path(const char* name) { return std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/" + name; }
+static std::string scene_path(const char* name) {
+    return std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/" + name;
+}
 
 BOOST_AUTO_TEST_CASE(stacked_cubes_single_ff_line) {
     // Cube [0,2]^3 seed (1,1,1) below cube [0,2]^2 x [3,5] seed (1,1,4). The top face of P1 at
@@ -52,9 +54,9 @@ BOOST_AUTO_TEST_CASE(tetrahedron_box_vf_to_ee_switch) {
     BOOST_TEST(B.contact == "EE");
     BOOST_TEST(B.slope == Q(-4, 7));
     BOOST_TEST(B.intercept == Q(18, 7));
-    BOOST_TEST(A.feat1 == std::vector<int>{0});         // vertex c
-    BOOST_TEST(B.feat1 == (std::vector<int>{0, 1}));    // edge c–a
-    BOOST_TEST(B.feat2 == (std::vector<int>{5, 7}));    // box edge x = z = 1
+    BOOST_TEST(A.feat1 == std::vector<int>{0});       // vertex c
+    BOOST_TEST(B.feat1 == (std::vector<int>{0, 1}));  // edge c–a
+    BOOST_TEST(B.feat2 == (std::vector<int>{5, 7}));  // box edge x = z = 1
     BOOST_TEST_REQUIRE(c.switches.size() == 1u);
     BOOST_TEST(c.switches[0].rho1 == 1);
     BOOST_TEST(c.switches[0].rho2 == 2);
@@ -71,7 +73,9 @@ BOOST_AUTO_TEST_CASE(coincident_seeds_overlap_everywhere) {
     // zero, the growth distance is 0, and nothing divides by zero.
     ExactScene sc;
     for (int i = 0; i < 2; ++i) {
-        for (int x : {-1, 1}) for (int y : {-1, 1}) for (int z : {-i - 1, i + 1}) sc.P[i].points.push_back({Q(x), Q(y), Q(z)});
+        for (int x : {-1, 1})
+            for (int y : {-1, 1})
+                for (int z : {-i - 1, i + 1}) sc.P[i].points.push_back({Q(x), Q(y), Q(z)});
         sc.P[i].seed = {Q(0), Q(0), Q(0)};
         sc.lo[i] = Q(1, 10);
         sc.hi[i] = Q(10);
@@ -96,8 +100,12 @@ BOOST_AUTO_TEST_CASE(below_rho2_zero_the_curve_goes_on_as_one_line) {
     // reaches ρ2 = 0 at ρ1 = 3 (the seed s2 on P1(3)'s face x = 3) and goes on as 3 − ρ1: with
     // I1 = [1, 6], one piece and no switch point at (5, −2), on both engines.
     ExactScene sc;
-    for (long x : {-1, 1}) for (long y : {-1, 1}) for (long z : {-1, 1}) sc.P[0].points.push_back({Q(x), Q(y), Q(z)});
-    for (long x : {2, 4}) for (long y : {-1, 3}) for (long z : {-2, 2}) sc.P[1].points.push_back({Q(x), Q(y), Q(z)});
+    for (long x : {-1, 1})
+        for (long y : {-1, 1})
+            for (long z : {-1, 1}) sc.P[0].points.push_back({Q(x), Q(y), Q(z)});
+    for (long x : {2, 4})
+        for (long y : {-1, 3})
+            for (long z : {-2, 2}) sc.P[1].points.push_back({Q(x), Q(y), Q(z)});
     sc.lo[0] = Q(1), sc.hi[0] = Q(6), sc.lo[1] = Q(1), sc.hi[1] = Q(2);
     finish_scene(sc, "scene");
     BOOST_TEST_REQUIRE((sc.P[1].seed == Vec3q{Q(3), Q(1), Q(0)}));
@@ -193,7 +201,13 @@ ExactScene two(std::vector<Vec3q> a, std::vector<Vec3q> b) {
     finish_scene(sc, "scene");
     return sc;
 }
-struct HandContact { const char* name; ExactScene sc; Q slope, intercept; std::string label; std::vector<int> f1, f2; };
+struct HandContact {
+    const char* name;
+    ExactScene sc;
+    Q slope, intercept;
+    std::string label;
+    std::vector<int> f1, f2;
+};
 }  // namespace
 
 BOOST_AUTO_TEST_CASE(contact_labels_are_the_smallest_faces_holding_the_touching_set) {
@@ -222,12 +236,28 @@ BOOST_AUTO_TEST_CASE(contact_labels_are_the_smallest_faces_holding_the_touching_
         {"edge", two(cube(0, 0, 0), cube(2, 2, 0)), Q(-1), Q(2), "EE", {6, 7}, {0, 1}},
         {"corner", two(cube(0, 0, 0), cube(2, 2, 2)), Q(-1), Q(2), "VV", {7}, {0}},
         {"face", two(cube(0, 0, 0), cube(2, 0, 0)), Q(-1), Q(2), "FF", {4, 5, 6, 7}, {0, 1, 2, 3}},
-        {"ridge", two(cube(0, 0, 0), pts({{2, 1, 0}, {2, 1, 2}, {4, 0, 0}, {4, 2, 0}, {4, 0, 2}, {4, 2, 2}})), Q(-3, 4), Q(7, 4), "FE",
-         {4, 5, 6, 7}, {0, 1}},
-        {"tipface", two(cube(0, 0, 0), pts({{2, 1, 1}, {4, 0, 0}, {4, 2, 0}, {4, 0, 2}, {4, 2, 2}})), Q(-5, 8), Q(13, 8), "FV",
-         {4, 5, 6, 7}, {0}},
-        {"tips", two(pts({{0, 0, 2}, {-1, -1, 0}, {1, -1, 0}, {-1, 1, 0}, {1, 1, 0}}), pts({{0, 0, 2}, {-1, -1, 4}, {1, -1, 4}, {-1, 1, 4}, {1, 1, 4}})),
-         Q(-1), Q(2), "VV", {0}, {0}},
+        {"ridge",
+         two(cube(0, 0, 0), pts({{2, 1, 0}, {2, 1, 2}, {4, 0, 0}, {4, 2, 0}, {4, 0, 2}, {4, 2, 2}})),
+         Q(-3, 4),
+         Q(7, 4),
+         "FE",
+         {4, 5, 6, 7},
+         {0, 1}},
+        {"tipface",
+         two(cube(0, 0, 0), pts({{2, 1, 1}, {4, 0, 0}, {4, 2, 0}, {4, 0, 2}, {4, 2, 2}})),
+         Q(-5, 8),
+         Q(13, 8),
+         "FV",
+         {4, 5, 6, 7},
+         {0}},
+        {"tips",
+         two(pts({{0, 0, 2}, {-1, -1, 0}, {1, -1, 0}, {-1, 1, 0}, {1, 1, 0}}),
+             pts({{0, 0, 2}, {-1, -1, 4}, {1, -1, 4}, {-1, 1, 4}, {1, 1, 4}})),
+         Q(-1),
+         Q(2),
+         "VV",
+         {0},
+         {0}},
     };
     for (const HandContact& h : cases) {
         BOOST_TEST_CONTEXT(h.name) {
@@ -270,7 +300,8 @@ BOOST_AUTO_TEST_CASE(contact_labels_match_the_brute_force_on_lattice_boxes_and_p
         for (int i = 0; i < 2; ++i) {
             const long ox = i ? off(g) : 0, oy = i ? off(g) : 0, oz = i ? off(g) : 0;
             if (t % 2 == 0) {  // a box
-                const long a = 1 + u(g) % 3, b = t % 4 == 0 ? a : 1 + u(g) % 3, c = t % 4 == 0 ? a : 1 + u(g) % 3;  // cubes often
+                const long a = 1 + u(g) % 3, b = t % 4 == 0 ? a : 1 + u(g) % 3,
+                           c = t % 4 == 0 ? a : 1 + u(g) % 3;  // cubes often
                 for (long x : {0L, a})
                     for (long y : {0L, b})
                         for (long z : {0L, c}) sc.P[i].points.push_back({Q(ox + x), Q(oy + y), Q(oz + z)});
@@ -295,7 +326,8 @@ BOOST_AUTO_TEST_CASE(contact_labels_match_the_brute_force_on_lattice_boxes_and_p
             BOOST_TEST_REQUIRE(!g1.empty());
             for (int k : p.contact.feat1) BOOST_TEST(std::binary_search(g1.begin(), g1.end(), k));
             for (int k : p.contact.feat2) BOOST_TEST(std::binary_search(g2.begin(), g2.end(), k));
-            const std::string brute{"VEF"[test::affine_dimension(sc.P[0].points, g1)], "VEF"[test::affine_dimension(sc.P[1].points, g2)]};
+            const std::string brute{"VEF"[test::affine_dimension(sc.P[0].points, g1)],
+                                    "VEF"[test::affine_dimension(sc.P[1].points, g2)]};
             BOOST_TEST(p.contact.label == brute);
             shared_lines += c.env.pieces[p.env].same.size() > 1;
             ++compared;

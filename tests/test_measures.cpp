@@ -129,11 +129,13 @@ BOOST_AUTO_TEST_CASE(fast_measures_equal_the_exact_path) {
                                                     : v == Verdict::Touching ? MeasuredDepth::Touching
                                                                              : MeasuredDepth::Overlapping;
             BOOST_TEST(md->state == want_state, "measured depth's state at (" << a << ", " << b << ") in scene " << t);
-            if (md->state == MeasuredDepth::Overlapping && v == Verdict::Overlapping) BOOST_TEST(md->depth->squared == ee.squared);
+            if (md->state == MeasuredDepth::Overlapping && v == Verdict::Overlapping)
+                BOOST_TEST(md->depth->squared == ee.squared);
         }
     }
-    std::cout << "differential: " << pairs << " pairs (" << near << " within 2^-k of the curve), " << distances << " distances ("
-              << fallbacks << " exact fallbacks), " << depths << " depths of overlapping pairs, " << touching << " touching\n";
+    std::cout << "differential: " << pairs << " pairs (" << near << " within 2^-k of the curve), " << distances
+              << " distances (" << fallbacks << " exact fallbacks), " << depths << " depths of overlapping pairs, "
+              << touching << " touching\n";
     BOOST_TEST(depths > pairs / 10);
 }
 
@@ -152,7 +154,8 @@ BOOST_AUTO_TEST_CASE(cloud_points_equal_the_hull) {
             for (int k = 0; k < n; ++k) {
                 double x = N(g), y = N(g), z = N(g);
                 const double l = std::sqrt(x * x + y * y + z * z), r = (k % 3 ? 1000 : 1000 * U(g)) / l;
-                sc.P[i].points.push_back({Q(std::lround(x * r) + (i ? 2500 : 0)), Q(std::lround(y * r) + (i ? 300 * (t % 4) : 0)), Q(std::lround(z * r))});
+                sc.P[i].points.push_back({Q(std::lround(x * r) + (i ? 2500 : 0)),
+                                          Q(std::lround(y * r) + (i ? 300 * (t % 4) : 0)), Q(std::lround(z * r))});
             }
         }
         sc.lo[0] = sc.lo[1] = Q(1, 2);

@@ -20,7 +20,9 @@ using filter::PredicateStats;
 namespace {
 double p2(int e) { return std::ldexp(1.0, e); }
 Z dot3(const Vec3z& a, const Vec3z& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-Vec3z zv(std::int64_t a, std::int64_t b, std::int64_t c) { return {Z(static_cast<long>(a)), Z(static_cast<long>(b)), Z(static_cast<long>(c))}; }
+Vec3z zv(std::int64_t a, std::int64_t b, std::int64_t c) {
+    return {Z(static_cast<long>(a)), Z(static_cast<long>(b)), Z(static_cast<long>(c))};
+}
 D3 dv(const Vec3z& v) { return {v[0].get_d(), v[1].get_d(), v[2].get_d()}; }
 int sign_of_z(const Z& z) { return sgn(z); }
 }  // namespace
@@ -30,8 +32,9 @@ int sign_of_z(const Z& z) { return sgn(z); }
 // sign of n·w − n·v through the predicate, with the exact stage done in GMP here.
 int support_sign(const Vec3z& n, const Vec3z& w, const Vec3z& v, PredicateStats& st) {
     const D3 nd = dv(n), wd = dv(w), vd = dv(v);
-    return filter::support_cmp(filter::support_approx(nd.data(), wd.data()), filter::support_approx(nd.data(), vd.data()),
-                               [&] { return sign_of_z(dot3(n, w) - dot3(n, v)); }, st);
+    return filter::support_cmp(
+        filter::support_approx(nd.data(), wd.data()), filter::support_approx(nd.data(), vd.data()),
+        [&] { return sign_of_z(dot3(n, w) - dot3(n, v)); }, st);
 }
 
 BOOST_AUTO_TEST_CASE(support_cmp_at_its_bound) {
@@ -41,8 +44,8 @@ BOOST_AUTO_TEST_CASE(support_cmp_at_its_bound) {
     for (std::int64_t k : {23, -23, 22, -22, 1, 0}) {
         PredicateStats st;
         const int s = support_sign(n, zv(V + k, 0, 0), v, st);
-        BOOST_TEST(s == (k > 0) - (k < 0));                          // the exact answer
-        const bool filtered = std::abs(k) >= 23;                       // just outside the bound
+        BOOST_TEST(s == (k > 0) - (k < 0));       // the exact answer
+        const bool filtered = std::abs(k) >= 23;  // just outside the bound
         BOOST_TEST(st[Predicate::SupportCmp].filtered == (filtered ? 1u : 0u));
         BOOST_TEST(st[Predicate::SupportCmp].exact == (filtered ? 0u : 1u));
     }
@@ -68,7 +71,10 @@ template <class V>
 void arc_side_cases() {
     // u = e_x, x = e_y: (u × x)·p = p_z and (x × u)·p = −p_z; bound = 1e-10·|p|.
     const V u{1, 0, 0}, x{0, 1, 0};
-    struct Case { std::int64_t py, pz; bool filtered; };
+    struct Case {
+        std::int64_t py, pz;
+        bool filtered;
+    };
     // |p| = 2^33: bound 0.86 < 1 (filtered); |p| = 2^34: bound 1.72 > 1 (exact); p_z = 0: exact 0.
     for (const Case& c : {Case{std::int64_t(1) << 33, 1, true}, Case{std::int64_t(1) << 33, -1, true},
                           Case{std::int64_t(1) << 34, 1, false}, Case{std::int64_t(1) << 34, -1, false},
@@ -81,7 +87,13 @@ void arc_side_cases() {
             const int expect = sign_of_z(dot3(cr, pz));
             PredicateStats st;
             int calls = 0;
-            const int s = filter::arc_side(dv(uz), dv(xz), dv(pz), x_first, u, [&] { ++calls; return x; }, p, st);
+            const int s = filter::arc_side(
+                dv(uz), dv(xz), dv(pz), x_first, u,
+                [&] {
+                    ++calls;
+                    return x;
+                },
+                p, st);
             BOOST_TEST(s == expect);
             BOOST_TEST(st[Predicate::ArcSide].filtered == (c.filtered ? 1u : 0u));
             BOOST_TEST(st[Predicate::ArcSide].exact == (c.filtered ? 0u : 1u));
@@ -98,7 +110,8 @@ BOOST_AUTO_TEST_CASE(arc_side_at_its_bound) {
     const Vec3s u{big, 1, 0}, x{0, big, 1}, p{big, big, big};
     const Vec3z uz = zv(big, 1, 0), xz = zv(0, big, 1), pz = zv(big, big, big);
     PredicateStats st;
-    const int s = filter::arc_side(dv(uz), dv(xz), dv(pz), false, u, [&] { return x; }, p, st);
+    const int s = filter::arc_side(
+        dv(uz), dv(xz), dv(pz), false, u, [&] { return x; }, p, st);
     BOOST_TEST(s == sign_of_z(dot3(cross(uz, xz), pz)));
 }
 
@@ -121,10 +134,10 @@ BOOST_AUTO_TEST_CASE(dominated_line_at_its_margin) {
 BOOST_AUTO_TEST_CASE(query_filters_at_their_bounds) {
     // y = −ρ1 + 2^20 at ρ1 = 1: f = 2^20 − 1, err = 1e-12·(1 + 2^20) ≈ 1.05e-6.
     const double a = -1, b = p2(20), f = b - 1;
-    BOOST_TEST(filter::curve_side_filter(a, b, 1, f - 2e-6) == 1);    // outside: separated
-    BOOST_TEST(filter::curve_side_filter(a, b, 1, f + 2e-6) == -1);   // outside: overlapping
-    BOOST_TEST(filter::curve_side_filter(a, b, 1, f - 0.5e-6) == 0);  // inside: exact stage
-    BOOST_TEST(filter::curve_side_filter(a, b, 1, f) == 0);           // on the line
+    BOOST_TEST(filter::curve_side_filter(a, b, 1, f - 2e-6) == 1);                // outside: separated
+    BOOST_TEST(filter::curve_side_filter(a, b, 1, f + 2e-6) == -1);               // outside: overlapping
+    BOOST_TEST(filter::curve_side_filter(a, b, 1, f - 0.5e-6) == 0);              // inside: exact stage
+    BOOST_TEST(filter::curve_side_filter(a, b, 1, f) == 0);                       // on the line
     BOOST_TEST(filter::curve_side_filter(a, b, 1, std::nextafter(f, 0.0)) == 0);  // one ulp below
     // The breakpoint: within 1e-12·ρ1 of it the piece is not certain.
     BOOST_TEST(!filter::near_breakpoint(1.0, 1 + 2e-12, true));
@@ -143,7 +156,8 @@ BOOST_AUTO_TEST_CASE(query_filters_at_their_bounds) {
 }
 
 BOOST_AUTO_TEST_CASE(curve_query_on_the_curve_and_one_ulp_away) {
-    HullModel m = build_model(load_scene(std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/fig5_vf_ve_ee.json"));
+    HullModel m =
+        build_model(load_scene(std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/fig5_vf_ve_ee.json"));
     TouchingCurve c = build_curve(m);
     for (double r1 : {0.9, 1.0, 1.25, 1.7, 2.3}) {
         const Q y = c.env.value(m.lines, exact_from_double(r1));
@@ -215,7 +229,8 @@ BOOST_AUTO_TEST_CASE(scan_support_filter_at_its_bound) {
     std::mt19937_64 g(7);
     std::uniform_int_distribution<std::int64_t> coord(-(std::int64_t(1) << 53), std::int64_t(1) << 53), small(-3, 3);
     for (int t = 0; t < 2000; ++t) {
-        Vec3z n{Z(static_cast<long>(coord(g))) * Z(static_cast<long>(coord(g))) + 1, Z(static_cast<long>(coord(g))), Z(static_cast<long>(small(g)))};
+        Vec3z n{Z(static_cast<long>(coord(g))) * Z(static_cast<long>(coord(g))) + 1, Z(static_cast<long>(coord(g))),
+                Z(static_cast<long>(small(g)))};
         std::vector<std::array<std::int64_t, 3>> pts;
         const std::array<std::int64_t, 3> base{coord(g) / 2, coord(g) / 2, coord(g) / 2};
         for (int k = 0; k < 8; ++k) pts.push_back({base[0] + small(g), base[1] + small(g), base[2] + small(g)});
@@ -223,13 +238,15 @@ BOOST_AUTO_TEST_CASE(scan_support_filter_at_its_bound) {
         double mx[3] = {0, 0, 0};
         for (const auto& x : pts)
             for (int c = 0; c < 3; ++c) mx[c] = std::max(mx[c], std::fabs(static_cast<double>(x[c])));
-        const filter::ScanSupportFilter sf(std::fabs(nd[0]) * mx[0] + std::fabs(nd[1]) * mx[1] + std::fabs(nd[2]) * mx[2]);
+        const filter::ScanSupportFilter sf(std::fabs(nd[0]) * mx[0] + std::fabs(nd[1]) * mx[1] +
+                                           std::fabs(nd[2]) * mx[2]);
         std::vector<double> v;
         double top = -INFINITY;
         Z best_exact;
         for (size_t k = 0; k < pts.size(); ++k) {
             const auto& x = pts[k];
-            v.push_back(nd[0] * static_cast<double>(x[0]) + nd[1] * static_cast<double>(x[1]) + nd[2] * static_cast<double>(x[2]));
+            v.push_back(nd[0] * static_cast<double>(x[0]) + nd[1] * static_cast<double>(x[1]) +
+                        nd[2] * static_cast<double>(x[2]));
             top = std::max(top, v.back());
             const Z e = dot3(n, zv(x[0], x[1], x[2]));
             if (k == 0 || e > best_exact) best_exact = e;
@@ -249,14 +266,16 @@ BOOST_AUTO_TEST_CASE(half_plane_side_at_its_bound) {
     for (int k : {10, 30, 40, 45, 48, 52, 60, 80}) {
         for (int sign : {1, -1}) {
             const Q x = Q(1) + Q(sign) / Q(Z(1) << k), y(1);
-            const int f = half_plane_side_filter(region_double(a), region_double(b), region_double(c), region_double(x), region_double(y));
+            const int f = half_plane_side_filter(region_double(a), region_double(b), region_double(c), region_double(x),
+                                                 region_double(y));
             const int exact = sgn(Q(a * x + b * y - c));
             BOOST_TEST((f == 0 || f == exact), "k = " << k);
             if (k <= 40) BOOST_TEST(f == exact, "k = " << k);  // 2^-40/3 is far above 1e-14: decided
             if (k >= 48) BOOST_TEST(f == 0, "k = " << k);      // 2^-48/3 < 1e-14: left to the exact stage
         }
     }
-    BOOST_TEST(half_plane_side_filter(region_double(a), region_double(b), region_double(c), 1.0, 1.0) == 0);  // on the line
+    BOOST_TEST(half_plane_side_filter(region_double(a), region_double(b), region_double(c), 1.0, 1.0) ==
+               0);  // on the line
     // A nonzero value below the normal range, or beyond the double range, is not a number here.
     BOOST_TEST(std::isnan(region_double(Q(Q(1) / Q(Z(1) << 1060)))));
     BOOST_TEST(std::isnan(region_double(Q(Z(1) << 1100))));

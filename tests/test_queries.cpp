@@ -36,8 +36,10 @@ void check_certificate(const Model& m, const QueryAnswer& r) {
         BOOST_TEST(s1 == 1);
         BOOST_TEST(s2 == 1);
         BOOST_TEST((x == w.point && y == w.point));
-        if (r.verdict == Verdict::Overlapping) BOOST_TEST((w.rho1 < r.rho1 && w.rho2 < r.rho2));
-        else BOOST_TEST((w.rho1 == r.rho1 && w.rho2 == r.rho2));
+        if (r.verdict == Verdict::Overlapping)
+            BOOST_TEST((w.rho1 < r.rho1 && w.rho2 < r.rho2));
+        else
+            BOOST_TEST((w.rho1 == r.rho1 && w.rho2 == r.rho2));
     }
 }
 }  // namespace
@@ -85,8 +87,10 @@ BOOST_AUTO_TEST_CASE(partition_regions_agree_with_brute_force) {
     std::mt19937 g(17);
     for (int t = 0; t < 15; ++t) {
         ExactScene sc = test::random_scene(g, 5 + t % 5, 5);
-        sc.lo[0] = Q(1, 2); sc.hi[0] = Q(3);
-        sc.lo[1] = Q(1, 3); sc.hi[1] = Q(5, 2);
+        sc.lo[0] = Q(1, 2);
+        sc.hi[0] = Q(3);
+        sc.lo[1] = Q(1, 3);
+        sc.hi[1] = Q(5, 2);
         HullModel m = build_model(sc);
         TouchingCurve c = build_curve(m);
         Partition p = build_partition(m, c);

@@ -136,13 +136,15 @@ BOOST_AUTO_TEST_CASE(session_verdicts_from_the_walk_equal_the_hull_paths) {
 
 BOOST_AUTO_TEST_CASE(verdicts_outside_I1_and_at_coincident_seeds_build_no_hull) {
     // A query far left or right of I1 must not fall back to the hull model (4,000-gon prisms:
-    // 90 s, 8.4 GB), nor a query with coincident seeds, where every pair overlaps. Crossed 100-gon prisms (test above), I1 = [1/2, 2].
+    // 90 s, 8.4 GB), nor a query with coincident seeds, where every pair overlaps. Crossed 100-gon
+    // prisms (test above), I1 = [1/2, 2].
     const ExactScene sc = test::crossed_prism_scene(100);
     const HullModel hm = build_model(sc);
     const TouchingCurve hc = build_curve(hm);
     Session s(sc, "test", Engine::Scan);
     for (const Q& r1 : {qc(1, 1000), qc(1, 10), Q(1000)})
-        for (const Q& r2 : {qc(1, 1000), Q(1), Q(1000)}) BOOST_TEST(s.verdict(r1, r2) == query(hm, hc, r1, r2, false).verdict);
+        for (const Q& r2 : {qc(1, 1000), Q(1), Q(1000)})
+            BOOST_TEST(s.verdict(r1, r2) == query(hm, hc, r1, r2, false).verdict);
     BOOST_TEST(s.walked());
     BOOST_TEST(!s.hull_built());
     // The same prisms about one seed: every pair overlaps (derived: the seed is inside both).
@@ -193,13 +195,17 @@ BOOST_AUTO_TEST_CASE(turned_boxes_in_decimals) {
     Tally t;
     for (int rep = 0; rep < 12; ++rep) {
         ExactScene sc;
-        for (int x : {-1, 1}) for (int y : {-1, 1}) for (int z : {-1, 1}) sc.P[0].points.push_back({Q(x), Q(y), qc(z * 3, 2)});
+        for (int x : {-1, 1})
+            for (int y : {-1, 1})
+                for (int z : {-1, 1}) sc.P[0].points.push_back({Q(x), Q(y), qc(z * 3, 2)});
         // cos = 0.6, sin = 0.8 (3-4-5): decimals, turned about z then x, shifted by rep/10.
-        for (int x : {-2, 2}) for (int y : {-1, 1}) for (int z : {-1, 1}) {
-            const Q X = qc(6 * x - 8 * y, 10), Y = qc(8 * x + 6 * y, 10), Z = Q(z);
-            const Q Y2 = qc(6, 10) * Y - qc(8, 10) * Z, Z2 = qc(8, 10) * Y + qc(6, 10) * Z;
-            sc.P[1].points.push_back({X + 4, Y2 + qc(rep, 10), Z2 + qc(rep, 20)});
-        }
+        for (int x : {-2, 2})
+            for (int y : {-1, 1})
+                for (int z : {-1, 1}) {
+                    const Q X = qc(6 * x - 8 * y, 10), Y = qc(8 * x + 6 * y, 10), Z = Q(z);
+                    const Q Y2 = qc(6, 10) * Y - qc(8, 10) * Z, Z2 = qc(8, 10) * Y + qc(6, 10) * Z;
+                    sc.P[1].points.push_back({X + 4, Y2 + qc(rep, 10), Z2 + qc(rep, 20)});
+                }
         sc = with_means(sc, qc(1, 2), Q(3));
         compare(sc, "turned box #" + std::to_string(rep), t);
     }
@@ -211,7 +217,9 @@ BOOST_AUTO_TEST_CASE(turned_boxes_in_decimals) {
 BOOST_AUTO_TEST_CASE(handovers_are_returned_and_counted) {
     auto cube = [](long cx, long cy, long cz) {
         std::vector<Vec3q> v;
-        for (long x : {-1, 1}) for (long y : {-1, 1}) for (long z : {-1, 1}) v.push_back({Q(cx + x), Q(cy + y), Q(cz + z)});
+        for (long x : {-1, 1})
+            for (long y : {-1, 1})
+                for (long z : {-1, 1}) v.push_back({Q(cx + x), Q(cy + y), Q(cz + z)});
         return v;
     };
     auto walk = [](ExactScene sc) {
@@ -249,13 +257,15 @@ BOOST_AUTO_TEST_CASE(handovers_are_returned_and_counted) {
     BOOST_TEST(hm.lines[hc.env.pieces[hc.pieces[0].env].line].slope == -1);
     BOOST_TEST(hm.lines[hc.env.pieces[hc.pieces[0].env].line].intercept == 3);
     // Every reason has its words.
-    for (int k = 0; k < kHandoverReasons; ++k) BOOST_TEST(std::string(handover_text(static_cast<Handover>(k))) != "unknown");
+    for (int k = 0; k < kHandoverReasons; ++k)
+        BOOST_TEST(std::string(handover_text(static_cast<Handover>(k))) != "unknown");
 }
 
 // Every bundled scene: the same document either way (each may fall back).
 BOOST_AUTO_TEST_CASE(bundled_scenes) {
     Tally t;
-    for (const auto& e : std::filesystem::directory_iterator(std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes")) {
+    for (const auto& e :
+         std::filesystem::directory_iterator(std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes")) {
         if (!e.is_regular_file()) continue;  // (compound/: objects made of parts)
         const ExactScene sc = load_scene(e.path().string());
         compare(sc, e.path().filename().string(), t);
@@ -291,12 +301,13 @@ BOOST_AUTO_TEST_CASE(compact_off_reader) {
         same(t);
     }
     // Left to the full reader: comments, fractions, too many digits, huge values, a bad header.
-    for (const char* t : {"OFF\n4 0 0\n0 0 0 # here\n1 0 0\n0 1 0\n0 0 1\n", "OFF\n4 0 0\n1/2 0 0\n1 0 0\n0 1 0\n0 0 1\n",
-                          "OFF\n4 0 0\n1234567890123456789 0 0\n1 0 0\n0 1 0\n0 0 1\n",
-                          "OFF\n4 0 0\n1e30 0 0\n1 0 0\n0 1 0\n0 0 1\n", "OFF\n4 0 0\n1e-30 0 0\n1 0 0\n0 1 0\n0 0 1\n",
-                          "OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n", "OFF\n4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n",
-                          "OFF\n4 0 0\n0 0 0\n1 0 0\n0 1 0\n0 0\n", "OFF\n4 0 0\n1. 0 0\n1 0 0\n0 1 0\n0 0 1\n",
-                          "OFF\n4 0 0\n.5 0 0\n1 0 0\n0 1 0\n0 0 1\n", "COFF\n4 0 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n"})
+    for (const char* t :
+         {"OFF\n4 0 0\n0 0 0 # here\n1 0 0\n0 1 0\n0 0 1\n", "OFF\n4 0 0\n1/2 0 0\n1 0 0\n0 1 0\n0 0 1\n",
+          "OFF\n4 0 0\n1234567890123456789 0 0\n1 0 0\n0 1 0\n0 0 1\n", "OFF\n4 0 0\n1e30 0 0\n1 0 0\n0 1 0\n0 0 1\n",
+          "OFF\n4 0 0\n1e-30 0 0\n1 0 0\n0 1 0\n0 0 1\n", "OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n",
+          "OFF\n4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n", "OFF\n4 0 0\n0 0 0\n1 0 0\n0 1 0\n0 0\n",
+          "OFF\n4 0 0\n1. 0 0\n1 0 0\n0 1 0\n0 0 1\n", "OFF\n4 0 0\n.5 0 0\n1 0 0\n0 1 0\n0 0 1\n",
+          "COFF\n4 0 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n"})
         BOOST_TEST(!parse_off_fast(t), t);
 }
 
@@ -315,21 +326,36 @@ BOOST_AUTO_TEST_CASE(compact_scene_reader) {
         }
     };
     const std::string cube = "[[0,0,0],[2,0,0],[0,2,0],[2,2,0],[0,0,2],[2,0,2],[0,2,2],[2,2,2]]";
-    same("{\"P1\": {\"vertices\": " + cube + "}, \"P2\": {\"vertices\": [[0,0,3],[2,0,3.5],[0,2e0,3],[2,2,3],[0,0,5],[2,0,5],[0,2,5],[2,2,5.25]]}, \"I1\": [0.5, 2.5], \"I2\": [1e-1, 3]}");
-    same("\n{ \"I2\" : [0.5,2], \"P2\":{\"seed\":[1,1,4],\"vertices\":" + cube + "},\r\n\"I1\":[1,2],\t\"P1\":{\"vertices\":[[-0.001,0,0],[1,0,0],[0,1,0],[0,0,1]], \"seed\": [0.1, 0.1, 0.1]} }\n");
+    same("{\"P1\": {\"vertices\": " + cube +
+         "}, \"P2\": {\"vertices\": [[0,0,3],[2,0,3.5],[0,2e0,3],[2,2,3],[0,0,5],[2,0,5],[0,2,5],[2,2,5.25]]}, \"I1\": "
+         "[0.5, 2.5], \"I2\": [1e-1, 3]}");
+    same("\n{ \"I2\" : [0.5,2], \"P2\":{\"seed\":[1,1,4],\"vertices\":" + cube +
+         "},\r\n\"I1\":[1,2],\t\"P1\":{\"vertices\":[[-0.001,0,0],[1,0,0],[0,1,0],[0,0,1]], \"seed\": [0.1, 0.1, 0.1]} "
+         "}\n");
     // Left to the full reader (which accepts some and refuses the rest with its own message).
-    for (const std::string& t : {
-             "{\"P1\": {\"vertices\": " + cube + "}, \"P2\": {\"vertices\": " + cube + "}, \"I1\": [\"1/2\", 2], \"I2\": [1, 2]}",  // a string number
-             "{\"P1\": {\"vertices\": " + cube + "}, \"P1\": {\"vertices\": " + cube + "}, \"I1\": [1, 2], \"I2\": [1, 2]}",       // duplicate key
-             "{\"P1\": {\"vertices\": " + cube + "}, \"P2\": {\"vertices\": [[01,0,0],[1,0,0],[0,1,0],[0,0,1]]}, \"I1\": [1, 2], \"I2\": [1, 2]}",  // leading zero
-             "{\"P1\": {\"vertices\": " + cube + "}, \"P2\": {\"off\": \"x.off\"}, \"I1\": [1, 2], \"I2\": [1, 2]}",            // a file
-             "{\"P1\": {\"vertices\": " + cube + "}, \"P2\": {\"vertices\": " + cube + "}, \"I1\": [1, 2], \"I2\": [1, 2]} x",  // trailing text
-             "{\"P1\": {\"vertices\": " + cube + "}, \"P2\": {\"vertices\": " + cube + "}, \"I1\": [2, 1], \"I2\": [1, 2]}",    // lo > hi
-             "{\"P1\": {\"vertices\": " + cube + "}, \"P2\": {\"vertices\": " + cube + "}, \"I1\": [1, 2]}",                    // I2 missing
-             "{\"P1\": {\"vertices\": [[0,0,0],[1,0,0],[0,1,0]]}, \"P2\": {\"vertices\": " + cube + "}, \"I1\": [1, 2], \"I2\": [1, 2]}",  // 3 points
-             "{\"P1\": {\"vertices\": " + cube + ", \"color\": 1}, \"P2\": {\"vertices\": " + cube + "}, \"I1\": [1, 2], \"I2\": [1, 2]}",  // unknown key
-             "{\"P1\": {\"vertices\": " + cube + "}, \"P2\": {\"vertices\": " + cube + "}, \"I1\": [1, 2], \"I2\": [1, 2],}",   // trailing comma
-             "{\"P1\": {\"vertices\": " + cube + "}, \"P2\": {\"vertices\": " + cube + "}, \"I1\": [+1, 2], \"I2\": [1, 2]}"})  // '+'
+    for (const std::string& t :
+         {"{\"P1\": {\"vertices\": " + cube + "}, \"P2\": {\"vertices\": " + cube +
+              "}, \"I1\": [\"1/2\", 2], \"I2\": [1, 2]}",  // a string number
+          "{\"P1\": {\"vertices\": " + cube + "}, \"P1\": {\"vertices\": " + cube +
+              "}, \"I1\": [1, 2], \"I2\": [1, 2]}",  // duplicate key
+          "{\"P1\": {\"vertices\": " + cube +
+              "}, \"P2\": {\"vertices\": [[01,0,0],[1,0,0],[0,1,0],[0,0,1]]}, \"I1\": [1, 2], "
+              "\"I2\": [1, 2]}",  // leading zero
+          "{\"P1\": {\"vertices\": " + cube +
+              "}, \"P2\": {\"off\": \"x.off\"}, \"I1\": [1, 2], \"I2\": [1, 2]}",  // a file
+          "{\"P1\": {\"vertices\": " + cube + "}, \"P2\": {\"vertices\": " + cube +
+              "}, \"I1\": [1, 2], \"I2\": [1, 2]} x",  // trailing text
+          "{\"P1\": {\"vertices\": " + cube + "}, \"P2\": {\"vertices\": " + cube +
+              "}, \"I1\": [2, 1], \"I2\": [1, 2]}",                                                        // lo > hi
+          "{\"P1\": {\"vertices\": " + cube + "}, \"P2\": {\"vertices\": " + cube + "}, \"I1\": [1, 2]}",  // I2 missing
+          "{\"P1\": {\"vertices\": [[0,0,0],[1,0,0],[0,1,0]]}, \"P2\": {\"vertices\": " + cube +
+              "}, \"I1\": [1, 2], \"I2\": [1, 2]}",  // 3 points
+          "{\"P1\": {\"vertices\": " + cube + ", \"color\": 1}, \"P2\": {\"vertices\": " + cube +
+              "}, \"I1\": [1, 2], \"I2\": [1, 2]}",  // unknown key
+          "{\"P1\": {\"vertices\": " + cube + "}, \"P2\": {\"vertices\": " + cube +
+              "}, \"I1\": [1, 2], \"I2\": [1, 2],}",  // trailing comma
+          "{\"P1\": {\"vertices\": " + cube + "}, \"P2\": {\"vertices\": " + cube +
+              "}, \"I1\": [+1, 2], \"I2\": [1, 2]}"})  // '+'
         BOOST_TEST(!parse_scene_fast(t.data(), t.size()), t);
 }
 
@@ -369,30 +395,49 @@ BOOST_AUTO_TEST_CASE(claims_on_the_walk_build_no_hull_model) {
         const ExactDistance apart = exact_distance(hm, x, under);
         BOOST_TEST(sgn(apart.squared) > 0);
         const double d = sqrt_minus_rn(apart.squared, Q(0));
-        add({{"kind", "distance"}, {"rho1", ex(x)}, {"rho2", ex(under)}, {"value", d}, {"closest", Json::array({pt(apart.p1), pt(apart.p2)})}}, true);
+        add({{"kind", "distance"},
+             {"rho1", ex(x)},
+             {"rho2", ex(under)},
+             {"value", d},
+             {"closest", Json::array({pt(apart.p1), pt(apart.p2)})}},
+            true);
         add({{"kind", "distance"}, {"rho1", ex(x)}, {"rho2", ex(under)}, {"value", d * 1.01}}, false);
         const ExactDepth dep = exact_penetration_depth(hm, all_facet_normals(hm), x, over);
-        add({{"kind", "penetration_depth"}, {"rho1", ex(x)}, {"rho2", ex(over)}, {"value", sqrt_minus_rn(dep.squared, Q(0))},
-             {"direction", pt(to_q(dep.direction))}}, true);
+        add({{"kind", "penetration_depth"},
+             {"rho1", ex(x)},
+             {"rho2", ex(over)},
+             {"value", sqrt_minus_rn(dep.squared, Q(0))},
+             {"direction", pt(to_q(dep.direction))}},
+            true);
         const Vec3z n = hm.lines[hc.env.pieces[hc.env.locate(x)].line].normal;
         add({{"kind", "separating_plane"}, {"rho1", ex(x)}, {"rho2", ex(under)}, {"normal", pt(to_q(n))}}, true);
         add({{"kind", "separating_plane"}, {"rho1", ex(x)}, {"rho2", ex(over)}, {"normal", pt(to_q(n))}}, false);
         // Beyond doubles: a point far outside both (by its x), and a normal nearly along x, along
         // which the prisms' x-ranges overlap (P1's x within ±10^6·ρ1 about 0, P2's about 12345).
-        add({{"kind", "witness_point"}, {"rho1", ex(x)}, {"rho2", ex(over)}, {"point", Json::array({"1e400", "0", "0"})}}, false);
-        add({{"kind", "separating_plane"}, {"rho1", ex(x)}, {"rho2", ex(under)}, {"normal", Json::array({"1e400", "0", "1"})}}, false);
+        add({{"kind", "witness_point"},
+             {"rho1", ex(x)},
+             {"rho2", ex(over)},
+             {"point", Json::array({"1e400", "0", "0"})}},
+            false);
+        add({{"kind", "separating_plane"},
+             {"rho1", ex(x)},
+             {"rho2", ex(under)},
+             {"normal", Json::array({"1e400", "0", "1"})}},
+            false);
     }
     // The curve from ρ1 = 1/2 to 9/10 of the way to ρ2 = 0, as the polyline of its breaks; a switch
     // point at every break with ρ2 > 0; and the growth distance.
     Q lo = qc(1, 2);
     const Q hi = zero * qc(9, 10);
     for (size_t k = 0; k + 1 < hc.env.pieces.size(); ++k)
-        if (const Q x = *hc.env.pieces[k].to; sgn(x) > 0 && x < lo * 2) lo = std::min(lo, Q(x / 2));  // a break inside the range
+        if (const Q x = *hc.env.pieces[k].to; sgn(x) > 0 && x < lo * 2)
+            lo = std::min(lo, Q(x / 2));  // a break inside the range
     Json verts = Json::array({Json::array({ex(lo), ex(f(lo))})});
     for (size_t k = 0; k + 1 < hc.env.pieces.size(); ++k) {
         const Q x = *hc.env.pieces[k].to, y = f(x);
         if (sgn(x) <= 0 || sgn(y) <= 0) continue;
-        const std::string label = contact_at(hm, hm.lines[hc.env.pieces[k].line], hm.lines[hc.env.pieces[k + 1].line], x, y).label;
+        const std::string label =
+            contact_at(hm, hm.lines[hc.env.pieces[k].line], hm.lines[hc.env.pieces[k + 1].line], x, y).label;
         add({{"kind", "switch_point"}, {"rho1", ex(x)}, {"rho2", ex(y)}, {"contact", label}}, true);
         add({{"kind", "switch_point"}, {"rho1", ex(Q(x * qc(101, 100)))}, {"rho2", ex(y)}}, false);
         ++switches;
@@ -432,7 +477,8 @@ BOOST_AUTO_TEST_CASE(claims_on_the_walk_build_no_hull_model) {
     Session s(sc, "crossed", Engine::Scan);
     long wrong = 0;
     std::string cert;
-    const std::string lines = ex(lo) + " " + ex(f(lo)) + " touching\ncurve " + ex(lo) + " " + ex(f(lo)) + "\ngrowth " + ex(hc.growth.value) + "\n";
+    const std::string lines = ex(lo) + " " + ex(f(lo)) + " touching\ncurve " + ex(lo) + " " + ex(f(lo)) + "\ngrowth " +
+                              ex(hc.growth.value) + "\n";
     certify_fp(s.claim_models(), lines, "lines", ClaimOptions{false, Q(0), true}, &wrong, nullptr, &cert);
     BOOST_TEST(wrong == 0);
     BOOST_TEST(!s.hull_built());

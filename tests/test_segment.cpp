@@ -67,14 +67,16 @@ BOOST_AUTO_TEST_CASE(t_plane_query_agrees_with_rho_plane) {
 BOOST_AUTO_TEST_CASE(segment_ends_must_be_inside) {
     HullModel m = hand_model();
     BOOST_CHECK_THROW(make_segment(m, {Q(0), Q(0), Q(100)}, m.s[1]), InputError);
-    BOOST_CHECK_THROW(make_segment(m, m.s[0], {Q(1), Q(1), Q(1)}), InputError);  // a box corner: on P2(lo2)'s... outside
+    BOOST_CHECK_THROW(make_segment(m, m.s[0], {Q(1), Q(1), Q(1)}),
+                      InputError);  // a box corner: on P2(lo2)'s... outside
 }
 
 BOOST_AUTO_TEST_CASE(inner_ellipsoid_path_of_stacked_cubes) {
     // Stacked cubes (test_hand_curves): P1(1/2) = [1/2, 3/2]^3 and P2(1/2) = [1/2, 3/2]^2 × [7/2, 9/2].
     // By symmetry each maximum-volume inscribed ellipsoid is the inscribed ball of radius 1/2, at
     // (1,1,1) and (1,1,4); the shortest path between them runs from (1,1,3/2) to (1,1,7/2).
-    HullModel m = build_model(load_scene(std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/stacked_cubes.json"));
+    HullModel m =
+        build_model(load_scene(std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/stacked_cubes.json"));
     Segment s = segment_by_kind(m, "ellipsoids");
     BOOST_TEST(s.kind == "ellipsoids");
     BOOST_TEST_REQUIRE(s.path.has_value());
@@ -97,12 +99,16 @@ BOOST_AUTO_TEST_CASE(ellipsoids_fall_back_to_the_seeds_when_floating_point_fails
     // A needle 10^29 long next to a point 10^31 away: the inner ellipsoid cannot be computed in
     // doubles (this once crashed); the segment falls back to the seeds and says so.
     ExactScene sc;
-    sc.P[0].points = {{Q(Z("123456789012345678901234567890")), Q(0), Q(0)}, {Q(0), Q(1), Q(0)}, {Q(0), Q(0), Q(1)}, {Q(-1), Q(-1), Q(-1)}};
+    sc.P[0].points = {{Q(Z("123456789012345678901234567890")), Q(0), Q(0)},
+                      {Q(0), Q(1), Q(0)},
+                      {Q(0), Q(0), Q(1)},
+                      {Q(-1), Q(-1), Q(-1)}};
     Z far("10000000000000000000000000000000");
     sc.P[1].points = {{Q(far), Q(0), Q(0)}, {Q(far + 1), Q(0), Q(0)}, {Q(far), Q(1), Q(0)}, {Q(far), Q(0), Q(1)}};
     for (int i = 0; i < 2; ++i) {
         Vec3q c{Q(0), Q(0), Q(0)};
-        for (const auto& v : sc.P[i].points) for (int k = 0; k < 3; ++k) c[k] += v[k] / 4;
+        for (const auto& v : sc.P[i].points)
+            for (int k = 0; k < 3; ++k) c[k] += v[k] / 4;
         sc.P[i].seed = c;
         sc.lo[i] = Q(1, 2);
         sc.hi[i] = Q(2);

@@ -48,18 +48,26 @@ double per_call(F&& f, long n, int reps = 3) {
     return best;
 }
 
-Q qc(long p, long q) { Q r(p, q); r.canonicalize(); return r; }
+Q qc(long p, long q) {
+    Q r(p, q);
+    r.canonicalize();
+    return r;
+}
 
 // Two boxes: P1 = [−1,1]^3; P2 a 2×1×1 box turned by the exact rotation with cos 3/5, sin 4/5
 // about z, then about x, centred at (3, 1/2, 1/3).
 ExactScene boxes() {
     ExactScene s;
-    for (int x : {-1, 1}) for (int y : {-1, 1}) for (int z : {-1, 1}) s.P[0].points.push_back({Q(x), Q(y), Q(z)});
-    for (int x : {-2, 2}) for (int y : {-1, 1}) for (int z : {-1, 1}) {
-        Q X = qc(3 * x - 4 * y, 5), Y = qc(4 * x + 3 * y, 5), Z = Q(z);
-        Q Y2 = qc(3, 5) * Y - qc(4, 5) * Z, Z2 = qc(4, 5) * Y + qc(3, 5) * Z;
-        s.P[1].points.push_back({X + 3, Y2 + qc(1, 2), Z2 + qc(1, 3)});
-    }
+    for (int x : {-1, 1})
+        for (int y : {-1, 1})
+            for (int z : {-1, 1}) s.P[0].points.push_back({Q(x), Q(y), Q(z)});
+    for (int x : {-2, 2})
+        for (int y : {-1, 1})
+            for (int z : {-1, 1}) {
+                Q X = qc(3 * x - 4 * y, 5), Y = qc(4 * x + 3 * y, 5), Z = Q(z);
+                Q Y2 = qc(3, 5) * Y - qc(4, 5) * Z, Z2 = qc(4, 5) * Y + qc(3, 5) * Z;
+                s.P[1].points.push_back({X + 3, Y2 + qc(1, 2), Z2 + qc(1, 3)});
+            }
     s.P[0].seed = {Q(0), Q(0), Q(0)};
     s.P[1].seed = {Q(3), qc(1, 2), qc(1, 3)};
     s.lo[0] = s.lo[1] = qc(1, 2);
@@ -75,10 +83,12 @@ ExactScene spheres(int n, long R, unsigned seed) {
     for (int i = 0; i < 2; ++i) {
         for (int k = 0; k < n; ++k) {
             double x = N(g), y = N(g), z = N(g), l = std::sqrt(x * x + y * y + z * z);
-            s.P[i].points.push_back({Q(std::lround(R * x / l) + (i ? 3 * R : 0)), Q(std::lround(R * y / l) + (i ? R / 10 : 0)), Q(std::lround(R * z / l))});
+            s.P[i].points.push_back({Q(std::lround(R * x / l) + (i ? 3 * R : 0)),
+                                     Q(std::lround(R * y / l) + (i ? R / 10 : 0)), Q(std::lround(R * z / l))});
         }
         Vec3q c{Q(0), Q(0), Q(0)};
-        for (auto& v : s.P[i].points) for (int k = 0; k < 3; ++k) c[k] += v[k];
+        for (auto& v : s.P[i].points)
+            for (int k = 0; k < 3; ++k) c[k] += v[k];
         for (int k = 0; k < 3; ++k) c[k] /= Q(n);
         s.P[i].seed = c;
         s.lo[i] = qc(1, 2);
@@ -87,13 +97,21 @@ ExactScene spheres(int n, long R, unsigned seed) {
     return s;
 }
 
-struct Row { std::string method, scene; double seconds; std::string ratio; };
+struct Row {
+    std::string method, scene;
+    double seconds;
+    std::string ratio;
+};
 std::vector<Row> rows;
 void row(const std::string& m, const std::string& sc, double t, const std::string& ratio = "") {
     rows.push_back({m, sc, t, ratio});
     std::fprintf(stderr, "  %-44s %-14s %12.3g s %s\n", m.c_str(), sc.c_str(), t, ratio.c_str());
 }
-std::string ratio(const char* fmt, double x) { char b[64]; std::snprintf(b, sizeof b, fmt, x); return b; }
+std::string ratio(const char* fmt, double x) {
+    char b[64];
+    std::snprintf(b, sizeof b, fmt, x);
+    return b;
+}
 
 void query_benchmarks(const std::string& name, const ExactScene& sc, long nq) {
     HullModel m = build_model(sc);
@@ -120,10 +138,14 @@ void query_benchmarks(const std::string& name, const ExactScene& sc, long nq) {
     row("libccd GJK, one query", name, t_gjk, "1 (baseline)");
     row("exact query with curve (filtered)", name, t_curve, ratio("%.1fx faster than GJK", t_gjk / t_curve));
     row("exact query, model built, no curve (filtered)", name, t_direct, ratio("%.3gx GJK's time", t_direct / t_gjk));
-    row("exact query from the scene: no model, no curve", name, t_quick, ratio("%.3gx GJK's time (target <= 3x on boxes)", t_quick / t_gjk));
-    std::fprintf(stderr, "    stages: with curve %lu filtered / %lu exact; no curve %lu / %lu; from the scene %lu / %lu; GJK verdicts differing from exact: %ld of %ld\n",
-                 (unsigned long)fc.counts().filtered, (unsigned long)fc.counts().exact, (unsigned long)fd.counts().filtered,
-                 (unsigned long)fd.counts().exact, (unsigned long)qs.counts().filtered, (unsigned long)qs.counts().exact, wrong, nq);
+    row("exact query from the scene: no model, no curve", name, t_quick,
+        ratio("%.3gx GJK's time (target <= 3x on boxes)", t_quick / t_gjk));
+    std::fprintf(stderr,
+                 "    stages: with curve %lu filtered / %lu exact; no curve %lu / %lu; from the scene %lu / %lu; GJK "
+                 "verdicts differing from exact: %ld of %ld\n",
+                 (unsigned long)fc.counts().filtered, (unsigned long)fc.counts().exact,
+                 (unsigned long)fd.counts().filtered, (unsigned long)fd.counts().exact,
+                 (unsigned long)qs.counts().filtered, (unsigned long)qs.counts().exact, wrong, nq);
     // Points exactly on the curve: the filter cannot decide them; all go to the exact stage.
     FastCurve fc2(m, c);
     QuickScene qs2(sc);
@@ -132,10 +154,16 @@ void query_benchmarks(const std::string& name, const ExactScene& sc, long nq) {
         double x = r1[i];
         Q y = c.env.value(m.lines, exact_from_double(x));
         double yd = to_double_rn(y);
-        if (exact_from_double(yd) == y) { fc2.classify(x, yd); qs2.classify(x, yd); ++on; }
+        if (exact_from_double(yd) == y) {
+            fc2.classify(x, yd);
+            qs2.classify(x, yd);
+            ++on;
+        }
     }
-    std::fprintf(stderr, "    on-curve points representable as doubles: %ld, decided exactly: %lu with the curve, %lu from the scene\n", on,
-                 (unsigned long)fc2.counts().exact, (unsigned long)qs2.counts().exact);
+    std::fprintf(
+        stderr,
+        "    on-curve points representable as doubles: %ld, decided exactly: %lu with the curve, %lu from the scene\n",
+        on, (unsigned long)fc2.counts().exact, (unsigned long)qs2.counts().exact);
 }
 
 std::vector<std::string> growth_rows;
@@ -156,9 +184,12 @@ void growth(const std::string& name, const ExactScene& sc) {
     }
     char b[512];
     std::snprintf(b, sizeof b, "| %s | %.3g s | %lu / %lu | %lu / %lu | %lu / %lu |", name.c_str(), t,
-                  (unsigned long)(m.P[0].predicates[filter::Predicate::SupportCmp].filtered + m.P[1].predicates[filter::Predicate::SupportCmp].filtered),
-                  (unsigned long)(m.P[0].predicates[filter::Predicate::SupportCmp].exact + m.P[1].predicates[filter::Predicate::SupportCmp].exact),
-                  (unsigned long)m.stats.predicates[filter::Predicate::ArcSide].filtered, (unsigned long)m.stats.predicates[filter::Predicate::ArcSide].exact,
+                  (unsigned long)(m.P[0].predicates[filter::Predicate::SupportCmp].filtered +
+                                  m.P[1].predicates[filter::Predicate::SupportCmp].filtered),
+                  (unsigned long)(m.P[0].predicates[filter::Predicate::SupportCmp].exact +
+                                  m.P[1].predicates[filter::Predicate::SupportCmp].exact),
+                  (unsigned long)m.stats.predicates[filter::Predicate::ArcSide].filtered,
+                  (unsigned long)m.stats.predicates[filter::Predicate::ArcSide].exact,
                   (unsigned long)fc.counts().filtered, (unsigned long)fc.counts().exact);
     growth_rows.push_back(b);
     std::fprintf(stderr, "  %s\n", b);
@@ -168,7 +199,11 @@ void growth(const std::string& name, const ExactScene& sc) {
 
 extern "C" char** environ;
 
-struct ProcessRun { double seconds; long peak_kb; int status; };
+struct ProcessRun {
+    double seconds;
+    long peak_kb;
+    int status;
+};
 // Runs `scalecert args...` with its output in `out`, and measures wall time and peak resident size.
 ProcessRun run_scalecert(const std::vector<std::string>& args) {
     static const std::string bin = (std::filesystem::canonical("/proc/self/exe").parent_path() / "scalecert").string();
@@ -183,7 +218,8 @@ ProcessRun run_scalecert(const std::vector<std::string>& args) {
     int st = 0;
     struct rusage ru {};
     wait4(pid, &st, 0, &ru);
-    return {std::chrono::duration<double>(Clock::now() - t0).count(), ru.ru_maxrss, WIFEXITED(st) ? WEXITSTATUS(st) : -1};
+    return {std::chrono::duration<double>(Clock::now() - t0).count(), ru.ru_maxrss,
+            WIFEXITED(st) ? WEXITSTATUS(st) : -1};
 }
 
 // n points per polytope as an OFF file of integers: near a sphere of radius R (every point a
@@ -197,8 +233,8 @@ void write_cloud(const std::string& path, int n, long R, bool on_sphere, bool se
     for (int k = 0; k < n; ++k) {
         double x = N(g), y = N(g), z = N(g), l = std::sqrt(x * x + y * y + z * z);
         const double r = on_sphere ? R : R * std::cbrt(U(g));
-        o << std::lround(r * x / l) + (second ? 3 * R : 0) << ' ' << std::lround(r * y / l) + (second ? R / 10 : 0) << ' '
-          << std::lround(r * z / l) << '\n';
+        o << std::lround(r * x / l) + (second ? 3 * R : 0) << ' ' << std::lround(r * y / l) + (second ? R / 10 : 0)
+          << ' ' << std::lround(r * z / l) << '\n';
     }
 }
 
@@ -213,8 +249,11 @@ std::vector<std::string> size_rows;
 void curve_sizes(bool with_slow) {
     const auto dir = std::filesystem::temp_directory_path() / ("scalecert-bench-" + std::to_string(::getpid()));
     std::filesystem::create_directories(dir);
-    std::fprintf(stderr, "whole `scalecert curve` process, hull path against scan path (best of 3 below 10^6 points):\n");
-    size_rows.push_back("| polytopes (points each) | hull path: time | peak memory | scan path: time | peak memory | scan path faster by | same curve |");
+    std::fprintf(stderr,
+                 "whole `scalecert curve` process, hull path against scan path (best of 3 below 10^6 points):\n");
+    size_rows.push_back(
+        "| polytopes (points each) | hull path: time | peak memory | scan path: time | peak memory | scan path faster "
+        "by | same curve |");
     size_rows.push_back("|---|---|---|---|---|---|---|");
     for (bool sphere : {true, false})
         for (int n : {1000, 10000, 100000, 1000000}) {
@@ -225,7 +264,8 @@ void curve_sizes(bool with_slow) {
             auto best = [&](const std::string& engine, const std::string& out, int reps) {
                 ProcessRun r{1e300, 0, 0};
                 for (int k = 0; k < reps; ++k) {
-                    ProcessRun x = run_scalecert({"curve", "--engine", engine, "--p1", a, "--p2", b, "--i1", "1/2,2", "--i2", "1/2,2", "--out", out});
+                    ProcessRun x = run_scalecert({"curve", "--engine", engine, "--p1", a, "--p2", b, "--i1", "1/2,2",
+                                                  "--i2", "1/2,2", "--out", out});
                     if (x.seconds < r.seconds) r.seconds = x.seconds;
                     r.peak_kb = std::max(r.peak_kb, x.peak_kb);
                     r.status = x.status;
@@ -241,11 +281,15 @@ void curve_sizes(bool with_slow) {
             char buf[512];
             const std::string name = std::string(sphere ? "near-spheres, " : "random in balls, ") + std::to_string(n);
             if (slow)
-                std::snprintf(buf, sizeof buf, "| %s | (--with-slow) | | %.3g s | %.0f MB | | |", name.c_str(), s.seconds, s.peak_kb / 1024.0);
+                std::snprintf(buf, sizeof buf, "| %s | (--with-slow) | | %.3g s | %.0f MB | | |", name.c_str(),
+                              s.seconds, s.peak_kb / 1024.0);
             else
-                std::snprintf(buf, sizeof buf, "| %s | %.3g s | %.0f MB | %.3g s | %.0f MB | %.1fx | %s |", name.c_str(), h.seconds,
-                              h.peak_kb / 1024.0, s.seconds, s.peak_kb / 1024.0, h.seconds / s.seconds,
-                              s.status || h.status ? "exit status!" : curve_without_model(so) == curve_without_model(ho) ? "yes" : "NO");
+                std::snprintf(buf, sizeof buf, "| %s | %.3g s | %.0f MB | %.3g s | %.0f MB | %.1fx | %s |",
+                              name.c_str(), h.seconds, h.peak_kb / 1024.0, s.seconds, s.peak_kb / 1024.0,
+                              h.seconds / s.seconds,
+                              s.status || h.status                                 ? "exit status!"
+                              : curve_without_model(so) == curve_without_model(ho) ? "yes"
+                                                                                   : "NO");
             size_rows.push_back(buf);
             std::fprintf(stderr, "  %s\n", buf);
         }
@@ -259,10 +303,13 @@ void write_prism(const std::string& path, int n, long R, bool second) {
     o << "OFF\n" << 2 * n << " 0 0\n";
     const double pi = std::acos(-1.0);
     for (int k = 0; k < n; ++k) {
-        const long x = std::lround(R * std::cos(2 * pi * k / n + 0.1)), y = std::lround(R * std::sin(2 * pi * k / n + 0.1));
+        const long x = std::lround(R * std::cos(2 * pi * k / n + 0.1)),
+                   y = std::lround(R * std::sin(2 * pi * k / n + 0.1));
         for (long z : {-3 * R, 3 * R}) {
-            if (second) o << z + 12345 << ' ' << y + R / 5 << ' ' << x + 3 * R << '\n';
-            else o << x << ' ' << y << ' ' << z << '\n';
+            if (second)
+                o << z + 12345 << ' ' << y + R / 5 << ' ' << x + 3 * R << '\n';
+            else
+                o << x << ' ' << y << ' ' << z << '\n';
         }
     }
 }
@@ -274,7 +321,8 @@ std::vector<std::string> prism_claim_rows;
 void prism_claim_costs(const std::vector<int>& sizes) {
     const auto dir = std::filesystem::temp_directory_path() / ("scalecert-bench-pc-" + std::to_string(::getpid()));
     std::filesystem::create_directories(dir);
-    static const std::string checker = (std::filesystem::canonical("/proc/self/exe").parent_path() / "scalecert-check").string();
+    static const std::string checker =
+        (std::filesystem::canonical("/proc/self/exe").parent_path() / "scalecert-check").string();
     const std::string a = (dir / "a.off").string(), b = (dir / "b.off").string(), out = (dir / "cert.json").string();
     prism_claim_rows.push_back("| crossed prisms | claim kind | certify-fp --certificate | scalecert-check |");
     prism_claim_rows.push_back("|---|---|---|---|");
@@ -283,8 +331,11 @@ void prism_claim_costs(const std::vector<int>& sizes) {
         {"verdict", R"({"kind": "verdict", "rho1": 0.75, "rho2": 0.75, "verdict": "separated"})"},
         {"separating_plane", R"({"kind": "separating_plane", "rho1": 0.75, "rho2": 0.5, "normal": [0, 0, 1]})"},
         {"witness_point", R"({"kind": "witness_point", "rho1": 1.5, "rho2": 1.5, "point": [12345, 200000, 3000000]})"},
-        {"distance", R"({"kind": "distance", "rho1": 0.5, "rho2": 0.5, "value": 1e6, "closest": [[0, 0, 3000000], [12345, 0, 3000000]]})"},
-        {"penetration_depth", R"({"kind": "penetration_depth", "rho1": 2, "rho2": 2, "value": 1e6, "direction": [0, 0, 1]})"},
+        {"distance",
+         R"({"kind": "distance", "rho1": 0.5, "rho2": 0.5, "value": 1e6, "closest": [[0, 0, 3000000], [12345, 0, )"
+         R"(3000000]]})"},
+        {"penetration_depth",
+         R"({"kind": "penetration_depth", "rho1": 2, "rho2": 2, "value": 1e6, "direction": [0, 0, 1]})"},
         {"curve_point", R"({"kind": "curve_point", "rho1": 0.6, "rho2": 0.9})"},
         {"curve", R"({"kind": "curve", "vertices": [[0.55, 1.0], [0.6, 0.95], [0.65, 0.9]]})"},
         {"switch_point", R"({"kind": "switch_point", "rho1": 0.6, "rho2": 0.9})"},
@@ -296,14 +347,16 @@ void prism_claim_costs(const std::vector<int>& sizes) {
         for (const auto& [kind, claim] : kinds) {
             const std::string cf = (dir / "claims.json").string();
             std::ofstream(cf) << R"({"format": "scalecert-claims-1", "claims": [)" << claim << "]}";
-            const ProcessRun r = run_scalecert({"certify-fp", "--p1", a, "--p2", b, "--i1", "1/2,2", "--i2", "1/2,2", cf, "--certificate", out,
-                                                "--out", (dir / "report.json").string(), "--tolerance", "1/1000"});
+            const ProcessRun r =
+                run_scalecert({"certify-fp", "--p1", a, "--p2", b, "--i1", "1/2,2", "--i2", "1/2,2", cf,
+                               "--certificate", out, "--out", (dir / "report.json").string(), "--tolerance", "1/1000"});
             const auto t0 = std::chrono::steady_clock::now();
             const int check = std::system((checker + " " + out + " >/dev/null 2>&1").c_str());
             const double check_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
             char buf[256];
-            std::snprintf(buf, sizeof buf, "| %d-gon | %s | %.3g s, %.0f MB%s | %.3g s%s |", n, kind.c_str(), r.seconds, r.peak_kb / 1024.0,
-                          r.status == 0 || r.status == 1 ? "" : " (exit status 2 or 3!)", check_s, check ? " (REJECTED)" : "");
+            std::snprintf(buf, sizeof buf, "| %d-gon | %s | %.3g s, %.0f MB%s | %.3g s%s |", n, kind.c_str(), r.seconds,
+                          r.peak_kb / 1024.0, r.status == 0 || r.status == 1 ? "" : " (exit status 2 or 3!)", check_s,
+                          check ? " (REJECTED)" : "");
             prism_claim_rows.push_back(buf);
             std::fprintf(stderr, "  %s\n", buf);
         }
@@ -320,13 +373,16 @@ void query_costs(bool with_slow) {
     const auto dir = std::filesystem::temp_directory_path() / ("scalecert-bench-" + std::to_string(::getpid()));
     std::filesystem::create_directories(dir);
     std::fprintf(stderr, "whole process: query, query --json, partition (walk) against partition --engine hull:\n");
-    query_rows.push_back("| scene | query | query --json | partition | partition --engine hull | hull / walk | scalecert-check |");
+    query_rows.push_back(
+        "| scene | query | query --json | partition | partition --engine hull | hull / walk | scalecert-check |");
     query_rows.push_back("|---|---|---|---|---|---|---|");
     const std::string a = (dir / "a.off").string(), b = (dir / "b.off").string(), out = (dir / "out.txt").string();
-    static const std::string checker = (std::filesystem::canonical("/proc/self/exe").parent_path() / "scalecert-check").string();
+    static const std::string checker =
+        (std::filesystem::canonical("/proc/self/exe").parent_path() / "scalecert-check").string();
     auto cell = [](const ProcessRun& r) {
         char buf[96];
-        std::snprintf(buf, sizeof buf, "%.3g s, %.0f MB%s", r.seconds, r.peak_kb / 1024.0, r.status ? " (exit status!)" : "");
+        std::snprintf(buf, sizeof buf, "%.3g s, %.0f MB%s", r.seconds, r.peak_kb / 1024.0,
+                      r.status ? " (exit status!)" : "");
         return std::string(buf);
     };
     auto row = [&](const std::string& name, bool hull_too) {
@@ -390,33 +446,53 @@ void claim_costs(const ExactScene& h1000, bool quick) {
         a[i] = u(g), b[i] = u(g);
         const int kind = i % 4;
         sep[i] = query(m, c, exact_from_double(a[i]), exact_from_double(b[i]), false).verdict == Verdict::Separated;
-        if (kind == 0) std::snprintf(buf, sizeof buf, "{\"kind\": \"verdict\", \"rho1\": %.17g, \"rho2\": %.17g, \"verdict\": \"separated\"}", a[i], b[i]);
-        if (kind == 1) std::snprintf(buf, sizeof buf, "{\"kind\": \"separating_plane\", \"rho1\": %.17g, \"rho2\": %.17g, \"normal\": [1, 0.1, 0]}", a[i], b[i]);
-        if (kind >= 2) std::snprintf(buf, sizeof buf, "{\"kind\": \"%s\", \"rho1\": %.17g, \"rho2\": %.17g, \"value\": 1}", sep[i] ? "distance" : "penetration_depth", a[i], b[i]);
+        if (kind == 0)
+            std::snprintf(buf, sizeof buf,
+                          "{\"kind\": \"verdict\", \"rho1\": %.17g, \"rho2\": %.17g, \"verdict\": \"separated\"}", a[i],
+                          b[i]);
+        if (kind == 1)
+            std::snprintf(buf, sizeof buf,
+                          "{\"kind\": \"separating_plane\", \"rho1\": %.17g, \"rho2\": %.17g, \"normal\": [1, 0.1, 0]}",
+                          a[i], b[i]);
+        if (kind >= 2)
+            std::snprintf(buf, sizeof buf, "{\"kind\": \"%s\", \"rho1\": %.17g, \"rho2\": %.17g, \"value\": 1}",
+                          sep[i] ? "distance" : "penetration_depth", a[i], b[i]);
         claims += std::string(i ? ", " : "") + buf;
         pieces.push_back(buf);
     }
     claims += "]}";
     long wrong = 0;
     volatile double sink = 0;
-    const double t_fp = per_call([&](long) {
-        for (int i = 0; i < 1000; ++i) {
-            if (i % 4 < 2) sink = sink + gjk->classify(a[i], b[i]);
-            else if (auto me = (sep[i] ? *fcl : *gjk).measure(a[i], b[i], sep[i])) sink = sink + me->value;
-        }
-    }, 1, quick ? 1 : 3);
+    const double t_fp = per_call(
+        [&](long) {
+            for (int i = 0; i < 1000; ++i) {
+                if (i % 4 < 2)
+                    sink = sink + gjk->classify(a[i], b[i]);
+                else if (auto me = (sep[i] ? *fcl : *gjk).measure(a[i], b[i], sep[i]))
+                    sink = sink + me->value;
+            }
+        },
+        1, quick ? 1 : 3);
     // The baseline by output: verdicts (for verdict and plane claims), distances, depths.
     double t_kind[3] = {0, 0, 0};
     for (int k = 0; k < 3; ++k)
-        t_kind[k] = per_call([&](long) {
-            for (int i = 0; i < 1000; ++i) {
-                const int kind = i % 4 < 2 ? 0 : sep[i] ? 1 : 2;
-                if (kind != k) continue;
-                if (k == 0) sink = sink + gjk->classify(a[i], b[i]);
-                else if (auto me = (sep[i] ? *fcl : *gjk).measure(a[i], b[i], sep[i])) sink = sink + me->value;
-            }
-        }, 1, quick ? 1 : 3);
-    const double t_claims = per_call([&](long) { certify_fp(m, c, claims, "bench", ClaimOptions{false, Q(0), true}, &wrong); }, 1, 1);
+        t_kind[k] = per_call(
+            [&](long) {
+                for (int i = 0; i < 1000; ++i) {
+                    const int kind = i % 4 < 2 ? 0 : sep[i] ? 1 : 2;
+                    if (kind != k) continue;
+                    if (k == 0)
+                        sink = sink + gjk->classify(a[i], b[i]);
+                    else if (auto me = (sep[i] ? *fcl : *gjk).measure(a[i], b[i], sep[i]))
+                        sink = sink + me->value;
+                }
+            },
+            1, quick ? 1 : 3);
+    const double t_claims = per_call(
+        [&](long) {
+            certify_fp(m, c, claims, "bench", ClaimOptions{false, Q(0), true}, &wrong);
+        },
+        1, 1);
     // Ours by output too: the same claims, one kind at a time.
     std::vector<std::string> kind_claims(3, "{\"format\": \"scalecert-claims-1\", \"claims\": [");
     {
@@ -429,11 +505,17 @@ void claim_costs(const ExactScene& h1000, bool quick) {
     }
     double t_ours[3];
     for (int k = 0; k < 3; ++k)
-        t_ours[k] = per_call([&](long) { certify_fp(m, c, kind_claims[static_cast<size_t>(k)], "bench", ClaimOptions{false, Q(0), true}, &wrong); }, 1, 1);
+        t_ours[k] = per_call(
+            [&](long) {
+                certify_fp(m, c, kind_claims[static_cast<size_t>(k)], "bench", ClaimOptions{false, Q(0), true}, &wrong);
+            },
+            1, 1);
     std::string cert;
-    const double t_cert = per_call([&](long) {
-        certify_fp(ClaimModels::of(m, c), claims, "bench", ClaimOptions{false, Q(0), true}, &wrong, nullptr, &cert);
-    }, 1, 1);
+    const double t_cert = per_call(
+        [&](long) {
+            certify_fp(ClaimModels::of(m, c), claims, "bench", ClaimOptions{false, Q(0), true}, &wrong, nullptr, &cert);
+        },
+        1, 1);
     auto add = [&](const char* what, double t, const std::string& r) {
         row(what, "hulls (1000)", t, r);
         char line[256];
@@ -443,10 +525,12 @@ void claim_costs(const ExactScene& h1000, bool quick) {
     long nk[3] = {0, 0, 0};
     for (int i = 0; i < 1000; ++i) ++nk[i % 4 < 2 ? 0 : sep[i] ? 1 : 2];
     char what[160];
-    std::snprintf(what, sizeof what, "1 (baseline: %ld verdicts %.3g s, %ld FCL distances %.3g s, %ld libccd EPA depths %.3g s)", nk[0],
+    std::snprintf(what, sizeof what,
+                  "1 (baseline: %ld verdicts %.3g s, %ld FCL distances %.3g s, %ld libccd EPA depths %.3g s)", nk[0],
                   t_kind[0], nk[1], t_kind[1], nk[2], t_kind[2]);
     add("the same 1,000 outputs from libccd GJK/EPA and FCL", t_fp, what);
-    add("1,000 claims certified (verdicts, planes, distances, depths)", t_claims, ratio("%.2gx the libraries' time (target <= 10x)", t_claims / t_fp));
+    add("1,000 claims certified (verdicts, planes, distances, depths)", t_claims,
+        ratio("%.2gx the libraries' time (target <= 10x)", t_claims / t_fp));
     add("the same, with the judgements certificate", t_cert, ratio("%.2gx the libraries' time", t_cert / t_fp));
     // The typed API against certify-fp's text, on the same scene through the public Analysis (both
     // after the Analysis is built): the same 1,000 claims as scalecert::Claim values.
@@ -459,13 +543,16 @@ void claim_costs(const ExactScene& h1000, bool quick) {
             t.rho1 = scalecert::exact(a[i]), t.rho2 = scalecert::exact(b[i]);
             if (i % 4 == 0) t.kind = scalecert::ClaimKind::Verdict, t.verdict = scalecert::ClaimedVerdict::Separated;
             if (i % 4 == 1) t.kind = scalecert::ClaimKind::SeparatingPlane, t.normal = {1, scalecert::exact(0.1), 0};
-            if (i % 4 >= 2) t.kind = sep[i] ? scalecert::ClaimKind::Distance : scalecert::ClaimKind::PenetrationDepth, t.value = 1;
+            if (i % 4 >= 2)
+                t.kind = sep[i] ? scalecert::ClaimKind::Distance : scalecert::ClaimKind::PenetrationDepth, t.value = 1;
         }
         an.certify({typed[0]});  // the claim models, built once, in neither time
         const double t_text = per_call([&](long) { an.certify_fp(claims); }, 1, quick ? 1 : 3);
         const double t_typed = per_call([&](long) { an.certify(typed); }, 1, quick ? 1 : 3);
-        add("the same 1,000 claims through Analysis::certify_fp (JSON text)", t_text, ratio("%.2gx the libraries' time", t_text / t_fp));
-        add("the same 1,000 claims through Analysis::certify (typed)", t_typed, ratio("%.2gx the JSON text's time (target <= 1)", t_typed / t_text));
+        add("the same 1,000 claims through Analysis::certify_fp (JSON text)", t_text,
+            ratio("%.2gx the libraries' time", t_text / t_fp));
+        add("the same 1,000 claims through Analysis::certify (typed)", t_typed,
+            ratio("%.2gx the JSON text's time (target <= 1)", t_typed / t_text));
     }
     const char* kinds[3] = {"verdicts and planes", "distances", "depths"};
     const char* libs[3] = {"libccd GJK verdicts", "FCL distances", "libccd EPA depths"};
@@ -507,20 +594,58 @@ void large_claim_costs() {
     auto bullet = fp::make_bullet(f);
     volatile double sink = 0;
     // Distance at (1, 1): apart by about R; depth at (2, 2): overlapping by about R.
-    const double t_ccd_dist = per_call([&](long) { if (auto me = bullet->measure(1, 1, true)) sink = sink + me->value; else std::abort(); }, 1, 3);
-    const double t_ccd_depth = per_call([&](long) { if (auto me = gjk->measure(2, 2, false)) sink = sink + me->value; else std::abort(); }, 1, 3);
+    const double t_ccd_dist = per_call(
+        [&](long) {
+            if (auto me = bullet->measure(1, 1, true))
+                sink = sink + me->value;
+            else
+                std::abort();
+        },
+        1, 3);
+    const double t_ccd_depth = per_call(
+        [&](long) {
+            if (auto me = gjk->measure(2, 2, false))
+                sink = sink + me->value;
+            else
+                std::abort();
+        },
+        1, 3);
     Session s(cs, "bench");
-    const double t_index = per_call([&](long) { Session t(cs, "bench"); (void)t.points(); }, 1, 1);
+    const double t_index = per_call(
+        [&](long) {
+            Session t(cs, "bench");
+            (void)t.points();
+        },
+        1, 1);
     (void)s.points();
-    const std::string dist = R"({"format": "scalecert-claims-1", "claims": [{"kind": "distance", "rho1": 1, "rho2": 1, "value": 1}]})";
-    const std::string depth = R"({"format": "scalecert-claims-1", "claims": [{"kind": "penetration_depth", "rho1": 2, "rho2": 2, "value": 1}]})";
+    const std::string dist =
+        R"({"format": "scalecert-claims-1", "claims": [{"kind": "distance", "rho1": 1, "rho2": 1, "value": 1}]})";
+    const std::string depth =
+        R"({"format": "scalecert-claims-1", "claims": [{"kind": "penetration_depth", "rho1": 2, "rho2": 2, )"
+        R"("value": 1}]})";
     long wrong = 0;
     std::string cert;
     const ClaimModels cm = s.claim_models();
-    const double t_dist = per_call([&](long) { certify_fp(cm, dist, "bench", ClaimOptions{false, Q(0), true}, &wrong); }, 1, 3);
-    const double t_depth = per_call([&](long) { certify_fp(cm, depth, "bench", ClaimOptions{false, Q(0), true}, &wrong); }, 1, 3);
-    const double t_dist_c = per_call([&](long) { certify_fp(cm, dist, "bench", ClaimOptions{false, Q(0), true}, &wrong, nullptr, &cert); }, 1, 1);
-    const double t_depth_c = per_call([&](long) { certify_fp(cm, depth, "bench", ClaimOptions{false, Q(0), true}, &wrong, nullptr, &cert); }, 1, 1);
+    const double t_dist = per_call(
+        [&](long) {
+            certify_fp(cm, dist, "bench", ClaimOptions{false, Q(0), true}, &wrong);
+        },
+        1, 3);
+    const double t_depth = per_call(
+        [&](long) {
+            certify_fp(cm, depth, "bench", ClaimOptions{false, Q(0), true}, &wrong);
+        },
+        1, 3);
+    const double t_dist_c = per_call(
+        [&](long) {
+            certify_fp(cm, dist, "bench", ClaimOptions{false, Q(0), true}, &wrong, nullptr, &cert);
+        },
+        1, 1);
+    const double t_depth_c = per_call(
+        [&](long) {
+            certify_fp(cm, depth, "bench", ClaimOptions{false, Q(0), true}, &wrong, nullptr, &cert);
+        },
+        1, 1);
     auto add = [&](const char* what, double t, const std::string& r) {
         char line[256];
         std::snprintf(line, sizeof line, "| %s | %.3g ms | %s |", what, t * 1e3, r.c_str());
@@ -530,9 +655,12 @@ void large_claim_costs() {
     add("10^6 + 10^6 points: Bullet GJK distance (support: scan of all points)", t_ccd_dist, "1 (baseline)");
     add("10^6 + 10^6 points: libccd EPA depth", t_ccd_depth, "1 (baseline)");
     add("10^6 + 10^6 points: the walk and its point trees, once per scene (no hull)", t_index, "");
-    add("10^6 + 10^6 points: one distance claim certified (target < 50 ms)", t_dist, ratio("%.2gx Bullet's distance", t_dist / t_ccd_dist));
-    add("10^6 + 10^6 points: one depth claim certified (target < 50 ms)", t_depth, ratio("%.2gx libccd's EPA depth", t_depth / t_ccd_depth));
-    add("10^6 + 10^6 points: the distance with its judgements certificate (the file holds the 2 x 10^6 points)", t_dist_c, "");
+    add("10^6 + 10^6 points: one distance claim certified (target < 50 ms)", t_dist,
+        ratio("%.2gx Bullet's distance", t_dist / t_ccd_dist));
+    add("10^6 + 10^6 points: one depth claim certified (target < 50 ms)", t_depth,
+        ratio("%.2gx libccd's EPA depth", t_depth / t_ccd_depth));
+    add("10^6 + 10^6 points: the distance with its judgements certificate (the file holds the 2 x 10^6 points)",
+        t_dist_c, "");
     add("10^6 + 10^6 points: the depth with its judgements certificate", t_depth_c, "");
 }
 
@@ -589,7 +717,11 @@ void compound_costs(bool quick) {
         for (long i = 0; i < nq; ++i) r1[static_cast<size_t>(i)] = u1(g), r2[static_cast<size_t>(i)] = u1(g);
         filter::PredicateStats st;
         volatile int sink = 0;
-        const double t_query = per_call([&](long i) { sink += static_cast<int>(L.verdict(r1[static_cast<size_t>(i)], r2[static_cast<size_t>(i)], st)); }, nq);
+        const double t_query = per_call(
+            [&](long i) {
+                sink += static_cast<int>(L.verdict(r1[static_cast<size_t>(i)], r2[static_cast<size_t>(i)], st));
+            },
+            nq);
         // The baseline: libccd GJK on the part pairs, per query, stopping at the first pair that meets.
         std::vector<std::unique_ptr<fp::Method>> all, kept;
         const size_t n2 = sc.P[1].parts.size();
@@ -612,11 +744,16 @@ void compound_costs(bool quick) {
         const double t_all = per_call([&](long i) { sink += loop(all, i); }, ng, 1);
         const double t_kept = per_call([&](long i) { sink += loop(kept, i); }, ng, 1);
         char b[512], k[64];
-        if (kept.empty()) std::snprintf(k, sizeof k, "no pair");
-        else std::snprintf(k, sizeof k, "%.1f us (%.0fx)", t_kept * 1e6, t_kept / t_query);
-        std::snprintf(b, sizeof b, "| 10 x 10 parts each, %s | %zu | %ld | %.3f s | %.3f s (%zu edges, %zu switch points) | %.3f s (%zu KB) | %.3f s (%d x %d cells) | %.0f ns | %s | %.1f us (%.0fx) |",
-                      gap == 30 ? "side by side" : "far apart", r.prune.size(), r.built, t_region, t_labels, n_edges, bd.switches.size(), t_cert, cert.size() / 1024, t_grid, G, G,
-                      t_query * 1e9, k, t_all * 1e6, t_all / t_query);
+        if (kept.empty())
+            std::snprintf(k, sizeof k, "no pair");
+        else
+            std::snprintf(k, sizeof k, "%.1f us (%.0fx)", t_kept * 1e6, t_kept / t_query);
+        std::snprintf(b, sizeof b,
+                      "| 10 x 10 parts each, %s | %zu | %ld | %.3f s | %.3f s (%zu edges, %zu switch points) | %.3f s "
+                      "(%zu KB) | %.3f s (%d x %d cells) | %.0f ns | %s | %.1f us (%.0fx) |",
+                      gap == 30 ? "side by side" : "far apart", r.prune.size(), r.built, t_region, t_labels, n_edges,
+                      bd.switches.size(), t_cert, cert.size() / 1024, t_grid, G, G, t_query * 1e9, k, t_all * 1e6,
+                      t_all / t_query);
         compound_rows.push_back(b);
         std::fprintf(stderr, "%s\n", b);
     }
@@ -626,20 +763,29 @@ int checker_bench(int argc, char** argv);  // tools/bench_checker.cpp
 
 int main(int argc, char** argv) {
     if (argc > 1 && std::strcmp(argv[1], "--checker") == 0) return checker_bench(argc - 2, argv + 2);
-    bool quick = false, with_slow = false, sizes_only = false, queries_only = false, claims_only = false, compound_only = false;
+    bool quick = false, with_slow = false, sizes_only = false, queries_only = false, claims_only = false,
+         compound_only = false;
     for (int i = 1; i < argc; ++i) {
-        if (std::strcmp(argv[i], "--quick") == 0) quick = true;
-        else if (std::strcmp(argv[i], "--with-slow") == 0) with_slow = true;
-        else if (std::strcmp(argv[i], "--sizes") == 0) sizes_only = true;
-        else if (std::strcmp(argv[i], "--queries") == 0) queries_only = true;
-        else if (std::strcmp(argv[i], "--claims") == 0) claims_only = true;
-        else if (std::strcmp(argv[i], "--compound") == 0) compound_only = true;
+        if (std::strcmp(argv[i], "--quick") == 0)
+            quick = true;
+        else if (std::strcmp(argv[i], "--with-slow") == 0)
+            with_slow = true;
+        else if (std::strcmp(argv[i], "--sizes") == 0)
+            sizes_only = true;
+        else if (std::strcmp(argv[i], "--queries") == 0)
+            queries_only = true;
+        else if (std::strcmp(argv[i], "--claims") == 0)
+            claims_only = true;
+        else if (std::strcmp(argv[i], "--compound") == 0)
+            compound_only = true;
         else if (std::strcmp(argv[i], "--prism-claims") == 0) {  // every claim kind on crossed prisms
             prism_claim_costs(quick ? std::vector<int>{1200} : std::vector<int>{1200, 4800});
             for (const std::string& r : prism_claim_rows) std::printf("%s\n", r.c_str());
             return 0;
         } else {
-            std::fprintf(stderr, "usage: scalecert-bench [--quick] [--sizes] [--queries] [--claims] [--compound] [--prism-claims] [--with-slow] | --checker [--timeout S] [--keep DIR] [CHECKER ...]\n");
+            std::fprintf(stderr,
+                         "usage: scalecert-bench [--quick] [--sizes] [--queries] [--claims] [--compound] "
+                         "[--prism-claims] [--with-slow] | --checker [--timeout S] [--keep DIR] [CHECKER ...]\n");
             return 2;
         }
     }
@@ -649,7 +795,9 @@ int main(int argc, char** argv) {
         return 0;
     }
     if (compound_only) {  // only the compounds' table
-        std::printf("| scene | part pairs | built | region | certificate | query grid | query | libccd GJK over the built pairs | over all pairs |\n|---|---|---|---|---|---|---|---|---|\n");
+        std::printf(
+            "| scene | part pairs | built | region | certificate | query grid | query | libccd GJK over the built "
+            "pairs | over all pairs |\n|---|---|---|---|---|---|---|---|---|\n");
         compound_costs(quick);
         for (const std::string& r : compound_rows) std::printf("%s\n", r.c_str());
         return 0;
@@ -681,35 +829,55 @@ int main(int argc, char** argv) {
         fp::FpScene f = fp::to_fp(*sc);
         auto gjk = fp::make_libccd_gjk(f);
         const long calls = small ? (quick ? 200 : 2000) : 3;
-        double t_exact = per_call([&](long) { HullModel m = build_model(*sc); TouchingCurve c = build_curve(m); }, calls, quick ? 1 : 3);
+        double t_exact = per_call(
+            [&](long) {
+                HullModel m = build_model(*sc);
+                TouchingCurve c = build_curve(m);
+            },
+            calls, quick ? 1 : 3);
         const int n = 256;
         fp::GridCurve gc;
         if (small) {  // the paper's own node test: triangle-triangle on the triangulated faces
             HullModel m = build_model(*sc);
             auto tt = fp::make_paper_tritri(m, f);
             double t_tt = per_call([&](long) { gc = fp::grid_search(*tt, f, n, 20, 3, true); }, 1, 1);
-            row("paper's grid search: 256x256 exhaustive, 20 bisections x3, triangle-triangle", nm, t_tt, "1 (baseline)");
-            row("exact curve (hull, lines, envelope)", nm, t_exact, ratio("%.0fx faster than the paper's grid (target 1000x)", t_tt / t_exact));
+            row("paper's grid search: 256x256 exhaustive, 20 bisections x3, triangle-triangle", nm, t_tt,
+                "1 (baseline)");
+            row("exact curve (hull, lines, envelope)", nm, t_exact,
+                ratio("%.0fx faster than the paper's grid (target 1000x)", t_tt / t_exact));
             double t_te = per_call([&](long) { gc = fp::grid_search(*tt, f, n, 20, 3, false); }, 1, 1);
-            row("same grid, each column stopped at its first overlap", nm, t_te, ratio("exact curve %.0fx faster", t_te / t_exact));
+            row("same grid, each column stopped at its first overlap", nm, t_te,
+                ratio("exact curve %.0fx faster", t_te / t_exact));
         }
         double t_grid = per_call([&](long) { gc = fp::grid_search(*gjk, f, n, 20, 1, true); }, 1, 1);
         row("grid 256x256 exhaustive + 20 bisections, libccd GJK", nm, t_grid, "1 (baseline)");
-        row("exact curve (hull, lines, envelope)", nm, t_exact, ratio("%.0fx faster than the GJK grid", t_grid / t_exact));
+        row("exact curve (hull, lines, envelope)", nm, t_exact,
+            ratio("%.0fx faster than the GJK grid", t_grid / t_exact));
         double t_ge = per_call([&](long) { gc = fp::grid_search(*gjk, f, n, 20, 1, false); }, 1, 1);
-        row("same GJK grid, each column stopped at its first overlap", nm, t_ge, ratio("exact curve %.0fx faster", t_ge / t_exact));
+        row("same GJK grid, each column stopped at its first overlap", nm, t_ge,
+            ratio("exact curve %.0fx faster", t_ge / t_exact));
     }
     claim_costs(h1000, quick);
-    double t10k = per_call([&](long) { HullModel m = build_model(h10k); TouchingCurve c = build_curve(m); }, 1, 1);
+    double t10k = per_call(
+        [&](long) {
+            HullModel m = build_model(h10k);
+            TouchingCurve c = build_curve(m);
+        },
+        1, 1);
     row("exact curve, two 10,000-vertex hulls", "hulls (10000)", t10k, "target < 1 s");
     // Growth with size and with degeneracy: curve time, and how often each stage decided.
-    std::fprintf(stderr, "growth (exact curve; filter/exact decisions in support climbs, arc signs, queries near the curve):\n");
-    growth_rows.push_back("| case | curve time | support comparisons filtered / exact | arc signs filtered / exact | queries near the curve filtered / exact |");
+    std::fprintf(
+        stderr, "growth (exact curve; filter/exact decisions in support climbs, arc signs, queries near the curve):\n");
+    growth_rows.push_back(
+        "| case | curve time | support comparisons filtered / exact | arc signs filtered / exact | queries near the "
+        "curve filtered / exact |");
     growth_rows.push_back("|---|---|---|---|---|");
-    for (int n : {100, 1000, 10000}) growth("near-sphere, " + std::to_string(n) + " vertices", spheres(n, 10 * n * 1000L, 5));
+    for (int n : {100, 1000, 10000})
+        growth("near-sphere, " + std::to_string(n) + " vertices", spheres(n, 10 * n * 1000L, 5));
     for (int k : {4, 20, 40}) {
         Rng g(1);
-        growth("nearly-equal-slopes, eps = 2^-" + std::to_string(k), make_family_scene("nearly-equal-slopes", Q(1, Z(1) << k), g));
+        growth("nearly-equal-slopes, eps = 2^-" + std::to_string(k),
+               make_family_scene("nearly-equal-slopes", Q(1, Z(1) << k), g));
     }
     // Batch: many pairs on one core and on two.
     {
@@ -729,21 +897,27 @@ int main(int argc, char** argv) {
         // The same pairs as text, as `scalecert classify` reads them from a file.
         std::string text;
         char buf[64];
-        for (long i = 0; i < n; ++i) text.append(buf, static_cast<size_t>(std::snprintf(buf, sizeof buf, "%.17g %.17g\n", a[i], b[i])));
+        for (long i = 0; i < n; ++i)
+            text.append(buf, static_cast<size_t>(std::snprintf(buf, sizeof buf, "%.17g %.17g\n", a[i], b[i])));
         std::vector<double> pa, pb;
         double p1 = per_call([&](long) { parse_pairs(text, pa, pb, 1); }, 1);
         double p2 = per_call([&](long) { parse_pairs(text, pa, pb, 2); }, 1);
         row("reading " + std::to_string(n) + " pairs from text, 1 thread", "boxes (8+8)", p1, "1 (baseline)");
-        row("reading " + std::to_string(n) + " pairs from text, 2 threads", "boxes (8+8)", p2, ratio("%.2fx faster", p1 / p2));
+        row("reading " + std::to_string(n) + " pairs from text, 2 threads", "boxes (8+8)", p2,
+            ratio("%.2fx faster", p1 / p2));
     }
     std::printf("| method | case | time | ratio |\n|---|---|---|---|\n");
     for (const Row& r : rows) {
         double t = r.seconds;
         char buf[32];
-        if (t < 1e-6) std::snprintf(buf, sizeof buf, "%.0f ns", t * 1e9);
-        else if (t < 1e-3) std::snprintf(buf, sizeof buf, "%.2f µs", t * 1e6);
-        else if (t < 1) std::snprintf(buf, sizeof buf, "%.1f ms", t * 1e3);
-        else std::snprintf(buf, sizeof buf, "%.2f s", t);
+        if (t < 1e-6)
+            std::snprintf(buf, sizeof buf, "%.0f ns", t * 1e9);
+        else if (t < 1e-3)
+            std::snprintf(buf, sizeof buf, "%.2f µs", t * 1e6);
+        else if (t < 1)
+            std::snprintf(buf, sizeof buf, "%.1f ms", t * 1e3);
+        else
+            std::snprintf(buf, sizeof buf, "%.2f s", t);
         std::printf("| %s | %s | %s | %s |\n", r.method.c_str(), r.scene.c_str(), buf, r.ratio.c_str());
     }
     std::printf("\n");

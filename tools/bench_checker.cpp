@@ -41,7 +41,11 @@ namespace fs = std::filesystem;
 
 constexpr size_t kBytes = 1000000;  // every shape is about this size
 
-struct Run { double seconds; int status; bool killed; };
+struct Run {
+    double seconds;
+    int status;
+    bool killed;
+};
 
 // `bin args...` with stdout and stderr to /dev/null; killed after `timeout` seconds.
 Run run(const std::string& bin, const std::vector<std::string>& args, double timeout) {
@@ -114,7 +118,8 @@ const char* kTetraBox = R"({"P1": {"vertices": [[2,0,2],[-2,2,5],[-1,-2,6],[2,0,
  "I1": ["1/2", 2], "I2": [1, 4]})";
 // Two square pyramids tip to tip on the z axis: the curve is the one line rho1 + rho2 = 3, and
 // every normal (x, y, z) with |x| + |y| < 2z gives it (each pyramid lies in its tip's cone).
-const char* kPyramids = R"({"P1": {"vertices": [[0,0,10],[10,10,-10],[10,-10,-10],[-10,10,-10],[-10,-10,-10]], "seed": [0,0,0]},
+const char* kPyramids =
+    R"({"P1": {"vertices": [[0,0,10],[10,10,-10],[10,-10,-10],[-10,10,-10],[-10,-10,-10]], "seed": [0,0,0]},
  "P2": {"vertices": [[0,0,20],[10,10,40],[10,-10,40],[-10,10,40],[-10,-10,40]], "seed": [0,0,30]},
  "I1": ["1/2", 2], "I2": ["1/2", 2]})";
 // A prism over an n-gon of radius 10^7 (no three base points collinear at this radius), seeded
@@ -137,7 +142,8 @@ std::string ngon_scene(int n) {
                 o << (first ? "" : ",") << "[" << x << "," << y << "," << z << "]";
                 first = false;
             }
-    o << "], \"seed\": [" << R + R / 100 << "," << R + R / 100 << ",0]}, \"I1\": [\"1/10\", 10], \"I2\": [\"1/10\", 100]}";
+    o << "], \"seed\": [" << R + R / 100 << "," << R + R / 100
+      << ",0]}, \"I1\": [\"1/10\", 10], \"I2\": [\"1/10\", 100]}";
     return o.str();
 }
 
@@ -183,14 +189,21 @@ OJ distinct_null_pieces(const OJ& c, size_t count) {
                 if (std::gcd(std::gcd(std::labs(x), std::labs(y)), z) != 1) continue;
                 const std::array<Q, 3> n{Q(x), Q(y), Q(z)};
                 const Q nd = n[0] * d[0] + n[1] * d[1] + n[2] * d[2];
-                if (sgn(nd) >= 0) { if (out.empty() && z > 50) return out; continue; }
+                if (sgn(nd) >= 0) {
+                    if (out.empty() && z > 50) return out;
+                    continue;
+                }
                 Q h[2];
                 size_t arg[2] = {0, 0};
                 for (int i = 0; i < 2; ++i)
                     for (size_t k = 0; k < P[i].size(); ++k) {
-                        Q v = n[0] * (P[i][k][0] - s[i][0]) + n[1] * (P[i][k][1] - s[i][1]) + n[2] * (P[i][k][2] - s[i][2]);
+                        Q v = n[0] * (P[i][k][0] - s[i][0]) + n[1] * (P[i][k][1] - s[i][1]) +
+                              n[2] * (P[i][k][2] - s[i][2]);
                         if (i == 1) v = -v;
-                        if (k == 0 || v > h[i]) { h[i] = v; arg[i] = k; }
+                        if (k == 0 || v > h[i]) {
+                            h[i] = v;
+                            arg[i] = k;
+                        }
                     }
                 OJ p;
                 p["rho1"] = c["scene"]["I1"];
@@ -228,11 +241,15 @@ std::string digits_not_div3(size_t digits, std::mt19937_64& g) {
     return z.get_str();
 }
 
-struct Shape { std::string name, text, note; };
+struct Shape {
+    std::string name, text, note;
+};
 
 std::vector<Shape> shapes(Engine& e) {
     std::vector<Shape> out;
-    auto add = [&](const std::string& name, const OJ& c, const std::string& note) { out.push_back({name, c.dump(), note}); };
+    auto add = [&](const std::string& name, const OJ& c, const std::string& note) {
+        out.push_back({name, c.dump(), note});
+    };
     const OJ tetra = e.partition("tetra_box", kTetraBox), pyr = e.partition("pyramids", kPyramids);
 
     {  // The review's shape: one piece copied ~950 times and ~35,000 tiny vertices.
@@ -242,7 +259,8 @@ std::vector<Shape> shapes(Engine& e) {
         pad(c, "P2", seed_point(c, "P2"), fit(seed_point(c, "P2"), r / 2));
         c["pieces"] = OJ::array();
         for (size_t k = fit(piece, r / 2); k > 0; --k) c["pieces"].push_back(piece);
-        add("one piece copied, P2 padded with copies of its seed", c, "fails at the switch count after checking every piece");
+        add("one piece copied, P2 padded with copies of its seed", c,
+            "fails at the switch count after checking every piece");
     }
     {  // Distinct normals: no two pieces share a support computation.
         OJ c = tetra;
@@ -250,13 +268,15 @@ std::vector<Shape> shapes(Engine& e) {
         pad(c, "P2", seed_point(c, "P2"), fit(seed_point(c, "P2"), r / 2));
         const OJ one = distinct_null_pieces(c, 1)[0];
         c["pieces"] = distinct_null_pieces(c, fit(one, r / 2) * 95 / 100);
-        add("distinct pieces (contact null), P2 padded", c, "each piece right on its own; fails where pieces must be contiguous");
+        add("distinct pieces (contact null), P2 padded", c,
+            "each piece right on its own; fails where pieces must be contiguous");
     }
     {  // The engine's many-piece curve: a valid file of ~400 pieces whose overlap polygon has ~400 vertices.
         OJ c = e.partition("ngon2000", ngon_scene(2000));
         pad(c, "P1", seed_point(c, "P1"), fit(seed_point(c, "P1"), room(c)));
         add("valid curve of " + std::to_string(c["pieces"].size()) + " pieces, overlap polygon of " +
-                std::to_string(c["regions"]["overlap"]["vertices"].size()) + " vertices", c, "valid");
+                std::to_string(c["regions"]["overlap"]["vertices"].size()) + " vertices",
+            c, "valid");
     }
     {  // The same with fewer pieces and the rest padding.
         OJ c = e.partition("ngon600", ngon_scene(600));
@@ -272,17 +292,19 @@ std::vector<Shape> shapes(Engine& e) {
         pad(c, "P2", seed_point(c, "P2"), fit(seed_point(c, "P2"), r / 4));
         const OJ probe = pyramid_normals(20000);
         c["pieces"][0]["same_line_normals"] = pyramid_normals(fit(probe.back(), r / 2));
-        add("same_line_normals: " + std::to_string(c["pieces"][0]["same_line_normals"].size()) + " directions, padded", c, "valid, past the work limit");
+        add("same_line_normals: " + std::to_string(c["pieces"][0]["same_line_normals"].size()) + " directions, padded",
+            c, "valid, past the work limit");
     }
     {  // The same with 15% of the file in normals (~8,800) and 85% in vertices (~60,000): within
-       // the work limit.
+        // the work limit.
         OJ c = pyr;
         const size_t r = room(c);
         pad(c, "P1", seed_point(c, "P1"), fit(seed_point(c, "P1"), r * 85 / 200));
         pad(c, "P2", seed_point(c, "P2"), fit(seed_point(c, "P2"), r * 85 / 200));
         const OJ probe = pyramid_normals(20000);
         c["pieces"][0]["same_line_normals"] = pyramid_normals(fit(probe.back(), r * 15 / 100));
-        add("same_line_normals: " + std::to_string(c["pieces"][0]["same_line_normals"].size()) + " directions, padded", c, "valid");
+        add("same_line_normals: " + std::to_string(c["pieces"][0]["same_line_normals"].size()) + " directions, padded",
+            c, "valid");
     }
     {  // One same-line normal repeated, and its multiples.
         OJ c = pyr;
@@ -295,8 +317,8 @@ std::vector<Shape> shapes(Engine& e) {
         add("same_line_normals: (0,0,k) repeated, padded", c, "valid");
     }
     {  // Interior vertices of P2 with coordinates over a ~4,900-digit denominator (3^10300: the
-       // largest common denominator the engine reads has 16,384 bits), and distinct pieces: every
-       // support value meets them, in GMP integers.
+        // largest common denominator the engine reads has 16,384 bits), and distinct pieces: every
+        // support value meets them, in GMP integers.
         OJ c = tetra;
         std::mt19937_64 g(11);
         Z q;
@@ -309,7 +331,8 @@ std::vector<Shape> shapes(Engine& e) {
         }
         const OJ one = distinct_null_pieces(c, 1)[0];
         c["pieces"] = distinct_null_pieces(c, fit(one, room(c)) * 95 / 100);
-        add("20 interior vertices over a 4,900-digit denominator, distinct pieces", c, "fails where pieces must be contiguous");
+        add("20 interior vertices over a 4,900-digit denominator, distinct pieces", c,
+            "fails where pieces must be contiguous");
     }
     {  // The review's shape with 20-digit coordinates (past 2^62: GMP integers in every scan).
         OJ c = e.partition("tetra_box_e20", scaled_scene(kTetraBox, "100000000000000000000"));
@@ -351,17 +374,22 @@ std::vector<Shape> shapes(Engine& e) {
             x.canonicalize();
             y.canonicalize();
             c["scene"]["P2"]["vertices"].push_back({x.get_str(), y.get_str(), "1"});
-            if (++b > 996) { b = -996; ++a; }
+            if (++b > 996) {
+                b = -996;
+                ++a;
+            }
         }
         add("a contact face of " + std::to_string(f.size()) + " listed vertices", c, "valid");
     }
     {  // Unreadable or plainly wrong: deep nesting, many keys, a 10^6-digit JSON number, a
-       // 10^6-digit exact number.
-        out.push_back({"nesting 500,000 deep", std::string(500000, '[') + std::string(500000, ']'), "unreadable (exit 2)"});
+        // 10^6-digit exact number.
+        out.push_back(
+            {"nesting 500,000 deep", std::string(500000, '[') + std::string(500000, ']'), "unreadable (exit 2)"});
         std::string keys = "{\"format\": \"scalecert-2\", \"kind\": \"partition\", \"model\": {";
         for (size_t k = 0; keys.size() < kBytes - 20; ++k) keys += (k ? ",\"k" : "\"k") + std::to_string(k) + "\":0";
         out.push_back({"an object of 80,000 keys", keys + "}}", "invalid"});
-        std::string lit = "{\"format\": \"scalecert-2\", \"kind\": \"partition\", \"x\": 1" + std::string(kBytes - 60, '7') + "}";
+        std::string lit =
+            "{\"format\": \"scalecert-2\", \"kind\": \"partition\", \"x\": 1" + std::string(kBytes - 60, '7') + "}";
         out.push_back({"a JSON number of 10^6 digits", lit, "invalid or unreadable"});
         OJ c = tetra;
         c["scene"]["I1"][1] = "2" + std::string(kBytes - bytes(c) - 20, '3');
@@ -372,8 +400,10 @@ std::vector<Shape> shapes(Engine& e) {
 
 std::string seconds(double t) {
     char b[32];
-    if (t < 1) std::snprintf(b, sizeof b, "%.0f ms", t * 1e3);
-    else std::snprintf(b, sizeof b, "%.2f s", t);
+    if (t < 1)
+        std::snprintf(b, sizeof b, "%.0f ms", t * 1e3);
+    else
+        std::snprintf(b, sizeof b, "%.2f s", t);
     return b;
 }
 }  // namespace
@@ -383,20 +413,25 @@ int checker_bench(int argc, char** argv) {
     fs::path keep;
     std::vector<std::string> bins;
     for (int i = 0; i < argc; ++i) {
-        if (std::strcmp(argv[i], "--timeout") == 0 && i + 1 < argc) timeout = std::atof(argv[++i]);
-        else if (std::strcmp(argv[i], "--keep") == 0 && i + 1 < argc) keep = argv[++i];
-        else bins.push_back(argv[i]);
+        if (std::strcmp(argv[i], "--timeout") == 0 && i + 1 < argc)
+            timeout = std::atof(argv[++i]);
+        else if (std::strcmp(argv[i], "--keep") == 0 && i + 1 < argc)
+            keep = argv[++i];
+        else
+            bins.push_back(argv[i]);
     }
     const fs::path self = fs::canonical("/proc/self/exe").parent_path();
     if (bins.empty()) bins.push_back((self / "scalecert-check").string());
-    const fs::path dir = keep.empty() ? fs::temp_directory_path() / ("scalecert-bench-checker-" + std::to_string(::getpid())) : keep;
+    const fs::path dir =
+        keep.empty() ? fs::temp_directory_path() / ("scalecert-bench-checker-" + std::to_string(::getpid())) : keep;
     fs::create_directories(dir);
     Engine e{(self / "scalecert").string(), dir};
     std::fprintf(stderr, "building the shapes in %s ...\n", dir.c_str());
     const std::vector<Shape> all = shapes(e);
     std::string head = "| shape | bytes | read as JSON |", rule = "|---|---|---|";
     for (size_t b = 0; b < bins.size(); ++b) {
-        head += bins.size() > 1 ? " checker " + std::to_string(b + 1) + ": exit | time | × JSON |" : " exit | checker | × JSON |";
+        head += bins.size() > 1 ? " checker " + std::to_string(b + 1) + ": exit | time | × JSON |"
+                                : " exit | checker | × JSON |";
         rule += "---|---|---|";
     }
     std::printf("%s\n%s\n", head.c_str(), rule.c_str());
@@ -412,7 +447,8 @@ int checker_bench(int argc, char** argv) {
             auto j = nlohmann::json::parse(text, nullptr, false);  // a discarded value on error
             json = std::min(json, std::chrono::duration<double>(Clock::now() - t0).count());
         }
-        std::string row = "| " + std::to_string(k + 1) + ". " + s.name + " | " + std::to_string(s.text.size()) + " | " + seconds(json) + " |";
+        std::string row = "| " + std::to_string(k + 1) + ". " + s.name + " | " + std::to_string(s.text.size()) + " | " +
+                          seconds(json) + " |";
         for (const std::string& bin : bins) {
             Run best{1e300, 0, false};
             for (int r = 0; r < 3; ++r) {
@@ -421,8 +457,11 @@ int checker_bench(int argc, char** argv) {
                 if (x.killed || x.seconds > 2) break;
             }
             char b[128];
-            if (best.killed) std::snprintf(b, sizeof b, " killed | > %.0f s | > %.0f |", timeout, timeout / json);
-            else std::snprintf(b, sizeof b, " %d | %s | %.1f |", best.status, seconds(best.seconds).c_str(), best.seconds / json);
+            if (best.killed)
+                std::snprintf(b, sizeof b, " killed | > %.0f s | > %.0f |", timeout, timeout / json);
+            else
+                std::snprintf(b, sizeof b, " %d | %s | %.1f |", best.status, seconds(best.seconds).c_str(),
+                              best.seconds / json);
             row += b;
         }
         std::printf("%s\n", row.c_str());

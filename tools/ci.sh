@@ -1,10 +1,13 @@
 #!/usr/bin/env bash
-# What CI runs (.ci/run): the test command (tools/run-tests.sh); the command and checker built
+# What CI runs (.ci/run): the house style (tools/format.sh --check: clang-format and 120 columns);
+# the test command (tools/run-tests.sh); the command and checker built
 # without the floating-point baselines and tried (tools/no-baselines.sh); the Boost.Test programs
 # again under AddressSanitizer and UndefinedBehaviorSanitizer (tools/sanitize.sh, clang-14); then
 # each libFuzzer target for SCALECERT_FUZZ_SECONDS (default 20) seconds (tools/fuzz.sh).
 set -euo pipefail
 cd "$(dirname "$0")/.."
+tools/install-deps.sh
+tools/format.sh --check
 tools/run-tests.sh
 tools/no-baselines.sh
 tools/install-deps.sh clang-14 libclang-rt-14-dev

@@ -64,9 +64,13 @@ ET decimal(const std::string& s) {
     bool dot = false;
     for (; i < mant.size(); ++i) {
         char c = mant[i];
-        if (c == '.' && !dot) dot = true;
-        else if (c >= '0' && c <= '9') { digits += c; if (dot) --exp10; }
-        else refuse("not a number: " + s);
+        if (c == '.' && !dot)
+            dot = true;
+        else if (c >= '0' && c <= '9') {
+            digits += c;
+            if (dot) --exp10;
+        } else
+            refuse("not a number: " + s);
     }
     if (digits.empty()) refuse("not a number: " + s);
     // Leading zeros would read as octal (gmpxx's base 0), and "n/d" unreduced is not canonical:
@@ -74,8 +78,10 @@ ET decimal(const std::string& s) {
     auto nz = digits.find_first_not_of('0');
     digits = nz == std::string::npos ? "0" : digits.substr(nz);
     std::string num = (neg ? "-" : "") + digits, den = "1";
-    if (exp10 > 0) num += std::string(exp10, '0');
-    else if (exp10 < 0) den += std::string(-exp10, '0');
+    if (exp10 > 0)
+        num += std::string(exp10, '0');
+    else if (exp10 < 0)
+        den += std::string(-exp10, '0');
     return ET(num) / ET(den);
 }
 
@@ -156,8 +162,7 @@ Parts decompose(const Mesh& m, const std::string& name, std::size_t max_faces) {
         std::map<std::array<ET, 3>, int> seen;
         std::vector<std::array<ET, 3>> part;
         for (auto v = Q.vertices_begin(); v != Q.vertices_end(); ++v) {
-            std::array<ET, 3> p{CGAL::exact(v->point().x()), CGAL::exact(v->point().y()),
-                                CGAL::exact(v->point().z())};
+            std::array<ET, 3> p{CGAL::exact(v->point().x()), CGAL::exact(v->point().y()), CGAL::exact(v->point().z())};
             if (seen.emplace(p, 0).second) part.push_back(p);
         }
         out.parts.push_back(part);
@@ -221,12 +226,15 @@ int main(int argc, char** argv) {
     std::string out_path;
     for (int i = 1; i < argc; ++i) {
         std::string a = argv[i];
-        if (a == "--max-faces" && i + 1 < argc) max_faces = std::stoul(argv[++i]);
-        else if (a == "--out" && i + 1 < argc) out_path = argv[++i];
+        if (a == "--max-faces" && i + 1 < argc)
+            max_faces = std::stoul(argv[++i]);
+        else if (a == "--out" && i + 1 < argc)
+            out_path = argv[++i];
         else if (!a.empty() && a[0] == '-') {
             std::cerr << "usage: decompose A.off [B.off] [--max-faces N] [--out FILE]\n";
             return 2;
-        } else files.push_back(a);
+        } else
+            files.push_back(a);
     }
     if (files.empty() || files.size() > 2) {
         std::cerr << "usage: decompose A.off [B.off] [--max-faces N] [--out FILE]\n";
@@ -252,12 +260,13 @@ int main(int argc, char** argv) {
         for (auto& p : B.points)
             for (int c = 0; c < 3; ++c) p[c] = p[c] * k + shift[c];
         Parts pa = guarded(A, files[0], max_faces), pb = guarded(B, files[1], max_faces);
-        std::cerr << files[0] << ": " << A.faces.size() << " faces, " << pa.parts.size() << " parts; "
-                  << files[1] << ": " << B.faces.size() << " faces, " << pb.parts.size() << " parts\n";
+        std::cerr << files[0] << ": " << A.faces.size() << " faces, " << pa.parts.size() << " parts; " << files[1]
+                  << ": " << B.faces.size() << " faces, " << pb.parts.size() << " parts\n";
         text = "{\"P1\": " + object_json(pa) + ",\n \"P2\": " + object_json(pb) +
                ",\n \"I1\": [\"1/2\", 2], \"I2\": [\"1/2\", 2]}\n";
     }
-    if (out_path.empty()) std::cout << text;
+    if (out_path.empty())
+        std::cout << text;
     else {
         std::ofstream o(out_path);
         o << text;

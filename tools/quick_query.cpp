@@ -13,22 +13,29 @@ D3 rounded(const Vec3q& v) { return {to_double_rn(v[0]), to_double_rn(v[1]), to_
 
 // A point w = ρ1 q1_i − ρ2 q2_j − d of P1(ρ1) − P2(ρ2), in doubles, with its vertex pair and a
 // componentwise bound W ≥ ρ1|q1_i| + ρ2|q2_j| + |d| on the magnitudes it was computed from.
-struct Pt { D3 w, W; int i, j; };
+struct Pt {
+    D3 w, W;
+    int i, j;
+};
 
 // GJK's simplex step (the origin against the newest point a = s.back()): keeps the sub-simplex
 // nearest the origin and sets the next search direction v; true when the tetrahedron encloses it.
 // Only a proposal: its rounding is not trusted, the certificate is checked apart.
 void line_step(std::vector<Pt>& s, const Pt& b, const Pt& a, D3& v) {
     const D3 ab = subd(b.w, a.w), ao = negd(a.w);
-    if (dotd(ab, ao) > 0) s = {b, a}, v = crossd(crossd(ab, ao), ab);
-    else s = {a}, v = ao;
+    if (dotd(ab, ao) > 0)
+        s = {b, a}, v = crossd(crossd(ab, ao), ab);
+    else
+        s = {a}, v = ao;
 }
 void triangle_step(std::vector<Pt>& s, D3& v) {
     const Pt c = s[0], b = s[1], a = s[2];
     const D3 ab = subd(b.w, a.w), ac = subd(c.w, a.w), ao = negd(a.w), abc = crossd(ab, ac);
     if (dotd(crossd(abc, ac), ao) > 0) {
-        if (dotd(ac, ao) > 0) s = {c, a}, v = crossd(crossd(ac, ao), ac);
-        else line_step(s, b, a, v);
+        if (dotd(ac, ao) > 0)
+            s = {c, a}, v = crossd(crossd(ac, ao), ac);
+        else
+            line_step(s, b, a, v);
     } else if (dotd(crossd(ab, abc), ao) > 0) {
         line_step(s, b, a, v);
     } else if (dotd(abc, ao) > 0) {
@@ -38,13 +45,32 @@ void triangle_step(std::vector<Pt>& s, D3& v) {
     }
 }
 bool simplex_step(std::vector<Pt>& s, D3& v) {
-    if (s.size() == 2) { const Pt b = s[0], a = s[1]; line_step(s, b, a, v); return false; }
-    if (s.size() == 3) { triangle_step(s, v); return false; }
+    if (s.size() == 2) {
+        const Pt b = s[0], a = s[1];
+        line_step(s, b, a, v);
+        return false;
+    }
+    if (s.size() == 3) {
+        triangle_step(s, v);
+        return false;
+    }
     const Pt d = s[0], c = s[1], b = s[2], a = s[3];
     const D3 ab = subd(b.w, a.w), ac = subd(c.w, a.w), ad = subd(d.w, a.w), ao = negd(a.w);
-    if (dotd(crossd(ab, ac), ao) > 0) { s = {c, b, a}; triangle_step(s, v); return false; }
-    if (dotd(crossd(ac, ad), ao) > 0) { s = {d, c, a}; triangle_step(s, v); return false; }
-    if (dotd(crossd(ad, ab), ao) > 0) { s = {b, d, a}; triangle_step(s, v); return false; }
+    if (dotd(crossd(ab, ac), ao) > 0) {
+        s = {c, b, a};
+        triangle_step(s, v);
+        return false;
+    }
+    if (dotd(crossd(ac, ad), ao) > 0) {
+        s = {d, c, a};
+        triangle_step(s, v);
+        return false;
+    }
+    if (dotd(crossd(ad, ab), ao) > 0) {
+        s = {b, d, a};
+        triangle_step(s, v);
+        return false;
+    }
     return true;
 }
 
@@ -93,7 +119,8 @@ Verdict QuickScene::classify(double r1, double r2) const {
             m2 = std::max(m2, std::fabs(n[0] * q[0]) + std::fabs(n[1] * q[1]) + std::fabs(n[2] * q[2]));
         }
         const double g = dotd(n, d_) - r1 * h1 - r2 * h2;
-        const double scale = std::fabs(n[0] * d_[0]) + std::fabs(n[1] * d_[1]) + std::fabs(n[2] * d_[2]) + r1 * m1 + r2 * m2;
+        const double scale =
+            std::fabs(n[0] * d_[0]) + std::fabs(n[1] * d_[1]) + std::fabs(n[2] * d_[2]) + r1 * m1 + r2 * m2;
         return filter::quick_gap_certified(g, scale);
     };
     // The origin strictly inside the tetrahedron: 0 = Σ λ_k w_k with every λ_k > 0, i.e. the four

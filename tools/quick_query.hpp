@@ -16,7 +16,7 @@ namespace scalecert::internal {
 
 // Not for concurrent use: the counts and the lazily built model are per object (one per thread).
 class QuickScene {
-public:
+  public:
     explicit QuickScene(const ExactScene& scene);
     ~QuickScene();
     Verdict classify(double rho1, double rho2) const;  // ρ1, ρ2 > 0 (their exact values)
@@ -24,7 +24,7 @@ public:
     mutable filter::PredicateStats stats;
     StageCounts counts() const { return stats[filter::Predicate::QuickCertificate]; }
 
-private:
+  private:
     ExactScene scene_;
     std::vector<D3> q1_, q2_;  // v − s1 and w − s2 rounded to nearest (relative error ≤ 2^-53 per component)
     D3 d_{};                   // s2 − s1 rounded to nearest

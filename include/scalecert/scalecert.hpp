@@ -19,34 +19,41 @@ const char* version();  // "MAJOR.MINOR.PATCH"
 
 using Rational = mpq_class;
 using Point = std::array<Rational, 3>;
-struct Interval { Rational lo, hi; };  // a closed range of scaling factors, 0 < lo <= hi
+struct Interval {
+    Rational lo, hi;
+};  // a closed range of scaling factors, 0 < lo <= hi
 
-Rational exact(double x);                // the double's exact binary value (x finite)
+Rational exact(double x);                          // the double's exact binary value (x finite)
 Rational parse_rational(const std::string& text);  // "3/7", "-12", "0.1" (= 1/10), "1e-3", exactly
 std::string to_string(const Rational& q);          // "p/q" in lowest terms, or "p"
 
 // Bad input: a scene, a number, a file. what() is one line naming the problem.
-struct InputError : std::runtime_error { using std::runtime_error::runtime_error; };
+struct InputError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
 
 enum class Verdict : std::int8_t { Separated, Touching, Overlapping };
 enum class Feature { Vertex, Edge, Face };
 enum class ContactKind { VV, VE, VF, EV, EE, EF, FV, FE, FF };  // feature of P1, then of P2
-const char* name(Verdict v);       // "separated", "touching", "overlapping"
-const char* name(ContactKind k);   // "VE"
+const char* name(Verdict v);                                    // "separated", "touching", "overlapping"
+const char* name(ContactKind k);                                // "VE"
 Feature feature1(ContactKind k);
 Feature feature2(ContactKind k);
 
 // Two features in contact: the vertices (indices into the input points) spanning each.
-struct Contact { ContactKind kind; std::vector<int> verts1, verts2; };
+struct Contact {
+    ContactKind kind;
+    std::vector<int> verts1, verts2;
+};
 
 // A validated scene: each polyhedron is the convex hull of its points (duplicates and interior
 // points allowed); the seed defaults to the mean of the points. Checked at construction by the
 // scene file's rules and messages: 4 to 10^6 points each, 0 < lo <= hi, the points spanning 3
 // dimensions, each seed strictly inside. Throws InputError.
 class Scene {
-public:
-    Scene(std::vector<Point> p1, std::vector<Point> p2, Interval i1, Interval i2,
-          std::optional<Point> seed1 = {}, std::optional<Point> seed2 = {});
+  public:
+    Scene(std::vector<Point> p1, std::vector<Point> p2, Interval i1, Interval i2, std::optional<Point> seed1 = {},
+          std::optional<Point> seed2 = {});
     static Scene load(const std::string& scene_json_path);  // the scene file format
     // Mesh files (.off .obj .ply .stl; text numbers exact as written, binary floats at their value).
     static Scene from_meshes(const std::string& p1_path, const std::string& p2_path, Interval i1, Interval i2);
@@ -55,7 +62,7 @@ public:
     Interval range(int i) const;
     std::string json() const;  // the scene file, every number exact
 
-private:
+  private:
     friend class Analysis;
     friend struct SceneAccess;  // the library's own front ends; not part of the API
     struct Data;
@@ -67,20 +74,43 @@ private:
 // Below a piece, the plane of its normal separates; above the curve, the polyhedra overlap.
 // A piece's contact: the smallest faces holding the touching set P1(ρ1) ∩ P2(ρ2) along it; none
 // if ρ2 <= 0 all along the piece.
-struct Piece { Rational from, to, slope, intercept; Point normal; std::optional<Contact> contact; };
-struct SwitchPoint { Rational rho1, rho2; std::optional<Contact> contact; };  // none if ρ2 <= 0
-struct GrowthDistance { Rational value; bool in_rectangle; };  // f(ρ*) = ρ* (0: seeds coincide)
-struct Curve { std::vector<Piece> pieces; std::vector<SwitchPoint> switches; GrowthDistance growth; };
+struct Piece {
+    Rational from, to, slope, intercept;
+    Point normal;
+    std::optional<Contact> contact;
+};
+struct SwitchPoint {
+    Rational rho1, rho2;
+    std::optional<Contact> contact;
+};  // none if ρ2 <= 0
+struct GrowthDistance {
+    Rational value;
+    bool in_rectangle;
+};  // f(ρ*) = ρ* (0: seeds coincide)
+struct Curve {
+    std::vector<Piece> pieces;
+    std::vector<SwitchPoint> switches;
+    GrowthDistance growth;
+};
 
 // P1(ρ1) ⊆ {normal·x <= c1} and P2(ρ2) ⊆ {normal·x >= c2}: c1 < c2 separates, c1 = c2 touches.
-struct Plane { Point normal; Rational c1, c2, offset; };  // offset = (c1 + c2) / 2
-struct CommonPoint { Rational rho1, rho2; Point point; };  // a point of P1(rho1) ∩ P2(rho2)
+struct Plane {
+    Point normal;
+    Rational c1, c2, offset;
+};  // offset = (c1 + c2) / 2
+struct CommonPoint {
+    Rational rho1, rho2;
+    Point point;
+};  // a point of P1(rho1) ∩ P2(rho2)
 struct QueryResult {
     Verdict verdict;
     std::optional<Plane> plane;         // separated, touching
     std::optional<CommonPoint> common;  // touching (at the pair), overlapping (at a pair <= it)
 };
-struct PlaneCheck { bool separates; Rational c1, c2; };  // exact c1, c2 as in Plane
+struct PlaneCheck {
+    bool separates;
+    Rational c1, c2;
+};  // exact c1, c2 as in Plane
 
 // A floating-point program's claims (certificates/CLAIMS.md: JSON scalecert-claims-1, or lines
 // 'RHO1 RHO2 VERDICT', 'curve RHO1 RHO2', 'growth RHO'), each marked right or wrong, exactly.
@@ -90,14 +120,18 @@ struct ClaimOptions {
     // exact_decimals it is the decimal as written (0.1 = 1/10). JSON strings and fractions such as
     // 3/7 are exact either way. (Scenes are read exactly unless told otherwise: their own option.)
     bool exact_decimals = false;
-    Rational tolerance = 0;       // relative error accepted on numeric JSON claims (>= 0)
-    bool json = true;             // the report as JSON (scalecert certify-fp --json), else as text
-    bool certificate = false;     // also the judgements certificate (certify-fp --certificate)
+    Rational tolerance = 0;    // relative error accepted on numeric JSON claims (>= 0)
+    bool json = true;          // the report as JSON (scalecert certify-fp --json), else as text
+    bool certificate = false;  // also the judgements certificate (certify-fp --certificate)
 };
 // The report; the number of claims and of wrong ones; with options.certificate, the judgements
 // certificate (FORMAT.md, kind "judgements"; scalecert-check verifies it): the proof of every
 // judgement.
-struct ClaimReport { std::string report; long claims, wrong; std::string certificate; };
+struct ClaimReport {
+    std::string report;
+    long claims, wrong;
+    std::string certificate;
+};
 // One claim of a floating-point program, typed (the JSON kinds of CLAIMS.md, minus curves):
 // the fields its kind uses. A double's claim is its exact value: exact(x).
 enum class ClaimKind { Verdict, SeparatingPlane, WitnessPoint, Distance, PenetrationDepth };
@@ -108,12 +142,12 @@ struct Claim {
     ClaimKind kind = ClaimKind::Distance;
     Rational rho1 = 1, rho2 = 1;
     ClaimedVerdict verdict = ClaimedVerdict::Separated;  // Verdict
-    Point normal{};                                 // SeparatingPlane
-    std::optional<Rational> offset;                 // SeparatingPlane
-    Point point{};                                  // WitnessPoint
-    Rational value = 0;                             // Distance, PenetrationDepth
-    std::optional<std::array<Point, 2>> closest;    // Distance: on P1, on P2
-    std::optional<Point> direction;                 // PenetrationDepth
+    Point normal{};                                      // SeparatingPlane
+    std::optional<Rational> offset;                      // SeparatingPlane
+    Point point{};                                       // WitnessPoint
+    Rational value = 0;                                  // Distance, PenetrationDepth
+    std::optional<std::array<Point, 2>> closest;         // Distance: on P1, on P2
+    std::optional<Point> direction;                      // PenetrationDepth
     // The field in which the program gave no answer (a NaN or an infinity it wrote, e.g. "value"),
     // if any: the claim is judged wrong (CLAIMS.md, "Outputs that are no answer"). A zero normal
     // or direction is no answer too.
@@ -125,23 +159,25 @@ struct Judgement {
     std::optional<bool> value_right, closest_right, direction_right;  // distances, depths
     std::optional<Rational> exact_squared;  // distances, depths (none: a depth claimed of a separated pair)
     double exact = 0;                       // √exact_squared, correctly rounded (MPFR)
-    double rel_error = 0;                   // |value − exact| / exact, MPFR-rounded (0 when both are 0; inf when only exact is)
-    std::optional<Verdict> exact_verdict;   // verdicts
-    std::string reason;                     // a claim with no answer: the field and why ("value: not a number")
+    double rel_error = 0;  // |value − exact| / exact, MPFR-rounded (0 when both are 0; inf when only exact is)
+    std::optional<Verdict> exact_verdict;  // verdicts
+    std::string reason;                    // a claim with no answer: the field and why ("value: not a number")
 };
 struct Judgements {
     std::vector<Judgement> items;  // one per claim, in order
     long wrong = 0;
-    std::string certificate;       // with options.certificate: the judgements certificate
+    std::string certificate;  // with options.certificate: the judgements certificate
 };
 // Golden data: the curve document with, near the curve, exact verdicts of pairs and of their
 // nearest doubles (JSON), and those doubles with their verdicts (CSV).
-struct GoldenData { std::string json, csv; };
+struct GoldenData {
+    std::string json, csv;
+};
 
 // Calls on one Analysis from several threads at once are not supported; classify() itself runs
 // on many threads.
 class Analysis {
-public:
+  public:
     // Builds the curve: by walking it (the scan path, no hull) from 2,000 points (or 250,000 as
     // the product of the counts), as the scalecert command does, else from the hull model. The
     // documents, classify and claims' verdicts come from the walk where it proved what they need;
@@ -166,7 +202,7 @@ public:
     // What scalecert golden writes for each of its scenes, without the family's fields.
     GoldenData golden() const;
 
-private:
+  private:
     struct Impl;
     std::shared_ptr<const Impl> impl_;
     Curve curve_;
@@ -177,7 +213,7 @@ private:
 // "region"). Built on first use; calls on one Region from several threads at once are not
 // supported. Throws InputError (a flat part, the limits, a point outside I1 × I2).
 class Region {
-public:
+  public:
     // parts[i]: object i's parts, each the convex hull of at least 4 points spanning 3 dimensions;
     // a seed defaults to the mean of all the object's points.
     Region(std::vector<std::vector<Point>> parts1, std::vector<std::vector<Point>> parts2, Interval i1, Interval i2,
@@ -202,7 +238,7 @@ public:
     // depth is refused); with options.certificate, the compound_judgements certificate.
     Judgements certify(const std::vector<Claim>& claims, const ClaimOptions& options = {}) const;
 
-private:
+  private:
     struct Impl;
     explicit Region(std::shared_ptr<Impl> impl) : impl_(std::move(impl)) {}
     std::shared_ptr<Impl> impl_;

@@ -16,7 +16,8 @@ namespace scalecert::internal {
 namespace {
 // Matches the exact switch points inside the rectangle with the junctions found: missed when no
 // junction is within two grid cells; merged when two switch points share their nearest junction.
-void match_junctions(const TouchingCurve& c, const ExactScene& s, const std::vector<double>& found, double cell, AuditRow& r) {
+void match_junctions(const TouchingCurve& c, const ExactScene& s, const std::vector<double>& found, double cell,
+                     AuditRow& r) {
     r.junctions_found = static_cast<int>(found.size());
     std::vector<int> claimed(found.size(), 0);
     for (const CurveSwitch& sp : c.switches) {
@@ -25,7 +26,10 @@ void match_junctions(const TouchingCurve& c, const ExactScene& s, const std::vec
         size_t arg = 0;
         for (size_t k = 0; k < found.size(); ++k)
             if (std::fabs(found[k] - x) < best) best = std::fabs(found[k] - x), arg = k;
-        if (found.empty() || !(best <= 2 * cell)) { ++r.junctions_missed; continue; }  // (a NaN cell misses too)
+        if (found.empty() || !(best <= 2 * cell)) {
+            ++r.junctions_missed;
+            continue;
+        }  // (a NaN cell misses too)
         r.max_junction_error = std::max(r.max_junction_error, best);
         if (claimed[arg]++) ++r.junctions_merged;
     }
@@ -49,8 +53,9 @@ double median(std::vector<double> v) {
 
 // The method's distances and depths where its verdict is right, against the exact ones.
 // `verdicts` are the method's own at those pairs.
-void measure_errors(const fp::Method& mm, const HullModel& m, const std::vector<double>& r1, const std::vector<double>& r2,
-                    const std::vector<Verdict>& exact, const std::vector<int>& verdicts, ExactCache& cache, AuditRow& row) {
+void measure_errors(const fp::Method& mm, const HullModel& m, const std::vector<double>& r1,
+                    const std::vector<double>& r2, const std::vector<Verdict>& exact, const std::vector<int>& verdicts,
+                    ExactCache& cache, AuditRow& row) {
     std::vector<double> dist_err, depth_err;
     for (size_t i = 0; i < r1.size(); ++i) {
         if (exact[i] == Verdict::Touching) continue;
@@ -142,8 +147,8 @@ void wrong_by_distance(const fp::Method& mm, const DistancePairs& p, AuditRow& r
 
 // The convex audit: the curve, its pairs and every convex method (and the grid).
 std::vector<AuditRow> audit_convex(const std::string& name, const ExactScene& s, const Q& eps,
-                                   const std::vector<std::string>& methods, const std::vector<int>& grid_ns, bool by_distance,
-                                   bool measures) {
+                                   const std::vector<std::string>& methods, const std::vector<int>& grid_ns,
+                                   bool by_distance, bool measures) {
     using Clock = std::chrono::steady_clock;
     auto t_exact = Clock::now();
     HullModel m = build_model(s);
@@ -169,7 +174,8 @@ std::vector<AuditRow> audit_convex(const std::string& name, const ExactScene& s,
             }
     }
     std::vector<Verdict> exact(r1.size());
-    for (size_t i = 0; i < r1.size(); ++i) exact[i] = query(m, c, exact_from_double(r1[i]), exact_from_double(r2[i]), false).verdict;
+    for (size_t i = 0; i < r1.size(); ++i)
+        exact[i] = query(m, c, exact_from_double(r1[i]), exact_from_double(r2[i]), false).verdict;
     std::vector<AuditRow> rows;
     ExactCache cache(r1.size());
     const DistancePairs near = by_distance ? distance_pairs(m, c, s) : DistancePairs{};
@@ -221,7 +227,10 @@ std::vector<AuditRow> audit_convex(const std::string& name, const ExactScene& s,
             double gexact = to_double_rn(c.growth.value), gest = NAN;
             for (size_t i = 0; i + 1 < gc.rho1.size(); ++i) {
                 double a = gc.rho2[i] - gc.rho1[i], b = gc.rho2[i + 1] - gc.rho1[i + 1];
-                if (a >= 0 && b <= 0) { gest = gc.rho1[i] + (gc.rho1[i + 1] - gc.rho1[i]) * a / (a - b); break; }
+                if (a >= 0 && b <= 0) {
+                    gest = gc.rho1[i] + (gc.rho1[i + 1] - gc.rho1[i]) * a / (a - b);
+                    break;
+                }
             }
             r.growth_error = c.growth.in_rectangle ? std::fabs(gest - gexact) : 0;
             // Junctions: slope changes between consecutive sample segments beyond a tolerance,
@@ -260,7 +269,8 @@ std::vector<AuditRow> audit_convex(const std::string& name, const ExactScene& s,
             for (size_t i = 0; i + 1 < pair.size(); ++i)
                 if (pair[i] != pair[i + 1]) {
                     ClosedLine A = closed_form_line(m, m.lines[pair[i]]), B = closed_form_line(m, m.lines[pair[i + 1]]);
-                    double aa = A.slope().get_d(), ab = A.intercept().get_d(), ba = B.slope().get_d(), bb = B.intercept().get_d();
+                    double aa = A.slope().get_d(), ab = A.intercept().get_d(), ba = B.slope().get_d(),
+                           bb = B.intercept().get_d();
                     ajx.push_back((bb - ab) / (aa - ba));
                 }
             a.seconds_per_curve = r.seconds_per_curve + std::chrono::duration<double>(Clock::now() - t1).count();
@@ -276,20 +286,25 @@ std::vector<AuditRow> audit_convex(const std::string& name, const ExactScene& s,
 }  // namespace
 
 std::vector<AuditRow> audit_scene(const std::string& name, const ExactScene& s, const Q& eps,
-                                  const std::vector<std::string>& methods, const std::vector<int>& grid_ns, bool by_distance,
-                                  bool measures) {
+                                  const std::vector<std::string>& methods, const std::vector<int>& grid_ns,
+                                  bool by_distance, bool measures) {
     const std::vector<std::string> cn = fp::compound_method_names();
     std::vector<std::string> convex, compound;
-    for (const std::string& m : methods) (std::find(cn.begin(), cn.end(), m) != cn.end() ? compound : convex).push_back(m);
+    for (const std::string& m : methods)
+        (std::find(cn.begin(), cn.end(), m) != cn.end() ? compound : convex).push_back(m);
     const bool p1 = !s.P[0].parts.empty(), p2 = !s.P[1].parts.empty();
     if ((p1 || p2) && !convex.empty()) {
         std::string all;
         for (const std::string& m : cn) all += (all.empty() ? "" : ",") + m;
-        throw InputError(std::string(p1 && p2 ? "P1 and P2 are" : p1 ? "P1 is" : "P2 is") + " made of parts, and method " + internal::quoted(convex[0]) +
+        throw InputError(std::string(p1 && p2 ? "P1 and P2 are"
+                                     : p1     ? "P1 is"
+                                              : "P2 is") +
+                         " made of parts, and method " + internal::quoted(convex[0]) +
                          " audits convex objects only (for objects made of parts: --methods " + all + ")");
     }
     std::vector<AuditRow> rows;
-    if (!convex.empty() || (compound.empty() && !p1 && !p2)) rows = audit_convex(name, s, eps, convex, grid_ns, by_distance, measures);
+    if (!convex.empty() || (compound.empty() && !p1 && !p2))
+        rows = audit_convex(name, s, eps, convex, grid_ns, by_distance, measures);
     if (!compound.empty()) {
         std::vector<AuditRow> c = audit_compound(name, s, eps, compound, by_distance, measures);
         rows.insert(rows.end(), c.begin(), c.end());

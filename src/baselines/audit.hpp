@@ -38,12 +38,14 @@ struct CompoundSample {
 // the region's boundary (every edge when there are at most that many, the points spread evenly
 // along each; else `points` edges spread evenly, one point each), each pushed by 2^-k for k = 4,
 // 8, ..., 52 both ways. Deterministic. The region must have its union (b from label_boundary).
-std::vector<CompoundSample> compound_samples(CompoundJudge& judge, const CompoundBoundary& b, int random = 200, int points = 32);
+std::vector<CompoundSample> compound_samples(CompoundJudge& judge, const CompoundBoundary& b, int random = 200,
+                                             int points = 32);
 // A method's verdicts at the samples, counted into `row`: queries, false_separated (said separated
 // where they meet), false_overlapping, by_distance (k > 0: wrong where the method's verdict
 // differs from the exact one; exactly touching samples counted apart) when by_distance, and
 // on_boundary (k = 0). Returns the method's verdicts.
-std::vector<int> score_compound(const fp::Method& m, const std::vector<CompoundSample>& samples, bool by_distance, AuditRow& row);
+std::vector<int> score_compound(const fp::Method& m, const std::vector<CompoundSample>& samples, bool by_distance,
+                                AuditRow& row);
 // The compound audit of a scene: the region and its labelled boundary (CompoundSession), the
 // samples, every method's verdicts, and where a method measures and its verdict is right, its
 // distances against the exact ones (CompoundJudge::distance). InputError for an unknown method,

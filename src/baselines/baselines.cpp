@@ -10,7 +10,8 @@ namespace scalecert::internal::fp {
 FpScene to_fp(const ExactScene& s) {
     FpScene f;
     for (int i = 0; i < 2; ++i) {
-        for (const Vec3q& v : s.P[i].points) f.P[i].pts.push_back({to_double_rn(v[0]), to_double_rn(v[1]), to_double_rn(v[2])});
+        for (const Vec3q& v : s.P[i].points)
+            f.P[i].pts.push_back({to_double_rn(v[0]), to_double_rn(v[1]), to_double_rn(v[2])});
         f.P[i].seed = {to_double_rn(s.P[i].seed[0]), to_double_rn(s.P[i].seed[1]), to_double_rn(s.P[i].seed[2])};
         f.lo[i] = to_double_rn(s.lo[i]);
         f.hi[i] = to_double_rn(s.hi[i]);
@@ -33,7 +34,10 @@ void support(const void* obj, const ccd_vec3_t* dir, ccd_vec3_t* out) {
     const D3* arg = &s.p->pts[0];
     for (const D3& v : s.p->pts) {
         double d = dir->v[0] * v[0] + dir->v[1] * v[1] + dir->v[2] * v[2];
-        if (d > best) { best = d; arg = &v; }
+        if (d > best) {
+            best = d;
+            arg = &v;
+        }
     }
     for (int k = 0; k < 3; ++k) out->v[k] = c[k] + s.rho * ((*arg)[k] - c[k]);
 }
@@ -56,7 +60,7 @@ ccd_t ccd_settings() {
 }
 
 class Libccd : public Method {
-public:
+  public:
     Libccd(const FpScene& s, bool mpr) : s_(s), mpr_(mpr) {}
     std::string name() const override { return mpr_ ? "libccd-mpr" : "libccd-gjk"; }
     int classify(double r1, double r2) const override {
@@ -72,7 +76,8 @@ public:
         const ccd_t ccd = ccd_settings();
         ccd_real_t depth = 0;
         ccd_vec3_t dir, pos;
-        const int r = mpr_ ? ccdMPRPenetration(&a, &b, &ccd, &depth, &dir, &pos) : ccdGJKPenetration(&a, &b, &ccd, &depth, &dir, &pos);
+        const int r = mpr_ ? ccdMPRPenetration(&a, &b, &ccd, &depth, &dir, &pos)
+                           : ccdGJKPenetration(&a, &b, &ccd, &depth, &dir, &pos);
         if (r != 0) return std::nullopt;
         Measure m;
         m.depth = true;
@@ -81,20 +86,24 @@ public:
         return m;
     }
 
-private:
+  private:
     FpScene s_;
     bool mpr_;
 };
 
 class DoubleEnvelope : public Method {
-public:
+  public:
     DoubleEnvelope(const Model& m, const FpScene& s) {
         const D3 d{s.P[1].seed[0] - s.P[0].seed[0], s.P[1].seed[1] - s.P[0].seed[1], s.P[1].seed[2] - s.P[0].seed[2]};
         for (const ContactLine& L : m.lines) {
             D3 n{L.normal[0].get_d(), L.normal[1].get_d(), L.normal[2].get_d()};
             double h1 = -INFINITY, h2 = -INFINITY;
-            for (const D3& v : s.P[0].pts) h1 = std::max(h1, n[0] * (v[0] - s.P[0].seed[0]) + n[1] * (v[1] - s.P[0].seed[1]) + n[2] * (v[2] - s.P[0].seed[2]));
-            for (const D3& w : s.P[1].pts) h2 = std::max(h2, -(n[0] * (w[0] - s.P[1].seed[0]) + n[1] * (w[1] - s.P[1].seed[1]) + n[2] * (w[2] - s.P[1].seed[2])));
+            for (const D3& v : s.P[0].pts)
+                h1 = std::max(h1, n[0] * (v[0] - s.P[0].seed[0]) + n[1] * (v[1] - s.P[0].seed[1]) +
+                                      n[2] * (v[2] - s.P[0].seed[2]));
+            for (const D3& w : s.P[1].pts)
+                h2 = std::max(h2, -(n[0] * (w[0] - s.P[1].seed[0]) + n[1] * (w[1] - s.P[1].seed[1]) +
+                                    n[2] * (w[2] - s.P[1].seed[2])));
             nd_.push_back(n[0] * d[0] + n[1] * d[1] + n[2] * d[2]);
             h1_.push_back(h1);
             h2_.push_back(h2);
@@ -107,7 +116,7 @@ public:
         return best > 0 ? 1 : best == 0 ? 0 : -1;
     }
 
-private:
+  private:
     std::vector<double> nd_, h1_, h2_;
 };
 
@@ -115,7 +124,9 @@ private:
 
 std::unique_ptr<Method> make_libccd_gjk(const FpScene& s) { return std::make_unique<Libccd>(s, false); }
 std::unique_ptr<Method> make_libccd_mpr(const FpScene& s) { return std::make_unique<Libccd>(s, true); }
-std::unique_ptr<Method> make_double_envelope(const Model& m, const FpScene& s) { return std::make_unique<DoubleEnvelope>(m, s); }
+std::unique_ptr<Method> make_double_envelope(const Model& m, const FpScene& s) {
+    return std::make_unique<DoubleEnvelope>(m, s);
+}
 
 namespace {
 using Factory = std::unique_ptr<Method> (*)(const Model&, const FpScene&);
@@ -138,7 +149,7 @@ namespace {
 // libccd's GJK on every part pair (each part scaled about its object's seed), the first that meets
 // ends the loop: what a program without a broad phase does.
 class LibccdParts : public Method {
-public:
+  public:
     explicit LibccdParts(const CompoundFp& s) {
         for (int i = 0; i < 2; ++i)
             for (const CompoundFp::Part& p : s.parts[i]) parts_[i].push_back(Polytope{p.pts, s.seed[i]});
@@ -154,7 +165,7 @@ public:
         return 1;
     }
 
-private:
+  private:
     std::vector<Polytope> parts_[2];
 };
 }  // namespace

@@ -36,12 +36,14 @@ struct Measure {
 
 // +1 separated, 0 touching (only methods that can say so), −1 overlapping.
 class Method {
-public:
+  public:
     virtual ~Method() = default;
     virtual std::string name() const = 0;
     virtual int classify(double r1, double r2) const = 0;
     // The distance (separated = true) or the penetration depth, where the method's API gives it.
-    virtual std::optional<Measure> measure(double /*r1*/, double /*r2*/, bool /*separated*/) const { return std::nullopt; }
+    virtual std::optional<Measure> measure(double /*r1*/, double /*r2*/, bool /*separated*/) const {
+        return std::nullopt;
+    }
 };
 
 // libccd's GJK and MPR on the two scaled vertex sets (support function per polytope).

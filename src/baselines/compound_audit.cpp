@@ -47,20 +47,22 @@ std::optional<std::array<double, 2>> double_on_edge(const EdgeRef& e, const Poin
     const Z& step = along_x ? stepX : stepY;
     Q kq = (target - Q(along_x ? X : Y)) / Q(step);
     Z k;
-    mpz_fdiv_q(k.get_mpz_t(), Z(kq.get_num() * 2 + kq.get_den()).get_mpz_t(), Z(kq.get_den() * 2).get_mpz_t());  // round(kq)
+    mpz_fdiv_q(k.get_mpz_t(), Z(kq.get_num() * 2 + kq.get_den()).get_mpz_t(),
+               Z(kq.get_den() * 2).get_mpz_t());  // round(kq)
     X += k * stepX;
     Y += k * stepY;
     const Z lim = Z(1) << 53;
     if (abs(X) >= lim || abs(Y) >= lim) return std::nullopt;
     const Q xq(X, Z(1) << m), yq(Y, Z(1) << m);
-    if (!(std::min(e.from[0], e.to[0]) <= xq && xq <= std::max(e.from[0], e.to[0]) && std::min(e.from[1], e.to[1]) <= yq &&
-          yq <= std::max(e.from[1], e.to[1])))
+    if (!(std::min(e.from[0], e.to[0]) <= xq && xq <= std::max(e.from[0], e.to[0]) &&
+          std::min(e.from[1], e.to[1]) <= yq && yq <= std::max(e.from[1], e.to[1])))
         return std::nullopt;
     return std::array<double, 2>{to_double_rn(xq), to_double_rn(yq)};  // (exact: both are doubles)
 }
 
 int exact_verdict(CompoundJudge& judge, double r1, double r2) {
-    return static_cast<int>(judge.verdict(exact_from_double(r1), exact_from_double(r2)).verdict);  // 0, 1, 2: Verdict's order
+    return static_cast<int>(
+        judge.verdict(exact_from_double(r1), exact_from_double(r2)).verdict);  // 0, 1, 2: Verdict's order
 }
 
 // A method's verdict (+1 separated, 0 touching, −1 overlapping) is wrong on a pair that is not
@@ -83,7 +85,8 @@ fp::CompoundFp compound_fp(const CompoundJudge& judge) {
         for (size_t k = 0; k < judge.parts(i); ++k) {
             const Polyhedron& P = judge.part(i, k);
             fp::CompoundFp::Part part;
-            for (const Vec3q& v : P.points) part.pts.push_back({to_double_rn(v[0]), to_double_rn(v[1]), to_double_rn(v[2])});
+            for (const Vec3q& v : P.points)
+                part.pts.push_back({to_double_rn(v[0]), to_double_rn(v[1]), to_double_rn(v[2])});
             for (const Face& face : P.faces) part.faces.push_back(face.verts);
             f.parts[i].push_back(std::move(part));
         }
@@ -99,7 +102,8 @@ std::vector<CompoundSample> compound_samples(CompoundJudge& judge, const Compoun
     std::vector<CompoundSample> out;
     // Random pairs in I1 × I2, drawn as the convex audit draws its own.
     Rng g(12345);
-    const double lo[2] = {to_double_rn(s.lo[0]), to_double_rn(s.lo[1])}, hi[2] = {to_double_rn(s.hi[0]), to_double_rn(s.hi[1])};
+    const double lo[2] = {to_double_rn(s.lo[0]), to_double_rn(s.lo[1])},
+                 hi[2] = {to_double_rn(s.hi[0]), to_double_rn(s.hi[1])};
     for (int k = 0; k < random; ++k) {
         CompoundSample c;
         c.k = -1;
@@ -158,7 +162,8 @@ std::vector<CompoundSample> compound_samples(CompoundJudge& judge, const Compoun
     return out;
 }
 
-std::vector<int> score_compound(const fp::Method& m, const std::vector<CompoundSample>& samples, bool by_distance, AuditRow& row) {
+std::vector<int> score_compound(const fp::Method& m, const std::vector<CompoundSample>& samples, bool by_distance,
+                                AuditRow& row) {
     std::vector<int> said(samples.size());
     AuditRow::OnBoundary on;
     if (by_distance)
@@ -198,12 +203,14 @@ std::vector<AuditRow> audit_compound(const std::string& name, const ExactScene& 
     // Every method is known before any work.
     const std::vector<std::string> known = fp::compound_method_names();
     for (const std::string& m : methods)
-        if (std::find(known.begin(), known.end(), m) == known.end()) throw InputError("--methods: unknown method " + quoted(m));
+        if (std::find(known.begin(), known.end(), m) == known.end())
+            throw InputError("--methods: unknown method " + quoted(m));
     CompoundSession session(s, name);
     const CompoundRegion& r = session.region(true);
     if (r.union_skipped)
         throw InputError("more than " + std::to_string(kMaxUnionPolygons) +
-                         " part pairs overlap with area in I1 x I2: the region's union, whose boundary the audit samples, is not formed");
+                         " part pairs overlap with area in I1 x I2: the region's union, whose boundary the audit "
+                         "samples, is not formed");
     const CompoundBoundary b = label_boundary(r, session.scene());
     CompoundJudge judge(session.scene(), name);
     const std::vector<CompoundSample> samples = compound_samples(judge, b);
@@ -218,7 +225,8 @@ std::vector<AuditRow> audit_compound(const std::string& name, const ExactScene& 
         row.eps = eps;
         const auto t0 = Clock::now();
         const std::vector<int> said = score_compound(*mm, samples, by_distance, row);
-        row.seconds_per_query = std::chrono::duration<double>(Clock::now() - t0).count() / static_cast<double>(std::max<size_t>(1, samples.size()));
+        row.seconds_per_query = std::chrono::duration<double>(Clock::now() - t0).count() /
+                                static_cast<double>(std::max<size_t>(1, samples.size()));
         if (measures) {
             // Distances where the pair is separated and the method says so, against the exact
             // least distance over the part pairs; the closest points checked for membership.
@@ -234,8 +242,10 @@ std::vector<AuditRow> audit_compound(const std::string& name, const ExactScene& 
                 err.push_back(std::fabs(sqrt_minus_rn(*squared[i], exact_from_double(me->value))) / root);
                 if (me->closest) {
                     const auto& cp = *me->closest;
-                    const Vec3q p{exact_from_double(cp[0][0]), exact_from_double(cp[0][1]), exact_from_double(cp[0][2])};
-                    const Vec3q q{exact_from_double(cp[1][0]), exact_from_double(cp[1][1]), exact_from_double(cp[1][2])};
+                    const Vec3q p{exact_from_double(cp[0][0]), exact_from_double(cp[0][1]),
+                                  exact_from_double(cp[0][2])};
+                    const Vec3q q{exact_from_double(cp[1][0]), exact_from_double(cp[1][1]),
+                                  exact_from_double(cp[1][2])};
                     row.closest_outside += judge.locate(0, a, p) < 0 || judge.locate(1, bb, q) < 0;
                 }
             }

@@ -23,7 +23,7 @@ namespace scalecert::internal::fp {
 namespace {
 
 class Fcl : public Method {
-public:
+  public:
     Fcl(const Model& m, const FpScene& s, fcl::GJKSolverType type) : s_(s), type_(type) {
         for (int i = 0; i < 2; ++i) {
             auto faces = std::make_shared<std::vector<int>>();
@@ -39,11 +39,13 @@ public:
     std::shared_ptr<fcl::CollisionGeometryd> shape(int i, double rho) const {
         auto v = std::make_shared<std::vector<fcl::Vector3d>>();
         const D3& c = s_.P[i].seed;
-        for (const D3& p : s_.P[i].pts) v->emplace_back(c[0] + rho * (p[0] - c[0]), c[1] + rho * (p[1] - c[1]), c[2] + rho * (p[2] - c[2]));
+        for (const D3& p : s_.P[i].pts)
+            v->emplace_back(c[0] + rho * (p[0] - c[0]), c[1] + rho * (p[1] - c[1]), c[2] + rho * (p[2] - c[2]));
         return std::make_shared<fcl::Convexd>(v, nfaces_[i], faces_[i]);
     }
     int classify(double r1, double r2) const override {
-        fcl::CollisionObjectd a(shape(0, r1), fcl::Transform3d::Identity()), b(shape(1, r2), fcl::Transform3d::Identity());
+        fcl::CollisionObjectd a(shape(0, r1), fcl::Transform3d::Identity()),
+            b(shape(1, r2), fcl::Transform3d::Identity());
         fcl::CollisionRequestd req;
         req.gjk_solver_type = type_;
         fcl::CollisionResultd res;
@@ -54,7 +56,8 @@ public:
     // normal, from P1 towards P2) when not. The depth is taken as returned: FCL 0.7's own GJK
     // (GST_INDEP) returns it negated (−1.5 where libccd's gives 1.5), which the audit reports.
     std::optional<Measure> measure(double r1, double r2, bool separated) const override {
-        fcl::CollisionObjectd a(shape(0, r1), fcl::Transform3d::Identity()), b(shape(1, r2), fcl::Transform3d::Identity());
+        fcl::CollisionObjectd a(shape(0, r1), fcl::Transform3d::Identity()),
+            b(shape(1, r2), fcl::Transform3d::Identity());
         Measure m;
         if (separated) {
             fcl::DistanceRequestd req(true);
@@ -79,7 +82,7 @@ public:
         return m;
     }
 
-private:
+  private:
     FpScene s_;
     fcl::GJKSolverType type_;
     std::shared_ptr<const std::vector<int>> faces_[2];
@@ -87,7 +90,7 @@ private:
 };
 
 class Bullet : public Method {
-public:
+  public:
     explicit Bullet(const FpScene& s) : s_(s) {
         for (int i = 0; i < 2; ++i) {
             const D3& c = s.P[i].seed;
@@ -115,19 +118,21 @@ public:
         Measure m;
         auto d3 = [](const btVector3& v) { return D3{v.x(), v.y(), v.z()}; };
         if (separated) {
-            if (!btGjkEpaSolver2::Distance(&shape_[0], xf_[0], &shape_[1], xf_[1], btVector3(1, 0, 0), res)) return std::nullopt;
+            if (!btGjkEpaSolver2::Distance(&shape_[0], xf_[0], &shape_[1], xf_[1], btVector3(1, 0, 0), res))
+                return std::nullopt;
             m.value = res.distance;
             m.closest = std::array<D3, 2>{d3(res.witnesses[0]), d3(res.witnesses[1])};
             return m;
         }
-        if (!btGjkEpaSolver2::Penetration(&shape_[0], xf_[0], &shape_[1], xf_[1], btVector3(1, 0, 0), res)) return std::nullopt;
+        if (!btGjkEpaSolver2::Penetration(&shape_[0], xf_[0], &shape_[1], xf_[1], btVector3(1, 0, 0), res))
+            return std::nullopt;
         m.depth = true;
         m.value = -res.distance;
         m.direction = d3(-res.normal);
         return m;
     }
 
-private:
+  private:
     FpScene s_;
     mutable btConvexHullShape shape_[2];
     btTransform xf_[2];
@@ -146,9 +151,8 @@ private:
 // each child pair by GJK/EPA); a contact at distance < 0 is overlapping, = 0 touching, none or
 // > 0 separated.
 class BulletCompound : public Method {
-public:
-    explicit BulletCompound(const CompoundFp& s)
-        : dispatcher_(&config_), world_(&dispatcher_, &broadphase_, &config_) {
+  public:
+    explicit BulletCompound(const CompoundFp& s) : dispatcher_(&config_), world_(&dispatcher_, &broadphase_, &config_) {
         for (int i = 0; i < 2; ++i) {
             const D3& c = s.seed[i];
             compound_[i] = std::make_unique<btCompoundShape>(true, static_cast<int>(s.parts[i].size()));
@@ -188,8 +192,9 @@ public:
                 btGjkEpaSolver2::sResults res;
                 const auto* A = static_cast<const btConvexShape*>(compound_[0]->getChildShape(a));
                 const auto* B = static_cast<const btConvexShape*>(compound_[1]->getChildShape(b));
-                if (!btGjkEpaSolver2::Distance(A, object_[0].getWorldTransform() * compound_[0]->getChildTransform(a), B,
-                                               object_[1].getWorldTransform() * compound_[1]->getChildTransform(b), btVector3(1, 0, 0), res))
+                if (!btGjkEpaSolver2::Distance(A, object_[0].getWorldTransform() * compound_[0]->getChildTransform(a),
+                                               B, object_[1].getWorldTransform() * compound_[1]->getChildTransform(b),
+                                               btVector3(1, 0, 0), res))
                     return std::nullopt;  // a pair GJK finds meeting: no distance
                 if (!best || res.distance < best->value) {
                     Measure m;
@@ -202,12 +207,12 @@ public:
         return best;
     }
 
-private:
+  private:
     struct Contacts : btCollisionWorld::ContactResultCallback {
         long count = 0;
         btScalar least = 0;
-        btScalar addSingleResult(btManifoldPoint& cp, const btCollisionObjectWrapper*, int, int, const btCollisionObjectWrapper*, int,
-                                 int) override {
+        btScalar addSingleResult(btManifoldPoint& cp, const btCollisionObjectWrapper*, int, int,
+                                 const btCollisionObjectWrapper*, int, int) override {
             if (count++ == 0 || cp.getDistance() < least) least = cp.getDistance();
             return 0;
         }
@@ -240,7 +245,7 @@ private:
 // with FCL's default callback (stops at the first colliding pair) and manager1->distance(manager2)
 // with its default distance callback (the least over the pairs the trees do not prune).
 class FclCompound : public Method {
-public:
+  public:
     FclCompound(const CompoundFp& s, fcl::GJKSolverType type) : s_(s), type_(type) {
         for (int i = 0; i < 2; ++i)
             for (const CompoundFp::Part& part : s.parts[i]) {
@@ -252,7 +257,9 @@ public:
                 faces_[i].push_back(faces);
             }
     }
-    std::string name() const override { return type_ == fcl::GST_LIBCCD ? "fcl-compound-libccd" : "fcl-compound-indep"; }
+    std::string name() const override {
+        return type_ == fcl::GST_LIBCCD ? "fcl-compound-libccd" : "fcl-compound-indep";
+    }
     int classify(double r1, double r2) const override {
         Scene sc(*this, r1, r2);
         fcl::DefaultCollisionData<double> data;
@@ -274,7 +281,7 @@ public:
         return m;
     }
 
-private:
+  private:
     // The parts at (ρ1, ρ2) as collision objects in one manager per object.
     struct Scene {
         std::vector<std::unique_ptr<fcl::CollisionObjectd>> objects[2];
@@ -284,7 +291,8 @@ private:
             for (int i = 0; i < 2; ++i) {
                 std::vector<fcl::CollisionObjectd*> list;
                 for (size_t k = 0; k < f.s_.parts[i].size(); ++k) {
-                    objects[i].push_back(std::make_unique<fcl::CollisionObjectd>(f.shape(i, k, r[i]), fcl::Transform3d::Identity()));
+                    objects[i].push_back(
+                        std::make_unique<fcl::CollisionObjectd>(f.shape(i, k, r[i]), fcl::Transform3d::Identity()));
                     objects[i].back()->setUserData(&kObject[i]);
                     list.push_back(objects[i].back().get());
                 }
@@ -296,7 +304,8 @@ private:
     std::shared_ptr<fcl::CollisionGeometryd> shape(int i, size_t k, double rho) const {
         auto v = std::make_shared<std::vector<fcl::Vector3d>>();
         const D3& c = s_.seed[i];
-        for (const D3& p : s_.parts[i][k].pts) v->emplace_back(c[0] + rho * (p[0] - c[0]), c[1] + rho * (p[1] - c[1]), c[2] + rho * (p[2] - c[2]));
+        for (const D3& p : s_.parts[i][k].pts)
+            v->emplace_back(c[0] + rho * (p[0] - c[0]), c[1] + rho * (p[1] - c[1]), c[2] + rho * (p[2] - c[2]));
         return std::make_shared<fcl::Convexd>(v, static_cast<int>(s_.parts[i][k].faces.size()), faces_[i][k]);
     }
     // FCL's default distance callback (fcl::distance on each pair the trees bring, the least kept,

@@ -34,7 +34,9 @@ const Module& module() {
         paths.push_back(SCALECERT_FCL_BULLET_BUILD);
         std::error_code ec;
         const auto exe = std::filesystem::read_symlink("/proc/self/exe", ec);
-        if (!ec) paths.push_back((exe.parent_path() / ".." / SCALECERT_LIBDIR / "scalecert" / "libscalecert_fcl_bullet.so").string());
+        if (!ec)
+            paths.push_back(
+                (exe.parent_path() / ".." / SCALECERT_LIBDIR / "scalecert" / "libscalecert_fcl_bullet.so").string());
         paths.push_back(SCALECERT_FCL_BULLET_INSTALLED);
         for (const std::string& p : paths) {
             if (::access(p.c_str(), R_OK) != 0) continue;
@@ -51,7 +53,8 @@ const Module& module() {
         }
         if (error.empty()) error = "libscalecert_fcl_bullet.so not found (set SCALECERT_FCL_BULLET_MODULE)";
     });
-    if (!mod.fcl || !mod.bullet || !mod.compound) throw std::runtime_error("the FCL/Bullet baselines cannot be loaded: " + error);
+    if (!mod.fcl || !mod.bullet || !mod.compound)
+        throw std::runtime_error("the FCL/Bullet baselines cannot be loaded: " + error);
     return mod;
 }
 }  // namespace

@@ -13,7 +13,9 @@ namespace scalecert::internal::fp {
 namespace {
 using T3 = std::array<D3, 3>;
 D3 sub3(const D3& a, const D3& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-D3 cross3(const D3& a, const D3& b) { return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}; }
+D3 cross3(const D3& a, const D3& b) {
+    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
 double dot3(const D3& a, const D3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
 // 2-D: do segments ab and cd meet (touching counts)?
@@ -24,7 +26,8 @@ bool segments_meet(const double* a, const double* b, const double* c, const doub
     };
     int o1 = orient(a, b, c), o2 = orient(a, b, d), o3 = orient(c, d, a), o4 = orient(c, d, b);
     auto on = [](const double* p, const double* q, const double* r) {
-        return std::min(p[0], q[0]) <= r[0] && r[0] <= std::max(p[0], q[0]) && std::min(p[1], q[1]) <= r[1] && r[1] <= std::max(p[1], q[1]);
+        return std::min(p[0], q[0]) <= r[0] && r[0] <= std::max(p[0], q[0]) && std::min(p[1], q[1]) <= r[1] &&
+               r[1] <= std::max(p[1], q[1]);
     };
     if (o1 != o2 && o3 != o4) return true;
     return (o1 == 0 && on(a, b, c)) || (o2 == 0 && on(a, b, d)) || (o3 == 0 && on(c, d, a)) || (o4 == 0 && on(c, d, b));
@@ -38,8 +41,10 @@ bool inside2(const double t[3][2], const double* p) {
         double v = (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0]);
         int sv = (v > 0) - (v < 0);
         if (sv == 0) continue;
-        if (s == 0) s = sv;
-        else if (sv != s) return false;
+        if (s == 0)
+            s = sv;
+        else if (sv != s)
+            return false;
     }
     return true;
 }
@@ -65,7 +70,8 @@ void interval(const T3& T, const double d[3], int axis, double& lo, double& hi) 
     for (int i = 0; i < 3 && n < 3; ++i) {
         int j = (i + 1) % 3;
         if (d[i] == 0) ts[n++] = T[i][axis];
-        if ((d[i] > 0 && d[j] < 0) || (d[i] < 0 && d[j] > 0)) ts[n++] = T[i][axis] + (T[j][axis] - T[i][axis]) * d[i] / (d[i] - d[j]);
+        if ((d[i] > 0 && d[j] < 0) || (d[i] < 0 && d[j] > 0))
+            ts[n++] = T[i][axis] + (T[j][axis] - T[i][axis]) * d[i] / (d[i] - d[j]);
     }
     lo = hi = ts[0];
     for (int k = 1; k < n; ++k) lo = std::min(lo, ts[k]), hi = std::max(hi, ts[k]);
@@ -94,11 +100,12 @@ bool triangles_intersect(const T3& A, const T3& B) {
 
 namespace {
 class PaperTriTri : public Method {
-public:
+  public:
     PaperTriTri(const Model& m, const FpScene& s) : s_(s) {
         for (int i = 0; i < 2; ++i)
             for (const Face& f : m.P[i].faces)
-                for (size_t k = 1; k + 1 < f.verts.size(); ++k) tris_[i].push_back({f.verts[0], f.verts[k], f.verts[k + 1]});
+                for (size_t k = 1; k + 1 < f.verts.size(); ++k)
+                    tris_[i].push_back({f.verts[0], f.verts[k], f.verts[k + 1]});
     }
     std::string name() const override { return "paper-tritri"; }
     int classify(double r1, double r2) const override {
@@ -116,12 +123,14 @@ public:
         return 1;
     }
 
-private:
+  private:
     FpScene s_;
     std::vector<std::array<int, 3>> tris_[2];
 };
 }  // namespace
 
-std::unique_ptr<Method> make_paper_tritri(const Model& m, const FpScene& s) { return std::make_unique<PaperTriTri>(m, s); }
+std::unique_ptr<Method> make_paper_tritri(const Model& m, const FpScene& s) {
+    return std::make_unique<PaperTriTri>(m, s);
+}
 
 }  // namespace scalecert::internal::fp

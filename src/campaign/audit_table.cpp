@@ -5,8 +5,10 @@
 namespace scalecert::internal {
 
 std::string audit_csv(const std::vector<AuditRow>& rows, bool timing) {
-    std::string s = "scene,eps,method,queries,false_separated,false_overlapping,seconds_per_query,grid_n,seconds_per_curve,growth_error,exact_junctions,junctions_found,junctions_missed,junctions_merged,max_junction_error,"
-                    "distances,distance_err_median,distance_err_max,depths,depth_err_median,depth_err_max,direction_err_max\n";
+    std::string s =
+        "scene,eps,method,queries,false_separated,false_overlapping,seconds_per_query,grid_n,seconds_per_curve,growth_"
+        "error,exact_junctions,junctions_found,junctions_missed,junctions_merged,max_junction_error,"
+        "distances,distance_err_median,distance_err_max,depths,depth_err_median,depth_err_max,direction_err_max\n";
     bool with_bd = false, with_on = false;
     for (const AuditRow& r : rows) with_bd |= !r.by_distance.empty(), with_on |= r.on_boundary.has_value();
     if (with_bd || with_on) {
@@ -16,7 +18,9 @@ std::string audit_csv(const std::vector<AuditRow>& rows, bool timing) {
                 const std::string K = "bd" + std::to_string(k);
                 s += "," + K + "_pairs," + K + "_wrong," + K + "_touching";
             }
-        if (with_on) s += ",on_points,on_touching,on_said_separated,on_said_touching,on_said_overlapping,on_moved,on_moved_wrong";
+        if (with_on)
+            s +=
+                ",on_points,on_touching,on_said_separated,on_said_touching,on_said_overlapping,on_moved,on_moved_wrong";
         s += "\n";
     }
     // The by-distance and on-boundary columns of a row (empty where it has none).
@@ -27,11 +31,14 @@ std::string audit_csv(const std::vector<AuditRow>& rows, bool timing) {
                 const AuditRow::ByDistance* b = nullptr;
                 for (const AuditRow::ByDistance& x : r.by_distance)
                     if (x.k == k) b = &x;
-                e += b ? "," + std::to_string(b->pairs) + "," + std::to_string(b->wrong) + "," + std::to_string(b->touching) : std::string(",,,");
+                e += b ? "," + std::to_string(b->pairs) + "," + std::to_string(b->wrong) + "," +
+                             std::to_string(b->touching)
+                       : std::string(",,,");
             }
         if (with_on) {
             if (const auto& o = r.on_boundary) {
-                for (long v : {o->points, o->touching, o->said_separated, o->said_touching, o->said_overlapping, o->moved, o->moved_wrong})
+                for (long v : {o->points, o->touching, o->said_separated, o->said_touching, o->said_overlapping,
+                               o->moved, o->moved_wrong})
                     e += "," + std::to_string(v);
             } else {
                 e += ",,,,,,,";
@@ -41,10 +48,12 @@ std::string audit_csv(const std::vector<AuditRow>& rows, bool timing) {
     };
     char b[1024];
     for (const AuditRow& r : rows) {
-        std::snprintf(b, sizeof b, "%s,%.17g,%s,%ld,%ld,%ld,%.6g,%d,%.6g,%.6g,%d,%d,%d,%d,%.6g,%ld,%.6g,%.6g,%ld,%.6g,%.6g,%.6g\n", r.scene.c_str(), to_double_rn(r.eps),
-                      r.method.c_str(), r.queries, r.false_separated, r.false_overlapping, r.seconds_per_query, r.grid_n,
-                      r.seconds_per_curve, r.growth_error, r.exact_junctions, r.junctions_found, r.junctions_missed,
-                      r.junctions_merged, r.max_junction_error, r.distances, r.distance_err_median, r.distance_err_max, r.depths,
+        std::snprintf(b, sizeof b,
+                      "%s,%.17g,%s,%ld,%ld,%ld,%.6g,%d,%.6g,%.6g,%d,%d,%d,%d,%.6g,%ld,%.6g,%.6g,%ld,%.6g,%.6g,%.6g\n",
+                      r.scene.c_str(), to_double_rn(r.eps), r.method.c_str(), r.queries, r.false_separated,
+                      r.false_overlapping, r.seconds_per_query, r.grid_n, r.seconds_per_curve, r.growth_error,
+                      r.exact_junctions, r.junctions_found, r.junctions_missed, r.junctions_merged,
+                      r.max_junction_error, r.distances, r.distance_err_median, r.distance_err_max, r.depths,
                       r.depth_err_median, r.depth_err_max, r.direction_err_max);
         if (!timing) {  // the columns seconds_per_query (7th) and seconds_per_curve (9th) left empty
             std::string line = b;
@@ -100,9 +109,12 @@ Json audit_json(const std::vector<AuditRow>& rows, bool timing) {
                 o["by_distance"] = bd;
             }
             if (const auto& ob = r.on_boundary)
-                o["on_boundary"] = Json{{"points", ob->points},           {"touching", ob->touching},
-                                        {"said_separated", ob->said_separated}, {"said_touching", ob->said_touching},
-                                        {"said_overlapping", ob->said_overlapping}, {"moved", ob->moved},
+                o["on_boundary"] = Json{{"points", ob->points},
+                                        {"touching", ob->touching},
+                                        {"said_separated", ob->said_separated},
+                                        {"said_touching", ob->said_touching},
+                                        {"said_overlapping", ob->said_overlapping},
+                                        {"moved", ob->moved},
                                         {"moved_wrong", ob->moved_wrong}};
             if (r.depths) {
                 o["depths"] = r.depths;

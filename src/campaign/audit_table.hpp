@@ -25,18 +25,23 @@ struct AuditRow {
     // excess of the depth along the reported direction over the true depth.
     long distances = 0, depths = 0;
     long closest_outside = 0;  // reported closest (witness) points not in their scaled body, exactly
-    double distance_err_median = 0, distance_err_max = 0, depth_err_median = 0, depth_err_max = 0, direction_err_max = 0;
+    double distance_err_median = 0, distance_err_max = 0, depth_err_median = 0, depth_err_max = 0,
+           direction_err_max = 0;
     // With by_distance: at relative distances 2^-k above and below the curve (k = 4, 8, ..., 52),
     // how many pairs, how many wrong verdicts, and how many pairs were exactly touching once
     // rounded to doubles (counted apart, not in the rate).
-    struct ByDistance { int k; long pairs = 0, wrong = 0, touching = 0; };
+    struct ByDistance {
+        int k;
+        long pairs = 0, wrong = 0, touching = 0;
+    };
     std::vector<ByDistance> by_distance;
     // Objects made of parts (baselines/compound_audit.cpp): the sample points on the boundary of
     // the overlap region, as doubles. `touching`: those exactly touching, with what the method said
     // there; `moved`: those that rounding to doubles moved off the boundary (judged exactly), and
     // the method's wrong verdicts on them. None for convex audits.
     struct OnBoundary {
-        long points = 0, touching = 0, said_separated = 0, said_touching = 0, said_overlapping = 0, moved = 0, moved_wrong = 0;
+        long points = 0, touching = 0, said_separated = 0, said_touching = 0, said_overlapping = 0, moved = 0,
+             moved_wrong = 0;
     };
     std::optional<OnBoundary> on_boundary;
 };

@@ -18,18 +18,20 @@ namespace scalecert::internal {
 // ---- SHA-256 (FIPS 180-4), for the run folder's content hashes ------------------------------
 namespace {
 constexpr std::uint32_t kK[64] = {
-    0x428a2f98, 0x71374491, 0xb5c0fbcf, 0xe9b5dba5, 0x3956c25b, 0x59f111f1, 0x923f82a4, 0xab1c5ed5, 0xd807aa98, 0x12835b01,
-    0x243185be, 0x550c7dc3, 0x72be5d74, 0x80deb1fe, 0x9bdc06a7, 0xc19bf174, 0xe49b69c1, 0xefbe4786, 0x0fc19dc6, 0x240ca1cc,
-    0x2de92c6f, 0x4a7484aa, 0x5cb0a9dc, 0x76f988da, 0x983e5152, 0xa831c66d, 0xb00327c8, 0xbf597fc7, 0xc6e00bf3, 0xd5a79147,
-    0x06ca6351, 0x14292967, 0x27b70a85, 0x2e1b2138, 0x4d2c6dfc, 0x53380d13, 0x650a7354, 0x766a0abb, 0x81c2c92e, 0x92722c85,
-    0xa2bfe8a1, 0xa81a664b, 0xc24b8b70, 0xc76c51a3, 0xd192e819, 0xd6990624, 0xf40e3585, 0x106aa070, 0x19a4c116, 0x1e376c08,
-    0x2748774c, 0x34b0bcb5, 0x391c0cb3, 0x4ed8aa4a, 0x5b9cca4f, 0x682e6ff3, 0x748f82ee, 0x78a5636f, 0x84c87814, 0x8cc70208,
-    0x90befffa, 0xa4506ceb, 0xbef9a3f7, 0xc67178f2};
+    0x428a2f98, 0x71374491, 0xb5c0fbcf, 0xe9b5dba5, 0x3956c25b, 0x59f111f1, 0x923f82a4, 0xab1c5ed5,
+    0xd807aa98, 0x12835b01, 0x243185be, 0x550c7dc3, 0x72be5d74, 0x80deb1fe, 0x9bdc06a7, 0xc19bf174,
+    0xe49b69c1, 0xefbe4786, 0x0fc19dc6, 0x240ca1cc, 0x2de92c6f, 0x4a7484aa, 0x5cb0a9dc, 0x76f988da,
+    0x983e5152, 0xa831c66d, 0xb00327c8, 0xbf597fc7, 0xc6e00bf3, 0xd5a79147, 0x06ca6351, 0x14292967,
+    0x27b70a85, 0x2e1b2138, 0x4d2c6dfc, 0x53380d13, 0x650a7354, 0x766a0abb, 0x81c2c92e, 0x92722c85,
+    0xa2bfe8a1, 0xa81a664b, 0xc24b8b70, 0xc76c51a3, 0xd192e819, 0xd6990624, 0xf40e3585, 0x106aa070,
+    0x19a4c116, 0x1e376c08, 0x2748774c, 0x34b0bcb5, 0x391c0cb3, 0x4ed8aa4a, 0x5b9cca4f, 0x682e6ff3,
+    0x748f82ee, 0x78a5636f, 0x84c87814, 0x8cc70208, 0x90befffa, 0xa4506ceb, 0xbef9a3f7, 0xc67178f2};
 inline std::uint32_t rotr(std::uint32_t x, int n) { return (x >> n) | (x << (32 - n)); }
 }  // namespace
 
 std::string sha256_hex(const std::string& bytes) {
-    std::uint32_t h[8] = {0x6a09e667, 0xbb67ae85, 0x3c6ef372, 0xa54ff53a, 0x510e527f, 0x9b05688c, 0x1f83d9ab, 0x5be0cd19};
+    std::uint32_t h[8] = {0x6a09e667, 0xbb67ae85, 0x3c6ef372, 0xa54ff53a,
+                          0x510e527f, 0x9b05688c, 0x1f83d9ab, 0x5be0cd19};
     std::string m = bytes;
     const std::uint64_t bits = static_cast<std::uint64_t>(bytes.size()) * 8;
     m += static_cast<char>(0x80);
@@ -48,7 +50,8 @@ std::string sha256_hex(const std::string& bytes) {
         }
         std::uint32_t a = h[0], b = h[1], c = h[2], d = h[3], e = h[4], f = h[5], g = h[6], hh = h[7];
         for (int i = 0; i < 64; ++i) {
-            const std::uint32_t t1 = hh + (rotr(e, 6) ^ rotr(e, 11) ^ rotr(e, 25)) + ((e & f) ^ (~e & g)) + kK[i] + w[i];
+            const std::uint32_t t1 =
+                hh + (rotr(e, 6) ^ rotr(e, 11) ^ rotr(e, 25)) + ((e & f) ^ (~e & g)) + kK[i] + w[i];
             const std::uint32_t t2 = (rotr(a, 2) ^ rotr(a, 13) ^ rotr(a, 22)) + ((a & b) ^ (a & c) ^ (b & c));
             hh = g, g = f, f = e, e = d + t1, d = c, c = b, b = a, a = t1 + t2;
         }
@@ -71,18 +74,21 @@ void validate(const CampaignArgs& a) {
         std::set<std::string> stems;
         for (const std::string& p : a.scenes)
             if (!stems.insert(golden_stem(p)).second)
-                throw InputError("golden: two scenes named " + quoted(golden_stem(p)) + " (their files would be the same)");
+                throw InputError("golden: two scenes named " + quoted(golden_stem(p)) +
+                                 " (their files would be the same)");
         return;
     }
     if (!a.family.empty()) family_description(a.family);
     if (!a.family.empty() && a.sweep_to < a.sweep_from) throw InputError("--sweep-to must be >= --sweep");
     if (!a.auditor.run)
-        throw InputError("audit: this build has no floating-point baselines (configure with SCALECERT_BUILD_BASELINES=ON)");
+        throw InputError(
+            "audit: this build has no floating-point baselines (configure with SCALECERT_BUILD_BASELINES=ON)");
     const std::vector<std::string> known = a.auditor.method_names();
     for (const std::string& m : a.methods)
         if (m != "grid" && std::find(known.begin(), known.end(), m) == known.end())
             throw InputError("--methods: unknown method " + quoted(m));
-    if (a.scenes.empty() && a.family.empty()) throw InputError("audit: no scenes (give SCENES or --family with --sweep)");
+    if (a.scenes.empty() && a.family.empty())
+        throw InputError("audit: no scenes (give SCENES or --family with --sweep)");
 }
 
 std::vector<Shard> plan(const CampaignArgs& a) {
@@ -129,24 +135,43 @@ double num_of(const Json& j) {
 }
 
 Json row_json(const AuditRow& r) {
-    return Json{{"scene", r.scene}, {"method", r.method}, {"eps", to_exact_string(r.eps)}, {"queries", r.queries},
-                {"false_separated", r.false_separated}, {"false_overlapping", r.false_overlapping},
-                {"seconds_per_query", num_json(r.seconds_per_query)}, {"has_curve", r.has_curve}, {"grid_n", r.grid_n},
-                {"growth_error", num_json(r.growth_error)}, {"max_junction_error", num_json(r.max_junction_error)},
-                {"seconds_per_curve", num_json(r.seconds_per_curve)}, {"exact_junctions", r.exact_junctions},
-                {"junctions_found", r.junctions_found}, {"junctions_missed", r.junctions_missed},
-                {"junctions_merged", r.junctions_merged}, {"distances", r.distances}, {"depths", r.depths}, {"closest_outside", r.closest_outside},
-                {"distance_err_median", num_json(r.distance_err_median)}, {"distance_err_max", num_json(r.distance_err_max)},
-                {"depth_err_median", num_json(r.depth_err_median)}, {"depth_err_max", num_json(r.depth_err_max)},
-                {"direction_err_max", num_json(r.direction_err_max)}, {"by_distance", [&] {
-                     Json a = Json::array();
-                     for (const AuditRow::ByDistance& b : r.by_distance) a.push_back(Json::array({b.k, b.pairs, b.wrong, b.touching}));
-                     return a;
-                 }()},
-                {"on_boundary", r.on_boundary ? Json::array({r.on_boundary->points, r.on_boundary->touching, r.on_boundary->said_separated,
-                                                             r.on_boundary->said_touching, r.on_boundary->said_overlapping,
-                                                             r.on_boundary->moved, r.on_boundary->moved_wrong})
-                                              : Json()}};
+    return Json{
+        {"scene", r.scene},
+        {"method", r.method},
+        {"eps", to_exact_string(r.eps)},
+        {"queries", r.queries},
+        {"false_separated", r.false_separated},
+        {"false_overlapping", r.false_overlapping},
+        {"seconds_per_query", num_json(r.seconds_per_query)},
+        {"has_curve", r.has_curve},
+        {"grid_n", r.grid_n},
+        {"growth_error", num_json(r.growth_error)},
+        {"max_junction_error", num_json(r.max_junction_error)},
+        {"seconds_per_curve", num_json(r.seconds_per_curve)},
+        {"exact_junctions", r.exact_junctions},
+        {"junctions_found", r.junctions_found},
+        {"junctions_missed", r.junctions_missed},
+        {"junctions_merged", r.junctions_merged},
+        {"distances", r.distances},
+        {"depths", r.depths},
+        {"closest_outside", r.closest_outside},
+        {"distance_err_median", num_json(r.distance_err_median)},
+        {"distance_err_max", num_json(r.distance_err_max)},
+        {"depth_err_median", num_json(r.depth_err_median)},
+        {"depth_err_max", num_json(r.depth_err_max)},
+        {"direction_err_max", num_json(r.direction_err_max)},
+        {"by_distance",
+         [&] {
+             Json a = Json::array();
+             for (const AuditRow::ByDistance& b : r.by_distance)
+                 a.push_back(Json::array({b.k, b.pairs, b.wrong, b.touching}));
+             return a;
+         }()},
+        {"on_boundary",
+         r.on_boundary ? Json::array({r.on_boundary->points, r.on_boundary->touching, r.on_boundary->said_separated,
+                                      r.on_boundary->said_touching, r.on_boundary->said_overlapping,
+                                      r.on_boundary->moved, r.on_boundary->moved_wrong})
+                       : Json()}};
 }
 
 AuditRow row_of(const Json& j) {
@@ -179,8 +204,9 @@ AuditRow row_of(const Json& j) {
         r.by_distance.push_back({b.at(0).get<int>(), b.at(1).get<long>(), b.at(2).get<long>(), b.at(3).get<long>()});
     if (j.contains("on_boundary") && !j.at("on_boundary").is_null()) {
         const Json& o = j.at("on_boundary");
-        r.on_boundary = AuditRow::OnBoundary{o.at(0).get<long>(), o.at(1).get<long>(), o.at(2).get<long>(), o.at(3).get<long>(),
-                                             o.at(4).get<long>(), o.at(5).get<long>(), o.at(6).get<long>()};
+        r.on_boundary =
+            AuditRow::OnBoundary{o.at(0).get<long>(), o.at(1).get<long>(), o.at(2).get<long>(), o.at(3).get<long>(),
+                                 o.at(4).get<long>(), o.at(5).get<long>(), o.at(6).get<long>()};
     }
     return r;
 }
@@ -225,11 +251,13 @@ std::vector<std::pair<std::string, std::string>> golden_files(const std::string&
     Json j = std::move(a.curve);
     fields(j);
     j["queries"] = std::move(a.queries);
-    return {{stem + ".scene.json", dump(scene_json(s))}, {stem + ".golden.json", dump(j)}, {stem + ".golden.csv", a.csv}};
+    return {
+        {stem + ".scene.json", dump(scene_json(s))}, {stem + ".golden.json", dump(j)}, {stem + ".golden.csv", a.csv}};
 }
 
-std::vector<std::pair<std::string, std::string>> golden_scene(const std::string& family, int i, std::uint64_t scene_seed,
-                                                              std::uint64_t run_seed, const Q& eps) {
+std::vector<std::pair<std::string, std::string>> golden_scene(const std::string& family, int i,
+                                                              std::uint64_t scene_seed, std::uint64_t run_seed,
+                                                              const Q& eps) {
     Rng g(scene_seed);
     const ExactScene s = make_family_scene(family, eps, g);
     return golden_files(family + "-" + std::to_string(i), s, [&](Json& j) {
@@ -286,7 +314,8 @@ std::string run_shard(const CampaignArgs& a, const Shard& s) {
         const Q eps(1, Z(1) << s.k);
         for (int i = s.first; i < s.last; ++i) {
             Rng g(scene_seed(a.seed, s.k, i));
-            auto r = a.auditor.run(a.family + "-" + std::to_string(i), make_family_scene(a.family, eps, g), eps, a.methods, a.grid, a.by_distance, a.measures);
+            auto r = a.auditor.run(a.family + "-" + std::to_string(i), make_family_scene(a.family, eps, g), eps,
+                                   a.methods, a.grid, a.by_distance, a.measures);
             rows.insert(rows.end(), r.begin(), r.end());
         }
     }
@@ -301,7 +330,8 @@ bool shard_outputs_intact(const CampaignArgs& a, const std::string& shard_text) 
     try {
         const Json j = Json::parse(shard_text);
         for (const Json& f : j.at("files"))
-            if (sha256_hex(slurp_or_empty(a.dir + "/" + f.at(0).get<std::string>())) != f.at(1).get<std::string>()) return false;
+            if (sha256_hex(slurp_or_empty(a.dir + "/" + f.at(0).get<std::string>())) != f.at(1).get<std::string>())
+                return false;
         return true;
     } catch (const std::exception&) {
         return false;
@@ -340,15 +370,16 @@ void make_output_dir(const std::string& dir) {
     std::error_code ec;
     // The folders it creates, outermost first, for the output journal (files.hpp).
     std::vector<std::string> created;
-    for (std::filesystem::path p = std::filesystem::path(dir).lexically_normal(); !p.empty() && !std::filesystem::exists(p, ec);
-         p = p.parent_path()) {
+    for (std::filesystem::path p = std::filesystem::path(dir).lexically_normal();
+         !p.empty() && !std::filesystem::exists(p, ec); p = p.parent_path()) {
         created.insert(created.begin(), p.string());
         if (p == p.parent_path()) break;
     }
     std::filesystem::create_directories(dir, ec);
     for (const std::string& c : created) journal_dir(c);
     if (ec || !std::filesystem::is_directory(dir))
-        throw InputError(dir + ": cannot create the output directory (" + (ec ? ec.message() : "not a directory") + ")");
+        throw InputError(dir + ": cannot create the output directory (" + (ec ? ec.message() : "not a directory") +
+                         ")");
 }
 
 void write_golden(const std::string& family, int count, std::uint64_t seed, const Q& eps, const std::string& dir) {
@@ -367,7 +398,9 @@ void write_golden(const std::string& family, int count, std::uint64_t seed, cons
 Json campaign_inputs(const CampaignArgs& a) {
     Json files = Json::array();
     for (const std::string& p : a.scenes) {  // (golden and audit alike)
-        if (p == "-") throw InputError("standard input cannot be a scene of a resumable run (its contents could not be checked on --resume)");
+        if (p == "-")
+            throw InputError(
+                "standard input cannot be a scene of a resumable run (its contents could not be checked on --resume)");
         for (const Json& f : reading([&] { load_scene(p, a.opt); })) files.push_back(f);
     }
     return files;

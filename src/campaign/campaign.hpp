@@ -21,8 +21,8 @@ namespace scalecert::internal {
 // baseline_auditor); a build without them has none, and its audits are refused.
 struct Auditor {
     std::function<std::vector<std::string>()> method_names;
-    std::function<std::vector<AuditRow>(const std::string&, const ExactScene&, const Q&, const std::vector<std::string>&,
-                                        const std::vector<int>&, bool, bool)>
+    std::function<std::vector<AuditRow>(const std::string&, const ExactScene&, const Q&,
+                                        const std::vector<std::string>&, const std::vector<int>&, bool, bool)>
         run;
 };
 
@@ -34,7 +34,8 @@ struct CampaignArgs {
     std::string eps_text = "1/1048576";  // golden
     std::string dir;                     // golden: the output directory
     std::vector<std::string> scenes;     // audit: scene files
-    std::vector<std::string> methods{"libccd-gjk", "libccd-mpr", "fcl-gjk-libccd", "fcl-gjk-indep", "bullet-gjk-epa", "double-envelope", "paper-tritri", "grid"};
+    std::vector<std::string> methods{"libccd-gjk",     "libccd-mpr",      "fcl-gjk-libccd", "fcl-gjk-indep",
+                                     "bullet-gjk-epa", "double-envelope", "paper-tritri",   "grid"};
     std::vector<int> grid{16, 64, 256};
     int sweep_from = 0, sweep_to = 0;  // audit: ε = 2^-k, k in [sweep_from, sweep_to], with family
     std::string out, csv;              // audit: JSON (or standard output) and CSV files
@@ -42,7 +43,7 @@ struct CampaignArgs {
     bool by_distance = false;          // audit: wrong verdicts by relative distance from the curve
     bool measures = true;              // audit: the methods' distances and depths against the exact ones
     ReadOptions opt;
-    Auditor auditor;   // audit: the methods (none without the baselines)
+    Auditor auditor;     // audit: the methods (none without the baselines)
     int shard_size = 0;  // family scenes per shard; 0: 16 for golden, 4 for audits
 };
 
@@ -53,8 +54,8 @@ void validate(const CampaignArgs& a);
 
 struct Shard {
     int index;
-    int scene_file = -1;   // audit: an index into CampaignArgs::scenes; or -1 for a family range
-    int k = 0;             // ε = 2^-k (audit sweeps); golden: 0
+    int scene_file = -1;      // audit: an index into CampaignArgs::scenes; or -1 for a family range
+    int k = 0;                // ε = 2^-k (audit sweeps); golden: 0
     int first = 0, last = 0;  // family scene indices [first, last)
     long scenes() const { return scene_file >= 0 ? 1 : last - first; }
 };
@@ -98,12 +99,12 @@ std::string golden_stem(const std::string& path);
 // Scene i of a family with its exact answers, drawn with scene_seed (campaign.hpp derives it from
 // the run's seed): the files NAME-i.scene.json, NAME-i.golden.json and NAME-i.golden.csv, by name
 // and text. The golden JSON records the run's seed and i.
-std::vector<std::pair<std::string, std::string>> golden_scene(const std::string& family, int i, std::uint64_t scene_seed,
-                                                              std::uint64_t run_seed, const Q& eps);
+std::vector<std::pair<std::string, std::string>> golden_scene(const std::string& family, int i,
+                                                              std::uint64_t scene_seed, std::uint64_t run_seed,
+                                                              const Q& eps);
 // Writes COUNT scenes of a family with their exact answers into DIR (campaign.cpp: the same
 // shards as scalecert-mpi). Byte-identical for the same arguments.
 void write_golden(const std::string& family, int count, std::uint64_t seed, const Q& eps, const std::string& dir);
-
 
 // Files in a run folder (manifest, shards) and golden outputs are read up to this size.
 constexpr std::size_t kMaxRunFileBytes = std::size_t(1) << 40;

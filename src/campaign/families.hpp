@@ -10,11 +10,11 @@ namespace scalecert::internal {
 
 // A small deterministic generator (same seed, same numbers on every platform).
 class Rng {
-public:
+  public:
     explicit Rng(std::uint64_t seed) : s_(seed * 0x9E3779B97F4A7C15ull + 1) {}
     std::uint64_t next();
     long uniform(long lo, long hi);  // inclusive
-private:
+  private:
     std::uint64_t s_;
 };
 

@@ -39,9 +39,7 @@ Json weights(const std::vector<std::pair<int, Q>>& w) {
     for (const auto& [i, q] : w) a.push_back(Json::array({i, to_exact_string(q)}));
     return a;
 }
-Json features(const std::vector<int>& f1, const std::vector<int>& f2) {
-    return Json{{"P1", f1}, {"P2", f2}};
-}
+Json features(const std::vector<int>& f1, const std::vector<int>& f2) { return Json{{"P1", f1}, {"P2", f2}}; }
 
 Json model_json(const Model& m) {
     Json j;
@@ -60,7 +58,8 @@ Json model_json(const Model& m) {
         return j;
     }
     for (int i = 0; i < 2; ++i)
-        j[names[i]] = Json{{"vertices", m.P[i].vertices.size()}, {"edges", m.P[i].edges.size()}, {"faces", m.P[i].faces.size()}};
+        j[names[i]] =
+            Json{{"vertices", m.P[i].vertices.size()}, {"edges", m.P[i].edges.size()}, {"faces", m.P[i].faces.size()}};
     j["facet_normals"] = m.stats.distinct_normals;
     j["contact_lines"] = m.lines.size();  // after dropping the certainly dominated ones
     j["edge_pairs_tested"] = m.stats.edge_pairs_tested;
@@ -229,8 +228,9 @@ Json scene_json(const ExactScene& sc) {
         for (const Vec3q& v : sc.P[i].points)
             verts.push_back(Json::array({to_exact_string(v[0]), to_exact_string(v[1]), to_exact_string(v[2])}));
         const Vec3q& sd = sc.P[i].seed;
-        s[names[i]] = Json{{"vertices", verts},
-                           {"seed", Json::array({to_exact_string(sd[0]), to_exact_string(sd[1]), to_exact_string(sd[2])})}};
+        s[names[i]] =
+            Json{{"vertices", verts},
+                 {"seed", Json::array({to_exact_string(sd[0]), to_exact_string(sd[1]), to_exact_string(sd[2])})}};
     }
     s["I1"] = Json::array({to_exact_string(sc.lo[0]), to_exact_string(sc.hi[0])});
     s["I2"] = Json::array({to_exact_string(sc.lo[1]), to_exact_string(sc.hi[1])});
@@ -436,7 +436,9 @@ void add_query_segment_json(Json& j, const Segment& s, const Q& rho1, const Q& r
     Q g = directional_gap(s, rho1, rho2);
     put(seg, "gap_fraction", g);
     seg["gap_distance_double"] = scaled_length(s.v1, s.v2, g);
-    seg["gap_meaning"] = g > 0 ? "gap along the segment" : g < 0 ? "penetration along the segment" : "contact on the segment";
+    seg["gap_meaning"] = g > 0   ? "gap along the segment"
+                         : g < 0 ? "penetration along the segment"
+                                 : "contact on the segment";
     j["segment"] = seg;
 }
 

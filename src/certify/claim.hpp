@@ -30,24 +30,24 @@ struct CurveSegment {
 };
 struct ClaimedCurve {
     std::vector<CurveSegment> segments;
-    bool as_vertices = true;                  // written as a polyline ("vertices"), else "pieces"
-    std::vector<std::pair<Q, Q>> switches;    // its switch points (listed, or where its slope changes)
-    bool switches_listed = false;             // given as "switch_points"
+    bool as_vertices = true;                // written as a polyline ("vertices"), else "pieces"
+    std::vector<std::pair<Q, Q>> switches;  // its switch points (listed, or where its slope changes)
+    bool switches_listed = false;           // given as "switch_points"
 };
 
 // One claim, every number exact: the fields its type uses.
 struct TypedClaim {
     ClaimType type = ClaimType::Verdict;
-    Q rho1 = 1, rho2 = 1;                     // all but Growth and Curve
-    Claimed verdict = Claimed::Separated;     // Verdict
-    Vec3q normal{};                           // Plane (nonzero)
-    std::optional<Q> offset;                  // Plane
-    Vec3q point{};                            // Witness
-    Q value = 0;                              // Growth, Distance, Depth
+    Q rho1 = 1, rho2 = 1;                         // all but Growth and Curve
+    Claimed verdict = Claimed::Separated;         // Verdict
+    Vec3q normal{};                               // Plane (nonzero)
+    std::optional<Q> offset;                      // Plane
+    Vec3q point{};                                // Witness
+    Q value = 0;                                  // Growth, Distance, Depth
     std::optional<std::array<Vec3q, 2>> closest;  // Distance: on P1, on P2
-    std::optional<Vec3q> direction;           // Depth (nonzero)
-    std::optional<std::string> contact;       // SwitchPoint
-    std::shared_ptr<const ClaimedCurve> curve;  // Curve
+    std::optional<Vec3q> direction;               // Depth (nonzero)
+    std::optional<std::string> contact;           // SwitchPoint
+    std::shared_ptr<const ClaimedCurve> curve;    // Curve
     // A field the program wrote no answer in (CLAIMS.md, "Outputs that are no answer"): a NaN, an
     // infinity or a null where a number is due, or a zero normal or direction. The claim is
     // judged wrong; that field's value above is not used.
@@ -69,8 +69,8 @@ struct Judged {
     // decides it (−1 when separated).
     std::optional<Verdict> exact_verdict;
     int part1 = -1, part2 = -1;
-    Q rho2_minus_curve;                       // Verdict on convex objects: ρ2 − f(ρ1)
-    Q exact;                                  // Growth: ρ*; CurvePoint: f(ρ1)
+    Q rho2_minus_curve;  // Verdict on convex objects: ρ2 − f(ρ1)
+    Q exact;             // Growth: ρ*; CurvePoint: f(ρ1)
     // Distance and Depth: the exact squared value (Depth: none when separated), the exact closest
     // points and the pair they lie in (parts), the depth's exact direction.
     std::optional<Q> exact_squared;
@@ -79,9 +79,9 @@ struct Judged {
     // Witness and the closest points: in P1, in P2; on parts, the part holding each (−1: none).
     bool in1 = false, in2 = false;
     int in_part1 = -1, in_part2 = -1;
-    Q closest_squared;                        // |q − p|² of the claimed closest points
-    Q along;                                  // Depth: the squared depth along the claimed direction
-    Q c1, c2;                                 // Plane: max over P1(ρ1) of n·x, min over P2(ρ2)
+    Q closest_squared;  // |q − p|² of the claimed closest points
+    Q along;            // Depth: the squared depth along the claimed direction
+    Q c1, c2;           // Plane: max over P1(ρ1) of n·x, min over P2(ρ2)
     // SwitchPoint: the exact switch point matched (or the nearest in ρ1), none when the proved
     // range has none; that range (whole: the whole curve).
     std::optional<ExactSwitch> nearest;
@@ -89,8 +89,13 @@ struct Judged {
     Q window_lo;
     std::optional<Q> window_hi;
     // Curve: the errors and the switch points' and contacts' faults (CLAIMS.md, "Curve claims").
-    struct Misplaced { Q exact_rho1, exact_rho2, claimed_rho1, claimed_rho2; };
-    struct WrongContact { Q rho1; std::string claimed, exact; };
+    struct Misplaced {
+        Q exact_rho1, exact_rho2, claimed_rho1, claimed_rho2;
+    };
+    struct WrongContact {
+        Q rho1;
+        std::string claimed, exact;
+    };
     bool exact_positive = true;
     Q max_vertical, max_vertical_at, max_horizontal;
     std::vector<std::pair<Q, Q>> missed, extra;
@@ -117,7 +122,7 @@ struct Tolerance {
 
 // The rules on two convex objects: every type.
 class ConvexRules {
-public:
+  public:
     ConvexRules(const ClaimModels& models, const Q& tolerance);
     ~ConvexRules();
     Judged judge(const TypedClaim& c, Proof* proof = nullptr);
@@ -126,7 +131,7 @@ public:
     long distance_fallbacks() const;
     long depth_fallbacks() const;
 
-private:
+  private:
     struct Impl;
     std::unique_ptr<Impl> impl_;
 };
@@ -135,13 +140,13 @@ private:
 // Witness and Distance (the least over the part pairs), at any (ρ1, ρ2) > 0.
 class CompoundJudge;
 class PartsRules {
-public:
+  public:
     PartsRules(CompoundJudge& judge, const Q& tolerance) : judge_(judge), tol_{tolerance} {}
     // Whether the type is judged on parts.
     static bool takes(ClaimType t);
     Judged judge(const TypedClaim& c, Proof* proof = nullptr);
 
-private:
+  private:
     CompoundJudge& judge_;
     Tolerance tol_;
 };

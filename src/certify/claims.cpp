@@ -37,8 +37,10 @@ std::string num(const Q& q, int digits = 6) { return to_exact_string(q) + " (~" 
 // Is x in P_i(ρ) on the exact polyhedra, with its proof.
 bool hull_member(const Model& m, int i, const Q& rho, const Vec3q& x, Json* proof) {
     bool inside = false;
-    if (proof) *proof = membership_proof(m, i, rho, x, &inside);
-    else inside = contains(m, i, rho, x);
+    if (proof)
+        *proof = membership_proof(m, i, rho, x, &inside);
+    else
+        inside = contains(m, i, rho, x);
     return inside;
 }
 
@@ -50,7 +52,7 @@ namespace {
 // number exact (a JSON number is the double it was read as unless exact_decimals). On objects
 // made of parts (`parts`) only the types PartsRules takes.
 class ClaimReader {
-public:
+  public:
     ClaimReader(const std::string& name, bool exact_decimals, bool parts)
         : name_(name), exact_decimals_(exact_decimals), parts_(parts) {}
 
@@ -61,13 +63,18 @@ public:
         const std::optional<ClaimType> t = type_of(kind);
         if (parts_ && (!t || !PartsRules::takes(*t))) {
             if (t)
-                fail("kind", quoted(kind) + " is a claim on two convex objects; on objects made of parts certify-fp takes verdict, "
-                                            "separating_plane, witness_point and distance (the region and its growth set: scalecert region)");
-            fail("kind", "unknown kind " + quoted(kind) + " (on objects made of parts: verdict, separating_plane, witness_point, distance)");
+                fail("kind",
+                     quoted(kind) +
+                         " is a claim on two convex objects; on objects made of parts certify-fp takes verdict, "
+                         "separating_plane, witness_point and distance (the region and its growth set: scalecert "
+                         "region)");
+            fail("kind", "unknown kind " + quoted(kind) +
+                             " (on objects made of parts: verdict, separating_plane, witness_point, distance)");
         }
         if (!t)
             fail("kind", "unknown kind " + quoted(kind) +
-                             " (verdict, curve, curve_point, switch_point, growth_distance, separating_plane, witness_point, distance, "
+                             " (verdict, curve, curve_point, switch_point, growth_distance, separating_plane, "
+                             "witness_point, distance, "
                              "penetration_depth)");
         TypedClaim c;
         c.type = *t;
@@ -77,7 +84,8 @@ public:
             pair_at(claim, c);
             const std::string v = str(claim, "verdict");
             const std::optional<Claimed> cv = claimed_of(v);
-            if (!cv) fail("verdict", "unknown verdict " + quoted(v) + " (separated, touching, overlapping, intersecting)");
+            if (!cv)
+                fail("verdict", "unknown verdict " + quoted(v) + " (separated, touching, overlapping, intersecting)");
             c.verdict = *cv;
             break;
         }
@@ -90,7 +98,8 @@ public:
             only(claim, {"kind", "rho1", "rho2", "contact"});
             for (const char* k : {"rho1", "rho2"}) {
                 Q& r = k[3] == '1' ? c.rho1 : c.rho2;
-                if (answer(need(claim, k), k, c, r) && sgn(r) <= 0) fail(k, "scalings must be > 0 (got " + to_exact_string(r) + ")");
+                if (answer(need(claim, k), k, c, r) && sgn(r) <= 0)
+                    fail(k, "scalings must be > 0 (got " + to_exact_string(r) + ")");
             }
             c.contact = label(claim);
             break;
@@ -120,9 +129,12 @@ public:
             answer(need(claim, "value"), "value", c, c.value);
             if (const JNode* cl = claim.find("closest")) {
                 std::array<Vec3q, 2>& pq = c.closest.emplace();
-                if (cl->kind == JNode::Null) set_no_answer(c, "closest", "not two points");
-                else if (cl->kind != JNode::Array || cl->items.size() != 2) fail("closest", "expected [point on P1, point on P2]");
-                else answer_point(cl->items[0], "closest", c, pq[0]) && answer_point(cl->items[1], "closest", c, pq[1]);
+                if (cl->kind == JNode::Null)
+                    set_no_answer(c, "closest", "not two points");
+                else if (cl->kind != JNode::Array || cl->items.size() != 2)
+                    fail("closest", "expected [point on P1, point on P2]");
+                else
+                    answer_point(cl->items[0], "closest", c, pq[0]) && answer_point(cl->items[1], "closest", c, pq[1]);
             }
             break;
         case ClaimType::Depth:
@@ -137,14 +149,15 @@ public:
         return c;
     }
 
-private:
+  private:
     std::string name_, where_;
     bool exact_decimals_, parts_;
 
     static bool is_zero(const Vec3q& v) { return sgn(v[0]) == 0 && sgn(v[1]) == 0 && sgn(v[2]) == 0; }
     static std::optional<ClaimType> type_of(const std::string& kind) {
-        for (ClaimType t : {ClaimType::Verdict, ClaimType::Curve, ClaimType::CurvePoint, ClaimType::SwitchPoint, ClaimType::Growth,
-                            ClaimType::Plane, ClaimType::Witness, ClaimType::Distance, ClaimType::Depth})
+        for (ClaimType t :
+             {ClaimType::Verdict, ClaimType::Curve, ClaimType::CurvePoint, ClaimType::SwitchPoint, ClaimType::Growth,
+              ClaimType::Plane, ClaimType::Witness, ClaimType::Distance, ClaimType::Depth})
             if (kind == type_name(t)) return t;
         return std::nullopt;
     }
@@ -166,7 +179,8 @@ private:
         return n.text;
     }
     Q number(const JNode& n, const std::string& key) const {
-        if (n.kind != JNode::Number && n.kind != JNode::String) fail(key, "expected a number or a string such as \"3/7\"");
+        if (n.kind != JNode::Number && n.kind != JNode::String)
+            fail(key, "expected a number or a string such as \"3/7\"");
         const bool as_double = !exact_decimals_ && n.kind == JNode::Number;
         Q q;
         try {
@@ -180,7 +194,8 @@ private:
     // A number the program computed, into q: a non-number there (null, NaN, ±Infinity) makes the
     // claim no answer (false returned, q untouched).
     static bool non_number(const JNode& n) {
-        return n.kind == JNode::Null || (n.kind == JNode::Number && (n.text == "NaN" || n.text == "Infinity" || n.text == "-Infinity"));
+        return n.kind == JNode::Null ||
+               (n.kind == JNode::Number && (n.text == "NaN" || n.text == "Infinity" || n.text == "-Infinity"));
     }
     static void set_no_answer(TypedClaim& c, const std::string& key, const char* reason) {
         if (!c.no_answer.empty()) return;  // the first one found is named
@@ -197,7 +212,8 @@ private:
     }
     // The same for a point: null, or any coordinate a non-number.
     bool answer_point(const JNode& n, const std::string& key, TypedClaim& c, Vec3q& p) const {
-        if (n.kind == JNode::Null || (n.kind == JNode::Array && std::any_of(n.items.begin(), n.items.end(), non_number))) {
+        if (n.kind == JNode::Null ||
+            (n.kind == JNode::Array && std::any_of(n.items.begin(), n.items.end(), non_number))) {
             if (n.kind == JNode::Null || n.items.size() == 3) {
                 set_no_answer(c, key, "not a number");
                 return false;
@@ -243,7 +259,8 @@ private:
         if ((verts != nullptr) == (pieces != nullptr)) fail("", "give \"vertices\" (a polyline) or \"pieces\"");
         k.as_vertices = verts != nullptr;
         if (verts) {
-            if (verts->kind != JNode::Array || verts->items.size() < 2) fail("vertices", "expected at least 2 [rho1, rho2] pairs");
+            if (verts->kind != JNode::Array || verts->items.size() < 2)
+                fail("vertices", "expected at least 2 [rho1, rho2] pairs");
             std::vector<std::pair<Q, Q>> v;
             for (const JNode& p : verts->items) v.push_back(scaling_pair(p, "vertices"));
             for (size_t i = 0; i + 1 < v.size(); ++i) {
@@ -265,7 +282,8 @@ private:
                 if (r.kind != JNode::Array || r.items.size() != 2) fail("pieces.rho1", "expected [from, to]");
                 const Q x0 = scaling(r.items[0], "pieces.rho1"), x1 = scaling(r.items[1], "pieces.rho1");
                 if (!(x0 < x1)) fail("pieces.rho1", "from < to is required");
-                if (!segs.empty() && x0 != segs.back().x1) fail("pieces.rho1", "each piece must start where the one before ends");
+                if (!segs.empty() && x0 != segs.back().x1)
+                    fail("pieces.rho1", "each piece must start where the one before ends");
                 const Q a = field(p, "slope"), b = field(p, "intercept");
                 const Q y0 = a * x0 + b, y1 = a * x1 + b;
                 if (sgn(y0) <= 0 || sgn(y1) <= 0) fail("pieces", "the piece reaches rho2 <= 0 (scalings must be > 0)");
@@ -280,7 +298,8 @@ private:
             const Q lo = segs.front().x0, hi = segs.back().x1;
             for (const JNode& p : sw->items) {
                 const auto [x, y] = scaling_pair(p, "switch_points");
-                if (x < lo || x > hi) fail("switch_points", "rho1 = " + to_exact_string(x) + " lies outside the claimed range");
+                if (x < lo || x > hi)
+                    fail("switch_points", "rho1 = " + to_exact_string(x) + " lies outside the claimed range");
                 k.switches.push_back({x, y});
             }
         }
@@ -296,8 +315,10 @@ void errors(Json& o, const Q& claimed, const Q& exact) {
     put_exact(o, "exact", exact);
     const Q err = abs(Q(claimed - exact));
     put_exact(o, "abs_error", err);
-    if (sgn(exact) != 0) put_exact(o, "rel_error", err / abs(exact));
-    else o["rel_error"] = nullptr;
+    if (sgn(exact) != 0)
+        put_exact(o, "rel_error", err / abs(exact));
+    else
+        o["rel_error"] = nullptr;
 }
 // For a value whose exact square E is known: the error of the squares exactly, and |c − √E|
 // and its relative size as MPFR-rounded doubles.
@@ -323,14 +344,18 @@ void describe(const TypedClaim& c, const Judged& g, bool parts, Json& o, std::st
     };
     if (!c.no_answer.empty()) {
         // The scaling pair it was asked at, where that is a question and not the answer.
-        const bool asked = c.type != ClaimType::Growth && c.type != ClaimType::Curve && c.type != ClaimType::SwitchPoint;
-        if (asked && c.type != ClaimType::CurvePoint) rhos();
-        else if (c.type == ClaimType::CurvePoint) put_exact(o, "rho1", c.rho1);
+        const bool asked =
+            c.type != ClaimType::Growth && c.type != ClaimType::Curve && c.type != ClaimType::SwitchPoint;
+        if (asked && c.type != ClaimType::CurvePoint)
+            rhos();
+        else if (c.type == ClaimType::CurvePoint)
+            put_exact(o, "rho1", c.rho1);
         o["no_answer"] = c.no_answer;
         o["reason"] = c.no_answer_reason;
-        text = std::string(type_name(c.type)) +
-               (asked ? c.type == ClaimType::CurvePoint ? " at rho1 = " + num(c.rho1) : " at " + at(c) : std::string()) + ": " +
-               c.no_answer + " is " + c.no_answer_reason + ": no answer";
+        text =
+            std::string(type_name(c.type)) +
+            (asked ? c.type == ClaimType::CurvePoint ? " at rho1 = " + num(c.rho1) : " at " + at(c) : std::string()) +
+            ": " + c.no_answer + " is " + c.no_answer_reason + ": no answer";
         return;
     }
     switch (c.type) {
@@ -345,7 +370,8 @@ void describe(const TypedClaim& c, const Judged& g, bool parts, Json& o, std::st
             o["exact"] = verdict_name(*g.exact_verdict);
             put_exact(o, "rho2_minus_curve", g.rho2_minus_curve);
         }
-        text = "verdict at " + at(c) + ": claimed " + claimed_name(c.verdict) + ", exact " + verdict_name(*g.exact_verdict);
+        text = "verdict at " + at(c) + ": claimed " + claimed_name(c.verdict) + ", exact " +
+               verdict_name(*g.exact_verdict);
         return;
     case ClaimType::Growth:
         errors(o, c.value, g.exact);
@@ -356,7 +382,8 @@ void describe(const TypedClaim& c, const Judged& g, bool parts, Json& o, std::st
         const std::string head = "switch point " + at(c);
         if (!g.nearest) {
             o["nearest"] = nullptr;
-            if (g.window_whole) text = head + ": the exact curve has no switch point at rho1, rho2 > 0";
+            if (g.window_whole)
+                text = head + ": the exact curve has no switch point at rho1, rho2 > 0";
             else
                 text = head + ": the exact curve has no switch point from rho1 = " + num(g.window_lo) +
                        (g.window_hi ? " to " + num(*g.window_hi) : std::string(" on")) + " (the range the walk proved)";
@@ -375,7 +402,8 @@ void describe(const TypedClaim& c, const Judged& g, bool parts, Json& o, std::st
         o["rho2_error"] = e2;
         o["contact_right"] = g.contact_right ? Json(*g.contact_right) : Json(nullptr);
         text = "switch point (" + num(c.rho1) + ", " + num(c.rho2) + (c.contact ? ", " + *c.contact : "") +
-               (g.matched ? "): matches exact (" : "): nearest exact (") + num(b.rho1) + ", " + num(b.rho2) + ", " + b.label + ")";
+               (g.matched ? "): matches exact (" : "): nearest exact (") + num(b.rho1) + ", " + num(b.rho2) + ", " +
+               b.label + ")";
         return;
     }
     case ClaimType::CurvePoint:
@@ -416,10 +444,10 @@ void describe(const TypedClaim& c, const Judged& g, bool parts, Json& o, std::st
         }
         o["wrong_contacts"] = wl;
         const size_t n = c.curve->segments.size();
-        text = "curve of " + std::to_string(n) + (n == 1 ? " segment" : " segments") + ": max vertical error " + num(g.max_vertical) +
-               ", max horizontal error " + num(g.max_horizontal) + ", switch points missed " + std::to_string(g.missed.size()) +
-               ", extra " + std::to_string(g.extra.size()) + ", misplaced " + std::to_string(g.misplaced.size()) +
-               ", wrong contacts " + std::to_string(g.wrong_contacts.size()) +
+        text = "curve of " + std::to_string(n) + (n == 1 ? " segment" : " segments") + ": max vertical error " +
+               num(g.max_vertical) + ", max horizontal error " + num(g.max_horizontal) + ", switch points missed " +
+               std::to_string(g.missed.size()) + ", extra " + std::to_string(g.extra.size()) + ", misplaced " +
+               std::to_string(g.misplaced.size()) + ", wrong contacts " + std::to_string(g.wrong_contacts.size()) +
                (g.exact_positive ? "" : ", and the exact curve reaches rho2 <= 0 in the claimed range");
         return;
     }
@@ -439,11 +467,13 @@ void describe(const TypedClaim& c, const Judged& g, bool parts, Json& o, std::st
         if (parts) {
             o["in_P1_part"] = part_or_false(g.in_part1);
             o["in_P2_part"] = part_or_false(g.in_part2);
-            text = "witness point at " + at(c) + ": in P1 " + part_or_no(g.in_part1) + ", in P2 " + part_or_no(g.in_part2);
+            text =
+                "witness point at " + at(c) + ": in P1 " + part_or_no(g.in_part1) + ", in P2 " + part_or_no(g.in_part2);
         } else {
             o["in_P1"] = g.in1;
             o["in_P2"] = g.in2;
-            text = "witness point at " + at(c) + ": in P1 " + (g.in1 ? "yes" : "NO") + ", in P2 " + (g.in2 ? "yes" : "NO");
+            text =
+                "witness point at " + at(c) + ": in P1 " + (g.in1 ? "yes" : "NO") + ", in P2 " + (g.in2 ? "yes" : "NO");
         }
         o["exact_verdict"] = verdict_name(*g.exact_verdict);
         return;
@@ -454,8 +484,8 @@ void describe(const TypedClaim& c, const Judged& g, bool parts, Json& o, std::st
         put_point(o, "exact_closest_P2", g.exact_p2);
         if (parts) o["exact_pair"] = Json::array({g.part1, g.part2});
         o["value_right"] = *g.value_right;
-        text = "distance at " + at(c) + ": claimed " + num(c.value) + ", exact squared " + num(*g.exact_squared) + " (distance ~" +
-               dbl(sqrt_minus_rn(*g.exact_squared, Q(0))) +
+        text = "distance at " + at(c) + ": claimed " + num(c.value) + ", exact squared " + num(*g.exact_squared) +
+               " (distance ~" + dbl(sqrt_minus_rn(*g.exact_squared, Q(0))) +
                (parts ? ", parts " + std::to_string(g.part1) + " and " + std::to_string(g.part2) : std::string()) + ")";
         if (c.closest) {
             if (parts) {
@@ -478,11 +508,11 @@ void describe(const TypedClaim& c, const Judged& g, bool parts, Json& o, std::st
             return;
         }
         errors_sq(o, c.value, *g.exact_squared);
-        o["exact_direction"] =
-            Json::array({g.exact_direction[0].get_str(), g.exact_direction[1].get_str(), g.exact_direction[2].get_str()});
+        o["exact_direction"] = Json::array(
+            {g.exact_direction[0].get_str(), g.exact_direction[1].get_str(), g.exact_direction[2].get_str()});
         o["value_right"] = *g.value_right;
-        text = "penetration depth at " + at(c) + ": claimed " + num(c.value) + ", exact squared " + num(*g.exact_squared) +
-               " (depth ~" + dbl(sqrt_minus_rn(*g.exact_squared, Q(0))) + ")";
+        text = "penetration depth at " + at(c) + ": claimed " + num(c.value) + ", exact squared " +
+               num(*g.exact_squared) + " (depth ~" + dbl(sqrt_minus_rn(*g.exact_squared, Q(0))) + ")";
         if (c.direction) {
             put_exact(o, "depth_squared_along_direction", g.along);
             o["direction_right"] = *g.direction_right;
@@ -504,8 +534,10 @@ Q read_number(const std::string& t, bool exact_decimals, const std::string& wher
     }
 }
 // A line's RHO1 RHO2, each > 0; a refusal names the one at fault.
-std::pair<Q, Q> read_scalings(const std::string& a, const std::string& b, bool exact_decimals, const std::string& where) {
-    const Q r1 = read_number(a, exact_decimals, where + ": rho1"), r2 = read_number(b, exact_decimals, where + ": rho2");
+std::pair<Q, Q> read_scalings(const std::string& a, const std::string& b, bool exact_decimals,
+                              const std::string& where) {
+    const Q r1 = read_number(a, exact_decimals, where + ": rho1"),
+            r2 = read_number(b, exact_decimals, where + ": rho2");
     if (sgn(r1) <= 0) throw InputError(where + ": rho1: scalings must be > 0 (got " + to_exact_string(r1) + ")");
     if (sgn(r2) <= 0) throw InputError(where + ": rho2: scalings must be > 0 (got " + to_exact_string(r2) + ")");
     return {r1, r2};
@@ -523,8 +555,9 @@ bool non_number_word(std::string w) {
 TypedClaim read_line(const std::vector<std::string>& w, bool exact_decimals, bool parts, const std::string& where) {
     TypedClaim c;
     if (parts && (w.size() != 3 || w[0] == "curve"))
-        throw InputError(where + ": expected 'RHO1 RHO2 VERDICT' (on objects made of parts, verdict lines only: a curve and a "
-                                 "growth distance are claims on convex objects)");
+        throw InputError(where +
+                         ": expected 'RHO1 RHO2 VERDICT' (on objects made of parts, verdict lines only: a curve and a "
+                         "growth distance are claims on convex objects)");
     if (w[0] == "curve" && w.size() == 3) {
         c.type = ClaimType::CurvePoint;
         if (non_number_word(w[2])) {  // ρ2 is the program's answer
@@ -545,7 +578,9 @@ TypedClaim read_line(const std::vector<std::string>& w, bool exact_decimals, boo
         c.type = ClaimType::Verdict;
         std::tie(c.rho1, c.rho2) = read_scalings(w[0], w[1], exact_decimals, where);
         const std::optional<Claimed> v = claimed_of(w[2]);
-        if (!v) throw InputError(where + ": unknown verdict " + quoted(w[2]) + " (separated, touching, overlapping, intersecting)");
+        if (!v)
+            throw InputError(where + ": unknown verdict " + quoted(w[2]) +
+                             " (separated, touching, overlapping, intersecting)");
         c.verdict = *v;
     } else {
         throw InputError(where + ": expected 'RHO1 RHO2 VERDICT', 'curve RHO1 RHO2' or 'growth RHO'");
@@ -554,14 +589,15 @@ TypedClaim read_line(const std::vector<std::string>& w, bool exact_decimals, boo
 }
 
 // A line's report object (beside its line number) and text; w: the line's words as written.
-void describe_line(const TypedClaim& c, const Judged& g, bool parts, const std::vector<std::string>& w, Json& o, std::string& text) {
+void describe_line(const TypedClaim& c, const Judged& g, bool parts, const std::vector<std::string>& w, Json& o,
+                   std::string& text) {
     if (!c.no_answer.empty()) {
         o["claim"] = c.type == ClaimType::Growth ? "growth" : "curve";
         if (c.type == ClaimType::CurvePoint) put_exact(o, "rho1", c.rho1);
         o["no_answer"] = c.no_answer;
         o["reason"] = c.no_answer_reason;
-        text = (c.type == ClaimType::Growth ? "growth distance " + w[1] : "curve point (" + w[1] + ", " + w[2] + ")") + ": " + c.no_answer +
-               " is " + c.no_answer_reason + ": no answer";
+        text = (c.type == ClaimType::Growth ? "growth distance " + w[1] : "curve point (" + w[1] + ", " + w[2] + ")") +
+               ": " + c.no_answer + " is " + c.no_answer_reason + ": no answer";
         return;
     }
     switch (c.type) {
@@ -571,7 +607,8 @@ void describe_line(const TypedClaim& c, const Judged& g, bool parts, const std::
         put_exact(o, "rho2", c.rho2);
         put_exact(o, "curve_rho2", g.exact);
         put_exact(o, "rho2_minus_curve", c.rho2 - g.exact);
-        text = "curve point (" + w[1] + ", " + w[2] + "): exact curve at rho1 is " + num(g.exact, 17) + ", off by " + num(c.rho2 - g.exact, 17);
+        text = "curve point (" + w[1] + ", " + w[2] + "): exact curve at rho1 is " + num(g.exact, 17) + ", off by " +
+               num(c.rho2 - g.exact, 17);
         return;
     case ClaimType::Growth:
         o["claim"] = "growth";
@@ -590,7 +627,8 @@ void describe_line(const TypedClaim& c, const Judged& g, bool parts, const std::
             text = "(" + num(c.rho1, 17) + ", " + num(c.rho2, 17) + ") claimed " + v + ": exact " + e;
         } else {
             put_exact(o, "rho2_minus_curve", g.rho2_minus_curve);
-            text = "(" + w[0] + ", " + w[1] + ") claimed " + v + ": exact " + e + ", rho2 - curve = " + num(g.rho2_minus_curve, 17);
+            text = "(" + w[0] + ", " + w[1] + ") claimed " + v + ": exact " + e +
+                   ", rho2 - curve = " + num(g.rho2_minus_curve, 17);
         }
         return;
     }
@@ -602,8 +640,8 @@ void describe_line(const TypedClaim& c, const Judged& g, bool parts, const std::
 // The report of n claims, `bad` of them wrong: JSON {"claims", "tolerance" (JSON claims only),
 // "right", "wrong"}, or the claims' text lines and a summary line.
 // (fallbacks >= 0: JSON claims' "exact_fallbacks", how often the exact fallback ran.)
-std::string report(Json arr, const std::string& text, long n, long bad, bool json, const Q* tolerance, long* wrong, long* count,
-                   long fallbacks = -1, long fallbacks_depth = 0) {
+std::string report(Json arr, const std::string& text, long n, long bad, bool json, const Q* tolerance, long* wrong,
+                   long* count, long fallbacks = -1, long fallbacks_depth = 0) {
     if (wrong) *wrong = bad;
     if (count) *count = n;
     if (json) {
@@ -615,7 +653,8 @@ std::string report(Json arr, const std::string& text, long n, long bad, bool jso
         if (fallbacks >= 0) j["exact_fallbacks"] = Json{{"distance", fallbacks}, {"depth", fallbacks_depth}};
         return dump(j);
     }
-    return text + "claims: " + std::to_string(n) + ", right: " + std::to_string(n - bad) + ", wrong: " + std::to_string(bad) + "\n";
+    return text + "claims: " + std::to_string(n) + ", right: " + std::to_string(n - bad) +
+           ", wrong: " + std::to_string(bad) + "\n";
 }
 
 Json entry(size_t index, Proof&& p, bool right) {
@@ -641,10 +680,12 @@ JNode claims_root(const std::string& claims, const std::string& name) {
 }
 
 bool is_json(const std::string& claims, const ClaimOptions& opt, const std::string& name) {
-    if (sgn(opt.tolerance) < 0) throw InputError("tolerance: must be >= 0 (got " + to_exact_string(opt.tolerance) + ")");
+    if (sgn(opt.tolerance) < 0)
+        throw InputError("tolerance: must be >= 0 (got " + to_exact_string(opt.tolerance) + ")");
     const size_t first = claims.find_first_not_of(" \t\r\n");
     if (first != std::string::npos && claims[first] == '{') return true;
-    if (sgn(opt.tolerance) != 0) throw InputError(name + ": a tolerance applies to JSON claims (scalecert-claims-1) only");
+    if (sgn(opt.tolerance) != 0)
+        throw InputError(name + ": a tolerance applies to JSON claims (scalecert-claims-1) only");
     return false;
 }
 
@@ -656,8 +697,8 @@ struct Run {
     long n = 0, bad = 0;
 };
 template <class Rules>
-Run run_claims(Rules& rules, const std::string& claims, const std::string& name, const ClaimOptions& opt, bool json, bool parts,
-               bool prove) {
+Run run_claims(Rules& rules, const std::string& claims, const std::string& name, const ClaimOptions& opt, bool json,
+               bool parts, bool prove) {
     Run r;
     auto one = [&](const TypedClaim& c, size_t index, Json& o, auto&& describe_it) {
         Proof p;
@@ -695,29 +736,31 @@ Run run_claims(Rules& rules, const std::string& claims, const std::string& name,
         Json o;
         o["line"] = no;
         // The certificate's entries are numbered by line.
-        one(c, static_cast<size_t>(no), o, [&](const Judged& g, std::string& text) { describe_line(c, g, parts, w, o, text); });
+        one(c, static_cast<size_t>(no), o,
+            [&](const Judged& g, std::string& text) { describe_line(c, g, parts, w, o, text); });
     }
     return r;
 }
 }  // namespace
 
-std::string certify_fp(const ClaimModels& models, const std::string& claims, const std::string& name, const ClaimOptions& opt,
-                       long* wrong, long* count, std::string* certificate) {
+std::string certify_fp(const ClaimModels& models, const std::string& claims, const std::string& name,
+                       const ClaimOptions& opt, long* wrong, long* count, std::string* certificate) {
     const bool json = is_json(claims, opt, name);
     ConvexRules rules(models, opt.tolerance);
     const Run r = run_claims(rules, claims, name, opt, json, false, certificate != nullptr);
     if (certificate) *certificate = judgements_text(models.document(), opt.tolerance, std::move(r.entries));
     if (!json) return report(std::move(r.arr), r.text, r.n, r.bad, opt.json, nullptr, wrong, count);
-    return report(std::move(r.arr), r.text, r.n, r.bad, opt.json, &opt.tolerance, wrong, count, rules.distance_fallbacks(),
-                  rules.depth_fallbacks());
+    return report(std::move(r.arr), r.text, r.n, r.bad, opt.json, &opt.tolerance, wrong, count,
+                  rules.distance_fallbacks(), rules.depth_fallbacks());
 }
 
-std::string certify_fp(CompoundJudge& judge, const std::string& claims, const std::string& name, const ClaimOptions& opt, long* wrong,
-                       long* count, std::string* certificate) {
+std::string certify_fp(CompoundJudge& judge, const std::string& claims, const std::string& name,
+                       const ClaimOptions& opt, long* wrong, long* count, std::string* certificate) {
     const bool json = is_json(claims, opt, name);
     PartsRules rules(judge, opt.tolerance);
     const Run r = run_claims(rules, claims, name, opt, json, true, certificate != nullptr);
-    if (certificate) *certificate = compound_judgements_text(judge.scene(), json ? opt.tolerance : Q(0), std::move(r.entries));
+    if (certificate)
+        *certificate = compound_judgements_text(judge.scene(), json ? opt.tolerance : Q(0), std::move(r.entries));
     return report(std::move(r.arr), r.text, r.n, r.bad, opt.json, json ? &opt.tolerance : nullptr, wrong, count);
 }
 
@@ -730,10 +773,14 @@ ClaimModels ClaimModels::of(const HullModel& m, const TouchingCurve& c) {
             [&c] { return c.growth.value; },
             [points]() -> const PointSets& { return *points; },
             [&m]() -> const Model& { return m; },
-            [&m, &c](const Q& r1, const Q& r2) { return std::pair<const Model*, QueryAnswer>{&m, query(m, c, r1, r2, true)}; },
+            [&m, &c](const Q& r1, const Q& r2) {
+                return std::pair<const Model*, QueryAnswer>{&m, query(m, c, r1, r2, true)};
+            },
             [&m, &c] { return scalecert::internal::growth_proof(m, c); },
             [&m]() -> const Model& { return m; },
-            [&m, &c](const Q&, const Q&) { return ClaimModels::Curve{&m, &c, Q(0), std::nullopt}; },
+            [&m, &c](const Q&, const Q&) {
+                return ClaimModels::Curve{&m, &c, Q(0), std::nullopt};
+            },
             [&m](int i, const Q& rho, const Vec3q& x, Json* proof) { return hull_member(m, i, rho, x, proof); }};
 }
 

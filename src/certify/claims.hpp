@@ -67,20 +67,20 @@ struct ClaimModels {
 bool hull_member(const Model& m, int i, const Q& rho, const Vec3q& x, Json* proof);
 // (*count, when given: the number of claims. *certificate, when given: the judgements
 // certificate, kind "judgements" (judgements.hpp, FORMAT.md): the proof of every judgement.)
-std::string certify_fp(const ClaimModels& models, const std::string& claims, const std::string& name, const ClaimOptions& opt,
-                       long* wrong, long* count = nullptr, std::string* certificate = nullptr);
-inline std::string certify_fp(const HullModel& m, const TouchingCurve& c, const std::string& claims, const std::string& name,
-                              const ClaimOptions& opt, long* wrong) {
+std::string certify_fp(const ClaimModels& models, const std::string& claims, const std::string& name,
+                       const ClaimOptions& opt, long* wrong, long* count = nullptr, std::string* certificate = nullptr);
+inline std::string certify_fp(const HullModel& m, const TouchingCurve& c, const std::string& claims,
+                              const std::string& name, const ClaimOptions& opt, long* wrong) {
     return certify_fp(ClaimModels::of(m, c), claims, name, opt, wrong);
 }
-inline std::string certify_fp(const HullModel& m, const TouchingCurve& c, const std::string& claims, const std::string& name,
-                              bool exact_decimals, bool json, long* wrong) {
+inline std::string certify_fp(const HullModel& m, const TouchingCurve& c, const std::string& claims,
+                              const std::string& name, bool exact_decimals, bool json, long* wrong) {
     return certify_fp(m, c, claims, name, ClaimOptions{exact_decimals, Q(0), json}, wrong);
 }
 // The same claims on two objects made of parts (CLAIMS.md, "Objects made of parts"): verdict,
 // separating_plane, witness_point and distance (the least over the part pairs), at any
 // (ρ1, ρ2) > 0; the line format's verdict lines. The certificate is of kind "compound_judgements".
 class CompoundJudge;
-std::string certify_fp(CompoundJudge& judge, const std::string& claims, const std::string& name, const ClaimOptions& opt, long* wrong,
-                       long* count = nullptr, std::string* certificate = nullptr);
+std::string certify_fp(CompoundJudge& judge, const std::string& claims, const std::string& name,
+                       const ClaimOptions& opt, long* wrong, long* count = nullptr, std::string* certificate = nullptr);
 }  // namespace scalecert::internal

@@ -28,8 +28,14 @@ Verdict FastCurve::classify(double r1, double r2) const {
                 (k > 0 && filter::near_breakpoint(breaks_[k - 1], r1, true));
     if (!near) {
         const int side = filter::curve_side_filter(a_[k], b_[k], r1, r2);
-        if (side > 0) { stats.filtered(Predicate::CurveSide); return Verdict::Separated; }
-        if (side < 0) { stats.filtered(Predicate::CurveSide); return Verdict::Overlapping; }
+        if (side > 0) {
+            stats.filtered(Predicate::CurveSide);
+            return Verdict::Separated;
+        }
+        if (side < 0) {
+            stats.filtered(Predicate::CurveSide);
+            return Verdict::Overlapping;
+        }
     }
     stats.exact(Predicate::CurveSide);
     return query(m_, c_, exact_from_double(r1), exact_from_double(r2), false).verdict;
@@ -49,10 +55,16 @@ Verdict FastDirect::classify(double r1, double r2) const {
     bool all_negative = true;
     for (size_t i = 0; i < nd_.size(); ++i) {
         const int g = filter::lines_gap_filter(nd_[i], h1_[i], h2_[i], r1, r2);
-        if (g > 0) { stats.filtered(Predicate::LinesGap); return Verdict::Separated; }
+        if (g > 0) {
+            stats.filtered(Predicate::LinesGap);
+            return Verdict::Separated;
+        }
         if (g == 0) all_negative = false;
     }
-    if (all_negative) { stats.filtered(Predicate::LinesGap); return Verdict::Overlapping; }
+    if (all_negative) {
+        stats.filtered(Predicate::LinesGap);
+        return Verdict::Overlapping;
+    }
     stats.exact(Predicate::LinesGap);
     return query_direct(m_, exact_from_double(r1), exact_from_double(r2));
 }
@@ -147,7 +159,9 @@ void parse_pairs(const std::string& text, std::vector<double>& r1, std::vector<d
     each([&](unsigned t) { lines[t] = static_cast<size_t>(std::count(cut[t], cut[t + 1], '\n')) + 1; });
     for (unsigned t = 0; t < threads; ++t) off[t + 1] = off[t] + lines[t];
     r1.resize(off[threads]), r2.resize(off[threads]);
-    each([&](unsigned t) { bad[t] = parse_chunk(text.data(), cut[t], cut[t + 1], r1.data() + off[t], r2.data() + off[t], got[t]); });
+    each([&](unsigned t) {
+        bad[t] = parse_chunk(text.data(), cut[t], cut[t + 1], r1.data() + off[t], r2.data() + off[t], got[t]);
+    });
     for (unsigned t = 0; t < threads; ++t)
         if (bad[t] != std::string::npos) {
             long line = 1 + std::count(text.begin(), text.begin() + static_cast<long>(bad[t]), '\n');
@@ -155,8 +169,10 @@ void parse_pairs(const std::string& text, std::vector<double>& r1, std::vector<d
         }
     size_t n = got[0];
     for (unsigned t = 1; t < threads; ++t) {
-        std::copy(r1.begin() + static_cast<long>(off[t]), r1.begin() + static_cast<long>(off[t] + got[t]), r1.begin() + static_cast<long>(n));
-        std::copy(r2.begin() + static_cast<long>(off[t]), r2.begin() + static_cast<long>(off[t] + got[t]), r2.begin() + static_cast<long>(n));
+        std::copy(r1.begin() + static_cast<long>(off[t]), r1.begin() + static_cast<long>(off[t] + got[t]),
+                  r1.begin() + static_cast<long>(n));
+        std::copy(r2.begin() + static_cast<long>(off[t]), r2.begin() + static_cast<long>(off[t] + got[t]),
+                  r2.begin() + static_cast<long>(n));
         n += got[t];
     }
     r1.resize(n), r2.resize(n);

@@ -14,28 +14,28 @@ namespace scalecert::internal {
 using StageCounts = filter::PredicateCounts;
 
 class FastCurve {
-public:
+  public:
     FastCurve(const Model& m, const TouchingCurve& c);
     Verdict classify(double rho1, double rho2) const;  // ρ1, ρ2 > 0
     // Statistics (curve_side), per object: use one object per thread.
     mutable filter::PredicateStats stats;
     StageCounts counts() const { return stats[filter::Predicate::CurveSide]; }
 
-private:
+  private:
     const Model& m_;
     const TouchingCurve& c_;
-    std::vector<double> breaks_;    // right ends of the envelope pieces, nearest doubles
-    std::vector<double> a_, b_;     // slope and intercept of each piece, nearest doubles
+    std::vector<double> breaks_;  // right ends of the envelope pieces, nearest doubles
+    std::vector<double> a_, b_;   // slope and intercept of each piece, nearest doubles
 };
 
 class FastDirect {
-public:
+  public:
     explicit FastDirect(const Model& m);
     Verdict classify(double rho1, double rho2) const;
     mutable filter::PredicateStats stats;  // lines_gap, per object
     StageCounts counts() const { return stats[filter::Predicate::LinesGap]; }
 
-private:
+  private:
     const Model& m_;
     std::vector<double> nd_, h1_, h2_;
 };
@@ -43,7 +43,7 @@ private:
 // Classifies many pairs on `threads` threads (a copy of f each); out[i] is the verdict for
 // (r1[i], r2[i]). Returns the stage counts summed over the threads.
 StageCounts classify_batch(const FastCurve& f, const std::vector<double>& r1, const std::vector<double>& r2,
-                    std::vector<Verdict>& out, unsigned threads);
+                           std::vector<Verdict>& out, unsigned threads);
 
 // Reads pairs, one "rho1 rho2" per line (text after '#' and blank lines ignored), each number
 // read as the double strtod gives, on `threads` threads over chunks of the text. Throws

@@ -31,7 +31,9 @@ struct CompoundJudge::PairCache {
 
 namespace {
 Json range_json(int from, int to) { return Json::array({from, to}); }
-Json exact3(const Vec3q& v) { return Json::array({to_exact_string(v[0]), to_exact_string(v[1]), to_exact_string(v[2])}); }
+Json exact3(const Vec3q& v) {
+    return Json::array({to_exact_string(v[0]), to_exact_string(v[1]), to_exact_string(v[2])});
+}
 // An axis normal as a code, 2c for +e_c and 2c + 1 for −e_c (cheap to compare in the loops over
 // pairs); −1 for none.
 int axis_code(int c, int side) { return 2 * c + (side > 0 ? 0 : 1); }
@@ -54,8 +56,10 @@ CompoundJudge::~CompoundJudge() = default;
 
 void CompoundJudge::check_blocks(size_t more) const {
     if (static_cast<double>(blocks_) + static_cast<double>(more) > kMaxCertificateBlocks)
-        throw InputError(name_ + ": the certificate would hold more than " + std::to_string(static_cast<long>(kMaxCertificateBlocks)) +
-                         " blocks of part pairs (the limit: parts far from each other in their lists' order cannot share a block)");
+        throw InputError(
+            name_ + ": the certificate would hold more than " +
+            std::to_string(static_cast<long>(kMaxCertificateBlocks)) +
+            " blocks of part pairs (the limit: parts far from each other in their lists' order cannot share a block)");
 }
 
 // s + ρ(box − s): ρ > 0 keeps the order along every axis.
@@ -75,7 +79,8 @@ CompoundJudge::PairCache& CompoundJudge::pair(int a, int b) {
         if (cache_.size() > kMaxBuiltPairs || edge_work_ > kMaxEdgePairWork) {
             cache_.erase({a, b});
             throw InputError(name_ + ": the claims need more than " + std::to_string(kMaxBuiltPairs) +
-                             " part pairs judged exactly, or more than 2*10^7 edge pairs over them (the limits of a compound scene)");
+                             " part pairs judged exactly, or more than 2*10^7 edge pairs over them (the limits of a "
+                             "compound scene)");
         }
         p = std::make_unique<PairCache>();
         p->hm.P[0] = parts_[0][static_cast<size_t>(a)];
@@ -107,16 +112,16 @@ BoxBounds bounds_of(const std::array<std::array<Q, 2>, 3>& b) {
 }
 // Is x's end along c below y's start, strictly (x[c][1] < y[c][0])? The doubles decide when they
 // can prove it either way; else the exact ends.
-bool below(const std::array<std::array<Q, 2>, 3>& x, const BoxBounds& xb, const std::array<std::array<Q, 2>, 3>& y, const BoxBounds& yb,
-           size_t c) {
+bool below(const std::array<std::array<Q, 2>, 3>& x, const BoxBounds& xb, const std::array<std::array<Q, 2>, 3>& y,
+           const BoxBounds& yb, size_t c) {
     if (xb.up[c][1] < yb.down[c][0]) return true;
     if (xb.down[c][1] >= yb.up[c][0]) return false;
     return x[c][1] < y[c][0];
 }
 // The axis (and side: +1 when the first box lies below) along which two boxes are strictly apart;
 // {-1, 0} when they are not.
-std::pair<int, int> apart(const std::array<std::array<Q, 2>, 3>& x, const BoxBounds& xb, const std::array<std::array<Q, 2>, 3>& y,
-                          const BoxBounds& yb) {
+std::pair<int, int> apart(const std::array<std::array<Q, 2>, 3>& x, const BoxBounds& xb,
+                          const std::array<std::array<Q, 2>, 3>& y, const BoxBounds& yb) {
     for (size_t c = 0; c < 3; ++c) {
         if (below(x, xb, y, yb, c)) return {static_cast<int>(c), 1};
         if (below(y, yb, x, xb, c)) return {static_cast<int>(c), -1};
@@ -126,8 +131,8 @@ std::pair<int, int> apart(const std::array<std::array<Q, 2>, 3>& x, const BoxBou
 // Does y start at least √E past x's end along c (y[c][0] − x[c][1] > 0, its square >= E)? Ed is
 // E's double (region_double: NaN when not a normal double). The doubles decide when their bounds
 // prove it either way (each difference and square rounded by one unit outward); else exactly.
-bool axis_gap_at_least(const std::array<std::array<Q, 2>, 3>& x, const BoxBounds& xb, const std::array<std::array<Q, 2>, 3>& y,
-                       const BoxBounds& yb, size_t c, const Q& E, double Ed) {
+bool axis_gap_at_least(const std::array<std::array<Q, 2>, 3>& x, const BoxBounds& xb,
+                       const std::array<std::array<Q, 2>, 3>& y, const BoxBounds& yb, size_t c, const Q& E, double Ed) {
     const double lo = std::nextafter(yb.down[c][0] - xb.up[c][1], -INFINITY);
     if (lo > 0 && std::nextafter(lo * lo, -INFINITY) >= std::nextafter(Ed, INFINITY)) return true;
     const double hi = std::nextafter(yb.up[c][0] - xb.down[c][1], INFINITY);
@@ -153,15 +158,18 @@ std::array<std::array<Q, 2>, 3> join(const std::vector<std::array<std::array<Q, 
 Vec3q gap_vector(const std::array<std::array<Q, 2>, 3>& x, const std::array<std::array<Q, 2>, 3>& y) {
     Vec3q u{Q(0), Q(0), Q(0)};
     for (size_t c = 0; c < 3; ++c) {
-        if (x[c][1] < y[c][0]) u[c] = y[c][0] - x[c][1];
-        else if (y[c][1] < x[c][0]) u[c] = y[c][1] - x[c][0];
+        if (x[c][1] < y[c][0])
+            u[c] = y[c][0] - x[c][1];
+        else if (y[c][1] < x[c][0])
+            u[c] = y[c][1] - x[c][0];
     }
     return u;
 }
 }  // namespace
 
-int CompoundJudge::pair_sign(int a, int b, const Q& r1, const Q& r2, const std::vector<Box>& b1, const std::vector<Box>& b2,
-                             const std::vector<BoxBounds>& d1, const std::vector<BoxBounds>& d2, int* code, Vec3q* normal, int prefer) {
+int CompoundJudge::pair_sign(int a, int b, const Q& r1, const Q& r2, const std::vector<Box>& b1,
+                             const std::vector<Box>& b2, const std::vector<BoxBounds>& d1,
+                             const std::vector<BoxBounds>& d2, int* code, Vec3q* normal, int prefer) {
     const Box &x = b1[static_cast<size_t>(a)], &y = b2[static_cast<size_t>(b)];
     const BoxBounds &xd = d1[static_cast<size_t>(a)], &yd = d2[static_cast<size_t>(b)];
     *code = -1;
@@ -211,13 +219,14 @@ int CompoundJudge::pair_sign(int a, int b, const Q& r1, const Q& r2, const std::
 namespace {
 struct Block {
     int a0, a1, b0, b1;
-    int code;      // an axis normal (axis_code), or −1: then `normal`
+    int code;  // an axis normal (axis_code), or −1: then `normal`
     Vec3q normal;
 };
 Json blocks_json(const std::vector<Block>& blocks) {
     Json out = Json::array();
     for (const Block& b : blocks)
-        out.push_back(Json{{"P1_parts", range_json(b.a0, b.a1)}, {"P2_parts", range_json(b.b0, b.b1)},
+        out.push_back(Json{{"P1_parts", range_json(b.a0, b.a1)},
+                           {"P2_parts", range_json(b.b0, b.b1)},
                            {"normal", exact3(b.code >= 0 ? axis_of(b.code) : b.normal)}});
     return out;
 }
@@ -236,7 +245,9 @@ void add_block(std::vector<Block>& blocks, int a, int b, int code, const Vec3q& 
 }
 // The run a block ends in at pair b − 1 of row a, if any: its axis code (−1: none, or not an axis).
 int run_code(const std::vector<Block>& blocks, int a, int b) {
-    return !blocks.empty() && blocks.back().a0 == a && blocks.back().a1 == a && blocks.back().b1 == b - 1 ? blocks.back().code : -1;
+    return !blocks.empty() && blocks.back().a0 == a && blocks.back().a1 == a && blocks.back().b1 == b - 1
+               ? blocks.back().code
+               : -1;
 }
 // Among the axis normals that ok(b, code) accepts for pair b of a row, the one that holds for the
 // longest run b, b + 1, ... (ties: the first), so that one block covers the run; −1 when ok
@@ -279,8 +290,10 @@ CompoundJudge::Verdict CompoundJudge::verdict(const Q& r1, const Q& r2, Json* pr
             }
             // Boxes apart along n (+e_c: part a's below part b's).
             auto apart_along = [&](int b, int code) {
-                const size_t c = static_cast<size_t>(code / 2), ia = static_cast<size_t>(a), ib = static_cast<size_t>(b);
-                return code % 2 == 0 ? below(b1[ia], d1[ia], b2[ib], d2[ib], c) : below(b2[ib], d2[ib], b1[ia], d1[ia], c);
+                const size_t c = static_cast<size_t>(code / 2), ia = static_cast<size_t>(a),
+                             ib = static_cast<size_t>(b);
+                return code % 2 == 0 ? below(b1[ia], d1[ia], b2[ib], d2[ib], c)
+                                     : below(b2[ib], d2[ib], b1[ia], d1[ia], c);
             };
             for (int b = 0; b < n; ++b) {
                 Vec3q nrm;
@@ -332,7 +345,10 @@ CompoundJudge::Distance CompoundJudge::distance(const Q& r1, const Q& r2, Json* 
         long fallbacks = 0;
         const Witness w = pair_common_point(pair(v.part1, v.part2).hm, r1, r2, fallbacks);
         if (proof)
-            *proof = Json{{"squared", "0"}, {"pair", Json::array({v.part1, v.part2})}, {"P1", weights_json(w.w1)}, {"P2", weights_json(w.w2)}};
+            *proof = Json{{"squared", "0"},
+                          {"pair", Json::array({v.part1, v.part2})},
+                          {"P1", weights_json(w.w1)},
+                          {"P2", weights_json(w.w2)}};
         return {Q(0), w.point, w.point, v.part1, v.part2};
     }
     const int m = static_cast<int>(parts_[0].size()), n = static_cast<int>(parts_[1].size());
@@ -344,7 +360,9 @@ CompoundJudge::Distance CompoundJudge::distance(const Q& r1, const Q& r2, Json* 
     // a nearer one and start again.
     std::vector<std::array<std::array<double, 2>, 3>> f1, f2;
     auto doubles = [](const Box& b) {
-        return std::array<std::array<double, 2>, 3>{{{b[0][0].get_d(), b[0][1].get_d()}, {b[1][0].get_d(), b[1][1].get_d()}, {b[2][0].get_d(), b[2][1].get_d()}}};
+        return std::array<std::array<double, 2>, 3>{{{b[0][0].get_d(), b[0][1].get_d()},
+                                                     {b[1][0].get_d(), b[1][1].get_d()},
+                                                     {b[2][0].get_d(), b[2][1].get_d()}}};
     };
     for (const Box& b : b1) f1.push_back(doubles(b));
     for (const Box& b : b2) f2.push_back(doubles(b));
@@ -417,7 +435,8 @@ CompoundJudge::Distance CompoundJudge::distance(const Q& r1, const Q& r2, Json* 
                         const Box& yy = b2[static_cast<size_t>(bb)];
                         const BoxBounds& yyd = d2[static_cast<size_t>(bb)];
                         const size_t c = static_cast<size_t>(code / 2);
-                        return code % 2 == 0 ? axis_gap_at_least(x, xd, yy, yyd, c, E, Ed) : axis_gap_at_least(yy, yyd, x, xd, c, E, Ed);
+                        return code % 2 == 0 ? axis_gap_at_least(x, xd, yy, yyd, c, E, Ed)
+                                             : axis_gap_at_least(yy, yyd, x, xd, c, E, Ed);
                     };
                     int code = proof ? run_code(blocks, a, b) : -1;
                     if (proof && (code < 0 || !far_along(b, code))) code = longest_axis(b, n, far_along);
@@ -453,12 +472,16 @@ CompoundJudge::Distance CompoundJudge::distance(const Q& r1, const Q& r2, Json* 
             w1 = weights_json(d.d.w1), w2 = weights_json(d.d.w2);
         } else {
             bool in1 = false, in2 = false;
-            const Polyhedron &A = parts_[0][static_cast<size_t>(best.part1)], &B = parts_[1][static_cast<size_t>(best.part2)];
+            const Polyhedron &A = parts_[0][static_cast<size_t>(best.part1)],
+                             &B = parts_[1][static_cast<size_t>(best.part2)];
             w1 = membership_proof(A, sc_.P[0].seed, r1, d.d.p1, &in1)["in"];
             w2 = membership_proof(B, sc_.P[1].seed, r2, d.d.p2, &in2)["in"];
             if (!in1 || !in2) throw std::logic_error("compound distance: a closest point outside its part");
         }
-        *proof = Json{{"squared", to_exact_string(E)}, {"pair", Json::array({best.part1, best.part2})}, {"P1", w1}, {"P2", w2},
+        *proof = Json{{"squared", to_exact_string(E)},
+                      {"pair", Json::array({best.part1, best.part2})},
+                      {"P1", w1},
+                      {"P2", w2},
                       {"apart", blocks_json(blocks)}};
         return best;
     }

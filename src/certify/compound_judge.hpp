@@ -34,7 +34,7 @@ struct BoxBounds;  // a box's ends enclosed in doubles (the filter of the box te
 constexpr double kMaxCertificateBlocks = 1e6;
 
 class CompoundJudge {
-public:
+  public:
     // Builds every part's hull (InputError for a flat part, named "NAME: P1.parts[k]").
     CompoundJudge(const ExactScene& sc, const std::string& name);
     ~CompoundJudge();
@@ -71,10 +71,12 @@ public:
     std::pair<Q, Q> plane_extents(const Vec3q& n, const Q& rho1, const Q& rho2) const;
 
     // Statistics: pairs judged by their boxes, by their facet normals, exact distances.
-    struct Counts { long boxed = 0, judged = 0, distances = 0; };
+    struct Counts {
+        long boxed = 0, judged = 0, distances = 0;
+    };
     Counts counts() const { return counts_; }
 
-private:
+  private:
     using Box = std::array<std::array<Q, 2>, 3>;
     struct PairCache;
     ExactScene sc_;
@@ -82,16 +84,17 @@ private:
     std::vector<Polyhedron> parts_[2];
     std::vector<Box> unit_[2];  // each part's own box (unscaled)
     std::map<std::pair<int, int>, std::unique_ptr<PairCache>> cache_;
-    double edge_work_ = 0;
-    size_t blocks_ = 0;  // blocks written into proofs so far
-    void check_blocks(size_t more) const;  // InputError past kMaxCertificateBlocks  // over the pairs judged exactly: Σ edges(A) × edges(B), within kMaxEdgePairWork
+    double edge_work_ = 0;  // over the pairs judged exactly: Σ edges(A) × edges(B), within kMaxEdgePairWork
+    size_t blocks_ = 0;     // blocks written into proofs so far
+    void check_blocks(size_t more) const;  // InputError past kMaxCertificateBlocks
     Counts counts_;
 
     Box scaled_box(int i, size_t k, const Q& rho) const;
     PairCache& pair(int a, int b);
     // −1 separated (strictly), 0 touching, +1 overlapping, with a normal for ≤ 0.
     int pair_sign(int a, int b, const Q& rho1, const Q& rho2, const std::vector<Box>& b1, const std::vector<Box>& b2,
-                  const std::vector<BoxBounds>& d1, const std::vector<BoxBounds>& d2, int* code, Vec3q* normal, int prefer = -1);
+                  const std::vector<BoxBounds>& d1, const std::vector<BoxBounds>& d2, int* code, Vec3q* normal,
+                  int prefer = -1);
 };
 
 }  // namespace scalecert::internal

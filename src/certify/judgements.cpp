@@ -55,7 +55,7 @@ namespace {
 // One body of a point set (set 0 here) and one point x (set 1, its own seed: no scaling moves it),
 // so that the distance between them, proved from support queries, says whether x is in the body.
 class BodyAndPoint final : public PointSets {
-public:
+  public:
     BodyAndPoint(const PointSets& S, int body, const Vec3q& x) : S_(S), body_(body), x_(x), den_(1) {
         for (const Q& c : x) mpz_lcm(den_.get_mpz_t(), den_.get_mpz_t(), c.get_den_mpz_t());
     }
@@ -69,7 +69,7 @@ public:
     int argmax(int i, const Vec3z& n) const override { return i == 0 ? S_.argmax(body_, n) : 0; }
     int dargmax(int i, const D3& d) const override { return i == 0 ? S_.dargmax(body_, d) : 0; }
 
-private:
+  private:
     const PointSets& S_;
     int body_;
     Vec3q x_;
@@ -96,8 +96,10 @@ std::optional<bool> membership_by_points(const PointSets& S, int i, const Q& rho
     if (!pd) return std::nullopt;
     const bool inside = sgn(pd->d.squared) == 0;
     if (proof) {
-        if (inside) *proof = Json{{"in", weights_json(pd->d.w1)}};
-        else *proof = Json{{"out", normal_json(primitive(sub(pd->d.p2, pd->d.p1)))}};
+        if (inside)
+            *proof = Json{{"in", weights_json(pd->d.w1)}};
+        else
+            *proof = Json{{"out", normal_json(primitive(sub(pd->d.p2, pd->d.p1)))}};
     }
     return inside;
 }
@@ -127,7 +129,9 @@ Json depth_proof(const Model* m, const MeasuredDepth& d, const Q& rho1, const Q&
     if (d.state == MeasuredDepth::Separated) return Json{{"separated", normal_json(d.normal)}};
     if (d.state == MeasuredDepth::Touching) {
         const Json common = distance_proof(m, d.distance, rho1, rho2);
-        return Json{{"squared", "0"}, {"direction", normal_json(d.normal)}, {"common", Json{{"P1", common["P1"]}, {"P2", common["P2"]}}}};
+        return Json{{"squared", "0"},
+                    {"direction", normal_json(d.normal)},
+                    {"common", Json{{"P1", common["P1"]}, {"P2", common["P2"]}}}};
     }
     const ProvedDepth& p = *d.depth;
     // The points in order of first use.
@@ -139,7 +143,8 @@ Json depth_proof(const Model* m, const MeasuredDepth& d, const Q& rho1, const Q&
             auto it = renumber.find(v);
             if (it == renumber.end()) {
                 it = renumber.emplace(v, static_cast<int>(renumber.size())).first;
-                points.push_back(Json::array({p.points[static_cast<size_t>(v)].first, p.points[static_cast<size_t>(v)].second}));
+                points.push_back(
+                    Json::array({p.points[static_cast<size_t>(v)].first, p.points[static_cast<size_t>(v)].second}));
             }
             tri.push_back(it->second);
         }

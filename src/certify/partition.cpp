@@ -70,18 +70,21 @@ CurveWitnesses curve_witnesses(const Model& m, const TouchingCurve& c, const See
         std::optional<Witness> w;
         if (const std::optional<Q> x = contact_rho1(m, c, p)) {
             try {
-                w = make_witness(m, *x, m.lines[c.env.pieces[p.env].line].at(*x), p.contact.feat1, p.contact.feat2, true);
+                w = make_witness(m, *x, m.lines[c.env.pieces[p.env].line].at(*x), p.contact.feat1, p.contact.feat2,
+                                 true);
             } catch (const std::logic_error&) {
                 if (p.from != p.to) throw;
-                throw InputError("I1 is the single point rho1 = " + to_exact_string(p.from) +
-                                 ", where the curve switches pieces: a partition needs a range of rho1 there (curve, query and "
-                                 "certify-fp take it)");
+                throw InputError(
+                    "I1 is the single point rho1 = " + to_exact_string(p.from) +
+                    ", where the curve switches pieces: a partition needs a range of rho1 there (curve, query and "
+                    "certify-fp take it)");
             }
         }
         W.piece_witnesses.push_back(std::move(w));
         const ContactLine& L = m.lines[c.env.pieces[p.env].line];
         std::optional<Witness> z;
-        if (sgn(L.at(p.from)) > 0 && sgn(L.at(p.to)) <= 0) z = make_witness(m, -L.intercept / L.slope, Q(0), c.env.pieces[p.env].line);
+        if (sgn(L.at(p.from)) > 0 && sgn(L.at(p.to)) <= 0)
+            z = make_witness(m, -L.intercept / L.slope, Q(0), c.env.pieces[p.env].line);
         W.zero_witnesses.push_back(std::move(z));
     }
     for (const CurveSwitch& sp : c.switches)
@@ -95,8 +98,10 @@ CurveWitnesses curve_witnesses(const Model& m, const TouchingCurve& c, const See
         if (sgn(y) > 0) {
             W.end_witness[e] = make_witness(m, x, y, line);
         } else if (e == 0) {  // s2 in P1(lo1): on the walk, from where the curve reaches 0 (x0 ≤ lo1)
-            if (!m.scan) W.end_witness[e] = make_witness(m, x, Q(0), size_t(-1));
-            else W.end_witness[e] = lift_witness(witness_below(m, c, x), x, Q(0), seed);
+            if (!m.scan)
+                W.end_witness[e] = make_witness(m, x, Q(0), size_t(-1));
+            else
+                W.end_witness[e] = lift_witness(witness_below(m, c, x), x, Q(0), seed);
         }
     }
     return W;
@@ -105,8 +110,8 @@ CurveWitnesses curve_witnesses(const Model& m, const TouchingCurve& c, const See
 Partition build_partition(const Model& m, const TouchingCurve& c) {
     const ExactScene& s = m.scene;
     Partition P;
-    std::vector<Pt2> rect = normalize_polygon(
-        {{s.lo[0], s.lo[1]}, {s.hi[0], s.lo[1]}, {s.hi[0], s.hi[1]}, {s.lo[0], s.hi[1]}});
+    std::vector<Pt2> rect =
+        normalize_polygon({{s.lo[0], s.lo[1]}, {s.hi[0], s.lo[1]}, {s.hi[0], s.hi[1]}, {s.lo[0], s.hi[1]}});
     P.overlap = overlap_region(m, c, rect);
     const std::vector<Pt2>& over = P.overlap;
     P.seeds = seed_weights(m);
@@ -129,7 +134,8 @@ Partition build_partition(const Model& m, const TouchingCurve& c) {
     for (size_t k = 0; k < c.pieces.size(); ++k) {
         const CurvePiece& p = c.pieces[k];
         const ContactLine& L = m.lines[c.env.pieces[p.env].line];
-        std::vector<Pt2> box = normalize_polygon({{p.from, s.lo[1]}, {p.to, s.lo[1]}, {p.to, s.hi[1]}, {p.from, s.hi[1]}});
+        std::vector<Pt2> box =
+            normalize_polygon({{p.from, s.lo[1]}, {p.to, s.lo[1]}, {p.to, s.hi[1]}, {p.from, s.hi[1]}});
         if (box.size() < 3) continue;
         std::vector<Pt2> sep = clip(box, L.slope, L.intercept, false);
         if (sep.size() >= 3 && sgn(area2(sep)) > 0) P.separated.push_back({k, sep});

@@ -5,17 +5,16 @@
 
 namespace scalecert::internal {
 
-
 struct SeparatedRegion {
-    size_t piece;             // index into TouchingCurve::pieces; its line's normal separates the region
-    std::vector<Pt2> verts;   // closed polygon, counter-clockwise; the points on the curve excluded
+    size_t piece;            // index into TouchingCurve::pieces; its line's normal separates the region
+    std::vector<Pt2> verts;  // closed polygon, counter-clockwise; the points on the curve excluded
 };
 
 // The witnesses that prove a curve over its range [lo, hi] (the pieces' lines are lower bounds;
 // these, common points, upper bounds; the set of meeting pairs is convex): a partition's over I1,
 // a judgement's over its window.
 struct CurveWitnesses {
-    std::vector<Witness> switch_witnesses;   // one per switch point with ρ2 > 0 (touching)
+    std::vector<Witness> switch_witnesses;  // one per switch point with ρ2 > 0 (touching)
     // Per curve piece with a contact: a point of the touching set in the relative interiors of
     // both contact features (every feature vertex weighted > 0), at contact_rho1.
     std::vector<std::optional<Witness>> piece_witnesses;
@@ -27,11 +26,11 @@ struct CurveWitnesses {
 };
 
 struct Partition : CurveWitnesses {
-    std::vector<Pt2> overlap;              // convex polygon (may be empty, a point or a segment)
+    std::vector<Pt2> overlap;                // convex polygon (may be empty, a point or a segment)
     std::vector<Witness> overlap_witnesses;  // one per vertex of `overlap`
     std::vector<SeparatedRegion> separated;  // nonempty interiors only
     std::optional<Witness> growth_witness;   // at (ρ*, ρ*) when ρ* > 0
-    SeedWeights seeds;  // the seeds proved inside
+    SeedWeights seeds;                       // the seeds proved inside
 };
 
 // Clips a convex polygon (counter-clockwise) to ρ2 ≥ a·ρ1 + b (above = true) or ≤. Drops repeated

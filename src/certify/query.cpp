@@ -33,8 +33,8 @@ static Vec3q scaled(const Vec3q& v, const Vec3q& s, const Q& rho) {
     return {s[0] + rho * (v[0] - s[0]), s[1] + rho * (v[1] - s[1]), s[2] + rho * (v[2] - s[2])};
 }
 
-std::optional<Witness> try_witness(const Model& m, const Q& rho1, const Q& rho2, const std::vector<int>& i1, const std::vector<int>& i2,
-                                   bool interior) {
+std::optional<Witness> try_witness(const Model& m, const Q& rho1, const Q& rho2, const std::vector<int>& i1,
+                                   const std::vector<int>& i2, bool interior) {
     std::vector<Vec3q> A, B;
     for (int i : i1) A.push_back(scaled(m.pt(0, static_cast<size_t>(i)), m.s[0], rho1));
     for (int j : i2) B.push_back(scaled(m.pt(1, static_cast<size_t>(j)), m.s[1], rho2));
@@ -59,11 +59,12 @@ std::optional<Witness> try_witness(const Model& m, const Q& rho1, const Q& rho2,
     return w;
 }
 
-Witness make_witness(const Model& m, const Q& rho1, const Q& rho2, const std::vector<int>& i1, const std::vector<int>& i2,
-                     bool interior) {
+Witness make_witness(const Model& m, const Q& rho1, const Q& rho2, const std::vector<int>& i1,
+                     const std::vector<int>& i2, bool interior) {
     std::optional<Witness> w = try_witness(m, rho1, rho2, i1, i2, interior);
-    if (!w) throw std::logic_error(interior ? "the contact features' relative interiors do not meet on the curve"
-                                            : "no common point where the curve says the polyhedra meet");
+    if (!w)
+        throw std::logic_error(interior ? "the contact features' relative interiors do not meet on the curve"
+                                        : "no common point where the curve says the polyhedra meet");
     return std::move(*w);
 }
 

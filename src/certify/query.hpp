@@ -27,8 +27,8 @@ struct PlaneCert {
 struct QueryAnswer {
     Verdict verdict;
     Q rho1, rho2;
-    std::optional<PlaneCert> plane;     // separated, touching
-    std::optional<Witness> witness;     // touching (at ρ), overlapping (at a smaller pair)
+    std::optional<PlaneCert> plane;  // separated, touching
+    std::optional<Witness> witness;  // touching (at ρ), overlapping (at a smaller pair)
 };
 
 // With the curve: a search over its pieces. Requires ρ1, ρ2 > 0.
@@ -45,10 +45,10 @@ Witness make_witness(const Model& m, const Q& rho1, const Q& rho2, size_t line);
 // A common point of conv(vertices i1 of P1(ρ1)) and conv(vertices i2 of P2(ρ2)); with interior,
 // one in both relative interiors, every listed vertex weighted > 0.
 // The same, none when those points hold no common point (make_witness throws then: a bug).
-std::optional<Witness> try_witness(const Model& m, const Q& rho1, const Q& rho2, const std::vector<int>& i1, const std::vector<int>& i2,
-                                   bool interior = false);
-Witness make_witness(const Model& m, const Q& rho1, const Q& rho2, const std::vector<int>& i1, const std::vector<int>& i2,
-                     bool interior);
+std::optional<Witness> try_witness(const Model& m, const Q& rho1, const Q& rho2, const std::vector<int>& i1,
+                                   const std::vector<int>& i2, bool interior = false);
+Witness make_witness(const Model& m, const Q& rho1, const Q& rho2, const std::vector<int>& i1,
+                     const std::vector<int>& i2, bool interior);
 
 // Weights > 0 whose weighted mean is the seed of polyhedron i, over vertices spanning 3
 // dimensions: on the hull path every hull vertex, on the walk a few extreme points.

@@ -15,7 +15,8 @@ namespace scalecert::internal {
 namespace {
 Json points_json(const std::vector<Vec3q>& pts) {
     Json a = Json::array();
-    for (const Vec3q& v : pts) a.push_back(Json::array({to_exact_string(v[0]), to_exact_string(v[1]), to_exact_string(v[2])}));
+    for (const Vec3q& v : pts)
+        a.push_back(Json::array({to_exact_string(v[0]), to_exact_string(v[1]), to_exact_string(v[2])}));
     return a;
 }
 
@@ -29,9 +30,12 @@ Json compound_scene_json(const ExactScene& sc) {
         Json parts = Json::array();
         if (in.parts.empty()) parts.push_back(Json{{"vertices", points_json(in.points)}});
         for (const std::vector<Vec3q>& p : in.parts) parts.push_back(Json{{"vertices", points_json(p)}});
-        s[names[i]] = Json{{"parts", parts}, {"seed", Json::array({to_exact_string(in.seed[0]), to_exact_string(in.seed[1]), to_exact_string(in.seed[2])})}};
+        s[names[i]] = Json{{"parts", parts},
+                           {"seed", Json::array({to_exact_string(in.seed[0]), to_exact_string(in.seed[1]),
+                                                 to_exact_string(in.seed[2])})}};
     }
-    for (int i = 0; i < 2; ++i) s[i == 0 ? "I1" : "I2"] = Json::array({to_exact_string(sc.lo[i]), to_exact_string(sc.hi[i])});
+    for (int i = 0; i < 2; ++i)
+        s[i == 0 ? "I1" : "I2"] = Json::array({to_exact_string(sc.lo[i]), to_exact_string(sc.hi[i])});
     return s;
 }
 
@@ -64,17 +68,24 @@ Json range_json(int from, int to) { return Json::array({from, to}); }
 // a run extended down the rows while the next row has the same run. Each block is one entry with
 // the normal ±e_c: every pair in it has part 1's swept box below (or above) part 2's along c, so
 // the maximum over the block's P1 parts lies below the minimum over its P2 parts.
-struct Block { int a0, a1, b0, b1, axis, side; };
+struct Block {
+    int a0, a1, b0, b1, axis, side;
+};
 std::vector<Block> pruned_blocks(const CompoundRegion& r) {
     const int m = static_cast<int>(r.parts[0].size()), n = static_cast<int>(r.parts[1].size());
-    auto code = [&](int a, int b) { return r.prune[static_cast<size_t>(a) * static_cast<size_t>(n) + static_cast<size_t>(b)]; };
+    auto code = [&](int a, int b) {
+        return r.prune[static_cast<size_t>(a) * static_cast<size_t>(n) + static_cast<size_t>(b)];
+    };
     std::vector<Block> done;
     std::map<std::tuple<int, int, int>, size_t> open;  // (b0, b1, code) -> block reaching the previous row
     for (int a = 0; a < m; ++a) {
         std::map<std::tuple<int, int, int>, size_t> next;
         for (int b = 0; b < n;) {
             const int k = code(a, b);
-            if (!k) { ++b; continue; }
+            if (!k) {
+                ++b;
+                continue;
+            }
             int e = b + 1;
             while (e < n && code(a, e) == k) ++e;
             const auto key = std::make_tuple(b, e - 1, k);
@@ -102,14 +113,17 @@ Json compound_partition_json(const ExactScene& sc, const CompoundRegion& r) {
     for (const Block& b : pruned_blocks(r)) {
         Vec3z nrm{Z(0), Z(0), Z(0)};
         nrm[static_cast<size_t>(b.axis)] = b.side;
-        Json e{{"P1_parts", range_json(b.a0, b.a1)}, {"P2_parts", range_json(b.b0, b.b1)}, {"normals", Json::array({normal_json(nrm)})}};
+        Json e{{"P1_parts", range_json(b.a0, b.a1)},
+               {"P2_parts", range_json(b.b0, b.b1)},
+               {"normals", Json::array({normal_json(nrm)})}};
         polygon_json(e, {});
         e["witnesses"] = Json::array();
         entries.push_back({{b.a0, b.b0}, std::move(e)});
     }
     // The witnesses, on every core (each pair's in its slot; each task copies its two parts).
     std::vector<std::vector<Witness>> witnesses(r.pairs.size());
-    const unsigned threads = static_cast<unsigned>(std::min<size_t>(default_threads(), std::max<size_t>(1, r.pairs.size() / 8)));
+    const unsigned threads =
+        static_cast<unsigned>(std::min<size_t>(default_threads(), std::max<size_t>(1, r.pairs.size() / 8)));
     std::vector<long> missed(threads, 0);
     parallel_tasks(r.pairs.size(), threads, [&](unsigned t, size_t k) {
         const CompoundRegion::Pair& p = r.pairs[k];
@@ -126,7 +140,9 @@ Json compound_partition_json(const ExactScene& sc, const CompoundRegion& r) {
         const CompoundRegion::Pair& p = r.pairs[k];
         Json normals = Json::array();
         for (size_t f : p.fence) normals.push_back(normal_json(p.constraints[f].normal));
-        Json e{{"P1_parts", range_json(p.part1, p.part1)}, {"P2_parts", range_json(p.part2, p.part2)}, {"normals", normals}};
+        Json e{{"P1_parts", range_json(p.part1, p.part1)},
+               {"P2_parts", range_json(p.part2, p.part2)},
+               {"normals", normals}};
         polygon_json(e, p.polygon);
         Json wit = Json::array();
         for (const Witness& w : witnesses[k]) wit.push_back(witness_object(w));
@@ -149,7 +165,11 @@ Json compound_partition_json(const ExactScene& sc, const CompoundRegion& r) {
         growth.push_back(g);
     }
     j["growth_set"] = growth;
-    j["statistics"] = Json{{"pairs", r.prune.size()}, {"pruned", r.pruned}, {"built", r.built}, {"entries", entries.size()}, {"witness_fallbacks", fallbacks}};
+    j["statistics"] = Json{{"pairs", r.prune.size()},
+                           {"pruned", r.pruned},
+                           {"built", r.built},
+                           {"entries", entries.size()},
+                           {"witness_fallbacks", fallbacks}};
     j["scene"] = compound_scene_json(sc);
     return j;
 }
@@ -165,7 +185,9 @@ Json point_json(const Point2q& x) { return Json::array({to_exact_string(x[0]), t
 // tight normals, and the line a rho1 + b rho2 = c that holds the edge (the pair meets on its >= side).
 Json contact_json(const CompoundRegion& r, const PairContact& c, bool with_line) {
     const CompoundRegion::Pair& p = r.pairs[c.pair];
-    Json j{{"P1_part", p.part1}, {"P2_part", p.part2}, {"contact", c.contact.label},
+    Json j{{"P1_part", p.part1},
+           {"P2_part", p.part2},
+           {"contact", c.contact.label},
            {"features", Json{{"P1", c.contact.feat1}, {"P2", c.contact.feat2}}}};
     Json normals = Json::array();
     for (size_t k : c.tight) normals.push_back(normal_json(p.constraints[k].normal));
@@ -189,19 +211,24 @@ void put_boundary(Json& j, const CompoundRegion& r, const ExactScene& sc) {
         Json edges = Json::array();
         for (const BoundaryEdge& e : ring.edges) {
             Json x{{"from", point_json(e.from)}, {"to", point_json(e.to)}};
-            if (e.contact) x["on"] = contact_json(r, *e.contact, true);
-            else x["on"] = sides[e.bound];
+            if (e.contact)
+                x["on"] = contact_json(r, *e.contact, true);
+            else
+                x["on"] = sides[e.bound];
             edges.push_back(x);
         }
-        rings.push_back(Json{{"piece", ring.piece}, {"hole", ring.hole < 0 ? Json(nullptr) : Json(ring.hole)}, {"edges", edges}});
+        rings.push_back(
+            Json{{"piece", ring.piece}, {"hole", ring.hole < 0 ? Json(nullptr) : Json(ring.hole)}, {"edges", edges}});
     }
     j["boundary"] = rings;
     Json sw = Json::array();
     for (const CompoundSwitch& s : b.switches) {
         Json cs = Json::array();
         for (const PairContact& c : s.contacts) cs.push_back(contact_json(r, c, false));
-        sw.push_back(Json{{"rho1", to_exact_string(s.at[0])}, {"rho2", to_exact_string(s.at[1])},
-                          {"change", s.pair_change ? "pair" : "contact"}, {"contacts", cs}});
+        sw.push_back(Json{{"rho1", to_exact_string(s.at[0])},
+                          {"rho2", to_exact_string(s.at[1])},
+                          {"change", s.pair_change ? "pair" : "contact"},
+                          {"contacts", cs}});
     }
     j["switch_points"] = sw;
 }
@@ -212,11 +239,14 @@ Json compound_region_json(const ExactScene& sc, const CompoundRegion& r, const s
     j["format"] = "scalecert-2";
     j["kind"] = "region";
     const auto& hp = r.predicates[filter::Predicate::HalfPlaneSide];
-    j["pairs"] = Json{{"total", r.prune.size()}, {"pruned", r.pruned}, {"built", r.built},
+    j["pairs"] = Json{{"total", r.prune.size()},
+                      {"pruned", r.pruned},
+                      {"built", r.built},
                       {"corner_sides", Json{{"decided_by_filter", hp.filtered}, {"decided_exactly", hp.exact}}}};
     Json pairs = Json::array();
     for (const auto& p : r.pairs)
-        if (!p.polygon.empty()) pairs.push_back(Json{{"P1_part", p.part1}, {"P2_part", p.part2}, {"vertices", ring_json(p.polygon)}});
+        if (!p.polygon.empty())
+            pairs.push_back(Json{{"P1_part", p.part1}, {"P2_part", p.part2}, {"vertices", ring_json(p.polygon)}});
     j["pair_regions"] = pairs;
     Json region = Json::array();
     for (const RegionPiece& piece : r.region) {
@@ -226,9 +256,10 @@ Json compound_region_json(const ExactScene& sc, const CompoundRegion& r, const s
     }
     if (r.union_skipped) {
         j["region"] = nullptr;
-        j["region_note"] = "the union of more than " + std::to_string(kMaxUnionPolygons) +
-                           " pair polygons with area is not formed (its cost grows with their crossings): the region is the union "
-                           "of pair_regions";
+        j["region_note"] =
+            "the union of more than " + std::to_string(kMaxUnionPolygons) +
+            " pair polygons with area is not formed (its cost grows with their crossings): the region is the union "
+            "of pair_regions";
     } else {
         j["region"] = region;
     }
@@ -250,13 +281,16 @@ Json compound_region_json(const ExactScene& sc, const CompoundRegion& r, const s
                     first["contact"] = c->contact.label;
                     first["features"] = Json{{"P1", c->contact.feat1}, {"P2", c->contact.feat2}};
                 }
-        growth.push_back(Json{{"from", to_exact_string(iv.from)}, {"to", to_exact_string(iv.to)}, {"first_contact", first}});
+        growth.push_back(
+            Json{{"from", to_exact_string(iv.from)}, {"to", to_exact_string(iv.to)}, {"first_contact", first}});
     }
     j["growth_set"] = growth;
     put_boundary(j, r, sc);
     if (at) {
         const CompoundVerdict v = compound_verdict(r, (*at)[0], (*at)[1]);
-        Json a{{"rho1", to_exact_string((*at)[0])}, {"rho2", to_exact_string((*at)[1])}, {"verdict", verdict_name(v.verdict)}};
+        Json a{{"rho1", to_exact_string((*at)[0])},
+               {"rho2", to_exact_string((*at)[1])},
+               {"verdict", verdict_name(v.verdict)}};
         if (v.part1 >= 0) a["pair"] = Json{{"P1_part", v.part1}, {"P2_part", v.part2}};
         j["at"] = a;
     }

@@ -32,6 +32,7 @@ Json compound_partition_json(const ExactScene& sc, const CompoundRegion& r);
 // The region document (kind "region", docs/manual.md "region"): the pairs' counts and polygons,
 // their union (r formed with it) with its boundary labelled and its switch points, the pairs that
 // meet without area, the growth set, and with `at` the exact verdict there (in I1 × I2).
-Json compound_region_json(const ExactScene& sc, const CompoundRegion& r, const std::optional<std::array<Q, 2>>& at = std::nullopt);
+Json compound_region_json(const ExactScene& sc, const CompoundRegion& r,
+                          const std::optional<std::array<Q, 2>>& at = std::nullopt);
 
 }  // namespace scalecert::internal

@@ -84,9 +84,7 @@ namespace {
 Json exact_fields_json(const TypedClaim& c) {
     Json j{{"kind", type_name(c.type)}};
     switch (c.type) {
-    case ClaimType::Growth:
-        j["value"] = ex(c.value);
-        return j;
+    case ClaimType::Growth: j["value"] = ex(c.value); return j;
     case ClaimType::Curve: {
         const ClaimedCurve& k = *c.curve;
         const auto& S = k.segments;
@@ -161,7 +159,8 @@ struct ConvexRules::Impl {
     // Whether x is in P1(ρ1) and y in P2(ρ2), with their proofs in *proof when given.
     std::pair<bool, bool> members(const Q& r1, const Q& r2, const Vec3q& x, const Vec3q& y, Json* proof) const {
         Json p1, p2;
-        const bool a = models.member(0, r1, x, proof ? &p1 : nullptr), b = models.member(1, r2, y, proof ? &p2 : nullptr);
+        const bool a = models.member(0, r1, x, proof ? &p1 : nullptr),
+                   b = models.member(1, r2, y, proof ? &p2 : nullptr);
         if (proof) *proof = Json{{"P1", std::move(p1)}, {"P2", std::move(p2)}};
         return {a, b};
     }
@@ -315,8 +314,10 @@ struct ConvexRules::Impl {
                     const std::optional<Q> x = inverse(V, y);
                     if (x && V.proves(*x)) continue;
                     fits = false;
-                    if (!x || sgn(*x) <= 0) whole_needed = true;  // at or before ρ1 = 0 on the walked lines
-                    else need_lo = std::min(need_lo, *x), need_hi = std::max(need_hi, *x);
+                    if (!x || sgn(*x) <= 0)
+                        whole_needed = true;  // at or before ρ1 = 0 on the walked lines
+                    else
+                        need_lo = std::min(need_lo, *x), need_hi = std::max(need_hi, *x);
                 }
             if (fits) break;
             V = whole_needed || round == 8 ? whole() : models.curve_around(need_lo, need_hi);
@@ -340,7 +341,8 @@ struct ConvexRules::Impl {
             check_v(s.x0, s.y0);
             check_v(s.x1, s.y1);
             for (const EnvPiece& p : cv.env.pieces)
-                if (p.to && *p.to > s.x0 && *p.to < s.x1) check_v(*p.to, s.y0 + (s.y1 - s.y0) * (*p.to - s.x0) / (s.x1 - s.x0));
+                if (p.to && *p.to > s.x0 && *p.to < s.x1)
+                    check_v(*p.to, s.y0 + (s.y1 - s.y0) * (*p.to - s.x0) / (s.x1 - s.x0));
             for (const auto& [x, y] : {std::pair{s.x0, s.y0}, std::pair{s.x1, s.y1}})
                 if (auto xi = inverse(V, y)) max_h = std::max(max_h, Q(abs(Q(*xi - x))));
         }
@@ -389,12 +391,14 @@ struct ConvexRules::Impl {
             if (!s.contact) continue;
             const Q mid = (s.x0 + s.x1) / 2;
             // At an exact switch point the contact is the switch point's.
-            std::string e = g.exact_positive ? piece_contact(mv, cv.env.pieces[cv.env.locate(mid)]).label : std::string("none");
+            std::string e =
+                g.exact_positive ? piece_contact(mv, cv.env.pieces[cv.env.locate(mid)]).label : std::string("none");
             for (const ExactSwitch& sw : exs)
                 if (sw.rho1 == mid) e = sw.label;
             if (*s.contact != e) g.wrong_contacts.push_back({mid, *s.contact, e});
         }
-        g.right = g.exact_positive && within && g.missed.empty() && g.extra.empty() && g.misplaced.empty() && g.wrong_contacts.empty();
+        g.right = g.exact_positive && within && g.missed.empty() && g.extra.empty() && g.misplaced.empty() &&
+                  g.wrong_contacts.empty();
     }
 
     void plane(const TypedClaim& c, Judged& g, Proof* proof) {

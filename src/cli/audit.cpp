@@ -10,11 +10,13 @@ using namespace internal;
 
 Command add_audit(CLI::App& app) {
     auto a = std::make_shared<CampaignArgs>();
-    CLI::App* sub = app.add_subcommand("audit", "run floating-point methods on scenes and compare with the exact answers (JSON, and CSV with --csv)");
+    CLI::App* sub = app.add_subcommand(
+        "audit", "run floating-point methods on scenes and compare with the exact answers (JSON, and CSV with --csv)");
     add_audit_options(sub, *a);
-    example(sub, "Example:\n  scalecert audit certificates/scenes/*.json --grid 64 --out audit.json --csv audit.csv\n"
-                 "  scalecert audit --family nearly-equal-slopes --sweep 4 --sweep-to 40 --count 2 --out sweep.json\n"
-                 "(On a cluster: mpirun scalecert-mpi audit, with the same options and a run folder.)");
+    example(sub,
+            "Example:\n  scalecert audit certificates/scenes/*.json --grid 64 --out audit.json --csv audit.csv\n"
+            "  scalecert audit --family nearly-equal-slopes --sweep 4 --sweep-to 40 --count 2 --out sweep.json\n"
+            "(On a cluster: mpirun scalecert-mpi audit, with the same options and a run folder.)");
     return {sub, [a] {
                 validate(*a);  // refused before any work
                 const long rows = run_campaign(*a);

@@ -9,12 +9,19 @@ namespace scalecert::cli {
 
 void add_golden_options(CLI::App* sub, internal::CampaignArgs& a) {
     a.golden = true;
-    sub->add_option("SCENES", a.scenes, "your own scene files: golden data for each (NAME.golden.json and .csv, NAME its file name without .json)");
-    sub->add_option("--family", a.family, "random | parallel-faces | nearly-equal-slopes | nearly-parallel-edges | vertex-vertex | far-from-origin | sliver | near-sphere");
+    sub->add_option(
+        "SCENES", a.scenes,
+        "your own scene files: golden data for each (NAME.golden.json and .csv, NAME its file name without .json)");
+    sub->add_option("--family", a.family,
+                    "random | parallel-faces | nearly-equal-slopes | nearly-parallel-edges | vertex-vertex | "
+                    "far-from-origin | sliver | near-sphere");
     sub->add_option("--count", a.count, "how many scenes of the family (1 to 10^7)")->check(CLI::Range(1, 10000000));
     sub->add_option("--seed", a.seed, "the run's random seed (scene i's own seed is derived from it and i)");
     sub->add_option("--eps", a.eps_text, "degeneracy parameter (exact, default 2^-20)");
-    sub->add_option("--dir", a.dir, "output directory (created): NAME-i.scene.json, NAME-i.golden.json, NAME-i.golden.csv")->required()->check(file_name());
+    sub->add_option("--dir", a.dir,
+                    "output directory (created): NAME-i.scene.json, NAME-i.golden.json, NAME-i.golden.csv")
+        ->required()
+        ->check(file_name());
 }
 
 void add_audit_options(CLI::App* sub, internal::CampaignArgs& a) {
@@ -24,22 +31,37 @@ void add_audit_options(CLI::App* sub, internal::CampaignArgs& a) {
 #endif
     sub->add_option("SCENES", a.scenes, "scene files");
     a.opt.allow_parts = true;  // scenes of objects made of parts, for the compound methods
-    sub->add_option("--methods", a.methods, "libccd-gjk libccd-mpr double-envelope paper-tritri fcl-gjk-libccd fcl-gjk-indep bullet-gjk-epa grid; "
-                                            "for objects made of parts: bullet-compound fcl-compound-libccd fcl-compound-indep libccd-gjk-parts")->delimiter(',');
-    sub->add_option("--grid", a.grid, "grid resolutions for the grid method (2 to 4096)")->delimiter(',')->check(CLI::Range(2, 4096));
+    sub->add_option(
+           "--methods", a.methods,
+           "libccd-gjk libccd-mpr double-envelope paper-tritri fcl-gjk-libccd fcl-gjk-indep bullet-gjk-epa grid; "
+           "for objects made of parts: bullet-compound fcl-compound-libccd fcl-compound-indep libccd-gjk-parts")
+        ->delimiter(',');
+    sub->add_option("--grid", a.grid, "grid resolutions for the grid method (2 to 4096)")
+        ->delimiter(',')
+        ->check(CLI::Range(2, 4096));
     sub->add_option("--family", a.family, "also audit a family over an eps sweep (with --sweep)");
     sub->add_option("--sweep", a.sweep_from, "eps = 2^-K for K from this (0 to 1074) ...")->check(CLI::Range(0, 1074));
     sub->add_option("--sweep-to", a.sweep_to, "... to this (inclusive, 0 to 1074)")->check(CLI::Range(0, 1074));
     sub->add_option("--count", a.count, "scenes per eps in the sweep (1 to 10^6)")->check(CLI::Range(1, 1000000));
-    sub->add_option("--seed", a.seed, "the run's random seed (each family scene's own seed is derived from it, K and its index)");
+    sub->add_option("--seed", a.seed,
+                    "the run's random seed (each family scene's own seed is derived from it, K and its index)");
     sub->add_flag("--binary-doubles", a.opt.binary_doubles, "read the scene files' numbers as IEEE doubles");
     sub->add_flag("--parts-from-groups", a.opt.parts_from_groups,
                   "read each OBJ mesh a scene names as an object made of convex parts, a part per 'o' or 'g' group");
-    sub->add_option("--out", a.out, "write the JSON to FILE (atomically) instead of standard output")->type_name("FILE")->check(file_name());
-    sub->add_option("--csv", a.csv, "also write the rows as CSV to FILE (both files written together)")->type_name("FILE")->check(file_name());
-    sub->add_flag("!--no-measures", a.measures, "verdicts only: skip comparing the methods' distances and depths with the exact ones (proved at floating-point speed)");
-    sub->add_flag("--by-distance", a.by_distance, "also count wrong verdicts at relative distances 2^-4 ... 2^-52 from the curve, or from the region's boundary for objects made of parts (JSON: by_distance)");
-    sub->add_flag("--no-timing", a.no_timing, "leave the timing columns out: the rest is byte-identical on any number of processes");
+    sub->add_option("--out", a.out, "write the JSON to FILE (atomically) instead of standard output")
+        ->type_name("FILE")
+        ->check(file_name());
+    sub->add_option("--csv", a.csv, "also write the rows as CSV to FILE (both files written together)")
+        ->type_name("FILE")
+        ->check(file_name());
+    sub->add_flag("!--no-measures", a.measures,
+                  "verdicts only: skip comparing the methods' distances and depths with the exact ones (proved at "
+                  "floating-point speed)");
+    sub->add_flag("--by-distance", a.by_distance,
+                  "also count wrong verdicts at relative distances 2^-4 ... 2^-52 from the curve, or from the region's "
+                  "boundary for objects made of parts (JSON: by_distance)");
+    sub->add_flag("--no-timing", a.no_timing,
+                  "leave the timing columns out: the rest is byte-identical on any number of processes");
 }
 
 }  // namespace scalecert::cli

@@ -20,31 +20,42 @@ Command add_certify_fp(CLI::App& app) {
         bool json = false, exact_decimals = false;
     };
     auto a = std::make_shared<Args>();
-    CLI::App* sub = app.add_subcommand("certify-fp", "mark a floating-point program's claims right or wrong, exactly (exit 1 if any is wrong)");
+    CLI::App* sub = app.add_subcommand(
+        "certify-fp", "mark a floating-point program's claims right or wrong, exactly (exit 1 if any is wrong)");
     a->scene.add(sub);
-    sub->add_option("CLAIMS", a->claims, "claims ('-': standard input): JSON (scalecert-claims-1, certificates/CLAIMS.md), or lines 'RHO1 RHO2 VERDICT', 'curve RHO1 RHO2', 'growth RHO'; "
-                                         "on objects made of parts: verdict, separating_plane, witness_point and distance claims, and verdict lines");
-    sub->add_option("--tolerance", a->tolerance, "accept numeric claims within this relative error (exact, e.g. 1e-9; JSON claims); verdicts, contacts, planes and witness points must be exact");
+    sub->add_option(
+        "CLAIMS", a->claims,
+        "claims ('-': standard input): JSON (scalecert-claims-1, certificates/CLAIMS.md), or lines 'RHO1 RHO2 "
+        "VERDICT', 'curve RHO1 RHO2', 'growth RHO'; "
+        "on objects made of parts: verdict, separating_plane, witness_point and distance claims, and verdict lines");
+    sub->add_option("--tolerance", a->tolerance,
+                    "accept numeric claims within this relative error (exact, e.g. 1e-9; JSON claims); verdicts, "
+                    "contacts, planes and witness points must be exact");
     sub->add_flag("--json", a->json, "the report as JSON");
-    sub->add_flag("--exact-decimals", a->exact_decimals,
-                  "read the claims' JSON numbers and decimals exactly as written (0.1 = 1/10); by default each is the double "
-                  "strtod reads, as the program that wrote it held it (strings and fractions p/q are exact either way; "
-                  "--binary-doubles is for the scene)");
+    sub->add_flag(
+        "--exact-decimals", a->exact_decimals,
+        "read the claims' JSON numbers and decimals exactly as written (0.1 = 1/10); by default each is the double "
+        "strtod reads, as the program that wrote it held it (strings and fractions p/q are exact either way; "
+        "--binary-doubles is for the scene)");
     add_out(sub, a->out);
-    sub->add_option("--certificate", a->certificate,
-                    "also write the judgements certificate: the proof of every judgement, for scalecert-check "
-                    "(certificates/FORMAT.md, \"A judgements file\"; on objects made of parts, \"A compound judgements file\")")
+    sub->add_option(
+           "--certificate", a->certificate,
+           "also write the judgements certificate: the proof of every judgement, for scalecert-check "
+           "(certificates/FORMAT.md, \"A judgements file\"; on objects made of parts, \"A compound judgements file\")")
         ->type_name("FILE")
         ->check(file_name());
-    example(sub, "Exit status: 0 all claims right, 1 some claim wrong, 2 bad input. Example:\n"
-                 "  printf '1 1 separated\\ngrowth 1.5\\n' > claims.txt\n"
-                 "  scalecert certify-fp certificates/scenes/stacked_cubes.json claims.txt\n"
-                 "  scalecert certify-fp certificates/scenes/stacked_cubes.json examples/claims.json --tolerance 1e-12\n"
-                 "  scalecert certify-fp tests/data/compound_band.json tests/data/compound_band_claims.json   # objects made of parts");
+    example(sub,
+            "Exit status: 0 all claims right, 1 some claim wrong, 2 bad input. Example:\n"
+            "  printf '1 1 separated\\ngrowth 1.5\\n' > claims.txt\n"
+            "  scalecert certify-fp certificates/scenes/stacked_cubes.json claims.txt\n"
+            "  scalecert certify-fp certificates/scenes/stacked_cubes.json examples/claims.json --tolerance 1e-12\n"
+            "  scalecert certify-fp tests/data/compound_band.json tests/data/compound_band_claims.json   # objects "
+            "made of parts");
     return {sub, [a] {
                 a->scene.shift_positionals({&a->claims});
                 if (a->claims.empty()) throw InputError("CLAIMS is required (see scalecert certify-fp --help)");
-                internal::refuse_outputs_over_inputs({a->out, a->certificate}, {a->claims, a->scene.path, a->scene.mesh[0], a->scene.mesh[1]});
+                internal::refuse_outputs_over_inputs({a->out, a->certificate},
+                                                     {a->claims, a->scene.path, a->scene.mesh[0], a->scene.mesh[1]});
                 StageClock clock;
                 // A scene of parts goes to the compound judge; a plain one to the session.
                 OpenScene o = open_any(a->scene, Engine::Auto, clock);
@@ -59,9 +70,11 @@ Command add_certify_fp(CLI::App& app) {
                 if (sgn(opt.tolerance) < 0) throw InputError("--tolerance must be >= 0");
                 std::string certificate;
                 std::string* cert = a->certificate.empty() ? nullptr : &certificate;
-                const std::string report = o.compound ? certify_fp(o.compound->judge(), claims, a->claims, opt, &wrong, nullptr, cert)
-                                                   : certify_fp(o.convex->claim_models(), claims, a->claims, opt, &wrong, nullptr, cert);
-                if (a->certificate.empty()) emit(report, a->out);
+                const std::string report =
+                    o.compound ? certify_fp(o.compound->judge(), claims, a->claims, opt, &wrong, nullptr, cert)
+                               : certify_fp(o.convex->claim_models(), claims, a->claims, opt, &wrong, nullptr, cert);
+                if (a->certificate.empty())
+                    emit(report, a->out);
                 else if (a->out.empty()) {
                     write_file_atomically(a->certificate, certificate);
                     emit(report, a->out);

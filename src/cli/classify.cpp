@@ -17,13 +17,15 @@ Command add_classify(CLI::App& app) {
         unsigned threads = std::max(1u, std::thread::hardware_concurrency());
     };
     auto a = std::make_shared<Args>();
-    CLI::App* sub = app.add_subcommand("classify", "exact verdicts for many pairs: lines 'rho1 rho2' (doubles, classified at their exact values)");
+    CLI::App* sub = app.add_subcommand(
+        "classify", "exact verdicts for many pairs: lines 'rho1 rho2' (doubles, classified at their exact values)");
     a->scene.add(sub);
     sub->add_option("PAIRS", a->pairs, "file of pairs, one 'rho1 rho2' per line ('-', the default: standard input)");
     sub->add_option("--threads", a->threads, "threads (default: all cores)")->check(CLI::Range(1u, 256u));
     add_out(sub, a->out);
-    example(sub, "Writes one verdict per line. Example:\n"
-                 "  printf '1 1\\n1.5 1.5\\n2 2\\n' | scalecert classify certificates/scenes/stacked_cubes.json -");
+    example(sub,
+            "Writes one verdict per line. Example:\n"
+            "  printf '1 1\\n1.5 1.5\\n2 2\\n' | scalecert classify certificates/scenes/stacked_cubes.json -");
     return {sub, [a] {
                 a->scene.shift_positionals({&a->pairs});
                 if (a->pairs.empty()) a->pairs = "-";
@@ -51,7 +53,9 @@ Command add_classify(CLI::App& app) {
                 clock.lap("classify");
                 emit(verdict_lines(out), a->out);
                 clock.lap("output");
-                if (clock.on) std::fprintf(stderr, "scalecert: stages: %lu filtered, %lu exact\n", (unsigned long)sc.filtered, (unsigned long)sc.exact);
+                if (clock.on)
+                    std::fprintf(stderr, "scalecert: stages: %lu filtered, %lu exact\n", (unsigned long)sc.filtered,
+                                 (unsigned long)sc.exact);
                 return 0;
             }};
 }

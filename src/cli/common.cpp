@@ -14,16 +14,19 @@ using namespace internal;
 
 void SceneArgs::add(CLI::App* sub) {
     sub->add_option("SCENE", path, "scene file (JSON); or --p1, --p2, --i1, --i2");
-    sub->add_option("--p1", mesh[0], "P1 from a mesh file (.off .obj .ply .stl), with --p2, --i1, --i2 instead of SCENE");
+    sub->add_option("--p1", mesh[0],
+                    "P1 from a mesh file (.off .obj .ply .stl), with --p2, --i1, --i2 instead of SCENE");
     sub->add_option("--p2", mesh[1], "P2 from a mesh file");
     sub->add_option("--i1", interval[0], "I1 as LO,HI (exact: 1/2,3)");
     sub->add_option("--i2", interval[1], "I2 as LO,HI");
     sub->add_option("--seed1", seed[0], "P1's seed as X,Y,Z (default: the mean of its vertices)");
     sub->add_option("--seed2", seed[1], "P2's seed as X,Y,Z");
     sub->add_flag("--binary-doubles", opt.binary_doubles, "read text numbers as the IEEE doubles strtod gives");
-    sub->add_flag("--parts-from-groups", opt.parts_from_groups,
-                  "read each OBJ mesh of an object (--p1, --p2, or an object's \"mesh\" in SCENE) as an object made of convex "
-                  "parts: a part per 'o' or 'g' group, of the vertices its faces name (other mesh formats are refused: they have no groups)");
+    sub->add_flag(
+        "--parts-from-groups", opt.parts_from_groups,
+        "read each OBJ mesh of an object (--p1, --p2, or an object's \"mesh\" in SCENE) as an object made of convex "
+        "parts: a part per 'o' or 'g' group, of the vertices its faces name (other mesh formats are refused: they have "
+        "no groups)");
 }
 
 void say_notes(const internal::ExactScene& sc) {
@@ -70,11 +73,12 @@ std::shared_ptr<const internal::CompactScene> SceneArgs::load_compact() const {
 
 std::shared_ptr<const internal::CompactScene> SceneArgs::load_compact(internal::ExactScene* full) const {
     internal::note_inputs({path, mesh[0], mesh[1]});  // (a scene naming meshes is read by load(), which notes them)
-    const bool scene_only = !path.empty() && mesh[0].empty() && mesh[1].empty() && interval[0].empty() && interval[1].empty() &&
-                            seed[0].empty() && seed[1].empty();
+    const bool scene_only = !path.empty() && mesh[0].empty() && mesh[1].empty() && interval[0].empty() &&
+                            interval[1].empty() && seed[0].empty() && seed[1].empty();
     if (scene_only && !opt.binary_doubles && path != "-")
         if (auto cs = internal::read_scene_fast(path)) return std::make_shared<internal::CompactScene>(std::move(*cs));
-    const bool meshes = path.empty() && !mesh[0].empty() && !mesh[1].empty() && !interval[0].empty() && !interval[1].empty();
+    const bool meshes =
+        path.empty() && !mesh[0].empty() && !mesh[1].empty() && !interval[0].empty() && !interval[1].empty();
     if (meshes && !opt.binary_doubles) {
         // Any problem sends the scene to load(), whose checks come in its own order: the same
         // error message either way.
@@ -111,8 +115,7 @@ std::shared_ptr<const internal::CompactScene> SceneArgs::load_compact(internal::
                 }
             }
             if (fast) return cs;
-        } catch (const InputError&) {
-        }
+        } catch (const InputError&) {}
     }
     *full = load();
     auto cs = internal::compact_scene(*full);
@@ -159,19 +162,24 @@ std::vector<Q> number_list(const std::string& text, size_t n, const std::string&
     for (;;) {
         const size_t e = text.find(',', b);
         try {
-            out.push_back(parse_number(text.substr(b, e == std::string::npos ? std::string::npos : e - b), opt.binary_doubles));
+            out.push_back(
+                parse_number(text.substr(b, e == std::string::npos ? std::string::npos : e - b), opt.binary_doubles));
         } catch (const InputError& err) {
             throw InputError(option + ": " + err.what());
         }
         if (e == std::string::npos) break;
         b = e + 1;
     }
-    if (out.size() != n) throw InputError(option + ": expected " + std::to_string(n) + " numbers separated by commas, got " + quoted(text));
+    if (out.size() != n)
+        throw InputError(option + ": expected " + std::to_string(n) + " numbers separated by commas, got " +
+                         quoted(text));
     return out;
 }
 
 void add_engine(CLI::App* sub, std::string& engine) {
-    sub->add_option("--engine", engine, "auto (default: the walk from 2,000 points) | scan (walk the curve: no hull; the hull path if it cannot) | hull")
+    sub->add_option("--engine", engine,
+                    "auto (default: the walk from 2,000 points) | scan (walk the curve: no hull; the hull path if it "
+                    "cannot) | hull")
         ->check(CLI::IsMember({"auto", "scan", "hull"}));
 }
 
@@ -180,8 +188,7 @@ Engine engine_named(const std::string& engine) {
 }
 
 internal::Session open_session(const SceneArgs& args, Engine engine, StageClock& clock) {
-    if (engine != Engine::Hull)
-    {
+    if (engine != Engine::Hull) {
         internal::ExactScene full;
         if (std::shared_ptr<const internal::CompactScene> cs = args.load_compact(&full)) {
             clock.lap("read scene (compact)");
@@ -226,8 +233,9 @@ OpenScene open_any(SceneArgs& args, Engine engine, StageClock& clock) {
 
 void refuse_parts(const OpenScene& o, const std::string& name, const std::string& what) {
     if (o.compound)
-        throw InputError(name + ": " + what + " is defined for two convex objects; on objects made of parts, scalecert region gives where "
-                                "they meet (its labelled boundary, switch points and growth set)");
+        throw InputError(name + ": " + what +
+                         " is defined for two convex objects; on objects made of parts, scalecert region gives where "
+                         "they meet (its labelled boundary, switch points and growth set)");
 }
 
 internal::Segment parse_segment(const std::string& spec, const HullModel& m) {

@@ -23,15 +23,15 @@ using internal::ReadOptions;
 struct SceneArgs {
     std::string path, mesh[2], interval[2], seed[2];
     ReadOptions opt;
-    void add(CLI::App* sub);        // the options, with --binary-doubles
-    internal::ExactScene load() const;   // refuses both forms at once, and neither
+    void add(CLI::App* sub);            // the options, with --binary-doubles
+    internal::ExactScene load() const;  // refuses both forms at once, and neither
     // The scene in compact form (IntPoints), read straight from OFF files of plain decimals when
     // given as --p1/--p2; otherwise through load(). Null when the points do not fit IntPoints.
     std::shared_ptr<const internal::CompactScene> load_compact() const;
     // The same, or else the exact scene in *full (a scene of parts, or points that do not fit
     // IntPoints): the file is read once either way.
     std::shared_ptr<const internal::CompactScene> load_compact(internal::ExactScene* full) const;
-    std::string name() const;       // the scene file, or "--p1 A --p2 B": prefixes geometric errors
+    std::string name() const;  // the scene file, or "--p1 A --p2 B": prefixes geometric errors
     // With --p1/--p2 there is no SCENE, but the first positional word lands there: move it and
     // the words after it one place on, into the command's own positionals (in order), when the
     // last of those is empty. Then SCENE is empty, or the words were too many and load() says so.

@@ -11,13 +11,16 @@ Command add_curve(CLI::App& app) {
         std::string out, segment, engine = "auto";
     };
     auto a = std::make_shared<Args>();
-    CLI::App* sub = app.add_subcommand("curve", "the touching curve over I1, its switch points and the growth distance (JSON)");
+    CLI::App* sub =
+        app.add_subcommand("curve", "the touching curve over I1, its switch points and the growth distance (JSON)");
     a->scene.add(sub);
     add_out(sub, a->out);
-    sub->add_option("--segment", a->segment, "add the t1-t2 curve along a segment: seeds | ellipsoids | x1,y1,z1:x2,y2,z2");
+    sub->add_option("--segment", a->segment,
+                    "add the t1-t2 curve along a segment: seeds | ellipsoids | x1,y1,z1:x2,y2,z2");
     add_engine(sub, a->engine);
-    example(sub, "Examples:\n  scalecert curve certificates/scenes/tetra_box_switch.json\n"
-                 "  scalecert curve --p1 examples/tetra.obj --p2 examples/box.stl --i1 1/2,2 --i2 1,4 --out curve.json");
+    example(sub,
+            "Examples:\n  scalecert curve certificates/scenes/tetra_box_switch.json\n"
+            "  scalecert curve --p1 examples/tetra.obj --p2 examples/box.stl --i1 1/2,2 --i2 1,4 --out curve.json");
     return {sub, [a] {
                 StageClock clock;
                 // --segment lists the faces of both hulls: the hull path.

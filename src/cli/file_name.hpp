@@ -8,7 +8,8 @@
 namespace scalecert::cli {
 
 inline CLI::Validator file_name() {
-    return CLI::Validator([](std::string& s) { return s.empty() ? std::string("an empty file name") : std::string(); }, "");
+    return CLI::Validator([](std::string& s) { return s.empty() ? std::string("an empty file name") : std::string(); },
+                          "");
 }
 
 }  // namespace scalecert::cli

@@ -15,20 +15,24 @@ using namespace internal;
 Command add_golden(CLI::App& app) {
     auto a = std::make_shared<CampaignArgs>();
     auto pair = std::make_shared<SceneArgs>();  // --p1/--p2: a pair of meshes (no SCENE positional here)
-    CLI::App* sub = app.add_subcommand("golden", "exact answers near the touching curve of your scenes, or of a family's, as JSON and CSV files in a directory");
+    CLI::App* sub = app.add_subcommand(
+        "golden",
+        "exact answers near the touching curve of your scenes, or of a family's, as JSON and CSV files in a directory");
     add_golden_options(sub, *a);
     sub->add_option("--scene", a->scenes, "a scene file, as SCENES (may be repeated)")->type_name("FILE");
-    sub->add_option("--p1", pair->mesh[0], "P1 from a mesh file (.off .obj .ply .stl), with --p2, --i1, --i2: golden data for the pair, "
-                                           "named P1-P2 by the files' names (its scene is DIR/P1-P2.scene.json)");
+    sub->add_option("--p1", pair->mesh[0],
+                    "P1 from a mesh file (.off .obj .ply .stl), with --p2, --i1, --i2: golden data for the pair, "
+                    "named P1-P2 by the files' names (its scene is DIR/P1-P2.scene.json)");
     sub->add_option("--p2", pair->mesh[1], "P2 from a mesh file");
     sub->add_option("--i1", pair->interval[0], "I1 as LO,HI (exact: 1/2,3)");
     sub->add_option("--i2", pair->interval[1], "I2 as LO,HI");
     sub->add_option("--seed1", pair->seed[0], "P1's seed as X,Y,Z (default: the mean of its vertices)");
     sub->add_option("--seed2", pair->seed[1], "P2's seed as X,Y,Z");
-    example(sub, "Examples:\n  scalecert golden --family nearly-equal-slopes --count 10 --eps 1/1024 --dir golden/\n"
-                 "  scalecert golden certificates/scenes/tetra_box_switch.json --dir golden/\n"
-                 "  scalecert golden --p1 a.off --p2 b.off --i1 1/2,2 --i2 1/2,2 --dir golden/\n"
-                 "(On a cluster: mpirun scalecert-mpi golden, with the same options and a run folder.)");
+    example(sub,
+            "Examples:\n  scalecert golden --family nearly-equal-slopes --count 10 --eps 1/1024 --dir golden/\n"
+            "  scalecert golden certificates/scenes/tetra_box_switch.json --dir golden/\n"
+            "  scalecert golden --p1 a.off --p2 b.off --i1 1/2,2 --i2 1/2,2 --dir golden/\n"
+            "(On a cluster: mpirun scalecert-mpi golden, with the same options and a run folder.)");
     return {sub, [a, pair] {
                 // A pair of meshes: read (and refused) before anything is created, its scene then
                 // written into the directory and taken as one of SCENES.
@@ -44,7 +48,8 @@ Command add_golden(CLI::App& app) {
                         return dot == std::string::npos || dot == 0 ? b : b.substr(0, dot);
                     };
                     // Written as golden writes a scene's copy (NAME.scene.json, the same bytes): three files.
-                    const std::string path = a->dir + "/" + stem(pair->mesh[0]) + "-" + stem(pair->mesh[1]) + ".scene.json";
+                    const std::string path =
+                        a->dir + "/" + stem(pair->mesh[0]) + "-" + stem(pair->mesh[1]) + ".scene.json";
                     mesh_scene.emplace(path, dump(scene_json(sc)));
                     a->scenes.push_back(path);
                 }
@@ -62,7 +67,8 @@ Command add_golden(CLI::App& app) {
                 run_campaign(*a);
                 const long n = static_cast<long>(a->scenes.size()) + (a->family.empty() ? 0 : a->count);
                 const std::string what = a->scenes.empty() ? " " + a->family : "";
-                std::cerr << "scalecert: wrote " << n << what << (n == 1 ? " scene" : " scenes") << " with exact answers to " << a->dir << "\n";
+                std::cerr << "scalecert: wrote " << n << what << (n == 1 ? " scene" : " scenes")
+                          << " with exact answers to " << a->dir << "\n";
                 return 0;
             }};
 }

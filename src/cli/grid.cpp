@@ -14,13 +14,18 @@ Command add_grid(CLI::App& app) {
         int n = 64, bisections = 0;
     };
     auto a = std::make_shared<Args>();
-    CLI::App* sub = app.add_subcommand("grid", "the paper's floating-point grid search (a baseline, not certified; JSON)");
+    CLI::App* sub =
+        app.add_subcommand("grid", "the paper's floating-point grid search (a baseline, not certified; JSON)");
     a->scene.add(sub);
     sub->add_option("--n", a->n, "grid resolution per axis")->check(CLI::Range(2, 4096));
     sub->add_option("--bisections", a->bisections, "bisection steps per column")->check(CLI::Range(0, 60));
-    sub->add_option("--method", a->method, "libccd-gjk | libccd-mpr | double-envelope | paper-tritri | fcl-gjk-libccd | fcl-gjk-indep | bullet-gjk-epa");
+    sub->add_option(
+        "--method", a->method,
+        "libccd-gjk | libccd-mpr | double-envelope | paper-tritri | fcl-gjk-libccd | fcl-gjk-indep | bullet-gjk-epa");
     add_out(sub, a->out);
-    example(sub, "Example:\n  scalecert grid certificates/scenes/tetra_box_switch.json --n 40 --bisections 8 --method fcl-gjk-indep");
+    example(sub,
+            "Example:\n  scalecert grid certificates/scenes/tetra_box_switch.json --n 40 --bisections 8 --method "
+            "fcl-gjk-indep");
     return {sub, [a] {
                 StageClock clock;
                 internal::Session session = open_session(a->scene, Engine::Hull, clock);

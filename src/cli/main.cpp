@@ -47,12 +47,13 @@ int main(int argc, char** argv) {
     CLI::App app{"scalecert: exact, certified collision of uniformly scaled convex polyhedra"};
     app.require_subcommand(1);
     app.set_version_flag("--version", std::string("scalecert ") + scalecert::version());
-    app.footer("\n--out FILE, wherever it appears, writes the command's output to FILE atomically instead of\n"
-               "standard output. Exit status: 0 done, 1 certify-fp found a wrong claim, 2 bad input,\n"
-               "3 internal error (a bug: please report it).\n"
-               "scalecert COMMAND --help shows an example.");
-    std::vector<cli::Command> commands = {cli::add_curve(app),      cli::add_query(app),  cli::add_partition(app),
-                                          cli::add_classify(app),   cli::add_certify_fp(app), cli::add_golden(app),
+    app.footer(
+        "\n--out FILE, wherever it appears, writes the command's output to FILE atomically instead of\n"
+        "standard output. Exit status: 0 done, 1 certify-fp found a wrong claim, 2 bad input,\n"
+        "3 internal error (a bug: please report it).\n"
+        "scalecert COMMAND --help shows an example.");
+    std::vector<cli::Command> commands = {cli::add_curve(app),    cli::add_query(app),      cli::add_partition(app),
+                                          cli::add_classify(app), cli::add_certify_fp(app), cli::add_golden(app),
                                           cli::add_region(app)};
 #ifdef SCALECERT_WITH_BASELINES  // the floating-point baselines' commands
     commands.push_back(cli::add_audit(app));
@@ -65,7 +66,8 @@ int main(int argc, char** argv) {
         known = known || (argc > 1 && c.app->get_name() == argv[1]);
     }
     if (argc > 1 && argv[1][0] != '-' && !known) {
-        std::cerr << "scalecert: error: unknown command '" << one_line(argv[1]) << "' (" << names << "; see scalecert --help)\n";
+        std::cerr << "scalecert: error: unknown command '" << one_line(argv[1]) << "' (" << names
+                  << "; see scalecert --help)\n";
         return 2;
     }
     try {

@@ -15,8 +15,11 @@ Command add_partition(CLI::App& app) {
     a->scene.add(sub);
     add_out(sub, a->out);
     add_engine(sub, a->engine);
-    example(sub, "Examples:\n  scalecert partition certificates/scenes/stacked_cubes.json --out cert.json && scalecert-check cert.json\n"
-                 "  scalecert partition tests/data/compound_u_peg.json --out u_peg.cert.json   # objects made of parts: a compound_partition");
+    example(sub,
+            "Examples:\n  scalecert partition certificates/scenes/stacked_cubes.json --out cert.json && "
+            "scalecert-check cert.json\n"
+            "  scalecert partition tests/data/compound_u_peg.json --out u_peg.cert.json   # objects made of parts: a "
+            "compound_partition");
     return {sub, [a] {
                 StageClock clock;
                 // From 2,000 points the walk's curve and witnesses (no hull), as for `curve`; on

@@ -17,31 +17,39 @@ Command add_query(CLI::App& app) {
     sub->add_option("RHO1", a->rho1, "scaling of P1 (exact: 3/2, 1.5, 15e-1)");
     sub->add_option("RHO2", a->rho2, "scaling of P2");
     sub->add_flag("--json", a->json, "the verdict with its certificate, as JSON");
-    sub->add_option("--segment", a->segment, "report t1, t2 and the gap along a segment: seeds | ellipsoids | x1,y1,z1:x2,y2,z2");
+    sub->add_option("--segment", a->segment,
+                    "report t1, t2 and the gap along a segment: seeds | ellipsoids | x1,y1,z1:x2,y2,z2");
     sub->add_flag("--in-t", a->in_t, "RHO1 RHO2 are t1 t2 along the segment (default: seeds)");
     add_out(sub, a->out);
     add_engine(sub, a->engine);
-    example(sub, "Examples:\n  scalecert query certificates/scenes/stacked_cubes.json 3/2 3/2        # touching\n"
-                 "  scalecert query certificates/scenes/stacked_cubes.json 1 1.9 --json  # with its certificate");
+    example(sub,
+            "Examples:\n  scalecert query certificates/scenes/stacked_cubes.json 3/2 3/2        # touching\n"
+            "  scalecert query certificates/scenes/stacked_cubes.json 1 1.9 --json  # with its certificate");
     return {sub, [a] {
                 a->scene.shift_positionals({&a->rho1, &a->rho2});
-                if (a->rho1.empty() || a->rho2.empty()) throw InputError("RHO1 and RHO2 are required (see scalecert query --help)");
+                if (a->rho1.empty() || a->rho2.empty())
+                    throw InputError("RHO1 and RHO2 are required (see scalecert query --help)");
                 StageClock clock;
                 // The verdict and its certificate may come from the walk; a segment needs the hull.
                 OpenScene o = open_any(a->scene, engine_named(a->engine), clock);
                 if (o.compound) {
                     // Objects made of parts: the verdict at any (ρ1, ρ2) > 0 by the compound judge;
                     // with --json, the compound judgements certificate of that verdict (scalecert-check).
-                    if (!a->segment.empty() || a->in_t) throw InputError("--segment and --in-t are for two convex objects");
+                    if (!a->segment.empty() || a->in_t)
+                        throw InputError("--segment and --in-t are for two convex objects");
                     const Q r1 = read_rho(a->rho1, "RHO1", a->scene.opt), r2 = read_rho(a->rho2, "RHO2", a->scene.opt);
                     CompoundJudge& judge = o.compound->judge();
                     const char* name = verdict_name(judge.verdict(r1, r2).verdict);
                     std::string text = std::string(name) + "\n";
                     if (a->json) {
                         const Json claims{{"format", "scalecert-claims-1"},
-                                          {"claims", Json::array({Json{{"kind", "verdict"}, {"rho1", to_exact_string(r1)}, {"rho2", to_exact_string(r2)}, {"verdict", name}}})}};
+                                          {"claims", Json::array({Json{{"kind", "verdict"},
+                                                                       {"rho1", to_exact_string(r1)},
+                                                                       {"rho2", to_exact_string(r2)},
+                                                                       {"verdict", name}}})}};
                         long wrong = 0;
-                        certify_fp(judge, dump(claims), a->scene.name(), ClaimOptions{false, Q(0), true}, &wrong, nullptr, &text);
+                        certify_fp(judge, dump(claims), a->scene.name(), ClaimOptions{false, Q(0), true}, &wrong,
+                                   nullptr, &text);
                     }
                     emit(text, a->out);
                     return 0;
@@ -68,7 +76,8 @@ Command add_query(CLI::App& app) {
                     text = session.query_text(r1, r2);
                 } else if (a->json) {
                     const Model& m = session.hull();
-                    Json j = query_json(m, internal::query(m, session.hull_curve(), r1, r2, true), internal::seed_weights(m));
+                    Json j = query_json(m, internal::query(m, session.hull_curve(), r1, r2, true),
+                                        internal::seed_weights(m));
                     add_query_segment_json(j, *seg, r1, r2);
                     text = dump(j);
                 } else {
@@ -77,9 +86,9 @@ Command add_query(CLI::App& app) {
                     if (seg) {
                         if (!seg->note.empty()) text += "note " + seg->note + "\n";
                         const Q g = directional_gap(*seg, r1, r2);
-                        text += "t1 " + to_exact_string(eval(seg->t[0], r1)) + "\nt2 " + to_exact_string(eval(seg->t[1], r2)) +
-                                "\ngap_fraction " + to_exact_string(g) + "\ngap_distance ~" +
-                                std::to_string(scaled_length(seg->v1, seg->v2, g)) + "\n";
+                        text += "t1 " + to_exact_string(eval(seg->t[0], r1)) + "\nt2 " +
+                                to_exact_string(eval(seg->t[1], r2)) + "\ngap_fraction " + to_exact_string(g) +
+                                "\ngap_distance ~" + std::to_string(scaled_length(seg->v1, seg->v2, g)) + "\n";
                     }
                 }
                 emit(text, a->out);

@@ -13,7 +13,6 @@ namespace scalecert::cli {
 
 using namespace internal;
 
-
 Command add_region(CLI::App& app) {
     struct Args {
         SceneArgs scene;
@@ -21,27 +20,36 @@ Command add_region(CLI::App& app) {
         unsigned threads = std::max(1u, std::thread::hardware_concurrency());
     };
     auto a = std::make_shared<Args>();
-    CLI::App* sub = app.add_subcommand("region", "where objects made of convex parts meet (overlap or touch) in I1 x I2: each part pair's exact polygon, their union with its labelled boundary (JSON)");
+    CLI::App* sub = app.add_subcommand("region",
+                                       "where objects made of convex parts meet (overlap or touch) in I1 x I2: each "
+                                       "part pair's exact polygon, their union with its labelled boundary (JSON)");
     a->scene.add(sub);
     add_out(sub, a->out);
     sub->add_option("--at", a->at, "also the exact verdict at RHO1,RHO2 (in I1 x I2), with the pair that decides it");
-    sub->add_option("--certificate", a->certificate,
-                    "also write the certified partition (kind compound_partition): each part pair's overlap polygon with "
-                    "witnesses at its corners and the normals that separate the pair outside it, for scalecert-check "
-                    "(certificates/FORMAT.md, \"A compound partition\")")
+    sub->add_option(
+           "--certificate", a->certificate,
+           "also write the certified partition (kind compound_partition): each part pair's overlap polygon with "
+           "witnesses at its corners and the normals that separate the pair outside it, for scalecert-check "
+           "(certificates/FORMAT.md, \"A compound partition\")")
         ->type_name("FILE")
         ->check(file_name());
-    sub->add_option("--classify", a->classify,
-                    "instead of the region, the exact verdict of each pair of PAIRS (lines 'rho1 rho2', doubles; '-': standard "
-                    "input), one per line, located on a grid over I1 x I2 built once")
+    sub->add_option(
+           "--classify", a->classify,
+           "instead of the region, the exact verdict of each pair of PAIRS (lines 'rho1 rho2', doubles; '-': standard "
+           "input), one per line, located on a grid over I1 x I2 built once")
         ->type_name("PAIRS");
-    sub->add_option("--threads", a->threads, "threads for --classify (default: all cores)")->check(CLI::Range(1u, 256u));
-    example(sub, "Examples:\n  scalecert region tests/data/compound_band.json\n  scalecert region tests/data/compound_band.json --at 7/6,2\n"
-                 "  printf '1 2\\n1.5 2\\n' | scalecert region tests/data/compound_band.json --classify -\n"
-                 "  scalecert region tests/data/compound_band.json --certificate band.cert.json && scalecert-check band.cert.json");
+    sub->add_option("--threads", a->threads, "threads for --classify (default: all cores)")
+        ->check(CLI::Range(1u, 256u));
+    example(sub,
+            "Examples:\n  scalecert region tests/data/compound_band.json\n  scalecert region "
+            "tests/data/compound_band.json --at 7/6,2\n"
+            "  printf '1 2\\n1.5 2\\n' | scalecert region tests/data/compound_band.json --classify -\n"
+            "  scalecert region tests/data/compound_band.json --certificate band.cert.json && scalecert-check "
+            "band.cert.json");
     return {sub, [a, sub] {
                 a->scene.opt.allow_parts = true;
-                internal::refuse_outputs_over_inputs({a->out, a->certificate}, {a->scene.path, a->scene.mesh[0], a->scene.mesh[1], a->classify});
+                internal::refuse_outputs_over_inputs({a->out, a->certificate},
+                                                     {a->scene.path, a->scene.mesh[0], a->scene.mesh[1], a->classify});
                 const ExactScene sc = a->scene.load();
                 std::vector<Q> x;  // --at, read before the work
                 if (sub->count("--at")) {
@@ -52,7 +60,8 @@ Command add_region(CLI::App& app) {
                 std::string pairs_text;  // --classify: read before the work, like --at
                 std::vector<double> p1, p2;
                 if (sub->count("--classify")) {
-                    if (!a->certificate.empty() || !x.empty()) throw InputError("--classify writes verdicts only: not with --certificate or --at");
+                    if (!a->certificate.empty() || !x.empty())
+                        throw InputError("--classify writes verdicts only: not with --certificate or --at");
                     pairs_text = read_input(a->classify.empty() ? "-" : a->classify, "pairs file", kMaxPairsBytes);
                     try {
                         parse_pairs(pairs_text, p1, p2, a->threads);
@@ -63,7 +72,8 @@ Command add_region(CLI::App& app) {
                 CompoundSession session(sc, a->scene.name());
                 if (sub->count("--classify")) {
                     // (Each pair is checked, with the file's name, before the region is built.)
-                    emit(verdict_lines(session.classify(p1, p2, a->threads, a->classify.empty() ? "-" : a->classify)), a->out);
+                    emit(verdict_lines(session.classify(p1, p2, a->threads, a->classify.empty() ? "-" : a->classify)),
+                         a->out);
                     return 0;
                 }
                 std::optional<std::array<Q, 2>> at;

@@ -25,7 +25,8 @@ LineKey left_line(const Point2q& u, const Point2q& v) {
 }
 
 // The part pair's features that all the given normals pick out: maximisers of n on A, of −n on B.
-void common_features(const CompoundRegion& r, const CompoundRegion::Pair& p, const std::vector<size_t>& tight, std::vector<int> out[2]) {
+void common_features(const CompoundRegion& r, const CompoundRegion::Pair& p, const std::vector<size_t>& tight,
+                     std::vector<int> out[2]) {
     const Polyhedron& A = r.parts[0][static_cast<size_t>(p.part1)];
     const Polyhedron& B = r.parts[1][static_cast<size_t>(p.part2)];
     for (size_t j = 0; j < tight.size(); ++j) {
@@ -41,7 +42,8 @@ void common_features(const CompoundRegion& r, const CompoundRegion::Pair& p, con
             out[i] = std::move(both);
         }
     }
-    if (out[0].empty() || out[1].empty()) throw std::logic_error("label_boundary: tight normals with no common contact face");
+    if (out[0].empty() || out[1].empty())
+        throw std::logic_error("label_boundary: tight normals with no common contact face");
 }
 
 int sign_at(const HalfPlane& h, const Point2q& x) { return sgn(Q(h.a * x[0] + h.b * x[1] - h.c)); }
@@ -53,7 +55,9 @@ PairContact contact_along(const CompoundRegion& r, size_t k, const Point2q& x, c
     PairContact c{k, {}, {}};
     for (size_t j = 0; j < p.constraints.size(); ++j)
         if (sign_at(p.constraints[j], x) == 0 && sign_at(p.constraints[j], y) == 0) c.tight.push_back(j);
-    const auto line = std::find_if(c.tight.begin(), c.tight.end(), [&](size_t j) { return sgn(p.constraints[j].a) != 0 || sgn(p.constraints[j].b) != 0; });
+    const auto line = std::find_if(c.tight.begin(), c.tight.end(), [&](size_t j) {
+        return sgn(p.constraints[j].a) != 0 || sgn(p.constraints[j].b) != 0;
+    });
     if (line == c.tight.end()) throw std::logic_error("label_boundary: a pair edge on no constraint's line");
     c.line = *line;
     std::vector<int> f[2];
@@ -114,7 +118,8 @@ std::optional<PairContact> pair_contact_at(const CompoundRegion& r, const ExactS
     } else {
         // One normal's faces, or (three independent normals) a vertex of the Minkowski sum: a
         // vertex of each part.
-        if (full && (f[0].size() != 1 || f[1].size() != 1)) throw std::logic_error("label_boundary: a vertex contact on faces");
+        if (full && (f[0].size() != 1 || f[1].size() != 1))
+            throw std::logic_error("label_boundary: a vertex contact on faces");
         c.contact.feat1 = std::move(f[0]);
         c.contact.feat2 = std::move(f[1]);
         c.contact.label = {feature_letter(c.contact.feat1.size()), feature_letter(c.contact.feat2.size())};
@@ -153,8 +158,10 @@ CompoundBoundary label_boundary(const CompoundRegion& r, const ExactScene& sc) {
         }
     }
     for (auto& [key, L] : by_line) {
-        std::sort(L.edges.begin(), L.edges.end(), [](const PairEdge& x, const PairEdge& y) { return x.s0 != y.s0 ? x.s0 < y.s0 : x.pair < y.pair; });
-        for (size_t j = 0; j < L.edges.size(); ++j) L.reach.push_back(j == 0 || L.edges[j].s1 > L.reach.back() ? L.edges[j].s1 : L.reach.back());
+        std::sort(L.edges.begin(), L.edges.end(),
+                  [](const PairEdge& x, const PairEdge& y) { return x.s0 != y.s0 ? x.s0 < y.s0 : x.pair < y.pair; });
+        for (size_t j = 0; j < L.edges.size(); ++j)
+            L.reach.push_back(j == 0 || L.edges[j].s1 > L.reach.back() ? L.edges[j].s1 : L.reach.back());
     }
     // Each pair polygon's bounding box in doubles, widened past their rounding (region_double is
     // within 2u relative; 2^-40 of the box's size and of its coordinates' size is far more): a
@@ -205,7 +212,8 @@ CompoundBoundary label_boundary(const CompoundRegion& r, const ExactScene& sc) {
             const LineEdges& L = it->second;
             const Q su = position(key, u), sv = position(key, v);
             std::vector<const PairEdge*> near;  // the pair edges that overlap (su, sv)
-            size_t j = static_cast<size_t>(std::lower_bound(L.edges.begin(), L.edges.end(), sv, [](const PairEdge& e, const Q& x) { return e.s0 < x; }) -
+            size_t j = static_cast<size_t>(std::lower_bound(L.edges.begin(), L.edges.end(), sv,
+                                                            [](const PairEdge& e, const Q& x) { return e.s0 < x; }) -
                                            L.edges.begin());
             while (j-- > 0 && L.reach[j] > su)
                 if (L.edges[j].s1 > su) near.push_back(&L.edges[j]);
@@ -216,7 +224,10 @@ CompoundBoundary label_boundary(const CompoundRegion& r, const ExactScene& sc) {
             std::sort(cuts.begin(), cuts.end());
             cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
             const Q wx = v[0] - u[0], wy = v[1] - u[1], len = sv - su;
-            auto at = [&](const Q& t) { const Q f = (t - su) / len; return Point2q{u[0] + f * wx, u[1] + f * wy}; };
+            auto at = [&](const Q& t) {
+                const Q f = (t - su) / len;
+                return Point2q{u[0] + f * wx, u[1] + f * wy};
+            };
             for (size_t c = 0; c + 1 < cuts.size(); ++c) {
                 const PairEdge* found = nullptr;
                 for (const PairEdge* e : near)
@@ -224,8 +235,10 @@ CompoundBoundary label_boundary(const CompoundRegion& r, const ExactScene& sc) {
                 if (!found) throw std::logic_error("label_boundary: a ring edge piece on no pair edge");
                 const Point2q x = at(cuts[c]), y = at(cuts[c + 1]);
                 BoundaryEdge e{x, y, -1, contact_along(r, found->pair, x, y)};
-                if (!br.edges.empty() && same_label(br.edges.back(), e) && br.edges.back().to == x) br.edges.back().to = y;
-                else br.edges.push_back(std::move(e));
+                if (!br.edges.empty() && same_label(br.edges.back(), e) && br.edges.back().to == x)
+                    br.edges.back().to = y;
+                else
+                    br.edges.push_back(std::move(e));
             }
         }
         // A ring's last and first edges with one label (the ring's first vertex inside a run).

@@ -44,8 +44,8 @@ struct BoundaryEdge {
 };
 
 struct BoundaryRing {
-    size_t piece;               // index into CompoundRegion::region
-    int hole;                   // −1 for the outer ring, else the hole's index
+    size_t piece;                     // index into CompoundRegion::region
+    int hole;                         // −1 for the outer ring, else the hole's index
     std::vector<BoundaryEdge> edges;  // from the ring's first vertex, in its order
 };
 
@@ -56,7 +56,7 @@ struct CompoundSwitch {
 };
 
 struct CompoundBoundary {
-    std::vector<BoundaryRing> rings;     // each piece's outer ring, then its holes
+    std::vector<BoundaryRing> rings;       // each piece's outer ring, then its holes
     std::vector<CompoundSwitch> switches;  // in ring order
 };
 

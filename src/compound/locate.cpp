@@ -52,7 +52,8 @@ CompoundLocator::CompoundLocator(const CompoundRegion& r, const Q lo[2], const Q
             if (!sgn(h.a) && !sgn(h.b) && !sgn(h.c)) only_touches_[k] = true;
         if (p.polygon.empty()) continue;  // apart in the whole rectangle: never a candidate
         Q x0 = p.polygon[0][0], x1 = x0, y0 = p.polygon[0][1], y1 = y0;
-        for (const Point2q& v : p.polygon) x0 = std::min(x0, v[0]), x1 = std::max(x1, v[0]), y0 = std::min(y0, v[1]), y1 = std::max(y1, v[1]);
+        for (const Point2q& v : p.polygon)
+            x0 = std::min(x0, v[0]), x1 = std::max(x1, v[0]), y0 = std::min(y0, v[1]), y1 = std::max(y1, v[1]);
         // The cells a query in the polygon's box can land in: a query x goes to the cell i with
         // g[i] <= x < g[i + 1] (the last cell also takes x = g.back()), so i from the last line
         // <= x0 to the line before the first line > x1 (exact comparisons).
@@ -72,13 +73,13 @@ CompoundLocator::CompoundLocator(const CompoundRegion& r, const Q lo[2], const Q
                 for (size_t f = 0; f < nf; ++f) {
                     const HalfPlane& h = p.constraints[p.fence[f]];
                     const double x = x_[i0 + i], y = y_[j0 + j];
-                    sg[(j * cw + i) * nf + f] = static_cast<std::int8_t>(
-                        filter::half_plane_side(h.ad, h.bd, h.cd, x, y, [&] { return sgn(Q(h.a * Q(x) + h.b * Q(y) - h.c)); }, st));
+                    sg[(j * cw + i) * nf + f] = static_cast<std::int8_t>(filter::half_plane_side(
+                        h.ad, h.bd, h.cd, x, y, [&] { return sgn(Q(h.a * Q(x) + h.b * Q(y) - h.c)); }, st));
                 }
         for (size_t j = j0; j < j1; ++j)
             for (size_t i = i0; i < i1; ++i) {
-                const size_t c[4] = {(j - j0) * cw + (i - i0), (j - j0) * cw + (i - i0 + 1), (j - j0 + 1) * cw + (i - i0),
-                                     (j - j0 + 1) * cw + (i - i0 + 1)};
+                const size_t c[4] = {(j - j0) * cw + (i - i0), (j - j0) * cw + (i - i0 + 1),
+                                     (j - j0 + 1) * cw + (i - i0), (j - j0 + 1) * cw + (i - i0 + 1)};
                 bool all_inside = true, clear = false;
                 for (size_t f = 0; f < nf && !clear; ++f) {
                     int neg = 0;
@@ -91,8 +92,10 @@ CompoundLocator::CompoundLocator(const CompoundRegion& r, const Q lo[2], const Q
                 }
                 if (clear) continue;
                 Cell& cell = cells_[j * nx + i];
-                if (all_inside && !only_touches_[k] && inner(i, j)) cell.covered = true;
-                else lists[j * nx + i].push_back(static_cast<std::uint32_t>(k));
+                if (all_inside && !only_touches_[k] && inner(i, j))
+                    cell.covered = true;
+                else
+                    lists[j * nx + i].push_back(static_cast<std::uint32_t>(k));
             }
     }
     for (size_t c = 0; c < cells_.size(); ++c) {
@@ -109,7 +112,9 @@ Verdict CompoundLocator::pair_verdict(std::uint32_t k, double r1, double r2, fil
     for (size_t f = 0; f < p.constraints.size() && least >= 0; ++f) {
         const HalfPlane& h = p.constraints[f];
         // (a double is a dyadic rational: its exact value, formed only when the filter cannot tell)
-        least = std::min(least, filter::half_plane_side(h.ad, h.bd, h.cd, r1, r2, [&] { return sgn(Q(h.a * Q(r1) + h.b * Q(r2) - h.c)); }, st));
+        least =
+            std::min(least, filter::half_plane_side(
+                                h.ad, h.bd, h.cd, r1, r2, [&] { return sgn(Q(h.a * Q(r1) + h.b * Q(r2) - h.c)); }, st));
     }
     return least < 0 ? Verdict::Separated : least == 0 ? Verdict::Touching : Verdict::Overlapping;
 }
@@ -118,8 +123,10 @@ Verdict CompoundLocator::verdict(double rho1, double rho2, filter::PredicateStat
     if (!(rho1 >= lo_up_[0] && rho1 <= hi_down_[0] && rho2 >= lo_up_[1] && rho2 <= hi_down_[1]))  // NaN fails too
         throw InputError("(" + std::to_string(rho1) + ", " + std::to_string(rho2) + ") lies outside I1 x I2");
     const size_t nx = x_.size() - 1;
-    const size_t i = std::min<size_t>(nx - 1, static_cast<size_t>(std::upper_bound(x_.begin(), x_.end(), rho1) - x_.begin()) - 1);
-    const size_t j = std::min<size_t>(y_.size() - 2, static_cast<size_t>(std::upper_bound(y_.begin(), y_.end(), rho2) - y_.begin()) - 1);
+    const size_t i =
+        std::min<size_t>(nx - 1, static_cast<size_t>(std::upper_bound(x_.begin(), x_.end(), rho1) - x_.begin()) - 1);
+    const size_t j = std::min<size_t>(
+        y_.size() - 2, static_cast<size_t>(std::upper_bound(y_.begin(), y_.end(), rho2) - y_.begin()) - 1);
     const Cell& c = cells_[j * nx + i];
     if (c.covered) return Verdict::Overlapping;
     Verdict v = Verdict::Separated;  // the most of the candidates' (Separated < Touching < Overlapping)
@@ -128,8 +135,8 @@ Verdict CompoundLocator::verdict(double rho1, double rho2, filter::PredicateStat
     return v;
 }
 
-std::vector<Verdict> CompoundLocator::classify(const std::vector<double>& rho1, const std::vector<double>& rho2, unsigned threads,
-                                                   filter::PredicateStats* stats) const {
+std::vector<Verdict> CompoundLocator::classify(const std::vector<double>& rho1, const std::vector<double>& rho2,
+                                               unsigned threads, filter::PredicateStats* stats) const {
     if (rho1.size() != rho2.size()) throw InputError("classify: rho1 and rho2 differ in length");
     std::vector<Verdict> out(rho1.size());
     threads = std::max(1u, threads);
@@ -153,9 +160,12 @@ int CompoundLocator::grid_for(const CompoundRegion& r) {
 CompoundLocator::Counts CompoundLocator::counts() const {
     Counts c;
     for (const Cell& x : cells_) {
-        if (x.covered) ++c.covered;
-        else if (x.count == 0) ++c.clear;
-        else ++c.mixed;
+        if (x.covered)
+            ++c.covered;
+        else if (x.count == 0)
+            ++c.clear;
+        else
+            ++c.mixed;
         c.candidates += x.count;
     }
     return c;

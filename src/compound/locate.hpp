@@ -23,7 +23,7 @@
 namespace scalecert::internal {
 
 class CompoundLocator {
-public:
+  public:
     // G × G cells (G >= 1). The region r must outlive the locator.
     CompoundLocator(const CompoundRegion& r, const Q lo[2], const Q hi[2], int G);
     // The grid the command and the bench use: about twice as many cells as the polygons' corners,
@@ -34,11 +34,13 @@ public:
     Verdict verdict(double rho1, double rho2, filter::PredicateStats& stats) const;
     // The verdicts of many pairs on `threads` threads; the half-plane statistics summed.
     std::vector<Verdict> classify(const std::vector<double>& rho1, const std::vector<double>& rho2, unsigned threads,
-                                      filter::PredicateStats* stats = nullptr) const;
-    struct Counts { long covered = 0, clear = 0, mixed = 0, candidates = 0; };
+                                  filter::PredicateStats* stats = nullptr) const;
+    struct Counts {
+        long covered = 0, clear = 0, mixed = 0, candidates = 0;
+    };
     Counts counts() const;
 
-private:
+  private:
     struct Cell {
         std::uint32_t first = 0, count = 0;  // candidate pairs in cand_
         bool covered = false;
@@ -48,8 +50,8 @@ private:
     Q lo_[2], hi_[2];
     double lo_up_[2], hi_down_[2];  // the smallest double >= lo, the largest <= hi: a double x lies
                                     // in [lo, hi] iff lo_up <= x <= hi_down
-    std::vector<double> x_, y_;  // grid lines, increasing: x_[0] <= lo1, x_.back() >= hi1
-    std::vector<Cell> cells_;    // row-major: cell (i, j) at j * (x_.size() - 1) + i
+    std::vector<double> x_, y_;     // grid lines, increasing: x_[0] <= lo1, x_.back() >= hi1
+    std::vector<Cell> cells_;       // row-major: cell (i, j) at j * (x_.size() - 1) + i
     std::vector<std::uint32_t> cand_;
     std::vector<bool> only_touches_;  // per pair: some constraint is 0 >= 0 everywhere (never overlapping)
     Verdict pair_verdict(std::uint32_t k, double r1, double r2, filter::PredicateStats& st) const;

@@ -44,7 +44,9 @@ std::vector<Vec3z> minkowski_facet_normals(const Polyhedron& A, const Polyhedron
 namespace {
 using filter::region_double;
 
-struct PointD { double x, y; };
+struct PointD {
+    double x, y;
+};
 std::vector<PointD> doubles(const std::vector<Point2q>& p) {
     std::vector<PointD> d;
     for (const Point2q& v : p) d.push_back({region_double(v[0]), region_double(v[1])});
@@ -78,12 +80,13 @@ std::vector<PointD> cut_d(const std::vector<PointD>& p, const HalfPlane& h, bool
 // on the rectangle, the first candidate whose line holds both its ends (the polygon is the
 // rectangle cut by its edges' half-planes); otherwise the candidates, each dropped (from the last)
 // while the others still give the polygon.
-PairRegion pair_region(const Polyhedron& A, const Polyhedron& B, const Vec3q& s1, const Vec3q& s2, const Q lo[2], const Q hi[2],
-                       filter::PredicateStats* stats) {
+PairRegion pair_region(const Polyhedron& A, const Polyhedron& B, const Vec3q& s1, const Vec3q& s2, const Q lo[2],
+                       const Q hi[2], filter::PredicateStats* stats) {
     filter::PredicateStats local;
     filter::PredicateStats& st = stats ? *stats : local;
     PairRegion r;
-    const std::vector<Point2q> rect = normalize_polygon({{lo[0], lo[1]}, {hi[0], lo[1]}, {hi[0], hi[1]}, {lo[0], hi[1]}});
+    const std::vector<Point2q> rect =
+        normalize_polygon({{lo[0], lo[1]}, {hi[0], lo[1]}, {hi[0], hi[1]}, {lo[0], hi[1]}});
     const Vec3q d = sub(s2, s1);
     for (const Vec3z& n : minkowski_facet_normals(A, B)) {
         const Vec3q nq = to_q(n);
@@ -124,7 +127,8 @@ PairRegion pair_region(const Polyhedron& A, const Polyhedron& B, const Vec3q& s1
     r.polygon = p;
     if (p.size() >= 3) {
         auto on_rect_side = [&](const Point2q& u, const Point2q& v) {
-            return (u[0] == v[0] && (u[0] == lo[0] || u[0] == hi[0])) || (u[1] == v[1] && (u[1] == lo[1] || u[1] == hi[1]));
+            return (u[0] == v[0] && (u[0] == lo[0] || u[0] == hi[0])) ||
+                   (u[1] == v[1] && (u[1] == lo[1] || u[1] == hi[1]));
         };
         for (size_t i = 0; i < p.size(); ++i) {
             const Point2q &u = p[i], &v = p[(i + 1) % p.size()];
@@ -173,10 +177,12 @@ std::vector<RegionPiece> union_of(const std::vector<std::vector<Point2q>>& conve
         RegionPiece r;
         r.outer = ring(ph.outer_boundary());
         for (auto h = ph.holes_begin(); h != ph.holes_end(); ++h) r.holes.push_back(ring(*h));
-        std::sort(r.holes.begin(), r.holes.end(), [](const auto& x, const auto& y) { return lower(x.front(), y.front()); });
+        std::sort(r.holes.begin(), r.holes.end(),
+                  [](const auto& x, const auto& y) { return lower(x.front(), y.front()); });
         out.push_back(std::move(r));
     }
-    std::sort(out.begin(), out.end(), [](const RegionPiece& x, const RegionPiece& y) { return lower(x.outer.front(), y.outer.front()); });
+    std::sort(out.begin(), out.end(),
+              [](const RegionPiece& x, const RegionPiece& y) { return lower(x.outer.front(), y.outer.front()); });
     return out;
 }
 
@@ -197,15 +203,16 @@ std::array<std::array<Q, 2>, 3> bounding_box(const Polyhedron& P) {
 void build_parts(const ExactScene& sc, const std::string& name, std::vector<Polyhedron> (&parts)[2]) {
     const size_t m = std::max<size_t>(1, sc.P[0].parts.size()), n = std::max<size_t>(1, sc.P[1].parts.size());
     if (m * n > kMaxPartPairs)
-        throw InputError(name + ": " + std::to_string(m) + " x " + std::to_string(n) + " part pairs, more than " + std::to_string(kMaxPartPairs) +
-                         " (the limit)");
+        throw InputError(name + ": " + std::to_string(m) + " x " + std::to_string(n) + " part pairs, more than " +
+                         std::to_string(kMaxPartPairs) + " (the limit)");
     const char* pname[2] = {"P1", "P2"};
     for (int i = 0; i < 2; ++i) {
         const PolyInput& in = sc.P[i];
         const std::vector<std::vector<Vec3q>> one{in.points};
         const std::vector<std::vector<Vec3q>>& list = in.parts.empty() ? one : in.parts;
         for (size_t k = 0; k < list.size(); ++k) {
-            const std::string part = in.parts.empty() ? std::string(pname[i]) : std::string(pname[i]) + ".parts[" + std::to_string(k) + "]";
+            const std::string part =
+                in.parts.empty() ? std::string(pname[i]) : std::string(pname[i]) + ".parts[" + std::to_string(k) + "]";
             parts[i].push_back(build_polyhedron(list[k], name + ": " + part));
         }
     }
@@ -218,7 +225,8 @@ std::array<std::array<Q, 2>, 3> swept_box(const Polyhedron& P, const Vec3q& s, c
     std::array<std::array<Q, 2>, 3> b = bounding_box(P);
     for (size_t c = 0; c < 3; ++c) {
         const Q m = b[c][0], M = b[c][1];
-        const Q a = s[c] + lo * (m - s[c]), bb = s[c] + hi * (m - s[c]), e = s[c] + lo * (M - s[c]), f = s[c] + hi * (M - s[c]);
+        const Q a = s[c] + lo * (m - s[c]), bb = s[c] + hi * (m - s[c]), e = s[c] + lo * (M - s[c]),
+                f = s[c] + hi * (M - s[c]);
         b[c] = {std::min(a, bb), std::max(e, f)};
     }
     return b;
@@ -229,7 +237,8 @@ CompoundRegion compound_region(const ExactScene& sc, const std::string& name, bo
     StageClock clock;
     for (int i = 0; i < 2; ++i)
         if (sc.lo[i] == sc.hi[i])
-            throw InputError(name + ": I" + std::to_string(i + 1) + " has no width (lo = hi): the region is a set in the plane of (rho1, rho2), "
+            throw InputError(name + ": I" + std::to_string(i + 1) +
+                             " has no width (lo = hi): the region is a set in the plane of (rho1, rho2), "
                              "so region needs I1 and I2 with lo < hi");
     const size_t m = std::max<size_t>(1, sc.P[0].parts.size()), n = std::max<size_t>(1, sc.P[1].parts.size());
     CompoundRegion r;
@@ -246,7 +255,9 @@ CompoundRegion compound_region(const ExactScene& sc, const std::string& name, bo
     for (size_t a = 0; a < m; ++a)
         for (size_t b = 0; b < n; ++b) {
             for (int c = 0; c < 3; ++c) {
-                const int side = boxes[0][a][c][1] < boxes[1][b][c][0] ? 1 : boxes[1][b][c][1] < boxes[0][a][c][0] ? -1 : 0;
+                const int side = boxes[0][a][c][1] < boxes[1][b][c][0]   ? 1
+                                 : boxes[1][b][c][1] < boxes[0][a][c][0] ? -1
+                                                                         : 0;
                 if (side) {
                     r.prune[a * n + b] = static_cast<std::uint8_t>(1 + 2 * c + (side > 0));
                     break;
@@ -261,15 +272,18 @@ CompoundRegion compound_region(const ExactScene& sc, const std::string& name, bo
             work += static_cast<double>(parts[0][a].edges.size()) * static_cast<double>(parts[1][b].edges.size());
         }
     if (static_cast<size_t>(r.built) > kMaxBuiltPairs)
-        throw InputError(name + ": " + std::to_string(r.built) + " part pairs can meet in I1 x I2 (their swept boxes meet), more than " +
+        throw InputError(name + ": " + std::to_string(r.built) +
+                         " part pairs can meet in I1 x I2 (their swept boxes meet), more than " +
                          std::to_string(kMaxBuiltPairs) + " (the limit)");
     if (work > kMaxEdgePairWork)
-        throw InputError(name + ": the part pairs that can meet have " + std::to_string(static_cast<long long>(work)) +
-                         " edge pairs in all, more than 2*10^7 (the limit: each pair's facet normals grow with its edge pairs)");
+        throw InputError(
+            name + ": the part pairs that can meet have " + std::to_string(static_cast<long long>(work)) +
+            " edge pairs in all, more than 2*10^7 (the limit: each pair's facet normals grow with its edge pairs)");
     // The built pairs, on every core: each thread with its own copies of the parts (a part's
     // predicate statistics are written by its support queries), each pair's result in its slot.
     const Vec3q &s1 = sc.P[0].seed, &s2 = sc.P[1].seed;
-    const unsigned threads = static_cast<unsigned>(std::min<size_t>(default_threads(), std::max<size_t>(1, todo.size() / 8)));
+    const unsigned threads =
+        static_cast<unsigned>(std::min<size_t>(default_threads(), std::max<size_t>(1, todo.size() / 8)));
     std::vector<std::vector<Polyhedron>> copies[2];
     for (int i = 0; i < 2; ++i) copies[i].assign(threads > 1 ? threads : 0, parts[i]);
     std::vector<filter::PredicateStats> stats(threads);
@@ -295,9 +309,12 @@ CompoundRegion compound_region(const ExactScene& sc, const std::string& name, bo
     }
     clock.lap("pair polygons");
     if (with_union) {
-        const size_t with_area = static_cast<size_t>(std::count_if(polys.begin(), polys.end(), [](const auto& p) { return p.size() >= 3; }));
-        if (with_area <= kMaxUnionPolygons) r.region = union_of(polys);
-        else r.union_skipped = true;
+        const size_t with_area =
+            static_cast<size_t>(std::count_if(polys.begin(), polys.end(), [](const auto& p) { return p.size() >= 3; }));
+        if (with_area <= kMaxUnionPolygons)
+            r.region = union_of(polys);
+        else
+            r.union_skipped = true;
         clock.lap("union (CGAL)");
     }
     // The intervals merged: sorted by start (ties: the first pair), each joined with those that

@@ -35,7 +35,8 @@ struct HalfPlane {
     // The sign of a x + b y − c at (x, y), given also as doubles (xd, yd: region_double, or the
     // doubles themselves when x and y are doubles): predicate 8, exactly when its filter cannot tell.
     int side(const Q& x, const Q& y, double xd, double yd, filter::PredicateStats& st) const {
-        return filter::half_plane_side(ad, bd, cd, xd, yd, [&] { return sgn(Q(a * x + b * y - c)); }, st);
+        return filter::half_plane_side(
+            ad, bd, cd, xd, yd, [&] { return sgn(Q(a * x + b * y - c)); }, st);
     }
 };
 
@@ -51,8 +52,8 @@ struct PairRegion {
     std::vector<HalfPlane> constraints;
     std::vector<size_t> fence;
 };
-PairRegion pair_region(const Polyhedron& A, const Polyhedron& B, const Vec3q& s1, const Vec3q& s2, const Q lo[2], const Q hi[2],
-                       filter::PredicateStats* stats = nullptr);
+PairRegion pair_region(const Polyhedron& A, const Polyhedron& B, const Vec3q& s1, const Vec3q& s2, const Q lo[2],
+                       const Q hi[2], filter::PredicateStats* stats = nullptr);
 
 // The facet normals of A ⊕ (−B) (the Gauss-map overlay of contact_lines.hpp), primitive.
 std::vector<Vec3z> minkowski_facet_normals(const Polyhedron& A, const Polyhedron& B);
@@ -79,7 +80,7 @@ struct CompoundRegion {
         std::vector<size_t> fence;           // PairRegion::fence
     };
     std::vector<Polyhedron> parts[2];  // each object's parts (a plain object: itself)
-    std::vector<Pair> pairs;  // the built pairs, part1-major
+    std::vector<Pair> pairs;           // the built pairs, part1-major
     // For every part pair (part1-major, a byte each): 0 when built, else 1 + 2c + (s > 0) when
     // pruned, c the axis on which the swept boxes are apart and s = +1 when part 1's lies below
     // (normal e_c), −1 when above (normal −e_c).
@@ -104,7 +105,7 @@ std::array<std::array<Q, 2>, 3> bounding_box(const Polyhedron& P);
 // zero-width range (the region is a set of the plane) and for a flat part.
 constexpr std::size_t kMaxPartPairs = 10000000;     // part pairs in all (a byte each, a box test each)
 constexpr std::size_t kMaxBuiltPairs = 20000;       // pairs whose swept boxes meet (each built exactly)
-constexpr double kMaxEdgePairWork = kMaxEdgePairs;            // over the built pairs, Σ edges(A) × edges(B)
+constexpr double kMaxEdgePairWork = kMaxEdgePairs;  // over the built pairs, Σ edges(A) × edges(B)
 // The union (`region`) is formed only when asked and of at most kMaxUnionPolygons polygons with
 // area: its cost grows with the crossings of their boundaries, up to the square of their edges
 // (1,545 crossing strips took 47 s and 1.7 GB, and more ran out of

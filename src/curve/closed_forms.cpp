@@ -63,12 +63,18 @@ ClosedSwitch closed_form_switch(const Model& m, const ContactLine& left, const C
     ClosedSwitch s;
     s.rho1 = (B.beta * A.gamma - A.beta * B.gamma) / (A.alpha * B.gamma - B.alpha * A.gamma);
     int ka = kind(left.contact), kb = kind(right.contact);
-    if (ka == 3 && kb == 3) s.equation = "(4)";
-    else if (ka == 1 && kb == 1) s.equation = "(5)";
-    else if (ka == 2 && kb == 2) s.equation = "(5) P1,P2 exchanged";
-    else if ((ka == 1 && kb == 3) || (ka == 3 && kb == 1)) s.equation = "(a)";
-    else if ((ka == 2 && kb == 3) || (ka == 3 && kb == 2)) s.equation = "(a) P1,P2 exchanged";
-    else s.equation = "(i) F,V = (i) V,F";
+    if (ka == 3 && kb == 3)
+        s.equation = "(4)";
+    else if (ka == 1 && kb == 1)
+        s.equation = "(5)";
+    else if (ka == 2 && kb == 2)
+        s.equation = "(5) P1,P2 exchanged";
+    else if ((ka == 1 && kb == 3) || (ka == 3 && kb == 1))
+        s.equation = "(a)";
+    else if ((ka == 2 && kb == 3) || (ka == 3 && kb == 2))
+        s.equation = "(a) P1,P2 exchanged";
+    else
+        s.equation = "(i) F,V = (i) V,F";
     return s;
 }
 

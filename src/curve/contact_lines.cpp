@@ -20,7 +20,9 @@ char feature_letter(size_t n) { return n == 1 ? 'V' : n == 2 ? 'E' : 'F'; }
 namespace {
 // In integers: with S1 = max n·x over P1's scaled points and S2 = max −n·x over P2's (x·scale_i),
 //   h1 = H1 / (scale_1·sden_1),  h2 = H2 / (scale_2·sden_2),  n·d = ND / dden.
-struct Numerators { Z H1, H2, ND; };
+struct Numerators {
+    Z H1, H2, ND;
+};
 Numerators numerators(const Model& m, const Vec3z& n, const Z& S1, const Z& S2) {
     return {S1 * m.sden[0] - dotz(n, m.sz[0]), S2 * m.sden[1] + dotz(n, m.sz[1]), dotz(n, m.dz)};
 }
@@ -34,7 +36,11 @@ ContactLine make_line(const Model& m, const Vec3z& n, std::vector<int> feat1, st
     L.feat2 = std::move(feat2);
     const auto [H1, H2, ND] = numerators(m, n, sup1, sup2);
     const Z D1 = m.P[0].scale * m.sden[0], D2 = m.P[1].scale * m.sden[1];
-    auto frac = [](const Z& p, const Z& q) { Q r(p, q); r.canonicalize(); return r; };
+    auto frac = [](const Z& p, const Z& q) {
+        Q r(p, q);
+        r.canonicalize();
+        return r;
+    };
     L.h1 = frac(H1, D1);
     L.h2 = frac(H2, D2);
     L.nd = frac(ND, m.dden);
@@ -60,7 +66,7 @@ std::vector<size_t> undominated(const std::vector<double>& a, const std::vector<
     // Predicate 3 (predicates.hpp): margins of kDominatedRel below and above each value.
     using filter::dominated_lower, filter::dominated_upper;
     double bmax_lower = -INFINITY;  // the largest certain lower bound of those lines' intercepts
-    size_t j = 0;  // lines by_slope[0..j) have a slope certainly larger than the current line's
+    size_t j = 0;                   // lines by_slope[0..j) have a slope certainly larger than the current line's
     for (size_t k = 0; k < by_slope.size(); ++k) {
         size_t i = by_slope[k];
         while (j < k && dominated_lower(a[by_slope[j]]) > dominated_upper(a[i])) {
@@ -73,7 +79,6 @@ std::vector<size_t> undominated(const std::vector<double>& a, const std::vector<
     std::sort(keep.begin(), keep.end());
     return keep;
 }
-
 
 namespace {
 
@@ -108,7 +113,10 @@ int cross_sign(const Vec3z& a, const Vec3z& b, int k) {
 // oriented so that from × to is a positive multiple of it (the normal of the arc's plane; the
 // edge is perpendicular to both faces' normals, and far smaller than their cross product).
 template <class V>
-struct EdgeArc { V from, to, p; D3 fd, td, pd; };
+struct EdgeArc {
+    V from, to, p;
+    D3 fd, td, pd;
+};
 
 template <class V>
 std::vector<EdgeArc<V>> edge_arcs(const Polyhedron& P, bool negate) {
@@ -140,7 +148,8 @@ std::vector<V> facet_normals(const HullModel& m, LineStats& st) {
     const V* tag = nullptr;
     std::vector<V> normals;
     for (size_t f = 0; f < m.P[0].faces.size(); ++f) normals.push_back(face_normal(m.P[0], static_cast<int>(f), tag));
-    for (size_t f = 0; f < m.P[1].faces.size(); ++f) normals.push_back(vneg(face_normal(m.P[1], static_cast<int>(f), tag)));
+    for (size_t f = 0; f < m.P[1].faces.size(); ++f)
+        normals.push_back(vneg(face_normal(m.P[1], static_cast<int>(f), tag)));
     st.face_normals = normals.size();
     const auto A = edge_arcs<V>(m.P[0], false), B = edge_arcs<V>(m.P[1], true);
     std::vector<Arc> arcs_a(A.size()), arcs_b(B.size());
@@ -226,13 +235,15 @@ void add_lines(HullModel& m, const std::vector<V>& normals) {
         if constexpr (std::is_same_v<V, Vec3s>) {
             if (seeds128) {
                 // H1 = S1·sden1 − n·sz1, H2 = S2·sden2 + n·sz2, ND = n·dz, overflow-checked.
-                const I128 S1 = dot_s(n, m.P[0].ipts_s[m.P[0].climb(n)]), S2 = dot_s(mn, m.P[1].ipts_s[m.P[1].climb(mn)]);
+                const I128 S1 = dot_s(n, m.P[0].ipts_s[m.P[0].climb(n)]),
+                           S2 = dot_s(mn, m.P[1].ipts_s[m.P[1].climb(mn)]);
                 filter::Acc128 h1, h2, nd;
                 h1.add(S1, sden0);
                 h2.add(S2, sden1);
                 for (int k = 0; k < 3; ++k) h1.sub(n[k], sz0[k]), h2.add(n[k], sz1[k]), nd.add(n[k], dz[k]);
                 if (h1.ok() && h2.ok() && nd.ok())
-                    H1 = static_cast<double>(h1.value()), H2 = static_cast<double>(h2.value()), ND = static_cast<double>(nd.value()), done = true;
+                    H1 = static_cast<double>(h1.value()), H2 = static_cast<double>(h2.value()),
+                    ND = static_cast<double>(nd.value()), done = true;
             }
         }
         if (done) {
@@ -243,7 +254,8 @@ void add_lines(HullModel& m, const std::vector<V>& normals) {
             // from inf in a denominator once dropped a line of the curve), so the ratios are
             // formed from mantissas and exponents, NaN outside the double range.
             const Vec3z nz = as_z(n), mz = neg(nz);
-            const Numerators u = numerators(m, nz, dotz(nz, m.P[0].ipts[m.P[0].climb(nz)]), dotz(mz, m.P[1].ipts[m.P[1].climb(mz)]));
+            const Numerators u =
+                numerators(m, nz, dotz(nz, m.P[0].ipts[m.P[0].climb(nz)]), dotz(mz, m.P[1].ipts[m.P[1].climb(mz)]));
             sa[idx] = -ratio(u.H1, Dz2, u.H2, Dz1);
             sb[idx] = ratio(u.ND, Dz2, m.dden, u.H2);
         }

@@ -17,11 +17,11 @@ namespace scalecert::internal {
 class PointSets;  // geometry/point_sets.hpp
 
 struct ContactLine {
-    Vec3z normal;                 // primitive, pointing from P1 towards P2
-    Q h1, h2, nd;                 // h1 = max n·(v−s1), h2 = max −n·(w−s2), nd = n·d; h1, h2 > 0
-    Q slope, intercept;           // slope = −h1/h2 < 0, intercept = nd/h2
+    Vec3z normal;                   // primitive, pointing from P1 towards P2
+    Q h1, h2, nd;                   // h1 = max n·(v−s1), h2 = max −n·(w−s2), nd = n·d; h1, h2 > 0
+    Q slope, intercept;             // slope = −h1/h2 < 0, intercept = nd/h2
     std::vector<int> feat1, feat2;  // contact features: maximisers of n on P1, of −n on P2
-    std::string contact;          // "FV", "VF", "EE", "FF", "FE", "EF"
+    std::string contact;            // "FV", "VF", "EE", "FF", "FE", "EF"
     Q at(const Q& rho1) const { return slope * rho1 + intercept; }
 };
 
@@ -40,7 +40,7 @@ struct ScanStats {
     // scan_support: points whose double value was formed and ruled out (filtered), candidates
     // then formed exactly (exact)
     filter::PredicateStats predicates;
-    std::uint64_t lp_solves = 0, lp_rows = 0;               // the start: exact LPs and their final size
+    std::uint64_t lp_solves = 0, lp_rows = 0;  // the start: exact LPs and their final size
     std::uint64_t gift_wrap_steps = 0, pieces_walked = 0;
 };
 
@@ -48,7 +48,7 @@ struct Model {
     ExactScene scene;  // on the scan path: seeds and ranges only (the points are in `scan`)
     Polyhedron P[2];
     Vec3q s[2];
-    Vec3q d;  // s2 − s1
+    Vec3q d;                         // s2 − s1
     std::vector<ContactLine> lines;  // sorted by normal
     LineStats stats;
     // The seeds and d in integers, for fast support values: s_i·scale_i = sz[i] / sden[i] and

@@ -66,7 +66,10 @@ size_t Envelope::locate(const Q& x) const {
     size_t lo = 0, hi = pieces.size() - 1;
     while (lo < hi) {
         size_t mid = (lo + hi) / 2;
-        if (*pieces[mid].to > x) hi = mid; else lo = mid + 1;
+        if (*pieces[mid].to > x)
+            hi = mid;
+        else
+            lo = mid + 1;
     }
     return lo;
 }
@@ -75,7 +78,8 @@ Q Envelope::value(const std::vector<ContactLine>& lines, const Q& x) const {
     return lines[pieces[locate(x)].line].at(x);
 }
 
-ContactFeatures contact_on_line(const Vec3z& u, const std::vector<int> A[2], const std::function<Vec3q(int, int)>& scaled) {
+ContactFeatures contact_on_line(const Vec3z& u, const std::vector<int> A[2],
+                                const std::function<Vec3q(int, int)>& scaled) {
     // The vertices A_i of P_i maximising both normals scale onto the common line, direction u,
     // and span a segment S_i; the touching set is S_1 ∩ S_2, and the contact feature of P_i is the
     // smallest face holding it: S_i (an edge) when the touching set reaches into S_i's interior,
@@ -129,12 +133,15 @@ ContactFeatures piece_contact(const Model& m, const EnvPiece& e) {
     c.feat2 = m.lines[e.same.front()].feat2;
     for (size_t k : e.same) {
         std::vector<int> a, b;
-        std::set_intersection(c.feat1.begin(), c.feat1.end(), m.lines[k].feat1.begin(), m.lines[k].feat1.end(), std::back_inserter(a));
-        std::set_intersection(c.feat2.begin(), c.feat2.end(), m.lines[k].feat2.begin(), m.lines[k].feat2.end(), std::back_inserter(b));
+        std::set_intersection(c.feat1.begin(), c.feat1.end(), m.lines[k].feat1.begin(), m.lines[k].feat1.end(),
+                              std::back_inserter(a));
+        std::set_intersection(c.feat2.begin(), c.feat2.end(), m.lines[k].feat2.begin(), m.lines[k].feat2.end(),
+                              std::back_inserter(b));
         c.feat1 = std::move(a);
         c.feat2 = std::move(b);
     }
-    if (c.feat1.empty() || c.feat2.empty()) throw std::logic_error("piece_contact: identical lines with no common maximiser");
+    if (c.feat1.empty() || c.feat2.empty())
+        throw std::logic_error("piece_contact: identical lines with no common maximiser");
     c.label = {feature_letter(c.feat1.size()), feature_letter(c.feat2.size())};
     return c;
 }
@@ -186,14 +193,17 @@ TouchingCurve build_curve(const Model& m) {
     while (lo_k < hi_k) {
         size_t mid = (lo_k + hi_k) / 2;
         const Q& x = *c.env.pieces[mid].to;
-        if (m.lines[c.env.pieces[mid].line].at(x) <= x) hi_k = mid; else lo_k = mid + 1;
+        if (m.lines[c.env.pieces[mid].line].at(x) <= x)
+            hi_k = mid;
+        else
+            lo_k = mid + 1;
     }
     const ContactLine& G = m.lines[c.env.pieces[lo_k].line];
     c.growth.value = G.intercept / (Q(1) - G.slope);
     c.growth.env = lo_k;
     const ExactScene& s = m.scene;
-    c.growth.in_rectangle = c.growth.value >= s.lo[0] && c.growth.value <= s.hi[0] &&
-                            c.growth.value >= s.lo[1] && c.growth.value <= s.hi[1];
+    c.growth.in_rectangle = c.growth.value >= s.lo[0] && c.growth.value <= s.hi[0] && c.growth.value >= s.lo[1] &&
+                            c.growth.value <= s.hi[1];
     return c;
 }
 

@@ -11,10 +11,10 @@
 namespace scalecert::internal {
 
 struct EnvPiece {
-    size_t line;                 // representative line (smallest normal among identical lines)
-    std::vector<size_t> same;    // every line identical to it (same slope and intercept)
-    Q from;                      // left end (0 for the first piece)
-    std::optional<Q> to;         // right end; none for the last piece (extends to +∞)
+    size_t line;               // representative line (smallest normal among identical lines)
+    std::vector<size_t> same;  // every line identical to it (same slope and intercept)
+    Q from;                    // left end (0 for the first piece)
+    std::optional<Q> to;       // right end; none for the last piece (extends to +∞)
 };
 
 struct Envelope {
@@ -33,7 +33,7 @@ struct ContactFeatures {
 
 struct CurvePiece {
     Q from, to;
-    size_t env;       // index into Envelope::pieces
+    size_t env;               // index into Envelope::pieces
     ContactFeatures contact;  // piece_contact of its envelope piece; empty label if ρ2 ≤ 0 all along it
 };
 
@@ -60,7 +60,8 @@ struct TouchingCurve {
 // The contact where planes of two independent normals both touch: A[i] the vertices of P_i that
 // maximise both (their common face, −n for P2), u the cross product of the normals (the common
 // line's direction), scaled(i, k) vertex k of P_i scaled about its seed to its ρ_i.
-ContactFeatures contact_on_line(const Vec3z& u, const std::vector<int> A[2], const std::function<Vec3q(int, int)>& scaled);
+ContactFeatures contact_on_line(const Vec3z& u, const std::vector<int> A[2],
+                                const std::function<Vec3q(int, int)>& scaled);
 // The contact at a switch point (ρ1, ρ2) between neighbouring pieces on lines L and R: the
 // smallest face of each polyhedron holding the touching set (a vertex or an edge: both planes
 // touch, so the touching set lies on their common line).

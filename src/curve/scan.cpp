@@ -25,8 +25,8 @@ template <class T>
 using Walked = std::variant<T, WalkStop>;
 WalkStop stop(Handover h, int polyhedron = -1) { return {h, polyhedron}; }
 // NAME = the value of EXPR, or return its stop from the enclosing function.
-#define SCALECERT_WALK(name, expr)                                                     \
-    auto name##_walked = (expr);                                                       \
+#define SCALECERT_WALK(name, expr)                                                                \
+    auto name##_walked = (expr);                                                                  \
     if (const WalkStop* name##_stop = std::get_if<WalkStop>(&name##_walked)) return *name##_stop; \
     auto& name = std::get<0>(name##_walked)
 
@@ -72,7 +72,8 @@ Walked<Z> max_over(const IntPoints& P, const std::vector<int>& idx, const Vec3z&
     if (!u.finite) return stop(Handover::NormalBeyondDoubles);
     double maxabs[3] = {0, 0, 0};
     for (int k : idx)
-        for (int c = 0; c < 3; ++c) maxabs[c] = std::max(maxabs[c], std::fabs(static_cast<double>(P.at(static_cast<size_t>(k))[c])));
+        for (int c = 0; c < 3; ++c)
+            maxabs[c] = std::max(maxabs[c], std::fabs(static_cast<double>(P.at(static_cast<size_t>(k))[c])));
     double B = 0;
     for (int c = 0; c < 3; ++c) B += std::fabs(u.d[c]) * maxabs[c];
     const filter::ScanSupportFilter keep(B);
@@ -80,7 +81,8 @@ Walked<Z> max_over(const IntPoints& P, const std::vector<int>& idx, const Vec3z&
     double best = -INFINITY;
     for (size_t i = 0; i < idx.size(); ++i) {
         const std::int64_t* x = P.at(static_cast<size_t>(idx[i]));
-        v[i] = u.d[0] * static_cast<double>(x[0]) + u.d[1] * static_cast<double>(x[1]) + u.d[2] * static_cast<double>(x[2]);
+        v[i] = u.d[0] * static_cast<double>(x[0]) + u.d[1] * static_cast<double>(x[1]) +
+               u.d[2] * static_cast<double>(x[2]);
         best = std::max(best, v[i]);
     }
     std::optional<Z> top;
@@ -100,11 +102,12 @@ struct Support {
 // The points in a bounding-volume tree: each node's box holds its points (kept in tree order,
 // with their doubles beside them, so that a query reads memory in order).
 class Cloud {
-public:
+  public:
     Cloud(const IntPoints& P, ScanStats& st) : P_(P), st_(st) {
         const size_t n = P.size();
         for (int k = 0; k < 3; ++k) maxabs_[k] = 0;
-        for (size_t i = 0; i < 3 * n; ++i) maxabs_[i % 3] = std::max(maxabs_[i % 3], std::fabs(static_cast<double>(P.x[i])));
+        for (size_t i = 0; i < 3 * n; ++i)
+            maxabs_[i % 3] = std::max(maxabs_[i % 3], std::fabs(static_cast<double>(P.x[i])));
         // Points in Morton order (a space-filling curve over their box), then a balanced tree
         // over that order: halves of the order are spatially coherent, and no sort by axis is
         // needed (radix sort of the codes).
@@ -129,7 +132,8 @@ public:
             std::uint64_t code = 0;
             for (int k = 0; k < 3; ++k) {
                 const double span = hi[k] - lo[k];
-                auto c = static_cast<std::uint64_t>(span > 0 ? (static_cast<double>(P.x[3 * i + k]) - lo[k]) / span * 2097151.0 : 0.0);
+                auto c = static_cast<std::uint64_t>(
+                    span > 0 ? (static_cast<double>(P.x[3 * i + k]) - lo[k]) / span * 2097151.0 : 0.0);
                 code |= spread(std::min<std::uint64_t>(c, 2097151)) << k;
             }
             key[i] = code;
@@ -256,7 +260,7 @@ public:
         return static_cast<int>(perm_[at]);
     }
 
-private:
+  private:
     static constexpr std::uint32_t kLeaf = 16;
     struct Node {
         double lo[3], hi[3];
@@ -283,7 +287,8 @@ private:
         if (e - b <= kLeaf) {
             for (int k = 0; k < 3; ++k) nd.lo[k] = INFINITY, nd.hi[k] = -INFINITY;
             for (std::uint32_t i = b; i < e; ++i)
-                for (int k = 0; k < 3; ++k) nd.lo[k] = std::min(nd.lo[k], xd_[3 * i + k]), nd.hi[k] = std::max(nd.hi[k], xd_[3 * i + k]);
+                for (int k = 0; k < 3; ++k)
+                    nd.lo[k] = std::min(nd.lo[k], xd_[3 * i + k]), nd.hi[k] = std::max(nd.hi[k], xd_[3 * i + k]);
         } else {
             const std::uint32_t mid = b + (e - b) / 2;
             nd.left = build(b, mid);
@@ -339,7 +344,8 @@ Polygon support_polygon(const IntPoints& P, const Vec3z& n, const std::vector<in
               pts.end());
     // Coordinates differ by < 2^55: cross products of differences < 2^111.
     auto turn = [&](int o, int a, int b) {
-        const std::int64_t *po = P.at(static_cast<size_t>(o)), *pa = P.at(static_cast<size_t>(a)), *pb = P.at(static_cast<size_t>(b));
+        const std::int64_t *po = P.at(static_cast<size_t>(o)), *pa = P.at(static_cast<size_t>(a)),
+                           *pb = P.at(static_cast<size_t>(b));
         const I128 c = I128(pa[u] - po[u]) * (pb[v] - po[v]) - I128(pa[v] - po[v]) * (pb[u] - po[u]);
         return sgn128(c);
     };
@@ -370,7 +376,7 @@ Polygon support_polygon(const IntPoints& P, const Vec3z& n, const std::vector<in
 // an edge's outward normal is largest on the edge itself: at its two ends, nowhere else.
 struct EdgeNormal {
     Vec3z u;
-    Z top;       // max over the polygon of u·x
+    Z top;  // max over the polygon of u·x
 };
 std::vector<EdgeNormal> edge_normals(const IntPoints& P, const Vec3z& n, const Polygon& g) {
     std::vector<EdgeNormal> out;
@@ -402,12 +408,12 @@ std::vector<EdgeNormal> edge_normals(const IntPoints& P, const Vec3z& n, const P
 struct Piece {
     ContactLine L;
     Polygon F[2];
-    std::optional<Q> lo, hi;  // where d lies in the face: [lo, hi] (none: unbounded)
+    std::optional<Q> lo, hi;              // where d lies in the face: [lo, hi] (none: unbounded)
     std::vector<Vec3z> exit_lo, exit_hi;  // the in-plane normals tight at each end
 };
 
 class Walker {
-public:
+  public:
     Walker(Model& m, const Cloud& c1, const Cloud& c2) : m_(m), C_{&c1, &c2} {}
 
     Walked<Support> support(int i, const Vec3z& n) const { return C_[i]->support(n); }
@@ -421,14 +427,18 @@ public:
         p.F[1] = support_polygon(m_.scan->P[1], n, s2.all);
         p.L = make_line(m_, n, p.F[0].sorted, p.F[1].sorted, s1.value, s2.value);
         // G(x) = x(F1 − s1) + y(x)(s2 − F2) is two-dimensional only for a facet normal.
-        const bool face2 = p.F[0].cycle.size() >= 3 || p.F[1].cycle.size() >= 3 ||
-                           (p.F[0].cycle.size() == 2 && p.F[1].cycle.size() == 2 &&
-                            !is_zero(cross(sub(zpoint(m_.scan->P[0], p.F[0].cycle[1]), zpoint(m_.scan->P[0], p.F[0].cycle[0])),
-                                           sub(zpoint(m_.scan->P[1], p.F[1].cycle[1]), zpoint(m_.scan->P[1], p.F[1].cycle[0])))));
+        const bool face2 =
+            p.F[0].cycle.size() >= 3 || p.F[1].cycle.size() >= 3 ||
+            (p.F[0].cycle.size() == 2 && p.F[1].cycle.size() == 2 &&
+             !is_zero(cross(sub(zpoint(m_.scan->P[0], p.F[0].cycle[1]), zpoint(m_.scan->P[0], p.F[0].cycle[0])),
+                            sub(zpoint(m_.scan->P[1], p.F[1].cycle[1]), zpoint(m_.scan->P[1], p.F[1].cycle[0])))));
         if (!face2) return stop(Handover::NotFacetNormal);
         // d ∈ G(x) iff for every in-plane edge normal u of either summand:
         //   x·max_{F1} u·(p − s1) + y(x)·max_{F2} u·(s2 − w) ≥ u·d,  y(x) = a·x + b.
-        struct Con { Vec3z u; Q k, c; };
+        struct Con {
+            Vec3z u;
+            Q k, c;
+        };
         std::vector<Con> cons;
         const Q S1 = Q(m_.scan->P[0].scale), S2 = Q(m_.scan->P[1].scale);
         for (int i = 0; i < 2; ++i) {
@@ -444,7 +454,8 @@ public:
                 // The other summand's maximum of u: max u·(x − s1) = max u·X / S1 − u·s1 over F1,
                 // max u·(s2 − x) = u·s2 + max (−u)·X / S2 over F2.
                 const int j = 1 - i;
-                SCALECERT_WALK(top, j == 0 ? max_over(m_.scan->P[0], p.F[0].cycle, u) : max_over(m_.scan->P[1], p.F[1].cycle, neg(u)));
+                SCALECERT_WALK(top, j == 0 ? max_over(m_.scan->P[0], p.F[0].cycle, u)
+                                           : max_over(m_.scan->P[1], p.F[1].cycle, neg(u)));
                 const Q other = j == 0 ? Q(Q(top) / S1 - dot(uu, m_.s[0])) : Q(dot(uu, m_.s[1]) + Q(top) / S2);
                 const Q A = i == 0 ? h : other, Bv = i == 0 ? other : h;
                 cons.push_back({u, A + p.L.slope * Bv, p.L.intercept * Bv - dot(uu, m_.d)});
@@ -459,11 +470,15 @@ public:
             }
             const Q r = -c.c / c.k;
             if (sgn(c.k) > 0) {
-                if (!p.lo || r > *p.lo) p.lo = r, p.exit_lo.assign(1, c.u);
-                else if (r == *p.lo) p.exit_lo.push_back(c.u);
+                if (!p.lo || r > *p.lo)
+                    p.lo = r, p.exit_lo.assign(1, c.u);
+                else if (r == *p.lo)
+                    p.exit_lo.push_back(c.u);
             } else {
-                if (!p.hi || r < *p.hi) p.hi = r, p.exit_hi.assign(1, c.u);
-                else if (r == *p.hi) p.exit_hi.push_back(c.u);
+                if (!p.hi || r < *p.hi)
+                    p.hi = r, p.exit_hi.assign(1, c.u);
+                else if (r == *p.hi)
+                    p.exit_hi.push_back(c.u);
             }
         }
         if (p.lo && p.hi && *p.lo >= *p.hi) return stop(Handover::ZeroLengthPiece);
@@ -483,8 +498,10 @@ public:
             if (have[i][static_cast<size_t>(k)]) return false;
             have[i][static_cast<size_t>(k)] = 1;
             const Vec3q v = sub(m_.pt(i, static_cast<size_t>(k)), m_.s[i]);
-            if (i == 0) A.push_back({x * v[0], x * v[1], x * v[2], Q(1)}), b.push_back(Q(0));
-            else A.push_back({-v[0], -v[1], -v[2], Q(0)}), b.push_back(Q(1));
+            if (i == 0)
+                A.push_back({x * v[0], x * v[1], x * v[2], Q(1)}), b.push_back(Q(0));
+            else
+                A.push_back({-v[0], -v[1], -v[2], Q(0)}), b.push_back(Q(1));
             return true;
         };
         for (int i = 0; i < 2; ++i)
@@ -561,13 +578,14 @@ public:
         SCALECERT_WALK(q, piece(nn));
         if (q.L.at(x) != y) return stop(Handover::MissesSwitch);
         if (right ? !(q.L.slope > p.L.slope) : !(q.L.slope < p.L.slope)) return stop(Handover::NoTurn);
-        const bool covers = right ? (!q.lo || *q.lo <= x) && (!q.hi || *q.hi > x) : (!q.hi || *q.hi >= x) && (!q.lo || *q.lo < x);
+        const bool covers =
+            right ? (!q.lo || *q.lo <= x) && (!q.hi || *q.hi > x) : (!q.hi || *q.hi >= x) && (!q.lo || *q.lo < x);
         if (!covers) return stop(Handover::NoContinuation);
         ++m_.scan_stats.pieces_walked;
         return std::move(q);
     }
 
-private:
+  private:
     // Rotating the plane of normal n (support vertex a) about t = n × o towards o: the first
     // normal at which another point of polyhedron i reaches the plane, if within a quarter turn.
     Walked<std::optional<Vec3z>> wrap(int i, const Vec3z& n, const Vec3z& o, int a) {
@@ -637,7 +655,7 @@ std::vector<int> extreme_points(const IntPoints& P) {
         const std::int64_t *p = P.at(k), x = p[0], y = p[1], z = p[2];
         const std::int64_t v[7] = {x, y, z, x + y + z, x + y - z, x - y + z, x - y - z};
         for (int d = 0; d < 7; ++d) {
-            if (v[d] > best[d][0]) best[d][0] = v[d], arg[d][0] = static_cast<int>(k);  // + direction
+            if (v[d] > best[d][0]) best[d][0] = v[d], arg[d][0] = static_cast<int>(k);    // + direction
             if (-v[d] > best[d][1]) best[d][1] = -v[d], arg[d][1] = static_cast<int>(k);  // − direction
         }
     }
@@ -658,14 +676,16 @@ std::pair<std::unique_ptr<Cloud>, std::unique_ptr<Cloud>> internal_trees(const C
 
 bool scan_seeds_proved(const CompactScene& sc) {
     for (int i = 0; i < 2; ++i)
-        if (sc.P[i].size() < 4 || sc.P[i].size() > kMaxPoints || !strictly_inside_few(sc.P[i], extreme_points(sc.P[i]), sc.seed[i]))
+        if (sc.P[i].size() < 4 || sc.P[i].size() > kMaxPoints ||
+            !strictly_inside_few(sc.P[i], extreme_points(sc.P[i]), sc.seed[i]))
             return false;
     return true;
 }
 
 std::vector<std::pair<int, Q>> scan_seed_weights(const CompactScene& sc, int i) {
     const std::vector<int> W = extreme_points(sc.P[i]);
-    if (!strictly_inside_few(sc.P[i], W, sc.seed[i])) throw std::logic_error("scan_seed_weights: seed not proved inside");
+    if (!strictly_inside_few(sc.P[i], W, sc.seed[i]))
+        throw std::logic_error("scan_seed_weights: seed not proved inside");
     std::vector<Vec3q> A;
     for (int k : W) A.push_back(sc.P[i].point(static_cast<size_t>(k)));
     const auto cp = interior_common_point(A, {sc.seed[i]});
@@ -797,7 +817,8 @@ Walked<WalkModel> walk(std::shared_ptr<const CompactScene> sc, const std::option
     if (reaches_zero(right.back())) m.walk_hi.reset();
     for (auto* v : {&left, &right})
         for (Piece& p : *v) m.lines.push_back(std::move(p.L));
-    std::sort(m.lines.begin(), m.lines.end(), [](const ContactLine& a, const ContactLine& b) { return a.normal < b.normal; });
+    std::sort(m.lines.begin(), m.lines.end(),
+              [](const ContactLine& a, const ContactLine& b) { return a.normal < b.normal; });
     for (size_t i = 1; i < m.lines.size(); ++i)
         if (m.lines[i].normal == m.lines[i - 1].normal) return stop(Handover::NormalTwice);
     m.stats.distinct_normals = m.lines.size();
@@ -813,30 +834,30 @@ Walked<WalkModel> walk(std::shared_ptr<const CompactScene> sc, const std::option
 
 const char* handover_text(Handover h) {
     switch (h) {
-        case Handover::PointCount: return "point count";
-        case Handover::Range: return "range";
-        case Handover::SeedsCoincide: return "the seeds coincide";
-        case Handover::SeedNotProved: return "seed not proved inside";
-        case Handover::NormalBeyondDoubles: return "a normal beyond the double range";
-        case Handover::ZeroOrHugeNormal: return "a zero or huge normal";
-        case Handover::CurveNotAbove0: return "the curve is not above 0 near rho1 = 0";
-        case Handover::StartLpNoOptimum: return "the start LP has no optimum";
-        case Handover::StartLpUnsettled: return "the start LP did not converge";
-        case Handover::StartFaceMissesD: return "the start face does not hold d";
-        case Handover::NotFacetNormal: return "a normal that is not a facet normal of the sum";
-        case Handover::FaceNeverHoldsD: return "a face that never holds d";
-        case Handover::IdenticalLines: return "d on a face's edge all along a piece (identical lines)";
-        case Handover::ZeroLengthPiece: return "a piece of zero length";
-        case Handover::NoExitEdge: return "no exit edge";
-        case Handover::CornerAtSwitch: return "d at a corner of a face at a switch point";
-        case Handover::NoNeighbour: return "no neighbouring face within a quarter turn";
-        case Handover::ReachesZero: return "the curve reaches rho2 <= 0";
-        case Handover::MissesSwitch: return "the next line misses the switch point";
-        case Handover::NoTurn: return "the next line does not turn the curve";
-        case Handover::NoContinuation: return "the next piece does not continue the curve";
-        case Handover::WrapOnOldPlane: return "gift wrapping met a point on the old plane";
-        case Handover::WrapUnsettled: return "gift wrapping did not settle";
-        case Handover::NormalTwice: return "a normal walked twice";
+    case Handover::PointCount: return "point count";
+    case Handover::Range: return "range";
+    case Handover::SeedsCoincide: return "the seeds coincide";
+    case Handover::SeedNotProved: return "seed not proved inside";
+    case Handover::NormalBeyondDoubles: return "a normal beyond the double range";
+    case Handover::ZeroOrHugeNormal: return "a zero or huge normal";
+    case Handover::CurveNotAbove0: return "the curve is not above 0 near rho1 = 0";
+    case Handover::StartLpNoOptimum: return "the start LP has no optimum";
+    case Handover::StartLpUnsettled: return "the start LP did not converge";
+    case Handover::StartFaceMissesD: return "the start face does not hold d";
+    case Handover::NotFacetNormal: return "a normal that is not a facet normal of the sum";
+    case Handover::FaceNeverHoldsD: return "a face that never holds d";
+    case Handover::IdenticalLines: return "d on a face's edge all along a piece (identical lines)";
+    case Handover::ZeroLengthPiece: return "a piece of zero length";
+    case Handover::NoExitEdge: return "no exit edge";
+    case Handover::CornerAtSwitch: return "d at a corner of a face at a switch point";
+    case Handover::NoNeighbour: return "no neighbouring face within a quarter turn";
+    case Handover::ReachesZero: return "the curve reaches rho2 <= 0";
+    case Handover::MissesSwitch: return "the next line misses the switch point";
+    case Handover::NoTurn: return "the next line does not turn the curve";
+    case Handover::NoContinuation: return "the next piece does not continue the curve";
+    case Handover::WrapOnOldPlane: return "gift wrapping met a point on the old plane";
+    case Handover::WrapUnsettled: return "gift wrapping did not settle";
+    case Handover::NormalTwice: return "a normal walked twice";
     }
     return "unknown";
 }

@@ -39,18 +39,18 @@ enum class Handover : int {
     StartFaceMissesD,     // the start piece does not hold d at its ρ1
     NotFacetNormal,       // a normal that is not a facet normal of the Minkowski sum
     FaceNeverHoldsD,
-    IdenticalLines,       // d on a face's edge all along a piece
+    IdenticalLines,  // d on a face's edge all along a piece
     ZeroLengthPiece,
     NoExitEdge,
-    CornerAtSwitch,       // d at a corner of a face at a switch point
-    NoNeighbour,          // no neighbouring face within a quarter turn
-    ReachesZero,          // the curve reaches ρ2 <= 0 at a switch point
-    MissesSwitch,         // the next line misses the switch point
-    NoTurn,               // the next line does not turn the curve
-    NoContinuation,       // the next piece does not continue the curve
-    WrapOnOldPlane,       // gift wrapping met a point on the old plane
-    WrapUnsettled,        // gift wrapping did not settle in 200 steps
-    NormalTwice,          // a normal walked twice
+    CornerAtSwitch,  // d at a corner of a face at a switch point
+    NoNeighbour,     // no neighbouring face within a quarter turn
+    ReachesZero,     // the curve reaches ρ2 <= 0 at a switch point
+    MissesSwitch,    // the next line misses the switch point
+    NoTurn,          // the next line does not turn the curve
+    NoContinuation,  // the next piece does not continue the curve
+    WrapOnOldPlane,  // gift wrapping met a point on the old plane
+    WrapUnsettled,   // gift wrapping did not settle in 200 steps
+    NormalTwice,     // a normal walked twice
 };
 constexpr int kHandoverReasons = static_cast<int>(Handover::NormalTwice) + 1;
 // The reason in words ("d at a corner of a face at a switch point").
@@ -74,14 +74,15 @@ std::vector<std::uint64_t> handover_counts();
 // The walk proves the curve over I1 and the growth distance, and over `cover` too when given
 // (ρ1 > 0 ranges outside I1 that queries need). Where it cannot, the result holds the reason
 // instead of a model; it throws nothing but std::bad_alloc.
-WalkResult scan_model(std::shared_ptr<const CompactScene> sc, const std::optional<std::pair<Q, Q>>& cover = std::nullopt);
+WalkResult scan_model(std::shared_ptr<const CompactScene> sc,
+                      const std::optional<std::pair<Q, Q>>& cover = std::nullopt);
 
 // The points of a compact scene behind the walk's bounding-volume trees, for the measures
 // (measures.hpp) of scenes too large for a hull: every support query exact (filter, then the few
 // candidates in integers), no hull built. Building the trees is linear (a radix sort of Morton
 // codes); argmax scans every point exactly for a normal beyond doubles.
 class CloudPoints final : public PointSets {
-public:
+  public:
     explicit CloudPoints(std::shared_ptr<const CompactScene> sc);
     ~CloudPoints() override;
     Vec3q point(int i, int k) const override;
@@ -91,10 +92,10 @@ public:
     int argmax(int i, const Vec3z& n) const override;
     int dargmax(int i, const D3& d) const override;
     std::uint64_t support_queries() const;  // exact support queries so far
-    struct Trees;                            // the two trees (scan.cpp)
+    struct Trees;                           // the two trees (scan.cpp)
     const Trees& trees() const { return *t_; }
 
-private:
+  private:
     std::shared_ptr<const CompactScene> sc_;
     std::unique_ptr<Trees> t_;
 };
@@ -114,6 +115,8 @@ std::vector<std::pair<int, Q>> scan_seed_weights(const CompactScene& sc, int i);
 // the walk, scalecert-bench --queries).
 constexpr size_t kScanFromPoints = 2000;
 constexpr size_t kScanFromPointProduct = 250000;
-inline bool walk_by_default(size_t n1, size_t n2) { return n1 + n2 >= kScanFromPoints || n1 * n2 >= kScanFromPointProduct; }
+inline bool walk_by_default(size_t n1, size_t n2) {
+    return n1 + n2 >= kScanFromPoints || n1 * n2 >= kScanFromPointProduct;
+}
 
 }  // namespace scalecert::internal

@@ -60,7 +60,8 @@ Vec3q scaled(const PointSets& S, int i, const Q& rho, int k) {
 // Weights > 0 summing to 1 on some of the points `pts` (indices `idx`) that combine to x, which
 // lies in their convex hull: Carathéodory on the QP's support points (at most four a side), each
 // subset solved exactly, largest first.
-std::vector<std::pair<int, Q>> convex_weights(const std::vector<Vec3q>& pts, const std::vector<int>& idx, const Vec3q& x) {
+std::vector<std::pair<int, Q>> convex_weights(const std::vector<Vec3q>& pts, const std::vector<int>& idx,
+                                              const Vec3q& x) {
     const size_t n = pts.size();
     for (size_t size = std::min<size_t>(n, 4); size >= 1; --size)
         for (unsigned mask = 1; mask < (1u << n); ++mask) {
@@ -82,7 +83,10 @@ std::vector<std::pair<int, Q>> convex_weights(const std::vector<Vec3q>& pts, con
             for (size_t c = 0; c < m && !singular; ++c) {
                 size_t piv = c;
                 while (piv < m && sgn(G[piv][c]) == 0) ++piv;
-                if (piv == m) { singular = true; break; }
+                if (piv == m) {
+                    singular = true;
+                    break;
+                }
                 std::swap(G[c], G[piv]);
                 for (size_t r = 0; r < m; ++r) {
                     if (r == c || sgn(G[r][c]) == 0) continue;
@@ -130,7 +134,8 @@ std::optional<ProvedDistance> proved_distance(const PointSets& S, const Q& rho1,
         auto weights = [&](int i, auto b, auto e) {
             std::vector<Vec3q> pts;
             std::vector<int> ids;
-            for (auto it = b; it != e; ++it) pts.push_back(X[i][static_cast<size_t>(*it)]), ids.push_back(idx[i][static_cast<size_t>(*it)]);
+            for (auto it = b; it != e; ++it)
+                pts.push_back(X[i][static_cast<size_t>(*it)]), ids.push_back(idx[i][static_cast<size_t>(*it)]);
             return convex_weights(pts, ids, i == 0 ? d.p1 : d.p2);
         };
         d.w1 = weights(0, pd.support_points_p_indices_begin(), pd.support_points_p_indices_end());

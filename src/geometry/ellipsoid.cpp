@@ -114,7 +114,10 @@ std::optional<EllipsoidPath> ellipsoid_path(const HullModel& m) {
     // min |B1 u + c1 − B2 v − c2| over the unit balls: projected gradient.
     V3 u = (c[1] - c[0]).normalized(), v = -u;
     if (!u.allFinite()) u = V3::UnitX(), v = -u;
-    auto ball = [](V3& x) { double n = x.norm(); if (n > 1) x /= n; };
+    auto ball = [](V3& x) {
+        double n = x.norm();
+        if (n > 1) x /= n;
+    };
     ball(u);
     ball(v);
     double L = 2 * (B[0].squaredNorm() + B[1].squaredNorm()) + 1e-300;

@@ -16,7 +16,9 @@ D3 unit(const D3& d) {
     return {d[0] / l, d[1] / l, d[2] / l};
 }
 
-struct Box { D3 lo, hi; };
+struct Box {
+    D3 lo, hi;
+};
 constexpr double kPad = filter::kArcBoxPad;  // predicates.hpp, bound 6 (its other constants too)
 
 // Bounding box of the arc on the unit sphere: its ends, plus each coordinate's extreme on the
@@ -44,7 +46,8 @@ Box arc_box(const Arc& arc) {
         for (double& c : u) c /= lu;
         for (int s : {1, -1}) {
             D3 x{s * u[0], s * u[1], s * u[2]};
-            if (dotd(crossd(a, x), p) > -filter::kArcExtremeSlack && dotd(crossd(x, b), p) > -filter::kArcExtremeSlack) {
+            if (dotd(crossd(a, x), p) > -filter::kArcExtremeSlack &&
+                dotd(crossd(x, b), p) > -filter::kArcExtremeSlack) {
                 bx.lo[k] = std::min(bx.lo[k], x[k]);
                 bx.hi[k] = std::max(bx.hi[k], x[k]);
             }
@@ -66,7 +69,8 @@ std::array<double, 3> direction_d(const Vec3z& v) {
         if (m[k] != 0) emax = std::max(emax, e[k]);
     }
     D3 d{};
-    for (int k = 0; k < 3; ++k) d[k] = m[k] == 0 ? 0.0 : std::ldexp(m[k], static_cast<int>(std::max(e[k] - emax, -2000L)));
+    for (int k = 0; k < 3; ++k)
+        d[k] = m[k] == 0 ? 0.0 : std::ldexp(m[k], static_cast<int>(std::max(e[k] - emax, -2000L)));
     return d;
 }
 
@@ -79,8 +83,8 @@ std::vector<std::pair<int, int>> arc_candidates(const std::vector<Arc>& A, const
     }
     for (size_t j = 0; j < B.size(); ++j) bb[j] = arc_box(B[j]);
     auto overlap = [](const Box& a, const Box& b) {
-        return a.lo[0] <= b.hi[0] && b.lo[0] <= a.hi[0] && a.lo[1] <= b.hi[1] && b.lo[1] <= a.hi[1] && a.lo[2] <= b.hi[2] &&
-               b.lo[2] <= a.hi[2];
+        return a.lo[0] <= b.hi[0] && b.lo[0] <= a.hi[0] && a.lo[1] <= b.hi[1] && b.lo[1] <= a.hi[1] &&
+               a.lo[2] <= b.hi[2] && b.lo[2] <= a.hi[2];
     };
     std::vector<std::pair<int, int>> out;
     if (A.size() * B.size() <= filter::kArcBrutePairs) {  // few arcs: every pair's boxes, no grid
@@ -111,8 +115,14 @@ std::vector<std::pair<int, int>> arc_candidates(const std::vector<Arc>& A, const
     };
     const std::vector<Entry> ea = entries(ba), eb = entries(bb);
     for (size_t p = 0, q = 0; p < ea.size() && q < eb.size();) {
-        if (ea[p].first < eb[q].first) { ++p; continue; }
-        if (eb[q].first < ea[p].first) { ++q; continue; }
+        if (ea[p].first < eb[q].first) {
+            ++p;
+            continue;
+        }
+        if (eb[q].first < ea[p].first) {
+            ++q;
+            continue;
+        }
         const std::uint32_t key = ea[p].first;
         size_t p1 = p, q1 = q;
         while (p1 < ea.size() && ea[p1].first == key) ++p1;
@@ -126,7 +136,6 @@ std::vector<std::pair<int, int>> arc_candidates(const std::vector<Arc>& A, const
     std::sort(out.begin(), out.end());
     out.erase(std::unique(out.begin(), out.end()), out.end());
     return out;
-
 }
 
 }  // namespace scalecert::internal

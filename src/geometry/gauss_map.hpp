@@ -11,7 +11,9 @@ namespace scalecert::internal {
 
 // A great-circle arc shorter than π, between two face normals (their doubles: the overlay only
 // prunes with them, with padding far above their rounding error).
-struct Arc { std::array<double, 3> from, to; };
+struct Arc {
+    std::array<double, 3> from, to;
+};
 
 // A positive multiple of v as doubles, scaled by a power of two so that the largest component has
 // magnitude in [1/2, 1): finite for any size of integers, within 2^-53 relative per component.

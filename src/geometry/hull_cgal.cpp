@@ -30,14 +30,18 @@ std::vector<std::array<int, 3>> hull_with(const std::vector<Vec3z>& pts, ToPoint
     for (size_t i = 0; i < pts.size(); ++i) cp.push_back(to_point(i));
     std::vector<std::size_t> first(pts.size());
     std::iota(first.begin(), first.end(), std::size_t{0});
-    std::sort(first.begin(), first.end(), [&](std::size_t a, std::size_t b) { return pts[a] < pts[b] || (pts[a] == pts[b] && a < b); });
-    first.erase(std::unique(first.begin(), first.end(), [&](std::size_t a, std::size_t b) { return pts[a] == pts[b]; }), first.end());
+    std::sort(first.begin(), first.end(),
+              [&](std::size_t a, std::size_t b) { return pts[a] < pts[b] || (pts[a] == pts[b] && a < b); });
+    first.erase(std::unique(first.begin(), first.end(), [&](std::size_t a, std::size_t b) { return pts[a] == pts[b]; }),
+                first.end());
     std::vector<std::size_t> verts;
     std::vector<std::array<std::size_t, 3>> faces;
-    const auto traits = CGAL::make_extreme_points_traits_adapter(CGAL::make_property_map(cp), CGAL::Convex_hull_traits_3<Kernel>());
+    const auto traits =
+        CGAL::make_extreme_points_traits_adapter(CGAL::make_property_map(cp), CGAL::Convex_hull_traits_3<Kernel>());
     using It = std::vector<std::size_t>::iterator;
     // CGAL 5.5's overload with traits has a template parameter it cannot deduce: all are named.
-    CGAL::convex_hull_3<It, std::size_t, decltype(verts), decltype(faces), decltype(traits)>(first.begin(), first.end(), verts, faces, traits);
+    CGAL::convex_hull_3<It, std::size_t, decltype(verts), decltype(faces), decltype(traits)>(first.begin(), first.end(),
+                                                                                             verts, faces, traits);
     std::vector<std::array<int, 3>> tris;
     tris.reserve(faces.size());
     for (const auto& f : faces)
@@ -48,7 +52,8 @@ std::vector<std::array<int, 3>> hull_with(const std::vector<Vec3z>& pts, ToPoint
         const auto& t = tris[0];
         int d = -1;  // the corner not on triangle t
         for (std::size_t q : first)
-            if (static_cast<int>(q) != t[0] && static_cast<int>(q) != t[1] && static_cast<int>(q) != t[2]) d = static_cast<int>(q);
+            if (static_cast<int>(q) != t[0] && static_cast<int>(q) != t[1] && static_cast<int>(q) != t[2])
+                d = static_cast<int>(q);
         if (sgn(dotz(cross(sub(pts[t[1]], pts[t[0]]), sub(pts[t[2]], pts[t[0]])), sub(pts[d], pts[t[0]]))) > 0)
             for (auto& tri : tris) std::swap(tri[1], tri[2]);
     }
@@ -71,9 +76,11 @@ std::vector<std::array<int, 3>> hull_triangles(const std::vector<Vec3z>& pts, co
     // thousands of bits).
     if (all_exact_doubles(pts)) {
         using KI = CGAL::Exact_predicates_inexact_constructions_kernel;
-        return hull_with<KI>(pts, [&](size_t i) { return KI::Point_3(pts[i][0].get_d(), pts[i][1].get_d(), pts[i][2].get_d()); });
+        return hull_with<KI>(
+            pts, [&](size_t i) { return KI::Point_3(pts[i][0].get_d(), pts[i][1].get_d(), pts[i][2].get_d()); });
     }
-    return hull_with<K>(pts, [&](size_t i) { return K::Point_3(K::FT(given[i][0]), K::FT(given[i][1]), K::FT(given[i][2])); });
+    return hull_with<K>(
+        pts, [&](size_t i) { return K::Point_3(K::FT(given[i][0]), K::FT(given[i][1]), K::FT(given[i][2])); });
 }
 
 }  // namespace scalecert::internal

@@ -16,7 +16,8 @@ Vec3q scaled_point(const Model& m, int i, const Q& rho, const Vec3q& x) {
 
 bool contains(const Model& m, int i, const Q& rho, const Vec3q& x) {
     const Vec3q& s = m.s[i];
-    const Vec3q y{s[0] + (x[0] - s[0]) / rho, s[1] + (x[1] - s[1]) / rho, s[2] + (x[2] - s[2]) / rho};  // x = s + ρ(y − s)
+    const Vec3q y{s[0] + (x[0] - s[0]) / rho, s[1] + (x[1] - s[1]) / rho,
+                  s[2] + (x[2] - s[2]) / rho};  // x = s + ρ(y − s)
     return m.P[i].place(y).side <= 0;
 }
 
@@ -49,7 +50,8 @@ Q directional_depth_squared(const HullModel& m, const Vec3q& n, const Q& rho1, c
     return directional_depth_squared(HullPoints(m), n, rho1, rho2);
 }
 
-ExactDepth exact_penetration_depth(const HullModel& m, const std::vector<Vec3z>& normals, const Q& rho1, const Q& rho2) {
+ExactDepth exact_penetration_depth(const HullModel& m, const std::vector<Vec3z>& normals, const Q& rho1,
+                                   const Q& rho2) {
     ExactDepth best{Q(-1), {}};
     for (const Vec3z& n : normals) {
         const Q h1 = m.P[0].support(n) - dot(n, m.s[0]);
@@ -173,12 +175,14 @@ struct Epa {
                 // signs, so that a support point leaves the span).
                 if (k > 30) throw std::logic_error("EPA: the Minkowski difference is flat");
                 Vec3z d;
-                if (base.size() == 3) d = cross(sub(base[1].z, base[0].z), sub(base[2].z, base[0].z));
+                if (base.size() == 3)
+                    d = cross(sub(base[1].z, base[0].z), sub(base[2].z, base[0].z));
                 else if (base.size() == 2) {
                     const Vec3z e = sub(base[1].z, base[0].z);
                     d = cross(e, Vec3z{Z(1), Z(0), Z(0)});
                     if (!nonzero(d)) d = cross(e, Vec3z{Z(0), Z(1), Z(0)});
-                } else throw std::logic_error("EPA: no support points");
+                } else
+                    throw std::logic_error("EPA: no support points");
                 const Vec3z p = primitive(d);
                 dirs.push_back(p);
                 dirs.push_back(neg(p));
@@ -192,8 +196,10 @@ struct Epa {
         for (const auto& q : f) {
             const Vec3z& A = pts[static_cast<size_t>(q[0])].z;
             const Vec3z N = cross(sub(pts[static_cast<size_t>(q[1])].z, A), sub(pts[static_cast<size_t>(q[2])].z, A));
-            if (sgn(dotz(N, sub(pts[static_cast<size_t>(q[3])].z, A))) > 0) add_tri(q[0], q[2], q[1]);
-            else add_tri(q[0], q[1], q[2]);
+            if (sgn(dotz(N, sub(pts[static_cast<size_t>(q[3])].z, A))) > 0)
+                add_tri(q[0], q[2], q[1]);
+            else
+                add_tri(q[0], q[1], q[2]);
         }
     }
 
@@ -238,7 +244,8 @@ struct Epa {
                 }
             for (size_t t : seen)
                 for (int e = 0; e < 3; ++e) {
-                    const auto it = edge.find({tris[t].v[static_cast<size_t>(e)], tris[t].v[static_cast<size_t>((e + 1) % 3)]});
+                    const auto it =
+                        edge.find({tris[t].v[static_cast<size_t>(e)], tris[t].v[static_cast<size_t>((e + 1) % 3)]});
                     if (it != edge.end() && it->second == t) edge.erase(it);
                 }
             for (const auto& [a, b] : horizon) {
@@ -255,7 +262,8 @@ struct Epa {
 namespace {
 // The EPA's result: its nearest triangle's plane, and the proof when it lies strictly beyond the
 // origin.
-std::optional<ProvedDepth> epa_depth(const PointSets& S, const Q& rho1, const Q& rho2, Vec3z* supporting = nullptr, Q* offset = nullptr) {
+std::optional<ProvedDepth> epa_depth(const PointSets& S, const Q& rho1, const Q& rho2, Vec3z* supporting = nullptr,
+                                     Q* offset = nullptr) {
     Epa epa(S, rho1, rho2);
     const size_t best = epa.run();
     const auto& t = epa.tris[best];
@@ -275,8 +283,12 @@ std::optional<ProvedDepth> epa_depth(const PointSets& S, const Q& rho1, const Q&
 }
 }  // namespace
 
-std::optional<ProvedDepth> proved_depth(const PointSets& S, const Q& rho1, const Q& rho2) { return epa_depth(S, rho1, rho2); }
-std::optional<ProvedDepth> proved_depth(const HullModel& m, const Q& rho1, const Q& rho2) { return proved_depth(HullPoints(m), rho1, rho2); }
+std::optional<ProvedDepth> proved_depth(const PointSets& S, const Q& rho1, const Q& rho2) {
+    return epa_depth(S, rho1, rho2);
+}
+std::optional<ProvedDepth> proved_depth(const HullModel& m, const Q& rho1, const Q& rho2) {
+    return proved_depth(HullPoints(m), rho1, rho2);
+}
 
 std::optional<MeasuredDepth> measured_depth(const PointSets& S, const Q& rho1, const Q& rho2) {
     // Apart by the doubles' guess: the proved distance decides (its slab separates, or it finds
@@ -304,7 +316,8 @@ std::optional<MeasuredDepth> measured_depth(const PointSets& S, const Q& rho1, c
     }
     const std::optional<ProvedDistance> pd = proved_distance(S, rho1, rho2);
     if (!pd) return std::nullopt;
-    if (sgn(pd->d.squared) != 0) throw std::logic_error("measured_depth: a supporting plane through the origin, and the bodies apart");
+    if (sgn(pd->d.squared) != 0)
+        throw std::logic_error("measured_depth: a supporting plane through the origin, and the bodies apart");
     r.state = MeasuredDepth::Touching;
     r.distance = pd->d;
     return r;

@@ -51,7 +51,8 @@ struct ExactDepth {
     Q squared;
     Vec3z direction;  // a minimising facet normal (pointing from P1 towards P2)
 };
-ExactDepth exact_penetration_depth(const HullModel& m, const std::vector<Vec3z>& facet_normals, const Q& rho1, const Q& rho2);
+ExactDepth exact_penetration_depth(const HullModel& m, const std::vector<Vec3z>& facet_normals, const Q& rho1,
+                                   const Q& rho2);
 // The squared penetration depth of an overlapping pair, proved by an exact EPA (expanding
 // polytope) on support points of M = P1(ρ1) − P2(ρ2): a polytope K ⊆ M grown from a tetrahedron
 // until its face nearest the origin lies on a face of M. Then every face of K is at least that

@@ -10,7 +10,7 @@
 namespace scalecert::internal {
 
 class PointSets {
-public:
+  public:
     virtual ~PointSets() = default;
     virtual Vec3q point(int i, int k) const = 0;  // point k of polyhedron i, exactly
     virtual D3 dpoint(int i, int k) const = 0;    // the same, near enough for a guess
@@ -25,7 +25,7 @@ public:
 
 // The vertices of the exact polyhedra: a hull model's, or build_hulls's (no contact line).
 class HullPoints final : public PointSets {
-public:
+  public:
     explicit HullPoints(const Model& m) : m_(m) {}
     Vec3q point(int i, int k) const override { return m_.P[i].points[static_cast<size_t>(k)]; }
     D3 dpoint(int i, int k) const override {
@@ -48,7 +48,7 @@ public:
     }
     const Model& model() const { return m_; }
 
-private:
+  private:
     const Model& m_;
 };
 

@@ -31,9 +31,8 @@ std::vector<Pt2> normalize_polygon(std::vector<Pt2> p) {
     }
     if (q.size() == 2 && q[1] < q[0]) std::swap(q[0], q[1]);
     if (q.size() > 2) {
-        auto low = std::min_element(q.begin(), q.end(), [](const Pt2& a, const Pt2& b) {
-            return a[1] != b[1] ? a[1] < b[1] : a[0] < b[0];
-        });
+        auto low = std::min_element(
+            q.begin(), q.end(), [](const Pt2& a, const Pt2& b) { return a[1] != b[1] ? a[1] < b[1] : a[0] < b[0]; });
         std::rotate(q.begin(), low, q.end());
     }
     return q;

@@ -58,7 +58,8 @@ struct FilteredDot {
     }
     // sign of n·x_w − n·x_v, exactly (predicate 1)
     int compare(int w, const filter::SupportApprox& wa, int v, const filter::SupportApprox& va) const {
-        return filter::support_cmp(wa, va, [&] { return exact_cmp(w, v); }, P.predicates);
+        return filter::support_cmp(
+            wa, va, [&] { return exact_cmp(w, v); }, P.predicates);
     }
 };
 
@@ -70,7 +71,12 @@ int climb_with(const FilteredDot<N>& f) {
         moved = false;
         for (int w : f.P.adj[cur]) {
             const filter::SupportApprox wa = f.approx(w);
-            if (f.compare(w, wa, cur, ca) > 0) { cur = w; ca = wa; moved = true; break; }
+            if (f.compare(w, wa, cur, ca) > 0) {
+                cur = w;
+                ca = wa;
+                moved = true;
+                break;
+            }
         }
     }
     return cur;
@@ -162,9 +168,13 @@ std::vector<std::pair<int, Q>> Polyhedron::interior_weights(const Vec3q& p) cons
     for (int v : vertices) {
         if (tet.size() == 4) break;
         const Vec3z e = sub(ipts[v], ipts[tet[0]]);
-        if (tet.size() == 1 && !is_zero(e)) tet.push_back(v);
-        else if (tet.size() == 2 && !is_zero(cross(sub(ipts[tet[1]], ipts[tet[0]]), e))) tet.push_back(v);
-        else if (tet.size() == 3 && sgn(dotz(cross(sub(ipts[tet[1]], ipts[tet[0]]), sub(ipts[tet[2]], ipts[tet[0]])), e))) tet.push_back(v);
+        if (tet.size() == 1 && !is_zero(e))
+            tet.push_back(v);
+        else if (tet.size() == 2 && !is_zero(cross(sub(ipts[tet[1]], ipts[tet[0]]), e)))
+            tet.push_back(v);
+        else if (tet.size() == 3 &&
+                 sgn(dotz(cross(sub(ipts[tet[1]], ipts[tet[0]]), sub(ipts[tet[2]], ipts[tet[0]])), e)))
+            tet.push_back(v);
     }
     if (tet.size() != 4) throw std::logic_error("interior_weights: no four independent vertices");
     Vec3q c{Q(0), Q(0), Q(0)};
@@ -201,7 +211,8 @@ std::vector<std::pair<int, Q>> Polyhedron::interior_weights(const Vec3q& p) cons
         bool found = false;
         for (size_t i = 1; i + 1 < F.verts.size() && !found; ++i) {
             const Vec3q &A = points[F.verts[0]], &B = points[F.verts[i]], &C = points[F.verts[i + 1]];
-            const Q whole = area(A, B, C), la = area(q, B, C) / whole, lb = area(A, q, C) / whole, lc = area(A, B, q) / whole;
+            const Q whole = area(A, B, C), la = area(q, B, C) / whole, lb = area(A, q, C) / whole,
+                    lc = area(A, B, q) / whole;
             if (sgn(la) < 0 || sgn(lb) < 0 || sgn(lc) < 0) continue;
             found = true;
             const int idx[3] = {F.verts[0], F.verts[i], F.verts[i + 1]};
@@ -219,9 +230,16 @@ namespace {
 
 // Integer vectors of either kind: machine integers (within the bounds of small_int.hpp, with
 // 128-bit products) or GMP.
-template <class V> struct Wide;
-template <> struct Wide<Vec3s> { using type = I128; };
-template <> struct Wide<Vec3z> { using type = Z; };
+template <class V>
+struct Wide;
+template <>
+struct Wide<Vec3s> {
+    using type = I128;
+};
+template <>
+struct Wide<Vec3z> {
+    using type = Z;
+};
 
 // Sorts the vertices of a convex polygon with outward normal n counter-clockwise (seen from
 // outside), exactly: angular order around an interior point, in the plane projected along the
@@ -236,12 +254,18 @@ void order_ccw(std::vector<int>& vs, const std::vector<V>& pts, const V& n) {
     // Centre (times the vertex count, to stay in integers).
     const W cnt = static_cast<long>(vs.size());
     W cu = 0, cw = 0;
-    for (int v : vs) { cu += pts[v][u]; cw += pts[v][w]; }
+    for (int v : vs) {
+        cu += pts[v][u];
+        cw += pts[v][w];
+    }
     auto du = [&](int v) { return W(W(pts[v][u]) * cnt - cu); };
     auto dw = [&](int v) { return W(W(pts[v][w]) * cnt - cw); };
     // In the (u, w) projection, counter-clockwise around +drop axis means ccw seen from outside
     // when n[drop] > 0; reverse otherwise.
-    auto half = [&](int v) { W a = du(v), b = dw(v); return (sign_of(b) > 0 || (sign_of(b) == 0 && sign_of(a) > 0)) ? 0 : 1; };
+    auto half = [&](int v) {
+        W a = du(v), b = dw(v);
+        return (sign_of(b) > 0 || (sign_of(b) == 0 && sign_of(a) > 0)) ? 0 : 1;
+    };
     std::sort(vs.begin(), vs.end(), [&](int a, int b) {
         int ha = half(a), hb = half(b);
         if (ha != hb) return ha < hb;
@@ -269,7 +293,8 @@ std::vector<Plane<V>> planes_from_triangles(const std::vector<std::array<int, 3>
         tn[t] = primitive(vcross(vsub(ip[tris[t][1]], ip[tris[t][0]]), vsub(ip[tris[t][2]], ip[tris[t][0]])));
     std::vector<size_t> order(tris.size());
     std::iota(order.begin(), order.end(), size_t{0});
-    std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return tn[a] < tn[b] || (tn[a] == tn[b] && a < b); });
+    std::sort(order.begin(), order.end(),
+              [&](size_t a, size_t b) { return tn[a] < tn[b] || (tn[a] == tn[b] && a < b); });
     std::vector<Plane<V>> planes;
     for (size_t k = 0; k < order.size(); ++k) {
         size_t t = order[k];
@@ -312,7 +337,8 @@ void assemble(Polyhedron& P, const std::vector<Plane<V>>& planes, const std::vec
         for (int v : pl.on)
             if (is_vertex[v]) f.verts.push_back(v);
         order_ccw(f.verts, ip, pl.normal);
-        std::rotate(f.verts.begin(), std::min_element(f.verts.begin(), f.verts.end()), f.verts.end());  // smallest first
+        std::rotate(f.verts.begin(), std::min_element(f.verts.begin(), f.verts.end()),
+                    f.verts.end());  // smallest first
     }
     // Edges: (a, b, face) for every side of every face, sorted; each edge appears twice.
     std::vector<std::array<int, 3>> sides;
@@ -335,8 +361,7 @@ void assemble(Polyhedron& P, const std::vector<Plane<V>>& planes, const std::vec
         P.adj[a].push_back(b);
         P.adj[b].push_back(a);
     }
-    if (P.vertices.size() + P.faces.size() != P.edges.size() + 2)
-        throw std::logic_error("hull fails Euler's formula");
+    if (P.vertices.size() + P.faces.size() != P.edges.size() + 2) throw std::logic_error("hull fails Euler's formula");
 }
 
 }  // namespace
@@ -392,8 +417,8 @@ Polyhedron build_polyhedron(const std::vector<Vec3q>& pts, const std::string& na
     for (const Vec3q& v : pts) {
         for (const Q& c : v) mpz_lcm(P.scale.get_mpz_t(), P.scale.get_mpz_t(), c.get_den_mpz_t());
         if (mpz_sizeinbase(P.scale.get_mpz_t(), 2) > kMaxDenominatorBits)
-            throw InputError(name + ": the common denominator of the coordinates has more than " + std::to_string(kMaxDenominatorBits) +
-                             " bits (the limit; README \"Limits\")");
+            throw InputError(name + ": the common denominator of the coordinates has more than " +
+                             std::to_string(kMaxDenominatorBits) + " bits (the limit; README \"Limits\")");
     }
     P.ipts.resize(pts.size());
     bool small = true;
@@ -427,7 +452,7 @@ Polyhedron build_polyhedron(const std::vector<Vec3q>& pts, const std::string& na
     }
     // Start table: for each cube-map cell centre, the argmax found by climbing in doubles from the
     // previous cell's answer. Only a hint: argmax always finishes the climb exactly.
-    const std::vector<D3>& dp = P.dpts;  // scaled coordinates: the same maximisers
+    const std::vector<D3>& dp = P.dpts;     // scaled coordinates: the same maximisers
     if (P.vertices.size() <= 64) return P;  // small: climbing from any vertex is already short
     // About four vertices per cell, so that a climb from the cell's vertex is a few steps.
     const int kG = std::clamp(static_cast<int>(std::sqrt(static_cast<double>(P.vertices.size()) / 24.0)), 16, 256);
@@ -446,7 +471,11 @@ Polyhedron build_polyhedron(const std::vector<Vec3q>& pts, const std::string& na
                 for (int steps = 0, moved = 1; moved && steps < 100000; ++steps) {
                     moved = 0;
                     for (int w : P.adj[cur])
-                        if (f(w) > f(cur)) { cur = w; moved = 1; break; }
+                        if (f(w) > f(cur)) {
+                            cur = w;
+                            moved = 1;
+                            break;
+                        }
                 }
                 P.start_table[(face * kG + i) * kG + j] = cur;
             }

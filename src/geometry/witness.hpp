@@ -9,7 +9,9 @@ namespace scalecert::internal {
 
 // Finds λ ≥ 0 (Σλ = 1) on A and μ ≥ 0 (Σμ = 1) on B with Σ λ_i A_i = Σ μ_j B_j: a common point of
 // conv(A) and conv(B). None when they do not meet.
-struct CommonPointWeights { std::vector<Q> lambda, mu; };
+struct CommonPointWeights {
+    std::vector<Q> lambda, mu;
+};
 std::optional<CommonPointWeights> common_point(const std::vector<Vec3q>& A, const std::vector<Vec3q>& B);
 // The same with every weight strictly positive: a point of relint conv(A) ∩ relint conv(B) (it
 // maximises the smallest weight). None when the relative interiors do not meet. Beyond
@@ -24,7 +26,8 @@ std::optional<CommonPointWeights> interior_common_point(const std::vector<Vec3q>
 // interiors, p + ε(p − c) stays in the polytope for a small ε > 0, so p = (that point + ε c)/(1 + ε)
 // weighs c by ε/(1 + ε) > 0: the optimum is > 0 exactly when the relative interiors meet. The
 // centroid's weight is then spread evenly over its set, so every weight is > 0.
-std::optional<CommonPointWeights> interior_common_point_by_centroids(const std::vector<Vec3q>& A, const std::vector<Vec3q>& B);
+std::optional<CommonPointWeights> interior_common_point_by_centroids(const std::vector<Vec3q>& A,
+                                                                     const std::vector<Vec3q>& B);
 constexpr size_t kBoundEveryWeightUpTo = 32;
 
 // Maximises c·x over free x ∈ Q^k subject to A_i·x ≤ b_i, exactly: a basic optimal solution, or

@@ -86,7 +86,8 @@ std::optional<CommonPointWeights> interior_common_point(const std::vector<Vec3q>
     return split(v, A.size());
 }
 
-std::optional<CommonPointWeights> interior_common_point_by_centroids(const std::vector<Vec3q>& A, const std::vector<Vec3q>& B) {
+std::optional<CommonPointWeights> interior_common_point_by_centroids(const std::vector<Vec3q>& A,
+                                                                     const std::vector<Vec3q>& B) {
     if (A.empty() || B.empty()) return std::nullopt;
     // Each set's centroid joins it as its last point, and only the two centroids' weights are
     // bounded below by t (two rows, not one per point).

@@ -39,7 +39,9 @@ std::string read_stdin(const std::string& what, size_t max_bytes) {
         if (used < cap || used > max_bytes) break;
     }
     if (std::ferror(stdin)) throw InputError("standard input: cannot read " + what);
-    if (used > max_bytes) throw InputError("standard input: " + what + " larger than " + std::to_string(max_bytes >> 20) + " MiB (the limit)");
+    if (used > max_bytes)
+        throw InputError("standard input: " + what + " larger than " + std::to_string(max_bytes >> 20) +
+                         " MiB (the limit)");
     text.resize(used);
     return text;
 }
@@ -58,7 +60,8 @@ int open_regular_file(const std::string& path, const std::string& what, bool no_
     const int fd = ::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC | (no_follow ? O_NOFOLLOW : 0));
     if (fd < 0) {
         const int err = errno;
-        if (no_follow && err == ELOOP) throw InputError(path + ": is a symbolic link, not a " + what + " (only regular files are read)");
+        if (no_follow && err == ELOOP)
+            throw InputError(path + ": is a symbolic link, not a " + what + " (only regular files are read)");
         throw InputError(path + ": cannot open " + what + " (" + std::strerror(err) + ")");
     }
     if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
@@ -179,8 +182,10 @@ void begin_output_journal() {
 void undo_outputs() {
     const std::lock_guard<std::mutex> lock(journal_mutex);
     for (auto it = journal_files.rbegin(); it != journal_files.rend(); ++it) {
-        if (it->second.empty()) ::unlink(it->first.c_str());
-        else std::rename(it->second.c_str(), it->first.c_str());
+        if (it->second.empty())
+            ::unlink(it->first.c_str());
+        else
+            std::rename(it->second.c_str(), it->first.c_str());
     }
     for (auto it = journal_dirs.rbegin(); it != journal_dirs.rend(); ++it) ::rmdir(it->c_str());  // only if empty
     journal_files.clear();
@@ -205,7 +210,8 @@ void note_inputs(const std::vector<std::string>& paths) {
     const std::lock_guard<std::mutex> lock(noted_mutex);
     for (const std::string& p : paths) {
         struct stat st {};
-        if (!p.empty() && p != "-" && ::stat(p.c_str(), &st) == 0) noted.emplace(std::make_pair(st.st_dev, st.st_ino), p);
+        if (!p.empty() && p != "-" && ::stat(p.c_str(), &st) == 0)
+            noted.emplace(std::make_pair(st.st_dev, st.st_ino), p);
     }
 }
 
@@ -225,10 +231,8 @@ void write_files_atomically(const std::vector<std::pair<std::string, std::string
         bool same = false;
         if (S_ISREG(st.st_mode) && static_cast<size_t>(st.st_size) == text.size()) try {
                 same = read_regular_file(path, "output file", text.size()) == text;
-            } catch (const InputError&) {
-            }
-        if (!same)
-            throw InputError(path + ": an output names an input file (" + input + "), which it would replace");
+            } catch (const InputError&) {}
+        if (!same) throw InputError(path + ": an output names an input file (" + input + "), which it would replace");
     }
     // Two outputs under one name (--out x --csv x, --out x --certificate x): the second would
     // replace the first. Compared as absolute, normalised paths (symbolic links to an existing
@@ -240,7 +244,8 @@ void write_files_atomically(const std::vector<std::pair<std::string, std::string
             std::error_code e1, e2, e3, e4;
             const auto a = std::filesystem::weakly_canonical(std::filesystem::absolute(files[i].first, e3), e1),
                        b = std::filesystem::weakly_canonical(std::filesystem::absolute(files[k].first, e4), e2);
-            if (files[i].first == files[k].first || (!e1 && !e2 && !e3 && !e4 && a.lexically_normal() == b.lexically_normal()))
+            if (files[i].first == files[k].first ||
+                (!e1 && !e2 && !e3 && !e4 && a.lexically_normal() == b.lexically_normal()))
                 throw InputError(files[k].first + ": two outputs name the same file");
         }
     std::vector<std::string> tmps;
@@ -283,7 +288,8 @@ void refuse_outputs_over_inputs(const std::vector<std::string>& outputs, const s
         if (o.empty() || o == "-" || ::stat(o.c_str(), &so) != 0) continue;  // not there yet: no input is it
         for (const std::string& i : inputs) {
             struct stat si {};
-            if (!i.empty() && i != "-" && ::stat(i.c_str(), &si) == 0 && si.st_dev == so.st_dev && si.st_ino == so.st_ino)
+            if (!i.empty() && i != "-" && ::stat(i.c_str(), &si) == 0 && si.st_dev == so.st_dev &&
+                si.st_ino == so.st_ino)
                 throw InputError(o + ": an output names an input file (" + i + "), which it would replace");
         }
     }

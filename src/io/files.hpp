@@ -18,21 +18,22 @@ namespace scalecert::internal {
 // file's role, "scene file"). Returns the descriptor, blocking again, and its size in *size.
 int open_regular_file(const std::string& path, const std::string& what, bool no_follow = false, size_t* size = nullptr);
 // The whole of a regular file (open_regular_file), at most max_bytes, else InputError naming the limit.
-std::string read_regular_file(const std::string& path, const std::string& what, size_t max_bytes, bool no_follow = false);
+std::string read_regular_file(const std::string& path, const std::string& what, size_t max_bytes,
+                              bool no_follow = false);
 // read_regular_file, or standard input for "-" (where a command documents it).
 std::string read_input(const std::string& path, const std::string& what, size_t max_bytes);
 
 // While an InputObserver lives, every file read_input and read_regular_file read on this thread
 // is passed to it, with the path as given: campaigns hash the bytes an audit actually read.
 class InputObserver {
-public:
+  public:
     using Fn = std::function<void(const std::string& path, const std::string& bytes)>;
     explicit InputObserver(Fn f);
     ~InputObserver();
     InputObserver(const InputObserver&) = delete;
     InputObserver& operator=(const InputObserver&) = delete;
 
-private:
+  private:
     Fn f_;
     const Fn* prev_;
 };

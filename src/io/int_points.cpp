@@ -81,7 +81,8 @@ inline bool digit(char c) { return c >= '0' && c <= '9'; }
 // A decimal at p as mantissa × 10^exp10 (at most 18 significant digits and a 3-digit
 // exponent), moving p past it; false for anything else. The OFF reader's grammar,
 // [+-]digits[.digits][e[+-]digits], or with `json` RFC 8259's: no '+', no leading zeros.
-__attribute__((always_inline)) inline bool read_decimal(const char*& p, const char* e, bool json, std::int64_t& mant, int& exp10) {
+__attribute__((always_inline)) inline bool read_decimal(const char*& p, const char* e, bool json, std::int64_t& mant,
+                                                        int& exp10) {
     const char* q = p;
     bool neg = false;
     if (q < e && (*q == '-' || (!json && *q == '+'))) neg = *q++ == '-';
@@ -93,8 +94,11 @@ __attribute__((always_inline)) inline bool read_decimal(const char*& p, const ch
         m = m * 10 + (*q++ - '0');
         return true;
     };
-    if (json && *q == '0') ++q;
-    else while (q < e && digit(*q)) if (!take()) return false;
+    if (json && *q == '0')
+        ++q;
+    else
+        while (q < e && digit(*q))
+            if (!take()) return false;
     if (q < e && *q == '.') {
         if (++q == e || !digit(*q)) return false;
         for (; q < e && digit(*q); ++frac)
@@ -121,8 +125,10 @@ __attribute__((always_inline)) inline bool read_decimal(const char*& p, const ch
 bool json_number(const char* b, const char* e) {
     if (b < e && *b == '-') ++b;
     if (b == e || *b < '0' || *b > '9') return false;
-    if (*b == '0') ++b;
-    else while (b < e && *b >= '0' && *b <= '9') ++b;
+    if (*b == '0')
+        ++b;
+    else
+        while (b < e && *b >= '0' && *b <= '9') ++b;
     if (b < e && *b == '.') {
         ++b;
         if (b == e || *b < '0' || *b > '9') return false;
@@ -140,9 +146,25 @@ bool json_number(const char* b, const char* e) {
 // Mantissas × 10^ex to integers over the common scale 10^-lowest, within kMaxIntCoord.
 bool scale_to(IntPoints& r, const std::vector<std::int8_t>& ex, int lowest) {
     mpz_ui_pow_ui(r.scale.get_mpz_t(), 10, static_cast<unsigned long>(-lowest));
-    static const std::int64_t p10[19] = {1, 10, 100, 1000, 10000, 100000, 1000000, 10000000, 100000000, 1000000000,
-                                        10000000000, 100000000000, 1000000000000, 10000000000000, 100000000000000,
-                                        1000000000000000, 10000000000000000, 100000000000000000, 1000000000000000000};
+    static const std::int64_t p10[19] = {1,
+                                         10,
+                                         100,
+                                         1000,
+                                         10000,
+                                         100000,
+                                         1000000,
+                                         10000000,
+                                         100000000,
+                                         1000000000,
+                                         10000000000,
+                                         100000000000,
+                                         1000000000000,
+                                         10000000000000,
+                                         100000000000000,
+                                         1000000000000000,
+                                         10000000000000000,
+                                         100000000000000000,
+                                         1000000000000000000};
     for (size_t i = 0; i < r.x.size(); ++i) {
         std::int64_t v = r.x[i];
         if (v != 0) {
@@ -211,7 +233,8 @@ std::optional<IntPoints> parse_off_fast(const char* data, size_t size) {
     int lowest = 0;
     for (size_t i = 0; i < 3 * nv; ++i) {
         int x10;
-        if (!c.next(b, e) || !read_decimal(b, e, false, r.x[i], x10) || b != e || x10 < -18 || x10 > 18) return std::nullopt;
+        if (!c.next(b, e) || !read_decimal(b, e, false, r.x[i], x10) || b != e || x10 < -18 || x10 > 18)
+            return std::nullopt;
         ex[i] = static_cast<std::int8_t>(x10);
         if (r.x[i] != 0 && x10 < lowest) lowest = x10;
     }
@@ -227,7 +250,7 @@ namespace {
 // numbers only. Everything it accepts, parse_scene_text accepts with the same values; the rest
 // goes there.
 class SceneScanner {
-public:
+  public:
     SceneScanner(const char* b, const char* e) : p_(b), e_(e) {}
 
     std::optional<CompactScene> scene() {
@@ -257,13 +280,14 @@ public:
         ws();
         if (p_ != e_ || !(seen[0] && seen[1] && seen[2] && seen[3]) || values > kMaxJsonValues) return std::nullopt;
         for (int i = 0; i < 2; ++i) {
-            if (cs.P[i].size() < 4 || sgn(cs.lo[i]) <= 0 || cs.lo[i] > cs.hi[i]) return std::nullopt;  // the reader words these
+            if (cs.P[i].size() < 4 || sgn(cs.lo[i]) <= 0 || cs.lo[i] > cs.hi[i])
+                return std::nullopt;  // the reader words these
             if (!cs.seed_given[i]) cs.seed[i] = cs.P[i].mean();
         }
         return cs;
     }
 
-private:
+  private:
     void ws() {
         while (p_ < e_ && (*p_ == ' ' || *p_ == '\t' || *p_ == '\n' || *p_ == '\r')) ++p_;
     }
@@ -276,7 +300,8 @@ private:
         if (!lit('"')) return false;
         const char* b = p_;
         while (p_ < e_ && *p_ != '"') {
-            if (*p_ == '\\' || static_cast<unsigned char>(*p_) < 0x20 || static_cast<unsigned char>(*p_) >= 0x80) return false;
+            if (*p_ == '\\' || static_cast<unsigned char>(*p_) < 0x20 || static_cast<unsigned char>(*p_) >= 0x80)
+                return false;
             ++p_;
         }
         if (p_ == e_) return false;
@@ -287,7 +312,9 @@ private:
     bool number(const char*& b, const char*& e) {
         ws();
         b = p_;
-        while (p_ < e_ && (*p_ == '-' || *p_ == '+' || *p_ == '.' || *p_ == 'e' || *p_ == 'E' || (*p_ >= '0' && *p_ <= '9'))) ++p_;
+        while (p_ < e_ &&
+               (*p_ == '-' || *p_ == '+' || *p_ == '.' || *p_ == 'e' || *p_ == 'E' || (*p_ >= '0' && *p_ <= '9')))
+            ++p_;
         e = p_;
         return json_number(b, e);
     }
@@ -367,7 +394,9 @@ private:
 };
 }  // namespace
 
-std::optional<CompactScene> parse_scene_fast(const char* data, size_t size) { return SceneScanner(data, data + size).scene(); }
+std::optional<CompactScene> parse_scene_fast(const char* data, size_t size) {
+    return SceneScanner(data, data + size).scene();
+}
 
 std::optional<CompactScene> read_scene_fast(const std::string& path) {
     std::optional<CompactScene> r;

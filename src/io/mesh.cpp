@@ -30,7 +30,8 @@ Q text_number(const std::string& t, const std::string& name, const ReadOptions& 
     }
 }
 Q binary_number(double v, const std::string& name, size_t vertex, int coord) {
-    if (!std::isfinite(v)) fail(name, "vertex " + std::to_string(vertex) + " coordinate " + std::to_string(coord) + ": not finite");
+    if (!std::isfinite(v))
+        fail(name, "vertex " + std::to_string(vertex) + " coordinate " + std::to_string(coord) + ": not finite");
     return exact_from_double(v);
 }
 
@@ -74,7 +75,8 @@ std::vector<Vec3q> parse_off(const std::string& text, const std::string& name, c
     if (nv > kMaxPoints) fail(name, "more than " + std::to_string(kMaxPoints) + " vertices (the limit)");
     count(2, "face count");
     count(3, "edge count");
-    if (tokens.size() < 4 + 3 * nv) fail(name, "malformed OFF file: fewer than the " + std::to_string(nv) + " vertices announced");
+    if (tokens.size() < 4 + 3 * nv)
+        fail(name, "malformed OFF file: fewer than the " + std::to_string(nv) + " vertices announced");
     std::vector<Vec3q> pts(nv);
     for (size_t i = 0; i < nv; ++i)
         for (int k = 0; k < 3; ++k) pts[i][k] = text_number(tokens[4 + 3 * i + k], name, opt, i, k);
@@ -87,9 +89,11 @@ std::vector<Vec3q> parse_obj(const std::string& text, const std::string& name, c
     each_line(text, [&](const std::vector<std::string>& t, size_t no) {
         if (t[0] != "v") return true;
         // 'v x y z', 'v x y z w' (homogeneous) or 'v x y z r g b' (with a colour, ignored)
-        if (t.size() != 4 && t.size() != 5 && t.size() != 7) fail(name, "line " + std::to_string(no) + ": expected 'v x y z', 'v x y z w' or 'v x y z r g b'");
+        if (t.size() != 4 && t.size() != 5 && t.size() != 7)
+            fail(name, "line " + std::to_string(no) + ": expected 'v x y z', 'v x y z w' or 'v x y z r g b'");
         if (pts.size() >= kMaxPoints) fail(name, "more than " + std::to_string(kMaxPoints) + " vertices (the limit)");
-        Vec3q v{text_number(t[1], name, opt, pts.size(), 0), text_number(t[2], name, opt, pts.size(), 1), text_number(t[3], name, opt, pts.size(), 2)};
+        Vec3q v{text_number(t[1], name, opt, pts.size(), 0), text_number(t[2], name, opt, pts.size(), 1),
+                text_number(t[3], name, opt, pts.size(), 2)};
         if (t.size() == 5) {
             Q w = text_number(t[4], name, opt, pts.size(), 3);
             if (sgn(w) == 0) fail(name, "line " + std::to_string(no) + ": w = 0 (a point at infinity)");
@@ -104,7 +108,8 @@ std::vector<Vec3q> parse_obj(const std::string& text, const std::string& name, c
 
 // OBJ groups as parts (mesh.hpp): the vertices first, read and checked as parse_obj reads them,
 // then the 'o', 'g' and 'f' lines.
-std::vector<std::vector<Vec3q>> parse_obj_groups(const std::string& text, const std::string& name, const ReadOptions& opt) {
+std::vector<std::vector<Vec3q>> parse_obj_groups(const std::string& text, const std::string& name,
+                                                 const ReadOptions& opt) {
     const std::vector<Vec3q> pts = parse_obj(text, name, opt);
     std::vector<std::vector<Vec3q>> parts;
     std::vector<size_t> last(pts.size(), 0);  // the last group (counted from 1) whose faces named each vertex
@@ -117,9 +122,11 @@ std::vector<std::vector<Vec3q>> parse_obj_groups(const std::string& text, const 
     };
     auto close = [&] {
         if (members.empty()) return;  // a group without faces
-        if (parts.size() == kMaxParts) fail(name, "more than " + std::to_string(kMaxParts) + " groups with faces (the limit on parts)");
+        if (parts.size() == kMaxParts)
+            fail(name, "more than " + std::to_string(kMaxParts) + " groups with faces (the limit on parts)");
         total += members.size();
-        if (total > kMaxPoints) fail(name, "more than " + std::to_string(kMaxPoints) + " points in all the groups (the limit)");
+        if (total > kMaxPoints)
+            fail(name, "more than " + std::to_string(kMaxPoints) + " points in all the groups (the limit)");
         std::sort(members.begin(), members.end());
         std::vector<Vec3q> part;
         part.reserve(members.size());
@@ -149,8 +156,9 @@ std::vector<std::vector<Vec3q>> parse_obj_groups(const std::string& text, const 
                 const bool number = ec == std::errc() && end == v.data() + v.size() && !v.empty();
                 const long long n = static_cast<long long>(number && i < 0 ? vertices_so_far : pts.size());
                 if (!number || i == 0 || i > n || i < -n)
-                    fail(name, "line " + std::to_string(no) + ": face vertex " + quoted(t[k]) + " is not a vertex number (1 to " +
-                                   std::to_string(pts.size()) + ", or -1 back to -" + std::to_string(vertices_so_far) + ")");
+                    fail(name, "line " + std::to_string(no) + ": face vertex " + quoted(t[k]) +
+                                   " is not a vertex number (1 to " + std::to_string(pts.size()) + ", or -1 back to -" +
+                                   std::to_string(vertices_so_far) + ")");
                 const size_t at = static_cast<size_t>(i > 0 ? i - 1 : n + i);
                 if (last[at] != group) {
                     last[at] = group;
@@ -176,7 +184,8 @@ std::vector<Vec3q> unique_in_order(std::vector<Vec3q> raw, const std::string& na
     std::vector<Vec3q> out;
     for (size_t i = 0; i < raw.size(); ++i)
         if (keep[i]) out.push_back(std::move(raw[i]));
-    if (out.size() > kMaxPoints) fail(name, "more than " + std::to_string(kMaxPoints) + " distinct vertices (the limit)");
+    if (out.size() > kMaxPoints)
+        fail(name, "more than " + std::to_string(kMaxPoints) + " distinct vertices (the limit)");
     return out;
 }
 
@@ -197,13 +206,16 @@ std::vector<Vec3q> parse_stl(const std::string& bytes, const std::string& name, 
     if (bytes.size() >= 84) {
         const std::uint32_t n = load<std::uint32_t>(bytes, 80, false);
         if (bytes.size() == 84 + 50 * static_cast<std::uint64_t>(n)) {
-            if (n > kMaxStlTriangles) fail(name, "more than " + std::to_string(kMaxStlTriangles) + " triangles (the limit)");
+            if (n > kMaxStlTriangles)
+                fail(name, "more than " + std::to_string(kMaxStlTriangles) + " triangles (the limit)");
             raw.reserve(3 * static_cast<size_t>(n));
             for (size_t t = 0; t < n; ++t)
                 for (int c = 0; c < 3; ++c) {
                     const size_t at = 84 + 50 * t + 12 + 12 * static_cast<size_t>(c);
                     Vec3q v;
-                    for (int k = 0; k < 3; ++k) v[k] = binary_number(load<float>(bytes, at + 4 * static_cast<size_t>(k), false), name, raw.size(), k);
+                    for (int k = 0; k < 3; ++k)
+                        v[k] = binary_number(load<float>(bytes, at + 4 * static_cast<size_t>(k), false), name,
+                                             raw.size(), k);
                     raw.push_back(std::move(v));
                 }
             if (raw.empty()) fail(name, "binary STL file with no triangles");
@@ -216,8 +228,10 @@ std::vector<Vec3q> parse_stl(const std::string& bytes, const std::string& name, 
     each_line(bytes, [&](const std::vector<std::string>& t, size_t no) {
         if (lower(t[0]) != "vertex") return true;
         if (t.size() != 4) fail(name, "line " + std::to_string(no) + ": expected 'vertex x y z'");
-        if (raw.size() >= 3 * kMaxStlTriangles) fail(name, "more than " + std::to_string(kMaxStlTriangles) + " triangles (the limit)");
-        raw.push_back({text_number(t[1], name, opt, raw.size(), 0), text_number(t[2], name, opt, raw.size(), 1), text_number(t[3], name, opt, raw.size(), 2)});
+        if (raw.size() >= 3 * kMaxStlTriangles)
+            fail(name, "more than " + std::to_string(kMaxStlTriangles) + " triangles (the limit)");
+        raw.push_back({text_number(t[1], name, opt, raw.size(), 0), text_number(t[2], name, opt, raw.size(), 1),
+                       text_number(t[3], name, opt, raw.size(), 2)});
         return true;
     });
     if (raw.empty()) fail(name, "malformed STL file: no 'vertex' lines");
@@ -235,9 +249,10 @@ struct PlyElement {
     std::vector<PlyProperty> props;
 };
 size_t ply_size(const std::string& type) {
-    static const std::map<std::string, size_t> sizes = {
-        {"char", 1}, {"uchar", 1}, {"int8", 1}, {"uint8", 1}, {"short", 2}, {"ushort", 2}, {"int16", 2}, {"uint16", 2},
-        {"int", 4}, {"uint", 4}, {"int32", 4}, {"uint32", 4}, {"float", 4}, {"float32", 4}, {"double", 8}, {"float64", 8}};
+    static const std::map<std::string, size_t> sizes = {{"char", 1},  {"uchar", 1},   {"int8", 1},   {"uint8", 1},
+                                                        {"short", 2}, {"ushort", 2},  {"int16", 2},  {"uint16", 2},
+                                                        {"int", 4},   {"uint", 4},    {"int32", 4},  {"uint32", 4},
+                                                        {"float", 4}, {"float32", 4}, {"double", 8}, {"float64", 8}};
     auto it = sizes.find(type);
     return it == sizes.end() ? 0 : it->second;
 }
@@ -250,7 +265,8 @@ Q ply_value(const std::string& bytes, size_t at, const std::string& type, bool b
     if (type == "ushort" || type == "uint16") return Q(load<std::uint16_t>(bytes, at, be));
     if (type == "int" || type == "int32") return Q(static_cast<long>(load<std::int32_t>(bytes, at, be)));
     if (type == "uint" || type == "uint32") return Q(static_cast<unsigned long>(load<std::uint32_t>(bytes, at, be)));
-    const double d = type == "float" || type == "float32" ? static_cast<double>(load<float>(bytes, at, be)) : load<double>(bytes, at, be);
+    const double d = type == "float" || type == "float32" ? static_cast<double>(load<float>(bytes, at, be))
+                                                          : load<double>(bytes, at, be);
     finite = std::isfinite(d);
     return finite ? exact_from_double(d) : Q(0);
 }
@@ -278,19 +294,24 @@ std::vector<Vec3q> parse_ply(const std::string& bytes, const std::string& name, 
         }
         if (t.empty() || t[0] == "comment" || t[0] == "obj_info") continue;
         if (t[0] == "format") {
-            if (t.size() != 3 || (t[1] != "ascii" && t[1] != "binary_little_endian" && t[1] != "binary_big_endian") || t[2] != "1.0")
+            if (t.size() != 3 || (t[1] != "ascii" && t[1] != "binary_little_endian" && t[1] != "binary_big_endian") ||
+                t[2] != "1.0")
                 fail(name, where + "unknown PLY format " + quoted(line));
             format = t[1];
         } else if (t[0] == "element") {
-            if (t.size() != 3 || t[2].empty() || t[2].size() > 12 || t[2].find_first_not_of("0123456789") != std::string::npos)
+            if (t.size() != 3 || t[2].empty() || t[2].size() > 12 ||
+                t[2].find_first_not_of("0123456789") != std::string::npos)
                 fail(name, where + "expected 'element NAME COUNT'");
             elements.push_back({t[1], std::stoull(t[2]), {}});
         } else if (t[0] == "property") {
             if (elements.empty()) fail(name, where + "a property before any element");
-            if (t.size() == 3 && ply_size(t[1])) elements.back().props.push_back({t[2], t[1], ""});
-            else if (t.size() == 5 && t[1] == "list" && ply_size(t[2]) && ply_size(t[3]) && t[2].find("float") == std::string::npos && t[2] != "double")
+            if (t.size() == 3 && ply_size(t[1]))
+                elements.back().props.push_back({t[2], t[1], ""});
+            else if (t.size() == 5 && t[1] == "list" && ply_size(t[2]) && ply_size(t[3]) &&
+                     t[2].find("float") == std::string::npos && t[2] != "double")
                 elements.back().props.push_back({t[4], t[3], t[2]});
-            else fail(name, where + "malformed property " + quoted(line));
+            else
+                fail(name, where + "malformed property " + quoted(line));
         } else if (t[0] == "end_header") {
             ended = true;
         } else {
@@ -309,10 +330,12 @@ std::vector<Vec3q> parse_ply(const std::string& bytes, const std::string& name, 
     for (size_t p = 0; p < ve.props.size(); ++p)
         for (int c = 0; c < 3; ++c)
             if (ve.props[p].name == std::string(1, static_cast<char>('x' + c))) {
-                if (!ve.props[p].count_type.empty()) fail(name, "malformed PLY file: vertex property " + ve.props[p].name + " is a list");
+                if (!ve.props[p].count_type.empty())
+                    fail(name, "malformed PLY file: vertex property " + ve.props[p].name + " is a list");
                 coord[c] = static_cast<int>(p);
             }
-    if (coord[0] < 0 || coord[1] < 0 || coord[2] < 0) fail(name, "malformed PLY file: the vertex element lacks x, y or z");
+    if (coord[0] < 0 || coord[1] < 0 || coord[2] < 0)
+        fail(name, "malformed PLY file: the vertex element lacks x, y or z");
     if (ve.count > kMaxPoints) fail(name, "more than " + std::to_string(kMaxPoints) + " vertices (the limit)");
     std::vector<Vec3q> pts;
     pts.reserve(ve.count);
@@ -323,22 +346,31 @@ std::vector<Vec3q> parse_ply(const std::string& bytes, const std::string& name, 
         size_t line_no = no;
         each_line(bytes.substr(pos), [&](const std::vector<std::string>& t, size_t) {
             ++line_no;
-            if (skip > 0) { --skip; return true; }
+            if (skip > 0) {
+                --skip;
+                return true;
+            }
             if (pts.size() == ve.count) return false;
             // Lists in the vertex element: a count, then that many values.
             std::vector<std::string> v;
             size_t i = 0;
             for (const PlyProperty& p : ve.props) {
-                if (i >= t.size()) fail(name, "line " + std::to_string(line_no) + ": fewer values than the vertex properties");
-                if (p.count_type.empty()) { v.push_back(t[i++]); continue; }
+                if (i >= t.size())
+                    fail(name, "line " + std::to_string(line_no) + ": fewer values than the vertex properties");
+                if (p.count_type.empty()) {
+                    v.push_back(t[i++]);
+                    continue;
+                }
                 const std::string& c = t[i++];
                 if (c.empty() || c.size() > 6 || c.find_first_not_of("0123456789") != std::string::npos)
                     fail(name, "line " + std::to_string(line_no) + ": bad list count " + quoted(c));
                 i += std::stoul(c);
                 v.push_back("");
             }
-            if (i > t.size()) fail(name, "line " + std::to_string(line_no) + ": fewer values than the vertex properties");
-            if (i < t.size()) fail(name, "line " + std::to_string(line_no) + ": more values than the vertex properties");
+            if (i > t.size())
+                fail(name, "line " + std::to_string(line_no) + ": fewer values than the vertex properties");
+            if (i < t.size())
+                fail(name, "line " + std::to_string(line_no) + ": more values than the vertex properties");
             pts.push_back({text_number(v[static_cast<size_t>(coord[0])], name, opt, pts.size(), 0),
                            text_number(v[static_cast<size_t>(coord[1])], name, opt, pts.size(), 1),
                            text_number(v[static_cast<size_t>(coord[2])], name, opt, pts.size(), 2)});
@@ -351,7 +383,7 @@ std::vector<Vec3q> parse_ply(const std::string& bytes, const std::string& name, 
         };
         for (size_t k = 0; k <= which; ++k) {
             const PlyElement& el = elements[k];
-            if (el.props.empty()) continue;  // instances of no bytes: nothing to read
+            if (el.props.empty()) continue;          // instances of no bytes: nothing to read
             for (size_t i = 0; i < el.count; ++i) {  // each reads at least one byte: at most the file's size
                 Vec3q v;
                 for (size_t p = 0; p < el.props.size(); ++p) {
@@ -373,7 +405,9 @@ std::vector<Vec3q> parse_ply(const std::string& bytes, const std::string& name, 
                             if (coord[c] == static_cast<int>(p)) {
                                 bool fin;
                                 v[c] = ply_value(bytes, at, pr.type, be, fin);
-                                if (!fin) fail(name, "vertex " + std::to_string(i) + " coordinate " + std::to_string(c) + ": not finite");
+                                if (!fin)
+                                    fail(name, "vertex " + std::to_string(i) + " coordinate " + std::to_string(c) +
+                                                   ": not finite");
                             }
                     at += ply_size(pr.type);
                 }
@@ -382,7 +416,8 @@ std::vector<Vec3q> parse_ply(const std::string& bytes, const std::string& name, 
             if (k < which && at > bytes.size()) fail(name, "malformed PLY file: the data ends early");
         }
     }
-    if (pts.size() != ve.count) fail(name, "malformed PLY file: fewer than the " + std::to_string(ve.count) + " vertices announced");
+    if (pts.size() != ve.count)
+        fail(name, "malformed PLY file: fewer than the " + std::to_string(ve.count) + " vertices announced");
     return pts;
 }
 }  // namespace
@@ -399,10 +434,10 @@ MeshFormat mesh_format_of(const std::string& path) {
 
 std::vector<Vec3q> parse_mesh(const std::string& bytes, MeshFormat f, const std::string& name, const ReadOptions& opt) {
     switch (f) {
-        case MeshFormat::Off: return parse_off(bytes, name, opt);
-        case MeshFormat::Obj: return parse_obj(bytes, name, opt);
-        case MeshFormat::Ply: return parse_ply(bytes, name, opt);
-        case MeshFormat::Stl: return parse_stl(bytes, name, opt);
+    case MeshFormat::Off: return parse_off(bytes, name, opt);
+    case MeshFormat::Obj: return parse_obj(bytes, name, opt);
+    case MeshFormat::Ply: return parse_ply(bytes, name, opt);
+    case MeshFormat::Stl: return parse_stl(bytes, name, opt);
     }
     throw InputError(name + ": unknown mesh format");
 }
@@ -434,7 +469,8 @@ std::vector<Vec3q> read_mesh(const std::string& path, const ReadOptions& opt, st
     std::vector<Vec3q> pts = parse_mesh(bytes, f, path, opt);
     if (note && f == MeshFormat::Obj)
         if (const size_t g = obj_groups_with_faces(bytes); g >= 2)
-            *note = path + ": " + std::to_string(g) + " groups with faces, read as one convex object (the hull of all its vertices); "
+            *note = path + ": " + std::to_string(g) +
+                    " groups with faces, read as one convex object (the hull of all its vertices); "
                     "--parts-from-groups (or the scene key \"parts_from_groups\") reads a convex part per group";
     return pts;
 }
@@ -443,7 +479,8 @@ std::vector<std::vector<Vec3q>> read_obj_groups(const std::string& path, const R
     const MeshFormat f = mesh_format_of(path);
     if (f != MeshFormat::Obj) {
         static const char* kind[] = {"an OFF", "an OBJ", "a PLY", "an STL"};
-        throw InputError(path + ": parts from groups need an OBJ file (" + kind[static_cast<int>(f)] + " file has no groups)");
+        throw InputError(path + ": parts from groups need an OBJ file (" + kind[static_cast<int>(f)] +
+                         " file has no groups)");
     }
     return parse_obj_groups(read_input(path, "mesh file", kMaxSceneBytes), path, opt);
 }

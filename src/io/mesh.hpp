@@ -18,7 +18,8 @@ MeshFormat mesh_format_of(const std::string& path);
 
 // The vertices of mesh text (the whole file's bytes). `name` labels errors. STL repeats each
 // vertex in every triangle: its vertices come out once each, in order of first appearance.
-std::vector<Vec3q> parse_mesh(const std::string& bytes, MeshFormat f, const std::string& name, const ReadOptions& opt = {});
+std::vector<Vec3q> parse_mesh(const std::string& bytes, MeshFormat f, const std::string& name,
+                              const ReadOptions& opt = {});
 
 // Reads a mesh file (format by extension, at most kMaxSceneBytes).
 // With `note`: a remark for the user when an OBJ file with two or more groups with faces is read

@@ -25,7 +25,9 @@ struct Reader {
     // only on an error (a scene has tens of thousands of numbers).
     static std::string text_of(const std::string& w) { return w; }
     template <class F>
-    static std::string text_of(const F& w) { return w(); }
+    static std::string text_of(const F& w) {
+        return w();
+    }
     template <class W>
     Q number_text(const std::string& text, bool is_string, const W& where) const {
         try {
@@ -52,9 +54,8 @@ struct Reader {
 // Faces are not needed: the polyhedron is the convex hull of the vertices.
 }  // namespace
 
-
 ExactScene parse_scene_text(const std::string& text, const std::string& name, const std::string& base_dir,
-                       const ReadOptions& opt) {
+                            const ReadOptions& opt) {
     Reader r{name, opt};
     JNode tree;
     try {
@@ -69,11 +70,13 @@ ExactScene parse_scene_text(const std::string& text, const std::string& name, co
         for (const std::string& k : o.keys) {
             bool ok = false;
             for (const char* n : known) ok = ok || k == n;
-            if (!ok) r.fail(where, "unknown field " + quoted(k) + " (expected " + [&] {
-                std::string l;
-                for (const char* n : known) l += (l.empty() ? "" : ", ") + std::string(n);
-                return l;
-            }() + ")");
+            if (!ok)
+                r.fail(
+                    where, "unknown field " + quoted(k) + " (expected " + [&] {
+                        std::string l;
+                        for (const char* n : known) l += (l.empty() ? "" : ", ") + std::string(n);
+                        return l;
+                    }() + ")");
         }
     };
     only(root, "", {"P1", "P2", "I1", "I2"});
@@ -93,14 +96,17 @@ ExactScene parse_scene_text(const std::string& text, const std::string& name, co
             const JNode* verts = o.find("vertices");
             const JNode* off = o.find("off");
             const JNode* mesh = o.find("mesh");
-            if ((verts != nullptr) + (off != nullptr) + (mesh != nullptr) > 1) r.fail(where, "give one of \"vertices\", \"mesh\" and \"off\"");
+            if ((verts != nullptr) + (off != nullptr) + (mesh != nullptr) > 1)
+                r.fail(where, "give one of \"vertices\", \"mesh\" and \"off\"");
             if (mesh) off = mesh;
             if (verts) {
                 if (verts->kind != JNode::Array) r.fail(where + ".vertices", "expected an array of points");
-                if (verts->items.size() > kMaxPoints) r.fail(where + ".vertices", "more than " + std::to_string(kMaxPoints) + " points (the limit)");
+                if (verts->items.size() > kMaxPoints)
+                    r.fail(where + ".vertices", "more than " + std::to_string(kMaxPoints) + " points (the limit)");
                 pts.reserve(verts->items.size());
                 for (size_t j = 0; j < verts->items.size(); ++j)
-                    pts.push_back(r.point(verts->items[j], [&] { return where + ".vertices[" + std::to_string(j) + "]"; }));
+                    pts.push_back(
+                        r.point(verts->items[j], [&] { return where + ".vertices[" + std::to_string(j) + "]"; }));
             } else if (off) {
                 const std::string key = where + (mesh ? ".mesh" : ".off");
                 if (off->kind != JNode::String) r.fail(key, "expected a file name");
@@ -114,7 +120,8 @@ ExactScene parse_scene_text(const std::string& text, const std::string& name, co
                     o2.parts_from_groups = true;
                     read_mesh_object(path, o2, into);
                 } else {
-                    pts = mesh ? read_mesh(path, opt, &into.note) : parse_mesh(read_input(path, "OFF file", kMaxSceneBytes), MeshFormat::Off, path, opt);
+                    pts = mesh ? read_mesh(path, opt, &into.note)
+                               : parse_mesh(read_input(path, "OFF file", kMaxSceneBytes), MeshFormat::Off, path, opt);
                 }
             } else {
                 r.fail(where, "missing field \"vertices\" (or \"mesh\", \"off\")");
@@ -124,10 +131,14 @@ ExactScene parse_scene_text(const std::string& text, const std::string& name, co
             only(*p, pname[i], {"parts", "seed"});
             const std::string where = std::string(pname[i]) + ".parts";
             if (!opt.allow_parts)
-                r.fail(where, "an object made of parts is read by `scalecert region`, `query`, `partition`, `classify`, `certify-fp` and `audit`; "
-                              "`curve`, `golden` and `grid` are for two convex objects (`scalecert region` gives where objects made of parts meet)");
+                r.fail(where,
+                       "an object made of parts is read by `scalecert region`, `query`, `partition`, `classify`, "
+                       "`certify-fp` and `audit`; "
+                       "`curve`, `golden` and `grid` are for two convex objects (`scalecert region` gives where "
+                       "objects made of parts meet)");
             if (parts->kind != JNode::Array || parts->items.empty()) r.fail(where, "expected a nonempty list of parts");
-            if (parts->items.size() > kMaxParts) r.fail(where, "more than " + std::to_string(kMaxParts) + " parts (the limit)");
+            if (parts->items.size() > kMaxParts)
+                r.fail(where, "more than " + std::to_string(kMaxParts) + " parts (the limit)");
             for (size_t k = 0; k < parts->items.size(); ++k) {
                 const std::string w = where + "[" + std::to_string(k) + "]";
                 const JNode& part = parts->items[k];
@@ -148,7 +159,9 @@ ExactScene parse_scene_text(const std::string& text, const std::string& name, co
                 const std::string w = std::string(pname[i]) + ".parts_from_groups";
                 if (g->kind != JNode::Bool) r.fail(w, "expected true or false");
                 if (!opt.allow_parts)
-                    r.fail(w, "not read by `curve`, `golden` and `grid`, which are for two convex objects (drop the key: the mesh is then read as one convex object)");
+                    r.fail(w,
+                           "not read by `curve`, `golden` and `grid`, which are for two convex objects (drop the key: "
+                           "the mesh is then read as one convex object)");
                 groups = g->text == "true";
                 if (groups && !p->find("mesh")) r.fail(w, "parts from groups need an OBJ \"mesh\"");
             }
@@ -181,10 +194,14 @@ void check_scene(const ExactScene& sc, const std::string& name) {
                                  std::to_string(sc.P[i].parts[k].size()) + ")");
         const size_t n = sc.P[i].points.size();
         if (n < 4) throw InputError(name + ": " + pname[i] + ": fewer than 4 vertices (" + std::to_string(n) + ")");
-        if (n > kMaxPoints) throw InputError(name + ": " + pname[i] + ": more than " + std::to_string(kMaxPoints) + " points (the limit)");
+        if (n > kMaxPoints)
+            throw InputError(name + ": " + pname[i] + ": more than " + std::to_string(kMaxPoints) +
+                             " points (the limit)");
     }
     for (int i = 0; i < 2; ++i) {
-        if (sgn(sc.lo[i]) <= 0) throw InputError(name + ": " + iname[i] + ": lo must be > 0 (got " + quoted(to_exact_string(sc.lo[i])) + ")");
+        if (sgn(sc.lo[i]) <= 0)
+            throw InputError(name + ": " + iname[i] + ": lo must be > 0 (got " + quoted(to_exact_string(sc.lo[i])) +
+                             ")");
         if (sc.lo[i] > sc.hi[i]) throw InputError(name + ": " + iname[i] + ": lo > hi");
     }
 }
@@ -198,8 +215,10 @@ void finish_scene(ExactScene& sc, const std::string& name) {
         Z zs[3] = {0, 0, 0};
         for (const Vec3q& v : in.points)
             for (int k = 0; k < 3; ++k) {
-                if (v[k].get_den() == 1) zs[k] += v[k].get_num();
-                else c[k] += v[k];
+                if (v[k].get_den() == 1)
+                    zs[k] += v[k].get_num();
+                else
+                    c[k] += v[k];
             }
         for (int k = 0; k < 3; ++k) c[k] = (c[k] + Q(zs[k])) / Q(static_cast<long>(in.points.size()));
         in.seed = c;

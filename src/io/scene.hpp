@@ -8,8 +8,9 @@
 namespace scalecert::internal {
 
 struct PolyInput {
-    std::vector<Vec3q> points;  // as given (duplicates and non-extreme points allowed); a compound's: all its parts' in order
-    Vec3q seed;                 // given, or the mean of the points
+    std::vector<Vec3q>
+        points;  // as given (duplicates and non-extreme points allowed); a compound's: all its parts' in order
+    Vec3q seed;  // given, or the mean of the points
     bool seed_given = false;
     // A compound object: its convex parts, each the hull of its points, all scaled about
     // the one seed. Empty for a plain (convex) object. Read only with ReadOptions::allow_parts.
@@ -24,7 +25,7 @@ constexpr size_t kMaxParts = 10000;
 
 struct ExactScene {
     PolyInput P[2];
-    Q lo[2], hi[2];  // I1 = [lo[0], hi[0]], I2 = [lo[1], hi[1]]
+    Q lo[2], hi[2];                  // I1 = [lo[0], hi[0]], I2 = [lo[1], hi[1]]
     std::vector<std::string> files;  // the mesh files a scene file named, as opened (no output may replace one)
 };
 
@@ -32,7 +33,8 @@ struct ReadOptions {
     bool binary_doubles = false;  // JSON/OFF numbers read as the IEEE doubles strtod gives
     bool allow_off_files = true;  // "mesh" / "off": "FILE" in a scene (off for text from untrusted sources)
     bool allow_parts = false;     // objects made of "parts" (scalecert region); refused elsewhere
-    bool parts_from_groups = false;  // an object's OBJ mesh as a compound, a part per group (region --parts-from-groups)
+    bool parts_from_groups =
+        false;  // an object's OBJ mesh as a compound, a part per group (region --parts-from-groups)
 };
 
 // Reads and checks a scene file. Throws InputError naming the file and the offending field.
@@ -46,6 +48,6 @@ void check_scene(const ExactScene& sc, const std::string& name);
 // call it for a scene assembled in code.
 void finish_scene(ExactScene& sc, const std::string& name);
 ExactScene parse_scene_text(const std::string& text, const std::string& name, const std::string& base_dir,
-                       const ReadOptions& opt = {});
+                            const ReadOptions& opt = {});
 
 }  // namespace scalecert::internal

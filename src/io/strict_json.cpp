@@ -17,7 +17,7 @@ namespace {
 constexpr int kMaxDepth = 64;
 
 class StrictJson {
-public:
+  public:
     StrictJson(const std::string& t, bool non_numbers) : s_(t), non_numbers_(non_numbers) {}
     JNode parse() {
         JNode root;
@@ -28,7 +28,7 @@ public:
         return root;
     }
 
-private:
+  private:
     const std::string& s_;
     const bool non_numbers_;
     size_t i_ = 0;
@@ -41,7 +41,10 @@ private:
         while (i_ < s_.size() && (s_[i_] == ' ' || s_[i_] == '\t' || s_[i_] == '\n' || s_[i_] == '\r')) ++i_;
     }
     bool eat(char c) {
-        if (i_ < s_.size() && s_[i_] == c) { ++i_; return true; }
+        if (i_ < s_.size() && s_[i_] == c) {
+            ++i_;
+            return true;
+        }
         return false;
     }
     void literal(const char* word) {
@@ -51,7 +54,8 @@ private:
     bool digit() const { return i_ < s_.size() && s_[i_] >= '0' && s_[i_] <= '9'; }
     void value(JNode& n, int depth) {
         if (i_ >= s_.size()) fail("unexpected end of the file");
-        if (++values_ > kMaxJsonValues) fail("more than " + std::to_string(kMaxJsonValues) + " JSON values (the limit)");
+        if (++values_ > kMaxJsonValues)
+            fail("more than " + std::to_string(kMaxJsonValues) + " JSON values (the limit)");
         const char c = s_[i_];
         if (c == '{' || c == '[') {
             if (depth >= kMaxDepth) fail("nested deeper than " + std::to_string(kMaxDepth) + " levels");
@@ -67,7 +71,10 @@ private:
                     if (i_ >= s_.size() || s_[i_] != '"') unexpected("expected a string key");
                     const size_t at = i_;
                     std::string k = string();
-                    if (!seen.insert(k).second) { i_ = at; fail("duplicate key " + quoted(k)); }
+                    if (!seen.insert(k).second) {
+                        i_ = at;
+                        fail("duplicate key " + quoted(k));
+                    }
                     n.keys.push_back(std::move(k));
                     ws();
                     if (!eat(':')) fail("expected ':'");
@@ -80,17 +87,38 @@ private:
                 if (!eat(',')) unexpected(std::string("expected ',' or '") + close + "'");
             }
         }
-        if (c == '"') { n.kind = JNode::String; n.text = string(); return; }
-        if (c == 't') { literal("true"); n.kind = JNode::Bool; n.text = "true"; return; }
-        if (c == 'f') { literal("false"); n.kind = JNode::Bool; n.text = "false"; return; }
-        if (c == 'n') { literal("null"); return; }
+        if (c == '"') {
+            n.kind = JNode::String;
+            n.text = string();
+            return;
+        }
+        if (c == 't') {
+            literal("true");
+            n.kind = JNode::Bool;
+            n.text = "true";
+            return;
+        }
+        if (c == 'f') {
+            literal("false");
+            n.kind = JNode::Bool;
+            n.text = "false";
+            return;
+        }
+        if (c == 'n') {
+            literal("null");
+            return;
+        }
         if (non_numbers_ && (c == 'N' || c == 'I' || (c == '-' && i_ + 1 < s_.size() && s_[i_ + 1] == 'I'))) {
             n.kind = JNode::Number;
             n.text = c == 'N' ? "NaN" : c == 'I' ? "Infinity" : "-Infinity";
             literal(n.text.c_str());
             return;
         }
-        if (c == '-' || (c >= '0' && c <= '9')) { n.kind = JNode::Number; n.text = number(); return; }
+        if (c == '-' || (c >= '0' && c <= '9')) {
+            n.kind = JNode::Number;
+            n.text = number();
+            return;
+        }
         unexpected("unexpected character");
     }
     // -?(0|[1-9][0-9]*)(.[0-9]+)?([eE][+-]?[0-9]+)?
@@ -125,10 +153,21 @@ private:
         return v;
     }
     static void utf8(std::string& out, unsigned cp) {
-        if (cp < 0x80) out += static_cast<char>(cp);
-        else if (cp < 0x800) { out += static_cast<char>(0xC0 | (cp >> 6)); out += static_cast<char>(0x80 | (cp & 0x3F)); }
-        else if (cp < 0x10000) { out += static_cast<char>(0xE0 | (cp >> 12)); out += static_cast<char>(0x80 | ((cp >> 6) & 0x3F)); out += static_cast<char>(0x80 | (cp & 0x3F)); }
-        else { out += static_cast<char>(0xF0 | (cp >> 18)); out += static_cast<char>(0x80 | ((cp >> 12) & 0x3F)); out += static_cast<char>(0x80 | ((cp >> 6) & 0x3F)); out += static_cast<char>(0x80 | (cp & 0x3F)); }
+        if (cp < 0x80)
+            out += static_cast<char>(cp);
+        else if (cp < 0x800) {
+            out += static_cast<char>(0xC0 | (cp >> 6));
+            out += static_cast<char>(0x80 | (cp & 0x3F));
+        } else if (cp < 0x10000) {
+            out += static_cast<char>(0xE0 | (cp >> 12));
+            out += static_cast<char>(0x80 | ((cp >> 6) & 0x3F));
+            out += static_cast<char>(0x80 | (cp & 0x3F));
+        } else {
+            out += static_cast<char>(0xF0 | (cp >> 18));
+            out += static_cast<char>(0x80 | ((cp >> 12) & 0x3F));
+            out += static_cast<char>(0x80 | ((cp >> 6) & 0x3F));
+            out += static_cast<char>(0x80 | (cp & 0x3F));
+        }
     }
     // One UTF-8 sequence starting at i_ (well-formed, shortest form, no surrogates), copied.
     void utf8_sequence(std::string& out) {
@@ -141,7 +180,8 @@ private:
             if ((d & 0xC0) != 0x80) fail("invalid UTF-8");
             cp = cp << 6 | (d & 0x3F);
         }
-        if ((n == 2 && cp < 0x800) || (n == 3 && (cp < 0x10000 || cp > 0x10FFFF)) || (cp >= 0xD800 && cp <= 0xDFFF)) fail("invalid UTF-8");
+        if ((n == 2 && cp < 0x800) || (n == 3 && (cp < 0x10000 || cp > 0x10FFFF)) || (cp >= 0xD800 && cp <= 0xDFFF))
+            fail("invalid UTF-8");
         out.append(s_, i_, static_cast<size_t>(n) + 1);
         i_ += static_cast<size_t>(n) + 1;
     }
@@ -151,34 +191,44 @@ private:
         for (;;) {
             if (i_ >= s_.size()) fail("unterminated string");
             const unsigned char c = static_cast<unsigned char>(s_[i_]);
-            if (c == '"') { ++i_; return out; }
+            if (c == '"') {
+                ++i_;
+                return out;
+            }
             if (c < 0x20) fail("control character in a string");
-            if (c >= 0x80) { utf8_sequence(out); continue; }
-            if (c != '\\') { out += static_cast<char>(c); ++i_; continue; }
+            if (c >= 0x80) {
+                utf8_sequence(out);
+                continue;
+            }
+            if (c != '\\') {
+                out += static_cast<char>(c);
+                ++i_;
+                continue;
+            }
             if (++i_ >= s_.size()) fail("unterminated string");
             const char e = s_[i_++];
             switch (e) {
-                case '"': out += '"'; break;
-                case '\\': out += '\\'; break;
-                case '/': out += '/'; break;
-                case 'b': out += '\b'; break;
-                case 'f': out += '\f'; break;
-                case 'n': out += '\n'; break;
-                case 'r': out += '\r'; break;
-                case 't': out += '\t'; break;
-                case 'u': {
-                    unsigned cp = hex4();
-                    if (cp >= 0xDC00 && cp <= 0xDFFF) fail("unpaired surrogate in a \\u escape");
-                    if (cp >= 0xD800 && cp <= 0xDBFF) {
-                        if (!eat('\\') || !eat('u')) fail("unpaired surrogate in a \\u escape");
-                        unsigned lo = hex4();
-                        if (lo < 0xDC00 || lo > 0xDFFF) fail("unpaired surrogate in a \\u escape");
-                        cp = 0x10000 + ((cp - 0xD800) << 10) + (lo - 0xDC00);
-                    }
-                    utf8(out, cp);
-                    break;
+            case '"': out += '"'; break;
+            case '\\': out += '\\'; break;
+            case '/': out += '/'; break;
+            case 'b': out += '\b'; break;
+            case 'f': out += '\f'; break;
+            case 'n': out += '\n'; break;
+            case 'r': out += '\r'; break;
+            case 't': out += '\t'; break;
+            case 'u': {
+                unsigned cp = hex4();
+                if (cp >= 0xDC00 && cp <= 0xDFFF) fail("unpaired surrogate in a \\u escape");
+                if (cp >= 0xD800 && cp <= 0xDBFF) {
+                    if (!eat('\\') || !eat('u')) fail("unpaired surrogate in a \\u escape");
+                    unsigned lo = hex4();
+                    if (lo < 0xDC00 || lo > 0xDFFF) fail("unpaired surrogate in a \\u escape");
+                    cp = 0x10000 + ((cp - 0xD800) << 10) + (lo - 0xDC00);
                 }
-                default: --i_; fail("invalid escape in a string");
+                utf8(out, cp);
+                break;
+            }
+            default: --i_; fail("invalid escape in a string");
             }
         }
     }

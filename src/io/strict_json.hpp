@@ -11,7 +11,7 @@ namespace scalecert::internal {
 // A JSON tree; numbers and strings keep their text.
 struct JNode {
     enum Kind { Null, Bool, Number, String, Array, Object } kind = Null;
-    std::string text;         // number as written, string value, or "true" / "false"
+    std::string text;          // number as written, string value, or "true" / "false"
     std::vector<JNode> items;  // array items, or object values
     std::vector<std::string> keys;
     const JNode* find(const std::string& k) const {
@@ -22,7 +22,10 @@ struct JNode {
 };
 
 // A malformed document: the byte offset and the problem.
-struct JsonError { size_t pos; std::string what; };
+struct JsonError {
+    size_t pos;
+    std::string what;
+};
 
 // No comments, no leading zeros, no bare keys, no trailing commas, UTF-8 only, duplicate keys
 // rejected (a file must not mean two things), at most 64 levels of nesting and kMaxJsonValues

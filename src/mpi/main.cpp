@@ -52,7 +52,8 @@ bool run_file_exists(const std::string& path) {
     struct stat st {};
     if (::lstat(path.c_str(), &st) != 0) return false;
     if (!S_ISREG(st.st_mode))
-        throw InputError(path + ": " + (S_ISLNK(st.st_mode) ? "is a symbolic link" : "is not a regular file") + " (refused in a run folder)");
+        throw InputError(path + ": " + (S_ISLNK(st.st_mode) ? "is a symbolic link" : "is not a regular file") +
+                         " (refused in a run folder)");
     return true;
 }
 
@@ -66,7 +67,8 @@ std::string slurp(const std::string& path) {
 // the reader ignores. `create`: the manifest is new (O_EXCL: nothing may be there, not even a
 // dangling symbolic link); else it must be the regular file already there (O_NOFOLLOW).
 void append_line(const std::string& path, const std::string& line, bool create = false) {
-    const int fd = ::open(path.c_str(), O_WRONLY | O_APPEND | O_CLOEXEC | O_NOFOLLOW | (create ? O_CREAT | O_EXCL : 0), 0644);
+    const int fd =
+        ::open(path.c_str(), O_WRONLY | O_APPEND | O_CLOEXEC | O_NOFOLLOW | (create ? O_CREAT | O_EXCL : 0), 0644);
     if (fd < 0 && (errno == ELOOP || errno == EEXIST)) run_file_exists(path);  // words a symbolic link
     if (fd < 0) throw InputError(path + ": cannot write the manifest (" + std::strerror(errno) + ")");
     struct stat st {};
@@ -91,7 +93,8 @@ void check_shards_dir(const std::string& run) {
         if (::lstat(d.c_str(), &st) != 0) throw InputError(d + ": cannot create the shards folder");
     }
     if (!S_ISDIR(st.st_mode))
-        throw InputError(d + ": " + (S_ISLNK(st.st_mode) ? "is a symbolic link" : "is not a directory") + " (refused in a run folder)");
+        throw InputError(d + ": " + (S_ISLNK(st.st_mode) ? "is a symbolic link" : "is not a directory") +
+                         " (refused in a run folder)");
 }
 
 // Why the manifest's first line differs from this command's identity: another command, or the
@@ -116,9 +119,13 @@ std::string identity_mismatch(const std::string& run, const std::string& recorde
         for (const Json& g : old_inputs)
             if (g.is_array() && g.size() == 2 && g.at(0) == f.at(0) && g.at(1) == f.at(1)) same = true;
         if (!same)
-            return path + ": changed since the run in " + run + " began (its SHA-256 differs); refused: no shard computed from the old contents is merged (start a new --run folder)";
+            return path + ": changed since the run in " + run +
+                   " began (its SHA-256 differs); refused: no shard computed from the old contents is merged (start a "
+                   "new --run folder)";
     }
-    return run + ": the files the run read changed since it began (their SHA-256 differ); refused: no shard computed from the old contents is merged (start a new --run folder)";
+    return run +
+           ": the files the run read changed since it began (their SHA-256 differ); refused: no shard computed from "
+           "the old contents is merged (start a new --run folder)";
 }
 
 // The shards the manifest records as finished, with their hashes; checks the identity line.
@@ -152,8 +159,8 @@ struct Progress {
         const double t = std::chrono::duration<double>(now - start).count();
         const double rate = t > 0 ? scenes / t : 0;
         const double left = todo_done ? t * static_cast<double>(todo - todo_done) / static_cast<double>(todo_done) : 0;
-        std::fprintf(stderr, "%sscalecert-mpi: %zu/%zu shards, %.1f scenes/s, about %.0f s left%s", tty ? "\r" : "", done, total, rate,
-                     left, tty && !final ? "" : "\n");
+        std::fprintf(stderr, "%sscalecert-mpi: %zu/%zu shards, %.1f scenes/s, about %.0f s left%s", tty ? "\r" : "",
+                     done, total, rate, left, tty && !final ? "" : "\n");
         std::fflush(stderr);
     }
 };
@@ -179,7 +186,8 @@ int main(int argc, char** argv) {
     MPI_Comm_rank(MPI_COMM_WORLD, &rank);
     MPI_Comm_size(MPI_COMM_WORLD, &size);
 
-    CLI::App app{"scalecert-mpi: golden data and audits sharded over MPI ranks, resumable; output identical to scalecert's"};
+    CLI::App app{
+        "scalecert-mpi: golden data and audits sharded over MPI ranks, resumable; output identical to scalecert's"};
     app.require_subcommand(1);
     app.set_version_flag("--version", std::string("scalecert-mpi ") + scalecert::version());
     CampaignArgs golden_args, audit_args;
@@ -194,10 +202,14 @@ int main(int argc, char** argv) {
     for (CLI::App* sub : {golden, audit}) {
         sub->add_option("--run", run, "run folder: the manifest and one file per finished shard")->required();
         sub->add_flag("--resume", resume, "go on with the run in --run: redo only missing or damaged shards");
-        sub->add_option("--shard-size", shard_size, "family scenes per shard (default 16 golden, 4 audit)")->check(CLI::Range(1, 1000000));
-        sub->add_option("--stop-after", stop_after, "(for tests) stop, as if killed, after this many shards")->check(CLI::Range(0L, 1L << 40));
-        sub->footer("\nExample:\n  mpirun -np 64 scalecert-mpi " + std::string(sub == golden ? "golden --family random --count 100000 --dir golden/"
-                                                                                           : "audit --family sliver --sweep 2 --sweep-to 40 --count 1000 --out a.json --csv a.csv --no-timing") +
+        sub->add_option("--shard-size", shard_size, "family scenes per shard (default 16 golden, 4 audit)")
+            ->check(CLI::Range(1, 1000000));
+        sub->add_option("--stop-after", stop_after, "(for tests) stop, as if killed, after this many shards")
+            ->check(CLI::Range(0L, 1L << 40));
+        sub->footer("\nExample:\n  mpirun -np 64 scalecert-mpi " +
+                    std::string(sub == golden ? "golden --family random --count 100000 --dir golden/"
+                                              : "audit --family sliver --sweep 2 --sweep-to 40 --count 1000 --out "
+                                                "a.json --csv a.csv --no-timing") +
                     " --run run/\n  (rerun with --resume after a crash)");
     }
     try {
@@ -236,7 +248,8 @@ int main(int argc, char** argv) {
                 done = read_manifest(run, identity);
                 check_shards_dir(run);
             } else {
-                if (run_file_exists(run + "/manifest.jsonl")) throw InputError(run + ": a run is already there (add --resume to go on with it)");
+                if (run_file_exists(run + "/manifest.jsonl"))
+                    throw InputError(run + ": a run is already there (add --resume to go on with it)");
                 check_shards_dir(run);
                 append_line(run + "/manifest.jsonl", identity, true);
             }
@@ -246,7 +259,8 @@ int main(int argc, char** argv) {
                     const std::string text = slurp(shard_path(run, s.index));
                     // (A shard that read other contents than the run's inputs, changed and changed
                     // back while the run was stopped, is redone like a damaged one.)
-                    if (sha256_hex(text) == it->second && shard_outputs_intact(a, text) && stale_input(inputs, text).empty()) {
+                    if (sha256_hex(text) == it->second && shard_outputs_intact(a, text) &&
+                        stale_input(inputs, text).empty()) {
                         hashes[static_cast<size_t>(s.index)] = it->second;
                         ++done_before;
                         continue;
@@ -277,7 +291,9 @@ int main(int argc, char** argv) {
             ++ran;
             progress.show(finished, shards.size(), ran, todo.size(), false);
         };
-        auto may_start = [&] { return next < todo.size() && (stop_after < 0 || started < stop_after) && error.empty(); };
+        auto may_start = [&] {
+            return next < todo.size() && (stop_after < 0 || started < stop_after) && error.empty();
+        };
         try {
             if (size == 1) {
                 while (may_start()) {
@@ -321,8 +337,8 @@ int main(int argc, char** argv) {
             progress.show(finished, shards.size(), ran, todo.size(), true);
             if (!error.empty()) throw InputError(error);
             if (finished < shards.size()) {
-                std::fprintf(stderr, "scalecert-mpi: stopped after %zu shards as asked; %zu of %zu to go (--resume)\n", ran,
-                             shards.size() - finished, shards.size());
+                std::fprintf(stderr, "scalecert-mpi: stopped after %zu shards as asked; %zu of %zu to go (--resume)\n",
+                             ran, shards.size() - finished, shards.size());
                 status = 3;
             } else {
                 // Merge: every shard read back and checked against the manifest's hash.
@@ -335,11 +351,16 @@ int main(int argc, char** argv) {
                     // A scene file (or a mesh it names) changed after the run hashed it: refused, not merged.
                     const std::string stale = stale_input(inputs, texts.back());
                     if (!stale.empty())
-                        throw InputError(stale + ": changed during the run (its SHA-256 differs from the run's); refused: not merged (start a new --run folder)");
+                        throw InputError(stale +
+                                         ": changed during the run (its SHA-256 differs from the run's); refused: not "
+                                         "merged (start a new --run folder)");
                 }
                 const long n = finish_campaign(a, texts);
-                const double merge = std::chrono::duration<double>(std::chrono::steady_clock::now() - merge_start).count();
-                std::fprintf(stderr, "scalecert-mpi: %zu shards (%zu done before, %zu redone as damaged, %zu run now) on %d ranks: %ld %s; merge %.3f s\n",
+                const double merge =
+                    std::chrono::duration<double>(std::chrono::steady_clock::now() - merge_start).count();
+                std::fprintf(stderr,
+                             "scalecert-mpi: %zu shards (%zu done before, %zu redone as damaged, %zu run now) on %d "
+                             "ranks: %ld %s; merge %.3f s\n",
                              shards.size(), done_before, redone, ran, size, n, a.golden ? "scenes" : "rows", merge);
             }
         } catch (const InputError& e) {

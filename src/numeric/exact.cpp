@@ -90,13 +90,16 @@ std::string quoted(const std::string& text) {
     std::string out = "'";
     for (size_t i = 0; i < text.size() && i < kShown; ++i) {
         const unsigned char c = static_cast<unsigned char>(text[i]);
-        if (c == '\\') out += "\\\\";
-        else if (c == '\'') out += "\\'";
+        if (c == '\\')
+            out += "\\\\";
+        else if (c == '\'')
+            out += "\\'";
         else if (c < 0x20 || c == 0x7f) {
             char buf[8];
             std::snprintf(buf, sizeof buf, "\\x%02x", c);
             out += buf;
-        } else out += static_cast<char>(c);
+        } else
+            out += static_cast<char>(c);
     }
     out += "'";
     if (text.size() > kShown) out += " (" + std::to_string(text.size()) + " characters, cut)";
@@ -115,15 +118,19 @@ Q parse_exact(const std::string& text) {
             return r;
         }
     }
-    auto bad = [&text] { return InputError(quoted(text) + " is not an exact number (a decimal such as -1.5e-3, or a fraction p/q)"); };
+    auto bad = [&text] {
+        return InputError(quoted(text) + " is not an exact number (a decimal such as -1.5e-3, or a fraction p/q)");
+    };
     auto sized = [&text](Q r) {
-        if (mpz_sizeinbase(r.get_num_mpz_t(), 2) > kMaxNumberBits || mpz_sizeinbase(r.get_den_mpz_t(), 2) > kMaxNumberBits)
+        if (mpz_sizeinbase(r.get_num_mpz_t(), 2) > kMaxNumberBits ||
+            mpz_sizeinbase(r.get_den_mpz_t(), 2) > kMaxNumberBits)
             throw InputError(quoted(text) + " has more than " + std::to_string(kMaxNumberBits) +
                              " bits in its numerator or denominator (the limit for one number)");
         return r;
     };
     if (text.size() > kMaxNumberChars)
-        throw InputError(quoted(text) + " is longer than " + std::to_string(kMaxNumberChars) + " characters, the limit for one number");
+        throw InputError(quoted(text) + " is longer than " + std::to_string(kMaxNumberChars) +
+                         " characters, the limit for one number");
     if (text.empty()) throw bad();
     size_t slash = text.find('/');
     if (slash != std::string::npos) {
@@ -173,7 +180,10 @@ Q parse_exact(const std::string& text) {
 }
 
 Q exact_from_double(double d) {
-    if (!std::isfinite(d)) throw InputError("value is not finite as a double (beyond the double range: written as a string, \"1e400\", it is read exactly)");
+    if (!std::isfinite(d))
+        throw InputError(
+            "value is not finite as a double (beyond the double range: written as a string, \"1e400\", it is read "
+            "exactly)");
     Q r;
     mpq_set_d(r.get_mpq_t(), d);
     return r;
@@ -204,14 +214,19 @@ bool decimal_syntax(const std::string& t) {
 Q parse_number(const std::string& text, bool binary_doubles) {
     if (!binary_doubles || text.find('/') != std::string::npos) return parse_exact(text);
     if (text.size() > kMaxNumberChars)
-        throw InputError(quoted(text) + " is longer than " + std::to_string(kMaxNumberChars) + " characters, the limit for one number");
-    if (!decimal_syntax(text)) throw InputError(quoted(text) + " is not a number (a decimal such as -1.5e-3, or a fraction p/q)");
+        throw InputError(quoted(text) + " is longer than " + std::to_string(kMaxNumberChars) +
+                         " characters, the limit for one number");
+    if (!decimal_syntax(text))
+        throw InputError(quoted(text) + " is not a number (a decimal such as -1.5e-3, or a fraction p/q)");
     const double d = std::strtod(text.c_str(), nullptr);
     if (!std::isfinite(d))
-        throw InputError(quoted(text) + " is beyond the double range (as a double it overflows): give its exact value as a fraction, or a JSON string");
+        throw InputError(quoted(text) +
+                         " is beyond the double range (as a double it overflows): give its exact value as a fraction, "
+                         "or a JSON string");
     // A nonzero decimal that is 0 as a double was never a double a program held.
     if (d == 0 && text.find_first_of("123456789") < text.find_first_of("eE"))
-        throw InputError(quoted(text) + " is 0 as a double (it underflows): give its exact value as a fraction, or a JSON string");
+        throw InputError(quoted(text) +
+                         " is 0 as a double (it underflows): give its exact value as a fraction, or a JSON string");
     return exact_from_double(d);
 }
 

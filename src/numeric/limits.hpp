@@ -6,14 +6,14 @@
 
 namespace scalecert::internal {
 
-constexpr std::size_t kMaxNumberChars = 100000;           // one number's text
+constexpr std::size_t kMaxNumberChars = 100000;  // one number's text
 // Bits of one number's numerator and of its denominator (10^4932 has 16,384): arithmetic on
 // numbers of 10^100000 (332,000 bits, which the text limit and exponents allow) ran for seconds a
 // claim, and the checker's work limit refused certificates of them.
 constexpr std::size_t kMaxNumberBits = 16384;
 constexpr std::size_t kMaxSceneBytes = std::size_t(256) << 20;  // a scene, OFF or claims file
 constexpr std::size_t kMaxPairsBytes = std::size_t(2) << 30;    // a pairs file for classify
-constexpr std::size_t kMaxPoints = 1000000;               // points of one polyhedron
+constexpr std::size_t kMaxPoints = 1000000;                     // points of one polyhedron
 // Values in a JSON scene (numbers, strings, arrays, ...): two polyhedra of kMaxPoints points as
 // [x, y, z] arrays need 8,000,000; the parsed tree takes about 90 bytes a value.
 constexpr std::size_t kMaxJsonValues = 8100000;

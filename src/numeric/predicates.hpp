@@ -182,8 +182,8 @@ enum class Predicate : unsigned {
     HalfPlaneSide,     // 8, compound pair polygons
     Count
 };
-constexpr const char* kPredicateNames[] = {"support_cmp", "arc_side", "dominated_line", "curve_side",
-                                           "lines_gap", "quick_certificate", "scan_support", "half_plane_side"};
+constexpr const char* kPredicateNames[] = {"support_cmp", "arc_side",          "dominated_line", "curve_side",
+                                           "lines_gap",   "quick_certificate", "scan_support",   "half_plane_side"};
 static_assert(sizeof(kPredicateNames) / sizeof(kPredicateNames[0]) == static_cast<unsigned>(Predicate::Count));
 
 struct PredicateCounts {
@@ -193,7 +193,7 @@ struct PredicateCounts {
 
 // Not shared between threads: one per deciding object; merge with +=.
 class PredicateStats {
-public:
+  public:
     PredicateCounts& operator[](Predicate p) { return c_[static_cast<unsigned>(p)]; }
     const PredicateCounts& operator[](Predicate p) const { return c_[static_cast<unsigned>(p)]; }
     void filtered(Predicate p, std::uint64_t n = 1) { (*this)[p].filtered += n; }
@@ -203,7 +203,7 @@ public:
         return *this;
     }
 
-private:
+  private:
     std::array<PredicateCounts, static_cast<unsigned>(Predicate::Count)> c_{};
 };
 
@@ -211,7 +211,7 @@ private:
 
 // Σ a_i·b_i accumulated in 128 bits; ok() turns false at the first overflow.
 class Acc128 {
-public:
+  public:
     Acc128& add(I128 a, I128 b) {
         I128 t;
         ok_ = ok_ && mul_ok(a, b, t) && add_ok(v_, t, v_);
@@ -225,7 +225,7 @@ public:
     bool ok() const { return ok_; }
     I128 value() const { return v_; }
 
-private:
+  private:
     I128 v_ = 0;
     bool ok_ = true;
 };
@@ -240,11 +240,12 @@ int exact_sign(Small&& small, Gmp&& gmp) {
     return gmp();
 }
 
-
 // ---- The predicates ---------------------------------------------------------------------------
 
 // 1. n·x in doubles with its error bound (bound 1), for support_cmp.
-struct SupportApprox { double value, err; };
+struct SupportApprox {
+    double value, err;
+};
 inline SupportApprox support_approx(const double* n, const double* x) {
     const double a = n[0] * x[0], b = n[1] * x[1], c = n[2] * x[2];
     return {a + b + c, kSupportRel * (std::fabs(a) + std::fabs(b) + std::fabs(c))};

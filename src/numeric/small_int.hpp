@@ -36,9 +36,7 @@ inline Vec3s cross_s(const Vec3s& a, const Vec3s& b) {
     return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
 }
 // Exact for |a|, |b| < 2^62 per component.
-inline I128 dot_s(const Vec3s& a, const Vec3s& b) {
-    return I128(a[0]) * b[0] + I128(a[1]) * b[1] + I128(a[2]) * b[2];
-}
+inline I128 dot_s(const Vec3s& a, const Vec3s& b) { return I128(a[0]) * b[0] + I128(a[1]) * b[1] + I128(a[2]) * b[2]; }
 // Component k of a × b, exact for |a|, |b| < 2^62.
 inline I128 cross_k(const Vec3s& a, const Vec3s& b, int k) {
     int i = (k + 1) % 3, j = (k + 2) % 3;

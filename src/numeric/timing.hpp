@@ -13,7 +13,8 @@ struct StageClock {
     void lap(const char* what) {
         if (!on) return;
         auto now = std::chrono::steady_clock::now();
-        std::fprintf(stderr, "scalecert: timing: %-22s %9.3f ms\n", what, std::chrono::duration<double, std::milli>(now - t).count());
+        std::fprintf(stderr, "scalecert: timing: %-22s %9.3f ms\n", what,
+                     std::chrono::duration<double, std::milli>(now - t).count());
         t = now;
     }
 };

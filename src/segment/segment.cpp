@@ -26,7 +26,10 @@ std::vector<LinearPiece> lower_envelope(const std::vector<std::pair<Q, Q>>& line
         for (size_t k = 0; k < lines.size(); ++k) {
             if (lines[k].first >= lines[cur].first) continue;  // only a steeper-down line overtakes
             Q xk = (lines[cur].second - lines[k].second) / (lines[k].first - lines[cur].first);
-            if (xk > x && xk < next) { next = xk; nxt = k; }
+            if (xk > x && xk < next) {
+                next = xk;
+                nxt = k;
+            }
         }
         out.push_back({x, next, lines[cur].first, lines[cur].second});
         if (next >= hi) break;

@@ -10,7 +10,9 @@
 
 namespace scalecert::internal {
 
-struct LinearPiece { Q from, to, slope, intercept; };  // y = slope·x + intercept on [from, to]
+struct LinearPiece {
+    Q from, to, slope, intercept;
+};  // y = slope·x + intercept on [from, to]
 
 struct Segment {
     Vec3q v1, v2;

@@ -75,7 +75,6 @@ void seed_and_range(internal::ExactScene& sc, int i, const std::optional<Point>&
     sc.hi[i].canonicalize();
 }
 
-
 }  // namespace
 
 Scene::Scene(std::vector<Point> p1, std::vector<Point> p2, Interval i1, Interval i2, std::optional<Point> seed1,
@@ -111,7 +110,8 @@ std::shared_ptr<Scene::Data> SceneAccess::validated(internal::ExactScene sc, con
     d->sc = std::move(sc);
     d->name = name;
     if (internal::walk_by_default(d->sc.P[0].points.size(), d->sc.P[1].points.size()))
-        if (auto cs = internal::compact_scene(d->sc)) d->compact = std::make_shared<const internal::CompactScene>(std::move(*cs));
+        if (auto cs = internal::compact_scene(d->sc))
+            d->compact = std::make_shared<const internal::CompactScene>(std::move(*cs));
     if (!d->compact || !internal::scan_seeds_proved(*d->compact)) d->hull();
     return d;
 }
@@ -178,10 +178,12 @@ QueryResult Analysis::query(const Rational& rho1, const Rational& rho2) const {
 std::vector<Verdict> Analysis::classify(const std::vector<double>& rho1, const std::vector<double>& rho2,
                                         unsigned threads) const {
     if (rho1.size() != rho2.size())
-        throw InputError("classify: " + std::to_string(rho1.size()) + " values of rho1 but " + std::to_string(rho2.size()) + " of rho2");
+        throw InputError("classify: " + std::to_string(rho1.size()) + " values of rho1 but " +
+                         std::to_string(rho2.size()) + " of rho2");
     for (size_t i = 0; i < rho1.size(); ++i)
         if (!(std::isfinite(rho1[i]) && std::isfinite(rho2[i]) && rho1[i] > 0 && rho2[i] > 0))
-            throw InputError("classify: pair " + std::to_string(i) + " (numbered from 0): two finite numbers > 0 are required");
+            throw InputError("classify: pair " + std::to_string(i) +
+                             " (numbered from 0): two finite numbers > 0 are required");
     if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
     const internal::Session::Decider d = impl_->session.decider_for(rho1);
     FastCurve f(d.model, d.curve);
@@ -196,7 +198,8 @@ PlaneCheck Analysis::check_plane(const Rational& rho1, const Rational& rho2, con
     check_rho(rho2, "rho2");
     const Point n = canonical(normal);
     if (sgn(n[0]) == 0 && sgn(n[1]) == 0 && sgn(n[2]) == 0) throw InputError("check_plane: the normal is zero");
-    const auto [c1, c2] = internal::plane_extents(impl_->session.points(), n, rho1, rho2);  // support queries: no hull model
+    const auto [c1, c2] =
+        internal::plane_extents(impl_->session.points(), n, rho1, rho2);  // support queries: no hull model
     PlaneCheck r;
     r.c1 = c1;
     r.c2 = c2;
@@ -241,7 +244,8 @@ internal::TypedClaim typed_claim(const Claim& c, size_t i, bool parts) {
     if (!c.no_answer.empty()) t.no_answer = c.no_answer, t.no_answer_reason = "not a number";
     auto nonzero = [&](const Point& p, const char* key) {
         const Point q = canonical(p);
-        if (sgn(q[0]) == 0 && sgn(q[1]) == 0 && sgn(q[2]) == 0 && t.no_answer.empty()) t.no_answer = key, t.no_answer_reason = "the zero vector";
+        if (sgn(q[0]) == 0 && sgn(q[1]) == 0 && sgn(q[2]) == 0 && t.no_answer.empty())
+            t.no_answer = key, t.no_answer_reason = "the zero vector";
         return q;
     };
     switch (c.kind) {
@@ -287,7 +291,9 @@ Judgement public_judgement(const internal::TypedClaim& c, const internal::Judged
         j.exact_squared = *g.exact_squared;
         j.exact = sqrt_minus_rn(*g.exact_squared, Q(0));
         // |value − exact| / exact, MPFR-rounded; relative to an exact 0: 0 for a claimed 0, else inf.
-        j.rel_error = sgn(*g.exact_squared) ? relative_sqrt_error_rn(*g.exact_squared, c.value) : sgn(c.value) == 0 ? 0.0 : INFINITY;
+        j.rel_error = sgn(*g.exact_squared) ? relative_sqrt_error_rn(*g.exact_squared, c.value)
+                      : sgn(c.value) == 0   ? 0.0
+                                            : INFINITY;
     }
     if (c.type == internal::ClaimType::Verdict) j.exact_verdict = g.exact_verdict;
     if (!c.no_answer.empty()) j.reason = c.no_answer + ": " + c.no_answer_reason;
@@ -296,7 +302,8 @@ Judgement public_judgement(const internal::TypedClaim& c, const internal::Judged
 
 // Typed claims through typed rules: no JSON unless a certificate is asked for.
 template <class Rules, class Certificate>
-Judgements judge_all(Rules& rules, const std::vector<Claim>& claims, const ClaimOptions& options, bool parts, Certificate&& certificate) {
+Judgements judge_all(Rules& rules, const std::vector<Claim>& claims, const ClaimOptions& options, bool parts,
+                     Certificate&& certificate) {
     std::vector<internal::TypedClaim> typed;
     typed.reserve(claims.size());
     for (size_t i = 0; i < claims.size(); ++i) typed.push_back(typed_claim(claims[i], i, parts));
@@ -309,14 +316,16 @@ Judgements judge_all(Rules& rules, const std::vector<Claim>& claims, const Claim
         out.wrong += !g.right;
         out.items.push_back(public_judgement(typed[i], g));
         if (options.certificate)
-            entries.push_back(Json{{"index", i}, {"claim", std::move(p.claim)}, {"right", g.right}, {"proof", std::move(p.proof)}});
+            entries.push_back(
+                Json{{"index", i}, {"claim", std::move(p.claim)}, {"right", g.right}, {"proof", std::move(p.proof)}});
     }
     if (options.certificate) out.certificate = certificate(std::move(entries));
     return out;
 }
 
 void check_tolerance(const ClaimOptions& options) {
-    if (sgn(options.tolerance) < 0) throw InputError("tolerance: must be >= 0 (got " + to_exact_string(options.tolerance) + ")");
+    if (sgn(options.tolerance) < 0)
+        throw InputError("tolerance: must be >= 0 (got " + to_exact_string(options.tolerance) + ")");
 }
 }  // namespace
 
@@ -350,11 +359,13 @@ Region::Region(std::vector<std::vector<Point>> parts1, std::vector<std::vector<P
         const std::string name = i ? "P2" : "P1";
         if (parts[i]->empty()) throw InputError("region: " + name + ": expected a nonempty list of parts");
         if (parts[i]->size() > internal::kMaxParts)
-            throw InputError("region: " + name + ": more than " + std::to_string(internal::kMaxParts) + " parts (the limit)");
+            throw InputError("region: " + name + ": more than " + std::to_string(internal::kMaxParts) +
+                             " parts (the limit)");
         for (std::vector<Point>& part : *parts[i]) {
             for (Point& v : part) v = canonical(std::move(v));
             if (sc.P[i].points.size() + part.size() > internal::kMaxPoints)
-                throw InputError("region: " + name + ": more than " + std::to_string(internal::kMaxPoints) + " points in all its parts (the limit)");
+                throw InputError("region: " + name + ": more than " + std::to_string(internal::kMaxPoints) +
+                                 " points in all its parts (the limit)");
             sc.P[i].points.insert(sc.P[i].points.end(), part.begin(), part.end());
             sc.P[i].parts.push_back(std::move(part));
         }
@@ -370,7 +381,8 @@ Region Region::load(const std::string& path) {
     return Region(std::make_shared<Impl>(Impl{internal::CompoundSession(load_scene(path, opt), path)}));
 }
 
-Region Region::from_meshes(const std::string& p1_path, const std::string& p2_path, Interval i1, Interval i2, bool parts_from_groups) {
+Region Region::from_meshes(const std::string& p1_path, const std::string& p2_path, Interval i1, Interval i2,
+                           bool parts_from_groups) {
     internal::ReadOptions opt;
     opt.allow_parts = true;
     opt.parts_from_groups = parts_from_groups;
@@ -389,7 +401,8 @@ Verdict Region::verdict(const Rational& rho1, const Rational& rho2) const {
     return impl_->session.verdict(rho1, rho2).verdict;
 }
 
-std::vector<Verdict> Region::classify(const std::vector<double>& rho1, const std::vector<double>& rho2, unsigned threads) const {
+std::vector<Verdict> Region::classify(const std::vector<double>& rho1, const std::vector<double>& rho2,
+                                      unsigned threads) const {
     if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
     return impl_->session.classify(rho1, rho2, threads);
 }

@@ -39,12 +39,14 @@ CompoundVerdict CompoundSession::verdict(const Q& rho1, const Q& rho2) {
     return compound_verdict(region(false), rho1, rho2);
 }
 
-std::vector<Verdict> CompoundSession::classify(const std::vector<double>& rho1, const std::vector<double>& rho2, unsigned threads,
-                                                   const std::string& source) {
+std::vector<Verdict> CompoundSession::classify(const std::vector<double>& rho1, const std::vector<double>& rho2,
+                                               unsigned threads, const std::string& source) {
     if (rho1.size() != rho2.size())
-        throw InputError(source + ": " + std::to_string(rho1.size()) + " values of rho1 but " + std::to_string(rho2.size()) + " of rho2");
+        throw InputError(source + ": " + std::to_string(rho1.size()) + " values of rho1 but " +
+                         std::to_string(rho2.size()) + " of rho2");
     for (size_t k = 0; k < rho1.size(); ++k) {
-        if (!std::isfinite(rho1[k]) || !std::isfinite(rho2[k])) throw InputError(source + ": pair " + std::to_string(k) + " (numbered from 0) is not finite");
+        if (!std::isfinite(rho1[k]) || !std::isfinite(rho2[k]))
+            throw InputError(source + ": pair " + std::to_string(k) + " (numbered from 0) is not finite");
         if (Q(rho1[k]) < sc_.lo[0] || Q(rho1[k]) > sc_.hi[0] || Q(rho2[k]) < sc_.lo[1] || Q(rho2[k]) > sc_.hi[1])
             throw InputError(source + ": pair " + std::to_string(k) + " (numbered from 0) lies outside I1 x I2");
     }

@@ -16,9 +16,8 @@
 
 namespace scalecert::internal {
 
-
 class CompoundSession {
-public:
+  public:
     // `name` prefixes the errors ("FILE: P1.parts[2]: ..."). Nothing is built yet.
     CompoundSession(ExactScene scene, std::string name) : sc_(std::move(scene)), name_(std::move(name)) {}
     const ExactScene& scene() const { return sc_; }
@@ -35,12 +34,12 @@ public:
     // threads: 0 separated, 1 touching, 2 overlapping. Every pair is checked first, before the
     // region is built: one outside gives InputError "SOURCE: pair K lies outside I1 x I2".
     std::vector<Verdict> classify(const std::vector<double>& rho1, const std::vector<double>& rho2, unsigned threads,
-                                      const std::string& source = "classify");
+                                  const std::string& source = "classify");
     // Judgements at any (ρ1, ρ2) > 0 with their proofs (certify-fp): the parts' hulls, built on
     // first use.
     CompoundJudge& judge();
 
-private:
+  private:
     void check_in_rectangle(const Q& rho1, const Q& rho2, const std::string& what) const;
     ExactScene sc_;
     std::string name_;

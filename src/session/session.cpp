@@ -13,7 +13,8 @@ namespace scalecert::internal {
 Session::Session(ExactScene scene, std::string name, Engine engine)
     : scene_(std::move(scene)), name_(std::move(name)), engine_(engine) {
     if (!scene_->P[0].parts.empty() || !scene_->P[1].parts.empty())
-        throw std::logic_error("Session: a scene of parts is not two convex objects (CompoundSession and CompoundJudge take it)");
+        throw std::logic_error(
+            "Session: a scene of parts is not two convex objects (CompoundSession and CompoundJudge take it)");
 }
 
 Session::Session(std::shared_ptr<const CompactScene> scene, std::string name, Engine engine)
@@ -23,13 +24,16 @@ void Session::decide() {
     if (decided_) return;
     decided_ = true;
     if (engine_ == Engine::Hull) return;
-    if (!compact_ && scene_ && (engine_ == Engine::Scan || walk_by_default(scene_->P[0].points.size(), scene_->P[1].points.size())))
+    if (!compact_ && scene_ &&
+        (engine_ == Engine::Scan || walk_by_default(scene_->P[0].points.size(), scene_->P[1].points.size())))
         if (auto cs = compact_scene(*scene_)) compact_ = std::make_shared<const CompactScene>(std::move(*cs));
-    if (!compact_ || (engine_ == Engine::Auto && !walk_by_default(compact_->P[0].size(), compact_->P[1].size()))) return;
+    if (!compact_ || (engine_ == Engine::Auto && !walk_by_default(compact_->P[0].size(), compact_->P[1].size())))
+        return;
     WalkResult r = scan_model(compact_);
     if (r.stop) {
         handover_ = r.stop->text();
-        if (std::getenv("SCALECERT_TIMING")) std::fprintf(stderr, "scalecert: scan path: %s; the hull path decides\n", handover_.c_str());
+        if (std::getenv("SCALECERT_TIMING"))
+            std::fprintf(stderr, "scalecert: scan path: %s; the hull path decides\n", handover_.c_str());
         return;
     }
     walk_.emplace(std::move(*r.model));
@@ -54,7 +58,8 @@ const HullModel& Session::hull() {
             if (clock_) clock_->restart();
             if (!scene_ && !compact_) throw std::logic_error("Session: no scene and no hull source");
             if (limit_hull_) refuse_past_the_edge_pair_limit();
-            hull_ = std::make_shared<const HullModel>(hulls_ ? build_model(Model(*hulls_)) : build_model(scene_ ? *scene_ : full_scene(*compact_), name_));
+            hull_ = std::make_shared<const HullModel>(
+                hulls_ ? build_model(Model(*hulls_)) : build_model(scene_ ? *scene_ : full_scene(*compact_), name_));
         }
     }
     return *hull_;
@@ -124,7 +129,8 @@ bool Session::walk_covers(const Q& lo, const Q& hi) {
     if (sgn(lo) <= 0 || hi < lo) return false;
     WalkResult r = scan_model(compact_, std::make_pair(lo, hi));
     if (r.stop) {
-        if (std::getenv("SCALECERT_TIMING")) std::fprintf(stderr, "scalecert: scan path over a wider range: %s\n", r.stop->text().c_str());
+        if (std::getenv("SCALECERT_TIMING"))
+            std::fprintf(stderr, "scalecert: scan path over a wider range: %s\n", r.stop->text().c_str());
         return false;
     }
     TouchingCurve c = build_curve(*r.model);
@@ -199,8 +205,10 @@ std::string Session::partition_text() {
 
 const PointSets& Session::points() {
     if (!points_) {
-        if (walked() && walk_->points) points_ = walk_->points;  // the walk's trees
-        else points_ = std::make_shared<HullPoints>(hulls());  // the polyhedra: no contact line needed
+        if (walked() && walk_->points)
+            points_ = walk_->points;  // the walk's trees
+        else
+            points_ = std::make_shared<HullPoints>(hulls());  // the polyhedra: no contact line needed
     }
     return *points_;
 }
@@ -238,7 +246,8 @@ ClaimModels Session::claim_models() {
                 // points all on the hull, as crossed prisms' are); the hulls when the distance's
                 // rounds run out, or once built.
                 if (!hull_ && !hulls_ && walked() && walk_->points)
-                    if (const std::optional<bool> in = membership_by_points(*walk_->points, i, rho, x, proof)) return *in;
+                    if (const std::optional<bool> in = membership_by_points(*walk_->points, i, rho, x, proof))
+                        return *in;
                 return hull_member(hulls(), i, rho, x, proof);
             }};
 }

@@ -27,7 +27,7 @@ namespace scalecert::internal {
 enum class Engine { Auto, Scan, Hull };
 
 class Session {
-public:
+  public:
     // `name` prefixes the hull model's geometric errors ("FILE: P1: ..."). A compact scene may be
     // null only with the strict one given.
     Session(ExactScene scene, std::string name, Engine engine = Engine::Auto);
@@ -41,7 +41,7 @@ public:
     // The curve and the model it came from: the walk's, or the hull model's.
     const TouchingCurve& curve();
     const Model& curve_model();
-    bool walked();                                   // the curve came from the walk
+    bool walked();                                             // the curve came from the walk
     const std::string& handover() const { return handover_; }  // why the walk handed over ("" if it did not)
     // The hull model and its curve over all ρ1 > 0, built on first use. Once claim_models() was
     // called, a hull model this session builds itself is refused (InputError, before any line is
@@ -74,8 +74,8 @@ public:
     struct CurveView {
         const Model& model;
         const TouchingCurve& curve;
-        Q lo;                   // proved for ρ1 >= lo (0 on the hull model)
-        std::optional<Q> hi;    // and up to hi (none: unbounded)
+        Q lo;                 // proved for ρ1 >= lo (0 on the hull model)
+        std::optional<Q> hi;  // and up to hi (none: unbounded)
         bool proves(const Q& x) const { return x >= lo && (!hi || x <= *hi); }
     };
     CurveView curve_around(const Q& lo_need, const Q& hi_need);
@@ -98,9 +98,9 @@ public:
     const std::string& name() const { return name_; }
     bool hull_built() const { return hull_ != nullptr; }
 
-private:
+  private:
     void decide();
-    bool seeds_coincide() const;  // every pair overlaps: s lies inside P1(ρ1) and P2(ρ2)
+    bool seeds_coincide() const;             // every pair overlaps: s lies inside P1(ρ1) and P2(ρ2)
     void refuse_past_the_edge_pair_limit();  // InputError when the hulls' edge pairs pass kMaxEdgePairs
     bool limit_hull_ = false;                // set by claim_models()
     void lap(const char* what) {

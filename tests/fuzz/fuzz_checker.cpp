@@ -43,12 +43,14 @@ void compare_compound_with_engine(const J& c) {
     for (const auto& p : r.pairs)
         if (!p.polygon.empty()) engine[{p.part1, p.part2}] = ring(p.polygon);
     for (const J& e : c.at("pairs"))
-        if (!e.at("vertices").empty()) file[{e.at("P1_parts")[0].get<int>(), e.at("P2_parts")[0].get<int>()}] = e.at("vertices");
+        if (!e.at("vertices").empty())
+            file[{e.at("P1_parts")[0].get<int>(), e.at("P2_parts")[0].get<int>()}] = e.at("vertices");
     if (engine != file) fuzz::finding("the checker accepted a compound partition whose polygons are not the engine's");
     const J& gs = c.at("growth_set");
     if (gs.size() != r.growth.size()) fuzz::finding("the checker accepted a wrong compound growth set");
     for (size_t k = 0; k < r.growth.size(); ++k)
-        if (gs[k].at("from").get<std::string>() != to_exact_string(r.growth[k].from) || gs[k].at("to").get<std::string>() != to_exact_string(r.growth[k].to))
+        if (gs[k].at("from").get<std::string>() != to_exact_string(r.growth[k].from) ||
+            gs[k].at("to").get<std::string>() != to_exact_string(r.growth[k].to))
             fuzz::finding("the checker accepted a wrong compound growth interval");
 }
 
@@ -62,7 +64,8 @@ void compare_compound_judgements_with_engine(const J& c) {
     try {
         CompoundJudge judge(sc, "scene");
         long wrong = 0;
-        report = certify_fp(judge, doc.dump(), "fuzz", ClaimOptions{true, Q(c.at("tolerance").get<std::string>()), true}, &wrong);
+        report = certify_fp(judge, doc.dump(), "fuzz",
+                            ClaimOptions{true, Q(c.at("tolerance").get<std::string>()), true}, &wrong);
     } catch (const InputError& e) {
         const std::string what = e.what();
         if (what.find("the limit") != std::string::npos) return;  // past the engine's limits: nothing to compare
@@ -103,7 +106,8 @@ void compare_with_engine(const J& c) {
         long wrong = 0;
         std::string report;
         try {
-            report = certify_fp(ClaimModels::of(m, cv), doc.dump(), "fuzz", ClaimOptions{true, Q(exact(c.at("tolerance"))), true}, &wrong);
+            report = certify_fp(ClaimModels::of(m, cv), doc.dump(), "fuzz",
+                                ClaimOptions{true, Q(exact(c.at("tolerance"))), true}, &wrong);
         } catch (const InputError& e) {
             fuzz::finding(std::string("the checker accepted claims the engine refuses: ") + e.what());
         }
@@ -113,15 +117,18 @@ void compare_with_engine(const J& c) {
                 fuzz::finding("the checker accepted a wrong judgement at " + std::to_string(k));
         return;
     }
-    if (exact(c.at("growth_distance")) != to_exact_string(cv.growth.value)) fuzz::finding("the checker accepted a wrong growth distance");
+    if (exact(c.at("growth_distance")) != to_exact_string(cv.growth.value))
+        fuzz::finding("the checker accepted a wrong growth distance");
     const J& pieces = c.at("pieces");
     if (pieces.size() != cv.pieces.size()) fuzz::finding("the checker accepted a wrong number of pieces");
     for (size_t k = 0; k < pieces.size(); ++k) {
         const ContactLine& L = m.lines[cv.env.pieces[cv.pieces[k].env].line];
-        if (exact(pieces[k].at("slope")) != to_exact_string(L.slope) || exact(pieces[k].at("intercept")) != to_exact_string(L.intercept) ||
+        if (exact(pieces[k].at("slope")) != to_exact_string(L.slope) ||
+            exact(pieces[k].at("intercept")) != to_exact_string(L.intercept) ||
             exact(pieces[k].at("rho1")[1]) != to_exact_string(cv.pieces[k].to))
             fuzz::finding("the checker accepted a wrong piece " + std::to_string(k));
-        if (pieces[k].at("contact").get<std::string>() != L.contact) fuzz::finding("the checker accepted a wrong piece contact");
+        if (pieces[k].at("contact").get<std::string>() != L.contact)
+            fuzz::finding("the checker accepted a wrong piece contact");
     }
     for (size_t k = 0; k < cv.switches.size(); ++k) {
         const J& sw = c.at("switch_points")[k];

@@ -18,9 +18,12 @@ struct Fixed {
     HullModel m;
     TouchingCurve c;
     explicit Fixed(const char* i1) {
-        sc = parse_scene_text(std::string(R"({"P1": {"vertices": [[2,0,2],[-2,2,5],[-1,-2,6],[2,0,7]], "seed": [0,0,"9/2"]},
-                "P2": {"vertices": [[-1,-1,-1],[1,-1,-1],[-1,1,-1],[1,1,-1],[-1,-1,1],[1,-1,1],[-1,1,1],[1,1,1]], "seed": [0,0,0]},
-                "I1": )") + i1 + R"(, "I2": [1, 4]})", "tetra_box", "");
+        sc = parse_scene_text(std::string(
+                                  R"({"P1": {"vertices": [[2,0,2],[-2,2,5],[-1,-2,6],[2,0,7]], "seed": [0,0,"9/2"]},
+                "P2": {"vertices": [[-1,-1,-1],[1,-1,-1],[-1,1,-1],[1,1,-1],[-1,-1,1],[1,-1,1],[-1,1,1],[1,1,1]],
+                "seed": [0,0,0]},
+                "I1": )") + i1 + R"(, "I2": [1, 4]})",
+                              "tetra_box", "");
         m = build_model(sc);
         c = build_curve(m);
     }
@@ -31,14 +34,14 @@ std::optional<Q> exact_of(const nlohmann::json& j) {
     try {
         if (j.is_string()) return parse_number(j.get<std::string>(), false);
         if (j.is_number()) return parse_number(j.dump(), false);
-    } catch (const InputError&) {
-    }
+    } catch (const InputError&) {}
     return std::nullopt;
 }
 
 void must_touch(const Fixed& f, const test::Brute& b, const Q& x, const Q& y, const std::string& what) {
     if (b.classify(f.sc, x, y) != 0)
-        fuzz::finding("a " + what + " claim judged right is not touching at (" + x.get_str() + ", " + y.get_str() + ") by brute force");
+        fuzz::finding("a " + what + " claim judged right is not touching at (" + x.get_str() + ", " + y.get_str() +
+                      ") by brute force");
 }
 
 // The points a right curve or switch point claim says are on the curve.
@@ -50,7 +53,8 @@ void check_right_claims(const Fixed& f, const test::Brute& b, const std::string&
     } catch (const nlohmann::json::exception&) {
         return;
     }
-    if (!in.is_object() || !in.contains("claims") || !in["claims"].is_array()) return;  // (text with a NUL can parse as "1")
+    if (!in.is_object() || !in.contains("claims") || !in["claims"].is_array())
+        return;  // (text with a NUL can parse as "1")
     for (const auto& r : out["claims"]) {
         if (!r["right"].get<bool>()) continue;
         const auto& cl = in["claims"][r["index"].get<size_t>()];
@@ -63,12 +67,14 @@ void check_right_claims(const Fixed& f, const test::Brute& b, const std::string&
                 auto x = exact_of(v[0]), y = exact_of(v[1]);
                 if (!x || !y) return;
                 must_touch(f, b, *x, *y, kind);
-                if (prev) must_touch(f, b, (prev->first + *x) / 2, (prev->second + *y) / 2, kind + " (a segment's midpoint)");
+                if (prev)
+                    must_touch(f, b, (prev->first + *x) / 2, (prev->second + *y) / 2, kind + " (a segment's midpoint)");
                 prev = {{*x, *y}};
             }
         } else if (kind == "curve") {
             for (const auto& p : cl["pieces"]) {
-                auto x0 = exact_of(p["rho1"][0]), x1 = exact_of(p["rho1"][1]), a = exact_of(p["slope"]), c = exact_of(p["intercept"]);
+                auto x0 = exact_of(p["rho1"][0]), x1 = exact_of(p["rho1"][1]), a = exact_of(p["slope"]),
+                     c = exact_of(p["intercept"]);
                 if (!x0 || !x1 || !a || !c) return;
                 for (const Q& x : {*x0, *x1, Q((*x0 + *x1) / 2)}) must_touch(f, b, x, *a * x + *c, kind);
             }
@@ -84,20 +90,25 @@ void compound_claims(const std::string& text) {
     static const ExactScene band = [] {
         ReadOptions opt;
         opt.allow_parts = true;
-        return parse_scene_text(R"({"P1": {"parts": [{"vertices": [[2,-1,-1],[3,-1,-1],[2,1,-1],[3,1,-1],[2,-1,1],[3,-1,1],[2,1,1],[3,1,1]]},
-            {"vertices": [[-3,-1,-1],[-2,-1,-1],[-3,1,-1],[-2,1,-1],[-3,-1,1],[-2,-1,1],[-3,1,1],[-2,1,1]]}], "seed": [0, 0, 0]},
-            "P2": {"vertices": [[4,-1,-1],[5,-1,-1],[4,1,-1],[5,1,-1],[4,-1,1],[5,-1,1],[4,1,1],[5,1,1]], "seed": ["9/2", 0, 0]},
-            "I1": [1, 4], "I2": [1, 3]})", "band", "", opt);
+        return parse_scene_text(
+            R"({"P1": {"parts": [
+            {"vertices": [[2,-1,-1],[3,-1,-1],[2,1,-1],[3,1,-1],[2,-1,1],[3,-1,1],[2,1,1],[3,1,1]]},
+            {"vertices": [[-3,-1,-1],[-2,-1,-1],[-3,1,-1],[-2,1,-1],[-3,-1,1],[-2,-1,1],[-3,1,1],[-2,1,1]]}],
+            "seed": [0, 0, 0]},
+            "P2": {"vertices": [[4,-1,-1],[5,-1,-1],[4,1,-1],[5,1,-1],[4,-1,1],[5,-1,1],[4,1,1],[5,1,1]],
+            "seed": ["9/2", 0, 0]},
+            "I1": [1, 4], "I2": [1, 3]})",
+            "band", "", opt);
     }();
     static CompoundJudge judge(band, "band");
     try {
         long wrong = -1;
         std::string certificate;
-        const std::string out = certify_fp(judge, text, "fuzz.claims", ClaimOptions{false, Q(0), true}, &wrong, nullptr, &certificate);
+        const std::string out =
+            certify_fp(judge, text, "fuzz.claims", ClaimOptions{false, Q(0), true}, &wrong, nullptr, &certificate);
         if (wrong < 0 || out.empty()) fuzz::finding("certify_fp on parts returned no report");
         fuzz::must_pass_checker(certificate, "compound judgements certificate");
-    } catch (const InputError&) {
-    }
+    } catch (const InputError&) {}
 }
 
 // Crossed 40-gon prisms (tests/support.hpp), whose Minkowski sum has O(n^2) facets: the same
@@ -118,17 +129,20 @@ void walk_claims(const std::string& text) {
         }
         try {
             Session s(prisms, "fuzz.claims", Engine::Scan);
-            walk_out = certify_fp(s.claim_models(), text, "fuzz.claims", ClaimOptions{false, Q(0), json}, &wrong, nullptr, &cert);
+            walk_out = certify_fp(s.claim_models(), text, "fuzz.claims", ClaimOptions{false, Q(0), json}, &wrong,
+                                  nullptr, &cert);
         } catch (const InputError& e) {
             walk_err = e.what();
         }
-        if (hull_err.empty() != walk_err.empty()) fuzz::finding("the walk and the hull model disagree on refusing: '" + hull_err + "' / '" + walk_err + "'");
+        if (hull_err.empty() != walk_err.empty())
+            fuzz::finding("the walk and the hull model disagree on refusing: '" + hull_err + "' / '" + walk_err + "'");
         if (!hull_err.empty()) continue;
         if (json) {
             const nlohmann::json h = nlohmann::json::parse(hull_out), w = nlohmann::json::parse(walk_out);
             for (size_t i = 0; i < h["claims"].size(); ++i)
                 if (h["claims"][i]["right"] != w["claims"][i]["right"])
-                    fuzz::finding("claim " + std::to_string(i) + " judged differently on the walk and on the hull model");
+                    fuzz::finding("claim " + std::to_string(i) +
+                                  " judged differently on the walk and on the hull model");
         } else if (hull_out != walk_out) {
             fuzz::finding("the line format's report differs between the walk and the hull model");
         }
@@ -148,8 +162,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
                     std::string out = certify_fp(f->m, f->c, text, "fuzz.claims", bin, json, &wrong);
                     if (wrong < 0 || out.empty()) fuzz::finding("certify_fp returned no report");
                     if (json && !bin) check_right_claims(*f, brute, text, out);
-                } catch (const InputError&) {
-                }
+                } catch (const InputError&) {}
             }
     compound_claims(text);
     walk_claims(text);

@@ -23,7 +23,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
             long e[3] = {1 + next() % 4L, 1 + next() % 4L, 1 + next() % 4L};
             if (mode & 2) e[1] = e[2] = e[0];
             for (int k = 0; k < 8; ++k)
-                sc.P[i].points.push_back({Q(o[0] + (k & 1) * e[0]), Q(o[1] + ((k >> 1) & 1) * e[1]), Q(o[2] + ((k >> 2) & 1) * e[2])});
+                sc.P[i].points.push_back(
+                    {Q(o[0] + (k & 1) * e[0]), Q(o[1] + ((k >> 1) & 1) * e[1]), Q(o[2] + ((k >> 2) & 1) * e[2])});
             sc.lo[i] = Q(1, 4);
             sc.hi[i] = Q(4);
         }
@@ -56,12 +57,14 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         const std::optional<Q> x = contact_rho1(m, cv, p);
         if (!x) continue;
         const auto [g1, g2] = test::brute_contact(sc, *x, m.lines[cv.env.pieces[p.env].line].at(*x));
-        const std::string want{"VEF"[test::affine_dimension(sc.P[0].points, g1)], "VEF"[test::affine_dimension(sc.P[1].points, g2)]};
+        const std::string want{"VEF"[test::affine_dimension(sc.P[0].points, g1)],
+                               "VEF"[test::affine_dimension(sc.P[1].points, g2)]};
         if (g1.empty() || p.contact.label != want)
             fuzz::finding("contact " + p.contact.label + " at rho1 = " + x->get_str() + ", brute force says " + want);
         for (int i = 0; i < 2; ++i)
             for (int k : i ? p.contact.feat2 : p.contact.feat1)
-                if (!std::binary_search((i ? g2 : g1).begin(), (i ? g2 : g1).end(), k)) fuzz::finding("a contact feature vertex outside the touching face");
+                if (!std::binary_search((i ? g2 : g1).begin(), (i ? g2 : g1).end(), k))
+                    fuzz::finding("a contact feature vertex outside the touching face");
     }
     for (const CurvePiece& p : cv.pieces) {  // on the curve, and 2^-20 of it above and below
         Q x = (p.from + p.to) / 2, y = m.lines[cv.env.pieces[p.env].line].at(x);
@@ -75,7 +78,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         QueryAnswer r = query(m, cv, r1, r2, true);
         const int want = brute.classify(sc, r1, r2);
         if (test::verdict_sign(r.verdict) != want)
-            fuzz::finding("verdict " + std::string(verdict_name(r.verdict)) + " at (" + r1.get_str() + ", " + r2.get_str() + "), brute force says " + std::to_string(want));
+            fuzz::finding("verdict " + std::string(verdict_name(r.verdict)) + " at (" + r1.get_str() + ", " +
+                          r2.get_str() + "), brute force says " + std::to_string(want));
         fuzz::must_pass_checker(dump(query_json(m, r, seed_weights(m))), "query answer");
         // The fast measures against the exact path (test_measures does the same at random).
         if (proved_distance(m, r1, r2).d.squared != exact_distance(m, r1, r2).squared)
@@ -86,16 +90,20 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
             fuzz::finding("EPA depth differs from the enumeration at (" + r1.get_str() + ", " + r2.get_str() + ")");
         // What certify-fp runs for a depth: its state must be the verdict, its depth the enumeration's.
         const std::optional<MeasuredDepth> md = measured_depth(HullPoints(m), r1, r2);
-        const MeasuredDepth::State st = r.verdict == Verdict::Separated ? MeasuredDepth::Separated
+        const MeasuredDepth::State st = r.verdict == Verdict::Separated  ? MeasuredDepth::Separated
                                         : r.verdict == Verdict::Touching ? MeasuredDepth::Touching
                                                                          : MeasuredDepth::Overlapping;
         if (md && (md->state != st || (st == MeasuredDepth::Overlapping && md->depth->squared != e.squared)))
-            fuzz::finding("measured depth differs from the verdict or the enumeration at (" + r1.get_str() + ", " + r2.get_str() + ")");
-        claims += std::string(first ? "" : ", ") + "{\"kind\": \"distance\", \"rho1\": \"" + r1.get_str() + "\", \"rho2\": \"" +
-                  r2.get_str() + "\", \"value\": 1}, {\"kind\": \"penetration_depth\", \"rho1\": \"" + r1.get_str() + "\", \"rho2\": \"" +
-                  r2.get_str() + "\", \"value\": 1}, {\"kind\": \"verdict\", \"rho1\": \"" + r1.get_str() + "\", \"rho2\": \"" + r2.get_str() +
-                  "\", \"verdict\": \"separated\"}, {\"kind\": \"curve_point\", \"rho1\": \"" + r1.get_str() + "\", \"rho2\": \"" +
-                  r2.get_str() + "\"}, {\"kind\": \"switch_point\", \"rho1\": \"" + r1.get_str() + "\", \"rho2\": \"" + r2.get_str() + "\"}";
+            fuzz::finding("measured depth differs from the verdict or the enumeration at (" + r1.get_str() + ", " +
+                          r2.get_str() + ")");
+        claims += std::string(first ? "" : ", ") + "{\"kind\": \"distance\", \"rho1\": \"" + r1.get_str() +
+                  "\", \"rho2\": \"" + r2.get_str() +
+                  "\", \"value\": 1}, {\"kind\": \"penetration_depth\", \"rho1\": \"" + r1.get_str() +
+                  "\", \"rho2\": \"" + r2.get_str() + "\", \"value\": 1}, {\"kind\": \"verdict\", \"rho1\": \"" +
+                  r1.get_str() + "\", \"rho2\": \"" + r2.get_str() +
+                  "\", \"verdict\": \"separated\"}, {\"kind\": \"curve_point\", \"rho1\": \"" + r1.get_str() +
+                  "\", \"rho2\": \"" + r2.get_str() + "\"}, {\"kind\": \"switch_point\", \"rho1\": \"" + r1.get_str() +
+                  "\", \"rho2\": \"" + r2.get_str() + "\"}";
         first = false;
     }
     // A curve claim over I1 by the curve's own vertices (right, unless the curve is <= 0 there).
@@ -103,16 +111,21 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         std::string v = "[";
         const Q lo = cv.pieces.front().from, hi = cv.pieces.back().to;
         for (const Q& x : {lo, Q((lo + hi) / 2), hi})
-            if (sgn(x) > 0) v += std::string(v.size() > 1 ? ", " : "") + "[\"" + x.get_str() + "\", \"" + cv.env.value(m.lines, x).get_str() + "\"]";
+            if (sgn(x) > 0)
+                v += std::string(v.size() > 1 ? ", " : "") + "[\"" + x.get_str() + "\", \"" +
+                     cv.env.value(m.lines, x).get_str() + "\"]";
         v += "]";
         if (std::count(v.begin(), v.end(), '[') >= 3 && lo < hi && sgn(cv.env.value(m.lines, hi)) > 0)
-            claims += std::string(first ? "" : ", ") + "{\"kind\": \"curve\", \"vertices\": " + v + ", \"switch_points\": []}", first = false;
+            claims += std::string(first ? "" : ", ") + "{\"kind\": \"curve\", \"vertices\": " + v +
+                      ", \"switch_points\": []}",
+                first = false;
     }
     // Every judgement of those claims, with its certificate, must pass the checker.
     if (!first) {
         long wrong = 0;
         std::string cert;
-        certify_fp(ClaimModels::of(m, cv), claims + "]}", "fuzz", ClaimOptions{false, Q(0), true}, &wrong, nullptr, &cert);
+        certify_fp(ClaimModels::of(m, cv), claims + "]}", "fuzz", ClaimOptions{false, Q(0), true}, &wrong, nullptr,
+                   &cert);
         fuzz::must_pass_checker(cert, "judgements");
     }
     return 0;

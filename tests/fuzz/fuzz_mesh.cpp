@@ -8,7 +8,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     const scalecert::internal::MeshFormat f = static_cast<scalecert::internal::MeshFormat>(data[0] % 4);
     const std::string text(reinterpret_cast<const char*>(data) + 1, size - 1);
     // For OFF, the compact reader must give the full reader's points or nothing.
-    const auto fast = f == scalecert::internal::MeshFormat::Off ? scalecert::internal::parse_off_fast(text) : std::nullopt;
+    const auto fast =
+        f == scalecert::internal::MeshFormat::Off ? scalecert::internal::parse_off_fast(text) : std::nullopt;
     scalecert::internal::ExactScene sc;
     try {
         sc.P[0].points = scalecert::internal::parse_mesh(text, f, "fuzz.mesh");
@@ -16,7 +17,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         if (fast) fuzz::finding("the compact OFF reader accepts what the full reader refuses");
         return 0;
     }
-    if (fast && !(scalecert::internal::q_points(*fast) == sc.P[0].points)) fuzz::finding("the compact OFF reader reads other points");
+    if (fast && !(scalecert::internal::q_points(*fast) == sc.P[0].points))
+        fuzz::finding("the compact OFF reader reads other points");
     if (sc.P[0].points.size() < 4 || sc.P[0].points.size() > 40) return 0;
     using scalecert::internal::Q;
     for (int k = 0; k < 8; ++k) sc.P[1].points.push_back({Q(40 + (k & 1)), Q((k >> 1) & 1), Q((k >> 2) & 1)});

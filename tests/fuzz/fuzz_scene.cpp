@@ -39,7 +39,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     opt.allow_parts = true;
     opt.binary_doubles = size > 0 && (data[0] & 1);
     // The compact reader (exact decimals only) must give the strict reader's scene or nothing.
-    const auto fast = opt.binary_doubles ? std::nullopt : scalecert::internal::parse_scene_fast(text.data(), text.size());
+    const auto fast =
+        opt.binary_doubles ? std::nullopt : scalecert::internal::parse_scene_fast(text.data(), text.size());
     scalecert::internal::ExactScene sc;
     try {
         sc = scalecert::internal::parse_scene_text(text, "fuzz.json", "", opt);
@@ -50,8 +51,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     if (fast) {
         const scalecert::internal::ExactScene back = scalecert::internal::full_scene(*fast);
         for (int i = 0; i < 2; ++i)
-            if (!(back.P[i].points == sc.P[i].points && back.P[i].seed == sc.P[i].seed && back.P[i].seed_given == sc.P[i].seed_given &&
-                  back.lo[i] == sc.lo[i] && back.hi[i] == sc.hi[i]))
+            if (!(back.P[i].points == sc.P[i].points && back.P[i].seed == sc.P[i].seed &&
+                  back.P[i].seed_given == sc.P[i].seed_given && back.lo[i] == sc.lo[i] && back.hi[i] == sc.hi[i]))
                 fuzz::finding("the compact scene reader reads another scene than the strict reader");
     }
     if (!sc.P[0].parts.empty() || !sc.P[1].parts.empty()) {
