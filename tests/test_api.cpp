@@ -1,5 +1,4 @@
 // The public API (include/scalecert/scalecert.hpp) alone: values derived by hand.
-#define BOOST_TEST_MODULE api
 #include <boost/test/unit_test.hpp>
 
 #include <scalecert/scalecert.hpp>

@@ -1,5 +1,4 @@
 // Golden data, a small audit and stability sweep, and the campaign's plans.
-#define BOOST_TEST_MODULE audit
 #include <boost/test/unit_test.hpp>
 
 #include "baselines/audit.hpp"

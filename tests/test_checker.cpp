@@ -6,7 +6,6 @@
 // reason. The mutations run the checker's own check_text in this process (the binary is that
 // function behind main, both linked from scalecert_check_core); the exit statuses of the binary
 // are tested at the end.
-#define BOOST_TEST_MODULE checker
 #include <boost/test/unit_test.hpp>
 
 #include "files.hpp"

@@ -1,7 +1,6 @@
 // The claim rules of certificates/CLAIMS.md (certify/claims.cpp reading, certify/rules.cpp
 // judging), each against values derived by hand: verdict and curve lines, curve claims,
 // separating planes, distances and depths, malformed claims.
-#define BOOST_TEST_MODULE claims
 #include <boost/test/unit_test.hpp>
 
 #include "certify/claims.hpp"

@@ -1,6 +1,5 @@
 // The command line: every bad input gets one line "scalecert: error: ...", exit status 2, nothing
 // on standard output and no output file.
-#define BOOST_TEST_MODULE cli
 #include <boost/test/unit_test.hpp>
 
 #include "files.hpp"

@@ -1,5 +1,4 @@
 // The paper's closed forms (Appendix (i), (ii), (4), (5), (a)) against the support-function lines.
-#define BOOST_TEST_MODULE closed_forms
 #include <boost/test/unit_test.hpp>
 
 #include "curve/closed_forms.hpp"

@@ -2,7 +2,6 @@
 // verdicts derived by hand (interval arithmetic on axis-aligned boxes, which shares nothing with
 // the engine), a method counted wrong exactly where its verdict differs, and the command's
 // refusals and bytes.
-#define BOOST_TEST_MODULE compound_audit
 #include <boost/test/unit_test.hpp>
 
 #include "baselines/audit.hpp"

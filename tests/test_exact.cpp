@@ -1,4 +1,3 @@
-#define BOOST_TEST_MODULE exact
 #include <boost/test/unit_test.hpp>
 
 #include "numeric/exact.hpp"

@@ -1,6 +1,5 @@
 // The filtered queries (doubles with a proven error bound, exact fallback) give exactly the exact
 // verdicts: at random pairs, at doubles exactly on the curve and one ulp either side of it.
-#define BOOST_TEST_MODULE fast
 #include <boost/test/unit_test.hpp>
 
 #include "certify/classify.hpp"

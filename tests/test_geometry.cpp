@@ -1,4 +1,3 @@
-#define BOOST_TEST_MODULE geometry
 #include <boost/test/unit_test.hpp>
 
 #include "support.hpp"

@@ -1,5 +1,4 @@
 // Curves derived by hand (the derivations are in the comments), compared with the engine.
-#define BOOST_TEST_MODULE hand_curves
 #include <boost/test/unit_test.hpp>
 
 #include "curve/scan.hpp"

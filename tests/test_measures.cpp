@@ -5,7 +5,6 @@
 // Equal exact values give equal judgements: every rule of CLAIMS.md for a distance or a depth is
 // a function of the claim and the exact square. Hand-derived values on cubes and a tetrahedron
 // first.
-#define BOOST_TEST_MODULE measures
 #include <boost/test/unit_test.hpp>
 
 #include "certify/query.hpp"

@@ -2,7 +2,6 @@
 // filter's value sits just outside its bound (the filter decides) and just inside it (the exact
 // stage decides), the answer checked against exact arithmetic done here, and the deciding stage
 // read from the predicate's statistics.
-#define BOOST_TEST_MODULE predicates
 #include <boost/test/unit_test.hpp>
 
 #include "certify/classify.hpp"

@@ -1,6 +1,5 @@
 // Random exact scenes: the curve query, the direct query and the brute-force classifier agree, at
 // random points and exactly on, just above and just below the curve; certificates hold.
-#define BOOST_TEST_MODULE queries
 #include <boost/test/unit_test.hpp>
 
 #include "support.hpp"

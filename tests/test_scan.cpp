@@ -1,7 +1,6 @@
 // The scan path (scan.hpp) against the hull path: the same curve document, byte for byte apart
 // from the engine statistics ("model"), on random scenes of every number kind and on the bundled
 // scenes; and the compact OFF reader against the full one.
-#define BOOST_TEST_MODULE scan
 #include <boost/test/unit_test.hpp>
 
 #include "files.hpp"

@@ -1,5 +1,4 @@
 // The t1–t2 decision curve along a segment (the paper's Section III).
-#define BOOST_TEST_MODULE segment
 #include <boost/test/unit_test.hpp>
 
 #include "segment/segment.hpp"

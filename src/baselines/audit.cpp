@@ -183,7 +183,7 @@ std::vector<AuditRow> audit_convex(const std::string& name, const ExactScene& s,
     for (const std::string& meth : methods) {
         if (meth == "grid") continue;
         std::unique_ptr<fp::Method> mm = fp::make_method(meth, m, f);
-        if (!mm) throw InputError("--methods: unknown method " + quoted(meth));
+        if (!mm) throw InputError("--methods: unknown method " + in_quotes(meth));
         AuditRow r;
         r.scene = name;
         r.method = mm->name();
@@ -299,7 +299,7 @@ std::vector<AuditRow> audit_scene(const std::string& name, const ExactScene& s, 
         throw InputError(std::string(p1 && p2 ? "P1 and P2 are"
                                      : p1     ? "P1 is"
                                               : "P2 is") +
-                         " made of parts, and method " + internal::quoted(convex[0]) +
+                         " made of parts, and method " + internal::in_quotes(convex[0]) +
                          " audits convex objects only (for objects made of parts: --methods " + all + ")");
     }
     std::vector<AuditRow> rows;

@@ -204,7 +204,7 @@ std::vector<AuditRow> audit_compound(const std::string& name, const ExactScene& 
     const std::vector<std::string> known = fp::compound_method_names();
     for (const std::string& m : methods)
         if (std::find(known.begin(), known.end(), m) == known.end())
-            throw InputError("--methods: unknown method " + quoted(m));
+            throw InputError("--methods: unknown method " + in_quotes(m));
     CompoundSession session(s, name);
     const CompoundRegion& r = session.region(true);
     if (r.union_skipped)

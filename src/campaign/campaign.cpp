@@ -74,7 +74,7 @@ void validate(const CampaignArgs& a) {
         std::set<std::string> stems;
         for (const std::string& p : a.scenes)
             if (!stems.insert(golden_stem(p)).second)
-                throw InputError("golden: two scenes named " + quoted(golden_stem(p)) +
+                throw InputError("golden: two scenes named " + in_quotes(golden_stem(p)) +
                                  " (their files would be the same)");
         return;
     }
@@ -86,7 +86,7 @@ void validate(const CampaignArgs& a) {
     const std::vector<std::string> known = a.auditor.method_names();
     for (const std::string& m : a.methods)
         if (m != "grid" && std::find(known.begin(), known.end(), m) == known.end())
-            throw InputError("--methods: unknown method " + quoted(m));
+            throw InputError("--methods: unknown method " + in_quotes(m));
     if (a.scenes.empty() && a.family.empty())
         throw InputError("audit: no scenes (give SCENES or --family with --sweep)");
 }

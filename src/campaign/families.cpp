@@ -68,7 +68,7 @@ std::string family_description(const std::string& name) {
     if (name == "far-from-origin") return "unit-size random polytopes at offsets of 10^6, seeds ε-perturbed";
     if (name == "sliver") return "a tetrahedron of height ε over a box";
     if (name == "near-sphere") return "many-vertex hulls of points near spheres (200 points; ε unused)";
-    throw InputError("--family: unknown family " + quoted(name));
+    throw InputError("--family: unknown family " + in_quotes(name));
 }
 
 ExactScene make_family_scene(const std::string& name, const Q& eps, Rng& g) {

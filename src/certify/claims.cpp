@@ -64,15 +64,15 @@ class ClaimReader {
         if (parts_ && (!t || !PartsRules::takes(*t))) {
             if (t)
                 fail("kind",
-                     quoted(kind) +
+                     in_quotes(kind) +
                          " is a claim on two convex objects; on objects made of parts certify-fp takes verdict, "
                          "separating_plane, witness_point and distance (the region and its growth set: scalecert "
                          "region)");
-            fail("kind", "unknown kind " + quoted(kind) +
+            fail("kind", "unknown kind " + in_quotes(kind) +
                              " (on objects made of parts: verdict, separating_plane, witness_point, distance)");
         }
         if (!t)
-            fail("kind", "unknown kind " + quoted(kind) +
+            fail("kind", "unknown kind " + in_quotes(kind) +
                              " (verdict, curve, curve_point, switch_point, growth_distance, separating_plane, "
                              "witness_point, distance, "
                              "penetration_depth)");
@@ -85,7 +85,8 @@ class ClaimReader {
             const std::string v = str(claim, "verdict");
             const std::optional<Claimed> cv = claimed_of(v);
             if (!cv)
-                fail("verdict", "unknown verdict " + quoted(v) + " (separated, touching, overlapping, intersecting)");
+                fail("verdict",
+                     "unknown verdict " + in_quotes(v) + " (separated, touching, overlapping, intersecting)");
             c.verdict = *cv;
             break;
         }
@@ -579,7 +580,7 @@ TypedClaim read_line(const std::vector<std::string>& w, bool exact_decimals, boo
         std::tie(c.rho1, c.rho2) = read_scalings(w[0], w[1], exact_decimals, where);
         const std::optional<Claimed> v = claimed_of(w[2]);
         if (!v)
-            throw InputError(where + ": unknown verdict " + quoted(w[2]) +
+            throw InputError(where + ": unknown verdict " + in_quotes(w[2]) +
                              " (separated, touching, overlapping, intersecting)");
         c.verdict = *v;
     } else {

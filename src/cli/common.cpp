@@ -172,7 +172,7 @@ std::vector<Q> number_list(const std::string& text, size_t n, const std::string&
     }
     if (out.size() != n)
         throw InputError(option + ": expected " + std::to_string(n) + " numbers separated by commas, got " +
-                         quoted(text));
+                         in_quotes(text));
     return out;
 }
 

@@ -55,7 +55,7 @@ Command add_region(CLI::App& app) {
                 if (sub->count("--at")) {
                     x = number_list(a->at, 2, "--at", a->scene.opt);
                     if (x[0] < sc.lo[0] || x[0] > sc.hi[0] || x[1] < sc.lo[1] || x[1] > sc.hi[1])
-                        throw InputError("--at: " + internal::quoted(a->at) + " lies outside I1 x I2");
+                        throw InputError("--at: " + internal::in_quotes(a->at) + " lies outside I1 x I2");
                 }
                 std::string pairs_text;  // --classify: read before the work, like --at
                 std::vector<double> p1, p2;

@@ -51,7 +51,7 @@ InputObserver::InputObserver(Fn f) : f_(std::move(f)), prev_(t_observer) { t_obs
 InputObserver::~InputObserver() { t_observer = prev_; }
 
 int open_regular_file(const std::string& path, const std::string& what, bool no_follow, size_t* size) {
-    if (path.find('\0') != std::string::npos) throw InputError(quoted(path) + ": a file name with a NUL byte");
+    if (path.find('\0') != std::string::npos) throw InputError(in_quotes(path) + ": a file name with a NUL byte");
     // A name that is there and not a regular file is refused before it is opened at all (opening
     // a device can have effects); the descriptor's own fstat below settles any race.
     struct stat st {};

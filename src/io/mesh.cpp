@@ -68,7 +68,7 @@ std::vector<Vec3q> parse_off(const std::string& text, const std::string& name, c
         if (i >= tokens.size()) fail(name, std::string("malformed OFF file: missing ") + what);
         const std::string& t = tokens[i];
         if (t.empty() || t.size() > 9 || t.find_first_not_of("0123456789") != std::string::npos)
-            fail(name, std::string("malformed OFF file: bad ") + what + " " + quoted(t));
+            fail(name, std::string("malformed OFF file: bad ") + what + " " + in_quotes(t));
         return std::stoul(t);
     };
     const size_t nv = count(1, "vertex count");
@@ -118,7 +118,7 @@ std::vector<std::vector<Vec3q>> parse_obj_groups(const std::string& text, const 
     std::string group_name;
     auto label = [&] {
         return group_line == 0 ? std::string("the faces before any 'o' or 'g' line")
-                               : "group " + quoted(group_name) + " (line " + std::to_string(group_line) + ")";
+                               : "group " + in_quotes(group_name) + " (line " + std::to_string(group_line) + ")";
     };
     auto close = [&] {
         if (members.empty()) return;  // a group without faces
@@ -156,7 +156,7 @@ std::vector<std::vector<Vec3q>> parse_obj_groups(const std::string& text, const 
                 const bool number = ec == std::errc() && end == v.data() + v.size() && !v.empty();
                 const long long n = static_cast<long long>(number && i < 0 ? vertices_so_far : pts.size());
                 if (!number || i == 0 || i > n || i < -n)
-                    fail(name, "line " + std::to_string(no) + ": face vertex " + quoted(t[k]) +
+                    fail(name, "line " + std::to_string(no) + ": face vertex " + in_quotes(t[k]) +
                                    " is not a vertex number (1 to " + std::to_string(pts.size()) + ", or -1 back to -" +
                                    std::to_string(vertices_so_far) + ")");
                 const size_t at = static_cast<size_t>(i > 0 ? i - 1 : n + i);
@@ -296,7 +296,7 @@ std::vector<Vec3q> parse_ply(const std::string& bytes, const std::string& name, 
         if (t[0] == "format") {
             if (t.size() != 3 || (t[1] != "ascii" && t[1] != "binary_little_endian" && t[1] != "binary_big_endian") ||
                 t[2] != "1.0")
-                fail(name, where + "unknown PLY format " + quoted(line));
+                fail(name, where + "unknown PLY format " + in_quotes(line));
             format = t[1];
         } else if (t[0] == "element") {
             if (t.size() != 3 || t[2].empty() || t[2].size() > 12 ||
@@ -311,11 +311,11 @@ std::vector<Vec3q> parse_ply(const std::string& bytes, const std::string& name, 
                      t[2].find("float") == std::string::npos && t[2] != "double")
                 elements.back().props.push_back({t[4], t[3], t[2]});
             else
-                fail(name, where + "malformed property " + quoted(line));
+                fail(name, where + "malformed property " + in_quotes(line));
         } else if (t[0] == "end_header") {
             ended = true;
         } else {
-            fail(name, where + "unknown header line " + quoted(line));
+            fail(name, where + "unknown header line " + in_quotes(line));
         }
     }
     if (format.empty()) fail(name, "malformed PLY file: no format line");
@@ -363,7 +363,7 @@ std::vector<Vec3q> parse_ply(const std::string& bytes, const std::string& name, 
                 }
                 const std::string& c = t[i++];
                 if (c.empty() || c.size() > 6 || c.find_first_not_of("0123456789") != std::string::npos)
-                    fail(name, "line " + std::to_string(line_no) + ": bad list count " + quoted(c));
+                    fail(name, "line " + std::to_string(line_no) + ": bad list count " + in_quotes(c));
                 i += std::stoul(c);
                 v.push_back("");
             }

@@ -72,7 +72,7 @@ ExactScene parse_scene_text(const std::string& text, const std::string& name, co
             for (const char* n : known) ok = ok || k == n;
             if (!ok)
                 r.fail(
-                    where, "unknown field " + quoted(k) + " (expected " + [&] {
+                    where, "unknown field " + in_quotes(k) + " (expected " + [&] {
                         std::string l;
                         for (const char* n : known) l += (l.empty() ? "" : ", ") + std::string(n);
                         return l;
@@ -200,7 +200,7 @@ void check_scene(const ExactScene& sc, const std::string& name) {
     }
     for (int i = 0; i < 2; ++i) {
         if (sgn(sc.lo[i]) <= 0)
-            throw InputError(name + ": " + iname[i] + ": lo must be > 0 (got " + quoted(to_exact_string(sc.lo[i])) +
+            throw InputError(name + ": " + iname[i] + ": lo must be > 0 (got " + in_quotes(to_exact_string(sc.lo[i])) +
                              ")");
         if (sc.lo[i] > sc.hi[i]) throw InputError(name + ": " + iname[i] + ": lo > hi");
     }

@@ -73,7 +73,7 @@ class StrictJson {
                     std::string k = string();
                     if (!seen.insert(k).second) {
                         i_ = at;
-                        fail("duplicate key " + quoted(k));
+                        fail("duplicate key " + in_quotes(k));
                     }
                     n.keys.push_back(std::move(k));
                     ws();

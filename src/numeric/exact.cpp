@@ -85,7 +85,7 @@ bool parse_integer(const std::string& s, Z& z) {
 }
 }  // namespace
 
-std::string quoted(const std::string& text) {
+std::string in_quotes(const std::string& text) {
     constexpr size_t kShown = 40;
     std::string out = "'";
     for (size_t i = 0; i < text.size() && i < kShown; ++i) {
@@ -119,17 +119,17 @@ Q parse_exact(const std::string& text) {
         }
     }
     auto bad = [&text] {
-        return InputError(quoted(text) + " is not an exact number (a decimal such as -1.5e-3, or a fraction p/q)");
+        return InputError(in_quotes(text) + " is not an exact number (a decimal such as -1.5e-3, or a fraction p/q)");
     };
     auto sized = [&text](Q r) {
         if (mpz_sizeinbase(r.get_num_mpz_t(), 2) > kMaxNumberBits ||
             mpz_sizeinbase(r.get_den_mpz_t(), 2) > kMaxNumberBits)
-            throw InputError(quoted(text) + " has more than " + std::to_string(kMaxNumberBits) +
+            throw InputError(in_quotes(text) + " has more than " + std::to_string(kMaxNumberBits) +
                              " bits in its numerator or denominator (the limit for one number)");
         return r;
     };
     if (text.size() > kMaxNumberChars)
-        throw InputError(quoted(text) + " is longer than " + std::to_string(kMaxNumberChars) +
+        throw InputError(in_quotes(text) + " is longer than " + std::to_string(kMaxNumberChars) +
                          " characters, the limit for one number");
     if (text.empty()) throw bad();
     size_t slash = text.find('/');
@@ -139,7 +139,7 @@ Q parse_exact(const std::string& text) {
         std::string ds = text.substr(slash + 1);
         if (ds.empty() || ds[0] == '-' || ds[0] == '+') throw bad();
         if (!parse_integer(ds, q)) throw bad();
-        if (q == 0) throw InputError(quoted(text) + " has a zero denominator");
+        if (q == 0) throw InputError(in_quotes(text) + " has a zero denominator");
         Q r(p, q);
         r.canonicalize();
         return sized(std::move(r));
@@ -164,13 +164,13 @@ Q parse_exact(const std::string& text) {
         size_t eb = i;
         if (i < text.size() && (text[i] == '+' || text[i] == '-')) ++i;
         if (!all_digits(text, i, text.size())) throw bad();
-        if (text.size() - i > 6) throw InputError(quoted(text) + " has an exponent too large to read exactly");
+        if (text.size() - i > 6) throw InputError(in_quotes(text) + " has an exponent too large to read exactly");
         exponent = std::stol(text.substr(eb));
         i = text.size();
     }
     if (i != text.size()) throw bad();
     long e = exponent - frac_len;
-    if (e > 100000 || e < -100000) throw InputError(quoted(text) + " has an exponent too large to read exactly");
+    if (e > 100000 || e < -100000) throw InputError(in_quotes(text) + " has an exponent too large to read exactly");
     Z m(digits, 10);
     Z p10;
     mpz_ui_pow_ui(p10.get_mpz_t(), 10, static_cast<unsigned long>(e < 0 ? -e : e));
@@ -214,18 +214,18 @@ bool decimal_syntax(const std::string& t) {
 Q parse_number(const std::string& text, bool binary_doubles) {
     if (!binary_doubles || text.find('/') != std::string::npos) return parse_exact(text);
     if (text.size() > kMaxNumberChars)
-        throw InputError(quoted(text) + " is longer than " + std::to_string(kMaxNumberChars) +
+        throw InputError(in_quotes(text) + " is longer than " + std::to_string(kMaxNumberChars) +
                          " characters, the limit for one number");
     if (!decimal_syntax(text))
-        throw InputError(quoted(text) + " is not a number (a decimal such as -1.5e-3, or a fraction p/q)");
+        throw InputError(in_quotes(text) + " is not a number (a decimal such as -1.5e-3, or a fraction p/q)");
     const double d = std::strtod(text.c_str(), nullptr);
     if (!std::isfinite(d))
-        throw InputError(quoted(text) +
+        throw InputError(in_quotes(text) +
                          " is beyond the double range (as a double it overflows): give its exact value as a fraction, "
                          "or a JSON string");
     // A nonzero decimal that is 0 as a double was never a double a program held.
     if (d == 0 && text.find_first_of("123456789") < text.find_first_of("eE"))
-        throw InputError(quoted(text) +
+        throw InputError(in_quotes(text) +
                          " is 0 as a double (it underflows): give its exact value as a fraction, or a JSON string");
     return exact_from_double(d);
 }

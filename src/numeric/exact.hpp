@@ -46,7 +46,7 @@ Vec3z over_common_denominator(const Vec3q& v, Z& den);
 
 // User text for an error message: quoted, control characters escaped (so the message stays one
 // line), and cut after 40 characters.
-std::string quoted(const std::string& text);
+std::string in_quotes(const std::string& text);
 
 // Reads a number exactly as written: "-12", "0.1" (= 1/10), "1e-3", "2.5E+7", "3/7".
 // Throws InputError (without location; callers add it) when the text is not such a number.

@@ -95,7 +95,7 @@ Segment segment_by_kind(const HullModel& m, const std::string& kind) {
         s.kind = "seeds";
         return s;
     }
-    if (kind != "ellipsoids") throw InputError("--segment: unknown kind " + quoted(kind));
+    if (kind != "ellipsoids") throw InputError("--segment: unknown kind " + in_quotes(kind));
     std::optional<EllipsoidPath> p = ellipsoid_path(m);
     Segment s;
     if (!p) {
