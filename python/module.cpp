@@ -382,8 +382,8 @@ py::dict curve_dict(const scalecert::Curve& c) {
 
 using namespace pybind11::literals;
 
-// Scene.certify and Region.certify: claims of one kind from arrays, judged by the typed API
-// (Analysis::certify, Region::certify).
+// Scene.certify: claims of one kind from arrays, judged by the typed API (Analysis::certify)
+// on convex objects and on objects made of parts.
 using CertifyFn =
     std::function<scalecert::Judgements(const std::vector<scalecert::Claim>&, const scalecert::ClaimOptions&)>;
 py::dict certify_arrays(const CertifyFn& certify, const std::string& kind, const py::handle& rho1,
@@ -587,7 +587,7 @@ py::array_t<std::int8_t> classify_array(const py::handle& h1, const py::handle& 
 }
 
 PYBIND11_MODULE(scalecert, m) {
-    m.doc() = "Exact, certified collision of uniformly scaled convex polyhedra.";
+    m.doc() = "Exact, certified collision of uniformly scaled convex polyhedra and of objects made of convex parts.";
     m.attr("__version__") = scalecert::version();
     py::register_exception<scalecert::InputError>(m, "InputError", PyExc_ValueError);
 
@@ -596,116 +596,55 @@ PYBIND11_MODULE(scalecert, m) {
         .value("Touching", scalecert::Verdict::Touching)
         .value("Overlapping", scalecert::Verdict::Overlapping);
 
-    py::class_<scalecert::Region>(m, "Region")
-        .def(py::init([](const py::handle& p1, const py::handle& p2, const py::handle& i1, const py::handle& i2,
-                         const py::handle& seeds) {
-                 std::vector<std::vector<scalecert::Point>> parts[2];
-                 const char* names[2] = {"P1", "P2"};
-                 const py::handle ps[2] = {p1, p2};
-                 for (int i = 0; i < 2; ++i) {
-                     py::list l = as_list(ps[i], names[i]);
-                     for (size_t k = 0; k < l.size(); ++k)
-                         parts[i].push_back(points(l[k], std::string(names[i]) + "[" + std::to_string(k) + "]"));
-                 }
-                 const auto s = seeds_of(seeds);
-                 return scalecert::Region(std::move(parts[0]), std::move(parts[1]), interval(i1, "I1"),
-                                          interval(i2, "I2"), s[0], s[1]);
-             }),
-             py::arg("P1"), py::arg("P2"), py::arg("I1"), py::arg("I2"), py::arg("seeds") = py::none(),
-             "Objects made of convex parts: P1, P2 lists of parts, each a list of vertices (numbers as for Scene); "
-             "I1, I2 = (lo, hi); seeds = (s1, s2), either may be None: the mean of all that object's vertices.")
-        .def_static(
-            "load", [](const py::handle& path) { return scalecert::Region::load(path_arg(path, "path")); },
-            py::arg("path"), "a scene file (JSON) whose objects may hold \"parts\"")
-        .def_static(
-            "from_meshes",
-            [](const py::handle& p1, const py::handle& p2, const py::handle& i1, const py::handle& i2,
-               const py::handle& groups) {
-                return scalecert::Region::from_meshes(path_arg(p1, "p1"), path_arg(p2, "p2"), interval(i1, "I1"),
-                                                      interval(i2, "I2"), flag_arg(groups, "parts_from_groups"));
-            },
-            py::arg("p1"), py::arg("p2"), py::arg("I1"), py::arg("I2"), py::arg("parts_from_groups") = true,
-            "mesh files (.off .obj .ply .stl); with parts_from_groups (the default) each OBJ file's groups with faces "
-            "are its convex parts, else each mesh is one convex part")
-        .def(
-            "verdict",
-            [](const scalecert::Region& r, const py::handle& r1, const py::handle& r2) {
-                return r.verdict(rational(r1, "rho1"), rational(r2, "rho2"));
-            },
-            py::arg("rho1"), py::arg("rho2"), "the exact verdict at (rho1, rho2) in I1 x I2")
-        .def(
-            "classify",
-            [](const scalecert::Region& r, const py::handle& r1, const py::handle& r2) {
-                return classify_array(r1, r2, [&r](const std::vector<double>& a, const std::vector<double>& b) {
-                    return r.classify(a, b, 0);
-                });
-            },
-            py::arg("rho1"), py::arg("rho2"),
-            "exact verdicts at the doubles' exact values in I1 x I2, on all cores: an int8 array of Verdict values")
-        .def(
-            "region", [](const scalecert::Region& r) { return json_loads(r.region_json()); },
-            "what scalecert region writes, as a dict: pair polygons, their union, the labelled boundary, switch "
-            "points, growth set")
-        .def(
-            "partition", [](const scalecert::Region& r) { return json_loads(r.partition_json()); },
-            "the certified partition (kind compound_partition) as a dict")
-        .def("partition_json", &scalecert::Region::partition_json, "the certificate's text, for scalecert-check")
-        .def(
-            "certify_fp",
-            [](const scalecert::Region& r, const py::handle& claims, const py::handle& exact_decimals,
-               const py::handle& tolerance, const py::handle& certificate) -> py::object {
-                scalecert::ClaimOptions opt;
-                opt.exact_decimals = flag_arg(exact_decimals, "exact_decimals");
-                opt.tolerance = rational(tolerance, "tolerance");
-                opt.certificate = flag_arg(certificate, "certificate");
-                scalecert::ClaimReport rep = r.certify_fp(claims_text(claims), opt);
-                if (!opt.certificate) return json_loads(rep.report);
-                return py::make_tuple(json_loads(rep.report), rep.certificate);
-            },
-            py::arg("claims"), py::arg("exact_decimals") = false, py::arg("tolerance") = 0,
-            py::arg("certificate") = false,
-            "marks claims on the compounds right or wrong, as Scene.certify_fp does: verdict, separating_plane, "
-            "witness_point and distance claims (the least over the part pairs) at any rho1, rho2 > 0, or 'RHO1 RHO2 "
-            "VERDICT' lines; with certificate=True, (the report, the compound_judgements certificate's text)")
-        .def(
-            "certify",
-            [](const scalecert::Region& r, const py::handle& kind, const py::handle& rho1, const py::handle& rho2,
-               const py::handle& value, const py::handle& closest, const py::handle& normal, const py::handle& offset,
-               const py::handle& point_, const py::handle& verdict, const py::handle& tolerance,
-               const py::handle& certificate, const py::handle& fractions) {
-                return certify_arrays([&r](const auto& c, const auto& o) { return r.certify(c, o); },
-                                      text_arg(kind, "kind"), rho1, rho2, value, closest, py::none(), normal, offset,
-                                      point_, verdict, tolerance, flag_arg(certificate, "certificate"),
-                                      flag_arg(fractions, "fractions"));
-            },
-            py::arg("kind"), py::arg("rho1"), py::arg("rho2"), py::arg("value") = py::none(),
-            py::arg("closest") = py::none(), py::arg("normal") = py::none(), py::arg("offset") = py::none(),
-            py::arg("point") = py::none(), py::arg("verdict") = py::none(), py::arg("tolerance") = 0,
-            py::arg("certificate") = false, py::arg("fractions") = false,
-            "claims of one kind over arrays, as Scene.certify takes them: 'distance' (the least over the part pairs), "
-            "'verdict', 'separating_plane' or 'witness_point' (a penetration depth is a claim on two convex objects); "
-            "with certificate=True the compound_judgements certificate's text");
-
     py::class_<PyScene>(m, "Scene")
         .def(py::init([](const py::handle& p1, const py::handle& p2, const py::handle& i1, const py::handle& i2,
                          const py::handle& seeds) { return make_scene(p1, p2, i1, i2, seeds); }),
              py::arg("P1"), py::arg("P2"), py::arg("I1"), py::arg("I2"), py::arg("seeds") = py::none(),
-             "Vertices as lists or numpy arrays of ints, Fractions, Decimals, decimal strings or floats "
-             "(a float is taken at its exact value); I1, I2 = (lo, hi); seeds = (s1, s2), default the means.")
+             "Two convex objects. Vertices as lists or numpy arrays of ints, Fractions, Decimals, decimal strings or "
+             "floats (a float is taken at its exact value); I1, I2 = (lo, hi); seeds = (s1, s2), default the means.")
+        .def_static(
+            "from_parts",
+            [](const py::handle& p1, const py::handle& p2, const py::handle& i1, const py::handle& i2,
+               const py::handle& seeds) {
+                std::vector<std::vector<scalecert::Point>> parts[2];
+                const char* names[2] = {"P1", "P2"};
+                const py::handle ps[2] = {p1, p2};
+                for (int i = 0; i < 2; ++i) {
+                    py::list l = as_list(ps[i], names[i]);
+                    for (size_t k = 0; k < l.size(); ++k)
+                        parts[i].push_back(points(l[k], std::string(names[i]) + "[" + std::to_string(k) + "]"));
+                }
+                const auto s = seeds_of(seeds);
+                return PyScene{scalecert::Scene::from_parts(std::move(parts[0]), std::move(parts[1]),
+                                                            interval(i1, "I1"), interval(i2, "I2"), s[0], s[1]),
+                               nullptr};
+            },
+            py::arg("P1"), py::arg("P2"), py::arg("I1"), py::arg("I2"), py::arg("seeds") = py::none(),
+            "Two objects made of convex parts: P1, P2 lists of parts, each a list of vertices (numbers as for "
+            "Scene); seeds = (s1, s2), either may be None: the mean of all that object's vertices.")
         .def_static(
             "load",
             [](const py::handle& path) {
                 return PyScene{scalecert::Scene::load(path_arg(path, "path")), nullptr};
             },
-            py::arg("path"), "a scene file (JSON)")
+            py::arg("path"), "a scene file (JSON); its objects given by vertices or as \"parts\"")
         .def_static(
             "from_meshes",
-            [](const py::handle& p1, const py::handle& p2, const py::handle& i1, const py::handle& i2) {
+            [](const py::handle& p1, const py::handle& p2, const py::handle& i1, const py::handle& i2,
+               const py::handle& groups) {
                 return PyScene{scalecert::Scene::from_meshes(path_arg(p1, "p1"), path_arg(p2, "p2"), interval(i1, "I1"),
-                                                             interval(i2, "I2")),
+                                                             interval(i2, "I2"), flag_arg(groups, "parts_from_groups")),
                                nullptr};
             },
-            py::arg("p1"), py::arg("p2"), py::arg("I1"), py::arg("I2"), "mesh files: .off .obj .ply .stl")
+            py::arg("p1"), py::arg("p2"), py::arg("I1"), py::arg("I2"), py::arg("parts_from_groups") = false,
+            "mesh files (.off .obj .ply .stl), each one convex object; with parts_from_groups=True each OBJ file's "
+            "groups with faces are its convex parts")
+        .def_property_readonly(
+            "convex", [](const PyScene& s) { return s.scene.convex(); },
+            "True for two convex objects; False when an object is made of parts")
+        .def(
+            "part_count", [](const PyScene& s, int i) { return s.scene.part_count(i); }, py::arg("i"),
+            "the number of parts of object i (0: P1, 1: P2); 1 for a convex object")
         .def("seeds",
              [](const PyScene& s) { return py::make_tuple(fractions(s.scene.seed(0)), fractions(s.scene.seed(1))); })
         .def(
@@ -750,6 +689,16 @@ PYBIND11_MODULE(scalecert, m) {
             },
             py::arg("rho1"), py::arg("rho2"),
             "exact verdicts at the doubles' exact values, on all cores: an int8 array of Verdict values")
+        .def(
+            "verdict",
+            [](const PyScene& s, const py::handle& r1, const py::handle& r2) {
+                return s.a().verdict(rational(r1, "rho1"), rational(r2, "rho2"));
+            },
+            py::arg("rho1"), py::arg("rho2"), "the exact verdict at (rho1, rho2) > 0")
+        .def(
+            "region", [](const PyScene& s) { return json_loads(s.a().region_json()); },
+            "what scalecert region writes, as a dict: pair polygons, their union, the labelled boundary, switch "
+            "points, growth set")
         .def(
             "check_plane",
             [](const PyScene& s, const py::handle& r1, const py::handle& r2, const py::handle& n,

@@ -43,6 +43,20 @@ std::string error_of(F f) {
     return "";
 }
 
+// Whether scalecert-check accepts the certificate `text` (written to a temporary file).
+bool checker_accepts(const std::string& text) {
+    static int n = 0;
+    const std::string path =
+        "/tmp/scalecert-test-api-" + std::to_string(::getpid()) + "-" + std::to_string(++n) + ".json";
+    std::FILE* out = std::fopen(path.c_str(), "wb");
+    if (!out) return false;
+    std::fwrite(text.data(), 1, text.size(), out);
+    std::fclose(out);
+    const int st = std::system((std::string(SCALECERT_CHECK_BIN) + " " + path + " >/dev/null").c_str());
+    std::remove(path.c_str());
+    return st == 0;
+}
+
 }  // namespace
 
 BOOST_AUTO_TEST_CASE(stacked_cubes_by_hand) {
@@ -157,16 +171,8 @@ BOOST_AUTO_TEST_CASE(loaded_scene_certificate_passes_the_checker) {
     char buf[4096];
     for (size_t n; (n = std::fread(buf, 1, sizeof buf, f)) > 0;) bundled.append(buf, n);
     std::fclose(f);
-    BOOST_TEST(cert == bundled);  // the bundled certificate was written by the scalecert command
-    // The independent checker accepts what the API wrote.
-    const std::string path = "/tmp/scalecert-test-api-" + std::to_string(::getpid()) + ".json";
-    std::FILE* out = std::fopen(path.c_str(), "wb");
-    BOOST_TEST_REQUIRE(out != nullptr);
-    std::fwrite(cert.data(), 1, cert.size(), out);
-    std::fclose(out);
-    const int st = std::system((std::string(SCALECERT_CHECK_BIN) + " " + path + " >/dev/null").c_str());
-    std::remove(path.c_str());
-    BOOST_TEST(st == 0);
+    BOOST_TEST(cert == bundled);        // the bundled certificate was written by the scalecert command
+    BOOST_TEST(checker_accepts(cert));  // the independent checker accepts what the API wrote
     // By hand (test_hand_curves): the lowest vertex v = (2,0,2), about the seed (0,0,9/2), is at
     // (2ρ1, 0, 9/2 − 5ρ1/2); the box's top is at z = ρ2. Vertex on face: ρ2 = 9/2 − 5ρ1/2, until
     // x = 2ρ1 reaches the top's edge x = ρ2 at (1, 2), a (V,E) switch.
@@ -377,15 +383,29 @@ BOOST_AUTO_TEST_CASE(typed_claims_by_hand_and_by_brute_force) {
         BOOST_TEST((g.items[i].exact_squared && *g.items[i].exact_squared == want[i]), i);
 }
 
+// The band of tests/test_compound.cpp: object 1 the parts [2,3] x [-1,1]^2 and [-3,-2] x [-1,1]^2
+// about the origin (in neither), object 2 the box [4,5] x [-1,1]^2 about (9/2, 0, 0); I1 = [1, 4],
+// I2 = [1, 3].
+scalecert::Scene band_scene() {
+    return scalecert::Scene::from_parts({box(2, -1, -1, 3, 1, 1), box(-3, -1, -1, -2, 1, 1)}, {box(4, -1, -1, 5, 1, 1)},
+                                        {R(1), R(4)}, {R(1), R(3)}, scalecert::Point{R(0), R(0), R(0)},
+                                        scalecert::Point{R(9, 2), R(0), R(0)});
+}
+
 BOOST_AUTO_TEST_CASE(a_region_of_parts_by_hand) {
     // The band of tests/test_compound.cpp through the public API: object 1 the parts
     // [2,3] x [-1,1]^2 and [-3,-2] x [-1,1]^2 about the origin (in neither), object 2 the box
     // [4,5] x [-1,1]^2 about (9/2, 0, 0). The right part spans [2ρ1, 3ρ1] in x, the box
     // [9/2 − ρ2/2, 9/2 + ρ2/2]: they meet iff 3ρ1 >= 9/2 − ρ2/2 and 2ρ1 <= 9/2 + ρ2/2. At ρ2 = 2:
     // from ρ1 = 7/6 to 11/4, then apart again as object 1 grows.
-    const scalecert::Region r({box(2, -1, -1, 3, 1, 1), box(-3, -1, -1, -2, 1, 1)}, {box(4, -1, -1, 5, 1, 1)},
-                              {R(1), R(4)}, {R(1), R(3)}, scalecert::Point{R(0), R(0), R(0)},
-                              scalecert::Point{R(9, 2), R(0), R(0)});
+    const scalecert::Scene band = band_scene();
+    BOOST_TEST(!band.convex());
+    BOOST_TEST(band.part_count(0) == 2u);
+    BOOST_TEST(band.part_count(1) == 1u);
+    BOOST_TEST((band.part(0, 1)[0] == scalecert::Point{R(-3), R(-1), R(-1)}));
+    BOOST_CHECK_THROW(band.part(1, 1), scalecert::InputError);
+    const scalecert::Analysis r(band);
+    BOOST_TEST(!r.convex());
     BOOST_TEST((r.verdict(R(1), R(2)) == scalecert::Verdict::Separated));
     BOOST_TEST((r.verdict(R(7, 6), R(2)) == scalecert::Verdict::Touching));
     BOOST_TEST((r.verdict(R(2), R(2)) == scalecert::Verdict::Overlapping));
@@ -394,13 +414,48 @@ BOOST_AUTO_TEST_CASE(a_region_of_parts_by_hand) {
     const std::vector<scalecert::Verdict> v = r.classify({1.0, 2.0, 2.75, 3.0}, {2.0, 2.0, 2.0, 2.0}, 1);
     BOOST_TEST((v == std::vector<scalecert::Verdict>{scalecert::Verdict::Separated, scalecert::Verdict::Overlapping,
                                                      scalecert::Verdict::Touching, scalecert::Verdict::Separated}));
-    BOOST_CHECK_THROW(r.verdict(R(5), R(2)), scalecert::InputError);  // outside I1 x I2
+    // Outside I1 x I2 as well: at (5, 2) the right part spans [10, 15] in x, past the box.
+    BOOST_TEST((r.verdict(R(5), R(2)) == scalecert::Verdict::Separated));
+    BOOST_CHECK_THROW(r.classify({5.0}, {2.0}, 1), scalecert::InputError);  // the grid covers I1 x I2
+    // query gives the verdict (no one plane or common point stands for the parts); check_plane
+    // takes every part: at (1, 2) the plane x = 13/4 lies between the right part's face x = 3
+    // (the left part is at x <= -2) and the box's face x = 7/2.
+    const scalecert::QueryResult q = r.query(R(1), R(2));
+    BOOST_TEST((q.verdict == scalecert::Verdict::Separated));
+    BOOST_TEST((!q.plane && !q.common));
+    const scalecert::PlaneCheck pc = r.check_plane(R(1), R(2), {R(1), R(0), R(0)}, R(13, 4));
+    BOOST_TEST(pc.separates);
+    BOOST_TEST(pc.c1 == R(3));
+    BOOST_TEST(pc.c2 == R(7, 2));
+    BOOST_TEST(!r.check_plane(R(2), R(2), {R(1), R(0), R(0)}).separates);  // overlapping at (2, 2)
+    // What is defined for two convex objects only says what answers instead.
+    for (const std::string& e : {error_of([&] { r.curve(); }), error_of([&] { r.curve_json(); })})
+        BOOST_TEST(
+            e.find("is defined for two convex objects; on objects made of parts, region_json()") != std::string::npos,
+            e);
     BOOST_TEST(r.region_json().find("\"switch_points\": []") != std::string::npos);
     BOOST_TEST(r.partition_json().find("\"kind\": \"compound_partition\"") != std::string::npos);
+    // Golden data (test_cli derives it by hand on the same band): 13 queries on ρ1 = 23/8, the first
+    // on the boundary at ρ2 = 5/2.
+    const scalecert::GoldenData gd = r.golden();
+    const auto gj = nlohmann::json::parse(gd.json);
+    BOOST_TEST(gj["queries"].size() == 13u);
+    BOOST_TEST(gj["queries"][0]["rho2"] == "5/2");
+    BOOST_TEST(gj["queries"][0]["verdict"] == "touching");
+    BOOST_TEST(checker_accepts(r.partition_json()));
+    // query_json on parts is the judgements certificate of the exact verdict, as scalecert query --json writes.
+    const std::string qj = r.query_json(R(7, 6), R(2));
+    BOOST_TEST(qj.find("\"verdict\": \"touching\"") != std::string::npos);
+    BOOST_TEST(checker_accepts(qj));
+    // The scene file of parts, and back.
+    BOOST_TEST(scalecert::Scene::from_parts({band.part(0, 0), band.part(0, 1)}, {band.part(1, 0)}, band.range(0),
+                                            band.range(1), band.seed(0), band.seed(1))
+                   .json() == band.json());
     // A flat part: one line, InputError.
     BOOST_CHECK_THROW(
-        scalecert::Region({{{R(0), R(0), R(0)}, {R(1), R(0), R(0)}, {R(0), R(1), R(0)}, {R(1), R(1), R(0)}}},
-                          {box(4, -1, -1, 5, 1, 1)}, {R(1), R(4)}, {R(1), R(3)})
+        scalecert::Analysis(scalecert::Scene::from_parts(
+                                {{{R(0), R(0), R(0)}, {R(1), R(0), R(0)}, {R(0), R(1), R(0)}, {R(1), R(1), R(0)}}},
+                                {box(4, -1, -1, 5, 1, 1)}, {R(1), R(4)}, {R(1), R(3)}))
             .verdict(R(1), R(1)),
         scalecert::InputError);
 }
@@ -413,8 +468,7 @@ BOOST_AUTO_TEST_CASE(typed_claims_on_parts_by_hand) {
     using scalecert::Claim;
     using scalecert::ClaimKind;
     using scalecert::Point;
-    const scalecert::Region r({box(2, -1, -1, 3, 1, 1), box(-3, -1, -1, -2, 1, 1)}, {box(4, -1, -1, 5, 1, 1)},
-                              {R(1), R(4)}, {R(1), R(3)}, Point{R(0), R(0), R(0)}, Point{R(9, 2), R(0), R(0)});
+    const scalecert::Analysis r(band_scene());
     std::vector<Claim> c(7);
     c[0].kind = ClaimKind::Distance, c[0].rho1 = 1, c[0].rho2 = 2, c[0].value = R(1, 2);
     c[0].closest = std::array<Point, 2>{Point{3, 1, 0}, Point{R(7, 2), 1, 0}};
@@ -446,14 +500,7 @@ BOOST_AUTO_TEST_CASE(typed_claims_on_parts_by_hand) {
     BOOST_TEST(j.wrong == 3);
     // The independent checker accepts the compound_judgements certificate.
     BOOST_TEST(j.certificate.find("\"kind\": \"compound_judgements\"") != std::string::npos);
-    const std::string path = "/tmp/scalecert-test-api-parts-" + std::to_string(::getpid()) + ".json";
-    std::FILE* out = std::fopen(path.c_str(), "wb");
-    BOOST_TEST_REQUIRE(out != nullptr);
-    std::fwrite(j.certificate.data(), 1, j.certificate.size(), out);
-    std::fclose(out);
-    const int st = std::system((std::string(SCALECERT_CHECK_BIN) + " " + path + " >/dev/null").c_str());
-    std::remove(path.c_str());
-    BOOST_TEST(st == 0);
+    BOOST_TEST(checker_accepts(j.certificate));
     // A depth names no part pair: refused with one line.
     Claim d;
     d.kind = ClaimKind::PenetrationDepth, d.rho1 = 2, d.rho2 = 2, d.value = 1;
@@ -597,9 +644,7 @@ BOOST_AUTO_TEST_CASE(typed_and_file_claims_judge_alike) {
         BOOST_TEST(right > 0u);  // both outcomes occur
         BOOST_TEST(right < claims.size());
     }
-    const scalecert::Region r({box(2, -1, -1, 3, 1, 1), box(-3, -1, -1, -2, 1, 1)}, {box(4, -1, -1, 5, 1, 1)},
-                              {R(1), R(4)}, {R(1), R(3)}, scalecert::Point{R(0), R(0), R(0)},
-                              scalecert::Point{R(9, 2), R(0), R(0)});
+    const scalecert::Analysis r(band_scene());
     const std::vector<scalecert::Claim> claims = random_claims(2000, 5, false);
     const scalecert::Judgements typed = r.certify(claims);
     const size_t right = same_judgements(typed, r.certify_fp(claims_file(claims)).report);

@@ -1366,10 +1366,45 @@ BOOST_AUTO_TEST_CASE(every_command_takes_objects_made_of_parts) {
                "separated\noverlapping\n");
     expect_error("curve on parts", "curve " + u, "scalecert region gives where they meet");
     expect_error("segment on parts", "query " + u + " 1 1 --segment seeds", "for two convex objects");
-    Run gp = run("golden " + u + " --dir " + (workdir() / "never-made-5").string());
+    Run gp = run("grid " + u + " --n 4");
     BOOST_TEST(gp.status == 2);
-    BOOST_TEST(gp.err.find("`curve`, `golden` and `grid` are for two convex objects") != std::string::npos, gp.err);
-    BOOST_TEST(!fs::exists(workdir() / "never-made-5"));
+    BOOST_TEST(gp.err.find("`curve` and `grid` are for two convex objects") != std::string::npos, gp.err);
+
+    // golden on the band (tests/data/compound_band.json, by hand): its right part [2ρ1, 3ρ1] in x
+    // meets the box [9/2 − ρ2/2, 9/2 + ρ2/2] iff ρ2 >= max(9 − 6ρ1, 4ρ1 − 9) (y and z always
+    // overlap; the left part never meets it). Of the verticals ρ1 = 1 + 3k/8, only ρ1 = 23/8 has an
+    // end strictly inside I2 = [1, 3]: ρ2 = 4·23/8 − 9 = 5/2, where 2ρ1 = 9/2 + ρ2/2 (touching).
+    // Above it by 2^-52 the nearest double is 5/2 + 2^-51 (overlapping); below, 5/2 − 2^-51, where
+    // the gap along x is 23/4 − 9/2 − (5/2 − 2^-51)/2 = 2^-52: distance² 2^-104.
+    const fs::path gd = workdir() / "golden-band";
+    const Run gb =
+        run("golden " + std::string(SCALECERT_SOURCE_DIR) + "/tests/data/compound_band.json --dir " + gd.string());
+    BOOST_TEST_REQUIRE(gb.status == 0, gb.err);
+    const nlohmann::ordered_json gold = nlohmann::ordered_json::parse(slurp(gd / "compound_band.golden.json"));
+    BOOST_TEST(gold["kind"] == "region");
+    BOOST_TEST(gold["scene_file"] == "compound_band.scene.json");
+    const nlohmann::ordered_json& qs = gold["queries"];
+    BOOST_TEST_REQUIRE(qs.size() == 13u);
+    for (const auto& q : qs) BOOST_TEST(q["rho1"] == "23/8");
+    BOOST_TEST(qs[0]["rho2"] == "5/2");
+    BOOST_TEST(qs[0]["verdict"] == "touching");
+    BOOST_TEST(qs[0]["measure_at_doubles"]["kind"] == "touching");
+    BOOST_TEST(qs[11]["where"] == "above 2^-52");
+    BOOST_TEST(qs[11]["verdict"] == "overlapping");
+    BOOST_TEST(qs[11]["verdict_at_doubles"] == "overlapping");
+    BOOST_TEST(qs[11]["measure_at_doubles"]["kind"] == "overlapping");
+    BOOST_TEST(qs[12]["where"] == "below 2^-52");
+    BOOST_TEST(qs[12]["verdict_at_doubles"] == "separated");
+    BOOST_TEST(qs[12]["measure_at_doubles"]["squared"] == "1/20282409603651670423947251286016");
+    const std::string csv = slurp(gd / "compound_band.golden.csv");
+    BOOST_TEST(std::count(csv.begin(), csv.end(), '\n') == 14);
+    BOOST_TEST(csv.find("\n2.875,2.5,on,touching,touching,0\n") != std::string::npos, csv);
+    // The scene's copy is a scene file of parts: region on it gives the golden document's region.
+    const Run again = run("region " + (gd / "compound_band.scene.json").string());
+    nlohmann::ordered_json without = gold;
+    without.erase("queries");
+    without.erase("scene_file");
+    BOOST_TEST(nlohmann::ordered_json::parse(again.out) == without);
 
     const fs::path L =
         write("L.obj",

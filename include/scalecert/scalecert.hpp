@@ -1,7 +1,7 @@
-// scalecert: exact, certified collision of two convex polyhedra P1, P2, each scaled about a seed
-// s_i strictly inside it by a factor ρ_i in a range I_i. P_i(ρ) = s_i + ρ·(P_i − s_i). Every answer
-// is exact (GMP rationals); certificates are JSON documents that scalecert-check verifies.
-// This header is the whole public API. Link the CMake target scalecert::core.
+// scalecert: exact, certified collision of two objects P1, P2, each one or more convex polyhedra
+// (its parts) scaled about one seed s_i by a factor ρ_i in a range I_i: P_i(ρ) = s_i + ρ·(P_i − s_i).
+// Every answer is exact (GMP rationals); certificates are JSON documents that scalecert-check
+// verifies. This header is the whole public API. Link the CMake target scalecert::core.
 #pragma once
 #include <gmpxx.h>
 
@@ -46,18 +46,32 @@ struct Contact {
     std::vector<int> verts1, verts2;
 };
 
-// A validated scene: each polyhedron is the convex hull of its points (duplicates and interior
-// points allowed); the seed defaults to the mean of the points. Checked at construction by the
-// scene file's rules and messages: 4 to 10^6 points each, 0 < lo <= hi, the points spanning 3
-// dimensions, each seed strictly inside. Throws InputError.
+// A validated scene of two objects. Each part is the convex hull of its points (duplicates and
+// interior points allowed). An object given by its points is one convex part, its seed strictly
+// inside; two such objects are a convex scene, with everything the paper defines for two convex
+// polyhedra (the curve, its switch points, the growth distance). An object given as parts is made
+// of parts (even of one), its seed anywhere; a scene with one is answered as scalecert region
+// answers it. A seed defaults to the mean of the object's points. Checked at construction by the
+// scene file's rules and messages (4 to 10^6 points an object, 0 < lo <= hi, each part spanning 3
+// dimensions). Throws InputError.
 class Scene {
   public:
+    // Two convex objects.
     Scene(std::vector<Point> p1, std::vector<Point> p2, Interval i1, Interval i2, std::optional<Point> seed1 = {},
           std::optional<Point> seed2 = {});
-    static Scene load(const std::string& scene_json_path);  // the scene file format
-    // Mesh files (.off .obj .ply .stl; text numbers exact as written, binary floats at their value).
-    static Scene from_meshes(const std::string& p1_path, const std::string& p2_path, Interval i1, Interval i2);
-    const std::vector<Point>& points(int i) const;  // i = 0 (P1) or 1 (P2), as given
+    // Two objects made of parts: parts[i] is object i's parts, each a list of points.
+    static Scene from_parts(std::vector<std::vector<Point>> parts1, std::vector<std::vector<Point>> parts2, Interval i1,
+                            Interval i2, std::optional<Point> seed1 = {}, std::optional<Point> seed2 = {});
+    static Scene load(const std::string& scene_json_path);  // the scene file format ("vertices" or "parts")
+    // Mesh files (.off .obj .ply .stl; text numbers exact as written, binary floats at their value):
+    // each mesh one convex part, or with parts_from_groups each OBJ file's 'o'/'g' groups with faces
+    // its parts (other formats are refused then).
+    static Scene from_meshes(const std::string& p1_path, const std::string& p2_path, Interval i1, Interval i2,
+                             bool parts_from_groups = false);
+    bool convex() const;                                    // two convex objects (neither given as parts)
+    size_t part_count(int i) const;                         // 1 for a convex object
+    const std::vector<Point>& points(int i) const;          // i = 0 (P1) or 1 (P2): all its points, as given
+    const std::vector<Point>& part(int i, size_t k) const;  // the points of part k of object i
     const Point& seed(int i) const;
     Interval range(int i) const;
     std::string json() const;  // the scene file, every number exact
@@ -174,74 +188,50 @@ struct GoldenData {
     std::string json, csv;
 };
 
-// Calls on one Analysis from several threads at once are not supported; classify() itself runs
-// on many threads.
+// The analysis of one scene, convex or made of parts. Calls on one Analysis from several threads
+// at once are not supported; classify() itself runs on many threads. What is defined only for two
+// convex objects (the curve) throws InputError on a scene of parts, naming what answers instead.
 class Analysis {
   public:
-    // Builds the curve: by walking it (the scan path, no hull) from 2,000 points (or 250,000 as
-    // the product of the counts), as the scalecert command does, else from the hull model. The
-    // documents, classify and claims' verdicts come from the walk where it proved what they need;
-    // query, check_plane and the other claims use the hull model, built on first use.
+    // A convex scene's curve is built here: by walking it (the scan path, no hull) from 2,000
+    // points (or 250,000 as the product of the counts), as the scalecert command does, else from
+    // the hull model. The documents, classify and claims' verdicts come from the walk where it
+    // proved what they need; query, check_plane and the other claims use the hull model, built on
+    // first use. On a scene of parts nothing is built before it is needed.
     explicit Analysis(const Scene& scene);
-    const Curve& curve() const { return curve_; }
-    QueryResult query(const Rational& rho1, const Rational& rho2) const;  // ρ1, ρ2 > 0
-    // The exact verdicts at doubles' exact values (> 0, finite), on `threads` threads (0: all cores).
+    bool convex() const;
+    // The exact verdict at (ρ1, ρ2), ρ1, ρ2 > 0.
+    Verdict verdict(const Rational& rho1, const Rational& rho2) const;
+    // The verdict with its evidence on a convex scene (a plane, a common point); on parts the verdict.
+    QueryResult query(const Rational& rho1, const Rational& rho2) const;
+    // The exact verdicts at doubles' exact values (> 0, finite; on parts, in I1 × I2), on
+    // `threads` threads (0: all cores).
     std::vector<Verdict> classify(const std::vector<double>& rho1, const std::vector<double>& rho2,
                                   unsigned threads = 0) const;
-    // Is n·x = offset (or, without offset, some plane of normal n) strictly between P1(ρ1), P2(ρ2)?
+    // Is n·x = offset (or, without offset, some plane of normal n) strictly between P1(ρ1) and
+    // P2(ρ2), every part of each?
     PlaneCheck check_plane(const Rational& rho1, const Rational& rho2, const Point& normal,
                            const std::optional<Rational>& offset = {}) const;
     // JSON documents (certificates/FORMAT.md); byte-identical to the scalecert command's output.
-    std::string curve_json() const;
-    std::string query_json(const Rational& rho1, const Rational& rho2) const;
-    std::string partition_json() const;  // the certificate: check it with scalecert-check
-    // scalecert certify-fp; throws InputError for malformed claims.
+    std::string query_json(const Rational& rho1, const Rational& rho2) const;  // parts: its judgements certificate
+    std::string partition_json() const;  // the certificate (parts: compound_partition): check it with scalecert-check
+    std::string region_json() const;     // scalecert region: pair polygons, their union, its labelled boundary
+    // scalecert certify-fp; throws InputError for malformed claims, and on parts for claims defined
+    // on two convex objects only (curves, switch points, growth distances, penetration depths).
     ClaimReport certify_fp(const std::string& claims, const ClaimOptions& options = {}) const;
     // The same, typed, over an array of claims (options.exact_decimals and .json do not apply).
     Judgements certify(const std::vector<Claim>& claims, const ClaimOptions& options = {}) const;
-    // What scalecert golden writes for each of its scenes, without the family's fields.
+    // What scalecert golden writes for each of its scenes, without the family's fields (on parts:
+    // the region document with queries where the objects' meeting set ends).
     GoldenData golden() const;
+    // Two convex objects only:
+    const Curve& curve() const;
+    std::string curve_json() const;
 
   private:
     struct Impl;
     std::shared_ptr<const Impl> impl_;
     Curve curve_;
-};
-
-// Objects made of convex parts: each object a union of convex parts, all scaled about its one
-// seed, which need not lie in any part. Where they overlap in I1 × I2, exactly (docs/manual.md,
-// "region"). Built on first use; calls on one Region from several threads at once are not
-// supported. Throws InputError (a flat part, the limits, a point outside I1 × I2).
-class Region {
-  public:
-    // parts[i]: object i's parts, each the convex hull of at least 4 points spanning 3 dimensions;
-    // a seed defaults to the mean of all the object's points.
-    Region(std::vector<std::vector<Point>> parts1, std::vector<std::vector<Point>> parts2, Interval i1, Interval i2,
-           std::optional<Point> seed1 = {}, std::optional<Point> seed2 = {});
-    static Region load(const std::string& scene_json_path);  // objects with "parts" or plain (one part)
-    // From mesh files (.off .obj .ply .stl): with parts_from_groups, each OBJ file's 'o'/'g' groups
-    // with faces are its parts (other formats are refused); without, each mesh is one convex part.
-    static Region from_meshes(const std::string& p1_path, const std::string& p2_path, Interval i1, Interval i2,
-                              bool parts_from_groups = true);
-    Verdict verdict(const Rational& rho1, const Rational& rho2) const;  // exact
-    // The exact verdicts at doubles' exact values in I1 × I2, on `threads` threads (0: all cores).
-    std::vector<Verdict> classify(const std::vector<double>& rho1, const std::vector<double>& rho2,
-                                  unsigned threads = 0) const;
-    std::string region_json() const;     // byte-identical to `scalecert region`
-    std::string partition_json() const;  // the certificate: check it with scalecert-check
-    // scalecert certify-fp on the compounds: verdict, separating_plane, witness_point and distance
-    // claims (the least distance over the part pairs) at any ρ1, ρ2 > 0, and 'RHO1 RHO2 VERDICT'
-    // lines; with options.certificate, the compound_judgements certificate. Throws InputError for
-    // malformed claims and for claims on convex objects only (curves, growth distances, depths).
-    ClaimReport certify_fp(const std::string& claims, const ClaimOptions& options = {}) const;
-    // The same, typed: verdict, separating_plane, witness_point and distance claims (a penetration
-    // depth is refused); with options.certificate, the compound_judgements certificate.
-    Judgements certify(const std::vector<Claim>& claims, const ClaimOptions& options = {}) const;
-
-  private:
-    struct Impl;
-    explicit Region(std::shared_ptr<Impl> impl) : impl_(std::move(impl)) {}
-    std::shared_ptr<Impl> impl_;
 };
 
 }  // namespace scalecert

@@ -402,14 +402,14 @@ def test_region_of_parts_by_hand_and_the_cli(tmp_path):
     # at (6/7, 12/7), where the peg touches the bottom and both walls at once.
     U = [box(-3, -1, 0, 3, 1, 1), box(-3, -1, 1, -2, 1, 4), box(2, -1, 1, 3, 1, 4)]
     peg = [box(-1, F(-1, 2), 2, 1, F(1, 2), 5)]
-    r = scalecert.Region(U, peg, ("1/2", 2), (F(1, 2), 3), seeds=((0, 0, F(1, 2)), (0, 0, "7/2")))
+    r = scalecert.Scene.from_parts(U, peg, ("1/2", 2), (F(1, 2), 3), seeds=((0, 0, F(1, 2)), (0, 0, "7/2")))
     assert r.verdict(1, 3) == scalecert.Verdict.Overlapping
     assert r.verdict(F(1, 2), 1) == scalecert.Verdict.Touching          # on the wall's line
     assert r.verdict(F(6, 7), F(12, 7) - F(1, 100)) == scalecert.Verdict.Separated  # below the reflex corner
     assert r.verdict(F(3, 2), F(3, 2)) == scalecert.Verdict.Touching    # the growth set starts at 4 rho = 6
     assert list(r.classify([1.0, 0.5, 2.0], [3.0, 1.0, 1.0])) == [2, 1, 0]
     # Either seed may be None (the mean of that object's points), as for Scene: the peg's mean is its centre.
-    assert scalecert.Region(U, peg, ("1/2", 2), (F(1, 2), 3), seeds=((0, 0, F(1, 2)), None)).verdict(F(1, 2), 1) == scalecert.Verdict.Touching
+    assert scalecert.Scene.from_parts(U, peg, ("1/2", 2), (F(1, 2), 3), seeds=((0, 0, F(1, 2)), None)).verdict(F(1, 2), 1) == scalecert.Verdict.Touching
     d = r.region()
     assert [(s["rho1"], s["rho2"], s["change"]) for s in d["switch_points"]] == [("6/7", "12/7", "pair")]
     # The growth set starts where the peg's bottom face (z = 2: its points 0, 2, 4, 6, as box() lists
@@ -418,20 +418,31 @@ def test_region_of_parts_by_hand_and_the_cli(tmp_path):
     assert d["growth_set"][0]["first_contact"]["features"] == {"P1": [1, 3, 5, 7], "P2": [0, 2, 4, 6]}
     # The band (tests/test_compound.cpp) from rho = 3/2 on: its pair meets on rho1 = rho2 from 9/7, so
     # the growth set starts on the rectangle's edge, already overlapping: no contact there.
-    band = scalecert.Region([box(2, -1, -1, 3, 1, 1), box(-3, -1, -1, -2, 1, 1)], [box(4, -1, -1, 5, 1, 1)], ("3/2", 4), (1, 3),
+    band = scalecert.Scene.from_parts([box(2, -1, -1, 3, 1, 1), box(-3, -1, -1, -2, 1, 1)], [box(4, -1, -1, 5, 1, 1)], ("3/2", 4), (1, 3),
                             seeds=((0, 0, 0), (F(9, 2), 0, 0)))
     g = band.region()["growth_set"]
     assert [(x["from"], x["to"], x["first_contact"]["contact"]) for x in g] == [("3/2", "3", None)]
+    # Outside I1 x I2 too: at (3, 1) the bottom, z in [1/2 - 3/2, 1/2 + 3/2], reaches z = 2, the peg's
+    # bottom, over x in [-1, 1] (the walls, x in [-9, -6] and [6, 9], stay clear): touching.
+    assert r.verdict(3, 1) == scalecert.Verdict.Touching
+    assert r.verdict(3, F(99, 100)) == scalecert.Verdict.Separated
     with pytest.raises(ValueError, match="outside I1 x I2"):
-        r.verdict(3, 1)
+        r.classify([3.0], [1.0])  # the grid is over I1 x I2
     for bad in (["a"], [1 + 2j], [object()]):  # InputError (a ValueError) with one line, not pybind's TypeError
         with pytest.raises(ValueError, match="expected real numbers"):
             r.classify(bad, [1.0])
     with pytest.raises(ValueError, match="flat"):
-        scalecert.Region([[[0, 0, 0], [1, 0, 0], [0, 1, 0], [1, 1, 0]]], peg, (1, 2), (1, 2)).verdict(1, 1)  # built on first use
-    # The scene file through Region.load and through the command: the same bytes.
+        scalecert.Scene.from_parts([[[0, 0, 0], [1, 0, 0], [0, 1, 0], [1, 1, 0]]], peg, (1, 2), (1, 2)).verdict(1, 1)  # built on first use
+    # Golden data on parts (the band, derived by hand in tests/test_cli.cpp): 13 queries on rho1 = 23/8,
+    # the first touching at rho2 = 5/2; the same bytes as scalecert golden writes.
+    g, csv = scalecert.Scene.load(str(SRC / "tests" / "data" / "compound_band.json")).golden()
+    assert len(g["queries"]) == 13 and g["queries"][0]["rho2"] == "5/2" and g["queries"][0]["verdict"] == "touching"
+    assert csv.count("\n") == 14
+    subprocess.run([CLI, "golden", str(SRC / "tests" / "data" / "compound_band.json"), "--dir", str(tmp_path / "g")], check=True)
+    assert (tmp_path / "g" / "compound_band.golden.csv").read_text() == csv
+    # The scene file through Scene.load and through the command: the same bytes.
     scene = SRC / "tests" / "data" / "compound_u_peg.json"
-    loaded = scalecert.Region.load(str(scene))
+    loaded = scalecert.Scene.load(str(scene))
     cert = tmp_path / "u.cert.json"
     out = subprocess.run([CLI, "region", str(scene), "--certificate", str(cert)], capture_output=True, text=True, check=True).stdout
     assert json.loads(out) == loaded.region()
@@ -444,7 +455,7 @@ def test_region_certify_fp_by_hand_and_the_cli(tmp_path):
     # is 1 above the bottom and 1 from each wall (separated, distance 1, no plane: the walls rise past
     # the peg's bottom); at (1, 2) its bottom sinks into the U's bottom; at (6/7, 12/7) all three touch.
     scene = SRC / "tests" / "data" / "compound_u_peg.json"
-    r = scalecert.Region.load(str(scene))
+    r = scalecert.Scene.load(str(scene))
     claims = {"format": "scalecert-claims-1", "claims": [
         {"kind": "verdict", "rho1": 1, "rho2": 1, "verdict": "separated"},
         {"kind": "distance", "rho1": 1, "rho2": 1, "value": 1.0},
@@ -476,7 +487,7 @@ def test_a_big_int_is_one_exact_value_through_every_entry_point():
     D = 2**53 + 1
     a, b = box(0, 0, 0, 1, 1, 1), box(1 + D, 0, 0, 2 + D, 1, 1)
     s = scalecert.Scene(a, b, (1, 2), (1, 2))
-    r = scalecert.Region([a], [b], (1, 2), (1, 2))
+    r = scalecert.Scene.from_parts([a], [b], (1, 2), (1, 2))
     claim = [{"kind": "distance", "rho1": 1, "rho2": 1, "value": D}]
     assert s.certify("distance", [1], [1], value=[D])["right"].tolist() == [True]
     assert s.certify_fp(claim)["wrong"] == 0
@@ -500,7 +511,7 @@ class BadPath:
 
 
 def test_every_bad_argument_is_an_input_error(tmp_path):
-    s, r = stacked(), scalecert.Region([box(0, 0, 0, 2, 2, 2)], [box(0, 0, 3, 2, 2, 5)], (F(1, 2), 2), (F(1, 2), 2))
+    s, r = stacked(), scalecert.Scene.from_parts([box(0, 0, 0, 2, 2, 2)], [box(0, 0, 3, 2, 2, 5)], (F(1, 2), 2), (F(1, 2), 2))
     bad = [
         lambda: s.classify([2**2000], [1.0]),           # too large for a double (was OverflowError)
         lambda: r.classify([2**2000], [1.0]),
@@ -518,12 +529,12 @@ def test_every_bad_argument_is_an_input_error(tmp_path):
         lambda: s.certify_fp("1 1 separated\n", exact_decimals=1),
         lambda: r.certify_fp("1 1 separated\n", certificate=None),
         lambda: scalecert.Scene.load(5),
-        lambda: scalecert.Region.load(None),
+        lambda: scalecert.Scene.load(None),
         lambda: scalecert.Scene.from_meshes(1, 2, (1, 2), (1, 2)),
         lambda: s.certify_fp([{"kind": "verdict", "rho1": 1, "rho2": 1, "verdict": "separated"}] + [[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[1]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]]),
         # text that is not UTF-8 (a lone surrogate), a NUL in a path, an __index__ or __fspath__ that raises
         lambda: scalecert.Scene.load("\udc80x.json"),
-        lambda: scalecert.Region.load("\udc80x.json"),
+        lambda: scalecert.Scene.load("\udc80x.json"),
         lambda: s.certify_fp("1 1 separated\udc80"),
         lambda: s.certify("\udc80", [1], [1]),
         lambda: s.certify("verdict", ["\udc80"], [1], verdict=["separated"]),
@@ -543,7 +554,7 @@ def test_every_bad_argument_is_an_input_error(tmp_path):
 
 
 def test_pairs_are_numbered_from_0_in_every_classify():
-    s, r = stacked(), scalecert.Region([box(0, 0, 0, 2, 2, 2)], [box(0, 0, 3, 2, 2, 5)], (F(1, 2), 2), (F(1, 2), 2))
+    s, r = stacked(), scalecert.Scene.from_parts([box(0, 0, 0, 2, 2, 2)], [box(0, 0, 3, 2, 2, 5)], (F(1, 2), 2), (F(1, 2), 2))
     with pytest.raises(scalecert.InputError, match=r"pair 1 \(numbered from 0\)"):
         s.classify([1.0, -1.0], [1.0, 1.0])
     with pytest.raises(scalecert.InputError, match=r"pair 1 \(numbered from 0\)"):
@@ -559,17 +570,17 @@ def test_region_from_meshes_reads_groups_as_parts(tmp_path):
     L.write_text("".join("v %d %d %d\n" % tuple(v) for v in foot + leg) +
                  "g foot\nf 1 2 4 3\nf 5 6 8 7\ng leg\nf 9 10 12 11\nf 13 14 16 15\n")
     B.write_text("".join("v %d %d %d\n" % tuple(v) for v in box(2, 0, 2, 3, 1, 3)) + "f 1 2 4 3\nf 5 6 8 7\n")
-    r = scalecert.Region.from_meshes(L, str(B), ("1/2", 2), ("1/2", 2))
+    r = scalecert.Scene.from_meshes(L, str(B), ("1/2", 2), ("1/2", 2), parts_from_groups=True)
     assert r.verdict(1, 1) == scalecert.Verdict.Separated
-    assert scalecert.Region.from_meshes(L, B, ("1/2", 2), ("1/2", 2), parts_from_groups=False).verdict(1, 1) == scalecert.Verdict.Touching
+    assert scalecert.Scene.from_meshes(L, B, ("1/2", 2), ("1/2", 2), parts_from_groups=False).verdict(1, 1) == scalecert.Verdict.Touching
     with pytest.raises(scalecert.InputError, match="no groups"):
-        scalecert.Region.from_meshes(SRC / "examples" / "box.stl", B, (1, 2), (1, 2))
+        scalecert.Scene.from_meshes(SRC / "examples" / "box.stl", B, (1, 2), (1, 2), parts_from_groups=True)
 
 
 def test_region_certify_over_arrays_by_hand():
     # The band (tests/test_compound.cpp): at (1, 2) its right part spans x in [2, 3] and the box
     # [7/2, 11/2], 1/2 apart along x; at (2, 2) the right part spans [4, 6] and holds (5, 0, 0).
-    band = scalecert.Region([box(2, -1, -1, 3, 1, 1), box(-3, -1, -1, -2, 1, 1)], [box(4, -1, -1, 5, 1, 1)], (1, 4), (1, 3),
+    band = scalecert.Scene.from_parts([box(2, -1, -1, 3, 1, 1), box(-3, -1, -1, -2, 1, 1)], [box(4, -1, -1, 5, 1, 1)], (1, 4), (1, 3),
                             seeds=((0, 0, 0), (F(9, 2), 0, 0)))
     d = band.certify("distance", [1.0, 1.0], [2.0, 2.0], value=[0.5, 0.25],
                      closest=[[[3, 0, 0], [3.5, 0, 0]], [[3, 0, 0], [3.5, 1, 0]]], fractions=True)

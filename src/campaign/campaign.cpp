@@ -1,6 +1,8 @@
 #include "campaign/campaign.hpp"
 
 #include "certify/golden.hpp"
+#include "certify/region_certificate.hpp"
+#include "session/compound_session.hpp"
 #include "io/files.hpp"
 
 #include <algorithm>
@@ -245,14 +247,23 @@ std::string golden_stem(const std::string& path) {
 
 std::vector<std::pair<std::string, std::string>> golden_files(const std::string& stem, const ExactScene& s,
                                                               const std::function<void(Json&)>& fields) {
-    HullModel m = build_model(s);
-    TouchingCurve c = build_curve(m);
-    GoldenAnswers a = golden_answers(s, m, c);
+    const bool parts = !s.P[0].parts.empty() || !s.P[1].parts.empty();
+    GoldenAnswers a;
+    if (parts) {  // objects made of parts: the region document and queries at its vertical ends
+        CompoundSession session(s, stem);
+        Json doc = session.region_json();
+        a = golden_answers_parts(session.region(true), session.judge(), std::move(doc));
+    } else {
+        HullModel m = build_model(s);
+        TouchingCurve c = build_curve(m);
+        a = golden_answers(s, m, c);
+    }
     Json j = std::move(a.curve);
     fields(j);
     j["queries"] = std::move(a.queries);
-    return {
-        {stem + ".scene.json", dump(scene_json(s))}, {stem + ".golden.json", dump(j)}, {stem + ".golden.csv", a.csv}};
+    return {{stem + ".scene.json", dump(parts ? compound_scene_json(s) : scene_json(s))},
+            {stem + ".golden.json", dump(j)},
+            {stem + ".golden.csv", a.csv}};
 }
 
 std::vector<std::pair<std::string, std::string>> golden_scene(const std::string& family, int i,

@@ -1,6 +1,7 @@
 // Golden data for a scene: its exact answers where floating-point code is most likely wrong.
 #pragma once
 #include "certify/certificate.hpp"
+#include "certify/compound_judge.hpp"
 
 #include <string>
 
@@ -17,5 +18,15 @@ struct GoldenAnswers {
     std::string csv;
 };
 GoldenAnswers golden_answers(const ExactScene& s, const HullModel& m, const TouchingCurve& c);
+
+// Objects made of parts: `region` is the region document (compound_region_json, with its union),
+// and "queries" are taken where the objects' meeting set ends along verticals: at 7 values of ρ1
+// spread over I1 and at every switch point's ρ1, each end strictly inside I2 of an interval of ρ2
+// where they meet (the ends of the part pairs' polygons' intervals, merged), and the pairs above
+// and below it at relative distances 2^-k as for convex objects. Each with its exact verdict and,
+// at its nearest doubles, the exact verdict and measure: the distance (the least over the part
+// pairs) when separated, 0 when touching, kind "overlapping" with no value when they overlap (a
+// penetration depth of objects made of parts is not defined here).
+GoldenAnswers golden_answers_parts(const CompoundRegion& r, CompoundJudge& judge, Json region);
 
 }  // namespace scalecert::internal

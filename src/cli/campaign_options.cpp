@@ -9,6 +9,7 @@ namespace scalecert::cli {
 
 void add_golden_options(CLI::App* sub, internal::CampaignArgs& a) {
     a.golden = true;
+    a.opt.allow_parts = true;  // scenes of objects made of parts: golden data at their region's boundary
     sub->add_option(
         "SCENES", a.scenes,
         "your own scene files: golden data for each (NAME.golden.json and .csv, NAME its file name without .json)");

@@ -3,6 +3,7 @@
 #include "common.hpp"
 
 #include "certify/certificate.hpp"
+#include "certify/region_certificate.hpp"
 #include "io/files.hpp"
 
 #include <iostream>
@@ -28,6 +29,9 @@ Command add_golden(CLI::App& app) {
     sub->add_option("--i2", pair->interval[1], "I2 as LO,HI");
     sub->add_option("--seed1", pair->seed[0], "P1's seed as X,Y,Z (default: the mean of its vertices)");
     sub->add_option("--seed2", pair->seed[1], "P2's seed as X,Y,Z");
+    sub->add_flag("--parts-from-groups", a->opt.parts_from_groups,
+                  "read each OBJ mesh (--p1, --p2, or one a scene names) as an object made of convex parts, a part "
+                  "per 'o' or 'g' group");
     example(sub,
             "Examples:\n  scalecert golden --family nearly-equal-slopes --count 10 --eps 1/1024 --dir golden/\n"
             "  scalecert golden certificates/scenes/tetra_box_switch.json --dir golden/\n"
@@ -50,7 +54,8 @@ Command add_golden(CLI::App& app) {
                     // Written as golden writes a scene's copy (NAME.scene.json, the same bytes): three files.
                     const std::string path =
                         a->dir + "/" + stem(pair->mesh[0]) + "-" + stem(pair->mesh[1]) + ".scene.json";
-                    mesh_scene.emplace(path, dump(scene_json(sc)));
+                    const bool parts = !sc.P[0].parts.empty() || !sc.P[1].parts.empty();
+                    mesh_scene.emplace(path, dump(parts ? compound_scene_json(sc) : scene_json(sc)));
                     a->scenes.push_back(path);
                 }
                 validate(*a);  // an unknown family is refused before anything is created

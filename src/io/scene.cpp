@@ -133,8 +133,8 @@ ExactScene parse_scene_text(const std::string& text, const std::string& name, co
             if (!opt.allow_parts)
                 r.fail(where,
                        "an object made of parts is read by `scalecert region`, `query`, `partition`, `classify`, "
-                       "`certify-fp` and `audit`; "
-                       "`curve`, `golden` and `grid` are for two convex objects (`scalecert region` gives where "
+                       "`certify-fp`, `golden` and `audit`; "
+                       "`curve` and `grid` are for two convex objects (`scalecert region` gives where "
                        "objects made of parts meet)");
             if (parts->kind != JNode::Array || parts->items.empty()) r.fail(where, "expected a nonempty list of parts");
             if (parts->items.size() > kMaxParts)
@@ -160,7 +160,7 @@ ExactScene parse_scene_text(const std::string& text, const std::string& name, co
                 if (g->kind != JNode::Bool) r.fail(w, "expected true or false");
                 if (!opt.allow_parts)
                     r.fail(w,
-                           "not read by `curve`, `golden` and `grid`, which are for two convex objects (drop the key: "
+                           "not read by `curve` and `grid`, which are for two convex objects (drop the key: "
                            "the mesh is then read as one convex object)");
                 groups = g->text == "true";
                 if (groups && !p->find("mesh")) r.fail(w, "parts from groups need an OBJ \"mesh\"");

@@ -63,6 +63,11 @@ Point canonical(Point p) {
     return p;
 }
 
+Q canonical_q(Q q) {
+    q.canonicalize();
+    return q;
+}
+
 // Object i's seed (when given) and range, in lowest terms.
 void seed_and_range(internal::ExactScene& sc, int i, const std::optional<Point>& seed, const Interval& range) {
     if (seed) {
@@ -99,6 +104,7 @@ struct Scene::Data {
     std::shared_ptr<const internal::CompactScene> compact;
     std::once_flag once;
     std::shared_ptr<const HullModel> model;
+    bool convex() const { return sc.P[0].parts.empty() && sc.P[1].parts.empty(); }
     const std::shared_ptr<const HullModel>& hull() {
         std::call_once(once, [this] { model = std::make_shared<const HullModel>(build_model(sc, name)); });
         return model;
@@ -109,6 +115,7 @@ std::shared_ptr<Scene::Data> SceneAccess::validated(internal::ExactScene sc, con
     auto d = std::make_shared<Scene::Data>();
     d->sc = std::move(sc);
     d->name = name;
+    if (!d->convex()) return d;  // its parts' hulls are built where they are needed
     if (internal::walk_by_default(d->sc.P[0].points.size(), d->sc.P[1].points.size()))
         if (auto cs = internal::compact_scene(d->sc))
             d->compact = std::make_shared<const internal::CompactScene>(std::move(*cs));
@@ -116,33 +123,111 @@ std::shared_ptr<Scene::Data> SceneAccess::validated(internal::ExactScene sc, con
     return d;
 }
 
-std::shared_ptr<const HullModel> SceneAccess::hull_model(const Scene& s) { return s.d_->hull(); }
-
-Scene Scene::load(const std::string& path) { return Scene(SceneAccess::validated(load_scene(path), path)); }
-
-Scene Scene::from_meshes(const std::string& p1_path, const std::string& p2_path, Interval i1, Interval i2) {
-    return Scene(read_mesh(p1_path), read_mesh(p2_path), std::move(i1), std::move(i2));
+Scene Scene::from_parts(std::vector<std::vector<Point>> parts1, std::vector<std::vector<Point>> parts2, Interval i1,
+                        Interval i2, std::optional<Point> seed1, std::optional<Point> seed2) {
+    internal::ExactScene sc;
+    std::vector<std::vector<Point>>* parts[2] = {&parts1, &parts2};
+    const std::optional<Point>* seeds[2] = {&seed1, &seed2};
+    const Interval* ranges[2] = {&i1, &i2};
+    for (int i = 0; i < 2; ++i) {
+        const std::string name = i ? "P2" : "P1";
+        if (parts[i]->empty()) throw InputError("scene: " + name + ": expected a nonempty list of parts");
+        if (parts[i]->size() > internal::kMaxParts)
+            throw InputError("scene: " + name + ": more than " + std::to_string(internal::kMaxParts) +
+                             " parts (the limit)");
+        for (std::vector<Point>& part : *parts[i]) {
+            for (Point& v : part) v = canonical(std::move(v));
+            if (sc.P[i].points.size() + part.size() > internal::kMaxPoints)
+                throw InputError("scene: " + name + ": more than " + std::to_string(internal::kMaxPoints) +
+                                 " points in all its parts (the limit)");
+            sc.P[i].points.insert(sc.P[i].points.end(), part.begin(), part.end());
+            sc.P[i].parts.push_back(std::move(part));
+        }
+        seed_and_range(sc, i, *seeds[i], *ranges[i]);
+    }
+    finish_scene(sc, "scene");
+    return Scene(SceneAccess::validated(std::move(sc), "scene"));
 }
 
+Scene Scene::load(const std::string& path) {
+    internal::ReadOptions opt;
+    opt.allow_parts = true;
+    return Scene(SceneAccess::validated(load_scene(path, opt), path));
+}
+
+Scene Scene::from_meshes(const std::string& p1_path, const std::string& p2_path, Interval i1, Interval i2,
+                         bool parts_from_groups) {
+    if (!parts_from_groups) return Scene(read_mesh(p1_path), read_mesh(p2_path), std::move(i1), std::move(i2));
+    internal::ReadOptions opt;
+    opt.allow_parts = true;
+    opt.parts_from_groups = true;
+    internal::ExactScene sc;
+    const std::string* paths[2] = {&p1_path, &p2_path};
+    const Interval* ranges[2] = {&i1, &i2};
+    for (int i = 0; i < 2; ++i) {
+        read_mesh_object(*paths[i], opt, sc.P[i]);
+        seed_and_range(sc, i, std::nullopt, *ranges[i]);
+    }
+    const std::string name = p1_path + " and " + p2_path;
+    finish_scene(sc, name);
+    return Scene(SceneAccess::validated(std::move(sc), name));
+}
+
+bool Scene::convex() const { return d_->convex(); }
+size_t Scene::part_count(int i) const { return d_->convex() ? 1 : std::max<size_t>(1, d_->sc.P[i & 1].parts.size()); }
+const std::vector<Point>& Scene::part(int i, size_t k) const {
+    const internal::PolyInput& P = d_->sc.P[i & 1];
+    if (k >= part_count(i))
+        throw InputError("scene: P" + std::to_string((i & 1) + 1) + " has no part " + std::to_string(k) +
+                         " (its parts are numbered from 0)");
+    return P.parts.empty() ? P.points : P.parts[k];
+}
 const std::vector<Point>& Scene::points(int i) const { return d_->sc.P[i & 1].points; }
 const Point& Scene::seed(int i) const { return d_->sc.P[i & 1].seed; }
 Interval Scene::range(int i) const { return {d_->sc.lo[i & 1], d_->sc.hi[i & 1]}; }
-std::string Scene::json() const { return dump(scene_json(d_->sc)); }
+std::string Scene::json() const {
+    return dump(d_->convex() ? scene_json(d_->sc) : internal::compound_scene_json(d_->sc));
+}
 
 struct Analysis::Impl {
     Scene scene;
     // Calls on one Analysis from several threads at once are not supported (scalecert.hpp), so
-    // the session may build its models lazily behind the const interface.
-    mutable internal::Session session;
-    explicit Impl(const Scene& s) : scene(s), session(s.d_->compact, s.d_->name) {
-        session.set_hull_source([d = s.d_] { return d->hull(); });
+    // the sessions build their models lazily behind the const interface. A convex scene has its
+    // Session (and a CompoundSession too once its region is asked for); a scene of parts has its
+    // CompoundSession only.
+    mutable std::optional<internal::Session> session;
+    mutable std::unique_ptr<internal::CompoundSession> compound;
+    explicit Impl(const Scene& s) : scene(s) {
+        if (!s.d_->convex()) {
+            compound = std::make_unique<internal::CompoundSession>(s.d_->sc, s.d_->name);
+            return;
+        }
+        session.emplace(s.d_->compact, s.d_->name);
+        session->set_hull_source([d = s.d_] { return d->hull(); });
+    }
+    bool convex() const { return session.has_value(); }
+    internal::CompoundSession& region() const {
+        if (!compound) compound = std::make_unique<internal::CompoundSession>(scene.d_->sc, scene.d_->name);
+        return *compound;
+    }
+    // What is defined for two convex objects only, refused on parts with what answers instead.
+    internal::Session& convex_only(const char* what) const {
+        if (!session)
+            throw InputError(std::string(what) +
+                             " is defined for two convex objects; on objects made of parts, region_json() gives where "
+                             "they meet (its labelled boundary, switch points and growth set)");
+        return *session;
     }
 };
 
 Analysis::Analysis(const Scene& scene) {
     auto impl = std::make_shared<Impl>(scene);
-    const internal::TouchingCurve& c = impl->session.curve();
-    const Model& m = impl->session.curve_model();
+    if (!impl->convex()) {
+        impl_ = std::move(impl);
+        return;
+    }
+    const internal::TouchingCurve& c = impl->session->curve();
+    const Model& m = impl->session->curve_model();
     for (const CurvePiece& p : c.pieces) {
         const ContactLine& L = m.lines[c.env.pieces[p.env].line];
         std::optional<Contact> k;
@@ -162,11 +247,26 @@ static void check_rho(const Rational& r, const char* what) {
     if (sgn(r) <= 0) throw InputError(std::string(what) + ": a scaling factor must be > 0");
 }
 
+bool Analysis::convex() const { return impl_->convex(); }
+
+const Curve& Analysis::curve() const {
+    impl_->convex_only("curve");
+    return curve_;
+}
+
+Verdict Analysis::verdict(const Rational& rho1, const Rational& rho2) const {
+    check_rho(rho1, "rho1");
+    check_rho(rho2, "rho2");
+    if (!impl_->convex()) return impl_->compound->judge().verdict(canonical_q(rho1), canonical_q(rho2)).verdict;
+    return impl_->session->verdict(canonical_q(rho1), canonical_q(rho2));
+}
+
 QueryResult Analysis::query(const Rational& rho1, const Rational& rho2) const {
     check_rho(rho1, "rho1");
     check_rho(rho2, "rho2");
+    if (!impl_->convex()) return {verdict(rho1, rho2), std::nullopt, std::nullopt};
     // The walk where it proves the curve at ρ1 (as query_json and the command), else the hull model.
-    const internal::Session::Certified c = impl_->session.certified_query(rho1, rho2);
+    const internal::Session::Certified c = impl_->session->certified_query(rho1, rho2);
     const Model& m = c.model;
     const internal::QueryAnswer& r = c.result;
     QueryResult out{r.verdict, std::nullopt, std::nullopt};
@@ -185,7 +285,8 @@ std::vector<Verdict> Analysis::classify(const std::vector<double>& rho1, const s
             throw InputError("classify: pair " + std::to_string(i) +
                              " (numbered from 0): two finite numbers > 0 are required");
     if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
-    const internal::Session::Decider d = impl_->session.decider_for(rho1);
+    if (!impl_->convex()) return impl_->compound->classify(rho1, rho2, threads);
+    const internal::Session::Decider d = impl_->session->decider_for(rho1);
     FastCurve f(d.model, d.curve);
     std::vector<Verdict> out;
     classify_batch(f, rho1, rho2, out, threads);
@@ -198,8 +299,9 @@ PlaneCheck Analysis::check_plane(const Rational& rho1, const Rational& rho2, con
     check_rho(rho2, "rho2");
     const Point n = canonical(normal);
     if (sgn(n[0]) == 0 && sgn(n[1]) == 0 && sgn(n[2]) == 0) throw InputError("check_plane: the normal is zero");
-    const auto [c1, c2] =
-        internal::plane_extents(impl_->session.points(), n, rho1, rho2);  // support queries: no hull model
+    // Support queries over the points: no hull model (on parts, over every part's points).
+    const auto [c1, c2] = impl_->convex() ? internal::plane_extents(impl_->session->points(), n, rho1, rho2)
+                                          : impl_->compound->judge().plane_extents(n, rho1, rho2);
     PlaneCheck r;
     r.c1 = c1;
     r.c2 = c2;
@@ -208,30 +310,47 @@ PlaneCheck Analysis::check_plane(const Rational& rho1, const Rational& rho2, con
 }
 
 std::string Analysis::curve_json() const {
-    return dump(internal::curve_json(impl_->session.curve_model(), impl_->session.curve()));
+    internal::Session& s = impl_->convex_only("curve_json");
+    return dump(internal::curve_json(s.curve_model(), s.curve()));
 }
 
 std::string Analysis::query_json(const Rational& rho1, const Rational& rho2) const {
     check_rho(rho1, "rho1");
     check_rho(rho2, "rho2");
-    return impl_->session.query_text(rho1, rho2);
+    if (impl_->convex()) return impl_->session->query_text(rho1, rho2);
+    // As scalecert query --json on parts: the compound judgements certificate of the verdict.
+    const Q r1 = canonical_q(rho1), r2 = canonical_q(rho2);
+    internal::CompoundJudge& judge = impl_->compound->judge();
+    const Json claims{{"format", "scalecert-claims-1"},
+                      {"claims", Json::array({Json{{"kind", "verdict"},
+                                                   {"rho1", to_exact_string(r1)},
+                                                   {"rho2", to_exact_string(r2)},
+                                                   {"verdict", verdict_name(judge.verdict(r1, r2).verdict)}}})}};
+    long wrong = 0;
+    std::string text;
+    internal::certify_fp(judge, dump(claims), impl_->scene.d_->name, ClaimOptions{false, Q(0), true}, &wrong, nullptr,
+                         &text);
+    return text;
 }
 
-std::string Analysis::partition_json() const { return impl_->session.partition_text(); }
+std::string Analysis::partition_json() const {
+    return impl_->convex() ? impl_->session->partition_text() : dump(impl_->compound->partition_json());
+}
+
+std::string Analysis::region_json() const { return dump(impl_->region().region_json()); }
 
 ClaimReport Analysis::certify_fp(const std::string& claims, const ClaimOptions& options) const {
     long wrong = 0, count = 0;
     std::string certificate;
-    std::string report = internal::certify_fp(impl_->session.claim_models(), claims, "claims", options, &wrong, &count,
-                                              options.certificate ? &certificate : nullptr);
+    std::string* cert = options.certificate ? &certificate : nullptr;
+    std::string report =
+        impl_->convex()
+            ? internal::certify_fp(impl_->session->claim_models(), claims, "claims", options, &wrong, &count, cert)
+            : internal::certify_fp(impl_->compound->judge(), claims, "claims", options, &wrong, &count, cert);
     return {std::move(report), count, wrong, std::move(certificate)};
 }
 
 namespace {
-Q canonical_q(Q q) {
-    q.canonicalize();
-    return q;
-}
 // A public claim, typed for the rules (claim.hpp), its faults refused with one line naming it.
 internal::TypedClaim typed_claim(const Claim& c, size_t i, bool parts) {
     using internal::ClaimType;
@@ -331,7 +450,14 @@ void check_tolerance(const ClaimOptions& options) {
 
 Judgements Analysis::certify(const std::vector<Claim>& claims, const ClaimOptions& options) const {
     check_tolerance(options);
-    const internal::ClaimModels models = impl_->session.claim_models();
+    if (!impl_->convex()) {
+        internal::CompoundJudge& judge = impl_->compound->judge();
+        internal::PartsRules rules(judge, options.tolerance);
+        return judge_all(rules, claims, options, true, [&](Json entries) {
+            return internal::compound_judgements_text(judge.scene(), options.tolerance, std::move(entries));
+        });
+    }
+    const internal::ClaimModels models = impl_->session->claim_models();
     internal::ConvexRules rules(models, options.tolerance);
     return judge_all(rules, claims, options, false, [&](Json entries) {
         return internal::judgements_text(models.document(), options.tolerance, std::move(entries));
@@ -339,92 +465,16 @@ Judgements Analysis::certify(const std::vector<Claim>& claims, const ClaimOption
 }
 
 GoldenData Analysis::golden() const {
-    internal::GoldenAnswers g =
-        internal::golden_answers(impl_->scene.d_->sc, impl_->session.hull(), impl_->session.hull_curve());
+    if (!impl_->convex()) {  // the region document, with queries where the meeting set ends
+        internal::CompoundSession& cs = *impl_->compound;
+        internal::GoldenAnswers g = internal::golden_answers_parts(cs.region(true), cs.judge(), cs.region_json());
+        g.curve["queries"] = std::move(g.queries);
+        return {dump(g.curve), std::move(g.csv)};
+    }
+    internal::Session& s = impl_->convex_only("golden");
+    internal::GoldenAnswers g = internal::golden_answers(impl_->scene.d_->sc, s.hull(), s.hull_curve());
     g.curve["queries"] = std::move(g.queries);
     return {dump(g.curve), std::move(g.csv)};
-}
-
-struct Region::Impl {
-    internal::CompoundSession session;
-};
-
-Region::Region(std::vector<std::vector<Point>> parts1, std::vector<std::vector<Point>> parts2, Interval i1, Interval i2,
-               std::optional<Point> seed1, std::optional<Point> seed2) {
-    internal::ExactScene sc;
-    std::vector<std::vector<Point>>* parts[2] = {&parts1, &parts2};
-    const std::optional<Point>* seeds[2] = {&seed1, &seed2};
-    const Interval* ranges[2] = {&i1, &i2};
-    for (int i = 0; i < 2; ++i) {
-        const std::string name = i ? "P2" : "P1";
-        if (parts[i]->empty()) throw InputError("region: " + name + ": expected a nonempty list of parts");
-        if (parts[i]->size() > internal::kMaxParts)
-            throw InputError("region: " + name + ": more than " + std::to_string(internal::kMaxParts) +
-                             " parts (the limit)");
-        for (std::vector<Point>& part : *parts[i]) {
-            for (Point& v : part) v = canonical(std::move(v));
-            if (sc.P[i].points.size() + part.size() > internal::kMaxPoints)
-                throw InputError("region: " + name + ": more than " + std::to_string(internal::kMaxPoints) +
-                                 " points in all its parts (the limit)");
-            sc.P[i].points.insert(sc.P[i].points.end(), part.begin(), part.end());
-            sc.P[i].parts.push_back(std::move(part));
-        }
-        seed_and_range(sc, i, *seeds[i], *ranges[i]);
-    }
-    finish_scene(sc, "region");
-    impl_ = std::make_shared<Impl>(Impl{internal::CompoundSession(std::move(sc), "region")});
-}
-
-Region Region::load(const std::string& path) {
-    internal::ReadOptions opt;
-    opt.allow_parts = true;
-    return Region(std::make_shared<Impl>(Impl{internal::CompoundSession(load_scene(path, opt), path)}));
-}
-
-Region Region::from_meshes(const std::string& p1_path, const std::string& p2_path, Interval i1, Interval i2,
-                           bool parts_from_groups) {
-    internal::ReadOptions opt;
-    opt.allow_parts = true;
-    opt.parts_from_groups = parts_from_groups;
-    internal::ExactScene sc;
-    const std::string* paths[2] = {&p1_path, &p2_path};
-    const Interval* ranges[2] = {&i1, &i2};
-    for (int i = 0; i < 2; ++i) {
-        read_mesh_object(*paths[i], opt, sc.P[i]);
-        seed_and_range(sc, i, std::nullopt, *ranges[i]);
-    }
-    finish_scene(sc, "region");
-    return Region(std::make_shared<Impl>(Impl{internal::CompoundSession(std::move(sc), p1_path + " and " + p2_path)}));
-}
-
-Verdict Region::verdict(const Rational& rho1, const Rational& rho2) const {
-    return impl_->session.verdict(rho1, rho2).verdict;
-}
-
-std::vector<Verdict> Region::classify(const std::vector<double>& rho1, const std::vector<double>& rho2,
-                                      unsigned threads) const {
-    if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
-    return impl_->session.classify(rho1, rho2, threads);
-}
-
-std::string Region::region_json() const { return dump(impl_->session.region_json()); }
-std::string Region::partition_json() const { return dump(impl_->session.partition_json()); }
-
-ClaimReport Region::certify_fp(const std::string& claims, const ClaimOptions& options) const {
-    long wrong = 0, count = 0;
-    std::string certificate;
-    std::string report = internal::certify_fp(impl_->session.judge(), claims, "claims", options, &wrong, &count,
-                                              options.certificate ? &certificate : nullptr);
-    return {std::move(report), count, wrong, std::move(certificate)};
-}
-
-Judgements Region::certify(const std::vector<Claim>& claims, const ClaimOptions& options) const {
-    check_tolerance(options);
-    internal::CompoundJudge& judge = impl_->session.judge();
-    internal::PartsRules rules(judge, options.tolerance);
-    return judge_all(rules, claims, options, true, [&](Json entries) {
-        return internal::compound_judgements_text(judge.scene(), options.tolerance, std::move(entries));
-    });
 }
 
 }  // namespace scalecert

@@ -1,5 +1,5 @@
-// The library's own access to a public Scene (the Python module's claim certification): not part
-// of the API, so the public header names none of it.
+// The library's own access to a public Scene (api.cpp's constructors): not part of the API, so
+// the public header names none of it.
 #pragma once
 #include <scalecert/scalecert.hpp>
 
@@ -11,12 +11,10 @@
 namespace scalecert {
 
 struct SceneAccess {
-    // Validates a scene as read: rank and seeds proved from a few extreme points on large scenes
-    // (scan.hpp), else by the hull model, built now (its errors are the scene's).
+    // Validates a scene as read. Two convex objects: rank and seeds proved from a few extreme
+    // points on large scenes (scan.hpp), else by the hull model, built now (its errors are the
+    // scene's). Objects made of parts: each part's hull is built where it is first needed.
     static std::shared_ptr<Scene::Data> validated(internal::ExactScene sc, const std::string& name);
-    static Scene make(std::shared_ptr<Scene::Data> d) { return Scene(std::move(d)); }
-    // The hull model (polyhedra, every contact line), built on first use and shared.
-    static std::shared_ptr<const internal::HullModel> hull_model(const Scene& s);
 };
 
 }  // namespace scalecert
