@@ -9,6 +9,19 @@
 
 namespace scalecert::internal {
 
+namespace {
+// The pair on the boundary at ρ2 = f, and the ρ2 above and below it at relative distances 2^-k.
+std::vector<std::pair<std::string, Q>> around(const Q& f) {
+    std::vector<std::pair<std::string, Q>> pts{{"on", f}};
+    for (int k : {4, 12, 20, 30, 40, 52}) {
+        const Q d = f / Q(Z(1) << k);
+        pts.push_back({"above 2^-" + std::to_string(k), f + d});
+        pts.push_back({"below 2^-" + std::to_string(k), f - d});
+    }
+    return pts;
+}
+}  // namespace
+
 GoldenAnswers golden_answers(const ExactScene& s, const HullModel& m, const TouchingCurve& c) {
     Json qs = Json::array();
     std::string csv = "rho1,rho2,where,verdict_at_doubles,measure,value\n";
@@ -19,13 +32,7 @@ GoldenAnswers golden_answers(const ExactScene& s, const HullModel& m, const Touc
         x.canonicalize();
         Q f = c.env.value(m.lines, x);
         if (sgn(f) <= 0) continue;
-        std::vector<std::pair<std::string, Q>> pts{{"on", f}};
-        for (int k : {4, 12, 20, 30, 40, 52}) {
-            Q d = f / Q(Z(1) << k);
-            pts.push_back({"above 2^-" + std::to_string(k), f + d});
-            pts.push_back({"below 2^-" + std::to_string(k), f - d});
-        }
-        for (const auto& [where, y] : pts) {
+        for (const auto& [where, y] : around(f)) {
             Verdict v = query(m, c, x, y, false).verdict;
             Json o;
             put_exact(o, "rho1", x);
@@ -105,13 +112,7 @@ GoldenAnswers golden_answers_parts(const CompoundRegion& r, CompoundJudge& judge
                 if (s.lo[1] < y && y < s.hi[1] && (ends.empty() || ends.back() != y)) ends.push_back(y);
         }
         for (const Q& f : ends) {
-            std::vector<std::pair<std::string, Q>> pts{{"on", f}};
-            for (int k : {4, 12, 20, 30, 40, 52}) {
-                Q d = f / Q(Z(1) << k);
-                pts.push_back({"above 2^-" + std::to_string(k), f + d});
-                pts.push_back({"below 2^-" + std::to_string(k), f - d});
-            }
-            for (const auto& [where, y] : pts) {
+            for (const auto& [where, y] : around(f)) {
                 Json o;
                 put_exact(o, "rho1", x);
                 put_exact(o, "rho2", y);
