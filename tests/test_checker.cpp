@@ -559,8 +559,8 @@ BOOST_AUTO_TEST_CASE(fresh_certificates_for_random_scenes_are_valid) {
 }
 
 BOOST_AUTO_TEST_CASE(help_and_version_exit_0) {
-    // --help used to be read as a file name ("cannot open", exit 2). --version prints the version
-    // of CMakeLists.txt's project(scalecert VERSION ...).
+    // --help is an option, not a file name (exit 0). --version prints the version of
+    // CMakeLists.txt's project(scalecert VERSION ...).
     BOOST_TEST(status_of(std::string(SCALECERT_CHECK_BIN) + " --help") == 0);
     std::ifstream cm(std::string(SCALECERT_SOURCE_DIR) + "/CMakeLists.txt");
     const std::string cml((std::istreambuf_iterator<char>(cm)), std::istreambuf_iterator<char>());
@@ -591,7 +591,7 @@ BOOST_AUTO_TEST_CASE(unreadable_files_exit_2) {
 #define SCALECERT_HAS_ASAN 0
 #endif
 
-// ---- forgeries reported by the adversarial review (issue 14), each written by hand ------------
+// ---- forgeries, each written by hand --------------------------------------------------------
 namespace {
 OJ bundled(const std::string& name) {
     return load(fs::path(SCALECERT_SOURCE_DIR) / "certificates" / (name + ".partition.json"));
@@ -704,7 +704,7 @@ BOOST_AUTO_TEST_CASE(piece_contacts_where_normals_share_a_line_are_proved_minima
 }
 
 BOOST_AUTO_TEST_CASE(pieces_below_I2_are_proved_down_to_rho2_zero) {
-    // The hostile review's forgery. The tetrahedron-and-box scene with P1 and P2 swapped (tests/
+    // A forged curve below I2. The tetrahedron-and-box scene with P1 and P2 swapped (tests/
     // data/tetra_on_box_curve_below_I2.json), I1 = [1/2, 10], I2 = [3/2, 4]. Swapping ρ1 and ρ2 in
     // test_hand_curves' derivation: (V,F) becomes (F,V) ρ2 = 9/5 − 2ρ1/5 for ρ1 ≥ 2, (E,E) becomes
     // ρ2 = (18 − 7ρ1)/4 on [18/13, 2], switching at (2, 1) — below lo2, where no overlap witness
@@ -746,8 +746,8 @@ BOOST_AUTO_TEST_CASE(pieces_below_I2_are_proved_down_to_rho2_zero) {
 }
 
 BOOST_AUTO_TEST_CASE(a_curve_below_zero_at_lo1_is_anchored_by_a_witness) {
-    // The second hostile review: with the curve <= 0 at lo1, nothing pinned the pieces, so any
-    // normal's line could be claimed there. Cubes [-1,1]^3 and [1,3]×[-1,1]^2 (seeds at their
+    // A curve <= 0 at lo1: the pieces must still be pinned, or any normal's line could be claimed
+    // there. Cubes [-1,1]^3 and [1,3]×[-1,1]^2 (seeds at their
     // centres, d = (2,0,0)) touch on x = 1 + ρ1 = 3 − ρ2: the curve is ρ2 = 2 − ρ1, at or below 0
     // on I1 = [3, 4]. The witness at (3, 0) is P2's seed (2,0,0), inside P1(3) = [−3,3]^3.
     OJ j = fresh_partition("cubes_side_by_side_curve_below_zero.json");
@@ -897,8 +897,8 @@ BOOST_AUTO_TEST_CASE(where_the_envelope_turns_at_zero_the_piece_reaching_it_goes
     // at the centres, d = (3,3,0)). n = (1,0,0): h1 = h2 = 1, n·d = 3, ρ2 = 3 − ρ1; n = (0,1,0):
     // h1 = 1, h2 = 2, n·d = 3, ρ2 = (3 − ρ1)/2. Both reach 0 at ρ1 = 3, where the envelope turns.
     // The curve is the piece reaching 0, 3 − ρ1 (pinned by its contact and zero witnesses), on all
-    // of I1 = [1, 6]; the next line would be pinned by nothing (the second hostile review's
-    // forgery swapped it for (1,1,0)'s), so a switch at ρ2 = 0 is refused.
+    // of I1 = [1, 6]; the next line would be pinned by nothing (a forgery could swap it for
+    // (1,1,0)'s), so a switch at ρ2 = 0 is refused.
     OJ j = fresh_partition("boxes_curve_turns_at_zero.json");
     BOOST_TEST_REQUIRE(j["pieces"].size() == 1u);
     BOOST_TEST(j["pieces"][0]["intercept"] == "3");
@@ -927,9 +927,9 @@ BOOST_AUTO_TEST_CASE(where_the_envelope_turns_at_zero_the_piece_reaching_it_goes
 }
 
 BOOST_AUTO_TEST_CASE(a_single_rho1_at_a_switch_point_is_refused_by_partition) {
-    // The second hostile review: I1 = [18/13, 18/13], the switch point of the tetrahedron-on-box
-    // scene (tests/data/tetra_on_box_curve_below_I2.json, derived there): a piece of no length has
-    // no contact of its own, and the engine stopped with an internal error (exit 3). Now exit 2.
+    // I1 = [18/13, 18/13], the switch point of the tetrahedron-on-box scene
+    // (tests/data/tetra_on_box_curve_below_I2.json, derived there): a piece of no length has no
+    // contact of its own; the engine refuses the range (exit 2), it does not stop with exit 3.
     OJ sc = load(fs::path(SCALECERT_SOURCE_DIR) / "tests/data/tetra_on_box_curve_below_I2.json");
     sc["I1"] = OJ::array({"18/13", "18/13"});
     const fs::path p = tmpdir() / "single_rho1_at_switch.json";
@@ -945,9 +945,9 @@ BOOST_AUTO_TEST_CASE(a_single_rho1_at_a_switch_point_is_refused_by_partition) {
 }
 
 BOOST_AUTO_TEST_CASE(weights_over_coprime_denominators_meet_the_work_limit) {
-    // The second hostile review: 7,031 weights 1/(10^99 + j + 1) made each addition pay for the
-    // whole running denominator: 13 s on 885 KB under the work limit. The additions are counted
-    // now: such a list is refused at the work limit, exit 2.
+    // 7,031 weights 1/(10^99 + j + 1): each addition pays for the whole running denominator (13 s
+    // on 885 KB if uncounted). The additions are counted: such a list is refused at the work
+    // limit, exit 2.
     OJ j = bundled("stacked_cubes");
     OJ& vs = j["scene"]["P1"]["vertices"];
     const OJ first = vs[0];
@@ -967,7 +967,7 @@ BOOST_AUTO_TEST_CASE(same_line_normals_are_few_and_each_shrinks_the_features) {
     // Cubes sharing an edge: (1,0,0) and (0,1,0) give the line; (1,1,0) and (2,1,0), in their
     // normal cone, give it too, but add nothing once the edge is reached. Listing the same normal
     // again, or the piece's own normal, or five, made the checker scan every vertex for each
-    // (the hostile review: 30,000 repeats of one normal in an 845 KB file took 496 s).
+    // (30,000 repeats of one normal in an 845 KB file would take 496 s).
     OJ j = fresh_partition("cubes_sharing_an_edge.json");
     const OJ other = j["pieces"][0]["same_line_normals"][0];
     OJ twice = j;
@@ -1054,12 +1054,12 @@ BOOST_AUTO_TEST_CASE(hostile_files_exit_2_without_crashing) {
         BOOST_TEST(verdict_of(text) == 2, what);
     }
     BOOST_TEST(check_file(tmpdir()) == 2);
-    // The tenth hostile review: nlohmann's reader stops at a NUL byte, so anything after one went
-    // unread (a valid certificate, then NUL and garbage, was valid); and a byte-order mark.
+    // nlohmann's reader stops at a NUL byte: what follows one must still be read (a valid
+    // certificate, then NUL and garbage, is malformed); and a byte-order mark is refused.
     BOOST_TEST(verdict_of(t + std::string(1, '\0') + "{\"not\": json") == 2);
     BOOST_TEST(verdict_of("\xEF\xBB\xBF" + t) == 2);
     BOOST_TEST(verdict_of(t) == 0);
-    // An index written -0 has a sign: refused (the same review).
+    // An index written -0 has a sign: refused.
     std::string neg = t;
     const size_t at = neg.find("\"piece\": ");
     BOOST_TEST_REQUIRE(at != std::string::npos);
@@ -1068,9 +1068,9 @@ BOOST_AUTO_TEST_CASE(hostile_files_exit_2_without_crashing) {
 }
 
 BOOST_AUTO_TEST_CASE(numbers_every_judgement_uses_are_counted_at_each_use) {
-    // The tenth hostile review: a tolerance of 10^6 digits with 1,000 distance judgements (1.2 MB)
-    // took 29 s, and seeds of 2·10^5 digits with plane judgements 19 ms each: the arithmetic on a
-    // number stored once was not counted per use. Both refused at the work limit now, at once.
+    // A tolerance of 10^6 digits with 1,000 distance judgements (1.2 MB), and seeds of 2·10^5
+    // digits with plane judgements: the arithmetic on a number stored once is counted per use
+    // (uncounted, 29 s and 19 ms a judgement). Both are refused at the work limit, at once.
     const fs::path claims = tmpdir() / "one_distance.json", cert = tmpdir() / "one_distance.cert.json";
     std::ofstream(claims)
         << R"({"format": "scalecert-claims-1", "claims": [{"kind": "distance", "rho1": 1, "rho2": "1/2", )"
@@ -1449,7 +1449,7 @@ BOOST_AUTO_TEST_CASE(the_work_limit_and_the_denominator_limit_refuse_with_exit_2
     BOOST_TEST(verdict_of(fits) == 0);  // a point inside the cube: every claim still holds
 }
 
-// ---- compound partitions (issue 22) ------------------------------------------------------------
+// ---- compound partitions --------------------------------------------------------------------
 
 namespace {
 fs::path data(const std::string& name) { return fs::path(SCALECERT_SOURCE_DIR) / "tests" / "data" / name; }
@@ -1578,8 +1578,8 @@ BOOST_AUTO_TEST_CASE(a_switch_point_claim_is_right_when_any_exact_one_matches) {
     // The Fig. 5 scene's switch points (README): (23/19, 45/19) VE and (29/13, 18/13) EV. The
     // claim (7/4, 45/19, VE) is nearer in rho1 to the second (|7/4 − 29/13| = 11/52 against
     // |7/4 − 23/19| = 41/76), but matches the first within 0.45: |7/4 − 23/19|/(23/19) = 41/92 ≈
-    // 0.4457 and rho2 exactly. Right at tolerance 0.45 (the hostile review's case: it was judged
-    // against the nearest in rho1 alone), wrong at 0.44; and with contact EV wrong at 0.45 (the
+    // 0.4457 and rho2 exactly. Right at tolerance 0.45 (judged against the nearest in both
+    // coordinates, not in rho1 alone), wrong at 0.44; and with contact EV wrong at 0.45 (the
     // second's rho2 18/13 is off by 0.71).
     const std::string fig5 = std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/fig5_vf_ve_ee.json";
     const fs::path claims = tmpdir() / "switch_any.json", cert = tmpdir() / "switch_any.cert.json";
@@ -1607,8 +1607,8 @@ BOOST_AUTO_TEST_CASE(a_switch_point_claim_is_right_when_any_exact_one_matches) {
 }
 
 BOOST_AUTO_TEST_CASE(a_long_tolerance_is_shown_by_its_size) {
-    // The hostile review: the summary cut the tolerance to its first 40 characters, so 1.2e-9 and
-    // 1.2e52 written with the same leading digits looked alike. A verdict's judgement does not
+    // The summary writes the tolerance whole: cut to its first 40 characters, 1.2e-9 and 1.2e52
+    // written with the same leading digits would look alike. A verdict's judgement does not
     // depend on the tolerance, so both files are valid; their summaries must differ.
     const std::string cubes = std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/stacked_cubes.json";
     const fs::path claims = tmpdir() / "tol_claims.json", cert = tmpdir() / "tol.cert.json";
@@ -1630,11 +1630,11 @@ BOOST_AUTO_TEST_CASE(a_long_tolerance_is_shown_by_its_size) {
 }
 
 BOOST_AUTO_TEST_CASE(a_compound_fence_of_many_normals_over_huge_corners_meets_the_work_limit) {
-    // The second hostile review (helper-2): one pair apart in the rectangle, cut first by two
-    // normals with 16,000-bit entries (the polygon gets corners of twice that size), then by 40,000
-    // copies of (-1, 0, 0), whose half-plane holds everywhere, then emptied by (0, 1, 0). The
-    // certificate is true; checking it re-evaluated the huge corners 40,000 times, counted by the
-    // small first corner only: 97 s. Counted by the largest corner, it is refused at once (exit 2).
+    // One pair apart in the rectangle, cut first by two normals with 16,000-bit entries (the
+    // polygon gets corners of twice that size), then by 40,000 copies of (-1, 0, 0), whose
+    // half-plane holds everywhere, then emptied by (0, 1, 0). The certificate is true; checking it
+    // re-evaluates the huge corners 40,000 times (97 s if counted by the small first corner only).
+    // Counted by the largest corner, it is refused at once (exit 2).
     auto box = [](long x0, long x1, long y0, long y1, long z0, long z1, long dx, long dy, long dz, bool half) {
         std::string t = "[";
         for (long x : {x0, x1})
@@ -1666,7 +1666,7 @@ BOOST_AUTO_TEST_CASE(a_compound_fence_of_many_normals_over_huge_corners_meets_th
                30.0);  // not the 97 s it took
 }
 
-// ---- compound judgements (issue 22, item 6) -----------------------------------------------------
+// ---- compound judgements --------------------------------------------------------------------
 
 namespace {
 // certify-fp's certificate for claims on a scene of parts, checked valid.

@@ -318,8 +318,8 @@ BOOST_AUTO_TEST_CASE(outputs_go_only_to_regular_files_and_directories_we_can_mak
     BOOST_TEST(slurp(victim) == "untouched");
     // The temporary name is not predictable: a planted OUT.tmp.PID symlink is never followed
     // (the engine creates its temporary file exclusively, under a random name).
-    // The old writer used OUT.tmp.PID: symlinks planted for the next 400 process ids (the command
-    // runs as one of them) would have redirected its write into the victim.
+    // With OUT.tmp.PID as the name, symlinks planted for the next 400 process ids (the command
+    // runs as one of them) would redirect its write into the victim.
     fs::path out = workdir() / "fresh.json";
     fs::path victim2 = write("victim2.txt", "untouched");
     std::vector<fs::path> planted;

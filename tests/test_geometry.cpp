@@ -264,9 +264,9 @@ BOOST_AUTO_TEST_CASE(interior_weights_prove_interior_points) {
 // cross product of two point differences, kept when its face of the sum is two-dimensional), on
 // nearly parallel edges in integers beyond 2^29 (the GMP path, where the arc-side filter works
 // from double cross products): angles from 3e-5 down to 1e-11, across the range where the
-// filter once trusted a direction wrong by up to 8e-6 (predicates.hpp, bound 2). These scenes
-// pass with the old threshold too (their side values are far from 0); the bound itself is checked
-// by a static_assert.
+// filter would trust a direction wrong by up to 8e-6 with a looser bound (predicates.hpp, bound
+// 2). These scenes pass with such a bound too (their side values are far from 0); the bound itself
+// is checked by a static_assert.
 BOOST_AUTO_TEST_CASE(facet_normals_of_nearly_parallel_edges_by_brute_force) {
     using test::qc;
     auto brute = [](const ExactScene& sc) {

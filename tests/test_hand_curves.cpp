@@ -112,7 +112,7 @@ BOOST_AUTO_TEST_CASE(below_rho2_zero_the_curve_goes_on_as_one_line) {
     const ContactLine side = line_for_normal(hm, {Z(0), Z(1), Z(0)});
     BOOST_TEST(side.slope == Q(-1, 2));
     BOOST_TEST(side.intercept == Q(1, 2));
-    BOOST_TEST(side.at(Q(6)) > Q(-3));  // above 3 − ρ1 at hi1: the old curve switched to it
+    BOOST_TEST(side.at(Q(6)) > Q(-3));  // above 3 − ρ1 at hi1: a curve must not switch to it
     auto cs = compact_scene(sc);
     BOOST_TEST_REQUIRE(cs.has_value());
     const WalkResult walked = scan_model(std::make_shared<CompactScene>(std::move(*cs)));
