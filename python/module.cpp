@@ -643,8 +643,9 @@ PYBIND11_MODULE(scalecert, m) {
             "convex", [](const PyScene& s) { return s.scene.convex(); },
             "True for two convex objects; False when an object is made of parts")
         .def(
-            "part_count", [](const PyScene& s, int i) { return s.scene.part_count(i); }, py::arg("i"),
-            "the number of parts of object i (0: P1, 1: P2); 1 for a convex object")
+            "part_count",
+            [](const PyScene& s, const py::handle& i) { return s.scene.part_count(count_arg(i, "i", 0, 1)); },
+            py::arg("i"), "the number of parts of object i (0: P1, 1: P2); 1 for a convex object")
         .def("seeds",
              [](const PyScene& s) { return py::make_tuple(fractions(s.scene.seed(0)), fractions(s.scene.seed(1))); })
         .def(

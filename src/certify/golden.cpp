@@ -95,10 +95,14 @@ GoldenAnswers golden_answers_parts(const CompoundRegion& r, CompoundJudge& judge
     std::string csv = "rho1,rho2,where,verdict_at_doubles,measure,value\n";
     std::vector<Q> xs;
     for (int k = 1; k < 8; ++k) xs.push_back(s.lo[0] + (s.hi[0] - s.lo[0]) * Q(k, 8));
-    if (region.contains("switch_points"))
+    if (region.contains("switch_points") && region["switch_points"].is_array())
         for (const Json& sp : region["switch_points"]) xs.push_back(parse_exact(sp["rho1"].get<std::string>()));
-    for (Q x : xs) {
-        x.canonicalize();
+    for (Q& x : xs) x.canonicalize();
+    std::sort(xs.begin(), xs.end());
+    xs.erase(std::unique(xs.begin(), xs.end()), xs.end());
+    const double pairs = static_cast<double>(judge.parts(0)) * static_cast<double>(judge.parts(1));
+    double work = 0;
+    for (const Q& x : xs) {
         // The meeting set on this vertical: the pairs' intervals, merged; its ends inside I2.
         std::vector<std::pair<Q, Q>> spans;
         for (const CompoundRegion::Pair& p : r.pairs)
@@ -112,6 +116,12 @@ GoldenAnswers golden_answers_parts(const CompoundRegion& r, CompoundJudge& judge
                 if (s.lo[1] < y && y < s.hi[1] && (ends.empty() || ends.back() != y)) ends.push_back(y);
         }
         for (const Q& f : ends) {
+            work += 13 * 3 * pairs;  // two verdicts and a distance a query
+            if (work > kMaxGoldenPairWork)
+                throw InputError("golden: " + std::to_string(xs.size()) + " verticals on " +
+                                 std::to_string(judge.parts(0)) + " x " + std::to_string(judge.parts(1)) +
+                                 " parts pass the limit of golden data on objects made of parts (queries times part "
+                                 "pairs up to 10^6: docs/manual.md, \"Limits\")");
             for (const auto& [where, y] : around(f)) {
                 Json o;
                 put_exact(o, "rho1", x);

@@ -27,6 +27,9 @@ GoldenAnswers golden_answers(const ExactScene& s, const HullModel& m, const Touc
 // at its nearest doubles, the exact verdict and measure: the distance (the least over the part
 // pairs) when separated, 0 when touching, kind "overlapping" with no value when they overlap (a
 // penetration depth of objects made of parts is not defined here).
+// Each vertical once. The judgements cost about the scene's part pairs each, so their number times
+// the part pairs is bounded by kMaxGoldenPairWork (InputError before the first query past it).
+constexpr double kMaxGoldenPairWork = 1e6;
 GoldenAnswers golden_answers_parts(const CompoundRegion& r, CompoundJudge& judge, Json region);
 
 }  // namespace scalecert::internal

@@ -10,6 +10,9 @@ namespace scalecert::cli {
 void add_golden_options(CLI::App* sub, internal::CampaignArgs& a) {
     a.golden = true;
     a.opt.allow_parts = true;  // scenes of objects made of parts: golden data at their region's boundary
+    sub->add_flag("--parts-from-groups", a.opt.parts_from_groups,
+                  "read each OBJ mesh (--p1, --p2, or one a scene names) as an object made of convex parts, a part "
+                  "per 'o' or 'g' group");
     sub->add_option(
         "SCENES", a.scenes,
         "your own scene files: golden data for each (NAME.golden.json and .csv, NAME its file name without .json)");

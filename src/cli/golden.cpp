@@ -29,9 +29,6 @@ Command add_golden(CLI::App& app) {
     sub->add_option("--i2", pair->interval[1], "I2 as LO,HI");
     sub->add_option("--seed1", pair->seed[0], "P1's seed as X,Y,Z (default: the mean of its vertices)");
     sub->add_option("--seed2", pair->seed[1], "P2's seed as X,Y,Z");
-    sub->add_flag("--parts-from-groups", a->opt.parts_from_groups,
-                  "read each OBJ mesh (--p1, --p2, or one a scene names) as an object made of convex parts, a part "
-                  "per 'o' or 'g' group");
     example(sub,
             "Examples:\n  scalecert golden --family nearly-equal-slopes --count 10 --eps 1/1024 --dir golden/\n"
             "  scalecert golden certificates/scenes/tetra_box_switch.json --dir golden/\n"

@@ -174,11 +174,16 @@ Scene Scene::from_meshes(const std::string& p1_path, const std::string& p2_path,
 }
 
 bool Scene::convex() const { return d_->convex(); }
-size_t Scene::part_count(int i) const { return d_->convex() ? 1 : std::max<size_t>(1, d_->sc.P[i & 1].parts.size()); }
+size_t Scene::part_count(int i) const {
+    if (i != 0 && i != 1)
+        throw InputError("scene: object " + std::to_string(i) + ": the objects are 0 (P1) and 1 (P2)");
+    return std::max<size_t>(1, d_->sc.P[i].parts.size());
+}
 const std::vector<Point>& Scene::part(int i, size_t k) const {
-    const internal::PolyInput& P = d_->sc.P[i & 1];
-    if (k >= part_count(i))
-        throw InputError("scene: P" + std::to_string((i & 1) + 1) + " has no part " + std::to_string(k) +
+    const size_t n = part_count(i);  // i checked
+    const internal::PolyInput& P = d_->sc.P[i];
+    if (k >= n)
+        throw InputError("scene: P" + std::to_string(i + 1) + " has no part " + std::to_string(k) +
                          " (its parts are numbered from 0)");
     return P.parts.empty() ? P.points : P.parts[k];
 }
