@@ -247,7 +247,7 @@ std::string golden_stem(const std::string& path) {
 
 std::vector<std::pair<std::string, std::string>> golden_files(const std::string& stem, const ExactScene& s,
                                                               const std::function<void(Json&)>& fields) {
-    const bool parts = !s.P[0].parts.empty() || !s.P[1].parts.empty();
+    const bool parts = s.made_of_parts();
     GoldenAnswers a;
     if (parts) {  // objects made of parts: the region document and queries at its vertical ends
         CompoundSession session(s, stem);
@@ -261,7 +261,7 @@ std::vector<std::pair<std::string, std::string>> golden_files(const std::string&
     Json j = std::move(a.curve);
     fields(j);
     j["queries"] = std::move(a.queries);
-    return {{stem + ".scene.json", dump(parts ? compound_scene_json(s) : scene_json(s))},
+    return {{stem + ".scene.json", dump(scene_file_json(s))},
             {stem + ".golden.json", dump(j)},
             {stem + ".golden.csv", a.csv}};
 }

@@ -22,6 +22,8 @@ Json points_json(const std::vector<Vec3q>& pts) {
 
 }  // namespace
 
+Json scene_file_json(const ExactScene& sc) { return sc.made_of_parts() ? compound_scene_json(sc) : scene_json(sc); }
+
 Json compound_scene_json(const ExactScene& sc) {
     Json s;
     const char* names[2] = {"P1", "P2"};

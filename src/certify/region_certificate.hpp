@@ -22,6 +22,8 @@ namespace scalecert::internal {
 // The scene with every object as a list of parts (a plain object is one part), as the compound
 // certificates state it.
 Json compound_scene_json(const ExactScene& sc);
+// A scene's file: scene_json for two convex objects, compound_scene_json when one is made of parts.
+Json scene_file_json(const ExactScene& sc);
 // The compound judgements document (kind "compound_judgements", FORMAT.md): certify-fp's proofs on
 // objects made of parts, as text.
 std::string compound_judgements_text(const ExactScene& sc, const Q& tolerance, Json judgements);

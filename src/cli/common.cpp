@@ -222,7 +222,7 @@ OpenScene open_any(SceneArgs& args, Engine engine, StageClock& clock) {
         }
     if (full.P[0].points.empty()) full = args.load();
     clock.lap("read scene");
-    if (!full.P[0].parts.empty() || !full.P[1].parts.empty()) {
+    if (full.made_of_parts()) {
         o.compound = std::make_unique<internal::CompoundSession>(std::move(full), args.name());
         return o;
     }

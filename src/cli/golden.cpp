@@ -51,8 +51,7 @@ Command add_golden(CLI::App& app) {
                     // Written as golden writes a scene's copy (NAME.scene.json, the same bytes): three files.
                     const std::string path =
                         a->dir + "/" + stem(pair->mesh[0]) + "-" + stem(pair->mesh[1]) + ".scene.json";
-                    const bool parts = !sc.P[0].parts.empty() || !sc.P[1].parts.empty();
-                    mesh_scene.emplace(path, dump(parts ? compound_scene_json(sc) : scene_json(sc)));
+                    mesh_scene.emplace(path, dump(scene_file_json(sc)));
                     a->scenes.push_back(path);
                 }
                 validate(*a);  // an unknown family is refused before anything is created

@@ -38,19 +38,9 @@ Command add_query(CLI::App& app) {
                     if (!a->segment.empty() || a->in_t)
                         throw InputError("--segment and --in-t are for two convex objects");
                     const Q r1 = read_rho(a->rho1, "RHO1", a->scene.opt), r2 = read_rho(a->rho2, "RHO2", a->scene.opt);
-                    CompoundJudge& judge = o.compound->judge();
-                    const char* name = verdict_name(judge.verdict(r1, r2).verdict);
-                    std::string text = std::string(name) + "\n";
-                    if (a->json) {
-                        const Json claims{{"format", "scalecert-claims-1"},
-                                          {"claims", Json::array({Json{{"kind", "verdict"},
-                                                                       {"rho1", to_exact_string(r1)},
-                                                                       {"rho2", to_exact_string(r2)},
-                                                                       {"verdict", name}}})}};
-                        long wrong = 0;
-                        certify_fp(judge, dump(claims), a->scene.name(), ClaimOptions{false, Q(0), true}, &wrong,
-                                   nullptr, &text);
-                    }
+                    const std::string text =
+                        a->json ? o.compound->verdict_certificate(r1, r2)
+                                : std::string(verdict_name(o.compound->judge().verdict(r1, r2).verdict)) + "\n";
                     emit(text, a->out);
                     return 0;
                 }

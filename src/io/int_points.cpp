@@ -405,7 +405,7 @@ std::optional<CompactScene> read_scene_fast(const std::string& path) {
 }
 
 std::optional<CompactScene> compact_scene(const ExactScene& sc) {
-    if (!sc.P[0].parts.empty() || !sc.P[1].parts.empty()) return std::nullopt;  // a compound is not one polyhedron
+    if (sc.made_of_parts()) return std::nullopt;  // a compound is not one polyhedron
     CompactScene cs;
     for (int i = 0; i < 2; ++i) {
         auto p = int_points(sc.P[i].points);

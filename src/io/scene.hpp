@@ -27,6 +27,8 @@ struct ExactScene {
     PolyInput P[2];
     Q lo[2], hi[2];                  // I1 = [lo[0], hi[0]], I2 = [lo[1], hi[1]]
     std::vector<std::string> files;  // the mesh files a scene file named, as opened (no output may replace one)
+    // An object given as parts (even of one): the scene is answered as objects made of parts.
+    bool made_of_parts() const { return !P[0].parts.empty() || !P[1].parts.empty(); }
 };
 
 struct ReadOptions {

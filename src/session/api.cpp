@@ -104,7 +104,7 @@ struct Scene::Data {
     std::shared_ptr<const internal::CompactScene> compact;
     std::once_flag once;
     std::shared_ptr<const HullModel> model;
-    bool convex() const { return sc.P[0].parts.empty() && sc.P[1].parts.empty(); }
+    bool convex() const { return !sc.made_of_parts(); }
     const std::shared_ptr<const HullModel>& hull() {
         std::call_once(once, [this] { model = std::make_shared<const HullModel>(build_model(sc, name)); });
         return model;
@@ -190,9 +190,7 @@ const std::vector<Point>& Scene::part(int i, size_t k) const {
 const std::vector<Point>& Scene::points(int i) const { return d_->sc.P[i & 1].points; }
 const Point& Scene::seed(int i) const { return d_->sc.P[i & 1].seed; }
 Interval Scene::range(int i) const { return {d_->sc.lo[i & 1], d_->sc.hi[i & 1]}; }
-std::string Scene::json() const {
-    return dump(d_->convex() ? scene_json(d_->sc) : internal::compound_scene_json(d_->sc));
-}
+std::string Scene::json() const { return dump(internal::scene_file_json(d_->sc)); }
 
 struct Analysis::Impl {
     Scene scene;
@@ -323,19 +321,7 @@ std::string Analysis::query_json(const Rational& rho1, const Rational& rho2) con
     check_rho(rho1, "rho1");
     check_rho(rho2, "rho2");
     if (impl_->convex()) return impl_->session->query_text(rho1, rho2);
-    // As scalecert query --json on parts: the compound judgements certificate of the verdict.
-    const Q r1 = canonical_q(rho1), r2 = canonical_q(rho2);
-    internal::CompoundJudge& judge = impl_->compound->judge();
-    const Json claims{{"format", "scalecert-claims-1"},
-                      {"claims", Json::array({Json{{"kind", "verdict"},
-                                                   {"rho1", to_exact_string(r1)},
-                                                   {"rho2", to_exact_string(r2)},
-                                                   {"verdict", verdict_name(judge.verdict(r1, r2).verdict)}}})}};
-    long wrong = 0;
-    std::string text;
-    internal::certify_fp(judge, dump(claims), impl_->scene.d_->name, ClaimOptions{false, Q(0), true}, &wrong, nullptr,
-                         &text);
-    return text;
+    return impl_->compound->verdict_certificate(canonical_q(rho1), canonical_q(rho2));
 }
 
 std::string Analysis::partition_json() const {

@@ -1,6 +1,7 @@
 // The orchestration of compounds (compound_session.hpp).
 #include "session/compound_session.hpp"
 
+#include "certify/claims.hpp"
 #include "certify/region_certificate.hpp"
 
 #include <cmath>
@@ -26,6 +27,19 @@ Json CompoundSession::partition_json() { return compound_partition_json(sc_, reg
 CompoundJudge& CompoundSession::judge() {
     if (!judge_) judge_ = std::make_unique<CompoundJudge>(sc_, name_);
     return *judge_;
+}
+
+std::string CompoundSession::verdict_certificate(const Q& rho1, const Q& rho2) {
+    CompoundJudge& j = judge();
+    const Json claims{{"format", "scalecert-claims-1"},
+                      {"claims", Json::array({Json{{"kind", "verdict"},
+                                                   {"rho1", to_exact_string(rho1)},
+                                                   {"rho2", to_exact_string(rho2)},
+                                                   {"verdict", verdict_name(j.verdict(rho1, rho2).verdict)}}})}};
+    long wrong = 0;
+    std::string text;
+    certify_fp(j, dump(claims), name_, ClaimOptions{false, Q(0), true}, &wrong, nullptr, &text);
+    return text;
 }
 
 void CompoundSession::check_in_rectangle(const Q& rho1, const Q& rho2, const std::string& what) const {

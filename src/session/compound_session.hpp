@@ -38,6 +38,9 @@ class CompoundSession {
     // Judgements at any (ρ1, ρ2) > 0 with their proofs (certify-fp): the parts' hulls, built on
     // first use.
     CompoundJudge& judge();
+    // The compound judgements certificate of the exact verdict at (ρ1, ρ2) > 0, one verdict claim
+    // (scalecert query --json on parts).
+    std::string verdict_certificate(const Q& rho1, const Q& rho2);
 
   private:
     void check_in_rectangle(const Q& rho1, const Q& rho2, const std::string& what) const;

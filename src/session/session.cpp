@@ -12,7 +12,7 @@ namespace scalecert::internal {
 
 Session::Session(ExactScene scene, std::string name, Engine engine)
     : scene_(std::move(scene)), name_(std::move(name)), engine_(engine) {
-    if (!scene_->P[0].parts.empty() || !scene_->P[1].parts.empty())
+    if (scene_->made_of_parts())
         throw std::logic_error(
             "Session: a scene of parts is not two convex objects (CompoundSession and CompoundJudge take it)");
 }
