@@ -9,6 +9,7 @@
 #include "support.hpp"
 #include "session/session.hpp"
 #include "geometry/measures.hpp"
+#include "certify/golden.hpp"
 #include "certify/judgements.hpp"
 
 #include <cmath>
@@ -131,6 +132,30 @@ BOOST_AUTO_TEST_CASE(session_verdicts_from_the_walk_equal_the_hull_paths) {
     BOOST_TEST(walked >= 3);
     // Pairs outside I1 (ρ1 up to 8) are decided by a wider walk, not by the hull model.
     BOOST_TEST(on_walk == checked);
+}
+
+// Golden data on a walked scene comes from the walk and the points' trees, with no hull model:
+// its queries and CSV are the hull path's, byte for byte (the exact verdicts, distances and
+// depths are unique), and its curve document differs only in the engine statistics.
+BOOST_AUTO_TEST_CASE(golden_answers_on_the_walk_equal_the_hull_paths) {
+    std::mt19937 g(31);
+    ExactScene sc;
+    sc.P[0].points = sphere(g, 1200, 60, 1, {Q(0), Q(0), Q(0)});
+    sc.P[1].points = sphere(g, 1200, 70, 1, {Q(150), Q(10), Q(-5)});
+    sc = with_means(sc, qc(1, 2), Q(2));
+    Session walk(sc, "test"), hull(sc, "test", Engine::Hull);
+    const ClaimModels wm = walk.claim_models(), hm = hull.claim_models();
+    GoldenAnswers a = golden_answers(sc, walk.curve_model(), walk.curve(), wm);
+    GoldenAnswers b = golden_answers(sc, hull.curve_model(), hull.curve(), hm);
+    BOOST_TEST(walk.walked());
+    BOOST_TEST(!walk.hull_built());
+    BOOST_TEST(a.queries.size() >= 7 * 13u);
+    BOOST_TEST(dump(a.queries) == dump(b.queries));
+    BOOST_TEST(a.csv == b.csv);
+    BOOST_TEST(a.curve["model"]["engine"] == "scan");
+    a.curve.erase("model");
+    b.curve.erase("model");
+    BOOST_TEST(dump(a.curve) == dump(b.curve));
 }
 
 BOOST_AUTO_TEST_CASE(verdicts_outside_I1_and_at_coincident_seeds_build_no_hull) {

@@ -193,11 +193,12 @@ struct GoldenData {
 // convex objects (the curve) throws InputError on a scene of parts, naming what answers instead.
 class Analysis {
   public:
-    // A convex scene's curve is built here: by walking it (the scan path, no hull) from 2,000
-    // points (or 250,000 as the product of the counts), as the scalecert command does, else from
-    // the hull model. The documents, classify and claims' verdicts come from the walk where it
-    // proved what they need; query, check_plane and the other claims use the hull model, built on
-    // first use. On a scene of parts nothing is built before it is needed.
+    // A convex scene's curve is built here, by the engine the scalecert command chooses: by
+    // walking it (the scan path, no hull) from 2,000 points (or 250,000 as the product of the
+    // counts), else from the hull model. Every call answers from the walk where it proved what the
+    // answer needs (queries, documents, classify, claims, golden data), with support queries on
+    // the points' trees for planes, distances and depths; the hull model, built at most once a
+    // scene, answers the rest. On a scene of parts nothing is built before it is needed.
     explicit Analysis(const Scene& scene);
     bool convex() const;
     // The exact verdict at (ρ1, ρ2), ρ1, ρ2 > 0.
@@ -233,5 +234,13 @@ class Analysis {
     std::shared_ptr<const Impl> impl_;
     Curve curve_;
 };
+
+// Golden data of a family of scenes, as scalecert golden --family writes it: `count` scenes of
+// `family` at degeneracy eps > 0 (smaller is more degenerate), scene i drawn from `seed`, each as
+// NAME-i.scene.json, .golden.json and .golden.csv in `dir` (created), with a manifest; the same
+// bytes for the same arguments. families() lists the names. Throws InputError.
+void write_golden(const std::string& family, int count, std::uint64_t seed, const Rational& eps,
+                  const std::string& dir);
+std::vector<std::string> families();
 
 }  // namespace scalecert

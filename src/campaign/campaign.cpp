@@ -1,8 +1,11 @@
 #include "campaign/campaign.hpp"
 
+#include <scalecert/scalecert.hpp>
+
 #include "certify/golden.hpp"
 #include "certify/region_certificate.hpp"
 #include "session/compound_session.hpp"
+#include "session/session.hpp"
 #include "io/files.hpp"
 
 #include <algorithm>
@@ -254,9 +257,9 @@ std::vector<std::pair<std::string, std::string>> golden_files(const std::string&
         Json doc = session.region_json();
         a = golden_answers_parts(session.region(true), session.judge(), std::move(doc));
     } else {
-        HullModel m = build_model(s);
-        TouchingCurve c = build_curve(m);
-        a = golden_answers(s, m, c);
+        Session session(s, stem);
+        const ClaimModels models = session.claim_models();
+        a = golden_answers(s, session.curve_model(), session.curve(), models);
     }
     Json j = std::move(a.curve);
     fields(j);
@@ -463,3 +466,17 @@ std::string campaign_identity(const CampaignArgs& a, const Json& inputs) {
 }
 
 }  // namespace scalecert::internal
+
+namespace scalecert {
+
+void write_golden(const std::string& family, int count, std::uint64_t seed, const Rational& eps,
+                  const std::string& dir) {
+    if (count < 1 || count > 10000000) throw InputError("golden: count must be from 1 to 10^7 (as --count)");
+    Rational e = eps;
+    e.canonicalize();
+    internal::write_golden(family, count, seed, e, dir);
+}
+
+std::vector<std::string> families() { return internal::family_names(); }
+
+}  // namespace scalecert

@@ -1,5 +1,6 @@
 #include "certify/golden.hpp"
 
+#include "certify/claim.hpp"
 #include "geometry/measures.hpp"
 
 #include <algorithm>
@@ -22,7 +23,19 @@ std::vector<std::pair<std::string, Q>> around(const Q& f) {
 }
 }  // namespace
 
-GoldenAnswers golden_answers(const ExactScene& s, const HullModel& m, const TouchingCurve& c) {
+GoldenAnswers golden_answers(const ExactScene& s, const Model& m, const TouchingCurve& c, const ClaimModels& models) {
+    // The exact values come from the typed claim rules at tolerance 0: a distance claim's exact
+    // square where the doubles are apart, a depth claim's where they overlap.
+    ConvexRules rules(models, Q(0));
+    auto exact_square = [&](ClaimType type, const Q& a, const Q& b) {
+        TypedClaim t;
+        t.type = type;
+        t.rho1 = a;
+        t.rho2 = b;
+        const Judged g = rules.judge(t);
+        if (!g.exact_squared) throw std::logic_error("golden: no exact measure at a pair of doubles");
+        return *g.exact_squared;
+    };
     Json qs = Json::array();
     std::string csv = "rho1,rho2,where,verdict_at_doubles,measure,value\n";
     std::vector<Q> xs;
@@ -30,10 +43,10 @@ GoldenAnswers golden_answers(const ExactScene& s, const HullModel& m, const Touc
     for (const CurveSwitch& sp : c.switches) xs.push_back(sp.rho1);
     for (Q x : xs) {
         x.canonicalize();
-        Q f = c.env.value(m.lines, x);
+        Q f = models.curve_value(x);
         if (sgn(f) <= 0) continue;
         for (const auto& [where, y] : around(f)) {
-            Verdict v = query(m, c, x, y, false).verdict;
+            Verdict v = models.verdict(x, y);
             Json o;
             put_exact(o, "rho1", x);
             put_exact(o, "rho2", y);
@@ -41,21 +54,19 @@ GoldenAnswers golden_answers(const ExactScene& s, const HullModel& m, const Touc
             o["verdict"] = verdict_name(v);
             // what a floating-point suite will feed: the nearest doubles, and their exact verdict
             double xd = to_double_rn(x), yd = to_double_rn(y);
-            Verdict vd = query(m, c, exact_from_double(xd), exact_from_double(yd), false).verdict;
-            o["verdict_at_doubles"] = verdict_name(vd);
-            // and there the exact distance (separated) or penetration depth (overlapping), proved
-            // at floating-point speed (measures.hpp): the exact square and its root, correctly rounded
             const Q a = exact_from_double(xd), b = exact_from_double(yd);
+            Verdict vd = models.verdict(a, b);
+            o["verdict_at_doubles"] = verdict_name(vd);
+            // and there the exact distance (separated) or penetration depth (overlapping): the
+            // exact square and its root, correctly rounded
             Q sq(0);
             const char* kind = "touching";
             if (vd == Verdict::Separated) {
                 kind = "distance";
-                sq = proved_distance(m, a, b).d.squared;
+                sq = exact_square(ClaimType::Distance, a, b);
             } else if (vd == Verdict::Overlapping) {
                 kind = "depth";
-                const std::optional<ProvedDepth> d = proved_depth(m, a, b);
-                if (!d) throw std::logic_error("golden: an overlapping pair whose difference does not hold the origin");
-                sq = d->squared;
+                sq = exact_square(ClaimType::Depth, a, b);
             }
             const double root = sqrt_minus_rn(sq, Q(0));
             o["measure_at_doubles"] = Json{{"kind", kind}, {"squared", to_exact_string(sq)}, {"value_double", root}};

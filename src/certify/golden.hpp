@@ -1,6 +1,7 @@
 // Golden data for a scene: its exact answers where floating-point code is most likely wrong.
 #pragma once
 #include "certify/certificate.hpp"
+#include "certify/claims.hpp"
 #include "certify/compound_judge.hpp"
 
 #include <string>
@@ -17,7 +18,9 @@ struct GoldenAnswers {
     Json curve, queries;
     std::string csv;
 };
-GoldenAnswers golden_answers(const ExactScene& s, const HullModel& m, const TouchingCurve& c);
+// The curve (m, c) is the one the engine built (the walk's or the hull model's); verdicts, curve
+// values and the measures come from `models`, as claims are judged.
+GoldenAnswers golden_answers(const ExactScene& s, const Model& m, const TouchingCurve& c, const ClaimModels& models);
 
 // Objects made of parts: `region` is the region document (compound_region_json, with its union),
 // and "queries" are taken where the objects' meeting set ends along verticals: at 7 values of ρ1

@@ -98,28 +98,36 @@ Scene::Scene(std::vector<Point> p1, std::vector<Point> p2, Interval i1, Interval
 }
 
 struct Scene::Data {
-    internal::ExactScene sc;
+    std::shared_ptr<const internal::ExactScene> scene;
+    const internal::ExactScene& sc() const { return *scene; }
     std::string name;  // prefixes the hull model's errors
-    // The points as machine integers, for the scan path: large scenes only, when they fit.
+    // The points as machine integers, when the engine walks (Session::plan decides; large scenes
+    // only, when they fit): made once, shared by every Analysis of the scene.
     std::shared_ptr<const internal::CompactScene> compact;
     std::once_flag once;
     std::shared_ptr<const HullModel> model;
-    bool convex() const { return !sc.made_of_parts(); }
+    bool convex() const { return !scene->made_of_parts(); }
+    // The hull model, built once for every Analysis of the scene.
     const std::shared_ptr<const HullModel>& hull() {
-        std::call_once(once, [this] { model = std::make_shared<const HullModel>(build_model(sc, name)); });
+        std::call_once(once, [this] { model = std::make_shared<const HullModel>(build_model(*scene, name)); });
         return model;
+    }
+    // A session on the scene: the engine it chooses (Session::plan) with the scene's hull model.
+    std::unique_ptr<internal::Session> session(const std::shared_ptr<Data>& self) const {
+        auto s = std::make_unique<internal::Session>(scene, compact, name);
+        s->set_hull_source([self] { return self->hull(); });
+        return s;
     }
 };
 
 std::shared_ptr<Scene::Data> SceneAccess::validated(internal::ExactScene sc, const std::string& name) {
     auto d = std::make_shared<Scene::Data>();
-    d->sc = std::move(sc);
+    d->scene = std::make_shared<const internal::ExactScene>(std::move(sc));
     d->name = name;
     if (!d->convex()) return d;  // its parts' hulls are built where they are needed
-    if (internal::walk_by_default(d->sc.P[0].points.size(), d->sc.P[1].points.size()))
-        if (auto cs = internal::compact_scene(d->sc))
-            d->compact = std::make_shared<const internal::CompactScene>(std::move(*cs));
-    if (!d->compact || !internal::scan_seeds_proved(*d->compact)) d->hull();
+    const std::unique_ptr<internal::Session> s = d->session(d);
+    s->check();
+    d->compact = s->compact_scene();
     return d;
 }
 
@@ -177,20 +185,20 @@ bool Scene::convex() const { return d_->convex(); }
 size_t Scene::part_count(int i) const {
     if (i != 0 && i != 1)
         throw InputError("scene: object " + std::to_string(i) + ": the objects are 0 (P1) and 1 (P2)");
-    return std::max<size_t>(1, d_->sc.P[i].parts.size());
+    return std::max<size_t>(1, d_->sc().P[i].parts.size());
 }
 const std::vector<Point>& Scene::part(int i, size_t k) const {
     const size_t n = part_count(i);  // i checked
-    const internal::PolyInput& P = d_->sc.P[i];
+    const internal::PolyInput& P = d_->sc().P[i];
     if (k >= n)
         throw InputError("scene: P" + std::to_string(i + 1) + " has no part " + std::to_string(k) +
                          " (its parts are numbered from 0)");
     return P.parts.empty() ? P.points : P.parts[k];
 }
-const std::vector<Point>& Scene::points(int i) const { return d_->sc.P[i & 1].points; }
-const Point& Scene::seed(int i) const { return d_->sc.P[i & 1].seed; }
-Interval Scene::range(int i) const { return {d_->sc.lo[i & 1], d_->sc.hi[i & 1]}; }
-std::string Scene::json() const { return dump(internal::scene_file_json(d_->sc)); }
+const std::vector<Point>& Scene::points(int i) const { return d_->sc().P[i & 1].points; }
+const Point& Scene::seed(int i) const { return d_->sc().P[i & 1].seed; }
+Interval Scene::range(int i) const { return {d_->sc().lo[i & 1], d_->sc().hi[i & 1]}; }
+std::string Scene::json() const { return dump(internal::scene_file_json(d_->sc())); }
 
 struct Analysis::Impl {
     Scene scene;
@@ -198,19 +206,18 @@ struct Analysis::Impl {
     // the sessions build their models lazily behind the const interface. A convex scene has its
     // Session (and a CompoundSession too once its region is asked for); a scene of parts has its
     // CompoundSession only.
-    mutable std::optional<internal::Session> session;
+    mutable std::unique_ptr<internal::Session> session;
     mutable std::unique_ptr<internal::CompoundSession> compound;
     explicit Impl(const Scene& s) : scene(s) {
         if (!s.d_->convex()) {
-            compound = std::make_unique<internal::CompoundSession>(s.d_->sc, s.d_->name);
+            compound = std::make_unique<internal::CompoundSession>(s.d_->sc(), s.d_->name);
             return;
         }
-        session.emplace(s.d_->compact, s.d_->name);
-        session->set_hull_source([d = s.d_] { return d->hull(); });
+        session = s.d_->session(s.d_);
     }
-    bool convex() const { return session.has_value(); }
+    bool convex() const { return session != nullptr; }
     internal::CompoundSession& region() const {
-        if (!compound) compound = std::make_unique<internal::CompoundSession>(scene.d_->sc, scene.d_->name);
+        if (!compound) compound = std::make_unique<internal::CompoundSession>(scene.d_->sc(), scene.d_->name);
         return *compound;
     }
     // What is defined for two convex objects only, refused on parts with what answers instead.
@@ -463,7 +470,8 @@ GoldenData Analysis::golden() const {
         return {dump(g.curve), std::move(g.csv)};
     }
     internal::Session& s = impl_->convex_only("golden");
-    internal::GoldenAnswers g = internal::golden_answers(impl_->scene.d_->sc, s.hull(), s.hull_curve());
+    const internal::ClaimModels models = s.claim_models();
+    internal::GoldenAnswers g = internal::golden_answers(impl_->scene.d_->sc(), s.curve_model(), s.curve(), models);
     g.curve["queries"] = std::move(g.queries);
     return {dump(g.curve), std::move(g.csv)};
 }

@@ -11,24 +11,40 @@
 namespace scalecert::internal {
 
 Session::Session(ExactScene scene, std::string name, Engine engine)
-    : scene_(std::move(scene)), name_(std::move(name)), engine_(engine) {
-    if (scene_->made_of_parts())
-        throw std::logic_error(
-            "Session: a scene of parts is not two convex objects (CompoundSession and CompoundJudge take it)");
-}
+    : Session(std::make_shared<const ExactScene>(std::move(scene)), nullptr, std::move(name), engine) {}
 
 Session::Session(std::shared_ptr<const CompactScene> scene, std::string name, Engine engine)
     : compact_(std::move(scene)), name_(std::move(name)), engine_(engine) {}
 
+Session::Session(std::shared_ptr<const ExactScene> scene, std::shared_ptr<const CompactScene> compact, std::string name,
+                 Engine engine)
+    : scene_(std::move(scene)), compact_(std::move(compact)), name_(std::move(name)), engine_(engine) {
+    if (scene_ && scene_->made_of_parts())
+        throw std::logic_error(
+            "Session: a scene of parts is not two convex objects (CompoundSession and CompoundJudge take it)");
+}
+
+bool Session::plan() {
+    if (planned_) return walk_planned_;
+    planned_ = true;
+    if (engine_ == Engine::Hull) return walk_planned_ = false;
+    if (!compact_ && scene_ &&
+        (engine_ == Engine::Scan || walk_by_default(scene_->P[0].points.size(), scene_->P[1].points.size())))
+        if (auto cs = internal::compact_scene(*scene_)) compact_ = std::make_shared<const CompactScene>(std::move(*cs));
+    walk_planned_ =
+        compact_ && (engine_ == Engine::Scan || walk_by_default(compact_->P[0].size(), compact_->P[1].size()));
+    return walk_planned_;
+}
+
+void Session::check() {
+    if (plan() && scan_seeds_proved(*compact_)) return;
+    hull();
+}
+
 void Session::decide() {
     if (decided_) return;
     decided_ = true;
-    if (engine_ == Engine::Hull) return;
-    if (!compact_ && scene_ &&
-        (engine_ == Engine::Scan || walk_by_default(scene_->P[0].points.size(), scene_->P[1].points.size())))
-        if (auto cs = compact_scene(*scene_)) compact_ = std::make_shared<const CompactScene>(std::move(*cs));
-    if (!compact_ || (engine_ == Engine::Auto && !walk_by_default(compact_->P[0].size(), compact_->P[1].size())))
-        return;
+    if (!plan()) return;
     WalkResult r = scan_model(compact_);
     if (r.stop) {
         handover_ = r.stop->text();

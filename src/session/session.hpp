@@ -29,9 +29,12 @@ enum class Engine { Auto, Scan, Hull };
 class Session {
   public:
     // `name` prefixes the hull model's geometric errors ("FILE: P1: ..."). A compact scene may be
-    // null only with the strict one given.
+    // null only with the strict one given; given both, they hold the same scene (the compact one
+    // as plan() would make it, e.g. another session's compact_scene()).
     Session(ExactScene scene, std::string name, Engine engine = Engine::Auto);
     Session(std::shared_ptr<const CompactScene> scene, std::string name, Engine engine = Engine::Auto);
+    Session(std::shared_ptr<const ExactScene> scene, std::shared_ptr<const CompactScene> compact, std::string name,
+            Engine engine = Engine::Auto);
     // Laps for SCALECERT_TIMING (optional; must outlive the session's work).
     void set_clock(StageClock* clock) { clock_ = clock; }
     // A hull model built elsewhere and shared (the library's Scene builds it once for all its
@@ -97,8 +100,22 @@ class Session {
     const PointSets& points();
     const std::string& name() const { return name_; }
     bool hull_built() const { return hull_ != nullptr; }
+    // The scene's geometry checked as this session's engine will read it, without building the
+    // curve: where the walk will be tried, its seeds proved inside by a few extreme points
+    // (scan_seeds_proved); otherwise, or when they are not, the hull model built (its errors: flat
+    // points, a seed outside, as InputError). The library's Scene calls it on construction.
+    void check();
+    // The scene in machine integers, as the engine decided (null when the walk is not tried).
+    std::shared_ptr<const CompactScene> compact_scene() {
+        plan();
+        return compact_;
+    }
 
   private:
+    // The one choice of engine: whether the walk is tried (the scene then in machine integers,
+    // compact_), by Engine and walk_by_default. decide() runs the walk when it is.
+    bool plan();
+    bool planned_ = false, walk_planned_ = false;
     void decide();
     bool seeds_coincide() const;             // every pair overlaps: s lies inside P1(ρ1) and P2(ρ2)
     void refuse_past_the_edge_pair_limit();  // InputError when the hulls' edge pairs pass kMaxEdgePairs
@@ -106,7 +123,7 @@ class Session {
     void lap(const char* what) {
         if (clock_) clock_->lap(what);
     }
-    std::optional<ExactScene> scene_;
+    std::shared_ptr<const ExactScene> scene_;
     std::shared_ptr<const CompactScene> compact_;
     std::string name_;
     Engine engine_;
