@@ -280,15 +280,6 @@ std::vector<Vec3z> all_facet_normals(const HullModel& m) {
     return facet_normals<Vec3z>(m, scratch);
 }
 
-void set_seeds_in_integers(Model& m) {
-    m.d = sub(m.s[1], m.s[0]);
-    for (int i = 0; i < 2; ++i) {
-        const Vec3q ss{m.s[i][0] * m.P[i].scale, m.s[i][1] * m.P[i].scale, m.s[i][2] * m.P[i].scale};
-        m.sz[i] = over_common_denominator(ss, m.sden[i]);
-    }
-    m.dz = over_common_denominator(m.d, m.dden);
-}
-
 Model build_hulls(const ExactScene& scene) {
     check_scene(scene, "scene");  // a scene built in code gets the reader's checks too
     Model m;

@@ -2,9 +2,8 @@
 // crossing Gauss-map arcs of edge pairs): the pair is separated by the plane of normal n iff
 //   n·d > ρ1·h1(n) + ρ2·h2(n),  i.e.  ρ2 < (n·d − ρ1·h1)/h2  =  slope·ρ1 + intercept.
 #pragma once
+#include "geometry/bodies.hpp"
 #include "io/int_points.hpp"
-#include "geometry/polyhedron.hpp"
-#include "io/scene.hpp"
 
 #include <cstdint>
 #include <memory>
@@ -44,17 +43,11 @@ struct ScanStats {
     std::uint64_t gift_wrap_steps = 0, pieces_walked = 0;
 };
 
-struct Model {
-    ExactScene scene;  // on the scan path: seeds and ranges only (the points are in `scan`)
-    Polyhedron P[2];
-    Vec3q s[2];
-    Vec3q d;                         // s2 − s1
+// A curve's model: the contact lines over the two bodies (on the scan path the bodies' polyhedra
+// are empty: its points are in `scan`).
+struct Model : Bodies {
     std::vector<ContactLine> lines;  // sorted by normal
     LineStats stats;
-    // The seeds and d in integers, for fast support values: s_i·scale_i = sz[i] / sden[i] and
-    // d = dz / dden.
-    Vec3z sz[2], dz;
-    Z sden[2], dden;
     // The scan path's points (scan.hpp); null on the hull path.
     std::shared_ptr<const CompactScene> scan;
     ScanStats scan_stats;
@@ -80,9 +73,6 @@ struct WalkModel : Model {};
 // larger intercept: strictly below it for every x ≥ 0). a, b approximate exact values to within
 // 10^-14 relative (or are not finite); a line is dropped only when margins of 10^-12 prove it.
 std::vector<size_t> undominated(const std::vector<double>& a, const std::vector<double>& b);
-
-// d = s2 − s1, and sz, sden, dz, dden (above) from the seeds m.s and the scales m.P[i].scale.
-void set_seeds_in_integers(Model& m);
 
 // The exact polyhedra and the seeds of a scene, checked as build_model checks them, with no contact
 // line: what membership, distances and depths need (Model::P built, Model::lines empty). Cheap

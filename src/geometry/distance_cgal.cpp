@@ -22,7 +22,7 @@ CGAL::Gmpz gz(const Z& z) { return CGAL::Gmpz(z.get_mpz_t()); }
 Z zg(const CGAL::Gmpz& g) { return Z(g.mpz()); }
 
 // The vertices of P_i(ρ) as homogeneous integer points (x, y, z, w).
-std::vector<K::Point_3> scaled_vertices(const Model& m, int i, const Q& rho) {
+std::vector<K::Point_3> scaled_vertices(const Bodies& m, int i, const Q& rho) {
     std::vector<K::Point_3> out;
     for (int v : m.P[i].vertices) {
         const Vec3q p = scaled_point(m, i, rho, m.P[i].points[static_cast<size_t>(v)]);
@@ -166,7 +166,7 @@ std::optional<ProvedDistance> proved_distance(const PointSets& S, const Q& rho1,
     return std::nullopt;
 }
 
-ProvedDistance proved_distance(const HullModel& m, const Q& rho1, const Q& rho2) {
+ProvedDistance proved_distance(const Bodies& m, const Q& rho1, const Q& rho2) {
     if (std::optional<ProvedDistance> r = proved_distance(HullPoints(m), rho1, rho2)) return *r;
     ProvedDistance r;
     r.d = exact_distance(m, rho1, rho2);
@@ -175,7 +175,7 @@ ProvedDistance proved_distance(const HullModel& m, const Q& rho1, const Q& rho2)
     return r;
 }
 
-ExactDistance exact_distance(const Model& m, const Q& rho1, const Q& rho2) {
+ExactDistance exact_distance(const Bodies& m, const Q& rho1, const Q& rho2) {
     const std::vector<K::Point_3> A = scaled_vertices(m, 0, rho1), B = scaled_vertices(m, 1, rho2);
     Distance pd(A.begin(), A.end(), B.begin(), B.end());
     ExactDistance r;

@@ -97,7 +97,7 @@ std::optional<InnerEllipsoid> mvie(const Halfspaces& h, const V3& start) {
 }
 }  // namespace
 
-std::optional<EllipsoidPath> ellipsoid_path(const HullModel& m) {
+std::optional<EllipsoidPath> ellipsoid_path(const Bodies& m) {
     EllipsoidPath p;
     M3 B[2];
     V3 c[2];

@@ -2,7 +2,7 @@
 // rounded to rationals and checked exactly; only the segment's ends leave this file, and they are
 // used only after the exact check.
 #pragma once
-#include "curve/contact_lines.hpp"
+#include "geometry/bodies.hpp"
 
 #include <array>
 #include <optional>
@@ -25,6 +25,6 @@ struct EllipsoidPath {
 // method), then the closest points of the two (projected gradient). When the ellipsoids meet,
 // the segment joins their centres. None when floating point fails (overflow, a seed not inside
 // in doubles).
-std::optional<EllipsoidPath> ellipsoid_path(const HullModel& m);
+std::optional<EllipsoidPath> ellipsoid_path(const Bodies& m);
 
 }  // namespace scalecert::internal

@@ -96,7 +96,7 @@ bool project(const std::vector<Vert>& s, unsigned mask, std::vector<double>& w, 
 }
 }  // namespace
 
-GjkGuess gjk_guess(const HullModel& m, double rho1, double rho2) { return gjk_guess(HullPoints(m), rho1, rho2); }
+GjkGuess gjk_guess(const Bodies& m, double rho1, double rho2) { return gjk_guess(HullPoints(m), rho1, rho2); }
 
 GjkGuess gjk_guess(const PointSets& S, double rho1, double rho2) {
     Body A(S, 0, rho1), B(S, 1, rho2);

@@ -14,6 +14,6 @@ struct GjkGuess {
     int iterations = 0;
 };
 GjkGuess gjk_guess(const PointSets& S, double rho1, double rho2);
-GjkGuess gjk_guess(const HullModel& m, double rho1, double rho2);  // on its vertices
+GjkGuess gjk_guess(const Bodies& m, double rho1, double rho2);  // on its vertices
 
 }  // namespace scalecert::internal

@@ -9,12 +9,12 @@
 
 namespace scalecert::internal {
 
-Vec3q scaled_point(const Model& m, int i, const Q& rho, const Vec3q& x) {
+Vec3q scaled_point(const Bodies& m, int i, const Q& rho, const Vec3q& x) {
     const Vec3q& s = m.s[i];
     return {s[0] + rho * (x[0] - s[0]), s[1] + rho * (x[1] - s[1]), s[2] + rho * (x[2] - s[2])};
 }
 
-bool contains(const Model& m, int i, const Q& rho, const Vec3q& x) {
+bool contains(const Bodies& m, int i, const Q& rho, const Vec3q& x) {
     const Vec3q& s = m.s[i];
     const Vec3q y{s[0] + (x[0] - s[0]) / rho, s[1] + (x[1] - s[1]) / rho,
                   s[2] + (x[2] - s[2]) / rho};  // x = s + ρ(y − s)
@@ -36,7 +36,7 @@ std::pair<Q, Q> plane_extents(const PointSets& S, const Vec3q& n, const Q& rho1,
     const Q max1 = dot(n, p1), min2 = dot(n, p2);
     return {ns1 + rho1 * (max1 - ns1), ns2 + rho2 * (min2 - ns2)};
 }
-std::pair<Q, Q> plane_extents(const HullModel& m, const Vec3q& n, const Q& rho1, const Q& rho2) {
+std::pair<Q, Q> plane_extents(const Bodies& m, const Vec3q& n, const Q& rho1, const Q& rho2) {
     return plane_extents(HullPoints(m), n, rho1, rho2);
 }
 
@@ -46,12 +46,11 @@ Q directional_depth_squared(const PointSets& S, const Vec3q& n, const Q& rho1, c
     const Q sq = h * h / dot(n, n);
     return sgn(h) < 0 ? Q(-sq) : sq;
 }
-Q directional_depth_squared(const HullModel& m, const Vec3q& n, const Q& rho1, const Q& rho2) {
+Q directional_depth_squared(const Bodies& m, const Vec3q& n, const Q& rho1, const Q& rho2) {
     return directional_depth_squared(HullPoints(m), n, rho1, rho2);
 }
 
-ExactDepth exact_penetration_depth(const HullModel& m, const std::vector<Vec3z>& normals, const Q& rho1,
-                                   const Q& rho2) {
+ExactDepth exact_penetration_depth(const Bodies& m, const std::vector<Vec3z>& normals, const Q& rho1, const Q& rho2) {
     ExactDepth best{Q(-1), {}};
     for (const Vec3z& n : normals) {
         const Q h1 = m.P[0].support(n) - dot(n, m.s[0]);
@@ -286,7 +285,7 @@ std::optional<ProvedDepth> epa_depth(const PointSets& S, const Q& rho1, const Q&
 std::optional<ProvedDepth> proved_depth(const PointSets& S, const Q& rho1, const Q& rho2) {
     return epa_depth(S, rho1, rho2);
 }
-std::optional<ProvedDepth> proved_depth(const HullModel& m, const Q& rho1, const Q& rho2) {
+std::optional<ProvedDepth> proved_depth(const Bodies& m, const Q& rho1, const Q& rho2) {
     return proved_depth(HullPoints(m), rho1, rho2);
 }
 

@@ -8,12 +8,12 @@
 
 namespace scalecert::internal {
 
-// P(ρ) = s + ρ(P − s) of polyhedron i of the model.
-Vec3q scaled_point(const Model& m, int i, const Q& rho, const Vec3q& x);
+// P(ρ) = s + ρ(P − s) of polyhedron i of the bodies.
+Vec3q scaled_point(const Bodies& m, int i, const Q& rho, const Vec3q& x);
 // Is x in P_i(ρ)? Exact, against every face plane.
-bool contains(const Model& m, int i, const Q& rho, const Vec3q& x);
+bool contains(const Bodies& m, int i, const Q& rho, const Vec3q& x);
 // max over P1(ρ1) of n·x and min over P2(ρ2) of n·x (any nonzero rational n).
-std::pair<Q, Q> plane_extents(const HullModel& m, const Vec3q& n, const Q& rho1, const Q& rho2);
+std::pair<Q, Q> plane_extents(const Bodies& m, const Vec3q& n, const Q& rho1, const Q& rho2);
 std::pair<Q, Q> plane_extents(const PointSets& S, const Vec3q& n, const Q& rho1, const Q& rho2);
 
 // The squared Euclidean distance between P1(ρ1) and P2(ρ2) (0 when they meet), with a closest
@@ -25,8 +25,8 @@ struct ExactDistance {
     // the judgements certificate's closest points.
     std::vector<std::pair<int, Q>> w1, w2;
 };
-// (m: a hull model, or build_hulls's polyhedra with no line.)
-ExactDistance exact_distance(const Model& m, const Q& rho1, const Q& rho2);
+// (m: a hull model's bodies, or build_hulls's.)
+ExactDistance exact_distance(const Bodies& m, const Q& rho1, const Q& rho2);
 // The same, found at floating-point speed and proved: a double GJK (gjk.hpp) names a few vertices,
 // CGAL's QP gives the exact closest points of those, and exact supports over all vertices check
 // the slab between them (max over P1(ρ1) of u·x = u·p, min over P2(ρ2) of u·y = u·q, u = q − p),
@@ -37,7 +37,7 @@ struct ProvedDistance {
     bool fallback = false;
     int rounds = 0;
 };
-ProvedDistance proved_distance(const HullModel& m, const Q& rho1, const Q& rho2);
+ProvedDistance proved_distance(const Bodies& m, const Q& rho1, const Q& rho2);
 // The same on any point set (a hull's vertices, or a cloud's points with no hull): none when the
 // rounds run out (the caller then asks the hull model's exact_distance).
 std::optional<ProvedDistance> proved_distance(const PointSets& S, const Q& rho1, const Q& rho2);
@@ -51,7 +51,7 @@ struct ExactDepth {
     Q squared;
     Vec3z direction;  // a minimising facet normal (pointing from P1 towards P2)
 };
-ExactDepth exact_penetration_depth(const HullModel& m, const std::vector<Vec3z>& facet_normals, const Q& rho1,
+ExactDepth exact_penetration_depth(const Bodies& m, const std::vector<Vec3z>& facet_normals, const Q& rho1,
                                    const Q& rho2);
 // The squared penetration depth of an overlapping pair, proved by an exact EPA (expanding
 // polytope) on support points of M = P1(ρ1) − P2(ρ2): a polytope K ⊆ M grown from a tetrahedron
@@ -66,7 +66,7 @@ struct ProvedDepth {
     std::vector<std::array<int, 3>> triangles;
     int iterations = 0;
 };
-std::optional<ProvedDepth> proved_depth(const HullModel& m, const Q& rho1, const Q& rho2);
+std::optional<ProvedDepth> proved_depth(const Bodies& m, const Q& rho1, const Q& rho2);
 std::optional<ProvedDepth> proved_depth(const PointSets& S, const Q& rho1, const Q& rho2);
 
 // The depth at (ρ1, ρ2) and what proves it, from support queries alone (any point set, no curve):
@@ -85,7 +85,7 @@ std::optional<MeasuredDepth> measured_depth(const PointSets& S, const Q& rho1, c
 MeasuredDepth depth_from_distance(const PointSets& S, const ExactDistance& dist, const Q& rho1, const Q& rho2);
 // The squared directional depth along n: (ρ1 h1(n) + ρ2 h2(n) − n·d)² / |n|², signed negative
 // when that plane separates (a translation along n of that length separates them exactly).
-Q directional_depth_squared(const HullModel& m, const Vec3q& n, const Q& rho1, const Q& rho2);
+Q directional_depth_squared(const Bodies& m, const Vec3q& n, const Q& rho1, const Q& rho2);
 Q directional_depth_squared(const PointSets& S, const Vec3q& n, const Q& rho1, const Q& rho2);
 
 // √square − c as the nearest double (MPFR at 256 bits, then rounded): for display and error

@@ -4,7 +4,7 @@
 // (CloudPoints, curve/scan.hpp). A measure proved on either is proved: every decision is an exact
 // support query or exact arithmetic on the points it names.
 #pragma once
-#include "curve/contact_lines.hpp"
+#include "geometry/bodies.hpp"
 #include "numeric/double3.hpp"
 
 namespace scalecert::internal {
@@ -26,7 +26,7 @@ class PointSets {
 // The vertices of the exact polyhedra: a hull model's, or build_hulls's (no contact line).
 class HullPoints final : public PointSets {
   public:
-    explicit HullPoints(const Model& m) : m_(m) {}
+    explicit HullPoints(const Bodies& m) : m_(m) {}
     Vec3q point(int i, int k) const override { return m_.P[i].points[static_cast<size_t>(k)]; }
     D3 dpoint(int i, int k) const override {
         const auto& d = m_.P[i].dpts[static_cast<size_t>(k)];
@@ -46,10 +46,9 @@ class HullPoints final : public PointSets {
         }
         return best;
     }
-    const Model& model() const { return m_; }
 
   private:
-    const Model& m_;
+    const Bodies& m_;
 };
 
 }  // namespace scalecert::internal
