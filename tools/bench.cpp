@@ -22,9 +22,11 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <functional>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <cstdio>
@@ -222,6 +224,30 @@ ProcessRun run_scalecert(const std::vector<std::string>& args) {
             WIFEXITED(st) ? WEXITSTATUS(st) : -1};
 }
 
+// Runs f in a child process (fork) and measures its wall time and peak resident size, as
+// run_scalecert does for the command: what a program calling the library alone would use.
+ProcessRun run_in_child(const std::function<int()>& f) {
+    std::fflush(nullptr);
+    auto t0 = Clock::now();
+    const pid_t pid = fork();
+    if (pid < 0) return {0, 0, -1};
+    if (pid == 0) {
+        int r = 3;
+        try {
+            r = f();
+        } catch (const std::exception& e) {
+            std::fprintf(stderr, "bench child: %s\n", e.what());
+        }
+        std::fflush(nullptr);
+        _exit(r);
+    }
+    int st = 0;
+    struct rusage ru {};
+    wait4(pid, &st, 0, &ru);
+    return {std::chrono::duration<double>(Clock::now() - t0).count(), ru.ru_maxrss,
+            WIFEXITED(st) ? WEXITSTATUS(st) : -1};
+}
+
 // n points per polytope as an OFF file of integers: near a sphere of radius R (every point a
 // hull vertex, or nearly), or uniform in the ball (most points interior), offset by (3R, R/10, 0).
 void write_cloud(const std::string& path, int n, long R, bool on_sphere, bool second, unsigned seed) {
@@ -374,8 +400,9 @@ void query_costs(bool with_slow) {
     std::filesystem::create_directories(dir);
     std::fprintf(stderr, "whole process: query, query --json, partition (walk) against partition --engine hull:\n");
     query_rows.push_back(
-        "| scene | query | query --json | partition | partition --engine hull | hull / walk | scalecert-check |");
-    query_rows.push_back("|---|---|---|---|---|---|---|");
+        "| scene | query | query --json | partition | partition --engine hull | hull / walk | scalecert-check | "
+        "Analysis::query (C++ API) |");
+    query_rows.push_back("|---|---|---|---|---|---|---|---|");
     const std::string a = (dir / "a.off").string(), b = (dir / "b.off").string(), out = (dir / "out.txt").string();
     static const std::string checker =
         (std::filesystem::canonical("/proc/self/exe").parent_path() / "scalecert-check").string();
@@ -394,6 +421,16 @@ void query_costs(bool with_slow) {
         const ProcessRun q = run_scalecert(with({"query", "", "1", "1"}));
         const ProcessRun qj = run_scalecert(with({"query", "", "1", "1", "--json"}));
         const ProcessRun p = run_scalecert(with({"partition", ""}));
+        // The same query through the public API, in a process of its own: the scene from the mesh
+        // files, its analysis and one query with its evidence.
+        const ProcessRun api = run_in_child([&] {
+            using scalecert::Rational;
+            const scalecert::Scene s = scalecert::Scene::from_meshes(a, b, {Rational(1, 2), Rational(2)},
+                                                                     {Rational(1, 2), Rational(2)});
+            const scalecert::Analysis an(s);
+            const scalecert::QueryResult res = an.query(Rational(1), Rational(1));
+            return res.plane || res.common ? 0 : 4;
+        });
         const auto t0 = std::chrono::steady_clock::now();
         const int check = std::system((checker + " " + out + " >/dev/null 2>&1").c_str());
         const double check_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -404,7 +441,8 @@ void query_costs(bool with_slow) {
         char cs[64];
         std::snprintf(cs, sizeof cs, "%.3g s%s", check_s, check ? " (REJECTED)" : "");
         const std::string r = "| " + name + " | " + cell(q) + " | " + cell(qj) + " | " + cell(p) + " | " +
-                              (hull_too ? cell(h) : std::string("(--with-slow)")) + " | " + ratio + " | " + cs + " |";
+                              (hull_too ? cell(h) : std::string("(--with-slow)")) + " | " + ratio + " | " + cs + " | " +
+                              cell(api) + " |";
         query_rows.push_back(r);
         std::fprintf(stderr, "  %s\n", r.c_str());
     };
@@ -759,6 +797,82 @@ void compound_costs(bool quick) {
     }
 }
 
+// Objects of 10 x 10 parts each through the public API (scalecert.hpp), each row from a fresh
+// Analysis, so that each time includes what it builds: a query (the verdict at (1, 1) with its
+// evidence), the compound partition with scalecert-check on it (a process), 1,000 typed claims
+// (250 each of verdicts, separating planes, witness points and distances at random pairs of
+// doubles, at their exact values), and golden data.
+std::vector<std::string> compound_api_rows;
+void compound_api_costs() {
+    using scalecert::Rational;
+    auto secs = [](Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); };
+    static const std::string checker =
+        (std::filesystem::canonical("/proc/self/exe").parent_path() / "scalecert-check").string();
+    for (const int gap : {30, 400}) {
+        const ExactScene sc = compound(10, gap, 3);
+        std::vector<std::vector<scalecert::Point>> parts[2];
+        for (int i = 0; i < 2; ++i)
+            for (const std::vector<Vec3q>& p : sc.P[i].parts) parts[i].push_back({p.begin(), p.end()});
+        const scalecert::Scene scene =
+            scalecert::Scene::from_parts(parts[0], parts[1], {sc.lo[0], sc.hi[0]}, {sc.lo[1], sc.hi[1]},
+                                         sc.P[0].seed, sc.P[1].seed);
+        auto t0 = Clock::now();
+        const scalecert::Verdict v = scalecert::Analysis(scene).verdict(Rational(1), Rational(1));
+        const double t_query = secs(t0);
+        t0 = Clock::now();
+        const std::string cert = scalecert::Analysis(scene).partition_json();
+        const auto dir = std::filesystem::temp_directory_path() / ("scalecert-bench-" + std::to_string(::getpid()));
+        std::filesystem::create_directories(dir);
+        const std::string path = (dir / "compound_partition.json").string();
+        std::ofstream(path) << cert;
+        const int check = std::system((checker + " " + path + " >/dev/null 2>&1").c_str());
+        const double t_partition = secs(t0);
+        std::filesystem::remove_all(dir);
+        std::mt19937_64 g(17);
+        std::uniform_real_distribution<double> u(0.5, 2.0), n(-1.0, 1.0);
+        std::vector<scalecert::Claim> claims;
+        for (int k = 0; k < 1000; ++k) {
+            scalecert::Claim c;
+            c.rho1 = scalecert::exact(u(g));
+            c.rho2 = scalecert::exact(u(g));
+            switch (k % 4) {
+            case 0:
+                c.kind = scalecert::ClaimKind::Verdict;
+                c.verdict = scalecert::ClaimedVerdict::Separated;
+                break;
+            case 1:
+                c.kind = scalecert::ClaimKind::SeparatingPlane;
+                c.normal = {scalecert::exact(1.0), scalecert::exact(n(g)), scalecert::exact(n(g))};
+                break;
+            case 2:
+                c.kind = scalecert::ClaimKind::WitnessPoint;
+                c.point = {scalecert::exact(20 + 10 * n(g)), scalecert::exact(18 + 18 * n(g)),
+                           scalecert::exact(1 + n(g))};
+                break;
+            default:
+                c.kind = scalecert::ClaimKind::Distance;
+                c.value = scalecert::exact(u(g));
+            }
+            claims.push_back(std::move(c));
+        }
+        t0 = Clock::now();
+        const scalecert::Judgements j = scalecert::Analysis(scene).certify(claims);
+        const double t_claims = secs(t0);
+        t0 = Clock::now();
+        const scalecert::GoldenData gd = scalecert::Analysis(scene).golden();
+        const double t_golden = secs(t0);
+        char b[512];
+        std::snprintf(b, sizeof b,
+                      "| 10 x 10 parts each, %s | %.3f s (%s) | %.3f s (%zu KB%s) | %.3f s (%ld wrong) | %.3f s (%zu "
+                      "CSV rows) |",
+                      gap == 30 ? "side by side" : "far apart", t_query, scalecert::name(v), t_partition,
+                      cert.size() / 1024, check ? ", REJECTED" : ", checked", t_claims, j.wrong, t_golden,
+                      static_cast<size_t>(std::count(gd.csv.begin(), gd.csv.end(), '\n')) - 1);
+        compound_api_rows.push_back(b);
+        std::fprintf(stderr, "%s\n", b);
+    }
+}
+
 int checker_bench(int argc, char** argv);  // tools/bench_checker.cpp
 
 int main(int argc, char** argv) {
@@ -800,6 +914,11 @@ int main(int argc, char** argv) {
             "pairs | over all pairs |\n|---|---|---|---|---|---|---|---|---|\n");
         compound_costs(quick);
         for (const std::string& r : compound_rows) std::printf("%s\n", r.c_str());
+        std::printf(
+            "\n| scene (public API, each from a fresh Analysis; target: each under 2 s) | query | partition + "
+            "scalecert-check | 1,000 typed claims | golden |\n|---|---|---|---|---|\n");
+        compound_api_costs();
+        for (const std::string& r : compound_api_rows) std::printf("%s\n", r.c_str());
         return 0;
     }
     if (claims_only) {  // only the claims' table
