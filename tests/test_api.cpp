@@ -3,6 +3,7 @@
 
 #include <scalecert/scalecert.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -650,4 +651,29 @@ BOOST_AUTO_TEST_CASE(typed_and_file_claims_judge_alike) {
     const size_t right = same_judgements(typed, r.certify_fp(claims_file(claims)).report);
     BOOST_TEST(right > 0u);
     BOOST_TEST(right < claims.size());
+}
+
+// A family's golden data through the public API: what the family run writes for a scene is what
+// an Analysis of that scene's written copy gives (the same queries and CSV), and the faults are
+// refused before anything is written.
+BOOST_AUTO_TEST_CASE(family_golden_data_through_the_public_api) {
+    const std::vector<std::string> f = scalecert::families();
+    BOOST_TEST((std::find(f.begin(), f.end(), "random") != f.end()));
+    char tmpl[] = "/tmp/scalecert_api_golden_XXXXXX";
+    const std::string dir = std::string(mkdtemp(tmpl)) + "/g";
+    BOOST_CHECK_THROW(scalecert::write_golden("bogus", 1, 5, Rational(1, 1024), dir), scalecert::InputError);
+    BOOST_CHECK_THROW(scalecert::write_golden("random", 0, 5, Rational(1, 1024), dir), scalecert::InputError);
+    BOOST_CHECK_THROW(scalecert::write_golden("random", 1, 5, Rational(0), dir), scalecert::InputError);
+    BOOST_TEST(access(dir.c_str(), F_OK) != 0);  // nothing made
+    scalecert::write_golden("random", 1, 5, Rational(1, 1024), dir);
+    auto read = [](const std::string& p) {
+        std::ifstream in(p);
+        return std::string(std::istreambuf_iterator<char>(in), {});
+    };
+    const scalecert::GoldenData g = scalecert::Analysis(scalecert::Scene::load(dir + "/random-0.scene.json")).golden();
+    const nlohmann::json written = nlohmann::json::parse(read(dir + "/random-0.golden.json"));
+    BOOST_TEST(written["family"] == "random");
+    BOOST_TEST(written["queries"].size() >= 13u);
+    BOOST_TEST(written["queries"] == nlohmann::json::parse(g.json)["queries"]);
+    BOOST_TEST(read(dir + "/random-0.golden.csv") == g.csv);
 }

@@ -425,8 +425,8 @@ void query_costs(bool with_slow) {
         // files, its analysis and one query with its evidence.
         const ProcessRun api = run_in_child([&] {
             using scalecert::Rational;
-            const scalecert::Scene s = scalecert::Scene::from_meshes(a, b, {Rational(1, 2), Rational(2)},
-                                                                     {Rational(1, 2), Rational(2)});
+            const scalecert::Scene s =
+                scalecert::Scene::from_meshes(a, b, {Rational(1, 2), Rational(2)}, {Rational(1, 2), Rational(2)});
             const scalecert::Analysis an(s);
             const scalecert::QueryResult res = an.query(Rational(1), Rational(1));
             return res.plane || res.common ? 0 : 4;
@@ -813,9 +813,8 @@ void compound_api_costs() {
         std::vector<std::vector<scalecert::Point>> parts[2];
         for (int i = 0; i < 2; ++i)
             for (const std::vector<Vec3q>& p : sc.P[i].parts) parts[i].push_back({p.begin(), p.end()});
-        const scalecert::Scene scene =
-            scalecert::Scene::from_parts(parts[0], parts[1], {sc.lo[0], sc.hi[0]}, {sc.lo[1], sc.hi[1]},
-                                         sc.P[0].seed, sc.P[1].seed);
+        const scalecert::Scene scene = scalecert::Scene::from_parts(parts[0], parts[1], {sc.lo[0], sc.hi[0]},
+                                                                    {sc.lo[1], sc.hi[1]}, sc.P[0].seed, sc.P[1].seed);
         auto t0 = Clock::now();
         const scalecert::Verdict v = scalecert::Analysis(scene).verdict(Rational(1), Rational(1));
         const double t_query = secs(t0);
@@ -849,9 +848,7 @@ void compound_api_costs() {
                 c.point = {scalecert::exact(20 + 10 * n(g)), scalecert::exact(18 + 18 * n(g)),
                            scalecert::exact(1 + n(g))};
                 break;
-            default:
-                c.kind = scalecert::ClaimKind::Distance;
-                c.value = scalecert::exact(u(g));
+            default: c.kind = scalecert::ClaimKind::Distance; c.value = scalecert::exact(u(g));
             }
             claims.push_back(std::move(c));
         }

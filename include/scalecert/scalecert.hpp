@@ -237,7 +237,7 @@ class Analysis {
 
 // Golden data of a family of scenes, as scalecert golden --family writes it: `count` scenes of
 // `family` at degeneracy eps > 0 (smaller is more degenerate), scene i drawn from `seed`, each as
-// NAME-i.scene.json, .golden.json and .golden.csv in `dir` (created), with a manifest; the same
+// NAME-i.scene.json, .golden.json and .golden.csv in `dir` (created); the same
 // bytes for the same arguments. families() lists the names. Throws InputError.
 void write_golden(const std::string& family, int count, std::uint64_t seed, const Rational& eps,
                   const std::string& dir);
