@@ -157,7 +157,13 @@ Scene Scene::load(const std::string& path) {
 
 Scene Scene::from_meshes(const std::string& p1_path, const std::string& p2_path, Interval i1, Interval i2,
                          bool parts_from_groups) {
-    if (!parts_from_groups) return Scene(read_mesh(p1_path), read_mesh(p2_path), std::move(i1), std::move(i2));
+    if (!parts_from_groups) {
+        std::string note[2];
+        std::vector<Point> p1 = read_mesh(p1_path, {}, &note[0]), p2 = read_mesh(p2_path, {}, &note[1]);
+        Scene s(std::move(p1), std::move(p2), std::move(i1), std::move(i2));
+        for (int i = 0; i < 2; ++i) s.d_->sc.P[i].note = std::move(note[i]);  // (the scene is not shared yet)
+        return s;
+    }
     internal::ReadOptions opt;
     opt.allow_parts = true;
     opt.parts_from_groups = true;
@@ -186,6 +192,16 @@ const std::vector<Point>& Scene::part(int i, size_t k) const {
         throw InputError("scene: P" + std::to_string(i + 1) + " has no part " + std::to_string(k) +
                          " (its parts are numbered from 0)");
     return P.parts.empty() ? P.points : P.parts[k];
+}
+const std::string& Scene::part_name(int i, size_t k) const {
+    part(i, k);  // i and k checked
+    return internal::part_name(d_->sc.P[i], k);
+}
+std::vector<std::string> Scene::notes() const {
+    std::vector<std::string> n;
+    for (const internal::PolyInput& P : d_->sc.P)
+        if (!P.note.empty()) n.push_back(P.note);
+    return n;
 }
 const std::vector<Point>& Scene::points(int i) const { return d_->sc.P[i & 1].points; }
 const Point& Scene::seed(int i) const { return d_->sc.P[i & 1].seed; }
