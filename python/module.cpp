@@ -585,6 +585,13 @@ py::array_t<std::int8_t> classify_array(const py::handle& h1, const py::handle& 
     return out;
 }
 
+// The scene's notes (Scene::notes) as UserWarnings; a warning made an error (-W error) raises.
+PyScene warn_notes(PyScene s) {
+    for (const std::string& n : s.scene.notes())
+        if (PyErr_WarnEx(PyExc_UserWarning, n.c_str(), 1) != 0) throw py::error_already_set();
+    return s;
+}
+
 PYBIND11_MODULE(scalecert, m) {
     m.doc() = "Exact, certified collision of uniformly scaled convex polyhedra and of objects made of convex parts.";
     m.attr("__version__") = scalecert::version();
@@ -624,20 +631,24 @@ PYBIND11_MODULE(scalecert, m) {
         .def_static(
             "load",
             [](const py::handle& path) {
-                return PyScene{scalecert::Scene::load(path_arg(path, "path")), nullptr};
+                return warn_notes(PyScene{scalecert::Scene::load(path_arg(path, "path")), nullptr});
             },
-            py::arg("path"), "a scene file (JSON); its objects given by vertices or as \"parts\"")
+            py::arg("path"),
+            "a scene file (JSON); its objects given by vertices or as \"parts\" (each may have a \"name\"); "
+            "a note on reading (an OBJ mesh with several groups read as one convex object) is a UserWarning")
         .def_static(
             "from_meshes",
             [](const py::handle& p1, const py::handle& p2, const py::handle& i1, const py::handle& i2,
                const py::handle& groups) {
-                return PyScene{scalecert::Scene::from_meshes(path_arg(p1, "p1"), path_arg(p2, "p2"), interval(i1, "I1"),
-                                                             interval(i2, "I2"), flag_arg(groups, "parts_from_groups")),
-                               nullptr};
+                return warn_notes(
+                    PyScene{scalecert::Scene::from_meshes(path_arg(p1, "p1"), path_arg(p2, "p2"), interval(i1, "I1"),
+                                                          interval(i2, "I2"), flag_arg(groups, "parts_from_groups")),
+                            nullptr});
             },
             py::arg("p1"), py::arg("p2"), py::arg("I1"), py::arg("I2"), py::arg("parts_from_groups") = false,
             "mesh files (.off .obj .ply .stl), each one convex object; with parts_from_groups=True each OBJ file's "
-            "groups with faces are its convex parts")
+            "groups with faces are its convex parts, named by their groups. An OBJ file with several groups read "
+            "as one convex object gives a UserWarning saying so")
         .def_property_readonly(
             "convex", [](const PyScene& s) { return s.scene.convex(); },
             "True for two convex objects; False when an object is made of parts")
@@ -645,6 +656,18 @@ PYBIND11_MODULE(scalecert, m) {
             "part_count",
             [](const PyScene& s, const py::handle& i) { return s.scene.part_count(count_arg(i, "i", 0, 1)); },
             py::arg("i"), "the number of parts of object i (0: P1, 1: P2); 1 for a convex object")
+        .def(
+            "part_name",
+            [](const PyScene& s, const py::handle& i, const py::handle& k) {
+                const int obj = count_arg(i, "i", 0, 1);
+                return s.scene.part_name(obj, static_cast<size_t>(count_arg(k, "k", 0, 2147483647L)));
+            },
+            py::arg("i"), py::arg("k"),
+            "the name of part k of object i (a scene's part \"name\", an OBJ group's name); \"\" when it has none")
+        .def(
+            "notes", [](const PyScene& s) { return s.scene.notes(); },
+            "remarks from reading the scene (an OBJ mesh with several groups read as one convex object): a list of "
+            "str, empty when there are none")
         .def("seeds",
              [](const PyScene& s) { return py::make_tuple(fractions(s.scene.seed(0)), fractions(s.scene.seed(1))); })
         .def(

@@ -520,6 +520,58 @@ BOOST_AUTO_TEST_CASE(typed_claims_on_parts_by_hand) {
     BOOST_TEST(na.items[2].reason == "normal: the zero vector");
 }
 
+// Parts named by OBJ groups: tests/data/compound_band.obj has the groups `right` (the box
+// [2,3] x [-1,1]^2) and `left` ([-3,-2] x [-1,1]^2), in that order; compound_band_groups.json is
+// the band with P1 from it. Only the right part meets P2's box (a_region_of_parts_by_hand), so
+// "right" labels P1's part wherever the region names a pair; P2, a convex object, has no name.
+BOOST_AUTO_TEST_CASE(parts_named_by_obj_groups) {
+    const std::string data = std::string(SCALECERT_SOURCE_DIR) + "/tests/data/";
+    const scalecert::Scene s = scalecert::Scene::load(data + "compound_band_groups.json");
+    BOOST_TEST(s.part_name(0, 0) == "right");
+    BOOST_TEST(s.part_name(0, 1) == "left");
+    BOOST_TEST(s.part_name(1, 0) == "");
+    BOOST_TEST((s.part(0, 1)[0] == scalecert::Point{R(-3), R(-1), R(-1)}));
+    BOOST_CHECK_THROW(s.part_name(0, 2), scalecert::InputError);
+    BOOST_CHECK_THROW(s.part_name(2, 0), scalecert::InputError);
+    BOOST_TEST(s.notes().empty());
+    const auto region = nlohmann::json::parse(scalecert::Analysis(s).region_json());
+    BOOST_TEST(region["pair_regions"].size() == 1u);
+    BOOST_TEST(region["pair_regions"][0]["P1_part_name"] == "right");
+    BOOST_TEST(!region["pair_regions"][0].contains("P2_part_name"));
+    for (int k : {1, 3}) BOOST_TEST(region["boundary"][0]["edges"][k]["on"]["P1_part_name"] == "right");
+    BOOST_TEST(region["growth_set"][0]["first_contact"]["P1_part_name"] == "right");
+    // The scene file keeps the names, and read back gives the same file.
+    const std::string json = s.json();
+    BOOST_TEST(json.find("\"name\": \"left\"") != std::string::npos);
+    const std::string path = "/tmp/scalecert-test-api-names-" + std::to_string(::getpid()) + ".json";
+    std::FILE* out = std::fopen(path.c_str(), "wb");
+    BOOST_TEST_REQUIRE(out != nullptr);
+    std::fwrite(json.data(), 1, json.size(), out);
+    std::fclose(out);
+    BOOST_TEST(scalecert::Scene::load(path).json() == json);
+    std::remove(path.c_str());
+    // Unnamed parts (from_parts) have "" for a name, and their scene file no "name".
+    const scalecert::Scene band = band_scene();
+    BOOST_TEST(band.part_name(0, 1) == "");
+    BOOST_TEST(band.json().find("\"name\"") == std::string::npos);
+    // From meshes: with parts_from_groups the groups' names; without, one hull each and a note.
+    const std::string obj = data + "compound_band.obj";
+    const scalecert::Interval i{R(1), R(2)};
+    const scalecert::Scene g = scalecert::Scene::from_meshes(obj, obj, i, i, true);
+    BOOST_TEST(g.part_name(1, 0) == "right");
+    BOOST_TEST(g.part_name(1, 1) == "left");
+    BOOST_TEST(g.notes().empty());
+    const scalecert::Scene h = scalecert::Scene::from_meshes(obj, obj, i, i);
+    BOOST_TEST(h.convex());
+    BOOST_TEST(h.part_name(0, 0) == "");
+    const std::vector<std::string> notes = h.notes();
+    BOOST_TEST_REQUIRE(notes.size() == 2u);
+    BOOST_TEST(notes[0] == obj +
+                               ": 2 groups with faces, read as one convex object (the hull of all its vertices); "
+                               "--parts-from-groups (or the scene key \"parts_from_groups\") reads a convex part per "
+                               "group");
+}
+
 namespace {
 // Random claims of every typed kind near two objects in [-4, 4]^3: doubles, as a program writes them.
 std::vector<scalecert::Claim> random_claims(size_t n, unsigned seed, bool depths) {

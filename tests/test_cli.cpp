@@ -1182,18 +1182,64 @@ BOOST_AUTO_TEST_CASE(region_of_compounds) {
     }
 }
 
+namespace {
+// How often `what` occurs in `text`.
+size_t occurrences(const std::string& text, const std::string& what) {
+    size_t n = 0;
+    for (size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + what.size())) ++n;
+    return n;
+}
+
+// A document with every part name ("P1_part_name", "P2_part_name") taken out.
+nlohmann::ordered_json without_part_names(nlohmann::ordered_json j) {
+    if (j.is_object()) {
+        for (const char* k : {"P1_part_name", "P2_part_name"}) j.erase(k);
+        for (auto& [k, v] : j.items()) v = without_part_names(v);
+    } else if (j.is_array()) {
+        for (auto& v : j) v = without_part_names(v);
+    }
+    return j;
+}
+}  // namespace
+
 BOOST_AUTO_TEST_CASE(region_parts_from_obj_groups) {
     // The oracle: compound_band.json's two parts, written here as OBJ groups `g right` and `g left`
-    // (the points from the JSON itself), give region's very bytes for the JSON scene: by
-    // --p1/--p2, by a scene's "mesh" with --parts-from-groups, and by the scene key. The file also
+    // (the points from the JSON itself), give region's very bytes for the JSON scene with the parts
+    // named "right" and "left": by --p1/--p2, by a scene's "mesh" with --parts-from-groups, and by
+    // the scene key; without the names, the bytes for compound_band.json itself. The file also
     // has a group without faces before the points (skipped), a vertex no face names (in no part;
     // the seeds are given), the left group's points after its `g` line and its faces by negative
     // numbers; two quads of each box (bottom and top) name all its 8 corners.
     const fs::path src = fs::path(SCALECERT_SOURCE_DIR) / "tests/data";
     const std::string band = (src / "compound_band.json").string();
-    const Run want = run("region " + band);
-    BOOST_TEST_REQUIRE(want.status == 0, want.err);
+    const Run unnamed = run("region " + band);
+    BOOST_TEST_REQUIRE(unnamed.status == 0, unnamed.err);
     const auto sc = nlohmann::json::parse(slurp(band));
+    nlohmann::ordered_json named = nlohmann::ordered_json::parse(slurp(band));
+    named["P1"]["parts"][0]["name"] = "right";
+    named["P1"]["parts"][1]["name"] = "left";
+    const Run want = run("region " + write("band_named.json", named.dump()).string());
+    BOOST_TEST_REQUIRE(want.status == 0, want.err);
+    BOOST_TEST(without_part_names(nlohmann::ordered_json::parse(want.out)) ==
+               nlohmann::ordered_json::parse(unnamed.out));
+    // By hand (test_compound, the_band_boundary_labelled_by_hand): only the right part (P1's part 0)
+    // meets the box, so "right" names P1's part in the one pair polygon, the two boundary edges on
+    // a contact (x = 3 on the box's x = 4, then x = 2 past its x = 5) and the growth set's first
+    // contact; "left" meets nothing and is named nowhere; P2, one convex object, has no name.
+    {
+        const auto w = nlohmann::ordered_json::parse(want.out);
+        BOOST_TEST(w["pair_regions"][0]["P1_part_name"] == "right");
+        BOOST_TEST(!w["pair_regions"][0].contains("P2_part_name"));
+        const auto& edges = w["boundary"][0]["edges"];
+        BOOST_TEST_REQUIRE(edges.size() == 4u);
+        for (int k : {1, 3}) {
+            BOOST_TEST(edges[k]["on"]["P1_part"] == 0);
+            BOOST_TEST(edges[k]["on"]["P1_part_name"] == "right");
+        }
+        BOOST_TEST(w["growth_set"][0]["first_contact"]["P1_part_name"] == "right");
+        BOOST_TEST(want.out.find("\"left\"") == std::string::npos);
+        BOOST_TEST(occurrences(want.out, "\"P1_part_name\": \"right\"") == 4u);
+    }
     auto v_lines = [](const nlohmann::json& pts) {
         std::string t;
         for (const auto& p : pts) t += "v " + p[0].dump() + " " + p[1].dump() + " " + p[2].dump() + "\n";
@@ -1230,14 +1276,22 @@ BOOST_AUTO_TEST_CASE(region_parts_from_obj_groups) {
               R"({"P1": {"mesh": "band_groups.obj", "parts_from_groups": false, "seed": [0, 0, 0]}, )" + box);
     BOOST_TEST(run("region --parts-from-groups " + off_key.string()).out == hull.out);
 
-    // One group is the plain mesh: the same region, default seeds (the mean of the points) included.
+    // One group is the plain mesh: the same region, default seeds (the mean of the points) included,
+    // but for the group's name on its part.
     const std::string right = v_lines(parts[0]["vertices"]);
     const fs::path one = write("one_group.obj", right + "g only\nf 1 3 4 2\nf 5 6 8 7\n");
     const std::string one_args = " --p1 " + one.string() + " --p2 " + box_obj.string() + " --i1 1,4 --i2 1,3";
     const Run plain = run("region" + one_args);
     BOOST_TEST_REQUIRE(plain.status == 0, plain.err);
     BOOST_TEST(nlohmann::json::parse(plain.out)["pair_regions"].size() == 1u);  // they meet: rho1 + rho2 >= 4
-    BOOST_TEST(run("region --parts-from-groups" + one_args).out == plain.out);
+    const auto only = nlohmann::ordered_json::parse(run("region --parts-from-groups" + one_args).out);
+    BOOST_TEST(only["pair_regions"][0]["P1_part_name"] == "only");
+    BOOST_TEST(without_part_names(only) == nlohmann::ordered_json::parse(plain.out));
+    // A group without a name ('g' alone) names no part, and its document is the plain one's.
+    const fs::path anon = write("anonymous_group.obj", right + "g\nf 1 3 4 2\nf 5 6 8 7\n");
+    BOOST_TEST(
+        run("region --parts-from-groups --p1 " + anon.string() + " --p2 " + box_obj.string() + " --i1 1,4 --i2 1,3")
+            .out == plain.out);
 
     // Bad groups: one line naming the group and its line, exit 2, no output.
     const std::string tail = " --p2 " + box_obj.string() + " --i1 1,4 --i2 1,3";
@@ -1255,6 +1309,13 @@ BOOST_AUTO_TEST_CASE(region_parts_from_obj_groups) {
     expect_error("face past the vertices", R("far_face.obj", tetra + "f 1 2 5\n"),
                  "line 5: face vertex '5' is not a vertex number (1 to 4");
     expect_error("face vertex 0", R("zero_face.obj", tetra + "f 0 1 2\n"), "face vertex '0' is not a vertex number");
+    // A group's name names its part: a second group with faces of one name is refused (lines: the
+    // tetrahedron's 4 vertices, then 'g a' on line 5, 'g b' on 8, 'g a' again on 11). A name
+    // whose first group has no faces names no part, and may come again.
+    expect_error("two groups of one name",
+                 R("same_name.obj", tetra + "g a\nf 1 2 3\nf 1 2 4\ng b\nf 1 2 3\nf 1 3 4\ng a\nf 1 2 3\nf 2 3 4\n"),
+                 "same_name.obj: group 'a' (line 11): the name of the group on line 5 too");
+    BOOST_TEST(run(R("faceless_first.obj", tetra + "g a\ng a\nf 1 2 3\nf 1 2 4\n")).status == 0);
     expect_error("negative before its vertex", R("neg_face.obj", "v 0 0 0\nf -1 -2 -1\n" + tetra),
                  "face vertex '-2' is not a vertex number");
     expect_error("two-vertex face", R("short_face.obj", tetra + "f 1 2\n"),
@@ -1287,6 +1348,148 @@ BOOST_AUTO_TEST_CASE(region_parts_from_obj_groups) {
                  "the touching curve is defined for two convex objects");
     expect_error("flag and the curve", "curve --parts-from-groups" + meshes,
                  "the touching curve is defined for two convex objects");
+}
+
+// Parts named in a scene file ("name" on a part): the band (tests/test_compound.cpp) with P1's parts
+// "right" and "left" and P2 given as one part "box". Values by hand: the right part spans
+// [2ρ1, 3ρ1] in x, the box [9/2 − ρ2/2, 9/2 + ρ2/2]; the left part [−3ρ1, −2ρ1] never meets it.
+// At (3, 2) the right part [6, 9] is 1/2 past the box [7/2, 11/2] (the least distance: right and
+// box); at (3/2, 2) the point (4, 0, 0) lies in the right part [3, 9/2] and in the box; at (7/6, 2)
+// they touch (3ρ1 = 7/2 = 9/2 − ρ2/2). Names come beside the indices, never instead, and the
+// certificates carry none: their bytes are those of the same scene without names.
+BOOST_AUTO_TEST_CASE(parts_named_in_a_scene) {
+    const std::string src = std::string(SCALECERT_SOURCE_DIR) + "/tests/data/";
+    nlohmann::ordered_json sc = nlohmann::ordered_json::parse(slurp(src + "compound_band.json"));
+    sc["P2"] = nlohmann::ordered_json{{"parts", nlohmann::ordered_json::array({{{"vertices", sc["P2"]["vertices"]}}})},
+                                      {"seed", sc["P2"]["seed"]}};
+    const std::string plain = write("band_parts.json", sc.dump()).string();
+    sc["P1"]["parts"][0]["name"] = "right";
+    sc["P1"]["parts"][1]["name"] = "left";
+    sc["P2"]["parts"][0]["name"] = "box";
+    const std::string named = write("band_names.json", sc.dump()).string();
+
+    const Run region = run("region " + named + " --at 7/6,2");
+    BOOST_TEST_REQUIRE(region.status == 0, region.err);
+    const auto rj = nlohmann::ordered_json::parse(region.out);
+    BOOST_TEST(rj["at"]["verdict"] == "touching");
+    BOOST_TEST(rj["at"]["pair"] ==
+               nlohmann::ordered_json::parse(
+                   R"({"P1_part": 0, "P1_part_name": "right", "P2_part": 0, "P2_part_name": "box"})"));
+    BOOST_TEST(rj["boundary"][0]["edges"][3]["on"]["P1_part_name"] == "right");
+    BOOST_TEST(rj["boundary"][0]["edges"][3]["on"]["P2_part_name"] == "box");
+    BOOST_TEST(region.out.find("\"left\"") == std::string::npos);
+    BOOST_TEST(without_part_names(rj) == nlohmann::ordered_json::parse(run("region " + plain + " --at 7/6,2").out));
+
+    const std::string claims = src + "compound_band_claims.json";
+    const Run fp = run("certify-fp " + named + " " + claims + " --json");
+    BOOST_TEST(fp.status == 1);  // the plane claim is wrong: no plane separates (certify_fp_on_compounds)
+    const auto fj = nlohmann::ordered_json::parse(fp.out)["claims"];
+    BOOST_TEST(fj[0]["pair"].is_null());
+    BOOST_TEST(!fj[0].contains("pair_names"));
+    BOOST_TEST(fj[1]["exact_pair"] == nlohmann::ordered_json::parse("[0, 0]"));
+    BOOST_TEST(fj[1]["exact_pair_names"] == nlohmann::ordered_json::parse(R"(["right", "box"])"));
+    BOOST_TEST(fj[1]["closest_in_P1_part_name"] == "right");
+    BOOST_TEST(fj[1]["closest_in_P2_part_name"] == "box");
+    BOOST_TEST(fj[3]["in_P1_part"] == 0);
+    BOOST_TEST(fj[3]["in_P1_part_name"] == "right");
+    BOOST_TEST(fj[3]["in_P2_part_name"] == "box");
+    BOOST_TEST(fj[4]["pair_names"] == nlohmann::ordered_json::parse(R"(["right", "box"])"));
+    const Run text = run("certify-fp " + named + " " + claims);
+    BOOST_TEST(text.out.find("(distance ~0.5, parts 0 ('right') and 0 ('box'))") != std::string::npos, text.out);
+    BOOST_TEST(text.out.find("in P1 part 0 ('right'), in P2 part 0 ('box')") != std::string::npos, text.out);
+    const Run plain_text = run("certify-fp " + plain + " " + claims);
+    BOOST_TEST(plain_text.out.find("(distance ~0.5, parts 0 and 0)") != std::string::npos, plain_text.out);
+    BOOST_TEST(plain_text.out.find("('") == std::string::npos, plain_text.out);
+
+    // Certificates: the bytes of the scene without names.
+    const fs::path c[2] = {workdir() / "named.partition.json", workdir() / "plain.partition.json"};
+    const fs::path j[2] = {workdir() / "named.judgements.json", workdir() / "plain.judgements.json"};
+    const std::string scene[2] = {named, plain};
+    std::string q[2];
+    for (int i = 0; i < 2; ++i) {
+        fs::remove(c[i]);
+        fs::remove(j[i]);
+        BOOST_TEST(run("partition " + scene[i] + " --out " + c[i].string()).status == 0);
+        BOOST_TEST(run("certify-fp " + scene[i] + " " + claims + " --certificate " + j[i].string()).status == 1);
+        q[i] = run("query " + scene[i] + " 7/6 2 --json").out;
+    }
+    BOOST_TEST(slurp(c[0]) == slurp(c[1]));
+    BOOST_TEST(slurp(j[0]) == slurp(j[1]));
+    BOOST_TEST(q[0] == q[1]);
+    BOOST_TEST(q[0].find("\"verdict\": \"touching\"") != std::string::npos);
+    BOOST_TEST(std::system((std::string(SCALECERT_CHECK_BIN) + " " + j[0].string() + " >/dev/null").c_str()) == 0);
+
+    // golden: the region document with the names, and the scene's copy with them, which read again
+    // gives the same copy, byte for byte.
+    const fs::path gd = workdir() / "golden-names", again = workdir() / "golden-names-again";
+    fs::remove_all(gd);
+    fs::remove_all(again);
+    BOOST_TEST_REQUIRE(run("golden " + named + " --dir " + gd.string()).status == 0);
+    const auto gold = nlohmann::ordered_json::parse(slurp(gd / "band_names.golden.json"));
+    BOOST_TEST(gold["growth_set"][0]["first_contact"]["P1_part_name"] == "right");
+    const std::string copy = slurp(gd / "band_names.scene.json");
+    const auto cj = nlohmann::ordered_json::parse(copy);
+    BOOST_TEST(cj["P1"]["parts"][1]["name"] == "left");
+    BOOST_TEST(cj["P2"]["parts"][0]["name"] == "box");
+    BOOST_TEST_REQUIRE(run("golden " + (gd / "band_names.scene.json").string() + " --dir " + again.string()).status ==
+                       0);
+    BOOST_TEST(slurp(again / "band_names.scene.json") == copy);
+    BOOST_TEST(slurp(again / "band_names.golden.json") == slurp(gd / "band_names.golden.json"));
+
+    // A flat named part is refused naming it.
+    nlohmann::ordered_json flat = sc;
+    flat["P1"]["parts"][1]["vertices"] = nlohmann::ordered_json::parse("[[0,0,0],[1,0,0],[0,1,0],[1,1,0]]");
+    expect_error("flat named part", "region " + write("band_flat_named.json", flat.dump()).string(),
+                 "P1.parts[1] ('left'): fewer than 4 affinely independent vertices");
+    // Bad names: one line naming the field, exit 2.
+    auto with_name = [&](const std::string& file, int k, const nlohmann::ordered_json& name) {
+        nlohmann::ordered_json b = sc;
+        b["P1"]["parts"][k]["name"] = name;
+        return write(file, b.dump()).string();
+    };
+    for (const char* c : {"region ", "query ", "certify-fp "}) {
+        const std::string cmd = c;
+        const std::string rest = cmd == "query " ? " 1 1" : cmd == "certify-fp " ? " " + claims : "";
+        expect_error(cmd + "duplicate name", cmd + with_name("name_twice.json", 1, "right") + rest,
+                     "P1.parts[1].name: 'right' names P1.parts[0] too");
+        expect_error(cmd + "empty name", cmd + with_name("name_empty.json", 0, "") + rest,
+                     "P1.parts[0].name: an empty name");
+        expect_error(cmd + "number as name", cmd + with_name("name_number.json", 1, 3) + rest,
+                     "P1.parts[1].name: expected a string");
+    }
+    // Two objects may use one name: names are an object's own.
+    BOOST_TEST(run("region " + with_name("name_shared.json", 1, "box")).status == 0);
+}
+
+// An OBJ mesh with several groups read as one convex object (no --parts-from-groups): query,
+// certify-fp and golden say so on stderr and go on. tests/data/compound_band.obj read whole is
+// the box [−3, 3] x [−1, 1]^2 about its mean 0; against the box [4, 5] x [−1, 1]^2 about its mean
+// (9/2, 0, 0) they meet iff 3ρ1 >= 9/2 − ρ2/2: separated at (1, 1), touching at (1, 3).
+BOOST_AUTO_TEST_CASE(a_mesh_of_groups_read_whole_gets_a_note) {
+    const std::string obj = std::string(SCALECERT_SOURCE_DIR) + "/tests/data/compound_band.obj";
+    const fs::path box = write("note_box.obj",
+                               "v 4 -1 -1\nv 5 -1 -1\nv 4 1 -1\nv 5 1 -1\n"
+                               "v 4 -1 1\nv 5 -1 1\nv 4 1 1\nv 5 1 1\n");
+    const std::string meshes = " --p1 " + obj + " --p2 " + box.string() + " --i1 1,4 --i2 1,3";
+    const std::string note = "scalecert: note: " + obj + ": 2 groups with faces, read as one convex object";
+    const Run q = run("query 1 1" + meshes);
+    BOOST_TEST(q.status == 0);
+    BOOST_TEST(q.out == "separated\n");
+    BOOST_TEST(q.err.find(note) == 0u, q.err);
+    const Run fp = run("certify-fp " + write("note_claims.txt", "1 1 separated\n1 3 touching\n").string() + meshes);
+    BOOST_TEST(fp.status == 0, fp.out);
+    BOOST_TEST(fp.err.find(note) == 0u, fp.err);
+    const Run g = run("golden" + meshes + " --dir " + (workdir() / "golden-note").string());
+    BOOST_TEST(g.status == 0);
+    BOOST_TEST(g.err.find(note) == 0u, g.err);
+    // The same mesh named by a scene file: the note too.
+    const fs::path scene = write("note_scene.json", "{\"P1\": {\"mesh\": \"" + obj +
+                                                        "\"}, \"P2\": {\"mesh\": \"note_box.obj\"}, \"I1\": [1, 4], "
+                                                        "\"I2\": [1, 3]}");
+    const Run qs = run("query " + scene.string() + " 1 3");
+    BOOST_TEST(qs.status == 0);
+    BOOST_TEST(qs.out == "touching\n");
+    BOOST_TEST(qs.err.find(note) == 0u, qs.err);
 }
 
 BOOST_AUTO_TEST_CASE(certify_fp_on_compounds) {

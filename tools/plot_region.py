@@ -5,7 +5,8 @@ usage: tools/plot_region.py SCENE.json REGION.json OUTDIR [--at RHO1,RHO2]
 
   region_rho  I1 x I2 shaded overlap (the union, its holes, the pairs meeting without area) and
               separated; each pair polygon outlined; each boundary edge on a part pair's contact
-              labelled with the pair and contact ("P1[1]-P2[0] FF"); the switch points with the
+              labelled with the pair and contact ("P1[1]-P2[0] FF", a part named in the region
+              JSON by its name: "P1[foot]-P2[0] FF"); the switch points with the
               contacts there; the growth set on the diagonal rho1 = rho2; the point of the 3-D view
   region_3d   the parts at (RHO1, RHO2), each object's scaled about its seed, those that touch
               or overlap there highlighted and the others faded. Default point: the first switch
@@ -47,8 +48,33 @@ def point(p):
     return tuple(Fraction(c) for c in p)
 
 
+def part_name(c, obj):
+    """A part of a pair entry ({"P1_part": 3, "P1_part_name": "foot", ...}): 'P1[foot]' when the
+    region JSON names it, else 'P1[3]'."""
+    return f"{obj}[{c.get(obj + '_part_name', c[obj + '_part'])}]"
+
+
 def pair_name(c):
-    return f"P1[{c['P1_part']}]-P2[{c['P2_part']}]"
+    return f"{part_name(c, 'P1')}-{part_name(c, 'P2')}"
+
+
+def part_names(region):
+    """{(object, index): name} of every part the region JSON names ("P1_part_name" beside "P1_part")."""
+    names = {}
+
+    def walk(x):
+        if isinstance(x, dict):
+            for obj in ("P1", "P2"):
+                if obj + "_part_name" in x:
+                    names[(obj, x[obj + "_part"])] = x[obj + "_part_name"]
+            for v in x.values():
+                walk(v)
+        elif isinstance(x, list):
+            for v in x:
+                walk(v)
+
+    walk(region)
+    return names
 
 
 def fmt(x):
@@ -286,6 +312,15 @@ def object_parts(scene, name):
 
 def region_3d(scene, region, at, outdir):
     meeting = meeting_at(region, at, rectangle(scene))
+    names = part_names(region)
+    for obj in ("P1", "P2"):  # and the scene's own names, of parts in no pair the region lists
+        for k, p in enumerate(scene[obj].get("parts", [])):
+            if isinstance(p, dict) and isinstance(p.get("name"), str):
+                names.setdefault((obj, k), p["name"])
+
+    def entry(obj, k):
+        return {f"{obj}_part": k, **({f"{obj}_part_name": names[(obj, k)]} if (obj, k) in names else {})}
+
     fig = plt.figure(figsize=(6.5, 5.5))
     ax = fig.add_subplot(projection="3d")
     drawn = []
@@ -300,7 +335,7 @@ def region_3d(scene, region, at, outdir):
                                                  edgecolor="k" if lit else "gray", lw=0.8 if lit else 0.3))
             drawn += V
             top = [sum(v[0] for v in V) / len(V), sum(v[1] for v in V) / len(V), max(v[2] for v in V)]
-            ax.text(*top, f"{name}[{k}]", fontsize=8, color="k" if lit else "gray", ha="center", va="bottom", zorder=1000,
+            ax.text(*top, part_name(entry(name, k), name), fontsize=8, color="k" if lit else "gray", ha="center", va="bottom", zorder=1000,
                     bbox=dict(boxstyle="round,pad=0.1", fc="white", ec="none", alpha=0.7))
         ax.scatter(*[q(x) for x in seed], marker="+", color=color, s=40)
     lo = [min(v[t] for v in drawn) for t in range(3)]
@@ -311,7 +346,7 @@ def region_3d(scene, region, at, outdir):
     for axis, a, b in zip((ax.xaxis, ax.yaxis, ax.zaxis), lo, hi):  # fewer ticks on a shorter side
         axis.set_major_locator(MaxNLocator(nbins=max(1, round(4 * (b - a) / max(h - l for l, h in zip(lo, hi))))))
     ax.view_init(elev=22, azim=-62)
-    said = [f"{pair_name({'P1_part': p[0], 'P2_part': p[1]})} {state}" + (f" {c}" if c else "")
+    said = [f"{pair_name({**entry('P1', p[0]), **entry('P2', p[1])})} {state}" + (f" {c}" if c else "")
             for p, (state, c) in sorted(meeting.items())] or ["no parts meet"]
     handles = [Patch(facecolor="tab:blue", alpha=0.55, edgecolor="k", label="P1(rho1) parts meeting there"),
                Patch(facecolor="tab:orange", alpha=0.55, edgecolor="k", label="P2(rho2) parts meeting there"),

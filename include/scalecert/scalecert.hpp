@@ -72,6 +72,12 @@ class Scene {
     size_t part_count(int i) const;                         // 1 for a convex object
     const std::vector<Point>& points(int i) const;          // i = 0 (P1) or 1 (P2): all its points, as given
     const std::vector<Point>& part(int i, size_t k) const;  // the points of part k of object i
+    // The name of part k of object i: a scene file's part "name", or an OBJ group's name read as a
+    // part; "" when it has none. The same checks as part(i, k).
+    const std::string& part_name(int i, size_t k) const;
+    // Remarks for the user from reading the scene (an OBJ mesh with two or more groups read as one
+    // convex object, which parts_from_groups reads a part per group); empty when there are none.
+    std::vector<std::string> notes() const;
     const Point& seed(int i) const;
     Interval range(int i) const;
     std::string json() const;  // the scene file, every number exact

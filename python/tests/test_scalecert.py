@@ -572,9 +572,50 @@ def test_region_from_meshes_reads_groups_as_parts(tmp_path):
     B.write_text("".join("v %d %d %d\n" % tuple(v) for v in box(2, 0, 2, 3, 1, 3)) + "f 1 2 4 3\nf 5 6 8 7\n")
     r = scalecert.Scene.from_meshes(L, str(B), ("1/2", 2), ("1/2", 2), parts_from_groups=True)
     assert r.verdict(1, 1) == scalecert.Verdict.Separated
-    assert scalecert.Scene.from_meshes(L, B, ("1/2", 2), ("1/2", 2), parts_from_groups=False).verdict(1, 1) == scalecert.Verdict.Touching
+    assert [r.part_name(0, 0), r.part_name(0, 1), r.part_name(1, 0)] == ["foot", "leg", ""]
+    with pytest.warns(UserWarning, match="2 groups with faces, read as one convex object"):
+        hull = scalecert.Scene.from_meshes(L, B, ("1/2", 2), ("1/2", 2), parts_from_groups=False)
+    assert hull.verdict(1, 1) == scalecert.Verdict.Touching
+    assert len(hull.notes()) == 1 and hull.notes()[0].startswith(str(L) + ": 2 groups with faces")
     with pytest.raises(scalecert.InputError, match="no groups"):
         scalecert.Scene.from_meshes(SRC / "examples" / "box.stl", B, (1, 2), (1, 2), parts_from_groups=True)
+
+
+def test_parts_named_by_groups_and_in_scenes(tmp_path):
+    # tests/data/compound_band.obj has the groups `right` and `left`, in that order; read whole it
+    # is one hull, with a warning. In a scene file a part's "name" names it; an empty or repeated
+    # name, or one that is no string, is refused naming the field. The band's right part is the
+    # one that meets P2's box (tests/test_compound.cpp), so the region names it "right".
+    obj = SRC / "tests" / "data" / "compound_band.obj"
+    s = scalecert.Scene.from_meshes(obj, obj, (1, 2), (1, 2), parts_from_groups=True)
+    assert [s.part_name(i, k) for i in (0, 1) for k in (0, 1)] == ["right", "left", "right", "left"]
+    assert s.notes() == []
+    with pytest.raises(scalecert.InputError, match="has no part 2"):
+        s.part_name(0, 2)
+    with pytest.raises(scalecert.InputError, match="i: expected an int from 0 to 1"):
+        s.part_name(2, 0)
+    with pytest.warns(UserWarning) as said:
+        whole = scalecert.Scene.from_meshes(obj, obj, (1, 2), (1, 2))
+    assert [str(w.message) for w in said] == whole.notes() and len(whole.notes()) == 2
+    assert whole.convex and whole.part_name(0, 0) == ""
+    g = scalecert.Scene.load(SRC / "tests" / "data" / "compound_band_groups.json")
+    assert g.region()["pair_regions"][0]["P1_part_name"] == "right"
+    sc = json.loads((SRC / "tests" / "data" / "compound_band.json").read_text())
+    sc["P1"]["parts"][0]["name"] = "right"
+    named = tmp_path / "named.json"
+    named.write_text(json.dumps(sc))
+    n = scalecert.Scene.load(named)
+    assert (n.part_name(0, 0), n.part_name(0, 1)) == ("right", "")
+    assert json.loads(n.json())["P1"]["parts"][0]["name"] == "right"
+    assert "name" not in json.loads(n.json())["P1"]["parts"][1]
+    for name, msg in ((" ", None), ("", "an empty name"), (3, "expected a string"), ("right", "names P1.parts.0. too")):
+        sc["P1"]["parts"][1]["name"] = name
+        named.write_text(json.dumps(sc))
+        if msg is None:
+            assert scalecert.Scene.load(named).part_name(0, 1) == " "
+        else:
+            with pytest.raises(scalecert.InputError, match="P1.parts.1..name: .*" + msg):
+                scalecert.Scene.load(named)
 
 
 def test_region_certify_over_arrays_by_hand():

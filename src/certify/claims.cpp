@@ -334,11 +334,37 @@ void errors_sq(Json& o, const Q& claimed, const Q& E) {
 std::string at(const TypedClaim& c) { return "(" + num(c.rho1) + ", " + num(c.rho2) + ")"; }
 // A point's part on an object made of parts: its number, or false when no part holds it.
 Json part_or_false(int k) { return k >= 0 ? Json(k) : Json(false); }
-std::string part_or_no(int k) { return k >= 0 ? "part " + std::to_string(k) : "NO"; }
+// After part k of object i in a text line: " ('foot')", its name, or "" when it has none.
+std::string name_of(const ExactScene& sc, int i, int k) {
+    const std::string& n = part_name(sc.P[i], static_cast<size_t>(k));
+    return n.empty() ? "" : " (" + in_quotes(n) + ")";
+}
+// Part k of object i in a text line: "part 3", "part 3 ('foot')" when it has a name, "NO" for none.
+std::string part_or_no(const ExactScene& sc, int i, int k) {
+    return k < 0 ? "NO" : "part " + std::to_string(k) + name_of(sc, i, k);
+}
+// Beside o[key], part k of object i: o[key + "_name"], its name, when it has one.
+void put_part_name(Json& o, const std::string& key, const ExactScene& sc, int i, int k) {
+    if (k >= 0 && !part_name(sc.P[i], static_cast<size_t>(k)).empty())
+        o[key + "_name"] = part_name(sc.P[i], static_cast<size_t>(k));
+}
+// A part pair [a, b] as o[key], and beside it o[key + "_names"], [name or null, name or null], when
+// either part has a name (null for the pair itself: no pair).
+void put_part_pair(Json& o, const std::string& key, const ExactScene& sc, int a, int b) {
+    if (a < 0) {
+        o[key] = nullptr;
+        return;
+    }
+    o[key] = Json::array({a, b});
+    const std::string &n1 = part_name(sc.P[0], static_cast<size_t>(a)),
+                      &n2 = part_name(sc.P[1], static_cast<size_t>(b));
+    if (!n1.empty() || !n2.empty())
+        o[key + "_names"] = Json::array({n1.empty() ? Json(nullptr) : Json(n1), n2.empty() ? Json(nullptr) : Json(n2)});
+}
 
-// A JSON claim's report object (beside its index and kind) and its text line; `parts`: the claim
-// was on objects made of parts.
-void describe(const TypedClaim& c, const Judged& g, bool parts, Json& o, std::string& text) {
+// A JSON claim's report object (beside its index and kind) and its text line; `parts`: the scene
+// when the claim was on objects made of parts, else null.
+void describe(const TypedClaim& c, const Judged& g, const ExactScene* parts, Json& o, std::string& text) {
     auto rhos = [&] {
         put_exact(o, "rho1", c.rho1);
         put_exact(o, "rho2", c.rho2);
@@ -364,7 +390,7 @@ void describe(const TypedClaim& c, const Judged& g, bool parts, Json& o, std::st
         rhos();
         if (parts) {
             o["exact"] = verdict_name(*g.exact_verdict);
-            o["pair"] = g.part1 < 0 ? Json(nullptr) : Json::array({g.part1, g.part2});
+            put_part_pair(o, "pair", *parts, g.part1, g.part2);
             o["claimed"] = claimed_name(c.verdict);
         } else {
             o["claimed"] = claimed_name(c.verdict);
@@ -467,9 +493,11 @@ void describe(const TypedClaim& c, const Judged& g, bool parts, Json& o, std::st
     case ClaimType::Witness:
         if (parts) {
             o["in_P1_part"] = part_or_false(g.in_part1);
+            put_part_name(o, "in_P1_part", *parts, 0, g.in_part1);
             o["in_P2_part"] = part_or_false(g.in_part2);
-            text =
-                "witness point at " + at(c) + ": in P1 " + part_or_no(g.in_part1) + ", in P2 " + part_or_no(g.in_part2);
+            put_part_name(o, "in_P2_part", *parts, 1, g.in_part2);
+            text = "witness point at " + at(c) + ": in P1 " + part_or_no(*parts, 0, g.in_part1) + ", in P2 " +
+                   part_or_no(*parts, 1, g.in_part2);
         } else {
             o["in_P1"] = g.in1;
             o["in_P2"] = g.in2;
@@ -483,15 +511,20 @@ void describe(const TypedClaim& c, const Judged& g, bool parts, Json& o, std::st
         errors_sq(o, c.value, *g.exact_squared);
         put_point(o, "exact_closest_P1", g.exact_p1);
         put_point(o, "exact_closest_P2", g.exact_p2);
-        if (parts) o["exact_pair"] = Json::array({g.part1, g.part2});
+        if (parts) put_part_pair(o, "exact_pair", *parts, g.part1, g.part2);
         o["value_right"] = *g.value_right;
         text = "distance at " + at(c) + ": claimed " + num(c.value) + ", exact squared " + num(*g.exact_squared) +
                " (distance ~" + dbl(sqrt_minus_rn(*g.exact_squared, Q(0))) +
-               (parts ? ", parts " + std::to_string(g.part1) + " and " + std::to_string(g.part2) : std::string()) + ")";
+               (parts ? ", parts " + std::to_string(g.part1) + name_of(*parts, 0, g.part1) + " and " +
+                            std::to_string(g.part2) + name_of(*parts, 1, g.part2)
+                      : std::string()) +
+               ")";
         if (c.closest) {
             if (parts) {
                 o["closest_in_P1_part"] = part_or_false(g.in_part1);
+                put_part_name(o, "closest_in_P1_part", *parts, 0, g.in_part1);
                 o["closest_in_P2_part"] = part_or_false(g.in_part2);
+                put_part_name(o, "closest_in_P2_part", *parts, 1, g.in_part2);
             } else {
                 o["closest_in_P1"] = g.in1;
                 o["closest_in_P2"] = g.in2;
@@ -590,8 +623,8 @@ TypedClaim read_line(const std::vector<std::string>& w, bool exact_decimals, boo
 }
 
 // A line's report object (beside its line number) and text; w: the line's words as written.
-void describe_line(const TypedClaim& c, const Judged& g, bool parts, const std::vector<std::string>& w, Json& o,
-                   std::string& text) {
+void describe_line(const TypedClaim& c, const Judged& g, const ExactScene* parts, const std::vector<std::string>& w,
+                   Json& o, std::string& text) {
     if (!c.no_answer.empty()) {
         o["claim"] = c.type == ClaimType::Growth ? "growth" : "curve";
         if (c.type == ClaimType::CurvePoint) put_exact(o, "rho1", c.rho1);
@@ -624,7 +657,7 @@ void describe_line(const TypedClaim& c, const Judged& g, bool parts, const std::
         put_exact(o, "rho2", c.rho2);
         o["exact"] = e;
         if (parts) {
-            o["pair"] = g.part1 < 0 ? Json(nullptr) : Json::array({g.part1, g.part2});
+            put_part_pair(o, "pair", *parts, g.part1, g.part2);
             text = "(" + num(c.rho1, 17) + ", " + num(c.rho2, 17) + ") claimed " + v + ": exact " + e;
         } else {
             put_exact(o, "rho2_minus_curve", g.rho2_minus_curve);
@@ -699,7 +732,7 @@ struct Run {
 };
 template <class Rules>
 Run run_claims(Rules& rules, const std::string& claims, const std::string& name, const ClaimOptions& opt, bool json,
-               bool parts, bool prove) {
+               const ExactScene* parts, bool prove) {
     Run r;
     auto one = [&](const TypedClaim& c, size_t index, Json& o, auto&& describe_it) {
         Proof p;
@@ -715,7 +748,7 @@ Run run_claims(Rules& rules, const std::string& claims, const std::string& name,
     };
     if (json) {
         const JNode root = claims_root(claims, name);
-        ClaimReader reader(name, opt.exact_decimals, parts);
+        ClaimReader reader(name, opt.exact_decimals, parts != nullptr);
         for (size_t i = 0; i < root.find("claims")->items.size(); ++i) {
             const TypedClaim c = reader.read(root.find("claims")->items[i], i);
             Json o;
@@ -733,7 +766,7 @@ Run run_claims(Rules& rules, const std::string& claims, const std::string& name,
         std::vector<std::string> w;
         for (std::string t; ls >> t;) w.push_back(t);
         if (w.empty()) continue;
-        const TypedClaim c = read_line(w, opt.exact_decimals, parts, name + ": line " + std::to_string(no));
+        const TypedClaim c = read_line(w, opt.exact_decimals, parts != nullptr, name + ": line " + std::to_string(no));
         Json o;
         o["line"] = no;
         // The certificate's entries are numbered by line.
@@ -748,7 +781,7 @@ std::string certify_fp(const ClaimModels& models, const std::string& claims, con
                        const ClaimOptions& opt, long* wrong, long* count, std::string* certificate) {
     const bool json = is_json(claims, opt, name);
     ConvexRules rules(models, opt.tolerance);
-    const Run r = run_claims(rules, claims, name, opt, json, false, certificate != nullptr);
+    const Run r = run_claims(rules, claims, name, opt, json, nullptr, certificate != nullptr);
     if (certificate) *certificate = judgements_text(models.document(), opt.tolerance, std::move(r.entries));
     if (!json) return report(std::move(r.arr), r.text, r.n, r.bad, opt.json, nullptr, wrong, count);
     return report(std::move(r.arr), r.text, r.n, r.bad, opt.json, &opt.tolerance, wrong, count,
@@ -759,7 +792,7 @@ std::string certify_fp(CompoundJudge& judge, const std::string& claims, const st
                        const ClaimOptions& opt, long* wrong, long* count, std::string* certificate) {
     const bool json = is_json(claims, opt, name);
     PartsRules rules(judge, opt.tolerance);
-    const Run r = run_claims(rules, claims, name, opt, json, true, certificate != nullptr);
+    const Run r = run_claims(rules, claims, name, opt, json, &judge.scene(), certificate != nullptr);
     if (certificate)
         *certificate = compound_judgements_text(judge.scene(), json ? opt.tolerance : Q(0), std::move(r.entries));
     return report(std::move(r.arr), r.text, r.n, r.bad, opt.json, json ? &opt.tolerance : nullptr, wrong, count);

@@ -22,16 +22,23 @@ Json points_json(const std::vector<Vec3q>& pts) {
 
 }  // namespace
 
-Json scene_file_json(const ExactScene& sc) { return sc.made_of_parts() ? compound_scene_json(sc) : scene_json(sc); }
+Json scene_file_json(const ExactScene& sc) {
+    return sc.made_of_parts() ? compound_scene_json(sc, true) : scene_json(sc);
+}
 
-Json compound_scene_json(const ExactScene& sc) {
+Json compound_scene_json(const ExactScene& sc, bool with_names) {
     Json s;
     const char* names[2] = {"P1", "P2"};
     for (int i = 0; i < 2; ++i) {
         const PolyInput& in = sc.P[i];
         Json parts = Json::array();
         if (in.parts.empty()) parts.push_back(Json{{"vertices", points_json(in.points)}});
-        for (const std::vector<Vec3q>& p : in.parts) parts.push_back(Json{{"vertices", points_json(p)}});
+        for (size_t k = 0; k < in.parts.size(); ++k) {
+            Json p;
+            if (with_names && !part_name(in, k).empty()) p["name"] = part_name(in, k);
+            p["vertices"] = points_json(in.parts[k]);
+            parts.push_back(std::move(p));
+        }
         s[names[i]] = Json{{"parts", parts},
                            {"seed", Json::array({to_exact_string(in.seed[0]), to_exact_string(in.seed[1]),
                                                  to_exact_string(in.seed[2])})}};
@@ -176,21 +183,37 @@ Json compound_partition_json(const ExactScene& sc, const CompoundRegion& r) {
     return j;
 }
 
+Json part_pair_json(const ExactScene& sc, int a, int b) {
+    Json j;
+    const int k[2] = {a, b};
+    for (int i = 0; i < 2; ++i) {
+        const std::string key = i ? "P2_part" : "P1_part";
+        j[key] = k[i];
+        if (k[i] >= 0 && !part_name(sc.P[i], static_cast<size_t>(k[i])).empty())
+            j[key + "_name"] = part_name(sc.P[i], static_cast<size_t>(k[i]));
+    }
+    return j;
+}
+
 namespace {
 Json ring_json(const std::vector<Point2q>& p) {
     Json a = Json::array();
     for (const Point2q& x : p) a.push_back(Json::array({to_exact_string(x[0]), to_exact_string(x[1])}));
     return a;
 }
+// A pair's entry with its polygon's vertices.
+Json with_vertices(Json pair, const std::vector<Point2q>& polygon) {
+    pair["vertices"] = ring_json(polygon);
+    return pair;
+}
 Json point_json(const Point2q& x) { return Json::array({to_exact_string(x[0]), to_exact_string(x[1])}); }
 // A pair's contact: its parts, label, features (vertex indices as each part lists its points),
 // tight normals, and the line a rho1 + b rho2 = c that holds the edge (the pair meets on its >= side).
-Json contact_json(const CompoundRegion& r, const PairContact& c, bool with_line) {
+Json contact_json(const ExactScene& sc, const CompoundRegion& r, const PairContact& c, bool with_line) {
     const CompoundRegion::Pair& p = r.pairs[c.pair];
-    Json j{{"P1_part", p.part1},
-           {"P2_part", p.part2},
-           {"contact", c.contact.label},
-           {"features", Json{{"P1", c.contact.feat1}, {"P2", c.contact.feat2}}}};
+    Json j = part_pair_json(sc, p.part1, p.part2);
+    j["contact"] = c.contact.label;
+    j["features"] = Json{{"P1", c.contact.feat1}, {"P2", c.contact.feat2}};
     Json normals = Json::array();
     for (size_t k : c.tight) normals.push_back(normal_json(p.constraints[k].normal));
     j["normals"] = normals;
@@ -214,7 +237,7 @@ void put_boundary(Json& j, const CompoundRegion& r, const ExactScene& sc) {
         for (const BoundaryEdge& e : ring.edges) {
             Json x{{"from", point_json(e.from)}, {"to", point_json(e.to)}};
             if (e.contact)
-                x["on"] = contact_json(r, *e.contact, true);
+                x["on"] = contact_json(sc, r, *e.contact, true);
             else
                 x["on"] = sides[e.bound];
             edges.push_back(x);
@@ -226,7 +249,7 @@ void put_boundary(Json& j, const CompoundRegion& r, const ExactScene& sc) {
     Json sw = Json::array();
     for (const CompoundSwitch& s : b.switches) {
         Json cs = Json::array();
-        for (const PairContact& c : s.contacts) cs.push_back(contact_json(r, c, false));
+        for (const PairContact& c : s.contacts) cs.push_back(contact_json(sc, r, c, false));
         sw.push_back(Json{{"rho1", to_exact_string(s.at[0])},
                           {"rho2", to_exact_string(s.at[1])},
                           {"change", s.pair_change ? "pair" : "contact"},
@@ -247,8 +270,7 @@ Json compound_region_json(const ExactScene& sc, const CompoundRegion& r, const s
                       {"corner_sides", Json{{"decided_by_filter", hp.filtered}, {"decided_exactly", hp.exact}}}};
     Json pairs = Json::array();
     for (const auto& p : r.pairs)
-        if (!p.polygon.empty())
-            pairs.push_back(Json{{"P1_part", p.part1}, {"P2_part", p.part2}, {"vertices", ring_json(p.polygon)}});
+        if (!p.polygon.empty()) pairs.push_back(with_vertices(part_pair_json(sc, p.part1, p.part2), p.polygon));
     j["pair_regions"] = pairs;
     Json region = Json::array();
     for (const RegionPiece& piece : r.region) {
@@ -270,13 +292,14 @@ Json compound_region_json(const ExactScene& sc, const CompoundRegion& r, const s
     Json thin = Json::array();
     for (const auto& p : r.pairs)
         if (!p.polygon.empty() && p.polygon.size() < 3)
-            thin.push_back(Json{{"P1_part", p.part1}, {"P2_part", p.part2}, {"vertices", ring_json(p.polygon)}});
+            thin.push_back(with_vertices(part_pair_json(sc, p.part1, p.part2), p.polygon));
     j["region_without_area"] = thin;
     // Each interval's first contact: the pair that meets at its start, with its contact there
     // (null when it already overlaps there: the interval starts on the rectangle's edge).
     Json growth = Json::array();
     for (const auto& iv : r.growth) {
-        Json first{{"P1_part", iv.part1}, {"P2_part", iv.part2}, {"contact", nullptr}};
+        Json first = part_pair_json(sc, iv.part1, iv.part2);
+        first["contact"] = nullptr;
         for (size_t k = 0; k < r.pairs.size(); ++k)
             if (r.pairs[k].part1 == iv.part1 && r.pairs[k].part2 == iv.part2)
                 if (const auto c = pair_contact_at(r, sc, k, {iv.from, iv.from})) {
@@ -293,7 +316,7 @@ Json compound_region_json(const ExactScene& sc, const CompoundRegion& r, const s
         Json a{{"rho1", to_exact_string((*at)[0])},
                {"rho2", to_exact_string((*at)[1])},
                {"verdict", verdict_name(v.verdict)}};
-        if (v.part1 >= 0) a["pair"] = Json{{"P1_part", v.part1}, {"P2_part", v.part2}};
+        if (v.part1 >= 0) a["pair"] = part_pair_json(sc, v.part1, v.part2);
         j["at"] = a;
     }
     return j;

@@ -20,9 +20,11 @@
 namespace scalecert::internal {
 
 // The scene with every object as a list of parts (a plain object is one part), as the compound
-// certificates state it.
-Json compound_scene_json(const ExactScene& sc);
-// A scene's file: scene_json for two convex objects, compound_scene_json when one is made of parts.
+// certificates state it (without the parts' names: the checker reads these); with_names: each
+// named part with its "name", as a scene file gives it.
+Json compound_scene_json(const ExactScene& sc, bool with_names = false);
+// A scene's file: scene_json for two convex objects, compound_scene_json with the parts' names when
+// one is made of parts (read back, it gives the same scene and so the same bytes).
 Json scene_file_json(const ExactScene& sc);
 // The compound judgements document (kind "compound_judgements", FORMAT.md): certify-fp's proofs on
 // objects made of parts, as text.
@@ -30,6 +32,10 @@ std::string compound_judgements_text(const ExactScene& sc, const Q& tolerance, J
 
 // The certificate of r, the region of scene sc (compound_region(sc, ...)).
 Json compound_partition_json(const ExactScene& sc, const CompoundRegion& r);
+
+// A part pair for documents: {"P1_part": a, "P2_part": b}, each index followed by its part's name
+// ("P1_part_name") when it has one.
+Json part_pair_json(const ExactScene& sc, int a, int b);
 
 // The region document (kind "region", docs/manual.md "region"): the pairs' counts and polygons,
 // their union (r formed with it) with its boundary labelled and its switch points, the pairs that

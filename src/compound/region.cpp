@@ -211,8 +211,7 @@ void build_parts(const ExactScene& sc, const std::string& name, std::vector<Poly
         const std::vector<std::vector<Vec3q>> one{in.points};
         const std::vector<std::vector<Vec3q>>& list = in.parts.empty() ? one : in.parts;
         for (size_t k = 0; k < list.size(); ++k) {
-            const std::string part =
-                in.parts.empty() ? std::string(pname[i]) : std::string(pname[i]) + ".parts[" + std::to_string(k) + "]";
+            const std::string part = in.parts.empty() ? std::string(pname[i]) : part_label(i, in, k);
             parts[i].push_back(build_polyhedron(list[k], name + ": " + part));
         }
     }

@@ -71,7 +71,8 @@ std::vector<RegionPiece> union_of(const std::vector<std::vector<Point2q>>& conve
 // part): every part pair, those whose swept bounding boxes over I1 and I2 are apart pruned before
 // any exact work (they cannot meet anywhere in the rectangle), the others' polygons; their union;
 // and the growth set, where the objects meet on ρ1 = ρ2: intervals of ρ, each with the pair that
-// meets first. Part names for messages: "P1.parts[k]". Throws InputError for a flat part.
+// meets first. Parts in messages: "P1.parts[k]", with the name of a named one (part_label).
+// Throws InputError for a flat part.
 struct CompoundRegion {
     struct Pair {
         int part1, part2;
@@ -96,7 +97,7 @@ struct CompoundRegion {
     filter::PredicateStats predicates;  // half_plane_side: the corners' sides, by stage
 };
 // Each object's parts as polyhedra (a plain object: itself), appended to parts[i]; InputError
-// past kMaxPartPairs and for a flat part ("NAME: P1.parts[k]: ...").
+// past kMaxPartPairs and for a flat part ("NAME: P1.parts[k]: ...", or "P1.parts[k] ('foot')").
 void build_parts(const ExactScene& sc, const std::string& name, std::vector<Polyhedron> (&parts)[2]);
 // Its vertices' least and largest coordinate along each axis.
 std::array<std::array<Q, 2>, 3> bounding_box(const Polyhedron& P);

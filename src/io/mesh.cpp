@@ -109,9 +109,11 @@ std::vector<Vec3q> parse_obj(const std::string& text, const std::string& name, c
 // OBJ groups as parts (mesh.hpp): the vertices first, read and checked as parse_obj reads them,
 // then the 'o', 'g' and 'f' lines.
 std::vector<std::vector<Vec3q>> parse_obj_groups(const std::string& text, const std::string& name,
-                                                 const ReadOptions& opt) {
+                                                 const ReadOptions& opt, std::vector<std::string>& names) {
     const std::vector<Vec3q> pts = parse_obj(text, name, opt);
     std::vector<std::vector<Vec3q>> parts;
+    names.clear();
+    std::map<std::string, size_t> named;      // each group name with faces, and its line
     std::vector<size_t> last(pts.size(), 0);  // the last group (counted from 1) whose faces named each vertex
     std::vector<size_t> members;              // the vertices of the group being read
     size_t group = 1, group_line = 0, vertices_so_far = 0, total = 0;
@@ -134,7 +136,13 @@ std::vector<std::vector<Vec3q>> parse_obj_groups(const std::string& text, const 
         if (!affinely_3d(part))
             fail(name, label() + ": flat: the " + std::to_string(part.size()) +
                            " vertices of its faces span fewer than 3 dimensions (a part must be a solid)");
+        // The group's name names its part: two parts of one name would name neither.
+        if (!group_name.empty())
+            if (const auto [at, fresh] = named.emplace(group_name, group_line); !fresh)
+                fail(name, label() + ": the name of the group on line " + std::to_string(at->second) +
+                               " too (a part per group: each group with faces needs its own name)");
         parts.push_back(std::move(part));
+        names.push_back(group_name);
         members.clear();
     };
     each_line(text, [&](const std::vector<std::string>& t, size_t no) {
@@ -475,14 +483,16 @@ std::vector<Vec3q> read_mesh(const std::string& path, const ReadOptions& opt, st
     return pts;
 }
 
-std::vector<std::vector<Vec3q>> read_obj_groups(const std::string& path, const ReadOptions& opt) {
+std::vector<std::vector<Vec3q>> read_obj_groups(const std::string& path, const ReadOptions& opt,
+                                                std::vector<std::string>* names) {
     const MeshFormat f = mesh_format_of(path);
     if (f != MeshFormat::Obj) {
         static const char* kind[] = {"an OFF", "an OBJ", "a PLY", "an STL"};
         throw InputError(path + ": parts from groups need an OBJ file (" + kind[static_cast<int>(f)] +
                          " file has no groups)");
     }
-    return parse_obj_groups(read_input(path, "mesh file", kMaxSceneBytes), path, opt);
+    std::vector<std::string> own;
+    return parse_obj_groups(read_input(path, "mesh file", kMaxSceneBytes), path, opt, names ? *names : own);
 }
 
 void read_mesh_object(const std::string& path, const ReadOptions& opt, PolyInput& in) {
@@ -490,7 +500,9 @@ void read_mesh_object(const std::string& path, const ReadOptions& opt, PolyInput
         in.points = read_mesh(path, opt, &in.note);
         return;
     }
-    in.parts = read_obj_groups(path, opt);
+    in.parts = read_obj_groups(path, opt, &in.part_names);
+    if (std::all_of(in.part_names.begin(), in.part_names.end(), [](const std::string& n) { return n.empty(); }))
+        in.part_names.clear();
     in.points.clear();
     for (const auto& part : in.parts) in.points.insert(in.points.end(), part.begin(), part.end());
 }

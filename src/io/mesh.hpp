@@ -31,12 +31,16 @@ std::vector<Vec3q> read_mesh(const std::string& path, const ReadOptions& opt = {
 // each once, in the file's order (vertex numbers from 1, or back from -1, the last vertex before
 // the face). The faces before any 'o' or 'g' line are a part too (a file without them is one
 // part); groups without faces are skipped, and vertices no face names are in no part. Throws
-// InputError naming the group (its name and line) when its points are flat, and past kMaxParts
-// parts or kMaxPoints points in all. Any other format is refused (OFF, PLY and STL have no groups).
-std::vector<std::vector<Vec3q>> read_obj_groups(const std::string& path, const ReadOptions& opt = {});
+// InputError naming the group (its name and line) when its points are flat or when a group with
+// faces has the name of an earlier one, and past kMaxParts parts or kMaxPoints points in all. Any
+// other format is refused (OFF, PLY and STL have no groups). With `names`: each part's group name
+// ("" for the faces before any 'o' or 'g' line, and for a group line without a name).
+std::vector<std::vector<Vec3q>> read_obj_groups(const std::string& path, const ReadOptions& opt = {},
+                                                std::vector<std::string>* names = nullptr);
 
 // An object's mesh file: its vertices (a convex object), or with opt.parts_from_groups its OBJ
-// groups as parts (in.parts, and in.points all their points in order).
+// groups as parts (in.parts, and in.points all their points in order; in.part_names their group
+// names, empty when no group has one).
 void read_mesh_object(const std::string& path, const ReadOptions& opt, PolyInput& in);
 
 }  // namespace scalecert::internal

@@ -139,11 +139,22 @@ ExactScene parse_scene_text(const std::string& text, const std::string& name, co
             if (parts->kind != JNode::Array || parts->items.empty()) r.fail(where, "expected a nonempty list of parts");
             if (parts->items.size() > kMaxParts)
                 r.fail(where, "more than " + std::to_string(kMaxParts) + " parts (the limit)");
+            std::map<std::string, size_t> named;  // each name and its part
             for (size_t k = 0; k < parts->items.size(); ++k) {
                 const std::string w = where + "[" + std::to_string(k) + "]";
                 const JNode& part = parts->items[k];
                 if (part.kind != JNode::Object) r.fail(w, "expected an object with \"vertices\" or \"mesh\"");
-                only(part, w, {"vertices", "off", "mesh"});
+                only(part, w, {"name", "vertices", "off", "mesh"});
+                if (const JNode* n = part.find("name")) {
+                    if (n->kind != JNode::String) r.fail(w + ".name", "expected a string (the part's name)");
+                    if (n->text.empty())
+                        r.fail(w + ".name", "an empty name (leave \"name\" out for a part without one)");
+                    if (const auto [at, fresh] = named.emplace(n->text, k); !fresh)
+                        r.fail(w + ".name", in_quotes(n->text) + " names " + where + "[" + std::to_string(at->second) +
+                                                "] too (the parts of an object have distinct names)");
+                    in.part_names.resize(k + 1);
+                    in.part_names[k] = n->text;
+                }
                 PolyInput one;
                 body(part, w, false, one);
                 in.parts.push_back(std::move(one.points));
@@ -151,6 +162,7 @@ ExactScene parse_scene_text(const std::string& text, const std::string& name, co
                     r.fail(where, "more than " + std::to_string(kMaxPoints) + " points in all (the limit)");
                 in.points.insert(in.points.end(), in.parts.back().begin(), in.parts.back().end());
             }
+            if (!in.part_names.empty()) in.part_names.resize(in.parts.size());
         } else {
             only(*p, pname[i], {"vertices", "off", "mesh", "seed", "parts_from_groups"});
             // An OBJ "mesh" as a compound: --parts-from-groups, or this object's "parts_from_groups".
@@ -184,13 +196,24 @@ ExactScene parse_scene_text(const std::string& text, const std::string& name, co
     return sc;
 }
 
+const std::string& part_name(const PolyInput& in, size_t k) {
+    static const std::string none;
+    return k < in.part_names.size() ? in.part_names[k] : none;
+}
+
+std::string part_label(int i, const PolyInput& in, size_t k) {
+    const std::string& n = part_name(in, k);
+    return "P" + std::to_string(i + 1) + ".parts[" + std::to_string(k) + "]" +
+           (n.empty() ? "" : " (" + in_quotes(n) + ")");
+}
+
 void check_scene(const ExactScene& sc, const std::string& name) {
     const char* pname[2] = {"P1", "P2"};
     const char* iname[2] = {"I1", "I2"};
     for (int i = 0; i < 2; ++i) {
         for (size_t k = 0; k < sc.P[i].parts.size(); ++k)
             if (sc.P[i].parts[k].size() < 4)
-                throw InputError(name + ": " + pname[i] + ".parts[" + std::to_string(k) + "]: fewer than 4 vertices (" +
+                throw InputError(name + ": " + part_label(i, sc.P[i], k) + ": fewer than 4 vertices (" +
                                  std::to_string(sc.P[i].parts[k].size()) + ")");
         const size_t n = sc.P[i].points.size();
         if (n < 4) throw InputError(name + ": " + pname[i] + ": fewer than 4 vertices (" + std::to_string(n) + ")");

@@ -15,10 +15,19 @@ struct PolyInput {
     // A compound object: its convex parts, each the hull of its points, all scaled about
     // the one seed. Empty for a plain (convex) object. Read only with ReadOptions::allow_parts.
     std::vector<std::vector<Vec3q>> parts;
+    // The parts' names (a scene's part "name", an OBJ group's name): empty when no part has one,
+    // else one a part, "" for a part without one. Distinct within the object.
+    std::vector<std::string> part_names;
     // A remark for the user, said once on stderr by the command (an OBJ mesh with several groups
     // read as one convex object); empty when there is none.
     std::string note;
 };
+
+// Part k's name, "" when it has none.
+const std::string& part_name(const PolyInput& in, size_t k);
+// Part k of object i (0: P1, 1: P2) for messages: "P1.parts[3]", with its name when it has one:
+// "P1.parts[3] ('foot')".
+std::string part_label(int i, const PolyInput& in, size_t k);
 
 // At most this many parts an object (each of at least 4 points, all of them within kMaxPoints).
 constexpr size_t kMaxParts = 10000;

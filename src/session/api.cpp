@@ -80,10 +80,11 @@ void seed_and_range(internal::ExactScene& sc, int i, const std::optional<Point>&
     sc.hi[i].canonicalize();
 }
 
-}  // namespace
-
-Scene::Scene(std::vector<Point> p1, std::vector<Point> p2, Interval i1, Interval i2, std::optional<Point> seed1,
-             std::optional<Point> seed2) {
+// Two convex objects from their points, ranges and seeds, read as a scene file is (not yet
+// validated); each object's note (a reader's remark) kept.
+internal::ExactScene convex_scene(std::vector<Point> p1, std::vector<Point> p2, const Interval& i1, const Interval& i2,
+                                  const std::optional<Point>& seed1, const std::optional<Point>& seed2,
+                                  std::string note1 = {}, std::string note2 = {}) {
     internal::ExactScene sc;
     std::vector<Point>* pts[2] = {&p1, &p2};
     const std::optional<Point>* seeds[2] = {&seed1, &seed2};
@@ -93,8 +94,17 @@ Scene::Scene(std::vector<Point> p1, std::vector<Point> p2, Interval i1, Interval
         sc.P[i].points = std::move(*pts[i]);
         seed_and_range(sc, i, *seeds[i], *ranges[i]);
     }
+    sc.P[0].note = std::move(note1);
+    sc.P[1].note = std::move(note2);
     finish_scene(sc, "scene");
-    d_ = SceneAccess::validated(std::move(sc), "scene");
+    return sc;
+}
+
+}  // namespace
+
+Scene::Scene(std::vector<Point> p1, std::vector<Point> p2, Interval i1, Interval i2, std::optional<Point> seed1,
+             std::optional<Point> seed2) {
+    d_ = SceneAccess::validated(convex_scene(std::move(p1), std::move(p2), i1, i2, seed1, seed2), "scene");
 }
 
 struct Scene::Data {
@@ -165,7 +175,13 @@ Scene Scene::load(const std::string& path) {
 
 Scene Scene::from_meshes(const std::string& p1_path, const std::string& p2_path, Interval i1, Interval i2,
                          bool parts_from_groups) {
-    if (!parts_from_groups) return Scene(read_mesh(p1_path), read_mesh(p2_path), std::move(i1), std::move(i2));
+    if (!parts_from_groups) {
+        std::string note[2];
+        std::vector<Point> p1 = read_mesh(p1_path, {}, &note[0]), p2 = read_mesh(p2_path, {}, &note[1]);
+        return Scene(SceneAccess::validated(convex_scene(std::move(p1), std::move(p2), i1, i2, std::nullopt,
+                                                         std::nullopt, std::move(note[0]), std::move(note[1])),
+                                            "scene"));
+    }
     internal::ReadOptions opt;
     opt.allow_parts = true;
     opt.parts_from_groups = true;
@@ -194,6 +210,16 @@ const std::vector<Point>& Scene::part(int i, size_t k) const {
         throw InputError("scene: P" + std::to_string(i + 1) + " has no part " + std::to_string(k) +
                          " (its parts are numbered from 0)");
     return P.parts.empty() ? P.points : P.parts[k];
+}
+const std::string& Scene::part_name(int i, size_t k) const {
+    part(i, k);  // i and k checked
+    return internal::part_name(d_->sc().P[i], k);
+}
+std::vector<std::string> Scene::notes() const {
+    std::vector<std::string> n;
+    for (const internal::PolyInput& P : d_->sc().P)
+        if (!P.note.empty()) n.push_back(P.note);
+    return n;
 }
 const std::vector<Point>& Scene::points(int i) const { return d_->sc().P[i & 1].points; }
 const Point& Scene::seed(int i) const { return d_->sc().P[i & 1].seed; }
