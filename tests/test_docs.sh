@@ -42,6 +42,7 @@ reason() {
   case "$1" in
     tools/run-example.sh*|tools/run-tests.sh*|.ci/run*|tools/ci.sh*|tools/no-baselines.sh*) echo "set-up: installs and builds" ;;
     ctest*|*"&& ctest"*|*tests/test_docs.sh*|tools/sanitize.sh*|tools/fuzz.sh*) echo "the test suite itself, or a fuzzing run" ;;
+    "cmake --build build --target scalecert-bench"*) echo "builds the bench, which CI builds (tools/ci.sh)" ;;
     "mpirun -np "[1-9][0-9][0-9]*|srun*) echo "a cluster" ;;
     *)
       if [ "${SCALECERT_DOCS_LONG:-0}" != 1 ]; then
