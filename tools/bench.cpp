@@ -206,9 +206,27 @@ struct ProcessRun {
     long peak_kb;
     int status;
 };
+// A program built beside the bench (scalecert, scalecert-check).
+std::string sibling(const char* name) {
+    return (std::filesystem::canonical("/proc/self/exe").parent_path() / name).string();
+}
+// A fresh scratch folder for one table's files, named by `tag` and this process.
+std::filesystem::path scratch_dir(const std::string& tag) {
+    const auto dir = std::filesystem::temp_directory_path() / (tag + "-" + std::to_string(::getpid()));
+    std::filesystem::create_directories(dir);
+    return dir;
+}
+// Waits for child `pid`, started at t0: its wall time, peak resident size and exit status.
+ProcessRun reaped(pid_t pid, Clock::time_point t0) {
+    int st = 0;
+    struct rusage ru {};
+    wait4(pid, &st, 0, &ru);
+    return {std::chrono::duration<double>(Clock::now() - t0).count(), ru.ru_maxrss,
+            WIFEXITED(st) ? WEXITSTATUS(st) : -1};
+}
 // Runs `scalecert args...` with its output in `out`, and measures wall time and peak resident size.
 ProcessRun run_scalecert(const std::vector<std::string>& args) {
-    static const std::string bin = (std::filesystem::canonical("/proc/self/exe").parent_path() / "scalecert").string();
+    static const std::string bin = sibling("scalecert");
     std::vector<std::string> all{bin};
     all.insert(all.end(), args.begin(), args.end());
     std::vector<char*> argv;
@@ -217,11 +235,7 @@ ProcessRun run_scalecert(const std::vector<std::string>& args) {
     auto t0 = Clock::now();
     pid_t pid;
     if (posix_spawn(&pid, bin.c_str(), nullptr, nullptr, argv.data(), environ) != 0) return {0, 0, -1};
-    int st = 0;
-    struct rusage ru {};
-    wait4(pid, &st, 0, &ru);
-    return {std::chrono::duration<double>(Clock::now() - t0).count(), ru.ru_maxrss,
-            WIFEXITED(st) ? WEXITSTATUS(st) : -1};
+    return reaped(pid, t0);
 }
 
 // Runs f in a child process (fork) and measures its wall time and peak resident size, as
@@ -241,11 +255,7 @@ ProcessRun run_in_child(const std::function<int()>& f) {
         std::fflush(nullptr);
         _exit(r);
     }
-    int st = 0;
-    struct rusage ru {};
-    wait4(pid, &st, 0, &ru);
-    return {std::chrono::duration<double>(Clock::now() - t0).count(), ru.ru_maxrss,
-            WIFEXITED(st) ? WEXITSTATUS(st) : -1};
+    return reaped(pid, t0);
 }
 
 // n points per polytope as an OFF file of integers: near a sphere of radius R (every point a
@@ -273,8 +283,7 @@ std::string curve_without_model(const std::string& path) {
 
 std::vector<std::string> size_rows;
 void curve_sizes(bool with_slow) {
-    const auto dir = std::filesystem::temp_directory_path() / ("scalecert-bench-" + std::to_string(::getpid()));
-    std::filesystem::create_directories(dir);
+    const auto dir = scratch_dir("scalecert-bench");
     std::fprintf(stderr,
                  "whole `scalecert curve` process, hull path against scan path (best of 3 below 10^6 points):\n");
     size_rows.push_back(
@@ -345,10 +354,8 @@ void write_prism(const std::string& path, int n, long R, bool second) {
 // walk and the two hulls, none from the hull model (76 s and 2.26 GB at n = 4,800).
 std::vector<std::string> prism_claim_rows;
 void prism_claim_costs(const std::vector<int>& sizes) {
-    const auto dir = std::filesystem::temp_directory_path() / ("scalecert-bench-pc-" + std::to_string(::getpid()));
-    std::filesystem::create_directories(dir);
-    static const std::string checker =
-        (std::filesystem::canonical("/proc/self/exe").parent_path() / "scalecert-check").string();
+    const auto dir = scratch_dir("scalecert-bench-pc");
+    static const std::string checker = sibling("scalecert-check");
     const std::string a = (dir / "a.off").string(), b = (dir / "b.off").string(), out = (dir / "cert.json").string();
     prism_claim_rows.push_back("| crossed prisms | claim kind | certify-fp --certificate | scalecert-check |");
     prism_claim_rows.push_back("|---|---|---|---|");
@@ -396,16 +403,14 @@ std::vector<std::string> query_rows;
 // points), against `partition --engine hull` (the hull model) in the same run; the checker's time
 // on the walk's partition beside.
 void query_costs(bool with_slow) {
-    const auto dir = std::filesystem::temp_directory_path() / ("scalecert-bench-" + std::to_string(::getpid()));
-    std::filesystem::create_directories(dir);
+    const auto dir = scratch_dir("scalecert-bench");
     std::fprintf(stderr, "whole process: query, query --json, partition (walk) against partition --engine hull:\n");
     query_rows.push_back(
         "| scene | query | query --json | partition | partition --engine hull | hull / walk | scalecert-check | "
         "Analysis::query (C++ API) |");
     query_rows.push_back("|---|---|---|---|---|---|---|---|");
     const std::string a = (dir / "a.off").string(), b = (dir / "b.off").string(), out = (dir / "out.txt").string();
-    static const std::string checker =
-        (std::filesystem::canonical("/proc/self/exe").parent_path() / "scalecert-check").string();
+    static const std::string checker = sibling("scalecert-check");
     auto cell = [](const ProcessRun& r) {
         char buf[96];
         std::snprintf(buf, sizeof buf, "%.3g s, %.0f MB%s", r.seconds, r.peak_kb / 1024.0,
@@ -607,8 +612,7 @@ void claim_costs(const ExactScene& h1000, bool quick) {
 // Bullet's GJK distance (btConvexHullShape of the points) and libccd's EPA depth on the same
 // points (both support by a scan of all points), in the same run.
 void large_claim_costs() {
-    const auto dir = std::filesystem::temp_directory_path() / ("scalecert-bench-large-" + std::to_string(::getpid()));
-    std::filesystem::create_directories(dir);
+    const auto dir = scratch_dir("scalecert-bench-large");
     const int n = 1000000;
     const long R = 10L * n * 1000;
     const std::string a = (dir / "a.off").string(), b = (dir / "b.off").string();
@@ -806,8 +810,7 @@ std::vector<std::string> compound_api_rows;
 void compound_api_costs() {
     using scalecert::Rational;
     auto secs = [](Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); };
-    static const std::string checker =
-        (std::filesystem::canonical("/proc/self/exe").parent_path() / "scalecert-check").string();
+    static const std::string checker = sibling("scalecert-check");
     for (const int gap : {30, 400}) {
         const ExactScene sc = compound(10, gap, 3);
         std::vector<std::vector<scalecert::Point>> parts[2];
@@ -820,8 +823,7 @@ void compound_api_costs() {
         const double t_query = secs(t0);
         t0 = Clock::now();
         const std::string cert = scalecert::Analysis(scene).partition_json();
-        const auto dir = std::filesystem::temp_directory_path() / ("scalecert-bench-" + std::to_string(::getpid()));
-        std::filesystem::create_directories(dir);
+        const auto dir = scratch_dir("scalecert-bench");
         const std::string path = (dir / "compound_partition.json").string();
         std::ofstream(path) << cert;
         const int check = std::system((checker + " " + path + " >/dev/null 2>&1").c_str());

@@ -74,6 +74,9 @@ void validate(const CampaignArgs& a) {
     if (a.golden) {
         if (a.family.empty() && a.scenes.empty()) throw InputError("golden: give SCENES, or --family");
         if (!a.family.empty()) family_description(a.family);
+        if (!a.family.empty() && (a.count < 1 || a.count > kMaxGoldenCount))
+            throw InputError("golden: the count of scenes must be from 1 to 10^7 (got " + std::to_string(a.count) +
+                             ")");
         const Q eps = parse_exact(a.eps_text);
         if (sgn(eps) <= 0) throw InputError("--eps must be > 0");
         std::set<std::string> stems;
@@ -471,7 +474,6 @@ namespace scalecert {
 
 void write_golden(const std::string& family, int count, std::uint64_t seed, const Rational& eps,
                   const std::string& dir) {
-    if (count < 1 || count > 10000000) throw InputError("golden: count must be from 1 to 10^7 (as --count)");
     Rational e = eps;
     e.canonicalize();
     internal::write_golden(family, count, seed, e, dir);

@@ -29,7 +29,7 @@ struct Auditor {
 struct CampaignArgs {
     bool golden = false;  // golden data, else an audit
     std::string family;
-    int count = 1;  // family scenes (golden), or per ε (audit)
+    int count = 1;  // family scenes (golden: 1 to kMaxGoldenCount), or per ε (audit)
     std::uint64_t seed = 1;
     std::string eps_text = "1/1048576";  // golden
     std::string dir;                     // golden: the output directory
@@ -105,6 +105,9 @@ std::vector<std::pair<std::string, std::string>> golden_scene(const std::string&
 // Writes COUNT scenes of a family with their exact answers into DIR (campaign.cpp: the same
 // shards as scalecert-mpi). Byte-identical for the same arguments.
 void write_golden(const std::string& family, int count, std::uint64_t seed, const Q& eps, const std::string& dir);
+
+// At most this many scenes of a family in one golden run (--count, write_golden).
+constexpr int kMaxGoldenCount = 10000000;
 
 // Files in a run folder (manifest, shards) and golden outputs are read up to this size.
 constexpr std::size_t kMaxRunFileBytes = std::size_t(1) << 40;

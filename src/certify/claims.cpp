@@ -335,18 +335,10 @@ std::string at(const TypedClaim& c) { return "(" + num(c.rho1) + ", " + num(c.rh
 // A point's part on an object made of parts: its number, or false when no part holds it.
 Json part_or_false(int k) { return k >= 0 ? Json(k) : Json(false); }
 // After part k of object i in a text line: " ('foot')", its name, or "" when it has none.
-std::string name_of(const ExactScene& sc, int i, int k) {
-    const std::string& n = part_name(sc.P[i], static_cast<size_t>(k));
-    return n.empty() ? "" : " (" + in_quotes(n) + ")";
-}
+std::string name_of(const ExactScene& sc, int i, int k) { return part_name_suffix(sc.P[i], static_cast<size_t>(k)); }
 // Part k of object i in a text line: "part 3", "part 3 ('foot')" when it has a name, "NO" for none.
 std::string part_or_no(const ExactScene& sc, int i, int k) {
     return k < 0 ? "NO" : "part " + std::to_string(k) + name_of(sc, i, k);
-}
-// Beside o[key], part k of object i: o[key + "_name"], its name, when it has one.
-void put_part_name(Json& o, const std::string& key, const ExactScene& sc, int i, int k) {
-    if (k >= 0 && !part_name(sc.P[i], static_cast<size_t>(k)).empty())
-        o[key + "_name"] = part_name(sc.P[i], static_cast<size_t>(k));
 }
 // A part pair [a, b] as o[key], and beside it o[key + "_names"], [name or null, name or null], when
 // either part has a name (null for the pair itself: no pair).
@@ -493,9 +485,9 @@ void describe(const TypedClaim& c, const Judged& g, const ExactScene* parts, Jso
     case ClaimType::Witness:
         if (parts) {
             o["in_P1_part"] = part_or_false(g.in_part1);
-            put_part_name(o, "in_P1_part", *parts, 0, g.in_part1);
+            put_part_name(o, "in_P1_part", parts->P[0], g.in_part1);
             o["in_P2_part"] = part_or_false(g.in_part2);
-            put_part_name(o, "in_P2_part", *parts, 1, g.in_part2);
+            put_part_name(o, "in_P2_part", parts->P[1], g.in_part2);
             text = "witness point at " + at(c) + ": in P1 " + part_or_no(*parts, 0, g.in_part1) + ", in P2 " +
                    part_or_no(*parts, 1, g.in_part2);
         } else {
@@ -522,9 +514,9 @@ void describe(const TypedClaim& c, const Judged& g, const ExactScene* parts, Jso
         if (c.closest) {
             if (parts) {
                 o["closest_in_P1_part"] = part_or_false(g.in_part1);
-                put_part_name(o, "closest_in_P1_part", *parts, 0, g.in_part1);
+                put_part_name(o, "closest_in_P1_part", parts->P[0], g.in_part1);
                 o["closest_in_P2_part"] = part_or_false(g.in_part2);
-                put_part_name(o, "closest_in_P2_part", *parts, 1, g.in_part2);
+                put_part_name(o, "closest_in_P2_part", parts->P[1], g.in_part2);
             } else {
                 o["closest_in_P1"] = g.in1;
                 o["closest_in_P2"] = g.in2;

@@ -183,14 +183,19 @@ Json compound_partition_json(const ExactScene& sc, const CompoundRegion& r) {
     return j;
 }
 
+void put_part_name(Json& o, const std::string& key, const PolyInput& in, int k) {
+    if (k < 0) return;
+    const std::string& n = part_name(in, static_cast<size_t>(k));
+    if (!n.empty()) o[key + "_name"] = n;
+}
+
 Json part_pair_json(const ExactScene& sc, int a, int b) {
     Json j;
     const int k[2] = {a, b};
     for (int i = 0; i < 2; ++i) {
         const std::string key = i ? "P2_part" : "P1_part";
         j[key] = k[i];
-        if (k[i] >= 0 && !part_name(sc.P[i], static_cast<size_t>(k[i])).empty())
-            j[key + "_name"] = part_name(sc.P[i], static_cast<size_t>(k[i]));
+        put_part_name(j, key, sc.P[i], k[i]);
     }
     return j;
 }

@@ -36,6 +36,8 @@ Json compound_partition_json(const ExactScene& sc, const CompoundRegion& r);
 // A part pair for documents: {"P1_part": a, "P2_part": b}, each index followed by its part's name
 // ("P1_part_name") when it has one.
 Json part_pair_json(const ExactScene& sc, int a, int b);
+// Beside o[key], part k of object in (k < 0: none): o[key + "_name"], its name, when it has one.
+void put_part_name(Json& o, const std::string& key, const PolyInput& in, int k);
 
 // The region document (kind "region", docs/manual.md "region"): the pairs' counts and polygons,
 // their union (r formed with it) with its boundary labelled and its switch points, the pairs that

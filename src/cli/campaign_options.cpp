@@ -19,7 +19,8 @@ void add_golden_options(CLI::App* sub, internal::CampaignArgs& a) {
     sub->add_option("--family", a.family,
                     "random | parallel-faces | nearly-equal-slopes | nearly-parallel-edges | vertex-vertex | "
                     "far-from-origin | sliver | near-sphere");
-    sub->add_option("--count", a.count, "how many scenes of the family (1 to 10^7)")->check(CLI::Range(1, 10000000));
+    sub->add_option("--count", a.count, "how many scenes of the family (1 to 10^7)")
+        ->check(CLI::Range(1, internal::kMaxGoldenCount));
     sub->add_option("--seed", a.seed, "the run's random seed (scene i's own seed is derived from it and i)");
     sub->add_option("--eps", a.eps_text, "degeneracy parameter (exact, default 2^-20)");
     sub->add_option("--dir", a.dir,

@@ -201,10 +201,13 @@ const std::string& part_name(const PolyInput& in, size_t k) {
     return k < in.part_names.size() ? in.part_names[k] : none;
 }
 
-std::string part_label(int i, const PolyInput& in, size_t k) {
+std::string part_name_suffix(const PolyInput& in, size_t k) {
     const std::string& n = part_name(in, k);
-    return "P" + std::to_string(i + 1) + ".parts[" + std::to_string(k) + "]" +
-           (n.empty() ? "" : " (" + in_quotes(n) + ")");
+    return n.empty() ? "" : " (" + in_quotes(n) + ")";
+}
+
+std::string part_label(int i, const PolyInput& in, size_t k) {
+    return "P" + std::to_string(i + 1) + ".parts[" + std::to_string(k) + "]" + part_name_suffix(in, k);
 }
 
 void check_scene(const ExactScene& sc, const std::string& name) {

@@ -25,6 +25,8 @@ struct PolyInput {
 
 // Part k's name, "" when it has none.
 const std::string& part_name(const PolyInput& in, size_t k);
+// Part k's name as text follows its number: " ('foot')", or "" when it has none.
+std::string part_name_suffix(const PolyInput& in, size_t k);
 // Part k of object i (0: P1, 1: P2) for messages: "P1.parts[3]", with its name when it has one:
 // "P1.parts[3] ('foot')".
 std::string part_label(int i, const PolyInput& in, size_t k);
