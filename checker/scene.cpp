@@ -121,19 +121,20 @@ Scene read_scene(Context& cx, const J& j) {
         shape(cx, p, w, {"vertices", "seed"});
         const J& vs = at(p, "vertices");
         cx.claim(vs.is_array(), w + ".vertices is a list");
+        std::vector<V3> v;
         for (size_t k = 0; k < vs.size(); ++k)
-            sc.P[i].push_back(point(cx, vs[k], w + ".vertices[" + std::to_string(k) + "]"));
-        cx.claim(sc.P[i].size() >= 4, w + " has at least 4 vertices");
-        read_seed(cx, sc, i, p, w);
+            v.push_back(point(cx, vs[k], w + ".vertices[" + std::to_string(k) + "]"));
+        cx.claim(v.size() >= 4, w + " has at least 4 vertices");
+        read_seed(cx, sc, i, p, w, v);
     }
     sc.prepare(cx);
     read_ranges(cx, sc, j);
     return sc;
 }
 
-void read_seed(Context& cx, Scene& sc, int i, const J& p, const std::string& w) {
+void read_seed(Context& cx, Scene& sc, int i, const J& p, const std::string& w, const std::vector<V3>& v) {
     sc.s[i] = point(cx, at(p, "seed"), w + ".seed");
-    sc.scan[i] = std::make_unique<Scan>(cx, sc.P[i], kPoly[i]);
+    sc.scan[i] = std::make_unique<Scan>(cx, v, kPoly[i]);
 }
 
 void read_ranges(Context& cx, Scene& sc, const J& j) {
@@ -149,7 +150,7 @@ void read_ranges(Context& cx, Scene& sc, const J& j) {
 
 std::array<Q, 3> combination(Context& cx, const Scene& sc, int i, const J& w, const std::string& where,
                              std::vector<int>* used, size_t base, size_t count) {
-    if (count == SIZE_MAX) count = sc.P[i].size();
+    if (count == SIZE_MAX) count = sc.count(i);
     cx.claim(w.is_array() && !w.empty(), where + " is a nonempty list of weights");
     std::set<size_t> seen;
     Q total = 0;

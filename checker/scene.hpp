@@ -24,7 +24,6 @@ namespace scalecert_check {
 inline constexpr const char* kPoly[2] = {"P1", "P2"};
 
 struct Scene {
-    std::vector<V3> P[2];
     V3 s[2];
     Q lo[2], hi[2];
     std::unique_ptr<Scan> scan[2];
@@ -32,6 +31,7 @@ struct Scene {
     Z3 S[2], Delta;           // D* s_i and D* (s2 − s1)
     std::array<Q, 3> sdv[2];  // D_i s_i = S_i / E_i (exact rationals), for the combinations over D_i
 
+    size_t count(int i) const { return scan[i]->size(); }  // the vertices of polyhedron i
     // D*, S_i, Delta and D_i s_i, once the vertices are scanned and the seeds read.
     void prepare(Context& cx);
 
@@ -68,8 +68,8 @@ struct Scene {
 // The scene object of a partition, a query answer or a judgements file: two polyhedra of at
 // least 4 vertices, their seeds, I1 and I2.
 Scene read_scene(Context& cx, const J& j);
-// The seed of polyhedron i (object p of the file, named w) and the scan of its vertices sc.P[i].
-void read_seed(Context& cx, Scene& sc, int i, const J& p, const std::string& w);
+// The seed of polyhedron i (object p of the file, named w) and the scan of its vertices v.
+void read_seed(Context& cx, Scene& sc, int i, const J& p, const std::string& w, const std::vector<V3>& v);
 // I1 and I2 of a scene object: [lo, hi] with 0 < lo <= hi.
 void read_ranges(Context& cx, Scene& sc, const J& j);
 

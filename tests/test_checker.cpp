@@ -1153,9 +1153,8 @@ CQ rq(std::mt19937_64& g, const mpz_class& range, const mpz_class& den_range) {
 sc_::Scene make_scene(sc_::Context& cx, const std::vector<CV> P[2], const CV s[2]) {
     sc_::Scene sc;
     for (int i = 0; i < 2; ++i) {
-        sc.P[i] = P[i];
         sc.s[i] = s[i];
-        sc.scan[i] = std::make_unique<sc_::Scan>(cx, sc.P[i], i ? "P2" : "P1");
+        sc.scan[i] = std::make_unique<sc_::Scan>(cx, P[i], i ? "P2" : "P1");
     }
     sc.prepare(cx);
     return sc;
