@@ -1,5 +1,6 @@
 // Integer points held compactly: the store of a polytope's scaled vertices X_k = D v_k that the
-// support scans read (scan.hpp).
+// support scans read (scan.hpp), and the form in which the reader keeps a scene's vertex list of
+// integers straight from the text (json.hpp), never as a tree of strings or as rationals.
 #pragma once
 #include "context.hpp"
 

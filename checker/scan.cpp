@@ -93,6 +93,12 @@ Scan::Scan(Context& cx, const std::vector<V3>& v, const std::string& what) {
     index();
 }
 
+// Integers: D = 1 and X_k = v_k, counted as the rational constructor counts them.
+Scan::Scan(Context& cx, IntPoints&& v) : P_(std::move(v)) {
+    cx.spend(static_cast<double>(P_.n) * (10 + 3 * limbs(D_)));
+    index();
+}
+
 void Scan::index() {
     if (!P_.big.empty()) {
         pos_.assign(P_.n, 0);

@@ -30,6 +30,8 @@ class Scan {
     // The vertices v of one polytope (`what` names it in messages); refused as unreadable when
     // their common denominator passes 16,384 bits.
     Scan(Context& cx, const std::vector<V3>& v, const std::string& what);
+    // The vertices of one polytope of integer coordinates, as the reader holds them (D = 1).
+    Scan(Context& cx, IntPoints&& v);
     // The vertices k (of `subset`, ascending, or of all) at which u·v_k is largest, ascending.
     // u has integer coordinates.
     std::vector<int> argmax(Context& cx, const Z3& u, const std::vector<int>* subset = nullptr) const;
