@@ -7,6 +7,9 @@
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
 
 #include <algorithm>
 #include <cerrno>
@@ -31,6 +34,15 @@ void gmp_free(void* p, size_t) { std::free(p); }
 
 int main(int argc, char** argv) {
     mp_set_memory_functions(gmp_alloc, gmp_realloc, gmp_free);
+#if defined(__GLIBC__)
+    // Left to itself, glibc's allocator serves a block of 128 KiB or more by a mapping of its own,
+    // then raises that bound to the largest block freed, and gives the heap's top back to the
+    // system on each free past twice it: a scan listing 35,000 tied maximisers a normal took a
+    // system call and fresh page faults a normal (3 s for a 1 MB file, 0.3 s with these bounds).
+    // Fixed bounds instead: blocks up to 32 MiB from the heap, which keeps up to 256 MiB free.
+    mallopt(M_MMAP_THRESHOLD, 32 << 20);
+    mallopt(M_TRIM_THRESHOLD, 256 << 20);
+#endif
     if (argc == 2 && (std::strcmp(argv[1], "--help") == 0 || std::strcmp(argv[1], "-h") == 0)) {
         std::cout << "usage: scalecert-check CERTIFICATE.json\n\n"
                      "Checks a scalecert certificate (a partition, a query answer or certify-fp's judgements;\n"
