@@ -75,7 +75,7 @@ class Vertices {
     // The length of the list j.
     static size_t length(Context& cx, const J& j);
     // Appends the vertices of the list j (named where: its vertex k is where[k]), each a point of
-    // three exact numbers.
+    // three exact numbers. A list the reader took is moved out of it (a scene is read once).
     void add(Context& cx, const J& j, const std::string& where);
     size_t size() const { return rational_ ? rat_.size() : ints_.n; }
     // The scan of them all (`what` names the polyhedron): the vertices are moved into it.
