@@ -11,7 +11,13 @@ int check_text(const std::string& text, std::string& message, Context& cx) {
     cx.start(text.size());
     try {
         if (text.size() > kMaxFileBytes) throw Unreadable{"larger than " + std::to_string(kMaxFileBytes) + " bytes"};
-        const J c = parse_strict(text);
+        Parsed parsed = parse_certificate(text, cx.direct_points);
+        struct Release {  // cx.points are this file's only while it is checked
+            Context& cx;
+            ~Release() { cx.points = nullptr; }
+        } release{cx};
+        cx.points = &parsed.points;
+        const J& c = parsed.root;
         try {
             cx.claim(c.is_object() && c.contains("format") && c["format"] == J("scalecert-2"), "format is scalecert-2");
             cx.claim(c.contains("kind") && c["kind"].is_string(), "kind is present");

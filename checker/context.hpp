@@ -10,6 +10,7 @@
 #include <array>
 #include <cstddef>
 #include <string>
+#include <vector>
 
 namespace scalecert_check {
 using J = nlohmann::json;
@@ -17,6 +18,7 @@ using Q = mpq_class;
 using V3 = std::array<Q, 3>;
 using P2 = std::array<Q, 2>;
 using Z3 = std::array<mpz_class, 3>;
+struct IntPoints;  // points.hpp
 
 // Limits on what is read at all (FORMAT.md): beyond them the file is unreadable (exit 2).
 constexpr size_t kMaxFileBytes = size_t(1) << 30;  // 1 GiB
@@ -46,6 +48,11 @@ struct Context {
     double work = 0, budget = 6e8;               // the units counted so far, and this file's limit
     long claims = 0;                             // the claims checked so far
     std::string summary;                         // appended to the line printed for a valid file
+    // The scene's vertex lists of integers, which the reader takes straight from the text
+    // (json.hpp, parse_certificate); with direct_points false (for the tests, which compare the
+    // two) every list is read as a tree of strings instead.
+    std::vector<IntPoints>* points = nullptr;
+    bool direct_points = true;
 
     // A new file of `bytes` bytes: nothing counted yet, its budget from its size.
     void start(size_t bytes) {
@@ -59,7 +66,9 @@ struct Context {
         ++claims;
         if (!ok) throw Invalid{what};
     }
-    // The same, with the message built only when the claim fails (one that prints a number: a
+    // n claims that hold, established in bulk (each vertex of a list the reader took as integers).
+    void held(long n) { claims += n; }
+    // The same as claim(), with the message built only when the claim fails (one that prints a number: a
     // conversion to decimal costs more than the comparison).
     template <class F>
     void claim_lazy(bool ok, F what) {

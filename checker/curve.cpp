@@ -102,7 +102,7 @@ CurveFacts check_curve(Context& cx, const Scene& sc, const J& c, const Q& lo, co
         shape(cx, sv, w + ".support_vertices", {"P1", "P2"});
         for (int i = 0; i < 2; ++i)
             cx.claim(has(*f[i], static_cast<int>(
-                                    index(cx, at(sv, kPoly[i]), sc.P[i].size(), w + ".support_vertices." + kPoly[i]))),
+                                    index(cx, at(sv, kPoly[i]), sc.count(i), w + ".support_vertices." + kPoly[i]))),
                      w + ".support_vertices attain the support values");
         // The contact features G1, G2: the vertices maximising every listed normal with this line.
         // Every touching normal maximises on the touching set T, so T lies in G1(ρ1) ∩ G2(ρ2)
@@ -157,7 +157,7 @@ CurveFacts check_curve(Context& cx, const Scene& sc, const J& c, const Q& lo, co
             for (int i = 0; i < 2; ++i) {
                 // Vertices of the feature that span it (the scene may hold more points on it).
                 const std::string wf = w + ".features." + kPoly[i], ww = w + ".contact_witness." + kPoly[i];
-                std::vector<int> fl = index_list(cx, at(feats, kPoly[i]), sc.P[i].size(), wf);
+                std::vector<int> fl = index_list(cx, at(feats, kPoly[i]), sc.count(i), wf);
                 for (int v : fl) cx.claim(has(*G[i], v), wf + " lists only points of the contact feature");
                 cx.claim(affine_dim(cx, sc, i, fl) == affine_dim(cx, sc, i, *G[i]), wf + " spans the contact feature");
                 std::sort(used[i].begin(), used[i].end());
@@ -222,7 +222,7 @@ CurveFacts check_curve(Context& cx, const Scene& sc, const J& c, const Q& lo, co
         const J& feats = at(sw[k], "features");
         shape(cx, feats, w + ".features", {"P1", "P2"});
         for (int i = 0; i < 2; ++i)
-            for (int v : index_list(cx, at(feats, kPoly[i]), sc.P[i].size(), w + ".features." + kPoly[i]))
+            for (int v : index_list(cx, at(feats, kPoly[i]), sc.count(i), w + ".features." + kPoly[i]))
                 cx.claim(has(g[i], v), w + ".features lists only vertices of the contact feature");
     }
     const J& ends = at(c, "curve_ends");

@@ -3,6 +3,7 @@
 // duplicate key, nesting at most kMaxDepth, indices as JSON integers in range).
 #pragma once
 #include "context.hpp"
+#include "points.hpp"
 
 #include <initializer_list>
 #include <string>
@@ -15,6 +16,23 @@ std::string printable(const std::string& s);
 // The JSON value of the text: strict JSON, without duplicate keys, nested at most kMaxDepth
 // levels, with no NUL byte and no byte-order mark; else Unreadable.
 J parse_strict(const std::string& text);
+
+// A certificate's text read as parse_strict reads it, except the scene's vertex lists
+// (`scene.P1.vertices`, `scene.P2.vertices`, and each `scene.P1.parts[k].vertices`, and P2's):
+// a list whose every vertex is a list of three strings, each an integer written as FORMAT.md's
+// exact numbers must be ("p": an optional "-", then "0" or digits without a leading zero; not
+// "-0"), is taken straight from the text into `points`, and the tree holds at its place a marker
+// that no JSON text can make (a binary value; captured() finds the list). A list that is anything
+// else (a rational coordinate, a number, a point of two coordinates, "007", ...) is built into the
+// tree as parse_strict builds it, from the element where it leaves that form on, and num() judges
+// it as before. With direct false every list is built into the tree.
+struct Parsed {
+    J root;
+    std::vector<IntPoints> points;
+};
+Parsed parse_certificate(const std::string& text, bool direct = true);
+// The vertex list that parse_certificate took at j (its marker), or nullptr.
+IntPoints* captured(Context& cx, const J& j);
 
 // o is an object with every key of `required`, and no key outside required ∪ optional.
 void shape(Context& cx, const J& o, const std::string& where, std::initializer_list<const char*> required,

@@ -97,7 +97,7 @@ void check_lower_bound(Context& cx, const Scene& sc, const Q& r1, const Q& r2, c
     for (size_t k = 0; k < pts.size(); ++k) {
         const std::string w = where + ".points[" + std::to_string(k) + "]";
         cx.claim(pts[k].is_array() && pts[k].size() == 2, w + " is [vertex of P1, vertex of P2]");
-        const size_t a = index(cx, pts[k][0], sc.P[0].size(), w), b = index(cx, pts[k][1], sc.P[1].size(), w);
+        const size_t a = index(cx, pts[k][0], sc.count(0), w), b = index(cx, pts[k][1], sc.count(1), w);
         const Z3 &Xa = sc.scan[0]->X(a), &Xb = sc.scan[1]->X(b);
         double lx = 0;
         for (int c = 0; c < 3; ++c) lx = std::max({lx, limbs(Xa[c]), limbs(Xb[c])});

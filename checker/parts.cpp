@@ -20,17 +20,17 @@ CompoundScene read_compound_scene(Context& cx, const J& sj) {
         if (parts.size() > kMaxCompoundParts)
             throw Unreadable{w + " has more than " + std::to_string(kMaxCompoundParts) +
                              " parts (scalecert's own limit)"};
+        Vertices v;
         for (size_t k = 0; k < parts.size(); ++k) {
             const std::string wk = w + ".parts[" + std::to_string(k) + "]";
             shape(cx, parts[k], wk, {"vertices"});
             const J& vs = at(parts[k], "vertices");
-            cx.claim(vs.is_array() && !vs.empty(), wk + ".vertices is a nonempty list");
-            start[i].push_back(sc.P[i].size());
-            for (size_t v = 0; v < vs.size(); ++v)
-                sc.P[i].push_back(point(cx, vs[v], wk + ".vertices[" + std::to_string(v) + "]"));
+            cx.claim(Vertices::is_list(cx, vs) && Vertices::length(cx, vs) > 0, wk + ".vertices is a nonempty list");
+            start[i].push_back(v.size());
+            v.add(cx, vs, wk + ".vertices");
         }
-        start[i].push_back(sc.P[i].size());
-        read_seed(cx, sc, i, p, w);
+        start[i].push_back(v.size());
+        read_seed(cx, sc, i, p, w, v);
     }
     sc.prepare(cx);
     read_ranges(cx, sc, sj);

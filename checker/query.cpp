@@ -47,8 +47,8 @@ void check_verdict(Context& cx, const Scene& sc, const Q& r1, const Q& r2, const
         const Q c1 = Q(dotz(ints(n), sc.S[0])) + r1 * Q(H[0]), c2 = Q(dotz(ints(n), sc.S[1])) - r2 * Q(H[1]), D(sc.Dj);
         const J& sv = at(pl, "support_vertices");
         shape(cx, sv, "plane.support_vertices", {"P1", "P2"});
-        cx.claim(has(f1, static_cast<int>(index(cx, at(sv, "P1"), sc.P[0].size(), "plane.support_vertices.P1"))) &&
-                     has(f2, static_cast<int>(index(cx, at(sv, "P2"), sc.P[1].size(), "plane.support_vertices.P2"))),
+        cx.claim(has(f1, static_cast<int>(index(cx, at(sv, "P1"), sc.count(0), "plane.support_vertices.P1"))) &&
+                     has(f2, static_cast<int>(index(cx, at(sv, "P2"), sc.count(1), "plane.support_vertices.P2"))),
                  "plane.support_vertices attain the extremes");
         cx.claim(contact_string(cx, at(pl, "contact"), "plane.contact") ==
                      std::string{dimension_letter(cx, sc, 0, f1), dimension_letter(cx, sc, 1, f2)},

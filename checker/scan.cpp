@@ -7,7 +7,7 @@ namespace scalecert_check {
 namespace {
 // z as an int64 when |z| < 2^62 (and long holds it); false otherwise.
 bool small_int(mpz_srcptr z, int64_t& out) {
-    if (mpz_sizeinbase(z, 2) > 62 || !mpz_fits_slong_p(z)) return false;
+    if (mpz_sizeinbase(z, 2) > IntPoints::kSmallBits || !mpz_fits_slong_p(z)) return false;
     out = mpz_get_si(z);
     return true;
 }
@@ -18,6 +18,15 @@ mpz_class from128(__int128 v) {
     r <<= 64;
     r += static_cast<unsigned long>(static_cast<uint64_t>(a));
     return neg ? mpz_class(-r) : r;
+}
+// r = a·x for an int64 x.
+void mul64(mpz_ptr r, mpz_srcptr a, int64_t x) {
+    if constexpr (sizeof(long) >= sizeof(int64_t)) {
+        mpz_mul_si(r, a, static_cast<long>(x));
+    } else {
+        const mpz_class z = z64(x);
+        mpz_mul(r, a, z.get_mpz_t());
+    }
 }
 // All vertices, in one pass: the running maximum in a register, the list touched only when a
 // vertex reaches it (rarely, once the maximum is found). Returns the maximum.
@@ -57,7 +66,7 @@ T scan(size_t n, const int* at, F value, std::vector<int>& out) {
 }
 }  // namespace
 
-Scan::Scan(Context& cx, const std::vector<V3>& v, const std::string& what) : n_(v.size()) {
+Scan::Scan(Context& cx, const std::vector<V3>& v, const std::string& what) {
     for (const V3& p : v)
         for (const Q& c : p) {
             if (mpz_cmp_ui(c.get_den_mpz_t(), 1) != 0) mpz_lcm(D_.get_mpz_t(), D_.get_mpz_t(), c.get_den_mpz_t());
@@ -65,29 +74,60 @@ Scan::Scan(Context& cx, const std::vector<V3>& v, const std::string& what) : n_(
                 throw Unreadable{"the common denominator of " + what +
                                  "'s vertex coordinates has more than 16384 bits (scalecert's own limit)"};
         }
-    cx.spend(static_cast<double>(n_) * (10 + 3 * limbs(D_)));
-    Z_.resize(n_);
-    pos_.assign(n_, -1);
-    for (size_t k = 0; k < n_; ++k) {
-        bool machine = sizeof(long) >= 8;  // mpz_get_si gives the int64 values as long
+    cx.spend(static_cast<double>(v.size()) * (10 + 3 * limbs(D_)));
+    for (auto& c : P_.x) c.reserve(v.size());
+    for (const V3& p : v) {
+        Z3 X;
         int64_t x[3];
+        bool small = true;
         for (int c = 0; c < 3; ++c) {
-            mpz_divexact(Z_[k][c].get_mpz_t(), D_.get_mpz_t(), v[k][c].get_den_mpz_t());
-            Z_[k][c] *= v[k][c].get_num();
-            machine = machine && small_int(Z_[k][c].get_mpz_t(), x[c]);
+            mpz_divexact(X[c].get_mpz_t(), D_.get_mpz_t(), p[c].get_den_mpz_t());
+            X[c] *= p[c].get_num();
+            small = small_int(X[c].get_mpz_t(), x[c]) && small;
         }
-        if (!machine) {
-            big_.push_back(static_cast<int>(k));
-            for (int c = 0; c < 3; ++c) big_limbs_[c] += limbs(Z_[k][c]);
-            continue;
-        }
-        pos_[k] = static_cast<int>(X_[0].size());
-        orig_.push_back(static_cast<int>(k));
-        for (int c = 0; c < 3; ++c) {
-            X_[c].push_back(x[c]);
-            bits_ = std::max(bits_, static_cast<int>(mpz_sizeinbase(Z_[k][c].get_mpz_t(), 2)));
+        if (small)
+            P_.add_small(x);
+        else
+            P_.add_big(std::move(X));
+    }
+    index();
+}
+
+// Integers: D = 1 and X_k = v_k, counted as the rational constructor counts them.
+Scan::Scan(Context& cx, IntPoints&& v) : P_(std::move(v)) {
+    cx.spend(static_cast<double>(P_.n) * (10 + 3 * limbs(D_)));
+    index();
+}
+
+void Scan::index() {
+    if (!P_.big.empty()) {
+        pos_.assign(P_.n, 0);
+        for (size_t p = 0; p < P_.small(); ++p) pos_[static_cast<size_t>(P_.orig[p])] = static_cast<int>(p);
+        for (size_t b = 0; b < P_.big.size(); ++b) {
+            pos_[static_cast<size_t>(P_.big[b])] = -1 - static_cast<int>(b);
+            for (int c = 0; c < 3; ++c) big_limbs_[c] += limbs(P_.big_x[b][c]);
         }
     }
+    // bits_: the bit length of the largest |X| (that of 0 taken as 1, as GMP's mpz_sizeinbase
+    // gives): the highest bit set in the OR of all magnitudes. Each |X| < 2^62: no overflow.
+    if (P_.small() == 0) return;
+    uint64_t any = 0;
+    for (const auto& xs : P_.x)
+        for (const int64_t c : xs) any |= static_cast<uint64_t>(c < 0 ? -c : c);
+    bits_ = any ? 64 - __builtin_clzll(any) : 1;
+}
+
+Z3 Scan::X(size_t k) const {
+    const int p = pos_.empty() ? static_cast<int>(k) : pos_[k];
+    if (p < 0) return P_.big_x[static_cast<size_t>(-1 - p)];
+    const size_t q = static_cast<size_t>(p);
+    return {z64(P_.x[0][q]), z64(P_.x[1][q]), z64(P_.x[2][q])};
+}
+
+double Scan::coord_limbs(size_t k, int c) const {
+    const int p = pos_.empty() ? static_cast<int>(k) : pos_[k];
+    if (p < 0) return limbs(P_.big_x[static_cast<size_t>(-1 - p)][c]);
+    return P_.x[c][static_cast<size_t>(p)] != 0 ? 1 : 0;  // |X| < 2^62: one limb, none for 0
 }
 
 std::vector<int> Scan::argmax(Context& cx, const Z3& u, const std::vector<int>* subset) const {
@@ -101,23 +141,23 @@ std::vector<int> Scan::argmax(Context& cx, const Z3& u, const std::vector<int>* 
     const bool all = !subset;
     if (subset)
         for (int k : *subset) {
-            const int p = pos_[static_cast<size_t>(k)];
+            const int p = pos_.empty() ? k : pos_[static_cast<size_t>(k)];
             (p >= 0 ? mlist.push_back(p) : blist.push_back(k));
         }
-    const std::vector<int>& bl = all ? big_ : blist;
-    const size_t nm = all ? X_[0].size() : mlist.size();
+    const std::vector<int>& bl = all ? P_.big : blist;
+    const size_t nm = all ? P_.small() : mlist.size();
     std::vector<int> mout, bout;
     mpz_class mbest, bbest;
     if (nm > 0) {
         const int* at = all ? nullptr : mlist.data();
-        const int64_t *x = X_[0].data(), *y = X_[1].data(), *z = X_[2].data();
+        const int64_t *x = P_.x[0].data(), *y = P_.x[1].data(), *z = P_.x[2].data();
         if (small_u && bits_ + ub <= 61) {
             cx.spend(static_cast<double>(nm));
             const int64_t a = w[0], b = w[1], c = w[2];
             auto value = [=](size_t k) { return a * x[k] + b * y[k] + c * z[k]; };
             const int64_t best = at ? scan<int64_t>(nm, at, value, mout) : scan<int64_t>(nm, value, mout);
             if (all && bl.empty()) return mout;  // every vertex is at its own position
-            mbest = static_cast<long>(best);
+            mbest = z64(best);
         } else if (small_u) {
             cx.spend(2.0 * static_cast<double>(nm));
             const __int128 a = w[0], b = w[1], c = w[2];
@@ -127,13 +167,11 @@ std::vector<int> Scan::argmax(Context& cx, const Z3& u, const std::vector<int>* 
             mbest = from128(best);
         }
         if (small_u) {
-            for (int& p : mout) p = orig_[static_cast<size_t>(p)];
+            for (int& p : mout) p = P_.point_at(static_cast<size_t>(p));
         } else {  // a normal past 2^62: GMP integers for these vertices too
             std::vector<int> list;
-            if (all)
-                list = orig_;
-            else
-                for (int p : mlist) list.push_back(orig_[static_cast<size_t>(p)]);
+            list.reserve(nm);
+            for (size_t j = 0; j < nm; ++j) list.push_back(P_.point_at(all ? j : static_cast<size_t>(mlist[j])));
             mout = mpz_scan(cx, u, list, mbest);
         }
     }
@@ -153,20 +191,30 @@ std::vector<int> Scan::mpz_scan(Context& cx, const Z3& u, const std::vector<int>
     double units = 40 * static_cast<double>(list.size());
     for (int c = 0; c < 3; ++c) {
         double lx = 0;
-        if (&list == &big_)
+        if (&list == &P_.big)
             lx = big_limbs_[c];
         else
-            for (int k : list) lx += limbs(Z_[static_cast<size_t>(k)][c]);
+            for (int k : list) lx += coord_limbs(static_cast<size_t>(k), c);
         units += 0.5 * std::max(1.0, limbs(u[c])) * lx;
     }
     cx.spend(units);
     std::vector<int> out;
-    mpz_class v;
+    mpz_class v, t;
     for (int k : list) {
-        const auto& X = Z_[static_cast<size_t>(k)];
-        mpz_mul(v.get_mpz_t(), u[0].get_mpz_t(), X[0].get_mpz_t());
-        mpz_addmul(v.get_mpz_t(), u[1].get_mpz_t(), X[1].get_mpz_t());
-        mpz_addmul(v.get_mpz_t(), u[2].get_mpz_t(), X[2].get_mpz_t());
+        const int p = pos_.empty() ? k : pos_[static_cast<size_t>(k)];
+        if (p >= 0) {  // a machine vertex: its int64 coordinates times u
+            const size_t q = static_cast<size_t>(p);
+            mul64(v.get_mpz_t(), u[0].get_mpz_t(), P_.x[0][q]);
+            mul64(t.get_mpz_t(), u[1].get_mpz_t(), P_.x[1][q]);
+            v += t;
+            mul64(t.get_mpz_t(), u[2].get_mpz_t(), P_.x[2][q]);
+            v += t;
+        } else {
+            const Z3& X = P_.big_x[static_cast<size_t>(-1 - p)];
+            mpz_mul(v.get_mpz_t(), u[0].get_mpz_t(), X[0].get_mpz_t());
+            mpz_addmul(v.get_mpz_t(), u[1].get_mpz_t(), X[1].get_mpz_t());
+            mpz_addmul(v.get_mpz_t(), u[2].get_mpz_t(), X[2].get_mpz_t());
+        }
         const int c = out.empty() ? 1 : cmp(v, best);
         if (c > 0) {
             mpz_swap(best.get_mpz_t(), v.get_mpz_t());

@@ -5,8 +5,8 @@
 // D > 0 is the lcm of the denominators of the polytope's vertex coordinates (at most 2^16384, the
 // engine's own limit): this orders the vertices as u·(v_k − s_i) does. Exact in every case, in the
 // cheapest arithmetic the numbers allow. The vertices whose X coordinates are all below 2^62 in
-// magnitude are also held as int64; with every such |X| < 2^b and an integer u with every
-// |u_c| < 2^c they are scanned
+// magnitude are held as int64 only (points.hpp); with every such |X| < 2^b and an integer u with
+// every |u_c| < 2^c they are scanned
 //   - b + c <= 61: in int64. Each product u_c X_c is below 2^61 in magnitude, each partial sum
 //     below 3·2^61 < 2^63: no overflow;
 //   - b <= 62 and c <= 62: in __int128. Each product is below 2^124 in magnitude, each partial
@@ -18,6 +18,7 @@
 // of every number kind, mixed sizes among them).
 #pragma once
 #include "context.hpp"
+#include "points.hpp"
 
 #include <cstdint>
 #include <string>
@@ -29,24 +30,30 @@ class Scan {
     // The vertices v of one polytope (`what` names it in messages); refused as unreadable when
     // their common denominator passes 16,384 bits.
     Scan(Context& cx, const std::vector<V3>& v, const std::string& what);
+    // The vertices of one polytope of integer coordinates, as the reader holds them (D = 1).
+    Scan(Context& cx, IntPoints&& v);
     // The vertices k (of `subset`, ascending, or of all) at which u·v_k is largest, ascending.
     // u has integer coordinates.
     std::vector<int> argmax(Context& cx, const Z3& u, const std::vector<int>* subset = nullptr) const;
     const mpz_class& D() const { return D_; }
-    const Z3& X(size_t k) const { return Z_[k]; }  // D v_k
-    size_t size() const { return n_; }
+    Z3 X(size_t k) const;  // D v_k
+    size_t size() const { return P_.n; }
 
   private:
-    size_t n_;
     mpz_class D_ = 1;
-    std::vector<Z3> Z_;  // X_k = D v_k
-    // The vertices whose X coordinates are all below 2^62 in magnitude, held as int64 at compact
-    // positions (orig_: position -> vertex, pos_: vertex -> position or -1), and the others (big_).
-    std::vector<int64_t> X_[3];
-    std::vector<int> orig_, pos_, big_;
+    // X_k = D v_k: the vertices whose X coordinates are all below 2^62 in magnitude as int64 at
+    // compact positions (P_.point_at: position -> vertex), the others (P_.big) in mpz; pos_:
+    // vertex -> its position, or -1 - its place in P_.big (empty while no vertex is big: the
+    // identity).
+    IntPoints P_;
+    std::vector<int> pos_;
     int bits_ = 0;                     // every machine |X| < 2^bits_
     double big_limbs_[3] = {0, 0, 0};  // the limbs of the others' X, by coordinate
 
+    // pos_, bits_ and big_limbs_, once P_ holds every vertex.
+    void index();
+    // The limbs of X_k's coordinate c (as GMP would hold it).
+    double coord_limbs(size_t k, int c) const;
     // u·X_k over the vertices of `list` (ascending) in GMP integers: the maximisers, ascending,
     // and the maximum in `best`.
     std::vector<int> mpz_scan(Context& cx, const Z3& u, const std::vector<int>& list, mpz_class& best) const;

@@ -112,6 +112,38 @@ char dimension_letter(Context& cx, const Scene& sc, int i, const std::vector<int
     return "VEFF"[affine_dim(cx, sc, i, idx)];
 }
 
+bool Vertices::is_list(Context& cx, const J& j) { return j.is_array() || captured(cx, j); }
+
+size_t Vertices::length(Context& cx, const J& j) {
+    const IntPoints* p = captured(cx, j);
+    return p ? p->n : j.size();
+}
+
+void Vertices::add(Context& cx, const J& j, const std::string& where) {
+    if (IntPoints* p = captured(cx, j)) {
+        // Each vertex a list of three strings, each an integer written canonically (the reader
+        // took no other): the 13 claims point() states of it hold (a point of 3 coordinates;
+        // each a string, of the form p or p/q, with a nonzero denominator, in lowest terms).
+        cx.held(13 * static_cast<long>(p->n));
+        if (rational_)
+            p->to_rationals(rat_);
+        else
+            ints_.append(std::move(*p));
+        return;
+    }
+    if (!rational_) {  // a list the tree holds: from here on every vertex as a rational
+        ints_.to_rationals(rat_);
+        ints_ = IntPoints();
+        rational_ = true;
+    }
+    for (size_t k = 0; k < j.size(); ++k) rat_.push_back(point(cx, j[k], where + "[" + std::to_string(k) + "]"));
+}
+
+std::unique_ptr<Scan> Vertices::scan(Context& cx, const std::string& what) {
+    if (rational_) return std::make_unique<Scan>(cx, rat_, what);
+    return std::make_unique<Scan>(cx, std::move(ints_));
+}
+
 Scene read_scene(Context& cx, const J& j) {
     shape(cx, j, "scene", {"P1", "P2", "I1", "I2"});
     Scene sc;
@@ -120,20 +152,20 @@ Scene read_scene(Context& cx, const J& j) {
         const J& p = at(j, kPoly[i]);
         shape(cx, p, w, {"vertices", "seed"});
         const J& vs = at(p, "vertices");
-        cx.claim(vs.is_array(), w + ".vertices is a list");
-        for (size_t k = 0; k < vs.size(); ++k)
-            sc.P[i].push_back(point(cx, vs[k], w + ".vertices[" + std::to_string(k) + "]"));
-        cx.claim(sc.P[i].size() >= 4, w + " has at least 4 vertices");
-        read_seed(cx, sc, i, p, w);
+        cx.claim(Vertices::is_list(cx, vs), w + ".vertices is a list");
+        Vertices v;
+        v.add(cx, vs, w + ".vertices");
+        cx.claim(v.size() >= 4, w + " has at least 4 vertices");
+        read_seed(cx, sc, i, p, w, v);
     }
     sc.prepare(cx);
     read_ranges(cx, sc, j);
     return sc;
 }
 
-void read_seed(Context& cx, Scene& sc, int i, const J& p, const std::string& w) {
+void read_seed(Context& cx, Scene& sc, int i, const J& p, const std::string& w, Vertices& v) {
     sc.s[i] = point(cx, at(p, "seed"), w + ".seed");
-    sc.scan[i] = std::make_unique<Scan>(cx, sc.P[i], kPoly[i]);
+    sc.scan[i] = v.scan(cx, kPoly[i]);
 }
 
 void read_ranges(Context& cx, Scene& sc, const J& j) {
@@ -149,7 +181,7 @@ void read_ranges(Context& cx, Scene& sc, const J& j) {
 
 std::array<Q, 3> combination(Context& cx, const Scene& sc, int i, const J& w, const std::string& where,
                              std::vector<int>* used, size_t base, size_t count) {
-    if (count == SIZE_MAX) count = sc.P[i].size();
+    if (count == SIZE_MAX) count = sc.count(i);
     cx.claim(w.is_array() && !w.empty(), where + " is a nonempty list of weights");
     std::set<size_t> seen;
     Q total = 0;

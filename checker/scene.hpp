@@ -24,7 +24,6 @@ namespace scalecert_check {
 inline constexpr const char* kPoly[2] = {"P1", "P2"};
 
 struct Scene {
-    std::vector<V3> P[2];
     V3 s[2];
     Q lo[2], hi[2];
     std::unique_ptr<Scan> scan[2];
@@ -32,6 +31,7 @@ struct Scene {
     Z3 S[2], Delta;           // D* s_i and D* (s2 − s1)
     std::array<Q, 3> sdv[2];  // D_i s_i = S_i / E_i (exact rationals), for the combinations over D_i
 
+    size_t count(int i) const { return scan[i]->size(); }  // the vertices of polyhedron i
     // D*, S_i, Delta and D_i s_i, once the vertices are scanned and the seeds read.
     void prepare(Context& cx);
 
@@ -65,11 +65,33 @@ struct Scene {
     mutable std::map<std::string, Support> cache_;
 };
 
+// The vertices of one polyhedron as they are read, list by list (a compound object's parts, in
+// order): as integers while every list came from the reader as one (json.hpp,
+// parse_certificate), else all as rationals, each vertex judged by point().
+class Vertices {
+  public:
+    // j is a list of vertices (an array, or a list the reader took).
+    static bool is_list(Context& cx, const J& j);
+    // The length of the list j.
+    static size_t length(Context& cx, const J& j);
+    // Appends the vertices of the list j (named where: its vertex k is where[k]), each a point of
+    // three exact numbers. A list the reader took is moved out of it (a scene is read once).
+    void add(Context& cx, const J& j, const std::string& where);
+    size_t size() const { return rational_ ? rat_.size() : ints_.n; }
+    // The scan of them all (`what` names the polyhedron): the vertices are moved into it.
+    std::unique_ptr<Scan> scan(Context& cx, const std::string& what);
+
+  private:
+    IntPoints ints_;
+    std::vector<V3> rat_;
+    bool rational_ = false;
+};
+
 // The scene object of a partition, a query answer or a judgements file: two polyhedra of at
 // least 4 vertices, their seeds, I1 and I2.
 Scene read_scene(Context& cx, const J& j);
-// The seed of polyhedron i (object p of the file, named w) and the scan of its vertices sc.P[i].
-void read_seed(Context& cx, Scene& sc, int i, const J& p, const std::string& w);
+// The seed of polyhedron i (object p of the file, named w) and the scan of its vertices v.
+void read_seed(Context& cx, Scene& sc, int i, const J& p, const std::string& w, Vertices& v);
 // I1 and I2 of a scene object: [lo, hi] with 0 < lo <= hi.
 void read_ranges(Context& cx, Scene& sc, const J& j);
 

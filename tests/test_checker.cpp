@@ -21,6 +21,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <functional>
 #include <fstream>
 #include <map>
 #include <set>
@@ -1153,9 +1154,8 @@ CQ rq(std::mt19937_64& g, const mpz_class& range, const mpz_class& den_range) {
 sc_::Scene make_scene(sc_::Context& cx, const std::vector<CV> P[2], const CV s[2]) {
     sc_::Scene sc;
     for (int i = 0; i < 2; ++i) {
-        sc.P[i] = P[i];
         sc.s[i] = s[i];
-        sc.scan[i] = std::make_unique<sc_::Scan>(cx, sc.P[i], i ? "P2" : "P1");
+        sc.scan[i] = std::make_unique<sc_::Scan>(cx, P[i], i ? "P2" : "P1");
     }
     sc.prepare(cx);
     return sc;
@@ -1234,7 +1234,7 @@ BOOST_AUTO_TEST_CASE(support_scans_equal_the_plain_rational_definition) {
     const std::vector<Kind> kinds = {
         {20, 1}, {3, 1}, {1000, 7}, {one << 70, 1}, {one << 61, 1}, {one << 200, one << 100}, {5, one << 90}, {-1, 1}};
     const std::vector<mpz_class> normal_sizes = {5, 1000, one << 40, one << 61, one << 90, one << 300};
-    int checks = 0, paths[3] = {0, 0, 0};
+    int checks = 0, direct_checks = 0, paths[3] = {0, 0, 0};
     for (int t = 0; t < 400; ++t) {
         const Kind& kd = kinds[static_cast<size_t>(t) % kinds.size()];
         std::vector<CV> P[2];
@@ -1255,6 +1255,29 @@ BOOST_AUTO_TEST_CASE(support_scans_equal_the_plain_rational_definition) {
         }
         sc_::Context cx;
         sc_::Scene sc = make_scene(cx, P, s);
+        // For integer vertices, the same scan built from integers as the reader holds them
+        // (small points as int64, the others in GMP integers): its every X and maximiser list the
+        // same as the rational path's.
+        std::unique_ptr<sc_::Scan> direct[2];
+        if (kd.den == 1)
+            for (int i = 0; i < 2; ++i) {
+                sc_::IntPoints ip;
+                for (const CV& v : P[i]) {
+                    int64_t x[3];
+                    bool small = true;
+                    for (int c = 0; c < 3; ++c) {
+                        small = small && mpz_sizeinbase(v[c].get_num_mpz_t(), 2) <= 62;
+                        if (small) x[c] = v[c].get_num().get_si();
+                    }
+                    if (small)
+                        ip.add_small(x);
+                    else
+                        ip.add_big({v[0].get_num(), v[1].get_num(), v[2].get_num()});
+                }
+                direct[i] = std::make_unique<sc_::Scan>(cx, std::move(ip));
+                BOOST_TEST(direct[i]->size() == P[i].size());
+                for (size_t k = 0; k < P[i].size(); ++k) BOOST_TEST((direct[i]->X(k) == sc.scan[i]->X(k)));
+            }
         for (int r = 0; r < 12; ++r) {
             const mpz_class& size = normal_sizes[static_cast<size_t>(g() % normal_sizes.size())];
             CV n;
@@ -1292,6 +1315,14 @@ BOOST_AUTO_TEST_CASE(support_scans_equal_the_plain_rational_definition) {
                 plain_h(Ps, s[i], n, i ? -1 : 1, want_sub);
                 for (int& k : want_sub) k = sub[static_cast<size_t>(k)];
                 BOOST_TEST(sc.scan[i]->argmax(cx, u, &sub) == want_sub);
+                if (direct[i]) {
+                    sc_::Z3 all = sc_::ints(n);
+                    if (i)
+                        for (auto& c : all) c = -c;
+                    BOOST_TEST(direct[i]->argmax(cx, all) == want);
+                    BOOST_TEST(direct[i]->argmax(cx, u, &sub) == want_sub);
+                    ++direct_checks;
+                }
                 ++checks;
                 int ub = 0;
                 for (const auto& c : u) ub = std::max(ub, static_cast<int>(mpz_sizeinbase(c.get_mpz_t(), 2)));
@@ -1305,6 +1336,8 @@ BOOST_AUTO_TEST_CASE(support_scans_equal_the_plain_rational_definition) {
     BOOST_TEST(paths[0] > 100);
     BOOST_TEST(paths[1] > 100);
     BOOST_TEST(paths[2] > 100);
+    std::cout << "support scans on integers as the reader holds them: " << direct_checks << "\n";
+    BOOST_TEST(direct_checks > 300);
 }
 
 BOOST_AUTO_TEST_CASE(normalize_is_the_one_at_a_time_removal_on_convex_polygons) {
@@ -1838,4 +1871,356 @@ BOOST_AUTO_TEST_CASE(fresh_compound_judgements_for_random_scenes_are_valid) {
               << verdicts[1] << " touching, " << verdicts[2] << " overlapping\n";
     BOOST_TEST(verdicts[0] > 0);
     BOOST_TEST(verdicts[2] > 0);
+}
+
+// ---- vertex lists read straight from the text ----------------------------------------------------
+// The reader takes a scene's vertex list of integers into int64 (GMP integers past 2^62) without
+// building a tree of strings (json.hpp, parse_certificate); any other list goes into the tree and
+// is judged by num() as before. Both ways must give the same status, line and count of claims on
+// every text, and the integers must be exact at the limits of int64.
+namespace {
+struct Answer {
+    int status;
+    std::string message;
+    long claims;
+};
+Answer answer(const std::string& text, bool direct) {
+    sc_::Context cx;
+    cx.direct_points = direct;
+    std::string msg;
+    const int st = sc_::check_text(text, msg, cx);
+    return {st, msg, cx.claims};
+}
+// Checks j both ways; returns the status.
+int same_both_ways(const OJ& j, const std::string& what, int& compared) {
+    const std::string text = j.dump(1);
+    const Answer a = answer(text, true), b = answer(text, false);
+    BOOST_TEST(a.status == b.status, what);
+    BOOST_TEST(a.message == b.message, what << ": " << a.message << " | " << b.message);
+    BOOST_TEST(a.claims == b.claims, what);
+    ++compared;
+    return a.status;
+}
+// The vertex lists of a certificate's scene (of each part, for a compound one), as JSON pointers.
+std::vector<OJ::json_pointer> vertex_lists(const OJ& j) {
+    std::vector<OJ::json_pointer> out;
+    for (const char* p : {"P1", "P2"}) {
+        const OJ& o = j["scene"][p];
+        if (o.contains("vertices")) out.push_back(OJ::json_pointer("/scene/" + std::string(p) + "/vertices"));
+        if (o.contains("parts"))
+            for (size_t k = 0; k < o["parts"].size(); ++k)
+                out.push_back(
+                    OJ::json_pointer("/scene/" + std::string(p) + "/parts/" + std::to_string(k) + "/vertices"));
+    }
+    return out;
+}
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(direct_vertex_lists_are_judged_as_the_tree_judges_them) {
+    // Every bundled partition (integer scenes and rational ones) and three compound partitions (one
+    // with a rational vertex in one part: its object read as rationals from that part on, the
+    // parts before it taken as integers), intact and with each vertex list changed: a coordinate
+    // spelled every way an integer must not be, or at and past the limits of int64, or as a
+    // rational; a vertex of the wrong shape or kind; vertices deleted, duplicated or added; the
+    // list not a list. At the first vertex and the last, so that the reader leaves its form at the
+    // start of a list and deep inside one.
+    std::vector<std::pair<std::string, OJ>> certs;
+    for (const auto& e : fs::directory_iterator(fs::path(SCALECERT_SOURCE_DIR) / "certificates"))
+        if (e.path().string().size() > 15 &&
+            e.path().string().rfind(".partition.json") == e.path().string().size() - 15)
+            certs.push_back({e.path().filename().string(), load(e.path())});
+    certs.push_back({"compound band", compound_certificate(data("compound_band.json"), "band")});
+    certs.push_back({"compound u_peg", compound_certificate(data("compound_u_peg.json"), "u_peg")});
+    certs.push_back({"compound mixed", compound_certificate(mixed_compound(), "mixed")});
+    const std::vector<OJ> coordinates = {"-0",
+                                         "007",
+                                         "-01",
+                                         "00",
+                                         "+1",
+                                         "1.0",
+                                         "1e3",
+                                         "",
+                                         " 1",
+                                         "1 ",
+                                         "-",
+                                         "--1",
+                                         "1/1",
+                                         "2/4",
+                                         "1/2",
+                                         "-7/3",
+                                         "0",
+                                         "-1",
+                                         "0x10",
+                                         "\u0661",
+                                         std::string("1\0", 2),
+                                         "4611686018427387903",
+                                         "4611686018427387904",
+                                         "-4611686018427387903",
+                                         "-4611686018427387904",
+                                         "9223372036854775807",
+                                         "9223372036854775808",
+                                         "-9223372036854775808",
+                                         "-9223372036854775809",
+                                         "9999999999999999999",
+                                         "10000000000000000000",
+                                         "123456789012345678901234567890",
+                                         "-123456789012345678901234567890",
+                                         5,
+                                         -5,
+                                         1.5,
+                                         nullptr,
+                                         true,
+                                         OJ::object(),
+                                         OJ::array(),
+                                         OJ::array({"1"})};
+    const std::vector<OJ> vertices = {OJ::array(),
+                                      OJ::array({"1", "2"}),
+                                      OJ::array({"1", "2", "3", "4"}),
+                                      OJ::array({OJ::array({"1"}), "2", "3"}),
+                                      OJ::array({1, 2, 3}),
+                                      OJ::array({"9223372036854775808", "-4611686018427387904", "0"}),
+                                      "x",
+                                      5,
+                                      OJ::object(),
+                                      nullptr};
+    const std::vector<OJ> lists = {OJ::array(), OJ::object(), "x", nullptr, 5, OJ::array({OJ::array()})};
+    int compared = 0, integer_lists = 0, statuses[3] = {0, 0, 0};
+    for (const auto& [name, j] : certs) {
+        BOOST_TEST(same_both_ways(j, name, compared) == 0);
+        // which lists the reader takes: exactly those of integers written canonically
+        const sc_::Parsed parsed = sc_::parse_certificate(j.dump(1));
+        size_t expect = 0;
+        for (const auto& ptr : vertex_lists(j)) {
+            bool ints = true;
+            for (const OJ& v : j[ptr])
+                for (const OJ& c : v) ints = ints && c.get<std::string>().find('/') == std::string::npos;
+            expect += ints;
+        }
+        BOOST_TEST(parsed.points.size() == expect, name);
+        integer_lists += static_cast<int>(expect);
+        for (const auto& ptr : vertex_lists(j)) {
+            const size_t n = j[ptr].size();
+            for (size_t at : {size_t(0), n - 1}) {
+                const std::string where = name + " " + ptr.to_string() + "/" + std::to_string(at);
+                for (size_t c = 0; c < coordinates.size(); ++c) {
+                    OJ m = j;
+                    m[ptr][at][c % 3] = coordinates[c];
+                    ++statuses[same_both_ways(m, where + " coordinate " + coordinates[c].dump(), compared)];
+                }
+                for (const OJ& v : vertices) {
+                    OJ m = j;
+                    m[ptr][at] = v;
+                    ++statuses[same_both_ways(m, where + " vertex " + v.dump(), compared)];
+                }
+                OJ del = j, dup = j, add = j;
+                del[ptr].erase(at);
+                ++statuses[same_both_ways(del, where + " deleted", compared)];
+                dup[ptr].insert(dup[ptr].begin() + static_cast<long>(at), j[ptr][at]);
+                ++statuses[same_both_ways(dup, where + " duplicated", compared)];
+                add[ptr].insert(add[ptr].begin() + static_cast<long>(at),
+                                OJ::array({"9223372036854775807", "-9223372036854775808", "1"}));
+                ++statuses[same_both_ways(add, where + " a vertex at the int64 limits added", compared)];
+            }
+            for (const OJ& l : lists) {
+                OJ m = j;
+                m[ptr] = l;
+                ++statuses[same_both_ways(m, name + " " + ptr.to_string() + " = " + l.dump(), compared)];
+            }
+        }
+    }
+    std::cout << "direct and tree reading compared on " << compared << " texts (" << statuses[0] << " valid, "
+              << statuses[1] << " invalid, " << statuses[2] << " unreadable); " << integer_lists
+              << " integer vertex lists in the intact files\n";
+    BOOST_TEST(integer_lists >= 15);
+    BOOST_TEST(statuses[0] > 50);
+    BOOST_TEST(statuses[1] > 1000);
+}
+
+BOOST_AUTO_TEST_CASE(integers_at_the_limits_of_int64_are_read_exactly) {
+    // Below 2^62 in magnitude a coordinate is held as int64; from 2^62 on (INT64_MAX and INT64_MIN
+    // among them, and 2^63 and 20 digits past them) its vertex is held in GMP integers. The
+    // maximum along each axis, by hand, and ties between a small vertex and big ones merged.
+    const std::string text = R"({"scene": {"P1": {"vertices": [
+        ["4611686018427387903", "-4611686018427387903", "0"],
+        ["4611686018427387904", "0", "0"],
+        ["-4611686018427387904", "0", "0"],
+        ["9223372036854775807", "0", "0"],
+        ["-9223372036854775808", "0", "0"],
+        ["9223372036854775808", "1", "2"],
+        ["99999999999999999999", "0", "0"],
+        ["1", "2", "3"],
+        ["0", "2", "-1"],
+        ["4611686018427387904", "2", "-1"]]}}})";
+    sc_::Parsed parsed = sc_::parse_certificate(text);
+    BOOST_TEST_REQUIRE(parsed.points.size() == 1u);
+    sc_::Context cx;
+    cx.points = &parsed.points;
+    sc_::IntPoints* ip = sc_::captured(cx, parsed.root["scene"]["P1"]["vertices"]);
+    BOOST_TEST_REQUIRE(ip == &parsed.points[0]);
+    BOOST_TEST(ip->n == 10u);
+    BOOST_TEST(ip->small() == 3u);  // vertices 0, 7 and 8
+    BOOST_TEST((ip->orig == std::vector<int>{0, 7, 8}));
+    BOOST_TEST((ip->big == std::vector<int>{1, 2, 3, 4, 5, 6, 9}));
+    const std::vector<std::array<const char*, 3>> want = {{"4611686018427387903", "-4611686018427387903", "0"},
+                                                          {"4611686018427387904", "0", "0"},
+                                                          {"-4611686018427387904", "0", "0"},
+                                                          {"9223372036854775807", "0", "0"},
+                                                          {"-9223372036854775808", "0", "0"},
+                                                          {"9223372036854775808", "1", "2"},
+                                                          {"99999999999999999999", "0", "0"},
+                                                          {"1", "2", "3"},
+                                                          {"0", "2", "-1"},
+                                                          {"4611686018427387904", "2", "-1"}};
+    std::vector<CV> rational;
+    for (const auto& w : want) rational.push_back({CQ(w[0]), CQ(w[1]), CQ(w[2])});
+    const sc_::Scan from_text(cx, std::move(*ip)), from_rationals(cx, rational, "P1");
+    for (size_t k = 0; k < want.size(); ++k)
+        for (int c = 0; c < 3; ++c) {
+            BOOST_TEST(from_text.X(k)[c] == mpz_class(want[k][c]), k << "," << c);
+            BOOST_TEST(from_rationals.X(k)[c] == mpz_class(want[k][c]), k << "," << c);
+        }
+    auto argmax = [&](long a, long b, long c) {
+        const sc_::Z3 u{mpz_class(a), mpz_class(b), mpz_class(c)};
+        const std::vector<int> m = from_text.argmax(cx, u);
+        BOOST_TEST((m == from_rationals.argmax(cx, u)));
+        return m;
+    };
+    BOOST_TEST((argmax(1, 0, 0) == std::vector<int>{6}));        // 10^20 - 1
+    BOOST_TEST((argmax(-1, 0, 0) == std::vector<int>{4}));       // -2^63
+    BOOST_TEST((argmax(0, 1, 0) == std::vector<int>{7, 8, 9}));  // y = 2: small 7, 8 and big 9 tie
+    BOOST_TEST((argmax(0, -1, 0) == std::vector<int>{0}));       // y = -(2^62 - 1)
+    BOOST_TEST((argmax(0, 0, 1) == std::vector<int>{7}));        // z = 3
+    BOOST_TEST((argmax(0, 0, -1) == std::vector<int>{8, 9}));    // z = -1: a small and a big vertex
+    // (2^62 - 1) x − y over vertex 0 is 2^62 (2^62 − 1) + ... : past int64 products, exact
+    const sc_::Z3 u{mpz_class("4611686018427387903"), mpz_class(-1), mpz_class(0)};
+    BOOST_TEST((from_text.argmax(cx, u) == std::vector<int>{6}));
+    BOOST_TEST((from_text.argmax(cx, u) == from_rationals.argmax(cx, u)));
+    // A subset holding only small vertices, and one holding both.
+    const std::vector<int> small_only{0, 7, 8}, both{3, 8};
+    BOOST_TEST((from_text.argmax(cx, {mpz_class(1), mpz_class(0), mpz_class(0)}, &small_only) == std::vector<int>{0}));
+    BOOST_TEST((from_text.argmax(cx, {mpz_class(1), mpz_class(0), mpz_class(0)}, &both) == std::vector<int>{3}));
+}
+
+BOOST_AUTO_TEST_CASE(large_integer_lists_grow_and_join_exactly) {
+    // Lists long enough that each coordinate array is a mapping of its own (from 1 MiB: 2^17
+    // coordinates) grown by remapping, joined part after part with big points among them, as a
+    // compound object's parts are: every point where it was put.
+    auto coord = [](size_t k, int c) { return static_cast<int64_t>(k * 7919 % 1000003) * (c + 1) - 1000000; };
+    sc_::IntPoints all;
+    size_t n = 0;
+    std::vector<size_t> bigs;
+    for (int part = 0; part < 4; ++part) {
+        sc_::IntPoints p;
+        const size_t count = part == 2 ? 3 : 150000 + 1000 * static_cast<size_t>(part);
+        for (size_t k = 0; k < count; ++k, ++n)
+            if (n % 50021 == 17) {  // a big point: x past int64
+                p.add_big({mpz_class(mpz_class(1) << 70) + n, mpz_class(coord(n, 1)), mpz_class(coord(n, 2))});
+                bigs.push_back(n);
+            } else {
+                const int64_t x[3] = {coord(n, 0), coord(n, 1), coord(n, 2)};
+                p.add_small(x);
+            }
+        all.append(std::move(p));
+    }
+    BOOST_TEST(all.n == n);
+    BOOST_TEST(all.big.size() == bigs.size());
+    BOOST_TEST(all.small() + all.big.size() == n);
+    std::vector<CV> rat;
+    all.to_rationals(rat);
+    BOOST_TEST_REQUIRE(rat.size() == n);
+    size_t wrong = 0;
+    for (size_t k = 0; k < n; ++k) {
+        const bool big = std::binary_search(bigs.begin(), bigs.end(), k);
+        const CQ x = big ? CQ(mpz_class(mpz_class(1) << 70) + k) : CQ(mpz_class(static_cast<long>(coord(k, 0))));
+        wrong += rat[k][0] != x || rat[k][1] != CQ(static_cast<long>(coord(k, 1))) ||
+                 rat[k][2] != CQ(static_cast<long>(coord(k, 2)));
+    }
+    BOOST_TEST(wrong == 0u);
+    sc_::Context cx;
+    const sc_::Scan s(cx, std::move(all));
+    BOOST_TEST(s.size() == n);
+    for (size_t k : {size_t(0), size_t(17), n / 2, bigs.back(), n - 1})
+        BOOST_TEST((s.X(k)[0] == rat[k][0].get_num() && s.X(k)[1] == rat[k][1].get_num()), k);
+    // the largest x: the last big point
+    BOOST_TEST(
+        (s.argmax(cx, {mpz_class(1), mpz_class(0), mpz_class(0)}) == std::vector<int>{static_cast<int>(bigs.back())}));
+}
+
+BOOST_AUTO_TEST_CASE(a_scene_at_the_limits_of_int64_is_checked_exactly) {
+    // The stacked cubes' partition ([0,2]^3 below [0,2]^2 x [3,5], seeds the centres; the curve
+    // rho1 + rho2 = 3 with the normal (0, 0, 1), h1 = h2 = 1) with every point x mapped to K x + t,
+    // K = 2^61 - 1: the scalings, slopes, intercepts, weights and regions stay (h1, h2 and n.d all
+    // scale by K), the points of the scene and the witnesses move, h1 = h2 = K. With t = (1, 1, 1)
+    // P1's coordinates are 1 and 2K + 1 = 2^62 - 1 (the largest held as int64) and P2's z are
+    // 3K + 1 = 3 * 2^61 - 2 (an int64 from 2^62: GMP) and 5K + 1 = 5 * 2^61 - 4 (past int64); with
+    // t = (1, 1, -2^61) P2's bottom face is small (z = 2^62 - 3) and its top face big (z = 2^63 - 5,
+    // an int64).
+    const mpz_class K = (mpz_class(1) << 61) - 1;
+    auto stretch = [&](const std::array<mpz_class, 3>& t) {
+        OJ j = bundled("stacked_cubes");
+        auto move = [&](OJ& p, OJ* dbl) {
+            for (int c = 0; c < 3; ++c) {
+                const CQ x = CQ(p[c].get<std::string>()) * K + t[static_cast<size_t>(c)];
+                p[c] = x.get_str();
+                if (dbl) (*dbl)[c] = sc_::nearest(x);
+            }
+        };
+        std::function<void(OJ&)> walk = [&](OJ& o) {
+            if (o.is_object()) {
+                if (o.contains("point") && o.contains("point_double")) move(o["point"], &o["point_double"]);
+                for (const char* h : {"h1", "h2"})
+                    if (o.contains(h)) {
+                        const CQ v = CQ(o[h].get<std::string>()) * K;
+                        o[h] = v.get_str();
+                        o[std::string(h) + "_double"] = sc_::nearest(v);
+                    }
+            }
+            if (o.is_structured())
+                for (auto& e : o) walk(e);
+        };
+        walk(j);
+        for (const char* p : {"P1", "P2"}) {
+            for (OJ& v : j["scene"][p]["vertices"]) move(v, nullptr);
+            move(j["scene"][p]["seed"], nullptr);
+        }
+        return j;
+    };
+    int compared = 0;
+    const mpz_class one = 1;
+    for (const auto& t : {std::array<mpz_class, 3>{one, one, one}, std::array<mpz_class, 3>{one, one, -(one << 61)}}) {
+        const OJ j = stretch(t);
+        BOOST_TEST(j["pieces"][0]["h1"] == "2305843009213693951");  // 2^61 - 1
+        BOOST_TEST(same_both_ways(j, "stretched stacked cubes", compared) == 0);
+        const sc_::Parsed parsed = sc_::parse_certificate(j.dump(1));
+        BOOST_TEST_REQUIRE(parsed.points.size() == 2u);
+        BOOST_TEST(parsed.points[0].big.empty());  // P1: int64
+        BOOST_TEST(parsed.points[1].big.size() == (t[2] == 1 ? 8u : 4u));
+        // h1 off by one in its last digit: 2^61 - 1 and 2^61 have one nearest double (2^61), so
+        // only the exact recomputation rejects it.
+        OJ f = j;
+        f["pieces"][0]["h1"] = "2305843009213693952";
+        BOOST_TEST(sc_::nearest(CQ("2305843009213693952")) == sc_::nearest(CQ("2305843009213693951")));
+        BOOST_TEST(f["pieces"][0]["h1_double"] == OJ(sc_::nearest(CQ("2305843009213693952"))));
+        BOOST_TEST(same_both_ways(f, "h1 + 1", compared) == 1);
+        BOOST_TEST(answer(f.dump(1), true)
+                       .message.find("pieces[0].h1 = max n.(v - s1) over P1, recomputed: "
+                                     "2305843009213693951") != std::string::npos);
+        f = j;
+        f["growth_distance_certificate"]["h2"] = "2305843009213693950";
+        BOOST_TEST(same_both_ways(f, "growth h2 - 1", compared) == 1);
+        // a witness's point off by one in its last digit (its double, within 2^9 of it, the same)
+        f = j;
+        OJ& z = f["pieces"][0]["contact_witness"]["point"][2];
+        const CQ moved = CQ(z.get<std::string>()) + 1;
+        BOOST_TEST(sc_::nearest(moved) == f["pieces"][0]["contact_witness"]["point_double"][2].get<double>());
+        z = moved.get_str();
+        BOOST_TEST(same_both_ways(f, "witness point + 1", compared) == 1);
+        // a scene vertex moved by one: P1's top face at 2^62 - 1 + 1 = 2^62 (then big), which
+        // raises h1 (the vertex 4 attains the normal's maximum) and is rejected
+        f = j;
+        const std::string top = f["scene"]["P1"]["vertices"][4][2];
+        f["scene"]["P1"]["vertices"][4][2] = CQ(CQ(top) + 1).get_str();
+        BOOST_TEST(same_both_ways(f, "P1 vertex + 1", compared) == 1);
+    }
+    BOOST_TEST(compared == 10);
 }

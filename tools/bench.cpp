@@ -17,6 +17,7 @@
 #include "session/session.hpp"
 #include "scalecert/scalecert.hpp"
 
+#include <fcntl.h>
 #include <spawn.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
@@ -224,22 +225,30 @@ ProcessRun reaped(pid_t pid, Clock::time_point t0) {
     return {std::chrono::duration<double>(Clock::now() - t0).count(), ru.ru_maxrss,
             WIFEXITED(st) ? WEXITSTATUS(st) : -1};
 }
-// Runs `scalecert args...` with its output in `out`, and measures wall time and peak resident size.
-ProcessRun run_scalecert(const std::vector<std::string>& args) {
-    static const std::string bin = sibling("scalecert");
+// Runs `bin args...` and measures wall time and peak resident size; with `quiet` its standard
+// output and error go to /dev/null.
+ProcessRun run_process(const std::string& bin, const std::vector<std::string>& args, bool quiet = false) {
     std::vector<std::string> all{bin};
     all.insert(all.end(), args.begin(), args.end());
     std::vector<char*> argv;
     for (auto& a : all) argv.push_back(a.data());
     argv.push_back(nullptr);
+    posix_spawn_file_actions_t fa;
+    posix_spawn_file_actions_init(&fa);
+    if (quiet) {
+        posix_spawn_file_actions_addopen(&fa, 1, "/dev/null", O_WRONLY, 0);
+        posix_spawn_file_actions_addopen(&fa, 2, "/dev/null", O_WRONLY, 0);
+    }
     auto t0 = Clock::now();
     pid_t pid;
-    if (posix_spawn(&pid, bin.c_str(), nullptr, nullptr, argv.data(), environ) != 0) return {0, 0, -1};
+    const int spawned = posix_spawn(&pid, bin.c_str(), &fa, nullptr, argv.data(), environ);
+    posix_spawn_file_actions_destroy(&fa);
+    if (spawned != 0) return {0, 0, -1};
     return reaped(pid, t0);
 }
 
 // Runs f in a child process (fork) and measures its wall time and peak resident size, as
-// run_scalecert does for the command: what a program calling the library alone would use.
+// run_process does for a program: what a program calling the library alone would use.
 ProcessRun run_in_child(const std::function<int()>& f) {
     std::fflush(nullptr);
     auto t0 = Clock::now();
@@ -256,6 +265,11 @@ ProcessRun run_in_child(const std::function<int()>& f) {
         _exit(r);
     }
     return reaped(pid, t0);
+}
+// Runs `scalecert args...` (its output in the file its arguments name).
+ProcessRun run_scalecert(const std::vector<std::string>& args) {
+    static const std::string bin = sibling("scalecert");
+    return run_process(bin, args);
 }
 
 // n points per polytope as an OFF file of integers: near a sphere of radius R (every point a
@@ -400,8 +414,8 @@ void prism_claim_costs(const std::vector<int>& sizes) {
 std::vector<std::string> query_rows;
 // Whole processes from the scene files: `query` (a verdict), `query --json` (with its
 // certificate) and `partition`, on the walk where it proves the curve (the default from 2,000
-// points), against `partition --engine hull` (the hull model) in the same run; the checker's time
-// on the walk's partition beside.
+// points), against `partition --engine hull` (the hull model) in the same run; the checker on the
+// walk's partition beside: its time and memory, and its time over the partition's that wrote it.
 void query_costs(bool with_slow) {
     const auto dir = scratch_dir("scalecert-bench");
     std::fprintf(stderr, "whole process: query, query --json, partition (walk) against partition --engine hull:\n");
@@ -436,15 +450,14 @@ void query_costs(bool with_slow) {
             const scalecert::QueryResult res = an.query(Rational(1), Rational(1));
             return res.plane || res.common ? 0 : 4;
         });
-        const auto t0 = std::chrono::steady_clock::now();
-        const int check = std::system((checker + " " + out + " >/dev/null 2>&1").c_str());
-        const double check_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        const ProcessRun c = run_process(checker, {out}, true);
         ProcessRun h{0, 0, 0};
         if (hull_too) h = run_scalecert(with({"partition", "", "--engine", "hull"}));
         char ratio[32] = "";
         if (hull_too) std::snprintf(ratio, sizeof ratio, "%.0fx", h.seconds / p.seconds);
-        char cs[64];
-        std::snprintf(cs, sizeof cs, "%.3g s%s", check_s, check ? " (REJECTED)" : "");
+        char cs[96];  // the checker: time and memory, and its time against the partition's that wrote the file
+        std::snprintf(cs, sizeof cs, "%.3g s, %.0f MB (%.2gx the partition)%s", c.seconds, c.peak_kb / 1024.0,
+                      c.seconds / p.seconds, c.status ? " (REJECTED)" : "");
         const std::string r = "| " + name + " | " + cell(q) + " | " + cell(qj) + " | " + cell(p) + " | " +
                               (hull_too ? cell(h) : std::string("(--with-slow)")) + " | " + ratio + " | " + cs + " | " +
                               cell(api) + " |";
