@@ -81,6 +81,7 @@ int main(int argc, char** argv) {
             return refuse("larger than 1 GiB");
         }
         ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) & ~O_NONBLOCK);
+        text.reserve(static_cast<size_t>(st.st_size) + 1);  // (a file that grows while read still appends)
         char buf[1 << 16];
         bool too_big = false, failed = false;
         for (;;) {
