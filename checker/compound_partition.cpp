@@ -50,7 +50,7 @@ void check_compound_partition(Context& cx, const J& c) {
         // The block's vertices on each side, ascending, and the half-planes of its normals.
         const std::vector<int> verts[2] = {cs.verts(0, ra[0], ra[1]), cs.verts(1, rb[0], rb[1])};
         const J& ns = at(pe, "normals");
-        cx.claim(ns.is_array(), w + ".normals is a list");
+        cx.claim_lazy(ns.is_array(), [&] { return w + ".normals is a list"; });
         std::vector<P2> poly = rect;
         for (size_t k = 0; k < ns.size(); ++k) {
             const V3 nv = normal(cx, ns[k], w + ".normals[" + std::to_string(k) + "]");
@@ -66,17 +66,19 @@ void check_compound_partition(Context& cx, const J& c) {
             const mpz_class C = dotz(ints(nv), sc.Delta);  // D* n·d
             if (!poly.empty()) poly = cut(cx, poly, Q(H[0]), Q(H[1]), Q(C));
         }
-        cx.claim(polygon(cx, pe, w) == poly, w + ".vertices is the rectangle cut by its normals' half-planes");
+        cx.claim_lazy(polygon(cx, pe, w) == poly,
+                      [&] { return w + ".vertices is the rectangle cut by its normals' half-planes"; });
         const J& wit = at(pe, "witnesses");
-        cx.claim(wit.is_array() && wit.size() == poly.size(), w + " has a witness at each vertex");
+        cx.claim_lazy(wit.is_array() && wit.size() == poly.size(), [&] { return w + " has a witness at each vertex"; });
         if (poly.empty()) continue;
-        cx.claim(ra[0] == ra[1] && rb[0] == rb[1],
-                 w + " is one pair: a block of pairs must meet nowhere in the rectangle");
+        cx.claim_lazy(ra[0] == ra[1] && rb[0] == rb[1],
+                      [&] { return w + " is one pair: a block of pairs must meet nowhere in the rectangle"; });
         const std::array<std::array<size_t, 2>, 2> parts{{cs.part(0, ra[0]), cs.part(1, rb[0])}};
-        for (size_t k = 0; k < poly.size(); ++k)
-            cx.claim(
-                check_witness(cx, sc, wit[k], w + ".witnesses[" + std::to_string(k) + "]", nullptr, &parts) == poly[k],
-                w + ".witnesses[" + std::to_string(k) + "] is at its vertex");
+        for (size_t k = 0; k < poly.size(); ++k) {
+            const std::string wk = w + ".witnesses[" + std::to_string(k) + "]";
+            cx.claim_lazy(check_witness(cx, sc, wit[k], wk, nullptr, &parts) == poly[k],
+                          [&] { return wk + " is at its vertex"; });
+        }
         ++meeting;
         std::vector<P2> d = cut(cx, cut(cx, poly, Q(-1), Q(1), Q(0)), Q(1), Q(-1), Q(0));  // on ρ1 = ρ2
         if (!d.empty()) {

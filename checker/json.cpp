@@ -230,22 +230,21 @@ IntPoints* captured(Context& cx, const J& j) {
 
 void shape(Context& cx, const J& o, const std::string& where, std::initializer_list<const char*> required,
            std::initializer_list<const char*> optional) {
-    cx.claim(o.is_object(), (where.empty() ? std::string("the file") : where) + " is an object");
-    for (const char* k : required) cx.claim(o.contains(k), where + (where.empty() ? "" : ".") + k + " is present");
+    cx.claim_lazy(o.is_object(), [&] { return (where.empty() ? std::string("the file") : where) + " is an object"; });
+    for (const char* k : required)
+        cx.claim_lazy(o.contains(k), [&] { return where + (where.empty() ? "" : ".") + k + " is present"; });
     for (auto it = o.begin(); it != o.end(); ++it) {
         bool known = false;
         for (const char* k : required) known = known || it.key() == k;
         for (const char* k : optional) known = known || it.key() == k;
-        cx.claim(known,
-                 (where.empty() ? std::string("the file") : where) + " has no field \"" + printable(it.key()) + "\"");
+        cx.claim_lazy(known, [&] {
+            return (where.empty() ? std::string("the file") : where) + " has no field \"" + printable(it.key()) + "\"";
+        });
     }
 }
 
 size_t index(Context& cx, const J& j, size_t n, const std::string& where) {
-    cx.claim(natural(j), where + " is a non-negative JSON integer");
-    const unsigned long long v = j.get<unsigned long long>();
-    cx.claim(v < n, where + " = " + std::to_string(v) + " is an index below " + std::to_string(n));
-    return static_cast<size_t>(v);
+    return index_at(cx, j, n, [&] { return where; });
 }
 
 std::vector<int> index_list(Context& cx, const J& j, size_t n, const std::string& where) {

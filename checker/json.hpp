@@ -45,6 +45,15 @@ inline bool natural(const J& j) { return j.is_number_unsigned(); }
 
 // An index: a JSON integer (no fraction, no exponent) with 0 <= i < n.
 size_t index(Context& cx, const J& j, size_t n, const std::string& where);
+// The same, with where() naming it only in a message (when a claim fails).
+template <class Where>
+size_t index_at(Context& cx, const J& j, size_t n, Where where) {
+    cx.claim_lazy(natural(j), [&] { return where() + " is a non-negative JSON integer"; });
+    const unsigned long long v = j.get<unsigned long long>();
+    cx.claim_lazy(v < n,
+                  [&] { return where() + " = " + std::to_string(v) + " is an index below " + std::to_string(n); });
+    return static_cast<size_t>(v);
+}
 // A nonempty list of distinct indices below n.
 std::vector<int> index_list(Context& cx, const J& j, size_t n, const std::string& where);
 // x is in v (ascending: every vertex list the checker builds is).

@@ -6,23 +6,7 @@
 
 namespace scalecert_check {
 Q num(Context& cx, const J& j, const std::string& where) {
-    cx.claim(j.is_string(), where + " is an exact number string");
-    const std::string& s = j.get_ref<const std::string&>();
-    size_t slash = s.find('/');
-    auto is_int = [](const std::string& t, bool sign) {
-        size_t b = (sign && !t.empty() && t[0] == '-') ? 1 : 0;
-        return t.size() > b && t.find_first_not_of("0123456789", b) == std::string::npos &&
-               (t.size() == b + 1 || t[b] != '0');
-    };
-    bool ok = slash == std::string::npos ? is_int(s, true)
-                                         : is_int(s.substr(0, slash), true) && is_int(s.substr(slash + 1), false);
-    cx.claim(ok, where + " = '" + printable(s) + "' is an integer or p/q");
-    Q q(s, 10);
-    cx.claim(sgn(q.get_den()) > 0, where + " has a nonzero denominator");
-    Q c = q;
-    c.canonicalize();
-    cx.claim(c.get_str() == s, where + " = '" + printable(s) + "' is in lowest terms");
-    return c;
+    return num_at(cx, j, [&] { return where; });
 }
 
 double nearest(const Q& q) {
@@ -66,23 +50,24 @@ bool is_nearest(const J& d, const Q& q) {
 }
 
 Q field(Context& cx, const J& o, const std::string& key, const std::string& where) {
-    const std::string w = where.empty() ? key : where + "." + key;
-    Q q = num(cx, o.at(key), w);
+    auto w = [&] { return where.empty() ? key : where + "." + key; };
+    Q q = num_at(cx, o.at(key), w);
     cx.claim_lazy(is_nearest(o.at(key + "_double"), q),
-                  [&] { return w + "_double is the nearest double to " + printable(q.get_str()); });
+                  [&] { return w() + "_double is the nearest double to " + printable(q.get_str()); });
     return q;
 }
 
 std::vector<Q> fields(Context& cx, const J& o, const std::string& key, size_t n, const std::string& where) {
-    cx.claim(o.at(key).is_array() && o.at(key).size() == n,
-             where + "." + key + " has " + std::to_string(n) + " entries");
+    cx.claim_lazy(o.at(key).is_array() && o.at(key).size() == n,
+                  [&] { return where + "." + key + " has " + std::to_string(n) + " entries"; });
     const J& dd = o.at(key + "_double");
-    cx.claim(dd.is_array() && dd.size() == n, where + "." + key + "_double has " + std::to_string(n) + " entries");
+    cx.claim_lazy(dd.is_array() && dd.size() == n,
+                  [&] { return where + "." + key + "_double has " + std::to_string(n) + " entries"; });
     std::vector<Q> out;
     for (size_t i = 0; i < n; ++i) {
-        std::string w = where + "." + key + "[" + std::to_string(i) + "]";
-        out.push_back(num(cx, o.at(key)[i], w));
-        cx.claim(is_nearest(dd[i], out.back()), w + "_double is the nearest double");
+        auto w = [&] { return where + "." + key + "[" + std::to_string(i) + "]"; };
+        out.push_back(num_at(cx, o.at(key)[i], w));
+        cx.claim_lazy(is_nearest(dd[i], out.back()), [&] { return w() + "_double is the nearest double"; });
     }
     return out;
 }

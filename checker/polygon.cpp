@@ -51,10 +51,14 @@ std::vector<P2> normalize(const std::vector<P2>& p) {
 }
 
 std::vector<P2> half_plane_cut(const std::vector<P2>& p, const Q& a, const Q& b, const Q& c) {
+    std::vector<Q> f(p.size());  // a x + b y − c at each vertex
+    for (size_t i = 0; i < p.size(); ++i) f[i] = a * p[i][0] + b * p[i][1] - c;
     std::vector<P2> out;
+    out.reserve(p.size() + 1);
     for (size_t i = 0; i < p.size(); ++i) {
-        const P2 &u = p[i], &v = p[(i + 1) % p.size()];
-        const Q fu = a * u[0] + b * u[1] - c, fv = a * v[0] + b * v[1] - c;
+        const size_t j = (i + 1) % p.size();
+        const P2 &u = p[i], &v = p[j];
+        const Q &fu = f[i], &fv = f[j];
         if (sgn(fu) >= 0) out.push_back(u);
         if (sgn(fu) * sgn(fv) < 0) {
             Q t = fu / (fu - fv);
@@ -85,14 +89,16 @@ std::vector<P2> rectangle(const Scene& sc) {
 std::vector<P2> polygon(Context& cx, const J& j, const std::string& where) {
     const J& vs = at(j, "vertices");
     const J& ds = at(j, "vertices_double");
-    cx.claim(vs.is_array() && ds.is_array() && ds.size() == vs.size(),
-             where + ".vertices and vertices_double are lists of one length");
+    cx.claim_lazy(vs.is_array() && ds.is_array() && ds.size() == vs.size(),
+                  [&] { return where + ".vertices and vertices_double are lists of one length"; });
     std::vector<P2> out;
     for (size_t k = 0; k < vs.size(); ++k) {
-        std::string w = where + ".vertices[" + std::to_string(k) + "]";
-        cx.claim(vs[k].is_array() && vs[k].size() == 2 && ds[k].is_array() && ds[k].size() == 2, w + " is a point");
-        P2 p{num(cx, vs[k][0], w), num(cx, vs[k][1], w)};
-        cx.claim(is_nearest(ds[k][0], p[0]) && is_nearest(ds[k][1], p[1]), w + "_double is the nearest double");
+        auto w = [&] { return where + ".vertices[" + std::to_string(k) + "]"; };
+        cx.claim_lazy(vs[k].is_array() && vs[k].size() == 2 && ds[k].is_array() && ds[k].size() == 2,
+                      [&] { return w() + " is a point"; });
+        P2 p{num_at(cx, vs[k][0], w), num_at(cx, vs[k][1], w)};
+        cx.claim_lazy(is_nearest(ds[k][0], p[0]) && is_nearest(ds[k][1], p[1]),
+                      [&] { return w() + "_double is the nearest double"; });
         out.push_back(p);
     }
     return out;

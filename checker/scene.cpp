@@ -182,17 +182,17 @@ void read_ranges(Context& cx, Scene& sc, const J& j) {
 std::array<Q, 3> combination(Context& cx, const Scene& sc, int i, const J& w, const std::string& where,
                              std::vector<int>* used, size_t base, size_t count) {
     if (count == SIZE_MAX) count = sc.count(i);
-    cx.claim(w.is_array() && !w.empty(), where + " is a nonempty list of weights");
+    cx.claim_lazy(w.is_array() && !w.empty(), [&] { return where + " is a nonempty list of weights"; });
     std::set<size_t> seen;
     Q total = 0;
     std::array<Q, 3> x{Q(0), Q(0), Q(0)};
     for (size_t k = 0; k < w.size(); ++k) {
-        std::string wk = where + "[" + std::to_string(k) + "]";
-        cx.claim(w[k].is_array() && w[k].size() == 2, wk + " is [index, weight]");
-        size_t idx = base + index(cx, w[k][0], count, wk + " index");
-        cx.claim(seen.insert(idx).second, wk + " names a distinct vertex");
-        Q l = num(cx, w[k][1], wk + " weight");
-        cx.claim(sgn(l) > 0, wk + " weight is > 0");
+        auto wk = [&] { return where + "[" + std::to_string(k) + "]"; };  // (for a message only)
+        cx.claim_lazy(w[k].is_array() && w[k].size() == 2, [&] { return wk() + " is [index, weight]"; });
+        size_t idx = base + index_at(cx, w[k][0], count, [&] { return wk() + " index"; });
+        cx.claim_lazy(seen.insert(idx).second, [&] { return wk() + " names a distinct vertex"; });
+        Q l = num_at(cx, w[k][1], [&] { return wk() + " weight"; });
+        cx.claim_lazy(sgn(l) > 0, [&] { return wk() + " weight is > 0"; });
         // The running sums' denominators can grow with every term (weights over coprime
         // denominators), and each addition costs their size, gcd included: counted first.
         cx.spend(100 *
@@ -204,7 +204,7 @@ std::array<Q, 3> combination(Context& cx, const Scene& sc, int i, const J& w, co
         for (int c = 0; c < 3; ++c) x[c] += l * Q(X[c]);
         if (used) used->push_back(static_cast<int>(idx));
     }
-    cx.claim(total == 1, where + " weights sum to 1");
+    cx.claim_lazy(total == 1, [&] { return where + " weights sum to 1"; });
     return x;
 }
 
@@ -226,7 +226,7 @@ P2 check_witness(Context& cx, const Scene& sc, const J& w, const std::string& wh
                  const std::array<std::array<size_t, 2>, 2>* parts) {
     shape(cx, w, where, {"rho1", "rho1_double", "rho2", "rho2_double", "point", "point_double", "P1", "P2"});
     Q r1 = field(cx, w, "rho1", where), r2 = field(cx, w, "rho2", where);
-    cx.claim(sgn(r1) >= 0 && sgn(r2) >= 0, where + " scalings are >= 0");
+    cx.claim_lazy(sgn(r1) >= 0 && sgn(r2) >= 0, [&] { return where + " scalings are >= 0"; });
     std::vector<Q> x = fields(cx, w, "point", 3, where);
     const Q* r[2] = {&r1, &r2};
     for (int i = 0; i < 2; ++i) {
@@ -235,7 +235,7 @@ P2 check_witness(Context& cx, const Scene& sc, const J& w, const std::string& wh
         const Q D(sc.scan[i]->D());
         bool on = true;
         for (int k = 0; k < 3; ++k) on = on && *r[i] * c[k] == x[k] * D + (*r[i] - 1) * sc.sdv[i][k];
-        cx.claim(on, where + ".point lies in " + kPoly[i] + "(rho" + std::to_string(i + 1) + ")");
+        cx.claim_lazy(on, [&] { return where + ".point lies in " + kPoly[i] + "(rho" + std::to_string(i + 1) + ")"; });
     }
     return {r1, r2};
 }

@@ -1749,6 +1749,47 @@ BOOST_AUTO_TEST_CASE(compound_judgements_are_valid_and_tampering_is_rejected) {
     mutate_and_report(mixed, "compound judgements (mixed)", false, true);
 }
 
+BOOST_AUTO_TEST_CASE(compound_distances_over_grids_are_valid) {
+    // Two grids of 4 x 4 random parts side by side: a distance's lower bound has blocks of boxes
+    // apart, pairs apart along the slab of their double GJK direction and pairs apart by their own
+    // closest points; a partition and verdicts too. Each certificate is valid.
+    std::mt19937 g(77);
+    std::uniform_int_distribution<int> u(-2, 2), h(0, 3);
+    std::string text = "{";
+    for (int i = 0; i < 2; ++i) {
+        text += std::string(i ? ", " : "") + "\"P" + std::to_string(i + 1) + "\": {\"parts\": [";
+        for (int p = 0; p < 16; ++p) {
+            const int cx = (i ? 20 : 0) + (p % 4) * 4, cy = (p / 4) * 4 + (i ? 2 : 0), cz = h(g);
+            text += std::string(p ? ", " : "") + "{\"vertices\": [";
+            for (int q = 0; q < 8; ++q)
+                text += std::string(q ? ", " : "") + "[" + std::to_string(cx + u(g)) + ", " +
+                        std::to_string(cy + u(g)) + ", " + std::to_string(cz + u(g)) + "]";
+            text += "]}";
+        }
+        text += std::string("], \"seed\": [") + (i ? "26, 8" : "6, 6") + ", 1]}";
+    }
+    text += R"(, "I1": ["1/2", 2], "I2": ["1/2", 2]})";
+    const fs::path scene = tmpdir() / "grids.json";
+    std::ofstream(scene) << text;
+    const OJ j = compound_judgements(scene, R"({"format": "scalecert-claims-1", "claims": [
+     {"kind": "distance", "rho1": 1, "rho2": 1, "value": 1},
+     {"kind": "distance", "rho1": 1.125, "rho2": 1, "value": 1},
+     {"kind": "distance", "rho1": 1, "rho2": 1.125, "value": 1},
+     {"kind": "distance", "rho1": 0.75, "rho2": 0.625, "value": 1},
+     {"kind": "verdict", "rho1": 1.5, "rho2": 1.5, "verdict": "separated"},
+     {"kind": "separating_plane", "rho1": 0.5, "rho2": 0.5, "normal": [1, 0.25, 0]},
+     {"kind": "witness_point", "rho1": 1.5, "rho2": 1.5, "point": [10, 6, 1]}
+    ]})",
+                                     "grids");
+    long apart = 0;
+    for (const auto& k : j["judgements"])
+        if (k["proof"].contains("apart")) apart += static_cast<long>(k["proof"]["apart"].size());
+    BOOST_TEST(apart > 3);
+    const fs::path part = tmpdir() / "grids.partition.json";
+    BOOST_REQUIRE(engine("partition " + scene.string() + " --out " + part.string()) == 0);
+    BOOST_TEST(check_file(part) == 0);
+}
+
 BOOST_AUTO_TEST_CASE(compound_judgement_forgeries_are_rejected) {
     const OJ band = compound_judgements(data("compound_band.json"), kBandClaims, "band_forged");
     auto rejected = [](const OJ& j) { return check_json(j) == 1; };

@@ -1602,8 +1602,9 @@ BOOST_AUTO_TEST_CASE(every_command_takes_objects_made_of_parts) {
     const std::string csv = slurp(gd / "compound_band.golden.csv");
     BOOST_TEST(std::count(csv.begin(), csv.end(), '\n') == 14);
     BOOST_TEST(csv.find("\n2.875,2.5,on,touching,touching,0\n") != std::string::npos, csv);
-    // Golden's work on parts is bounded: the band with far boxes added (1,000 parts against 30: 30,000
-    // part pairs, 39 judgements of all of them for the one end) passes 10^6, refused in one line.
+    // Golden's work on parts is bounded by the work its judgements do: the band with far boxes added
+    // (3,000 parts against 3,000: each distance first compares the boxes of all 9·10^6 part pairs)
+    // passes 5·10^7 box comparisons within the first few queries: refused in one line, nothing written.
     {
         auto cube = [](long x, long y) {
             std::string t = "{\"vertices\": [";
@@ -1615,10 +1616,10 @@ BOOST_AUTO_TEST_CASE(every_command_takes_objects_made_of_parts) {
         std::string p1 = R"({"P1": {"parts": [{"vertices": [[2,-1,-1],[3,-1,-1],[2,1,-1],[3,1,-1],[2,-1,1],[3,-1,1],)"
                          R"([2,1,1],[3,1,1]]}, {"vertices": [[-3,-1,-1],[-2,-1,-1],[-3,1,-1],[-2,1,-1],[-3,-1,1],)"
                          R"([-2,-1,1],[-3,1,1],[-2,1,1]]})";
-        for (int k = 0; k < 998; ++k) p1 += ", " + cube(-1000 - 3 * k, 1000);
+        for (int k = 0; k < 2998; ++k) p1 += ", " + cube(-1000 - 3 * k, 1000);
         std::string p2 = R"(], "seed": [0, 0, 0]}, "P2": {"parts": [{"vertices": [[4,-1,-1],[5,-1,-1],[4,1,-1],)"
                          R"([5,1,-1],[4,-1,1],[5,-1,1],[4,1,1],[5,1,1]]})";
-        for (int k = 0; k < 29; ++k) p2 += ", " + cube(1000 + 3 * k, -1000);
+        for (int k = 0; k < 2999; ++k) p2 += ", " + cube(1000 + 3 * k, -1000);
         const fs::path big =
             write("band_far_boxes.json", p1 + p2 + R"(], "seed": ["9/2", 0, 0]}, "I1": [1, 4], "I2": [1, 3]})");
         const Run lim = run("golden " + big.string() + " --dir " + (workdir() / "never-made-6").string());

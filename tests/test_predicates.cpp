@@ -282,6 +282,44 @@ BOOST_AUTO_TEST_CASE(half_plane_side_at_its_bound) {
     BOOST_TEST(half_plane_side_filter(std::nan(""), 1, 0, 1, 1) == 0);
 }
 
+// 9. A scaled coordinate s + ρ(x − s) enclosed in doubles: around exact values with thirds (not
+// doubles), where cancellation leaves the value far below its terms, at zero, near the ends of the
+// double range, and with inputs the filter must not read.
+BOOST_AUTO_TEST_CASE(scaled_enclosure_holds_the_exact_value) {
+    using filter::region_double;
+    using filter::scaled_enclosure;
+    std::mt19937_64 g(909);
+    std::uniform_int_distribution<long> num(-1000000000L, 1000000000L), den(1, 1000000);
+    auto enclosed = [&](const Q& s, const Q& rho, const Q& x) {
+        const filter::Enclosure e = scaled_enclosure(region_double(s), region_double(rho), region_double(x));
+        const Q v = s + rho * (x - s);
+        if (std::isnan(e.lo) || std::isnan(e.hi)) return std::isnan(e.lo) && std::isnan(e.hi);
+        return Q(e.lo) <= v && v <= Q(e.hi);
+    };
+    long checked = 0;
+    for (int k = 0; k < 20000; ++k) {
+        const Q s(num(g), den(g)), x(num(g), den(g)), rho(std::abs(num(g)) + 1, den(g));
+        BOOST_TEST(enclosed(s, rho, x));
+        // x next to s (the difference cancels), and ρ tiny or huge
+        BOOST_TEST(enclosed(s, rho, s + Q(1, 3) / Q(Z(1) << 40)));
+        BOOST_TEST(enclosed(s, Q(1, 3) / Q(Z(1) << 500), x));
+        BOOST_TEST(enclosed(s, Q(Z(1) << 500) / 3, x));
+        checked += 4;
+    }
+    // Cancellation to exactly 0: s + ρ(x − s) = 0 with s = 1/3, ρ = 1/2, x = −1/3.
+    BOOST_TEST(enclosed(Q(1, 3), Q(1, 2), Q(-1, 3)));
+    // Tight where the terms are of the value's size: width under 1e-13 relative.
+    const filter::Enclosure t =
+        scaled_enclosure(region_double(Q(1, 3)), region_double(Q(3, 2)), region_double(Q(7, 3)));
+    BOOST_TEST((t.hi - t.lo) < 1e-13 * 10);
+    // Beyond the doubles, or below their normal range: no enclosure, the exact ends decide.
+    BOOST_TEST(std::isnan(scaled_enclosure(1.0, region_double(Q(Z(1) << 1100)), 2.0).lo));
+    BOOST_TEST(std::isnan(scaled_enclosure(region_double(Q(Q(1) / Q(Z(1) << 1060))), 1.0, 1.0).hi));
+    BOOST_TEST(std::isnan(scaled_enclosure(1e300, 1e300, -1e300).lo));                            // overflows
+    BOOST_TEST(enclosed(Q(1) / Q(Z(1) << 1000), Q(1) / Q(Z(1) << 100), Q(3) / Q(Z(1) << 1000)));  // ρ(x − s) underflows
+    BOOST_TEST(checked == 80000);
+}
+
 // ---- The statistics ------------------------------------------------------------------------------
 
 BOOST_AUTO_TEST_CASE(stats_merge_per_predicate) {

@@ -29,8 +29,8 @@ void put(Json& o, const std::string& key, const Q& q) {
 void put(Json& o, const std::string& key, const std::vector<Q>& qs) {
     Json a = Json::array(), b = Json::array();
     for (const Q& q : qs) a.push_back(to_exact_string(q)), b.push_back(to_double_rn(q));
-    o[key] = a;
-    o[key + "_double"] = b;
+    o[key] = std::move(a);
+    o[key + "_double"] = std::move(b);
 }
 void put(Json& o, const std::string& key, const Vec3q& v) { put(o, key, std::vector<Q>(v.begin(), v.end())); }
 Json ints(const Vec3z& v) { return Json::array({v[0].get_str(), v[1].get_str(), v[2].get_str()}); }

@@ -22,12 +22,17 @@
 
 namespace scalecert::internal {
 
-// A common point of A(ρ1) and B(ρ2) (hm holds the two parts and the seeds), weights indexed into
-// each part's own point list: an exact LP over the few vertices a double GJK names, else over all
-// the parts' vertices (counted in `fallbacks`). The LP decides; GJK only proposes.
+// A common point of A(ρ1) and B(ρ2), parts of the objects with seeds s1 and s2, weights indexed
+// into each part's own point list: exact elimination on a double GJK's final simplex, else an
+// exact LP over the few vertices it names, else over all the parts' vertices (counted in
+// `fallbacks`). The exact stages decide; GJK only proposes. Reads the parts only (no support
+// query), so threads may share them.
+Witness pair_common_point(const Polyhedron& A, const Polyhedron& B, const Vec3q& s1, const Vec3q& s2, const Q& rho1,
+                          const Q& rho2, long& fallbacks);
+// The same with the two parts and the seeds in hm.
 Witness pair_common_point(const HullModel& hm, const Q& rho1, const Q& rho2, long& fallbacks);
 
-struct BoxBounds;  // a box's ends enclosed in doubles (the filter of the box tests)
+class ScaledParts;  // one object's parts' boxes at one ρ: ends enclosed in doubles, exact on demand
 
 // At most this many blocks in all the proofs of one run (about 100 bytes each in the file): past
 // it certify-fp --certificate is refused with one line (docs/manual.md, "Limits").
@@ -70,31 +75,48 @@ class CompoundJudge {
     // max over P1(ρ1) of n·x and min over P2(ρ2) of n·x: over every part's vertices.
     std::pair<Q, Q> plane_extents(const Vec3q& n, const Q& rho1, const Q& rho2) const;
 
-    // Statistics: pairs judged by their boxes, by their facet normals, exact distances.
+    // Statistics: pairs judged by their boxes, by their facet normals, exact distances; box
+    // comparisons (one axis of two boxes, in doubles, exactly when they cannot tell, or one pair's
+    // gap in doubles) and the slabs of a double GJK's direction tried on a pair (distances).
     struct Counts {
-        long boxed = 0, judged = 0, distances = 0;
+        long boxed = 0, judged = 0, distances = 0, box_comparisons = 0, slabs = 0;
     };
     Counts counts() const { return counts_; }
+    // A budget on the work from here on: past `judgements` more pairs judged by their facet
+    // normals or tried with a slab (judged + slabs), `distances` more exact distances, or
+    // `comparisons` more box comparisons, the judgement in progress throws InputError(message).
+    void set_budget(long judgements, long distances, long comparisons, std::string message);
+    void clear_budget() { budget_.reset(); }
 
   private:
     using Box = std::array<std::array<Q, 2>, 3>;
     struct PairCache;
+    friend class ScaledParts;
     ExactScene sc_;
     std::string name_;
     std::vector<Polyhedron> parts_[2];
-    std::vector<Box> unit_[2];  // each part's own box (unscaled)
+    std::vector<Box> unit_[2];  // each part's own box (unscaled), and last the box of them all
+    std::vector<std::array<std::array<double, 2>, 3>> unit_d_[2];  // their ends by region_double
+    double seed_d_[2][3];                                          // the seeds by region_double
+    Vec3q d_;                                                      // s2 − s1
+    filter::PredicateStats predicates_;                            // half_plane_side: the pairs' constraints
     std::map<std::pair<int, int>, std::unique_ptr<PairCache>> cache_;
     double edge_work_ = 0;  // over the pairs judged exactly: Σ edges(A) × edges(B), within kMaxEdgePairWork
     size_t blocks_ = 0;     // blocks written into proofs so far
     void check_blocks(size_t more) const;  // InputError past kMaxCertificateBlocks
     Counts counts_;
+    std::optional<std::array<long, 3>> budget_;  // the most judged + slabs, distances, box comparisons
+    std::string budget_message_;
+    void check_budget() const;  // InputError past the budget
 
-    Box scaled_box(int i, size_t k, const Q& rho) const;
+    Box scaled_box(int i, size_t k, const Q& rho) const;  // k = parts(i): the box of them all
     PairCache& pair(int a, int b);
     // −1 separated (strictly), 0 touching, +1 overlapping, with a normal for ≤ 0.
-    int pair_sign(int a, int b, const Q& rho1, const Q& rho2, const std::vector<Box>& b1, const std::vector<Box>& b2,
-                  const std::vector<BoxBounds>& d1, const std::vector<BoxBounds>& d2, int* code, Vec3q* normal,
+    int pair_sign(int a, int b, const Q& rho1, const Q& rho2, ScaledParts& X, ScaledParts& Y, int* code, Vec3q* normal,
                   int prefer = -1);
+    // Does the slab of a double GJK's direction between parts a and b, rounded to an integer
+    // normal N and proved exactly, hold gap(N) > 0 and gap(N)² >= E·|N|²? N then in `normal`.
+    bool slab_at_least(int a, int b, const Q& rho1, const Q& rho2, const Q& E, Vec3z* normal);
 };
 
 }  // namespace scalecert::internal

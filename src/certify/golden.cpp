@@ -111,8 +111,17 @@ GoldenAnswers golden_answers_parts(const CompoundRegion& r, CompoundJudge& judge
     for (Q& x : xs) x.canonicalize();
     std::sort(xs.begin(), xs.end());
     xs.erase(std::unique(xs.begin(), xs.end()), xs.end());
-    const double pairs = static_cast<double>(judge.parts(0)) * static_cast<double>(judge.parts(1));
-    double work = 0;
+    struct Budget {  // on the judge while the answers are found (it may judge claims after)
+        CompoundJudge& j;
+        ~Budget() { j.clear_budget(); }
+    } budget{judge};
+    judge.set_budget(kMaxGoldenJudgements, kMaxGoldenDistances, kMaxGoldenBoxComparisons,
+                     "golden: " + std::to_string(xs.size()) + " verticals on " + std::to_string(judge.parts(0)) +
+                         " x " + std::to_string(judge.parts(1)) +
+                         " parts pass the limit of golden data on objects made of parts (the judgements' work: " +
+                         std::to_string(kMaxGoldenJudgements) + " part pairs judged exactly, " +
+                         std::to_string(kMaxGoldenDistances) + " exact distances, " +
+                         std::to_string(kMaxGoldenBoxComparisons) + " box comparisons: docs/manual.md, \"Limits\")");
     for (const Q& x : xs) {
         // The meeting set on this vertical: the pairs' intervals, merged; its ends inside I2.
         std::vector<std::pair<Q, Q>> spans;
@@ -127,12 +136,6 @@ GoldenAnswers golden_answers_parts(const CompoundRegion& r, CompoundJudge& judge
                 if (s.lo[1] < y && y < s.hi[1] && (ends.empty() || ends.back() != y)) ends.push_back(y);
         }
         for (const Q& f : ends) {
-            work += 13 * 3 * pairs;  // two verdicts and a distance a query
-            if (work > kMaxGoldenPairWork)
-                throw InputError("golden: " + std::to_string(xs.size()) + " verticals on " +
-                                 std::to_string(judge.parts(0)) + " x " + std::to_string(judge.parts(1)) +
-                                 " parts pass the limit of golden data on objects made of parts (queries times part "
-                                 "pairs up to 10^6: docs/manual.md, \"Limits\")");
             for (const auto& [where, y] : around(f)) {
                 Json o;
                 put_exact(o, "rho1", x);

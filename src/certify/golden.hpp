@@ -30,9 +30,13 @@ GoldenAnswers golden_answers(const ExactScene& s, const Model& m, const Touching
 // at its nearest doubles, the exact verdict and measure: the distance (the least over the part
 // pairs) when separated, 0 when touching, kind "overlapping" with no value when they overlap (a
 // penetration depth of objects made of parts is not defined here).
-// Each vertical once. The judgements cost about the scene's part pairs each, so their number times
-// the part pairs is bounded by kMaxGoldenPairWork (InputError before the first query past it).
-constexpr double kMaxGoldenPairWork = 1e6;
+// Each vertical once. The work the judge does for them is bounded, as it is done
+// (CompoundJudge::counts(); InputError in the judgement that passes a limit): pairs judged by their
+// facet normals or tried with a slab, exact distances, and box comparisons (each at most about
+// 10 µs, 300 µs and 35 ns: a few seconds in all).
+constexpr long kMaxGoldenJudgements = 200000;
+constexpr long kMaxGoldenDistances = 10000;
+constexpr long kMaxGoldenBoxComparisons = 50000000;
 GoldenAnswers golden_answers_parts(const CompoundRegion& r, CompoundJudge& judge, Json region);
 
 }  // namespace scalecert::internal

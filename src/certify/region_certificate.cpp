@@ -60,15 +60,18 @@ std::string compound_judgements_text(const ExactScene& sc, const Q& tolerance, J
 
 namespace {
 
-Json polygon_json(Json& o, const std::vector<Point2q>& poly) {
+// An entry's polygon and its witnesses (o's last three members: named first, then filled, so that
+// no member is copied as the object grows).
+void polygon_json(Json& o, const std::vector<Point2q>& poly, Json witnesses) {
+    for (const char* key : {"vertices", "vertices_double", "witnesses"}) o[key] = nullptr;
     Json v = Json::array(), d = Json::array();
     for (const Point2q& p : poly) {
         v.push_back(Json::array({to_exact_string(p[0]), to_exact_string(p[1])}));
         d.push_back(Json::array({to_double_rn(p[0]), to_double_rn(p[1])}));
     }
-    o["vertices"] = v;
-    o["vertices_double"] = d;
-    return o;
+    o["vertices"] = std::move(v);
+    o["vertices_double"] = std::move(d);
+    o["witnesses"] = std::move(witnesses);
 }
 
 Json range_json(int from, int to) { return Json::array({from, to}); }
@@ -125,46 +128,43 @@ Json compound_partition_json(const ExactScene& sc, const CompoundRegion& r) {
         Json e{{"P1_parts", range_json(b.a0, b.a1)},
                {"P2_parts", range_json(b.b0, b.b1)},
                {"normals", Json::array({normal_json(nrm)})}};
-        polygon_json(e, {});
-        e["witnesses"] = Json::array();
+        polygon_json(e, {}, Json::array());
         entries.push_back({{b.a0, b.b0}, std::move(e)});
     }
-    // The witnesses, on every core (each pair's in its slot; each task copies its two parts).
-    std::vector<std::vector<Witness>> witnesses(r.pairs.size());
+    // The built pairs' entries with their witnesses, on every core (each pair's in its slot; the
+    // tasks only read the parts).
+    std::vector<Json> built(r.pairs.size());
     const unsigned threads =
         static_cast<unsigned>(std::min<size_t>(default_threads(), std::max<size_t>(1, r.pairs.size() / 8)));
     std::vector<long> missed(threads, 0);
     parallel_tasks(r.pairs.size(), threads, [&](unsigned t, size_t k) {
         const CompoundRegion::Pair& p = r.pairs[k];
-        if (p.polygon.empty()) return;
-        HullModel hm;  // the two parts and the seeds, for the GJK guess
-        hm.P[0] = r.parts[0][static_cast<size_t>(p.part1)];
-        hm.P[1] = r.parts[1][static_cast<size_t>(p.part2)];
-        hm.s[0] = s1;
-        hm.s[1] = s2;
-        for (const Point2q& v : p.polygon) witnesses[k].push_back(pair_common_point(hm, v[0], v[1], missed[t]));
-    });
-    for (long x : missed) fallbacks += x;
-    for (size_t k = 0; k < r.pairs.size(); ++k) {
-        const CompoundRegion::Pair& p = r.pairs[k];
+        const Polyhedron &A = r.parts[0][static_cast<size_t>(p.part1)], &B = r.parts[1][static_cast<size_t>(p.part2)];
+        Json wit = Json::array();
+        for (const Point2q& v : p.polygon)
+            wit.push_back(witness_object(pair_common_point(A, B, s1, s2, v[0], v[1], missed[t])));
         Json normals = Json::array();
         for (size_t f : p.fence) normals.push_back(normal_json(p.constraints[f].normal));
         Json e{{"P1_parts", range_json(p.part1, p.part1)},
                {"P2_parts", range_json(p.part2, p.part2)},
-               {"normals", normals}};
-        polygon_json(e, p.polygon);
-        Json wit = Json::array();
-        for (const Witness& w : witnesses[k]) wit.push_back(witness_object(w));
-        e["witnesses"] = wit;
-        entries.push_back({{p.part1, p.part2}, std::move(e)});
-    }
+               {"normals", std::move(normals)}};
+        polygon_json(e, p.polygon, std::move(wit));
+        built[k] = std::move(e);
+    });
+    for (long x : missed) fallbacks += x;
+    for (size_t k = 0; k < r.pairs.size(); ++k)
+        entries.push_back({{r.pairs[k].part1, r.pairs[k].part2}, std::move(built[k])});
     std::sort(entries.begin(), entries.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+    // Every key first, in the document's order: filling them in then moves the large arrays, where
+    // inserting a key would copy those already in (the object is a vector of members, whose
+    // elements a reallocation copies).
     Json j;
+    for (const char* key : {"format", "kind", "pairs", "growth_set", "statistics", "scene"}) j[key] = nullptr;
     j["format"] = "scalecert-2";
     j["kind"] = "compound_partition";
     Json pairs = Json::array();
     for (auto& e : entries) pairs.push_back(std::move(e.second));
-    j["pairs"] = pairs;
+    j["pairs"] = std::move(pairs);
     Json growth = Json::array();
     for (const auto& iv : r.growth) {
         Json g;
@@ -173,7 +173,7 @@ Json compound_partition_json(const ExactScene& sc, const CompoundRegion& r) {
         g["first_contact"] = Json{{"P1_part", iv.part1}, {"P2_part", iv.part2}};
         growth.push_back(g);
     }
-    j["growth_set"] = growth;
+    j["growth_set"] = std::move(growth);
     j["statistics"] = Json{{"pairs", r.prune.size()},
                            {"pruned", r.pruned},
                            {"built", r.built},

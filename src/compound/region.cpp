@@ -1,5 +1,7 @@
 // The overlap region of two compounds (region.hpp). One of the few translation units that
-// include CGAL: its 2D Boolean set operations, on exact rationals (gmpxx), for the union.
+// include CGAL: its 2D Boolean set operations for the union, on its lazy exact kernel (Epeck:
+// interval arithmetic first, exact rationals where the intervals cannot decide), with the
+// rational corners read in and the union's corners read out exactly.
 #include "compound/region.hpp"
 
 #include "curve/contact_lines.hpp"
@@ -11,34 +13,78 @@
 #include <stdexcept>
 
 #include <CGAL/Boolean_set_operations_2.h>
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Gmpq.h>
 #include <CGAL/Polygon_2.h>
 #include <CGAL/Polygon_set_2.h>
 #include <CGAL/Polygon_with_holes_2.h>
-#include <CGAL/Simple_cartesian.h>
 #include <CGAL/gmpxx.h>
+
+#include <type_traits>
 
 namespace scalecert::internal {
 
 namespace {
-using K = CGAL::Simple_cartesian<mpq_class>;
+using K = CGAL::Epeck;
 using Polygon = CGAL::Polygon_2<K>;
 using PolygonWithHoles = CGAL::Polygon_with_holes_2<K>;
 using PolygonSet = CGAL::Polygon_set_2<K>;
+using ET = K::FT::ET;  // the kernel's exact rationals (GMP's, under one of three wrappers)
+
+// (templates, so that only the branch of the kernel's own type is compiled)
+template <class E>
+E exact_of(const Q& q) {
+    if constexpr (std::is_same_v<E, Q>)
+        return q;
+    else
+        return E(q.get_mpq_t());  // boost's gmp_rational and CGAL's Gmpq take an mpq_t
+}
+template <class E>
+Q rational_of(const E& e) {
+    if constexpr (std::is_same_v<E, Q>)
+        return e;
+    else if constexpr (std::is_same_v<E, CGAL::Gmpq>)
+        return Q(e.mpq());
+    else
+        return Q(e.backend().data());  // boost::multiprecision::mpq_rational
+}
+K::FT to_kernel(const Q& q) { return K::FT(exact_of<ET>(q)); }
+Q from_kernel(const K::FT& x) { return rational_of<ET>(CGAL::exact(x)); }
 
 bool lower(const Point2q& a, const Point2q& b) { return a[1] != b[1] ? a[1] < b[1] : a[0] < b[0]; }
 
 std::vector<Point2q> ring(const Polygon& p) {
     std::vector<Point2q> v;
-    for (auto it = p.vertices_begin(); it != p.vertices_end(); ++it) v.push_back({it->x(), it->y()});
+    for (auto it = p.vertices_begin(); it != p.vertices_end(); ++it)
+        v.push_back({from_kernel(it->x()), from_kernel(it->y())});
     return normalize_polygon(std::move(v));
 }
 }  // namespace
 
-std::vector<Vec3z> minkowski_facet_normals(const Polyhedron& A, const Polyhedron& B) {
-    HullModel m;  // the overlay reads the two polyhedra only
-    m.P[0] = A;
-    m.P[1] = B;
-    return all_facet_normals(m);
+std::vector<Vec3z> minkowski_facet_normals(const Polyhedron& A, const Polyhedron& B) { return all_facet_normals(A, B); }
+
+std::vector<HalfPlane> pair_constraints(const Polyhedron& A, const Polyhedron& B, const Vec3q& s1, const Vec3q& s2) {
+    // In integers: s_i = S_i / D_i, and the supports times each part's scale; one rational each.
+    Z D1, D2;
+    const Vec3z S1 = over_common_denominator(s1, D1), S2 = over_common_denominator(s2, D2);
+    const std::vector<Vec3z> normals = minkowski_facet_normals(A, B);
+    std::vector<HalfPlane> hs;
+    hs.reserve(normals.size());  // (mpq's move may throw: a reallocation would copy)
+    Z ha, hb;
+    for (const Vec3z& n : normals) {
+        A.argmax(n, nullptr, &ha);       // max over A of n·v, times A.scale
+        B.argmax(neg(n), nullptr, &hb);  // max over B of −n·w, times B.scale
+        const Z n1 = dotz(n, S1), n2 = dotz(n, S2);
+        HalfPlane h;
+        h.a = Q(Z(ha * D1 - A.scale * n1), Z(A.scale * D1));  // hA(n) = max n·v − n·s1
+        h.b = Q(Z(hb * D2 + B.scale * n2), Z(B.scale * D2));  // hB(n) = max −n·w + n·s2
+        h.c = Q(Z(n2 * D1 - n1 * D2), Z(D1 * D2));            // n·d = n·s2 − n·s1
+        h.a.canonicalize(), h.b.canonicalize(), h.c.canonicalize();
+        h.normal = n;
+        h.ad = filter::region_double(h.a), h.bd = filter::region_double(h.b), h.cd = filter::region_double(h.c);
+        hs.push_back(std::move(h));
+    }
+    return hs;
 }
 
 namespace {
@@ -55,28 +101,36 @@ std::vector<PointD> doubles(const std::vector<Point2q>& p) {
 
 // The convex polygon p (corners counter-clockwise) cut to a ρ1 + b ρ2 >= c in doubles: a guess
 // of whether the constraint cuts the polygon at all (it picks the candidates; exact cuts decide).
-std::vector<PointD> cut_d(const std::vector<PointD>& p, const HalfPlane& h, bool& cut) {
+// `label` names the constraint each edge lies on (edge i from corner i to i + 1; −1: the
+// rectangle), and the cut's own edge gets `k`.
+std::vector<PointD> cut_d(const std::vector<PointD>& p, std::vector<long>& label, const HalfPlane& h, long k,
+                          bool& cut) {
     std::vector<PointD> out;
+    std::vector<long> out_label;
     cut = false;
     const double scale = std::fabs(h.ad) + std::fabs(h.bd) + std::fabs(h.cd);
     for (size_t i = 0; i < p.size(); ++i) {
         const PointD &x = p[i], &y = p[(i + 1) % p.size()];
         const double fx = h.ad * x.x + h.bd * x.y - h.cd, fy = h.ad * y.x + h.bd * y.y - h.cd;
-        if (fx >= 0) out.push_back(x);
+        if (fx >= 0) out.push_back(x), out_label.push_back(fx == 0 && fy < 0 ? k : label[i]);
         if (fx < -1e-12 * scale) cut = true;
         if ((fx > 0 && fy < 0) || (fx < 0 && fy > 0)) {
             const double t = fx / (fx - fy);
             out.push_back({x.x + t * (y.x - x.x), x.y + t * (y.y - x.y)});
+            out_label.push_back(fx > 0 ? k : label[i]);
         }
     }
+    label = std::move(out_label);
     return out;
 }
 }  // namespace
 
-// Output-sensitive: the constraints that cut in doubles are the candidates, cut exactly; every
-// other constraint is then checked exactly (filter 8) at the polygon's corners, and cuts in turn
-// if it fails anywhere. The polygon only shrinks, so a constraint that held stays held: the result
-// is the rectangle cut by every constraint. The fence: for a polygon with area, for each edge not
+// Output-sensitive: the constraints on the edges of the polygon cut in doubles are the candidates
+// (when that polygon has area; when it is empty, as few of the constraints that cut it as still
+// empty it; else every constraint that cut it), cut exactly; every other
+// constraint is then checked exactly (filter 8) at the polygon's corners, and cuts in turn if it
+// fails anywhere. The polygon only shrinks, so a constraint that held stays held: the result is
+// the rectangle cut by every constraint. The fence: for a polygon with area, for each edge not
 // on the rectangle, the first candidate whose line holds both its ends (the polygon is the
 // rectangle cut by its edges' half-planes); otherwise the candidates, each dropped (from the last)
 // while the others still give the polygon.
@@ -87,25 +141,42 @@ PairRegion pair_region(const Polyhedron& A, const Polyhedron& B, const Vec3q& s1
     PairRegion r;
     const std::vector<Point2q> rect =
         normalize_polygon({{lo[0], lo[1]}, {hi[0], lo[1]}, {hi[0], hi[1]}, {lo[0], hi[1]}});
-    const Vec3q d = sub(s2, s1);
-    for (const Vec3z& n : minkowski_facet_normals(A, B)) {
-        const Vec3q nq = to_q(n);
-        HalfPlane h;
-        h.a = A.support(n) - dot(nq, s1);
-        h.b = B.support(neg(n)) + dot(nq, s2);
-        h.c = dot(nq, d);
-        h.normal = n;
-        h.ad = region_double(h.a), h.bd = region_double(h.b), h.cd = region_double(h.c);
-        r.constraints.push_back(std::move(h));
-    }
+    r.constraints = pair_constraints(A, B, s1, s2);
     const std::vector<HalfPlane>& hs = r.constraints;
     std::vector<size_t> cand;
     {
         std::vector<PointD> pd = doubles(rect);
+        std::vector<long> label(pd.size(), -1);
         for (size_t k = 0; k < hs.size() && !pd.empty(); ++k) {
             bool cut = false;
-            std::vector<PointD> q = cut_d(pd, hs[k], cut);
-            if (cut) cand.push_back(k), pd = std::move(q);
+            std::vector<long> l = label;
+            std::vector<PointD> q = cut_d(pd, l, hs[k], static_cast<long>(k), cut);
+            if (cut) cand.push_back(k), pd = std::move(q), label = std::move(l);
+        }
+        if (pd.size() >= 3) {  // the constraints on its edges
+            std::vector<size_t> on;
+            for (long k : label)
+                if (k >= 0) on.push_back(static_cast<size_t>(k));
+            std::sort(on.begin(), on.end());
+            on.erase(std::unique(on.begin(), on.end()), on.end());
+            cand = std::move(on);
+        } else if (pd.empty()) {  // empty in doubles: each cut dropped (from the last) while the rest empty it
+            auto empties = [&](const std::vector<size_t>& ks) {
+                std::vector<PointD> q = doubles(rect);
+                for (size_t k : ks) {
+                    if (q.empty()) break;
+                    bool cut = false;
+                    std::vector<long> scratch(q.size(), -1);
+                    std::vector<PointD> c = cut_d(q, scratch, hs[k], static_cast<long>(k), cut);
+                    if (cut) q = std::move(c);
+                }
+                return q.empty();
+            };
+            for (size_t i = cand.size(); i-- > 0 && cand.size() > 1;) {
+                std::vector<size_t> without = cand;
+                without.erase(without.begin() + static_cast<long>(i));
+                if (empties(without)) cand = std::move(without);
+            }
         }
     }
     std::vector<Point2q> p = rect;
@@ -162,7 +233,7 @@ std::vector<RegionPiece> union_of(const std::vector<std::vector<Point2q>>& conve
     for (const std::vector<Point2q>& c : convex) {
         if (c.size() < 3) continue;  // no area: not part of a union of regions
         Polygon p;
-        for (const Point2q& v : c) p.push_back(K::Point_2(v[0], v[1]));
+        for (const Point2q& v : c) p.push_back(K::Point_2(to_kernel(v[0]), to_kernel(v[1])));
         if (p.orientation() == CGAL::CLOCKWISE) p.reverse_orientation();
         polys.push_back(std::move(p));
     }

@@ -57,6 +57,9 @@ PairRegion pair_region(const Polyhedron& A, const Polyhedron& B, const Vec3q& s1
 
 // The facet normals of A ⊕ (−B) (the Gauss-map overlay of contact_lines.hpp), primitive.
 std::vector<Vec3z> minkowski_facet_normals(const Polyhedron& A, const Polyhedron& B);
+// Their half-planes for parts A of the object with seed s1 and B of the one with seed s2, in the
+// normals' order (a, b, c and their doubles).
+std::vector<HalfPlane> pair_constraints(const Polyhedron& A, const Polyhedron& B, const Vec3q& s1, const Vec3q& s2);
 
 // The union of convex polygons with area (CGAL's Boolean set operations on exact rationals):
 // its connected pieces, each an outer boundary (counter-clockwise) and its holes (clockwise),

@@ -144,14 +144,13 @@ std::vector<EdgeArc<V>> edge_arcs(const Polyhedron& P, bool negate) {
 // the proper crossings of an edge's Gauss arc of P1 with one of −P2 (arcs that only touch give a
 // face normal already listed; parallel edges give none).
 template <class V>
-std::vector<V> facet_normals(const HullModel& m, LineStats& st) {
+std::vector<V> facet_normals(const Polyhedron& P1, const Polyhedron& P2, LineStats& st) {
     const V* tag = nullptr;
     std::vector<V> normals;
-    for (size_t f = 0; f < m.P[0].faces.size(); ++f) normals.push_back(face_normal(m.P[0], static_cast<int>(f), tag));
-    for (size_t f = 0; f < m.P[1].faces.size(); ++f)
-        normals.push_back(vneg(face_normal(m.P[1], static_cast<int>(f), tag)));
+    for (size_t f = 0; f < P1.faces.size(); ++f) normals.push_back(face_normal(P1, static_cast<int>(f), tag));
+    for (size_t f = 0; f < P2.faces.size(); ++f) normals.push_back(vneg(face_normal(P2, static_cast<int>(f), tag)));
     st.face_normals = normals.size();
-    const auto A = edge_arcs<V>(m.P[0], false), B = edge_arcs<V>(m.P[1], true);
+    const auto A = edge_arcs<V>(P1, false), B = edge_arcs<V>(P2, true);
     std::vector<Arc> arcs_a(A.size()), arcs_b(B.size());
     for (size_t i = 0; i < A.size(); ++i) arcs_a[i] = {A[i].fd, A[i].td};
     for (size_t j = 0; j < B.size(); ++j) arcs_b[j] = {B[j].fd, B[j].td};
@@ -270,15 +269,17 @@ void add_lines(HullModel& m, const std::vector<V>& normals) {
 
 }  // namespace
 
-std::vector<Vec3z> all_facet_normals(const HullModel& m) {
+std::vector<Vec3z> all_facet_normals(const Polyhedron& P1, const Polyhedron& P2) {
     LineStats scratch;
-    if (m.P[0].small() && m.P[1].small()) {
+    if (P1.small() && P2.small()) {
         std::vector<Vec3z> out;
-        for (const Vec3s& n : facet_normals<Vec3s>(m, scratch)) out.push_back(to_z(n));
+        for (const Vec3s& n : facet_normals<Vec3s>(P1, P2, scratch)) out.push_back(to_z(n));
         return out;
     }
-    return facet_normals<Vec3z>(m, scratch);
+    return facet_normals<Vec3z>(P1, P2, scratch);
 }
+
+std::vector<Vec3z> all_facet_normals(const HullModel& m) { return all_facet_normals(m.P[0], m.P[1]); }
 
 Model build_hulls(const ExactScene& scene) {
     check_scene(scene, "scene");  // a scene built in code gets the reader's checks too
@@ -304,11 +305,11 @@ HullModel build_model(Model&& hulls) {
     // Machine integers when both polyhedra are small (exact within small_int.hpp's bounds), GMP
     // otherwise: the same normals, lines and statistics either way.
     if (m.P[0].small() && m.P[1].small()) {
-        auto ns = facet_normals<Vec3s>(m, m.stats);
+        auto ns = facet_normals<Vec3s>(m.P[0], m.P[1], m.stats);
         clock.lap("gauss map overlay");
         add_lines(m, ns);
     } else {
-        auto ns = facet_normals<Vec3z>(m, m.stats);
+        auto ns = facet_normals<Vec3z>(m.P[0], m.P[1], m.stats);
         clock.lap("gauss map overlay");
         add_lines(m, ns);
     }

@@ -92,6 +92,8 @@ HullModel build_model(const ExactScene& scene, const std::string& name);
 // Every facet normal of Q1 ⊕ (−Q2), primitive and sorted, the dominated ones included (Model::lines
 // keeps only those that can be on the curve). Recomputed on each call.
 std::vector<Vec3z> all_facet_normals(const HullModel& m);
+// The same for two polyhedra held elsewhere (a compound's part pair: no copy).
+std::vector<Vec3z> all_facet_normals(const Polyhedron& P1, const Polyhedron& P2);
 
 // The line of normal n (any nonzero direction, not necessarily a facet normal of the sum):
 // support values, features and the line, computed by scanning the polyhedra.

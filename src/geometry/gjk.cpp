@@ -42,15 +42,15 @@ struct Vert {
 };
 
 // The point of the affine hull of the subset nearest the origin, if it lies strictly inside the
-// subset's simplex: its barycentric weights.
-bool project(const std::vector<Vert>& s, unsigned mask, std::vector<double>& w, D3& x) {
-    std::vector<size_t> ids;
+// subset's simplex (all its barycentric weights > 0).
+bool project(const std::vector<Vert>& s, unsigned mask, D3& x) {
+    size_t ids[4] = {}, m = 0;
     for (size_t k = 0; k < s.size(); ++k)
-        if (mask >> k & 1) ids.push_back(k);
+        if (mask >> k & 1) ids[m++] = k;
     const D3& y0 = s[ids[0]].z;
-    const size_t n = ids.size() - 1;
+    const size_t n = m - 1;
     double G[3][3] = {}, r[3] = {};
-    std::vector<D3> e(n);
+    D3 e[3];
     for (size_t i = 0; i < n; ++i) e[i] = subd(s[ids[i + 1]].z, y0);
     for (size_t i = 0; i < n; ++i) {
         for (size_t j = 0; j < n; ++j) G[i][j] = dotd(e[i], e[j]);
@@ -85,13 +85,9 @@ bool project(const std::vector<Vert>& s, unsigned mask, std::vector<double>& w, 
     if (!(l0 > 0)) return false;
     for (size_t i = 0; i < n; ++i)
         if (!(l[i] > 0)) return false;
-    w.assign(s.size(), 0);
-    w[ids[0]] = l0;
     x = y0;
-    for (size_t i = 0; i < n; ++i) {
-        w[ids[i + 1]] = l[i];
+    for (size_t i = 0; i < n; ++i)
         for (int c = 0; c < 3; ++c) x[c] += l[i] * e[i][c];
-    }
     return true;
 }
 }  // namespace
@@ -118,21 +114,18 @@ GjkGuess gjk_guess(const PointSets& S, double rho1, double rho2) {
         if (known) break;
         s.push_back(w);
         double best = INFINITY;
-        std::vector<Vert> next;
+        unsigned best_mask = 0;
         D3 nv = v;
         for (unsigned mask = 1; mask < (1u << s.size()); ++mask) {
-            std::vector<double> wt;
             D3 x;
-            if (!project(s, mask, wt, x)) continue;
+            if (!project(s, mask, x)) continue;
             const double d = dotd(x, x);
-            if (d < best) {
-                best = d, nv = x;
-                next.clear();
-                for (size_t k = 0; k < s.size(); ++k)
-                    if (mask >> k & 1) next.push_back(s[k]);
-            }
+            if (d < best) best = d, nv = x, best_mask = mask;
         }
-        if (next.empty()) break;  // degenerate in doubles: keep what there is
+        if (!best_mask) break;  // degenerate in doubles: keep what there is
+        std::vector<Vert> next;
+        for (size_t k = 0; k < s.size(); ++k)
+            if (best_mask >> k & 1) next.push_back(s[k]);
         s = std::move(next);
         v = nv;
         if (s.size() == 4) {  // the origin inside the tetrahedron (to doubles)
@@ -140,11 +133,15 @@ GjkGuess gjk_guess(const PointSets& S, double rho1, double rho2) {
             break;
         }
     }
-    for (const Vert& t : s) g.v1.push_back(A.idx[t.a]), g.v2.push_back(B.idx[t.b]);
+    for (const Vert& t : s) {
+        g.v1.push_back(A.idx[t.a]), g.v2.push_back(B.idx[t.b]);
+        g.simplex.push_back({A.idx[t.a], B.idx[t.b]});
+    }
     for (auto* vv : {&g.v1, &g.v2}) {
         std::sort(vv->begin(), vv->end());
         vv->erase(std::unique(vv->begin(), vv->end()), vv->end());
     }
+    g.closest = v;
     g.distance = std::sqrt(dotd(v, v));
     return g;
 }

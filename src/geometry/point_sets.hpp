@@ -23,24 +23,27 @@ class PointSets {
     virtual int dargmax(int i, const D3& d) const = 0;
 };
 
-// The vertices of the exact polyhedra: a hull model's, or build_hulls's (no contact line).
+// The vertices of the exact polyhedra: a hull model's, or build_hulls's (no contact line), or two
+// polyhedra and seeds held elsewhere (a compound's part pair, with no copy).
 class HullPoints final : public PointSets {
   public:
-    explicit HullPoints(const Bodies& m) : m_(m) {}
-    Vec3q point(int i, int k) const override { return m_.P[i].points[static_cast<size_t>(k)]; }
+    explicit HullPoints(const Bodies& m) : HullPoints(m.P[0], m.P[1], m.s[0], m.s[1]) {}
+    HullPoints(const Polyhedron& A, const Polyhedron& B, const Vec3q& s1, const Vec3q& s2) : P_{&A, &B}, s_{&s1, &s2} {}
+    Vec3q point(int i, int k) const override { return P_[i]->points[static_cast<size_t>(k)]; }
     D3 dpoint(int i, int k) const override {
-        const auto& d = m_.P[i].dpts[static_cast<size_t>(k)];
-        const double s = m_.P[i].scale.get_d();
+        const auto& d = P_[i]->dpts[static_cast<size_t>(k)];
+        const double s = P_[i]->scale.get_d();
         return {d[0] / s, d[1] / s, d[2] / s};
     }
-    const Vec3q& seed(int i) const override { return m_.s[i]; }
-    const Z& scale(int i) const override { return m_.P[i].scale; }
-    int argmax(int i, const Vec3z& n) const override { return m_.P[i].argmax(n).front(); }
+    const Vec3q& seed(int i) const override { return *s_[i]; }
+    const Z& scale(int i) const override { return P_[i]->scale; }
+    int argmax(int i, const Vec3z& n) const override { return P_[i]->argmax(n).front(); }
     int dargmax(int i, const D3& d) const override {
-        int best = m_.P[i].vertices.front();
+        const Polyhedron& P = *P_[i];
+        int best = P.vertices.front();
         double bv = -INFINITY;
-        for (int v : m_.P[i].vertices) {
-            const auto& x = m_.P[i].dpts[static_cast<size_t>(v)];
+        for (int v : P.vertices) {
+            const auto& x = P.dpts[static_cast<size_t>(v)];
             const double t = d[0] * x[0] + d[1] * x[1] + d[2] * x[2];
             if (t > bv) bv = t, best = v;
         }
@@ -48,7 +51,8 @@ class HullPoints final : public PointSets {
     }
 
   private:
-    const Bodies& m_;
+    const Polyhedron* P_[2];
+    const Vec3q* s_[2];
 };
 
 }  // namespace scalecert::internal

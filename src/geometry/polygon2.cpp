@@ -14,8 +14,9 @@ Q cross2(const Pt2& o, const Pt2& a, const Pt2& b) {
 std::vector<Pt2> normalize_polygon(std::vector<Pt2> p) {
     // Remove repeats (cyclically), then collinear middle vertices.
     std::vector<Pt2> q;
-    for (const Pt2& v : p)
-        if (q.empty() || q.back() != v) q.push_back(v);
+    q.reserve(p.size());  // (mpq's move may throw: a reallocation would copy every point)
+    for (Pt2& v : p)
+        if (q.empty() || q.back() != v) q.push_back(std::move(v));
     while (q.size() > 1 && q.front() == q.back()) q.pop_back();
     for (bool changed = true; changed && q.size() > 2;) {
         changed = false;
@@ -39,18 +40,21 @@ std::vector<Pt2> normalize_polygon(std::vector<Pt2> p) {
 }
 
 std::vector<Pt2> cut_polygon(const std::vector<Pt2>& p, const Q& a, const Q& b, const Q& c) {
-    auto value = [&](const Pt2& x) { return Q(a * x[0] + b * x[1] - c); };  // >= 0 inside
+    std::vector<Q> f(p.size());  // a x + b y − c at each corner: >= 0 inside
+    for (size_t i = 0; i < p.size(); ++i) f[i] = a * p[i][0] + b * p[i][1] - c;
     std::vector<Pt2> out;
+    out.reserve(p.size() + 1);  // a cut adds at most one corner
     for (size_t i = 0; i < p.size(); ++i) {
-        const Pt2 &x = p[i], &y = p[(i + 1) % p.size()];
-        const Q fx = value(x), fy = value(y);
-        if (sgn(fx) >= 0) out.push_back(x);
-        if ((sgn(fx) > 0 && sgn(fy) < 0) || (sgn(fx) < 0 && sgn(fy) > 0)) {
-            const Q t = fx / (fx - fy);
+        const size_t j = (i + 1) % p.size();
+        const Pt2 &x = p[i], &y = p[j];
+        const int sx = sgn(f[i]), sy = sgn(f[j]);
+        if (sx >= 0) out.push_back(x);
+        if ((sx > 0 && sy < 0) || (sx < 0 && sy > 0)) {
+            const Q t = f[i] / (f[i] - f[j]);
             out.push_back({x[0] + t * (y[0] - x[0]), x[1] + t * (y[1] - x[1])});
         }
     }
-    return normalize_polygon(out);
+    return normalize_polygon(std::move(out));
 }
 
 }  // namespace scalecert::internal

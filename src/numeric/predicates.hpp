@@ -25,6 +25,7 @@
 //   6. the Gauss-map candidate boxes: a completeness filter, no sign (gauss_map.cpp)
 //   7. ScanSupportFilter       which points may maximise n·x          (scan.cpp)
 //   8. half_plane_side_filter  a scaling pair against a part pair's half-plane (compound/region.cpp, locate.cpp)
+//   9. scaled_enclosure        a scaled coordinate s + ρ(x − s) enclosed in doubles (certify/compound_judge.cpp)
 //
 // Notation: u = 2^-53 (the unit roundoff of double), γ_n = n·u / (1 − n·u) (Higham): a sum of n
 // rounded products, or a product of n rounded factors, is within γ_n of the exact value
@@ -168,6 +169,24 @@ static_assert(kScanSupport > 1.9 * (kUnit + gamma(3)), "scan support bound");
 //    true ones), and kQueryTiny ≫ 3·2^-1022.
 constexpr double kHalfPlaneRel = 1e-14;
 static_assert(kHalfPlaneRel > 10 * 8 * kUnit && kQueryTiny > 1e6 * 3 * 0x1p-1022, "half-plane filter bound");
+
+// 9. A scaled coordinate E = S + R(X − S) enclosed in doubles without forming it (the scaled boxes
+//    of the parts, certify/compound_judge.cpp): s, ρ, x are the exact S, R, X read by
+//    region_double (each 0 or a normal double within 2u relative, else not a number), and in
+//    doubles t = fl(x − s), p = fl(ρ t), e = fl(s + p). Then |x − s − (X − S)| ≤ 2u(|X| + |S|),
+//    and t's rounding adds u|x − s|: |t − (X − S)| < 3.01u(|X| + |S|). p = ρt(1 + δ), |δ| ≤ u,
+//    plus at most 2^-1074 where it underflows, and ρ errs by 2u from R: |p − R(X − S)| <
+//    6.1u|R|(|X| + |S|) + 2^-1074. The last sum adds u|s + p| ≤ 1.01u|e|, and s errs by 2u|S|. In
+//    all |e − E| < 2u|S| + 6.1u|R|(|X| + |S|) + 1.01u|e| + 2^-1074, and with each exact magnitude
+//    within (1 + 2.01u) of its double, < 6.2u·m + 2^-1074 for m = |s| + |ρ|(|x| + |s|) + |e|,
+//    whose computed value is within γ4 of m. The enclosure is e ∓ (kScaledRel·m + kQueryTiny),
+//    each end rounded outward by one unit in the last place: factor 10 over 6.2u(1 + 1.01γ4), and
+//    kQueryTiny ≫ 2^-1074 (also the products of magnitudes that underflow). An e or a bound that
+//    is not finite gives no enclosure: both ends not a number, so every comparison with them is
+//    false and the exact ends decide.
+constexpr double kScaledRel = 1e-14;
+static_assert(kScaledRel > 10 * 6.2 * kUnit * (1 + 1.01 * gamma(4)) && kQueryTiny > 1e6 * 0x1p-1074,
+              "scaled coordinate bound");
 
 // ---- Statistics: one counter pair per predicate, per deciding object -------------------------
 
@@ -360,6 +379,18 @@ inline int half_plane_side(double a, double b, double c, double x, double y, Exa
     if (f) return st.filtered(Predicate::HalfPlaneSide), f;
     st.exact(Predicate::HalfPlaneSide);
     return exact();
+}
+// 9. Doubles lo <= S + R(X − S) <= hi from the region_double values s, ρ, x of S, R, X (bound 9);
+// both not a number when the doubles cannot enclose it.
+struct Enclosure {
+    double lo, hi;
+};
+inline Enclosure scaled_enclosure(double s, double rho, double x) {
+    const double e = s + rho * (x - s);
+    const double err =
+        kScaledRel * (std::fabs(s) + std::fabs(rho) * (std::fabs(x) + std::fabs(s)) + std::fabs(e)) + kQueryTiny;
+    if (!std::isfinite(e) || !std::isfinite(err)) return {std::nan(""), std::nan("")};
+    return {std::nextafter(e - err, -INFINITY), std::nextafter(e + err, INFINITY)};
 }
 // A rational's double for filter 8: mpq's get_d when that is 0 for 0 or a finite normal double,
 // else not a number (so that the filter never answers).
