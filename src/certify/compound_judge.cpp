@@ -2,6 +2,7 @@
 #include "certify/compound_judge.hpp"
 
 #include "certify/judgements.hpp"
+#include "certify/region_certificate.hpp"
 #include "geometry/gjk.hpp"
 #include "geometry/measures.hpp"
 
@@ -112,7 +113,6 @@ struct CompoundJudge::PairCache {
 };
 
 namespace {
-Json range_json(int from, int to) { return Json::array({from, to}); }
 Json exact3(const Vec3q& v) {
     return Json::array({to_exact_string(v[0]), to_exact_string(v[1]), to_exact_string(v[2])});
 }
@@ -367,14 +367,14 @@ int CompoundJudge::pair_sign(int a, int b, const Q& r1, const Q& r2, ScaledParts
 }
 
 namespace {
-struct Block {
+struct PlaneBlock {
     int a0, a1, b0, b1;
     int code;  // an axis normal (axis_code), or −1: then `normal`
     Vec3q normal;
 };
-Json blocks_json(const std::vector<Block>& blocks) {
+Json blocks_json(const std::vector<PlaneBlock>& blocks) {
     Json out = Json::array();
-    for (const Block& b : blocks)
+    for (const PlaneBlock& b : blocks)
         out.push_back(Json{{"P1_parts", range_json(b.a0, b.a1)},
                            {"P2_parts", range_json(b.b0, b.b1)},
                            {"normal", exact3(b.code >= 0 ? axis_of(b.code) : b.normal)}});
@@ -383,9 +383,9 @@ Json blocks_json(const std::vector<Block>& blocks) {
 // Appends [a, a] x [b, b] with an axis normal (code >= 0) or the normal n, joining the run before
 // it in the row when the normal is the same (every pair of the run is then separated by it, and
 // so is the block's union).
-void add_block(std::vector<Block>& blocks, int a, int b, int code, const Vec3q& n = Vec3q{}) {
+void add_block(std::vector<PlaneBlock>& blocks, int a, int b, int code, const Vec3q& n = Vec3q{}) {
     if (!blocks.empty()) {
-        Block& last = blocks.back();
+        PlaneBlock& last = blocks.back();
         if (last.a0 == a && last.a1 == a && last.b1 == b - 1 && last.code == code && (code >= 0 || last.normal == n)) {
             last.b1 = b;
             return;
@@ -394,7 +394,7 @@ void add_block(std::vector<Block>& blocks, int a, int b, int code, const Vec3q& 
     blocks.push_back({a, a, b, b, code, code >= 0 ? Vec3q{} : n});
 }
 // The run a block ends in at pair b − 1 of row a, if any: its axis code (−1: none, or not an axis).
-int run_code(const std::vector<Block>& blocks, int a, int b) {
+int run_code(const std::vector<PlaneBlock>& blocks, int a, int b) {
     return !blocks.empty() && blocks.back().a0 == a && blocks.back().a1 == a && blocks.back().b1 == b - 1
                ? blocks.back().code
                : -1;
@@ -418,7 +418,7 @@ int longest_axis(int b, int n, Ok ok) {
 CompoundJudge::Verdict CompoundJudge::verdict(const Q& r1, const Q& r2, Json* proof) {
     const int m = static_cast<int>(parts_[0].size()), n = static_cast<int>(parts_[1].size());
     ScaledParts X(*this, 0, r1, counts_.box_comparisons), Y(*this, 1, r2, counts_.box_comparisons);
-    std::vector<Block> blocks;
+    std::vector<PlaneBlock> blocks;
     Verdict v;
     const auto [c, side] = apart(X, X.all(), Y, Y.all());
     if (c >= 0) {
@@ -551,7 +551,7 @@ CompoundJudge::Distance CompoundJudge::distance(const Q& r1, const Q& r2, Json* 
     for (;;) {
         const Q E = best.squared;
         const double Ed = filter::region_double(E);
-        std::vector<Block> blocks;
+        std::vector<PlaneBlock> blocks;
         bool restart = false;
         if (gap_at_least(X, X.all(), Y, Y.all(), E, Ed)) {
             if (proof) blocks.push_back({0, m - 1, 0, n - 1, -1, gap_vector(X, X.all(), Y, Y.all())});

@@ -74,8 +74,6 @@ void polygon_json(Json& o, const std::vector<Point2q>& poly, Json witnesses) {
     o["witnesses"] = std::move(witnesses);
 }
 
-Json range_json(int from, int to) { return Json::array({from, to}); }
-
 // Blocks of pruned pairs apart along the same axis on the same side: runs along P2 in each row,
 // a run extended down the rows while the next row has the same run. Each block is one entry with
 // the normal ±e_c: every pair in it has part 1's swept box below (or above) part 2's along c, so
@@ -182,6 +180,8 @@ Json compound_partition_json(const ExactScene& sc, const CompoundRegion& r) {
     j["scene"] = compound_scene_json(sc);
     return j;
 }
+
+Json range_json(int from, int to) { return Json::array({from, to}); }
 
 void put_part_name(Json& o, const std::string& key, const PolyInput& in, int k) {
     if (k < 0) return;

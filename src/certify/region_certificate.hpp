@@ -38,6 +38,8 @@ Json compound_partition_json(const ExactScene& sc, const CompoundRegion& r);
 Json part_pair_json(const ExactScene& sc, int a, int b);
 // Beside o[key], part k of object in (k < 0: none): o[key + "_name"], its name, when it has one.
 void put_part_name(Json& o, const std::string& key, const PolyInput& in, int k);
+// A range of part indices [from, to] as the certificates write it.
+Json range_json(int from, int to);
 
 // The region document (kind "region", docs/manual.md "region"): the pairs' counts and polygons,
 // their union (r formed with it) with its boundary labelled and its switch points, the pairs that
