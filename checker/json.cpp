@@ -90,8 +90,12 @@ class StrictTree : public nlohmann::json_sax<J> {
         key_ = std::move(k);
         return true;
     }
-    bool parse_error(std::size_t pos, const std::string&, const nlohmann::detail::exception&) override {
-        if (error.empty()) error = "not strict JSON (RFC 8259) near byte " + std::to_string(pos);
+    bool parse_error(std::size_t pos, const std::string&, const nlohmann::detail::exception& e) override {
+        // nlohmann's out_of_range.406: a number that RFC 8259 allows but a double cannot hold.
+        if (error.empty())
+            error = e.id == 406 ? "a JSON number past the double range near byte " + std::to_string(pos) +
+                                      " (write exact numbers as strings: FORMAT.md)"
+                                : "not strict JSON (RFC 8259) near byte " + std::to_string(pos);
         return false;
     }
 

@@ -147,7 +147,11 @@ bool non_finite(const py::handle& h) {
 }
 
 py::list as_list(const py::handle& h, const std::string& what) {
-    if (py::hasattr(h, "tolist")) return h.attr("tolist")();  // numpy arrays
+    if (py::hasattr(h, "tolist")) {  // numpy arrays; a numpy scalar or 0-d array gives no list
+        py::object l = h.attr("tolist")();
+        if (py::isinstance<py::list>(l)) return py::reinterpret_borrow<py::list>(l);
+        throw scalecert::InputError(what + ": expected a list");
+    }
     if (py::isinstance<py::str>(h) || !py::isinstance<py::sequence>(h))
         throw scalecert::InputError(what + ": expected a list");
     return py::list(py::reinterpret_borrow<py::object>(h));

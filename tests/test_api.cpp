@@ -431,9 +431,10 @@ BOOST_AUTO_TEST_CASE(a_region_of_parts_by_hand) {
     BOOST_TEST(!r.check_plane(R(2), R(2), {R(1), R(0), R(0)}).separates);  // overlapping at (2, 2)
     // What is defined for two convex objects only says what answers instead.
     for (const std::string& e : {error_of([&] { r.curve(); }), error_of([&] { r.curve_json(); })})
-        BOOST_TEST(
-            e.find("is defined for two convex objects; on objects made of parts, region_json()") != std::string::npos,
-            e);
+        BOOST_TEST(e.find("is defined for two convex objects; on objects made of parts, the region gives where they "
+                          "meet, with its labelled boundary, switch points and growth set (C++ region_json(), Python "
+                          "region(), `scalecert region`)") != std::string::npos,
+                   e);
     BOOST_TEST(r.region_json().find("\"switch_points\": []") != std::string::npos);
     BOOST_TEST(r.partition_json().find("\"kind\": \"compound_partition\"") != std::string::npos);
     // Golden data (test_cli derives it by hand on the same band): 13 queries on ρ1 = 23/8, the first
@@ -568,8 +569,8 @@ BOOST_AUTO_TEST_CASE(parts_named_by_obj_groups) {
     BOOST_TEST_REQUIRE(notes.size() == 2u);
     BOOST_TEST(notes[0] == obj +
                                ": 2 groups with faces, read as one convex object (the hull of all its vertices); "
-                               "--parts-from-groups (or the scene key \"parts_from_groups\") reads a convex part per "
-                               "group");
+                               "--parts-from-groups (the scene key \"parts_from_groups\", from_meshes(..., "
+                               "parts_from_groups=true)) reads a convex part per group");
 }
 
 namespace {

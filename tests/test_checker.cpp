@@ -1060,6 +1060,12 @@ BOOST_AUTO_TEST_CASE(hostile_files_exit_2_without_crashing) {
     BOOST_TEST(verdict_of(t + std::string(1, '\0') + "{\"not\": json") == 2);
     BOOST_TEST(verdict_of("\xEF\xBB\xBF" + t) == 2);
     BOOST_TEST(verdict_of(t) == 0);
+    // A JSON number of 400 digits is RFC 8259 but no double: unreadable, and the message says why.
+    {
+        std::string msg;
+        BOOST_TEST(scalecert_check::check_text("{\"zz\": 1" + std::string(400, '0') + "}", msg) == 2);
+        BOOST_TEST(msg.find("a JSON number past the double range near byte") != std::string::npos, msg);
+    }
     // An index written -0 has a sign: refused.
     std::string neg = t;
     const size_t at = neg.find("\"piece\": ");

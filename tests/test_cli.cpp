@@ -1490,6 +1490,29 @@ BOOST_AUTO_TEST_CASE(a_mesh_of_groups_read_whole_gets_a_note) {
     BOOST_TEST(qs.status == 0);
     BOOST_TEST(qs.out == "touching\n");
     BOOST_TEST(qs.err.find(note) == 0u, qs.err);
+    // audit too, before its count of rows.
+    const Run au = run("audit " + scene.string() + " --methods libccd-gjk --grid 4 --no-timing --out " +
+                       (workdir() / "note_audit.json").string());
+    BOOST_TEST(au.status == 0, au.err);
+    BOOST_TEST(au.err.find(note) == 0u, au.err);
+    BOOST_TEST(au.err.find("\nscalecert: audit: ") != std::string::npos, au.err);
+}
+
+// A group's name is text written into JSON and messages: a name that is not UTF-8 is refused
+// in one line naming the file and the line (exit 2), on every command that reads parts.
+BOOST_AUTO_TEST_CASE(an_obj_group_name_that_is_not_utf8_is_refused) {
+    const fs::path obj =
+        write("bad_name.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\ng r\xffx\nf 1 2 3\nf 1 2 4\nf 1 3 4\nf 2 3 4\n");
+    const std::string meshes =
+        " --p1 " + obj.string() + " --p2 " + obj.string() + " --i1 1,2 --i2 1,2 --parts-from-groups";
+    for (const std::string& cmd :
+         std::vector<std::string>{"region", "query 1 1 --json", "golden --dir " + (workdir() / "bad-name").string()}) {
+        const Run r = run(cmd + meshes);
+        BOOST_TEST(r.status == 2, cmd);
+        BOOST_TEST(r.err == "scalecert: error: " + obj.string() + ": line 5: the group's name is not UTF-8 text\n",
+                   r.err);
+    }
+    BOOST_TEST(!fs::exists(workdir() / "bad-name"));
 }
 
 BOOST_AUTO_TEST_CASE(certify_fp_on_compounds) {
@@ -1569,9 +1592,22 @@ BOOST_AUTO_TEST_CASE(every_command_takes_objects_made_of_parts) {
                "separated\noverlapping\n");
     expect_error("curve on parts", "curve " + u, "scalecert region gives where they meet");
     expect_error("segment on parts", "query " + u + " 1 1 --segment seeds", "for two convex objects");
+    expect_error("segment on parts names region", "query " + u + " 1 1 --segment seeds", "scalecert region");
     Run gp = run("grid " + u + " --n 4");
     BOOST_TEST(gp.status == 2);
     BOOST_TEST(gp.err.find("`curve` and `grid` are for two convex objects") != std::string::npos, gp.err);
+    // --parts-from-groups on grid: refused in one line naming region, before any reading (curve
+    // reads the parts and refuses them as it refuses a scene of parts: above).
+    const std::string band_obj = std::string(SCALECERT_SOURCE_DIR) + "/tests/data/compound_band.obj";
+    for (const char* cmd : {"grid"}) {
+        const Run r = run(std::string(cmd) + " --p1 " + band_obj + " --p2 " + band_obj +
+                          " --i1 1,2 --i2 1,2 --parts-from-groups");
+        BOOST_TEST(r.status == 2, cmd);
+        BOOST_TEST(r.err ==
+                       "scalecert: error: --parts-from-groups: this command is for two convex objects "
+                       "(`scalecert region` gives where objects made of parts meet)\n",
+                   r.err);
+    }
 
     // golden on the band (tests/data/compound_band.json, by hand): its right part [2ρ1, 3ρ1] in x
     // meets the box [9/2 − ρ2/2, 9/2 + ρ2/2] iff ρ2 >= max(9 − 6ρ1, 4ρ1 − 9) (y and z always

@@ -637,6 +637,10 @@ def test_region_certify_over_arrays_by_hand():
     p = band.certify("separating_plane", [1, 1], [2, 2], normal=[[1, 0, 0], [1, 0, 0]], offset=["13/4", 4], certificate=True)
     assert list(p["right"]) == [True, False] and p["wrong"] == 1
     assert json.loads(p["certificate"])["kind"] == "compound_judgements"
+    # A numpy scalar or 0-d array where a list is expected: an InputError like a float's.
+    for scalar in (1.0, np.float64(1.0), np.array(1.0)):
+        with pytest.raises(scalecert.InputError, match="rho1: expected a list"):
+            band.certify("verdict", scalar, np.float64(1.0), verdict="separated")
     with pytest.raises(scalecert.InputError, match="two convex objects"):
         band.certify("penetration_depth", [2], [2], value=[1])
 

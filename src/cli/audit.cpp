@@ -19,8 +19,12 @@ Command add_audit(CLI::App& app) {
             "(On a cluster: mpirun scalecert-mpi audit, with the same options and a run folder.)");
     return {sub, [a] {
                 validate(*a);  // refused before any work
+                // What reading each scene file leaves to say (an OBJ of several groups read as one
+                // convex object), as every command says it; standard input is read once, by the run.
+                for (const std::string& p : a->scenes)
+                    if (p != "-") say_notes(load_scene(p, a->opt));
                 const long rows = run_campaign(*a);
-                std::cerr << "scalecert: audit: " << rows << " rows\n";
+                std::cerr << "scalecert: audit: " << rows << (rows == 1 ? " row\n" : " rows\n");
                 return 0;
             }};
 }

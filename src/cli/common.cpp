@@ -34,10 +34,19 @@ void say_notes(const internal::ExactScene& sc) {
         if (!p.note.empty()) std::cerr << "scalecert: note: " << p.note << "\n";
 }
 
+// --parts-from-groups on a command for two convex objects (curve, grid), refused before any file is read.
+static void refuse_groups_unless_parts(const internal::ReadOptions& opt) {
+    if (opt.parts_from_groups && !opt.allow_parts)
+        throw InputError(
+            "--parts-from-groups: this command is for two convex objects (`scalecert region` gives where objects "
+            "made of parts meet)");
+}
+
 internal::ExactScene SceneArgs::load() const {
     const bool any_mesh_option = !mesh[0].empty() || !mesh[1].empty() || !interval[0].empty() || !interval[1].empty() ||
                                  !seed[0].empty() || !seed[1].empty();
     if (!path.empty() && any_mesh_option) throw InputError("give SCENE or --p1, --p2, --i1, --i2, not both");
+    refuse_groups_unless_parts(opt);
     if (!path.empty()) {
         internal::ExactScene sc = load_scene(path, opt);
         internal::note_inputs({path});
@@ -72,6 +81,7 @@ std::shared_ptr<const internal::CompactScene> SceneArgs::load_compact() const {
 }
 
 std::shared_ptr<const internal::CompactScene> SceneArgs::load_compact(internal::ExactScene* full) const {
+    refuse_groups_unless_parts(opt);
     internal::note_inputs({path, mesh[0], mesh[1]});  // (a scene naming meshes is read by load(), which notes them)
     const bool scene_only = !path.empty() && mesh[0].empty() && mesh[1].empty() && interval[0].empty() &&
                             interval[1].empty() && seed[0].empty() && seed[1].empty();

@@ -36,7 +36,9 @@ Command add_query(CLI::App& app) {
                     // Objects made of parts: the verdict at any (ρ1, ρ2) > 0 by the compound judge;
                     // with --json, the compound judgements certificate of that verdict (scalecert-check).
                     if (!a->segment.empty() || a->in_t)
-                        throw InputError("--segment and --in-t are for two convex objects");
+                        throw InputError(
+                            "--segment and --in-t are for two convex objects (`scalecert region` gives where objects "
+                            "made of parts meet)");
                     const Q r1 = read_rho(a->rho1, "RHO1", a->scene.opt), r2 = read_rho(a->rho2, "RHO2", a->scene.opt);
                     const std::string text =
                         a->json ? o.compound->verdict_certificate(r1, r2)

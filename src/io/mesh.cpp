@@ -1,4 +1,5 @@
 #include "io/mesh.hpp"
+#include "io/strict_json.hpp"
 #include "io/files.hpp"
 #include "numeric/small_int.hpp"
 
@@ -154,6 +155,8 @@ std::vector<std::vector<Vec3q>> parse_obj_groups(const std::string& text, const 
             group_line = no;
             group_name.clear();
             for (size_t k = 1; k < t.size(); ++k) group_name += (k > 1 ? " " : "") + t[k];
+            // A name is written into JSON documents and messages, so it must be text.
+            if (!is_utf8(group_name)) fail(name, "line " + std::to_string(no) + ": the group's name is not UTF-8 text");
         } else if (t[0] == "f") {
             if (t.size() < 4) fail(name, "line " + std::to_string(no) + ": expected 'f' and at least 3 vertices");
             for (size_t k = 1; k < t.size(); ++k) {
@@ -477,9 +480,11 @@ std::vector<Vec3q> read_mesh(const std::string& path, const ReadOptions& opt, st
     std::vector<Vec3q> pts = parse_mesh(bytes, f, path, opt);
     if (note && f == MeshFormat::Obj)
         if (const size_t g = obj_groups_with_faces(bytes); g >= 2)
-            *note = path + ": " + std::to_string(g) +
-                    " groups with faces, read as one convex object (the hull of all its vertices); "
-                    "--parts-from-groups (or the scene key \"parts_from_groups\") reads a convex part per group";
+            *note =
+                path + ": " + std::to_string(g) +
+                " groups with faces, read as one convex object (the hull of all its vertices); "
+                "--parts-from-groups (the scene key \"parts_from_groups\", from_meshes(..., parts_from_groups=true)) "
+                "reads a convex part per group";
     return pts;
 }
 

@@ -171,19 +171,10 @@ class StrictJson {
     }
     // One UTF-8 sequence starting at i_ (well-formed, shortest form, no surrogates), copied.
     void utf8_sequence(std::string& out) {
-        const unsigned char c = static_cast<unsigned char>(s_[i_]);
-        const int n = c >= 0xC2 && c <= 0xDF ? 1 : c >= 0xE0 && c <= 0xEF ? 2 : c >= 0xF0 && c <= 0xF4 ? 3 : -1;
-        if (n < 0 || i_ + static_cast<size_t>(n) >= s_.size()) fail("invalid UTF-8");
-        unsigned cp = c & (0x3F >> n);
-        for (int k = 1; k <= n; ++k) {
-            const unsigned char d = static_cast<unsigned char>(s_[i_ + static_cast<size_t>(k)]);
-            if ((d & 0xC0) != 0x80) fail("invalid UTF-8");
-            cp = cp << 6 | (d & 0x3F);
-        }
-        if ((n == 2 && cp < 0x800) || (n == 3 && (cp < 0x10000 || cp > 0x10FFFF)) || (cp >= 0xD800 && cp <= 0xDFFF))
-            fail("invalid UTF-8");
-        out.append(s_, i_, static_cast<size_t>(n) + 1);
-        i_ += static_cast<size_t>(n) + 1;
+        const size_t n = utf8_sequence_length(s_, i_);
+        if (n == 0) fail("invalid UTF-8");
+        out.append(s_, i_, n);
+        i_ += n;
     }
     std::string string() {
         ++i_;  // the opening quote
@@ -235,6 +226,28 @@ class StrictJson {
 };
 
 }  // namespace
+
+size_t utf8_sequence_length(const std::string& s, size_t i) {
+    const unsigned char c = static_cast<unsigned char>(s[i]);
+    if (c < 0x80) return 1;
+    const int n = c >= 0xC2 && c <= 0xDF ? 1 : c >= 0xE0 && c <= 0xEF ? 2 : c >= 0xF0 && c <= 0xF4 ? 3 : -1;
+    if (n < 0 || i + static_cast<size_t>(n) >= s.size()) return 0;
+    unsigned cp = c & (0x3F >> n);
+    for (int k = 1; k <= n; ++k) {
+        const unsigned char d = static_cast<unsigned char>(s[i + static_cast<size_t>(k)]);
+        if ((d & 0xC0) != 0x80) return 0;
+        cp = cp << 6 | (d & 0x3F);
+    }
+    if ((n == 2 && cp < 0x800) || (n == 3 && (cp < 0x10000 || cp > 0x10FFFF)) || (cp >= 0xD800 && cp <= 0xDFFF))
+        return 0;
+    return static_cast<size_t>(n) + 1;
+}
+
+bool is_utf8(const std::string& s) {
+    for (size_t i = 0, n = 0; i < s.size(); i += n)
+        if ((n = utf8_sequence_length(s, i)) == 0) return false;
+    return true;
+}
 
 JNode parse_strict_json(const std::string& text, bool non_numbers) { return StrictJson(text, non_numbers).parse(); }
 

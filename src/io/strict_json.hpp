@@ -34,4 +34,10 @@ struct JsonError {
 // claims files, where a program's non-finite output is a wrong answer, not a malformed file.
 JNode parse_strict_json(const std::string& text, bool non_numbers = false);
 
+// The length of the well-formed UTF-8 sequence (shortest form, no surrogates, at most U+10FFFF)
+// that starts at s[i] (i < s.size()), or 0 when none does.
+size_t utf8_sequence_length(const std::string& s, size_t i);
+// Whether s is well-formed UTF-8 throughout.
+bool is_utf8(const std::string& s);
+
 }  // namespace scalecert::internal

@@ -250,8 +250,10 @@ struct Analysis::Impl {
     internal::Session& convex_only(const char* what) const {
         if (!session)
             throw InputError(std::string(what) +
-                             " is defined for two convex objects; on objects made of parts, region_json() gives where "
-                             "they meet (its labelled boundary, switch points and growth set)");
+                             " is defined for two convex objects; on objects made of parts, the region gives where "
+                             "they meet, with its labelled boundary, switch points and growth set (C++ region_json(), "
+                             "Python region(), "
+                             "`scalecert region`)");
         return *session;
     }
 };
