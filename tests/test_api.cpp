@@ -417,7 +417,10 @@ BOOST_AUTO_TEST_CASE(a_region_of_parts_by_hand) {
                                                      scalecert::Verdict::Touching, scalecert::Verdict::Separated}));
     // Outside I1 x I2 as well: at (5, 2) the right part spans [10, 15] in x, past the box.
     BOOST_TEST((r.verdict(R(5), R(2)) == scalecert::Verdict::Separated));
-    BOOST_CHECK_THROW(r.classify({5.0}, {2.0}, 1), scalecert::InputError);  // the grid covers I1 x I2
+    // classify judges it alone, beside the pairs located on the grid.
+    BOOST_TEST((r.classify({5.0, 2.0}, {2.0, 2.0}, 1) ==
+                std::vector<scalecert::Verdict>{scalecert::Verdict::Separated, scalecert::Verdict::Overlapping}));
+    BOOST_CHECK_THROW(r.classify({5.0}, {0.0}, 1), scalecert::InputError);  // not positive
     // query gives the verdict (no one plane or common point stands for the parts); check_plane
     // takes every part: at (1, 2) the plane x = 13/4 lies between the right part's face x = 3
     // (the left part is at x <= -2) and the box's face x = 7/2.

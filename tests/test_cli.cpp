@@ -677,6 +677,39 @@ BOOST_AUTO_TEST_CASE(bad_mesh_files_and_options) {
 }
 
 // ---- the command line: exit 1 for a wrong claim, --help examples, one --out ----------
+// A distance or depth claim whose value is right but whose points or direction are wrong: the
+// text line says so. Stacked cubes at (1, 1): P1's top z = 2 and P2's bottom z = 3, distance 1,
+// so (1, 1, 3.5), 3/2 from (1, 1, 2), is no closest point. At (2, 2) P1 spans z in [-1, 3] and P2
+// z in [2, 6] (x and y both [-1, 3]): depth 1 along z, and 4 along y.
+BOOST_AUTO_TEST_CASE(certify_fp_lines_name_the_wrong_part_of_a_claim) {
+    const std::string sc = std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/stacked_cubes.json";
+    const fs::path claims = write("parts_wrong.json", R"({"format": "scalecert-claims-1", "claims": [
+        {"kind": "distance", "rho1": 1, "rho2": 1, "value": 1, "closest": [[1, 1, 2], [1, 1, 3.5]]},
+        {"kind": "distance", "rho1": 1, "rho2": 1, "value": 1, "closest": [[1, 1, 2], [1, 1, 3]]},
+        {"kind": "penetration_depth", "rho1": 2, "rho2": 2, "value": 1, "direction": [0, 1, 0]},
+        {"kind": "penetration_depth", "rho1": 2, "rho2": 2, "value": 1, "direction": [0, 0, 1]}]})");
+    const Run r = run("certify-fp " + sc + " " + claims.string());
+    BOOST_TEST(r.status == 1);
+    BOOST_TEST(r.out.find("wrong: 2") != std::string::npos, r.out);
+    std::vector<std::string> lines;
+    for (std::istringstream in(r.out); std::getline(in, lines.emplace_back());) {}
+    auto line_of = [&](const std::string& start, int nth) {
+        for (const std::string& l : lines)
+            if (l.rfind(start, 0) == 0 && nth-- == 0) return l;
+        return std::string();
+    };
+    const std::string bad_points = line_of("WRONG", 0), bad_direction = line_of("WRONG", 1);
+    BOOST_TEST(bad_points.find("distance at") != std::string::npos, bad_points);
+    const std::string points_wrong = ", but the closest points are wrong",
+                      direction_wrong = ", but the direction is wrong";
+    BOOST_TEST_REQUIRE(bad_points.size() > points_wrong.size());
+    BOOST_TEST(bad_points.substr(bad_points.size() - points_wrong.size()) == points_wrong, bad_points);
+    BOOST_TEST(bad_direction.find("penetration depth at") != std::string::npos, bad_direction);
+    BOOST_TEST_REQUIRE(bad_direction.size() > direction_wrong.size());
+    BOOST_TEST(bad_direction.substr(bad_direction.size() - direction_wrong.size()) == direction_wrong, bad_direction);
+    BOOST_TEST(r.out.find("are wrong\n") == r.out.rfind("are wrong\n"), r.out);  // the right ones say nothing
+}
+
 BOOST_AUTO_TEST_CASE(certify_fp_exit_status_gates_ci) {
     // Stacked cubes: the touching line is ρ1 + ρ2 = 3 (test_hand_curves), so (1, 1) is separated,
     // (3/2, 3/2) touching and the growth distance 3/2.
@@ -1070,9 +1103,10 @@ BOOST_AUTO_TEST_CASE(region_of_compounds) {
         Run c = run("region " + band + " --classify " + pairs.string() + " --threads 2");
         BOOST_TEST(c.status == 0, c.err);
         BOOST_TEST(c.out == "separated\noverlapping\ntouching\nseparated\n");
-        expect_error("classify outside",
-                     "region " + band + " --classify " + write("band_far.txt", "1 2\n5 2\n").string(),
-                     "pair 1 (numbered from 0) lies outside I1 x I2");
+        // Off the rectangle, judged alone: at (5, 2) the right part [10, 15] is past the box [7/2, 11/2].
+        Run far = run("region " + band + " --classify " + write("band_far.txt", "1 2\n5 2\n").string());
+        BOOST_TEST(far.status == 0, far.err);
+        BOOST_TEST(far.out == "separated\nseparated\n");
         expect_error(
             "classify with certificate",
             "region " + band + " --classify " + pairs.string() + " --certificate " + (workdir() / "c.json").string(),

@@ -211,7 +211,7 @@ class Analysis {
     Verdict verdict(const Rational& rho1, const Rational& rho2) const;
     // The verdict with its evidence on a convex scene (a plane, a common point); on parts the verdict.
     QueryResult query(const Rational& rho1, const Rational& rho2) const;
-    // The exact verdicts at doubles' exact values (> 0, finite; on parts, in I1 × I2), on
+    // The exact verdicts at doubles' exact values (> 0, finite), on
     // `threads` threads (0: all cores).
     std::vector<Verdict> classify(const std::vector<double>& rho1, const std::vector<double>& rho2,
                                   unsigned threads = 0) const;

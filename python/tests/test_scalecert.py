@@ -426,8 +426,11 @@ def test_region_of_parts_by_hand_and_the_cli(tmp_path):
     # bottom, over x in [-1, 1] (the walls, x in [-9, -6] and [6, 9], stay clear): touching.
     assert r.verdict(3, 1) == scalecert.Verdict.Touching
     assert r.verdict(3, F(99, 100)) == scalecert.Verdict.Separated
-    with pytest.raises(ValueError, match="outside I1 x I2"):
-        r.classify([3.0], [1.0])  # the grid is over I1 x I2
+    # classify too: pairs outside I1 x I2 are judged one by one, beside those located on the grid
+    # (line 410's); the double 0.99 lies below 99/100.
+    assert list(r.classify([3.0, 1.0, 3.0], [1.0, 3.0, 0.99])) == [1, 2, 0]
+    with pytest.raises(ValueError, match="pair 1 .numbered from 0.: two finite numbers > 0 are required"):
+        r.classify([3.0, 3.0], [1.0, 0.0])
     for bad in (["a"], [1 + 2j], [object()]):  # InputError (a ValueError) with one line, not pybind's TypeError
         with pytest.raises(ValueError, match="expected real numbers"):
             r.classify(bad, [1.0])
@@ -558,7 +561,7 @@ def test_pairs_are_numbered_from_0_in_every_classify():
     with pytest.raises(scalecert.InputError, match=r"pair 1 \(numbered from 0\)"):
         s.classify([1.0, -1.0], [1.0, 1.0])
     with pytest.raises(scalecert.InputError, match=r"pair 1 \(numbered from 0\)"):
-        r.classify([1.0, 9.0], [1.0, 1.0])
+        r.classify([1.0, -1.0], [1.0, 1.0])
 
 
 def test_region_from_meshes_reads_groups_as_parts(tmp_path):

@@ -523,6 +523,8 @@ void describe(const TypedClaim& c, const Judged& g, const ExactScene* parts, Jso
             }
             put_exact(o, "closest_squared_distance", g.closest_squared);
             o["closest_right"] = *g.closest_right;
+            // A right value with wrong points: the line says which part of the claim is wrong.
+            if (*g.value_right && !*g.closest_right) text += ", but the closest points are wrong";
         }
         return;
     case ClaimType::Depth:
@@ -542,6 +544,7 @@ void describe(const TypedClaim& c, const Judged& g, const ExactScene* parts, Jso
         if (c.direction) {
             put_exact(o, "depth_squared_along_direction", g.along);
             o["direction_right"] = *g.direction_right;
+            if (*g.value_right && !*g.direction_right) text += ", but the direction is wrong";
         }
         return;
     }

@@ -30,9 +30,9 @@ class CompoundSession {
     Json partition_json();
     // The exact verdict at (ρ1, ρ2) in I1 × I2 (InputError outside), with the pair that decides it.
     CompoundVerdict verdict(const Q& rho1, const Q& rho2);
-    // The exact verdicts of doubles' exact values in I1 × I2, located on the grid, on `threads`
-    // threads: 0 separated, 1 touching, 2 overlapping. Every pair is checked first, before the
-    // region is built: one outside gives InputError "SOURCE: pair K lies outside I1 x I2".
+    // The exact verdicts of doubles' exact values, those in I1 × I2 located on the grid, on `threads`
+    // threads; a pair outside I1 x I2 is judged alone, by judge() (as `query` judges it). Every pair
+    // is checked first: one not finite or not positive gives InputError "SOURCE: pair K ...".
     std::vector<Verdict> classify(const std::vector<double>& rho1, const std::vector<double>& rho2, unsigned threads,
                                   const std::string& source = "classify");
     // Judgements at any (ρ1, ρ2) > 0 with their proofs (certify-fp): the parts' hulls, built on
