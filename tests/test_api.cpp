@@ -733,3 +733,50 @@ BOOST_AUTO_TEST_CASE(family_golden_data_through_the_public_api) {
     BOOST_TEST(written["queries"] == nlohmann::json::parse(g.json)["queries"]);
     BOOST_TEST(read(dir + "/random-0.golden.csv") == g.csv);
 }
+
+// Scene::from_meshes on two large OFF files of integers reads them straight into machine integers,
+// as the command does, with no exact form until one is asked for. Against the same points given
+// exactly (the Scene constructor), everything answers alike: the scene file, seeds, the curve,
+// queries with their evidence, the partition and golden data. 1,200 points each on spheres of
+// radius 10^6 (the walk answers from 2,000 points in all).
+BOOST_AUTO_TEST_CASE(large_off_meshes_read_as_integers_answer_as_the_exact_scene) {
+    std::mt19937 g(77);
+    std::normal_distribution<double> N(0, 1);
+    std::vector<scalecert::Point> pts[2];
+    std::string paths[2];
+    for (int i = 0; i < 2; ++i) {
+        paths[i] = "/tmp/scalecert-test-api-off-" + std::to_string(::getpid()) + "-" + std::to_string(i) + ".off";
+        std::ofstream o(paths[i]);
+        o << "OFF\n1200 0 0\n";
+        for (int k = 0; k < 1200; ++k) {
+            const double x = N(g), y = N(g), z = N(g), l = std::sqrt(x * x + y * y + z * z);
+            const long c[3] = {std::lround(1e6 * x / l) + (i ? 2500000 : 0), std::lround(1e6 * y / l),
+                               std::lround(1e6 * z / l)};
+            o << c[0] << ' ' << c[1] << ' ' << c[2] << '\n';
+            pts[i].push_back({R(c[0]), R(c[1]), R(c[2])});
+        }
+    }
+    const scalecert::Interval I{R(1, 2), R(2)};
+    const scalecert::Scene a = scalecert::Scene::from_meshes(paths[0], paths[1], I, I);
+    const scalecert::Scene b(pts[0], pts[1], I, I);
+    const scalecert::Analysis aa(a), ab(b);
+    BOOST_TEST(aa.curve_json() == ab.curve_json());
+    for (const auto& [r1, r2] : std::vector<std::pair<R, R>>{{R(1), R(1)}, {R(2), R(2)}, {R(1, 2), R(3, 2)}}) {
+        const scalecert::QueryResult qa = aa.query(r1, r2), qb = ab.query(r1, r2);
+        BOOST_TEST((qa.verdict == qb.verdict));
+        BOOST_TEST(bool(qa.plane) == bool(qb.plane));
+        if (qa.plane && qb.plane)
+            BOOST_TEST((qa.plane->normal == qb.plane->normal && qa.plane->offset == qb.plane->offset));
+    }
+    BOOST_TEST(aa.partition_json() == ab.partition_json());
+    // The exact form, made when asked for: the same points, seeds (the means) and scene file.
+    for (int i = 0; i < 2; ++i) {
+        BOOST_TEST((a.points(i) == pts[i]));
+        BOOST_TEST((a.seed(i) == b.seed(i)));
+    }
+    BOOST_TEST(a.json() == b.json());
+    const scalecert::GoldenData ga = aa.golden(), gb = ab.golden();
+    BOOST_TEST(ga.json == gb.json);
+    BOOST_TEST(ga.csv == gb.csv);
+    for (const std::string& p : paths) std::remove(p.c_str());
+}

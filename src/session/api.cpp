@@ -108,23 +108,35 @@ Scene::Scene(std::vector<Point> p1, std::vector<Point> p2, Interval i1, Interval
 }
 
 struct Scene::Data {
-    std::shared_ptr<const internal::ExactScene> scene;
-    const internal::ExactScene& sc() const { return *scene; }
+    // The scene read exactly. A scene read straight into machine integers (from_meshes on two
+    // large OFF files of integers, as the command reads them) has none until something asks for
+    // it (its parts, points, JSON, golden data): then it is made once from `compact`.
+    mutable std::shared_ptr<const internal::ExactScene> scene;
+    mutable std::once_flag exact_once;
+    bool integers_only = false;  // read straight into `compact` (a convex scene)
+    const internal::ExactScene& sc() const {
+        if (integers_only)
+            std::call_once(exact_once, [this] {
+                scene = std::make_shared<const internal::ExactScene>(internal::full_scene(*compact));
+            });
+        return *scene;
+    }
     std::string name;  // prefixes the hull model's errors
     // The points as machine integers, when the engine walks (Session::plan decides; large scenes
     // only, when they fit): made once, shared by every Analysis of the scene.
     std::shared_ptr<const internal::CompactScene> compact;
     std::once_flag once;
     std::shared_ptr<const HullModel> model;
-    bool convex() const { return !scene->made_of_parts(); }
+    bool convex() const { return integers_only || !scene->made_of_parts(); }
     // The hull model, built once for every Analysis of the scene.
     const std::shared_ptr<const HullModel>& hull() {
-        std::call_once(once, [this] { model = std::make_shared<const HullModel>(build_model(*scene, name)); });
+        std::call_once(once, [this] { model = std::make_shared<const HullModel>(build_model(sc(), name)); });
         return model;
     }
     // A session on the scene: the engine it chooses (Session::plan) with the scene's hull model.
     std::unique_ptr<internal::Session> session(const std::shared_ptr<Data>& self) const {
-        auto s = std::make_unique<internal::Session>(scene, compact, name);
+        auto s = integers_only ? std::make_unique<internal::Session>(compact, name)
+                               : std::make_unique<internal::Session>(scene, compact, name);
         s->set_hull_source([self] { return self->hull(); });
         return s;
     }
@@ -173,8 +185,42 @@ Scene Scene::load(const std::string& path) {
     return Scene(SceneAccess::validated(load_scene(path, opt), path));
 }
 
+std::shared_ptr<Scene::Data> SceneAccess::from_integers(const std::string& p1_path, const std::string& p2_path,
+                                                        const Interval& i1, const Interval& i2) {
+    const Interval* ranges[2] = {&i1, &i2};
+    for (const Interval* r : ranges)
+        if (sgn(r->lo) <= 0 || r->lo > r->hi) return nullptr;
+    for (const std::string* p : {&p1_path, &p2_path})
+        if (internal::mesh_format_of(*p) != internal::MeshFormat::Off) return nullptr;
+    try {
+        auto cs = std::make_shared<internal::CompactScene>();
+        const std::string* paths[2] = {&p1_path, &p2_path};
+        for (int i = 0; i < 2; ++i) {
+            std::optional<internal::IntPoints> pts = internal::read_off_fast(*paths[i]);
+            if (!pts) return nullptr;
+            cs->P[i] = std::move(*pts);
+            cs->lo[i] = ranges[i]->lo;
+            cs->hi[i] = ranges[i]->hi;
+            cs->seed[i] = cs->P[i].mean();
+        }
+        if (!internal::walk_by_default(cs->P[0].size(), cs->P[1].size())) return nullptr;
+        auto d = std::make_shared<Scene::Data>();
+        d->integers_only = true;
+        d->compact = std::move(cs);
+        d->name = "scene";
+        // Session::plan walks such a scene (compact points, walk_by_default); Session::check would
+        // then prove the seeds as here, and build the hull model when they are not.
+        if (!internal::scan_seeds_proved(*d->compact)) return nullptr;
+        return d;
+    } catch (const InputError&) {
+        return nullptr;
+    }
+}
+
 Scene Scene::from_meshes(const std::string& p1_path, const std::string& p2_path, Interval i1, Interval i2,
                          bool parts_from_groups) {
+    if (!parts_from_groups)
+        if (std::shared_ptr<Data> d = SceneAccess::from_integers(p1_path, p2_path, i1, i2)) return Scene(std::move(d));
     if (!parts_from_groups) {
         std::string note[2];
         std::vector<Point> p1 = read_mesh(p1_path, {}, &note[0]), p2 = read_mesh(p2_path, {}, &note[1]);
@@ -217,6 +263,7 @@ const std::string& Scene::part_name(int i, size_t k) const {
 }
 std::vector<std::string> Scene::notes() const {
     std::vector<std::string> n;
+    if (d_->integers_only) return n;  // OFF files: no groups, nothing to say (and no exact form made)
     for (const internal::PolyInput& P : d_->sc().P)
         if (!P.note.empty()) n.push_back(P.note);
     return n;

@@ -15,6 +15,12 @@ struct SceneAccess {
     // points on large scenes (scan.hpp), else by the hull model, built now (its errors are the
     // scene's). Objects made of parts: each part's hull is built where it is first needed.
     static std::shared_ptr<Scene::Data> validated(internal::ExactScene sc, const std::string& name);
+    // Two large OFF files of integers read straight into machine integers, as the command reads
+    // them, when the walk will answer (Session::plan) and proves the seeds inside: the scene with
+    // no exact form until asked for. Null otherwise, and on any problem, which the exact reading
+    // then words.
+    static std::shared_ptr<Scene::Data> from_integers(const std::string& p1_path, const std::string& p2_path,
+                                                      const Interval& i1, const Interval& i2);
 };
 
 }  // namespace scalecert
