@@ -58,39 +58,35 @@ std::vector<Verdict> CompoundSession::classify(const std::vector<double>& rho1, 
     if (rho1.size() != rho2.size())
         throw InputError(source + ": " + std::to_string(rho1.size()) + " values of rho1 but " +
                          std::to_string(rho2.size()) + " of rho2");
-    std::vector<size_t> outside;  // pairs off the rectangle: judged one by one, as query judges them
+    std::vector<char> outside(rho1.size(), 0);  // off the rectangle: judged one by one, as query judges them
+    size_t n_outside = 0;
     for (size_t k = 0; k < rho1.size(); ++k) {
         if (!std::isfinite(rho1[k]) || !std::isfinite(rho2[k]))
             throw InputError(source + ": pair " + std::to_string(k) + " (numbered from 0) is not finite");
         if (rho1[k] <= 0 || rho2[k] <= 0)
             throw InputError(source + ": pair " + std::to_string(k) + " (numbered from 0) is not positive");
-        if (Q(rho1[k]) < sc_.lo[0] || Q(rho1[k]) > sc_.hi[0] || Q(rho2[k]) < sc_.lo[1] || Q(rho2[k]) > sc_.hi[1])
-            outside.push_back(k);
+        if (Q(rho1[k]) < sc_.lo[0] || Q(rho1[k]) > sc_.hi[0] || Q(rho2[k]) < sc_.lo[1] || Q(rho2[k]) > sc_.hi[1]) {
+            outside[k] = 1;
+            ++n_outside;
+        }
     }
-    if (outside.size() == rho1.size() && !outside.empty()) {  // no region needed
-        std::vector<Verdict> v(rho1.size());
-        for (size_t k : outside) v[k] = judge().verdict(Q(rho1[k]), Q(rho2[k])).verdict;
-        return v;
-    }
-    const CompoundRegion& r = region(false);
-    if (!locator_) locator_ = std::make_unique<CompoundLocator>(r, sc_.lo, sc_.hi, CompoundLocator::grid_for(r));
-    if (outside.empty()) return locator_->classify(rho1, rho2, threads);
-    std::vector<double> in1, in2;  // the pairs inside, located on the grid
-    for (size_t k = 0, o = 0; k < rho1.size(); ++k)
-        if (o < outside.size() && outside[o] == k)
-            ++o;
-        else {
+    // The pairs inside, located on the grid over the region (built only when some pair needs it).
+    auto locate = [&](const std::vector<double>& r1, const std::vector<double>& r2) {
+        const CompoundRegion& r = region(false);
+        if (!locator_) locator_ = std::make_unique<CompoundLocator>(r, sc_.lo, sc_.hi, CompoundLocator::grid_for(r));
+        return locator_->classify(r1, r2, threads);
+    };
+    if (n_outside == 0) return locate(rho1, rho2);
+    std::vector<double> in1, in2;
+    for (size_t k = 0; k < rho1.size(); ++k)
+        if (!outside[k]) {
             in1.push_back(rho1[k]);
             in2.push_back(rho2[k]);
         }
-    const std::vector<Verdict> inside = locator_->classify(in1, in2, threads);
+    const std::vector<Verdict> inside = in1.empty() ? std::vector<Verdict>{} : locate(in1, in2);
     std::vector<Verdict> v(rho1.size());
-    for (size_t k = 0, o = 0, i = 0; k < rho1.size(); ++k)
-        if (o < outside.size() && outside[o] == k) {
-            v[k] = judge().verdict(Q(rho1[k]), Q(rho2[k])).verdict;
-            ++o;
-        } else
-            v[k] = inside[i++];
+    for (size_t k = 0, i = 0; k < rho1.size(); ++k)
+        v[k] = outside[k] ? judge().verdict(Q(rho1[k]), Q(rho2[k])).verdict : inside[i++];
     return v;
 }
 
