@@ -32,10 +32,12 @@ std::array<size_t, 2> part_pair(Context& cx, const CompoundScene& cs, const J& j
     cx.claim(j.is_array() && j.size() == 2, where + " is [P1 part, P2 part]");
     return {index(cx, j[0], cs.parts(0), where + "[0]"), index(cx, j[1], cs.parts(1), where + "[1]")};
 }
-// Is x in object i at rho? {"part": k, "in": weights} combining to x in part k, or
-// {"out": [a normal per part]}, x strictly beyond each part's extent along its normal.
+// Is x in object i at rho (or within abs of it)? {"part": k, "in": weights} combining to x in part
+// k; at abs > 0 {"part": k, "near": weights} combining to a point of part k within abs of x; or
+// {"out": [a normal per part]}, x strictly beyond each part's extent along its normal (at abs > 0,
+// more than abs beyond).
 bool member(Context& cx, const CompoundScene& cs, int i, const Q& rho, const V3& x, const J& p,
-            const std::string& where) {
+            const std::string& where, const Q& abs) {
     cx.claim(p.is_object(), where + " is an object");
     if (p.contains("out")) {
         shape(cx, p, where, {"out"});
@@ -44,11 +46,14 @@ bool member(Context& cx, const CompoundScene& cs, int i, const Q& rho, const V3&
         for (size_t k = 0; k < o.size(); ++k) {
             const std::string wk = where + ".out[" + std::to_string(k) + "]";
             const V3 n = normal(cx, o[k], wk);
-            cx.spend_ops(3, vsize(n) + vsize(x));
-            cx.claim(dot(n, x) > block_reach(cx, cs, i, n, rho, k, k),
-                     wk + ": the point lies strictly beyond the part's extent along the normal");
+            beyond(cx, n, x, block_reach(cx, cs, i, n, rho, k, k), abs, wk);
         }
         return false;
+    }
+    if (sgn(abs) > 0 && p.contains("near")) {
+        shape(cx, p, where, {"part", "near"});
+        const size_t k = index(cx, at(p, "part"), cs.parts(i), where + ".part");
+        return near_enough(cx, x, part_point(cx, cs, i, k, rho, at(p, "near"), where + ".near"), abs, where);
     }
     shape(cx, p, where, {"part", "in"});
     const size_t k = index(cx, at(p, "part"), cs.parts(i), where + ".part");
@@ -59,12 +64,12 @@ bool member(Context& cx, const CompoundScene& cs, int i, const Q& rho, const V3&
 // The two objects of the scene, scaled.
 class Objects : public Bodies {
   public:
-    explicit Objects(const CompoundScene& cs) : cs_(cs) {}
+    Objects(const CompoundScene& cs, const Q& abs) : Bodies(abs), cs_(cs) {}
     Q reach(Context& cx, int i, const V3& n, const Q& rho) const override {
         return block_reach(cx, cs_, i, n, rho, 0, cs_.parts(i) - 1);
     }
     bool member(Context& cx, int i, const Q& rho, const V3& x, const J& p, const std::string& where) const override {
-        return scalecert_check::member(cx, cs_, i, rho, x, p, where);
+        return scalecert_check::member(cx, cs_, i, rho, x, p, where, abs);
     }
 
   private:
@@ -94,7 +99,7 @@ bool judge(Context& cx, const CompoundScene& cs, const Rules& R, const Judgement
     const Scene& sc = cs.sc;
     const J &cl = j.claim, &pr = j.proof;
     const std::string &kind = j.kind, &where = j.where, &wc = j.wc, &wp = j.wp;
-    const Objects bodies(cs);
+    const Objects bodies(cs, R.abs);
     if (kind == "verdict") {
         shape(cx, cl, wc, {"kind", "rho1", "rho2", "verdict"});
         const Q r1 = positive(cx, cl, "rho1", wc), r2 = positive(cx, cl, "rho2", wc);
@@ -146,7 +151,7 @@ bool judge(Context& cx, const CompoundScene& cs, const Rules& R, const Judgement
         }
         return verdict_right(c, v);
     }
-    if (kind == "separating_plane") return judge_separating_plane(cx, bodies, j);
+    if (kind == "separating_plane") return judge_separating_plane(cx, bodies, R, j);
     if (kind == "witness_point") return judge_witness_point(cx, bodies, j);
     if (kind == "distance") {
         shape(cx, cl, wc, {"kind", "rho1", "rho2", "value"}, {"closest"});
@@ -182,7 +187,7 @@ bool judge(Context& cx, const CompoundScene& cs, const Rules& R, const Judgement
             const Closest cp = closest_points(cx, bodies, j, r1, r2);
             const V3 ab{cp.b[0] - cp.a[0], cp.b[1] - cp.a[1], cp.b[2] - cp.a[2]};
             cx.spend_ops(6, 2 * vsize(ab));
-            right = right && cp.in && R.within_above(cx, dot(ab, ab), E);
+            right = right && cp.in && R.within_above(cx, dot(ab, ab), E, 2);
         }
         return right;
     }
@@ -193,12 +198,12 @@ bool judge(Context& cx, const CompoundScene& cs, const Rules& R, const Judgement
 }  // namespace
 
 void check_compound_judgements(Context& cx, const J& c) {
-    shape(cx, c, "", {"format", "kind", "tolerance", "judgements", "scene"});
+    shape(cx, c, "", {"format", "kind", "tolerance", "judgements", "scene"}, {"abs_tolerance"});
     const CompoundScene cs = read_compound_scene(cx, at(c, "scene"));
     const Rules R = read_rules(cx, c);
     const J& js = at(c, "judgements");
     const size_t rights = judge_all(cx, js, [&](const Judgement& j) { return judge(cx, cs, R, j); });
-    cx.summary = "; compound judgements: " + judged(rights, js.size(), R.tol) + "; " + std::to_string(cs.parts(0)) +
-                 " x " + std::to_string(cs.parts(1)) + " part pairs";
+    cx.summary = "; compound judgements: " + judged(rights, js.size(), R) + "; " + std::to_string(cs.parts(0)) + " x " +
+                 std::to_string(cs.parts(1)) + " part pairs";
 }
 }  // namespace scalecert_check

@@ -17,31 +17,37 @@
 
 namespace scalecert_check {
 namespace {
-// Is x in P_i(rho)? Proved by {"in": weights} combining to x, or {"out": normal} whose plane x
-// lies strictly beyond.
-bool member(Context& cx, const Scene& sc, int i, const Q& rho, const V3& x, const J& p, const std::string& where) {
-    cx.claim(p.is_object() && p.size() == 1 && (p.contains("in") || p.contains("out")),
-             where + " is {\"in\": weights} or {\"out\": normal}");
+// Is x in P_i(rho), or within abs of it? Proved by {"in": weights} combining to x; at abs > 0 by
+// {"near": weights} combining to a point within abs of x; or by {"out": normal} whose plane x lies
+// strictly beyond (at abs > 0: more than abs beyond).
+bool member(Context& cx, const Scene& sc, int i, const Q& rho, const V3& x, const J& p, const std::string& where,
+            const Q& abs) {
+    cx.claim(p.is_object() && p.size() == 1 &&
+                 (p.contains("in") || p.contains("out") || (sgn(abs) > 0 && p.contains("near"))),
+             where + (sgn(abs) > 0 ? " is {\"in\": weights}, {\"near\": weights} or {\"out\": normal}"
+                                   : " is {\"in\": weights} or {\"out\": normal}"));
     if (p.contains("in")) {
         cx.claim(body_point(cx, sc, i, rho, at(p, "in"), where + ".in") == x, where + ".in combines to the point");
         return true;
     }
+    if (p.contains("near")) {
+        const V3 y = body_point(cx, sc, i, rho, at(p, "near"), where + ".near");
+        return near_enough(cx, x, y, abs, where);
+    }
     const V3 n = normal(cx, at(p, "out"), where + ".out");
-    cx.spend_ops(3, vsize(n) + vsize(x));
-    cx.claim(dot(n, x) > reach(cx, sc, i, n, rho),
-             where + ".out: the point lies strictly beyond the body's extent along the normal");
+    beyond(cx, n, x, reach(cx, sc, i, n, rho), abs, where + ".out");
     return false;
 }
 
 // The two polytopes of the scene, scaled.
 class Polytopes : public Bodies {
   public:
-    explicit Polytopes(const Scene& sc) : sc_(sc) {}
+    Polytopes(const Scene& sc, const Q& abs) : Bodies(abs), sc_(sc) {}
     Q reach(Context& cx, int i, const V3& n, const Q& rho) const override {
         return scalecert_check::reach(cx, sc_, i, n, rho);
     }
     bool member(Context& cx, int i, const Q& rho, const V3& x, const J& p, const std::string& where) const override {
-        return scalecert_check::member(cx, sc_, i, rho, x, p, where);
+        return scalecert_check::member(cx, sc_, i, rho, x, p, where, abs);
     }
 
   private:
@@ -327,7 +333,7 @@ bool judge_switch_point(Context& cx, const Rules& R, const J& cl, const Window& 
 bool judge(Context& cx, const Scene& sc, const Rules& R, const Judgement& j) {
     const J &cl = j.claim, &pr = j.proof;
     const std::string &kind = j.kind, &where = j.where, &wc = j.wc, &wp = j.wp;
-    const Polytopes bodies(sc);
+    const Polytopes bodies(sc, R.abs);
     if (kind == "verdict") {
         shape(cx, cl, wc, {"kind", "rho1", "rho2", "verdict"});
         shape(cx, pr, wp, {"verdict", "certificate"});
@@ -365,7 +371,7 @@ bool judge(Context& cx, const Scene& sc, const Rules& R, const Judgement& j) {
         }
         return R.close(cx, c, g);
     }
-    if (kind == "separating_plane") return judge_separating_plane(cx, bodies, j);
+    if (kind == "separating_plane") return judge_separating_plane(cx, bodies, R, j);
     if (kind == "witness_point") return judge_witness_point(cx, bodies, j);
     if (kind == "distance") {
         shape(cx, cl, wc, {"kind", "rho1", "rho2", "value"}, {"closest"});
@@ -391,7 +397,7 @@ bool judge(Context& cx, const Scene& sc, const Rules& R, const Judgement& j) {
             const Closest cp = closest_points(cx, bodies, j, r1, r2);
             cx.spend_ops(6, 2 * (vsize(cp.a) + vsize(cp.b)));
             const V3 ab = sub(cp.b, cp.a);
-            right = right && cp.in && R.within_above(cx, dot(ab, ab), E);
+            right = right && cp.in && R.within_above(cx, dot(ab, ab), E, 2);
         }
         return right;
     }
@@ -456,13 +462,13 @@ bool judge(Context& cx, const Scene& sc, const Rules& R, const Judgement& j) {
 }  // namespace
 
 void check_judgements(Context& cx, const J& c) {
-    shape(cx, c, "", {"format", "kind", "tolerance", "judgements", "seed_interior", "scene"});
+    shape(cx, c, "", {"format", "kind", "tolerance", "judgements", "seed_interior", "scene"}, {"abs_tolerance"});
     const Scene sc = read_scene(cx, at(c, "scene"));
     check_seed_interior(cx, sc, at(c, "seed_interior"));
     const Rules R = read_rules(cx, c);
     const J& js = at(c, "judgements");
     const size_t rights = judge_all(cx, js, [&](const Judgement& j) { return judge(cx, sc, R, j); });
     // What the file proves, in the line the checker prints: the judgements and their tolerance.
-    cx.summary = "; judgements: " + judged(rights, js.size(), R.tol);
+    cx.summary = "; judgements: " + judged(rights, js.size(), R);
 }
 }  // namespace scalecert_check

@@ -5,28 +5,49 @@
 
 #include <algorithm>
 #include <map>
+#include <optional>
 #include <set>
 #include <cstdio>
 
 namespace scalecert_check {
 bool Rules::close(Context& cx, const Q& c, const Q& e) const {
     cx.spend_ops(3, qsize(c) + qsize(e) + qsize(tol));
-    return abs(c - e) <= tol * abs(e);
+    const Q d = c - e;
+    return (sgn(d) < 0 ? Q(-d) : d) <= tol * (sgn(e) < 0 ? Q(-e) : e);
+}
+int sign_minus_sqrt(const Q& a, const Q& k, const Q& E) {
+    const int sk = sgn(E) == 0 ? 0 : sgn(k);  // the sign of k·√E
+    if (sk == 0) return sgn(a);
+    if (sgn(a) != sk) return sgn(a) > sk ? 1 : -1;
+    const int m = cmp(a * a, k * k * E);  // |a| against |k|·√E
+    return sk > 0 ? m : -m;
 }
 bool Rules::close_sq(Context& cx, const Q& c, const Q& E) const {
-    cx.spend_ops(8, 2 * qsize(c) + qsize(E) + 2 * qsize(tol));
+    cx.spend_ops(8, 2 * qsize(c) + qsize(E) + 2 * qsize(tol) + 2 * qsize(abs));
+    if (sgn(abs) > 0) return sign_minus_sqrt(c - abs, 1 + tol, E) <= 0 && sign_minus_sqrt(c + abs, 1 - tol, E) >= 0;
     if (sgn(c) < 0) return false;
     const Q lo = 1 - tol, hi = 1 + tol;
     return (sgn(lo) <= 0 || lo * lo * E <= c * c) && c * c <= hi * hi * E;
 }
-bool Rules::within_above(Context& cx, const Q& x, const Q& E) const {
-    cx.spend_ops(5, qsize(x) + qsize(E) + 2 * qsize(tol));
-    return E <= x && x <= (1 + tol) * (1 + tol) * E;
+bool Rules::within_above(Context& cx, const Q& x, const Q& E, int apart) const {
+    cx.spend_ops(12, qsize(x) + qsize(E) + 2 * qsize(tol) + 2 * qsize(abs));
+    const Q k = 1 + tol;
+    if (sgn(abs) == 0) return E <= x && x <= k * k * E;
+    const Q m = apart * abs;  // √x <= k√E + m: x <= k²E + m² + 2km√E
+    return sign_minus_sqrt(x - k * k * E - m * m, 2 * k * m, E) <= 0;
+}
+bool Rules::within_abs(Context& cx, const Q& x, const Q& N) const {
+    cx.spend_ops(6, qsize(x) + qsize(N) + 2 * qsize(abs));
+    return sign_minus_sqrt(x, abs, N) <= 0;
 }
 
 Rules read_rules(Context& cx, const J& c) {
-    Rules R{num(cx, at(c, "tolerance"), "tolerance")};
+    Rules R{num(cx, at(c, "tolerance"), "tolerance"), 0};
     cx.claim(sgn(R.tol) >= 0, "tolerance is >= 0");
+    if (c.contains("abs_tolerance")) {
+        R.abs = num(cx, at(c, "abs_tolerance"), "abs_tolerance");
+        cx.claim(sgn(R.abs) >= 0, "abs_tolerance is >= 0");
+    }
     return R;
 }
 
@@ -40,9 +61,9 @@ std::string tolerance_shown(const Q& tol) {
 }
 }  // namespace
 
-std::string judged(size_t rights, size_t total, const Q& tol) {
+std::string judged(size_t rights, size_t total, const Rules& R) {
     return std::to_string(rights) + " right, " + std::to_string(total - rights) + " wrong, tolerance " +
-           tolerance_shown(tol);
+           tolerance_shown(R.tol) + (sgn(R.abs) > 0 ? ", abs_tolerance " + tolerance_shown(R.abs) : "");
 }
 
 double vsize(const V3& v) { return std::max({qsize(v[0]), qsize(v[1]), qsize(v[2])}); }
@@ -90,12 +111,32 @@ V3 body_point(Context& cx, const Scene& sc, int i, const Q& rho, const J& w, con
     return x;
 }
 
+bool near_enough(Context& cx, const V3& x, const V3& y, const Q& abs, const std::string& where) {
+    cx.spend_ops(8, vsize(x) + vsize(y) + 2 * qsize(abs));
+    const V3 d = {x[0] - y[0], x[1] - y[1], x[2] - y[2]};
+    cx.claim(dot(d, d) <= abs * abs, where + ".near combines to a point within abs_tolerance of the point");
+    return true;
+}
+
+void beyond(Context& cx, const V3& n, const V3& x, const Q& h, const Q& abs, const std::string& where) {
+    if (sgn(abs) == 0) {
+        cx.spend_ops(3, vsize(n) + vsize(x));
+        const Q gap = dot(n, x) - h;
+        cx.claim(sgn(gap) > 0, where + ": the point lies strictly beyond the body's extent along the normal");
+        return;
+    }
+    cx.spend_ops(8, vsize(n) + vsize(x) + qsize(h) + 2 * qsize(abs));
+    const Q gap = dot(n, x) - h;
+    cx.claim(sgn(gap) > 0 && gap * gap > abs * abs * dot(n, n),
+             where + ": the point lies more than abs_tolerance beyond the body's extent along the normal");
+}
+
 void check_claimed_verdict(Context& cx, const std::string& c, const std::string& wc) {
     cx.claim(c == "separated" || c == "touching" || c == "overlapping" || c == "intersecting",
              wc + ".verdict is separated, touching, overlapping or intersecting");
 }
 
-bool judge_separating_plane(Context& cx, const Bodies& B, const Judgement& j) {
+bool judge_separating_plane(Context& cx, const Bodies& B, const Rules& R, const Judgement& j) {
     const J &cl = j.claim, &pr = j.proof;
     const std::string &wc = j.wc, &wp = j.wp;
     shape(cx, cl, wc, {"kind", "rho1", "rho2", "normal"}, {"offset"});
@@ -103,12 +144,14 @@ bool judge_separating_plane(Context& cx, const Bodies& B, const Judgement& j) {
     const Q r1 = positive(cx, cl, "rho1", wc), r2 = positive(cx, cl, "rho2", wc);
     const V3 n = nonzero_vector(cx, at(cl, "normal"), wc + ".normal");
     const Q c1 = B.reach(cx, 0, n, r1), c2 = B.reach_min(cx, 1, n, r2);
-    bool right = c1 < c2;
-    if (cl.contains("offset")) {
-        const Q d = num(cx, at(cl, "offset"), wc + ".offset");
-        right = right && c1 < d && d < c2;
-    }
-    return right;
+    const std::optional<Q> d =
+        cl.contains("offset") ? std::optional<Q>(num(cx, at(cl, "offset"), wc + ".offset")) : std::nullopt;
+    if (sgn(R.abs) == 0) return c1 < c2 && (!d || (c1 < *d && *d < c2));
+    // Each body within abs of its side: c1 − d <= abs·|n| and d − c2 <= abs·|n| (with no offset,
+    // for some d: c1 − c2 <= 2·abs·|n|).
+    const Q N = dot(n, n);
+    if (!d) return R.within_abs(cx, c1 - c2, 4 * N);
+    return R.within_abs(cx, c1 - *d, N) && R.within_abs(cx, *d - c2, N);
 }
 
 bool judge_witness_point(Context& cx, const Bodies& B, const Judgement& j) {

@@ -15,19 +15,28 @@
 namespace scalecert_check {
 struct Scene;
 
-// CLAIMS.md's closeness rules at the file's tolerance, each counted before it runs.
+// CLAIMS.md's closeness rules ("Tolerances") at the file's tolerances, each counted before it runs:
+// tol relative, abs a length (0 when the file has no abs_tolerance: exact points and planes).
 struct Rules {
-    Q tol;
+    Q tol, abs;
+    // |c − e| <= tol·|e| (scalings; abs does not apply)
     bool close(Context& cx, const Q& c, const Q& e) const;
+    // a length c against an exact square E: |c − √E| <= abs + tol·√E (abs = 0: c >= 0, squares)
     bool close_sq(Context& cx, const Q& c, const Q& E) const;
-    bool within_above(Context& cx, const Q& x, const Q& E) const;
+    // a squared length x against E: √x <= (1 + tol)√E + apart·abs (abs = 0: E <= x <= (1 + tol)² E)
+    bool within_above(Context& cx, const Q& x, const Q& E, int apart = 1) const;
+    // x <= abs·√N
+    bool within_abs(Context& cx, const Q& x, const Q& N) const;
 };
-// The file's `tolerance`: an exact number >= 0.
+// The sign of a − k·√E (E >= 0), exactly.
+int sign_minus_sqrt(const Q& a, const Q& k, const Q& E);
+// The file's `tolerance` (an exact number >= 0) and its optional `abs_tolerance` (>= 0).
 Rules read_rules(Context& cx, const J& c);
 // "N right, M wrong, tolerance T" for the line printed for a valid file. A long tolerance is
 // shown by its size, never by a prefix (a prefix hides a factor of 10^61): a forged tolerance
 // makes wrong values right, and stays valid (it is the file's claim), so the line shows it.
-std::string judged(size_t rights, size_t total, const Q& tol);
+// With an absolute tolerance, ", abs_tolerance A" follows, shown the same way.
+std::string judged(size_t rights, size_t total, const Rules& R);
 
 // The largest limbs of a vector's coordinates, for counting.
 double vsize(const V3& v);
@@ -45,11 +54,21 @@ Q reach(Context& cx, const Scene& sc, int i, const V3& n, const Q& rho, const st
 V3 body_point(Context& cx, const Scene& sc, int i, const Q& rho, const J& w, const std::string& where,
               std::vector<int>* used = nullptr, size_t base = 0, size_t count = SIZE_MAX);
 
+// A {"near"} membership: y (a point of the body) within abs of x; Invalid if not.
+bool near_enough(Context& cx, const V3& x, const V3& y, const Q& abs, const std::string& where);
+// An {"out"} normal n: x lies beyond the body's extent h = max n·v along n, strictly (abs = 0) or
+// by more than abs (n·x − h > abs·|n|); Invalid if not.
+void beyond(Context& cx, const V3& n, const V3& x, const Q& h, const Q& abs, const std::string& where);
+
 // The two bodies a judgement speaks of, scaled: P1(ρ1) and P2(ρ2), two convex polytopes or two
 // objects made of parts.
 class Bodies {
   public:
+    explicit Bodies(const Q& abs) : abs(abs) {}
     virtual ~Bodies() = default;
+    // The absolute tolerance: a point within it of a body counts as in it ({"near": weights}), and
+    // an {"out"} normal must show it farther than that.
+    const Q abs;
     // max over body i scaled by rho of n·x (n a nonzero rational vector).
     virtual Q reach(Context& cx, int i, const V3& n, const Q& rho) const = 0;
     // min over body i scaled by rho of n·x.
@@ -110,8 +129,9 @@ inline bool verdict_right(const std::string& c, const std::string& v) {
 }
 
 // The claim kinds judged alike for both formats. separating_plane: the claim's plane separates
-// the bodies strictly (and its offset lies strictly between), computed from every vertex.
-bool judge_separating_plane(Context& cx, const Bodies& B, const Judgement& j);
+// the bodies strictly (and its offset lies strictly between), computed from every vertex; at an
+// absolute tolerance, each body lies within it of its side.
+bool judge_separating_plane(Context& cx, const Bodies& B, const Rules& R, const Judgement& j);
 // witness_point: the claim's point lies in both bodies, by the proof's two memberships.
 bool judge_witness_point(Context& cx, const Bodies& B, const Judgement& j);
 // A distance claim's closest points ("closest": [a, b]) and whether both lie in their bodies (the

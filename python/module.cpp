@@ -393,7 +393,7 @@ py::dict certify_arrays(const CertifyFn& certify, const std::string& kind, const
                         const py::handle& rho2, const py::handle& value, const py::handle& closest,
                         const py::handle& direction, const py::handle& normal, const py::handle& offset,
                         const py::handle& point_, const py::handle& verdict, const py::handle& tolerance,
-                        bool certificate, bool fractions) {
+                        const py::handle& abs_tolerance, bool certificate, bool fractions) {
     using scalecert::ClaimKind;
     static const std::map<std::string, ClaimKind> kinds = {{"distance", ClaimKind::Distance},
                                                            {"penetration_depth", ClaimKind::PenetrationDepth},
@@ -489,6 +489,7 @@ py::dict certify_arrays(const CertifyFn& certify, const std::string& kind, const
     }
     scalecert::ClaimOptions opt;
     opt.tolerance = rational(tolerance, "tolerance");
+    opt.abs_tolerance = rational(abs_tolerance, "abs_tolerance");
     opt.certificate = certificate;
     scalecert::Judgements j;
     {
@@ -749,17 +750,19 @@ PYBIND11_MODULE(scalecert, m) {
         .def(
             "certify_fp",
             [](const PyScene& s, const py::handle& claims, const py::handle& exact_decimals,
-               const py::handle& tolerance, const py::handle& certificate) -> py::object {
+               const py::handle& tolerance, const py::handle& certificate,
+               const py::handle& abs_tolerance) -> py::object {
                 scalecert::ClaimOptions opt;
                 opt.exact_decimals = flag_arg(exact_decimals, "exact_decimals");
                 opt.tolerance = rational(tolerance, "tolerance");
+                opt.abs_tolerance = rational(abs_tolerance, "abs_tolerance");
                 opt.certificate = flag_arg(certificate, "certificate");
                 scalecert::ClaimReport r = s.a().certify_fp(claims_text(claims), opt);
                 if (!opt.certificate) return json_loads(r.report);
                 return py::make_tuple(json_loads(r.report), r.certificate);
             },
             py::arg("claims"), py::arg("exact_decimals") = false, py::arg("tolerance") = 0,
-            py::arg("certificate") = false,
+            py::arg("certificate") = false, py::arg("abs_tolerance") = 0,
             "marks claims right or wrong: the text of a claims file (JSON scalecert-claims-1, or 'RHO1 RHO2 VERDICT' / "
             "'curve RHO1 RHO2' / 'growth RHO' lines), a scalecert-claims-1 dict, or a list of claim dicts. A float "
             "means "
@@ -771,17 +774,19 @@ PYBIND11_MODULE(scalecert, m) {
             [](const PyScene& s, const py::handle& kind, const py::handle& rho1, const py::handle& rho2,
                const py::handle& value, const py::handle& closest, const py::handle& direction,
                const py::handle& normal, const py::handle& offset, const py::handle& point_, const py::handle& verdict,
-               const py::handle& tolerance, const py::handle& certificate, const py::handle& fractions) {
+               const py::handle& tolerance, const py::handle& certificate, const py::handle& fractions,
+               const py::handle& abs_tolerance) {
                 const scalecert::Analysis& a = s.a();
                 return certify_arrays([&a](const auto& c, const auto& o) { return a.certify(c, o); },
                                       text_arg(kind, "kind"), rho1, rho2, value, closest, direction, normal, offset,
-                                      point_, verdict, tolerance, flag_arg(certificate, "certificate"),
+                                      point_, verdict, tolerance, abs_tolerance, flag_arg(certificate, "certificate"),
                                       flag_arg(fractions, "fractions"));
             },
             py::arg("kind"), py::arg("rho1"), py::arg("rho2"), py::arg("value") = py::none(),
             py::arg("closest") = py::none(), py::arg("direction") = py::none(), py::arg("normal") = py::none(),
             py::arg("offset") = py::none(), py::arg("point") = py::none(), py::arg("verdict") = py::none(),
             py::arg("tolerance") = 0, py::arg("certificate") = false, py::arg("fractions") = false,
+            py::arg("abs_tolerance") = 0,
             "claims of one kind over arrays: kind 'distance' (value, optional closest of shape (n, 2, 3)), "
             "'penetration_depth' (value, optional direction (n, 3)), 'verdict' (verdict: a str or n strs), "
             "'separating_plane' (normal (n, 3), optional offset) or 'witness_point' (point (n, 3)); rho1, rho2 and "

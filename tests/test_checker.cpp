@@ -98,8 +98,11 @@ bool engine_judges_the_same(const std::string& text) {
     OJ doc{{"format", "scalecert-claims-1"}, {"claims", OJ::array()}};
     for (const OJ& e : j["judgements"]) doc["claims"].push_back(e["claim"]);
     { std::ofstream(claims) << doc.dump(1); }
-    const int st = status_of(std::string(SCALECERT_BIN) + " certify-fp " + scene.string() + " " + claims.string() +
-                             " --json --tolerance " + j["tolerance"].get<std::string>() + " --out " + rep.string());
+    const int st = status_of(
+        std::string(SCALECERT_BIN) + " certify-fp " + scene.string() + " " + claims.string() + " --json --tolerance " +
+        j["tolerance"].get<std::string>() +
+        (j.contains("abs_tolerance") ? " --abs-tolerance " + j["abs_tolerance"].get<std::string>() : std::string()) +
+        " --out " + rep.string());
     if (st != 0 && st != 1) return false;
     const OJ r = load(rep);
     for (size_t k = 0; k < j["judgements"].size(); ++k)
@@ -186,7 +189,8 @@ void try_text(const std::string& text, const std::string& path, const std::strin
     const std::string key = what + " at " + path;
     if (g_judgements) {  // whatever changed: true iff the engine judges the file's claims the same way
         if (engine_judges_the_same(text)) {
-            static const std::regex claim_or_tolerance(".* at (/judgements/[0-9]+/claim(/.*)?|/tolerance)$");
+            static const std::regex claim_or_tolerance(
+                ".* at (/judgements/[0-9]+/claim(/.*)?|/tolerance|/abs_tolerance)$");
             ++t.still_true
                   [std::regex_match(key, claim_or_tolerance)
                        ? "a changed claim or tolerance that the engine, re-run, judges the same way"
@@ -1709,11 +1713,12 @@ BOOST_AUTO_TEST_CASE(a_compound_fence_of_many_normals_over_huge_corners_meets_th
 
 namespace {
 // certify-fp's certificate for claims on a scene of parts, checked valid.
-OJ compound_judgements(const fs::path& scene, const std::string& claims, const std::string& name) {
+OJ compound_judgements(const fs::path& scene, const std::string& claims, const std::string& name,
+                       const std::string& options = "") {
     const fs::path cl = tmpdir() / (name + ".claims.json"), out = tmpdir() / (name + ".judgements.json");
     std::ofstream(cl) << claims;
     const int st = engine("certify-fp " + scene.string() + " " + cl.string() + " --certificate " + out.string() +
-                          " --out " + (tmpdir() / (name + ".report")).string());
+                          " --out " + (tmpdir() / (name + ".report")).string() + options);
     BOOST_REQUIRE(st == 0 || st == 1);
     BOOST_REQUIRE(check_file(out) == 0);
     return load(out);
@@ -2270,4 +2275,56 @@ BOOST_AUTO_TEST_CASE(a_scene_at_the_limits_of_int64_is_checked_exactly) {
         BOOST_TEST(same_both_ways(f, "P1 vertex + 1", compared) == 1);
     }
     BOOST_TEST(compared == 10);
+}
+
+BOOST_AUTO_TEST_CASE(absolute_tolerance_judgements_are_valid_and_tampering_is_rejected) {
+    // Points 1e-9 off their bodies, values 1e-9 off, planes the bodies reach (test_claims.cpp,
+    // absolute_tolerance_on_points_values_and_planes, derives each by hand): right within 1e-9 by
+    // {"near"} memberships, wrong ones by {"out"} normals showing more than 1e-9, on the stacked
+    // cubes and on the band of parts. Every mutation is rejected or judged the same by the engine.
+    const std::string cubes_claims = R"({"format": "scalecert-claims-1", "claims": [
+     {"kind": "distance", "rho1": 1, "rho2": 0.5, "value": 1.5,
+      "closest": [[1, 1, "2000000001/1000000000"], [1, 1, "3499999999/1000000000"]]},
+     {"kind": "distance", "rho1": 1, "rho2": 0.5, "value": 1.5,
+      "closest": [[1, 1, "1999999999/1000000000"], [1, 1, "3500000002/1000000000"]]},
+     {"kind": "witness_point", "rho1": 1.5, "rho2": 1.5, "point": [1, 1, "2500000001/1000000000"]},
+     {"kind": "witness_point", "rho1": 1.5, "rho2": 1.5, "point": [1, 1, "2500000002/1000000000"]},
+     {"kind": "separating_plane", "rho1": 1.5, "rho2": 1.5, "normal": [0, 0, 2], "offset": "5000000001/1000000000"},
+     {"kind": "penetration_depth", "rho1": 2, "rho2": 2, "value": "999999999/1000000000", "direction": [0, 0, 1]}]})";
+    const OJ cubes = compound_judgements(fs::path(SCALECERT_SOURCE_DIR) / "certificates/scenes/stacked_cubes.json",
+                                         cubes_claims, "abs_cubes", " --abs-tolerance 1e-9");
+    BOOST_TEST(cubes["abs_tolerance"] == "1/1000000000");
+    const std::vector<bool> right = {true, false, true, false, true, true};
+    BOOST_TEST_REQUIRE(cubes["judgements"].size() == right.size());
+    for (size_t k = 0; k < right.size(); ++k) BOOST_TEST(cubes["judgements"][k]["right"] == right[k], k);
+    BOOST_TEST(cubes["judgements"][2]["proof"]["P1"].contains("near"));
+    BOOST_TEST(cubes["judgements"][3]["proof"]["P1"].contains("out"));
+    mutate_and_report(cubes, "judgements at an absolute tolerance (stacked cubes)", false, true);
+    // A "near" point farther than the tolerance: the checker says so. (The engine's own file is
+    // made to lie: claim 3's point, 2e-9 out, given the weights of claim 2's near point.)
+    OJ forged = cubes;
+    forged["judgements"][3]["right"] = true;
+    forged["judgements"][3]["proof"]["P1"] = cubes["judgements"][2]["proof"]["P1"];
+    std::string msg;
+    BOOST_TEST(scalecert_check::check_text(forged.dump(1), msg) == 1);
+    BOOST_TEST(msg.find("within abs_tolerance") != std::string::npos, msg);
+    // Without the tolerance, a "near" proof is no membership proof at all.
+    OJ exact = cubes;
+    exact.erase("abs_tolerance");
+    BOOST_TEST(scalecert_check::check_text(exact.dump(1), msg) == 1);
+
+    // The band of parts: P1's right box [2, 3] x [-1, 1]^2 scaled about the origin, P2 [4, 5] x
+    // [-1, 1]^2 about (9/2, 0, 0); at (4/3, 1) they touch at x = 4.
+    const std::string band_claims = R"({"format": "scalecert-claims-1", "claims": [
+     {"kind": "distance", "rho1": 1, "rho2": 1, "value": 1, "closest": [["3000000001/1000000000", 0, 0], [4, 0, 0]]},
+     {"kind": "witness_point", "rho1": "4/3", "rho2": 1, "point": ["4000000001/1000000000", 0, 0]},
+     {"kind": "witness_point", "rho1": "4/3", "rho2": 1, "point": ["4000000002/1000000000", 0, 0]},
+     {"kind": "separating_plane", "rho1": "4/3", "rho2": 1, "normal": [1, 0, 0], "offset": 4},
+     {"kind": "distance", "rho1": 1, "rho2": 1, "value": "999999999/1000000000"}]})";
+    const OJ band = compound_judgements(data("compound_band.json"), band_claims, "abs_band", " --abs-tolerance 1e-9");
+    const std::vector<bool> band_right = {true, true, false, true, true};
+    BOOST_TEST_REQUIRE(band["judgements"].size() == band_right.size());
+    for (size_t k = 0; k < band_right.size(); ++k) BOOST_TEST(band["judgements"][k]["right"] == band_right[k], k);
+    BOOST_TEST(band["judgements"][1]["proof"]["P1"]["near"].is_array());
+    mutate_and_report(band, "compound judgements at an absolute tolerance (band)", false, true);
 }

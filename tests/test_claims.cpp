@@ -396,3 +396,64 @@ BOOST_AUTO_TEST_CASE(outputs_that_are_no_answer) {
         BOOST_TEST(count == 0);
     }
 }
+
+BOOST_AUTO_TEST_CASE(absolute_tolerance_on_points_values_and_planes) {
+    // CLAIMS.md, "Tolerances", by hand on the stacked cubes: P1(1) = [0, 2]^3 and
+    // P2(1/2) = [0, 2]^2 x [7/2, 9/2] are 3/2 apart; P1(3/2) = [-1/2, 5/2]^3 and
+    // P2(3/2) = [-1/2, 5/2]^2 x [5/2, 11/2] touch on z = 5/2; at (2, 2) the depth is 1 along z.
+    // The double 2.000000000001 is 2 + 4503599627/2^52 (about 1.00009e-12 above 2), so the first
+    // closest point lies that far outside P1(1): wrong exactly, right within 1e-9; the pair is then
+    // 3/2 − 1.00009e-12 apart, within 2·(1e-9) of 3/2.
+    Claims k("stacked_cubes");
+    const std::string batch = R"({"format": "scalecert-claims-1", "claims": [
+        {"kind": "distance", "rho1": 1, "rho2": 0.5, "value": 1.5, "closest": [[1, 1, 2.000000000001], [1, 1, 3.5]]},
+        {"kind": "distance", "rho1": 1, "rho2": 0.5, "value": "1500000001/1000000000"},
+        {"kind": "distance", "rho1": 1, "rho2": 0.5, "value": "1500000002/1000000000"},
+        {"kind": "witness_point", "rho1": 1.5, "rho2": 1.5, "point": [1, 1, "2500000001/1000000000"]},
+        {"kind": "witness_point", "rho1": 1.5, "rho2": 1.5, "point": [1, 1, "2500000002/1000000000"]},
+        {"kind": "separating_plane", "rho1": 1.5, "rho2": 1.5, "normal": [0, 0, 1], "offset": 2.5},
+        {"kind": "separating_plane", "rho1": 1.5, "rho2": 1.5, "normal": [0, 0, 2], "offset": "5000000001/1000000000"},
+        {"kind": "separating_plane", "rho1": 1.5, "rho2": 1.5, "normal": [0, 0, 1], "offset": "2500000002/1000000000"},
+        {"kind": "penetration_depth", "rho1": 2, "rho2": 2, "value": "999999999/1000000000", "direction": [0, 0, 1]},
+        {"kind": "distance", "rho1": 1, "rho2": 0.5, "value": 1.5,
+      "closest": [[1, 1, "2000000001/1000000000"], [1, 1, "3499999999/1000000000"]]},
+        {"kind": "distance", "rho1": 1, "rho2": 0.5, "value": 1.5,
+      "closest": [[1, 1, "1999999999/1000000000"], [1, 1, "3500000002/1000000000"]]}]})";
+    // Exact (tolerance 0) every one is wrong: each point or value is off, and at the touching pair
+    // no plane separates strictly. Within 1e-9 (nothing relative):
+    //  0 right (point 1.00009e-12 out, pair within 2e-9);
+    //  1 right (|1.500000001 − 3/2| = 1e-9); 2 wrong (2e-9);
+    //  3 right (1e-9 above P1(3/2)'s top 5/2, and in P2(3/2)); 4 wrong (2e-9 above);
+    //  5 right (each body reaches the plane z = 5/2, 0 past it); 6 right (normal (0, 0, 2): the
+    //    plane z = 2.5000000005, P1 5e-10 short of it, P2 5e-10 past it); 7 wrong (P2 starts at
+    //    5/2, 2e-9 below the plane z = 2.500000002: past it by more than 1e-9);
+    //  8 right (depth 1 − 1e-9); 9 right (both points 1e-9 out of their bodies, 1.5 − 2e-9 apart);
+    // 10 wrong (the points lie in the bodies, 1.5 + 3e-9 apart: more than 3/2 + 2e-9).
+    const std::vector<bool> within = {true, true, false, true, false, true, true, false, true, true, false};
+    long wrong = -1;
+    ClaimOptions exact{false, Q(0), true};
+    const nlohmann::json e = nlohmann::json::parse(certify_fp(k.m, k.c, batch, "c.json", exact, &wrong));
+    for (size_t i = 0; i < within.size(); ++i) BOOST_TEST(!e["claims"][i]["right"].get<bool>(), i);
+    ClaimOptions tol = exact;
+    tol.abs_tolerance = Q(1, 1000000000);
+    const nlohmann::json r = nlohmann::json::parse(certify_fp(k.m, k.c, batch, "c.json", tol, &wrong));
+    for (size_t i = 0; i < within.size(); ++i) BOOST_TEST(r["claims"][i]["right"].get<bool>() == within[i], i);
+    BOOST_TEST(r["abs_tolerance"] == "1/1000000000");
+    BOOST_TEST(!e.contains("abs_tolerance"));
+    // With a relative tolerance beside it, a value within LEN + REL·|exact|: 1.500000002 is within
+    // 1e-9 + (1e-9)·(3/2) of 3/2, and 1.500000003 is not.
+    tol.tolerance = Q(1, 1000000000);
+    const nlohmann::json b = nlohmann::json::parse(certify_fp(k.m, k.c,
+                                                              R"({"format": "scalecert-claims-1", "claims": [
+        {"kind": "distance", "rho1": 1, "rho2": 0.5, "value": "1500000002/1000000000"},
+        {"kind": "distance", "rho1": 1, "rho2": 0.5, "value": "1500000003/1000000000"}]})",
+                                                              "c.json", tol, &wrong));
+    BOOST_TEST(b["claims"][0]["right"].get<bool>());
+    BOOST_TEST(!b["claims"][1]["right"].get<bool>());
+    // A negative tolerance, or one on lines, is bad input.
+    tol.abs_tolerance = -1;
+    BOOST_CHECK_THROW(certify_fp(k.m, k.c, batch, "c.json", tol, &wrong), InputError);
+    ClaimOptions lines{false, Q(0), false};
+    lines.abs_tolerance = 1;
+    BOOST_CHECK_THROW(certify_fp(ClaimModels::of(k.m, k.c), "1 1 separated\n", "c.txt", lines, &wrong), InputError);
+}

@@ -143,6 +143,9 @@ struct ClaimOptions {
     Rational tolerance = 0;    // relative error accepted on numeric JSON claims (>= 0)
     bool json = true;          // the report as JSON (scalecert certify-fp --json), else as text
     bool certificate = false;  // also the judgements certificate (certify-fp --certificate)
+    // A length (>= 0) within which a point may lie off its body, a length value off the exact one
+    // (on top of the relative tolerance), and a body past a claimed plane (CLAIMS.md, "Tolerances").
+    Rational abs_tolerance = 0;
 };
 // The report; the number of claims and of wrong ones; with options.certificate, the judgements
 // certificate (FORMAT.md, kind "judgements"; scalecert-check verifies it): the proof of every

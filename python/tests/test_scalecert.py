@@ -668,3 +668,25 @@ def test_outputs_that_are_no_answer_are_wrong_claims(tmp_path):
     assert [c["right"] for c in r["claims"]] == [False, True] and r["claims"][0]["no_answer"] == "value"
     # An empty batch is judged: 0 claims.
     assert s.certify_fp([])["wrong"] == 0 and len(s.certify("verdict", [], [], verdict="separated")["right"]) == 0
+
+
+def test_absolute_tolerance_on_points_and_values():
+    # CLAIMS.md, "Tolerances": on the stacked cubes P1(1) = [0, 2]^3 and P2(1/2) = [0, 2]^2 x
+    # [7/2, 9/2] are 3/2 apart. Closest points 0.9e-9 outside their faces (as doubles, within
+    # 1e-9 of them), 1.5 - 1.8e-9 apart: wrong exactly, right within 1e-9; 2e-9 outside: wrong
+    # within 1e-9 too. The same through the typed arrays on the band of parts: at (4/3, 1) P1's
+    # right box is [8/3, 4] x [-4/3, 4/3]^2 and P2 is [4, 5] x [-1, 1]^2, touching at x = 4.
+    from fractions import Fraction as F
+    closest = np.array([[[1, 1, 2 + 0.9e-9], [1, 1, 3.5 - 0.9e-9]], [[1, 1, 2 + 2e-9], [1, 1, 3.5]]])
+    for abs_tol, want in [(0, [False, False]), (F(1, 10**9), [True, False])]:
+        r = stacked().certify("distance", [1, 1], [0.5, 0.5], value=[1.5, 1.5], closest=closest,
+                              abs_tolerance=abs_tol)
+        assert list(r["right"]) == want
+    band = scalecert.Scene.load(str(SRC / "tests" / "data" / "compound_band.json"))
+    r = band.certify("witness_point", [F(4, 3), F(4, 3)], [1, 1],
+                     point=np.array([[4 + 0.9e-9, 0, 0], [4 + 3e-9, 0, 0]]), abs_tolerance="1e-9")
+    assert list(r["right"]) == [True, False]
+    r = band.certify("distance", [1, 1], [1, 1], value=[1 - 0.9e-9, 1 - 3e-9], abs_tolerance="1e-9")
+    assert list(r["right"]) == [True, False]
+    with pytest.raises(scalecert.InputError, match="abs_tolerance: must be >= 0"):
+        stacked().certify_fp('{"format": "scalecert-claims-1", "claims": []}', abs_tolerance=-1)

@@ -109,21 +109,28 @@ struct Proof {
     Json claim, proof;
 };
 
-// Tolerance rules (CLAIMS.md, "Tolerances"), exact.
+// Tolerance rules (CLAIMS.md, "Tolerances"), exact: `rel` a relative error on values, `abs` a
+// length (points, values that are lengths, planes). abs = 0 gives the exact rules of old.
 struct Tolerance {
-    Q rel = 0;
-    // |c − e| ≤ rel·|e|
+    Q rel = 0, abs = 0;
+    // |c − e| ≤ rel·|e| (scalings: ρ values, growth distances, curves; abs does not apply)
     bool close(const Q& c, const Q& e) const;
-    // A claimed c ≥ 0 against an exact square E: (1 − rel)² E ≤ c² ≤ (1 + rel)² E.
+    // A claimed length c against an exact square E: |c − √E| ≤ abs + rel·√E (abs = 0: c ≥ 0 and
+    // (1 − rel)² E ≤ c² ≤ (1 + rel)² E).
     bool close_sq(const Q& c, const Q& E) const;
-    // A squared length x that cannot be below the exact minimum E: E ≤ x ≤ (1 + rel)² E.
-    bool within_above(const Q& x, const Q& E) const;
+    // A squared length x of a pair `apart` points at least √E apart when in their bodies:
+    // √x ≤ (1 + rel)·√E + apart·abs (abs = 0: E ≤ x ≤ (1 + rel)² E).
+    bool within_above(const Q& x, const Q& E, int apart = 1) const;
+    // x ≤ abs·√N (a plane's side: x the excess of a body past it along a normal of squared length N).
+    bool within_abs(const Q& x, const Q& N) const;
 };
+// The sign of a − k·√E (E ≥ 0), exactly.
+int sign_minus_sqrt(const Q& a, const Q& k, const Q& E);
 
 // The rules on two convex objects: every type.
 class ConvexRules {
   public:
-    ConvexRules(const ClaimModels& models, const Q& tolerance);
+    ConvexRules(const ClaimModels& models, const Tolerance& tolerance);
     ~ConvexRules();
     Judged judge(const TypedClaim& c, Proof* proof = nullptr);
     // How often the exact fallback ran: the distance by CGAL's QP over all vertices, when the
@@ -141,12 +148,14 @@ class ConvexRules {
 class CompoundJudge;
 class PartsRules {
   public:
-    PartsRules(CompoundJudge& judge, const Q& tolerance) : judge_(judge), tol_{tolerance} {}
+    PartsRules(CompoundJudge& judge, const Tolerance& tolerance) : judge_(judge), tol_(tolerance) {}
     // Whether the type is judged on parts.
     static bool takes(ClaimType t);
     Judged judge(const TypedClaim& c, Proof* proof = nullptr);
 
   private:
+    // The part of object i holding x scaled by ρ, or within the absolute tolerance of it (−1: none).
+    int place(int i, const Q& rho, const Vec3q& x, Json* proof) const;
     CompoundJudge& judge_;
     Tolerance tol_;
 };

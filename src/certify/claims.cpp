@@ -669,14 +669,15 @@ void describe_line(const TypedClaim& c, const Judged& g, const ExactScene* parts
 // The report of n claims, `bad` of them wrong: JSON {"claims", "tolerance" (JSON claims only),
 // "right", "wrong"}, or the claims' text lines and a summary line.
 // (fallbacks >= 0: JSON claims' "exact_fallbacks", how often the exact fallback ran.)
-std::string report(Json arr, const std::string& text, long n, long bad, bool json, const Q* tolerance, long* wrong,
-                   long* count, long fallbacks = -1, long fallbacks_depth = 0) {
+std::string report(Json arr, const std::string& text, long n, long bad, bool json, const ClaimOptions* tolerance,
+                   long* wrong, long* count, long fallbacks = -1, long fallbacks_depth = 0) {
     if (wrong) *wrong = bad;
     if (count) *count = n;
     if (json) {
         Json j;
         j["claims"] = std::move(arr);
-        if (tolerance) put_exact(j, "tolerance", *tolerance);
+        if (tolerance) put_exact(j, "tolerance", tolerance->tolerance);
+        if (tolerance && sgn(tolerance->abs_tolerance) > 0) put_exact(j, "abs_tolerance", tolerance->abs_tolerance);
         j["right"] = n - bad;
         j["wrong"] = bad;
         if (fallbacks >= 0) j["exact_fallbacks"] = Json{{"distance", fallbacks}, {"depth", fallbacks_depth}};
@@ -711,9 +712,11 @@ JNode claims_root(const std::string& claims, const std::string& name) {
 bool is_json(const std::string& claims, const ClaimOptions& opt, const std::string& name) {
     if (sgn(opt.tolerance) < 0)
         throw InputError("tolerance: must be >= 0 (got " + to_exact_string(opt.tolerance) + ")");
+    if (sgn(opt.abs_tolerance) < 0)
+        throw InputError("abs_tolerance: must be >= 0 (got " + to_exact_string(opt.abs_tolerance) + ")");
     const size_t first = claims.find_first_not_of(" \t\r\n");
     if (first != std::string::npos && claims[first] == '{') return true;
-    if (sgn(opt.tolerance) != 0)
+    if (sgn(opt.tolerance) != 0 || sgn(opt.abs_tolerance) != 0)
         throw InputError(name + ": a tolerance applies to JSON claims (scalecert-claims-1) only");
     return false;
 }
@@ -775,22 +778,24 @@ Run run_claims(Rules& rules, const std::string& claims, const std::string& name,
 std::string certify_fp(const ClaimModels& models, const std::string& claims, const std::string& name,
                        const ClaimOptions& opt, long* wrong, long* count, std::string* certificate) {
     const bool json = is_json(claims, opt, name);
-    ConvexRules rules(models, opt.tolerance);
+    ConvexRules rules(models, {opt.tolerance, opt.abs_tolerance});
     const Run r = run_claims(rules, claims, name, opt, json, nullptr, certificate != nullptr);
-    if (certificate) *certificate = judgements_text(models.document(), opt.tolerance, std::move(r.entries));
+    if (certificate)
+        *certificate = judgements_text(models.document(), opt.tolerance, opt.abs_tolerance, std::move(r.entries));
     if (!json) return report(std::move(r.arr), r.text, r.n, r.bad, opt.json, nullptr, wrong, count);
-    return report(std::move(r.arr), r.text, r.n, r.bad, opt.json, &opt.tolerance, wrong, count,
-                  rules.distance_fallbacks(), rules.depth_fallbacks());
+    return report(std::move(r.arr), r.text, r.n, r.bad, opt.json, &opt, wrong, count, rules.distance_fallbacks(),
+                  rules.depth_fallbacks());
 }
 
 std::string certify_fp(CompoundJudge& judge, const std::string& claims, const std::string& name,
                        const ClaimOptions& opt, long* wrong, long* count, std::string* certificate) {
     const bool json = is_json(claims, opt, name);
-    PartsRules rules(judge, opt.tolerance);
+    PartsRules rules(judge, {opt.tolerance, opt.abs_tolerance});
     const Run r = run_claims(rules, claims, name, opt, json, &judge.scene(), certificate != nullptr);
     if (certificate)
-        *certificate = compound_judgements_text(judge.scene(), json ? opt.tolerance : Q(0), std::move(r.entries));
-    return report(std::move(r.arr), r.text, r.n, r.bad, opt.json, json ? &opt.tolerance : nullptr, wrong, count);
+        *certificate = compound_judgements_text(judge.scene(), json ? opt.tolerance : Q(0),
+                                                json ? opt.abs_tolerance : Q(0), std::move(r.entries));
+    return report(std::move(r.arr), r.text, r.n, r.bad, opt.json, json ? &opt : nullptr, wrong, count);
 }
 
 ClaimModels ClaimModels::of(const HullModel& m, const TouchingCurve& c) {

@@ -687,6 +687,21 @@ int CompoundJudge::locate(int i, const Q& rho, const Vec3q& x, Json* proof) cons
     return -1;
 }
 
+int CompoundJudge::near(int i, const Q& rho, const Vec3q& x, const Q& abs, Json* proof) const {
+    const Vec3q& s = sc_.P[i].seed;
+    Json outs = Json::array();
+    for (size_t k = 0; k < parts_[i].size(); ++k) {
+        Json p;
+        if (near_proof(HullPoints(parts_[i][k], parts_[i][k], s, s), 0, rho, x, abs, proof ? &p : nullptr)) {
+            if (proof) *proof = Json{{"part", k}, {"near", p["near"]}};
+            return static_cast<int>(k);
+        }
+        if (proof) outs.push_back(p["out"]);
+    }
+    if (proof) *proof = Json{{"out", outs}};
+    return -1;
+}
+
 std::pair<Q, Q> CompoundJudge::plane_extents(const Vec3q& n, const Q& r1, const Q& r2) const {
     // max over P1(ρ1) of n·x = n·s1 + ρ1 (max over P1 of n·v − n·s1) for ρ1 > 0, and min over P2(ρ2)
     // likewise: each part's extreme vertex by its filtered climb along N, the primitive integer

@@ -71,6 +71,10 @@ class CompoundJudge {
     // Is x in object i scaled by ρ? The first part holding it (−1 if none). With `proof`:
     // {"part", "in": weights} or {"out": [a normal per part, whose plane x lies beyond]}.
     int locate(int i, const Q& rho, const Vec3q& x, Json* proof = nullptr) const;
+    // For x in no part: the first part within `abs` (> 0) of it (−1 if none). With `proof`:
+    // {"part", "near": weights of that part's point nearest x} or {"out": [a normal per part,
+    // along which x lies more than abs beyond it]} (judgements.hpp, near_proof).
+    int near(int i, const Q& rho, const Vec3q& x, const Q& abs, Json* proof = nullptr) const;
 
     // max over P1(ρ1) of n·x and min over P2(ρ2) of n·x: over every part's vertices.
     std::pair<Q, Q> plane_extents(const Vec3q& n, const Q& rho1, const Q& rho2) const;

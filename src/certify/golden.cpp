@@ -26,7 +26,7 @@ std::vector<std::pair<std::string, Q>> around(const Q& f) {
 GoldenAnswers golden_answers(const ExactScene& s, const Model& m, const TouchingCurve& c, const ClaimModels& models) {
     // The exact values come from the typed claim rules at tolerance 0: a distance claim's exact
     // square where the doubles are apart, a depth claim's where they overlap.
-    ConvexRules rules(models, Q(0));
+    ConvexRules rules(models, Tolerance{});
     auto exact_square = [&](ClaimType type, const Q& a, const Q& b) {
         TypedClaim t;
         t.type = type;

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <iterator>
+#include <limits>
 #include <map>
 #include <stdexcept>
 
@@ -104,6 +105,20 @@ std::optional<bool> membership_by_points(const PointSets& S, int i, const Q& rho
     return inside;
 }
 
+bool near_proof(const PointSets& S, int i, const Q& rho, const Vec3q& x, const Q& abs, Json* proof) {
+    const std::optional<ProvedDistance> pd =
+        proved_distance(BodyAndPoint(S, i, x), rho, Q(1), std::numeric_limits<int>::max());
+    if (!pd) throw std::logic_error("near_proof: the distance did not close");
+    const bool near = pd->d.squared <= abs * abs;
+    if (proof) {
+        if (near)
+            *proof = Json{{"near", weights_json(pd->d.w1)}};
+        else
+            *proof = Json{{"out", normal_json(primitive(sub(pd->d.p2, pd->d.p1)))}};
+    }
+    return near;
+}
+
 Json verdict_proof(const Model& m, const QueryAnswer& r) {
     return Json{{"verdict", verdict_name(r.verdict)}, {"certificate", query_certificate_json(m, r)}};
 }
@@ -194,10 +209,11 @@ Json curve_proof(const Model& m, const TouchingCurve& c, const Q& lo_need, const
     return curve_proof_json(m, w, curve_witnesses(m, w, m.scan ? seed_weights(m) : SeedWeights{}));
 }
 
-std::string judgements_text(const Model& m, const Q& tolerance, Json judgements) {
+std::string judgements_text(const Model& m, const Q& tolerance, const Q& abs_tolerance, Json judgements) {
     Json j;
     j["format"] = "scalecert-2";
     j["kind"] = "judgements";
+    if (sgn(abs_tolerance) > 0) j["abs_tolerance"] = to_exact_string(abs_tolerance);
     j["tolerance"] = to_exact_string(tolerance);
     j["judgements"] = std::move(judgements);
     j["seed_interior"] = seed_interior(seed_weights(m));

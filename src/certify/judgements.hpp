@@ -20,6 +20,12 @@ Json membership_proof(const Polyhedron& P, const Vec3q& seed, const Q& rho, cons
 // distance's rounds run out (the caller then builds the hulls).
 std::optional<bool> membership_by_points(const PointSets& S, int i, const Q& rho, const Vec3q& x, Json* proof);
 
+// Is x, which lies outside P_i(ρ), within `abs` (> 0) of it? The proved distance from x to the body
+// (its rounds unbounded: each adds a point): {"near": weights} of the body's point nearest x when
+// that is within abs, else {"out": normal}, the direction from that point to x, along which x lies
+// more than abs beyond the body's extent.
+bool near_proof(const PointSets& S, int i, const Q& rho, const Vec3q& x, const Q& abs, Json* proof);
+
 // A verdict with its query certificate (on the model that proves it): {"verdict", "certificate"}.
 Json verdict_proof(const Model& m, const QueryAnswer& r);
 
@@ -56,7 +62,7 @@ Json curve_proof(const Model& m, const TouchingCurve& c, const Q& lo_need, const
 std::pair<Q, Q> curve_proof_window(const TouchingCurve& c, const Q& lo_need, const Q& hi_need);
 
 // The document: {"format", "kind": "judgements", "tolerance", "judgements", "seed_interior",
-// "scene"}, as text.
-std::string judgements_text(const Model& m, const Q& tolerance, Json judgements);
+// "scene"}, and "abs_tolerance" when it is > 0, as text.
+std::string judgements_text(const Model& m, const Q& tolerance, const Q& abs_tolerance, Json judgements);
 
 }  // namespace scalecert::internal

@@ -48,10 +48,12 @@ Json compound_scene_json(const ExactScene& sc, bool with_names) {
     return s;
 }
 
-std::string compound_judgements_text(const ExactScene& sc, const Q& tolerance, Json judgements) {
+std::string compound_judgements_text(const ExactScene& sc, const Q& tolerance, const Q& abs_tolerance,
+                                     Json judgements) {
     Json j;
     j["format"] = "scalecert-2";
     j["kind"] = "compound_judgements";
+    if (sgn(abs_tolerance) > 0) j["abs_tolerance"] = to_exact_string(abs_tolerance);
     j["tolerance"] = to_exact_string(tolerance);
     j["judgements"] = std::move(judgements);
     j["scene"] = compound_scene_json(sc);

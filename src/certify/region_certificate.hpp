@@ -28,7 +28,7 @@ Json compound_scene_json(const ExactScene& sc, bool with_names = false);
 Json scene_file_json(const ExactScene& sc);
 // The compound judgements document (kind "compound_judgements", FORMAT.md): certify-fp's proofs on
 // objects made of parts, as text.
-std::string compound_judgements_text(const ExactScene& sc, const Q& tolerance, Json judgements);
+std::string compound_judgements_text(const ExactScene& sc, const Q& tolerance, const Q& abs_tolerance, Json judgements);
 
 // The certificate of r, the region of scene sc (compound_region(sc, ...)).
 Json compound_partition_json(const ExactScene& sc, const CompoundRegion& r);

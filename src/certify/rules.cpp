@@ -50,16 +50,48 @@ bool verdict_matches(Claimed claimed, Verdict exact) {
     return false;
 }
 
-bool Tolerance::close(const Q& c, const Q& e) const { return abs(Q(c - e)) <= rel * abs(e); }
+bool Tolerance::close(const Q& c, const Q& e) const {
+    const Q d = c - e;
+    return (sgn(d) < 0 ? Q(-d) : d) <= rel * (sgn(e) < 0 ? Q(-e) : e);
+}
+
+int sign_minus_sqrt(const Q& a, const Q& k, const Q& E) {
+    const int sk = sgn(E) == 0 ? 0 : sgn(k);  // the sign of k·√E
+    if (sk == 0) return sgn(a);
+    if (sgn(a) != sk) return sgn(a) > sk ? 1 : -1;
+    const int m = cmp(a * a, k * k * E);  // |a| against |k|·√E
+    return sk > 0 ? m : -m;
+}
 
 bool Tolerance::close_sq(const Q& c, const Q& E) const {
+    if (sgn(abs) > 0) return sign_minus_sqrt(c - abs, 1 + rel, E) <= 0 && sign_minus_sqrt(c + abs, 1 - rel, E) >= 0;
     if (sgn(c) < 0) return false;
     const Q lo = (1 - rel), hi = (1 + rel);
     const Q c2 = c * c;
     return (sgn(lo) <= 0 || lo * lo * E <= c2) && c2 <= hi * hi * E;
 }
 
-bool Tolerance::within_above(const Q& x, const Q& E) const { return E <= x && x <= (1 + rel) * (1 + rel) * E; }
+bool Tolerance::within_above(const Q& x, const Q& E, int apart) const {
+    const Q k = 1 + rel;
+    if (sgn(abs) == 0) return E <= x && x <= k * k * E;
+    // √x ≤ k√E + m, m = apart·abs: x ≤ k²E + m² + 2km√E.
+    const Q m = apart * abs;
+    return sign_minus_sqrt(x - k * k * E - m * m, 2 * k * m, E) <= 0;
+}
+
+bool Tolerance::within_abs(const Q& x, const Q& N) const { return sign_minus_sqrt(x, abs, N) <= 0; }
+
+namespace {
+// A plane claim's rule (CLAIMS.md): c1 = max over P1(ρ1) of n·x, c2 = min over P2(ρ2). Exact: the
+// plane separates strictly (the offset strictly between). Within abs: each body lies within abs of
+// its side, c1 − o ≤ abs·|n| and o − c2 ≤ abs·|n| (with no offset, for some o: c1 − c2 ≤ 2·abs·|n|).
+bool plane_right(const Tolerance& tol, const Q& c1, const Q& c2, const Vec3q& n, const std::optional<Q>& offset) {
+    if (sgn(tol.abs) == 0) return c1 < c2 && (!offset || (c1 < *offset && *offset < c2));
+    const Q N = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
+    if (!offset) return tol.within_abs(c1 - c2, 4 * N);
+    return tol.within_abs(c1 - *offset, N) && tol.within_abs(*offset - c2, N);
+}
+}  // namespace
 
 namespace {
 std::string ex(const Q& q) { return to_exact_string(q); }
@@ -140,7 +172,7 @@ Json exact_fields_json(const TypedClaim& c) {
 // ---- two convex objects ----------------------------------------------------------------------
 
 struct ConvexRules::Impl {
-    Impl(const ClaimModels& m, const Q& tolerance) : models(m), tol{tolerance} {}
+    Impl(const ClaimModels& m, const Tolerance& tolerance) : models(m), tol(tolerance) {}
     const ClaimModels& models;
     Tolerance tol;
     long distance_fallbacks = 0, depth_fallbacks = 0;
@@ -156,11 +188,15 @@ struct ConvexRules::Impl {
     // normal), else the exact polyhedra's vertices.
     const PointSets& points() const { return models.points(); }
 
-    // Whether x is in P1(ρ1) and y in P2(ρ2), with their proofs in *proof when given.
+    // Whether x is in P1(ρ1) and y in P2(ρ2) (or, at an absolute tolerance, within it of them),
+    // with their proofs in *proof when given.
     std::pair<bool, bool> members(const Q& r1, const Q& r2, const Vec3q& x, const Vec3q& y, Json* proof) const {
         Json p1, p2;
-        const bool a = models.member(0, r1, x, proof ? &p1 : nullptr),
-                   b = models.member(1, r2, y, proof ? &p2 : nullptr);
+        bool a = models.member(0, r1, x, proof ? &p1 : nullptr), b = models.member(1, r2, y, proof ? &p2 : nullptr);
+        if (sgn(tol.abs) > 0) {
+            if (!a) a = near_proof(points(), 0, r1, x, tol.abs, proof ? &p1 : nullptr);
+            if (!b) b = near_proof(points(), 1, r2, y, tol.abs, proof ? &p2 : nullptr);
+        }
         if (proof) *proof = Json{{"P1", std::move(p1)}, {"P2", std::move(p2)}};
         return {a, b};
     }
@@ -403,7 +439,7 @@ struct ConvexRules::Impl {
 
     void plane(const TypedClaim& c, Judged& g, Proof* proof) {
         std::tie(g.c1, g.c2) = plane_extents(points(), c.normal, c.rho1, c.rho2);
-        g.right = g.c1 < g.c2 && (!c.offset || (g.c1 < *c.offset && *c.offset < g.c2));
+        g.right = plane_right(tol, g.c1, g.c2, c.normal, c.offset);
         if (proof) proof->proof = Json::object();
     }
 
@@ -429,7 +465,7 @@ struct ConvexRules::Impl {
             g.closest_squared = dot3(pq, pq);
             Json mp;
             std::tie(g.in1, g.in2) = members(c.rho1, c.rho2, p, q, proof ? &mp : nullptr);
-            g.closest_right = g.in1 && g.in2 && tol.within_above(g.closest_squared, e.squared);
+            g.closest_right = g.in1 && g.in2 && tol.within_above(g.closest_squared, e.squared, 2);
             g.right = g.right && *g.closest_right;
             if (proof) proof->proof["closest"] = std::move(mp);
         }
@@ -457,7 +493,7 @@ struct ConvexRules::Impl {
     }
 };
 
-ConvexRules::ConvexRules(const ClaimModels& models, const Q& tolerance) : impl_(new Impl(models, tolerance)) {}
+ConvexRules::ConvexRules(const ClaimModels& models, const Tolerance& tolerance) : impl_(new Impl(models, tolerance)) {}
 ConvexRules::~ConvexRules() = default;
 long ConvexRules::distance_fallbacks() const { return impl_->distance_fallbacks; }
 long ConvexRules::depth_fallbacks() const { return impl_->depth_fallbacks; }
@@ -495,6 +531,12 @@ bool PartsRules::takes(ClaimType t) {
     return t == ClaimType::Verdict || t == ClaimType::Plane || t == ClaimType::Witness || t == ClaimType::Distance;
 }
 
+int PartsRules::place(int i, const Q& rho, const Vec3q& x, Json* proof) const {
+    const int k = judge_.locate(i, rho, x, proof);
+    if (k >= 0 || sgn(tol_.abs) == 0) return k;
+    return judge_.near(i, rho, x, tol_.abs, proof);
+}
+
 Judged PartsRules::judge(const TypedClaim& c, Proof* proof) {
     if (!takes(c.type)) throw std::logic_error("PartsRules: a claim on two convex objects");
     Judged g;
@@ -512,13 +554,13 @@ Judged PartsRules::judge(const TypedClaim& c, Proof* proof) {
     }
     case ClaimType::Plane:
         std::tie(g.c1, g.c2) = judge_.plane_extents(c.normal, c.rho1, c.rho2);
-        g.right = g.c1 < g.c2 && (!c.offset || (g.c1 < *c.offset && *c.offset < g.c2));
+        g.right = plane_right(tol_, g.c1, g.c2, c.normal, c.offset);
         if (p) *p = Json::object();
         break;
     case ClaimType::Witness: {
         Json p1, p2;
-        g.in_part1 = judge_.locate(0, c.rho1, c.point, p ? &p1 : nullptr);
-        g.in_part2 = judge_.locate(1, c.rho2, c.point, p ? &p2 : nullptr);
+        g.in_part1 = place(0, c.rho1, c.point, p ? &p1 : nullptr);
+        g.in_part2 = place(1, c.rho2, c.point, p ? &p2 : nullptr);
         g.in1 = g.in_part1 >= 0;
         g.in2 = g.in_part2 >= 0;
         g.exact_verdict = judge_.verdict(c.rho1, c.rho2).verdict;
@@ -541,11 +583,11 @@ Judged PartsRules::judge(const TypedClaim& c, Proof* proof) {
             const Vec3q ab = diff(b, a);
             g.closest_squared = dot3(ab, ab);
             Json m1, m2;
-            g.in_part1 = judge_.locate(0, c.rho1, a, p ? &m1 : nullptr);
-            g.in_part2 = judge_.locate(1, c.rho2, b, p ? &m2 : nullptr);
+            g.in_part1 = place(0, c.rho1, a, p ? &m1 : nullptr);
+            g.in_part2 = place(1, c.rho2, b, p ? &m2 : nullptr);
             g.in1 = g.in_part1 >= 0;
             g.in2 = g.in_part2 >= 0;
-            g.closest_right = g.in1 && g.in2 && tol_.within_above(g.closest_squared, e.squared);
+            g.closest_right = g.in1 && g.in2 && tol_.within_above(g.closest_squared, e.squared, 2);
             g.right = g.right && *g.closest_right;
             if (p) pp["closest"] = Json{{"P1", std::move(m1)}, {"P2", std::move(m2)}};
         }

@@ -8,6 +8,7 @@
 
 #include <memory>
 #include <optional>
+#include <tuple>
 
 namespace scalecert::cli {
 
@@ -16,7 +17,7 @@ using namespace internal;
 Command add_certify_fp(CLI::App& app) {
     struct Args {
         SceneArgs scene;
-        std::string out, claims, tolerance = "0", certificate;
+        std::string out, claims, tolerance = "0", abs_tolerance = "0", certificate;
         bool json = false, exact_decimals = false;
     };
     auto a = std::make_shared<Args>();
@@ -31,6 +32,11 @@ Command add_certify_fp(CLI::App& app) {
     sub->add_option("--tolerance", a->tolerance,
                     "accept numeric claims within this relative error (exact, e.g. 1e-9; JSON claims); verdicts, "
                     "contacts, planes and witness points must be exact");
+    sub->add_option("--abs-tolerance", a->abs_tolerance,
+                    "a length (exact, e.g. 1e-9; JSON claims): a point within it of its body is taken as in it, a "
+                    "distance or depth within it plus the relative tolerance as right, a body within it past a "
+                    "separating plane as on its side (certificates/CLAIMS.md, \"Tolerances\")")
+        ->type_name("LEN");
     sub->add_flag("--json", a->json, "the report as JSON");
     sub->add_flag(
         "--exact-decimals", a->exact_decimals,
@@ -51,38 +57,42 @@ Command add_certify_fp(CLI::App& app) {
             "  scalecert certify-fp certificates/scenes/stacked_cubes.json examples/claims.json --tolerance 1e-12\n"
             "  scalecert certify-fp tests/data/compound_band.json tests/data/compound_band_claims.json   # objects "
             "made of parts");
-    return {sub, [a] {
-                a->scene.shift_positionals({&a->claims});
-                if (a->claims.empty()) throw InputError("CLAIMS is required (see scalecert certify-fp --help)");
-                internal::refuse_outputs_over_inputs({a->out, a->certificate},
-                                                     {a->claims, a->scene.path, a->scene.mesh[0], a->scene.mesh[1]});
-                StageClock clock;
-                // A scene of parts goes to the compound judge; a plain one to the session.
-                OpenScene o = open_any(a->scene, Engine::Auto, clock);
-                const std::string claims = read_input(a->claims, "claims file", kMaxSceneBytes);
-                long wrong = 0;
-                ClaimOptions opt{a->exact_decimals, Q(0), a->json};
+    return {
+        sub, [a] {
+            a->scene.shift_positionals({&a->claims});
+            if (a->claims.empty()) throw InputError("CLAIMS is required (see scalecert certify-fp --help)");
+            internal::refuse_outputs_over_inputs({a->out, a->certificate},
+                                                 {a->claims, a->scene.path, a->scene.mesh[0], a->scene.mesh[1]});
+            StageClock clock;
+            // A scene of parts goes to the compound judge; a plain one to the session.
+            OpenScene o = open_any(a->scene, Engine::Auto, clock);
+            const std::string claims = read_input(a->claims, "claims file", kMaxSceneBytes);
+            long wrong = 0;
+            ClaimOptions opt{a->exact_decimals, Q(0), a->json};
+            for (auto [text, value, flag] : {std::tuple{&a->tolerance, &opt.tolerance, "--tolerance"},
+                                             std::tuple{&a->abs_tolerance, &opt.abs_tolerance, "--abs-tolerance"}}) {
                 try {
-                    opt.tolerance = parse_exact(a->tolerance);
+                    *value = parse_exact(*text);
                 } catch (const InputError& e) {
-                    throw InputError(std::string("--tolerance: ") + e.what());
+                    throw InputError(std::string(flag) + ": " + e.what());
                 }
-                if (sgn(opt.tolerance) < 0) throw InputError("--tolerance must be >= 0");
-                std::string certificate;
-                std::string* cert = a->certificate.empty() ? nullptr : &certificate;
-                const std::string report =
-                    o.compound ? certify_fp(o.compound->judge(), claims, a->claims, opt, &wrong, nullptr, cert)
-                               : certify_fp(o.convex->claim_models(), claims, a->claims, opt, &wrong, nullptr, cert);
-                if (a->certificate.empty())
-                    emit(report, a->out);
-                else if (a->out.empty()) {
-                    write_file_atomically(a->certificate, certificate);
-                    emit(report, a->out);
-                } else {
-                    write_files_atomically({{a->certificate, certificate}, {a->out, report}});
-                }
-                return wrong > 0 ? 1 : 0;
-            }};
+                if (sgn(*value) < 0) throw InputError(std::string(flag) + " must be >= 0");
+            }
+            std::string certificate;
+            std::string* cert = a->certificate.empty() ? nullptr : &certificate;
+            const std::string report =
+                o.compound ? certify_fp(o.compound->judge(), claims, a->claims, opt, &wrong, nullptr, cert)
+                           : certify_fp(o.convex->claim_models(), claims, a->claims, opt, &wrong, nullptr, cert);
+            if (a->certificate.empty())
+                emit(report, a->out);
+            else if (a->out.empty()) {
+                write_file_atomically(a->certificate, certificate);
+                emit(report, a->out);
+            } else {
+                write_files_atomically({{a->certificate, certificate}, {a->out, report}});
+            }
+            return wrong > 0 ? 1 : 0;
+        }};
 }
 
 }  // namespace scalecert::cli

@@ -115,12 +115,12 @@ std::vector<std::pair<int, Q>> convex_weights(const std::vector<Vec3q>& pts, con
 }
 }  // namespace
 
-std::optional<ProvedDistance> proved_distance(const PointSets& S, const Q& rho1, const Q& rho2) {
+std::optional<ProvedDistance> proved_distance(const PointSets& S, const Q& rho1, const Q& rho2, int max_rounds) {
     ProvedDistance r;
     const GjkGuess g = gjk_guess(S, to_double_rn(rho1), to_double_rn(rho2));
     std::vector<int> idx[2] = {g.v1, g.v2};
     const Q* rho[2] = {&rho1, &rho2};
-    for (r.rounds = 1; r.rounds <= kProvedDistanceRounds; ++r.rounds) {
+    for (r.rounds = 1; r.rounds <= max_rounds; ++r.rounds) {
         std::vector<Vec3q> X[2];
         std::vector<K::Point_3> H[2];
         for (int i = 0; i < 2; ++i)

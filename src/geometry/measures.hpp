@@ -38,10 +38,12 @@ struct ProvedDistance {
     int rounds = 0;
 };
 ProvedDistance proved_distance(const Bodies& m, const Q& rho1, const Q& rho2);
-// The same on any point set (a hull's vertices, or a cloud's points with no hull): none when the
-// rounds run out (the caller then asks the hull model's exact_distance).
-std::optional<ProvedDistance> proved_distance(const PointSets& S, const Q& rho1, const Q& rho2);
 constexpr int kProvedDistanceRounds = 24;
+// The same on any point set (a hull's vertices, or a cloud's points with no hull): none when
+// max_rounds rounds run out (the caller then asks the hull model's exact_distance). Each round
+// adds a point, so with max_rounds past the points' count it always closes.
+std::optional<ProvedDistance> proved_distance(const PointSets& S, const Q& rho1, const Q& rho2,
+                                              int max_rounds = kProvedDistanceRounds);
 
 // The squared penetration depth of overlapping P1(ρ1), P2(ρ2): the squared distance from the
 // origin to the boundary of P1(ρ1) ⊕ (−P2(ρ2)), attained at a facet of that sum, whose outward

@@ -518,6 +518,8 @@ Judgements judge_all(Rules& rules, const std::vector<Claim>& claims, const Claim
 void check_tolerance(const ClaimOptions& options) {
     if (sgn(options.tolerance) < 0)
         throw InputError("tolerance: must be >= 0 (got " + to_exact_string(options.tolerance) + ")");
+    if (sgn(options.abs_tolerance) < 0)
+        throw InputError("abs_tolerance: must be >= 0 (got " + to_exact_string(options.abs_tolerance) + ")");
 }
 }  // namespace
 
@@ -525,15 +527,17 @@ Judgements Analysis::certify(const std::vector<Claim>& claims, const ClaimOption
     check_tolerance(options);
     if (!impl_->convex()) {
         internal::CompoundJudge& judge = impl_->compound->judge();
-        internal::PartsRules rules(judge, options.tolerance);
+        internal::PartsRules rules(judge, {options.tolerance, options.abs_tolerance});
         return judge_all(rules, claims, options, true, [&](Json entries) {
-            return internal::compound_judgements_text(judge.scene(), options.tolerance, std::move(entries));
+            return internal::compound_judgements_text(judge.scene(), options.tolerance, options.abs_tolerance,
+                                                      std::move(entries));
         });
     }
     const internal::ClaimModels models = impl_->session->claim_models();
-    internal::ConvexRules rules(models, options.tolerance);
+    internal::ConvexRules rules(models, {options.tolerance, options.abs_tolerance});
     return judge_all(rules, claims, options, false, [&](Json entries) {
-        return internal::judgements_text(models.document(), options.tolerance, std::move(entries));
+        return internal::judgements_text(models.document(), options.tolerance, options.abs_tolerance,
+                                         std::move(entries));
     });
 }
 
