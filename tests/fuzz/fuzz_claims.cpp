@@ -101,36 +101,40 @@ void compound_claims(const std::string& text) {
             "band", "", opt);
     }();
     static CompoundJudge judge(band, "band");
-    try {
-        long wrong = -1;
-        std::string certificate;
-        const std::string out =
-            certify_fp(judge, text, "fuzz.claims", ClaimOptions{false, Q(0), true}, &wrong, nullptr, &certificate);
-        if (wrong < 0 || out.empty()) fuzz::finding("certify_fp on parts returned no report");
-        fuzz::must_pass_checker(certificate, "compound judgements certificate");
-    } catch (const InputError&) {}
+    for (const Q& abs : {Q(0), Q(1, 1000)})  // exact, and at an absolute tolerance
+        try {
+            long wrong = -1;
+            std::string certificate;
+            ClaimOptions opt{false, Q(0), true};
+            opt.abs_tolerance = abs;
+            const std::string out = certify_fp(judge, text, "fuzz.claims", opt, &wrong, nullptr, &certificate);
+            if (wrong < 0 || out.empty()) fuzz::finding("certify_fp on parts returned no report");
+            fuzz::must_pass_checker(certificate, "compound judgements certificate");
+        } catch (const InputError&) {}
 }
 
 // Crossed 40-gon prisms (tests/support.hpp), whose Minkowski sum has O(n^2) facets: the same
 // claims judged on the walk (a fresh session each input, the engine forced to the walk) and on
 // the hull model. Oracle: the same judgement for every claim, the same refusal, and a valid
-// certificate from the walk.
+// certificate from the walk; the same with an absolute tolerance.
 void walk_claims(const std::string& text) {
     static const ExactScene prisms = test::crossed_prism_scene(40);
     static const HullModel hm = build_model(prisms);
     static const TouchingCurve hc = build_curve(hm);
-    for (bool json : {false, true}) {
+    for (int run = 0; run < 3; ++run) {  // lines, JSON, JSON at an absolute tolerance
+        const bool json = run > 0;
+        ClaimOptions opt{false, Q(0), json};
+        if (run == 2) opt.abs_tolerance = Q(1, 1000);
         std::string hull_out, walk_out, cert, hull_err, walk_err;
         long wrong = -1;
         try {
-            hull_out = certify_fp(hm, hc, text, "fuzz.claims", ClaimOptions{false, Q(0), json}, &wrong);
+            hull_out = certify_fp(ClaimModels::of(hm, hc), text, "fuzz.claims", opt, &wrong);
         } catch (const InputError& e) {
             hull_err = e.what();
         }
         try {
             Session s(prisms, "fuzz.claims", Engine::Scan);
-            walk_out = certify_fp(s.claim_models(), text, "fuzz.claims", ClaimOptions{false, Q(0), json}, &wrong,
-                                  nullptr, &cert);
+            walk_out = certify_fp(s.claim_models(), text, "fuzz.claims", opt, &wrong, nullptr, &cert);
         } catch (const InputError& e) {
             walk_err = e.what();
         }
