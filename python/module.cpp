@@ -767,6 +767,7 @@ PYBIND11_MODULE(scalecert, m) {
             "'curve RHO1 RHO2' / 'growth RHO' lines), a scalecert-claims-1 dict, or a list of claim dicts. A float "
             "means "
             "the double it is (exact_decimals reads JSON text's decimals as written); a str or a Fraction is exact. "
+            "tolerance and abs_tolerance as certify-fp's --tolerance and --abs-tolerance. "
             "Returns the report of scalecert certify-fp --json, as a dict; with certificate=True, (the report, the "
             "judgements certificate's text for scalecert-check)")
         .def(
@@ -791,7 +792,9 @@ PYBIND11_MODULE(scalecert, m) {
             "'penetration_depth' (value, optional direction (n, 3)), 'verdict' (verdict: a str or n strs), "
             "'separating_plane' (normal (n, 3), optional offset) or 'witness_point' (point (n, 3)); rho1, rho2 and "
             "value "
-            "of length n. A float is the double it is. Returns a dict of numpy arrays: right (bool), value_right, "
+            "of length n. A float is the double it is. tolerance is a relative error, abs_tolerance a length within "
+            "which points, distances, depths and planes may be off (CLAIMS.md, 'Tolerances'; give '1e-9' or a "
+            "Fraction for the decimal). Returns a dict of numpy arrays: right (bool), value_right, "
             "closest_right, direction_right (bool, where given), exact (float64: the exact distance or depth, "
             "correctly "
             "rounded; NaN for a depth of a separated pair) and rel_error (float64), exact_verdict (verdicts); with "
