@@ -189,14 +189,25 @@ struct ConvexRules::Impl {
     const PointSets& points() const { return models.points(); }
 
     // Whether x is in P1(ρ1) and y in P2(ρ2) (or, at an absolute tolerance, within it of them),
-    // with their proofs in *proof when given.
-    std::pair<bool, bool> members(const Q& r1, const Q& r2, const Vec3q& x, const Vec3q& y, Json* proof) const {
+    // with their proofs in *proof when given. `known`: the exact closest points, with their
+    // weights when known: a claimed point within the tolerance of its body's is near at once.
+    std::pair<bool, bool> members(const Q& r1, const Q& r2, const Vec3q& x, const Vec3q& y, Json* proof,
+                                  const ExactDistance* known = nullptr) const {
+        auto one = [&](int i, const Q& r, const Vec3q& v, Json* pj) {
+            if (sgn(tol.abs) > 0 && known) {
+                const auto& w = i == 0 ? known->w1 : known->w2;
+                const Vec3q d = diff(v, i == 0 ? known->p1 : known->p2);
+                if (!w.empty() && dot3(d, d) <= tol.abs * tol.abs) {
+                    if (pj) *pj = Json{{"near", weights_json(w)}};
+                    return true;
+                }
+            }
+            bool in = models.member(i, r, v, pj);
+            if (!in && sgn(tol.abs) > 0) in = near_proof(points(), i, r, v, tol.abs, pj);
+            return in;
+        };
         Json p1, p2;
-        bool a = models.member(0, r1, x, proof ? &p1 : nullptr), b = models.member(1, r2, y, proof ? &p2 : nullptr);
-        if (sgn(tol.abs) > 0) {
-            if (!a) a = near_proof(points(), 0, r1, x, tol.abs, proof ? &p1 : nullptr);
-            if (!b) b = near_proof(points(), 1, r2, y, tol.abs, proof ? &p2 : nullptr);
-        }
+        const bool a = one(0, r1, x, proof ? &p1 : nullptr), b = one(1, r2, y, proof ? &p2 : nullptr);
         if (proof) *proof = Json{{"P1", std::move(p1)}, {"P2", std::move(p2)}};
         return {a, b};
     }
@@ -464,7 +475,7 @@ struct ConvexRules::Impl {
             const Vec3q pq = diff(q, p);
             g.closest_squared = dot3(pq, pq);
             Json mp;
-            std::tie(g.in1, g.in2) = members(c.rho1, c.rho2, p, q, proof ? &mp : nullptr);
+            std::tie(g.in1, g.in2) = members(c.rho1, c.rho2, p, q, proof ? &mp : nullptr, &e);
             g.closest_right = g.in1 && g.in2 && tol.within_above(g.closest_squared, e.squared, 2);
             g.right = g.right && *g.closest_right;
             if (proof) proof->proof["closest"] = std::move(mp);
@@ -583,8 +594,19 @@ Judged PartsRules::judge(const TypedClaim& c, Proof* proof) {
             const Vec3q ab = diff(b, a);
             g.closest_squared = dot3(ab, ab);
             Json m1, m2;
-            g.in_part1 = place(0, c.rho1, a, p ? &m1 : nullptr);
-            g.in_part2 = place(1, c.rho2, b, p ? &m2 : nullptr);
+            // At an absolute tolerance, a claimed point within it of the exact closest point of its
+            // object (in part k, with its weights in the distance's proof) is near at once.
+            auto at = [&](int i, const Vec3q& x, Json* pj) {
+                const Vec3q d = diff(x, i == 0 ? e.p1 : e.p2);
+                const int k = i == 0 ? e.part1 : e.part2;
+                if (sgn(tol_.abs) > 0 && k >= 0 && dot3(d, d) <= tol_.abs * tol_.abs) {
+                    if (pj) *pj = Json{{"part", k}, {"near", pp[i == 0 ? "P1" : "P2"]}};
+                    return k;
+                }
+                return place(i, i == 0 ? c.rho1 : c.rho2, x, pj);
+            };
+            g.in_part1 = at(0, a, p ? &m1 : nullptr);
+            g.in_part2 = at(1, b, p ? &m2 : nullptr);
             g.in1 = g.in_part1 >= 0;
             g.in2 = g.in_part2 >= 0;
             g.closest_right = g.in1 && g.in2 && tol_.within_above(g.closest_squared, e.squared, 2);
