@@ -46,7 +46,7 @@ Rules read_rules(Context& cx, const J& c) {
     cx.claim(sgn(R.tol) >= 0, "tolerance is >= 0");
     if (c.contains("abs_tolerance")) {
         R.abs = num(cx, at(c, "abs_tolerance"), "abs_tolerance");
-        cx.claim(sgn(R.abs) >= 0, "abs_tolerance is >= 0");
+        cx.claim(sgn(R.abs) > 0, "abs_tolerance, when given, is > 0 (a file judged exactly has none)");
     }
     return R;
 }

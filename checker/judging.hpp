@@ -30,7 +30,7 @@ struct Rules {
 };
 // The sign of a − k·√E (E >= 0), exactly.
 int sign_minus_sqrt(const Q& a, const Q& k, const Q& E);
-// The file's `tolerance` (an exact number >= 0) and its optional `abs_tolerance` (>= 0).
+// The file's `tolerance` (an exact number >= 0) and its optional `abs_tolerance` (> 0).
 Rules read_rules(Context& cx, const J& c);
 // "N right, M wrong, tolerance T" for the line printed for a valid file. A long tolerance is
 // shown by its size, never by a prefix (a prefix hides a factor of 10^61): a forged tolerance

@@ -63,11 +63,7 @@ Command add_certify_fp(CLI::App& app) {
             if (a->claims.empty()) throw InputError("CLAIMS is required (see scalecert certify-fp --help)");
             internal::refuse_outputs_over_inputs({a->out, a->certificate},
                                                  {a->claims, a->scene.path, a->scene.mesh[0], a->scene.mesh[1]});
-            StageClock clock;
-            // A scene of parts goes to the compound judge; a plain one to the session.
-            OpenScene o = open_any(a->scene, Engine::Auto, clock);
-            const std::string claims = read_input(a->claims, "claims file", kMaxSceneBytes);
-            long wrong = 0;
+            // The tolerances first: a mistyped one is said before a large scene is read.
             ClaimOptions opt{a->exact_decimals, Q(0), a->json};
             for (auto [text, value, flag] : {std::tuple{&a->tolerance, &opt.tolerance, "--tolerance"},
                                              std::tuple{&a->abs_tolerance, &opt.abs_tolerance, "--abs-tolerance"}}) {
@@ -78,6 +74,11 @@ Command add_certify_fp(CLI::App& app) {
                 }
                 if (sgn(*value) < 0) throw InputError(std::string(flag) + " must be >= 0");
             }
+            StageClock clock;
+            // A scene of parts goes to the compound judge; a plain one to the session.
+            OpenScene o = open_any(a->scene, Engine::Auto, clock);
+            const std::string claims = read_input(a->claims, "claims file", kMaxSceneBytes);
+            long wrong = 0;
             std::string certificate;
             std::string* cert = a->certificate.empty() ? nullptr : &certificate;
             const std::string report =
