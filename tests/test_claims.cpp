@@ -439,6 +439,14 @@ BOOST_AUTO_TEST_CASE(absolute_tolerance_on_points_values_and_planes) {
     const nlohmann::json r = nlohmann::json::parse(certify_fp(k.m, k.c, batch, "c.json", tol, &wrong));
     for (size_t i = 0; i < within.size(); ++i) BOOST_TEST(r["claims"][i]["right"].get<bool>() == within[i], i);
     BOOST_TEST(r["abs_tolerance"] == "1/1000000000");
+    // The report says which points were outside, within the tolerance: claim 0's first closest
+    // point, claim 3's witness point in P1 (not in P2, which holds it), claim 9's two points.
+    BOOST_TEST(r["claims"][0]["closest_near_P1"] == true);
+    BOOST_TEST(!r["claims"][0].contains("closest_near_P2"));
+    BOOST_TEST(r["claims"][3]["near_P1"] == true);
+    BOOST_TEST(!r["claims"][3].contains("near_P2"));
+    BOOST_TEST(r["claims"][9]["closest_near_P1"] == true);
+    BOOST_TEST(r["claims"][9]["closest_near_P2"] == true);
     BOOST_TEST(!e.contains("abs_tolerance"));
     // With a relative tolerance beside it, a value within LEN + REL·|exact|: 1.500000002 is within
     // 1e-9 + (1e-9)·(3/2) of 3/2, and 1.500000003 is not.

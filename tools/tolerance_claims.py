@@ -6,6 +6,7 @@
 import json, math, os, random, subprocess, sys
 from fractions import Fraction as F
 random.seed(7)
+scalecert = os.path.abspath(sys.argv[1])
 os.chdir(sys.argv[2])
 def sphere(c, r, n):
     pts = []
@@ -20,7 +21,7 @@ json.dump(scene, open("scene.json", "w"))
 pairs = [(random.uniform(0.5, 1.3), random.uniform(0.5, 1.3)) for _ in range(1000)]
 claims = [{"kind": "distance", "rho1": a, "rho2": b, "value": 1.0} for a, b in pairs]
 json.dump({"format": "scalecert-claims-1", "claims": claims}, open("probe.json", "w"))
-r = json.loads(subprocess.run([sys.argv[1], "certify-fp", "scene.json", "probe.json", "--json"], capture_output=True, text=True).stdout)
+r = json.loads(subprocess.run([scalecert, "certify-fp", "scene.json", "probe.json", "--json"], capture_output=True, text=True).stdout)
 out = []
 for (a, b), c in zip(pairs, r["claims"]):
     p = [float(F(x)) for x in c["exact_closest_P1"]]; q = [float(F(x)) for x in c["exact_closest_P2"]]

@@ -79,9 +79,10 @@ struct Judged {
     // Witness and the closest points: in P1, in P2; on parts, the part holding each (−1: none).
     bool in1 = false, in2 = false;
     int in_part1 = -1, in_part2 = -1;
-    Q closest_squared;  // |q − p|² of the claimed closest points
-    Q along;            // Depth: the squared depth along the claimed direction
-    Q c1, c2;           // Plane: max over P1(ρ1) of n·x, min over P2(ρ2)
+    bool near1 = false, near2 = false;  // in1, in2 by the absolute tolerance: outside, within it
+    Q closest_squared;                  // |q − p|² of the claimed closest points
+    Q along;                            // Depth: the squared depth along the claimed direction
+    Q c1, c2;                           // Plane: max over P1(ρ1) of n·x, min over P2(ρ2)
     // SwitchPoint: the exact switch point matched (or the nearest in ρ1), none when the proved
     // range has none; that range (whole: the whole curve).
     std::optional<ExactSwitch> nearest;
@@ -155,7 +156,7 @@ class PartsRules {
 
   private:
     // The part of object i holding x scaled by ρ, or within the absolute tolerance of it (−1: none).
-    int place(int i, const Q& rho, const Vec3q& x, Json* proof) const;
+    int place(int i, const Q& rho, const Vec3q& x, Json* proof, bool* near) const;
     CompoundJudge& judge_;
     Tolerance tol_;
 };

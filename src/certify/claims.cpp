@@ -337,8 +337,14 @@ Json part_or_false(int k) { return k >= 0 ? Json(k) : Json(false); }
 // After part k of object i in a text line: " ('foot')", its name, or "" when it has none.
 std::string name_of(const ExactScene& sc, int i, int k) { return part_name_suffix(sc.P[i], static_cast<size_t>(k)); }
 // Part k of object i in a text line: "part 3", "part 3 ('foot')" when it has a name, "NO" for none.
-std::string part_or_no(const ExactScene& sc, int i, int k) {
-    return k < 0 ? "NO" : "part " + std::to_string(k) + name_of(sc, i, k);
+std::string part_or_no(const ExactScene& sc, int i, int k, bool near = false) {
+    return k < 0 ? "NO" : (near ? "within LEN of part " : "part ") + std::to_string(k) + name_of(sc, i, k);
+}
+// A membership for the text line: "yes", "within LEN" (outside, within the absolute tolerance), "NO".
+const char* yes_near_no(bool in, bool near) { return !in ? "NO" : near ? "within LEN" : "yes"; }
+// o[key] = true beside o[in_key] for a point outside its body but within the absolute tolerance.
+void put_near(Json& o, const char* key, bool near) {
+    if (near) o[key] = true;
 }
 // A part pair [a, b] as o[key], and beside it o[key + "_names"], [name or null, name or null], when
 // either part has a name (null for the pair itself: no pair).
@@ -488,14 +494,16 @@ void describe(const TypedClaim& c, const Judged& g, const ExactScene* parts, Jso
             put_part_name(o, "in_P1_part", parts->P[0], g.in_part1);
             o["in_P2_part"] = part_or_false(g.in_part2);
             put_part_name(o, "in_P2_part", parts->P[1], g.in_part2);
-            text = "witness point at " + at(c) + ": in P1 " + part_or_no(*parts, 0, g.in_part1) + ", in P2 " +
-                   part_or_no(*parts, 1, g.in_part2);
+            text = "witness point at " + at(c) + ": in P1 " + part_or_no(*parts, 0, g.in_part1, g.near1) + ", in P2 " +
+                   part_or_no(*parts, 1, g.in_part2, g.near2);
         } else {
             o["in_P1"] = g.in1;
             o["in_P2"] = g.in2;
-            text =
-                "witness point at " + at(c) + ": in P1 " + (g.in1 ? "yes" : "NO") + ", in P2 " + (g.in2 ? "yes" : "NO");
+            text = "witness point at " + at(c) + ": in P1 " + yes_near_no(g.in1, g.near1) + ", in P2 " +
+                   yes_near_no(g.in2, g.near2);
         }
+        put_near(o, "near_P1", g.near1);
+        put_near(o, "near_P2", g.near2);
         o["exact_verdict"] = verdict_name(*g.exact_verdict);
         return;
     case ClaimType::Distance:
@@ -521,6 +529,9 @@ void describe(const TypedClaim& c, const Judged& g, const ExactScene* parts, Jso
                 o["closest_in_P1"] = g.in1;
                 o["closest_in_P2"] = g.in2;
             }
+            put_near(o, "closest_near_P1", g.near1);
+            put_near(o, "closest_near_P2", g.near2);
+            if (g.near1 || g.near2) text += ", closest points within LEN of their bodies";
             put_exact(o, "closest_squared_distance", g.closest_squared);
             o["closest_right"] = *g.closest_right;
             // A right value with wrong points: the line says which part of the claim is wrong.
@@ -683,8 +694,13 @@ std::string report(Json arr, const std::string& text, long n, long bad, bool jso
         if (fallbacks >= 0) j["exact_fallbacks"] = Json{{"distance", fallbacks}, {"depth", fallbacks_depth}};
         return dump(j);
     }
+    // The tolerances, when any is not 0, as the checker shows them.
+    std::string tols;
+    if (tolerance && sgn(tolerance->tolerance) != 0) tols += ", tolerance " + to_exact_string(tolerance->tolerance);
+    if (tolerance && sgn(tolerance->abs_tolerance) != 0)
+        tols += ", abs_tolerance " + to_exact_string(tolerance->abs_tolerance);
     return text + "claims: " + std::to_string(n) + ", right: " + std::to_string(n - bad) +
-           ", wrong: " + std::to_string(bad) + "\n";
+           ", wrong: " + std::to_string(bad) + tols + "\n";
 }
 
 Json entry(size_t index, Proof&& p, bool right) {

@@ -191,25 +191,33 @@ struct ConvexRules::Impl {
     // Whether x is in P1(ρ1) and y in P2(ρ2) (or, at an absolute tolerance, within it of them),
     // with their proofs in *proof when given. `known`: the exact closest points, with their
     // weights when known: a claimed point within the tolerance of its body's is near at once.
-    std::pair<bool, bool> members(const Q& r1, const Q& r2, const Vec3q& x, const Vec3q& y, Json* proof,
-                                  const ExactDistance* known = nullptr) const {
-        auto one = [&](int i, const Q& r, const Vec3q& v, Json* pj) {
+    // g.in1, g.in2 (and g.near1, g.near2: outside, within the tolerance).
+    void members(const Q& r1, const Q& r2, const Vec3q& x, const Vec3q& y, Judged& g, Json* proof,
+                 const ExactDistance* known = nullptr) const {
+        auto one = [&](int i, const Q& r, const Vec3q& v, Json* pj, bool& near) {
+            near = false;
             if (sgn(tol.abs) > 0 && known) {
                 const auto& w = i == 0 ? known->w1 : known->w2;
                 const Vec3q d = diff(v, i == 0 ? known->p1 : known->p2);
                 if (!w.empty() && dot3(d, d) <= tol.abs * tol.abs) {
+                    // Near its body's closest point; in the body, it is said to be in it. Beyond
+                    // the slab between the closest points (u = p2 − p1: max over P1 of u·y is
+                    // u·p1, min over P2 is u·p2) it is outside at once; else it is placed exactly.
+                    const Vec3q u = diff(known->p2, known->p1);
+                    const Q along = i == 0 ? Q(dot3(u, v) - dot3(u, known->p1)) : Q(dot3(u, known->p2) - dot3(u, v));
+                    near = sgn(known->squared) > 0 && sgn(along) > 0 ? true : !models.member(i, r, v, nullptr);
                     if (pj) *pj = Json{{"near", weights_json(w)}};
                     return true;
                 }
             }
-            bool in = models.member(i, r, v, pj);
-            if (!in && sgn(tol.abs) > 0) in = near_proof(points(), i, r, v, tol.abs, pj);
-            return in;
+            if (models.member(i, r, v, pj)) return true;
+            near = sgn(tol.abs) > 0 && near_proof(points(), i, r, v, tol.abs, pj);
+            return near;
         };
         Json p1, p2;
-        const bool a = one(0, r1, x, proof ? &p1 : nullptr), b = one(1, r2, y, proof ? &p2 : nullptr);
+        g.in1 = one(0, r1, x, proof ? &p1 : nullptr, g.near1);
+        g.in2 = one(1, r2, y, proof ? &p2 : nullptr, g.near2);
         if (proof) *proof = Json{{"P1", std::move(p1)}, {"P2", std::move(p2)}};
-        return {a, b};
     }
 
     // The exact switch points where V proves the curve: every break of ρ2 = f(ρ1) at ρ1 > 0
@@ -456,7 +464,7 @@ struct ConvexRules::Impl {
 
     void witness(const TypedClaim& c, Judged& g, Proof* proof) {
         Json mp;
-        std::tie(g.in1, g.in2) = members(c.rho1, c.rho2, c.point, c.point, proof ? &mp : nullptr);
+        members(c.rho1, c.rho2, c.point, c.point, g, proof ? &mp : nullptr);
         g.exact_verdict = models.verdict(c.rho1, c.rho2);
         g.right = g.in1 && g.in2;
         if (proof) proof->proof = std::move(mp);
@@ -475,7 +483,7 @@ struct ConvexRules::Impl {
             const Vec3q pq = diff(q, p);
             g.closest_squared = dot3(pq, pq);
             Json mp;
-            std::tie(g.in1, g.in2) = members(c.rho1, c.rho2, p, q, proof ? &mp : nullptr, &e);
+            members(c.rho1, c.rho2, p, q, g, proof ? &mp : nullptr, &e);
             g.closest_right = g.in1 && g.in2 && tol.within_above(g.closest_squared, e.squared, 2);
             g.right = g.right && *g.closest_right;
             if (proof) proof->proof["closest"] = std::move(mp);
@@ -542,10 +550,13 @@ bool PartsRules::takes(ClaimType t) {
     return t == ClaimType::Verdict || t == ClaimType::Plane || t == ClaimType::Witness || t == ClaimType::Distance;
 }
 
-int PartsRules::place(int i, const Q& rho, const Vec3q& x, Json* proof) const {
+int PartsRules::place(int i, const Q& rho, const Vec3q& x, Json* proof, bool* near) const {
     const int k = judge_.locate(i, rho, x, proof);
+    *near = false;
     if (k >= 0 || sgn(tol_.abs) == 0) return k;
-    return judge_.near(i, rho, x, tol_.abs, proof);
+    const int n = judge_.near(i, rho, x, tol_.abs, proof);
+    *near = n >= 0;
+    return n;
 }
 
 Judged PartsRules::judge(const TypedClaim& c, Proof* proof) {
@@ -570,8 +581,8 @@ Judged PartsRules::judge(const TypedClaim& c, Proof* proof) {
         break;
     case ClaimType::Witness: {
         Json p1, p2;
-        g.in_part1 = place(0, c.rho1, c.point, p ? &p1 : nullptr);
-        g.in_part2 = place(1, c.rho2, c.point, p ? &p2 : nullptr);
+        g.in_part1 = place(0, c.rho1, c.point, p ? &p1 : nullptr, &g.near1);
+        g.in_part2 = place(1, c.rho2, c.point, p ? &p2 : nullptr, &g.near2);
         g.in1 = g.in_part1 >= 0;
         g.in2 = g.in_part2 >= 0;
         g.exact_verdict = judge_.verdict(c.rho1, c.rho2).verdict;
@@ -596,17 +607,19 @@ Judged PartsRules::judge(const TypedClaim& c, Proof* proof) {
             Json m1, m2;
             // At an absolute tolerance, a claimed point within it of the exact closest point of its
             // object (in part k, with its weights in the distance's proof) is near at once.
-            auto at = [&](int i, const Vec3q& x, Json* pj) {
+            auto at = [&](int i, const Vec3q& x, Json* pj, bool* near) {
                 const Vec3q d = diff(x, i == 0 ? e.p1 : e.p2);
                 const int k = i == 0 ? e.part1 : e.part2;
+                const Q& rho = i == 0 ? c.rho1 : c.rho2;
                 if (sgn(tol_.abs) > 0 && k >= 0 && dot3(d, d) <= tol_.abs * tol_.abs) {
                     if (pj) *pj = Json{{"part", k}, {"near", pp[i == 0 ? "P1" : "P2"]}};
+                    *near = judge_.locate(i, rho, x) < 0;  // in some part, it is said to be in it
                     return k;
                 }
-                return place(i, i == 0 ? c.rho1 : c.rho2, x, pj);
+                return place(i, rho, x, pj, near);
             };
-            g.in_part1 = at(0, a, p ? &m1 : nullptr);
-            g.in_part2 = at(1, b, p ? &m2 : nullptr);
+            g.in_part1 = at(0, a, p ? &m1 : nullptr, &g.near1);
+            g.in_part2 = at(1, b, p ? &m2 : nullptr, &g.near2);
             g.in1 = g.in_part1 >= 0;
             g.in2 = g.in_part2 >= 0;
             g.closest_right = g.in1 && g.in2 && tol_.within_above(g.closest_squared, e.squared, 2);

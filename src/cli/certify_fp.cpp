@@ -31,7 +31,8 @@ Command add_certify_fp(CLI::App& app) {
         "on objects made of parts: verdict, separating_plane, witness_point and distance claims, and verdict lines");
     sub->add_option("--tolerance", a->tolerance,
                     "accept numeric claims within this relative error (exact, e.g. 1e-9; JSON claims); verdicts, "
-                    "contacts, planes and witness points must be exact");
+                    "contacts, planes and witness points must be exact, unless --abs-tolerance")
+        ->type_name("REL");
     sub->add_option("--abs-tolerance", a->abs_tolerance,
                     "a length (exact, e.g. 1e-9; JSON claims): a point within it of its body is taken as in it, a "
                     "distance or depth within it plus the relative tolerance as right, a body within it past a "
