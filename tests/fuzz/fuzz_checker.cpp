@@ -54,7 +54,20 @@ void compare_compound_with_engine(const J& c) {
             fuzz::finding("the checker accepted a wrong compound growth interval");
 }
 
-// An accepted compound judgements file: the engine, on the stored scene, claims and tolerance,
+// The options certify-fp judged a judgements file's claims with: its tolerance and, when it has
+// one, its absolute tolerance (the checker has accepted both as exact numbers).
+ClaimOptions options_of(const J& c) {
+    auto q = [](const J& j) {
+        Q v(j.get<std::string>());
+        v.canonicalize();
+        return v;
+    };
+    ClaimOptions o{true, q(c.at("tolerance")), true};
+    if (c.contains("abs_tolerance")) o.abs_tolerance = q(c.at("abs_tolerance"));
+    return o;
+}
+
+// An accepted compound judgements file: the engine, on the stored scene, claims and tolerances,
 // must give every judgement the file states.
 void compare_compound_judgements_with_engine(const J& c) {
     const ExactScene sc = compound_scene_of(c);
@@ -64,8 +77,7 @@ void compare_compound_judgements_with_engine(const J& c) {
     try {
         CompoundJudge judge(sc, "scene");
         long wrong = 0;
-        report = certify_fp(judge, doc.dump(), "fuzz",
-                            ClaimOptions{true, Q(c.at("tolerance").get<std::string>()), true}, &wrong);
+        report = certify_fp(judge, doc.dump(), "fuzz", options_of(c), &wrong);
     } catch (const InputError& e) {
         const std::string what = e.what();
         if (what.find("the limit") != std::string::npos) return;  // past the engine's limits: nothing to compare
@@ -106,8 +118,7 @@ void compare_with_engine(const J& c) {
         long wrong = 0;
         std::string report;
         try {
-            report = certify_fp(ClaimModels::of(m, cv), doc.dump(), "fuzz",
-                                ClaimOptions{true, Q(exact(c.at("tolerance"))), true}, &wrong);
+            report = certify_fp(ClaimModels::of(m, cv), doc.dump(), "fuzz", options_of(c), &wrong);
         } catch (const InputError& e) {
             fuzz::finding(std::string("the checker accepted claims the engine refuses: ") + e.what());
         }
