@@ -111,7 +111,9 @@ bool is_float(const py::handle& h) {
            (has_attr(h, "dtype") && py::str(h.attr("dtype").attr("kind")).cast<std::string>() == "f");
 }
 
-Rational rational(const py::handle& h, const char* what) {
+// A float is read as `numbers` says (scalecert::held): its value, the float32 nearest it, or its
+// shortest decimal as written.
+Rational rational(const py::handle& h, const char* what, scalecert::Numbers numbers = scalecert::Numbers::Double) {
     try {
         if (py::isinstance<py::bool_>(h)) throw scalecert::InputError("a bool is not a number");
         if (has_attr(h, "ndim") && py::int_(h.attr("ndim")).cast<long>() != 0)
@@ -120,7 +122,7 @@ Rational rational(const py::handle& h, const char* what) {
         if (is_float(h)) {
             const double d = py::float_(h.cast<py::object>()).cast<double>();
             if (!std::isfinite(d)) throw scalecert::InputError("not a finite number");
-            return scalecert::exact(d);
+            return scalecert::held(d, numbers);
         }
         if (has_attr(h, "numerator") && has_attr(h, "denominator")) {  // int, Fraction, numpy integers
             const mpz_class n = mpz_of(py::int_(h.attr("numerator"))), d = mpz_of(py::int_(h.attr("denominator")));
@@ -157,23 +159,39 @@ py::list as_list(const py::handle& h, const std::string& what) {
     return py::list(py::reinterpret_borrow<py::object>(h));
 }
 
-scalecert::Point point(const py::handle& h, const std::string& what) {
+scalecert::Point point(const py::handle& h, const std::string& what,
+                       scalecert::Numbers numbers = scalecert::Numbers::Double) {
     py::list l = as_list(h, what);
     if (l.size() != 3) throw scalecert::InputError(what + ": expected 3 coordinates");
-    return {rational(l[0], what.c_str()), rational(l[1], what.c_str()), rational(l[2], what.c_str())};
+    return {rational(l[0], what.c_str(), numbers), rational(l[1], what.c_str(), numbers),
+            rational(l[2], what.c_str(), numbers)};
 }
 
-std::vector<scalecert::Point> points(const py::handle& h, const std::string& what) {
+std::vector<scalecert::Point> points(const py::handle& h, const std::string& what,
+                                     scalecert::Numbers numbers = scalecert::Numbers::Double) {
     std::vector<scalecert::Point> out;
     py::list l = as_list(h, what);
-    for (size_t i = 0; i < l.size(); ++i) out.push_back(point(l[i], what + "[" + std::to_string(i) + "]"));
+    for (size_t i = 0; i < l.size(); ++i) out.push_back(point(l[i], what + "[" + std::to_string(i) + "]", numbers));
     return out;
 }
 
-scalecert::Interval interval(const py::handle& h, const std::string& what) {
+scalecert::Interval interval(const py::handle& h, const std::string& what,
+                             scalecert::Numbers numbers = scalecert::Numbers::Double) {
     py::list l = as_list(h, what);
     if (l.size() != 2) throw scalecert::InputError(what + ": expected (lo, hi)");
-    return {rational(l[0], what.c_str()), rational(l[1], what.c_str())};
+    return {rational(l[0], what.c_str(), numbers), rational(l[1], what.c_str(), numbers)};
+}
+
+// numbers="double" | "float32" | "exact" (scalecert::Numbers).
+scalecert::Numbers numbers_arg(const py::handle& h) {
+    if (py::isinstance<py::str>(h)) {
+        const std::string s = py::str(h).cast<std::string>();
+        if (s == "double") return scalecert::Numbers::Double;
+        if (s == "float32") return scalecert::Numbers::Float32;
+        if (s == "exact") return scalecert::Numbers::Exact;
+    }
+    throw scalecert::InputError("numbers: expected 'double', 'float32' or 'exact', not " +
+                                py::repr(h).cast<std::string>());
 }
 
 py::object json_loads(const std::string& text) { return py::module_::import("json").attr("loads")(text); }
@@ -338,23 +356,23 @@ struct PyScene {
 };
 
 // seeds = (s1, s2) or None; either may be None (the mean of the object's points).
-std::array<std::optional<scalecert::Point>, 2> seeds_of(const py::handle& seeds) {
+std::array<std::optional<scalecert::Point>, 2> seeds_of(const py::handle& seeds, scalecert::Numbers numbers) {
     std::array<std::optional<scalecert::Point>, 2> s;
     if (!seeds.is_none()) {
         py::list l = as_list(seeds, "seeds");
         if (l.size() != 2) throw scalecert::InputError("seeds: expected (seed1, seed2); either may be None");
         for (int i = 0; i < 2; ++i)
-            if (!l[i].is_none()) s[static_cast<size_t>(i)] = point(l[i], "seeds[" + std::to_string(i) + "]");
+            if (!l[i].is_none()) s[static_cast<size_t>(i)] = point(l[i], "seeds[" + std::to_string(i) + "]", numbers);
     }
     return s;
 }
 
 PyScene make_scene(const py::handle& p1, const py::handle& p2, const py::handle& i1, const py::handle& i2,
-                   const py::handle& seeds) {
-    const auto s = seeds_of(seeds);
-    return PyScene{
-        scalecert::Scene(points(p1, "P1"), points(p2, "P2"), interval(i1, "I1"), interval(i2, "I2"), s[0], s[1]),
-        nullptr};
+                   const py::handle& seeds, scalecert::Numbers numbers) {
+    const auto s = seeds_of(seeds, numbers);
+    return PyScene{scalecert::Scene(points(p1, "P1", numbers), points(p2, "P2", numbers), interval(i1, "I1", numbers),
+                                    interval(i2, "I2", numbers), s[0], s[1]),
+                   nullptr};
 }
 
 py::dict curve_dict(const scalecert::Curve& c) {
@@ -393,7 +411,7 @@ py::dict certify_arrays(const CertifyFn& certify, const std::string& kind, const
                         const py::handle& rho2, const py::handle& value, const py::handle& closest,
                         const py::handle& direction, const py::handle& normal, const py::handle& offset,
                         const py::handle& point_, const py::handle& verdict, const py::handle& tolerance,
-                        const py::handle& abs_tolerance, bool certificate, bool fractions) {
+                        const py::handle& abs_tolerance, bool certificate, bool fractions, scalecert::Numbers numbers) {
     using scalecert::ClaimKind;
     static const std::map<std::string, ClaimKind> kinds = {{"distance", ClaimKind::Distance},
                                                            {"penetration_depth", ClaimKind::PenetrationDepth},
@@ -442,14 +460,14 @@ py::dict certify_arrays(const CertifyFn& certify, const std::string& kind, const
         const std::string at = "[" + std::to_string(i) + "]";
         scalecert::Claim& c = claims[i];
         c.kind = ck;
-        c.rho1 = rational(r1[i], ("rho1" + at).c_str());
-        c.rho2 = rational(r2[i], ("rho2" + at).c_str());
+        c.rho1 = rational(r1[i], ("rho1" + at).c_str(), numbers);
+        c.rho2 = rational(r2[i], ("rho2" + at).c_str(), numbers);
         // The program's answers: a NaN or an infinity there is no answer (the claim is wrong).
         auto answer = [&](const py::handle& h, const char* field, Rational& q) {
             if (non_finite(h)) {
                 if (c.no_answer.empty()) c.no_answer = field;
             } else {
-                q = rational(h, (field + at).c_str());
+                q = rational(h, (field + at).c_str(), numbers);
             }
         };
         auto answer_point = [&](const py::handle& h, const char* field, const std::string& what, scalecert::Point& p) {
@@ -457,7 +475,7 @@ py::dict certify_arrays(const CertifyFn& certify, const std::string& kind, const
             if (l.size() == 3 && (non_finite(l[0]) || non_finite(l[1]) || non_finite(l[2]))) {
                 if (c.no_answer.empty()) c.no_answer = field;
             } else {
-                p = point(h, what);
+                p = point(h, what, numbers);
             }
         };
         if (values) answer((*values)[i], "value", c.value);
@@ -609,49 +627,66 @@ PYBIND11_MODULE(scalecert, m) {
 
     py::class_<PyScene>(m, "Scene")
         .def(py::init([](const py::handle& p1, const py::handle& p2, const py::handle& i1, const py::handle& i2,
-                         const py::handle& seeds) { return make_scene(p1, p2, i1, i2, seeds); }),
+                         const py::handle& seeds, const py::handle& numbers) {
+                 return make_scene(p1, p2, i1, i2, seeds, numbers_arg(numbers));
+             }),
              py::arg("P1"), py::arg("P2"), py::arg("I1"), py::arg("I2"), py::arg("seeds") = py::none(),
+             py::arg("numbers") = "double",
              "Two convex objects. Vertices as lists or numpy arrays of ints, Fractions, Decimals, decimal strings or "
-             "floats (a float is taken at its exact value); I1, I2 = (lo, hi); seeds = (s1, s2), default the means.")
+             "floats; I1, I2 = (lo, hi); seeds = (s1, s2), default the means. A float is read as numbers says: "
+             "'double' (its exact value), 'float32' (the float nearest it, as a float32 program holds it) or 'exact' "
+             "(its shortest decimal, as written: 0.1 is 1/10); str, Fraction, Decimal and int are exact always.")
         .def_static(
             "from_parts",
             [](const py::handle& p1, const py::handle& p2, const py::handle& i1, const py::handle& i2,
-               const py::handle& seeds) {
+               const py::handle& seeds, const py::handle& numbers_) {
+                const scalecert::Numbers numbers = numbers_arg(numbers_);
                 std::vector<std::vector<scalecert::Point>> parts[2];
                 const char* names[2] = {"P1", "P2"};
                 const py::handle ps[2] = {p1, p2};
                 for (int i = 0; i < 2; ++i) {
                     py::list l = as_list(ps[i], names[i]);
                     for (size_t k = 0; k < l.size(); ++k)
-                        parts[i].push_back(points(l[k], std::string(names[i]) + "[" + std::to_string(k) + "]"));
+                        parts[i].push_back(
+                            points(l[k], std::string(names[i]) + "[" + std::to_string(k) + "]", numbers));
                 }
-                const auto s = seeds_of(seeds);
-                return PyScene{scalecert::Scene::from_parts(std::move(parts[0]), std::move(parts[1]),
-                                                            interval(i1, "I1"), interval(i2, "I2"), s[0], s[1]),
-                               nullptr};
+                const auto s = seeds_of(seeds, numbers);
+                return PyScene{
+                    scalecert::Scene::from_parts(std::move(parts[0]), std::move(parts[1]), interval(i1, "I1", numbers),
+                                                 interval(i2, "I2", numbers), s[0], s[1]),
+                    nullptr};
             },
             py::arg("P1"), py::arg("P2"), py::arg("I1"), py::arg("I2"), py::arg("seeds") = py::none(),
+            py::arg("numbers") = "double",
             "Two objects made of convex parts: P1, P2 lists of parts, each a list of vertices (numbers as for "
             "Scene); seeds = (s1, s2), either may be None: the mean of all that object's vertices.")
         .def_static(
             "load",
-            [](const py::handle& path) {
-                return warn_notes(PyScene{scalecert::Scene::load(path_arg(path, "path")), nullptr});
+            [](const py::handle& path, const py::handle& numbers) {
+                return warn_notes(
+                    PyScene{scalecert::Scene::load(path_arg(path, "path"), numbers_arg(numbers)), nullptr});
             },
-            py::arg("path"),
+            py::arg("path"), py::arg("numbers") = "double",
             "a scene file (JSON); its objects given by vertices or as \"parts\" (each may have a \"name\"); "
-            "a note on reading (an OBJ mesh with several groups read as one convex object) is a UserWarning")
+            "JSON numbers and mesh decimals read as numbers says ('double', 'float32' or 'exact'; JSON strings are "
+            "exact always); "
+            "a note on reading (an OBJ mesh with several groups read as one convex object, decimals that are not "
+            "doubles exactly) is a UserWarning")
         .def_static(
             "from_meshes",
             [](const py::handle& p1, const py::handle& p2, const py::handle& i1, const py::handle& i2,
-               const py::handle& groups) {
+               const py::handle& groups, const py::handle& numbers_) {
+                const scalecert::Numbers numbers = numbers_arg(numbers_);
                 return warn_notes(
-                    PyScene{scalecert::Scene::from_meshes(path_arg(p1, "p1"), path_arg(p2, "p2"), interval(i1, "I1"),
-                                                          interval(i2, "I2"), flag_arg(groups, "parts_from_groups")),
+                    PyScene{scalecert::Scene::from_meshes(path_arg(p1, "p1"), path_arg(p2, "p2"),
+                                                          interval(i1, "I1", numbers), interval(i2, "I2", numbers),
+                                                          flag_arg(groups, "parts_from_groups"), numbers),
                             nullptr});
             },
             py::arg("p1"), py::arg("p2"), py::arg("I1"), py::arg("I2"), py::arg("parts_from_groups") = false,
-            "mesh files (.off .obj .ply .stl), each one convex object; with parts_from_groups=True each OBJ file's "
+            py::arg("numbers") = "double",
+            "mesh files (.off .obj .ply .stl; text decimals and float I1, I2 read as numbers says), each one convex "
+            "object; with parts_from_groups=True each OBJ file's "
             "groups with faces are its convex parts, named by their groups. An OBJ file with several groups read "
             "as one convex object gives a UserWarning saying so")
         .def_property_readonly(
@@ -750,10 +785,16 @@ PYBIND11_MODULE(scalecert, m) {
         .def(
             "certify_fp",
             [](const PyScene& s, const py::handle& claims, const py::handle& exact_decimals,
-               const py::handle& tolerance, const py::handle& certificate,
-               const py::handle& abs_tolerance) -> py::object {
+               const py::handle& tolerance, const py::handle& certificate, const py::handle& abs_tolerance,
+               const py::handle& numbers) -> py::object {
                 scalecert::ClaimOptions opt;
-                opt.exact_decimals = flag_arg(exact_decimals, "exact_decimals");
+                opt.numbers = numbers_arg(numbers);
+                // exact_decimals=True: the earlier name of numbers='exact'.
+                if (flag_arg(exact_decimals, "exact_decimals")) {
+                    if (opt.numbers != scalecert::Numbers::Double && opt.numbers != scalecert::Numbers::Exact)
+                        throw scalecert::InputError("exact_decimals=True and numbers='float32' disagree");
+                    opt.numbers = scalecert::Numbers::Exact;
+                }
                 opt.tolerance = rational(tolerance, "tolerance");
                 opt.abs_tolerance = rational(abs_tolerance, "abs_tolerance");
                 opt.certificate = flag_arg(certificate, "certificate");
@@ -762,11 +803,12 @@ PYBIND11_MODULE(scalecert, m) {
                 return py::make_tuple(json_loads(r.report), r.certificate);
             },
             py::arg("claims"), py::arg("exact_decimals") = false, py::arg("tolerance") = 0,
-            py::arg("certificate") = false, py::arg("abs_tolerance") = 0,
+            py::arg("certificate") = false, py::arg("abs_tolerance") = 0, py::arg("numbers") = "double",
             "marks claims right or wrong: the text of a claims file (JSON scalecert-claims-1, or 'RHO1 RHO2 VERDICT' / "
-            "'curve RHO1 RHO2' / 'growth RHO' lines), a scalecert-claims-1 dict, or a list of claim dicts. A float "
-            "means "
-            "the double it is (exact_decimals reads JSON text's decimals as written); a str or a Fraction is exact. "
+            "'curve RHO1 RHO2' / 'growth RHO' lines), a scalecert-claims-1 dict, or a list of claim dicts. A JSON "
+            "number or decimal (a float: its shortest repr) is read as numbers says: 'double' (the double it is), "
+            "'float32' (the float a float32 program holds) or 'exact' (as written; exact_decimals=True is the same); "
+            "a str or a Fraction is exact. "
             "tolerance and abs_tolerance as certify-fp's --tolerance and --abs-tolerance. "
             "Returns the report of scalecert certify-fp --json, as a dict; with certificate=True, (the report, the "
             "judgements certificate's text for scalecert-check)")
@@ -776,23 +818,25 @@ PYBIND11_MODULE(scalecert, m) {
                const py::handle& value, const py::handle& closest, const py::handle& direction,
                const py::handle& normal, const py::handle& offset, const py::handle& point_, const py::handle& verdict,
                const py::handle& tolerance, const py::handle& certificate, const py::handle& fractions,
-               const py::handle& abs_tolerance) {
+               const py::handle& abs_tolerance, const py::handle& numbers) {
                 const scalecert::Analysis& a = s.a();
                 return certify_arrays([&a](const auto& c, const auto& o) { return a.certify(c, o); },
                                       text_arg(kind, "kind"), rho1, rho2, value, closest, direction, normal, offset,
                                       point_, verdict, tolerance, abs_tolerance, flag_arg(certificate, "certificate"),
-                                      flag_arg(fractions, "fractions"));
+                                      flag_arg(fractions, "fractions"), numbers_arg(numbers));
             },
             py::arg("kind"), py::arg("rho1"), py::arg("rho2"), py::arg("value") = py::none(),
             py::arg("closest") = py::none(), py::arg("direction") = py::none(), py::arg("normal") = py::none(),
             py::arg("offset") = py::none(), py::arg("point") = py::none(), py::arg("verdict") = py::none(),
             py::arg("tolerance") = 0, py::arg("certificate") = false, py::arg("fractions") = false,
-            py::arg("abs_tolerance") = 0,
+            py::arg("abs_tolerance") = 0, py::arg("numbers") = "double",
             "claims of one kind over arrays: kind 'distance' (value, optional closest of shape (n, 2, 3)), "
             "'penetration_depth' (value, optional direction (n, 3)), 'verdict' (verdict: a str or n strs), "
             "'separating_plane' (normal (n, 3), optional offset) or 'witness_point' (point (n, 3)); rho1, rho2 and "
             "value "
-            "of length n. A float is the double it is. tolerance is a relative error, abs_tolerance a length within "
+            "of length n. A float is read as numbers says ('double': the double it is; 'float32': the float nearest "
+            "it; "
+            "'exact': its shortest decimal). tolerance is a relative error, abs_tolerance a length within "
             "which points, distances, depths and planes may be off (certificates/CLAIMS.md, 'Tolerances'; give '1e-9' "
             "or a "
             "Fraction for the decimal). Returns a dict of numpy arrays: right (bool), value_right, "

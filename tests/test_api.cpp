@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <random>
@@ -211,7 +212,7 @@ BOOST_AUTO_TEST_CASE(claims_and_golden_data_through_the_public_api) {
     BOOST_TEST(a.certify_fp("0.1 2.9 separated\n").wrong == 0);
     BOOST_TEST(a.certify_fp("0.1 2.9 touching\n").wrong == 1);
     scalecert::ClaimOptions decimals;
-    decimals.exact_decimals = true;
+    decimals.numbers = scalecert::Numbers::Exact;
     BOOST_TEST(a.certify_fp("0.1 2.9 touching\n", decimals).wrong == 0);
     BOOST_TEST(a.certify_fp("1/10 29/10 touching\n").wrong == 0);  // a fraction is exact either way
     // In JSON, a number is the double and a string exact, whatever the option.
@@ -779,4 +780,40 @@ BOOST_AUTO_TEST_CASE(large_off_meshes_read_as_integers_answer_as_the_exact_scene
     BOOST_TEST(ga.json == gb.json);
     BOOST_TEST(ga.csv == gb.csv);
     for (const std::string& p : paths) std::remove(p.c_str());
+}
+
+// One rule for numbers: a mesh's decimal is the double a program reads from it by default, the
+// float with Numbers::Float32, and the decimal as written with Numbers::Exact; the scene says how
+// many decimals were not read as written.
+BOOST_AUTO_TEST_CASE(mesh_and_scene_numbers_are_what_the_program_holds) {
+    using scalecert::Numbers;
+    const std::string dir = "/tmp/scalecert-test-api-numbers-" + std::to_string(::getpid());
+    std::filesystem::create_directories(dir);
+    // A tetrahedron with one vertex at x = 0.1 (no double, no float) and a cube.
+    {
+        std::ofstream(dir + "/t.off") << "OFF\n4 0 0\n0.1 0 0\n1 0 0\n0 1 0\n0 0 1\n";
+        std::ofstream(dir + "/c.off") << "OFF\n8 0 0\n5 0 0\n6 0 0\n5 1 0\n6 1 0\n5 0 1\n6 0 1\n5 1 1\n6 1 1\n";
+    }
+    const scalecert::Interval I{R(1, 2), R(2)};
+    const R tenth_double = scalecert::exact(0.1), tenth_float(R(13421773) / R(mpz_class(1) << 27));
+    const std::pair<Numbers, R> cases[] = {
+        {Numbers::Double, tenth_double}, {Numbers::Float32, tenth_float}, {Numbers::Exact, R(1, 10)}};
+    for (const auto& [numbers, x] : cases) {
+        const scalecert::Scene s = scalecert::Scene::from_meshes(dir + "/t.off", dir + "/c.off", I, I, false, numbers);
+        BOOST_TEST((s.points(0)[0][0] == x));
+        const std::vector<std::string> notes = s.notes();
+        // One decimal (0.1) is not read as written, except by Exact.
+        BOOST_TEST(notes.size() == (numbers == Numbers::Exact ? 0u : 1u));
+        if (!notes.empty()) BOOST_TEST(notes[0].rfind("1 number written as decimals is not a", 0) == 0, notes[0]);
+    }
+    // A scene file: JSON numbers the same way, JSON strings exact always.
+    std::ofstream(dir + "/s.json") << R"({"P1": {"vertices": [[0.1,0,0],["0.1",1,0],[0,0,1],[1,1,1]]},
+        "P2": {"vertices": [[5,0,0],[6,0,0],[5,1,0],[5,0,1]]}, "I1": [0.5, 2], "I2": ["0.5", 2]})";
+    for (const auto& [numbers, x] : cases) {
+        const scalecert::Scene s = scalecert::Scene::load(dir + "/s.json", numbers);
+        BOOST_TEST((s.points(0)[0][0] == x));
+        BOOST_TEST((s.points(0)[1][0] == R(1, 10)));
+        BOOST_TEST((s.range(0).lo == R(1, 2)));
+    }
+    std::filesystem::remove_all(dir);
 }

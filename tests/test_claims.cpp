@@ -24,11 +24,11 @@ BOOST_AUTO_TEST_CASE(certify_fp_marks_hand_derived_claims) {
     std::string r = certify_fp(m, c,
                                "1 2 touching\n1 1.99 separated\n1 2.01 separated\n1 2.01 intersecting\n"
                                "curve 1 2\ncurve 1 2.000001\ngrowth 3/2\ngrowth 1.5000001\n",
-                               "claims", false, false, &wrong);
+                               "claims", Numbers::Double, false, &wrong);
     BOOST_TEST(wrong == 3);  // (1, 2.01) is overlapping; the curve is at 2; ρ* is 3/2 exactly
     BOOST_TEST(r.find("claims: 8, right: 5, wrong: 3") != std::string::npos);
-    BOOST_CHECK_THROW(certify_fp(m, c, "1 2 maybe\n", "claims", false, false, &wrong), InputError);
-    BOOST_CHECK_THROW(certify_fp(m, c, "-1 2 touching\n", "claims", false, false, &wrong), InputError);
+    BOOST_CHECK_THROW(certify_fp(m, c, "1 2 maybe\n", "claims", Numbers::Double, false, &wrong), InputError);
+    BOOST_CHECK_THROW(certify_fp(m, c, "-1 2 touching\n", "claims", Numbers::Double, false, &wrong), InputError);
 }
 
 // ---- JSON claims: every kind, against values worked out by hand -------------------------------
@@ -41,11 +41,12 @@ struct Claims {
     explicit Claims(const std::string& bundled)
         : Claims(load_scene(std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/" + bundled + ".json")) {}
     // The report of one claim (JSON), and whether it was right. These cases read decimals exactly
-    // (exact_decimals) unless binary_doubles.
+    // (Numbers::Exact) unless binary_doubles.
     nlohmann::json one(const std::string& claim, const std::string& tolerance = "0", bool binary_doubles = false) {
         long wrong = -1;
-        const std::string r = certify_fp(m, c, "{\"format\": \"scalecert-claims-1\", \"claims\": [" + claim + "]}",
-                                         "c.json", ClaimOptions{!binary_doubles, parse_exact(tolerance), true}, &wrong);
+        const std::string r = certify_fp(
+            m, c, "{\"format\": \"scalecert-claims-1\", \"claims\": [" + claim + "]}", "c.json",
+            ClaimOptions{binary_doubles ? Numbers::Double : Numbers::Exact, parse_exact(tolerance), true}, &wrong);
         auto j = nlohmann::json::parse(r)["claims"][0];
         BOOST_TEST(wrong == (j["right"].get<bool>() ? 0 : 1));
         return j;
@@ -144,9 +145,11 @@ BOOST_AUTO_TEST_CASE(curve_claim_rules) {
     BOOST_TEST(refused(R"({"kind": "growth_distance", "value": "-18/11"})").find(">= 0") != std::string::npos);
     long wrong = -1;
     for (const char* line : {"curve 1 0\n", "curve 0 9/2\n", "curve 1 -2\n", "growth -1\n"})
-        BOOST_CHECK_THROW(certify_fp(k.m, k.c, line, "c.txt", ClaimOptions{true, Q(0), false}, &wrong), InputError);
-    BOOST_TEST(certify_fp(k.m, k.c, "curve 1 2\ncurve 3/2 12/7\n", "c.txt", ClaimOptions{true, Q(0), false}, &wrong)
-                   .find("wrong: 0") != std::string::npos);
+        BOOST_CHECK_THROW(certify_fp(k.m, k.c, line, "c.txt", ClaimOptions{Numbers::Exact, Q(0), false}, &wrong),
+                          InputError);
+    BOOST_TEST(
+        certify_fp(k.m, k.c, "curve 1 2\ncurve 3/2 12/7\n", "c.txt", ClaimOptions{Numbers::Exact, Q(0), false}, &wrong)
+            .find("wrong: 0") != std::string::npos);
     // Rule 4 at a switch point: the chord over [1/2, 3/2] (within a tolerance of 1/2 of the curve)
     // has its midpoint at the switch point (1, 2), whose contact is VE (EE, the next
     // piece's, is wrong there).
@@ -326,7 +329,7 @@ BOOST_AUTO_TEST_CASE(malformed_claims_get_one_line) {
     auto err = [&](const std::string& text) {
         long wrong = 0;
         try {
-            certify_fp(k.m, k.c, text, "c.json", ClaimOptions{true, Q(0), false}, &wrong);
+            certify_fp(k.m, k.c, text, "c.json", ClaimOptions{Numbers::Exact, Q(0), false}, &wrong);
         } catch (const InputError& e) {
             return std::string(e.what());
         }
@@ -365,7 +368,7 @@ BOOST_AUTO_TEST_CASE(outputs_that_are_no_answer) {
         {"kind": "curve_point", "rho1": 1, "rho2": Infinity},
         {"kind": "growth_distance", "value": null}]})";
     const nlohmann::json r =
-        nlohmann::json::parse(certify_fp(k.m, k.c, batch, "c.json", ClaimOptions{false, Q(0), true}, &wrong));
+        nlohmann::json::parse(certify_fp(k.m, k.c, batch, "c.json", ClaimOptions{Numbers::Double, Q(0), true}, &wrong));
     BOOST_TEST(wrong == 6);
     const auto& cl = r["claims"];
     BOOST_TEST(cl[0]["right"].get<bool>());
@@ -380,7 +383,7 @@ BOOST_AUTO_TEST_CASE(outputs_that_are_no_answer) {
     // The line format: printf's nan and inf where the program answers; a non-number scaling is
     // bad input, as is a non-number in a curve claim.
     const std::string lines = certify_fp(ClaimModels::of(k.m, k.c), "growth nan\ncurve 1 -INF\ngrowth 3/2\n", "c.txt",
-                                         ClaimOptions{false, Q(0), false}, &wrong, &count);
+                                         ClaimOptions{Numbers::Double, Q(0), false}, &wrong, &count);
     BOOST_TEST(wrong == 2);
     BOOST_TEST(count == 3);
     BOOST_TEST(lines.find("WRONG  growth distance nan: value is not a number: no answer") != std::string::npos, lines);
@@ -431,7 +434,7 @@ BOOST_AUTO_TEST_CASE(absolute_tolerance_on_points_values_and_planes) {
     // 10 wrong (the points lie in the bodies, 1.5 + 3e-9 apart: more than 3/2 + 2e-9).
     const std::vector<bool> within = {true, true, false, true, false, true, true, false, true, true, false};
     long wrong = -1;
-    ClaimOptions exact{false, Q(0), true};
+    ClaimOptions exact{Numbers::Double, Q(0), true};
     const nlohmann::json e = nlohmann::json::parse(certify_fp(k.m, k.c, batch, "c.json", exact, &wrong));
     for (size_t i = 0; i < within.size(); ++i) BOOST_TEST(!e["claims"][i]["right"].get<bool>(), i);
     ClaimOptions tol = exact;
@@ -461,7 +464,7 @@ BOOST_AUTO_TEST_CASE(absolute_tolerance_on_points_values_and_planes) {
     // A negative tolerance, or one on lines, is bad input.
     tol.abs_tolerance = -1;
     BOOST_CHECK_THROW(certify_fp(k.m, k.c, batch, "c.json", tol, &wrong), InputError);
-    ClaimOptions lines{false, Q(0), false};
+    ClaimOptions lines{Numbers::Double, Q(0), false};
     lines.abs_tolerance = 1;
     BOOST_CHECK_THROW(certify_fp(ClaimModels::of(k.m, k.c), "1 1 separated\n", "c.txt", lines, &wrong), InputError);
 }

@@ -123,7 +123,7 @@ BOOST_AUTO_TEST_CASE(bad_inputs) {
     write("bad2.off", "PLY\n");
     expect_error("not OFF", S("v.json", scene("{\"off\": \"bad2.off\"}", poly(kCube2))), "malformed OFF");
     write("bad3.off", "OFF\n4 1 0\n0 0 0\n1 0 x\n0 1 0\n0 0 1\n");
-    expect_error("OFF bad number", S("w.json", scene("{\"off\": \"bad3.off\"}", poly(kCube2))), "not an exact number");
+    expect_error("OFF bad number", S("w.json", scene("{\"off\": \"bad3.off\"}", poly(kCube2))), "'x' is not a number");
     expect_error("no such scene", "curve " + (workdir() / "absent.json").string(), "cannot open");
     fs::path g = write("good.json", good);
     expect_error("rho1 = 0", "query " + g.string() + " 0 1", "RHO1");
@@ -151,13 +151,18 @@ BOOST_AUTO_TEST_CASE(query_words_and_exact_numbers) {
     BOOST_TEST(run("query " + g.string() + " 1 2").out == "touching\n");
     BOOST_TEST(run("query " + g.string() + " 1 1.99").out == "separated\n");
     BOOST_TEST(run("query " + g.string() + " 3/2 1.5000001").out == "overlapping\n");
-    // 0.1 + 2.9 = 3 exactly, but not in doubles: exact reading says touching...
-    BOOST_TEST(run("query " + g.string() + " 0.1 2.9").out == "touching\n");
-    // ...and --binary-doubles reads the doubles 0.1 and 2.9, whose exact sum is 3 − 2^-51·(...):
-    // 0.1 = 3602879701896397/2^55 > 1/10 and 2.9 = 6530219459687219/2^51 < 29/10.
-    // Exact: 3602879701896397/2^55 + 6530219459687219/2^51 − 3 = (3602879701896397 + 16·6530219459687219 − 3·2^55)/2^55
-    //      = (3602879701896397 + 104483511354995504 − 108086391056891904)/2^55 = −3/2^55 < 0: separated.
-    BOOST_TEST(run("query " + g.string() + " 0.1 2.9 --binary-doubles").out == "separated\n");
+    // A command-line decimal is the double a program reads from it (--numbers double, the default):
+    // 0.1 = 3602879701896397/2^55 > 1/10 and 2.9 = 6530219459687219/2^51 < 29/10, whose sum is
+    // (3602879701896397 + 16·6530219459687219 − 3·2^55)/2^55 + 3
+    //      = (3602879701896397 + 104483511354995504 − 108086391056891904)/2^55 + 3 = 3 − 3/2^55: separated.
+    BOOST_TEST(run("query " + g.string() + " 0.1 2.9").out == "separated\n");
+    BOOST_TEST(run("query " + g.string() + " 0.1 2.9 --binary-doubles").out == "separated\n");  // the earlier name
+    // As floats (strtof): 0.1f = 13421773/2^27 and 2.9f = 12163482/2^22 (2.9·2^22 = 12163481.6 rounds
+    // up), summing to (13421773 + 32·12163482)/2^27 = 402653197/2^27 = 3 + 13/2^27: overlapping.
+    BOOST_TEST(run("query " + g.string() + " 0.1 2.9 --numbers float32").out == "overlapping\n");
+    // As written, 1/10 + 29/10 = 3: touching. A fraction is exact under every reading.
+    BOOST_TEST(run("query " + g.string() + " 0.1 2.9 --numbers exact").out == "touching\n");
+    BOOST_TEST(run("query " + g.string() + " 1/10 29/10 --numbers float32").out == "touching\n");
 }
 
 BOOST_AUTO_TEST_CASE(classify_many_pairs) {
@@ -934,7 +939,8 @@ std::string without_model(const std::string& json) {
 BOOST_AUTO_TEST_CASE(curve_engines_agree_and_large_meshes_scan) {
     const std::string a = write("s1.off", sphere_off(1200, 0, 1)).string(),
                       b = write("s2.off", sphere_off(1300, 160, 2)).string();
-    const std::string args = "curve --p1 " + a + " --p2 " + b + " --i1 1/2,2 --i2 1/2,2";
+    // Read as written (the decimals have two places), the points fit machine integers over 100.
+    const std::string args = "curve --p1 " + a + " --p2 " + b + " --i1 1/2,2 --i2 1/2,2 --numbers exact";
     const Run automatic = run(args), hull = run(args + " --engine hull"), scan = run(args + " --engine scan");
     BOOST_REQUIRE(automatic.status == 0);
     BOOST_REQUIRE(hull.status == 0);
@@ -942,6 +948,34 @@ BOOST_AUTO_TEST_CASE(curve_engines_agree_and_large_meshes_scan) {
     BOOST_TEST(!nlohmann::json::parse(hull.out)["model"].contains("engine"));
     BOOST_TEST(without_model(automatic.out) == without_model(hull.out));
     BOOST_TEST(scan.out == automatic.out);
+    // Read as floats, coordinates below 64 with at least 2^-30 between floats (0.01 is the smallest
+    // nonzero one) fit machine integers over 2^30 too: the scan path, and the hull path's curve.
+    const std::string f32 = "curve --p1 " + a + " --p2 " + b + " --i1 1/2,2 --i2 1/2,2 --numbers float32";
+    const Run fa = run(f32), fh = run(f32 + " --engine hull");
+    BOOST_TEST(nlohmann::json::parse(fa.out)["model"]["engine"] == "scan");
+    BOOST_TEST(without_model(fa.out) == without_model(fh.out));
+    BOOST_TEST(without_model(fa.out) != without_model(automatic.out));  // other points, another curve
+    // Read as doubles (the default), a decimal with two places is a double exactly only when its
+    // hundredths are 00, 25, 50 or 75: the command says once how many others it read, counted here
+    // from the text.
+    long inexact = 0;
+    for (const std::string& f : {a, b}) {
+        std::istringstream in(slurp(f));
+        std::string w;
+        for (int k = 0; k < 4; ++k) in >> w;  // OFF n 0 0
+        while (in >> w) {
+            const std::string h = w.substr(w.size() - 2);
+            if (h != "00" && h != "25" && h != "50" && h != "75") ++inexact;
+        }
+    }
+    const Run dbl = run("curve --p1 " + a + " --p2 " + b + " --i1 1/2,2 --i2 1/2,2");
+    BOOST_TEST(dbl.status == 0);
+    BOOST_TEST(dbl.err.find("scalecert: note: " + std::to_string(inexact) +
+                            " numbers written as decimals are not a "
+                            "double exactly") != std::string::npos,
+               dbl.err);
+    BOOST_TEST(without_model(dbl.out) ==
+               without_model(run("curve --p1 " + a + " --p2 " + b + " --i1 1/2,2 --i2 1/2,2 --engine hull").out));
     // The bundled scenes through the command: the same document with either engine.
     for (const auto& e : fs::directory_iterator(fs::path(SCALECERT_SOURCE_DIR) / "certificates" / "scenes")) {
         if (!e.is_regular_file()) continue;  // (compound/: objects made of parts)
@@ -1112,8 +1146,10 @@ BOOST_AUTO_TEST_CASE(region_of_compounds) {
             "region " + band + " --classify " + pairs.string() + " --certificate " + (workdir() / "c.json").string(),
             "--classify writes verdicts only");
     }
-    expect_error("empty --at", "region " + band + " --at ''", "--at: '' is not an exact number");
-    expect_error("long --at", "region " + band + " --at 1e1000,1", "--at: '1e1000,1' lies outside I1 x I2");
+    expect_error("empty --at", "region " + band + " --at ''", "--at: '' is not a number");
+    expect_error("long --at", "region " + band + " --at 1e1000,1", "--at: '1e1000' is beyond the double range");
+    expect_error("long exact --at", "region " + band + " --at 1e1000,1 --numbers exact",
+                 "--at: '1e1000,1' lies outside I1 x I2");
     // Objects with parts are read by region only; a flat part, an empty list, a part of three points.
     expect_error("parts and the curve", "curve " + band,
                  "the touching curve is defined for two convex objects; on objects made of parts, scalecert region");
@@ -1750,4 +1786,29 @@ BOOST_AUTO_TEST_CASE(claims_past_the_hull_model_limit_are_refused) {
     expect_error("curve point past the limit", "certify-fp " + scene + " " + write("cp.txt", "curve 1 1\n").string(),
                  "needs the hull model (every contact line)");
     BOOST_TEST(run("certify-fp " + scene + " " + write("v.txt", "growth 0\n").string()).status == 0);
+}
+
+// --numbers on golden too: the scene it writes for a mesh pair holds the numbers as read. 0.1 is
+// 3602879701896397/2^55 as a double, 13421773/2^27 as a float, and 1/10 as written.
+BOOST_AUTO_TEST_CASE(golden_reads_numbers_as_told) {
+    const std::string t = write("tenth.off", "OFF\n4 0 0\n0.1 0 0\n1 0 0\n0 1 0\n0 0 1\n").string(),
+                      c = write("cube5.off", "OFF\n8 0 0\n5 0 0\n6 0 0\n5 1 0\n6 1 0\n5 0 1\n6 0 1\n5 1 1\n6 1 1\n")
+                              .string();
+    const std::pair<const char*, const char*> cases[] = {{"", "3602879701896397/36028797018963968"},
+                                                         {" --numbers float32", "13421773/134217728"},
+                                                         {" --numbers exact", "1/10"}};
+    int k = 0;
+    for (const auto& [flag, tenth] : cases) {
+        const fs::path dir = workdir() / ("golden-numbers-" + std::to_string(k++));
+        const Run r = run("golden --p1 " + t + " --p2 " + c + " --i1 1/2,2 --i2 1/2,2 --dir " + dir.string() + flag);
+        BOOST_TEST(r.status == 0, r.err);
+        const auto scene = nlohmann::json::parse(slurp(dir / "tenth-cube5.scene.json"));
+        BOOST_TEST(scene["P1"]["vertices"][0][0].get<std::string>() == tenth, flag);
+        // The note: one decimal not read as written, but for --numbers exact.
+        BOOST_TEST((r.err.find("1 number written as decimals") != std::string::npos) ==
+                       (std::string(flag) != " --numbers exact"),
+                   r.err);
+    }
+    expect_error("--numbers unknown", "golden --p1 " + t + " --p2 " + c + " --i1 1,2 --i2 1,2 --dir x --numbers half",
+                 "--numbers");
 }

@@ -560,7 +560,7 @@ BOOST_AUTO_TEST_CASE(the_band_boundary_labelled_by_hand) {
     // along ρ2 = 3 to (1, 3); down 3ρ1 = 9/2 − ρ2/2, the part's face x = 3 reaching the box's near
     // face x = 4: normal +x. Face to face, and no switch point (each line runs side to side).
     const ExactScene sc = load_scene(std::string(SCALECERT_SOURCE_DIR) + "/tests/data/compound_band.json",
-                                     ReadOptions{false, true, true});
+                                     ReadOptions{scalecert::Numbers::Exact, true, true});
     const CompoundRegion r = compound_region(sc, "band");
     const CompoundBoundary b = label_boundary(r, sc);
     BOOST_TEST_REQUIRE(b.rings.size() == 1u);
@@ -582,7 +582,7 @@ BOOST_AUTO_TEST_CASE(the_paper_fig5_sequence_on_the_region_boundary) {
     // (V1,F2) -> (V1,E2) -> (E1,E2) -> (E1,V2) -> (F1,V2): switch points (23/19, 45/19), a vertex of
     // P1 on an edge of P2, and (29/13, 18/13), an edge of P1 on a vertex of P2 (README, paper).
     const ExactScene sc = load_scene(std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/fig5_vf_ve_ee.json",
-                                     ReadOptions{false, true, true});
+                                     ReadOptions{scalecert::Numbers::Exact, true, true});
     const CompoundRegion r = compound_region(sc, "fig5");
     const CompoundBoundary b = label_boundary(r, sc);
     BOOST_TEST_REQUIRE(b.rings.size() == 1u);
@@ -761,8 +761,8 @@ std::vector<bool> judge_claims(const ExactScene& sc, const std::string& claims, 
                                const Q& tol = Q(0)) {
     CompoundJudge judge(sc, "scene");
     long wrong = 0;
-    const std::string rep =
-        certify_fp(judge, claims, "claims", ClaimOptions{false, tol, true}, &wrong, nullptr, certificate);
+    const std::string rep = certify_fp(judge, claims, "claims", ClaimOptions{scalecert::Numbers::Double, tol, true},
+                                       &wrong, nullptr, certificate);
     std::vector<bool> right;
     const auto report = nlohmann::ordered_json::parse(rep);
     for (const auto& c : report["claims"]) right.push_back(c["right"].get<bool>());

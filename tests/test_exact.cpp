@@ -34,15 +34,54 @@ BOOST_AUTO_TEST_CASE(binary_doubles_are_dyadic) {
     BOOST_CHECK_THROW(exact_from_double(std::nan("")), InputError);
     // Read as a double, a token is the whole text: strtod stops at a NUL, the token does not (the
     // claims fuzzer read "1<NUL>02" as 1), nor at trailing junk.
-    BOOST_TEST(parse_number("0.1", true) == exact_from_double(0.1));
+    BOOST_TEST(parse_number("0.1", scalecert::Numbers::Double) == exact_from_double(0.1));
     BOOST_CHECK_THROW(parse_number(std::string("1\0"
                                                "02",
                                                4),
-                                   true),
+                                   scalecert::Numbers::Double),
                       InputError);
-    BOOST_CHECK_THROW(parse_number("1x", true), InputError);
-    BOOST_CHECK_THROW(parse_number(" 1", true), InputError);
-    BOOST_CHECK_THROW(parse_number("", true), InputError);
+    BOOST_CHECK_THROW(parse_number("1x", scalecert::Numbers::Double), InputError);
+    BOOST_CHECK_THROW(parse_number(" 1", scalecert::Numbers::Double), InputError);
+    BOOST_CHECK_THROW(parse_number("", scalecert::Numbers::Double), InputError);
+}
+
+BOOST_AUTO_TEST_CASE(numbers_are_read_as_the_program_holds_them) {
+    using scalecert::Numbers;
+    // 0.1 as a float: 0.1 = 1.6·2^-4, 24 bits, so the step is 2^-27 and 0.1·2^27 = 13421772.8
+    // rounds to 13421773. As a double, 3602879701896397/2^55 (above); as written, 1/10.
+    BOOST_TEST(parse_number("0.1", Numbers::Float32) == Q(13421773, Z(1) << 27));
+    BOOST_TEST(parse_number("0.1", Numbers::Exact) == Q(1, 10));
+    // A fraction is exact under every reading.
+    BOOST_TEST(parse_number("1/10", Numbers::Float32) == Q(1, 10));
+    BOOST_TEST(parse_number("1/10", Numbers::Double) == Q(1, 10));
+    // 2^24 + 1 = 16777217 is no float: ties to even give 16777216. Every double holds it.
+    BOOST_TEST(parse_number("16777217", Numbers::Float32) == Q(16777216));
+    BOOST_TEST(parse_number("16777217", Numbers::Double) == Q(16777217));
+    // Beyond the float range (3.4e38), and a nonzero decimal that underflows to 0 (below 1.4e-45).
+    BOOST_CHECK_THROW(parse_number("1e39", Numbers::Float32), InputError);
+    BOOST_CHECK_THROW(parse_number("1e-50", Numbers::Float32), InputError);
+    BOOST_TEST(parse_number("1e39", Numbers::Double) == Q(exact_from_double(1e39)));
+    // Which decimals a reading keeps as written: dyadic ones with few enough bits.
+    BOOST_TEST(binary_is_exact("0.375", Numbers::Double));
+    BOOST_TEST(binary_is_exact("0.375", Numbers::Float32));
+    BOOST_TEST(!binary_is_exact("0.1", Numbers::Double));
+    BOOST_TEST(binary_is_exact("0.1", Numbers::Exact));
+    BOOST_TEST(!binary_is_exact("16777217", Numbers::Float32));
+    BOOST_TEST(binary_is_exact("16777217", Numbers::Double));
+    BOOST_TEST(binary_is_exact("3/7", Numbers::Double));
+    // Counting what was not read as written: 0.1 and 0.3, not 0.5, 2 or 1/3.
+    long n = 0;
+    for (const char* t : {"0.1", "0.5", "2", "0.3", "1/3"}) parse_number(t, Numbers::Double, &n);
+    BOOST_TEST(n == 2);
+    // What a program reading the double 0.1 holds, each way; the shortest decimal of a double.
+    BOOST_TEST(scalecert::held(0.1, Numbers::Double) == exact_from_double(0.1));
+    BOOST_TEST(scalecert::held(0.1, Numbers::Float32) == Q(13421773, Z(1) << 27));
+    BOOST_TEST(scalecert::held(0.1, Numbers::Exact) == Q(1, 10));
+    BOOST_TEST(scalecert::held(1e300, Numbers::Exact) == parse_exact("1e300"));
+    BOOST_CHECK_THROW(scalecert::held(1e300, Numbers::Float32), InputError);
+    BOOST_CHECK_THROW(scalecert::held(std::nan(""), Numbers::Double), InputError);
+    BOOST_TEST(to_shortest(0.1) == "0.1");
+    BOOST_TEST(std::string(scalecert::name(Numbers::Float32)) == "float32");
 }
 
 BOOST_AUTO_TEST_CASE(display_doubles_are_correctly_rounded) {

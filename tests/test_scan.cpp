@@ -301,9 +301,11 @@ BOOST_AUTO_TEST_CASE(bundled_scenes) {
 // The compact reader gives exactly the full reader's points, or leaves the file to it.
 BOOST_AUTO_TEST_CASE(compact_off_reader) {
     auto same = [](const std::string& text) {
-        auto fast = parse_off_fast(text);
+        auto fast = parse_off_fast(text, Numbers::Exact);
         BOOST_REQUIRE_MESSAGE(fast, text);
-        BOOST_TEST((q_points(*fast) == parse_mesh(text, MeshFormat::Off, "t")));
+        ReadOptions exact;
+        exact.numbers = Numbers::Exact;
+        BOOST_TEST((q_points(*fast) == parse_mesh(text, MeshFormat::Off, "t", exact)));
     };
     same("OFF\n4 0 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n");
     same("OFF 4 4 6\n1.5 -2.25e1 +3E-2\n-0.001 7 100e-3\n1234567890123 0 0\n0 0 -1e3\n3 0 1 2\n");
@@ -332,15 +334,76 @@ BOOST_AUTO_TEST_CASE(compact_off_reader) {
           "OFF\n4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n", "OFF\n4 0 0\n0 0 0\n1 0 0\n0 1 0\n0 0\n",
           "OFF\n4 0 0\n1. 0 0\n1 0 0\n0 1 0\n0 0 1\n", "OFF\n4 0 0\n.5 0 0\n1 0 0\n0 1 0\n0 0 1\n",
           "COFF\n4 0 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n"})
-        BOOST_TEST(!parse_off_fast(t), t);
+        BOOST_TEST(!parse_off_fast(t, Numbers::Exact), t);
+}
+
+// Under --numbers double or float32 the compact reader takes a decimal only when the reading keeps
+// it as written (a dyadic decimal of few enough bits); any other is left to the full reader.
+BOOST_AUTO_TEST_CASE(compact_off_reader_under_binary_readings) {
+    const std::string dyadic = "OFF\n4 0 0\n0.5 -0.25 3\n1.125 0 -7\n0.375 2 1e2\n-12.5e-1 0 0\n";
+    for (Numbers n : {Numbers::Double, Numbers::Float32}) {
+        ReadOptions o;
+        o.numbers = n;
+        auto fast = parse_off_fast(dyadic, n);
+        BOOST_REQUIRE(fast);
+        BOOST_TEST((q_points(*fast) == parse_mesh(dyadic, MeshFormat::Off, "t", o)));
+        // 0.1 is no double, no float: the full reader reads it.
+        BOOST_TEST(!parse_off_fast("OFF\n4 0 0\n0.1 0 0\n1 0 0\n0 1 0\n0 0 1\n", n));
+    }
+    // 2^24 + 1 is a double but no float; 2^53 + 1 neither.
+    const std::string big = "OFF\n4 0 0\n16777217 0 0\n1 0 0\n0 1 0\n0 0 1\n";
+    BOOST_TEST(parse_off_fast(big, Numbers::Double).has_value());
+    BOOST_TEST(!parse_off_fast(big, Numbers::Float32));
+    // Random decimals with random exponents: the fast reader's points, when it reads them, are the
+    // full reader's, and it reads a text exactly when every decimal is dyadic with at most 53 bits
+    // (checked here on the rationals: a denominator a power of two and the odd part below 2^53).
+    std::mt19937 g(5);
+    std::uniform_int_distribution<long> m(-99999, 99999);
+    std::uniform_int_distribution<int> e(-3, 3), f(0, 3);
+    int taken = 0;
+    for (int rep = 0; rep < 200; ++rep) {
+        std::string t = "OFF\n4 0 0\n";
+        for (int i = 0; i < 12; ++i) {
+            std::string s = std::to_string(m(g));
+            if (rep % 2) {  // any decimal
+                const int fd = f(g), x = e(g);
+                if (fd && s.size() > static_cast<size_t>(fd + 1)) s.insert(s.size() - static_cast<size_t>(fd), ".");
+                if (x) s += "e" + std::to_string(x);
+            } else {  // eighths: dyadic
+                static const char* const eighths[] = {"", ".5", ".25", ".125", ".375"};
+                s = std::to_string(m(g) % 1000) + eighths[f(g) + i % 2];
+            }
+            t += s + (i % 3 == 2 ? "\n" : " ");
+        }
+        ReadOptions exact;
+        exact.numbers = Numbers::Exact;
+        bool all_doubles = true;
+        for (const Vec3q& v : parse_mesh(t, MeshFormat::Off, "t", exact))
+            for (const Q& c : v) {
+                Z d = c.get_den(), odd = abs(c.get_num());
+                while (odd != 0 && mpz_even_p(odd.get_mpz_t())) odd /= 2;
+                const bool pow2 = mpz_popcount(d.get_mpz_t()) == 1;
+                all_doubles = all_doubles && pow2 && odd < (Z(1) << 53);
+            }
+        auto fast = parse_off_fast(t, Numbers::Double);
+        BOOST_TEST(fast.has_value() == all_doubles, t);
+        if (fast) {
+            ++taken;
+            ReadOptions dbl;
+            BOOST_TEST((q_points(*fast) == parse_mesh(t, MeshFormat::Off, "t", dbl)));
+        }
+    }
+    BOOST_TEST(taken > 20);  // the dyadic half is read fast
 }
 
 // The compact scene reader: the full reader's scene exactly, or the file left to it.
 BOOST_AUTO_TEST_CASE(compact_scene_reader) {
     auto same = [](const std::string& text) {
-        auto fast = parse_scene_fast(text.data(), text.size());
+        auto fast = parse_scene_fast(text.data(), text.size(), Numbers::Exact);
         BOOST_REQUIRE_MESSAGE(fast, text);
-        const ExactScene full = parse_scene_text(text, "t", ".");
+        ReadOptions exact;
+        exact.numbers = Numbers::Exact;
+        const ExactScene full = parse_scene_text(text, "t", ".", exact);
         const ExactScene back = full_scene(*fast);
         for (int i = 0; i < 2; ++i) {
             BOOST_TEST((back.P[i].points == full.P[i].points));
@@ -380,7 +443,7 @@ BOOST_AUTO_TEST_CASE(compact_scene_reader) {
               "}, \"I1\": [1, 2], \"I2\": [1, 2],}",  // trailing comma
           "{\"P1\": {\"vertices\": " + cube + "}, \"P2\": {\"vertices\": " + cube +
               "}, \"I1\": [+1, 2], \"I2\": [1, 2]}"})  // '+'
-        BOOST_TEST(!parse_scene_fast(t.data(), t.size()), t);
+        BOOST_TEST(!parse_scene_fast(t.data(), t.size(), Numbers::Exact), t);
 }
 
 // Claims of every kind on a scene the walk takes, judged on the walk, build no hull model (the
@@ -478,7 +541,7 @@ BOOST_AUTO_TEST_CASE(claims_on_the_walk_build_no_hull_model) {
     BOOST_TEST(verts.size() >= 3u);
 
     const std::string doc = dump(Json{{"format", "scalecert-claims-1"}, {"claims", claims}});
-    const ClaimOptions opt{false, qc(1, 1000000), true};
+    const ClaimOptions opt{Numbers::Double, qc(1, 1000000), true};
     const std::filesystem::path dir = test::scratch_dir("walk-claims");
     std::vector<bool> right[2];
     for (Engine e : {Engine::Scan, Engine::Hull}) {
@@ -503,14 +566,14 @@ BOOST_AUTO_TEST_CASE(claims_on_the_walk_build_no_hull_model) {
     std::string cert;
     const std::string lines = ex(lo) + " " + ex(f(lo)) + " touching\ncurve " + ex(lo) + " " + ex(f(lo)) + "\ngrowth " +
                               ex(hc.growth.value) + "\n";
-    certify_fp(s.claim_models(), lines, "lines", ClaimOptions{false, Q(0), true}, &wrong, nullptr, &cert);
+    certify_fp(s.claim_models(), lines, "lines", ClaimOptions{Numbers::Double, Q(0), true}, &wrong, nullptr, &cert);
     BOOST_TEST(wrong == 0);
     BOOST_TEST(!s.hull_built());
     // A curve point past where the curve reaches 0 (ρ1 = 3 > 20/9 of the way there: wrong), whose
     // proof's window starts where the curve is <= 0 on the walk (the claims fuzz target's finding:
     // that end's witness lacked the seeds' weights, and the checker refused the certificate).
     const std::string past = "curve 3 2\n";
-    certify_fp(s.claim_models(), past, "past", ClaimOptions{false, Q(0), true}, &wrong, nullptr, &cert);
+    certify_fp(s.claim_models(), past, "past", ClaimOptions{Numbers::Double, Q(0), true}, &wrong, nullptr, &cert);
     BOOST_TEST(wrong == 1);
     BOOST_TEST(sgn(f(Q(3))) <= 0);
     const std::filesystem::path pp = dir / "past.json";

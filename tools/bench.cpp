@@ -546,7 +546,7 @@ void claim_costs(const ExactScene& h1000, bool quick) {
             1, quick ? 1 : 3);
     const double t_claims = per_call(
         [&](long) {
-            certify_fp(m, c, claims, "bench", ClaimOptions{false, Q(0), true}, &wrong);
+            certify_fp(m, c, claims, "bench", ClaimOptions{Numbers::Double, Q(0), true}, &wrong);
         },
         1, 1);
     // Ours by output too: the same claims, one kind at a time.
@@ -563,13 +563,15 @@ void claim_costs(const ExactScene& h1000, bool quick) {
     for (int k = 0; k < 3; ++k)
         t_ours[k] = per_call(
             [&](long) {
-                certify_fp(m, c, kind_claims[static_cast<size_t>(k)], "bench", ClaimOptions{false, Q(0), true}, &wrong);
+                certify_fp(m, c, kind_claims[static_cast<size_t>(k)], "bench",
+                           ClaimOptions{Numbers::Double, Q(0), true}, &wrong);
             },
             1, 1);
     std::string cert;
     const double t_cert = per_call(
         [&](long) {
-            certify_fp(ClaimModels::of(m, c), claims, "bench", ClaimOptions{false, Q(0), true}, &wrong, nullptr, &cert);
+            certify_fp(ClaimModels::of(m, c), claims, "bench", ClaimOptions{Numbers::Double, Q(0), true}, &wrong,
+                       nullptr, &cert);
         },
         1, 1);
     auto add = [&](const char* what, double t, const std::string& r) {
@@ -632,8 +634,8 @@ void large_claim_costs() {
     write_cloud(a, n, R, true, false, 5 + n);
     write_cloud(b, n, R, true, true, 6 + n);
     auto cs = std::make_shared<CompactScene>();
-    cs->P[0] = *read_off_fast(a);
-    cs->P[1] = *read_off_fast(b);
+    cs->P[0] = *read_off_fast(a, Numbers::Exact);
+    cs->P[1] = *read_off_fast(b, Numbers::Exact);
     for (int i = 0; i < 2; ++i) cs->seed[i] = cs->P[i].mean(), cs->lo[i] = Q(1, 2), cs->hi[i] = 2;
     std::filesystem::remove_all(dir);
     fp::FpScene f;
@@ -683,22 +685,22 @@ void large_claim_costs() {
     const ClaimModels cm = s.claim_models();
     const double t_dist = per_call(
         [&](long) {
-            certify_fp(cm, dist, "bench", ClaimOptions{false, Q(0), true}, &wrong);
+            certify_fp(cm, dist, "bench", ClaimOptions{Numbers::Double, Q(0), true}, &wrong);
         },
         1, 3);
     const double t_depth = per_call(
         [&](long) {
-            certify_fp(cm, depth, "bench", ClaimOptions{false, Q(0), true}, &wrong);
+            certify_fp(cm, depth, "bench", ClaimOptions{Numbers::Double, Q(0), true}, &wrong);
         },
         1, 3);
     const double t_dist_c = per_call(
         [&](long) {
-            certify_fp(cm, dist, "bench", ClaimOptions{false, Q(0), true}, &wrong, nullptr, &cert);
+            certify_fp(cm, dist, "bench", ClaimOptions{Numbers::Double, Q(0), true}, &wrong, nullptr, &cert);
         },
         1, 1);
     const double t_depth_c = per_call(
         [&](long) {
-            certify_fp(cm, depth, "bench", ClaimOptions{false, Q(0), true}, &wrong, nullptr, &cert);
+            certify_fp(cm, depth, "bench", ClaimOptions{Numbers::Double, Q(0), true}, &wrong, nullptr, &cert);
         },
         1, 1);
     auto add = [&](const char* what, double t, const std::string& r) {

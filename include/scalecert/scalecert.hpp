@@ -27,6 +27,18 @@ Rational exact(double x);                          // the double's exact binary 
 Rational parse_rational(const std::string& text);  // "3/7", "-12", "0.1" (= 1/10), "1e-3", exactly
 std::string to_string(const Rational& q);          // "p/q" in lowest terms, or "p"
 
+// What a number written as a floating-point program writes it means (certificates/CLAIMS.md,
+// "Numbers"): a decimal (a JSON number; a number in a mesh, in a claims line, on the command line)
+// is the binary value a program reading it holds: the double strtod gives (Double, the default),
+// or the float strtof gives (Float32). Exact reads it as written (0.1 = 1/10). JSON strings and
+// fractions p/q are exact under every reading.
+enum class Numbers : std::int8_t { Double, Float32, Exact };
+const char* name(Numbers n);  // "double", "float32", "exact"
+// A double a program holds, read the same way: its exact value (Double), the float nearest it
+// (Float32), or the shortest decimal that reads back as it, as written (Exact: 0.1 is 1/10).
+// Throws InputError for a NaN or an infinity, and under Float32 for a double beyond the floats.
+Rational held(double x, Numbers numbers);
+
 // Bad input: a scene, a number, a file. what() is one line naming the problem.
 struct InputError : std::runtime_error {
     using std::runtime_error::runtime_error;
@@ -62,12 +74,14 @@ class Scene {
     // Two objects made of parts: parts[i] is object i's parts, each a list of points.
     static Scene from_parts(std::vector<std::vector<Point>> parts1, std::vector<std::vector<Point>> parts2, Interval i1,
                             Interval i2, std::optional<Point> seed1 = {}, std::optional<Point> seed2 = {});
-    static Scene load(const std::string& scene_json_path);  // the scene file format ("vertices" or "parts")
-    // Mesh files (.off .obj .ply .stl; text numbers exact as written, binary floats at their value):
-    // each mesh one convex part, or with parts_from_groups each OBJ file's 'o'/'g' groups with faces
-    // its parts (other formats are refused then).
+    // The scene file format ("vertices" or "parts"); its JSON numbers and its meshes' text numbers
+    // read as `numbers` says (JSON strings exact always).
+    static Scene load(const std::string& scene_json_path, Numbers numbers = Numbers::Double);
+    // Mesh files (.off .obj .ply .stl; text numbers read as `numbers` says, binary floats at their
+    // value): each mesh one convex part, or with parts_from_groups each OBJ file's 'o'/'g' groups
+    // with faces its parts (other formats are refused then).
     static Scene from_meshes(const std::string& p1_path, const std::string& p2_path, Interval i1, Interval i2,
-                             bool parts_from_groups = false);
+                             bool parts_from_groups = false, Numbers numbers = Numbers::Double);
     bool convex() const;                                    // two convex objects (neither given as parts)
     size_t part_count(int i) const;                         // 1 for a convex object
     const std::vector<Point>& points(int i) const;          // i = 0 (P1) or 1 (P2): all its points, as given
@@ -76,7 +90,8 @@ class Scene {
     // part; "" when it has none. The same checks as part(i, k).
     const std::string& part_name(int i, size_t k) const;
     // Remarks for the user from reading the scene (an OBJ mesh with two or more groups read as one
-    // convex object, which parts_from_groups reads a part per group); empty when there are none.
+    // convex object, which parts_from_groups reads a part per group; how many decimals were read as
+    // binary values other than as written); empty when there are none.
     std::vector<std::string> notes() const;
     const Point& seed(int i) const;
     Interval range(int i) const;
@@ -135,11 +150,10 @@ struct PlaneCheck {
 // A floating-point program's claims (certificates/CLAIMS.md: JSON scalecert-claims-1, or lines
 // 'RHO1 RHO2 VERDICT', 'curve RHO1 RHO2', 'growth RHO'), each marked right or wrong, exactly.
 struct ClaimOptions {
-    // A claim written by a floating-point program means the double it held: by default a JSON
-    // number or a decimal of the line format is the double strtod reads from it. With
-    // exact_decimals it is the decimal as written (0.1 = 1/10). JSON strings and fractions such as
-    // 3/7 are exact either way. (Scenes are read exactly unless told otherwise: their own option.)
-    bool exact_decimals = false;
+    // A claim written by a floating-point program means the binary value it held: a JSON number or
+    // a decimal of the line format is read as `numbers` says (Numbers). JSON strings and fractions
+    // such as 3/7 are exact always.
+    Numbers numbers = Numbers::Double;
     Rational tolerance = 0;    // relative error accepted on numeric JSON claims (>= 0)
     bool json = true;          // the report as JSON (scalecert certify-fp --json), else as text
     bool certificate = false;  // also the judgements certificate (certify-fp --certificate)
@@ -229,7 +243,8 @@ class Analysis {
     // scalecert certify-fp; throws InputError for malformed claims, and on parts for claims defined
     // on two convex objects only (curves, switch points, growth distances, penetration depths).
     ClaimReport certify_fp(const std::string& claims, const ClaimOptions& options = {}) const;
-    // The same, typed, over an array of claims (options.exact_decimals and .json do not apply).
+    // The same, typed, over an array of claims (options.numbers and .json do not apply: a typed
+    // claim's numbers are exact; held() gives what a program reading a double holds).
     Judgements certify(const std::vector<Claim>& claims, const ClaimOptions& options = {}) const;
     // What scalecert golden writes for each of its scenes, without the family's fields (on parts:
     // the region document with queries where the objects' meeting set ends).

@@ -690,3 +690,38 @@ def test_absolute_tolerance_on_points_and_values():
     assert list(r["right"]) == [True, False]
     with pytest.raises(scalecert.InputError, match="abs_tolerance: must be >= 0"):
         stacked().certify_fp('{"format": "scalecert-claims-1", "claims": []}', abs_tolerance=-1)
+
+
+def test_numbers_mean_what_the_program_held(tmp_path):
+    # 0.1 as a double is 3602879701896397/2^55; as a float32 13421773/2^27 (0.1 * 2^27 =
+    # 13421772.8 rounds up); as written 1/10. On the stacked cubes (touching on rho1 + rho2 = 3),
+    # (0.1, 2.9) is separated as doubles, overlapping as floats (2.9f = 12163482/2^22, the sum
+    # 3 + 13/2^27) and touching as decimals.
+    assert F(0.1) == F(3602879701896397, 2**55)
+    want = {"double": "separated", "float32": "overlapping", "exact": "touching"}
+    for numbers, verdict in want.items():
+        r = stacked().certify("verdict", [0.1], [2.9], verdict=verdict, numbers=numbers)
+        assert r["right"].tolist() == [True], numbers
+        text = stacked().certify_fp("0.1 2.9 " + verdict + "\n", numbers=numbers)
+        assert text["wrong"] == 0, numbers
+    assert stacked().certify_fp("0.1 2.9 touching\n", exact_decimals=True)["wrong"] == 0  # the earlier name
+    with pytest.raises(scalecert.InputError, match="numbers: expected 'double', 'float32' or 'exact'"):
+        stacked().certify("verdict", [1], [1], verdict="separated", numbers="half")
+    # Meshes and scenes: a decimal is read the same way, and the scene says how many were not
+    # read as written (a UserWarning).
+    (tmp_path / "t.off").write_text("OFF\n4 0 0\n0.1 0 0\n1 0 0\n0 1 0\n0 0 1\n")
+    (tmp_path / "c.off").write_text("OFF\n8 0 0\n5 0 0\n6 0 0\n5 1 0\n6 1 0\n5 0 1\n6 0 1\n5 1 1\n6 1 1\n")
+    tenth = {"double": F(0.1), "float32": F(13421773, 2**27), "exact": F(1, 10)}
+    for numbers, x in tenth.items():
+        import warnings
+        with warnings.catch_warnings(record=True) as w:
+            warnings.simplefilter("always")
+            s = scalecert.Scene.from_meshes(str(tmp_path / "t.off"), str(tmp_path / "c.off"), ("1/2", 2), ("1/2", 2),
+                                            numbers=numbers)
+        assert s.json().count('"' + str(x.numerator) + "/" + str(x.denominator) + '"') == 1
+        assert len([m for m in w if "1 number written as decimals" in str(m.message)]) == (numbers != "exact")
+        # A float given in Python is read the same way.
+        p = scalecert.Scene([[0.1, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], [[5, 0, 0], [6, 0, 0], [5, 1, 0], [5, 0, 1]],
+                            ("1/2", 2), ("1/2", 2), numbers=numbers)
+        assert p.json() == scalecert.Scene([[x, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]],
+                                           [[5, 0, 0], [6, 0, 0], [5, 1, 0], [5, 0, 1]], ("1/2", 2), ("1/2", 2)).json()

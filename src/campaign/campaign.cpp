@@ -459,10 +459,10 @@ std::string campaign_identity(const CampaignArgs& a, const Json& inputs) {
         j["methods"] = a.methods;
         j["grid"] = a.grid;
         j["sweep"] = Json::array({a.sweep_from, a.sweep_to});
-        j["binary_doubles"] = a.opt.binary_doubles;
         if (!a.golden) j["measures"] = a.measures;
         j["by_distance"] = a.by_distance;
     }
+    j["numbers"] = numbers_name(a.opt.numbers);
     j["shard_size"] = a.shard_size;
     j["inputs"] = inputs;  // [path, SHA-256] of every scene file and mesh file read
     return j.dump();

@@ -49,12 +49,11 @@ namespace {
 // ---- reading: JSON claims into typed claims ----------------------------------------------------
 
 // Reads one claim of a scalecert-claims-1 list into a TypedClaim: every field checked, every
-// number exact (a JSON number is the double it was read as unless exact_decimals). On objects
+// number exact (a JSON number is the binary value ClaimOptions::numbers reads). On objects
 // made of parts (`parts`) only the types PartsRules takes.
 class ClaimReader {
   public:
-    ClaimReader(const std::string& name, bool exact_decimals, bool parts)
-        : name_(name), exact_decimals_(exact_decimals), parts_(parts) {}
+    ClaimReader(const std::string& name, Numbers numbers, bool parts) : name_(name), numbers_(numbers), parts_(parts) {}
 
     TypedClaim read(const JNode& claim, size_t index) {
         where_ = name_ + ": claims[" + std::to_string(index) + "]";
@@ -152,7 +151,8 @@ class ClaimReader {
 
   private:
     std::string name_, where_;
-    bool exact_decimals_, parts_;
+    Numbers numbers_;
+    bool parts_;
 
     static bool is_zero(const Vec3q& v) { return sgn(v[0]) == 0 && sgn(v[1]) == 0 && sgn(v[2]) == 0; }
     static std::optional<ClaimType> type_of(const std::string& kind) {
@@ -182,10 +182,9 @@ class ClaimReader {
     Q number(const JNode& n, const std::string& key) const {
         if (n.kind != JNode::Number && n.kind != JNode::String)
             fail(key, "expected a number or a string such as \"3/7\"");
-        const bool as_double = !exact_decimals_ && n.kind == JNode::Number;
         Q q;
         try {
-            q = parse_number(n.text, as_double);
+            q = parse_number(n.text, n.kind == JNode::Number ? numbers_ : Numbers::Exact);
         } catch (const InputError& e) {
             fail(key, e.what());
         }
@@ -563,21 +562,19 @@ void describe(const TypedClaim& c, const Judged& g, const ExactScene* parts, Jso
 
 // ---- the line format ------------------------------------------------------------------------------
 
-// A number of the line format, read as a JSON claim's number is (parse_number): the double a
-// decimal names (a floating-point program's output means the double it held), or with
-// exact_decimals the decimal as written; a fraction p/q is exact.
-Q read_number(const std::string& t, bool exact_decimals, const std::string& where) {
+// A number of the line format, read as a JSON claim's number is (parse_number): the binary value
+// a decimal names under `numbers` (a floating-point program's output means the value it held), or
+// under Exact the decimal as written; a fraction p/q is exact.
+Q read_number(const std::string& t, Numbers numbers, const std::string& where) {
     try {
-        return parse_number(t, !exact_decimals);
+        return parse_number(t, numbers);
     } catch (const InputError& e) {
         throw InputError(where + ": " + e.what());
     }
 }
 // A line's RHO1 RHO2, each > 0; a refusal names the one at fault.
-std::pair<Q, Q> read_scalings(const std::string& a, const std::string& b, bool exact_decimals,
-                              const std::string& where) {
-    const Q r1 = read_number(a, exact_decimals, where + ": rho1"),
-            r2 = read_number(b, exact_decimals, where + ": rho2");
+std::pair<Q, Q> read_scalings(const std::string& a, const std::string& b, Numbers numbers, const std::string& where) {
+    const Q r1 = read_number(a, numbers, where + ": rho1"), r2 = read_number(b, numbers, where + ": rho2");
     if (sgn(r1) <= 0) throw InputError(where + ": rho1: scalings must be > 0 (got " + to_exact_string(r1) + ")");
     if (sgn(r2) <= 0) throw InputError(where + ": rho2: scalings must be > 0 (got " + to_exact_string(r2) + ")");
     return {r1, r2};
@@ -592,7 +589,7 @@ bool non_number_word(std::string w) {
 
 // One line's claim, typed: 'RHO1 RHO2 VERDICT', and on convex objects 'curve RHO1 RHO2' (a curve
 // point, exactly) and 'growth RHO'.
-TypedClaim read_line(const std::vector<std::string>& w, bool exact_decimals, bool parts, const std::string& where) {
+TypedClaim read_line(const std::vector<std::string>& w, Numbers numbers, bool parts, const std::string& where) {
     TypedClaim c;
     if (parts && (w.size() != 3 || w[0] == "curve"))
         throw InputError(where +
@@ -601,10 +598,10 @@ TypedClaim read_line(const std::vector<std::string>& w, bool exact_decimals, boo
     if (w[0] == "curve" && w.size() == 3) {
         c.type = ClaimType::CurvePoint;
         if (non_number_word(w[2])) {  // ρ2 is the program's answer
-            c.rho1 = read_scalings(w[1], "1", exact_decimals, where).first;
+            c.rho1 = read_scalings(w[1], "1", numbers, where).first;
             c.no_answer = "rho2", c.no_answer_reason = "not a number";
         } else {
-            std::tie(c.rho1, c.rho2) = read_scalings(w[1], w[2], exact_decimals, where);
+            std::tie(c.rho1, c.rho2) = read_scalings(w[1], w[2], numbers, where);
         }
     } else if (w[0] == "growth" && w.size() == 2) {
         c.type = ClaimType::Growth;
@@ -612,11 +609,11 @@ TypedClaim read_line(const std::vector<std::string>& w, bool exact_decimals, boo
             c.no_answer = "value", c.no_answer_reason = "not a number";
             return c;
         }
-        c.value = read_number(w[1], exact_decimals, where);
+        c.value = read_number(w[1], numbers, where);
         if (sgn(c.value) < 0) throw InputError(where + ": a growth distance is >= 0 (0 when the seeds coincide)");
     } else if (w.size() == 3) {
         c.type = ClaimType::Verdict;
-        std::tie(c.rho1, c.rho2) = read_scalings(w[0], w[1], exact_decimals, where);
+        std::tie(c.rho1, c.rho2) = read_scalings(w[0], w[1], numbers, where);
         const std::optional<Claimed> v = claimed_of(w[2]);
         if (!v)
             throw InputError(where + ": unknown verdict " + in_quotes(w[2]) +
@@ -762,7 +759,7 @@ Run run_claims(Rules& rules, const std::string& claims, const std::string& name,
     };
     if (json) {
         const JNode root = claims_root(claims, name);
-        ClaimReader reader(name, opt.exact_decimals, parts != nullptr);
+        ClaimReader reader(name, opt.numbers, parts != nullptr);
         for (size_t i = 0; i < root.find("claims")->items.size(); ++i) {
             const TypedClaim c = reader.read(root.find("claims")->items[i], i);
             Json o;
@@ -780,7 +777,7 @@ Run run_claims(Rules& rules, const std::string& claims, const std::string& name,
         std::vector<std::string> w;
         for (std::string t; ls >> t;) w.push_back(t);
         if (w.empty()) continue;
-        const TypedClaim c = read_line(w, opt.exact_decimals, parts != nullptr, name + ": line " + std::to_string(no));
+        const TypedClaim c = read_line(w, opt.numbers, parts != nullptr, name + ": line " + std::to_string(no));
         Json o;
         o["line"] = no;
         // The certificate's entries are numbered by line.

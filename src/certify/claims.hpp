@@ -18,11 +18,11 @@ namespace scalecert::internal {
 //   distance and penetration_depth (certificates/CLAIMS.md);
 // - lines ('#' comments): 'RHO1 RHO2 VERDICT' (separated | touching | overlapping | intersecting,
 //   = not separated), 'curve RHO1 RHO2' (a claimed point of the touching curve) or 'growth RHO'.
-// A JSON number or a decimal of the line format is the double strtod gives (what the program that
-// wrote it held); with exact_decimals, the decimal as written. JSON strings and fractions p/q are
-// exact either way. `tolerance` (a relative error, >= 0) accepts numeric values within it; verdicts,
+// A JSON number or a decimal of the line format is the binary value ClaimOptions::numbers reads
+// (the double strtod gives by default: what the program that wrote it held). JSON strings and
+// fractions p/q are exact always. `tolerance` (a relative error, >= 0) accepts numeric values within it; verdicts,
 // labels, planes and witness points must be exactly right.
-// Options: the public ClaimOptions (exact_decimals, tolerance >= 0, json).
+// Options: the public ClaimOptions (numbers, tolerance >= 0, json).
 using scalecert::ClaimOptions;
 // What claims are checked against: the hull model and its curve over all ρ1 > 0 (built on first
 // use), and the exact verdict and curve value at a pair (Session::claim_models takes them from the
@@ -74,8 +74,8 @@ inline std::string certify_fp(const HullModel& m, const TouchingCurve& c, const 
     return certify_fp(ClaimModels::of(m, c), claims, name, opt, wrong);
 }
 inline std::string certify_fp(const HullModel& m, const TouchingCurve& c, const std::string& claims,
-                              const std::string& name, bool exact_decimals, bool json, long* wrong) {
-    return certify_fp(m, c, claims, name, ClaimOptions{exact_decimals, Q(0), json}, wrong);
+                              const std::string& name, Numbers numbers, bool json, long* wrong) {
+    return certify_fp(m, c, claims, name, ClaimOptions{numbers, Q(0), json}, wrong);
 }
 // The same claims on two objects made of parts (CLAIMS.md, "Objects made of parts"): verdict,
 // separating_plane, witness_point and distance (the least over the part pairs), at any

@@ -7,9 +7,25 @@
 
 namespace scalecert::cli {
 
+void add_numbers(CLI::App* sub, Numbers& numbers) {
+    sub->add_option("--numbers", numbers,
+                    "what a decimal written as a floating-point program writes it means (a JSON number, a mesh's or a "
+                    "claim's number, a number on the command line): double (default: the double strtod reads), "
+                    "float32 (the float strtof reads) or exact (as written: 0.1 = 1/10); JSON strings and fractions "
+                    "p/q are exact always")
+        ->transform(CLI::CheckedTransformer(
+            std::map<std::string, Numbers>{
+                {"double", Numbers::Double}, {"float32", Numbers::Float32}, {"exact", Numbers::Exact}},
+            CLI::ignore_case))
+        ->type_name("double|float32|exact");
+    // The earlier name of the default, kept so that scripts written for it still run.
+    sub->add_flag_callback("--binary-doubles", [&numbers] { numbers = Numbers::Double; })->group("");
+}
+
 void add_golden_options(CLI::App* sub, internal::CampaignArgs& a) {
     a.golden = true;
     a.opt.allow_parts = true;  // scenes of objects made of parts: golden data at their region's boundary
+    add_numbers(sub, a.opt.numbers);
     sub->add_flag("--parts-from-groups", a.opt.parts_from_groups,
                   "read each OBJ mesh (--p1, --p2, or one a scene names) as an object made of convex parts, a part "
                   "per 'o' or 'g' group");
@@ -50,7 +66,7 @@ void add_audit_options(CLI::App* sub, internal::CampaignArgs& a) {
     sub->add_option("--count", a.count, "scenes per eps in the sweep (1 to 10^6)")->check(CLI::Range(1, 1000000));
     sub->add_option("--seed", a.seed,
                     "the run's random seed (each family scene's own seed is derived from it, K and its index)");
-    sub->add_flag("--binary-doubles", a.opt.binary_doubles, "read the scene files' numbers as IEEE doubles");
+    add_numbers(sub, a.opt.numbers);
     sub->add_flag("--parts-from-groups", a.opt.parts_from_groups,
                   "read each OBJ mesh a scene names as an object made of convex parts, a part per 'o' or 'g' group");
     sub->add_option("--out", a.out, "write the JSON to FILE (atomically) instead of standard output")

@@ -18,7 +18,7 @@ Command add_certify_fp(CLI::App& app) {
     struct Args {
         SceneArgs scene;
         std::string out, claims, tolerance = "0", abs_tolerance = "0", certificate;
-        bool json = false, exact_decimals = false;
+        bool json = false;
     };
     auto a = std::make_shared<Args>();
     CLI::App* sub = app.add_subcommand(
@@ -39,11 +39,8 @@ Command add_certify_fp(CLI::App& app) {
                     "separating plane as on its side (certificates/CLAIMS.md, \"Tolerances\")")
         ->type_name("LEN");
     sub->add_flag("--json", a->json, "the report as JSON");
-    sub->add_flag(
-        "--exact-decimals", a->exact_decimals,
-        "read the claims' JSON numbers and decimals exactly as written (0.1 = 1/10); by default each is the double "
-        "strtod reads, as the program that wrote it held it (strings and fractions p/q are exact either way; "
-        "--binary-doubles is for the scene)");
+    // The earlier name of --numbers exact, kept so that scripts written for it still run.
+    sub->add_flag_callback("--exact-decimals", [a] { a->scene.opt.numbers = Numbers::Exact; })->group("");
     add_out(sub, a->out);
     sub->add_option(
            "--certificate", a->certificate,
@@ -65,7 +62,7 @@ Command add_certify_fp(CLI::App& app) {
             internal::refuse_outputs_over_inputs({a->out, a->certificate},
                                                  {a->claims, a->scene.path, a->scene.mesh[0], a->scene.mesh[1]});
             // The tolerances first: a mistyped one is said before a large scene is read.
-            ClaimOptions opt{a->exact_decimals, Q(0), a->json};
+            ClaimOptions opt{a->scene.opt.numbers, Q(0), a->json};
             for (auto [text, value, flag] : {std::tuple{&a->tolerance, &opt.tolerance, "--tolerance"},
                                              std::tuple{&a->abs_tolerance, &opt.abs_tolerance, "--abs-tolerance"}}) {
                 try {

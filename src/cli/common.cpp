@@ -1,4 +1,5 @@
 #include "common.hpp"
+#include "campaign_options.hpp"
 #include "file_name.hpp"
 #include "io/files.hpp"
 
@@ -21,7 +22,7 @@ void SceneArgs::add(CLI::App* sub) {
     sub->add_option("--i2", interval[1], "I2 as LO,HI");
     sub->add_option("--seed1", seed[0], "P1's seed as X,Y,Z (default: the mean of its vertices)");
     sub->add_option("--seed2", seed[1], "P2's seed as X,Y,Z");
-    sub->add_flag("--binary-doubles", opt.binary_doubles, "read text numbers as the IEEE doubles strtod gives");
+    add_numbers(sub, opt.numbers);
     sub->add_flag(
         "--parts-from-groups", opt.parts_from_groups,
         "read each OBJ mesh of an object (--p1, --p2, or an object's \"mesh\" in SCENE) as an object made of convex "
@@ -30,8 +31,7 @@ void SceneArgs::add(CLI::App* sub) {
 }
 
 void say_notes(const internal::ExactScene& sc) {
-    for (const auto& p : sc.P)
-        if (!p.note.empty()) std::cerr << "scalecert: note: " << p.note << "\n";
+    for (const std::string& n : internal::scene_notes(sc)) std::cerr << "scalecert: note: " << n << "\n";
 }
 
 // --parts-from-groups on a command for two convex objects (curve, grid), refused before any file is read.
@@ -58,14 +58,17 @@ internal::ExactScene SceneArgs::load() const {
     if (mesh[0].empty() || mesh[1].empty() || interval[0].empty() || interval[1].empty())
         throw InputError("give SCENE, or --p1 and --p2 (mesh files) with --i1 and --i2 (LO,HI)");
     internal::ExactScene sc;
+    ReadOptions counted = opt;
+    counted.inexact = &sc.inexact_numbers;
+    sc.numbers = opt.numbers;
     for (int i = 0; i < 2; ++i) {
         const std::string n = std::to_string(i + 1);
-        read_mesh_object(mesh[i], opt, sc.P[i]);
-        const std::vector<Q> r = number_list(interval[i], 2, "--i" + n, opt);
+        read_mesh_object(mesh[i], counted, sc.P[i]);
+        const std::vector<Q> r = number_list(interval[i], 2, "--i" + n, counted);
         sc.lo[i] = r[0];
         sc.hi[i] = r[1];
         if (!seed[i].empty()) {
-            const std::vector<Q> s = number_list(seed[i], 3, "--seed" + n, opt);
+            const std::vector<Q> s = number_list(seed[i], 3, "--seed" + n, counted);
             sc.P[i].seed = {s[0], s[1], s[2]};
             sc.P[i].seed_given = true;
         }
@@ -85,11 +88,12 @@ std::shared_ptr<const internal::CompactScene> SceneArgs::load_compact(internal::
     internal::note_inputs({path, mesh[0], mesh[1]});  // (a scene naming meshes is read by load(), which notes them)
     const bool scene_only = !path.empty() && mesh[0].empty() && mesh[1].empty() && interval[0].empty() &&
                             interval[1].empty() && seed[0].empty() && seed[1].empty();
-    if (scene_only && !opt.binary_doubles && path != "-")
-        if (auto cs = internal::read_scene_fast(path)) return std::make_shared<internal::CompactScene>(std::move(*cs));
+    if (scene_only && path != "-")
+        if (auto cs = internal::read_scene_fast(path, opt.numbers))
+            return std::make_shared<internal::CompactScene>(std::move(*cs));
     const bool meshes =
         path.empty() && !mesh[0].empty() && !mesh[1].empty() && !interval[0].empty() && !interval[1].empty();
-    if (meshes && !opt.binary_doubles) {
+    if (meshes) {
         // Any problem sends the scene to load(), whose checks come in its own order: the same
         // error message either way.
         try {
@@ -100,7 +104,7 @@ std::shared_ptr<const internal::CompactScene> SceneArgs::load_compact(internal::
             for (int i = 0; i < 2; ++i)
                 read[i] = std::async(std::launch::async, [this, i]() -> std::optional<internal::IntPoints> {
                     if (internal::mesh_format_of(mesh[i]) != internal::MeshFormat::Off) return std::nullopt;
-                    return internal::read_off_fast(mesh[i]);
+                    return internal::read_off_fast(mesh[i], opt.numbers);
                 });
             std::optional<internal::IntPoints> pts[2];
             for (int i = 0; i < 2; ++i) pts[i] = read[i].get();
@@ -158,7 +162,7 @@ void emit(const std::string& text, const std::string& out) {
 Q read_rho(const std::string& text, const char* name, const ReadOptions& opt) {
     Q r;
     try {
-        r = parse_number(text, opt.binary_doubles);
+        r = parse_number(text, opt.numbers, opt.inexact);
     } catch (const InputError& e) {
         throw InputError(std::string(name) + ": " + e.what());
     }
@@ -172,8 +176,8 @@ std::vector<Q> number_list(const std::string& text, size_t n, const std::string&
     for (;;) {
         const size_t e = text.find(',', b);
         try {
-            out.push_back(
-                parse_number(text.substr(b, e == std::string::npos ? std::string::npos : e - b), opt.binary_doubles));
+            out.push_back(parse_number(text.substr(b, e == std::string::npos ? std::string::npos : e - b), opt.numbers,
+                                       opt.inexact));
         } catch (const InputError& err) {
             throw InputError(option + ": " + err.what());
         }
@@ -207,6 +211,14 @@ internal::Session open_session(const SceneArgs& args, Engine engine, StageClock&
             return s;
         }
         if (!full.P[0].points.empty()) {  // read already
+            // Decimals read as doubles have denominators near 2^52 or more: a large scene of them
+            // fits no machine integers over one scale, and the walk needs that.
+            if (full.inexact_numbers > 0 && !full.made_of_parts() &&
+                internal::walk_by_default(full.P[0].points.size(), full.P[1].points.size()))
+                std::cerr << "scalecert: note: read as " << internal::numbers_name(full.numbers)
+                          << "s, the points fit no machine integers over one scale: the hull path, slower than the "
+                             "walk on large meshes (--numbers exact, or float32 when that is what the program held, "
+                             "can keep the walk)\n";
             internal::Session s(std::move(full), args.name(), engine);
             clock.lap("read scene");
             s.set_clock(&clock);

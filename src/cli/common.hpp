@@ -23,7 +23,7 @@ using internal::ReadOptions;
 struct SceneArgs {
     std::string path, mesh[2], interval[2], seed[2];
     ReadOptions opt;
-    void add(CLI::App* sub);            // the options, with --binary-doubles
+    void add(CLI::App* sub);            // the options, with --numbers
     internal::ExactScene load() const;  // refuses both forms at once, and neither
     // The scene in compact form (IntPoints), read straight from OFF files of plain decimals when
     // given as --p1/--p2; otherwise through load(). Null when the points do not fit IntPoints.
@@ -38,7 +38,8 @@ struct SceneArgs {
     void shift_positionals(std::initializer_list<std::string*> rest);
 };
 
-// The readers' remarks on a scene (an OBJ with groups read as one convex object), once each on stderr.
+// The readers' remarks on a scene (an OBJ with groups read as one convex object, decimals that the
+// reading did not take as written), once each on stderr.
 void say_notes(const internal::ExactScene& sc);
 
 // --out FILE means the same for every command: its one output document goes to FILE, written

@@ -143,6 +143,21 @@ bool json_number(const char* b, const char* e) {
     return b == e;
 }
 
+// Whether mant × 10^exp10 (|mant| < 10^18, |exp10| <= 18) is what `numbers` reads it as: exact
+// always; a double (float32) when its odd part has at most 53 (24) bits, 5^-exp10 dividing mant.
+// (Its magnitude, 10^-36 to 10^36, is within both formats' normal range.)
+bool binary_exact(std::int64_t mant, int exp10, Numbers numbers) {
+    if (numbers == Numbers::Exact || mant == 0) return true;
+    unsigned __int128 v = static_cast<unsigned __int128>(mant < 0 ? -static_cast<__int128>(mant) : mant);
+    for (int k = 0; k < exp10; ++k) v *= 5;
+    for (int k = 0; k < -exp10; ++k) {
+        if (v % 5 != 0) return false;
+        v /= 5;
+    }
+    while ((v & 1) == 0) v >>= 1;
+    return v < (static_cast<unsigned __int128>(1) << (numbers == Numbers::Float32 ? 24 : 53));
+}
+
 // Mantissas × 10^ex to integers over the common scale 10^-lowest, within kMaxIntCoord.
 bool scale_to(IntPoints& r, const std::vector<std::int8_t>& ex, int lowest) {
     mpz_ui_pow_ui(r.scale.get_mpz_t(), 10, static_cast<unsigned long>(-lowest));
@@ -210,15 +225,17 @@ bool count(const char* b, const char* e, size_t& out) {
 }
 }  // namespace
 
-std::optional<IntPoints> parse_off_fast(const std::string& text) { return parse_off_fast(text.data(), text.size()); }
+std::optional<IntPoints> parse_off_fast(const std::string& text, Numbers numbers) {
+    return parse_off_fast(text.data(), text.size(), numbers);
+}
 
-std::optional<IntPoints> read_off_fast(const std::string& path) {
+std::optional<IntPoints> read_off_fast(const std::string& path, Numbers numbers) {
     std::optional<IntPoints> r;
-    map_file(path, [&](const char* p, size_t n) { r = parse_off_fast(p, n); });
+    map_file(path, [&](const char* p, size_t n) { r = parse_off_fast(p, n, numbers); });
     return r;
 }
 
-std::optional<IntPoints> parse_off_fast(const char* data, size_t size) {
+std::optional<IntPoints> parse_off_fast(const char* data, size_t size, Numbers numbers) {
     Cursor c{data, data + size};
     const char *b, *e;
     if (!c.next(b, e) || std::string(b, e) != "OFF") return std::nullopt;
@@ -233,7 +250,8 @@ std::optional<IntPoints> parse_off_fast(const char* data, size_t size) {
     int lowest = 0;
     for (size_t i = 0; i < 3 * nv; ++i) {
         int x10;
-        if (!c.next(b, e) || !read_decimal(b, e, false, r.x[i], x10) || b != e || x10 < -18 || x10 > 18)
+        if (!c.next(b, e) || !read_decimal(b, e, false, r.x[i], x10) || b != e || x10 < -18 || x10 > 18 ||
+            !binary_exact(r.x[i], x10, numbers))
             return std::nullopt;
         ex[i] = static_cast<std::int8_t>(x10);
         if (r.x[i] != 0 && x10 < lowest) lowest = x10;
@@ -251,7 +269,7 @@ namespace {
 // goes there.
 class SceneScanner {
   public:
-    SceneScanner(const char* b, const char* e) : p_(b), e_(e) {}
+    SceneScanner(const char* b, const char* e, Numbers numbers) : p_(b), e_(e), numbers_(numbers) {}
 
     std::optional<CompactScene> scene() {
         CompactScene cs;
@@ -325,7 +343,9 @@ class SceneScanner {
             const char *b, *e;
             if (!number(b, e)) return false;
             try {
-                out.push_back(parse_exact(std::string(b, e)));
+                const std::string text(b, e);
+                if (!binary_is_exact(text, numbers_)) return false;
+                out.push_back(parse_exact(text));
             } catch (const InputError&) {
                 return false;
             }
@@ -374,7 +394,8 @@ class SceneScanner {
                     int x10;
                     ws();
                     const char* q = p_;  // a local cursor: kept in a register
-                    if (!read_decimal(q, e_, true, m, x10) || x10 < -18 || x10 > 18) return false;
+                    if (!read_decimal(q, e_, true, m, x10) || x10 < -18 || x10 > 18 || !binary_exact(m, x10, numbers_))
+                        return false;
                     p_ = q;
                     P.x.push_back(m);
                     ex.push_back(static_cast<std::int8_t>(x10));
@@ -391,16 +412,17 @@ class SceneScanner {
     }
     const char* p_;
     const char* e_;
+    Numbers numbers_;
 };
 }  // namespace
 
-std::optional<CompactScene> parse_scene_fast(const char* data, size_t size) {
-    return SceneScanner(data, data + size).scene();
+std::optional<CompactScene> parse_scene_fast(const char* data, size_t size, Numbers numbers) {
+    return SceneScanner(data, data + size, numbers).scene();
 }
 
-std::optional<CompactScene> read_scene_fast(const std::string& path) {
+std::optional<CompactScene> read_scene_fast(const std::string& path, Numbers numbers) {
     std::optional<CompactScene> r;
-    map_file(path, [&](const char* p, size_t n) { r = parse_scene_fast(p, n); });
+    map_file(path, [&](const char* p, size_t n) { r = parse_scene_fast(p, n, numbers); });
     return r;
 }
 

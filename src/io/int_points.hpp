@@ -30,14 +30,16 @@ std::optional<IntPoints> int_points(const std::vector<Vec3q>& pts);
 std::vector<Vec3q> q_points(const IntPoints& p);
 
 // The vertices of an OFF file's text in integers, when every coordinate is a plain decimal
-// ([+-]digits[.digits][e[+-]digits], at most 18 significant digits) and the file is otherwise as
-// the full reader expects (no comments among the header and vertices, 4 to kMaxPoints vertices).
-// None means "read it with parse_mesh" (which gives the same points, or the error).
-std::optional<IntPoints> parse_off_fast(const std::string& text);
-std::optional<IntPoints> parse_off_fast(const char* data, size_t size);
+// ([+-]digits[.digits][e[+-]digits], at most 18 significant digits) that `numbers` reads as
+// written (under Double and Float32: a decimal that is a double, a float, exactly) and the file is
+// otherwise as the full reader expects (no comments among the header and vertices, 4 to
+// kMaxPoints vertices). None means "read it with parse_mesh" (which gives the same points, or the
+// error).
+std::optional<IntPoints> parse_off_fast(const std::string& text, Numbers numbers);
+std::optional<IntPoints> parse_off_fast(const char* data, size_t size, Numbers numbers);
 // The same on a file, mapped into memory rather than copied; none also when the file is not a
 // regular file of at most kMaxSceneBytes bytes (the full reader then reads it, or words the error).
-std::optional<IntPoints> read_off_fast(const std::string& path);
+std::optional<IntPoints> read_off_fast(const std::string& path, Numbers numbers);
 
 // A scene whose polyhedra are IntPoints (what the scan path reads).
 struct CompactScene {
@@ -52,8 +54,9 @@ std::optional<CompactScene> compact_scene(const ExactScene& sc);
 // "seed": [...]}, "P2": ..., "I1": [lo, hi], "I2": [lo, hi]} with JSON numbers (decimals as in
 // parse_off_fast for the vertices) and passes the reader's checks; none means "read it with
 // parse_scene_text" (the same scene, or the error). read_scene_fast maps the file.
-std::optional<CompactScene> parse_scene_fast(const char* data, size_t size);
-std::optional<CompactScene> read_scene_fast(const std::string& path);
+// Under Double and Float32, every number must be what it reads as (none otherwise, as above).
+std::optional<CompactScene> parse_scene_fast(const char* data, size_t size, Numbers numbers);
+std::optional<CompactScene> read_scene_fast(const std::string& path, Numbers numbers);
 // Back to the exact scene (for the hull path), with the same seeds.
 ExactScene full_scene(const CompactScene& cs);
 

@@ -22,10 +22,10 @@ std::string lower(std::string s) {
     return s;
 }
 
-// A number written as text, exact (or the double strtod gives, with binary_doubles).
+// A number written as text, as opt.numbers reads it (counted in opt.inexact when not as written).
 Q text_number(const std::string& t, const std::string& name, const ReadOptions& opt, size_t vertex, int coord) {
     try {
-        return parse_number(t, opt.binary_doubles);
+        return parse_number(t, opt.numbers, opt.inexact);
     } catch (const InputError& e) {
         fail(name, "vertex " + std::to_string(vertex) + " coordinate " + std::to_string(coord) + ": " + e.what());
     }

@@ -1,7 +1,7 @@
 // Stage 1, mesh files: the vertices of a polyhedron from OFF, OBJ, PLY (ASCII, binary little- or
 // big-endian) or STL (ASCII or binary). Only the vertices are used: the polyhedron is their
-// convex hull. Text numbers are exact as written (0.1 is 1/10; with binary_doubles, the double
-// strtod gives); binary floats and doubles are their exact values.
+// convex hull. Text numbers are read as ReadOptions::numbers says (by default the double strtod
+// gives: 0.1 is not 1/10); binary floats and doubles are their exact values.
 #pragma once
 #include "io/scene.hpp"
 

@@ -31,7 +31,7 @@ struct Reader {
     template <class W>
     Q number_text(const std::string& text, bool is_string, const W& where) const {
         try {
-            return parse_number(text, opt.binary_doubles && !is_string);
+            return parse_number(text, is_string ? Numbers::Exact : opt.numbers, opt.inexact);
         } catch (const InputError& e) {
             fail(text_of(where), e.what());
         }
@@ -55,7 +55,10 @@ struct Reader {
 }  // namespace
 
 ExactScene parse_scene_text(const std::string& text, const std::string& name, const std::string& base_dir,
-                            const ReadOptions& opt) {
+                            const ReadOptions& given) {
+    long inexact = 0;
+    ReadOptions opt = given;
+    if (!opt.inexact) opt.inexact = &inexact;
     Reader r{name, opt};
     JNode tree;
     try {
@@ -193,7 +196,24 @@ ExactScene parse_scene_text(const std::string& text, const std::string& name, co
         sc.hi[i] = r.number(n->items[1], std::string(iname[i]) + "[1]");
     }
     finish_scene(sc, name);
+    sc.inexact_numbers = *opt.inexact;
+    sc.numbers = opt.numbers;
     return sc;
+}
+
+std::vector<std::string> scene_notes(const ExactScene& sc) {
+    std::vector<std::string> n;
+    for (const PolyInput& p : sc.P)
+        if (!p.note.empty()) n.push_back(p.note);
+    if (sc.inexact_numbers > 0)
+        n.push_back(std::to_string(sc.inexact_numbers) + (sc.inexact_numbers == 1 ? " number" : " numbers") +
+                    " written as decimals " + (sc.inexact_numbers == 1 ? "is" : "are") + " not " +
+                    (sc.numbers == Numbers::Float32 ? "a float32" : "a double") +
+                    " exactly: read as the binary value a program reading " +
+                    (sc.inexact_numbers == 1 ? "it" : "them") +
+                    " holds (--numbers exact reads decimals as written; "
+                    "a JSON string such as \"0.1\" is exact always)");
+    return n;
 }
 
 const std::string& part_name(const PolyInput& in, size_t k) {

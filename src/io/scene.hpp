@@ -38,17 +38,29 @@ struct ExactScene {
     PolyInput P[2];
     Q lo[2], hi[2];                  // I1 = [lo[0], hi[0]], I2 = [lo[1], hi[1]]
     std::vector<std::string> files;  // the mesh files a scene file named, as opened (no output may replace one)
+    // The numbers of the scene file and its meshes that the reading (ReadOptions::numbers) did not
+    // take as written: 0.1 read as a double is not 1/10 (said once, in notes()).
+    long inexact_numbers = 0;
+    Numbers numbers = Numbers::Double;
     // An object given as parts (even of one): the scene is answered as objects made of parts.
     bool made_of_parts() const { return !P[0].parts.empty() || !P[1].parts.empty(); }
 };
 
 struct ReadOptions {
-    bool binary_doubles = false;  // JSON/OFF numbers read as the IEEE doubles strtod gives
+    // How JSON numbers and mesh text numbers are read (the public Numbers: the double, the float
+    // or the decimal as written); JSON strings and fractions are exact always.
+    Numbers numbers = Numbers::Double;
     bool allow_off_files = true;  // "mesh" / "off": "FILE" in a scene (off for text from untrusted sources)
     bool allow_parts = false;     // objects made of "parts" (scalecert region); refused elsewhere
     bool parts_from_groups =
         false;  // an object's OBJ mesh as a compound, a part per group (region --parts-from-groups)
+    // When set, counts the numbers read that are not the number as written (for the reading's note).
+    long* inexact = nullptr;
 };
+
+// What the command says once on stderr about a scene read (Scene::notes()): each object's note, and
+// how many numbers were read as binary values other than their text.
+std::vector<std::string> scene_notes(const ExactScene& sc);
 
 // Reads and checks a scene file. Throws InputError naming the file and the offending field.
 // (Geometric checks that need the hull — rank, seed strictly inside — are done by build_model.)

@@ -2,6 +2,7 @@
 #include "numeric/small_int.hpp"
 
 #include <mpfr.h>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -211,23 +212,51 @@ bool decimal_syntax(const std::string& t) {
 }
 }  // namespace
 
-Q parse_number(const std::string& text, bool binary_doubles) {
-    if (!binary_doubles || text.find('/') != std::string::npos) return parse_exact(text);
+Q parse_number(const std::string& text, Numbers numbers) {
+    if (numbers == Numbers::Exact || text.find('/') != std::string::npos) return parse_exact(text);
     if (text.size() > kMaxNumberChars)
         throw InputError(in_quotes(text) + " is longer than " + std::to_string(kMaxNumberChars) +
                          " characters, the limit for one number");
     if (!decimal_syntax(text))
         throw InputError(in_quotes(text) + " is not a number (a decimal such as -1.5e-3, or a fraction p/q)");
-    const double d = std::strtod(text.c_str(), nullptr);
+    const bool single = numbers == Numbers::Float32;
+    const char* what = single ? "float32" : "double";
+    // strtof rounds the decimal once, as a float32 program's parser does (not through a double).
+    const double d =
+        single ? static_cast<double>(std::strtof(text.c_str(), nullptr)) : std::strtod(text.c_str(), nullptr);
     if (!std::isfinite(d))
-        throw InputError(in_quotes(text) +
-                         " is beyond the double range (as a double it overflows): give its exact value as a fraction, "
-                         "or a JSON string");
-    // A nonzero decimal that is 0 as a double was never a double a program held.
+        throw InputError(in_quotes(text) + " is beyond the " + what + " range (as a " + what +
+                         " it overflows): give its exact value as a fraction, or a JSON string");
+    // A nonzero decimal that is 0 in binary was never a number a program held.
     if (d == 0 && text.find_first_of("123456789") < text.find_first_of("eE"))
-        throw InputError(in_quotes(text) +
-                         " is 0 as a double (it underflows): give its exact value as a fraction, or a JSON string");
+        throw InputError(in_quotes(text) + " is 0 as a " + what +
+                         " (it underflows): give its exact value as a fraction, or a JSON string");
     return exact_from_double(d);
+}
+
+const char* numbers_name(Numbers n) {
+    return n == Numbers::Double ? "double" : n == Numbers::Float32 ? "float32" : "exact";
+}
+
+bool binary_is_exact(const std::string& text, Numbers numbers) {
+    if (numbers == Numbers::Exact || text.find('/') != std::string::npos) return true;
+    // Integers of at most 7 characters (below 2^24) are floats and doubles exactly; the rest are compared.
+    if (text.size() <= 7 && text.find_first_of(".eE") == std::string::npos) return true;
+    return parse_number(text, numbers) == parse_exact(text);
+}
+
+Q parse_number(const std::string& text, Numbers numbers, long* inexact) {
+    Q q = parse_number(text, numbers);
+    if (inexact && numbers != Numbers::Exact && text.find('/') == std::string::npos &&
+        !(text.size() <= 7 && text.find_first_of(".eE") == std::string::npos) && q != parse_exact(text))
+        ++*inexact;
+    return q;
+}
+
+std::string to_shortest(double d) {
+    char buf[64];
+    const auto r = std::to_chars(buf, buf + sizeof buf, d);
+    return std::string(buf, r.ptr);
 }
 
 std::string to_exact_string(const Q& q) {

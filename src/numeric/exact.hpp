@@ -19,6 +19,7 @@ using Vec3z = std::array<Z, 3>;
 
 // Any problem with the user's input (the public scalecert::InputError): one line, exit status 2.
 using scalecert::InputError;
+using scalecert::Numbers;
 
 template <class A, class B>
 inline auto dot(const std::array<A, 3>& a, const std::array<B, 3>& b) {
@@ -53,10 +54,20 @@ std::string in_quotes(const std::string& text);
 Q parse_exact(const std::string& text);
 // The double's exact value (every finite double is a dyadic rational).
 Q exact_from_double(double d);
-// Number text read exactly (parse_exact), or with binary_doubles as the double strtod gives (its
-// exact value). Throws InputError (without location) for text that is neither.
-Q parse_number(const std::string& text, bool binary_doubles);
+// Number text as `numbers` reads it (the public Numbers): exactly (parse_exact), or as the double
+// strtod or the float strtof gives (its exact value); a fraction p/q is exact always. Throws
+// InputError (without location) for text that is no number, and for a nonzero decimal that
+// overflows or underflows to 0 in that binary format.
+Q parse_number(const std::string& text, Numbers numbers);
+// "double", "float32", "exact" (the --numbers words).
+const char* numbers_name(Numbers numbers);
+// Whether parse_number(text, numbers) is the number as written (text a number parse_number reads).
+bool binary_is_exact(const std::string& text, Numbers numbers);
+// parse_number, counting in *inexact (when given) a number that is not the number as written.
+Q parse_number(const std::string& text, Numbers numbers, long* inexact);
 
+// The shortest decimal that strtod reads back as d (d finite): "0.1", "1e+300".
+std::string to_shortest(double d);
 // "p/q" in lowest terms with q > 0, or "p" when q = 1.
 std::string to_exact_string(const Q& q);
 // The double nearest to q (round-to-nearest-even), computed with MPFR.

@@ -32,6 +32,17 @@ Rational exact(double x) {
     return exact_from_double(x);
 }
 Rational parse_rational(const std::string& text) { return parse_exact(text); }
+const char* name(Numbers n) { return numbers_name(n); }
+Rational held(double x, Numbers numbers) {
+    if (!std::isfinite(x)) throw InputError("not a finite number");
+    if (numbers == Numbers::Double) return exact_from_double(x);
+    if (numbers == Numbers::Float32) {
+        const float f = static_cast<float>(x);
+        if (!std::isfinite(f)) throw InputError(to_shortest(x) + " is beyond the float32 range");
+        return exact_from_double(static_cast<double>(f));
+    }
+    return parse_exact(to_shortest(x));
+}
 std::string to_string(const Rational& q) { return to_exact_string(q); }
 
 const char* name(Verdict v) { return verdict_name(v); }
@@ -179,14 +190,15 @@ Scene Scene::from_parts(std::vector<std::vector<Point>> parts1, std::vector<std:
     return Scene(SceneAccess::validated(std::move(sc), "scene"));
 }
 
-Scene Scene::load(const std::string& path) {
+Scene Scene::load(const std::string& path, Numbers numbers) {
     internal::ReadOptions opt;
     opt.allow_parts = true;
+    opt.numbers = numbers;
     return Scene(SceneAccess::validated(load_scene(path, opt), path));
 }
 
 std::shared_ptr<Scene::Data> SceneAccess::from_integers(const std::string& p1_path, const std::string& p2_path,
-                                                        const Interval& i1, const Interval& i2) {
+                                                        const Interval& i1, const Interval& i2, Numbers numbers) {
     const Interval* ranges[2] = {&i1, &i2};
     for (const Interval* r : ranges)
         if (sgn(r->lo) <= 0 || r->lo > r->hi) return nullptr;
@@ -196,7 +208,7 @@ std::shared_ptr<Scene::Data> SceneAccess::from_integers(const std::string& p1_pa
         auto cs = std::make_shared<internal::CompactScene>();
         const std::string* paths[2] = {&p1_path, &p2_path};
         for (int i = 0; i < 2; ++i) {
-            std::optional<internal::IntPoints> pts = internal::read_off_fast(*paths[i]);
+            std::optional<internal::IntPoints> pts = internal::read_off_fast(*paths[i], numbers);
             if (!pts) return nullptr;
             cs->P[i] = std::move(*pts);
             cs->lo[i] = ranges[i]->lo;
@@ -218,20 +230,27 @@ std::shared_ptr<Scene::Data> SceneAccess::from_integers(const std::string& p1_pa
 }
 
 Scene Scene::from_meshes(const std::string& p1_path, const std::string& p2_path, Interval i1, Interval i2,
-                         bool parts_from_groups) {
+                         bool parts_from_groups, Numbers numbers) {
     if (!parts_from_groups)
-        if (std::shared_ptr<Data> d = SceneAccess::from_integers(p1_path, p2_path, i1, i2)) return Scene(std::move(d));
+        if (std::shared_ptr<Data> d = SceneAccess::from_integers(p1_path, p2_path, i1, i2, numbers))
+            return Scene(std::move(d));
+    long inexact = 0;
+    internal::ReadOptions opt;
+    opt.numbers = numbers;
+    opt.inexact = &inexact;
     if (!parts_from_groups) {
         std::string note[2];
-        std::vector<Point> p1 = read_mesh(p1_path, {}, &note[0]), p2 = read_mesh(p2_path, {}, &note[1]);
-        return Scene(SceneAccess::validated(convex_scene(std::move(p1), std::move(p2), i1, i2, std::nullopt,
-                                                         std::nullopt, std::move(note[0]), std::move(note[1])),
-                                            "scene"));
+        std::vector<Point> p1 = read_mesh(p1_path, opt, &note[0]), p2 = read_mesh(p2_path, opt, &note[1]);
+        internal::ExactScene sc = convex_scene(std::move(p1), std::move(p2), i1, i2, std::nullopt, std::nullopt,
+                                               std::move(note[0]), std::move(note[1]));
+        sc.inexact_numbers = inexact;
+        sc.numbers = numbers;
+        return Scene(SceneAccess::validated(std::move(sc), "scene"));
     }
-    internal::ReadOptions opt;
     opt.allow_parts = true;
     opt.parts_from_groups = true;
     internal::ExactScene sc;
+    sc.numbers = numbers;
     const std::string* paths[2] = {&p1_path, &p2_path};
     const Interval* ranges[2] = {&i1, &i2};
     for (int i = 0; i < 2; ++i) {
@@ -240,6 +259,7 @@ Scene Scene::from_meshes(const std::string& p1_path, const std::string& p2_path,
     }
     const std::string name = p1_path + " and " + p2_path;
     finish_scene(sc, name);
+    sc.inexact_numbers = inexact;
     return Scene(SceneAccess::validated(std::move(sc), name));
 }
 
@@ -263,10 +283,8 @@ const std::string& Scene::part_name(int i, size_t k) const {
 }
 std::vector<std::string> Scene::notes() const {
     std::vector<std::string> n;
-    if (d_->integers_only) return n;  // OFF files: no groups, nothing to say (and no exact form made)
-    for (const internal::PolyInput& P : d_->sc().P)
-        if (!P.note.empty()) n.push_back(P.note);
-    return n;
+    if (d_->integers_only) return n;  // OFF files read as written: no groups, nothing to say (and no exact form made)
+    return internal::scene_notes(d_->sc());
 }
 const std::vector<Point>& Scene::points(int i) const { return d_->sc().P[i & 1].points; }
 const Point& Scene::seed(int i) const { return d_->sc().P[i & 1].seed; }

@@ -38,7 +38,7 @@ std::string CompoundSession::verdict_certificate(const Q& rho1, const Q& rho2) {
                                                    {"verdict", verdict_name(j.verdict(rho1, rho2).verdict)}}})}};
     long wrong = 0;
     std::string text;
-    certify_fp(j, dump(claims), name_, ClaimOptions{false, Q(0), true}, &wrong, nullptr, &text);
+    certify_fp(j, dump(claims), name_, ClaimOptions{Numbers::Double, Q(0), true}, &wrong, nullptr, &text);
     return text;
 }
 

@@ -20,7 +20,7 @@ struct SceneAccess {
     // no exact form until asked for. Null otherwise, and on any problem, which the exact reading
     // then words.
     static std::shared_ptr<Scene::Data> from_integers(const std::string& p1_path, const std::string& p2_path,
-                                                      const Interval& i1, const Interval& i2);
+                                                      const Interval& i1, const Interval& i2, Numbers numbers);
 };
 
 }  // namespace scalecert

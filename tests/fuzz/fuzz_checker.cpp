@@ -62,7 +62,7 @@ ClaimOptions options_of(const J& c) {
         v.canonicalize();
         return v;
     };
-    ClaimOptions o{true, q(c.at("tolerance")), true};
+    ClaimOptions o{Numbers::Exact, q(c.at("tolerance")), true};
     if (c.contains("abs_tolerance")) o.abs_tolerance = q(c.at("abs_tolerance"));
     return o;
 }

@@ -105,7 +105,7 @@ void compound_claims(const std::string& text) {
         try {
             long wrong = -1;
             std::string certificate;
-            ClaimOptions opt{false, Q(0), true};
+            ClaimOptions opt{Numbers::Double, Q(0), true};
             opt.abs_tolerance = abs;
             const std::string out = certify_fp(judge, text, "fuzz.claims", opt, &wrong, nullptr, &certificate);
             if (wrong < 0 || out.empty()) fuzz::finding("certify_fp on parts returned no report");
@@ -123,7 +123,7 @@ void walk_claims(const std::string& text) {
     static const TouchingCurve hc = build_curve(hm);
     for (int run = 0; run < 3; ++run) {  // lines, JSON, JSON at an absolute tolerance
         const bool json = run > 0;
-        ClaimOptions opt{false, Q(0), json};
+        ClaimOptions opt{Numbers::Double, Q(0), json};
         if (run == 2) opt.abs_tolerance = Q(1, 1000);
         std::string hull_out, walk_out, cert, hull_err, walk_err;
         long wrong = -1;

@@ -7,12 +7,15 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     if (size == 0) return 0;
     const scalecert::internal::MeshFormat f = static_cast<scalecert::internal::MeshFormat>(data[0] % 4);
     const std::string text(reinterpret_cast<const char*>(data) + 1, size - 1);
-    // For OFF, the compact reader must give the full reader's points or nothing.
-    const auto fast =
-        f == scalecert::internal::MeshFormat::Off ? scalecert::internal::parse_off_fast(text) : std::nullopt;
+    // For OFF, the compact reader must give the full reader's points or nothing, under the
+    // reading the first byte chooses (decimals as doubles, or as written).
+    scalecert::internal::ReadOptions opt;
+    opt.numbers = data[0] & 4 ? scalecert::Numbers::Double : scalecert::Numbers::Exact;
+    const auto fast = f == scalecert::internal::MeshFormat::Off ? scalecert::internal::parse_off_fast(text, opt.numbers)
+                                                                : std::nullopt;
     scalecert::internal::ExactScene sc;
     try {
-        sc.P[0].points = scalecert::internal::parse_mesh(text, f, "fuzz.mesh");
+        sc.P[0].points = scalecert::internal::parse_mesh(text, f, "fuzz.mesh", opt);
     } catch (const scalecert::internal::InputError&) {
         if (fast) fuzz::finding("the compact OFF reader accepts what the full reader refuses");
         return 0;

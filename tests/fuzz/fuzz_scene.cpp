@@ -37,10 +37,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     scalecert::internal::ReadOptions opt;
     opt.allow_off_files = false;  // no file names from fuzzed text
     opt.allow_parts = true;
-    opt.binary_doubles = size > 0 && (data[0] & 1);
-    // The compact reader (exact decimals only) must give the strict reader's scene or nothing.
-    const auto fast =
-        opt.binary_doubles ? std::nullopt : scalecert::internal::parse_scene_fast(text.data(), text.size());
+    opt.numbers = size > 0 && (data[0] & 1) ? scalecert::Numbers::Double : scalecert::Numbers::Exact;
+    // The compact reader must give the strict reader's scene or nothing, under either reading.
+    const auto fast = scalecert::internal::parse_scene_fast(text.data(), text.size(), opt.numbers);
     scalecert::internal::ExactScene sc;
     try {
         sc = scalecert::internal::parse_scene_text(text, "fuzz.json", "", opt);
