@@ -32,8 +32,8 @@ struct Fixed {
 // A number as the claims reader takes it (exact decimals and p/q), or none.
 std::optional<Q> exact_of(const nlohmann::json& j) {
     try {
-        if (j.is_string()) return parse_number(j.get<std::string>(), false);
-        if (j.is_number()) return parse_number(j.dump(), false);
+        if (j.is_string()) return parse_number(j.get<std::string>(), Numbers::Exact);
+        if (j.is_number()) return parse_number(j.dump(), Numbers::Exact);
     } catch (const InputError&) {}
     return std::nullopt;
 }
@@ -163,7 +163,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
             for (bool json : {false, true}) {
                 try {
                     long wrong = -1;
-                    std::string out = certify_fp(f->m, f->c, text, "fuzz.claims", bin, json, &wrong);
+                    std::string out = certify_fp(f->m, f->c, text, "fuzz.claims",
+                                                 bin ? Numbers::Exact : Numbers::Double, json, &wrong);
                     if (wrong < 0 || out.empty()) fuzz::finding("certify_fp returned no report");
                     if (json && !bin) check_right_claims(*f, brute, text, out);
                 } catch (const InputError&) {}
