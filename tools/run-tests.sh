@@ -9,6 +9,5 @@ tools/install-deps.sh
 tools/build.sh
 # One test more than cores: several tests spend part of their time waiting (mpirun, subprocesses).
 (cd build && ctest --output-on-failure -j"$(($(nproc) + 1))")
-n=$# One test more than cores: several tests spend part of their time waiting (mpirun, subprocesses).
-(cd build && ctest -N | sed -n 's/^Total Tests: *//p')
+n=$(cd build && ctest -N | sed -n 's/^Total Tests: *//p')
 echo "tests: $n passed, 0 failed"
