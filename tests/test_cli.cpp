@@ -11,6 +11,7 @@
 #include <sys/wait.h>
 
 #include <cmath>
+#include <gmpxx.h>
 
 #include <filesystem>
 #include <fstream>
@@ -1811,4 +1812,69 @@ BOOST_AUTO_TEST_CASE(golden_reads_numbers_as_told) {
     }
     expect_error("--numbers unknown", "golden --p1 " + t + " --p2 " + c + " --i1 1,2 --i2 1,2 --dir x --numbers half",
                  "--numbers");
+}
+
+// Objects at poses [R | t], applied exactly before scaling about the (moved) seed.
+BOOST_AUTO_TEST_CASE(objects_at_poses) {
+    // P1 = [0,2]^3 (seed (1,1,1)); P2 the tall box [0,2]^2 x [3,7] (seed (1,1,5)). Unposed, P2(ρ2)
+    // starts at z = 5 − 2ρ2, so they touch on ρ1 + 2ρ2 = 4. Turned a quarter about y
+    // ((x, y, z) -> (z, y, −x)) and moved by (−3, 0, 5), P2 is [0,4] x [0,2] x [3,5] with seed
+    // (2,1,4): P2(ρ2) starts at z = 4 − ρ2 and they touch on ρ1 + ρ2 = 3 (face on face).
+    const std::string box = R"({"vertices": [[0,0,0],[2,0,0],[0,2,0],[2,2,0],[0,0,2],[2,0,2],[0,2,2],[2,2,2]]})";
+    const std::string tall = R"("vertices": [[0,0,3],[2,0,3],[0,2,3],[2,2,3],[0,0,7],[2,0,7],[0,2,7],[2,2,7]])";
+    const std::string plain =
+        write("tall.json", "{\"P1\": " + box + ", \"P2\": {" + tall + "}, \"I1\": [\"1/2\", 2], \"I2\": [\"1/2\", 2]}")
+            .string();
+    const std::string posed =
+        write("tall_posed.json", "{\"P1\": " + box + ", \"P2\": {" + tall +
+                                     ", \"pose\": [[0,0,1,-3],[0,1,0,0],[-1,0,0,5]]}, \"I1\": [\"1/2\", 2], "
+                                     "\"I2\": [\"1/2\", 2]}")
+            .string();
+    BOOST_TEST(run("query " + plain + " 1 3/2").out == "touching\n");   // 1 + 2·3/2 = 4
+    BOOST_TEST(run("query " + posed + " 1 3/2").out == "separated\n");  // 1 + 3/2 < 3
+    BOOST_TEST(run("query " + posed + " 1 2").out == "touching\n");
+    BOOST_TEST(run("query " + posed + " 3/2 2").out == "overlapping\n");
+    // The certificate holds the moved points, and the checker accepts it.
+    const fs::path cert = workdir() / "posed.partition.json";
+    BOOST_TEST(run("partition " + posed + " --out " + cert.string()).status == 0);
+    const auto c = nlohmann::json::parse(slurp(cert));
+    BOOST_TEST(c["scene"]["P2"]["vertices"][0] == nlohmann::json::array({"0", "0", "5"}));  // (0,0,3) -> (3−3, 0, 0+5)
+    BOOST_TEST(c["scene"]["P2"]["seed"] == nlohmann::json::array({"2", "1", "4"}));
+    BOOST_TEST(std::system((std::string(SCALECERT_CHECK_BIN) + " " + cert.string() + " >/dev/null").c_str()) == 0);
+    // A pose of doubles, read exactly (R need not be orthogonal): the cube [0,2]^2 x [3,5] turned
+    // about its vertical axis by 30 degrees in doubles. R's last row is (0, 0, 1) and t3 = 0, so z
+    // stays exactly as it was: the bottom face at z = 3, the seed at z = 4, touching on ρ1 + ρ2 = 3.
+    const double co = std::cos(M_PI / 6), si = 0.5, t1 = 1 - (co - si), t2 = 1 - (si + co);
+    char pose[256];
+    std::snprintf(pose, sizeof pose, "%.17g,%.17g,0,%.17g,%.17g,%.17g,0,%.17g,0,0,1,0", co, -si, t1, si, co, t2);
+    const std::string
+        cube = write("cube1.off", "OFF\n8 0 0\n0 0 0\n2 0 0\n0 2 0\n2 2 0\n0 0 2\n2 0 2\n0 2 2\n2 2 2\n").string(),
+        top = write("cube2.off", "OFF\n8 0 0\n0 0 3\n2 0 3\n0 2 3\n2 2 3\n0 0 5\n2 0 5\n0 2 5\n2 2 5\n").string();
+    const std::string args = "--p1 " + cube + " --p2 " + top + " --i1 1/2,2 --i2 1/2,2 --pose2 " + pose;
+    BOOST_TEST(run("query " + args + " 1 2").out == "touching\n");
+    BOOST_TEST(run("query " + args + " 1 1.99").out == "separated\n");
+    // The moved vertex (2, 0, 3) is exactly (2·co + t1, 2·si + t2, 3), as doubles' exact values.
+    const fs::path g = workdir() / "posed-golden";
+    BOOST_TEST(run("golden " + args + " --dir " + g.string()).status == 0);
+    const auto s = nlohmann::json::parse(slurp(g / "cube1-cube2.scene.json"));
+    auto q = [](double x) { return mpq_class(x); };
+    const mpq_class x = 2 * q(co) + q(t1), y = 2 * q(si) + q(t2);
+    auto text = [](mpq_class v) {
+        v.canonicalize();
+        return v.get_str();
+    };
+    BOOST_TEST(s["P2"]["vertices"][1] == nlohmann::json::array({text(x), text(y), "3"}));
+    expect_error("singular pose",
+                 "query --p1 " + cube + " --p2 " + top + " --i1 1,2 --i2 1,2 --pose2 1,0,0,0,0,0,0,0,0,0,1,0 1 1",
+                 "--pose2: its 3x3 part R is singular");
+    expect_error("short pose", "query --p1 " + cube + " --p2 " + top + " --i1 1,2 --i2 1,2 --pose1 1,0,0 1 1",
+                 "--pose1: expected 12 numbers");
+    expect_error(
+        "bad pose row",
+        "query " +
+            write("badpose.json", "{\"P1\": " + box + ", \"P2\": {" + tall +
+                                      ", \"pose\": [[1,0,0],[0,1,0,0],[0,0,1,0]]}, \"I1\": [1, 2], \"I2\": [1, 2]}")
+                .string() +
+            " 1 1",
+        "P2.pose[0]: expected 4 numbers");
 }

@@ -22,6 +22,11 @@ void SceneArgs::add(CLI::App* sub) {
     sub->add_option("--i2", interval[1], "I2 as LO,HI");
     sub->add_option("--seed1", seed[0], "P1's seed as X,Y,Z (default: the mean of its vertices)");
     sub->add_option("--seed2", seed[1], "P2's seed as X,Y,Z");
+    sub->add_option("--pose1", pose[0],
+                    "P1 at a pose [R | t]: 12 numbers R11,R12,R13,T1,R21,R22,R23,T2,R31,R32,R33,T3 (rows), each point "
+                    "v moved to R·v + t exactly (the seed too); R need not be orthogonal")
+        ->type_name("R|t");
+    sub->add_option("--pose2", pose[1], "P2 at a pose [R | t], as --pose1")->type_name("R|t");
     add_numbers(sub, opt.numbers);
     sub->add_flag(
         "--parts-from-groups", opt.parts_from_groups,
@@ -44,7 +49,7 @@ static void refuse_groups_unless_parts(const internal::ReadOptions& opt) {
 
 internal::ExactScene SceneArgs::load() const {
     const bool any_mesh_option = !mesh[0].empty() || !mesh[1].empty() || !interval[0].empty() || !interval[1].empty() ||
-                                 !seed[0].empty() || !seed[1].empty();
+                                 !seed[0].empty() || !seed[1].empty() || !pose[0].empty() || !pose[1].empty();
     if (!path.empty() && any_mesh_option) throw InputError("give SCENE or --p1, --p2, --i1, --i2, not both");
     refuse_groups_unless_parts(opt);
     if (!path.empty()) {
@@ -72,6 +77,12 @@ internal::ExactScene SceneArgs::load() const {
             sc.P[i].seed = {s[0], s[1], s[2]};
             sc.P[i].seed_given = true;
         }
+        if (!pose[i].empty()) {
+            const std::vector<Q> m = number_list(pose[i], 12, "--pose" + n, counted);
+            internal::Pose p;
+            std::copy(m.begin(), m.end(), p.begin());
+            internal::apply_pose(p, sc.P[i], "--pose" + n);
+        }
     }
     finish_scene(sc, "command line");
     say_notes(sc);
@@ -87,12 +98,13 @@ std::shared_ptr<const internal::CompactScene> SceneArgs::load_compact(internal::
     refuse_groups_unless_parts(opt);
     internal::note_inputs({path, mesh[0], mesh[1]});  // (a scene naming meshes is read by load(), which notes them)
     const bool scene_only = !path.empty() && mesh[0].empty() && mesh[1].empty() && interval[0].empty() &&
-                            interval[1].empty() && seed[0].empty() && seed[1].empty();
+                            interval[1].empty() && seed[0].empty() && seed[1].empty() && pose[0].empty() &&
+                            pose[1].empty();
     if (scene_only && path != "-")
         if (auto cs = internal::read_scene_fast(path, opt.numbers))
             return std::make_shared<internal::CompactScene>(std::move(*cs));
-    const bool meshes =
-        path.empty() && !mesh[0].empty() && !mesh[1].empty() && !interval[0].empty() && !interval[1].empty();
+    const bool meshes = path.empty() && !mesh[0].empty() && !mesh[1].empty() && !interval[0].empty() &&
+                        !interval[1].empty() && pose[0].empty() && pose[1].empty();
     if (meshes) {
         // Any problem sends the scene to load(), whose checks come in its own order: the same
         // error message either way.

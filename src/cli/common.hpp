@@ -21,7 +21,7 @@ using internal::ReadOptions;
 
 // The scene, from a scene file or from mesh files and ranges (--p1 --p2 --i1 --i2 [--seed1 --seed2]).
 struct SceneArgs {
-    std::string path, mesh[2], interval[2], seed[2];
+    std::string path, mesh[2], interval[2], seed[2], pose[2];
     ReadOptions opt;
     void add(CLI::App* sub);            // the options, with --numbers
     internal::ExactScene load() const;  // refuses both forms at once, and neither

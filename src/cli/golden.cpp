@@ -29,6 +29,9 @@ Command add_golden(CLI::App& app) {
     sub->add_option("--i2", pair->interval[1], "I2 as LO,HI");
     sub->add_option("--seed1", pair->seed[0], "P1's seed as X,Y,Z (default: the mean of its vertices)");
     sub->add_option("--seed2", pair->seed[1], "P2's seed as X,Y,Z");
+    sub->add_option("--pose1", pair->pose[0], "P1 at a pose [R | t]: 12 numbers, rows R11,R12,R13,T1,...")
+        ->type_name("R|t");
+    sub->add_option("--pose2", pair->pose[1], "P2 at a pose [R | t]")->type_name("R|t");
     example(sub,
             "Examples:\n  scalecert golden --family nearly-equal-slopes --count 10 --eps 1/1024 --dir golden/\n"
             "  scalecert golden certificates/scenes/tetra_box_switch.json --dir golden/\n"
@@ -39,7 +42,8 @@ Command add_golden(CLI::App& app) {
                 // written into the directory and taken as one of SCENES.
                 std::optional<std::pair<std::string, std::string>> mesh_scene;
                 const bool meshes = !pair->mesh[0].empty() || !pair->mesh[1].empty() || !pair->interval[0].empty() ||
-                                    !pair->interval[1].empty() || !pair->seed[0].empty() || !pair->seed[1].empty();
+                                    !pair->interval[1].empty() || !pair->seed[0].empty() || !pair->seed[1].empty() ||
+                                    !pair->pose[0].empty() || !pair->pose[1].empty();
                 if (meshes) {
                     pair->opt = a->opt;
                     const ExactScene sc = pair->load();

@@ -131,7 +131,7 @@ ExactScene parse_scene_text(const std::string& text, const std::string& name, co
             }
         };
         if (const JNode* parts = p->find("parts")) {
-            only(*p, pname[i], {"parts", "seed"});
+            only(*p, pname[i], {"parts", "seed", "pose"});
             const std::string where = std::string(pname[i]) + ".parts";
             if (!opt.allow_parts)
                 r.fail(where,
@@ -167,7 +167,7 @@ ExactScene parse_scene_text(const std::string& text, const std::string& name, co
             }
             if (!in.part_names.empty()) in.part_names.resize(in.parts.size());
         } else {
-            only(*p, pname[i], {"vertices", "off", "mesh", "seed", "parts_from_groups"});
+            only(*p, pname[i], {"vertices", "off", "mesh", "seed", "parts_from_groups", "pose"});
             // An OBJ "mesh" as a compound: --parts-from-groups, or this object's "parts_from_groups".
             bool groups = opt.parts_from_groups && !p->find("vertices");
             if (const JNode* g = p->find("parts_from_groups")) {
@@ -186,6 +186,21 @@ ExactScene parse_scene_text(const std::string& text, const std::string& name, co
             in.seed = r.point(*s, std::string(pname[i]) + ".seed");
             in.seed_given = true;
         }
+        if (const JNode* ps = p->find("pose")) {
+            const std::string w = std::string(pname[i]) + ".pose";
+            if (ps->kind != JNode::Array || ps->items.size() != 3)
+                r.fail(w, "expected 3 rows [r1, r2, r3, t] (the matrix [R | t])");
+            Pose m;
+            for (int row = 0; row < 3; ++row) {
+                const JNode& rw = ps->items[static_cast<size_t>(row)];
+                const std::string wr = w + "[" + std::to_string(row) + "]";
+                if (rw.kind != JNode::Array || rw.items.size() != 4) r.fail(wr, "expected 4 numbers [r1, r2, r3, t]");
+                for (int k = 0; k < 4; ++k)
+                    m[static_cast<size_t>(4 * row + k)] =
+                        r.number(rw.items[static_cast<size_t>(k)], [&] { return wr + "[" + std::to_string(k) + "]"; });
+            }
+            apply_pose(m, in, name + ": " + w);
+        }
     }
     const char* iname[2] = {"I1", "I2"};
     for (int i = 0; i < 2; ++i) {
@@ -199,6 +214,23 @@ ExactScene parse_scene_text(const std::string& text, const std::string& name, co
     sc.inexact_numbers = *opt.inexact;
     sc.numbers = opt.numbers;
     return sc;
+}
+
+void apply_pose(const Pose& m, PolyInput& in, const std::string& where) {
+    const Q det =
+        m[0] * (m[5] * m[10] - m[6] * m[9]) - m[1] * (m[4] * m[10] - m[6] * m[8]) + m[2] * (m[4] * m[9] - m[5] * m[8]);
+    if (sgn(det) == 0)
+        throw InputError(where + ": its 3x3 part R is singular (determinant 0): the object would be flat");
+    auto moved = [&m](const Vec3q& v) {
+        Vec3q out;
+        for (size_t row = 0; row < 3; ++row)
+            out[row] = m[4 * row] * v[0] + m[4 * row + 1] * v[1] + m[4 * row + 2] * v[2] + m[4 * row + 3];
+        return out;
+    };
+    for (Vec3q& v : in.points) v = moved(v);
+    for (auto& part : in.parts)
+        for (Vec3q& v : part) v = moved(v);
+    if (in.seed_given) in.seed = moved(in.seed);
 }
 
 std::vector<std::string> scene_notes(const ExactScene& sc) {

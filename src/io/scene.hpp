@@ -2,6 +2,7 @@
 #pragma once
 #include "numeric/exact.hpp"
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -57,6 +58,13 @@ struct ReadOptions {
     // When set, counts the numbers read that are not the number as written (for the reading's note).
     long* inexact = nullptr;
 };
+
+// A pose [R | t]: three rows of four numbers, R·v + t.
+using Pose = std::array<Q, 12>;
+// Moves an object's points (every part's) and its given seed to the pose, exactly (a default seed
+// is the mean of the moved points: finish_scene). Throws InputError, prefixed with `where`, when
+// R is singular.
+void apply_pose(const Pose& m, PolyInput& in, const std::string& where);
 
 // What the command says once on stderr about a scene read (Scene::notes()): each object's note, and
 // how many numbers were read as binary values other than their text.
