@@ -6,7 +6,6 @@
 #include "io/mesh.hpp"
 #include "curve/scan.hpp"
 
-#include <future>
 #include <iostream>
 
 namespace scalecert::cli {
@@ -109,38 +108,20 @@ std::shared_ptr<const internal::CompactScene> SceneArgs::load_compact(internal::
         // Any problem sends the scene to load(), whose checks come in its own order: the same
         // error message either way.
         try {
-            auto cs = std::make_shared<internal::CompactScene>();
-            bool fast = true;
-            // Both files at once (a thread each); errors in the order of the files.
-            std::future<std::optional<internal::IntPoints>> read[2];
-            for (int i = 0; i < 2; ++i)
-                read[i] = std::async(std::launch::async, [this, i]() -> std::optional<internal::IntPoints> {
-                    if (internal::mesh_format_of(mesh[i]) != internal::MeshFormat::Off) return std::nullopt;
-                    return internal::read_off_fast(mesh[i], opt.numbers);
-                });
-            std::optional<internal::IntPoints> pts[2];
-            for (int i = 0; i < 2; ++i) pts[i] = read[i].get();
-            for (int i = 0; i < 2 && fast; ++i) {
-                std::optional<internal::IntPoints>& p = pts[i];
-                if (!p) {
-                    fast = false;
-                    break;
-                }
-                cs->P[i] = std::move(*p);
+            Q lo[2], hi[2];
+            std::optional<Vec3q> sd[2];
+            for (int i = 0; i < 2; ++i) {
                 const std::string n = std::to_string(i + 1);
                 const std::vector<Q> r = number_list(interval[i], 2, "--i" + n, opt);
-                cs->lo[i] = r[0];
-                cs->hi[i] = r[1];
-                if (sgn(r[0]) <= 0 || r[0] > r[1]) fast = false;  // load() words the error
+                lo[i] = r[0];
+                hi[i] = r[1];
                 if (!seed[i].empty()) {
-                    const std::vector<Q> sd = number_list(seed[i], 3, "--seed" + n, opt);
-                    cs->seed[i] = {sd[0], sd[1], sd[2]};
-                    cs->seed_given[i] = true;
-                } else {
-                    cs->seed[i] = cs->P[i].mean();
+                    const std::vector<Q> s = number_list(seed[i], 3, "--seed" + n, opt);
+                    sd[i] = Vec3q{s[0], s[1], s[2]};
                 }
             }
-            if (fast) return cs;
+            if (auto cs = internal::compact_from_off(mesh, lo, hi, sd, opt.numbers))
+                return std::make_shared<internal::CompactScene>(std::move(*cs));
         } catch (const InputError&) {}
     }
     *full = load();

@@ -1,5 +1,6 @@
 #include "io/int_points.hpp"
 #include "io/files.hpp"
+#include "io/mesh.hpp"
 
 #include "numeric/small_int.hpp"
 
@@ -9,6 +10,7 @@
 #include <unistd.h>
 
 #include <cctype>
+#include <future>
 
 namespace scalecert::internal {
 
@@ -424,6 +426,34 @@ std::optional<CompactScene> read_scene_fast(const std::string& path, Numbers num
     std::optional<CompactScene> r;
     map_file(path, [&](const char* p, size_t n) { r = parse_scene_fast(p, n, numbers); });
     return r;
+}
+
+std::optional<CompactScene> compact_from_off(const std::string path[2], const Q lo[2], const Q hi[2],
+                                             const std::optional<Vec3q> seed[2], Numbers numbers) {
+    for (int i = 0; i < 2; ++i)
+        if (sgn(lo[i]) <= 0 || lo[i] > hi[i]) return std::nullopt;
+    std::future<std::optional<IntPoints>> read[2];
+    for (int i = 0; i < 2; ++i)
+        read[i] = std::async(std::launch::async, [&path, i, numbers]() -> std::optional<IntPoints> {
+            try {
+                if (mesh_format_of(path[i]) != MeshFormat::Off) return std::nullopt;
+            } catch (const InputError&) {
+                return std::nullopt;  // the full reader words it
+            }
+            return read_off_fast(path[i], numbers);
+        });
+    std::optional<IntPoints> pts[2];
+    for (int i = 0; i < 2; ++i) pts[i] = read[i].get();  // both threads joined before returning
+    if (!pts[0] || !pts[1]) return std::nullopt;
+    CompactScene cs;
+    for (int i = 0; i < 2; ++i) {
+        cs.P[i] = std::move(*pts[i]);
+        cs.lo[i] = lo[i];
+        cs.hi[i] = hi[i];
+        cs.seed_given[i] = seed[i].has_value();
+        cs.seed[i] = seed[i] ? *seed[i] : cs.P[i].mean();
+    }
+    return cs;
 }
 
 std::optional<CompactScene> compact_scene(const ExactScene& sc) {

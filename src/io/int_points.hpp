@@ -57,6 +57,12 @@ std::optional<CompactScene> compact_scene(const ExactScene& sc);
 // Under Double and Float32, every number must be what it reads as (none otherwise, as above).
 std::optional<CompactScene> parse_scene_fast(const char* data, size_t size, Numbers numbers);
 std::optional<CompactScene> read_scene_fast(const std::string& path, Numbers numbers);
+// Two OFF files (P1, P2) read straight into compact form, both at once (a thread each), with the
+// ranges and the seeds given (a seed not given: the mean of its points). None when either file is
+// not read by read_off_fast, or a range is not 0 < lo <= hi: the full reader then reads the
+// files, or words the error in its own order.
+std::optional<CompactScene> compact_from_off(const std::string path[2], const Q lo[2], const Q hi[2],
+                                             const std::optional<Vec3q> seed[2], Numbers numbers);
 // Back to the exact scene (for the hull path), with the same seeds.
 ExactScene full_scene(const CompactScene& cs);
 

@@ -199,26 +199,15 @@ Scene Scene::load(const std::string& path, Numbers numbers) {
 
 std::shared_ptr<Scene::Data> SceneAccess::from_integers(const std::string& p1_path, const std::string& p2_path,
                                                         const Interval& i1, const Interval& i2, Numbers numbers) {
-    const Interval* ranges[2] = {&i1, &i2};
-    for (const Interval* r : ranges)
-        if (sgn(r->lo) <= 0 || r->lo > r->hi) return nullptr;
-    for (const std::string* p : {&p1_path, &p2_path})
-        if (internal::mesh_format_of(*p) != internal::MeshFormat::Off) return nullptr;
     try {
-        auto cs = std::make_shared<internal::CompactScene>();
-        const std::string* paths[2] = {&p1_path, &p2_path};
-        for (int i = 0; i < 2; ++i) {
-            std::optional<internal::IntPoints> pts = internal::read_off_fast(*paths[i], numbers);
-            if (!pts) return nullptr;
-            cs->P[i] = std::move(*pts);
-            cs->lo[i] = ranges[i]->lo;
-            cs->hi[i] = ranges[i]->hi;
-            cs->seed[i] = cs->P[i].mean();
-        }
-        if (!internal::walk_by_default(cs->P[0].size(), cs->P[1].size())) return nullptr;
+        const std::string paths[2] = {p1_path, p2_path};
+        const Rational lo[2] = {i1.lo, i2.lo}, hi[2] = {i1.hi, i2.hi};
+        const std::optional<internal::Vec3q> seeds[2];
+        std::optional<internal::CompactScene> cs = internal::compact_from_off(paths, lo, hi, seeds, numbers);
+        if (!cs || !internal::walk_by_default(cs->P[0].size(), cs->P[1].size())) return nullptr;
         auto d = std::make_shared<Scene::Data>();
         d->integers_only = true;
-        d->compact = std::move(cs);
+        d->compact = std::make_shared<internal::CompactScene>(std::move(*cs));
         d->name = "scene";
         // Session::plan walks such a scene (compact points, walk_by_default); Session::check would
         // then prove the seeds as here, and build the hull model when they are not.
