@@ -143,6 +143,13 @@ Rational rational(const py::handle& h, const char* what, scalecert::Numbers numb
     throw scalecert::InputError(std::string(what) + ": not a number (int, Fraction, Decimal, float or decimal string)");
 }
 
+// A float beyond the float32 range, read under Numbers::Float32: a float32 program held an infinity.
+bool beyond_float32(const py::handle& h, scalecert::Numbers numbers) {
+    if (numbers != scalecert::Numbers::Float32 || !is_float(h)) return false;
+    const double d = py::float_(h.cast<py::object>()).cast<double>();
+    return std::isfinite(d) && !std::isfinite(static_cast<float>(d));
+}
+
 // A float (Python's or numpy's) that is NaN or infinite: a program's output that is no answer.
 bool non_finite(const py::handle& h) {
     return is_float(h) && !std::isfinite(py::float_(h.cast<py::object>()).cast<double>());
@@ -464,7 +471,7 @@ py::dict certify_arrays(const CertifyFn& certify, const std::string& kind, const
         c.rho2 = rational(r2[i], ("rho2" + at).c_str(), numbers);
         // The program's answers: a NaN or an infinity there is no answer (the claim is wrong).
         auto answer = [&](const py::handle& h, const char* field, Rational& q) {
-            if (non_finite(h)) {
+            if (non_finite(h) || beyond_float32(h, numbers)) {
                 if (c.no_answer.empty()) c.no_answer = field;
             } else {
                 q = rational(h, (field + at).c_str(), numbers);
@@ -472,7 +479,8 @@ py::dict certify_arrays(const CertifyFn& certify, const std::string& kind, const
         };
         auto answer_point = [&](const py::handle& h, const char* field, const std::string& what, scalecert::Point& p) {
             const py::list l = as_list(h, what);
-            if (l.size() == 3 && (non_finite(l[0]) || non_finite(l[1]) || non_finite(l[2]))) {
+            auto none = [&](const py::handle& x) { return non_finite(x) || beyond_float32(x, numbers); };
+            if (l.size() == 3 && (none(l[0]) || none(l[1]) || none(l[2]))) {
                 if (c.no_answer.empty()) c.no_answer = field;
             } else {
                 p = point(h, what, numbers);

@@ -725,3 +725,10 @@ def test_numbers_mean_what_the_program_held(tmp_path):
                             ("1/2", 2), ("1/2", 2), numbers=numbers)
         assert p.json() == scalecert.Scene([[x, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]],
                                            [[5, 0, 0], [6, 0, 0], [5, 1, 0], [5, 0, 1]], ("1/2", 2), ("1/2", 2)).json()
+
+
+def test_float32_overflow_is_no_answer():
+    # 1e39 is beyond the float32 range (about 3.4e38): a float32 program held an infinity, so the
+    # claim is no answer (wrong), and the rest of the batch is judged.
+    r = stacked().certify("distance", [1, 1], [1, "1/2"], value=[1e39, 1.5], numbers="float32")
+    assert r["right"].tolist() == [False, True]
