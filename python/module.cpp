@@ -683,18 +683,39 @@ PYBIND11_MODULE(scalecert, m) {
         .def_static(
             "from_meshes",
             [](const py::handle& p1, const py::handle& p2, const py::handle& i1, const py::handle& i2,
-               const py::handle& groups, const py::handle& numbers_) {
+               const py::handle& groups, const py::handle& numbers_, const py::handle& poses_) {
                 const scalecert::Numbers numbers = numbers_arg(numbers_);
+                std::array<std::optional<scalecert::Pose>, 2> poses;
+                if (!poses_.is_none()) {
+                    const py::list l = as_list(poses_, "poses");
+                    if (l.size() != 2)
+                        throw scalecert::InputError("poses: expected (pose1, pose2); either may be None");
+                    for (size_t i = 0; i < 2; ++i) {
+                        if (l[i].is_none()) continue;
+                        const std::string what = "poses[" + std::to_string(i) + "]";
+                        const py::list rows = as_list(l[i], what);
+                        if (rows.size() != 3) throw scalecert::InputError(what + ": expected 3 rows [r1, r2, r3, t]");
+                        scalecert::Pose& m = poses[i].emplace();
+                        for (size_t r = 0; r < 3; ++r) {
+                            const std::string wr = what + "[" + std::to_string(r) + "]";
+                            const py::list row = as_list(rows[r], wr);
+                            if (row.size() != 4)
+                                throw scalecert::InputError(wr + ": expected 4 numbers [r1, r2, r3, t]");
+                            for (size_t k = 0; k < 4; ++k) m[r][k] = rational(row[k], wr.c_str(), numbers);
+                        }
+                    }
+                }
                 return warn_notes(
                     PyScene{scalecert::Scene::from_meshes(path_arg(p1, "p1"), path_arg(p2, "p2"),
                                                           interval(i1, "I1", numbers), interval(i2, "I2", numbers),
-                                                          flag_arg(groups, "parts_from_groups"), numbers),
+                                                          flag_arg(groups, "parts_from_groups"), numbers, poses),
                             nullptr});
             },
             py::arg("p1"), py::arg("p2"), py::arg("I1"), py::arg("I2"), py::arg("parts_from_groups") = false,
-            py::arg("numbers") = "double",
+            py::arg("numbers") = "double", py::arg("poses") = py::none(),
             "mesh files (.off .obj .ply .stl; text decimals and float I1, I2 read as numbers says), each one convex "
-            "object; with parts_from_groups=True each OBJ file's "
+            "object; poses = (pose1, pose2), each None or a 3x4 [R | t] by rows (e.g. a numpy array) moving that "
+            "object's points to R.v + t exactly before anything else; with parts_from_groups=True each OBJ file's "
             "groups with faces are its convex parts, named by their groups. An OBJ file with several groups read "
             "as one convex object gives a UserWarning saying so")
         .def_property_readonly(

@@ -817,3 +817,32 @@ BOOST_AUTO_TEST_CASE(mesh_and_scene_numbers_are_what_the_program_holds) {
     }
     std::filesystem::remove_all(dir);
 }
+
+// Scene::from_meshes at poses: the tall box [0,2]^2 x [3,7] turned a quarter about y and moved by
+// (−3, 0, 5) is [0,4] x [0,2] x [3,5] (test_cli derives it): touching the cube [0,2]^3 on
+// ρ1 + ρ2 = 3 instead of ρ1 + 2ρ2 = 4.
+BOOST_AUTO_TEST_CASE(meshes_at_poses) {
+    const std::string dir = "/tmp/scalecert-test-api-poses-" + std::to_string(::getpid());
+    std::filesystem::create_directories(dir);
+    std::ofstream(dir + "/cube.obj") << "v 0 0 0\nv 2 0 0\nv 0 2 0\nv 2 2 0\nv 0 0 2\nv 2 0 2\nv 0 2 2\nv 2 2 2\n";
+    std::ofstream(dir + "/tall.obj") << "v 0 0 3\nv 2 0 3\nv 0 2 3\nv 2 2 3\nv 0 0 7\nv 2 0 7\nv 0 2 7\nv 2 2 7\n";
+    const scalecert::Interval I{R(1, 2), R(2)};
+    const scalecert::Pose quarter = {{{R(0), R(0), R(1), R(-3)}, {R(0), R(1), R(0), R(0)}, {R(-1), R(0), R(0), R(5)}}};
+    const scalecert::Scene plain = scalecert::Scene::from_meshes(dir + "/cube.obj", dir + "/tall.obj", I, I);
+    const scalecert::Scene posed = scalecert::Scene::from_meshes(dir + "/cube.obj", dir + "/tall.obj", I, I, false,
+                                                                 scalecert::Numbers::Double, {std::nullopt, quarter});
+    BOOST_TEST((scalecert::Analysis(plain).verdict(R(1), R(3, 2)) == scalecert::Verdict::Touching));
+    BOOST_TEST((scalecert::Analysis(posed).verdict(R(1), R(3, 2)) == scalecert::Verdict::Separated));
+    BOOST_TEST((scalecert::Analysis(posed).verdict(R(1), R(2)) == scalecert::Verdict::Touching));
+    BOOST_TEST((posed.seed(1) == scalecert::Point{R(2), R(1), R(4)}));  // the mean of the moved points
+    // A singular R is refused in one line.
+    scalecert::Pose flat = quarter;
+    flat[2] = {R(0), R(0), R(0), R(5)};
+    BOOST_CHECK_EXCEPTION(scalecert::Scene::from_meshes(dir + "/cube.obj", dir + "/tall.obj", I, I, false,
+                                                        scalecert::Numbers::Double, {flat, std::nullopt}),
+                          scalecert::InputError, [](const scalecert::InputError& e) {
+                              return std::string(e.what()).find("pose of P1: its 3x3 part R is singular") !=
+                                     std::string::npos;
+                          });
+    std::filesystem::remove_all(dir);
+}

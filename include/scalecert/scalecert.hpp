@@ -19,6 +19,9 @@ const char* version();  // "MAJOR.MINOR.PATCH"
 
 using Rational = mpq_class;
 using Point = std::array<Rational, 3>;
+// A pose [R | t] by rows: a point v moves to R·v + t, exactly. R need not be orthogonal (a rotation
+// written in doubles rarely is); a singular R is refused.
+using Pose = std::array<std::array<Rational, 4>, 3>;
 struct Interval {
     Rational lo, hi;
 };  // a closed range of scaling factors, 0 < lo <= hi
@@ -79,9 +82,11 @@ class Scene {
     static Scene load(const std::string& scene_json_path, Numbers numbers = Numbers::Double);
     // Mesh files (.off .obj .ply .stl; text numbers read as `numbers` says, binary floats at their
     // value): each mesh one convex part, or with parts_from_groups each OBJ file's 'o'/'g' groups
-    // with faces its parts (other formats are refused then).
+    // with faces its parts (other formats are refused then). poses[i], when given, moves object
+    // i's points to that pose before anything else (its seed is then the mean of the moved points).
     static Scene from_meshes(const std::string& p1_path, const std::string& p2_path, Interval i1, Interval i2,
-                             bool parts_from_groups = false, Numbers numbers = Numbers::Double);
+                             bool parts_from_groups = false, Numbers numbers = Numbers::Double,
+                             const std::array<std::optional<Pose>, 2>& poses = {});
     bool convex() const;                                    // two convex objects (neither given as parts)
     size_t part_count(int i) const;                         // 1 for a convex object
     const std::vector<Point>& points(int i) const;          // i = 0 (P1) or 1 (P2): all its points, as given

@@ -732,3 +732,19 @@ def test_float32_overflow_is_no_answer():
     # claim is no answer (wrong), and the rest of the batch is judged.
     r = stacked().certify("distance", [1, 1], [1, "1/2"], value=[1e39, 1.5], numbers="float32")
     assert r["right"].tolist() == [False, True]
+
+
+def test_meshes_at_poses(tmp_path):
+    # The tall box [0,2]^2 x [3,7] turned a quarter about y and moved by (-3, 0, 5) is
+    # [0,4] x [0,2] x [3,5]: touching the cube [0,2]^3 on rho1 + rho2 = 3 (unposed: rho1 + 2 rho2 = 4).
+    (tmp_path / "cube.obj").write_text("".join(f"v {x} {y} {z}\n" for x in (0, 2) for y in (0, 2) for z in (0, 2)))
+    (tmp_path / "tall.obj").write_text("".join(f"v {x} {y} {z}\n" for x in (0, 2) for y in (0, 2) for z in (3, 7)))
+    pose = np.array([[0, 0, 1, -3], [0, 1, 0, 0], [-1, 0, 0, 5]], dtype=float)
+    args = (str(tmp_path / "cube.obj"), str(tmp_path / "tall.obj"), ("1/2", 2), ("1/2", 2))
+    assert scalecert.Scene.from_meshes(*args).verdict(1, F(3, 2)) == scalecert.Verdict.Touching
+    posed = scalecert.Scene.from_meshes(*args, poses=(None, pose))
+    assert posed.verdict(1, F(3, 2)) == scalecert.Verdict.Separated
+    assert posed.verdict(1, 2) == scalecert.Verdict.Touching
+    assert posed.seeds()[1] == (2, 1, 4)
+    with pytest.raises(scalecert.InputError, match=r"poses\[1\]\[0\]: expected 4 numbers"):
+        scalecert.Scene.from_meshes(*args, poses=(None, [[1, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0]]))

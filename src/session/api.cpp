@@ -219,19 +219,32 @@ std::shared_ptr<Scene::Data> SceneAccess::from_integers(const std::string& p1_pa
 }
 
 Scene Scene::from_meshes(const std::string& p1_path, const std::string& p2_path, Interval i1, Interval i2,
-                         bool parts_from_groups, Numbers numbers) {
-    if (!parts_from_groups)
+                         bool parts_from_groups, Numbers numbers,
+                         const std::array<std::optional<scalecert::Pose>, 2>& poses) {
+    const bool posed = poses[0] || poses[1];
+    if (!parts_from_groups && !posed)
         if (std::shared_ptr<Data> d = SceneAccess::from_integers(p1_path, p2_path, i1, i2, numbers))
             return Scene(std::move(d));
+    // Each object at its pose, when it has one.
+    auto move = [&poses](int i, internal::PolyInput& in) {
+        if (!poses[static_cast<size_t>(i)]) return;
+        internal::Pose m;
+        for (size_t row = 0; row < 3; ++row)
+            for (size_t k = 0; k < 4; ++k) m[4 * row + k] = (*poses[static_cast<size_t>(i)])[row][k];
+        internal::apply_pose(m, in, std::string("scene: pose of P") + (i ? "2" : "1"));
+    };
     long inexact = 0;
     internal::ReadOptions opt;
     opt.numbers = numbers;
     opt.inexact = &inexact;
     if (!parts_from_groups) {
         std::string note[2];
-        std::vector<Point> p1 = read_mesh(p1_path, opt, &note[0]), p2 = read_mesh(p2_path, opt, &note[1]);
-        internal::ExactScene sc = convex_scene(std::move(p1), std::move(p2), i1, i2, std::nullopt, std::nullopt,
-                                               std::move(note[0]), std::move(note[1]));
+        internal::PolyInput in[2];
+        in[0].points = read_mesh(p1_path, opt, &note[0]);
+        in[1].points = read_mesh(p2_path, opt, &note[1]);
+        for (int i = 0; i < 2; ++i) move(i, in[i]);
+        internal::ExactScene sc = convex_scene(std::move(in[0].points), std::move(in[1].points), i1, i2, std::nullopt,
+                                               std::nullopt, std::move(note[0]), std::move(note[1]));
         sc.inexact_numbers = inexact;
         sc.numbers = numbers;
         return Scene(SceneAccess::validated(std::move(sc), "scene"));
@@ -244,6 +257,7 @@ Scene Scene::from_meshes(const std::string& p1_path, const std::string& p2_path,
     const Interval* ranges[2] = {&i1, &i2};
     for (int i = 0; i < 2; ++i) {
         read_mesh_object(*paths[i], opt, sc.P[i]);
+        move(i, sc.P[i]);
         seed_and_range(sc, i, std::nullopt, *ranges[i]);
     }
     const std::string name = p1_path + " and " + p2_path;
