@@ -164,6 +164,13 @@ BOOST_AUTO_TEST_CASE(query_words_and_exact_numbers) {
     // As written, 1/10 + 29/10 = 3: touching. A fraction is exact under every reading.
     BOOST_TEST(run("query " + g.string() + " 0.1 2.9 --numbers exact").out == "touching\n");
     BOOST_TEST(run("query " + g.string() + " 1/10 29/10 --numbers float32").out == "touching\n");
+    // classify reads its pairs the same way (doubles, or floats); as written it refuses: one pair
+    // exactly is query's.
+    const fs::path pairs = write("tenth.pairs", "0.1 2.9\n");
+    BOOST_TEST(run("classify " + g.string() + " " + pairs.string()).out == "separated\n");
+    BOOST_TEST(run("classify " + g.string() + " " + pairs.string() + " --numbers float32").out == "overlapping\n");
+    expect_error("classify exact", "classify " + g.string() + " " + pairs.string() + " --numbers exact",
+                 "--numbers exact: classify judges the doubles");
 }
 
 BOOST_AUTO_TEST_CASE(classify_many_pairs) {

@@ -92,11 +92,14 @@ bool blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
 
 bool delimiter(const char* p, const char* e) { return p == e || blank(*p) || *p == '\n' || *p == '#'; }
 
-// One number at p: std::from_chars (correctly rounded, like strtod); forms it does not take (a
-// leading '+', hexadecimal, "infinity"...) go to strtod itself. Advances p past the token.
-bool number(const char*& p, const char* e, double& out) {
-    auto r = std::from_chars(p, e, out);
+// One number at p: std::from_chars (correctly rounded, like strtod, or with `single` like strtof:
+// the float, rounded once); forms it does not take (a leading '+', hexadecimal, "infinity"...) go
+// to strtod (strtof) itself. Advances p past the token.
+bool number(const char*& p, const char* e, double& out, bool single) {
+    float f = 0;
+    auto r = single ? std::from_chars(p, e, f) : std::from_chars(p, e, out);
     if (r.ec == std::errc() && delimiter(r.ptr, e)) {
+        if (single) out = static_cast<double>(f);
         p = r.ptr;
         return true;
     }
@@ -104,7 +107,7 @@ bool number(const char*& p, const char* e, double& out) {
     while (!delimiter(q, e)) ++q;
     std::string t(p, q);
     char* end = nullptr;
-    out = std::strtod(t.c_str(), &end);
+    out = single ? static_cast<double>(std::strtof(t.c_str(), &end)) : std::strtod(t.c_str(), &end);
     p = q;
     return !t.empty() && end == t.c_str() + t.size();
 }
@@ -112,7 +115,7 @@ bool number(const char*& p, const char* e, double& out) {
 // Parses the lines in [b, e) in one pass; returns the offset of the first bad line, or npos.
 // Writes the pairs to o1, o2 (room for one per line) and their count to count (once, at the
 // end: the threads' counts share a cache line).
-size_t parse_chunk(const char* base, const char* b, const char* e, double* o1, double* o2, size_t& count) {
+size_t parse_chunk(const char* base, const char* b, const char* e, double* o1, double* o2, size_t& count, bool single) {
     size_t n = 0;
     const char* p = b;
     while (p < e) {
@@ -123,7 +126,7 @@ size_t parse_chunk(const char* base, const char* b, const char* e, double* o1, d
         for (;;) {
             while (p < e && blank(*p)) ++p;
             if (p == e || *p == '\n' || *p == '#') break;
-            ok = ok && k < 2 && number(p, e, v[k]) && std::isfinite(v[k]) && v[k] > 0;
+            ok = ok && k < 2 && number(p, e, v[k], single) && std::isfinite(v[k]) && v[k] > 0;
             ++k;
             if (!ok) break;
         }
@@ -137,7 +140,8 @@ size_t parse_chunk(const char* base, const char* b, const char* e, double* o1, d
 }
 }  // namespace
 
-void parse_pairs(const std::string& text, std::vector<double>& r1, std::vector<double>& r2, unsigned threads) {
+void parse_pairs(const std::string& text, std::vector<double>& r1, std::vector<double>& r2, unsigned threads,
+                 bool single) {
     threads = std::max(1u, threads);
     if (text.size() < (1u << 16)) threads = 1;
     // Chunks end at line ends. Each thread counts its lines, then writes its pairs straight into
@@ -160,7 +164,7 @@ void parse_pairs(const std::string& text, std::vector<double>& r1, std::vector<d
     for (unsigned t = 0; t < threads; ++t) off[t + 1] = off[t] + lines[t];
     r1.resize(off[threads]), r2.resize(off[threads]);
     each([&](unsigned t) {
-        bad[t] = parse_chunk(text.data(), cut[t], cut[t + 1], r1.data() + off[t], r2.data() + off[t], got[t]);
+        bad[t] = parse_chunk(text.data(), cut[t], cut[t + 1], r1.data() + off[t], r2.data() + off[t], got[t], single);
     });
     for (unsigned t = 0; t < threads; ++t)
         if (bad[t] != std::string::npos) {

@@ -46,9 +46,11 @@ StageCounts classify_batch(const FastCurve& f, const std::vector<double>& r1, co
                            std::vector<Verdict>& out, unsigned threads);
 
 // Reads pairs, one "rho1 rho2" per line (text after '#' and blank lines ignored), each number
-// read as the double strtod gives, on `threads` threads over chunks of the text. Throws
-// InputError("line N: ...") for the first bad line: two finite numbers > 0 are required.
-void parse_pairs(const std::string& text, std::vector<double>& r1, std::vector<double>& r2, unsigned threads);
+// read as the double strtod gives (with `single`, the float strtof gives), on `threads` threads
+// over chunks of the text. Throws InputError("line N: ...") for the first bad line: two finite
+// numbers > 0 are required.
+void parse_pairs(const std::string& text, std::vector<double>& r1, std::vector<double>& r2, unsigned threads,
+                 bool single = false);
 
 // The verdicts as text, one name per line.
 std::string verdict_lines(const std::vector<Verdict>& v);

@@ -29,6 +29,10 @@ Command add_classify(CLI::App& app) {
     return {sub, [a] {
                 a->scene.shift_positionals({&a->pairs});
                 if (a->pairs.empty()) a->pairs = "-";
+                if (a->scene.opt.numbers == Numbers::Exact)
+                    throw InputError(
+                        "--numbers exact: classify judges the doubles (or, with --numbers float32, the floats) a "
+                        "program holds; `scalecert query` takes one pair as written");
                 StageClock clock;
                 OpenScene o = open_any(a->scene, Engine::Auto, clock);
                 std::vector<double> r1, r2;
@@ -36,7 +40,7 @@ Command add_classify(CLI::App& app) {
                 internal::note_inputs({a->pairs});  // --out PAIRS would replace it
                 clock.lap("read pairs");
                 try {
-                    parse_pairs(pairs, r1, r2, a->threads);
+                    parse_pairs(pairs, r1, r2, a->threads, a->scene.opt.numbers == Numbers::Float32);
                 } catch (const InputError& e) {
                     throw InputError(a->pairs + ": " + e.what());
                 }

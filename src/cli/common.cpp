@@ -17,7 +17,7 @@ void SceneArgs::add(CLI::App* sub) {
     sub->add_option("--p1", mesh[0],
                     "P1 from a mesh file (.off .obj .ply .stl), with --p2, --i1, --i2 instead of SCENE");
     sub->add_option("--p2", mesh[1], "P2 from a mesh file");
-    sub->add_option("--i1", interval[0], "I1 as LO,HI (exact: 1/2,3)");
+    sub->add_option("--i1", interval[0], "I1 as LO,HI (fractions exact: 1/2,3; decimals as --numbers says)");
     sub->add_option("--i2", interval[1], "I2 as LO,HI");
     sub->add_option("--seed1", seed[0], "P1's seed as X,Y,Z (default: the mean of its vertices)");
     sub->add_option("--seed2", seed[1], "P2's seed as X,Y,Z");

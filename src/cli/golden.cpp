@@ -25,7 +25,7 @@ Command add_golden(CLI::App& app) {
                     "P1 from a mesh file (.off .obj .ply .stl), with --p2, --i1, --i2: golden data for the pair, "
                     "named P1-P2 by the files' names (its scene is DIR/P1-P2.scene.json)");
     sub->add_option("--p2", pair->mesh[1], "P2 from a mesh file");
-    sub->add_option("--i1", pair->interval[0], "I1 as LO,HI (exact: 1/2,3)");
+    sub->add_option("--i1", pair->interval[0], "I1 as LO,HI (fractions exact: 1/2,3; decimals as --numbers says)");
     sub->add_option("--i2", pair->interval[1], "I2 as LO,HI");
     sub->add_option("--seed1", pair->seed[0], "P1's seed as X,Y,Z (default: the mean of its vertices)");
     sub->add_option("--seed2", pair->seed[1], "P2's seed as X,Y,Z");

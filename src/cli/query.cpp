@@ -14,7 +14,8 @@ Command add_query(CLI::App& app) {
     auto a = std::make_shared<Args>();
     CLI::App* sub = app.add_subcommand("query", "separated / touching / overlapping at (RHO1, RHO2)");
     a->scene.add(sub);
-    sub->add_option("RHO1", a->rho1, "scaling of P1 (exact: 3/2, 1.5, 15e-1)");
+    sub->add_option("RHO1", a->rho1,
+                    "scaling of P1: a fraction (3/2, exact) or a decimal (1.5, read as --numbers says)");
     sub->add_option("RHO2", a->rho2, "scaling of P2");
     sub->add_flag("--json", a->json, "the verdict with its certificate, as JSON");
     sub->add_option("--segment", a->segment,
