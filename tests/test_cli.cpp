@@ -171,6 +171,18 @@ BOOST_AUTO_TEST_CASE(query_words_and_exact_numbers) {
     BOOST_TEST(run("classify " + g.string() + " " + pairs.string() + " --numbers float32").out == "overlapping\n");
     expect_error("classify exact", "classify " + g.string() + " " + pairs.string() + " --numbers exact",
                  "--numbers exact: classify judges the doubles");
+    // So does region --classify on objects made of parts (the same cubes, a part each).
+    const fs::path parts =
+        write("cubes_parts.json",
+              R"({"P1": {"parts": [{"vertices": [[0,0,0],[2,0,0],[0,2,0],[2,2,0],[0,0,2],[2,0,2],[0,2,2],[2,2,2]]}],)"
+              R"( "seed": [1,1,1]}, "P2": {"parts": [{"vertices": [[0,0,3],[2,0,3],[0,2,3],[2,2,3],[0,0,5],[2,0,5],)"
+              R"([0,2,5],[2,2,5]]}], "seed": [1,1,4]}, "I1": ["1/20", 3], "I2": ["1/20", 3]})");
+    BOOST_TEST(run("region " + parts.string() + " --classify " + pairs.string()).out == "separated\n");
+    BOOST_TEST(run("region " + parts.string() + " --classify " + pairs.string() + " --numbers float32").out ==
+               "overlapping\n");
+    expect_error("region classify exact",
+                 "region " + parts.string() + " --classify " + pairs.string() + " --numbers exact",
+                 "--numbers exact: --classify judges the doubles");
 }
 
 BOOST_AUTO_TEST_CASE(classify_many_pairs) {

@@ -38,6 +38,17 @@ void say_notes(const internal::ExactScene& sc) {
     for (const std::string& n : internal::scene_notes(sc)) std::cerr << "scalecert: note: " << n << "\n";
 }
 
+// Decimals read as doubles have denominators near 2^52 or more: a large scene of them fits no
+// machine integers over one scale, and the walk needs that. Said once, when it happened.
+static void say_off_the_walk(const internal::ExactScene& full) {
+    if (full.inexact_numbers > 0 && !full.made_of_parts() &&
+        internal::walk_by_default(full.P[0].points.size(), full.P[1].points.size()))
+        std::cerr << "scalecert: note: read as " << internal::numbers_name(full.numbers)
+                  << "s, the points fit no machine integers over one scale: the hull path, slower than the walk on "
+                     "large meshes (--numbers exact, or float32 when that is what the program held, can keep the "
+                     "walk)\n";
+}
+
 // --parts-from-groups on a command for two convex objects (curve, grid), refused before any file is read.
 static void refuse_groups_unless_parts(const internal::ReadOptions& opt) {
     if (opt.parts_from_groups && !opt.allow_parts)
@@ -204,14 +215,7 @@ internal::Session open_session(const SceneArgs& args, Engine engine, StageClock&
             return s;
         }
         if (!full.P[0].points.empty()) {  // read already
-            // Decimals read as doubles have denominators near 2^52 or more: a large scene of them
-            // fits no machine integers over one scale, and the walk needs that.
-            if (full.inexact_numbers > 0 && !full.made_of_parts() &&
-                internal::walk_by_default(full.P[0].points.size(), full.P[1].points.size()))
-                std::cerr << "scalecert: note: read as " << internal::numbers_name(full.numbers)
-                          << "s, the points fit no machine integers over one scale: the hull path, slower than the "
-                             "walk on large meshes (--numbers exact, or float32 when that is what the program held, "
-                             "can keep the walk)\n";
+            say_off_the_walk(full);
             internal::Session s(std::move(full), args.name(), engine);
             clock.lap("read scene");
             s.set_clock(&clock);
@@ -235,7 +239,10 @@ OpenScene open_any(SceneArgs& args, Engine engine, StageClock& clock) {
             o.convex->set_clock(&clock);
             return o;
         }
-    if (full.P[0].points.empty()) full = args.load();
+    if (full.P[0].points.empty())
+        full = args.load();
+    else
+        say_off_the_walk(full);  // read by load_compact, which found no compact form
     clock.lap("read scene");
     if (full.made_of_parts()) {
         o.compound = std::make_unique<internal::CompoundSession>(std::move(full), args.name());
@@ -253,14 +260,14 @@ void refuse_parts(const OpenScene& o, const std::string& name, const std::string
                          "they meet (its labelled boundary, switch points and growth set)");
 }
 
-internal::Segment parse_segment(const std::string& spec, const HullModel& m) {
+internal::Segment parse_segment(const std::string& spec, const HullModel& m, const ReadOptions& opt) {
     if (spec == "seeds" || spec == "ellipsoids") return segment_by_kind(m, spec);
     auto colon = spec.find(':');
     if (colon == std::string::npos) throw InputError("--segment: expected 'seeds' or x1,y1,z1:x2,y2,z2");
     Vec3q v[2];
     const std::string parts[2] = {spec.substr(0, colon), spec.substr(colon + 1)};
     for (int i = 0; i < 2; ++i) {
-        const std::vector<Q> c = number_list(parts[i], 3, "--segment", ReadOptions{});  // exact, as written
+        const std::vector<Q> c = number_list(parts[i], 3, "--segment", opt);  // as --numbers says
         v[i] = {c[0], c[1], c[2]};
     }
     return make_segment(m, v[0], v[1]);

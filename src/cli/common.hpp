@@ -71,7 +71,7 @@ OpenScene open_any(SceneArgs& scene, Engine engine, internal::StageClock& clock)
 // InputError on a scene of parts: `what` ("the touching curve") is for two convex objects.
 void refuse_parts(const OpenScene& o, const std::string& name, const std::string& what);
 // A segment for --segment: seeds | ellipsoids | x1,y1,z1:x2,y2,z2.
-internal::Segment parse_segment(const std::string& spec, const internal::HullModel& m);
+internal::Segment parse_segment(const std::string& spec, const internal::HullModel& m, const ReadOptions& opt);
 
 // A subcommand: its CLI11 app and what runs it (returns the exit status).
 struct Command {

@@ -35,7 +35,7 @@ Command add_curve(CLI::App& app) {
                     const internal::HullModel& m = session.hull();
                     const internal::TouchingCurve& c = session.hull_curve();
                     j = curve_json(m, c);
-                    add_segment_json(j, m, c, parse_segment(a->segment, m));
+                    add_segment_json(j, m, c, parse_segment(a->segment, m, a->scene.opt));
                 }
                 emit(dump(j), a->out);
                 clock.lap("output");

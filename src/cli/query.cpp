@@ -51,7 +51,7 @@ Command add_query(CLI::App& app) {
                 std::string segment = a->segment;
                 if (a->in_t && segment.empty()) segment = "seeds";
                 std::optional<Segment> seg;
-                if (!segment.empty()) seg = parse_segment(segment, session.hull());
+                if (!segment.empty()) seg = parse_segment(segment, session.hull(), a->scene.opt);
                 Q r1, r2;
                 if (a->in_t) {
                     const Q t1 = read_rho(a->rho1, "T1", a->scene.opt), t2 = read_rho(a->rho2, "T2", a->scene.opt);

@@ -62,9 +62,13 @@ Command add_region(CLI::App& app) {
                 if (sub->count("--classify")) {
                     if (!a->certificate.empty() || !x.empty())
                         throw InputError("--classify writes verdicts only: not with --certificate or --at");
+                    if (a->scene.opt.numbers == Numbers::Exact)
+                        throw InputError(
+                            "--numbers exact: --classify judges the doubles (or, with --numbers float32, the floats) a "
+                            "program holds; --at takes one pair as written");
                     pairs_text = read_input(a->classify.empty() ? "-" : a->classify, "pairs file", kMaxPairsBytes);
                     try {
-                        parse_pairs(pairs_text, p1, p2, a->threads);
+                        parse_pairs(pairs_text, p1, p2, a->threads, a->scene.opt.numbers == Numbers::Float32);
                     } catch (const InputError& e) {
                         throw InputError(a->classify + ": " + e.what());
                     }
