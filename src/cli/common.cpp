@@ -90,7 +90,7 @@ internal::ExactScene SceneArgs::load() const {
         if (!pose[i].empty()) {
             const std::vector<Q> m = number_list(pose[i], 12, "--pose" + n, counted);
             internal::Pose p;
-            std::copy(m.begin(), m.end(), p.begin());
+            for (size_t k = 0; k < 12; ++k) p[k / 4][k % 4] = m[k];
             internal::apply_pose(p, sc.P[i], "--pose" + n);
         }
     }

@@ -196,7 +196,7 @@ ExactScene parse_scene_text(const std::string& text, const std::string& name, co
                 const std::string wr = w + "[" + std::to_string(row) + "]";
                 if (rw.kind != JNode::Array || rw.items.size() != 4) r.fail(wr, "expected 4 numbers [r1, r2, r3, t]");
                 for (int k = 0; k < 4; ++k)
-                    m[static_cast<size_t>(4 * row + k)] =
+                    m[static_cast<size_t>(row)][static_cast<size_t>(k)] =
                         r.number(rw.items[static_cast<size_t>(k)], [&] { return wr + "[" + std::to_string(k) + "]"; });
             }
             apply_pose(m, in, name + ": " + w);
@@ -217,14 +217,14 @@ ExactScene parse_scene_text(const std::string& text, const std::string& name, co
 }
 
 void apply_pose(const Pose& m, PolyInput& in, const std::string& where) {
-    const Q det =
-        m[0] * (m[5] * m[10] - m[6] * m[9]) - m[1] * (m[4] * m[10] - m[6] * m[8]) + m[2] * (m[4] * m[9] - m[5] * m[8]);
+    const Q det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
+                  m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
     if (sgn(det) == 0)
         throw InputError(where + ": its 3x3 part R is singular (determinant 0): the object would be flat");
     auto moved = [&m](const Vec3q& v) {
         Vec3q out;
         for (size_t row = 0; row < 3; ++row)
-            out[row] = m[4 * row] * v[0] + m[4 * row + 1] * v[1] + m[4 * row + 2] * v[2] + m[4 * row + 3];
+            out[row] = m[row][0] * v[0] + m[row][1] * v[1] + m[row][2] * v[2] + m[row][3];
         return out;
     };
     for (Vec3q& v : in.points) v = moved(v);

@@ -2,7 +2,6 @@
 #pragma once
 #include "numeric/exact.hpp"
 
-#include <array>
 #include <string>
 #include <vector>
 
@@ -59,8 +58,8 @@ struct ReadOptions {
     long* inexact = nullptr;
 };
 
-// A pose [R | t]: three rows of four numbers, R·v + t.
-using Pose = std::array<Q, 12>;
+// A pose [R | t]: three rows of four numbers, R·v + t (the public scalecert::Pose).
+using scalecert::Pose;
 // Moves an object's points (every part's) and its given seed to the pose, exactly (a default seed
 // is the mean of the moved points: finish_scene). Throws InputError, prefixed with `where`, when
 // R is singular.

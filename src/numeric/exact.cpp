@@ -238,19 +238,20 @@ const char* numbers_name(Numbers n) {
     return n == Numbers::Double ? "double" : n == Numbers::Float32 ? "float32" : "exact";
 }
 
-bool binary_is_exact(const std::string& text, Numbers numbers) {
-    if (numbers == Numbers::Exact || text.find('/') != std::string::npos) return true;
-    // Integers of at most 7 characters (below 2^24) are floats and doubles exactly; the rest are compared.
-    if (text.size() <= 7 && text.find_first_of(".eE") == std::string::npos) return true;
-    return parse_number(text, numbers) == parse_exact(text);
-}
-
 Q parse_number(const std::string& text, Numbers numbers, long* inexact) {
     Q q = parse_number(text, numbers);
+    // Fractions, and integers of at most 7 characters (below 2^24: floats and doubles exactly), are
+    // read as written; the rest are compared with the text's exact value.
     if (inexact && numbers != Numbers::Exact && text.find('/') == std::string::npos &&
         !(text.size() <= 7 && text.find_first_of(".eE") == std::string::npos) && q != parse_exact(text))
         ++*inexact;
     return q;
+}
+
+bool binary_is_exact(const std::string& text, Numbers numbers) {
+    long inexact = 0;
+    parse_number(text, numbers, &inexact);
+    return inexact == 0;
 }
 
 std::string to_shortest(double d) {

@@ -227,11 +227,8 @@ Scene Scene::from_meshes(const std::string& p1_path, const std::string& p2_path,
             return Scene(std::move(d));
     // Each object at its pose, when it has one.
     auto move = [&poses](int i, internal::PolyInput& in) {
-        if (!poses[static_cast<size_t>(i)]) return;
-        internal::Pose m;
-        for (size_t row = 0; row < 3; ++row)
-            for (size_t k = 0; k < 4; ++k) m[4 * row + k] = (*poses[static_cast<size_t>(i)])[row][k];
-        internal::apply_pose(m, in, std::string("scene: pose of P") + (i ? "2" : "1"));
+        if (const auto& m = poses[static_cast<size_t>(i)])
+            internal::apply_pose(*m, in, std::string("scene: pose of P") + (i ? "2" : "1"));
     };
     long inexact = 0;
     internal::ReadOptions opt;
