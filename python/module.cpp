@@ -356,6 +356,9 @@ py::dict contact_dict(const std::optional<scalecert::Contact>& c) {
 struct PyScene {
     scalecert::Scene scene;
     mutable std::shared_ptr<const scalecert::Analysis> analysis;
+    // How the scene's floats were read; rho1, rho2 and claims given later are read alike unless
+    // a call says otherwise (certify's numbers=).
+    scalecert::Numbers numbers = scalecert::Numbers::Double;
     const scalecert::Analysis& a() const {
         if (!analysis) analysis = std::make_shared<const scalecert::Analysis>(scene);
         return *analysis;
@@ -379,7 +382,7 @@ PyScene make_scene(const py::handle& p1, const py::handle& p2, const py::handle&
     const auto s = seeds_of(seeds, numbers);
     return PyScene{scalecert::Scene(points(p1, "P1", numbers), points(p2, "P2", numbers), interval(i1, "I1", numbers),
                                     interval(i2, "I2", numbers), s[0], s[1]),
-                   nullptr};
+                   nullptr, numbers};
 }
 
 py::dict curve_dict(const scalecert::Curve& c) {
@@ -662,7 +665,7 @@ PYBIND11_MODULE(scalecert, m) {
                 return PyScene{
                     scalecert::Scene::from_parts(std::move(parts[0]), std::move(parts[1]), interval(i1, "I1", numbers),
                                                  interval(i2, "I2", numbers), s[0], s[1]),
-                    nullptr};
+                    nullptr, numbers};
             },
             py::arg("P1"), py::arg("P2"), py::arg("I1"), py::arg("I2"), py::arg("seeds") = py::none(),
             py::arg("numbers") = "double",
@@ -670,9 +673,9 @@ PYBIND11_MODULE(scalecert, m) {
             "Scene); seeds = (s1, s2), either may be None: the mean of all that object's vertices.")
         .def_static(
             "load",
-            [](const py::handle& path, const py::handle& numbers) {
-                return warn_notes(
-                    PyScene{scalecert::Scene::load(path_arg(path, "path"), numbers_arg(numbers)), nullptr});
+            [](const py::handle& path, const py::handle& numbers_) {
+                const scalecert::Numbers numbers = numbers_arg(numbers_);
+                return warn_notes(PyScene{scalecert::Scene::load(path_arg(path, "path"), numbers), nullptr, numbers});
             },
             py::arg("path"), py::arg("numbers") = "double",
             "a scene file (JSON); its objects given by vertices or as \"parts\" (each may have a \"name\"); "
@@ -709,7 +712,7 @@ PYBIND11_MODULE(scalecert, m) {
                     PyScene{scalecert::Scene::from_meshes(path_arg(p1, "p1"), path_arg(p2, "p2"),
                                                           interval(i1, "I1", numbers), interval(i2, "I2", numbers),
                                                           flag_arg(groups, "parts_from_groups"), numbers, poses),
-                            nullptr});
+                            nullptr, numbers});
             },
             py::arg("p1"), py::arg("p2"), py::arg("I1"), py::arg("I2"), py::arg("parts_from_groups") = false,
             py::arg("numbers") = "double", py::arg("poses") = py::none(),
@@ -747,7 +750,7 @@ PYBIND11_MODULE(scalecert, m) {
         .def(
             "query",
             [](const PyScene& s, const py::handle& r1, const py::handle& r2) {
-                const Rational a = rational(r1, "rho1"), b = rational(r2, "rho2");
+                const Rational a = rational(r1, "rho1", s.numbers), b = rational(r2, "rho2", s.numbers);
                 const scalecert::QueryResult q = s.a().query(a, b);
                 py::dict d;
                 d["verdict"] = q.verdict;
@@ -774,17 +777,28 @@ PYBIND11_MODULE(scalecert, m) {
         .def(
             "classify",
             [](const PyScene& s, const py::handle& r1, const py::handle& r2) {
+                if (s.numbers == scalecert::Numbers::Exact)
+                    throw scalecert::InputError(
+                        "classify: takes the doubles (or, for a scene of numbers='float32', the floats) a program "
+                        "held, not decimals as written (numbers='exact'): use verdict() per pair");
                 const scalecert::Analysis& an = s.a();
-                return classify_array(r1, r2, [&an](const std::vector<double>& a, const std::vector<double>& b) {
+                const bool single = s.numbers == scalecert::Numbers::Float32;
+                return classify_array(r1, r2, [&an, single](std::vector<double> a, std::vector<double> b) {
+                    // A float32 program held the float nearest each double (beyond its range: inf,
+                    // refused as classify refuses any pair that is not two finite numbers > 0).
+                    if (single)
+                        for (auto* v : {&a, &b})
+                            for (double& x : *v) x = static_cast<double>(static_cast<float>(x));
                     return an.classify(a, b, 0);
                 });
             },
             py::arg("rho1"), py::arg("rho2"),
-            "exact verdicts at the doubles' exact values, on all cores: an int8 array of Verdict values")
+            "exact verdicts at the doubles' exact values (for a scene of numbers='float32', the floats nearest "
+            "them), on all cores: an int8 array of Verdict values")
         .def(
             "verdict",
             [](const PyScene& s, const py::handle& r1, const py::handle& r2) {
-                return s.a().verdict(rational(r1, "rho1"), rational(r2, "rho2"));
+                return s.a().verdict(rational(r1, "rho1", s.numbers), rational(r2, "rho2", s.numbers));
             },
             py::arg("rho1"), py::arg("rho2"), "the exact verdict at (rho1, rho2) > 0")
         .def(
@@ -796,9 +810,10 @@ PYBIND11_MODULE(scalecert, m) {
             [](const PyScene& s, const py::handle& r1, const py::handle& r2, const py::handle& n,
                const py::handle& offset) {
                 std::optional<Rational> off;
-                if (!offset.is_none()) off = rational(offset, "offset");
+                if (!offset.is_none()) off = rational(offset, "offset", s.numbers);
                 const scalecert::PlaneCheck c =
-                    s.a().check_plane(rational(r1, "rho1"), rational(r2, "rho2"), point(n, "normal"), off);
+                    s.a().check_plane(rational(r1, "rho1", s.numbers), rational(r2, "rho2", s.numbers),
+                                      point(n, "normal", s.numbers), off);
                 return py::dict(py::arg("separates") = c.separates, py::arg("c1") = fraction(c.c1),
                                 py::arg("c2") = fraction(c.c2));
             },
@@ -817,7 +832,7 @@ PYBIND11_MODULE(scalecert, m) {
                const py::handle& tolerance, const py::handle& certificate, const py::handle& abs_tolerance,
                const py::handle& numbers) -> py::object {
                 scalecert::ClaimOptions opt;
-                opt.numbers = numbers_arg(numbers);
+                opt.numbers = numbers.is_none() ? s.numbers : numbers_arg(numbers);
                 // exact_decimals=True: the earlier name of numbers='exact'.
                 if (flag_arg(exact_decimals, "exact_decimals")) {
                     if (opt.numbers != scalecert::Numbers::Double && opt.numbers != scalecert::Numbers::Exact)
@@ -832,10 +847,11 @@ PYBIND11_MODULE(scalecert, m) {
                 return py::make_tuple(json_loads(r.report), r.certificate);
             },
             py::arg("claims"), py::arg("exact_decimals") = false, py::arg("tolerance") = 0,
-            py::arg("certificate") = false, py::arg("abs_tolerance") = 0, py::arg("numbers") = "double",
+            py::arg("certificate") = false, py::arg("abs_tolerance") = 0, py::arg("numbers") = py::none(),
             "marks claims right or wrong: the text of a claims file (JSON scalecert-claims-1, or 'RHO1 RHO2 VERDICT' / "
             "'curve RHO1 RHO2' / 'growth RHO' lines), a scalecert-claims-1 dict, or a list of claim dicts. A JSON "
-            "number or decimal (a float: its shortest repr) is read as numbers says: 'double' (the double it is), "
+            "number or decimal (a float: its shortest repr) is read as numbers says (default: as the scene's were): "
+            "'double' (the double it is), "
             "'float32' (the float a float32 program holds) or 'exact' (as written; exact_decimals=True is the same); "
             "a str or a Fraction is exact. "
             "tolerance and abs_tolerance as certify-fp's --tolerance and --abs-tolerance. "
@@ -852,18 +868,20 @@ PYBIND11_MODULE(scalecert, m) {
                 return certify_arrays([&a](const auto& c, const auto& o) { return a.certify(c, o); },
                                       text_arg(kind, "kind"), rho1, rho2, value, closest, direction, normal, offset,
                                       point_, verdict, tolerance, abs_tolerance, flag_arg(certificate, "certificate"),
-                                      flag_arg(fractions, "fractions"), numbers_arg(numbers));
+                                      flag_arg(fractions, "fractions"),
+                                      numbers.is_none() ? s.numbers : numbers_arg(numbers));
             },
             py::arg("kind"), py::arg("rho1"), py::arg("rho2"), py::arg("value") = py::none(),
             py::arg("closest") = py::none(), py::arg("direction") = py::none(), py::arg("normal") = py::none(),
             py::arg("offset") = py::none(), py::arg("point") = py::none(), py::arg("verdict") = py::none(),
             py::arg("tolerance") = 0, py::arg("certificate") = false, py::arg("fractions") = false,
-            py::arg("abs_tolerance") = 0, py::arg("numbers") = "double",
+            py::arg("abs_tolerance") = 0, py::arg("numbers") = py::none(),
             "claims of one kind over arrays: kind 'distance' (value, optional closest of shape (n, 2, 3)), "
             "'penetration_depth' (value, optional direction (n, 3)), 'verdict' (verdict: a str or n strs), "
             "'separating_plane' (normal (n, 3), optional offset) or 'witness_point' (point (n, 3)); rho1, rho2 and "
             "value "
-            "of length n. A float is read as numbers says ('double': the double it is; 'float32': the float nearest "
+            "of length n. A float is read as numbers says (default: as the scene's were; 'double': the double it is; "
+            "'float32': the float nearest "
             "it; "
             "'exact': its shortest decimal). tolerance is a relative error, abs_tolerance a length within "
             "which points, distances, depths and planes may be off (certificates/CLAIMS.md, 'Tolerances'; give '1e-9' "

@@ -785,6 +785,8 @@ BOOST_AUTO_TEST_CASE(certify_fp_exit_status_gates_ci) {
                  "'0x1.8p0' is not a number");
     expect_error("nan line", "certify-fp " + sc + " " + write("nan.txt", "nan 1 separated\n").string(),
                  "'nan' is not a number");
+    expect_error("hex float pair", "classify " + sc + " " + write("hexpairs.txt", "1 2\n0x1.8p0 1\n").string(),
+                 "line 2: expected two finite numbers > 0");
     // A program's NaN where it answers is a wrong claim and the batch goes on (CLAIMS.md, "Outputs
     // that are no answer"): exit 1, two of three wrong, each with its reason; the certificate checks.
     {
@@ -1896,4 +1898,16 @@ BOOST_AUTO_TEST_CASE(objects_at_poses) {
                 .string() +
             " 1 1",
         "P2.pose[0]: expected 4 numbers");
+    // Each entry within the limit for one number, a moved coordinate past it: x' = (10^4000/3)·x +
+    // 1/10^4000 at x = 2 is (2·10^8000 + 3)/(3·10^4000), a numerator of 26,577 bits > 16,384. Refused
+    // before any work, as a number of that size written in the scene would be.
+    const std::string big = "1" + std::string(4000, '0');
+    expect_error("pose past the number limit",
+                 "query " +
+                     write("bigpose.json", "{\"P1\": " + box + ", \"P2\": {" + tall + ", \"pose\": [[\"" + big +
+                                               "/3\",0,0,\"1/" + big +
+                                               "\"],[0,1,0,0],[0,0,1,0]]}, \"I1\": [1, 2], \"I2\": [1, 2]}")
+                         .string() +
+                     " 1 1",
+                 "P2.pose: a moved coordinate has more than 16384 bits");
 }

@@ -59,7 +59,9 @@ BOOST_AUTO_TEST_CASE(batch_on_two_threads_equals_one_by_one) {
 }
 
 // Pair files: doubles written with 17 significant digits read back bit for bit, across the chunk
-// boundary of two threads; strtod's other forms; blank lines and comments; the first bad line.
+// boundary of two threads; a leading '+', a bare point; blank lines and comments; the first bad
+// line, hexadecimal doubles (which strtod takes) included: CLAIMS.md, "Numbers", refuses them in
+// every format.
 BOOST_AUTO_TEST_CASE(pair_text_is_read_exactly_on_two_threads) {
     std::mt19937_64 g(4);
     std::uniform_real_distribution<double> u(1e-3, 1e3);
@@ -72,7 +74,7 @@ BOOST_AUTO_TEST_CASE(pair_text_is_read_exactly_on_two_threads) {
         text += buf;
         if (i % 1000 == 7) text += "\n   \n# a comment line\n";
     }
-    text += "+1.5 0x1.8p+1";  // a leading '+' and a hexadecimal double (3), no final newline
+    text += "+1.5 3.";  // a leading '+' and a trailing point, no final newline
     a.push_back(1.5), b.push_back(3.0);
     BOOST_REQUIRE(text.size() > (1u << 16));
     for (unsigned threads : {1u, 2u, 3u}) {
@@ -84,7 +86,8 @@ BOOST_AUTO_TEST_CASE(pair_text_is_read_exactly_on_two_threads) {
     // A bad line far into the second half: its number is counted over all lines before it.
     std::string lines;
     for (int i = 1; i <= 19999; ++i) lines += "1 2\n";  // 80 KB: two chunks
-    for (const char* bad : {"1 x", "1", "1 2 3", "0 1", "-1 2", "inf 1", "1 nan"}) {
+    for (const char* bad : {"1 x", "1", "1 2 3", "0 1", "-1 2", "inf 1", "1 nan", "0x1.8p+1 1", "1 0x3", "+-1 2",
+                            "1e 2", ". 1", "1e400 1"}) {
         std::vector<double> r1, r2;
         try {
             parse_pairs(lines + bad + "\n1 2\n", r1, r2, 2);

@@ -705,6 +705,23 @@ def test_numbers_mean_what_the_program_held(tmp_path):
         text = stacked().certify_fp("0.1 2.9 " + verdict + "\n", numbers=numbers)
         assert text["wrong"] == 0, numbers
     assert stacked().certify_fp("0.1 2.9 touching\n", exact_decimals=True)["wrong"] == 0  # the earlier name
+    # A scene made under a reading reads the rho it is asked about the same way, unless a call says
+    # otherwise; classify takes doubles (or floats), so a scene of exact decimals refuses it.
+    code = {"separated": scalecert.Verdict.Separated, "overlapping": scalecert.Verdict.Overlapping,
+            "touching": scalecert.Verdict.Touching}
+    for numbers, verdict in want.items():
+        s = scalecert.Scene(box(0, 0, 0, 2, 2, 2), box(0, 0, 3, 2, 2, 5), ("1/2", "5/2"), (F(1, 2), 2.5),
+                            numbers=numbers)
+        assert s.verdict(0.1, 2.9) == code[verdict], numbers
+        assert s.query(0.1, 2.9)["verdict"] == code[verdict], numbers
+        assert s.certify("verdict", [0.1], [2.9], verdict=verdict)["right"].tolist() == [True], numbers
+        assert s.certify_fp("0.1 2.9 " + verdict + "\n")["wrong"] == 0, numbers
+        assert s.certify("verdict", [0.1], [2.9], verdict="separated", numbers="double")["right"].tolist() == [True]
+        if numbers == "exact":
+            with pytest.raises(scalecert.InputError, match="classify: takes the doubles"):
+                s.classify(np.array([0.1]), np.array([2.9]))
+        else:
+            assert s.classify(np.array([0.1]), np.array([2.9])).tolist() == [int(code[verdict])], numbers
     with pytest.raises(scalecert.InputError, match="numbers: expected 'double', 'float32' or 'exact'"):
         stacked().certify("verdict", [1], [1], verdict="separated", numbers="half")
     # Meshes and scenes: a decimal is read the same way, and the scene says how many were not

@@ -3,6 +3,7 @@
 #include "numeric/predicates.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
@@ -92,24 +93,43 @@ bool blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
 
 bool delimiter(const char* p, const char* e) { return p == e || blank(*p) || *p == '\n' || *p == '#'; }
 
-// One number at p: std::from_chars (correctly rounded, like strtod, or with `single` like strtof:
-// the float, rounded once); forms it does not take (a leading '+', hexadecimal, "infinity"...) go
-// to strtod (strtof) itself. Advances p past the token.
-bool number(const char*& p, const char* e, double& out, bool single) {
-    float f = 0;
-    auto r = single ? std::from_chars(p, e, f) : std::from_chars(p, e, out);
-    if (r.ec == std::errc() && delimiter(r.ptr, e)) {
-        if (single) out = static_cast<double>(f);
-        p = r.ptr;
-        return true;
+// A decimal as every format takes it (CLAIMS.md, "Numbers"): a sign, digits with at most one
+// point, an optional exponent. No hexadecimal, "inf" or "nan".
+bool decimal_text(const char* p, const char* e) {
+    if (p < e && (*p == '+' || *p == '-')) ++p;
+    size_t digits = 0;
+    bool point = false;
+    for (; p < e && (std::isdigit(static_cast<unsigned char>(*p)) || (*p == '.' && !point)); ++p)
+        *p == '.' ? void(point = true) : void(++digits);
+    if (digits == 0) return false;
+    if (p < e && (*p == 'e' || *p == 'E')) {
+        ++p;
+        if (p < e && (*p == '+' || *p == '-')) ++p;
+        if (p == e || !std::isdigit(static_cast<unsigned char>(*p))) return false;
+        while (p < e && std::isdigit(static_cast<unsigned char>(*p))) ++p;
     }
+    return p == e;
+}
+
+// One number at p, a decimal, as strtod reads it (or with `single` as strtof: the float,
+// rounded once): std::from_chars, correctly rounded like them; a leading '+' (which from_chars
+// does not take) and results out of range go to strtod (strtof) itself. Advances p past the token.
+bool number(const char*& p, const char* e, double& out, bool single) {
     const char* q = p;
     while (!delimiter(q, e)) ++q;
+    if (!decimal_text(p, q)) return false;
+    float f = 0;
+    auto r = single ? std::from_chars(p, q, f) : std::from_chars(p, q, out);
+    if (r.ec == std::errc() && r.ptr == q) {
+        if (single) out = static_cast<double>(f);
+        p = q;
+        return true;
+    }
     std::string t(p, q);
     char* end = nullptr;
     out = single ? static_cast<double>(std::strtof(t.c_str(), &end)) : std::strtod(t.c_str(), &end);
     p = q;
-    return !t.empty() && end == t.c_str() + t.size();
+    return end == t.c_str() + t.size();
 }
 
 // Parses the lines in [b, e) in one pass; returns the offset of the first bad line, or npos.

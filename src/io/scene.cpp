@@ -221,10 +221,17 @@ void apply_pose(const Pose& m, PolyInput& in, const std::string& where) {
                   m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
     if (sgn(det) == 0)
         throw InputError(where + ": its 3x3 part R is singular (determinant 0): the object would be flat");
-    auto moved = [&m](const Vec3q& v) {
+    // A moved coordinate is a number the engine reads like any other: past the limit for one
+    // number it is refused at the first vertex, before the work its size would cost.
+    auto moved = [&m, &where](const Vec3q& v) {
         Vec3q out;
-        for (size_t row = 0; row < 3; ++row)
+        for (size_t row = 0; row < 3; ++row) {
             out[row] = m[row][0] * v[0] + m[row][1] * v[1] + m[row][2] * v[2] + m[row][3];
+            if (mpz_sizeinbase(out[row].get_num_mpz_t(), 2) > kMaxNumberBits ||
+                mpz_sizeinbase(out[row].get_den_mpz_t(), 2) > kMaxNumberBits)
+                throw InputError(where + ": a moved coordinate has more than " + std::to_string(kMaxNumberBits) +
+                                 " bits in its numerator or denominator (the limit for one number)");
+        }
         return out;
     };
     for (Vec3q& v : in.points) v = moved(v);
