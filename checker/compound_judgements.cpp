@@ -1,6 +1,7 @@
 // A compound judgements file (kind "compound_judgements"; certificates/FORMAT.md, "A compound
 // judgements file"): certify-fp's judgements on two objects made of parts, each re-derived from
-// its claim and its proof by CLAIMS.md's rules ("Objects made of parts"). Weights lie in one part,
+// its claim and its proof by CLAIMS.md's rules ("Objects made of parts"); a penetration depth is
+// one part pair's, proved as on two convex polytopes. Weights lie in one part,
 // over the part's own points; a block of part pairs is judged by the largest normal·x over its P1
 // parts at ρ1 (c1) and the least over its P2 parts at ρ2 (c2), each a scan of the parts' vertices.
 #include "formats.hpp"
@@ -8,6 +9,8 @@
 #include "json.hpp"
 #include "numbers.hpp"
 #include "parts.hpp"
+
+#include <optional>
 
 namespace scalecert_check {
 namespace {
@@ -191,8 +194,20 @@ bool judge(Context& cx, const CompoundScene& cs, const Rules& R, const Judgement
         }
         return right;
     }
-    cx.claim(false, wc + ".kind is verdict, separating_plane, witness_point or distance (the claims on objects made "
-                         "of parts)");
+    if (kind == "penetration_depth") {
+        // A contact: the depth of one part pair, judged as a depth on two convex polytopes, the
+        // parts scaled about their objects' seeds (every proof index into a part's own points).
+        shape(cx, cl, wc, {"kind", "rho1", "rho2", "parts", "value"}, {"direction"});
+        const Q r1 = positive(cx, cl, "rho1", wc), r2 = positive(cx, cl, "rho2", wc);
+        const std::array<size_t, 2> kj = part_pair(cx, cs, at(cl, "parts"), wc + ".parts");
+        const Q c = num(cx, at(cl, "value"), wc + ".value");
+        std::optional<V3> dir;
+        if (cl.contains("direction")) dir = nonzero_vector(cx, at(cl, "direction"), wc + ".direction");
+        const std::array<size_t, 2> a = cs.part(0, kj[0]), b = cs.part(1, kj[1]);
+        return judge_depth(cx, sc, {VertexRange{a[0], a[1]}, VertexRange{b[0], b[1]}}, R, pr, wp, r1, r2, c, dir);
+    }
+    cx.claim(false, wc + ".kind is verdict, separating_plane, witness_point, distance or penetration_depth (the "
+                         "claims on objects made of parts)");
     return false;
 }
 }  // namespace

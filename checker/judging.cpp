@@ -199,4 +199,150 @@ void check_no_answer(Context& cx, const Judgement& j) {
     cx.claim(v.is_array() && v.size() == 3, wf + " is null or three zeros");
     for (const J& x : v) cx.claim(sgn(num(cx, x, wf)) == 0, wf + " is null or three zeros");
 }
+namespace {
+// The vertices of a range, for reach() (none: all of the polyhedron's).
+std::optional<std::vector<int>> range_verts(const Scene& sc, int i, const VertexRange& r) {
+    if (r.base == 0 && r.count == sc.count(i)) return std::nullopt;
+    std::vector<int> v(r.count);
+    for (size_t k = 0; k < r.count; ++k) v[k] = static_cast<int>(r.base + k);
+    return v;
+}
+// h_M(n) = max over B1(r1) of n·x − min over B2(r2) of n·y: the depth along n times |n| (< 0: the
+// plane separates).
+Q hM(Context& cx, const Scene& sc, const std::array<VertexRange, 2>& B, const V3& n, const Q& r1, const Q& r2) {
+    const auto v1 = range_verts(sc, 0, B[0]), v2 = range_verts(sc, 1, B[1]);
+    return reach(cx, sc, 0, n, r1, v1 ? &*v1 : nullptr) +
+           reach(cx, sc, 1, {-n[0], -n[1], -n[2]}, r2, v2 ? &*v2 : nullptr);
+}
+
+// A closed surface of triangles over points of the Minkowski difference P1(r1) − P2(r2), each
+// triangle's plane at least sqrt(E) from the origin, which it has on its inner side. The radial
+// projection of such a surface covers every direction (its degree is its total solid angle over
+// 4π, > 0 as every triangle's is), so along every unit u some point t·u of it, hence of the
+// difference, has t >= sqrt(E): the depth is at least sqrt(E).
+void check_lower_bound(Context& cx, const Scene& sc, const std::array<VertexRange, 2>& B, const Q& r1, const Q& r2,
+                       const Q& E, const J& proof, const std::string& where) {
+    const J& pts = at(proof, "points");
+    const J& tris = at(proof, "triangles");
+    cx.claim(pts.is_array() && pts.size() >= 4, where + ".points has at least 4 points");
+    cx.claim(tris.is_array() && tris.size() >= 4, where + ".triangles has at least 4 triangles");
+    // In integers, so that no point or triangle pays for the seeds' digits more than once: a point
+    // of M is z = c0 + y with c0 = (1 − r1) s1 − (1 − r2) s2 (the same for all) and y = r1 v − r2 w.
+    // Over Dy = lcm(b1 D1, b2 D2) (r_i = a_i/b_i, D_i the vertices' common denominator, X = D_i v):
+    // Y = Dy y = k1 X_v − k2 X_w, k_i = a_i Dy/(b_i D_i). A triangle's N = (Y_b − Y_a) × (Y_c − Y_a)
+    // is Dy² times the true one (c0 cancels), and with c0 = C/Dc its offset N·(c0 + y_a) is
+    // N·W_a/(Dy³ Dc), W_a = Dy C + Dc Y_a. So off > 0 iff N·W_a > 0, and off² >= E |N|² iff
+    // q (N·W_a)² >= p Dy² Dc² |N|² for E = p/q. Counted before each product, by its operands' limbs.
+    auto prod = [](double la, double lb) { return 2 + la * lb; };
+    const mpz_class b1 = r1.get_den(), b2 = r2.get_den();
+    cx.spend_ops(
+        14, vsize(sc.s[0]) + vsize(sc.s[1]) + qsize(r1) + qsize(r2) + limbs(sc.scan[0]->D()) + limbs(sc.scan[1]->D()));
+    mpz_class Dy, d1 = b1 * sc.scan[0]->D(), d2 = b2 * sc.scan[1]->D();
+    mpz_lcm(Dy.get_mpz_t(), d1.get_mpz_t(), d2.get_mpz_t());
+    const mpz_class k1 = r1.get_num() * (Dy / d1), k2 = r2.get_num() * (Dy / d2);
+    V3 c0;
+    for (int c = 0; c < 3; ++c) c0[c] = (1 - r1) * sc.s[0][c] - (1 - r2) * sc.s[1][c];
+    mpz_class Dc = 1;
+    for (const Q& c : c0) mpz_lcm(Dc.get_mpz_t(), Dc.get_mpz_t(), c.get_den_mpz_t());
+    Z3 DyC;
+    for (int c = 0; c < 3; ++c) DyC[c] = Dy * (c0[c].get_num() * (Dc / c0[c].get_den()));
+    const mpz_class T = E.get_num() * Dy * Dy * Dc * Dc, q = E.get_den();
+    const double lk = std::max(limbs(k1), limbs(k2)), lDc = limbs(Dc),
+                 lDyC = std::max({limbs(DyC[0]), limbs(DyC[1]), limbs(DyC[2])});
+    cx.spend(50 * (lDyC + 1) * (limbs(E.get_num()) + 4 * limbs(Dy) + 2 * lDc + 1));
+    std::vector<Z3> Y, W;
+    std::vector<double> yl, wl;
+    for (size_t k = 0; k < pts.size(); ++k) {
+        const std::string w = where + ".points[" + std::to_string(k) + "]";
+        cx.claim(pts[k].is_array() && pts[k].size() == 2, w + " is [vertex of P1, vertex of P2]");
+        const size_t a = B[0].base + index(cx, pts[k][0], B[0].count, w),
+                     b = B[1].base + index(cx, pts[k][1], B[1].count, w);
+        const Z3 &Xa = sc.scan[0]->X(a), &Xb = sc.scan[1]->X(b);
+        double lx = 0;
+        for (int c = 0; c < 3; ++c) lx = std::max({lx, limbs(Xa[c]), limbs(Xb[c])});
+        cx.spend(100 + 6 * prod(lk, lx) + 3 * prod(lDc, lk + lx + 1));
+        Z3 y, wv;
+        double ly = 0, lw = 0;
+        for (int c = 0; c < 3; ++c) {
+            y[c] = k1 * Xa[c] - k2 * Xb[c];
+            wv[c] = DyC[c] + Dc * y[c];
+            ly = std::max(ly, limbs(y[c]));
+            lw = std::max(lw, limbs(wv[c]));
+        }
+        Y.push_back(std::move(y));
+        W.push_back(std::move(wv));
+        yl.push_back(ly);
+        wl.push_back(lw);
+    }
+    const double lT = limbs(T), lq = limbs(q);
+    std::map<std::pair<size_t, size_t>, int> edges;
+    for (size_t t = 0; t < tris.size(); ++t) {
+        const std::string w = where + ".triangles[" + std::to_string(t) + "]";
+        cx.claim(tris[t].is_array() && tris[t].size() == 3, w + " is 3 point indices");
+        size_t v[3];
+        for (int k = 0; k < 3; ++k) v[k] = index(cx, tris[t][k], Y.size(), w);
+        const double ly = 1 + std::max({yl[v[0]], yl[v[1]], yl[v[2]]}), ln = 2 * ly + 1, lnw = ln + wl[v[0]] + 1;
+        cx.spend(200 + 6 * prod(ly, ly) + 3 * prod(ln, wl[v[0]]) + prod(lnw, lnw) + prod(lq, 2 * lnw) +
+                 3 * prod(ln, ln) + prod(lT, 2 * ln + 2));
+        Z3 e1, e2;
+        for (int c = 0; c < 3; ++c) e1[c] = Y[v[1]][c] - Y[v[0]][c], e2[c] = Y[v[2]][c] - Y[v[0]][c];
+        const Z3 N = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]};
+        const mpz_class off = dotz(N, W[v[0]]);
+        cx.claim(sgn(off) > 0, w + " has the origin strictly on its inner side");
+        cx.claim(q * off * off >= T * dotz(N, N), w + "'s plane lies at least the depth from the origin");
+        for (int k = 0; k < 3; ++k)
+            cx.claim(++edges[{v[k], v[(k + 1) % 3]}] == 1, w + ": each directed edge is used once");
+    }
+    for (const auto& [e, n] : edges)
+        cx.claim(edges.count({e.second, e.first}) == 1,
+                 where + ".triangles form a closed surface (every edge is shared with opposite orientation)");
+}
+
+}  // namespace
+
+// A penetration depth (FORMAT.md, "A judgements file"), judged on the bodies B: {"separated": n}
+// (a claim of depth on a separated pair is wrong), a touching pair's supporting plane and common
+// point, or an overlapping pair's depth along its direction and the exact EPA's closed surface
+// (check_lower_bound). c the claimed value, dir the claimed direction if any.
+bool judge_depth(Context& cx, const Scene& sc, const std::array<VertexRange, 2>& B, const Rules& R, const J& pr,
+                 const std::string& wp, const Q& r1, const Q& r2, const Q& c, const std::optional<V3>& dir) {
+    if (pr.contains("separated")) {
+        shape(cx, pr, wp, {"separated"});
+        const V3 n = normal(cx, at(pr, "separated"), wp + ".separated");
+        cx.claim(sgn(hM(cx, sc, B, n, r1, r2)) < 0, wp + ".separated: the plane separates the pair strictly");
+        return false;  // a depth claimed of a separated pair
+    }
+    Q E;
+    if (pr.contains("common")) {
+        shape(cx, pr, wp, {"squared", "direction", "common"});
+        cx.claim(num(cx, at(pr, "squared"), wp + ".squared") == 0, wp + ".squared is 0 for a touching pair");
+        const V3 n = normal(cx, at(pr, "direction"), wp + ".direction");
+        cx.claim(sgn(hM(cx, sc, B, n, r1, r2)) == 0, wp + ".direction: the plane supports both bodies");
+        const J& cm = at(pr, "common");
+        shape(cx, cm, wp + ".common", {"P1", "P2"});
+        cx.claim(body_point(cx, sc, 0, r1, at(cm, "P1"), wp + ".common.P1", nullptr, B[0].base, B[0].count) ==
+                     body_point(cx, sc, 1, r2, at(cm, "P2"), wp + ".common.P2", nullptr, B[1].base, B[1].count),
+                 wp + ".common is a point of both bodies");
+        E = 0;
+    } else {
+        shape(cx, pr, wp, {"squared", "direction", "points", "triangles"});
+        E = num(cx, at(pr, "squared"), wp + ".squared");
+        cx.claim(sgn(E) > 0, wp + ".squared is > 0");
+        const V3 n = normal(cx, at(pr, "direction"), wp + ".direction");
+        const Q g = hM(cx, sc, B, n, r1, r2);
+        cx.spend_ops(4, 2 * qsize(g) + qsize(E) + 2 * vsize(n));
+        cx.claim(sgn(g) > 0 && g * g == E * dot(n, n), wp + ".direction: the depth along it is sqrt(squared)");
+        check_lower_bound(cx, sc, B, r1, r2, E, pr, wp);
+    }
+    bool right = R.close_sq(cx, c, E);
+    if (dir) {
+        const Q g = hM(cx, sc, B, *dir, r1, r2);
+        cx.spend_ops(4, 2 * qsize(g) + 2 * vsize(*dir));
+        Q along = g * g / dot(*dir, *dir);
+        if (sgn(g) < 0) along = -along;
+        right = right && R.within_above(cx, along, E);
+    }
+    return right;
+}
+
 }  // namespace scalecert_check

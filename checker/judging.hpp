@@ -7,7 +7,9 @@
 #include "context.hpp"
 #include "json.hpp"
 
+#include <array>
 #include <cstdint>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -141,4 +143,15 @@ struct Closest {
     bool in;
 };
 Closest closest_points(Context& cx, const Bodies& B, const Judgement& j, const Q& r1, const Q& r2);
+
+// Vertices [base, base + count) of polyhedron i of a scene: the body a penetration depth speaks of
+// (all of a convex polytope's vertices, or one part's of an object made of parts).
+struct VertexRange {
+    size_t base, count;
+};
+// A penetration_depth claim judged by its proof on the bodies B (the claim's shape checked by the
+// caller): the claimed value c within the tolerances of the exact depth the proof shows, and the
+// claimed direction dir, if any, one along which moving B2 that far separates them.
+bool judge_depth(Context& cx, const Scene& sc, const std::array<VertexRange, 2>& B, const Rules& R, const J& pr,
+                 const std::string& wp, const Q& r1, const Q& r2, const Q& c, const std::optional<V3>& dir);
 }  // namespace scalecert_check

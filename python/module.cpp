@@ -421,7 +421,8 @@ py::dict certify_arrays(const CertifyFn& certify, const std::string& kind, const
                         const py::handle& rho2, const py::handle& value, const py::handle& closest,
                         const py::handle& direction, const py::handle& normal, const py::handle& offset,
                         const py::handle& point_, const py::handle& verdict, const py::handle& tolerance,
-                        const py::handle& abs_tolerance, bool certificate, bool fractions, scalecert::Numbers numbers) {
+                        const py::handle& abs_tolerance, bool certificate, bool fractions, scalecert::Numbers numbers,
+                        const py::handle& parts) {
     using scalecert::ClaimKind;
     static const std::map<std::string, ClaimKind> kinds = {{"distance", ClaimKind::Distance},
                                                            {"penetration_depth", ClaimKind::PenetrationDepth},
@@ -455,13 +456,13 @@ py::dict certify_arrays(const CertifyFn& certify, const std::string& kind, const
     const auto values = rows(value, "value", measure);
     const auto cl = rows(closest, "closest", false), dir = rows(direction, "direction", false),
                nor = rows(normal, "normal", ck == ClaimKind::SeparatingPlane), off = rows(offset, "offset", false),
-               pts = rows(point_, "point", ck == ClaimKind::WitnessPoint);
+               pts = rows(point_, "point", ck == ClaimKind::WitnessPoint), prs = rows(parts, "parts", false);
     std::optional<py::list> verdicts;
     if (ck == ClaimKind::Verdict) {
         if (verdict.is_none()) throw scalecert::InputError("certify: verdict is required for kind 'verdict'");
         verdicts = py::isinstance<py::str>(verdict) ? py::list() : rows(verdict, "verdict", true);
     }
-    if ((cl && ck != ClaimKind::Distance) || (dir && ck != ClaimKind::PenetrationDepth) ||
+    if ((cl && ck != ClaimKind::Distance) || ((dir || prs) && ck != ClaimKind::PenetrationDepth) ||
         (nor && ck != ClaimKind::SeparatingPlane) || (off && ck != ClaimKind::SeparatingPlane) ||
         (pts && ck != ClaimKind::WitnessPoint) || (values && !measure))
         throw scalecert::InputError("certify: an argument that kind '" + kind + "' does not use");
@@ -498,6 +499,14 @@ py::dict certify_arrays(const CertifyFn& certify, const std::string& kind, const
             answer_point(two[1], "closest", "closest" + at + "[1]", pq[1]);
         }
         if (dir) answer_point((*dir)[i], "direction", "direction" + at, c.direction.emplace());
+        if (prs) {
+            const py::list two = as_list((*prs)[i], "parts" + at);
+            if (two.size() != 2)
+                throw scalecert::InputError("certify: parts" + at + ": expected (part of P1, part of P2)");
+            auto& kj = c.parts.emplace();
+            for (size_t k = 0; k < 2; ++k)
+                kj[k] = count_arg(two[k], ("parts" + at + "[" + std::to_string(k) + "]").c_str(), 0, 2147483647L);
+        }
         if (nor) answer_point((*nor)[i], "normal", "normal" + at, c.normal);
         if (off) answer((*off)[i], "offset", c.offset.emplace());
         if (pts) answer_point((*pts)[i], "point", "point" + at, c.point);
@@ -863,21 +872,23 @@ PYBIND11_MODULE(scalecert, m) {
                const py::handle& value, const py::handle& closest, const py::handle& direction,
                const py::handle& normal, const py::handle& offset, const py::handle& point_, const py::handle& verdict,
                const py::handle& tolerance, const py::handle& certificate, const py::handle& fractions,
-               const py::handle& abs_tolerance, const py::handle& numbers) {
+               const py::handle& abs_tolerance, const py::handle& numbers, const py::handle& parts) {
                 const scalecert::Analysis& a = s.a();
                 return certify_arrays([&a](const auto& c, const auto& o) { return a.certify(c, o); },
                                       text_arg(kind, "kind"), rho1, rho2, value, closest, direction, normal, offset,
                                       point_, verdict, tolerance, abs_tolerance, flag_arg(certificate, "certificate"),
                                       flag_arg(fractions, "fractions"),
-                                      numbers.is_none() ? s.numbers : numbers_arg(numbers));
+                                      numbers.is_none() ? s.numbers : numbers_arg(numbers), parts);
             },
             py::arg("kind"), py::arg("rho1"), py::arg("rho2"), py::arg("value") = py::none(),
             py::arg("closest") = py::none(), py::arg("direction") = py::none(), py::arg("normal") = py::none(),
             py::arg("offset") = py::none(), py::arg("point") = py::none(), py::arg("verdict") = py::none(),
             py::arg("tolerance") = 0, py::arg("certificate") = false, py::arg("fractions") = false,
-            py::arg("abs_tolerance") = 0, py::arg("numbers") = py::none(),
+            py::arg("abs_tolerance") = 0, py::arg("numbers") = py::none(), py::arg("parts") = py::none(),
             "claims of one kind over arrays: kind 'distance' (value, optional closest of shape (n, 2, 3)), "
-            "'penetration_depth' (value, optional direction (n, 3)), 'verdict' (verdict: a str or n strs), "
+            "'penetration_depth' (value, optional direction (n, 3); on objects made of parts, parts (n, 2): the part "
+            "pair "
+            "of each contact), 'verdict' (verdict: a str or n strs), "
             "'separating_plane' (normal (n, 3), optional offset) or 'witness_point' (point (n, 3)); rho1, rho2 and "
             "value "
             "of length n. A float is read as numbers says (default: as the scene's were; 'double': the double it is; "

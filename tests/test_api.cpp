@@ -525,6 +525,100 @@ BOOST_AUTO_TEST_CASE(typed_claims_on_parts_by_hand) {
     BOOST_TEST(na.items[2].reason == "normal: the zero vector");
 }
 
+// Contacts: a penetration depth on objects made of parts names its part pair, and is judged as
+// the depth of those two convex parts scaled about their objects' seeds.
+// By hand on the band: at ρ1 = ρ2 = 2, part 0 of P1 is [4,6] x [-2,2]^2 and P2 is [7/2,11/2] x
+// [-2,2]^2 (about (9/2,0,0)); moving P2 by 3/2 along −x separates them (along +x 5/2, along y or z
+// 4): depth 3/2, direction (−1,0,0). Part 1, [-6,-4] x [-2,2]^2, is apart from P2.
+// By brute force: parts that are boxes, where the depth of two meeting boxes is the least, over
+// the axes, of how far one must move either way, min(A.hi − B.lo, B.hi − A.lo).
+BOOST_AUTO_TEST_CASE(contacts_on_parts_by_hand_and_by_brute_force) {
+    using scalecert::Claim;
+    using scalecert::ClaimKind;
+    const scalecert::Analysis r(band_scene());
+    std::vector<Claim> c(4);
+    c[0].kind = ClaimKind::PenetrationDepth, c[0].rho1 = 2, c[0].rho2 = 2, c[0].value = R(3, 2);
+    c[0].parts = std::array<int, 2>{0, 0};
+    c[0].direction = scalecert::Point{-1, 0, 0};
+    c[1] = c[0], c[1].direction = scalecert::Point{1, 0, 0};                     // 5/2 along +x: wrong direction
+    c[2] = c[0], c[2].parts = std::array<int, 2>{1, 0}, c[2].direction.reset();  // apart: no depth
+    c[3] = c[0], c[3].value = R(5, 2), c[3].direction.reset();                   // the depth along +x
+    scalecert::ClaimOptions opt;
+    opt.certificate = true;
+    const scalecert::Judgements j = r.certify(c, opt);
+    BOOST_TEST(j.items[0].right);
+    BOOST_TEST((*j.items[0].exact_squared == R(9, 4)));
+    BOOST_TEST(!j.items[1].right);
+    BOOST_TEST(*j.items[1].value_right);
+    BOOST_TEST(!*j.items[1].direction_right);
+    BOOST_TEST(!j.items[2].right);
+    BOOST_TEST(!j.items[2].exact_squared);
+    BOOST_TEST(!j.items[3].right);
+    BOOST_TEST(j.wrong == 3);
+    BOOST_TEST(checker_accepts(j.certificate));
+    // A part number past the object's parts is refused in one line.
+    Claim bad = c[0];
+    bad.parts = std::array<int, 2>{0, 1};
+    BOOST_CHECK_THROW(r.certify({bad}), scalecert::InputError);
+
+    std::mt19937 g(35);
+    std::uniform_int_distribution<long> at(-2, 2), side(2, 4), den(1, 4);
+    int overlapping = 0, apart = 0;  // the brute force's cases, so that it tries both
+    for (int t = 0; t < 12; ++t) {
+        std::array<std::vector<std::array<long, 6>>, 2> boxes;
+        std::array<std::vector<std::vector<scalecert::Point>>, 2> parts;
+        for (int i = 0; i < 2; ++i)
+            for (int k = 0; k < 2 + i; ++k) {
+                const long x = at(g), y = at(g), z = at(g);
+                boxes[i].push_back({x, y, z, x + side(g), y + side(g), z + side(g)});
+                const auto& b = boxes[i].back();
+                parts[i].push_back(box(b[0], b[1], b[2], b[3], b[4], b[5]));
+            }
+        const scalecert::Point s1{R(at(g)), R(at(g)), R(at(g))}, s2{R(at(g)), R(at(g)), R(at(g))};
+        const scalecert::Analysis a(
+            scalecert::Scene::from_parts(parts[0], parts[1], {R(1, 2), R(2)}, {R(1, 2), R(2)}, s1, s2));
+        std::vector<Claim> cs;
+        std::vector<std::optional<R>> want;
+        for (int k = 0; k < 8; ++k) {
+            R r1(den(g) + 1, den(g)), r2(den(g) + 1, den(g));
+            r1.canonicalize(), r2.canonicalize();
+            for (size_t p = 0; p < boxes[0].size(); ++p)
+                for (size_t q = 0; q < boxes[1].size(); ++q) {
+                    std::optional<R> depth;
+                    R least = -1;
+                    bool far = false;
+                    for (int e = 0; e < 3; ++e) {
+                        const R alo = s1[e] + r1 * (boxes[0][p][e] - s1[e]),
+                                ahi = s1[e] + r1 * (boxes[0][p][e + 3] - s1[e]);
+                        const R blo = s2[e] + r2 * (boxes[1][q][e] - s2[e]),
+                                bhi = s2[e] + r2 * (boxes[1][q][e + 3] - s2[e]);
+                        if (ahi < blo || bhi < alo) far = true;
+                        const R m = std::min(R(ahi - blo), R(bhi - alo));
+                        if (least < 0 || m < least) least = m;
+                    }
+                    if (!far) depth = least;
+                    overlapping += depth && sgn(*depth) > 0;
+                    apart += !depth;
+                    Claim cl;
+                    cl.kind = ClaimKind::PenetrationDepth, cl.rho1 = r1, cl.rho2 = r2, cl.value = depth ? *depth : R(0);
+                    cl.parts = std::array<int, 2>{static_cast<int>(p), static_cast<int>(q)};
+                    cs.push_back(cl);
+                    want.push_back(depth);
+                }
+        }
+        const scalecert::Judgements jj = a.certify(cs, opt);
+        for (size_t i = 0; i < cs.size(); ++i) {
+            BOOST_TEST(jj.items[i].right == want[i].has_value(), t << " " << i);
+            if (want[i])
+                BOOST_TEST((jj.items[i].exact_squared && *jj.items[i].exact_squared == *want[i] * *want[i]),
+                           t << " " << i);
+        }
+        BOOST_TEST(checker_accepts(jj.certificate), t);
+    }
+    BOOST_TEST(overlapping > 50, overlapping);
+    BOOST_TEST(apart > 50, apart);
+}
+
 // Parts named by OBJ groups: tests/data/compound_band.obj has the groups `right` (the box
 // [2,3] x [-1,1]^2) and `left` ([-3,-2] x [-1,1]^2), in that order; compound_band_groups.json is
 // the band with P1 from it. Only the right part meets P2's box (a_region_of_parts_by_hand), so

@@ -1757,7 +1757,27 @@ BOOST_AUTO_TEST_CASE(compound_judgements_are_valid_and_tampering_is_rejected) {
      {"kind": "distance", "rho1": "1/2", "rho2": "1/2", "value": 3}
     ]})";
     const OJ mixed = compound_judgements(mixed_compound(), mixed_claims, "mixed");
-    mutate_and_report(mixed, "compound judgements (mixed)", false, true);
+    mutate_and_report(
+        mixed, "compound judgements (mixed)", false,
+        true);  // Contacts on the U and peg (the U's bottom [-3,3] x [-1,1] x [0,1], arms [-3,-2] and [2,3] in x
+    // up to z = 4, about (0,0,1/2); the peg [-1,1] x [-1/2,1/2] x [2,5] about (0,0,7/2)). At (1, 2)
+    // the peg is [-2,2] x [-1,1] x [1/2,13/2]: it sinks 1/2 into the bottom (along +z; along y it
+    // would move 2, along x 5) and touches each arm (depth 0); at (3/2, 2) the arms have moved out
+    // to |x| >= 3 (apart) and the bottom reaches z = 5/4 (depth 3/4).
+    const OJ contacts = compound_judgements(data("compound_u_peg.json"), R"({"format": "scalecert-claims-1", "claims": [
+     {"kind": "penetration_depth", "rho1": 1, "rho2": 2, "parts": [0, 0], "value": 0.5, "direction": [0, 0, 1]},
+     {"kind": "penetration_depth", "rho1": 1, "rho2": 2, "parts": [0, 0], "value": 0.5, "direction": [1, 0, 0]},
+     {"kind": "penetration_depth", "rho1": 1, "rho2": 2, "parts": [1, 0], "value": 0},
+     {"kind": "penetration_depth", "rho1": 1.5, "rho2": 2, "parts": [2, 0], "value": 0},
+     {"kind": "penetration_depth", "rho1": 1.5, "rho2": 2, "parts": [0, 0], "value": 0.75}
+    ]})",
+                                            "u_peg_contacts");
+    const std::vector<bool> contact_right = {true, false, true, false, true};
+    for (size_t k = 0; k < contact_right.size(); ++k)
+        BOOST_TEST(contacts["judgements"][k]["right"] == contact_right[k], k);
+    BOOST_TEST(contacts["judgements"][0]["proof"]["squared"] == "1/4");
+    BOOST_TEST(contacts["judgements"][4]["proof"]["squared"] == "9/16");
+    mutate_and_report(contacts, "compound judgements (contacts)", false, true);
 }
 
 BOOST_AUTO_TEST_CASE(compound_distances_over_grids_are_valid) {

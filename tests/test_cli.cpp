@@ -1633,7 +1633,7 @@ BOOST_AUTO_TEST_CASE(certify_fp_on_compounds) {
                  "verdict lines only");
     expect_error("growth line on parts", "certify-fp " + band + " " + write("band_growth.txt", "growth 1\n").string(),
                  "verdict lines only");
-    for (const char* kind : {"curve_point", "switch_point", "growth_distance", "penetration_depth"})
+    for (const char* kind : {"curve_point", "switch_point", "growth_distance"})
         expect_error(
             kind,
             "certify-fp " + band + " " +
@@ -1641,6 +1641,14 @@ BOOST_AUTO_TEST_CASE(certify_fp_on_compounds) {
                                             kind + R"(", "rho1": 1, "rho2": 1, "value": 1}]})")
                     .string(),
             "is a claim on two convex objects");
+    // A depth on parts is a contact of one part pair: without "parts" it is refused.
+    expect_error(
+        "depth with no part pair",
+        "certify-fp " + band + " " +
+            write("band_depth.json", R"({"format": "scalecert-claims-1", "claims": [{"kind": )"
+                                     R"("penetration_depth", "rho1": 1, "rho2": 1, "value": 1}]})")
+                .string(),
+        "claims[0].parts: missing: a penetration depth on objects made of parts is a contact of one part pair");
     expect_error(
         "unknown kind on parts",
         "certify-fp " + band + " " +

@@ -190,6 +190,9 @@ struct Claim {
     Rational value = 0;                                  // Distance, PenetrationDepth
     std::optional<std::array<Point, 2>> closest;         // Distance: on P1, on P2
     std::optional<Point> direction;                      // PenetrationDepth
+    // PenetrationDepth on objects made of parts: the part pair it speaks of (a contact, as FCL and
+    // Bullet report one per colliding part pair), {part of P1, part of P2}, numbered from 0.
+    std::optional<std::array<int, 2>> parts;
     // The field in which the program gave no answer (a NaN or an infinity it wrote, e.g. "value"),
     // if any: the claim is judged wrong (CLAIMS.md, "Outputs that are no answer"). A zero normal
     // or direction is no answer too.
@@ -246,7 +249,8 @@ class Analysis {
     std::string partition_json() const;  // the certificate (parts: compound_partition): check it with scalecert-check
     std::string region_json() const;     // scalecert region: pair polygons, their union, its labelled boundary
     // scalecert certify-fp; throws InputError for malformed claims, and on parts for claims defined
-    // on two convex objects only (curves, switch points, growth distances, penetration depths).
+    // on two convex objects only (curves, switch points, growth distances; a penetration depth on
+    // parts names its part pair).
     ClaimReport certify_fp(const std::string& claims, const ClaimOptions& options = {}) const;
     // The same, typed, over an array of claims (options.numbers and .json do not apply: a typed
     // claim's numbers are exact; held() gives what a program reading a double holds).

@@ -644,7 +644,7 @@ def test_region_certify_over_arrays_by_hand():
     for scalar in (1.0, np.float64(1.0), np.array(1.0)):
         with pytest.raises(scalecert.InputError, match="rho1: expected a list"):
             band.certify("verdict", scalar, np.float64(1.0), verdict="separated")
-    with pytest.raises(scalecert.InputError, match="two convex objects"):
+    with pytest.raises(scalecert.InputError, match="parts: missing: a penetration depth on objects made of parts"):
         band.certify("penetration_depth", [2], [2], value=[1])
 
 
@@ -765,3 +765,25 @@ def test_meshes_at_poses(tmp_path):
     assert posed.seeds()[1] == (2, 1, 4)
     with pytest.raises(scalecert.InputError, match=r"poses\[1\]\[0\]: expected 4 numbers"):
         scalecert.Scene.from_meshes(*args, poses=(None, [[1, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0]]))
+
+
+def test_contacts_on_parts():
+    # The U and peg (tests/data/compound_u_peg.json): at (1, 2) the peg [-2,2] x [-1,1] x [1/2,13/2]
+    # sinks 1/2 into the U's bottom part 0 ([-3,3] x [-1,1] x [0,1]; along +z) and touches the arm
+    # part 1 ([-3,-2] in x; depth 0); at (3/2, 2) that arm is apart and the bottom reaches z = 5/4
+    # (depth 3/4). A contact is a penetration depth with its part pair.
+    s = scalecert.Scene.load(str(SRC / "tests" / "data" / "compound_u_peg.json"))
+    r = s.certify("penetration_depth", [1, 1, 1.5, 1.5], [2, 2, 2, 2], value=[0.5, 0, 0, 0.75],
+                  parts=np.array([[0, 0], [1, 0], [1, 0], [0, 0]]), certificate=True)
+    assert r["right"].tolist() == [True, True, False, True]
+    assert r["exact"][[0, 1, 3]].tolist() == [0.5, 0.0, 0.75]
+    assert np.isnan(r["exact"][2])  # apart: no depth
+    r = s.certify("penetration_depth", [1], [2], value=[0.5], parts=[[0, 0]], direction=[[1, 0, 0]])
+    assert r["right"].tolist() == [False] and r["value_right"].tolist() == [True]  # along x it is 5
+    with pytest.raises(scalecert.InputError, match=r"parts: missing"):
+        s.certify("penetration_depth", [1], [2], value=[0.5])
+    with pytest.raises(scalecert.InputError, match=r"parts\[0\]: P1 has 3 parts"):
+        s.certify("penetration_depth", [1], [2], value=[0.5], parts=[[3, 0]])
+    text = s.certify_fp({"format": "scalecert-claims-1", "claims": [
+        {"kind": "penetration_depth", "rho1": 1.5, "rho2": 2, "parts": [0, 0], "value": 0.75}]})
+    assert text["wrong"] == 0

@@ -46,8 +46,10 @@ struct TypedClaim {
     Q value = 0;                                  // Growth, Distance, Depth
     std::optional<std::array<Vec3q, 2>> closest;  // Distance: on P1, on P2
     std::optional<Vec3q> direction;               // Depth (nonzero)
-    std::optional<std::string> contact;           // SwitchPoint
-    std::shared_ptr<const ClaimedCurve> curve;    // Curve
+    // Depth on objects made of parts: the part pair it speaks of (a contact), [P1 part, P2 part].
+    std::optional<std::array<int, 2>> parts;
+    std::optional<std::string> contact;         // SwitchPoint
+    std::shared_ptr<const ClaimedCurve> curve;  // Curve
     // A field the program wrote no answer in (CLAIMS.md, "Outputs that are no answer"): a NaN, an
     // infinity or a null where a number is due, or a zero normal or direction. The claim is
     // judged wrong; that field's value above is not used.
@@ -145,7 +147,8 @@ class ConvexRules {
 };
 
 // The rules on two objects made of parts (CLAIMS.md, "Objects made of parts"): Verdict, Plane,
-// Witness and Distance (the least over the part pairs), at any (ρ1, ρ2) > 0.
+// Witness and Distance (the least over the part pairs), and Depth of one part pair (a contact),
+// at any (ρ1, ρ2) > 0.
 class CompoundJudge;
 class PartsRules {
   public:

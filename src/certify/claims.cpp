@@ -53,7 +53,12 @@ namespace {
 // made of parts (`parts`) only the types PartsRules takes.
 class ClaimReader {
   public:
-    ClaimReader(const std::string& name, Numbers numbers, bool parts) : name_(name), numbers_(numbers), parts_(parts) {}
+    // parts: the scene of objects made of parts, or none for two convex objects.
+    ClaimReader(const std::string& name, Numbers numbers, const ExactScene* parts)
+        : name_(name), numbers_(numbers), parts_(parts != nullptr) {
+        if (parts)
+            for (int i = 0; i < 2; ++i) count_[i] = std::max<size_t>(1, parts->P[i].parts.size());
+    }
 
     TypedClaim read(const JNode& claim, size_t index) {
         where_ = name_ + ": claims[" + std::to_string(index) + "]";
@@ -65,10 +70,11 @@ class ClaimReader {
                 fail("kind",
                      in_quotes(kind) +
                          " is a claim on two convex objects; on objects made of parts certify-fp takes verdict, "
-                         "separating_plane, witness_point and distance (the region and its growth set: scalecert "
-                         "region)");
+                         "separating_plane, witness_point, distance and penetration_depth (the region and its "
+                         "growth set: scalecert region)");
             fail("kind", "unknown kind " + in_quotes(kind) +
-                             " (on objects made of parts: verdict, separating_plane, witness_point, distance)");
+                             " (on objects made of parts: verdict, separating_plane, witness_point, distance, "
+                             "penetration_depth)");
         }
         if (!t)
             fail("kind", "unknown kind " + in_quotes(kind) +
@@ -138,8 +144,9 @@ class ClaimReader {
             }
             break;
         case ClaimType::Depth:
-            only(claim, {"kind", "rho1", "rho2", "value", "direction"});
+            only(claim, {"kind", "rho1", "rho2", "parts", "value", "direction"});
             pair_at(claim, c);
+            part_pair(claim, c);
             answer(need(claim, "value"), "value", c, c.value);
             if (const JNode* dir = claim.find("direction"))
                 if (answer_point(*dir, "direction", c, c.direction.emplace()) && is_zero(*c.direction))
@@ -153,6 +160,36 @@ class ClaimReader {
     std::string name_, where_;
     Numbers numbers_;
     bool parts_;
+    size_t count_[2] = {1, 1};  // parts of P1 and of P2 (a convex object is one part)
+
+    // A depth's "parts": [k, j], the pair of parts it speaks of (a contact). Needed on objects made
+    // of parts, where the depth of the objects is not defined; on two convex objects only [0, 0].
+    void part_pair(const JNode& claim, TypedClaim& c) const {
+        const JNode* n = claim.find("parts");
+        if (!n) {
+            if (parts_)
+                fail("parts",
+                     "missing: a penetration depth on objects made of parts is a contact of one part pair, "
+                     "\"parts\": [part of P1, part of P2] (numbered from 0)");
+            return;
+        }
+        if (n->kind != JNode::Array || n->items.size() != 2)
+            fail("parts", "expected [part of P1, part of P2] (numbered from 0)");
+        std::array<int, 2> k{};
+        for (size_t i = 0; i < 2; ++i) {
+            const JNode& x = n->items[i];
+            const std::string w = "parts[" + std::to_string(i) + "]";
+            if ((x.kind != JNode::Number && x.kind != JNode::String) || x.text.empty() ||
+                x.text.find_first_not_of("0123456789") != std::string::npos || x.text.size() > 9)
+                fail(w, "expected a part number (0, 1, ...)");
+            const size_t v = std::stoul(x.text);
+            if (v >= count_[i])
+                fail(w, "P" + std::to_string(i + 1) + " has " + std::to_string(count_[i]) +
+                            (count_[i] == 1 ? " part" : " parts") + " (numbered from 0)");
+            k[i] = static_cast<int>(v);
+        }
+        if (parts_) c.parts = k;
+    }
 
     static bool is_zero(const Vec3q& v) { return sgn(v[0]) == 0 && sgn(v[1]) == 0 && sgn(v[2]) == 0; }
     static std::optional<ClaimType> type_of(const std::string& kind) {
@@ -537,19 +574,27 @@ void describe(const TypedClaim& c, const Judged& g, const ExactScene* parts, Jso
             if (*g.value_right && !*g.closest_right) text += ", but the closest points are wrong";
         }
         return;
-    case ClaimType::Depth:
+    case ClaimType::Depth: {
         rhos();
+        // On parts, the contact's part pair, named in the line.
+        std::string of;
+        if (parts && c.parts) {
+            put_part_pair(o, "parts", *parts, g.part1, g.part2);
+            of = " of parts " + std::to_string(g.part1) + name_of(*parts, 0, g.part1) + " and " +
+                 std::to_string(g.part2) + name_of(*parts, 1, g.part2);
+        }
         if (!g.exact_squared) {
             o["exact_verdict"] = "separated";
             put_exact(o, "claimed", c.value);
-            text = "penetration depth at " + at(c) + ": claimed " + num(c.value) + ", but the pair is separated";
+            text = "penetration depth" + of + " at " + at(c) + ": claimed " + num(c.value) + ", but the " +
+                   (of.empty() ? "pair is" : "parts are") + " separated";
             return;
         }
         errors_sq(o, c.value, *g.exact_squared);
         o["exact_direction"] = Json::array(
             {g.exact_direction[0].get_str(), g.exact_direction[1].get_str(), g.exact_direction[2].get_str()});
         o["value_right"] = *g.value_right;
-        text = "penetration depth at " + at(c) + ": claimed " + num(c.value) + ", exact squared " +
+        text = "penetration depth" + of + " at " + at(c) + ": claimed " + num(c.value) + ", exact squared " +
                num(*g.exact_squared) + " (depth ~" + dbl(sqrt_minus_rn(*g.exact_squared, Q(0))) + ")";
         if (c.direction) {
             put_exact(o, "depth_squared_along_direction", g.along);
@@ -557,6 +602,7 @@ void describe(const TypedClaim& c, const Judged& g, const ExactScene* parts, Jso
             if (*g.value_right && !*g.direction_right) text += ", but the direction is wrong";
         }
         return;
+    }
     }
 }
 
@@ -759,7 +805,7 @@ Run run_claims(Rules& rules, const std::string& claims, const std::string& name,
     };
     if (json) {
         const JNode root = claims_root(claims, name);
-        ClaimReader reader(name, opt.numbers, parts != nullptr);
+        ClaimReader reader(name, opt.numbers, parts);
         for (size_t i = 0; i < root.find("claims")->items.size(); ++i) {
             const TypedClaim c = reader.read(root.find("claims")->items[i], i);
             Json o;

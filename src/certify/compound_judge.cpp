@@ -702,6 +702,19 @@ int CompoundJudge::near(int i, const Q& rho, const Vec3q& x, const Q& abs, Json*
     return -1;
 }
 
+MeasuredDepth CompoundJudge::pair_depth(int a, int b, const Q& r1, const Q& r2, Json* proof) {
+    PairCache& p = pair(a, b);  // counted against the limits of pairs judged exactly
+    const HullPoints S(p.hm);
+    std::optional<MeasuredDepth> d = measured_depth(S, r1, r2);
+    if (!d) d = depth_from_distance(S, exact_distance(p.hm, r1, r2), r1, r2);
+    if (proof) *proof = depth_proof(&p.hm, *d, r1, r2);
+    return *d;
+}
+
+Q CompoundJudge::pair_directional_depth(int a, int b, const Vec3q& n, const Q& r1, const Q& r2) {
+    return directional_depth_squared(HullPoints(pair(a, b).hm), n, r1, r2);
+}
+
 std::pair<Q, Q> CompoundJudge::plane_extents(const Vec3q& n, const Q& r1, const Q& r2) const {
     // max over P1(ρ1) of n·x = n·s1 + ρ1 (max over P1 of n·v − n·s1) for ρ1 > 0, and min over P2(ρ2)
     // likewise: each part's extreme vertex by its filtered climb along N, the primitive integer

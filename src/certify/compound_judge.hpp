@@ -15,6 +15,7 @@
 #include "certify/certificate.hpp"
 #include "certify/query.hpp"
 #include "compound/region.hpp"
+#include "geometry/measures.hpp"
 
 #include <map>
 #include <memory>
@@ -75,6 +76,13 @@ class CompoundJudge {
     // {"part", "near": weights of that part's point nearest x} or {"out": [a normal per part,
     // along which x lies more than abs beyond it]} (judgements.hpp, near_proof).
     int near(int i, const Q& rho, const Vec3q& x, const Q& abs, Json* proof = nullptr) const;
+
+    // The depth of parts a of P1 and b of P2 at (ρ1, ρ2), as for two convex objects (measures.hpp,
+    // measured_depth: the parts scaled about their objects' seeds). With `proof`: depth_proof's
+    // (judgements.hpp), over the two parts' own points.
+    MeasuredDepth pair_depth(int a, int b, const Q& rho1, const Q& rho2, Json* proof = nullptr);
+    // The squared directional depth of that pair along n (directional_depth_squared).
+    Q pair_directional_depth(int a, int b, const Vec3q& n, const Q& rho1, const Q& rho2);
 
     // max over P1(ρ1) of n·x and min over P2(ρ2) of n·x: over every part's vertices.
     std::pair<Q, Q> plane_extents(const Vec3q& n, const Q& rho1, const Q& rho2) const;

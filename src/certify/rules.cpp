@@ -160,6 +160,7 @@ Json exact_fields_json(const TypedClaim& c) {
         if (c.closest) j["closest"] = Json::array({ex3((*c.closest)[0]), ex3((*c.closest)[1])});
         break;
     case ClaimType::Depth:
+        if (c.parts) j["parts"] = Json::array({(*c.parts)[0], (*c.parts)[1]});
         j["value"] = ex(c.value);
         if (c.direction) j["direction"] = ex3(*c.direction);
         break;
@@ -547,7 +548,8 @@ Judged ConvexRules::judge(const TypedClaim& c, Proof* proof) {
 // ---- two objects made of parts ---------------------------------------------------------------
 
 bool PartsRules::takes(ClaimType t) {
-    return t == ClaimType::Verdict || t == ClaimType::Plane || t == ClaimType::Witness || t == ClaimType::Distance;
+    return t == ClaimType::Verdict || t == ClaimType::Plane || t == ClaimType::Witness || t == ClaimType::Distance ||
+           t == ClaimType::Depth;
 }
 
 int PartsRules::place(int i, const Q& rho, const Vec3q& x, Json* proof, bool* near) const {
@@ -627,6 +629,29 @@ Judged PartsRules::judge(const TypedClaim& c, Proof* proof) {
             if (p) pp["closest"] = Json{{"P1", std::move(m1)}, {"P2", std::move(m2)}};
         }
         if (p) *p = std::move(pp);
+        break;
+    }
+    case ClaimType::Depth: {
+        // One part pair's depth, by the rule for two convex objects (the parts scaled about their
+        // objects' seeds); its proof that rule's, over the two parts' own points.
+        if (!c.parts) throw std::logic_error("PartsRules: a depth with no part pair");
+        const int a = (*c.parts)[0], b = (*c.parts)[1];
+        g.part1 = a;
+        g.part2 = b;
+        const MeasuredDepth md = judge_.pair_depth(a, b, c.rho1, c.rho2, p);
+        if (md.state == MeasuredDepth::Separated) {
+            g.exact_verdict = Verdict::Separated;
+            break;
+        }
+        g.exact_squared = md.state == MeasuredDepth::Touching ? Q(0) : md.depth->squared;
+        g.exact_direction = md.normal;
+        g.value_right = tol_.close_sq(c.value, *g.exact_squared);
+        g.right = *g.value_right;
+        if (c.direction) {
+            g.along = judge_.pair_directional_depth(a, b, *c.direction, c.rho1, c.rho2);
+            g.direction_right = tol_.within_above(g.along, *g.exact_squared);
+            g.right = g.right && *g.direction_right;
+        }
         break;
     }
     default: break;

@@ -443,7 +443,8 @@ ClaimReport Analysis::certify_fp(const std::string& claims, const ClaimOptions& 
 
 namespace {
 // A public claim, typed for the rules (claim.hpp), its faults refused with one line naming it.
-internal::TypedClaim typed_claim(const Claim& c, size_t i, bool parts) {
+// parts: the scene of objects made of parts, none for two convex objects.
+internal::TypedClaim typed_claim(const Claim& c, size_t i, const internal::ExactScene* parts) {
     using internal::ClaimType;
     const std::string where = "certify: claims[" + std::to_string(i) + "]";
     internal::TypedClaim t;
@@ -481,7 +482,20 @@ internal::TypedClaim typed_claim(const Claim& c, size_t i, bool parts) {
         if (c.closest) t.closest = std::array<Point, 2>{canonical((*c.closest)[0]), canonical((*c.closest)[1])};
         break;
     case ClaimKind::PenetrationDepth:
-        if (parts) throw InputError(where + ": a penetration depth is a claim on two convex objects");
+        // A contact of one part pair on objects made of parts (the objects' depth is not defined);
+        // on two convex objects only the pair (0, 0), or none.
+        if (parts && !c.parts)
+            throw InputError(where +
+                             ".parts: missing: a penetration depth on objects made of parts is a contact of "
+                             "one part pair (parts = {part of P1, part of P2})");
+        if (c.parts)
+            for (size_t k = 0; k < 2; ++k) {
+                const size_t n = parts ? std::max<size_t>(1, parts->P[k].parts.size()) : 1;
+                if ((*c.parts)[k] < 0 || static_cast<size_t>((*c.parts)[k]) >= n)
+                    throw InputError(where + ".parts[" + std::to_string(k) + "]: P" + std::to_string(k + 1) + " has " +
+                                     std::to_string(n) + (n == 1 ? " part" : " parts") + " (numbered from 0)");
+            }
+        if (parts) t.parts = c.parts;
         t.type = ClaimType::Depth;
         t.value = canonical_q(c.value);
         if (c.direction) t.direction = nonzero(*c.direction, "direction");
@@ -512,8 +526,8 @@ Judgement public_judgement(const internal::TypedClaim& c, const internal::Judged
 
 // Typed claims through typed rules: no JSON unless a certificate is asked for.
 template <class Rules, class Certificate>
-Judgements judge_all(Rules& rules, const std::vector<Claim>& claims, const ClaimOptions& options, bool parts,
-                     Certificate&& certificate) {
+Judgements judge_all(Rules& rules, const std::vector<Claim>& claims, const ClaimOptions& options,
+                     const internal::ExactScene* parts, Certificate&& certificate) {
     std::vector<internal::TypedClaim> typed;
     typed.reserve(claims.size());
     for (size_t i = 0; i < claims.size(); ++i) typed.push_back(typed_claim(claims[i], i, parts));
@@ -546,14 +560,14 @@ Judgements Analysis::certify(const std::vector<Claim>& claims, const ClaimOption
     if (!impl_->convex()) {
         internal::CompoundJudge& judge = impl_->compound->judge();
         internal::PartsRules rules(judge, {options.tolerance, options.abs_tolerance});
-        return judge_all(rules, claims, options, true, [&](Json entries) {
+        return judge_all(rules, claims, options, &judge.scene(), [&](Json entries) {
             return internal::compound_judgements_text(judge.scene(), options.tolerance, options.abs_tolerance,
                                                       std::move(entries));
         });
     }
     const internal::ClaimModels models = impl_->session->claim_models();
     internal::ConvexRules rules(models, {options.tolerance, options.abs_tolerance});
-    return judge_all(rules, claims, options, false, [&](Json entries) {
+    return judge_all(rules, claims, options, nullptr, [&](Json entries) {
         return internal::judgements_text(models.document(), options.tolerance, options.abs_tolerance,
                                          std::move(entries));
     });
