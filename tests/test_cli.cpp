@@ -1840,7 +1840,15 @@ BOOST_AUTO_TEST_CASE(golden_reads_numbers_as_told) {
                    r.err);
     }
     expect_error("--numbers unknown", "golden --p1 " + t + " --p2 " + c + " --i1 1,2 --i2 1,2 --dir x --numbers half",
-                 "--numbers");
+                 "--numbers: expected double, float32 or exact, not 'half'");
+    // The earlier names beside --numbers are two answers to one question: refused.
+    expect_error("--binary-doubles with --numbers",
+                 "query --p1 " + t + " --p2 " + c + " --i1 1,2 --i2 1,2 --numbers float32 --binary-doubles 1 1",
+                 "--binary-doubles: the earlier name of --numbers double: give one of them");
+    expect_error("--exact-decimals with --numbers",
+                 "certify-fp --p1 " + t + " --p2 " + c + " --i1 1,2 --i2 1,2 --numbers float32 --exact-decimals " +
+                     write("one.txt", "1 1 separated\n").string(),
+                 "--exact-decimals: the earlier name of --numbers exact: give one of them");
 }
 
 // Objects at poses [R | t], applied exactly before scaling about the (moved) seed.

@@ -7,19 +7,36 @@
 
 namespace scalecert::cli {
 
-void add_numbers(CLI::App* sub, Numbers& numbers) {
-    sub->add_option("--numbers", numbers,
-                    "what a decimal written as a floating-point program writes it means (a JSON number, a mesh's or a "
-                    "claim's number, a number on the command line): double (default: the double strtod reads), "
-                    "float32 (the float strtof reads) or exact (as written: 0.1 = 1/10); JSON strings and fractions "
-                    "p/q are exact always")
-        ->transform(CLI::CheckedTransformer(
-            std::map<std::string, Numbers>{
-                {"double", Numbers::Double}, {"float32", Numbers::Float32}, {"exact", Numbers::Exact}},
-            CLI::ignore_case))
-        ->type_name("double|float32|exact");
-    // The earlier name of the default, kept so that scripts written for it still run.
-    sub->add_flag_callback("--binary-doubles", [&numbers] { numbers = Numbers::Double; })->group("");
+CLI::Option* add_numbers(CLI::App* sub, Numbers& numbers) {
+    CLI::Option* o =
+        sub->add_option_function<std::string>(
+               "--numbers",
+               [&numbers](const std::string& v) {
+                   if (v == "double")
+                       numbers = Numbers::Double;
+                   else if (v == "float32")
+                       numbers = Numbers::Float32;
+                   else if (v == "exact")
+                       numbers = Numbers::Exact;
+                   else
+                       throw CLI::ValidationError("--numbers", "expected double, float32 or exact, not '" + v + "'");
+               },
+               "what a decimal written as a floating-point program writes it means (a JSON number, a mesh's or a "
+               "claim's number, a number on the command line): double (default: the double strtod reads), "
+               "float32 (the float strtof reads) or exact (as written: 0.1 = 1/10); JSON strings and fractions "
+               "p/q are exact always")
+            ->type_name("double|float32|exact");
+    // The earlier name of the default, kept so that scripts written for it still run; with
+    // --numbers it is refused, as two answers to one question.
+    sub->add_flag_callback("--binary-doubles",
+                           [&numbers, o] {
+                               if (o->count() > 0)
+                                   throw CLI::ValidationError("--binary-doubles",
+                                                              "the earlier name of --numbers double: give one of them");
+                               numbers = Numbers::Double;
+                           })
+        ->group("");
+    return o;
 }
 
 void add_golden_options(CLI::App* sub, internal::CampaignArgs& a) {

@@ -7,7 +7,8 @@
 namespace scalecert::cli {
 
 // --numbers double|float32|exact (the public Numbers), on every command that reads numbers.
-void add_numbers(CLI::App* sub, Numbers& numbers);
+// --numbers double|float32|exact (and its earlier name --binary-doubles); the --numbers option.
+CLI::Option* add_numbers(CLI::App* sub, Numbers& numbers);
 void add_golden_options(CLI::App* sub, internal::CampaignArgs& a);
 void add_audit_options(CLI::App* sub, internal::CampaignArgs& a);
 

@@ -40,7 +40,14 @@ Command add_certify_fp(CLI::App& app) {
         ->type_name("LEN");
     sub->add_flag("--json", a->json, "the report as JSON");
     // The earlier name of --numbers exact, kept so that scripts written for it still run.
-    sub->add_flag_callback("--exact-decimals", [a] { a->scene.opt.numbers = Numbers::Exact; })->group("");
+    sub->add_flag_callback("--exact-decimals",
+                           [a, numbers = sub->get_option("--numbers"), binary = sub->get_option("--binary-doubles")] {
+                               if (numbers->count() > 0 || binary->count() > 0)
+                                   throw CLI::ValidationError("--exact-decimals",
+                                                              "the earlier name of --numbers exact: give one of them");
+                               a->scene.opt.numbers = Numbers::Exact;
+                           })
+        ->group("");
     add_out(sub, a->out);
     sub->add_option(
            "--certificate", a->certificate,
