@@ -217,7 +217,9 @@ void check_compound_judgements(Context& cx, const J& c) {
     const CompoundScene cs = read_compound_scene(cx, at(c, "scene"));
     const Rules R = read_rules(cx, c);
     const J& js = at(c, "judgements");
-    const size_t rights = judge_all(cx, js, [&](const Judgement& j) { return judge(cx, cs, R, j); });
+    const size_t rights =
+        judge_all(cx, js, {"verdict", "separating_plane", "witness_point", "distance", "penetration_depth"},
+                  [&](const Judgement& j) { return judge(cx, cs, R, j); });
     cx.summary = "; compound judgements: " + judged(rights, js.size(), R) + "; " + std::to_string(cs.parts(0)) + " x " +
                  std::to_string(cs.parts(1)) + " part pairs";
 }

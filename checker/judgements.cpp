@@ -242,9 +242,60 @@ bool judge_switch_point(Context& cx, const Rules& R, const J& cl, const Window& 
 }
 
 // One judgement; returns whether the claim is right by the rules.
+bool judge(Context& cx, const Scene& sc, const Rules& R, const Judgement& j);
+
+// A claim at poses ("pose1", "pose2": [R | t] by rows, R nonsingular): judged as the same claim
+// without them on the scene with each polyhedron moved by its pose, the seed too (posed_scene,
+// every vertex recomputed). A verdict's proof is then {"depth": a depth proof}, whose state is
+// the verdict: a separating normal, a touching pair's depth 0, an overlapping pair's depth > 0.
+bool judge_at_poses(Context& cx, const Scene& sc, const Rules& R, const Judgement& j) {
+    const J &cl = j.claim, &pr = j.proof;
+    cx.claim(j.kind == "verdict" || j.kind == "separating_plane" || j.kind == "witness_point" || j.kind == "distance" ||
+                 j.kind == "penetration_depth",
+             j.wc +
+                 ": poses are on claims of kind verdict, separating_plane, witness_point, distance or "
+                 "penetration_depth");
+    std::array<std::optional<Pose>, 2> pose;
+    J bare = cl;
+    for (int i = 0; i < 2; ++i) {
+        const std::string key = i ? "pose2" : "pose1", w = j.wc + "." + key;
+        if (!cl.contains(key)) continue;
+        const J& m = at(cl, key.c_str());
+        cx.claim(m.is_array() && m.size() == 3, w + " is 3 rows [r1, r2, r3, t]");
+        Pose& p = pose[static_cast<size_t>(i)].emplace();
+        for (size_t r = 0; r < 3; ++r) {
+            const std::string wr = w + "[" + std::to_string(r) + "]";
+            cx.claim(m[r].is_array() && m[r].size() == 4, wr + " is 4 numbers");
+            for (size_t k = 0; k < 4; ++k) p[r][k] = num(cx, m[r][k], wr + "[" + std::to_string(k) + "]");
+        }
+        double lm = 0;
+        for (const auto& row : p)
+            for (const Q& e : row) lm = std::max(lm, qsize(e));
+        cx.spend_ops(12, 3 * lm);
+        const Q det = p[0][0] * (p[1][1] * p[2][2] - p[1][2] * p[2][1]) -
+                      p[0][1] * (p[1][0] * p[2][2] - p[1][2] * p[2][0]) +
+                      p[0][2] * (p[1][0] * p[2][1] - p[1][1] * p[2][0]);
+        cx.claim(sgn(det) != 0, w + " has a nonsingular R");
+        bare.erase(key);
+    }
+    const Scene posed = posed_scene(cx, sc, pose);
+    const Judgement jb{bare, pr, j.kind, j.where, j.wc, j.wp};
+    if (j.kind != "verdict") return judge(cx, posed, R, jb);
+    shape(cx, bare, j.wc, {"kind", "rho1", "rho2", "verdict"});
+    shape(cx, pr, j.wp, {"depth"});
+    const Q r1 = positive(cx, bare, "rho1", j.wc), r2 = positive(cx, bare, "rho2", j.wc);
+    cx.claim(at(bare, "verdict").is_string(), j.wc + ".verdict is a string");
+    const std::string c = at(bare, "verdict").get<std::string>();
+    check_claimed_verdict(cx, c, j.wc);
+    const std::optional<Q> E = proved_depth(cx, posed, {VertexRange{0, posed.count(0)}, VertexRange{0, posed.count(1)}},
+                                            at(pr, "depth"), j.wp + ".depth", r1, r2);
+    return verdict_right(c, !E ? "separated" : sgn(*E) == 0 ? "touching" : "overlapping");
+}
+
 bool judge(Context& cx, const Scene& sc, const Rules& R, const Judgement& j) {
     const J &cl = j.claim, &pr = j.proof;
     const std::string &kind = j.kind, &where = j.where, &wc = j.wc, &wp = j.wp;
+    if (cl.contains("pose1") || cl.contains("pose2")) return judge_at_poses(cx, sc, R, j);
     const Polytopes bodies(sc, R.abs);
     if (kind == "verdict") {
         shape(cx, cl, wc, {"kind", "rho1", "rho2", "verdict"});
@@ -344,7 +395,10 @@ void check_judgements(Context& cx, const J& c) {
     check_seed_interior(cx, sc, at(c, "seed_interior"));
     const Rules R = read_rules(cx, c);
     const J& js = at(c, "judgements");
-    const size_t rights = judge_all(cx, js, [&](const Judgement& j) { return judge(cx, sc, R, j); });
+    const size_t rights = judge_all(cx, js,
+                                    {"verdict", "growth_distance", "separating_plane", "witness_point", "distance",
+                                     "penetration_depth", "curve", "switch_point", "curve_point"},
+                                    [&](const Judgement& j) { return judge(cx, sc, R, j); });
     // What the file proves, in the line the checker prints: the judgements and their tolerance.
     cx.summary = "; judgements: " + judged(rights, js.size(), R);
 }

@@ -191,6 +191,23 @@ void check_no_answer(Context& cx, const Judgement& j) {
     const auto k = answers.find(j.kind);
     cx.claim(k != answers.end() && k->second.count(f) == 1,
              j.wp + ".no_answer names a field where a " + j.kind + " claim answers");
+    // The rest of the claim is a claim of its kind, as certify-fp writes it: its fields only, and
+    // the scalings it was asked at exact numbers > 0 (the judgement is wrong either way, but the
+    // file states no claim certify-fp could not have judged).
+    static const std::map<std::string, std::set<std::string>> fields = {
+        {"growth_distance", {"kind", "value"}},
+        {"curve_point", {"kind", "rho1", "rho2"}},
+        {"switch_point", {"kind", "rho1", "rho2", "contact"}},
+        {"separating_plane", {"kind", "rho1", "rho2", "normal", "offset", "pose1", "pose2"}},
+        {"witness_point", {"kind", "rho1", "rho2", "point", "pose1", "pose2"}},
+        {"distance", {"kind", "rho1", "rho2", "value", "closest", "pose1", "pose2"}},
+        {"penetration_depth", {"kind", "rho1", "rho2", "parts", "value", "direction", "pose1", "pose2"}}};
+    const std::set<std::string>& known = fields.at(j.kind);
+    cx.claim(j.claim.is_object(), j.wc + " is an object");
+    for (const auto& [key, value] : j.claim.items())
+        cx.claim(known.count(key) == 1, j.wc + "." + key + " is a field of a " + j.kind + " claim");
+    for (const char* r : {"rho1", "rho2"})
+        if (known.count(r) && f != r) positive(cx, j.claim, r, j.wc);
     cx.claim(j.claim.contains(f), j.wc + " has the field " + f);
     const J& v = j.claim[f];
     if (v.is_null()) return;
@@ -304,13 +321,13 @@ void check_lower_bound(Context& cx, const Scene& sc, const std::array<VertexRang
 // (a claim of depth on a separated pair is wrong), a touching pair's supporting plane and common
 // point, or an overlapping pair's depth along its direction and the exact EPA's closed surface
 // (check_lower_bound). c the claimed value, dir the claimed direction if any.
-bool judge_depth(Context& cx, const Scene& sc, const std::array<VertexRange, 2>& B, const Rules& R, const J& pr,
-                 const std::string& wp, const Q& r1, const Q& r2, const Q& c, const std::optional<V3>& dir) {
+std::optional<Q> proved_depth(Context& cx, const Scene& sc, const std::array<VertexRange, 2>& B, const J& pr,
+                              const std::string& wp, const Q& r1, const Q& r2) {
     if (pr.contains("separated")) {
         shape(cx, pr, wp, {"separated"});
         const V3 n = normal(cx, at(pr, "separated"), wp + ".separated");
         cx.claim(sgn(hM(cx, sc, B, n, r1, r2)) < 0, wp + ".separated: the plane separates the pair strictly");
-        return false;  // a depth claimed of a separated pair
+        return std::nullopt;
     }
     Q E;
     if (pr.contains("common")) {
@@ -334,6 +351,14 @@ bool judge_depth(Context& cx, const Scene& sc, const std::array<VertexRange, 2>&
         cx.claim(sgn(g) > 0 && g * g == E * dot(n, n), wp + ".direction: the depth along it is sqrt(squared)");
         check_lower_bound(cx, sc, B, r1, r2, E, pr, wp);
     }
+    return E;
+}
+
+bool judge_depth(Context& cx, const Scene& sc, const std::array<VertexRange, 2>& B, const Rules& R, const J& pr,
+                 const std::string& wp, const Q& r1, const Q& r2, const Q& c, const std::optional<V3>& dir) {
+    const std::optional<Q> depth = proved_depth(cx, sc, B, pr, wp, r1, r2);
+    if (!depth) return false;  // a depth claimed of a separated pair
+    const Q& E = *depth;
     bool right = R.close_sq(cx, c, E);
     if (dir) {
         const Q g = hM(cx, sc, B, *dir, r1, r2);

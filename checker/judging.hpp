@@ -96,10 +96,10 @@ struct Judgement {
 void check_no_answer(Context& cx, const Judgement& j);
 
 // Every entry {"index", "claim", "right", "proof"} of a judgements list (which may be empty):
-// distinct indices, a claim with a kind and a proof object, and "right" the judgement that
+// distinct indices, a claim with a kind of `kinds` and a proof object, and "right" the judgement that
 // judge(entry) gives, or wrong for a claim with no answer. Returns how many are right.
 template <class Judge>
-size_t judge_all(Context& cx, const J& js, Judge judge) {
+size_t judge_all(Context& cx, const J& js, const std::set<std::string>& kinds, Judge judge) {
     cx.claim(js.is_array(), "judgements is a list");
     std::set<size_t> indices;
     size_t rights = 0;
@@ -113,6 +113,7 @@ size_t judge_all(Context& cx, const J& js, Judge judge) {
         cx.claim(cl.is_object() && cl.contains("kind") && cl["kind"].is_string(), w + ".claim has a kind");
         cx.claim(pr.is_object(), w + ".proof is an object");
         const Judgement j{cl, pr, cl["kind"].get<std::string>(), w, w + ".claim", w + ".proof"};
+        cx.claim(kinds.count(j.kind) == 1, j.wc + ".kind is a kind of this file's claims");
         const bool no_answer = pr.contains("no_answer");
         if (no_answer) check_no_answer(cx, j);
         const bool right = !no_answer && judge(j);
@@ -149,6 +150,10 @@ Closest closest_points(Context& cx, const Bodies& B, const Judgement& j, const Q
 struct VertexRange {
     size_t base, count;
 };
+// The depth a depth proof shows on the bodies B at (r1, r2): none for a separated pair (its
+// proof a separating normal), 0 for a touching pair, else the squared depth (FORMAT.md).
+std::optional<Q> proved_depth(Context& cx, const Scene& sc, const std::array<VertexRange, 2>& B, const J& pr,
+                              const std::string& wp, const Q& r1, const Q& r2);
 // A penetration_depth claim judged by its proof on the bodies B (the claim's shape checked by the
 // caller): the claimed value c within the tolerances of the exact depth the proof shows, and the
 // claimed direction dir, if any, one along which moving B2 that far separates them.

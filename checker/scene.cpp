@@ -3,6 +3,7 @@
 #include "json.hpp"
 #include "numbers.hpp"
 
+#include <algorithm>
 #include <set>
 
 namespace scalecert_check {
@@ -161,6 +162,47 @@ Scene read_scene(Context& cx, const J& j) {
     sc.prepare(cx);
     read_ranges(cx, sc, j);
     return sc;
+}
+
+Scene posed_scene(Context& cx, const Scene& sc, const std::array<std::optional<Pose>, 2>& pose) {
+    Scene out;
+    for (int i = 0; i < 2; ++i) {
+        const size_t n = sc.count(i);
+        std::vector<V3> v(n);
+        const Q D(sc.scan[i]->D());
+        for (size_t k = 0; k < n; ++k) {
+            const Z3 X = sc.scan[i]->X(k);
+            double lx = 0;
+            for (int c = 0; c < 3; ++c) lx = std::max(lx, limbs(X[c]));
+            V3 x;
+            for (int c = 0; c < 3; ++c) {
+                x[c] = Q(X[c]) / D;
+                x[c].canonicalize();
+            }
+            if (pose[i]) {
+                const Pose& m = *pose[i];
+                double lm = 0;
+                for (const auto& row : m)
+                    for (const Q& e : row) lm = std::max(lm, qsize(e));
+                cx.spend_ops(15, lx + limbs(sc.scan[i]->D()) + lm);
+                for (size_t r = 0; r < 3; ++r) v[k][r] = m[r][0] * x[0] + m[r][1] * x[1] + m[r][2] * x[2] + m[r][3];
+            } else {
+                cx.spend_ops(3, lx + limbs(sc.scan[i]->D()));
+                v[k] = x;
+            }
+        }
+        out.scan[i] = std::make_unique<Scan>(cx, v, kPoly[i]);
+        out.s[i] = sc.s[i];
+        if (pose[i]) {
+            const Pose& m = *pose[i];
+            for (size_t r = 0; r < 3; ++r)
+                out.s[i][r] = m[r][0] * sc.s[i][0] + m[r][1] * sc.s[i][1] + m[r][2] * sc.s[i][2] + m[r][3];
+        }
+        out.lo[i] = sc.lo[i];
+        out.hi[i] = sc.hi[i];
+    }
+    out.prepare(cx);
+    return out;
 }
 
 void read_seed(Context& cx, Scene& sc, int i, const J& p, const std::string& w, Vertices& v) {

@@ -17,6 +17,7 @@
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -90,6 +91,11 @@ class Vertices {
 // The scene object of a partition, a query answer or a judgements file: two polyhedra of at
 // least 4 vertices, their seeds, I1 and I2.
 Scene read_scene(Context& cx, const J& j);
+// A pose [R | t] (three rows of four exact numbers): x -> R·x + t.
+using Pose = std::array<std::array<Q, 4>, 3>;
+// The scene with polyhedron i moved by pose[i] (none: as it is), its seed too: a claim at poses
+// is judged on it (FORMAT.md, "A judgements file").
+Scene posed_scene(Context& cx, const Scene& sc, const std::array<std::optional<Pose>, 2>& pose);
 // The seed of polyhedron i (object p of the file, named w) and the scan of its vertices v.
 void read_seed(Context& cx, Scene& sc, int i, const J& p, const std::string& w, Vertices& v);
 // I1 and I2 of a scene object: [lo, hi] with 0 < lo <= hi.

@@ -422,7 +422,7 @@ py::dict certify_arrays(const CertifyFn& certify, const std::string& kind, const
                         const py::handle& direction, const py::handle& normal, const py::handle& offset,
                         const py::handle& point_, const py::handle& verdict, const py::handle& tolerance,
                         const py::handle& abs_tolerance, bool certificate, bool fractions, scalecert::Numbers numbers,
-                        const py::handle& parts) {
+                        const py::handle& parts, const py::handle& pose1, const py::handle& pose2) {
     using scalecert::ClaimKind;
     static const std::map<std::string, ClaimKind> kinds = {{"distance", ClaimKind::Distance},
                                                            {"penetration_depth", ClaimKind::PenetrationDepth},
@@ -456,7 +456,8 @@ py::dict certify_arrays(const CertifyFn& certify, const std::string& kind, const
     const auto values = rows(value, "value", measure);
     const auto cl = rows(closest, "closest", false), dir = rows(direction, "direction", false),
                nor = rows(normal, "normal", ck == ClaimKind::SeparatingPlane), off = rows(offset, "offset", false),
-               pts = rows(point_, "point", ck == ClaimKind::WitnessPoint), prs = rows(parts, "parts", false);
+               pts = rows(point_, "point", ck == ClaimKind::WitnessPoint), prs = rows(parts, "parts", false),
+               ps1 = rows(pose1, "pose1", false), ps2 = rows(pose2, "pose2", false);
     std::optional<py::list> verdicts;
     if (ck == ClaimKind::Verdict) {
         if (verdict.is_none()) throw scalecert::InputError("certify: verdict is required for kind 'verdict'");
@@ -499,6 +500,23 @@ py::dict certify_arrays(const CertifyFn& certify, const std::string& kind, const
             answer_point(two[1], "closest", "closest" + at + "[1]", pq[1]);
         }
         if (dir) answer_point((*dir)[i], "direction", "direction" + at, c.direction.emplace());
+        // A pose is the program's question: each (3, 4), [R | t] by rows, read as the rhos are.
+        for (size_t k = 0; k < 2; ++k) {
+            const std::optional<py::list>& ps = k ? ps2 : ps1;
+            if (!ps) continue;
+            const std::string what = std::string(k ? "pose2" : "pose1") + at;
+            const py::list rows3 = as_list((*ps)[i], what);
+            if (rows3.size() != 3)
+                throw scalecert::InputError("certify: " + what + ": expected 3 rows [r1, r2, r3, t]");
+            scalecert::Pose& m = (k ? c.pose2 : c.pose1).emplace();
+            for (size_t r = 0; r < 3; ++r) {
+                const std::string wr = what + "[" + std::to_string(r) + "]";
+                const py::list row = as_list(rows3[r], wr);
+                if (row.size() != 4)
+                    throw scalecert::InputError("certify: " + wr + ": expected 4 numbers [r1, r2, r3, t]");
+                for (size_t q = 0; q < 4; ++q) m[r][q] = rational(row[q], wr.c_str(), numbers);
+            }
+        }
         if (prs) {
             const py::list two = as_list((*prs)[i], "parts" + at);
             if (two.size() != 2)
@@ -872,23 +890,27 @@ PYBIND11_MODULE(scalecert, m) {
                const py::handle& value, const py::handle& closest, const py::handle& direction,
                const py::handle& normal, const py::handle& offset, const py::handle& point_, const py::handle& verdict,
                const py::handle& tolerance, const py::handle& certificate, const py::handle& fractions,
-               const py::handle& abs_tolerance, const py::handle& numbers, const py::handle& parts) {
+               const py::handle& abs_tolerance, const py::handle& numbers, const py::handle& parts,
+               const py::handle& pose1, const py::handle& pose2) {
                 const scalecert::Analysis& a = s.a();
                 return certify_arrays([&a](const auto& c, const auto& o) { return a.certify(c, o); },
                                       text_arg(kind, "kind"), rho1, rho2, value, closest, direction, normal, offset,
                                       point_, verdict, tolerance, abs_tolerance, flag_arg(certificate, "certificate"),
                                       flag_arg(fractions, "fractions"),
-                                      numbers.is_none() ? s.numbers : numbers_arg(numbers), parts);
+                                      numbers.is_none() ? s.numbers : numbers_arg(numbers), parts, pose1, pose2);
             },
             py::arg("kind"), py::arg("rho1"), py::arg("rho2"), py::arg("value") = py::none(),
             py::arg("closest") = py::none(), py::arg("direction") = py::none(), py::arg("normal") = py::none(),
             py::arg("offset") = py::none(), py::arg("point") = py::none(), py::arg("verdict") = py::none(),
             py::arg("tolerance") = 0, py::arg("certificate") = false, py::arg("fractions") = false,
             py::arg("abs_tolerance") = 0, py::arg("numbers") = py::none(), py::arg("parts") = py::none(),
+            py::arg("pose1") = py::none(), py::arg("pose2") = py::none(),
             "claims of one kind over arrays: kind 'distance' (value, optional closest of shape (n, 2, 3)), "
             "'penetration_depth' (value, optional direction (n, 3); on objects made of parts, parts (n, 2): the part "
             "pair "
-            "of each contact), 'verdict' (verdict: a str or n strs), "
+            "of each contact); pose1, pose2 (n, 3, 4): each claim's objects at poses [R | t] by rows, as the scene "
+            "places them "
+            "(two convex objects), 'verdict' (verdict: a str or n strs), "
             "'separating_plane' (normal (n, 3), optional offset) or 'witness_point' (point (n, 3)); rho1, rho2 and "
             "value "
             "of length n. A float is read as numbers says (default: as the scene's were; 'double': the double it is; "

@@ -619,6 +619,99 @@ BOOST_AUTO_TEST_CASE(contacts_on_parts_by_hand_and_by_brute_force) {
     BOOST_TEST(apart > 50, apart);
 }
 
+// Claims at poses. By hand: the stacked cubes with P2 turned a quarter about the vertical line
+// through (1, 1) (R = [[0,−1,0],[1,0,0],[0,0,1]], t = (2, 0, 0): P2 maps onto itself) answer as
+// unposed: touching at (1, 2), 1 apart at (1, 1); lifted by 1 more (t = (2, 0, 1)) 2 apart at
+// (1, 1) and separated at (1, 2). By brute force: random boxes at random poses of doubles
+// (rotations by angles held as doubles, so R is not exactly orthogonal), each claim judged at its
+// pose equals the same claim on a scene whose points were moved by the pose here, in rationals.
+BOOST_AUTO_TEST_CASE(claims_at_poses_by_hand_and_by_brute_force) {
+    using scalecert::Claim;
+    using scalecert::ClaimKind;
+    using scalecert::Point;
+    using scalecert::Pose;
+    const Pose quarter{{{R(0), R(-1), R(0), R(2)}, {R(1), R(0), R(0), R(0)}, {R(0), R(0), R(1), R(0)}}};
+    Pose lifted = quarter;
+    lifted[2][3] = 1;
+    const scalecert::Analysis a(stacked());
+    std::vector<Claim> c(4);
+    c[0].kind = ClaimKind::Verdict, c[0].rho1 = 1, c[0].rho2 = 2, c[0].verdict = scalecert::ClaimedVerdict::Touching;
+    c[0].pose2 = quarter;
+    c[1].kind = ClaimKind::Distance, c[1].rho1 = 1, c[1].rho2 = 1, c[1].value = 1, c[1].pose2 = quarter;
+    c[2] = c[1], c[2].value = 2, c[2].pose2 = lifted;
+    c[3] = c[0], c[3].pose2 = lifted;
+    scalecert::ClaimOptions opt;
+    opt.certificate = true;
+    const scalecert::Judgements j = a.certify(c, opt);
+    BOOST_TEST(j.items[0].right);
+    BOOST_TEST(j.items[1].right);
+    BOOST_TEST(j.items[2].right);
+    BOOST_TEST(!j.items[3].right);
+    BOOST_TEST((*j.items[3].exact_verdict == scalecert::Verdict::Separated));
+    BOOST_TEST(checker_accepts(j.certificate));
+    Claim flat = c[0];
+    flat.pose1 = Pose{};  // R = 0: singular
+    BOOST_CHECK_THROW(a.certify({flat}), scalecert::InputError);
+
+    std::mt19937 g(36);
+    std::uniform_int_distribution<long> at(-2, 2), side(1, 3), den(1, 4);
+    std::uniform_real_distribution<double> angle(0, 6.283);
+    auto random_pose = [&] {
+        const double u = angle(g), v = angle(g);
+        // A turn about z by u, then about x by v, moved by a small translation: doubles.
+        const double cz = std::cos(u), sz = std::sin(u), cx = std::cos(v), sx = std::sin(v);
+        const double m[3][3] = {{cz, -sz, 0}, {cx * sz, cx * cz, -sx}, {sx * sz, sx * cz, cx}};
+        Pose p;
+        for (int r = 0; r < 3; ++r) {
+            for (int k = 0; k < 3; ++k) p[r][k] = scalecert::exact(m[r][k]);
+            p[r][3] = scalecert::exact(0.25 * static_cast<double>(at(g)));
+        }
+        return p;
+    };
+    auto moved = [](const Pose& p, const Point& x) {
+        Point y;
+        for (int r = 0; r < 3; ++r) y[r] = p[r][0] * x[0] + p[r][1] * x[1] + p[r][2] * x[2] + p[r][3];
+        return y;
+    };
+    int kinds[3] = {0, 0, 0};  // the exact verdicts met, so that the brute force tries each
+    for (int t = 0; t < 10; ++t) {
+        std::vector<Point> P[2];
+        for (int i = 0; i < 2; ++i) {
+            const long x = at(g), y = at(g), z = at(g);
+            P[i] = box(x, y, z, x + side(g), y + side(g), z + side(g));
+        }
+        // Seeds: the boxes' centres (the means), which a pose moves to the moved boxes' centres.
+        const scalecert::Analysis base(scalecert::Scene(P[0], P[1], {R(1, 2), R(2)}, {R(1, 2), R(2)}));
+        for (int k = 0; k < 3; ++k) {
+            const Pose p1 = random_pose(), p2 = random_pose();
+            std::vector<Point> Q[2];
+            for (int i = 0; i < 2; ++i)
+                for (const Point& x : P[i]) Q[i].push_back(moved(i ? p2 : p1, x));
+            const scalecert::Analysis there(scalecert::Scene(Q[0], Q[1], {R(1, 2), R(2)}, {R(1, 2), R(2)}));
+            R r1(den(g) + 1, den(g)), r2(den(g) + 1, den(g));
+            r1.canonicalize(), r2.canonicalize();
+            std::vector<Claim> cs(4);
+            cs[0].kind = ClaimKind::Verdict, cs[0].verdict = scalecert::ClaimedVerdict::Touching;
+            cs[1].kind = ClaimKind::Distance, cs[1].value = 1;
+            cs[2].kind = ClaimKind::PenetrationDepth, cs[2].value = 1;
+            cs[3].kind = ClaimKind::SeparatingPlane, cs[3].normal = {1, 1, 0};
+            for (Claim& x : cs) x.rho1 = r1, x.rho2 = r2;
+            const scalecert::Judgements want = there.certify(cs);
+            for (Claim& x : cs) x.pose1 = p1, x.pose2 = p2;
+            const scalecert::Judgements got = base.certify(cs, opt);
+            for (size_t i = 0; i < cs.size(); ++i) {
+                BOOST_TEST(got.items[i].right == want.items[i].right, t << " " << k << " " << i);
+                BOOST_TEST((got.items[i].exact_squared == want.items[i].exact_squared), t << " " << k << " " << i);
+            }
+            BOOST_TEST((got.items[0].exact_verdict == want.items[0].exact_verdict), t << " " << k);
+            ++kinds[static_cast<int>(*want.items[0].exact_verdict)];
+            BOOST_TEST(checker_accepts(got.certificate), t << " " << k);
+        }
+    }
+    BOOST_TEST(kinds[0] > 3, kinds[0]);  // separated
+    BOOST_TEST(kinds[2] > 3, kinds[2]);  // overlapping
+}
+
 // Parts named by OBJ groups: tests/data/compound_band.obj has the groups `right` (the box
 // [2,3] x [-1,1]^2) and `left` ([-3,-2] x [-1,1]^2), in that order; compound_band_groups.json is
 // the band with P1 from it. Only the right part meets P2's box (a_region_of_parts_by_hand), so

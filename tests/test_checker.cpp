@@ -1672,6 +1672,42 @@ BOOST_AUTO_TEST_CASE(a_long_tolerance_is_shown_by_its_size) {
     BOOST_TEST(big_msg.find("tolerance ~1.23457e+52") != std::string::npos, big_msg);
 }
 
+BOOST_AUTO_TEST_CASE(judgements_at_poses_are_valid_and_tampering_is_rejected) {
+    // The stacked cubes ([0,2]^3 about (1,1,1) below [0,2]^2 x [3,5] about (1,1,4)) with P2 turned a
+    // quarter about the vertical line through (1, 1) (A: onto itself) or also lifted by 1 (B):
+    // under A every claim is judged as on the unposed cubes (touching on rho1 + rho2 = 3, the gap
+    // 1 at (1, 1), depth 1 at (2, 2)); under B, P2(1) starts at z = 4: 2 apart at (1, 1), and at
+    // (1, 2) P2 starts at z = 3 > 2 = P1's top, separated.
+    const std::string A = "[[0,-1,0,2],[1,0,0,0],[0,0,1,0]]", B = "[[0,-1,0,2],[1,0,0,0],[0,0,1,1]]";
+    const fs::path claims = tmpdir() / "posed_claims.json", cert = tmpdir() / "posed.cert.json";
+    std::ofstream(claims) << R"({"format": "scalecert-claims-1", "claims": [
+     {"kind": "verdict", "rho1": 1, "rho2": 2, "verdict": "touching", "pose2": )" +
+                                 A + R"(},
+     {"kind": "distance", "rho1": 1, "rho2": 1, "value": 1, "pose2": )" +
+                                 A + R"(},
+     {"kind": "distance", "rho1": 1, "rho2": 1, "value": 2, "pose2": )" +
+                                 B + R"(, "closest": [[1, 1, 2], [1, 1, 4]]},
+     {"kind": "verdict", "rho1": 2, "rho2": 2, "verdict": "overlapping", "pose2": )" +
+                                 A + R"(},
+     {"kind": "penetration_depth", "rho1": 2, "rho2": 2, "value": 1, "direction": [0, 0, 1], "pose2": )" +
+                                 A + R"(},
+     {"kind": "separating_plane", "rho1": 1, "rho2": 1, "normal": [0, 0, 1], "offset": 2.5, "pose2": )" +
+                                 A + R"(},
+     {"kind": "witness_point", "rho1": 2, "rho2": 2, "point": [1, 1, 2.5], "pose1": )" +
+                                 A + R"(, "pose2": )" + A + R"(},
+     {"kind": "verdict", "rho1": 1, "rho2": 2, "verdict": "touching", "pose2": )" +
+                                 B + R"(}
+    ]})";
+    const std::string cubes = std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/stacked_cubes.json";
+    BOOST_REQUIRE(engine("certify-fp " + cubes + " " + claims.string() + " --certificate " + cert.string()) == 1);
+    const OJ j = load(cert);
+    const std::vector<bool> right = {true, true, true, true, true, true, true, false};
+    BOOST_TEST_REQUIRE(j["judgements"].size() == right.size());
+    for (size_t k = 0; k < right.size(); ++k) BOOST_TEST(j["judgements"][k]["right"] == right[k], k);
+    BOOST_TEST(check_file(cert) == 0);
+    mutate_and_report(j, "judgements at poses", false, true);
+}
+
 BOOST_AUTO_TEST_CASE(a_compound_fence_of_many_normals_over_huge_corners_meets_the_work_limit) {
     // One pair apart in the rectangle, cut first by two normals with 16,000-bit entries (the
     // polygon gets corners of twice that size), then by 40,000 copies of (-1, 0, 0), whose

@@ -786,7 +786,7 @@ BOOST_AUTO_TEST_CASE(certify_fp_exit_status_gates_ci) {
     expect_error("nan line", "certify-fp " + sc + " " + write("nan.txt", "nan 1 separated\n").string(),
                  "'nan' is not a number");
     expect_error("hex float pair", "classify " + sc + " " + write("hexpairs.txt", "1 2\n0x1.8p0 1\n").string(),
-                 "line 2: expected two finite numbers > 0");
+                 "line 2: expected two decimals > 0 (such as 1.5 or 2e-3; not hexadecimal, inf or nan)");
     // A program's NaN where it answers is a wrong claim and the batch goes on (CLAIMS.md, "Outputs
     // that are no answer"): exit 1, two of three wrong, each with its reason; the certificate checks.
     {

@@ -93,7 +93,8 @@ BOOST_AUTO_TEST_CASE(pair_text_is_read_exactly_on_two_threads) {
             parse_pairs(lines + bad + "\n1 2\n", r1, r2, 2);
             BOOST_ERROR("accepted '" << bad << "'");
         } catch (const InputError& e) {
-            BOOST_TEST(std::string(e.what()) == "line 20000: expected two finite numbers > 0");
+            BOOST_TEST(std::string(e.what()) ==
+                       "line 20000: expected two decimals > 0 (such as 1.5 or 2e-3; not hexadecimal, inf or nan)");
         }
     }
 }

@@ -787,3 +787,29 @@ def test_contacts_on_parts():
     text = s.certify_fp({"format": "scalecert-claims-1", "claims": [
         {"kind": "penetration_depth", "rho1": 1.5, "rho2": 2, "parts": [0, 0], "value": 0.75}]})
     assert text["wrong"] == 0
+
+
+def test_claims_at_poses(tmp_path):
+    # The stacked cubes (touching on rho1 + rho2 = 3) with P2 turned a quarter about the vertical
+    # line through (1, 1): [R | t] = [[0,-1,0,2],[1,0,0,0],[0,0,1,0]] maps P2 onto itself, so each
+    # claim is judged as unposed; lifted by 1 more (t3 = 1), (1, 2) is separated and (1, 1) is 2
+    # apart. A pose of doubles: P1 turned 30 degrees about z keeps its z extent (R's third row is
+    # exactly (0, 0, 1)), so it still touches P2 on rho1 + rho2 = 3.
+    s = stacked()
+    quarter = np.array([[0, -1, 0, 2], [1, 0, 0, 0], [0, 0, 1, 0]], dtype=float)
+    lifted = quarter.copy()
+    lifted[2, 3] = 1
+    r = s.certify("verdict", [1, 1], [2, 2], verdict="touching", pose2=np.stack([quarter, lifted]),
+                  certificate=True)
+    assert r["right"].tolist() == [True, False] and r["exact_verdict"] == ["touching", "separated"]
+    (tmp_path / "posed.json").write_text(r["certificate"])
+    out = subprocess.run([CHECK, str(tmp_path / "posed.json")], capture_output=True, text=True)
+    assert out.returncode == 0, out.stdout + out.stderr
+    d = s.certify("distance", [1, 1], [1, 1], value=[1, 2], pose2=np.stack([quarter, lifted]))
+    assert d["right"].tolist() == [True, True]
+    c, n = math.cos(math.pi / 6), math.sin(math.pi / 6)
+    turned = np.array([[c, -n, 0, 1 - c + n], [n, c, 0, 1 - n - c], [0, 0, 1, 0]])  # about (1, 1)
+    t = s.certify("verdict", [1, 1.5], [2, 1.5], verdict="touching", pose1=np.stack([turned, turned]))
+    assert t["right"].tolist() == [True, True]
+    with pytest.raises(scalecert.InputError, match=r"pose1: its 3x3 part R is singular"):
+        s.certify("verdict", [1], [2], verdict="touching", pose1=np.zeros((1, 3, 4)))

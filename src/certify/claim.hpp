@@ -48,6 +48,10 @@ struct TypedClaim {
     std::optional<Vec3q> direction;               // Depth (nonzero)
     // Depth on objects made of parts: the part pair it speaks of (a contact), [P1 part, P2 part].
     std::optional<std::array<int, 2>> parts;
+    // The objects at poses (Verdict, Plane, Witness, Distance, Depth): P_i moved by [R_i | t_i]
+    // as the scene places it, its seed too, then scaled about the seed (none: as the scene is).
+    std::array<std::optional<Pose>, 2> pose;
+    bool posed() const { return pose[0] || pose[1]; }
     std::optional<std::string> contact;         // SwitchPoint
     std::shared_ptr<const ClaimedCurve> curve;  // Curve
     // A field the program wrote no answer in (CLAIMS.md, "Outputs that are no answer"): a NaN, an

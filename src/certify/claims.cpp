@@ -85,8 +85,9 @@ class ClaimReader {
         c.type = *t;
         switch (c.type) {
         case ClaimType::Verdict: {
-            only(claim, {"kind", "rho1", "rho2", "verdict"});
+            only(claim, {"kind", "rho1", "rho2", "verdict", "pose1", "pose2"});
             pair_at(claim, c);
+            poses(claim, c);
             const std::string v = str(claim, "verdict");
             const std::optional<Claimed> cv = claimed_of(v);
             if (!cv)
@@ -118,20 +119,23 @@ class ClaimReader {
             break;
         case ClaimType::Curve: c.curve = std::make_shared<const ClaimedCurve>(curve(claim)); break;
         case ClaimType::Plane:
-            only(claim, {"kind", "rho1", "rho2", "normal", "offset"});
+            only(claim, {"kind", "rho1", "rho2", "normal", "offset", "pose1", "pose2"});
             pair_at(claim, c);
+            poses(claim, c);
             if (answer_point(need(claim, "normal"), "normal", c, c.normal) && is_zero(c.normal))
                 set_no_answer(c, "normal", "the zero vector");
             if (const JNode* off = claim.find("offset")) answer(*off, "offset", c, c.offset.emplace());
             break;
         case ClaimType::Witness:
-            only(claim, {"kind", "rho1", "rho2", "point"});
+            only(claim, {"kind", "rho1", "rho2", "point", "pose1", "pose2"});
             pair_at(claim, c);
+            poses(claim, c);
             answer_point(need(claim, "point"), "point", c, c.point);
             break;
         case ClaimType::Distance:
-            only(claim, {"kind", "rho1", "rho2", "value", "closest"});
+            only(claim, {"kind", "rho1", "rho2", "value", "closest", "pose1", "pose2"});
             pair_at(claim, c);
+            poses(claim, c);
             answer(need(claim, "value"), "value", c, c.value);
             if (const JNode* cl = claim.find("closest")) {
                 std::array<Vec3q, 2>& pq = c.closest.emplace();
@@ -144,9 +148,10 @@ class ClaimReader {
             }
             break;
         case ClaimType::Depth:
-            only(claim, {"kind", "rho1", "rho2", "parts", "value", "direction"});
+            only(claim, {"kind", "rho1", "rho2", "parts", "value", "direction", "pose1", "pose2"});
             pair_at(claim, c);
             part_pair(claim, c);
+            poses(claim, c);
             answer(need(claim, "value"), "value", c, c.value);
             if (const JNode* dir = claim.find("direction"))
                 if (answer_point(*dir, "direction", c, c.direction.emplace()) && is_zero(*c.direction))
@@ -161,6 +166,32 @@ class ClaimReader {
     Numbers numbers_;
     bool parts_;
     size_t count_[2] = {1, 1};  // parts of P1 and of P2 (a convex object is one part)
+
+    // "pose1", "pose2": the objects at poses, each three rows [r1, r2, r3, t] of numbers (read as
+    // the claims' numbers are), R nonsingular. A pose is the program's question, not its answer:
+    // a non-number in it is bad input.
+    void poses(const JNode& claim, TypedClaim& c) const {
+        for (size_t i = 0; i < 2; ++i) {
+            const std::string key = i ? "pose2" : "pose1";
+            const JNode* n = claim.find(key.c_str());
+            if (!n) continue;
+            if (parts_)
+                fail(key,
+                     "poses on claims are for two convex objects (objects made of parts take a pose in the "
+                     "scene, \"pose\" on the object)");
+            if (n->kind != JNode::Array || n->items.size() != 3)
+                fail(key, "expected 3 rows [r1, r2, r3, t] (the matrix [R | t])");
+            Pose& m = c.pose[i].emplace();
+            for (size_t r = 0; r < 3; ++r) {
+                const JNode& row = n->items[r];
+                const std::string wr = key + "[" + std::to_string(r) + "]";
+                if (row.kind != JNode::Array || row.items.size() != 4) fail(wr, "expected 4 numbers [r1, r2, r3, t]");
+                for (size_t k = 0; k < 4; ++k) m[r][k] = number(row.items[k], wr + "[" + std::to_string(k) + "]");
+            }
+            if (sgn(pose_determinant(m)) == 0)
+                fail(key, "its 3x3 part R is singular (determinant 0): the object would be flat");
+        }
+    }
 
     // A depth's "parts": [k, j], the pair of parts it speaks of (a contact). Needed on objects made
     // of parts, where the depth of the objects is not defined; on two convex objects only [0, 0].
@@ -367,7 +398,14 @@ void errors_sq(Json& o, const Q& claimed, const Q& E) {
     o["abs_error_double"] = std::fabs(d);
     o["rel_error_double"] = sgn(E) ? Json(relative_sqrt_error_rn(E, claimed)) : Json(nullptr);
 }
-std::string at(const TypedClaim& c) { return "(" + num(c.rho1) + ", " + num(c.rho2) + ")"; }
+// (ρ1, ρ2), and which objects are at poses.
+std::string at(const TypedClaim& c) {
+    const char* posed = c.pose[0] && c.pose[1] ? " with P1 and P2 at poses"
+                        : c.pose[0]            ? " with P1 at a pose"
+                        : c.pose[1]            ? " with P2 at a pose"
+                                               : "";
+    return "(" + num(c.rho1) + ", " + num(c.rho2) + ")" + posed;
+}
 // A point's part on an object made of parts: its number, or false when no part holds it.
 Json part_or_false(int k) { return k >= 0 ? Json(k) : Json(false); }
 // After part k of object i in a text line: " ('foot')", its name, or "" when it has none.
@@ -402,6 +440,8 @@ void describe(const TypedClaim& c, const Judged& g, const ExactScene* parts, Jso
     auto rhos = [&] {
         put_exact(o, "rho1", c.rho1);
         put_exact(o, "rho2", c.rho2);
+        for (size_t i = 0; i < 2; ++i)
+            if (c.pose[i]) o[i ? "pose2" : "pose1"] = exact_claim_json(c)[i ? "pose2" : "pose1"];
     };
     if (!c.no_answer.empty()) {
         // The scaling pair it was asked at, where that is a question and not the answer.
@@ -413,8 +453,16 @@ void describe(const TypedClaim& c, const Judged& g, const ExactScene* parts, Jso
             put_exact(o, "rho1", c.rho1);
         o["no_answer"] = c.no_answer;
         o["reason"] = c.no_answer_reason;
+        // A contact names its part pair, answered or not.
+        std::string of;
+        if (parts && c.parts) {
+            const int a = (*c.parts)[0], b = (*c.parts)[1];
+            put_part_pair(o, "parts", *parts, a, b);
+            of = " of parts " + std::to_string(a) + name_of(*parts, 0, a) + " and " + std::to_string(b) +
+                 name_of(*parts, 1, b);
+        }
         text =
-            std::string(type_name(c.type)) +
+            std::string(type_name(c.type)) + of +
             (asked ? c.type == ClaimType::CurvePoint ? " at rho1 = " + num(c.rho1) : " at " + at(c) : std::string()) +
             ": " + c.no_answer + " is " + c.no_answer_reason + ": no answer";
         return;
@@ -429,7 +477,7 @@ void describe(const TypedClaim& c, const Judged& g, const ExactScene* parts, Jso
         } else {
             o["claimed"] = claimed_name(c.verdict);
             o["exact"] = verdict_name(*g.exact_verdict);
-            put_exact(o, "rho2_minus_curve", g.rho2_minus_curve);
+            if (!c.posed()) put_exact(o, "rho2_minus_curve", g.rho2_minus_curve);  // no curve at a pose
         }
         text = "verdict at " + at(c) + ": claimed " + claimed_name(c.verdict) + ", exact " +
                verdict_name(*g.exact_verdict);

@@ -189,7 +189,8 @@ void parse_pairs(const std::string& text, std::vector<double>& r1, std::vector<d
     for (unsigned t = 0; t < threads; ++t)
         if (bad[t] != std::string::npos) {
             long line = 1 + std::count(text.begin(), text.begin() + static_cast<long>(bad[t]), '\n');
-            throw InputError("line " + std::to_string(line) + ": expected two finite numbers > 0");
+            throw InputError("line " + std::to_string(line) +
+                             ": expected two decimals > 0 (such as 1.5 or 2e-3; not hexadecimal, inf or nan)");
         }
     size_t n = got[0];
     for (unsigned t = 1; t < threads; ++t) {

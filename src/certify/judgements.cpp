@@ -78,7 +78,8 @@ class BodyAndPoint final : public PointSets {
 };
 }  // namespace
 
-std::optional<bool> membership_by_points(const PointSets& S, int i, const Q& rho, const Vec3q& x, Json* proof) {
+std::optional<bool> membership_by_points(const PointSets& S, int i, const Q& rho, const Vec3q& x, Json* proof,
+                                         int max_rounds) {
     // Beyond the body's box along an axis (six exact support queries): out, with that axis. A
     // point far away, or beyond doubles (where the distance's guess in doubles is lost), ends here.
     const Vec3q& s = S.seed(i);
@@ -93,7 +94,7 @@ std::optional<bool> membership_by_points(const PointSets& S, int i, const Q& rho
                 return false;
             }
         }
-    const std::optional<ProvedDistance> pd = proved_distance(BodyAndPoint(S, i, x), rho, Q(1));
+    const std::optional<ProvedDistance> pd = proved_distance(BodyAndPoint(S, i, x), rho, Q(1), max_rounds);
     if (!pd) return std::nullopt;
     const bool inside = sgn(pd->d.squared) == 0;
     if (proof) {

@@ -18,7 +18,8 @@ Json membership_proof(const Polyhedron& P, const Vec3q& seed, const Q& rho, cons
 // distance between P_i(ρ) and x. Inside: the weights of the closest point (x itself); outside: the
 // direction from the body's closest point to x, whose plane x lies strictly beyond. None when the
 // distance's rounds run out (the caller then builds the hulls).
-std::optional<bool> membership_by_points(const PointSets& S, int i, const Q& rho, const Vec3q& x, Json* proof);
+std::optional<bool> membership_by_points(const PointSets& S, int i, const Q& rho, const Vec3q& x, Json* proof,
+                                         int max_rounds = kProvedDistanceRounds);
 
 // Is x, which lies outside P_i(ρ), within `abs` (> 0) of it? The proved distance from x to the body
 // (its rounds unbounded: each adds a point): {"near": weights} of the body's point nearest x when

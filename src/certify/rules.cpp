@@ -5,6 +5,7 @@
 #include "certify/judgements.hpp"
 #include "geometry/measures.hpp"
 
+#include <limits>
 #include <algorithm>
 
 namespace scalecert::internal {
@@ -145,6 +146,13 @@ Json exact_fields_json(const TypedClaim& c) {
     }
     j["rho1"] = ex(c.rho1);
     j["rho2"] = ex(c.rho2);
+    for (size_t i = 0; i < 2; ++i)
+        if (c.pose[i]) {
+            Json m = Json::array();
+            for (const auto& row : *c.pose[i])
+                m.push_back(Json::array({ex(row[0]), ex(row[1]), ex(row[2]), ex(row[3])}));
+            j[i ? "pose2" : "pose1"] = std::move(m);
+        }
     switch (c.type) {
     case ClaimType::Verdict: j["verdict"] = claimed_name(c.verdict); break;
     case ClaimType::SwitchPoint:
@@ -491,6 +499,100 @@ struct ConvexRules::Impl {
         }
     }
 
+    // A claim at poses (CLAIMS.md, "Poses"): judged by the same rules from support queries on the
+    // posed points (PosedPoints: no model is built for the pose), each proof a support proof the
+    // checker verifies on the posed vertices. A verdict's proof is its depth's: separated by a
+    // normal, touching (a supporting plane through the origin and a common point), or overlapping
+    // (depth > 0). The proved distance's rounds are unbounded: it always closes.
+    void posed(const TypedClaim& c, Judged& g, Proof* proof) {
+        const PosedPoints S(points(), c.pose);
+        constexpr int kAll = std::numeric_limits<int>::max();
+        auto depth_at = [&] {
+            const std::optional<MeasuredDepth> md = measured_depth(S, c.rho1, c.rho2, kAll);
+            if (!md) throw std::logic_error("certify-fp: a posed depth did not close");
+            return *md;
+        };
+        auto verdict_of = [](const MeasuredDepth& md) {
+            return md.state == MeasuredDepth::Separated  ? Verdict::Separated
+                   : md.state == MeasuredDepth::Touching ? Verdict::Touching
+                                                         : Verdict::Overlapping;
+        };
+        // x in body i at ρ, or within the absolute tolerance of it, with its proof.
+        auto member = [&](int i, const Q& rho, const Vec3q& x, Json* pj, bool& near) {
+            near = false;
+            const std::optional<bool> in = membership_by_points(S, i, rho, x, pj, kAll);
+            if (!in) throw std::logic_error("certify-fp: a posed membership did not close");
+            if (*in) return true;
+            near = sgn(tol.abs) > 0 && near_proof(S, i, rho, x, tol.abs, pj);
+            return near;
+        };
+        switch (c.type) {
+        case ClaimType::Verdict: {
+            const MeasuredDepth md = depth_at();
+            g.exact_verdict = verdict_of(md);
+            g.right = verdict_matches(c.verdict, *g.exact_verdict);
+            if (proof) proof->proof = Json{{"depth", depth_proof(nullptr, md, c.rho1, c.rho2)}};
+            break;
+        }
+        case ClaimType::Plane:
+            std::tie(g.c1, g.c2) = plane_extents(S, c.normal, c.rho1, c.rho2);
+            g.right = plane_right(tol, g.c1, g.c2, c.normal, c.offset);
+            if (proof) proof->proof = Json::object();
+            break;
+        case ClaimType::Witness: {
+            Json p1, p2;
+            g.in1 = member(0, c.rho1, c.point, proof ? &p1 : nullptr, g.near1);
+            g.in2 = member(1, c.rho2, c.point, proof ? &p2 : nullptr, g.near2);
+            g.exact_verdict = verdict_of(depth_at());
+            g.right = g.in1 && g.in2;
+            if (proof) proof->proof = Json{{"P1", std::move(p1)}, {"P2", std::move(p2)}};
+            break;
+        }
+        case ClaimType::Distance: {
+            const std::optional<ProvedDistance> pd = proved_distance(S, c.rho1, c.rho2, kAll);
+            if (!pd) throw std::logic_error("certify-fp: a posed distance did not close");
+            const ExactDistance& e = pd->d;
+            g.exact_squared = e.squared;
+            g.exact_p1 = e.p1;
+            g.exact_p2 = e.p2;
+            g.value_right = tol.close_sq(c.value, e.squared);
+            g.right = *g.value_right;
+            if (proof) proof->proof = distance_proof(nullptr, e, c.rho1, c.rho2);
+            if (c.closest) {
+                const auto& [p, q] = *c.closest;
+                const Vec3q pq = diff(q, p);
+                g.closest_squared = dot3(pq, pq);
+                Json p1, p2;
+                g.in1 = member(0, c.rho1, p, proof ? &p1 : nullptr, g.near1);
+                g.in2 = member(1, c.rho2, q, proof ? &p2 : nullptr, g.near2);
+                g.closest_right = g.in1 && g.in2 && tol.within_above(g.closest_squared, e.squared, 2);
+                g.right = g.right && *g.closest_right;
+                if (proof) proof->proof["closest"] = Json{{"P1", std::move(p1)}, {"P2", std::move(p2)}};
+            }
+            break;
+        }
+        case ClaimType::Depth: {
+            const MeasuredDepth md = depth_at();
+            if (proof) proof->proof = depth_proof(nullptr, md, c.rho1, c.rho2);
+            if (md.state == MeasuredDepth::Separated) {
+                g.exact_verdict = Verdict::Separated;
+                break;
+            }
+            g.exact_squared = md.state == MeasuredDepth::Touching ? Q(0) : md.depth->squared;
+            g.exact_direction = md.normal;
+            g.value_right = tol.close_sq(c.value, *g.exact_squared);
+            g.right = *g.value_right;
+            if (c.direction) {
+                g.along = directional_depth_squared(S, *c.direction, c.rho1, c.rho2);
+                g.direction_right = tol.within_above(g.along, *g.exact_squared);
+                g.right = g.right && *g.direction_right;
+            }
+            break;
+        }
+        default: throw std::logic_error("certify-fp: a pose on a claim of the curve");
+        }
+    }
+
     void depth(const TypedClaim& c, Judged& g, Proof* proof) {
         // The exact squared depth (none when separated) and a minimising direction, with its proof.
         const MeasuredDepth md = depth_of(c.rho1, c.rho2);
@@ -531,6 +633,10 @@ Judged ConvexRules::judge(const TypedClaim& c, Proof* proof) {
     Judged g;
     if (proof) proof->claim = exact_claim_json(c);
     if (no_answer(c, proof)) return g;
+    if (c.posed()) {
+        impl_->posed(c, g, proof);
+        return g;
+    }
     switch (c.type) {
     case ClaimType::Verdict: impl_->verdict(c, g, proof); break;
     case ClaimType::Growth: impl_->growth(c, g, proof); break;

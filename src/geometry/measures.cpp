@@ -289,11 +289,11 @@ std::optional<ProvedDepth> proved_depth(const Bodies& m, const Q& rho1, const Q&
     return proved_depth(HullPoints(m), rho1, rho2);
 }
 
-std::optional<MeasuredDepth> measured_depth(const PointSets& S, const Q& rho1, const Q& rho2) {
+std::optional<MeasuredDepth> measured_depth(const PointSets& S, const Q& rho1, const Q& rho2, int max_rounds) {
     // Apart by the doubles' guess: the proved distance decides (its slab separates, or it finds
     // them meeting after all).
     if (gjk_guess(S, to_double_rn(rho1), to_double_rn(rho2)).distance > 0) {
-        const std::optional<ProvedDistance> pd = proved_distance(S, rho1, rho2);
+        const std::optional<ProvedDistance> pd = proved_distance(S, rho1, rho2, max_rounds);
         if (!pd) return std::nullopt;
         return depth_from_distance(S, pd->d, rho1, rho2);
     }
@@ -313,7 +313,7 @@ std::optional<MeasuredDepth> measured_depth(const PointSets& S, const Q& rho1, c
         r.state = MeasuredDepth::Separated;
         return r;
     }
-    const std::optional<ProvedDistance> pd = proved_distance(S, rho1, rho2);
+    const std::optional<ProvedDistance> pd = proved_distance(S, rho1, rho2, max_rounds);
     if (!pd) return std::nullopt;
     if (sgn(pd->d.squared) != 0)
         throw std::logic_error("measured_depth: a supporting plane through the origin, and the bodies apart");

@@ -82,7 +82,9 @@ struct MeasuredDepth {
     ExactDistance distance;            // the proved distance (weights of its closest points)
     std::optional<ProvedDepth> depth;  // Overlapping
 };
-std::optional<MeasuredDepth> measured_depth(const PointSets& S, const Q& rho1, const Q& rho2);
+// (max_rounds: the proved distance's, as proved_distance's; past the points' count it always closes.)
+std::optional<MeasuredDepth> measured_depth(const PointSets& S, const Q& rho1, const Q& rho2,
+                                            int max_rounds = kProvedDistanceRounds);
 // Its second half, from an exact distance found otherwise.
 MeasuredDepth depth_from_distance(const PointSets& S, const ExactDistance& dist, const Q& rho1, const Q& rho2);
 // The squared directional depth along n: (ρ1 h1(n) + ρ2 h2(n) − n·d)² / |n|², signed negative

@@ -7,6 +7,8 @@
 #include "geometry/bodies.hpp"
 #include "numeric/double3.hpp"
 
+#include <optional>
+
 namespace scalecert::internal {
 
 class PointSets {
@@ -53,6 +55,28 @@ class HullPoints final : public PointSets {
   private:
     const Polyhedron* P_[2];
     const Vec3q* s_[2];
+};
+
+// Another point set with polyhedron i moved by a pose [R_i | t_i] (none: where it is): point k
+// is R·p_k + t, the seed likewise. Support queries go to the base set along Rᵀn (max over k of
+// n·(R p_k + t) = n·t + max (Rᵀn)·p_k: the same maximisers), scaled to integers, so a pose costs
+// a query nothing but its arithmetic. R must be nonsingular.
+class PosedPoints final : public PointSets {
+  public:
+    PosedPoints(const PointSets& base, const std::array<std::optional<Pose>, 2>& poses);
+    Vec3q point(int i, int k) const override;
+    D3 dpoint(int i, int k) const override;
+    const Vec3q& seed(int i) const override { return seed_[i]; }
+    const Z& scale(int i) const override { return scale_[i]; }
+    int argmax(int i, const Vec3z& n) const override;
+    int dargmax(int i, const D3& d) const override;
+
+  private:
+    const PointSets& base_;
+    std::array<std::optional<Pose>, 2> pose_;
+    double dpose_[2][3][4];
+    Vec3q seed_[2];
+    Z scale_[2];
 };
 
 }  // namespace scalecert::internal

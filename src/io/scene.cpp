@@ -216,10 +216,13 @@ ExactScene parse_scene_text(const std::string& text, const std::string& name, co
     return sc;
 }
 
+Q pose_determinant(const Pose& m) {
+    return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+           m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+}
+
 void apply_pose(const Pose& m, PolyInput& in, const std::string& where) {
-    const Q det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
-                  m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
-    if (sgn(det) == 0)
+    if (sgn(pose_determinant(m)) == 0)
         throw InputError(where + ": its 3x3 part R is singular (determinant 0): the object would be flat");
     // A moved coordinate is a number the engine reads like any other: past the limit for one
     // number it is refused at the first vertex, before the work its size would cost.

@@ -453,6 +453,20 @@ internal::TypedClaim typed_claim(const Claim& c, size_t i, const internal::Exact
     if (sgn(t.rho1) <= 0) throw InputError(where + ".rho1: scalings must be > 0 (got " + to_exact_string(t.rho1) + ")");
     if (sgn(t.rho2) <= 0) throw InputError(where + ".rho2: scalings must be > 0 (got " + to_exact_string(t.rho2) + ")");
     if (!c.no_answer.empty()) t.no_answer = c.no_answer, t.no_answer_reason = "not a number";
+    for (size_t k = 0; k < 2; ++k) {
+        const std::optional<Pose>& m = k ? c.pose2 : c.pose1;
+        if (!m) continue;
+        const std::string w = where + (k ? ".pose2" : ".pose1");
+        if (parts)
+            throw InputError(w +
+                             ": poses on claims are for two convex objects (objects made of parts take a pose in "
+                             "the scene)");
+        Pose& p = t.pose[k].emplace();
+        for (size_t r = 0; r < 3; ++r)
+            for (size_t q = 0; q < 4; ++q) p[r][q] = canonical_q((*m)[r][q]);
+        if (sgn(internal::pose_determinant(p)) == 0)
+            throw InputError(w + ": its 3x3 part R is singular (determinant 0): the object would be flat");
+    }
     auto nonzero = [&](const Point& p, const char* key) {
         const Point q = canonical(p);
         if (sgn(q[0]) == 0 && sgn(q[1]) == 0 && sgn(q[2]) == 0 && t.no_answer.empty())
