@@ -102,6 +102,14 @@ bool judge(Context& cx, const CompoundScene& cs, const Rules& R, const Judgement
     const Scene& sc = cs.sc;
     const J &cl = j.claim, &pr = j.proof;
     const std::string &kind = j.kind, &where = j.where, &wc = j.wc, &wp = j.wp;
+    if (cl.contains("pose1") || cl.contains("pose2")) {
+        // At poses: the same claim without them, on the objects moved by them (every vertex of
+        // every part recomputed, the seeds too; the parts keep their vertices' places).
+        J bare;
+        const std::array<std::optional<Pose>, 2> pose = claim_poses(cx, cl, wc, bare);
+        CompoundScene moved{posed_scene(cx, sc, pose), {cs.start[0], cs.start[1]}};
+        return judge(cx, moved, R, Judgement{bare, pr, kind, where, wc, wp});
+    }
     const Objects bodies(cs, R.abs);
     if (kind == "verdict") {
         shape(cx, cl, wc, {"kind", "rho1", "rho2", "verdict"});

@@ -255,29 +255,8 @@ bool judge_at_poses(Context& cx, const Scene& sc, const Rules& R, const Judgemen
              j.wc +
                  ": poses are on claims of kind verdict, separating_plane, witness_point, distance or "
                  "penetration_depth");
-    std::array<std::optional<Pose>, 2> pose;
-    J bare = cl;
-    for (int i = 0; i < 2; ++i) {
-        const std::string key = i ? "pose2" : "pose1", w = j.wc + "." + key;
-        if (!cl.contains(key)) continue;
-        const J& m = at(cl, key.c_str());
-        cx.claim(m.is_array() && m.size() == 3, w + " is 3 rows [r1, r2, r3, t]");
-        Pose& p = pose[static_cast<size_t>(i)].emplace();
-        for (size_t r = 0; r < 3; ++r) {
-            const std::string wr = w + "[" + std::to_string(r) + "]";
-            cx.claim(m[r].is_array() && m[r].size() == 4, wr + " is 4 numbers");
-            for (size_t k = 0; k < 4; ++k) p[r][k] = num(cx, m[r][k], wr + "[" + std::to_string(k) + "]");
-        }
-        double lm = 0;
-        for (const auto& row : p)
-            for (const Q& e : row) lm = std::max(lm, qsize(e));
-        cx.spend_ops(12, 3 * lm);
-        const Q det = p[0][0] * (p[1][1] * p[2][2] - p[1][2] * p[2][1]) -
-                      p[0][1] * (p[1][0] * p[2][2] - p[1][2] * p[2][0]) +
-                      p[0][2] * (p[1][0] * p[2][1] - p[1][1] * p[2][0]);
-        cx.claim(sgn(det) != 0, w + " has a nonsingular R");
-        bare.erase(key);
-    }
+    J bare;
+    const std::array<std::optional<Pose>, 2> pose = claim_poses(cx, cl, j.wc, bare);
     const Scene posed = posed_scene(cx, sc, pose);
     const Judgement jb{bare, pr, j.kind, j.where, j.wc, j.wp};
     if (j.kind != "verdict") return judge(cx, posed, R, jb);

@@ -93,6 +93,9 @@ class Vertices {
 Scene read_scene(Context& cx, const J& j);
 // A pose [R | t] (three rows of four exact numbers): x -> R·x + t.
 using Pose = std::array<std::array<Q, 4>, 3>;
+// A claim's "pose1" and "pose2" (each three rows of four exact numbers, R nonsingular), and the
+// claim without them in `bare`.
+std::array<std::optional<Pose>, 2> claim_poses(Context& cx, const J& cl, const std::string& wc, J& bare);
 // The scene with polyhedron i moved by pose[i] (none: as it is), its seed too: a claim at poses
 // is judged on it (FORMAT.md, "A judgements file").
 Scene posed_scene(Context& cx, const Scene& sc, const std::array<std::optional<Pose>, 2>& pose);

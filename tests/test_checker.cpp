@@ -1816,6 +1816,31 @@ BOOST_AUTO_TEST_CASE(compound_judgements_are_valid_and_tampering_is_rejected) {
     mutate_and_report(contacts, "compound judgements (contacts)", false, true);
 }
 
+BOOST_AUTO_TEST_CASE(compound_judgements_at_poses_are_valid_and_tampering_is_rejected) {
+    // The U and peg (CLAIMS.md's contact example) with the peg lifted by 10: at (1, 2) the peg is
+    // [-2,2] x [-1,1] x [21/2, 33/2], separated, 13/2 above the arms' tops (z = 4; x meets at ±2);
+    // lowered by 1/4, it sinks 3/4 into the bottom (z up to 1); turned a quarter about z it still
+    // holds (0, 0, 3/4), as the bottom does.
+    const std::string up = "[[1,0,0,0],[0,1,0,0],[0,0,1,10]]", down = "[[1,0,0,0],[0,1,0,0],[0,0,1,-0.25]]";
+    const OJ j = compound_judgements(data("compound_u_peg.json"),
+                                     R"({"format": "scalecert-claims-1", "claims": [
+     {"kind": "verdict", "rho1": 1, "rho2": 2, "verdict": "separated", "pose2": )" +
+                                         up + R"(},
+     {"kind": "distance", "rho1": 1, "rho2": 2, "value": 6.5, "pose2": )" +
+                                         up + R"(},
+     {"kind": "penetration_depth", "rho1": 1, "rho2": 2, "parts": [0, 0], "value": 0.75, "pose2": )" +
+                                         down + R"(},
+     {"kind": "verdict", "rho1": 1, "rho2": 2, "verdict": "touching", "pose2": )" +
+                                         up + R"(},
+     {"kind": "witness_point", "rho1": 1, "rho2": 2, "point": [0, 0, 0.75], "pose2": [[0,-1,0,0],[1,0,0,0],[0,0,1,0]]}
+    ]})",
+                                     "u_peg_posed");
+    const std::vector<bool> right = {true, true, true, false, true};
+    BOOST_TEST_REQUIRE(j["judgements"].size() == right.size());
+    for (size_t k = 0; k < right.size(); ++k) BOOST_TEST(j["judgements"][k]["right"] == right[k], k);
+    mutate_and_report(j, "compound judgements at poses", false, true);
+}
+
 BOOST_AUTO_TEST_CASE(compound_distances_over_grids_are_valid) {
     // Two grids of 4 x 4 random parts side by side: a distance's lower bound has blocks of boxes
     // apart, pairs apart along the slab of their double GJK direction and pairs apart by their own

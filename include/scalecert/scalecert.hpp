@@ -193,7 +193,7 @@ struct Claim {
     // PenetrationDepth on objects made of parts: the part pair it speaks of (a contact, as FCL and
     // Bullet report one per colliding part pair), {part of P1, part of P2}, numbered from 0.
     std::optional<std::array<int, 2>> parts;
-    // The objects at poses (all kinds; two convex objects): P1 moved by pose1 = [R | t] as the
+    // The objects at poses (every kind): P1 moved by pose1 = [R | t] as the
     // scene places it (v -> R·v + t, the seed too), then scaled about its seed; none: as the
     // scene is. R must be nonsingular (else InputError). Doubles a program held: exact(x).
     std::optional<Pose> pose1, pose2;

@@ -813,3 +813,14 @@ def test_claims_at_poses(tmp_path):
     assert t["right"].tolist() == [True, True]
     with pytest.raises(scalecert.InputError, match=r"pose1: its 3x3 part R is singular"):
         s.certify("verdict", [1], [2], verdict="touching", pose1=np.zeros((1, 3, 4)))
+
+
+def test_claims_at_poses_on_parts():
+    # The U and peg lifted by 10 (CLAIMS.md, "Poses"): at (1, 2) the peg starts at z = 21/2, 13/2
+    # above the arms' tops; lowered by 1/4 it sinks 3/4 into the bottom part.
+    s = scalecert.Scene.load(str(SRC / "tests" / "data" / "compound_u_peg.json"))
+    up = np.array([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 10]], dtype=float)
+    down = np.array([[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, -0.25]])
+    assert s.certify("distance", [1], [2], value=[6.5], pose2=[up])["right"].tolist() == [True]
+    d = s.certify("penetration_depth", [1], [2], value=[0.75], parts=[[0, 0]], pose2=[down])
+    assert d["right"].tolist() == [True]

@@ -7,6 +7,7 @@
 #include "certify/claims.hpp"
 
 #include <array>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -156,12 +157,17 @@ class ConvexRules {
 class CompoundJudge;
 class PartsRules {
   public:
-    PartsRules(CompoundJudge& judge, const Tolerance& tolerance) : judge_(judge), tol_(tolerance) {}
+    PartsRules(CompoundJudge& judge, const Tolerance& tolerance);
+    ~PartsRules();
     // Whether the type is judged on parts.
     static bool takes(ClaimType t);
     Judged judge(const TypedClaim& c, Proof* proof = nullptr);
 
   private:
+    // A claim at poses is judged on the scene moved by them: its own judge (every part's hull
+    // built anew), kept for the claims at the same poses.
+    CompoundJudge& posed(const std::array<std::optional<Pose>, 2>& pose);
+    std::map<std::string, std::unique_ptr<CompoundJudge>> posed_;
     // The part of object i holding x scaled by ρ, or within the absolute tolerance of it (−1: none).
     int place(int i, const Q& rho, const Vec3q& x, Json* proof, bool* near) const;
     CompoundJudge& judge_;

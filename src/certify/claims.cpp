@@ -175,10 +175,6 @@ class ClaimReader {
             const std::string key = i ? "pose2" : "pose1";
             const JNode* n = claim.find(key.c_str());
             if (!n) continue;
-            if (parts_)
-                fail(key,
-                     "poses on claims are for two convex objects (objects made of parts take a pose in the "
-                     "scene, \"pose\" on the object)");
             if (n->kind != JNode::Array || n->items.size() != 3)
                 fail(key, "expected 3 rows [r1, r2, r3, t] (the matrix [R | t])");
             Pose& m = c.pose[i].emplace();

@@ -653,6 +653,30 @@ Judged ConvexRules::judge(const TypedClaim& c, Proof* proof) {
 
 // ---- two objects made of parts ---------------------------------------------------------------
 
+PartsRules::PartsRules(CompoundJudge& judge, const Tolerance& tolerance) : judge_(judge), tol_(tolerance) {}
+PartsRules::~PartsRules() = default;
+
+CompoundJudge& PartsRules::posed(const std::array<std::optional<Pose>, 2>& pose) {
+    std::string key;
+    for (const auto& p : pose) {
+        key += p ? "[" : "-";
+        if (p)
+            for (const auto& row : *p)
+                for (const Q& x : row) key += to_exact_string(x) + ",";
+    }
+    std::unique_ptr<CompoundJudge>& j = posed_[key];
+    if (!j) {
+        ExactScene sc = judge_.scene();
+        for (size_t i = 0; i < 2; ++i)
+            if (pose[i]) {
+                sc.P[i].seed_given = true;  // the seed moves with the object
+                apply_pose(*pose[i], sc.P[i], std::string("claim pose") + (i ? "2" : "1"));
+            }
+        j = std::make_unique<CompoundJudge>(sc, "claim at poses");
+    }
+    return *j;
+}
+
 bool PartsRules::takes(ClaimType t) {
     return t == ClaimType::Verdict || t == ClaimType::Plane || t == ClaimType::Witness || t == ClaimType::Distance ||
            t == ClaimType::Depth;
@@ -673,6 +697,14 @@ Judged PartsRules::judge(const TypedClaim& c, Proof* proof) {
     Json* p = proof ? &proof->proof : nullptr;
     if (proof) proof->claim = exact_claim_json(c);
     if (no_answer(c, proof)) return g;
+    if (c.posed()) {  // the same rules on the scene moved by the poses
+        TypedClaim bare = c;
+        bare.pose = {};
+        PartsRules at(posed(c.pose), tol_);
+        g = at.judge(bare, proof);
+        if (proof) proof->claim = exact_claim_json(c);
+        return g;
+    }
     switch (c.type) {
     case ClaimType::Verdict: {
         const CompoundJudge::Verdict e = judge_.verdict(c.rho1, c.rho2, p);

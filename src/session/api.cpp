@@ -457,10 +457,6 @@ internal::TypedClaim typed_claim(const Claim& c, size_t i, const internal::Exact
         const std::optional<Pose>& m = k ? c.pose2 : c.pose1;
         if (!m) continue;
         const std::string w = where + (k ? ".pose2" : ".pose1");
-        if (parts)
-            throw InputError(w +
-                             ": poses on claims are for two convex objects (objects made of parts take a pose in "
-                             "the scene)");
         Pose& p = t.pose[k].emplace();
         for (size_t r = 0; r < 3; ++r)
             for (size_t q = 0; q < 4; ++q) p[r][q] = canonical_q((*m)[r][q]);
