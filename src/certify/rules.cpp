@@ -5,6 +5,7 @@
 #include "certify/judgements.hpp"
 #include "geometry/measures.hpp"
 
+#include <functional>
 #include <limits>
 #include <algorithm>
 
@@ -180,6 +181,29 @@ Json exact_fields_json(const TypedClaim& c) {
 
 // ---- two convex objects ----------------------------------------------------------------------
 
+namespace {
+// The depth rule (CLAIMS.md, penetration_depth) on a measured depth md: wrong for a separated
+// pair; else the value against the exact depth, and a claimed direction n by the squared depth
+// along it, along(n) (moving P2 that far along n separates them exactly iff n attains the least).
+void depth_rule(const TypedClaim& c, const MeasuredDepth& md, const Tolerance& tol, Judged& g,
+                const std::function<Q(const Vec3q&)>& along) {
+    if (md.state == MeasuredDepth::Separated) {
+        g.exact_verdict = Verdict::Separated;
+        g.right = false;
+        return;
+    }
+    g.exact_squared = md.state == MeasuredDepth::Touching ? Q(0) : md.depth->squared;
+    g.exact_direction = md.normal;
+    g.value_right = tol.close_sq(c.value, *g.exact_squared);
+    g.right = *g.value_right;
+    if (c.direction) {
+        g.along = along(*c.direction);
+        g.direction_right = tol.within_above(g.along, *g.exact_squared);
+        g.right = g.right && *g.direction_right;
+    }
+}
+}  // namespace
+
 struct ConvexRules::Impl {
     Impl(const ClaimModels& m, const Tolerance& tolerance) : models(m), tol(tolerance) {}
     const ClaimModels& models;
@@ -195,7 +219,30 @@ struct ConvexRules::Impl {
     Curve whole() const { return {&models.model(), &models.curve(), Q(0), std::nullopt}; }
     // The point set for the measures: the cloud's trees on a walked scene (exact for every
     // normal), else the exact polyhedra's vertices.
-    const PointSets& points() const { return models.points(); }
+    const PointSets& points() const { return posed ? *posed : models.points(); }
+    // A claim at poses (CLAIMS.md, "Poses") is judged by the same rules from support queries on
+    // the moved points (PosedPoints: no model is built for the pose), each proof a support proof
+    // that the checker verifies on the moved vertices: a verdict's is its depth's. The proved
+    // distances' rounds are unbounded there (each adds a point: they always close).
+    const PosedPoints* posed = nullptr;
+    static constexpr int kAll = std::numeric_limits<int>::max();
+    // Is x in P_i(ρ)? With its proof when asked.
+    bool member(int i, const Q& rho, const Vec3q& x, Json* proof) const {
+        if (!posed) return models.member(i, rho, x, proof);
+        const std::optional<bool> in = membership_by_points(*posed, i, rho, x, proof, kAll);
+        if (!in) throw std::logic_error("certify-fp: a posed membership did not close");
+        return *in;
+    }
+    // The exact verdict; at poses, the depth's.
+    Verdict exact_verdict(const Q& r1, const Q& r2) {
+        if (!posed) return models.verdict(r1, r2);
+        return verdict_of(depth_of(r1, r2));
+    }
+    static Verdict verdict_of(const MeasuredDepth& md) {
+        return md.state == MeasuredDepth::Separated  ? Verdict::Separated
+               : md.state == MeasuredDepth::Touching ? Verdict::Touching
+                                                     : Verdict::Overlapping;
+    }
 
     // Whether x is in P1(ρ1) and y in P2(ρ2) (or, at an absolute tolerance, within it of them),
     // with their proofs in *proof when given. `known`: the exact closest points, with their
@@ -214,12 +261,12 @@ struct ConvexRules::Impl {
                     // u·p1, min over P2 is u·p2) it is outside at once; else it is placed exactly.
                     const Vec3q u = diff(known->p2, known->p1);
                     const Q along = i == 0 ? Q(dot3(u, v) - dot3(u, known->p1)) : Q(dot3(u, known->p2) - dot3(u, v));
-                    near = sgn(known->squared) > 0 && sgn(along) > 0 ? true : !models.member(i, r, v, nullptr);
+                    near = sgn(known->squared) > 0 && sgn(along) > 0 ? true : !member(i, r, v, nullptr);
                     if (pj) *pj = Json{{"near", weights_json(w)}};
                     return true;
                 }
             }
-            if (models.member(i, r, v, pj)) return true;
+            if (member(i, r, v, pj)) return true;
             near = sgn(tol.abs) > 0 && near_proof(points(), i, r, v, tol.abs, pj);
             return near;
         };
@@ -256,6 +303,11 @@ struct ConvexRules::Impl {
     // The exact distance, proved from the points' supports; CGAL's QP over every hull vertex when
     // the proof does not close (counted).
     ExactDistance exact_distance_of(const Q& r1, const Q& r2) {
+        if (posed) {
+            const std::optional<ProvedDistance> pd = proved_distance(*posed, r1, r2, kAll);
+            if (!pd) throw std::logic_error("certify-fp: a posed distance did not close");
+            return pd->d;
+        }
         if (std::optional<ProvedDistance> pd = proved_distance(points(), r1, r2)) return pd->d;
         ++distance_fallbacks;
         return exact_distance(hulls(), r1, r2);
@@ -263,6 +315,11 @@ struct ConvexRules::Impl {
     // The depth with what proves it (measured_depth); when the distance's proof does not close,
     // from CGAL's exact distance and the EPA on the hull's vertices (counted).
     MeasuredDepth depth_of(const Q& r1, const Q& r2) {
+        if (posed) {
+            const std::optional<MeasuredDepth> md = measured_depth(*posed, r1, r2, kAll);
+            if (!md) throw std::logic_error("certify-fp: a posed depth did not close");
+            return *md;
+        }
         if (std::optional<MeasuredDepth> d = measured_depth(points(), r1, r2)) return *d;
         ++depth_fallbacks;
         return depth_from_distance(HullPoints(hulls()), exact_distance(hulls(), r1, r2), r1, r2);
@@ -286,6 +343,13 @@ struct ConvexRules::Impl {
     }
 
     void verdict(const TypedClaim& c, Judged& g, Proof* proof) {
+        if (posed) {
+            const MeasuredDepth md = depth_of(c.rho1, c.rho2);
+            g.exact_verdict = verdict_of(md);
+            g.right = verdict_matches(c.verdict, *g.exact_verdict);
+            if (proof) proof->proof = Json{{"depth", depth_proof(nullptr, md, c.rho1, c.rho2)}};
+            return;
+        }
         const Verdict e = models.verdict(c.rho1, c.rho2);
         g.right = verdict_matches(c.verdict, e);
         g.exact_verdict = e;
@@ -474,7 +538,7 @@ struct ConvexRules::Impl {
     void witness(const TypedClaim& c, Judged& g, Proof* proof) {
         Json mp;
         members(c.rho1, c.rho2, c.point, c.point, g, proof ? &mp : nullptr);
-        g.exact_verdict = models.verdict(c.rho1, c.rho2);
+        g.exact_verdict = exact_verdict(c.rho1, c.rho2);
         g.right = g.in1 && g.in2;
         if (proof) proof->proof = std::move(mp);
     }
@@ -499,119 +563,12 @@ struct ConvexRules::Impl {
         }
     }
 
-    // A claim at poses (CLAIMS.md, "Poses"): judged by the same rules from support queries on the
-    // posed points (PosedPoints: no model is built for the pose), each proof a support proof the
-    // checker verifies on the posed vertices. A verdict's proof is its depth's: separated by a
-    // normal, touching (a supporting plane through the origin and a common point), or overlapping
-    // (depth > 0). The proved distance's rounds are unbounded: it always closes.
-    void posed(const TypedClaim& c, Judged& g, Proof* proof) {
-        const PosedPoints S(points(), c.pose);
-        constexpr int kAll = std::numeric_limits<int>::max();
-        auto depth_at = [&] {
-            const std::optional<MeasuredDepth> md = measured_depth(S, c.rho1, c.rho2, kAll);
-            if (!md) throw std::logic_error("certify-fp: a posed depth did not close");
-            return *md;
-        };
-        auto verdict_of = [](const MeasuredDepth& md) {
-            return md.state == MeasuredDepth::Separated  ? Verdict::Separated
-                   : md.state == MeasuredDepth::Touching ? Verdict::Touching
-                                                         : Verdict::Overlapping;
-        };
-        // x in body i at ρ, or within the absolute tolerance of it, with its proof.
-        auto member = [&](int i, const Q& rho, const Vec3q& x, Json* pj, bool& near) {
-            near = false;
-            const std::optional<bool> in = membership_by_points(S, i, rho, x, pj, kAll);
-            if (!in) throw std::logic_error("certify-fp: a posed membership did not close");
-            if (*in) return true;
-            near = sgn(tol.abs) > 0 && near_proof(S, i, rho, x, tol.abs, pj);
-            return near;
-        };
-        switch (c.type) {
-        case ClaimType::Verdict: {
-            const MeasuredDepth md = depth_at();
-            g.exact_verdict = verdict_of(md);
-            g.right = verdict_matches(c.verdict, *g.exact_verdict);
-            if (proof) proof->proof = Json{{"depth", depth_proof(nullptr, md, c.rho1, c.rho2)}};
-            break;
-        }
-        case ClaimType::Plane:
-            std::tie(g.c1, g.c2) = plane_extents(S, c.normal, c.rho1, c.rho2);
-            g.right = plane_right(tol, g.c1, g.c2, c.normal, c.offset);
-            if (proof) proof->proof = Json::object();
-            break;
-        case ClaimType::Witness: {
-            Json p1, p2;
-            g.in1 = member(0, c.rho1, c.point, proof ? &p1 : nullptr, g.near1);
-            g.in2 = member(1, c.rho2, c.point, proof ? &p2 : nullptr, g.near2);
-            g.exact_verdict = verdict_of(depth_at());
-            g.right = g.in1 && g.in2;
-            if (proof) proof->proof = Json{{"P1", std::move(p1)}, {"P2", std::move(p2)}};
-            break;
-        }
-        case ClaimType::Distance: {
-            const std::optional<ProvedDistance> pd = proved_distance(S, c.rho1, c.rho2, kAll);
-            if (!pd) throw std::logic_error("certify-fp: a posed distance did not close");
-            const ExactDistance& e = pd->d;
-            g.exact_squared = e.squared;
-            g.exact_p1 = e.p1;
-            g.exact_p2 = e.p2;
-            g.value_right = tol.close_sq(c.value, e.squared);
-            g.right = *g.value_right;
-            if (proof) proof->proof = distance_proof(nullptr, e, c.rho1, c.rho2);
-            if (c.closest) {
-                const auto& [p, q] = *c.closest;
-                const Vec3q pq = diff(q, p);
-                g.closest_squared = dot3(pq, pq);
-                Json p1, p2;
-                g.in1 = member(0, c.rho1, p, proof ? &p1 : nullptr, g.near1);
-                g.in2 = member(1, c.rho2, q, proof ? &p2 : nullptr, g.near2);
-                g.closest_right = g.in1 && g.in2 && tol.within_above(g.closest_squared, e.squared, 2);
-                g.right = g.right && *g.closest_right;
-                if (proof) proof->proof["closest"] = Json{{"P1", std::move(p1)}, {"P2", std::move(p2)}};
-            }
-            break;
-        }
-        case ClaimType::Depth: {
-            const MeasuredDepth md = depth_at();
-            if (proof) proof->proof = depth_proof(nullptr, md, c.rho1, c.rho2);
-            if (md.state == MeasuredDepth::Separated) {
-                g.exact_verdict = Verdict::Separated;
-                break;
-            }
-            g.exact_squared = md.state == MeasuredDepth::Touching ? Q(0) : md.depth->squared;
-            g.exact_direction = md.normal;
-            g.value_right = tol.close_sq(c.value, *g.exact_squared);
-            g.right = *g.value_right;
-            if (c.direction) {
-                g.along = directional_depth_squared(S, *c.direction, c.rho1, c.rho2);
-                g.direction_right = tol.within_above(g.along, *g.exact_squared);
-                g.right = g.right && *g.direction_right;
-            }
-            break;
-        }
-        default: throw std::logic_error("certify-fp: a pose on a claim of the curve");
-        }
-    }
-
     void depth(const TypedClaim& c, Judged& g, Proof* proof) {
         // The exact squared depth (none when separated) and a minimising direction, with its proof.
         const MeasuredDepth md = depth_of(c.rho1, c.rho2);
         if (proof) proof->proof = depth_proof(nullptr, md, c.rho1, c.rho2);
-        if (md.state == MeasuredDepth::Separated) {
-            g.exact_verdict = Verdict::Separated;
-            g.right = false;
-            return;
-        }
-        g.exact_squared = md.state == MeasuredDepth::Touching ? Q(0) : md.depth->squared;
-        g.exact_direction = md.normal;
-        g.value_right = tol.close_sq(c.value, *g.exact_squared);
-        g.right = *g.value_right;
-        if (c.direction) {
-            // Moving P2 by the depth along n separates them exactly iff n attains the minimum.
-            g.along = directional_depth_squared(points(), *c.direction, c.rho1, c.rho2);
-            g.direction_right = tol.within_above(g.along, *g.exact_squared);
-            g.right = g.right && *g.direction_right;
-        }
+        depth_rule(c, md, tol, g,
+                   [&](const Vec3q& n) { return directional_depth_squared(points(), n, c.rho1, c.rho2); });
     }
 };
 
@@ -633,10 +590,18 @@ Judged ConvexRules::judge(const TypedClaim& c, Proof* proof) {
     Judged g;
     if (proof) proof->claim = exact_claim_json(c);
     if (no_answer(c, proof)) return g;
+    std::optional<PosedPoints> at;  // the points moved by the claim's poses, for its judgement
     if (c.posed()) {
-        impl_->posed(c, g, proof);
-        return g;
+        if (c.type != ClaimType::Verdict && c.type != ClaimType::Plane && c.type != ClaimType::Witness &&
+            c.type != ClaimType::Distance && c.type != ClaimType::Depth)
+            throw std::logic_error("certify-fp: a pose on a claim of the curve");
+        at.emplace(impl_->models.points(), c.pose);
     }
+    impl_->posed = at ? &*at : nullptr;
+    struct Reset {
+        const PosedPoints*& p;
+        ~Reset() { p = nullptr; }
+    } reset{impl_->posed};
     switch (c.type) {
     case ClaimType::Verdict: impl_->verdict(c, g, proof); break;
     case ClaimType::Growth: impl_->growth(c, g, proof); break;
@@ -777,19 +742,8 @@ Judged PartsRules::judge(const TypedClaim& c, Proof* proof) {
         g.part1 = a;
         g.part2 = b;
         const MeasuredDepth md = judge_.pair_depth(a, b, c.rho1, c.rho2, p);
-        if (md.state == MeasuredDepth::Separated) {
-            g.exact_verdict = Verdict::Separated;
-            break;
-        }
-        g.exact_squared = md.state == MeasuredDepth::Touching ? Q(0) : md.depth->squared;
-        g.exact_direction = md.normal;
-        g.value_right = tol_.close_sq(c.value, *g.exact_squared);
-        g.right = *g.value_right;
-        if (c.direction) {
-            g.along = judge_.pair_directional_depth(a, b, *c.direction, c.rho1, c.rho2);
-            g.direction_right = tol_.within_above(g.along, *g.exact_squared);
-            g.right = g.right && *g.direction_right;
-        }
+        depth_rule(c, md, tol_, g,
+                   [&](const Vec3q& n) { return judge_.pair_directional_depth(a, b, n, c.rho1, c.rho2); });
         break;
     }
     default: break;
