@@ -491,6 +491,7 @@ void claim_costs(const ExactScene& h1000, bool quick) {
     fp::FpScene f = fp::to_fp(h1000);
     auto gjk = fp::make_libccd_gjk(f);
     auto fcl = fp::make_fcl(m, f, false);
+    auto bullet = fp::make_bullet(f);
     std::mt19937_64 g(7);
     std::uniform_real_distribution<double> u(0.5, 2);
     std::vector<double> a(1000), b(1000);
@@ -547,6 +548,14 @@ void claim_costs(const ExactScene& h1000, bool quick) {
             certify_fp(m, c, claims, "bench", ClaimOptions{Numbers::Double, Q(0), true}, &wrong);
         },
         1, 1);
+    // Bullet's GJK distance on the same pairs (btConvexHullShape, margin 0): the fastest distance.
+    const double t_bullet = per_call(
+        [&](long) {
+            for (int i = 0; i < 1000; ++i)
+                if (i % 4 >= 2 && sep[i])
+                    if (auto me = bullet->measure(a[i], b[i], true)) sink = sink + me->value;
+        },
+        1, quick ? 1 : 3);
     double t_ours[3] = {0, 0, 0};  // ours by output too: below, through the typed API
     std::string cert;
     const double t_cert = per_call(
@@ -629,6 +638,8 @@ void claim_costs(const ExactScene& h1000, bool quick) {
         std::snprintf(r, sizeof r, "%.3gx %s (%.3g s)", t_ours[k] / t_kind[k], libs[k], t_kind[k]);
         add(what, t_ours[k], r);
     }
+    std::snprintf(what, sizeof what, "  the %ld distances by Bullet's GJK (btConvexHullShape, margin 0)", nk[1]);
+    add(what, t_bullet, ratio("ours %.3gx Bullet's (target <= 2x)", t_ours[1] / t_bullet));
 }
 
 // One distance and one depth claim on two near-spheres of 10^6 points each, after the scene is
