@@ -195,6 +195,7 @@ std::vector<AuditRow> audit_convex(const std::string& name, const ExactScene& s,
             if (v > 0 && exact[i] != Verdict::Separated) ++r.false_separated;
             if (v < 0 && exact[i] == Verdict::Separated) ++r.false_overlapping;
         }
+        for (size_t i = 0; i < r1.size(); ++i) r.note(r1[i], r2[i], verdicts[i], static_cast<int>(exact[i]));
         r.seconds_per_query = std::chrono::duration<double>(Clock::now() - t0).count() / static_cast<double>(r1.size());
         if (measures) measure_errors(*mm, m, r1, r2, exact, verdicts, cache, r);
         if (by_distance) wrong_by_distance(*mm, near, r);

@@ -174,6 +174,7 @@ std::vector<int> score_compound(const fp::Method& m, const std::vector<CompoundS
         ++row.queries;
         if (v > 0 && c.exact != 0) ++row.false_separated;
         if (v < 0 && c.exact == 0) ++row.false_overlapping;
+        row.note(c.r1, c.r2, v, c.exact);
         if (c.k == 0) {
             ++on.points;
             if (c.exact == 1) {

@@ -116,6 +116,16 @@ Json audit_json(const std::vector<AuditRow>& rows, bool timing) {
                                         {"said_overlapping", ob->said_overlapping},
                                         {"moved", ob->moved},
                                         {"moved_wrong", ob->moved_wrong}};
+            if (!r.failures.empty()) {
+                static const char* const exact_name[3] = {"separated", "touching", "overlapping"};
+                Json fs = Json::array();
+                for (const AuditRow::Failure& f : r.failures)
+                    fs.push_back(Json{{"rho1", f.rho1},
+                                      {"rho2", f.rho2},
+                                      {"said", f.said > 0 ? "separated" : "intersecting"},
+                                      {"exact", exact_name[f.exact]}});
+                o["failures"] = fs;  // the first AuditRow::kMaxFailures wrong verdicts
+            }
             if (r.depths) {
                 o["depths"] = r.depths;
                 o["depth_err_median"] = r.depth_err_median;

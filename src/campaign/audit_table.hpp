@@ -44,6 +44,22 @@ struct AuditRow {
              moved_wrong = 0;
     };
     std::optional<OnBoundary> on_boundary;
+    // Where the method's verdicts were wrong (the counts above), the first kMaxFailures of them in
+    // the audit's order: (ρ1, ρ2) as the doubles it was asked at, what it said (+1 separated, −1
+    // intersecting) and the exact verdict at those doubles (0 separated, 1 touching, 2
+    // overlapping). `audit --failures DIR` writes them as claims files that certify-fp replays.
+    struct Failure {
+        double rho1, rho2;
+        int said, exact;
+    };
+    std::vector<Failure> failures;
+    static constexpr size_t kMaxFailures = 50;
+    // A verdict v (the methods' classify) at (r1, r2) where the exact one is `exact`: noted when
+    // wrong (said separated where they meet, or intersecting where they are apart).
+    void note(double r1, double r2, int v, int exact) {
+        const bool wrong = (v > 0 && exact != 0) || (v < 0 && exact == 0);
+        if (wrong && failures.size() < kMaxFailures) failures.push_back({r1, r2, v > 0 ? 1 : -1, exact});
+    }
 };
 
 // Without timing, the timing columns are left empty (CSV) and out (JSON): the rest is the same

@@ -9,6 +9,7 @@
 #include "io/files.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <cstdio>
@@ -179,7 +180,13 @@ Json row_json(const AuditRow& r) {
          r.on_boundary ? Json::array({r.on_boundary->points, r.on_boundary->touching, r.on_boundary->said_separated,
                                       r.on_boundary->said_touching, r.on_boundary->said_overlapping,
                                       r.on_boundary->moved, r.on_boundary->moved_wrong})
-                       : Json()}};
+                       : Json()},
+        {"failures", [&] {
+             Json a = Json::array();
+             for (const AuditRow::Failure& f : r.failures)
+                 a.push_back(Json::array({num_json(f.rho1), num_json(f.rho2), f.said, f.exact}));
+             return a;
+         }()}};
 }
 
 AuditRow row_of(const Json& j) {
@@ -216,6 +223,9 @@ AuditRow row_of(const Json& j) {
             AuditRow::OnBoundary{o.at(0).get<long>(), o.at(1).get<long>(), o.at(2).get<long>(), o.at(3).get<long>(),
                                  o.at(4).get<long>(), o.at(5).get<long>(), o.at(6).get<long>()};
     }
+    if (j.contains("failures"))
+        for (const Json& f : j.at("failures"))
+            r.failures.push_back({num_of(f.at(0)), num_of(f.at(1)), f.at(2).get<int>(), f.at(3).get<int>()});
     return r;
 }
 
@@ -285,6 +295,16 @@ std::vector<std::pair<std::string, std::string>> golden_scene(const std::string&
     });
 }
 
+namespace {
+// Where --failures keeps a family scene with wrong verdicts: NAME.eps-P_Q.scene.json (ε = P/Q:
+// a sweep audits scene NAME at several ε, each a different scene).
+std::string family_scene_file(const std::string& dir, const std::string& name, const Q& eps) {
+    std::string e = to_exact_string(eps);
+    std::replace(e.begin(), e.end(), '/', '_');
+    return dir + "/" + name + ".eps-" + e + ".scene.json";
+}
+}  // namespace
+
 std::string run_shard(const CampaignArgs& a, const Shard& s) {
     Json j;
     j["shard"] = s.index;
@@ -331,8 +351,13 @@ std::string run_shard(const CampaignArgs& a, const Shard& s) {
         const Q eps(1, Z(1) << s.k);
         for (int i = s.first; i < s.last; ++i) {
             Rng g(scene_seed(a.seed, s.k, i));
-            auto r = a.auditor.run(a.family + "-" + std::to_string(i), make_family_scene(a.family, eps, g), eps,
-                                   a.methods, a.grid, a.by_distance, a.measures);
+            const std::string name = a.family + "-" + std::to_string(i);
+            const ExactScene sc = make_family_scene(a.family, eps, g);
+            auto r = a.auditor.run(name, sc, eps, a.methods, a.grid, a.by_distance, a.measures);
+            // A family scene has no file: with --failures, the reproducers get one.
+            if (!a.failures.empty() &&
+                std::any_of(r.begin(), r.end(), [](const AuditRow& x) { return !x.failures.empty(); }))
+                write_file_atomically(family_scene_file(a.failures, name, eps), dump(scene_file_json(sc)));
             rows.insert(rows.end(), r.begin(), r.end());
         }
     }
@@ -355,6 +380,44 @@ bool shard_outputs_intact(const CampaignArgs& a, const std::string& shard_text) 
     }
 }
 
+void write_failures(const CampaignArgs& a, const std::vector<AuditRow>& rows) {
+    // Each row's scene: its file (an audit of SCENES names rows by the path), or the family
+    // scene's copy run_shard wrote beside the claims.
+    std::set<std::string> files(a.scenes.begin(), a.scenes.end()), used;
+    Json index = Json::array();
+    for (const AuditRow& r : rows) {
+        if (r.failures.empty()) continue;
+        const bool file = files.count(r.scene) > 0;
+        const std::string scene = file ? r.scene : family_scene_file(a.failures, r.scene, r.eps);
+        // NAME.METHOD.claims.json, NAME the scene file's stem; a second scene of that stem gets -2, ...
+        std::string method;
+        for (char ch : r.method) method += std::isalnum(static_cast<unsigned char>(ch)) || ch == '-' ? ch : '_';
+        std::string stem = std::filesystem::path(scene).filename().string();  // NAME.json, NAME.eps-P_Q.scene.json
+        stem.resize(stem.size() - (file ? std::filesystem::path(scene).extension().string().size() : 11));
+        std::string name = stem + "." + method + ".claims.json";
+        for (int k = 2; !used.insert(name).second; ++k)
+            name = stem + "-" + std::to_string(k) + "." + method + ".claims.json";
+        Json claims = Json::array();
+        for (const AuditRow::Failure& f : r.failures)
+            claims.push_back(Json{{"kind", "verdict"},
+                                  {"rho1", f.rho1},
+                                  {"rho2", f.rho2},
+                                  {"verdict", f.said > 0 ? "separated" : "intersecting"}});
+        write_file_atomically(a.failures + "/" + name,
+                              dump(Json{{"format", "scalecert-claims-1"}, {"claims", std::move(claims)}}));
+        const std::string numbers =
+            a.opt.numbers == Numbers::Double ? "" : std::string(" --numbers ") + numbers_name(a.opt.numbers);
+        index.push_back(Json{{"scene", scene},
+                             {"method", r.method},
+                             {"claims", a.failures + "/" + name},
+                             {"listed", r.failures.size()},
+                             {"wrong", r.false_separated + r.false_overlapping},
+                             {"replay", "scalecert certify-fp " + scene + " " + a.failures + "/" + name + numbers}});
+    }
+    write_file_atomically(a.failures + "/index.json",
+                          dump(Json{{"format", "scalecert-audit-failures-1"}, {"reproducers", std::move(index)}}));
+}
+
 long finish_campaign(const CampaignArgs& a, const std::vector<std::string>& shard_texts) {
     if (a.golden) return static_cast<long>(a.scenes.size()) + (a.family.empty() ? 0 : a.count);
     std::vector<AuditRow> rows;
@@ -362,6 +425,7 @@ long finish_campaign(const CampaignArgs& a, const std::vector<std::string>& shar
         const Json doc = Json::parse(t);  // (kept: a range over a temporary's member dangles)
         for (const Json& r : doc.at("rows")) rows.push_back(row_of(r));
     }
+    if (!a.failures.empty()) write_failures(a, rows);
     const std::string json = dump(audit_json(rows, !a.no_timing));
     const std::string csv = audit_csv(rows, !a.no_timing);
     if (a.out.empty()) {

@@ -42,10 +42,19 @@ struct CampaignArgs {
     bool no_timing = false;            // audit: leave the timing columns out
     bool by_distance = false;          // audit: wrong verdicts by relative distance from the curve
     bool measures = true;              // audit: the methods' distances and depths against the exact ones
+    // audit: a directory for the reproducers (write_failures): a claims file per scene and method
+    // with wrong verdicts, the family scenes they happened on, and index.json.
+    std::string failures;
     ReadOptions opt;
     Auditor auditor;     // audit: the methods (none without the baselines)
     int shard_size = 0;  // family scenes per shard; 0: 16 for golden, 4 for audits
 };
+
+// audit --failures DIR: for each row with wrong verdicts, DIR/NAME.METHOD.claims.json (verdict
+// claims of what the method said at each listed failure, its doubles as JSON numbers, which
+// certify-fp reads back as those doubles) and DIR/index.json: each file's scene (the scene file,
+// or DIR/NAME.eps-P_Q.scene.json for a family scene), method, counts and replay command.
+void write_failures(const CampaignArgs& a, const std::vector<AuditRow>& rows);
 
 // Refuses bad arguments (one line, before any work or any file is made): unknown family or
 // method, --sweep-to < --sweep, --eps <= 0, no scenes at all. Notes the scenes as inputs

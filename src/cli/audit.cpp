@@ -16,6 +16,7 @@ Command add_audit(CLI::App& app) {
     example(sub,
             "Example:\n  scalecert audit certificates/scenes/*.json --grid 64 --out audit.json --csv audit.csv\n"
             "  scalecert audit --family nearly-equal-slopes --sweep 4 --sweep-to 40 --count 2 --out sweep.json\n"
+            "  scalecert audit certificates/scenes/stacked_cubes.json --by-distance --failures repro --out a.json\n"
             "(On a cluster: mpirun scalecert-mpi audit, with the same options and a run folder.)");
     return {sub, [a] {
                 validate(*a);  // refused before any work
@@ -23,6 +24,7 @@ Command add_audit(CLI::App& app) {
                 // convex object), as every command says it; standard input is read once, by the run.
                 for (const std::string& p : a->scenes)
                     if (p != "-") say_notes(load_scene(p, a->opt));
+                if (!a->failures.empty()) make_output_dir(a->failures);
                 const long rows = run_campaign(*a);
                 std::cerr << "scalecert: audit: " << rows << (rows == 1 ? " row\n" : " rows\n");
                 return 0;

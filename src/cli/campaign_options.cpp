@@ -89,6 +89,12 @@ void add_audit_options(CLI::App* sub, internal::CampaignArgs& a) {
     sub->add_option("--out", a.out, "write the JSON to FILE (atomically) instead of standard output")
         ->type_name("FILE")
         ->check(file_name());
+    sub->add_option("--failures", a.failures,
+                    "write reproducers into DIR (created): for each scene and method with wrong verdicts, a claims "
+                    "file of them (the first 50) that scalecert certify-fp replays, exit 1 while the method is "
+                    "wrong; a family scene's file beside it; DIR/index.json lists each with its command")
+        ->type_name("DIR")
+        ->check(file_name());
     sub->add_option("--csv", a.csv, "also write the rows as CSV to FILE (both files written together)")
         ->type_name("FILE")
         ->check(file_name());

@@ -243,6 +243,7 @@ int main(int argc, char** argv) {
             inputs = campaign_inputs(a);
             const std::string identity = campaign_identity(a, inputs);
             if (a.golden) make_output_dir(a.dir);
+            if (!a.golden && !a.failures.empty()) make_output_dir(a.failures);
             std::map<int, std::string> done;
             if (resume) {
                 done = read_manifest(run, identity);
