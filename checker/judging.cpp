@@ -208,6 +208,10 @@ void check_no_answer(Context& cx, const Judgement& j) {
         cx.claim(known.count(key) == 1, j.wc + "." + key + " is a field of a " + j.kind + " claim");
     for (const char* r : {"rho1", "rho2"})
         if (known.count(r) && f != r) positive(cx, j.claim, r, j.wc);
+    if (j.claim.contains("pose1") || j.claim.contains("pose2")) {
+        J bare;
+        claim_poses(cx, j.claim, j.wc, bare);  // poses as a judged claim's: exact, R nonsingular
+    }
     cx.claim(j.claim.contains(f), j.wc + " has the field " + f);
     const J& v = j.claim[f];
     if (v.is_null()) return;

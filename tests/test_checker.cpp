@@ -1706,6 +1706,17 @@ BOOST_AUTO_TEST_CASE(judgements_at_poses_are_valid_and_tampering_is_rejected) {
     for (size_t k = 0; k < right.size(); ++k) BOOST_TEST(j["judgements"][k]["right"] == right[k], k);
     BOOST_TEST(check_file(cert) == 0);
     mutate_and_report(j, "judgements at poses", false, true);
+    // A claim with no answer is still a claim of its kind: its pose too (exact, R nonsingular).
+    for (const char* pose : {R"(["0","-1","0","2"])", R"("garbage")", "[[0,0,0,0],[0,0,0,0],[0,0,0,0]]",
+                             R"([["0","-1","0","2"],["1","0","0","0"],["0","0","1","0"]])"}) {
+        OJ f = j;
+        f["judgements"][1]["claim"]["value"] = nullptr;
+        f["judgements"][1]["claim"]["pose2"] = OJ::parse(pose);
+        f["judgements"][1]["proof"] = OJ::parse(R"({"no_answer": "value"})");
+        f["judgements"][1]["right"] = false;
+        // (the last, the claim's own pose as exact strings, is valid: the control)
+        BOOST_TEST(check_json(f) == (std::string(pose).rfind("[[\"", 0) == 0 ? 0 : 1), pose);
+    }
 }
 
 BOOST_AUTO_TEST_CASE(a_compound_fence_of_many_normals_over_huge_corners_meets_the_work_limit) {

@@ -1918,6 +1918,34 @@ BOOST_AUTO_TEST_CASE(objects_at_poses) {
     // 1/10^4000 at x = 2 is (2·10^8000 + 3)/(3·10^4000), a numerator of 26,577 bits > 16,384. Refused
     // before any work, as a number of that size written in the scene would be.
     const std::string big = "1" + std::string(4000, '0');
+    // A claim's pose whose moved points pass a polyhedron's common-denominator limit: its twelve
+    // entries 1/d_k (R's diagonal 1 + 1/d_k), d_k = 2^2000 + 2k + 1, have a common denominator of
+    // about 12 · 2000 bits > 16,384. Refused in one line, on convex objects and on parts, with no
+    // certificate written (the checker would refuse it as unreadable).
+    {
+        std::string pose = "[";
+        for (int r = 0, k = 0; r < 3; ++r) {
+            pose += std::string(r ? "," : "") + "[";
+            for (int c = 0; c < 4; ++c, ++k) {
+                const mpz_class d = (mpz_class(1) << 2000) + 2 * k + 1;
+                const mpq_class e = (r == c ? mpq_class(1) : mpq_class(0)) + mpq_class(1) / mpq_class(d);
+                pose += std::string(c ? "," : "") + "\"" + e.get_str() + "\"";
+            }
+            pose += "]";
+        }
+        pose += "]";
+        const std::string claims =
+            write("lcm_pose.json", R"({"format": "scalecert-claims-1", "claims": [{"kind": "verdict", "rho1": 1, )"
+                                   R"("rho2": 1, "verdict": "separated", "pose2": )" +
+                                       pose + "}]}")
+                .string();
+        const std::string cubes = std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/stacked_cubes.json",
+                          upeg = std::string(SCALECERT_SOURCE_DIR) + "/tests/data/compound_u_peg.json";
+        expect_error("claim pose past the denominator limit", "certify-fp " + cubes + " " + claims,
+                     "claims[0].pose2: the moved points of P2 would have a common denominator past 16384 bits");
+        expect_error("claim pose past the denominator limit, parts", "certify-fp " + upeg + " " + claims,
+                     "claims[0].poses: P2: the common denominator");
+    }
     expect_error("pose past the number limit",
                  "query " +
                      write("bigpose.json", "{\"P1\": " + box + ", \"P2\": {" + tall + ", \"pose\": [[\"" + big +

@@ -855,7 +855,12 @@ Run run_claims(Rules& rules, const std::string& claims, const std::string& name,
             Json o;
             o["index"] = i;
             o["kind"] = type_name(c.type);
-            one(c, i, o, [&](const Judged& g, std::string& line) { describe(c, g, parts, o, line); });
+            try {
+                one(c, i, o, [&](const Judged& g, std::string& line) { describe(c, g, parts, o, line); });
+            } catch (const InputError& e) {  // a limit met while judging it (a pose's moved points)
+                if (!c.posed()) throw;
+                throw InputError(name + ": claims[" + std::to_string(i) + "]." + e.what());
+            }
         }
         return r;
     }

@@ -637,7 +637,7 @@ CompoundJudge& PartsRules::posed(const std::array<std::optional<Pose>, 2>& pose)
                 sc.P[i].seed_given = true;  // the seed moves with the object
                 apply_pose(*pose[i], sc.P[i], std::string("claim pose") + (i ? "2" : "1"));
             }
-        j = std::make_unique<CompoundJudge>(sc, "claim at poses");
+        j = std::make_unique<CompoundJudge>(sc, "poses");
     }
     return *j;
 }

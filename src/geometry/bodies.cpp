@@ -1,5 +1,6 @@
 #include "geometry/bodies.hpp"
 #include "geometry/point_sets.hpp"
+#include "numeric/limits.hpp"
 
 namespace scalecert::internal {
 
@@ -28,6 +29,14 @@ PosedPoints::PosedPoints(const PointSets& base, const std::array<std::optional<P
         for (const auto& row : m)
             for (const Q& x : row) mpz_lcm(L.get_mpz_t(), L.get_mpz_t(), x.get_den_mpz_t());
         scale_[i] *= L;
+        // The moved points are numbers the engine and the checker read like any other: past the
+        // limit of a polyhedron's common denominator the claim is refused, before any work (a
+        // bound: the moved points' own common denominator divides it).
+        if (mpz_sizeinbase(scale_[i].get_mpz_t(), 2) > kMaxDenominatorBits)
+            throw InputError(std::string("pose") + (i ? "2" : "1") + ": the moved points of P" + (i ? "2" : "1") +
+                             " would have a common denominator past " + std::to_string(kMaxDenominatorBits) +
+                             " bits (the limit of a polyhedron's; README \"Limits\"): the pose's denominators "
+                             "times the object's");
         Vec3q s;
         for (size_t r = 0; r < 3; ++r) {
             s[r] = m[r][0] * seed_[i][0] + m[r][1] * seed_[i][1] + m[r][2] * seed_[i][2] + m[r][3];

@@ -546,7 +546,13 @@ Judgements judge_all(Rules& rules, const std::vector<Claim>& claims, const Claim
     Json entries = Json::array();
     for (size_t i = 0; i < typed.size(); ++i) {
         internal::Proof p;
-        const internal::Judged g = rules.judge(typed[i], options.certificate ? &p : nullptr);
+        internal::Judged g;
+        try {
+            g = rules.judge(typed[i], options.certificate ? &p : nullptr);
+        } catch (const InputError& e) {  // a limit met while judging it (a pose's moved points)
+            if (!typed[i].posed()) throw;
+            throw InputError("certify: claims[" + std::to_string(i) + "]." + e.what());
+        }
         out.wrong += !g.right;
         out.items.push_back(public_judgement(typed[i], g));
         if (options.certificate)
