@@ -258,6 +258,19 @@ mpz_class whole_arg(const py::handle& h, const char* what, const mpz_class& lo, 
 int count_arg(const py::handle& h, const char* what, long lo, long hi) {
     return static_cast<int>(whole_arg(h, what, lo, hi, std::to_string(lo) + " to " + std::to_string(hi)).get_si());
 }
+// Scene.golden's and golden's verticals= and offsets= (None: the default offsets); their ranges
+// are the engine's to check.
+scalecert::GoldenOptions golden_options(const py::handle& verticals, const py::handle& offsets) {
+    scalecert::GoldenOptions o;
+    o.verticals = count_arg(verticals, "verticals", 0, 1000);
+    if (!offsets.is_none()) {
+        if (!py::isinstance<py::sequence>(offsets) || py::isinstance<py::str>(offsets))
+            throw scalecert::InputError("offsets: expected a list of K (pairs 2^-K away), e.g. [4, 12, 52]");
+        o.offsets.clear();
+        for (const py::handle& k : offsets) o.offsets.push_back(count_arg(k, "offsets[k]", 1, 1074));
+    }
+    return o;
+}
 unsigned long long seed_arg(const py::handle& h, const char* what) {
     static const mpz_class top = (mpz_class(1) << 64) - 1;
     const mpz_class z = whole_arg(h, what, 0, top, "0 to 2^64 - 1");
@@ -926,22 +939,28 @@ PYBIND11_MODULE(scalecert, m) {
             "fractions=True exact_squared (Fractions); with certificate=True the judgements certificate's text")
         .def(
             "golden",
-            [](const PyScene& s) {
-                scalecert::GoldenData g = s.a().golden();
-                return py::make_tuple(json_loads(g.json), g.csv);
+            [](const PyScene& s, const py::handle& verticals, const py::handle& offsets) {
+                const scalecert::GoldenOptions o = golden_options(verticals, offsets);
+                scalecert::GoldenData g = s.a().golden(o);
+                return py::make_tuple(json_loads(g.json), g.csv, g.rational_csv);
             },
-            "the scene's golden data: (the golden JSON as a dict, the CSV text), as scalecert golden writes per scene");
+            py::arg("verticals") = 7, py::arg("offsets") = py::none(),
+            "the scene's golden data: (the golden JSON as a dict, the decimal CSV text, the rational CSV text), "
+            "as scalecert golden writes per scene; verticals and offsets (a list of K: pairs 2^-K away; default "
+            "[4, 12, 20, 30, 40, 52]) as its --verticals and --offsets");
     m.def(
         "golden",
         [](const py::handle& family, const py::handle& count, const py::handle& seed, const py::handle& eps,
-           const py::handle& dir) {
+           const py::handle& dir, const py::handle& verticals, const py::handle& offsets) {
             const std::string f = text_arg(family, "family");
             const int n = count_arg(count, "count", 1, 10000000);
             const unsigned long long sd = seed_arg(seed, "seed");
             const Rational e = rational(eps, "eps");
             if (sgn(e) <= 0) throw scalecert::InputError("eps must be > 0");
-            scalecert::write_golden(f, n, sd, e, path_arg(dir, "dir"));
+            const scalecert::GoldenOptions o = golden_options(verticals, offsets);
+            scalecert::write_golden(f, n, sd, e, path_arg(dir, "dir"), o);
         },
-        py::arg("family"), py::arg("count"), py::arg("seed"), py::arg("eps"), py::arg("dir"),
+        py::arg("family"), py::arg("count"), py::arg("seed"), py::arg("eps"), py::arg("dir"), py::arg("verticals") = 7,
+        py::arg("offsets") = py::none(),
         "writes COUNT scenes of FAMILY with exact answers into DIR, as scalecert golden does");
 }

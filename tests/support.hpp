@@ -35,6 +35,7 @@ struct Brute {
         Q ns1, max1, ns2, min2;
     };
     std::vector<Dir> dirs;
+    std::vector<Vec3z> normals;  // dirs[k]'s direction
     explicit Brute(const ExactScene& sc) {
         std::vector<Vec3q> diffs;
         for (int i = 0; i < 2; ++i) {
@@ -50,7 +51,10 @@ struct Brute {
                 if (sgn(c[0]) == 0 && sgn(c[1]) == 0 && sgn(c[2]) == 0) continue;
                 Vec3z n = primitive(c);
                 for (const Vec3z& m : {n, neg(n)})
-                    if (seen.insert(m).second) dirs.push_back(extremes(sc, to_q(m)));
+                    if (seen.insert(m).second) {
+                        dirs.push_back(extremes(sc, to_q(m)));
+                        normals.push_back(m);
+                    }
             }
     }
     static Dir extremes(const ExactScene& sc, const Vec3q& n) {

@@ -223,18 +223,25 @@ BOOST_AUTO_TEST_CASE(claims_and_golden_data_through_the_public_api) {
     BOOST_TEST(a.certify_fp(json_claims, decimals).wrong == 1);  // 0.1 + 2.9 = 3 then: touching, not separated
     BOOST_CHECK_THROW(a.certify_fp("1 1 maybe\n"), scalecert::InputError);
 
-    // Golden data: 7 values of ρ1 across [1/2, 5/2] and no switch point, 13 pairs each (on the
-    // line, and 6 above and 6 below it); the first is ρ1 = 1/2 + 2/8 = 3/4 with ρ2 = 9/4 on it.
+    // Golden data: 7 values of ρ1 across [1/2, 5/2] (the curve ρ2 = 3 − ρ1 crosses the rectangle
+    // from corner to corner) with no switch point, 25 pairs each (on the line, and 2^-k above,
+    // below, right and left of it for 6 values of k); 13 where it enters and 13 where it leaves
+    // (the pairs outside dropped); 4 corners. ρ1 = 1/2 + 2/8 = 3/4 has ρ2 = 9/4 on it.
     const scalecert::GoldenData g = a.golden();
     size_t lines = 0;
     for (char ch : g.csv) lines += ch == '\n';
-    BOOST_TEST(lines == 1 + 7 * 13u);
-    BOOST_TEST(g.csv.rfind("rho1,rho2,where,verdict_at_doubles,measure,value\n0.75,2.25,on,touching,touching,0\n", 0) ==
-               0);
+    BOOST_TEST(lines == 1 + 7 * 25u + 2 * 13u + 4u);
+    BOOST_TEST(g.csv.find("\n0.75,2.25,on,touching,touching,0,vertical,") != std::string::npos);
     // 2^-4 of f(3/4) = 9/4 above the curve they overlap by 9/64 = 0.140625 in z (the depth), and as
-    // far below they are that far apart.
-    BOOST_TEST(g.csv.find("0.75,2.390625,above 2^-4,overlapping,depth,0.140625\n0.75,2.109375,below "
-                          "2^-4,separated,distance,0.140625\n") != std::string::npos);
+    // far below they are that far apart, along z.
+    BOOST_TEST(
+        g.csv.find("\n0.75,2.390625,above 2^-4,overlapping,depth,0.140625,vertical,,,,,,,0,0,1,,,\n0.75,2.109375,"
+                   "below 2^-4,separated,distance,0.140625,vertical,") != std::string::npos);
+    // Fewer pairs when asked: 1 vertical (ρ1 = 3/2) and one offset: 5 + 3 + 3 + 4.
+    const scalecert::GoldenData few = a.golden({1, {8}});
+    BOOST_TEST(nlohmann::json::parse(few.json)["queries"].size() == 15u);
+    BOOST_TEST(few.rational_csv.find("\n3,2,3,2,vertical,on,touching,touching,0,1,") != std::string::npos);
+    BOOST_CHECK_THROW(a.golden({1, {0}}), scalecert::InputError);
     BOOST_TEST(g.json.find("\"verdict\": \"touching\"") != std::string::npos);
 }
 
@@ -441,11 +448,11 @@ BOOST_AUTO_TEST_CASE(a_region_of_parts_by_hand) {
                    e);
     BOOST_TEST(r.region_json().find("\"switch_points\": []") != std::string::npos);
     BOOST_TEST(r.partition_json().find("\"kind\": \"compound_partition\"") != std::string::npos);
-    // Golden data (test_cli derives it by hand on the same band): 13 queries on ρ1 = 23/8, the first
-    // on the boundary at ρ2 = 5/2.
+    // Golden data (test_cli derives it by hand on the same band): 25 pairs around (23/8, 5/2) on the
+    // boundary, the first on it, and the 4 corners.
     const scalecert::GoldenData gd = r.golden();
     const auto gj = nlohmann::json::parse(gd.json);
-    BOOST_TEST(gj["queries"].size() == 13u);
+    BOOST_TEST(gj["queries"].size() == 29u);
     BOOST_TEST(gj["queries"][0]["rho2"] == "5/2");
     BOOST_TEST(gj["queries"][0]["verdict"] == "touching");
     BOOST_TEST(checker_accepts(r.partition_json()));
@@ -966,6 +973,7 @@ BOOST_AUTO_TEST_CASE(large_off_meshes_read_as_integers_answer_as_the_exact_scene
     const scalecert::GoldenData ga = aa.golden(), gb = ab.golden();
     BOOST_TEST(ga.json == gb.json);
     BOOST_TEST(ga.csv == gb.csv);
+    BOOST_TEST(ga.rational_csv == gb.rational_csv);
     for (const std::string& p : paths) std::remove(p.c_str());
 }
 

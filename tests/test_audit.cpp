@@ -21,9 +21,9 @@ using test::slurp;
 BOOST_AUTO_TEST_CASE(golden_data_is_deterministic_and_exact) {
     fs::path a = test::scratch_dir("golden-a"), b = test::scratch_dir("golden-b");
     for (const std::string& fam : family_names()) {
-        write_golden(fam, 1, 9, Q(1, 1 << 20), a.string());
-        write_golden(fam, 1, 9, Q(1, 1 << 20), b.string());
-        for (const char* ext : {".scene.json", ".golden.json", ".golden.csv"}) {
+        write_golden(fam, 1, 9, Q(1, 1 << 20), a.string(), {});
+        write_golden(fam, 1, 9, Q(1, 1 << 20), b.string(), {});
+        for (const char* ext : {".scene.json", ".golden.json", ".golden.csv", ".golden.rational.csv"}) {
             std::string f = fam + "-0" + ext;
             BOOST_TEST(slurp(a / f) == slurp(b / f), f);
         }
@@ -37,6 +37,44 @@ BOOST_AUTO_TEST_CASE(golden_data_is_deterministic_and_exact) {
             int want = q["verdict"] == "separated" ? 1 : q["verdict"] == "touching" ? 0 : -1;
             BOOST_TEST(brute.classify(sc, parse_exact(q["rho1"]), parse_exact(q["rho2"])) == want);
             if (q["where"] == "on") BOOST_TEST(q["verdict"] == "touching");
+            // In the rectangle, the exact pair and the doubles asked.
+            const Q x = parse_exact(q["rho1"]), y = parse_exact(q["rho2"]);
+            const Q a = exact_from_double(q["rho1_double"].get<double>()),
+                    b = exact_from_double(q["rho2_double"].get<double>());
+            for (const Q* r : {&x, &a}) BOOST_TEST((sc.lo[0] <= *r && *r <= sc.hi[0]));
+            for (const Q* r : {&y, &b}) BOOST_TEST((sc.lo[1] <= *r && *r <= sc.hi[1]));
+            // The answers at the doubles, by brute force over the candidate directions: a plane's
+            // normal n (P1(a) touches n·x = n·p1 from below, P2(b) n·x = n·p2 from above, the offset
+            // between them, p2 − p1 along n with |p2 − p1|² the square); a depth's direction
+            // attains the least overlap over every direction, the squared depth.
+            const auto& m = q["measure_at_doubles"];
+            auto scaled = [&](const Vec3q& n) {
+                const test::Brute::Dir d = test::Brute::extremes(sc, n);
+                return std::pair<Q, Q>{d.ns1 + a * (d.max1 - d.ns1), d.ns2 + b * (d.min2 - d.ns2)};
+            };
+            auto vec = [](const auto& j) { return Vec3q{parse_exact(j[0]), parse_exact(j[1]), parse_exact(j[2])}; };
+            if (m["kind"] == "distance") {
+                const Vec3q n = vec(m["plane"]["normal"]), p1 = vec(m["closest_P1"]), p2 = vec(m["closest_P2"]);
+                const Q c = parse_exact(m["plane"]["offset"]);
+                const auto [hi1, lo2] = scaled(n);
+                BOOST_TEST((hi1 == dot(n, p1) && lo2 == dot(n, p2) && hi1 < c && c < lo2));
+                const Vec3q d = sub(p2, p1);
+                const Vec3q along = cross(d, n);
+                BOOST_TEST((sgn(along[0]) == 0 && sgn(along[1]) == 0 && sgn(along[2]) == 0));
+                BOOST_TEST(dot(d, d) == parse_exact(m["squared"]));
+            } else if (m["kind"] == "depth") {
+                auto overlap_sq = [&](const Vec3q& n) -> Q {
+                    const auto [hi1, lo2] = scaled(n);
+                    return (hi1 - lo2) * (hi1 - lo2) / dot(n, n);
+                };
+                Q least = overlap_sq(vec(m["direction"]));
+                BOOST_TEST(least == parse_exact(m["squared"]));
+                for (const Vec3z& n : brute.normals) {
+                    const auto [hi1, lo2] = scaled(to_q(n));
+                    BOOST_TEST_REQUIRE(hi1 > lo2);  // overlapping: no direction separates
+                    BOOST_TEST(overlap_sq(to_q(n)) >= least);
+                }
+            }
             ++checked;
         }
         BOOST_TEST(checked > 10);

@@ -374,7 +374,8 @@ BOOST_AUTO_TEST_CASE(outputs_go_only_to_regular_files_and_directories_we_can_mak
     const fs::path gd = workdir() / "golden-scenes";
     BOOST_TEST(run("golden " + cubes + " --dir " + gd.string()).status == 0);
     BOOST_TEST(fs::exists(gd / "stacked_cubes.golden.csv"));
-    BOOST_TEST(slurp(gd / "stacked_cubes.golden.csv").find("0.75,2.25,on,touching,touching,0\n") != std::string::npos);
+    BOOST_TEST(slurp(gd / "stacked_cubes.golden.csv").find("\n0.75,2.25,on,touching,touching,0,vertical,") !=
+               std::string::npos);
     Run g2 = run("golden " + cubes + " " + cubes + " --dir " + (workdir() / "never-made-2").string());
     BOOST_TEST(g2.status == 2);
     BOOST_TEST(g2.err.find("two scenes named 'stacked_cubes'") != std::string::npos, g2.err);
@@ -1722,22 +1723,49 @@ BOOST_AUTO_TEST_CASE(every_command_takes_objects_made_of_parts) {
     const nlohmann::ordered_json gold = nlohmann::ordered_json::parse(slurp(gd / "compound_band.golden.json"));
     BOOST_TEST(gold["kind"] == "region");
     BOOST_TEST(gold["scene_file"] == "compound_band.scene.json");
+    // With the defaults (7 verticals, offsets 2^-4, -12, -20, -30, -40, -52): at (23/8, 5/2) the pair
+    // on it, then per offset above, below, right and left (25 pairs), then the corners of I1 × I2.
     const nlohmann::ordered_json& qs = gold["queries"];
-    BOOST_TEST_REQUIRE(qs.size() == 13u);
-    for (const auto& q : qs) BOOST_TEST(q["rho1"] == "23/8");
+    BOOST_TEST_REQUIRE(qs.size() == 25u + 4u);
+    BOOST_TEST(gold["query_points"]["verticals"] == 7);
+    BOOST_TEST(qs[0]["rho1"] == "23/8");
     BOOST_TEST(qs[0]["rho2"] == "5/2");
+    BOOST_TEST(qs[0]["near"] == "vertical");
     BOOST_TEST(qs[0]["verdict"] == "touching");
     BOOST_TEST(qs[0]["measure_at_doubles"]["kind"] == "touching");
-    BOOST_TEST(qs[11]["where"] == "above 2^-52");
-    BOOST_TEST(qs[11]["verdict"] == "overlapping");
-    BOOST_TEST(qs[11]["verdict_at_doubles"] == "overlapping");
-    BOOST_TEST(qs[11]["measure_at_doubles"]["kind"] == "overlapping");
-    BOOST_TEST(qs[12]["where"] == "below 2^-52");
-    BOOST_TEST(qs[12]["verdict_at_doubles"] == "separated");
-    BOOST_TEST(qs[12]["measure_at_doubles"]["squared"] == "1/20282409603651670423947251286016");
+    BOOST_TEST(qs[21]["where"] == "above 2^-52");
+    BOOST_TEST(qs[21]["verdict"] == "overlapping");
+    BOOST_TEST(qs[21]["verdict_at_doubles"] == "overlapping");
+    BOOST_TEST(qs[21]["measure_at_doubles"]["kind"] == "overlapping");
+    BOOST_TEST(qs[22]["where"] == "below 2^-52");
+    BOOST_TEST(qs[22]["verdict_at_doubles"] == "separated");
+    BOOST_TEST(qs[22]["measure_at_doubles"]["squared"] == "1/20282409603651670423947251286016");
+    // Right of it by 2^-4, ρ1 = 23/8 · 17/16 = 391/128: they meet only from ρ2 = 4ρ1 − 9 = 103/32
+    // on, so at 5/2 the right part's x = 2ρ1 = 391/64 lies 391/64 − (9/2 + 5/4) = 23/64 past the
+    // box: distance² 529/4096, between the right part (P1's part 0) and the box. Left of it by
+    // 2^-4, ρ1 = 345/128: 4ρ1 − 9 = 57/32 < 5/2, overlapping.
+    BOOST_TEST(qs[3]["where"] == "right 2^-4");
+    BOOST_TEST(qs[3]["rho1"] == "391/128");
+    BOOST_TEST(qs[3]["measure_at_doubles"]["squared"] == "529/4096");
+    BOOST_TEST(qs[3]["measure_at_doubles"]["closest_P1"][0] == "391/64");
+    BOOST_TEST(qs[3]["measure_at_doubles"]["closest_P2"][0] == "23/4");
+    BOOST_TEST(qs[3]["measure_at_doubles"]["parts"] == nlohmann::ordered_json::parse("[0, 0]"));
+    BOOST_TEST(qs[4]["where"] == "left 2^-4");
+    BOOST_TEST(qs[4]["verdict"] == "overlapping");
+    // The corner (1, 1): they meet from ρ2 = 9 − 6 = 3 on; the box's x [4, 5] lies 1 past the
+    // right part's [2, 3].
+    BOOST_TEST(qs[25]["where"] == "corner");
+    BOOST_TEST(qs[25]["rho1"] == "1");
+    BOOST_TEST(qs[25]["rho2"] == "1");
+    BOOST_TEST(qs[25]["measure_at_doubles"]["squared"] == "1");
     const std::string csv = slurp(gd / "compound_band.golden.csv");
-    BOOST_TEST(std::count(csv.begin(), csv.end(), '\n') == 14);
-    BOOST_TEST(csv.find("\n2.875,2.5,on,touching,touching,0\n") != std::string::npos, csv);
+    BOOST_TEST(std::count(csv.begin(), csv.end(), '\n') == 1 + 29);
+    BOOST_TEST(csv.find("\n2.875,2.5,on,touching,touching,0,vertical,") != std::string::npos, csv);
+    // The rational CSV: the same rows, integer numerators and denominators.
+    const std::string rat = slurp(gd / "compound_band.golden.rational.csv");
+    BOOST_TEST(std::count(rat.begin(), rat.end(), '\n') == 1 + 29);
+    BOOST_TEST(rat.find("\n391,128,5,2,vertical,right 2^-4,separated,distance,529,4096,391,64,") != std::string::npos,
+               rat);
     // Golden's work on parts is bounded by the work its judgements do: the band with far boxes added
     // (3,000 parts against 3,000: each distance first compares the boxes of all 9·10^6 part pairs)
     // passes 5·10^7 box comparisons within the first few queries: refused in one line, nothing written.
@@ -1769,6 +1797,7 @@ BOOST_AUTO_TEST_CASE(every_command_takes_objects_made_of_parts) {
     const Run again = run("region " + (gd / "compound_band.scene.json").string());
     nlohmann::ordered_json without = gold;
     without.erase("queries");
+    without.erase("query_points");
     without.erase("scene_file");
     BOOST_TEST(nlohmann::ordered_json::parse(again.out) == without);
 
@@ -1816,6 +1845,77 @@ BOOST_AUTO_TEST_CASE(claims_past_the_hull_model_limit_are_refused) {
     expect_error("curve point past the limit", "certify-fp " + scene + " " + write("cp.txt", "curve 1 1\n").string(),
                  "needs the hull model (every contact line)");
     BOOST_TEST(run("certify-fp " + scene + " " + write("v.txt", "growth 0\n").string()).status == 0);
+}
+
+// Golden's pairs follow --verticals and --offsets, all in I1 × I2, by hand on the stacked cubes
+// (I1 = I2 = [1/2, 5/2], curve ρ2 = 3 − ρ1 from corner (1/2, 5/2) to corner (5/2, 1/2)). Three
+// verticals: ρ1 = 1, 3/2, 2, each with the pair on the curve and the four 2^-4 away (5 each); where
+// the curve enters and leaves at the corners only the pairs inside (on, below, right; on, above,
+// left); then the 4 corners: 15 + 6 + 4 = 25 rows. At every pair of doubles the z gap
+// g = 3 − ρ1 − ρ2 decides: separated at distance g (closest points a gap apart along z, the plane
+// z = its midpoint) when g > 0, touching at 0, else overlapping at depth −g along z (the x and y
+// overlaps ρ1 + ρ2 are larger).
+BOOST_AUTO_TEST_CASE(golden_pairs_follow_the_options_and_stay_in_the_rectangle) {
+    const std::string cubes = std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/stacked_cubes.json";
+    const fs::path dir = workdir() / "golden-options";
+    const Run r = run("golden " + cubes + " --verticals 3 --offsets 4 --dir " + dir.string());
+    BOOST_TEST_REQUIRE(r.status == 0, r.err);
+    const auto gold = nlohmann::json::parse(slurp(dir / "stacked_cubes.golden.json"));
+    BOOST_TEST(gold["query_points"]["verticals"] == 3);
+    BOOST_TEST(gold["query_points"]["offsets"] == nlohmann::json::parse("[4]"));
+    const auto& qs = gold["queries"];
+    using Q = mpq_class;
+    auto parse_exact = [](const nlohmann::json& j) {
+        Q v(j.get<std::string>());
+        v.canonicalize();
+        return v;
+    };
+    auto exact_from_double = [](const nlohmann::json& j) { return Q(j.get<double>()); };
+    BOOST_TEST_REQUIRE(qs.size() == 25u);
+    std::map<std::string, int> near;
+    for (const auto& q : qs) {
+        ++near[q["near"].get<std::string>()];
+        const Q x = parse_exact(q["rho1"]), y = parse_exact(q["rho2"]);
+        BOOST_TEST((Q(1, 2) <= x && x <= Q(5, 2) && Q(1, 2) <= y && y <= Q(5, 2)));
+        const Q g = 3 - exact_from_double(q["rho1_double"]) - exact_from_double(q["rho2_double"]);
+        const auto& m = q["measure_at_doubles"];
+        BOOST_TEST(q["verdict_at_doubles"] == (sgn(g) > 0 ? "separated" : sgn(g) == 0 ? "touching" : "overlapping"));
+        BOOST_TEST(parse_exact(m["squared"]) == g * g);
+        if (sgn(g) > 0) {
+            BOOST_TEST(m["plane"]["normal"] == nlohmann::json::parse(R"(["0", "0", "1"])"));
+            BOOST_TEST(parse_exact(m["closest_P2"][2]) - parse_exact(m["closest_P1"][2]) == g);
+            BOOST_TEST(parse_exact(m["plane"]["offset"]) == parse_exact(m["closest_P1"][2]) + g / 2);
+        } else if (sgn(g) < 0) {
+            BOOST_TEST(m["direction"] == nlohmann::json::parse(R"(["0", "0", "1"])"));
+        }
+    }
+    BOOST_TEST(near["vertical"] == 15);
+    BOOST_TEST(near["enters"] == 3);
+    BOOST_TEST(near["leaves"] == 3);
+    BOOST_TEST(near["corner"] == 4);
+    BOOST_TEST(qs[0]["rho1"] == "1/2");  // enters at the corner (1/2, 5/2)
+    BOOST_TEST(qs[1]["where"] == "below 2^-4");
+    BOOST_TEST(qs[1]["rho2"] == "75/32");  // 5/2 − 5/32
+    const std::string csv = slurp(dir / "stacked_cubes.golden.csv"),
+                      rat = slurp(dir / "stacked_cubes.golden.rational.csv");
+    BOOST_TEST(std::count(csv.begin(), csv.end(), '\n') == 26);
+    BOOST_TEST(std::count(rat.begin(), rat.end(), '\n') == 26);
+    // (1/2, 75/32): z gap 3 − 1/2 − 75/32 = 1/16 − ... = 5/32, squared 25/1024.
+    BOOST_TEST(rat.find("\n1,2,75,32,enters,below 2^-4,separated,distance,25,1024,") != std::string::npos, rat);
+    // --count and --eps make a family's scenes: with scenes alone they are refused, naming what to use.
+    for (const char* opt : {"--count 50", "--eps 1/1024"}) {
+        const Run e = run("golden " + cubes + " " + opt + " --dir " + (workdir() / "never-made-golden").string());
+        BOOST_TEST(e.status == 2);
+        BOOST_TEST(e.err.find("--verticals N and --offsets K,K,...") != std::string::npos, e.err);
+        BOOST_TEST(std::count(e.err.begin(), e.err.end(), '\n') == 1);
+    }
+    for (const char* bad : {"--offsets 4,,5", "--offsets 0", "--offsets 4,4", "--offsets 1075", "--verticals 1001",
+                            "--verticals -1", "--offsets x"}) {
+        const Run e = run("golden " + cubes + " " + bad + " --dir " + (workdir() / "never-made-golden").string());
+        BOOST_TEST(e.status == 2, bad);
+        BOOST_TEST(std::count(e.err.begin(), e.err.end(), '\n') == 1, e.err);
+    }
+    BOOST_TEST(!fs::exists(workdir() / "never-made-golden"));
 }
 
 // --numbers on golden too: the scene it writes for a mesh pair holds the numbers as read. 0.1 is

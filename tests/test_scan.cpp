@@ -135,8 +135,8 @@ BOOST_AUTO_TEST_CASE(session_verdicts_from_the_walk_equal_the_hull_paths) {
 }
 
 // Golden data on a walked scene comes from the walk and the points' trees, with no hull model:
-// its queries and CSV are the hull path's, byte for byte (the exact verdicts, distances and
-// depths are unique), and its curve document differs only in the engine statistics.
+// its queries are the hull path's (the exact verdicts, distances, depths, depth directions and
+// planes are unique; the closest points' difference too), and its curve document differs only in the engine statistics.
 BOOST_AUTO_TEST_CASE(golden_answers_on_the_walk_equal_the_hull_paths) {
     std::mt19937 g(31);
     ExactScene sc;
@@ -145,13 +145,30 @@ BOOST_AUTO_TEST_CASE(golden_answers_on_the_walk_equal_the_hull_paths) {
     sc = with_means(sc, qc(1, 2), Q(2));
     Session walk(sc, "test"), hull(sc, "test", Engine::Hull);
     const ClaimModels wm = walk.claim_models(), hm = hull.claim_models();
-    GoldenAnswers a = golden_answers(sc, walk.curve_model(), walk.curve(), wm);
-    GoldenAnswers b = golden_answers(sc, hull.curve_model(), hull.curve(), hm);
+    GoldenAnswers a = golden_answers(sc, walk.curve_model(), walk.curve(), wm, {});
+    GoldenAnswers b = golden_answers(sc, hull.curve_model(), hull.curve(), hm, {});
     BOOST_TEST(walk.walked());
     BOOST_TEST(!walk.hull_built());
     BOOST_TEST(a.queries.size() >= 7 * 13u);
-    BOOST_TEST(dump(a.queries) == dump(b.queries));
-    BOOST_TEST(a.csv == b.csv);
+    // The closest points are one pair of many where the nearest features are parallel: each pair
+    // is compared by its difference, which the distance fixes (checked, with their membership, in
+    // test_audit's golden test).
+    auto unpaired = [](Json q) {
+        for (Json& r : q) {
+            Json& m = r["measure_at_doubles"];
+            if (!m.contains("closest_P1")) continue;
+            Vec3q d;
+            for (int i = 0; i < 3; ++i)
+                d[i] = parse_exact(m["closest_P2"][i].get<std::string>()) -
+                       parse_exact(m["closest_P1"][i].get<std::string>());
+            m.erase("closest_P1");
+            m.erase("closest_P2");
+            m["difference"] = Json::array({to_exact_string(d[0]), to_exact_string(d[1]), to_exact_string(d[2])});
+        }
+        return q;
+    };
+    BOOST_TEST(dump(unpaired(a.queries)) == dump(unpaired(b.queries)));
+    BOOST_TEST(a.queries.size() == b.queries.size());
     BOOST_TEST(a.curve["model"]["engine"] == "scan");
     a.curve.erase("model");
     b.curve.erase("model");

@@ -219,8 +219,13 @@ struct Judgements {
 };
 // Golden data: the curve document with, near the curve, exact verdicts of pairs and of their
 // nearest doubles (JSON), and those doubles with their verdicts (CSV).
+// What golden data holds for a scene (scalecert golden --verticals, --offsets; docs/manual.md).
+struct GoldenOptions {
+    int verticals = 7;                                // values of ρ1 where the boundary is sampled
+    std::vector<int> offsets{4, 12, 20, 30, 40, 52};  // pairs 2^-K of a coordinate from each sample
+};
 struct GoldenData {
-    std::string json, csv;
+    std::string json, csv, rational_csv;  // NAME.golden.json, .golden.csv, .golden.rational.csv
 };
 
 // The analysis of one scene, convex or made of parts. Calls on one Analysis from several threads
@@ -261,7 +266,7 @@ class Analysis {
     Judgements certify(const std::vector<Claim>& claims, const ClaimOptions& options = {}) const;
     // What scalecert golden writes for each of its scenes, without the family's fields (on parts:
     // the region document with queries where the objects' meeting set ends).
-    GoldenData golden() const;
+    GoldenData golden(const GoldenOptions& options = {}) const;
     // Two convex objects only:
     const Curve& curve() const;
     std::string curve_json() const;
@@ -274,10 +279,10 @@ class Analysis {
 
 // Golden data of a family of scenes, as scalecert golden --family writes it: `count` scenes of
 // `family` at degeneracy eps > 0 (smaller is more degenerate), scene i drawn from `seed`, each as
-// NAME-i.scene.json, .golden.json and .golden.csv in `dir` (created); the same
-// bytes for the same arguments. families() lists the names. Throws InputError.
-void write_golden(const std::string& family, int count, std::uint64_t seed, const Rational& eps,
-                  const std::string& dir);
+// NAME-i.scene.json, .golden.json, .golden.csv and .golden.rational.csv in `dir` (created); the
+// same bytes for the same arguments. families() lists the names. Throws InputError.
+void write_golden(const std::string& family, int count, std::uint64_t seed, const Rational& eps, const std::string& dir,
+                  const GoldenOptions& options = {});
 std::vector<std::string> families();
 
 }  // namespace scalecert

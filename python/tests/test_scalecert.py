@@ -1,4 +1,6 @@
 """The Python module: hand-derived values, a brute-force envelope, and agreement with the CLI."""
+import csv as csv_module
+import io
 import itertools
 import json
 import math
@@ -184,8 +186,9 @@ def test_golden_and_claims(tmp_path):
     assert not (tmp_path / "never-made").exists()
     scalecert.golden("random", 2, 5, "1/1024", str(tmp_path / "g"))
     names = sorted(p.name for p in (tmp_path / "g").iterdir())
-    assert names == ["random-0.golden.csv", "random-0.golden.json", "random-0.scene.json",
-                     "random-1.golden.csv", "random-1.golden.json", "random-1.scene.json"]
+    assert names == ["random-0.golden.csv", "random-0.golden.json", "random-0.golden.rational.csv",
+                     "random-0.scene.json", "random-1.golden.csv", "random-1.golden.json",
+                     "random-1.golden.rational.csv", "random-1.scene.json"]
     out = subprocess.run([CLI, "golden", "--family", "random", "--count", "2", "--seed", "5", "--eps", "1/1024",
                           "--dir", str(tmp_path / "h")], capture_output=True, check=True)
     for n in names:
@@ -234,15 +237,32 @@ def test_golden_and_claims(tmp_path):
     (tmp_path / "j.json").write_text(cert)
     out = subprocess.run([CHECK, str(tmp_path / "j.json")], capture_output=True, text=True)
     assert out.returncode == 0 and out.stdout.startswith("valid:")
-    # A scene's golden data: 7 values of rho1 across [1/2, 5/2] (no switch point), 13 pairs each,
-    # the first on the line at rho1 = 3/4, rho2 = 3 - 3/4 = 9/4; the same rows in the JSON.
-    g, csv = stacked().golden()
+    # A scene's golden data: 7 values of rho1 across [1/2, 5/2] (the curve rho2 = 3 - rho1 runs from
+    # corner to corner), 25 pairs each (on it, and 2^-k above, below, right and left of it), 13 where
+    # it enters and 13 where it leaves the rectangle, 4 corners; rho1 = 3/4 has rho2 = 9/4 on it.
+    g, csv, rational = stacked().golden()
     rows = csv.splitlines()
-    assert len(rows) == 1 + 7 * 13 and rows[1] == "0.75,2.25,on,touching,touching,0"
-    # 2^-4 of 9/4 above the curve they overlap by 9/64 in z, and as far below they are 9/64 apart.
-    assert rows[2] == "0.75,2.390625,above 2^-4,overlapping,depth,0.140625"
-    assert g["queries"][2]["measure_at_doubles"] == {"kind": "distance", "squared": "81/4096", "value_double": 0.140625}
-    assert len(g["queries"]) == 7 * 13 and g["queries"][0]["rho2"] == "9/4"
+    assert len(rows) == 1 + 7 * 25 + 2 * 13 + 4 == len(rational.splitlines())
+    assert "0.75,2.25,on,touching,touching,0,vertical" in csv
+    # 2^-4 of 9/4 above the curve they overlap by 9/64 in z, and as far below they are 9/64 apart,
+    # the closest points 9/64 apart in z and the plane z = their midpoint between them.
+    assert "\n0.75,2.390625,above 2^-4,overlapping,depth,0.140625,vertical,,,,,,,0,0,1,,,\n" in csv
+    below = next(q for q in g["queries"] if q["rho1"] == "3/4" and q["where"] == "below 2^-4")
+    m = below["measure_at_doubles"]
+    assert m["kind"] == "distance" and m["squared"] == "81/4096" and m["value_double"] == 0.140625
+    p1, p2 = [F(v) for v in m["closest_P1"]], [F(v) for v in m["closest_P2"]]
+    assert p1[2] == F(7, 4) and p2[2] - p1[2] == F(9, 64)  # P1's top 1 + 3/4
+    assert m["plane"] == {"normal": ["0", "0", "1"], "offset": str(F(7, 4) + F(9, 128))}
+    # The rational CSV, read with Fraction: each row's squared distance is (3 - rho1 - rho2)^2.
+    for r in csv_module.DictReader(io.StringIO(rational)):
+        s = F(int(r["rho1_num"]), int(r["rho1_den"])) + F(int(r["rho2_num"]), int(r["rho2_den"]))
+        assert F(int(r["squared_num"]), int(r["squared_den"])) == (3 - s) ** 2
+    # Fewer pairs when asked: one vertical (rho1 = 3/2), one offset: 5 + 3 + 3 + 4.
+    g, _, _ = stacked().golden(verticals=1, offsets=[8])
+    assert len(g["queries"]) == 15 and g["query_points"] == {"verticals": 1, "offsets": [8]}
+    for bad in ({"verticals": -1}, {"offsets": [0]}, {"offsets": "4"}, {"offsets": [4, 4]}):
+        with pytest.raises(scalecert.InputError):
+            stacked().golden(**bad)
 
 
 def test_readme_example_runs(tmp_path):
@@ -436,11 +456,11 @@ def test_region_of_parts_by_hand_and_the_cli(tmp_path):
             r.classify(bad, [1.0])
     with pytest.raises(ValueError, match="flat"):
         scalecert.Scene.from_parts([[[0, 0, 0], [1, 0, 0], [0, 1, 0], [1, 1, 0]]], peg, (1, 2), (1, 2)).verdict(1, 1)  # built on first use
-    # Golden data on parts (the band, derived by hand in tests/test_cli.cpp): 13 queries on rho1 = 23/8,
-    # the first touching at rho2 = 5/2; the same bytes as scalecert golden writes.
-    g, csv = scalecert.Scene.load(str(SRC / "tests" / "data" / "compound_band.json")).golden()
-    assert len(g["queries"]) == 13 and g["queries"][0]["rho2"] == "5/2" and g["queries"][0]["verdict"] == "touching"
-    assert csv.count("\n") == 14
+    # Golden data on parts (the band, derived by hand in tests/test_cli.cpp): 25 pairs around
+    # (23/8, 5/2), the first touching there, and 4 corners; the same bytes as scalecert golden writes.
+    g, csv, _ = scalecert.Scene.load(str(SRC / "tests" / "data" / "compound_band.json")).golden()
+    assert len(g["queries"]) == 29 and g["queries"][0]["rho2"] == "5/2" and g["queries"][0]["verdict"] == "touching"
+    assert csv.count("\n") == 30
     subprocess.run([CLI, "golden", str(SRC / "tests" / "data" / "compound_band.json"), "--dir", str(tmp_path / "g")], check=True)
     assert (tmp_path / "g" / "compound_band.golden.csv").read_text() == csv
     # The scene file through Scene.load and through the command: the same bytes.

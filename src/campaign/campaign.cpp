@@ -80,6 +80,7 @@ void validate(const CampaignArgs& a) {
                              ")");
         const Q eps = parse_exact(a.eps_text);
         if (sgn(eps) <= 0) throw InputError("--eps must be > 0");
+        validate(a.points);
         std::set<std::string> stems;
         for (const std::string& p : a.scenes)
             if (!stems.insert(golden_stem(p)).second)
@@ -262,32 +263,34 @@ std::string golden_stem(const std::string& path) {
 }
 
 std::vector<std::pair<std::string, std::string>> golden_files(const std::string& stem, const ExactScene& s,
+                                                              const GoldenPoints& points,
                                                               const std::function<void(Json&)>& fields) {
     const bool parts = s.made_of_parts();
     GoldenAnswers a;
     if (parts) {  // objects made of parts: the region document and queries at its vertical ends
         CompoundSession session(s, stem);
         Json doc = session.region_json();
-        a = golden_answers_parts(session.region(true), session.judge(), std::move(doc));
+        a = golden_answers_parts(session.region(true), session.judge(), std::move(doc), points);
     } else {
         Session session(s, stem);
         const ClaimModels models = session.claim_models();
-        a = golden_answers(s, session.curve_model(), session.curve(), models);
+        a = golden_answers(s, session.curve_model(), session.curve(), models, points);
     }
     Json j = std::move(a.curve);
     fields(j);
     j["queries"] = std::move(a.queries);
     return {{stem + ".scene.json", dump(scene_file_json(s))},
             {stem + ".golden.json", dump(j)},
-            {stem + ".golden.csv", a.csv}};
+            {stem + ".golden.csv", a.csv},
+            {stem + ".golden.rational.csv", a.rational_csv}};
 }
 
 std::vector<std::pair<std::string, std::string>> golden_scene(const std::string& family, int i,
                                                               std::uint64_t scene_seed, std::uint64_t run_seed,
-                                                              const Q& eps) {
+                                                              const Q& eps, const GoldenPoints& points) {
     Rng g(scene_seed);
     const ExactScene s = make_family_scene(family, eps, g);
-    return golden_files(family + "-" + std::to_string(i), s, [&](Json& j) {
+    return golden_files(family + "-" + std::to_string(i), s, points, [&](Json& j) {
         j["family"] = family;
         j["eps"] = to_exact_string(eps);
         j["index"] = i;
@@ -313,7 +316,7 @@ std::string run_shard(const CampaignArgs& a, const Shard& s) {
         ExactScene sc;
         j["inputs"] = reading([&] { sc = load_scene(p, a.opt); });
         Json files = Json::array();
-        for (const auto& [name, text] : golden_files(golden_stem(p), sc, [&](Json& g) {
+        for (const auto& [name, text] : golden_files(golden_stem(p), sc, a.points, [&](Json& g) {
                  // The scene's copy beside it (NAME.scene.json), not the path as typed: the same
                  // bytes however the path was spelled, and wherever the files were written.
                  g["scene_file"] = golden_stem(p) + ".scene.json";
@@ -328,7 +331,8 @@ std::string run_shard(const CampaignArgs& a, const Shard& s) {
         const Q eps = parse_exact(a.eps_text);
         Json files = Json::array();
         for (int i = s.first; i < s.last; ++i)
-            for (const auto& [name, text] : golden_scene(a.family, i, scene_seed(a.seed, 0, i), a.seed, eps)) {
+            for (const auto& [name, text] :
+                 golden_scene(a.family, i, scene_seed(a.seed, 0, i), a.seed, eps, a.points)) {
                 write_file_atomically(a.dir + "/" + name, text);
                 files.push_back(Json::array({name, sha256_hex(text)}));
             }
@@ -463,8 +467,10 @@ void make_output_dir(const std::string& dir) {
                          ")");
 }
 
-void write_golden(const std::string& family, int count, std::uint64_t seed, const Q& eps, const std::string& dir) {
+void write_golden(const std::string& family, int count, std::uint64_t seed, const Q& eps, const std::string& dir,
+                  const GoldenPoints& points) {
     CampaignArgs a;
+    a.points = points;
     a.golden = true;
     a.family = family;
     a.count = count;
@@ -518,6 +524,8 @@ std::string campaign_identity(const CampaignArgs& a, const Json& inputs) {
     if (a.golden) {
         j["eps"] = to_exact_string(parse_exact(a.eps_text));
         j["dir"] = a.dir;
+        j["verticals"] = a.points.verticals;
+        j["offsets"] = a.points.offsets;
     } else {
         j["scenes"] = a.scenes;
         j["methods"] = a.methods;
@@ -536,11 +544,11 @@ std::string campaign_identity(const CampaignArgs& a, const Json& inputs) {
 
 namespace scalecert {
 
-void write_golden(const std::string& family, int count, std::uint64_t seed, const Rational& eps,
-                  const std::string& dir) {
+void write_golden(const std::string& family, int count, std::uint64_t seed, const Rational& eps, const std::string& dir,
+                  const GoldenOptions& options) {
     Rational e = eps;
     e.canonicalize();
-    internal::write_golden(family, count, seed, e, dir);
+    internal::write_golden(family, count, seed, e, dir, {options.verticals, options.offsets});
 }
 
 std::vector<std::string> families() { return internal::family_names(); }

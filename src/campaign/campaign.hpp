@@ -6,6 +6,7 @@
 #include "campaign/audit_table.hpp"
 #include "campaign/families.hpp"
 #include "certify/certificate.hpp"
+#include "certify/golden.hpp"
 #include "io/scene.hpp"
 
 #include <functional>
@@ -33,6 +34,7 @@ struct CampaignArgs {
     std::uint64_t seed = 1;
     std::string eps_text = "1/1048576";  // golden
     std::string dir;                     // golden: the output directory
+    GoldenPoints points;                 // golden: which pairs (--verticals, --offsets)
     std::vector<std::string> scenes;     // audit: scene files
     std::vector<std::string> methods{"libccd-gjk",     "libccd-mpr",      "fcl-gjk-libccd", "fcl-gjk-indep",
                                      "bullet-gjk-epa", "double-envelope", "paper-tritri",   "grid"};
@@ -100,20 +102,22 @@ std::string campaign_identity(const CampaignArgs& a, const Json& inputs);
 std::string stale_input(const Json& inputs, const std::string& shard_text);
 
 // A scene's golden files under a stem: STEM.scene.json (the scene exactly), STEM.golden.json (the
-// curve, `fields` added, and the queries of golden_answers) and STEM.golden.csv, by name and text.
+// curve, `fields` added, and the queries of golden_answers at `points`), STEM.golden.csv and
+// STEM.golden.rational.csv, by name and text.
 std::vector<std::pair<std::string, std::string>> golden_files(const std::string& stem, const ExactScene& s,
+                                                              const GoldenPoints& points,
                                                               const std::function<void(Json&)>& fields);
 // A user's scene file's stem: its file name without ".json" (golden SCENES... names its files so).
 std::string golden_stem(const std::string& path);
 // Scene i of a family with its exact answers, drawn with scene_seed (campaign.hpp derives it from
-// the run's seed): the files NAME-i.scene.json, NAME-i.golden.json and NAME-i.golden.csv, by name
-// and text. The golden JSON records the run's seed and i.
+// the run's seed): golden_files as NAME-i. The golden JSON records the run's seed and i.
 std::vector<std::pair<std::string, std::string>> golden_scene(const std::string& family, int i,
                                                               std::uint64_t scene_seed, std::uint64_t run_seed,
-                                                              const Q& eps);
+                                                              const Q& eps, const GoldenPoints& points);
 // Writes COUNT scenes of a family with their exact answers into DIR (campaign.cpp: the same
 // shards as scalecert-mpi). Byte-identical for the same arguments.
-void write_golden(const std::string& family, int count, std::uint64_t seed, const Q& eps, const std::string& dir);
+void write_golden(const std::string& family, int count, std::uint64_t seed, const Q& eps, const std::string& dir,
+                  const GoldenPoints& points);
 
 // At most this many scenes of a family in one golden run (--count, write_golden).
 constexpr int kMaxGoldenCount = 10000000;

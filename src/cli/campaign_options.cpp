@@ -52,12 +52,36 @@ void add_golden_options(CLI::App* sub, internal::CampaignArgs& a) {
     sub->add_option("--family", a.family,
                     "random | parallel-faces | nearly-equal-slopes | nearly-parallel-edges | vertex-vertex | "
                     "far-from-origin | sliver | near-sphere");
-    sub->add_option("--count", a.count, "how many scenes of the family (1 to 10^7)")
-        ->check(CLI::Range(1, internal::kMaxGoldenCount));
+    CLI::Option* count = sub->add_option("--count", a.count, "how many scenes of the family (1 to 10^7)")
+                             ->check(CLI::Range(1, internal::kMaxGoldenCount));
     sub->add_option("--seed", a.seed, "the run's random seed (scene i's own seed is derived from it and i)");
-    sub->add_option("--eps", a.eps_text, "degeneracy parameter (exact, default 2^-20)");
+    CLI::Option* eps = sub->add_option("--eps", a.eps_text, "the family's degeneracy parameter (exact, default 2^-20)");
+    sub->add_option("--verticals", a.points.verticals,
+                    "how many values of rho1 to sample the boundary at, spread over the part of I1 where it crosses "
+                    "the rectangle (0 to 1000; default 7), besides its switch points and where it enters and leaves")
+        ->type_name("N");
+    sub->add_option_function<std::string>(
+           "--offsets",
+           [&a](const std::string& v) {
+               try {
+                   a.points.offsets = internal::parse_offsets(v);
+               } catch (const InputError& e) {
+                   throw CLI::ValidationError(e.what());
+               }
+           },
+           "the pairs above, below, left and right of each sampled boundary point, 2^-K of its coordinate away, "
+           "for each K given (1 to 1074; default 4,12,20,30,40,52)")
+        ->type_name("K,K,...");
+    // --count and --eps make a family's scenes: with scenes of the user's alone they would do nothing.
+    sub->parse_complete_callback([&a, count, eps] {
+        if (a.family.empty() && (count->count() > 0 || eps->count() > 0))
+            throw CLI::ValidationError(count->count() > 0 ? "--count" : "--eps",
+                                       "sets the scenes of a --family; for your scenes' pairs give --verticals N "
+                                       "and --offsets K,K,...");
+    });
     sub->add_option("--dir", a.dir,
-                    "output directory (created): NAME-i.scene.json, NAME-i.golden.json, NAME-i.golden.csv")
+                    "output directory (created): NAME.scene.json, NAME.golden.json, NAME.golden.csv, "
+                    "NAME.golden.rational.csv per scene")
         ->required()
         ->check(file_name());
 }

@@ -64,7 +64,7 @@ Command add_golden(CLI::App& app) {
                 for (const std::string& p : a->scenes) {
                     if (mesh_scene && p == mesh_scene->first) continue;  // read above, written below
                     say_notes(load_scene(p, a->opt));
-                    for (const char* ext : {".scene.json", ".golden.json", ".golden.csv"})
+                    for (const char* ext : {".scene.json", ".golden.json", ".golden.csv", ".golden.rational.csv"})
                         refuse_non_regular_output(a->dir + "/" + golden_stem(p) + ext);
                 }
                 make_output_dir(a->dir);

@@ -589,18 +589,19 @@ Judgements Analysis::certify(const std::vector<Claim>& claims, const ClaimOption
     });
 }
 
-GoldenData Analysis::golden() const {
+GoldenData Analysis::golden(const GoldenOptions& options) const {
+    const internal::GoldenPoints points{options.verticals, options.offsets};
+    internal::GoldenAnswers g;
     if (!impl_->convex()) {  // the region document, with queries where the meeting set ends
         internal::CompoundSession& cs = *impl_->compound;
-        internal::GoldenAnswers g = internal::golden_answers_parts(cs.region(true), cs.judge(), cs.region_json());
-        g.curve["queries"] = std::move(g.queries);
-        return {dump(g.curve), std::move(g.csv)};
+        g = internal::golden_answers_parts(cs.region(true), cs.judge(), cs.region_json(), points);
+    } else {
+        internal::Session& s = impl_->convex_only("golden");
+        const internal::ClaimModels models = s.claim_models();
+        g = internal::golden_answers(impl_->scene.d_->sc(), s.curve_model(), s.curve(), models, points);
     }
-    internal::Session& s = impl_->convex_only("golden");
-    const internal::ClaimModels models = s.claim_models();
-    internal::GoldenAnswers g = internal::golden_answers(impl_->scene.d_->sc(), s.curve_model(), s.curve(), models);
     g.curve["queries"] = std::move(g.queries);
-    return {dump(g.curve), std::move(g.csv)};
+    return {dump(g.curve), std::move(g.csv), std::move(g.rational_csv)};
 }
 
 }  // namespace scalecert
