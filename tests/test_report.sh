@@ -1,0 +1,54 @@
+#!/usr/bin/env bash
+# The audit report (tools/report.py) in a real browser: headless Chromium loads it with no script
+# error, the page says it drew both charts and a 3-D view, and screenshots show them: the charts'
+# method colours, and the 3-D view's two bodies (P1 blue, P2 orange). Skipped (exit 77) where
+# Chromium is not installed. Usage: test_report.sh SCALECERT SOURCE_DIR WORK_DIR
+set -uo pipefail
+SC=$1 SRC=$2 WORK=$3
+BROWSER=$(command -v chromium || command -v chromium-browser || true)
+if [ -z "$BROWSER" ]; then echo "report: skipped: no chromium"; exit 77; fi
+PY=/usr/bin/python3
+rm -rf "$WORK" && mkdir -p "$WORK" && cd "$WORK" || exit 1
+fail=0
+bad() { echo "FAIL: $*"; fail=1; }
+browse() {  # chromium headless, the page at URL; its other arguments before
+  timeout 120 "$BROWSER" --headless=new --no-sandbox --disable-gpu --use-angle=swiftshader --enable-unsafe-swiftshader \
+    --no-first-run --disable-extensions --user-data-dir="$WORK/profile" --virtual-time-budget=8000 "$@"
+}
+"$SC" audit "$SRC/certificates/scenes/stacked_cubes.json" --methods libccd-gjk,bullet-gjk-epa,libccd-mpr --by-distance \
+  --out audit.json 2>/dev/null || bad "audit"
+$PY "$SRC/tools/report.py" audit.json --out report.html 2>/dev/null || bad "report.py"
+[ -s report.html ] && [ -s report.html.assets/three.min.js ] || bad "report files"
+# Bad input: one line, exit 2, nothing written.
+echo '{"not": "an audit"}' > bogus.json
+$PY "$SRC/tools/report.py" bogus.json --out never.html 2>err.txt; st=$?
+[ $st -eq 2 ] && [ "$(wc -l < err.txt)" -eq 1 ] && [ ! -e never.html ] && [ ! -e never.html.assets ] || bad "bad input: exit $st"
+# The page, loaded: its status line, and no script error in the console.
+browse --enable-logging=stderr --v=0 --dump-dom "file://$WORK/report.html" > dom.html 2> console.txt
+grep -q 'id="status">charts drawn: 2; 3-D views drawn: 1<' dom.html || bad "status: $(grep -o 'id="status">[^<]*' dom.html)"
+if grep "CONSOLE" console.txt | grep -v "GL Driver Message" | grep -q .; then
+  bad "console: $(grep CONSOLE console.txt | grep -v 'GL Driver Message' | head -3)"
+fi
+grep -q "Uncaught" console.txt && bad "uncaught: $(grep Uncaught console.txt | head -2)"
+# Screenshots of the charts and of the 3-D view alone, and their colours counted.
+browse --window-size=1000,900 --screenshot="$WORK/charts.png" "file://$WORK/report.html#charts" 2>/dev/null
+browse --window-size=700,500 --screenshot="$WORK/view.png" "file://$WORK/report.html#view" 2>/dev/null
+$PY - <<'PYEOF' || bad "screenshots"
+from PIL import Image
+def near(c, ref, tol=40): return all(abs(a - b) <= tol for a, b in zip(c, ref))
+def count(path, ref):
+    img = Image.open(path).convert("RGB")
+    return sum(1 for c in img.getdata() if near(c, ref))
+blue, red, green = (0x1f, 0x77, 0xb4), (0xd6, 0x27, 0x28), (0x2c, 0xa0, 0x2c)
+charts = {name: count("charts.png", ref) for name, ref in (("blue", blue), ("red", red), ("green", green))}
+# The 3-D view: blended with white at opacity 0.55, lit, P1 and P2 come out as light blue and light
+# orange; count pixels clearly bluer than red, and clearly redder than blue.
+img = Image.open("view.png").convert("RGB")
+b = sum(1 for r, g, bb in img.getdata() if bb > r + 40)
+o = sum(1 for r, g, bb in img.getdata() if r > bb + 60 and g > bb)
+print("charts", charts, "view blue", b, "orange", o)
+assert charts["blue"] > 500 and charts["red"] > 200 and charts["green"] > 100, charts
+assert b > 500 and o > 2000, (b, o)
+PYEOF
+[ $fail -eq 0 ] && echo "report: all checks passed"
+exit $fail

@@ -1,0 +1,295 @@
+#!/usr/bin/env python3
+"""An audit as a page to look at: scalecert audit's JSON as one HTML report.
+
+Usage: tools/report.py AUDIT.json --out report.html [--failures DIR]
+
+The page has, from the audit's rows: a table per scene and method (queries, wrong verdicts each
+way, time per query), a chart of the wrong verdicts per method, a chart of the fraction wrong by
+relative distance 2^-k from the exact boundary (audits run with --by-distance), and the list of
+failures (the first 50 a row keeps: the doubles asked, what the method said, the exact verdict).
+A click on a failure shows its numbers and a 3-D view of the two bodies scaled to that pair, when
+the scene's geometry can be read: a scene file with its vertices inline (objects of one part or
+of parts), found by the row's scene path or, for a family scene, in the --failures directory.
+Plotly (python3-plotly) draws the charts and three.js (libjs-three) the bodies, each part as its
+convex hull; both scripts are copied beside the page into REPORT.html.assets/, so the page works
+offline and moved with that folder. Bad input: one line on stderr, exit 2, nothing written.
+"""
+import argparse
+import html
+import json
+import os
+import shutil
+import sys
+import tempfile
+from fractions import Fraction
+
+PLOTLY = "/usr/share/python3-plotly/plotly.js"
+THREE = "/usr/share/javascript/three"
+SCRIPTS = [PLOTLY, THREE + "/three.min.js", THREE + "/examples/js/math/ConvexHull.js",
+           THREE + "/examples/js/geometries/ConvexGeometry.js", THREE + "/examples/js/controls/OrbitControls.js"]
+
+
+class InputError(Exception):
+    pass
+
+
+def exact(v):
+    """A scene number: JSON number (the double it is) or an exact string "p/q" or decimal."""
+    if isinstance(v, bool) or not isinstance(v, (int, float, str)):
+        raise InputError("not a number: %r" % (v,))
+    try:
+        return Fraction(v)
+    except (ValueError, ZeroDivisionError):
+        raise InputError("not a number: %r" % (v,))
+
+
+def bodies(scene_path):
+    """[(parts, seed)] for P1 and P2 from a scene file with inline vertices, or None."""
+    try:
+        with open(scene_path) as f:
+            s = json.load(f)
+        out = []
+        for key in ("P1", "P2"):
+            obj = s[key]
+            parts = [p["vertices"] for p in obj["parts"]] if "parts" in obj else [obj["vertices"]]
+            parts = [[[float(exact(c)) for c in v] for v in part] for part in parts]
+            if "seed" in obj:
+                seed = [float(exact(c)) for c in obj["seed"]]
+            else:  # the mean of the vertices, as scalecert takes it
+                pts = [v for part in parts for v in part]
+                seed = [sum(p[i] for p in pts) / len(pts) for i in range(3)]
+            out.append({"parts": parts, "seed": seed})
+        return out
+    except (OSError, ValueError, KeyError, TypeError, InputError):
+        return None
+
+
+def scene_file(row, failures_dir):
+    """The scene file a row names, or its family scene in the --failures directory."""
+    name = row.get("scene", "")
+    if os.path.isfile(name):
+        return name
+    if failures_dir:
+        eps = str(row.get("eps", "0")).replace("/", "_")
+        p = os.path.join(failures_dir, "%s.eps-%s.scene.json" % (os.path.basename(name), eps))
+        if os.path.isfile(p):
+            return p
+    return None
+
+
+def load_rows(path):
+    try:
+        with open(path) as f:
+            rows = json.load(f)
+    except OSError as e:
+        raise InputError("%s: cannot read (%s)" % (path, e.strerror))
+    except ValueError as e:
+        raise InputError("%s: not JSON (%s)" % (path, e))
+    if isinstance(rows, dict) and isinstance(rows.get("rows"), list):
+        rows = rows["rows"]
+    if not isinstance(rows, list) or not all(isinstance(r, dict) and "method" in r and "scene" in r for r in rows):
+        raise InputError("%s: not an audit (scalecert audit's JSON: a list of rows with scene and method)" % path)
+    return rows
+
+
+def page(rows, failures_dir, assets):
+    scenes, data_rows, failures = {}, [], []
+    for r in rows:
+        if "queries" not in r:
+            continue  # curve rows (the exact engine, the grid): no verdicts to chart
+        key = r["scene"]
+        if key not in scenes:
+            f = scene_file(r, failures_dir)
+            scenes[key] = bodies(f) if f else None
+        data_rows.append({
+            "scene": key, "method": r["method"], "eps": str(r.get("eps", "0")), "queries": r["queries"],
+            "false_separated": r.get("false_separated", 0), "false_overlapping": r.get("false_overlapping", 0),
+            "seconds_per_query": r.get("seconds_per_query"), "by_distance": r.get("by_distance", [])})
+        for f in r.get("failures", []):
+            failures.append(dict(f, scene=key, method=r["method"]))
+    doc = {"rows": data_rows, "failures": failures, "scenes": scenes}
+    title = "scalecert audit: %d rows, %d listed failures" % (len(data_rows), len(failures))
+    scripts = "\n".join('<script src="%s/%s"></script>' % (html.escape(assets), os.path.basename(s)) for s in SCRIPTS)
+    return TEMPLATE.replace("@TITLE@", html.escape(title)).replace("@SCRIPTS@", scripts).replace(
+        "@DATA@", json.dumps(doc, sort_keys=True).replace("</", "<\\/"))
+
+
+TEMPLATE = r"""<!DOCTYPE html>
+<html lang="en"><head><meta charset="utf-8"><title>@TITLE@</title>
+<style>
+body { font-family: sans-serif; margin: 1.5em; color: #222; }
+table { border-collapse: collapse; margin: 0.5em 0 1.5em; }
+td, th { border: 1px solid #ccc; padding: 3px 8px; text-align: right; }
+td:first-child, td:nth-child(2) { text-align: left; }
+#failures tr.f { cursor: pointer; }
+#failures tr.f:hover { background: #eef; }
+#view { width: 600px; height: 420px; border: 1px solid #ccc; }
+.chart { width: 900px; height: 380px; }
+#failure-pane { display: flex; gap: 1.5em; align-items: flex-start; }
+#failure-list { max-height: 480px; overflow: auto; }
+#detail { font-size: 85%; }
+body.only-view > *:not(#failure-pane), body.only-view #failure-list, body.only-view #detail,
+body.only-charts > *:not(.chart) { display: none; }
+</style>
+@SCRIPTS@
+</head><body>
+<h1>@TITLE@</h1>
+<div id="status">loading</div>
+<h2>Rows</h2><table id="rows"></table>
+<div id="chart-wrong" class="chart"></div>
+<div id="chart-distance" class="chart"></div>
+<h2>Failures</h2>
+<p>Each failure is a pair of doubles the method was asked, what it said and the exact verdict. Click
+one for its numbers and the two bodies at that pair (P1 blue, P2 orange, each part as its convex hull).</p>
+<div id="failure-pane">
+<div id="failure-list"><table id="failures"></table></div>
+<div><div id="view"></div><pre id="detail"></pre></div>
+</div>
+<script>
+"use strict";
+const D = @DATA@;
+// #view or #charts: that part of the page alone (the browser test's screenshots).
+if (location.hash === "#view") document.body.className = "only-view";
+if (location.hash === "#charts") document.body.className = "only-charts";
+const status = {charts: 0, view: 0};
+function say() {
+  document.getElementById("status").textContent = "charts drawn: " + status.charts + "; 3-D views drawn: " + status.view;
+}
+function cell(tr, text, tag) { const c = document.createElement(tag || "td"); c.textContent = text; tr.appendChild(c); }
+// The rows' table.
+const rt = document.getElementById("rows");
+let tr = rt.insertRow();
+for (const h of ["scene", "method", "eps", "queries", "wrong: said separated", "wrong: said intersecting", "µs per query"]) cell(tr, h, "th");
+for (const r of D.rows) {
+  tr = rt.insertRow();
+  for (const v of [r.scene.split("/").pop(), r.method, r.eps, r.queries, r.false_separated, r.false_overlapping,
+                   r.seconds_per_query == null ? "" : (1e6 * r.seconds_per_query).toPrecision(3)]) cell(tr, v);
+}
+// Charts: only with data; one colour and one marker per method.
+const colours = ["#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b", "#e377c2", "#17becf", "#7f7f7f", "#bcbd22"];
+const markers = ["circle", "square", "diamond", "triangle-up", "triangle-down", "cross", "x", "star", "hexagon", "pentagon"];
+const methods = [...new Set(D.rows.map(r => r.method))];
+const style = m => ({color: colours[methods.indexOf(m) % colours.length], symbol: markers[methods.indexOf(m) % markers.length]});
+const scenes = new Set(D.rows.map(r => r.scene)).size;
+if (D.rows.length) {
+  const sum = (m, k) => D.rows.filter(r => r.method === m).reduce((a, r) => a + r[k], 0);
+  Plotly.newPlot("chart-wrong", [
+    {type: "bar", name: "said separated (they meet)", x: methods, y: methods.map(m => sum(m, "false_separated")), marker: {color: "#d62728"}},
+    {type: "bar", name: "said intersecting (they are apart)", x: methods, y: methods.map(m => sum(m, "false_overlapping")), marker: {color: "#1f77b4"}}],
+    {title: "Wrong verdicts per method (" + scenes + " scene" + (scenes === 1 ? "" : "s") + ", " +
+            D.rows.reduce((a, r) => a + r.queries, 0) + " queries)", barmode: "group", yaxis: {title: "wrong verdicts"}},
+    {staticPlot: false}).then(() => { status.charts++; say(); });
+}
+const withDistance = D.rows.filter(r => r.by_distance.length);
+if (withDistance.length) {
+  const traces = methods.filter(m => withDistance.some(r => r.method === m)).map(m => {
+    const ks = withDistance.find(r => r.method === m).by_distance.map(b => b.k);
+    const frac = ks.map(k => { let w = 0, n = 0;
+      for (const r of withDistance.filter(r => r.method === m)) for (const b of r.by_distance) if (b.k === k) { w += b.wrong; n += b.pairs; }
+      return n ? w / n : null; });
+    const s = style(m);
+    return {type: "scatter", mode: "lines+markers", name: m, x: ks, y: frac, line: {color: s.color}, marker: {symbol: s.symbol, size: 9, color: s.color}};
+  });
+  Plotly.newPlot("chart-distance", traces,
+    {title: "Fraction wrong at relative distance 2^-k from the exact boundary (" + withDistance.length + " rows)",
+     xaxis: {title: "k"}, yaxis: {title: "fraction wrong", rangemode: "tozero"}}).then(() => { status.charts++; say(); });
+}
+// The failures, and the 3-D view of one.
+const ft = document.getElementById("failures");
+tr = ft.insertRow();
+for (const h of ["scene", "method", "rho1", "rho2", "said", "exact"]) cell(tr, h, "th");
+D.failures.forEach((f, i) => {
+  tr = ft.insertRow(); tr.className = "f"; tr.id = "failure-" + i;
+  for (const v of [f.scene.split("/").pop(), f.method, f.rho1, f.rho2, f.said, f.exact]) cell(tr, v);
+  tr.onclick = () => show(i);
+});
+let renderer = null;
+function show(i) {
+  const f = D.failures[i];
+  document.getElementById("detail").textContent = JSON.stringify(f, null, 1);
+  const geo = D.scenes[f.scene];
+  const view = document.getElementById("view");
+  if (!geo) { view.textContent = "no geometry: the scene file is not at hand, or names mesh files"; return; }
+  view.textContent = "";
+  const scene = new THREE.Scene();
+  scene.background = new THREE.Color(0xffffff);
+  const box = new THREE.Box3();
+  // P2 first and fainter, P1 drawn over it: a body inside the other stays in sight.
+  [[geo[1], f.rho2, 0xff7f0e, 0.35, 0], [geo[0], f.rho1, 0x1f77b4, 0.8, 1]].forEach(([obj, rho, colour, opacity, order]) => {
+    for (const part of obj.parts) {
+      const pts = part.map(v => new THREE.Vector3(...v.map((c, k) => obj.seed[k] + rho * (c - obj.seed[k]))));
+      const g = new THREE.ConvexBufferGeometry(pts);
+      const mesh = new THREE.Mesh(g, new THREE.MeshLambertMaterial({color: colour, transparent: true, opacity: opacity,
+                                                                     depthWrite: false}));
+      mesh.renderOrder = order;
+      scene.add(mesh);
+      scene.add(new THREE.LineSegments(new THREE.EdgesGeometry(g), new THREE.LineBasicMaterial({color: 0x333333})));
+      box.expandByObject(mesh);
+    }
+  });
+  scene.add(new THREE.AmbientLight(0xffffff, 0.6));
+  const light = new THREE.DirectionalLight(0xffffff, 0.6); light.position.set(1, 2, 3); scene.add(light);
+  const c = box.getCenter(new THREE.Vector3()), size = box.getSize(new THREE.Vector3()).length() || 1;
+  const camera = new THREE.PerspectiveCamera(45, view.clientWidth / view.clientHeight, size / 100, size * 10);
+  camera.up.set(0, 0, 1);  // z up, as robot scenes are written
+  camera.position.set(c.x + 1.1 * size, c.y - 1.3 * size, c.z + 0.5 * size); camera.lookAt(c);
+  if (renderer) renderer.dispose();
+  renderer = new THREE.WebGLRenderer({antialias: true});
+  renderer.setSize(view.clientWidth, view.clientHeight);
+  view.appendChild(renderer.domElement);
+  const controls = new THREE.OrbitControls(camera, renderer.domElement); controls.target.copy(c); controls.update();
+  const draw = () => renderer.render(scene, camera);
+  controls.addEventListener("change", draw);
+  draw();
+  status.view++; say();
+}
+if (D.failures.length) show(0);
+say();
+</script>
+</body></html>
+"""
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.strip().splitlines()[0])
+    ap.add_argument("audit", help="scalecert audit's JSON (--out)")
+    ap.add_argument("--out", required=True, help="the HTML page; its scripts go to OUT.assets/ beside it")
+    ap.add_argument("--failures", help="the audit's --failures directory (the family scenes' files)")
+    a = ap.parse_args()
+    try:
+        for s in SCRIPTS:
+            if not os.path.isfile(s):
+                raise InputError("%s is missing (tools/install-deps.sh installs python3-plotly and libjs-three)" % s)
+        rows = load_rows(a.audit)
+        out_dir = os.path.dirname(os.path.abspath(a.out))
+        if not os.path.isdir(out_dir):
+            raise InputError("%s: no such directory for --out" % out_dir)
+        assets = os.path.basename(a.out) + ".assets"
+        text = page(rows, a.failures, assets)
+        # The scripts, then the page: written beside it under temporary names, then renamed.
+        tmp = tempfile.mkdtemp(dir=out_dir, prefix=".report.")
+        try:
+            for s in SCRIPTS:
+                shutil.copyfile(s, os.path.join(tmp, os.path.basename(s)))
+            final = os.path.join(out_dir, assets)
+            if os.path.isdir(final) and not os.path.islink(final):
+                shutil.rmtree(final)
+            os.chmod(tmp, 0o755)
+            for s in SCRIPTS:
+                os.chmod(os.path.join(tmp, os.path.basename(s)), 0o644)
+            os.rename(tmp, final)
+        except OSError:
+            shutil.rmtree(tmp, ignore_errors=True)
+            raise
+        with tempfile.NamedTemporaryFile("w", dir=out_dir, delete=False, prefix=".report.", suffix=".html") as f:
+            f.write(text)
+        os.chmod(f.name, 0o644)
+        os.replace(f.name, a.out)
+    except (InputError, OSError) as e:
+        print("report: error: %s" % e, file=sys.stderr)
+        sys.exit(2)
+    print("report: wrote %s (%d bytes) and %s/" % (a.out, len(text.encode()), assets), file=sys.stderr)
+
+
+if __name__ == "__main__":
+    main()
