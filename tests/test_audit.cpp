@@ -2,9 +2,11 @@
 #include <boost/test/unit_test.hpp>
 
 #include "baselines/audit.hpp"
+#include "certify/claim.hpp"
 #include "certify/claims.hpp"
 #include "certify/classify.hpp"
 #include "files.hpp"
+#include "session/session.hpp"
 #include "support.hpp"
 
 #include <filesystem>
@@ -81,6 +83,57 @@ BOOST_AUTO_TEST_CASE(golden_data_is_deterministic_and_exact) {
     }
     fs::remove_all(a);
     fs::remove_all(b);
+}
+
+// The failure atlas's families, by hand at (ρ1, ρ2) = (1, 1), where each is built to be: a gap of
+// ε times the box's height between parallel faces (face-to-face); touching (touching, long-edge);
+// the cut cube's halves ε·n apart for an integer n, n_z in 1..3 and |n_x|, |n_y| <= 3, so that the
+// least difference of their points is ε·n itself (decomposition-gap); and a scene scaled by
+// k = 1024ε, whose distance is k times the one at k = 1 (scaled). `audit --atlas` runs them all.
+BOOST_AUTO_TEST_CASE(atlas_families_are_what_they_claim) {
+    auto at_one = [](const ExactScene& sc) {
+        Session session(sc, "atlas");
+        ConvexRules rules(session.claim_models(), Tolerance{});
+        TypedClaim c;
+        c.type = ClaimType::Distance;
+        c.rho1 = c.rho2 = Q(1);
+        return rules.judge(c);
+    };
+    std::set<std::string> seen;
+    for (const AtlasClass& a : atlas_classes()) {
+        seen.insert(a.family);
+        BOOST_TEST(!a.thread.empty());
+        for (int k : {a.ks.front(), a.ks.back()}) {
+            const Q eps(1, Z(1) << k);
+            Rng g(7);
+            const ExactScene sc = make_family_scene(a.family, eps, g);
+            const Judged j = at_one(sc);
+            BOOST_TEST_CONTEXT(a.family << " at 2^-" << k) {
+                if (a.family == "face-to-face") {
+                    Q top = sc.P[0].points[0][2];
+                    for (const Vec3q& v : sc.P[0].points) top = std::max(top, v[2]);
+                    BOOST_TEST(*j.exact_squared == (eps * 2 * top) * (eps * 2 * top));
+                } else if (a.family == "touching" || a.family == "long-edge") {
+                    BOOST_TEST(sgn(*j.exact_squared) == 0);
+                } else if (a.family == "decomposition-gap") {
+                    const Vec3q d = sub(j.exact_p2, j.exact_p1);
+                    for (int i = 0; i < 3; ++i) {
+                        const Q n = d[i] / eps;
+                        BOOST_TEST(n.get_den() == 1);
+                        BOOST_TEST((i < 2 ? abs(n) <= 3 : (n >= 1 && n <= 3)));
+                    }
+                    BOOST_TEST(*j.exact_squared == dot(d, d));
+                } else if (a.family == "scaled") {
+                    Rng g1(7);
+                    const Judged unit = at_one(make_family_scene(a.family, Q(1, 1024), g1));
+                    const Q scale = 1024 * eps;
+                    BOOST_TEST(*j.exact_squared == *unit.exact_squared * scale * scale);
+                    BOOST_TEST(sgn(*j.exact_squared) > 0);
+                }
+            }
+        }
+    }
+    BOOST_TEST(seen.size() == 5u);
 }
 
 BOOST_AUTO_TEST_CASE(small_audit_and_stability_sweep) {

@@ -97,17 +97,18 @@ void validate(const CampaignArgs& a) {
     for (const std::string& m : a.methods)
         if (m != "grid" && std::find(known.begin(), known.end(), m) == known.end())
             throw InputError("--methods: unknown method " + in_quotes(m));
-    if (a.scenes.empty() && a.family.empty())
-        throw InputError("audit: no scenes (give SCENES or --family with --sweep)");
+    if (a.scenes.empty() && a.family.empty() && !a.atlas)
+        throw InputError("audit: no scenes (give SCENES, --family with --sweep, or --atlas)");
 }
 
 std::vector<Shard> plan(const CampaignArgs& a) {
     std::vector<Shard> out;
     const int size = a.shard_size > 0 ? a.shard_size : a.golden ? 16 : 4;
-    auto ranges = [&](int k) {
+    auto ranges = [&](int k, int atlas = -1) {
         for (int first = 0; first < a.count; first += size) {
             Shard s{static_cast<int>(out.size())};
             s.k = k;
+            s.atlas = atlas;
             s.first = first;
             s.last = std::min(a.count, first + size);
             out.push_back(s);
@@ -121,6 +122,9 @@ std::vector<Shard> plan(const CampaignArgs& a) {
     if (a.golden && !a.family.empty()) ranges(0);
     if (!a.golden && !a.family.empty())
         for (int k = a.sweep_from; k <= a.sweep_to; ++k) ranges(k);
+    if (!a.golden && a.atlas)
+        for (size_t c = 0; c < atlas_classes().size(); ++c)
+            for (int k : atlas_classes()[c].ks) ranges(k, static_cast<int>(c));
     return out;
 }
 
@@ -353,10 +357,11 @@ std::string run_shard(const CampaignArgs& a, const Shard& s) {
         }
     } else {
         const Q eps(1, Z(1) << s.k);
+        const std::string& family = s.atlas >= 0 ? atlas_classes()[static_cast<size_t>(s.atlas)].family : a.family;
         for (int i = s.first; i < s.last; ++i) {
             Rng g(scene_seed(a.seed, s.k, i));
-            const std::string name = a.family + "-" + std::to_string(i);
-            const ExactScene sc = make_family_scene(a.family, eps, g);
+            const std::string name = family + "-" + std::to_string(i);
+            const ExactScene sc = make_family_scene(family, eps, g);
             auto r = a.auditor.run(name, sc, eps, a.methods, a.grid, a.by_distance, a.measures);
             // A family scene has no file: with --failures, the reproducers get one.
             if (!a.failures.empty() &&
@@ -531,6 +536,7 @@ std::string campaign_identity(const CampaignArgs& a, const Json& inputs) {
         j["methods"] = a.methods;
         j["grid"] = a.grid;
         j["sweep"] = Json::array({a.sweep_from, a.sweep_to});
+        j["atlas"] = a.atlas;
         if (!a.golden) j["measures"] = a.measures;
         j["by_distance"] = a.by_distance;
     }

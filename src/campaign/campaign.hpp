@@ -40,6 +40,7 @@ struct CampaignArgs {
                                      "bullet-gjk-epa", "double-envelope", "paper-tritri",   "grid"};
     std::vector<int> grid{16, 64, 256};
     int sweep_from = 0, sweep_to = 0;  // audit: ε = 2^-k, k in [sweep_from, sweep_to], with family
+    bool atlas = false;                // audit: also every atlas class (families.hpp) at its own ε
     std::string out, csv;              // audit: JSON (or standard output) and CSV files
     bool no_timing = false;            // audit: leave the timing columns out
     bool by_distance = false;          // audit: wrong verdicts by relative distance from the curve
@@ -68,6 +69,7 @@ struct Shard {
     int scene_file = -1;      // audit: an index into CampaignArgs::scenes; or -1 for a family range
     int k = 0;                // ε = 2^-k (audit sweeps); golden: 0
     int first = 0, last = 0;  // family scene indices [first, last)
+    int atlas = -1;           // audit: an index into atlas_classes() (the family), or -1 for CampaignArgs::family
     long scenes() const { return scene_file >= 0 ? 1 : last - first; }
 };
 std::vector<Shard> plan(const CampaignArgs& a);

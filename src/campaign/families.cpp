@@ -1,5 +1,7 @@
 #include "campaign/families.hpp"
 
+#include "numeric/exact.hpp"
+
 #include <cmath>
 
 namespace scalecert::internal {
@@ -53,8 +55,21 @@ std::vector<Vec3q> random_poly(Rng& g, int n, long r, const Vec3q& c) {
 const std::vector<std::string>& family_names() {
     static const std::vector<std::string> n{
         "random",          "parallel-faces", "nearly-equal-slopes", "nearly-parallel-edges", "vertex-vertex",
-        "far-from-origin", "sliver",         "near-sphere"};
+        "far-from-origin", "sliver",         "near-sphere",         "face-to-face",          "long-edge",
+        "scaled",          "touching",       "decomposition-gap"};
     return n;
+}
+
+const std::vector<AtlasClass>& atlas_classes() {
+    static const std::vector<AtlasClass> a{
+        {"face-to-face", {4, 16, 28, 40}, "face-to-face boxes near zero penetration: mujoco #3476, fcl #402, fcl #495"},
+        {"long-edge",
+         {3, 7, 10, 14},
+         "long edges against small depths (ratios 10^1 to 10^4): Jolt PR #2065, newton #3773"},
+        {"scaled", {0, 5, 10, 15, 20}, "one scene at scales 2^10 to 2^-10 (about 10^3 to 10^-3): mujoco_warp #1430"},
+        {"touching", {4, 16, 28, 40}, "bodies touching at (1, 1), tilted by an angle eps: drake #21234, drake #21673"},
+        {"decomposition-gap", {4, 16, 28, 40}, "two hulls of a cut cube, a gap eps apart along the cut: mujoco #3383"}};
+    return a;
 }
 
 std::string family_description(const std::string& name) {
@@ -68,6 +83,14 @@ std::string family_description(const std::string& name) {
     if (name == "far-from-origin") return "unit-size random polytopes at offsets of 10^6, seeds ε-perturbed";
     if (name == "sliver") return "a tetrahedron of height ε over a box";
     if (name == "near-sphere") return "many-vertex hulls of points near spheres (200 points; ε unused)";
+    if (name == "face-to-face")
+        return "a box on a box, turned about z by a random angle in doubles, a gap of ε times its height between faces";
+    if (name == "long-edge")
+        return "a small cube on the long edge of a bar 1/ε times longer than thick, turned in doubles";
+    if (name == "scaled") return "a tetrahedron beside a box, every coordinate times 1024ε";
+    if (name == "touching") return "a box tilted by ε radians (in doubles) resting on a box: they touch at (1, 1)";
+    if (name == "decomposition-gap")
+        return "the two hulls of a cube cut by a random plane through its centre, moved ε apart along its normal";
     throw InputError("--family: unknown family " + in_quotes(name));
 }
 
@@ -127,6 +150,70 @@ ExactScene make_family_scene(const std::string& name, const Q& eps, Rng& g) {
                                          Q(std::lround(1000 * r * std::sin(t))), Q(std::lround(1000 * u))});
             }
         }
+    } else if (name == "face-to-face" || name == "long-edge" || name == "touching") {
+        // Vertices as a program computes them: R·v + t in doubles (R about z by a random angle,
+        // and for "touching" also about x by ε), then taken exactly.
+        const double turn = 6.283185307179586 * static_cast<double>(g.next() >> 11) * 0x1.0p-53;
+        const double tilt = name == "touching" ? eps.get_d() : 0.0;
+        auto posed = [&](const std::vector<Vec3q>& pts, const Vec3q& t) {
+            const double cz = std::cos(turn), sz = std::sin(turn), cx = std::cos(tilt), sx = std::sin(tilt);
+            std::vector<Vec3q> out;
+            for (const Vec3q& v : pts) {
+                const double x = v[0].get_d(), y = v[1].get_d(), z = v[2].get_d();
+                const double y1 = cx * y - sx * z, z1 = sx * y + cx * z;  // about x by the tilt
+                out.push_back({exact_from_double(cz * x - sz * y1 + t[0].get_d()),
+                               exact_from_double(sz * x + cz * y1 + t[1].get_d()),
+                               exact_from_double(z1 + t[2].get_d())});
+            }
+            return out;
+        };
+        if (name == "long-edge") {
+            const Q len = 1 / eps;  // a bar of length 2/ε and thickness 2, on it a unit cube by one end
+            s.P[0].points = box(len, Q(1), Q(1), v3(Q(0), Q(0), Q(0)));
+            s.P[1].points = posed(box(qc(1, 2), qc(1, 2), qc(1, 2), v3(Q(0), Q(0), Q(0))),
+                                  v3(len * qc(g.uniform(1, 9), 10), Q(0), qc(3, 2)));
+        } else {
+            const Q hx = qc(g.uniform(2, 10), 10), hy = qc(g.uniform(2, 10), 10), hz = qc(g.uniform(1, 5), 10);
+            // Face to face: boxes of one size; touching: a table (half sides 2) under the tilted box,
+            // so that its lowest edge lies on the table's top.
+            s.P[0].points =
+                name == "touching" ? box(Q(2), Q(2), hz, v3(Q(0), Q(0), Q(0))) : box(hx, hy, hz, v3(Q(0), Q(0), Q(0)));
+            const Q gap = name == "face-to-face" ? eps * 2 * hz : Q(0);
+            std::vector<Vec3q> b =
+                posed(box(hx, hy, hz, v3(Q(0), Q(0), Q(0))), v3(qc(g.uniform(-5, 5), 20), Q(0), Q(0)));
+            // Raised so that its lowest vertex lies exactly on P1's top, plus the gap.
+            Q low = b[0][2];
+            for (const Vec3q& v : b) low = std::min(low, v[2]);
+            for (Vec3q& v : b) v[2] += hz - low + gap;
+            s.P[1].points = b;
+        }
+    } else if (name == "scaled") {
+        const Q k = 1024 * eps;
+        s.P[0].points = {{Q(0), Q(0), Q(0)}, {2 * k, Q(0), Q(0)}, {Q(0), 2 * k, Q(0)}, {Q(0), Q(0), 2 * k}};
+        s.P[1].points = box(k, k, k, v3(4 * k + k * qc(g.uniform(-5, 5), 10), k * qc(g.uniform(-5, 5), 10), k));
+    } else if (name == "decomposition-gap") {
+        // The cube [-1, 1]^3 cut by the plane n·x = 0 (n a random integer direction): each side's
+        // vertices and the cut points on its edges; the upper hull moved by ε·n.
+        const Vec3q n{Q(g.uniform(-3, 3)), Q(g.uniform(-3, 3)), Q(g.uniform(1, 3))};
+        const std::vector<Vec3q> c = box(Q(1), Q(1), Q(1), v3(Q(0), Q(0), Q(0)));
+        for (size_t a = 0; a < c.size(); ++a) {
+            const Q da = dot(n, c[a]);
+            (sgn(da) <= 0 ? s.P[0].points : s.P[1].points).push_back(c[a]);
+            if (sgn(da) == 0) s.P[1].points.push_back(c[a]);
+            for (size_t b = a + 1; b < c.size(); ++b) {
+                int diff = 0;
+                for (int k = 0; k < 3; ++k) diff += c[a][k] != c[b][k];
+                const Q db = dot(n, c[b]);
+                if (diff != 1 || sgn(da) * sgn(db) >= 0) continue;  // an edge the plane crosses inside
+                const Q t = da / (da - db);
+                Vec3q p;
+                for (int k = 0; k < 3; ++k) p[k] = c[a][k] + t * (c[b][k] - c[a][k]);
+                s.P[0].points.push_back(p);
+                s.P[1].points.push_back(p);
+            }
+        }
+        for (Vec3q& v : s.P[1].points)
+            for (int k = 0; k < 3; ++k) v[k] += eps * n[k];
     } else {
         family_description(name);  // throws for unknown names
     }

@@ -19,6 +19,15 @@ class Rng {
 };
 
 const std::vector<std::string>& family_names();
+
+// The failure atlas (audit --atlas): a family per class of failure users report, each with the ε
+// values (ε = 2^-k) that span the class, and the public thread it comes from.
+struct AtlasClass {
+    std::string family;
+    std::vector<int> ks;  // ε = 2^-k for each k
+    std::string thread;
+};
+const std::vector<AtlasClass>& atlas_classes();
 std::string family_description(const std::string& name);
 
 // Scene `index` of family `name` at degeneracy ε (ε > 0; smaller is more degenerate).

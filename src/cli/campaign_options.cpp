@@ -102,6 +102,10 @@ void add_audit_options(CLI::App* sub, internal::CampaignArgs& a) {
         ->delimiter(',')
         ->check(CLI::Range(2, 4096));
     sub->add_option("--family", a.family, "also audit a family over an eps sweep (with --sweep)");
+    sub->add_flag("--atlas", a.atlas,
+                  "also audit the failure atlas: a family per class of failure users report (face-to-face, "
+                  "long-edge, scaled, touching, decomposition-gap), each at its own eps values, --count scenes each "
+                  "(docs/audits.md)");
     sub->add_option("--sweep", a.sweep_from, "eps = 2^-K for K from this (0 to 1074) ...")->check(CLI::Range(0, 1074));
     sub->add_option("--sweep-to", a.sweep_to, "... to this (inclusive, 0 to 1074)")->check(CLI::Range(0, 1074));
     sub->add_option("--count", a.count, "scenes per eps in the sweep (1 to 10^6)")->check(CLI::Range(1, 1000000));
