@@ -2077,9 +2077,19 @@ BOOST_AUTO_TEST_CASE(audit_failures_are_reproducers) {
             "--failures " +
             (workdir() / "repro_family").string() + " --out " + (workdir() / "audit_family.json").string());
     BOOST_REQUIRE(c.status == 0);
+    // The stacked cubes again as a pair of meshes (--p1/--p2): the row and its scene are named c1-c2.
+    const fs::path c1 = write("c1.off", "OFF\n8 0 0\n0 0 0\n2 0 0\n0 2 0\n2 2 0\n0 0 2\n2 0 2\n0 2 2\n2 2 2\n"),
+                   c2 = write("c2.off", "OFF\n8 0 0\n0 0 3\n2 0 3\n0 2 3\n2 2 3\n0 0 5\n2 0 5\n0 2 5\n2 2 5\n");
+    Run m = run("audit --p1 " + c1.string() + " --p2 " + c2.string() +
+                " --i1 1/2,5/2 --i2 1/2,5/2 --by-distance --methods libccd-gjk --failures " +
+                (workdir() / "repro_meshes").string() + " --out " + (workdir() / "audit_meshes.json").string());
+    BOOST_REQUIRE(m.status == 0);
+    const nlohmann::json mesh_rows = nlohmann::json::parse(slurp(workdir() / "audit_meshes.json"));
+    BOOST_TEST(mesh_rows[0]["scene"] == "c1-c2");
+    BOOST_TEST(fs::exists(workdir() / "repro_meshes" / "c1-c2.scene.json"));
     const nlohmann::json rows = nlohmann::json::parse(slurp(out));
     int files = 0, checked_by_hand = 0;
-    for (const char* d : {"repro", "repro_parts", "repro_family"}) {
+    for (const char* d : {"repro", "repro_parts", "repro_family", "repro_meshes"}) {
         const nlohmann::json index = nlohmann::json::parse(slurp(workdir() / d / "index.json"));
         BOOST_TEST(index["format"] == "scalecert-audit-failures-1");
         for (const nlohmann::json& r : index["reproducers"]) {
@@ -2098,11 +2108,12 @@ BOOST_AUTO_TEST_CASE(audit_failures_are_reproducers) {
             for (size_t k = 0; k < n; ++k) {
                 nlohmann::json& x = cl["claims"][k];
                 std::string exact;
-                if (scene == cubes) {
+                const bool meshes = std::string(d) == "repro_meshes";
+                if (scene == cubes || meshes) {
                     const mpq_class s = mpq_class(x["rho1"].get<double>()) + mpq_class(x["rho2"].get<double>());
                     exact = s < 3 ? "separated" : s == 3 ? "touching" : "overlapping";
                     ++checked_by_hand;
-                    for (const nlohmann::json& row : rows)
+                    for (const nlohmann::json& row : meshes ? mesh_rows : rows)
                         if (row["method"] == r["method"]) BOOST_TEST(row["failures"][k]["exact"] == exact);
                 } else {
                     exact = x["verdict"] == "separated" ? "intersecting" : "separated";
@@ -2114,6 +2125,6 @@ BOOST_AUTO_TEST_CASE(audit_failures_are_reproducers) {
             BOOST_TEST(run("certify-fp " + scene + " " + fixed.string()).status == 0, claims);
         }
     }
-    BOOST_TEST(files >= 5);
-    BOOST_TEST(checked_by_hand >= 50);
+    BOOST_TEST(files >= 6);
+    BOOST_TEST(checked_by_hand >= 60);
 }

@@ -71,7 +71,10 @@ std::string sha256_hex(const std::string& bytes) {
 // ---- planning ----------------------------------------------------------------------------------
 
 void validate(const CampaignArgs& a) {
-    note_inputs(a.scenes);  // before any output: none may replace a scene, however they are ordered
+    std::vector<std::string> files;
+    for (const std::string& p : a.scenes)
+        if (!a.given.count(p)) files.push_back(p);
+    note_inputs(files);  // before any output: none may replace a scene, however they are ordered
     if (a.golden) {
         if (a.family.empty() && a.scenes.empty()) throw InputError("golden: give SCENES, or --family");
         if (!a.family.empty()) family_description(a.family);
@@ -349,7 +352,14 @@ std::string run_shard(const CampaignArgs& a, const Shard& s) {
         ExactScene sc;
         // The scene file and the meshes it names, as read: a resumed run checks them against the
         // run's inputs, so that no shard computed from older contents is merged.
-        j["inputs"] = reading([&] { sc = load_scene(p, a.opt); });  // its errors name the file already
+        const auto given = a.given.find(p);
+        if (given != a.given.end()) {  // read already (its meshes noted as inputs then)
+            sc = given->second;
+            if (!a.failures.empty())
+                write_file_atomically(a.failures + "/" + p + ".scene.json", dump(scene_file_json(sc)));
+        } else {
+            j["inputs"] = reading([&] { sc = load_scene(p, a.opt); });  // its errors name the file already
+        }
         try {
             rows = a.auditor.run(p, sc, Q(0), a.methods, a.grid, a.by_distance, a.measures);
         } catch (const InputError& e) {
@@ -396,13 +406,16 @@ void write_failures(const CampaignArgs& a, const std::vector<AuditRow>& rows) {
     Json index = Json::array();
     for (const AuditRow& r : rows) {
         if (r.failures.empty()) continue;
-        const bool file = files.count(r.scene) > 0;
-        const std::string scene = file ? r.scene : family_scene_file(a.failures, r.scene, r.eps);
+        const bool given = a.given.count(r.scene) > 0, file = files.count(r.scene) > 0 && !given;
+        const std::string scene = file    ? r.scene
+                                  : given ? a.failures + "/" + r.scene + ".scene.json"
+                                          : family_scene_file(a.failures, r.scene, r.eps);
         // NAME.METHOD.claims.json, NAME the scene file's stem; a second scene of that stem gets -2, ...
         std::string method;
         for (char ch : r.method) method += std::isalnum(static_cast<unsigned char>(ch)) || ch == '-' ? ch : '_';
         std::string stem = std::filesystem::path(scene).filename().string();  // NAME.json, NAME.eps-P_Q.scene.json
-        stem.resize(stem.size() - (file ? std::filesystem::path(scene).extension().string().size() : 11));
+        stem.resize(stem.size() -
+                    (file ? std::filesystem::path(scene).extension().string().size() : 11));  // ".scene.json"
         std::string name = stem + "." + method + ".claims.json";
         for (int k = 2; !used.insert(name).second; ++k)
             name = stem + "-" + std::to_string(k) + "." + method + ".claims.json";

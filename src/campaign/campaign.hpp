@@ -10,6 +10,7 @@
 #include "io/scene.hpp"
 
 #include <functional>
+#include <map>
 
 #include <cstdint>
 #include <string>
@@ -35,7 +36,10 @@ struct CampaignArgs {
     std::string eps_text = "1/1048576";  // golden
     std::string dir;                     // golden: the output directory
     GoldenPoints points;                 // golden: which pairs (--verticals, --offsets)
-    std::vector<std::string> scenes;     // audit: scene files
+    std::vector<std::string> scenes;     // audit: scene files, or names of `given` scenes
+    // audit: scenes read already (a pair of meshes, --p1/--p2), by the name they have in `scenes`;
+    // with --failures each is written as DIR/NAME.scene.json for its reproducers.
+    std::map<std::string, ExactScene> given;
     std::vector<std::string> methods{"libccd-gjk",     "libccd-mpr",      "fcl-gjk-libccd", "fcl-gjk-indep",
                                      "bullet-gjk-epa", "double-envelope", "paper-tritri",   "grid"};
     std::vector<int> grid{16, 64, 256};

@@ -150,6 +150,33 @@ void SceneArgs::shift_positionals(std::initializer_list<std::string*> rest) {
 
 std::string SceneArgs::name() const { return path.empty() ? "--p1 " + mesh[0] + " --p2 " + mesh[1] : path; }
 
+bool SceneArgs::given() const {
+    for (int i = 0; i < 2; ++i)
+        if (!mesh[i].empty() || !interval[i].empty() || !seed[i].empty() || !pose[i].empty()) return true;
+    return false;
+}
+
+std::string SceneArgs::pair_name() const {
+    auto stem = [](const std::string& p) {
+        std::string b = p.substr(p.find_last_of('/') + 1);
+        const size_t dot = b.find_last_of('.');
+        return dot == std::string::npos || dot == 0 ? b : b.substr(0, dot);
+    };
+    return stem(mesh[0]) + "-" + stem(mesh[1]);
+}
+
+void add_mesh_pair(CLI::App* sub, SceneArgs& pair, const std::string& what) {
+    sub->add_option("--p1", pair.mesh[0], "P1 from a mesh file (.off .obj .ply .stl), with --p2, --i1, --i2: " + what);
+    sub->add_option("--p2", pair.mesh[1], "P2 from a mesh file");
+    sub->add_option("--i1", pair.interval[0], "I1 as LO,HI (fractions exact: 1/2,3; decimals as --numbers says)");
+    sub->add_option("--i2", pair.interval[1], "I2 as LO,HI");
+    sub->add_option("--seed1", pair.seed[0], "P1's seed as X,Y,Z (default: the mean of its vertices)");
+    sub->add_option("--seed2", pair.seed[1], "P2's seed as X,Y,Z");
+    sub->add_option("--pose1", pair.pose[0], "P1 at a pose [R | t]: 12 numbers, rows R11,R12,R13,T1,...")
+        ->type_name("R|t");
+    sub->add_option("--pose2", pair.pose[1], "P2 at a pose [R | t]")->type_name("R|t");
+}
+
 void add_out(CLI::App* sub, std::string& out) {
     sub->add_option("--out", out, "write the output to FILE (atomically) instead of standard output")
         ->type_name("FILE")

@@ -31,12 +31,18 @@ struct SceneArgs {
     // The same, or else the exact scene in *full (a scene of parts, or points that do not fit
     // IntPoints): the file is read once either way.
     std::shared_ptr<const internal::CompactScene> load_compact(internal::ExactScene* full) const;
-    std::string name() const;  // the scene file, or "--p1 A --p2 B": prefixes geometric errors
+    std::string name() const;       // the scene file, or "--p1 A --p2 B": prefixes geometric errors
+    bool given() const;             // any of the pair's options given
+    std::string pair_name() const;  // "A-B": the meshes' file names without their extensions
     // With --p1/--p2 there is no SCENE, but the first positional word lands there: move it and
     // the words after it one place on, into the command's own positionals (in order), when the
     // last of those is empty. Then SCENE is empty, or the words were too many and load() says so.
     void shift_positionals(std::initializer_list<std::string*> rest);
 };
+
+// --p1, --p2, --i1, --i2, --seed1, --seed2, --pose1, --pose2 on a command that takes SCENES (golden,
+// audit): a pair of meshes as one more scene; `what` ends --p1's help.
+void add_mesh_pair(CLI::App* sub, SceneArgs& pair, const std::string& what);
 
 // The readers' remarks on a scene (an OBJ with groups read as one convex object, decimals that the
 // reading did not take as written), once each on stderr.

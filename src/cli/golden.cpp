@@ -21,17 +21,9 @@ Command add_golden(CLI::App& app) {
         "exact answers near the touching curve of your scenes, or of a family's, as JSON and CSV files in a directory");
     add_golden_options(sub, *a);
     sub->add_option("--scene", a->scenes, "a scene file, as SCENES (may be repeated)")->type_name("FILE");
-    sub->add_option("--p1", pair->mesh[0],
-                    "P1 from a mesh file (.off .obj .ply .stl), with --p2, --i1, --i2: golden data for the pair, "
-                    "named P1-P2 by the files' names (its scene is DIR/P1-P2.scene.json)");
-    sub->add_option("--p2", pair->mesh[1], "P2 from a mesh file");
-    sub->add_option("--i1", pair->interval[0], "I1 as LO,HI (fractions exact: 1/2,3; decimals as --numbers says)");
-    sub->add_option("--i2", pair->interval[1], "I2 as LO,HI");
-    sub->add_option("--seed1", pair->seed[0], "P1's seed as X,Y,Z (default: the mean of its vertices)");
-    sub->add_option("--seed2", pair->seed[1], "P2's seed as X,Y,Z");
-    sub->add_option("--pose1", pair->pose[0], "P1 at a pose [R | t]: 12 numbers, rows R11,R12,R13,T1,...")
-        ->type_name("R|t");
-    sub->add_option("--pose2", pair->pose[1], "P2 at a pose [R | t]")->type_name("R|t");
+    add_mesh_pair(sub, *pair,
+                  "golden data for the pair, named P1-P2 by the files' names (its "
+                  "scene is DIR/P1-P2.scene.json)");
     example(sub,
             "Examples:\n  scalecert golden --family nearly-equal-slopes --count 10 --eps 1/1024 --dir golden/\n"
             "  scalecert golden certificates/scenes/tetra_box_switch.json --dir golden/\n"
@@ -41,20 +33,11 @@ Command add_golden(CLI::App& app) {
                 // A pair of meshes: read (and refused) before anything is created, its scene then
                 // written into the directory and taken as one of SCENES.
                 std::optional<std::pair<std::string, std::string>> mesh_scene;
-                const bool meshes = !pair->mesh[0].empty() || !pair->mesh[1].empty() || !pair->interval[0].empty() ||
-                                    !pair->interval[1].empty() || !pair->seed[0].empty() || !pair->seed[1].empty() ||
-                                    !pair->pose[0].empty() || !pair->pose[1].empty();
-                if (meshes) {
+                if (pair->given()) {
                     pair->opt = a->opt;
                     const ExactScene sc = pair->load();
-                    auto stem = [](const std::string& p) {
-                        std::string b = p.substr(p.find_last_of('/') + 1);
-                        const size_t dot = b.find_last_of('.');
-                        return dot == std::string::npos || dot == 0 ? b : b.substr(0, dot);
-                    };
                     // Written as golden writes a scene's copy (NAME.scene.json, the same bytes): three files.
-                    const std::string path =
-                        a->dir + "/" + stem(pair->mesh[0]) + "-" + stem(pair->mesh[1]) + ".scene.json";
+                    const std::string path = a->dir + "/" + pair->pair_name() + ".scene.json";
                     mesh_scene.emplace(path, dump(scene_file_json(sc)));
                     a->scenes.push_back(path);
                 }
