@@ -2056,6 +2056,69 @@ BOOST_AUTO_TEST_CASE(objects_at_poses) {
                  "P2.pose: a moved coordinate has more than 16384 bits");
 }
 
+// The user's own program as a method (audit --command): tests/data/commands/cubes_verdicts.py on
+// the stacked cubes (touching where ρ1 + ρ2 = 3). Answering with the exact sum of the doubles it
+// has no failure; summing in float32 its failures are the ones a count over the pairs it was
+// asked predicts: said separated where s = ρ1 + ρ2 >= 3 exactly, intersecting where s < 3 (a
+// float32 "touching" is neither), and near the boundary every pair not exactly touching where it
+// said the wrong side or touching.
+BOOST_AUTO_TEST_CASE(audit_runs_the_users_program) {
+    const std::string cubes = std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/stacked_cubes.json",
+                      prog = "/usr/bin/python3 " + std::string(SCALECERT_SOURCE_DIR) +
+                             "/tests/data/commands/cubes_verdicts.py";
+    const fs::path copy = workdir() / "pairs-asked.json";
+    for (const std::string mode : {"exact", "float32"}) {
+        const fs::path out = workdir() / ("command-" + mode + ".json");
+        const Run r =
+            run("audit " + cubes + " --methods libccd-gjk --by-distance --command 'PAIRS_COPY=" + copy.string() + " " +
+                prog + " " + mode + "' --out " + out.string());
+        BOOST_TEST_REQUIRE(r.status == 0, r.err);
+        const nlohmann::json rows = nlohmann::json::parse(slurp(out));
+        const nlohmann::json* row = nullptr;
+        for (const auto& x : rows)
+            if (x["method"].get<std::string>().rfind("command (", 0) == 0) row = &x;
+        BOOST_TEST_REQUIRE(row != nullptr);
+        const nlohmann::json pairs = nlohmann::json::parse(slurp(copy));
+        const size_t queries = (*row)["queries"].get<size_t>();
+        BOOST_TEST_REQUIRE(pairs.size() > queries);
+        long sep = 0, over = 0, near = 0;
+        for (size_t i = 0; i < pairs.size(); ++i) {
+            const double a = pairs[i][0].get<double>(), b = pairs[i][1].get<double>();
+            const mpq_class s = mpq_class(a) + mpq_class(b);
+            const int exact = s < 3 ? 1 : s == 3 ? 0 : -1;
+            const float f = static_cast<float>(a) + static_cast<float>(b);
+            const mpq_class t = mode == "exact" ? s : mpq_class(static_cast<double>(f));
+            const int said = t < 3 ? 1 : t == 3 ? 0 : -1;
+            if (i < queries) {
+                sep += said > 0 && exact <= 0;
+                over += said < 0 && exact > 0;
+            } else if (exact != 0) {
+                near += (said > 0) != (exact > 0) || said == 0;
+            }
+        }
+        long near_wrong = 0;
+        for (const auto& b : (*row)["by_distance"]) near_wrong += b["wrong"].get<long>();
+        BOOST_TEST((*row)["false_separated"].get<long>() == sep);
+        BOOST_TEST((*row)["false_overlapping"].get<long>() == over);
+        BOOST_TEST(near_wrong == near);
+        if (mode == "exact")
+            BOOST_TEST(sep + over + near == 0);
+        else
+            BOOST_TEST(near > 100);
+    }
+    // A program that fails, or writes what cannot be read as one verdict claim per pair: one line, exit 2.
+    const std::string no_claims = "sh " + write("no-claims.sh", "echo '{}' > \"$3\"\n").string(),
+                      too_few = "sh " + write("too-few.sh", "echo '{\"claims\": []}' > \"$3\"\n").string();
+    for (const std::string& bad : {std::string("false"), no_claims, too_few}) {
+        const Run e = run("audit " + cubes + " --methods libccd-gjk --command '" + bad + "' --out " +
+                          (workdir() / "never.json").string());
+        BOOST_TEST(e.status == 2, bad);
+        BOOST_TEST(std::count(e.err.begin(), e.err.end(), '\n') == 1, e.err);
+        BOOST_TEST(e.err.find("--command") != std::string::npos, e.err);
+        BOOST_TEST(!fs::exists(workdir() / "never.json"));
+    }
+}
+
 // audit --failures: every reproducer replays. The stacked cubes touch on ρ1 + ρ2 = 3 exactly, so
 // a listed failure's exact verdict is the sign of 3 − (ρ1 + ρ2) over the doubles' exact values
 // (derived here, not by the engine); each claims file makes certify-fp exit 1 with every claim

@@ -1,13 +1,22 @@
 #include "baselines/audit.hpp"
 
+#include "certify/certificate.hpp"
+#include "certify/region_certificate.hpp"
 #include "curve/closed_forms.hpp"
 #include "geometry/measures.hpp"
+#include "io/files.hpp"
+#include "io/strict_json.hpp"
 
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
+#include <sys/wait.h>
+#include <unistd.h>
 
 namespace scalecert::internal {
 
@@ -145,6 +154,88 @@ void wrong_by_distance(const fp::Method& mm, const DistancePairs& p, AuditRow& r
     }
 }
 
+// The user's own program as a method (audit --command CMD): run once per scene as
+// `CMD SCENE.json PAIRS.json CLAIMS.json` (a private temporary folder), where SCENE.json is the scene
+// exactly, PAIRS.json {"format": "scalecert-pairs-1", "pairs": [[rho1, rho2], ...]} the doubles the
+// audit asks, and CLAIMS.json what it writes: a claims file (scalecert-claims-1) of one verdict claim
+// per pair, in order, at those doubles. Its verdicts are judged as the built-in methods' are.
+// A command that fails, or claims that cannot be read as that, are refused in one line.
+class CommandMethod : public fp::Method {
+  public:
+    CommandMethod(const std::string& command, const ExactScene& s, const std::vector<std::pair<double, double>>& pairs)
+        : command_(command) {
+        char dir_template[] = "/tmp/scalecert-command-XXXXXX";
+        const char* d = mkdtemp(dir_template);
+        if (!d) throw InputError("--command: cannot make a temporary folder");
+        const std::string dir = d;
+        struct Remove {
+            std::string dir;
+            ~Remove() {
+                std::error_code ec;
+                std::filesystem::remove_all(dir, ec);
+            }
+        } remove{dir};
+        const std::string scene = dir + "/scene.json", asked = dir + "/pairs.json", out = dir + "/claims.json";
+        Json pj = Json::array();
+        for (const auto& [a, b] : pairs) pj.push_back(Json::array({a, b}));
+        std::ofstream(scene) << dump(scene_file_json(s));
+        std::ofstream(asked) << dump(Json{{"format", "scalecert-pairs-1"}, {"pairs", std::move(pj)}});
+        const std::string cmd = command + " '" + scene + "' '" + asked + "' '" + out + "'";
+        const int status = std::system(cmd.c_str());
+        if (status == -1 || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
+            throw InputError("--command: " + in_quotes(command) + " failed (" +
+                             (status != -1 && WIFEXITED(status) ? "exit status " + std::to_string(WEXITSTATUS(status))
+                                                                : std::string("killed or not run")) +
+                             ")");
+        const std::string text = read_regular_file(out, "--command's claims file", kMaxSceneBytes);
+        JNode doc;
+        try {
+            doc = parse_strict_json(text);
+        } catch (const JsonError& e) {
+            throw InputError("--command: its claims file is not JSON (" + e.what + " at byte " + std::to_string(e.pos) +
+                             ")");
+        }
+        const JNode* claims = doc.kind == JNode::Object ? doc.find("claims") : nullptr;
+        if (!claims || claims->kind != JNode::Array || claims->items.size() != pairs.size())
+            throw InputError("--command: its claims file must hold \"claims\": one verdict claim per pair asked (" +
+                             std::to_string(pairs.size()) + ")");
+        for (size_t i = 0; i < pairs.size(); ++i) {
+            const JNode& c = claims->items[i];
+            const std::string at = "--command: claims[" + std::to_string(i) + "]";
+            auto field = [&](const char* k) {
+                const JNode* f = c.kind == JNode::Object ? c.find(k) : nullptr;
+                if (!f) throw InputError(at + " has no " + in_quotes(k));
+                return f;
+            };
+            const JNode *r1 = field("rho1"), *r2 = field("rho2"), *v = field("verdict");
+            if (r1->kind != JNode::Number || r2->kind != JNode::Number ||
+                std::strtod(r1->text.c_str(), nullptr) != pairs[i].first ||
+                std::strtod(r2->text.c_str(), nullptr) != pairs[i].second)
+                throw InputError(at + " is not at the pair asked (" + to_shortest(pairs[i].first) + ", " +
+                                 to_shortest(pairs[i].second) + ")");
+            if (v->kind != JNode::String) throw InputError(at + ".verdict is not a string");
+            const std::string& w = v->text;
+            if (w == "separated")
+                said_.push_back(1);
+            else if (w == "touching")
+                said_.push_back(0);
+            else if (w == "overlapping" || w == "intersecting")
+                said_.push_back(-1);
+            else
+                throw InputError(at + ".verdict: expected separated, touching, overlapping or intersecting, not " +
+                                 in_quotes(w));
+            index_[pairs[i]] = i;
+        }
+    }
+    std::string name() const override { return "command (" + command_ + ")"; }
+    int classify(double r1, double r2) const override { return said_.at(index_.at({r1, r2})); }
+
+  private:
+    std::string command_;
+    std::vector<int> said_;
+    std::map<std::pair<double, double>, size_t> index_;
+};
+
 // The convex audit: the curve, its pairs and every convex method (and the grid).
 std::vector<AuditRow> audit_convex(const std::string& name, const ExactScene& s, const Q& eps,
                                    const std::vector<std::string>& methods, const std::vector<int>& grid_ns,
@@ -182,7 +273,15 @@ std::vector<AuditRow> audit_convex(const std::string& name, const ExactScene& s,
     std::vector<int> verdicts(r1.size());
     for (const std::string& meth : methods) {
         if (meth == "grid") continue;
-        std::unique_ptr<fp::Method> mm = fp::make_method(meth, m, f);
+        std::unique_ptr<fp::Method> mm;
+        if (meth.rfind(kCommandMethod, 0) == 0) {  // the user's program, asked every pair at once
+            std::vector<std::pair<double, double>> pairs;
+            for (size_t i = 0; i < r1.size(); ++i) pairs.push_back({r1[i], r2[i]});
+            for (size_t i = 0; i < near.x.size(); ++i) pairs.push_back({near.x[i], near.y[i]});
+            mm = std::make_unique<CommandMethod>(meth.substr(std::string(kCommandMethod).size()), s, pairs);
+        } else {
+            mm = fp::make_method(meth, m, f);
+        }
         if (!mm) throw InputError("--methods: unknown method " + in_quotes(meth));
         AuditRow r;
         r.scene = name;

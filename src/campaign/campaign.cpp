@@ -98,7 +98,7 @@ void validate(const CampaignArgs& a) {
             "audit: this build has no floating-point baselines (configure with SCALECERT_BUILD_BASELINES=ON)");
     const std::vector<std::string> known = a.auditor.method_names();
     for (const std::string& m : a.methods)
-        if (m != "grid" && std::find(known.begin(), known.end(), m) == known.end())
+        if (m != "grid" && m.rfind(kCommandMethod, 0) != 0 && std::find(known.begin(), known.end(), m) == known.end())
             throw InputError("--methods: unknown method " + in_quotes(m));
     if (a.scenes.empty() && a.family.empty() && !a.atlas)
         throw InputError("audit: no scenes (give SCENES, --family with --sweep, or --atlas)");

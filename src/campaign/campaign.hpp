@@ -28,6 +28,9 @@ struct Auditor {
         run;
 };
 
+// audit --command CMD: the method "command=CMD", the user's own program (baselines/audit.cpp).
+constexpr const char* kCommandMethod = "command=";
+
 struct CampaignArgs {
     bool golden = false;  // golden data, else an audit
     std::string family;
@@ -45,6 +48,7 @@ struct CampaignArgs {
     std::vector<int> grid{16, 64, 256};
     int sweep_from = 0, sweep_to = 0;  // audit: ε = 2^-k, k in [sweep_from, sweep_to], with family
     bool atlas = false;                // audit: also every atlas class (families.hpp) at its own ε
+    std::string command;               // audit: the user's program, run as the method kCommandMethod + command
     std::string out, csv;              // audit: JSON (or standard output) and CSV files
     bool no_timing = false;            // audit: leave the timing columns out
     bool by_distance = false;          // audit: wrong verdicts by relative distance from the curve

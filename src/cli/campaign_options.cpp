@@ -102,6 +102,15 @@ void add_audit_options(CLI::App* sub, internal::CampaignArgs& a) {
         ->delimiter(',')
         ->check(CLI::Range(2, 4096));
     sub->add_option("--family", a.family, "also audit a family over an eps sweep (with --sweep)");
+    sub->add_option(
+           "--command", a.command,
+           "audit your own program beside --methods: run once per scene as CMD SCENE.json PAIRS.json CLAIMS.json, it "
+           "reads the scene and the pairs of doubles asked and writes one verdict claim per pair (docs/audits.md)")
+        ->type_name("CMD");
+    // After --methods (whatever the order on the line): the user's program is one method more.
+    sub->parse_complete_callback([&a] {
+        if (!a.command.empty()) a.methods.push_back(internal::kCommandMethod + a.command);
+    });
     sub->add_flag("--atlas", a.atlas,
                   "also audit the failure atlas: a family per class of failure users report (face-to-face, "
                   "long-edge, scaled, touching, decomposition-gap), each at its own eps values, --count scenes each "
