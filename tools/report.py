@@ -3,8 +3,8 @@
 
 Usage: tools/report.py AUDIT.json --out report.html [--failures DIR]
 
-The page has, from the audit's rows: a table per scene and method (queries, wrong verdicts each
-way, time per query), a chart of the wrong verdicts per method, a chart of the fraction wrong by
+The page has, from the audit's rows: the failure atlas's table (per class and method, when the
+audit ran --atlas), a table per scene and method (queries, wrong verdicts each way, time per query), a chart of the wrong verdicts per method, a chart of the fraction wrong by
 relative distance 2^-k from the exact boundary (audits run with --by-distance), and the list of
 failures (the first 50 a row keeps: the doubles asked, what the method said, the exact verdict).
 A click on a failure shows its numbers and a 3-D view of the two bodies scaled to that pair, when
@@ -135,7 +135,12 @@ body.only-charts > *:not(.chart) { display: none; }
 </head><body>
 <h1>@TITLE@</h1>
 <div id="status">loading</div>
+<div id="atlas-section"><h2>Failure atlas</h2>
+<p>Per class of reported failure (audit --atlas; docs/audits.md, "The failure atlas") and method:
+wrong verdicts among the queries, and among the pairs near the exact boundary.</p>
+<table id="atlas"></table></div>
 <h2>Rows</h2><table id="rows"></table>
+
 <div id="chart-wrong" class="chart"></div>
 <div id="chart-distance" class="chart"></div>
 <h2>Failures</h2>
@@ -164,6 +169,29 @@ for (const r of D.rows) {
   tr = rt.insertRow();
   for (const v of [r.scene.split("/").pop(), r.method, r.eps, r.queries, r.false_separated, r.false_overlapping,
                    r.seconds_per_query == null ? "" : (1e6 * r.seconds_per_query).toPrecision(3)]) cell(tr, v);
+}
+// The atlas table: rows of the atlas's families, per class and method.
+const classes = ["face-to-face", "long-edge", "scaled", "touching", "decomposition-gap"];
+const atlas = {};
+for (const r of D.rows) {
+  const cls = r.scene.replace(/-[0-9]+$/, "");
+  if (!classes.includes(cls)) continue;
+  const a = atlas[cls + "\u0000" + r.method] = atlas[cls + "\u0000" + r.method] || {cls, method: r.method, scenes: 0, queries: 0, wrong: 0, pairs: 0, near: 0};
+  a.scenes++; a.queries += r.queries; a.wrong += r.false_separated + r.false_overlapping;
+  for (const b of r.by_distance) { a.pairs += b.pairs; a.near += b.wrong; }
+}
+const at = document.getElementById("atlas");
+const atlasRows = Object.values(atlas).sort((x, y) => classes.indexOf(x.cls) - classes.indexOf(y.cls) || (x.method < y.method ? -1 : 1));
+if (atlasRows.length) {
+  tr = at.insertRow();
+  for (const h of ["class", "method", "scenes", "wrong verdicts", "near the boundary"]) cell(tr, h, "th");
+  for (const a of atlasRows) {
+    tr = at.insertRow();
+    for (const v of [a.cls, a.method, a.scenes, a.wrong + " / " + a.queries + " (" + (100 * a.wrong / a.queries).toFixed(1) + "%)",
+                     a.pairs ? a.near + " / " + a.pairs : "—"]) cell(tr, v);
+  }
+} else {
+  document.getElementById("atlas-section").style.display = "none";
 }
 // Charts: only with data; one colour and one marker per method.
 const colours = ["#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b", "#e377c2", "#17becf", "#7f7f7f", "#bcbd22"];
