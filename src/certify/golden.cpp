@@ -199,7 +199,9 @@ void emit(Rows& rows, const Rect& r, const std::vector<std::pair<Q, std::pair<Q,
     };
     for (const auto& [x, s] : samples)
         for (const auto& [where, a, b] : around(x, s.first, points.offsets, r)) one(a, b, where, s.second);
-    for (int c = 0; c < 4; ++c) one(c & 1 ? r.hi[0] : r.lo[0], c & 2 ? r.hi[1] : r.lo[1], "corner", "corner");
+    for (int c = 0; c < 4; ++c)  // (each once: a side of the rectangle may have no length)
+        if (!((c & 1) && r.hi[0] == r.lo[0]) && !((c & 2) && r.hi[1] == r.lo[1]))
+            one(c & 1 ? r.hi[0] : r.lo[0], c & 2 ? r.hi[1] : r.lo[1], "corner", "corner");
     if (centre) one((r.lo[0] + r.hi[0]) / 2, (r.lo[1] + r.hi[1]) / 2, "centre", "centre");
 }
 
