@@ -330,3 +330,26 @@ BOOST_AUTO_TEST_CASE(the_command_refuses_bad_input_in_one_line_and_repeats_its_b
                        "moved_wrong\n") != std::string::npos);
     BOOST_TEST(std::count(c1.begin(), c1.end(), '\n') == 5);
 }
+
+BOOST_AUTO_TEST_CASE(the_panda_finger_scenes_at_one_by_hand) {
+    // panda.xml's fingertip pads 2 to 5 span y in [0.002 − 0.002, 0.002 + 0.002] = [0, 0.004] in
+    // the finger's frame; the finger mesh's points all have y > 0.0024 and pad 1 starts at 0.0015.
+    // At (1, 1) the left finger sits at y = +0.001 and the right, turned half a turn about z, at
+    // −0.001 (JSON numbers: the double 0.001): the pads' faces y = ±0.001 are the nearest, 2 × 0.001
+    // apart (their x and z ranges meet). The cube's face y = 0.02 meets the left finger's pads
+    // opened to y = 0.02: touching, and overlapping once the cube grows.
+    const Q mm(0.001);
+    const ExactScene fingers = load("compound/panda_fingers.json");
+    BOOST_TEST_REQUIRE(fingers.P[0].parts.size() == 6u);
+    CompoundJudge f(fingers, "fingers");
+    const CompoundJudge::Distance d = f.distance(Q(1), Q(1));
+    BOOST_TEST(d.squared == 4 * mm * mm);
+    BOOST_TEST((d.part1 >= 2 && d.part2 >= 2));
+    BOOST_TEST(d.p1[1] == mm);
+    BOOST_TEST(d.p2[1] == -mm);
+    const ExactScene cube = load("compound/panda_finger_cube.json");
+    CompoundJudge c(cube, "cube");
+    BOOST_TEST(static_cast<int>(c.verdict(Q(1), Q(1)).verdict) == 1);
+    BOOST_TEST(static_cast<int>(c.verdict(Q(1), Q(1) + Q(1, 1000)).verdict) == 2);
+    BOOST_TEST(static_cast<int>(c.verdict(Q(1), Q(1) - Q(1, 1000)).verdict) == 0);
+}

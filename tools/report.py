@@ -8,8 +8,9 @@ audit ran --atlas), a table per scene and method (queries, wrong verdicts each w
 relative distance 2^-k from the exact boundary (audits run with --by-distance), and the list of
 failures (the first 50 a row keeps: the doubles asked, what the method said, the exact verdict).
 A click on a failure shows its numbers and a 3-D view of the two bodies scaled to that pair, when
-the scene's geometry can be read: a scene file with its vertices inline (objects of one part or
-of parts), found by the row's scene path or, for a family scene, in the --failures directory.
+the scene's geometry can be read: a scene file with its vertices inline or in OBJ or OFF files
+(objects of one part or of parts, at their poses), found by the row's scene path or, for a family
+scene, in the --failures directory.
 Plotly (python3-plotly) draws the charts and three.js (libjs-three) the bodies, each part as its
 convex hull; both scripts are copied beside the page into REPORT.html.assets/, so the page works
 offline and moved with that folder. Bad input: one line on stderr, exit 2, nothing written.
@@ -43,24 +44,73 @@ def exact(v):
         raise InputError("not a number: %r" % (v,))
 
 
+def mesh_points(path, groups):
+    """The vertices of an OBJ or OFF file (display only: doubles), as one part or, with groups,
+    a part per OBJ group in order of appearance; None for other formats."""
+    ext = os.path.splitext(path)[1].lower()
+    with open(path) as f:
+        lines = f.read().splitlines()
+    if ext == ".off":
+        words = [w for line in lines for w in line.split("#", 1)[0].split()]
+        if not words or not words[0].endswith("OFF"):
+            return None
+        n = int(words[1])
+        return [[[float(c) for c in words[4 + 3 * k:7 + 3 * k]] for k in range(n)]]
+    if ext != ".obj":
+        return None
+    pts, parts, current = [], {}, None
+    for line in lines:
+        w = line.split()
+        if not w:
+            continue
+        if w[0] == "v":
+            pts.append([float(c) for c in w[1:4]])
+        elif w[0] in ("g", "o"):
+            current = " ".join(w[1:])
+        elif w[0] == "f" and groups:
+            part = parts.setdefault(current, [])
+            for ref in w[1:]:
+                k = int(ref.split("/")[0])
+                part.append(pts[k - 1] if k > 0 else pts[k])
+    return list(parts.values()) if groups else [pts]
+
+
 def bodies(scene_path):
-    """[(parts, seed)] for P1 and P2 from a scene file with inline vertices, or None."""
+    """[(parts, seed)] for P1 and P2 from a scene file, with each object's pose applied, or None.
+    Parts come inline or from OBJ and OFF files (a part per group with parts_from_groups)."""
     try:
         with open(scene_path) as f:
             s = json.load(f)
+        here = os.path.dirname(scene_path)
+
+        def points(obj, groups):
+            if "vertices" in obj:
+                return [[[float(exact(c)) for c in v] for v in obj["vertices"]]]
+            name = obj.get("mesh", obj.get("off"))
+            return mesh_points(os.path.join(here, name), groups)
+
         out = []
         for key in ("P1", "P2"):
             obj = s[key]
-            parts = [p["vertices"] for p in obj["parts"]] if "parts" in obj else [obj["vertices"]]
-            parts = [[[float(exact(c)) for c in v] for v in part] for part in parts]
+            if "parts" in obj:
+                parts = [points(p, False)[0] for p in obj["parts"]]
+            else:
+                parts = points(obj, bool(obj.get("parts_from_groups")))
+            if parts is None or not all(parts):
+                return None
             if "seed" in obj:
                 seed = [float(exact(c)) for c in obj["seed"]]
             else:  # the mean of the vertices, as scalecert takes it
                 pts = [v for part in parts for v in part]
                 seed = [sum(p[i] for p in pts) / len(pts) for i in range(3)]
+            if "pose" in obj:  # each point v becomes R v + t, the seed too
+                m = [[float(exact(c)) for c in row] for row in obj["pose"]]
+                move = lambda v: [sum(m[i][k] * v[k] for k in range(3)) + m[i][3] for i in range(3)]
+                parts = [[move(v) for v in part] for part in parts]
+                seed = move(seed)
             out.append({"parts": parts, "seed": seed})
         return out
-    except (OSError, ValueError, KeyError, TypeError, InputError):
+    except (OSError, ValueError, KeyError, TypeError, IndexError, InputError):
         return None
 
 
@@ -237,7 +287,7 @@ function show(i) {
   document.getElementById("detail").textContent = JSON.stringify(f, null, 1);
   const geo = D.scenes[f.scene];
   const view = document.getElementById("view");
-  if (!geo) { view.textContent = "no geometry: the scene file is not at hand, or names mesh files"; return; }
+  if (!geo) { view.textContent = "no geometry: the scene file is not at hand, or names STL or PLY files"; return; }
   view.textContent = "";
   const scene = new THREE.Scene();
   scene.background = new THREE.Color(0xffffff);
