@@ -19,6 +19,20 @@ browse() {  # chromium headless, the page at URL; its other arguments before
   --out audit.json 2>/dev/null || bad "audit"
 $PY "$SRC/tools/report.py" audit.json --out report.html 2>/dev/null || bad "report.py"
 [ -s report.html ] && [ -s report.html.assets/three.min.js ] || bad "report files"
+# The bodies the 3-D view draws, from a scene of mesh parts at poses (panda_fingers: the right
+# finger is the left one turned half a turn about z, (x, y, z) -> (-x, -y, z), each moved 0.001
+# along its own y): the same six parts, each point mirrored, and the mesh part's 185 points.
+$PY - "$SRC" <<'PYEOF' || bad "bodies of a posed scene with mesh parts"
+import importlib.util, sys
+spec = importlib.util.spec_from_file_location("report", sys.argv[1] + "/tools/report.py")
+r = importlib.util.module_from_spec(spec); spec.loader.exec_module(r)
+b = r.bodies(sys.argv[1] + "/certificates/scenes/compound/panda_fingers.json")
+left, right = b
+assert len(left["parts"]) == len(right["parts"]) == 6 and len(left["parts"][0]) == 185
+for pl, pr in zip(left["parts"], right["parts"]):
+    assert all(q == [-p[0], -p[1], p[2]] for p, q in zip(pl, pr))
+assert left["parts"][2][0][1] == 0.001 and left["seed"] == [0, 0.016, 0.0784] and right["seed"][1] == -0.016
+PYEOF
 # Bad input: one line, exit 2, nothing written.
 echo '{"not": "an audit"}' > bogus.json
 $PY "$SRC/tools/report.py" bogus.json --out never.html 2>err.txt; st=$?
