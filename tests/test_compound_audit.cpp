@@ -353,3 +353,34 @@ BOOST_AUTO_TEST_CASE(the_panda_finger_scenes_at_one_by_hand) {
     BOOST_TEST(static_cast<int>(c.verdict(Q(1), Q(1) + Q(1, 1000)).verdict) == 2);
     BOOST_TEST(static_cast<int>(c.verdict(Q(1), Q(1) - Q(1, 1000)).verdict) == 0);
 }
+
+BOOST_AUTO_TEST_CASE(a_bullet_margin_inflates_the_shapes_and_the_rows_record_it) {
+    // Stacked cubes: P1(r1) reaches z = 1 + r1 and P2(r2) starts at z = 4 − r2, a gap of 3 − r1 − r2
+    // along z (their x and y ranges always meet). A collision margin m puts a skin of m around each
+    // shape, so Bullet finds a contact where the gap is below 2m: at each separated sample with
+    // 0 < gap < 2m it says intersecting, and it is wrong nowhere else (no sample lies near 2m).
+    const Audited a = samples_of("stacked_cubes.json", 200, 32);  // the audit's samples
+    const Q m(1, 8);
+    long predicted = 0;
+    for (const CompoundSample& c : a.samples) {
+        const Q gap = 3 - q(c.r1) - q(c.r2);
+        BOOST_TEST_REQUIRE(abs(Q(gap - 2 * m)) > Q(1, 1000));
+        if (sgn(gap) > 0 && gap < 2 * m) ++predicted;
+    }
+    MethodSettings st;
+    st.bullet_margin = 0.125;
+    st.fcl_gjk_tolerance = 1e-5;
+    const std::vector<AuditRow> rows =
+        audit_scene("cubes", a.scene, Q(0), {"bullet-compound", "fcl-compound-indep"}, {}, false, false, st);
+    BOOST_TEST_REQUIRE(rows.size() == 2u);
+    BOOST_TEST(predicted > 100);
+    BOOST_TEST(rows[0].false_overlapping == predicted);
+    BOOST_TEST(rows[0].false_separated == 0);
+    BOOST_TEST((rows[0].settings == std::vector<std::pair<std::string, double>>{{"bullet-margin", 0.125}}));
+    BOOST_TEST(rows[1].settings.size() == 2u);
+    BOOST_TEST(rows[1].settings[0].first == "fcl-gjk-tolerance");
+    BOOST_TEST(rows[1].settings[0].second == 1e-5);
+    // With no margin (the default) the same samples are judged as before: none is 2m from contact.
+    BOOST_TEST(audit_scene("cubes", a.scene, Q(0), {"bullet-compound"}, {}, false, false)[0].false_overlapping <
+               predicted);
+}

@@ -239,13 +239,14 @@ class CommandMethod : public fp::Method {
 // The convex audit: the curve, its pairs and every convex method (and the grid).
 std::vector<AuditRow> audit_convex(const std::string& name, const ExactScene& s, const Q& eps,
                                    const std::vector<std::string>& methods, const std::vector<int>& grid_ns,
-                                   bool by_distance, bool measures) {
+                                   bool by_distance, bool measures, const MethodSettings& settings) {
     using Clock = std::chrono::steady_clock;
     auto t_exact = Clock::now();
     HullModel m = build_model(s);
     TouchingCurve c = build_curve(m);
     double exact_seconds = std::chrono::duration<double>(Clock::now() - t_exact).count();
     fp::FpScene f = fp::to_fp(s);
+    f.settings = settings;
     // Query pairs (doubles) and their exact verdicts.
     std::vector<double> r1, r2;
     Rng g(12345);
@@ -286,6 +287,7 @@ std::vector<AuditRow> audit_convex(const std::string& name, const ExactScene& s,
         AuditRow r;
         r.scene = name;
         r.method = mm->name();
+        r.settings = fp::settings_of(r.method, settings);
         r.eps = eps;
         r.queries = static_cast<long>(r1.size());
         auto t0 = Clock::now();
@@ -317,6 +319,7 @@ std::vector<AuditRow> audit_convex(const std::string& name, const ExactScene& s,
             AuditRow r;
             r.scene = name;
             r.method = "grid+bisection (libccd-gjk)";
+            r.settings = fp::settings_of("libccd-gjk", settings);
             r.eps = eps;
             r.has_curve = true;
             r.grid_n = n;
@@ -354,6 +357,7 @@ std::vector<AuditRow> audit_convex(const std::string& name, const ExactScene& s,
             // pairs' closed-form lines.
             AuditRow a = r;
             a.method = "grid+analytical (libccd-gjk)";
+            a.settings = fp::settings_of("libccd-gjk", settings);
             auto t1 = Clock::now();
             std::vector<size_t> pair;
             for (size_t i = 0; i < gc.rho1.size(); ++i) {
@@ -387,7 +391,7 @@ std::vector<AuditRow> audit_convex(const std::string& name, const ExactScene& s,
 
 std::vector<AuditRow> audit_scene(const std::string& name, const ExactScene& s, const Q& eps,
                                   const std::vector<std::string>& methods, const std::vector<int>& grid_ns,
-                                  bool by_distance, bool measures) {
+                                  bool by_distance, bool measures, const MethodSettings& settings) {
     const std::vector<std::string> cn = fp::compound_method_names();
     std::vector<std::string> convex, compound;
     for (const std::string& m : methods)
@@ -404,9 +408,9 @@ std::vector<AuditRow> audit_scene(const std::string& name, const ExactScene& s, 
     }
     std::vector<AuditRow> rows;
     if (!convex.empty() || (compound.empty() && !p1 && !p2))
-        rows = audit_convex(name, s, eps, convex, grid_ns, by_distance, measures);
+        rows = audit_convex(name, s, eps, convex, grid_ns, by_distance, measures, settings);
     if (!compound.empty()) {
-        std::vector<AuditRow> c = audit_compound(name, s, eps, compound, by_distance, measures);
+        std::vector<AuditRow> c = audit_compound(name, s, eps, compound, by_distance, measures, settings);
         rows.insert(rows.end(), c.begin(), c.end());
     }
     return rows;

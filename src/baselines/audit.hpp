@@ -17,7 +17,7 @@ namespace scalecert::internal {
 // (InputError, before any work).
 std::vector<AuditRow> audit_scene(const std::string& name, const ExactScene& s, const Q& eps,
                                   const std::vector<std::string>& methods, const std::vector<int>& grid_ns,
-                                  bool by_distance = false, bool measures = true);
+                                  bool by_distance = false, bool measures = true, const MethodSettings& settings = {});
 // ---- Objects made of convex parts (compound_audit.cpp) -----------------------------------------
 
 // A point at which the methods are judged: the exact verdict (0 separated, 1 touching,
@@ -48,10 +48,12 @@ std::vector<int> score_compound(const fp::Method& m, const std::vector<CompoundS
                                 AuditRow& row);
 // The compound audit of a scene: the region and its labelled boundary (CompoundSession), the
 // samples, every method's verdicts, and where a method measures and its verdict is right, its
-// distances against the exact ones (CompoundJudge::distance). InputError for an unknown method,
-// or when the region's union is not formed (past kMaxUnionPolygons pair polygons).
+// distances against the exact ones (CompoundJudge::distance); the methods run with `settings`.
+// InputError for an unknown method, or when the region's union is not formed (past
+// kMaxUnionPolygons pair polygons).
 std::vector<AuditRow> audit_compound(const std::string& name, const ExactScene& s, const Q& eps,
-                                     const std::vector<std::string>& methods, bool by_distance, bool measures);
+                                     const std::vector<std::string>& methods, bool by_distance, bool measures,
+                                     const MethodSettings& settings = {});
 // The doubles the methods see: each part's points (nearest doubles) and its exact hull's faces.
 fp::CompoundFp compound_fp(const CompoundJudge& judge);
 

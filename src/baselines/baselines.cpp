@@ -47,15 +47,18 @@ void center(const void* obj, ccd_vec3_t* out) {
     for (int k = 0; k < 3; ++k) out->v[k] = s.p->seed[k];
 }
 
-// Both polytopes through the same support and centre functions; at most 500 iterations.
-ccd_t ccd_settings() {
+// Both polytopes through the same support and centre functions, with the audit's libccd settings.
+ccd_t ccd_settings(const MethodSettings& s) {
     ccd_t ccd;
     CCD_INIT(&ccd);
+    ccd.max_iterations = s.ccd_max_iterations;
+    ccd.epa_tolerance = s.ccd_epa_tolerance;
+    ccd.mpr_tolerance = s.ccd_mpr_tolerance;
+    ccd.dist_tolerance = s.ccd_dist_tolerance;
     ccd.support1 = support;
     ccd.support2 = support;
     ccd.center1 = center;
     ccd.center2 = center;
-    ccd.max_iterations = 500;
     return ccd;
 }
 
@@ -65,7 +68,7 @@ class Libccd : public Method {
     std::string name() const override { return mpr_ ? "libccd-mpr" : "libccd-gjk"; }
     int classify(double r1, double r2) const override {
         Scaled a{&s_.P[0], r1}, b{&s_.P[1], r2};
-        const ccd_t ccd = ccd_settings();
+        const ccd_t ccd = ccd_settings(s_.settings);
         int hit = mpr_ ? ccdMPRIntersect(&a, &b, &ccd) : ccdGJKIntersect(&a, &b, &ccd);
         return hit ? -1 : 1;
     }
@@ -73,7 +76,7 @@ class Libccd : public Method {
     std::optional<Measure> measure(double r1, double r2, bool separated) const override {
         if (separated) return std::nullopt;
         Scaled a{&s_.P[0], r1}, b{&s_.P[1], r2};
-        const ccd_t ccd = ccd_settings();
+        const ccd_t ccd = ccd_settings(s_.settings);
         ccd_real_t depth = 0;
         ccd_vec3_t dir, pos;
         const int r = mpr_ ? ccdMPRPenetration(&a, &b, &ccd, &depth, &dir, &pos)
@@ -150,13 +153,13 @@ namespace {
 // ends the loop: what a program without a broad phase does.
 class LibccdParts : public Method {
   public:
-    explicit LibccdParts(const CompoundFp& s) {
+    explicit LibccdParts(const CompoundFp& s) : settings_(s.settings) {
         for (int i = 0; i < 2; ++i)
             for (const CompoundFp::Part& p : s.parts[i]) parts_[i].push_back(Polytope{p.pts, s.seed[i]});
     }
     std::string name() const override { return "libccd-gjk-parts"; }
     int classify(double r1, double r2) const override {
-        const ccd_t ccd = ccd_settings();
+        const ccd_t ccd = ccd_settings(settings_);
         for (const Polytope& A : parts_[0])
             for (const Polytope& B : parts_[1]) {
                 Scaled a{&A, r1}, b{&B, r2};
@@ -166,9 +169,22 @@ class LibccdParts : public Method {
     }
 
   private:
+    MethodSettings settings_;
     std::vector<Polytope> parts_[2];
 };
 }  // namespace
+
+std::vector<std::pair<std::string, double>> settings_of(const std::string& method, const MethodSettings& s) {
+    if (method.rfind("libccd-", 0) == 0)
+        return {{"ccd-max-iterations", static_cast<double>(s.ccd_max_iterations)},
+                {"ccd-epa-tolerance", s.ccd_epa_tolerance},
+                {"ccd-mpr-tolerance", s.ccd_mpr_tolerance},
+                {"ccd-dist-tolerance", s.ccd_dist_tolerance}};
+    if (method.rfind("fcl-", 0) == 0)
+        return {{"fcl-gjk-tolerance", s.fcl_gjk_tolerance}, {"fcl-distance-tolerance", s.fcl_distance_tolerance}};
+    if (method.rfind("bullet-", 0) == 0) return {{"bullet-margin", s.bullet_margin}};
+    return {};
+}
 
 std::unique_ptr<Method> make_compound_method(const std::string& name, const CompoundFp& s) {
     if (name == "bullet-compound") return make_fcl_bullet_compound(s, 0);

@@ -2,6 +2,7 @@
 // estimate the touching curve. They read the scene as doubles (the nearest double to each exact
 // coordinate), as a floating-point program would. Nothing here is on the certified path.
 #pragma once
+#include "campaign/audit_table.hpp"
 #include "curve/contact_lines.hpp"
 
 #include <array>
@@ -21,6 +22,7 @@ struct Polytope {
 struct FpScene {
     Polytope P[2];
     double lo[2], hi[2];
+    MethodSettings settings;  // the methods' own settings, which each reads where it runs
 };
 FpScene to_fp(const ExactScene& s);
 
@@ -80,6 +82,7 @@ struct CompoundFp {
     std::vector<Part> parts[2];
     D3 seed[2];
     double lo[2], hi[2];
+    MethodSettings settings;  // as FpScene's
 };
 // The compound methods (their verdicts: the objects collide when any part pair does):
 //   bullet-compound      Bullet's btCompoundShape of btConvexHullShape children (margin 0), each
@@ -94,6 +97,8 @@ struct CompoundFp {
 //   libccd-gjk-parts     libccd's GJK looped over every part pair, stopping at the first that meets.
 std::unique_ptr<Method> make_compound_method(const std::string& name, const CompoundFp& s);
 std::vector<std::string> compound_method_names();
+// The settings a method of that name runs with (MethodSettings, by option name): its rows record them.
+std::vector<std::pair<std::string, double>> settings_of(const std::string& method, const MethodSettings& s);
 // The FCL and Bullet ones, from the module (fcl_bullet.cpp): kind 0 Bullet, 1 FCL with libccd's
 // GJK, 2 FCL with its own GJK.
 std::unique_ptr<Method> make_fcl_bullet_compound(const CompoundFp& s, int kind);

@@ -199,7 +199,8 @@ std::vector<int> score_compound(const fp::Method& m, const std::vector<CompoundS
 }
 
 std::vector<AuditRow> audit_compound(const std::string& name, const ExactScene& s, const Q& eps,
-                                     const std::vector<std::string>& methods, bool by_distance, bool measures) {
+                                     const std::vector<std::string>& methods, bool by_distance, bool measures,
+                                     const MethodSettings& settings) {
     using Clock = std::chrono::steady_clock;
     // Every method is known before any work.
     const std::vector<std::string> known = fp::compound_method_names();
@@ -215,7 +216,8 @@ std::vector<AuditRow> audit_compound(const std::string& name, const ExactScene& 
     const CompoundBoundary b = label_boundary(r, session.scene());
     CompoundJudge judge(session.scene(), name);
     const std::vector<CompoundSample> samples = compound_samples(judge, b);
-    const fp::CompoundFp f = compound_fp(judge);
+    fp::CompoundFp f = compound_fp(judge);
+    f.settings = settings;
     std::vector<std::optional<Q>> squared(samples.size());  // exact squared distances, once for all methods
     std::vector<AuditRow> rows;
     for (const std::string& meth : methods) {
@@ -223,6 +225,7 @@ std::vector<AuditRow> audit_compound(const std::string& name, const ExactScene& 
         AuditRow row;
         row.scene = name;
         row.method = mm->name();
+        row.settings = fp::settings_of(row.method, settings);
         row.eps = eps;
         const auto t0 = Clock::now();
         const std::vector<int> said = score_compound(*mm, samples, by_distance, row);

@@ -48,6 +48,7 @@ class Fcl : public Method {
             b(shape(1, r2), fcl::Transform3d::Identity());
         fcl::CollisionRequestd req;
         req.gjk_solver_type = type_;
+        req.gjk_tolerance = s_.settings.fcl_gjk_tolerance;
         fcl::CollisionResultd res;
         fcl::collide(&a, &b, req, res);
         return res.isCollision() ? -1 : 1;
@@ -62,6 +63,7 @@ class Fcl : public Method {
         if (separated) {
             fcl::DistanceRequestd req(true);
             req.gjk_solver_type = type_;
+            req.distance_tolerance = s_.settings.fcl_distance_tolerance;
             fcl::DistanceResultd res;
             fcl::distance(&a, &b, req, res);
             if (!(res.min_distance >= 0)) return std::nullopt;
@@ -72,6 +74,7 @@ class Fcl : public Method {
         }
         fcl::CollisionRequestd req(1, true);
         req.gjk_solver_type = type_;
+        req.gjk_tolerance = s_.settings.fcl_gjk_tolerance;
         fcl::CollisionResultd res;
         fcl::collide(&a, &b, req, res);
         if (res.numContacts() == 0) return std::nullopt;
@@ -96,7 +99,7 @@ class Bullet : public Method {
             const D3& c = s.P[i].seed;
             for (const D3& p : s.P[i].pts) shape_[i].addPoint(btVector3(p[0] - c[0], p[1] - c[1], p[2] - c[2]), false);
             shape_[i].recalcLocalAabb();
-            shape_[i].setMargin(0);  // no collision margin: the shapes exactly as given
+            shape_[i].setMargin(s.settings.bullet_margin);  // 0 by default: the shapes exactly as given
             xf_[i].setIdentity();
             xf_[i].setOrigin(btVector3(c[0], c[1], c[2]));
         }
@@ -160,13 +163,13 @@ class BulletCompound : public Method {
                 auto h = std::make_unique<btConvexHullShape>();
                 for (const D3& p : part.pts) h->addPoint(btVector3(p[0] - c[0], p[1] - c[1], p[2] - c[2]), false);
                 h->recalcLocalAabb();
-                h->setMargin(0);
+                h->setMargin(s.settings.bullet_margin);
                 btTransform t;
                 t.setIdentity();
                 compound_[i]->addChildShape(t, h.get());
                 hulls_[i].push_back(std::move(h));
             }
-            compound_[i]->setMargin(0);
+            compound_[i]->setMargin(s.settings.bullet_margin);
             btTransform xf;
             xf.setIdentity();
             xf.setOrigin(btVector3(c[0], c[1], c[2]));
@@ -264,6 +267,7 @@ class FclCompound : public Method {
         Scene sc(*this, r1, r2);
         fcl::DefaultCollisionData<double> data;
         data.request.gjk_solver_type = type_;
+        data.request.gjk_tolerance = s_.settings.fcl_gjk_tolerance;
         sc.manager[0].collide(&sc.manager[1], &data, fcl::DefaultCollisionFunction<double>);
         return data.result.isCollision() ? -1 : 1;
     }
@@ -273,6 +277,7 @@ class FclCompound : public Method {
         Nearest data;
         data.request.enable_nearest_points = true;
         data.request.gjk_solver_type = type_;
+        data.request.distance_tolerance = s_.settings.fcl_distance_tolerance;
         sc.manager[0].distance(&sc.manager[1], &data, nearest);
         if (!data.any || !(data.least >= 0) || !std::isfinite(data.least)) return std::nullopt;
         Measure m;

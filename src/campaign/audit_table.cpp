@@ -1,5 +1,6 @@
 #include "campaign/audit_table.hpp"
 
+#include <cmath>
 #include <cstdio>
 
 namespace scalecert::internal {
@@ -82,6 +83,11 @@ Json audit_json(const std::vector<AuditRow>& rows, bool timing) {
     Json a = Json::array();
     for (const AuditRow& r : rows) {
         Json o{{"scene", r.scene}, {"eps", to_exact_string(r.eps)}, {"method", r.method}};
+        for (const auto& [key, value] : r.settings)  // an iteration limit as the integer it is
+            if (value == std::floor(value) && std::fabs(value) < 0x1p53)
+                o["settings"][key] = static_cast<long long>(value);
+            else
+                o["settings"][key] = value;
         if (r.has_curve) {
             o["grid_n"] = r.grid_n;
             if (timing) o["seconds_per_curve"] = r.seconds_per_curve;

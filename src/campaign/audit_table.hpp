@@ -9,6 +9,17 @@
 
 namespace scalecert::internal {
 
+// The floating-point methods' own settings (audit options, docs/audits.md): each method reads the
+// ones it has, and its rows record them. The defaults are FCL's and libccd's own, except libccd's
+// iteration limit (unlimited by default; 500 here) and Bullet's margin (0: the shapes as given).
+struct MethodSettings {
+    double bullet_margin = 0;                // every Bullet shape's collision margin
+    double fcl_gjk_tolerance = 1e-6;         // FCL's CollisionRequest::gjk_tolerance
+    double fcl_distance_tolerance = 1e-6;    // FCL's DistanceRequest::distance_tolerance
+    unsigned long ccd_max_iterations = 500;  // libccd's ccd_t::max_iterations
+    double ccd_epa_tolerance = 1e-4, ccd_mpr_tolerance = 1e-4, ccd_dist_tolerance = 1e-6;  // libccd's ccd_t
+};
+
 struct AuditRow {
     std::string scene, method;
     Q eps;
@@ -44,6 +55,8 @@ struct AuditRow {
              moved_wrong = 0;
     };
     std::optional<OnBoundary> on_boundary;
+    // The settings the method ran with (by option name, e.g. "bullet-margin"): JSON "settings".
+    std::vector<std::pair<std::string, double>> settings;
     // Where the method's verdicts were wrong (the counts above), the first kMaxFailures of them in
     // the audit's order: (ρ1, ρ2) as the doubles it was asked at, what it said (+1 separated, −1
     // intersecting) and the exact verdict at those doubles (0 separated, 1 touching, 2

@@ -189,10 +189,16 @@ Json row_json(const AuditRow& r) {
                                       r.on_boundary->said_touching, r.on_boundary->said_overlapping,
                                       r.on_boundary->moved, r.on_boundary->moved_wrong})
                        : Json()},
-        {"failures", [&] {
+        {"failures",
+         [&] {
              Json a = Json::array();
              for (const AuditRow::Failure& f : r.failures)
                  a.push_back(Json::array({num_json(f.rho1), num_json(f.rho2), f.said, f.exact}));
+             return a;
+         }()},
+        {"settings", [&] {
+             Json a = Json::array();
+             for (const auto& [key, value] : r.settings) a.push_back(Json::array({key, num_json(value)}));
              return a;
          }()}};
 }
@@ -234,6 +240,8 @@ AuditRow row_of(const Json& j) {
     if (j.contains("failures"))
         for (const Json& f : j.at("failures"))
             r.failures.push_back({num_of(f.at(0)), num_of(f.at(1)), f.at(2).get<int>(), f.at(3).get<int>()});
+    if (j.contains("settings"))
+        for (const Json& x : j.at("settings")) r.settings.push_back({x.at(0).get<std::string>(), num_of(x.at(1))});
     return r;
 }
 
@@ -361,7 +369,7 @@ std::string run_shard(const CampaignArgs& a, const Shard& s) {
             j["inputs"] = reading([&] { sc = load_scene(p, a.opt); });  // its errors name the file already
         }
         try {
-            rows = a.auditor.run(p, sc, Q(0), a.methods, a.grid, a.by_distance, a.measures);
+            rows = a.auditor.run(p, sc, Q(0), a.methods, a.grid, a.by_distance, a.measures, a.settings);
         } catch (const InputError& e) {
             throw InputError(p + ": " + e.what());
         }
@@ -372,7 +380,7 @@ std::string run_shard(const CampaignArgs& a, const Shard& s) {
             Rng g(scene_seed(a.seed, s.k, i));
             const std::string name = family + "-" + std::to_string(i);
             const ExactScene sc = make_family_scene(family, eps, g);
-            auto r = a.auditor.run(name, sc, eps, a.methods, a.grid, a.by_distance, a.measures);
+            auto r = a.auditor.run(name, sc, eps, a.methods, a.grid, a.by_distance, a.measures, a.settings);
             // A family scene has no file: with --failures, the reproducers get one.
             if (!a.failures.empty() &&
                 std::any_of(r.begin(), r.end(), [](const AuditRow& x) { return !x.failures.empty(); }))

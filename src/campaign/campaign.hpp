@@ -19,12 +19,14 @@
 namespace scalecert::internal {
 
 // What an audit runs: the floating-point methods' names, and the rows of one scene (name, scene,
-// ε, methods, grid resolutions, by_distance, measures). The baselines provide it (baselines/audit.hpp:
-// baseline_auditor); a build without them has none, and its audits are refused.
+// ε, methods, grid resolutions, by_distance, measures, the methods' settings). The baselines
+// provide it (baselines/audit.hpp: baseline_auditor); a build without them has none, and its
+// audits are refused.
 struct Auditor {
     std::function<std::vector<std::string>()> method_names;
     std::function<std::vector<AuditRow>(const std::string&, const ExactScene&, const Q&,
-                                        const std::vector<std::string>&, const std::vector<int>&, bool, bool)>
+                                        const std::vector<std::string>&, const std::vector<int>&, bool, bool,
+                                        const MethodSettings&)>
         run;
 };
 
@@ -57,8 +59,9 @@ struct CampaignArgs {
     // with wrong verdicts, the family scenes they happened on, and index.json.
     std::string failures;
     ReadOptions opt;
-    Auditor auditor;     // audit: the methods (none without the baselines)
-    int shard_size = 0;  // family scenes per shard; 0: 16 for golden, 4 for audits
+    MethodSettings settings;  // audit: the methods' own settings
+    Auditor auditor;          // audit: the methods (none without the baselines)
+    int shard_size = 0;       // family scenes per shard; 0: 16 for golden, 4 for audits
 };
 
 // audit --failures DIR: for each row with wrong verdicts, DIR/NAME.METHOD.claims.json (verdict

@@ -1,6 +1,9 @@
 #include "campaign_options.hpp"
 #include "file_name.hpp"
 
+#include <cmath>
+#include <string>
+
 #ifdef SCALECERT_WITH_BASELINES
 #include "baselines/audit.hpp"
 #endif
@@ -86,6 +89,27 @@ void add_golden_options(CLI::App* sub, internal::CampaignArgs& a) {
         ->check(file_name());
 }
 
+namespace {
+// A finite number above `lo` (strictly, or at least `lo`): the methods' settings.
+CLI::Validator finite_number(double lo, bool strict) {
+    return CLI::Validator(
+        [lo, strict](std::string& v) {
+            double x = 0;
+            size_t used = 0;
+            try {
+                x = std::stod(v, &used);
+            } catch (const std::exception&) {
+                used = 0;
+            }
+            if (used != v.size() || v.empty() || !std::isfinite(x) || (strict ? !(x > lo) : !(x >= lo)))
+                return std::string("not a finite number ") + (strict ? "above " : "of at least ") +
+                       (lo == 0 ? "0" : std::to_string(lo)) + ": " + v;
+            return std::string();
+        },
+        "NUMBER");
+}
+}  // namespace
+
 void add_audit_options(CLI::App* sub, internal::CampaignArgs& a) {
     a.golden = false;
 #ifdef SCALECERT_WITH_BASELINES
@@ -143,6 +167,33 @@ void add_audit_options(CLI::App* sub, internal::CampaignArgs& a) {
                   "boundary for objects made of parts (JSON: by_distance)");
     sub->add_flag("--no-timing", a.no_timing,
                   "leave the timing columns out: the rest is byte-identical on any number of processes");
+    // The methods' own settings: each method reads those it has, and its rows record them.
+    internal::MethodSettings& st = a.settings;
+    sub->add_option("--bullet-margin", st.bullet_margin,
+                    "Bullet's collision margin on every shape (bullet-*; default 0, the shapes as given; Bullet's "
+                    "own default is 0.04)")
+        ->type_name("M")
+        ->check(finite_number(0, false));
+    sub->add_option("--fcl-gjk-tolerance", st.fcl_gjk_tolerance,
+                    "FCL's CollisionRequest gjk_tolerance (fcl-*; default 1e-6, FCL's)")
+        ->type_name("T")
+        ->check(finite_number(0, true));
+    sub->add_option("--fcl-distance-tolerance", st.fcl_distance_tolerance,
+                    "FCL's DistanceRequest distance_tolerance (fcl-*; default 1e-6, FCL's)")
+        ->type_name("T")
+        ->check(finite_number(0, true));
+    sub->add_option("--ccd-max-iterations", st.ccd_max_iterations, "libccd's max_iterations (libccd-*; default 500)")
+        ->type_name("N")
+        ->check(CLI::Range(1, 1000000000));
+    sub->add_option("--ccd-epa-tolerance", st.ccd_epa_tolerance, "libccd's epa_tolerance (default 1e-4, libccd's)")
+        ->type_name("T")
+        ->check(finite_number(0, true));
+    sub->add_option("--ccd-mpr-tolerance", st.ccd_mpr_tolerance, "libccd's mpr_tolerance (default 1e-4, libccd's)")
+        ->type_name("T")
+        ->check(finite_number(0, true));
+    sub->add_option("--ccd-dist-tolerance", st.ccd_dist_tolerance, "libccd's dist_tolerance (default 1e-6, libccd's)")
+        ->type_name("T")
+        ->check(finite_number(0, true));
 }
 
 }  // namespace scalecert::cli
