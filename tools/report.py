@@ -11,22 +11,20 @@ A click on a failure shows its numbers and a 3-D view of the two bodies scaled t
 the scene's geometry can be read: a scene file with its vertices inline or in OBJ or OFF files
 (objects of one part or of parts, at their poses), found by the row's scene path or, for a family
 scene, in the --failures directory.
-Plotly (python3-plotly) draws the charts and three.js (libjs-three) the bodies, each part as its
-convex hull; both scripts are copied beside the page into REPORT.html.assets/, so the page works
-offline and moved with that folder. Bad input: one line on stderr, exit 2, nothing written.
+The charts are SVG drawn by the page's own script; three.js (Debian's libjs-three) draws the
+bodies, each part as its convex hull, and is inlined: the page is one file that works offline
+(about 0.9 MB of it three.js). Bad input: one line on stderr, exit 2, nothing written.
 """
 import argparse
 import html
 import json
 import os
-import shutil
 import sys
 import tempfile
 from fractions import Fraction
 
-PLOTLY = "/usr/share/python3-plotly/plotly.js"
 THREE = "/usr/share/javascript/three"
-SCRIPTS = [PLOTLY, THREE + "/three.min.js", THREE + "/examples/js/math/ConvexHull.js",
+SCRIPTS = [THREE + "/three.min.js", THREE + "/examples/js/math/ConvexHull.js",
            THREE + "/examples/js/geometries/ConvexGeometry.js", THREE + "/examples/js/controls/OrbitControls.js"]
 
 
@@ -142,7 +140,7 @@ def load_rows(path):
     return rows
 
 
-def page(rows, failures_dir, assets):
+def page(rows, failures_dir, scripts):
     scenes, data_rows, failures = {}, [], []
     for r in rows:
         if "queries" not in r:
@@ -159,7 +157,7 @@ def page(rows, failures_dir, assets):
             failures.append(dict(f, scene=key, method=r["method"]))
     doc = {"rows": data_rows, "failures": failures, "scenes": scenes}
     title = "scalecert audit: %d rows, %d listed failures" % (len(data_rows), len(failures))
-    scripts = "\n".join('<script src="%s/%s"></script>' % (html.escape(assets), os.path.basename(s)) for s in SCRIPTS)
+    scripts = "\n".join("<script>\n%s\n</script>" % js.replace("</script", "<\\/script") for js in scripts)
     return TEMPLATE.replace("@TITLE@", html.escape(title)).replace("@SCRIPTS@", scripts).replace(
         "@DATA@", json.dumps(doc, sort_keys=True).replace("</", "<\\/"))
 
@@ -179,7 +177,7 @@ td:first-child, td:nth-child(2) { text-align: left; }
 #failure-list { max-height: 480px; overflow: auto; }
 #detail { font-size: 85%; }
 body.only-view > *:not(#failure-pane), body.only-view #failure-list, body.only-view #detail,
-body.only-charts > *:not(.chart) { display: none; }
+body.only-charts > *:not(.chart), body.only-charts #failure-pane { display: none; }
 </style>
 @SCRIPTS@
 </head><body>
@@ -243,35 +241,105 @@ if (atlasRows.length) {
 } else {
   document.getElementById("atlas-section").style.display = "none";
 }
-// Charts: only with data; one colour and one marker per method.
+// Charts (SVG): only with data; one colour and one marker per method, a legend clear of the plot.
 const colours = ["#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b", "#e377c2", "#17becf", "#7f7f7f", "#bcbd22"];
-const markers = ["circle", "square", "diamond", "triangle-up", "triangle-down", "cross", "x", "star", "hexagon", "pentagon"];
 const methods = [...new Set(D.rows.map(r => r.method))];
-const style = m => ({color: colours[methods.indexOf(m) % colours.length], symbol: markers[methods.indexOf(m) % markers.length]});
+const colourOf = m => colours[methods.indexOf(m) % colours.length];
+const markerOf = m => methods.indexOf(m) % 6;
 const scenes = new Set(D.rows.map(r => r.scene)).size;
+const NS = "http://www.w3.org/2000/svg";
+function el(parent, tag, attrs, text) {
+  const e = document.createElementNS(NS, tag);
+  for (const k in attrs) e.setAttribute(k, attrs[k]);
+  if (text !== undefined) e.textContent = text;
+  parent.appendChild(e);
+  return e;
+}
+// Round tick values from 0 to at least `top`.
+function ticks(top) {
+  if (!(top > 0)) top = 1;
+  const raw = top / 5, p = Math.pow(10, Math.floor(Math.log10(raw)));
+  const step = [1, 2, 5, 10].map(f => f * p).find(x => x >= raw);
+  const out = [];
+  for (let v = 0; v < top + step / 2; v += step) out.push(+v.toPrecision(12));
+  if (out[out.length - 1] < top) out.push(+(out[out.length - 1] + step).toPrecision(12));
+  return out;
+}
+function marker(g, kind, x, y, colour) {
+  const r = 5, a = {fill: colour, stroke: colour};
+  if (kind === 0) return el(g, "circle", Object.assign({cx: x, cy: y, r: r}, a));
+  if (kind === 1) return el(g, "rect", Object.assign({x: x - r, y: y - r, width: 2 * r, height: 2 * r}, a));
+  const pts = {2: [[0, -1.3], [1.1, 0], [0, 1.3], [-1.1, 0]], 3: [[0, -1.2], [1.1, 0.8], [-1.1, 0.8]],
+               4: [[0, 1.2], [1.1, -0.8], [-1.1, -0.8]], 5: [[-1, -1], [1, 1], [0, 0], [1, -1], [-1, 1], [0, 0]]}[kind];
+  return el(g, kind === 5 ? "polyline" : "polygon", Object.assign({points: pts.map(([u, v]) => (x + r * u) + "," + (y + r * v)).join(" ")},
+            kind === 5 ? {fill: "none", stroke: colour, "stroke-width": 2.5} : a));
+}
+// A frame: title, y axis with ticks and grid, x axis label; returns the plot area and the y scale.
+function frame(id, title, ylabel, xlabel, top) {
+  const W = 900, H = 380, L = 70, R = 260, T = 40, B = 55;
+  const svg = el(document.getElementById(id), "svg", {width: W, height: H, viewBox: "0 0 " + W + " " + H, "font-size": 12});
+  el(svg, "text", {x: L, y: 22, "font-size": 15}, title);
+  const ys = ticks(top), ymax = ys[ys.length - 1];
+  const y = v => T + (H - T - B) * (1 - v / ymax);
+  for (const v of ys) {
+    el(svg, "line", {x1: L, x2: W - R, y1: y(v), y2: y(v), stroke: "#e4e4e4"});
+    el(svg, "text", {x: L - 6, y: y(v) + 4, "text-anchor": "end"}, String(v));
+  }
+  el(svg, "line", {x1: L, x2: W - R, y1: y(0), y2: y(0), stroke: "#444"});
+  el(svg, "text", {x: 16, y: T + (H - T - B) / 2, transform: "rotate(-90 16 " + (T + (H - T - B) / 2) + ")", "text-anchor": "middle"}, ylabel);
+  el(svg, "text", {x: L + (W - R - L) / 2, y: H - 10, "text-anchor": "middle"}, xlabel);
+  return {svg, L, R: W - R, T, B: H - B, y, legendX: W - R + 20};
+}
+function legend(f, entries) {  // [label, colour, marker or null]
+  entries.forEach(([label, colour, kind], i) => {
+    const y = f.T + 10 + 20 * i;
+    if (kind === null) el(f.svg, "rect", {x: f.legendX, y: y - 6, width: 14, height: 12, fill: colour});
+    else { el(f.svg, "line", {x1: f.legendX - 4, x2: f.legendX + 18, y1: y, y2: y, stroke: colour, "stroke-width": 2.5}); marker(f.svg, kind, f.legendX + 7, y, colour); }
+    el(f.svg, "text", {x: f.legendX + 26, y: y + 4}, label);
+  });
+}
 if (D.rows.length) {
   const sum = (m, k) => D.rows.filter(r => r.method === m).reduce((a, r) => a + r[k], 0);
-  Plotly.newPlot("chart-wrong", [
-    {type: "bar", name: "said separated (they meet)", x: methods, y: methods.map(m => sum(m, "false_separated")), marker: {color: "#d62728"}},
-    {type: "bar", name: "said intersecting (they are apart)", x: methods, y: methods.map(m => sum(m, "false_overlapping")), marker: {color: "#1f77b4"}}],
-    {title: "Wrong verdicts per method (" + scenes + " scene" + (scenes === 1 ? "" : "s") + ", " +
-            D.rows.reduce((a, r) => a + r.queries, 0) + " queries)", barmode: "group", yaxis: {title: "wrong verdicts"}},
-    {staticPlot: false}).then(() => { status.charts++; say(); });
+  const series = [["said separated (they meet)", "#d62728", "false_separated"], ["said intersecting (they are apart)", "#1f77b4", "false_overlapping"]];
+  const top = Math.max(...methods.map(m => Math.max(sum(m, "false_separated"), sum(m, "false_overlapping"))));
+  const f = frame("chart-wrong", "Wrong verdicts per method (" + scenes + " scene" + (scenes === 1 ? "" : "s") + ", " +
+                  D.rows.reduce((a, r) => a + r.queries, 0) + " queries)", "wrong verdicts", "method", top);
+  const slot = (f.R - f.L) / methods.length, bw = Math.min(40, slot / 3);
+  methods.forEach((m, i) => {
+    const cx = f.L + slot * (i + 0.5);
+    series.forEach(([name, colour, key], j) => {
+      const v = sum(m, key), x = cx + (j - 1) * bw;
+      el(f.svg, "rect", {x: x, y: f.y(v), width: bw, height: f.y(0) - f.y(v), fill: colour}).appendChild(
+        document.createElementNS(NS, "title")).textContent = m + ": " + v + " " + name;
+    });
+    el(f.svg, "text", {x: cx, y: f.B + 16, "text-anchor": "middle", "font-size": 11}, m);
+  });
+  legend(f, series.map(([name, colour]) => [name, colour, null]));
+  status.charts++;
 }
 const withDistance = D.rows.filter(r => r.by_distance.length);
 if (withDistance.length) {
-  const traces = methods.filter(m => withDistance.some(r => r.method === m)).map(m => {
+  const ms = methods.filter(m => withDistance.some(r => r.method === m));
+  const lines = ms.map(m => {
     const ks = withDistance.find(r => r.method === m).by_distance.map(b => b.k);
-    const frac = ks.map(k => { let w = 0, n = 0;
+    return {m, pts: ks.map(k => { let w = 0, n = 0;
       for (const r of withDistance.filter(r => r.method === m)) for (const b of r.by_distance) if (b.k === k) { w += b.wrong; n += b.pairs; }
-      return n ? w / n : null; });
-    const s = style(m);
-    return {type: "scatter", mode: "lines+markers", name: m, x: ks, y: frac, line: {color: s.color}, marker: {symbol: s.symbol, size: 9, color: s.color}};
+      return [k, n ? w / n : null]; }).filter(p => p[1] !== null)};
   });
-  Plotly.newPlot("chart-distance", traces,
-    {title: "Fraction wrong at relative distance 2^-k from the exact boundary (" + withDistance.length + " rows)",
-     xaxis: {title: "k"}, yaxis: {title: "fraction wrong", rangemode: "tozero"}}).then(() => { status.charts++; say(); });
+  const ks = lines.flatMap(l => l.pts.map(p => p[0])), kmin = Math.min(...ks), kmax = Math.max(...ks);
+  const f = frame("chart-distance", "Fraction wrong at relative distance 2^-k from the exact boundary (" + withDistance.length +
+                  " rows)", "fraction wrong", "k", Math.max(...lines.flatMap(l => l.pts.map(p => p[1]))));
+  const x = k => f.L + 20 + (f.R - f.L - 40) * (kmax > kmin ? (k - kmin) / (kmax - kmin) : 0.5);
+  for (const k of [...new Set(ks)].sort((a, b) => a - b)) el(f.svg, "text", {x: x(k), y: f.B + 16, "text-anchor": "middle"}, String(k));
+  for (const l of lines) {
+    const colour = colourOf(l.m);
+    el(f.svg, "polyline", {points: l.pts.map(([k, v]) => x(k) + "," + f.y(v)).join(" "), fill: "none", stroke: colour, "stroke-width": 2.5});
+    for (const [k, v] of l.pts) marker(f.svg, markerOf(l.m), x(k), f.y(v), colour);
+  }
+  legend(f, ms.map(m => [m, colourOf(m), markerOf(m)]));
+  status.charts++;
 }
+say();
 // The failures, and the 3-D view of one.
 const ft = document.getElementById("failures");
 tr = ft.insertRow();
@@ -323,6 +391,8 @@ function show(i) {
 }
 if (D.failures.length) show(0);
 say();
+// Milliseconds from the start of navigation to a drawn page (docs/audits.md measures the load by it).
+document.getElementById("status").dataset.ms = performance.now().toFixed(0);
 </script>
 </body></html>
 """
@@ -331,42 +401,31 @@ say();
 def main():
     ap = argparse.ArgumentParser(description=__doc__.strip().splitlines()[0])
     ap.add_argument("audit", help="scalecert audit's JSON (--out)")
-    ap.add_argument("--out", required=True, help="the HTML page; its scripts go to OUT.assets/ beside it")
+    ap.add_argument("--out", required=True, help="the HTML page (one file, its scripts inlined)")
     ap.add_argument("--failures", help="the audit's --failures directory (the family scenes' files)")
     a = ap.parse_args()
     try:
+        scripts = []
         for s in SCRIPTS:
             if not os.path.isfile(s):
-                raise InputError("%s is missing (tools/install-deps.sh installs python3-plotly and libjs-three)" % s)
+                raise InputError("%s is missing (tools/install-deps.sh installs libjs-three)" % s)
+            with open(s, encoding="utf-8") as f:
+                scripts.append(f.read())
         rows = load_rows(a.audit)
         out_dir = os.path.dirname(os.path.abspath(a.out))
         if not os.path.isdir(out_dir):
             raise InputError("%s: no such directory for --out" % out_dir)
-        assets = os.path.basename(a.out) + ".assets"
-        text = page(rows, a.failures, assets)
-        # The scripts, then the page: written beside it under temporary names, then renamed.
-        tmp = tempfile.mkdtemp(dir=out_dir, prefix=".report.")
-        try:
-            for s in SCRIPTS:
-                shutil.copyfile(s, os.path.join(tmp, os.path.basename(s)))
-            final = os.path.join(out_dir, assets)
-            if os.path.isdir(final) and not os.path.islink(final):
-                shutil.rmtree(final)
-            os.chmod(tmp, 0o755)
-            for s in SCRIPTS:
-                os.chmod(os.path.join(tmp, os.path.basename(s)), 0o644)
-            os.rename(tmp, final)
-        except OSError:
-            shutil.rmtree(tmp, ignore_errors=True)
-            raise
-        with tempfile.NamedTemporaryFile("w", dir=out_dir, delete=False, prefix=".report.", suffix=".html") as f:
+        text = page(rows, a.failures, scripts)
+        # Written beside the page under a temporary name, then renamed.
+        with tempfile.NamedTemporaryFile("w", dir=out_dir, delete=False, prefix=".report.", suffix=".html",
+                                         encoding="utf-8") as f:
             f.write(text)
         os.chmod(f.name, 0o644)
         os.replace(f.name, a.out)
     except (InputError, OSError) as e:
         print("report: error: %s" % e, file=sys.stderr)
         sys.exit(2)
-    print("report: wrote %s (%d bytes) and %s/" % (a.out, len(text.encode()), assets), file=sys.stderr)
+    print("report: wrote %s (%d bytes)" % (a.out, len(text.encode())), file=sys.stderr)
 
 
 if __name__ == "__main__":
