@@ -352,3 +352,19 @@ BOOST_AUTO_TEST_CASE(campaigns_are_keyed_by_the_contents_of_their_inputs) {
     BOOST_CHECK_THROW(campaign_inputs(a), InputError);
     fs::remove_all(dir);
 }
+
+BOOST_AUTO_TEST_CASE(an_epa_tolerance_below_what_doubles_resolve_is_refused) {
+    // The stacked cubes at ρ up to 5/2: P2's seed (1, 1, 4) and its points 1 away along z give a
+    // largest scaled coordinate of 4 + 5/2 · 1 = 13/2, so the least EPA tolerance is 13/2 · 2^-40.
+    ExactScene s = load_scene(std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/stacked_cubes.json");
+    MethodSettings st;
+    st.ccd_epa_tolerance = std::ldexp(6.5, -40);
+    BOOST_TEST(audit_scene("cubes", s, Q(0), {"libccd-gjk"}, {}, false, true, st).size() == 2u);
+    st.ccd_epa_tolerance = std::nextafter(std::ldexp(6.5, -40), 0.0);
+    BOOST_CHECK_EXCEPTION(audit_scene("cubes", s, Q(0), {"libccd-gjk"}, {}, false, true, st), InputError,
+                          [](const InputError& e) {
+                              return std::string(e.what()).find("(6.5), where libccd's EPA") != std::string::npos;
+                          });
+    // Without depths (no EPA) any tolerance runs.
+    BOOST_TEST(audit_scene("cubes", s, Q(0), {"libccd-gjk"}, {}, false, false, st).size() == 2u);
+}

@@ -247,6 +247,27 @@ std::vector<AuditRow> audit_convex(const std::string& name, const ExactScene& s,
     double exact_seconds = std::chrono::duration<double>(Clock::now() - t_exact).count();
     fp::FpScene f = fp::to_fp(s);
     f.settings = settings;
+    // libccd's EPA (libccd-gjk's depths) loops until its tolerance is met, whatever the iteration
+    // limit: a tolerance finer than the doubles resolve at the scene's size is never met (1e-12 on a
+    // near-sphere scene, coordinates up to 6e3, was not; 1e-10 was), so one finer than libccd's own
+    // 1e-4 is refused below 2^-40 of the largest coordinate (some 4,000 units in the last place).
+    if (measures && std::find(methods.begin(), methods.end(), "libccd-gjk") != methods.end()) {
+        double extent = 0;
+        for (int i = 0; i < 2; ++i)
+            for (const fp::D3& p : f.P[i].pts)
+                for (int k = 0; k < 3; ++k)
+                    extent = std::max(extent, std::fabs(f.P[i].seed[k]) + f.hi[i] * std::fabs(p[k] - f.P[i].seed[k]));
+        const double least = std::min(1e-4, std::ldexp(extent, -40));
+        if (!(settings.ccd_epa_tolerance >= least)) {
+            char m[320];
+            std::snprintf(m, sizeof m,
+                          "--ccd-epa-tolerance %.3g: finer than 2^-40 of %s's largest coordinate (%.3g), "
+                          "where libccd's EPA, which loops until its tolerance is met, may never stop; give at "
+                          "least %.3g, or --no-measures",
+                          settings.ccd_epa_tolerance, name.c_str(), extent, least);
+            throw InputError(m);
+        }
+    }
     // Query pairs (doubles) and their exact verdicts.
     std::vector<double> r1, r2;
     Rng g(12345);
