@@ -44,6 +44,15 @@ if grep "CONSOLE" console.txt | grep -v "GL Driver Message" | grep -q .; then
   bad "console: $(grep CONSOLE console.txt | grep -v 'GL Driver Message' | head -3)"
 fi
 grep -q "Uncaught" console.txt && bad "uncaught: $(grep Uncaught console.txt | head -2)"
+# Names are data, never markup: a method named "<!--<script>..." (which, written raw into the
+# page's script, would put the HTML parser in its escaped script state and swallow the page) leaves
+# the page drawn and nothing injected.
+$PY -c 'import json; r = json.load(open("audit.json"))
+for x in r: x["method"] = "<!--<script>document.title=1</script>" + x["method"]
+json.dump(r, open("evil.json", "w"))' && $PY "$SRC/tools/report.py" evil.json --out evil.html 2>/dev/null || bad "evil report"
+browse --dump-dom "file://$WORK/evil.html" > evil-dom.html 2>/dev/null
+grep -q 'id="status"[^>]*>charts drawn: 2; 3-D views drawn: 1<' evil-dom.html && ! grep -q "<title>1</title>" evil-dom.html ||
+  bad "a method name with markup: $(grep -o 'id="status"[^<]*' evil-dom.html)"
 # Screenshots of the charts and of the 3-D view alone, and their colours counted.
 browse --window-size=1000,900 --screenshot="$WORK/charts.png" "file://$WORK/report.html#charts" 2>/dev/null
 browse --window-size=700,500 --screenshot="$WORK/view.png" "file://$WORK/report.html#view" 2>/dev/null

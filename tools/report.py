@@ -159,7 +159,7 @@ def page(rows, failures_dir, scripts):
     title = "scalecert audit: %d rows, %d listed failures" % (len(data_rows), len(failures))
     scripts = "\n".join("<script>\n%s\n</script>" % js.replace("</script", "<\\/script") for js in scripts)
     return TEMPLATE.replace("@TITLE@", html.escape(title)).replace("@SCRIPTS@", scripts).replace(
-        "@DATA@", json.dumps(doc, sort_keys=True).replace("</", "<\\/"))
+        "@DATA@", json.dumps(doc, sort_keys=True).replace("<", "\\u003c"))
 
 
 TEMPLATE = r"""<!DOCTYPE html>
