@@ -355,16 +355,35 @@ BOOST_AUTO_TEST_CASE(campaigns_are_keyed_by_the_contents_of_their_inputs) {
 
 BOOST_AUTO_TEST_CASE(an_epa_tolerance_below_what_doubles_resolve_is_refused) {
     // The stacked cubes at ρ up to 5/2: P2's seed (1, 1, 4) and its points 1 away along z give a
-    // largest scaled coordinate of 4 + 5/2 · 1 = 13/2, so the least EPA tolerance is 13/2 · 2^-40.
+    // largest scaled coordinate of 4 + 5/2 · 1 = 13/2, so the least EPA tolerance is
+    // 2^-52 · (13/2)² = 169/4 · 2^-52.
     ExactScene s = load_scene(std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/stacked_cubes.json");
     MethodSettings st;
-    st.ccd_epa_tolerance = std::ldexp(6.5, -40);
+    st.ccd_epa_tolerance = std::ldexp(42.25, -52);
     BOOST_TEST(audit_scene("cubes", s, Q(0), {"libccd-gjk"}, {}, false, true, st).size() == 2u);
-    st.ccd_epa_tolerance = std::nextafter(std::ldexp(6.5, -40), 0.0);
-    BOOST_CHECK_EXCEPTION(audit_scene("cubes", s, Q(0), {"libccd-gjk"}, {}, false, true, st), InputError,
-                          [](const InputError& e) {
-                              return std::string(e.what()).find("(6.5), where libccd's EPA") != std::string::npos;
-                          });
+    st.ccd_epa_tolerance = std::nextafter(std::ldexp(42.25, -52), 0.0);
+    BOOST_CHECK_EXCEPTION(
+        audit_scene("cubes", s, Q(0), {"libccd-gjk"}, {}, false, true, st), InputError, [](const InputError& e) {
+            return std::string(e.what()).find("largest coordinate is 6.5 (2^-52") != std::string::npos;
+        });
     // Without depths (no EPA) any tolerance runs.
     BOOST_TEST(audit_scene("cubes", s, Q(0), {"libccd-gjk"}, {}, false, false, st).size() == 2u);
+    // The same cubes 2^20 times larger: the least tolerance is 169/4 · 2^-12 ≈ 0.0103, so libccd's
+    // default 1e-4 is refused, and the value the message names (rounded up) is accepted.
+    ExactScene big = s;
+    for (int i = 0; i < 2; ++i) {
+        for (auto& p : big.P[i].points)
+            for (int k = 0; k < 3; ++k) p[k] *= Q(1 << 20);
+        for (int k = 0; k < 3; ++k) big.P[i].seed[k] *= Q(1 << 20);
+    }
+    st = MethodSettings{};
+    std::string said;
+    try {
+        audit_scene("big", big, Q(0), {"libccd-gjk"}, {}, false, true, st);
+    } catch (const InputError& e) {
+        said = e.what();
+    }
+    BOOST_TEST(said.find("give at least 0.011, or --no-measures") != std::string::npos, said);
+    st.ccd_epa_tolerance = 0.011;
+    BOOST_TEST(audit_scene("big", big, Q(0), {"libccd-gjk"}, {}, false, true, st).size() == 2u);
 }

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -248,23 +249,31 @@ std::vector<AuditRow> audit_convex(const std::string& name, const ExactScene& s,
     fp::FpScene f = fp::to_fp(s);
     f.settings = settings;
     // libccd's EPA (libccd-gjk's depths) loops until its tolerance is met, whatever the iteration
-    // limit: a tolerance finer than the doubles resolve at the scene's size is never met (1e-12 on a
-    // near-sphere scene, coordinates up to 6e3, was not; 1e-10 was), so one finer than libccd's own
-    // 1e-4 is refused below 2^-40 of the largest coordinate (some 4,000 units in the last place).
+    // limit. Its two stopping tests compare the tolerance with differences of squared lengths
+    // (dot products of points whose coordinates reach L), which doubles resolve no finer than one
+    // unit in the last place of L², about 2^-52·L²; below that the loop may never end. Measured
+    // on two near-sphere scenes: L = 6·10^3 stopped at 1e-10 and ran for minutes at 1e-12; L = 6·10^10
+    // stopped at 1e3 and ran for minutes at 1e2 (both near 2^-62·L²). A tolerance below 2^-52·L²
+    // is refused, naming the least accepted one (rounded up to two digits).
     if (measures && std::find(methods.begin(), methods.end(), "libccd-gjk") != methods.end()) {
         double extent = 0;
         for (int i = 0; i < 2; ++i)
             for (const fp::D3& p : f.P[i].pts)
                 for (int k = 0; k < 3; ++k)
                     extent = std::max(extent, std::fabs(f.P[i].seed[k]) + f.hi[i] * std::fabs(p[k] - f.P[i].seed[k]));
-        const double least = std::min(1e-4, std::ldexp(extent, -40));
+        const double least = std::ldexp(extent * extent, -52);
         if (!(settings.ccd_epa_tolerance >= least)) {
-            char m[320];
+            char shown[32];
+            for (double up = least;; up = std::nextafter(up * 1.01, HUGE_VAL)) {
+                std::snprintf(shown, sizeof shown, "%.2g", up);
+                if (std::strtod(shown, nullptr) >= least) break;
+            }
+            char m[360];
             std::snprintf(m, sizeof m,
-                          "--ccd-epa-tolerance %.3g: finer than 2^-40 of %s's largest coordinate (%.3g), "
-                          "where libccd's EPA, which loops until its tolerance is met, may never stop; give at "
-                          "least %.3g, or --no-measures",
-                          settings.ccd_epa_tolerance, name.c_str(), extent, least);
+                          "--ccd-epa-tolerance %.3g: finer than libccd's EPA resolves where the largest coordinate "
+                          "is %.3g (2^-52 of its square), and its loop may never stop; give at least %s, or "
+                          "--no-measures",
+                          settings.ccd_epa_tolerance, extent, shown);
             throw InputError(m);
         }
     }

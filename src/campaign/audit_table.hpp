@@ -13,11 +13,11 @@ namespace scalecert::internal {
 // ones it has, and its rows record them. The defaults are FCL's and libccd's own, except libccd's
 // iteration limit (unlimited by default; 500 here) and Bullet's margin (0: the shapes as given).
 struct MethodSettings {
-    double bullet_margin = 0;                // every Bullet shape's collision margin
-    double fcl_gjk_tolerance = 1e-6;         // FCL's CollisionRequest::gjk_tolerance
-    double fcl_distance_tolerance = 1e-6;    // FCL's DistanceRequest::distance_tolerance
-    unsigned long ccd_max_iterations = 500;  // libccd's ccd_t::max_iterations
-    double ccd_epa_tolerance = 1e-4, ccd_mpr_tolerance = 1e-4, ccd_dist_tolerance = 1e-6;  // libccd's ccd_t
+    double bullet_margin = 0;                                   // every Bullet shape's collision margin
+    double fcl_gjk_tolerance = 1e-6;                            // FCL's CollisionRequest::gjk_tolerance
+    double fcl_distance_tolerance = 1e-6;                       // FCL's DistanceRequest::distance_tolerance
+    unsigned long ccd_max_iterations = 500;                     // libccd's ccd_t::max_iterations
+    double ccd_epa_tolerance = 1e-4, ccd_mpr_tolerance = 1e-4;  // libccd's ccd_t
 };
 
 struct AuditRow {

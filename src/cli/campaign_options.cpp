@@ -1,7 +1,11 @@
 #include "campaign_options.hpp"
 #include "file_name.hpp"
 
+#include <cctype>
+#include <cerrno>
+#include <cfloat>
 #include <cmath>
+#include <cstdlib>
 #include <string>
 
 #ifdef SCALECERT_WITH_BASELINES
@@ -91,19 +95,21 @@ void add_golden_options(CLI::App* sub, internal::CampaignArgs& a) {
 
 namespace {
 // A finite number above `lo` (strictly, or at least `lo`): the methods' settings.
-CLI::Validator finite_number(double lo, bool strict) {
+// A finite double above (strict) or at least lo, read as strtod reads it (a subnormal is its
+// value, not an error); as_float: also 0 or a normal float, for what Bullet (built with float
+// btScalar, as Debian's is) holds.
+CLI::Validator finite_number(double lo, bool strict, bool as_float = false) {
     return CLI::Validator(
-        [lo, strict](std::string& v) {
-            double x = 0;
-            size_t used = 0;
-            try {
-                x = std::stod(v, &used);
-            } catch (const std::exception&) {
-                used = 0;
-            }
-            if (used != v.size() || v.empty() || !std::isfinite(x) || (strict ? !(x > lo) : !(x >= lo)))
+        [lo, strict, as_float](std::string& v) {
+            errno = 0;
+            char* end = nullptr;
+            const double x =
+                v.empty() || std::isspace(static_cast<unsigned char>(v[0])) ? NAN : std::strtod(v.c_str(), &end);
+            if (end != v.c_str() + v.size() || !std::isfinite(x) || (strict ? !(x > lo) : !(x >= lo)))
                 return std::string("not a finite number ") + (strict ? "above " : "of at least ") +
                        (lo == 0 ? "0" : std::to_string(lo)) + ": " + v;
+            if (as_float && x != 0 && !(x >= FLT_MIN && x <= FLT_MAX))
+                return "Bullet holds it as a float, so it must be 0 or from 1.2e-38 to 3.4e38, not " + v;
             return std::string();
         },
         "NUMBER");
@@ -173,7 +179,7 @@ void add_audit_options(CLI::App* sub, internal::CampaignArgs& a) {
                     "Bullet's collision margin on every shape (bullet-*; default 0, the shapes as given; Bullet's "
                     "own default is 0.04)")
         ->type_name("M")
-        ->check(finite_number(0, false));
+        ->check(finite_number(0, false, true));
     sub->add_option("--fcl-gjk-tolerance", st.fcl_gjk_tolerance,
                     "FCL's CollisionRequest gjk_tolerance (fcl-*; default 1e-6, FCL's)")
         ->type_name("T")
@@ -189,9 +195,6 @@ void add_audit_options(CLI::App* sub, internal::CampaignArgs& a) {
         ->type_name("T")
         ->check(finite_number(0, true));
     sub->add_option("--ccd-mpr-tolerance", st.ccd_mpr_tolerance, "libccd's mpr_tolerance (default 1e-4, libccd's)")
-        ->type_name("T")
-        ->check(finite_number(0, true));
-    sub->add_option("--ccd-dist-tolerance", st.ccd_dist_tolerance, "libccd's dist_tolerance (default 1e-6, libccd's)")
         ->type_name("T")
         ->check(finite_number(0, true));
 }
