@@ -17,16 +17,16 @@ browse() {  # chromium headless, the page at URL; its other arguments before
 }
 "$SC" audit "$SRC/certificates/scenes/stacked_cubes.json" --methods libccd-gjk,bullet-gjk-epa,libccd-mpr --by-distance \
   --out audit.json 2>/dev/null || bad "audit"
-$PY "$SRC/tools/report.py" audit.json --out report.html 2>/dev/null || bad "report.py"
+$PY "$SRC/tools/report.py" audit.json --out report.html --scalecert "$SC" 2>/dev/null || bad "report.py"
 [ -s report.html ] && [ ! -e report.html.assets ] && grep -q "REVISION" report.html || bad "report: one file, three.js inlined"
 # The bodies the 3-D view draws, from a scene of mesh parts at poses (panda_fingers: the right
 # finger is the left one turned half a turn about z, (x, y, z) -> (-x, -y, z), each moved 0.001
 # along its own y): the same six parts, each point mirrored, and the mesh part's 185 points.
-$PY - "$SRC" <<'PYEOF' || bad "bodies of a posed scene with mesh parts"
+$PY - "$SRC" "$SC" <<'PYEOF' || bad "bodies of a posed scene with mesh parts"
 import importlib.util, sys
 spec = importlib.util.spec_from_file_location("report", sys.argv[1] + "/tools/report.py")
 r = importlib.util.module_from_spec(spec); spec.loader.exec_module(r)
-b = r.bodies(sys.argv[1] + "/certificates/scenes/compound/panda_fingers.json")
+b = r.bodies(sys.argv[1] + "/certificates/scenes/compound/panda_fingers.json", sys.argv[2])
 left, right = b
 assert len(left["parts"]) == len(right["parts"]) == 6 and len(left["parts"][0]) == 185
 for pl, pr in zip(left["parts"], right["parts"]):
@@ -37,6 +37,30 @@ PYEOF
 echo '{"not": "an audit"}' > bogus.json
 $PY "$SRC/tools/report.py" bogus.json --out never.html 2>err.txt; st=$?
 [ $st -eq 2 ] && [ "$(wc -l < err.txt)" -eq 1 ] && [ ! -e never.html ] && [ ! -e never.html.assets ] || bad "bad input: exit $st"
+# Rows whose fields have the wrong types, a FIFO and nesting deeper than Python parses: the same.
+printf '[{"scene": "a", "method": "m", "queries": 3, "failures": "none"}]' > wrongtype.json
+printf '%.0s[' $(seq 100000) > deep.json
+mkfifo fifo.json
+for f in wrongtype.json deep.json fifo.json; do
+  for tool in report.py atlas_table.py; do
+    if [ $tool = report.py ]; then args=(--out never.html); else args=(); fi
+    timeout 20 $PY "$SRC/tools/$tool" "$f" "${args[@]}" > /dev/null 2> err.txt; st=$?
+    [ $st -eq 2 ] && [ "$(wc -l < err.txt)" -eq 1 ] && [ ! -e never.html ] || bad "$tool on $f: exit $st, $(head -c 300 err.txt)"
+  done
+done
+[ -z "$(ls -A . | grep '^\.report\.')" ] || bad "a temporary page left behind"
+# A mesh pair's audit names its scene P1-P2, whose file the --failures directory holds: the page
+# finds it there and carries both bodies (the tetrahedron's 4 points).
+"$SC" audit --p1 "$SRC/examples/box.stl" --p2 "$SRC/examples/tetra.obj" --i1 1/2,2 --i2 1/2,2 --methods bullet-gjk-epa \
+  --failures rep --out pair.json 2>/dev/null || bad "mesh-pair audit"
+$PY "$SRC/tools/report.py" pair.json --failures rep --out pair.html --scalecert "$SC" 2>/dev/null || bad "mesh-pair report"
+$PY - <<'PYEOF' || bad "mesh-pair report: the bodies"
+import json, re
+text = open("pair.html", encoding="utf-8").read()
+d = json.loads(re.search(r"const D = (.*);\n", text).group(1))
+b = d["scenes"]["box-tetra"]
+assert len(b[0]["parts"][0]) == 8 and len(b[1]["parts"][0]) == 4, b
+PYEOF
 # The page, loaded: its status line, and no script error in the console.
 browse --enable-logging=stderr --v=0 --dump-dom "file://$WORK/report.html" > dom.html 2> console.txt
 grep -q 'id="status"[^>]*>charts drawn: 2; 3-D views drawn: 1<' dom.html || bad "status: $(grep -o 'id="status"[^<]*' dom.html)"
@@ -49,7 +73,7 @@ grep -q "Uncaught" console.txt && bad "uncaught: $(grep Uncaught console.txt | h
 # the page drawn and nothing injected.
 $PY -c 'import json; r = json.load(open("audit.json"))
 for x in r: x["method"] = "<!--<script>document.title=1</script>" + x["method"]
-json.dump(r, open("evil.json", "w"))' && $PY "$SRC/tools/report.py" evil.json --out evil.html 2>/dev/null || bad "evil report"
+json.dump(r, open("evil.json", "w"))' && $PY "$SRC/tools/report.py" evil.json --out evil.html --scalecert "$SC" 2>/dev/null || bad "evil report"
 browse --dump-dom "file://$WORK/evil.html" > evil-dom.html 2>/dev/null
 grep -q 'id="status"[^>]*>charts drawn: 2; 3-D views drawn: 1<' evil-dom.html && ! grep -q "<title>1</title>" evil-dom.html ||
   bad "a method name with markup: $(grep -o 'id="status"[^<]*' evil-dom.html)"

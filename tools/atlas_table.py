@@ -13,6 +13,9 @@ import json
 import os
 import sys
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import report  # noqa: E402 (its reading of an audit's rows, each field checked)
+
 CLASSES = ["face-to-face", "long-edge", "scaled", "touching", "decomposition-gap"]
 
 
@@ -24,11 +27,9 @@ def main():
     if len(args) != 1:
         sys.exit(__doc__.strip().splitlines()[2])
     try:
-        with open(args[0]) as f:
-            rows = json.load(f)
-        assert isinstance(rows, list) and all(isinstance(r, dict) and "scene" in r for r in rows)
-    except (OSError, ValueError, AssertionError) as e:
-        print("atlas_table: error: %s: not an audit's JSON (%s)" % (args[0], e or "rows"), file=sys.stderr)
+        rows = report.load_rows(args[0])
+    except report.InputError as e:
+        print("atlas_table: error: %s" % e, file=sys.stderr)
         sys.exit(2)
     table = {}
     for r in rows:
@@ -50,7 +51,7 @@ def main():
             t["pairs"] += b["pairs"]
             t["near"] += b["wrong"]
         for key, src in (("dist", "distance_err_max"), ("depth", "depth_err_max")):
-            if src in r:
+            if r.get(src) is not None:
                 t[key] = max(t[key] or 0.0, r[src])
     classes = sorted({c for c, _ in table}) if by_scene else CLASSES
     print("| %s | method | scenes | wrong verdicts | near the boundary | worst distance error | worst depth error |" % ("scene" if by_scene else "class"))

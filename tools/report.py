@@ -1,16 +1,16 @@
 #!/usr/bin/env python3
 """An audit as a page to look at: scalecert audit's JSON as one HTML report.
 
-Usage: tools/report.py AUDIT.json --out report.html [--failures DIR]
+Usage: tools/report.py AUDIT.json --out report.html [--failures DIR] [--scalecert PROGRAM]
 
 The page has, from the audit's rows: the failure atlas's table (per class and method, when the
 audit ran --atlas), a table per scene and method (queries, wrong verdicts each way, time per query), a chart of the wrong verdicts per method, a chart of the fraction wrong by
 relative distance 2^-k from the exact boundary (audits run with --by-distance), and the list of
 failures (the first 50 a row keeps: the doubles asked, what the method said, the exact verdict).
-A click on a failure shows its numbers and a 3-D view of the two bodies scaled to that pair, when
-the scene's geometry can be read: a scene file with its vertices inline or in OBJ or OFF files
-(objects of one part or of parts, at their poses), found by the row's scene path or, for a family
-scene, in the --failures directory.
+A click on a failure shows its numbers and a 3-D view of the two bodies scaled to that pair, as
+scalecert reads the scene (`scalecert query SCENE 1 1 --json`: its meshes, parts and poses), with
+the scene found by the row's scene path (as given or beside the audit's JSON) or, for a family
+scene or a mesh pair, in the --failures directory.
 The charts are SVG drawn by the page's own script; three.js (Debian's libjs-three) draws the
 bodies, each part as its convex hull, and is inlined: the page is one file that works offline
 (about 0.9 MB of it three.js). Bad input: one line on stderr, exit 2, nothing written.
@@ -20,6 +20,8 @@ import html
 import json
 import os
 import sys
+import shutil
+import subprocess
 import tempfile
 from fractions import Fraction
 
@@ -32,123 +34,113 @@ class InputError(Exception):
     pass
 
 
-def exact(v):
-    """A scene number: JSON number (the double it is) or an exact string "p/q" or decimal."""
-    if isinstance(v, bool) or not isinstance(v, (int, float, str)):
-        raise InputError("not a number: %r" % (v,))
-    try:
-        return Fraction(v)
-    except (ValueError, ZeroDivisionError):
-        raise InputError("not a number: %r" % (v,))
-
-
-def mesh_points(path, groups):
-    """The vertices of an OBJ or OFF file (display only: doubles), as one part or, with groups,
-    a part per OBJ group in order of appearance; None for other formats."""
-    ext = os.path.splitext(path)[1].lower()
-    with open(path) as f:
-        lines = f.read().splitlines()
-    if ext == ".off":
-        words = [w for line in lines for w in line.split("#", 1)[0].split()]
-        if not words or not words[0].endswith("OFF"):
-            return None
-        n = int(words[1])
-        return [[[float(c) for c in words[4 + 3 * k:7 + 3 * k]] for k in range(n)]]
-    if ext != ".obj":
-        return None
-    pts, parts, current = [], {}, None
-    for line in lines:
-        w = line.split()
-        if not w:
-            continue
-        if w[0] == "v":
-            pts.append([float(c) for c in w[1:4]])
-        elif w[0] in ("g", "o"):
-            current = " ".join(w[1:])
-        elif w[0] == "f" and groups:
-            part = parts.setdefault(current, [])
-            for ref in w[1:]:
-                k = int(ref.split("/")[0])
-                part.append(pts[k - 1] if k > 0 else pts[k])
-    return list(parts.values()) if groups else [pts]
-
-
-def bodies(scene_path):
-    """[(parts, seed)] for P1 and P2 from a scene file, with each object's pose applied, or None.
-    Parts come inline or from OBJ and OFF files (a part per group with parts_from_groups)."""
-    try:
-        with open(scene_path) as f:
-            s = json.load(f)
-        here = os.path.dirname(scene_path)
-
-        def points(obj, groups):
-            if "vertices" in obj:
-                return [[[float(exact(c)) for c in v] for v in obj["vertices"]]]
-            name = obj.get("mesh", obj.get("off"))
-            return mesh_points(os.path.join(here, name), groups)
-
-        out = []
-        for key in ("P1", "P2"):
-            obj = s[key]
-            if "parts" in obj:
-                parts = [points(p, False)[0] for p in obj["parts"]]
-            else:
-                parts = points(obj, bool(obj.get("parts_from_groups")))
-            if parts is None or not all(parts):
-                return None
-            if "seed" in obj:
-                seed = [float(exact(c)) for c in obj["seed"]]
-            else:  # the mean of the vertices, as scalecert takes it
-                pts = [v for part in parts for v in part]
-                seed = [sum(p[i] for p in pts) / len(pts) for i in range(3)]
-            if "pose" in obj:  # each point v becomes R v + t, the seed too
-                m = [[float(exact(c)) for c in row] for row in obj["pose"]]
-                move = lambda v: [sum(m[i][k] * v[k] for k in range(3)) + m[i][3] for i in range(3)]
-                parts = [[move(v) for v in part] for part in parts]
-                seed = move(seed)
-            out.append({"parts": parts, "seed": seed})
-        return out
-    except (OSError, ValueError, KeyError, TypeError, IndexError, InputError):
-        return None
-
-
-def scene_file(row, failures_dir):
-    """The scene file a row names, or its family scene in the --failures directory."""
-    name = row.get("scene", "")
-    if os.path.isfile(name):
-        return name
-    if failures_dir:
-        eps = str(row.get("eps", "0")).replace("/", "_")
-        p = os.path.join(failures_dir, "%s.eps-%s.scene.json" % (os.path.basename(name), eps))
-        if os.path.isfile(p):
-            return p
+def scalecert_program(given):
+    """The scalecert program that reads the scenes: --scalecert, $SCALECERT_BIN, scalecert on
+    PATH, or this tree's build/scalecert; None when there is none."""
+    here = os.path.dirname(os.path.abspath(__file__))
+    for c in (given, os.environ.get("SCALECERT_BIN"), shutil.which("scalecert"),
+              os.path.join(here, "..", "build", "scalecert")):
+        if c and os.path.isfile(c) and os.access(c, os.X_OK):
+            return c
+    if given:
+        raise InputError("%s: no such program (--scalecert)" % given)
     return None
 
 
-def load_rows(path):
+def bodies(scene_path, program):
+    """[{"parts", "seed"}] for P1 and P2 as scalecert reads the scene (its poses applied, its
+    meshes read, its parts from groups), taken from `scalecert query SCENE 1 1 --json`, whose
+    "scene" holds every point exactly; in doubles, for display. None when it cannot be read."""
     try:
-        with open(path) as f:
+        p = subprocess.run([program, "query", scene_path, "1", "1", "--json"], stdin=subprocess.DEVNULL,
+                           stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, timeout=120)
+        if p.returncode != 0:
+            return None
+        scene = json.loads(p.stdout)["scene"]
+        out = []
+        for key in ("P1", "P2"):
+            obj = scene[key]
+            parts = [part["vertices"] for part in obj["parts"]] if "parts" in obj else [obj["vertices"]]
+            out.append({"parts": [[[float(Fraction(c)) for c in v] for v in part] for part in parts],
+                        "seed": [float(Fraction(c)) for c in obj["seed"]]})
+        return out
+    except (OSError, ValueError, KeyError, TypeError, ZeroDivisionError, OverflowError, subprocess.TimeoutExpired):
+        return None
+
+
+def scene_file(row, audit_dir, failures_dir):
+    """The scene file a row names (as given, or relative to the audit's directory), or the scene
+    the --failures directory holds for it (a family scene at its eps, a mesh pair's scene)."""
+    name = row["scene"]
+    for p in (name, os.path.join(audit_dir, name)):
+        if os.path.isfile(p):
+            return p
+    if failures_dir:
+        eps = str(row.get("eps", "0")).replace("/", "_")
+        base = os.path.basename(name)
+        for p in ("%s.eps-%s.scene.json" % (base, eps), "%s.scene.json" % base):
+            p = os.path.join(failures_dir, p)
+            if os.path.isfile(p):
+                return p
+    return None
+
+
+def check(cond, path, what):
+    if not cond:
+        raise InputError("%s: not an audit (%s)" % (path, what))
+
+
+def number(v):
+    return isinstance(v, (int, float)) and not isinstance(v, bool)
+
+
+def load_rows(path):
+    """The rows of scalecert audit's JSON, each field the page uses checked for its type."""
+    try:
+        if not os.path.isfile(path):  # a directory or a FIFO is not an audit, nor waited on
+            raise InputError("%s: not a regular file" % path)
+        with open(path, encoding="utf-8") as f:
             rows = json.load(f)
     except OSError as e:
         raise InputError("%s: cannot read (%s)" % (path, e.strerror))
-    except ValueError as e:
-        raise InputError("%s: not JSON (%s)" % (path, e))
+    except (ValueError, RecursionError) as e:
+        raise InputError("%s: not JSON (%s)" % (path, str(e).splitlines()[0] if str(e) else type(e).__name__))
     if isinstance(rows, dict) and isinstance(rows.get("rows"), list):
         rows = rows["rows"]
-    if not isinstance(rows, list) or not all(isinstance(r, dict) and "method" in r and "scene" in r for r in rows):
-        raise InputError("%s: not an audit (scalecert audit's JSON: a list of rows with scene and method)" % path)
+    check(isinstance(rows, list), path, "scalecert audit's JSON is a list of rows")
+    for i, r in enumerate(rows):
+        at = "row %d" % i
+        check(isinstance(r, dict) and isinstance(r.get("scene"), str) and isinstance(r.get("method"), str), path,
+              at + ": a row has a scene and a method, as text")
+        if "queries" not in r:
+            continue
+        check(isinstance(r["queries"], int) and r["queries"] >= 0, path, at + ": queries is a count")
+        for k in ("false_separated", "false_overlapping"):
+            check(isinstance(r.get(k, 0), int), path, at + ": %s is a count" % k)
+        check(r.get("seconds_per_query") is None or number(r["seconds_per_query"]), path,
+              at + ": seconds_per_query is a number")
+        check(isinstance(r.get("eps", "0"), (str, int, float)), path, at + ": eps is a number")
+        bd = r.get("by_distance", [])
+        check(isinstance(bd, list) and all(isinstance(b, dict) and all(number(x) for x in b.values()) and
+                                           isinstance(b.get("pairs"), int) and isinstance(b.get("wrong"), int)
+                                           for b in bd), path, at + ": by_distance is a list of counts")
+        for k in ("distance_err_max", "depth_err_max"):
+            check(r.get(k) is None or number(r[k]), path, at + ": %s is a number" % k)
+        fs = r.get("failures", [])
+        check(isinstance(fs, list) and all(isinstance(f, dict) and number(f.get("rho1")) and number(f.get("rho2"))
+                                           for f in fs), path, at + ": failures is a list of pairs rho1, rho2")
     return rows
 
 
-def page(rows, failures_dir, scripts):
+def page(rows, audit_dir, failures_dir, program, scripts):
     scenes, data_rows, failures = {}, [], []
     for r in rows:
         if "queries" not in r:
             continue  # curve rows (the exact engine, the grid): no verdicts to chart
         key = r["scene"]
         if key not in scenes:
-            f = scene_file(r, failures_dir)
-            scenes[key] = bodies(f) if f else None
+            f = scene_file(r, audit_dir, failures_dir) if program else None
+            scenes[key] = bodies(f, program) if f else None
         data_rows.append({
             "scene": key, "method": r["method"], "eps": str(r.get("eps", "0")), "queries": r["queries"],
             "false_separated": r.get("false_separated", 0), "false_overlapping": r.get("false_overlapping", 0),
@@ -403,7 +395,10 @@ def main():
     ap.add_argument("audit", help="scalecert audit's JSON (--out)")
     ap.add_argument("--out", required=True, help="the HTML page (one file, its scripts inlined)")
     ap.add_argument("--failures", help="the audit's --failures directory (the family scenes' files)")
+    ap.add_argument("--scalecert", help="the scalecert program that reads the scenes (default: $SCALECERT_BIN, "
+                    "scalecert on PATH, or build/scalecert)")
     a = ap.parse_args()
+    tmp = None
     try:
         scripts = []
         for s in SCRIPTS:
@@ -412,19 +407,32 @@ def main():
             with open(s, encoding="utf-8") as f:
                 scripts.append(f.read())
         rows = load_rows(a.audit)
+        if a.failures and not os.path.isdir(a.failures):
+            raise InputError("%s: no such directory (--failures)" % a.failures)
+        program = scalecert_program(a.scalecert)
         out_dir = os.path.dirname(os.path.abspath(a.out))
         if not os.path.isdir(out_dir):
             raise InputError("%s: no such directory for --out" % out_dir)
-        text = page(rows, a.failures, scripts)
-        # Written beside the page under a temporary name, then renamed.
+        text = page(rows, os.path.dirname(os.path.abspath(a.audit)), a.failures, program, scripts)
+        # Written beside the page under a temporary name, then renamed; removed if that fails.
         with tempfile.NamedTemporaryFile("w", dir=out_dir, delete=False, prefix=".report.", suffix=".html",
                                          encoding="utf-8") as f:
+            tmp = f.name
             f.write(text)
-        os.chmod(f.name, 0o644)
-        os.replace(f.name, a.out)
+        os.chmod(tmp, 0o644)
+        os.replace(tmp, a.out)
+        tmp = None
     except (InputError, OSError) as e:
         print("report: error: %s" % e, file=sys.stderr)
         sys.exit(2)
+    finally:
+        if tmp:
+            try:
+                os.unlink(tmp)
+            except OSError:
+                pass
+    if program is None:
+        print("report: note: no scalecert program found (--scalecert): the page has no 3-D views", file=sys.stderr)
     print("report: wrote %s (%d bytes)" % (a.out, len(text.encode())), file=sys.stderr)
 
 
