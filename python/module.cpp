@@ -11,7 +11,10 @@
 
 #include <cmath>
 #include <functional>
+#include <cstdint>
 #include <map>
+#include <optional>
+#include <set>
 
 namespace py = pybind11;
 using scalecert::Rational;
@@ -426,6 +429,15 @@ py::dict curve_dict(const scalecert::Curve& c) {
 
 using namespace pybind11::literals;
 
+// A claimed verdict's word, or none.
+std::optional<scalecert::ClaimedVerdict> claimed_verdict(const std::string& v) {
+    if (v == "separated") return scalecert::ClaimedVerdict::Separated;
+    if (v == "touching") return scalecert::ClaimedVerdict::Touching;
+    if (v == "overlapping") return scalecert::ClaimedVerdict::Overlapping;
+    if (v == "intersecting") return scalecert::ClaimedVerdict::Intersecting;
+    return std::nullopt;
+}
+
 // Scene.certify: claims of one kind from arrays, judged by the typed API (Analysis::certify)
 // on convex objects and on objects made of parts.
 using CertifyFn =
@@ -543,17 +555,11 @@ py::dict certify_arrays(const CertifyFn& certify, const std::string& kind, const
         if (pts) answer_point((*pts)[i], "point", "point" + at, c.point);
         if (verdicts) {
             const std::string v = utf8(py::str(verdicts->empty() ? verdict : (*verdicts)[i]), "certify: verdict" + at);
-            if (v == "separated")
-                c.verdict = scalecert::ClaimedVerdict::Separated;
-            else if (v == "touching")
-                c.verdict = scalecert::ClaimedVerdict::Touching;
-            else if (v == "overlapping")
-                c.verdict = scalecert::ClaimedVerdict::Overlapping;
-            else if (v == "intersecting")
-                c.verdict = scalecert::ClaimedVerdict::Intersecting;
-            else
+            const std::optional<scalecert::ClaimedVerdict> cv = claimed_verdict(v);
+            if (!cv)
                 throw scalecert::InputError("certify: verdict" + at + ": '" + v +
                                             "' (separated, touching, overlapping, intersecting)");
+            c.verdict = *cv;
         }
     }
     scalecert::ClaimOptions opt;
@@ -947,7 +953,108 @@ PYBIND11_MODULE(scalecert, m) {
             py::arg("verticals") = 7, py::arg("offsets") = py::none(),
             "the scene's golden data: (the golden JSON as a dict, the decimal CSV text, the rational CSV text), "
             "as scalecert golden writes per scene; verticals and offsets (a list of K: pairs 2^-K away; default "
-            "[4, 12, 20, 30, 40, 52]) as its --verticals and --offsets");
+            "[4, 12, 20, 30, 40, 52]) as its --verticals and --offsets")
+        .def(
+            "audit",
+            [](const PyScene& s, const py::function& method, const py::handle& rho1, const py::handle& rho2,
+               const py::handle& listed) {
+                const scalecert::Analysis& a = s.a();
+                const int cap = count_arg(listed, "listed", 0, 1000000);
+                if (rho1.is_none() != rho2.is_none())
+                    throw scalecert::InputError("audit: give rho1 and rho2 together, or neither");
+                // The pairs: those given, or the golden data's (its queries' doubles, each once).
+                std::vector<double> r1, r2;
+                if (rho1.is_none()) {
+                    const py::dict g = json_loads(a.golden().json);
+                    std::set<std::pair<double, double>> seen;
+                    for (const py::handle q : g["queries"].cast<py::list>()) {
+                        const double x = q["rho1_double"].cast<double>(), y = q["rho2_double"].cast<double>();
+                        if (seen.insert({x, y}).second) r1.push_back(x), r2.push_back(y);
+                    }
+                } else {
+                    const DoubleArray a1 = doubles_of(rho1, "rho1"), a2 = doubles_of(rho2, "rho2");
+                    if (a1.ndim() != 1 || a2.ndim() != 1 || a1.size() != a2.size())
+                        throw scalecert::InputError("audit: rho1 and rho2 are one-dimensional arrays of one length");
+                    r1.assign(a1.data(), a1.data() + a1.size());
+                    r2.assign(a2.data(), a2.data() + a2.size());
+                    for (size_t i = 0; i < r1.size(); ++i)
+                        if (!(std::isfinite(r1[i]) && std::isfinite(r2[i]) && r1[i] > 0 && r2[i] > 0))
+                            throw scalecert::InputError("audit: pair " + std::to_string(i) +
+                                                        ": scalings are finite numbers > 0");
+                }
+                // A float32 program is asked the floats nearest them, and judged at those.
+                if (s.numbers == scalecert::Numbers::Float32)
+                    for (auto* v : {&r1, &r2})
+                        for (double& x : *v) x = static_cast<double>(static_cast<float>(x));
+                const size_t n = r1.size();
+                py::array_t<double> A(static_cast<py::ssize_t>(n), r1.data()),
+                    B(static_cast<py::ssize_t>(n), r2.data());
+                const py::object said = method(A, B);
+                // The answers: one per pair; a word that is not a verdict, or no word, is no answer.
+                if (!py::hasattr(said, "__len__") || py::isinstance<py::str>(said) || py::len(said) != n)
+                    throw scalecert::InputError("audit: the method returned " +
+                                                (py::hasattr(said, "__len__") && !py::isinstance<py::str>(said)
+                                                     ? std::to_string(py::len(said)) + " answers"
+                                                     : "no sequence") +
+                                                " for " + std::to_string(n) + " pairs");
+                std::vector<std::string> words(n);
+                std::vector<scalecert::Claim> claims;
+                std::vector<size_t> claim_of(n, SIZE_MAX);
+                const py::sequence seq = said.cast<py::sequence>();
+                for (size_t i = 0; i < n; ++i) {
+                    const py::object w = seq[i];
+                    if (py::isinstance<py::str>(w)) words[i] = w.cast<std::string>();
+                    if (const auto cv = claimed_verdict(words[i])) {
+                        scalecert::Claim c;
+                        c.kind = scalecert::ClaimKind::Verdict;
+                        c.rho1 = scalecert::exact(r1[i]);
+                        c.rho2 = scalecert::exact(r2[i]);
+                        c.verdict = *cv;
+                        claim_of[i] = claims.size();
+                        claims.push_back(std::move(c));
+                    } else {
+                        words[i] = py::repr(w).cast<std::string>().substr(0, 60);
+                    }
+                }
+                const scalecert::Judgements j = a.certify(claims);
+                const std::vector<scalecert::Verdict> exact = a.classify(r1, r2, 0);
+                py::array_t<bool> right(static_cast<py::ssize_t>(n));
+                auto rw = right.mutable_unchecked<1>();
+                py::list failures, exact_names;
+                long wrong = 0, false_sep = 0, false_int = 0, no_answer = 0;
+                for (size_t i = 0; i < n; ++i) {
+                    const bool answered = claim_of[i] != SIZE_MAX;
+                    const bool ok = answered && j.items[claim_of[i]].right;
+                    rw(static_cast<py::ssize_t>(i)) = ok;
+                    exact_names.append(scalecert::name(exact[i]));
+                    if (ok) continue;
+                    ++wrong;
+                    const bool sep = exact[i] == scalecert::Verdict::Separated;
+                    if (!answered)
+                        ++no_answer;
+                    else if (words[i] == "separated" && !sep)
+                        ++false_sep;
+                    else if (words[i] != "separated" && sep)
+                        ++false_int;
+                    if (failures.size() < static_cast<size_t>(cap))
+                        failures.append(py::dict(py::arg("rho1") = r1[i], py::arg("rho2") = r2[i],
+                                                 py::arg("said") = answered ? words[i] : "no answer: " + words[i],
+                                                 py::arg("exact") = scalecert::name(exact[i])));
+                }
+                return py::dict(py::arg("queries") = n, py::arg("wrong") = wrong,
+                                py::arg("false_separated") = false_sep, py::arg("false_overlapping") = false_int,
+                                py::arg("no_answer") = no_answer, py::arg("right") = right,
+                                py::arg("exact_verdict") = exact_names, py::arg("failures") = failures);
+            },
+            py::arg("method"), py::arg("rho1") = py::none(), py::arg("rho2") = py::none(), py::arg("listed") = 50,
+            "audits your own collision test: method(rho1, rho2) is called once with two float64 arrays of "
+            "scalings (default: the golden data's pairs, near every piece of the boundary in I1 x I2; a scene "
+            "of numbers='float32' is asked the floats nearest them) and returns one verdict word per pair "
+            "('separated', 'touching', 'overlapping' or 'intersecting'), each judged as certify judges a verdict "
+            "claim at the exact value of the numbers asked; anything else (None, NaN, another word) is no answer, "
+            "judged wrong. Returns a dict: queries, wrong, false_separated (said separated, exact not), "
+            "false_overlapping (said another word, exact separated), no_answer, right (bool array), "
+            "exact_verdict, and failures: the first `listed` wrong pairs (rho1, rho2, said, exact)");
     m.def(
         "golden",
         [](const py::handle& family, const py::handle& count, const py::handle& seed, const py::handle& eps,

@@ -844,3 +844,42 @@ def test_claims_at_poses_on_parts():
     assert s.certify("distance", [1], [2], value=[6.5], pose2=[up])["right"].tolist() == [True]
     d = s.certify("penetration_depth", [1], [2], value=[0.75], parts=[[0, 0]], pose2=[down])
     assert d["right"].tolist() == [True]
+
+
+def test_audit_your_own_collision_test():
+    # The stacked cubes' gap along z is 3 - r1 - r2: a test that answers from it exactly is never
+    # wrong; one that adds the doubles (r1 + r2 < 3: separated, else intersecting) is wrong where
+    # the rounded sum and the exact one fall on different sides of 3, counted here by hand.
+    s = stacked()
+
+    def by_gap(r1, r2):
+        gaps = [3 - F(a) - F(b) for a, b in zip(r1, r2)]
+        return ["separated" if g > 0 else "touching" if g == 0 else "overlapping" for g in gaps]
+
+    def by_sum(r1, r2):
+        return ["separated" if a + b < 3 else "intersecting" for a, b in zip(r1, r2)]
+
+    exact = s.audit(by_gap)
+    assert exact["wrong"] == 0 and exact["failures"] == [] and exact["right"].all()
+    pairs = {(q["rho1_double"], q["rho2_double"]) for q in s.golden()[0]["queries"]}
+    assert exact["queries"] == len(pairs)
+    rounded = s.audit(by_sum)
+    hand = [(a, b) for a, b in pairs if (a + b < 3) != (3 - F(a) - F(b) > 0)]
+    assert hand and rounded["wrong"] == len(hand)
+    # Each is a separated pair whose rounded sum reached 3: said intersecting.
+    assert rounded["false_overlapping"] == len(hand) and rounded["false_separated"] == 0
+    assert {(f["rho1"], f["rho2"]) for f in rounded["failures"]} == set(hand)
+    assert all(f["said"] == "intersecting" and f["exact"] == "separated" for f in rounded["failures"])
+    # Pairs of one's own; "overlapping" at a touching pair is wrong, "intersecting" right (CLAIMS.md).
+    mine = s.audit(lambda r1, r2: ["overlapping", "intersecting"], rho1=[1.0, 1.0], rho2=[2.0, 2.0])
+    assert list(mine["right"]) == [False, True] and mine["exact_verdict"] == ["touching", "touching"]
+    # Answers that are no answer are wrong and counted; a wrong number of answers is bad input.
+    none = s.audit(lambda r1, r2: [None, float("nan"), "yes"], rho1=[1.0, 1.0, 1.0], rho2=[1.0, 2.0, 3.0])
+    assert none["wrong"] == none["no_answer"] == 3 and none["failures"][1]["said"] == "no answer: nan"
+    with pytest.raises(scalecert.InputError, match="returned 1 answers for 3 pairs"):
+        s.audit(lambda r1, r2: ["separated"], rho1=[1.0, 1.0, 1.0], rho2=[1.0, 2.0, 3.0])
+    with pytest.raises(scalecert.InputError, match="finite numbers > 0"):
+        s.audit(by_sum, rho1=[1.0], rho2=[float("nan")])
+    # The user's own exception is theirs, unchanged.
+    with pytest.raises(ZeroDivisionError):
+        s.audit(lambda r1, r2: 1 / 0)
