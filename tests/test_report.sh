@@ -17,7 +17,10 @@ browse() {  # chromium headless, the page at URL; its other arguments before
 }
 "$SC" audit "$SRC/certificates/scenes/stacked_cubes.json" --methods libccd-gjk,bullet-gjk-epa,libccd-mpr --by-distance \
   --out audit.json 2>/dev/null || bad "audit"
-$PY "$SRC/tools/report.py" audit.json --out report.html --scalecert "$SC" 2>/dev/null || bad "report.py"
+"$SC" report audit.json --out report.html 2>/dev/null || bad "scalecert report"
+cp audit.json same.json
+"$SC" report same.json --out same.json 2>/dev/null; st=$?
+[ $st -eq 2 ] && cmp -s same.json audit.json || bad "report --out the audit itself: exit $st"
 [ -s report.html ] && [ ! -e report.html.assets ] && grep -q "REVISION" report.html || bad "report: one file, three.js inlined"
 # The bodies the 3-D view draws, from a scene of mesh parts at poses (panda_fingers: the right
 # finger is the left one turned half a turn about z, (x, y, z) -> (-x, -y, z), each moved 0.001

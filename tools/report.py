@@ -409,6 +409,8 @@ def main():
         rows = load_rows(a.audit)
         if a.failures and not os.path.isdir(a.failures):
             raise InputError("%s: no such directory (--failures)" % a.failures)
+        if os.path.exists(a.out) and os.path.samefile(a.out, a.audit):
+            raise InputError("%s: --out would replace the audit it reads" % a.out)
         program = scalecert_program(a.scalecert)
         out_dir = os.path.dirname(os.path.abspath(a.out))
         if not os.path.isdir(out_dir):

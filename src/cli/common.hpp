@@ -93,5 +93,6 @@ Command add_certify_fp(CLI::App& app);
 Command add_golden(CLI::App& app);
 Command add_region(CLI::App& app);  // objects made of parts: where they meet
 Command add_audit(CLI::App& app);
+Command add_report(CLI::App& app);  // the audit report page (tools/report.py)
 
 }  // namespace scalecert::cli
