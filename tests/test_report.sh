@@ -30,8 +30,8 @@ import importlib.util, sys
 spec = importlib.util.spec_from_file_location("report", sys.argv[1] + "/tools/report.py")
 r = importlib.util.module_from_spec(spec); spec.loader.exec_module(r)
 b = r.bodies(sys.argv[1] + "/certificates/scenes/compound/panda_fingers.json", sys.argv[2])
-left, right = b
-assert len(left["parts"]) == len(right["parts"]) == 6 and len(left["parts"][0]) == 185
+left, right, regions = b  # objects made of parts: their pair regions third
+assert len(left["parts"]) == len(right["parts"]) == 6 and len(left["parts"][0]) == 185 and isinstance(regions["pairs"], list)
 for pl, pr in zip(left["parts"], right["parts"]):
     assert all(q == [-p[0], -p[1], p[2]] for p, q in zip(pl, pr))
 assert left["parts"][2][0][1] == 0.001 and left["seed"] == [0, 0.016, 0.0784] and right["seed"][1] == -0.016
@@ -80,6 +80,34 @@ json.dump(r, open("evil.json", "w"))' && $PY "$SRC/tools/report.py" evil.json --
 browse --dump-dom "file://$WORK/evil.html" > evil-dom.html 2>/dev/null
 grep -q 'id="status"[^>]*>charts drawn: 2; 3-D views drawn: 1<' evil-dom.html && ! grep -q "<title>1</title>" evil-dom.html ||
   bad "a method name with markup: $(grep -o 'id="status"[^<]*' evil-dom.html)"
+# Objects made of parts: the parts marked at a failure. P1 = a box "near" [0,1]^3 and a box "far"
+# [10,11] x [0,1]^2 about the seed (1/2, 1/2, 1/2); P2 = boxes [2,3] and [14,15] x [0,1]^2 about
+# (5/2, 1/2, 1/2); I1 = I2 = [1/2, 3]. Along x, near(r1) reaches 1/2 + r1/2 and P2's first box
+# starts at 5/2 - r2/2: they meet where r1 + r2 >= 4. far(r1) spans [1/2 + 19 r1/2, 1/2 + 21 r1/2]
+# and P2's second box [5/2 + 23 r2/2, 5/2 + 25 r2/2]: they meet where 21 r1 - 23 r2 >= 4 and
+# 19 r1 - 25 r2 <= 4. At (1, 1) neither meets; the line 21 r1 - 23 r2 = 4 is 3 / sqrt(21^2 + 23^2)
+# = 0.19 away (in r1, r2), r1 + r2 = 4 is 2 / sqrt(2) = 1.41 away: far and P2's second box are nearest.
+# At (3, 2.3) both pairs meet (5.3 >= 4; 63 - 52.9 >= 4 and 57 - 57.5 <= 4).
+$PY - <<'PYEOF'
+import json
+def box(x0, x1): return [[x, y, z] for x in (x0, x1) for y in (0, 1) for z in (0, 1)]
+json.dump({"P1": {"parts": [{"name": "near", "vertices": box(0, 1)}, {"name": "far", "vertices": box(10, 11)}],
+                  "seed": ["1/2", "1/2", "1/2"]},
+           "P2": {"parts": [{"vertices": box(2, 3)}, {"vertices": box(14, 15)}], "seed": ["5/2", "1/2", "1/2"]},
+           "I1": ["1/2", "3"], "I2": ["1/2", "3"]}, open("two.json", "w"))
+for name, r1, r2 in (("apart", 1.0, 1.0), ("both", 3.0, 2.3)):
+    json.dump([{"scene": "two.json", "method": "m", "queries": 1, "false_separated": 0, "false_overlapping": 1,
+                "failures": [{"rho1": r1, "rho2": r2, "said": "intersecting", "exact": "separated"}]}],
+              open(name + ".json", "w"))
+PYEOF
+for name in apart both; do
+  "$SC" report $name.json --out $name.html 2>/dev/null || bad "report $name"
+  browse --dump-dom "file://$WORK/$name.html" > $name-dom.html 2>/dev/null
+done
+grep -q "nearest to meeting: P1 part 1 (far) with P2 part 1<" apart-dom.html ||
+  bad "marked at (1, 1): $(grep -o 'nearest to meeting: [^<]*\|meeting here: [^<]*' apart-dom.html)"
+grep -q "meeting here: P1 part 0 (near) with P2 part 0; P1 part 1 (far) with P2 part 1<" both-dom.html ||
+  bad "marked at (3, 2.3): $(grep -o 'nearest to meeting: [^<]*\|meeting here: [^<]*' both-dom.html)"
 # Screenshots of the charts and of the 3-D view alone, and their colours counted.
 browse --window-size=1000,900 --screenshot="$WORK/charts.png" "file://$WORK/report.html#charts" 2>/dev/null
 browse --window-size=700,500 --screenshot="$WORK/view.png" "file://$WORK/report.html#view" 2>/dev/null

@@ -10,7 +10,9 @@ failures (the first 50 a row keeps: the doubles asked, what the method said, the
 A click on a failure shows its numbers and a 3-D view of the two bodies scaled to that pair, as
 scalecert reads the scene (`scalecert query SCENE 1 1 --json`: its meshes, parts and poses), with
 the scene found by the row's scene path (as given or beside the audit's JSON) or, for a family
-scene or a mesh pair, in the --failures directory.
+scene or a mesh pair, in the --failures directory. Of objects made of parts, the part pairs that
+meet at the failure's pair, or else come nearest to meeting (their polygons of meeting pairs from
+`scalecert region SCENE`), are marked.
 The charts are SVG drawn by the page's own script; three.js (Debian's libjs-three) draws the
 bodies, each part as its convex hull, and is inlined: the page is one file that works offline
 (about 0.9 MB of it three.js). Bad input: one line on stderr, exit 2, nothing written.
@@ -63,9 +65,25 @@ def bodies(scene_path, program):
             parts = [part["vertices"] for part in obj["parts"]] if "parts" in obj else [obj["vertices"]]
             out.append({"parts": [[[float(Fraction(c)) for c in v] for v in part] for part in parts],
                         "seed": [float(Fraction(c)) for c in obj["seed"]]})
+        if "parts" in scene["P1"] or "parts" in scene["P2"]:
+            out.append({"pairs": pair_regions(scene_path, program)})
         return out
     except (OSError, ValueError, KeyError, TypeError, ZeroDivisionError, OverflowError, subprocess.TimeoutExpired):
         return None
+
+
+def pair_regions(scene_path, program):
+    """Objects made of parts: each part pair that meets somewhere in I1 x I2, with the polygon of
+    (rho1, rho2) where it does (`scalecert region SCENE`, exact; in doubles here, to mark in the
+    3-D view the parts that meet, or come nearest to meeting, at a failure's pair)."""
+    p = subprocess.run([program, "region", scene_path], stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
+                       stderr=subprocess.DEVNULL, timeout=300)
+    if p.returncode != 0:
+        return []
+    return [{"a": r["P1_part"], "b": r["P2_part"], "a_name": r.get("P1_part_name", ""),
+             "b_name": r.get("P2_part_name", ""),
+             "poly": [[float(Fraction(x)), float(Fraction(y))] for x, y in r["vertices"]]}
+            for r in json.loads(p.stdout)["pair_regions"]]
 
 
 def scene_file(row, audit_dir, failures_dir):
@@ -185,7 +203,8 @@ wrong verdicts among the queries, and among the pairs near the exact boundary.</
 <div id="chart-distance" class="chart"></div>
 <h2>Failures</h2>
 <p>Each failure is a pair of doubles the method was asked, what it said and the exact verdict. Click
-one for its numbers and the two bodies at that pair (P1 blue, P2 orange, each part as its convex hull).</p>
+one for its numbers and the two bodies at that pair (P1 blue, P2 orange, each part as its convex hull; of objects made of parts, the parts that meet at that pair, or
+else come nearest to meeting, are drawn opaque and edged in red).</p>
 <div id="failure-pane">
 <div id="failure-list"><table id="failures"></table></div>
 <div><div id="view"></div><pre id="detail"></pre></div>
@@ -342,6 +361,21 @@ D.failures.forEach((f, i) => {
   tr.onclick = () => show(i);
 });
 let renderer = null;
+// The distance from (x, y) to a convex polygon (its vertices in order), negative inside (minus the
+// distance to its boundary); +Infinity for an empty one. Display only: doubles.
+function polygonDistance(poly, x, y) {
+  if (!poly.length) return Infinity;
+  let out = Infinity, inside = poly.length > 2, sign = 0;
+  for (let k = 0; k < poly.length; k++) {
+    const [ax, ay] = poly[k], [bx, by] = poly[(k + 1) % poly.length];
+    const ex = bx - ax, ey = by - ay, len2 = ex * ex + ey * ey;
+    const t = len2 > 0 ? Math.max(0, Math.min(1, ((x - ax) * ex + (y - ay) * ey) / len2)) : 0;
+    out = Math.min(out, Math.hypot(x - ax - t * ex, y - ay - t * ey));
+    const cross = ex * (y - ay) - ey * (x - ax);
+    if (cross !== 0) { if (sign === 0) sign = Math.sign(cross); else if (Math.sign(cross) !== sign) inside = false; }
+  }
+  return inside || out === 0 ? -out : out;
+}
 function show(i) {
   const f = D.failures[i];
   document.getElementById("detail").textContent = JSON.stringify(f, null, 1);
@@ -352,18 +386,33 @@ function show(i) {
   const scene = new THREE.Scene();
   scene.background = new THREE.Color(0xffffff);
   const box = new THREE.Box3();
+  // Objects made of parts: the part pairs that meet at this pair, or else come nearest to meeting
+  // (whose polygon of meeting (rho1, rho2) lies nearest), are marked: drawn opaque, edged in red.
+  const marked = [new Set(), new Set()];
+  const pairs = geo.length > 2 ? geo[2].pairs : [];
+  if (pairs.length) {
+    const d = pairs.map(q => polygonDistance(q.poly, f.rho1, f.rho2));
+    const inside = d.some(x => x <= 0), least = Math.min(...d);
+    const chosen = pairs.filter((q, k) => inside ? d[k] <= 0 : d[k] <= least * (1 + 1e-9));
+    for (const q of chosen) { marked[0].add(q.a); marked[1].add(q.b); }
+    const name = (i, k, n) => "P" + (i + 1) + " part " + k + (n ? " (" + n + ")" : "");
+    document.getElementById("detail").textContent += "\n" + (inside ? "meeting here: " : "nearest to meeting: ") +
+      chosen.map(q => name(0, q.a, q.a_name) + " with " + name(1, q.b, q.b_name)).join("; ");
+  }
   // P2 first and fainter, P1 drawn over it: a body inside the other stays in sight.
-  [[geo[1], f.rho2, 0xff7f0e, 0.35, 0], [geo[0], f.rho1, 0x1f77b4, 0.8, 1]].forEach(([obj, rho, colour, opacity, order]) => {
-    for (const part of obj.parts) {
+  [[geo[1], f.rho2, 0xff7f0e, 0.35, 0, 1], [geo[0], f.rho1, 0x1f77b4, 0.8, 1, 0]].forEach(([obj, rho, colour, faint, order, side]) => {
+    obj.parts.forEach((part, index) => {
+      const mark = marked[side].has(index), opacity = mark ? 0.9 : faint;
       const pts = part.map(v => new THREE.Vector3(...v.map((c, k) => obj.seed[k] + rho * (c - obj.seed[k]))));
       const g = new THREE.ConvexBufferGeometry(pts);
       const mesh = new THREE.Mesh(g, new THREE.MeshLambertMaterial({color: colour, transparent: true, opacity: opacity,
                                                                      depthWrite: false}));
       mesh.renderOrder = order;
       scene.add(mesh);
-      scene.add(new THREE.LineSegments(new THREE.EdgesGeometry(g), new THREE.LineBasicMaterial({color: 0x333333})));
+      scene.add(new THREE.LineSegments(new THREE.EdgesGeometry(g),
+                                       new THREE.LineBasicMaterial({color: mark ? 0xd62728 : 0x333333})));
       box.expandByObject(mesh);
-    }
+    });
   });
   scene.add(new THREE.AmbientLight(0xffffff, 0.6));
   const light = new THREE.DirectionalLight(0xffffff, 0.6); light.position.set(1, 2, 3); scene.add(light);

@@ -49,21 +49,22 @@ Command add_report(CLI::App& app) {
     sub->add_option("--failures", a->failures,
                     "the audit's --failures directory (family scenes' and mesh pairs' scene files)")
         ->type_name("DIR");
-    example(sub, "Example:\n  scalecert audit certificates/scenes/stacked_cubes.json --out a.json\n"
-                 "  scalecert report a.json --out report.html");
+    example(sub,
+            "Example:\n  scalecert audit certificates/scenes/stacked_cubes.json --out a.json\n"
+            "  scalecert report a.json --out report.html");
     return {sub, [a] {
                 const std::string script = report_script();
-                if (script.empty())
-                    throw InputError("report: tools/report.py is not installed beside this scalecert");
+                if (script.empty()) throw InputError("report: tools/report.py is not installed beside this scalecert");
                 std::vector<std::string> args = {"/usr/bin/python3", script, a->audit, "--out", a->out,
-                                                 "--scalecert", self()};
+                                                 "--scalecert",      self()};
                 if (!a->failures.empty()) args.insert(args.end(), {"--failures", a->failures});
                 std::vector<char*> argv;
                 for (std::string& s : args) argv.push_back(s.data());
                 argv.push_back(nullptr);
                 std::fflush(nullptr);
                 const pid_t pid = fork();
-                if (pid < 0) throw InputError(std::string("report: cannot start python3 (") + std::strerror(errno) + ")");
+                if (pid < 0)
+                    throw InputError(std::string("report: cannot start python3 (") + std::strerror(errno) + ")");
                 if (pid == 0) {
                     execv(argv[0], argv.data());
                     std::fprintf(stderr, "scalecert: error: report: cannot run /usr/bin/python3 (%s)\n",
