@@ -2117,6 +2117,17 @@ BOOST_AUTO_TEST_CASE(audit_runs_the_users_program) {
         BOOST_TEST(e.err.find("--command") != std::string::npos, e.err);
         BOOST_TEST(!fs::exists(workdir() / "never.json"));
     }
+    // A program that does not finish in --command-timeout is stopped, with what it started (its
+    // process group): one line, exit 2, long before its 30 s sleep would end.
+    const auto t0 = std::chrono::steady_clock::now();
+    const Run slow =
+        run("audit " + cubes + " --methods libccd-gjk --command 'sleep 30; false' --command-timeout 0.5 --out " +
+            (workdir() / "never.json").string());
+    const double took = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    BOOST_TEST(slow.status == 2);
+    BOOST_TEST(slow.err.find("did not finish within 0.5 s (--command-timeout)") != std::string::npos, slow.err);
+    BOOST_TEST(took < 20, took);
+    BOOST_TEST(!fs::exists(workdir() / "never.json"));
 }
 
 // audit --failures: every reproducer replays. The stacked cubes touch on ρ1 + ρ2 = 3 exactly, so

@@ -10,7 +10,8 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
+#include <cerrno>
+#include <csignal>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -155,6 +156,36 @@ void wrong_by_distance(const fp::Method& mm, const DistancePairs& p, AuditRow& r
     }
 }
 
+// sh -c cmd in a process group of its own, waited for at most `timeout` seconds: its wait
+// status, -1 if it could not be started, or kTimedOut when it ran longer (the whole group is
+// then killed, so a program it started does not outlive it).
+constexpr int kTimedOut = -2;
+int run_shell(const std::string& cmd, double timeout) {
+    std::fflush(nullptr);
+    const pid_t pid = fork();
+    if (pid < 0) return -1;
+    if (pid == 0) {
+        setpgid(0, 0);
+        execl("/bin/sh", "sh", "-c", cmd.c_str(), static_cast<char*>(nullptr));
+        _exit(127);
+    }
+    setpgid(pid, pid);  // also here: the group exists whichever process runs first
+    const auto until = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout);
+    int status = 0;
+    for (long nap_us = 1000;;) {
+        const pid_t r = waitpid(pid, &status, WNOHANG);
+        if (r == pid) return status;
+        if (r < 0 && errno != EINTR) return -1;
+        if (std::chrono::steady_clock::now() >= until) {
+            kill(-pid, SIGKILL);
+            while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {}
+            return kTimedOut;
+        }
+        usleep(static_cast<useconds_t>(nap_us));
+        nap_us = std::min(nap_us * 2, 50000L);
+    }
+}
+
 // The user's own program as a method (audit --command CMD): run once per scene as
 // `CMD SCENE.json PAIRS.json CLAIMS.json` (a private temporary folder), where SCENE.json is the scene
 // exactly, PAIRS.json {"format": "scalecert-pairs-1", "pairs": [[rho1, rho2], ...]} the doubles the
@@ -163,7 +194,8 @@ void wrong_by_distance(const fp::Method& mm, const DistancePairs& p, AuditRow& r
 // A command that fails, or claims that cannot be read as that, are refused in one line.
 class CommandMethod : public fp::Method {
   public:
-    CommandMethod(const std::string& command, const ExactScene& s, const std::vector<std::pair<double, double>>& pairs)
+    CommandMethod(const std::string& command, const ExactScene& s, const std::vector<std::pair<double, double>>& pairs,
+                  double timeout)
         : command_(command) {
         char dir_template[] = "/tmp/scalecert-command-XXXXXX";
         const char* d = mkdtemp(dir_template);
@@ -182,7 +214,13 @@ class CommandMethod : public fp::Method {
         std::ofstream(scene) << dump(scene_file_json(s));
         std::ofstream(asked) << dump(Json{{"format", "scalecert-pairs-1"}, {"pairs", std::move(pj)}});
         const std::string cmd = command + " '" + scene + "' '" + asked + "' '" + out + "'";
-        const int status = std::system(cmd.c_str());
+        const int status = run_shell(cmd, timeout);
+        if (status == kTimedOut) {
+            char m[64];
+            std::snprintf(m, sizeof m, "%g s", timeout);
+            throw InputError("--command: " + in_quotes(command) + " did not finish within " + m +
+                             " (--command-timeout); it was stopped");
+        }
         if (status == -1 || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
             throw InputError("--command: " + in_quotes(command) + " failed (" +
                              (status != -1 && WIFEXITED(status) ? "exit status " + std::to_string(WEXITSTATUS(status))
@@ -309,7 +347,8 @@ std::vector<AuditRow> audit_convex(const std::string& name, const ExactScene& s,
             std::vector<std::pair<double, double>> pairs;
             for (size_t i = 0; i < r1.size(); ++i) pairs.push_back({r1[i], r2[i]});
             for (size_t i = 0; i < near.x.size(); ++i) pairs.push_back({near.x[i], near.y[i]});
-            mm = std::make_unique<CommandMethod>(meth.substr(std::string(kCommandMethod).size()), s, pairs);
+            mm = std::make_unique<CommandMethod>(meth.substr(std::string(kCommandMethod).size()), s, pairs,
+                                                 settings.command_timeout);
         } else {
             mm = fp::make_method(meth, m, f);
         }

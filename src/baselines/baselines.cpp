@@ -175,7 +175,7 @@ class LibccdParts : public Method {
 
 // The settings each method's calls read: libccd's GJK its iteration limit (and its EPA, the
 // depths, the EPA tolerance), its MPR the MPR tolerance; FCL's requests their two tolerances;
-// Bullet's shapes their margin.
+// Bullet's shapes their margin; the user's program its time limit.
 std::vector<std::pair<std::string, double>> settings_of(const std::string& method, const MethodSettings& s) {
     const double iterations = static_cast<double>(s.ccd_max_iterations);
     if (method == "libccd-gjk") return {{"ccd-max-iterations", iterations}, {"ccd-epa-tolerance", s.ccd_epa_tolerance}};
@@ -184,6 +184,7 @@ std::vector<std::pair<std::string, double>> settings_of(const std::string& metho
     if (method.rfind("fcl-", 0) == 0)
         return {{"fcl-gjk-tolerance", s.fcl_gjk_tolerance}, {"fcl-distance-tolerance", s.fcl_distance_tolerance}};
     if (method.rfind("bullet-", 0) == 0) return {{"bullet-margin", s.bullet_margin}};
+    if (method.rfind("command=", 0) == 0) return {{"command-timeout", s.command_timeout}};
     return {};
 }
 

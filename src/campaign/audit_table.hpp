@@ -18,6 +18,7 @@ struct MethodSettings {
     double fcl_distance_tolerance = 1e-6;                       // FCL's DistanceRequest::distance_tolerance
     unsigned long ccd_max_iterations = 500;                     // libccd's ccd_t::max_iterations
     double ccd_epa_tolerance = 1e-4, ccd_mpr_tolerance = 1e-4;  // libccd's ccd_t
+    double command_timeout = 600;  // seconds the user's program (audit --command) may run per scene
 };
 
 struct AuditRow {

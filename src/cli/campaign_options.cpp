@@ -137,6 +137,11 @@ void add_audit_options(CLI::App* sub, internal::CampaignArgs& a) {
            "audit your own program beside --methods: run once per scene as CMD SCENE.json PAIRS.json CLAIMS.json, it "
            "reads the scene and the pairs of doubles asked and writes one verdict claim per pair (docs/audits.md)")
         ->type_name("CMD");
+    sub->add_option("--command-timeout", a.settings.command_timeout,
+                    "seconds --command's program may run per scene before it is stopped and the audit refused "
+                    "(default 600)")
+        ->type_name("SECONDS")
+        ->check(finite_number(0, true));
     // After --methods (whatever the order on the line): the user's program is one method more.
     sub->parse_complete_callback([&a] {
         if (!a.command.empty()) a.methods.push_back(internal::kCommandMethod + a.command);
