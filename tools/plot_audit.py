@@ -27,11 +27,32 @@ import matplotlib.pyplot as plt  # noqa: E402
 from plot import finish  # noqa: E402  (tools/plot.py, beside this script)
 
 
+# A colour and a marker per method, none of them the exact line's (black, dashed), so a method
+# that is never wrong is drawn over that line, not hidden under it.
+STYLES = [("#1f77b4", "o"), ("#d62728", "s"), ("#9467bd", "^"), ("#ff7f0e", "D"), ("#8c564b", "v"),
+          ("#e377c2", "P"), ("#7f7f7f", "X"), ("#17becf", "*"), ("#bcbd22", "h")]
+
+
+def style(k):
+    colour, marker = STYLES[k % len(STYLES)]
+    return {"color": colour, "marker": marker, "ms": 4, "zorder": 3}
+
+
+def exact_line(ax):
+    ax.axhline(0, color="black", lw=1, ls="--", zorder=1, label="scalecert (exact): 0 by construction")
+
+
 def main():
     if len(sys.argv) != 3:
         print(__doc__)
         sys.exit(2)
-    rows = json.load(open(sys.argv[1]))
+    # The rows, read as tools/report.py reads them (each field used checked): one line, exit 2.
+    import report  # noqa: E402  (tools/report.py, beside this script)
+    try:
+        rows = report.load_rows(sys.argv[1])
+    except report.InputError as e:
+        print("plot_audit.py: error: %s" % e, file=sys.stderr)
+        sys.exit(2)
     outdir = sys.argv[2]
     os.makedirs(outdir, exist_ok=True)
     # Stability: per method, per eps: wrong verdicts / queries over all scenes.
@@ -43,14 +64,19 @@ def main():
             a[1] += r["queries"]
     # (A scene-file audit has no degeneracy eps: no stability chart then, rather than an empty one.)
     if acc:
+        # The families (a family scene is named FAMILY-INDEX) and how many scenes each eps has.
+        fam_rows = [r for r in rows if "queries" in r and float(Fraction(r["eps"])) > 0]
+        families = sorted({os.path.basename(r["scene"]).rsplit("-", 1)[0] for r in fam_rows})
+        per_eps = len({(r["scene"], r["eps"]) for r in fam_rows}) // max(1, len({r["eps"] for r in fam_rows}))
         fig, ax = plt.subplots(figsize=(6, 4))
-        for method, by_eps in sorted(acc.items()):
+        for k, (method, by_eps) in enumerate(sorted(acc.items())):
             xs = sorted(by_eps)
-            ax.plot(xs, [by_eps[x][0] / by_eps[x][1] for x in xs], "o-", ms=3, label=method)
-        ax.axhline(0, color="green", lw=2, label="scalecert (exact): 0 by construction")
+            ax.plot(xs, [by_eps[x][0] / by_eps[x][1] for x in xs], "-", label=method, **style(k))
+        exact_line(ax)
         ax.set_xscale("log", base=2)
-        finish(fig, ax, outdir, "stability", "stability", "degeneracy eps", "wrong-verdict rate (pairs on and near the curve)",
-               legend_loc="outside")
+        finish(fig, ax, outdir, "stability", "stability: %s, %d scene%s per eps" % (
+            ", ".join(families), per_eps, "" if per_eps == 1 else "s"), "degeneracy eps",
+            "wrong-verdict rate (pairs on and near the curve)", legend_loc="outside")
     # Wrong-verdict rate against the relative distance from the curve.
     bd = defaultdict(lambda: defaultdict(lambda: [0, 0]))
     touching = defaultdict(int)
@@ -65,14 +91,17 @@ def main():
         kinds = {"on_boundary" in r for r in rows if r.get("by_distance")}
         what = "the boundary" if kinds == {True} else "the curve" if kinds == {False} else "the curve or boundary"
         fig, ax = plt.subplots(figsize=(6, 4))
-        for method, by_k in sorted(bd.items()):
+        for k, (method, by_k) in enumerate(sorted(bd.items())):
             ks = sorted(by_k)
-            ax.plot([2.0 ** -k for k in ks], [by_k[k][0] / max(1, by_k[k][1]) for k in ks], "o-", ms=3, label=method)
-        ax.axhline(0, color="green", lw=2, label="scalecert (exact): 0 by construction")
+            ax.plot([2.0 ** -j for j in ks], [by_k[j][0] / max(1, by_k[j][1]) for j in ks], "-", label=method,
+                    **style(k))
+        exact_line(ax)
         ax.set_xscale("log", base=2)
         ax.invert_xaxis()
         t = ", ".join(f"2^-{k}: {n}" for k, n in sorted(touching.items()) if n)
-        finish(fig, ax, outdir, "by_distance", f"wrong verdicts near {what}" + (f" (touching, apart: {t})" if t else ""),
+        scenes = len({r["scene"] for r in rows if r.get("by_distance")})
+        finish(fig, ax, outdir, "by_distance", f"wrong verdicts near {what}, {scenes} scene{'' if scenes == 1 else 's'}" +
+               (f" (touching, apart: {t})" if t else ""),
                f"relative distance from {what}", "wrong-verdict rate", legend_loc="outside")
     # What each method says exactly on the boundary (objects made of parts).
     said = defaultdict(lambda: [0, 0, 0])
@@ -103,15 +132,22 @@ def main():
             err = r["max_junction_error"] if r["junctions_missed"] == 0 else float("nan")
             label = r["method"] + (f" n={r['grid_n']}" if r.get("grid_n") else "")
             pts[label].append((r["seconds_per_curve"], max(err, 1e-17) if err == err else None))
-    if not any(e is not None for v in pts.values() for t, e in v):
-        print("plot_audit.py: no scene with a switch point in its rectangle: no speed_accuracy chart", file=sys.stderr)
+    # Speed against accuracy compares the grid search with the exact engine: without a grid row
+    # with an error there is nothing to compare, and no chart.
+    if not any(e is not None for label, v in pts.items() if not label.startswith("scalecert") for t, e in v):
+        print("plot_audit.py: no grid method on a scene with a switch point in its rectangle: no speed_accuracy chart",
+              file=sys.stderr)
         return
     fig, ax = plt.subplots(figsize=(6, 4))
-    for label, v in sorted(pts.items()):
+    def by_method_then_n(item):  # "grid+... n=16" before "n=64" before "n=256"
+        method, _, n = item[0].partition(" n=")
+        return method, int(n) if n.isdigit() else 0
+
+    for k, (label, v) in enumerate(sorted(pts.items(), key=by_method_then_n)):
         xs = [t for t, e in v if e is not None]
         ys = [e for t, e in v if e is not None]
         if xs:
-            ax.plot(xs, ys, "o", ms=4, label=label)
+            ax.plot(xs, ys, ls="none", label=label, **style(k))
     ax.set_xscale("log")
     ax.set_yscale("log")
     finish(fig, ax, outdir, "speed_accuracy", "speed against accuracy", "seconds per curve",

@@ -72,8 +72,10 @@ def main():
         for w in r["wrong_contacts"]:
             x = q(w["rho1"])
             y = next(q(p["slope"]) * x + q(p["intercept"]) for p in curve["pieces"] if q(p["rho1"][0]) <= x <= q(p["rho1"][1]))
+            # Below and left of its point, ending there: under a descending curve, clear of it.
             ax.annotate(f"contact claimed {w['claimed']}, exact {w['exact']}", (x, y), textcoords="offset points",
-                        xytext=(-40, -24), fontsize=8, color="tab:red")
+                        xytext=(-6, -14), ha="right", va="top", fontsize=8, color="tab:red",
+                        arrowprops={"arrowstyle": "-", "color": "tab:red", "lw": 0.6})
         for e in r["switch_points_extra"]:
             ax.axvline(q(e), color="tab:orange", lw=0.8, ls=":")
         drawn += 1

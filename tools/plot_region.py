@@ -293,14 +293,21 @@ def hull_faces(pts):
     return faces
 
 
+def mesh_part(scene):
+    """Why region_3d cannot draw the scene (a part given as a mesh or as OBJ groups), or None."""
+    for name in ("P1", "P2"):
+        obj = scene[name]
+        for k, p in enumerate(obj.get("parts", [obj])):
+            if "vertices" not in p or obj.get("parts_from_groups"):
+                return (f"{name}'s part {k} is not given by \"vertices\" (a mesh or OBJ groups): region_3d draws "
+                        f"only parts listed as vertices in the scene")
+    return None
+
+
 def object_parts(scene, name):
-    """An object's parts (lists of exact points) and seed; a part given as a mesh is refused."""
+    """An object's parts (lists of exact points) and seed (every part given by vertices: mesh_part)."""
     obj = scene[name]
     parts = obj.get("parts", [obj])
-    for k, p in enumerate(parts):
-        if "vertices" not in p or obj.get("parts_from_groups"):
-            refuse(f"{name}'s part {k} is not given by \"vertices\" (a mesh or OBJ groups): "
-                     f"region_3d draws only parts listed as vertices in the scene (region_rho is drawn)")
     pts = [[point(v) for v in p["vertices"]] for p in parts]
     if "seed" in obj:
         seed = point(obj["seed"])
@@ -403,7 +410,12 @@ def main():
     try:
         os.makedirs(outdir, exist_ok=True)
         at = at or default_at(region)
-        region_rho(scene, region, at, outdir)
+        # region_rho marks the 3-D view's point only when region_3d draws it.
+        no_3d = mesh_part(scene)
+        region_rho(scene, region, None if no_3d else at, outdir)
+        if no_3d:
+            print(f"plot_region.py: no region_3d: {no_3d}", file=sys.stderr)
+            return
         if at is None:
             print("plot_region.py: no switch point and no edge on a contact: no region_3d (give --at)", file=sys.stderr)
             return
