@@ -354,6 +354,66 @@ BOOST_AUTO_TEST_CASE(the_panda_finger_scenes_at_one_by_hand) {
     BOOST_TEST(static_cast<int>(c.verdict(Q(1), Q(1) - Q(1, 1000)).verdict) == 0);
 }
 
+BOOST_AUTO_TEST_CASE(compound_contacts_are_judged_against_their_part_pairs_depth) {
+    // Stacked cubes, one part each: where they overlap, the pair's depth is the overlap along z,
+    // r1 + r2 − 3 (the x and y overlaps, 2 min(r1, r2), are larger on [1/2, 5/2]²: max − min < 3).
+    // Each contact a method reports at an overlapping sample it calls overlapping is compared
+    // with it: the row's count and worst relative error are those recomputed here.
+    {
+        const Audited a = samples_of("stacked_cubes.json", 200, 32);
+        CompoundJudge judge(a.scene, "cubes");
+        const fp::CompoundFp f = compound_fp(judge);
+        const std::vector<AuditRow> rows =
+            audit_scene("cubes", a.scene, Q(0), {"bullet-compound", "fcl-compound-libccd"}, {}, false, true, {});
+        BOOST_TEST_REQUIRE(rows.size() == 2u);
+        for (const AuditRow& row : rows) {
+            const std::unique_ptr<fp::Method> m = fp::make_compound_method(row.method, f);
+            long n = 0;
+            double worst = 0;
+            for (const CompoundSample& c : a.samples) {
+                if (c.exact != 2 || m->classify(c.r1, c.r2) >= 0) continue;
+                const Q d = q(c.r1) + q(c.r2) - 3;
+                BOOST_TEST_REQUIRE(sgn(d) > 0);
+                for (const fp::PartContact& k : m->contacts(c.r1, c.r2)) {
+                    BOOST_TEST((k.part1 == 0 && k.part2 == 0));
+                    if (!(k.depth > 0)) continue;
+                    ++n;
+                    const Q err = abs(Q(q(k.depth) - d)) / d;
+                    worst = std::max(worst, err.get_d());
+                }
+            }
+            BOOST_TEST(n > 100, row.method);
+            BOOST_TEST(row.depths == n, row.method);
+            BOOST_TEST(row.depth_err_max == worst, boost::test_tools::tolerance(1e-9));
+            BOOST_TEST(row.contacts_apart == 0);
+        }
+    }
+    // The L and the box: along x the L's foot (part 0) reaches 1/2 + 3 r1/2 and the box starts at
+    // 7/2 − r2/2, so they overlap where 3 r1 + r2 > 6; the L's upright (part 1) lies at y >=
+    // 1/2 + r1/2, the box at y <= 1/2 + r2/2, and along x it needs r1 + r2 >= 6: with r1 <= 4 and
+    // r2 <= 3 only r1 = r2 = 3 (touching). So a contact on the upright is on a pair that does not
+    // overlap (contacts_apart), and every other is on the foot: the parts are named right.
+    const Audited l = samples_of("compound/l_box.json", 200, 32);
+    CompoundJudge judge(l.scene, "l_box");
+    const fp::CompoundFp f = compound_fp(judge);
+    for (const AuditRow& row :
+         audit_scene("l_box", l.scene, Q(0), {"bullet-compound", "fcl-compound-libccd"}, {}, false, true, {})) {
+        const std::unique_ptr<fp::Method> m = fp::make_compound_method(row.method, f);
+        long foot = 0, upright = 0;
+        for (const CompoundSample& c : l.samples) {
+            if (c.exact != 2 || m->classify(c.r1, c.r2) >= 0) continue;
+            for (const fp::PartContact& k : m->contacts(c.r1, c.r2)) {
+                if (!(k.depth > 0)) continue;
+                BOOST_TEST(k.part2 == 0);
+                ++(k.part1 == 0 ? foot : upright);
+            }
+        }
+        BOOST_TEST(foot > 100, row.method);
+        BOOST_TEST(row.depths == foot, row.method);
+        BOOST_TEST(row.contacts_apart == upright, row.method);
+    }
+}
+
 BOOST_AUTO_TEST_CASE(a_bullet_margin_inflates_the_shapes_and_the_rows_record_it) {
     // Stacked cubes: P1(r1) reaches z = 1 + r1 and P2(r2) starts at z = 4 − r2, a gap of 3 − r1 − r2
     // along z (their x and y ranges always meet). A collision margin m puts a skin of m around each

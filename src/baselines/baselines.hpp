@@ -36,6 +36,15 @@ struct Measure {
     std::optional<std::array<D3, 2>> closest;  // on P1, on P2
 };
 
+// Objects made of parts: a contact the method reports on one part pair (FCL's and Bullet's
+// compound queries report one or more per colliding pair): the part of P1 and of P2, the depth,
+// and the direction in which translating P2's part by the depth makes the two parts touch.
+struct PartContact {
+    int part1 = 0, part2 = 0;
+    double depth = 0;
+    D3 direction{};
+};
+
 // +1 separated, 0 touching (only methods that can say so), −1 overlapping.
 class Method {
   public:
@@ -46,6 +55,9 @@ class Method {
     virtual std::optional<Measure> measure(double /*r1*/, double /*r2*/, bool /*separated*/) const {
         return std::nullopt;
     }
+    // Objects made of parts: the contacts the method's collision query reports, the deepest per
+    // part pair; none where its API gives none.
+    virtual std::vector<PartContact> contacts(double /*r1*/, double /*r2*/) const { return {}; }
 };
 
 // libccd's GJK and MPR on the two scaled vertex sets (support function per polytope).

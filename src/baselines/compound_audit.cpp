@@ -9,6 +9,8 @@
 
 #include <chrono>
 #include <cmath>
+#include <map>
+#include <tuple>
 
 namespace scalecert::internal {
 
@@ -219,6 +221,8 @@ std::vector<AuditRow> audit_compound(const std::string& name, const ExactScene& 
     fp::CompoundFp f = compound_fp(judge);
     f.settings = settings;
     std::vector<std::optional<Q>> squared(samples.size());  // exact squared distances, once for all methods
+    // Exact squared depths of part pairs at samples, once for all methods (−1: the pair does not overlap).
+    std::map<std::tuple<size_t, int, int>, std::optional<Q>> pair_depths;
     std::vector<AuditRow> rows;
     for (const std::string& meth : methods) {
         std::unique_ptr<fp::Method> mm = fp::make_compound_method(meth, f);
@@ -256,6 +260,42 @@ std::vector<AuditRow> audit_compound(const std::string& name, const ExactScene& 
             row.distances = static_cast<long>(err.size());
             row.distance_err_median = median(err);
             for (double e : err) row.distance_err_max = std::max(row.distance_err_max, e);
+            // Contacts where the objects overlap and the method says so: each part pair's reported
+            // depth against that pair's exact depth (the pair's depth as two convex objects', proved
+            // by the exact EPA), and its direction's depth along it; a contact on a pair that does
+            // not overlap exactly is counted apart (contacts_apart).
+            std::vector<double> derr;
+            for (size_t i = 0; i < samples.size(); ++i) {
+                if (samples[i].exact != 2 || said[i] >= 0) continue;
+                const Q a = exact_from_double(samples[i].r1), bb = exact_from_double(samples[i].r2);
+                for (const fp::PartContact& c : mm->contacts(samples[i].r1, samples[i].r2)) {
+                    if (c.part1 < 0 || c.part2 < 0 || static_cast<size_t>(c.part1) >= judge.parts(0) ||
+                        static_cast<size_t>(c.part2) >= judge.parts(1) || !(c.depth > 0) || !std::isfinite(c.depth))
+                        continue;
+                    auto& E = pair_depths[{i, c.part1, c.part2}];
+                    if (!E) {
+                        const MeasuredDepth m = judge.pair_depth(c.part1, c.part2, a, bb);
+                        E = m.state == MeasuredDepth::Overlapping && m.depth ? m.depth->squared : Q(-1);
+                    }
+                    if (sgn(*E) <= 0) {
+                        ++row.contacts_apart;
+                        continue;
+                    }
+                    const double root = std::sqrt(to_double_rn(*E));
+                    derr.push_back(std::fabs(sqrt_minus_rn(*E, exact_from_double(c.depth))) / root);
+                    const fp::D3& d = c.direction;
+                    if ((d[0] != 0 || d[1] != 0 || d[2] != 0) && std::isfinite(d[0] + d[1] + d[2])) {
+                        const Vec3q n{exact_from_double(d[0]), exact_from_double(d[1]), exact_from_double(d[2])};
+                        const Q along = judge.pair_directional_depth(c.part1, c.part2, n, a, bb);
+                        if (sgn(along) >= 0)
+                            row.direction_err_max =
+                                std::max(row.direction_err_max, (sqrt_minus_rn(along, Q(0)) - root) / root);
+                    }
+                }
+            }
+            row.depths = static_cast<long>(derr.size());
+            row.depth_err_median = median(derr);
+            for (double e : derr) row.depth_err_max = std::max(row.depth_err_max, e);
         }
         rows.push_back(row);
     }

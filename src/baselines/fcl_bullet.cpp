@@ -18,6 +18,8 @@
 #include <fcl/narrowphase/collision.h>
 #include <fcl/narrowphase/distance.h>
 
+#include <map>
+
 namespace scalecert::internal::fp {
 
 namespace {
@@ -210,7 +212,38 @@ class BulletCompound : public Method {
         return best;
     }
 
+    // btCollisionWorld::contactPairTest's manifold points: each names its child shapes (the
+    // parts), its distance (< 0: a depth) and its normal on the second object, pointing at the
+    // first; the deepest point of each part pair is its contact.
+    std::vector<PartContact> contacts(double r1, double r2) const override {
+        scale(r1, r2);
+        Deepest cb(&object_[0]);
+        world_.contactPairTest(&object_[0], &object_[1], cb);
+        std::vector<PartContact> out;
+        for (const auto& [pair, c] : cb.deepest) out.push_back(c);
+        return out;
+    }
+
   private:
+    struct Deepest : btCollisionWorld::ContactResultCallback {
+        explicit Deepest(const btCollisionObject* first) : first(first) {}
+        const btCollisionObject* first;
+        std::map<std::pair<int, int>, PartContact> deepest;
+        btScalar addSingleResult(btManifoldPoint& cp, const btCollisionObjectWrapper* w0, int, int index0,
+                                 const btCollisionObjectWrapper*, int, int index1) override {
+            if (!(cp.getDistance() < 0)) return 0;
+            const bool swap = w0->getCollisionObject() != first;        // the points name P2's part first
+            const btVector3 n = cp.m_normalWorldOnB * (swap ? -1 : 1);  // from P2 towards P1
+            PartContact c;
+            c.part1 = swap ? index1 : index0;
+            c.part2 = swap ? index0 : index1;
+            c.depth = -cp.getDistance();
+            c.direction = {-n.x(), -n.y(), -n.z()};
+            auto [at, fresh] = deepest.emplace(std::make_pair(c.part1, c.part2), c);
+            if (!fresh && c.depth > at->second.depth) at->second = c;
+            return 0;
+        }
+    };
     struct Contacts : btCollisionWorld::ContactResultCallback {
         long count = 0;
         btScalar least = 0;
@@ -271,6 +304,35 @@ class FclCompound : public Method {
         sc.manager[0].collide(&sc.manager[1], &data, fcl::DefaultCollisionFunction<double>);
         return data.result.isCollision() ? -1 : 1;
     }
+    // collide() with contacts (one per colliding part pair, FCL's GJK/EPA), every pair: its
+    // normal points from the first object's part to the second's.
+    std::vector<PartContact> contacts(double r1, double r2) const override {
+        Scene sc(*this, r1, r2);
+        fcl::DefaultCollisionData<double> data;
+        data.request.gjk_solver_type = type_;
+        data.request.gjk_tolerance = s_.settings.fcl_gjk_tolerance;
+        data.request.enable_contact = true;
+        data.request.num_max_contacts = 1000000;
+        sc.manager[0].collide(&sc.manager[1], &data, fcl::DefaultCollisionFunction<double>);
+        std::map<std::pair<int, int>, PartContact> deepest;
+        for (size_t k = 0; k < data.result.numContacts(); ++k) {
+            const fcl::Contactd& c = data.result.getContact(k);
+            const int i1 = sc.part_of(c.o1), i2 = sc.part_of(c.o2);
+            if (i1 < 0 || i2 < 0) continue;
+            const bool swap = sc.object_of(c.o1) == 1;
+            PartContact p;
+            p.part1 = swap ? i2 : i1;
+            p.part2 = swap ? i1 : i2;
+            p.depth = c.penetration_depth;
+            const fcl::Vector3d n = c.normal * (swap ? -1.0 : 1.0);
+            p.direction = {n[0], n[1], n[2]};
+            auto [at, fresh] = deepest.emplace(std::make_pair(p.part1, p.part2), p);
+            if (!fresh && p.depth > at->second.depth) at->second = p;
+        }
+        std::vector<PartContact> out;
+        for (const auto& [pair, c] : deepest) out.push_back(c);
+        return out;
+    }
     std::optional<Measure> measure(double r1, double r2, bool separated) const override {
         if (!separated) return std::nullopt;
         Scene sc(*this, r1, r2);
@@ -304,6 +366,15 @@ class FclCompound : public Method {
                 manager[i].registerObjects(list);
                 manager[i].setup();
             }
+        }
+        // The object (0, 1) and part of a part's geometry, or −1.
+        int object_of(const fcl::CollisionGeometryd* g) const { return locate(g).first; }
+        int part_of(const fcl::CollisionGeometryd* g) const { return locate(g).second; }
+        std::pair<int, int> locate(const fcl::CollisionGeometryd* g) const {
+            for (int i = 0; i < 2; ++i)
+                for (size_t k = 0; k < objects[i].size(); ++k)
+                    if (objects[i][k]->collisionGeometry().get() == g) return {i, static_cast<int>(k)};
+            return {-1, -1};
         }
     };
     std::shared_ptr<fcl::CollisionGeometryd> shape(int i, size_t k, double rho) const {

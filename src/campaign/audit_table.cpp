@@ -138,6 +138,7 @@ Json audit_json(const std::vector<AuditRow>& rows, bool timing) {
                 o["depth_err_max"] = r.depth_err_max;
                 o["direction_err_max"] = r.direction_err_max;
             }
+            if (r.contacts_apart) o["contacts_apart"] = r.contacts_apart;
         }
         a.push_back(o);
     }

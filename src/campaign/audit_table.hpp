@@ -37,6 +37,7 @@ struct AuditRow {
     // excess of the depth along the reported direction over the true depth.
     long distances = 0, depths = 0;
     long closest_outside = 0;  // reported closest (witness) points not in their scaled body, exactly
+    long contacts_apart = 0;   // objects made of parts: contacts reported on a part pair that does not overlap
     double distance_err_median = 0, distance_err_max = 0, depth_err_median = 0, depth_err_max = 0,
            direction_err_max = 0;
     // With by_distance: at relative distances 2^-k above and below the curve (k = 4, 8, ..., 52),

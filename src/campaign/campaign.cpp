@@ -172,6 +172,7 @@ Json row_json(const AuditRow& r) {
         {"distances", r.distances},
         {"depths", r.depths},
         {"closest_outside", r.closest_outside},
+        {"contacts_apart", r.contacts_apart},
         {"distance_err_median", num_json(r.distance_err_median)},
         {"distance_err_max", num_json(r.distance_err_max)},
         {"depth_err_median", num_json(r.depth_err_median)},
@@ -224,6 +225,7 @@ AuditRow row_of(const Json& j) {
     r.distances = j.at("distances").get<long>();
     r.depths = j.at("depths").get<long>();
     r.closest_outside = j.at("closest_outside").get<long>();
+    r.contacts_apart = j.at("contacts_apart").get<long>();
     r.distance_err_median = num_of(j.at("distance_err_median"));
     r.distance_err_max = num_of(j.at("distance_err_max"));
     r.depth_err_median = num_of(j.at("depth_err_median"));
