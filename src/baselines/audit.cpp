@@ -66,8 +66,9 @@ double median(std::vector<double> v) {
 // `verdicts` are the method's own at those pairs.
 void measure_errors(const fp::Method& mm, const HullModel& m, const std::vector<double>& r1,
                     const std::vector<double>& r2, const std::vector<Verdict>& exact, const std::vector<int>& verdicts,
-                    ExactCache& cache, AuditRow& row) {
+                    ExactCache& cache, double tolerance, AuditRow& row) {
     std::vector<double> dist_err, depth_err;
+    std::vector<AuditRow::MeasureFailure> measured;
     for (size_t i = 0; i < r1.size(); ++i) {
         if (exact[i] == Verdict::Touching) continue;
         const bool sep = exact[i] == Verdict::Separated;
@@ -92,6 +93,7 @@ void measure_errors(const fp::Method& mm, const HullModel& m, const std::vector<
         if (!(root > 0)) continue;
         const double err = std::fabs(sqrt_minus_rn(E, exact_from_double(me->value))) / root;
         (sep ? dist_err : depth_err).push_back(err);
+        measured.push_back({r1[i], r2[i], !sep, me->value, err});
         if (me->closest) {
             const auto& cp = *me->closest;
             const Vec3q p{exact_from_double(cp[0][0]), exact_from_double(cp[0][1]), exact_from_double(cp[0][2])};
@@ -113,6 +115,7 @@ void measure_errors(const fp::Method& mm, const HullModel& m, const std::vector<
     row.depth_err_median = median(depth_err);
     for (double e : dist_err) row.distance_err_max = std::max(row.distance_err_max, e);
     for (double e : depth_err) row.depth_err_max = std::max(row.depth_err_max, e);
+    row.note_measures(std::move(measured), tolerance);
 }
 
 // The pairs at relative distances 2^-k from the curve (k = 4, 8, ..., 52), on 15 verticals, above
@@ -367,7 +370,7 @@ std::vector<AuditRow> audit_convex(const std::string& name, const ExactScene& s,
         }
         for (size_t i = 0; i < r1.size(); ++i) r.note(r1[i], r2[i], verdicts[i], static_cast<int>(exact[i]));
         r.seconds_per_query = std::chrono::duration<double>(Clock::now() - t0).count() / static_cast<double>(r1.size());
-        if (measures) measure_errors(*mm, m, r1, r2, exact, verdicts, cache, r);
+        if (measures) measure_errors(*mm, m, r1, r2, exact, verdicts, cache, settings.measure_tolerance, r);
         if (by_distance) wrong_by_distance(*mm, near, r);
         rows.push_back(r);
     }

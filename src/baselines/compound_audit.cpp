@@ -239,6 +239,7 @@ std::vector<AuditRow> audit_compound(const std::string& name, const ExactScene& 
             // Distances where the pair is separated and the method says so, against the exact
             // least distance over the part pairs; the closest points checked for membership.
             std::vector<double> err;
+            std::vector<AuditRow::MeasureFailure> measured;
             for (size_t i = 0; i < samples.size(); ++i) {
                 if (samples[i].exact != 0 || said[i] <= 0) continue;
                 const std::optional<fp::Measure> me = mm->measure(samples[i].r1, samples[i].r2, true);
@@ -248,6 +249,7 @@ std::vector<AuditRow> audit_compound(const std::string& name, const ExactScene& 
                 const double root = std::sqrt(to_double_rn(*squared[i]));
                 if (!(root > 0)) continue;
                 err.push_back(std::fabs(sqrt_minus_rn(*squared[i], exact_from_double(me->value))) / root);
+                measured.push_back({samples[i].r1, samples[i].r2, false, me->value, err.back()});
                 if (me->closest) {
                     const auto& cp = *me->closest;
                     const Vec3q p{exact_from_double(cp[0][0]), exact_from_double(cp[0][1]),
@@ -283,6 +285,7 @@ std::vector<AuditRow> audit_compound(const std::string& name, const ExactScene& 
                     }
                     const double root = std::sqrt(to_double_rn(*E));
                     derr.push_back(std::fabs(sqrt_minus_rn(*E, exact_from_double(c.depth))) / root);
+                    measured.push_back({samples[i].r1, samples[i].r2, true, c.depth, derr.back(), c.part1, c.part2});
                     const fp::D3& d = c.direction;
                     if ((d[0] != 0 || d[1] != 0 || d[2] != 0) && std::isfinite(d[0] + d[1] + d[2])) {
                         const Vec3q n{exact_from_double(d[0]), exact_from_double(d[1]), exact_from_double(d[2])};
@@ -296,6 +299,7 @@ std::vector<AuditRow> audit_compound(const std::string& name, const ExactScene& 
             row.depths = static_cast<long>(derr.size());
             row.depth_err_median = median(derr);
             for (double e : derr) row.depth_err_max = std::max(row.depth_err_max, e);
+            row.note_measures(std::move(measured), settings.measure_tolerance);
         }
         rows.push_back(row);
     }

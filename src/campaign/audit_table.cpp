@@ -1,9 +1,21 @@
 #include "campaign/audit_table.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
 namespace scalecert::internal {
+
+void AuditRow::note_measures(std::vector<MeasureFailure> all, double tolerance) {
+    const double past = tolerance + std::ldexp(tolerance, -40);
+    all.erase(std::remove_if(all.begin(), all.end(), [past](const MeasureFailure& f) { return !(f.error > past); }),
+              all.end());
+    measures_wrong = static_cast<long>(all.size());
+    std::stable_sort(all.begin(), all.end(),
+                     [](const MeasureFailure& a, const MeasureFailure& b) { return a.error > b.error; });
+    if (all.size() > kMaxFailures) all.resize(kMaxFailures);
+    measure_failures = std::move(all);
+}
 
 std::string audit_csv(const std::vector<AuditRow>& rows, bool timing) {
     std::string s =
@@ -131,6 +143,20 @@ Json audit_json(const std::vector<AuditRow>& rows, bool timing) {
                                       {"said", f.said > 0 ? "separated" : "intersecting"},
                                       {"exact", exact_name[f.exact]}});
                 o["failures"] = fs;  // the first AuditRow::kMaxFailures wrong verdicts
+            }
+            if (r.measures_wrong) {
+                o["measures_wrong"] = r.measures_wrong;
+                Json ms = Json::array();
+                for (const AuditRow::MeasureFailure& f : r.measure_failures) {
+                    Json m{{"rho1", f.rho1},
+                           {"rho2", f.rho2},
+                           {"kind", f.depth ? "penetration_depth" : "distance"},
+                           {"value", f.value},
+                           {"rel_error", f.error}};
+                    if (f.part1 >= 0) m["parts"] = Json::array({f.part1, f.part2});
+                    ms.push_back(std::move(m));
+                }
+                o["measure_failures"] = ms;  // the worst AuditRow::kMaxFailures past --measure-tolerance
             }
             if (r.depths) {
                 o["depths"] = r.depths;

@@ -19,6 +19,9 @@ struct MethodSettings {
     unsigned long ccd_max_iterations = 500;                     // libccd's ccd_t::max_iterations
     double ccd_epa_tolerance = 1e-4, ccd_mpr_tolerance = 1e-4;  // libccd's ccd_t
     double command_timeout = 600;  // seconds the user's program (audit --command) may run per scene
+    // Not a method's: the relative error past which a method's distance or depth is listed as a
+    // failure with a reproducer (audit --measure-tolerance).
+    double measure_tolerance = 1e-6;
 };
 
 struct AuditRow {
@@ -75,6 +78,22 @@ struct AuditRow {
         const bool wrong = (v > 0 && exact != 0) || (v < 0 && exact == 0);
         if (wrong && failures.size() < kMaxFailures) failures.push_back({r1, r2, v > 0 ? 1 : -1, exact});
     }
+    // Where the method's distances or depths were off by more than the audit's measure tolerance
+    // (relative): `measures_wrong` of them, the worst kMaxFailures listed (largest error first,
+    // ties in the audit's order), each with the pair asked, the value, its relative error and, on
+    // objects made of parts, a depth's part pair. --failures writes them as claims that certify-fp
+    // replays at that tolerance.
+    struct MeasureFailure {
+        double rho1 = 0, rho2 = 0;
+        bool depth = false;
+        double value = 0, error = 0;
+        int part1 = -1, part2 = -1;
+    };
+    std::vector<MeasureFailure> measure_failures;
+    long measures_wrong = 0;
+    // Keeps, of every measured value and its error, those past the tolerance (with a margin of
+    // 2^-40 of it, for the error's own rounding), the worst first.
+    void note_measures(std::vector<MeasureFailure> all, double tolerance);
 };
 
 // Without timing, the timing columns are left empty (CSV) and out (JSON): the rest is the same

@@ -9,6 +9,7 @@
 #include "io/files.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
@@ -197,6 +198,15 @@ Json row_json(const AuditRow& r) {
                  a.push_back(Json::array({num_json(f.rho1), num_json(f.rho2), f.said, f.exact}));
              return a;
          }()},
+        {"measures_wrong", r.measures_wrong},
+        {"measure_failures",
+         [&] {
+             Json a = Json::array();
+             for (const AuditRow::MeasureFailure& f : r.measure_failures)
+                 a.push_back(Json::array({num_json(f.rho1), num_json(f.rho2), f.depth, num_json(f.value),
+                                          num_json(f.error), f.part1, f.part2}));
+             return a;
+         }()},
         {"settings", [&] {
              Json a = Json::array();
              for (const auto& [key, value] : r.settings) a.push_back(Json::array({key, num_json(value)}));
@@ -242,6 +252,10 @@ AuditRow row_of(const Json& j) {
     if (j.contains("failures"))
         for (const Json& f : j.at("failures"))
             r.failures.push_back({num_of(f.at(0)), num_of(f.at(1)), f.at(2).get<int>(), f.at(3).get<int>()});
+    r.measures_wrong = j.at("measures_wrong").get<long>();
+    for (const Json& f : j.at("measure_failures"))
+        r.measure_failures.push_back({num_of(f.at(0)), num_of(f.at(1)), f.at(2).get<bool>(), num_of(f.at(3)),
+                                      num_of(f.at(4)), f.at(5).get<int>(), f.at(6).get<int>()});
     if (j.contains("settings"))
         for (const Json& x : j.at("settings")) r.settings.push_back({x.at(0).get<std::string>(), num_of(x.at(1))});
     return r;
@@ -384,8 +398,9 @@ std::string run_shard(const CampaignArgs& a, const Shard& s) {
             const ExactScene sc = make_family_scene(family, eps, g);
             auto r = a.auditor.run(name, sc, eps, a.methods, a.grid, a.by_distance, a.measures, a.settings);
             // A family scene has no file: with --failures, the reproducers get one.
-            if (!a.failures.empty() &&
-                std::any_of(r.begin(), r.end(), [](const AuditRow& x) { return !x.failures.empty(); }))
+            if (!a.failures.empty() && std::any_of(r.begin(), r.end(), [](const AuditRow& x) {
+                    return !x.failures.empty() || !x.measure_failures.empty();
+                }))
                 write_file_atomically(family_scene_file(a.failures, name, eps), dump(scene_file_json(sc)));
             rows.insert(rows.end(), r.begin(), r.end());
         }
@@ -414,37 +429,67 @@ void write_failures(const CampaignArgs& a, const std::vector<AuditRow>& rows) {
     // scene's copy run_shard wrote beside the claims.
     std::set<std::string> files(a.scenes.begin(), a.scenes.end()), used;
     Json index = Json::array();
+    const std::string numbers =
+        a.opt.numbers == Numbers::Double ? "" : std::string(" --numbers ") + numbers_name(a.opt.numbers);
+    // The measure tolerance as certify-fp reads it back: the shortest decimal of the double.
+    char tol[32];
+    const auto end = std::to_chars(tol, tol + sizeof tol, a.settings.measure_tolerance).ptr;
+    const std::string tolerance(tol, end);
     for (const AuditRow& r : rows) {
-        if (r.failures.empty()) continue;
+        if (r.failures.empty() && r.measure_failures.empty()) continue;
         const bool given = a.given.count(r.scene) > 0, file = files.count(r.scene) > 0 && !given;
         const std::string scene = file    ? r.scene
                                   : given ? a.failures + "/" + r.scene + ".scene.json"
                                           : family_scene_file(a.failures, r.scene, r.eps);
-        // NAME.METHOD.claims.json, NAME the scene file's stem; a second scene of that stem gets -2, ...
+        // NAME.METHOD.claims.json (verdicts) and NAME.METHOD.measures.claims.json (distances and
+        // depths), NAME the scene file's stem; a second scene of that stem gets -2, ...
         std::string method;
         for (char ch : r.method) method += std::isalnum(static_cast<unsigned char>(ch)) || ch == '-' ? ch : '_';
         std::string stem = std::filesystem::path(scene).filename().string();  // NAME.json, NAME.eps-P_Q.scene.json
         stem.resize(stem.size() -
                     (file ? std::filesystem::path(scene).extension().string().size() : 11));  // ".scene.json"
-        std::string name = stem + "." + method + ".claims.json";
-        for (int k = 2; !used.insert(name).second; ++k)
-            name = stem + "-" + std::to_string(k) + "." + method + ".claims.json";
-        Json claims = Json::array();
-        for (const AuditRow::Failure& f : r.failures)
-            claims.push_back(Json{{"kind", "verdict"},
-                                  {"rho1", f.rho1},
-                                  {"rho2", f.rho2},
-                                  {"verdict", f.said > 0 ? "separated" : "intersecting"}});
-        write_file_atomically(a.failures + "/" + name,
-                              dump(Json{{"format", "scalecert-claims-1"}, {"claims", std::move(claims)}}));
-        const std::string numbers =
-            a.opt.numbers == Numbers::Double ? "" : std::string(" --numbers ") + numbers_name(a.opt.numbers);
-        index.push_back(Json{{"scene", scene},
-                             {"method", r.method},
-                             {"claims", a.failures + "/" + name},
-                             {"listed", r.failures.size()},
-                             {"wrong", r.false_separated + r.false_overlapping},
-                             {"replay", "scalecert certify-fp " + scene + " " + a.failures + "/" + name + numbers}});
+        std::string base = stem + "." + method;
+        for (int k = 2; !used.insert(base).second; ++k) base = stem + "-" + std::to_string(k) + "." + method;
+        if (!r.failures.empty()) {
+            const std::string name = base + ".claims.json";
+            Json claims = Json::array();
+            for (const AuditRow::Failure& f : r.failures)
+                claims.push_back(Json{{"kind", "verdict"},
+                                      {"rho1", f.rho1},
+                                      {"rho2", f.rho2},
+                                      {"verdict", f.said > 0 ? "separated" : "intersecting"}});
+            write_file_atomically(a.failures + "/" + name,
+                                  dump(Json{{"format", "scalecert-claims-1"}, {"claims", std::move(claims)}}));
+            index.push_back(
+                Json{{"scene", scene},
+                     {"method", r.method},
+                     {"claims", a.failures + "/" + name},
+                     {"listed", r.failures.size()},
+                     {"wrong", r.false_separated + r.false_overlapping},
+                     {"replay", "scalecert certify-fp " + scene + " " + a.failures + "/" + name + numbers}});
+        }
+        if (!r.measure_failures.empty()) {
+            const std::string name = base + ".measures.claims.json";
+            Json claims = Json::array();
+            for (const AuditRow::MeasureFailure& f : r.measure_failures) {
+                Json c{{"kind", f.depth ? "penetration_depth" : "distance"},
+                       {"rho1", f.rho1},
+                       {"rho2", f.rho2},
+                       {"value", f.value}};
+                if (f.part1 >= 0) c["parts"] = Json::array({f.part1, f.part2});
+                claims.push_back(std::move(c));
+            }
+            write_file_atomically(a.failures + "/" + name,
+                                  dump(Json{{"format", "scalecert-claims-1"}, {"claims", std::move(claims)}}));
+            index.push_back(Json{{"scene", scene},
+                                 {"method", r.method},
+                                 {"claims", a.failures + "/" + name},
+                                 {"listed", r.measure_failures.size()},
+                                 {"wrong", r.measures_wrong},
+                                 {"tolerance", a.settings.measure_tolerance},
+                                 {"replay", "scalecert certify-fp " + scene + " " + a.failures + "/" + name +
+                                                " --tolerance " + tolerance + numbers}});
+        }
     }
     write_file_atomically(a.failures + "/index.json",
                           dump(Json{{"format", "scalecert-audit-failures-1"}, {"reproducers", std::move(index)}}));

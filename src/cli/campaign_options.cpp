@@ -173,6 +173,11 @@ void add_audit_options(CLI::App* sub, internal::CampaignArgs& a) {
     sub->add_flag("!--no-measures", a.measures,
                   "verdicts only: skip comparing the methods' distances and depths with the exact ones (proved at "
                   "floating-point speed)");
+    sub->add_option("--measure-tolerance", a.settings.measure_tolerance,
+                    "the relative error past which a method's distance or depth is listed as a failure, with a "
+                    "reproducer under --failures replayed at that tolerance (default 1e-6)")
+        ->type_name("REL")
+        ->check(finite_number(0, true));
     sub->add_flag("--by-distance", a.by_distance,
                   "also count wrong verdicts at relative distances 2^-4 ... 2^-52 from the curve, or from the region's "
                   "boundary for objects made of parts (JSON: by_distance)");
