@@ -386,4 +386,25 @@ BOOST_AUTO_TEST_CASE(an_epa_tolerance_below_what_doubles_resolve_is_refused) {
     BOOST_TEST(said.find("give at least 0.011, or --no-measures") != std::string::npos, said);
     st.ccd_epa_tolerance = 0.011;
     BOOST_TEST(audit_scene("big", big, Q(0), {"libccd-gjk"}, {}, false, true, st).size() == 2u);
+    // Past 2^200 the floating-point methods' squared lengths overflow: the cubes 2^197 times larger
+    // (largest coordinate 13/2 · 2^197 < 2^200) run without depths, 2^198 times larger (13/2 · 2^198
+    // > 2^200) are refused whatever is measured, convex and compound methods alike.
+    for (const int e : {197, 198}) {
+        ExactScene huge = s;
+        const Q f = Q(Z(1) << e);
+        for (int i = 0; i < 2; ++i) {
+            for (auto& p : huge.P[i].points)
+                for (int k = 0; k < 3; ++k) p[k] *= f;
+            for (int k = 0; k < 3; ++k) huge.P[i].seed[k] *= f;
+        }
+        for (const std::string m : {"libccd-gjk", "bullet-compound"}) {
+            if (e == 197) {
+                BOOST_TEST(audit_scene("huge", huge, Q(0), {m}, {}, false, false, {}).size() >= 1u);
+            } else {
+                BOOST_CHECK_EXCEPTION(
+                    audit_scene("huge", huge, Q(0), {m}, {}, false, false, {}), InputError,
+                    [](const InputError& x) { return std::string(x.what()).find("past 2^200") != std::string::npos; });
+            }
+        }
+    }
 }

@@ -44,7 +44,8 @@ $PY "$SRC/tools/report.py" bogus.json --out never.html 2>err.txt; st=$?
 printf '[{"scene": "a", "method": "m", "queries": 3, "failures": "none"}]' > wrongtype.json
 printf '%.0s[' $(seq 100000) > deep.json
 mkfifo fifo.json
-for f in wrongtype.json deep.json fifo.json; do
+printf '[{"scene": "a", "method": "m", "queries": 1, "distance_err_max": 1%0400d}]' 0 > hugeint.json
+for f in wrongtype.json deep.json fifo.json hugeint.json; do
   for tool in report.py atlas_table.py; do
     if [ $tool = report.py ]; then args=(--out never.html); else args=(); fi
     timeout 20 $PY "$SRC/tools/$tool" "$f" "${args[@]}" > /dev/null 2> err.txt; st=$?
@@ -64,6 +65,10 @@ d = json.loads(re.search(r"const D = (.*);\n", text).group(1))
 b = d["scenes"]["box-tetra"]
 assert len(b[0]["parts"][0]) == 8 and len(b[1]["parts"][0]) == 4, b
 PYEOF
+# A --scalecert whose answer is nested deeper than Python parses: a page without 3-D views, no traceback.
+printf '#!/bin/sh\n/usr/bin/python3 -c "print(\\"[\\" * 100000 + \\"]\\" * 100000)"\n' > deep.sh && chmod +x deep.sh
+$PY "$SRC/tools/report.py" audit.json --out deep.html --scalecert ./deep.sh 2> err.txt && [ -s deep.html ] &&
+  ! grep -q Traceback err.txt || bad "a --scalecert answering deep JSON: $(head -c 300 err.txt)"
 # The page, loaded: its status line, and no script error in the console.
 browse --enable-logging=stderr --v=0 --dump-dom "file://$WORK/report.html" > dom.html 2> console.txt
 grep -q 'id="status"[^>]*>charts drawn: 2; 3-D views drawn: 1<' dom.html || bad "status: $(grep -o 'id="status"[^<]*' dom.html)"

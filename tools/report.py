@@ -20,6 +20,7 @@ bodies, each part as its convex hull, and is inlined: the page is one file that 
 import argparse
 import html
 import json
+import math
 import os
 import sys
 import shutil
@@ -49,16 +50,58 @@ def scalecert_program(given):
     return None
 
 
+MAX_OUTPUT = 1 << 30  # bytes of a scalecert answer read (a 10^6-point scene's is about 100 MB)
+
+
+def run_scalecert(program, args, timeout):
+    """scalecert's standard output for args, parsed as JSON, or None when it fails, runs past
+    `timeout` seconds or writes more than MAX_OUTPUT bytes. It runs in a session of its own, all
+    of which is killed then."""
+    import select
+    import signal
+    import time
+    try:
+        p = subprocess.Popen([program] + args, stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
+                             stderr=subprocess.DEVNULL, start_new_session=True)
+    except OSError:
+        return None
+    chunks, size, until = [], 0, time.monotonic() + timeout
+    try:
+        while True:
+            left = until - time.monotonic()
+            if left <= 0 or size > MAX_OUTPUT:
+                return None
+            ready, _, _ = select.select([p.stdout], [], [], left)
+            if not ready:
+                continue
+            chunk = os.read(p.stdout.fileno(), 1 << 20)
+            if not chunk:
+                break
+            chunks.append(chunk)
+            size += len(chunk)
+        if p.wait(timeout=max(0.1, until - time.monotonic())) != 0:
+            return None
+        return json.loads(b"".join(chunks))
+    except (OSError, ValueError, RecursionError, subprocess.TimeoutExpired):
+        return None
+    finally:
+        try:
+            os.killpg(p.pid, signal.SIGKILL)
+        except OSError:
+            pass
+        p.stdout.close()
+        p.wait()
+
+
 def bodies(scene_path, program):
     """[{"parts", "seed"}] for P1 and P2 as scalecert reads the scene (its poses applied, its
     meshes read, its parts from groups), taken from `scalecert query SCENE 1 1 --json`, whose
     "scene" holds every point exactly; in doubles, for display. None when it cannot be read."""
     try:
-        p = subprocess.run([program, "query", scene_path, "1", "1", "--json"], stdin=subprocess.DEVNULL,
-                           stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, timeout=120)
-        if p.returncode != 0:
+        answer = run_scalecert(program, ["query", scene_path, "1", "1", "--json"], 120)
+        if answer is None:
             return None
-        scene = json.loads(p.stdout)["scene"]
+        scene = answer["scene"]
         out = []
         for key in ("P1", "P2"):
             obj = scene[key]
@@ -68,7 +111,7 @@ def bodies(scene_path, program):
         if "parts" in scene["P1"] or "parts" in scene["P2"]:
             out.append({"pairs": pair_regions(scene_path, program)})
         return out
-    except (OSError, ValueError, KeyError, TypeError, ZeroDivisionError, OverflowError, subprocess.TimeoutExpired):
+    except (OSError, ValueError, KeyError, TypeError, ZeroDivisionError, OverflowError, RecursionError):
         return None
 
 
@@ -76,14 +119,13 @@ def pair_regions(scene_path, program):
     """Objects made of parts: each part pair that meets somewhere in I1 x I2, with the polygon of
     (rho1, rho2) where it does (`scalecert region SCENE`, exact; in doubles here, to mark in the
     3-D view the parts that meet, or come nearest to meeting, at a failure's pair)."""
-    p = subprocess.run([program, "region", scene_path], stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
-                       stderr=subprocess.DEVNULL, timeout=300)
-    if p.returncode != 0:
+    region = run_scalecert(program, ["region", scene_path], 300)
+    if region is None:
         return []
     return [{"a": r["P1_part"], "b": r["P2_part"], "a_name": r.get("P1_part_name", ""),
              "b_name": r.get("P2_part_name", ""),
              "poly": [[float(Fraction(x)), float(Fraction(y))] for x, y in r["vertices"]]}
-            for r in json.loads(p.stdout)["pair_regions"]]
+            for r in region["pair_regions"]]
 
 
 def scene_file(row, audit_dir, failures_dir):
@@ -109,7 +151,13 @@ def check(cond, path, what):
 
 
 def number(v):
-    return isinstance(v, (int, float)) and not isinstance(v, bool)
+    """A finite JSON number that fits a double (a NaN, an infinity or an integer of 400 digits is not)."""
+    if not isinstance(v, (int, float)) or isinstance(v, bool):
+        return False
+    try:
+        return math.isfinite(float(v))
+    except OverflowError:
+        return False
 
 
 def load_rows(path):
@@ -461,6 +509,8 @@ def main():
         if os.path.exists(a.out) and os.path.samefile(a.out, a.audit):
             raise InputError("%s: --out would replace the audit it reads" % a.out)
         program = scalecert_program(a.scalecert)
+        if not a.out or os.path.isdir(a.out):
+            raise InputError("%r: --out names no file" % a.out)
         out_dir = os.path.dirname(os.path.abspath(a.out))
         if not os.path.isdir(out_dir):
             raise InputError("%s: no such directory for --out" % out_dir)

@@ -47,6 +47,20 @@ void match_junctions(const TouchingCurve& c, const ExactScene& s, const std::vec
 }
 }  // namespace
 
+// Coordinates (scaled, largest) past 2^200, about 1.6·10^60: the floating-point methods' squared
+// lengths and their products overflow doubles there (libccd's EPA then never stops, whatever its
+// tolerance: 10^77 ran for minutes, 10^75 stopped; FCL aborts on an assertion at 10^155), so such
+// a scene is refused in one line rather than left to hang or crash.
+void refuse_beyond_doubles(double extent) {
+    if (extent <= 0x1p200) return;
+    char m[200];
+    std::snprintf(m, sizeof m,
+                  "the largest scaled coordinate is %.3g, past 2^200: the floating-point methods' squared lengths "
+                  "overflow doubles there (libccd's EPA never stops, FCL aborts)",
+                  extent);
+    throw InputError(m);
+}
+
 namespace {
 
 // Exact squared distances and depths at the audit's pairs, computed once for all methods.
@@ -90,15 +104,19 @@ void measure_errors(const fp::Method& mm, const HullModel& m, const std::vector<
         }
         const Q& E = *cache.squared[i];
         const double root = std::sqrt(to_double_rn(E));
-        if (!(root > 0)) continue;
+        if (!(root > 0) || !std::isfinite(root)) continue;  // (past the doubles: no relative error in them)
         const double err = std::fabs(sqrt_minus_rn(E, exact_from_double(me->value))) / root;
         (sep ? dist_err : depth_err).push_back(err);
         measured.push_back({r1[i], r2[i], !sep, me->value, err});
         if (me->closest) {
             const auto& cp = *me->closest;
-            const Vec3q p{exact_from_double(cp[0][0]), exact_from_double(cp[0][1]), exact_from_double(cp[0][2])};
-            const Vec3q q{exact_from_double(cp[1][0]), exact_from_double(cp[1][1]), exact_from_double(cp[1][2])};
-            row.closest_outside += !contains(m, 0, a, p) || !contains(m, 1, b, q);
+            if (!fp::finite(cp[0]) || !fp::finite(cp[1])) {
+                ++row.closest_outside;  // a NaN or infinite point is in no body
+            } else {
+                const Vec3q p{exact_from_double(cp[0][0]), exact_from_double(cp[0][1]), exact_from_double(cp[0][2])};
+                const Vec3q q{exact_from_double(cp[1][0]), exact_from_double(cp[1][1]), exact_from_double(cp[1][2])};
+                row.closest_outside += !contains(m, 0, a, p) || !contains(m, 1, b, q);
+            }
         }
         if (!me->direction) continue;
         const fp::D3& d = *me->direction;
@@ -296,12 +314,13 @@ std::vector<AuditRow> audit_convex(const std::string& name, const ExactScene& s,
     // on two near-sphere scenes: L = 6·10^3 stopped at 1e-10 and ran for minutes at 1e-12; L = 6·10^10
     // stopped at 1e3 and ran for minutes at 1e2 (both near 2^-62·L²). A tolerance below 2^-52·L²
     // is refused, naming the least accepted one (rounded up to two digits).
+    double extent = 0;
+    for (int i = 0; i < 2; ++i)
+        for (const fp::D3& p : f.P[i].pts)
+            for (int k = 0; k < 3; ++k)
+                extent = std::max(extent, std::fabs(f.P[i].seed[k]) + f.hi[i] * std::fabs(p[k] - f.P[i].seed[k]));
+    refuse_beyond_doubles(extent);
     if (measures && std::find(methods.begin(), methods.end(), "libccd-gjk") != methods.end()) {
-        double extent = 0;
-        for (int i = 0; i < 2; ++i)
-            for (const fp::D3& p : f.P[i].pts)
-                for (int k = 0; k < 3; ++k)
-                    extent = std::max(extent, std::fabs(f.P[i].seed[k]) + f.hi[i] * std::fabs(p[k] - f.P[i].seed[k]));
         const double least = std::ldexp(extent * extent, -52);
         if (!(settings.ccd_epa_tolerance >= least)) {
             char shown[32];

@@ -56,6 +56,9 @@ std::vector<AuditRow> audit_compound(const std::string& name, const ExactScene& 
                                      const MethodSettings& settings = {});
 // The doubles the methods see: each part's points (nearest doubles) and its exact hull's faces.
 fp::CompoundFp compound_fp(const CompoundJudge& judge);
+// InputError when the largest scaled coordinate passes 2^200, where the floating-point methods'
+// squared lengths overflow (audit.cpp).
+void refuse_beyond_doubles(double extent);
 
 // The audit campaigns run (CampaignArgs::auditor): these baselines' methods and audit_scene.
 Auditor baseline_auditor();

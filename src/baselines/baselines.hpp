@@ -5,6 +5,7 @@
 #include "campaign/audit_table.hpp"
 #include "curve/contact_lines.hpp"
 
+#include <cmath>
 #include <array>
 #include <functional>
 #include <memory>
@@ -25,6 +26,8 @@ struct FpScene {
     MethodSettings settings;  // the methods' own settings, which each reads where it runs
 };
 FpScene to_fp(const ExactScene& s);
+
+inline bool finite(const D3& p) { return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]); }
 
 // What a method measures besides its verdict, as its API returns it: the distance between
 // separated bodies (with closest points where it gives them), or the penetration depth of

@@ -220,6 +220,14 @@ std::vector<AuditRow> audit_compound(const std::string& name, const ExactScene& 
     const std::vector<CompoundSample> samples = compound_samples(judge, b);
     fp::CompoundFp f = compound_fp(judge);
     f.settings = settings;
+    double extent = 0;
+    const double hi[2] = {to_double_rn(s.hi[0]), to_double_rn(s.hi[1])};
+    for (int i = 0; i < 2; ++i)
+        for (const fp::CompoundFp::Part& part : f.parts[i])
+            for (const fp::D3& p : part.pts)
+                for (int k = 0; k < 3; ++k)
+                    extent = std::max(extent, std::fabs(f.seed[i][k]) + hi[i] * std::fabs(p[k] - f.seed[i][k]));
+    refuse_beyond_doubles(extent);
     std::vector<std::optional<Q>> squared(samples.size());  // exact squared distances, once for all methods
     // Exact squared depths of part pairs at samples, once for all methods (−1: the pair does not overlap).
     std::map<std::tuple<size_t, int, int>, std::optional<Q>> pair_depths;
@@ -247,10 +255,12 @@ std::vector<AuditRow> audit_compound(const std::string& name, const ExactScene& 
                 const Q a = exact_from_double(samples[i].r1), bb = exact_from_double(samples[i].r2);
                 if (!squared[i]) squared[i] = judge.distance(a, bb).squared;
                 const double root = std::sqrt(to_double_rn(*squared[i]));
-                if (!(root > 0)) continue;
+                if (!(root > 0) || !std::isfinite(root)) continue;
                 err.push_back(std::fabs(sqrt_minus_rn(*squared[i], exact_from_double(me->value))) / root);
                 measured.push_back({samples[i].r1, samples[i].r2, false, me->value, err.back()});
-                if (me->closest) {
+                if (me->closest && (!fp::finite(me->closest->at(0)) || !fp::finite(me->closest->at(1)))) {
+                    ++row.closest_outside;  // a NaN or infinite point is in no body
+                } else if (me->closest) {
                     const auto& cp = *me->closest;
                     const Vec3q p{exact_from_double(cp[0][0]), exact_from_double(cp[0][1]),
                                   exact_from_double(cp[0][2])};
@@ -284,6 +294,7 @@ std::vector<AuditRow> audit_compound(const std::string& name, const ExactScene& 
                         continue;
                     }
                     const double root = std::sqrt(to_double_rn(*E));
+                    if (!std::isfinite(root)) continue;
                     derr.push_back(std::fabs(sqrt_minus_rn(*E, exact_from_double(c.depth))) / root);
                     measured.push_back({samples[i].r1, samples[i].r2, true, c.depth, derr.back(), c.part1, c.part2});
                     const fp::D3& d = c.direction;
