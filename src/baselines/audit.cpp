@@ -61,6 +61,17 @@ void refuse_beyond_doubles(double extent) {
     throw InputError(m);
 }
 
+std::optional<double> relative_error(const Q& squared, double value) {
+    const double root = std::sqrt(to_double_rn(squared));
+    if (!(root > 0) || !std::isfinite(root)) return std::nullopt;
+    return std::fabs(sqrt_minus_rn(squared, exact_from_double(value))) / root;
+}
+
+double direction_excess(const Q& along, const Q& squared) {
+    const double root = std::sqrt(to_double_rn(squared));
+    return (sqrt_minus_rn(along, Q(0)) - root) / root;
+}
+
 namespace {
 
 // Exact squared distances and depths at the audit's pairs, computed once for all methods.
@@ -103,11 +114,10 @@ void measure_errors(const fp::Method& mm, const HullModel& m, const std::vector<
             }
         }
         const Q& E = *cache.squared[i];
-        const double root = std::sqrt(to_double_rn(E));
-        if (!(root > 0) || !std::isfinite(root)) continue;  // (past the doubles: no relative error in them)
-        const double err = std::fabs(sqrt_minus_rn(E, exact_from_double(me->value))) / root;
-        (sep ? dist_err : depth_err).push_back(err);
-        measured.push_back({r1[i], r2[i], !sep, me->value, err});
+        const std::optional<double> err = relative_error(E, me->value);
+        if (!err) continue;
+        (sep ? dist_err : depth_err).push_back(*err);
+        measured.push_back({r1[i], r2[i], !sep, me->value, *err});
         if (me->closest) {
             const auto& cp = *me->closest;
             if (!fp::finite(cp[0]) || !fp::finite(cp[1])) {
@@ -124,7 +134,7 @@ void measure_errors(const fp::Method& mm, const HullModel& m, const std::vector<
             const Vec3q n{exact_from_double(d[0]), exact_from_double(d[1]), exact_from_double(d[2])};
             const Q along = directional_depth_squared(m, n, a, b);
             if (sgn(along) >= 0)  // (a plane separating an overlapping pair does not exist)
-                row.direction_err_max = std::max(row.direction_err_max, (sqrt_minus_rn(along, Q(0)) - root) / root);
+                row.direction_err_max = std::max(row.direction_err_max, direction_excess(along, E));
         }
     }
     row.distances = static_cast<long>(dist_err.size());
@@ -314,11 +324,8 @@ std::vector<AuditRow> audit_convex(const std::string& name, const ExactScene& s,
     // on two near-sphere scenes: L = 6·10^3 stopped at 1e-10 and ran for minutes at 1e-12; L = 6·10^10
     // stopped at 1e3 and ran for minutes at 1e2 (both near 2^-62·L²). A tolerance below 2^-52·L²
     // is refused, naming the least accepted one (rounded up to two digits).
-    double extent = 0;
-    for (int i = 0; i < 2; ++i)
-        for (const fp::D3& p : f.P[i].pts)
-            for (int k = 0; k < 3; ++k)
-                extent = std::max(extent, std::fabs(f.P[i].seed[k]) + f.hi[i] * std::fabs(p[k] - f.P[i].seed[k]));
+    const double extent =
+        fp::scaled_extent(f.P[1].pts, f.P[1].seed, f.hi[1], fp::scaled_extent(f.P[0].pts, f.P[0].seed, f.hi[0]));
     refuse_beyond_doubles(extent);
     if (measures && std::find(methods.begin(), methods.end(), "libccd-gjk") != methods.end()) {
         const double least = std::ldexp(extent * extent, -52);

@@ -56,6 +56,12 @@ std::vector<AuditRow> audit_compound(const std::string& name, const ExactScene& 
                                      const MethodSettings& settings = {});
 // The doubles the methods see: each part's points (nearest doubles) and its exact hull's faces.
 fp::CompoundFp compound_fp(const CompoundJudge& judge);
+// |value − √squared| / √squared (MPFR-rounded), for a method's distance or depth against the
+// exact squared one; none when √squared is 0 or past the doubles (no relative error in them).
+std::optional<double> relative_error(const Q& squared, double value);
+// (√along − √squared) / √squared: how much deeper the bodies are along a method's direction than
+// their depth (`along` the squared depth along it, `squared` the exact squared depth, > 0).
+double direction_excess(const Q& along, const Q& squared);
 // InputError when the largest scaled coordinate passes 2^200, where the floating-point methods'
 // squared lengths overflow (audit.cpp).
 void refuse_beyond_doubles(double extent);

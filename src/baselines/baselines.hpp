@@ -7,7 +7,9 @@
 
 #include <cmath>
 #include <array>
+#include <algorithm>
 #include <functional>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -28,6 +30,12 @@ struct FpScene {
 FpScene to_fp(const ExactScene& s);
 
 inline bool finite(const D3& p) { return std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]); }
+// The largest |coordinate| of the points scaled about `seed` by up to `hi`, or `so_far` if larger.
+inline double scaled_extent(const std::vector<D3>& pts, const D3& seed, double hi, double so_far = 0) {
+    for (const D3& p : pts)
+        for (int k = 0; k < 3; ++k) so_far = std::max(so_far, std::fabs(seed[k]) + hi * std::fabs(p[k] - seed[k]));
+    return so_far;
+}
 
 // What a method measures besides its verdict, as its API returns it: the distance between
 // separated bodies (with closest points where it gives them), or the penetration depth of
@@ -47,6 +55,18 @@ struct PartContact {
     double depth = 0;
     D3 direction{};
 };
+
+// The deepest of the contacts of each part pair, in the pairs' order.
+inline std::vector<PartContact> deepest_per_pair(const std::vector<PartContact>& all) {
+    std::map<std::pair<int, int>, PartContact> deepest;
+    for (const PartContact& c : all) {
+        auto [at, fresh] = deepest.emplace(std::make_pair(c.part1, c.part2), c);
+        if (!fresh && c.depth > at->second.depth) at->second = c;
+    }
+    std::vector<PartContact> out;
+    for (const auto& kv : deepest) out.push_back(kv.second);
+    return out;
+}
 
 // +1 separated, 0 touching (only methods that can say so), −1 overlapping.
 class Method {

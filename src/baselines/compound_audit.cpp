@@ -221,12 +221,9 @@ std::vector<AuditRow> audit_compound(const std::string& name, const ExactScene& 
     fp::CompoundFp f = compound_fp(judge);
     f.settings = settings;
     double extent = 0;
-    const double hi[2] = {to_double_rn(s.hi[0]), to_double_rn(s.hi[1])};
     for (int i = 0; i < 2; ++i)
         for (const fp::CompoundFp::Part& part : f.parts[i])
-            for (const fp::D3& p : part.pts)
-                for (int k = 0; k < 3; ++k)
-                    extent = std::max(extent, std::fabs(f.seed[i][k]) + hi[i] * std::fabs(p[k] - f.seed[i][k]));
+            extent = fp::scaled_extent(part.pts, f.seed[i], to_double_rn(s.hi[i]), extent);
     refuse_beyond_doubles(extent);
     std::vector<std::optional<Q>> squared(samples.size());  // exact squared distances, once for all methods
     // Exact squared depths of part pairs at samples, once for all methods (−1: the pair does not overlap).
@@ -254,10 +251,10 @@ std::vector<AuditRow> audit_compound(const std::string& name, const ExactScene& 
                 if (!me || me->depth || !std::isfinite(me->value)) continue;
                 const Q a = exact_from_double(samples[i].r1), bb = exact_from_double(samples[i].r2);
                 if (!squared[i]) squared[i] = judge.distance(a, bb).squared;
-                const double root = std::sqrt(to_double_rn(*squared[i]));
-                if (!(root > 0) || !std::isfinite(root)) continue;
-                err.push_back(std::fabs(sqrt_minus_rn(*squared[i], exact_from_double(me->value))) / root);
-                measured.push_back({samples[i].r1, samples[i].r2, false, me->value, err.back()});
+                const std::optional<double> e = relative_error(*squared[i], me->value);
+                if (!e) continue;
+                err.push_back(*e);
+                measured.push_back({samples[i].r1, samples[i].r2, false, me->value, *e});
                 if (me->closest && (!fp::finite(me->closest->at(0)) || !fp::finite(me->closest->at(1)))) {
                     ++row.closest_outside;  // a NaN or infinite point is in no body
                 } else if (me->closest) {
@@ -293,17 +290,16 @@ std::vector<AuditRow> audit_compound(const std::string& name, const ExactScene& 
                         ++row.contacts_apart;
                         continue;
                     }
-                    const double root = std::sqrt(to_double_rn(*E));
-                    if (!std::isfinite(root)) continue;
-                    derr.push_back(std::fabs(sqrt_minus_rn(*E, exact_from_double(c.depth))) / root);
-                    measured.push_back({samples[i].r1, samples[i].r2, true, c.depth, derr.back(), c.part1, c.part2});
+                    const std::optional<double> e = relative_error(*E, c.depth);
+                    if (!e) continue;
+                    derr.push_back(*e);
+                    measured.push_back({samples[i].r1, samples[i].r2, true, c.depth, *e, c.part1, c.part2});
                     const fp::D3& d = c.direction;
                     if ((d[0] != 0 || d[1] != 0 || d[2] != 0) && std::isfinite(d[0] + d[1] + d[2])) {
                         const Vec3q n{exact_from_double(d[0]), exact_from_double(d[1]), exact_from_double(d[2])};
                         const Q along = judge.pair_directional_depth(c.part1, c.part2, n, a, bb);
                         if (sgn(along) >= 0)
-                            row.direction_err_max =
-                                std::max(row.direction_err_max, (sqrt_minus_rn(along, Q(0)) - root) / root);
+                            row.direction_err_max = std::max(row.direction_err_max, direction_excess(along, *E));
                     }
                 }
             }

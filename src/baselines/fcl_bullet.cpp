@@ -18,8 +18,6 @@
 #include <fcl/narrowphase/collision.h>
 #include <fcl/narrowphase/distance.h>
 
-#include <map>
-
 namespace scalecert::internal::fp {
 
 namespace {
@@ -214,21 +212,19 @@ class BulletCompound : public Method {
 
     // btCollisionWorld::contactPairTest's manifold points: each names its child shapes (the
     // parts), its distance (< 0: a depth) and its normal on the second object, pointing at the
-    // first; the deepest point of each part pair is its contact.
+    // first; the deepest point of each part pair is its contact (deepest_per_pair).
     std::vector<PartContact> contacts(double r1, double r2) const override {
         scale(r1, r2);
         Deepest cb(&object_[0]);
         world_.contactPairTest(&object_[0], &object_[1], cb);
-        std::vector<PartContact> out;
-        for (const auto& [pair, c] : cb.deepest) out.push_back(c);
-        return out;
+        return deepest_per_pair(cb.all);
     }
 
   private:
     struct Deepest : btCollisionWorld::ContactResultCallback {
         explicit Deepest(const btCollisionObject* first) : first(first) {}
         const btCollisionObject* first;
-        std::map<std::pair<int, int>, PartContact> deepest;
+        std::vector<PartContact> all;
         btScalar addSingleResult(btManifoldPoint& cp, const btCollisionObjectWrapper* w0, int, int index0,
                                  const btCollisionObjectWrapper*, int, int index1) override {
             if (!(cp.getDistance() < 0)) return 0;
@@ -239,8 +235,7 @@ class BulletCompound : public Method {
             c.part2 = swap ? index0 : index1;
             c.depth = -cp.getDistance();
             c.direction = {-n.x(), -n.y(), -n.z()};
-            auto [at, fresh] = deepest.emplace(std::make_pair(c.part1, c.part2), c);
-            if (!fresh && c.depth > at->second.depth) at->second = c;
+            all.push_back(c);
             return 0;
         }
     };
@@ -314,7 +309,7 @@ class FclCompound : public Method {
         data.request.enable_contact = true;
         data.request.num_max_contacts = 1000000;
         sc.manager[0].collide(&sc.manager[1], &data, fcl::DefaultCollisionFunction<double>);
-        std::map<std::pair<int, int>, PartContact> deepest;
+        std::vector<PartContact> all;
         for (size_t k = 0; k < data.result.numContacts(); ++k) {
             const fcl::Contactd& c = data.result.getContact(k);
             const int i1 = sc.part_of(c.o1), i2 = sc.part_of(c.o2);
@@ -326,12 +321,9 @@ class FclCompound : public Method {
             p.depth = c.penetration_depth;
             const fcl::Vector3d n = c.normal * (swap ? -1.0 : 1.0);
             p.direction = {n[0], n[1], n[2]};
-            auto [at, fresh] = deepest.emplace(std::make_pair(p.part1, p.part2), p);
-            if (!fresh && p.depth > at->second.depth) at->second = p;
+            all.push_back(p);
         }
-        std::vector<PartContact> out;
-        for (const auto& [pair, c] : deepest) out.push_back(c);
-        return out;
+        return deepest_per_pair(all);
     }
     std::optional<Measure> measure(double r1, double r2, bool separated) const override {
         if (!separated) return std::nullopt;
