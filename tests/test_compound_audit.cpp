@@ -112,6 +112,24 @@ Run run(const std::string& args) {
 
 }  // namespace
 
+BOOST_AUTO_TEST_CASE(the_verdict_words_are_judged_by_the_claim_rules) {
+    // CLAIMS.md: separated is right only where they are apart, touching only where they touch,
+    // intersecting where they touch or overlap, overlapping only where they overlap.
+    const int said[4] = {AuditRow::kSaidSeparated, AuditRow::kSaidTouching, AuditRow::kSaidIntersecting,
+                         AuditRow::kSaidOverlapping};
+    const bool right[4][3] = {{true, false, false}, {false, true, false}, {false, true, true}, {false, false, true}};
+    for (int w = 0; w < 4; ++w)
+        for (int exact = 0; exact < 3; ++exact) BOOST_TEST(AuditRow::wrong(said[w], exact) == !right[w][exact]);
+    AuditRow row;
+    for (int w = 0; w < 4; ++w)
+        for (int exact = 0; exact < 3; ++exact) row.count(w, exact, said[w], exact);
+    BOOST_TEST(row.queries == 12);
+    BOOST_TEST(row.false_separated == 2);    // separated where they touch or overlap
+    BOOST_TEST(row.false_touching == 2);     // touching where they are apart or overlap
+    BOOST_TEST(row.false_overlapping == 3);  // intersecting where apart; overlapping where apart or touching
+    BOOST_TEST(row.failures.size() == 7u);
+}
+
 BOOST_AUTO_TEST_CASE(band_samples_lie_where_derived_by_hand) {
     // The band (compound/band.json): parts [2,3] x [-1,1]^2 and [-3,-2] x [-1,1]^2 about the seed
     // 0, against the box [4,5] x [-1,1]^2 about (9/2, 0, 0). The right part spans [2ρ1, 3ρ1] in x,
@@ -187,7 +205,8 @@ BOOST_AUTO_TEST_CASE(a_verdict_is_counted_wrong_exactly_when_it_differs) {
     const Scripted m;
     AuditRow row;
     const std::vector<int> said = score_compound(m, a.samples, true, row);
-    long fs = 0, fo = 0, said_sep = 0, said_touch = 0, said_over = 0;
+    long fs = 0, fo = 0, ft = 0, said_sep = 0, said_touch = 0, said_over = 0;
+    std::vector<AuditRow::Failure> listed;
     std::map<int, std::array<long, 3>> by_k;  // pairs, wrong, touching
     for (size_t i = 0; i < a.samples.size(); ++i) {
         const CompoundSample& c = a.samples[i];
@@ -196,6 +215,9 @@ BOOST_AUTO_TEST_CASE(a_verdict_is_counted_wrong_exactly_when_it_differs) {
         BOOST_TEST(said[i] == v);
         fs += v == 1 && hand != 0;
         fo += v == -1 && hand == 0;
+        ft += v == 0 && hand != 1;  // touching said off the boundary, or where they overlap
+        if (((v == 1) != (hand == 0) || (v == 0 && hand != 1)) && listed.size() < AuditRow::kMaxFailures)
+            listed.push_back({c.r1, c.r2, v, hand});
         if (c.k == 0 && hand == 1) {
             said_sep += v == 1, said_touch += v == 0, said_over += v == -1;
         } else if (c.k > 0) {
@@ -211,6 +233,16 @@ BOOST_AUTO_TEST_CASE(a_verdict_is_counted_wrong_exactly_when_it_differs) {
     BOOST_TEST(row.queries == static_cast<long>(a.samples.size()));
     BOOST_TEST(row.false_separated == fs);
     BOOST_TEST(row.false_overlapping == fo);
+    BOOST_TEST(row.false_touching == ft);
+    BOOST_TEST(ft > 0);
+    BOOST_TEST(row.wrong() == fs + fo + ft);
+    BOOST_TEST_REQUIRE(row.failures.size() == listed.size());
+    for (size_t i = 0; i < listed.size(); ++i) {
+        BOOST_TEST(row.failures[i].rho1 == listed[i].rho1);
+        BOOST_TEST(row.failures[i].rho2 == listed[i].rho2);
+        BOOST_TEST(row.failures[i].said == listed[i].said);
+        BOOST_TEST(row.failures[i].exact == listed[i].exact);
+    }
     BOOST_TEST(row.on_boundary->said_separated == said_sep);
     BOOST_TEST(row.on_boundary->said_touching == said_touch);
     BOOST_TEST(row.on_boundary->said_overlapping == said_over);

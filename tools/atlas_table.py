@@ -46,7 +46,7 @@ def main():
                                                   "dist": None, "depth": None})
         t["scenes"] += 1
         t["queries"] += r["queries"]
-        t["wrong"] += r.get("false_separated", 0) + r.get("false_overlapping", 0)
+        t["wrong"] += r.get("false_separated", 0) + r.get("false_overlapping", 0) + r.get("false_touching", 0)
         for b in r.get("by_distance", []):
             t["pairs"] += b["pairs"]
             t["near"] += b["wrong"]

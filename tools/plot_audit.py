@@ -60,7 +60,7 @@ def main():
     for r in rows:
         if "queries" in r and float(Fraction(r["eps"])) > 0:
             a = acc[r["method"]][float(Fraction(r["eps"]))]
-            a[0] += r["false_separated"] + r["false_overlapping"]
+            a[0] += r["false_separated"] + r["false_overlapping"] + r.get("false_touching", 0)
             a[1] += r["queries"]
     # (A scene-file audit has no degeneracy eps: no stability chart then, rather than an empty one.)
     if acc:

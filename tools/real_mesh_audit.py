@@ -111,7 +111,8 @@ def main():
         cells = []
         for m in methods:
             r = next(r for r in rows if r["scene"] == s and r["method"] == m)
-            cells.append(f"{r['false_separated']} / {r['false_overlapping']}")
+            touching = f" / {r['false_touching']} touching" if r.get("false_touching", "0") != "0" else ""
+            cells.append(f"{r['false_separated']} / {r['false_overlapping']}{touching}")
         print(f"| {name} | " + " | ".join(cells) + " |")
     print(f"(false separated / false overlapping, of {rows[0]['queries']} pairs per scene)")
 

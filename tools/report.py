@@ -181,7 +181,7 @@ def load_rows(path):
         if "queries" not in r:
             continue
         check(isinstance(r["queries"], int) and r["queries"] >= 0, path, at + ": queries is a count")
-        for k in ("false_separated", "false_overlapping"):
+        for k in ("false_separated", "false_overlapping", "false_touching"):
             check(isinstance(r.get(k, 0), int), path, at + ": %s is a count" % k)
         check(r.get("seconds_per_query") is None or number(r["seconds_per_query"]), path,
               at + ": seconds_per_query is a number")
@@ -210,6 +210,7 @@ def page(rows, audit_dir, failures_dir, program, scripts):
         data_rows.append({
             "scene": key, "method": r["method"], "eps": str(r.get("eps", "0")), "queries": r["queries"],
             "false_separated": r.get("false_separated", 0), "false_overlapping": r.get("false_overlapping", 0),
+            "false_touching": r.get("false_touching", 0),
             "seconds_per_query": r.get("seconds_per_query"), "by_distance": r.get("by_distance", [])})
         for f in r.get("failures", []):
             failures.append(dict(f, scene=key, method=r["method"]))
@@ -271,11 +272,11 @@ function cell(tr, text, tag) { const c = document.createElement(tag || "td"); c.
 // The rows' table.
 const rt = document.getElementById("rows");
 let tr = rt.insertRow();
-for (const h of ["scene", "method", "eps", "queries", "wrong: said separated", "wrong: said intersecting", "µs per query"]) cell(tr, h, "th");
+for (const h of ["scene", "method", "eps", "queries", "wrong: said separated", "wrong: said intersecting", "wrong: said touching", "µs per query"]) cell(tr, h, "th");
 for (const r of D.rows) {
   tr = rt.insertRow();
   for (const v of [r.scene.split("/").pop(), r.method, r.eps, r.queries, r.false_separated, r.false_overlapping,
-                   r.seconds_per_query == null ? "" : (1e6 * r.seconds_per_query).toPrecision(3)]) cell(tr, v);
+                   r.false_touching, r.seconds_per_query == null ? "" : (1e6 * r.seconds_per_query).toPrecision(3)]) cell(tr, v);
 }
 // The atlas table: rows of the atlas's families, per class and method.
 const classes = ["face-to-face", "long-edge", "scaled", "touching", "decomposition-gap"];
@@ -284,7 +285,7 @@ for (const r of D.rows) {
   const cls = r.scene.replace(/-[0-9]+$/, "");
   if (!classes.includes(cls)) continue;
   const a = atlas[cls + "\u0000" + r.method] = atlas[cls + "\u0000" + r.method] || {cls, method: r.method, scenes: 0, queries: 0, wrong: 0, pairs: 0, near: 0};
-  a.scenes++; a.queries += r.queries; a.wrong += r.false_separated + r.false_overlapping;
+  a.scenes++; a.queries += r.queries; a.wrong += r.false_separated + r.false_overlapping + r.false_touching;
   for (const b of r.by_distance) { a.pairs += b.pairs; a.near += b.wrong; }
 }
 const at = document.getElementById("atlas");
@@ -359,15 +360,16 @@ function legend(f, entries) {  // [label, colour, marker or null]
 }
 if (D.rows.length) {
   const sum = (m, k) => D.rows.filter(r => r.method === m).reduce((a, r) => a + r[k], 0);
-  const series = [["said separated (they meet)", "#d62728", "false_separated"], ["said intersecting (they are apart)", "#1f77b4", "false_overlapping"]];
-  const top = Math.max(...methods.map(m => Math.max(sum(m, "false_separated"), sum(m, "false_overlapping"))));
+  const series = [["said separated (they meet)", "#d62728", "false_separated"], ["said intersecting (they are apart)", "#1f77b4", "false_overlapping"],
+                  ["said touching (they do not touch)", "#9467bd", "false_touching"]];
+  const top = Math.max(...methods.map(m => Math.max(...series.map(s => sum(m, s[2])))));
   const f = frame("chart-wrong", "Wrong verdicts per method (" + scenes + " scene" + (scenes === 1 ? "" : "s") + ", " +
                   D.rows.reduce((a, r) => a + r.queries, 0) + " queries)", "wrong verdicts", "method", top);
   const slot = (f.R - f.L) / methods.length, bw = Math.min(40, slot / 3);
   methods.forEach((m, i) => {
     const cx = f.L + slot * (i + 0.5);
     series.forEach(([name, colour, key], j) => {
-      const v = sum(m, key), x = cx + (j - 1) * bw;
+      const v = sum(m, key), x = cx + (j - series.length / 2) * bw;
       el(f.svg, "rect", {x: x, y: f.y(v), width: bw, height: f.y(0) - f.y(v), fill: colour}).appendChild(
         document.createElementNS(NS, "title")).textContent = m + ": " + v + " " + name;
     });

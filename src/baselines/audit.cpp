@@ -182,8 +182,7 @@ void wrong_by_distance(const fp::Method& mm, const DistancePairs& p, AuditRow& r
             continue;
         }
         ++b.pairs;
-        const int v = mm.classify(p.x[i], p.y[i]);
-        b.wrong += (v > 0) != (p.exact[i] == Verdict::Separated) || v == 0;
+        b.wrong += AuditRow::wrong(mm.classify(p.x[i], p.y[i]), static_cast<int>(p.exact[i]));
     }
 }
 
@@ -286,11 +285,13 @@ class CommandMethod : public fp::Method {
             if (v->kind != JNode::String) throw InputError(at + ".verdict is not a string");
             const std::string& w = v->text;
             if (w == "separated")
-                said_.push_back(1);
+                said_.push_back(AuditRow::kSaidSeparated);
             else if (w == "touching")
-                said_.push_back(0);
-            else if (w == "overlapping" || w == "intersecting")
-                said_.push_back(-1);
+                said_.push_back(AuditRow::kSaidTouching);
+            else if (w == "intersecting")
+                said_.push_back(AuditRow::kSaidIntersecting);
+            else if (w == "overlapping")
+                said_.push_back(AuditRow::kSaidOverlapping);
             else
                 throw InputError(at + ".verdict: expected separated, touching, overlapping or intersecting, not " +
                                  in_quotes(w));
@@ -387,14 +388,9 @@ std::vector<AuditRow> audit_convex(const std::string& name, const ExactScene& s,
         r.method = mm->name();
         r.settings = fp::settings_of(r.method, settings);
         r.eps = eps;
-        r.queries = static_cast<long>(r1.size());
         auto t0 = Clock::now();
-        for (size_t i = 0; i < r1.size(); ++i) {
-            const int v = verdicts[i] = mm->classify(r1[i], r2[i]);
-            if (v > 0 && exact[i] != Verdict::Separated) ++r.false_separated;
-            if (v < 0 && exact[i] == Verdict::Separated) ++r.false_overlapping;
-        }
-        for (size_t i = 0; i < r1.size(); ++i) r.note(r1[i], r2[i], verdicts[i], static_cast<int>(exact[i]));
+        for (size_t i = 0; i < r1.size(); ++i) verdicts[i] = mm->classify(r1[i], r2[i]);
+        for (size_t i = 0; i < r1.size(); ++i) r.count(r1[i], r2[i], verdicts[i], static_cast<int>(exact[i]));
         r.seconds_per_query = std::chrono::duration<double>(Clock::now() - t0).count() / static_cast<double>(r1.size());
         if (measures) measure_errors(*mm, m, r1, r2, exact, verdicts, cache, settings.measure_tolerance, r);
         if (by_distance) wrong_by_distance(*mm, near, r);
@@ -498,10 +494,13 @@ std::vector<AuditRow> audit_scene(const std::string& name, const ExactScene& s, 
     if ((p1 || p2) && !convex.empty()) {
         std::string all;
         for (const std::string& m : cn) all += (all.empty() ? "" : ",") + m;
-        throw InputError(std::string(p1 && p2 ? "P1 and P2 are"
-                                     : p1     ? "P1 is"
-                                              : "P2 is") +
-                         " made of parts, and method " + internal::in_quotes(convex[0]) +
+        const std::string which = p1 && p2 ? "P1 and P2 are" : p1 ? "P1 is" : "P2 is";
+        if (std::any_of(convex.begin(), convex.end(),
+                        [](const std::string& m) { return m.rfind(kCommandMethod, 0) == 0; }))
+            throw InputError(which +
+                             " made of parts: --command audits a program on two convex objects; on objects made "
+                             "of parts, audit your own test from Python with Scene.audit(method) (docs/library.md)");
+        throw InputError(which + " made of parts, and method " + internal::in_quotes(convex[0]) +
                          " audits convex objects only (for objects made of parts: --methods " + all + ")");
     }
     std::vector<AuditRow> rows;

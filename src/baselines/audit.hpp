@@ -40,9 +40,9 @@ struct CompoundSample {
 // 8, ..., 52 both ways. Deterministic. The region must have its union (b from label_boundary).
 std::vector<CompoundSample> compound_samples(CompoundJudge& judge, const CompoundBoundary& b, int random = 200,
                                              int points = 32);
-// A method's verdicts at the samples, counted into `row`: queries, false_separated (said separated
-// where they meet), false_overlapping, by_distance (k > 0: wrong where the method's verdict
-// differs from the exact one; exactly touching samples counted apart) when by_distance, and
+// A method's verdicts at the samples, counted into `row`: queries and wrong verdicts
+// (AuditRow::count), by_distance (k > 0: wrong where the method's verdict differs from the
+// exact one; exactly touching samples counted apart) when by_distance, and
 // on_boundary (k = 0). Returns the method's verdicts.
 std::vector<int> score_compound(const fp::Method& m, const std::vector<CompoundSample>& samples, bool by_distance,
                                 AuditRow& row);

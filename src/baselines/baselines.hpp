@@ -68,7 +68,9 @@ inline std::vector<PartContact> deepest_per_pair(const std::vector<PartContact>&
     return out;
 }
 
-// +1 separated, 0 touching (only methods that can say so), −1 overlapping.
+// classify: +1 separated, 0 touching (only methods that can say so), −1 intersecting (a collision
+// query's "colliding": overlapping or touching), −2 strictly overlapping (only a program's own
+// claims say so): AuditRow::Said.
 class Method {
   public:
     virtual ~Method() = default;

@@ -67,10 +67,6 @@ int exact_verdict(CompoundJudge& judge, double r1, double r2) {
         judge.verdict(exact_from_double(r1), exact_from_double(r2)).verdict);  // 0, 1, 2: Verdict's order
 }
 
-// A method's verdict (+1 separated, 0 touching, −1 overlapping) is wrong on a pair that is not
-// exactly touching when it differs from the exact one (0 separated, 2 overlapping).
-bool wrong_off(int said, int exact) { return said == 0 || (said > 0) != (exact == 0); }
-
 double median(std::vector<double> v) {
     if (v.empty()) return 0;
     std::sort(v.begin(), v.end());
@@ -173,10 +169,7 @@ std::vector<int> score_compound(const fp::Method& m, const std::vector<CompoundS
     for (size_t i = 0; i < samples.size(); ++i) {
         const CompoundSample& c = samples[i];
         const int v = said[i] = m.classify(c.r1, c.r2);
-        ++row.queries;
-        if (v > 0 && c.exact != 0) ++row.false_separated;
-        if (v < 0 && c.exact == 0) ++row.false_overlapping;
-        row.note(c.r1, c.r2, v, c.exact);
+        row.count(c.r1, c.r2, v, c.exact);
         if (c.k == 0) {
             ++on.points;
             if (c.exact == 1) {
@@ -184,7 +177,7 @@ std::vector<int> score_compound(const fp::Method& m, const std::vector<CompoundS
                 ++(v > 0 ? on.said_separated : v == 0 ? on.said_touching : on.said_overlapping);
             } else {
                 ++on.moved;
-                on.moved_wrong += wrong_off(v, c.exact);
+                on.moved_wrong += AuditRow::wrong(v, c.exact);
             }
         } else if (c.k > 0 && by_distance) {
             AuditRow::ByDistance& b = row.by_distance[static_cast<size_t>(c.k / 4 - 1)];
@@ -192,7 +185,7 @@ std::vector<int> score_compound(const fp::Method& m, const std::vector<CompoundS
                 ++b.touching;
             } else {
                 ++b.pairs;
-                b.wrong += wrong_off(v, c.exact);
+                b.wrong += AuditRow::wrong(v, c.exact);
             }
         }
     }

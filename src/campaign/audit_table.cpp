@@ -6,6 +6,31 @@
 
 namespace scalecert::internal {
 
+const char* AuditRow::said_word(int said) {
+    switch (said) {
+    case kSaidSeparated: return "separated";
+    case kSaidTouching: return "touching";
+    case kSaidIntersecting: return "intersecting";
+    default: return "overlapping";
+    }
+}
+
+bool AuditRow::wrong(int said, int exact) {
+    switch (said) {
+    case kSaidSeparated: return exact != 0;
+    case kSaidTouching: return exact != 1;
+    case kSaidIntersecting: return exact == 0;
+    default: return exact != 2;
+    }
+}
+
+void AuditRow::count(double r1, double r2, int said, int exact) {
+    ++queries;
+    if (!wrong(said, exact)) return;
+    ++(said == kSaidSeparated ? false_separated : said == kSaidTouching ? false_touching : false_overlapping);
+    if (failures.size() < kMaxFailures) failures.push_back({r1, r2, said, exact});
+}
+
 void AuditRow::note_measures(std::vector<MeasureFailure> all, double tolerance) {
     const double past = tolerance + std::ldexp(tolerance, -40);
     all.erase(std::remove_if(all.begin(), all.end(), [past](const MeasureFailure& f) { return !(f.error > past); }),
@@ -19,7 +44,8 @@ void AuditRow::note_measures(std::vector<MeasureFailure> all, double tolerance) 
 
 std::string audit_csv(const std::vector<AuditRow>& rows, bool timing) {
     std::string s =
-        "scene,eps,method,queries,false_separated,false_overlapping,seconds_per_query,grid_n,seconds_per_curve,growth_"
+        "scene,eps,method,queries,false_separated,false_overlapping,false_touching,seconds_per_query,grid_n,seconds_"
+        "per_curve,growth_"
         "error,exact_junctions,junctions_found,junctions_missed,junctions_merged,max_junction_error,"
         "distances,distance_err_median,distance_err_max,depths,depth_err_median,depth_err_max,direction_err_max\n";
     bool with_bd = false, with_on = false;
@@ -61,14 +87,15 @@ std::string audit_csv(const std::vector<AuditRow>& rows, bool timing) {
     };
     char b[1024];
     for (const AuditRow& r : rows) {
-        std::snprintf(b, sizeof b,
-                      "%s,%.17g,%s,%ld,%ld,%ld,%.6g,%d,%.6g,%.6g,%d,%d,%d,%d,%.6g,%ld,%.6g,%.6g,%ld,%.6g,%.6g,%.6g\n",
-                      r.scene.c_str(), to_double_rn(r.eps), r.method.c_str(), r.queries, r.false_separated,
-                      r.false_overlapping, r.seconds_per_query, r.grid_n, r.seconds_per_curve, r.growth_error,
-                      r.exact_junctions, r.junctions_found, r.junctions_missed, r.junctions_merged,
-                      r.max_junction_error, r.distances, r.distance_err_median, r.distance_err_max, r.depths,
-                      r.depth_err_median, r.depth_err_max, r.direction_err_max);
-        if (!timing) {  // the columns seconds_per_query (7th) and seconds_per_curve (9th) left empty
+        std::snprintf(
+            b, sizeof b,
+            "%s,%.17g,%s,%ld,%ld,%ld,%ld,%.6g,%d,%.6g,%.6g,%d,%d,%d,%d,%.6g,%ld,%.6g,%.6g,%ld,%.6g,%.6g,%.6g\n",
+            r.scene.c_str(), to_double_rn(r.eps), r.method.c_str(), r.queries, r.false_separated, r.false_overlapping,
+            r.false_touching, r.seconds_per_query, r.grid_n, r.seconds_per_curve, r.growth_error, r.exact_junctions,
+            r.junctions_found, r.junctions_missed, r.junctions_merged, r.max_junction_error, r.distances,
+            r.distance_err_median, r.distance_err_max, r.depths, r.depth_err_median, r.depth_err_max,
+            r.direction_err_max);
+        if (!timing) {  // the columns seconds_per_query (8th) and seconds_per_curve (10th) left empty
             std::string line = b;
             std::vector<std::string> cols;
             for (size_t p = 0;;) {
@@ -77,8 +104,8 @@ std::string audit_csv(const std::vector<AuditRow>& rows, bool timing) {
                 if (line[q] == '\n') break;
                 p = q + 1;
             }
-            cols[6].clear();
-            cols[8].clear();
+            cols[7].clear();
+            cols[9].clear();
             line.clear();
             for (size_t k = 0; k < cols.size(); ++k) line += cols[k] + (k + 1 < cols.size() ? "," : "");
             s += line + extra(r) + "\n";
@@ -113,6 +140,7 @@ Json audit_json(const std::vector<AuditRow>& rows, bool timing) {
             o["queries"] = r.queries;
             o["false_separated"] = r.false_separated;
             o["false_overlapping"] = r.false_overlapping;
+            o["false_touching"] = r.false_touching;
             if (timing) o["seconds_per_query"] = r.seconds_per_query;
             if (r.distances) {
                 o["distances"] = r.distances;
@@ -140,7 +168,7 @@ Json audit_json(const std::vector<AuditRow>& rows, bool timing) {
                 for (const AuditRow::Failure& f : r.failures)
                     fs.push_back(Json{{"rho1", f.rho1},
                                       {"rho2", f.rho2},
-                                      {"said", f.said > 0 ? "separated" : "intersecting"},
+                                      {"said", AuditRow::said_word(f.said)},
                                       {"exact", exact_name[f.exact]}});
                 o["failures"] = fs;  // the first AuditRow::kMaxFailures wrong verdicts
             }

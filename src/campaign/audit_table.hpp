@@ -27,7 +27,11 @@ struct MethodSettings {
 struct AuditRow {
     std::string scene, method;
     Q eps;
-    long queries = 0, false_separated = 0, false_overlapping = 0;
+    // Wrong verdicts (CLAIMS.md's verdict rules): said separated where they meet; said they overlap
+    // where they are apart (or said strictly overlapping where they only touch); said touching where
+    // they do not touch. Their sum is wrong().
+    long queries = 0, false_separated = 0, false_overlapping = 0, false_touching = 0;
+    long wrong() const { return false_separated + false_overlapping + false_touching; }
     double seconds_per_query = 0;
     // curve methods (grid search): errors against the exact curve
     bool has_curve = false;
@@ -63,21 +67,24 @@ struct AuditRow {
     // The settings the method ran with (by option name, e.g. "bullet-margin"): JSON "settings".
     std::vector<std::pair<std::string, double>> settings;
     // Where the method's verdicts were wrong (the counts above), the first kMaxFailures of them in
-    // the audit's order: (ρ1, ρ2) as the doubles it was asked at, what it said (+1 separated, −1
-    // intersecting) and the exact verdict at those doubles (0 separated, 1 touching, 2
-    // overlapping). `audit --failures DIR` writes them as claims files that certify-fp replays.
+    // the audit's order: (ρ1, ρ2) as the doubles it was asked at, what it said (a Said) and the
+    // exact verdict at those doubles (0 separated, 1 touching, 2 overlapping). `audit --failures
+    // DIR` writes them as claims files that certify-fp replays.
     struct Failure {
         double rho1, rho2;
         int said, exact;
     };
     std::vector<Failure> failures;
     static constexpr size_t kMaxFailures = 50;
-    // A verdict v (the methods' classify) at (r1, r2) where the exact one is `exact`: noted when
-    // wrong (said separated where they meet, or intersecting where they are apart).
-    void note(double r1, double r2, int v, int exact) {
-        const bool wrong = (v > 0 && exact != 0) || (v < 0 && exact == 0);
-        if (wrong && failures.size() < kMaxFailures) failures.push_back({r1, r2, v > 0 ? 1 : -1, exact});
-    }
+    // What a method said (its classify): separated, touching, intersecting (overlapping or
+    // touching: what a collision query's "colliding" means) or overlapping (strictly: only a
+    // program's own claims say it).
+    enum Said { kSaidOverlapping = -2, kSaidIntersecting = -1, kSaidTouching = 0, kSaidSeparated = 1 };
+    static const char* said_word(int said);
+    // Whether saying `said` where the exact verdict is `exact` (0, 1, 2 as above) is wrong.
+    static bool wrong(int said, int exact);
+    // A verdict `said` at (r1, r2) where the exact one is `exact`: counted and, when wrong, noted.
+    void count(double r1, double r2, int said, int exact);
     // Where the method's distances or depths were off by more than the audit's measure tolerance
     // (relative): `measures_wrong` of them, the worst kMaxFailures listed (largest error first,
     // ties in the audit's order), each with the pair asked, the value, its relative error and, on

@@ -160,6 +160,7 @@ Json row_json(const AuditRow& r) {
         {"queries", r.queries},
         {"false_separated", r.false_separated},
         {"false_overlapping", r.false_overlapping},
+        {"false_touching", r.false_touching},
         {"seconds_per_query", num_json(r.seconds_per_query)},
         {"has_curve", r.has_curve},
         {"grid_n", r.grid_n},
@@ -222,6 +223,7 @@ AuditRow row_of(const Json& j) {
     r.queries = j.at("queries").get<long>();
     r.false_separated = j.at("false_separated").get<long>();
     r.false_overlapping = j.at("false_overlapping").get<long>();
+    r.false_touching = j.at("false_touching").get<long>();
     r.seconds_per_query = num_of(j.at("seconds_per_query"));
     r.has_curve = j.at("has_curve").get<bool>();
     r.grid_n = j.at("grid_n").get<int>();
@@ -454,10 +456,8 @@ void write_failures(const CampaignArgs& a, const std::vector<AuditRow>& rows) {
             const std::string name = base + ".claims.json";
             Json claims = Json::array();
             for (const AuditRow::Failure& f : r.failures)
-                claims.push_back(Json{{"kind", "verdict"},
-                                      {"rho1", f.rho1},
-                                      {"rho2", f.rho2},
-                                      {"verdict", f.said > 0 ? "separated" : "intersecting"}});
+                claims.push_back(Json{
+                    {"kind", "verdict"}, {"rho1", f.rho1}, {"rho2", f.rho2}, {"verdict", AuditRow::said_word(f.said)}});
             write_file_atomically(a.failures + "/" + name,
                                   dump(Json{{"format", "scalecert-claims-1"}, {"claims", std::move(claims)}}));
             index.push_back(
@@ -465,7 +465,7 @@ void write_failures(const CampaignArgs& a, const std::vector<AuditRow>& rows) {
                      {"method", r.method},
                      {"claims", a.failures + "/" + name},
                      {"listed", r.failures.size()},
-                     {"wrong", r.false_separated + r.false_overlapping},
+                     {"wrong", r.wrong()},
                      {"replay", "scalecert certify-fp " + scene + " " + a.failures + "/" + name + numbers}});
         }
         if (!r.measure_failures.empty()) {
