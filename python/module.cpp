@@ -447,7 +447,7 @@ py::dict certify_arrays(const CertifyFn& certify, const std::string& kind, const
                         const py::handle& direction, const py::handle& normal, const py::handle& offset,
                         const py::handle& point_, const py::handle& verdict, const py::handle& tolerance,
                         const py::handle& abs_tolerance, bool certificate, bool fractions, scalecert::Numbers numbers,
-                        const py::handle& parts, const py::handle& pose1, const py::handle& pose2) {
+                        const py::handle& parts, const py::handle& pose1, const py::handle& pose2, bool of_parts) {
     using scalecert::ClaimKind;
     static const std::map<std::string, ClaimKind> kinds = {{"distance", ClaimKind::Distance},
                                                            {"penetration_depth", ClaimKind::PenetrationDepth},
@@ -572,7 +572,7 @@ py::dict certify_arrays(const CertifyFn& certify, const std::string& kind, const
         j = certify(claims, opt);
     }
     py::module_ np = py::module_::import("numpy");
-    py::list right, exact, rel, vr, cr, dr, sq, ev, why;
+    py::list right, exact, rel, vr, cr, dr, sq, ev, why, pairs, pair_names;
     for (const scalecert::Judgement& g : j.items) {
         right.append(g.right);
         why.append(g.reason);
@@ -583,6 +583,8 @@ py::dict certify_arrays(const CertifyFn& certify, const std::string& kind, const
         cr.append(g.closest_right.value_or(false));
         dr.append(g.direction_right.value_or(false));
         if (fractions) sq.append(g.exact_squared ? fraction(*g.exact_squared) : py::object(py::none()));
+        pairs.append(py::make_tuple(g.part1, g.part2));
+        pair_names.append(py::make_tuple(g.part1_name, g.part2_name));
         if (g.exact_verdict)
             ev.append(*g.exact_verdict == scalecert::Verdict::Separated  ? "separated"
                       : *g.exact_verdict == scalecert::Verdict::Touching ? "touching"
@@ -600,6 +602,10 @@ py::dict certify_arrays(const CertifyFn& certify, const std::string& kind, const
     if (dir) d["direction_right"] = np.attr("array")(dr, "dtype"_a = "bool");
     if (fractions && measure) d["exact_squared"] = sq;
     if (ck == ClaimKind::Verdict) d["exact_verdict"] = ev;
+    if (of_parts) {  // the part pair each exact answer rests on, (-1, -1) for none, and their names
+        d["exact_parts"] = np.attr("array")(pairs, "dtype"_a = "int64").attr("reshape")(n, 2);
+        d["exact_part_names"] = pair_names;
+    }
     d["wrong"] = j.wrong;
     if (certificate) d["certificate"] = j.certificate;
     return d;
@@ -765,7 +771,8 @@ PYBIND11_MODULE(scalecert, m) {
             "mesh files (.off .obj .ply .stl; text decimals and float I1, I2 read as numbers says), each one convex "
             "object; poses = (pose1, pose2), each None or a 3x4 [R | t] by rows (e.g. a numpy array) moving that "
             "object's points to R.v + t exactly before anything else; with parts_from_groups=True each OBJ file's "
-            "groups with faces are its convex parts, named by their groups. An OBJ file with several groups read "
+            "groups with faces are its convex parts, named by their groups (other formats have no groups: each "
+            "stays one convex object). An OBJ file with several groups read "
             "as one convex object gives a UserWarning saying so")
         .def_property_readonly(
             "convex", [](const PyScene& s) { return s.scene.convex(); },
@@ -912,11 +919,11 @@ PYBIND11_MODULE(scalecert, m) {
                const py::handle& abs_tolerance, const py::handle& numbers, const py::handle& parts,
                const py::handle& pose1, const py::handle& pose2) {
                 const scalecert::Analysis& a = s.a();
-                return certify_arrays([&a](const auto& c, const auto& o) { return a.certify(c, o); },
-                                      text_arg(kind, "kind"), rho1, rho2, value, closest, direction, normal, offset,
-                                      point_, verdict, tolerance, abs_tolerance, flag_arg(certificate, "certificate"),
-                                      flag_arg(fractions, "fractions"),
-                                      numbers.is_none() ? s.numbers : numbers_arg(numbers), parts, pose1, pose2);
+                return certify_arrays(
+                    [&a](const auto& c, const auto& o) { return a.certify(c, o); }, text_arg(kind, "kind"), rho1, rho2,
+                    value, closest, direction, normal, offset, point_, verdict, tolerance, abs_tolerance,
+                    flag_arg(certificate, "certificate"), flag_arg(fractions, "fractions"),
+                    numbers.is_none() ? s.numbers : numbers_arg(numbers), parts, pose1, pose2, !a.convex());
             },
             py::arg("kind"), py::arg("rho1"), py::arg("rho2"), py::arg("value") = py::none(),
             py::arg("closest") = py::none(), py::arg("direction") = py::none(), py::arg("normal") = py::none(),
@@ -942,7 +949,10 @@ PYBIND11_MODULE(scalecert, m) {
             "closest_right, direction_right (bool, where given), exact (float64: the exact distance or depth, "
             "correctly "
             "rounded; NaN for a depth of a separated pair) and rel_error (float64), exact_verdict (verdicts); with "
-            "fractions=True exact_squared (Fractions); with certificate=True the judgements certificate's text")
+            "fractions=True exact_squared (Fractions); with certificate=True the judgements certificate's text; on "
+            "objects made of parts exact_parts (int64 (n, 2): the part pair each exact answer rests on, a verdict's "
+            "meeting pair, a distance's closest pair, a depth's pair; -1 for none) and exact_part_names (their names, "
+            "'' for a part without one)")
         .def(
             "golden",
             [](const PyScene& s, const py::handle& verticals, const py::handle& offsets) {
@@ -1021,7 +1031,7 @@ PYBIND11_MODULE(scalecert, m) {
                 py::array_t<bool> right(static_cast<py::ssize_t>(n));
                 auto rw = right.mutable_unchecked<1>();
                 py::list failures, exact_names;
-                long wrong = 0, false_sep = 0, false_int = 0, no_answer = 0;
+                long wrong = 0, false_sep = 0, false_int = 0, false_touch = 0, no_answer = 0;
                 for (size_t i = 0; i < n; ++i) {
                     const bool answered = claim_of[i] != SIZE_MAX;
                     const bool ok = answered && j.items[claim_of[i]].right;
@@ -1029,13 +1039,10 @@ PYBIND11_MODULE(scalecert, m) {
                     exact_names.append(scalecert::name(exact[i]));
                     if (ok) continue;
                     ++wrong;
-                    const bool sep = exact[i] == scalecert::Verdict::Separated;
-                    if (!answered)
-                        ++no_answer;
-                    else if (words[i] == "separated" && !sep)
-                        ++false_sep;
-                    else if (words[i] != "separated" && sep)
-                        ++false_int;
+                    ++(!answered                 ? no_answer
+                       : words[i] == "separated" ? false_sep
+                       : words[i] == "touching"  ? false_touch
+                                                 : false_int);
                     if (failures.size() < static_cast<size_t>(cap))
                         failures.append(py::dict(py::arg("rho1") = r1[i], py::arg("rho2") = r2[i],
                                                  py::arg("said") = answered ? words[i] : "no answer: " + words[i],
@@ -1043,8 +1050,9 @@ PYBIND11_MODULE(scalecert, m) {
                 }
                 return py::dict(py::arg("queries") = n, py::arg("wrong") = wrong,
                                 py::arg("false_separated") = false_sep, py::arg("false_overlapping") = false_int,
-                                py::arg("no_answer") = no_answer, py::arg("right") = right,
-                                py::arg("exact_verdict") = exact_names, py::arg("failures") = failures);
+                                py::arg("false_touching") = false_touch, py::arg("no_answer") = no_answer,
+                                py::arg("right") = right, py::arg("exact_verdict") = exact_names,
+                                py::arg("failures") = failures);
             },
             py::arg("method"), py::arg("rho1") = py::none(), py::arg("rho2") = py::none(), py::arg("listed") = 50,
             "audits your own collision test: method(rho1, rho2) is called once with two float64 arrays of "
@@ -1052,8 +1060,9 @@ PYBIND11_MODULE(scalecert, m) {
             "of numbers='float32' is asked the floats nearest them) and returns one verdict word per pair "
             "('separated', 'touching', 'overlapping' or 'intersecting'), each judged as certify judges a verdict "
             "claim at the exact value of the numbers asked; anything else (None, NaN, another word) is no answer, "
-            "judged wrong. Returns a dict: queries, wrong, false_separated (said separated, exact not), "
-            "false_overlapping (said another word, exact separated), no_answer, right (bool array), "
+            "judged wrong. Returns a dict: queries, wrong (the sum of the next four), false_separated (said "
+            "separated where they meet), false_overlapping (said overlapping or intersecting, wrongly), "
+            "false_touching (said touching where they do not touch), no_answer, right (bool array), "
             "exact_verdict, and failures: the first `listed` wrong pairs (rho1, rho2, said, exact)");
     m.def(
         "golden",

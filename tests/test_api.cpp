@@ -927,6 +927,7 @@ BOOST_AUTO_TEST_CASE(family_golden_data_through_the_public_api) {
     BOOST_TEST(written["queries"].size() >= 13u);
     BOOST_TEST(written["queries"] == nlohmann::json::parse(g.json)["queries"]);
     BOOST_TEST(read(dir + "/random-0.golden.csv") == g.csv);
+    std::filesystem::remove_all(std::filesystem::path(dir).parent_path());
 }
 
 // Scene::from_meshes on two large OFF files of integers reads them straight into machine integers,

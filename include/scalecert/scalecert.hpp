@@ -82,8 +82,9 @@ class Scene {
     static Scene load(const std::string& scene_json_path, Numbers numbers = Numbers::Double);
     // Mesh files (.off .obj .ply .stl; text numbers read as `numbers` says, binary floats at their
     // value): each mesh one convex part, or with parts_from_groups each OBJ file's 'o'/'g' groups
-    // with faces its parts (other formats are refused then). poses[i], when given, moves object
-    // i's points to that pose before anything else (its seed is then the mean of the moved points).
+    // with faces its parts (other formats have no groups: each stays one convex object). poses[i],
+    // when given, moves object i's points to that pose before anything else (its seed is then the
+    // mean of the moved points).
     static Scene from_meshes(const std::string& p1_path, const std::string& p2_path, Interval i1, Interval i2,
                              bool parts_from_groups = false, Numbers numbers = Numbers::Double,
                              const std::array<std::optional<Pose>, 2>& poses = {});
@@ -211,6 +212,10 @@ struct Judgement {
     double rel_error = 0;  // |value − exact| / exact, MPFR-rounded (0 when both are 0; inf when only exact is)
     std::optional<Verdict> exact_verdict;  // verdicts
     std::string reason;                    // a claim with no answer: the field and why ("value: not a number")
+    // Objects made of parts: the part pair the exact answer rests on (a verdict's meeting pair, a
+    // distance's closest pair, a depth's pair), −1 for none; their names ("" for a part without one).
+    int part1 = -1, part2 = -1;
+    std::string part1_name, part2_name;
 };
 struct Judgements {
     std::vector<Judgement> items;  // one per claim, in order

@@ -600,8 +600,11 @@ def test_region_from_meshes_reads_groups_as_parts(tmp_path):
         hull = scalecert.Scene.from_meshes(L, B, ("1/2", 2), ("1/2", 2), parts_from_groups=False)
     assert hull.verdict(1, 1) == scalecert.Verdict.Touching
     assert len(hull.notes()) == 1 and hull.notes()[0].startswith(str(L) + ": 2 groups with faces")
-    with pytest.raises(scalecert.InputError, match="no groups"):
-        scalecert.Scene.from_meshes(SRC / "examples" / "box.stl", B, (1, 2), (1, 2), parts_from_groups=True)
+    # A mesh of another format has no groups: one convex object under parts_from_groups as without.
+    stl = SRC / "examples" / "box.stl"
+    plain = scalecert.Scene.from_meshes(stl, stl, (1, 2), (1, 2))
+    assert plain.convex and scalecert.Scene.from_meshes(stl, stl, (1, 2), (1, 2), parts_from_groups=True).json() == \
+        plain.json()
 
 
 def test_parts_named_by_groups_and_in_scenes(tmp_path):
@@ -631,6 +634,16 @@ def test_parts_named_by_groups_and_in_scenes(tmp_path):
     assert (n.part_name(0, 0), n.part_name(0, 1)) == ("right", "")
     assert json.loads(n.json())["P1"]["parts"][0]["name"] == "right"
     assert "name" not in json.loads(n.json())["P1"]["parts"][1]
+    # Judgements name the part pair they rest on: at (1, 2) the right part [2, 3] is 1/2 from the
+    # box [7/2, 11/2] (the left part, [-3, -2], is 11/2 away); at (2, 2) the right part [4, 6] meets
+    # the box [7/2, 11/2]; at (1, 1), [2, 3] and [4, 5], nothing meets.
+    d = n.certify("distance", [1.0], [2.0], value=[0.5])
+    assert d["right"].tolist() == [True] and d["exact_parts"].tolist() == [[0, 0]]
+    assert d["exact_part_names"] == [("right", "")]
+    v = n.certify("verdict", [2.0, 1.0], [2.0, 1.0], verdict="overlapping")
+    assert v["right"].tolist() == [True, False] and v["exact_parts"].tolist() == [[0, 0], [-1, -1]]
+    assert "exact_parts" not in scalecert.Scene.load(SRC / "certificates" / "scenes" / "stacked_cubes.json").certify(
+        "verdict", [1.0], [1.0], verdict="separated")
     for name, msg in ((" ", None), ("", "an empty name"), (3, "expected a string"), ("right", "names P1.parts.0. too")):
         sc["P1"]["parts"][1]["name"] = name
         named.write_text(json.dumps(sc))
@@ -873,6 +886,10 @@ def test_audit_your_own_collision_test():
     # Pairs of one's own; "overlapping" at a touching pair is wrong, "intersecting" right (CLAIMS.md).
     mine = s.audit(lambda r1, r2: ["overlapping", "intersecting"], rho1=[1.0, 1.0], rho2=[2.0, 2.0])
     assert list(mine["right"]) == [False, True] and mine["exact_verdict"] == ["touching", "touching"]
+    assert mine["false_overlapping"] == 1 and mine["wrong"] == 1
+    # "touching" where the gap 3 - r1 - r2 is 1 (apart) and -1 (overlapping): both wrong, counted as such.
+    touch = s.audit(lambda r1, r2: ["touching"] * 3, rho1=[1.0, 2.0, 1.0], rho2=[1.0, 2.0, 2.0])
+    assert list(touch["right"]) == [False, False, True] and touch["false_touching"] == 2 == touch["wrong"]
     # Answers that are no answer are wrong and counted; a wrong number of answers is bad input.
     none = s.audit(lambda r1, r2: [None, float("nan"), "yes"], rho1=[1.0, 1.0, 1.0], rho2=[1.0, 2.0, 3.0])
     assert none["wrong"] == none["no_answer"] == 3 and none["failures"][1]["said"] == "no answer: nan"

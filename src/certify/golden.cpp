@@ -5,6 +5,7 @@
 #include "numeric/limits.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -99,14 +100,20 @@ struct Measure {
 // The rows, written to the JSON queries and both CSV texts at once.
 class Rows {
   public:
-    Rows() {
+    // With objects whose parts have names (`names`, a list per object, "" for a part without one),
+    // the measures name their parts (P1_part_name, P2_part_name) and the CSVs end in the columns
+    // part1_name and part2_name; without, the bytes are those of a scene without names.
+    explicit Rows(std::array<std::vector<std::string>, 2> names = {}) : names_(std::move(names)) {
+        named_ = !names_[0].empty() || !names_[1].empty();
+        const std::string tail = named_ ? ",part1_name,part2_name\n" : "\n";
         csv_ =
             "rho1,rho2,where,verdict_at_doubles,measure,value,near,p1x,p1y,p1z,p2x,p2y,p2z,nx,ny,nz,offset,part1,"
-            "part2\n";
+            "part2" +
+            tail;
         rcsv_ = "rho1_num,rho1_den,rho2_num,rho2_den,near,where,verdict,measure,squared_num,squared_den";
         for (const char* p : {"p1", "p2"})
             for (const char* c : {"x", "y", "z"}) rcsv_ += std::string(",") + p + c + "_num," + p + c + "_den";
-        rcsv_ += ",nx,ny,nz,offset_num,offset_den,part1,part2\n";
+        rcsv_ += ",nx,ny,nz,offset_num,offset_den,part1,part2" + tail;
     }
     void add(const Q& x, const Q& y, const std::string& where, const std::string& near, Verdict exact, double xd,
              double yd, const Measure& m) {
@@ -136,6 +143,8 @@ class Rows {
             ms["closest_P2"] = point(*m.p2);
         }
         if (m.part1 >= 0) ms["parts"] = Json::array({m.part1, m.part2});
+        if (const std::string n = name(0, m.part1); !n.empty()) ms["P1_part_name"] = n;
+        if (const std::string n = name(1, m.part2); !n.empty()) ms["P2_part_name"] = n;
         if (m.normal) {
             const Vec3z& n = *m.normal;
             const Q nn = Q(dotz(n, n));
@@ -158,7 +167,8 @@ class Rows {
         for (const Vec3q* p : {&p1, &p2})
             for (int i = 0; i < 3; ++i) csv_ += "," + (m.p1 ? num(to_double_rn((*p)[i])) : std::string());
         for (const std::string& u : unit) csv_ += "," + u;
-        csv_ += "," + part(m.part1) + "," + part(m.part2) + "\n";
+        const std::string names = named_ ? "," + csv_field(name(0, m.part1)) + "," + csv_field(name(1, m.part2)) : "";
+        csv_ += "," + part(m.part1) + "," + part(m.part2) + names + "\n";
 
         rcsv_ += frac(exact_from_double(xd)) + "," + frac(exact_from_double(yd)) + "," + near + "," + where + "," +
                  verdict_name(m.verdict) + "," + m.kind + "," + (m.squared ? frac(*m.squared) : ",");
@@ -166,13 +176,27 @@ class Rows {
             for (int i = 0; i < 3; ++i) rcsv_ += "," + (m.p1 ? frac((*p)[i]) : ",");
         for (int i = 0; i < 3; ++i) rcsv_ += "," + (m.normal ? (*m.normal)[i].get_str() : std::string());
         rcsv_ += "," + (m.offset ? frac(*m.offset) : ",");
-        rcsv_ += "," + part(m.part1) + "," + part(m.part2) + "\n";
+        rcsv_ += "," + part(m.part1) + "," + part(m.part2) + names + "\n";
     }
     Json queries() { return std::move(qs_); }
     std::string csv() { return std::move(csv_); }
     std::string rational_csv() { return std::move(rcsv_); }
 
   private:
+    // Object i's part k's name ("" for none, and for k < 0: no part).
+    std::string name(int i, int k) const {
+        const std::vector<std::string>& n = names_[static_cast<size_t>(i)];
+        return k >= 0 && static_cast<size_t>(k) < n.size() ? n[static_cast<size_t>(k)] : std::string();
+    }
+    // A CSV field (RFC 4180): quoted, its quotes doubled, when it holds a comma, a quote or a line end.
+    static std::string csv_field(const std::string& t) {
+        if (t.find_first_of(",\"\r\n") == std::string::npos) return t;
+        std::string q = "\"";
+        for (char c : t) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+        return q + "\"";
+    }
+    std::array<std::vector<std::string>, 2> names_;
+    bool named_ = false;
     static std::string num(double d) {
         char b[40];
         std::snprintf(b, sizeof b, "%.17g", d);
@@ -359,7 +383,7 @@ GoldenAnswers golden_answers_parts(const CompoundRegion& r, CompoundJudge& judge
         }
         for (const Q& y : ends) samples.push_back({x, {y, near}});
     }
-    Rows rows;
+    Rows rows({s.P[0].part_names, s.P[1].part_names});
     emit(
         rows, rect, samples, false, points, [&](const Q& a, const Q& b) { return judge.verdict(a, b).verdict; },
         [&](const Q& a, const Q& b) {

@@ -501,7 +501,7 @@ std::vector<std::vector<Vec3q>> read_obj_groups(const std::string& path, const R
 }
 
 void read_mesh_object(const std::string& path, const ReadOptions& opt, PolyInput& in) {
-    if (!opt.parts_from_groups) {
+    if (!opt.parts_from_groups || mesh_format_of(path) != MeshFormat::Obj) {
         in.points = read_mesh(path, opt, &in.note);
         return;
     }

@@ -38,9 +38,11 @@ std::vector<Vec3q> read_mesh(const std::string& path, const ReadOptions& opt = {
 std::vector<std::vector<Vec3q>> read_obj_groups(const std::string& path, const ReadOptions& opt = {},
                                                 std::vector<std::string>* names = nullptr);
 
-// An object's mesh file: its vertices (a convex object), or with opt.parts_from_groups its OBJ
-// groups as parts (in.parts, and in.points all their points in order; in.part_names their group
-// names, empty when no group has one).
+// An object's mesh file: its vertices (a convex object), or with opt.parts_from_groups and an OBJ
+// file its groups as parts (in.parts, and in.points all their points in order; in.part_names their
+// group names, empty when no group has one). A mesh of another format has no groups: under
+// opt.parts_from_groups it is one convex object still, so that one flag reads a scene of one
+// compound OBJ and one convex STL.
 void read_mesh_object(const std::string& path, const ReadOptions& opt, PolyInput& in);
 
 }  // namespace scalecert::internal

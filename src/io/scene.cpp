@@ -143,6 +143,7 @@ ExactScene parse_scene_text(const std::string& text, const std::string& name, co
             if (parts->items.size() > kMaxParts)
                 r.fail(where, "more than " + std::to_string(kMaxParts) + " parts (the limit)");
             std::map<std::string, size_t> named;  // each name and its part
+            size_t merged = 0;                    // parts whose OBJ mesh has several groups with faces
             for (size_t k = 0; k < parts->items.size(); ++k) {
                 const std::string w = where + "[" + std::to_string(k) + "]";
                 const JNode& part = parts->items[k];
@@ -160,16 +161,36 @@ ExactScene parse_scene_text(const std::string& text, const std::string& name, co
                 }
                 PolyInput one;
                 body(part, w, false, one);
+                // A part is one convex body whatever its mesh: said once per object (the first such part).
+                if (const size_t cut = one.note.find(", read as one convex object"); cut != std::string::npos) {
+                    if (merged++ == 0)
+                        in.note = w + ": " + one.note.substr(0, cut) +
+                                  ", read as one convex part (the hull of all its vertices); a part's mesh is one "
+                                  "part: give each group a part of its own, or read the file as the object's "
+                                  "\"mesh\" with \"parts_from_groups\"";
+                }
                 in.parts.push_back(std::move(one.points));
                 if (in.points.size() + in.parts.back().size() > kMaxPoints)
                     r.fail(where, "more than " + std::to_string(kMaxPoints) + " points in all (the limit)");
                 in.points.insert(in.points.end(), in.parts.back().begin(), in.parts.back().end());
             }
             if (!in.part_names.empty()) in.part_names.resize(in.parts.size());
+            if (merged > 1)
+                in.note += " (and " + std::to_string(merged - 1) + " more " + (merged == 2 ? "part" : "parts") +
+                           " of " + pname[i] + " so read)";
         } else {
             only(*p, pname[i], {"vertices", "off", "mesh", "seed", "parts_from_groups", "pose"});
-            // An OBJ "mesh" as a compound: --parts-from-groups, or this object's "parts_from_groups".
-            bool groups = opt.parts_from_groups && !p->find("vertices");
+            // An OBJ "mesh" as a compound: --parts-from-groups (which leaves other meshes, having no
+            // groups, one convex object each), or this object's "parts_from_groups".
+            const JNode* mesh = p->find("mesh");
+            bool groups = opt.parts_from_groups && mesh && mesh->kind == JNode::String && !p->find("vertices") &&
+                          !p->find("off") && [&] {
+                              try {
+                                  return mesh_format_of(mesh->text) == MeshFormat::Obj;
+                              } catch (const InputError&) {
+                                  return false;  // an unknown format: refused when read, with its path
+                              }
+                          }();
             if (const JNode* g = p->find("parts_from_groups")) {
                 const std::string w = std::string(pname[i]) + ".parts_from_groups";
                 if (g->kind != JNode::Bool) r.fail(w, "expected true or false");

@@ -515,8 +515,15 @@ internal::TypedClaim typed_claim(const Claim& c, size_t i, const internal::Exact
 }
 
 // Its judgement, as the public type has it.
-Judgement public_judgement(const internal::TypedClaim& c, const internal::Judged& g) {
+Judgement public_judgement(const internal::TypedClaim& c, const internal::Judged& g,
+                           const internal::ExactScene* parts) {
     Judgement j;
+    if (parts && g.part1 >= 0 && g.part2 >= 0) {
+        j.part1 = g.part1;
+        j.part2 = g.part2;
+        j.part1_name = internal::part_name(parts->P[0], static_cast<size_t>(g.part1));
+        j.part2_name = internal::part_name(parts->P[1], static_cast<size_t>(g.part2));
+    }
     j.right = g.right;
     j.value_right = g.value_right;
     j.closest_right = g.closest_right;
@@ -554,7 +561,7 @@ Judgements judge_all(Rules& rules, const std::vector<Claim>& claims, const Claim
             throw InputError("certify: claims[" + std::to_string(i) + "]." + e.what());
         }
         out.wrong += !g.right;
-        out.items.push_back(public_judgement(typed[i], g));
+        out.items.push_back(public_judgement(typed[i], g, parts));
         if (options.certificate)
             entries.push_back(
                 Json{{"index", i}, {"claim", std::move(p.claim)}, {"right", g.right}, {"proof", std::move(p.proof)}});
