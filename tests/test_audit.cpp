@@ -9,6 +9,7 @@
 #include "session/session.hpp"
 #include "support.hpp"
 
+#include <algorithm>
 #include <filesystem>
 #include <map>
 #include <set>
@@ -406,5 +407,65 @@ BOOST_AUTO_TEST_CASE(an_epa_tolerance_below_what_doubles_resolve_is_refused) {
                     [](const InputError& x) { return std::string(x.what()).find("past 2^200") != std::string::npos; });
             }
         }
+    }
+}
+
+// Each row records the settings its method's calls read (docs/audits.md, "Settings"), by hand from
+// what each library call takes: libccd's GJK test reads its iteration limit and its EPA (depths
+// only) the EPA tolerance; MPR's test reads the MPR tolerance; FCL's collide the GJK tolerance
+// and its distance() the distance tolerance; Bullet's shapes their margin; the user's command
+// its timeout; the double envelope nothing.
+BOOST_AUTO_TEST_CASE(rows_record_the_settings_their_method_reads) {
+    MethodSettings st;
+    st.ccd_max_iterations = 7;
+    st.ccd_epa_tolerance = 0.25;
+    st.ccd_mpr_tolerance = 0.5;
+    st.fcl_gjk_tolerance = 0.125;
+    st.fcl_distance_tolerance = 0.0625;
+    st.bullet_margin = 0.03125;
+    st.command_timeout = 9;
+    using S = std::vector<std::pair<std::string, double>>;
+    BOOST_TEST((fp::settings_of("libccd-gjk", st) == S{{"ccd-max-iterations", 7}, {"ccd-epa-tolerance", 0.25}}));
+    BOOST_TEST((fp::settings_of("libccd-gjk", st, false) == S{{"ccd-max-iterations", 7}}));
+    BOOST_TEST((fp::settings_of("libccd-mpr", st, false) == S{{"ccd-max-iterations", 7}, {"ccd-mpr-tolerance", 0.5}}));
+    BOOST_TEST((fp::settings_of("libccd-gjk-parts", st) == S{{"ccd-max-iterations", 7}}));
+    BOOST_TEST(
+        (fp::settings_of("fcl-gjk-indep", st) == S{{"fcl-gjk-tolerance", 0.125}, {"fcl-distance-tolerance", 0.0625}}));
+    BOOST_TEST((fp::settings_of("fcl-compound-libccd", st, false) == S{{"fcl-gjk-tolerance", 0.125}}));
+    BOOST_TEST((fp::settings_of("bullet-gjk-epa", st, false) == S{{"bullet-margin", 0.03125}}));
+    BOOST_TEST((fp::settings_of("command=true", st) == S{{"command-timeout", 9}}));
+    BOOST_TEST(fp::settings_of("double-envelope", st).empty());
+    // Through the audit: with --no-measures the libccd row leaves the EPA tolerance out.
+    ExactScene s = load_scene(std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/stacked_cubes.json");
+    BOOST_TEST((audit_scene("cubes", s, Q(0), {"libccd-gjk"}, {}, false, false, st)[0].settings ==
+                S{{"ccd-max-iterations", 7}}));
+    BOOST_TEST((audit_scene("cubes", s, Q(0), {"libccd-gjk"}, {}, false, true, st)[0].settings ==
+                S{{"ccd-max-iterations", 7}, {"ccd-epa-tolerance", 0.25}}));
+}
+
+// Bullet holds its margin as a float: the option takes 0 or a normal float. FLT_MIN = 2^-126 is
+// the least normal float and FLT_MAX = (2 − 2^-23) · 2^127 the largest; 2^-127 is subnormal and
+// 2^128 past the floats. Each refusal is one line, exit 2, no output.
+BOOST_AUTO_TEST_CASE(the_bullet_margin_is_zero_or_a_normal_float) {
+    const std::string cubes = std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/stacked_cubes.json";
+    const fs::path out = test::scratch_dir("margin") / "m.json";
+    auto run = [&](const std::string& margin) {
+        fs::remove(out);
+        const std::string cmd = std::string(SCALECERT_BIN) + " audit " + cubes +
+                                " --methods bullet-gjk-epa --no-measures --bullet-margin " + margin + " --out " +
+                                out.string() + " 2>" + (out.string() + ".err");
+        const int st = std::system(cmd.c_str());
+        return std::make_pair(WIFEXITED(st) ? WEXITSTATUS(st) : -1, slurp(out.string() + ".err"));
+    };
+    for (const char* ok : {"0", "1.1754943508222875e-38", "3.4028234663852886e38", "0.125"}) {
+        BOOST_TEST(run(ok).first == 0, ok);
+        BOOST_TEST(fs::exists(out), ok);
+    }
+    for (const char* bad : {"5.877471754111438e-39", "3.4028236692093846e38", "-0.125", "nan"}) {
+        const auto [status, err] = run(bad);
+        BOOST_TEST(status == 2, bad);
+        BOOST_TEST(std::count(err.begin(), err.end(), '\n') == 1, err);
+        BOOST_TEST(err.find("--bullet-margin") != std::string::npos, err);
+        BOOST_TEST(!fs::exists(out), bad);
     }
 }

@@ -53,6 +53,10 @@ for f in wrongtype.json deep.json fifo.json hugeint.json; do
   done
 done
 [ -z "$(ls -A . | grep '^\.report\.')" ] || bad "a temporary page left behind"
+# A scene named with a bar stays one Markdown cell in atlas_table's table: 7 cells, the bar escaped.
+printf '[{"scene": "a|b", "method": "m|n", "queries": 4, "false_separated": 1, "false_touching": 2}]' > bar.json
+row="$($PY "$SRC/tools/atlas_table.py" --by-scene bar.json | tail -1)"
+[ "$row" = '| a\|b | m\|n | 1 | 3 / 4 | — | — | — |' ] || bad "atlas_table with bars: $row"
 # A mesh pair's audit names its scene P1-P2, whose file the --failures directory holds: the page
 # finds it there and carries both bodies (the tetrahedron's 4 points).
 "$SC" audit --p1 "$SRC/examples/box.stl" --p2 "$SRC/examples/tetra.obj" --i1 1/2,2 --i2 1/2,2 --methods bullet-gjk-epa \
@@ -68,7 +72,8 @@ PYEOF
 # A --scalecert whose answer is nested deeper than Python parses: a page without 3-D views, no traceback.
 printf '#!/bin/sh\n/usr/bin/python3 -c "print(\\"[\\" * 100000 + \\"]\\" * 100000)"\n' > deep.sh && chmod +x deep.sh
 $PY "$SRC/tools/report.py" audit.json --out deep.html --scalecert ./deep.sh 2> err.txt && [ -s deep.html ] &&
-  ! grep -q Traceback err.txt || bad "a --scalecert answering deep JSON: $(head -c 300 err.txt)"
+  ! grep -q Traceback err.txt && grep -q "gave no bodies, so its failures get no 3-D view" err.txt ||
+  bad "a --scalecert answering deep JSON: $(head -c 300 err.txt)"
 # The page, loaded: its status line, and no script error in the console.
 browse --enable-logging=stderr --v=0 --dump-dom "file://$WORK/report.html" > dom.html 2> console.txt
 grep -q 'id="status"[^>]*>charts drawn: 2; 3-D views drawn: 1<' dom.html || bad "status: $(grep -o 'id="status"[^<]*' dom.html)"

@@ -57,12 +57,14 @@ def main():
     print("| %s | method | scenes | wrong verdicts | near the boundary | worst distance error | worst depth error |" % ("scene" if by_scene else "class"))
     print("|---|---|---|---|---|---|---|")
     fmt = lambda e: "—" if e is None else "%.2g" % e
+    # A scene's or method's name as a Markdown cell: its bars escaped, its line ends as spaces.
+    cell = lambda t: t.replace("\\", "\\\\").replace("|", "\\|").replace("\r", " ").replace("\n", " ")
     for cls in classes:
         for (c, m), t in sorted(table.items()):
             if c != cls:
                 continue
             near = "%d / %d" % (t["near"], t["pairs"]) if t["pairs"] else "—"
-            print("| %s | %s | %d | %d / %d | %s | %s | %s |" % (cls, m, t["scenes"], t["wrong"], t["queries"], near,
+            print("| %s | %s | %d | %d / %d | %s | %s | %s |" % (cell(cls), cell(m), t["scenes"], t["wrong"], t["queries"], near,
                                                               fmt(t["dist"]), fmt(t["depth"])))
 
 

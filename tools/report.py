@@ -207,6 +207,9 @@ def page(rows, audit_dir, failures_dir, program, scripts):
         if key not in scenes:
             f = scene_file(r, audit_dir, failures_dir) if program else None
             scenes[key] = bodies(f, program) if f else None
+            if f and scenes[key] is None:
+                print("report.py: note: %s: `%s query` gave no bodies, so its failures get no 3-D view"
+                      % (f, program), file=sys.stderr)
         data_rows.append({
             "scene": key, "method": r["method"], "eps": str(r.get("eps", "0")), "queries": r["queries"],
             "false_separated": r.get("false_separated", 0), "false_overlapping": r.get("false_overlapping", 0),

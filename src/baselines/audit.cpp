@@ -386,7 +386,7 @@ std::vector<AuditRow> audit_convex(const std::string& name, const ExactScene& s,
         AuditRow r;
         r.scene = name;
         r.method = mm->name();
-        r.settings = fp::settings_of(r.method, settings);
+        r.settings = fp::settings_of(r.method, settings, measures);
         r.eps = eps;
         auto t0 = Clock::now();
         for (size_t i = 0; i < r1.size(); ++i) verdicts[i] = mm->classify(r1[i], r2[i]);
@@ -413,7 +413,7 @@ std::vector<AuditRow> audit_convex(const std::string& name, const ExactScene& s,
             AuditRow r;
             r.scene = name;
             r.method = "grid+bisection (libccd-gjk)";
-            r.settings = fp::settings_of("libccd-gjk", settings);
+            r.settings = fp::settings_of("libccd-gjk", settings, false);
             r.eps = eps;
             r.has_curve = true;
             r.grid_n = n;
@@ -451,7 +451,7 @@ std::vector<AuditRow> audit_convex(const std::string& name, const ExactScene& s,
             // pairs' closed-form lines.
             AuditRow a = r;
             a.method = "grid+analytical (libccd-gjk)";
-            a.settings = fp::settings_of("libccd-gjk", settings);
+            a.settings = fp::settings_of("libccd-gjk", settings, false);
             auto t1 = Clock::now();
             std::vector<size_t> pair;
             for (size_t i = 0; i < gc.rho1.size(); ++i) {

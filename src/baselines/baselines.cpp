@@ -177,11 +177,14 @@ class LibccdParts : public Method {
 // depths, the EPA tolerance), its MPR the MPR tolerance and the iteration limit (its depths);
 // FCL's requests their two tolerances;
 // Bullet's shapes their margin; the user's program its time limit.
-std::vector<std::pair<std::string, double>> settings_of(const std::string& method, const MethodSettings& s) {
+std::vector<std::pair<std::string, double>> settings_of(const std::string& method, const MethodSettings& s,
+                                                        bool measures) {
     const double iterations = static_cast<double>(s.ccd_max_iterations);
+    if (method == "libccd-gjk" && !measures) return {{"ccd-max-iterations", iterations}};
     if (method == "libccd-gjk") return {{"ccd-max-iterations", iterations}, {"ccd-epa-tolerance", s.ccd_epa_tolerance}};
     if (method == "libccd-gjk-parts") return {{"ccd-max-iterations", iterations}};
     if (method == "libccd-mpr") return {{"ccd-max-iterations", iterations}, {"ccd-mpr-tolerance", s.ccd_mpr_tolerance}};
+    if (method.rfind("fcl-", 0) == 0 && !measures) return {{"fcl-gjk-tolerance", s.fcl_gjk_tolerance}};
     if (method.rfind("fcl-", 0) == 0)
         return {{"fcl-gjk-tolerance", s.fcl_gjk_tolerance}, {"fcl-distance-tolerance", s.fcl_distance_tolerance}};
     if (method.rfind("bullet-", 0) == 0) return {{"bullet-margin", s.bullet_margin}};

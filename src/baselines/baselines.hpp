@@ -135,7 +135,10 @@ struct CompoundFp {
 std::unique_ptr<Method> make_compound_method(const std::string& name, const CompoundFp& s);
 std::vector<std::string> compound_method_names();
 // The settings a method of that name runs with (MethodSettings, by option name): its rows record them.
-std::vector<std::pair<std::string, double>> settings_of(const std::string& method, const MethodSettings& s);
+// Without `measures` (audit --no-measures, the grid) those only its distances and depths read (libccd's
+// EPA tolerance, FCL's distance tolerance) are left out.
+std::vector<std::pair<std::string, double>> settings_of(const std::string& method, const MethodSettings& s,
+                                                        bool measures = true);
 // The FCL and Bullet ones, from the module (fcl_bullet.cpp): kind 0 Bullet, 1 FCL with libccd's
 // GJK, 2 FCL with its own GJK.
 std::unique_ptr<Method> make_fcl_bullet_compound(const CompoundFp& s, int kind);

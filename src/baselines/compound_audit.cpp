@@ -227,7 +227,7 @@ std::vector<AuditRow> audit_compound(const std::string& name, const ExactScene& 
         AuditRow row;
         row.scene = name;
         row.method = mm->name();
-        row.settings = fp::settings_of(row.method, settings);
+        row.settings = fp::settings_of(row.method, settings, measures);
         row.eps = eps;
         const auto t0 = Clock::now();
         const std::vector<int> said = score_compound(*mm, samples, by_distance, row);
