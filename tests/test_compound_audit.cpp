@@ -469,9 +469,8 @@ BOOST_AUTO_TEST_CASE(a_bullet_margin_inflates_the_shapes_and_the_rows_record_it)
     BOOST_TEST(rows[0].false_overlapping == predicted);
     BOOST_TEST(rows[0].false_separated == 0);
     BOOST_TEST((rows[0].settings == std::vector<std::pair<std::string, double>>{{"bullet-margin", 0.125}}));
-    BOOST_TEST(rows[1].settings.size() == 2u);
-    BOOST_TEST(rows[1].settings[0].first == "fcl-gjk-tolerance");
-    BOOST_TEST(rows[1].settings[0].second == 1e-5);
+    // (No distances measured here: FCL's distance tolerance is not read, so not recorded.)
+    BOOST_TEST((rows[1].settings == std::vector<std::pair<std::string, double>>{{"fcl-gjk-tolerance", 1e-5}}));
     // With no margin (the default) the same samples are judged as before: none is 2m from contact.
     BOOST_TEST(audit_scene("cubes", a.scene, Q(0), {"bullet-compound"}, {}, false, false)[0].false_overlapping <
                predicted);
