@@ -1620,14 +1620,19 @@ BOOST_AUTO_TEST_CASE(a_mesh_of_groups_read_whole_gets_a_note) {
     const Run g = run("golden" + meshes + " --dir " + (workdir() / "golden-note").string());
     BOOST_TEST(g.status == 0);
     BOOST_TEST(g.err.find(note) == 0u, g.err);
-    // The same mesh named by a scene file: the note too.
-    const fs::path scene = write("note_scene.json", "{\"P1\": {\"mesh\": \"" + obj +
-                                                        "\"}, \"P2\": {\"mesh\": \"note_box.obj\"}, \"I1\": [1, 4], "
-                                                        "\"I2\": [1, 3]}");
-    const Run qs = run("query " + scene.string() + " 1 3");
-    BOOST_TEST(qs.status == 0);
-    BOOST_TEST(qs.out == "touching\n");
-    BOOST_TEST(qs.err.find(note) == 0u, qs.err);
+    // The same mesh named by a scene file (P1 as given, P2 the box): touching at (1, 3), the note too.
+    auto scene_of = [&](const std::string& file, const std::string& p1) {
+        return write(file,
+                     "{\"P1\": " + p1 + ", \"P2\": {\"mesh\": \"note_box.obj\"}, \"I1\": [1, 4], \"I2\": [1, 3]}");
+    };
+    auto touching_at_1_3 = [&](const fs::path& scene, const std::string& said) {
+        const Run r = run("query " + scene.string() + " 1 3");
+        BOOST_TEST(r.status == 0);
+        BOOST_TEST(r.out == "touching\n");
+        BOOST_TEST(r.err.find(said) == 0u, r.err);
+    };
+    const fs::path scene = scene_of("note_scene.json", "{\"mesh\": \"" + obj + "\"}");
+    touching_at_1_3(scene, note);
     // audit too, before its count of rows.
     const Run au = run("audit " + scene.string() + " --methods libccd-gjk --grid 4 --no-timing --out " +
                        (workdir() / "note_audit.json").string());
@@ -1635,15 +1640,8 @@ BOOST_AUTO_TEST_CASE(a_mesh_of_groups_read_whole_gets_a_note) {
     BOOST_TEST(au.err.find(note) == 0u, au.err);
     BOOST_TEST(au.err.find("\nscalecert: audit: ") != std::string::npos, au.err);
     // As a part of "parts" the mesh is one convex part (the same hull, so the same answer), said too.
-    const fs::path parts = write("note_parts.json", "{\"P1\": {\"parts\": [{\"mesh\": \"" + obj +
-                                                        "\"}], \"seed\": [0, 0, 0]}, \"P2\": {\"mesh\": "
-                                                        "\"note_box.obj\"}, \"I1\": [1, 4], \"I2\": [1, 3]}");
-    const Run qp = run("query " + parts.string() + " 1 3");
-    BOOST_TEST(qp.status == 0);
-    BOOST_TEST(qp.out == "touching\n");
-    BOOST_TEST(
-        qp.err.find("scalecert: note: P1.parts[0]: " + obj + ": 2 groups with faces, read as one convex part") == 0u,
-        qp.err);
+    touching_at_1_3(scene_of("note_parts.json", "{\"parts\": [{\"mesh\": \"" + obj + "\"}], \"seed\": [0, 0, 0]}"),
+                    "scalecert: note: P1.parts[0]: " + obj + ": 2 groups with faces, read as one convex part");
 }
 
 // A group's name is text written into JSON and messages: a name that is not UTF-8 is refused
