@@ -615,7 +615,7 @@ py::dict certify_arrays(const CertifyFn& certify, const std::string& kind, const
 using DoubleArray = py::array_t<double, py::array::c_style | py::array::forcecast>;
 // A list or array of real numbers as doubles; anything else (strings, complex numbers, objects)
 // is an InputError, not pybind's TypeError.
-DoubleArray doubles_of(const py::handle& h, const char* what) {
+DoubleArray doubles_of(const py::handle& h, const char* what, const char* who = "classify") {
     const py::object np = py::module_::import("numpy");
     py::object a = np.attr("asarray")(h);
     std::string kind = py::str(a.attr("dtype").attr("kind")).cast<std::string>();
@@ -628,7 +628,7 @@ DoubleArray doubles_of(const py::handle& h, const char* what) {
             py::object Fraction = py::module_::import("fractions").attr("Fraction");
             for (size_t i = 0; i < orig.size(); ++i)
                 if (!py::isinstance<py::float_>(orig[i]) && !Fraction(orig[i]).equal(Fraction(as_f[i])))
-                    throw scalecert::InputError(std::string("classify: ") + what + "[" + std::to_string(i) +
+                    throw scalecert::InputError(std::string(who) + ": " + what + "[" + std::to_string(i) +
                                                 "]: " + py::repr(orig[i]).cast<std::string>().substr(0, 40) +
                                                 " is not a double (classify takes doubles)");
             a = f;
@@ -638,7 +638,7 @@ DoubleArray doubles_of(const py::handle& h, const char* what) {
         }
     }
     if (kind != "f" && kind != "i" && kind != "u")
-        throw scalecert::InputError(std::string("classify: ") + what +
+        throw scalecert::InputError(std::string(who) + ": " + what +
                                     ": expected real numbers (an array or list of floats or ints)");
     if (kind != "f") {  // integers: each must be a double exactly (beyond 2^53 not every one is)
         py::object f = np.attr("asarray")(a, py::arg("dtype") = np.attr("float64"));
@@ -647,7 +647,7 @@ DoubleArray doubles_of(const py::handle& h, const char* what) {
             np.attr("logical_or")(np.attr("not_equal")(back, a), np.attr("greater_equal")(np.attr("abs")(f), 9.2e18)));
         if (py::len(bad) > 0) {
             const size_t i = py::cast<size_t>(bad[py::int_(0)]);
-            throw scalecert::InputError(std::string("classify: ") + what + "[" + std::to_string(i) +
+            throw scalecert::InputError(std::string(who) + ": " + what + "[" + std::to_string(i) +
                                         "]: " + py::repr(a.attr("ravel")()[py::int_(i)]).cast<std::string>() +
                                         " is not a double (classify takes doubles)");
         }
@@ -982,7 +982,7 @@ PYBIND11_MODULE(scalecert, m) {
                         if (seen.insert({x, y}).second) r1.push_back(x), r2.push_back(y);
                     }
                 } else {
-                    const DoubleArray a1 = doubles_of(rho1, "rho1"), a2 = doubles_of(rho2, "rho2");
+                    const DoubleArray a1 = doubles_of(rho1, "rho1", "audit"), a2 = doubles_of(rho2, "rho2", "audit");
                     if (a1.ndim() != 1 || a2.ndim() != 1 || a1.size() != a2.size())
                         throw scalecert::InputError("audit: rho1 and rho2 are one-dimensional arrays of one length");
                     r1.assign(a1.data(), a1.data() + a1.size());
@@ -1013,7 +1013,13 @@ PYBIND11_MODULE(scalecert, m) {
                 const py::sequence seq = said.cast<py::sequence>();
                 for (size_t i = 0; i < n; ++i) {
                     const py::object w = seq[i];
-                    if (py::isinstance<py::str>(w)) words[i] = w.cast<std::string>();
+                    if (py::isinstance<py::str>(w)) {
+                        try {
+                            words[i] = w.cast<std::string>();
+                        } catch (const py::cast_error&) {  // not UTF-8 (a lone surrogate): no verdict word
+                            words[i].clear();
+                        }
+                    }
                     if (const auto cv = claimed_verdict(words[i])) {
                         scalecert::Claim c;
                         c.kind = scalecert::ClaimKind::Verdict;

@@ -10,6 +10,7 @@
 #include "support.hpp"
 
 #include <algorithm>
+#include <cfloat>
 #include <filesystem>
 #include <map>
 #include <set>
@@ -412,8 +413,9 @@ BOOST_AUTO_TEST_CASE(an_epa_tolerance_below_what_doubles_resolve_is_refused) {
 
 // Each row records the settings its method's calls read (docs/audits.md, "Settings"), by hand from
 // what each library call takes: libccd's GJK test reads its iteration limit and its EPA (depths
-// only) the EPA tolerance; MPR's test reads the MPR tolerance; FCL's collide the GJK tolerance
-// and its distance() the distance tolerance; Bullet's shapes their margin; the user's command
+// only) the EPA tolerance; MPR's test reads the MPR tolerance (its depth search the limit too);
+// FCL's collide the GJK tolerance and its distance() the distance tolerance; Bullet's shapes their
+// margin; the user's command
 // its timeout; the double envelope nothing.
 BOOST_AUTO_TEST_CASE(rows_record_the_settings_their_method_reads) {
     MethodSettings st;
@@ -427,7 +429,9 @@ BOOST_AUTO_TEST_CASE(rows_record_the_settings_their_method_reads) {
     using S = std::vector<std::pair<std::string, double>>;
     BOOST_TEST((fp::settings_of("libccd-gjk", st) == S{{"ccd-max-iterations", 7}, {"ccd-epa-tolerance", 0.25}}));
     BOOST_TEST((fp::settings_of("libccd-gjk", st, false) == S{{"ccd-max-iterations", 7}}));
-    BOOST_TEST((fp::settings_of("libccd-mpr", st, false) == S{{"ccd-max-iterations", 7}, {"ccd-mpr-tolerance", 0.5}}));
+    BOOST_TEST((fp::settings_of("libccd-mpr", st) == S{{"ccd-max-iterations", 7}, {"ccd-mpr-tolerance", 0.5}}));
+    // MPR's test takes no iteration limit:
+    BOOST_TEST((fp::settings_of("libccd-mpr", st, false) == S{{"ccd-mpr-tolerance", 0.5}}));
     BOOST_TEST((fp::settings_of("libccd-gjk-parts", st) == S{{"ccd-max-iterations", 7}}));
     BOOST_TEST(
         (fp::settings_of("fcl-gjk-indep", st) == S{{"fcl-gjk-tolerance", 0.125}, {"fcl-distance-tolerance", 0.0625}}));
@@ -457,9 +461,19 @@ BOOST_AUTO_TEST_CASE(the_bullet_margin_is_zero_or_a_normal_float) {
         const int st = std::system(cmd.c_str());
         return std::make_pair(WIFEXITED(st) ? WEXITSTATUS(st) : -1, slurp(out.string() + ".err"));
     };
-    for (const char* ok : {"0", "1.1754943508222875e-38", "3.4028234663852886e38", "0.125"}) {
-        BOOST_TEST(run(ok).first == 0, ok);
-        BOOST_TEST(fs::exists(out), ok);
+    // Each is taken as its nearest float, which the row records: 0.04 as 0.04f; 3.4028235e38, the
+    // usual spelling of FLT_MAX, as FLT_MAX.
+    const std::pair<const char*, double> ok[] = {{"0", 0.0},
+                                                 {"1.1754943508222875e-38", FLT_MIN},
+                                                 {"3.4028234663852886e38", FLT_MAX},
+                                                 {"3.4028235e38", FLT_MAX},
+                                                 {"0.125", 0.125},
+                                                 {"0.04", static_cast<double>(0.04f)}};
+    for (const auto& [text, held] : ok) {
+        BOOST_TEST(run(text).first == 0, text);
+        BOOST_TEST_REQUIRE(fs::exists(out), text);
+        const auto rows = nlohmann::json::parse(slurp(out));
+        BOOST_TEST(rows[0]["settings"]["bullet-margin"].get<double>() == held, text);
     }
     for (const char* bad : {"5.877471754111438e-39", "3.4028236692093846e38", "-0.125", "nan"}) {
         const auto [status, err] = run(bad);

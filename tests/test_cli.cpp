@@ -1437,6 +1437,12 @@ BOOST_AUTO_TEST_CASE(region_parts_from_obj_groups) {
                               " --i1 1,4 --i2 1,3 --seed1 0,0,0 --seed2 9/2,0,0");
         BOOST_TEST(mixed.status == 0, mixed.err);
         BOOST_TEST(mixed.out == want.out);
+        expect_error(
+            "STL mesh with the key",
+            "region " +
+                write("stl_key.json", R"({"P1": {"mesh": "band_box.stl", "parts_from_groups": true}, )" + box).string(),
+            "P1.parts_from_groups: parts from groups need an OBJ \"mesh\" ('band_box.stl': OFF, PLY and "
+            "STL files have no groups)");
     }
     expect_error(
         "OFF key with the key",
@@ -1640,6 +1646,14 @@ BOOST_AUTO_TEST_CASE(a_mesh_of_groups_read_whole_gets_a_note) {
     BOOST_TEST(au.err.find(note) == 0u, au.err);
     BOOST_TEST(au.err.find("\nscalecert: audit: ") != std::string::npos, au.err);
     // As a part of "parts" the mesh is one convex part (the same hull, so the same answer), said too.
+    // A group line with no name starts a group too (as --parts-from-groups reads it), CR line ends
+    // and all: two groups with faces, said.
+    const fs::path bare = write("bare_group.obj",
+                                "v 0 0 0\r\nv 1 0 0\r\nv 0 1 0\r\nv 0 0 1\r\nf 1 2 3\r\nf 1 2 4\r\n"
+                                "g\r\nf 1 3 4\r\nf 2 3 4\r\n");
+    const Run b = run("query 1 1 --p1 " + bare.string() + " --p2 " + box.string() + " --i1 1,4 --i2 1,3");
+    BOOST_TEST(b.status == 0, b.err);
+    BOOST_TEST(b.err.find("scalecert: note: " + bare.string() + ": 2 groups with faces") == 0u, b.err);
     touching_at_1_3(scene_of("note_parts.json", "{\"parts\": [{\"mesh\": \"" + obj + "\"}], \"seed\": [0, 0, 0]}"),
                     "scalecert: note: P1.parts[0]: " + obj + ": 2 groups with faces, read as one convex part");
 }

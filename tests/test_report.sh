@@ -53,6 +53,20 @@ for f in wrongtype.json deep.json fifo.json hugeint.json; do
   done
 done
 [ -z "$(ls -A . | grep '^\.report\.')" ] || bad "a temporary page left behind"
+# --out on a FIFO or a symbolic link is refused as every command's --out is: one line, exit 2, left as it was.
+mkfifo out_fifo.html; echo kept > link_target.html; ln -s link_target.html out_link.html
+for o in out_fifo.html out_link.html; do
+  timeout 20 $PY "$SRC/tools/report.py" audit.json --out "$o" 2> err.txt; st=$?
+  [ $st -eq 2 ] && [ "$(wc -l < err.txt)" -eq 1 ] && grep -q "exists and is not a regular file" err.txt ||
+    bad "--out $o: exit $st, $(head -c 300 err.txt)"
+done
+[ -p out_fifo.html ] && [ -L out_link.html ] && [ "$(cat link_target.html)" = kept ] || bad "--out replaced a FIFO or a link"
+# Counts that are not counts of the row's queries are refused (a bool is not a count).
+for row in '"queries": true' '"queries": 2, "false_touching": -1' '"queries": 2, "false_separated": 3'; do
+  printf '[{"scene": "a", "method": "m", %s}]' "$row" > badcount.json
+  $PY "$SRC/tools/atlas_table.py" badcount.json > /dev/null 2> err.txt; st=$?
+  [ $st -eq 2 ] && [ "$(wc -l < err.txt)" -eq 1 ] || bad "atlas_table on {$row}: exit $st"
+done
 # A scene named with a bar stays one Markdown cell in atlas_table's table: 7 cells, the bar escaped.
 printf '[{"scene": "a|b", "method": "m|n", "queries": 4, "false_separated": 1, "false_touching": 2}]' > bar.json
 row="$($PY "$SRC/tools/atlas_table.py" --by-scene bar.json | tail -1)"

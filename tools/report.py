@@ -24,6 +24,7 @@ import math
 import os
 import sys
 import shutil
+import stat
 import subprocess
 import tempfile
 from fractions import Fraction
@@ -163,6 +164,8 @@ def number(v):
 def load_rows(path):
     """The rows of scalecert audit's JSON, each field the page uses checked for its type."""
     try:
+        if not os.path.exists(path):
+            raise InputError("%s: no such file" % path)
         if not os.path.isfile(path):  # a directory or a FIFO is not an audit, nor waited on
             raise InputError("%s: not a regular file" % path)
         with open(path, encoding="utf-8") as f:
@@ -180,9 +183,10 @@ def load_rows(path):
               at + ": a row has a scene and a method, as text")
         if "queries" not in r:
             continue
-        check(isinstance(r["queries"], int) and r["queries"] >= 0, path, at + ": queries is a count")
+        count = lambda x: isinstance(x, int) and not isinstance(x, bool) and x >= 0
+        check(count(r["queries"]), path, at + ": queries is a count")
         for k in ("false_separated", "false_overlapping", "false_touching"):
-            check(isinstance(r.get(k, 0), int), path, at + ": %s is a count" % k)
+            check(count(r.get(k, 0)) and r.get(k, 0) <= r["queries"], path, at + ": %s is a count of its queries" % k)
         check(r.get("seconds_per_query") is None or number(r["seconds_per_query"]), path,
               at + ": seconds_per_query is a number")
         check(isinstance(r.get("eps", "0"), (str, int, float)), path, at + ": eps is a number")
@@ -516,6 +520,9 @@ def main():
         program = scalecert_program(a.scalecert)
         if not a.out or os.path.isdir(a.out):
             raise InputError("%r: --out names no file" % a.out)
+        if os.path.lexists(a.out) and not stat.S_ISREG(os.lstat(a.out).st_mode):
+            # as every scalecert command's --out: a device, a FIFO or a symbolic link is not replaced
+            raise InputError("%s: exists and is not a regular file (refused as an output)" % a.out)
         out_dir = os.path.dirname(os.path.abspath(a.out))
         if not os.path.isdir(out_dir):
             raise InputError("%s: no such directory for --out" % out_dir)

@@ -893,6 +893,10 @@ def test_audit_your_own_collision_test():
     # Answers that are no answer are wrong and counted; a wrong number of answers is bad input.
     none = s.audit(lambda r1, r2: [None, float("nan"), "yes"], rho1=[1.0, 1.0, 1.0], rho2=[1.0, 2.0, 3.0])
     assert none["wrong"] == none["no_answer"] == 3 and none["failures"][1]["said"] == "no answer: nan"
+    odd = s.audit(lambda r1, r2: ["\udcff"], rho1=[1.0], rho2=[1.0])  # not UTF-8: no answer, not an error
+    assert odd["no_answer"] == 1 and odd["failures"][0]["said"] == "no answer: '\\udcff'"
+    with pytest.raises(scalecert.InputError, match="^audit: rho1"):
+        s.audit(by_sum, rho1=["a"], rho2=[1.0])
     with pytest.raises(scalecert.InputError, match="returned 1 answers for 3 pairs"):
         s.audit(lambda r1, r2: ["separated"], rho1=[1.0, 1.0, 1.0], rho2=[1.0, 2.0, 3.0])
     with pytest.raises(scalecert.InputError, match="finite numbers > 0"):

@@ -386,7 +386,7 @@ std::vector<AuditRow> audit_convex(const std::string& name, const ExactScene& s,
         AuditRow r;
         r.scene = name;
         r.method = mm->name();
-        r.settings = fp::settings_of(r.method, settings, measures);
+        r.settings = fp::settings_of(meth, settings, measures);  // the option's name (command=CMD)
         r.eps = eps;
         auto t0 = Clock::now();
         for (size_t i = 0; i < r1.size(); ++i) verdicts[i] = mm->classify(r1[i], r2[i]);

@@ -183,6 +183,7 @@ std::vector<std::pair<std::string, double>> settings_of(const std::string& metho
     if (method == "libccd-gjk" && !measures) return {{"ccd-max-iterations", iterations}};
     if (method == "libccd-gjk") return {{"ccd-max-iterations", iterations}, {"ccd-epa-tolerance", s.ccd_epa_tolerance}};
     if (method == "libccd-gjk-parts") return {{"ccd-max-iterations", iterations}};
+    if (method == "libccd-mpr" && !measures) return {{"ccd-mpr-tolerance", s.ccd_mpr_tolerance}};
     if (method == "libccd-mpr") return {{"ccd-max-iterations", iterations}, {"ccd-mpr-tolerance", s.ccd_mpr_tolerance}};
     if (method.rfind("fcl-", 0) == 0 && !measures) return {{"fcl-gjk-tolerance", s.fcl_gjk_tolerance}};
     if (method.rfind("fcl-", 0) == 0)

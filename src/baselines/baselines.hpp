@@ -136,7 +136,7 @@ std::unique_ptr<Method> make_compound_method(const std::string& name, const Comp
 std::vector<std::string> compound_method_names();
 // The settings a method of that name runs with (MethodSettings, by option name): its rows record them.
 // Without `measures` (audit --no-measures, the grid) those only its distances and depths read (libccd's
-// EPA tolerance, FCL's distance tolerance) are left out.
+// EPA tolerance, MPR's iteration limit, FCL's distance tolerance) are left out.
 std::vector<std::pair<std::string, double>> settings_of(const std::string& method, const MethodSettings& s,
                                                         bool measures = true);
 // The FCL and Bullet ones, from the module (fcl_bullet.cpp): kind 0 Bullet, 1 FCL with libccd's

@@ -5,6 +5,7 @@
 #include <cerrno>
 #include <cfloat>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <string>
 
@@ -96,8 +97,9 @@ void add_golden_options(CLI::App* sub, internal::CampaignArgs& a) {
 namespace {
 // A finite number above `lo` (strictly, or at least `lo`): the methods' settings.
 // A finite double above (strict) or at least lo, read as strtod reads it (a subnormal is its
-// value, not an error); as_float: also 0 or a normal float, for what Bullet (built with float
-// btScalar, as Debian's is) holds.
+// value, not an error); as_float: also 0 or a number whose nearest float is normal, for what
+// Bullet (built with float btScalar, as Debian's is) holds, and taken as that float (so the rows
+// record the value Bullet used).
 CLI::Validator finite_number(double lo, bool strict, bool as_float = false) {
     return CLI::Validator(
         [lo, strict, as_float](std::string& v) {
@@ -108,8 +110,16 @@ CLI::Validator finite_number(double lo, bool strict, bool as_float = false) {
             if (end != v.c_str() + v.size() || !std::isfinite(x) || (strict ? !(x > lo) : !(x >= lo)))
                 return std::string("not a finite number ") + (strict ? "above " : "of at least ") +
                        (lo == 0 ? "0" : std::to_string(lo)) + ": " + v;
-            if (as_float && x != 0 && !(x >= FLT_MIN && x <= FLT_MAX))
-                return "Bullet holds it as a float, so it must be 0 or from 1.2e-38 to 3.4e38, not " + v;
+            if (as_float) {
+                const float f = static_cast<float>(x);
+                if (x != 0 && !(std::fabs(f) >= FLT_MIN && std::isfinite(f)))
+                    return "Bullet holds it as a float, so it must be 0 or have a normal float nearest it (from "
+                           "1.17549435e-38 to 3.40282347e38), not " +
+                           v;
+                char held[40];
+                std::snprintf(held, sizeof held, "%.17g", static_cast<double>(f));
+                v = held;
+            }
             return std::string();
         },
         "NUMBER");
@@ -189,7 +199,7 @@ void add_audit_options(CLI::App* sub, internal::CampaignArgs& a) {
                     "Bullet's collision margin on every shape (bullet-*; default 0, the shapes as given; Bullet's "
                     "own default is 0.04)")
         ->type_name("M")
-        ->check(finite_number(0, false, true));
+        ->transform(finite_number(0, false, true));  // transform: takes the float it holds
     sub->add_option("--fcl-gjk-tolerance", st.fcl_gjk_tolerance,
                     "FCL's CollisionRequest gjk_tolerance (fcl-*; default 1e-6, FCL's)")
         ->type_name("T")

@@ -455,21 +455,15 @@ std::vector<Vec3q> parse_mesh(const std::string& bytes, MeshFormat f, const std:
 
 namespace {
 // The 'o' and 'g' groups of an OBJ text that have faces (the faces before the first such line
-// count as one).
+// count as one), its lines read as parse_obj_groups reads them (a bare 'g' starts a group too).
 size_t obj_groups_with_faces(const std::string& text) {
     size_t groups = 0;
     bool faces = false;
-    for (size_t b = 0; b < text.size();) {
-        size_t e = text.find('\n', b);
-        if (e == std::string::npos) e = text.size();
-        size_t i = b;
-        while (i < e && (text[i] == ' ' || text[i] == '\t')) ++i;
-        if (i + 1 < e && (text[i + 1] == ' ' || text[i + 1] == '\t')) {
-            if (text[i] == 'f') faces = true;
-            if (text[i] == 'o' || text[i] == 'g') groups += faces, faces = false;
-        }
-        b = e + 1;
-    }
+    each_line(text, [&](const std::vector<std::string>& t, size_t) {
+        if (t[0] == "f") faces = true;
+        if (t[0] == "o" || t[0] == "g") groups += faces, faces = false;
+        return true;
+    });
     return groups + faces;
 }
 }  // namespace

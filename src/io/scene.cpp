@@ -183,14 +183,14 @@ ExactScene parse_scene_text(const std::string& text, const std::string& name, co
             // An OBJ "mesh" as a compound: --parts-from-groups (which leaves other meshes, having no
             // groups, one convex object each), or this object's "parts_from_groups".
             const JNode* mesh = p->find("mesh");
-            bool groups = opt.parts_from_groups && mesh && mesh->kind == JNode::String && !p->find("vertices") &&
-                          !p->find("off") && [&] {
-                              try {
-                                  return mesh_format_of(mesh->text) == MeshFormat::Obj;
-                              } catch (const InputError&) {
-                                  return false;  // an unknown format: refused when read, with its path
-                              }
-                          }();
+            const bool is_obj = mesh && mesh->kind == JNode::String && [&] {
+                try {
+                    return mesh_format_of(mesh->text) == MeshFormat::Obj;
+                } catch (const InputError&) {
+                    return false;  // an unknown format: refused when read, with its path
+                }
+            }();
+            bool groups = opt.parts_from_groups && is_obj && !p->find("vertices") && !p->find("off");
             if (const JNode* g = p->find("parts_from_groups")) {
                 const std::string w = std::string(pname[i]) + ".parts_from_groups";
                 if (g->kind != JNode::Bool) r.fail(w, "expected true or false");
@@ -200,6 +200,9 @@ ExactScene parse_scene_text(const std::string& text, const std::string& name, co
                            "the mesh is then read as one convex object)");
                 groups = g->text == "true";
                 if (groups && !p->find("mesh")) r.fail(w, "parts from groups need an OBJ \"mesh\"");
+                if (groups && mesh && mesh->kind == JNode::String && !is_obj)
+                    r.fail(w, "parts from groups need an OBJ \"mesh\" (" + in_quotes(mesh->text) +
+                                  ": OFF, PLY and STL files have no groups)");
             }
             body(*p, pname[i], groups, in);
         }
