@@ -199,11 +199,17 @@ def load_rows(path):
         fs = r.get("failures", [])
         check(isinstance(fs, list) and all(isinstance(f, dict) and number(f.get("rho1")) and number(f.get("rho2"))
                                            for f in fs), path, at + ": failures is a list of pairs rho1, rho2")
+        check(count(r.get("measures_wrong", 0)), path, at + ": measures_wrong is a count")
+        ms = r.get("measure_failures", [])
+        check(isinstance(ms, list) and all(isinstance(m, dict) and all(number(m.get(k)) for k in
+                                                                       ("rho1", "rho2", "value", "rel_error")) and
+                                           m.get("kind") in ("distance", "penetration_depth") for m in ms), path,
+              at + ": measure_failures is a list of measures (rho1, rho2, kind, value, rel_error)")
     return rows
 
 
 def page(rows, audit_dir, failures_dir, program, scripts):
-    scenes, data_rows, failures = {}, [], []
+    scenes, data_rows, failures, measures = {}, [], [], []
     for r in rows:
         if "queries" not in r:
             continue  # curve rows (the exact engine, the grid): no verdicts to chart
@@ -217,12 +223,17 @@ def page(rows, audit_dir, failures_dir, program, scripts):
         data_rows.append({
             "scene": key, "method": r["method"], "eps": str(r.get("eps", "0")), "queries": r["queries"],
             "false_separated": r.get("false_separated", 0), "false_overlapping": r.get("false_overlapping", 0),
-            "false_touching": r.get("false_touching", 0),
+            "false_touching": r.get("false_touching", 0), "measures_wrong": r.get("measures_wrong", 0),
             "seconds_per_query": r.get("seconds_per_query"), "by_distance": r.get("by_distance", [])})
         for f in r.get("failures", []):
             failures.append(dict(f, scene=key, method=r["method"]))
-    doc = {"rows": data_rows, "failures": failures, "scenes": scenes}
-    title = "scalecert audit: %d rows, %d listed failures" % (len(data_rows), len(failures))
+        for m in r.get("measure_failures", []):
+            measures.append({"scene": key, "method": r["method"], "rho1": m["rho1"], "rho2": m["rho2"],
+                             "kind": m["kind"], "value": m["value"], "rel_error": m["rel_error"],
+                             "parts": m.get("parts", "")})
+    doc = {"rows": data_rows, "failures": failures, "measures": measures, "scenes": scenes}
+    title = "scalecert audit: %d rows, %d listed failures, %d listed distances and depths off" % (
+        len(data_rows), len(failures), len(measures))
     scripts = "\n".join("<script>\n%s\n</script>" % js.replace("</script", "<\\/script") for js in scripts)
     return TEMPLATE.replace("@TITLE@", html.escape(title)).replace("@SCRIPTS@", scripts).replace(
         "@DATA@", json.dumps(doc, sort_keys=True).replace("<", "\\u003c"))
@@ -265,6 +276,11 @@ else come nearest to meeting, are drawn opaque and edged in red).</p>
 <div id="failure-list"><table id="failures"></table></div>
 <div><div id="view"></div><pre id="detail"></pre></div>
 </div>
+<div id="measures-section"><h2>Distances and depths</h2>
+<p>Where a method's distance or penetration depth was off by more than the audit's
+--measure-tolerance (relative): the worst of each row, with the pair asked, the value it gave and
+its relative error against the exact one (--failures writes them as claims that certify-fp replays).</p>
+<table id="measures"></table></div>
 <script>
 "use strict";
 const D = @DATA@;
@@ -279,11 +295,11 @@ function cell(tr, text, tag) { const c = document.createElement(tag || "td"); c.
 // The rows' table.
 const rt = document.getElementById("rows");
 let tr = rt.insertRow();
-for (const h of ["scene", "method", "eps", "queries", "wrong: said separated", "wrong: said intersecting", "wrong: said touching", "µs per query"]) cell(tr, h, "th");
+for (const h of ["scene", "method", "eps", "queries", "wrong: said separated", "wrong: said intersecting", "wrong: said touching", "distances and depths wrong", "µs per query"]) cell(tr, h, "th");
 for (const r of D.rows) {
   tr = rt.insertRow();
   for (const v of [r.scene.split("/").pop(), r.method, r.eps, r.queries, r.false_separated, r.false_overlapping,
-                   r.false_touching, r.seconds_per_query == null ? "" : (1e6 * r.seconds_per_query).toPrecision(3)]) cell(tr, v);
+                   r.false_touching, r.measures_wrong, r.seconds_per_query == null ? "" : (1e6 * r.seconds_per_query).toPrecision(3)]) cell(tr, v);
 }
 // The atlas table: rows of the atlas's families, per class and method.
 const classes = ["face-to-face", "long-edge", "scaled", "touching", "decomposition-gap"];
@@ -409,6 +425,19 @@ if (withDistance.length) {
 }
 say();
 // The failures, and the 3-D view of one.
+// The distances and depths off by more than the tolerance.
+if (D.measures.length) {
+  const mt = document.getElementById("measures");
+  tr = mt.insertRow();
+  for (const h of ["scene", "method", "rho1", "rho2", "kind", "value", "relative error", "parts"]) cell(tr, h, "th");
+  for (const m of D.measures) {
+    tr = mt.insertRow();
+    for (const v of [m.scene.split("/").pop(), m.method, m.rho1, m.rho2, m.kind, m.value, m.rel_error.toPrecision(3),
+                     Array.isArray(m.parts) ? m.parts.join(", ") : ""]) cell(tr, v);
+  }
+} else {
+  document.getElementById("measures-section").style.display = "none";
+}
 const ft = document.getElementById("failures");
 tr = ft.insertRow();
 for (const h of ["scene", "method", "rho1", "rho2", "said", "exact"]) cell(tr, h, "th");
