@@ -67,6 +67,13 @@ std::optional<double> relative_error(const Q& squared, double value) {
     return std::fabs(sqrt_minus_rn(squared, exact_from_double(value))) / root;
 }
 
+double median(std::vector<double> v) {
+    if (v.empty()) return 0;
+    std::sort(v.begin(), v.end());
+    const size_t h = v.size() / 2;
+    return v.size() % 2 ? v[h] : (v[h - 1] + v[h]) / 2;
+}
+
 double direction_excess(const Q& along, const Q& squared) {
     const double root = std::sqrt(to_double_rn(squared));
     return (sqrt_minus_rn(along, Q(0)) - root) / root;
@@ -79,13 +86,6 @@ struct ExactCache {
     explicit ExactCache(size_t n) : squared(n) {}
     std::vector<std::optional<Q>> squared;
 };
-
-double median(std::vector<double> v) {
-    if (v.empty()) return 0;
-    std::sort(v.begin(), v.end());
-    const size_t h = v.size() / 2;
-    return v.size() % 2 ? v[h] : (v[h - 1] + v[h]) / 2;
-}
 
 // The method's distances and depths where its verdict is right, against the exact ones.
 // `verdicts` are the method's own at those pairs.

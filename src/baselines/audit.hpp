@@ -59,6 +59,8 @@ fp::CompoundFp compound_fp(const CompoundJudge& judge);
 // |value − √squared| / √squared (MPFR-rounded), for a method's distance or depth against the
 // exact squared one; none when √squared is 0 or past the doubles (no relative error in them).
 std::optional<double> relative_error(const Q& squared, double value);
+// The median of v (the mean of the middle two for an even count; 0 when empty).
+double median(std::vector<double> v);
 // (√along − √squared) / √squared: how much deeper the bodies are along a method's direction than
 // their depth (`along` the squared depth along it, `squared` the exact squared depth, > 0).
 double direction_excess(const Q& along, const Q& squared);

@@ -173,24 +173,33 @@ class LibccdParts : public Method {
 };
 }  // namespace
 
-// The settings each method's calls read: libccd's GJK its iteration limit (and its EPA, the
-// depths, the EPA tolerance), its MPR the MPR tolerance and the iteration limit (its depths);
-// FCL's requests their two tolerances;
-// Bullet's shapes their margin; the user's program its time limit.
+// The settings each method's calls read, each marked by whether its verdicts read it or only its
+// distances and depths: libccd's GJK test its iteration limit, its EPA (the depths) the EPA
+// tolerance; its MPR test the MPR tolerance, its depth search the iteration limit too; FCL's
+// collide the GJK tolerance, its distance() the distance tolerance; Bullet's shapes their margin;
+// the user's program its time limit.
 std::vector<std::pair<std::string, double>> settings_of(const std::string& method, const MethodSettings& s,
                                                         bool measures) {
+    std::vector<std::pair<std::string, double>> out;
+    auto read = [&](const char* option, double value, bool by_verdicts) {
+        if (by_verdicts || measures) out.push_back({option, value});
+    };
     const double iterations = static_cast<double>(s.ccd_max_iterations);
-    if (method == "libccd-gjk" && !measures) return {{"ccd-max-iterations", iterations}};
-    if (method == "libccd-gjk") return {{"ccd-max-iterations", iterations}, {"ccd-epa-tolerance", s.ccd_epa_tolerance}};
-    if (method == "libccd-gjk-parts") return {{"ccd-max-iterations", iterations}};
-    if (method == "libccd-mpr" && !measures) return {{"ccd-mpr-tolerance", s.ccd_mpr_tolerance}};
-    if (method == "libccd-mpr") return {{"ccd-max-iterations", iterations}, {"ccd-mpr-tolerance", s.ccd_mpr_tolerance}};
-    if (method.rfind("fcl-", 0) == 0 && !measures) return {{"fcl-gjk-tolerance", s.fcl_gjk_tolerance}};
-    if (method.rfind("fcl-", 0) == 0)
-        return {{"fcl-gjk-tolerance", s.fcl_gjk_tolerance}, {"fcl-distance-tolerance", s.fcl_distance_tolerance}};
-    if (method.rfind("bullet-", 0) == 0) return {{"bullet-margin", s.bullet_margin}};
-    if (method.rfind("command=", 0) == 0) return {{"command-timeout", s.command_timeout}};
-    return {};
+    if (method == "libccd-gjk" || method == "libccd-gjk-parts") {
+        read("ccd-max-iterations", iterations, true);
+        if (method == "libccd-gjk") read("ccd-epa-tolerance", s.ccd_epa_tolerance, false);
+    } else if (method == "libccd-mpr") {
+        read("ccd-max-iterations", iterations, false);
+        read("ccd-mpr-tolerance", s.ccd_mpr_tolerance, true);
+    } else if (method.rfind("fcl-", 0) == 0) {
+        read("fcl-gjk-tolerance", s.fcl_gjk_tolerance, true);
+        read("fcl-distance-tolerance", s.fcl_distance_tolerance, false);
+    } else if (method.rfind("bullet-", 0) == 0) {
+        read("bullet-margin", s.bullet_margin, true);
+    } else if (method.rfind("command=", 0) == 0) {
+        read("command-timeout", s.command_timeout, true);
+    }
+    return out;
 }
 
 std::unique_ptr<Method> make_compound_method(const std::string& name, const CompoundFp& s) {

@@ -67,13 +67,6 @@ int exact_verdict(CompoundJudge& judge, double r1, double r2) {
         judge.verdict(exact_from_double(r1), exact_from_double(r2)).verdict);  // 0, 1, 2: Verdict's order
 }
 
-double median(std::vector<double> v) {
-    if (v.empty()) return 0;
-    std::sort(v.begin(), v.end());
-    const size_t h = v.size() / 2;
-    return v.size() % 2 ? v[h] : (v[h - 1] + v[h]) / 2;
-}
-
 }  // namespace
 
 fp::CompoundFp compound_fp(const CompoundJudge& judge) {

@@ -468,17 +468,18 @@ size_t obj_groups_with_faces(const std::string& text) {
 }
 }  // namespace
 
-std::vector<Vec3q> read_mesh(const std::string& path, const ReadOptions& opt, std::string* note) {
+std::vector<Vec3q> read_mesh(const std::string& path, const ReadOptions& opt, std::string* note, bool part) {
     const MeshFormat f = mesh_format_of(path);
     const std::string bytes = read_input(path, "mesh file", kMaxSceneBytes);
     std::vector<Vec3q> pts = parse_mesh(bytes, f, path, opt);
     if (note && f == MeshFormat::Obj)
         if (const size_t g = obj_groups_with_faces(bytes); g >= 2)
-            *note =
-                path + ": " + std::to_string(g) +
-                " groups with faces, read as one convex object (the hull of all its vertices); "
-                "--parts-from-groups (the scene key \"parts_from_groups\", from_meshes(..., parts_from_groups=true)) "
-                "reads a convex part per group";
+            *note = path + ": " + std::to_string(g) + " groups with faces, read as one convex " +
+                    (part ? "part (the hull of all its vertices); a part's mesh is one part: give each group a part "
+                            "of its own, or read the file as the object's \"mesh\" with \"parts_from_groups\""
+                          : "object (the hull of all its vertices); --parts-from-groups (the scene key "
+                            "\"parts_from_groups\", from_meshes(..., parts_from_groups=true)) reads a convex part "
+                            "per group");
     return pts;
 }
 

@@ -23,8 +23,10 @@ std::vector<Vec3q> parse_mesh(const std::string& bytes, MeshFormat f, const std:
 
 // Reads a mesh file (format by extension, at most kMaxSceneBytes).
 // With `note`: a remark for the user when an OBJ file with two or more groups with faces is read
-// as one convex object (the command says it once on stderr).
-std::vector<Vec3q> read_mesh(const std::string& path, const ReadOptions& opt = {}, std::string* note = nullptr);
+// as one convex object (the command says it once on stderr); `part`: the mesh is a part of
+// "parts", which is one convex part whatever its groups, and the remark says so.
+std::vector<Vec3q> read_mesh(const std::string& path, const ReadOptions& opt = {}, std::string* note = nullptr,
+                             bool part = false);
 
 // An OBJ file's groups as the parts of a compound (scalecert region --parts-from-groups): each
 // 'o NAME' or 'g NAME' line starts a part, whose points are the vertices its faces ('f') name,

@@ -93,8 +93,8 @@ ExactScene parse_scene_text(const std::string& text, const std::string& name, co
         // The points of one convex body: "vertices", or a mesh file ("mesh": OFF, OBJ, PLY or STL by
         // extension; "off": an OFF file whatever its name). `where` names the object or the part.
         // With `groups` (an object's, not a part's), an OBJ "mesh" is read as a compound instead,
-        // a part per group, into `into`.
-        auto body = [&](const JNode& o, const std::string& where, bool groups, PolyInput& into) {
+        // a part per group, into `into`. `part`: o is a part of "parts" (for the note on its groups).
+        auto body = [&](const JNode& o, const std::string& where, bool groups, PolyInput& into, bool part = false) {
             std::vector<Vec3q>& pts = into.points;
             const JNode* verts = o.find("vertices");
             const JNode* off = o.find("off");
@@ -123,7 +123,7 @@ ExactScene parse_scene_text(const std::string& text, const std::string& name, co
                     o2.parts_from_groups = true;
                     read_mesh_object(path, o2, into);
                 } else {
-                    pts = mesh ? read_mesh(path, opt, &into.note)
+                    pts = mesh ? read_mesh(path, opt, &into.note, part)
                                : parse_mesh(read_input(path, "OFF file", kMaxSceneBytes), MeshFormat::Off, path, opt);
                 }
             } else {
@@ -160,15 +160,9 @@ ExactScene parse_scene_text(const std::string& text, const std::string& name, co
                     in.part_names[k] = n->text;
                 }
                 PolyInput one;
-                body(part, w, false, one);
-                // A part is one convex body whatever its mesh: said once per object (the first such part).
-                if (const size_t cut = one.note.find(", read as one convex object"); cut != std::string::npos) {
-                    if (merged++ == 0)
-                        in.note = w + ": " + one.note.substr(0, cut) +
-                                  ", read as one convex part (the hull of all its vertices); a part's mesh is one "
-                                  "part: give each group a part of its own, or read the file as the object's "
-                                  "\"mesh\" with \"parts_from_groups\"";
-                }
+                body(part, w, false, one, true);
+                // Said once per object, for the first such part.
+                if (!one.note.empty() && merged++ == 0) in.note = w + ": " + one.note;
                 in.parts.push_back(std::move(one.points));
                 if (in.points.size() + in.parts.back().size() > kMaxPoints)
                     r.fail(where, "more than " + std::to_string(kMaxPoints) + " points in all (the limit)");
