@@ -1,6 +1,7 @@
 // The fast measures against the exact path: proved_distance (a double GJK's guess, proved by the
-// slab over all vertices) against CGAL's QP over all vertices, and proved_depth (the exact EPA)
-// against the minimum over every facet normal of the Minkowski sum, at random pairs and at pairs
+// slab over all vertices: by the exact GJK, and by the QP's rounds) against CGAL's QP over all
+// vertices, and proved_depth (an EPA in doubles checked exactly, and the exact EPA) against the
+// minimum over every facet normal of the Minkowski sum, at random pairs and at pairs
 // 2^-k off the touching curve (rounded to doubles, as a floating-point program would claim them).
 // Equal exact values give equal judgements: every rule of CLAIMS.md for a distance or a depth is
 // a function of the claim and the exact square. Hand-derived values on cubes and a tetrahedron
@@ -83,7 +84,7 @@ BOOST_AUTO_TEST_CASE(fast_measures_equal_the_exact_path) {
     long want = 6000;
     if (const char* e = std::getenv("SCALECERT_DIFFERENTIAL_PAIRS")) want = std::atol(e);
     std::mt19937 g(2026);
-    long pairs = 0, distances = 0, depths = 0, touching = 0, fallbacks = 0, near = 0;
+    long pairs = 0, distances = 0, depths = 0, touching = 0, fallbacks = 0, near = 0, by_qp = 0, from_doubles = 0;
     for (int t = 0; pairs < want; ++t) {
         const ExactScene sc = test::random_scene(g, 4 + t % 13, 4 + (t / 13) % 11);
         const HullModel m = build_model(sc);
@@ -106,18 +107,45 @@ BOOST_AUTO_TEST_CASE(fast_measures_equal_the_exact_path) {
             const Verdict v = query(m, c, r1, r2, false).verdict;
             const ProvedDistance pd = proved_distance(m, r1, r2);
             fallbacks += pd.fallback;
+            by_qp += pd.by_qp;
             const ExactDistance ed = exact_distance(m, r1, r2);
             BOOST_TEST(pd.d.squared == ed.squared, "distance at (" << a << ", " << b << ") in scene " << t);
+            // Its second stage alone, and the closest points each names (convex weights on the
+            // vertices they name, as the certificate states them).
+            const std::optional<ProvedDistance> qp = proved_distance_by_qp(HullPoints(m), r1, r2, 1 << 20);
+            BOOST_TEST_REQUIRE(qp.has_value());
+            BOOST_TEST(qp->d.squared == ed.squared);
+            for (const ProvedDistance* x : {&pd, &*qp}) {
+                const Vec3q u = sub(x->d.p2, x->d.p1);
+                BOOST_TEST(dot(u, u) == ed.squared);
+                for (int k = 0; k < 2; ++k) {
+                    Vec3q y{Q(0), Q(0), Q(0)};
+                    Q total(0);
+                    for (const auto& [v, w] : k ? x->d.w2 : x->d.w1) {
+                        BOOST_TEST(sgn(w) > 0);
+                        total += w;
+                        const Vec3q p = scaled_point(m, k, k ? r2 : r1, m.P[k].points[static_cast<size_t>(v)]);
+                        for (int c = 0; c < 3; ++c) y[c] += w * p[c];
+                    }
+                    BOOST_TEST(total == Q(1));
+                    BOOST_TEST((y == (k ? x->d.p2 : x->d.p1)));
+                }
+            }
             BOOST_TEST((sgn(pd.d.squared) == 0) == (v != Verdict::Separated));
             ++distances;
             const ExactDepth ee = exact_penetration_depth(m, normals, r1, r2);
             const std::optional<ProvedDepth> pe = proved_depth(m, r1, r2);
+            const std::optional<ProvedDepth> xe = exact_epa(HullPoints(m), r1, r2);
             if (v == Verdict::Overlapping) {
                 BOOST_TEST_REQUIRE(pe.has_value());
                 BOOST_TEST(pe->squared == ee.squared, "depth at (" << a << ", " << b << ") in scene " << t);
+                BOOST_TEST_REQUIRE(xe.has_value());
+                BOOST_TEST(xe->squared == ee.squared);
+                from_doubles += pe->from_doubles;
                 ++depths;
             } else {
                 BOOST_TEST(!pe.has_value());
+                BOOST_TEST(!xe.has_value());
                 BOOST_TEST((v == Verdict::Touching ? ee.squared == 0 : sgn(ee.squared) < 0));
                 touching += v == Verdict::Touching;
             }
@@ -133,9 +161,13 @@ BOOST_AUTO_TEST_CASE(fast_measures_equal_the_exact_path) {
         }
     }
     std::cout << "differential: " << pairs << " pairs (" << near << " within 2^-k of the curve), " << distances
-              << " distances (" << fallbacks << " exact fallbacks), " << depths << " depths of overlapping pairs, "
-              << touching << " touching\n";
+              << " distances (" << by_qp << " by the QP's rounds, " << fallbacks << " exact fallbacks), " << depths
+              << " depths of overlapping pairs (" << from_doubles << " from the doubles' surface), " << touching
+              << " touching\n";
     BOOST_TEST(depths > pairs / 10);
+    // Both first stages carry most of the load (each second stage is checked on every pair above).
+    BOOST_TEST(by_qp < distances / 10);
+    BOOST_TEST(from_doubles > depths / 2);
 }
 
 BOOST_AUTO_TEST_CASE(cloud_points_equal_the_hull) {

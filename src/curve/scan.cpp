@@ -234,10 +234,13 @@ class Cloud {
     int dbest(const double* d) const {
         double best = -INFINITY;
         std::uint32_t at = 0;
-        std::vector<std::pair<double, std::uint32_t>> stack{{ub(nodes_[0], d), 0}};
-        while (!stack.empty()) {
-            auto [u, id] = stack.back();
-            stack.pop_back();
+        // A depth-first walk keeps at most one entry per level and one more: the tree is balanced,
+        // so its depth is below 64 for any count of points that fits 32 bits.
+        std::pair<double, std::uint32_t> stack[66];
+        size_t top = 0;
+        stack[top++] = {ub(nodes_[0], d), 0};
+        while (top > 0) {
+            auto [u, id] = stack[--top];
             if (u <= best) continue;
             const Node& nd = nodes_[id];
             if (nd.left < 0) {
@@ -249,11 +252,11 @@ class Cloud {
             } else {
                 const double ul = ub(nodes_[nd.left], d), ur = ub(nodes_[nd.right], d);
                 if (ul < ur) {
-                    stack.push_back({ul, static_cast<std::uint32_t>(nd.left)});
-                    stack.push_back({ur, static_cast<std::uint32_t>(nd.right)});
+                    stack[top++] = {ul, static_cast<std::uint32_t>(nd.left)};
+                    stack[top++] = {ur, static_cast<std::uint32_t>(nd.right)};
                 } else {
-                    stack.push_back({ur, static_cast<std::uint32_t>(nd.right)});
-                    stack.push_back({ul, static_cast<std::uint32_t>(nd.left)});
+                    stack[top++] = {ur, static_cast<std::uint32_t>(nd.right)};
+                    stack[top++] = {ul, static_cast<std::uint32_t>(nd.left)};
                 }
             }
         }
@@ -714,6 +717,10 @@ D3 CloudPoints::dpoint(int i, int k) const {
 }
 const Vec3q& CloudPoints::seed(int i) const { return sc_->seed[i]; }
 const Z& CloudPoints::scale(int i) const { return sc_->P[i].scale; }
+Vec3z CloudPoints::zpoint(int i, int k) const {
+    const std::int64_t* x = sc_->P[i].at(static_cast<size_t>(k));
+    return {Z(static_cast<long>(x[0])), Z(static_cast<long>(x[1])), Z(static_cast<long>(x[2]))};
+}
 int CloudPoints::argmax(int i, const Vec3z& n) const {
     Walked<Support> s = t_->c[i]->support(n);
     if (!std::holds_alternative<WalkStop>(s)) return std::get<Support>(s).all.front();

@@ -89,6 +89,7 @@ class CloudPoints final : public PointSets {
     D3 dpoint(int i, int k) const override;
     const Vec3q& seed(int i) const override;
     const Z& scale(int i) const override;
+    Vec3z zpoint(int i, int k) const override;
     int argmax(int i, const Vec3z& n) const override;
     int dargmax(int i, const D3& d) const override;
     std::uint64_t support_queries() const;  // exact support queries so far

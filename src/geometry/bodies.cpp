@@ -46,6 +46,17 @@ PosedPoints::PosedPoints(const PointSets& base, const std::array<std::optional<P
     }
 }
 
+Vec3z PointSets::zpoint(int i, int k) const {
+    const Vec3q x = point(i, k);
+    Vec3z z;
+    for (int c = 0; c < 3; ++c) {
+        const Q q = x[c] * scale(i);
+        if (q.get_den() != 1) throw std::logic_error("a point off its set's scale");
+        z[c] = q.get_num();
+    }
+    return z;
+}
+
 Vec3q PosedPoints::point(int i, int k) const {
     Vec3q p = base_.point(i, k);
     if (!pose_[i]) return p;

@@ -116,8 +116,16 @@ std::vector<std::pair<int, Q>> convex_weights(const std::vector<Vec3q>& pts, con
 }  // namespace
 
 std::optional<ProvedDistance> proved_distance(const PointSets& S, const Q& rho1, const Q& rho2, int max_rounds) {
-    ProvedDistance r;
     const GjkGuess g = gjk_guess(S, to_double_rn(rho1), to_double_rn(rho2));
+    if (std::optional<ProvedDistance> e = exact_gjk(S, rho1, rho2, g.simplex, kExactGjkRounds)) return e;
+    return proved_distance_by_qp(S, rho1, rho2, max_rounds);
+}
+
+std::optional<ProvedDistance> proved_distance_by_qp(const PointSets& S, const Q& rho1, const Q& rho2, int max_rounds) {
+    // The closest points of the vertices the double GJK names, then the slab.
+    const GjkGuess g = gjk_guess(S, to_double_rn(rho1), to_double_rn(rho2));
+    ProvedDistance r;
+    r.by_qp = true;
     std::vector<int> idx[2] = {g.v1, g.v2};
     const Q* rho[2] = {&rho1, &rho2};
     for (r.rounds = 1; r.rounds <= max_rounds; ++r.rounds) {

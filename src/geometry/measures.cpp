@@ -1,10 +1,15 @@
 #include "geometry/measures.hpp"
+#include "geometry/difference.hpp"
 #include "geometry/gjk.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <map>
 #include <stdexcept>
+#include <unordered_map>
 
+#include <CGAL/FPU.h>
+#include <CGAL/Interval_nt.h>
 #include <mpfr.h>
 
 namespace scalecert::internal {
@@ -64,6 +69,40 @@ ExactDepth exact_penetration_depth(const Bodies& m, const std::vector<Vec3z>& no
 }
 
 namespace {
+Z integral(const Q& q, const char* what) {
+    if (q.get_den() != 1) throw std::logic_error(what);
+    return q.get_num();
+}
+}  // namespace
+
+DifferenceGrid::DifferenceGrid(const PointSets& S, const Q& rho1, const Q& rho2) : S_(S), rho_{rho1, rho2} {
+    Z d[2];
+    for (int i = 0; i < 2; ++i) {
+        Z l = S.scale(i);
+        for (const Q& c : S.seed(i)) mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), c.get_den_mpz_t());
+        d[i] = l * rho_[i].get_den();
+    }
+    mpz_lcm(D_.get_mpz_t(), d[0].get_mpz_t(), d[1].get_mpz_t());
+    for (int i = 0; i < 2; ++i) {
+        const Q f = Q(D_) * (1 - rho_[i]);
+        for (int c = 0; c < 3; ++c)
+            shift_[i][c] = integral(f * S.seed(i)[c], "difference grid: D(1 - rho)s not integral");
+        factor_[i] = integral(Q(D_) * rho_[i] / S.scale(i), "difference grid: D rho / scale not integral");
+    }
+}
+
+Vec3z DifferenceGrid::body(int i, int k) const {
+    const Vec3z x = S_.zpoint(i, k);
+    return {Z(shift_[i][0] + factor_[i] * x[0]), Z(shift_[i][1] + factor_[i] * x[1]),
+            Z(shift_[i][2] + factor_[i] * x[2])};
+}
+
+Vec3q DifferenceGrid::scaled(int i, int k) const {
+    const Vec3q x = S_.point(i, k), &s = S_.seed(i);
+    return {s[0] + rho_[i] * (x[0] - s[0]), s[1] + rho_[i] * (x[1] - s[1]), s[2] + rho_[i] * (x[2] - s[2])};
+}
+
+namespace {
 // A support point of M = P1(ρ1) − P2(ρ2) in the integer direction n: vertex i of P1 maximising
 // n·v, vertex j of P2 minimising n·w (the smallest index of each), and i(ρ1) − j(ρ2) times the
 // run's common denominator D (an integer point).
@@ -78,8 +117,7 @@ struct MPoint {
 // point over one denominator D = lcm(den ρ1 · lcm(scale1, den s1), den ρ2 · lcm(scale2, den s2)).
 struct Epa {
     const PointSets& S;
-    Q r1, r2;
-    Z D;
+    DifferenceGrid grid;
     std::vector<MPoint> pts;
     struct Tri {
         std::array<int, 3> v;
@@ -91,33 +129,11 @@ struct Epa {
     std::vector<Tri> tris;
     std::map<std::pair<int, int>, size_t> edge;  // directed edge -> its live triangle
 
-    Epa(const PointSets& sets, const Q& rho1, const Q& rho2) : S(sets), r1(rho1), r2(rho2) {
-        Z d[2];
-        const Q* r[2] = {&r1, &r2};
-        for (int i = 0; i < 2; ++i) {
-            Z l = S.scale(i);
-            for (const Q& c : S.seed(i)) mpz_lcm(l.get_mpz_t(), l.get_mpz_t(), c.get_den_mpz_t());
-            d[i] = l * r[i]->get_den();
-        }
-        mpz_lcm(D.get_mpz_t(), d[0].get_mpz_t(), d[1].get_mpz_t());
-    }
-    Vec3z integral(const Vec3q& x) const {
-        Vec3z z;
-        for (int c = 0; c < 3; ++c) {
-            const Q q = x[c] * D;
-            if (q.get_den() != 1) throw std::logic_error("EPA: a point off the common denominator");
-            z[c] = q.get_num();
-        }
-        return z;
-    }
-    Vec3q scaled(int i, const Q& rho, int k) const {
-        const Vec3q x = S.point(i, k), &s = S.seed(i);
-        return {s[0] + rho * (x[0] - s[0]), s[1] + rho * (x[1] - s[1]), s[2] + rho * (x[2] - s[2])};
-    }
+    Epa(const PointSets& sets, const Q& rho1, const Q& rho2) : S(sets), grid(sets, rho1, rho2) {}
     MPoint support_M(const Vec3z& n) const {
         const int i = S.argmax(0, n);
         const int j = S.argmax(1, Vec3z{-n[0], -n[1], -n[2]});
-        return {i, j, integral(sub(scaled(0, r1, i), scaled(1, r2, j)))};
+        return {i, j, grid.point(i, j)};
     }
     // a nearer the origin than b (signed: a plane with the origin beyond it is nearer than any)
     static bool nearer(const Tri& a, const Tri& b) {
@@ -259,6 +275,201 @@ struct Epa {
 }  // namespace
 
 namespace {
+// The EPA in doubles, from the double GJK's tetrahedron around the origin: a guess of the final
+// surface (its points as vertex pairs, its triangles outward), checked exactly by
+// checked_surface. None when the doubles degenerate.
+struct GuessedSurface {
+    std::vector<std::pair<int, int>> points;
+    std::vector<std::array<int, 3>> triangles;
+};
+std::optional<GuessedSurface> double_epa(const PointSets& S, double rho1, double rho2,
+                                         const std::vector<std::pair<int, int>>& tetrahedron) {
+    if (tetrahedron.size() != 4) return std::nullopt;
+    const double rho[2] = {rho1, rho2};
+    D3 seed[2];
+    for (int i = 0; i < 2; ++i)
+        for (int c = 0; c < 3; ++c) seed[i][c] = to_double_rn(S.seed(i)[c]);
+    auto scaled = [&](int i, int k) {
+        const D3 x = S.dpoint(i, k);
+        return D3{seed[i][0] + rho[i] * (x[0] - seed[i][0]), seed[i][1] + rho[i] * (x[1] - seed[i][1]),
+                  seed[i][2] + rho[i] * (x[2] - seed[i][2])};
+    };
+    GuessedSurface out;
+    std::vector<D3> z;
+    double size = 0;  // the largest coordinate seen, for the tolerances
+    auto add_point = [&](int i, int j) {
+        out.points.push_back({i, j});
+        z.push_back(subd(scaled(0, i), scaled(1, j)));
+        for (double c : z.back()) size = std::max(size, std::fabs(c));
+        return static_cast<int>(z.size()) - 1;
+    };
+    struct Tri {
+        std::array<int, 3> v;
+        D3 n;        // unit outward normal
+        double off;  // n·a: the plane's distance from the origin
+        bool alive = true;
+    };
+    std::vector<Tri> tris;
+    std::unordered_map<std::uint64_t, size_t> edge;  // directed edge (a, b) as a·2^32 + b -> its triangle
+    edge.reserve(512);
+    auto key = [](int a, int b) { return static_cast<std::uint64_t>(a) << 32 | static_cast<std::uint32_t>(b); };
+    auto add_tri = [&](int a, int b, int c) {
+        const D3 N = crossd(subd(z[static_cast<size_t>(b)], z[static_cast<size_t>(a)]),
+                            subd(z[static_cast<size_t>(c)], z[static_cast<size_t>(a)]));
+        const double l = normd(N);
+        if (!(l > 0) || !std::isfinite(l)) return false;
+        const D3 n{N[0] / l, N[1] / l, N[2] / l};
+        const size_t k = tris.size();
+        tris.push_back({{a, b, c}, n, dotd(n, z[static_cast<size_t>(a)])});
+        for (auto e : {key(a, b), key(b, c), key(c, a)})
+            if (!edge.emplace(e, k).second) return false;
+        return true;
+    };
+    for (const auto& [i, j] : tetrahedron) add_point(i, j);
+    const int f[4][4] = {{0, 1, 2, 3}, {0, 3, 1, 2}, {0, 2, 3, 1}, {1, 3, 2, 0}};
+    for (const auto& q : f) {
+        const D3 N = crossd(subd(z[static_cast<size_t>(q[1])], z[static_cast<size_t>(q[0])]),
+                            subd(z[static_cast<size_t>(q[2])], z[static_cast<size_t>(q[0])]));
+        const bool flip = dotd(N, subd(z[static_cast<size_t>(q[3])], z[static_cast<size_t>(q[0])])) > 0;
+        if (!(flip ? add_tri(q[0], q[2], q[1]) : add_tri(q[0], q[1], q[2]))) return std::nullopt;
+    }
+    for (int it = 0; it < 200; ++it) {
+        size_t best = tris.size();
+        for (size_t t = 0; t < tris.size(); ++t)
+            if (tris[t].alive && (best == tris.size() || tris[t].off < tris[best].off)) best = t;
+        if (best == tris.size()) return std::nullopt;
+        const D3& n = tris[best].n;
+        const int i = S.dargmax(0, n), j = S.dargmax(1, negd(n));
+        const D3 p = subd(scaled(0, i), scaled(1, j));
+        // No support point beyond the plane by more than rounding: the guess is made.
+        if (dotd(n, p) - tris[best].off <= 1e-13 * size) break;
+        for (const auto& q : out.points)
+            if (q.first == i && q.second == j) return std::nullopt;  // no progress in doubles
+        const int k = add_point(i, j);
+        std::vector<size_t> seen{best};
+        tris[best].alive = false;
+        for (size_t q = 0; q < seen.size(); ++q)
+            for (int e = 0; e < 3; ++e) {
+                const Tri& t = tris[seen[q]];
+                const auto other = edge.find(key(t.v[static_cast<size_t>((e + 1) % 3)], t.v[static_cast<size_t>(e)]));
+                if (other == edge.end()) return std::nullopt;
+                Tri& u = tris[other->second];
+                if (u.alive && dotd(u.n, z.back()) > u.off) {
+                    u.alive = false;
+                    seen.push_back(other->second);
+                }
+            }
+        std::vector<std::pair<int, int>> horizon;
+        for (size_t t : seen)
+            for (int e = 0; e < 3; ++e) {
+                const int a = tris[t].v[static_cast<size_t>(e)], b = tris[t].v[static_cast<size_t>((e + 1) % 3)];
+                if (tris[edge.at(key(b, a))].alive) horizon.push_back({a, b});
+            }
+        for (size_t t : seen)
+            for (int e = 0; e < 3; ++e) {
+                const auto it2 =
+                    edge.find(key(tris[t].v[static_cast<size_t>(e)], tris[t].v[static_cast<size_t>((e + 1) % 3)]));
+                if (it2 != edge.end() && it2->second == t) edge.erase(it2);
+            }
+        for (const auto& [a, b] : horizon)
+            if (!add_tri(a, b, k)) return std::nullopt;
+    }
+    for (const Tri& t : tris)
+        if (t.alive) out.triangles.push_back(t.v);
+    return out;
+}
+
+// An enclosure of the integer z: mpz_get_d truncates towards zero. False when z is beyond the
+// doubles.
+bool enclose(const Z& z, CGAL::Interval_nt<false>& out) {
+    const double d = z.get_d();
+    if (!std::isfinite(d) || !std::isfinite(std::nextafter(d, sgn(z) > 0 ? INFINITY : -INFINITY))) return false;
+    out = sgn(z) == 0  ? CGAL::Interval_nt<false>(0)
+          : sgn(z) > 0 ? CGAL::Interval_nt<false>(d, std::nextafter(d, INFINITY))
+                       : CGAL::Interval_nt<false>(std::nextafter(d, -INFINITY), d);
+    return true;
+}
+
+// The guessed surface as a proof, checked exactly on the difference grid, or none: a closed
+// oriented surface (every directed edge once, its reverse once) whose every triangle has the
+// origin strictly on its inner side, and whose nearest plane supports M (FORMAT.md, "A depth
+// proof": these make its distance the depth). Each triangle's plane is first enclosed in
+// intervals (predicates.hpp, 10): a triangle whose offset is surely positive and whose squared
+// distance surely exceeds the nearest one's needs no integers.
+std::optional<ProvedDepth> checked_surface(const PointSets& S, const Q& rho1, const Q& rho2, const GuessedSurface& g) {
+    using I = CGAL::Interval_nt<false>;
+    if (g.triangles.empty()) return std::nullopt;
+    const DifferenceGrid grid(S, rho1, rho2);
+    std::vector<std::pair<int, int>> edges;
+    for (const auto& t : g.triangles)
+        for (int e = 0; e < 3; ++e) edges.push_back({t[static_cast<size_t>(e)], t[static_cast<size_t>((e + 1) % 3)]});
+    std::sort(edges.begin(), edges.end());
+    for (size_t k = 0; k < edges.size(); ++k) {
+        if (k > 0 && edges[k] == edges[k - 1]) return std::nullopt;
+        if (!std::binary_search(edges.begin(), edges.end(), std::pair{edges[k].second, edges[k].first}))
+            return std::nullopt;
+    }
+    std::vector<Vec3z> z;
+    std::vector<std::array<I, 3>> zi;
+    bool finite = true;  // else every triangle is checked in integers
+    for (const auto& [i, j] : g.points) {
+        z.push_back(grid.point(i, j));
+        zi.emplace_back();
+        for (int c = 0; c < 3; ++c) finite = finite && enclose(z.back()[c], zi.back()[c]);
+    }
+    // Each triangle's offset N·a and squared distance (N·a)² / N·N, enclosed.
+    const size_t T = g.triangles.size();
+    std::vector<I> off(T), dist(T);
+    if (finite) {
+        CGAL::Protect_FPU_rounding<true> upward;
+        for (size_t t = 0; t < T; ++t) {
+            const auto &A = zi[static_cast<size_t>(g.triangles[t][0])], &B = zi[static_cast<size_t>(g.triangles[t][1])],
+                       &C = zi[static_cast<size_t>(g.triangles[t][2])];
+            const I e[3] = {B[0] - A[0], B[1] - A[1], B[2] - A[2]}, f[3] = {C[0] - A[0], C[1] - A[1], C[2] - A[2]};
+            const I N[3] = {e[1] * f[2] - e[2] * f[1], e[2] * f[0] - e[0] * f[2], e[0] * f[1] - e[1] * f[0]};
+            off[t] = N[0] * A[0] + N[1] * A[1] + N[2] * A[2];
+            dist[t] = CGAL::square(off[t]) / (CGAL::square(N[0]) + CGAL::square(N[1]) + CGAL::square(N[2]));
+        }
+    }
+    struct Plane {
+        Vec3z N;
+        Z off, NN;
+    };
+    auto exact = [&](size_t t) {
+        const Vec3z& A = z[static_cast<size_t>(g.triangles[t][0])];
+        Plane p;
+        p.N =
+            cross(sub(z[static_cast<size_t>(g.triangles[t][1])], A), sub(z[static_cast<size_t>(g.triangles[t][2])], A));
+        p.off = dotz(p.N, A);
+        p.NN = dotz(p.N, p.N);
+        return p;
+    };
+    // The nearest by the enclosures, exactly; then every other plane at least as far.
+    size_t best = 0;
+    for (size_t t = 1; t < T && finite; ++t)
+        if (dist[t].inf() < dist[best].inf()) best = t;
+    Plane bp = exact(best);
+    if (sgn(bp.off) <= 0) return std::nullopt;
+    for (size_t t = 0; t < T; ++t) {
+        if (t == best) continue;
+        if (finite && off[t].inf() > 0 && dist[t].inf() >= dist[best].sup()) continue;
+        Plane p = exact(t);
+        if (sgn(p.off) <= 0) return std::nullopt;
+        if (p.off * p.off * bp.NN < bp.off * bp.off * p.NN) best = t, bp = std::move(p);  // nearer still
+    }
+    const Vec3z n = primitive(bp.N);
+    if (dotz(bp.N, grid.point(S.argmax(0, n), S.argmax(1, neg(n)))) > bp.off) return std::nullopt;
+    ProvedDepth d;
+    d.squared = Q(bp.off * bp.off, bp.NN * grid.D() * grid.D());
+    d.squared.canonicalize();
+    d.direction = n;
+    d.points = g.points;
+    d.triangles = g.triangles;
+    d.iterations = static_cast<int>(g.points.size()) - 4;
+    d.from_doubles = true;
+    return d;
+}
+
 // The EPA's result: its nearest triangle's plane, and the proof when it lies strictly beyond the
 // origin.
 std::optional<ProvedDepth> epa_depth(const PointSets& S, const Q& rho1, const Q& rho2, Vec3z* supporting = nullptr,
@@ -271,7 +482,7 @@ std::optional<ProvedDepth> epa_depth(const PointSets& S, const Q& rho1, const Q&
     if (sgn(t.off) <= 0) return std::nullopt;  // the origin is not strictly inside M
     ProvedDepth d;
     // off and N are D³ and D² times the true ones: the squared distance off²/|N|² over D².
-    d.squared = Q(t.off * t.off, t.NN * epa.D * epa.D);
+    d.squared = Q(t.off * t.off, t.NN * epa.grid.D() * epa.grid.D());
     d.squared.canonicalize();
     d.direction = primitive(t.N);
     for (const MPoint& p : epa.pts) d.points.push_back({p.i, p.j});
@@ -282,7 +493,23 @@ std::optional<ProvedDepth> epa_depth(const PointSets& S, const Q& rho1, const Q&
 }
 }  // namespace
 
+namespace {
+// The doubles' surface from the GJK's tetrahedron, checked exactly; none when the guess is not
+// a proof (the exact EPA decides then).
+std::optional<ProvedDepth> guessed_depth(const PointSets& S, const Q& rho1, const Q& rho2, const GjkGuess& g) {
+    if (g.distance > 0) return std::nullopt;
+    const std::optional<GuessedSurface> s = double_epa(S, to_double_rn(rho1), to_double_rn(rho2), g.simplex);
+    return s ? checked_surface(S, rho1, rho2, *s) : std::nullopt;
+}
+}  // namespace
+
 std::optional<ProvedDepth> proved_depth(const PointSets& S, const Q& rho1, const Q& rho2) {
+    if (std::optional<ProvedDepth> d =
+            guessed_depth(S, rho1, rho2, gjk_guess(S, to_double_rn(rho1), to_double_rn(rho2))))
+        return d;
+    return epa_depth(S, rho1, rho2);
+}
+std::optional<ProvedDepth> exact_epa(const PointSets& S, const Q& rho1, const Q& rho2) {
     return epa_depth(S, rho1, rho2);
 }
 std::optional<ProvedDepth> proved_depth(const Bodies& m, const Q& rho1, const Q& rho2) {
@@ -292,7 +519,8 @@ std::optional<ProvedDepth> proved_depth(const Bodies& m, const Q& rho1, const Q&
 std::optional<MeasuredDepth> measured_depth(const PointSets& S, const Q& rho1, const Q& rho2, int max_rounds) {
     // Apart by the doubles' guess: the proved distance decides (its slab separates, or it finds
     // them meeting after all).
-    if (gjk_guess(S, to_double_rn(rho1), to_double_rn(rho2)).distance > 0) {
+    const GjkGuess g = gjk_guess(S, to_double_rn(rho1), to_double_rn(rho2));
+    if (g.distance > 0) {
         const std::optional<ProvedDistance> pd = proved_distance(S, rho1, rho2, max_rounds);
         if (!pd) return std::nullopt;
         return depth_from_distance(S, pd->d, rho1, rho2);
@@ -301,6 +529,11 @@ std::optional<MeasuredDepth> measured_depth(const PointSets& S, const Q& rho1, c
     // the depth; with the origin strictly beyond it, it separates; through the origin, touching,
     // and the proved distance (0) names a common point.
     MeasuredDepth r;
+    if ((r.depth = guessed_depth(S, rho1, rho2, g))) {
+        r.state = MeasuredDepth::Overlapping;
+        r.normal = r.depth->direction;
+        return r;
+    }
     Vec3z supporting;
     Q off;
     r.depth = epa_depth(S, rho1, rho2, &supporting, &off);

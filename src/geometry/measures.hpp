@@ -35,15 +35,28 @@ ExactDistance exact_distance(const Bodies& m, const Q& rho1, const Q& rho2);
 struct ProvedDistance {
     ExactDistance d;
     bool fallback = false;
+    bool by_qp = false;  // proved by the QP's rounds, exact_gjk's having run out
     int rounds = 0;
 };
 ProvedDistance proved_distance(const Bodies& m, const Q& rho1, const Q& rho2);
 constexpr int kProvedDistanceRounds = 24;
 // The same on any point set (a hull's vertices, or a cloud's points with no hull): none when
 // max_rounds rounds run out (the caller then asks the hull model's exact_distance). Each round
-// adds a point, so with max_rounds past the points' count it always closes.
+// adds a point, so with max_rounds past the points' count it always closes. It tries exact_gjk
+// first, then the QP rounds.
 std::optional<ProvedDistance> proved_distance(const PointSets& S, const Q& rho1, const Q& rho2,
                                               int max_rounds = kProvedDistanceRounds);
+// GJK in integers (exact_gjk.cpp) from a simplex of M = P1(ρ1) − P2(ρ2) given as vertex pairs
+// (the double GJK's final one, 1 to 4 pairs): each round finds the point of the simplex nearest
+// the origin exactly (every face's projection, Cramer's rule) and proves it nearest in M by the
+// slab, or adds M's support point beyond it. Each round brings the point strictly nearer, so it
+// closes; none after max_rounds rounds.
+std::optional<ProvedDistance> exact_gjk(const PointSets& S, const Q& rho1, const Q& rho2,
+                                        const std::vector<std::pair<int, int>>& start, int max_rounds);
+constexpr int kExactGjkRounds = 32;
+// proved_distance's second stage alone: CGAL's QP on the double GJK's vertices, then the slab.
+std::optional<ProvedDistance> proved_distance_by_qp(const PointSets& S, const Q& rho1, const Q& rho2,
+                                                    int max_rounds = kProvedDistanceRounds);
 
 // The squared penetration depth of overlapping P1(ρ1), P2(ρ2): the squared distance from the
 // origin to the boundary of P1(ρ1) ⊕ (−P2(ρ2)), attained at a facet of that sum, whose outward
@@ -67,9 +80,15 @@ struct ProvedDepth {
     std::vector<std::pair<int, int>> points;
     std::vector<std::array<int, 3>> triangles;
     int iterations = 0;
+    bool from_doubles = false;  // the surface of an EPA in doubles, checked exactly (below)
 };
+// First an EPA in doubles from the double GJK's tetrahedron around the origin, whose final surface
+// is then checked exactly as the checker does (a closed oriented surface of points of M, the
+// origin strictly inside every triangle's plane, the nearest plane supporting M); when it is not
+// a proof, the exact EPA (exact_epa) decides.
 std::optional<ProvedDepth> proved_depth(const Bodies& m, const Q& rho1, const Q& rho2);
 std::optional<ProvedDepth> proved_depth(const PointSets& S, const Q& rho1, const Q& rho2);
+std::optional<ProvedDepth> exact_epa(const PointSets& S, const Q& rho1, const Q& rho2);
 
 // The depth at (ρ1, ρ2) and what proves it, from support queries alone (any point set, no curve):
 // the proved distance first — apart, its slab's direction u = q − p separates (h_M(u) = −|u|² < 0);

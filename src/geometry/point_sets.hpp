@@ -19,6 +19,8 @@ class PointSets {
     virtual const Vec3q& seed(int i) const = 0;
     // A positive integer whose product with every point of polyhedron i is integral.
     virtual const Z& scale(int i) const = 0;
+    // scale(i) times point k of polyhedron i: integers.
+    virtual Vec3z zpoint(int i, int k) const;
     // The smallest index of a point of polyhedron i maximising n·x, exactly.
     virtual int argmax(int i, const Vec3z& n) const = 0;
     // A point nearly maximising d·x: a guess for GJK, never a decision.
@@ -39,6 +41,7 @@ class HullPoints final : public PointSets {
     }
     const Vec3q& seed(int i) const override { return *s_[i]; }
     const Z& scale(int i) const override { return P_[i]->scale; }
+    Vec3z zpoint(int i, int k) const override { return P_[i]->ipts[static_cast<size_t>(k)]; }
     int argmax(int i, const Vec3z& n) const override { return P_[i]->argmax(n).front(); }
     int dargmax(int i, const D3& d) const override {
         const Polyhedron& P = *P_[i];

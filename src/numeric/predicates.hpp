@@ -26,6 +26,11 @@
 //   7. ScanSupportFilter       which points may maximise n·x          (scan.cpp)
 //   8. half_plane_side_filter  a scaling pair against a part pair's half-plane (compound/region.cpp, locate.cpp)
 //   9. scaled_enclosure        a scaled coordinate s + ρ(x − s) enclosed in doubles (certify/compound_judge.cpp)
+//  10. a depth surface's planes: each triangle's offset N·a and squared distance (N·a)²/N·N in
+//      CGAL's Interval_nt under upward rounding (geometry/measures.cpp, checked_surface). An
+//      enclosure by construction, so no bound is stated here: integers start from their
+//      truncated doubles widened by one ulp, and the interval decides a sign or an order only
+//      when it excludes the other.
 //
 // Notation: u = 2^-53 (the unit roundoff of double), γ_n = n·u / (1 − n·u) (Higham): a sum of n
 // rounded products, or a product of n rounded factors, is within γ_n of the exact value
