@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cstdint>
-#include <map>
 #include <stdexcept>
 #include <unordered_map>
 
@@ -103,6 +102,63 @@ Vec3q DifferenceGrid::scaled(int i, int k) const {
 }
 
 namespace {
+// The directed edges of a closed triangulated surface (both EPAs' polytope): edge (a, b) -> the
+// live triangle that holds it.
+struct EdgeIndex {
+    std::unordered_map<std::uint64_t, size_t> at;
+    static std::uint64_t key(int a, int b) {
+        return static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32 | static_cast<std::uint32_t>(b);
+    }
+    // Triangle t's three edges; false when one is held already (the surface would not be a surface).
+    bool add(const std::array<int, 3>& v, size_t t) {
+        bool fresh = true;
+        for (int e = 0; e < 3; ++e)
+            fresh =
+                at.insert_or_assign(key(v[static_cast<size_t>(e)], v[static_cast<size_t>((e + 1) % 3)]), t).second &&
+                fresh;
+        return fresh;
+    }
+    const size_t* find(int a, int b) const {
+        const auto it = at.find(key(a, b));
+        return it == at.end() ? nullptr : &it->second;
+    }
+};
+
+// One step of an EPA: the live triangles that `sees` marks, grown from `best` across edges (a
+// connected patch, as the polytope is convex), die; their edges leave the index; and the hole's
+// boundary is returned (the horizon, each edge as its dead triangle had it, to be fanned to the
+// new point). None when an edge lacks its reverse (no closed surface).
+template <class Tri, class Sees>
+std::optional<std::vector<std::pair<int, int>>> carve(std::vector<Tri>& tris, EdgeIndex& edges, size_t best,
+                                                      Sees sees) {
+    std::vector<size_t> seen{best};
+    tris[best].alive = false;
+    for (size_t q = 0; q < seen.size(); ++q)
+        for (int e = 0; e < 3; ++e) {
+            const std::array<int, 3>& v = tris[seen[q]].v;
+            const size_t* other = edges.find(v[static_cast<size_t>((e + 1) % 3)], v[static_cast<size_t>(e)]);
+            if (!other) return std::nullopt;
+            Tri& u = tris[*other];
+            if (u.alive && sees(u)) {
+                u.alive = false;
+                seen.push_back(*other);
+            }
+        }
+    std::vector<std::pair<int, int>> horizon;
+    for (size_t t : seen)
+        for (int e = 0; e < 3; ++e) {
+            const int a = tris[t].v[static_cast<size_t>(e)], b = tris[t].v[static_cast<size_t>((e + 1) % 3)];
+            if (tris[*edges.find(b, a)].alive) horizon.push_back({a, b});
+        }
+    for (size_t t : seen)
+        for (int e = 0; e < 3; ++e) {
+            const auto it = edges.at.find(
+                EdgeIndex::key(tris[t].v[static_cast<size_t>(e)], tris[t].v[static_cast<size_t>((e + 1) % 3)]));
+            if (it != edges.at.end() && it->second == t) edges.at.erase(it);
+        }
+    return horizon;
+}
+
 // A support point of M = P1(ρ1) − P2(ρ2) in the integer direction n: vertex i of P1 maximising
 // n·v, vertex j of P2 minimising n·w (the smallest index of each), and i(ρ1) − j(ρ2) times the
 // run's common denominator D (an integer point).
@@ -127,7 +183,7 @@ struct Epa {
         bool alive = true;
     };
     std::vector<Tri> tris;
-    std::map<std::pair<int, int>, size_t> edge;  // directed edge -> its live triangle
+    EdgeIndex edges;
 
     Epa(const PointSets& sets, const Q& rho1, const Q& rho2) : S(sets), grid(sets, rho1, rho2) {}
     MPoint support_M(const Vec3z& n) const {
@@ -155,9 +211,7 @@ struct Epa {
         t.NN = dotz(t.N, t.N);
         const size_t k = tris.size();
         tris.push_back(std::move(t));
-        edge[{a, b}] = k;
-        edge[{b, c}] = k;
-        edge[{c, a}] = k;
+        edges.add(tris.back().v, k);
     }
     bool visible(const Tri& t, const Vec3z& z) const { return dotz(t.N, z) > t.off; }
 
@@ -235,35 +289,10 @@ struct Epa {
             const MPoint p = support_M(primitive(tris[best].N));
             if (!visible(tris[best], p.z)) return best;  // the plane supports M: a face of M
             const int k = add_point(p);
-            // Remove every face the point sees — a connected patch around the best one, as K is
-            // convex — and close the hole with a fan from its boundary (the horizon).
-            std::vector<size_t> seen{best};
-            tris[best].alive = false;
-            for (size_t q = 0; q < seen.size(); ++q)
-                for (int e = 0; e < 3; ++e) {
-                    const Tri& t = tris[seen[q]];
-                    const auto other = edge.find({t.v[static_cast<size_t>((e + 1) % 3)], t.v[static_cast<size_t>(e)]});
-                    if (other == edge.end()) continue;
-                    Tri& u = tris[other->second];
-                    if (u.alive && visible(u, p.z)) {
-                        u.alive = false;
-                        seen.push_back(other->second);
-                    }
-                }
-            std::vector<std::pair<int, int>> horizon;
-            for (size_t t : seen)
-                for (int e = 0; e < 3; ++e) {
-                    const int a = tris[t].v[static_cast<size_t>(e)], b = tris[t].v[static_cast<size_t>((e + 1) % 3)];
-                    const auto other = edge.find({b, a});
-                    if (other != edge.end() && tris[other->second].alive) horizon.push_back({a, b});
-                }
-            for (size_t t : seen)
-                for (int e = 0; e < 3; ++e) {
-                    const auto it =
-                        edge.find({tris[t].v[static_cast<size_t>(e)], tris[t].v[static_cast<size_t>((e + 1) % 3)]});
-                    if (it != edge.end() && it->second == t) edge.erase(it);
-                }
-            for (const auto& [a, b] : horizon) {
+            // Remove every face the point sees and close the hole with a fan from its horizon.
+            const auto horizon = carve(tris, edges, best, [&](const Tri& u) { return visible(u, p.z); });
+            if (!horizon) throw std::logic_error("EPA: the polytope's surface is not closed");
+            for (const auto& [a, b] : *horizon) {
                 add_tri(a, b, k);
                 heap.push_back(tris.size() - 1);
                 std::push_heap(heap.begin(), heap.end(), farther);
@@ -310,9 +339,7 @@ std::optional<GuessedSurface> double_epa(const PointSets& S, double rho1, double
         bool alive = true;
     };
     std::vector<Tri> tris;
-    std::unordered_map<std::uint64_t, size_t> edge;  // directed edge (a, b) as a·2^32 + b -> its triangle
-    edge.reserve(512);
-    auto key = [](int a, int b) { return static_cast<std::uint64_t>(a) << 32 | static_cast<std::uint32_t>(b); };
+    EdgeIndex edges;
     auto add_tri = [&](int a, int b, int c) {
         const D3 N = crossd(subd(z[static_cast<size_t>(b)], z[static_cast<size_t>(a)]),
                             subd(z[static_cast<size_t>(c)], z[static_cast<size_t>(a)]));
@@ -321,9 +348,7 @@ std::optional<GuessedSurface> double_epa(const PointSets& S, double rho1, double
         const D3 n{N[0] / l, N[1] / l, N[2] / l};
         const size_t k = tris.size();
         tris.push_back({{a, b, c}, n, dotd(n, z[static_cast<size_t>(a)])});
-        for (auto e : {key(a, b), key(b, c), key(c, a)})
-            if (!edge.emplace(e, k).second) return false;
-        return true;
+        return edges.add(tris.back().v, k);
     };
     for (const auto& [i, j] : tetrahedron) add_point(i, j);
     const int f[4][4] = {{0, 1, 2, 3}, {0, 3, 1, 2}, {0, 2, 3, 1}, {1, 3, 2, 0}};
@@ -346,32 +371,9 @@ std::optional<GuessedSurface> double_epa(const PointSets& S, double rho1, double
         for (const auto& q : out.points)
             if (q.first == i && q.second == j) return std::nullopt;  // no progress in doubles
         const int k = add_point(i, j);
-        std::vector<size_t> seen{best};
-        tris[best].alive = false;
-        for (size_t q = 0; q < seen.size(); ++q)
-            for (int e = 0; e < 3; ++e) {
-                const Tri& t = tris[seen[q]];
-                const auto other = edge.find(key(t.v[static_cast<size_t>((e + 1) % 3)], t.v[static_cast<size_t>(e)]));
-                if (other == edge.end()) return std::nullopt;
-                Tri& u = tris[other->second];
-                if (u.alive && dotd(u.n, z.back()) > u.off) {
-                    u.alive = false;
-                    seen.push_back(other->second);
-                }
-            }
-        std::vector<std::pair<int, int>> horizon;
-        for (size_t t : seen)
-            for (int e = 0; e < 3; ++e) {
-                const int a = tris[t].v[static_cast<size_t>(e)], b = tris[t].v[static_cast<size_t>((e + 1) % 3)];
-                if (tris[edge.at(key(b, a))].alive) horizon.push_back({a, b});
-            }
-        for (size_t t : seen)
-            for (int e = 0; e < 3; ++e) {
-                const auto it2 =
-                    edge.find(key(tris[t].v[static_cast<size_t>(e)], tris[t].v[static_cast<size_t>((e + 1) % 3)]));
-                if (it2 != edge.end() && it2->second == t) edge.erase(it2);
-            }
-        for (const auto& [a, b] : horizon)
+        const auto horizon = carve(tris, edges, best, [&](const Tri& u) { return dotd(u.n, z.back()) > u.off; });
+        if (!horizon) return std::nullopt;
+        for (const auto& [a, b] : *horizon)
             if (!add_tri(a, b, k)) return std::nullopt;
     }
     for (const Tri& t : tris)
