@@ -1398,7 +1398,13 @@ BOOST_AUTO_TEST_CASE(region_parts_from_obj_groups) {
     expect_error("one triangle", R("triangle_group.obj", tetra + "o tri\nf 1 2 3\n"), "group 'tri' (line 5): flat");
     expect_error("flat, no o/g lines", R("flat_plain.obj", tetra + "f 1 2 3\n"),
                  "the faces before any 'o' or 'g' line: flat");
-    expect_error("no faces", R("no_faces.obj", tetra), "no faces ('f' lines)");
+    // An OBJ file of vertices only (no faces, so no group has a part) is one convex object under
+    // the flag too: the same document as without it.
+    const fs::path no_faces = write("no_faces.obj", tetra);
+    const Run nf_flag = run("region --parts-from-groups --p1 " + no_faces.string() + tail),
+              nf_plain = run("region --p1 " + no_faces.string() + tail);
+    BOOST_TEST(nf_flag.status == 0);
+    BOOST_TEST(nf_flag.out == nf_plain.out);
     expect_error("face past the vertices", R("far_face.obj", tetra + "f 1 2 5\n"),
                  "line 5: face vertex '5' is not a vertex number (1 to 4");
     expect_error("face vertex 0", R("zero_face.obj", tetra + "f 0 1 2\n"), "face vertex '0' is not a vertex number");

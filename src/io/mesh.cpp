@@ -180,8 +180,7 @@ std::vector<std::vector<Vec3q>> parse_obj_groups(const std::string& text, const 
         return true;
     });
     close();
-    if (parts.empty()) fail(name, "no faces ('f' lines): the parts from groups are the vertices of each group's faces");
-    return parts;
+    return parts;  // none when the file has no faces
 }
 
 // Vertices in order of first appearance, each once (STL writes every vertex in each triangle).
@@ -501,6 +500,11 @@ void read_mesh_object(const std::string& path, const ReadOptions& opt, PolyInput
         return;
     }
     in.parts = read_obj_groups(path, opt, &in.part_names);
+    if (in.parts.empty()) {  // vertices only: no group has a face, and the file is one convex object
+        in.part_names.clear();
+        in.points = read_mesh(path, opt, &in.note);
+        return;
+    }
     if (std::all_of(in.part_names.begin(), in.part_names.end(), [](const std::string& n) { return n.empty(); }))
         in.part_names.clear();
     in.points.clear();

@@ -35,16 +35,17 @@ std::vector<Vec3q> read_mesh(const std::string& path, const ReadOptions& opt = {
 // part); groups without faces are skipped, and vertices no face names are in no part. Throws
 // InputError naming the group (its name and line) when its points are flat or when a group with
 // faces has the name of an earlier one, and past kMaxParts parts or kMaxPoints points in all. Any
-// other format is refused (OFF, PLY and STL have no groups). With `names`: each part's group name
+// other format is refused (OFF, PLY and STL have no groups). A file without faces has no parts
+// (an empty list). With `names`: each part's group name
 // ("" for the faces before any 'o' or 'g' line, and for a group line without a name).
 std::vector<std::vector<Vec3q>> read_obj_groups(const std::string& path, const ReadOptions& opt = {},
                                                 std::vector<std::string>* names = nullptr);
 
 // An object's mesh file: its vertices (a convex object), or with opt.parts_from_groups and an OBJ
 // file its groups as parts (in.parts, and in.points all their points in order; in.part_names their
-// group names, empty when no group has one). A mesh of another format has no groups: under
-// opt.parts_from_groups it is one convex object still, so that one flag reads a scene of one
-// compound OBJ and one convex STL.
+// group names, empty when no group has one). A mesh of another format has no groups, and an OBJ
+// file without faces no parts: under opt.parts_from_groups each is one convex object still, so
+// that one flag reads a scene of one compound OBJ and one convex STL or point list.
 void read_mesh_object(const std::string& path, const ReadOptions& opt, PolyInput& in);
 
 }  // namespace scalecert::internal
