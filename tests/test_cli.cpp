@@ -704,19 +704,21 @@ BOOST_AUTO_TEST_CASE(bad_mesh_files_and_options) {
 
 // ---- the command line: exit 1 for a wrong claim, --help examples, one --out ----------
 // A distance or depth claim whose value is right but whose points or direction are wrong: the
-// text line says so. Stacked cubes at (1, 1): P1's top z = 2 and P2's bottom z = 3, distance 1,
-// so (1, 1, 3.5), 3/2 from (1, 1, 2), is no closest point. At (2, 2) P1 spans z in [-1, 3] and P2
-// z in [2, 6] (x and y both [-1, 3]): depth 1 along z, and 4 along y.
+// text line says so, and for points why. Stacked cubes at (1, 1): P1's top z = 2 and P2's bottom
+// z = 3, distance 1, so (1, 1, 3.5), in P2 but 3/2 from (1, 1, 2), is no closest point; nor is
+// (1, 1, 2.5), in neither body. At (2, 2) P1 spans z in [-1, 3] and P2 z in [2, 6] (x and y both
+// [-1, 3]): depth 1 along z, and 4 along y.
 BOOST_AUTO_TEST_CASE(certify_fp_lines_name_the_wrong_part_of_a_claim) {
     const std::string sc = std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/stacked_cubes.json";
     const fs::path claims = write("parts_wrong.json", R"({"format": "scalecert-claims-1", "claims": [
         {"kind": "distance", "rho1": 1, "rho2": 1, "value": 1, "closest": [[1, 1, 2], [1, 1, 3.5]]},
         {"kind": "distance", "rho1": 1, "rho2": 1, "value": 1, "closest": [[1, 1, 2], [1, 1, 3]]},
         {"kind": "penetration_depth", "rho1": 2, "rho2": 2, "value": 1, "direction": [0, 1, 0]},
-        {"kind": "penetration_depth", "rho1": 2, "rho2": 2, "value": 1, "direction": [0, 0, 1]}]})");
+        {"kind": "penetration_depth", "rho1": 2, "rho2": 2, "value": 1, "direction": [0, 0, 1]},
+        {"kind": "distance", "rho1": 1, "rho2": 1, "value": 2, "closest": [[1, 1, 2], [1, 1, 2.5]]}]})");
     const Run r = run("certify-fp " + sc + " " + claims.string());
     BOOST_TEST(r.status == 1);
-    BOOST_TEST(r.out.find("wrong: 2") != std::string::npos, r.out);
+    BOOST_TEST(r.out.find("wrong: 3") != std::string::npos, r.out);
     std::vector<std::string> lines;
     for (std::istringstream in(r.out); std::getline(in, lines.emplace_back());) {}
     auto line_of = [&](const std::string& start, int nth) {
@@ -726,14 +728,21 @@ BOOST_AUTO_TEST_CASE(certify_fp_lines_name_the_wrong_part_of_a_claim) {
     };
     const std::string bad_points = line_of("WRONG", 0), bad_direction = line_of("WRONG", 1);
     BOOST_TEST(bad_points.find("distance at") != std::string::npos, bad_points);
-    const std::string points_wrong = ", but the closest points are wrong",
+    const std::string points_wrong =
+                          ", but the closest points are wrong (each is in its body, but they lie farther apart than "
+                          "the distance)",
                       direction_wrong = ", but the direction is wrong";
     BOOST_TEST_REQUIRE(bad_points.size() > points_wrong.size());
     BOOST_TEST(bad_points.substr(bad_points.size() - points_wrong.size()) == points_wrong, bad_points);
     BOOST_TEST(bad_direction.find("penetration depth at") != std::string::npos, bad_direction);
     BOOST_TEST_REQUIRE(bad_direction.size() > direction_wrong.size());
     BOOST_TEST(bad_direction.substr(bad_direction.size() - direction_wrong.size()) == direction_wrong, bad_direction);
-    BOOST_TEST(r.out.find("are wrong\n") == r.out.rfind("are wrong\n"), r.out);  // the right ones say nothing
+    // A wrong value with a point in neither body: both said.
+    const std::string both = line_of("WRONG", 2);
+    BOOST_TEST(both.find(", and the closest points are wrong (the second point is not in P2)") != std::string::npos,
+               both);
+    // The right ones say nothing of their points.
+    BOOST_TEST(r.out.find("closest points are wrong (each") == r.out.rfind("closest points are wrong (each"), r.out);
 }
 
 BOOST_AUTO_TEST_CASE(certify_fp_exit_status_gates_ci) {

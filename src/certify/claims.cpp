@@ -614,8 +614,14 @@ void describe(const TypedClaim& c, const Judged& g, const ExactScene* parts, Jso
             if (g.near1 || g.near2) text += ", closest points within LEN of their bodies";
             put_exact(o, "closest_squared_distance", g.closest_squared);
             o["closest_right"] = *g.closest_right;
-            // A right value with wrong points: the line says which part of the claim is wrong.
-            if (*g.value_right && !*g.closest_right) text += ", but the closest points are wrong";
+            // Wrong points: the line says so, and why (CLAIMS.md, "a closest pair").
+            if (!*g.closest_right) {
+                std::string why;
+                if (!g.in1) why = "the first point is not in P1";
+                if (!g.in2) why += std::string(why.empty() ? "" : "; ") + "the second point is not in P2";
+                if (why.empty()) why = "each is in its body, but they lie farther apart than the distance";
+                text += std::string(*g.value_right ? ", but" : ", and") + " the closest points are wrong (" + why + ")";
+            }
         }
         return;
     case ClaimType::Depth: {
