@@ -738,7 +738,8 @@ PYBIND11_MODULE(scalecert, m) {
         .def_static(
             "from_meshes",
             [](const py::handle& p1, const py::handle& p2, const py::handle& i1, const py::handle& i2,
-               const py::handle& groups, const py::handle& numbers_, const py::handle& poses_) {
+               const py::handle& groups, const py::handle& numbers_, const py::handle& poses_,
+               const py::handle& seeds_) {
                 const scalecert::Numbers numbers = numbers_arg(numbers_);
                 std::array<std::optional<scalecert::Pose>, 2> poses;
                 if (!poses_.is_none()) {
@@ -760,17 +761,19 @@ PYBIND11_MODULE(scalecert, m) {
                         }
                     }
                 }
-                return warn_notes(
-                    PyScene{scalecert::Scene::from_meshes(path_arg(p1, "p1"), path_arg(p2, "p2"),
-                                                          interval(i1, "I1", numbers), interval(i2, "I2", numbers),
-                                                          flag_arg(groups, "parts_from_groups"), numbers, poses),
-                            nullptr, numbers});
+                return warn_notes(PyScene{
+                    scalecert::Scene::from_meshes(path_arg(p1, "p1"), path_arg(p2, "p2"), interval(i1, "I1", numbers),
+                                                  interval(i2, "I2", numbers), flag_arg(groups, "parts_from_groups"),
+                                                  numbers, poses, seeds_of(seeds_, numbers)),
+                    nullptr, numbers});
             },
             py::arg("p1"), py::arg("p2"), py::arg("I1"), py::arg("I2"), py::arg("parts_from_groups") = false,
-            py::arg("numbers") = "double", py::arg("poses") = py::none(),
+            py::arg("numbers") = "double", py::arg("poses") = py::none(), py::arg("seeds") = py::none(),
             "mesh files (.off .obj .ply .stl; text decimals and float I1, I2 read as numbers says), each one convex "
-            "object; poses = (pose1, pose2), each None or a 3x4 [R | t] by rows (e.g. a numpy array) moving that "
-            "object's points to R.v + t exactly before anything else; with parts_from_groups=True each OBJ file's "
+            "object; seeds = (seed1, seed2), each None (the mean of the object's points) or a point in its mesh's "
+            "frame; poses = (pose1, pose2), each None or a 3x4 [R | t] by rows (e.g. a numpy array) moving that "
+            "object's points and seed to R.v + t exactly before anything else; with parts_from_groups=True each OBJ "
+            "file's "
             "groups with faces are its convex parts, named by their groups (other formats have no groups: each "
             "stays one convex object). An OBJ file with several groups read "
             "as one convex object gives a UserWarning saying so")

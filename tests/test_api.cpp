@@ -1031,6 +1031,27 @@ BOOST_AUTO_TEST_CASE(meshes_at_poses) {
     BOOST_TEST((scalecert::Analysis(posed).verdict(R(1), R(3, 2)) == scalecert::Verdict::Separated));
     BOOST_TEST((scalecert::Analysis(posed).verdict(R(1), R(2)) == scalecert::Verdict::Touching));
     BOOST_TEST((posed.seed(1) == scalecert::Point{R(2), R(1), R(4)}));  // the mean of the moved points
+    // A seed given in the mesh's frame moves with it: (1/2, 1, 5) inside the tall box goes to
+    // (2, 1, 9/2) inside the moved box [0,4] x [0,2] x [3,5], so P2(ρ2) reaches down to
+    // z = 9/2 − 3ρ2/2 and meets P1's top 1 + ρ1 on 2ρ1 + 3ρ2 = 7: touching at (1/2, 2), apart at
+    // (1, 1). (About the default seed (2, 1, 4) they touch on ρ1 + ρ2 = 3: apart at (1/2, 2).)
+    const scalecert::Scene seeded =
+        scalecert::Scene::from_meshes(dir + "/cube.obj", dir + "/tall.obj", I, I, false, scalecert::Numbers::Double,
+                                      {std::nullopt, quarter}, {std::nullopt, scalecert::Point{R(1, 2), R(1), R(5)}});
+    BOOST_TEST((seeded.seed(1) == scalecert::Point{R(2), R(1), R(9, 2)}));
+    BOOST_TEST((seeded.seed(0) == scalecert::Point{R(1), R(1), R(1)}));
+    BOOST_TEST((scalecert::Analysis(seeded).verdict(R(1, 2), R(2)) == scalecert::Verdict::Touching));
+    BOOST_TEST((scalecert::Analysis(seeded).verdict(R(1), R(1)) == scalecert::Verdict::Separated));
+    BOOST_TEST((scalecert::Analysis(posed).verdict(R(1, 2), R(2)) == scalecert::Verdict::Separated));
+    // Unposed, the seed is where it is given: about (1, 1, 7/2) P2(ρ2) spans z from 7/2 − ρ2/2 and
+    // meets P1 = [1 − ρ1, 1 + ρ1]^3 on 2ρ1 + ρ2 = 5: touching at (3/2, 2), apart at (3/2, 1). (About
+    // the default seed (1, 1, 5), on ρ1 + 2ρ2 = 4: overlapping at (3/2, 2).)
+    const scalecert::Scene low =
+        scalecert::Scene::from_meshes(dir + "/cube.obj", dir + "/tall.obj", I, I, false, scalecert::Numbers::Double, {},
+                                      {std::nullopt, scalecert::Point{R(1), R(1), R(7, 2)}});
+    BOOST_TEST((scalecert::Analysis(low).verdict(R(3, 2), R(2)) == scalecert::Verdict::Touching));
+    BOOST_TEST((scalecert::Analysis(low).verdict(R(3, 2), R(1)) == scalecert::Verdict::Separated));
+    BOOST_TEST((scalecert::Analysis(plain).verdict(R(3, 2), R(2)) == scalecert::Verdict::Overlapping));
     // A singular R is refused in one line.
     scalecert::Pose flat = quarter;
     flat[2] = {R(0), R(0), R(0), R(5)};

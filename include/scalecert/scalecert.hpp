@@ -82,12 +82,13 @@ class Scene {
     static Scene load(const std::string& scene_json_path, Numbers numbers = Numbers::Double);
     // Mesh files (.off .obj .ply .stl; text numbers read as `numbers` says, binary floats at their
     // value): each mesh one convex part, or with parts_from_groups each OBJ file's 'o'/'g' groups
-    // with faces its parts (other formats have no groups: each stays one convex object). poses[i],
-    // when given, moves object i's points to that pose before anything else (its seed is then the
-    // mean of the moved points).
+    // with faces its parts (other formats have no groups: each stays one convex object). seeds[i],
+    // when given, is object i's seed in its mesh's frame (else the mean of its points); poses[i],
+    // when given, moves object i's points and seed to that pose before anything else.
     static Scene from_meshes(const std::string& p1_path, const std::string& p2_path, Interval i1, Interval i2,
                              bool parts_from_groups = false, Numbers numbers = Numbers::Double,
-                             const std::array<std::optional<Pose>, 2>& poses = {});
+                             const std::array<std::optional<Pose>, 2>& poses = {},
+                             const std::array<std::optional<Point>, 2>& seeds = {});
     bool convex() const;                                    // two convex objects (neither given as parts)
     size_t part_count(int i) const;                         // 1 for a convex object
     const std::vector<Point>& points(int i) const;          // i = 0 (P1) or 1 (P2): all its points, as given

@@ -796,6 +796,15 @@ def test_meshes_at_poses(tmp_path):
     assert posed.verdict(1, F(3, 2)) == scalecert.Verdict.Separated
     assert posed.verdict(1, 2) == scalecert.Verdict.Touching
     assert posed.seeds()[1] == (2, 1, 4)
+    # A seed given in the mesh's frame moves with it: (1/2, 1, 5) inside the tall box goes to
+    # (2, 1, 9/2) inside the moved box, so P2(rho2) reaches down to z = 9/2 - 3 rho2 / 2 and meets
+    # P1's top 1 + rho1 on 2 rho1 + 3 rho2 = 7: touching at (1/2, 2) (apart about the default seed).
+    seeded = scalecert.Scene.from_meshes(*args, poses=(None, pose), seeds=(None, (F(1, 2), 1, 5)))
+    assert seeded.seeds()[1] == (2, 1, F(9, 2)) and seeded.seeds()[0] == (1, 1, 1)
+    assert seeded.verdict(F(1, 2), 2) == scalecert.Verdict.Touching
+    assert posed.verdict(F(1, 2), 2) == scalecert.Verdict.Separated
+    with pytest.raises(scalecert.InputError, match=r"seeds\[1\]"):
+        scalecert.Scene.from_meshes(*args, seeds=(None, (0, 1)))
     with pytest.raises(scalecert.InputError, match=r"poses\[1\]\[0\]: expected 4 numbers"):
         scalecert.Scene.from_meshes(*args, poses=(None, [[1, 0, 0], [0, 1, 0, 0], [0, 0, 1, 0]]))
 

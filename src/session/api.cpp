@@ -220,15 +220,23 @@ std::shared_ptr<Scene::Data> SceneAccess::from_integers(const std::string& p1_pa
 
 Scene Scene::from_meshes(const std::string& p1_path, const std::string& p2_path, Interval i1, Interval i2,
                          bool parts_from_groups, Numbers numbers,
-                         const std::array<std::optional<scalecert::Pose>, 2>& poses) {
-    const bool posed = poses[0] || poses[1];
-    if (!parts_from_groups && !posed)
+                         const std::array<std::optional<scalecert::Pose>, 2>& poses,
+                         const std::array<std::optional<Point>, 2>& seeds) {
+    const bool posed = poses[0] || poses[1], seeded = seeds[0] || seeds[1];
+    if (!parts_from_groups && !posed && !seeded)
         if (std::shared_ptr<Data> d = SceneAccess::from_integers(p1_path, p2_path, i1, i2, numbers))
             return Scene(std::move(d));
-    // Each object at its pose, when it has one.
-    auto move = [&poses](int i, internal::PolyInput& in) {
+    // Each object's given seed, then the object and its seed at its pose, when it has one.
+    auto move = [&poses, &seeds](int i, internal::PolyInput& in) {
+        if (const auto& s = seeds[static_cast<size_t>(i)]) {
+            in.seed = canonical(*s);
+            in.seed_given = true;
+        }
         if (const auto& m = poses[static_cast<size_t>(i)])
             internal::apply_pose(*m, in, std::string("scene: pose of P") + (i ? "2" : "1"));
+    };
+    auto seed_of = [](const internal::PolyInput& in) {
+        return in.seed_given ? std::optional<Point>(in.seed) : std::nullopt;
     };
     long inexact = 0;
     internal::ReadOptions opt;
@@ -240,8 +248,8 @@ Scene Scene::from_meshes(const std::string& p1_path, const std::string& p2_path,
         in[0].points = read_mesh(p1_path, opt, &note[0]);
         in[1].points = read_mesh(p2_path, opt, &note[1]);
         for (int i = 0; i < 2; ++i) move(i, in[i]);
-        internal::ExactScene sc = convex_scene(std::move(in[0].points), std::move(in[1].points), i1, i2, std::nullopt,
-                                               std::nullopt, std::move(note[0]), std::move(note[1]));
+        internal::ExactScene sc = convex_scene(std::move(in[0].points), std::move(in[1].points), i1, i2, seed_of(in[0]),
+                                               seed_of(in[1]), std::move(note[0]), std::move(note[1]));
         sc.inexact_numbers = inexact;
         sc.numbers = numbers;
         return Scene(SceneAccess::validated(std::move(sc), "scene"));
