@@ -211,6 +211,15 @@ BOOST_AUTO_TEST_CASE(cloud_points_equal_the_hull) {
             if (mc->state == MeasuredDepth::Overlapping) BOOST_TEST(mc->depth->squared == mh->depth->squared);
             const Vec3q n{Q(1), Q(i, 7), Q(-2)};
             BOOST_TEST((plane_extents(cloud, n, r1, r2) == plane_extents(m, n, r1, r2)));
+            // Directions past the double range (their doubles scaled by a power of two for the
+            // trees' filter): the same support value as the hull's exact climb.
+            const Vec3z huge{Z((Z(3) << (1000 + 10 * i)) + i), Z(-(Z(1) << (999 + 10 * i)) + 7 * i),
+                             Z(Z(i % 5 - 2) << (990 + 9 * i))};
+            for (int b = 0; b < 2; ++b) {
+                const Vec3z d = b ? neg(huge) : huge;
+                BOOST_TEST(dot(to_q(d), cloud.point(b, cloud.argmax(b, d))) ==
+                           dot(to_q(d), hull.point(b, hull.argmax(b, d))));
+            }
         }
     }
     std::cout << "cloud points: " << pairs << " pairs, the same distances, depths and extents as the hull\n";

@@ -33,7 +33,12 @@ WalkStop stop(Handover h, int polyhedron = -1) { return {h, polyhedron}; }
 // ---------------------------------------------------------------------------------------------
 // Exact support queries on a point cloud.
 
-// A direction: exact integers, their doubles (for the filter) and, when they fit, int64.
+// A direction: exact integers, their doubles (for the filter) and, when they fit, int64. Integers
+// past 2^900 are scaled by one power of two 2^-e into the doubles (the same direction, so the same
+// maximisers, and room for products with points up to 2^53): each double is then the integer's
+// truncation times 2^-e exactly, with the relative error the filter allows for (predicates.hpp,
+// 7), unless a coordinate falls below 2^-1000 (near the subnormals): then the direction is not
+// finite for the filter.
 struct Dir {
     Vec3z z;
     double d[3];
@@ -42,11 +47,26 @@ struct Dir {
     bool finite = true;  // else the walk stops (Handover::NormalBeyondDoubles)
     explicit Dir(const Vec3z& v) : z(v) {
         small = true;
+        long bits = 0;
         for (int k = 0; k < 3; ++k) {
-            d[k] = v[k].get_d();
-            finite = finite && std::isfinite(d[k]);
+            bits = std::max(bits, static_cast<long>(mpz_sizeinbase(v[k].get_mpz_t(), 2)));
             small = small && mpz_fits_slong_p(v[k].get_mpz_t());
             s[k] = small ? v[k].get_si() : 0;
+        }
+        const long shift = bits > 900 ? bits - 900 : 0;
+        for (int k = 0; k < 3; ++k) {
+            if (sgn(v[k]) == 0) {
+                d[k] = 0;
+                continue;
+            }
+            long e = 0;
+            const double m = mpz_get_d_2exp(&e, v[k].get_mpz_t());  // v = m·2^e, 1/2 <= |m| < 1, truncated
+            if (e - shift < -1000) {
+                finite = false;
+                d[k] = 0;
+                continue;
+            }
+            d[k] = std::ldexp(m, static_cast<int>(e - shift));
         }
     }
 };
