@@ -741,6 +741,15 @@ BOOST_AUTO_TEST_CASE(certify_fp_lines_name_the_wrong_part_of_a_claim) {
     const std::string both = line_of("WRONG", 2);
     BOOST_TEST(both.find(", and the closest points are wrong (the second point is not in P2)") != std::string::npos,
                both);
+    // Within LEN: (1, 1, 2.05) is outside P1 = [0,2]^3 but within 0.1 of it, so the points count as
+    // in their bodies, and (1, 1, 4) lies 1.95 from it, past 1 + 2·0.1: the line says "within LEN".
+    const fs::path near = write("near_reason.json", R"({"format": "scalecert-claims-1", "claims": [
+        {"kind": "distance", "rho1": 1, "rho2": 1, "value": 1, "closest": [[1, 1, 2.05], [1, 1, 4]]}]})");
+    const Run nr = run("certify-fp " + sc + " " + near.string() + " --abs-tolerance 0.1");
+    BOOST_TEST(nr.status == 1);
+    BOOST_TEST(nr.out.find("(each is in or within LEN of its body, but they lie farther apart than the distance "
+                           "allows)") != std::string::npos,
+               nr.out);
     // The right ones say nothing of their points.
     BOOST_TEST(r.out.find("closest points are wrong (each") == r.out.rfind("closest points are wrong (each"), r.out);
 }

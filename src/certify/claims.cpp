@@ -619,7 +619,10 @@ void describe(const TypedClaim& c, const Judged& g, const ExactScene* parts, Jso
                 std::string why;
                 if (!g.in1) why = "the first point is not in P1";
                 if (!g.in2) why += std::string(why.empty() ? "" : "; ") + "the second point is not in P2";
-                if (why.empty()) why = "each is in its body, but they lie farther apart than the distance";
+                if (why.empty())
+                    why = g.near1 || g.near2 ? "each is in or within LEN of its body, but they lie farther apart than "
+                                               "the distance allows"
+                                             : "each is in its body, but they lie farther apart than the distance";
                 text += std::string(*g.value_right ? ", but" : ", and") + " the closest points are wrong (" + why + ")";
             }
         }
