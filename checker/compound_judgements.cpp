@@ -15,10 +15,15 @@
 namespace scalecert_check {
 namespace {
 // max over the parts first..last of object i, scaled by rho about the object's seed, of n·x (n a
-// nonzero rational): n·s + rho max over their vertices of n·(v − s), a scan of those vertices.
+// nonzero rational): n·s + rho (max over their vertices of n·v − n·s), each part's maximum a scan
+// of its vertices. With u = L n integral, max n·v = (max u·v) / L.
 Q block_reach(Context& cx, const CompoundScene& cs, int i, const V3& n, const Q& rho, size_t first, size_t last) {
-    const std::vector<int> verts = cs.verts(i, first, last);
-    return reach(cx, cs.sc, i, n, rho, &verts);
+    mpz_class L;
+    const Z3 u = ints(integral(n, &L));
+    const Q t = cs.top(cx, i, u, first, last);
+    cx.spend_ops(8, vsize(n) + vsize(cs.s[i]) + qsize(rho) + qsize(t) + limbs(L));
+    const Q ns = dot(n, cs.s[i]);
+    return ns + rho * (t / L - ns);
 }
 // The least over the same parts of n·x.
 Q block_floor(Context& cx, const CompoundScene& cs, int i, const V3& n, const Q& rho, size_t first, size_t last) {
@@ -27,8 +32,7 @@ Q block_floor(Context& cx, const CompoundScene& cs, int i, const V3& n, const Q&
 // s + rho (Σ w v − s) for weights over part k of object i (indices into the part's own points).
 V3 part_point(Context& cx, const CompoundScene& cs, int i, size_t k, const Q& rho, const J& w, const std::string& where,
               std::vector<int>* used = nullptr) {
-    const std::array<size_t, 2> part = cs.part(i, k);
-    return body_point(cx, cs.sc, i, rho, w, where, used, part[0], part[1]);
+    return body_point(cx, *cs.part[i][k], cs.s[i], rho, w, where, used);
 }
 // [k, j]: a part of P1 and a part of P2.
 std::array<size_t, 2> part_pair(Context& cx, const CompoundScene& cs, const J& j, const std::string& where) {
@@ -99,7 +103,6 @@ void check_blocks(Context& cx, const CompoundScene& cs, const Q& r1, const Q& r2
 }
 
 bool judge(Context& cx, const CompoundScene& cs, const Rules& R, const Judgement& j) {
-    const Scene& sc = cs.sc;
     const J &cl = j.claim, &pr = j.proof;
     const std::string &kind = j.kind, &where = j.where, &wc = j.wc, &wp = j.wp;
     if (cl.contains("pose1") || cl.contains("pose2")) {
@@ -107,8 +110,7 @@ bool judge(Context& cx, const CompoundScene& cs, const Rules& R, const Judgement
         // every part recomputed, the seeds too; the parts keep their vertices' places).
         J bare;
         const std::array<std::optional<Pose>, 2> pose = claim_poses(cx, cl, wc, bare);
-        CompoundScene moved{posed_scene(cx, sc, pose), {cs.start[0], cs.start[1]}};
-        return judge(cx, moved, R, Judgement{bare, pr, kind, where, wc, wp});
+        return judge(cx, cs.posed(cx, pose), R, Judgement{bare, pr, kind, where, wc, wp});
     }
     const Objects bodies(cs, R.abs);
     if (kind == "verdict") {
@@ -131,7 +133,7 @@ bool judge(Context& cx, const CompoundScene& cs, const Rules& R, const Judgement
             const V3 y = part_point(cx, cs, 1, kj[1], r2, at(in, "P2"), wp + ".interior.P2", &used[1]);
             cx.claim(x == y, wp + ".interior is one point of both parts");
             for (int i = 0; i < 2; ++i)
-                cx.claim(affine_dim(cx, sc, i, used[i]) == 3,
+                cx.claim(affine_dim(cx, *cs.part[i][kj[i]], used[i]) == 3,
                          wp + ".interior." + kPoly[i] + " uses points spanning 3 dimensions (an interior point)");
         } else if (v == "touching" || v == "separated") {
             // Every pair apart by a plane (weakly: no interiors meet; strictly: none meets); touching
@@ -211,8 +213,7 @@ bool judge(Context& cx, const CompoundScene& cs, const Rules& R, const Judgement
         const Q c = num(cx, at(cl, "value"), wc + ".value");
         std::optional<V3> dir;
         if (cl.contains("direction")) dir = nonzero_vector(cx, at(cl, "direction"), wc + ".direction");
-        const std::array<size_t, 2> a = cs.part(0, kj[0]), b = cs.part(1, kj[1]);
-        return judge_depth(cx, sc, {VertexRange{a[0], a[1]}, VertexRange{b[0], b[1]}}, R, pr, wp, r1, r2, c, dir);
+        return judge_depth(cx, cs.pair(cx, kj[0], kj[1]), R, pr, wp, r1, r2, c, dir);
     }
     cx.claim(false, wc + ".kind is verdict, separating_plane, witness_point, distance or penetration_depth (the "
                          "claims on objects made of parts)");

@@ -12,6 +12,7 @@
 // blocks must cover every pair exactly once. So a point of the rectangle is in the overlap region
 // iff it lies in some listed polygon. The growth set is recomputed from the polygons.
 #include "formats.hpp"
+#include "judging.hpp"
 #include "json.hpp"
 #include "numbers.hpp"
 #include "parts.hpp"
@@ -24,7 +25,6 @@ namespace scalecert_check {
 void check_compound_partition(Context& cx, const J& c) {
     shape(cx, c, "", {"format", "kind", "pairs", "growth_set", "scene"}, {"statistics"});
     const CompoundScene cs = read_compound_scene(cx, at(c, "scene"));
-    const Scene& sc = cs.sc;
     if (c.contains("statistics")) {
         const J& st = at(c, "statistics");
         shape(cx, st, "statistics", {"pairs", "pruned", "built", "entries", "witness_fallbacks"});
@@ -32,7 +32,7 @@ void check_compound_partition(Context& cx, const J& c) {
             cx.claim(natural(at(st, k)), std::string("statistics.") + k + " is a count");
     }
     const size_t m = cs.parts(0), n = cs.parts(1);
-    const std::vector<P2> rect = rectangle(sc);
+    const std::vector<P2> rect = rectangle(cs.lo, cs.hi);
     PairCover cover(cx, m, n);
     struct Diagonal {
         Q from, to;
@@ -47,24 +47,18 @@ void check_compound_partition(Context& cx, const J& c) {
         const J& pe = pairs[e];
         shape(cx, pe, w, {"P1_parts", "P2_parts", "normals", "vertices", "vertices_double", "witnesses"});
         const auto [ra, rb] = cover.next(cx, pe, w, "entry");
-        // The block's vertices on each side, ascending, and the half-planes of its normals.
-        const std::vector<int> verts[2] = {cs.verts(0, ra[0], ra[1]), cs.verts(1, rb[0], rb[1])};
+        // The half-planes of the block's normals: hA(n) = max over its P1 parts' vertices of
+        // n·v − n·s1, hB(n) = max over its P2 parts' vertices of −n·w + n·s2.
         const J& ns = at(pe, "normals");
         cx.claim_lazy(ns.is_array(), [&] { return w + ".normals is a list"; });
         std::vector<P2> poly = rect;
         for (size_t k = 0; k < ns.size(); ++k) {
             const V3 nv = normal(cx, ns[k], w + ".normals[" + std::to_string(k) + "]");
-            mpz_class H[2];
-            for (int i = 0; i < 2; ++i) {
-                Z3 u = ints(nv);
-                if (i == 1)
-                    for (auto& x : u) x = -x;
-                const std::vector<int> best = sc.scan[i]->argmax(cx, u, &verts[i]);
-                H[i] = sc.support_at(cx, i, u, best[0]);  // D* hA(n), D* hB(n)
-            }
-            cx.spend_ops(1, 3 * (limbs(sc.Delta[0]) + limbs(sc.Delta[1]) + limbs(sc.Delta[2])));
-            const mpz_class C = dotz(ints(nv), sc.Delta);  // D* n·d
-            if (!poly.empty()) poly = cut(cx, poly, Q(H[0]), Q(H[1]), Q(C));
+            const Z3 u = ints(nv), mu{-u[0], -u[1], -u[2]};
+            const Q a = cs.top(cx, 0, u, ra[0], ra[1]), b = cs.top(cx, 1, mu, rb[0], rb[1]);
+            cx.spend_ops(6, vsize(nv) + vsize(cs.s[0]) + vsize(cs.s[1]) + qsize(a) + qsize(b));
+            const Q ns1 = dot(nv, cs.s[0]), ns2 = dot(nv, cs.s[1]);
+            if (!poly.empty()) poly = cut(cx, poly, a - ns1, b + ns2, ns2 - ns1);
         }
         cx.claim_lazy(polygon(cx, pe, w) == poly,
                       [&] { return w + ".vertices is the rectangle cut by its normals' half-planes"; });
@@ -73,11 +67,10 @@ void check_compound_partition(Context& cx, const J& c) {
         if (poly.empty()) continue;
         cx.claim_lazy(ra[0] == ra[1] && rb[0] == rb[1],
                       [&] { return w + " is one pair: a block of pairs must meet nowhere in the rectangle"; });
-        const std::array<std::array<size_t, 2>, 2> parts{{cs.part(0, ra[0]), cs.part(1, rb[0])}};
+        const Scene sc = cs.pair(cx, ra[0], rb[0]);
         for (size_t k = 0; k < poly.size(); ++k) {
             const std::string wk = w + ".witnesses[" + std::to_string(k) + "]";
-            cx.claim_lazy(check_witness(cx, sc, wit[k], wk, nullptr, &parts) == poly[k],
-                          [&] { return wk + " is at its vertex"; });
+            cx.claim_lazy(check_witness(cx, sc, wit[k], wk) == poly[k], [&] { return wk + " is at its vertex"; });
         }
         ++meeting;
         std::vector<P2> d = cut(cx, cut(cx, poly, Q(-1), Q(1), Q(0)), Q(1), Q(-1), Q(0));  // on ρ1 = ρ2

@@ -266,8 +266,7 @@ bool judge_at_poses(Context& cx, const Scene& sc, const Rules& R, const Judgemen
     cx.claim(at(bare, "verdict").is_string(), j.wc + ".verdict is a string");
     const std::string c = at(bare, "verdict").get<std::string>();
     check_claimed_verdict(cx, c, j.wc);
-    const std::optional<Q> E = proved_depth(cx, posed, {VertexRange{0, posed.count(0)}, VertexRange{0, posed.count(1)}},
-                                            at(pr, "depth"), j.wp + ".depth", r1, r2);
+    const std::optional<Q> E = proved_depth(cx, posed, at(pr, "depth"), j.wp + ".depth", r1, r2);
     return verdict_right(c, !E ? "separated" : sgn(*E) == 0 ? "touching" : "overlapping");
 }
 
@@ -349,8 +348,7 @@ bool judge(Context& cx, const Scene& sc, const Rules& R, const Judgement& j) {
         const Q c = num(cx, at(cl, "value"), wc + ".value");
         std::optional<V3> dir;
         if (cl.contains("direction")) dir = nonzero_vector(cx, at(cl, "direction"), wc + ".direction");
-        return judge_depth(cx, sc, {VertexRange{0, sc.count(0)}, VertexRange{0, sc.count(1)}}, R, pr, wp, r1, r2, c,
-                           dir);
+        return judge_depth(cx, sc, R, pr, wp, r1, r2, c, dir);
     }
     if (kind == "curve") return judge_curve(cx, R, cl, curve_window(cx, sc, pr, wp), wc, wp);
     if (kind == "switch_point") return judge_switch_point(cx, R, cl, curve_window(cx, sc, pr, wp), wc, wp);

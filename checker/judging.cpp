@@ -88,26 +88,23 @@ V3 nonzero_vector(Context& cx, const J& j, const std::string& where) {
 }
 
 // With u = L n integral: max over the vertices of u·(v − s_i), over D* (support_at), then over L.
-Q reach(Context& cx, const Scene& sc, int i, const V3& n, const Q& rho, const std::vector<int>* verts) {
+Q reach(Context& cx, const Scene& sc, int i, const V3& n, const Q& rho) {
     cx.spend_ops(12, vsize(n) + vsize(sc.s[i]) + qsize(rho) + 2 * limbs(sc.Dj));
     mpz_class L;
     const Z3 u = ints(integral(n, &L));
-    // a list of vertices: the list itself, and the scan's gathering through it
-    if (verts) cx.spend(5.0 * static_cast<double>(verts->size()));
-    const std::vector<int> best = sc.scan[i]->argmax(cx, u, verts);
+    const std::vector<int> best = sc.scan[i]->argmax(cx, u);
     Q h(sc.support_at(cx, i, u, best[0]), sc.Dj * L);
     h.canonicalize();
     return dot(n, sc.s[i]) + rho * h;
 }
 
-V3 body_point(Context& cx, const Scene& sc, int i, const Q& rho, const J& w, const std::string& where,
-              std::vector<int>* used, size_t base, size_t count) {
-    const std::array<Q, 3> c = combination(cx, sc, i, w, where, used, base, count);
-    cx.spend_ops(
-        12, vsize(sc.s[i]) + qsize(rho) + std::max({qsize(c[0]), qsize(c[1]), qsize(c[2])}) + limbs(sc.scan[i]->D()));
-    const Q D(sc.scan[i]->D());
+V3 body_point(Context& cx, const Scan& P, const V3& s, const Q& rho, const J& w, const std::string& where,
+              std::vector<int>* used) {
+    const std::array<Q, 3> c = combination(cx, P, w, where, used);
+    cx.spend_ops(12, vsize(s) + qsize(rho) + std::max({qsize(c[0]), qsize(c[1]), qsize(c[2])}) + limbs(P.D()));
+    const Q D(P.D());
     V3 x;
-    for (int k = 0; k < 3; ++k) x[k] = sc.s[i][k] + rho * (c[k] / D - sc.s[i][k]);
+    for (int k = 0; k < 3; ++k) x[k] = s[k] + rho * (c[k] / D - s[k]);
     return x;
 }
 
@@ -221,19 +218,10 @@ void check_no_answer(Context& cx, const Judgement& j) {
     for (const J& x : v) cx.claim(sgn(num(cx, x, wf)) == 0, wf + " is null or three zeros");
 }
 namespace {
-// The vertices of a range, for reach() (none: all of the polyhedron's).
-std::optional<std::vector<int>> range_verts(const Scene& sc, int i, const VertexRange& r) {
-    if (r.base == 0 && r.count == sc.count(i)) return std::nullopt;
-    std::vector<int> v(r.count);
-    for (size_t k = 0; k < r.count; ++k) v[k] = static_cast<int>(r.base + k);
-    return v;
-}
-// h_M(n) = max over B1(r1) of n·x − min over B2(r2) of n·y: the depth along n times |n| (< 0: the
+// h_M(n) = max over P1(r1) of n·x − min over P2(r2) of n·y: the depth along n times |n| (< 0: the
 // plane separates).
-Q hM(Context& cx, const Scene& sc, const std::array<VertexRange, 2>& B, const V3& n, const Q& r1, const Q& r2) {
-    const auto v1 = range_verts(sc, 0, B[0]), v2 = range_verts(sc, 1, B[1]);
-    return reach(cx, sc, 0, n, r1, v1 ? &*v1 : nullptr) +
-           reach(cx, sc, 1, {-n[0], -n[1], -n[2]}, r2, v2 ? &*v2 : nullptr);
+Q hM(Context& cx, const Scene& sc, const V3& n, const Q& r1, const Q& r2) {
+    return reach(cx, sc, 0, n, r1) + reach(cx, sc, 1, {-n[0], -n[1], -n[2]}, r2);
 }
 
 // A closed surface of triangles over points of the Minkowski difference P1(r1) − P2(r2), each
@@ -241,8 +229,8 @@ Q hM(Context& cx, const Scene& sc, const std::array<VertexRange, 2>& B, const V3
 // projection of such a surface covers every direction (its degree is its total solid angle over
 // 4π, > 0 as every triangle's is), so along every unit u some point t·u of it, hence of the
 // difference, has t >= sqrt(E): the depth is at least sqrt(E).
-void check_lower_bound(Context& cx, const Scene& sc, const std::array<VertexRange, 2>& B, const Q& r1, const Q& r2,
-                       const Q& E, const J& proof, const std::string& where) {
+void check_lower_bound(Context& cx, const Scene& sc, const Q& r1, const Q& r2, const Q& E, const J& proof,
+                       const std::string& where) {
     const J& pts = at(proof, "points");
     const J& tris = at(proof, "triangles");
     cx.claim(pts.is_array() && pts.size() >= 4, where + ".points has at least 4 points");
@@ -276,8 +264,7 @@ void check_lower_bound(Context& cx, const Scene& sc, const std::array<VertexRang
     for (size_t k = 0; k < pts.size(); ++k) {
         const std::string w = where + ".points[" + std::to_string(k) + "]";
         cx.claim(pts[k].is_array() && pts[k].size() == 2, w + " is [vertex of P1, vertex of P2]");
-        const size_t a = B[0].base + index(cx, pts[k][0], B[0].count, w),
-                     b = B[1].base + index(cx, pts[k][1], B[1].count, w);
+        const size_t a = index(cx, pts[k][0], sc.count(0), w), b = index(cx, pts[k][1], sc.count(1), w);
         const Z3 &Xa = sc.scan[0]->X(a), &Xb = sc.scan[1]->X(b);
         double lx = 0;
         for (int c = 0; c < 3; ++c) lx = std::max({lx, limbs(Xa[c]), limbs(Xb[c])});
@@ -325,12 +312,12 @@ void check_lower_bound(Context& cx, const Scene& sc, const std::array<VertexRang
 // (a claim of depth on a separated pair is wrong), a touching pair's supporting plane and common
 // point, or an overlapping pair's depth along its direction and the exact EPA's closed surface
 // (check_lower_bound). c the claimed value, dir the claimed direction if any.
-std::optional<Q> proved_depth(Context& cx, const Scene& sc, const std::array<VertexRange, 2>& B, const J& pr,
-                              const std::string& wp, const Q& r1, const Q& r2) {
+std::optional<Q> proved_depth(Context& cx, const Scene& sc, const J& pr, const std::string& wp, const Q& r1,
+                              const Q& r2) {
     if (pr.contains("separated")) {
         shape(cx, pr, wp, {"separated"});
         const V3 n = normal(cx, at(pr, "separated"), wp + ".separated");
-        cx.claim(sgn(hM(cx, sc, B, n, r1, r2)) < 0, wp + ".separated: the plane separates the pair strictly");
+        cx.claim(sgn(hM(cx, sc, n, r1, r2)) < 0, wp + ".separated: the plane separates the pair strictly");
         return std::nullopt;
     }
     Q E;
@@ -338,11 +325,11 @@ std::optional<Q> proved_depth(Context& cx, const Scene& sc, const std::array<Ver
         shape(cx, pr, wp, {"squared", "direction", "common"});
         cx.claim(num(cx, at(pr, "squared"), wp + ".squared") == 0, wp + ".squared is 0 for a touching pair");
         const V3 n = normal(cx, at(pr, "direction"), wp + ".direction");
-        cx.claim(sgn(hM(cx, sc, B, n, r1, r2)) == 0, wp + ".direction: the plane supports both bodies");
+        cx.claim(sgn(hM(cx, sc, n, r1, r2)) == 0, wp + ".direction: the plane supports both bodies");
         const J& cm = at(pr, "common");
         shape(cx, cm, wp + ".common", {"P1", "P2"});
-        cx.claim(body_point(cx, sc, 0, r1, at(cm, "P1"), wp + ".common.P1", nullptr, B[0].base, B[0].count) ==
-                     body_point(cx, sc, 1, r2, at(cm, "P2"), wp + ".common.P2", nullptr, B[1].base, B[1].count),
+        cx.claim(body_point(cx, sc, 0, r1, at(cm, "P1"), wp + ".common.P1") ==
+                     body_point(cx, sc, 1, r2, at(cm, "P2"), wp + ".common.P2"),
                  wp + ".common is a point of both bodies");
         E = 0;
     } else {
@@ -350,22 +337,22 @@ std::optional<Q> proved_depth(Context& cx, const Scene& sc, const std::array<Ver
         E = num(cx, at(pr, "squared"), wp + ".squared");
         cx.claim(sgn(E) > 0, wp + ".squared is > 0");
         const V3 n = normal(cx, at(pr, "direction"), wp + ".direction");
-        const Q g = hM(cx, sc, B, n, r1, r2);
+        const Q g = hM(cx, sc, n, r1, r2);
         cx.spend_ops(4, 2 * qsize(g) + qsize(E) + 2 * vsize(n));
         cx.claim(sgn(g) > 0 && g * g == E * dot(n, n), wp + ".direction: the depth along it is sqrt(squared)");
-        check_lower_bound(cx, sc, B, r1, r2, E, pr, wp);
+        check_lower_bound(cx, sc, r1, r2, E, pr, wp);
     }
     return E;
 }
 
-bool judge_depth(Context& cx, const Scene& sc, const std::array<VertexRange, 2>& B, const Rules& R, const J& pr,
-                 const std::string& wp, const Q& r1, const Q& r2, const Q& c, const std::optional<V3>& dir) {
-    const std::optional<Q> depth = proved_depth(cx, sc, B, pr, wp, r1, r2);
+bool judge_depth(Context& cx, const Scene& sc, const Rules& R, const J& pr, const std::string& wp, const Q& r1,
+                 const Q& r2, const Q& c, const std::optional<V3>& dir) {
+    const std::optional<Q> depth = proved_depth(cx, sc, pr, wp, r1, r2);
     if (!depth) return false;  // a depth claimed of a separated pair
     const Q& E = *depth;
     bool right = R.close_sq(cx, c, E);
     if (dir) {
-        const Q g = hM(cx, sc, B, *dir, r1, r2);
+        const Q g = hM(cx, sc, *dir, r1, r2);
         cx.spend_ops(4, 2 * qsize(g) + 2 * vsize(*dir));
         Q along = g * g / dot(*dir, *dir);
         if (sgn(g) < 0) along = -along;

@@ -16,6 +16,7 @@
 
 namespace scalecert_check {
 struct Scene;
+class Scan;
 
 // CLAIMS.md's closeness rules ("Tolerances") at the file's tolerances, each counted before it runs:
 // tol relative, abs a length (0 when the file has no abs_tolerance: exact points and planes).
@@ -50,11 +51,15 @@ Q positive(Context& cx, const J& o, const char* key, const std::string& where);
 V3 nonzero_vector(Context& cx, const J& j, const std::string& where);
 
 // max over P_i(rho) of n·x, for a nonzero rational n: n·s_i + rho max_v n·(v − s_i), the maximum a
-// scan of every vertex of polyhedron i, or of the vertices `verts` (ascending; a compound's parts).
-Q reach(Context& cx, const Scene& sc, int i, const V3& n, const Q& rho, const std::vector<int>* verts = nullptr);
-// s_i + rho (Σ w v − s_i) for weights over P_i's vertices [base, base + count) (combination()).
-V3 body_point(Context& cx, const Scene& sc, int i, const Q& rho, const J& w, const std::string& where,
-              std::vector<int>* used = nullptr, size_t base = 0, size_t count = SIZE_MAX);
+// scan of every vertex of polyhedron i.
+Q reach(Context& cx, const Scene& sc, int i, const V3& n, const Q& rho);
+// s + rho (Σ w v − s) for weights over the vertices of a polytope P (combination()) scaled by rho
+// about s: a point of polyhedron i of a scene, or of a compound's part.
+V3 body_point(Context& cx, const Scan& P, const V3& s, const Q& rho, const J& w, const std::string& where,
+              std::vector<int>* used = nullptr);
+inline V3 body_point(Context& cx, const Scene& sc, int i, const Q& rho, const J& w, const std::string& where) {
+    return body_point(cx, *sc.scan[i], sc.s[i], rho, w, where);
+}
 
 // A {"near"} membership: y (a point of the body) within abs of x; Invalid if not.
 bool near_enough(Context& cx, const V3& x, const V3& y, const Q& abs, const std::string& where);
@@ -145,18 +150,15 @@ struct Closest {
 };
 Closest closest_points(Context& cx, const Bodies& B, const Judgement& j, const Q& r1, const Q& r2);
 
-// Vertices [base, base + count) of polyhedron i of a scene: the body a penetration depth speaks of
-// (all of a convex polytope's vertices, or one part's of an object made of parts).
-struct VertexRange {
-    size_t base, count;
-};
-// The depth a depth proof shows on the bodies B at (r1, r2): none for a separated pair (its
-// proof a separating normal), 0 for a touching pair, else the squared depth (FORMAT.md).
-std::optional<Q> proved_depth(Context& cx, const Scene& sc, const std::array<VertexRange, 2>& B, const J& pr,
-                              const std::string& wp, const Q& r1, const Q& r2);
-// A penetration_depth claim judged by its proof on the bodies B (the claim's shape checked by the
-// caller): the claimed value c within the tolerances of the exact depth the proof shows, and the
-// claimed direction dir, if any, one along which moving B2 that far separates them.
-bool judge_depth(Context& cx, const Scene& sc, const std::array<VertexRange, 2>& B, const Rules& R, const J& pr,
-                 const std::string& wp, const Q& r1, const Q& r2, const Q& c, const std::optional<V3>& dir);
+// The depth a depth proof shows on the two polytopes of the scene at (r1, r2): none for a
+// separated pair (its proof a separating normal), 0 for a touching pair, else the squared depth
+// (FORMAT.md).
+std::optional<Q> proved_depth(Context& cx, const Scene& sc, const J& pr, const std::string& wp, const Q& r1,
+                              const Q& r2);
+// A penetration_depth claim judged by its proof on the two polytopes of the scene (the claim's
+// shape checked by the caller): the claimed value c within the tolerances of the exact depth the
+// proof shows, and the claimed direction dir, if any, one along which moving P2 that far
+// separates them.
+bool judge_depth(Context& cx, const Scene& sc, const Rules& R, const J& pr, const std::string& wp, const Q& r1,
+                 const Q& r2, const Q& c, const std::optional<V3>& dir);
 }  // namespace scalecert_check

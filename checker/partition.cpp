@@ -153,7 +153,7 @@ void check_partition(Context& cx, const J& c) {
     // Regions: the rectangle cut along the curve, recomputed here and compared vertex by vertex.
     const J& reg = at(c, "regions");
     shape(cx, reg, "regions", {"overlap", "separated"});
-    std::vector<P2> rect = rectangle(sc);
+    std::vector<P2> rect = rectangle(sc.lo, sc.hi);
     const std::vector<P2> over = overlap_region(sc, rect, lines, ranges);
     const J& ov = at(reg, "overlap");
     shape(cx, ov, "regions.overlap", {"vertices", "vertices_double", "witnesses"});

@@ -6,31 +6,31 @@
 #include "scene.hpp"
 
 #include <array>
+#include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace scalecert_check {
 constexpr size_t kMaxCompoundParts = 10000;  // parts an object: scalecert's own limit
 
-// A scene of two objects made of parts: each object's parts, their vertices held as one list
-// (part k: [start[k], start[k + 1])), every part spanning 3 dimensions.
+// A scene of two objects made of parts: each object's seed, I1 and I2, and each part's vertices
+// scanned on their own, over the part's own common denominator (so the 16,384-bit limit is a
+// part's, and no part's support value pays for another's digits). Every part spans 3 dimensions.
 struct CompoundScene {
-    Scene sc;
-    std::vector<size_t> start[2];
-    size_t parts(int i) const { return start[i].size() - 1; }
-    // Part k of object i as [base, count) of the object's vertices.
-    std::array<size_t, 2> part(int i, size_t k) const { return {start[i][k], start[i][k + 1] - start[i][k]}; }
-    // The vertices of parts first..last of object i, ascending.
-    std::vector<int> verts(int i, size_t first, size_t last) const {
-        std::vector<int> v;
-        for (size_t k = start[i][first]; k < start[i][last + 1]; ++k) v.push_back(static_cast<int>(k));
-        return v;
-    }
+    V3 s[2];
+    Q lo[2], hi[2];
+    std::vector<std::shared_ptr<const Scan>> part[2];
+    size_t parts(int i) const { return part[i].size(); }
+    // The convex scene of part a of P1 and part b of P2 (the objects' seeds, I1 and I2): one pair's
+    // claims are checked on it, over the pair's joint denominator (scene.hpp).
+    Scene pair(Context& cx, size_t a, size_t b) const;
+    // max over the vertices v of parts first..last of object i of u·v, for an integer u: each
+    // part's maximum u·X/D from its scan, compared across parts by cross-multiplication.
+    Q top(Context& cx, int i, const Z3& u, size_t first, size_t last) const;
+    // The objects moved by pose[i] (none: as it is), every part's vertices and the seeds.
+    CompoundScene posed(Context& cx, const std::array<std::optional<Pose>, 2>& pose) const;
 };
-// The scene object of a compound certificate: P1 and P2 as `parts` (at most kMaxCompoundParts an
-// object, else unreadable) and `seed`, I1 and I2.
-CompoundScene read_compound_scene(Context& cx, const J& sj);
-
 // Blocks of part pairs, {"P1_parts": [a0, a1], "P2_parts": [b0, b1], ...} (P1 parts a0..a1 ×
 // P2 parts b0..b1), listed in increasing (a0, b0) order, that must cover every pair of the
 // m × n exactly once: a bit a pair (10^8 at most), counted.

@@ -82,8 +82,8 @@ std::vector<P2> cut(Context& cx, const std::vector<P2>& p, const Q& a, const Q& 
     return half_plane_cut(p, a, b, c);
 }
 
-std::vector<P2> rectangle(const Scene& sc) {
-    return normalize({{sc.lo[0], sc.lo[1]}, {sc.hi[0], sc.lo[1]}, {sc.hi[0], sc.hi[1]}, {sc.lo[0], sc.hi[1]}});
+std::vector<P2> rectangle(const Q (&lo)[2], const Q (&hi)[2]) {
+    return normalize({{lo[0], lo[1]}, {hi[0], lo[1]}, {hi[0], hi[1]}, {lo[0], hi[1]}});
 }
 
 std::vector<P2> polygon(Context& cx, const J& j, const std::string& where) {

@@ -26,8 +26,8 @@ std::vector<P2> half_plane_cut(const std::vector<P2>& p, const Q& a, const Q& b,
 std::vector<P2> clip(const std::vector<P2>& p, const Line& L, bool above);
 // half_plane_cut, counted before it runs.
 std::vector<P2> cut(Context& cx, const std::vector<P2>& p, const Q& a, const Q& b, const Q& c);
-// The rectangle I1 × I2 of the scene, written as above.
-std::vector<P2> rectangle(const Scene& sc);
+// The rectangle I1 × I2 (lo[0] <= ρ1 <= hi[0], lo[1] <= ρ2 <= hi[1]), written as above.
+std::vector<P2> rectangle(const Q (&lo)[2], const Q (&hi)[2]);
 
 // The polygon `vertices` of j, with `vertices_double` the nearest doubles of its coordinates.
 std::vector<P2> polygon(Context& cx, const J& j, const std::string& where);

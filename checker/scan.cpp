@@ -185,6 +185,41 @@ std::vector<int> Scan::argmax(Context& cx, const Z3& u, const std::vector<int>* 
     return both;
 }
 
+Direction::Direction(const Z3& v) : u(v) {
+    small = small_int(u[0].get_mpz_t(), w[0]) && small_int(u[1].get_mpz_t(), w[1]) && small_int(u[2].get_mpz_t(), w[2]);
+    for (const mpz_class& c : u) bits = std::max(bits, static_cast<int>(mpz_sizeinbase(c.get_mpz_t(), 2)));
+}
+
+void Scan::max_dot(Context& cx, const Direction& d, mpz_class& best) const {
+    if (P_.big.empty() && d.small) {
+        // Machine vertices and a machine normal: the bounds of argmax() (the header) in one pass.
+        const size_t n = P_.small();
+        const int64_t *x = P_.x[0].data(), *y = P_.x[1].data(), *z = P_.x[2].data();
+        if (bits_ + d.bits <= 61) {
+            cx.spend(static_cast<double>(n));
+            const int64_t a = d.w[0], b = d.w[1], c = d.w[2];
+            int64_t m = a * x[0] + b * y[0] + c * z[0];
+            for (size_t k = 1; k < n; ++k) m = std::max(m, a * x[k] + b * y[k] + c * z[k]);
+            if constexpr (sizeof(long) >= sizeof(int64_t))
+                mpz_set_si(best.get_mpz_t(), static_cast<long>(m));
+            else
+                best = z64(m);
+            return;
+        }
+        cx.spend(2.0 * static_cast<double>(n));
+        const __int128 a = d.w[0], b = d.w[1], c = d.w[2];
+        __int128 m = a * x[0] + b * y[0] + c * z[0];
+        for (size_t k = 1; k < n; ++k) m = std::max(m, a * x[k] + b * y[k] + c * z[k]);
+        best = from128(m);
+        return;
+    }
+    const Z3 X = this->X(static_cast<size_t>(argmax(cx, d.u)[0]));
+    double l = 0;
+    for (int c = 0; c < 3; ++c) l += (1 + limbs(d.u[c])) * (1 + limbs(X[c]));
+    cx.spend(20 + 4 * l);
+    best = dotz(d.u, X);
+}
+
 // About 40 units a vertex and half a unit a limb product (measured: 45 ns a vertex of one-limb
 // numbers, 250 ns for 256-limb coordinates and a one-limb normal).
 std::vector<int> Scan::mpz_scan(Context& cx, const Z3& u, const std::vector<int>& list, mpz_class& best) const {

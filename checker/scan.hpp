@@ -25,6 +25,16 @@
 #include <vector>
 
 namespace scalecert_check {
+// An integer direction u for many scans, with its int64 form (when every |u_c| < 2^62) and the
+// bit length of its largest coordinate found once.
+struct Direction {
+    explicit Direction(const Z3& u);
+    const Z3& u;
+    int64_t w[3] = {0, 0, 0};
+    bool small = false;
+    int bits = 0;
+};
+
 class Scan {
   public:
     // The vertices v of one polytope (`what` names it in messages); refused as unreadable when
@@ -35,6 +45,9 @@ class Scan {
     // The vertices k (of `subset`, ascending, or of all) at which u·v_k is largest, ascending.
     // u has integer coordinates.
     std::vector<int> argmax(Context& cx, const Z3& u, const std::vector<int>* subset = nullptr) const;
+    // The largest u·X_k over all the vertices, in `best` (the value argmax() maximises; a
+    // compound's block compares its parts' by it).
+    void max_dot(Context& cx, const Direction& d, mpz_class& best) const;
     const mpz_class& D() const { return D_; }
     Z3 X(size_t k) const;  // D v_k
     size_t size() const { return P_.n; }

@@ -80,8 +80,7 @@ void Scene::spend_at(Context& cx, int i, int k) const {
 
 // In one pass: a vertex that does not raise the dimension lies in the hull of those before,
 // which only grows. On X_k = D v_k (the same dimension).
-int affine_dim(Context& cx, const Scene& sc, int i, const std::vector<int>& idx) {
-    const Scan& s = *sc.scan[i];
+int affine_dim(Context& cx, const Scan& s, const std::vector<int>& idx) {
     const Z3& o = s.X(static_cast<size_t>(idx[0]));
     int dim = 0;
     Z3 e1, c, v, x;
@@ -140,9 +139,9 @@ void Vertices::add(Context& cx, const J& j, const std::string& where) {
     for (size_t k = 0; k < j.size(); ++k) rat_.push_back(point(cx, j[k], where + "[" + std::to_string(k) + "]"));
 }
 
-std::unique_ptr<Scan> Vertices::scan(Context& cx, const std::string& what) {
-    if (rational_) return std::make_unique<Scan>(cx, rat_, what);
-    return std::make_unique<Scan>(cx, std::move(ints_));
+std::shared_ptr<const Scan> Vertices::scan(Context& cx, const std::string& what) {
+    if (rational_) return std::make_shared<const Scan>(cx, rat_, what);
+    return std::make_shared<const Scan>(cx, std::move(ints_));
 }
 
 Scene read_scene(Context& cx, const J& j) {
@@ -157,10 +156,11 @@ Scene read_scene(Context& cx, const J& j) {
         Vertices v;
         v.add(cx, vs, w + ".vertices");
         cx.claim(v.size() >= 4, w + " has at least 4 vertices");
-        read_seed(cx, sc, i, p, w, v);
+        sc.s[i] = point(cx, at(p, "seed"), w + ".seed");
+        sc.scan[i] = v.scan(cx, kPoly[i]);
     }
     sc.prepare(cx);
-    read_ranges(cx, sc, j);
+    read_ranges(cx, sc.lo, sc.hi, j);
     return sc;
 }
 
@@ -191,40 +191,42 @@ std::array<std::optional<Pose>, 2> claim_poses(Context& cx, const J& cl, const s
     return pose;
 }
 
+std::shared_ptr<const Scan> posed_scan(Context& cx, const Scan& P, const Pose& m, const std::string& what) {
+    const size_t n = P.size();
+    std::vector<V3> v(n);
+    const Q D(P.D());
+    double lm = 0;
+    for (const auto& row : m)
+        for (const Q& e : row) lm = std::max(lm, qsize(e));
+    for (size_t k = 0; k < n; ++k) {
+        const Z3 X = P.X(k);
+        double lx = 0;
+        for (int c = 0; c < 3; ++c) lx = std::max(lx, limbs(X[c]));
+        cx.spend_ops(15, lx + limbs(P.D()) + lm);
+        V3 x;
+        for (int c = 0; c < 3; ++c) {
+            x[c] = Q(X[c]) / D;
+            x[c].canonicalize();
+        }
+        for (size_t r = 0; r < 3; ++r) v[k][r] = m[r][0] * x[0] + m[r][1] * x[1] + m[r][2] * x[2] + m[r][3];
+    }
+    return std::make_shared<const Scan>(cx, v, what);
+}
+
+V3 posed_point(const V3& x, const std::optional<Pose>& pose) {
+    if (!pose) return x;
+    const Pose& m = *pose;
+    V3 y;
+    for (size_t r = 0; r < 3; ++r) y[r] = m[r][0] * x[0] + m[r][1] * x[1] + m[r][2] * x[2] + m[r][3];
+    return y;
+}
+
+// A polyhedron without a pose keeps its scan.
 Scene posed_scene(Context& cx, const Scene& sc, const std::array<std::optional<Pose>, 2>& pose) {
     Scene out;
     for (int i = 0; i < 2; ++i) {
-        const size_t n = sc.count(i);
-        std::vector<V3> v(n);
-        const Q D(sc.scan[i]->D());
-        for (size_t k = 0; k < n; ++k) {
-            const Z3 X = sc.scan[i]->X(k);
-            double lx = 0;
-            for (int c = 0; c < 3; ++c) lx = std::max(lx, limbs(X[c]));
-            V3 x;
-            for (int c = 0; c < 3; ++c) {
-                x[c] = Q(X[c]) / D;
-                x[c].canonicalize();
-            }
-            if (pose[i]) {
-                const Pose& m = *pose[i];
-                double lm = 0;
-                for (const auto& row : m)
-                    for (const Q& e : row) lm = std::max(lm, qsize(e));
-                cx.spend_ops(15, lx + limbs(sc.scan[i]->D()) + lm);
-                for (size_t r = 0; r < 3; ++r) v[k][r] = m[r][0] * x[0] + m[r][1] * x[1] + m[r][2] * x[2] + m[r][3];
-            } else {
-                cx.spend_ops(3, lx + limbs(sc.scan[i]->D()));
-                v[k] = x;
-            }
-        }
-        out.scan[i] = std::make_unique<Scan>(cx, v, kPoly[i]);
-        out.s[i] = sc.s[i];
-        if (pose[i]) {
-            const Pose& m = *pose[i];
-            for (size_t r = 0; r < 3; ++r)
-                out.s[i][r] = m[r][0] * sc.s[i][0] + m[r][1] * sc.s[i][1] + m[r][2] * sc.s[i][2] + m[r][3];
-        }
+        out.scan[i] = pose[i] ? posed_scan(cx, *sc.scan[i], *pose[i], kPoly[i]) : sc.scan[i];
+        out.s[i] = posed_point(sc.s[i], pose[i]);
         out.lo[i] = sc.lo[i];
         out.hi[i] = sc.hi[i];
     }
@@ -232,25 +234,18 @@ Scene posed_scene(Context& cx, const Scene& sc, const std::array<std::optional<P
     return out;
 }
 
-void read_seed(Context& cx, Scene& sc, int i, const J& p, const std::string& w, Vertices& v) {
-    sc.s[i] = point(cx, at(p, "seed"), w + ".seed");
-    sc.scan[i] = v.scan(cx, kPoly[i]);
-}
-
-void read_ranges(Context& cx, Scene& sc, const J& j) {
+void read_ranges(Context& cx, Q (&lo)[2], Q (&hi)[2], const J& j) {
     const char* iv[2] = {"I1", "I2"};
     for (int i = 0; i < 2; ++i) {
         const J& r = at(j, iv[i]);
         cx.claim(r.is_array() && r.size() == 2, std::string("scene.") + iv[i] + " is [lo, hi]");
-        sc.lo[i] = num(cx, r[0], std::string("scene.") + iv[i] + "[0]");
-        sc.hi[i] = num(cx, r[1], std::string("scene.") + iv[i] + "[1]");
-        cx.claim(sgn(sc.lo[i]) > 0 && sc.lo[i] <= sc.hi[i], std::string("scene.") + iv[i] + " has 0 < lo <= hi");
+        lo[i] = num(cx, r[0], std::string("scene.") + iv[i] + "[0]");
+        hi[i] = num(cx, r[1], std::string("scene.") + iv[i] + "[1]");
+        cx.claim(sgn(lo[i]) > 0 && lo[i] <= hi[i], std::string("scene.") + iv[i] + " has 0 < lo <= hi");
     }
 }
 
-std::array<Q, 3> combination(Context& cx, const Scene& sc, int i, const J& w, const std::string& where,
-                             std::vector<int>* used, size_t base, size_t count) {
-    if (count == SIZE_MAX) count = sc.count(i);
+std::array<Q, 3> combination(Context& cx, const Scan& P, const J& w, const std::string& where, std::vector<int>* used) {
     cx.claim_lazy(w.is_array() && !w.empty(), [&] { return where + " is a nonempty list of weights"; });
     std::set<size_t> seen;
     Q total = 0;
@@ -258,7 +253,7 @@ std::array<Q, 3> combination(Context& cx, const Scene& sc, int i, const J& w, co
     for (size_t k = 0; k < w.size(); ++k) {
         auto wk = [&] { return where + "[" + std::to_string(k) + "]"; };  // (for a message only)
         cx.claim_lazy(w[k].is_array() && w[k].size() == 2, [&] { return wk() + " is [index, weight]"; });
-        size_t idx = base + index_at(cx, w[k][0], count, [&] { return wk() + " index"; });
+        size_t idx = index_at(cx, w[k][0], P.size(), [&] { return wk() + " index"; });
         cx.claim_lazy(seen.insert(idx).second, [&] { return wk() + " names a distinct vertex"; });
         Q l = num_at(cx, w[k][1], [&] { return wk() + " weight"; });
         cx.claim_lazy(sgn(l) > 0, [&] { return wk() + " weight is > 0"; });
@@ -267,7 +262,7 @@ std::array<Q, 3> combination(Context& cx, const Scene& sc, int i, const J& w, co
         cx.spend(100 *
                  (limbs(total.get_den()) + limbs(x[0].get_den()) + limbs(x[1].get_den()) + limbs(x[2].get_den())));
         total += l;
-        const Z3& X = sc.scan[i]->X(idx);
+        const Z3& X = P.X(idx);
         cx.spend(100 +
                  10 * (1 + limbs(l.get_num()) + limbs(l.get_den())) * (1 + limbs(X[0]) + limbs(X[1]) + limbs(X[2])));
         for (int c = 0; c < 3; ++c) x[c] += l * Q(X[c]);
@@ -282,7 +277,7 @@ void check_seed_interior(Context& cx, const Scene& sc, const J& j) {
     for (int i = 0; i < 2; ++i) {
         std::string w = std::string("seed_interior.") + kPoly[i];
         std::vector<int> used;
-        cx.claim(combination(cx, sc, i, at(j, kPoly[i]), w, &used) == sc.sdv[i], w + " combines to the seed");
+        cx.claim(combination(cx, *sc.scan[i], at(j, kPoly[i]), w, &used) == sc.sdv[i], w + " combines to the seed");
         const bool spans = affine_dim(cx, sc, i, used) == 3;
         cx.claim(spans, w + " uses vertices spanning 3 dimensions");
     }
@@ -291,16 +286,15 @@ void check_seed_interior(Context& cx, const Scene& sc, const J& j) {
 // The point is s + ρ Σ λ (v − s) on each side. With c = Σ λ X / D_i (combination()), the point
 // y = s + ρ (c − s) equals p iff ρ D_i c = D_i p + (ρ − 1) D_i s: products of the file's numbers
 // and the scene's.
-P2 check_witness(Context& cx, const Scene& sc, const J& w, const std::string& where, std::vector<int>* used,
-                 const std::array<std::array<size_t, 2>, 2>* parts) {
+P2 check_witness(Context& cx, const Scene& sc, const J& w, const std::string& where, std::vector<int>* used) {
     shape(cx, w, where, {"rho1", "rho1_double", "rho2", "rho2_double", "point", "point_double", "P1", "P2"});
     Q r1 = field(cx, w, "rho1", where), r2 = field(cx, w, "rho2", where);
     cx.claim_lazy(sgn(r1) >= 0 && sgn(r2) >= 0, [&] { return where + " scalings are >= 0"; });
     std::vector<Q> x = fields(cx, w, "point", 3, where);
     const Q* r[2] = {&r1, &r2};
     for (int i = 0; i < 2; ++i) {
-        std::array<Q, 3> c = combination(cx, sc, i, at(w, kPoly[i]), where + "." + kPoly[i], used ? &used[i] : nullptr,
-                                         parts ? (*parts)[i][0] : 0, parts ? (*parts)[i][1] : SIZE_MAX);
+        std::array<Q, 3> c =
+            combination(cx, *sc.scan[i], at(w, kPoly[i]), where + "." + kPoly[i], used ? &used[i] : nullptr);
         const Q D(sc.scan[i]->D());
         bool on = true;
         for (int k = 0; k < 3; ++k) on = on && *r[i] * c[k] == x[k] * D + (*r[i] - 1) * sc.sdv[i][k];

@@ -27,10 +27,10 @@ inline constexpr const char* kPoly[2] = {"P1", "P2"};
 struct Scene {
     V3 s[2];
     Q lo[2], hi[2];
-    std::unique_ptr<Scan> scan[2];
-    mpz_class Dj = 1, E[2];   // D* and D*/D_i
-    Z3 S[2], Delta;           // D* s_i and D* (s2 − s1)
-    std::array<Q, 3> sdv[2];  // D_i s_i = S_i / E_i (exact rationals), for the combinations over D_i
+    std::shared_ptr<const Scan> scan[2];  // (shared: a compound's pair scenes hold its parts' scans)
+    mpz_class Dj = 1, E[2];               // D* and D*/D_i
+    Z3 S[2], Delta;                       // D* s_i and D* (s2 − s1)
+    std::array<Q, 3> sdv[2];              // D_i s_i = S_i / E_i (exact rationals), for the combinations over D_i
 
     size_t count(int i) const { return scan[i]->size(); }  // the vertices of polyhedron i
     // D*, S_i, Delta and D_i s_i, once the vertices are scanned and the seeds read.
@@ -80,7 +80,7 @@ class Vertices {
     void add(Context& cx, const J& j, const std::string& where);
     size_t size() const { return rational_ ? rat_.size() : ints_.n; }
     // The scan of them all (`what` names the polyhedron): the vertices are moved into it.
-    std::unique_ptr<Scan> scan(Context& cx, const std::string& what);
+    std::shared_ptr<const Scan> scan(Context& cx, const std::string& what);
 
   private:
     IntPoints ints_;
@@ -99,30 +99,33 @@ std::array<std::optional<Pose>, 2> claim_poses(Context& cx, const J& cl, const s
 // The scene with polyhedron i moved by pose[i] (none: as it is), its seed too: a claim at poses
 // is judged on it (FORMAT.md, "A judgements file").
 Scene posed_scene(Context& cx, const Scene& sc, const std::array<std::optional<Pose>, 2>& pose);
-// The seed of polyhedron i (object p of the file, named w) and the scan of its vertices v.
-void read_seed(Context& cx, Scene& sc, int i, const J& p, const std::string& w, Vertices& v);
+// The vertices of P moved by the pose, scanned anew (`what` names them in the limit's message).
+std::shared_ptr<const Scan> posed_scan(Context& cx, const Scan& P, const Pose& pose, const std::string& what);
+// The point x moved by the pose (none: x).
+V3 posed_point(const V3& x, const std::optional<Pose>& pose);
 // I1 and I2 of a scene object: [lo, hi] with 0 < lo <= hi.
-void read_ranges(Context& cx, Scene& sc, const J& j);
+void read_ranges(Context& cx, Q (&lo)[2], Q (&hi)[2], const J& j);
 
-// The dimension of the affine hull of a vertex set of polyhedron i.
-int affine_dim(Context& cx, const Scene& sc, int i, const std::vector<int>& idx);
+// The dimension of the affine hull of a vertex set of a polytope (of polyhedron i of a scene).
+int affine_dim(Context& cx, const Scan& P, const std::vector<int>& idx);
+inline int affine_dim(Context& cx, const Scene& sc, int i, const std::vector<int>& idx) {
+    return affine_dim(cx, *sc.scan[i], idx);
+}
 // The letter of a vertex set: the dimension of its affine hull (V: a point, E: a segment, F: a
 // polygon or more).
 char dimension_letter(Context& cx, const Scene& sc, int i, const std::vector<int>& idx);
 
-// Weights [[index, "w"], ...] over polyhedron i: distinct indices, w > 0, sum 1. Returns
-// D_i Σ w v = Σ w X: each term a product of the file's weight and the scene's integers.
-// Indices are into the vertices [base, base + count) of the polyhedron (a compound's part), base
-// added: by default all of them. The vertices named are appended to *used.
-std::array<Q, 3> combination(Context& cx, const Scene& sc, int i, const J& w, const std::string& where,
-                             std::vector<int>* used = nullptr, size_t base = 0, size_t count = SIZE_MAX);
+// Weights [[index, "w"], ...] over the vertices of a polytope P (a polyhedron, or a compound's
+// part): distinct indices, w > 0, sum 1. Returns D Σ w v = Σ w X (D: P's common denominator):
+// each term a product of the file's weight and the scene's integers. The vertices named are
+// appended to *used.
+std::array<Q, 3> combination(Context& cx, const Scan& P, const J& w, const std::string& where,
+                             std::vector<int>* used = nullptr);
 // The seed is a strictly positive combination of vertices that span 3 dimensions: interior.
 void check_seed_interior(Context& cx, const Scene& sc, const J& j);
 // A witness: a common point of P1(ρ1) and P2(ρ2). Returns (ρ1, ρ2); the vertices each side
-// weights are appended to used[0], used[1]. parts: for a compound, each side's part as
-// [base, count) of its vertices (combination()).
-P2 check_witness(Context& cx, const Scene& sc, const J& w, const std::string& where, std::vector<int>* used = nullptr,
-                 const std::array<std::array<size_t, 2>, 2>* parts = nullptr);
+// weights are appended to used[0], used[1].
+P2 check_witness(Context& cx, const Scene& sc, const J& w, const std::string& where, std::vector<int>* used = nullptr);
 // A two-letter contact label.
 std::string contact_string(Context& cx, const J& j, const std::string& where);
 }  // namespace scalecert_check
