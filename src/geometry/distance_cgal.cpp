@@ -52,10 +52,7 @@ K::Point_3 homogeneous(const Vec3q& p) {
     const Vec3z z = over_common_denominator(p, w);
     return K::Point_3(gz(z[0]), gz(z[1]), gz(z[2]), gz(w));
 }
-Vec3q scaled(const PointSets& S, int i, const Q& rho, int k) {
-    const Vec3q x = S.point(i, k), s = S.seed(i);
-    return {s[0] + rho * (x[0] - s[0]), s[1] + rho * (x[1] - s[1]), s[2] + rho * (x[2] - s[2])};
-}
+Vec3q scaled(const PointSets& S, int i, const Q& rho, int k) { return scaled_about(S.seed(i), rho, S.point(i, k)); }
 
 // Weights > 0 summing to 1 on some of the points `pts` (indices `idx`) that combine to x, which
 // lies in their convex hull: Carathéodory on the QP's support points (at most four a side), each
@@ -118,12 +115,16 @@ std::vector<std::pair<int, Q>> convex_weights(const std::vector<Vec3q>& pts, con
 std::optional<ProvedDistance> proved_distance(const PointSets& S, const Q& rho1, const Q& rho2, int max_rounds) {
     const GjkGuess g = gjk_guess(S, to_double_rn(rho1), to_double_rn(rho2));
     if (std::optional<ProvedDistance> e = exact_gjk(S, rho1, rho2, g.simplex, kExactGjkRounds)) return e;
-    return proved_distance_by_qp(S, rho1, rho2, max_rounds);
+    return proved_distance_by_qp(S, rho1, rho2, g, max_rounds);
 }
 
 std::optional<ProvedDistance> proved_distance_by_qp(const PointSets& S, const Q& rho1, const Q& rho2, int max_rounds) {
+    return proved_distance_by_qp(S, rho1, rho2, gjk_guess(S, to_double_rn(rho1), to_double_rn(rho2)), max_rounds);
+}
+
+std::optional<ProvedDistance> proved_distance_by_qp(const PointSets& S, const Q& rho1, const Q& rho2, const GjkGuess& g,
+                                                    int max_rounds) {
     // The closest points of the vertices the double GJK names, then the slab.
-    const GjkGuess g = gjk_guess(S, to_double_rn(rho1), to_double_rn(rho2));
     ProvedDistance r;
     r.by_qp = true;
     std::vector<int> idx[2] = {g.v1, g.v2};

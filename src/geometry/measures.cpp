@@ -13,10 +13,7 @@
 
 namespace scalecert::internal {
 
-Vec3q scaled_point(const Bodies& m, int i, const Q& rho, const Vec3q& x) {
-    const Vec3q& s = m.s[i];
-    return {s[0] + rho * (x[0] - s[0]), s[1] + rho * (x[1] - s[1]), s[2] + rho * (x[2] - s[2])};
-}
+Vec3q scaled_point(const Bodies& m, int i, const Q& rho, const Vec3q& x) { return scaled_about(m.s[i], rho, x); }
 
 bool contains(const Bodies& m, int i, const Q& rho, const Vec3q& x) {
     const Vec3q& s = m.s[i];
@@ -96,12 +93,13 @@ Vec3z DifferenceGrid::body(int i, int k) const {
             Z(shift_[i][2] + factor_[i] * x[2])};
 }
 
-Vec3q DifferenceGrid::scaled(int i, int k) const {
-    const Vec3q x = S_.point(i, k), &s = S_.seed(i);
-    return {s[0] + rho_[i] * (x[0] - s[0]), s[1] + rho_[i] * (x[1] - s[1]), s[2] + rho_[i] * (x[2] - s[2])};
-}
+Vec3q DifferenceGrid::scaled(int i, int k) const { return scaled_about(S_.seed(i), rho_[i], S_.point(i, k)); }
 
 namespace {
+// The faces of a tetrahedron of points 0..3, each three corners and the point off it: both EPAs
+// start from it, each face turned to face away from its fourth point.
+constexpr int kTetrahedronFaces[4][4] = {{0, 1, 2, 3}, {0, 3, 1, 2}, {0, 2, 3, 1}, {1, 3, 2, 0}};
+
 // The directed edges of a closed triangulated surface (both EPAs' polytope): edge (a, b) -> the
 // live triangle that holds it.
 struct EdgeIndex {
@@ -260,9 +258,7 @@ struct Epa {
             if (independent(p.z)) base.push_back(p);
         }
         for (const MPoint& p : base) add_point(p);
-        // Faces of the tetrahedron, each turned to face away from the fourth point.
-        const int f[4][4] = {{0, 1, 2, 3}, {0, 3, 1, 2}, {0, 2, 3, 1}, {1, 3, 2, 0}};
-        for (const auto& q : f) {
+        for (const auto& q : kTetrahedronFaces) {
             const Vec3z& A = pts[static_cast<size_t>(q[0])].z;
             const Vec3z N = cross(sub(pts[static_cast<size_t>(q[1])].z, A), sub(pts[static_cast<size_t>(q[2])].z, A));
             if (sgn(dotz(N, sub(pts[static_cast<size_t>(q[3])].z, A))) > 0)
@@ -351,8 +347,7 @@ std::optional<GuessedSurface> double_epa(const PointSets& S, double rho1, double
         return edges.add(tris.back().v, k);
     };
     for (const auto& [i, j] : tetrahedron) add_point(i, j);
-    const int f[4][4] = {{0, 1, 2, 3}, {0, 3, 1, 2}, {0, 2, 3, 1}, {1, 3, 2, 0}};
-    for (const auto& q : f) {
+    for (const auto& q : kTetrahedronFaces) {
         const D3 N = crossd(subd(z[static_cast<size_t>(q[1])], z[static_cast<size_t>(q[0])]),
                             subd(z[static_cast<size_t>(q[2])], z[static_cast<size_t>(q[0])]));
         const bool flip = dotd(N, subd(z[static_cast<size_t>(q[3])], z[static_cast<size_t>(q[0])])) > 0;

@@ -1,6 +1,7 @@
 // Exact measures at one scaling pair (ρ1, ρ2), for certifying what floating-point collision code
 // outputs besides verdicts. Squares throughout: no root is ever taken.
 #pragma once
+#include "geometry/gjk.hpp"
 #include "geometry/point_sets.hpp"
 
 #include <array>
@@ -54,7 +55,10 @@ std::optional<ProvedDistance> proved_distance(const PointSets& S, const Q& rho1,
 std::optional<ProvedDistance> exact_gjk(const PointSets& S, const Q& rho1, const Q& rho2,
                                         const std::vector<std::pair<int, int>>& start, int max_rounds);
 constexpr int kExactGjkRounds = 32;
-// proved_distance's second stage alone: CGAL's QP on the double GJK's vertices, then the slab.
+// proved_distance's second stage: CGAL's QP on the vertices of the double GJK's guess g, then the
+// slab; without g, the stage alone (its own guess).
+std::optional<ProvedDistance> proved_distance_by_qp(const PointSets& S, const Q& rho1, const Q& rho2, const GjkGuess& g,
+                                                    int max_rounds = kProvedDistanceRounds);
 std::optional<ProvedDistance> proved_distance_by_qp(const PointSets& S, const Q& rho1, const Q& rho2,
                                                     int max_rounds = kProvedDistanceRounds);
 

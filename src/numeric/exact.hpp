@@ -34,6 +34,10 @@ template <class T>
 inline std::array<T, 3> cross(const std::array<T, 3>& a, const std::array<T, 3>& b) {
     return {T(a[1] * b[2] - a[2] * b[1]), T(a[2] * b[0] - a[0] * b[2]), T(a[0] * b[1] - a[1] * b[0])};
 }
+// s + ρ(x − s): the point x scaled by ρ about s.
+inline Vec3q scaled_about(const Vec3q& s, const Q& rho, const Vec3q& x) {
+    return {s[0] + rho * (x[0] - s[0]), s[1] + rho * (x[1] - s[1]), s[2] + rho * (x[2] - s[2])};
+}
 inline bool is_zero(const Vec3z& v) { return sgn(v[0]) == 0 && sgn(v[1]) == 0 && sgn(v[2]) == 0; }
 inline Vec3q to_q(const Vec3z& v) { return {Q(v[0]), Q(v[1]), Q(v[2])}; }
 inline Vec3z neg(const Vec3z& v) { return {Z(-v[0]), Z(-v[1]), Z(-v[2])}; }

@@ -153,16 +153,18 @@ static_assert(kArcBoxPad > 1e4 * 2 * kArcExtremeSkip && kArcBoxPad > 1e6 * 10 * 
 static_assert(kArcBoxPad > 100 * (10 * kUnit / kArcIllConditioned), "ill-conditioned arcs");
 
 // 7. Exact support queries on a point cloud (scan.cpp): n·x for integer points |x| ≤ 2^53 (exact
-//    doubles) and n rounded once: |fl(n·x) − n·x| ≤ (u + γ3)·Σ|n_k|·max|x_k| < 4.01u·B, and a
-//    box's bound Σ max(n_k lo_k, n_k hi_k) errs as much. The filter uses E = kScanSupport·B = 8u·B:
-//    a true maximiser's value is at least best − 2e ≥ best − 2E (the candidate margin), and its
-//    box's bound at least best − 3e ≥ best − 4E (the pruning margin). Factor 2.
+//    doubles) and n converted from GMP integers (mpz_get_d and mpz_get_d_2exp truncate: within 2u
+//    relative; a power-of-two scaling of n past the double range is exact):
+//    |fl(n·x) − n·x| ≤ (2u + γ3)·Σ|n_k|·max|x_k| < 5.01u·B, and a box's bound
+//    Σ max(n_k lo_k, n_k hi_k) errs as much. The filter uses E = kScanSupport·B = 8u·B: a true
+//    maximiser's value is at least best − 2e ≥ best − 2E (the candidate margin), and its box's
+//    bound at least best − 3e ≥ best − 4E (the pruning margin). Factor 1.5 (8u over 5.01u).
 //    kScanPruneEvery: the candidate list is pruned (to values ≥ best − 2E) once it exceeds this
 //    many entries: for memory only; a pruned point is below the final candidate floor too (best
 //    only grows), so the candidates compared exactly are the same whenever pruning happens.
 constexpr double kScanSupport = 0x1p-50;
 constexpr std::size_t kScanPruneEvery = 64;
-static_assert(kScanSupport > 1.9 * (kUnit + gamma(3)), "scan support bound");
+static_assert(kScanSupport > 1.5 * (2 * kUnit + gamma(3)), "scan support bound");
 
 // 8. A scaling pair (x, y) against a part pair's half-plane a·x + b·y >= c (compound/region.cpp):
 //    a, b, c, x, y are exact rationals read by region_double (mpq's get_d truncates: within 2u
