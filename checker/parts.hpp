@@ -6,6 +6,7 @@
 #include "scene.hpp"
 
 #include <array>
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -22,6 +23,18 @@ struct CompoundScene {
     Q lo[2], hi[2];
     std::vector<std::shared_ptr<const Scan>> part[2];
     size_t parts(int i) const { return part[i].size(); }
+    // Each object's parts of machine-size coordinates (Scan::machine()) once more, one array per
+    // coordinate holding every such part's vertices in order, so that a block's scan runs through
+    // memory in order (the parts' own arrays lie wherever they were read: measured 400 ns a
+    // part out of cache against 18 ns in order). index(): fills them from `part`.
+    struct Flat {
+        size_t begin = 0, end = 0;  // the part's vertices in x, y, z (end = begin: not a machine part)
+        int bits = 0;               // Scan::bits()
+        unsigned long den = 0;      // its D when an unsigned long holds it, else 0
+    };
+    std::vector<Flat> flat[2];
+    std::vector<int64_t> x[2][3];
+    void index(Context& cx);
     // The convex scene of part a of P1 and part b of P2 (the objects' seeds, I1 and I2): one pair's
     // claims are checked on it, over the pair's joint denominator (scene.hpp).
     Scene pair(Context& cx, size_t a, size_t b) const;

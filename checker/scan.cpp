@@ -93,6 +93,24 @@ Scan::Scan(Context& cx, const std::vector<V3>& v, const std::string& what) {
     index();
 }
 
+Scan::Scan(Context& cx, std::vector<Z3>&& X, mpz_class D, const std::string& what) : D_(std::move(D)) {
+    if (mpz_sizeinbase(D_.get_mpz_t(), 2) > 16384)
+        throw Unreadable{"the common denominator of " + what +
+                         "'s vertex coordinates has more than 16384 bits (scalecert's own limit)"};
+    cx.spend(static_cast<double>(X.size()) * (10 + 3 * limbs(D_)));
+    for (auto& c : P_.x) c.reserve(X.size());
+    for (Z3& p : X) {
+        int64_t x[3] = {0, 0, 0};
+        bool small = true;
+        for (int c = 0; c < 3; ++c) small = small_int(p[c].get_mpz_t(), x[c]) && small;
+        if (small)
+            P_.add_small(x);
+        else
+            P_.add_big(std::move(p));
+    }
+    index();
+}
+
 // Integers: D = 1 and X_k = v_k, counted as the rational constructor counts them.
 Scan::Scan(Context& cx, IntPoints&& v) : P_(std::move(v)) {
     cx.spend(static_cast<double>(P_.n) * (10 + 3 * limbs(D_)));

@@ -42,6 +42,10 @@ class Scan {
     Scan(Context& cx, const std::vector<V3>& v, const std::string& what);
     // The vertices of one polytope of integer coordinates, as the reader holds them (D = 1).
     Scan(Context& cx, IntPoints&& v);
+    // Vertices v_k = X_k / D given over a common denominator D > 0 that need not be the least
+    // (posed vertices: the pose's denominators times the polytope's); refused as unreadable past
+    // 16,384 bits, as the engine refuses such a pose.
+    Scan(Context& cx, std::vector<Z3>&& X, mpz_class D, const std::string& what);
     // The vertices k (of `subset`, ascending, or of all) at which u·v_k is largest, ascending.
     // u has integer coordinates.
     std::vector<int> argmax(Context& cx, const Z3& u, const std::vector<int>* subset = nullptr) const;
@@ -51,6 +55,11 @@ class Scan {
     const mpz_class& D() const { return D_; }
     Z3 X(size_t k) const;  // D v_k
     size_t size() const { return P_.n; }
+    // Whether every X coordinate is below 2^62 in magnitude; then coords(c) holds coordinate c of
+    // every vertex in order, each below 2^bits().
+    bool machine() const { return P_.big.empty(); }
+    const int64_t* coords(int c) const { return P_.x[c].data(); }
+    int bits() const { return bits_; }
 
   private:
     mpz_class D_ = 1;

@@ -191,26 +191,41 @@ std::array<std::optional<Pose>, 2> claim_poses(Context& cx, const J& cl, const s
     return pose;
 }
 
+// With L the lcm of the pose's denominators, x = X / D moves to R x + t = (L R X + D L t) / (D L):
+// integer products over the common denominator D L (the bound the engine refuses a pose past).
 std::shared_ptr<const Scan> posed_scan(Context& cx, const Scan& P, const Pose& m, const std::string& what) {
-    const size_t n = P.size();
-    std::vector<V3> v(n);
-    const Q D(P.D());
+    mpz_class L = 1;
     double lm = 0;
     for (const auto& row : m)
-        for (const Q& e : row) lm = std::max(lm, qsize(e));
-    for (size_t k = 0; k < n; ++k) {
-        const Z3 X = P.X(k);
-        double lx = 0;
-        for (int c = 0; c < 3; ++c) lx = std::max(lx, limbs(X[c]));
-        cx.spend_ops(15, lx + limbs(P.D()) + lm);
-        V3 x;
-        for (int c = 0; c < 3; ++c) {
-            x[c] = Q(X[c]) / D;
-            x[c].canonicalize();
+        for (const Q& e : row) {
+            mpz_lcm(L.get_mpz_t(), L.get_mpz_t(), e.get_den_mpz_t());
+            lm = std::max(lm, qsize(e));
         }
-        for (size_t r = 0; r < 3; ++r) v[k][r] = m[r][0] * x[0] + m[r][1] * x[1] + m[r][2] * x[2] + m[r][3];
+    cx.spend_ops(12, lm + limbs(L));
+    mpz_class M[3][3];
+    Z3 T;
+    const mpz_class DL = P.D() * L;
+    for (size_t r = 0; r < 3; ++r) {
+        for (size_t c = 0; c < 3; ++c) M[r][c] = m[r][c].get_num() * (L / m[r][c].get_den());
+        T[r] = m[r][3].get_num() * (DL / m[r][3].get_den());
     }
-    return std::make_shared<const Scan>(cx, v, what);
+    double lM = 0, lT = 0;
+    for (size_t r = 0; r < 3; ++r) {
+        lT = std::max(lT, limbs(T[r]));
+        for (size_t c = 0; c < 3; ++c) lM = std::max(lM, limbs(M[r][c]));
+    }
+    std::vector<Z3> out(P.size());
+    for (size_t k = 0; k < P.size(); ++k) {
+        const Z3 X = P.X(k);
+        const double lx = std::max({limbs(X[0]), limbs(X[1]), limbs(X[2])});
+        cx.spend(300 + 12 * (1 + lM) * (1 + lx) + 3 * (lT + lM + lx));
+        for (size_t r = 0; r < 3; ++r) {
+            mpz_class& y = out[k][r];
+            y = T[r];
+            for (size_t c = 0; c < 3; ++c) mpz_addmul(y.get_mpz_t(), M[r][c].get_mpz_t(), X[c].get_mpz_t());
+        }
+    }
+    return std::make_shared<const Scan>(cx, std::move(out), DL, what);
 }
 
 V3 posed_point(const V3& x, const std::optional<Pose>& pose) {
