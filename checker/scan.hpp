@@ -42,9 +42,8 @@ class Scan {
     Scan(Context& cx, const std::vector<V3>& v, const std::string& what);
     // The vertices of one polytope of integer coordinates, as the reader holds them (D = 1).
     Scan(Context& cx, IntPoints&& v);
-    // Vertices v_k = X_k / D given over a common denominator D > 0 that need not be the least
-    // (posed vertices: the pose's denominators times the polytope's); refused as unreadable past
-    // 16,384 bits, as the engine refuses such a pose.
+    // Vertices v_k = X_k / D given over their least common denominator D > 0 (posed vertices);
+    // refused as unreadable past 16,384 bits.
     Scan(Context& cx, std::vector<Z3>&& X, mpz_class D, const std::string& what);
     // The vertices k (of `subset`, ascending, or of all) at which u·v_k is largest, ascending.
     // u has integer coordinates.

@@ -192,7 +192,9 @@ std::array<std::optional<Pose>, 2> claim_poses(Context& cx, const J& cl, const s
 }
 
 // With L the lcm of the pose's denominators, x = X / D moves to R x + t = (L R X + D L t) / (D L):
-// integer products over the common denominator D L (the bound the engine refuses a pose past).
+// integer products over the common denominator D L, then divided by the gcd of D L and every
+// moved coordinate (the least common denominator, which the 16,384-bit limit is on: the engine
+// takes a compound part moved by a pose whose entries cancel its vertices' factors).
 std::shared_ptr<const Scan> posed_scan(Context& cx, const Scan& P, const Pose& m, const std::string& what) {
     mpz_class L = 1;
     double lm = 0;
@@ -225,7 +227,19 @@ std::shared_ptr<const Scan> posed_scan(Context& cx, const Scan& P, const Pose& m
             for (size_t c = 0; c < 3; ++c) mpz_addmul(y.get_mpz_t(), M[r][c].get_mpz_t(), X[c].get_mpz_t());
         }
     }
-    return std::make_shared<const Scan>(cx, std::move(out), DL, what);
+    mpz_class g = DL;
+    for (size_t k = 0; k < out.size() && g != 1; ++k)
+        for (int c = 0; c < 3 && g != 1; ++c) {
+            cx.spend(50 + 4 * (1 + limbs(g)) * (1 + limbs(out[k][c])));
+            mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), out[k][c].get_mpz_t());
+        }
+    if (g == 1) return std::make_shared<const Scan>(cx, std::move(out), DL, what);
+    for (Z3& y : out)
+        for (mpz_class& c : y) {
+            cx.spend(20 + 2 * (1 + limbs(c)) * (1 + limbs(g)));
+            mpz_divexact(c.get_mpz_t(), c.get_mpz_t(), g.get_mpz_t());
+        }
+    return std::make_shared<const Scan>(cx, std::move(out), DL / g, what);
 }
 
 V3 posed_point(const V3& x, const std::optional<Pose>& pose) {

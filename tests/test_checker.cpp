@@ -2136,6 +2136,51 @@ BOOST_AUTO_TEST_CASE(parts_are_checked_over_their_own_denominators) {
     }
 }
 
+BOOST_AUTO_TEST_CASE(a_pose_whose_denominators_cancel_the_vertices_factors_is_checked) {
+    // P1 the box [0, 3^4417] x [0, 5^3015] x [0, 7^2493] (about 7,000 bits a side), pose1 the
+    // diagonal matrix of their inverses: the moved box is the unit cube, integers, though the
+    // pose's denominators together have about 21,000 bits. P2 the unit cube at x in [2, 3]; seeds
+    // the centres. At (1, 1) the cubes are 1 apart along x: separated, at distance 1.
+    mpz_class e[3];
+    mpz_ui_pow_ui(e[0].get_mpz_t(), 3, 4417);
+    mpz_ui_pow_ui(e[1].get_mpz_t(), 5, 3015);
+    mpz_ui_pow_ui(e[2].get_mpz_t(), 7, 2493);
+    mpz_class L = e[0] * e[1] * e[2];
+    BOOST_TEST(mpz_sizeinbase(L.get_mpz_t(), 2) > 16384);
+    OJ box = OJ::array(), cube = OJ::array();
+    for (int c = 0; c < 8; ++c) {
+        OJ v = OJ::array(), w = OJ::array();
+        for (int k = 0; k < 3; ++k) {
+            v.push_back((c >> k & 1) ? e[k].get_str() : "0");
+            w.push_back(std::to_string((k == 0 ? 2 : 0) + (c >> k & 1)));
+        }
+        box.push_back(v);
+        cube.push_back(w);
+    }
+    const OJ scene{{"P1",
+                    {{"parts", {{{"vertices", box}}}},
+                     {"seed", {Q(e[0], 2).get_str(), Q(e[1], 2).get_str(), Q(e[2], 2).get_str()}}}},
+                   {"P2", {{"parts", {{{"vertices", cube}}}}, {"seed", {"5/2", "1/2", "1/2"}}}},
+                   {"I1", {"1/2", "2"}},
+                   {"I2", {"1/2", "2"}}};
+    const fs::path sp = tmpdir() / "cancelling_pose.json";
+    save(scene, sp);
+    OJ pose = OJ::array();
+    for (int r = 0; r < 3; ++r) {
+        OJ row = OJ::array();
+        for (int c = 0; c < 4; ++c) row.push_back(r == c ? Q(mpz_class(1), e[r]).get_str() : "0");
+        pose.push_back(row);
+    }
+    const OJ claims{{"format", "scalecert-claims-1"},
+                    {"claims",
+                     {{{"kind", "verdict"}, {"rho1", 1}, {"rho2", 1}, {"verdict", "separated"}, {"pose1", pose}},
+                      {{"kind", "distance"}, {"rho1", 1}, {"rho2", 1}, {"value", 1}, {"pose1", pose}}}}};
+    const OJ j = compound_judgements(sp, claims.dump(), "cancelling_pose");  // checked: exit 0
+    BOOST_TEST(j["judgements"][0]["right"] == true);
+    BOOST_TEST(j["judgements"][1]["right"] == true);
+    BOOST_TEST(j["judgements"][1]["proof"]["squared"] == "1");
+}
+
 // ---- vertex lists read straight from the text ----------------------------------------------------
 // The reader takes a scene's vertex list of integers into int64 (GMP integers past 2^62) without
 // building a tree of strings (json.hpp, parse_certificate); any other list goes into the tree and

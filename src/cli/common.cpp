@@ -30,8 +30,8 @@ void SceneArgs::add(CLI::App* sub) {
     sub->add_flag(
         "--parts-from-groups", opt.parts_from_groups,
         "read each OBJ mesh of an object (--p1, --p2, or an object's \"mesh\" in SCENE) as an object made of convex "
-        "parts: a part per 'o' or 'g' group, of the vertices its faces name (other mesh formats are refused: they have "
-        "no groups)");
+        "parts: a part per 'o' or 'g' group, of the vertices its faces name (an OFF, PLY or STL mesh stays one convex "
+        "object: those formats have no groups)");
 }
 
 void say_notes(const internal::ExactScene& sc) {
