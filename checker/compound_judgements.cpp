@@ -32,7 +32,7 @@ Q block_floor(Context& cx, const CompoundScene& cs, int i, const V3& n, const Q&
 // s + rho (Σ w v − s) for weights over part k of object i (indices into the part's own points).
 V3 part_point(Context& cx, const CompoundScene& cs, int i, size_t k, const Q& rho, const J& w, const std::string& where,
               std::vector<int>* used = nullptr) {
-    return body_point(cx, *cs.part[i][k], cs.s[i], rho, w, where, used);
+    return body_point(cx, cs.part(i, k), cs.s[i], rho, w, where, used);
 }
 // [k, j]: a part of P1 and a part of P2.
 std::array<size_t, 2> part_pair(Context& cx, const CompoundScene& cs, const J& j, const std::string& where) {
@@ -133,7 +133,7 @@ bool judge(Context& cx, const CompoundScene& cs, const Rules& R, const Judgement
             const V3 y = part_point(cx, cs, 1, kj[1], r2, at(in, "P2"), wp + ".interior.P2", &used[1]);
             cx.claim(x == y, wp + ".interior is one point of both parts");
             for (int i = 0; i < 2; ++i)
-                cx.claim(affine_dim(cx, *cs.part[i][kj[i]], used[i]) == 3,
+                cx.claim(affine_dim(cx, cs.part(i, kj[i]), used[i]) == 3,
                          wp + ".interior." + kPoly[i] + " uses points spanning 3 dimensions (an interior point)");
         } else if (v == "touching" || v == "separated") {
             // Every pair apart by a plane (weakly: no interiors meet; strictly: none meets); touching

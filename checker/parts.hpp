@@ -15,33 +15,41 @@
 namespace scalecert_check {
 constexpr size_t kMaxCompoundParts = 10000;  // parts an object: scalecert's own limit
 
-// A scene of two objects made of parts: each object's seed, I1 and I2, and each part's vertices
-// scanned on their own, over the part's own common denominator (so the 16,384-bit limit is a
-// part's, and no part's support value pays for another's digits). Every part spans 3 dimensions.
-struct CompoundScene {
-    V3 s[2];
-    Q lo[2], hi[2];
-    std::vector<std::shared_ptr<const Scan>> part[2];
-    size_t parts(int i) const { return part[i].size(); }
-    // Each object's parts of machine-size coordinates (Scan::machine()) once more, one array per
-    // coordinate holding every such part's vertices in order, so that a block's scan runs through
-    // memory in order (the parts' own arrays lie wherever they were read: measured 400 ns a
-    // part out of cache against 18 ns in order). index(): fills them from `part`.
+// One object made of parts: each part's vertices scanned on their own, over the part's own common
+// denominator (so the 16,384-bit limit is a part's, and no part's support value pays for
+// another's digits); and its parts of machine-size coordinates (Scan::machine()) once more, one
+// array per coordinate holding every such part's vertices in order, so that a block's scan runs
+// through memory in order (the parts' own arrays lie wherever they were read: measured 400 ns a
+// part out of cache against 18 ns in order).
+struct CompoundObject {
     struct Flat {
-        size_t begin = 0, end = 0;  // the part's vertices in x, y, z (end = begin: not a machine part)
+        size_t begin = 0, end = 0;  // the part's vertices in x (end = begin: not a machine part)
         int bits = 0;               // Scan::bits()
         unsigned long den = 0;      // its D when an unsigned long holds it, else 0
     };
-    std::vector<Flat> flat[2];
-    std::vector<int64_t> x[2][3];
+    std::vector<std::shared_ptr<const Scan>> part;
+    std::vector<Flat> flat;
+    std::vector<int64_t> x[3];
+    // flat and x, from part.
     void index(Context& cx);
+};
+
+// A scene of two objects made of parts: each object's seed, I1 and I2, and its parts (shared by
+// the scenes a claim's poses make: an object without a pose is not copied). Every part spans 3
+// dimensions.
+struct CompoundScene {
+    V3 s[2];
+    Q lo[2], hi[2];
+    std::shared_ptr<const CompoundObject> obj[2];
+    size_t parts(int i) const { return obj[i]->part.size(); }
+    const Scan& part(int i, size_t k) const { return *obj[i]->part[k]; }
     // The convex scene of part a of P1 and part b of P2 (the objects' seeds, I1 and I2): one pair's
     // claims are checked on it, over the pair's joint denominator (scene.hpp).
     Scene pair(Context& cx, size_t a, size_t b) const;
     // max over the vertices v of parts first..last of object i of u·v, for an integer u: each
     // part's maximum u·X/D from its scan, compared across parts by cross-multiplication.
     Q top(Context& cx, int i, const Z3& u, size_t first, size_t last) const;
-    // The objects moved by pose[i] (none: as it is), every part's vertices and the seeds.
+    // The objects moved by pose[i] (none: as it is, shared), every part's vertices and the seeds.
     CompoundScene posed(Context& cx, const std::array<std::optional<Pose>, 2>& pose) const;
 };
 // Blocks of part pairs, {"P1_parts": [a0, a1], "P2_parts": [b0, b1], ...} (P1 parts a0..a1 ×

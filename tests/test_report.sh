@@ -91,8 +91,9 @@ $PY "$SRC/tools/report.py" audit.json --out deep.html --scalecert ./deep.sh 2> e
 # The page, loaded: its status line, and no script error in the console.
 browse --enable-logging=stderr --v=0 --dump-dom "file://$WORK/report.html" > dom.html 2> console.txt
 grep -q 'id="status"[^>]*>charts drawn: 2; 3-D views drawn: 1<' dom.html || bad "status: $(grep -o 'id="status"[^<]*' dom.html)"
-# The distances and depths the audit listed past its tolerance: one table row each (and its header).
-want=$($PY -c 'import json; print(sum(len(r.get("measure_failures", [])) for r in json.load(open("audit.json"))))')
+# The distances and depths the audit listed past its tolerance: one table row each (and its header),
+# the first 250 drawn with the page.
+want=$($PY -c 'import json; print(min(250, sum(len(r.get("measure_failures", [])) for r in json.load(open("audit.json")))))')
 got=$($PY -c 'import re; t = open("dom.html").read(); m = re.search(r"<table id=\"measures\">(.*?)</table>", t, re.S); print(m.group(1).count("<tr>") - 1 if m else -1)')
 [ "$want" -gt 0 ] && [ "$got" = "$want" ] || bad "measures table: $got rows for $want listed"
 if grep "CONSOLE" console.txt | grep -v "GL Driver Message" | grep -q .; then

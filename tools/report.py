@@ -279,8 +279,9 @@ else come nearest to meeting, are drawn opaque and edged in red).</p>
 <div id="measures-section"><h2>Distances and depths</h2>
 <p>Where a method's distance or penetration depth was off by more than the audit's
 --measure-tolerance (relative): the worst of each row, with the pair asked, the value it gave and
-its relative error against the exact one (--failures writes them as claims that certify-fp replays).</p>
-<table id="measures"></table></div>
+its relative error against the exact one (--failures writes them as claims that certify-fp replays).
+The worst first: the first 250 are drawn with the page, the rest on request.</p>
+<table id="measures"></table><button id="measures-more" style="display:none"></button></div>
 <script>
 "use strict";
 const D = @DATA@;
@@ -427,13 +428,24 @@ say();
 // The failures, and the 3-D view of one.
 // The distances and depths off by more than the tolerance.
 if (D.measures.length) {
-  const mt = document.getElementById("measures");
+  // Thousands of rows take seconds to lay out: the worst 250 with the page, the others on request.
+  const mt = document.getElementById("measures"), shown = 250;
+  const worst = D.measures.map((m, i) => [m, i]).sort((a, b) => b[0].rel_error - a[0].rel_error || a[1] - b[1]).map(p => p[0]);
   tr = mt.insertRow();
   for (const h of ["scene", "method", "rho1", "rho2", "kind", "value", "relative error", "parts"]) cell(tr, h, "th");
-  for (const m of D.measures) {
-    tr = mt.insertRow();
-    for (const v of [m.scene.split("/").pop(), m.method, m.rho1, m.rho2, m.kind, m.value, m.rel_error.toPrecision(3),
-                     Array.isArray(m.parts) ? m.parts.join(", ") : ""]) cell(tr, v);
+  const rows = (from, to) => {
+    for (const m of worst.slice(from, to)) {
+      tr = mt.insertRow();
+      for (const v of [m.scene.split("/").pop(), m.method, m.rho1, m.rho2, m.kind, m.value, m.rel_error.toPrecision(3),
+                       Array.isArray(m.parts) ? m.parts.join(", ") : ""]) cell(tr, v);
+    }
+  };
+  rows(0, shown);
+  if (worst.length > shown) {
+    const more = document.getElementById("measures-more");
+    more.textContent = "Show the other " + (worst.length - shown);
+    more.style.display = "";
+    more.onclick = () => { rows(shown, worst.length); more.style.display = "none"; };
   }
 } else {
   document.getElementById("measures-section").style.display = "none";
