@@ -93,13 +93,7 @@ Q CompoundScene::top(Context& cx, int i, const Z3& u, size_t first, size_t last)
         const CompoundObject::Flat& f = o.flat[k];
         if (d.small && f.end > f.begin && f.bits + d.bits <= 61) {
             cx.spend(20 + static_cast<double>(f.end - f.begin));
-            const int64_t a = d.w[0], b = d.w[1], c = d.w[2];
-            int64_t m = a * X[f.begin] + b * Y[f.begin] + c * Z[f.begin];
-            for (size_t j = f.begin + 1; j < f.end; ++j) m = std::max(m, a * X[j] + b * Y[j] + c * Z[j]);
-            if constexpr (sizeof(long) >= sizeof(int64_t))
-                mpz_set_si(v.get_mpz_t(), static_cast<long>(m));
-            else
-                v = z64(m);
+            set64(v, max_dot64(X, Y, Z, f.begin, f.end, d.w));
         } else {
             cx.spend(1000);  // the part's own arrays, wherever they lie (measured about 1 µs)
             o.part[k]->max_dot(cx, d, v);

@@ -66,48 +66,46 @@ T scan(size_t n, const int* at, F value, std::vector<int>& out) {
 }
 }  // namespace
 
+void Scan::check_limit(const std::string& what) const {
+    if (mpz_sizeinbase(D_.get_mpz_t(), 2) > 16384)
+        throw Unreadable{"the common denominator of " + what +
+                         "'s vertex coordinates has more than 16384 bits (scalecert's own limit)"};
+}
+
+void Scan::add(Z3&& X) {
+    int64_t x[3] = {0, 0, 0};
+    bool small = true;
+    for (int c = 0; c < 3; ++c) small = small_int(X[c].get_mpz_t(), x[c]) && small;
+    if (small)
+        P_.add_small(x);
+    else
+        P_.add_big(std::move(X));
+}
+
 Scan::Scan(Context& cx, const std::vector<V3>& v, const std::string& what) {
     for (const V3& p : v)
         for (const Q& c : p) {
             if (mpz_cmp_ui(c.get_den_mpz_t(), 1) != 0) mpz_lcm(D_.get_mpz_t(), D_.get_mpz_t(), c.get_den_mpz_t());
-            if (mpz_sizeinbase(D_.get_mpz_t(), 2) > 16384)
-                throw Unreadable{"the common denominator of " + what +
-                                 "'s vertex coordinates has more than 16384 bits (scalecert's own limit)"};
+            check_limit(what);
         }
     cx.spend(static_cast<double>(v.size()) * (10 + 3 * limbs(D_)));
     for (auto& c : P_.x) c.reserve(v.size());
     for (const V3& p : v) {
         Z3 X;
-        int64_t x[3];
-        bool small = true;
         for (int c = 0; c < 3; ++c) {
             mpz_divexact(X[c].get_mpz_t(), D_.get_mpz_t(), p[c].get_den_mpz_t());
             X[c] *= p[c].get_num();
-            small = small_int(X[c].get_mpz_t(), x[c]) && small;
         }
-        if (small)
-            P_.add_small(x);
-        else
-            P_.add_big(std::move(X));
+        add(std::move(X));
     }
     index();
 }
 
 Scan::Scan(Context& cx, std::vector<Z3>&& X, mpz_class D, const std::string& what) : D_(std::move(D)) {
-    if (mpz_sizeinbase(D_.get_mpz_t(), 2) > 16384)
-        throw Unreadable{"the common denominator of " + what +
-                         "'s vertex coordinates has more than 16384 bits (scalecert's own limit)"};
+    check_limit(what);
     cx.spend(static_cast<double>(X.size()) * (10 + 3 * limbs(D_)));
     for (auto& c : P_.x) c.reserve(X.size());
-    for (Z3& p : X) {
-        int64_t x[3] = {0, 0, 0};
-        bool small = true;
-        for (int c = 0; c < 3; ++c) small = small_int(p[c].get_mpz_t(), x[c]) && small;
-        if (small)
-            P_.add_small(x);
-        else
-            P_.add_big(std::move(p));
-    }
+    for (Z3& p : X) add(std::move(p));
     index();
 }
 
@@ -215,13 +213,7 @@ void Scan::max_dot(Context& cx, const Direction& d, mpz_class& best) const {
         const int64_t *x = P_.x[0].data(), *y = P_.x[1].data(), *z = P_.x[2].data();
         if (bits_ + d.bits <= 61) {
             cx.spend(static_cast<double>(n));
-            const int64_t a = d.w[0], b = d.w[1], c = d.w[2];
-            int64_t m = a * x[0] + b * y[0] + c * z[0];
-            for (size_t k = 1; k < n; ++k) m = std::max(m, a * x[k] + b * y[k] + c * z[k]);
-            if constexpr (sizeof(long) >= sizeof(int64_t))
-                mpz_set_si(best.get_mpz_t(), static_cast<long>(m));
-            else
-                best = z64(m);
+            set64(best, max_dot64(x, y, z, 0, n, d.w));
             return;
         }
         cx.spend(2.0 * static_cast<double>(n));

@@ -20,6 +20,7 @@
 #include "context.hpp"
 #include "points.hpp"
 
+#include <algorithm>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -34,6 +35,22 @@ struct Direction {
     bool small = false;
     int bits = 0;
 };
+
+// max over the vertices j in [begin, end) of w·(x_j, y_j, z_j), in int64: callers ensure the
+// bounds of argmax()'s first case (the header: b + c <= 61), so nothing overflows.
+inline int64_t max_dot64(const int64_t* x, const int64_t* y, const int64_t* z, size_t begin, size_t end,
+                         const int64_t (&w)[3]) {
+    int64_t m = w[0] * x[begin] + w[1] * y[begin] + w[2] * z[begin];
+    for (size_t j = begin + 1; j < end; ++j) m = std::max(m, w[0] * x[j] + w[1] * y[j] + w[2] * z[j]);
+    return m;
+}
+// r = v, without a temporary where long holds an int64.
+inline void set64(mpz_class& r, int64_t v) {
+    if constexpr (sizeof(long) >= sizeof(int64_t))
+        mpz_set_si(r.get_mpz_t(), static_cast<long>(v));
+    else
+        r = z64(v);
+}
 
 class Scan {
   public:
@@ -73,6 +90,10 @@ class Scan {
 
     // pos_, bits_ and big_limbs_, once P_ holds every vertex.
     void index();
+    // Appends a vertex's X, as int64 when every coordinate fits (IntPoints::kSmallBits).
+    void add(Z3&& X);
+    // Refuses D_ past 16,384 bits (`what` names the vertices).
+    void check_limit(const std::string& what) const;
     // The limbs of X_k's coordinate c (as GMP would hold it).
     double coord_limbs(size_t k, int c) const;
     // u·X_k over the vertices of `list` (ascending) in GMP integers: the maximisers, ascending,

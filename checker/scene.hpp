@@ -66,9 +66,9 @@ struct Scene {
     mutable std::map<std::string, Support> cache_;
 };
 
-// The vertices of one polyhedron as they are read, list by list (a compound object's parts, in
-// order): as integers while every list came from the reader as one (json.hpp,
-// parse_certificate), else all as rationals, each vertex judged by point().
+// The vertices of one polytope (a polyhedron, or a compound's part) as they are read: as integers
+// while every list added came from the reader as one (json.hpp, parse_certificate), else all as
+// rationals, each vertex judged by point().
 class Vertices {
   public:
     // j is a list of vertices (an array, or a list the reader took).
