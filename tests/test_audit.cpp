@@ -355,21 +355,39 @@ BOOST_AUTO_TEST_CASE(campaigns_are_keyed_by_the_contents_of_their_inputs) {
     fs::remove_all(dir);
 }
 
-BOOST_AUTO_TEST_CASE(an_epa_tolerance_below_what_doubles_resolve_is_refused) {
+// The row of a method on a scene, and whether it says it did not run (naming `why`).
+const AuditRow& row_named(const std::vector<AuditRow>& rows, const std::string& method) {
+    for (const AuditRow& r : rows)
+        if (r.method == method) return r;
+    throw std::logic_error("no row " + method);
+}
+bool not_run(const std::vector<AuditRow>& rows, const std::string& method, const std::string& why) {
+    const AuditRow& r = row_named(rows, method);
+    return r.not_run.find(why) != std::string::npos && r.queries == 0;
+}
+
+// A tolerance finer than libccd's EPA resolves, or coordinates past the doubles' range: the method
+// that cannot run there has a row that says so, and why; the others run (a batch goes on).
+BOOST_AUTO_TEST_CASE(an_epa_tolerance_below_what_doubles_resolve_is_not_run) {
     // The stacked cubes at ρ up to 5/2: P2's seed (1, 1, 4) and its points 1 away along z give a
     // largest scaled coordinate of 4 + 5/2 · 1 = 13/2, so the least EPA tolerance is
     // 2^-52 · (13/2)² = 169/4 · 2^-52.
     ExactScene s = load_scene(std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/stacked_cubes.json");
     MethodSettings st;
     st.ccd_epa_tolerance = std::ldexp(42.25, -52);
-    BOOST_TEST(audit_scene("cubes", s, Q(0), {"libccd-gjk"}, {}, false, true, st).size() == 2u);
+    const auto at_least = audit_scene("cubes", s, Q(0), {"libccd-gjk", "libccd-mpr"}, {}, false, true, st);
+    BOOST_TEST(at_least.size() == 3u);
+    BOOST_TEST(row_named(at_least, "libccd-gjk").not_run.empty());
+    BOOST_TEST(row_named(at_least, "libccd-gjk").queries > 0);
     st.ccd_epa_tolerance = std::nextafter(std::ldexp(42.25, -52), 0.0);
-    BOOST_CHECK_EXCEPTION(
-        audit_scene("cubes", s, Q(0), {"libccd-gjk"}, {}, false, true, st), InputError, [](const InputError& e) {
-            return std::string(e.what()).find("largest coordinate is 6.5 (2^-52") != std::string::npos;
-        });
+    const auto below = audit_scene("cubes", s, Q(0), {"libccd-gjk", "libccd-mpr"}, {}, false, true, st);
+    BOOST_TEST(below.size() == 3u);
+    BOOST_TEST(not_run(below, "libccd-gjk", "largest coordinate is 6.5 (2^-52"));
+    BOOST_TEST(row_named(below, "libccd-mpr").not_run.empty());  // the others go on
+    BOOST_TEST(row_named(below, "libccd-mpr").queries == row_named(at_least, "libccd-mpr").queries);
     // Without depths (no EPA) any tolerance runs.
-    BOOST_TEST(audit_scene("cubes", s, Q(0), {"libccd-gjk"}, {}, false, false, st).size() == 2u);
+    BOOST_TEST(
+        row_named(audit_scene("cubes", s, Q(0), {"libccd-gjk"}, {}, false, false, st), "libccd-gjk").not_run.empty());
     // The same cubes 2^20 times larger: the least tolerance is 169/4 · 2^-12 ≈ 0.0103, so libccd's
     // default 1e-4 is refused, and the value the message names (rounded up) is accepted.
     ExactScene big = s;
@@ -379,18 +397,15 @@ BOOST_AUTO_TEST_CASE(an_epa_tolerance_below_what_doubles_resolve_is_refused) {
         for (int k = 0; k < 3; ++k) big.P[i].seed[k] *= Q(1 << 20);
     }
     st = MethodSettings{};
-    std::string said;
-    try {
-        audit_scene("big", big, Q(0), {"libccd-gjk"}, {}, false, true, st);
-    } catch (const InputError& e) {
-        said = e.what();
-    }
-    BOOST_TEST(said.find("give at least 0.011, or --no-measures") != std::string::npos, said);
+    BOOST_TEST(not_run(audit_scene("big", big, Q(0), {"libccd-gjk"}, {}, false, true, st), "libccd-gjk",
+                       "give at least 0.011, or --no-measures"));
     st.ccd_epa_tolerance = 0.011;
-    BOOST_TEST(audit_scene("big", big, Q(0), {"libccd-gjk"}, {}, false, true, st).size() == 2u);
+    BOOST_TEST(
+        row_named(audit_scene("big", big, Q(0), {"libccd-gjk"}, {}, false, true, st), "libccd-gjk").not_run.empty());
     // Past 2^200 the floating-point methods' squared lengths overflow: the cubes 2^197 times larger
     // (largest coordinate 13/2 · 2^197 < 2^200) run without depths, 2^198 times larger (13/2 · 2^198
-    // > 2^200) are refused whatever is measured, convex and compound methods alike.
+    // > 2^200) are not run whatever is measured, convex and compound methods and the grid alike,
+    // while the exact engine's row is there.
     for (const int e : {197, 198}) {
         ExactScene huge = s;
         const Q f = Q(Z(1) << e);
@@ -400,13 +415,18 @@ BOOST_AUTO_TEST_CASE(an_epa_tolerance_below_what_doubles_resolve_is_refused) {
             for (int k = 0; k < 3; ++k) huge.P[i].seed[k] *= f;
         }
         for (const std::string m : {"libccd-gjk", "bullet-compound"}) {
-            if (e == 197) {
-                BOOST_TEST(audit_scene("huge", huge, Q(0), {m}, {}, false, false, {}).size() >= 1u);
-            } else {
-                BOOST_CHECK_EXCEPTION(
-                    audit_scene("huge", huge, Q(0), {m}, {}, false, false, {}), InputError,
-                    [](const InputError& x) { return std::string(x.what()).find("past 2^200") != std::string::npos; });
-            }
+            const auto rows = audit_scene("huge", huge, Q(0), {m}, {}, false, false, {});
+            if (e == 197)
+                BOOST_TEST(row_named(rows, m).not_run.empty());
+            else
+                BOOST_TEST(not_run(rows, m, "past 2^200"));
+        }
+        if (e == 198) {
+            const auto rows = audit_scene("huge", huge, Q(0), {"libccd-gjk", "grid"}, {16}, false, false, {});
+            BOOST_TEST(rows.size() == 4u);  // the method, the exact engine, the grid's two
+            BOOST_TEST(not_run(rows, "grid+bisection (libccd-gjk)", "past 2^200"));
+            BOOST_TEST(not_run(rows, "grid+analytical (libccd-gjk)", "past 2^200"));
+            BOOST_TEST(row_named(rows, "scalecert (exact)").not_run.empty());
         }
     }
 }

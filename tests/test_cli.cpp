@@ -10,7 +10,9 @@
 #include <sys/un.h>
 #include <sys/wait.h>
 
+#include <cerrno>
 #include <cmath>
+#include <csignal>
 #include <gmpxx.h>
 
 #include <filesystem>
@@ -39,9 +41,10 @@ fs::path workdir() {
     return d;
 }
 
-Run run(const std::string& args) {
+// scalecert ARGS, with `env` (NAME=VALUE words) set for it when given.
+Run run(const std::string& args, const std::string& env = "") {
     fs::path o = workdir() / "stdout", e = workdir() / "stderr";
-    std::string cmd = std::string(SCALECERT_BIN) + " " + args + " >" + o.string() + " 2>" + e.string();
+    std::string cmd = env + " " + std::string(SCALECERT_BIN) + " " + args + " >" + o.string() + " 2>" + e.string();
     int st = std::system(cmd.c_str());
     return {WIFEXITED(st) ? WEXITSTATUS(st) : -1, slurp(o), slurp(e)};
 }
@@ -2197,28 +2200,129 @@ BOOST_AUTO_TEST_CASE(audit_runs_the_users_program) {
         else
             BOOST_TEST(near > 100);
     }
-    // A program that fails, or writes what cannot be read as one verdict claim per pair: one line, exit 2.
+    // A program that fails, or writes no claims file: its row says it did not run, and why; the
+    // other methods and the audit go on (exit 0, the output written).
     const std::string no_claims = "sh " + write("no-claims.sh", "echo '{}' > \"$3\"\n").string(),
-                      too_few = "sh " + write("too-few.sh", "echo '{\"claims\": []}' > \"$3\"\n").string();
-    for (const std::string& bad : {std::string("false"), no_claims, too_few}) {
-        const Run e = run("audit " + cubes + " --methods libccd-gjk --command '" + bad + "' --out " +
-                          (workdir() / "never.json").string());
-        BOOST_TEST(e.status == 2, bad);
-        BOOST_TEST(std::count(e.err.begin(), e.err.end(), '\n') == 1, e.err);
-        BOOST_TEST(e.err.find("--command") != std::string::npos, e.err);
-        BOOST_TEST(!fs::exists(workdir() / "never.json"));
+                      no_format = "sh " + write("no-format.sh", "echo '{\"claims\": []}' > \"$3\"\n").string(),
+                      stderr_line =
+                          "sh " + write("says-why.sh", "echo first >&2; echo 'no licence' >&2; exit 4\n").string();
+    const std::vector<std::pair<std::string, std::string>> failing = {
+        {"false", "it exited with status 1"},
+        {"true", "its claims file"},
+        {no_claims, "format: expected \"scalecert-claims-1\""},
+        {no_format, "format: expected \"scalecert-claims-1\""},
+        {stderr_line, "it exited with status 4; its last error line: no licence"},
+        {"kill -9 $$", "it was killed by signal 9"}};
+    for (const auto& [bad, why] : failing) {
+        const fs::path out = workdir() / "not-run.json";
+        fs::remove(out);
+        const Run e = run("audit " + cubes + " --methods libccd-gjk --command '" + bad + "' --out " + out.string());
+        BOOST_TEST(e.status == 0, bad << ": " << e.err);
+        const nlohmann::json rows = nlohmann::json::parse(slurp(out));
+        BOOST_TEST_REQUIRE(rows.size() == 3u);  // libccd-gjk, the command, the exact engine
+        BOOST_TEST(rows[0]["queries"].get<long>() > 0);
+        BOOST_TEST(rows[1]["method"] == "command (" + bad + ")");
+        BOOST_TEST(rows[1]["queries"].get<long>() == 0);
+        BOOST_TEST(rows[1]["not_run"].get<std::string>().find(why) != std::string::npos, rows[1].dump());
     }
     // A program that does not finish in --command-timeout is stopped, with what it started (its
-    // process group): one line, exit 2, long before its 30 s sleep would end.
+    // process group): long before its 30 s sleep would end, its row says so.
     const auto t0 = std::chrono::steady_clock::now();
-    const Run slow =
-        run("audit " + cubes + " --methods libccd-gjk --command 'sleep 30; false' --command-timeout 0.5 --out " +
-            (workdir() / "never.json").string());
+    const Run slow = run("audit " + cubes + " --methods libccd-gjk --command 'sleep 30; false' --command-timeout 0.5");
     const double took = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    BOOST_TEST(slow.status == 2);
-    BOOST_TEST(slow.err.find("did not finish within 0.5 s (--command-timeout)") != std::string::npos, slow.err);
+    BOOST_TEST(slow.status == 0);
+    BOOST_TEST(nlohmann::json::parse(slow.out)[1]["not_run"].get<std::string>().find(
+                   "it did not finish within 0.5 s (--command-timeout) and was stopped") != std::string::npos,
+               slow.out);
     BOOST_TEST(took < 20, took);
-    BOOST_TEST(!fs::exists(workdir() / "never.json"));
+}
+
+// The user's program is a guest (docs/audits.md, "Audit your own program"): its output never
+// reaches scalecert's, a claim that is no answer to the pair asked is wrong with its reason, the
+// exact fraction of the double asked is that pair, every process it started is stopped, and its
+// files are under $TMPDIR. The modes of tests/data/commands/cubes_verdicts.py make each case; the
+// counts are those of its own pairs (PAIRS_COPY), every tenth claim changed from the first.
+BOOST_AUTO_TEST_CASE(audit_keeps_the_users_program_a_guest) {
+    const std::string cubes = std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/stacked_cubes.json",
+                      prog = "/usr/bin/python3 " + std::string(SCALECERT_SOURCE_DIR) +
+                             "/tests/data/commands/cubes_verdicts.py";
+    const fs::path copy = workdir() / "guest-pairs.json";
+    // The command row of an audit of the cubes with the program in `mode`, its output in `out`.
+    auto audit = [&](const std::string& mode, Run* out = nullptr, const std::string& env = "",
+                     const std::string& more = "") {
+        const Run r =
+            run("audit " + cubes + " --methods libccd-gjk --no-measures --command 'PAIRS_COPY=" + copy.string() + " " +
+                    prog + " " + mode + "'" + more,
+                env);
+        BOOST_TEST_REQUIRE(r.status == 0, mode << ": " << r.err);
+        if (out) *out = r;
+        const nlohmann::json rows = nlohmann::json::parse(r.out);  // standard output: the audit alone
+        BOOST_TEST_REQUIRE(rows.size() == 3u);
+        return rows[1];
+    };
+    const nlohmann::json exact = audit("exact");
+    BOOST_TEST(exact["false_separated"].get<long>() + exact["false_overlapping"].get<long>() == 0);
+    const long n = static_cast<long>(nlohmann::json::parse(slurp(copy)).size()), tenth = (n + 9) / 10;
+    BOOST_TEST(exact["queries"].get<long>() == n);
+    // 20 MB on its standard output and 1 MB on its error: none of it in scalecert's output.
+    Run printed;
+    const nlohmann::json loud = audit("exact+print", &printed);
+    BOOST_TEST(printed.out.size() < 100000u);
+    BOOST_TEST(printed.err.size() < 1000u, printed.err);
+    BOOST_TEST(loud["queries"].get<long>() == n);
+    // Each rho as the exact fraction of the double asked ("p/q"): the pair asked, all right.
+    const nlohmann::json fractions = audit("exact+fraction");
+    BOOST_TEST(fractions["queries"].get<long>() == n);
+    BOOST_TEST(!fractions.contains("not_answered"));
+    BOOST_TEST(fractions["false_separated"].get<long>() + fractions["false_overlapping"].get<long>() == 0);
+    // At a pose of its own (P2 lifted 100, said separated there), or a distance in place of a
+    // verdict: no answer, each with its reason and what it wrote; no false "separated".
+    const fs::path dir = workdir() / "guest-failures";
+    fs::remove_all(dir);
+    const nlohmann::json posed = audit("exact+pose", nullptr, "", " --failures " + dir.string());
+    BOOST_TEST(posed["not_answered"].get<long>() == tenth);
+    BOOST_TEST(posed["false_separated"].get<long>() == 0);
+    BOOST_TEST(posed["failures"][0]["said"] == "no answer");
+    BOOST_TEST(posed["failures"][0]["reason"].get<std::string>().find("pose2") != std::string::npos);
+    BOOST_TEST(posed["failures"][0]["claim"]["pose2"][2][3] == 100);
+    const nlohmann::json index = nlohmann::json::parse(slurp(dir / "index.json"));
+    std::string kept_file;
+    for (const nlohmann::json& r : index["reproducers"])
+        if (r.contains("no_answers")) kept_file = r["no_answers"].get<std::string>();
+    BOOST_TEST_REQUIRE(!kept_file.empty(), index.dump());
+    const nlohmann::json kept = nlohmann::json::parse(slurp(kept_file));
+    BOOST_TEST(kept["format"] == "scalecert-no-answers-1");
+    BOOST_TEST(kept["answers"].size() == static_cast<size_t>(std::min(tenth, 50L)));
+    BOOST_TEST(kept["answers"][0]["said"]["pose2"][2][3] == 100);
+    const nlohmann::json distances = audit("exact+distance");
+    BOOST_TEST(distances["not_answered"].get<long>() == tenth);
+    BOOST_TEST(distances["failures"][0]["reason"] == "a distance claim, not a verdict");
+    // Five pairs left without a claim; three claims past the pairs asked.
+    const nlohmann::json fewer = audit("exact+fewer");
+    BOOST_TEST(fewer["not_answered"].get<long>() == 5);
+    BOOST_TEST(fewer["failures"][0]["reason"].get<std::string>().find("no claim for this pair") != std::string::npos);
+    BOOST_TEST(fewer["failures"][0]["claim"].is_null());
+    const nlohmann::json extra = audit("exact+extra");
+    BOOST_TEST(extra["extra_claims"].get<long>() == 3);
+    BOOST_TEST(!extra.contains("not_answered"));
+    // A process it started in a session of its own (setsid) is stopped when the program ends, and
+    // when its time is up.
+    for (const std::string mode : {"exact+daemon", "exact+daemon+hang"}) {
+        const fs::path pid_file = workdir() / "daemon.pid";
+        fs::remove(pid_file);
+        const nlohmann::json row = audit(mode, nullptr, "DAEMON_PID=" + pid_file.string(), " --command-timeout 3");
+        BOOST_TEST_REQUIRE(fs::exists(pid_file), mode);
+        const pid_t pid = static_cast<pid_t>(std::stol(slurp(pid_file)));
+        BOOST_TEST((kill(pid, 0) != 0 && errno == ESRCH), mode << ": pid " << pid << " still runs");
+        BOOST_TEST(row.contains("not_run") == (mode == "exact+daemon+hang"), row.dump());
+    }
+    // Its files are in a folder under $TMPDIR, removed afterwards.
+    const fs::path tmp = workdir() / "tmp dir's", where = workdir() / "tmp-copy.txt";
+    fs::create_directories(tmp);
+    audit("exact", nullptr, "TMPDIR=\"" + tmp.string() + "\" TMP_COPY=" + where.string());
+    const fs::path used = slurp(where);
+    BOOST_TEST(used.parent_path() == tmp, used);
+    BOOST_TEST(!fs::exists(used));
 }
 
 // audit --failures: every reproducer replays. The stacked cubes touch on ρ1 + ρ2 = 3 exactly, so
@@ -2274,6 +2378,12 @@ BOOST_AUTO_TEST_CASE(audit_failures_are_reproducers) {
             }
             const Run replay = run("certify-fp " + scene + " " + claims + tolerance);
             BOOST_TEST(replay.status == 1, claims);
+            // The replay command names scalecert by the path it was run by, so that it runs as
+            // written in a build tree, where scalecert is not on PATH.
+            const std::string said = r["replay"].get<std::string>();
+            BOOST_TEST(said.rfind(std::string(SCALECERT_BIN) + " certify-fp " + scene + " " + claims, 0) == 0, said);
+            const int st = std::system((said + " >/dev/null 2>&1").c_str());
+            BOOST_TEST((WIFEXITED(st) && WEXITSTATUS(st) == 1), said);
             BOOST_TEST(replay.out.find("right: 0, wrong: " + std::to_string(n)) != std::string::npos, replay.out);
             if (measures) {
                 // The cubes' exact distance 3 − (ρ1 + ρ2) and depth (ρ1 + ρ2) − 3 (the overlap along

@@ -1,5 +1,8 @@
 #include "baselines/audit.hpp"
 
+#include "baselines/guest.hpp"
+#include "certify/claim.hpp"
+
 #include "certify/certificate.hpp"
 #include "certify/region_certificate.hpp"
 #include "curve/closed_forms.hpp"
@@ -46,20 +49,6 @@ void match_junctions(const TouchingCurve& c, const ExactScene& s, const std::vec
     }
 }
 }  // namespace
-
-// Coordinates (scaled, largest) past 2^200, about 1.6·10^60: the floating-point methods' squared
-// lengths and their products overflow doubles there (libccd's EPA then never stops, whatever its
-// tolerance: 10^77 ran for minutes, 10^75 stopped; FCL aborts on an assertion at 10^155), so such
-// a scene is refused in one line rather than left to hang or crash.
-void refuse_beyond_doubles(double extent) {
-    if (extent <= 0x1p200) return;
-    char m[200];
-    std::snprintf(m, sizeof m,
-                  "the largest scaled coordinate is %.3g, past 2^200: the floating-point methods' squared lengths "
-                  "overflow doubles there (libccd's EPA never stops, FCL aborts)",
-                  extent);
-    throw InputError(m);
-}
 
 std::optional<double> relative_error(const Q& squared, double value) {
     const double root = std::sqrt(to_double_rn(squared));
@@ -186,126 +175,163 @@ void wrong_by_distance(const fp::Method& mm, const DistancePairs& p, AuditRow& r
     }
 }
 
-// sh -c cmd in a process group of its own, waited for at most `timeout` seconds: its wait
-// status, -1 if it could not be started, or kTimedOut when it ran longer (the whole group is
-// then killed, so a program it started does not outlive it).
-constexpr int kTimedOut = -2;
-int run_shell(const std::string& cmd, double timeout) {
-    std::fflush(nullptr);
-    const pid_t pid = fork();
-    if (pid < 0) return -1;
-    if (pid == 0) {
-        setpgid(0, 0);
-        execl("/bin/sh", "sh", "-c", cmd.c_str(), static_cast<char*>(nullptr));
-        _exit(127);
+// A JSON value of a program's claims file as a JSON document (its numbers as written; NaN and
+// the infinities, which the strict reader takes in claims files, as the strings they are written).
+Json json_of(const JNode& n) {
+    switch (n.kind) {
+    case JNode::Null: return nullptr;
+    case JNode::Bool: return n.text == "true";
+    case JNode::Number:
+        return n.text == "NaN" || n.text.find("Infinity") != std::string::npos ? Json(n.text) : Json::parse(n.text);
+    case JNode::String: return n.text;
+    case JNode::Array: {
+        Json a = Json::array();
+        for (const JNode& x : n.items) a.push_back(json_of(x));
+        return a;
     }
-    setpgid(pid, pid);  // also here: the group exists whichever process runs first
-    const auto until = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout);
-    int status = 0;
-    for (long nap_us = 1000;;) {
-        const pid_t r = waitpid(pid, &status, WNOHANG);
-        if (r == pid) return status;
-        if (r < 0 && errno != EINTR) return -1;
-        if (std::chrono::steady_clock::now() >= until) {
-            kill(-pid, SIGKILL);
-            while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {}
-            return kTimedOut;
-        }
-        usleep(static_cast<useconds_t>(nap_us));
-        nap_us = std::min(nap_us * 2, 50000L);
+    case JNode::Object: {
+        Json o = Json::object();
+        for (size_t i = 0; i < n.keys.size(); ++i) o[n.keys[i]] = json_of(n.items[i]);
+        return o;
     }
+    }
+    return nullptr;
 }
 
-// The user's own program as a method (audit --command CMD): run once per scene as
-// `CMD SCENE.json PAIRS.json CLAIMS.json` (a private temporary folder), where SCENE.json is the scene
-// exactly, PAIRS.json {"format": "scalecert-pairs-1", "pairs": [[rho1, rho2], ...]} the doubles the
-// audit asks, and CLAIMS.json what it writes: a claims file (scalecert-claims-1) of one verdict claim
-// per pair, in order, at those doubles. Its verdicts are judged as the built-in methods' are.
-// A command that fails, or claims that cannot be read as that, are refused in one line.
+// A word of the shell's, quoted: 'text', each ' inside written '\''.
+std::string shell_quoted(const std::string& text) {
+    std::string q = "'";
+    for (char ch : text) q += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
+    return q + "'";
+}
+
+// The user's own program as a method (audit --command CMD, docs/audits.md): run once per scene as
+// `CMD SCENE.json PAIRS.json CLAIMS.json` in a private temporary folder (guest.hpp), where
+// SCENE.json is the scene exactly, PAIRS.json {"format": "scalecert-pairs-1", "pairs": [[rho1,
+// rho2], ...]} the doubles the audit asks, and CLAIMS.json what it writes: a claims file
+// (scalecert-claims-1) of one verdict claim per pair, in order, at those doubles. Its claims are
+// read as certify-fp reads them (a JSON number is the double it spells, a string exact), so a
+// pair written as the exact fraction of the double asked is that pair. A claim that does not
+// answer its pair (unreadable, of another kind, at another pair or at a pose of its own, or
+// missing) is no answer: wrong, with its reason and what the program wrote. A program that fails
+// (exit status, signal, timeout) or writes no claims file gives no method: `failed` says why.
 class CommandMethod : public fp::Method {
   public:
     CommandMethod(const std::string& command, const ExactScene& s, const std::vector<std::pair<double, double>>& pairs,
                   double timeout)
         : command_(command) {
-        char dir_template[] = "/tmp/scalecert-command-XXXXXX";
-        const char* d = mkdtemp(dir_template);
-        if (!d) throw InputError("--command: cannot make a temporary folder");
-        const std::string dir = d;
-        struct Remove {
-            std::string dir;
-            ~Remove() {
-                std::error_code ec;
-                std::filesystem::remove_all(dir, ec);
-            }
-        } remove{dir};
+        const GuestFolder folder;
+        const std::string& dir = folder.path();
         const std::string scene = dir + "/scene.json", asked = dir + "/pairs.json", out = dir + "/claims.json";
         Json pj = Json::array();
         for (const auto& [a, b] : pairs) pj.push_back(Json::array({a, b}));
         std::ofstream(scene) << dump(scene_file_json(s));
         std::ofstream(asked) << dump(Json{{"format", "scalecert-pairs-1"}, {"pairs", std::move(pj)}});
-        const std::string cmd = command + " '" + scene + "' '" + asked + "' '" + out + "'";
-        const int status = run_shell(cmd, timeout);
-        if (status == kTimedOut) {
-            char m[64];
-            std::snprintf(m, sizeof m, "%g s", timeout);
-            throw InputError("--command: " + in_quotes(command) + " did not finish within " + m +
-                             " (--command-timeout); it was stopped");
+        const GuestRun run = run_guest(
+            command + " " + shell_quoted(scene) + " " + shell_quoted(asked) + " " + shell_quoted(out), timeout);
+        if (!run.ok()) {
+            failed = run.why_failed(timeout);
+            return;
         }
-        if (status == -1 || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
-            throw InputError("--command: " + in_quotes(command) + " failed (" +
-                             (status != -1 && WIFEXITED(status) ? "exit status " + std::to_string(WEXITSTATUS(status))
-                                                                : std::string("killed or not run")) +
-                             ")");
-        const std::string text = read_regular_file(out, "--command's claims file", kMaxSceneBytes);
         JNode doc;
         try {
-            doc = parse_strict_json(text);
-        } catch (const JsonError& e) {
-            throw InputError("--command: its claims file is not JSON (" + e.what + " at byte " + std::to_string(e.pos) +
-                             ")");
+            doc = read_claims_root(read_regular_file(out, "its claims file", kMaxSceneBytes), "its claims file");
+            // (read_regular_file names a missing or irregular file, and a file past the limit)
+        } catch (const InputError& e) {
+            failed = e.what();
+            return;
         }
-        const JNode* claims = doc.kind == JNode::Object ? doc.find("claims") : nullptr;
-        if (!claims || claims->kind != JNode::Array || claims->items.size() != pairs.size())
-            throw InputError("--command: its claims file must hold \"claims\": one verdict claim per pair asked (" +
-                             std::to_string(pairs.size()) + ")");
+        const std::vector<JNode>& claims = doc.find("claims")->items;
+        answers_.resize(pairs.size());
         for (size_t i = 0; i < pairs.size(); ++i) {
-            const JNode& c = claims->items[i];
-            const std::string at = "--command: claims[" + std::to_string(i) + "]";
-            auto field = [&](const char* k) {
-                const JNode* f = c.kind == JNode::Object ? c.find(k) : nullptr;
-                if (!f) throw InputError(at + " has no " + in_quotes(k));
-                return f;
-            };
-            const JNode *r1 = field("rho1"), *r2 = field("rho2"), *v = field("verdict");
-            if (r1->kind != JNode::Number || r2->kind != JNode::Number ||
-                std::strtod(r1->text.c_str(), nullptr) != pairs[i].first ||
-                std::strtod(r2->text.c_str(), nullptr) != pairs[i].second)
-                throw InputError(at + " is not at the pair asked (" + to_shortest(pairs[i].first) + ", " +
-                                 to_shortest(pairs[i].second) + ")");
-            if (v->kind != JNode::String) throw InputError(at + ".verdict is not a string");
-            const std::string& w = v->text;
-            if (w == "separated")
-                said_.push_back(AuditRow::kSaidSeparated);
-            else if (w == "touching")
-                said_.push_back(AuditRow::kSaidTouching);
-            else if (w == "intersecting")
-                said_.push_back(AuditRow::kSaidIntersecting);
-            else if (w == "overlapping")
-                said_.push_back(AuditRow::kSaidOverlapping);
+            index_.emplace(pairs[i], i);
+            Answer& a = answers_[i];
+            if (i >= claims.size()) {
+                a.reason = "no claim for this pair (the file has " + std::to_string(claims.size()) + " claims for " +
+                           std::to_string(pairs.size()) + " pairs asked)";
+                continue;
+            }
+            a.claim = dump(json_of(claims[i]));
+            TypedClaim c;
+            try {
+                c = read_claim(claims[i], i, "its claims file", Numbers::Double);
+            } catch (const InputError& e) {
+                a.reason = e.what();
+                continue;
+            }
+            const Q r1 = exact_from_double(pairs[i].first), r2 = exact_from_double(pairs[i].second);
+            if (c.type != ClaimType::Verdict)
+                a.reason = std::string("a ") + type_name(c.type) + " claim, not a verdict";
+            else if (c.rho1 != r1 || c.rho2 != r2)
+                a.reason = "at (" + to_exact_string(c.rho1) + ", " + to_exact_string(c.rho2) +
+                           "), not at the pair asked (" + to_shortest(pairs[i].first) + ", " +
+                           to_shortest(pairs[i].second) + ")";
+            else if (c.posed())
+                a.reason = std::string("at a pose of its own (") + (c.pose[0] ? "pose1" : "pose2") +
+                           "), not at the scene's poses, where the pair is asked";
             else
-                throw InputError(at + ".verdict: expected separated, touching, overlapping or intersecting, not " +
-                                 in_quotes(w));
-            index_[pairs[i]] = i;
+                a.said = c.verdict == Claimed::Separated     ? AuditRow::kSaidSeparated
+                         : c.verdict == Claimed::Touching    ? AuditRow::kSaidTouching
+                         : c.verdict == Claimed::Overlapping ? AuditRow::kSaidOverlapping
+                                                             : AuditRow::kSaidIntersecting;
         }
+        extra_claims = claims.size() > pairs.size() ? static_cast<long>(claims.size() - pairs.size()) : 0;
     }
+    std::string failed;     // why the program gave no claims ("" when it did)
+    long extra_claims = 0;  // claims past the pairs asked (answers to no question)
     std::string name() const override { return "command (" + command_ + ")"; }
-    int classify(double r1, double r2) const override { return said_.at(index_.at({r1, r2})); }
+    int classify(double r1, double r2) const override { return answer(r1, r2).said; }
+    std::pair<std::string, std::string> no_answer(double r1, double r2) const override {
+        const Answer& a = answer(r1, r2);
+        return {a.reason, a.claim};
+    }
 
   private:
+    struct Answer {
+        int said = AuditRow::kSaidNoAnswer;
+        std::string reason, claim;  // why it is no answer; what the program wrote ("" for nothing)
+    };
+    const Answer& answer(double r1, double r2) const { return answers_.at(index_.at({r1, r2})); }
     std::string command_;
-    std::vector<int> said_;
+    std::vector<Answer> answers_;
     std::map<std::pair<double, double>, size_t> index_;
 };
+
+}  // namespace
+
+// Why no floating-point method can run on a scene whose largest scaled coordinate is `extent`
+// ("" when they can): past 2^200, about 1.6·10^60, the methods' squared lengths and their products
+// overflow doubles (libccd's EPA then never stops, whatever its tolerance: 10^77 ran for minutes,
+// 10^75 stopped; FCL aborts on an assertion at 10^155).
+std::string beyond_doubles(double extent) {
+    if (extent <= 0x1p200) return "";
+    char m[200];
+    std::snprintf(m, sizeof m,
+                  "the largest scaled coordinate is %.3g, past 2^200: the floating-point methods' squared lengths "
+                  "overflow doubles there (libccd's EPA never stops, FCL aborts)",
+                  extent);
+    return m;
+}
+
+// The name a method's row has: the method's own, or "command (CMD)" for the user's program.
+std::string row_name(const std::string& meth) {
+    const std::string prefix = kCommandMethod;
+    return meth.rfind(prefix, 0) == 0 ? "command (" + meth.substr(prefix.size()) + ")" : meth;
+}
+
+// A row that says the method did not run on this scene, and why.
+AuditRow not_run_row(const std::string& scene, const std::string& meth, const Q& eps, const MethodSettings& settings,
+                     bool measures, std::string why) {
+    AuditRow r;
+    r.scene = scene;
+    r.method = row_name(meth);
+    r.settings = fp::settings_of(meth, settings, measures);
+    r.eps = eps;
+    r.not_run = std::move(why);
+    return r;
+}
+
+namespace {
 
 // The convex audit: the curve, its pairs and every convex method (and the grid).
 std::vector<AuditRow> audit_convex(const std::string& name, const ExactScene& s, const Q& eps,
@@ -318,33 +344,34 @@ std::vector<AuditRow> audit_convex(const std::string& name, const ExactScene& s,
     double exact_seconds = std::chrono::duration<double>(Clock::now() - t_exact).count();
     fp::FpScene f = fp::to_fp(s);
     f.settings = settings;
-    // libccd's EPA (libccd-gjk's depths) loops until its tolerance is met, whatever the iteration
-    // limit. Its two stopping tests compare the tolerance with differences of squared lengths
-    // (dot products of points whose coordinates reach L), which doubles resolve no finer than one
-    // unit in the last place of L², about 2^-52·L²; below that the loop may never end. Measured
-    // on two near-sphere scenes: L = 6·10^3 stopped at 1e-10 and ran for minutes at 1e-12; L = 6·10^10
-    // stopped at 1e3 and ran for minutes at 1e2 (both near 2^-62·L²). A tolerance below 2^-52·L²
-    // is refused, naming the least accepted one (rounded up to two digits).
     const double extent =
         fp::scaled_extent(f.P[1].pts, f.P[1].seed, f.hi[1], fp::scaled_extent(f.P[0].pts, f.P[0].seed, f.hi[0]));
-    refuse_beyond_doubles(extent);
-    if (measures && std::find(methods.begin(), methods.end(), "libccd-gjk") != methods.end()) {
+    const std::string beyond = beyond_doubles(extent);
+    // Why a method cannot run on this scene ("" when it can). libccd's EPA (libccd-gjk's depths)
+    // loops until its tolerance is met, whatever the iteration limit. Its two stopping tests compare
+    // the tolerance with differences of squared lengths (dot products of points whose coordinates
+    // reach L), which doubles resolve no finer than one unit in the last place of L², about
+    // 2^-52·L²; below that the loop may never end. Measured on two near-sphere scenes: L = 6·10^3
+    // stopped at 1e-10 and ran for minutes at 1e-12; L = 6·10^10 stopped at 1e3 and ran for minutes
+    // at 1e2 (both near 2^-62·L²). A tolerance below 2^-52·L² is not run, naming the least accepted
+    // one (rounded up to two digits).
+    auto cannot_run = [&](const std::string& meth) -> std::string {
+        if (!beyond.empty()) return beyond;
+        if (!measures || meth != "libccd-gjk") return "";
         const double least = std::ldexp(extent * extent, -52);
-        if (!(settings.ccd_epa_tolerance >= least)) {
-            char shown[32];
-            for (double up = least;; up = std::nextafter(up * 1.01, HUGE_VAL)) {
-                std::snprintf(shown, sizeof shown, "%.2g", up);
-                if (std::strtod(shown, nullptr) >= least) break;
-            }
-            char m[360];
-            std::snprintf(m, sizeof m,
-                          "--ccd-epa-tolerance %.3g: finer than libccd's EPA resolves where the largest coordinate "
-                          "is %.3g (2^-52 of its square), and its loop may never stop; give at least %s, or "
-                          "--no-measures",
-                          settings.ccd_epa_tolerance, extent, shown);
-            throw InputError(m);
+        if (settings.ccd_epa_tolerance >= least) return "";
+        char shown[32];
+        for (double up = least;; up = std::nextafter(up * 1.01, HUGE_VAL)) {
+            std::snprintf(shown, sizeof shown, "%.2g", up);
+            if (std::strtod(shown, nullptr) >= least) break;
         }
-    }
+        char m[360];
+        std::snprintf(m, sizeof m,
+                      "--ccd-epa-tolerance %.3g: finer than libccd's EPA resolves where the largest coordinate is "
+                      "%.3g (2^-52 of its square), and its loop may never stop; give at least %s, or --no-measures",
+                      settings.ccd_epa_tolerance, extent, shown);
+        return m;
+    };
     // Query pairs (doubles) and their exact verdicts.
     std::vector<double> r1, r2;
     Rng g(12345);
@@ -372,25 +399,44 @@ std::vector<AuditRow> audit_convex(const std::string& name, const ExactScene& s,
     std::vector<int> verdicts(r1.size());
     for (const std::string& meth : methods) {
         if (meth == "grid") continue;
+        std::string why = cannot_run(meth);
         std::unique_ptr<fp::Method> mm;
-        if (meth.rfind(kCommandMethod, 0) == 0) {  // the user's program, asked every pair at once
+        auto t0 = Clock::now();
+        if (!why.empty()) {
+        } else if (meth.rfind(kCommandMethod, 0) == 0) {  // the user's program, asked every pair at once
             std::vector<std::pair<double, double>> pairs;
             for (size_t i = 0; i < r1.size(); ++i) pairs.push_back({r1[i], r2[i]});
             for (size_t i = 0; i < near.x.size(); ++i) pairs.push_back({near.x[i], near.y[i]});
-            mm = std::make_unique<CommandMethod>(meth.substr(std::string(kCommandMethod).size()), s, pairs,
-                                                 settings.command_timeout);
+            const std::string command = meth.substr(std::string(kCommandMethod).size());
+            auto cm = std::make_unique<CommandMethod>(command, s, pairs, settings.command_timeout);
+            if (!cm->failed.empty())
+                why = "--command: " + cm->failed;
+            else
+                mm = std::move(cm);
         } else {
             mm = fp::make_method(meth, m, f);
+            if (!mm) throw InputError("--methods: unknown method " + in_quotes(meth));
+            t0 = Clock::now();  // a library's time is its queries'
         }
-        if (!mm) throw InputError("--methods: unknown method " + in_quotes(meth));
+        if (!why.empty()) {
+            rows.push_back(not_run_row(name, meth, eps, settings, measures, why));
+            continue;
+        }
         AuditRow r;
         r.scene = name;
         r.method = mm->name();
         r.settings = fp::settings_of(meth, settings, measures);  // the option's name (command=CMD)
         r.eps = eps;
-        auto t0 = Clock::now();
+        if (const auto* cm = dynamic_cast<const CommandMethod*>(mm.get())) r.extra_claims = cm->extra_claims;
         for (size_t i = 0; i < r1.size(); ++i) verdicts[i] = mm->classify(r1[i], r2[i]);
-        for (size_t i = 0; i < r1.size(); ++i) r.count(r1[i], r2[i], verdicts[i], static_cast<int>(exact[i]));
+        for (size_t i = 0; i < r1.size(); ++i)
+            if (verdicts[i] == AuditRow::kSaidNoAnswer) {
+                auto [reason, claim] = mm->no_answer(r1[i], r2[i]);
+                r.count_no_answer(r1[i], r2[i], static_cast<int>(exact[i]), std::move(reason), std::move(claim));
+            } else {
+                r.count(r1[i], r2[i], verdicts[i], static_cast<int>(exact[i]));
+            }
+        // A program's time is its whole run (start-up included) over the pairs it was asked.
         r.seconds_per_query = std::chrono::duration<double>(Clock::now() - t0).count() / static_cast<double>(r1.size());
         if (measures) measure_errors(*mm, m, r1, r2, exact, verdicts, cache, settings.measure_tolerance, r);
         if (by_distance) wrong_by_distance(*mm, near, r);
@@ -407,7 +453,16 @@ std::vector<AuditRow> audit_convex(const std::string& name, const ExactScene& s,
         r.junctions_found = r.exact_junctions;
         rows.push_back(r);
     }
-    if (std::find(methods.begin(), methods.end(), "grid") != methods.end()) {
+    if (std::find(methods.begin(), methods.end(), "grid") != methods.end() && !beyond.empty()) {
+        for (int n : grid_ns)
+            for (const char* g : {"grid+bisection (libccd-gjk)", "grid+analytical (libccd-gjk)"}) {
+                AuditRow r = not_run_row(name, "libccd-gjk", eps, settings, false, beyond);
+                r.method = g;
+                r.has_curve = true;
+                r.grid_n = n;
+                rows.push_back(r);
+            }
+    } else if (std::find(methods.begin(), methods.end(), "grid") != methods.end()) {
         auto gjk = fp::make_libccd_gjk(f);
         for (int n : grid_ns) {
             AuditRow r;

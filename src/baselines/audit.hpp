@@ -49,8 +49,9 @@ std::vector<int> score_compound(const fp::Method& m, const std::vector<CompoundS
 // The compound audit of a scene: the region and its labelled boundary (CompoundSession), the
 // samples, every method's verdicts, and where a method measures and its verdict is right, its
 // distances against the exact ones (CompoundJudge::distance); the methods run with `settings`.
-// InputError for an unknown method, or when the region's union is not formed (past
-// kMaxUnionPolygons pair polygons).
+// InputError for an unknown method. When the region's union is not formed (past
+// kMaxUnionPolygons pair polygons) or the scene is past the doubles' range, every method's row
+// says it did not run, and why.
 std::vector<AuditRow> audit_compound(const std::string& name, const ExactScene& s, const Q& eps,
                                      const std::vector<std::string>& methods, bool by_distance, bool measures,
                                      const MethodSettings& settings = {});
@@ -64,9 +65,12 @@ double median(std::vector<double> v);
 // (√along − √squared) / √squared: how much deeper the bodies are along a method's direction than
 // their depth (`along` the squared depth along it, `squared` the exact squared depth, > 0).
 double direction_excess(const Q& along, const Q& squared);
-// InputError when the largest scaled coordinate passes 2^200, where the floating-point methods'
-// squared lengths overflow (audit.cpp).
-void refuse_beyond_doubles(double extent);
+// Why no floating-point method can run where the largest scaled coordinate is `extent`: past
+// 2^200 their squared lengths overflow (audit.cpp); "" below.
+std::string beyond_doubles(double extent);
+// A row that says method `meth` did not run on the scene, and why (AuditRow::not_run).
+AuditRow not_run_row(const std::string& scene, const std::string& meth, const Q& eps, const MethodSettings& settings,
+                     bool measures, std::string why);
 
 // The audit campaigns run (CampaignArgs::auditor): these baselines' methods and audit_scene.
 Auditor baseline_auditor();

@@ -195,12 +195,17 @@ std::vector<AuditRow> audit_compound(const std::string& name, const ExactScene& 
     for (const std::string& m : methods)
         if (std::find(known.begin(), known.end(), m) == known.end())
             throw InputError("--methods: unknown method " + in_quotes(m));
+    auto none_run = [&](const std::string& why) {
+        std::vector<AuditRow> rows;
+        for (const std::string& m : methods) rows.push_back(not_run_row(name, m, eps, settings, measures, why));
+        return rows;
+    };
     CompoundSession session(s, name);
     const CompoundRegion& r = session.region(true);
     if (r.union_skipped)
-        throw InputError("more than " + std::to_string(kMaxUnionPolygons) +
-                         " part pairs overlap with area in I1 x I2: the region's union, whose boundary the audit "
-                         "samples, is not formed");
+        return none_run("more than " + std::to_string(kMaxUnionPolygons) +
+                        " part pairs overlap with area in I1 x I2: the region's union, whose boundary the audit "
+                        "samples, is not formed");
     const CompoundBoundary b = label_boundary(r, session.scene());
     CompoundJudge judge(session.scene(), name);
     const std::vector<CompoundSample> samples = compound_samples(judge, b);
@@ -210,7 +215,7 @@ std::vector<AuditRow> audit_compound(const std::string& name, const ExactScene& 
     for (int i = 0; i < 2; ++i)
         for (const fp::CompoundFp::Part& part : f.parts[i])
             extent = fp::scaled_extent(part.pts, f.seed[i], to_double_rn(s.hi[i]), extent);
-    refuse_beyond_doubles(extent);
+    if (const std::string why = beyond_doubles(extent); !why.empty()) return none_run(why);
     std::vector<std::optional<Q>> squared(samples.size());  // exact squared distances, once for all methods
     // Exact squared depths of part pairs at samples, once for all methods (−1: the pair does not overlap).
     std::map<std::tuple<size_t, int, int>, std::optional<Q>> pair_depths;

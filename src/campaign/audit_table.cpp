@@ -11,6 +11,7 @@ const char* AuditRow::said_word(int said) {
     case kSaidSeparated: return "separated";
     case kSaidTouching: return "touching";
     case kSaidIntersecting: return "intersecting";
+    case kSaidNoAnswer: return "no answer";
     default: return "overlapping";
     }
 }
@@ -20,15 +21,24 @@ bool AuditRow::wrong(int said, int exact) {
     case kSaidSeparated: return exact != 0;
     case kSaidTouching: return exact != 1;
     case kSaidIntersecting: return exact == 0;
+    case kSaidNoAnswer: return true;
     default: return exact != 2;
     }
 }
 
 void AuditRow::count(double r1, double r2, int said, int exact) {
+    if (said == kSaidNoAnswer) return count_no_answer(r1, r2, exact, "no answer", "");
     ++queries;
     if (!wrong(said, exact)) return;
     ++(said == kSaidSeparated ? false_separated : said == kSaidTouching ? false_touching : false_overlapping);
     if (failures.size() < kMaxFailures) failures.push_back({r1, r2, said, exact});
+}
+
+void AuditRow::count_no_answer(double r1, double r2, int exact, std::string reason, std::string claim) {
+    ++queries;
+    ++not_answered;
+    if (failures.size() < kMaxFailures)
+        failures.push_back({r1, r2, kSaidNoAnswer, exact, std::move(reason), std::move(claim)});
 }
 
 void AuditRow::note_measures(std::vector<MeasureFailure> all, double tolerance) {
@@ -48,9 +58,12 @@ std::string audit_csv(const std::vector<AuditRow>& rows, bool timing) {
         "per_curve,growth_"
         "error,exact_junctions,junctions_found,junctions_missed,junctions_merged,max_junction_error,"
         "distances,distance_err_median,distance_err_max,depths,depth_err_median,depth_err_max,direction_err_max\n";
-    bool with_bd = false, with_on = false;
-    for (const AuditRow& r : rows) with_bd |= !r.by_distance.empty(), with_on |= r.on_boundary.has_value();
-    if (with_bd || with_on) {
+    bool with_bd = false, with_on = false, with_answers = false, with_not_run = false;
+    for (const AuditRow& r : rows) {
+        with_bd |= !r.by_distance.empty(), with_on |= r.on_boundary.has_value();
+        with_answers |= r.not_answered > 0, with_not_run |= !r.not_run.empty();
+    }
+    if (with_bd || with_on || with_answers || with_not_run) {
         s.pop_back();
         if (with_bd)
             for (int k = 4; k <= 52; k += 4) {
@@ -60,6 +73,8 @@ std::string audit_csv(const std::vector<AuditRow>& rows, bool timing) {
         if (with_on)
             s +=
                 ",on_points,on_touching,on_said_separated,on_said_touching,on_said_overlapping,on_moved,on_moved_wrong";
+        if (with_answers) s += ",not_answered";
+        if (with_not_run) s += ",not_run";
         s += "\n";
     }
     // The by-distance and on-boundary columns of a row (empty where it has none).
@@ -82,6 +97,14 @@ std::string audit_csv(const std::vector<AuditRow>& rows, bool timing) {
             } else {
                 e += ",,,,,,,";
             }
+        }
+        if (with_answers) e += "," + std::to_string(r.not_answered);
+        if (with_not_run && !r.not_run.empty()) {  // quoted, its quotes doubled (RFC 4180)
+            e += ",\"";
+            for (char ch : r.not_run) e += ch == '"' ? std::string("\"\"") : std::string(1, ch);
+            e += "\"";
+        } else if (with_not_run) {
+            e += ",";
         }
         return e;
     };
@@ -141,6 +164,8 @@ Json audit_json(const std::vector<AuditRow>& rows, bool timing) {
             o["false_separated"] = r.false_separated;
             o["false_overlapping"] = r.false_overlapping;
             o["false_touching"] = r.false_touching;
+            if (r.not_answered) o["not_answered"] = r.not_answered;
+            if (r.extra_claims) o["extra_claims"] = r.extra_claims;
             if (timing) o["seconds_per_query"] = r.seconds_per_query;
             if (r.distances) {
                 o["distances"] = r.distances;
@@ -165,11 +190,17 @@ Json audit_json(const std::vector<AuditRow>& rows, bool timing) {
             if (!r.failures.empty()) {
                 static const char* const exact_name[3] = {"separated", "touching", "overlapping"};
                 Json fs = Json::array();
-                for (const AuditRow::Failure& f : r.failures)
-                    fs.push_back(Json{{"rho1", f.rho1},
-                                      {"rho2", f.rho2},
-                                      {"said", AuditRow::said_word(f.said)},
-                                      {"exact", exact_name[f.exact]}});
+                for (const AuditRow::Failure& f : r.failures) {
+                    Json fj{{"rho1", f.rho1},
+                            {"rho2", f.rho2},
+                            {"said", AuditRow::said_word(f.said)},
+                            {"exact", exact_name[f.exact]}};
+                    if (f.said == AuditRow::kSaidNoAnswer) {
+                        fj["reason"] = f.reason;
+                        fj["claim"] = f.claim.empty() ? Json() : Json::parse(f.claim);
+                    }
+                    fs.push_back(std::move(fj));
+                }
                 o["failures"] = fs;  // the first AuditRow::kMaxFailures wrong verdicts
             }
             if (r.measures_wrong) {
@@ -194,6 +225,7 @@ Json audit_json(const std::vector<AuditRow>& rows, bool timing) {
             }
             if (r.contacts_apart) o["contacts_apart"] = r.contacts_apart;
         }
+        if (!r.not_run.empty()) o["not_run"] = r.not_run;
         a.push_back(o);
     }
     return a;

@@ -30,8 +30,16 @@ struct AuditRow {
     // Wrong verdicts (CLAIMS.md's verdict rules): said separated where they meet; said they overlap
     // where they are apart (or said strictly overlapping where they only touch); said touching where
     // they do not touch. Their sum is wrong().
-    long queries = 0, false_separated = 0, false_overlapping = 0, false_touching = 0;
-    long wrong() const { return false_separated + false_overlapping + false_touching; }
+    // Of a program's own claims (audit --command): the pairs asked whose claim is no answer to the
+    // question (at another pair or pose, of another kind, unreadable, or missing), each wrong.
+    long queries = 0, false_separated = 0, false_overlapping = 0, false_touching = 0, not_answered = 0;
+    long wrong() const { return false_separated + false_overlapping + false_touching + not_answered; }
+    // Why the method did not run on this scene ("" when it ran): its counts are then all 0. A
+    // method that cannot run on one scene (libccd's EPA tolerance finer than doubles resolve
+    // there, coordinates past the doubles' range, a program that failed) says so here, and the
+    // audit goes on with the other methods and scenes.
+    std::string not_run;
+    long extra_claims = 0;  // a program's claims past the pairs asked: answers to no question, left out
     double seconds_per_query = 0;
     // curve methods (grid search): errors against the exact curve
     bool has_curve = false;
@@ -70,21 +78,33 @@ struct AuditRow {
     // the audit's order: (ρ1, ρ2) as the doubles it was asked at, what it said (a Said) and the
     // exact verdict at those doubles (0 separated, 1 touching, 2 overlapping). `audit --failures
     // DIR` writes them as claims files that certify-fp replays.
+    // A claim of the program's that is no answer (said == kSaidNoAnswer) has its reason and what
+    // the program wrote for that pair, as JSON text ("" when it wrote nothing there).
     struct Failure {
         double rho1, rho2;
         int said, exact;
+        std::string reason = {}, claim = {};
     };
     std::vector<Failure> failures;
     static constexpr size_t kMaxFailures = 50;
     // What a method said (its classify): separated, touching, intersecting (overlapping or
     // touching: what a collision query's "colliding" means) or overlapping (strictly: only a
-    // program's own claims say it).
-    enum Said { kSaidOverlapping = -2, kSaidIntersecting = -1, kSaidTouching = 0, kSaidSeparated = 1 };
+    // program's own claims say it); no answer: a program's claim that does not answer the pair
+    // asked (wrong whatever the exact verdict).
+    enum Said {
+        kSaidNoAnswer = -3,
+        kSaidOverlapping = -2,
+        kSaidIntersecting = -1,
+        kSaidTouching = 0,
+        kSaidSeparated = 1
+    };
     static const char* said_word(int said);
     // Whether saying `said` where the exact verdict is `exact` (0, 1, 2 as above) is wrong.
     static bool wrong(int said, int exact);
     // A verdict `said` at (r1, r2) where the exact one is `exact`: counted and, when wrong, noted.
     void count(double r1, double r2, int said, int exact);
+    // A pair (r1, r2) whose claim is no answer: counted and noted with its reason and the claim.
+    void count_no_answer(double r1, double r2, int exact, std::string reason, std::string claim);
     // Where the method's distances or depths were off by more than the audit's measure tolerance
     // (relative): `measures_wrong` of them, the worst kMaxFailures listed (largest error first,
     // ties in the audit's order), each with the pair asked, the value, its relative error and, on
@@ -106,7 +126,8 @@ struct AuditRow {
 // Without timing, the timing columns are left empty (CSV) and out (JSON): the rest is the same
 // bytes for the same arguments, on any number of processes. When some row has by_distance (or
 // on_boundary), the CSV has their columns too (bdK_pairs, bdK_wrong, bdK_touching for K = 4 ... 52;
-// on_points ... on_moved_wrong), empty in the rows without them.
+// on_points ... on_moved_wrong), empty in the rows without them; likewise not_answered and
+// not_run (the reason, quoted) when some row has them.
 std::string audit_csv(const std::vector<AuditRow>& rows, bool timing = true);
 Json audit_json(const std::vector<AuditRow>& rows, bool timing = true);
 

@@ -195,10 +195,16 @@ Json row_json(const AuditRow& r) {
         {"failures",
          [&] {
              Json a = Json::array();
-             for (const AuditRow::Failure& f : r.failures)
-                 a.push_back(Json::array({num_json(f.rho1), num_json(f.rho2), f.said, f.exact}));
+             for (const AuditRow::Failure& f : r.failures) {
+                 Json x = Json::array({num_json(f.rho1), num_json(f.rho2), f.said, f.exact});
+                 if (f.said == AuditRow::kSaidNoAnswer) x.push_back(Json::array({f.reason, f.claim}));
+                 a.push_back(std::move(x));
+             }
              return a;
          }()},
+        {"not_answered", r.not_answered},
+        {"not_run", r.not_run},
+        {"extra_claims", r.extra_claims},
         {"measures_wrong", r.measures_wrong},
         {"measure_failures",
          [&] {
@@ -252,8 +258,16 @@ AuditRow row_of(const Json& j) {
                                  o.at(4).get<long>(), o.at(5).get<long>(), o.at(6).get<long>()};
     }
     if (j.contains("failures"))
-        for (const Json& f : j.at("failures"))
+        for (const Json& f : j.at("failures")) {
             r.failures.push_back({num_of(f.at(0)), num_of(f.at(1)), f.at(2).get<int>(), f.at(3).get<int>()});
+            if (f.size() > 4) {
+                r.failures.back().reason = f.at(4).at(0).get<std::string>();
+                r.failures.back().claim = f.at(4).at(1).get<std::string>();
+            }
+        }
+    if (j.contains("not_answered")) r.not_answered = j.at("not_answered").get<long>();
+    if (j.contains("not_run")) r.not_run = j.at("not_run").get<std::string>();
+    if (j.contains("extra_claims")) r.extra_claims = j.at("extra_claims").get<long>();
     r.measures_wrong = j.at("measures_wrong").get<long>();
     for (const Json& f : j.at("measure_failures"))
         r.measure_failures.push_back({num_of(f.at(0)), num_of(f.at(1)), f.at(2).get<bool>(), num_of(f.at(3)),
@@ -437,6 +451,14 @@ void write_failures(const CampaignArgs& a, const std::vector<AuditRow>& rows) {
     char tol[32];
     const auto end = std::to_chars(tol, tol + sizeof tol, a.settings.measure_tolerance).ptr;
     const std::string tolerance(tol, end);
+    // The command as the shell reads it: quoted when it holds anything but letters, digits and _./-
+    std::string program = a.program;
+    if (program.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_./-") !=
+        std::string::npos) {
+        program = "'";
+        for (char ch : a.program) program += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
+        program += "'";
+    }
     for (const AuditRow& r : rows) {
         if (r.failures.empty() && r.measure_failures.empty()) continue;
         const bool given = a.given.count(r.scene) > 0, file = files.count(r.scene) > 0 && !given;
@@ -452,21 +474,49 @@ void write_failures(const CampaignArgs& a, const std::vector<AuditRow>& rows) {
                     (file ? std::filesystem::path(scene).extension().string().size() : 11));  // ".scene.json"
         std::string base = stem + "." + method;
         for (int k = 2; !used.insert(base).second; ++k) base = stem + "-" + std::to_string(k) + "." + method;
-        if (!r.failures.empty()) {
+        // A program's claims that were no answer: NAME.METHOD.no-answers.json, each pair asked with
+        // what the program wrote for it and why that is no answer (nothing to replay: no verdict).
+        Json no_answers = Json::array();
+        long wrong_verdicts = 0;
+        for (const AuditRow::Failure& f : r.failures)
+            if (f.said == AuditRow::kSaidNoAnswer)
+                no_answers.push_back(Json{{"rho1", f.rho1},
+                                          {"rho2", f.rho2},
+                                          {"said", f.claim.empty() ? Json() : Json::parse(f.claim)},
+                                          {"reason", f.reason}});
+            else
+                ++wrong_verdicts;
+        if (!no_answers.empty()) {
+            const std::string name = base + ".no-answers.json";
+            const size_t listed = no_answers.size();
+            write_file_atomically(
+                a.failures + "/" + name,
+                dump(Json{{"format", "scalecert-no-answers-1"}, {"scene", scene}, {"answers", std::move(no_answers)}}));
+            index.push_back(Json{{"scene", scene},
+                                 {"method", r.method},
+                                 {"no_answers", a.failures + "/" + name},
+                                 {"listed", listed},
+                                 {"not_answered", r.not_answered}});
+        }
+        if (wrong_verdicts > 0) {
             const std::string name = base + ".claims.json";
             Json claims = Json::array();
             for (const AuditRow::Failure& f : r.failures)
-                claims.push_back(Json{
-                    {"kind", "verdict"}, {"rho1", f.rho1}, {"rho2", f.rho2}, {"verdict", AuditRow::said_word(f.said)}});
+                if (f.said != AuditRow::kSaidNoAnswer)
+                    claims.push_back(Json{{"kind", "verdict"},
+                                          {"rho1", f.rho1},
+                                          {"rho2", f.rho2},
+                                          {"verdict", AuditRow::said_word(f.said)}});
+            const size_t claims_listed = claims.size();
             write_file_atomically(a.failures + "/" + name,
                                   dump(Json{{"format", "scalecert-claims-1"}, {"claims", std::move(claims)}}));
             index.push_back(
                 Json{{"scene", scene},
                      {"method", r.method},
                      {"claims", a.failures + "/" + name},
-                     {"listed", r.failures.size()},
-                     {"wrong", r.wrong()},
-                     {"replay", "scalecert certify-fp " + scene + " " + a.failures + "/" + name + numbers}});
+                     {"listed", claims_listed},
+                     {"wrong", r.wrong() - r.not_answered},
+                     {"replay", program + " certify-fp " + scene + " " + a.failures + "/" + name + numbers}});
         }
         if (!r.measure_failures.empty()) {
             const std::string name = base + ".measures.claims.json";
@@ -487,7 +537,7 @@ void write_failures(const CampaignArgs& a, const std::vector<AuditRow>& rows) {
                                  {"listed", r.measure_failures.size()},
                                  {"wrong", r.measures_wrong},
                                  {"tolerance", a.settings.measure_tolerance},
-                                 {"replay", "scalecert certify-fp " + scene + " " + a.failures + "/" + name +
+                                 {"replay", program + " certify-fp " + scene + " " + a.failures + "/" + name +
                                                 " --tolerance " + tolerance + numbers}});
         }
     }

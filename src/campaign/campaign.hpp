@@ -58,6 +58,9 @@ struct CampaignArgs {
     // audit: a directory for the reproducers (write_failures): a claims file per scene and method
     // with wrong verdicts, the family scenes they happened on, and index.json.
     std::string failures;
+    // audit --failures: how index.json's replay commands name the scalecert command (the path it
+    // was run by, when that names a folder: a build tree's scalecert is not on PATH).
+    std::string program = "scalecert";
     ReadOptions opt;
     MethodSettings settings;  // audit: the methods' own settings
     Auditor auditor;          // audit: the methods (none without the baselines)

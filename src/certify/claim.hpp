@@ -5,6 +5,7 @@
 // applied here once, for convex objects (ConvexRules) and objects made of parts (PartsRules).
 #pragma once
 #include "certify/claims.hpp"
+#include "io/strict_json.hpp"
 
 #include <array>
 #include <map>
@@ -60,6 +61,12 @@ struct TypedClaim {
     // judged wrong; that field's value above is not used.
     std::string no_answer, no_answer_reason;
 };
+
+// A JSON claims file's root ({"format": "scalecert-claims-1", "claims": [...]}), checked, and one
+// claim of its list on two convex objects, read as certify-fp reads it (JSON numbers by
+// `numbers`, strings exact): InputError names what is wrong, after `name`.
+JNode read_claims_root(const std::string& claims, const std::string& name);
+TypedClaim read_claim(const JNode& claim, size_t index, const std::string& name, Numbers numbers);
 
 // An exact switch point of the curve, with its contact label.
 struct ExactSwitch {

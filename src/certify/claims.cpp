@@ -892,6 +892,12 @@ Run run_claims(Rules& rules, const std::string& claims, const std::string& name,
 }
 }  // namespace
 
+JNode read_claims_root(const std::string& claims, const std::string& name) { return claims_root(claims, name); }
+
+TypedClaim read_claim(const JNode& claim, size_t index, const std::string& name, Numbers numbers) {
+    return ClaimReader(name, numbers, nullptr).read(claim, index);
+}
+
 std::string certify_fp(const ClaimModels& models, const std::string& claims, const std::string& name,
                        const ClaimOptions& opt, long* wrong, long* count, std::string* certificate) {
     const bool json = is_json(claims, opt, name);

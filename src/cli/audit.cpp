@@ -31,6 +31,7 @@ Command add_audit(CLI::App& app) {
                     a->given[name] = pair->load();
                     a->scenes.push_back(name);
                 }
+                a->program = program_path();
                 validate(*a);  // refused before any work
                 // What reading each scene file leaves to say (an OBJ of several groups read as one
                 // convex object), as every command says it; standard input is read once, by the run.

@@ -47,6 +47,21 @@ CLI::Option* add_numbers(CLI::App* sub, Numbers& numbers) {
     return o;
 }
 
+namespace {
+
+// A seed's check: decimal digits only (CLI11 then refuses a value past 2^64 - 1).
+CLI::Validator digits_only() {
+    return CLI::Validator(
+        [](std::string& v) {
+            return !v.empty() && v.find_first_not_of("0123456789") == std::string::npos
+                       ? std::string()
+                       : "not a whole number from 0 to 2^64 - 1: " + v;
+        },
+        "UINT64");
+}
+
+}  // namespace
+
 void add_golden_options(CLI::App* sub, internal::CampaignArgs& a) {
     a.golden = true;
     a.opt.allow_parts = true;  // scenes of objects made of parts: golden data at their region's boundary
@@ -61,8 +76,9 @@ void add_golden_options(CLI::App* sub, internal::CampaignArgs& a) {
                     "random | parallel-faces | nearly-equal-slopes | nearly-parallel-edges | vertex-vertex | "
                     "far-from-origin | sliver | near-sphere");
     CLI::Option* count = sub->add_option("--count", a.count, "how many scenes of the family (1 to 10^7)")
-                             ->check(CLI::Range(1, internal::kMaxGoldenCount));
-    sub->add_option("--seed", a.seed, "the run's random seed (scene i's own seed is derived from it and i)");
+                             ->check(whole_number(1, internal::kMaxGoldenCount));
+    sub->add_option("--seed", a.seed, "the run's random seed (scene i's own seed is derived from it and i)")
+        ->check(digits_only());
     CLI::Option* eps = sub->add_option("--eps", a.eps_text, "the family's degeneracy parameter (exact, default 2^-20)");
     sub->add_option("--verticals", a.points.verticals,
                     "how many values of rho1 to sample the boundary at, spread over the part of I1 where it crosses "
@@ -100,6 +116,27 @@ namespace {
 // value, not an error); as_float: also 0 or a number whose nearest float is normal, for what
 // Bullet (built with float btScalar, as Debian's is) holds, and taken as that float (so the rows
 // record the value Bullet used).
+}  // namespace
+
+CLI::Validator whole_number(long long lo, long long hi) {
+    return CLI::Validator(
+        [lo, hi](std::string& v) {
+            const size_t digits = v.size() - (!v.empty() && v[0] == '-' && lo < 0);
+            bool ok =
+                digits > 0 && digits <= 19 && v.find_first_not_of("0123456789", v.size() - digits) == std::string::npos;
+            if (ok) {
+                errno = 0;
+                const long long x = std::strtoll(v.c_str(), nullptr, 10);
+                ok = errno == 0 && x >= lo && x <= hi;
+            }
+            return ok ? std::string()
+                      : "not a whole number from " + std::to_string(lo) + " to " + std::to_string(hi) + ": " + v;
+        },
+        "INT in [" + std::to_string(lo) + " - " + std::to_string(hi) + "]");
+}
+
+namespace {
+
 CLI::Validator finite_number(double lo, bool strict, bool as_float = false) {
     return CLI::Validator(
         [lo, strict, as_float](std::string& v) {
@@ -140,7 +177,7 @@ void add_audit_options(CLI::App* sub, internal::CampaignArgs& a) {
         ->delimiter(',');
     sub->add_option("--grid", a.grid, "grid resolutions for the grid method (2 to 4096)")
         ->delimiter(',')
-        ->check(CLI::Range(2, 4096));
+        ->check(whole_number(2, 4096));
     sub->add_option("--family", a.family, "also audit a family over an eps sweep (with --sweep)");
     sub->add_option(
            "--command", a.command,
@@ -160,11 +197,13 @@ void add_audit_options(CLI::App* sub, internal::CampaignArgs& a) {
                   "also audit the failure atlas: a family per class of failure users report (face-to-face, "
                   "long-edge, scaled, touching, decomposition-gap), each at its own eps values, --count scenes each "
                   "(docs/audits.md)");
-    sub->add_option("--sweep", a.sweep_from, "eps = 2^-K for K from this (0 to 1074) ...")->check(CLI::Range(0, 1074));
-    sub->add_option("--sweep-to", a.sweep_to, "... to this (inclusive, 0 to 1074)")->check(CLI::Range(0, 1074));
-    sub->add_option("--count", a.count, "scenes per eps in the sweep (1 to 10^6)")->check(CLI::Range(1, 1000000));
+    sub->add_option("--sweep", a.sweep_from, "eps = 2^-K for K from this (0 to 1074) ...")
+        ->check(whole_number(0, 1074));
+    sub->add_option("--sweep-to", a.sweep_to, "... to this (inclusive, 0 to 1074)")->check(whole_number(0, 1074));
+    sub->add_option("--count", a.count, "scenes per eps in the sweep (1 to 10^6)")->check(whole_number(1, 1000000));
     sub->add_option("--seed", a.seed,
-                    "the run's random seed (each family scene's own seed is derived from it, K and its index)");
+                    "the run's random seed (each family scene's own seed is derived from it, K and its index)")
+        ->check(digits_only());
     add_numbers(sub, a.opt.numbers);
     sub->add_flag("--parts-from-groups", a.opt.parts_from_groups,
                   "read each OBJ mesh a scene names as an object made of convex parts, a part per 'o' or 'g' group");
@@ -210,7 +249,7 @@ void add_audit_options(CLI::App* sub, internal::CampaignArgs& a) {
         ->check(finite_number(0, true));
     sub->add_option("--ccd-max-iterations", st.ccd_max_iterations, "libccd's max_iterations (libccd-*; default 500)")
         ->type_name("N")
-        ->check(CLI::Range(1, 1000000000));
+        ->check(whole_number(1, 1000000000));
     sub->add_option("--ccd-epa-tolerance", st.ccd_epa_tolerance, "libccd's epa_tolerance (default 1e-4, libccd's)")
         ->type_name("T")
         ->check(finite_number(0, true));

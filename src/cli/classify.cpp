@@ -1,4 +1,5 @@
 // scalecert classify: exact verdicts for many pairs of doubles, filtered, on every core.
+#include "campaign_options.hpp"
 #include "common.hpp"
 #include "io/files.hpp"
 
@@ -21,7 +22,7 @@ Command add_classify(CLI::App& app) {
         "classify", "exact verdicts for many pairs: lines 'rho1 rho2' (doubles, classified at their exact values)");
     a->scene.add(sub);
     sub->add_option("PAIRS", a->pairs, "file of pairs, one 'rho1 rho2' per line ('-', the default: standard input)");
-    sub->add_option("--threads", a->threads, "threads (default: all cores)")->check(CLI::Range(1u, 256u));
+    sub->add_option("--threads", a->threads, "threads (default: all cores)")->check(whole_number(1, 256));
     add_out(sub, a->out);
     example(sub,
             "Writes one verdict per line. Example:\n"

@@ -302,4 +302,9 @@ internal::Segment parse_segment(const std::string& spec, const HullModel& m, con
 
 void example(CLI::App* sub, const std::string& text) { sub->footer("\n" + text); }
 
+std::string& program_path() {
+    static std::string path = "scalecert";
+    return path;
+}
+
 }  // namespace scalecert::cli

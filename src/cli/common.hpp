@@ -56,6 +56,10 @@ void emit(const std::string& text, const std::string& out);
 Q read_rho(const std::string& text, const char* name, const ReadOptions& opt);
 // "A,B" or "A,B,C": numbers separated by commas, read as the scene reader reads them.
 std::vector<Q> number_list(const std::string& text, size_t n, const std::string& option, const ReadOptions& opt);
+// The path this command was run by (argv[0]) when it names a folder ("build/scalecert"), else
+// "scalecert": how the commands it writes for the user to replay name it. Set by main.
+std::string& program_path();
+
 // Sets the --help footer: what the command writes, and an example.
 void example(CLI::App* sub, const std::string& text);
 

@@ -1,4 +1,5 @@
 // scalecert grid: the paper's floating-point grid search (a baseline, not certified).
+#include "campaign_options.hpp"
 #include "common.hpp"
 
 #include "baselines/baselines.hpp"
@@ -17,8 +18,8 @@ Command add_grid(CLI::App& app) {
     CLI::App* sub =
         app.add_subcommand("grid", "the paper's floating-point grid search (a baseline, not certified; JSON)");
     a->scene.add(sub);
-    sub->add_option("--n", a->n, "grid resolution per axis")->check(CLI::Range(2, 4096));
-    sub->add_option("--bisections", a->bisections, "bisection steps per column")->check(CLI::Range(0, 60));
+    sub->add_option("--n", a->n, "grid resolution per axis")->check(whole_number(2, 4096));
+    sub->add_option("--bisections", a->bisections, "bisection steps per column")->check(whole_number(0, 60));
     sub->add_option(
         "--method", a->method,
         "libccd-gjk | libccd-mpr | double-envelope | paper-tritri | fcl-gjk-libccd | fcl-gjk-indep | bullet-gjk-epa");

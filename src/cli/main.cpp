@@ -44,6 +44,7 @@ void gmp_free(void* p, size_t) { std::free(p); }
 
 int main(int argc, char** argv) {
     mp_set_memory_functions(gmp_alloc, gmp_realloc, gmp_free);
+    if (argc > 0 && std::string(argv[0]).find('/') != std::string::npos) cli::program_path() = argv[0];
     CLI::App app{"scalecert: exact, certified collision of uniformly scaled convex polyhedra"};
     app.require_subcommand(1);
     app.set_version_flag("--version", std::string("scalecert ") + scalecert::version());

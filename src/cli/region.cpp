@@ -1,5 +1,6 @@
 // scalecert region: where two objects made of convex parts overlap in I1 × I2: each part pair's
 // exact polygon, their union, and the growth set along ρ1 = ρ2.
+#include "campaign_options.hpp"
 #include "common.hpp"
 #include "certify/classify.hpp"
 #include "file_name.hpp"
@@ -39,7 +40,7 @@ Command add_region(CLI::App& app) {
            "input), one per line, located on a grid over I1 x I2 built once")
         ->type_name("PAIRS");
     sub->add_option("--threads", a->threads, "threads for --classify (default: all cores)")
-        ->check(CLI::Range(1u, 256u));
+        ->check(whole_number(1, 256));
     example(sub,
             "Examples:\n  scalecert region tests/data/compound_band.json\n  scalecert region "
             "tests/data/compound_band.json --at 7/6,2\n"

@@ -203,9 +203,9 @@ int main(int argc, char** argv) {
         sub->add_option("--run", run, "run folder: the manifest and one file per finished shard")->required();
         sub->add_flag("--resume", resume, "go on with the run in --run: redo only missing or damaged shards");
         sub->add_option("--shard-size", shard_size, "family scenes per shard (default 16 golden, 4 audit)")
-            ->check(CLI::Range(1, 1000000));
+            ->check(scalecert::cli::whole_number(1, 1000000));
         sub->add_option("--stop-after", stop_after, "(for tests) stop, as if killed, after this many shards")
-            ->check(CLI::Range(0L, 1L << 40));
+            ->check(scalecert::cli::whole_number(0, 1LL << 40));
         sub->footer("\nExample:\n  mpirun -np 64 scalecert-mpi " +
                     std::string(sub == golden ? "golden --family random --count 100000 --dir golden/"
                                               : "audit --family sliver --sweep 2 --sweep-to 40 --count 1000 --out "
@@ -223,6 +223,9 @@ int main(int argc, char** argv) {
     }
     CampaignArgs& a = *golden ? golden_args : audit_args;
     a.shard_size = shard_size;
+    // The replay commands name the scalecert beside this program, when it was run by a path.
+    if (const std::string self = argv[0]; self.find('/') != std::string::npos)
+        a.program = self.substr(0, self.rfind('/') + 1) + "scalecert";
     std::vector<Shard> shards;
     // Every rank checks the arguments the same way; rank 0 alone speaks, and every rank exits.
     try {

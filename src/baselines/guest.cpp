@@ -1,0 +1,219 @@
+#include "baselines/guest.hpp"
+
+#include "numeric/exact.hpp"
+
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+#include <vector>
+
+#include <dirent.h>
+#include <fcntl.h>
+#include <poll.h>
+#include <sys/prctl.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace scalecert::internal {
+namespace {
+
+// Every process on the machine as pid -> (parent pid, state letter), from /proc/PID/stat.
+std::map<pid_t, std::pair<pid_t, char>> processes() {
+    std::map<pid_t, std::pair<pid_t, char>> all;
+    DIR* d = opendir("/proc");
+    if (!d) return all;
+    while (const dirent* e = readdir(d)) {
+        char* end = nullptr;
+        const long pid = std::strtol(e->d_name, &end, 10);
+        if (pid <= 0 || *end) continue;
+        std::ifstream in(std::string("/proc/") + e->d_name + "/stat");
+        std::string line;
+        if (!std::getline(in, line)) continue;  // gone meanwhile
+        // "pid (comm) state ppid ...": comm may hold spaces and parentheses; the last ')' ends it.
+        const size_t close = line.rfind(')');
+        if (close == std::string::npos || close + 4 >= line.size()) continue;
+        std::istringstream rest(line.substr(close + 2));
+        char state = '?';
+        long ppid = 0;
+        if (rest >> state >> ppid) all[static_cast<pid_t>(pid)] = {static_cast<pid_t>(ppid), state};
+    }
+    closedir(d);
+    return all;
+}
+
+// The descendants of this process (children, their children, ...), with their parent and state.
+std::map<pid_t, std::pair<pid_t, char>> descendants() {
+    const auto all = processes();
+    std::multimap<pid_t, pid_t> children;
+    for (const auto& [pid, ps] : all) children.emplace(ps.first, pid);
+    std::map<pid_t, std::pair<pid_t, char>> out;
+    std::vector<pid_t> todo{getpid()};
+    while (!todo.empty()) {
+        const pid_t p = todo.back();
+        todo.pop_back();
+        auto [lo, hi] = children.equal_range(p);
+        for (auto it = lo; it != hi; ++it)
+            if (out.emplace(it->second, all.at(it->second)).second) todo.push_back(it->second);
+    }
+    return out;
+}
+
+// Kills every descendant not in `keep` and reaps those that are this process's children, until
+// none is left (a process forking meanwhile is found on the next round; one that dies leaves its
+// children to this process, the subreaper). Bounded at 10 s, for a process that cannot die.
+void stop_descendants(const std::set<pid_t>& keep) {
+    const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+    for (long nap_us = 200;; nap_us = std::min(nap_us * 2, 20000L)) {
+        bool left = false;
+        for (const auto& [pid, ps] : descendants()) {
+            if (keep.count(pid)) continue;
+            left = true;
+            if (ps.second != 'Z') kill(pid, SIGKILL);
+            if (ps.first == getpid()) waitpid(pid, nullptr, WNOHANG);
+        }
+        if (!left || std::chrono::steady_clock::now() >= until) return;
+        usleep(static_cast<useconds_t>(nap_us));
+    }
+}
+
+// Reads what is there on fd into the count, keeping the last 4096 bytes in `tail` when given:
+// 1 when it read something, 0 at end of file (or an error), -1 when nothing is there yet.
+int drain(int fd, long long& count, std::string* tail) {
+    char buf[65536];
+    const ssize_t n = read(fd, buf, sizeof buf);
+    if (n < 0) return errno == EINTR || errno == EAGAIN ? -1 : 0;
+    if (n == 0) return 0;
+    count += n;
+    if (tail) {
+        tail->append(buf, static_cast<size_t>(n));
+        if (tail->size() > 4096) tail->erase(0, tail->size() - 4096);
+    }
+    return true;
+}
+
+}  // namespace
+
+std::string GuestRun::why_failed(double timeout) const {
+    char m[200];
+    switch (end) {
+    case Exited: std::snprintf(m, sizeof m, "it exited with status %d", code); break;
+    case Signalled: std::snprintf(m, sizeof m, "it was killed by signal %d (%s)", code, strsignal(code)); break;
+    case TimedOut:
+        std::snprintf(m, sizeof m, "it did not finish within %g s (--command-timeout) and was stopped", timeout);
+        break;
+    case NotStarted: std::snprintf(m, sizeof m, "it could not be started"); break;
+    }
+    return last_error_line.empty() ? std::string(m) : m + std::string("; its last error line: ") + last_error_line;
+}
+
+GuestRun run_guest(const std::string& command, double timeout) {
+    GuestRun g;
+    int out[2], err[2];
+    if (pipe2(out, O_CLOEXEC) != 0) return g;
+    if (pipe2(err, O_CLOEXEC) != 0) {
+        close(out[0]);
+        close(out[1]);
+        return g;
+    }
+    const std::set<pid_t> before = [] {
+        std::set<pid_t> s;
+        for (const auto& kv : descendants()) s.insert(kv.first);
+        return s;
+    }();
+    int was_subreaper = 0;
+    prctl(PR_GET_CHILD_SUBREAPER, &was_subreaper);
+    prctl(PR_SET_CHILD_SUBREAPER, 1);
+    std::fflush(nullptr);
+    const pid_t pid = fork();
+    if (pid == 0) {
+        const int in = open("/dev/null", O_RDONLY);
+        if (in < 0 || dup2(in, 0) < 0 || dup2(out[1], 1) < 0 || dup2(err[1], 2) < 0) _exit(127);
+        setpgid(0, 0);
+        execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
+        _exit(127);
+    }
+    close(out[1]);
+    close(err[1]);
+    if (pid > 0) {
+        setpgid(pid, pid);  // also here: the group exists whichever process runs first
+        const auto until = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout);
+        bool open_out = true, open_err = true;
+        std::string tail;
+        int status = 0;
+        for (long nap_ms = 1;; nap_ms = std::min(nap_ms * 2, 50L)) {
+            const pid_t r = waitpid(pid, &status, WNOHANG);
+            if (r == pid) {
+                g.end = WIFEXITED(status) ? GuestRun::Exited : GuestRun::Signalled;
+                g.code = WIFEXITED(status) ? WEXITSTATUS(status) : WTERMSIG(status);
+                break;
+            }
+            const auto now = std::chrono::steady_clock::now();
+            if ((r < 0 && errno != EINTR) || now >= until) {
+                g.end = GuestRun::TimedOut;
+                kill(-pid, SIGKILL);
+                break;
+            }
+            pollfd fds[2] = {{out[0], POLLIN, 0}, {err[0], POLLIN, 0}};
+            const long left_ms = std::chrono::duration_cast<std::chrono::milliseconds>(until - now).count() + 1;
+            if (open_out || open_err) {
+                if (!open_out) fds[0].fd = -1;
+                if (!open_err) fds[1].fd = -1;
+                if (poll(fds, 2, static_cast<int>(std::min(nap_ms, left_ms))) > 0) {
+                    if (fds[0].revents) open_out = drain(out[0], g.stdout_bytes, nullptr) != 0;
+                    if (fds[1].revents) open_err = drain(err[0], g.stderr_bytes, &tail) != 0;
+                    nap_ms = 1;
+                }
+            } else {
+                usleep(static_cast<useconds_t>(1000 * std::min(nap_ms, left_ms)));
+            }
+        }
+        // Whatever is still running of it: the program's own processes outlive it no longer.
+        stop_descendants(before);
+        // Every writer is gone: what is left in the pipes, to their ends.
+        for (int fd : {out[0], err[0]}) fcntl(fd, F_SETFL, fcntl(fd, F_GETFL) | O_NONBLOCK);
+        while (open_out && drain(out[0], g.stdout_bytes, nullptr) == 1) {}
+        while (open_err && drain(err[0], g.stderr_bytes, &tail) == 1) {}
+        // The last non-empty line of its error output, printable.
+        while (!tail.empty() && (tail.back() == '\n' || tail.back() == '\r')) tail.pop_back();
+        const size_t nl = tail.find_last_of('\n');
+        std::string line = nl == std::string::npos ? tail : tail.substr(nl + 1);
+        if (line.size() > kKeptErrorBytes) line = "..." + line.substr(line.size() - kKeptErrorBytes);
+        for (char& ch : line)
+            if (static_cast<unsigned char>(ch) < 0x20 || static_cast<unsigned char>(ch) >= 0x7f) ch = '?';
+        g.last_error_line = line;
+    }
+    close(out[0]);
+    close(err[0]);
+    prctl(PR_SET_CHILD_SUBREAPER, was_subreaper);
+    return g;
+}
+
+GuestFolder::GuestFolder() {
+    std::string base = "/tmp";
+    if (const char* t = std::getenv("TMPDIR"); t && *t) {
+        struct stat st{};
+        if (stat(t, &st) == 0 && S_ISDIR(st.st_mode)) base = t;
+    }
+    while (base.size() > 1 && base.back() == '/') base.pop_back();
+    std::string templ = base + "/scalecert-command-XXXXXX";
+    if (!mkdtemp(templ.data()))
+        throw InputError("--command: cannot make a temporary folder in " + base + " (" + std::strerror(errno) + ")");
+    path_ = templ;
+}
+
+GuestFolder::~GuestFolder() {
+    std::error_code ec;
+    std::filesystem::remove_all(path_, ec);
+}
+
+}  // namespace scalecert::internal
