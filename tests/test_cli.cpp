@@ -2014,6 +2014,31 @@ BOOST_AUTO_TEST_CASE(golden_pairs_follow_the_options_and_stay_in_the_rectangle) 
 
 // --numbers on golden too: the scene it writes for a mesh pair holds the numbers as read. 0.1 is
 // 3602879701896397/2^55 as a double, 13421773/2^27 as a float, and 1/10 as written.
+// A batch of golden data goes on past a scene whose answers pass a limit: 200 × 200 interleaved
+// boxes (tools/compound_grid.py) pass the judgements' work limit (docs/manual.md, "Limits"), and
+// the stacked cubes after them are written; the skipped scene is named with its reason, exit 0.
+BOOST_AUTO_TEST_CASE(golden_goes_on_past_a_scene_over_a_limit) {
+    const fs::path grid = workdir() / "grid200.json", dir = workdir() / "golden-batch";
+    fs::remove_all(dir);
+    BOOST_TEST_REQUIRE(std::system(("/usr/bin/python3 " + std::string(SCALECERT_SOURCE_DIR) +
+                                    "/tools/compound_grid.py 200 interleaved " + grid.string() + " " +
+                                    (workdir() / "grid200.claims.json").string())
+                                       .c_str()) == 0);
+    const Run r = run("golden " + grid.string() + " " + std::string(SCALECERT_SOURCE_DIR) +
+                      "/certificates/scenes/stacked_cubes.json --dir " + dir.string());
+    BOOST_TEST(r.status == 0, r.err);
+    BOOST_TEST(r.err.find("note: " + grid.string() +
+                          ": no golden data written: golden: 7 verticals on 200 x 200 "
+                          "parts pass the limit") != std::string::npos,
+               r.err);
+    BOOST_TEST(r.err.find("wrote 1 scene with exact answers to " + dir.string() + " (1 not written, noted above)") !=
+                   std::string::npos,
+               r.err);
+    BOOST_TEST(fs::exists(dir / "stacked_cubes.golden.json"));
+    BOOST_TEST(!fs::exists(dir / "grid200.golden.json"));
+    BOOST_TEST(!fs::exists(dir / "grid200.scene.json"));
+}
+
 BOOST_AUTO_TEST_CASE(golden_reads_numbers_as_told) {
     const std::string t = write("tenth.off", "OFF\n4 0 0\n0.1 0 0\n1 0 0\n0 1 0\n0 0 1\n").string(),
                       c = write("cube5.off", "OFF\n8 0 0\n5 0 0\n6 0 0\n5 1 0\n6 1 0\n5 0 1\n6 0 1\n5 1 1\n6 1 1\n")

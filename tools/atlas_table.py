@@ -7,7 +7,8 @@ A class is the family of a row's scene (its name without the index); with --by-s
 rows per scene (the file's name without its directory and .json) and method. Per class and method: the
 wrong verdicts among the queries (each a pair of doubles, judged by the exact verdict of those
 doubles), the same among the pairs 2^-k from the exact boundary (with --by-distance), and the
-worst relative error of the method's distances and penetration depths against the exact ones.
+worst relative error of the method's distances and penetration depths against the exact ones. A
+method that did not run on a scene (its row's not_run) is counted apart: "3 (1 not run)".
 """
 import json
 import os
@@ -43,10 +44,14 @@ def main():
             if cls not in CLASSES:
                 continue
         t = table.setdefault((cls, r["method"]), {"scenes": 0, "queries": 0, "wrong": 0, "pairs": 0, "near": 0,
-                                                  "dist": None, "depth": None})
+                                                  "dist": None, "depth": None, "not_run": 0})
+        if r.get("not_run"):  # a method that did not run on the scene: counted apart
+            t["not_run"] += 1
+            continue
         t["scenes"] += 1
         t["queries"] += r["queries"]
-        t["wrong"] += r.get("false_separated", 0) + r.get("false_overlapping", 0) + r.get("false_touching", 0)
+        t["wrong"] += (r.get("false_separated", 0) + r.get("false_overlapping", 0) + r.get("false_touching", 0) +
+                       r.get("not_answered", 0))
         for b in r.get("by_distance", []):
             t["pairs"] += b["pairs"]
             t["near"] += b["wrong"]
@@ -64,7 +69,8 @@ def main():
             if c != cls:
                 continue
             near = "%d / %d" % (t["near"], t["pairs"]) if t["pairs"] else "—"
-            print("| %s | %s | %d | %d / %d | %s | %s | %s |" % (cell(cls), cell(m), t["scenes"], t["wrong"], t["queries"], near,
+            scenes = "%d" % t["scenes"] + (" (%d not run)" % t["not_run"] if t["not_run"] else "")
+            print("| %s | %s | %s | %d / %d | %s | %s | %s |" % (cell(cls), cell(m), scenes, t["wrong"], t["queries"], near,
                                                               fmt(t["dist"]), fmt(t["depth"])))
 
 

@@ -224,7 +224,8 @@ def page(rows, audit_dir, failures_dir, program, scripts):
             "scene": key, "method": r["method"], "eps": str(r.get("eps", "0")), "queries": r["queries"],
             "false_separated": r.get("false_separated", 0), "false_overlapping": r.get("false_overlapping", 0),
             "false_touching": r.get("false_touching", 0), "measures_wrong": r.get("measures_wrong", 0),
-            "seconds_per_query": r.get("seconds_per_query"), "by_distance": r.get("by_distance", [])})
+            "seconds_per_query": r.get("seconds_per_query"), "by_distance": r.get("by_distance", []),
+            "not_answered": r.get("not_answered", 0), "not_run": r.get("not_run", "")})
         for f in r.get("failures", []):
             failures.append(dict(f, scene=key, method=r["method"]))
         for m in r.get("measure_failures", []):
@@ -296,20 +297,21 @@ function cell(tr, text, tag) { const c = document.createElement(tag || "td"); c.
 // The rows' table.
 const rt = document.getElementById("rows");
 let tr = rt.insertRow();
-for (const h of ["scene", "method", "eps", "queries", "wrong: said separated", "wrong: said intersecting", "wrong: said touching", "distances and depths wrong", "µs per query"]) cell(tr, h, "th");
+for (const h of ["scene", "method", "eps", "queries", "wrong: said separated", "wrong: said intersecting", "wrong: said touching", "no answer", "distances and depths wrong", "µs per query", "not run"]) cell(tr, h, "th");
 for (const r of D.rows) {
   tr = rt.insertRow();
   for (const v of [r.scene.split("/").pop(), r.method, r.eps, r.queries, r.false_separated, r.false_overlapping,
-                   r.false_touching, r.measures_wrong, r.seconds_per_query == null ? "" : (1e6 * r.seconds_per_query).toPrecision(3)]) cell(tr, v);
+                   r.false_touching, r.not_answered, r.measures_wrong,
+                   r.not_run || r.seconds_per_query == null ? "" : (1e6 * r.seconds_per_query).toPrecision(3), r.not_run]) cell(tr, v);
 }
 // The atlas table: rows of the atlas's families, per class and method.
 const classes = ["face-to-face", "long-edge", "scaled", "touching", "decomposition-gap"];
 const atlas = {};
 for (const r of D.rows) {
   const cls = r.scene.replace(/-[0-9]+$/, "");
-  if (!classes.includes(cls)) continue;
+  if (!classes.includes(cls) || r.not_run) continue;  // (a method not run on a scene is in the rows' table)
   const a = atlas[cls + "\u0000" + r.method] = atlas[cls + "\u0000" + r.method] || {cls, method: r.method, scenes: 0, queries: 0, wrong: 0, pairs: 0, near: 0};
-  a.scenes++; a.queries += r.queries; a.wrong += r.false_separated + r.false_overlapping + r.false_touching;
+  a.scenes++; a.queries += r.queries; a.wrong += r.false_separated + r.false_overlapping + r.false_touching + r.not_answered;
   for (const b of r.by_distance) { a.pairs += b.pairs; a.near += b.wrong; }
 }
 const at = document.getElementById("atlas");

@@ -201,7 +201,7 @@ GuestRun run_guest(const std::string& command, double timeout) {
 GuestFolder::GuestFolder() {
     std::string base = "/tmp";
     if (const char* t = std::getenv("TMPDIR"); t && *t) {
-        struct stat st{};
+        struct stat st {};
         if (stat(t, &st) == 0 && S_ISDIR(st.st_mode)) base = t;
     }
     while (base.size() > 1 && base.back() == '/') base.pop_back();

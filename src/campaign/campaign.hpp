@@ -97,7 +97,9 @@ std::string run_shard(const CampaignArgs& a, const Shard& s);
 // Golden: whether the files a shard's text lists are all present with their hashes.
 bool shard_outputs_intact(const CampaignArgs& a, const std::string& shard_text);
 // After every shard: writes the audit's JSON and CSV from the shards' texts, in shard order
-// (golden: nothing left to write). Returns the number of rows or scenes.
+// (golden: nothing left to write, and a note on stderr for each scene of the user's whose answers
+// passed a limit, which has no files while the others do). Returns the number of rows, or of
+// scenes written.
 long finish_campaign(const CampaignArgs& a, const std::vector<std::string>& shard_texts);
 // The whole campaign in this process: what scalecert golden and audit run.
 long run_campaign(const CampaignArgs& a);

@@ -52,11 +52,12 @@ Command add_golden(CLI::App& app) {
                 }
                 make_output_dir(a->dir);
                 if (mesh_scene) write_file_atomically(mesh_scene->first, mesh_scene->second);
-                run_campaign(*a);
-                const long n = static_cast<long>(a->scenes.size()) + (a->family.empty() ? 0 : a->count);
+                const long n = run_campaign(*a);
+                const long asked = static_cast<long>(a->scenes.size()) + (a->family.empty() ? 0 : a->count);
                 const std::string what = a->scenes.empty() ? " " + a->family : "";
                 std::cerr << "scalecert: wrote " << n << what << (n == 1 ? " scene" : " scenes")
-                          << " with exact answers to " << a->dir << "\n";
+                          << " with exact answers to " << a->dir
+                          << (n < asked ? " (" + std::to_string(asked - n) + " not written, noted above)" : "") << "\n";
                 return 0;
             }};
 }
