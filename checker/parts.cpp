@@ -142,7 +142,7 @@ CompoundScene CompoundScene::posed(Context& cx, const std::array<std::optional<P
         auto moved = std::make_shared<CompoundObject>();
         for (size_t k = 0; k < parts(i); ++k)
             moved->part.push_back(
-                posed_scan(cx, part(i, k), *pose[i], std::string(kPoly[i]) + "'s part " + std::to_string(k)));
+                posed_scan(cx, obj[i]->part[k], *pose[i], std::string(kPoly[i]) + "'s part " + std::to_string(k)));
         moved->index(cx);
         out.obj[i] = std::move(moved);
     }

@@ -134,6 +134,13 @@ void Scan::index() {
 }
 
 Z3 Scan::X(size_t k) const {
+    if (base_) {
+        const Z3 B = base_->X(k);
+        Z3 y = T_;
+        for (size_t r = 0; r < 3; ++r)
+            for (size_t c = 0; c < 3; ++c) mpz_addmul(y[r].get_mpz_t(), M_[r][c].get_mpz_t(), B[c].get_mpz_t());
+        return y;
+    }
     const int p = pos_.empty() ? static_cast<int>(k) : pos_[k];
     if (p < 0) return P_.big_x[static_cast<size_t>(-1 - p)];
     const size_t q = static_cast<size_t>(p);
@@ -146,7 +153,26 @@ double Scan::coord_limbs(size_t k, int c) const {
     return P_.x[c][static_cast<size_t>(p)] != 0 ? 1 : 0;  // |X| < 2^62: one limb, none for 0
 }
 
+Scan::Scan(Context& cx, std::shared_ptr<const Scan> base, const Z3 (&M)[3], const Z3& T, mpz_class D,
+           const std::string& what)
+    : D_(std::move(D)), base_(std::move(base)), T_(T) {
+    check_limit(what);
+    cx.spend(100);
+    for (size_t r = 0; r < 3; ++r)
+        for (size_t c = 0; c < 3; ++c) M_[r][c] = M[r][c], Mt_[c][r] = M[r][c];
+}
+
 std::vector<int> Scan::argmax(Context& cx, const Z3& u, const std::vector<int>* subset) const {
+    if (base_) {  // the base's maximisers along Mᵀu: nine products, counted as any
+        Z3 w;
+        double l = 0;
+        for (size_t c = 0; c < 3; ++c) {
+            for (size_t r = 0; r < 3; ++r) l += (1 + limbs(Mt_[c][r])) * (1 + limbs(u[r]));
+            w[c] = Mt_[c][0] * u[0] + Mt_[c][1] * u[1] + Mt_[c][2] * u[2];
+        }
+        cx.spend(50 + 4 * l);
+        return base_->argmax(cx, w, subset);
+    }
     int ub = 0;
     for (const mpz_class& c : u) ub = std::max(ub, static_cast<int>(mpz_sizeinbase(c.get_mpz_t(), 2)));
     int64_t w[3] = {0, 0, 0};
@@ -207,7 +233,7 @@ Direction::Direction(const Z3& v) : u(v) {
 }
 
 void Scan::max_dot(Context& cx, const Direction& d, mpz_class& best) const {
-    if (P_.big.empty() && d.small) {
+    if (machine() && d.small) {
         // Machine vertices and a machine normal: the bounds of argmax() (the header) in one pass.
         const size_t n = P_.small();
         const int64_t *x = P_.x[0].data(), *y = P_.x[1].data(), *z = P_.x[2].data();

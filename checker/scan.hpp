@@ -23,6 +23,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <string>
+#include <memory>
 #include <vector>
 
 namespace scalecert_check {
@@ -68,17 +69,26 @@ class Scan {
     // The largest u·X_k over all the vertices, in `best` (the value argmax() maximises; a
     // compound's block compares its parts' by it).
     void max_dot(Context& cx, const Direction& d, mpz_class& best) const;
+    // Another polytope `base` moved by a pose, held as the base and the pose (scene.cpp,
+    // posed_view): X_k = M·B_k + T over D, for B_k base's X (M = L·R, T = D·L·t, D = base's D
+    // times L, L the lcm of the pose's denominators). Nothing is moved until asked: X(k) moves
+    // vertex k, and argmax() asks the base along Mᵀu (u·X_k is largest where (Mᵀu)·B_k is), over
+    // the base's own numbers. Refused as unreadable when D passes 16,384 bits.
+    Scan(Context& cx, std::shared_ptr<const Scan> base, const Z3 (&M)[3], const Z3& T, mpz_class D,
+         const std::string& what);
     const mpz_class& D() const { return D_; }
     Z3 X(size_t k) const;  // D v_k
-    size_t size() const { return P_.n; }
+    size_t size() const { return base_ ? base_->size() : P_.n; }
     // Whether every X coordinate is below 2^62 in magnitude; then coords(c) holds coordinate c of
-    // every vertex in order, each below 2^bits().
-    bool machine() const { return P_.big.empty(); }
+    // every vertex in order, each below 2^bits(). (A moved polytope is not: its vertices are not held.)
+    bool machine() const { return !base_ && P_.big.empty(); }
     const int64_t* coords(int c) const { return P_.x[c].data(); }
     int bits() const { return bits_; }
 
   private:
     mpz_class D_ = 1;
+    std::shared_ptr<const Scan> base_;  // a moved polytope's base, M, Mᵀ and T
+    Z3 M_[3], Mt_[3], T_;
     // X_k = D v_k: the vertices whose X coordinates are all below 2^62 in magnitude as int64 at
     // compact positions (P_.point_at: position -> vertex), the others (P_.big) in mpz; pos_:
     // vertex -> its position, or -1 - its place in P_.big (empty while no vertex is big: the

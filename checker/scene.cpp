@@ -195,7 +195,9 @@ std::array<std::optional<Pose>, 2> claim_poses(Context& cx, const J& cl, const s
 // integer products over the common denominator D L, then divided by the gcd of D L and every
 // moved coordinate (the least common denominator, which the 16,384-bit limit is on: the engine
 // takes a compound part moved by a pose whose entries cancel its vertices' factors).
-std::shared_ptr<const Scan> posed_scan(Context& cx, const Scan& P, const Pose& m, const std::string& what) {
+std::shared_ptr<const Scan> posed_scan(Context& cx, const std::shared_ptr<const Scan>& base, const Pose& m,
+                                       const std::string& what) {
+    const Scan& P = *base;
     mpz_class L = 1;
     double lm = 0;
     for (const auto& row : m)
@@ -233,13 +235,32 @@ std::shared_ptr<const Scan> posed_scan(Context& cx, const Scan& P, const Pose& m
             cx.spend(50 + 4 * (1 + limbs(g)) * (1 + limbs(out[k][c])));
             mpz_gcd(g.get_mpz_t(), g.get_mpz_t(), out[k][c].get_mpz_t());
         }
-    if (g == 1) return std::make_shared<const Scan>(cx, std::move(out), DL, what);
-    for (Z3& y : out)
-        for (mpz_class& c : y) {
-            cx.spend(20 + 2 * (1 + limbs(c)) * (1 + limbs(g)));
-            mpz_divexact(c.get_mpz_t(), c.get_mpz_t(), g.get_mpz_t());
-        }
+    if (g != 1)
+        for (Z3& y : out)
+            for (mpz_class& c : y) {
+                cx.spend(20 + 2 * (1 + limbs(c)) * (1 + limbs(g)));
+                mpz_divexact(c.get_mpz_t(), c.get_mpz_t(), g.get_mpz_t());
+            }
     return std::make_shared<const Scan>(cx, std::move(out), DL / g, what);
+}
+
+std::shared_ptr<const Scan> posed_view(Context& cx, const std::shared_ptr<const Scan>& base, const Pose& m,
+                                       const std::string& what) {
+    mpz_class L = 1;
+    double lm = 0;
+    for (const auto& row : m)
+        for (const Q& e : row) {
+            mpz_lcm(L.get_mpz_t(), L.get_mpz_t(), e.get_den_mpz_t());
+            lm = std::max(lm, qsize(e));
+        }
+    cx.spend_ops(24, lm + limbs(L) + limbs(base->D()));
+    Z3 M[3], T;
+    const mpz_class DL = base->D() * L;
+    for (size_t r = 0; r < 3; ++r) {
+        for (size_t c = 0; c < 3; ++c) M[r][c] = m[r][c].get_num() * (L / m[r][c].get_den());
+        T[r] = m[r][3].get_num() * (DL / m[r][3].get_den());
+    }
+    return std::make_shared<const Scan>(cx, base, M, T, DL, what);
 }
 
 V3 posed_point(const V3& x, const std::optional<Pose>& pose) {
@@ -254,7 +275,7 @@ V3 posed_point(const V3& x, const std::optional<Pose>& pose) {
 Scene posed_scene(Context& cx, const Scene& sc, const std::array<std::optional<Pose>, 2>& pose) {
     Scene out;
     for (int i = 0; i < 2; ++i) {
-        out.scan[i] = pose[i] ? posed_scan(cx, *sc.scan[i], *pose[i], kPoly[i]) : sc.scan[i];
+        out.scan[i] = pose[i] ? posed_view(cx, sc.scan[i], *pose[i], kPoly[i]) : sc.scan[i];
         out.s[i] = posed_point(sc.s[i], pose[i]);
         out.lo[i] = sc.lo[i];
         out.hi[i] = sc.hi[i];

@@ -99,8 +99,15 @@ std::array<std::optional<Pose>, 2> claim_poses(Context& cx, const J& cl, const s
 // The scene with polyhedron i moved by pose[i] (none: as it is), its seed too: a claim at poses
 // is judged on it (FORMAT.md, "A judgements file").
 Scene posed_scene(Context& cx, const Scene& sc, const std::array<std::optional<Pose>, 2>& pose);
-// The vertices of P moved by the pose, scanned anew (`what` names them in the limit's message).
-std::shared_ptr<const Scan> posed_scan(Context& cx, const Scan& P, const Pose& pose, const std::string& what);
+// The vertices of P moved by the pose, scanned anew over their least common denominator (`what`
+// names them in the limit's message): a compound's part, whose blocks read every vertex.
+std::shared_ptr<const Scan> posed_scan(Context& cx, const std::shared_ptr<const Scan>& base, const Pose& pose,
+                                       const std::string& what);
+// The same polytope held as the base and the pose, nothing moved until asked (Scan's moved
+// constructor): a convex object, whose support queries go to the base along Mᵀu. Its common
+// denominator is the base's times the pose's (not reduced), refused past 16,384 bits.
+std::shared_ptr<const Scan> posed_view(Context& cx, const std::shared_ptr<const Scan>& base, const Pose& pose,
+                                       const std::string& what);
 // The point x moved by the pose (none: x).
 V3 posed_point(const V3& x, const std::optional<Pose>& pose);
 // I1 and I2 of a scene object: [lo, hi] with 0 < lo <= hi.

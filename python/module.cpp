@@ -640,11 +640,15 @@ DoubleArray doubles_of(const py::handle& h, const char* what, const char* who = 
     if (kind != "f" && kind != "i" && kind != "u")
         throw scalecert::InputError(std::string(who) + ": " + what +
                                     ": expected real numbers (an array or list of floats or ints)");
-    if (kind != "f") {  // integers: each must be a double exactly (beyond 2^53 not every one is)
+    // Integers, and floats wider than doubles (numpy's longdouble): each must be a double exactly
+    // (beyond 2^53 not every integer is; 0.1 as a long double is not the double 0.1).
+    if (kind != "f" || py::cast<size_t>(a.attr("dtype").attr("itemsize")) > 8) {
         py::object f = np.attr("asarray")(a, py::arg("dtype") = np.attr("float64"));
         py::object back = f.attr("astype")(a.attr("dtype"));
-        py::object bad = np.attr("flatnonzero")(
-            np.attr("logical_or")(np.attr("not_equal")(back, a), np.attr("greater_equal")(np.attr("abs")(f), 9.2e18)));
+        py::object differ = np.attr("not_equal")(back, a);
+        if (kind != "f")  // (an int64 past 2^63 - 2^10 rounds to 2^63, which wraps back)
+            differ = np.attr("logical_or")(differ, np.attr("greater_equal")(np.attr("abs")(f), 9.2e18));
+        py::object bad = np.attr("flatnonzero")(differ);
         if (py::len(bad) > 0) {
             const size_t i = py::cast<size_t>(bad[py::int_(0)]);
             throw scalecert::InputError(std::string(who) + ": " + what + "[" + std::to_string(i) +
@@ -1004,12 +1008,13 @@ PYBIND11_MODULE(scalecert, m) {
                     B(static_cast<py::ssize_t>(n), r2.data());
                 const py::object said = method(A, B);
                 // The answers: one per pair; a word that is not a verdict, or no word, is no answer.
-                if (!py::hasattr(said, "__len__") || py::isinstance<py::str>(said) || py::len(said) != n)
-                    throw scalecert::InputError("audit: the method returned " +
-                                                (py::hasattr(said, "__len__") && !py::isinstance<py::str>(said)
-                                                     ? std::to_string(py::len(said)) + " answers"
-                                                     : "no sequence") +
-                                                " for " + std::to_string(n) + " pairs");
+                const bool sequence = py::isinstance<py::sequence>(said) && !py::isinstance<py::str>(said) &&
+                                      py::hasattr(said, "__len__");  // (not a dict, a set, a string)
+                if (!sequence || py::len(said) != n)
+                    throw scalecert::InputError(
+                        "audit: the method returned " +
+                        (sequence ? std::to_string(py::len(said)) + " answers" : "no sequence") + " for " +
+                        std::to_string(n) + " pairs");
                 std::vector<std::string> words(n);
                 std::vector<scalecert::Claim> claims;
                 std::vector<size_t> claim_of(n, SIZE_MAX);

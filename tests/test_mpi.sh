@@ -65,6 +65,26 @@ grep -q "(4 done before, 1 redone as damaged, 1 run now)" log-gcor || fail "dama
 diff -r one-golden g3 >/dev/null || fail "golden after a damaged file differs"
 echo "ok: damaged shards and outputs are found by their hashes and redone"
 
+# A manifest edited by hand to record what a shard file now holds: an empty file, JSON that is no
+# shard, or two shards' files swapped (hashes swapped to match). Each is redone, never merged.
+: > ra2/shards/00000001.json
+echo "{\"shard\":1,\"sha256\":\"$(sha256sum < ra2/shards/00000001.json | cut -d' ' -f1)\"}" >> ra2/manifest.jsonl
+echo '{"shard":2,"inputs":[[1,2]],"rows":[]}' > ra2/shards/00000002.json
+echo "{\"shard\":2,\"sha256\":\"$(sha256sum < ra2/shards/00000002.json | cut -d' ' -f1)\"}" >> ra2/manifest.jsonl
+h3=$(sha256sum < ra2/shards/00000003.json | cut -d' ' -f1) h4=$(sha256sum < ra2/shards/00000004.json | cut -d' ' -f1)
+mv ra2/shards/00000003.json swap && mv ra2/shards/00000004.json ra2/shards/00000003.json && mv swap ra2/shards/00000004.json
+printf '{"shard":3,"sha256":"%s"}\n{"shard":4,"sha256":"%s"}\n' "$h4" "$h3" >> ra2/manifest.jsonl
+run_mpi 2 audit "${AUDIT[@]}" --shard-size 2 --out a2.json --csv a2.csv --run ra2 --resume 2>log-edit
+grep -q "(2 done before, 4 redone as damaged, 4 run now)" log-edit || fail "edited manifest: $(tail -1 log-edit)"
+cmp one.json a2.json && cmp one.csv a2.csv || fail "audit after an edited manifest differs"
+# The identity line written otherwise (a carriage return added): named as edited, exit 2.
+sed -i '1s/$/\r/' ra2/manifest.jsonl
+set +e
+run_mpi 2 audit "${AUDIT[@]}" --shard-size 2 --out a2.json --run ra2 --resume 2>log-cr; st=$?
+set -e
+[ "$st" -eq 2 ] && grep -q "written otherwise (edited by hand?)" log-cr || fail "edited identity line: $st $(cat log-cr)"
+echo "ok: a manifest edited by hand is redone, or named as edited"
+
 # A run folder is not silently reused, nor resumed with other arguments.
 set +e
 run_mpi 2 audit "${AUDIT[@]}" --shard-size 2 --out x.json --run ra2 2>log-x; st1=$?

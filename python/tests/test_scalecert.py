@@ -910,6 +910,17 @@ def test_audit_your_own_collision_test():
         s.audit(lambda r1, r2: ["separated"], rho1=[1.0, 1.0, 1.0], rho2=[1.0, 2.0, 3.0])
     with pytest.raises(scalecert.InputError, match="finite numbers > 0"):
         s.audit(by_sum, rho1=[1.0], rho2=[float("nan")])
+    # A dict or a set of the right length is no sequence of answers: bad input, as a generator is.
+    for shaped in (lambda r1, r2: {0: "separated"}, lambda r1, r2: {"separated"}, lambda r1, r2: (w for w in "a")):
+        with pytest.raises(scalecert.InputError, match="returned no sequence for 1 pairs"):
+            s.audit(shaped, rho1=[1.0], rho2=[1.0])
+    # A long double that is not a double (0.1 as a long double) is refused as a Fraction is; one
+    # that is a double exactly (0.5) is that double.
+    if np.finfo(np.longdouble).nmant > 52:
+        with pytest.raises(scalecert.InputError, match=r"rho1\[0\]: .* is not a double"):
+            s.audit(by_sum, rho1=np.array([np.longdouble(1) / 10]), rho2=[1.0])
+        half = s.audit(by_sum, rho1=np.array([0.5], dtype=np.longdouble), rho2=[1.0])
+        assert half["queries"] == 1 and half["wrong"] == 0
     # The user's own exception is theirs, unchanged.
     with pytest.raises(ZeroDivisionError):
         s.audit(lambda r1, r2: 1 / 0)

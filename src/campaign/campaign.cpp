@@ -435,6 +435,28 @@ std::string run_shard(const CampaignArgs& a, const Shard& s) {
     return dump(j);
 }
 
+bool shard_well_formed(const CampaignArgs& a, const Shard& s, const std::string& shard_text) {
+    try {
+        const Json j = Json::parse(shard_text);
+        if (!j.is_object() || j.at("shard").get<int>() != s.index) return false;
+        if (j.contains("inputs"))
+            for (const Json& f : j.at("inputs"))
+                if (!f.is_array() || f.size() != 2 || !f.at(0).is_string() || !f.at(1).is_string()) return false;
+        if (a.golden) {
+            for (const Json& f : j.at("files"))
+                if (!f.is_array() || f.size() != 2 || !f.at(0).is_string() || !f.at(1).is_string()) return false;
+            if (j.contains("not_written") && (!j["not_written"].is_array() || j["not_written"].size() != 2 ||
+                                              !j["not_written"][0].is_string() || !j["not_written"][1].is_string()))
+                return false;
+            return true;
+        }
+        for (const Json& r : j.at("rows")) (void)row_of(r);
+        return true;
+    } catch (const std::exception&) {
+        return false;
+    }
+}
+
 bool shard_outputs_intact(const CampaignArgs& a, const std::string& shard_text) {
     if (!a.golden) return true;
     try {
@@ -555,16 +577,22 @@ void write_failures(const CampaignArgs& a, const std::vector<AuditRow>& rows) {
 
 long finish_campaign(const CampaignArgs& a, const std::vector<std::string>& shard_texts) {
     if (a.golden) {
-        long written = static_cast<long>(a.scenes.size()) + (a.family.empty() ? 0 : a.count);
+        const long asked = static_cast<long>(a.scenes.size()) + (a.family.empty() ? 0 : a.count);
+        std::vector<std::string> skipped;  // "SCENE: why"
         for (const std::string& t : shard_texts) {
             const Json doc = Json::parse(t);
-            if (!doc.contains("not_written")) continue;
-            --written;
-            std::fprintf(stderr, "scalecert: note: %s: no golden data written: %s\n",
-                         doc["not_written"][0].get<std::string>().c_str(),
-                         doc["not_written"][1].get<std::string>().c_str());
+            if (doc.contains("not_written"))
+                skipped.push_back(doc["not_written"][0].get<std::string>() + ": " +
+                                  doc["not_written"][1].get<std::string>());
         }
-        return written;
+        // Nothing written at all: the run failed, as a single scene's did (one line, exit 2).
+        if (!skipped.empty() && static_cast<long>(skipped.size()) == asked)
+            throw InputError(skipped.front() + (skipped.size() > 1 ? " (and " + std::to_string(skipped.size() - 1) +
+                                                                         " more scenes: none written)"
+                                                                   : ""));
+        for (const std::string& why : skipped)
+            std::fprintf(stderr, "scalecert: note: no golden data written for %s\n", why.c_str());
+        return asked - static_cast<long>(skipped.size());
     }
     std::vector<AuditRow> rows;
     for (const std::string& t : shard_texts) {

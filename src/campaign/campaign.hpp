@@ -94,6 +94,10 @@ std::uint64_t scene_seed(std::uint64_t run_seed, int k, int i);
 // Runs a shard. Golden: writes its scenes' files into the directory (atomically) and returns
 // their names and SHA-256 hashes; audit: returns its rows. Either as the shard file's text.
 std::string run_shard(const CampaignArgs& a, const Shard& s);
+// Whether a shard's text is what run_shard writes for shard s: JSON naming s's index, with rows
+// that read back (audit) or a list of files with hashes (golden). A shard file that is not is
+// redone on --resume, whatever the manifest records for it.
+bool shard_well_formed(const CampaignArgs& a, const Shard& s, const std::string& shard_text);
 // Golden: whether the files a shard's text lists are all present with their hashes.
 bool shard_outputs_intact(const CampaignArgs& a, const std::string& shard_text);
 // After every shard: writes the audit's JSON and CSV from the shards' texts, in shard order

@@ -184,8 +184,7 @@ class ClaimReader {
                 if (row.kind != JNode::Array || row.items.size() != 4) fail(wr, "expected 4 numbers [r1, r2, r3, t]");
                 for (size_t k = 0; k < 4; ++k) m[r][k] = number(row.items[k], wr + "[" + std::to_string(k) + "]");
             }
-            if (sgn(pose_determinant(m)) == 0)
-                fail(key, "its 3x3 part R is singular (determinant 0): the object would be flat");
+            if (pose_singular(m)) fail(key, "its 3x3 part R is singular (determinant 0): the object would be flat");
         }
     }
 

@@ -343,6 +343,14 @@ struct ConvexRules::Impl {
     }
 
     void verdict(const TypedClaim& c, Judged& g, Proof* proof) {
+        if (posed && !proof) {
+            // Without a certificate, the verdict alone where a few support queries prove it.
+            if (const std::optional<MeasuredDepth::State> v = proved_verdict(*posed, c.rho1, c.rho2)) {
+                g.exact_verdict = *v == MeasuredDepth::Separated ? Verdict::Separated : Verdict::Overlapping;
+                g.right = verdict_matches(c.verdict, *g.exact_verdict);
+                return;
+            }
+        }
         if (posed) {
             const MeasuredDepth md = depth_of(c.rho1, c.rho2);
             g.exact_verdict = verdict_of(md);

@@ -17,32 +17,40 @@ void set_seeds_in_integers(Bodies& b) {
 
 namespace scalecert::internal {
 
-PosedPoints::PosedPoints(const PointSets& base, const std::array<std::optional<Pose>, 2>& poses)
-    : base_(base), pose_(poses) {
+PosedPoints::PosedPoints(const PointSets& base, const std::array<std::optional<Pose>, 2>& poses) : base_(base) {
     for (int i = 0; i < 2; ++i) {
         scale_[i] = base.scale(i);
         seed_[i] = base.seed(i);
-        if (!pose_[i]) continue;
-        const Pose& m = *pose_[i];
+        if (!poses[i]) continue;
+        posed_[i] = true;
+        const Pose& m = *poses[i];
         // D·L·(R·X/D + t) = L·R·X + D·L·t is integral for L the lcm of the pose's denominators.
         Z L = 1;
         for (const auto& row : m)
-            for (const Q& x : row) mpz_lcm(L.get_mpz_t(), L.get_mpz_t(), x.get_den_mpz_t());
-        scale_[i] *= L;
+            for (const Q& x : row) lcm_into(L, x.get_den());
         // The moved points are numbers the engine and the checker read like any other: past the
         // limit of a polyhedron's common denominator the claim is refused, before any work (a
         // bound: the moved points' own common denominator divides it).
-        if (mpz_sizeinbase(scale_[i].get_mpz_t(), 2) > kMaxDenominatorBits)
+        if (mpz_sizeinbase(Z(scale_[i] * L).get_mpz_t(), 2) > kMaxDenominatorBits)
             throw InputError(std::string("pose") + (i ? "2" : "1") + ": the moved points of P" + (i ? "2" : "1") +
                              " would have a common denominator past " + std::to_string(kMaxDenominatorBits) +
                              " bits (the limit of a polyhedron's; README \"Limits\"): the pose's denominators "
                              "times the object's");
-        Vec3q s;
+        // The seed S/E moves to (L·R·S + L·t·E) / (L·E).
+        Z E;
+        const Vec3z S = over_common_denominator(seed_[i], E);
+        const Z LE = L * E;
         for (size_t r = 0; r < 3; ++r) {
-            s[r] = m[r][0] * seed_[i][0] + m[r][1] * seed_[i][1] + m[r][2] * seed_[i][2] + m[r][3];
+            for (size_t c = 0; c < 3; ++c) LR_[i][r][c] = over(m[r][c], L);
+            const Z Lt = over(m[r][3], L);
+            DLt_[i][r] = Lt * scale_[i];
+            Z num = Lt * E;
+            for (size_t c = 0; c < 3; ++c) mpz_addmul(num.get_mpz_t(), LR_[i][r][c].get_mpz_t(), S[c].get_mpz_t());
+            seed_[i][r] = Q(num, LE);
+            seed_[i][r].canonicalize();
             for (size_t c = 0; c < 4; ++c) dpose_[i][r][c] = m[r][c].get_d();
         }
-        seed_[i] = s;
+        scale_[i] *= L;
     }
 }
 
@@ -57,18 +65,31 @@ Vec3z PointSets::zpoint(int i, int k) const {
     return z;
 }
 
+Vec3z PosedPoints::zpoint(int i, int k) const {
+    if (!posed_[i]) return base_.zpoint(i, k);
+    const Vec3z X = base_.zpoint(i, k);
+    Vec3z z;
+    for (size_t r = 0; r < 3; ++r) {
+        z[r] = DLt_[i][r];
+        for (size_t c = 0; c < 3; ++c) mpz_addmul(z[r].get_mpz_t(), LR_[i][r][c].get_mpz_t(), X[c].get_mpz_t());
+    }
+    return z;
+}
+
 Vec3q PosedPoints::point(int i, int k) const {
-    Vec3q p = base_.point(i, k);
-    if (!pose_[i]) return p;
-    const Pose& m = *pose_[i];
+    if (!posed_[i]) return base_.point(i, k);
+    const Vec3z z = zpoint(i, k);
     Vec3q out;
-    for (size_t r = 0; r < 3; ++r) out[r] = m[r][0] * p[0] + m[r][1] * p[1] + m[r][2] * p[2] + m[r][3];
+    for (size_t r = 0; r < 3; ++r) {
+        out[r] = Q(z[r], scale_[i]);
+        out[r].canonicalize();
+    }
     return out;
 }
 
 D3 PosedPoints::dpoint(int i, int k) const {
     const D3 p = base_.dpoint(i, k);
-    if (!pose_[i]) return p;
+    if (!posed_[i]) return p;
     const double(&m)[3][4] = dpose_[i];
     D3 out;
     for (int r = 0; r < 3; ++r) out[r] = m[r][0] * p[0] + m[r][1] * p[1] + m[r][2] * p[2] + m[r][3];
@@ -76,22 +97,18 @@ D3 PosedPoints::dpoint(int i, int k) const {
 }
 
 int PosedPoints::argmax(int i, const Vec3z& n) const {
-    if (!pose_[i]) return base_.argmax(i, n);
-    const Pose& m = *pose_[i];
-    // Rᵀn over the lcm of its denominators: a positive multiple, the same maximisers.
-    Vec3q u;
-    Z L = 1;
+    if (!posed_[i]) return base_.argmax(i, n);
+    // L·Rᵀn: a positive multiple of Rᵀn, the same maximisers.
+    Vec3z u;
     for (size_t c = 0; c < 3; ++c) {
-        u[c] = m[0][c] * n[0] + m[1][c] * n[1] + m[2][c] * n[2];
-        mpz_lcm(L.get_mpz_t(), L.get_mpz_t(), u[c].get_den_mpz_t());
+        u[c] = 0;
+        for (size_t r = 0; r < 3; ++r) mpz_addmul(u[c].get_mpz_t(), LR_[i][r][c].get_mpz_t(), n[r].get_mpz_t());
     }
-    Vec3z z;
-    for (size_t c = 0; c < 3; ++c) z[c] = u[c].get_num() * (L / u[c].get_den());
-    return base_.argmax(i, z);
+    return base_.argmax(i, u);
 }
 
 int PosedPoints::dargmax(int i, const D3& d) const {
-    if (!pose_[i]) return base_.dargmax(i, d);
+    if (!posed_[i]) return base_.dargmax(i, d);
     const double(&m)[3][4] = dpose_[i];
     D3 u;
     for (int c = 0; c < 3; ++c) u[c] = m[0][c] * d[0] + m[1][c] * d[1] + m[2][c] * d[2];

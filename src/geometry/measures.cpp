@@ -32,9 +32,14 @@ std::pair<Q, Q> plane_extents(const PointSets& S, const Vec3q& n, const Q& rho1,
             k = n[i] / Q(p[i]);
             break;
         }
-    const Vec3q p1 = S.point(0, S.argmax(0, p)), p2 = S.point(1, S.argmax(1, neg(p)));
+    // n·x for the maximiser x = z/scale: k·(p·z)/scale, one fraction from integers.
+    auto along = [&](int i, const Vec3z& dir) {
+        Q v(dotz(p, S.zpoint(i, S.argmax(i, dir))), S.scale(i));
+        v.canonicalize();
+        return Q(k * v);
+    };
     const Q ns1 = dot(n, S.seed(0)), ns2 = dot(n, S.seed(1));
-    const Q max1 = dot(n, p1), min2 = dot(n, p2);
+    const Q max1 = along(0, p), min2 = along(1, neg(p));
     return {ns1 + rho1 * (max1 - ns1), ns2 + rho2 * (min2 - ns2)};
 }
 std::pair<Q, Q> plane_extents(const Bodies& m, const Vec3q& n, const Q& rho1, const Q& rho2) {
@@ -511,6 +516,41 @@ std::optional<ProvedDepth> exact_epa(const PointSets& S, const Q& rho1, const Q&
 }
 std::optional<ProvedDepth> proved_depth(const Bodies& m, const Q& rho1, const Q& rho2) {
     return proved_depth(HullPoints(m), rho1, rho2);
+}
+
+std::optional<MeasuredDepth::State> proved_verdict(const PointSets& S, const Q& rho1, const Q& rho2) {
+    const GjkGuess g = gjk_guess(S, to_double_rn(rho1), to_double_rn(rho2));
+    if (g.distance > 0) {
+        if (!std::isfinite(g.closest[0]) || !std::isfinite(g.closest[1]) || !std::isfinite(g.closest[2]))
+            return std::nullopt;
+        Z den;
+        const Vec3z n = over_common_denominator(
+            Vec3q{-exact_from_double(g.closest[0]), -exact_from_double(g.closest[1]), -exact_from_double(g.closest[2])},
+            den);
+        if (is_zero(n)) return std::nullopt;
+        const DifferenceGrid grid(S, rho1, rho2);
+        // h_M(n) = n·(v_i − w_j) with v_i maximising n over P1(ρ1), w_j minimising it over P2(ρ2).
+        if (sgn(dotz(n, grid.point(S.argmax(0, n), S.argmax(1, neg(n))))) < 0) return MeasuredDepth::Separated;
+        return std::nullopt;
+    }
+    if (g.simplex.size() != 4) return std::nullopt;
+    const DifferenceGrid grid(S, rho1, rho2);
+    Vec3z z[4];
+    for (size_t k = 0; k < 4; ++k) z[k] = grid.point(g.simplex[k].first, g.simplex[k].second);
+    // The origin strictly inside: on the same side as the fourth point of each face's plane.
+    auto orient = [](const Vec3z& a, const Vec3z& b, const Vec3z& c, const Vec3z& d) {
+        const Vec3z u{Z(b[0] - a[0]), Z(b[1] - a[1]), Z(b[2] - a[2])},
+            v{Z(c[0] - a[0]), Z(c[1] - a[1]), Z(c[2] - a[2])}, w{Z(d[0] - a[0]), Z(d[1] - a[1]), Z(d[2] - a[2])};
+        return sgn(Z(u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) +
+                     u[2] * (v[0] * w[1] - v[1] * w[0])));
+    };
+    const Vec3z o{Z(0), Z(0), Z(0)};
+    static const int face[4][4] = {{1, 2, 3, 0}, {0, 2, 3, 1}, {0, 1, 3, 2}, {0, 1, 2, 3}};
+    for (const auto& f : face) {
+        const int side = orient(z[f[0]], z[f[1]], z[f[2]], z[f[3]]);
+        if (side == 0 || orient(z[f[0]], z[f[1]], z[f[2]], o) != side) return std::nullopt;
+    }
+    return MeasuredDepth::Overlapping;
 }
 
 std::optional<MeasuredDepth> measured_depth(const PointSets& S, const Q& rho1, const Q& rho2, int max_rounds) {

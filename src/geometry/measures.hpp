@@ -108,6 +108,12 @@ struct MeasuredDepth {
 // (max_rounds: the proved distance's, as proved_distance's; past the points' count it always closes.)
 std::optional<MeasuredDepth> measured_depth(const PointSets& S, const Q& rho1, const Q& rho2,
                                             int max_rounds = kProvedDistanceRounds);
+// The verdict alone, when the double GJK's answer proves itself with a few exact support queries:
+// apart, the support of M = P1(ρ1) − P2(ρ2) along n = −(the doubles' nearest point of M, in
+// integers) lies strictly below 0 (n separates: Separated); meeting, the origin lies strictly
+// inside the final tetrahedron of points of M (exact orientation signs: inside M's interior,
+// Overlapping). None otherwise (touching, or too near it for the doubles): measured_depth decides.
+std::optional<MeasuredDepth::State> proved_verdict(const PointSets& S, const Q& rho1, const Q& rho2);
 // Its second half, from an exact distance found otherwise.
 MeasuredDepth depth_from_distance(const PointSets& S, const ExactDistance& dist, const Q& rho1, const Q& rho2);
 // The squared directional depth along n: (ρ1 h1(n) + ρ2 h2(n) − n·d)² / |n|², signed negative

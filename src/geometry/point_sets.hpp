@@ -62,8 +62,11 @@ class HullPoints final : public PointSets {
 
 // Another point set with polyhedron i moved by a pose [R_i | t_i] (none: where it is): point k
 // is R·p_k + t, the seed likewise. Support queries go to the base set along Rᵀn (max over k of
-// n·(R p_k + t) = n·t + max (Rᵀn)·p_k: the same maximisers), scaled to integers, so a pose costs
-// a query nothing but its arithmetic. R must be nonsingular.
+// n·(R p_k + t) = n·t + max (Rᵀn)·p_k: the same maximisers), so a pose costs a query nothing but
+// its arithmetic. The pose is held in integers: L the lcm of its denominators and D the base's
+// scale(i), the moved points over D·L are L·R·X + D·L·t for the base's integer points X, and
+// L·Rᵀn is a positive multiple of Rᵀn for an integer n: no rational arithmetic per query or
+// point. R must be nonsingular.
 class PosedPoints final : public PointSets {
   public:
     PosedPoints(const PointSets& base, const std::array<std::optional<Pose>, 2>& poses);
@@ -71,12 +74,15 @@ class PosedPoints final : public PointSets {
     D3 dpoint(int i, int k) const override;
     const Vec3q& seed(int i) const override { return seed_[i]; }
     const Z& scale(int i) const override { return scale_[i]; }
+    Vec3z zpoint(int i, int k) const override;
     int argmax(int i, const Vec3z& n) const override;
     int dargmax(int i, const D3& d) const override;
 
   private:
     const PointSets& base_;
-    std::array<std::optional<Pose>, 2> pose_;
+    bool posed_[2] = {false, false};
+    Z LR_[2][3][3];  // L·R, integers
+    Z DLt_[2][3];    // D·L·t, integers
     double dpose_[2][3][4];
     Vec3q seed_[2];
     Z scale_[2];

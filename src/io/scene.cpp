@@ -234,13 +234,18 @@ ExactScene parse_scene_text(const std::string& text, const std::string& name, co
     return sc;
 }
 
-Q pose_determinant(const Pose& m) {
-    return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
-           m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+bool pose_singular(const Pose& m) {
+    Z L = 1, a[3][3];
+    for (size_t r = 0; r < 3; ++r)
+        for (size_t c = 0; c < 3; ++c) lcm_into(L, m[r][c].get_den());
+    for (size_t r = 0; r < 3; ++r)
+        for (size_t c = 0; c < 3; ++c) a[r][c] = over(m[r][c], L);
+    return sgn(Z(a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) - a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
+                 a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]))) == 0;
 }
 
 void apply_pose(const Pose& m, PolyInput& in, const std::string& where) {
-    if (sgn(pose_determinant(m)) == 0)
+    if (pose_singular(m))
         throw InputError(where + ": its 3x3 part R is singular (determinant 0): the object would be flat");
     // A moved coordinate is a number the engine reads like any other: past the limit for one
     // number it is refused at the first vertex, before the work its size would cost.

@@ -60,11 +60,12 @@ struct ReadOptions {
 
 // A pose [R | t]: three rows of four numbers, R·v + t (the public scalecert::Pose).
 using scalecert::Pose;
+// Whether its R is singular (determinant 0), decided in integers: R times the lcm of its
+// denominators.
+bool pose_singular(const Pose& m);
 // Moves an object's points (every part's) and its given seed to the pose, exactly (a default seed
 // is the mean of the moved points: finish_scene). Throws InputError, prefixed with `where`, when
 // R is singular.
-// The determinant of its R.
-Q pose_determinant(const Pose& m);
 void apply_pose(const Pose& m, PolyInput& in, const std::string& where);
 
 // What the command says once on stderr about a scene read (Scene::notes()): each object's note, and

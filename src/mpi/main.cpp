@@ -123,6 +123,10 @@ std::string identity_mismatch(const std::string& run, const std::string& recorde
                    " began (its SHA-256 differs); refused: no shard computed from the old contents is merged (start a "
                    "new --run folder)";
     }
+    if (old_inputs == new_inputs)  // the same identity, written otherwise: an edited line
+        return run +
+               ": the manifest's first line holds this command's identity written otherwise (edited by hand?); "
+               "refused: start a new --run folder";
     return run +
            ": the files the run read changed since it began (their SHA-256 differ); refused: no shard computed from "
            "the old contents is merged (start a new --run folder)";
@@ -263,8 +267,8 @@ int main(int argc, char** argv) {
                     const std::string text = slurp(shard_path(run, s.index));
                     // (A shard that read other contents than the run's inputs, changed and changed
                     // back while the run was stopped, is redone like a damaged one.)
-                    if (sha256_hex(text) == it->second && shard_outputs_intact(a, text) &&
-                        stale_input(inputs, text).empty()) {
+                    if (sha256_hex(text) == it->second && shard_well_formed(a, s, text) &&
+                        shard_outputs_intact(a, text) && stale_input(inputs, text).empty()) {
                         hashes[static_cast<size_t>(s.index)] = it->second;
                         ++done_before;
                         continue;
@@ -352,6 +356,9 @@ int main(int argc, char** argv) {
                     texts.push_back(slurp(shard_path(run, s.index)));
                     if (sha256_hex(texts.back()) != hashes[static_cast<size_t>(s.index)])
                         throw InputError(shard_path(run, s.index) + ": changed during the run (hash mismatch)");
+                    if (!shard_well_formed(a, s, texts.back()))
+                        throw InputError(shard_path(run, s.index) + ": not shard " + std::to_string(s.index) +
+                                         " of this run (malformed, or another shard's); refused: not merged");
                     // A scene file (or a mesh it names) changed after the run hashed it: refused, not merged.
                     const std::string stale = stale_input(inputs, texts.back());
                     if (!stale.empty())

@@ -57,12 +57,31 @@ bool to_small_normal(const Vec3z& v, Vec3s& out) {
     return true;
 }
 
+void lcm_into(Z& acc, const Z& d) {
+    if (d == 1 || acc == d) return;
+    if (acc == 1) {
+        acc = d;
+        return;
+    }
+    const mpz_srcptr a = acc.get_mpz_t(), b = d.get_mpz_t();
+    if (mpz_scan1(a, 0) + 1 == mpz_sizeinbase(a, 2) && mpz_scan1(b, 0) + 1 == mpz_sizeinbase(b, 2)) {
+        if (mpz_sizeinbase(b, 2) > mpz_sizeinbase(a, 2)) acc = d;
+        return;
+    }
+    mpz_lcm(acc.get_mpz_t(), a, b);
+}
+
+Z over(const Q& q, const Z& den) {
+    Z z;
+    mpz_divexact(z.get_mpz_t(), den.get_mpz_t(), q.get_den_mpz_t());
+    z *= q.get_num();
+    return z;
+}
+
 Vec3z over_common_denominator(const Vec3q& v, Z& den) {
     den = 1;
-    for (const Q& c : v) mpz_lcm(den.get_mpz_t(), den.get_mpz_t(), c.get_den_mpz_t());
-    Vec3z z;
-    for (int k = 0; k < 3; ++k) z[k] = Z(v[k] * den);
-    return z;
+    for (const Q& c : v) lcm_into(den, c.get_den());
+    return {over(v[0], den), over(v[1], den), over(v[2], den)};
 }
 
 Vec3z primitive(const Vec3q& v) {

@@ -48,6 +48,11 @@ Vec3z primitive(const Vec3q& v);
 Vec3z primitive(const Vec3z& v);
 // v over its common denominator: v = z / den, den > 0 the lcm of the coordinates' denominators.
 Vec3z over_common_denominator(const Vec3q& v, Z& den);
+// acc = lcm(acc, d) for d > 0, without a gcd where d is 1, acc is 1 or d, or both are powers of
+// two (the denominators of doubles).
+void lcm_into(Z& acc, const Z& d);
+// The numerator of q over a multiple den of its denominator: q·den, an integer, by exact division.
+Z over(const Q& q, const Z& den);
 
 // User text for an error message: quoted, control characters escaped (so the message stays one
 // line), and cut after 40 characters.

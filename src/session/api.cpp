@@ -468,7 +468,7 @@ internal::TypedClaim typed_claim(const Claim& c, size_t i, const internal::Exact
         Pose& p = t.pose[k].emplace();
         for (size_t r = 0; r < 3; ++r)
             for (size_t q = 0; q < 4; ++q) p[r][q] = canonical_q((*m)[r][q]);
-        if (sgn(internal::pose_determinant(p)) == 0)
+        if (internal::pose_singular(p))
             throw InputError(w + ": its 3x3 part R is singular (determinant 0): the object would be flat");
     }
     auto nonzero = [&](const Point& p, const char* key) {
