@@ -24,8 +24,7 @@ CompoundScene read_compound_scene(Context& cx, const J& sj) {
             shape(cx, parts[k], wk, {"vertices"});
             const J& vs = at(parts[k], "vertices");
             cx.claim(Vertices::is_list(cx, vs) && Vertices::length(cx, vs) > 0, wk + ".vertices is a nonempty list");
-            Vertices v;
-            v.add(cx, vs, wk + ".vertices");
+            Vertices v(cx, vs, wk + ".vertices");
             obj->part.push_back(v.scan(cx, wk));
         }
         obj->index(cx);

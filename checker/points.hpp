@@ -41,11 +41,6 @@ class Int64s {
         if (n_ == cap_) grow(n_ + 1);
         p_[n_++] = v;
     }
-    void append(const Int64s& o) {
-        if (n_ + o.n_ > cap_) grow(n_ + o.n_);
-        if (o.n_) std::memcpy(p_ + n_, o.p_, o.n_ * sizeof(int64_t));
-        n_ += o.n_;
-    }
     void reserve(size_t n) {
         if (n > cap_) grow(n);
     }
@@ -101,36 +96,8 @@ struct IntPoints {
         big_x.push_back(std::move(c));
         ++n;
     }
-    // Appends all of o's points after this one's (a compound object's parts, one list).
-    void append(IntPoints&& o) {
-        if (n == 0) {
-            *this = std::move(o);
-            return;
-        }
-        if (!big.empty() || !o.big.empty()) {
-            positions_written();
-            for (size_t p = 0; p < o.small(); ++p)
-                orig.push_back(static_cast<int>(n) + (o.big.empty() ? static_cast<int>(p) : o.orig[p]));
-        }
-        for (int j = 0; j < 3; ++j) x[j].append(o.x[j]);
-        for (size_t b = 0; b < o.big.size(); ++b) {
-            big.push_back(static_cast<int>(n) + o.big[b]);
-            big_x.push_back(std::move(o.big_x[b]));
-        }
-        n += o.n;
-        o = IntPoints();
-    }
     // The point at each position: orig[p], or p while no point is big.
     int point_at(size_t p) const { return big.empty() ? static_cast<int>(p) : orig[p]; }
-    // Every point, in order, as rationals (appended to out).
-    void to_rationals(std::vector<V3>& out) const {
-        const size_t base = out.size();
-        out.resize(base + n);
-        for (size_t p = 0; p < small(); ++p)
-            out[base + static_cast<size_t>(point_at(p))] = {Q(z64(x[0][p])), Q(z64(x[1][p])), Q(z64(x[2][p]))};
-        for (size_t b = 0; b < big.size(); ++b)
-            out[base + static_cast<size_t>(big[b])] = {Q(big_x[b][0]), Q(big_x[b][1]), Q(big_x[b][2])};
-    }
 
   private:
     // Before the first big point every point is small and its position is its index: written out

@@ -119,23 +119,17 @@ size_t Vertices::length(Context& cx, const J& j) {
     return p ? p->n : j.size();
 }
 
-void Vertices::add(Context& cx, const J& j, const std::string& where) {
+Vertices::Vertices(Context& cx, const J& j, const std::string& where) {
     if (IntPoints* p = captured(cx, j)) {
         // Each vertex a list of three strings, each an integer written canonically (the reader
         // took no other): the 13 claims point() states of it hold (a point of 3 coordinates;
         // each a string, of the form p or p/q, with a nonzero denominator, in lowest terms).
         cx.held(13 * static_cast<long>(p->n));
-        if (rational_)
-            p->to_rationals(rat_);
-        else
-            ints_.append(std::move(*p));
+        ints_ = std::move(*p);
+        *p = IntPoints();
         return;
     }
-    if (!rational_) {  // a list the tree holds: from here on every vertex as a rational
-        ints_.to_rationals(rat_);
-        ints_ = IntPoints();
-        rational_ = true;
-    }
+    rational_ = true;  // a list the tree holds: every vertex as a rational
     for (size_t k = 0; k < j.size(); ++k) rat_.push_back(point(cx, j[k], where + "[" + std::to_string(k) + "]"));
 }
 
@@ -153,8 +147,7 @@ Scene read_scene(Context& cx, const J& j) {
         shape(cx, p, w, {"vertices", "seed"});
         const J& vs = at(p, "vertices");
         cx.claim(Vertices::is_list(cx, vs), w + ".vertices is a list");
-        Vertices v;
-        v.add(cx, vs, w + ".vertices");
+        Vertices v(cx, vs, w + ".vertices");
         cx.claim(v.size() >= 4, w + " has at least 4 vertices");
         sc.s[i] = point(cx, at(p, "seed"), w + ".seed");
         sc.scan[i] = v.scan(cx, kPoly[i]);

@@ -66,18 +66,18 @@ struct Scene {
     mutable std::map<std::string, Support> cache_;
 };
 
-// The vertices of one polytope (a polyhedron, or a compound's part) as they are read: as integers
-// while every list added came from the reader as one (json.hpp, parse_certificate), else all as
-// rationals, each vertex judged by point().
+// The vertices of one polytope (a polyhedron, or a compound's part), one list as it is read: as
+// integers when the reader took it as one (json.hpp, parse_certificate), else as rationals, each
+// vertex judged by point().
 class Vertices {
   public:
     // j is a list of vertices (an array, or a list the reader took).
     static bool is_list(Context& cx, const J& j);
     // The length of the list j.
     static size_t length(Context& cx, const J& j);
-    // Appends the vertices of the list j (named where: its vertex k is where[k]), each a point of
-    // three exact numbers. A list the reader took is moved out of it (a scene is read once).
-    void add(Context& cx, const J& j, const std::string& where);
+    // The vertices of the list j (named where: its vertex k is where[k]), each a point of three
+    // exact numbers. A list the reader took is moved out of it (a scene is read once).
+    Vertices(Context& cx, const J& j, const std::string& where);
     size_t size() const { return rational_ ? rat_.size() : ints_.n; }
     // The scan of them all (`what` names the polyhedron): the vertices are moved into it.
     std::shared_ptr<const Scan> scan(Context& cx, const std::string& what);

@@ -1016,8 +1016,7 @@ PYBIND11_MODULE(scalecert, m) {
                         (sequence ? std::to_string(py::len(said)) + " answers" : "no sequence") + " for " +
                         std::to_string(n) + " pairs");
                 std::vector<std::string> words(n);
-                std::vector<scalecert::Claim> claims;
-                std::vector<size_t> claim_of(n, SIZE_MAX);
+                std::vector<std::optional<scalecert::ClaimedVerdict>> verdict(n);
                 const py::sequence seq = said.cast<py::sequence>();
                 for (size_t i = 0; i < n; ++i) {
                     const py::object w = seq[i];
@@ -1028,27 +1027,37 @@ PYBIND11_MODULE(scalecert, m) {
                             words[i].clear();
                         }
                     }
-                    if (const auto cv = claimed_verdict(words[i])) {
-                        scalecert::Claim c;
-                        c.kind = scalecert::ClaimKind::Verdict;
-                        c.rho1 = scalecert::exact(r1[i]);
-                        c.rho2 = scalecert::exact(r2[i]);
-                        c.verdict = *cv;
-                        claim_of[i] = claims.size();
-                        claims.push_back(std::move(c));
-                    } else {
-                        words[i] = py::repr(w).cast<std::string>().substr(0, 60);
-                    }
+                    verdict[i] = claimed_verdict(words[i]);
+                    if (!verdict[i]) words[i] = py::repr(w).cast<std::string>().substr(0, 60);
                 }
-                const scalecert::Judgements j = a.certify(claims);
+                // Judged a block at a time: a judgement holds its exact values, and a million of
+                // them at once would hold gigabytes.
+                std::vector<char> judged_right(n, 0);
+                constexpr size_t kBlock = 65536;
+                for (size_t b = 0; b < n; b += kBlock) {
+                    std::vector<scalecert::Claim> claims;
+                    std::vector<size_t> at;
+                    for (size_t i = b; i < std::min(n, b + kBlock); ++i)
+                        if (verdict[i]) {
+                            scalecert::Claim c;
+                            c.kind = scalecert::ClaimKind::Verdict;
+                            c.rho1 = scalecert::exact(r1[i]);
+                            c.rho2 = scalecert::exact(r2[i]);
+                            c.verdict = *verdict[i];
+                            claims.push_back(std::move(c));
+                            at.push_back(i);
+                        }
+                    const scalecert::Judgements j = a.certify(claims);
+                    for (size_t k = 0; k < at.size(); ++k) judged_right[at[k]] = j.items[k].right;
+                }
                 const std::vector<scalecert::Verdict> exact = a.classify(r1, r2, 0);
                 py::array_t<bool> right(static_cast<py::ssize_t>(n));
                 auto rw = right.mutable_unchecked<1>();
                 py::list failures, exact_names;
                 long wrong = 0, false_sep = 0, false_int = 0, false_touch = 0, no_answer = 0;
                 for (size_t i = 0; i < n; ++i) {
-                    const bool answered = claim_of[i] != SIZE_MAX;
-                    const bool ok = answered && j.items[claim_of[i]].right;
+                    const bool answered = verdict[i].has_value();
+                    const bool ok = answered && judged_right[i];
                     rw(static_cast<py::ssize_t>(i)) = ok;
                     exact_names.append(scalecert::name(exact[i]));
                     if (ok) continue;

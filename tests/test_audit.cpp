@@ -366,6 +366,17 @@ bool not_run(const std::vector<AuditRow>& rows, const std::string& method, const
     return r.not_run.find(why) != std::string::npos && r.queries == 0;
 }
 
+// A direction's excess, by hand: along 9/4 where the depth is 1, the bodies are 3/2 deep along it,
+// half again their depth; a depth below 2^-26 of the scene's extent is not resolved by a direction
+// in doubles and is left out (none), at 2^-26 exactly it counts.
+BOOST_AUTO_TEST_CASE(direction_excess_counts_resolved_depths) {
+    BOOST_TEST(*direction_excess(Q(9, 4), Q(1), 1.0) == 0.5);
+    BOOST_TEST(*direction_excess(Q(1), Q(1), 1e7) == 0.0);
+    BOOST_TEST(!direction_excess(Q(1), Q(1), std::ldexp(1.0, 27)));
+    BOOST_TEST(*direction_excess(Q(4), Q(1), std::ldexp(1.0, 26)) == 1.0);
+    BOOST_TEST(!direction_excess(Q(1), Q(Z(1), Z(1) << 60), 1.0));
+}
+
 // A tolerance finer than libccd's EPA resolves, or coordinates past the doubles' range: the method
 // that cannot run there has a row that says so, and why; the others run (a batch goes on).
 BOOST_AUTO_TEST_CASE(an_epa_tolerance_below_what_doubles_resolve_is_not_run) {

@@ -5,11 +5,13 @@
 
 #include "certify/claims.hpp"
 #include "io/scene.hpp"
+#include "session/session.hpp"
 #include "curve/envelope.hpp"
 #include "geometry/measures.hpp"
 
 #include <nlohmann/json.hpp>
 
+#include <random>
 #include <string>
 #include <vector>
 
@@ -467,4 +469,38 @@ BOOST_AUTO_TEST_CASE(absolute_tolerance_on_points_values_and_planes) {
     ClaimOptions lines{Numbers::Double, Q(0), false};
     lines.abs_tolerance = 1;
     BOOST_CHECK_THROW(certify_fp(ClaimModels::of(k.m, k.c), "1 1 separated\n", "c.txt", lines, &wrong), InputError);
+}
+
+// A claim that needs the hull model is refused past the edge-pair limit wherever the hull model
+// comes from: the command's session builds it, the library's asks its scene for the one it holds
+// (Session::set_hull_source), and both refuse before building. Two copies of one 3,000-point
+// near-sphere, about 9,000 edges each: 8*10^7 edge pairs, past 2*10^7; the hull engine (no walk),
+// so the curve at ρ1 = 1 needs the hull model. The source is never asked.
+BOOST_AUTO_TEST_CASE(a_claim_past_the_edge_pair_limit_is_refused_whatever_holds_the_hull_model) {
+    std::mt19937 g(7);
+    std::normal_distribution<double> N(0, 1);
+    ExactScene s;
+    for (int i = 0; i < 3000; ++i) {
+        const double x = N(g), y = N(g), z = N(g), l = std::sqrt(x * x + y * y + z * z);
+        s.P[0].points.push_back(
+            {Q(std::lround(1e6 * x / l)), Q(std::lround(1e6 * y / l)), Q(std::lround(1e6 * z / l))});
+    }
+    s.P[1].points = s.P[0].points;
+    s.lo[0] = s.lo[1] = Q(1, 2);
+    s.hi[0] = s.hi[1] = Q(2);
+    finish_scene(s, "spheres");
+    for (const bool library : {false, true}) {
+        Session session(s, "spheres", Engine::Hull);
+        bool asked = false;
+        if (library)
+            session.set_hull_source([&asked]() -> std::shared_ptr<const HullModel> {
+                asked = true;
+                throw std::logic_error("the hull source was asked");
+            });
+        const ClaimModels models = session.claim_models();
+        BOOST_CHECK_EXCEPTION(models.curve_value(Q(1)), InputError, [](const InputError& e) {
+            return std::string(e.what()).find("needs the hull model (every contact line)") != std::string::npos;
+        });
+        BOOST_TEST(!asked);
+    }
 }

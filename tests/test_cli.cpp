@@ -2374,6 +2374,9 @@ BOOST_AUTO_TEST_CASE(audit_keeps_the_users_program_a_guest) {
     BOOST_TEST(kept["format"] == "scalecert-no-answers-1");
     BOOST_TEST(kept["answers"].size() == static_cast<size_t>(std::min(tenth, 50L)));
     BOOST_TEST(kept["answers"][0]["said"]["pose2"][2][3] == 100);
+    const nlohmann::json next = audit("exact+next");
+    BOOST_TEST(next["not_answered"].get<long>() == tenth);
+    BOOST_TEST(next["failures"][0]["reason"].get<std::string>().find("not at the pair asked") != std::string::npos);
     const nlohmann::json distances = audit("exact+distance");
     BOOST_TEST(distances["not_answered"].get<long>() == tenth);
     BOOST_TEST(distances["failures"][0]["reason"] == "a distance claim, not a verdict");

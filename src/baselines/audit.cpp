@@ -63,8 +63,9 @@ double median(std::vector<double> v) {
     return v.size() % 2 ? v[h] : (v[h - 1] + v[h]) / 2;
 }
 
-double direction_excess(const Q& along, const Q& squared) {
+std::optional<double> direction_excess(const Q& along, const Q& squared, double extent) {
     const double root = std::sqrt(to_double_rn(squared));
+    if (!(root >= std::ldexp(extent, -26)) || !(root > 0)) return std::nullopt;
     return (sqrt_minus_rn(along, Q(0)) - root) / root;
 }
 
@@ -80,7 +81,7 @@ struct ExactCache {
 // `verdicts` are the method's own at those pairs.
 void measure_errors(const fp::Method& mm, const HullModel& m, const std::vector<double>& r1,
                     const std::vector<double>& r2, const std::vector<Verdict>& exact, const std::vector<int>& verdicts,
-                    ExactCache& cache, double tolerance, AuditRow& row) {
+                    ExactCache& cache, double tolerance, double extent, AuditRow& row) {
     std::vector<double> dist_err, depth_err;
     std::vector<AuditRow::MeasureFailure> measured;
     for (size_t i = 0; i < r1.size(); ++i) {
@@ -122,8 +123,9 @@ void measure_errors(const fp::Method& mm, const HullModel& m, const std::vector<
         if ((d[0] != 0 || d[1] != 0 || d[2] != 0) && std::isfinite(d[0] + d[1] + d[2])) {
             const Vec3q n{exact_from_double(d[0]), exact_from_double(d[1]), exact_from_double(d[2])};
             const Q along = directional_depth_squared(m, n, a, b);
-            if (sgn(along) >= 0)  // (a plane separating an overlapping pair does not exist)
-                row.direction_err_max = std::max(row.direction_err_max, direction_excess(along, E));
+            if (sgn(along) < 0) continue;  // (a plane separating an overlapping pair does not exist)
+            if (const std::optional<double> x = direction_excess(along, E, extent))
+                row.direction_err_max = std::max(row.direction_err_max, *x);
         }
     }
     row.distances = static_cast<long>(dist_err.size());
@@ -438,7 +440,7 @@ std::vector<AuditRow> audit_convex(const std::string& name, const ExactScene& s,
             }
         // A program's time is its whole run (start-up included) over the pairs it was asked.
         r.seconds_per_query = std::chrono::duration<double>(Clock::now() - t0).count() / static_cast<double>(r1.size());
-        if (measures) measure_errors(*mm, m, r1, r2, exact, verdicts, cache, settings.measure_tolerance, r);
+        if (measures) measure_errors(*mm, m, r1, r2, exact, verdicts, cache, settings.measure_tolerance, extent, r);
         if (by_distance) wrong_by_distance(*mm, near, r);
         rows.push_back(r);
     }

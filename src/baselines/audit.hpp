@@ -63,8 +63,11 @@ std::optional<double> relative_error(const Q& squared, double value);
 // The median of v (the mean of the middle two for an even count; 0 when empty).
 double median(std::vector<double> v);
 // (√along − √squared) / √squared: how much deeper the bodies are along a method's direction than
-// their depth (`along` the squared depth along it, `squared` the exact squared depth, > 0).
-double direction_excess(const Q& along, const Q& squared);
+// their depth (`along` the squared depth along it, `squared` the exact squared depth, > 0); none
+// where the depth is below 2^-26 of the scene's largest scaled coordinate `extent`, where a
+// direction held in doubles is not resolved (its rounding alone, about 2^-53·extent along the
+// depth, would read as 2^-27 and more, up to 10^14 on touching scenes).
+std::optional<double> direction_excess(const Q& along, const Q& squared, double extent);
 // Why no floating-point method can run where the largest scaled coordinate is `extent`: past
 // 2^200 their squared lengths overflow (audit.cpp); "" below.
 std::string beyond_doubles(double extent);

@@ -289,8 +289,9 @@ std::vector<AuditRow> audit_compound(const std::string& name, const ExactScene& 
                     if ((d[0] != 0 || d[1] != 0 || d[2] != 0) && std::isfinite(d[0] + d[1] + d[2])) {
                         const Vec3q n{exact_from_double(d[0]), exact_from_double(d[1]), exact_from_double(d[2])};
                         const Q along = judge.pair_directional_depth(c.part1, c.part2, n, a, bb);
-                        if (sgn(along) >= 0)
-                            row.direction_err_max = std::max(row.direction_err_max, direction_excess(along, *E));
+                        const std::optional<double> x =
+                            sgn(along) >= 0 ? direction_excess(along, *E, extent) : std::nullopt;
+                        if (x) row.direction_err_max = std::max(row.direction_err_max, *x);
                     }
                 }
             }

@@ -31,7 +31,12 @@ ClosedLine closed_form_line(const Model& m, const ContactLine& L) {
         c.alpha = dot(n1, sub(a1, s1));
         c.beta = dot(n1, sub(s1, s2));
         c.gamma = dot(n1, sub(c2, s2));
-        c.formula = "(i) F,V";
+        // (F,F) and (F,E): P1's face meets P2's face or edge in its plane, which (i) gives with any
+        // vertex of P2's feature.
+        c.formula = L.contact == "FV"
+                        ? std::string("(i) F,V")
+                        : std::string("(i) F,") + L.contact[1] + " (as F,V: P1's face, a vertex of P2's " +
+                              (L.contact[1] == 'F' ? "face)" : "edge)");
         break;
     }
     case 2: {  // (V,F): (i) with the roles exchanged, solved for ρ2
@@ -41,7 +46,8 @@ ClosedLine closed_form_line(const Model& m, const ContactLine& L) {
         c.alpha = dot(n2, sub(c1, s1));
         c.beta = dot(n2, sub(s1, s2));
         c.gamma = dot(n2, sub(a2, s2));
-        c.formula = "(i) V,F";
+        c.formula = L.contact == "VF" ? std::string("(i) V,F")
+                                      : std::string("(i) E,F (as V,F: a vertex of P1's edge, P2's face)");
         break;
     }
     default: {  // (E,E): ρ2 = (det[VS] + ρ1 det[VV]) / det[A]

@@ -8,7 +8,7 @@ namespace scalecert::internal {
 
 struct ClosedLine {
     Q alpha, beta, gamma;  // ρ2 = (α·ρ1 + β)/γ
-    std::string formula;   // "(i) F,V", "(i) V,F", "(ii) E,E"
+    std::string formula;   // "(i) F,V", "(i) V,F", "(ii) E,E"; an F,F, F,E or E,F line by (i) as F,V or V,F
     Q slope() const { return alpha / gamma; }
     Q intercept() const { return beta / gamma; }
 };

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 
 namespace scalecert::internal {
 
@@ -69,6 +70,7 @@ bool Session::walked() {
 const HullModel& Session::hull() {
     if (!hull_) {
         if (hull_source_) {
+            if (limit_hull_) refuse_past_the_edge_pair_limit();  // (the library's claims too)
             hull_ = hull_source_();
         } else {
             if (clock_) clock_->restart();
@@ -95,7 +97,16 @@ const Model& Session::hulls() {
 }
 
 void Session::refuse_past_the_edge_pair_limit() {
-    const Model& h = hulls();
+    if (!hulls_) {  // the two hulls alone (hulls() would ask hull() for a scene that does not walk)
+        if (!scene_ && !compact_) throw std::logic_error("Session: no scene for the hulls");
+        // A hull of n points has at most 3n - 6 edges: under the limit whatever the hulls are.
+        double most = 1;
+        for (int i = 0; i < 2; ++i)
+            most *= 3.0 * static_cast<double>(scene_ ? scene_->P[i].points.size() : compact_->P[i].size());
+        if (most <= kMaxEdgePairs) return;
+        hulls_ = std::make_shared<const Model>(build_hulls(scene_ ? *scene_ : full_scene(*compact_), name_));
+    }
+    const Model& h = *hulls_;
     const double pairs = static_cast<double>(h.P[0].edges.size()) * static_cast<double>(h.P[1].edges.size());
     if (pairs > kMaxEdgePairs)
         throw InputError(name_ + ": this claim needs the hull model (every contact line), and its polyhedra have " +
@@ -259,10 +270,11 @@ ClaimModels Session::claim_models() {
             },
             [this](int i, const Q& rho, const Vec3q& x, Json* proof) {
                 // A walked scene's trees answer without a hull (CGAL's quickhull is quadratic on
-                // points all on the hull, as crossed prisms' are); the hulls when the distance's
-                // rounds run out, or once built.
+                // points all on the hull, as crossed prisms' are), the distance's rounds unbounded
+                // (each adds a point: it always closes); the hulls once built.
                 if (!hull_ && !hulls_ && walked() && walk_->points)
-                    if (const std::optional<bool> in = membership_by_points(*walk_->points, i, rho, x, proof))
+                    if (const std::optional<bool> in =
+                            membership_by_points(*walk_->points, i, rho, x, proof, std::numeric_limits<int>::max()))
                         return *in;
                 return hull_member(hulls(), i, rho, x, proof);
             }};

@@ -10,6 +10,7 @@ audit --command's guest rules):
   +fraction  writes each rho as the exact fraction of the double asked ("p/q" strings)
   +pose      puts pose2 (P2 lifted by 100) on every tenth claim
   +distance  writes a distance claim in place of every tenth verdict
+  +next      writes every tenth claim at the next double above the rho2 asked
   +fewer     leaves out the last 5 claims; +extra adds 3 claims past the pairs asked
   +daemon    starts a process in a session of its own (setsid) that would sleep for an hour,
              writing its pid to the file $DAEMON_PID, then goes on
@@ -19,6 +20,7 @@ With PAIRS_COPY set, it copies the pairs asked there, for the test's own count; 
 it writes there the folder its files are in.
 """
 import json
+import math
 import os
 import struct
 import subprocess
@@ -61,6 +63,8 @@ for i, (r1, r2) in enumerate(pairs):
     if "pose" in ways and i % 10 == 0:
         c["pose2"] = [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 100]]
         c["verdict"] = "separated"
+    if "next" in ways and i % 10 == 0:
+        c["rho2"] = math.nextafter(r2, math.inf)
     if "distance" in ways and i % 10 == 0:
         c = {"kind": "distance", "rho1": r1, "rho2": r2, "value": 1}
     claims.append(c)
