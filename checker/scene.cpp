@@ -184,13 +184,14 @@ std::array<std::optional<Pose>, 2> claim_poses(Context& cx, const J& cl, const s
     return pose;
 }
 
+namespace {
 // With L the lcm of the pose's denominators, x = X / D moves to R x + t = (L R X + D L t) / (D L):
-// integer products over the common denominator D L, then divided by the gcd of D L and every
-// moved coordinate (the least common denominator, which the 16,384-bit limit is on: the engine
-// takes a compound part moved by a pose whose entries cancel its vertices' factors).
-std::shared_ptr<const Scan> posed_scan(Context& cx, const std::shared_ptr<const Scan>& base, const Pose& m,
-                                       const std::string& what) {
-    const Scan& P = *base;
+// M = L R and T = D L t, integers, over the common denominator D L.
+struct PoseInts {
+    Z3 M[3], T;
+    mpz_class DL;
+};
+PoseInts pose_ints(Context& cx, const mpz_class& D, const Pose& m) {
     mpz_class L = 1;
     double lm = 0;
     for (const auto& row : m)
@@ -198,18 +199,28 @@ std::shared_ptr<const Scan> posed_scan(Context& cx, const std::shared_ptr<const 
             mpz_lcm(L.get_mpz_t(), L.get_mpz_t(), e.get_den_mpz_t());
             lm = std::max(lm, qsize(e));
         }
-    cx.spend_ops(12, lm + limbs(L));
-    mpz_class M[3][3];
-    Z3 T;
-    const mpz_class DL = P.D() * L;
+    cx.spend_ops(24, lm + limbs(L) + limbs(D));
+    PoseInts p;
+    p.DL = D * L;
     for (size_t r = 0; r < 3; ++r) {
-        for (size_t c = 0; c < 3; ++c) M[r][c] = m[r][c].get_num() * (L / m[r][c].get_den());
-        T[r] = m[r][3].get_num() * (DL / m[r][3].get_den());
+        for (size_t c = 0; c < 3; ++c) p.M[r][c] = m[r][c].get_num() * (L / m[r][c].get_den());
+        p.T[r] = m[r][3].get_num() * (p.DL / m[r][3].get_den());
     }
+    return p;
+}
+}  // namespace
+
+// Every moved vertex, M X + T, then divided by the gcd of D L and every moved coordinate (the
+// least common denominator, which the 16,384-bit limit is on: the engine takes a compound part
+// moved by a pose whose entries cancel its vertices' factors).
+std::shared_ptr<const Scan> posed_scan(Context& cx, const std::shared_ptr<const Scan>& base, const Pose& m,
+                                       const std::string& what) {
+    const Scan& P = *base;
+    const PoseInts p = pose_ints(cx, P.D(), m);
     double lM = 0, lT = 0;
     for (size_t r = 0; r < 3; ++r) {
-        lT = std::max(lT, limbs(T[r]));
-        for (size_t c = 0; c < 3; ++c) lM = std::max(lM, limbs(M[r][c]));
+        lT = std::max(lT, limbs(p.T[r]));
+        for (size_t c = 0; c < 3; ++c) lM = std::max(lM, limbs(p.M[r][c]));
     }
     std::vector<Z3> out(P.size());
     for (size_t k = 0; k < P.size(); ++k) {
@@ -218,11 +229,11 @@ std::shared_ptr<const Scan> posed_scan(Context& cx, const std::shared_ptr<const 
         cx.spend(300 + 12 * (1 + lM) * (1 + lx) + 3 * (lT + lM + lx));
         for (size_t r = 0; r < 3; ++r) {
             mpz_class& y = out[k][r];
-            y = T[r];
-            for (size_t c = 0; c < 3; ++c) mpz_addmul(y.get_mpz_t(), M[r][c].get_mpz_t(), X[c].get_mpz_t());
+            y = p.T[r];
+            for (size_t c = 0; c < 3; ++c) mpz_addmul(y.get_mpz_t(), p.M[r][c].get_mpz_t(), X[c].get_mpz_t());
         }
     }
-    mpz_class g = DL;
+    mpz_class g = p.DL;
     for (size_t k = 0; k < out.size() && g != 1; ++k)
         for (int c = 0; c < 3 && g != 1; ++c) {
             cx.spend(50 + 4 * (1 + limbs(g)) * (1 + limbs(out[k][c])));
@@ -234,26 +245,13 @@ std::shared_ptr<const Scan> posed_scan(Context& cx, const std::shared_ptr<const 
                 cx.spend(20 + 2 * (1 + limbs(c)) * (1 + limbs(g)));
                 mpz_divexact(c.get_mpz_t(), c.get_mpz_t(), g.get_mpz_t());
             }
-    return std::make_shared<const Scan>(cx, std::move(out), DL / g, what);
+    return std::make_shared<const Scan>(cx, std::move(out), p.DL / g, what);
 }
 
 std::shared_ptr<const Scan> posed_view(Context& cx, const std::shared_ptr<const Scan>& base, const Pose& m,
                                        const std::string& what) {
-    mpz_class L = 1;
-    double lm = 0;
-    for (const auto& row : m)
-        for (const Q& e : row) {
-            mpz_lcm(L.get_mpz_t(), L.get_mpz_t(), e.get_den_mpz_t());
-            lm = std::max(lm, qsize(e));
-        }
-    cx.spend_ops(24, lm + limbs(L) + limbs(base->D()));
-    Z3 M[3], T;
-    const mpz_class DL = base->D() * L;
-    for (size_t r = 0; r < 3; ++r) {
-        for (size_t c = 0; c < 3; ++c) M[r][c] = m[r][c].get_num() * (L / m[r][c].get_den());
-        T[r] = m[r][3].get_num() * (DL / m[r][3].get_den());
-    }
-    return std::make_shared<const Scan>(cx, base, M, T, DL, what);
+    const PoseInts p = pose_ints(cx, base->D(), m);
+    return std::make_shared<const Scan>(cx, base, p.M, p.T, p.DL, what);
 }
 
 V3 posed_point(const V3& x, const std::optional<Pose>& pose) {
