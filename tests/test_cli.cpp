@@ -2305,6 +2305,41 @@ BOOST_AUTO_TEST_CASE(audit_runs_the_users_program) {
         BOOST_TEST(rows[1]["queries"].get<long>() == 0);
         BOOST_TEST(rows[1]["not_run"].get<std::string>().find(why) != std::string::npos, rows[1].dump());
     }
+    // An integer option is the digits given: ' 1' (which CLI11 would trim to 1) is refused.
+    for (const std::string bad : {"' 1'", "'1 '", "1e3", "0"}) {
+        const Run e = run("audit " + cubes + " --methods libccd-gjk --ccd-max-iterations " + bad);
+        BOOST_TEST(e.status == 2, bad);
+        BOOST_TEST(e.err.find("--ccd-max-iterations: not a whole number from 1 to 1000000000") != std::string::npos,
+                   e.err);
+    }
+    // A batch goes on past a scene where one method cannot run: the cubes 10^31 times larger
+    // (largest scaled coordinate 13/2 · 10^31) are past what libccd's EPA resolves at its default
+    // tolerance 1e-4 (2^-52 of its square, about 9·10^47): its row there says so, and the other
+    // scene and method run (exit 0).
+    {
+        const std::string digits = "0000000000000000000000000000000";
+        nlohmann::json k = nlohmann::json::parse(slurp(cubes));
+        for (const char* p : {"P1", "P2"})
+            for (auto& v : k[p]["vertices"])
+                for (auto& x : v) x = x.get<int>() == 0 ? std::string("0") : std::to_string(x.get<int>()) + digits;
+        const fs::path huge = write("cubes-1e31.json", k.dump());
+        const Run b = run("audit " + cubes + " " + huge.string() + " --methods libccd-gjk,libccd-mpr");
+        BOOST_TEST_REQUIRE(b.status == 0, b.err);
+        const nlohmann::json rows = nlohmann::json::parse(b.out);
+        int not_run = 0, ran = 0;
+        for (const auto& r : rows) {
+            if (r.contains("not_run")) {
+                ++not_run;
+                BOOST_TEST(r["scene"] == huge.string());
+                BOOST_TEST(r["method"] == "libccd-gjk");
+                BOOST_TEST(r["not_run"].get<std::string>().find("--ccd-epa-tolerance 0.0001") != std::string::npos);
+            } else if (r.contains("queries")) {
+                ++ran;
+            }
+        }
+        BOOST_TEST(not_run == 1);
+        BOOST_TEST(ran == 3);  // libccd-gjk and -mpr on the cubes, libccd-mpr on the large ones
+    }
     // A program that does not finish in --command-timeout is stopped, with what it started (its
     // process group): long before its 30 s sleep would end, its row says so.
     const auto t0 = std::chrono::steady_clock::now();

@@ -66,3 +66,20 @@ BOOST_AUTO_TEST_CASE(each_equation_is_exercised) {
     }
     for (const char* eq : {"(4)", "(5)", "(a)"}) BOOST_TEST(seen.count(eq) == 1u, eq);
 }
+
+// A line's annotation names its contact: on the stacked cubes (one (F,F) contact, P1's top face
+// against P2's bottom face, by hand) the formula is (i) read as (F,V), and it says F,F; on the
+// tetrahedron and box (test_hand_curves: (V,F) then (E,E)) the annotations are "(i) V,F" and
+// "(ii) E,E" as they were.
+BOOST_AUTO_TEST_CASE(annotations_name_their_contact) {
+    const std::string dir = std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/";
+    std::set<std::string> cubes, tetra;
+    const HullModel c = build_model(load_scene(dir + "stacked_cubes.json"));
+    for (const ContactLine& L : c.lines)
+        if (L.contact == "FF") cubes.insert(closed_form_line(c, L).formula);
+    BOOST_TEST(cubes == std::set<std::string>{"(i) F,F (as F,V: P1's face, a vertex of P2's face)"});
+    const HullModel t = build_model(load_scene(dir + "tetra_box_switch.json"));
+    for (const ContactLine& L : t.lines)
+        if (L.contact == "VF" || L.contact == "EE") tetra.insert(closed_form_line(t, L).formula);
+    BOOST_TEST((tetra == std::set<std::string>{"(i) V,F", "(ii) E,E"}));
+}
