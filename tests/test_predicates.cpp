@@ -7,6 +7,7 @@
 #include "certify/classify.hpp"
 #include "curve/contact_lines.hpp"
 #include "geometry/gauss_map.hpp"
+#include "io/scene.hpp"
 #include "numeric/predicates.hpp"
 
 #include <cmath>
@@ -334,4 +335,44 @@ BOOST_AUTO_TEST_CASE(stats_merge_per_predicate) {
     BOOST_TEST(a[Predicate::ScanSupport].exact == 5u);
     BOOST_TEST(a[Predicate::CurveSide].filtered + a[Predicate::CurveSide].exact == 0u);
     BOOST_TEST(std::string(filter::kPredicateNames[static_cast<unsigned>(Predicate::ScanSupport)]) == "scan_support");
+}
+
+// 11. A pose's determinant: the filter says "nonsingular" only when det R ≠ 0 exactly, and
+// pose_singular (the filter, then integers) agrees with det R computed in rationals here, on
+// rotations held in doubles, exactly singular matrices (a row the sum of the other two), matrices
+// a hair from singular (an entry moved by one unit in the last place) and entries past the
+// filter's range.
+BOOST_AUTO_TEST_CASE(pose_determinant_filter_and_exact) {
+    using scalecert::internal::Pose;
+    std::mt19937_64 g(11);
+    std::uniform_real_distribution<double> U(-1, 1);
+    auto det = [](const Pose& m) {
+        return Q(m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+                 m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]));
+    };
+    int filtered = 0, singular = 0;
+    for (int t = 0; t < 3000; ++t) {
+        double a[3][3];
+        for (auto& row : a)
+            for (double& x : row) x = U(g);
+        if (t % 3 == 1)  // row 2 = row 0 + row 1, exactly when the sums are exact (a few ulps off otherwise)
+            for (int c = 0; c < 3; ++c) a[2][c] = a[0][c] + a[1][c];
+        if (t % 3 == 2)
+            for (int c = 0; c < 3; ++c) a[2][c] = std::nextafter(a[0][c] + a[1][c], 2.0);
+        if (t % 50 == 0) a[1][1] = 1e-300;  // past the filter's range: the integers decide
+        Pose m;
+        for (int r = 0; r < 3; ++r) {
+            for (int c = 0; c < 3; ++c) m[r][c] = Q(a[r][c]);
+            m[r][3] = 0;
+        }
+        const bool exact_singular = sgn(det(m)) == 0;
+        if (scalecert::internal::filter::pose_certainly_nonsingular(a)) {
+            BOOST_TEST(!exact_singular, t);
+            ++filtered;
+        }
+        BOOST_TEST(scalecert::internal::pose_singular(m) == exact_singular, t);
+        singular += exact_singular;
+    }
+    BOOST_TEST(filtered >= 950);  // of the 980 generic matrices with every entry in range
+    BOOST_TEST(singular > 100);
 }

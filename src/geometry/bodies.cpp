@@ -19,8 +19,6 @@ namespace scalecert::internal {
 
 PosedPoints::PosedPoints(const PointSets& base, const std::array<std::optional<Pose>, 2>& poses) : base_(base) {
     for (int i = 0; i < 2; ++i) {
-        scale_[i] = base.scale(i);
-        seed_[i] = base.seed(i);
         if (!poses[i]) continue;
         posed_[i] = true;
         const Pose& m = *poses[i];
@@ -31,26 +29,26 @@ PosedPoints::PosedPoints(const PointSets& base, const std::array<std::optional<P
         // The moved points are numbers the engine and the checker read like any other: past the
         // limit of a polyhedron's common denominator the claim is refused, before any work (a
         // bound: the moved points' own common denominator divides it).
-        if (mpz_sizeinbase(Z(scale_[i] * L).get_mpz_t(), 2) > kMaxDenominatorBits)
+        scale_[i] = base.scale(i) * L;
+        if (mpz_sizeinbase(scale_[i].get_mpz_t(), 2) > kMaxDenominatorBits)
             throw InputError(std::string("pose") + (i ? "2" : "1") + ": the moved points of P" + (i ? "2" : "1") +
                              " would have a common denominator past " + std::to_string(kMaxDenominatorBits) +
                              " bits (the limit of a polyhedron's; README \"Limits\"): the pose's denominators "
                              "times the object's");
         // The seed S/E moves to (L·R·S + L·t·E) / (L·E).
         Z E;
-        const Vec3z S = over_common_denominator(seed_[i], E);
+        const Vec3z S = over_common_denominator(base.seed(i), E);
         const Z LE = L * E;
         for (size_t r = 0; r < 3; ++r) {
             for (size_t c = 0; c < 3; ++c) LR_[i][r][c] = over(m[r][c], L);
             const Z Lt = over(m[r][3], L);
-            DLt_[i][r] = Lt * scale_[i];
+            DLt_[i][r] = Lt * base.scale(i);
             Z num = Lt * E;
             for (size_t c = 0; c < 3; ++c) mpz_addmul(num.get_mpz_t(), LR_[i][r][c].get_mpz_t(), S[c].get_mpz_t());
             seed_[i][r] = Q(num, LE);
             seed_[i][r].canonicalize();
             for (size_t c = 0; c < 4; ++c) dpose_[i][r][c] = m[r][c].get_d();
         }
-        scale_[i] *= L;
     }
 }
 

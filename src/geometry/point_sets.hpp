@@ -72,8 +72,8 @@ class PosedPoints final : public PointSets {
     PosedPoints(const PointSets& base, const std::array<std::optional<Pose>, 2>& poses);
     Vec3q point(int i, int k) const override;
     D3 dpoint(int i, int k) const override;
-    const Vec3q& seed(int i) const override { return seed_[i]; }
-    const Z& scale(int i) const override { return scale_[i]; }
+    const Vec3q& seed(int i) const override { return posed_[i] ? seed_[i] : base_.seed(i); }
+    const Z& scale(int i) const override { return posed_[i] ? scale_[i] : base_.scale(i); }
     Vec3z zpoint(int i, int k) const override;
     int argmax(int i, const Vec3z& n) const override;
     int dargmax(int i, const D3& d) const override;

@@ -3,6 +3,7 @@
 
 #include "io/mesh.hpp"
 #include "io/strict_json.hpp"
+#include "numeric/predicates.hpp"
 
 #include <cstdlib>
 #include <cstring>
@@ -235,6 +236,10 @@ ExactScene parse_scene_text(const std::string& text, const std::string& name, co
 }
 
 bool pose_singular(const Pose& m) {
+    double d[3][3];
+    for (size_t r = 0; r < 3; ++r)
+        for (size_t c = 0; c < 3; ++c) d[r][c] = m[r][c].get_d();
+    if (filter::pose_certainly_nonsingular(d)) return false;
     Z L = 1, a[3][3];
     for (size_t r = 0; r < 3; ++r)
         for (size_t c = 0; c < 3; ++c) lcm_into(L, m[r][c].get_den());

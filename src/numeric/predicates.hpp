@@ -26,6 +26,7 @@
 //   7. ScanSupportFilter       which points may maximise n·x          (scan.cpp)
 //   8. half_plane_side_filter  a scaling pair against a part pair's half-plane (compound/region.cpp, locate.cpp)
 //   9. scaled_enclosure        a scaled coordinate s + ρ(x − s) enclosed in doubles (certify/compound_judge.cpp)
+//  11. pose_certainly_nonsingular  det R ≠ 0 for a pose              (io/scene.cpp, pose_singular)
 //  10. a depth surface's planes: each triangle's offset N·a and squared distance (N·a)²/N·N in
 //      CGAL's Interval_nt under upward rounding (geometry/measures.cpp, checked_surface). An
 //      enclosure by construction, so no bound is stated here: integers start from their
@@ -194,6 +195,35 @@ static_assert(kHalfPlaneRel > 10 * 8 * kUnit && kQueryTiny > 1e6 * 3 * 0x1p-1022
 constexpr double kScaledRel = 1e-14;
 static_assert(kScaledRel > 10 * 6.2 * kUnit * (1 + 1.01 * gamma(4)) && kQueryTiny > 1e6 * 0x1p-1074,
               "scaled coordinate bound");
+
+// 11. A pose's R nonsingular (io/scene.cpp, pose_singular): the sign of det R, nonzero, from the
+//    doubles a_ij of its exact entries x_ij (mpq's get_d truncates: |a − x| < 2u|x|), each 0 or
+//    of magnitude in [2^-250, 2^250] (else unsure), so every product of three is normal and no sum
+//    overflows. det is the cofactor expansion a00(a11 a22 − a12 a21) − a01(…) + a02(…): each of its
+//    six products of three inputs errs by (1 + 2u)^3 from the inputs and takes at most five
+//    roundings (two products, the inner difference, the outer two sums), so |fl(det) − det R| ≤
+//    γ11·P with P = Σ over the six products of |x x x| (Higham: 3·2u + 5u ≤ 11u to first order).
+//    P's own computed value (the same expansion on magnitudes) is within γ11 of P. The filter
+//    answers "nonsingular" when |fl(det)| > kPoseDetRel·fl(P): factor above 100 over 2γ11/(1 − γ11).
+//    A rotation's det is ±1 with P at most 6: the filter decides every pose a program holds but the
+//    near-singular ones, which the integers decide.
+constexpr double kPoseDetRel = 0x1p-40;
+static_assert(kPoseDetRel > 100 * 2 * gamma(11) / (1 - gamma(11)), "pose determinant bound");
+constexpr double kPoseEntryMin = 0x1p-250, kPoseEntryMax = 0x1p250;
+// true when det R is certainly nonzero (filter 11), false when unsure.
+inline bool pose_certainly_nonsingular(const double (&a)[3][3]) {
+    for (const auto& row : a)
+        for (double x : row)
+            if (x != 0 && !(std::fabs(x) >= kPoseEntryMin && std::fabs(x) <= kPoseEntryMax)) return false;
+    const double d = a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) -
+                     a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
+                     a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
+    auto m = [&a](int r, int c) { return std::fabs(a[r][c]); };
+    const double p = m(0, 0) * (m(1, 1) * m(2, 2) + m(1, 2) * m(2, 1)) +
+                     m(0, 1) * (m(1, 0) * m(2, 2) + m(1, 2) * m(2, 0)) +
+                     m(0, 2) * (m(1, 0) * m(2, 1) + m(1, 1) * m(2, 0));
+    return std::fabs(d) > kPoseDetRel * p;
+}
 
 // ---- Statistics: one counter pair per predicate, per deciding object -------------------------
 
