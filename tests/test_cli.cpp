@@ -2286,13 +2286,21 @@ BOOST_AUTO_TEST_CASE(audit_runs_the_users_program) {
                       no_format = "sh " + write("no-format.sh", "echo '{\"claims\": []}' > \"$3\"\n").string(),
                       stderr_line =
                           "sh " + write("says-why.sh", "echo first >&2; echo 'no licence' >&2; exit 4\n").string();
+    const std::string crash =
+        "/usr/bin/python3 " + write("crash.py",
+                                    "import os, sys\nprint('about to crash', file=sys.stderr)\nsys.stderr.flush()\n"
+                                    "os.kill(os.getpid(), 11)\n")
+                                  .string();
     const std::vector<std::pair<std::string, std::string>> failing = {
         {"false", "it exited with status 1"},
-        {"true", "its claims file"},
+        {"true", "it wrote no claims file (CLAIMS.json, its third argument)"},
         {no_claims, "format: expected \"scalecert-claims-1\""},
         {no_format, "format: expected \"scalecert-claims-1\""},
-        {stderr_line, "it exited with status 4; its last error line: no licence"},
-        {"kill -9 $$", "it was killed by signal 9"}};
+        {stderr_line, "it exited with status 4; its error output ended: first / no licence"},
+        {"kill -9 $$", "it was killed by signal 9"},
+        {crash + "; exit $?",
+         "it exited with status 139 (the shell's word for a command killed by signal 11, Segmentation fault)"},
+        {crash + "; exit $?", "its error output ended: about to crash"}};
     for (const auto& [bad, why] : failing) {
         const fs::path out = workdir() / "not-run.json";
         fs::remove(out);
@@ -2304,6 +2312,21 @@ BOOST_AUTO_TEST_CASE(audit_runs_the_users_program) {
         BOOST_TEST(rows[1]["method"] == "command (" + bad + ")");
         BOOST_TEST(rows[1]["queries"].get<long>() == 0);
         BOOST_TEST(rows[1]["not_run"].get<std::string>().find(why) != std::string::npos, rows[1].dump());
+        // Said on stderr too: a run that reads only the exit status sees it.
+        BOOST_TEST(e.err.find(": command (" + bad + ") did not run: ") != std::string::npos, e.err);
+    }
+    // With --failures, index.json lists the row that did not run, and why.
+    {
+        const fs::path dir = workdir() / "not-run-failures";
+        fs::remove_all(dir);
+        BOOST_TEST(run("audit " + cubes + " --methods libccd-gjk --command false --failures " + dir.string()).status ==
+                   0);
+        const nlohmann::json index = nlohmann::json::parse(slurp(dir / "index.json"));
+        bool listed = false;
+        for (const auto& r : index["reproducers"])
+            listed |= r.contains("not_run") && r["method"] == "command (false)" &&
+                      r["not_run"] == "--command: it exited with status 1";
+        BOOST_TEST(listed, index.dump());
     }
     // An integer option is the digits given: ' 1' (which CLI11 would trim to 1) is refused.
     for (const std::string bad : {"' 1'", "'1 '", "1e3", "0"}) {

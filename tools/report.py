@@ -217,6 +217,10 @@ def page(rows, audit_dir, failures_dir, program, scripts):
         if key not in scenes:
             f = scene_file(r, audit_dir, failures_dir) if program else None
             scenes[key] = bodies(f, program) if f else None
+            if program and not f and r.get("failures"):
+                print("report.py: note: %s: not found from here nor beside the audit (the audit names scenes relative "
+                      "to the folder it ran in; give --failures DIR for family and mesh-pair scenes), so its failures "
+                      "get no 3-D view" % key, file=sys.stderr)
             if f and scenes[key] is None:
                 print("report.py: note: %s: `%s query` gave no bodies, so its failures get no 3-D view"
                       % (f, program), file=sys.stderr)
@@ -301,7 +305,7 @@ for (const h of ["scene", "method", "eps", "queries", "wrong: said separated", "
 for (const r of D.rows) {
   tr = rt.insertRow();
   for (const v of [r.scene.split("/").pop(), r.method, r.eps, r.queries, r.false_separated, r.false_overlapping,
-                   r.false_touching, r.not_answered, r.measures_wrong,
+                   r.false_touching, r.not_answered, r.method.startsWith("command (") ? "—" : r.measures_wrong,
                    r.not_run || r.seconds_per_query == null ? "" : (1e6 * r.seconds_per_query).toPrecision(3), r.not_run]) cell(tr, v);
 }
 // The atlas table: rows of the atlas's families, per class and method.
@@ -329,7 +333,9 @@ if (atlasRows.length) {
 }
 // Charts (SVG): only with data; one colour and one marker per method, a legend clear of the plot.
 const colours = ["#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b", "#e377c2", "#17becf", "#7f7f7f", "#bcbd22"];
-const methods = [...new Set(D.rows.map(r => r.method))];
+// The charts draw the rows whose method ran (a row that did not run says why in the table).
+const ran = D.rows.filter(r => !r.not_run);
+const methods = [...new Set(ran.map(r => r.method))];
 const colourOf = m => colours[methods.indexOf(m) % colours.length];
 const markerOf = m => methods.indexOf(m) % 6;
 const scenes = new Set(D.rows.map(r => r.scene)).size;
@@ -384,13 +390,14 @@ function legend(f, entries) {  // [label, colour, marker or null]
     el(f.svg, "text", {x: f.legendX + 26, y: y + 4}, label);
   });
 }
-if (D.rows.length) {
-  const sum = (m, k) => D.rows.filter(r => r.method === m).reduce((a, r) => a + r[k], 0);
+if (ran.length) {
+  const sum = (m, k) => ran.filter(r => r.method === m).reduce((a, r) => a + r[k], 0);
   const series = [["said separated (they meet)", "#d62728", "false_separated"], ["said intersecting (they are apart)", "#1f77b4", "false_overlapping"],
                   ["said touching (they do not touch)", "#9467bd", "false_touching"]];
+  if (ran.some(r => r.not_answered)) series.push(["no answer (a program's claim)", "#7f7f7f", "not_answered"]);
   const top = Math.max(...methods.map(m => Math.max(...series.map(s => sum(m, s[2])))));
   const f = frame("chart-wrong", "Wrong verdicts per method (" + scenes + " scene" + (scenes === 1 ? "" : "s") + ", " +
-                  D.rows.reduce((a, r) => a + r.queries, 0) + " queries)", "wrong verdicts", "method", top);
+                  ran.reduce((a, r) => a + r.queries, 0) + " queries)", "wrong verdicts", "method", top);
   const slot = (f.R - f.L) / methods.length, bw = Math.min(40, slot / 3);
   methods.forEach((m, i) => {
     const cx = f.L + slot * (i + 0.5);
@@ -481,7 +488,7 @@ function show(i) {
   document.getElementById("detail").textContent = JSON.stringify(f, null, 1);
   const geo = D.scenes[f.scene];
   const view = document.getElementById("view");
-  if (!geo) { view.textContent = "no geometry: the scene file is not at hand, or names STL or PLY files"; return; }
+  if (!geo) { view.textContent = "no geometry: the scene file was not found when the page was made (the audit names it relative to the folder it ran in)"; return; }
   view.textContent = "";
   const scene = new THREE.Scene();
   scene.background = new THREE.Color(0xffffff);

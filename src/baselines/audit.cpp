@@ -235,12 +235,16 @@ class CommandMethod : public fp::Method {
             failed = run.why_failed(timeout);
             return;
         }
+        if (!std::filesystem::exists(std::filesystem::symlink_status(out))) {
+            failed = "it wrote no claims file (CLAIMS.json, its third argument)";
+            return;
+        }
         JNode doc;
-        try {
+        try {  // (read_regular_file refuses a file that is no regular file, and one past the limit)
             doc = read_claims_root(read_regular_file(out, "its claims file", kMaxSceneBytes), "its claims file");
-            // (read_regular_file names a missing or irregular file, and a file past the limit)
         } catch (const InputError& e) {
-            failed = e.what();
+            failed = e.what();  // naming the file as the program knows it, not our temporary path
+            if (failed.rfind(out, 0) == 0) failed.replace(0, out.size(), "CLAIMS.json");
             return;
         }
         const std::vector<JNode>& claims = doc.find("claims")->items;

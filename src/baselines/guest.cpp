@@ -106,14 +106,21 @@ int drain(int fd, long long& count, std::string* tail) {
 std::string GuestRun::why_failed(double timeout) const {
     char m[200];
     switch (end) {
-    case Exited: std::snprintf(m, sizeof m, "it exited with status %d", code); break;
+    case Exited:
+        if (code > 128 && code < 128 + 65)  // what /bin/sh reports of a command a signal killed
+            std::snprintf(m, sizeof m,
+                          "it exited with status %d (the shell's word for a command killed by signal %d, %s)", code,
+                          code - 128, strsignal(code - 128));
+        else
+            std::snprintf(m, sizeof m, "it exited with status %d", code);
+        break;
     case Signalled: std::snprintf(m, sizeof m, "it was killed by signal %d (%s)", code, strsignal(code)); break;
     case TimedOut:
         std::snprintf(m, sizeof m, "it did not finish within %g s (--command-timeout) and was stopped", timeout);
         break;
     case NotStarted: std::snprintf(m, sizeof m, "it could not be started"); break;
     }
-    return last_error_line.empty() ? std::string(m) : m + std::string("; its last error line: ") + last_error_line;
+    return last_error_line.empty() ? std::string(m) : m + std::string("; its error output ended: ") + last_error_line;
 }
 
 GuestRun run_guest(const std::string& command, double timeout) {
@@ -183,10 +190,19 @@ GuestRun run_guest(const std::string& command, double timeout) {
         for (int fd : {out[0], err[0]}) fcntl(fd, F_SETFL, fcntl(fd, F_GETFL) | O_NONBLOCK);
         while (open_out && drain(out[0], g.stdout_bytes, nullptr) == 1) {}
         while (open_err && drain(err[0], g.stderr_bytes, &tail) == 1) {}
-        // The last non-empty line of its error output, printable.
-        while (!tail.empty() && (tail.back() == '\n' || tail.back() == '\r')) tail.pop_back();
-        const size_t nl = tail.find_last_of('\n');
-        std::string line = nl == std::string::npos ? tail : tail.substr(nl + 1);
+        // The last two non-empty lines of its error output (the shell's word on a signal comes
+        // after the program's own last line), joined by " / ", printable.
+        std::vector<std::string> lines;
+        for (size_t end = tail.size(); lines.size() < 2 && end > 0;) {
+            while (end > 0 && (tail[end - 1] == '\n' || tail[end - 1] == '\r')) --end;
+            if (end == 0) break;
+            const size_t nl = tail.find_last_of('\n', end - 1);
+            const size_t begin = nl == std::string::npos ? 0 : nl + 1;
+            lines.insert(lines.begin(), tail.substr(begin, end - begin));
+            end = begin;
+        }
+        std::string line;
+        for (const std::string& l : lines) line += (line.empty() ? "" : " / ") + l;
         if (line.size() > kKeptErrorBytes) line = "..." + line.substr(line.size() - kKeptErrorBytes);
         for (char& ch : line)
             if (static_cast<unsigned char>(ch) < 0x20 || static_cast<unsigned char>(ch) >= 0x7f) ch = '?';

@@ -11,14 +11,14 @@ struct GuestRun {
     enum End { Exited, Signalled, TimedOut, NotStarted } end = NotStarted;
     int code = 0;  // the exit status (Exited) or the signal (Signalled)
     // The program's standard output and error: how many bytes it wrote to each (read and dropped,
-    // never passed on), and the last line of its error output (at most kKeptErrorBytes, control
-    // characters shown as '?'), for the reason a failure is given.
+    // never passed on), and the last two lines of its error output (at most kKeptErrorBytes,
+    // control characters shown as '?'), for the reason a failure is given.
     long long stdout_bytes = 0, stderr_bytes = 0;
     std::string last_error_line;
     bool ok() const { return end == Exited && code == 0; }
     // "it exited with status 3", "it was killed by signal 9 (Killed)", "it did not finish within 2 s
-    // (--command-timeout) and was stopped", "it could not be started", then the last error line
-    // when there is one.
+    // (--command-timeout) and was stopped", "it could not be started", then the end of its error
+    // output when there is one. A status past 128 is named as the shell's word for a signal.
     std::string why_failed(double timeout) const;
 };
 constexpr std::size_t kKeptErrorBytes = 300;

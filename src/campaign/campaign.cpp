@@ -490,6 +490,8 @@ void write_failures(const CampaignArgs& a, const std::vector<AuditRow>& rows) {
         program += "'";
     }
     for (const AuditRow& r : rows) {
+        if (!r.not_run.empty())  // nothing to replay: the method did not run there, and why
+            index.push_back(Json{{"scene", r.scene}, {"method", r.method}, {"not_run", r.not_run}});
         if (r.failures.empty() && r.measure_failures.empty()) continue;
         const bool given = a.given.count(r.scene) > 0, file = files.count(r.scene) > 0 && !given;
         const std::string scene = file    ? r.scene
@@ -599,6 +601,12 @@ long finish_campaign(const CampaignArgs& a, const std::vector<std::string>& shar
         const Json doc = Json::parse(t);  // (kept: a range over a temporary's member dangles)
         for (const Json& r : doc.at("rows")) rows.push_back(row_of(r));
     }
+    // A method that did not run on a scene is said on stderr too (the exit status stays 0: no bad
+    // input), so that a run that reads only the exit status and the reproducers can see it.
+    for (const AuditRow& r : rows)
+        if (!r.not_run.empty())
+            std::fprintf(stderr, "scalecert: note: %s: %s did not run: %s\n", r.scene.c_str(), r.method.c_str(),
+                         r.not_run.c_str());
     if (!a.failures.empty()) write_failures(a, rows);
     const std::string json = dump(audit_json(rows, !a.no_timing));
     const std::string csv = audit_csv(rows, !a.no_timing);

@@ -185,8 +185,8 @@ void add_audit_options(CLI::App* sub, internal::CampaignArgs& a) {
            "reads the scene and the pairs of doubles asked and writes one verdict claim per pair (docs/audits.md)")
         ->type_name("CMD");
     sub->add_option("--command-timeout", a.settings.command_timeout,
-                    "seconds --command's program may run per scene before it is stopped and the audit refused "
-                    "(default 600)")
+                    "seconds --command's program may run per scene before it is stopped, with every process it "
+                    "started, its row then saying it did not run (default 600)")
         ->type_name("SECONDS")
         ->check(finite_number(0, true));
     // After --methods (whatever the order on the line): the user's program is one method more.
