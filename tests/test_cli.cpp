@@ -24,7 +24,9 @@
 #include <limits>
 #include <map>
 #include <random>
+#include <set>
 #include <sstream>
+#include <thread>
 
 namespace fs = std::filesystem;
 
@@ -2456,6 +2458,84 @@ BOOST_AUTO_TEST_CASE(audit_keeps_the_users_program_a_guest) {
         const pid_t pid = static_cast<pid_t>(std::stol(slurp(pid_file)));
         BOOST_TEST((kill(pid, 0) != 0 && errno == ESRCH), mode << ": pid " << pid << " still runs");
         BOOST_TEST(row.contains("not_run") == (mode == "exact+daemon+hang"), row.dump());
+    }
+    // A pair asked twice is two questions, each judged by its own claim (with --by-distance some
+    // pairs near the boundary are asked again among those by distance): a distance claim where a
+    // pair comes again is no answer there, counted among the wrong by distance. By hand: every
+    // repeated pair not exactly touching (ρ1 + ρ2 ≠ 3 exactly) is one wrong.
+    {
+        const Run rr = run("audit " + cubes +
+                           " --methods libccd-gjk --no-measures --by-distance --command 'PAIRS_COPY=" + copy.string() +
+                           " " + prog + " exact+repeat'");
+        BOOST_TEST_REQUIRE(rr.status == 0, rr.err);
+        const nlohmann::json row = nlohmann::json::parse(rr.out)[1];
+        const nlohmann::json pairs = nlohmann::json::parse(slurp(copy));
+        const size_t queries = row["queries"].get<size_t>();
+        std::set<std::pair<double, double>> seen;
+        long repeats_near = 0, repeats_first = 0;
+        for (size_t i = 0; i < pairs.size(); ++i) {
+            const double a = pairs[i][0].get<double>(), b = pairs[i][1].get<double>();
+            if (!seen.insert({a, b}).second && mpq_class(a) + mpq_class(b) != 3)
+                ++(i < queries ? repeats_first : repeats_near);
+        }
+        long near_wrong = 0;
+        for (const auto& b : row["by_distance"]) near_wrong += b["wrong"].get<long>();
+        BOOST_TEST(repeats_near > 0);
+        BOOST_TEST(near_wrong == repeats_near);
+        BOOST_TEST(row.value("not_answered", 0L) == repeats_first);
+    }
+    // A number past the double range in its claims (1e400) is no answer, kept as it wrote it.
+    const nlohmann::json bignum = audit("exact+bignum");
+    BOOST_TEST(bignum["not_answered"].get<long>() == 1);
+    BOOST_TEST(bignum["failures"][0]["claim"]["rho2"] == "1e400");
+    // A command of 1,200 characters with a comma in it: its CSV row whole, the method quoted.
+    {
+        const std::string cmd = "X=" + std::string(1200, 'x') + ",y " + prog + " exact";
+        for (const std::string timing : {"", " --no-timing"}) {
+            const fs::path csv = workdir() / "long-command.csv";
+            BOOST_TEST_REQUIRE(
+                run("audit " + cubes + " --methods libccd-gjk --command '" + cmd + "' --csv " + csv.string() + timing)
+                    .status == 0);
+            // The fields of each line, quotes read as RFC 4180 has them.
+            std::istringstream in(slurp(csv));
+            std::vector<size_t> fields;
+            for (std::string line; std::getline(in, line);) {
+                size_t n = 1;
+                bool quoted = false;
+                for (char ch : line) {
+                    if (ch == '"') quoted = !quoted;
+                    n += ch == ',' && !quoted;
+                }
+                fields.push_back(n);
+            }
+            BOOST_TEST_REQUIRE(fields.size() == 4u);  // the header and three rows
+            BOOST_TEST((fields[1] == fields[0] && fields[2] == fields[0] && fields[3] == fields[0]));
+            BOOST_TEST(slurp(csv).find(",\"command (X=xxx") != std::string::npos);
+        }
+    }
+    // scalecert sent SIGTERM while the program runs: the program is stopped with what it started,
+    // its folder removed, nothing written, and scalecert ends by that signal.
+    {
+        const fs::path tmp = workdir() / "tmp-term", pid_file = workdir() / "guest.pid", out = workdir() / "term.json";
+        fs::remove_all(tmp);
+        fs::create_directories(tmp);
+        fs::remove(pid_file);
+        const std::string cmd = "TMPDIR=" + tmp.string() + " GUEST_PID=" + pid_file.string() + " " +
+                                std::string(SCALECERT_BIN) + " audit " + cubes + " --methods libccd-gjk --command '" +
+                                prog + " exact+hang' --out " + out.string() + " 2>/dev/null & echo $! > " +
+                                (workdir() / "scalecert.pid").string();
+        BOOST_TEST_REQUIRE(std::system(cmd.c_str()) == 0);
+        for (int k = 0; k < 300 && !(fs::exists(pid_file) && fs::file_size(pid_file) > 0); ++k)
+            std::this_thread::sleep_for(std::chrono::milliseconds(50));
+        BOOST_TEST_REQUIRE(fs::exists(pid_file));
+        const pid_t guest = static_cast<pid_t>(std::stol(slurp(pid_file)));
+        const pid_t sc = static_cast<pid_t>(std::stol(slurp(workdir() / "scalecert.pid")));
+        BOOST_TEST_REQUIRE(kill(sc, SIGTERM) == 0);
+        for (int k = 0; k < 200 && kill(sc, 0) == 0; ++k) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+        BOOST_TEST((kill(sc, 0) != 0 && errno == ESRCH), "scalecert still runs");
+        BOOST_TEST((kill(guest, 0) != 0 && errno == ESRCH), "the program still runs");
+        BOOST_TEST(fs::is_empty(tmp));
+        BOOST_TEST(!fs::exists(out));
     }
     // Its files are in a folder under $TMPDIR, removed afterwards.
     const fs::path tmp = workdir() / "tmp dir's", where = workdir() / "tmp-copy.txt";

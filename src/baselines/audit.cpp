@@ -19,6 +19,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <set>
 #include <sstream>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -164,7 +165,8 @@ DistancePairs distance_pairs(const Model& m, const TouchingCurve& c, const Exact
 }
 
 // The method's wrong verdicts on those pairs, per k; exactly touching pairs counted apart.
-void wrong_by_distance(const fp::Method& mm, const DistancePairs& p, AuditRow& row) {
+// (said(i): the method's verdict at near pair i.)
+void wrong_by_distance(const std::function<int(size_t)>& said, const DistancePairs& p, AuditRow& row) {
     for (int k = 4; k <= 52; k += 4) row.by_distance.push_back(AuditRow::ByDistance{k});
     for (size_t i = 0; i < p.k.size(); ++i) {
         AuditRow::ByDistance& b = row.by_distance[static_cast<size_t>(p.k[i] / 4 - 1)];
@@ -173,18 +175,23 @@ void wrong_by_distance(const fp::Method& mm, const DistancePairs& p, AuditRow& r
             continue;
         }
         ++b.pairs;
-        b.wrong += AuditRow::wrong(mm.classify(p.x[i], p.y[i]), static_cast<int>(p.exact[i]));
+        b.wrong += AuditRow::wrong(said(i), static_cast<int>(p.exact[i]));
     }
 }
 
-// A JSON value of a program's claims file as a JSON document (its numbers as written; NaN and
-// the infinities, which the strict reader takes in claims files, as the strings they are written).
+// A JSON value of a program's claims file as a JSON document: its numbers as the JSON library
+// reads them where that is a finite number, else (NaN and the infinities, which the strict reader
+// takes in claims files, and numbers past the double range such as 1e400) the text as written.
 Json json_of(const JNode& n) {
     switch (n.kind) {
     case JNode::Null: return nullptr;
     case JNode::Bool: return n.text == "true";
-    case JNode::Number:
-        return n.text == "NaN" || n.text.find("Infinity") != std::string::npos ? Json(n.text) : Json::parse(n.text);
+    case JNode::Number: {
+        const Json v = Json::parse(n.text, nullptr, false);  // (no exception: discarded when malformed)
+        const bool finite =
+            v.is_number_integer() || v.is_number_unsigned() || (v.is_number_float() && std::isfinite(v.get<double>()));
+        return finite ? v : Json(n.text);
+    }
     case JNode::String: return n.text;
     case JNode::Array: {
         Json a = Json::array();
@@ -231,6 +238,12 @@ class CommandMethod : public fp::Method {
         std::ofstream(asked) << dump(Json{{"format", "scalecert-pairs-1"}, {"pairs", std::move(pj)}});
         const GuestRun run = run_guest(
             command + " " + shell_quoted(scene) + " " + shell_quoted(asked) + " " + shell_quoted(out), timeout);
+        if (run.end == GuestRun::Interrupted) {  // the program is stopped: end as the signal asks
+            std::error_code ec;
+            std::filesystem::remove_all(dir, ec);
+            std::signal(run.code, SIG_DFL);
+            std::raise(run.code);
+        }
         if (!run.ok()) {
             failed = run.why_failed(timeout);
             return;
@@ -241,7 +254,7 @@ class CommandMethod : public fp::Method {
         }
         JNode doc;
         try {  // (read_regular_file refuses a file that is no regular file, and one past the limit)
-            doc = read_claims_root(read_regular_file(out, "its claims file", kMaxSceneBytes), "its claims file");
+            doc = read_claims_root(read_regular_file(out, "claims file", kMaxSceneBytes), "its claims file");
         } catch (const InputError& e) {
             failed = e.what();  // naming the file as the program knows it, not our temporary path
             if (failed.rfind(out, 0) == 0) failed.replace(0, out.size(), "CLAIMS.json");
@@ -286,18 +299,19 @@ class CommandMethod : public fp::Method {
     std::string failed;     // why the program gave no claims ("" when it did)
     long extra_claims = 0;  // claims past the pairs asked (answers to no question)
     std::string name() const override { return "command (" + command_ + ")"; }
-    int classify(double r1, double r2) const override { return answer(r1, r2).said; }
-    std::pair<std::string, std::string> no_answer(double r1, double r2) const override {
-        const Answer& a = answer(r1, r2);
-        return {a.reason, a.claim};
+    // The answer to pair i as asked (its claim in the file's place i).
+    int said_at(size_t i) const { return answers_.at(i).said; }
+    std::pair<std::string, std::string> no_answer_at(size_t i) const {
+        return {answers_.at(i).reason, answers_.at(i).claim};
     }
+    // (By value, as a library method answers: the first place the pair was asked.)
+    int classify(double r1, double r2) const override { return said_at(index_.at({r1, r2})); }
 
   private:
     struct Answer {
         int said = AuditRow::kSaidNoAnswer;
         std::string reason, claim;  // why it is no answer; what the program wrote ("" for nothing)
     };
-    const Answer& answer(double r1, double r2) const { return answers_.at(index_.at({r1, r2})); }
     std::string command_;
     std::vector<Answer> answers_;
     std::map<std::pair<double, double>, size_t> index_;
@@ -410,6 +424,8 @@ std::vector<AuditRow> audit_convex(const std::string& name, const ExactScene& s,
         auto t0 = Clock::now();
         if (!why.empty()) {
         } else if (meth.rfind(kCommandMethod, 0) == 0) {  // the user's program, asked every pair at once
+            // Every pair in the order the audit judges them (the random and boundary pairs, then
+            // those by distance; a pair asked twice is two questions), each judged by its claim.
             std::vector<std::pair<double, double>> pairs;
             for (size_t i = 0; i < r1.size(); ++i) pairs.push_back({r1[i], r2[i]});
             for (size_t i = 0; i < near.x.size(); ++i) pairs.push_back({near.x[i], near.y[i]});
@@ -433,11 +449,13 @@ std::vector<AuditRow> audit_convex(const std::string& name, const ExactScene& s,
         r.method = mm->name();
         r.settings = fp::settings_of(meth, settings, measures);  // the option's name (command=CMD)
         r.eps = eps;
-        if (const auto* cm = dynamic_cast<const CommandMethod*>(mm.get())) r.extra_claims = cm->extra_claims;
-        for (size_t i = 0; i < r1.size(); ++i) verdicts[i] = mm->classify(r1[i], r2[i]);
+        // The user's program answers by position (its claims[i] answers pair i), the libraries by value.
+        const auto* cm = dynamic_cast<const CommandMethod*>(mm.get());
+        if (cm) r.extra_claims = cm->extra_claims;
+        for (size_t i = 0; i < r1.size(); ++i) verdicts[i] = cm ? cm->said_at(i) : mm->classify(r1[i], r2[i]);
         for (size_t i = 0; i < r1.size(); ++i)
             if (verdicts[i] == AuditRow::kSaidNoAnswer) {
-                auto [reason, claim] = mm->no_answer(r1[i], r2[i]);
+                auto [reason, claim] = cm->no_answer_at(i);
                 r.count_no_answer(r1[i], r2[i], static_cast<int>(exact[i]), std::move(reason), std::move(claim));
             } else {
                 r.count(r1[i], r2[i], verdicts[i], static_cast<int>(exact[i]));
@@ -445,7 +463,10 @@ std::vector<AuditRow> audit_convex(const std::string& name, const ExactScene& s,
         // A program's time is its whole run (start-up included) over the pairs it was asked.
         r.seconds_per_query = std::chrono::duration<double>(Clock::now() - t0).count() / static_cast<double>(r1.size());
         if (measures) measure_errors(*mm, m, r1, r2, exact, verdicts, cache, settings.measure_tolerance, extent, r);
-        if (by_distance) wrong_by_distance(*mm, near, r);
+        if (by_distance)
+            wrong_by_distance(
+                [&](size_t i) { return cm ? cm->said_at(r1.size() + i) : mm->classify(near.x[i], near.y[i]); }, near,
+                r);
         rows.push_back(r);
     }
     {

@@ -83,9 +83,6 @@ class Method {
     // Objects made of parts: the contacts the method's collision query reports, the deepest per
     // part pair; none where its API gives none.
     virtual std::vector<PartContact> contacts(double /*r1*/, double /*r2*/) const { return {}; }
-    // Where classify says AuditRow::kSaidNoAnswer (only a program's own claims can): why, and what
-    // the program wrote there as JSON text ("" for nothing).
-    virtual std::pair<std::string, std::string> no_answer(double /*r1*/, double /*r2*/) const { return {}; }
 };
 
 // libccd's GJK and MPR on the two scaled vertex sets (support function per polytope).

@@ -86,6 +86,12 @@ void stop_descendants(const std::set<pid_t>& keep) {
     }
 }
 
+// A signal that asks scalecert to stop (SIGINT, SIGTERM, SIGHUP) while the guest runs: noted, so
+// that the guest and what it started are stopped before scalecert ends as the signal asks.
+volatile std::sig_atomic_t g_stop_signal = 0;
+void note_stop_signal(int sig) { g_stop_signal = sig; }
+constexpr int kStopSignals[] = {SIGINT, SIGTERM, SIGHUP};
+
 // Reads what is there on fd into the count, keeping the last 4096 bytes in `tail` when given:
 // 1 when it read something, 0 at end of file (or an error), -1 when nothing is there yet.
 int drain(int fd, long long& count, std::string* tail) {
@@ -119,6 +125,9 @@ std::string GuestRun::why_failed(double timeout) const {
         std::snprintf(m, sizeof m, "it did not finish within %g s (--command-timeout) and was stopped", timeout);
         break;
     case NotStarted: std::snprintf(m, sizeof m, "it could not be started"); break;
+    case Interrupted:
+        std::snprintf(m, sizeof m, "scalecert was sent signal %d (%s) and stopped it", code, strsignal(code));
+        break;
     }
     return last_error_line.empty() ? std::string(m) : m + std::string("; its error output ended: ") + last_error_line;
 }
@@ -140,6 +149,12 @@ GuestRun run_guest(const std::string& command, double timeout) {
     int was_subreaper = 0;
     prctl(PR_GET_CHILD_SUBREAPER, &was_subreaper);
     prctl(PR_SET_CHILD_SUBREAPER, 1);
+    struct sigaction on_stop {
+    }, before_stop[3];
+    on_stop.sa_handler = note_stop_signal;  // (no SA_RESTART: poll and usleep return at once)
+    sigemptyset(&on_stop.sa_mask);
+    g_stop_signal = 0;
+    for (int k = 0; k < 3; ++k) sigaction(kStopSignals[k], &on_stop, &before_stop[k]);
     std::fflush(nullptr);
     const pid_t pid = fork();
     if (pid == 0) {
@@ -165,6 +180,12 @@ GuestRun run_guest(const std::string& command, double timeout) {
                 break;
             }
             const auto now = std::chrono::steady_clock::now();
+            if (g_stop_signal) {
+                g.end = GuestRun::Interrupted;
+                g.code = g_stop_signal;
+                kill(-pid, SIGKILL);
+                break;
+            }
             if ((r < 0 && errno != EINTR) || now >= until) {
                 g.end = GuestRun::TimedOut;
                 kill(-pid, SIGKILL);
@@ -210,21 +231,30 @@ GuestRun run_guest(const std::string& command, double timeout) {
     }
     close(out[0]);
     close(err[0]);
+    for (int k = 0; k < 3; ++k) sigaction(kStopSignals[k], &before_stop[k], nullptr);
+    if (g_stop_signal && g.end != GuestRun::Interrupted) g.end = GuestRun::Interrupted, g.code = g_stop_signal;
     prctl(PR_SET_CHILD_SUBREAPER, was_subreaper);
     return g;
 }
 
 GuestFolder::GuestFolder() {
-    std::string base = "/tmp";
+    std::vector<std::string> bases;
     if (const char* t = std::getenv("TMPDIR"); t && *t) {
         struct stat st {};
-        if (stat(t, &st) == 0 && S_ISDIR(st.st_mode)) base = t;
+        if (stat(t, &st) == 0 && S_ISDIR(st.st_mode)) bases.push_back(t);
     }
-    while (base.size() > 1 && base.back() == '/') base.pop_back();
-    std::string templ = base + "/scalecert-command-XXXXXX";
-    if (!mkdtemp(templ.data()))
-        throw InputError("--command: cannot make a temporary folder in " + base + " (" + std::strerror(errno) + ")");
-    path_ = templ;
+    bases.push_back("/tmp");  // where $TMPDIR is unset, or no folder can be made in it
+    int err = 0;
+    for (std::string base : bases) {
+        while (base.size() > 1 && base.back() == '/') base.pop_back();
+        std::string templ = base + "/scalecert-command-XXXXXX";
+        if (mkdtemp(templ.data())) {
+            path_ = templ;
+            return;
+        }
+        err = errno;
+    }
+    throw InputError(std::string("--command: cannot make a temporary folder in /tmp (") + std::strerror(err) + ")");
 }
 
 GuestFolder::~GuestFolder() {

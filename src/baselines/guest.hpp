@@ -8,8 +8,10 @@ namespace scalecert::internal {
 
 // How a guest run ended.
 struct GuestRun {
-    enum End { Exited, Signalled, TimedOut, NotStarted } end = NotStarted;
-    int code = 0;  // the exit status (Exited) or the signal (Signalled)
+    // Interrupted: scalecert itself was sent SIGINT, SIGTERM or SIGHUP while the program ran (the
+    // program and what it started are stopped; the caller then ends as that signal asks).
+    enum End { Exited, Signalled, TimedOut, NotStarted, Interrupted } end = NotStarted;
+    int code = 0;  // the exit status (Exited) or the signal (Signalled, Interrupted)
     // The program's standard output and error: how many bytes it wrote to each (read and dropped,
     // never passed on), and the last two lines of its error output (at most kKeptErrorBytes,
     // control characters shown as '?'), for the reason a failure is given.
@@ -27,11 +29,12 @@ constexpr std::size_t kKeptErrorBytes = 300;
 // through pipes and dropped. scalecert is made the child subreaper (prctl PR_SET_CHILD_SUBREAPER)
 // for the run, so a process the program started stays its descendant even when it leaves the
 // process group (setsid, double fork); when the program ends or `timeout` seconds pass, every
-// descendant still running is killed (SIGKILL, repeated until none is left) and reaped.
+// descendant still running is killed (SIGKILL, repeated until none is left) and reaped. So it is
+// when scalecert is sent SIGINT, SIGTERM or SIGHUP meanwhile (end = Interrupted).
 GuestRun run_guest(const std::string& command, double timeout);
 
 // A private folder (mode 0700) for a guest's files, under $TMPDIR when that is set to an existing
-// folder, else /tmp, removed with everything in it when this goes out of scope. InputError when
+// folder where one can be made, else /tmp, removed with everything in it when this goes out of scope. InputError when
 // none can be made.
 class GuestFolder {
   public:

@@ -108,35 +108,46 @@ std::string audit_csv(const std::vector<AuditRow>& rows, bool timing) {
         }
         return e;
     };
-    char b[1024];
+    // A text field: as it is, or quoted with its quotes doubled when it holds a comma, a quote or a
+    // line end (RFC 4180): a scene's path or a command may.
+    auto text = [](const std::string& t) {
+        if (t.find_first_of(",\"\r\n") == std::string::npos) return t;
+        std::string q = "\"";
+        for (char ch : t) q += ch == '"' ? std::string("\"\"") : std::string(1, ch);
+        return q + "\"";
+    };
+    auto num = [](const char* format, auto v) {
+        char b[64];
+        std::snprintf(b, sizeof b, format, v);
+        return std::string(b);
+    };
     for (const AuditRow& r : rows) {
-        std::snprintf(
-            b, sizeof b,
-            "%s,%.17g,%s,%ld,%ld,%ld,%ld,%.6g,%d,%.6g,%.6g,%d,%d,%d,%d,%.6g,%ld,%.6g,%.6g,%ld,%.6g,%.6g,%.6g\n",
-            r.scene.c_str(), to_double_rn(r.eps), r.method.c_str(), r.queries, r.false_separated, r.false_overlapping,
-            r.false_touching, r.seconds_per_query, r.grid_n, r.seconds_per_curve, r.growth_error, r.exact_junctions,
-            r.junctions_found, r.junctions_missed, r.junctions_merged, r.max_junction_error, r.distances,
-            r.distance_err_median, r.distance_err_max, r.depths, r.depth_err_median, r.depth_err_max,
-            r.direction_err_max);
-        if (!timing) {  // the columns seconds_per_query (8th) and seconds_per_curve (10th) left empty
-            std::string line = b;
-            std::vector<std::string> cols;
-            for (size_t p = 0;;) {
-                const size_t q = line.find_first_of(",\n", p);
-                cols.push_back(line.substr(p, q - p));
-                if (line[q] == '\n') break;
-                p = q + 1;
-            }
-            cols[7].clear();
-            cols[9].clear();
-            line.clear();
-            for (size_t k = 0; k < cols.size(); ++k) line += cols[k] + (k + 1 < cols.size() ? "," : "");
-            s += line + extra(r) + "\n";
-        } else {
-            std::string line = b;
-            line.pop_back();
-            s += line + extra(r) + "\n";
-        }
+        // Without timing the columns seconds_per_query (8th) and seconds_per_curve (10th) are empty.
+        const std::vector<std::string> cols = {text(r.scene),
+                                               num("%.17g", to_double_rn(r.eps)),
+                                               text(r.method),
+                                               num("%ld", r.queries),
+                                               num("%ld", r.false_separated),
+                                               num("%ld", r.false_overlapping),
+                                               num("%ld", r.false_touching),
+                                               timing ? num("%.6g", r.seconds_per_query) : "",
+                                               num("%d", r.grid_n),
+                                               timing ? num("%.6g", r.seconds_per_curve) : "",
+                                               num("%.6g", r.growth_error),
+                                               num("%d", r.exact_junctions),
+                                               num("%d", r.junctions_found),
+                                               num("%d", r.junctions_missed),
+                                               num("%d", r.junctions_merged),
+                                               num("%.6g", r.max_junction_error),
+                                               num("%ld", r.distances),
+                                               num("%.6g", r.distance_err_median),
+                                               num("%.6g", r.distance_err_max),
+                                               num("%ld", r.depths),
+                                               num("%.6g", r.depth_err_median),
+                                               num("%.6g", r.depth_err_max),
+                                               num("%.6g", r.direction_err_max)};
+        for (size_t k = 0; k < cols.size(); ++k) s += (k ? "," : "") + cols[k];
+        s += extra(r) + "\n";
     }
     return s;
 }

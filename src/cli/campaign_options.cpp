@@ -183,7 +183,12 @@ void add_audit_options(CLI::App* sub, internal::CampaignArgs& a) {
            "--command", a.command,
            "audit your own program beside --methods: run once per scene as CMD SCENE.json PAIRS.json CLAIMS.json, it "
            "reads the scene and the pairs of doubles asked and writes one verdict claim per pair (docs/audits.md)")
-        ->type_name("CMD");
+        ->type_name("CMD")
+        ->check(CLI::Validator(
+            [](std::string& v) {
+                return v.find_first_not_of(" \t\r\n") == std::string::npos ? std::string("an empty command") : "";
+            },
+            "CMD"));
     sub->add_option("--command-timeout", a.settings.command_timeout,
                     "seconds --command's program may run per scene before it is stopped, with every process it "
                     "started, its row then saying it did not run (default 600)")

@@ -11,10 +11,12 @@ audit --command's guest rules):
   +pose      puts pose2 (P2 lifted by 100) on every tenth claim
   +distance  writes a distance claim in place of every tenth verdict
   +next      writes every tenth claim at the next double above the rho2 asked
+  +repeat    writes a distance claim where a pair is asked again (no answer there)
   +fewer     leaves out the last 5 claims; +extra adds 3 claims past the pairs asked
   +daemon    starts a process in a session of its own (setsid) that would sleep for an hour,
              writing its pid to the file $DAEMON_PID, then goes on
-  +hang      sleeps for an hour after writing its claims
+  +hang      sleeps for an hour after writing its claims (with $GUEST_PID set, its pid is written there)
+  +bignum    writes the first claim's rho2 as the JSON number 1e400 (past the double range)
   +fail      writes to its standard error and exits with status 3
 With PAIRS_COPY set, it copies the pairs asked there, for the test's own count; with TMP_COPY set,
 it writes there the folder its files are in.
@@ -22,6 +24,7 @@ it writes there the folder its files are in.
 import json
 import math
 import os
+import re
 import struct
 import subprocess
 import sys
@@ -51,6 +54,7 @@ if "fail" in ways:
     print("cubes_verdicts: cannot read the scene", file=sys.stderr)
     sys.exit(3)
 claims = []
+asked = set()
 for i, (r1, r2) in enumerate(pairs):
     if mode == "exact":
         s = Fraction(r1) + Fraction(r2)
@@ -65,6 +69,9 @@ for i, (r1, r2) in enumerate(pairs):
         c["verdict"] = "separated"
     if "next" in ways and i % 10 == 0:
         c["rho2"] = math.nextafter(r2, math.inf)
+    if "repeat" in ways and (r1, r2) in asked:
+        c = {"kind": "distance", "rho1": r1, "rho2": r2, "value": 1}
+    asked.add((r1, r2))
     if "distance" in ways and i % 10 == 0:
         c = {"kind": "distance", "rho1": r1, "rho2": r2, "value": 1}
     claims.append(c)
@@ -72,10 +79,15 @@ if "fewer" in ways:
     claims = claims[:-5]
 if "extra" in ways:
     claims += claims[:3]
-json.dump({"format": "scalecert-claims-1", "claims": claims}, open(out, "w"))
+text = json.dumps({"format": "scalecert-claims-1", "claims": claims})
+if "bignum" in ways:
+    text = re.sub(r'"rho2": [^,}]*', '"rho2": 1e400', text, count=1)
+open(out, "w").write(text)
 if os.environ.get("PAIRS_COPY"):
     json.dump(pairs, open(os.environ["PAIRS_COPY"], "w"))
 if os.environ.get("TMP_COPY"):
     open(os.environ["TMP_COPY"], "w").write(os.path.dirname(out))
 if "hang" in ways:
+    if os.environ.get("GUEST_PID"):
+        open(os.environ["GUEST_PID"], "w").write(str(os.getpid()))
     time.sleep(3600)
