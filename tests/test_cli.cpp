@@ -2484,6 +2484,40 @@ BOOST_AUTO_TEST_CASE(audit_keeps_the_users_program_a_guest) {
         BOOST_TEST(near_wrong == repeats_near);
         BOOST_TEST(row.value("not_answered", 0L) == repeats_first);
     }
+    // A command and a key of the program's own holding bytes that are no UTF-8, or a line end: the
+    // audit's JSON is written (U+FFFD for the bad byte), and stderr's note stays one line.
+    {
+        const fs::path bad_key = write("bad-key.sh",
+                                       "printf '{\"format\": \"scalecert-claims-1\", \"claims\": [], "
+                                       "\"x\\\\nforged\": 1}' > \"$3\"\n");
+        const Run r = run("audit " + cubes + " --methods libccd-gjk --command \"$(printf 'X=\\377') sh " +
+                          bad_key.string() + "\"");
+        BOOST_TEST(r.status == 0, r.err);
+        BOOST_TEST(nlohmann::json::parse(r.out)[1]["method"].get<std::string>().find("\xef\xbf\xbd") !=
+                   std::string::npos);
+        BOOST_TEST(std::count(r.err.begin(), r.err.end(), '\n') == 2, r.err);  // the note and "audit: 3 rows"
+    }
+    // Under --numbers float32 the reproducers hold the doubles asked as exact strings, so the
+    // replay judges the same pairs: every listed claim wrong again (exit 1). The reproducer folder
+    // with a space in its name: the replay command quotes it.
+    {
+        const fs::path dir = workdir() / "float32 repro";
+        fs::remove_all(dir);
+        const Run r = run("audit " + cubes + " --methods libccd-gjk --no-measures --numbers float32 --failures '" +
+                          dir.string() + "'");
+        BOOST_TEST_REQUIRE(r.status == 0, r.err);
+        const nlohmann::json index = nlohmann::json::parse(slurp(dir / "index.json"));
+        BOOST_TEST_REQUIRE(index["reproducers"].size() >= 1u);
+        const nlohmann::json& rep = index["reproducers"][0];
+        const nlohmann::json cl = nlohmann::json::parse(slurp(rep["claims"].get<std::string>()));
+        BOOST_TEST(cl["claims"][0]["rho1"].is_string());
+        const std::string replay = rep["replay"].get<std::string>() + " > " + (workdir() / "replay.txt").string();
+        const int st = std::system(replay.c_str());
+        BOOST_TEST((WIFEXITED(st) && WEXITSTATUS(st) == 1), replay);
+        BOOST_TEST(
+            slurp(workdir() / "replay.txt").find("right: 0, wrong: " + std::to_string(rep["listed"].get<long>())) !=
+            std::string::npos);
+    }
     // A number past the double range in its claims (1e400) is no answer, kept as it wrote it.
     const nlohmann::json bignum = audit("exact+bignum");
     BOOST_TEST(bignum["not_answered"].get<long>() == 1);

@@ -179,18 +179,17 @@ void wrong_by_distance(const std::function<int(size_t)>& said, const DistancePai
     }
 }
 
-// A JSON value of a program's claims file as a JSON document: its numbers as the JSON library
-// reads them where that is a finite number, else (NaN and the infinities, which the strict reader
-// takes in claims files, and numbers past the double range such as 1e400) the text as written.
+// A JSON value of a program's claims file as a JSON document, as the program wrote it: a number
+// that the JSON library writes back otherwise (1e-400, -0, 1e5, NaN, which the strict reader takes
+// in claims files) as the string of its text.
 Json json_of(const JNode& n) {
     switch (n.kind) {
     case JNode::Null: return nullptr;
     case JNode::Bool: return n.text == "true";
     case JNode::Number: {
+        // As a JSON number where that writes back as the program wrote it, else as its text.
         const Json v = Json::parse(n.text, nullptr, false);  // (no exception: discarded when malformed)
-        const bool finite =
-            v.is_number_integer() || v.is_number_unsigned() || (v.is_number_float() && std::isfinite(v.get<double>()));
-        return finite ? v : Json(n.text);
+        return v.is_number() && v.dump() == n.text ? v : Json(n.text);
     }
     case JNode::String: return n.text;
     case JNode::Array: {
@@ -229,23 +228,23 @@ class CommandMethod : public fp::Method {
     CommandMethod(const std::string& command, const ExactScene& s, const std::vector<std::pair<double, double>>& pairs,
                   double timeout)
         : command_(command) {
+        const GuestSignals signals;  // from before the folder is made to after it is removed
         const GuestFolder folder;
         const std::string& dir = folder.path();
+        auto stop_if_asked = [&] {
+            if (const int sig = signals.pending()) GuestSignals::end_by(sig, dir);
+        };
         const std::string scene = dir + "/scene.json", asked = dir + "/pairs.json", out = dir + "/claims.json";
         Json pj = Json::array();
         for (const auto& [a, b] : pairs) pj.push_back(Json::array({a, b}));
         std::ofstream(scene) << dump(scene_file_json(s));
         std::ofstream(asked) << dump(Json{{"format", "scalecert-pairs-1"}, {"pairs", std::move(pj)}});
+        stop_if_asked();
         const GuestRun run = run_guest(
             command + " " + shell_quoted(scene) + " " + shell_quoted(asked) + " " + shell_quoted(out), timeout);
-        if (run.end == GuestRun::Interrupted) {  // the program is stopped: end as the signal asks
-            std::error_code ec;
-            std::filesystem::remove_all(dir, ec);
-            std::signal(run.code, SIG_DFL);
-            std::raise(run.code);
-        }
+        if (run.end == GuestRun::Interrupted) GuestSignals::end_by(run.code, dir);  // the program is stopped
         if (!run.ok()) {
-            failed = run.why_failed(timeout);
+            failed = printable(run.why_failed(timeout));
             return;
         }
         if (!std::filesystem::exists(std::filesystem::symlink_status(out))) {
@@ -258,8 +257,11 @@ class CommandMethod : public fp::Method {
         } catch (const InputError& e) {
             failed = e.what();  // naming the file as the program knows it, not our temporary path
             if (failed.rfind(out, 0) == 0) failed.replace(0, out.size(), "CLAIMS.json");
+            failed = printable(failed);  // (a key of the program's own, on one line)
+            stop_if_asked();
             return;
         }
+        stop_if_asked();
         const std::vector<JNode>& claims = doc.find("claims")->items;
         answers_.resize(pairs.size());
         for (size_t i = 0; i < pairs.size(); ++i) {

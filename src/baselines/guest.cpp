@@ -1,5 +1,6 @@
 #include "baselines/guest.hpp"
 
+#include "io/strict_json.hpp"
 #include "numeric/exact.hpp"
 
 #include <algorithm>
@@ -109,6 +110,48 @@ int drain(int fd, long long& count, std::string* tail) {
 
 }  // namespace
 
+GuestSignals::GuestSignals() {
+    struct sigaction on_stop;
+    std::memset(&on_stop, 0, sizeof on_stop);
+    on_stop.sa_handler = note_stop_signal;  // (no SA_RESTART: poll and usleep return at once)
+    sigemptyset(&on_stop.sa_mask);
+    g_stop_signal = 0;
+    for (int k = 0; k < 3; ++k) {  // (a signal the caller ignores, as nohup does SIGHUP, stays ignored)
+        sigaction(kStopSignals[k], nullptr, &before_[k]);
+        if (before_[k].sa_handler != SIG_IGN) sigaction(kStopSignals[k], &on_stop, nullptr);
+    }
+}
+
+GuestSignals::~GuestSignals() {
+    for (int k = 0; k < 3; ++k) sigaction(kStopSignals[k], &before_[k], nullptr);
+}
+
+int GuestSignals::pending() const { return g_stop_signal; }
+
+void GuestSignals::end_by(int sig, const std::string& folder) {
+    std::error_code ec;
+    std::filesystem::remove_all(folder, ec);
+    std::signal(sig, SIG_DFL);
+    std::raise(sig);
+    std::_Exit(128 + sig);  // (raise returns only if the signal is blocked)
+}
+
+std::string printable(const std::string& text) {
+    std::string out;
+    for (size_t i = 0; i < text.size();) {
+        const unsigned char c = static_cast<unsigned char>(text[i]);
+        const size_t n = c < 0x80 ? 1 : utf8_sequence_length(text, i);
+        if (n == 0 || (n == 1 && (c < 0x20 || c == 0x7f))) {
+            out += '?';
+            ++i;
+        } else {
+            out.append(text, i, n);
+            i += n;
+        }
+    }
+    return out;
+}
+
 std::string GuestRun::why_failed(double timeout) const {
     char m[200];
     switch (end) {
@@ -149,25 +192,22 @@ GuestRun run_guest(const std::string& command, double timeout) {
     int was_subreaper = 0;
     prctl(PR_GET_CHILD_SUBREAPER, &was_subreaper);
     prctl(PR_SET_CHILD_SUBREAPER, 1);
-    struct sigaction on_stop {
-    }, before_stop[3];
-    on_stop.sa_handler = note_stop_signal;  // (no SA_RESTART: poll and usleep return at once)
-    sigemptyset(&on_stop.sa_mask);
-    g_stop_signal = 0;
-    for (int k = 0; k < 3; ++k) sigaction(kStopSignals[k], &on_stop, &before_stop[k]);
     std::fflush(nullptr);
+    const pid_t parent = getpid();
     const pid_t pid = fork();
     if (pid == 0) {
+        // In scalecert's process group (Ctrl-C, or `timeout` signalling the group, reaches it too),
+        // and killed if scalecert dies first.
+        prctl(PR_SET_PDEATHSIG, SIGKILL);
+        if (getppid() != parent) _exit(127);
         const int in = open("/dev/null", O_RDONLY);
         if (in < 0 || dup2(in, 0) < 0 || dup2(out[1], 1) < 0 || dup2(err[1], 2) < 0) _exit(127);
-        setpgid(0, 0);
         execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
         _exit(127);
     }
     close(out[1]);
     close(err[1]);
     if (pid > 0) {
-        setpgid(pid, pid);  // also here: the group exists whichever process runs first
         const auto until = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout);
         bool open_out = true, open_err = true;
         std::string tail;
@@ -183,12 +223,12 @@ GuestRun run_guest(const std::string& command, double timeout) {
             if (g_stop_signal) {
                 g.end = GuestRun::Interrupted;
                 g.code = g_stop_signal;
-                kill(-pid, SIGKILL);
+                kill(pid, SIGKILL);
                 break;
             }
             if ((r < 0 && errno != EINTR) || now >= until) {
                 g.end = GuestRun::TimedOut;
-                kill(-pid, SIGKILL);
+                kill(pid, SIGKILL);
                 break;
             }
             pollfd fds[2] = {{out[0], POLLIN, 0}, {err[0], POLLIN, 0}};
@@ -225,13 +265,10 @@ GuestRun run_guest(const std::string& command, double timeout) {
         std::string line;
         for (const std::string& l : lines) line += (line.empty() ? "" : " / ") + l;
         if (line.size() > kKeptErrorBytes) line = "..." + line.substr(line.size() - kKeptErrorBytes);
-        for (char& ch : line)
-            if (static_cast<unsigned char>(ch) < 0x20 || static_cast<unsigned char>(ch) >= 0x7f) ch = '?';
-        g.last_error_line = line;
+        g.last_error_line = printable(line);
     }
     close(out[0]);
     close(err[0]);
-    for (int k = 0; k < 3; ++k) sigaction(kStopSignals[k], &before_stop[k], nullptr);
     if (g_stop_signal && g.end != GuestRun::Interrupted) g.end = GuestRun::Interrupted, g.code = g_stop_signal;
     prctl(PR_SET_CHILD_SUBREAPER, was_subreaper);
     return g;
@@ -260,6 +297,18 @@ GuestFolder::GuestFolder() {
 GuestFolder::~GuestFolder() {
     std::error_code ec;
     std::filesystem::remove_all(path_, ec);
+    if (!ec) return;
+    // A folder the program made read-only (as some caches are): made writable, then again.
+    namespace fs = std::filesystem;
+    for (auto it = fs::recursive_directory_iterator(path_, fs::directory_options::skip_permission_denied, ec);
+         !ec && it != fs::recursive_directory_iterator(); it.increment(ec))
+        if (it->is_directory(ec) && !it->is_symlink(ec)) fs::permissions(it->path(), fs::perms::owner_all, ec);
+    fs::permissions(path_, fs::perms::owner_all, ec);
+    ec.clear();
+    fs::remove_all(path_, ec);
+    if (ec)
+        std::fprintf(stderr, "scalecert: note: %s: the program's folder could not be removed (%s)\n", path_.c_str(),
+                     ec.message().c_str());
 }
 
 }  // namespace scalecert::internal

@@ -2,6 +2,7 @@
 // out of scalecert's, stopped with every process it started when its time is up, in a private
 // temporary folder under $TMPDIR.
 #pragma once
+#include <csignal>
 #include <string>
 
 namespace scalecert::internal {
@@ -25,6 +26,10 @@ struct GuestRun {
 };
 constexpr std::size_t kKeptErrorBytes = 300;
 
+// The text with control characters and bytes that are no UTF-8 shown as '?' (the rest as it is):
+// a program's words, fit for one line of stderr and for JSON.
+std::string printable(const std::string& text);
+
 // Runs `sh -c command` with standard input from /dev/null and its standard output and error read
 // through pipes and dropped. scalecert is made the child subreaper (prctl PR_SET_CHILD_SUBREAPER)
 // for the run, so a process the program started stays its descendant even when it leaves the
@@ -32,6 +37,23 @@ constexpr std::size_t kKeptErrorBytes = 300;
 // descendant still running is killed (SIGKILL, repeated until none is left) and reaped. So it is
 // when scalecert is sent SIGINT, SIGTERM or SIGHUP meanwhile (end = Interrupted).
 GuestRun run_guest(const std::string& command, double timeout);
+
+// While it lives, SIGINT, SIGTERM and SIGHUP sent to scalecert are noted, not acted on (those the
+// caller ignores stay ignored): a guest's run is then stopped (run_guest) and its folder removed
+// before scalecert ends as the signal asks (end_by). It should outlive the folder.
+class GuestSignals {
+  public:
+    GuestSignals();
+    ~GuestSignals();
+    GuestSignals(const GuestSignals&) = delete;
+    GuestSignals& operator=(const GuestSignals&) = delete;
+    int pending() const;  // the signal noted, or 0
+    // Removes the folder and ends scalecert by `sig`.
+    [[noreturn]] static void end_by(int sig, const std::string& folder);
+
+  private:
+    struct sigaction before_[3];
+};
 
 // A private folder (mode 0700) for a guest's files, under $TMPDIR when that is set to an existing
 // folder where one can be made, else /tmp, removed with everything in it when this goes out of scope. InputError when

@@ -481,14 +481,22 @@ void write_failures(const CampaignArgs& a, const std::vector<AuditRow>& rows) {
     char tol[32];
     const auto end = std::to_chars(tol, tol + sizeof tol, a.settings.measure_tolerance).ptr;
     const std::string tolerance(tol, end);
-    // The command as the shell reads it: quoted when it holds anything but letters, digits and _./-
-    std::string program = a.program;
-    if (program.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_./-") !=
-        std::string::npos) {
-        program = "'";
-        for (char ch : a.program) program += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
-        program += "'";
-    }
+    // A word as the shell reads it: quoted when it holds anything but letters, digits and _./-
+    auto word = [](const std::string& w) {
+        if (!w.empty() && w.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_./-") ==
+                              std::string::npos)
+            return w;
+        std::string q = "'";
+        for (char ch : w) q += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
+        return q + "'";
+    };
+    const std::string program = word(a.program);
+    // A double asked, as the claims file holds it: a JSON number, which certify-fp reads back as
+    // that double under --numbers double; under float32 or exact its exact value as a string (a
+    // JSON number would be read as a float, or as the decimal written).
+    auto asked = [&a](double x) {
+        return a.opt.numbers == Numbers::Double ? Json(x) : Json(to_exact_string(exact_from_double(x)));
+    };
     for (const AuditRow& r : rows) {
         if (!r.not_run.empty())  // nothing to replay: the method did not run there, and why
             index.push_back(Json{{"scene", r.scene}, {"method", r.method}, {"not_run", r.not_run}});
@@ -536,41 +544,42 @@ void write_failures(const CampaignArgs& a, const std::vector<AuditRow>& rows) {
             for (const AuditRow::Failure& f : r.failures)
                 if (f.said != AuditRow::kSaidNoAnswer)
                     claims.push_back(Json{{"kind", "verdict"},
-                                          {"rho1", f.rho1},
-                                          {"rho2", f.rho2},
+                                          {"rho1", asked(f.rho1)},
+                                          {"rho2", asked(f.rho2)},
                                           {"verdict", AuditRow::said_word(f.said)}});
             const size_t claims_listed = claims.size();
             write_file_atomically(a.failures + "/" + name,
                                   dump(Json{{"format", "scalecert-claims-1"}, {"claims", std::move(claims)}}));
-            index.push_back(
-                Json{{"scene", scene},
-                     {"method", r.method},
-                     {"claims", a.failures + "/" + name},
-                     {"listed", claims_listed},
-                     {"wrong", r.wrong() - r.not_answered},
-                     {"replay", program + " certify-fp " + scene + " " + a.failures + "/" + name + numbers}});
+            index.push_back(Json{
+                {"scene", scene},
+                {"method", r.method},
+                {"claims", a.failures + "/" + name},
+                {"listed", claims_listed},
+                {"wrong", r.wrong() - r.not_answered},
+                {"replay", program + " certify-fp " + word(scene) + " " + word(a.failures + "/" + name) + numbers}});
         }
         if (!r.measure_failures.empty()) {
             const std::string name = base + ".measures.claims.json";
             Json claims = Json::array();
             for (const AuditRow::MeasureFailure& f : r.measure_failures) {
                 Json c{{"kind", f.depth ? "penetration_depth" : "distance"},
-                       {"rho1", f.rho1},
-                       {"rho2", f.rho2},
-                       {"value", f.value}};
+                       {"rho1", asked(f.rho1)},
+                       {"rho2", asked(f.rho2)},
+                       {"value", asked(f.value)}};
                 if (f.part1 >= 0) c["parts"] = Json::array({f.part1, f.part2});
                 claims.push_back(std::move(c));
             }
             write_file_atomically(a.failures + "/" + name,
                                   dump(Json{{"format", "scalecert-claims-1"}, {"claims", std::move(claims)}}));
-            index.push_back(Json{{"scene", scene},
-                                 {"method", r.method},
-                                 {"claims", a.failures + "/" + name},
-                                 {"listed", r.measure_failures.size()},
-                                 {"wrong", r.measures_wrong},
-                                 {"tolerance", a.settings.measure_tolerance},
-                                 {"replay", program + " certify-fp " + scene + " " + a.failures + "/" + name +
-                                                " --tolerance " + tolerance + numbers}});
+            index.push_back(
+                Json{{"scene", scene},
+                     {"method", r.method},
+                     {"claims", a.failures + "/" + name},
+                     {"listed", r.measure_failures.size()},
+                     {"wrong", r.measures_wrong},
+                     {"tolerance", a.settings.measure_tolerance},
+                     {"replay", program + " certify-fp " + word(scene) + " " + word(a.failures + "/" + name) +
+                                    " --tolerance " + tolerance + numbers}});
         }
     }
     write_file_atomically(a.failures + "/index.json",

@@ -442,7 +442,9 @@ void add_query_segment_json(Json& j, const Segment& s, const Q& rho1, const Q& r
     j["segment"] = seg;
 }
 
-std::string dump(const Json& j) { return j.dump(1) + "\n"; }
+// (A string of invalid UTF-8 — a file name or a command as the user gave them — is written with
+// U+FFFD for each bad byte, not refused: the text is the user's, the document ours.)
+std::string dump(const Json& j) { return j.dump(1, ' ', false, Json::error_handler_t::replace) + "\n"; }
 
 std::string document_text(const Model& m, const Json& j) {
     std::string text = dump(j);
