@@ -13,16 +13,11 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <cerrno>
-#include <csignal>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <set>
 #include <sstream>
-#include <sys/wait.h>
-#include <unistd.h>
 
 namespace scalecert::internal {
 
@@ -206,13 +201,6 @@ Json json_of(const JNode& n) {
     return nullptr;
 }
 
-// A word of the shell's, quoted: 'text', each ' inside written '\''.
-std::string shell_quoted(const std::string& text) {
-    std::string q = "'";
-    for (char ch : text) q += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
-    return q + "'";
-}
-
 // The user's own program as a method (audit --command CMD, docs/audits.md): run once per scene as
 // `CMD SCENE.json PAIRS.json CLAIMS.json` in a private temporary folder (guest.hpp), where
 // SCENE.json is the scene exactly, PAIRS.json {"format": "scalecert-pairs-1", "pairs": [[rho1,
@@ -240,8 +228,8 @@ class CommandMethod : public fp::Method {
         std::ofstream(scene) << dump(scene_file_json(s));
         std::ofstream(asked) << dump(Json{{"format", "scalecert-pairs-1"}, {"pairs", std::move(pj)}});
         stop_if_asked();
-        const GuestRun run = run_guest(
-            command + " " + shell_quoted(scene) + " " + shell_quoted(asked) + " " + shell_quoted(out), timeout);
+        const GuestRun run =
+            run_guest(command + " " + shell_word(scene) + " " + shell_word(asked) + " " + shell_word(out), timeout);
         if (run.end == GuestRun::Interrupted) GuestSignals::end_by(run.code, dir);  // the program is stopped
         if (!run.ok()) {
             failed = printable(run.why_failed(timeout));
@@ -265,7 +253,6 @@ class CommandMethod : public fp::Method {
         const std::vector<JNode>& claims = doc.find("claims")->items;
         answers_.resize(pairs.size());
         for (size_t i = 0; i < pairs.size(); ++i) {
-            index_.emplace(pairs[i], i);
             Answer& a = answers_[i];
             if (i >= claims.size()) {
                 a.reason = "no claim for this pair (the file has " + std::to_string(claims.size()) + " claims for " +
@@ -306,8 +293,10 @@ class CommandMethod : public fp::Method {
     std::pair<std::string, std::string> no_answer_at(size_t i) const {
         return {answers_.at(i).reason, answers_.at(i).claim};
     }
-    // (By value, as a library method answers: the first place the pair was asked.)
-    int classify(double r1, double r2) const override { return said_at(index_.at({r1, r2})); }
+    // (The audit asks it by position, said_at: a pair may be asked twice, each time a question.)
+    int classify(double, double) const override {
+        throw std::logic_error("audit: the user's program is asked by position");
+    }
 
   private:
     struct Answer {
@@ -316,7 +305,6 @@ class CommandMethod : public fp::Method {
     };
     std::string command_;
     std::vector<Answer> answers_;
-    std::map<std::pair<double, double>, size_t> index_;
 };
 
 }  // namespace

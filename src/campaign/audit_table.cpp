@@ -77,6 +77,12 @@ std::string audit_csv(const std::vector<AuditRow>& rows, bool timing) {
         if (with_not_run) s += ",not_run";
         s += "\n";
     }
+    // A CSV field in quotes, its quotes doubled (RFC 4180).
+    auto quoted = [](const std::string& t) {
+        std::string q = "\"";
+        for (char ch : t) q += ch == '"' ? std::string("\"\"") : std::string(1, ch);
+        return q + "\"";
+    };
     // The by-distance and on-boundary columns of a row (empty where it has none).
     auto extra = [&](const AuditRow& r) {
         std::string e;
@@ -99,22 +105,13 @@ std::string audit_csv(const std::vector<AuditRow>& rows, bool timing) {
             }
         }
         if (with_answers) e += "," + std::to_string(r.not_answered);
-        if (with_not_run && !r.not_run.empty()) {  // quoted, its quotes doubled (RFC 4180)
-            e += ",\"";
-            for (char ch : r.not_run) e += ch == '"' ? std::string("\"\"") : std::string(1, ch);
-            e += "\"";
-        } else if (with_not_run) {
-            e += ",";
-        }
+        if (with_not_run) e += "," + (r.not_run.empty() ? std::string() : quoted(r.not_run));
         return e;
     };
-    // A text field: as it is, or quoted with its quotes doubled when it holds a comma, a quote or a
-    // line end (RFC 4180): a scene's path or a command may.
-    auto text = [](const std::string& t) {
-        if (t.find_first_of(",\"\r\n") == std::string::npos) return t;
-        std::string q = "\"";
-        for (char ch : t) q += ch == '"' ? std::string("\"\"") : std::string(1, ch);
-        return q + "\"";
+    // A text field as it is, or quoted when it holds a comma, a quote or a line end (a scene's path
+    // or a command may); the not_run reason always quoted.
+    auto text = [&quoted](const std::string& t) {
+        return t.find_first_of(",\"\r\n") == std::string::npos ? t : quoted(t);
     };
     auto num = [](const char* format, auto v) {
         char b[64];

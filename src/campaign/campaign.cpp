@@ -439,16 +439,16 @@ bool shard_well_formed(const CampaignArgs& a, const Shard& s, const std::string&
     try {
         const Json j = Json::parse(shard_text);
         if (!j.is_object() || j.at("shard").get<int>() != s.index) return false;
+        auto two_strings = [](const Json& f) {
+            return f.is_array() && f.size() == 2 && f.at(0).is_string() && f.at(1).is_string();
+        };
         if (j.contains("inputs"))
             for (const Json& f : j.at("inputs"))
-                if (!f.is_array() || f.size() != 2 || !f.at(0).is_string() || !f.at(1).is_string()) return false;
+                if (!two_strings(f)) return false;
         if (a.golden) {
             for (const Json& f : j.at("files"))
-                if (!f.is_array() || f.size() != 2 || !f.at(0).is_string() || !f.at(1).is_string()) return false;
-            if (j.contains("not_written") && (!j["not_written"].is_array() || j["not_written"].size() != 2 ||
-                                              !j["not_written"][0].is_string() || !j["not_written"][1].is_string()))
-                return false;
-            return true;
+                if (!two_strings(f)) return false;
+            return !j.contains("not_written") || two_strings(j["not_written"]);
         }
         for (const Json& r : j.at("rows")) (void)row_of(r);
         return true;
@@ -481,16 +481,7 @@ void write_failures(const CampaignArgs& a, const std::vector<AuditRow>& rows) {
     char tol[32];
     const auto end = std::to_chars(tol, tol + sizeof tol, a.settings.measure_tolerance).ptr;
     const std::string tolerance(tol, end);
-    // A word as the shell reads it: quoted when it holds anything but letters, digits and _./-
-    auto word = [](const std::string& w) {
-        if (!w.empty() && w.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_./-") ==
-                              std::string::npos)
-            return w;
-        std::string q = "'";
-        for (char ch : w) q += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
-        return q + "'";
-    };
-    const std::string program = word(a.program);
+    const std::string program = shell_word(a.program);
     // A double asked, as the claims file holds it: a JSON number, which certify-fp reads back as
     // that double under --numbers double; under float32 or exact its exact value as a string (a
     // JSON number would be read as a float, or as the decimal written).
@@ -550,13 +541,13 @@ void write_failures(const CampaignArgs& a, const std::vector<AuditRow>& rows) {
             const size_t claims_listed = claims.size();
             write_file_atomically(a.failures + "/" + name,
                                   dump(Json{{"format", "scalecert-claims-1"}, {"claims", std::move(claims)}}));
-            index.push_back(Json{
-                {"scene", scene},
-                {"method", r.method},
-                {"claims", a.failures + "/" + name},
-                {"listed", claims_listed},
-                {"wrong", r.wrong() - r.not_answered},
-                {"replay", program + " certify-fp " + word(scene) + " " + word(a.failures + "/" + name) + numbers}});
+            index.push_back(Json{{"scene", scene},
+                                 {"method", r.method},
+                                 {"claims", a.failures + "/" + name},
+                                 {"listed", claims_listed},
+                                 {"wrong", r.wrong() - r.not_answered},
+                                 {"replay", program + " certify-fp " + shell_word(scene) + " " +
+                                                shell_word(a.failures + "/" + name) + numbers}});
         }
         if (!r.measure_failures.empty()) {
             const std::string name = base + ".measures.claims.json";
@@ -578,8 +569,8 @@ void write_failures(const CampaignArgs& a, const std::vector<AuditRow>& rows) {
                      {"listed", r.measure_failures.size()},
                      {"wrong", r.measures_wrong},
                      {"tolerance", a.settings.measure_tolerance},
-                     {"replay", program + " certify-fp " + word(scene) + " " + word(a.failures + "/" + name) +
-                                    " --tolerance " + tolerance + numbers}});
+                     {"replay", program + " certify-fp " + shell_word(scene) + " " +
+                                    shell_word(a.failures + "/" + name) + " --tolerance " + tolerance + numbers}});
         }
     }
     write_file_atomically(a.failures + "/index.json",

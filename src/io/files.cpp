@@ -74,6 +74,15 @@ int open_regular_file(const std::string& path, const std::string& what, bool no_
     return fd;
 }
 
+std::string shell_word(const std::string& text) {
+    if (!text.empty() && text.find_first_not_of("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_./-") ==
+                             std::string::npos)
+        return text;
+    std::string q = "'";
+    for (char ch : text) q += ch == '\'' ? std::string("'\\''") : std::string(1, ch);
+    return q + "'";
+}
+
 std::string read_regular_file(const std::string& path, const std::string& what, size_t max_bytes, bool no_follow) {
     size_t size = 0;
     const int fd = open_regular_file(path, what, no_follow, &size);

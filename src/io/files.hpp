@@ -20,6 +20,9 @@ int open_regular_file(const std::string& path, const std::string& what, bool no_
 // The whole of a regular file (open_regular_file), at most max_bytes, else InputError naming the limit.
 std::string read_regular_file(const std::string& path, const std::string& what, size_t max_bytes,
                               bool no_follow = false);
+// A word as /bin/sh reads it: as it is when it holds only letters, digits and _./-, else in single
+// quotes, each ' inside written '\''.
+std::string shell_word(const std::string& text);
 // read_regular_file, or standard input for "-" (where a command documents it).
 std::string read_input(const std::string& path, const std::string& what, size_t max_bytes);
 
