@@ -1,0 +1,56 @@
+#!/usr/bin/env bash
+# Every command's output on every bundled scene, one file each, in DIR: run it before and after a
+# change that must not alter outputs, then `diff -r BEFORE AFTER`. Usage:
+#   tools/same-outputs.sh BUILD_DIR DIR
+# (certificates/scenes, its compound scenes, tests/data, examples; curve, query with and without
+# --json, partition, classify, certify-fp with and without its certificate, golden, region.)
+set -u
+build=$(cd "$1" && pwd)
+out=$2
+src=$(cd "$(dirname "$0")/.." && pwd)
+mkdir -p "$out"
+out=$(cd "$out" && pwd)
+cd "$src" || exit 2
+sc=$build/scalecert
+# Inputs and golden folders at one path, so that messages naming them are the same in both runs.
+work=${TMPDIR:-/tmp}/scalecert-same-outputs
+rm -rf "$work"
+mkdir -p "$work"
+pairs=$'1 1\n0.5 0.5\n1.5 1.5\n2 2\n0.75 1.25\n3 0.5\n1 3\n'
+run() {  # NAME COMMAND...: stdout, stderr and the exit status in NAME.*
+    local name=$1
+    shift
+    "$@" >"$out/$name.out" 2>"$out/$name.err" </dev/null
+    echo $? >"$out/$name.rc"
+}
+for f in certificates/scenes/*.json certificates/scenes/compound/*.json tests/data/*.json; do
+    case $f in *_claims.json) continue ;; esac
+    n=$(echo "$f" | tr '/' '_')
+    run "$n.curve" "$sc" curve "$f"
+    run "$n.partition" "$sc" partition "$f"
+    run "$n.region" "$sc" region "$f"
+    for p in "1 1" "3/2 3/2" "1 19/10" "1/2 2"; do
+        set -- $p
+        run "$n.query.$1_$2" "$sc" query "$f" "$1" "$2"
+        run "$n.query.$1_$2.json" "$sc" query "$f" "$1" "$2" --json
+    done
+    printf '%s' "$pairs" >"$work/pairs.txt"
+    run "$n.classify" "$sc" classify "$f" "$work/pairs.txt"
+    printf '1 1 separated\n3/2 3/2 touching\n2 2 overlapping\n1 1 intersecting\ncurve 1 1\ngrowth 3/2\n' >"$work/claims.txt"
+    run "$n.certify-lines" "$sc" certify-fp "$f" "$work/claims.txt"
+    run "$n.certify-json" "$sc" certify-fp "$f" examples/claims.json --json --certificate "$work/j.json"
+    [ -e "$work/j.json" ] && mv "$work/j.json" "$out/$n.judgements.json"
+    run "$n.certify-posed" "$sc" certify-fp "$f" examples/posed_claim.json --json
+    run "$n.certify-band" "$sc" certify-fp "$f" tests/data/compound_band_claims.json --json
+    rm -rf "$work/g"
+    run "$n.golden" "$sc" golden "$f" --dir "$work/g"
+    for g in "$work"/g/*; do [ -e "$g" ] && mv "$g" "$out/$n.golden.$(basename "$g")"; done
+done
+rm -rf "$work/g"
+run mesh.curve "$sc" curve --p1 examples/tetra.obj --p2 examples/box.stl --i1 1/2,2 --i2 1,4
+run mesh.partition "$sc" partition --p1 examples/tetra.obj --p2 examples/box.stl --i1 1/2,2 --i2 1,4
+run mesh.certify "$sc" certify-fp --p1 examples/tetra.obj --p2 examples/box.stl --i1 1/2,2 --i2 1,4 examples/claims.json --json
+run mesh.region "$sc" region tests/data/compound_band.json --at 7/6,2
+run family.golden "$sc" golden --family nearly-equal-slopes --count 3 --eps 1/1024 --dir "$work/family"
+for g in "$work"/family/*; do mv "$g" "$out/family.$(basename "$g")"; done
+rm -rf "$work"
