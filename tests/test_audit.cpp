@@ -95,7 +95,7 @@ BOOST_AUTO_TEST_CASE(golden_data_is_deterministic_and_exact) {
 BOOST_AUTO_TEST_CASE(atlas_families_are_what_they_claim) {
     auto at_one = [](const ExactScene& sc) {
         Session session(sc, "atlas");
-        const ClaimModels models = session.claim_models();  // the rules keep a reference to it
+        const ClaimModels& models = session.claim_models();  // the rules keep a reference to it
         ConvexRules rules(models, Tolerance{});
         TypedClaim c;
         c.type = ClaimType::Distance;

@@ -384,7 +384,7 @@ BOOST_AUTO_TEST_CASE(outputs_that_are_no_answer) {
     }
     // The line format: printf's nan and inf where the program answers; a non-number scaling is
     // bad input, as is a non-number in a curve claim.
-    const std::string lines = certify_fp(ClaimModels::of(k.m, k.c), "growth nan\ncurve 1 -INF\ngrowth 3/2\n", "c.txt",
+    const std::string lines = certify_fp(HullClaimModels(k.m, k.c), "growth nan\ncurve 1 -INF\ngrowth 3/2\n", "c.txt",
                                          ClaimOptions{Numbers::Double, Q(0), false}, &wrong, &count);
     BOOST_TEST(wrong == 2);
     BOOST_TEST(count == 3);
@@ -396,7 +396,7 @@ BOOST_AUTO_TEST_CASE(outputs_that_are_no_answer) {
     for (const std::string& empty :
          {std::string(R"({"format": "scalecert-claims-1", "claims": []})"), std::string("# nothing\n\n")}) {
         wrong = count = -1;
-        certify_fp(ClaimModels::of(k.m, k.c), empty, "c", ClaimOptions{}, &wrong, &count);
+        certify_fp(HullClaimModels(k.m, k.c), empty, "c", ClaimOptions{}, &wrong, &count);
         BOOST_TEST(wrong == 0);
         BOOST_TEST(count == 0);
     }
@@ -468,7 +468,7 @@ BOOST_AUTO_TEST_CASE(absolute_tolerance_on_points_values_and_planes) {
     BOOST_CHECK_THROW(certify_fp(k.m, k.c, batch, "c.json", tol, &wrong), InputError);
     ClaimOptions lines{Numbers::Double, Q(0), false};
     lines.abs_tolerance = 1;
-    BOOST_CHECK_THROW(certify_fp(ClaimModels::of(k.m, k.c), "1 1 separated\n", "c.txt", lines, &wrong), InputError);
+    BOOST_CHECK_THROW(certify_fp(HullClaimModels(k.m, k.c), "1 1 separated\n", "c.txt", lines, &wrong), InputError);
 }
 
 // A claim that needs the hull model is refused past the edge-pair limit wherever the hull model
@@ -497,7 +497,7 @@ BOOST_AUTO_TEST_CASE(a_claim_past_the_edge_pair_limit_is_refused_whatever_holds_
                 asked = true;
                 throw std::logic_error("the hull source was asked");
             });
-        const ClaimModels models = session.claim_models();
+        const ClaimModels& models = session.claim_models();
         BOOST_CHECK_EXCEPTION(models.curve_value(Q(1)), InputError, [](const InputError& e) {
             return std::string(e.what()).find("needs the hull model (every contact line)") != std::string::npos;
         });

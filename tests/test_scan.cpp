@@ -144,7 +144,7 @@ BOOST_AUTO_TEST_CASE(golden_answers_on_the_walk_equal_the_hull_paths) {
     sc.P[1].points = sphere(g, 1200, 70, 1, {Q(150), Q(10), Q(-5)});
     sc = with_means(sc, qc(1, 2), Q(2));
     Session walk(sc, "test"), hull(sc, "test", Engine::Hull);
-    const ClaimModels wm = walk.claim_models(), hm = hull.claim_models();
+    const ClaimModels &wm = walk.claim_models(), &hm = hull.claim_models();
     GoldenAnswers a = golden_answers(sc, walk.curve_model(), walk.curve(), wm, {});
     GoldenAnswers b = golden_answers(sc, hull.curve_model(), hull.curve(), hm, {});
     BOOST_TEST(walk.walked());

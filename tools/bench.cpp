@@ -560,7 +560,7 @@ void claim_costs(const ExactScene& h1000, bool quick) {
     std::string cert;
     const double t_cert = per_call(
         [&](long) {
-            certify_fp(ClaimModels::of(m, c), claims, "bench", ClaimOptions{Numbers::Double, Q(0), true}, &wrong,
+            certify_fp(HullClaimModels(m, c), claims, "bench", ClaimOptions{Numbers::Double, Q(0), true}, &wrong,
                        nullptr, &cert);
         },
         1, 1);
@@ -724,7 +724,7 @@ void large_claim_costs() {
         R"("value": 1}]})";
     long wrong = 0;
     std::string cert;
-    const ClaimModels cm = s.claim_models();
+    const ClaimModels& cm = s.claim_models();
     const double t_dist = per_call(
         [&](long) {
             certify_fp(cm, dist, "bench", ClaimOptions{Numbers::Double, Q(0), true}, &wrong);

@@ -280,7 +280,6 @@ class Analysis {
   private:
     struct Impl;
     std::shared_ptr<const Impl> impl_;
-    Curve curve_;
 };
 
 // Golden data of a family of scenes, as scalecert golden --family writes it: `count` scenes of

@@ -4,8 +4,7 @@
 
 #include "certify/golden.hpp"
 #include "certify/region_certificate.hpp"
-#include "session/compound_session.hpp"
-#include "session/session.hpp"
+#include "session/engine.hpp"
 #include "io/files.hpp"
 
 #include <algorithm>
@@ -312,17 +311,7 @@ std::string golden_stem(const std::string& path) {
 std::vector<std::pair<std::string, std::string>> golden_files(const std::string& stem, const ExactScene& s,
                                                               const GoldenPoints& points,
                                                               const std::function<void(Json&)>& fields) {
-    const bool parts = s.made_of_parts();
-    GoldenAnswers a;
-    if (parts) {  // objects made of parts: the region document and queries at its vertical ends
-        CompoundSession session(s, stem);
-        Json doc = session.region_json();
-        a = golden_answers_parts(session.region(true), session.judge(), std::move(doc), points);
-    } else {
-        Session session(s, stem);
-        const ClaimModels models = session.claim_models();
-        a = golden_answers(s, session.curve_model(), session.curve(), models, points);
-    }
+    GoldenAnswers a = open_engine({std::make_shared<const ExactScene>(s), nullptr, stem})->golden(points);
     Json j = std::move(a.curve);
     fields(j);
     j["queries"] = std::move(a.queries);

@@ -19,8 +19,8 @@ namespace scalecert::internal {
 enum class ClaimType { Verdict, Curve, CurvePoint, SwitchPoint, Growth, Plane, Witness, Distance, Depth };
 const char* type_name(ClaimType t);  // the JSON kind: "verdict", "curve", ..., "penetration_depth"
 
-// A claimed verdict: the three exact ones, or intersecting (= not separated).
-enum class Claimed { Separated, Touching, Overlapping, Intersecting };
+// A claimed verdict: the three exact ones, or intersecting (= not separated): the public type.
+using Claimed = scalecert::ClaimedVerdict;
 const char* claimed_name(Claimed v);
 std::optional<Claimed> claimed_of(const std::string& name);
 bool verdict_matches(Claimed claimed, Verdict exact);
@@ -142,16 +142,46 @@ struct Tolerance {
 // The sign of a − k·√E (E ≥ 0), exactly.
 int sign_minus_sqrt(const Q& a, const Q& k, const Q& E);
 
+// The rules of one kind of object, as every front end asks them (claims.cpp's formats, the C++
+// API): a judgement with its proof, the part pair a claim names, the certificate of the proofs.
+class ClaimRules {
+  public:
+    explicit ClaimRules(const Tolerance& tolerance) : tol_(tolerance) {}
+    virtual ~ClaimRules() = default;
+    virtual Judged judge(const TypedClaim& c, Proof* proof = nullptr) = 0;
+    // The scene of objects made of parts whose part pairs and names the claims and reports use;
+    // null on two convex objects.
+    virtual const ExactScene* parts() const = 0;
+    // The part pair a penetration depth names ({part of P1, part of P2}), as the typed claim holds
+    // it: InputError after `where` when it names a part the objects lack, or when the objects'
+    // depth is not defined without one.
+    virtual std::optional<std::array<int, 2>> part_pair(const std::optional<std::array<int, 2>>& given,
+                                                        const std::string& where) const = 0;
+    // The judgements certificate of these entries (FORMAT.md: kind judgements or compound_judgements).
+    virtual std::string certificate(Json entries) const = 0;
+    // How often the exact fallbacks ran {distances, depths}, for JSON reports; none where they do
+    // not apply.
+    virtual std::optional<std::array<long, 2>> fallbacks() const { return std::nullopt; }
+    const Tolerance& tolerance() const { return tol_; }
+
+  protected:
+    Tolerance tol_;
+};
+
 // The rules on two convex objects: every type.
-class ConvexRules {
+class ConvexRules final : public ClaimRules {
   public:
     ConvexRules(const ClaimModels& models, const Tolerance& tolerance);
-    ~ConvexRules();
-    Judged judge(const TypedClaim& c, Proof* proof = nullptr);
+    ~ConvexRules() override;
+    Judged judge(const TypedClaim& c, Proof* proof = nullptr) override;
+    const ExactScene* parts() const override { return nullptr; }
+    // Only the pair (0, 0), which says nothing on two convex objects: none.
+    std::optional<std::array<int, 2>> part_pair(const std::optional<std::array<int, 2>>& given,
+                                                const std::string& where) const override;
+    std::string certificate(Json entries) const override;
     // How often the exact fallback ran: the distance by CGAL's QP over all vertices, when the
     // proof from the floating-point guess did not close (proved_distance); the same for depths.
-    long distance_fallbacks() const;
-    long depth_fallbacks() const;
+    std::optional<std::array<long, 2>> fallbacks() const override;
 
   private:
     struct Impl;
@@ -162,13 +192,17 @@ class ConvexRules {
 // Witness and Distance (the least over the part pairs), and Depth of one part pair (a contact),
 // at any (ρ1, ρ2) > 0.
 class CompoundJudge;
-class PartsRules {
+class PartsRules final : public ClaimRules {
   public:
     PartsRules(CompoundJudge& judge, const Tolerance& tolerance);
-    ~PartsRules();
+    ~PartsRules() override;
     // Whether the type is judged on parts.
     static bool takes(ClaimType t);
-    Judged judge(const TypedClaim& c, Proof* proof = nullptr);
+    Judged judge(const TypedClaim& c, Proof* proof = nullptr) override;
+    const ExactScene* parts() const override;
+    std::optional<std::array<int, 2>> part_pair(const std::optional<std::array<int, 2>>& given,
+                                                const std::string& where) const override;
+    std::string certificate(Json entries) const override;
 
   private:
     // A claim at poses is judged on the scene moved by them: its own judge (every part's hull
@@ -178,8 +212,13 @@ class PartsRules {
     // The part of object i holding x scaled by ρ, or within the absolute tolerance of it (−1: none).
     int place(int i, const Q& rho, const Vec3q& x, Json* proof, bool* near) const;
     CompoundJudge& judge_;
-    Tolerance tol_;
 };
+
+// Every claim of a file (the JSON or the line format, claims.hpp) read into types and judged by
+// `rules`: the report; the number of wrong claims in *wrong (and of claims in *count); with
+// `certificate`, the rules' certificate of every judgement.
+std::string certify_fp(ClaimRules& rules, const std::string& claims, const std::string& name, const ClaimOptions& opt,
+                       long* wrong, long* count = nullptr, std::string* certificate = nullptr);
 
 // The claim as the certificates state it (FORMAT.md): every number an exact string.
 Json exact_claim_json(const TypedClaim& c);

@@ -832,16 +832,15 @@ bool is_json(const std::string& claims, const ClaimOptions& opt, const std::stri
     return false;
 }
 
-// Every claim of a file, read into types and judged by `judge` (ConvexRules or PartsRules): the
+// Every claim of a file, read into types and judged by `rules`: the
 // report, the certificate's entries (when proving), the counts.
 struct Run {
     Json arr = Json::array(), entries = Json::array();
     std::string text;
     long n = 0, bad = 0;
 };
-template <class Rules>
-Run run_claims(Rules& rules, const std::string& claims, const std::string& name, const ClaimOptions& opt, bool json,
-               const ExactScene* parts, bool prove) {
+Run run_claims(ClaimRules& rules, const std::string& claims, const std::string& name, const ClaimOptions& opt,
+               bool json, const ExactScene* parts, bool prove) {
     Run r;
     auto one = [&](const TypedClaim& c, size_t index, Json& o, auto&& describe_it) {
         Proof p;
@@ -900,47 +899,38 @@ TypedClaim read_claim(const JNode& claim, size_t index, const std::string& name,
     return ClaimReader(name, numbers, nullptr).read(claim, index);
 }
 
+std::string certify_fp(ClaimRules& rules, const std::string& claims, const std::string& name, const ClaimOptions& opt,
+                       long* wrong, long* count, std::string* certificate) {
+    const bool json = is_json(claims, opt, name);
+    const Run r = run_claims(rules, claims, name, opt, json, rules.parts(), certificate != nullptr);
+    if (certificate) *certificate = rules.certificate(std::move(r.entries));
+    const std::optional<std::array<long, 2>> fb = json ? rules.fallbacks() : std::nullopt;
+    return report(std::move(r.arr), r.text, r.n, r.bad, opt.json, json ? &opt : nullptr, wrong, count,
+                  fb ? (*fb)[0] : -1, fb ? (*fb)[1] : 0);
+}
+
 std::string certify_fp(const ClaimModels& models, const std::string& claims, const std::string& name,
                        const ClaimOptions& opt, long* wrong, long* count, std::string* certificate) {
-    const bool json = is_json(claims, opt, name);
     ConvexRules rules(models, {opt.tolerance, opt.abs_tolerance});
-    const Run r = run_claims(rules, claims, name, opt, json, nullptr, certificate != nullptr);
-    if (certificate)
-        *certificate = judgements_text(models.document(), opt.tolerance, opt.abs_tolerance, std::move(r.entries));
-    if (!json) return report(std::move(r.arr), r.text, r.n, r.bad, opt.json, nullptr, wrong, count);
-    return report(std::move(r.arr), r.text, r.n, r.bad, opt.json, &opt, wrong, count, rules.distance_fallbacks(),
-                  rules.depth_fallbacks());
+    return certify_fp(rules, claims, name, opt, wrong, count, certificate);
 }
 
 std::string certify_fp(CompoundJudge& judge, const std::string& claims, const std::string& name,
                        const ClaimOptions& opt, long* wrong, long* count, std::string* certificate) {
-    const bool json = is_json(claims, opt, name);
     PartsRules rules(judge, {opt.tolerance, opt.abs_tolerance});
-    const Run r = run_claims(rules, claims, name, opt, json, &judge.scene(), certificate != nullptr);
-    if (certificate)
-        *certificate = compound_judgements_text(judge.scene(), json ? opt.tolerance : Q(0),
-                                                json ? opt.abs_tolerance : Q(0), std::move(r.entries));
-    return report(std::move(r.arr), r.text, r.n, r.bad, opt.json, json ? &opt : nullptr, wrong, count);
+    return certify_fp(rules, claims, name, opt, wrong, count, certificate);
 }
 
-ClaimModels ClaimModels::of(const HullModel& m, const TouchingCurve& c) {
-    auto points = std::make_shared<HullPoints>(m);
-    return {[&m]() -> const HullModel& { return m; },
-            [&c]() -> const TouchingCurve& { return c; },
-            [&m, &c](const Q& r1, const Q& r2) { return query(m, c, r1, r2, false).verdict; },
-            [&m, &c](const Q& r1) { return c.env.value(m.lines, r1); },
-            [&c] { return c.growth.value; },
-            [points]() -> const PointSets& { return *points; },
-            [&m]() -> const Model& { return m; },
-            [&m, &c](const Q& r1, const Q& r2) {
-                return std::pair<const Model*, QueryAnswer>{&m, query(m, c, r1, r2, true)};
-            },
-            [&m, &c] { return scalecert::internal::growth_proof(m, c); },
-            [&m]() -> const Model& { return m; },
-            [&m, &c](const Q&, const Q&) {
-                return ClaimModels::Curve{&m, &c, Q(0), std::nullopt};
-            },
-            [&m](int i, const Q& rho, const Vec3q& x, Json* proof) { return hull_member(m, i, rho, x, proof); }};
+HullClaimModels::HullClaimModels(const HullModel& m, const TouchingCurve& c)
+    : m_(m), c_(c), points_(std::make_shared<HullPoints>(m)) {}
+Verdict HullClaimModels::verdict(const Q& r1, const Q& r2) const { return query(m_, c_, r1, r2, false).verdict; }
+Q HullClaimModels::curve_value(const Q& r1) const { return c_.env.value(m_.lines, r1); }
+std::pair<const Model*, QueryAnswer> HullClaimModels::certified_query(const Q& r1, const Q& r2) const {
+    return {&m_, query(m_, c_, r1, r2, true)};
+}
+Json HullClaimModels::growth_proof() const { return scalecert::internal::growth_proof(m_, c_); }
+bool HullClaimModels::member(int i, const Q& rho, const Vec3q& x, Json* proof) const {
+    return hull_member(m_, i, rho, x, proof);
 }
 
 }  // namespace scalecert::internal

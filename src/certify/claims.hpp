@@ -5,7 +5,7 @@
 #include "certify/query.hpp"
 #include "geometry/point_sets.hpp"
 
-#include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -24,28 +24,33 @@ namespace scalecert::internal {
 // labels, planes and witness points must be exactly right.
 // Options: the public ClaimOptions (numbers, tolerance >= 0, json).
 using scalecert::ClaimOptions;
-// What claims are checked against: the hull model and its curve over all ρ1 > 0 (built on first
-// use), and the exact verdict and curve value at a pair (Session::claim_models takes them from the
-// walk where it proved the curve: no hull for verdicts on a large scene).
-struct ClaimModels {
-    std::function<const HullModel&()> model;
-    std::function<const TouchingCurve&()> curve;
-    std::function<Verdict(const Q&, const Q&)> verdict;
-    std::function<Q(const Q&)> curve_value;
-    std::function<Q()> growth;  // ρ*
+// What the claim rules ask of a convex scene, one question a method: the exact verdict and curve
+// value at a pair, the models that prove them, the points for the measures. Session answers each
+// from the least model it needs (the walk where it proved the curve: no hull for verdicts on a
+// large scene); HullClaimModels from a hull model and its curve over all ρ1 > 0.
+class ClaimModels {
+  public:
+    virtual ~ClaimModels() = default;
+    // The hull model and its curve over all ρ1 > 0 (built on first use).
+    virtual const HullModel& hull_model() const = 0;
+    virtual const TouchingCurve& hull_curve() const = 0;
+    // The exact verdict at (ρ1, ρ2), and the curve's ρ2 at ρ1.
+    virtual Verdict verdict(const Q& rho1, const Q& rho2) const = 0;
+    virtual Q curve_value(const Q& rho1) const = 0;
+    virtual Q growth() const = 0;  // ρ*
     // Support queries for planes, distances and depths (measures.hpp): the hull model's vertices,
     // or on a walked scene the points' trees, with no hull.
-    std::function<const PointSets&()> points;
+    virtual const PointSets& points() const = 0;
     // The model whose scene and seed weights a judgements certificate states (the walk's on a
     // walked scene: the same points in the same order as the hull model's).
-    std::function<const Model&()> document;
+    virtual const Model& document() const = 0;
     // A verdict's query certificate, on the model that proves it.
-    std::function<std::pair<const Model*, QueryAnswer>(const Q&, const Q&)> certified_query;
+    virtual std::pair<const Model*, QueryAnswer> certified_query(const Q& rho1, const Q& rho2) const = 0;
     // The growth distance's proof (judgements.hpp, growth_proof), on the model that proves it.
-    std::function<Json()> growth_proof;
+    virtual Json growth_proof() const = 0;
     // The two exact polyhedra with no contact line (build_hulls, or the hull model's): membership
     // of witness and closest points, and the exact distance's fallback.
-    std::function<const Model&()> hulls;
+    virtual const Model& hulls() const = 0;
     // The curve proved over curve_proof's window around [lo, hi] (Session::curve_around): the
     // model, the curve, and the ρ1 range where that curve is the exact one (lo_proved = 0 and no
     // hi_proved on the hull model).
@@ -57,11 +62,31 @@ struct ClaimModels {
         bool whole() const { return sgn(lo_proved) == 0 && !hi_proved; }
         bool proves(const Q& x) const { return x >= lo_proved && (!hi_proved || x <= *hi_proved); }
     };
-    std::function<Curve(const Q&, const Q&)> curve_around;
-    // Is x in P_i(ρ)? With its proof (judgements.hpp, membership_proof) in *proof when given:
-    // from the walk's point trees on a walked scene whose hulls are not built, else the hulls.
-    std::function<bool(int, const Q&, const Vec3q&, Json*)> member;
-    static ClaimModels of(const HullModel& m, const TouchingCurve& c);
+    virtual Curve curve_around(const Q& lo, const Q& hi) const = 0;
+    // Is x in P_i(ρ)? With its proof (judgements.hpp, membership_proof) in *proof when given.
+    virtual bool member(int i, const Q& rho, const Vec3q& x, Json* proof) const = 0;
+};
+// Every answer from one hull model and its curve (both must outlive it).
+class HullClaimModels final : public ClaimModels {
+  public:
+    HullClaimModels(const HullModel& m, const TouchingCurve& c);
+    const HullModel& hull_model() const override { return m_; }
+    const TouchingCurve& hull_curve() const override { return c_; }
+    Verdict verdict(const Q& rho1, const Q& rho2) const override;
+    Q curve_value(const Q& rho1) const override;
+    Q growth() const override { return c_.growth.value; }
+    const PointSets& points() const override { return *points_; }
+    const Model& document() const override { return m_; }
+    std::pair<const Model*, QueryAnswer> certified_query(const Q& rho1, const Q& rho2) const override;
+    Json growth_proof() const override;
+    const Model& hulls() const override { return m_; }
+    Curve curve_around(const Q&, const Q&) const override { return {&m_, &c_, Q(0), std::nullopt}; }
+    bool member(int i, const Q& rho, const Vec3q& x, Json* proof) const override;
+
+  private:
+    const HullModel& m_;
+    const TouchingCurve& c_;
+    std::shared_ptr<const PointSets> points_;
 };
 // Is x in P_i(ρ) on the exact polyhedra of m (a hull model, or build_hulls's), with its proof.
 bool hull_member(const Model& m, int i, const Q& rho, const Vec3q& x, Json* proof);
@@ -71,7 +96,7 @@ std::string certify_fp(const ClaimModels& models, const std::string& claims, con
                        const ClaimOptions& opt, long* wrong, long* count = nullptr, std::string* certificate = nullptr);
 inline std::string certify_fp(const HullModel& m, const TouchingCurve& c, const std::string& claims,
                               const std::string& name, const ClaimOptions& opt, long* wrong) {
-    return certify_fp(ClaimModels::of(m, c), claims, name, opt, wrong);
+    return certify_fp(HullClaimModels(m, c), claims, name, opt, wrong);
 }
 inline std::string certify_fp(const HullModel& m, const TouchingCurve& c, const std::string& claims,
                               const std::string& name, Numbers numbers, bool json, long* wrong) {

@@ -297,31 +297,33 @@ GoldenAnswers golden_answers(const ExactScene& s, const Model& m, const Touching
         samples.push_back({x, {y, near}});
     }
     Rows rows;
-    emit(rows, r, samples, !xa, points, models.verdict, [&](const Q& a, const Q& b) {
-        Measure ms;
-        ms.verdict = models.verdict(a, b);
-        if (ms.verdict == Verdict::Overlapping) {
-            const Judged g = judged(ClaimType::Depth, a, b);
-            ms.kind = "depth";
-            ms.squared = *g.exact_squared;
-            ms.normal = primitive(g.exact_direction);
-        } else {
-            const Judged g = judged(ClaimType::Distance, a, b);
-            ms.squared = *g.exact_squared;
-            ms.p1 = g.exact_p1;
-            ms.p2 = g.exact_p2;
-            if (ms.verdict == Verdict::Separated) {
-                // The plane through the closest points' midpoint, normal to their difference,
-                // separates the two convex bodies (each lies on its side of its supporting plane).
-                ms.kind = "distance";
-                const Vec3q d = sub(g.exact_p2, g.exact_p1);
-                ms.normal = primitive(d);
-                const Vec3q n = to_q(*ms.normal);
-                ms.offset = (dot(n, g.exact_p1) + dot(n, g.exact_p2)) / 2;
+    emit(
+        rows, r, samples, !xa, points, [&models](const Q& a, const Q& b) { return models.verdict(a, b); },
+        [&](const Q& a, const Q& b) {
+            Measure ms;
+            ms.verdict = models.verdict(a, b);
+            if (ms.verdict == Verdict::Overlapping) {
+                const Judged g = judged(ClaimType::Depth, a, b);
+                ms.kind = "depth";
+                ms.squared = *g.exact_squared;
+                ms.normal = primitive(g.exact_direction);
+            } else {
+                const Judged g = judged(ClaimType::Distance, a, b);
+                ms.squared = *g.exact_squared;
+                ms.p1 = g.exact_p1;
+                ms.p2 = g.exact_p2;
+                if (ms.verdict == Verdict::Separated) {
+                    // The plane through the closest points' midpoint, normal to their difference,
+                    // separates the two convex bodies (each lies on its side of its supporting plane).
+                    ms.kind = "distance";
+                    const Vec3q d = sub(g.exact_p2, g.exact_p1);
+                    ms.normal = primitive(d);
+                    const Vec3q n = to_q(*ms.normal);
+                    ms.offset = (dot(n, g.exact_p1) + dot(n, g.exact_p2)) / 2;
+                }
             }
-        }
-        return ms;
-    });
+            return ms;
+        });
     Json doc = curve_json(m, c);
     doc["query_points"] = points_json(points);
     return {std::move(doc), rows.queries(), rows.csv(), rows.rational_csv()};

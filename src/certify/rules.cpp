@@ -3,6 +3,7 @@
 #include "certify/claim.hpp"
 #include "certify/compound_judge.hpp"
 #include "certify/judgements.hpp"
+#include "certify/region_certificate.hpp"
 #include "geometry/measures.hpp"
 
 #include <functional>
@@ -216,7 +217,7 @@ struct ConvexRules::Impl {
     // The two exact polyhedra, with no contact line: the measures' fallbacks.
     const Model& hulls() const { return models.hulls(); }
     // The whole curve on the hull model (within the limits: Session::claim_hull).
-    Curve whole() const { return {&models.model(), &models.curve(), Q(0), std::nullopt}; }
+    Curve whole() const { return {&models.hull_model(), &models.hull_curve(), Q(0), std::nullopt}; }
     // The point set for the measures: the cloud's trees on a walked scene (exact for every
     // normal), else the exact polyhedra's vertices.
     const PointSets& points() const { return posed ? *posed : models.points(); }
@@ -580,10 +581,32 @@ struct ConvexRules::Impl {
     }
 };
 
-ConvexRules::ConvexRules(const ClaimModels& models, const Tolerance& tolerance) : impl_(new Impl(models, tolerance)) {}
+ConvexRules::ConvexRules(const ClaimModels& models, const Tolerance& tolerance)
+    : ClaimRules(tolerance), impl_(new Impl(models, tolerance)) {}
 ConvexRules::~ConvexRules() = default;
-long ConvexRules::distance_fallbacks() const { return impl_->distance_fallbacks; }
-long ConvexRules::depth_fallbacks() const { return impl_->depth_fallbacks; }
+std::optional<std::array<long, 2>> ConvexRules::fallbacks() const {
+    return std::array<long, 2>{impl_->distance_fallbacks, impl_->depth_fallbacks};
+}
+std::string ConvexRules::certificate(Json entries) const {
+    return judgements_text(impl_->models.document(), tol_.rel, tol_.abs, std::move(entries));
+}
+
+namespace {
+// A part pair {part of P1, part of P2} checked against the objects' part counts.
+void check_part_pair(const std::array<int, 2>& pair, const size_t counts[2], const std::string& where) {
+    for (size_t k = 0; k < 2; ++k)
+        if (pair[k] < 0 || static_cast<size_t>(pair[k]) >= counts[k])
+            throw InputError(where + ".parts[" + std::to_string(k) + "]: P" + std::to_string(k + 1) + " has " +
+                             std::to_string(counts[k]) + (counts[k] == 1 ? " part" : " parts") + " (numbered from 0)");
+}
+}  // namespace
+
+std::optional<std::array<int, 2>> ConvexRules::part_pair(const std::optional<std::array<int, 2>>& given,
+                                                         const std::string& where) const {
+    const size_t one[2] = {1, 1};
+    if (given) check_part_pair(*given, one, where);
+    return std::nullopt;
+}
 
 namespace {
 // A claim with no answer in it is wrong; its proof names the field (FORMAT.md).
@@ -626,8 +649,24 @@ Judged ConvexRules::judge(const TypedClaim& c, Proof* proof) {
 
 // ---- two objects made of parts ---------------------------------------------------------------
 
-PartsRules::PartsRules(CompoundJudge& judge, const Tolerance& tolerance) : judge_(judge), tol_(tolerance) {}
+PartsRules::PartsRules(CompoundJudge& judge, const Tolerance& tolerance) : ClaimRules(tolerance), judge_(judge) {}
 PartsRules::~PartsRules() = default;
+const ExactScene* PartsRules::parts() const { return &judge_.scene(); }
+std::optional<std::array<int, 2>> PartsRules::part_pair(const std::optional<std::array<int, 2>>& given,
+                                                        const std::string& where) const {
+    // A contact of one part pair: the objects' depth is not defined.
+    if (!given)
+        throw InputError(where +
+                         ".parts: missing: a penetration depth on objects made of parts is a contact of "
+                         "one part pair (parts = {part of P1, part of P2})");
+    const ExactScene& sc = judge_.scene();
+    const size_t counts[2] = {std::max<size_t>(1, sc.P[0].parts.size()), std::max<size_t>(1, sc.P[1].parts.size())};
+    check_part_pair(*given, counts, where);
+    return given;
+}
+std::string PartsRules::certificate(Json entries) const {
+    return compound_judgements_text(judge_.scene(), tol_.rel, tol_.abs, std::move(entries));
+}
 
 CompoundJudge& PartsRules::posed(const std::array<std::optional<Pose>, 2>& pose) {
     std::string key;

@@ -81,14 +81,14 @@ Command add_certify_fp(CLI::App& app) {
             }
             StageClock clock;
             // A scene of parts goes to the compound judge; a plain one to the session.
-            OpenScene o = open_any(a->scene, Engine::Auto, clock);
+            a->scene.opt.allow_parts = true;
+            std::unique_ptr<SceneEngine> engine = open_engine(a->scene, Engine::Auto, clock);
             const std::string claims = read_input(a->claims, "claims file", kMaxSceneBytes);
             long wrong = 0;
             std::string certificate;
             std::string* cert = a->certificate.empty() ? nullptr : &certificate;
-            const std::string report =
-                o.compound ? certify_fp(o.compound->judge(), claims, a->claims, opt, &wrong, nullptr, cert)
-                           : certify_fp(o.convex->claim_models(), claims, a->claims, opt, &wrong, nullptr, cert);
+            const std::unique_ptr<ClaimRules> rules = engine->rules({opt.tolerance, opt.abs_tolerance});
+            const std::string report = certify_fp(*rules, claims, a->claims, opt, &wrong, nullptr, cert);
             if (a->certificate.empty())
                 emit(report, a->out);
             else if (a->out.empty()) {

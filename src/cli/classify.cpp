@@ -35,7 +35,8 @@ Command add_classify(CLI::App& app) {
                         "--numbers exact: classify judges the doubles (or, with --numbers float32, the floats) a "
                         "program holds; `scalecert query` takes one pair as written");
                 StageClock clock;
-                OpenScene o = open_any(a->scene, Engine::Auto, clock);
+                a->scene.opt.allow_parts = true;
+                std::unique_ptr<SceneEngine> engine = open_engine(a->scene, Engine::Auto, clock);
                 std::vector<double> r1, r2;
                 const std::string pairs = read_input(a->pairs, "pairs file", kMaxPairsBytes);
                 internal::note_inputs({a->pairs});  // --out PAIRS would replace it
@@ -46,21 +47,14 @@ Command add_classify(CLI::App& app) {
                     throw InputError(a->pairs + ": " + e.what());
                 }
                 clock.lap("parse pairs");
-                std::vector<Verdict> out;
-                if (o.compound) {  // objects made of parts: located on the region's grid (pairs in I1 x I2)
-                    emit(verdict_lines(o.compound->classify(r1, r2, a->threads, a->pairs)), a->out);
-                    return 0;
-                }
-                internal::Session& session = *o.convex;
-                const internal::Session::Decider d = session.decider_for(r1);
-                FastCurve fc(d.model, d.curve);
-                const StageCounts sc = classify_batch(fc, r1, r2, out, a->threads);
+                std::optional<StageCounts> sc;
+                const std::vector<Verdict> out = engine->classify(r1, r2, a->threads, a->pairs, &sc);
                 clock.lap("classify");
                 emit(verdict_lines(out), a->out);
                 clock.lap("output");
-                if (clock.on)
-                    std::fprintf(stderr, "scalecert: stages: %lu filtered, %lu exact\n", (unsigned long)sc.filtered,
-                                 (unsigned long)sc.exact);
+                if (clock.on && sc)
+                    std::fprintf(stderr, "scalecert: stages: %lu filtered, %lu exact\n", (unsigned long)sc->filtered,
+                                 (unsigned long)sc->exact);
                 return 0;
             }};
 }

@@ -101,7 +101,7 @@ internal::ExactScene SceneArgs::load() const {
 
 std::shared_ptr<const internal::CompactScene> SceneArgs::load_compact() const {
     internal::ExactScene full;
-    return load_compact(&full);  // (the caller reads it again when null: open_session)
+    return load_compact(&full);  // (the caller reads it again when null: open_engine)
 }
 
 std::shared_ptr<const internal::CompactScene> SceneArgs::load_compact(internal::ExactScene* full) const {
@@ -232,59 +232,30 @@ Engine engine_named(const std::string& engine) {
     return engine == "hull" ? Engine::Hull : engine == "scan" ? Engine::Scan : Engine::Auto;
 }
 
-internal::Session open_session(const SceneArgs& args, Engine engine, StageClock& clock) {
-    if (engine != Engine::Hull) {
-        internal::ExactScene full;
-        if (std::shared_ptr<const internal::CompactScene> cs = args.load_compact(&full)) {
-            clock.lap("read scene (compact)");
-            internal::Session s(std::move(cs), args.name(), engine);
-            s.set_clock(&clock);
-            return s;
-        }
-        if (!full.P[0].points.empty()) {  // read already
-            say_off_the_walk(full);
-            internal::Session s(std::move(full), args.name(), engine);
-            clock.lap("read scene");
-            s.set_clock(&clock);
-            return s;
-        }
-    }
-    internal::Session s(args.load(), args.name(), engine);
-    clock.lap("read scene");
-    s.set_clock(&clock);
-    return s;
-}
-
-OpenScene open_any(SceneArgs& args, Engine engine, StageClock& clock) {
-    args.opt.allow_parts = true;
-    OpenScene o;
+std::unique_ptr<internal::SceneEngine> open_engine(const SceneArgs& args, Engine engine, StageClock& clock) {
+    internal::SceneSource src;
+    src.name = args.name();
+    src.engine = engine;
+    src.clock = &clock;
     internal::ExactScene full;
-    if (engine != Engine::Hull)
-        if (std::shared_ptr<const internal::CompactScene> cs = args.load_compact(&full)) {
-            clock.lap("read scene (compact)");
-            o.convex.emplace(std::move(cs), args.name(), engine);
-            o.convex->set_clock(&clock);
-            return o;
-        }
-    if (full.P[0].points.empty())
-        full = args.load();
-    else
-        say_off_the_walk(full);  // read by load_compact, which found no compact form
-    clock.lap("read scene");
-    if (full.made_of_parts()) {
-        o.compound = std::make_unique<internal::CompoundSession>(std::move(full), args.name());
-        return o;
+    if (engine != Engine::Hull) src.compact = args.load_compact(&full);
+    if (src.compact) {
+        clock.lap("read scene (compact)");
+    } else {
+        if (full.P[0].points.empty())
+            full = args.load();
+        else
+            say_off_the_walk(full);  // read by load_compact, which found no compact form
+        clock.lap("read scene");
+        src.exact = std::make_shared<const internal::ExactScene>(std::move(full));
     }
-    o.convex.emplace(std::move(full), args.name(), engine);
-    o.convex->set_clock(&clock);
-    return o;
+    return internal::open_engine(std::move(src));
 }
 
-void refuse_parts(const OpenScene& o, const std::string& name, const std::string& what) {
-    if (o.compound)
-        throw InputError(name + ": " + what +
-                         " is defined for two convex objects; on objects made of parts, scalecert region gives where "
-                         "they meet (its labelled boundary, switch points and growth set)");
+std::string convex_only(const std::string& name, const std::string& what) {
+    return name + ": " + what +
+           " is defined for two convex objects; on objects made of parts, scalecert region gives where they meet (its "
+           "labelled boundary, switch points and growth set)";
 }
 
 internal::Segment parse_segment(const std::string& spec, const HullModel& m, const ReadOptions& opt) {

@@ -2,8 +2,7 @@
 // registers its options and returns the function that runs it.
 #pragma once
 #include "certify/certificate.hpp"
-#include "session/compound_session.hpp"
-#include "session/session.hpp"
+#include "session/engine.hpp"
 #include "numeric/timing.hpp"
 
 #include <CLI/CLI.hpp>
@@ -63,23 +62,17 @@ std::string& program_path();
 // Sets the --help footer: what the command writes, and an example.
 void example(CLI::App* sub, const std::string& text);
 
-// The scene read into a session (session.hpp), with SCALECERT_TIMING laps on `clock`: in machine
-// integers when it fits them and the engine may walk, else by the strict reader.
+// The scene read once into its engine (engine.hpp), with SCALECERT_TIMING laps on `clock`: in
+// machine integers when it fits them and the engine may walk, else by the strict reader; objects
+// made of parts where scene.opt.allow_parts (else the reader refuses them).
 using internal::Engine;
 // --engine auto|scan|hull (default auto), read into `engine`.
 void add_engine(CLI::App* sub, std::string& engine);
 Engine engine_named(const std::string& engine);
-internal::Session open_session(const SceneArgs& scene, Engine engine, internal::StageClock& clock);
-// The scene read once, objects made of parts allowed (--parts-from-groups, "parts"): a convex
-// session, or the compound session when either object has parts. Every command but curve, golden
-// and grid takes both.
-struct OpenScene {
-    std::optional<internal::Session> convex;
-    std::unique_ptr<internal::CompoundSession> compound;
-};
-OpenScene open_any(SceneArgs& scene, Engine engine, internal::StageClock& clock);
-// InputError on a scene of parts: `what` ("the touching curve") is for two convex objects.
-void refuse_parts(const OpenScene& o, const std::string& name, const std::string& what);
+std::unique_ptr<internal::SceneEngine> open_engine(const SceneArgs& scene, Engine engine, internal::StageClock& clock);
+// The refusal of what is defined for two convex objects only (`what`: "the touching curve"), on
+// the scene `name`, for SceneEngine::convex_session.
+std::string convex_only(const std::string& name, const std::string& what);
 // A segment for --segment: seeds | ellipsoids | x1,y1,z1:x2,y2,z2.
 internal::Segment parse_segment(const std::string& spec, const internal::HullModel& m, const ReadOptions& opt);
 

@@ -25,9 +25,9 @@ Command add_curve(CLI::App& app) {
                 StageClock clock;
                 // --segment lists the faces of both hulls: the hull path.
                 const Engine e = !a->segment.empty() ? Engine::Hull : engine_named(a->engine);
-                OpenScene o = open_any(a->scene, e, clock);
-                refuse_parts(o, a->scene.name(), "the touching curve");
-                internal::Session& session = *o.convex;
+                a->scene.opt.allow_parts = true;
+                std::unique_ptr<SceneEngine> engine = open_engine(a->scene, e, clock);
+                internal::Session& session = engine->convex_session(convex_only(a->scene.name(), "the touching curve"));
                 Json j;
                 if (a->segment.empty()) {
                     j = curve_json(session.curve_model(), session.curve());

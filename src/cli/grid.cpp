@@ -29,8 +29,8 @@ Command add_grid(CLI::App& app) {
             "fcl-gjk-indep");
     return {sub, [a] {
                 StageClock clock;
-                internal::Session session = open_session(a->scene, Engine::Hull, clock);
-                const Model& m = session.hull();
+                std::unique_ptr<SceneEngine> engine = open_engine(a->scene, Engine::Hull, clock);
+                const Model& m = engine->convex_session("").hull();  // (the reader refuses parts here)
                 const fp::FpScene f = fp::to_fp(m.scene);
                 std::unique_ptr<fp::Method> meth = fp::make_method(a->method, m, f);
                 if (!meth) throw InputError("--method: unknown method '" + a->method + "'");

@@ -24,8 +24,8 @@ Command add_partition(CLI::App& app) {
                 StageClock clock;
                 // From 2,000 points the walk's curve and witnesses (no hull), as for `curve`; on
                 // objects made of parts, the region's certified partition (region --certificate).
-                OpenScene o = open_any(a->scene, engine_named(a->engine), clock);
-                emit(o.compound ? dump(o.compound->partition_json()) : o.convex->partition_text(), a->out);
+                a->scene.opt.allow_parts = true;
+                emit(open_engine(a->scene, engine_named(a->engine), clock)->partition_document(), a->out);
                 return 0;
             }};
 }

@@ -32,26 +32,19 @@ Command add_query(CLI::App& app) {
                     throw InputError("RHO1 and RHO2 are required (see scalecert query --help)");
                 StageClock clock;
                 // The verdict and its certificate may come from the walk; a segment needs the hull.
-                OpenScene o = open_any(a->scene, engine_named(a->engine), clock);
-                if (o.compound) {
-                    // Objects made of parts: the verdict at any (ρ1, ρ2) > 0 by the compound judge;
-                    // with --json, the compound judgements certificate of that verdict (scalecert-check).
-                    if (!a->segment.empty() || a->in_t)
-                        throw InputError(
-                            "--segment and --in-t are for two convex objects (`scalecert region` gives where objects "
-                            "made of parts meet)");
-                    const Q r1 = read_rho(a->rho1, "RHO1", a->scene.opt), r2 = read_rho(a->rho2, "RHO2", a->scene.opt);
-                    const std::string text =
-                        a->json ? o.compound->verdict_certificate(r1, r2)
-                                : std::string(verdict_name(o.compound->judge().verdict(r1, r2).verdict)) + "\n";
-                    emit(text, a->out);
-                    return 0;
-                }
-                internal::Session& session = *o.convex;
+                a->scene.opt.allow_parts = true;
+                std::unique_ptr<SceneEngine> engine = open_engine(a->scene, engine_named(a->engine), clock);
                 std::string segment = a->segment;
                 if (a->in_t && segment.empty()) segment = "seeds";
+                // A segment lies in two convex objects' hulls.
+                Session* session = nullptr;
                 std::optional<Segment> seg;
-                if (!segment.empty()) seg = parse_segment(segment, session.hull(), a->scene.opt);
+                if (!segment.empty()) {
+                    session = &engine->convex_session(
+                        "--segment and --in-t are for two convex objects (`scalecert region` gives where objects made "
+                        "of parts meet)");
+                    seg = parse_segment(segment, session->hull(), a->scene.opt);
+                }
                 Q r1, r2;
                 if (a->in_t) {
                     const Q t1 = read_rho(a->rho1, "T1", a->scene.opt), t2 = read_rho(a->rho2, "T2", a->scene.opt);
@@ -66,15 +59,15 @@ Command add_query(CLI::App& app) {
                 }
                 std::string text;
                 if (a->json && !seg) {
-                    text = session.query_text(r1, r2);
+                    text = engine->verdict_document(r1, r2);
                 } else if (a->json) {
-                    const Model& m = session.hull();
-                    Json j = query_json(m, internal::query(m, session.hull_curve(), r1, r2, true),
+                    const Model& m = session->hull();
+                    Json j = query_json(m, internal::query(m, session->hull_curve(), r1, r2, true),
                                         internal::seed_weights(m));
                     add_query_segment_json(j, *seg, r1, r2);
                     text = dump(j);
                 } else {
-                    text = std::string(verdict_name(session.verdict(r1, r2))) + "\n";
+                    text = std::string(verdict_name(engine->verdict(r1, r2))) + "\n";
                     if (a->in_t) text += "rho1 " + to_exact_string(r1) + "\nrho2 " + to_exact_string(r2) + "\n";
                     if (seg) {
                         if (!seg->note.empty()) text += "note " + seg->note + "\n";

@@ -51,11 +51,11 @@ Command add_region(CLI::App& app) {
                 a->scene.opt.allow_parts = true;
                 internal::refuse_outputs_over_inputs({a->out, a->certificate},
                                                      {a->scene.path, a->scene.mesh[0], a->scene.mesh[1], a->classify});
-                const ExactScene sc = a->scene.load();
+                auto sc = std::make_shared<const ExactScene>(a->scene.load());
                 std::vector<Q> x;  // --at, read before the work
                 if (sub->count("--at")) {
                     x = number_list(a->at, 2, "--at", a->scene.opt);
-                    if (x[0] < sc.lo[0] || x[0] > sc.hi[0] || x[1] < sc.lo[1] || x[1] > sc.hi[1])
+                    if (x[0] < sc->lo[0] || x[0] > sc->hi[0] || x[1] < sc->lo[1] || x[1] > sc->hi[1])
                         throw InputError("--at: " + internal::in_quotes(a->at) + " lies outside I1 x I2");
                 }
                 std::string pairs_text;  // --classify: read before the work, like --at
@@ -74,7 +74,8 @@ Command add_region(CLI::App& app) {
                         throw InputError(a->classify + ": " + e.what());
                     }
                 }
-                CompoundSession session(sc, a->scene.name());
+                std::unique_ptr<SceneEngine> engine = internal::open_engine({sc, nullptr, a->scene.name()});
+                CompoundSession& session = engine->region();
                 if (sub->count("--classify")) {
                     // (Each pair is checked, with the file's name, before the region is built.)
                     emit(verdict_lines(session.classify(p1, p2, a->threads, a->classify.empty() ? "-" : a->classify)),

@@ -1,8 +1,7 @@
 // The public API (include/scalecert/scalecert.hpp) over the internal stages.
 #include "scalecert/scalecert.hpp"
 #include "session/scene_access.hpp"
-#include "session/compound_session.hpp"
-#include "session/session.hpp"
+#include "session/engine.hpp"
 
 #include "certify/certificate.hpp"
 #include "certify/claim.hpp"
@@ -54,20 +53,6 @@ Feature feature1(ContactKind k) { return static_cast<Feature>(static_cast<int>(k
 Feature feature2(ContactKind k) { return static_cast<Feature>(static_cast<int>(k) % 3); }
 
 namespace {
-
-int feature_index(char c) {
-    switch (c) {
-    case 'V': return 0;
-    case 'E': return 1;
-    case 'F': return 2;
-    }
-    throw std::logic_error("unknown feature letter");
-}
-
-Contact contact_of(const std::string& label, const std::vector<int>& f1, const std::vector<int>& f2) {
-    if (label.size() != 2) throw std::logic_error("contact label of two letters expected");
-    return {static_cast<ContactKind>(3 * feature_index(label[0]) + feature_index(label[1])), f1, f2};
-}
 
 Point canonical(Point p) {
     for (Rational& x : p) x.canonicalize();
@@ -144,12 +129,14 @@ struct Scene::Data {
         std::call_once(once, [this] { model = std::make_shared<const HullModel>(build_model(sc(), name)); });
         return model;
     }
-    // A session on the scene: the engine it chooses (Session::plan) with the scene's hull model.
-    std::unique_ptr<internal::Session> session(const std::shared_ptr<Data>& self) const {
-        auto s = integers_only ? std::make_unique<internal::Session>(compact, name)
-                               : std::make_unique<internal::Session>(scene, compact, name);
-        s->set_hull_source([self] { return self->hull(); });
-        return s;
+    // The scene's engine (open_engine chooses it), with the scene's hull model.
+    std::unique_ptr<internal::SceneEngine> engine(const std::shared_ptr<Data>& self) const {
+        internal::SceneSource src;
+        if (!integers_only) src.exact = scene;
+        src.compact = compact;
+        src.name = name;
+        src.hull = [self] { return self->hull(); };
+        return internal::open_engine(std::move(src));
     }
 };
 
@@ -157,10 +144,9 @@ std::shared_ptr<Scene::Data> SceneAccess::validated(internal::ExactScene sc, con
     auto d = std::make_shared<Scene::Data>();
     d->scene = std::make_shared<const internal::ExactScene>(std::move(sc));
     d->name = name;
-    if (!d->convex()) return d;  // its parts' hulls are built where they are needed
-    const std::unique_ptr<internal::Session> s = d->session(d);
-    s->check();
-    d->compact = s->compact_scene();
+    const std::unique_ptr<internal::SceneEngine> e = d->engine(d);
+    e->check();
+    d->compact = e->compact();
     return d;
 }
 
@@ -302,88 +288,44 @@ std::string Scene::json() const { return dump(internal::scene_file_json(d_->sc()
 struct Analysis::Impl {
     Scene scene;
     // Calls on one Analysis from several threads at once are not supported (scalecert.hpp), so
-    // the sessions build their models lazily behind the const interface. A convex scene has its
-    // Session (and a CompoundSession too once its region is asked for); a scene of parts has its
-    // CompoundSession only.
-    mutable std::unique_ptr<internal::Session> session;
-    mutable std::unique_ptr<internal::CompoundSession> compound;
-    explicit Impl(const Scene& s) : scene(s) {
-        if (!s.d_->convex()) {
-            compound = std::make_unique<internal::CompoundSession>(s.d_->sc(), s.d_->name);
-            return;
-        }
-        session = s.d_->session(s.d_);
-    }
-    bool convex() const { return session != nullptr; }
-    internal::CompoundSession& region() const {
-        if (!compound) compound = std::make_unique<internal::CompoundSession>(scene.d_->sc(), scene.d_->name);
-        return *compound;
-    }
-    // What is defined for two convex objects only, refused on parts with what answers instead.
-    internal::Session& convex_only(const char* what) const {
-        if (!session)
-            throw InputError(std::string(what) +
-                             " is defined for two convex objects; on objects made of parts, the region gives where "
-                             "they meet, with its labelled boundary, switch points and growth set (C++ region_json(), "
-                             "Python region(), "
-                             "`scalecert region`)");
-        return *session;
-    }
+    // the engine builds its models lazily behind the const interface.
+    std::unique_ptr<internal::SceneEngine> engine;
+    explicit Impl(const Scene& s) : scene(s), engine(s.d_->engine(s.d_)) {}
 };
+
+namespace {
+// What is defined for two convex objects only, refused on parts with what answers instead.
+std::string convex_only(const char* what) {
+    return std::string(what) +
+           " is defined for two convex objects; on objects made of parts, the region gives where they meet, with its "
+           "labelled boundary, switch points and growth set (C++ region_json(), Python region(), `scalecert region`)";
+}
+
+void check_rho(const Rational& r, const char* what) {
+    if (sgn(r) <= 0) throw InputError(std::string(what) + ": a scaling factor must be > 0");
+}
+}  // namespace
 
 Analysis::Analysis(const Scene& scene) {
     auto impl = std::make_shared<Impl>(scene);
-    if (!impl->convex()) {
-        impl_ = std::move(impl);
-        return;
-    }
-    const internal::TouchingCurve& c = impl->session->curve();
-    const Model& m = impl->session->curve_model();
-    for (const CurvePiece& p : c.pieces) {
-        const ContactLine& L = m.lines[c.env.pieces[p.env].line];
-        std::optional<Contact> k;
-        if (!p.contact.label.empty()) k = contact_of(p.contact.label, p.contact.feat1, p.contact.feat2);
-        curve_.pieces.push_back({p.from, p.to, L.slope, L.intercept, to_q(L.normal), k});
-    }
-    for (const internal::CurveSwitch& s : c.switches) {
-        std::optional<Contact> k;
-        if (!s.contact.label.empty()) k = contact_of(s.contact.label, s.contact.feat1, s.contact.feat2);
-        curve_.switches.push_back({s.rho1, s.rho2, k});
-    }
-    curve_.growth = {c.growth.value, c.growth.in_rectangle};
+    impl->engine->prepare();
     impl_ = std::move(impl);
 }
 
-static void check_rho(const Rational& r, const char* what) {
-    if (sgn(r) <= 0) throw InputError(std::string(what) + ": a scaling factor must be > 0");
-}
+bool Analysis::convex() const { return impl_->engine->convex(); }
 
-bool Analysis::convex() const { return impl_->convex(); }
-
-const Curve& Analysis::curve() const {
-    impl_->convex_only("curve");
-    return curve_;
-}
+const Curve& Analysis::curve() const { return impl_->engine->curve(convex_only("curve")); }
 
 Verdict Analysis::verdict(const Rational& rho1, const Rational& rho2) const {
     check_rho(rho1, "rho1");
     check_rho(rho2, "rho2");
-    if (!impl_->convex()) return impl_->compound->judge().verdict(canonical_q(rho1), canonical_q(rho2)).verdict;
-    return impl_->session->verdict(canonical_q(rho1), canonical_q(rho2));
+    return impl_->engine->verdict(canonical_q(rho1), canonical_q(rho2));
 }
 
 QueryResult Analysis::query(const Rational& rho1, const Rational& rho2) const {
     check_rho(rho1, "rho1");
     check_rho(rho2, "rho2");
-    if (!impl_->convex()) return {verdict(rho1, rho2), std::nullopt, std::nullopt};
-    // The walk where it proves the curve at ρ1 (as query_json and the command), else the hull model.
-    const internal::Session::Certified c = impl_->session->certified_query(rho1, rho2);
-    const Model& m = c.model;
-    const internal::QueryAnswer& r = c.result;
-    QueryResult out{r.verdict, std::nullopt, std::nullopt};
-    if (r.plane) out.plane = Plane{to_q(m.lines[r.plane->line].normal), r.plane->c1, r.plane->c2, r.plane->offset};
-    if (r.witness) out.common = CommonPoint{r.witness->rho1, r.witness->rho2, r.witness->point};
-    return out;
+    return impl_->engine->query(canonical_q(rho1), canonical_q(rho2));
 }
 
 std::vector<Verdict> Analysis::classify(const std::vector<double>& rho1, const std::vector<double>& rho2,
@@ -396,12 +338,7 @@ std::vector<Verdict> Analysis::classify(const std::vector<double>& rho1, const s
             throw InputError("classify: pair " + std::to_string(i) +
                              " (numbered from 0): two finite numbers > 0 are required");
     if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
-    if (!impl_->convex()) return impl_->compound->classify(rho1, rho2, threads);
-    const internal::Session::Decider d = impl_->session->decider_for(rho1);
-    FastCurve f(d.model, d.curve);
-    std::vector<Verdict> out;
-    classify_batch(f, rho1, rho2, out, threads);
-    return out;
+    return impl_->engine->classify(rho1, rho2, threads, "classify", nullptr);
 }
 
 PlaneCheck Analysis::check_plane(const Rational& rho1, const Rational& rho2, const Point& normal,
@@ -410,9 +347,7 @@ PlaneCheck Analysis::check_plane(const Rational& rho1, const Rational& rho2, con
     check_rho(rho2, "rho2");
     const Point n = canonical(normal);
     if (sgn(n[0]) == 0 && sgn(n[1]) == 0 && sgn(n[2]) == 0) throw InputError("check_plane: the normal is zero");
-    // Support queries over the points: no hull model (on parts, over every part's points).
-    const auto [c1, c2] = impl_->convex() ? internal::plane_extents(impl_->session->points(), n, rho1, rho2)
-                                          : impl_->compound->judge().plane_extents(n, rho1, rho2);
+    const auto [c1, c2] = impl_->engine->plane_extents(n, rho1, rho2);
     PlaneCheck r;
     r.c1 = c1;
     r.c2 = c2;
@@ -421,38 +356,32 @@ PlaneCheck Analysis::check_plane(const Rational& rho1, const Rational& rho2, con
 }
 
 std::string Analysis::curve_json() const {
-    internal::Session& s = impl_->convex_only("curve_json");
+    internal::Session& s = impl_->engine->convex_session(convex_only("curve_json"));
     return dump(internal::curve_json(s.curve_model(), s.curve()));
 }
 
 std::string Analysis::query_json(const Rational& rho1, const Rational& rho2) const {
     check_rho(rho1, "rho1");
     check_rho(rho2, "rho2");
-    if (impl_->convex()) return impl_->session->query_text(rho1, rho2);
-    return impl_->compound->verdict_certificate(canonical_q(rho1), canonical_q(rho2));
+    return impl_->engine->verdict_document(canonical_q(rho1), canonical_q(rho2));
 }
 
-std::string Analysis::partition_json() const {
-    return impl_->convex() ? impl_->session->partition_text() : dump(impl_->compound->partition_json());
-}
+std::string Analysis::partition_json() const { return impl_->engine->partition_document(); }
 
-std::string Analysis::region_json() const { return dump(impl_->region().region_json()); }
+std::string Analysis::region_json() const { return dump(impl_->engine->region().region_json()); }
 
 ClaimReport Analysis::certify_fp(const std::string& claims, const ClaimOptions& options) const {
     long wrong = 0, count = 0;
     std::string certificate;
-    std::string* cert = options.certificate ? &certificate : nullptr;
-    std::string report =
-        impl_->convex()
-            ? internal::certify_fp(impl_->session->claim_models(), claims, "claims", options, &wrong, &count, cert)
-            : internal::certify_fp(impl_->compound->judge(), claims, "claims", options, &wrong, &count, cert);
+    std::unique_ptr<internal::ClaimRules> rules = impl_->engine->rules({options.tolerance, options.abs_tolerance});
+    std::string report = internal::certify_fp(*rules, claims, "claims", options, &wrong, &count,
+                                              options.certificate ? &certificate : nullptr);
     return {std::move(report), count, wrong, std::move(certificate)};
 }
 
 namespace {
 // A public claim, typed for the rules (claim.hpp), its faults refused with one line naming it.
-// parts: the scene of objects made of parts, none for two convex objects.
-internal::TypedClaim typed_claim(const Claim& c, size_t i, const internal::ExactScene* parts) {
+internal::TypedClaim typed_claim(const Claim& c, size_t i, const internal::ClaimRules& rules) {
     using internal::ClaimType;
     const std::string where = "certify: claims[" + std::to_string(i) + "]";
     internal::TypedClaim t;
@@ -480,10 +409,7 @@ internal::TypedClaim typed_claim(const Claim& c, size_t i, const internal::Exact
     switch (c.kind) {
     case ClaimKind::Verdict:
         t.type = ClaimType::Verdict;
-        t.verdict = c.verdict == ClaimedVerdict::Separated     ? internal::Claimed::Separated
-                    : c.verdict == ClaimedVerdict::Touching    ? internal::Claimed::Touching
-                    : c.verdict == ClaimedVerdict::Overlapping ? internal::Claimed::Overlapping
-                                                               : internal::Claimed::Intersecting;
+        t.verdict = c.verdict;
         break;
     case ClaimKind::SeparatingPlane:
         t.type = ClaimType::Plane;
@@ -500,20 +426,7 @@ internal::TypedClaim typed_claim(const Claim& c, size_t i, const internal::Exact
         if (c.closest) t.closest = std::array<Point, 2>{canonical((*c.closest)[0]), canonical((*c.closest)[1])};
         break;
     case ClaimKind::PenetrationDepth:
-        // A contact of one part pair on objects made of parts (the objects' depth is not defined);
-        // on two convex objects only the pair (0, 0), or none.
-        if (parts && !c.parts)
-            throw InputError(where +
-                             ".parts: missing: a penetration depth on objects made of parts is a contact of "
-                             "one part pair (parts = {part of P1, part of P2})");
-        if (c.parts)
-            for (size_t k = 0; k < 2; ++k) {
-                const size_t n = parts ? std::max<size_t>(1, parts->P[k].parts.size()) : 1;
-                if ((*c.parts)[k] < 0 || static_cast<size_t>((*c.parts)[k]) >= n)
-                    throw InputError(where + ".parts[" + std::to_string(k) + "]: P" + std::to_string(k + 1) + " has " +
-                                     std::to_string(n) + (n == 1 ? " part" : " parts") + " (numbered from 0)");
-            }
-        if (parts) t.parts = c.parts;
+        t.parts = rules.part_pair(c.parts, where);
         t.type = ClaimType::Depth;
         t.value = canonical_q(c.value);
         if (c.direction) t.direction = nonzero(*c.direction, "direction");
@@ -524,9 +437,9 @@ internal::TypedClaim typed_claim(const Claim& c, size_t i, const internal::Exact
 
 // Its judgement, as the public type has it.
 Judgement public_judgement(const internal::TypedClaim& c, const internal::Judged& g,
-                           const internal::ExactScene* parts) {
+                           const internal::ClaimRules& rules) {
     Judgement j;
-    if (parts && g.part1 >= 0 && g.part2 >= 0) {
+    if (const internal::ExactScene* parts = rules.parts(); parts && g.part1 >= 0 && g.part2 >= 0) {
         j.part1 = g.part1;
         j.part2 = g.part2;
         j.part1_name = internal::part_name(parts->P[0], static_cast<size_t>(g.part1));
@@ -549,35 +462,6 @@ Judgement public_judgement(const internal::TypedClaim& c, const internal::Judged
     return j;
 }
 
-// Typed claims through typed rules: no JSON unless a certificate is asked for.
-template <class Rules, class Certificate>
-Judgements judge_all(Rules& rules, const std::vector<Claim>& claims, const ClaimOptions& options,
-                     const internal::ExactScene* parts, Certificate&& certificate) {
-    std::vector<internal::TypedClaim> typed;
-    typed.reserve(claims.size());
-    for (size_t i = 0; i < claims.size(); ++i) typed.push_back(typed_claim(claims[i], i, parts));
-    Judgements out;
-    out.items.reserve(claims.size());
-    Json entries = Json::array();
-    for (size_t i = 0; i < typed.size(); ++i) {
-        internal::Proof p;
-        internal::Judged g;
-        try {
-            g = rules.judge(typed[i], options.certificate ? &p : nullptr);
-        } catch (const InputError& e) {  // a limit met while judging it (a pose's moved points)
-            if (!typed[i].posed()) throw;
-            throw InputError("certify: claims[" + std::to_string(i) + "]." + e.what());
-        }
-        out.wrong += !g.right;
-        out.items.push_back(public_judgement(typed[i], g, parts));
-        if (options.certificate)
-            entries.push_back(
-                Json{{"index", i}, {"claim", std::move(p.claim)}, {"right", g.right}, {"proof", std::move(p.proof)}});
-    }
-    if (options.certificate) out.certificate = certificate(std::move(entries));
-    return out;
-}
-
 void check_tolerance(const ClaimOptions& options) {
     if (sgn(options.tolerance) < 0)
         throw InputError("tolerance: must be >= 0 (got " + to_exact_string(options.tolerance) + ")");
@@ -586,35 +470,37 @@ void check_tolerance(const ClaimOptions& options) {
 }
 }  // namespace
 
+// Typed claims through typed rules: no JSON unless a certificate is asked for.
 Judgements Analysis::certify(const std::vector<Claim>& claims, const ClaimOptions& options) const {
     check_tolerance(options);
-    if (!impl_->convex()) {
-        internal::CompoundJudge& judge = impl_->compound->judge();
-        internal::PartsRules rules(judge, {options.tolerance, options.abs_tolerance});
-        return judge_all(rules, claims, options, &judge.scene(), [&](Json entries) {
-            return internal::compound_judgements_text(judge.scene(), options.tolerance, options.abs_tolerance,
-                                                      std::move(entries));
-        });
+    std::unique_ptr<internal::ClaimRules> rules = impl_->engine->rules({options.tolerance, options.abs_tolerance});
+    std::vector<internal::TypedClaim> typed;
+    typed.reserve(claims.size());
+    for (size_t i = 0; i < claims.size(); ++i) typed.push_back(typed_claim(claims[i], i, *rules));
+    Judgements out;
+    out.items.reserve(claims.size());
+    Json entries = Json::array();
+    for (size_t i = 0; i < typed.size(); ++i) {
+        internal::Proof p;
+        internal::Judged g;
+        try {
+            g = rules->judge(typed[i], options.certificate ? &p : nullptr);
+        } catch (const InputError& e) {  // a limit met while judging it (a pose's moved points)
+            if (!typed[i].posed()) throw;
+            throw InputError("certify: claims[" + std::to_string(i) + "]." + e.what());
+        }
+        out.wrong += !g.right;
+        out.items.push_back(public_judgement(typed[i], g, *rules));
+        if (options.certificate)
+            entries.push_back(
+                Json{{"index", i}, {"claim", std::move(p.claim)}, {"right", g.right}, {"proof", std::move(p.proof)}});
     }
-    const internal::ClaimModels models = impl_->session->claim_models();
-    internal::ConvexRules rules(models, {options.tolerance, options.abs_tolerance});
-    return judge_all(rules, claims, options, nullptr, [&](Json entries) {
-        return internal::judgements_text(models.document(), options.tolerance, options.abs_tolerance,
-                                         std::move(entries));
-    });
+    if (options.certificate) out.certificate = rules->certificate(std::move(entries));
+    return out;
 }
 
 GoldenData Analysis::golden(const GoldenOptions& options) const {
-    const internal::GoldenPoints points{options.verticals, options.offsets};
-    internal::GoldenAnswers g;
-    if (!impl_->convex()) {  // the region document, with queries where the meeting set ends
-        internal::CompoundSession& cs = *impl_->compound;
-        g = internal::golden_answers_parts(cs.region(true), cs.judge(), cs.region_json(), points);
-    } else {
-        internal::Session& s = impl_->convex_only("golden");
-        const internal::ClaimModels models = s.claim_models();
-        g = internal::golden_answers(impl_->scene.d_->sc(), s.curve_model(), s.curve(), models, points);
-    }
+    internal::GoldenAnswers g = impl_->engine->golden(internal::GoldenPoints{options.verticals, options.offsets});
     g.curve["queries"] = std::move(g.queries);
     return {dump(g.curve), std::move(g.csv), std::move(g.rational_csv)};
 }

@@ -240,44 +240,56 @@ const PointSets& Session::points() {
     return *points_;
 }
 
-ClaimModels Session::claim_models() {
-    // Each answers with the least model it needs: the walk where it proves the curve, the two
-    // hulls (no contact line) for membership and the measures' fallbacks, and the hull model only
-    // where neither serves, within the edge-pair limit (hull(), from here on).
+// The claim rules' questions, each answered with the least model it needs: the walk where it
+// proves the curve, the two hulls (no contact line) for membership and the measures' fallbacks,
+// and the hull model only where neither serves, within the edge-pair limit (hull()).
+class Session::Models final : public ClaimModels {
+  public:
+    explicit Models(Session& s) : s_(s) {}
+    const HullModel& hull_model() const override { return s_.hull(); }
+    const TouchingCurve& hull_curve() const override { return s_.hull_curve(); }
+    Verdict verdict(const Q& r1, const Q& r2) const override { return s_.verdict(r1, r2); }
+    Q curve_value(const Q& r1) const override { return s_.curve_value(r1); }
+    Q growth() const override {
+        if (s_.seeds_coincide()) return Q(0);  // every pair overlaps: no model needed
+        return s_.curve().growth.value;
+    }
+    const PointSets& points() const override { return s_.points(); }
+    const Model& document() const override { return s_.walked() ? static_cast<const Model&>(*s_.walk_) : s_.hulls(); }
+    std::pair<const Model*, QueryAnswer> certified_query(const Q& r1, const Q& r2) const override {
+        Certified c = s_.certified_query(r1, r2);
+        return {&c.model, std::move(c.result)};
+    }
+    Json growth_proof() const override {
+        if (s_.seeds_coincide()) return Json{{"value", "0"}};  // (judgements.hpp: ρ* = 0 needs no normal)
+        return scalecert::internal::growth_proof(s_.curve_model(), s_.curve());
+    }
+    const Model& hulls() const override { return s_.hulls(); }
+    Curve curve_around(const Q& lo, const Q& hi) const override {
+        const CurveView v = s_.curve_around(lo, hi);
+        return {&v.model, &v.curve, v.lo, v.hi};
+    }
+    bool member(int i, const Q& rho, const Vec3q& x, Json* proof) const override {
+        // A walked scene's trees answer without a hull (CGAL's quickhull is quadratic on points
+        // all on the hull, as crossed prisms' are), the distance's rounds unbounded (each adds a
+        // point: it always closes); the hulls once built.
+        if (!s_.hull_ && !s_.hulls_ && s_.walked() && s_.walk_->points)
+            if (const std::optional<bool> in =
+                    membership_by_points(*s_.walk_->points, i, rho, x, proof, std::numeric_limits<int>::max()))
+                return *in;
+        return hull_member(s_.hulls(), i, rho, x, proof);
+    }
+
+  private:
+    Session& s_;
+};
+
+const ClaimModels& Session::claim_models() {
     limit_hull_ = true;
-    return {[this]() -> const HullModel& { return hull(); },
-            [this]() -> const TouchingCurve& { return hull_curve(); },
-            [this](const Q& r1, const Q& r2) { return verdict(r1, r2); },
-            [this](const Q& r1) { return curve_value(r1); },
-            [this] {
-                if (seeds_coincide()) return Q(0);  // every pair overlaps: no model needed
-                return curve().growth.value;
-            },
-            [this]() -> const PointSets& { return points(); },
-            [this]() -> const Model& { return walked() ? static_cast<const Model&>(*walk_) : hulls(); },
-            [this](const Q& r1, const Q& r2) {
-                Certified c = certified_query(r1, r2);
-                return std::pair<const Model*, QueryAnswer>{&c.model, std::move(c.result)};
-            },
-            [this] {
-                if (seeds_coincide()) return Json{{"value", "0"}};  // (judgements.hpp: ρ* = 0 needs no normal)
-                return growth_proof(curve_model(), curve());
-            },
-            [this]() -> const Model& { return hulls(); },
-            [this](const Q& lo, const Q& hi) {
-                const CurveView v = curve_around(lo, hi);
-                return ClaimModels::Curve{&v.model, &v.curve, v.lo, v.hi};
-            },
-            [this](int i, const Q& rho, const Vec3q& x, Json* proof) {
-                // A walked scene's trees answer without a hull (CGAL's quickhull is quadratic on
-                // points all on the hull, as crossed prisms' are), the distance's rounds unbounded
-                // (each adds a point: it always closes); the hulls once built.
-                if (!hull_ && !hulls_ && walked() && walk_->points)
-                    if (const std::optional<bool> in =
-                            membership_by_points(*walk_->points, i, rho, x, proof, std::numeric_limits<int>::max()))
-                        return *in;
-                return hull_member(hulls(), i, rho, x, proof);
-            }};
+    if (!models_) models_ = std::make_unique<Models>(*this);
+    return *models_;
 }
+
+Session::~Session() = default;
 
 }  // namespace scalecert::internal

@@ -35,6 +35,10 @@ class Session {
     Session(std::shared_ptr<const CompactScene> scene, std::string name, Engine engine = Engine::Auto);
     Session(std::shared_ptr<const ExactScene> scene, std::shared_ptr<const CompactScene> compact, std::string name,
             Engine engine = Engine::Auto);
+    ~Session();
+    // Not copied nor moved: its claim models refer to it.
+    Session(const Session&) = delete;
+    Session& operator=(const Session&) = delete;
     // Laps for SCALECERT_TIMING (optional; must outlive the session's work).
     void set_clock(StageClock* clock) { clock_ = clock; }
     // A hull model built elsewhere and shared (the library's Scene builds it once for all its
@@ -94,7 +98,7 @@ class Session {
     std::string partition_text();                          // document_text(partition_json(...))
     // What claims are checked against (claims.hpp): verdicts and curve values as verdict() and
     // curve_value() give them, the hull model for what needs every vertex.
-    ClaimModels claim_models();
+    const ClaimModels& claim_models();
     // The points for the measures (measures.hpp): on a walked scene their trees, with no hull
     // (CloudPoints, built on first use); else the hull model's vertices.
     const PointSets& points();
@@ -139,6 +143,8 @@ class Session {
     std::shared_ptr<const Model> hulls_;  // build_hulls's, when no hull model was built
     std::optional<TouchingCurve> hull_curve_;
     std::shared_ptr<const PointSets> points_;
+    class Models;
+    std::unique_ptr<Models> models_;  // claim_models()
 };
 
 }  // namespace scalecert::internal

@@ -118,7 +118,7 @@ void compare_with_engine(const J& c) {
         long wrong = 0;
         std::string report;
         try {
-            report = certify_fp(ClaimModels::of(m, cv), doc.dump(), "fuzz", options_of(c), &wrong);
+            report = certify_fp(HullClaimModels(m, cv), doc.dump(), "fuzz", options_of(c), &wrong);
         } catch (const InputError& e) {
             fuzz::finding(std::string("the checker accepted claims the engine refuses: ") + e.what());
         }

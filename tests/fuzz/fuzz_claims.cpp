@@ -128,7 +128,7 @@ void walk_claims(const std::string& text) {
         std::string hull_out, walk_out, cert, hull_err, walk_err;
         long wrong = -1;
         try {
-            hull_out = certify_fp(ClaimModels::of(hm, hc), text, "fuzz.claims", opt, &wrong);
+            hull_out = certify_fp(HullClaimModels(hm, hc), text, "fuzz.claims", opt, &wrong);
         } catch (const InputError& e) {
             hull_err = e.what();
         }

@@ -124,7 +124,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     if (!first) {
         long wrong = 0;
         std::string cert;
-        certify_fp(ClaimModels::of(m, cv), claims + "]}", "fuzz", ClaimOptions{Numbers::Double, Q(0), true}, &wrong,
+        certify_fp(HullClaimModels(m, cv), claims + "]}", "fuzz", ClaimOptions{Numbers::Double, Q(0), true}, &wrong,
                    nullptr, &cert);
         fuzz::must_pass_checker(cert, "judgements");
     }

@@ -1,0 +1,166 @@
+#include "session/engine.hpp"
+
+#include "certify/certificate.hpp"
+#include "geometry/measures.hpp"
+
+#include <optional>
+#include <stdexcept>
+
+namespace scalecert::internal {
+
+namespace {
+
+// A contact as the public API has it, from the curve's label ("VE") and features.
+scalecert::Contact contact_of(const std::string& label, const std::vector<int>& f1, const std::vector<int>& f2) {
+    auto index = [](char c) {
+        switch (c) {
+        case 'V': return 0;
+        case 'E': return 1;
+        case 'F': return 2;
+        }
+        throw std::logic_error("unknown feature letter");
+    };
+    if (label.size() != 2) throw std::logic_error("contact label of two letters expected");
+    return {static_cast<scalecert::ContactKind>(3 * index(label[0]) + index(label[1])), f1, f2};
+}
+
+// Two convex objects: the session's walk or hull model answers.
+class ConvexEngine final : public SceneEngine {
+  public:
+    explicit ConvexEngine(SceneSource src) : exact_(std::move(src.exact)), name_(std::move(src.name)) {
+        session_ = exact_ ? std::make_unique<Session>(exact_, std::move(src.compact), name_, src.engine)
+                          : std::make_unique<Session>(std::move(src.compact), name_, src.engine);
+        if (src.hull) session_->set_hull_source(std::move(src.hull));
+        if (src.clock) session_->set_clock(src.clock);
+    }
+    void check() override { session_->check(); }
+    std::shared_ptr<const CompactScene> compact() override { return session_->compact_scene(); }
+    void prepare() override { public_curve(); }
+    bool convex() const override { return true; }
+    Verdict verdict(const Q& r1, const Q& r2) override { return session_->verdict(r1, r2); }
+    scalecert::QueryResult query(const Q& r1, const Q& r2) override {
+        // The walk where it proves the curve at ρ1 (as the query document), else the hull model.
+        const Session::Certified c = session_->certified_query(r1, r2);
+        const QueryAnswer& r = c.result;
+        scalecert::QueryResult out{r.verdict, std::nullopt, std::nullopt};
+        if (r.plane)
+            out.plane =
+                scalecert::Plane{to_q(c.model.lines[r.plane->line].normal), r.plane->c1, r.plane->c2, r.plane->offset};
+        if (r.witness) out.common = scalecert::CommonPoint{r.witness->rho1, r.witness->rho2, r.witness->point};
+        return out;
+    }
+    std::string verdict_document(const Q& r1, const Q& r2) override { return session_->query_text(r1, r2); }
+    std::string partition_document() override { return session_->partition_text(); }
+    std::vector<Verdict> classify(const std::vector<double>& rho1, const std::vector<double>& rho2, unsigned threads,
+                                  const std::string&, std::optional<StageCounts>* counts) override {
+        const Session::Decider d = session_->decider_for(rho1);
+        FastCurve f(d.model, d.curve);
+        std::vector<Verdict> out;
+        const StageCounts sc = classify_batch(f, rho1, rho2, out, threads);
+        if (counts) *counts = sc;
+        return out;
+    }
+    std::pair<Q, Q> plane_extents(const Vec3q& n, const Q& r1, const Q& r2) override {
+        // Support queries over the points: no hull model.
+        return internal::plane_extents(session_->points(), n, r1, r2);
+    }
+    std::unique_ptr<ClaimRules> rules(const Tolerance& tolerance) override {
+        return std::make_unique<ConvexRules>(session_->claim_models(), tolerance);
+    }
+    GoldenAnswers golden(const GoldenPoints& points) override {
+        const ClaimModels& models = session_->claim_models();
+        return golden_answers(exact_scene(), session_->curve_model(), session_->curve(), models, points);
+    }
+    CompoundSession& region() override {
+        if (!region_) region_ = std::make_unique<CompoundSession>(exact_scene(), name_);
+        return *region_;
+    }
+    Session& convex_session(const std::string&) override { return *session_; }
+    const scalecert::Curve& curve(const std::string&) override { return public_curve(); }
+
+  private:
+    const ExactScene& exact_scene() {
+        if (!exact_) exact_ = std::make_shared<const ExactScene>(full_scene(*session_->compact_scene()));
+        return *exact_;
+    }
+    const scalecert::Curve& public_curve() {
+        if (curve_) return *curve_;
+        const TouchingCurve& c = session_->curve();
+        const Model& m = session_->curve_model();
+        scalecert::Curve out;
+        for (const CurvePiece& p : c.pieces) {
+            const ContactLine& L = m.lines[c.env.pieces[p.env].line];
+            std::optional<scalecert::Contact> k;
+            if (!p.contact.label.empty()) k = contact_of(p.contact.label, p.contact.feat1, p.contact.feat2);
+            out.pieces.push_back({p.from, p.to, L.slope, L.intercept, to_q(L.normal), k});
+        }
+        for (const CurveSwitch& s : c.switches) {
+            std::optional<scalecert::Contact> k;
+            if (!s.contact.label.empty()) k = contact_of(s.contact.label, s.contact.feat1, s.contact.feat2);
+            out.switches.push_back({s.rho1, s.rho2, k});
+        }
+        out.growth = {c.growth.value, c.growth.in_rectangle};
+        return curve_.emplace(std::move(out));
+    }
+    std::shared_ptr<const ExactScene> exact_;
+    std::string name_;
+    std::unique_ptr<Session> session_;
+    std::unique_ptr<CompoundSession> region_;
+    std::optional<scalecert::Curve> curve_;
+};
+
+// Objects made of parts: the region, and the part pairs' judge for any pair.
+class PartsEngine final : public SceneEngine {
+  public:
+    explicit PartsEngine(SceneSource src) : exact_(std::move(src.exact)), name_(std::move(src.name)) {}
+    void check() override {}  // each part's hull is built (and checked) where it is first needed
+    std::shared_ptr<const CompactScene> compact() override { return nullptr; }
+    void prepare() override {}
+    bool convex() const override { return false; }
+    Verdict verdict(const Q& r1, const Q& r2) override { return session().judge().verdict(r1, r2).verdict; }
+    scalecert::QueryResult query(const Q& r1, const Q& r2) override {
+        return {verdict(r1, r2), std::nullopt, std::nullopt};
+    }
+    std::string verdict_document(const Q& r1, const Q& r2) override {
+        return session().verdict_certificate(r1, r2);
+    }
+    std::string partition_document() override { return dump(session().partition_json()); }
+    std::vector<Verdict> classify(const std::vector<double>& rho1, const std::vector<double>& rho2, unsigned threads,
+                                  const std::string& source, std::optional<StageCounts>*) override {
+        // Located on the region's grid (pairs in I1 × I2).
+        return session().classify(rho1, rho2, threads, source);
+    }
+    std::pair<Q, Q> plane_extents(const Vec3q& n, const Q& r1, const Q& r2) override {
+        return session().judge().plane_extents(n, r1, r2);
+    }
+    std::unique_ptr<ClaimRules> rules(const Tolerance& tolerance) override {
+        return std::make_unique<PartsRules>(session().judge(), tolerance);
+    }
+    GoldenAnswers golden(const GoldenPoints& points) override {
+        // The region document, with queries where the meeting set ends.
+        Json doc = session().region_json();
+        return golden_answers_parts(session().region(true), session().judge(), std::move(doc), points);
+    }
+    CompoundSession& region() override { return session(); }
+    Session& convex_session(const std::string& refusal) override { throw InputError(refusal); }
+    const scalecert::Curve& curve(const std::string& refusal) override { throw InputError(refusal); }
+
+  private:
+    // The region's session, made on first use (a scene is validated without one).
+    CompoundSession& session() {
+        if (!session_) session_.emplace(*exact_, name_);
+        return *session_;
+    }
+    std::shared_ptr<const ExactScene> exact_;
+    std::string name_;
+    std::optional<CompoundSession> session_;
+};
+
+}  // namespace
+
+std::unique_ptr<SceneEngine> open_engine(SceneSource source) {
+    if (source.exact && source.exact->made_of_parts()) return std::make_unique<PartsEngine>(std::move(source));
+    return std::make_unique<ConvexEngine>(std::move(source));
+}
+
+}  // namespace scalecert::internal
