@@ -134,25 +134,63 @@ BOOST_AUTO_TEST_CASE(dominated_line_at_its_margin) {
 BOOST_AUTO_TEST_CASE(query_filters_at_their_bounds) {
     // y = −ρ1 + 2^20 at ρ1 = 1: f = 2^20 − 1, err = 1e-12·(1 + 2^20) ≈ 1.05e-6.
     const double a = -1, b = p2(20), f = b - 1;
-    BOOST_TEST(filter::curve_side_filter(a, b, 1, f - 2e-6) == 1);                // outside: separated
-    BOOST_TEST(filter::curve_side_filter(a, b, 1, f + 2e-6) == -1);               // outside: overlapping
-    BOOST_TEST(filter::curve_side_filter(a, b, 1, f - 0.5e-6) == 0);              // inside: exact stage
-    BOOST_TEST(filter::curve_side_filter(a, b, 1, f) == 0);                       // on the line
-    BOOST_TEST(filter::curve_side_filter(a, b, 1, std::nextafter(f, 0.0)) == 0);  // one ulp below
+    BOOST_TEST(filter::bounds::curve_side_filter(a, b, 1, f - 2e-6) == 1);                // outside: separated
+    BOOST_TEST(filter::bounds::curve_side_filter(a, b, 1, f + 2e-6) == -1);               // outside: overlapping
+    BOOST_TEST(filter::bounds::curve_side_filter(a, b, 1, f - 0.5e-6) == 0);              // inside: exact stage
+    BOOST_TEST(filter::bounds::curve_side_filter(a, b, 1, f) == 0);                       // on the line
+    BOOST_TEST(filter::bounds::curve_side_filter(a, b, 1, std::nextafter(f, 0.0)) == 0);  // one ulp below
     // The breakpoint: within 1e-12·ρ1 of it the piece is not certain.
-    BOOST_TEST(!filter::near_breakpoint(1.0, 1 + 2e-12, true));
-    BOOST_TEST(filter::near_breakpoint(1.0, 1 + p2(-45), true));
-    BOOST_TEST(filter::near_breakpoint(1.0, 1 - p2(-45), false));
-    BOOST_TEST(filter::near_breakpoint(1.0, 1.0, false));
+    BOOST_TEST(!filter::bounds::near_breakpoint(1.0, 1 + 2e-12, true));
+    BOOST_TEST(filter::bounds::near_breakpoint(1.0, 1 + p2(-45), true));
+    BOOST_TEST(filter::bounds::near_breakpoint(1.0, 1 - p2(-45), false));
+    BOOST_TEST(filter::bounds::near_breakpoint(1.0, 1.0, false));
     // n·d − ρ1·h1 − ρ2·h2 with nd = 2^20, h1 = h2 = 1, ρ1 = 1: err ≈ 2.1e-6.
-    BOOST_TEST(filter::lines_gap_filter(b, 1, 1, 1, f - p2(-16)) == 1);
-    BOOST_TEST(filter::lines_gap_filter(b, 1, 1, 1, f + p2(-16)) == -1);
-    BOOST_TEST(filter::lines_gap_filter(b, 1, 1, 1, f) == 0);
-    BOOST_TEST(filter::lines_gap_filter(b, 1, 1, 1, std::nextafter(f, 0.0)) == 0);
-    BOOST_TEST(filter::lines_gap_filter(b, 1, 1, 1, f - 1e-6) == 0);
-    BOOST_TEST(filter::lines_gap_filter(INFINITY, INFINITY, 1, 1, 1) == 0);  // not a number: never decided
+    BOOST_TEST(filter::bounds::lines_gap_filter(b, 1, 1, 1, f - p2(-16)) == 1);
+    BOOST_TEST(filter::bounds::lines_gap_filter(b, 1, 1, 1, f + p2(-16)) == -1);
+    BOOST_TEST(filter::bounds::lines_gap_filter(b, 1, 1, 1, f) == 0);
+    BOOST_TEST(filter::bounds::lines_gap_filter(b, 1, 1, 1, std::nextafter(f, 0.0)) == 0);
+    BOOST_TEST(filter::bounds::lines_gap_filter(b, 1, 1, 1, f - 1e-6) == 0);
+    BOOST_TEST(filter::bounds::lines_gap_filter(INFINITY, INFINITY, 1, 1, 1) == 0);  // not a number: never decided
     // Underflow: tiny values are never decided on relative bounds alone.
-    BOOST_TEST(filter::lines_gap_filter(1e-310, 1e-310, 1e-310, 1, 1e-320) == 0);
+    BOOST_TEST(filter::bounds::lines_gap_filter(1e-310, 1e-310, 1e-310, 1, 1e-320) == 0);
+}
+
+// The wrappers: the filter's sign where it is certain, else the exact stage's, each counted once;
+// the exact stage runs only where the filter cannot tell. Values by hand: y = ρ1 + 1 and the line
+// with n·d = 3, h1 = h2 = 1 (gap 3 − ρ1 − ρ2).
+BOOST_AUTO_TEST_CASE(each_filtered_predicate_runs_its_exact_stage_only_when_unsure_and_counts_both) {
+    using filter::Predicate;
+    filter::PredicateStats st;
+    int exact_calls = 0;
+    auto exact = [&](int s) {
+        return [&exact_calls, s] {
+            ++exact_calls;
+            return s;
+        };
+    };
+    BOOST_TEST(filter::curve_side(1, 1, 1, 1, true, exact(7), st) == 1);   // 1 below 2: separated
+    BOOST_TEST(filter::curve_side(1, 1, 1, 3, true, exact(7), st) == -1);  // 3 above 2: overlapping
+    BOOST_TEST(exact_calls == 0);
+    BOOST_TEST(filter::curve_side(1, 1, 1, 2, true, exact(0), st) == 0);   // on the line: the exact stage
+    BOOST_TEST(filter::curve_side(1, 1, 1, 1, false, exact(5), st) == 5);  // not trusted: the exact stage
+    BOOST_TEST(exact_calls == 2);
+    BOOST_TEST(st[Predicate::CurveSide].filtered == 2u);
+    BOOST_TEST(st[Predicate::CurveSide].exact == 2u);
+    const std::vector<double> nd{3}, h1{1}, h2{1};
+    exact_calls = 0;
+    BOOST_TEST(filter::lines_side(nd, h1, h2, 1, 1, exact(7), st) == 1);      // gap 1
+    BOOST_TEST(filter::lines_side(nd, h1, h2, 2, 2, exact(7), st) == -1);     // gap −1
+    BOOST_TEST(filter::lines_side(nd, h1, h2, 1.5, 1.5, exact(0), st) == 0);  // gap 0: exact
+    BOOST_TEST(exact_calls == 1);
+    BOOST_TEST(st[Predicate::LinesGap].filtered == 2u);
+    BOOST_TEST(st[Predicate::LinesGap].exact == 1u);
+    // 2x + 3y − 5 at (1, 1) is 0: exact; at (2, 1) it is 2.
+    exact_calls = 0;
+    BOOST_TEST(filter::half_plane_side(2, 3, 5, 2, 1, exact(7), st) == 1);
+    BOOST_TEST(filter::half_plane_side(2, 3, 5, 1, 1, exact(0), st) == 0);
+    BOOST_TEST(exact_calls == 1);
+    BOOST_TEST(st[Predicate::HalfPlaneSide].filtered == 1u);
+    BOOST_TEST(st[Predicate::HalfPlaneSide].exact == 1u);
 }
 
 BOOST_AUTO_TEST_CASE(curve_query_on_the_curve_and_one_ulp_away) {
@@ -177,16 +215,16 @@ BOOST_AUTO_TEST_CASE(curve_query_on_the_curve_and_one_ulp_away) {
 // ---- 5. GJK's certificates ---------------------------------------------------------------------
 
 BOOST_AUTO_TEST_CASE(quick_certificates_at_their_bounds) {
-    BOOST_TEST(filter::quick_gap_certified(1.1e-14, 1.0));
-    BOOST_TEST(!filter::quick_gap_certified(0.9e-14, 1.0));
-    BOOST_TEST(!filter::quick_gap_certified(1e-300, 1e-300));  // magnitudes below kQuickTiny
-    BOOST_TEST(!filter::quick_gap_certified(NAN, 1.0));
-    BOOST_TEST(filter::quick_cofactor_sign(1.1e-13, 1.0) == 1);
-    BOOST_TEST(filter::quick_cofactor_sign(-1.1e-13, 1.0) == -1);
-    BOOST_TEST(filter::quick_cofactor_sign(0.9e-13, 1.0) == 0);
-    BOOST_TEST(filter::quick_cofactor_sign(0.0, 1.0) == 0);
-    BOOST_TEST(filter::quick_cofactor_sign(1.0, INFINITY) == 0);
-    BOOST_TEST(filter::quick_cofactor_sign(1e-260, 1e-260) == 0);
+    BOOST_TEST(filter::bounds::quick_gap_certified(1.1e-14, 1.0));
+    BOOST_TEST(!filter::bounds::quick_gap_certified(0.9e-14, 1.0));
+    BOOST_TEST(!filter::bounds::quick_gap_certified(1e-300, 1e-300));  // magnitudes below kQuickTiny
+    BOOST_TEST(!filter::bounds::quick_gap_certified(NAN, 1.0));
+    BOOST_TEST(filter::bounds::quick_cofactor_sign(1.1e-13, 1.0) == 1);
+    BOOST_TEST(filter::bounds::quick_cofactor_sign(-1.1e-13, 1.0) == -1);
+    BOOST_TEST(filter::bounds::quick_cofactor_sign(0.9e-13, 1.0) == 0);
+    BOOST_TEST(filter::bounds::quick_cofactor_sign(0.0, 1.0) == 0);
+    BOOST_TEST(filter::bounds::quick_cofactor_sign(1.0, INFINITY) == 0);
+    BOOST_TEST(filter::bounds::quick_cofactor_sign(1e-260, 1e-260) == 0);
 }
 
 // ---- 6. Gauss-map candidate boxes ----------------------------------------------------------------
@@ -259,8 +297,8 @@ BOOST_AUTO_TEST_CASE(scan_support_filter_at_its_bound) {
 // 8. A scaling pair against a part pair's half-plane: at the bound, on either side of a line with
 // thirds (not doubles) for coefficients, exactly on it, and with inputs the filter must not read.
 BOOST_AUTO_TEST_CASE(half_plane_side_at_its_bound) {
-    using filter::half_plane_side_filter;
     using filter::region_double;
+    using filter::bounds::half_plane_side_filter;
     // 1/3 x + 2/3 y >= 1 at (1 + e, 1): f = e/3, exact sign +1 for e > 0, −1 for e < 0.
     const Q a(1, 3), b(2, 3), c(1);
     for (int k : {10, 30, 40, 45, 48, 52, 60, 80}) {

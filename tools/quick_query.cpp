@@ -121,7 +121,7 @@ Verdict QuickScene::classify(double r1, double r2) const {
         const double g = dotd(n, d_) - r1 * h1 - r2 * h2;
         const double scale =
             std::fabs(n[0] * d_[0]) + std::fabs(n[1] * d_[1]) + std::fabs(n[2] * d_[2]) + r1 * m1 + r2 * m2;
-        return filter::quick_gap_certified(g, scale);
+        return filter::bounds::quick_gap_certified(g, scale);
     };
     // The origin strictly inside the tetrahedron: 0 = Σ λ_k w_k with every λ_k > 0, i.e. the four
     // cofactors (−1)^k det(w without k) nonzero and of one sign.
@@ -132,39 +132,43 @@ Verdict QuickScene::classify(double r1, double r2) const {
             for (int m = 0, t = 0; m < 4; ++m)
                 if (m != k) o[t++] = &s[static_cast<size_t>(m)];
             const double det = dotd(o[0]->w, crossd(o[1]->w, o[2]->w)) * (k % 2 ? -1 : 1);
-            const int sk = filter::quick_cofactor_sign(det, permanent(o[0]->W, o[1]->W, o[2]->W));
+            const int sk = filter::bounds::quick_cofactor_sign(det, permanent(o[0]->W, o[1]->W, o[2]->W));
             if (sk == 0) return false;
             if (sign && sk != sign) return false;
             sign = sk;
         }
         return true;
     };
-    bool separated = false, overlapping = false;
-    if (std::isfinite(r1) && std::isfinite(r2) && r1 > 0 && r2 > 0) {
-        D3 v = dotd(d_, d_) > 0 ? negd(d_) : D3{1, 0, 0};
-        std::vector<Pt> s{support(v)};
-        v = negd(s[0].w);
-        for (int iter = 0; iter < filter::kQuickGjkIterations; ++iter) {
-            if (!(dotd(v, v) > 0) || !std::isfinite(dotd(v, v))) break;  // the origin on the simplex: too close to call
-            const Pt p = support(v);
-            if (dotd(p.w, v) < 0) {
-                separated = separates(v);
-                break;
-            }
-            s.push_back(p);
-            if (simplex_step(s, v)) {
-                overlapping = encloses(s);
-                break;
+    // Predicate 5: GJK in doubles certifies a separating plane or a tetrahedron about the origin;
+    // else the exact model decides.
+    auto gjk = [&] {
+        bool separated = false, overlapping = false;
+        if (std::isfinite(r1) && std::isfinite(r2) && r1 > 0 && r2 > 0) {
+            D3 v = dotd(d_, d_) > 0 ? negd(d_) : D3{1, 0, 0};
+            std::vector<Pt> s{support(v)};
+            v = negd(s[0].w);
+            for (int iter = 0; iter < filter::kQuickGjkIterations; ++iter) {
+                if (!(dotd(v, v) > 0) || !std::isfinite(dotd(v, v)))
+                    break;  // the origin on the simplex: too close to call
+                const Pt p = support(v);
+                if (dotd(p.w, v) < 0) {
+                    separated = separates(v);
+                    break;
+                }
+                s.push_back(p);
+                if (simplex_step(s, v)) {
+                    overlapping = encloses(s);
+                    break;
+                }
             }
         }
-    }
-    if (separated || overlapping) {
-        stats.filtered(filter::Predicate::QuickCertificate);
-        return separated ? Verdict::Separated : Verdict::Overlapping;
-    }
-    stats.exact(filter::Predicate::QuickCertificate);
-    if (!model_) model_ = std::make_unique<Model>(build_model(scene_));
-    return query_direct(*model_, exact_from_double(r1), exact_from_double(r2));
+        return separated ? 1 : overlapping ? -1 : 0;
+    };
+    auto exact = [&] {
+        if (!model_) model_ = std::make_unique<Model>(build_model(scene_));
+        return verdict_sign(query_direct(*model_, exact_from_double(r1), exact_from_double(r2)));
+    };
+    return verdict_of_sign(filter::filtered(filter::Predicate::QuickCertificate, gjk, exact, stats));
 }
 
 }  // namespace scalecert::internal

@@ -21,25 +21,15 @@ FastCurve::FastCurve(const Model& m, const TouchingCurve& c) : m_(m), c_(c) {
 }
 
 Verdict FastCurve::classify(double r1, double r2) const {
-    // Predicate 4 (predicates.hpp): the piece by binary search over the breakpoints, unless r1 is
-    // too close to one to be sure; then the side of its line; else the exact query.
-    using filter::Predicate;
+    // Predicate 4 (predicates.hpp): the piece by binary search over the breakpoints, trusted unless
+    // r1 is too close to one to be sure; the side of its line, else the exact query.
     size_t k = static_cast<size_t>(std::upper_bound(breaks_.begin(), breaks_.end(), r1) - breaks_.begin());
-    bool near = (k < breaks_.size() && filter::near_breakpoint(breaks_[k], r1, false)) ||
-                (k > 0 && filter::near_breakpoint(breaks_[k - 1], r1, true));
-    if (!near) {
-        const int side = filter::curve_side_filter(a_[k], b_[k], r1, r2);
-        if (side > 0) {
-            stats.filtered(Predicate::CurveSide);
-            return Verdict::Separated;
-        }
-        if (side < 0) {
-            stats.filtered(Predicate::CurveSide);
-            return Verdict::Overlapping;
-        }
-    }
-    stats.exact(Predicate::CurveSide);
-    return query(m_, c_, exact_from_double(r1), exact_from_double(r2), false).verdict;
+    const bool near = (k < breaks_.size() && filter::bounds::near_breakpoint(breaks_[k], r1, false)) ||
+                      (k > 0 && filter::bounds::near_breakpoint(breaks_[k - 1], r1, true));
+    return verdict_of_sign(filter::curve_side(
+        a_[k], b_[k], r1, r2, !near,
+        [&] { return verdict_sign(query(m_, c_, exact_from_double(r1), exact_from_double(r2), false).verdict); },
+        stats));
 }
 
 FastDirect::FastDirect(const Model& m) : m_(m) {
@@ -52,22 +42,9 @@ FastDirect::FastDirect(const Model& m) : m_(m) {
 
 Verdict FastDirect::classify(double r1, double r2) const {
     // Separated iff some n·d − ρ1 h1 − ρ2 h2 > 0; overlapping iff all < 0 (predicate 4).
-    using filter::Predicate;
-    bool all_negative = true;
-    for (size_t i = 0; i < nd_.size(); ++i) {
-        const int g = filter::lines_gap_filter(nd_[i], h1_[i], h2_[i], r1, r2);
-        if (g > 0) {
-            stats.filtered(Predicate::LinesGap);
-            return Verdict::Separated;
-        }
-        if (g == 0) all_negative = false;
-    }
-    if (all_negative) {
-        stats.filtered(Predicate::LinesGap);
-        return Verdict::Overlapping;
-    }
-    stats.exact(Predicate::LinesGap);
-    return query_direct(m_, exact_from_double(r1), exact_from_double(r2));
+    return verdict_of_sign(filter::lines_side(
+        nd_, h1_, h2_, r1, r2,
+        [&] { return verdict_sign(query_direct(m_, exact_from_double(r1), exact_from_double(r2))); }, stats));
 }
 
 StageCounts classify_batch(const FastCurve& f, const std::vector<double>& r1, const std::vector<double>& r2,

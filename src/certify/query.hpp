@@ -38,6 +38,12 @@ QueryAnswer query(const Model& m, const TouchingCurve& c, const Q& rho1, const Q
 std::pair<Q, size_t> ray_crossing(const Model& m, const TouchingCurve& c, const Q& rho1, const Q& rho2);
 // Without a curve: the maximum over all contact lines (verdict only).
 Verdict query_direct(const Model& m, const Q& rho1, const Q& rho2);
+// A verdict as the sign the predicates give (predicates.hpp): separated +1, touching 0,
+// overlapping −1; and back.
+inline int verdict_sign(Verdict v) { return v == Verdict::Separated ? 1 : v == Verdict::Touching ? 0 : -1; }
+inline Verdict verdict_of_sign(int s) {
+    return s > 0 ? Verdict::Separated : s == 0 ? Verdict::Touching : Verdict::Overlapping;
+}
 
 PlaneCert plane_certificate(const Model& m, size_t line, const Q& rho1, const Q& rho2);
 // A common point at a point on the line's contact (touching) — or, with line = npos, anywhere.

@@ -45,6 +45,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <type_traits>
+#include <vector>
 
 namespace scalecert::internal::filter {
 
@@ -296,6 +297,17 @@ int exact_sign(Small&& small, Gmp&& gmp) {
     return gmp();
 }
 
+// A filtered predicate: the filter's sign when it is certain (nonzero), else the exact stage's,
+// each decision counted under p. Every predicate with a filter and an exact stage is one call of
+// it, so no caller sees the filter's "unsure" nor forgets the exact stage or the count. (The
+// filters alone, in `bounds`, are for their wrappers and the tests of their bounds.)
+template <class Filter, class Exact>
+int filtered(Predicate p, Filter&& filter, Exact&& exact, PredicateStats& st) {
+    if (const int f = filter()) return st.filtered(p), f;
+    st.exact(p);
+    return exact();
+}
+
 // ---- The predicates ---------------------------------------------------------------------------
 
 // 1. n·x in doubles with its error bound (bound 1), for support_cmp.
@@ -309,11 +321,11 @@ inline SupportApprox support_approx(const double* n, const double* x) {
 // Sign of n·x_w − n·x_v: the filter on their approximations, else exact() (the exact sign).
 template <class Exact>
 inline int support_cmp(const SupportApprox& w, const SupportApprox& v, Exact&& exact, PredicateStats& st) {
-    const double diff = w.value - v.value, tol = w.err + v.err;
-    if (diff > tol) return st.filtered(Predicate::SupportCmp), 1;
-    if (diff < -tol) return st.filtered(Predicate::SupportCmp), -1;
-    st.exact(Predicate::SupportCmp);
-    return exact();
+    auto filter = [&] {
+        const double diff = w.value - v.value, tol = w.err + v.err;
+        return diff > tol ? 1 : diff < -tol ? -1 : 0;
+    };
+    return filtered(Predicate::SupportCmp, filter, exact, st);
 }
 
 // 2. Sign of (u × x)·p, or of (x × u)·p when x_first: doubles ud, xd, pd approximating u, x, p as
@@ -322,25 +334,28 @@ inline int support_cmp(const SupportApprox& w, const SupportApprox& v, Exact&& e
 template <class V, class ExactX>
 int arc_side(const D3& ud, const D3& xd, const D3& pd, bool x_first, const V& u, ExactX&& exact_x, const V& p,
              PredicateStats& st) {
-    const D3 c = x_first ? crossd(xd, ud) : crossd(ud, xd);
-    const double v = dotd(c, pd), bound = kArcRel * normd(ud) * normd(xd) * normd(pd);
-    if (v > bound) return st.filtered(Predicate::ArcSide), 1;
-    if (v < -bound) return st.filtered(Predicate::ArcSide), -1;
-    st.exact(Predicate::ArcSide);
-    const V x = exact_x();
-    auto gmp = [&] {
-        const Vec3z xz = as_z(x), uz = as_z(u);
-        return sgn(dotz(x_first ? cross(xz, uz) : cross(uz, xz), as_z(p)));
+    auto filter = [&] {
+        const D3 c = x_first ? crossd(xd, ud) : crossd(ud, xd);
+        const double v = dotd(c, pd), bound = kArcRel * normd(ud) * normd(xd) * normd(pd);
+        return v > bound ? 1 : v < -bound ? -1 : 0;
     };
-    if constexpr (std::is_same_v<V, Vec3s>) {
-        // u × x exactly in 128 bits (|u|, |x| < 2^62), then its dot with p, checked
-        return exact_sign(
-            [&](Acc128& acc) {
-                for (int k = 0; k < 3; ++k) acc.add(x_first ? cross_k(x, u, k) : cross_k(u, x, k), p[k]);
-            },
-            gmp);
-    }
-    return gmp();
+    auto exact = [&] {
+        const V x = exact_x();
+        auto gmp = [&] {
+            const Vec3z xz = as_z(x), uz = as_z(u);
+            return sgn(dotz(x_first ? cross(xz, uz) : cross(uz, xz), as_z(p)));
+        };
+        if constexpr (std::is_same_v<V, Vec3s>) {
+            // u × x exactly in 128 bits (|u|, |x| < 2^62), then its dot with p, checked
+            return exact_sign(
+                [&](Acc128& acc) {
+                    for (int k = 0; k < 3; ++k) acc.add(x_first ? cross_k(x, u, k) : cross_k(u, x, k), p[k]);
+                },
+                gmp);
+        }
+        return gmp();
+    };
+    return filtered(Predicate::ArcSide, filter, exact, st);
 }
 
 // 3. The line y = a_i·x + b_i certainly below y = a_j·x + b_j for every x ≥ 0, from doubles within
@@ -350,6 +365,7 @@ int arc_side(const D3& ud, const D3& xd, const D3& pd, bool x_first, const V& u,
 inline double dominated_lower(double a) { return a - kDominatedRel * std::fabs(a); }  // below the true value
 inline double dominated_upper(double a) { return a + kDominatedRel * std::fabs(a); }  // above it
 
+namespace bounds {
 // 4. A pair (ρ1, ρ2) against the envelope piece y = a·ρ1 + b (nearest doubles of the exact slope
 // and intercept; ρ exact doubles): +1 when certainly below it (separated), −1 certainly above
 // (overlapping), 0 when the filter cannot tell. Bound 4.
@@ -387,6 +403,34 @@ inline int quick_cofactor_sign(double det, double perm) {
     return det > 0 ? 1 : -1;
 }
 
+}  // namespace bounds
+
+// 4. The side of (ρ1, ρ2) against the curve, from the envelope piece y = a·ρ1 + b at ρ1 (trusted:
+// ρ1 not near a breakpoint, so the piece is the one): +1 below it (separated), −1 above
+// (overlapping), else exact() (0 touching). Counted as CurveSide.
+template <class Exact>
+int curve_side(double a, double b, double r1, double r2, bool trusted, Exact&& exact, PredicateStats& st) {
+    return filtered(
+        Predicate::CurveSide, [&] { return trusted ? bounds::curve_side_filter(a, b, r1, r2) : 0; }, exact, st);
+}
+// 4. The side of (ρ1, ρ2) from every contact line (nearest doubles nd, h1, h2 of each): +1 when
+// some line's gap is certainly positive (separated), −1 when every one is certainly negative
+// (overlapping), else exact(). Counted as LinesGap.
+template <class Exact>
+int lines_side(const std::vector<double>& nd, const std::vector<double>& h1, const std::vector<double>& h2, double r1,
+               double r2, Exact&& exact, PredicateStats& st) {
+    auto filter = [&] {
+        bool all_negative = true;
+        for (size_t i = 0; i < nd.size(); ++i) {
+            const int g = bounds::lines_gap_filter(nd[i], h1[i], h2[i], r1, r2);
+            if (g > 0) return 1;
+            if (g == 0) all_negative = false;
+        }
+        return all_negative ? -1 : 0;
+    };
+    return filtered(Predicate::LinesGap, filter, exact, st);
+}
+
 // 7. Exact support on a point cloud: B = Σ|n_k|·max|x_k| (computed), E = kScanSupport·B. A point
 // whose computed value is below best − 2E, and a box whose computed bound is below best − 4E,
 // holds no maximiser (bound 7); the candidates left are compared exactly by the caller, who
@@ -399,6 +443,7 @@ struct ScanSupportFilter {
     bool box_excluded(double ub, double best) const { return ub < best - 4 * E; }
 };
 
+namespace bounds {
 // 8. The sign of a·x + b·y − c from region_double values (bound 8), 0 when uncertain (or not a
 // number); the caller decides those exactly and counts both stages.
 inline int half_plane_side_filter(double a, double b, double c, double x, double y) {
@@ -409,13 +454,12 @@ inline int half_plane_side_filter(double a, double b, double c, double x, double
     if (f < -err) return -1;
     return 0;
 }
+}  // namespace bounds
 // 8. The sign of a·x + b·y − c: the filter on the doubles, else exact() (the exact sign), counted.
 template <class Exact>
 inline int half_plane_side(double a, double b, double c, double x, double y, Exact&& exact, PredicateStats& st) {
-    const int f = half_plane_side_filter(a, b, c, x, y);
-    if (f) return st.filtered(Predicate::HalfPlaneSide), f;
-    st.exact(Predicate::HalfPlaneSide);
-    return exact();
+    return filtered(
+        Predicate::HalfPlaneSide, [&] { return bounds::half_plane_side_filter(a, b, c, x, y); }, exact, st);
 }
 // 9. Doubles lo <= S + R(X − S) <= hi from the region_double values s, ρ, x of S, R, X (bound 9);
 // both not a number when the doubles cannot enclose it.

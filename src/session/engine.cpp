@@ -121,9 +121,7 @@ class PartsEngine final : public SceneEngine {
     scalecert::QueryResult query(const Q& r1, const Q& r2) override {
         return {verdict(r1, r2), std::nullopt, std::nullopt};
     }
-    std::string verdict_document(const Q& r1, const Q& r2) override {
-        return session().verdict_certificate(r1, r2);
-    }
+    std::string verdict_document(const Q& r1, const Q& r2) override { return session().verdict_certificate(r1, r2); }
     std::string partition_document() override { return dump(session().partition_json()); }
     std::vector<Verdict> classify(const std::vector<double>& rho1, const std::vector<double>& rho2, unsigned threads,
                                   const std::string& source, std::optional<StageCounts>*) override {

@@ -44,7 +44,8 @@ class SceneEngine {
     // names the pairs in errors. *counts, when given, gets how many were decided by the filter
     // and how many exactly, where the engine counts them (else it stays empty).
     virtual std::vector<Verdict> classify(const std::vector<double>& rho1, const std::vector<double>& rho2,
-                                          unsigned threads, const std::string& source, std::optional<StageCounts>* counts) = 0;
+                                          unsigned threads, const std::string& source,
+                                          std::optional<StageCounts>* counts) = 0;
     // max over P1(ρ1) of n·x and min over P2(ρ2), every part of each (check_plane).
     virtual std::pair<Q, Q> plane_extents(const Vec3q& n, const Q& rho1, const Q& rho2) = 0;
     // The claim rules of this kind of object, at these tolerances (they refer to the engine).
