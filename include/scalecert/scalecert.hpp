@@ -182,6 +182,7 @@ enum class ClaimKind { Verdict, SeparatingPlane, WitnessPoint, Distance, Penetra
 // A claimed verdict: one of the exact three, or intersecting (overlapping or touching: what a
 // collision test that answers yes or no claims).
 enum class ClaimedVerdict { Separated, Touching, Overlapping, Intersecting };
+const char* name(ClaimedVerdict v);  // name(Verdict)'s words, and "intersecting"
 struct Claim {
     ClaimKind kind = ClaimKind::Distance;
     Rational rho1 = 1, rho2 = 1;

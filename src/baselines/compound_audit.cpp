@@ -275,7 +275,7 @@ std::vector<AuditRow> audit_compound(const std::string& name, const ExactScene& 
                     auto& E = pair_depths[{i, c.part1, c.part2}];
                     if (!E) {
                         const MeasuredDepth m = judge.pair_depth(c.part1, c.part2, a, bb);
-                        E = m.state == MeasuredDepth::Overlapping && m.depth ? m.depth->squared : Q(-1);
+                        E = m.state == Verdict::Overlapping && m.depth ? m.depth->squared : Q(-1);
                     }
                     if (sgn(*E) <= 0) {
                         ++row.contacts_apart;

@@ -1,5 +1,7 @@
 #include "campaign/audit_table.hpp"
 
+#include "certify/claim.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -8,11 +10,11 @@ namespace scalecert::internal {
 
 const char* AuditRow::said_word(int said) {
     switch (said) {
-    case kSaidSeparated: return "separated";
-    case kSaidTouching: return "touching";
-    case kSaidIntersecting: return "intersecting";
+    case kSaidSeparated: return claimed_name(Claimed::Separated);
+    case kSaidTouching: return claimed_name(Claimed::Touching);
+    case kSaidIntersecting: return claimed_name(Claimed::Intersecting);
     case kSaidNoAnswer: return "no answer";
-    default: return "overlapping";
+    default: return claimed_name(Claimed::Overlapping);
     }
 }
 
@@ -196,13 +198,12 @@ Json audit_json(const std::vector<AuditRow>& rows, bool timing) {
                                         {"moved", ob->moved},
                                         {"moved_wrong", ob->moved_wrong}};
             if (!r.failures.empty()) {
-                static const char* const exact_name[3] = {"separated", "touching", "overlapping"};
                 Json fs = Json::array();
                 for (const AuditRow::Failure& f : r.failures) {
                     Json fj{{"rho1", f.rho1},
                             {"rho2", f.rho2},
                             {"said", AuditRow::said_word(f.said)},
-                            {"exact", exact_name[f.exact]}};
+                            {"exact", verdict_name(static_cast<Verdict>(f.exact))}};
                     if (f.said == AuditRow::kSaidNoAnswer) {
                         fj["reason"] = f.reason;
                         fj["claim"] = f.claim.empty() ? Json() : Json::parse(f.claim);

@@ -636,7 +636,7 @@ void describe(const TypedClaim& c, const Judged& g, const ExactScene* parts, Jso
                  std::to_string(g.part2) + name_of(*parts, 1, g.part2);
         }
         if (!g.exact_squared) {
-            o["exact_verdict"] = "separated";
+            o["exact_verdict"] = verdict_name(Verdict::Separated);
             put_exact(o, "claimed", c.value);
             text = "penetration depth" + of + " at " + at(c) + ": claimed " + num(c.value) + ", but the " +
                    (of.empty() ? "pair is" : "parts are") + " separated";

@@ -415,11 +415,11 @@ int longest_axis(int b, int n, Ok ok) {
 }
 }  // namespace
 
-CompoundJudge::Verdict CompoundJudge::verdict(const Q& r1, const Q& r2, Json* proof) {
+CompoundVerdict CompoundJudge::verdict(const Q& r1, const Q& r2, Json* proof) {
     const int m = static_cast<int>(parts_[0].size()), n = static_cast<int>(parts_[1].size());
     ScaledParts X(*this, 0, r1, counts_.box_comparisons), Y(*this, 1, r2, counts_.box_comparisons);
     std::vector<PlaneBlock> blocks;
-    Verdict v;
+    CompoundVerdict v;
     const auto [c, side] = apart(X, X.all(), Y, Y.all());
     if (c >= 0) {
         blocks.push_back({0, m - 1, 0, n - 1, axis_code(c, side), {}});
@@ -476,7 +476,7 @@ CompoundJudge::Verdict CompoundJudge::verdict(const Q& r1, const Q& r2, Json* pr
 }
 
 CompoundJudge::Distance CompoundJudge::distance(const Q& r1, const Q& r2, Json* proof) {
-    const Verdict v = verdict(r1, r2);
+    const CompoundVerdict v = verdict(r1, r2);
     if (v.verdict != scalecert::Verdict::Separated) {
         // They meet: a common point of the deciding pair.
         long fallbacks = 0;

@@ -52,11 +52,7 @@ class CompoundJudge {
     // `proof`: {"verdict", and by verdict "blocks" (separated, touching), "pair" and "witness"
     // (touching: a common point of that pair) or "pair" and "interior" (overlapping: a point
     // inside both parts, every listed weight > 0 on points spanning 3 dimensions)}.
-    struct Verdict {
-        scalecert::Verdict verdict = scalecert::Verdict::Separated;
-        int part1 = -1, part2 = -1;
-    };
-    Verdict verdict(const Q& rho1, const Q& rho2, Json* proof = nullptr);
+    CompoundVerdict verdict(const Q& rho1, const Q& rho2, Json* proof = nullptr);
 
     // The exact squared distance between the objects (the least over the part pairs; 0 when they
     // meet) with closest points p ∈ P1(ρ1), q ∈ P2(ρ2) and their parts. With `proof`: {"squared",

@@ -142,8 +142,8 @@ Json distance_proof(const Model* m, const ExactDistance& e, const Q& rho1, const
 }
 
 Json depth_proof(const Model* m, const MeasuredDepth& d, const Q& rho1, const Q& rho2) {
-    if (d.state == MeasuredDepth::Separated) return Json{{"separated", normal_json(d.normal)}};
-    if (d.state == MeasuredDepth::Touching) {
+    if (d.state == Verdict::Separated) return Json{{"separated", normal_json(d.normal)}};
+    if (d.state == Verdict::Touching) {
         const Json common = distance_proof(m, d.distance, rho1, rho2);
         return Json{{"squared", "0"},
                     {"direction", normal_json(d.normal)},

@@ -29,10 +29,10 @@ const char* type_name(ClaimType t) {
 
 const char* claimed_name(Claimed v) {
     switch (v) {
-    case Claimed::Separated: return "separated";
-    case Claimed::Touching: return "touching";
-    case Claimed::Overlapping: return "overlapping";
-    case Claimed::Intersecting: return "intersecting";
+    case Claimed::Separated: return verdict_name(Verdict::Separated);
+    case Claimed::Touching: return verdict_name(Verdict::Touching);
+    case Claimed::Overlapping: return verdict_name(Verdict::Overlapping);
+    case Claimed::Intersecting: return "intersecting";  // the one claimed verdict that is not an exact one
     }
     return "";
 }
@@ -188,12 +188,12 @@ namespace {
 // along it, along(n) (moving P2 that far along n separates them exactly iff n attains the least).
 void depth_rule(const TypedClaim& c, const MeasuredDepth& md, const Tolerance& tol, Judged& g,
                 const std::function<Q(const Vec3q&)>& along) {
-    if (md.state == MeasuredDepth::Separated) {
+    if (md.state == Verdict::Separated) {
         g.exact_verdict = Verdict::Separated;
         g.right = false;
         return;
     }
-    g.exact_squared = md.state == MeasuredDepth::Touching ? Q(0) : md.depth->squared;
+    g.exact_squared = md.state == Verdict::Touching ? Q(0) : md.depth->squared;
     g.exact_direction = md.normal;
     g.value_right = tol.close_sq(c.value, *g.exact_squared);
     g.right = *g.value_right;
@@ -237,12 +237,7 @@ struct ConvexRules::Impl {
     // The exact verdict; at poses, the depth's.
     Verdict exact_verdict(const Q& r1, const Q& r2) {
         if (!posed) return models.verdict(r1, r2);
-        return verdict_of(depth_of(r1, r2));
-    }
-    static Verdict verdict_of(const MeasuredDepth& md) {
-        return md.state == MeasuredDepth::Separated  ? Verdict::Separated
-               : md.state == MeasuredDepth::Touching ? Verdict::Touching
-                                                     : Verdict::Overlapping;
+        return depth_of(r1, r2).state;
     }
 
     // Whether x is in P1(ρ1) and y in P2(ρ2) (or, at an absolute tolerance, within it of them),
@@ -346,15 +341,15 @@ struct ConvexRules::Impl {
     void verdict(const TypedClaim& c, Judged& g, Proof* proof) {
         if (posed && !proof) {
             // Without a certificate, the verdict alone where a few support queries prove it.
-            if (const std::optional<MeasuredDepth::State> v = proved_verdict(*posed, c.rho1, c.rho2)) {
-                g.exact_verdict = *v == MeasuredDepth::Separated ? Verdict::Separated : Verdict::Overlapping;
+            if (const std::optional<Verdict> v = proved_verdict(*posed, c.rho1, c.rho2)) {
+                g.exact_verdict = *v;
                 g.right = verdict_matches(c.verdict, *g.exact_verdict);
                 return;
             }
         }
         if (posed) {
             const MeasuredDepth md = depth_of(c.rho1, c.rho2);
-            g.exact_verdict = verdict_of(md);
+            g.exact_verdict = md.state;
             g.right = verdict_matches(c.verdict, *g.exact_verdict);
             if (proof) proof->proof = Json{{"depth", depth_proof(nullptr, md, c.rho1, c.rho2)}};
             return;
@@ -719,7 +714,7 @@ Judged PartsRules::judge(const TypedClaim& c, Proof* proof) {
     }
     switch (c.type) {
     case ClaimType::Verdict: {
-        const CompoundJudge::Verdict e = judge_.verdict(c.rho1, c.rho2, p);
+        const CompoundVerdict e = judge_.verdict(c.rho1, c.rho2, p);
         g.exact_verdict = e.verdict;
         g.part1 = e.part1;
         g.part2 = e.part2;

@@ -518,7 +518,7 @@ std::optional<ProvedDepth> proved_depth(const Bodies& m, const Q& rho1, const Q&
     return proved_depth(HullPoints(m), rho1, rho2);
 }
 
-std::optional<MeasuredDepth::State> proved_verdict(const PointSets& S, const Q& rho1, const Q& rho2) {
+std::optional<Verdict> proved_verdict(const PointSets& S, const Q& rho1, const Q& rho2) {
     const GjkGuess g = gjk_guess(S, to_double_rn(rho1), to_double_rn(rho2));
     if (g.distance > 0) {
         if (!std::isfinite(g.closest[0]) || !std::isfinite(g.closest[1]) || !std::isfinite(g.closest[2]))
@@ -530,7 +530,7 @@ std::optional<MeasuredDepth::State> proved_verdict(const PointSets& S, const Q& 
         if (is_zero(n)) return std::nullopt;
         const DifferenceGrid grid(S, rho1, rho2);
         // h_M(n) = n·(v_i − w_j) with v_i maximising n over P1(ρ1), w_j minimising it over P2(ρ2).
-        if (sgn(dotz(n, grid.point(S.argmax(0, n), S.argmax(1, neg(n))))) < 0) return MeasuredDepth::Separated;
+        if (sgn(dotz(n, grid.point(S.argmax(0, n), S.argmax(1, neg(n))))) < 0) return Verdict::Separated;
         return std::nullopt;
     }
     if (g.simplex.size() != 4) return std::nullopt;
@@ -550,7 +550,7 @@ std::optional<MeasuredDepth::State> proved_verdict(const PointSets& S, const Q& 
         const int side = orient(z[f[0]], z[f[1]], z[f[2]], z[f[3]]);
         if (side == 0 || orient(z[f[0]], z[f[1]], z[f[2]], o) != side) return std::nullopt;
     }
-    return MeasuredDepth::Overlapping;
+    return Verdict::Overlapping;
 }
 
 std::optional<MeasuredDepth> measured_depth(const PointSets& S, const Q& rho1, const Q& rho2, int max_rounds) {
@@ -567,7 +567,7 @@ std::optional<MeasuredDepth> measured_depth(const PointSets& S, const Q& rho1, c
     // and the proved distance (0) names a common point.
     MeasuredDepth r;
     if ((r.depth = guessed_depth(S, rho1, rho2, g))) {
-        r.state = MeasuredDepth::Overlapping;
+        r.state = Verdict::Overlapping;
         r.normal = r.depth->direction;
         return r;
     }
@@ -576,18 +576,18 @@ std::optional<MeasuredDepth> measured_depth(const PointSets& S, const Q& rho1, c
     r.depth = epa_depth(S, rho1, rho2, &supporting, &off);
     r.normal = r.depth ? r.depth->direction : supporting;
     if (r.depth) {
-        r.state = MeasuredDepth::Overlapping;
+        r.state = Verdict::Overlapping;
         return r;
     }
     if (sgn(off) < 0) {
-        r.state = MeasuredDepth::Separated;
+        r.state = Verdict::Separated;
         return r;
     }
     const std::optional<ProvedDistance> pd = proved_distance(S, rho1, rho2, max_rounds);
     if (!pd) return std::nullopt;
     if (sgn(pd->d.squared) != 0)
         throw std::logic_error("measured_depth: a supporting plane through the origin, and the bodies apart");
-    r.state = MeasuredDepth::Touching;
+    r.state = Verdict::Touching;
     r.distance = pd->d;
     return r;
 }
@@ -596,13 +596,13 @@ MeasuredDepth depth_from_distance(const PointSets& S, const ExactDistance& dist,
     MeasuredDepth r;
     r.distance = dist;
     if (sgn(dist.squared) > 0) {  // apart: the slab's direction separates
-        r.state = MeasuredDepth::Separated;
+        r.state = Verdict::Separated;
         r.normal = primitive(sub(dist.p2, dist.p1));
         return r;
     }
     Vec3z supporting;
     r.depth = epa_depth(S, rho1, rho2, &supporting);
-    r.state = r.depth ? MeasuredDepth::Overlapping : MeasuredDepth::Touching;
+    r.state = r.depth ? Verdict::Overlapping : Verdict::Touching;
     r.normal = r.depth ? r.depth->direction : supporting;
     return r;
 }

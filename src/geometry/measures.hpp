@@ -100,7 +100,7 @@ std::optional<ProvedDepth> exact_epa(const PointSets& S, const Q& rho1, const Q&
 // exact EPA: its nearest plane strictly beyond the origin gives the depth (Overlapping), through
 // the origin a supporting plane of M (Touching: depth 0). None when the distance's rounds run out.
 struct MeasuredDepth {
-    enum State { Separated, Touching, Overlapping } state = Separated;
+    Verdict state = Verdict::Separated;
     Vec3z normal;                      // separating, supporting, or the depth's direction
     ExactDistance distance;            // the proved distance (weights of its closest points)
     std::optional<ProvedDepth> depth;  // Overlapping
@@ -113,7 +113,7 @@ std::optional<MeasuredDepth> measured_depth(const PointSets& S, const Q& rho1, c
 // integers) lies strictly below 0 (n separates: Separated); meeting, the origin lies strictly
 // inside the final tetrahedron of points of M (exact orientation signs: inside M's interior,
 // Overlapping). None otherwise (touching, or too near it for the doubles): measured_depth decides.
-std::optional<MeasuredDepth::State> proved_verdict(const PointSets& S, const Q& rho1, const Q& rho2);
+std::optional<Verdict> proved_verdict(const PointSets& S, const Q& rho1, const Q& rho2);
 // Its second half, from an exact distance found otherwise.
 MeasuredDepth depth_from_distance(const PointSets& S, const ExactDistance& dist, const Q& rho1, const Q& rho2);
 // The squared directional depth along n: (ρ1 h1(n) + ρ2 h2(n) − n·d)² / |n|², signed negative

@@ -45,6 +45,7 @@ Rational held(double x, Numbers numbers) {
 std::string to_string(const Rational& q) { return to_exact_string(q); }
 
 const char* name(Verdict v) { return verdict_name(v); }
+const char* name(ClaimedVerdict v) { return claimed_name(v); }
 const char* name(ContactKind k) {
     static const char* const names[] = {"VV", "VE", "VF", "EV", "EE", "EF", "FV", "FE", "FF"};
     return names[static_cast<int>(k)];

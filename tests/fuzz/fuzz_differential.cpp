@@ -90,10 +90,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
             fuzz::finding("EPA depth differs from the enumeration at (" + r1.get_str() + ", " + r2.get_str() + ")");
         // What certify-fp runs for a depth: its state must be the verdict, its depth the enumeration's.
         const std::optional<MeasuredDepth> md = measured_depth(HullPoints(m), r1, r2);
-        const MeasuredDepth::State st = r.verdict == Verdict::Separated  ? MeasuredDepth::Separated
-                                        : r.verdict == Verdict::Touching ? MeasuredDepth::Touching
-                                                                         : MeasuredDepth::Overlapping;
-        if (md && (md->state != st || (st == MeasuredDepth::Overlapping && md->depth->squared != e.squared)))
+        const Verdict st = r.verdict;
+        if (md && (md->state != st || (st == Verdict::Overlapping && md->depth->squared != e.squared)))
             fuzz::finding("measured depth differs from the verdict or the enumeration at (" + r1.get_str() + ", " +
                           r2.get_str() + ")");
         claims += std::string(first ? "" : ", ") + "{\"kind\": \"distance\", \"rho1\": \"" + r1.get_str() +
