@@ -23,16 +23,34 @@ run() {  # NAME COMMAND...: stdout, stderr and the exit status in NAME.*
     "$@" >"$out/$name.out" 2>"$out/$name.err" </dev/null
     echo $? >"$out/$name.rc"
 }
-for f in certificates/scenes/*.json certificates/scenes/compound/*.json tests/data/*.json; do
+# A scene the walk answers by default (2,000 points and more): integer points near two spheres.
+python3 - "$work/walked.json" <<'PY'
+import json, math, random, sys
+rng = random.Random(7)
+def cloud(cx, n):
+    pts = []
+    for _ in range(n):
+        z, t = rng.uniform(-1, 1), rng.uniform(0, 2 * math.pi)
+        r = math.sqrt(1 - z * z)
+        pts.append([round(1000 * (cx + r * math.cos(t))), round(1000 * r * math.sin(t)), round(1000 * z)])
+    return pts
+json.dump({"P1": {"vertices": cloud(0, 1200)}, "P2": {"vertices": cloud(2.5, 1200)},
+           "I1": ["1/2", "2"], "I2": ["1/2", "2"]}, open(sys.argv[1], "w"))
+PY
+for f in certificates/scenes/*.json certificates/scenes/compound/*.json tests/data/*.json "$work/walked.json"; do
     case $f in *_claims.json) continue ;; esac
-    n=$(echo "$f" | tr '/' '_')
+    n=$(echo "${f#"$work"/}" | tr '/' '_')
     run "$n.curve" "$sc" curve "$f"
     run "$n.partition" "$sc" partition "$f"
     run "$n.region" "$sc" region "$f"
+    run "$n.curve-scan" "$sc" curve "$f" --engine scan
+    run "$n.partition-scan" "$sc" partition "$f" --engine scan
+    run "$n.partition-hull" "$sc" partition "$f" --engine hull
     for p in "1 1" "3/2 3/2" "1 19/10" "1/2 2"; do
         set -- $p
         run "$n.query.$1_$2" "$sc" query "$f" "$1" "$2"
         run "$n.query.$1_$2.json" "$sc" query "$f" "$1" "$2" --json
+        run "$n.query.$1_$2.scan.json" "$sc" query "$f" "$1" "$2" --json --engine scan
     done
     printf '%s' "$pairs" >"$work/pairs.txt"
     run "$n.classify" "$sc" classify "$f" "$work/pairs.txt"
