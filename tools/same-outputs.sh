@@ -46,6 +46,10 @@ for f in certificates/scenes/*.json certificates/scenes/compound/*.json tests/da
     run "$n.curve-scan" "$sc" curve "$f" --engine scan
     run "$n.partition-scan" "$sc" partition "$f" --engine scan
     run "$n.partition-hull" "$sc" partition "$f" --engine hull
+    run "$n.curve-segment" "$sc" curve "$f" --segment seeds
+    run "$n.query-segment" "$sc" query "$f" 1 1 --segment seeds
+    run "$n.query-segment.json" "$sc" query "$f" 1 1 --segment ellipsoids --json
+    run "$n.query-in-t" "$sc" query "$f" 1/2 1/2 --in-t
     for p in "1 1" "3/2 3/2" "1 19/10" "1/2 2"; do
         set -- $p
         run "$n.query.$1_$2" "$sc" query "$f" "$1" "$2"

@@ -218,24 +218,9 @@ Json curve_body(const Model& m, const TouchingCurve& c, bool certificate) {
 }  // namespace
 
 void put_exact(Json& o, const std::string& key, const Q& q) { put(o, key, q); }
+void put_exact(Json& o, const std::string& key, const std::vector<Q>& qs) { put(o, key, qs); }
+void put_exact(Json& o, const std::string& key, const Vec3q& v) { put(o, key, v); }
 Json document_scene(const Model& m) { return scene_json_for(m); }
-
-Json scene_json(const ExactScene& sc) {
-    Json s;
-    const char* names[2] = {"P1", "P2"};
-    for (int i = 0; i < 2; ++i) {
-        Json verts = Json::array();
-        for (const Vec3q& v : sc.P[i].points)
-            verts.push_back(Json::array({to_exact_string(v[0]), to_exact_string(v[1]), to_exact_string(v[2])}));
-        const Vec3q& sd = sc.P[i].seed;
-        s[names[i]] =
-            Json{{"vertices", verts},
-                 {"seed", Json::array({to_exact_string(sd[0]), to_exact_string(sd[1]), to_exact_string(sd[2])})}};
-    }
-    s["I1"] = Json::array({to_exact_string(sc.lo[0]), to_exact_string(sc.hi[0])});
-    s["I2"] = Json::array({to_exact_string(sc.lo[1]), to_exact_string(sc.hi[1])});
-    return s;
-}
 
 Json curve_json(const Model& m, const TouchingCurve& c) { return curve_body(m, c, false); }
 
@@ -350,101 +335,6 @@ Json partition_json(const Model& m, const TouchingCurve& c, const Partition& p) 
     j["scene"] = scene_json_for(m);
     return j;
 }
-
-double scaled_length(const Vec3q& v1, const Vec3q& v2, const Q& g) {
-    Vec3q e = sub(v2, v1);
-    Q len2 = dot(e, e);
-    mpfr_t x, y;
-    mpfr_inits2(256, x, y, static_cast<mpfr_ptr>(nullptr));
-    mpfr_set_q(x, len2.get_mpq_t(), MPFR_RNDN);
-    mpfr_sqrt(x, x, MPFR_RNDN);
-    mpfr_set_q(y, g.get_mpq_t(), MPFR_RNDN);
-    mpfr_mul(x, x, y, MPFR_RNDN);
-    double d = mpfr_get_d(x, MPFR_RNDN);
-    mpfr_clears(x, y, static_cast<mpfr_ptr>(nullptr));
-    return d;
-}
-
-namespace {
-Json pieces_json(const std::vector<LinearPiece>& f) {
-    Json a = Json::array();
-    for (const LinearPiece& p : f) {
-        Json o;
-        put(o, "rho", std::vector<Q>{p.from, p.to});
-        put(o, "slope", p.slope);
-        put(o, "intercept", p.intercept);
-        a.push_back(o);
-    }
-    return a;
-}
-}  // namespace
-
-namespace {
-Json segment_head(const Segment& s) {
-    Json seg;
-    seg["kind"] = s.kind;
-    if (!s.note.empty()) seg["note"] = s.note;
-    put(seg, "from", s.v1);
-    put(seg, "to", s.v2);
-    if (s.path) {  // floating point: the ellipsoids themselves are not certified, the ends are checked
-        Json es;
-        const char* names[2] = {"P1", "P2"};
-        for (int i = 0; i < 2; ++i)
-            es[names[i]] = Json{{"center", s.path->E[i].center}, {"matrix", s.path->E[i].matrix}};
-        es["distance_double"] = s.path->distance;
-        seg["inner_ellipsoids"] = es;
-    }
-    return seg;
-}
-}  // namespace
-
-void add_segment_json(Json& j, const HullModel& m, const TouchingCurve& c, const Segment& s) {
-    Json seg = segment_head(s);
-    seg["t1"] = pieces_json(s.t[0]);
-    seg["t2"] = pieces_json(s.t[1]);
-    j["segment"] = seg;
-    Json tc = Json::array(), tcd = Json::array();
-    for (const auto& p : t_curve(m, c, s)) {
-        tc.push_back(Json::array({to_exact_string(p[0]), to_exact_string(p[1])}));
-        tcd.push_back(Json::array({to_double_rn(p[0]), to_double_rn(p[1])}));
-    }
-    j["t_curve"] = tc;
-    j["t_curve_double"] = tcd;
-    // Contact loci: the common point at each curve vertex (the contact point moves linearly
-    // between them on (V,F), (F,V) and (E,E) pieces).
-    Json loci = Json::array();
-    for (const auto& v : curve_vertices(m, c)) {
-        size_t line = c.env.pieces[c.env.locate(v[0])].line;
-        loci.push_back(witness_json(make_witness(m, v[0], v[1], line)));
-    }
-    j["contact_loci"] = loci;
-    Json faces;
-    const char* names[2] = {"P1", "P2"};
-    for (int i = 0; i < 2; ++i) {
-        Json fs = Json::array();
-        for (const Face& f : m.P[i].faces) fs.push_back(f.verts);
-        faces[names[i]] = fs;
-    }
-    j["faces"] = faces;
-    j["scene"] = scene_json(m.scene);
-}
-
-void add_query_segment_json(Json& j, const Segment& s, const Q& rho1, const Q& rho2) {
-    Json seg = segment_head(s);
-    put(seg, "t1", eval(s.t[0], rho1));
-    put(seg, "t2", eval(s.t[1], rho2));
-    Q g = directional_gap(s, rho1, rho2);
-    put(seg, "gap_fraction", g);
-    seg["gap_distance_double"] = scaled_length(s.v1, s.v2, g);
-    seg["gap_meaning"] = g > 0   ? "gap along the segment"
-                         : g < 0 ? "penetration along the segment"
-                                 : "contact on the segment";
-    j["segment"] = seg;
-}
-
-// (A string of invalid UTF-8 — a file name or a command as the user gave them — is written with
-// U+FFFD for each bad byte, not refused: the text is the user's, the document ours.)
-std::string dump(const Json& j) { return j.dump(1, ' ', false, Json::error_handler_t::replace) + "\n"; }
 
 std::string document_text(const Model& m, const Json& j) {
     std::string text = dump(j);

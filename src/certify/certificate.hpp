@@ -2,19 +2,14 @@
 // format, described field by field in certificates/FORMAT.md).
 #pragma once
 #include "certify/partition.hpp"
-#include "segment/segment.hpp"
-
-#include <nlohmann/json.hpp>
+#include "io/json.hpp"
 
 namespace scalecert::internal {
 
-using Json = nlohmann::ordered_json;
-
-// The scene exactly, in the scene-file format (every number an exact string, seeds explicit).
-Json scene_json(const ExactScene& s);
-
-// o[key] = exact string, o[key + "_double"] = nearest double.
+// o[key] = exact string, o[key + "_double"] = nearest double (for a list or a point, each).
 void put_exact(Json& o, const std::string& key, const Q& q);
+void put_exact(Json& o, const std::string& key, const std::vector<Q>& qs);
+void put_exact(Json& o, const std::string& key, const Vec3q& v);
 
 Json curve_json(const Model& m, const TouchingCurve& c);
 // Pieces of the documents, for the judgements certificate (judgements.cpp): a query answer's
@@ -31,16 +26,6 @@ Json partition_json(const Model& m, const TouchingCurve& c, const Partition& p);
 // {"rho1": [a, b], "pieces", "switch_points", "curve_ends"} in a partition's form, with witnesses.
 Json curve_proof_json(const Model& m, const TouchingCurve& c, const CurveWitnesses& w);
 
-// Adds the segment, t1/t2 pieces, the t-plane curve, the contact loci and the hull faces (for
-// figures) to a curve document.
-void add_segment_json(Json& j, const HullModel& m, const TouchingCurve& c, const Segment& s);
-// Adds t1, t2 and the directional gap to a query document.
-void add_query_segment_json(Json& j, const Segment& s, const Q& rho1, const Q& rho2);
-// |v2 − v1|·g to the nearest double (MPFR at 256 bits, then rounded).
-double scaled_length(const Vec3q& v1, const Vec3q& v2, const Q& g);
-
-// Serialises with a trailing newline; byte-identical for identical input.
-std::string dump(const Json& j);
 // A query answer's or partition's text: dump(j), with the scene's points written in on the walk
 // (whose documents hold placeholders for them). Use it for every document from query_json and
 // partition_json.

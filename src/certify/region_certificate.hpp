@@ -19,13 +19,6 @@
 
 namespace scalecert::internal {
 
-// The scene with every object as a list of parts (a plain object is one part), as the compound
-// certificates state it (without the parts' names: the checker reads these); with_names: each
-// named part with its "name", as a scene file gives it.
-Json compound_scene_json(const ExactScene& sc, bool with_names = false);
-// A scene's file: scene_json for two convex objects, compound_scene_json with the parts' names when
-// one is made of parts (read back, it gives the same scene and so the same bytes).
-Json scene_file_json(const ExactScene& sc);
 // The compound judgements document (kind "compound_judgements", FORMAT.md): certify-fp's proofs on
 // objects made of parts, as text.
 std::string compound_judgements_text(const ExactScene& sc, const Q& tolerance, const Q& abs_tolerance, Json judgements);

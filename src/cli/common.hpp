@@ -2,6 +2,7 @@
 // registers its options and returns the function that runs it.
 #pragma once
 #include "certify/certificate.hpp"
+#include "segment/segment.hpp"
 #include "session/engine.hpp"
 #include "numeric/timing.hpp"
 

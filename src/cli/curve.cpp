@@ -1,5 +1,6 @@
 // scalecert curve: the touching curve over I1, its switch points and the growth distance.
 #include "common.hpp"
+#include "segment/segment_json.hpp"
 
 namespace scalecert::cli {
 

@@ -1,5 +1,6 @@
 // scalecert query: separated / touching / overlapping at one scaling pair, with its certificate.
 #include "common.hpp"
+#include "segment/segment_json.hpp"
 
 namespace scalecert::cli {
 
