@@ -12,6 +12,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <variant>
 #include <vector>
 
 namespace scalecert::internal {
@@ -74,36 +75,31 @@ struct ExactSwitch {
     std::string label;
 };
 
-// A judgement: right or wrong, each part of the claim judged, and the exact values it rests on.
-// Which fields are set follows the claim's type (and, for parts, the part numbers).
-struct Judged {
-    bool right = false;
-    std::optional<bool> value_right, closest_right, direction_right, contact_right;
-    // Verdict, Witness, and Depth of a separated pair: the exact verdict; on parts, the pair that
-    // decides it (−1 when separated).
-    std::optional<Verdict> exact_verdict;
-    int part1 = -1, part2 = -1;
-    Q rho2_minus_curve;  // Verdict on convex objects: ρ2 − f(ρ1)
-    Q exact;             // Growth: ρ*; CurvePoint: f(ρ1)
-    // Distance and Depth: the exact squared value (Depth: none when separated), the exact closest
-    // points and the pair they lie in (parts), the depth's exact direction.
-    std::optional<Q> exact_squared;
-    Vec3q exact_p1{}, exact_p2{};
-    Vec3z exact_direction{};
-    // Witness and the closest points: in P1, in P2; on parts, the part holding each (−1: none).
-    bool in1 = false, in2 = false;
-    int in_part1 = -1, in_part2 = -1;
-    bool near1 = false, near2 = false;  // in1, in2 by the absolute tolerance: outside, within it
-    Q closest_squared;                  // |q − p|² of the claimed closest points
-    Q along;                            // Depth: the squared depth along the claimed direction
-    Q c1, c2;                           // Plane: max over P1(ρ1) of n·x, min over P2(ρ2)
-    // SwitchPoint: the exact switch point matched (or the nearest in ρ1), none when the proved
-    // range has none; that range (whole: the whole curve).
+// A judgement: right or wrong, and by the claim's kind the parts of the claim judged and the exact
+// values they rest on (one type per kind below). On objects made of parts, part1 and part2 name the
+// part pair the exact answer rests on (a verdict's deciding pair, a distance's closest pair, a
+// depth's pair; −1 for none).
+struct VerdictJudged {
+    Verdict exact = Verdict::Separated;
+    Q rho2_minus_curve;  // on convex objects: ρ2 − f(ρ1)
+};
+struct GrowthJudged {
+    Q exact;  // ρ*
+};
+struct CurvePointJudged {
+    Q exact;  // f(ρ1)
+};
+struct SwitchPointJudged {
+    // The exact switch point matched (or the nearest in ρ1), none when the proved range has none;
+    // that range (whole: the whole curve).
     std::optional<ExactSwitch> nearest;
     bool matched = false, window_whole = true;
     Q window_lo;
     std::optional<Q> window_hi;
-    // Curve: the errors and the switch points' and contacts' faults (CLAIMS.md, "Curve claims").
+    std::optional<bool> contact_right;
+};
+struct CurveJudged {
+    // The errors and the switch points' and contacts' faults (CLAIMS.md, "Curve claims").
     struct Misplaced {
         Q exact_rho1, exact_rho2, claimed_rho1, claimed_rho2;
     };
@@ -116,6 +112,63 @@ struct Judged {
     std::vector<std::pair<Q, Q>> missed, extra;
     std::vector<Misplaced> misplaced;
     std::vector<WrongContact> wrong_contacts;
+};
+struct PlaneJudged {
+    Q c1, c2;  // max over P1(ρ1) of n·x, min over P2(ρ2)
+};
+// Claimed points in P1 and in P2; on parts, the part holding each (−1: none); near: outside, within
+// the absolute tolerance.
+struct Membership {
+    bool in1 = false, in2 = false;
+    int in_part1 = -1, in_part2 = -1;
+    bool near1 = false, near2 = false;
+};
+struct WitnessJudged : Membership {
+    Verdict exact_verdict = Verdict::Separated;
+};
+struct DistanceJudged : Membership {
+    bool value_right = false;
+    std::optional<bool> closest_right;  // when closest points are claimed
+    Q exact_squared;
+    Vec3q exact_p1{}, exact_p2{};  // the exact closest points
+    Q closest_squared;             // |q − p|² of the claimed closest points
+};
+struct DepthJudged {
+    // A separated pair: its verdict, and nothing else.
+    std::optional<Verdict> separated;
+    std::optional<bool> value_right, direction_right;
+    std::optional<Q> exact_squared;  // none when separated
+    Vec3z exact_direction{};
+    Q along;  // the squared depth along the claimed direction
+};
+struct Judged {
+    bool right = false;
+    int part1 = -1, part2 = -1;
+    // Nothing for a claim with no answer.
+    std::variant<std::monostate, VerdictJudged, GrowthJudged, CurvePointJudged, SwitchPointJudged, CurveJudged,
+                 PlaneJudged, WitnessJudged, DistanceJudged, DepthJudged>
+        of;
+    template <class T>
+    T& set() {
+        return of.emplace<T>();
+    }
+    template <class T>
+    const T* get() const {
+        return std::get_if<T>(&of);
+    }
+    // A distance's or a depth's exact squared value (none otherwise, and for a separated depth).
+    std::optional<Q> exact_squared() const {
+        if (const auto* d = get<DistanceJudged>()) return d->exact_squared;
+        if (const auto* d = get<DepthJudged>()) return d->exact_squared;
+        return std::nullopt;
+    }
+    // The exact verdict a verdict, a witness or a separated depth states.
+    std::optional<Verdict> exact_verdict() const {
+        if (const auto* d = get<VerdictJudged>()) return d->exact;
+        if (const auto* d = get<WitnessJudged>()) return d->exact_verdict;
+        if (const auto* d = get<DepthJudged>()) return d->separated;
+        return std::nullopt;
+    }
 };
 
 // A judgement's proof for the judgements certificates (FORMAT.md): the claim with every number

@@ -463,37 +463,41 @@ void describe(const TypedClaim& c, const Judged& g, const ExactScene* parts, Jso
         return;
     }
     switch (c.type) {
-    case ClaimType::Verdict:
+    case ClaimType::Verdict: {
+        const auto& d = std::get<VerdictJudged>(g.of);
         rhos();
         if (parts) {
-            o["exact"] = verdict_name(*g.exact_verdict);
+            o["exact"] = verdict_name(d.exact);
             put_part_pair(o, "pair", *parts, g.part1, g.part2);
             o["claimed"] = claimed_name(c.verdict);
         } else {
             o["claimed"] = claimed_name(c.verdict);
-            o["exact"] = verdict_name(*g.exact_verdict);
-            if (!c.posed()) put_exact(o, "rho2_minus_curve", g.rho2_minus_curve);  // no curve at a pose
+            o["exact"] = verdict_name(d.exact);
+            if (!c.posed()) put_exact(o, "rho2_minus_curve", d.rho2_minus_curve);  // no curve at a pose
         }
-        text = "verdict at " + at(c) + ": claimed " + claimed_name(c.verdict) + ", exact " +
-               verdict_name(*g.exact_verdict);
+        text = "verdict at " + at(c) + ": claimed " + claimed_name(c.verdict) + ", exact " + verdict_name(d.exact);
         return;
-    case ClaimType::Growth:
-        errors(o, c.value, g.exact);
-        text = "growth distance " + num(c.value) + ": exact " + num(g.exact);
+    }
+    case ClaimType::Growth: {
+        const auto& d = std::get<GrowthJudged>(g.of);
+        errors(o, c.value, d.exact);
+        text = "growth distance " + num(c.value) + ": exact " + num(d.exact);
         return;
+    }
     case ClaimType::SwitchPoint: {
+        const auto& d = std::get<SwitchPointJudged>(g.of);
         rhos();
         const std::string head = "switch point " + at(c);
-        if (!g.nearest) {
+        if (!d.nearest) {
             o["nearest"] = nullptr;
-            if (g.window_whole)
+            if (d.window_whole)
                 text = head + ": the exact curve has no switch point at rho1, rho2 > 0";
             else
-                text = head + ": the exact curve has no switch point from rho1 = " + num(g.window_lo) +
-                       (g.window_hi ? " to " + num(*g.window_hi) : std::string(" on")) + " (the range the walk proved)";
+                text = head + ": the exact curve has no switch point from rho1 = " + num(d.window_lo) +
+                       (d.window_hi ? " to " + num(*d.window_hi) : std::string(" on")) + " (the range the walk proved)";
             return;
         }
-        const ExactSwitch& b = *g.nearest;
+        const ExactSwitch& b = *d.nearest;
         Json n;
         put_exact(n, "rho1", b.rho1);
         put_exact(n, "rho2", b.rho2);
@@ -504,32 +508,35 @@ void describe(const TypedClaim& c, const Judged& g, const ExactScene* parts, Jso
         errors(e2, c.rho2, b.rho2);
         o["rho1_error"] = e1;
         o["rho2_error"] = e2;
-        o["contact_right"] = g.contact_right ? Json(*g.contact_right) : Json(nullptr);
+        o["contact_right"] = d.contact_right ? Json(*d.contact_right) : Json(nullptr);
         text = "switch point (" + num(c.rho1) + ", " + num(c.rho2) + (c.contact ? ", " + *c.contact : "") +
-               (g.matched ? "): matches exact (" : "): nearest exact (") + num(b.rho1) + ", " + num(b.rho2) + ", " +
+               (d.matched ? "): matches exact (" : "): nearest exact (") + num(b.rho1) + ", " + num(b.rho2) + ", " +
                b.label + ")";
         return;
     }
-    case ClaimType::CurvePoint:
+    case ClaimType::CurvePoint: {
+        const auto& d = std::get<CurvePointJudged>(g.of);
         rhos();
-        put_exact(o, "curve_rho2", g.exact);
-        errors(o, c.rho2, g.exact);
-        text = "curve point " + at(c) + ": exact curve at rho1 is " + num(g.exact);
+        put_exact(o, "curve_rho2", d.exact);
+        errors(o, c.rho2, d.exact);
+        text = "curve point " + at(c) + ": exact curve at rho1 is " + num(d.exact);
         return;
+    }
     case ClaimType::Curve: {
-        o["exact_rho2_positive_over_range"] = g.exact_positive;
-        put_exact(o, "max_vertical_error", g.max_vertical);
-        put_exact(o, "max_vertical_error_at_rho1", g.max_vertical_at);
-        put_exact(o, "max_horizontal_error", g.max_horizontal);
+        const auto& d = std::get<CurveJudged>(g.of);
+        o["exact_rho2_positive_over_range"] = d.exact_positive;
+        put_exact(o, "max_vertical_error", d.max_vertical);
+        put_exact(o, "max_vertical_error_at_rho1", d.max_vertical_at);
+        put_exact(o, "max_horizontal_error", d.max_horizontal);
         auto pairs = [](const std::vector<std::pair<Q, Q>>& v) {
             Json a = Json::array();
             for (const auto& [x, y] : v) a.push_back(Json::array({to_exact_string(x), to_exact_string(y)}));
             return a;
         };
-        o["switch_points_missed"] = pairs(g.missed);
-        o["switch_points_extra"] = pairs(g.extra);
+        o["switch_points_missed"] = pairs(d.missed);
+        o["switch_points_extra"] = pairs(d.extra);
         Json mp = Json::array();
-        for (const Judged::Misplaced& m : g.misplaced) {
+        for (const CurveJudged::Misplaced& m : d.misplaced) {
             Json j;
             put_exact(j, "exact_rho1", m.exact_rho1);
             put_exact(j, "exact_rho2", m.exact_rho2);
@@ -539,7 +546,7 @@ void describe(const TypedClaim& c, const Judged& g, const ExactScene* parts, Jso
         }
         o["switch_points_misplaced"] = mp;
         Json wl = Json::array();
-        for (const Judged::WrongContact& w : g.wrong_contacts) {
+        for (const CurveJudged::WrongContact& w : d.wrong_contacts) {
             Json j;
             put_exact(j, "rho1", w.rho1);
             j["claimed"] = w.claimed;
@@ -549,84 +556,91 @@ void describe(const TypedClaim& c, const Judged& g, const ExactScene* parts, Jso
         o["wrong_contacts"] = wl;
         const size_t n = c.curve->segments.size();
         text = "curve of " + std::to_string(n) + (n == 1 ? " segment" : " segments") + ": max vertical error " +
-               num(g.max_vertical) + ", max horizontal error " + num(g.max_horizontal) + ", switch points missed " +
-               std::to_string(g.missed.size()) + ", extra " + std::to_string(g.extra.size()) + ", misplaced " +
-               std::to_string(g.misplaced.size()) + ", wrong contacts " + std::to_string(g.wrong_contacts.size()) +
-               (g.exact_positive ? "" : ", and the exact curve reaches rho2 <= 0 in the claimed range");
+               num(d.max_vertical) + ", max horizontal error " + num(d.max_horizontal) + ", switch points missed " +
+               std::to_string(d.missed.size()) + ", extra " + std::to_string(d.extra.size()) + ", misplaced " +
+               std::to_string(d.misplaced.size()) + ", wrong contacts " + std::to_string(d.wrong_contacts.size()) +
+               (d.exact_positive ? "" : ", and the exact curve reaches rho2 <= 0 in the claimed range");
         return;
     }
-    case ClaimType::Plane:
+    case ClaimType::Plane: {
+        const auto& d = std::get<PlaneJudged>(g.of);
         rhos();
-        put_exact(o, "max_over_P1", g.c1);  // P1(ρ1) ⊆ {n·x ≤ c1}
-        put_exact(o, "min_over_P2", g.c2);  // P2(ρ2) ⊆ {n·x ≥ c2}
-        put_exact(o, "gap", g.c2 - g.c1);
-        text = "plane at " + at(c) + ": P1 reaches " + num(g.c1) + ", P2 starts at " + num(g.c2);
+        put_exact(o, "max_over_P1", d.c1);  // P1(ρ1) ⊆ {n·x ≤ c1}
+        put_exact(o, "min_over_P2", d.c2);  // P2(ρ2) ⊆ {n·x ≥ c2}
+        put_exact(o, "gap", d.c2 - d.c1);
+        text = "plane at " + at(c) + ": P1 reaches " + num(d.c1) + ", P2 starts at " + num(d.c2);
         if (c.offset) {
-            put_exact(o, "offset_minus_P1", *c.offset - g.c1);
-            put_exact(o, "P2_minus_offset", g.c2 - *c.offset);
+            put_exact(o, "offset_minus_P1", *c.offset - d.c1);
+            put_exact(o, "P2_minus_offset", d.c2 - *c.offset);
             text += ", offset " + num(*c.offset);
         }
         return;
-    case ClaimType::Witness:
+    }
+    case ClaimType::Witness: {
+        const auto& d = std::get<WitnessJudged>(g.of);
         if (parts) {
-            o["in_P1_part"] = part_or_false(g.in_part1);
-            put_part_name(o, "in_P1_part", parts->P[0], g.in_part1);
-            o["in_P2_part"] = part_or_false(g.in_part2);
-            put_part_name(o, "in_P2_part", parts->P[1], g.in_part2);
-            text = "witness point at " + at(c) + ": in P1 " + part_or_no(*parts, 0, g.in_part1, g.near1) + ", in P2 " +
-                   part_or_no(*parts, 1, g.in_part2, g.near2);
+            o["in_P1_part"] = part_or_false(d.in_part1);
+            put_part_name(o, "in_P1_part", parts->P[0], d.in_part1);
+            o["in_P2_part"] = part_or_false(d.in_part2);
+            put_part_name(o, "in_P2_part", parts->P[1], d.in_part2);
+            text = "witness point at " + at(c) + ": in P1 " + part_or_no(*parts, 0, d.in_part1, d.near1) + ", in P2 " +
+                   part_or_no(*parts, 1, d.in_part2, d.near2);
         } else {
-            o["in_P1"] = g.in1;
-            o["in_P2"] = g.in2;
-            text = "witness point at " + at(c) + ": in P1 " + yes_near_no(g.in1, g.near1) + ", in P2 " +
-                   yes_near_no(g.in2, g.near2);
+            o["in_P1"] = d.in1;
+            o["in_P2"] = d.in2;
+            text = "witness point at " + at(c) + ": in P1 " + yes_near_no(d.in1, d.near1) + ", in P2 " +
+                   yes_near_no(d.in2, d.near2);
         }
-        put_near(o, "near_P1", g.near1);
-        put_near(o, "near_P2", g.near2);
-        o["exact_verdict"] = verdict_name(*g.exact_verdict);
+        put_near(o, "near_P1", d.near1);
+        put_near(o, "near_P2", d.near2);
+        o["exact_verdict"] = verdict_name(d.exact_verdict);
         return;
-    case ClaimType::Distance:
+    }
+    case ClaimType::Distance: {
+        const auto& d = std::get<DistanceJudged>(g.of);
         rhos();
-        errors_sq(o, c.value, *g.exact_squared);
-        put_point(o, "exact_closest_P1", g.exact_p1);
-        put_point(o, "exact_closest_P2", g.exact_p2);
+        errors_sq(o, c.value, d.exact_squared);
+        put_point(o, "exact_closest_P1", d.exact_p1);
+        put_point(o, "exact_closest_P2", d.exact_p2);
         if (parts) put_part_pair(o, "exact_pair", *parts, g.part1, g.part2);
-        o["value_right"] = *g.value_right;
-        text = "distance at " + at(c) + ": claimed " + num(c.value) + ", exact squared " + num(*g.exact_squared) +
-               " (distance ~" + dbl(sqrt_minus_rn(*g.exact_squared, Q(0))) +
+        o["value_right"] = d.value_right;
+        text = "distance at " + at(c) + ": claimed " + num(c.value) + ", exact squared " + num(d.exact_squared) +
+               " (distance ~" + dbl(sqrt_minus_rn(d.exact_squared, Q(0))) +
                (parts ? ", parts " + std::to_string(g.part1) + name_of(*parts, 0, g.part1) + " and " +
                             std::to_string(g.part2) + name_of(*parts, 1, g.part2)
                       : std::string()) +
                ")";
         if (c.closest) {
             if (parts) {
-                o["closest_in_P1_part"] = part_or_false(g.in_part1);
-                put_part_name(o, "closest_in_P1_part", parts->P[0], g.in_part1);
-                o["closest_in_P2_part"] = part_or_false(g.in_part2);
-                put_part_name(o, "closest_in_P2_part", parts->P[1], g.in_part2);
+                o["closest_in_P1_part"] = part_or_false(d.in_part1);
+                put_part_name(o, "closest_in_P1_part", parts->P[0], d.in_part1);
+                o["closest_in_P2_part"] = part_or_false(d.in_part2);
+                put_part_name(o, "closest_in_P2_part", parts->P[1], d.in_part2);
             } else {
-                o["closest_in_P1"] = g.in1;
-                o["closest_in_P2"] = g.in2;
+                o["closest_in_P1"] = d.in1;
+                o["closest_in_P2"] = d.in2;
             }
-            put_near(o, "closest_near_P1", g.near1);
-            put_near(o, "closest_near_P2", g.near2);
-            if (g.near1 || g.near2) text += ", closest points within LEN of their bodies";
-            put_exact(o, "closest_squared_distance", g.closest_squared);
-            o["closest_right"] = *g.closest_right;
+            put_near(o, "closest_near_P1", d.near1);
+            put_near(o, "closest_near_P2", d.near2);
+            if (d.near1 || d.near2) text += ", closest points within LEN of their bodies";
+            put_exact(o, "closest_squared_distance", d.closest_squared);
+            o["closest_right"] = *d.closest_right;
             // Wrong points: the line says so, and why (CLAIMS.md, "a closest pair").
-            if (!*g.closest_right) {
+            if (!*d.closest_right) {
                 std::string why;
-                if (!g.in1) why = "the first point is not in P1";
-                if (!g.in2) why += std::string(why.empty() ? "" : "; ") + "the second point is not in P2";
+                if (!d.in1) why = "the first point is not in P1";
+                if (!d.in2) why += std::string(why.empty() ? "" : "; ") + "the second point is not in P2";
                 if (why.empty())
-                    why = g.near1 || g.near2 ? "each is in or within LEN of its body, but they lie farther apart than "
+                    why = d.near1 || d.near2 ? "each is in or within LEN of its body, but they lie farther apart than "
                                                "the distance allows"
                                              : "each is in its body, but they lie farther apart than the distance";
-                text += std::string(*g.value_right ? ", but" : ", and") + " the closest points are wrong (" + why + ")";
+                text += std::string(d.value_right ? ", but" : ", and") + " the closest points are wrong (" + why + ")";
             }
         }
         return;
+    }
     case ClaimType::Depth: {
+        const auto& d = std::get<DepthJudged>(g.of);
         rhos();
         // On parts, the contact's part pair, named in the line.
         std::string of;
@@ -635,23 +649,23 @@ void describe(const TypedClaim& c, const Judged& g, const ExactScene* parts, Jso
             of = " of parts " + std::to_string(g.part1) + name_of(*parts, 0, g.part1) + " and " +
                  std::to_string(g.part2) + name_of(*parts, 1, g.part2);
         }
-        if (!g.exact_squared) {
+        if (!d.exact_squared) {
             o["exact_verdict"] = verdict_name(Verdict::Separated);
             put_exact(o, "claimed", c.value);
             text = "penetration depth" + of + " at " + at(c) + ": claimed " + num(c.value) + ", but the " +
                    (of.empty() ? "pair is" : "parts are") + " separated";
             return;
         }
-        errors_sq(o, c.value, *g.exact_squared);
+        errors_sq(o, c.value, *d.exact_squared);
         o["exact_direction"] = Json::array(
-            {g.exact_direction[0].get_str(), g.exact_direction[1].get_str(), g.exact_direction[2].get_str()});
-        o["value_right"] = *g.value_right;
+            {d.exact_direction[0].get_str(), d.exact_direction[1].get_str(), d.exact_direction[2].get_str()});
+        o["value_right"] = *d.value_right;
         text = "penetration depth" + of + " at " + at(c) + ": claimed " + num(c.value) + ", exact squared " +
-               num(*g.exact_squared) + " (depth ~" + dbl(sqrt_minus_rn(*g.exact_squared, Q(0))) + ")";
+               num(*d.exact_squared) + " (depth ~" + dbl(sqrt_minus_rn(*d.exact_squared, Q(0))) + ")";
         if (c.direction) {
-            put_exact(o, "depth_squared_along_direction", g.along);
-            o["direction_right"] = *g.direction_right;
-            if (*g.value_right && !*g.direction_right) text += ", but the direction is wrong";
+            put_exact(o, "depth_squared_along_direction", d.along);
+            o["direction_right"] = *d.direction_right;
+            if (*d.value_right && !*d.direction_right) text += ", but the direction is wrong";
         }
         return;
     }
@@ -736,23 +750,28 @@ void describe_line(const TypedClaim& c, const Judged& g, const ExactScene* parts
         return;
     }
     switch (c.type) {
-    case ClaimType::CurvePoint:
+    case ClaimType::CurvePoint: {
         o["claim"] = "curve";
         put_exact(o, "rho1", c.rho1);
         put_exact(o, "rho2", c.rho2);
-        put_exact(o, "curve_rho2", g.exact);
-        put_exact(o, "rho2_minus_curve", c.rho2 - g.exact);
-        text = "curve point (" + w[1] + ", " + w[2] + "): exact curve at rho1 is " + num(g.exact, 17) + ", off by " +
-               num(c.rho2 - g.exact, 17);
+        const Q& f = std::get<CurvePointJudged>(g.of).exact;
+        put_exact(o, "curve_rho2", f);
+        put_exact(o, "rho2_minus_curve", c.rho2 - f);
+        text = "curve point (" + w[1] + ", " + w[2] + "): exact curve at rho1 is " + num(f, 17) + ", off by " +
+               num(c.rho2 - f, 17);
         return;
-    case ClaimType::Growth:
+    }
+    case ClaimType::Growth: {
         o["claim"] = "growth";
         put_exact(o, "claimed", c.value);
-        put_exact(o, "exact", g.exact);
-        text = "growth distance " + w[1] + ": exact " + num(g.exact, 17) + ", off by " + num(c.value - g.exact, 17);
+        const Q& e = std::get<GrowthJudged>(g.of).exact;
+        put_exact(o, "exact", e);
+        text = "growth distance " + w[1] + ": exact " + num(e, 17) + ", off by " + num(c.value - e, 17);
         return;
+    }
     default: {
-        const std::string v = claimed_name(c.verdict), e = verdict_name(*g.exact_verdict);
+        const VerdictJudged& d = std::get<VerdictJudged>(g.of);
+        const std::string v = claimed_name(c.verdict), e = verdict_name(d.exact);
         o["claim"] = v;
         put_exact(o, "rho1", c.rho1);
         put_exact(o, "rho2", c.rho2);
@@ -761,9 +780,9 @@ void describe_line(const TypedClaim& c, const Judged& g, const ExactScene* parts
             put_part_pair(o, "pair", *parts, g.part1, g.part2);
             text = "(" + num(c.rho1, 17) + ", " + num(c.rho2, 17) + ") claimed " + v + ": exact " + e;
         } else {
-            put_exact(o, "rho2_minus_curve", g.rho2_minus_curve);
+            put_exact(o, "rho2_minus_curve", d.rho2_minus_curve);
             text = "(" + w[0] + ", " + w[1] + ") claimed " + v + ": exact " + e +
-                   ", rho2 - curve = " + num(g.rho2_minus_curve, 17);
+                   ", rho2 - curve = " + num(d.rho2_minus_curve, 17);
         }
         return;
     }

@@ -258,7 +258,7 @@ GoldenAnswers golden_answers(const ExactScene& s, const Model& m, const Touching
         t.rho1 = a;
         t.rho2 = b;
         Judged g = rules.judge(t);
-        if (!g.exact_squared) throw std::logic_error("golden: no exact measure at a pair of doubles");
+        if (!g.exact_squared()) throw std::logic_error("golden: no exact measure at a pair of doubles");
         return g;
     };
     const Rect r = rect_of(s);
@@ -305,21 +305,22 @@ GoldenAnswers golden_answers(const ExactScene& s, const Model& m, const Touching
             if (ms.verdict == Verdict::Overlapping) {
                 const Judged g = judged(ClaimType::Depth, a, b);
                 ms.kind = "depth";
-                ms.squared = *g.exact_squared;
-                ms.normal = primitive(g.exact_direction);
+                ms.squared = *g.exact_squared();
+                ms.normal = primitive(std::get<DepthJudged>(g.of).exact_direction);
             } else {
                 const Judged g = judged(ClaimType::Distance, a, b);
-                ms.squared = *g.exact_squared;
-                ms.p1 = g.exact_p1;
-                ms.p2 = g.exact_p2;
+                const DistanceJudged& e = std::get<DistanceJudged>(g.of);
+                ms.squared = e.exact_squared;
+                ms.p1 = e.exact_p1;
+                ms.p2 = e.exact_p2;
                 if (ms.verdict == Verdict::Separated) {
                     // The plane through the closest points' midpoint, normal to their difference,
                     // separates the two convex bodies (each lies on its side of its supporting plane).
                     ms.kind = "distance";
-                    const Vec3q d = sub(g.exact_p2, g.exact_p1);
+                    const Vec3q d = sub(e.exact_p2, e.exact_p1);
                     ms.normal = primitive(d);
                     const Vec3q n = to_q(*ms.normal);
-                    ms.offset = (dot(n, g.exact_p1) + dot(n, g.exact_p2)) / 2;
+                    ms.offset = (dot(n, e.exact_p1) + dot(n, e.exact_p2)) / 2;
                 }
             }
             return ms;

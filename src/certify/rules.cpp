@@ -188,19 +188,20 @@ namespace {
 // along it, along(n) (moving P2 that far along n separates them exactly iff n attains the least).
 void depth_rule(const TypedClaim& c, const MeasuredDepth& md, const Tolerance& tol, Judged& g,
                 const std::function<Q(const Vec3q&)>& along) {
+    auto& d = g.set<DepthJudged>();
     if (md.state == Verdict::Separated) {
-        g.exact_verdict = Verdict::Separated;
+        d.separated = Verdict::Separated;
         g.right = false;
         return;
     }
-    g.exact_squared = md.state == Verdict::Touching ? Q(0) : md.depth->squared;
-    g.exact_direction = md.normal;
-    g.value_right = tol.close_sq(c.value, *g.exact_squared);
-    g.right = *g.value_right;
+    d.exact_squared = md.state == Verdict::Touching ? Q(0) : md.depth->squared;
+    d.exact_direction = md.normal;
+    d.value_right = tol.close_sq(c.value, *d.exact_squared);
+    g.right = *d.value_right;
     if (c.direction) {
-        g.along = along(*c.direction);
-        g.direction_right = tol.within_above(g.along, *g.exact_squared);
-        g.right = g.right && *g.direction_right;
+        d.along = along(*c.direction);
+        d.direction_right = tol.within_above(d.along, *d.exact_squared);
+        g.right = g.right && *d.direction_right;
     }
 }
 }  // namespace
@@ -243,8 +244,8 @@ struct ConvexRules::Impl {
     // Whether x is in P1(ρ1) and y in P2(ρ2) (or, at an absolute tolerance, within it of them),
     // with their proofs in *proof when given. `known`: the exact closest points, with their
     // weights when known: a claimed point within the tolerance of its body's is near at once.
-    // g.in1, g.in2 (and g.near1, g.near2: outside, within the tolerance).
-    void members(const Q& r1, const Q& r2, const Vec3q& x, const Vec3q& y, Judged& g, Json* proof,
+    // m.in1, m.in2 (and m.near1, m.near2: outside, within the tolerance).
+    void members(const Q& r1, const Q& r2, const Vec3q& x, const Vec3q& y, Membership& g, Json* proof,
                  const ExactDistance* known = nullptr) const {
         auto one = [&](int i, const Q& r, const Vec3q& v, Json* pj, bool& near) {
             near = false;
@@ -339,25 +340,26 @@ struct ConvexRules::Impl {
     }
 
     void verdict(const TypedClaim& c, Judged& g, Proof* proof) {
+        auto& d = g.set<VerdictJudged>();
         if (posed && !proof) {
             // Without a certificate, the verdict alone where a few support queries prove it.
             if (const std::optional<Verdict> v = proved_verdict(*posed, c.rho1, c.rho2)) {
-                g.exact_verdict = *v;
-                g.right = verdict_matches(c.verdict, *g.exact_verdict);
+                d.exact = *v;
+                g.right = verdict_matches(c.verdict, d.exact);
                 return;
             }
         }
         if (posed) {
             const MeasuredDepth md = depth_of(c.rho1, c.rho2);
-            g.exact_verdict = md.state;
-            g.right = verdict_matches(c.verdict, *g.exact_verdict);
+            d.exact = md.state;
+            g.right = verdict_matches(c.verdict, d.exact);
             if (proof) proof->proof = Json{{"depth", depth_proof(nullptr, md, c.rho1, c.rho2)}};
             return;
         }
         const Verdict e = models.verdict(c.rho1, c.rho2);
         g.right = verdict_matches(c.verdict, e);
-        g.exact_verdict = e;
-        g.rho2_minus_curve = c.rho2 - models.curve_value(c.rho1);
+        d.exact = e;
+        d.rho2_minus_curve = c.rho2 - models.curve_value(c.rho1);
         if (proof) {
             const auto [pm, r] = models.certified_query(c.rho1, c.rho2);
             if (r.verdict != e) throw std::logic_error("certify-fp: the certified verdict and the exact one differ");
@@ -366,18 +368,20 @@ struct ConvexRules::Impl {
     }
 
     void growth(const TypedClaim& c, Judged& g, Proof* proof) {
-        g.exact = models.growth();
-        g.right = tol.close(c.value, g.exact);
+        auto& d = g.set<GrowthJudged>();
+        d.exact = models.growth();
+        g.right = tol.close(c.value, d.exact);
         if (proof) {
             proof->proof = models.growth_proof();
-            if (proof->proof["value"] != ex(g.exact))
+            if (proof->proof["value"] != ex(d.exact))
                 throw std::logic_error("certify-fp: the proved growth distance and the exact one differ");
         }
     }
 
     void curve_point(const TypedClaim& c, Judged& g, Proof* proof) {
-        g.exact = models.curve_value(c.rho1);
-        g.right = sgn(g.exact) > 0 && tol.close(c.rho2, g.exact);
+        auto& d = g.set<CurvePointJudged>();
+        d.exact = models.curve_value(c.rho1);
+        g.right = sgn(d.exact) > 0 && tol.close(c.rho2, d.exact);
         if (proof) {
             const Curve V = models.curve_around(c.rho1, c.rho1);
             proof->proof = curve_proof(*V.model, *V.curve, c.rho1, c.rho1);
@@ -385,6 +389,7 @@ struct ConvexRules::Impl {
     }
 
     void switch_point(const TypedClaim& c, Judged& g, Proof* proof) {
+        auto& d = g.set<SwitchPointJudged>();
         const Q &r1 = c.rho1, &r2 = c.rho2, &t = tol.rel;
         // Every ρ1 within the tolerance of the claim's (|x − ρ1| <= tol·x) lies in [lo, hi]: the
         // walk proves the curve over a window holding it; a tolerance of 1 or more needs the whole
@@ -392,9 +397,9 @@ struct ConvexRules::Impl {
         const Q lo = r1 / (1 + t);
         const Curve V = t < 1 ? models.curve_around(lo, Q(r1 / (1 - t))) : whole();
         const auto& exs = exact_switches(V);
-        g.window_whole = V.whole();
-        g.window_lo = V.lo_proved;
-        g.window_hi = V.hi_proved;
+        d.window_whole = V.whole();
+        d.window_lo = V.lo_proved;
+        d.window_hi = V.hi_proved;
         if (exs.empty()) {
             // The proof: the whole curve from ρ1 = 0 to past where it reaches ρ2 = 0, or the window.
             if (proof) {
@@ -412,25 +417,26 @@ struct ConvexRules::Impl {
                 best = &s;
                 break;
             }
-        g.matched = best != nullptr;
+        d.matched = best != nullptr;
         if (!best) {
             best = &exs.front();
             for (const ExactSwitch& s : exs)
                 if (abs(Q(s.rho1 - r1)) < abs(Q(best->rho1 - r1))) best = &s;
         }
-        g.nearest = *best;
+        d.nearest = *best;
         // The proof: the curve over a window holding every ρ1 within the tolerance of the claim's
         // (from ρ1/(1 + tol) to ρ1/(1 − tol), or on to where the curve reaches ρ2 = 0 when tol >= 1).
         if (proof) {
             const Q hi = t < 1 ? Q(r1 / (1 - t)) : std::max(r1, zero_crossing(V));
             proof->proof = curve_proof(*V.model, *V.curve, lo, hi);
         }
-        if (c.contact) g.contact_right = *c.contact == best->label;
-        g.right = g.matched;
+        if (c.contact) d.contact_right = *c.contact == best->label;
+        g.right = d.matched;
     }
 
     // A curve claim: the rules of CLAIMS.md ("Curve claims").
     void curve(const TypedClaim& c, Judged& g, Proof* proof) {
+        auto& d = g.set<CurveJudged>();
         const ClaimedCurve& k = *c.curve;
         const auto& segs = k.segments;
         const Q lo = segs.front().x0, hi = segs.back().x1;
@@ -479,10 +485,10 @@ struct ConvexRules::Impl {
                 if (auto xi = inverse(V, y)) max_h = std::max(max_h, Q(abs(Q(*xi - x))));
         }
         // Nothing touches where f ≤ 0; f descends, so it is > 0 on the whole range iff at hi.
-        g.exact_positive = sgn(cv.env.value(mv.lines, hi)) > 0;
-        g.max_vertical = max_v;
-        g.max_vertical_at = worst_v_at;
-        g.max_horizontal = max_h;
+        d.exact_positive = sgn(cv.env.value(mv.lines, hi)) > 0;
+        d.max_vertical = max_v;
+        d.max_vertical_at = worst_v_at;
+        d.max_horizontal = max_h;
         // Switch points: the exact ones in the closed range [lo, hi], each matched with the claimed
         // one nearest to it in ρ1 when that one's nearest exact switch is it. An exact switch
         // strictly inside the range that is not matched is missed; one at an end of the range
@@ -509,60 +515,63 @@ struct ConvexRules::Impl {
             const bool at_end = exact[i]->rho1 == lo || exact[i]->rho1 == hi;
             size_t n = 0;
             if (claimed.empty() || nearest_exact(claimed[n = nearest_claimed(exact[i]->rho1)].first) != i) {
-                if (!at_end) g.missed.push_back({exact[i]->rho1, exact[i]->rho2});
+                if (!at_end) d.missed.push_back({exact[i]->rho1, exact[i]->rho2});
                 continue;
             }
             used[n] = true;
             if (!tol.close(claimed[n].first, exact[i]->rho1) || !tol.close(claimed[n].second, exact[i]->rho2))
-                g.misplaced.push_back({exact[i]->rho1, exact[i]->rho2, claimed[n].first, claimed[n].second});
+                d.misplaced.push_back({exact[i]->rho1, exact[i]->rho2, claimed[n].first, claimed[n].second});
         }
         for (size_t n = 0; n < claimed.size(); ++n)
-            if (!used[n]) g.extra.push_back(claimed[n]);
+            if (!used[n]) d.extra.push_back(claimed[n]);
         // Contacts: the exact contact at each claimed piece's midpoint.
         for (const CurveSegment& s : segs) {
             if (!s.contact) continue;
             const Q mid = (s.x0 + s.x1) / 2;
             // At an exact switch point the contact is the switch point's.
             std::string e =
-                g.exact_positive ? piece_contact(mv, cv.env.pieces[cv.env.locate(mid)]).label : std::string("none");
+                d.exact_positive ? piece_contact(mv, cv.env.pieces[cv.env.locate(mid)]).label : std::string("none");
             for (const ExactSwitch& sw : exs)
                 if (sw.rho1 == mid) e = sw.label;
-            if (*s.contact != e) g.wrong_contacts.push_back({mid, *s.contact, e});
+            if (*s.contact != e) d.wrong_contacts.push_back({mid, *s.contact, e});
         }
-        g.right = g.exact_positive && within && g.missed.empty() && g.extra.empty() && g.misplaced.empty() &&
-                  g.wrong_contacts.empty();
+        g.right = d.exact_positive && within && d.missed.empty() && d.extra.empty() && d.misplaced.empty() &&
+                  d.wrong_contacts.empty();
     }
 
     void plane(const TypedClaim& c, Judged& g, Proof* proof) {
-        std::tie(g.c1, g.c2) = plane_extents(points(), c.normal, c.rho1, c.rho2);
-        g.right = plane_right(tol, g.c1, g.c2, c.normal, c.offset);
+        auto& d = g.set<PlaneJudged>();
+        std::tie(d.c1, d.c2) = plane_extents(points(), c.normal, c.rho1, c.rho2);
+        g.right = plane_right(tol, d.c1, d.c2, c.normal, c.offset);
         if (proof) proof->proof = Json::object();
     }
 
     void witness(const TypedClaim& c, Judged& g, Proof* proof) {
+        auto& d = g.set<WitnessJudged>();
         Json mp;
-        members(c.rho1, c.rho2, c.point, c.point, g, proof ? &mp : nullptr);
-        g.exact_verdict = exact_verdict(c.rho1, c.rho2);
-        g.right = g.in1 && g.in2;
+        members(c.rho1, c.rho2, c.point, c.point, d, proof ? &mp : nullptr);
+        d.exact_verdict = exact_verdict(c.rho1, c.rho2);
+        g.right = d.in1 && d.in2;
         if (proof) proof->proof = std::move(mp);
     }
 
     void distance(const TypedClaim& c, Judged& g, Proof* proof) {
+        auto& d = g.set<DistanceJudged>();
         const ExactDistance e = exact_distance_of(c.rho1, c.rho2);
-        g.exact_squared = e.squared;
-        g.exact_p1 = e.p1;
-        g.exact_p2 = e.p2;
-        g.value_right = tol.close_sq(c.value, e.squared);
-        g.right = *g.value_right;
+        d.exact_squared = e.squared;
+        d.exact_p1 = e.p1;
+        d.exact_p2 = e.p2;
+        d.value_right = tol.close_sq(c.value, e.squared);
+        g.right = d.value_right;
         if (proof) proof->proof = distance_proof(nullptr, e, c.rho1, c.rho2);
         if (c.closest) {
             const auto& [p, q] = *c.closest;
             const Vec3q pq = diff(q, p);
-            g.closest_squared = dot3(pq, pq);
+            d.closest_squared = dot3(pq, pq);
             Json mp;
-            members(c.rho1, c.rho2, p, q, g, proof ? &mp : nullptr, &e);
-            g.closest_right = g.in1 && g.in2 && tol.within_above(g.closest_squared, e.squared, 2);
-            g.right = g.right && *g.closest_right;
+            members(c.rho1, c.rho2, p, q, d, proof ? &mp : nullptr, &e);
+            d.closest_right = d.in1 && d.in2 && tol.within_above(d.closest_squared, e.squared, 2);
+            g.right = g.right && *d.closest_right;
             if (proof) proof->proof["closest"] = std::move(mp);
         }
     }
@@ -714,43 +723,48 @@ Judged PartsRules::judge(const TypedClaim& c, Proof* proof) {
     }
     switch (c.type) {
     case ClaimType::Verdict: {
+        auto& jd = g.set<VerdictJudged>();
         const CompoundVerdict e = judge_.verdict(c.rho1, c.rho2, p);
-        g.exact_verdict = e.verdict;
+        jd.exact = e.verdict;
         g.part1 = e.part1;
         g.part2 = e.part2;
-        g.right = verdict_matches(c.verdict, *g.exact_verdict);
+        g.right = verdict_matches(c.verdict, jd.exact);
         break;
     }
-    case ClaimType::Plane:
-        std::tie(g.c1, g.c2) = judge_.plane_extents(c.normal, c.rho1, c.rho2);
-        g.right = plane_right(tol_, g.c1, g.c2, c.normal, c.offset);
+    case ClaimType::Plane: {
+        auto& jd = g.set<PlaneJudged>();
+        std::tie(jd.c1, jd.c2) = judge_.plane_extents(c.normal, c.rho1, c.rho2);
+        g.right = plane_right(tol_, jd.c1, jd.c2, c.normal, c.offset);
         if (p) *p = Json::object();
         break;
+    }
     case ClaimType::Witness: {
+        auto& jd = g.set<WitnessJudged>();
         Json p1, p2;
-        g.in_part1 = place(0, c.rho1, c.point, p ? &p1 : nullptr, &g.near1);
-        g.in_part2 = place(1, c.rho2, c.point, p ? &p2 : nullptr, &g.near2);
-        g.in1 = g.in_part1 >= 0;
-        g.in2 = g.in_part2 >= 0;
-        g.exact_verdict = judge_.verdict(c.rho1, c.rho2).verdict;
-        g.right = g.in1 && g.in2;
+        jd.in_part1 = place(0, c.rho1, c.point, p ? &p1 : nullptr, &jd.near1);
+        jd.in_part2 = place(1, c.rho2, c.point, p ? &p2 : nullptr, &jd.near2);
+        jd.in1 = jd.in_part1 >= 0;
+        jd.in2 = jd.in_part2 >= 0;
+        jd.exact_verdict = judge_.verdict(c.rho1, c.rho2).verdict;
+        g.right = jd.in1 && jd.in2;
         if (p) *p = Json{{"P1", std::move(p1)}, {"P2", std::move(p2)}};
         break;
     }
     case ClaimType::Distance: {
+        auto& jd = g.set<DistanceJudged>();
         Json pp;
         const CompoundJudge::Distance e = judge_.distance(c.rho1, c.rho2, p ? &pp : nullptr);
-        g.exact_squared = e.squared;
-        g.exact_p1 = e.p1;
-        g.exact_p2 = e.p2;
+        jd.exact_squared = e.squared;
+        jd.exact_p1 = e.p1;
+        jd.exact_p2 = e.p2;
         g.part1 = e.part1;
         g.part2 = e.part2;
-        g.value_right = tol_.close_sq(c.value, e.squared);
-        g.right = *g.value_right;
+        jd.value_right = tol_.close_sq(c.value, e.squared);
+        g.right = jd.value_right;
         if (c.closest) {
             const auto& [a, b] = *c.closest;
             const Vec3q ab = diff(b, a);
-            g.closest_squared = dot3(ab, ab);
+            jd.closest_squared = dot3(ab, ab);
             Json m1, m2;
             // At an absolute tolerance, a claimed point within it of the exact closest point of its
             // object (in part k, with its weights in the distance's proof) is near at once.
@@ -765,12 +779,12 @@ Judged PartsRules::judge(const TypedClaim& c, Proof* proof) {
                 }
                 return place(i, rho, x, pj, near);
             };
-            g.in_part1 = at(0, a, p ? &m1 : nullptr, &g.near1);
-            g.in_part2 = at(1, b, p ? &m2 : nullptr, &g.near2);
-            g.in1 = g.in_part1 >= 0;
-            g.in2 = g.in_part2 >= 0;
-            g.closest_right = g.in1 && g.in2 && tol_.within_above(g.closest_squared, e.squared, 2);
-            g.right = g.right && *g.closest_right;
+            jd.in_part1 = at(0, a, p ? &m1 : nullptr, &jd.near1);
+            jd.in_part2 = at(1, b, p ? &m2 : nullptr, &jd.near2);
+            jd.in1 = jd.in_part1 >= 0;
+            jd.in2 = jd.in_part2 >= 0;
+            jd.closest_right = jd.in1 && jd.in2 && tol_.within_above(jd.closest_squared, e.squared, 2);
+            g.right = g.right && *jd.closest_right;
             if (p) pp["closest"] = Json{{"P1", std::move(m1)}, {"P2", std::move(m2)}};
         }
         if (p) *p = std::move(pp);

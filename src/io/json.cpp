@@ -32,7 +32,6 @@ Json scene_json(const ExactScene& sc) {
     return s;
 }
 
-
 Json compound_scene_json(const ExactScene& sc, bool with_names) {
     Json s;
     const char* names[2] = {"P1", "P2"};
@@ -55,10 +54,8 @@ Json compound_scene_json(const ExactScene& sc, bool with_names) {
     return s;
 }
 
-
 Json scene_file_json(const ExactScene& sc) {
     return sc.made_of_parts() ? compound_scene_json(sc, true) : scene_json(sc);
 }
-
 
 }  // namespace scalecert::internal

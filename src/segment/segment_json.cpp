@@ -54,7 +54,6 @@ double scaled_length(const Vec3q& v1, const Vec3q& v2, const Q& g) {
     return d;
 }
 
-
 void add_segment_json(Json& j, const HullModel& m, const TouchingCurve& c, const Segment& s) {
     Json seg = segment_head(s);
     seg["t1"] = pieces_json(s.t[0]);

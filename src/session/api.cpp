@@ -447,18 +447,21 @@ Judgement public_judgement(const internal::TypedClaim& c, const internal::Judged
         j.part2_name = internal::part_name(parts->P[1], static_cast<size_t>(g.part2));
     }
     j.right = g.right;
-    j.value_right = g.value_right;
-    j.closest_right = g.closest_right;
-    j.direction_right = g.direction_right;
-    if (g.exact_squared) {
-        j.exact_squared = *g.exact_squared;
-        j.exact = sqrt_minus_rn(*g.exact_squared, Q(0));
-        // |value − exact| / exact, MPFR-rounded; relative to an exact 0: 0 for a claimed 0, else inf.
-        j.rel_error = sgn(*g.exact_squared) ? relative_sqrt_error_rn(*g.exact_squared, c.value)
-                      : sgn(c.value) == 0   ? 0.0
-                                            : INFINITY;
+    if (const auto* d = g.get<internal::DistanceJudged>()) {
+        j.value_right = d->value_right;
+        j.closest_right = d->closest_right;
     }
-    if (c.type == internal::ClaimType::Verdict) j.exact_verdict = g.exact_verdict;
+    if (const auto* d = g.get<internal::DepthJudged>()) {
+        j.value_right = d->value_right;
+        j.direction_right = d->direction_right;
+    }
+    if (const std::optional<Q> e = g.exact_squared()) {
+        j.exact_squared = *e;
+        j.exact = sqrt_minus_rn(*e, Q(0));
+        // |value − exact| / exact, MPFR-rounded; relative to an exact 0: 0 for a claimed 0, else inf.
+        j.rel_error = sgn(*e) ? relative_sqrt_error_rn(*e, c.value) : sgn(c.value) == 0 ? 0.0 : INFINITY;
+    }
+    if (c.type == internal::ClaimType::Verdict) j.exact_verdict = g.exact_verdict();
     if (!c.no_answer.empty()) j.reason = c.no_answer + ": " + c.no_answer_reason;
     return j;
 }
