@@ -119,10 +119,11 @@ BOOST_AUTO_TEST_CASE(the_verdict_words_are_judged_by_the_claim_rules) {
                          AuditRow::kSaidOverlapping};
     const bool right[4][3] = {{true, false, false}, {false, true, false}, {false, true, true}, {false, false, true}};
     for (int w = 0; w < 4; ++w)
-        for (int exact = 0; exact < 3; ++exact) BOOST_TEST(AuditRow::wrong(said[w], exact) == !right[w][exact]);
+        for (int exact = 0; exact < 3; ++exact)
+            BOOST_TEST(AuditRow::wrong(said[w], static_cast<Verdict>(exact)) == !right[w][exact]);
     AuditRow row;
     for (int w = 0; w < 4; ++w)
-        for (int exact = 0; exact < 3; ++exact) row.count(w, exact, said[w], exact);
+        for (int exact = 0; exact < 3; ++exact) row.count(w, exact, said[w], static_cast<Verdict>(exact));
     BOOST_TEST(row.queries == 12);
     BOOST_TEST(row.false_separated == 2);    // separated where they touch or overlap
     BOOST_TEST(row.false_touching == 2);     // touching where they are apart or overlap
@@ -141,12 +142,13 @@ BOOST_AUTO_TEST_CASE(band_samples_lie_where_derived_by_hand) {
     int on_left = 0, on_right = 0, random = 0;
     for (const CompoundSample& c : a.samples) {
         const Q x = q(c.r1), y = q(c.r2);
-        BOOST_TEST(c.exact == boxes_by_hand(a.scene, x, y), "(" << c.r1 << ", " << c.r2 << ") k " << c.k);
+        BOOST_TEST(static_cast<int>(c.exact) == boxes_by_hand(a.scene, x, y),
+                   "(" << c.r1 << ", " << c.r2 << ") k " << c.k);
         if (c.k < 0) {
             ++random;
             BOOST_TEST((x >= 1 && x <= 4 && y >= 1 && y <= 3));
         } else if (c.k == 0) {
-            BOOST_TEST(c.exact == 1);
+            BOOST_TEST((c.exact == Verdict::Touching));
             const bool left = Q(6 * x + y) == 9, right = Q(4 * x - y) == 9;
             BOOST_TEST((left != right));
             on_left += left;
@@ -154,7 +156,7 @@ BOOST_AUTO_TEST_CASE(band_samples_lie_where_derived_by_hand) {
         } else if (c.k <= 48) {
             // 2^-48 of a coordinate is 2^5 of its last bit: the side survives rounding, and the
             // band is wide (at ρ2 = 1 it spans 4/3 ... 5/2): inward overlapping, outward separated.
-            BOOST_TEST(c.exact == (c.side > 0 ? 2 : 0),
+            BOOST_TEST(static_cast<int>(c.exact) == (c.side > 0 ? 2 : 0),
                        "(" << c.r1 << ", " << c.r2 << ") k " << c.k << " side " << c.side);
         }
     }
@@ -171,9 +173,9 @@ BOOST_AUTO_TEST_CASE(box_compounds_are_labelled_by_interval_arithmetic) {
         const Audited a = samples_of(name);
         long on = 0, touching = 0;
         for (const CompoundSample& c : a.samples) {
-            BOOST_TEST(c.exact == boxes_by_hand(a.scene, q(c.r1), q(c.r2)),
+            BOOST_TEST(static_cast<int>(c.exact) == boxes_by_hand(a.scene, q(c.r1), q(c.r2)),
                        name << " (" << c.r1 << ", " << c.r2 << ") k " << c.k);
-            if (c.k == 0) ++on, touching += c.exact == 1;
+            if (c.k == 0) ++on, touching += c.exact == Verdict::Touching;
         }
         BOOST_TEST(on == 32);
         BOOST_TEST(touching == 32, name);  // (every contact line has coefficients of few bits: double points)
@@ -217,7 +219,7 @@ BOOST_AUTO_TEST_CASE(a_verdict_is_counted_wrong_exactly_when_it_differs) {
         fo += v == -1 && hand == 0;
         ft += v == 0 && hand != 1;  // touching said off the boundary, or where they overlap
         if (((v == 1) != (hand == 0) || (v == 0 && hand != 1)) && listed.size() < AuditRow::kMaxFailures)
-            listed.push_back({c.r1, c.r2, v, hand});
+            listed.push_back({c.r1, c.r2, v, static_cast<Verdict>(hand)});
         if (c.k == 0 && hand == 1) {
             said_sep += v == 1, said_touch += v == 0, said_over += v == -1;
         } else if (c.k > 0) {
@@ -241,7 +243,7 @@ BOOST_AUTO_TEST_CASE(a_verdict_is_counted_wrong_exactly_when_it_differs) {
         BOOST_TEST(row.failures[i].rho1 == listed[i].rho1);
         BOOST_TEST(row.failures[i].rho2 == listed[i].rho2);
         BOOST_TEST(row.failures[i].said == listed[i].said);
-        BOOST_TEST(row.failures[i].exact == listed[i].exact);
+        BOOST_TEST((row.failures[i].exact == listed[i].exact));
     }
     BOOST_TEST(row.on_boundary->said_separated == said_sep);
     BOOST_TEST(row.on_boundary->said_touching == said_touch);
@@ -279,7 +281,8 @@ BOOST_AUTO_TEST_CASE(the_methods_meet_the_hand_verdicts_away_from_the_boundary) 
             const Q x = q(c.r1), y = q(c.r2);
             const Q left = abs(Q(6 * x + y - 9)), right = abs(Q(4 * x - y - 9));
             if (left < Q(9, 10) || right < Q(9, 10)) continue;
-            BOOST_TEST(m->classify(c.r1, c.r2) == 1 - c.exact, name << " at (" << c.r1 << ", " << c.r2 << ")");
+            BOOST_TEST(m->classify(c.r1, c.r2) == 1 - static_cast<int>(c.exact),
+                       name << " at (" << c.r1 << ", " << c.r2 << ")");
             ++checked;
         }
         BOOST_TEST(checked > 50);
@@ -310,7 +313,7 @@ BOOST_AUTO_TEST_CASE(convex_methods_are_refused_on_parts_and_compound_methods_ta
     CompoundJudge judge(cubes, "cubes");
     for (const CompoundSample& c : compound_samples(judge, label_boundary(session.region(true), cubes))) {
         const Q s = q(c.r1) + q(c.r2);
-        BOOST_TEST(c.exact == (s > 3 ? 2 : s == 3 ? 1 : 0));
+        BOOST_TEST(static_cast<int>(c.exact) == (s > 3 ? 2 : s == 3 ? 1 : 0));
         if (c.k == 0) BOOST_TEST(s == 3);
     }
 }
@@ -403,7 +406,7 @@ BOOST_AUTO_TEST_CASE(compound_contacts_are_judged_against_their_part_pairs_depth
             long n = 0;
             double worst = 0;
             for (const CompoundSample& c : a.samples) {
-                if (c.exact != 2 || m->classify(c.r1, c.r2) >= 0) continue;
+                if (c.exact != Verdict::Overlapping || m->classify(c.r1, c.r2) >= 0) continue;
                 const Q d = q(c.r1) + q(c.r2) - 3;
                 BOOST_TEST_REQUIRE(sgn(d) > 0);
                 for (const fp::PartContact& k : m->contacts(c.r1, c.r2)) {
@@ -433,7 +436,7 @@ BOOST_AUTO_TEST_CASE(compound_contacts_are_judged_against_their_part_pairs_depth
         const std::unique_ptr<fp::Method> m = fp::make_compound_method(row.method, f);
         long foot = 0, upright = 0;
         for (const CompoundSample& c : l.samples) {
-            if (c.exact != 2 || m->classify(c.r1, c.r2) >= 0) continue;
+            if (c.exact != Verdict::Overlapping || m->classify(c.r1, c.r2) >= 0) continue;
             for (const fp::PartContact& k : m->contacts(c.r1, c.r2)) {
                 if (!(k.depth > 0)) continue;
                 BOOST_TEST(k.part2 == 0);

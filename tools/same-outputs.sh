@@ -73,6 +73,28 @@ run mesh.curve "$sc" curve --p1 examples/tetra.obj --p2 examples/box.stl --i1 1/
 run mesh.partition "$sc" partition --p1 examples/tetra.obj --p2 examples/box.stl --i1 1/2,2 --i2 1,4
 run mesh.certify "$sc" certify-fp --p1 examples/tetra.obj --p2 examples/box.stl --i1 1/2,2 --i2 1,4 examples/claims.json --json
 run mesh.region "$sc" region tests/data/compound_band.json --at 7/6,2
+# Audits (their timings left out): the convex methods on the convex scenes, the parts' methods on
+# scenes of parts, with the failures they write.
+audit() {  # NAME SCENES... -- METHODS
+    local name=$1 methods=$2
+    shift 2
+    rm -rf "$work/failures"
+    "$sc" audit "$@" --methods "$methods" --by-distance --failures "$work/failures" --csv "$work/a.csv" \
+        --out "$work/a.json" >/dev/null 2>"$out/$name.err" </dev/null
+    echo $? >"$out/$name.rc"
+    for f in "$work/a.json"; do  # (the CSV rows hold the timings in place)
+        [ -e "$f" ] && grep -v seconds "$f" >"$out/$name.$(basename "$f")"
+    done
+    # (index.json's replay commands name the program that ran: the same name in both runs.)
+    for f in "$work"/failures/*; do
+        [ -e "$f" ] && sed "s|$sc |scalecert |g" "$f" >"$out/$name.failures.$(basename "$f")"
+    done
+    rm -f "$work/a.json" "$work/a.csv"
+}
+audit audit.convex libccd-gjk,libccd-mpr,fcl-gjk-indep,bullet-gjk-epa certificates/scenes/*.json
+audit audit.parts bullet-compound,fcl-compound-libccd,fcl-compound-indep,libccd-gjk-parts \
+    certificates/scenes/compound/band.json certificates/scenes/compound/l_box.json \
+    certificates/scenes/compound/u_peg.json
 run family.golden "$sc" golden --family nearly-equal-slopes --count 3 --eps 1/1024 --dir "$work/family"
 for g in "$work"/family/*; do mv "$g" "$out/family.$(basename "$g")"; done
 rm -rf "$work"

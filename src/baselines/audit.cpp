@@ -170,7 +170,7 @@ void wrong_by_distance(const std::function<int(size_t)>& said, const DistancePai
             continue;
         }
         ++b.pairs;
-        b.wrong += AuditRow::wrong(said(i), static_cast<int>(p.exact[i]));
+        b.wrong += AuditRow::wrong(said(i), p.exact[i]);
     }
 }
 
@@ -446,9 +446,9 @@ std::vector<AuditRow> audit_convex(const std::string& name, const ExactScene& s,
         for (size_t i = 0; i < r1.size(); ++i)
             if (verdicts[i] == AuditRow::kSaidNoAnswer) {
                 auto [reason, claim] = cm->no_answer_at(i);
-                r.count_no_answer(r1[i], r2[i], static_cast<int>(exact[i]), std::move(reason), std::move(claim));
+                r.count_no_answer(r1[i], r2[i], exact[i], std::move(reason), std::move(claim));
             } else {
-                r.count(r1[i], r2[i], verdicts[i], static_cast<int>(exact[i]));
+                r.count(r1[i], r2[i], verdicts[i], exact[i]);
             }
         // A program's time is its whole run (start-up included) over the pairs it was asked.
         r.seconds_per_query = std::chrono::duration<double>(Clock::now() - t0).count() / static_cast<double>(r1.size());

@@ -32,7 +32,7 @@ struct CompoundSample {
     int k = 0;
     int side = 0;
     double r1 = 0, r2 = 0;
-    int exact = 0;
+    Verdict exact = Verdict::Separated;
 };
 // The samples of a scene: `random` random pairs; up to `points` points on the contact edges of
 // the region's boundary (every edge when there are at most that many, the points spread evenly

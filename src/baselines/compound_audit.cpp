@@ -62,9 +62,8 @@ std::optional<std::array<double, 2>> double_on_edge(const EdgeRef& e, const Poin
     return std::array<double, 2>{to_double_rn(xq), to_double_rn(yq)};  // (exact: both are doubles)
 }
 
-int exact_verdict(CompoundJudge& judge, double r1, double r2) {
-    return static_cast<int>(
-        judge.verdict(exact_from_double(r1), exact_from_double(r2)).verdict);  // 0, 1, 2: Verdict's order
+Verdict exact_verdict(CompoundJudge& judge, double r1, double r2) {
+    return judge.verdict(exact_from_double(r1), exact_from_double(r2)).verdict;
 }
 
 }  // namespace
@@ -165,7 +164,7 @@ std::vector<int> score_compound(const fp::Method& m, const std::vector<CompoundS
         row.count(c.r1, c.r2, v, c.exact);
         if (c.k == 0) {
             ++on.points;
-            if (c.exact == 1) {
+            if (c.exact == Verdict::Touching) {
                 ++on.touching;
                 ++(v > 0 ? on.said_separated : v == 0 ? on.said_touching : on.said_overlapping);
             } else {
@@ -174,7 +173,7 @@ std::vector<int> score_compound(const fp::Method& m, const std::vector<CompoundS
             }
         } else if (c.k > 0 && by_distance) {
             AuditRow::ByDistance& b = row.by_distance[static_cast<size_t>(c.k / 4 - 1)];
-            if (c.exact == 1) {
+            if (c.exact == Verdict::Touching) {
                 ++b.touching;
             } else {
                 ++b.pairs;
@@ -237,7 +236,7 @@ std::vector<AuditRow> audit_compound(const std::string& name, const ExactScene& 
             std::vector<double> err;
             std::vector<AuditRow::MeasureFailure> measured;
             for (size_t i = 0; i < samples.size(); ++i) {
-                if (samples[i].exact != 0 || said[i] <= 0) continue;
+                if (samples[i].exact != Verdict::Separated || said[i] <= 0) continue;
                 const std::optional<fp::Measure> me = mm->measure(samples[i].r1, samples[i].r2, true);
                 if (!me || me->depth || !std::isfinite(me->value)) continue;
                 const Q a = exact_from_double(samples[i].r1), bb = exact_from_double(samples[i].r2);
@@ -266,7 +265,7 @@ std::vector<AuditRow> audit_compound(const std::string& name, const ExactScene& 
             // not overlap exactly is counted apart (contacts_apart).
             std::vector<double> derr;
             for (size_t i = 0; i < samples.size(); ++i) {
-                if (samples[i].exact != 2 || said[i] >= 0) continue;
+                if (samples[i].exact != Verdict::Overlapping || said[i] >= 0) continue;
                 const Q a = exact_from_double(samples[i].r1), bb = exact_from_double(samples[i].r2);
                 for (const fp::PartContact& c : mm->contacts(samples[i].r1, samples[i].r2)) {
                     if (c.part1 < 0 || c.part2 < 0 || static_cast<size_t>(c.part1) >= judge.parts(0) ||

@@ -18,17 +18,17 @@ const char* AuditRow::said_word(int said) {
     }
 }
 
-bool AuditRow::wrong(int said, int exact) {
+bool AuditRow::wrong(int said, Verdict exact) {
     switch (said) {
-    case kSaidSeparated: return exact != 0;
-    case kSaidTouching: return exact != 1;
-    case kSaidIntersecting: return exact == 0;
+    case kSaidSeparated: return exact != Verdict::Separated;
+    case kSaidTouching: return exact != Verdict::Touching;
+    case kSaidIntersecting: return exact == Verdict::Separated;
     case kSaidNoAnswer: return true;
-    default: return exact != 2;
+    default: return exact != Verdict::Overlapping;
     }
 }
 
-void AuditRow::count(double r1, double r2, int said, int exact) {
+void AuditRow::count(double r1, double r2, int said, Verdict exact) {
     if (said == kSaidNoAnswer) return count_no_answer(r1, r2, exact, "no answer", "");
     ++queries;
     if (!wrong(said, exact)) return;
@@ -36,7 +36,7 @@ void AuditRow::count(double r1, double r2, int said, int exact) {
     if (failures.size() < kMaxFailures) failures.push_back({r1, r2, said, exact});
 }
 
-void AuditRow::count_no_answer(double r1, double r2, int exact, std::string reason, std::string claim) {
+void AuditRow::count_no_answer(double r1, double r2, Verdict exact, std::string reason, std::string claim) {
     ++queries;
     ++not_answered;
     if (failures.size() < kMaxFailures)
@@ -203,7 +203,7 @@ Json audit_json(const std::vector<AuditRow>& rows, bool timing) {
                     Json fj{{"rho1", f.rho1},
                             {"rho2", f.rho2},
                             {"said", AuditRow::said_word(f.said)},
-                            {"exact", verdict_name(static_cast<Verdict>(f.exact))}};
+                            {"exact", verdict_name(f.exact)}};
                     if (f.said == AuditRow::kSaidNoAnswer) {
                         fj["reason"] = f.reason;
                         fj["claim"] = f.claim.empty() ? Json() : Json::parse(f.claim);

@@ -76,35 +76,36 @@ struct AuditRow {
     std::vector<std::pair<std::string, double>> settings;
     // Where the method's verdicts were wrong (the counts above), the first kMaxFailures of them in
     // the audit's order: (ρ1, ρ2) as the doubles it was asked at, what it said (a Said) and the
-    // exact verdict at those doubles (0 separated, 1 touching, 2 overlapping). `audit --failures
-    // DIR` writes them as claims files that certify-fp replays.
+    // exact verdict at those doubles. `audit --failures DIR` writes them as claims files that
+    // certify-fp replays.
     // A claim of the program's that is no answer (said == kSaidNoAnswer) has its reason and what
     // the program wrote for that pair, as JSON text ("" when it wrote nothing there).
-    struct Failure {
-        double rho1, rho2;
-        int said, exact;
-        std::string reason = {}, claim = {};
-    };
-    std::vector<Failure> failures;
-    static constexpr size_t kMaxFailures = 50;
-    // What a method said (its classify): separated, touching, intersecting (overlapping or
-    // touching: what a collision query's "colliding" means) or overlapping (strictly: only a
-    // program's own claims say it); no answer: a program's claim that does not answer the pair
-    // asked (wrong whatever the exact verdict).
-    enum Said {
+    // What a method said (its classify, whose answer codes these are): separated, touching,
+    // intersecting (overlapping or touching: what a collision query's "colliding" means) or
+    // overlapping (strictly: only a program's own claims say it); no answer: a program's claim
+    // that does not answer the pair asked (wrong whatever the exact verdict).
+    enum Said : int {
         kSaidNoAnswer = -3,
         kSaidOverlapping = -2,
         kSaidIntersecting = -1,
         kSaidTouching = 0,
         kSaidSeparated = 1
     };
+    struct Failure {
+        double rho1, rho2;
+        int said;  // a Said
+        Verdict exact;
+        std::string reason = {}, claim = {};
+    };
+    std::vector<Failure> failures;
+    static constexpr size_t kMaxFailures = 50;
     static const char* said_word(int said);
-    // Whether saying `said` where the exact verdict is `exact` (0, 1, 2 as above) is wrong.
-    static bool wrong(int said, int exact);
+    // Whether saying `said` where the exact verdict is `exact` is wrong.
+    static bool wrong(int said, Verdict exact);
     // A verdict `said` at (r1, r2) where the exact one is `exact`: counted and, when wrong, noted.
-    void count(double r1, double r2, int said, int exact);
+    void count(double r1, double r2, int said, Verdict exact);
     // A pair (r1, r2) whose claim is no answer: counted and noted with its reason and the claim.
-    void count_no_answer(double r1, double r2, int exact, std::string reason, std::string claim);
+    void count_no_answer(double r1, double r2, Verdict exact, std::string reason, std::string claim);
     // Where the method's distances or depths were off by more than the audit's measure tolerance
     // (relative): `measures_wrong` of them, the worst kMaxFailures listed (largest error first,
     // ties in the audit's order), each with the pair asked, the value, its relative error and, on

@@ -195,7 +195,7 @@ Json row_json(const AuditRow& r) {
          [&] {
              Json a = Json::array();
              for (const AuditRow::Failure& f : r.failures) {
-                 Json x = Json::array({num_json(f.rho1), num_json(f.rho2), f.said, f.exact});
+                 Json x = Json::array({num_json(f.rho1), num_json(f.rho2), f.said, static_cast<int>(f.exact)});
                  if (f.said == AuditRow::kSaidNoAnswer) x.push_back(Json::array({f.reason, f.claim}));
                  a.push_back(std::move(x));
              }
@@ -218,6 +218,12 @@ Json row_json(const AuditRow& r) {
              for (const auto& [key, value] : r.settings) a.push_back(Json::array({key, num_json(value)}));
              return a;
          }()}};
+}
+
+// An exact verdict as a shard writes it (its enum value), checked.
+Verdict verdict_code(int v) {
+    if (v < 0 || v > 2) throw std::out_of_range("a verdict code outside 0..2");
+    return static_cast<Verdict>(v);
 }
 
 AuditRow row_of(const Json& j) {
@@ -258,7 +264,8 @@ AuditRow row_of(const Json& j) {
     }
     if (j.contains("failures"))
         for (const Json& f : j.at("failures")) {
-            r.failures.push_back({num_of(f.at(0)), num_of(f.at(1)), f.at(2).get<int>(), f.at(3).get<int>()});
+            r.failures.push_back(
+                {num_of(f.at(0)), num_of(f.at(1)), f.at(2).get<int>(), verdict_code(f.at(3).get<int>())});
             if (f.size() > 4) {
                 r.failures.back().reason = f.at(4).at(0).get<std::string>();
                 r.failures.back().claim = f.at(4).at(1).get<std::string>();
