@@ -318,7 +318,7 @@ std::string golden_stem(const std::string& path) {
 std::vector<std::pair<std::string, std::string>> golden_files(const std::string& stem, const ExactScene& s,
                                                               const GoldenPoints& points,
                                                               const std::function<void(Json&)>& fields) {
-    GoldenAnswers a = open_engine({std::make_shared<const ExactScene>(s), nullptr, stem})->golden(points);
+    GoldenAnswers a = open_engine(std::make_shared<const ExactScene>(s), stem)->golden(points);
     Json j = std::move(a.curve);
     fields(j);
     j["queries"] = std::move(a.queries);

@@ -264,6 +264,12 @@ class PartsRules final : public ClaimRules {
     std::map<std::string, std::unique_ptr<CompoundJudge>> posed_;
     // The part of object i holding x scaled by ρ, or within the absolute tolerance of it (−1: none).
     int place(int i, const Q& rho, const Vec3q& x, Json* proof, bool* near) const;
+    // The rules, kind by kind (kinds/), with the proof in *p when given.
+    void judge_verdict(const TypedClaim& c, Judged& g, Json* p);
+    void judge_plane(const TypedClaim& c, Judged& g, Json* p);
+    void judge_witness(const TypedClaim& c, Judged& g, Json* p);
+    void judge_distance(const TypedClaim& c, Judged& g, Json* p);
+    void judge_depth(const TypedClaim& c, Judged& g, Json* p);
     CompoundJudge& judge_;
 };
 
@@ -272,6 +278,28 @@ class PartsRules final : public ClaimRules {
 // `certificate`, the rules' certificate of every judgement.
 std::string certify_fp(ClaimRules& rules, const std::string& claims, const std::string& name, const ClaimOptions& opt,
                        long* wrong, long* count = nullptr, std::string* certificate = nullptr);
+
+// A judgement's report (certify-fp's JSON object beside the claim's index and kind, and its text
+// line), kind by kind, each beside its rule (kinds/); `parts`: the scene when the claim was on
+// objects made of parts, else null.
+void describe(const TypedClaim& c, const VerdictJudged& d, const Judged& g, const ExactScene* parts, Json& o,
+              std::string& text);
+void describe(const TypedClaim& c, const GrowthJudged& d, const Judged& g, const ExactScene* parts, Json& o,
+              std::string& text);
+void describe(const TypedClaim& c, const CurvePointJudged& d, const Judged& g, const ExactScene* parts, Json& o,
+              std::string& text);
+void describe(const TypedClaim& c, const SwitchPointJudged& d, const Judged& g, const ExactScene* parts, Json& o,
+              std::string& text);
+void describe(const TypedClaim& c, const CurveJudged& d, const Judged& g, const ExactScene* parts, Json& o,
+              std::string& text);
+void describe(const TypedClaim& c, const PlaneJudged& d, const Judged& g, const ExactScene* parts, Json& o,
+              std::string& text);
+void describe(const TypedClaim& c, const WitnessJudged& d, const Judged& g, const ExactScene* parts, Json& o,
+              std::string& text);
+void describe(const TypedClaim& c, const DistanceJudged& d, const Judged& g, const ExactScene* parts, Json& o,
+              std::string& text);
+void describe(const TypedClaim& c, const DepthJudged& d, const Judged& g, const ExactScene* parts, Json& o,
+              std::string& text);
 
 // The claim as the certificates state it (FORMAT.md): every number an exact string.
 Json exact_claim_json(const TypedClaim& c);

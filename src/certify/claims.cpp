@@ -6,6 +6,7 @@
 #include "certify/certificate.hpp"
 #include "certify/compound_judge.hpp"
 #include "certify/region_certificate.hpp"
+#include "certify/report.hpp"
 #include "certify/judgements.hpp"
 #include "geometry/measures.hpp"
 #include "io/strict_json.hpp"
@@ -17,22 +18,7 @@
 
 namespace scalecert::internal {
 
-namespace {
-
-void put_point(Json& o, const std::string& key, const Vec3q& v) {
-    o[key] = Json::array({to_exact_string(v[0]), to_exact_string(v[1]), to_exact_string(v[2])});
-}
-
-std::string dbl(double d, int digits = 6) {
-    char b[40];
-    std::snprintf(b, sizeof b, "%.*g", digits, d);
-    return b;
-}
-// "p/q (~d)": the exact value and its nearest double, to `digits` significant digits (the JSON
-// claims' report uses 6, the line format's 17).
-std::string num(const Q& q, int digits = 6) { return to_exact_string(q) + " (~" + dbl(to_double_rn(q), digits) + ")"; }
-
-}  // namespace
+using namespace report_parts;
 
 // Is x in P_i(ρ) on the exact polyhedra, with its proof.
 bool hull_member(const Model& m, int i, const Q& rho, const Vec3q& x, Json* proof) {
@@ -372,78 +358,15 @@ class ClaimReader {
 
 // ---- writing: the report of a judgement ---------------------------------------------------------
 
-// claimed, exact, and the absolute and relative errors (exact, with nearest doubles).
-void errors(Json& o, const Q& claimed, const Q& exact) {
-    put_exact(o, "claimed", claimed);
-    put_exact(o, "exact", exact);
-    const Q err = abs(Q(claimed - exact));
-    put_exact(o, "abs_error", err);
-    if (sgn(exact) != 0)
-        put_exact(o, "rel_error", err / abs(exact));
-    else
-        o["rel_error"] = nullptr;
-}
-// For a value whose exact square E is known: the error of the squares exactly, and |c − √E|
-// and its relative size as MPFR-rounded doubles.
-void errors_sq(Json& o, const Q& claimed, const Q& E) {
-    put_exact(o, "claimed", claimed);
-    put_exact(o, "exact_squared", E);
-    put_exact(o, "squared_error", Q(claimed * claimed - E));
-    const double d = -sqrt_minus_rn(E, claimed);  // c − √E
-    o["abs_error_double"] = std::fabs(d);
-    o["rel_error_double"] = sgn(E) ? Json(relative_sqrt_error_rn(E, claimed)) : Json(nullptr);
-}
-// (ρ1, ρ2), and which objects are at poses.
-std::string at(const TypedClaim& c) {
-    const char* posed = c.pose[0] && c.pose[1] ? " with P1 and P2 at poses"
-                        : c.pose[0]            ? " with P1 at a pose"
-                        : c.pose[1]            ? " with P2 at a pose"
-                                               : "";
-    return "(" + num(c.rho1) + ", " + num(c.rho2) + ")" + posed;
-}
-// A point's part on an object made of parts: its number, or false when no part holds it.
-Json part_or_false(int k) { return k >= 0 ? Json(k) : Json(false); }
-// After part k of object i in a text line: " ('foot')", its name, or "" when it has none.
-std::string name_of(const ExactScene& sc, int i, int k) { return part_name_suffix(sc.P[i], static_cast<size_t>(k)); }
-// Part k of object i in a text line: "part 3", "part 3 ('foot')" when it has a name, "NO" for none.
-std::string part_or_no(const ExactScene& sc, int i, int k, bool near = false) {
-    return k < 0 ? "NO" : (near ? "within LEN of part " : "part ") + std::to_string(k) + name_of(sc, i, k);
-}
-// A membership for the text line: "yes", "within LEN" (outside, within the absolute tolerance), "NO".
-const char* yes_near_no(bool in, bool near) { return !in ? "NO" : near ? "within LEN" : "yes"; }
-// o[key] = true beside o[in_key] for a point outside its body but within the absolute tolerance.
-void put_near(Json& o, const char* key, bool near) {
-    if (near) o[key] = true;
-}
-// A part pair [a, b] as o[key], and beside it o[key + "_names"], [name or null, name or null], when
-// either part has a name (null for the pair itself: no pair).
-void put_part_pair(Json& o, const std::string& key, const ExactScene& sc, int a, int b) {
-    if (a < 0) {
-        o[key] = nullptr;
-        return;
-    }
-    o[key] = Json::array({a, b});
-    const std::string &n1 = part_name(sc.P[0], static_cast<size_t>(a)),
-                      &n2 = part_name(sc.P[1], static_cast<size_t>(b));
-    if (!n1.empty() || !n2.empty())
-        o[key + "_names"] = Json::array({n1.empty() ? Json(nullptr) : Json(n1), n2.empty() ? Json(nullptr) : Json(n2)});
-}
-
 // A JSON claim's report object (beside its index and kind) and its text line; `parts`: the scene
 // when the claim was on objects made of parts, else null.
-void describe(const TypedClaim& c, const Judged& g, const ExactScene* parts, Json& o, std::string& text) {
-    auto rhos = [&] {
-        put_exact(o, "rho1", c.rho1);
-        put_exact(o, "rho2", c.rho2);
-        for (size_t i = 0; i < 2; ++i)
-            if (c.pose[i]) o[i ? "pose2" : "pose1"] = exact_claim_json(c)[i ? "pose2" : "pose1"];
-    };
+void describe_claim(const TypedClaim& c, const Judged& g, const ExactScene* parts, Json& o, std::string& text) {
     if (!c.no_answer.empty()) {
         // The scaling pair it was asked at, where that is a question and not the answer.
         const bool asked =
             c.type != ClaimType::Growth && c.type != ClaimType::Curve && c.type != ClaimType::SwitchPoint;
         if (asked && c.type != ClaimType::CurvePoint)
-            rhos();
+            put_rhos(o, c);
         else if (c.type == ClaimType::CurvePoint)
             put_exact(o, "rho1", c.rho1);
         o["no_answer"] = c.no_answer;
@@ -462,214 +385,14 @@ void describe(const TypedClaim& c, const Judged& g, const ExactScene* parts, Jso
             ": " + c.no_answer + " is " + c.no_answer_reason + ": no answer";
         return;
     }
-    switch (c.type) {
-    case ClaimType::Verdict: {
-        const auto& d = std::get<VerdictJudged>(g.of);
-        rhos();
-        if (parts) {
-            o["exact"] = verdict_name(d.exact);
-            put_part_pair(o, "pair", *parts, g.part1, g.part2);
-            o["claimed"] = claimed_name(c.verdict);
-        } else {
-            o["claimed"] = claimed_name(c.verdict);
-            o["exact"] = verdict_name(d.exact);
-            if (!c.posed()) put_exact(o, "rho2_minus_curve", d.rho2_minus_curve);  // no curve at a pose
-        }
-        text = "verdict at " + at(c) + ": claimed " + claimed_name(c.verdict) + ", exact " + verdict_name(d.exact);
-        return;
-    }
-    case ClaimType::Growth: {
-        const auto& d = std::get<GrowthJudged>(g.of);
-        errors(o, c.value, d.exact);
-        text = "growth distance " + num(c.value) + ": exact " + num(d.exact);
-        return;
-    }
-    case ClaimType::SwitchPoint: {
-        const auto& d = std::get<SwitchPointJudged>(g.of);
-        rhos();
-        const std::string head = "switch point " + at(c);
-        if (!d.nearest) {
-            o["nearest"] = nullptr;
-            if (d.window_whole)
-                text = head + ": the exact curve has no switch point at rho1, rho2 > 0";
+    std::visit(
+        [&](const auto& d) {
+            if constexpr (std::is_same_v<std::decay_t<decltype(d)>, std::monostate>)
+                throw std::logic_error("certify-fp: a judgement with no kind");
             else
-                text = head + ": the exact curve has no switch point from rho1 = " + num(d.window_lo) +
-                       (d.window_hi ? " to " + num(*d.window_hi) : std::string(" on")) + " (the range the walk proved)";
-            return;
-        }
-        const ExactSwitch& b = *d.nearest;
-        Json n;
-        put_exact(n, "rho1", b.rho1);
-        put_exact(n, "rho2", b.rho2);
-        n["contact"] = b.label;
-        o["nearest"] = n;
-        Json e1, e2;
-        errors(e1, c.rho1, b.rho1);
-        errors(e2, c.rho2, b.rho2);
-        o["rho1_error"] = e1;
-        o["rho2_error"] = e2;
-        o["contact_right"] = d.contact_right ? Json(*d.contact_right) : Json(nullptr);
-        text = "switch point (" + num(c.rho1) + ", " + num(c.rho2) + (c.contact ? ", " + *c.contact : "") +
-               (d.matched ? "): matches exact (" : "): nearest exact (") + num(b.rho1) + ", " + num(b.rho2) + ", " +
-               b.label + ")";
-        return;
-    }
-    case ClaimType::CurvePoint: {
-        const auto& d = std::get<CurvePointJudged>(g.of);
-        rhos();
-        put_exact(o, "curve_rho2", d.exact);
-        errors(o, c.rho2, d.exact);
-        text = "curve point " + at(c) + ": exact curve at rho1 is " + num(d.exact);
-        return;
-    }
-    case ClaimType::Curve: {
-        const auto& d = std::get<CurveJudged>(g.of);
-        o["exact_rho2_positive_over_range"] = d.exact_positive;
-        put_exact(o, "max_vertical_error", d.max_vertical);
-        put_exact(o, "max_vertical_error_at_rho1", d.max_vertical_at);
-        put_exact(o, "max_horizontal_error", d.max_horizontal);
-        auto pairs = [](const std::vector<std::pair<Q, Q>>& v) {
-            Json a = Json::array();
-            for (const auto& [x, y] : v) a.push_back(Json::array({to_exact_string(x), to_exact_string(y)}));
-            return a;
-        };
-        o["switch_points_missed"] = pairs(d.missed);
-        o["switch_points_extra"] = pairs(d.extra);
-        Json mp = Json::array();
-        for (const CurveJudged::Misplaced& m : d.misplaced) {
-            Json j;
-            put_exact(j, "exact_rho1", m.exact_rho1);
-            put_exact(j, "exact_rho2", m.exact_rho2);
-            put_exact(j, "claimed_rho1", m.claimed_rho1);
-            put_exact(j, "claimed_rho2", m.claimed_rho2);
-            mp.push_back(j);
-        }
-        o["switch_points_misplaced"] = mp;
-        Json wl = Json::array();
-        for (const CurveJudged::WrongContact& w : d.wrong_contacts) {
-            Json j;
-            put_exact(j, "rho1", w.rho1);
-            j["claimed"] = w.claimed;
-            j["exact"] = w.exact;
-            wl.push_back(j);
-        }
-        o["wrong_contacts"] = wl;
-        const size_t n = c.curve->segments.size();
-        text = "curve of " + std::to_string(n) + (n == 1 ? " segment" : " segments") + ": max vertical error " +
-               num(d.max_vertical) + ", max horizontal error " + num(d.max_horizontal) + ", switch points missed " +
-               std::to_string(d.missed.size()) + ", extra " + std::to_string(d.extra.size()) + ", misplaced " +
-               std::to_string(d.misplaced.size()) + ", wrong contacts " + std::to_string(d.wrong_contacts.size()) +
-               (d.exact_positive ? "" : ", and the exact curve reaches rho2 <= 0 in the claimed range");
-        return;
-    }
-    case ClaimType::Plane: {
-        const auto& d = std::get<PlaneJudged>(g.of);
-        rhos();
-        put_exact(o, "max_over_P1", d.c1);  // P1(ρ1) ⊆ {n·x ≤ c1}
-        put_exact(o, "min_over_P2", d.c2);  // P2(ρ2) ⊆ {n·x ≥ c2}
-        put_exact(o, "gap", d.c2 - d.c1);
-        text = "plane at " + at(c) + ": P1 reaches " + num(d.c1) + ", P2 starts at " + num(d.c2);
-        if (c.offset) {
-            put_exact(o, "offset_minus_P1", *c.offset - d.c1);
-            put_exact(o, "P2_minus_offset", d.c2 - *c.offset);
-            text += ", offset " + num(*c.offset);
-        }
-        return;
-    }
-    case ClaimType::Witness: {
-        const auto& d = std::get<WitnessJudged>(g.of);
-        if (parts) {
-            o["in_P1_part"] = part_or_false(d.in_part1);
-            put_part_name(o, "in_P1_part", parts->P[0], d.in_part1);
-            o["in_P2_part"] = part_or_false(d.in_part2);
-            put_part_name(o, "in_P2_part", parts->P[1], d.in_part2);
-            text = "witness point at " + at(c) + ": in P1 " + part_or_no(*parts, 0, d.in_part1, d.near1) + ", in P2 " +
-                   part_or_no(*parts, 1, d.in_part2, d.near2);
-        } else {
-            o["in_P1"] = d.in1;
-            o["in_P2"] = d.in2;
-            text = "witness point at " + at(c) + ": in P1 " + yes_near_no(d.in1, d.near1) + ", in P2 " +
-                   yes_near_no(d.in2, d.near2);
-        }
-        put_near(o, "near_P1", d.near1);
-        put_near(o, "near_P2", d.near2);
-        o["exact_verdict"] = verdict_name(d.exact_verdict);
-        return;
-    }
-    case ClaimType::Distance: {
-        const auto& d = std::get<DistanceJudged>(g.of);
-        rhos();
-        errors_sq(o, c.value, d.exact_squared);
-        put_point(o, "exact_closest_P1", d.exact_p1);
-        put_point(o, "exact_closest_P2", d.exact_p2);
-        if (parts) put_part_pair(o, "exact_pair", *parts, g.part1, g.part2);
-        o["value_right"] = d.value_right;
-        text = "distance at " + at(c) + ": claimed " + num(c.value) + ", exact squared " + num(d.exact_squared) +
-               " (distance ~" + dbl(sqrt_minus_rn(d.exact_squared, Q(0))) +
-               (parts ? ", parts " + std::to_string(g.part1) + name_of(*parts, 0, g.part1) + " and " +
-                            std::to_string(g.part2) + name_of(*parts, 1, g.part2)
-                      : std::string()) +
-               ")";
-        if (c.closest) {
-            if (parts) {
-                o["closest_in_P1_part"] = part_or_false(d.in_part1);
-                put_part_name(o, "closest_in_P1_part", parts->P[0], d.in_part1);
-                o["closest_in_P2_part"] = part_or_false(d.in_part2);
-                put_part_name(o, "closest_in_P2_part", parts->P[1], d.in_part2);
-            } else {
-                o["closest_in_P1"] = d.in1;
-                o["closest_in_P2"] = d.in2;
-            }
-            put_near(o, "closest_near_P1", d.near1);
-            put_near(o, "closest_near_P2", d.near2);
-            if (d.near1 || d.near2) text += ", closest points within LEN of their bodies";
-            put_exact(o, "closest_squared_distance", d.closest_squared);
-            o["closest_right"] = *d.closest_right;
-            // Wrong points: the line says so, and why (CLAIMS.md, "a closest pair").
-            if (!*d.closest_right) {
-                std::string why;
-                if (!d.in1) why = "the first point is not in P1";
-                if (!d.in2) why += std::string(why.empty() ? "" : "; ") + "the second point is not in P2";
-                if (why.empty())
-                    why = d.near1 || d.near2 ? "each is in or within LEN of its body, but they lie farther apart than "
-                                               "the distance allows"
-                                             : "each is in its body, but they lie farther apart than the distance";
-                text += std::string(d.value_right ? ", but" : ", and") + " the closest points are wrong (" + why + ")";
-            }
-        }
-        return;
-    }
-    case ClaimType::Depth: {
-        const auto& d = std::get<DepthJudged>(g.of);
-        rhos();
-        // On parts, the contact's part pair, named in the line.
-        std::string of;
-        if (parts && c.parts) {
-            put_part_pair(o, "parts", *parts, g.part1, g.part2);
-            of = " of parts " + std::to_string(g.part1) + name_of(*parts, 0, g.part1) + " and " +
-                 std::to_string(g.part2) + name_of(*parts, 1, g.part2);
-        }
-        if (!d.exact_squared) {
-            o["exact_verdict"] = verdict_name(Verdict::Separated);
-            put_exact(o, "claimed", c.value);
-            text = "penetration depth" + of + " at " + at(c) + ": claimed " + num(c.value) + ", but the " +
-                   (of.empty() ? "pair is" : "parts are") + " separated";
-            return;
-        }
-        errors_sq(o, c.value, *d.exact_squared);
-        o["exact_direction"] = Json::array(
-            {d.exact_direction[0].get_str(), d.exact_direction[1].get_str(), d.exact_direction[2].get_str()});
-        o["value_right"] = *d.value_right;
-        text = "penetration depth" + of + " at " + at(c) + ": claimed " + num(c.value) + ", exact squared " +
-               num(*d.exact_squared) + " (depth ~" + dbl(sqrt_minus_rn(*d.exact_squared, Q(0))) + ")";
-        if (c.direction) {
-            put_exact(o, "depth_squared_along_direction", d.along);
-            o["direction_right"] = *d.direction_right;
-            if (*d.value_right && !*d.direction_right) text += ", but the direction is wrong";
-        }
-        return;
-    }
-    }
+                describe(c, d, g, parts, o, text);
+        },
+        g.of);
 }
 
 // ---- the line format ------------------------------------------------------------------------------
@@ -885,7 +608,7 @@ Run run_claims(ClaimRules& rules, const std::string& claims, const std::string& 
             o["index"] = i;
             o["kind"] = type_name(c.type);
             try {
-                one(c, i, o, [&](const Judged& g, std::string& line) { describe(c, g, parts, o, line); });
+                one(c, i, o, [&](const Judged& g, std::string& line) { describe_claim(c, g, parts, o, line); });
             } catch (const InputError& e) {  // a limit met while judging it (a pose's moved points)
                 if (!c.posed()) throw;
                 throw InputError(name + ": claims[" + std::to_string(i) + "]." + e.what());

@@ -74,7 +74,7 @@ Command add_region(CLI::App& app) {
                         throw InputError(a->classify + ": " + e.what());
                     }
                 }
-                std::unique_ptr<SceneEngine> engine = internal::open_engine({sc, nullptr, a->scene.name()});
+                std::unique_ptr<SceneEngine> engine = internal::open_engine(sc, a->scene.name());
                 CompoundSession& session = engine->region();
                 if (sub->count("--classify")) {
                     // (Each pair is checked, with the file's name, before the region is built.)

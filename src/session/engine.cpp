@@ -161,4 +161,11 @@ std::unique_ptr<SceneEngine> open_engine(SceneSource source) {
     return std::make_unique<ConvexEngine>(std::move(source));
 }
 
+std::unique_ptr<SceneEngine> open_engine(std::shared_ptr<const ExactScene> scene, std::string name) {
+    SceneSource src;
+    src.exact = std::move(scene);
+    src.name = std::move(name);
+    return open_engine(std::move(src));
+}
+
 }  // namespace scalecert::internal

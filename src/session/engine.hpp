@@ -78,5 +78,7 @@ struct SceneSource {
 // The one place that chooses the engine for a scene: objects made of parts get the region's,
 // two convex objects the session's (which then chooses the walk or the hull model).
 std::unique_ptr<SceneEngine> open_engine(SceneSource source);
+// The same for a scene read exactly, its own hull model, the engine chosen as Engine::Auto.
+std::unique_ptr<SceneEngine> open_engine(std::shared_ptr<const ExactScene> scene, std::string name);
 
 }  // namespace scalecert::internal
