@@ -20,7 +20,6 @@ std::string dbl(double d, int digits) {
 }
 std::string num(const Q& q, int digits) { return to_exact_string(q) + " (~" + dbl(to_double_rn(q), digits) + ")"; }
 
-
 void errors(Json& o, const Q& claimed, const Q& exact) {
     put_exact(o, "claimed", claimed);
     put_exact(o, "exact", exact);

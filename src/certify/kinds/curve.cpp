@@ -223,8 +223,7 @@ void ConvexRules::Impl::curve(const TypedClaim& c, Judged& g, Proof* proof) {
               d.wrong_contacts.empty();
 }
 
-void describe(const TypedClaim& c, const CurveJudged& d, const Judged&, const ExactScene*, Json& o,
-              std::string& text) {
+void describe(const TypedClaim& c, const CurveJudged& d, const Judged&, const ExactScene*, Json& o, std::string& text) {
     o["exact_rho2_positive_over_range"] = d.exact_positive;
     put_exact(o, "max_vertical_error", d.max_vertical);
     put_exact(o, "max_vertical_error_at_rho1", d.max_vertical_at);

@@ -35,8 +35,7 @@ void ConvexRules::Impl::depth(const TypedClaim& c, Judged& g, Proof* proof) {
     // The exact squared depth (none when separated) and a minimising direction, with its proof.
     const MeasuredDepth md = depth_of(c.rho1, c.rho2);
     if (proof) proof->proof = depth_proof(nullptr, md, c.rho1, c.rho2);
-    depth_rule(c, md, tol, g,
-               [&](const Vec3q& n) { return directional_depth_squared(points(), n, c.rho1, c.rho2); });
+    depth_rule(c, md, tol, g, [&](const Vec3q& n) { return directional_depth_squared(points(), n, c.rho1, c.rho2); });
 }
 
 void PartsRules::judge_depth(const TypedClaim& c, Judged& g, Json* p) {
@@ -47,8 +46,7 @@ void PartsRules::judge_depth(const TypedClaim& c, Judged& g, Json* p) {
     g.part1 = a;
     g.part2 = b;
     const MeasuredDepth md = judge_.pair_depth(a, b, c.rho1, c.rho2, p);
-    depth_rule(c, md, tol_, g,
-               [&](const Vec3q& n) { return judge_.pair_directional_depth(a, b, n, c.rho1, c.rho2); });
+    depth_rule(c, md, tol_, g, [&](const Vec3q& n) { return judge_.pair_directional_depth(a, b, n, c.rho1, c.rho2); });
 }
 
 void describe(const TypedClaim& c, const DepthJudged& d, const Judged& g, const ExactScene* parts, Json& o,
@@ -58,8 +56,8 @@ void describe(const TypedClaim& c, const DepthJudged& d, const Judged& g, const 
     std::string of;
     if (parts && c.parts) {
         put_part_pair(o, "parts", *parts, g.part1, g.part2);
-        of = " of parts " + std::to_string(g.part1) + name_of(*parts, 0, g.part1) + " and " +
-             std::to_string(g.part2) + name_of(*parts, 1, g.part2);
+        of = " of parts " + std::to_string(g.part1) + name_of(*parts, 0, g.part1) + " and " + std::to_string(g.part2) +
+             name_of(*parts, 1, g.part2);
     }
     if (!d.exact_squared) {
         o["exact_verdict"] = verdict_name(Verdict::Separated);
@@ -69,8 +67,8 @@ void describe(const TypedClaim& c, const DepthJudged& d, const Judged& g, const 
         return;
     }
     errors_sq(o, c.value, *d.exact_squared);
-    o["exact_direction"] = Json::array(
-        {d.exact_direction[0].get_str(), d.exact_direction[1].get_str(), d.exact_direction[2].get_str()});
+    o["exact_direction"] =
+        Json::array({d.exact_direction[0].get_str(), d.exact_direction[1].get_str(), d.exact_direction[2].get_str()});
     o["value_right"] = *d.value_right;
     text = "penetration depth" + of + " at " + at(c) + ": claimed " + num(c.value) + ", exact squared " +
            num(*d.exact_squared) + " (depth ~" + dbl(sqrt_minus_rn(*d.exact_squared, Q(0))) + ")";

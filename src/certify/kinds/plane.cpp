@@ -33,8 +33,7 @@ void PartsRules::judge_plane(const TypedClaim& c, Judged& g, Json* p) {
     if (p) *p = Json::object();
 }
 
-void describe(const TypedClaim& c, const PlaneJudged& d, const Judged&, const ExactScene*, Json& o,
-              std::string& text) {
+void describe(const TypedClaim& c, const PlaneJudged& d, const Judged&, const ExactScene*, Json& o, std::string& text) {
     put_rhos(o, c);
     put_exact(o, "max_over_P1", d.c1);  // P1(ρ1) ⊆ {n·x ≤ c1}
     put_exact(o, "min_over_P2", d.c2);  // P2(ρ2) ⊆ {n·x ≥ c2}
