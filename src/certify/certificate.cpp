@@ -1,4 +1,5 @@
 #include "certify/certificate.hpp"
+#include "certify/model_points.hpp"
 
 #include "curve/closed_forms.hpp"
 #include "geometry/witness.hpp"
@@ -41,96 +42,12 @@ Json weights(const std::vector<std::pair<int, Q>>& w) {
 }
 Json features(const std::vector<int>& f1, const std::vector<int>& f2) { return Json{{"P1", f1}, {"P2", f2}}; }
 
-Json model_json(const Model& m) {
-    Json j;
-    const char* names[2] = {"P1", "P2"};
-    if (m.scan) {  // the scan path (scan.hpp): no hull; what the walk did
-        const ScanStats& s = m.scan_stats;
-        j["engine"] = "scan";
-        for (int i = 0; i < 2; ++i) j[names[i]] = Json{{"points", m.scan->P[i].size()}};
-        j["contact_lines"] = m.lines.size();
-        j["support_queries"] = s.support_queries;
-        j["gift_wrap_steps"] = s.gift_wrap_steps;
-        j["start_lp"] = Json{{"solves", s.lp_solves}, {"rows", s.lp_rows}};
-        const filter::PredicateCounts& sc = s.predicates[filter::Predicate::ScanSupport];
-        j["decided_by_filter"] = Json{{"support_comparisons", sc.filtered}};
-        j["decided_exactly"] = Json{{"support_comparisons", sc.exact}};
-        return j;
-    }
-    for (int i = 0; i < 2; ++i)
-        j[names[i]] =
-            Json{{"vertices", m.P[i].vertices.size()}, {"edges", m.P[i].edges.size()}, {"faces", m.P[i].faces.size()}};
-    j["facet_normals"] = m.stats.distinct_normals;
-    j["contact_lines"] = m.lines.size();  // after dropping the certainly dominated ones
-    j["edge_pairs_tested"] = m.stats.edge_pairs_tested;
-    j["gauss_arc_crossings"] = m.stats.arc_crossings;
-    // From the predicates' statistics (predicates.hpp): the arc sides of the overlay, the
-    // support comparisons of both polyhedra.
-    using filter::Predicate;
-    const filter::PredicateCounts arc = m.stats.predicates[Predicate::ArcSide];
-    filter::PredicateCounts cmp = m.P[0].predicates[Predicate::SupportCmp];
-    cmp += m.P[1].predicates[Predicate::SupportCmp];
-    j["decided_by_filter"] = Json{{"arc_signs", arc.filtered}, {"support_comparisons", cmp.filtered}};
-    j["decided_exactly"] = Json{{"arc_signs", arc.exact}, {"support_comparisons", cmp.exact}};
-    return j;
-}
-
 // Seeds strictly inside: strictly positive weights on vertices spanning 3 dimensions.
 Json seed_interior_json(const SeedWeights& s) {
     Json seeds;
     const char* names[2] = {"P1", "P2"};
     for (int i = 0; i < 2; ++i) seeds[names[i]] = weights(s.w[i]);
     return seeds;
-}
-
-// On the walk the points stay in machine integers (up to 10^6 per polyhedron): the scene's vertex
-// lists enter the document as placeholders, and document_text writes them straight into the
-// text, as dump() would have written them.
-const char* kVerticesPlaceholder[2] = {"@scalecert-vertices-P1@", "@scalecert-vertices-P2@"};
-
-Json scene_json_for(const Model& m) {
-    if (!m.scan) return scene_json(m.scene);
-    ExactScene sc = m.scene;  // seeds and ranges; no points
-    Json j = scene_json(sc);
-    const char* names[2] = {"P1", "P2"};
-    for (int i = 0; i < 2; ++i) j[names[i]]["vertices"] = kVerticesPlaceholder[i];
-    return j;
-}
-
-// An exact coordinate x / scale in lowest terms, as to_exact_string writes it.
-void append_coordinate(std::string& t, std::int64_t x, const Z& scale) {
-    if (scale == 1) {
-        t += std::to_string(x);
-        return;
-    }
-    Q q(Z(static_cast<long>(x)), scale);
-    q.canonicalize();
-    t += to_exact_string(q);
-}
-
-// nlohmann's dump(1) of an array of [x, y, z] arrays of strings, the array at `indent`.
-std::string vertices_text(const IntPoints& P, size_t indent) {
-    std::string t;
-    const size_t n = P.size();
-    if (n == 0) return "[]";
-    t.reserve(n * (3 * (indent + 16) + 2 * indent + 8));
-    t += "[\n";
-    const std::string i1(indent + 1, ' '), i2(indent + 2, ' ');
-    for (size_t k = 0; k < n; ++k) {
-        t += i1;
-        t += "[\n";
-        for (int c = 0; c < 3; ++c) {
-            t += i2;
-            t += '"';
-            append_coordinate(t, P.at(k)[c], P.scale);
-            t += c < 2 ? "\",\n" : "\"\n";
-        }
-        t += i1;
-        t += k + 1 < n ? "],\n" : "]\n";
-    }
-    t += std::string(indent, ' ');
-    t += "]";
-    return t;
 }
 
 Json witness_json(const Witness& w) {
@@ -212,7 +129,7 @@ Json curve_body(const Model& m, const TouchingCurve& c, bool certificate) {
     put(j, "growth_distance", c.growth.value);
     j["growth_distance_in_rectangle"] = c.growth.in_rectangle;
     if (sgn(c.growth.value) == 0) j["growth_distance_note"] = "the seeds coincide: every scaling pair overlaps";
-    j["model"] = model_json(m);
+    j["model"] = points_of(m).engine_json(m);
     return j;
 }
 }  // namespace
@@ -220,7 +137,7 @@ Json curve_body(const Model& m, const TouchingCurve& c, bool certificate) {
 void put_exact(Json& o, const std::string& key, const Q& q) { put(o, key, q); }
 void put_exact(Json& o, const std::string& key, const std::vector<Q>& qs) { put(o, key, qs); }
 void put_exact(Json& o, const std::string& key, const Vec3q& v) { put(o, key, v); }
-Json document_scene(const Model& m) { return scene_json_for(m); }
+Json document_scene(const Model& m) { return points_of(m).scene_json(m); }
 
 Json curve_json(const Model& m, const TouchingCurve& c) { return curve_body(m, c, false); }
 
@@ -257,7 +174,7 @@ Json query_json(const Model& m, const QueryAnswer& r, const SeedWeights& seeds) 
     put(j, "rho2", r.rho2);
     j["certificate"] = query_certificate_json(m, r);
     j["seed_interior"] = seed_interior_json(seeds);
-    j["scene"] = scene_json_for(m);
+    j["scene"] = points_of(m).scene_json(m);
     return j;
 }
 
@@ -332,22 +249,10 @@ Json partition_json(const Model& m, const TouchingCurve& c, const Partition& p) 
     regions["separated"] = seps;
     j["regions"] = regions;
     j["seed_interior"] = seed_interior_json(p.seeds);
-    j["scene"] = scene_json_for(m);
+    j["scene"] = points_of(m).scene_json(m);
     return j;
 }
 
-std::string document_text(const Model& m, const Json& j) {
-    std::string text = dump(j);
-    if (!m.scan) return text;
-    // "scene" is a member of the document (indent 1), "P1" of the scene (2), "vertices" of P1 (3).
-    for (int i = 0; i < 2; ++i) {
-        const std::string key = std::string("\"") + kVerticesPlaceholder[i] + "\"";
-        const size_t at = text.find(key);
-        if (at == std::string::npos || text.find(key, at + 1) != std::string::npos)
-            throw std::logic_error("document_text: the vertex placeholder is not there once");
-        text.replace(at, key.size(), vertices_text(m.scan->P[i], 3));
-    }
-    return text;
-}
+std::string document_text(const Model& m, const Json& j) { return points_of(m).document_text(m, dump(j)); }
 
 }  // namespace scalecert::internal

@@ -1,5 +1,6 @@
 // Proofs of certify-fp's judgements (judgements.hpp), every one exact.
 #include "certify/judgements.hpp"
+#include "certify/model_points.hpp"
 
 #include <algorithm>
 #include <iterator>
@@ -205,9 +206,7 @@ Json curve_proof(const Model& m, const TouchingCurve& c, const Q& lo_need, const
     TouchingCurve w;
     w.env = c.env;
     restrict_curve(m, w, a, b);
-    // (On the walk a left end where the curve is <= 0 is witnessed by lifting a witness with the
-    // seeds' weights: curve_witnesses needs them there.)
-    return curve_proof_json(m, w, curve_witnesses(m, w, m.scan ? seed_weights(m) : SeedWeights{}));
+    return curve_proof_json(m, w, curve_witnesses(m, w, points_of(m).curve_seeds(m)));
 }
 
 std::string judgements_text(const Model& m, const Q& tolerance, const Q& abs_tolerance, Json judgements) {

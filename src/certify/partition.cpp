@@ -1,4 +1,5 @@
 #include "certify/partition.hpp"
+#include "certify/model_points.hpp"
 
 #include <algorithm>
 
@@ -98,10 +99,7 @@ CurveWitnesses curve_witnesses(const Model& m, const TouchingCurve& c, const See
         if (sgn(y) > 0) {
             W.end_witness[e] = make_witness(m, x, y, line);
         } else if (e == 0) {  // s2 in P1(lo1): on the walk, from where the curve reaches 0 (x0 ≤ lo1)
-            if (!m.scan)
-                W.end_witness[e] = make_witness(m, x, Q(0), size_t(-1));
-            else
-                W.end_witness[e] = lift_witness(witness_below(m, c, x), x, Q(0), seed);
+            W.end_witness[e] = points_of(m).witness_off_the_curve(m, c, x, Q(0), seed);
         }
     }
     return W;
@@ -125,11 +123,8 @@ Partition build_partition(const Model& m, const TouchingCurve& c) {
         size_t line = c.env.pieces[k].line;
         const ContactLine& L = m.lines[line];
         bool on = L.at(v[0]) == v[1];
-        if (on || !m.scan) {
-            P.overlap_witnesses.push_back(make_witness(m, v[0], v[1], on ? line : size_t(-1)));
-            continue;
-        }
-        P.overlap_witnesses.push_back(lift_witness(witness_below(m, c, v[0]), v[0], v[1], seed));
+        P.overlap_witnesses.push_back(on ? make_witness(m, v[0], v[1], line)
+                                         : points_of(m).witness_off_the_curve(m, c, v[0], v[1], seed));
     }
     for (size_t k = 0; k < c.pieces.size(); ++k) {
         const CurvePiece& p = c.pieces[k];

@@ -1,4 +1,5 @@
 #include "certify/query.hpp"
+#include "certify/model_points.hpp"
 
 #include "curve/scan.hpp"
 
@@ -73,9 +74,7 @@ Witness make_witness(const Model& m, const Q& rho1, const Q& rho2, size_t line) 
     return make_witness(m, rho1, rho2, m.lines[line].feat1, m.lines[line].feat2, false);
 }
 
-std::vector<std::pair<int, Q>> seed_weights(const Model& m, int i) {
-    return m.scan ? scan_seed_weights(*m.scan, i) : m.P[i].interior_weights(m.s[i]);
-}
+std::vector<std::pair<int, Q>> seed_weights(const Model& m, int i) { return points_of(m).seed_weights(m, i); }
 
 SeedWeights seed_weights(const Model& m) { return {{seed_weights(m, 0), seed_weights(m, 1)}}; }
 
