@@ -64,6 +64,7 @@ for f in certificates/scenes/*.json certificates/scenes/compound/*.json tests/da
     [ -e "$work/j.json" ] && mv "$work/j.json" "$out/$n.judgements.json"
     run "$n.certify-posed" "$sc" certify-fp "$f" examples/posed_claim.json --json
     run "$n.certify-band" "$sc" certify-fp "$f" tests/data/compound_band_claims.json --json
+    run "$n.certify-band-text" "$sc" certify-fp "$f" tests/data/compound_band_claims.json
     rm -rf "$work/g"
     run "$n.golden" "$sc" golden "$f" --dir "$work/g"
     for g in "$work"/g/*; do [ -e "$g" ] && mv "$g" "$out/$n.golden.$(basename "$g")"; done

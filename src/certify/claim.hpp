@@ -2,7 +2,8 @@
 // proof when asked. Every front end reads its own form into a TypedClaim and writes its own form
 // from the Judged: the JSON and line formats (claims.cpp), the C++ API (api.cpp) and numpy
 // (python/module.cpp, through the C++ API). The rules are those of certificates/CLAIMS.md, each
-// applied here once, for convex objects (ConvexRules) and objects made of parts (PartsRules).
+// applied once, for convex objects (ConvexRules) and objects made of parts (PartsRules): each
+// claim kind's rules and report in its own file of kinds/.
 #pragma once
 #include "certify/claims.hpp"
 #include "io/strict_json.hpp"
@@ -178,7 +179,7 @@ struct Proof {
 };
 
 // Tolerance rules (CLAIMS.md, "Tolerances"), exact: `rel` a relative error on values, `abs` a
-// length (points, values that are lengths, planes). abs = 0 gives the exact rules of old.
+// length (points, values that are lengths, planes). abs = 0: the exact rules.
 struct Tolerance {
     Q rel = 0, abs = 0;
     // |c − e| ≤ rel·|e| (scalings: ρ values, growth distances, curves; abs does not apply)
@@ -272,6 +273,15 @@ class PartsRules final : public ClaimRules {
     void judge_depth(const TypedClaim& c, Judged& g, Json* p);
     CompoundJudge& judge_;
 };
+
+// P1(ρ1) ⊆ {n·x ≤ c1} and P2(ρ2) ⊆ {n·x ≥ c2}: the plane n·x = offset (or, with none, some plane of
+// normal n) lies strictly between them.
+bool plane_separates(const Q& c1, const Q& c2, const std::optional<Q>& offset);
+
+// One claim judged by `rules`; with `entries`, its certificate entry ({index, claim, right, proof})
+// appended. A limit met while judging a claim at poses (its moved points) is refused naming the
+// claim: InputError "WHERE.what" (`where`: "FILE: claims[3]").
+Judged judge_claim(ClaimRules& rules, const TypedClaim& c, size_t index, const std::string& where, Json* entries);
 
 // Every claim of a file (the JSON or the line format, claims.hpp) read into types and judged by
 // `rules`: the report; the number of wrong claims in *wrong (and of claims in *count); with

@@ -376,8 +376,7 @@ void describe_claim(const TypedClaim& c, const Judged& g, const ExactScene* part
         if (parts && c.parts) {
             const int a = (*c.parts)[0], b = (*c.parts)[1];
             put_part_pair(o, "parts", *parts, a, b);
-            of = " of parts " + std::to_string(a) + name_of(*parts, 0, a) + " and " + std::to_string(b) +
-                 name_of(*parts, 1, b);
+            of = " of " + parts_named(*parts, a, b);
         }
         text =
             std::string(type_name(c.type)) + of +
@@ -540,10 +539,6 @@ std::string report(Json arr, const std::string& text, long n, long bad, bool jso
            ", wrong: " + std::to_string(bad) + tols + "\n";
 }
 
-Json entry(size_t index, Proof&& p, bool right) {
-    return Json{{"index", index}, {"claim", std::move(p.claim)}, {"right", right}, {"proof", std::move(p.proof)}};
-}
-
 // A JSON claims file ({"format": "scalecert-claims-1", "claims": [...]}): its root, checked.
 JNode claims_root(const std::string& claims, const std::string& name) {
     JNode root;
@@ -584,12 +579,10 @@ struct Run {
 Run run_claims(ClaimRules& rules, const std::string& claims, const std::string& name, const ClaimOptions& opt,
                bool json, const ExactScene* parts, bool prove) {
     Run r;
-    auto one = [&](const TypedClaim& c, size_t index, Json& o, auto&& describe_it) {
-        Proof p;
-        const Judged g = rules.judge(c, prove ? &p : nullptr);
+    auto one = [&](const TypedClaim& c, size_t index, const std::string& where, Json& o, auto&& describe_it) {
+        const Judged g = judge_claim(rules, c, index, where, prove ? &r.entries : nullptr);
         std::string line;
         describe_it(g, line);
-        if (prove) r.entries.push_back(entry(index, std::move(p), g.right));
         o["right"] = g.right;
         ++r.n;
         r.bad += !g.right;
@@ -607,12 +600,8 @@ Run run_claims(ClaimRules& rules, const std::string& claims, const std::string& 
             Json o;
             o["index"] = i;
             o["kind"] = type_name(c.type);
-            try {
-                one(c, i, o, [&](const Judged& g, std::string& line) { describe_claim(c, g, parts, o, line); });
-            } catch (const InputError& e) {  // a limit met while judging it (a pose's moved points)
-                if (!c.posed()) throw;
-                throw InputError(name + ": claims[" + std::to_string(i) + "]." + e.what());
-            }
+            one(c, i, name + ": claims[" + std::to_string(i) + "]", o,
+                [&](const Judged& g, std::string& line) { describe_claim(c, g, parts, o, line); });
         }
         return r;
     }
@@ -628,7 +617,7 @@ Run run_claims(ClaimRules& rules, const std::string& claims, const std::string& 
         Json o;
         o["line"] = no;
         // The certificate's entries are numbered by line.
-        one(c, static_cast<size_t>(no), o,
+        one(c, static_cast<size_t>(no), name + ": line " + std::to_string(no), o,
             [&](const Judged& g, std::string& text) { describe_line(c, g, parts, w, o, text); });
     }
     return r;

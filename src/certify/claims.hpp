@@ -20,9 +20,10 @@ namespace scalecert::internal {
 //   = not separated), 'curve RHO1 RHO2' (a claimed point of the touching curve) or 'growth RHO'.
 // A JSON number or a decimal of the line format is the binary value ClaimOptions::numbers reads
 // (the double strtod gives by default: what the program that wrote it held). JSON strings and
-// fractions p/q are exact always. `tolerance` (a relative error, >= 0) accepts numeric values within it; verdicts,
-// labels, planes and witness points must be exactly right.
-// Options: the public ClaimOptions (numbers, tolerance >= 0, json).
+// fractions p/q are exact always. `tolerance` (a relative error, >= 0) accepts numeric values within
+// it, `abs_tolerance` (a length) points, lengths and planes within it (CLAIMS.md, "Tolerances");
+// verdicts and labels must be exactly right.
+// Options: the public ClaimOptions (numbers, tolerance, abs_tolerance, json, certificate).
 using scalecert::ClaimOptions;
 // What the claim rules ask of a convex scene, one question a method: the exact verdict and curve
 // value at a pair, the models that prove them, the points for the measures. Session answers each
@@ -103,8 +104,9 @@ inline std::string certify_fp(const HullModel& m, const TouchingCurve& c, const 
     return certify_fp(m, c, claims, name, ClaimOptions{numbers, Q(0), json}, wrong);
 }
 // The same claims on two objects made of parts (CLAIMS.md, "Objects made of parts"): verdict,
-// separating_plane, witness_point and distance (the least over the part pairs), at any
-// (ρ1, ρ2) > 0; the line format's verdict lines. The certificate is of kind "compound_judgements".
+// separating_plane, witness_point, distance (the least over the part pairs) and penetration_depth
+// (of one part pair), at any (ρ1, ρ2) > 0; the line format's verdict lines. The certificate is of
+// kind "compound_judgements".
 class CompoundJudge;
 std::string certify_fp(CompoundJudge& judge, const std::string& claims, const std::string& name,
                        const ClaimOptions& opt, long* wrong, long* count = nullptr, std::string* certificate = nullptr);

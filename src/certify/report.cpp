@@ -47,6 +47,9 @@ std::string at(const TypedClaim& c) {
 }
 Json part_or_false(int k) { return k >= 0 ? Json(k) : Json(false); }
 std::string name_of(const ExactScene& sc, int i, int k) { return part_name_suffix(sc.P[i], static_cast<size_t>(k)); }
+std::string parts_named(const ExactScene& sc, int a, int b) {
+    return "parts " + std::to_string(a) + name_of(sc, 0, a) + " and " + std::to_string(b) + name_of(sc, 1, b);
+}
 std::string part_or_no(const ExactScene& sc, int i, int k, bool near) {
     return k < 0 ? "NO" : (near ? "within LEN of part " : "part ") + std::to_string(k) + name_of(sc, i, k);
 }

@@ -26,6 +26,8 @@ void put_rhos(Json& o, const TypedClaim& c);
 Json part_or_false(int k);
 // After part k of object i in a text line: " ('foot')", its name, or "" when it has none.
 std::string name_of(const ExactScene& sc, int i, int k);
+// A part pair in a text line: "parts 2 ('foot') and 0", each with its name when it has one.
+std::string parts_named(const ExactScene& sc, int a, int b);
 // Part k of object i in a text line: "part 3", "part 3 ('foot')" when it has a name, "NO" for none.
 std::string part_or_no(const ExactScene& sc, int i, int k, bool near = false);
 // A membership for the text line: "yes", "within LEN" (outside, within the absolute tolerance), "NO".

@@ -1,5 +1,6 @@
-// The rules of certificates/CLAIMS.md on typed claims, each applied once. Squares are compared
-// for distances and depths: no root is taken.
+// The claim rules' frame (claim.hpp): claimed verdicts, tolerances, the claim as certificates state
+// it, and each object kind's dispatch to the rules of kinds/. Squares are compared for distances
+// and depths: no root is taken.
 #include "certify/claim.hpp"
 #include "certify/rules_impl.hpp"
 #include "certify/compound_judge.hpp"
@@ -204,6 +205,21 @@ bool no_answer(const TypedClaim& c, Proof* proof) {
     return true;
 }
 }  // namespace
+
+Judged judge_claim(ClaimRules& rules, const TypedClaim& c, size_t index, const std::string& where, Json* entries) {
+    Proof p;
+    Judged g;
+    try {
+        g = rules.judge(c, entries ? &p : nullptr);
+    } catch (const InputError& e) {
+        if (!c.posed()) throw;
+        throw InputError(where + "." + e.what());
+    }
+    if (entries)
+        entries->push_back(
+            Json{{"index", index}, {"claim", std::move(p.claim)}, {"right", g.right}, {"proof", std::move(p.proof)}});
+    return g;
+}
 
 Judged ConvexRules::judge(const TypedClaim& c, Proof* proof) {
     Judged g;

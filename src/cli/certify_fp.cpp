@@ -3,7 +3,6 @@
 #include "common.hpp"
 
 #include "file_name.hpp"
-#include "session/compound_session.hpp"
 #include "io/files.hpp"
 
 #include <memory>

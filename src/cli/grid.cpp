@@ -30,7 +30,7 @@ Command add_grid(CLI::App& app) {
     return {sub, [a] {
                 StageClock clock;
                 std::unique_ptr<SceneEngine> engine = open_engine(a->scene, Engine::Hull, clock);
-                const Model& m = engine->convex_session("").hull();  // (the reader refuses parts here)
+                const Model& m = engine->convex_session(convex_only(a->scene.name(), "the grid search")).hull();
                 const fp::FpScene f = fp::to_fp(m.scene);
                 std::unique_ptr<fp::Method> meth = fp::make_method(a->method, m, f);
                 if (!meth) throw InputError("--method: unknown method '" + a->method + "'");

@@ -10,8 +10,8 @@
 //
 // Statistics: every predicate counts each decision, by stage, into a PredicateStats (one counter
 // pair per predicate, below). A PredicateStats belongs to the object that decides (a Polyhedron,
-// a model's LineStats or ScanStats, a FastCurve, FastDirect or QuickScene), so that threads share
-// none; sums over objects are explicit (operator+=). The statistics each model reports
+// a model's LineStats or ScanStats, a FastCurve, FastDirect or QuickScene, a compound region's or
+// locator's statistics), so that threads share none; sums over objects are explicit (operator+=). The statistics each model reports
 // ("decided_by_filter", "decided_exactly") are read from them.
 //
 // The predicates (their filters are in this file; an exact stage that is a whole algorithm of a
@@ -19,19 +19,18 @@
 //   1. support_cmp             sign of n·x_w − n·x_v                 (Polyhedron::climb, argmax)
 //   2. arc_side                sign of (u × x)·p on a Gauss arc       (contact_lines.cpp)
 //   3. line_certainly_dominated  a line below another for all ρ1 ≥ 0   (contact_lines.cpp)
-//   4. curve_side_filter, lines_gap_filter: a query pair against the curve, the lines
-//                                                                    (FastCurve, FastDirect)
+//   4. curve_side, lines_side  a query pair against the curve, the lines (FastCurve, FastDirect)
 //   5. quick_gap_certified, quick_cofactor_sign: GJK's certificates  (tools/quick_query.cpp)
 //   6. the Gauss-map candidate boxes: a completeness filter, no sign (gauss_map.cpp)
 //   7. ScanSupportFilter       which points may maximise n·x          (scan.cpp)
-//   8. half_plane_side_filter  a scaling pair against a part pair's half-plane (compound/region.cpp, locate.cpp)
+//   8. half_plane_side         a scaling pair against a part pair's half-plane (compound/region.cpp, locate.cpp)
 //   9. scaled_enclosure        a scaled coordinate s + ρ(x − s) enclosed in doubles (certify/compound_judge.cpp)
-//  11. pose_certainly_nonsingular  det R ≠ 0 for a pose              (io/scene.cpp, pose_singular)
 //  10. a depth surface's planes: each triangle's offset N·a and squared distance (N·a)²/N·N in
 //      CGAL's Interval_nt under upward rounding (geometry/measures.cpp, checked_surface). An
 //      enclosure by construction, so no bound is stated here: integers start from their
 //      truncated doubles widened by one ulp, and the interval decides a sign or an order only
 //      when it excludes the other.
+//  11. pose_certainly_nonsingular  det R ≠ 0 for a pose              (io/scene.cpp, pose_singular)
 //
 // Notation: u = 2^-53 (the unit roundoff of double), γ_n = n·u / (1 − n·u) (Higham): a sum of n
 // rounded products, or a product of n rounded factors, is within γ_n of the exact value
@@ -445,7 +444,7 @@ struct ScanSupportFilter {
 
 namespace bounds {
 // 8. The sign of a·x + b·y − c from region_double values (bound 8), 0 when uncertain (or not a
-// number); the caller decides those exactly and counts both stages.
+// number): half_plane_side's filter.
 inline int half_plane_side_filter(double a, double b, double c, double x, double y) {
     const double t1 = a * x, t2 = b * y;
     const double f = t1 + t2 - c;

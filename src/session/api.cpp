@@ -5,9 +5,7 @@
 
 #include "certify/certificate.hpp"
 #include "certify/claim.hpp"
-#include "certify/compound_judge.hpp"
 #include "certify/judgements.hpp"
-#include "certify/region_certificate.hpp"
 #include "certify/classify.hpp"
 #include "certify/golden.hpp"
 #include "geometry/measures.hpp"
@@ -352,7 +350,7 @@ PlaneCheck Analysis::check_plane(const Rational& rho1, const Rational& rho2, con
     PlaneCheck r;
     r.c1 = c1;
     r.c2 = c2;
-    r.separates = r.c1 < r.c2 && (!offset || (r.c1 < *offset && *offset < r.c2));
+    r.separates = internal::plane_separates(r.c1, r.c2, offset);
     return r;
 }
 
@@ -485,19 +483,11 @@ Judgements Analysis::certify(const std::vector<Claim>& claims, const ClaimOption
     out.items.reserve(claims.size());
     Json entries = Json::array();
     for (size_t i = 0; i < typed.size(); ++i) {
-        internal::Proof p;
-        internal::Judged g;
-        try {
-            g = rules->judge(typed[i], options.certificate ? &p : nullptr);
-        } catch (const InputError& e) {  // a limit met while judging it (a pose's moved points)
-            if (!typed[i].posed()) throw;
-            throw InputError("certify: claims[" + std::to_string(i) + "]." + e.what());
-        }
+        const internal::Judged g =
+            internal::judge_claim(*rules, typed[i], i, "certify: claims[" + std::to_string(i) + "]",
+                                  options.certificate ? &entries : nullptr);
         out.wrong += !g.right;
         out.items.push_back(public_judgement(typed[i], g, *rules));
-        if (options.certificate)
-            entries.push_back(
-                Json{{"index", i}, {"claim", std::move(p.claim)}, {"right", g.right}, {"proof", std::move(p.proof)}});
     }
     if (options.certificate) out.certificate = rules->certificate(std::move(entries));
     return out;

@@ -48,11 +48,6 @@ void CompoundSession::check_in_rectangle(const Q& rho1, const Q& rho2, const std
                          ") lies outside I1 x I2, where the region is built");
 }
 
-CompoundVerdict CompoundSession::verdict(const Q& rho1, const Q& rho2) {
-    check_in_rectangle(rho1, rho2, "the point");
-    return compound_verdict(region(false), rho1, rho2);
-}
-
 std::vector<Verdict> CompoundSession::classify(const std::vector<double>& rho1, const std::vector<double>& rho2,
                                                unsigned threads, const std::string& source) {
     if (rho1.size() != rho2.size())

@@ -1,7 +1,7 @@
 // The orchestration of compounds: a scene whose objects may be made of convex parts,
 // its region built at most once (with the union when a document needs it), the query grid on
-// first use. The region command and the library's Region (and so Python) go through it, as the
-// convex commands go through Session.
+// first use. The engine of a scene of parts (engine.hpp) holds one; so does a convex scene's, for
+// its region.
 #pragma once
 #include "certify/certificate.hpp"
 #include "certify/compound_judge.hpp"
@@ -28,8 +28,6 @@ class CompoundSession {
     Json region_json(const std::optional<std::array<Q, 2>>& at = std::nullopt);
     // The certified partition (kind compound_partition).
     Json partition_json();
-    // The exact verdict at (ρ1, ρ2) in I1 × I2 (InputError outside), with the pair that decides it.
-    CompoundVerdict verdict(const Q& rho1, const Q& rho2);
     // The exact verdicts of doubles' exact values, those in I1 × I2 located on the grid, on `threads`
     // threads; a pair outside I1 x I2 is judged alone, by judge() (as `query` judges it). Every pair
     // is checked first: one not finite or not positive gives InputError "SOURCE: pair K ...".

@@ -1,9 +1,10 @@
-// The one engine interface every front door holds: the library's Analysis (and so Python), each
-// command's handler, golden data and audits ask it for verdicts, documents, claim rules and golden
-// samples, and never ask which kind of object it holds. Two convex objects are one implementation
-// (the walk or the hull model, chosen by Session::plan), objects made of parts another (their
-// region and part-pair judge). A new kind of object is a new implementation of SceneEngine and of
-// ClaimRules (claim.hpp), chosen in open_engine; no front door changes.
+// The one engine interface the front doors hold: the library's Analysis (and so Python), each
+// command's handler and golden data ask it for verdicts, documents, claim rules and golden
+// answers. Two convex objects are one implementation (the walk or the hull model, chosen by
+// Session::plan), objects made of parts another (their region and part-pair judge); open_engine
+// chooses. What only one kind has (the convex curve and its segments, the region's polygons) is
+// asked for by name and refused by the others with the front door's words. (The audits run each
+// kind's own floating-point methods against that kind's exact answers: baselines/.)
 #pragma once
 #include "certify/claim.hpp"
 #include "certify/classify.hpp"

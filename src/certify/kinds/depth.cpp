@@ -56,8 +56,7 @@ void describe(const TypedClaim& c, const DepthJudged& d, const Judged& g, const 
     std::string of;
     if (parts && c.parts) {
         put_part_pair(o, "parts", *parts, g.part1, g.part2);
-        of = " of parts " + std::to_string(g.part1) + name_of(*parts, 0, g.part1) + " and " + std::to_string(g.part2) +
-             name_of(*parts, 1, g.part2);
+        of = " of " + parts_named(*parts, g.part1, g.part2);
     }
     if (!d.exact_squared) {
         o["exact_verdict"] = verdict_name(Verdict::Separated);

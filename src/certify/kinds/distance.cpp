@@ -78,10 +78,7 @@ void describe(const TypedClaim& c, const DistanceJudged& d, const Judged& g, con
     o["value_right"] = d.value_right;
     text = "distance at " + at(c) + ": claimed " + num(c.value) + ", exact squared " + num(d.exact_squared) +
            " (distance ~" + dbl(sqrt_minus_rn(d.exact_squared, Q(0))) +
-           (parts ? ", parts " + std::to_string(g.part1) + name_of(*parts, 0, g.part1) + " and " +
-                        std::to_string(g.part2) + name_of(*parts, 1, g.part2)
-                  : std::string()) +
-           ")";
+           (parts ? ", " + parts_named(*parts, g.part1, g.part2) : std::string()) + ")";
     if (c.closest) {
         if (parts) {
             o["closest_in_P1_part"] = part_or_false(d.in_part1);

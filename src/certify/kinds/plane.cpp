@@ -7,12 +7,16 @@ namespace scalecert::internal {
 
 using namespace report_parts;
 
+bool plane_separates(const Q& c1, const Q& c2, const std::optional<Q>& offset) {
+    return c1 < c2 && (!offset || (c1 < *offset && *offset < c2));
+}
+
 namespace {
 // A plane claim's rule (CLAIMS.md): c1 = max over P1(ρ1) of n·x, c2 = min over P2(ρ2). Exact: the
-// plane separates strictly (the offset strictly between). Within abs: each body lies within abs of
-// its side, c1 − o ≤ abs·|n| and o − c2 ≤ abs·|n| (with no offset, for some o: c1 − c2 ≤ 2·abs·|n|).
+// plane separates strictly (plane_separates). Within abs: each body lies within abs of its side,
+// c1 − o ≤ abs·|n| and o − c2 ≤ abs·|n| (with no offset, for some o: c1 − c2 ≤ 2·abs·|n|).
 bool plane_right(const Tolerance& tol, const Q& c1, const Q& c2, const Vec3q& n, const std::optional<Q>& offset) {
-    if (sgn(tol.abs) == 0) return c1 < c2 && (!offset || (c1 < *offset && *offset < c2));
+    if (sgn(tol.abs) == 0) return plane_separates(c1, c2, offset);
     const Q N = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
     if (!offset) return tol.within_abs(c1 - c2, 4 * N);
     return tol.within_abs(c1 - *offset, N) && tol.within_abs(*offset - c2, N);
