@@ -311,6 +311,15 @@ void describe(const TypedClaim& c, const DistanceJudged& d, const Judged& g, con
 void describe(const TypedClaim& c, const DepthJudged& d, const Judged& g, const ExactScene* parts, Json& o,
               std::string& text);
 
+// The same for the line format's claims ('RHO1 RHO2 VERDICT', 'curve RHO1 RHO2', 'growth RHO'; w:
+// the line's words as written), the object beside its line number.
+void describe_line(const TypedClaim& c, const VerdictJudged& d, const Judged& g, const ExactScene* parts,
+                   const std::vector<std::string>& w, Json& o, std::string& text);
+void describe_line(const TypedClaim& c, const CurvePointJudged& d, const Judged& g, const ExactScene* parts,
+                   const std::vector<std::string>& w, Json& o, std::string& text);
+void describe_line(const TypedClaim& c, const GrowthJudged& d, const Judged& g, const ExactScene* parts,
+                   const std::vector<std::string>& w, Json& o, std::string& text);
+
 // The claim as the certificates state it (FORMAT.md): every number an exact string.
 Json exact_claim_json(const TypedClaim& c);
 

@@ -471,44 +471,16 @@ void describe_line(const TypedClaim& c, const Judged& g, const ExactScene* parts
                ": " + c.no_answer + " is " + c.no_answer_reason + ": no answer";
         return;
     }
-    switch (c.type) {
-    case ClaimType::CurvePoint: {
-        o["claim"] = "curve";
-        put_exact(o, "rho1", c.rho1);
-        put_exact(o, "rho2", c.rho2);
-        const Q& f = std::get<CurvePointJudged>(g.of).exact;
-        put_exact(o, "curve_rho2", f);
-        put_exact(o, "rho2_minus_curve", c.rho2 - f);
-        text = "curve point (" + w[1] + ", " + w[2] + "): exact curve at rho1 is " + num(f, 17) + ", off by " +
-               num(c.rho2 - f, 17);
-        return;
-    }
-    case ClaimType::Growth: {
-        o["claim"] = "growth";
-        put_exact(o, "claimed", c.value);
-        const Q& e = std::get<GrowthJudged>(g.of).exact;
-        put_exact(o, "exact", e);
-        text = "growth distance " + w[1] + ": exact " + num(e, 17) + ", off by " + num(c.value - e, 17);
-        return;
-    }
-    default: {
-        const VerdictJudged& d = std::get<VerdictJudged>(g.of);
-        const std::string v = claimed_name(c.verdict), e = verdict_name(d.exact);
-        o["claim"] = v;
-        put_exact(o, "rho1", c.rho1);
-        put_exact(o, "rho2", c.rho2);
-        o["exact"] = e;
-        if (parts) {
-            put_part_pair(o, "pair", *parts, g.part1, g.part2);
-            text = "(" + num(c.rho1, 17) + ", " + num(c.rho2, 17) + ") claimed " + v + ": exact " + e;
-        } else {
-            put_exact(o, "rho2_minus_curve", d.rho2_minus_curve);
-            text = "(" + w[0] + ", " + w[1] + ") claimed " + v + ": exact " + e +
-                   ", rho2 - curve = " + num(d.rho2_minus_curve, 17);
-        }
-        return;
-    }
-    }
+    std::visit(
+        [&](const auto& d) {
+            using K = std::decay_t<decltype(d)>;
+            if constexpr (std::is_same_v<K, VerdictJudged> || std::is_same_v<K, CurvePointJudged> ||
+                          std::is_same_v<K, GrowthJudged>)
+                describe_line(c, d, g, parts, w, o, text);
+            else
+                throw std::logic_error("certify-fp: a line of another kind");
+        },
+        g.of);
 }
 
 // ---- the runs ---------------------------------------------------------------------------------------

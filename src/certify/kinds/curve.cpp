@@ -262,4 +262,23 @@ void describe(const TypedClaim& c, const CurveJudged& d, const Judged&, const Ex
            (d.exact_positive ? "" : ", and the exact curve reaches rho2 <= 0 in the claimed range");
 }
 
+void describe_line(const TypedClaim& c, const GrowthJudged& d, const Judged&, const ExactScene*,
+                   const std::vector<std::string>& w, Json& o, std::string& text) {
+    o["claim"] = "growth";
+    put_exact(o, "claimed", c.value);
+    put_exact(o, "exact", d.exact);
+    text = "growth distance " + w[1] + ": exact " + num(d.exact, 17) + ", off by " + num(c.value - d.exact, 17);
+}
+
+void describe_line(const TypedClaim& c, const CurvePointJudged& d, const Judged&, const ExactScene*,
+                   const std::vector<std::string>& w, Json& o, std::string& text) {
+    o["claim"] = "curve";
+    put_exact(o, "rho1", c.rho1);
+    put_exact(o, "rho2", c.rho2);
+    put_exact(o, "curve_rho2", d.exact);
+    put_exact(o, "rho2_minus_curve", c.rho2 - d.exact);
+    text = "curve point (" + w[1] + ", " + w[2] + "): exact curve at rho1 is " + num(d.exact, 17) + ", off by " +
+           num(c.rho2 - d.exact, 17);
+}
+
 }  // namespace scalecert::internal

@@ -59,4 +59,21 @@ void describe(const TypedClaim& c, const VerdictJudged& d, const Judged& g, cons
     text = "verdict at " + at(c) + ": claimed " + claimed_name(c.verdict) + ", exact " + verdict_name(d.exact);
 }
 
+void describe_line(const TypedClaim& c, const VerdictJudged& d, const Judged& g, const ExactScene* parts,
+                   const std::vector<std::string>& w, Json& o, std::string& text) {
+    const std::string v = claimed_name(c.verdict), e = verdict_name(d.exact);
+    o["claim"] = v;
+    put_exact(o, "rho1", c.rho1);
+    put_exact(o, "rho2", c.rho2);
+    o["exact"] = e;
+    if (parts) {
+        put_part_pair(o, "pair", *parts, g.part1, g.part2);
+        text = "(" + num(c.rho1, 17) + ", " + num(c.rho2, 17) + ") claimed " + v + ": exact " + e;
+    } else {
+        put_exact(o, "rho2_minus_curve", d.rho2_minus_curve);
+        text = "(" + w[0] + ", " + w[1] + ") claimed " + v + ": exact " + e +
+               ", rho2 - curve = " + num(d.rho2_minus_curve, 17);
+    }
+}
+
 }  // namespace scalecert::internal
