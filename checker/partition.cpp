@@ -20,7 +20,7 @@ namespace scalecert_check {
 // the lower chain max(c, lo2) from its left end to hi1 (the curve's breakpoints above lo2, where c
 // meets lo2, the corner (hi1, lo2)), then (hi1, hi2) and the top edge back. Its corners are those
 // of that same convex set, so normalize() writes it exactly as the clipping does
-// (tests/test_checker.cpp compares both on random convex curves). Slopes are −h1/h2 < 0:
+// (tests/checker/test_partition.cpp compares both on random convex curves). Slopes are −h1/h2 < 0:
 // c decreases. A rectangle without area (lo = hi in I1 or I2) keeps the clipping, which is linear
 // for a polygon of at most two points.
 std::vector<P2> overlap_region(const Scene& sc, const std::vector<P2>& rect, const std::vector<Line>& lines,

@@ -13,7 +13,7 @@ namespace scalecert_check {
 // Every polygon the checker builds is such a list (the rectangle, the boxes, their clips by one
 // line, the overlap region); for them this is what removing collinear vertices one at a time, in
 // any order, gives: the corners of a convex polygon are the vertices at which it turns, and
-// dropping a vertex where it does not turn changes no other turn. (tests/test_checker.cpp
+// dropping a vertex where it does not turn changes no other turn. (tests/checker/test_polygon.cpp
 // compares it with that removal on random polygons.)
 std::vector<P2> normalize(const std::vector<P2>& p) {
     auto turn = [](const P2& o, const P2& a, const P2& b) {

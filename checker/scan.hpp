@@ -14,7 +14,7 @@
 //   - otherwise (a normal past 2^62): in mpz.
 // The other vertices (a few large numbers among many small ones cost the small ones nothing) in
 // mpz, and the two maxima compared in mpz. The maximisers found are exactly those of the
-// rational comparison, in ascending order (tests/test_checker.cpp compares both on random scenes
+// rational comparison, in ascending order (tests/checker/test_scan.cpp compares both on random scenes
 // of every number kind, mixed sizes among them).
 #pragma once
 #include "context.hpp"

@@ -429,12 +429,15 @@ py::dict curve_dict(const scalecert::Curve& c) {
 
 using namespace pybind11::literals;
 
-// A claimed verdict's word, or none.
+// A claimed verdict's word, or none: an exact verdict's name (scalecert::name), or "intersecting"
+// (overlapping or touching), which the public header names nowhere.
 std::optional<scalecert::ClaimedVerdict> claimed_verdict(const std::string& v) {
-    if (v == "separated") return scalecert::ClaimedVerdict::Separated;
-    if (v == "touching") return scalecert::ClaimedVerdict::Touching;
-    if (v == "overlapping") return scalecert::ClaimedVerdict::Overlapping;
-    if (v == "intersecting") return scalecert::ClaimedVerdict::Intersecting;
+    using scalecert::ClaimedVerdict;
+    using scalecert::Verdict;
+    if (v == scalecert::name(Verdict::Separated)) return ClaimedVerdict::Separated;
+    if (v == scalecert::name(Verdict::Touching)) return ClaimedVerdict::Touching;
+    if (v == scalecert::name(Verdict::Overlapping)) return ClaimedVerdict::Overlapping;
+    if (v == "intersecting") return ClaimedVerdict::Intersecting;
     return std::nullopt;
 }
 
@@ -585,10 +588,7 @@ py::dict certify_arrays(const CertifyFn& certify, const std::string& kind, const
         if (fractions) sq.append(g.exact_squared ? fraction(*g.exact_squared) : py::object(py::none()));
         pairs.append(py::make_tuple(g.part1, g.part2));
         pair_names.append(py::make_tuple(g.part1_name, g.part2_name));
-        if (g.exact_verdict)
-            ev.append(*g.exact_verdict == scalecert::Verdict::Separated  ? "separated"
-                      : *g.exact_verdict == scalecert::Verdict::Touching ? "touching"
-                                                                         : "overlapping");
+        if (g.exact_verdict) ev.append(scalecert::name(*g.exact_verdict));
     }
     py::dict d;
     d["right"] = np.attr("array")(right, "dtype"_a = "bool");
@@ -682,17 +682,19 @@ PyScene warn_notes(PyScene s) {
     return s;
 }
 
-PYBIND11_MODULE(scalecert, m) {
-    m.doc() = "Exact, certified collision of uniformly scaled convex polyhedra and of objects made of convex parts.";
-    m.attr("__version__") = scalecert::version();
-    py::register_exception<scalecert::InputError>(m, "InputError", PyExc_ValueError);
+namespace {
 
+// The enum Verdict: classify()'s int8 codes, and query()'s verdict.
+void bind_verdict(py::module_& m) {
     py::enum_<scalecert::Verdict>(m, "Verdict", "classify() returns these as int8 codes")
         .value("Separated", scalecert::Verdict::Separated)
         .value("Touching", scalecert::Verdict::Touching)
         .value("Overlapping", scalecert::Verdict::Overlapping);
+}
 
-    py::class_<PyScene>(m, "Scene")
+// Scene's constructors: from points, from parts, from a scene file, from mesh files.
+void bind_scene_construction(py::class_<PyScene>& scene) {
+    scene
         .def(py::init([](const py::handle& p1, const py::handle& p2, const py::handle& i1, const py::handle& i2,
                          const py::handle& seeds, const py::handle& numbers) {
                  return make_scene(p1, p2, i1, i2, seeds, numbers_arg(numbers));
@@ -780,7 +782,13 @@ PYBIND11_MODULE(scalecert, m) {
             "file's "
             "groups with faces are its convex parts, named by their groups (other formats have no groups: each "
             "stays one convex object). An OBJ file with several groups read "
-            "as one convex object gives a UserWarning saying so")
+            "as one convex object gives a UserWarning saying so");
+}
+
+// What a Scene holds: its objects' parts and their names, the notes on reading it, its seeds and its
+// file's text.
+void bind_scene_contents(py::class_<PyScene>& scene) {
+    scene
         .def_property_readonly(
             "convex", [](const PyScene& s) { return s.scene.convex(); },
             "True for two convex objects; False when an object is made of parts")
@@ -806,7 +814,12 @@ PYBIND11_MODULE(scalecert, m) {
             "json", [](const PyScene& s) { return s.scene.json(); }, "the scene file text, every number exact")
         .def(
             "curve", [](const PyScene& s) { return curve_dict(s.a().curve()); },
-            "pieces (rho1 range, slope, intercept, normal, contact, features), switch points, growth distance")
+            "pieces (rho1 range, slope, intercept, normal, contact, features), switch points, growth distance");
+}
+
+// A Scene's exact answers: the curve, queries and verdicts, the region, plane checks and the partition.
+void bind_scene_answers(py::class_<PyScene>& scene) {
+    scene
         .def(
             "query",
             [](const PyScene& s, const py::handle& r1, const py::handle& r2) {
@@ -885,7 +898,12 @@ PYBIND11_MODULE(scalecert, m) {
             "the certified partition of I1 x I2 (the certificate), as a dict")
         .def(
             "partition_json", [](const PyScene& s) { return s.a().partition_json(); },
-            "the certificate as text, byte-identical to scalecert partition")
+            "the certificate as text, byte-identical to scalecert partition");
+}
+
+// A Scene's judging of claims: a claims file's (certify_fp) and arrays of one kind (certify).
+void bind_scene_claims(py::class_<PyScene>& scene) {
+    scene
         .def(
             "certify_fp",
             [](const PyScene& s, const py::handle& claims, const py::handle& exact_decimals,
@@ -959,7 +977,114 @@ PYBIND11_MODULE(scalecert, m) {
             "fractions=True exact_squared (Fractions); with certificate=True the judgements certificate's text; on "
             "objects made of parts exact_parts (int64 (n, 2): the part pair each exact answer rests on, a verdict's "
             "meeting pair, a distance's closest pair, a depth's pair; -1 for none) and exact_part_names (their names, "
-            "'' for a part without one)")
+            "'' for a part without one)");
+}
+
+// Scene.audit: method(rho1, rho2) called once on the pairs (those given, or the golden data's), each
+// answer judged as certify judges a verdict claim at the exact value of the doubles asked.
+py::dict audit_method(const PyScene& s, const py::function& method, const py::handle& rho1, const py::handle& rho2,
+                      const py::handle& listed) {
+    const scalecert::Analysis& a = s.a();
+    const int cap = count_arg(listed, "listed", 0, 1000000);
+    if (rho1.is_none() != rho2.is_none()) throw scalecert::InputError("audit: give rho1 and rho2 together, or neither");
+    // The pairs: those given, or the golden data's (its queries' doubles, each once).
+    std::vector<double> r1, r2;
+    if (rho1.is_none()) {
+        const py::dict g = json_loads(a.golden().json);
+        std::set<std::pair<double, double>> seen;
+        for (const py::handle q : g["queries"].cast<py::list>()) {
+            const double x = q["rho1_double"].cast<double>(), y = q["rho2_double"].cast<double>();
+            if (seen.insert({x, y}).second) r1.push_back(x), r2.push_back(y);
+        }
+    } else {
+        const DoubleArray a1 = doubles_of(rho1, "rho1", "audit"), a2 = doubles_of(rho2, "rho2", "audit");
+        if (a1.ndim() != 1 || a2.ndim() != 1 || a1.size() != a2.size())
+            throw scalecert::InputError("audit: rho1 and rho2 are one-dimensional arrays of one length");
+        r1.assign(a1.data(), a1.data() + a1.size());
+        r2.assign(a2.data(), a2.data() + a2.size());
+        for (size_t i = 0; i < r1.size(); ++i)
+            if (!(std::isfinite(r1[i]) && std::isfinite(r2[i]) && r1[i] > 0 && r2[i] > 0))
+                throw scalecert::InputError("audit: pair " + std::to_string(i) + ": scalings are finite numbers > 0");
+    }
+    // A float32 program is asked the floats nearest them, and judged at those.
+    if (s.numbers == scalecert::Numbers::Float32)
+        for (auto* v : {&r1, &r2})
+            for (double& x : *v) x = static_cast<double>(static_cast<float>(x));
+    const size_t n = r1.size();
+    py::array_t<double> A(static_cast<py::ssize_t>(n), r1.data()), B(static_cast<py::ssize_t>(n), r2.data());
+    const py::object said = method(A, B);
+    // The answers: one per pair; a word that is not a verdict, or no word, is no answer.
+    const bool sequence = py::isinstance<py::sequence>(said) && !py::isinstance<py::str>(said) &&
+                          py::hasattr(said, "__len__");  // (not a dict, a set, a string)
+    if (!sequence || py::len(said) != n)
+        throw scalecert::InputError("audit: the method returned " +
+                                    (sequence ? std::to_string(py::len(said)) + " answers" : "no sequence") + " for " +
+                                    std::to_string(n) + " pairs");
+    std::vector<std::string> words(n);
+    std::vector<std::optional<scalecert::ClaimedVerdict>> verdict(n);
+    const py::sequence seq = said.cast<py::sequence>();
+    for (size_t i = 0; i < n; ++i) {
+        const py::object w = seq[i];
+        if (py::isinstance<py::str>(w)) {
+            try {
+                words[i] = w.cast<std::string>();
+            } catch (const py::cast_error&) {  // not UTF-8 (a lone surrogate): no verdict word
+                words[i].clear();
+            }
+        }
+        verdict[i] = claimed_verdict(words[i]);
+        if (!verdict[i]) words[i] = py::repr(w).cast<std::string>().substr(0, 60);
+    }
+    // Judged a block at a time: a judgement holds its exact values, and a million of
+    // them at once would hold gigabytes.
+    std::vector<char> judged_right(n, 0);
+    constexpr size_t kBlock = 65536;
+    for (size_t b = 0; b < n; b += kBlock) {
+        std::vector<scalecert::Claim> claims;
+        std::vector<size_t> at;
+        for (size_t i = b; i < std::min(n, b + kBlock); ++i)
+            if (verdict[i]) {
+                scalecert::Claim c;
+                c.kind = scalecert::ClaimKind::Verdict;
+                c.rho1 = scalecert::exact(r1[i]);
+                c.rho2 = scalecert::exact(r2[i]);
+                c.verdict = *verdict[i];
+                claims.push_back(std::move(c));
+                at.push_back(i);
+            }
+        const scalecert::Judgements j = a.certify(claims);
+        for (size_t k = 0; k < at.size(); ++k) judged_right[at[k]] = j.items[k].right;
+    }
+    const std::vector<scalecert::Verdict> exact = a.classify(r1, r2, 0);
+    py::array_t<bool> right(static_cast<py::ssize_t>(n));
+    auto rw = right.mutable_unchecked<1>();
+    py::list failures, exact_names;
+    long wrong = 0, false_sep = 0, false_int = 0, false_touch = 0, no_answer = 0;
+    for (size_t i = 0; i < n; ++i) {
+        const bool answered = verdict[i].has_value();
+        const bool ok = answered && judged_right[i];
+        rw(static_cast<py::ssize_t>(i)) = ok;
+        exact_names.append(scalecert::name(exact[i]));
+        if (ok) continue;
+        ++wrong;
+        ++(!answered                                             ? no_answer
+           : *verdict[i] == scalecert::ClaimedVerdict::Separated ? false_sep
+           : *verdict[i] == scalecert::ClaimedVerdict::Touching  ? false_touch
+                                                                 : false_int);
+        if (failures.size() < static_cast<size_t>(cap))
+            failures.append(py::dict(py::arg("rho1") = r1[i], py::arg("rho2") = r2[i],
+                                     py::arg("said") = answered ? words[i] : "no answer: " + words[i],
+                                     py::arg("exact") = scalecert::name(exact[i])));
+    }
+    return py::dict(py::arg("queries") = n, py::arg("wrong") = wrong, py::arg("false_separated") = false_sep,
+                    py::arg("false_overlapping") = false_int, py::arg("false_touching") = false_touch,
+                    py::arg("no_answer") = no_answer, py::arg("right") = right, py::arg("exact_verdict") = exact_names,
+                    py::arg("failures") = failures);
+}
+
+// A Scene's golden data, and the audit of the user's own collision test.
+void bind_scene_golden_and_audit(py::class_<PyScene>& scene) {
+    scene
         .def(
             "golden",
             [](const PyScene& s, const py::handle& verticals, const py::handle& offsets) {
@@ -971,122 +1096,31 @@ PYBIND11_MODULE(scalecert, m) {
             "the scene's golden data: (the golden JSON as a dict, the decimal CSV text, the rational CSV text), "
             "as scalecert golden writes per scene; verticals and offsets (a list of K: pairs 2^-K away; default "
             "[4, 12, 20, 30, 40, 52]) as its --verticals and --offsets")
-        .def(
-            "audit",
-            [](const PyScene& s, const py::function& method, const py::handle& rho1, const py::handle& rho2,
-               const py::handle& listed) {
-                const scalecert::Analysis& a = s.a();
-                const int cap = count_arg(listed, "listed", 0, 1000000);
-                if (rho1.is_none() != rho2.is_none())
-                    throw scalecert::InputError("audit: give rho1 and rho2 together, or neither");
-                // The pairs: those given, or the golden data's (its queries' doubles, each once).
-                std::vector<double> r1, r2;
-                if (rho1.is_none()) {
-                    const py::dict g = json_loads(a.golden().json);
-                    std::set<std::pair<double, double>> seen;
-                    for (const py::handle q : g["queries"].cast<py::list>()) {
-                        const double x = q["rho1_double"].cast<double>(), y = q["rho2_double"].cast<double>();
-                        if (seen.insert({x, y}).second) r1.push_back(x), r2.push_back(y);
-                    }
-                } else {
-                    const DoubleArray a1 = doubles_of(rho1, "rho1", "audit"), a2 = doubles_of(rho2, "rho2", "audit");
-                    if (a1.ndim() != 1 || a2.ndim() != 1 || a1.size() != a2.size())
-                        throw scalecert::InputError("audit: rho1 and rho2 are one-dimensional arrays of one length");
-                    r1.assign(a1.data(), a1.data() + a1.size());
-                    r2.assign(a2.data(), a2.data() + a2.size());
-                    for (size_t i = 0; i < r1.size(); ++i)
-                        if (!(std::isfinite(r1[i]) && std::isfinite(r2[i]) && r1[i] > 0 && r2[i] > 0))
-                            throw scalecert::InputError("audit: pair " + std::to_string(i) +
-                                                        ": scalings are finite numbers > 0");
-                }
-                // A float32 program is asked the floats nearest them, and judged at those.
-                if (s.numbers == scalecert::Numbers::Float32)
-                    for (auto* v : {&r1, &r2})
-                        for (double& x : *v) x = static_cast<double>(static_cast<float>(x));
-                const size_t n = r1.size();
-                py::array_t<double> A(static_cast<py::ssize_t>(n), r1.data()),
-                    B(static_cast<py::ssize_t>(n), r2.data());
-                const py::object said = method(A, B);
-                // The answers: one per pair; a word that is not a verdict, or no word, is no answer.
-                const bool sequence = py::isinstance<py::sequence>(said) && !py::isinstance<py::str>(said) &&
-                                      py::hasattr(said, "__len__");  // (not a dict, a set, a string)
-                if (!sequence || py::len(said) != n)
-                    throw scalecert::InputError(
-                        "audit: the method returned " +
-                        (sequence ? std::to_string(py::len(said)) + " answers" : "no sequence") + " for " +
-                        std::to_string(n) + " pairs");
-                std::vector<std::string> words(n);
-                std::vector<std::optional<scalecert::ClaimedVerdict>> verdict(n);
-                const py::sequence seq = said.cast<py::sequence>();
-                for (size_t i = 0; i < n; ++i) {
-                    const py::object w = seq[i];
-                    if (py::isinstance<py::str>(w)) {
-                        try {
-                            words[i] = w.cast<std::string>();
-                        } catch (const py::cast_error&) {  // not UTF-8 (a lone surrogate): no verdict word
-                            words[i].clear();
-                        }
-                    }
-                    verdict[i] = claimed_verdict(words[i]);
-                    if (!verdict[i]) words[i] = py::repr(w).cast<std::string>().substr(0, 60);
-                }
-                // Judged a block at a time: a judgement holds its exact values, and a million of
-                // them at once would hold gigabytes.
-                std::vector<char> judged_right(n, 0);
-                constexpr size_t kBlock = 65536;
-                for (size_t b = 0; b < n; b += kBlock) {
-                    std::vector<scalecert::Claim> claims;
-                    std::vector<size_t> at;
-                    for (size_t i = b; i < std::min(n, b + kBlock); ++i)
-                        if (verdict[i]) {
-                            scalecert::Claim c;
-                            c.kind = scalecert::ClaimKind::Verdict;
-                            c.rho1 = scalecert::exact(r1[i]);
-                            c.rho2 = scalecert::exact(r2[i]);
-                            c.verdict = *verdict[i];
-                            claims.push_back(std::move(c));
-                            at.push_back(i);
-                        }
-                    const scalecert::Judgements j = a.certify(claims);
-                    for (size_t k = 0; k < at.size(); ++k) judged_right[at[k]] = j.items[k].right;
-                }
-                const std::vector<scalecert::Verdict> exact = a.classify(r1, r2, 0);
-                py::array_t<bool> right(static_cast<py::ssize_t>(n));
-                auto rw = right.mutable_unchecked<1>();
-                py::list failures, exact_names;
-                long wrong = 0, false_sep = 0, false_int = 0, false_touch = 0, no_answer = 0;
-                for (size_t i = 0; i < n; ++i) {
-                    const bool answered = verdict[i].has_value();
-                    const bool ok = answered && judged_right[i];
-                    rw(static_cast<py::ssize_t>(i)) = ok;
-                    exact_names.append(scalecert::name(exact[i]));
-                    if (ok) continue;
-                    ++wrong;
-                    ++(!answered                 ? no_answer
-                       : words[i] == "separated" ? false_sep
-                       : words[i] == "touching"  ? false_touch
-                                                 : false_int);
-                    if (failures.size() < static_cast<size_t>(cap))
-                        failures.append(py::dict(py::arg("rho1") = r1[i], py::arg("rho2") = r2[i],
-                                                 py::arg("said") = answered ? words[i] : "no answer: " + words[i],
-                                                 py::arg("exact") = scalecert::name(exact[i])));
-                }
-                return py::dict(py::arg("queries") = n, py::arg("wrong") = wrong,
-                                py::arg("false_separated") = false_sep, py::arg("false_overlapping") = false_int,
-                                py::arg("false_touching") = false_touch, py::arg("no_answer") = no_answer,
-                                py::arg("right") = right, py::arg("exact_verdict") = exact_names,
-                                py::arg("failures") = failures);
-            },
-            py::arg("method"), py::arg("rho1") = py::none(), py::arg("rho2") = py::none(), py::arg("listed") = 50,
-            "audits your own collision test: method(rho1, rho2) is called once with two float64 arrays of "
-            "scalings (default: the golden data's pairs, near every piece of the boundary in I1 x I2; a scene "
-            "of numbers='float32' is asked the floats nearest them) and returns one verdict word per pair "
-            "('separated', 'touching', 'overlapping' or 'intersecting'), each judged as certify judges a verdict "
-            "claim at the exact value of the numbers asked; anything else (None, NaN, another word) is no answer, "
-            "judged wrong. Returns a dict: queries, wrong (the sum of the next four), false_separated (said "
-            "separated where they meet), false_overlapping (said overlapping or intersecting, wrongly), "
-            "false_touching (said touching where they do not touch), no_answer, right (bool array), "
-            "exact_verdict, and failures: the first `listed` wrong pairs (rho1, rho2, said, exact)");
+        .def("audit", &audit_method, py::arg("method"), py::arg("rho1") = py::none(), py::arg("rho2") = py::none(),
+             py::arg("listed") = 50,
+             "audits your own collision test: method(rho1, rho2) is called once with two float64 arrays of "
+             "scalings (default: the golden data's pairs, near every piece of the boundary in I1 x I2; a scene "
+             "of numbers='float32' is asked the floats nearest them) and returns one verdict word per pair "
+             "('separated', 'touching', 'overlapping' or 'intersecting'), each judged as certify judges a verdict "
+             "claim at the exact value of the numbers asked; anything else (None, NaN, another word) is no answer, "
+             "judged wrong. Returns a dict: queries, wrong (the sum of the next four), false_separated (said "
+             "separated where they meet), false_overlapping (said overlapping or intersecting, wrongly), "
+             "false_touching (said touching where they do not touch), no_answer, right (bool array), "
+             "exact_verdict, and failures: the first `listed` wrong pairs (rho1, rho2, said, exact)");
+}
+
+// The class Scene: a scene with its analysis, built on first use.
+void bind_scene(py::module_& m) {
+    py::class_<PyScene> scene(m, "Scene");
+    bind_scene_construction(scene);
+    bind_scene_contents(scene);
+    bind_scene_answers(scene);
+    bind_scene_claims(scene);
+    bind_scene_golden_and_audit(scene);
+}
+
+// The module's function golden: a family's scenes with their exact answers, into a folder.
+void bind_golden(py::module_& m) {
     m.def(
         "golden",
         [](const py::handle& family, const py::handle& count, const py::handle& seed, const py::handle& eps,
@@ -1102,4 +1136,16 @@ PYBIND11_MODULE(scalecert, m) {
         py::arg("family"), py::arg("count"), py::arg("seed"), py::arg("eps"), py::arg("dir"), py::arg("verticals") = 7,
         py::arg("offsets") = py::none(),
         "writes COUNT scenes of FAMILY with exact answers into DIR, as scalecert golden does");
+}
+
+}  // namespace
+
+PYBIND11_MODULE(scalecert, m) {
+    m.doc() = "Exact, certified collision of uniformly scaled convex polyhedra and of objects made of convex parts.";
+    m.attr("__version__") = scalecert::version();
+    py::register_exception<scalecert::InputError>(m, "InputError", PyExc_ValueError);
+
+    bind_verdict(m);
+    bind_scene(m);
+    bind_golden(m);
 }
