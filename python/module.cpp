@@ -429,15 +429,12 @@ py::dict curve_dict(const scalecert::Curve& c) {
 
 using namespace pybind11::literals;
 
-// A claimed verdict's word, or none: an exact verdict's name (scalecert::name), or "intersecting"
-// (overlapping or touching), which the public header names nowhere.
+// A claimed verdict's word (scalecert::name), or none.
 std::optional<scalecert::ClaimedVerdict> claimed_verdict(const std::string& v) {
     using scalecert::ClaimedVerdict;
-    using scalecert::Verdict;
-    if (v == scalecert::name(Verdict::Separated)) return ClaimedVerdict::Separated;
-    if (v == scalecert::name(Verdict::Touching)) return ClaimedVerdict::Touching;
-    if (v == scalecert::name(Verdict::Overlapping)) return ClaimedVerdict::Overlapping;
-    if (v == "intersecting") return ClaimedVerdict::Intersecting;
+    for (ClaimedVerdict c : {ClaimedVerdict::Separated, ClaimedVerdict::Touching, ClaimedVerdict::Overlapping,
+                             ClaimedVerdict::Intersecting})
+        if (v == scalecert::name(c)) return c;
     return std::nullopt;
 }
 

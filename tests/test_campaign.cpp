@@ -60,17 +60,16 @@ ExactScene family(const std::string& name, const Q& eps, std::uint64_t seed) {
 }  // namespace
 
 BOOST_AUTO_TEST_CASE(audit_rows_count_wrong_verdicts_by_the_claims_rules) {
-    // Exact verdicts 0 separated, 1 touching, 2 overlapping. Separated is right only where they
-    // are apart, touching only where they touch, intersecting wherever they meet, overlapping only
-    // where they overlap strictly; no answer is wrong always.
+    // Separated is right only where they are apart, touching only where they touch, intersecting
+    // wherever they meet, overlapping only where they overlap strictly; no answer is wrong always.
     AuditRow r;
-    r.count(1, 1, AuditRow::kSaidSeparated, 1);     // wrong: they touch
-    r.count(1, 1, AuditRow::kSaidIntersecting, 1);  // right
-    r.count(1, 1, AuditRow::kSaidIntersecting, 0);  // wrong: apart
-    r.count(1, 1, AuditRow::kSaidTouching, 2);      // wrong: they overlap
-    r.count(1, 1, AuditRow::kSaidOverlapping, 1);   // wrong: they only touch
-    r.count(1, 1, AuditRow::kSaidSeparated, 0);     // right
-    r.count(2, 3, AuditRow::kSaidNoAnswer, 0);      // wrong
+    r.count(1, 1, AuditRow::kSaidSeparated, Verdict::Touching);      // wrong: they touch
+    r.count(1, 1, AuditRow::kSaidIntersecting, Verdict::Touching);   // right
+    r.count(1, 1, AuditRow::kSaidIntersecting, Verdict::Separated);  // wrong: apart
+    r.count(1, 1, AuditRow::kSaidTouching, Verdict::Overlapping);    // wrong: they overlap
+    r.count(1, 1, AuditRow::kSaidOverlapping, Verdict::Touching);    // wrong: they only touch
+    r.count(1, 1, AuditRow::kSaidSeparated, Verdict::Separated);     // right
+    r.count(2, 3, AuditRow::kSaidNoAnswer, Verdict::Separated);      // wrong
     BOOST_TEST(r.queries == 7);
     BOOST_TEST(r.false_separated == 1);
     BOOST_TEST(r.false_overlapping == 2);
@@ -79,13 +78,13 @@ BOOST_AUTO_TEST_CASE(audit_rows_count_wrong_verdicts_by_the_claims_rules) {
     BOOST_TEST(r.wrong() == 5);
     BOOST_TEST_REQUIRE(r.failures.size() == 5u);
     BOOST_TEST(r.failures[1].said == AuditRow::kSaidIntersecting);
-    BOOST_TEST(r.failures[1].exact == 0);
+    BOOST_TEST((r.failures[1].exact == Verdict::Separated));
     BOOST_TEST(r.failures[4].rho1 == 2.0);
     BOOST_TEST(r.failures[4].reason == "no answer");
     BOOST_TEST(std::string(AuditRow::said_word(AuditRow::kSaidIntersecting)) == "intersecting");
     // Every wrong verdict counted, the first 50 listed.
     AuditRow many;
-    for (int k = 0; k < 60; ++k) many.count(k, 1, AuditRow::kSaidSeparated, 2);
+    for (int k = 0; k < 60; ++k) many.count(k, 1, AuditRow::kSaidSeparated, Verdict::Overlapping);
     BOOST_TEST(many.false_separated == 60);
     BOOST_TEST(many.failures.size() == 50u);
     BOOST_TEST(many.failures.back().rho1 == 49.0);

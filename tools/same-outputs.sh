@@ -52,9 +52,10 @@ for f in certificates/scenes/*.json certificates/scenes/compound/*.json tests/da
     run "$n.query-in-t" "$sc" query "$f" 1/2 1/2 --in-t
     for p in "1 1" "3/2 3/2" "1 19/10" "1/2 2"; do
         set -- $p
-        run "$n.query.$1_$2" "$sc" query "$f" "$1" "$2"
-        run "$n.query.$1_$2.json" "$sc" query "$f" "$1" "$2" --json
-        run "$n.query.$1_$2.scan.json" "$sc" query "$f" "$1" "$2" --json --engine scan
+        q=$(echo "$1_$2" | tr '/' '_')  # (3/2 in a file name would be a folder)
+        run "$n.query.$q" "$sc" query "$f" "$1" "$2"
+        run "$n.query.$q.json" "$sc" query "$f" "$1" "$2" --json
+        run "$n.query.$q.scan.json" "$sc" query "$f" "$1" "$2" --json --engine scan
     done
     printf '%s' "$pairs" >"$work/pairs.txt"
     run "$n.classify" "$sc" classify "$f" "$work/pairs.txt"

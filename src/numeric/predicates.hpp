@@ -10,9 +10,10 @@
 //
 // Statistics: every predicate counts each decision, by stage, into a PredicateStats (one counter
 // pair per predicate, below). A PredicateStats belongs to the object that decides (a Polyhedron,
-// a model's LineStats or ScanStats, a FastCurve, FastDirect or QuickScene, a compound region's or
-// locator's statistics), so that threads share none; sums over objects are explicit (operator+=). The statistics each model reports
-// ("decided_by_filter", "decided_exactly") are read from them.
+// a model's LineStats or ScanStats, a FastCurve, FastDirect or QuickScene, a compound region's
+// or locator's statistics), so that threads share none; sums over objects are explicit
+// (operator+=). The statistics each model reports ("decided_by_filter", "decided_exactly") are
+// read from them.
 //
 // The predicates (their filters are in this file; an exact stage that is a whole algorithm of a
 // higher layer is named where it is):
