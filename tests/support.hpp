@@ -17,6 +17,17 @@ inline std::ostream& operator<<(std::ostream& o, Verdict v) { return o << name(v
 namespace test {
 using namespace scalecert::internal;
 
+// The message of the InputError f throws, or "" when it throws none.
+template <class F>
+std::string input_error(F&& f) {
+    try {
+        f();
+    } catch (const scalecert::InputError& e) {
+        return e.what();
+    }
+    return "";
+}
+
 // p/q in lowest terms (GMP's rational arithmetic requires canonical operands).
 inline Q qc(long p, long q) {
     Q r(p, q);

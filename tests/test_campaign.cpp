@@ -4,6 +4,8 @@
 // comments.
 #include <boost/test/unit_test.hpp>
 
+#include "support.hpp"
+
 #include "campaign/audit_table.hpp"
 #include "campaign/campaign.hpp"
 #include "campaign/families.hpp"
@@ -14,22 +16,13 @@
 #include <vector>
 
 using namespace scalecert::internal;
+using test::input_error;
 
 namespace {
 Q q(long p, long d = 1) {
     Q r(p, d);
     r.canonicalize();
     return r;
-}
-// The message of the InputError f throws, or "" when it throws none.
-template <class F>
-std::string input_error(F&& f) {
-    try {
-        f();
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "";
 }
 // The lines of a text ending in a newline.
 std::vector<std::string> lines_of(const std::string& text) {

@@ -3,6 +3,8 @@
 // worked out by hand in the comments (or, for shell words, against /bin/sh itself).
 #include <boost/test/unit_test.hpp>
 
+#include "support.hpp"
+
 #include "files.hpp"
 #include "io/files.hpp"
 #include "io/int_points.hpp"
@@ -23,6 +25,7 @@
 
 namespace fs = std::filesystem;
 using namespace scalecert::internal;
+using test::input_error;
 
 namespace {
 fs::path tmpdir() {
@@ -38,16 +41,6 @@ JsonError json_error(const std::string& text, bool non_numbers = false) {
         return e;
     }
     return {std::string::npos, ""};
-}
-// The message of the InputError f throws, or "" when it throws none.
-template <class F>
-std::string input_error(F&& f) {
-    try {
-        f();
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "";
 }
 Q q(long p, long d = 1) {
     Q r(p, d);
