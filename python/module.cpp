@@ -187,6 +187,7 @@ std::vector<scalecert::Point> points(const py::handle& h, const std::string& wha
 
 scalecert::Interval interval(const py::handle& h, const std::string& what,
                              scalecert::Numbers numbers = scalecert::Numbers::Double) {
+    if (h.is_none()) return {};  // [1, 1]: the object as it is
     py::list l = as_list(h, what);
     if (l.size() != 2) throw scalecert::InputError(what + ": expected (lo, hi)");
     return {rational(l[0], what.c_str(), numbers), rational(l[1], what.c_str(), numbers)};
@@ -696,10 +697,11 @@ void bind_scene_construction(py::class_<PyScene>& scene) {
                          const py::handle& seeds, const py::handle& numbers) {
                  return make_scene(p1, p2, i1, i2, seeds, numbers_arg(numbers));
              }),
-             py::arg("P1"), py::arg("P2"), py::arg("I1"), py::arg("I2"), py::arg("seeds") = py::none(),
-             py::arg("numbers") = "double",
+             py::arg("P1"), py::arg("P2"), py::arg("I1") = py::none(), py::arg("I2") = py::none(),
+             py::arg("seeds") = py::none(), py::arg("numbers") = "double",
              "Two convex objects. Vertices as lists or numpy arrays of ints, Fractions, Decimals, decimal strings or "
-             "floats; I1, I2 = (lo, hi); seeds = (s1, s2), default the means. A float is read as numbers says: "
+             "floats; I1, I2 = (lo, hi), default (1, 1): no scaling; seeds = (s1, s2), default the means. A float is "
+             "read as numbers says: "
              "'double' (its exact value), 'float32' (the float nearest it, as a float32 program holds it) or 'exact' "
              "(its shortest decimal, as written: 0.1 is 1/10); str, Fraction, Decimal and int are exact always.")
         .def_static(
@@ -722,8 +724,8 @@ void bind_scene_construction(py::class_<PyScene>& scene) {
                                                  interval(i2, "I2", numbers), s[0], s[1]),
                     nullptr, numbers};
             },
-            py::arg("P1"), py::arg("P2"), py::arg("I1"), py::arg("I2"), py::arg("seeds") = py::none(),
-            py::arg("numbers") = "double",
+            py::arg("P1"), py::arg("P2"), py::arg("I1") = py::none(), py::arg("I2") = py::none(),
+            py::arg("seeds") = py::none(), py::arg("numbers") = "double",
             "Two objects made of convex parts: P1, P2 lists of parts, each a list of vertices (numbers as for "
             "Scene); seeds = (s1, s2), either may be None: the mean of all that object's vertices.")
         .def_static(
@@ -770,8 +772,9 @@ void bind_scene_construction(py::class_<PyScene>& scene) {
                                                   numbers, poses, seeds_of(seeds_, numbers)),
                     nullptr, numbers});
             },
-            py::arg("p1"), py::arg("p2"), py::arg("I1"), py::arg("I2"), py::arg("parts_from_groups") = false,
-            py::arg("numbers") = "double", py::arg("poses") = py::none(), py::arg("seeds") = py::none(),
+            py::arg("p1"), py::arg("p2"), py::arg("I1") = py::none(), py::arg("I2") = py::none(),
+            py::arg("parts_from_groups") = false, py::arg("numbers") = "double", py::arg("poses") = py::none(),
+            py::arg("seeds") = py::none(),
             "mesh files (.off .obj .ply .stl; text decimals and float I1, I2 read as numbers says), each one convex "
             "object; seeds = (seed1, seed2), each None (the mean of the object's points) or a point in its mesh's "
             "frame; poses = (pose1, pose2), each None or a 3x4 [R | t] by rows (e.g. a numpy array) moving that "

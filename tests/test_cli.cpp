@@ -88,8 +88,21 @@ BOOST_AUTO_TEST_CASE(bad_inputs) {
     auto S = [&](const std::string& name, const std::string& text) { return "curve " + write(name, text).string(); };
     expect_error("malformed JSON", S("a.json", "{\"P1\": "), "malformed JSON");
     expect_error("not an object", S("b.json", "[1,2]"), "JSON object");
-    expect_error("missing I2",
-                 S("c.json", "{\"P1\": " + poly(kCube1) + ", \"P2\": " + poly(kCube2) + ", \"I1\": [1,2]}"), "\"I2\"");
+    {
+        // Without I1 and I2 both ranges are [1, 1], the objects as they are: P1 = [0, 2]^3 about
+        // (1, 1, 1) reaches z = 1 + ρ1, P2 = [0, 2]^2 x [2, 4] about (1, 1, 3) starts at 3 − ρ2, so
+        // they touch where ρ1 + ρ2 = 2: at (1, 1).
+        const std::string cube2 = R"([[0,0,2],[2,0,2],[0,2,2],[2,2,2],[0,0,4],[2,0,4],[0,2,4],[2,2,4]])";
+        const fs::path c = write("c.json", "{\"P1\": " + poly(kCube1) + ", \"P2\": " + poly(cube2) + "}");
+        const Run q = run("query " + c.string() + " 1 1");
+        BOOST_TEST(q.status == 0, q.err);
+        BOOST_TEST(q.out == "touching\n");
+        // The curve over I1 = [1, 1]: one piece, ρ2 = 2 − ρ1.
+        const Run cv = run("curve " + c.string());
+        BOOST_TEST(cv.out.find("\"slope\": \"-1\",") != std::string::npos, cv.out);
+        BOOST_TEST(cv.out.find("\"intercept\": \"2\",") != std::string::npos, cv.out);
+        BOOST_TEST(cv.out.find("\"1\",\n    \"1\"\n   ]") != std::string::npos, cv.out);
+    }
     expect_error("missing vertices", S("d.json", scene("{}", poly(kCube2))), "P1");
     expect_error("NaN literal", S("e.json", scene(poly("[[NaN,0,0],[1,0,0],[0,1,0],[0,0,1]]"), poly(kCube2))),
                  "malformed JSON");
@@ -796,8 +809,8 @@ BOOST_AUTO_TEST_CASE(certify_fp_exit_status_gates_ci) {
         "tiny.json", R"({"format": "scalecert-claims-1", "claims": [{"kind": "verdict", "rho1": 1e-400, "rho2": 1, )"
                      R"("verdict": "touching"}]})");
     expect_error("underflowing claim", "certify-fp " + sc + " " + tiny.string(), "'1e-400' is 0 as a double");
-    // The same underflow in the line format and in JSON, and overflow and non-decimals (hex
-    // floats, nan) in the line format: refused in one line, as JSON refuses them.
+    // The same underflow in the line format and in JSON, and overflow and non-numbers (nan) in the
+    // line format: refused in one line, as JSON refuses them.
     expect_error("underflowing growth line", "certify-fp " + sc + " " + write("tiny.txt", "growth 1e-400\n").string(),
                  "'1e-400' is 0 as a double");
     fs::path tinyg = write(
@@ -805,12 +818,26 @@ BOOST_AUTO_TEST_CASE(certify_fp_exit_status_gates_ci) {
     expect_error("underflowing growth claim", "certify-fp " + sc + " " + tinyg.string(), "'1e-400' is 0 as a double");
     expect_error("overflowing line", "certify-fp " + sc + " " + write("huge.txt", "1e400 1 separated\n").string(),
                  "beyond the double range");
-    expect_error("hex float line", "certify-fp " + sc + " " + write("hex.txt", "0x1.8p0 1 separated\n").string(),
-                 "'0x1.8p0' is not a number");
+    // A hex float (printf's %a) is the binary value it writes: 0x1.8p0 = 3/2, so (3/2, 3/2) touches
+    // ρ1 + ρ2 = 3. 0x1.80000000000008p0 = 3/2 + 2^-53 has one bit more than a double: read as the
+    // double strtod gives (3/2, ties to even) it touches; as written (--numbers exact) it
+    // overlaps. Likewise in classify's pairs: 3/2 + 2^-52 (a double) overlaps.
+    {
+        const fs::path hex = write("hex.txt", "0x1.8p0 0X1.8P0 touching\n0x1.80000000000008p0 0x1.8p0 touching\n");
+        const Run d = run("certify-fp " + sc + " " + hex.string());
+        BOOST_TEST(d.status == 0, d.out + d.err);
+        BOOST_TEST(run("certify-fp " + sc + " " + hex.string() + " --numbers exact").out.find("right: 1, wrong: 1") !=
+                   std::string::npos);
+        const Run c = run("classify " + sc + " " +
+                          write("hexpairs.txt", "0x1.8p0 0x1.8p0\n0x1.8000000000001p0 0x1.8p0\n").string());
+        BOOST_TEST(c.status == 0, c.err);
+        BOOST_TEST(c.out == "touching\noverlapping\n");
+    }
     expect_error("nan line", "certify-fp " + sc + " " + write("nan.txt", "nan 1 separated\n").string(),
                  "'nan' is not a number");
-    expect_error("hex float pair", "classify " + sc + " " + write("hexpairs.txt", "1 2\n0x1.8p0 1\n").string(),
-                 "line 2: expected two decimals > 0 (such as 1.5 or 2e-3; not hexadecimal, inf or nan)");
+    expect_error("nan pair", "classify " + sc + " " + write("nanpairs.txt", "1 2\nnan 1\n").string(),
+                 "line 2: expected two numbers > 0 (decimals such as 1.5 or 2e-3, or hex floats such as 0x1.8p0; not "
+                 "inf or nan)");
     // A program's NaN where it answers is a wrong claim and the batch goes on (CLAIMS.md, "Outputs
     // that are no answer"): exit 1, two of three wrong, each with its reason; the certificate checks.
     {

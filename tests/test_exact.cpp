@@ -17,8 +17,40 @@ BOOST_AUTO_TEST_CASE(decimal_and_fraction_text_is_read_exactly) {
     BOOST_TEST(parse_exact("+.5") == Q(1, 2));
     BOOST_TEST(parse_exact("12.") == Q(12));
     BOOST_TEST(parse_exact("123456789012345678901234567890") == Q(Z("123456789012345678901234567890")));
-    for (const char* bad : {"", "abc", "1/0", "1e", "--1", "1.2.3", "nan", "inf", "1/-2", "0x10", " 1", "1e9999999"})
+    for (const char* bad :
+         {"",      "abc", "1/0",       "1e",   "--1",   "1.2.3",     "nan", "inf",  "1/-2",    "0x",
+          "0x.p1", " 1",  "1e9999999", "0x1p", "0x1p+", "0x1.8.1p0", "0xg", "x1p0", "0x1p1e3", "0x1p1234567890"})
         BOOST_CHECK_THROW(parse_exact(bad), InputError);
+}
+
+BOOST_AUTO_TEST_CASE(hex_floats_are_read_exactly_and_as_strtod_reads_them) {
+    using scalecert::Numbers;
+    // As written: 0x1.8p-3 = (1 + 8/16)·2^-3 = 3/16; 0X.Cp+1 = 12/16·2 = 3/2; 0x10 = 16 (the
+    // binary exponent is optional, as strtod takes it); 0xA.8 = 10 + 8/16 = 21/2.
+    BOOST_TEST(parse_exact("0x1.8p-3") == Q(3, 16));
+    BOOST_TEST(parse_exact("-0X.Cp+1") == Q(-3, 2));
+    BOOST_TEST(parse_exact("0x10") == Q(16));
+    BOOST_TEST(parse_exact("+0xA.8") == Q(21, 2));
+    BOOST_TEST(parse_exact("0x1p-1074") == Q(1, Z(1) << 1074));
+    // Read as a program holds it: 0x1.000003p0 = 1 + 3·2^-24 lies halfway between the floats
+    // 1 + 2^-23 and 1 + 2^-22; ties to even give 1 + 2^-22 (and 0x1.000001p0 = 1 + 2^-24, halfway
+    // between 1 and 1 + 2^-23, gives 1). Every double holds both as written.
+    BOOST_TEST(parse_number("0x1.000003p0", Numbers::Float32) == Q(1) + Q(1, Z(1) << 22));
+    BOOST_TEST(parse_number("0x1.000001p0", Numbers::Float32) == Q(1));
+    BOOST_TEST(parse_number("0x1.000003p0", Numbers::Double) == Q(1) + Q(3, Z(1) << 24));
+    BOOST_TEST(binary_is_exact("0x1.000003p0", Numbers::Double));
+    BOOST_TEST(!binary_is_exact("0x1.000003p0", Numbers::Float32));
+    // 0x1.80000000000008p0 = 3/2 + 2^-53, halfway between the doubles 3/2 and 3/2 + 2^-52: 3/2.
+    BOOST_TEST(parse_number("0x1.80000000000008p0", Numbers::Double) == Q(3, 2));
+    BOOST_TEST(parse_number("0x1.80000000000008p0", Numbers::Exact) == Q(3, 2) + Q(1, Z(1) << 53));
+    // The least float is 2^-149; 2^-150 is halfway to 0 and rounds to it (even): no float a program
+    // held. Past the double range likewise: 0x1p1024 overflows.
+    BOOST_TEST(parse_number("0x1p-149", Numbers::Float32) == Q(1, Z(1) << 149));
+    BOOST_CHECK_THROW(parse_number("0x1p-150", Numbers::Float32), InputError);
+    BOOST_CHECK_THROW(parse_number("0x1p1024", Numbers::Double), InputError);
+    BOOST_TEST(parse_number("0x0p0", Numbers::Double) == Q(0));
+    // Past the limit of bits for one number, as a decimal's exponent is.
+    BOOST_CHECK_THROW(parse_exact("0x1p20000"), InputError);
 }
 
 BOOST_AUTO_TEST_CASE(exact_strings_are_lowest_terms) {

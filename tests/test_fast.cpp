@@ -86,17 +86,25 @@ BOOST_AUTO_TEST_CASE(pair_text_is_read_exactly_on_two_threads) {
     // A bad line far into the second half: its number is counted over all lines before it.
     std::string lines;
     for (int i = 1; i <= 19999; ++i) lines += "1 2\n";  // 80 KB: two chunks
-    for (const char* bad : {"1 x", "1", "1 2 3", "0 1", "-1 2", "inf 1", "1 nan", "0x1.8p+1 1", "1 0x3", "+-1 2",
-                            "1e 2", ". 1", "1e400 1"}) {
+    for (const char* bad : {"1 x", "1", "1 2 3", "0 1", "-1 2", "inf 1", "1 nan", "0x1.8p+ 1", "1 0x", "+-1 2", "1e 2",
+                            ". 1", "1e400 1", "0x1p1024 1", "1 0x1p-1075", "-0x1p0 1"}) {
         std::vector<double> r1, r2;
         try {
             parse_pairs(lines + bad + "\n1 2\n", r1, r2, 2);
             BOOST_ERROR("accepted '" << bad << "'");
         } catch (const InputError& e) {
             BOOST_TEST(std::string(e.what()) ==
-                       "line 20000: expected two decimals > 0 (such as 1.5 or 2e-3; not hexadecimal, inf or nan)");
+                       "line 20000: expected two numbers > 0 (decimals such as 1.5 or 2e-3, or hex floats such as "
+                       "0x1.8p0; not inf or nan)");
         }
     }
+    // Hex floats beside decimals, in both halves: 0x1.8p+1 = 3, 0x3 = 3, 0x1p-1074 the least double.
+    std::vector<double> r1, r2;
+    parse_pairs(lines + "0x1.8p+1 0x3\n0x1p-1074 1\n", r1, r2, 2);
+    BOOST_TEST_REQUIRE(r1.size() == 20001u);
+    BOOST_TEST(r1[19999] == 3.0);
+    BOOST_TEST(r2[19999] == 3.0);
+    BOOST_TEST(r1[20000] == std::ldexp(1.0, -1074));
 }
 
 // One query from the scene with no model: the GJK proposal and its filtered certificate give the

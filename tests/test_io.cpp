@@ -385,6 +385,48 @@ BOOST_AUTO_TEST_CASE(scene_numbers_are_read_as_numbers_says) {
     BOOST_TEST(e.inexact_numbers == 0);
 }
 
+BOOST_AUTO_TEST_CASE(an_object_reads_its_points_as_its_numbers_says) {
+    // P1's points as float32 (0.1 is 13421773/2^27), its pose as the scene reads it (the double
+    // 0.1 = 3602879701896397/2^55, added to x); P2's points exact (1/10). Each reading's inexact
+    // numbers are counted apart: P1's one 0.1, the pose's one.
+    const std::string text = R"({"P1": {"vertices": [[0.1, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]],
+        "numbers": "float32", "pose": [[1, 0, 0, 0.1], [0, 1, 0, 0], [0, 0, 1, 0]]},
+ "P2": {"vertices": [[0.1, 5, 5], [1, 5, 5], [0, 6, 5], [0, 5, 6]], "numbers": "exact"}})";
+    const ExactScene sc = parse_scene_text(text, "s.json", ".");
+    const Q flt(Z(13421773), Z(134217728)), dbl(Z("3602879701896397"), Z("36028797018963968"));
+    BOOST_TEST(sc.P[0].points[0][0] == flt + dbl);
+    BOOST_TEST(sc.P[0].points[1][0] == Q(1) + dbl);
+    BOOST_TEST(sc.P[1].points[0][0] == q(1, 10));
+    BOOST_TEST(sc.inexact_numbers == 1);
+    BOOST_TEST(sc.inexact_by_reading[static_cast<size_t>(Numbers::Float32)] == 1);
+    const std::vector<std::string> notes = scene_notes(sc);
+    BOOST_TEST_REQUIRE(notes.size() == 2u);
+    BOOST_TEST(notes[1].rfind("1 number of objects whose \"numbers\" is \"float32\" is not a float32 exactly", 0) == 0,
+               notes[1]);
+    // Without I1 and I2, both ranges are [1, 1]: the objects as they are.
+    BOOST_TEST(sc.lo[0] == q(1));
+    BOOST_TEST(sc.hi[0] == q(1));
+    BOOST_TEST(sc.lo[1] == q(1));
+    BOOST_TEST(sc.hi[1] == q(1));
+    // A part's own reading wins over its object's: part 0 float32, part 1 the object's exact.
+    const std::string box = R"([[0.1, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]])";
+    const std::string parts = R"({"P1": {"parts": [{"vertices": )" + box + R"(, "numbers": "float32"}, {"vertices": )" +
+                              box + R"(}], "numbers": "exact"}, "P2": {"vertices": )" + box + R"(}, "I1": [1, 2]})";
+    ReadOptions with_parts;
+    with_parts.allow_parts = true;
+    const ExactScene sp = parse_scene_text(parts, "p.json", ".", with_parts);
+    BOOST_TEST(sp.P[0].parts[0][0][0] == flt);
+    BOOST_TEST(sp.P[0].parts[1][0][0] == q(1, 10));
+    BOOST_TEST(sp.P[1].points[0][0] == dbl);
+    BOOST_TEST(sp.hi[0] == q(2));
+    BOOST_TEST(sp.hi[1] == q(1));
+    BOOST_TEST(input_error([&] {
+                   parse_scene_text(R"({"P1": {"vertices": )" + box + R"(, "numbers": "single"}})", "n.json", ".");
+               }) ==
+               "n.json: P1.numbers: expected \"double\", \"float32\" or \"exact\" (how this object's points are "
+               "read)");
+}
+
 BOOST_AUTO_TEST_CASE(bad_scenes_are_refused_naming_the_field) {
     const std::string box = R"([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]])";
     auto scene = [&](const std::string& rest) {

@@ -450,8 +450,8 @@ BOOST_AUTO_TEST_CASE(compact_scene_reader) {
           "{\"P1\": {\"vertices\": " + cube + "}, \"P2\": {\"vertices\": " + cube +
               "}, \"I1\": [1, 2], \"I2\": [1, 2]} x",  // trailing text
           "{\"P1\": {\"vertices\": " + cube + "}, \"P2\": {\"vertices\": " + cube +
-              "}, \"I1\": [2, 1], \"I2\": [1, 2]}",                                                        // lo > hi
-          "{\"P1\": {\"vertices\": " + cube + "}, \"P2\": {\"vertices\": " + cube + "}, \"I1\": [1, 2]}",  // I2 missing
+              "}, \"I1\": [2, 1], \"I2\": [1, 2]}",                                  // lo > hi
+          "{\"P1\": {\"vertices\": " + cube + "}, \"I1\": [1, 2], \"I2\": [1, 2]}",  // P2 missing
           "{\"P1\": {\"vertices\": [[0,0,0],[1,0,0],[0,1,0]]}, \"P2\": {\"vertices\": " + cube +
               "}, \"I1\": [1, 2], \"I2\": [1, 2]}",  // 3 points
           "{\"P1\": {\"vertices\": " + cube + ", \"color\": 1}, \"P2\": {\"vertices\": " + cube +
@@ -461,6 +461,15 @@ BOOST_AUTO_TEST_CASE(compact_scene_reader) {
           "{\"P1\": {\"vertices\": " + cube + "}, \"P2\": {\"vertices\": " + cube +
               "}, \"I1\": [+1, 2], \"I2\": [1, 2]}"})  // '+'
         BOOST_TEST(!parse_scene_fast(t.data(), t.size(), Numbers::Exact), t);
+    // Without I2 its range is [1, 1], as the full reader has it.
+    const std::string no_i2 =
+        "{\"P1\": {\"vertices\": " + cube + "}, \"P2\": {\"vertices\": " + cube + "}, \"I1\": [1, 2]}";
+    const auto cs = parse_scene_fast(no_i2.data(), no_i2.size(), Numbers::Exact);
+    BOOST_TEST_REQUIRE(cs.has_value());
+    BOOST_TEST(cs->lo[0] == Q(1));
+    BOOST_TEST(cs->hi[0] == Q(2));
+    BOOST_TEST(cs->lo[1] == Q(1));
+    BOOST_TEST(cs->hi[1] == Q(1));
 }
 
 // Claims of every kind on a scene the walk takes, judged on the walk, build no hull model (the

@@ -23,8 +23,8 @@ using Point = std::array<Rational, 3>;
 // written in doubles rarely is); a singular R is refused.
 using Pose = std::array<std::array<Rational, 4>, 3>;
 struct Interval {
-    Rational lo, hi;
-};  // a closed range of scaling factors, 0 < lo <= hi
+    Rational lo{1}, hi{1};
+};  // a closed range of scaling factors, 0 < lo <= hi; Interval{} is [1, 1]: no scaling
 
 Rational exact(double x);                          // the double's exact binary value (x finite)
 Rational parse_rational(const std::string& text);  // "3/7", "-12", "0.1" (= 1/10), "1e-3", exactly

@@ -777,6 +777,19 @@ def test_numbers_mean_what_the_program_held(tmp_path):
                                            [[5, 0, 0], [6, 0, 0], [5, 1, 0], [5, 0, 1]], ("1/2", 2), ("1/2", 2)).json()
 
 
+def test_hex_floats_and_scenes_without_ranges():
+    # Without I1, I2 the objects are as they are: [0,2]^3 and [0,2]^2 x [2,4] touch at (1, 1), on
+    # rho1 + rho2 = 2. A hex float string is exact: "0x1.8p-1" = 3/4, so (3/4, 5/4) touches too, and
+    # (3/4, 0x1.4000000000001p0) = (3/4, 5/4 + 2^-52) overlaps.
+    s = scalecert.Scene(box(0, 0, 0, 2, 2, 2), box(0, 0, 2, 2, 2, 4))
+    assert s.verdict(1, 1) == scalecert.Verdict.Touching
+    assert s.verdict("0x1.8p-1", "0x1.4p0") == scalecert.Verdict.Touching
+    assert s.verdict("0x1.8p-1", "0x1.4000000000001p0") == scalecert.Verdict.Overlapping
+    assert json.loads(s.json())["I1"] == ["1", "1"]
+    with pytest.raises(scalecert.InputError, match="'0x1.8q0' is not an exact number"):
+        s.verdict("0x1.8q0", 1)
+
+
 def test_float32_overflow_is_no_answer():
     # 1e39 is beyond the float32 range (about 3.4e38): a float32 program held an infinity, so the
     # claim is no answer (wrong), and the rest of the batch is judged.

@@ -71,7 +71,7 @@ bool blank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
 bool delimiter(const char* p, const char* e) { return p == e || blank(*p) || *p == '\n' || *p == '#'; }
 
 // A decimal as every format takes it (CLAIMS.md, "Numbers"): a sign, digits with at most one
-// point, an optional exponent. No hexadecimal, "inf" or "nan".
+// point, an optional exponent. No "inf" or "nan"; hex floats are hex_float_syntax's.
 bool decimal_text(const char* p, const char* e) {
     if (p < e && (*p == '+' || *p == '-')) ++p;
     size_t digits = 0;
@@ -88,13 +88,20 @@ bool decimal_text(const char* p, const char* e) {
     return p == e;
 }
 
-// One number at p, a decimal, as strtod reads it (or with `single` as strtof: the float,
+// One number at p, a decimal or a hex float, as strtod reads it (or with `single` as strtof: the float,
 // rounded once): std::from_chars, correctly rounded like them; a leading '+' (which from_chars
 // does not take) and results out of range go to strtod (strtof) itself. Advances p past the token.
 bool number(const char*& p, const char* e, double& out, bool single) {
     const char* q = p;
     while (!delimiter(q, e)) ++q;
-    if (!decimal_text(p, q)) return false;
+    if (!decimal_text(p, q)) {
+        // A hex float (printf's %a) as strtod (strtof) reads it; from_chars takes none with 0x.
+        std::string t(p, q);
+        if (!hex_float_syntax(t)) return false;
+        out = single ? static_cast<double>(std::strtof(t.c_str(), nullptr)) : std::strtod(t.c_str(), nullptr);
+        p = q;
+        return true;
+    }
     float f = 0;
     auto r = single ? std::from_chars(p, q, f) : std::from_chars(p, q, out);
     if (r.ec == std::errc() && r.ptr == q) {
@@ -166,8 +173,10 @@ void parse_pairs(const std::string& text, std::vector<double>& r1, std::vector<d
     for (unsigned t = 0; t < threads; ++t)
         if (bad[t] != std::string::npos) {
             long line = 1 + std::count(text.begin(), text.begin() + static_cast<long>(bad[t]), '\n');
-            throw InputError("line " + std::to_string(line) +
-                             ": expected two decimals > 0 (such as 1.5 or 2e-3; not hexadecimal, inf or nan)");
+            throw InputError(
+                "line " + std::to_string(line) +
+                ": expected two numbers > 0 (decimals such as 1.5 or 2e-3, or hex floats such as 0x1.8p0; not inf or "
+                "nan)");
         }
     size_t n = got[0];
     for (unsigned t = 1; t < threads; ++t) {

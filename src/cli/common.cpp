@@ -17,8 +17,9 @@ void SceneArgs::add(CLI::App* sub) {
     sub->add_option("--p1", mesh[0],
                     "P1 from a mesh file (.off .obj .ply .stl), with --p2, --i1, --i2 instead of SCENE");
     sub->add_option("--p2", mesh[1], "P2 from a mesh file");
-    sub->add_option("--i1", interval[0], "I1 as LO,HI (fractions exact: 1/2,3; decimals as --numbers says)");
-    sub->add_option("--i2", interval[1], "I2 as LO,HI");
+    sub->add_option("--i1", interval[0],
+                    "I1 as LO,HI (fractions exact: 1/2,3; decimals as --numbers says; default 1,1: no scaling)");
+    sub->add_option("--i2", interval[1], "I2 as LO,HI (default 1,1)");
     sub->add_option("--seed1", seed[0], "P1's seed as X,Y,Z (default: the mean of its vertices)");
     sub->add_option("--seed2", seed[1], "P2's seed as X,Y,Z");
     sub->add_option("--pose1", pose[0],
@@ -70,8 +71,8 @@ internal::ExactScene SceneArgs::load() const {
         return sc;
     }
     internal::note_inputs({mesh[0], mesh[1]});
-    if (mesh[0].empty() || mesh[1].empty() || interval[0].empty() || interval[1].empty())
-        throw InputError("give SCENE, or --p1 and --p2 (mesh files) with --i1 and --i2 (LO,HI)");
+    if (mesh[0].empty() || mesh[1].empty())
+        throw InputError("give SCENE, or --p1 and --p2 (mesh files), with --i1 and --i2 (LO,HI; [1, 1] without)");
     internal::ExactScene sc;
     ReadOptions counted = opt;
     counted.inexact = &sc.inexact_numbers;
@@ -79,9 +80,13 @@ internal::ExactScene SceneArgs::load() const {
     for (int i = 0; i < 2; ++i) {
         const std::string n = std::to_string(i + 1);
         read_mesh_object(mesh[i], counted, sc.P[i]);
-        const std::vector<Q> r = number_list(interval[i], 2, "--i" + n, counted);
-        sc.lo[i] = r[0];
-        sc.hi[i] = r[1];
+        if (interval[i].empty()) {  // no scaling: the object as it is
+            sc.lo[i] = sc.hi[i] = 1;
+        } else {
+            const std::vector<Q> r = number_list(interval[i], 2, "--i" + n, counted);
+            sc.lo[i] = r[0];
+            sc.hi[i] = r[1];
+        }
         if (!seed[i].empty()) {
             const std::vector<Q> s = number_list(seed[i], 3, "--seed" + n, counted);
             sc.P[i].seed = {s[0], s[1], s[2]};
@@ -113,8 +118,7 @@ std::shared_ptr<const internal::CompactScene> SceneArgs::load_compact(internal::
     if (scene_only && path != "-")
         if (auto cs = internal::read_scene_fast(path, opt.numbers))
             return std::make_shared<internal::CompactScene>(std::move(*cs));
-    const bool meshes = path.empty() && !mesh[0].empty() && !mesh[1].empty() && !interval[0].empty() &&
-                        !interval[1].empty() && pose[0].empty() && pose[1].empty();
+    const bool meshes = path.empty() && !mesh[0].empty() && !mesh[1].empty() && pose[0].empty() && pose[1].empty();
     if (meshes) {
         // Any problem sends the scene to load(), whose checks come in its own order: the same
         // error message either way.
@@ -123,7 +127,8 @@ std::shared_ptr<const internal::CompactScene> SceneArgs::load_compact(internal::
             std::optional<Vec3q> sd[2];
             for (int i = 0; i < 2; ++i) {
                 const std::string n = std::to_string(i + 1);
-                const std::vector<Q> r = number_list(interval[i], 2, "--i" + n, opt);
+                const std::vector<Q> r =
+                    interval[i].empty() ? std::vector<Q>{Q(1), Q(1)} : number_list(interval[i], 2, "--i" + n, opt);
                 lo[i] = r[0];
                 hi[i] = r[1];
                 if (!seed[i].empty()) {
@@ -168,7 +173,8 @@ std::string SceneArgs::pair_name() const {
 void add_mesh_pair(CLI::App* sub, SceneArgs& pair, const std::string& what) {
     sub->add_option("--p1", pair.mesh[0], "P1 from a mesh file (.off .obj .ply .stl), with --p2, --i1, --i2: " + what);
     sub->add_option("--p2", pair.mesh[1], "P2 from a mesh file");
-    sub->add_option("--i1", pair.interval[0], "I1 as LO,HI (fractions exact: 1/2,3; decimals as --numbers says)");
+    sub->add_option("--i1", pair.interval[0],
+                    "I1 as LO,HI (fractions exact: 1/2,3; decimals as --numbers says; default 1,1: no scaling)");
     sub->add_option("--i2", pair.interval[1], "I2 as LO,HI");
     sub->add_option("--seed1", pair.seed[0], "P1's seed as X,Y,Z (default: the mean of its vertices)");
     sub->add_option("--seed2", pair.seed[1], "P2's seed as X,Y,Z");

@@ -298,7 +298,9 @@ class SceneScanner {
         }
         if (!lit('}')) return std::nullopt;
         ws();
-        if (p_ != e_ || !(seen[0] && seen[1] && seen[2] && seen[3]) || values > kMaxJsonValues) return std::nullopt;
+        if (p_ != e_ || !(seen[0] && seen[1]) || values > kMaxJsonValues) return std::nullopt;
+        for (int i = 0; i < 2; ++i)
+            if (!seen[2 + i]) cs.lo[i] = cs.hi[i] = 1;  // no scaling: the objects as they are
         for (int i = 0; i < 2; ++i) {
             if (cs.P[i].size() < 4 || sgn(cs.lo[i]) <= 0 || cs.lo[i] > cs.hi[i])
                 return std::nullopt;  // the reader words these

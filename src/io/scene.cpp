@@ -85,6 +85,21 @@ ExactScene parse_scene_text(const std::string& text, const std::string& name, co
     };
     only(root, "", {"P1", "P2", "I1", "I2"});
     ExactScene sc;
+    // An object's or a part's own "numbers": its points read so, counted apart for the note.
+    auto reading = [&](const JNode& o, const std::string& where, const Reader& outer) {
+        const JNode* n = o.find("numbers");
+        if (!n) return outer;
+        if (n->kind != JNode::String || (n->text != "double" && n->text != "float32" && n->text != "exact"))
+            r.fail(where + ".numbers",
+                   "expected \"double\", \"float32\" or \"exact\" (how this object's points are read)");
+        Reader own = outer;
+        own.opt.numbers = n->text == "double"    ? Numbers::Double
+                          : n->text == "float32" ? Numbers::Float32
+                                                 : Numbers::Exact;
+        own.opt.inexact =
+            own.opt.numbers == opt.numbers ? opt.inexact : &sc.inexact_by_reading[static_cast<size_t>(own.opt.numbers)];
+        return own;
+    };
     const char* pname[2] = {"P1", "P2"};
     for (int i = 0; i < 2; ++i) {
         const JNode* p = root.find(pname[i]);
@@ -95,7 +110,9 @@ ExactScene parse_scene_text(const std::string& text, const std::string& name, co
         // extension; "off": an OFF file whatever its name). `where` names the object or the part.
         // With `groups` (an object's, not a part's), an OBJ "mesh" is read as a compound instead,
         // a part per group, into `into`. `part`: o is a part of "parts" (for the note on its groups).
-        auto body = [&](const JNode& o, const std::string& where, bool groups, PolyInput& into, bool part = false) {
+        // `rd` reads the points (the object's or the part's own "numbers").
+        auto body = [&](const Reader& rd, const JNode& o, const std::string& where, bool groups, PolyInput& into,
+                        bool part = false) {
             std::vector<Vec3q>& pts = into.points;
             const JNode* verts = o.find("vertices");
             const JNode* off = o.find("off");
@@ -110,7 +127,7 @@ ExactScene parse_scene_text(const std::string& text, const std::string& name, co
                 pts.reserve(verts->items.size());
                 for (size_t j = 0; j < verts->items.size(); ++j)
                     pts.push_back(
-                        r.point(verts->items[j], [&] { return where + ".vertices[" + std::to_string(j) + "]"; }));
+                        rd.point(verts->items[j], [&] { return where + ".vertices[" + std::to_string(j) + "]"; }));
             } else if (off) {
                 const std::string key = where + (mesh ? ".mesh" : ".off");
                 if (off->kind != JNode::String) r.fail(key, "expected a file name");
@@ -120,19 +137,21 @@ ExactScene parse_scene_text(const std::string& text, const std::string& name, co
                 if (!path.empty() && path[0] != '/' && !base_dir.empty()) path = base_dir + "/" + path;
                 sc.files.push_back(path);
                 if (groups) {
-                    ReadOptions o2 = opt;
+                    ReadOptions o2 = rd.opt;
                     o2.parts_from_groups = true;
                     read_mesh_object(path, o2, into);
                 } else {
-                    pts = mesh ? read_mesh(path, opt, &into.note, part)
-                               : parse_mesh(read_input(path, "OFF file", kMaxSceneBytes), MeshFormat::Off, path, opt);
+                    pts = mesh
+                              ? read_mesh(path, rd.opt, &into.note, part)
+                              : parse_mesh(read_input(path, "OFF file", kMaxSceneBytes), MeshFormat::Off, path, rd.opt);
                 }
             } else {
                 r.fail(where, "missing field \"vertices\" (or \"mesh\", \"off\")");
             }
         };
         if (const JNode* parts = p->find("parts")) {
-            only(*p, pname[i], {"parts", "seed", "pose"});
+            only(*p, pname[i], {"parts", "seed", "pose", "numbers"});
+            const Reader object_reader = reading(*p, pname[i], r);
             const std::string where = std::string(pname[i]) + ".parts";
             if (!opt.allow_parts)
                 r.fail(where,
@@ -149,7 +168,7 @@ ExactScene parse_scene_text(const std::string& text, const std::string& name, co
                 const std::string w = where + "[" + std::to_string(k) + "]";
                 const JNode& part = parts->items[k];
                 if (part.kind != JNode::Object) r.fail(w, "expected an object with \"vertices\" or \"mesh\"");
-                only(part, w, {"name", "vertices", "off", "mesh"});
+                only(part, w, {"name", "vertices", "off", "mesh", "numbers"});
                 if (const JNode* n = part.find("name")) {
                     if (n->kind != JNode::String) r.fail(w + ".name", "expected a string (the part's name)");
                     if (n->text.empty())
@@ -161,7 +180,7 @@ ExactScene parse_scene_text(const std::string& text, const std::string& name, co
                     in.part_names[k] = n->text;
                 }
                 PolyInput one;
-                body(part, w, false, one, true);
+                body(reading(part, w, object_reader), part, w, false, one, true);
                 // Said once per object, for the first such part.
                 if (!one.note.empty() && merged++ == 0) in.note = w + ": " + one.note;
                 in.parts.push_back(std::move(one.points));
@@ -174,7 +193,7 @@ ExactScene parse_scene_text(const std::string& text, const std::string& name, co
                 in.note += " (and " + std::to_string(merged - 1) + " more " + (merged == 2 ? "part" : "parts") +
                            " of " + pname[i] + " so read)";
         } else {
-            only(*p, pname[i], {"vertices", "off", "mesh", "seed", "parts_from_groups", "pose"});
+            only(*p, pname[i], {"vertices", "off", "mesh", "seed", "parts_from_groups", "pose", "numbers"});
             // An OBJ "mesh" as a compound: --parts-from-groups (which leaves other meshes, having no
             // groups, one convex object each), or this object's "parts_from_groups".
             const JNode* mesh = p->find("mesh");
@@ -199,7 +218,7 @@ ExactScene parse_scene_text(const std::string& text, const std::string& name, co
                     r.fail(w, "parts from groups need an OBJ \"mesh\" (" + in_quotes(mesh->text) +
                                   ": OFF, PLY and STL files have no groups)");
             }
-            body(*p, pname[i], groups, in);
+            body(reading(*p, pname[i], r), *p, pname[i], groups, in);
         }
         if (const JNode* s = p->find("seed")) {
             in.seed = r.point(*s, std::string(pname[i]) + ".seed");
@@ -224,7 +243,10 @@ ExactScene parse_scene_text(const std::string& text, const std::string& name, co
     const char* iname[2] = {"I1", "I2"};
     for (int i = 0; i < 2; ++i) {
         const JNode* n = root.find(iname[i]);
-        if (!n) r.fail("", std::string("missing field \"") + iname[i] + "\"");
+        if (!n) {  // no scaling: the objects as they are
+            sc.lo[i] = sc.hi[i] = 1;
+            continue;
+        }
         if (n->kind != JNode::Array || n->items.size() != 2) r.fail(iname[i], "expected [lo, hi]");
         sc.lo[i] = r.number(n->items[0], std::string(iname[i]) + "[0]");
         sc.hi[i] = r.number(n->items[1], std::string(iname[i]) + "[1]");
@@ -283,6 +305,12 @@ std::vector<std::string> scene_notes(const ExactScene& sc) {
                     (sc.inexact_numbers == 1 ? "it" : "them") +
                     " holds (--numbers exact reads decimals as written; "
                     "a JSON string such as \"0.1\" is exact always)");
+    for (size_t k = 0; k < sc.inexact_by_reading.size(); ++k)
+        if (const long c = sc.inexact_by_reading[k]; c > 0)
+            n.push_back(std::to_string(c) + (c == 1 ? " number" : " numbers") + " of objects whose \"numbers\" is \"" +
+                        numbers_name(static_cast<Numbers>(k)) + "\" " + (c == 1 ? "is" : "are") + " not " +
+                        (k == static_cast<size_t>(Numbers::Float32) ? "a float32" : "a double") +
+                        " exactly: read as the binary value a program reading " + (c == 1 ? "it" : "them") + " holds");
     return n;
 }
 

@@ -2,6 +2,7 @@
 #pragma once
 #include "numeric/exact.hpp"
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -42,6 +43,9 @@ struct ExactScene {
     // take as written: 0.1 read as a double is not 1/10 (said once, in notes()).
     long inexact_numbers = 0;
     Numbers numbers = Numbers::Double;
+    // Likewise for the points of objects and parts with their own "numbers" other than the
+    // scene's reading, by that reading (Numbers as an index).
+    std::array<long, 3> inexact_by_reading{};
     // An object given as parts (even of one): the scene is answered as objects made of parts.
     bool made_of_parts() const { return !P[0].parts.empty() || !P[1].parts.empty(); }
 };

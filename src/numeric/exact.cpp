@@ -105,6 +105,44 @@ bool parse_integer(const std::string& s, Z& z) {
 }
 }  // namespace
 
+bool hex_float_syntax(const std::string& t, HexFloat* out) {
+    size_t i = 0;
+    const bool negative = !t.empty() && t[0] == '-';
+    if (i < t.size() && (t[i] == '+' || t[i] == '-')) ++i;
+    if (t.size() < i + 2 || t[i] != '0' || (t[i + 1] != 'x' && t[i + 1] != 'X')) return false;
+    i += 2;
+    std::string digits;
+    long frac = 0;
+    bool point = false;
+    for (; i < t.size() && (std::isxdigit(static_cast<unsigned char>(t[i])) || (t[i] == '.' && !point)); ++i) {
+        if (t[i] == '.') {
+            point = true;
+            continue;
+        }
+        digits += t[i];
+        frac += point;
+    }
+    if (digits.empty()) return false;
+    long exponent = 0;
+    if (i < t.size() && (t[i] == 'p' || t[i] == 'P')) {
+        ++i;
+        const size_t b = i;
+        if (i < t.size() && (t[i] == '+' || t[i] == '-')) ++i;
+        if (i == t.size() || !all_digits(t, i, t.size())) return false;
+        // An exponent of more than 9 digits is no number: 2^(10^9) passes every limit.
+        if (t.size() - i > 9) return false;
+        exponent = std::stol(t.substr(b));
+        i = t.size();
+    }
+    if (i != t.size()) return false;
+    if (out) {
+        out->negative = negative;
+        out->mant = Z(digits, 16);
+        out->exp2 = exponent - 4 * frac;
+    }
+    return true;
+}
+
 std::string in_quotes(const std::string& text) {
     constexpr size_t kShown = 40;
     std::string out = "'";
@@ -139,7 +177,9 @@ Q parse_exact(const std::string& text) {
         }
     }
     auto bad = [&text] {
-        return InputError(in_quotes(text) + " is not an exact number (a decimal such as -1.5e-3, or a fraction p/q)");
+        return InputError(in_quotes(text) +
+                          " is not an exact number (a decimal such as -1.5e-3, a hex float such as 0x1.8p-3, or a "
+                          "fraction p/q)");
     };
     auto sized = [&text](Q r) {
         if (mpz_sizeinbase(r.get_num_mpz_t(), 2) > kMaxNumberBits ||
@@ -163,6 +203,17 @@ Q parse_exact(const std::string& text) {
         Q r(p, q);
         r.canonicalize();
         return sized(std::move(r));
+    }
+    if (HexFloat h; hex_float_syntax(text, &h)) {
+        // mant·2^exp2: the exponent is refused where its power alone passes the limit of bits.
+        if (h.exp2 > static_cast<long>(kMaxNumberBits) + 64 || h.exp2 < -static_cast<long>(kMaxNumberBits) - 64)
+            throw InputError(in_quotes(text) + " has an exponent too large to read exactly");
+        Q r(h.mant);
+        if (h.exp2 >= 0)
+            mpq_mul_2exp(r.get_mpq_t(), r.get_mpq_t(), static_cast<mp_bitcnt_t>(h.exp2));
+        else
+            mpq_div_2exp(r.get_mpq_t(), r.get_mpq_t(), static_cast<mp_bitcnt_t>(-h.exp2));
+        return sized(h.negative ? Q(-r) : r);
     }
     size_t i = 0;
     bool negative = false;
@@ -211,8 +262,8 @@ Q exact_from_double(double d) {
 
 namespace {
 // Whether text is a decimal as parse_exact reads one: [+-] digits [. digits] [e|E [+-] digits],
-// with at least one digit before the exponent. strtod reads more (hex floats, "inf", "nan",
-// leading spaces); a program's number is read one way only, so those are refused.
+// with at least one digit before the exponent. strtod reads more ("inf", "nan", leading spaces);
+// a program's number is read one way only, so those are refused. Hex floats are hex_float_syntax's.
 bool decimal_syntax(const std::string& t) {
     size_t i = 0, digits = 0;
     if (i < t.size() && (t[i] == '+' || t[i] == '-')) ++i;
@@ -236,18 +287,23 @@ Q parse_number(const std::string& text, Numbers numbers) {
     if (text.size() > kMaxNumberChars)
         throw InputError(in_quotes(text) + " is longer than " + std::to_string(kMaxNumberChars) +
                          " characters, the limit for one number");
-    if (!decimal_syntax(text))
-        throw InputError(in_quotes(text) + " is not a number (a decimal such as -1.5e-3, or a fraction p/q)");
+    HexFloat hex;
+    const bool is_hex = hex_float_syntax(text, &hex);
+    if (!is_hex && !decimal_syntax(text))
+        throw InputError(in_quotes(text) +
+                         " is not a number (a decimal such as -1.5e-3, a hex float such as 0x1.8p-3, or a fraction "
+                         "p/q)");
     const bool single = numbers == Numbers::Float32;
     const char* what = single ? "float32" : "double";
-    // strtof rounds the decimal once, as a float32 program's parser does (not through a double).
+    // strtof rounds the decimal (or the hex float) once, as a float32 program's parser does (not
+    // through a double); a hex float with more bits than the format holds is rounded likewise.
     const double d =
         single ? static_cast<double>(std::strtof(text.c_str(), nullptr)) : std::strtod(text.c_str(), nullptr);
     if (!std::isfinite(d))
         throw InputError(in_quotes(text) + " is beyond the " + what + " range (as a " + what +
                          " it overflows): give its exact value as a fraction, or a JSON string");
     // A nonzero decimal that is 0 in binary was never a number a program held.
-    if (d == 0 && text.find_first_of("123456789") < text.find_first_of("eE"))
+    if (d == 0 && (is_hex ? sgn(hex.mant) != 0 : text.find_first_of("123456789") < text.find_first_of("eE")))
         throw InputError(in_quotes(text) + " is 0 as a " + what +
                          " (it underflows): give its exact value as a fraction, or a JSON string");
     return exact_from_double(d);

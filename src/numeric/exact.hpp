@@ -58,7 +58,18 @@ Z over(const Q& q, const Z& den);
 // line), and cut after 40 characters.
 std::string in_quotes(const std::string& text);
 
-// Reads a number exactly as written: "-12", "0.1" (= 1/10), "1e-3", "2.5E+7", "3/7".
+// A C99 hexadecimal float as strtod reads it and printf's %a writes it: [+-] 0x|0X, hex digits
+// with at most one point (at least one digit), an optional binary exponent p|P [+-] digits (at
+// most 9). Its value is ±mant·2^exp2, filled in *out when given.
+struct HexFloat {
+    bool negative = false;
+    Z mant;
+    long exp2 = 0;
+};
+bool hex_float_syntax(const std::string& text, HexFloat* out = nullptr);
+
+// Reads a number exactly as written: "-12", "0.1" (= 1/10), "1e-3", "2.5E+7", "3/7", "0x1.8p-3"
+// (= 3/16).
 // Throws InputError (without location; callers add it) when the text is not such a number.
 Q parse_exact(const std::string& text);
 // The double's exact value (every finite double is a dyadic rational).
