@@ -251,10 +251,10 @@ bool judge(Context& cx, const Scene& sc, const Rules& R, const Judgement& j);
 bool judge_at_poses(Context& cx, const Scene& sc, const Rules& R, const Judgement& j) {
     const J &cl = j.claim, &pr = j.proof;
     cx.claim(j.kind == "verdict" || j.kind == "separating_plane" || j.kind == "witness_point" || j.kind == "distance" ||
-                 j.kind == "penetration_depth",
+                 j.kind == "penetration_depth" || j.kind == "signed_distance",
              j.wc +
-                 ": poses are on claims of kind verdict, separating_plane, witness_point, distance or "
-                 "penetration_depth");
+                 ": poses are on claims of kind verdict, separating_plane, witness_point, distance, "
+                 "penetration_depth or signed_distance");
     J bare;
     const std::array<std::optional<Pose>, 2> pose = claim_poses(cx, cl, j.wc, bare);
     const Scene posed = posed_scene(cx, sc, pose);
@@ -268,6 +268,55 @@ bool judge_at_poses(Context& cx, const Scene& sc, const Rules& R, const Judgemen
     check_claimed_verdict(cx, c, j.wc);
     const std::optional<Q> E = proved_depth(cx, posed, at(pr, "depth"), j.wp + ".depth", r1, r2);
     return verdict_right(c, !E ? "separated" : sgn(*E) == 0 ? "touching" : "overlapping");
+}
+
+// A distance proof {"squared", "P1", "P2"} (shape checked by the caller): p in P1(r1), q in
+// P2(r2), E = |q − p|², and when E > 0 no point of P1 beyond p along q − p nor of P2 before q.
+// Returns E, the exact squared distance.
+Q proved_distance_sq(Context& cx, const Scene& sc, const J& pr, const std::string& wp, const Q& r1, const Q& r2) {
+    const Q E = num(cx, at(pr, "squared"), wp + ".squared");
+    const V3 p = body_point(cx, sc, 0, r1, at(pr, "P1"), wp + ".P1"),
+             q = body_point(cx, sc, 1, r2, at(pr, "P2"), wp + ".P2");
+    cx.spend_ops(12, 2 * (vsize(p) + vsize(q)) + qsize(E));
+    const V3 u = sub(q, p);
+    cx.claim(dot(u, u) == E, wp + ".squared is |q − p|² of its closest points");
+    if (sgn(E) > 0) {
+        cx.claim(reach(cx, sc, 0, u, r1) == dot(u, p), wp + ": no point of P1 lies beyond p along q − p");
+        cx.claim(reach_min(cx, sc, 1, u, r2) == dot(u, q), wp + ": no point of P2 lies before q along q − p");
+    }
+    return E;
+}
+
+// A signed distance (CLAIMS.md): proved apart by a distance proof ({"distance": ...}, E > 0: s√E
+// with s = 1), or meeting by a depth proof ({"depth": ...}: touching, s = 0, or overlapping,
+// s = −1 and E the squared depth); then the claimed value, or bound, against s√E.
+bool judge_signed_distance(Context& cx, const Scene& sc, const Rules& R, const Judgement& j) {
+    const J &cl = j.claim, &pr = j.proof;
+    shape(cx, cl, j.wc, {"kind", "rho1", "rho2"}, {"value", "at_least", "below"});
+    const int given = cl.contains("value") + cl.contains("at_least") + cl.contains("below");
+    cx.claim(given == 1, j.wc + " has one of value, at_least and below");
+    const char* key = cl.contains("value") ? "value" : cl.contains("at_least") ? "at_least" : "below";
+    const Q r1 = positive(cx, cl, "rho1", j.wc), r2 = positive(cx, cl, "rho2", j.wc);
+    const Q c = num(cx, at(cl, key), j.wc + "." + key);
+    int s = 0;
+    Q E;
+    if (pr.contains("distance")) {
+        shape(cx, pr, j.wp, {"distance"});
+        shape(cx, at(pr, "distance"), j.wp + ".distance", {"squared", "P1", "P2"});
+        E = proved_distance_sq(cx, sc, at(pr, "distance"), j.wp + ".distance", r1, r2);
+        cx.claim(sgn(E) > 0, j.wp + ".distance proves the objects apart (squared > 0)");
+        s = 1;
+    } else {
+        shape(cx, pr, j.wp, {"depth"});
+        const std::optional<Q> D = proved_depth(cx, sc, at(pr, "depth"), j.wp + ".depth", r1, r2);
+        cx.claim(D.has_value(), j.wp + ".depth proves the objects meet");
+        E = *D;
+        s = sgn(E) == 0 ? 0 : -1;
+    }
+    cx.spend_ops(8, 2 * qsize(c) + qsize(E) + 2 * qsize(R.abs));
+    if (std::string(key) == "value") return R.close_signed(cx, c, s, E);
+    if (std::string(key) == "at_least") return sign_minus_sqrt(c - R.abs, s, E) <= 0;  // s√E >= c − abs
+    return sign_minus_sqrt(c + R.abs, s, E) > 0;                                       // s√E < c + abs
 }
 
 bool judge(Context& cx, const Scene& sc, const Rules& R, const Judgement& j) {
@@ -323,16 +372,7 @@ bool judge(Context& cx, const Scene& sc, const Rules& R, const Judgement& j) {
             shape(cx, pr, wp, {"squared", "P1", "P2"});
         const Q r1 = positive(cx, cl, "rho1", wc), r2 = positive(cx, cl, "rho2", wc);
         const Q c = num(cx, at(cl, "value"), wc + ".value");
-        const Q E = num(cx, at(pr, "squared"), wp + ".squared");
-        const V3 p = body_point(cx, sc, 0, r1, at(pr, "P1"), wp + ".P1"),
-                 q = body_point(cx, sc, 1, r2, at(pr, "P2"), wp + ".P2");
-        cx.spend_ops(12, 2 * (vsize(p) + vsize(q)) + qsize(E));
-        const V3 u = sub(q, p);
-        cx.claim(dot(u, u) == E, wp + ".squared is |q − p|² of its closest points");
-        if (sgn(E) > 0) {
-            cx.claim(reach(cx, sc, 0, u, r1) == dot(u, p), wp + ": no point of P1 lies beyond p along q − p");
-            cx.claim(reach_min(cx, sc, 1, u, r2) == dot(u, q), wp + ": no point of P2 lies before q along q − p");
-        }
+        const Q E = proved_distance_sq(cx, sc, pr, wp, r1, r2);
         bool right = R.close_sq(cx, c, E);
         if (closest) {
             const Closest cp = closest_points(cx, bodies, j, r1, r2);
@@ -350,6 +390,7 @@ bool judge(Context& cx, const Scene& sc, const Rules& R, const Judgement& j) {
         if (cl.contains("direction")) dir = nonzero_vector(cx, at(cl, "direction"), wc + ".direction");
         return judge_depth(cx, sc, R, pr, wp, r1, r2, c, dir);
     }
+    if (kind == "signed_distance") return judge_signed_distance(cx, sc, R, j);
     if (kind == "curve") return judge_curve(cx, R, cl, curve_window(cx, sc, pr, wp), wc, wp);
     if (kind == "switch_point") return judge_switch_point(cx, R, cl, curve_window(cx, sc, pr, wp), wc, wp);
     if (kind == "curve_point") {  // a line `curve RHO1 RHO2`: rho2 is f(rho1), exactly (tolerance 0)
@@ -361,7 +402,7 @@ bool judge(Context& cx, const Scene& sc, const Rules& R, const Judgement& j) {
         return sgn(f) > 0 && R.close(cx, r2, f);
     }
     cx.claim(false, wc + ".kind is verdict, growth_distance, separating_plane, witness_point, distance, "
-                         "penetration_depth, curve, switch_point or curve_point");
+                         "penetration_depth, signed_distance, curve, switch_point or curve_point");
     return false;
 }
 }  // namespace
@@ -374,7 +415,7 @@ void check_judgements(Context& cx, const J& c) {
     const J& js = at(c, "judgements");
     const size_t rights = judge_all(cx, js,
                                     {"verdict", "growth_distance", "separating_plane", "witness_point", "distance",
-                                     "penetration_depth", "curve", "switch_point", "curve_point"},
+                                     "penetration_depth", "signed_distance", "curve", "switch_point", "curve_point"},
                                     [&](const Judgement& j) { return judge(cx, sc, R, j); });
     // What the file proves, in the line the checker prints: the judgements and their tolerance.
     cx.summary = "; judgements: " + judged(rights, js.size(), R);

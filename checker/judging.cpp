@@ -36,6 +36,11 @@ bool Rules::within_above(Context& cx, const Q& x, const Q& E, int apart) const {
     const Q m = apart * abs;  // √x <= k√E + m: x <= k²E + m² + 2km√E
     return sign_minus_sqrt(x - k * k * E - m * m, 2 * k * m, E) <= 0;
 }
+bool Rules::close_signed(Context& cx, const Q& c, int s, const Q& E) const {
+    cx.spend_ops(8, 2 * qsize(c) + qsize(E) + 2 * qsize(tol) + 2 * qsize(abs));
+    // c − abs − tol√E <= s√E <= c + abs + tol√E
+    return sign_minus_sqrt(c - abs, s + tol, E) <= 0 && sign_minus_sqrt(c + abs, s - tol, E) >= 0;
+}
 bool Rules::within_abs(Context& cx, const Q& x, const Q& N) const {
     cx.spend_ops(6, qsize(x) + qsize(N) + 2 * qsize(abs));
     return sign_minus_sqrt(x, abs, N) <= 0;
@@ -129,8 +134,8 @@ void beyond(Context& cx, const V3& n, const V3& x, const Q& h, const Q& abs, con
 }
 
 void check_claimed_verdict(Context& cx, const std::string& c, const std::string& wc) {
-    cx.claim(c == "separated" || c == "touching" || c == "overlapping" || c == "intersecting",
-             wc + ".verdict is separated, touching, overlapping or intersecting");
+    cx.claim(c == "separated" || c == "touching" || c == "overlapping" || c == "intersecting" || c == "not_overlapping",
+             wc + ".verdict is separated, touching, overlapping, intersecting or not_overlapping");
 }
 
 bool judge_separating_plane(Context& cx, const Bodies& B, const Rules& R, const Judgement& j) {
@@ -178,13 +183,15 @@ void check_no_answer(Context& cx, const Judgement& j) {
     shape(cx, j.proof, j.wp, {"no_answer"});
     cx.claim(at(j.proof, "no_answer").is_string(), j.wp + ".no_answer is a string");
     const std::string f = at(j.proof, "no_answer").get<std::string>();
-    static const std::map<std::string, std::set<std::string>> answers = {{"growth_distance", {"value"}},
-                                                                         {"curve_point", {"rho2"}},
-                                                                         {"switch_point", {"rho1", "rho2"}},
-                                                                         {"separating_plane", {"normal", "offset"}},
-                                                                         {"witness_point", {"point"}},
-                                                                         {"distance", {"value", "closest"}},
-                                                                         {"penetration_depth", {"value", "direction"}}};
+    static const std::map<std::string, std::set<std::string>> answers = {
+        {"growth_distance", {"value"}},
+        {"curve_point", {"rho2"}},
+        {"switch_point", {"rho1", "rho2"}},
+        {"separating_plane", {"normal", "offset"}},
+        {"witness_point", {"point"}},
+        {"distance", {"value", "closest"}},
+        {"penetration_depth", {"value", "direction"}},
+        {"signed_distance", {"value", "at_least", "below"}}};
     const auto k = answers.find(j.kind);
     cx.claim(k != answers.end() && k->second.count(f) == 1,
              j.wp + ".no_answer names a field where a " + j.kind + " claim answers");
@@ -198,8 +205,11 @@ void check_no_answer(Context& cx, const Judgement& j) {
         {"separating_plane", {"kind", "rho1", "rho2", "normal", "offset", "pose1", "pose2"}},
         {"witness_point", {"kind", "rho1", "rho2", "point", "pose1", "pose2"}},
         {"distance", {"kind", "rho1", "rho2", "value", "closest", "pose1", "pose2"}},
-        {"penetration_depth", {"kind", "rho1", "rho2", "parts", "value", "direction", "pose1", "pose2"}}};
-    const std::set<std::string>& known = fields.at(j.kind);
+        {"penetration_depth", {"kind", "rho1", "rho2", "parts", "value", "direction", "pose1", "pose2"}},
+        {"signed_distance", {"kind", "rho1", "rho2", "value", "at_least", "below", "pose1", "pose2"}}};
+    const auto kf = fields.find(j.kind);
+    cx.claim(kf != fields.end(), j.wc + ".kind is a kind with answers");
+    const std::set<std::string>& known = kf->second;
     cx.claim(j.claim.is_object(), j.wc + " is an object");
     for (const auto& [key, value] : j.claim.items())
         cx.claim(known.count(key) == 1, j.wc + "." + key + " is a field of a " + j.kind + " claim");

@@ -30,6 +30,8 @@ struct Rules {
     bool within_above(Context& cx, const Q& x, const Q& E, int apart = 1) const;
     // x <= abs·√N
     bool within_abs(Context& cx, const Q& x, const Q& N) const;
+    // a signed length c against the exact s·√E (s = 1, 0 or −1): |c − s√E| <= abs + tol·√E
+    bool close_signed(Context& cx, const Q& c, int s, const Q& E) const;
 };
 // The sign of a − k·√E (E >= 0), exactly.
 int sign_minus_sqrt(const Q& a, const Q& k, const Q& E);
@@ -133,7 +135,7 @@ size_t judge_all(Context& cx, const J& js, const std::set<std::string>& kinds, J
 void check_claimed_verdict(Context& cx, const std::string& c, const std::string& wc);
 // Whether the claimed verdict c is right when the exact one is v.
 inline bool verdict_right(const std::string& c, const std::string& v) {
-    return c == "intersecting" ? v != "separated" : c == v;
+    return c == "intersecting" ? v != "separated" : c == "not_overlapping" ? v != "overlapping" : c == v;
 }
 
 // The claim kinds judged alike for both formats. separating_plane: the claim's plane separates

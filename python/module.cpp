@@ -434,7 +434,7 @@ using namespace pybind11::literals;
 std::optional<scalecert::ClaimedVerdict> claimed_verdict(const std::string& v) {
     using scalecert::ClaimedVerdict;
     for (ClaimedVerdict c : {ClaimedVerdict::Separated, ClaimedVerdict::Touching, ClaimedVerdict::Overlapping,
-                             ClaimedVerdict::Intersecting})
+                             ClaimedVerdict::Intersecting, ClaimedVerdict::NotOverlapping})
         if (v == scalecert::name(c)) return c;
     return std::nullopt;
 }

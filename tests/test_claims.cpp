@@ -356,6 +356,57 @@ BOOST_AUTO_TEST_CASE(malformed_claims_get_one_line) {
                    .find("> 0") != std::string::npos);
 }
 
+BOOST_AUTO_TEST_CASE(signed_distances_and_not_overlapping_by_hand) {
+    // CLAIMS.md, "signed_distance", on the stacked cubes: P1(ρ1) = [1 − ρ1, 1 + ρ1]^3 reaches z =
+    // 1 + ρ1, P2(ρ2) = [1 − ρ2, 1 + ρ2]^2 x [4 − ρ2, 4 + ρ2] starts at 4 − ρ2. At (1, 1/2) they are
+    // 3/2 apart; at (1, 2) they touch; at (2, 2) they overlap by 1 along z (along x and y by 4).
+    Claims k("stacked_cubes");
+    auto sd = [&](const std::string& at, const std::string& rest, const std::string& tol = "0") {
+        return k.right(R"({"kind": "signed_distance", )" + at + ", " + rest + "}", tol);
+    };
+    const std::string apart = R"("rho1": 1, "rho2": "1/2")", touch = R"("rho1": 1, "rho2": 2)",
+                      deep = R"("rho1": 2, "rho2": 2)";
+    BOOST_TEST(sd(apart, R"("value": 1.5)"));
+    BOOST_TEST(!sd(apart, R"("value": -1.5)"));  // the sign is the state
+    BOOST_TEST(sd(deep, R"("value": -1)"));
+    BOOST_TEST(!sd(deep, R"("value": 1)"));
+    BOOST_TEST(sd(touch, R"("value": 0)"));
+    BOOST_TEST(!sd(touch, R"("value": "1/1000")"));
+    // Within a relative tolerance of 1/10: −1.1 is right at (2, 2), −1.11 is not.
+    BOOST_TEST(sd(deep, R"("value": -1.1)", "1/10"));
+    BOOST_TEST(!sd(deep, R"("value": -1.11)", "1/10"));
+    // Bounds: at least 3/2 (right: equal), at least 1.6 (wrong); below 3/2 (wrong: not strictly),
+    // below 1.6 (right); overlapping by 1: at least −1 right, below −1 wrong, below 0 right.
+    BOOST_TEST(sd(apart, R"("at_least": 1.5)"));
+    BOOST_TEST(!sd(apart, R"("at_least": 1.6)"));
+    BOOST_TEST(!sd(apart, R"("below": 1.5)"));
+    BOOST_TEST(sd(apart, R"("below": 1.6)"));
+    BOOST_TEST(sd(deep, R"("at_least": -1)"));
+    BOOST_TEST(!sd(deep, R"("below": -1)"));
+    BOOST_TEST(sd(deep, R"("below": 0)"));
+    BOOST_TEST(sd(touch, R"("at_least": 0)"));
+    BOOST_TEST(!sd(touch, R"("below": 0)"));
+    // At a pose lifting P2 by 1 the pair at (1, 1/2) is 5/2 apart.
+    BOOST_TEST(sd(apart, R"("value": 2.5, "pose2": [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, 1]])"));
+    // The report: the state and the exact square, signed display.
+    const nlohmann::json r = k.one(R"({"kind": "signed_distance", "rho1": 2, "rho2": 2, "below": 0})");
+    BOOST_TEST(r["exact_verdict"] == "overlapping");
+    BOOST_TEST(r["exact_squared"] == "1");
+    BOOST_TEST(r["exact_double"].get<double>() == -1.0);
+    BOOST_TEST(r["bound"] == "below");
+    // One of value, at_least and below; not on objects made of parts.
+    BOOST_CHECK_THROW(k.one(R"({"kind": "signed_distance", "rho1": 1, "rho2": 1, "value": 1, "below": 2})"),
+                      InputError);
+    BOOST_CHECK_THROW(k.one(R"({"kind": "signed_distance", "rho1": 1, "rho2": 1})"), InputError);
+    // not_overlapping (separated or touching): right at (1, 1/2) and (1, 2), wrong at (2, 2).
+    auto no = [&](const std::string& at) {
+        return k.right(R"({"kind": "verdict", )" + at + R"(, "verdict": "not_overlapping"})");
+    };
+    BOOST_TEST(no(apart));
+    BOOST_TEST(no(touch));
+    BOOST_TEST(!no(deep));
+}
+
 BOOST_AUTO_TEST_CASE(outputs_that_are_no_answer) {
     // CLAIMS.md, "Outputs that are no answer", by hand on the stacked cubes: P1(1) = [0, 2]^3 and
     // P2(1/2) = [0, 2]^2 x [7/2, 9/2] are 3/2 apart; at (2, 2) they overlap by 1 along z.

@@ -179,10 +179,11 @@ struct ClaimReport {
 // One claim of a floating-point program, typed (the JSON kinds of CLAIMS.md, minus curves):
 // the fields its kind uses. A double's claim is its exact value: exact(x).
 enum class ClaimKind { Verdict, SeparatingPlane, WitnessPoint, Distance, PenetrationDepth };
-// A claimed verdict: one of the exact three, or intersecting (overlapping or touching: what a
-// collision test that answers yes or no claims).
-enum class ClaimedVerdict { Separated, Touching, Overlapping, Intersecting };
-const char* name(ClaimedVerdict v);  // name(Verdict)'s words, and "intersecting"
+// A claimed verdict: one of the exact three, intersecting (overlapping or touching: what a
+// collision test that answers yes or no claims), or not overlapping (separated or touching: what
+// an engine that reports no contact at margin 0 claims).
+enum class ClaimedVerdict { Separated, Touching, Overlapping, Intersecting, NotOverlapping };
+const char* name(ClaimedVerdict v);  // name(Verdict)'s words, "intersecting" and "not_overlapping"
 struct Claim {
     ClaimKind kind = ClaimKind::Distance;
     Rational rho1 = 1, rho2 = 1;

@@ -18,8 +18,19 @@
 
 namespace scalecert::internal {
 
-enum class ClaimType { Verdict, Curve, CurvePoint, SwitchPoint, Growth, Plane, Witness, Distance, Depth };
-const char* type_name(ClaimType t);  // the JSON kind: "verdict", "curve", ..., "penetration_depth"
+enum class ClaimType {
+    Verdict,
+    Curve,
+    CurvePoint,
+    SwitchPoint,
+    Growth,
+    Plane,
+    Witness,
+    Distance,
+    Depth,
+    SignedDistance
+};
+const char* type_name(ClaimType t);  // the JSON kind: "verdict", "curve", ..., "penetration_depth", "signed_distance"
 
 // A claimed verdict: the three exact ones, or intersecting (= not separated): the public type.
 using Claimed = scalecert::ClaimedVerdict;
@@ -42,12 +53,15 @@ struct ClaimedCurve {
 // One claim, every number exact: the fields its type uses.
 struct TypedClaim {
     ClaimType type = ClaimType::Verdict;
-    Q rho1 = 1, rho2 = 1;                         // all but Growth and Curve
-    Claimed verdict = Claimed::Separated;         // Verdict
-    Vec3q normal{};                               // Plane (nonzero)
-    std::optional<Q> offset;                      // Plane
-    Vec3q point{};                                // Witness
-    Q value = 0;                                  // Growth, Distance, Depth
+    Q rho1 = 1, rho2 = 1;                  // all but Growth and Curve
+    Claimed verdict = Claimed::Separated;  // Verdict
+    Vec3q normal{};                        // Plane (nonzero)
+    std::optional<Q> offset;               // Plane
+    Vec3q point{};                         // Witness
+    Q value = 0;                           // Growth, Distance, Depth, SignedDistance
+    // SignedDistance: the value claimed is the signed distance, or a bound on it: at least the
+    // value, or below it (what "no contact within the margin" and "a contact" say).
+    enum class Bound { Value, AtLeast, Below } bound = Bound::Value;
     std::optional<std::array<Vec3q, 2>> closest;  // Distance: on P1, on P2
     std::optional<Vec3q> direction;               // Depth (nonzero)
     // Depth on objects made of parts: the part pair it speaks of (a contact), [P1 part, P2 part].
@@ -142,12 +156,19 @@ struct DepthJudged {
     Vec3z exact_direction{};
     Q along;  // the squared depth along the claimed direction
 };
+// The exact signed distance σ·√E: the distance when apart (σ = 1), 0 touching, minus the
+// penetration depth when overlapping (σ = −1).
+struct SignedDistanceJudged {
+    Verdict exact = Verdict::Separated;
+    Q exact_squared;  // D² apart, P² overlapping, 0 touching
+    int sign() const { return exact == Verdict::Separated ? 1 : exact == Verdict::Touching ? 0 : -1; }
+};
 struct Judged {
     bool right = false;
     int part1 = -1, part2 = -1;
     // Nothing for a claim with no answer.
     std::variant<std::monostate, VerdictJudged, GrowthJudged, CurvePointJudged, SwitchPointJudged, CurveJudged,
-                 PlaneJudged, WitnessJudged, DistanceJudged, DepthJudged>
+                 PlaneJudged, WitnessJudged, DistanceJudged, DepthJudged, SignedDistanceJudged>
         of;
     template <class T>
     T& set() {
@@ -161,6 +182,7 @@ struct Judged {
     std::optional<Q> exact_squared() const {
         if (const auto* d = get<DistanceJudged>()) return d->exact_squared;
         if (const auto* d = get<DepthJudged>()) return d->exact_squared;
+        if (const auto* d = get<SignedDistanceJudged>()) return d->exact_squared;
         return std::nullopt;
     }
     // The exact verdict a verdict, a witness or a separated depth states.
@@ -168,6 +190,7 @@ struct Judged {
         if (const auto* d = get<VerdictJudged>()) return d->exact;
         if (const auto* d = get<WitnessJudged>()) return d->exact_verdict;
         if (const auto* d = get<DepthJudged>()) return d->separated;
+        if (const auto* d = get<SignedDistanceJudged>()) return d->exact;
         return std::nullopt;
     }
 };
@@ -192,6 +215,9 @@ struct Tolerance {
     bool within_above(const Q& x, const Q& E, int apart = 1) const;
     // x ≤ abs·√N (a plane's side: x the excess of a body past it along a normal of squared length N).
     bool within_abs(const Q& x, const Q& N) const;
+    // A claimed signed distance c against the exact s·√E (s = 1, 0 or −1):
+    // |c − s√E| ≤ abs + rel·√E.
+    bool close_signed(const Q& c, int s, const Q& E) const;
 };
 // The sign of a − k·√E (E ≥ 0), exactly.
 int sign_minus_sqrt(const Q& a, const Q& k, const Q& E);
@@ -309,6 +335,8 @@ void describe(const TypedClaim& c, const WitnessJudged& d, const Judged& g, cons
 void describe(const TypedClaim& c, const DistanceJudged& d, const Judged& g, const ExactScene* parts, Json& o,
               std::string& text);
 void describe(const TypedClaim& c, const DepthJudged& d, const Judged& g, const ExactScene* parts, Json& o,
+              std::string& text);
+void describe(const TypedClaim& c, const SignedDistanceJudged& d, const Judged& g, const ExactScene* parts, Json& o,
               std::string& text);
 
 // The same for the line format's claims ('RHO1 RHO2 VERDICT', 'curve RHO1 RHO2', 'growth RHO'; w:

@@ -66,7 +66,7 @@ class ClaimReader {
             fail("kind", "unknown kind " + in_quotes(kind) +
                              " (verdict, curve, curve_point, switch_point, growth_distance, separating_plane, "
                              "witness_point, distance, "
-                             "penetration_depth)");
+                             "penetration_depth, signed_distance)");
         TypedClaim c;
         c.type = *t;
         switch (c.type) {
@@ -77,8 +77,8 @@ class ClaimReader {
             const std::string v = str(claim, "verdict");
             const std::optional<Claimed> cv = claimed_of(v);
             if (!cv)
-                fail("verdict",
-                     "unknown verdict " + in_quotes(v) + " (separated, touching, overlapping, intersecting)");
+                fail("verdict", "unknown verdict " + in_quotes(v) +
+                                    " (separated, touching, overlapping, intersecting, not_overlapping)");
             c.verdict = *cv;
             break;
         }
@@ -143,6 +143,19 @@ class ClaimReader {
                 if (answer_point(*dir, "direction", c, c.direction.emplace()) && is_zero(*c.direction))
                     set_no_answer(c, "direction", "the zero vector");
             break;
+        case ClaimType::SignedDistance: {
+            only(claim, {"kind", "rho1", "rho2", "value", "at_least", "below", "pose1", "pose2"});
+            pair_at(claim, c);
+            poses(claim, c);
+            const JNode* v = claim.find("value");
+            const JNode* lo = claim.find("at_least");
+            const JNode* hi = claim.find("below");
+            if ((v != nullptr) + (lo != nullptr) + (hi != nullptr) != 1)
+                fail("", "give one of \"value\", \"at_least\" and \"below\" (the signed distance, or a bound)");
+            c.bound = v ? TypedClaim::Bound::Value : lo ? TypedClaim::Bound::AtLeast : TypedClaim::Bound::Below;
+            answer(v ? *v : lo ? *lo : *hi, v ? "value" : lo ? "at_least" : "below", c, c.value);
+            break;
+        }
         }
         return c;
     }
@@ -207,7 +220,7 @@ class ClaimReader {
     static std::optional<ClaimType> type_of(const std::string& kind) {
         for (ClaimType t :
              {ClaimType::Verdict, ClaimType::Curve, ClaimType::CurvePoint, ClaimType::SwitchPoint, ClaimType::Growth,
-              ClaimType::Plane, ClaimType::Witness, ClaimType::Distance, ClaimType::Depth})
+              ClaimType::Plane, ClaimType::Witness, ClaimType::Distance, ClaimType::Depth, ClaimType::SignedDistance})
             if (kind == type_name(t)) return t;
         return std::nullopt;
     }
@@ -451,7 +464,7 @@ TypedClaim read_line(const std::vector<std::string>& w, Numbers numbers, bool pa
         const std::optional<Claimed> v = claimed_of(w[2]);
         if (!v)
             throw InputError(where + ": unknown verdict " + in_quotes(w[2]) +
-                             " (separated, touching, overlapping, intersecting)");
+                             " (separated, touching, overlapping, intersecting, not_overlapping)");
         c.verdict = *v;
     } else {
         throw InputError(where + ": expected 'RHO1 RHO2 VERDICT', 'curve RHO1 RHO2' or 'growth RHO'");

@@ -25,6 +25,7 @@ const char* type_name(ClaimType t) {
     case ClaimType::Witness: return "witness_point";
     case ClaimType::Distance: return "distance";
     case ClaimType::Depth: return "penetration_depth";
+    case ClaimType::SignedDistance: return "signed_distance";
     }
     return "";
 }
@@ -34,13 +35,15 @@ const char* claimed_name(Claimed v) {
     case Claimed::Separated: return verdict_name(Verdict::Separated);
     case Claimed::Touching: return verdict_name(Verdict::Touching);
     case Claimed::Overlapping: return verdict_name(Verdict::Overlapping);
-    case Claimed::Intersecting: return "intersecting";  // the one claimed verdict that is not an exact one
+    case Claimed::Intersecting: return "intersecting";  // the claimed verdicts that are not exact ones
+    case Claimed::NotOverlapping: return "not_overlapping";
     }
     return "";
 }
 
 std::optional<Claimed> claimed_of(const std::string& name) {
-    for (Claimed v : {Claimed::Separated, Claimed::Touching, Claimed::Overlapping, Claimed::Intersecting})
+    for (Claimed v :
+         {Claimed::Separated, Claimed::Touching, Claimed::Overlapping, Claimed::Intersecting, Claimed::NotOverlapping})
         if (name == claimed_name(v)) return v;
     return std::nullopt;
 }
@@ -51,6 +54,7 @@ bool verdict_matches(Claimed claimed, Verdict exact) {
     case Claimed::Touching: return exact == Verdict::Touching;
     case Claimed::Overlapping: return exact == Verdict::Overlapping;
     case Claimed::Intersecting: return exact != Verdict::Separated;
+    case Claimed::NotOverlapping: return exact != Verdict::Overlapping;
     }
     return false;
 }
@@ -85,6 +89,11 @@ bool Tolerance::within_above(const Q& x, const Q& E, int apart) const {
 }
 
 bool Tolerance::within_abs(const Q& x, const Q& N) const { return sign_minus_sqrt(x, abs, N) <= 0; }
+
+bool Tolerance::close_signed(const Q& c, int s, const Q& E) const {
+    // c − abs − rel√E ≤ s√E ≤ c + abs + rel√E, each side one sign_minus_sqrt.
+    return sign_minus_sqrt(c - abs, s + rel, E) <= 0 && sign_minus_sqrt(c + abs, s - rel, E) >= 0;
+}
 
 namespace {
 std::string ex(const Q& q) { return to_exact_string(q); }
@@ -162,6 +171,11 @@ Json exact_fields_json(const TypedClaim& c) {
         j["value"] = ex(c.value);
         if (c.direction) j["direction"] = ex3(*c.direction);
         break;
+    case ClaimType::SignedDistance:
+        j[c.bound == TypedClaim::Bound::Value     ? "value"
+          : c.bound == TypedClaim::Bound::AtLeast ? "at_least"
+                                                  : "below"] = ex(c.value);
+        break;
     default: break;
     }
     return j;
@@ -228,7 +242,7 @@ Judged ConvexRules::judge(const TypedClaim& c, Proof* proof) {
     std::optional<PosedPoints> at;  // the points moved by the claim's poses, for its judgement
     if (c.posed()) {
         if (c.type != ClaimType::Verdict && c.type != ClaimType::Plane && c.type != ClaimType::Witness &&
-            c.type != ClaimType::Distance && c.type != ClaimType::Depth)
+            c.type != ClaimType::Distance && c.type != ClaimType::Depth && c.type != ClaimType::SignedDistance)
             throw std::logic_error("certify-fp: a pose on a claim of the curve");
         at.emplace(impl_->models.points(), c.pose);
     }
@@ -247,6 +261,7 @@ Judged ConvexRules::judge(const TypedClaim& c, Proof* proof) {
     case ClaimType::Witness: impl_->witness(c, g, proof); break;
     case ClaimType::Distance: impl_->distance(c, g, proof); break;
     case ClaimType::Depth: impl_->depth(c, g, proof); break;
+    case ClaimType::SignedDistance: impl_->signed_distance(c, g, proof); break;
     }
     return g;
 }

@@ -160,6 +160,7 @@ struct ConvexRules::Impl {
     void witness(const TypedClaim& c, Judged& g, Proof* proof);
     void distance(const TypedClaim& c, Judged& g, Proof* proof);
     void depth(const TypedClaim& c, Judged& g, Proof* proof);
+    void signed_distance(const TypedClaim& c, Judged& g, Proof* proof);
 };
 
 }  // namespace scalecert::internal

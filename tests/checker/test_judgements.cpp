@@ -113,6 +113,54 @@ BOOST_AUTO_TEST_CASE(judgements_certificates_are_valid_and_tampering_is_rejected
     mutate_and_report(t, "judgements (tetrahedron and box)", false, true);
 }
 
+BOOST_AUTO_TEST_CASE(signed_distances_are_checked_and_tampering_is_rejected) {
+    // By hand (the stacked cubes above): 3/2 apart at (1, 1/2), touching at (1, 2), overlapping by
+    // 1 at (2, 2); with P2 lifted by 1, 5/2 apart at (1, 1/2). The tetrahedron and box:
+    // separated at (1, 1), touching at (3/2, 12/7), overlapping at (2, 2).
+    const fs::path claims = tmpdir() / "sd_claims.json", cert = tmpdir() / "sd.json";
+    {
+        std::ofstream(claims) << R"({"format": "scalecert-claims-1", "claims": [
+      {"kind": "signed_distance", "rho1": 1, "rho2": 0.5, "value": 1.5},
+      {"kind": "signed_distance", "rho1": 2, "rho2": 2, "value": -1},
+      {"kind": "signed_distance", "rho1": 2, "rho2": 2, "value": 1},
+      {"kind": "signed_distance", "rho1": 1, "rho2": 2, "value": 0},
+      {"kind": "signed_distance", "rho1": 1, "rho2": 0.5, "at_least": 1.5},
+      {"kind": "signed_distance", "rho1": 1, "rho2": 0.5, "below": 1.5},
+      {"kind": "signed_distance", "rho1": 2, "rho2": 2, "below": 0},
+      {"kind": "signed_distance", "rho1": 1, "rho2": 0.5, "value": 2.5, "pose2": [[1,0,0,0],[0,1,0,0],[0,0,1,1]]},
+      {"kind": "verdict", "rho1": 1, "rho2": 2, "verdict": "not_overlapping"},
+      {"kind": "verdict", "rho1": 2, "rho2": 2, "verdict": "not_overlapping"}]})";
+    }
+    const std::string cubes = std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/stacked_cubes.json";
+    BOOST_TEST_REQUIRE(engine("certify-fp " + cubes + " " + claims.string() + " --certificate " + cert.string()) == 1);
+    BOOST_TEST_REQUIRE(check_file(cert) == 0);
+    const OJ j = load(cert);
+    const std::vector<bool> right = {true, true, false, true, true, false, true, true, true, false};
+    BOOST_TEST_REQUIRE(j["judgements"].size() == right.size());
+    for (size_t k = 0; k < right.size(); ++k) BOOST_TEST(j["judgements"][k]["right"] == right[k], k);
+    // Apart: a distance proof of squared distance 9/4; overlapping: a depth proof of squared depth 1.
+    BOOST_TEST(j["judgements"][0]["proof"]["distance"]["squared"] == "9/4");
+    BOOST_TEST(j["judgements"][1]["proof"]["depth"]["squared"] == "1");
+    mutate_and_report(j, "signed distances (stacked cubes)", false, true);
+
+    const fs::path tclaims = tmpdir() / "sd_tetra.json", tcert = tmpdir() / "sd_tetra_cert.json";
+    {
+        std::ofstream(tclaims) << R"({"format": "scalecert-claims-1", "claims": [
+      {"kind": "signed_distance", "rho1": 1, "rho2": 1, "below": 0},
+      {"kind": "signed_distance", "rho1": "3/2", "rho2": "12/7", "value": 0},
+      {"kind": "signed_distance", "rho1": 2, "rho2": 2, "at_least": 0}]})";
+    }
+    const std::string tetra = std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/tetra_box_switch.json";
+    BOOST_TEST_REQUIRE(engine("certify-fp " + tetra + " " + tclaims.string() + " --certificate " + tcert.string()) ==
+                       1);
+    BOOST_TEST_REQUIRE(check_file(tcert) == 0);
+    const OJ t = load(tcert);
+    BOOST_TEST(t["judgements"][0]["right"] == false);
+    BOOST_TEST(t["judgements"][1]["right"] == true);
+    BOOST_TEST(t["judgements"][2]["right"] == false);
+    mutate_and_report(t, "signed distances (tetrahedron and box)", false, true);
+}
+
 BOOST_AUTO_TEST_CASE(a_switch_point_claim_is_right_when_any_exact_one_matches) {
     // The Fig. 5 scene's switch points (README): (23/19, 45/19) VE and (29/13, 18/13) EV. The
     // claim (7/4, 45/19, VE) is nearer in rho1 to the second (|7/4 − 29/13| = 11/52 against

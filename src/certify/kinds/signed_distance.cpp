@@ -1,0 +1,63 @@
+// Signed distances (CLAIMS.md, "Claims": `signed_distance`): the distance when apart, minus the
+// penetration depth when overlapping; a value, or a bound on it (at least, below). The rule on two
+// convex objects, and the report.
+#include "certify/report.hpp"
+#include "certify/rules_impl.hpp"
+
+namespace scalecert::internal {
+
+using namespace report_parts;
+
+namespace {
+const char* bound_key(TypedClaim::Bound b) {
+    return b == TypedClaim::Bound::Value ? "value" : b == TypedClaim::Bound::AtLeast ? "at_least" : "below";
+}
+}  // namespace
+
+// The rule on the exact s·√E: a value within the tolerance (Tolerance::close_signed); at least m
+// when s√E ≥ m − abs; below m when s√E < m + abs. Every comparison squares with signs.
+bool signed_distance_right(const TypedClaim& c, int s, const Q& E, const Tolerance& tol) {
+    switch (c.bound) {
+    case TypedClaim::Bound::Value: return tol.close_signed(c.value, s, E);
+    case TypedClaim::Bound::AtLeast: return sign_minus_sqrt(c.value - tol.abs, s, E) <= 0;
+    case TypedClaim::Bound::Below: return sign_minus_sqrt(c.value + tol.abs, s, E) > 0;
+    }
+    return false;
+}
+
+void ConvexRules::Impl::signed_distance(const TypedClaim& c, Judged& g, Proof* proof) {
+    // The measured depth decides the state: apart, its proved distance; meeting, its depth.
+    auto& d = g.set<SignedDistanceJudged>();
+    const MeasuredDepth md = depth_of(c.rho1, c.rho2);
+    d.exact = md.state;
+    d.exact_squared = md.state == Verdict::Separated ? md.distance.squared
+                      : md.state == Verdict::Touching ? Q(0)
+                                                      : md.depth->squared;
+    if (proof)
+        proof->proof = md.state == Verdict::Separated
+                           ? Json{{"distance", distance_proof(nullptr, md.distance, c.rho1, c.rho2)}}
+                           : Json{{"depth", depth_proof(nullptr, md, c.rho1, c.rho2)}};
+    g.right = signed_distance_right(c, d.sign(), d.exact_squared, tol);
+}
+
+void describe(const TypedClaim& c, const SignedDistanceJudged& d, const Judged&, const ExactScene*, Json& o,
+              std::string& text) {
+    put_rhos(o, c);
+    o["bound"] = bound_key(c.bound);
+    put_exact(o, "claimed", c.value);
+    o["exact_verdict"] = verdict_name(d.exact);
+    put_exact(o, "exact_squared", d.exact_squared);
+    // s·√E as the nearest double (display only).
+    const double e = sqrt_minus_rn(d.exact_squared, Q(0));
+    o["exact_double"] = d.sign() < 0 ? -e : e;
+    const std::string claimed = c.bound == TypedClaim::Bound::Value     ? "claimed " + num(c.value)
+                                : c.bound == TypedClaim::Bound::AtLeast ? "claimed at least " + num(c.value)
+                                                                        : "claimed below " + num(c.value);
+    text = "signed distance at " + at(c) + ": " + claimed + ", exact " +
+           (d.sign() == 0 ? std::string("0 (touching)")
+                          : "~" + dbl(d.sign() < 0 ? -e : e, 17) + " (" + verdict_name(d.exact) +
+                                (d.sign() > 0 ? ": the distance" : ": minus the depth") + ", squared " +
+                                num(d.exact_squared) + ")");
+}
+
+}  // namespace scalecert::internal
