@@ -91,6 +91,7 @@ Command add_certify_fp(CLI::App& app);
 Command add_golden(CLI::App& app);
 Command add_region(CLI::App& app);  // objects made of parts: where they meet
 Command add_audit(CLI::App& app);
+Command add_mujoco(CLI::App& app);  // MuJoCo's collisions at a model's states
 Command add_report(CLI::App& app);  // the audit report page (tools/report.py)
 
 }  // namespace scalecert::cli

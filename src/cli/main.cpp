@@ -58,6 +58,7 @@ int main(int argc, char** argv) {
                                           cli::add_region(app),   cli::add_report(app)};
 #ifdef SCALECERT_WITH_BASELINES  // the floating-point baselines' commands
     commands.push_back(cli::add_audit(app));
+    commands.push_back(cli::add_mujoco(app));
     commands.push_back(cli::add_grid(app));
 #endif
     std::string names;

@@ -30,7 +30,7 @@ void ConvexRules::Impl::signed_distance(const TypedClaim& c, Judged& g, Proof* p
     auto& d = g.set<SignedDistanceJudged>();
     const MeasuredDepth md = depth_of(c.rho1, c.rho2);
     d.exact = md.state;
-    d.exact_squared = md.state == Verdict::Separated ? md.distance.squared
+    d.exact_squared = md.state == Verdict::Separated  ? md.distance.squared
                       : md.state == Verdict::Touching ? Q(0)
                                                       : md.depth->squared;
     if (proof)

@@ -1,0 +1,430 @@
+// The MuJoCo front end's judge (mujoco_judge.hpp): the pairs MuJoCo's pipeline considers, each
+// judged at every state by the claim rules (signed distances and depth directions at the geoms'
+// poses) on a scene of the two geoms as MuJoCo held them.
+#include "baselines/mujoco_judge.hpp"
+
+#include "campaign/campaign.hpp"
+#include "certify/certificate.hpp"
+#include "geometry/measures.hpp"
+#include "io/files.hpp"
+#include "session/engine.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <set>
+
+namespace scalecert::internal::mj {
+
+namespace {
+constexpr int kDisableFilterParent = 1 << 9;  // mjDSBL_FILTERPARENT
+constexpr int kDisableContact = 1 << 4;       // mjDSBL_CONTACT
+constexpr int kEnableOverride = 1 << 0;       // mjENBL_OVERRIDE
+
+bool judged_type(int type) { return type == kBox || type == kMesh; }
+
+std::string shortest(double d) {
+    char buf[64];
+    return std::string(buf, std::to_chars(buf, buf + sizeof buf, d).ptr);
+}
+std::string shortest(float f) {
+    char buf[64];
+    return std::string(buf, std::to_chars(buf, buf + sizeof buf, f).ptr);
+}
+// A number written so that a JSON reader reading doubles (the default) gets d exactly.
+Json number(double d) { return std::isfinite(d) ? Json(d) : Json(nullptr); }
+
+std::string geom_label(const ModelInfo& m, int g) {
+    const std::string& n = m.geoms[static_cast<size_t>(g)].name;
+    return n.empty() ? "geom " + std::to_string(g) : "'" + n + "'";
+}
+}  // namespace
+
+std::vector<Considered> considered_pairs(const ModelInfo& m) {
+    std::map<std::pair<int, int>, Considered> out;
+    if (m.disableflags & kDisableContact) return {};
+    const bool override_margin = (m.enableflags & kEnableOverride) != 0;
+    auto add = [&](int a, int b, double margin, double gap, bool expl) {
+        if (a > b) std::swap(a, b);
+        auto [it, fresh] = out.try_emplace({a, b}, Considered{a, b, margin, gap, expl});
+        if (!fresh) {
+            it->second.margin = std::max(it->second.margin, margin);
+            it->second.gap = std::max(it->second.gap, gap);
+            it->second.explicit_pair = it->second.explicit_pair || expl;
+        }
+    };
+    const std::set<int> excluded(m.excludes.begin(), m.excludes.end());
+    const int n = static_cast<int>(m.geoms.size());
+    for (int a = 0; a < n; ++a)
+        for (int b = a + 1; b < n; ++b) {
+            const Geom &ga = m.geoms[static_cast<size_t>(a)], &gb = m.geoms[static_cast<size_t>(b)];
+            if (!(ga.contype & gb.conaffinity) && !(gb.contype & ga.conaffinity)) continue;
+            const int w1 = m.body_weld[static_cast<size_t>(ga.body)], w2 = m.body_weld[static_cast<size_t>(gb.body)];
+            if (w1 == w2) continue;  // welded together (static geoms of the world among them)
+            const int p1 = m.body_weld[static_cast<size_t>(m.body_parent[static_cast<size_t>(w1)])],
+                      p2 = m.body_weld[static_cast<size_t>(m.body_parent[static_cast<size_t>(w2)])];
+            if (!(m.disableflags & kDisableFilterParent) && w1 != 0 && w2 != 0 && (w1 == p2 || w2 == p1)) continue;
+            const int b1 = std::min(ga.body, gb.body), b2 = std::max(ga.body, gb.body);
+            if (excluded.count(((b1 + 1) << 16) | (b2 + 1)) || excluded.count(((b2 + 1) << 16) | (b1 + 1))) continue;
+            add(a, b, override_margin ? m.o_margin : std::max(ga.margin, gb.margin), std::max(ga.gap, gb.gap), false);
+        }
+    for (const Pair& p : m.pairs) add(p.g1, p.g2, override_margin ? m.o_margin : p.margin, p.gap, true);
+    std::vector<Considered> v;
+    for (auto& [k, c] : out) v.push_back(c);
+    return v;
+}
+
+namespace {
+// The geom's points in its own frame, exactly as MuJoCo held them.
+PolyInput geom_points(const Geom& g) {
+    PolyInput in;
+    if (g.type == kBox) {
+        for (int sx : {-1, 1})
+            for (int sy : {-1, 1})
+                for (int sz : {-1, 1})
+                    in.points.push_back({exact_from_double(sx * g.size[0]), exact_from_double(sy * g.size[1]),
+                                         exact_from_double(sz * g.size[2])});
+    } else {
+        for (size_t k = 0; k + 2 < g.vertices.size(); k += 3)
+            in.points.push_back({exact_from_double(g.vertices[k]), exact_from_double(g.vertices[k + 1]),
+                                 exact_from_double(g.vertices[k + 2])});
+    }
+    return in;
+}
+Json geom_vertices_json(const Geom& g) {
+    Json v = Json::array();
+    if (g.type == kBox) {
+        for (int sx : {-1, 1})
+            for (int sy : {-1, 1})
+                for (int sz : {-1, 1}) v.push_back(Json::array({sx * g.size[0], sy * g.size[1], sz * g.size[2]}));
+    } else {
+        for (size_t k = 0; k + 2 < g.vertices.size(); k += 3)
+            v.push_back(Json::array({Json::parse(shortest(g.vertices[k])), Json::parse(shortest(g.vertices[k + 1])),
+                                     Json::parse(shortest(g.vertices[k + 2]))}));
+    }
+    return v;
+}
+Pose pose_of(const State& s, int g) {
+    Pose p;
+    for (size_t r = 0; r < 3; ++r) {
+        for (size_t k = 0; k < 3; ++k) p[r][k] = exact_from_double(s.xmat[9 * static_cast<size_t>(g) + 3 * r + k]);
+        p[r][3] = exact_from_double(s.xpos[3 * static_cast<size_t>(g) + r]);
+    }
+    return p;
+}
+Json pose_json(const State& s, int g) {
+    Json m = Json::array();
+    for (size_t r = 0; r < 3; ++r)
+        m.push_back(
+            Json::array({s.xmat[9 * static_cast<size_t>(g) + 3 * r], s.xmat[9 * static_cast<size_t>(g) + 3 * r + 1],
+                         s.xmat[9 * static_cast<size_t>(g) + 3 * r + 2], s.xpos[3 * static_cast<size_t>(g) + r]}));
+    return m;
+}
+bool finite_state(const State& s, int g) {
+    for (size_t k = 0; k < 9; ++k)
+        if (!std::isfinite(s.xmat[9 * static_cast<size_t>(g) + k])) return false;
+    for (size_t k = 0; k < 3; ++k)
+        if (!std::isfinite(s.xpos[3 * static_cast<size_t>(g) + k])) return false;
+    return true;
+}
+
+// One ordered geom pair's engine: the scene of the two geoms in their own frames, and its rules.
+struct PairEngine {
+    std::unique_ptr<SceneEngine> engine;
+    std::unique_ptr<ClaimRules> rules;
+    std::string why_not;  // why the pair cannot be judged ("" when it can)
+};
+
+// A rational r >= 0 as a decimal, exactly, where its denominator is 2^a 5^b (every dyadic number:
+// what doubles and floats make); else as p/q.
+std::string exact_decimal(const Q& r) {
+    Z d = r.get_den();
+    unsigned long twos = 0, fives = 0;
+    while (mpz_divisible_ui_p(d.get_mpz_t(), 2)) d /= 2, ++twos;
+    while (mpz_divisible_ui_p(d.get_mpz_t(), 5)) d /= 5, ++fives;
+    if (d != 1) return to_exact_string(r);
+    const unsigned long k = std::max(twos, fives);  // r·10^k is an integer
+    Z p10;
+    mpz_ui_pow_ui(p10.get_mpz_t(), 10, k);
+    const Z n = r.get_num() * p10 / r.get_den();
+    std::string digits = n.get_str(10);
+    if (k == 0) return digits;
+    if (digits.size() <= k) digits = std::string(k - digits.size() + 1, '0') + digits;
+    digits.insert(digits.size() - k, ".");
+    return digits;
+}
+
+// s·√E as a decimal string: exact where E is a square of a rational (a finite decimal where the
+// root's denominator allows, else p/q), else 17 significant digits.
+std::string signed_text(int s, const Q& E) {
+    if (s == 0) return "0";
+    Z n = E.get_num(), d = E.get_den(), rn, rd;
+    if (mpz_perfect_square_p(n.get_mpz_t()) && mpz_perfect_square_p(d.get_mpz_t())) {
+        mpz_sqrt(rn.get_mpz_t(), n.get_mpz_t());
+        mpz_sqrt(rd.get_mpz_t(), d.get_mpz_t());
+        Q r(rn, rd);
+        r.canonicalize();
+        return (s < 0 ? "-" : "") + exact_decimal(r);
+    }
+    const double v = sqrt_minus_rn(E, Q(0));
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.17g", s < 0 ? -v : v);
+    return buf;
+}
+double signed_double(int s, const Q& E) {
+    const double v = sqrt_minus_rn(E, Q(0));
+    return s < 0 ? -v : v;
+}
+}  // namespace
+
+MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>& states,
+                          const std::vector<std::string>& labels, const MujocoOptions& opt) {
+    const ModelInfo& m = model.info();
+    const std::vector<Considered> pairs = considered_pairs(m);
+    MujocoResult res;
+    std::map<std::pair<int, int>, PairEngine> engines;
+    auto engine_for = [&](int a, int b) -> PairEngine& {
+        PairEngine& e = engines[{a, b}];
+        if (e.engine || !e.why_not.empty()) return e;
+        auto sc = std::make_shared<ExactScene>();
+        sc->P[0] = geom_points(m.geoms[static_cast<size_t>(a)]);
+        sc->P[1] = geom_points(m.geoms[static_cast<size_t>(b)]);
+        sc->lo[0] = sc->hi[0] = sc->lo[1] = sc->hi[1] = 1;
+        try {
+            finish_scene(*sc, geom_label(m, a) + " and " + geom_label(m, b));
+            e.engine =
+                open_engine(std::shared_ptr<const ExactScene>(sc), geom_label(m, a) + " and " + geom_label(m, b));
+            e.engine->check();
+            e.rules = e.engine->rules(opt.tolerance);
+        } catch (const InputError& x) {
+            e.engine.reset();
+            e.why_not = x.what();
+        }
+        return e;
+    };
+    if (!opt.failures.empty()) make_output_dir(opt.failures);
+
+    Json frames = Json::array(), unjudged = Json::array();
+    std::map<std::pair<int, int>, std::string> unjudged_why;
+    long judgements = 0, contacts_total = 0, contacts_unjudged = 0, wrong_verdicts = 0;
+    double worst_dist = 0;
+    Json wrong_list = Json::array();
+    std::string text;
+    std::set<std::pair<int, int>> considered_set;
+    for (const Considered& c : pairs) considered_set.insert({c.g1, c.g2});
+    long contacts_outside = 0;
+
+    for (size_t f = 0; f < states.size(); ++f) {
+        const State s = model.forward(states[f]);
+        // The contacts of each pair, by their own order of the geoms.
+        std::map<std::pair<int, int>, std::vector<const Contact*>> of;
+        for (const Contact& c : s.contacts) {
+            ++contacts_total;
+            of[{std::min(c.g1, c.g2), std::max(c.g1, c.g2)}].push_back(&c);
+            if (!considered_set.count({std::min(c.g1, c.g2), std::max(c.g1, c.g2)})) ++contacts_outside;
+        }
+        Json fp = Json::array();
+        for (const Considered& p : pairs) {
+            const Geom &ga = m.geoms[static_cast<size_t>(p.g1)], &gb = m.geoms[static_cast<size_t>(p.g2)];
+            const auto cs = of.find({p.g1, p.g2});
+            const size_t ncon = cs == of.end() ? 0 : cs->second.size();
+            std::string why;
+            if (!judged_type(ga.type) || !judged_type(gb.type)) {
+                const Geom& g = judged_type(ga.type) ? gb : ga;
+                why = std::string(geom_type_name(g.type)) +
+                      (g.type == kSphere || g.type == kCapsule ? ": objects with a radius are not judged yet"
+                       : g.type == kPlane                      ? ": planes (half-spaces) are not judged yet"
+                                                               : ": not a polyhedron (judged: box and mesh geoms)");
+            }
+            // The deepest contact speaks for the pair (a box's manifold holds a point per corner);
+            // its geoms' order is the claim's: P1 = its geom1, its normal from geom1 to geom2.
+            const Contact* deepest = nullptr;
+            if (ncon)
+                for (const Contact* c : cs->second)
+                    if (!deepest || c->dist < deepest->dist || std::isnan(c->dist)) deepest = c;
+            const int a = deepest ? deepest->g1 : p.g1, b = deepest ? deepest->g2 : p.g2;
+            PairEngine* pe = nullptr;
+            if (why.empty()) {
+                pe = &engine_for(a, b);
+                if (!pe->why_not.empty()) why = pe->why_not;
+            }
+            if (why.empty() && (!finite_state(s, a) || !finite_state(s, b)))
+                why = "the geoms' poses are not finite at this state";
+            if (!why.empty()) {
+                contacts_unjudged += static_cast<long>(ncon);
+                if (unjudged_why.emplace(std::make_pair(p.g1, p.g2), why).second)
+                    unjudged.push_back(Json{{"geom1", p.g1},
+                                            {"geom2", p.g2},
+                                            {"names", Json::array({ga.name, gb.name})},
+                                            {"types", Json::array({geom_type_name(ga.type), geom_type_name(gb.type)})},
+                                            {"why", why}});
+                continue;
+            }
+            // The claims: the verdict within the margin, and for a contact its dist and (within
+            // the bodies) its normal.
+            TypedClaim base;
+            base.type = ClaimType::SignedDistance;
+            base.pose = {pose_of(s, a), pose_of(s, b)};
+            TypedClaim verdict = base;
+            verdict.bound = deepest ? TypedClaim::Bound::Below : TypedClaim::Bound::AtLeast;
+            verdict.value = exact_from_double(p.margin);
+            const Judged vj = judge_claim(*pe->rules, verdict, 0, opt.model, nullptr);
+            const SignedDistanceJudged& ex = *vj.get<SignedDistanceJudged>();
+            ++judgements;
+            Json pj{
+                {"geom1", a},
+                {"geom2", b},
+                {"names", Json::array({m.geoms[static_cast<size_t>(a)].name, m.geoms[static_cast<size_t>(b)].name})},
+                {"margin", p.margin},
+                {"contacts", ncon},
+                {"verdict", Json{{"said", deepest ? "contact" : "no contact"},
+                                 {"exact", verdict_name(ex.exact)},
+                                 {"right", vj.right}}},
+                {"signed_distance", Json{{"exact", signed_text(ex.sign(), ex.exact_squared)}}}};
+            put_exact(pj["signed_distance"], "exact_squared", ex.exact_squared);
+            bool all_right = vj.right;
+            std::vector<TypedClaim> claims{verdict};
+            if (!vj.right) {
+                ++wrong_verdicts;
+                wrong_list.push_back(Json{{"frame", f},
+                                          {"geom1", a},
+                                          {"geom2", b},
+                                          {"said", deepest ? "contact" : "no contact"},
+                                          {"exact", verdict_name(ex.exact)},
+                                          {"signed_distance_m", signed_double(ex.sign(), ex.exact_squared)},
+                                          {"margin", p.margin}});
+                text += "WRONG  " + labels[f] + ": " + geom_label(m, a) + " and " + geom_label(m, b) + ": " +
+                        (deepest ? "a contact" : "no contact") + " within the margin " + shortest(p.margin) +
+                        ", but the signed distance is ~" + shortest(signed_double(ex.sign(), ex.exact_squared)) +
+                        " m (" + verdict_name(ex.exact) + ")\n";
+            }
+            if (deepest) {
+                TypedClaim dist = base;
+                dist.bound = TypedClaim::Bound::Value;
+                if (std::isfinite(deepest->dist))
+                    dist.value = exact_from_double(deepest->dist);
+                else
+                    dist.no_answer = "value", dist.no_answer_reason = "not a number";
+                const Judged dj = judge_claim(*pe->rules, dist, 1, opt.model, nullptr);
+                ++judgements;
+                const double err = std::isfinite(deepest->dist)
+                                       ? std::fabs(deepest->dist - signed_double(ex.sign(), ex.exact_squared))
+                                       : INFINITY;
+                worst_dist = std::max(worst_dist, err);
+                pj["dist"] = Json{{"said", number(deepest->dist)},
+                                  {"exact", signed_text(ex.sign(), ex.exact_squared)},
+                                  {"error_m", number(err)},
+                                  {"right", dj.right}};
+                all_right = all_right && dj.right;
+                claims.push_back(dist);
+                if (!dj.right)
+                    text += "WRONG  " + labels[f] + ": " + geom_label(m, a) + " and " + geom_label(m, b) + ": dist " +
+                            shortest(deepest->dist) + ", exact ~" +
+                            shortest(signed_double(ex.sign(), ex.exact_squared)) + " m\n";
+                const Vec3q n{exact_from_double(deepest->frame[0]), exact_from_double(deepest->frame[1]),
+                              exact_from_double(deepest->frame[2])};
+                Json said =
+                    Json::array({number(deepest->frame[0]), number(deepest->frame[1]), number(deepest->frame[2])});
+                if (deepest->dist < 0 && ex.sign() < 0 && !(sgn(n[0]) == 0 && sgn(n[1]) == 0 && sgn(n[2]) == 0)) {
+                    // The normal of a penetrating contact: moving geom2 by the depth along it
+                    // separates the geoms (CLAIMS.md, penetration_depth's direction).
+                    TypedClaim d = base;
+                    d.type = ClaimType::Depth;
+                    d.value = exact_from_double(-deepest->dist);
+                    d.direction = n;
+                    const Judged nj = judge_claim(*pe->rules, d, 2, opt.model, nullptr);
+                    const DepthJudged& dd = *nj.get<DepthJudged>();
+                    const bool right = dd.direction_right.value_or(false);
+                    ++judgements;
+                    pj["normal"] = Json{{"said", said}, {"right", right}};
+                    all_right = all_right && right;
+                    claims.push_back(d);
+                    if (!right)
+                        text += "WRONG  " + labels[f] + ": " + geom_label(m, a) + " and " + geom_label(m, b) +
+                                ": the normal does not attain the depth\n";
+                } else {
+                    pj["normal"] = Json{{"said", said}};  // judged for penetrating contacts only
+                }
+                pj["pos"] = Json{
+                    {"said", Json::array({number(deepest->pos[0]), number(deepest->pos[1]), number(deepest->pos[2])})}};
+            }
+            if (!all_right) {
+                res.wrong += 1;
+                if (!opt.failures.empty()) {
+                    // A reproducer: the two geoms as MuJoCo held them (a mesh's float32 vertices),
+                    // and the claims at their poses, which certify-fp replays.
+                    const std::string stem = opt.failures + "/frame" + std::to_string(f) + "_g" + std::to_string(a) +
+                                             "_g" + std::to_string(b);
+                    Json scene;
+                    for (int i = 0; i < 2; ++i) {
+                        const Geom& g = m.geoms[static_cast<size_t>(i ? b : a)];
+                        Json o{{"vertices", geom_vertices_json(g)}};
+                        if (g.type == kMesh) o["numbers"] = "float32";
+                        scene[i ? "P2" : "P1"] = std::move(o);
+                    }
+                    Json cl = Json::array();
+                    for (const TypedClaim& c : claims) {
+                        Json j{{"kind", type_name(c.type)}, {"rho1", 1}, {"rho2", 1}};
+                        if (c.type == ClaimType::SignedDistance) {
+                            const char* key = c.bound == TypedClaim::Bound::Value     ? "value"
+                                              : c.bound == TypedClaim::Bound::AtLeast ? "at_least"
+                                                                                      : "below";
+                            j[key] = c.bound == TypedClaim::Bound::Value ? number(deepest->dist) : Json(p.margin);
+                        } else {
+                            j["value"] = -deepest->dist;
+                            j["direction"] = Json::array({deepest->frame[0], deepest->frame[1], deepest->frame[2]});
+                        }
+                        j["pose1"] = pose_json(s, a);
+                        j["pose2"] = pose_json(s, b);
+                        cl.push_back(std::move(j));
+                    }
+                    Json about{{"model", opt.model}, {"state", labels[f]}, {"geom1", a}, {"geom2", b}};
+                    Json q = Json::array();
+                    for (double x : states[f]) q.push_back(x);
+                    about["qpos"] = std::move(q);
+                    write_files_atomically({{stem + ".scene.json", dump(scene)},
+                                            {stem + ".claims.json",
+                                             dump(Json{{"format", "scalecert-claims-1"}, {"claims", std::move(cl)}})},
+                                            {stem + ".about.json", dump(about)}});
+                }
+            }
+            fp.push_back(std::move(pj));
+        }
+        Json fr{{"frame", f}, {"state", labels[f]}, {"pairs", std::move(fp)}};
+        if (!s.warnings.empty()) fr["mujoco_warnings"] = s.warnings;
+        frames.push_back(std::move(fr));
+    }
+    Json summary{{"states", states.size()},
+                 {"pairs_considered", pairs.size()},
+                 {"pairs_unjudged", unjudged.size()},
+                 {"judgements", judgements},
+                 {"wrong_pairs", res.wrong},
+                 {"contacts", contacts_total},
+                 {"contacts_unjudged", contacts_unjudged},
+                 {"contacts_outside_considered_pairs", contacts_outside},
+                 {"worst_dist_error_m", worst_dist},
+                 {"wrong_verdicts", std::move(wrong_list)}};
+    res.report = Json{{"format", "scalecert-mujoco-1"},
+                      {"model", opt.model},
+                      {"tolerance", to_exact_string(opt.tolerance.rel)},
+                      {"abs_tolerance", to_exact_string(opt.tolerance.abs)},
+                      {"frames", std::move(frames)},
+                      {"unjudged", std::move(unjudged)},
+                      {"summary", std::move(summary)}};
+    const Json& sm = res.report["summary"];
+    text += "states: " + std::to_string(states.size()) + ", pairs considered: " + std::to_string(pairs.size()) +
+            " (unjudged: " + std::to_string(sm["pairs_unjudged"].get<long>()) +
+            "), judgements: " + std::to_string(judgements) + ", wrong: " + std::to_string(res.wrong) +
+            " pair states (" + std::to_string(wrong_verdicts) + " verdicts), worst dist error " + shortest(worst_dist) +
+            " m\n";
+    for (const Json& u : res.report["unjudged"])
+        text += "unjudged: " + geom_label(m, u["geom1"].get<int>()) + " and " + geom_label(m, u["geom2"].get<int>()) +
+                ": " + u["why"].get<std::string>() + "\n";
+    res.text = std::move(text);
+    return res;
+}
+
+}  // namespace scalecert::internal::mj

@@ -1,0 +1,40 @@
+// scalecert mujoco: MuJoCo's collision results at a model's states judged against the exact
+// answer for the geometry MuJoCo held (CLAIMS.md, "Engines' conventions"): every geom pair its
+// collision pipeline considers, as signed-distance claims at the geoms' poses.
+#pragma once
+#include "baselines/mujoco_held.hpp"
+#include "certify/claim.hpp"
+#include "io/json.hpp"
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace scalecert::internal::mj {
+
+// A geom pair MuJoCo 2.2.2's pipeline considers: by contype and conaffinity, the weld and parent
+// filters and <exclude>, or an explicit <pair>; margin and gap as it takes them (the larger of the
+// geoms', a <pair>'s own, or the override's margin). A pair both ways keeps the larger margin.
+struct Considered {
+    int g1 = 0, g2 = 0;  // g1 < g2
+    double margin = 0, gap = 0;
+    bool explicit_pair = false;
+};
+std::vector<Considered> considered_pairs(const ModelInfo& m);
+
+struct MujocoOptions {
+    Tolerance tolerance;
+    std::string model;     // the model's path, for the report and reproducers
+    std::string failures;  // a folder for reproducers of wrong judgements ("" for none)
+};
+// The states' judgements: the report as JSON, and the count of wrong judgements. `states`: each
+// a qpos of nq numbers, `labels` their source ("qpos0", "key 2", "FILE line 7").
+struct MujocoResult {
+    Json report;
+    long wrong = 0;
+    std::string text;  // the wrong judgements and the summary, a line each
+};
+MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>& states,
+                          const std::vector<std::string>& labels, const MujocoOptions& opt);
+
+}  // namespace scalecert::internal::mj

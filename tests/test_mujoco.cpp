@@ -1,0 +1,171 @@
+// scalecert mujoco (src/baselines/mujoco_judge.cpp) on models whose answers are worked out by hand
+// in the comments: which geom pairs MuJoCo 2.2.2's pipeline considers, the exact signed distances
+// of boxes at states, each judgement recomputed here from what MuJoCo said, the reproducers
+// replayed by certify-fp, and bad input refused in one line.
+#include <boost/test/unit_test.hpp>
+
+#include "baselines/mujoco_judge.hpp"
+#include "files.hpp"
+#include "support.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <sys/stat.h>
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+namespace fs = std::filesystem;
+using namespace scalecert::internal;
+using test::input_error;
+
+namespace {
+const std::string kData = std::string(SCALECERT_SOURCE_DIR) + "/tests/data/mujoco/";
+fs::path workdir() {
+    static const fs::path d = test::scratch_dir("mujoco");
+    return d;
+}
+struct Run {
+    int status;
+    std::string out, err;
+};
+Run run(const std::string& args) {
+    const fs::path o = workdir() / "stdout", e = workdir() / "stderr";
+    const std::string cmd = std::string(SCALECERT_BIN) + " " + args + " >" + o.string() + " 2>" + e.string();
+    const int st = std::system(cmd.c_str());
+    return {WIFEXITED(st) ? WEXITSTATUS(st) : -1, test::slurp(o), test::slurp(e)};
+}
+fs::path write(const std::string& name, const std::string& text) {
+    const fs::path p = workdir() / name;
+    std::ofstream(p, std::ios::binary) << text;
+    return p;
+}
+}  // namespace
+
+BOOST_AUTO_TEST_CASE(the_pairs_mujoco_considers) {
+    // filters.xml: bodies world, a (free), b (hinged to a), c (hinged to b), d (free); geoms w1, w2
+    // (world), a1, a2 (a), b1 (b), c1 (c), d1 (d: contype = conaffinity = 2, margin 0.01), d2 (d:
+    // contype = conaffinity = 0), numbered 0 to 7. Considered, by MuJoCo 2.2.2's rules: each world
+    // geom with a1, a2, b1, c1 (the parent filter spares the world); not w1-w2, a1-a2, d1-d2 (one
+    // weld body); not a-b, b-c (parent and child); not a-c (<exclude>); nothing with d1 or d2 by
+    // contype and conaffinity (1 & 2 = 0, 0); and the explicit <pair> d2-w2, margin 0.25.
+    const auto m = mj::load_model(kData + "filters.xml");
+    std::vector<std::array<int, 2>> got;
+    std::vector<double> margins;
+    for (const mj::Considered& c : mj::considered_pairs(m->info())) {
+        got.push_back({c.g1, c.g2});
+        margins.push_back(c.margin);
+    }
+    const std::vector<std::array<int, 2>> want = {{0, 2}, {0, 3}, {0, 4}, {0, 5}, {1, 2},
+                                                  {1, 3}, {1, 4}, {1, 5}, {1, 7}};
+    BOOST_TEST(got == want, [&] {
+        std::string t;
+        for (auto p : got) t += std::to_string(p[0]) + "-" + std::to_string(p[1]) + " ";
+        return t;
+    }());
+    BOOST_TEST_REQUIRE(margins.size() == 9u);
+    BOOST_TEST(margins[8] == 0.25);
+    BOOST_TEST(margins[0] == 0.0);
+    // MuJoCo 2.2.2 takes the larger of two geoms' margins: d1's 0.01 is its own (w-d1 is not
+    // considered, so its margin shows nowhere); boxes.xml has none.
+    BOOST_TEST(m->info().geoms[6].margin == 0.01);
+}
+
+BOOST_AUTO_TEST_CASE(boxes_at_states_judged_by_hand) {
+    // boxes.xml: the floor [-1, 1]^2 x [-1, 0]; the cube of half-extent 1/2 about (x, y, z) with
+    // the identity quaternion, so MuJoCo holds exact frames: its bottom at z − 1/2. boxes.qpos:
+    // z = 2: 3/2 apart; z = 1/2: touching (S = 0); (1/4, 0, 3/8): 1/8 deep (horizontally the cube,
+    // [-1/4, 3/4] x [-1/2, 1/2], would move 7/4 or 3/2 to come free), the normal +z from floor to cube.
+    const Run r = run("mujoco " + kData + "boxes.xml --qpos " + kData + "boxes.qpos --json");
+    BOOST_TEST_REQUIRE((r.status == 0 || r.status == 1), r.err);
+    const auto j = nlohmann::json::parse(r.out);
+    BOOST_TEST_REQUIRE(j["frames"].size() == 3u);
+    const char* exact[] = {"1.5", "0", "-0.125"};  // exact decimals
+    const char* state[] = {"separated", "touching", "overlapping"};
+    const double value[] = {1.5, 0, -0.125};
+    long wrong_pairs = 0;
+    for (size_t f = 0; f < 3; ++f) {
+        const nlohmann::json* p = nullptr;
+        for (const auto& q : j["frames"][f]["pairs"])
+            if (q["names"] == nlohmann::json::array({"floor", "cube"})) p = &q;
+        BOOST_TEST_REQUIRE(p != nullptr);
+        BOOST_TEST((*p)["signed_distance"]["exact"] == exact[f], f);
+        BOOST_TEST((*p)["verdict"]["exact"] == state[f], f);
+        // The judgements recomputed from what MuJoCo said, at tolerance 0: a contact claims S < 0
+        // (the margin), none claims S >= 0; its dist claims S itself.
+        const bool contact = (*p)["contacts"].get<int>() > 0;
+        BOOST_TEST((*p)["verdict"]["right"] == (contact ? value[f] < 0 : value[f] >= 0), f);
+        bool right = contact ? value[f] < 0 : value[f] >= 0;
+        if (contact) {
+            const double said = (*p)["dist"]["said"].get<double>();
+            BOOST_TEST((*p)["dist"]["right"] == (said == value[f]), f);
+            right = right && said == value[f];
+            if (said < 0 && value[f] < 0) {
+                // The normal +z attains the depth; any other does not.
+                const auto n = (*p)["normal"]["said"];
+                const bool up = n[0] == 0.0 && n[1] == 0.0 && n[2] == 1.0;
+                BOOST_TEST((*p)["normal"]["right"] == up, f);
+                right = right && up;
+            }
+        }
+        wrong_pairs += !right;
+    }
+    // The other judged pairs (floor-tet, cube-tet) are far apart at every state: right.
+    BOOST_TEST(j["summary"]["wrong_pairs"] == wrong_pairs);
+    BOOST_TEST(r.status == (wrong_pairs > 0 ? 1 : 0));
+    // The sphere is counted and named, never judged.
+    BOOST_TEST(j["summary"]["pairs_unjudged"] == 3);
+    BOOST_TEST(j["unjudged"][0]["why"] == "sphere: objects with a radius are not judged yet");
+    // Within --abs-tolerance 1e-9 a contact at S = 0 is right (0 < 0 + 1e-9), as is a dist within it.
+    const Run t = run("mujoco " + kData + "boxes.xml --qpos " + kData + "boxes.qpos --json --abs-tolerance 1e-9");
+    const auto k = nlohmann::json::parse(t.out);
+    for (const auto& q : k["frames"][1]["pairs"])
+        if (q["names"] == nlohmann::json::array({"floor", "cube"})) BOOST_TEST(q["verdict"]["right"] == true);
+}
+
+BOOST_AUTO_TEST_CASE(reproducers_replay_in_certify_fp) {
+    // Every wrong pair state leaves a scene and claims that certify-fp judges alike: exit 1, and
+    // as many wrong claims as the report has wrong judgements in that pair state.
+    const fs::path dir = workdir() / "failures";
+    fs::remove_all(dir);
+    const Run r = run("mujoco " + kData + "boxes.xml --qpos " + kData + "boxes.qpos --json --failures " + dir.string());
+    const auto j = nlohmann::json::parse(r.out);
+    long files = 0;
+    for (const auto& e : fs::directory_iterator(dir)) {
+        const std::string n = e.path().filename().string();
+        if (n.size() < 11 || n.substr(n.size() - 11) != ".scene.json") continue;
+        ++files;
+        const std::string stem = e.path().string().substr(0, e.path().string().size() - 11);
+        const Run c = run("certify-fp " + stem + ".scene.json " + stem + ".claims.json");
+        BOOST_TEST(c.status == 1, n << c.err);
+        const auto about = nlohmann::json::parse(test::slurp(stem + ".about.json"));
+        BOOST_TEST(about["qpos"].size() == 21u);
+    }
+    BOOST_TEST(files == j["summary"]["wrong_pairs"].get<long>());
+}
+
+BOOST_AUTO_TEST_CASE(bad_input_is_one_line) {
+    auto bad = [](const std::string& args, const std::string& needle) {
+        const Run r = run("mujoco " + args);
+        BOOST_TEST(r.status == 2, args);
+        BOOST_TEST(r.out.empty(), args);
+        BOOST_TEST(std::count(r.err.begin(), r.err.end(), '\n') == 1, args << ": " << r.err);
+        BOOST_TEST(r.err.find(needle) != std::string::npos, args << ": " << r.err);
+    };
+    const std::string boxes = kData + "boxes.xml";
+    bad((workdir() / "none.xml").string(), "cannot open");
+    bad(write("broken.xml", "<mujoco><worldbody><geom type=\"box\"").string(), "MuJoCo:");
+    bad(boxes + " --qpos " + write("short.qpos", "0 0 2 1 0 0 0\n").string(),
+        "line 1: 7 numbers; the model's qpos has 21");
+    std::string nan_line = "nan";
+    for (int k = 0; k < 20; ++k) nan_line += " 0";
+    bad(boxes + " --qpos " + write("nan.qpos", nan_line + "\n").string(), "line 1: 'nan' is not a number");
+    bad(boxes + " --key 3", "--key 3: the model has 0 keyframes");
+    bad(boxes + " --tolerance -1", "--tolerance must be >= 0");
+    const fs::path fifo = workdir() / "model.fifo";
+    fs::remove(fifo);
+    BOOST_TEST_REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
+    bad(fifo.string(), "not a model file");
+}
