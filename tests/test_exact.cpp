@@ -17,9 +17,8 @@ BOOST_AUTO_TEST_CASE(decimal_and_fraction_text_is_read_exactly) {
     BOOST_TEST(parse_exact("+.5") == Q(1, 2));
     BOOST_TEST(parse_exact("12.") == Q(12));
     BOOST_TEST(parse_exact("123456789012345678901234567890") == Q(Z("123456789012345678901234567890")));
-    for (const char* bad :
-         {"",      "abc", "1/0",       "1e",   "--1",   "1.2.3",     "nan", "inf",  "1/-2",    "0x",
-          "0x.p1", " 1",  "1e9999999", "0x1p", "0x1p+", "0x1.8.1p0", "0xg", "x1p0", "0x1p1e3", "0x1p1234567890"})
+    for (const char* bad : {"", "abc", "1/0", "1e", "--1", "1.2.3", "nan", "inf", "1/-2", "0x", "0x.p1", " 1",
+                            "1e9999999", "0x1p", "0x1p+", "0x1.8.1p0", "0xg", "x1p0", "0x1p1e3"})
         BOOST_CHECK_THROW(parse_exact(bad), InputError);
 }
 
@@ -49,8 +48,14 @@ BOOST_AUTO_TEST_CASE(hex_floats_are_read_exactly_and_as_strtod_reads_them) {
     BOOST_CHECK_THROW(parse_number("0x1p-150", Numbers::Float32), InputError);
     BOOST_CHECK_THROW(parse_number("0x1p1024", Numbers::Double), InputError);
     BOOST_TEST(parse_number("0x0p0", Numbers::Double) == Q(0));
-    // Past the limit of bits for one number, as a decimal's exponent is.
+    // Past the limit of bits for one number, as a decimal's exponent is; a 10-digit exponent too.
     BOOST_CHECK_THROW(parse_exact("0x1p20000"), InputError);
+    BOOST_CHECK_THROW(parse_exact("0x1p1234567890"), InputError);
+    BOOST_CHECK_THROW(parse_number("0x1p1234567890", Numbers::Double), InputError);  // overflows
+    // Zeros that say nothing: trailing ones of the fraction, leading ones of the exponent.
+    BOOST_TEST(parse_exact("0x1." + std::string(5000, '0') + "p0") == Q(1));
+    BOOST_TEST(parse_exact("0x1p0000000001") == Q(2));
+    BOOST_TEST(parse_number("0x1p0000000001", Numbers::Double) == Q(2));
 }
 
 BOOST_AUTO_TEST_CASE(exact_strings_are_lowest_terms) {

@@ -4,7 +4,7 @@
 // replayed by certify-fp, and bad input refused in one line.
 #include <boost/test/unit_test.hpp>
 
-#include "baselines/mujoco_judge.hpp"
+#include "engines/mujoco_judge.hpp"
 #include "files.hpp"
 #include "support.hpp"
 
@@ -50,7 +50,9 @@ BOOST_AUTO_TEST_CASE(the_pairs_mujoco_considers) {
     // contype = conaffinity = 0), numbered 0 to 7. Considered, by MuJoCo 2.2.2's rules: each world
     // geom with a1, a2, b1, c1 (the parent filter spares the world); not w1-w2, a1-a2, d1-d2 (one
     // weld body); not a-b, b-c (parent and child); not a-c (<exclude>); nothing with d1 or d2 by
-    // contype and conaffinity (1 & 2 = 0, 0); and the explicit <pair> d2-w2, margin 0.25.
+    // contype and conaffinity (1 & 2 = 0, 0); and the explicit <pair> d2-w2, margin 0.25. a1 has a
+    // margin of 1/2, so w2-a1 has it (the larger of the two geoms'), but the <pair> w1-a1 replaces
+    // the filters' pair with its own margin, 1/8 (MuJoCo 2.2.2 collides it once, at that margin).
     const auto m = mj::load_model(kData + "filters.xml");
     std::vector<std::array<int, 2>> got;
     std::vector<double> margins;
@@ -67,10 +69,42 @@ BOOST_AUTO_TEST_CASE(the_pairs_mujoco_considers) {
     }());
     BOOST_TEST_REQUIRE(margins.size() == 9u);
     BOOST_TEST(margins[8] == 0.25);
-    BOOST_TEST(margins[0] == 0.0);
+    BOOST_TEST(margins[0] == 0.125);
+    BOOST_TEST(margins[4] == 0.5);
+    BOOST_TEST(margins[1] == 0.0);
     // MuJoCo 2.2.2 takes the larger of two geoms' margins: d1's 0.01 is its own (w-d1 is not
     // considered, so its margin shows nowhere); boxes.xml has none.
     BOOST_TEST(m->info().geoms[6].margin == 0.01);
+}
+
+BOOST_AUTO_TEST_CASE(collision_modes_and_a_full_contact_buffer) {
+    // Two boxes 1/4 deep in each other, no <pair>: <option collision="predefined"> tests the
+    // <pair>s only, so MuJoCo reports nothing and nothing is judged; "dynamic" ignores a <pair>.
+    const std::string boxes = R"(<worldbody><geom name="f" type="box" size="1 1 1" pos="0 0 -1"/>
+      <body pos="0 0 0.25"><freejoint/><geom name="c" type="box" size="0.5 0.5 0.5"/></body></worldbody>)";
+    const Run pre =
+        run("mujoco " + write("pre.xml", "<mujoco><option collision=\"predefined\"/>" + boxes + "</mujoco>").string());
+    BOOST_TEST(pre.status == 0, pre.out + pre.err);
+    BOOST_TEST(pre.out.find("pairs considered: 0") != std::string::npos, pre.out);
+    const Run dyn = run("mujoco " +
+                        write("dyn.xml", "<mujoco><option collision=\"dynamic\"/>" + boxes +
+                                             R"(<contact><pair geom1="f" geom2="c" margin="1"/></contact></mujoco>)")
+                            .string() +
+                        " --json");
+    const auto d = nlohmann::json::parse(dyn.out);
+    BOOST_TEST(d["frames"][0]["pairs"][0]["margin"] == 0.0);  // the filters' pair, not the <pair>'s margin 1
+    // nconmax 1: MuJoCo keeps one contact and warns; the pair without one is not judged (no
+    // contact says nothing then), and the warning is said on stderr.
+    const std::string three = R"(<mujoco><size nconmax="1"/><worldbody>
+      <geom name="f" type="box" size="1 1 1" pos="0 0 -1"/>
+      <body pos="0 0 0.25"><freejoint/><geom name="c" type="box" size="0.25 0.25 0.5"/></body>
+      <body pos="0.5 0.5 0.25"><freejoint/><geom name="e" type="box" size="0.1 0.1 0.5"/></body></worldbody></mujoco>)";
+    const Run full = run("mujoco " + write("full.xml", three).string() + " --json");
+    const auto j = nlohmann::json::parse(full.out);
+    BOOST_TEST(j["summary"]["verdicts_unjudged_buffer_full"].get<long>() >= 1);
+    BOOST_TEST(full.err.find("scalecert: note: MuJoCo warned (1 state)") != std::string::npos, full.err);
+    for (const auto& p : j["frames"][0]["pairs"])
+        if (p["contacts"] == 0) BOOST_TEST(p["verdict"]["right"].is_null());
 }
 
 BOOST_AUTO_TEST_CASE(boxes_at_states_judged_by_hand) {
@@ -164,6 +198,15 @@ BOOST_AUTO_TEST_CASE(bad_input_is_one_line) {
     bad(boxes + " --qpos " + write("nan.qpos", nan_line + "\n").string(), "line 1: 'nan' is not a number");
     bad(boxes + " --key 3", "--key 3: the model has 0 keyframes");
     bad(boxes + " --tolerance -1", "--tolerance must be >= 0");
+    bad(boxes + " --key -7", "--key -7: a keyframe is numbered from 0");
+    // A mesh the model names that is a FIFO: MuJoCo would wait on it forever.
+    const fs::path mfifo = workdir() / "mesh.stl";
+    fs::remove(mfifo);
+    BOOST_TEST_REQUIRE(::mkfifo(mfifo.c_str(), 0600) == 0);
+    bad(write("fifomesh.xml", R"(<mujoco><asset><mesh name="m" file="mesh.stl"/></asset><worldbody>
+      <geom type="mesh" mesh="m"/></worldbody></mujoco>)")
+            .string(),
+        "is not a regular file: MuJoCo would open it");
     const fs::path fifo = workdir() / "model.fifo";
     fs::remove(fifo);
     BOOST_TEST_REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);

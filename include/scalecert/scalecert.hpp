@@ -292,4 +292,22 @@ void write_golden(const std::string& family, int count, std::uint64_t seed, cons
                   const GoldenOptions& options = {});
 std::vector<std::string> families();
 
+// MuJoCo as it runs (scalecert mujoco; docs/manual.md, "mujoco"): the model (MJCF or MJB) loaded
+// by MuJoCo itself (Debian's libmujoco, in a module loaded on first use), run by mj_forward at each
+// state, and every geom pair its collision pipeline considers judged against the exact answer for
+// the geometry MuJoCo held. States: each qpos given (nq doubles), else keyframe `key` (>= 0), else
+// qpos0. InputError for bad input, as the command words it (a missing module too).
+struct MujocoOptions {
+    Rational tolerance = 0, abs_tolerance = 0;  // as certify-fp's --tolerance, --abs-tolerance (metres)
+    int key = -1;
+    std::string failures;  // a folder for reproducers of wrong judgements ("": none)
+};
+struct MujocoJudgement {
+    std::string json;      // the report (format scalecert-mujoco-1), the bytes `scalecert mujoco --json` writes
+    std::string text;      // a line per wrong judgement, then the summary
+    long wrong_pairs = 0;  // pair states with a wrong judgement
+};
+MujocoJudgement judge_mujoco(const std::string& model, const std::vector<std::vector<double>>& qpos = {},
+                             const MujocoOptions& options = {});
+
 }  // namespace scalecert

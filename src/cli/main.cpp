@@ -55,10 +55,9 @@ int main(int argc, char** argv) {
         "scalecert COMMAND --help shows an example.");
     std::vector<cli::Command> commands = {cli::add_curve(app),    cli::add_query(app),      cli::add_partition(app),
                                           cli::add_classify(app), cli::add_certify_fp(app), cli::add_golden(app),
-                                          cli::add_region(app),   cli::add_report(app)};
+                                          cli::add_region(app),   cli::add_report(app),     cli::add_mujoco(app)};
 #ifdef SCALECERT_WITH_BASELINES  // the floating-point baselines' commands
     commands.push_back(cli::add_audit(app));
-    commands.push_back(cli::add_mujoco(app));
     commands.push_back(cli::add_grid(app));
 #endif
     std::string names;

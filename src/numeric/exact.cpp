@@ -123,15 +123,20 @@ bool hex_float_syntax(const std::string& t, HexFloat* out) {
         frac += point;
     }
     if (digits.empty()) return false;
+    // Trailing zeros of the fraction say nothing (0x1.000p0 is 1).
+    while (frac > 0 && digits.back() == '0') digits.pop_back(), --frac;
+    if (digits.empty()) digits = "0";
     long exponent = 0;
     if (i < t.size() && (t[i] == 'p' || t[i] == 'P')) {
         ++i;
-        const size_t b = i;
+        const bool minus = i < t.size() && t[i] == '-';
         if (i < t.size() && (t[i] == '+' || t[i] == '-')) ++i;
         if (i == t.size() || !all_digits(t, i, t.size())) return false;
-        // An exponent of more than 9 digits is no number: 2^(10^9) passes every limit.
-        if (t.size() - i > 9) return false;
-        exponent = std::stol(t.substr(b));
+        while (i + 1 < t.size() && t[i] == '0') ++i;  // leading zeros
+        // An exponent of more than 9 digits passes every limit (2^(10^9)): taken as 10^10, which
+        // the exact reading refuses as too large and strtod reads as an overflow or 0.
+        exponent = t.size() - i > 9 ? 10000000000L : std::stol(t.substr(i));
+        if (minus) exponent = -exponent;
         i = t.size();
     }
     if (i != t.size()) return false;

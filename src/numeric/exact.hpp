@@ -59,8 +59,8 @@ Z over(const Q& q, const Z& den);
 std::string in_quotes(const std::string& text);
 
 // A C99 hexadecimal float as strtod reads it and printf's %a writes it: [+-] 0x|0X, hex digits
-// with at most one point (at least one digit), an optional binary exponent p|P [+-] digits (at
-// most 9). Its value is ±mant·2^exp2, filled in *out when given.
+// with at most one point (at least one digit), an optional binary exponent p|P [+-] digits. Its
+// value is ±mant·2^exp2, filled in *out when given (an exponent past 9 digits as ±10^10).
 struct HexFloat {
     bool negative = false;
     Z mant;

@@ -25,5 +25,8 @@ constexpr std::size_t kMaxDenominatorBits = 16384;
 // (crossed n-gon prisms have O(n^2) Minkowski facets: two crossed 1,000-gon prisms, 9*10^6 edge
 // pairs, take 11 s).
 constexpr double kMaxEdgePairs = 2e7;
+// Geom pairs scalecert mujoco judges (both geoms a box or a mesh): each keeps its own engine for
+// every state (about 35 KB each: 400 free boxes, 79,800 pairs, took 2.8 GB and 49 s a state).
+constexpr std::size_t kMaxJudgedGeomPairs = 20000;
 
 }  // namespace scalecert::internal

@@ -4,6 +4,8 @@
 #include "certify/report.hpp"
 #include "certify/rules_impl.hpp"
 
+#include <cmath>
+
 namespace scalecert::internal {
 
 using namespace report_parts;
@@ -50,6 +52,10 @@ void describe(const TypedClaim& c, const SignedDistanceJudged& d, const Judged&,
     // s·√E as the nearest double (display only).
     const double e = sqrt_minus_rn(d.exact_squared, Q(0));
     o["exact_double"] = d.sign() < 0 ? -e : e;
+    // |claimed − s√E| (MPFR-rounded; display only).
+    o["abs_error_double"] = d.sign() == 0
+                                ? std::fabs(to_double_rn(c.value))
+                                : std::fabs(sqrt_minus_rn(d.exact_squared, d.sign() > 0 ? c.value : Q(-c.value)));
     const std::string claimed = c.bound == TypedClaim::Bound::Value     ? "claimed " + num(c.value)
                                 : c.bound == TypedClaim::Bound::AtLeast ? "claimed at least " + num(c.value)
                                                                         : "claimed below " + num(c.value);

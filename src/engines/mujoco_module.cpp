@@ -1,10 +1,14 @@
 // The MuJoCo module (libscalecert_mujoco.so): loads a model with Debian's libmujoco and reports
 // what it holds and, at a qpos, what mj_forward computed, in mujoco_held.hpp's plain types. Loaded
 // on first use by mujoco_loader.cpp, so the core never links MuJoCo.
-#include "baselines/mujoco_held.hpp"
+#include "engines/mujoco_held.hpp"
 
 #include <mujoco/mujoco.h>
 
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cstdio>
 #include <cstring>
 #include <mutex>
 
@@ -87,6 +91,7 @@ class MujocoModel final : public Loaded {
         f.disableflags = m_->opt.disableflags;
         f.enableflags = m_->opt.enableflags;
         f.o_margin = m_->opt.o_margin;
+        f.collision = m_->opt.collision;
     }
     mjModel* m_;
     mjData* d_;
@@ -98,7 +103,20 @@ extern "C" __attribute__((visibility("default"))) Loaded* scalecert_mujoco_load(
     static std::once_flag once;
     std::call_once(once, [] { mju_user_warning = keep_warning; });
     char err[1000] = "";
+    // MuJoCo's mesh compiler (qhull) prints to stdout and stderr; the command says one line.
+    std::fflush(stdout);
+    std::fflush(stderr);
+    const int out = ::dup(1), errfd = ::dup(2), null = ::open("/dev/null", O_WRONLY);
+    if (null >= 0) {
+        ::dup2(null, 1);
+        ::dup2(null, 2);
+        ::close(null);
+    }
     mjModel* m = mj_loadXML(path, nullptr, err, sizeof err);
+    std::fflush(stdout);
+    std::fflush(stderr);
+    if (out >= 0) ::dup2(out, 1), ::close(out);
+    if (errfd >= 0) ::dup2(errfd, 2), ::close(errfd);
     if (!m) {
         *error = err[0] ? err : "MuJoCo could not load it";
         return nullptr;

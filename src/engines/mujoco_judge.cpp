@@ -1,7 +1,7 @@
 // The MuJoCo front end's judge (mujoco_judge.hpp): the pairs MuJoCo's pipeline considers, each
 // judged at every state by the claim rules (signed distances and depth directions at the geoms'
 // poses) on a scene of the two geoms as MuJoCo held them.
-#include "baselines/mujoco_judge.hpp"
+#include "engines/mujoco_judge.hpp"
 
 #include "campaign/campaign.hpp"
 #include "certify/certificate.hpp"
@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <map>
@@ -36,6 +37,12 @@ std::string shortest(float f) {
 }
 // A number written so that a JSON reader reading doubles (the default) gets d exactly.
 Json number(double d) { return std::isfinite(d) ? Json(d) : Json(nullptr); }
+// A double (or a float's value) as a hex float in a JSON string: exact under every reading.
+Json hex(double d) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%a", d);
+    return Json(std::string(buf));
+}
 
 std::string geom_label(const ModelInfo& m, int g) {
     const std::string& n = m.geoms[static_cast<size_t>(g)].name;
@@ -47,15 +54,21 @@ std::vector<Considered> considered_pairs(const ModelInfo& m) {
     std::map<std::pair<int, int>, Considered> out;
     if (m.disableflags & kDisableContact) return {};
     const bool override_margin = (m.enableflags & kEnableOverride) != 0;
+    // An explicit <pair> replaces the pair the filters would give (MuJoCo 2.2.2 collides it once,
+    // at the <pair>'s margin: two boxes 4 mm apart, a geom margin of 5 mm and a <pair> margin of 3 mm
+    // give no contact), so pairs are added first.
     auto add = [&](int a, int b, double margin, double gap, bool expl) {
         if (a > b) std::swap(a, b);
-        auto [it, fresh] = out.try_emplace({a, b}, Considered{a, b, margin, gap, expl});
-        if (!fresh) {
-            it->second.margin = std::max(it->second.margin, margin);
-            it->second.gap = std::max(it->second.gap, gap);
-            it->second.explicit_pair = it->second.explicit_pair || expl;
-        }
+        out.try_emplace({a, b}, Considered{a, b, margin, gap, expl});
     };
+    // <option collision=...>: "predefined" tests the <pair>s only, "dynamic" the filters' pairs only.
+    if (m.collision != 2)
+        for (const Pair& p : m.pairs) add(p.g1, p.g2, override_margin ? m.o_margin : p.margin, p.gap, true);
+    if (m.collision == 1) {
+        std::vector<Considered> v;
+        for (auto& [k, c] : out) v.push_back(c);
+        return v;
+    }
     const std::set<int> excluded(m.excludes.begin(), m.excludes.end());
     const int n = static_cast<int>(m.geoms.size());
     for (int a = 0; a < n; ++a)
@@ -71,10 +84,35 @@ std::vector<Considered> considered_pairs(const ModelInfo& m) {
             if (excluded.count(((b1 + 1) << 16) | (b2 + 1)) || excluded.count(((b2 + 1) << 16) | (b1 + 1))) continue;
             add(a, b, override_margin ? m.o_margin : std::max(ga.margin, gb.margin), std::max(ga.gap, gb.gap), false);
         }
-    for (const Pair& p : m.pairs) add(p.g1, p.g2, override_margin ? m.o_margin : p.margin, p.gap, true);
     std::vector<Considered> v;
     for (auto& [k, c] : out) v.push_back(c);
     return v;
+}
+
+std::vector<std::vector<double>> choose_states(const ModelInfo& m, std::vector<std::vector<double>> qpos,
+                                               std::vector<std::string>& labels, int key) {
+    if (!qpos.empty() && key >= 0) throw InputError("give states or a keyframe, not both");
+    if (qpos.empty() && key >= 0) {
+        if (key >= static_cast<int>(m.keys.size()))
+            throw InputError("keyframe " + std::to_string(key) + ": the model has " + std::to_string(m.keys.size()) +
+                             (m.keys.size() == 1 ? " keyframe" : " keyframes"));
+        labels = {"key " + std::to_string(key)};
+        return {m.keys[static_cast<size_t>(key)]};
+    }
+    if (qpos.empty()) {
+        labels = {"qpos0"};
+        return {m.qpos0};
+    }
+    labels.resize(qpos.size());
+    for (size_t i = 0; i < qpos.size(); ++i) {
+        if (labels[i].empty()) labels[i] = "qpos[" + std::to_string(i) + "]";
+        if (static_cast<int>(qpos[i].size()) != m.nq)
+            throw InputError(labels[i] + ": " + std::to_string(qpos[i].size()) + " numbers; the model's qpos has " +
+                             std::to_string(m.nq));
+        for (double x : qpos[i])
+            if (!std::isfinite(x)) throw InputError(labels[i] + ": a qpos of finite numbers only");
+    }
+    return qpos;
 }
 
 namespace {
@@ -99,11 +137,11 @@ Json geom_vertices_json(const Geom& g) {
     if (g.type == kBox) {
         for (int sx : {-1, 1})
             for (int sy : {-1, 1})
-                for (int sz : {-1, 1}) v.push_back(Json::array({sx * g.size[0], sy * g.size[1], sz * g.size[2]}));
+                for (int sz : {-1, 1})
+                    v.push_back(Json::array({hex(sx * g.size[0]), hex(sy * g.size[1]), hex(sz * g.size[2])}));
     } else {
         for (size_t k = 0; k + 2 < g.vertices.size(); k += 3)
-            v.push_back(Json::array({Json::parse(shortest(g.vertices[k])), Json::parse(shortest(g.vertices[k + 1])),
-                                     Json::parse(shortest(g.vertices[k + 2]))}));
+            v.push_back(Json::array({hex(g.vertices[k]), hex(g.vertices[k + 1]), hex(g.vertices[k + 2])}));
     }
     return v;
 }
@@ -117,10 +155,10 @@ Pose pose_of(const State& s, int g) {
 }
 Json pose_json(const State& s, int g) {
     Json m = Json::array();
+    const size_t G = static_cast<size_t>(g);
     for (size_t r = 0; r < 3; ++r)
-        m.push_back(
-            Json::array({s.xmat[9 * static_cast<size_t>(g) + 3 * r], s.xmat[9 * static_cast<size_t>(g) + 3 * r + 1],
-                         s.xmat[9 * static_cast<size_t>(g) + 3 * r + 2], s.xpos[3 * static_cast<size_t>(g) + r]}));
+        m.push_back(Json::array({hex(s.xmat[9 * G + 3 * r]), hex(s.xmat[9 * G + 3 * r + 1]),
+                                 hex(s.xmat[9 * G + 3 * r + 2]), hex(s.xpos[3 * G + r])}));
     return m;
 }
 bool finite_state(const State& s, int g) {
@@ -178,12 +216,27 @@ double signed_double(int s, const Q& E) {
     const double v = sqrt_minus_rn(E, Q(0));
     return s < 0 ? -v : v;
 }
+// |d − s√E|, correctly rounded (MPFR), for a finite d.
+double signed_error(double d, int s, const Q& E) {
+    if (s == 0) return std::fabs(d);
+    // s = 1: √E − d; s = −1: −(√E − (−d)).
+    return std::fabs(sqrt_minus_rn(E, exact_from_double(s > 0 ? d : -d)));
+}
 }  // namespace
 
 MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>& states,
                           const std::vector<std::string>& labels, const MujocoOptions& opt) {
     const ModelInfo& m = model.info();
     const std::vector<Considered> pairs = considered_pairs(m);
+    size_t judged_pairs = 0;
+    for (const Considered& p : pairs)
+        judged_pairs += judged_type(m.geoms[static_cast<size_t>(p.g1)].type) &&
+                        judged_type(m.geoms[static_cast<size_t>(p.g2)].type);
+    if (judged_pairs > kMaxJudgedGeomPairs)
+        throw InputError(opt.model + ": " + std::to_string(judged_pairs) +
+                         " geom pairs of boxes and meshes to judge, "
+                         "more than " +
+                         std::to_string(kMaxJudgedGeomPairs) + " (the limit)");
     MujocoResult res;
     std::map<std::pair<int, int>, PairEngine> engines;
     auto engine_for = [&](int a, int b) -> PairEngine& {
@@ -215,10 +268,20 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
     std::string text;
     std::set<std::pair<int, int>> considered_set;
     for (const Considered& c : pairs) considered_set.insert({c.g1, c.g2});
-    long contacts_outside = 0;
+    long contacts_outside = 0, verdicts_unjudged = 0;
 
+    using Clock = std::chrono::steady_clock;
+    const Clock::time_point start = Clock::now();
     for (size_t f = 0; f < states.size(); ++f) {
+        const Clock::time_point before = Clock::now();
         const State s = model.forward(states[f]);
+        res.forward_seconds += std::chrono::duration<double>(Clock::now() - before).count();
+        // MuJoCo drops contacts past its buffer (and warns): in such a state no contact says nothing.
+        bool buffer_full = false;
+        for (const std::string& w : s.warnings) {
+            buffer_full = buffer_full || w.find("contact buffer is full") != std::string::npos;
+            res.warnings.push_back(labels[f] + ": " + w);
+        }
         // The contacts of each pair, by their own order of the geoms.
         std::map<std::pair<int, int>, std::vector<const Contact*>> of;
         for (const Contact& c : s.contacts) {
@@ -273,7 +336,9 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
             verdict.value = exact_from_double(p.margin);
             const Judged vj = judge_claim(*pe->rules, verdict, 0, opt.model, nullptr);
             const SignedDistanceJudged& ex = *vj.get<SignedDistanceJudged>();
-            ++judgements;
+            const bool verdict_judged = deepest || !buffer_full;
+            const bool verdict_right = vj.right || !verdict_judged;
+            judgements += verdict_judged;
             Json pj{
                 {"geom1", a},
                 {"geom2", b},
@@ -282,12 +347,16 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
                 {"contacts", ncon},
                 {"verdict", Json{{"said", deepest ? "contact" : "no contact"},
                                  {"exact", verdict_name(ex.exact)},
-                                 {"right", vj.right}}},
+                                 {"right", verdict_judged ? Json(vj.right) : Json(nullptr)}}},
                 {"signed_distance", Json{{"exact", signed_text(ex.sign(), ex.exact_squared)}}}};
             put_exact(pj["signed_distance"], "exact_squared", ex.exact_squared);
-            bool all_right = vj.right;
+            if (!verdict_judged) {
+                pj["verdict"]["why"] = "MuJoCo's contact buffer was full at this state: its contacts were dropped";
+                ++verdicts_unjudged;
+            }
+            bool all_right = verdict_right;
             std::vector<TypedClaim> claims{verdict};
-            if (!vj.right) {
+            if (!verdict_right) {
                 ++wrong_verdicts;
                 wrong_list.push_back(Json{{"frame", f},
                                           {"geom1", a},
@@ -296,10 +365,10 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
                                           {"exact", verdict_name(ex.exact)},
                                           {"signed_distance_m", signed_double(ex.sign(), ex.exact_squared)},
                                           {"margin", p.margin}});
-                text += "WRONG  " + labels[f] + ": " + geom_label(m, a) + " and " + geom_label(m, b) + ": " +
-                        (deepest ? "a contact" : "no contact") + " within the margin " + shortest(p.margin) +
-                        ", but the signed distance is ~" + shortest(signed_double(ex.sign(), ex.exact_squared)) +
-                        " m (" + verdict_name(ex.exact) + ")\n";
+                text += "WRONG  state " + std::to_string(f) + " (" + labels[f] + "): " + geom_label(m, a) + " and " +
+                        geom_label(m, b) + ": " + (deepest ? "a contact" : "no contact") + " within the margin " +
+                        shortest(p.margin) + ", but the signed distance is ~" +
+                        shortest(signed_double(ex.sign(), ex.exact_squared)) + " m (" + verdict_name(ex.exact) + ")\n";
             }
             if (deepest) {
                 TypedClaim dist = base;
@@ -310,9 +379,8 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
                     dist.no_answer = "value", dist.no_answer_reason = "not a number";
                 const Judged dj = judge_claim(*pe->rules, dist, 1, opt.model, nullptr);
                 ++judgements;
-                const double err = std::isfinite(deepest->dist)
-                                       ? std::fabs(deepest->dist - signed_double(ex.sign(), ex.exact_squared))
-                                       : INFINITY;
+                const double err =
+                    std::isfinite(deepest->dist) ? signed_error(deepest->dist, ex.sign(), ex.exact_squared) : INFINITY;
                 worst_dist = std::max(worst_dist, err);
                 pj["dist"] = Json{{"said", number(deepest->dist)},
                                   {"exact", signed_text(ex.sign(), ex.exact_squared)},
@@ -321,9 +389,10 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
                 all_right = all_right && dj.right;
                 claims.push_back(dist);
                 if (!dj.right)
-                    text += "WRONG  " + labels[f] + ": " + geom_label(m, a) + " and " + geom_label(m, b) + ": dist " +
-                            shortest(deepest->dist) + ", exact ~" +
-                            shortest(signed_double(ex.sign(), ex.exact_squared)) + " m\n";
+                    text += "WRONG  state " + std::to_string(f) + " (" + labels[f] + "): " + geom_label(m, a) +
+                            " and " + geom_label(m, b) + ": dist " + shortest(deepest->dist) + ", exact ~" +
+                            shortest(signed_double(ex.sign(), ex.exact_squared)) + " m (off by " + shortest(err) +
+                            " m)\n";
                 const Vec3q n{exact_from_double(deepest->frame[0]), exact_from_double(deepest->frame[1]),
                               exact_from_double(deepest->frame[2])};
                 Json said =
@@ -343,8 +412,8 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
                     all_right = all_right && right;
                     claims.push_back(d);
                     if (!right)
-                        text += "WRONG  " + labels[f] + ": " + geom_label(m, a) + " and " + geom_label(m, b) +
-                                ": the normal does not attain the depth\n";
+                        text += "WRONG  state " + std::to_string(f) + " (" + labels[f] + "): " + geom_label(m, a) +
+                                " and " + geom_label(m, b) + ": the normal does not attain the depth\n";
                 } else {
                     pj["normal"] = Json{{"said", said}};  // judged for penetrating contacts only
                 }
@@ -355,15 +424,14 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
                 res.wrong += 1;
                 if (!opt.failures.empty()) {
                     // A reproducer: the two geoms as MuJoCo held them (a mesh's float32 vertices),
-                    // and the claims at their poses, which certify-fp replays.
+                    // and the claims at their poses, which certify-fp replays; every number a hex
+                    // float in a JSON string, exact under every reading.
                     const std::string stem = opt.failures + "/frame" + std::to_string(f) + "_g" + std::to_string(a) +
                                              "_g" + std::to_string(b);
                     Json scene;
                     for (int i = 0; i < 2; ++i) {
                         const Geom& g = m.geoms[static_cast<size_t>(i ? b : a)];
-                        Json o{{"vertices", geom_vertices_json(g)}};
-                        if (g.type == kMesh) o["numbers"] = "float32";
-                        scene[i ? "P2" : "P1"] = std::move(o);
+                        scene[i ? "P2" : "P1"] = Json{{"vertices", geom_vertices_json(g)}};
                     }
                     Json cl = Json::array();
                     for (const TypedClaim& c : claims) {
@@ -372,16 +440,29 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
                             const char* key = c.bound == TypedClaim::Bound::Value     ? "value"
                                               : c.bound == TypedClaim::Bound::AtLeast ? "at_least"
                                                                                       : "below";
-                            j[key] = c.bound == TypedClaim::Bound::Value ? number(deepest->dist) : Json(p.margin);
+                            j[key] = c.bound == TypedClaim::Bound::Value ? hex(deepest->dist) : hex(p.margin);
                         } else {
-                            j["value"] = -deepest->dist;
-                            j["direction"] = Json::array({deepest->frame[0], deepest->frame[1], deepest->frame[2]});
+                            j["value"] = hex(-deepest->dist);
+                            j["direction"] =
+                                Json::array({hex(deepest->frame[0]), hex(deepest->frame[1]), hex(deepest->frame[2])});
                         }
                         j["pose1"] = pose_json(s, a);
                         j["pose2"] = pose_json(s, b);
                         cl.push_back(std::move(j));
                     }
-                    Json about{{"model", opt.model}, {"state", labels[f]}, {"geom1", a}, {"geom2", b}};
+                    // How to replay it: the same tolerances.
+                    std::string replay = "scalecert certify-fp " + stem + ".scene.json " + stem + ".claims.json";
+                    if (sgn(opt.tolerance.rel) > 0) replay += " --tolerance " + to_exact_string(opt.tolerance.rel);
+                    if (sgn(opt.tolerance.abs) > 0) replay += " --abs-tolerance " + to_exact_string(opt.tolerance.abs);
+                    Json about{{"model", opt.model},
+                               {"frame", f},
+                               {"state", labels[f]},
+                               {"geom1", a},
+                               {"geom2", b},
+                               {"names", pj["names"]},
+                               {"tolerance", to_exact_string(opt.tolerance.rel)},
+                               {"abs_tolerance", to_exact_string(opt.tolerance.abs)},
+                               {"replay", replay}};
                     Json q = Json::array();
                     for (double x : states[f]) q.push_back(x);
                     about["qpos"] = std::move(q);
@@ -405,6 +486,8 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
                  {"contacts", contacts_total},
                  {"contacts_unjudged", contacts_unjudged},
                  {"contacts_outside_considered_pairs", contacts_outside},
+                 {"verdicts_unjudged_buffer_full", verdicts_unjudged},
+                 {"mujoco_warnings", res.warnings.size()},
                  {"worst_dist_error_m", worst_dist},
                  {"wrong_verdicts", std::move(wrong_list)}};
     res.report = Json{{"format", "scalecert-mujoco-1"},
@@ -424,6 +507,7 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
         text += "unjudged: " + geom_label(m, u["geom1"].get<int>()) + " and " + geom_label(m, u["geom2"].get<int>()) +
                 ": " + u["why"].get<std::string>() + "\n";
     res.text = std::move(text);
+    res.judge_seconds = std::chrono::duration<double>(Clock::now() - start).count() - res.forward_seconds;
     return res;
 }
 

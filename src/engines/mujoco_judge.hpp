@@ -2,7 +2,7 @@
 // answer for the geometry MuJoCo held (CLAIMS.md, "Engines' conventions"): every geom pair its
 // collision pipeline considers, as signed-distance claims at the geoms' poses.
 #pragma once
-#include "baselines/mujoco_held.hpp"
+#include "engines/mujoco_held.hpp"
 #include "certify/claim.hpp"
 #include "io/json.hpp"
 
@@ -14,13 +14,20 @@ namespace scalecert::internal::mj {
 
 // A geom pair MuJoCo 2.2.2's pipeline considers: by contype and conaffinity, the weld and parent
 // filters and <exclude>, or an explicit <pair>; margin and gap as it takes them (the larger of the
-// geoms', a <pair>'s own, or the override's margin). A pair both ways keeps the larger margin.
+// geoms', a <pair>'s own, or the override's margin). An explicit <pair> replaces the filters' pair
+// of the same geoms.
 struct Considered {
     int g1 = 0, g2 = 0;  // g1 < g2
     double margin = 0, gap = 0;
     bool explicit_pair = false;
 };
 std::vector<Considered> considered_pairs(const ModelInfo& m);
+
+// The states to judge: each qpos given (labels[i] names it in messages and the report), else
+// keyframe `key` (>= 0), else qpos0. InputError for a qpos not of nq finite numbers, or a key the
+// model lacks.
+std::vector<std::vector<double>> choose_states(const ModelInfo& m, std::vector<std::vector<double>> qpos,
+                                               std::vector<std::string>& labels, int key);
 
 struct MujocoOptions {
     Tolerance tolerance;
@@ -33,6 +40,11 @@ struct MujocoResult {
     Json report;
     long wrong = 0;
     std::string text;  // the wrong judgements and the summary, a line each
+    // Wall-clock seconds in mj_forward and in judging (never in the report: it stays the same
+    // bytes run after run).
+    double forward_seconds = 0, judge_seconds = 0;
+    // What MuJoCo warned of, each after its state's label (the command says them on stderr).
+    std::vector<std::string> warnings;
 };
 MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>& states,
                           const std::vector<std::string>& labels, const MujocoOptions& opt);

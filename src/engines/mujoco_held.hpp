@@ -34,6 +34,7 @@ struct ModelInfo {
     std::vector<Pair> pairs;
     std::vector<int> excludes;  // exclude_signature: (body1 + 1) << 16 | (body2 + 1)
     int disableflags = 0, enableflags = 0;
+    int collision = 0;    // opt.collision: 0 every pair, 1 the <pair>s only, 2 the filters' pairs only
     double o_margin = 0;  // the override margin (enableflags' override bit)
     std::vector<double> qpos0;
     std::vector<std::vector<double>> keys;  // each keyframe's qpos

@@ -1,0 +1,116 @@
+// load_model: MuJoCo lives in a module loaded on first use (mujoco_module.cpp), looked for in this
+// order: $SCALECERT_MUJOCO_MODULE; the build tree's copy; <executable's directory>/../<libdir>/
+// scalecert/ (an installed command); the install prefix.
+#include "engines/mujoco_held.hpp"
+#include "io/files.hpp"
+#include "numeric/exact.hpp"
+
+#include <dlfcn.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <mutex>
+#include <optional>
+
+namespace scalecert::internal::mj {
+
+const char* geom_type_name(int type) {
+    static const char* const names[] = {"plane", "hfield", "sphere", "capsule", "ellipsoid", "cylinder", "box", "mesh"};
+    return type >= 0 && type < 8 ? names[type] : "unknown";
+}
+
+namespace {
+LoadFn module() {
+    static LoadFn load = nullptr;
+    static std::once_flag once;
+    static std::string error;
+    std::call_once(once, [] {
+        std::vector<std::string> paths;
+        if (const char* e = std::getenv("SCALECERT_MUJOCO_MODULE")) paths.push_back(e);
+#ifdef SCALECERT_MUJOCO_BUILD
+        paths.push_back(SCALECERT_MUJOCO_BUILD);
+#endif
+        std::error_code ec;
+        const auto exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+        if (!ec)
+            paths.push_back(
+                (exe.parent_path() / ".." / SCALECERT_MUJOCO_LIBDIR / "scalecert" / "libscalecert_mujoco.so").string());
+        paths.push_back(SCALECERT_MUJOCO_INSTALLED);
+        for (const std::string& p : paths) {
+            if (::access(p.c_str(), R_OK) != 0) continue;
+            void* h = ::dlopen(p.c_str(), RTLD_NOW | RTLD_LOCAL);
+            if (!h) {
+                error = dlerror();
+                continue;
+            }
+            load = reinterpret_cast<LoadFn>(::dlsym(h, "scalecert_mujoco_load"));
+            if (load) return;
+            error = p + ": lacks the entry point";
+        }
+        if (error.empty())
+            error =
+                "libscalecert_mujoco.so not found (build with Debian's libmujoco-dev installed, or set "
+                "SCALECERT_MUJOCO_MODULE)";
+    });
+    if (!load) throw InputError("MuJoCo cannot be loaded: " + error);
+    return load;
+}
+}  // namespace
+
+namespace {
+// MuJoCo opens the files a model names itself (meshes, height fields, textures, <include>s), and
+// would wait on a FIFO forever. Every file="..." of the model and of its includes is looked for
+// where MuJoCo looks (beside the model, under the compiler's meshdir, texturedir and assetdir) and
+// refused in one line where it is there and not a regular file. (A text scan, not an XML parse: a
+// name it reads too many only costs a stat.)
+void refuse_files_that_block(const std::string& path, int depth = 0) {
+    const std::string text = read_input(path, "model file", kMaxSceneBytes);
+    if (depth > 16) throw InputError(path + ": <include>s nested past 16 levels");
+    const std::filesystem::path dir = std::filesystem::path(path).parent_path();
+    auto attribute = [&](const std::string& name, size_t from, size_t& at) -> std::optional<std::string> {
+        const std::string key = name + "=\"";
+        at = text.find(key, from);
+        if (at == std::string::npos) return std::nullopt;
+        const size_t b = at + key.size(), e = text.find('"', b);
+        if (e == std::string::npos) return std::nullopt;
+        at = e;
+        return text.substr(b, e - b);
+    };
+    std::vector<std::filesystem::path> dirs{dir};
+    for (const char* d : {"meshdir", "texturedir", "assetdir"})
+        for (size_t at = 0; auto v = attribute(d, at, at);) dirs.push_back(dir / *v);
+    for (size_t at = 0; auto f = attribute("file", at, at);) {
+        for (const std::filesystem::path& d : dirs) {
+            const std::filesystem::path p =
+                std::filesystem::path(*f).is_absolute() ? std::filesystem::path(*f) : d / *f;
+            std::error_code ec;
+            const auto st = std::filesystem::status(p, ec);
+            if (ec || !std::filesystem::exists(st)) continue;
+            if (!std::filesystem::is_regular_file(st))
+                throw InputError(path + ": " + in_quotes(*f) + " (" + p.string() +
+                                 ") is not a regular file: MuJoCo would open it (only regular files are read)");
+            const size_t tag = text.rfind('<', at);
+            if (tag != std::string::npos && text.compare(tag, 8, "<include") == 0)
+                refuse_files_that_block(p.string(), depth + 1);
+        }
+    }
+}
+}  // namespace
+
+std::unique_ptr<Loaded> load_model(const std::string& path) {
+    refuse_files_that_block(path);
+    const LoadFn load = module();
+    std::string error;
+    std::unique_ptr<Loaded> m(load(path.c_str(), &error));
+    if (!m) {
+        // MuJoCo's message may run over lines: one line here.
+        for (char& c : error)
+            if (c == '\n' || c == '\r') c = ' ';
+        while (!error.empty() && error.back() == ' ') error.pop_back();
+        throw InputError(path + ": MuJoCo: " + error);
+    }
+    return m;
+}
+
+}  // namespace scalecert::internal::mj
