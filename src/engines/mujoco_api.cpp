@@ -13,7 +13,8 @@ MujocoJudgement judge_mujoco(const std::string& model, const std::vector<std::ve
     std::vector<std::string> labels;
     const std::vector<std::vector<double>> states = mj::choose_states(m->info(), qpos, labels, options.key);
     const mj::MujocoResult r = mj::judge_states(
-        *m, states, labels, mj::MujocoOptions{Tolerance{options.tolerance, options.abs_tolerance}, model, options.failures});
+        *m, states, labels,
+        mj::MujocoOptions{Tolerance{options.tolerance, options.abs_tolerance}, model, options.failures});
     return {dump(r.report), r.text, r.wrong};
 }
 
