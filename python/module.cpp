@@ -1138,6 +1138,99 @@ void bind_golden(py::module_& m) {
         "writes COUNT scenes of FAMILY with exact answers into DIR, as scalecert golden does");
 }
 
+// judge_mujoco's arguments: qpos None, or rows of nq floats (a 2-D numpy array or lists); key None
+// or an int >= 0.
+scalecert::MujocoJudgement mujoco_judgement(const py::handle& model, const py::handle& qpos, const py::handle& key,
+                                            const py::handle& tolerance, const py::handle& abs_tolerance,
+                                            const py::handle& failures) {
+    scalecert::MujocoOptions o;
+    o.tolerance = rational(tolerance, "tolerance");
+    o.abs_tolerance = rational(abs_tolerance, "abs_tolerance");
+    if (!key.is_none()) o.key = count_arg(key, "key", 0, 1 << 30);
+    if (!failures.is_none()) o.failures = path_arg(failures, "failures");
+    std::vector<std::vector<double>> states;
+    if (!qpos.is_none()) {
+        const py::list rows = as_list(qpos, "qpos");
+        for (size_t i = 0; i < rows.size(); ++i) {
+            const std::string what = "qpos[" + std::to_string(i) + "]";
+            const py::list row = as_list(rows[i], what);
+            std::vector<double> q;
+            for (const py::handle x : row) {
+                if (py::isinstance<py::bool_>(x) ||
+                    !(py::isinstance<py::float_>(x) || py::isinstance<py::int_>(x) || py::hasattr(x, "__float__")))
+                    throw scalecert::InputError(what + ": expected numbers");
+                q.push_back(py::cast<double>(x));
+            }
+            states.push_back(std::move(q));
+        }
+        if (states.empty()) throw scalecert::InputError("qpos: no state (give None for qpos0)");
+    }
+    return scalecert::judge_mujoco(path_arg(model, "model"), states, o);
+}
+
+// scalecert.judge_mujoco, and the test helpers of scalecert.testing: assertions whose failure lists
+// each wrong judgement (and where its reproducer is).
+void bind_mujoco_and_testing(py::module_& m) {
+    m.def(
+        "judge_mujoco",
+        [](const py::handle& model, const py::handle& qpos, const py::handle& key, const py::handle& tolerance,
+           const py::handle& abs_tolerance, const py::handle& failures) {
+            return json_loads(mujoco_judgement(model, qpos, key, tolerance, abs_tolerance, failures).json);
+        },
+        py::arg("model"), py::arg("qpos") = py::none(), py::arg("key") = py::none(), py::arg("tolerance") = 0,
+        py::arg("abs_tolerance") = 0, py::arg("failures") = py::none(),
+        "scalecert mujoco: the model run by MuJoCo (Debian's libmujoco) at each qpos (rows of nq floats; None: "
+        "keyframe `key`, else qpos0), every geom pair its pipeline considers judged exactly; the report as a dict "
+        "(format scalecert-mujoco-1; summary['wrong_pairs'] counts the wrong pair states)");
+    py::module_ t =
+        m.def_submodule("testing", "assertions for pytest: each raises AssertionError listing every wrong judgement");
+    t.def(
+        "assert_mujoco",
+        [](const py::handle& model, const py::handle& qpos, const py::handle& key, const py::handle& tolerance,
+           const py::handle& abs_tolerance, const py::handle& failures) {
+            const scalecert::MujocoJudgement j = mujoco_judgement(model, qpos, key, tolerance, abs_tolerance, failures);
+            if (j.wrong_pairs == 0) return;
+            std::string msg = "scalecert: MuJoCo was wrong at " + std::to_string(j.wrong_pairs) + " pair state" +
+                              (j.wrong_pairs == 1 ? "" : "s") + ":\n" + j.text;
+            if (!failures.is_none())
+                msg += "reproducers (scalecert certify-fp replays them): " + path_arg(failures, "failures");
+            PyErr_SetString(PyExc_AssertionError, msg.c_str());
+            throw py::error_already_set();
+        },
+        py::arg("model"), py::arg("qpos") = py::none(), py::arg("key") = py::none(), py::arg("tolerance") = 0,
+        py::arg("abs_tolerance") = 0, py::arg("failures") = py::none(),
+        "judge_mujoco, raising AssertionError with each wrong judgement when any is wrong");
+    t.def(
+        "assert_claims",
+        [](const PyScene& s, const py::handle& claims, const py::handle& tolerance, const py::handle& abs_tolerance,
+           const py::handle& numbers) {
+            scalecert::ClaimOptions opt;
+            opt.numbers = numbers.is_none() ? s.numbers : numbers_arg(numbers);
+            opt.tolerance = rational(tolerance, "tolerance");
+            opt.abs_tolerance = rational(abs_tolerance, "abs_tolerance");
+            opt.json = false;
+            const scalecert::ClaimReport r = s.a().certify_fp(claims_text(claims), opt);
+            if (r.wrong == 0) return;
+            std::string msg =
+                "scalecert: " + std::to_string(r.wrong) + " of " + std::to_string(r.claims) + " claims wrong:\n";
+            for (size_t b = 0; b < r.report.size();) {
+                const size_t e = r.report.find('\n', b);
+                const std::string line = r.report.substr(b, e == std::string::npos ? std::string::npos : e - b);
+                if (line.rfind("WRONG", 0) == 0) msg += line + "\n";
+                if (e == std::string::npos) break;
+                b = e + 1;
+            }
+            PyErr_SetString(PyExc_AssertionError, msg.c_str());
+            throw py::error_already_set();
+        },
+        py::arg("scene"), py::arg("claims"), py::arg("tolerance") = 0, py::arg("abs_tolerance") = 0,
+        py::arg("numbers") = py::none(),
+        "Scene.certify_fp's claims (a claims file's text, a dict or a list of claim dicts), raising AssertionError "
+        "with each wrong claim's line when any is wrong");
+    // `import scalecert.testing` finds it too.
+    py::module_::import("sys").attr("modules")["scalecert.testing"] = t;
+}
+
 }  // namespace
 
 PYBIND11_MODULE(scalecert, m) {
@@ -1148,4 +1241,5 @@ PYBIND11_MODULE(scalecert, m) {
     bind_verdict(m);
     bind_scene(m);
     bind_golden(m);
+    bind_mujoco_and_testing(m);
 }

@@ -937,3 +937,53 @@ def test_audit_your_own_collision_test():
     # The user's own exception is theirs, unchanged.
     with pytest.raises(ZeroDivisionError):
         s.audit(lambda r1, r2: 1 / 0)
+
+
+def test_judge_mujoco_and_the_testing_helpers(tmp_path):
+    # boxes.xml (tests/test_mujoco.cpp works it out by hand): the floor [-1,1]^2 x [-1,0] and a cube
+    # of half-extent 1/2; at z = 2 they are 3/2 apart, at z = 1/2 touching, at (1/4, 0, 3/8) 1/8 deep.
+    model = str(SRC / "tests/data/mujoco/boxes.xml")
+    rows = [r.split() for r in (SRC / "tests/data/mujoco/boxes.qpos").read_text().splitlines()
+            if r.strip() and not r.startswith("#")]
+    qpos = np.array([[float(x) for x in r] for r in rows])
+    r = scalecert.judge_mujoco(model, qpos)
+    exact = [next(p for p in f["pairs"] if p["names"] == ["floor", "cube"])["signed_distance"]["exact"]
+             for f in r["frames"]]
+    assert exact == ["1.5", "0", "-0.125"]
+    # The same report as the command's, from the same MuJoCo.
+    out = subprocess.run([CLI, "mujoco", model, "--qpos", str(SRC / "tests/data/mujoco/boxes.qpos"), "--json"],
+                         capture_output=True, text=True)
+    cli = json.loads(out.stdout)
+    assert [f["pairs"] for f in cli["frames"]] == [f["pairs"] for f in r["frames"]]
+    assert r["summary"]["wrong_pairs"] == cli["summary"]["wrong_pairs"] > 0
+    # The pytest gate: an AssertionError naming each wrong judgement, with its state.
+    import scalecert.testing as sct  # the submodule imports by its dotted name too
+    with pytest.raises(AssertionError, match="MuJoCo was wrong at .* pair state") as e:
+        sct.assert_mujoco(model, qpos, failures=str(tmp_path / "repro"))
+    assert "WRONG  state 1 (qpos[1])" in str(e.value)
+    assert "reproducers" in str(e.value) and any((tmp_path / "repro").iterdir())
+    sct.assert_mujoco(model, qpos[:1])  # 3/2 apart, no contact: right
+    with pytest.raises(scalecert.InputError, match=r"qpos\[0\]: 2 numbers; the model's qpos has 21"):
+        scalecert.judge_mujoco(model, [[0, 0]])
+    with pytest.raises(scalecert.InputError, match="keyframe 0: the model has 0 keyframes"):
+        scalecert.judge_mujoco(model, key=0)
+    # Claims: on the stacked cubes (touching on rho1 + rho2 = 3), (2, 2) overlaps.
+    sct.assert_claims(stacked(), "1 1 separated\n")
+    with pytest.raises(AssertionError, match="1 of 2 claims wrong") as e:
+        sct.assert_claims(stacked(), "1 1 separated\n2 2 not_overlapping\n")
+    assert "WRONG  (2, 2) claimed not_overlapping: exact overlapping" in str(e.value)
+
+
+def test_the_pytest_gate_example_in_the_docs(tmp_path):
+    # docs/library.md, "Gates in pytest and GoogleTest": its two tests, as written there.
+    text = (SRC / "docs/library.md").read_text()
+    code = text.split("```python\n", 1)[1].split("```", 1)[0]
+    namespace = {}
+    cwd = os.getcwd()
+    os.chdir(SRC)
+    try:
+        exec(code, namespace)
+        namespace["test_gripper_contacts"](tmp_path)
+        namespace["test_my_claims"]()
+    finally:
+        os.chdir(cwd)
