@@ -414,3 +414,69 @@ BOOST_AUTO_TEST_CASE(pose_determinant_filter_and_exact) {
     BOOST_TEST(filtered >= 950);  // of the 980 generic matrices with every entry in range
     BOOST_TEST(singular > 100);
 }
+
+BOOST_AUTO_TEST_CASE(posed_boxes_apart_filter_by_hand_and_against_rationals) {
+    using scalecert::internal::filter::boxes_certainly_apart;
+    using scalecert::internal::filter::posed_box;
+    // By hand: [-1, 1]^3 at the identity, and the same box moved 3 along x: their x gap is 1, so
+    // they are more than 1/2 apart, and not more than 1 (the gap is exactly 1: the filter is unsure).
+    const double I[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1}, z[3] = {0, 0, 0}, x3[3] = {3, 0, 0};
+    const double lo[3] = {-1, -1, -1}, hi[3] = {1, 1, 1};
+    const auto a = posed_box(I, z, lo, hi), b = posed_box(I, x3, lo, hi);
+    BOOST_TEST(boxes_certainly_apart(a, b, 0.5));
+    BOOST_TEST(boxes_certainly_apart(b, a, 0.5));
+    BOOST_TEST(!boxes_certainly_apart(a, b, 1.0));
+    // Turned a quarter about z (x -> y): the box is the same set; along y the two overlap.
+    const double Rz[9] = {0, -1, 0, 1, 0, 0, 0, 0, 1};
+    BOOST_TEST(boxes_certainly_apart(posed_box(Rz, z, lo, hi), b, 0.5));
+    // An entry out of the filter's range (a subnormal): unsure, never "apart".
+    const double tiny[3] = {0x1p-1060, 0, 0};
+    BOOST_TEST(!posed_box(I, tiny, lo, hi).ok);
+    BOOST_TEST(!boxes_certainly_apart(posed_box(I, tiny, lo, hi), b, 0.5));
+    // Against the exact world boxes in rationals: random boxes at random (non-orthogonal) poses of
+    // doubles, gaps near the margin. "Apart" is only ever said when the exact gap along some axis
+    // exceeds m.
+    std::mt19937_64 g(12);
+    std::uniform_real_distribution<double> u(-1, 1);
+    int apart = 0;
+    for (int trial = 0; trial < 4000; ++trial) {
+        double M[2][9], t[2][3], l[2][3], h[2][3];
+        for (int i = 0; i < 2; ++i) {
+            for (double& v : M[i]) v = u(g);
+            for (int k = 0; k < 3; ++k) {
+                t[i][k] = 4 * u(g);
+                l[i][k] = -std::fabs(u(g)) - 0x1p-20;
+                h[i][k] = std::fabs(u(g)) + 0x1p-20;
+            }
+        }
+        // The exact ends of each world box, and the exact largest gap over the axes.
+        Q U[2][3], L[2][3];
+        for (int i = 0; i < 2; ++i)
+            for (int r = 0; r < 3; ++r) {
+                U[i][r] = L[i][r] = exact_from_double(t[i][r]);
+                for (int c = 0; c < 3; ++c) {
+                    const Q p = exact_from_double(M[i][3 * r + c]) * exact_from_double(l[i][c]),
+                            q = exact_from_double(M[i][3 * r + c]) * exact_from_double(h[i][c]);
+                    U[i][r] += p > q ? p : q;
+                    L[i][r] += p < q ? p : q;
+                }
+            }
+        Q gap = -1000;
+        for (int r = 0; r < 3; ++r) {
+            if (L[1][r] - U[0][r] > gap) gap = L[1][r] - U[0][r];
+            if (L[0][r] - U[1][r] > gap) gap = L[0][r] - U[1][r];
+        }
+        // The margin: the exact gap rounded to a double, and nudged by an ulp either way.
+        double m = std::max(0.0, gap.get_d());
+        m = trial % 3 == 0 ? std::nextafter(m, 1e9) : trial % 3 == 1 ? std::nextafter(m, -1e9) : m;
+        if (m < 0) m = 0;
+        const bool said =
+            boxes_certainly_apart(posed_box(M[0], t[0], l[0], h[0]), posed_box(M[1], t[1], l[1], h[1]), m);
+        if (said) BOOST_TEST(gap > exact_from_double(m), trial);
+        // Far from the margin it decides: a margin half the gap.
+        if (gap > 0)
+            apart += boxes_certainly_apart(posed_box(M[0], t[0], l[0], h[0]), posed_box(M[1], t[1], l[1], h[1]),
+                                           gap.get_d() / 2);
+    }
+    BOOST_TEST(apart > 100);
+}

@@ -7,6 +7,7 @@
 #include "certify/certificate.hpp"
 #include "geometry/measures.hpp"
 #include "io/files.hpp"
+#include "numeric/predicates.hpp"
 #include "session/engine.hpp"
 
 #include <algorithm>
@@ -16,6 +17,7 @@
 #include <filesystem>
 #include <map>
 #include <memory>
+#include <optional>
 #include <set>
 
 namespace scalecert::internal::mj {
@@ -30,10 +32,6 @@ bool judged_type(int type) { return type == kBox || type == kMesh; }
 std::string shortest(double d) {
     char buf[64];
     return std::string(buf, std::to_chars(buf, buf + sizeof buf, d).ptr);
-}
-std::string shortest(float f) {
-    char buf[64];
-    return std::string(buf, std::to_chars(buf, buf + sizeof buf, f).ptr);
 }
 // A number written so that a JSON reader reading doubles (the default) gets d exactly.
 Json number(double d) { return std::isfinite(d) ? Json(d) : Json(nullptr); }
@@ -259,6 +257,23 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
         return e;
     };
     if (!opt.failures.empty()) make_output_dir(opt.failures);
+    // Each judged geom's box in its own frame (exact doubles: a box's half-sizes, a mesh's float
+    // extremes), for filter 12.
+    std::vector<std::array<double, 6>> local(m.geoms.size());
+    for (size_t g = 0; g < m.geoms.size(); ++g) {
+        const Geom& geom = m.geoms[g];
+        std::array<double, 6>& b = local[g];
+        for (int k = 0; k < 3; ++k) b[static_cast<size_t>(k)] = INFINITY, b[static_cast<size_t>(k) + 3] = -INFINITY;
+        if (geom.type == kBox)
+            for (int k = 0; k < 3; ++k)
+                b[static_cast<size_t>(k)] = -geom.size[k], b[static_cast<size_t>(k) + 3] = geom.size[k];
+        for (size_t v = 0; v + 2 < geom.vertices.size(); v += 3)
+            for (size_t k = 0; k < 3; ++k) {
+                b[k] = std::min(b[k], static_cast<double>(geom.vertices[v + k]));
+                b[k + 3] = std::max(b[k + 3], static_cast<double>(geom.vertices[v + k]));
+            }
+    }
+    long decided_by_boxes = 0;
 
     Json frames = Json::array(), unjudged = Json::array();
     std::map<std::pair<int, int>, std::string> unjudged_why;
@@ -289,6 +304,22 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
             of[{std::min(c.g1, c.g2), std::max(c.g1, c.g2)}].push_back(&c);
             if (!considered_set.count({std::min(c.g1, c.g2), std::max(c.g1, c.g2)})) ++contacts_outside;
         }
+        // Each geom's box at this state (filter 12), made when a pair first asks for it.
+        std::vector<std::optional<filter::PosedBox>> posed(m.geoms.size());
+        auto box_of = [&](int g) -> const filter::PosedBox& {
+            std::optional<filter::PosedBox>& b = posed[static_cast<size_t>(g)];
+            if (!b) {
+                double M[9], t[3], lo[3], hi[3];
+                for (size_t k = 0; k < 9; ++k) M[k] = s.xmat[9 * static_cast<size_t>(g) + k];
+                for (size_t k = 0; k < 3; ++k) {
+                    t[k] = s.xpos[3 * static_cast<size_t>(g) + k];
+                    lo[k] = local[static_cast<size_t>(g)][k];
+                    hi[k] = local[static_cast<size_t>(g)][k + 3];
+                }
+                b = filter::posed_box(M, t, lo, hi);
+            }
+            return *b;
+        };
         Json fp = Json::array();
         for (const Considered& p : pairs) {
             const Geom &ga = m.geoms[static_cast<size_t>(p.g1)], &gb = m.geoms[static_cast<size_t>(p.g2)];
@@ -309,6 +340,23 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
                 for (const Contact* c : cs->second)
                     if (!deepest || c->dist < deepest->dist || std::isnan(c->dist)) deepest = c;
             const int a = deepest ? deepest->g1 : p.g1, b = deepest ? deepest->g2 : p.g2;
+            // No contact, and the geoms' boxes more than the margin apart: right, without the
+            // exact distance (filter 12).
+            if (why.empty() && !deepest && finite_state(s, a) && finite_state(s, b) &&
+                filter::boxes_certainly_apart(box_of(a), box_of(b), p.margin)) {
+                ++judgements;
+                ++decided_by_boxes;
+                fp.push_back(
+                    Json{{"geom1", a},
+                         {"geom2", b},
+                         {"names",
+                          Json::array({m.geoms[static_cast<size_t>(a)].name, m.geoms[static_cast<size_t>(b)].name})},
+                         {"margin", p.margin},
+                         {"contacts", 0},
+                         {"verdict", Json{{"said", "no contact"}, {"exact", "separated"}, {"right", true}}},
+                         {"signed_distance", Json{{"decided_by", "their boxes, more than the margin apart"}}}});
+                continue;
+            }
             PairEngine* pe = nullptr;
             if (why.empty()) {
                 pe = &engine_for(a, b);
@@ -487,6 +535,7 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
                  {"contacts_unjudged", contacts_unjudged},
                  {"contacts_outside_considered_pairs", contacts_outside},
                  {"verdicts_unjudged_buffer_full", verdicts_unjudged},
+                 {"decided_by_boxes", decided_by_boxes},
                  {"mujoco_warnings", res.warnings.size()},
                  {"worst_dist_error_m", worst_dist},
                  {"wrong_verdicts", std::move(wrong_list)}};

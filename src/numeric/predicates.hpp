@@ -32,6 +32,7 @@
 //      truncated doubles widened by one ulp, and the interval decides a sign or an order only
 //      when it excludes the other.
 //  11. pose_certainly_nonsingular  det R ≠ 0 for a pose              (io/scene.cpp, pose_singular)
+//  12. boxes_certainly_apart   two posed boxes more than m apart along an axis (engines/mujoco_judge.cpp)
 //
 // Notation: u = 2^-53 (the unit roundoff of double), γ_n = n·u / (1 − n·u) (Higham): a sum of n
 // rounded products, or a product of n rounded factors, is within γ_n of the exact value
@@ -40,11 +41,13 @@
 #include "numeric/double3.hpp"
 #include "numeric/small_int.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace scalecert::internal::filter {
@@ -224,6 +227,65 @@ inline bool pose_certainly_nonsingular(const double (&a)[3][3]) {
                      m(0, 1) * (m(1, 0) * m(2, 2) + m(1, 2) * m(2, 0)) +
                      m(0, 2) * (m(1, 0) * m(2, 1) + m(1, 1) * m(2, 0));
     return std::fabs(d) > kPoseDetRel * p;
+}
+
+// 12. Two posed boxes apart by more than m ≥ 0 (engines/mujoco_judge.cpp: a geom pair without a
+//    contact, its signed distance at least the margin m, decided without the exact distance).
+//    A box [lo, hi] (exact doubles) at a pose [M | t] (exact doubles) lies in the world box whose
+//    upper end along axis i is U_i = t_i + Σ_j max(M_ij lo_j, M_ij hi_j) and lower end L_i = t_i +
+//    Σ_j min(…), exactly; every point of the posed box is between them, whatever M is. With every
+//    input 0 or of magnitude in [2^-250, 2^250] (else unsure) each product is normal and no sum
+//    overflows, so each computed end carries each term through at most four roundings (the
+//    product, three sums): |Ũ_i − U_i| ≤ γ4·S_i with S_i = |t_i| + Σ_j max|M_ij b_j|, and the
+//    computed S̃_i ≥ (1 − γ4)·S_i. If another box's lower end exceeds this one's upper end by more
+//    than m along an axis, the two are more than m apart (the distance of two sets is at least the
+//    gap of their projections). The filter forms T = fl(fl(L̃'_i − Ũ_i) − m) (two roundings, within
+//    γ2 of the exact difference relative to |L̃'| + |Ũ| + m) and answers "apart by more than m" when
+//    T > kBoxRel·fl(|L̃'_i| + |Ũ_i| + m + S̃_i + S̃'_i) (five roundings): kBoxRel is above 100 times
+//    the largest of those relative errors, each divided by what the roundings of the bound lose;
+//    2^-1000 more covers a rounding of a subnormal difference (each within 2^-1075).
+constexpr double kBoxRel = 0x1p-40;
+static_assert(kBoxRel > 100 * (gamma(2) + gamma(4) / (1 - gamma(4))) / (1 - gamma(5)), "posed box bound");
+// A box at a pose, enclosed (filter 12): the computed ends lo, hi and magnitudes s per world axis;
+// ok false when an input is out of the filter's range.
+struct PosedBox {
+    double lo[3], hi[3], s[3];
+    bool ok = false;
+};
+inline PosedBox posed_box(const double (&M)[9], const double (&t)[3], const double (&lo)[3], const double (&hi)[3]) {
+    PosedBox b;
+    auto in_range = [](double x) { return x == 0 || (std::fabs(x) >= kPoseEntryMin && std::fabs(x) <= kPoseEntryMax); };
+    for (int k = 0; k < 9; ++k)
+        if (!in_range(M[k])) return b;
+    for (int k = 0; k < 3; ++k)
+        if (!in_range(t[k]) || !in_range(lo[k]) || !in_range(hi[k])) return b;
+    for (int i = 0; i < 3; ++i) {
+        double u = t[i], l = t[i], s = std::fabs(t[i]);
+        for (int j = 0; j < 3; ++j) {
+            const double a = M[3 * i + j] * lo[j], c = M[3 * i + j] * hi[j];
+            u += std::max(a, c);
+            l += std::min(a, c);
+            s += std::max(std::fabs(a), std::fabs(c));
+        }
+        b.hi[i] = u;
+        b.lo[i] = l;
+        b.s[i] = s;
+    }
+    b.ok = true;
+    return b;
+}
+// true when the posed boxes a and b are certainly more than m ≥ 0 apart (filter 12), false when unsure.
+inline bool boxes_certainly_apart(const PosedBox& a, const PosedBox& b, double m) {
+    if (!a.ok || !b.ok || !(m >= 0) || m > kPoseEntryMax) return false;
+    for (int i = 0; i < 3; ++i)
+        for (const auto& [below, above] : {std::pair{&a, &b}, std::pair{&b, &a}}) {
+            const double T = (above->lo[i] - below->hi[i]) - m;
+            const double B =
+                kBoxRel * (std::fabs(above->lo[i]) + std::fabs(below->hi[i]) + m + above->s[i] + below->s[i]) +
+                0x1p-1000;
+            if (T > B) return true;
+        }
+    return false;
 }
 
 // ---- Statistics: one counter pair per predicate, per deciding object -------------------------
