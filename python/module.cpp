@@ -1147,21 +1147,35 @@ scalecert::MujocoJudgement mujoco_judgement(const py::handle& model, const py::h
     o.tolerance = rational(tolerance, "tolerance");
     o.abs_tolerance = rational(abs_tolerance, "abs_tolerance");
     if (!key.is_none()) o.key = count_arg(key, "key", 0, 1 << 30);
-    if (!failures.is_none()) o.failures = path_arg(failures, "failures");
+    if (!failures.is_none()) {
+        o.failures = path_arg(failures, "failures");
+        if (o.failures.empty()) throw scalecert::InputError("failures: an empty path (give None for no reproducers)");
+    }
     std::vector<std::vector<double>> states;
     if (!qpos.is_none()) {
-        const py::list rows = as_list(qpos, "qpos");
-        for (size_t i = 0; i < rows.size(); ++i) {
-            const std::string what = "qpos[" + std::to_string(i) + "]";
-            const py::list row = as_list(rows[i], what);
-            std::vector<double> q;
-            for (const py::handle x : row) {
-                if (py::isinstance<py::bool_>(x) ||
-                    !(py::isinstance<py::float_>(x) || py::isinstance<py::int_>(x) || py::hasattr(x, "__float__")))
-                    throw scalecert::InputError(what + ": expected numbers");
-                q.push_back(py::cast<double>(x));
+        // Rows of real numbers (ints, floats, numpy's), each the double a program holds: no bool,
+        // bytes, complex, or number beyond the doubles.
+        const py::object real = py::module_::import("numbers").attr("Real");
+        try {
+            const py::list rows = as_list(qpos, "qpos");
+            for (size_t i = 0; i < rows.size(); ++i) {
+                const std::string what = "qpos[" + std::to_string(i) + "]";
+                if (py::isinstance<py::bytes>(rows[i]) || py::isinstance<py::bytearray>(rows[i]))
+                    throw scalecert::InputError(what + ": expected a row of numbers, not bytes");
+                const py::list row = as_list(rows[i], what);
+                std::vector<double> q;
+                for (const py::handle x : row) {
+                    if (py::isinstance<py::bool_>(x) || !py::isinstance(x, real))
+                        throw scalecert::InputError(what + ": expected real numbers");
+                    const double d = py::float_(py::reinterpret_borrow<py::object>(x)).cast<double>();
+                    if (!std::isfinite(d)) throw scalecert::InputError(what + ": a qpos of finite numbers only");
+                    q.push_back(d);
+                }
+                states.push_back(std::move(q));
             }
-            states.push_back(std::move(q));
+        } catch (const py::error_already_set& e) {
+            if (!argument_error(e)) throw;
+            throw scalecert::InputError("qpos: not rows of numbers a double holds (" + std::string(e.what()) + ")");
         }
         if (states.empty()) throw scalecert::InputError("qpos: no state (give None for qpos0)");
     }
@@ -1189,6 +1203,11 @@ void bind_mujoco_and_testing(py::module_& m) {
         [](const py::handle& model, const py::handle& qpos, const py::handle& key, const py::handle& tolerance,
            const py::handle& abs_tolerance, const py::handle& failures) {
             const scalecert::MujocoJudgement j = mujoco_judgement(model, qpos, key, tolerance, abs_tolerance, failures);
+            if (j.judgements == 0) {  // a gate that checked nothing fails
+                PyErr_SetString(PyExc_AssertionError,
+                                ("scalecert: nothing of the model was judged:\n" + j.text).c_str());
+                throw py::error_already_set();
+            }
             if (j.wrong_pairs == 0) return;
             std::string msg = "scalecert: MuJoCo was wrong at " + std::to_string(j.wrong_pairs) + " pair state" +
                               (j.wrong_pairs == 1 ? "" : "s") + ":\n" + j.text;
@@ -1202,14 +1221,20 @@ void bind_mujoco_and_testing(py::module_& m) {
         "judge_mujoco, raising AssertionError with each wrong judgement when any is wrong");
     t.def(
         "assert_claims",
-        [](const PyScene& s, const py::handle& claims, const py::handle& tolerance, const py::handle& abs_tolerance,
-           const py::handle& numbers) {
+        [](const py::handle& scene, const py::handle& claims, const py::handle& tolerance,
+           const py::handle& abs_tolerance, const py::handle& numbers) {
+            if (!py::isinstance<PyScene>(scene)) throw scalecert::InputError("scene: expected a scalecert.Scene");
+            const PyScene& s = scene.cast<const PyScene&>();
             scalecert::ClaimOptions opt;
             opt.numbers = numbers.is_none() ? s.numbers : numbers_arg(numbers);
             opt.tolerance = rational(tolerance, "tolerance");
             opt.abs_tolerance = rational(abs_tolerance, "abs_tolerance");
             opt.json = false;
             const scalecert::ClaimReport r = s.a().certify_fp(claims_text(claims), opt);
+            if (r.claims == 0) {  // a gate that checked nothing fails
+                PyErr_SetString(PyExc_AssertionError, "scalecert: no claims to judge");
+                throw py::error_already_set();
+            }
             if (r.wrong == 0) return;
             std::string msg =
                 "scalecert: " + std::to_string(r.wrong) + " of " + std::to_string(r.claims) + " claims wrong:\n";

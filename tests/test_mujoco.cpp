@@ -213,6 +213,11 @@ BOOST_AUTO_TEST_CASE(bad_input_is_one_line) {
       <geom type="mesh" mesh="m"/></worldbody></mujoco>)")
             .string(),
         "is not a regular file: MuJoCo would open it");
+    // The same in single quotes and with spaces around '=' (both XML).
+    bad(write("fifomesh2.xml", R"(<mujoco><asset><mesh name='m' file = 'mesh.stl'/></asset><worldbody>
+      <geom type="mesh" mesh="m"/></worldbody></mujoco>)")
+            .string(),
+        "is not a regular file: MuJoCo would open it");
     const fs::path fifo = workdir() / "model.fifo";
     fs::remove(fifo);
     BOOST_TEST_REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);

@@ -3,8 +3,12 @@
 // include it where the tests use GoogleTest, and link scalecert::core and GTest.
 //
 //   TEST(Gripper, MuJoCoIsRight) {
-//       EXPECT_MUJOCO_RIGHT("gripper.xml", states, {.abs_tolerance = scalecert::parse_rational("1e-9")});
+//       scalecert::MujocoOptions o;
+//       o.abs_tolerance = scalecert::parse_rational("1e-9");
+//       EXPECT_MUJOCO_RIGHT("gripper.xml", states, o);
 //   }
+//
+// A gate that judged nothing (a model of spheres alone, an empty claims file) fails too.
 #pragma once
 #include "scalecert/scalecert.hpp"
 
@@ -20,6 +24,8 @@ inline ::testing::AssertionResult MujocoIsRight(const std::string& model,
                                                 const std::vector<std::vector<double>>& qpos = {},
                                                 const MujocoOptions& options = {}) {
     const MujocoJudgement j = judge_mujoco(model, qpos, options);
+    if (j.judgements == 0)
+        return ::testing::AssertionFailure() << "scalecert: nothing of the model was judged:\n" << j.text;
     if (j.wrong_pairs == 0) return ::testing::AssertionSuccess();
     ::testing::AssertionResult r = ::testing::AssertionFailure();
     r << "scalecert: MuJoCo was wrong at " << j.wrong_pairs << " pair state" << (j.wrong_pairs == 1 ? "" : "s") << ":\n"
@@ -34,6 +40,7 @@ inline ::testing::AssertionResult ClaimsAreRight(const Scene& scene, const std::
                                                  ClaimOptions options = {}) {
     options.json = false;
     const ClaimReport r = Analysis(scene).certify_fp(claims, options);
+    if (r.claims == 0) return ::testing::AssertionFailure() << "scalecert: no claims to judge";
     if (r.wrong == 0) return ::testing::AssertionSuccess();
     ::testing::AssertionResult f = ::testing::AssertionFailure();
     f << "scalecert: " << r.wrong << " of " << r.claims << " claims wrong:\n";

@@ -306,6 +306,7 @@ struct MujocoJudgement {
     std::string json;      // the report (format scalecert-mujoco-1), the bytes `scalecert mujoco --json` writes
     std::string text;      // a line per wrong judgement, then the summary
     long wrong_pairs = 0;  // pair states with a wrong judgement
+    long judgements = 0;   // judgements made (0: nothing of the model could be judged)
 };
 MujocoJudgement judge_mujoco(const std::string& model, const std::vector<std::vector<double>>& qpos = {},
                              const MujocoOptions& options = {});

@@ -967,6 +967,24 @@ def test_judge_mujoco_and_the_testing_helpers(tmp_path):
         scalecert.judge_mujoco(model, [[0, 0]])
     with pytest.raises(scalecert.InputError, match="keyframe 0: the model has 0 keyframes"):
         scalecert.judge_mujoco(model, key=0)
+    # Bad rows are input errors, not a crash or a wrong cast: past the doubles, bytes, complex.
+    g = [0, 0, 2, 1, 0, 0, 0, 5, 0, 0, 1, 0, 0, 0, -5, 0, 0, 1, 0, 0, 0]
+    for bad, why in [([g[:-1] + [10**400]], "not rows of numbers a double holds"), ([bytes(21)], "not bytes"),
+                     ([g[:-1] + [np.complex128(1)]], "expected real numbers"), ([g[:-1] + [True]], "expected real")]:
+        with pytest.raises(scalecert.InputError, match=why):
+            scalecert.judge_mujoco(model, bad)
+    with pytest.raises(scalecert.InputError, match="failures: an empty path"):
+        scalecert.judge_mujoco(model, failures="")
+    with pytest.raises(scalecert.InputError, match="scene: expected a scalecert.Scene"):
+        sct.assert_claims(None, "1 1 separated\n")
+    # A gate that judged nothing fails: a model of two spheres (nothing judged yet), no claims.
+    spheres = tmp_path / "spheres.xml"
+    spheres.write_text('<mujoco><worldbody><geom type="sphere" size="1"/><body><freejoint/>'
+                       '<geom type="sphere" size="1"/></body></worldbody></mujoco>')
+    with pytest.raises(AssertionError, match="nothing of the model was judged"):
+        sct.assert_mujoco(str(spheres))
+    with pytest.raises(AssertionError, match="no claims to judge"):
+        sct.assert_claims(stacked(), "")
     # Claims: on the stacked cubes (touching on rho1 + rho2 = 3), (2, 2) overlaps.
     sct.assert_claims(stacked(), "1 1 separated\n")
     with pytest.raises(AssertionError, match="1 of 2 claims wrong") as e:

@@ -15,7 +15,7 @@ MujocoJudgement judge_mujoco(const std::string& model, const std::vector<std::ve
     const mj::MujocoResult r = mj::judge_states(
         *m, states, labels,
         mj::MujocoOptions{Tolerance{options.tolerance, options.abs_tolerance}, model, options.failures});
-    return {dump(r.report), r.text, r.wrong};
+    return {dump(r.report), r.text, r.wrong, r.report["summary"]["judgements"].get<long>()};
 }
 
 }  // namespace scalecert

@@ -340,6 +340,11 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
                 for (const Contact* c : cs->second)
                     if (!deepest || c->dist < deepest->dist || std::isnan(c->dist)) deepest = c;
             const int a = deepest ? deepest->g1 : p.g1, b = deepest ? deepest->g2 : p.g2;
+            PairEngine* pe = nullptr;
+            if (why.empty()) {
+                pe = &engine_for(a, b);
+                if (!pe->why_not.empty()) why = pe->why_not;
+            }
             // No contact, and the geoms' boxes more than the margin apart: right, without the
             // exact distance (filter 12).
             if (why.empty() && !deepest && finite_state(s, a) && finite_state(s, b) &&
@@ -356,11 +361,6 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
                          {"verdict", Json{{"said", "no contact"}, {"exact", "separated"}, {"right", true}}},
                          {"signed_distance", Json{{"decided_by", "their boxes, more than the margin apart"}}}});
                 continue;
-            }
-            PairEngine* pe = nullptr;
-            if (why.empty()) {
-                pe = &engine_for(a, b);
-                if (!pe->why_not.empty()) why = pe->why_not;
             }
             if (why.empty() && (!finite_state(s, a) || !finite_state(s, b)))
                 why = "the geoms' poses are not finite at this state";

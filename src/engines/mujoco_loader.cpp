@@ -68,14 +68,23 @@ void refuse_files_that_block(const std::string& path, int depth = 0) {
     const std::string text = read_input(path, "model file", kMaxSceneBytes);
     if (depth > 16) throw InputError(path + ": <include>s nested past 16 levels");
     const std::filesystem::path dir = std::filesystem::path(path).parent_path();
+    // The next value of attribute `name` from `from` on: name, spaces, '=', spaces, then a value
+    // in double or single quotes (XML allows both); `at` is left after it.
     auto attribute = [&](const std::string& name, size_t from, size_t& at) -> std::optional<std::string> {
-        const std::string key = name + "=\"";
-        at = text.find(key, from);
-        if (at == std::string::npos) return std::nullopt;
-        const size_t b = at + key.size(), e = text.find('"', b);
-        if (e == std::string::npos) return std::nullopt;
-        at = e;
-        return text.substr(b, e - b);
+        auto space = [](char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; };
+        for (size_t k = text.find(name, from); k != std::string::npos; k = text.find(name, k + 1)) {
+            if (k > 0 && !space(text[k - 1])) continue;  // part of another name
+            size_t i = k + name.size();
+            while (i < text.size() && space(text[i])) ++i;
+            if (i == text.size() || text[i] != '=') continue;
+            for (++i; i < text.size() && space(text[i]); ++i) {}
+            if (i == text.size() || (text[i] != '"' && text[i] != '\'')) continue;
+            const size_t e = text.find(text[i], i + 1);
+            if (e == std::string::npos) return std::nullopt;
+            at = e;
+            return text.substr(i + 1, e - i - 1);
+        }
+        return std::nullopt;
     };
     std::vector<std::filesystem::path> dirs{dir};
     for (const char* d : {"meshdir", "texturedir", "assetdir"})
