@@ -7,7 +7,6 @@
 
 #include <memory>
 #include <optional>
-#include <tuple>
 
 namespace scalecert::cli {
 
@@ -61,43 +60,35 @@ Command add_certify_fp(CLI::App& app) {
             "  scalecert certify-fp certificates/scenes/stacked_cubes.json examples/claims.json --tolerance 1e-12\n"
             "  scalecert certify-fp tests/data/compound_band.json tests/data/compound_band_claims.json   # objects "
             "made of parts");
-    return {
-        sub, [a] {
-            a->scene.shift_positionals({&a->claims});
-            if (a->claims.empty()) throw InputError("CLAIMS is required (see scalecert certify-fp --help)");
-            internal::refuse_outputs_over_inputs({a->out, a->certificate},
-                                                 {a->claims, a->scene.path, a->scene.mesh[0], a->scene.mesh[1]});
-            // The tolerances first: a mistyped one is said before a large scene is read.
-            ClaimOptions opt{a->scene.opt.numbers, Q(0), a->json};
-            for (auto [text, value, flag] : {std::tuple{&a->tolerance, &opt.tolerance, "--tolerance"},
-                                             std::tuple{&a->abs_tolerance, &opt.abs_tolerance, "--abs-tolerance"}}) {
-                try {
-                    *value = parse_exact(*text);
-                } catch (const InputError& e) {
-                    throw InputError(std::string(flag) + ": " + e.what());
+    return {sub, [a] {
+                a->scene.shift_positionals({&a->claims});
+                if (a->claims.empty()) throw InputError("CLAIMS is required (see scalecert certify-fp --help)");
+                internal::refuse_outputs_over_inputs({a->out, a->certificate},
+                                                     {a->claims, a->scene.path, a->scene.mesh[0], a->scene.mesh[1]});
+                // The tolerances first: a mistyped one is said before a large scene is read.
+                ClaimOptions opt{a->scene.opt.numbers, Q(0), a->json};
+                opt.tolerance = read_tolerance(a->tolerance, "--tolerance");
+                opt.abs_tolerance = read_tolerance(a->abs_tolerance, "--abs-tolerance");
+                StageClock clock;
+                // A scene of parts goes to the compound judge; a plain one to the session.
+                a->scene.opt.allow_parts = true;
+                std::unique_ptr<SceneEngine> engine = open_engine(a->scene, Engine::Auto, clock);
+                const std::string claims = read_input(a->claims, "claims file", kMaxSceneBytes);
+                long wrong = 0;
+                std::string certificate;
+                std::string* cert = a->certificate.empty() ? nullptr : &certificate;
+                const std::unique_ptr<ClaimRules> rules = engine->rules({opt.tolerance, opt.abs_tolerance});
+                const std::string report = certify_fp(*rules, claims, a->claims, opt, &wrong, nullptr, cert);
+                if (a->certificate.empty())
+                    emit(report, a->out);
+                else if (a->out.empty()) {
+                    write_file_atomically(a->certificate, certificate);
+                    emit(report, a->out);
+                } else {
+                    write_files_atomically({{a->certificate, certificate}, {a->out, report}});
                 }
-                if (sgn(*value) < 0) throw InputError(std::string(flag) + " must be >= 0");
-            }
-            StageClock clock;
-            // A scene of parts goes to the compound judge; a plain one to the session.
-            a->scene.opt.allow_parts = true;
-            std::unique_ptr<SceneEngine> engine = open_engine(a->scene, Engine::Auto, clock);
-            const std::string claims = read_input(a->claims, "claims file", kMaxSceneBytes);
-            long wrong = 0;
-            std::string certificate;
-            std::string* cert = a->certificate.empty() ? nullptr : &certificate;
-            const std::unique_ptr<ClaimRules> rules = engine->rules({opt.tolerance, opt.abs_tolerance});
-            const std::string report = certify_fp(*rules, claims, a->claims, opt, &wrong, nullptr, cert);
-            if (a->certificate.empty())
-                emit(report, a->out);
-            else if (a->out.empty()) {
-                write_file_atomically(a->certificate, certificate);
-                emit(report, a->out);
-            } else {
-                write_files_atomically({{a->certificate, certificate}, {a->out, report}});
-            }
-            return wrong > 0 ? 1 : 0;
-        }};
+                return wrong > 0 ? 1 : 0;
+            }};
 }
 
 }  // namespace scalecert::cli

@@ -284,4 +284,15 @@ std::string& program_path() {
     return path;
 }
 
+Q read_tolerance(const std::string& text, const char* option) {
+    Q v;
+    try {
+        v = internal::parse_exact(text);
+    } catch (const InputError& e) {
+        throw InputError(std::string(option) + ": " + e.what());
+    }
+    if (sgn(v) < 0) throw InputError(std::string(option) + " must be >= 0");
+    return v;
+}
+
 }  // namespace scalecert::cli

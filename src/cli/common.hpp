@@ -55,6 +55,8 @@ void emit(const std::string& text, const std::string& out);
 
 Q read_rho(const std::string& text, const char* name, const ReadOptions& opt);
 // "A,B" or "A,B,C": numbers separated by commas, read as the scene reader reads them.
+// A tolerance option's text (--tolerance, --abs-tolerance): exact, >= 0; InputError naming the option.
+Q read_tolerance(const std::string& text, const char* option);
 std::vector<Q> number_list(const std::string& text, size_t n, const std::string& option, const ReadOptions& opt);
 // The path this command was run by (argv[0]) when it names a folder ("build/scalecert"), else
 // "scalecert": how the commands it writes for the user to replay name it. Set by main.

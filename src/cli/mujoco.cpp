@@ -10,7 +10,6 @@
 #include <iostream>
 #include <map>
 #include <sstream>
-#include <tuple>
 
 namespace scalecert::cli {
 
@@ -84,16 +83,8 @@ Command add_mujoco(CLI::App& app) {
             if (a->key >= 0 && !a->qpos.empty()) throw InputError("give --qpos or --key, not both");
             if (a->key < 0 && sub->count("--key") > 0)
                 throw InputError("--key " + std::to_string(a->key) + ": a keyframe is numbered from 0");
-            Tolerance tol;
-            for (auto [text, value, flag] : {std::tuple{&a->tolerance, &tol.rel, "--tolerance"},
-                                             std::tuple{&a->abs_tolerance, &tol.abs, "--abs-tolerance"}}) {
-                try {
-                    *value = parse_exact(*text);
-                } catch (const InputError& e) {
-                    throw InputError(std::string(flag) + ": " + e.what());
-                }
-                if (sgn(*value) < 0) throw InputError(std::string(flag) + " must be >= 0");
-            }
+            const Tolerance tol{read_tolerance(a->tolerance, "--tolerance"),
+                                read_tolerance(a->abs_tolerance, "--abs-tolerance")};
             internal::refuse_outputs_over_inputs({a->out}, {a->model, a->qpos});
             internal::note_inputs({a->model, a->qpos});
             std::unique_ptr<mj::Loaded> m = mj::load_model(a->model);

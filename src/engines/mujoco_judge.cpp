@@ -29,10 +29,6 @@ constexpr int kEnableOverride = 1 << 0;       // mjENBL_OVERRIDE
 
 bool judged_type(int type) { return type == kBox || type == kMesh; }
 
-std::string shortest(double d) {
-    char buf[64];
-    return std::string(buf, std::to_chars(buf, buf + sizeof buf, d).ptr);
-}
 // A number written so that a JSON reader reading doubles (the default) gets d exactly.
 Json number(double d) { return std::isfinite(d) ? Json(d) : Json(nullptr); }
 // A double (or a float's value) as a hex float in a JSON string: exact under every reading.
@@ -415,8 +411,9 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
                                           {"margin", p.margin}});
                 text += "WRONG  state " + std::to_string(f) + " (" + labels[f] + "): " + geom_label(m, a) + " and " +
                         geom_label(m, b) + ": " + (deepest ? "a contact" : "no contact") + " within the margin " +
-                        shortest(p.margin) + ", but the signed distance is ~" +
-                        shortest(signed_double(ex.sign(), ex.exact_squared)) + " m (" + verdict_name(ex.exact) + ")\n";
+                        to_shortest(p.margin) + ", but the signed distance is ~" +
+                        to_shortest(signed_double(ex.sign(), ex.exact_squared)) + " m (" + verdict_name(ex.exact) +
+                        ")\n";
             }
             if (deepest) {
                 TypedClaim dist = base;
@@ -438,8 +435,8 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
                 claims.push_back(dist);
                 if (!dj.right)
                     text += "WRONG  state " + std::to_string(f) + " (" + labels[f] + "): " + geom_label(m, a) +
-                            " and " + geom_label(m, b) + ": dist " + shortest(deepest->dist) + ", exact ~" +
-                            shortest(signed_double(ex.sign(), ex.exact_squared)) + " m (off by " + shortest(err) +
+                            " and " + geom_label(m, b) + ": dist " + to_shortest(deepest->dist) + ", exact ~" +
+                            to_shortest(signed_double(ex.sign(), ex.exact_squared)) + " m (off by " + to_shortest(err) +
                             " m)\n";
                 const Vec3q n{exact_from_double(deepest->frame[0]), exact_from_double(deepest->frame[1]),
                               exact_from_double(deepest->frame[2])};
@@ -550,8 +547,8 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
     text += "states: " + std::to_string(states.size()) + ", pairs considered: " + std::to_string(pairs.size()) +
             " (unjudged: " + std::to_string(sm["pairs_unjudged"].get<long>()) +
             "), judgements: " + std::to_string(judgements) + ", wrong: " + std::to_string(res.wrong) +
-            " pair states (" + std::to_string(wrong_verdicts) + " verdicts), worst dist error " + shortest(worst_dist) +
-            " m\n";
+            " pair states (" + std::to_string(wrong_verdicts) + " verdicts), worst dist error " +
+            to_shortest(worst_dist) + " m\n";
     for (const Json& u : res.report["unjudged"])
         text += "unjudged: " + geom_label(m, u["geom1"].get<int>()) + " and " + geom_label(m, u["geom2"].get<int>()) +
                 ": " + u["why"].get<std::string>() + "\n";
