@@ -178,7 +178,10 @@ struct ClaimReport {
 };
 // One claim of a floating-point program, typed (the JSON kinds of CLAIMS.md, minus curves):
 // the fields its kind uses. A double's claim is its exact value: exact(x).
-enum class ClaimKind { Verdict, SeparatingPlane, WitnessPoint, Distance, PenetrationDepth };
+enum class ClaimKind { Verdict, SeparatingPlane, WitnessPoint, Distance, PenetrationDepth, SignedDistance };
+// What a SignedDistance claim says of the exact signed distance S (CLAIMS.md, "Signed distances"):
+// S is the value, S >= the value (no contact within a margin), or S < the value (a contact).
+enum class SignedBound { Value, AtLeast, Below };
 // A claimed verdict: one of the exact three, intersecting (overlapping or touching: what a
 // collision test that answers yes or no claims), or not overlapping (separated or touching: what
 // an engine that reports no contact at margin 0 claims).
@@ -191,7 +194,8 @@ struct Claim {
     Point normal{};                                      // SeparatingPlane
     std::optional<Rational> offset;                      // SeparatingPlane
     Point point{};                                       // WitnessPoint
-    Rational value = 0;                                  // Distance, PenetrationDepth
+    Rational value = 0;                                  // Distance, PenetrationDepth, SignedDistance
+    SignedBound bound = SignedBound::Value;              // SignedDistance
     std::optional<std::array<Point, 2>> closest;         // Distance: on P1, on P2
     std::optional<Point> direction;                      // PenetrationDepth
     // PenetrationDepth on objects made of parts: the part pair it speaks of (a contact, as FCL and
@@ -210,10 +214,12 @@ struct Claim {
 struct Judgement {
     bool right = false;
     std::optional<bool> value_right, closest_right, direction_right;  // distances, depths
-    std::optional<Rational> exact_squared;  // distances, depths (none: a depth claimed of a separated pair)
-    double exact = 0;                       // √exact_squared, correctly rounded (MPFR)
-    double rel_error = 0;  // |value − exact| / exact, MPFR-rounded (0 when both are 0; inf when only exact is)
-    std::optional<Verdict> exact_verdict;  // verdicts
+    // Distances, depths, signed distances (none: a depth claimed of a separated pair); a signed
+    // distance's is D² apart, P² overlapping (its sign is exact_verdict's).
+    std::optional<Rational> exact_squared;
+    double exact = 0;  // √exact_squared, correctly rounded (MPFR); a signed distance's with its sign
+    double rel_error = 0;  // |value − exact| / |exact|, MPFR-rounded (0 when both are 0; inf when only exact is)
+    std::optional<Verdict> exact_verdict;  // verdicts, signed distances
     std::string reason;                    // a claim with no answer: the field and why ("value: not a number")
     // Objects made of parts: the part pair the exact answer rests on (a verdict's meeting pair, a
     // distance's closest pair, a depth's pair), −1 for none; their names ("" for a part without one).

@@ -430,6 +430,13 @@ internal::TypedClaim typed_claim(const Claim& c, size_t i, const internal::Claim
         t.value = canonical_q(c.value);
         if (c.direction) t.direction = nonzero(*c.direction, "direction");
         break;
+    case ClaimKind::SignedDistance:
+        t.type = ClaimType::SignedDistance;
+        t.value = canonical_q(c.value);
+        t.bound = c.bound == SignedBound::AtLeast ? internal::TypedClaim::Bound::AtLeast
+                  : c.bound == SignedBound::Below ? internal::TypedClaim::Bound::Below
+                                                  : internal::TypedClaim::Bound::Value;
+        break;
     }
     return t;
 }
@@ -456,10 +463,17 @@ Judgement public_judgement(const internal::TypedClaim& c, const internal::Judged
     if (const std::optional<Q> e = g.exact_squared()) {
         j.exact_squared = *e;
         j.exact = sqrt_minus_rn(*e, Q(0));
-        // |value − exact| / exact, MPFR-rounded; relative to an exact 0: 0 for a claimed 0, else inf.
-        j.rel_error = sgn(*e) ? relative_sqrt_error_rn(*e, c.value) : sgn(c.value) == 0 ? 0.0 : INFINITY;
+        // A signed distance σ·√E: |value − σ√E| = |σ·value − √E| for σ = ±1 (E = 0 when σ = 0).
+        const auto* sd = g.get<internal::SignedDistanceJudged>();
+        const int sigma = sd ? sd->sign() : 1;
+        if (sigma < 0) j.exact = -j.exact;
+        // |value − exact| / |exact|, MPFR-rounded; relative to an exact 0: 0 for a claimed 0, else inf.
+        j.rel_error = sgn(*e) ? relative_sqrt_error_rn(*e, sigma < 0 ? Q(-c.value) : c.value)
+                      : sgn(c.value) == 0 ? 0.0
+                                          : INFINITY;
     }
-    if (c.type == internal::ClaimType::Verdict) j.exact_verdict = g.exact_verdict();
+    if (c.type == internal::ClaimType::Verdict || c.type == internal::ClaimType::SignedDistance)
+        j.exact_verdict = g.exact_verdict();
     if (!c.no_answer.empty()) j.reason = c.no_answer + ": " + c.no_answer_reason;
     return j;
 }
