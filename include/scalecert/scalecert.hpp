@@ -217,7 +217,7 @@ struct Judgement {
     // Distances, depths, signed distances (none: a depth claimed of a separated pair); a signed
     // distance's is D² apart, P² overlapping (its sign is exact_verdict's).
     std::optional<Rational> exact_squared;
-    double exact = 0;  // √exact_squared, correctly rounded (MPFR); a signed distance's with its sign
+    double exact = 0;      // √exact_squared, correctly rounded (MPFR); a signed distance's with its sign
     double rel_error = 0;  // |value − exact| / |exact|, MPFR-rounded (0 when both are 0; inf when only exact is)
     std::optional<Verdict> exact_verdict;  // verdicts, signed distances
     std::string reason;                    // a claim with no answer: the field and why ("value: not a number")

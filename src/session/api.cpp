@@ -468,7 +468,7 @@ Judgement public_judgement(const internal::TypedClaim& c, const internal::Judged
         const int sigma = sd ? sd->sign() : 1;
         if (sigma < 0) j.exact = -j.exact;
         // |value − exact| / |exact|, MPFR-rounded; relative to an exact 0: 0 for a claimed 0, else inf.
-        j.rel_error = sgn(*e) ? relative_sqrt_error_rn(*e, sigma < 0 ? Q(-c.value) : c.value)
+        j.rel_error = sgn(*e)             ? relative_sqrt_error_rn(*e, sigma < 0 ? Q(-c.value) : c.value)
                       : sgn(c.value) == 0 ? 0.0
                                           : INFINITY;
     }

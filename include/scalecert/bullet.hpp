@@ -1,0 +1,179 @@
+// Bullet as it runs: Bullet's contact manifolds and its GJK/EPA results as scalecert claims, at the
+// transforms the program used (docs/library.md, "FCL and Bullet as they run"; the conventions:
+// certificates/CLAIMS.md, "Engines' conventions"). Header-only; include it where the program has
+// Bullet, and link scalecert::core and Bullet.
+//
+//   world.performDiscreteCollisionDetection();
+//   const btPersistentManifold& m = *dispatcher.getManifoldByIndexInternal(0);
+//   scalecert::Analysis a(scalecert::bullet_scene(m));
+//   auto j = a.certify(scalecert::bullet_claims(m));
+//
+// P1 is body 0 (A), P2 body 1 (B), each its shape in its own frame; every claim carries the two
+// world transforms as poses, their btScalars read exactly. btConvexHullShape (its points as
+// scaled, as Bullet collides them) and btBoxShape are judged, with a collision margin of 0: the
+// shape Bullet collides with a margin is inflated by it, an object with a radius, which is refused
+// (InputError) until objects with a radius are judged.
+#pragma once
+#include "scalecert/scalecert.hpp"
+
+#include <BulletCollision/BroadphaseCollision/btBroadphaseProxy.h>
+#include <BulletCollision/CollisionDispatch/btCollisionObject.h>
+#include <BulletCollision/CollisionShapes/btBoxShape.h>
+#include <BulletCollision/CollisionShapes/btConvexHullShape.h>
+#include <BulletCollision/NarrowPhaseCollision/btGjkEpa2.h>
+#include <BulletCollision/NarrowPhaseCollision/btPersistentManifold.h>
+#include <LinearMath/btTransform.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace scalecert {
+
+namespace bullet_detail {
+// A btScalar the program held, exactly; a NaN or an infinity is no answer in `field`.
+inline Rational number(btScalar x, Claim& c, const char* field) {
+    if (std::isfinite(static_cast<double>(x))) return exact(static_cast<double>(x));
+    if (c.no_answer.empty()) c.no_answer = field;
+    return 0;
+}
+inline Point point(const btVector3& v, Claim& c, const char* field) {
+    return {number(v.x(), c, field), number(v.y(), c, field), number(v.z(), c, field)};
+}
+inline Point negated(const btVector3& v, Claim& c, const char* field) {
+    Point p = point(v, c, field);
+    for (Rational& x : p) x = -x;
+    return p;
+}
+}  // namespace bullet_detail
+
+// A transform's btScalars, exactly: v -> basis·v + origin. InputError for a NaN or an infinity.
+inline Pose bullet_pose(const btTransform& tf) {
+    Pose p;
+    for (int r = 0; r < 3; ++r)
+        for (int q = 0; q < 4; ++q) {
+            const double x = static_cast<double>(q < 3 ? tf.getBasis()[r][q] : tf.getOrigin()[r]);
+            if (!std::isfinite(x)) throw InputError("bullet_pose: the transform holds a NaN or an infinity");
+            p[r][q] = exact(x);
+        }
+    return p;
+}
+
+// The points of a shape Bullet holds, in its own frame: a btConvexHullShape's points as scaled
+// (getScaledPoint, the btScalars Bullet collides), a btBoxShape's eight corners. A collision
+// margin other than 0, and other shapes, are refused in one line (InputError).
+inline std::vector<Point> bullet_points(const btCollisionShape& shape) {
+    if (shape.getMargin() != 0)
+        throw InputError("bullet_points: collision margin " + std::to_string(static_cast<double>(shape.getMargin())) +
+                         ": Bullet collides the shape inflated by its margin, an object with a radius, which is not "
+                         "judged yet; setMargin(0) judges the shape itself");
+    std::vector<Point> out;
+    auto add = [&](const btVector3& v) {
+        if (!std::isfinite(static_cast<double>(v.x())) || !std::isfinite(static_cast<double>(v.y())) ||
+            !std::isfinite(static_cast<double>(v.z())))
+            throw InputError("bullet_points: a point holds a NaN or an infinity");
+        out.push_back(
+            {exact(static_cast<double>(v.x())), exact(static_cast<double>(v.y())), exact(static_cast<double>(v.z()))});
+    };
+    switch (shape.getShapeType()) {
+    case CONVEX_HULL_SHAPE_PROXYTYPE: {
+        const auto& hull = static_cast<const btConvexHullShape&>(shape);
+        for (int i = 0; i < hull.getNumPoints(); ++i) add(hull.getScaledPoint(i));
+        return out;
+    }
+    case BOX_SHAPE_PROXYTYPE: {
+        const btVector3& h = static_cast<const btBoxShape&>(shape).getHalfExtentsWithoutMargin();
+        for (int k = 0; k < 8; ++k)
+            add(btVector3(k & 1 ? h.x() : -h.x(), k & 2 ? h.y() : -h.y(), k & 4 ? h.z() : -h.z()));
+        return out;
+    }
+    default:
+        throw InputError(std::string("bullet_points: Bullet shape ") + shape.getName() +
+                         " is not judged; btConvexHullShape and btBoxShape are");
+    }
+}
+
+// The scene of two shapes, each in its own frame (scaling ranges [1, 1]); of a manifold's bodies.
+inline Scene bullet_scene(const btCollisionShape& a, const btCollisionShape& b) {
+    return Scene(bullet_points(a), bullet_points(b), {}, {});
+}
+inline Scene bullet_scene(const btPersistentManifold& m) {
+    return bullet_scene(*m.getBody0()->getCollisionShape(), *m.getBody1()->getCollisionShape());
+}
+
+// A contact manifold (CLAIMS.md, "Engines' conventions", Bullet), at its bodies' world transforms:
+// without points, the verdict not_overlapping; with points, the deepest point's distance as the
+// signed_distance value, and where it is < 0 a penetration_depth of −distance in the direction
+// −normalWorldOnB (the normal on B points toward A: moving B along its negation separates them).
+// The other points' distances and the positions are not claims.
+inline std::vector<Claim> bullet_claims(const btPersistentManifold& m) {
+    Claim at;
+    at.pose1 = bullet_pose(m.getBody0()->getWorldTransform());
+    at.pose2 = bullet_pose(m.getBody1()->getWorldTransform());
+    if (m.getNumContacts() == 0) {
+        Claim v = at;
+        v.kind = ClaimKind::Verdict;
+        v.verdict = ClaimedVerdict::NotOverlapping;
+        return {v};
+    }
+    int deepest = 0;
+    for (int i = 1; i < m.getNumContacts(); ++i)
+        if (m.getContactPoint(i).getDistance() < m.getContactPoint(deepest).getDistance()) deepest = i;
+    const btManifoldPoint& p = m.getContactPoint(deepest);
+    std::vector<Claim> out;
+    Claim s = at;
+    s.kind = ClaimKind::SignedDistance;
+    s.value = bullet_detail::number(p.getDistance(), s, "value");
+    out.push_back(s);
+    if (p.getDistance() < 0) {
+        Claim d = at;
+        d.kind = ClaimKind::PenetrationDepth;
+        d.value = bullet_detail::number(-p.getDistance(), d, "value");
+        d.direction = bullet_detail::negated(p.m_normalWorldOnB, d, "direction");
+        out.push_back(d);
+    }
+    return out;
+}
+
+// btGjkEpaSolver2::Distance's result for shapes at transforms a, b: separated, a distance with
+// its witnesses as the closest points; penetrating, the verdict intersecting; a failure, no
+// answer (the verdict claim is judged wrong).
+inline std::vector<Claim> bullet_distance_claims(const btGjkEpaSolver2::sResults& r, const btTransform& a,
+                                                 const btTransform& b) {
+    Claim c;
+    c.pose1 = bullet_pose(a);
+    c.pose2 = bullet_pose(b);
+    if (r.status == btGjkEpaSolver2::sResults::Separated) {
+        c.kind = ClaimKind::Distance;
+        c.value = bullet_detail::number(r.distance, c, "value");
+        c.closest = std::array<Point, 2>{bullet_detail::point(r.witnesses[0], c, "closest"),
+                                         bullet_detail::point(r.witnesses[1], c, "closest")};
+    } else {
+        c.kind = ClaimKind::Verdict;
+        c.verdict = ClaimedVerdict::Intersecting;
+        if (r.status != btGjkEpaSolver2::sResults::Penetrating) c.no_answer = "status";
+    }
+    return {c};
+}
+
+// btGjkEpaSolver2::Penetration's result: penetrating, a penetration_depth of −distance in the
+// direction −normal (Bullet's normal points from B toward A); separated, the verdict
+// not_overlapping; a failure, no answer.
+inline std::vector<Claim> bullet_penetration_claims(const btGjkEpaSolver2::sResults& r, const btTransform& a,
+                                                    const btTransform& b) {
+    Claim c;
+    c.pose1 = bullet_pose(a);
+    c.pose2 = bullet_pose(b);
+    if (r.status == btGjkEpaSolver2::sResults::Penetrating) {
+        c.kind = ClaimKind::PenetrationDepth;
+        c.value = bullet_detail::number(-r.distance, c, "value");
+        c.direction = bullet_detail::negated(r.normal, c, "direction");
+    } else {
+        c.kind = ClaimKind::Verdict;
+        c.verdict = ClaimedVerdict::NotOverlapping;
+        if (r.status != btGjkEpaSolver2::sResults::Separated) c.no_answer = "status";
+    }
+    return {c};
+}
+
+}  // namespace scalecert

@@ -1,0 +1,155 @@
+// FCL as it runs: FCL 0.7's results as scalecert claims, at the transforms the program used
+// (docs/library.md, "FCL and Bullet as they run"; the conventions: certificates/CLAIMS.md,
+// "Engines' conventions"). Header-only; include it where the program has FCL, and link
+// scalecert::core and FCL.
+//
+//   fcl::CollisionResultd res;
+//   fcl::collide(&o1, &o2, req, res);
+//   scalecert::Analysis a(scalecert::fcl_scene(*o1.collisionGeometry(), *o2.collisionGeometry()));
+//   auto j = a.certify(scalecert::fcl_claims(req, res, o1.getTransform(), o2.getTransform()));
+//
+// P1 is the first object FCL was given, P2 the second, each in its own frame; every claim carries
+// the two transforms as poses, their doubles read exactly. Only fcl::Box and fcl::Convex are
+// judged; spheres, capsules and the other shapes with a radius are refused (InputError).
+#pragma once
+#include "scalecert/scalecert.hpp"
+
+#include <fcl/fcl.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace scalecert {
+
+namespace fcl_detail {
+// A double the program held, exactly; a NaN or an infinity is no answer in `field`.
+inline Rational number(double x, Claim& c, const char* field) {
+    if (std::isfinite(x)) return exact(x);
+    if (c.no_answer.empty()) c.no_answer = field;
+    return 0;
+}
+template <class V>
+Point point(const V& v, Claim& c, const char* field) {
+    return {number(static_cast<double>(v[0]), c, field), number(static_cast<double>(v[1]), c, field),
+            number(static_cast<double>(v[2]), c, field)};
+}
+template <class S>
+Claim at(const ::fcl::Transform3<S>& tf1, const ::fcl::Transform3<S>& tf2);
+}  // namespace fcl_detail
+
+// A transform's doubles, exactly: v -> R·v + t. InputError for a NaN or an infinity.
+template <class S>
+Pose fcl_pose(const ::fcl::Transform3<S>& tf) {
+    Pose p;
+    for (int r = 0; r < 3; ++r)
+        for (int q = 0; q < 4; ++q) {
+            const double x = static_cast<double>(q < 3 ? tf.linear()(r, q) : tf.translation()(r));
+            if (!std::isfinite(x)) throw InputError("fcl_pose: the transform holds a NaN or an infinity");
+            p[r][q] = exact(x);
+        }
+    return p;
+}
+
+// The points of a geometry FCL holds, in its own frame: an fcl::Convex's vertices, an fcl::Box's
+// eight corners (±side/2). Other shapes are refused in one line (InputError).
+template <class S>
+std::vector<Point> fcl_points(const ::fcl::CollisionGeometry<S>& g) {
+    std::vector<Point> out;
+    auto add = [&](double x, double y, double z) {
+        if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z))
+            throw InputError("fcl_points: a vertex holds a NaN or an infinity");
+        out.push_back({exact(x), exact(y), exact(z)});
+    };
+    switch (g.getNodeType()) {
+    case ::fcl::GEOM_CONVEX:
+        for (const auto& v : static_cast<const ::fcl::Convex<S>&>(g).getVertices())
+            add(static_cast<double>(v[0]), static_cast<double>(v[1]), static_cast<double>(v[2]));
+        return out;
+    case ::fcl::GEOM_BOX: {
+        const auto& side = static_cast<const ::fcl::Box<S>&>(g).side;
+        for (int k = 0; k < 8; ++k)  // ±side/2: halving a double is exact (sides are not subnormal)
+            add((k & 1 ? 0.5 : -0.5) * static_cast<double>(side[0]),
+                (k & 2 ? 0.5 : -0.5) * static_cast<double>(side[1]),
+                (k & 4 ? 0.5 : -0.5) * static_cast<double>(side[2]));
+        return out;
+    }
+    case ::fcl::GEOM_SPHERE:
+    case ::fcl::GEOM_CAPSULE:
+    case ::fcl::GEOM_CYLINDER:
+    case ::fcl::GEOM_CONE:
+    case ::fcl::GEOM_ELLIPSOID:
+        throw InputError(
+            "fcl_points: FCL's round shapes (spheres, capsules, cylinders, cones, ellipsoids) are not "
+            "judged yet; fcl::Box and fcl::Convex are");
+    default:
+        throw InputError("fcl_points: FCL geometry of node type " + std::to_string(static_cast<int>(g.getNodeType())) +
+                         " is not a convex polytope; fcl::Box and fcl::Convex are judged");
+    }
+}
+
+// The scene of the two geometries, each in its own frame (scaling ranges [1, 1]).
+template <class S>
+Scene fcl_scene(const ::fcl::CollisionGeometry<S>& g1, const ::fcl::CollisionGeometry<S>& g2) {
+    return Scene(fcl_points(g1), fcl_points(g2), {}, {});
+}
+
+// fcl::collide's result (CLAIMS.md, "Engines' conventions", FCL): the verdict intersecting when it
+// found a collision, else not_overlapping; and each contact's penetration_depth with its normal
+// (from o1 to o2) as a penetration_depth claim. FCL 0.7's indep solver writes a convex pair's
+// depth negated: under GST_INDEP the depth claimed is its magnitude. Contact positions are not
+// claims.
+template <class S>
+std::vector<Claim> fcl_claims(const ::fcl::CollisionRequest<S>& request, const ::fcl::CollisionResult<S>& result,
+                              const ::fcl::Transform3<S>& tf1, const ::fcl::Transform3<S>& tf2) {
+    std::vector<Claim> out;
+    Claim v = fcl_detail::at(tf1, tf2);
+    v.kind = ClaimKind::Verdict;
+    v.verdict = result.isCollision() ? ClaimedVerdict::Intersecting : ClaimedVerdict::NotOverlapping;
+    out.push_back(v);
+    for (size_t i = 0; i < result.numContacts(); ++i) {
+        const ::fcl::Contact<S>& k = result.getContact(i);
+        Claim c = fcl_detail::at(tf1, tf2);
+        c.kind = ClaimKind::PenetrationDepth;
+        double depth = static_cast<double>(k.penetration_depth);
+        if (request.gjk_solver_type == ::fcl::GST_INDEP) depth = std::fabs(depth);
+        c.value = fcl_detail::number(depth, c, "value");
+        c.direction = fcl_detail::point(k.normal, c, "direction");
+        out.push_back(c);
+    }
+    return out;
+}
+
+// fcl::distance's result: min_distance −1 is FCL's word for a collision (the verdict
+// intersecting); with enable_signed_distance the value is a signed_distance; else a distance,
+// with the nearest points (world frame) when enable_nearest_points asked for them.
+template <class S>
+std::vector<Claim> fcl_claims(const ::fcl::DistanceRequest<S>& request, const ::fcl::DistanceResult<S>& result,
+                              const ::fcl::Transform3<S>& tf1, const ::fcl::Transform3<S>& tf2) {
+    Claim c = fcl_detail::at(tf1, tf2);
+    const double d = static_cast<double>(result.min_distance);
+    if (request.enable_signed_distance) {
+        c.kind = ClaimKind::SignedDistance;
+        c.value = fcl_detail::number(d, c, "value");
+    } else if (d == -1) {
+        c.kind = ClaimKind::Verdict;
+        c.verdict = ClaimedVerdict::Intersecting;
+    } else {
+        c.kind = ClaimKind::Distance;
+        c.value = fcl_detail::number(d, c, "value");
+        if (request.enable_nearest_points)
+            c.closest = std::array<Point, 2>{fcl_detail::point(result.nearest_points[0], c, "closest"),
+                                             fcl_detail::point(result.nearest_points[1], c, "closest")};
+    }
+    return {c};
+}
+
+template <class S>
+Claim fcl_detail::at(const ::fcl::Transform3<S>& tf1, const ::fcl::Transform3<S>& tf2) {
+    Claim c;
+    c.pose1 = fcl_pose(tf1);
+    c.pose2 = fcl_pose(tf2);
+    return c;
+}
+
+}  // namespace scalecert

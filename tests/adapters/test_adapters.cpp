@@ -1,0 +1,237 @@
+// The FCL and Bullet adapters (include/scalecert/fcl.hpp, bullet.hpp) against the real libraries:
+// FCL 0.7 and Bullet 3.24 collide two unit cubes, the adapters turn their results into claims, and
+// the judgements are checked against values derived by hand. Built against the public header and
+// scalecert::core alone, as a user's program is.
+#include "scalecert/bullet.hpp"
+#include "scalecert/fcl.hpp"
+
+#include <boost/test/unit_test.hpp>
+#include <btBulletCollisionCommon.h>
+
+#include <cmath>
+#include <memory>
+#include <vector>
+
+namespace {
+using R = scalecert::Rational;
+
+// A unit cube [-1/2, 1/2]^3 as an fcl::Convex (its six faces, outward).
+std::shared_ptr<fcl::Convexd> fcl_cube() {
+    auto v = std::make_shared<std::vector<fcl::Vector3d>>();
+    for (int i = 0; i < 8; ++i) v->emplace_back(i & 1 ? 0.5 : -0.5, i & 2 ? 0.5 : -0.5, i & 4 ? 0.5 : -0.5);
+    auto f = std::make_shared<std::vector<int>>(
+        std::vector<int>{4, 0, 2, 3, 1, 4, 4, 5, 7, 6, 4, 0, 1, 5, 4, 4, 2, 6, 7, 3, 4, 0, 4, 6, 2, 4, 1, 3, 7, 5});
+    return std::make_shared<fcl::Convexd>(v, 6, f);
+}
+fcl::Transform3d moved(double x, double y, double z) {
+    fcl::Transform3d t = fcl::Transform3d::Identity();
+    t.translation() << x, y, z;
+    return t;
+}
+scalecert::Judgements judge(const scalecert::Scene& s, const std::vector<scalecert::Claim>& c, R abs = 0, R rel = 0) {
+    scalecert::ClaimOptions o;
+    o.abs_tolerance = abs;
+    o.tolerance = rel;
+    return scalecert::Analysis(s).certify(c, o);
+}
+}  // namespace
+
+// Two unit cubes, P2 at (3, 0.1, 0.2): 2 apart along x (D² = 4, by hand); at (0.75, 0.1, 0.2): they
+// overlap by 1/4 along x (by 0.9 along y, 0.8 along z), so the depth is 1/4 along +x.
+BOOST_AUTO_TEST_CASE(fcl_results_by_hand) {
+    const auto cube = fcl_cube();
+    const scalecert::Scene scene = scalecert::fcl_scene<double>(*cube, *cube);
+    BOOST_TEST(scene.points(0).size() == 8u);
+    const fcl::Transform3d t1 = fcl::Transform3d::Identity(), apart = moved(3, 0.1, 0.2), deep = moved(0.75, 0.1, 0.2);
+    const R abs("1/1000000000");
+
+    fcl::DistanceRequestd dq(true);  // nearest points
+    fcl::DistanceResultd dr;
+    fcl::CollisionObjectd a(cube, t1), b(cube, apart), c(cube, deep);
+    fcl::distance(&a, &b, dq, dr);
+    std::vector<scalecert::Claim> claims = scalecert::fcl_claims(dq, dr, t1, apart);
+    BOOST_TEST_REQUIRE(claims.size() == 1u);
+    BOOST_TEST((claims[0].kind == scalecert::ClaimKind::Distance));
+    BOOST_TEST((claims[0].pose2->at(0)[3] == 3));
+    BOOST_TEST((claims[0].pose2->at(1)[3] == scalecert::exact(0.1)));
+    scalecert::Judgements j = judge(scene, claims, abs);
+    BOOST_TEST(j.items[0].right);
+    BOOST_TEST((*j.items[0].exact_squared == 4));
+    BOOST_TEST(*j.items[0].closest_right);
+    // The same result with the distance 1e-6 too large is wrong.
+    fcl::DistanceResultd off = dr;
+    off.min_distance += 1e-6;
+    BOOST_TEST(!judge(scene, scalecert::fcl_claims(dq, off, t1, apart), abs).items[0].right);
+
+    // Overlapping: collide (libccd) finds one contact, depth 1/4 along +x (from o1 to o2).
+    fcl::CollisionRequestd cq(4, true);
+    fcl::CollisionResultd cr;
+    fcl::collide(&a, &c, cq, cr);
+    claims = scalecert::fcl_claims(cq, cr, t1, deep);
+    BOOST_TEST_REQUIRE(claims.size() == 2u);
+    j = judge(scene, claims, abs);
+    BOOST_TEST((claims[0].verdict == scalecert::ClaimedVerdict::Intersecting));
+    BOOST_TEST(j.items[0].right);
+    BOOST_TEST(j.items[1].right);
+    BOOST_TEST((*j.items[1].exact_squared == R(1, 16)));
+    BOOST_TEST(*j.items[1].direction_right);
+    // Apart, collide finds nothing: not_overlapping, right.
+    fcl::CollisionResultd none;
+    fcl::collide(&a, &b, cq, none);
+    claims = scalecert::fcl_claims(cq, none, t1, apart);
+    BOOST_TEST_REQUIRE(claims.size() == 1u);
+    BOOST_TEST((claims[0].verdict == scalecert::ClaimedVerdict::NotOverlapping));
+    BOOST_TEST(judge(scene, claims).items[0].right);
+
+    // distance() on the overlapping pair: −1, FCL's word for a collision, is the verdict
+    // intersecting; the signed solver's value is a signed distance, −1/4 exactly.
+    fcl::DistanceResultd d1;
+    fcl::distance(&a, &c, dq, d1);
+    claims = scalecert::fcl_claims(dq, d1, t1, deep);
+    BOOST_TEST((claims[0].kind == scalecert::ClaimKind::Verdict));
+    BOOST_TEST(judge(scene, claims).items[0].right);
+    fcl::DistanceRequestd sq(true, true);
+    fcl::DistanceResultd d2;
+    fcl::distance(&a, &c, sq, d2);
+    claims = scalecert::fcl_claims(sq, d2, t1, deep);
+    BOOST_TEST((claims[0].kind == scalecert::ClaimKind::SignedDistance));
+    j = judge(scene, claims, abs);
+    BOOST_TEST(j.items[0].right);
+    BOOST_TEST(j.items[0].exact == -0.25);
+
+    // The indep solver on the overlapping cubes: its depth, read by magnitude, and its normal are
+    // wrong (the depth is 1/4 along x; along its normal u the cubes' Minkowski difference reaches
+    // far more than 1/4), and the judgement says which parts.
+    fcl::CollisionRequestd iq(4, true);
+    iq.gjk_solver_type = fcl::GST_INDEP;
+    fcl::CollisionResultd ir;
+    fcl::collide(&a, &c, iq, ir);
+    claims = scalecert::fcl_claims(iq, ir, t1, deep);
+    BOOST_TEST_REQUIRE(claims.size() == 2u);
+    BOOST_TEST(sgn(claims[1].value) > 0);
+    j = judge(scene, claims, abs);
+    BOOST_TEST(j.items[0].right);  // it did find the collision
+    if (std::fabs(ir.getContact(0).penetration_depth) != 0.25) BOOST_TEST(!*j.items[1].value_right);
+    BOOST_TEST((*j.items[1].exact_squared == R(1, 16)));
+}
+
+// P2 turned 45 degrees about z (c, s the doubles of cos and sin) at (2, 0, 0): its edge reaches
+// 2 − (c + s)/2 in x, so D = 3/2 − (c + s)/2 ≈ 3/2 − √2/2. FCL's Box and Convex make one scene;
+// FCL's distance on each is judged right exactly when it is within 10^-6 of that.
+BOOST_AUTO_TEST_CASE(fcl_at_a_turned_pose) {
+    const std::shared_ptr<fcl::CollisionGeometryd> cube = fcl_cube(), box = std::make_shared<fcl::Boxd>(1, 1, 1);
+    const scalecert::Scene s1 = scalecert::fcl_scene<double>(*cube, *cube),
+                           s2 = scalecert::fcl_scene<double>(*box, *box);
+    fcl::Transform3d t1 = fcl::Transform3d::Identity(), t2 = moved(2, 0, 0);
+    t2.linear() = Eigen::AngleAxisd(M_PI / 4, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+    const double by_hand = 1.5 - (t2.linear()(0, 0) + t2.linear()(1, 0)) / 2;
+    BOOST_TEST(std::fabs(by_hand - (1.5 - std::sqrt(0.5))) < 1e-15);
+    for (const auto& shape : {cube, box}) {
+        fcl::CollisionObjectd a(shape, t1), b(shape, t2);
+        fcl::DistanceRequestd dq;
+        fcl::DistanceResultd dr;
+        fcl::distance(&a, &b, dq, dr);
+        const std::vector<scalecert::Claim> claims = scalecert::fcl_claims(dq, dr, t1, t2);
+        for (const scalecert::Scene* s : {&s1, &s2}) {
+            const scalecert::Judgements j = judge(*s, claims, R("1/1000000"));
+            BOOST_TEST(std::fabs(j.items[0].exact - by_hand) < 1e-15);
+            BOOST_TEST(j.items[0].right == (std::fabs(dr.min_distance - by_hand) <= 1e-6),
+                       "FCL's distance " << dr.min_distance << ", by hand " << by_hand);
+        }
+    }
+}
+
+// What the FCL adapter refuses (a sphere, a transform with a NaN) and what it judges wrong (a NaN
+// in a result: no answer).
+BOOST_AUTO_TEST_CASE(fcl_refusals_and_no_answers) {
+    fcl::Sphered ball(1);
+    const auto cube = fcl_cube();
+    BOOST_CHECK_THROW(scalecert::fcl_points<double>(ball), scalecert::InputError);
+    fcl::Transform3d bad = moved(NAN, 0, 0);
+    BOOST_CHECK_THROW(scalecert::fcl_pose(bad), scalecert::InputError);
+    fcl::DistanceRequestd dq;
+    fcl::DistanceResultd dr;
+    dr.min_distance = NAN;
+    const std::vector<scalecert::Claim> c = scalecert::fcl_claims(dq, dr, moved(0, 0, 0), moved(3, 0, 0));
+    BOOST_TEST(c[0].no_answer == "value");
+    const scalecert::Judgements j = judge(scalecert::fcl_scene<double>(*cube, *cube), c);
+    BOOST_TEST(!j.items[0].right);
+}
+
+namespace {
+// Bullet's unit cube, collision margin 0.
+std::unique_ptr<btConvexHullShape> bullet_cube() {
+    auto h = std::make_unique<btConvexHullShape>();
+    for (int i = 0; i < 8; ++i) h->addPoint(btVector3(i & 1 ? 0.5 : -0.5, i & 2 ? 0.5 : -0.5, i & 4 ? 0.5 : -0.5));
+    h->setMargin(0);
+    return h;
+}
+btTransform bt_moved(btScalar x, btScalar y, btScalar z) {
+    btTransform t;
+    t.setIdentity();
+    t.setOrigin(btVector3(x, y, z));
+    return t;
+}
+}  // namespace
+
+// The same two cubes in Bullet: its collision world's manifold, and btGjkEpaSolver2.
+BOOST_AUTO_TEST_CASE(bullet_results_by_hand) {
+    const auto cube = bullet_cube();
+    const btTransform A = bt_moved(0, 0, 0), apart = bt_moved(3, 0.1f, 0.2f), deep = bt_moved(0.75f, 0.1f, 0.2f);
+    const scalecert::Scene scene = scalecert::bullet_scene(*cube, *cube);
+    const R abs("1/1000000");
+
+    // The manifold at the overlap: its deepest point claims S = −1/4 and a depth 1/4 along +x.
+    btDefaultCollisionConfiguration cfg;
+    btCollisionDispatcher dispatcher(&cfg);
+    btDbvtBroadphase broadphase;
+    btCollisionWorld world(&dispatcher, &broadphase, &cfg);
+    btCollisionObject oa, ob;
+    oa.setCollisionShape(cube.get());
+    ob.setCollisionShape(cube.get());
+    oa.setWorldTransform(A);
+    ob.setWorldTransform(deep);
+    world.addCollisionObject(&oa);
+    world.addCollisionObject(&ob);
+    world.performDiscreteCollisionDetection();
+    BOOST_TEST_REQUIRE(dispatcher.getNumManifolds() == 1);
+    const btPersistentManifold& m = *dispatcher.getManifoldByIndexInternal(0);
+    BOOST_TEST_REQUIRE(m.getNumContacts() > 0);
+    std::vector<scalecert::Claim> claims = scalecert::bullet_claims(m);
+    BOOST_TEST_REQUIRE(claims.size() == 2u);
+    scalecert::Judgements j = judge(scalecert::bullet_scene(m), claims, abs);
+    BOOST_TEST(j.items[0].right);
+    BOOST_TEST(j.items[0].exact == -0.25);
+    BOOST_TEST(j.items[1].right);
+    BOOST_TEST(*j.items[1].direction_right);
+    BOOST_TEST((*j.items[1].exact_squared == R(1, 16)));
+    world.removeCollisionObject(&oa);
+    world.removeCollisionObject(&ob);
+
+    // btGjkEpaSolver2::Distance apart: 2, witnesses on each cube.
+    btGjkEpaSolver2::sResults r;
+    BOOST_TEST_REQUIRE(btGjkEpaSolver2::Distance(cube.get(), A, cube.get(), apart, btVector3(1, 0, 0), r));
+    claims = scalecert::bullet_distance_claims(r, A, apart);
+    j = judge(scene, claims, abs);
+    BOOST_TEST(j.items[0].right);
+    BOOST_TEST((*j.items[0].exact_squared == 4));
+    // Penetration on the overlap: whatever EPA answers is judged against the depth 1/4.
+    btGjkEpaSolver2::Penetration(cube.get(), A, cube.get(), deep, btVector3(1, 0, 0), r);
+    claims = scalecert::bullet_penetration_claims(r, A, deep);
+    BOOST_TEST_REQUIRE((claims[0].kind == scalecert::ClaimKind::PenetrationDepth));
+    j = judge(scene, claims, abs);
+    BOOST_TEST((*j.items[0].exact_squared == R(1, 16)));
+    BOOST_TEST(j.items[0].right == (std::fabs(-r.distance - 0.25) <= 1e-6 && std::fabs(r.normal.x() + 1) <= 1e-6));
+}
+
+// Bullet's margin is refused until objects with a radius are judged; so is a sphere.
+BOOST_AUTO_TEST_CASE(bullet_refusals) {
+    btBoxShape box(btVector3(0.5, 0.5, 0.5));  // Bullet's default margin, 0.04
+    btSphereShape ball(1);
+    BOOST_CHECK_THROW(scalecert::bullet_points(box), scalecert::InputError);
+    ball.setMargin(0);
+    BOOST_CHECK_THROW(scalecert::bullet_points(ball), scalecert::InputError);
+    box.setMargin(0);
+    const std::vector<scalecert::Point> p = scalecert::bullet_points(box);
+    BOOST_TEST(p.size() == 8u);
+}
