@@ -1682,6 +1682,22 @@ BOOST_AUTO_TEST_CASE(a_mesh_of_groups_read_whole_gets_a_note) {
     const Run g = run("golden" + meshes + " --dir " + (workdir() / "golden-note").string());
     BOOST_TEST(g.status == 0);
     BOOST_TEST(g.err.find(note) == 0u, g.err);
+    BOOST_TEST(g.err.find("scalecert: wrote 1 scene") != std::string::npos, g.err);
+    // --quiet, before the command or after its options, silences the note and golden's progress
+    // line, and nothing else: the answer is the same, and an error is still said.
+    for (const std::string& q :
+         {"--quiet query 1 1" + meshes, "query 1 1" + meshes + " --quiet", "-q query 1 1" + meshes}) {
+        const Run r = run(q);
+        BOOST_TEST(r.status == 0);
+        BOOST_TEST(r.out == "separated\n");
+        BOOST_TEST(r.err.empty(), q << ": " << r.err);
+    }
+    const Run gq = run("golden" + meshes + " --quiet --dir " + (workdir() / "golden-quiet").string());
+    BOOST_TEST(gq.status == 0);
+    BOOST_TEST(gq.err.empty(), gq.err);
+    const Run bad = run("query 1 0" + meshes + " --quiet");
+    BOOST_TEST(bad.status == 2);
+    BOOST_TEST(bad.err.find("scalecert: error: ") == 0u, bad.err);
     // The same mesh named by a scene file (P1 as given, P2 the box): touching at (1, 3), the note too.
     auto scene_of = [&](const std::string& file, const std::string& p1) {
         return write(file,

@@ -1,5 +1,6 @@
 #include "baselines/guest.hpp"
 
+#include "io/files.hpp"
 #include "io/strict_json.hpp"
 #include "numeric/exact.hpp"
 
@@ -306,9 +307,7 @@ GuestFolder::~GuestFolder() {
     fs::permissions(path_, fs::perms::owner_all, ec);
     ec.clear();
     fs::remove_all(path_, ec);
-    if (ec)
-        std::fprintf(stderr, "scalecert: note: %s: the program's folder could not be removed (%s)\n", path_.c_str(),
-                     ec.message().c_str());
+    if (ec) internal::say_note(path_ + ": the program's folder could not be removed (" + ec.message() + ")");
 }
 
 }  // namespace scalecert::internal

@@ -588,8 +588,7 @@ long finish_campaign(const CampaignArgs& a, const std::vector<std::string>& shar
             throw InputError(skipped.front() + (skipped.size() > 1 ? " (and " + std::to_string(skipped.size() - 1) +
                                                                          " more scenes: none written)"
                                                                    : ""));
-        for (const std::string& why : skipped)
-            std::fprintf(stderr, "scalecert: note: no golden data written for %s\n", why.c_str());
+        for (const std::string& why : skipped) say_note("no golden data written for " + why);
         return asked - static_cast<long>(skipped.size());
     }
     std::vector<AuditRow> rows;
@@ -600,9 +599,7 @@ long finish_campaign(const CampaignArgs& a, const std::vector<std::string>& shar
     // A method that did not run on a scene is said on stderr too (the exit status stays 0: no bad
     // input), so that a run that reads only the exit status and the reproducers can see it.
     for (const AuditRow& r : rows)
-        if (!r.not_run.empty())
-            std::fprintf(stderr, "scalecert: note: %s: %s did not run: %s\n", r.scene.c_str(), r.method.c_str(),
-                         r.not_run.c_str());
+        if (!r.not_run.empty()) say_note(r.scene + ": " + r.method + " did not run: " + r.not_run);
     if (!a.failures.empty()) write_failures(a, rows);
     const std::string json = dump(audit_json(rows, !a.no_timing));
     const std::string csv = audit_csv(rows, !a.no_timing);

@@ -39,7 +39,7 @@ Command add_audit(CLI::App& app) {
                     if (p != "-" && !a->given.count(p)) say_notes(load_scene(p, a->opt));
                 if (!a->failures.empty()) make_output_dir(a->failures);
                 const long rows = run_campaign(*a);
-                std::cerr << "scalecert: audit: " << rows << (rows == 1 ? " row\n" : " rows\n");
+                if (!internal::quiet()) std::cerr << "scalecert: audit: " << rows << (rows == 1 ? " row\n" : " rows\n");
                 return 0;
             }};
 }

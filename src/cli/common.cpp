@@ -36,7 +36,7 @@ void SceneArgs::add(CLI::App* sub) {
 }
 
 void say_notes(const internal::ExactScene& sc) {
-    for (const std::string& n : internal::scene_notes(sc)) std::cerr << "scalecert: note: " << n << "\n";
+    for (const std::string& n : internal::scene_notes(sc)) internal::say_note(n);
 }
 
 // Decimals read as doubles have denominators near 2^52 or more: a large scene of them fits no
@@ -44,10 +44,11 @@ void say_notes(const internal::ExactScene& sc) {
 static void say_off_the_walk(const internal::ExactScene& full) {
     if (full.inexact_numbers > 0 && !full.made_of_parts() &&
         internal::walk_by_default(full.P[0].points.size(), full.P[1].points.size()))
-        std::cerr << "scalecert: note: read as " << internal::numbers_name(full.numbers)
-                  << "s, the points fit no machine integers over one scale: the hull path, slower than the walk on "
-                     "large meshes (--numbers exact, or float32 when that is what the program held, can keep the "
-                     "walk)\n";
+        internal::say_note(
+            std::string("read as ") + internal::numbers_name(full.numbers) +
+            "s, the points fit no machine integers over one scale: the hull path, slower than the walk on "
+            "large meshes (--numbers exact, or float32 when that is what the program held, can keep "
+            "the walk)");
 }
 
 // --parts-from-groups on a command for two convex objects (curve, grid), refused before any file is read.

@@ -55,9 +55,11 @@ Command add_golden(CLI::App& app) {
                 const long n = run_campaign(*a);
                 const long asked = static_cast<long>(a->scenes.size()) + (a->family.empty() ? 0 : a->count);
                 const std::string what = a->scenes.empty() ? " " + a->family : "";
-                std::cerr << "scalecert: wrote " << n << what << (n == 1 ? " scene" : " scenes")
-                          << " with exact answers to " << a->dir
-                          << (n < asked ? " (" + std::to_string(asked - n) + " not written, noted above)" : "") << "\n";
+                if (!internal::quiet())
+                    std::cerr << "scalecert: wrote " << n << what << (n == 1 ? " scene" : " scenes")
+                              << " with exact answers to " << a->dir
+                              << (n < asked ? " (" + std::to_string(asked - n) + " not written, noted above)" : "")
+                              << "\n";
                 return 0;
             }};
 }

@@ -48,6 +48,11 @@ int main(int argc, char** argv) {
     CLI::App app{"scalecert: exact, certified collision of uniformly scaled convex polyhedra"};
     app.require_subcommand(1);
     app.set_version_flag("--version", std::string("scalecert ") + scalecert::version());
+    app.add_flag_callback(
+        "--quiet,-q", [] { internal::set_quiet(true); },
+        "no notes on stderr (how numbers were read, MuJoCo's warnings, a step that did not run) and no "
+        "progress lines; errors are still said. Before or after the command's own options");
+    app.fallthrough();
     app.footer(
         "\n--out FILE, wherever it appears, writes the command's output to FILE atomically instead of\n"
         "standard output. Exit status: 0 done, 1 certify-fp found a wrong claim, 2 bad input,\n"

@@ -103,8 +103,7 @@ Command add_mujoco(CLI::App& app) {
             std::map<std::string, long> said;
             for (const std::string& w : r.warnings) ++said[w.substr(w.find(": ") + 2)];
             for (const auto& [w, n] : said)
-                std::cerr << "scalecert: note: MuJoCo warned (" << n << (n == 1 ? " state" : " states") << "): " << w
-                          << "\n";
+                internal::say_note("MuJoCo warned (" + std::to_string(n) + (n == 1 ? " state" : " states") + "): " + w);
             emit(a->json ? dump(r.report) : r.text, a->out);
             if (a->timing) {
                 char line[200];

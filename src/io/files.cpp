@@ -3,6 +3,7 @@
 #include <filesystem>
 
 #include <algorithm>
+#include <atomic>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -302,6 +303,15 @@ void refuse_outputs_over_inputs(const std::vector<std::string>& outputs, const s
                 throw InputError(o + ": an output names an input file (" + i + "), which it would replace");
         }
     }
+}
+
+namespace {
+std::atomic<bool> quiet_notes{false};
+}
+void set_quiet(bool q) { quiet_notes = q; }
+bool quiet() { return quiet_notes; }
+void say_note(const std::string& text) {
+    if (!quiet_notes) std::fprintf(stderr, "scalecert: note: %s\n", text.c_str());
 }
 
 }  // namespace scalecert::internal

@@ -45,6 +45,12 @@ class InputObserver {
 // then renamed into place, so a failed run never leaves a half-written file. Refuses a target
 // that exists and is not a regular file. Throws InputError naming the path.
 void write_file_atomically(const std::string& path, const std::string& text);
+// Notes on stderr, "scalecert: note: TEXT": what a user may want to know about a run (how numbers
+// were read, a step that did not run), never the answer. `scalecert --quiet` silences them and the
+// progress lines (quiet()); errors are always said.
+void set_quiet(bool quiet);
+bool quiet();
+void say_note(const std::string& text);
 // That refusal alone, for a command that checks its outputs' names before it writes any.
 void refuse_non_regular_output(const std::string& path);
 // The same for several files: every text is written and synced before any rename, so a failure
