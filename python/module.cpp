@@ -1182,6 +1182,155 @@ scalecert::MujocoJudgement mujoco_judgement(const py::handle& model, const py::h
     return scalecert::judge_mujoco(path_arg(model, "model"), states, o);
 }
 
+// MuJoCo's own arrays, read by their attribute names (MjModel, MjData, their contacts): numbers
+// flattened, each checked to be what MuJoCo's field holds (an int, a float32, a finite double).
+std::vector<double> held_numbers(const py::handle& owner, const char* owner_name, const char* name) {
+    const std::string what = std::string(owner_name) + "." + name;
+    if (!py::hasattr(owner, name)) throw scalecert::InputError(what + ": missing (MuJoCo's field of that name)");
+    try {
+        const py::object np = py::module_::import("numpy");
+        const py::array a = np.attr("asarray")(owner.attr(name));
+        const std::string kind = py::str(a.dtype().attr("kind"));
+        if (kind != "i" && kind != "u" && kind != "f" && kind != "b")
+            throw scalecert::InputError(what + ": expected numbers (dtype " + std::string(py::str(a.dtype())) + ")");
+        const py::array_t<double, py::array::c_style | py::array::forcecast> d = np.attr("ravel")(a);
+        return std::vector<double>(d.data(), d.data() + d.size());
+    } catch (const py::error_already_set& e) {
+        if (!argument_error(e)) throw;
+        throw scalecert::InputError(what + ": not an array of numbers (" + std::string(e.what()) + ")");
+    }
+}
+std::vector<int> held_ints(const py::handle& owner, const char* owner_name, const char* name) {
+    std::vector<int> out;
+    for (double x : held_numbers(owner, owner_name, name)) {
+        if (!(x == std::floor(x) && std::fabs(x) < 2147483648.0))
+            throw scalecert::InputError(std::string(owner_name) + "." + name + ": expected integers");
+        out.push_back(static_cast<int>(x));
+    }
+    return out;
+}
+int held_int(const py::handle& owner, const char* owner_name, const char* name) {
+    const std::vector<int> v = held_ints(owner, owner_name, name);
+    if (v.size() != 1) throw scalecert::InputError(std::string(owner_name) + "." + name + ": expected one integer");
+    return v[0];
+}
+std::vector<double> held_doubles(const py::handle& owner, const char* owner_name, const char* name) {
+    std::vector<double> v = held_numbers(owner, owner_name, name);
+    for (double x : v)
+        if (!std::isfinite(x))
+            throw scalecert::InputError(std::string(owner_name) + "." + name + ": a NaN or an infinity");
+    return v;
+}
+// Names from MjModel.names and name_geomadr / name_bodyadr, where the model has them ("" else).
+std::vector<std::string> held_names(const py::handle& m, const char* adr, size_t n) {
+    std::vector<std::string> out(n);
+    if (!py::hasattr(m, "names") || !py::hasattr(m, adr)) return out;
+    const py::object names = m.attr("names");
+    if (!py::isinstance<py::bytes>(names)) return out;
+    const std::string all = names.cast<std::string>();
+    const std::vector<int> at = held_ints(m, "model", adr);
+    for (size_t i = 0; i < n && i < at.size(); ++i)
+        if (at[i] >= 0 && static_cast<size_t>(at[i]) < all.size()) out[i] = all.c_str() + at[i];
+    return out;
+}
+scalecert::MujocoHeldModel held_model(const py::handle& m) {
+    scalecert::MujocoHeldModel h;
+    const char* M = "model";
+    h.nq = held_int(m, M, "nq");
+    h.geom_type = held_ints(m, M, "geom_type");
+    h.geom_bodyid = held_ints(m, M, "geom_bodyid");
+    h.geom_contype = held_ints(m, M, "geom_contype");
+    h.geom_conaffinity = held_ints(m, M, "geom_conaffinity");
+    h.geom_dataid = held_ints(m, M, "geom_dataid");
+    h.geom_size = held_doubles(m, M, "geom_size");
+    h.geom_margin = held_doubles(m, M, "geom_margin");
+    h.geom_gap = held_doubles(m, M, "geom_gap");
+    h.body_parentid = held_ints(m, M, "body_parentid");
+    h.body_weldid = held_ints(m, M, "body_weldid");
+    h.geom_names = held_names(m, "name_geomadr", h.geom_type.size());
+    h.body_names = held_names(m, "name_bodyadr", h.body_parentid.size());
+    h.mesh_vertadr = held_ints(m, M, "mesh_vertadr");
+    h.mesh_vertnum = held_ints(m, M, "mesh_vertnum");
+    for (double x : held_doubles(m, M, "mesh_vert")) {
+        if (static_cast<double>(static_cast<float>(x)) != x)
+            throw scalecert::InputError("model.mesh_vert: " + std::to_string(x) +
+                                        " is not a float32 (MuJoCo holds mesh vertices as float32)");
+        h.mesh_vert.push_back(static_cast<float>(x));
+    }
+    h.pair_geom1 = held_ints(m, M, "pair_geom1");
+    h.pair_geom2 = held_ints(m, M, "pair_geom2");
+    h.pair_margin = held_doubles(m, M, "pair_margin");
+    h.pair_gap = held_doubles(m, M, "pair_gap");
+    h.exclude_signature = held_ints(m, M, "exclude_signature");
+    if (!py::hasattr(m, "opt")) throw scalecert::InputError("model.opt: missing (MuJoCo's field of that name)");
+    const py::object opt = m.attr("opt");
+    h.opt_disableflags = held_int(opt, "model.opt", "disableflags");
+    h.opt_enableflags = held_int(opt, "model.opt", "enableflags");
+    h.opt_collision = held_int(opt, "model.opt", "collision");
+    const std::vector<double> om = held_doubles(opt, "model.opt", "o_margin");
+    if (om.size() != 1) throw scalecert::InputError("model.opt.o_margin: expected one number");
+    h.opt_o_margin = om[0];
+    return h;
+}
+scalecert::MujocoHeldData held_data(const py::handle& d, const std::string& where) {
+    scalecert::MujocoHeldData h;
+    const std::string D = where;
+    h.qpos = held_doubles(d, D.c_str(), "qpos");
+    h.geom_xpos = held_numbers(d, D.c_str(), "geom_xpos");
+    h.geom_xmat = held_numbers(d, D.c_str(), "geom_xmat");
+    if (!py::hasattr(d, "contact")) throw scalecert::InputError(D + ".contact: missing (MuJoCo's field of that name)");
+    const py::object c = d.attr("contact");
+    const std::string C = D + ".contact";
+    const std::vector<int> g1 = held_ints(c, C.c_str(), "geom1"), g2 = held_ints(c, C.c_str(), "geom2"),
+                           ex = held_ints(c, C.c_str(), "exclude");
+    const std::vector<double> dist = held_numbers(c, C.c_str(), "dist"), pos = held_numbers(c, C.c_str(), "pos"),
+                              frame = held_numbers(c, C.c_str(), "frame"),
+                              inc = held_numbers(c, C.c_str(), "includemargin");
+    size_t n = g1.size();
+    if (py::hasattr(d, "ncon")) {
+        const int ncon = held_int(d, D.c_str(), "ncon");
+        if (ncon < 0 || static_cast<size_t>(ncon) > n)
+            throw scalecert::InputError(D + ".ncon: " + std::to_string(ncon) + " contacts, " + C + " holds " +
+                                        std::to_string(n));
+        n = static_cast<size_t>(ncon);
+    }
+    if (g2.size() < n || ex.size() < n || dist.size() < n || inc.size() < n || pos.size() < 3 * n ||
+        frame.size() < 9 * n)
+        throw scalecert::InputError(C + ": its fields hold different numbers of contacts");
+    for (size_t i = 0; i < n; ++i) {
+        scalecert::MujocoHeldContact k;
+        k.geom1 = g1[i];
+        k.geom2 = g2[i];
+        k.dist = dist[i];
+        for (size_t j = 0; j < 3; ++j) k.pos[j] = pos[3 * i + j];
+        for (size_t j = 0; j < 9; ++j) k.frame[j] = frame[9 * i + j];
+        k.includemargin = inc[i];
+        k.exclude = ex[i];
+        h.contact.push_back(k);
+    }
+    return h;
+}
+// judge_mujoco_held's arguments: data one MjData-like object or a list of them.
+scalecert::MujocoJudgement mujoco_held_judgement(const py::handle& model, const py::handle& data,
+                                                 const py::handle& tolerance, const py::handle& abs_tolerance,
+                                                 const py::handle& failures) {
+    scalecert::MujocoOptions o;
+    o.tolerance = rational(tolerance, "tolerance");
+    o.abs_tolerance = rational(abs_tolerance, "abs_tolerance");
+    if (!failures.is_none()) {
+        o.failures = path_arg(failures, "failures");
+        if (o.failures.empty()) throw scalecert::InputError("failures: an empty path (give None for no reproducers)");
+    }
+    std::vector<scalecert::MujocoHeldData> states;
+    if (py::isinstance<py::list>(data) || py::isinstance<py::tuple>(data)) {
+        size_t i = 0;
+        for (const py::handle d : data) states.push_back(held_data(d, "data[" + std::to_string(i++) + "]"));
+    } else {
+        states.push_back(held_data(data, "data"));
+    }
+    return scalecert::judge_mujoco_held(held_model(model), states, o);
+}
+
 // scalecert.judge_mujoco, and the test helpers of scalecert.testing: assertions whose failure lists
 // each wrong judgement (and where its reproducer is).
 void bind_mujoco_and_testing(py::module_& m) {
@@ -1196,6 +1345,17 @@ void bind_mujoco_and_testing(py::module_& m) {
         "scalecert mujoco: the model run by MuJoCo (Debian's libmujoco) at each qpos (rows of nq floats; None: "
         "keyframe `key`, else qpos0), every geom pair its pipeline considers judged exactly; the report as a dict "
         "(format scalecert-mujoco-1; summary['wrong_pairs'] counts the wrong pair states)");
+    m.def(
+        "judge_mujoco_held",
+        [](const py::handle& model, const py::handle& data, const py::handle& tolerance,
+           const py::handle& abs_tolerance, const py::handle& failures) {
+            return json_loads(mujoco_held_judgement(model, data, tolerance, abs_tolerance, failures).json);
+        },
+        py::arg("model"), py::arg("data"), py::arg("tolerance") = 0, py::arg("abs_tolerance") = 0,
+        py::arg("failures") = py::none(),
+        "judge_mujoco on what the program's own MuJoCo holds: `model` an MjModel (or any object with its "
+        "attributes: geom_type, geom_size, mesh_vert, body_parentid, pair_geom1, opt, ...), `data` an MjData after "
+        "mj_forward or mj_step (qpos, geom_xpos, geom_xmat, contact, ncon), or a list of them, one a state");
     py::module_ t =
         m.def_submodule("testing", "assertions for pytest: each raises AssertionError listing every wrong judgement");
     t.def(

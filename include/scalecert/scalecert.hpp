@@ -317,4 +317,40 @@ struct MujocoJudgement {
 MujocoJudgement judge_mujoco(const std::string& model, const std::vector<std::vector<double>>& qpos = {},
                              const MujocoOptions& options = {});
 
+// What a program's own MuJoCo holds, by mjModel's and mjData's field names, flat as MuJoCo stores
+// them: the same judgement without loading anything (scalecert/mujoco.hpp fills these from an
+// mjModel* and mjData*; Python's judge_mujoco_held from MjModel and MjData's attributes). Sizes
+// follow from the arrays: ngeom = geom_type.size(), nbody = body_parentid.size(), and so on.
+struct MujocoHeldModel {
+    int nq = 0;
+    std::vector<int> geom_type, geom_bodyid, geom_contype, geom_conaffinity, geom_dataid;
+    std::vector<double> geom_size, geom_margin, geom_gap;  // ngeom x 3, ngeom, ngeom
+    std::vector<std::string> geom_names, body_names;       // empty, or ngeom (nbody) names ("" unnamed)
+    std::vector<int> body_parentid, body_weldid;
+    std::vector<int> mesh_vertadr, mesh_vertnum;
+    std::vector<float> mesh_vert;  // nmeshvert x 3
+    std::vector<int> pair_geom1, pair_geom2;
+    std::vector<double> pair_margin, pair_gap;
+    std::vector<int> exclude_signature;
+    int opt_disableflags = 0, opt_enableflags = 0, opt_collision = 0;  // mjOption's
+    double opt_o_margin = 0;
+};
+struct MujocoHeldContact {
+    int geom1 = 0, geom2 = 0;
+    double dist = 0;
+    std::array<double, 3> pos{};
+    std::array<double, 9> frame{};  // the normal, from geom1 to geom2, in frame[0..2]
+    double includemargin = 0;
+    int exclude = 0;
+};
+struct MujocoHeldData {
+    std::vector<double> qpos;                  // nq (for the report and the reproducers)
+    std::vector<double> geom_xpos, geom_xmat;  // ngeom x 3, ngeom x 9
+    std::vector<MujocoHeldContact> contact;    // the ncon contacts
+};
+// Each data judged in turn, as judge_mujoco judges its states; `source` names the model in the
+// report and the reproducers. InputError when the arrays do not fit together (each named).
+MujocoJudgement judge_mujoco_held(const MujocoHeldModel& model, const std::vector<MujocoHeldData>& data,
+                                  const MujocoOptions& options = {}, const std::string& source = "held arrays");
+
 }  // namespace scalecert

@@ -992,6 +992,67 @@ def test_judge_mujoco_and_the_testing_helpers(tmp_path):
     assert "WRONG  (2, 2) claimed not_overlapping: exact overlapping" in str(e.value)
 
 
+def mujoco_arrays(model, qpos_file):
+    """MuJoCo's arrays for a model at each qpos line, produced by Debian's libmujoco
+    (tests/adapters/mujoco_arrays.cpp), as objects with the attributes and dtypes of MuJoCo's Python
+    bindings' MjModel and MjData (mesh_vert float32, ids int32, names bytes)."""
+    from types import SimpleNamespace as NS
+    tool = Path(CLI).parent / "tests" / "mujoco_arrays"
+    if not tool.exists():
+        pytest.skip("built without MuJoCo")
+    j = json.loads(subprocess.run([str(tool), model, qpos_file], capture_output=True, text=True, check=True).stdout)
+    m = j["model"]
+    ints = {k for k, v in m.items() if isinstance(v, list) and all(isinstance(x, int) for x in v)} - {
+        "geom_size", "geom_margin", "geom_gap", "pair_margin", "pair_gap"}
+    fields = {k: (np.array(v, dtype=np.int32) if k in ints else np.array(v, dtype=np.float64))
+              for k, v in m.items() if isinstance(v, list)}
+    fields["mesh_vert"] = np.array(m["mesh_vert"], dtype=np.float32).reshape(-1, 3)
+    fields["geom_size"] = fields["geom_size"].reshape(-1, 3)
+    model_obj = NS(nq=m["nq"], names=m["names"].encode("latin-1"), opt=NS(**m["opt"]), **fields)
+    datas = []
+    for d in j["data"]:
+        c = d["contact"]
+        contact = NS(geom1=np.array(c["geom1"], dtype=np.int32), geom2=np.array(c["geom2"], dtype=np.int32),
+                     exclude=np.array(c["exclude"], dtype=np.int32), dist=np.array(c["dist"]),
+                     includemargin=np.array(c["includemargin"]), pos=np.array(c["pos"]).reshape(-1, 3),
+                     frame=np.array(c["frame"]).reshape(-1, 9))
+        datas.append(NS(qpos=np.array(d["qpos"]), geom_xpos=np.array(d["geom_xpos"]).reshape(-1, 3),
+                        geom_xmat=np.array(d["geom_xmat"]).reshape(-1, 9), ncon=d["ncon"], contact=contact))
+    return model_obj, datas
+
+
+def test_judge_mujoco_held_reads_mujocos_own_arrays():
+    # The arrays a program holds in MuJoCo's Python bindings, read by their attribute names, judge
+    # as the model file does at the same qpos: on boxes.xml (worked by hand in tests/test_mujoco.cpp:
+    # 3/2 apart, touching with a contact that is wrong at tolerance 0, 1/8 deep) and the finger.
+    for name in ["boxes", "panda_finger_cube"]:
+        xml, qpos = str(SRC / f"tests/data/mujoco/{name}.xml"), str(SRC / f"tests/data/mujoco/{name}.qpos")
+        model, datas = mujoco_arrays(xml, qpos)
+        held = scalecert.judge_mujoco_held(model, datas, abs_tolerance="1e-9" if name != "boxes" else 0)
+        rows = np.loadtxt(qpos, ndmin=2)
+        fromfile = scalecert.judge_mujoco(xml, rows, abs_tolerance="1e-9" if name != "boxes" else 0)
+        assert held["summary"] == fromfile["summary"]
+        assert [f["pairs"] for f in held["frames"]] == [f["pairs"] for f in fromfile["frames"]]
+        assert held["summary"]["judgements"] > 0
+    # On boxes the touching state's contact is the one wrong pair state, named by its data index.
+    model, datas = mujoco_arrays(str(SRC / "tests/data/mujoco/boxes.xml"), str(SRC / "tests/data/mujoco/boxes.qpos"))
+    r = scalecert.judge_mujoco_held(model, datas[1])
+    assert r["summary"]["wrong_pairs"] == 1
+    names = [p["names"] for p in r["frames"][0]["pairs"]]
+    assert ["floor", "cube"] in names  # names from MjModel.names and name_geomadr
+    # What does not fit MuJoCo's fields is an InputError naming the field.
+    bad = lambda **kw: type(model)(**{**vars(model), **kw})
+    for m, why in [(bad(geom_size=model.geom_size[:-1]), "geom_size"),
+                   (bad(mesh_vert=model.mesh_vert.astype(np.float64) + 1e-12), "not a float32"),
+                   (bad(geom_bodyid=model.geom_bodyid + 50), r"geom_bodyid\[0\]"),
+                   (bad(geom_type=np.array(["box"] * len(model.geom_type))), "expected numbers")]:
+        with pytest.raises(scalecert.InputError, match=why):
+            scalecert.judge_mujoco_held(m, datas[0])
+    nodata = type(datas[0])(**{k: v for k, v in vars(datas[0]).items() if k != "geom_xmat"})
+    with pytest.raises(scalecert.InputError, match="data.geom_xmat: missing"):
+        scalecert.judge_mujoco_held(model, nodata)
+
+
 def test_the_pytest_gate_example_in_the_docs(tmp_path):
     # docs/library.md, "Gates in pytest and GoogleTest": its two tests, as written there.
     text = (SRC / "docs/library.md").read_text()

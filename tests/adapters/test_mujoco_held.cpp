@@ -1,0 +1,165 @@
+// scalecert/mujoco.hpp and judge_mujoco_held as a user's program uses them: the program loads a
+// model with MuJoCo (Debian's libmujoco, linked here as a user's program links it), steps or
+// forwards it, and hands its own mjModel and mjData over. Each judgement is checked against the
+// model-file route (scalecert's own MuJoCo module at the same qpos) and against values by hand.
+#include "scalecert/mujoco.hpp"
+
+#include <boost/test/unit_test.hpp>
+#include <nlohmann/json.hpp>
+
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+const std::string kData = std::string(SCALECERT_SOURCE_DIR) + "/tests/data/mujoco/";
+
+struct Model {
+    mjModel* m = nullptr;
+    mjData* d = nullptr;
+    explicit Model(const std::string& path) {
+        char err[500] = "";
+        m = mj_loadXML(path.c_str(), nullptr, err, sizeof err);
+        BOOST_TEST_REQUIRE(m != nullptr, err);
+        d = mj_makeData(m);
+    }
+    ~Model() {
+        mj_deleteData(d);
+        mj_deleteModel(m);
+    }
+    void forward(const std::vector<double>& qpos) {
+        for (int k = 0; k < m->nq; ++k) d->qpos[k] = qpos[static_cast<size_t>(k)];
+        mj_forward(m, d);
+    }
+};
+std::vector<std::vector<double>> rows(const std::string& path) {
+    std::ifstream in(path);
+    std::vector<std::vector<double>> out;
+    for (std::string line; std::getline(in, line);) {
+        std::istringstream s(line);
+        std::vector<double> q;
+        for (double x; s >> x;) q.push_back(x);
+        if (!q.empty()) out.push_back(q);
+    }
+    return out;
+}
+// The report without the model's name (the two routes name their source differently).
+nlohmann::json unnamed(const std::string& report) {
+    nlohmann::json j = nlohmann::json::parse(report);
+    j.erase("model");
+    return j;
+}
+}  // namespace
+
+// boxes.xml (tests/test_mujoco.cpp works it out by hand): the cube 3/2 above the floor, then
+// touching it. MuJoCo reports a contact at exactly touching: at tolerance 0 that pair state alone
+// is wrong (S = 0 is not < 0), within 1e-9 it is right.
+BOOST_AUTO_TEST_CASE(boxes_by_hand_through_the_held_arrays) {
+    Model w(kData + "boxes.xml");
+    const std::vector<double> apart = {0, 0, 2, 1, 0, 0, 0, 5, 0, 0, 1, 0, 0, 0, -5, 0, 0, 1, 0, 0, 0},
+                              touching = {0, 0, 0.5, 1, 0, 0, 0, 5, 0, 0, 1, 0, 0, 0, -5, 0, 0, 1, 0, 0, 0};
+    std::vector<scalecert::MujocoHeldData> states;
+    for (const auto& q : {apart, touching}) {
+        w.forward(q);
+        states.push_back(scalecert::mujoco_held(w.m, w.d));
+    }
+    BOOST_TEST(states[0].contact.empty());
+    BOOST_TEST(!states[1].contact.empty());
+    const scalecert::MujocoHeldModel held = scalecert::mujoco_held(w.m);
+    const scalecert::MujocoJudgement j = scalecert::judge_mujoco_held(held, states);
+    BOOST_TEST(j.wrong_pairs == 1);
+    BOOST_TEST(j.text.find("data[1]") != std::string::npos, j.text);
+    scalecert::MujocoOptions o;
+    o.abs_tolerance = scalecert::parse_rational("1e-9");
+    BOOST_TEST(scalecert::judge_mujoco_held(held, states, o).wrong_pairs == 0);
+    // The same as the model-file route at the same states, judgement for judgement.
+    const scalecert::MujocoJudgement f = scalecert::judge_mujoco(kData + "boxes.xml", {apart, touching});
+    nlohmann::json a = unnamed(j.json), b = unnamed(f.json);
+    BOOST_TEST(a["summary"] == b["summary"]);
+    BOOST_TEST(a["frames"].size() == b["frames"].size());
+    for (size_t i = 0; i < a["frames"].size(); ++i) BOOST_TEST(a["frames"][i]["pairs"] == b["frames"][i]["pairs"]);
+}
+
+// The Panda finger and cube (103 states), forwarded by this program: every pair state judged as
+// the model-file route judges it.
+BOOST_AUTO_TEST_CASE(the_finger_as_the_program_ran_it) {
+    Model w(kData + "panda_finger_cube.xml");
+    const auto qpos = rows(kData + "panda_finger_cube.qpos");
+    BOOST_TEST_REQUIRE(qpos.size() == 103u);
+    std::vector<scalecert::MujocoHeldData> states;
+    for (const auto& q : qpos) {
+        w.forward(q);
+        states.push_back(scalecert::mujoco_held(w.m, w.d));
+    }
+    scalecert::MujocoOptions o;
+    o.abs_tolerance = scalecert::parse_rational("1e-9");
+    const scalecert::MujocoJudgement h = scalecert::judge_mujoco_held(scalecert::mujoco_held(w.m), states, o);
+    const scalecert::MujocoJudgement f = scalecert::judge_mujoco(kData + "panda_finger_cube.xml", qpos, o);
+    BOOST_TEST(h.judgements > 0);
+    BOOST_TEST(h.judgements == f.judgements);
+    BOOST_TEST(h.wrong_pairs == f.wrong_pairs);
+    const nlohmann::json a = unnamed(h.json), b = unnamed(f.json);
+    for (size_t i = 0; i < a["frames"].size(); ++i) BOOST_TEST(a["frames"][i]["pairs"] == b["frames"][i]["pairs"], i);
+}
+
+// A rollout the program steps itself: the cube dropped on the floor, 300 steps of mj_step. Every
+// state is judged; each state's judgement is the model-file route's at that state's qpos (the
+// geoms' frames depend on qpos alone).
+BOOST_AUTO_TEST_CASE(a_stepped_rollout) {
+    Model w(kData + "boxes.xml");
+    w.d->qpos[2] = 0.7;  // the cube 0.2 above the floor, falling
+    std::vector<scalecert::MujocoHeldData> states;
+    std::vector<std::vector<double>> qpos;
+    for (int i = 0; i < 300; ++i) {
+        mj_step(w.m, w.d);
+        mj_forward(w.m, w.d);  // the frames and contacts at the qpos mj_step left
+        states.push_back(scalecert::mujoco_held(w.m, w.d));
+        qpos.push_back(states.back().qpos);
+    }
+    long with_contact = 0;
+    for (const auto& s : states) with_contact += !s.contact.empty();
+    BOOST_TEST(with_contact > 0);  // the cube landed
+    const scalecert::MujocoJudgement h = scalecert::judge_mujoco_held(scalecert::mujoco_held(w.m), states);
+    const scalecert::MujocoJudgement f = scalecert::judge_mujoco(kData + "boxes.xml", qpos);
+    BOOST_TEST_MESSAGE("the stepped rollout: " << with_contact << " states with a contact; " << h.text);
+    BOOST_TEST(h.wrong_pairs == f.wrong_pairs);
+    const nlohmann::json a = unnamed(h.json), b = unnamed(f.json);
+    for (size_t i = 0; i < a["frames"].size(); ++i) BOOST_TEST(a["frames"][i]["pairs"] == b["frames"][i]["pairs"], i);
+}
+
+// Arrays that do not fit together are refused, each naming its field.
+BOOST_AUTO_TEST_CASE(held_arrays_that_do_not_fit) {
+    Model w(kData + "boxes.xml");
+    w.forward({0, 0, 2, 1, 0, 0, 0, 5, 0, 0, 1, 0, 0, 0, -5, 0, 0, 1, 0, 0, 0});
+    const scalecert::MujocoHeldModel good = scalecert::mujoco_held(w.m);
+    const scalecert::MujocoHeldData state = scalecert::mujoco_held(w.m, w.d);
+    auto refused = [&](scalecert::MujocoHeldModel m, scalecert::MujocoHeldData d, const std::string& word) {
+        try {
+            scalecert::judge_mujoco_held(m, {d});
+        } catch (const scalecert::InputError& e) {
+            BOOST_TEST(std::string(e.what()).find(word) != std::string::npos, e.what());
+            return;
+        }
+        BOOST_ERROR("not refused: " << word);
+    };
+    scalecert::MujocoHeldModel m = good;
+    m.geom_size.pop_back();
+    refused(m, state, "geom_size");
+    m = good;
+    m.geom_bodyid[1] = 99;
+    refused(m, state, "geom_bodyid[1]");
+    m = good;
+    m.mesh_vertnum[0] = 1000;
+    refused(m, state, "mesh_vertnum");
+    m = good;
+    m.mesh_vert[0] = NAN;
+    refused(m, state, "mesh_vert[0]");
+    scalecert::MujocoHeldData d = state;
+    d.qpos.pop_back();
+    refused(good, d, "qpos");
+    d = state;
+    d.contact.push_back({0, 77});
+    refused(good, d, "contact[0].geom2");
+    BOOST_CHECK_THROW(scalecert::judge_mujoco_held(good, {}), scalecert::InputError);
+}
