@@ -1142,8 +1142,9 @@ void bind_golden(py::module_& m) {
 // or an int >= 0.
 scalecert::MujocoJudgement mujoco_judgement(const py::handle& model, const py::handle& qpos, const py::handle& key,
                                             const py::handle& tolerance, const py::handle& abs_tolerance,
-                                            const py::handle& failures) {
+                                            const py::handle& failures, bool intended = false) {
     scalecert::MujocoOptions o;
+    o.intended = intended;
     o.tolerance = rational(tolerance, "tolerance");
     o.abs_tolerance = rational(abs_tolerance, "abs_tolerance");
     if (!key.is_none()) o.key = count_arg(key, "key", 0, 1 << 30);
@@ -1337,13 +1338,14 @@ void bind_mujoco_and_testing(py::module_& m) {
     m.def(
         "judge_mujoco",
         [](const py::handle& model, const py::handle& qpos, const py::handle& key, const py::handle& tolerance,
-           const py::handle& abs_tolerance, const py::handle& failures) {
-            return json_loads(mujoco_judgement(model, qpos, key, tolerance, abs_tolerance, failures).json);
+           const py::handle& abs_tolerance, const py::handle& failures, bool intended) {
+            return json_loads(mujoco_judgement(model, qpos, key, tolerance, abs_tolerance, failures, intended).json);
         },
         py::arg("model"), py::arg("qpos") = py::none(), py::arg("key") = py::none(), py::arg("tolerance") = 0,
-        py::arg("abs_tolerance") = 0, py::arg("failures") = py::none(),
+        py::arg("abs_tolerance") = 0, py::arg("failures") = py::none(), py::arg("intended") = false,
         "scalecert mujoco: the model run by MuJoCo (Debian's libmujoco) at each qpos (rows of nq floats; None: "
-        "keyframe `key`, else qpos0), every geom pair its pipeline considers judged exactly; the report as a dict "
+        "keyframe `key`, else qpos0), every geom pair its pipeline considers judged exactly (with intended=True also "
+        "against the model as written, each pair's 'intended'); the report as a dict "
         "(format scalecert-mujoco-1; summary['wrong_pairs'] counts the wrong pair states)");
     m.def(
         "judge_mujoco_held",

@@ -307,6 +307,10 @@ struct MujocoOptions {
     Rational tolerance = 0, abs_tolerance = 0;  // as certify-fp's --tolerance, --abs-tolerance (metres)
     int key = -1;
     std::string failures;  // a folder for reproducers of wrong judgements ("": none)
+    // Also judge against the model as written (scalecert mujoco --intended): the mesh files'
+    // numbers as doubles in MuJoCo's mesh frame; each pair's "intended" in the report. judge_mujoco
+    // only (held arrays carry no files).
+    bool intended = false;
 };
 struct MujocoJudgement {
     std::string json;      // the report (format scalecert-mujoco-1), the bytes `scalecert mujoco --json` writes

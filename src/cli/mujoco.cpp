@@ -49,7 +49,7 @@ Command add_mujoco(CLI::App& app) {
     struct Args {
         std::string model, qpos, out, failures, tolerance = "0", abs_tolerance = "0";
         int key = -1;
-        bool json = false, timing = false;
+        bool json = false, timing = false, intended = false;
     };
     auto a = std::make_shared<Args>();
     CLI::App* sub = app.add_subcommand(
@@ -67,6 +67,10 @@ Command add_mujoco(CLI::App& app) {
                     "are right (certificates/CLAIMS.md, \"Tolerances\")")
         ->type_name("LEN");
     sub->add_flag("--json", a->json, "the report as JSON (every pair at every state)");
+    sub->add_flag("--intended", a->intended,
+                  "also judge every output against the model as written: the mesh files' numbers as doubles (no "
+                  "float32 rounding), in MuJoCo's mesh frame, at the same geom poses; said beside each judgement "
+                  "(\"intended\") and in the summary. The exit status stays the held geometry's");
     add_out(sub, a->out);
     sub->add_flag("--timing", a->timing,
                   "say on stderr the seconds spent in mj_forward and in judging, and their ratio (the report stays "
@@ -97,7 +101,7 @@ Command add_mujoco(CLI::App& app) {
                                  std::to_string(info.keys.size()) +
                                  (info.keys.size() == 1 ? " keyframe" : " keyframes"));
             const std::vector<std::vector<double>> states = mj::choose_states(info, std::move(given), labels, a->key);
-            mj::MujocoOptions opt{tol, a->model, a->failures};
+            mj::MujocoOptions opt{tol, a->model, a->failures, a->intended};
             const mj::MujocoResult r = mj::judge_states(*m, states, labels, opt);
             // MuJoCo's warnings, each once, with how often it was given.
             std::map<std::string, long> said;

@@ -17,9 +17,9 @@ MujocoJudgement judged(internal::mj::Loaded& m, const std::vector<std::vector<do
                        const std::vector<std::string>& labels, const MujocoOptions& options,
                        const std::string& source) {
     using namespace internal;
-    const mj::MujocoResult r = mj::judge_states(
-        m, states, labels,
-        mj::MujocoOptions{Tolerance{options.tolerance, options.abs_tolerance}, source, options.failures});
+    const mj::MujocoResult r = mj::judge_states(m, states, labels,
+                                                mj::MujocoOptions{Tolerance{options.tolerance, options.abs_tolerance},
+                                                                  source, options.failures, options.intended});
     return {dump(r.report), r.text, r.wrong, r.report["summary"]["judgements"].get<long>()};
 }
 

@@ -20,6 +20,7 @@ struct Geom {
     // A mesh geom's vertices as MuJoCo holds them (mesh_vert: float32, in the geom's frame, after
     // MuJoCo re-centred and rotated them), three a vertex; empty for other types.
     std::vector<float> vertices;
+    int mesh = -1;  // a mesh geom's mesh (geom_dataid), else -1
 };
 // An explicit <pair>, with its own margin and gap.
 struct Pair {
@@ -66,6 +67,22 @@ class Loaded {
 
 // The module's entry point: the model at `path`, or null with the reason in *error.
 using LoadFn = Loaded* (*)(const char* path, std::string* error);
+
+// A mesh asset as the model wrote it, and the frame MuJoCo moved its vertices to: MuJoCo holds
+// mesh_vert = float32(Rᵀ(scale·v − pos)) for each vertex v of the file, R the rotation of quat
+// (pos and quat MuJoCo's doubles, read off a model of that mesh alone). For --intended.
+struct MeshSource {
+    std::string name;
+    std::string file;  // the path MuJoCo read it from
+    double scale[3] = {1, 1, 1};
+    double pos[3] = {0, 0, 0};
+    double quat[4] = {1, 0, 0, 0};
+    std::string why_not;  // why the mesh has no source to judge against ("" when it has)
+};
+// The second entry point: the model's meshes by mesh id, or false with the reason in *error.
+using MeshSourcesFn = bool (*)(const char* path, std::vector<MeshSource>* out, std::string* error);
+// Through the module; InputError as load_model.
+std::vector<MeshSource> mesh_sources(const std::string& path);
 // Through the module, loaded on first use; InputError when the model cannot be read, and when the
 // module cannot be loaded (the build had no MuJoCo).
 std::unique_ptr<Loaded> load_model(const std::string& path);

@@ -7,6 +7,7 @@
 #include "certify/certificate.hpp"
 #include "geometry/measures.hpp"
 #include "io/files.hpp"
+#include "io/mesh.hpp"
 #include "numeric/predicates.hpp"
 #include "session/engine.hpp"
 
@@ -163,6 +164,69 @@ bool finite_state(const State& s, int g) {
     return true;
 }
 
+// The geom as the model wrote it (--intended), in the geom's frame: a box as held (its sizes are
+// the written doubles); a mesh from its file, each number the double it reads as, scaled and moved
+// into MuJoCo's mesh frame exactly: Rᵀ(scale·v − pos), R the rotation of MuJoCo's quat by
+// mju_quat2Mat's formula, in rationals. `box` bounds the points, rounded outward to doubles.
+struct Intended {
+    std::optional<PolyInput> points;
+    std::array<double, 6> box{};
+    std::string why_not;
+};
+Intended intended_geom(const Geom& g, const std::vector<MeshSource>& sources) {
+    Intended out;
+    if (g.type == kBox) {
+        out.points = geom_points(g);
+    } else if (g.type == kMesh) {
+        if (g.mesh < 0 || static_cast<size_t>(g.mesh) >= sources.size()) {
+            out.why_not = "its mesh is not among the model's";
+            return out;
+        }
+        const MeshSource& src = sources[static_cast<size_t>(g.mesh)];
+        if (!src.why_not.empty()) {
+            out.why_not = "mesh '" + src.name + "': " + src.why_not;
+            return out;
+        }
+        std::vector<Vec3q> file;
+        try {
+            file = read_mesh(src.file);
+        } catch (const InputError& e) {
+            out.why_not = "mesh '" + src.name + "': " + e.what();
+            return out;
+        }
+        const Q w = exact_from_double(src.quat[0]), x = exact_from_double(src.quat[1]),
+                y = exact_from_double(src.quat[2]), z = exact_from_double(src.quat[3]);
+        const Q R[3][3] = {{w * w + x * x - y * y - z * z, 2 * (x * y - w * z), 2 * (x * z + w * y)},
+                           {2 * (x * y + w * z), w * w - x * x + y * y - z * z, 2 * (y * z - w * x)},
+                           {2 * (x * z - w * y), 2 * (y * z + w * x), w * w - x * x - y * y + z * z}};
+        PolyInput in;
+        for (const Vec3q& v : file) {
+            Q d[3];
+            for (size_t k = 0; k < 3; ++k)
+                d[k] = exact_from_double(src.scale[k]) * v[k] - exact_from_double(src.pos[k]);
+            Vec3q u;
+            for (size_t r = 0; r < 3; ++r) u[r] = R[0][r] * d[0] + R[1][r] * d[1] + R[2][r] * d[2];  // Rᵀ·d
+            in.points.push_back(u);
+        }
+        out.points = std::move(in);
+    } else {
+        out.why_not = std::string(geom_type_name(g.type)) + ": not judged";
+        return out;
+    }
+    for (size_t k = 0; k < 3; ++k) {
+        Q lo = out.points->points.front()[k], hi = lo;
+        for (const Vec3q& p : out.points->points) {
+            if (p[k] < lo) lo = p[k];
+            if (p[k] > hi) hi = p[k];
+        }
+        double l = lo.get_d(), h = hi.get_d();
+        if (exact_from_double(l) > lo) l = std::nextafter(l, -INFINITY);
+        if (exact_from_double(h) < hi) h = std::nextafter(h, INFINITY);
+        out.box[k] = l, out.box[k + 3] = h;
+    }
+    return out;
+}
+
 // One ordered geom pair's engine: the scene of the two geoms in their own frames, and its rules.
 struct PairEngine {
     std::unique_ptr<SceneEngine> engine;
@@ -252,6 +316,39 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
         }
         return e;
     };
+    // --intended: each judged geom as the model wrote it, its pair engines, and their counts.
+    std::vector<Intended> written;
+    if (opt.intended) {
+        const std::vector<MeshSource> sources = mesh_sources(opt.model);
+        for (const Geom& g : m.geoms) written.push_back(judged_type(g.type) ? intended_geom(g, sources) : Intended{});
+    }
+    std::map<std::pair<int, int>, PairEngine> written_engines;
+    long written_wrong = 0, written_unjudged = 0;
+    double written_worst_dist = 0;
+    auto written_engine_for = [&](int a, int b) -> PairEngine& {
+        PairEngine& e = written_engines[{a, b}];
+        if (e.engine || !e.why_not.empty()) return e;
+        const Intended &ia = written[static_cast<size_t>(a)], &ib = written[static_cast<size_t>(b)];
+        if (!ia.points || !ib.points) {
+            e.why_not = geom_label(m, ia.points ? b : a) + ": " + (ia.points ? ib.why_not : ia.why_not);
+            return e;
+        }
+        auto sc = std::make_shared<ExactScene>();
+        sc->P[0] = *ia.points;
+        sc->P[1] = *ib.points;
+        sc->lo[0] = sc->hi[0] = sc->lo[1] = sc->hi[1] = 1;
+        try {
+            finish_scene(*sc, geom_label(m, a) + " and " + geom_label(m, b) + " as written");
+            e.engine = open_engine(std::shared_ptr<const ExactScene>(sc),
+                                   geom_label(m, a) + " and " + geom_label(m, b) + " as written");
+            e.engine->check();
+            e.rules = e.engine->rules(opt.tolerance);
+        } catch (const InputError& x) {
+            e.engine.reset();
+            e.why_not = x.what();
+        }
+        return e;
+    };
     if (!opt.failures.empty()) make_output_dir(opt.failures);
     // Each judged geom's box in its own frame (exact doubles: a box's half-sizes, a mesh's float
     // extremes), for filter 12.
@@ -316,6 +413,85 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
             }
             return *b;
         };
+        // The same outputs against the model as written (--intended): the verdict within the
+        // margin and, for a contact, its dist and (penetrating) its normal, as the held geometry's
+        // are judged; said in the pair's "intended". Informative: the exit status is the held's.
+        auto judge_written = [&](int a, int b, const Considered& p, const Contact* deepest) -> Json {
+            PairEngine& we = written_engine_for(a, b);
+            if (!we.why_not.empty()) {
+                ++written_unjudged;
+                return Json{{"why", we.why_not}};
+            }
+            if (!deepest) {
+                filter::PosedBox pb[2];
+                for (int i = 0; i < 2; ++i) {
+                    const size_t g = static_cast<size_t>(i ? b : a);
+                    double M[9], t[3], lo[3], hi[3];
+                    for (size_t k = 0; k < 9; ++k) M[k] = s.xmat[9 * g + k];
+                    for (size_t k = 0; k < 3; ++k) {
+                        t[k] = s.xpos[3 * g + k];
+                        lo[k] = written[g].box[k];
+                        hi[k] = written[g].box[k + 3];
+                    }
+                    pb[i] = filter::posed_box(M, t, lo, hi);
+                }
+                if (filter::boxes_certainly_apart(pb[0], pb[1], p.margin))
+                    return Json{{"verdict", Json{{"exact", "separated"}, {"right", true}}},
+                                {"signed_distance", Json{{"decided_by", "their boxes, more than the margin apart"}}}};
+            }
+            TypedClaim base;
+            base.type = ClaimType::SignedDistance;
+            base.pose = {pose_of(s, a), pose_of(s, b)};
+            TypedClaim verdict = base;
+            verdict.bound = deepest ? TypedClaim::Bound::Below : TypedClaim::Bound::AtLeast;
+            verdict.value = exact_from_double(p.margin);
+            const Judged vj = judge_claim(*we.rules, verdict, 0, opt.model, nullptr);
+            const SignedDistanceJudged& ex = *vj.get<SignedDistanceJudged>();
+            const bool verdict_judged = deepest || !buffer_full;
+            Json out{{"verdict", Json{{"exact", verdict_name(ex.exact)},
+                                      {"right", verdict_judged ? Json(vj.right) : Json(nullptr)}}},
+                     {"signed_distance", Json{{"exact", signed_text(ex.sign(), ex.exact_squared)}}}};
+            std::vector<std::string> wrong;
+            if (verdict_judged && !vj.right)
+                wrong.push_back(std::string(deepest ? "a contact" : "no contact") + " within the margin " +
+                                to_shortest(p.margin) + ", but the signed distance is ~" +
+                                to_shortest(signed_double(ex.sign(), ex.exact_squared)) + " m");
+            if (deepest && std::isfinite(deepest->dist)) {
+                TypedClaim dist = base;
+                dist.value = exact_from_double(deepest->dist);
+                const Judged dj = judge_claim(*we.rules, dist, 1, opt.model, nullptr);
+                const double err = signed_error(deepest->dist, ex.sign(), ex.exact_squared);
+                written_worst_dist = std::max(written_worst_dist, err);
+                out["dist"] = Json{
+                    {"exact", signed_text(ex.sign(), ex.exact_squared)}, {"error_m", number(err)}, {"right", dj.right}};
+                if (!dj.right)
+                    wrong.push_back("dist " + to_shortest(deepest->dist) + ", exact ~" +
+                                    to_shortest(signed_double(ex.sign(), ex.exact_squared)) + " m (off by " +
+                                    to_shortest(err) + " m)");
+                const Vec3q n{exact_from_double(deepest->frame[0]), exact_from_double(deepest->frame[1]),
+                              exact_from_double(deepest->frame[2])};
+                if (deepest->dist < 0 && ex.sign() < 0 && !(sgn(n[0]) == 0 && sgn(n[1]) == 0 && sgn(n[2]) == 0)) {
+                    TypedClaim d = base;
+                    d.type = ClaimType::Depth;
+                    d.value = exact_from_double(-deepest->dist);
+                    d.direction = n;
+                    const Judged nj = judge_claim(*we.rules, d, 2, opt.model, nullptr);
+                    const bool right = nj.get<DepthJudged>()->direction_right.value_or(false);
+                    out["normal"] = Json{{"right", right}};
+                    if (!right) wrong.push_back("the normal does not attain the depth");
+                }
+            } else if (deepest) {
+                out["dist"] = Json{{"right", false}};
+                wrong.push_back("dist is not a number");
+            }
+            if (!wrong.empty()) {
+                ++written_wrong;
+                for (const std::string& w : wrong)
+                    text += "AS WRITTEN  state " + std::to_string(f) + " (" + labels[f] + "): " + geom_label(m, a) +
+                            " and " + geom_label(m, b) + ": " + w + "\n";
+            }
+            return out;
+        };
         Json fp = Json::array();
         for (const Considered& p : pairs) {
             const Geom &ga = m.geoms[static_cast<size_t>(p.g1)], &gb = m.geoms[static_cast<size_t>(p.g2)];
@@ -356,6 +532,7 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
                          {"contacts", 0},
                          {"verdict", Json{{"said", "no contact"}, {"exact", "separated"}, {"right", true}}},
                          {"signed_distance", Json{{"decided_by", "their boxes, more than the margin apart"}}}});
+                if (opt.intended) fp.back()["intended"] = judge_written(a, b, p, nullptr);
                 continue;
             }
             if (why.empty() && (!finite_state(s, a) || !finite_state(s, b)))
@@ -517,6 +694,7 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
                                             {stem + ".about.json", dump(about)}});
                 }
             }
+            if (opt.intended) pj["intended"] = judge_written(a, b, p, deepest);
             fp.push_back(std::move(pj));
         }
         Json fr{{"frame", f}, {"state", labels[f]}, {"pairs", std::move(fp)}};
@@ -536,6 +714,10 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
                  {"mujoco_warnings", res.warnings.size()},
                  {"worst_dist_error_m", worst_dist},
                  {"wrong_verdicts", std::move(wrong_list)}};
+    if (opt.intended)
+        summary["intended"] = Json{{"wrong_pairs", written_wrong},
+                                   {"pair_states_unjudged", written_unjudged},
+                                   {"worst_dist_error_m", written_worst_dist}};
     res.report = Json{{"format", "scalecert-mujoco-1"},
                       {"model", opt.model},
                       {"tolerance", to_exact_string(opt.tolerance.rel)},
@@ -549,6 +731,10 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
             "), judgements: " + std::to_string(judgements) + ", wrong: " + std::to_string(res.wrong) +
             " pair states (" + std::to_string(wrong_verdicts) + " verdicts), worst dist error " +
             to_shortest(worst_dist) + " m\n";
+    if (opt.intended)
+        text += "as written (--intended): wrong: " + std::to_string(written_wrong) + " pair states" +
+                (written_unjudged ? " (" + std::to_string(written_unjudged) + " pair states unjudged)" : "") +
+                ", worst dist error " + to_shortest(written_worst_dist) + " m\n";
     for (const Json& u : res.report["unjudged"])
         text += "unjudged: " + geom_label(m, u["geom1"].get<int>()) + " and " + geom_label(m, u["geom2"].get<int>()) +
                 ": " + u["why"].get<std::string>() + "\n";

@@ -33,6 +33,9 @@ struct MujocoOptions {
     Tolerance tolerance;
     std::string model;     // the model's path, for the report and reproducers
     std::string failures;  // a folder for reproducers of wrong judgements ("" for none)
+    // Also judge each output against the model as written (--intended): the mesh files' numbers
+    // as doubles, in MuJoCo's mesh frame exactly, at the same geom poses.
+    bool intended = false;
 };
 // The states' judgements: the report as JSON, and the count of wrong judgements. `states`: each
 // a qpos of nq numbers, `labels` their source ("qpos0", "key 2", "FILE line 7").

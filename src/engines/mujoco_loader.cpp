@@ -21,8 +21,13 @@ const char* geom_type_name(int type) {
 }
 
 namespace {
-LoadFn module() {
-    static LoadFn load = nullptr;
+struct Module {
+    LoadFn load = nullptr;
+    MeshSourcesFn mesh_sources = nullptr;
+};
+const Module& module() {
+    static Module mod;
+    LoadFn& load = mod.load;
     static std::once_flag once;
     static std::string error;
     std::call_once(once, [] {
@@ -45,7 +50,9 @@ LoadFn module() {
                 continue;
             }
             load = reinterpret_cast<LoadFn>(::dlsym(h, "scalecert_mujoco_load"));
-            if (load) return;
+            mod.mesh_sources = reinterpret_cast<MeshSourcesFn>(::dlsym(h, "scalecert_mujoco_mesh_sources"));
+            if (load && mod.mesh_sources) return;
+            load = nullptr;
             error = p + ": lacks the entry point";
         }
         if (error.empty())
@@ -54,7 +61,15 @@ LoadFn module() {
                 "SCALECERT_MUJOCO_MODULE)";
     });
     if (!load) throw InputError("MuJoCo cannot be loaded: " + error);
-    return load;
+    return mod;
+}
+
+// MuJoCo's message, which may run over lines, as one line.
+std::string one_line(std::string error) {
+    for (char& c : error)
+        if (c == '\n' || c == '\r') c = ' ';
+    while (!error.empty() && error.back() == ' ') error.pop_back();
+    return error;
 }
 }  // namespace
 
@@ -109,17 +124,19 @@ void refuse_files_that_block(const std::string& path, int depth = 0) {
 
 std::unique_ptr<Loaded> load_model(const std::string& path) {
     refuse_files_that_block(path);
-    const LoadFn load = module();
+    const LoadFn load = module().load;
     std::string error;
     std::unique_ptr<Loaded> m(load(path.c_str(), &error));
-    if (!m) {
-        // MuJoCo's message may run over lines: one line here.
-        for (char& c : error)
-            if (c == '\n' || c == '\r') c = ' ';
-        while (!error.empty() && error.back() == ' ') error.pop_back();
-        throw InputError(path + ": MuJoCo: " + error);
-    }
+    if (!m) throw InputError(path + ": MuJoCo: " + one_line(error));
     return m;
+}
+
+std::vector<MeshSource> mesh_sources(const std::string& path) {
+    refuse_files_that_block(path);
+    std::vector<MeshSource> out;
+    std::string error;
+    if (!module().mesh_sources(path.c_str(), &out, &error)) throw InputError(path + ": MuJoCo: " + one_line(error));
+    return out;
 }
 
 }  // namespace scalecert::internal::mj

@@ -8,9 +8,13 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <cctype>
+#include <cstdlib>
 #include <cstdio>
 #include <cstring>
+#include <map>
 #include <mutex>
+#include <sstream>
 
 namespace {
 using namespace scalecert::internal::mj;
@@ -80,6 +84,7 @@ class MujocoModel final : public Loaded {
             o.gap = m_->geom_gap[g];
             if (o.type == mjGEOM_MESH && m_->geom_dataid[g] >= 0) {
                 const int mesh = m_->geom_dataid[g];
+                o.mesh = mesh;
                 const float* v = m_->mesh_vert + 3 * m_->mesh_vertadr[mesh];
                 o.vertices.assign(v, v + 3 * m_->mesh_vertnum[mesh]);
             }
@@ -99,11 +104,10 @@ class MujocoModel final : public Loaded {
 };
 }  // namespace
 
-extern "C" __attribute__((visibility("default"))) Loaded* scalecert_mujoco_load(const char* path, std::string* error) {
-    static std::once_flag once;
-    std::call_once(once, [] { mju_user_warning = keep_warning; });
-    char err[1000] = "";
-    // MuJoCo's mesh compiler (qhull) prints to stdout and stderr; the command says one line.
+namespace {
+// mj_loadXML with stdout and stderr silenced: MuJoCo's mesh compiler (qhull) prints to both; the
+// command says one line.
+mjModel* load_silenced(const char* path, char* err, int size) {
     std::fflush(stdout);
     std::fflush(stderr);
     const int out = ::dup(1), errfd = ::dup(2), null = ::open("/dev/null", O_WRONLY);
@@ -112,11 +116,239 @@ extern "C" __attribute__((visibility("default"))) Loaded* scalecert_mujoco_load(
         ::dup2(null, 2);
         ::close(null);
     }
-    mjModel* m = mj_loadXML(path, nullptr, err, sizeof err);
+    mjModel* m = mj_loadXML(path, nullptr, err, size);
     std::fflush(stdout);
     std::fflush(stderr);
     if (out >= 0) ::dup2(out, 1), ::close(out);
     if (errfd >= 0) ::dup2(errfd, 2), ::close(errfd);
+    return m;
+}
+
+// A temporary file of `text`, removed when this goes.
+struct TempFile {
+    std::string path;
+    explicit TempFile(const std::string& text) {
+        char name[] = "/tmp/scalecert-mujoco-XXXXXX";
+        const int fd = ::mkstemp(name);
+        if (fd < 0) return;
+        path = name;
+        size_t done = 0;
+        while (done < text.size()) {
+            const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
+            if (n <= 0) break;
+            done += static_cast<size_t>(n);
+        }
+        ::close(fd);
+    }
+    ~TempFile() {
+        if (!path.empty()) ::unlink(path.c_str());
+    }
+};
+
+std::string read_text(const std::string& path) {
+    std::string out;
+    if (FILE* f = std::fopen(path.c_str(), "rb")) {
+        char buf[65536];
+        for (size_t n; (n = std::fread(buf, 1, sizeof buf, f)) > 0;) out.append(buf, n);
+        std::fclose(f);
+    }
+    return out;
+}
+
+// The tags of an XML text MuJoCo wrote (mj_saveLastXML: double-quoted attributes, no comments in
+// tags): each tag's name ("/default" for a closing one), its attributes, and whether it closes
+// itself.
+struct Tag {
+    std::string name;
+    std::map<std::string, std::string> attr;
+    bool self_closing = false;
+};
+std::string unescaped(const std::string& v) {
+    std::string out;
+    for (size_t i = 0; i < v.size(); ++i) {
+        if (v[i] != '&') {
+            out += v[i];
+            continue;
+        }
+        static const std::pair<const char*, char> named[] = {
+            {"&amp;", '&'}, {"&lt;", '<'}, {"&gt;", '>'}, {"&quot;", '"'}, {"&apos;", '\''}};
+        bool done = false;
+        for (const auto& [e, c] : named)
+            if (v.compare(i, std::strlen(e), e) == 0) {
+                out += c;
+                i += std::strlen(e) - 1;
+                done = true;
+                break;
+            }
+        if (!done) out += '&';
+    }
+    return out;
+}
+std::vector<Tag> tags_of(const std::string& text) {
+    std::vector<Tag> out;
+    for (size_t i = text.find('<'); i != std::string::npos; i = text.find('<', i + 1)) {
+        if (text.compare(i, 4, "<!--") == 0) {
+            i = text.find("-->", i);
+            if (i == std::string::npos) break;
+            continue;
+        }
+        if (text.compare(i, 2, "<?") == 0) continue;
+        size_t j = i + 1;
+        Tag t;
+        while (j < text.size() && !std::isspace(static_cast<unsigned char>(text[j])) && text[j] != '>' &&
+               !(text[j] == '/' && j > i + 1))
+            t.name += text[j++];
+        for (;;) {
+            while (j < text.size() && std::isspace(static_cast<unsigned char>(text[j]))) ++j;
+            if (j >= text.size()) return out;
+            if (text[j] == '>') break;
+            if (text[j] == '/') {
+                t.self_closing = true;
+                ++j;
+                continue;
+            }
+            const size_t eq = text.find('=', j);
+            if (eq == std::string::npos) return out;
+            const std::string key = text.substr(j, eq - j);
+            const size_t q = eq + 1;
+            if (q >= text.size() || (text[q] != '"' && text[q] != '\'')) return out;
+            const size_t e = text.find(text[q], q + 1);
+            if (e == std::string::npos) return out;
+            t.attr[key] = unescaped(text.substr(q + 1, e - q - 1));
+            j = e + 1;
+        }
+        i = j;
+        out.push_back(std::move(t));
+    }
+    return out;
+}
+std::string escaped(const std::string& v) {
+    std::string out;
+    for (char c : v) out += c == '&' ? "&amp;" : c == '<' ? "&lt;" : c == '"' ? "&quot;" : std::string(1, c);
+    return out;
+}
+bool three_numbers(const std::string& text, double* out) {
+    std::istringstream in(text);
+    for (int k = 0; k < 3; ++k)
+        if (!(in >> out[k])) return false;
+    std::string rest;
+    return !(in >> rest);
+}
+}  // namespace
+
+// The model's meshes as it wrote them (MuJoCo writes the model back, mj_saveLastXML, with its
+// includes inlined and its defaults as classes), and the frame MuJoCo moved each to, read off a
+// model of that mesh alone at the origin: its geom's pos and quat are the mesh's.
+extern "C" __attribute__((visibility("default"))) bool scalecert_mujoco_mesh_sources(const char* path,
+                                                                                     std::vector<MeshSource>* out,
+                                                                                     std::string* error) {
+    char err[1000] = "";
+    mjModel* m = load_silenced(path, err, sizeof err);
+    if (!m) {
+        *error = err[0] ? err : "MuJoCo could not load it";
+        return false;
+    }
+    const TempFile saved("");
+    const bool wrote = !saved.path.empty() && mj_saveLastXML(saved.path.c_str(), m, err, sizeof err);
+    const std::string text = wrote ? read_text(saved.path) : "";
+    out->assign(static_cast<size_t>(m->nmesh), MeshSource{});
+    for (int k = 0; k < m->nmesh; ++k) {
+        const char* n = mj_id2name(m, mjOBJ_MESH, k);
+        (*out)[static_cast<size_t>(k)].name = n ? n : "";
+        (*out)[static_cast<size_t>(k)].why_not = "MuJoCo did not write the model back (mj_saveLastXML)";
+    }
+    const int nmesh = m->nmesh;
+    mj_deleteModel(m);
+    if (!wrote) return true;
+    // The mesh scale of each default class (a class takes its parent's unless it sets its own), the
+    // compiler's folders, and the <mesh> assets in order: MuJoCo numbers meshes so.
+    std::map<std::string, std::string> class_scale;
+    std::vector<std::string> classes;
+    std::string meshdir, assetdir;
+    std::vector<std::map<std::string, std::string>> meshes;
+    bool in_asset = false;
+    for (const Tag& t : tags_of(text)) {
+        if (t.name == "default" && !t.self_closing) {
+            const std::string c = t.attr.count("class") ? t.attr.at("class") : "main";
+            class_scale[c] = classes.empty() ? "" : class_scale[classes.back()];
+            classes.push_back(c);
+        } else if (t.name == "/default" && !classes.empty()) {
+            classes.pop_back();
+        } else if (t.name == "compiler") {
+            if (t.attr.count("meshdir")) meshdir = t.attr.at("meshdir");
+            if (t.attr.count("assetdir")) assetdir = t.attr.at("assetdir");
+        } else if (t.name == "asset") {
+            in_asset = !t.self_closing;
+        } else if (t.name == "/asset") {
+            in_asset = false;
+        } else if (t.name == "mesh" && !classes.empty() && !in_asset) {
+            if (t.attr.count("scale")) class_scale[classes.back()] = t.attr.at("scale");
+        } else if (t.name == "mesh" && in_asset) {
+            meshes.push_back(t.attr);
+        }
+    }
+    if (static_cast<int>(meshes.size()) != nmesh) {
+        for (MeshSource& s : *out) s.why_not = "its <mesh> assets could not be matched to the model's meshes";
+        return true;
+    }
+    if (meshdir.empty()) meshdir = assetdir;
+    if (!meshdir.empty() && meshdir.back() != '/') meshdir += '/';
+    // The model's folder as an absolute path: the probe models live elsewhere.
+    std::string modeldir = path;
+    const size_t slash = modeldir.rfind('/');
+    modeldir = slash == std::string::npos ? "." : modeldir.substr(0, slash + 1);
+    if (char* real = ::realpath(modeldir.c_str(), nullptr)) {
+        modeldir = std::string(real) + "/";
+        std::free(real);
+    }
+    for (size_t k = 0; k < meshes.size(); ++k) {
+        const auto& a = meshes[k];
+        MeshSource& s = (*out)[k];
+        s.why_not.clear();
+        if (a.count("vertex") || !a.count("file")) {
+            s.why_not = "its vertices are written in the model, not read from a file";
+            continue;
+        }
+        if (a.count("refpos") || a.count("refquat")) {
+            s.why_not = "it has refpos or refquat";
+            continue;
+        }
+        const std::string& f = a.at("file");
+        s.file = !f.empty() && f[0] == '/'               ? f
+                 : !meshdir.empty() && meshdir[0] == '/' ? meshdir + f
+                                                         : modeldir + meshdir + f;
+        std::string scale = a.count("scale") ? a.at("scale") : "";
+        if (scale.empty()) {
+            const std::string c = a.count("class") ? a.at("class") : "main";
+            scale = class_scale.count(c) ? class_scale.at(c) : "";
+        }
+        if (!scale.empty() && !three_numbers(scale, s.scale)) {
+            s.why_not = "its scale \"" + scale + "\" is not three numbers";
+            continue;
+        }
+        char probe_xml[200];
+        std::snprintf(probe_xml, sizeof probe_xml, "\" scale=\"%.17g %.17g %.17g\"/>", s.scale[0], s.scale[1],
+                      s.scale[2]);
+        const TempFile probe("<mujoco><asset><mesh name=\"m\" file=\"" + escaped(s.file) + probe_xml +
+                             "</asset><worldbody><geom type=\"mesh\" mesh=\"m\"/></worldbody></mujoco>");
+        mjModel* p = probe.path.empty() ? nullptr : load_silenced(probe.path.c_str(), err, sizeof err);
+        if (!p || p->ngeom != 1) {
+            s.why_not = std::string("MuJoCo could not load the mesh alone: ") + err;
+            if (p) mj_deleteModel(p);
+            continue;
+        }
+        for (int i = 0; i < 3; ++i) s.pos[i] = p->geom_pos[i];
+        for (int i = 0; i < 4; ++i) s.quat[i] = p->geom_quat[i];
+        mj_deleteModel(p);
+    }
+    return true;
+}
+
+extern "C" __attribute__((visibility("default"))) Loaded* scalecert_mujoco_load(const char* path, std::string* error) {
+    static std::once_flag once;
+    std::call_once(once, [] { mju_user_warning = keep_warning; });
+    char err[1000] = "";
+    mjModel* m = load_silenced(path, err, sizeof err);
     if (!m) {
         *error = err[0] ? err : "MuJoCo could not load it";
         return nullptr;
