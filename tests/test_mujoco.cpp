@@ -5,6 +5,7 @@
 #include <boost/test/unit_test.hpp>
 
 #include "engines/mujoco_judge.hpp"
+#include "scalecert/scalecert.hpp"
 #include "files.hpp"
 #include "support.hpp"
 
@@ -13,7 +14,9 @@
 #include <sys/stat.h>
 #include <sys/wait.h>
 
+#include <cmath>
 #include <cstdlib>
+#include <random>
 #include <filesystem>
 #include <fstream>
 
@@ -148,6 +151,15 @@ BOOST_AUTO_TEST_CASE(boxes_at_states_judged_by_hand) {
                 const bool up = n[0] == 0.0 && n[1] == 0.0 && n[2] == 1.0;
                 BOOST_TEST((*p)["normal"]["right"] == up, f);
                 right = right && up;
+                // Each contact's pos lies in both boxes: the cube [-1/4, 3/4] x [-1/2, 1/2] x
+                // [-1/8, 7/8] and the floor meet in [-1/4, 3/4] x [-1/2, 1/2] x [-1/8, 0].
+                bool inside = true;
+                for (const auto& c : (*p)["pos"]["all_said"]) {
+                    const double x = c[0], y = c[1], z = c[2];
+                    inside = inside && x >= -0.25 && x <= 0.75 && y >= -0.5 && y <= 0.5 && z >= -0.125 && z <= 0;
+                }
+                BOOST_TEST((*p)["pos"]["right"] == inside, f);
+                right = right && inside;
             }
         }
         wrong_pairs += !right;
@@ -273,4 +285,79 @@ BOOST_AUTO_TEST_CASE(intended_judges_the_model_as_written) {
             said_why =
                 said_why || x["intended"]["why"].get<std::string>().find("written in the model") != std::string::npos;
     BOOST_TEST(said_why);
+}
+
+BOOST_AUTO_TEST_CASE(contact_points_against_posed_boxes_by_brute_force) {
+    // posed_box_side against the claim rules' own membership (a witness_point in a box at the pose,
+    // the other object a box holding everything): where it decides, inside or within len must be
+    // right, farther than len wrong, and inside must be inside at len 0 too. Boxes of dyadic sizes
+    // at poses of double rotation matrices (not exactly orthogonal), points near their faces,
+    // edges and corners.
+    std::mt19937_64 g(5);
+    std::uniform_real_distribution<double> u(-1, 1);
+    const scalecert::Rational len("1/1000000");
+    long decided = 0, n = 0;
+    for (int trial = 0; trial < 60; ++trial) {
+        mj::Geom box;
+        box.type = mj::kBox;
+        for (double& s : box.size) s = std::ldexp(std::floor(1 + 64 * (u(g) + 1)), -6);
+        double q[4] = {u(g), u(g), u(g), u(g)}, nq = 0;
+        for (double x : q) nq += x * x;
+        for (double& x : q) x /= std::sqrt(nq);
+        const double R[3][3] = {
+            {1 - 2 * (q[2] * q[2] + q[3] * q[3]), 2 * (q[1] * q[2] - q[0] * q[3]), 2 * (q[1] * q[3] + q[0] * q[2])},
+            {2 * (q[1] * q[2] + q[0] * q[3]), 1 - 2 * (q[1] * q[1] + q[3] * q[3]), 2 * (q[2] * q[3] - q[0] * q[1])},
+            {2 * (q[1] * q[3] - q[0] * q[2]), 2 * (q[2] * q[3] + q[0] * q[1]), 1 - 2 * (q[1] * q[1] + q[2] * q[2])}};
+        const double t[3] = {u(g), u(g), u(g)};
+        scalecert::Pose pose;
+        for (size_t r = 0; r < 3; ++r) {
+            for (size_t c = 0; c < 3; ++c) pose[r][c] = scalecert::exact(R[r][c]);
+            pose[r][3] = scalecert::exact(t[r]);
+        }
+        std::vector<scalecert::Point> p1, p2;
+        for (int k = 0; k < 8; ++k) {
+            p1.push_back({scalecert::exact(k & 1 ? box.size[0] : -box.size[0]),
+                          scalecert::exact(k & 2 ? box.size[1] : -box.size[1]),
+                          scalecert::exact(k & 4 ? box.size[2] : -box.size[2])});
+            p2.push_back({k & 1 ? 10 : -10, k & 2 ? 10 : -10, k & 4 ? 10 : -10});
+        }
+        const scalecert::Analysis a(scalecert::Scene(p1, p2, {}, {}));
+        const mj::ExactPosedBox eb = mj::exact_posed_box(box, pose);
+        std::vector<scalecert::Claim> claims;
+        std::vector<Vec3q> points;
+        for (int i = 0; i < 12; ++i) {
+            // A box point (local: each coordinate inside, on a face, or past it), moved by the pose,
+            // then nudged by up to 2·10^-6 in a random direction.
+            double v[3];
+            for (size_t k = 0; k < 3; ++k) {
+                const int kind = static_cast<int>(g() % 3);
+                v[k] = kind == 0 ? box.size[k] * u(g) : (kind == 1 ? 1 : -1) * box.size[k];
+            }
+            const double nudge = std::ldexp(u(g), -static_cast<int>(g() % 40) - 19);
+            Vec3q p;
+            for (size_t r = 0; r < 3; ++r)
+                p[r] = scalecert::exact(R[r][0] * v[0] + R[r][1] * v[1] + R[r][2] * v[2] + t[r] + nudge * u(g));
+            scalecert::Claim c;
+            c.kind = scalecert::ClaimKind::WitnessPoint;
+            c.point = {p[0], p[1], p[2]};
+            c.pose1 = pose;
+            claims.push_back(c);
+            points.push_back(p);
+        }
+        scalecert::ClaimOptions within;
+        within.abs_tolerance = len;
+        const scalecert::Judgements at_len = a.certify(claims, within), at_zero = a.certify(claims);
+        for (size_t i = 0; i < points.size(); ++i, ++n) {
+            const mj::BoxSide s = mj::posed_box_side(eb, points[i], len);
+            if (s == mj::BoxSide::Unsure) continue;
+            ++decided;
+            BOOST_TEST(at_len.items[i].right == (s != mj::BoxSide::Farther), trial << "/" << i);
+            if (s == mj::BoxSide::Inside) BOOST_TEST(at_zero.items[i].right, trial << "/" << i);
+            if (mj::posed_box_side(eb, points[i], 0) == mj::BoxSide::Inside)
+                BOOST_TEST(at_zero.items[i].right);
+            else if (at_zero.items[i].right)
+                BOOST_ERROR("a point in the box not found inside: " << trial << "/" << i);
+        }
+    }
+    BOOST_TEST(decided > n * 9 / 10);  // the fast path decides nearly all
 }

@@ -76,6 +76,9 @@ struct TypedClaim {
     // infinity or a null where a number is due, or a zero normal or direction. The claim is
     // judged wrong; that field's value above is not used.
     std::string no_answer, no_answer_reason;
+    // Witness: also the exact verdict, which the report says (a judge that needs the membership
+    // alone, as scalecert mujoco's of contact points, skips that cost: the verdict stays Separated).
+    bool with_verdict = true;
 };
 
 // A JSON claims file's root ({"format": "scalecert-claims-1", "claims": [...]}), checked, and one

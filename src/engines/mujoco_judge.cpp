@@ -45,6 +45,61 @@ std::string geom_label(const ModelInfo& m, int g) {
 }
 }  // namespace
 
+// posed_box_side (mujoco_judge.hpp): inside when v =
+// M⁻¹(p − t) lies in the box, |v_k| <= size_k, that is (M⁻¹ = adj(M)/det(M)) |adj(M)_k·(p − t)|
+// <= size_k·|det M| for each k; farther than `len` when, for some k, p is outside the slab between
+// the box's two faces across axis k by more than len: the slab is {x : |adj_k·(x − t)| <= size_k
+// |det M|}, so p's distance to it is (|adj_k·(p − t)| − size_k |det M|) / |adj_k|, and the box
+// lies in the slab. Within len when the box's point x = M·clamp(v) + t (v clamped into the box)
+// is within len of p: the box's distance to p is at most |p − x|. Else unsure (the claim rules
+// decide).
+ExactPosedBox exact_posed_box(const Geom& g, const Pose& M) {
+    ExactPosedBox b;
+    auto at = [&](int r, int c) -> const Q& { return M[static_cast<size_t>(r)][static_cast<size_t>(c)]; };
+    for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 3; ++c) {
+            // adj(M)[r][c] = the cofactor of M at (c, r).
+            const int r1 = (c + 1) % 3, r2 = (c + 2) % 3, c1 = (r + 1) % 3, c2 = (r + 2) % 3;
+            b.adj[r][c] = at(r1, c1) * at(r2, c2) - at(r1, c2) * at(r2, c1);
+        }
+    Q det = at(0, 0) * b.adj[0][0] + at(0, 1) * b.adj[1][0] + at(0, 2) * b.adj[2][0];
+    b.singular = sgn(det) == 0;
+    b.det = det;
+    b.M = M;
+    if (sgn(det) < 0) det = -det;
+    for (size_t k = 0; k < 3; ++k) {
+        b.size[k] = exact_from_double(g.size[k]);
+        b.half[k] = b.size[k] * det;
+        b.norm2[k] = b.adj[k][0] * b.adj[k][0] + b.adj[k][1] * b.adj[k][1] + b.adj[k][2] * b.adj[k][2];
+        b.t[k] = M[k][3];
+    }
+    return b;
+}
+BoxSide posed_box_side(const ExactPosedBox& b, const Vec3q& p, const Q& len) {
+    if (b.singular) return BoxSide::Unsure;
+    const Q d[3] = {p[0] - b.t[0], p[1] - b.t[1], p[2] - b.t[2]};
+    bool inside = true;
+    for (size_t k = 0; k < 3; ++k) {
+        const Q excess = abs(b.adj[k][0] * d[0] + b.adj[k][1] * d[1] + b.adj[k][2] * d[2]) - b.half[k];
+        if (sgn(excess) <= 0) continue;
+        inside = false;
+        if (excess * excess > len * len * b.norm2[k]) return BoxSide::Farther;
+    }
+    if (inside) return BoxSide::Inside;
+    Vec3q v;
+    for (size_t k = 0; k < 3; ++k) {
+        v[k] = (b.adj[k][0] * d[0] + b.adj[k][1] * d[1] + b.adj[k][2] * d[2]) / b.det;
+        if (v[k] > b.size[k]) v[k] = b.size[k];
+        if (v[k] < -b.size[k]) v[k] = -b.size[k];
+    }
+    Q dist2 = 0;
+    for (size_t r = 0; r < 3; ++r) {
+        const Q x = b.M[r][0] * v[0] + b.M[r][1] * v[1] + b.M[r][2] * v[2] + b.t[r];
+        dist2 += (p[r] - x) * (p[r] - x);
+    }
+    return dist2 <= len * len ? BoxSide::Within : BoxSide::Unsure;
+}
+
 std::vector<Considered> considered_pairs(const ModelInfo& m) {
     std::map<std::pair<int, int>, Considered> out;
     if (m.disableflags & kDisableContact) return {};
@@ -492,6 +547,13 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
             }
             return out;
         };
+        // Each box geom's exact pose for contact points (posed_box_side), made when first asked.
+        std::vector<std::optional<ExactPosedBox>> exact_boxes(m.geoms.size());
+        auto exact_box_of = [&](int g, const Pose& pose) -> const ExactPosedBox& {
+            std::optional<ExactPosedBox>& e = exact_boxes[static_cast<size_t>(g)];
+            if (!e) e = exact_posed_box(m.geoms[static_cast<size_t>(g)], pose);
+            return *e;
+        };
         Json fp = Json::array();
         for (const Considered& p : pairs) {
             const Geom &ga = m.geoms[static_cast<size_t>(p.g1)], &gb = m.geoms[static_cast<size_t>(p.g2)];
@@ -641,6 +703,52 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
                 }
                 pj["pos"] = Json{
                     {"said", Json::array({number(deepest->pos[0]), number(deepest->pos[1]), number(deepest->pos[2])})}};
+                // Each penetrating contact's pos, the midpoint between the two geoms' deepest
+                // points, lies in both geoms (in their intersection, which is convex and holds
+                // both points): a witness_point claim. Separated contacts' pos are not judged.
+                Json wrong_pos = Json::array(), all_said = Json::array();
+                for (const Contact* c : cs->second)
+                    all_said.push_back(Json::array({number(c->pos[0]), number(c->pos[1]), number(c->pos[2])}));
+                pj["pos"]["all_said"] = std::move(all_said);
+                long judged_pos = 0;
+                for (size_t k = 0; k < cs->second.size(); ++k) {
+                    const Contact& c = *cs->second[k];
+                    if (!(c.dist < 0) || ex.sign() > 0) continue;
+                    TypedClaim w = base;
+                    w.type = ClaimType::Witness;
+                    w.with_verdict = false;  // the signed distance above has it
+                    if (std::isfinite(c.pos[0]) && std::isfinite(c.pos[1]) && std::isfinite(c.pos[2]))
+                        w.point = {exact_from_double(c.pos[0]), exact_from_double(c.pos[1]),
+                                   exact_from_double(c.pos[2])};
+                    else
+                        w.no_answer = "point", w.no_answer_reason = "not a number";
+                    ++judgements, ++judged_pos;
+                    // Two boxes: a point inside both is right, decided here exactly without the
+                    // claim rules' general membership (a point outside may still be within the
+                    // abs tolerance: the rules decide it).
+                    const Geom &g1 = m.geoms[static_cast<size_t>(a)], &g2 = m.geoms[static_cast<size_t>(b)];
+                    bool right = false, decided = false;
+                    if (w.no_answer.empty() && g1.type == kBox && g2.type == kBox) {
+                        const BoxSide s1 = posed_box_side(exact_box_of(a, *w.pose[0]), w.point, opt.tolerance.abs),
+                                      s2 = posed_box_side(exact_box_of(b, *w.pose[1]), w.point, opt.tolerance.abs);
+                        auto in = [](BoxSide s) { return s == BoxSide::Inside || s == BoxSide::Within; };
+                        decided = (in(s1) && in(s2)) || s1 == BoxSide::Farther || s2 == BoxSide::Farther;
+                        right = in(s1) && in(s2);
+                    }
+                    if (!decided) right = judge_claim(*pe->rules, w, 3, opt.model, nullptr).right;
+                    if (right) continue;
+                    wrong_pos.push_back(k);
+                    claims.push_back(w);
+                    text += "WRONG  state " + std::to_string(f) + " (" + labels[f] + "): " + geom_label(m, a) +
+                            " and " + geom_label(m, b) + ": contact " + std::to_string(k) + "'s pos (" +
+                            to_shortest(c.pos[0]) + ", " + to_shortest(c.pos[1]) + ", " + to_shortest(c.pos[2]) +
+                            ") is not in both geoms\n";
+                }
+                if (judged_pos) {
+                    pj["pos"]["right"] = wrong_pos.empty();
+                    if (!wrong_pos.empty()) pj["pos"]["wrong_contacts"] = std::move(wrong_pos);
+                    all_right = all_right && pj["pos"]["right"].get<bool>();
+                }
             }
             if (!all_right) {
                 res.wrong += 1;
@@ -663,6 +771,10 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
                                               : c.bound == TypedClaim::Bound::AtLeast ? "at_least"
                                                                                       : "below";
                             j[key] = c.bound == TypedClaim::Bound::Value ? hex(deepest->dist) : hex(p.margin);
+                        } else if (c.type == ClaimType::Witness) {
+                            // The point's rationals are doubles' exact values: get_d is exact.
+                            j["point"] = Json::array(
+                                {hex(c.point[0].get_d()), hex(c.point[1].get_d()), hex(c.point[2].get_d())});
                         } else {
                             j["value"] = hex(-deepest->dist);
                             j["direction"] =

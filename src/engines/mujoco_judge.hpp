@@ -29,6 +29,22 @@ std::vector<Considered> considered_pairs(const ModelInfo& m);
 std::vector<std::vector<double>> choose_states(const ModelInfo& m, std::vector<std::vector<double>> qpos,
                                                std::vector<std::string>& labels, int key);
 
+// Where a contact point p lies against a box geom g at pose [M | t], exactly (the fast path of
+// judging contact positions; the claim rules decide what it leaves unsure): inside the box; within
+// `len` of it (a point of the box that close was found); farther than len (outside the slab
+// between two opposite faces by more than len); or unsure.
+enum class BoxSide { Inside, Within, Farther, Unsure };
+struct ExactPosedBox {
+    Q adj[3][3], half[3], norm2[3];  // adj(M); size_k·|det M|; |adj_k|²
+    Q det;                           // det M
+    Pose M;
+    Vec3q t;
+    std::array<Q, 3> size;
+    bool singular = false;
+};
+ExactPosedBox exact_posed_box(const Geom& g, const Pose& M);
+BoxSide posed_box_side(const ExactPosedBox& b, const Vec3q& p, const Q& len);
+
 struct MujocoOptions {
     Tolerance tolerance;
     std::string model;     // the model's path, for the report and reproducers

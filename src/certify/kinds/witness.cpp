@@ -11,7 +11,7 @@ void ConvexRules::Impl::witness(const TypedClaim& c, Judged& g, Proof* proof) {
     auto& d = g.set<WitnessJudged>();
     Json mp;
     members(c.rho1, c.rho2, c.point, c.point, d, proof ? &mp : nullptr);
-    d.exact_verdict = exact_verdict(c.rho1, c.rho2);
+    if (c.with_verdict) d.exact_verdict = exact_verdict(c.rho1, c.rho2);
     g.right = d.in1 && d.in2;
     if (proof) proof->proof = std::move(mp);
 }
