@@ -361,3 +361,29 @@ BOOST_AUTO_TEST_CASE(contact_points_against_posed_boxes_by_brute_force) {
     }
     BOOST_TEST(decided > n * 9 / 10);  // the fast path decides nearly all
 }
+
+BOOST_AUTO_TEST_CASE(planes_at_states_by_hand) {
+    // plane.xml: the floor is the half-space z <= 0. plane.qpos: (0) the cube 3/2 above it, the tet
+    // 1 above (no contacts: right); (1) the cube 1/8 deep (S = −1/8 exactly), the tet's lowest
+    // vertex at z ≈ −1/4 (MuJoCo's float32 re-centred vertices: S within 10^-7 of −1/4); (2) the
+    // cube touching (S = 0: a contact there is wrong at tolerance 0, right within 1e-9).
+    const std::string args = "mujoco " + kData + "plane.xml --qpos " + kData + "plane.qpos --json";
+    const auto j = nlohmann::json::parse(run(args).out);
+    auto pair = [&](size_t f, const char* other) {
+        for (const auto& p : j["frames"][f]["pairs"])
+            if (p["names"] == nlohmann::json::array({"floor", other})) return p;
+        return nlohmann::json();
+    };
+    BOOST_TEST(pair(0, "cube")["verdict"]["right"] == true);
+    BOOST_TEST(pair(0, "tet")["verdict"]["right"] == true);
+    BOOST_TEST(pair(1, "cube")["signed_distance"]["exact"] == "-0.125");
+    BOOST_TEST(pair(1, "cube")["verdict"]["exact"] == "overlapping");
+    const double tet = std::stod(pair(1, "tet")["signed_distance"]["exact"].get<std::string>());
+    BOOST_TEST(std::fabs(tet + 0.25) < 1e-7);
+    BOOST_TEST(pair(2, "cube")["signed_distance"]["exact"] == "0");
+    BOOST_TEST(pair(2, "cube")["verdict"]["right"] == (pair(2, "cube")["contacts"].get<int>() == 0));
+    const auto k = nlohmann::json::parse(run(args + " --abs-tolerance 1e-9").out);
+    for (const auto& p : k["frames"][2]["pairs"])
+        if (p["names"] == nlohmann::json::array({"floor", "cube"})) BOOST_TEST(p["verdict"]["right"] == true);
+    BOOST_TEST(j["summary"]["pairs_unjudged"] == 0);  // planes are judged now
+}

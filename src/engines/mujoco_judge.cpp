@@ -422,6 +422,8 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
             }
     }
     long decided_by_boxes = 0;
+    std::vector<std::optional<std::vector<Vec3q>>> object_points(m.geoms.size());  // for planes
+    long positions_unjudged = 0;
 
     Json frames = Json::array(), unjudged = Json::array();
     std::map<std::pair<int, int>, std::string> unjudged_why;
@@ -554,18 +556,230 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
             if (!e) e = exact_posed_box(m.geoms[static_cast<size_t>(g)], pose);
             return *e;
         };
+        // A plane geom and a box or mesh geom (CLAIMS.md, "Engines' conventions", MuJoCo's planes):
+        // the plane is the half-space n·(x − p0) <= 0, n its z-axis (column 2 of its frame), p0 its
+        // origin; with m the least n·(v − p0) over the other geom's posed vertices v and N = |n|²,
+        // the signed distance is S = m/√N, and a penetration's only direction is n (from the
+        // plane). Each comparison squares with signs; the same claims as a pair of polyhedra.
+        auto judge_plane = [&](int a, int b, const Considered& p, const std::vector<const Contact*>* cons,
+                               const Contact* deepest) -> Json {
+            const bool plane_first = m.geoms[static_cast<size_t>(a)].type == kPlane;
+            const int pl = plane_first ? a : b, ob = plane_first ? b : a;
+            const size_t P = static_cast<size_t>(pl), O = static_cast<size_t>(ob);
+            Vec3q n, w;
+            for (size_t k = 0; k < 3; ++k) n[k] = exact_from_double(s.xmat[9 * P + 3 * k + 2]);
+            Q c0 = 0, N = 0;
+            for (size_t k = 0; k < 3; ++k) {
+                w[k] = 0;
+                for (size_t r = 0; r < 3; ++r) w[k] += exact_from_double(s.xmat[9 * O + 3 * r + k]) * n[r];
+                c0 += n[k] * (exact_from_double(s.xpos[3 * O + k]) - exact_from_double(s.xpos[3 * P + k]));
+                N += n[k] * n[k];
+            }
+            const Q margin = exact_from_double(p.margin);
+            Json pj{
+                {"geom1", a},
+                {"geom2", b},
+                {"names", Json::array({m.geoms[static_cast<size_t>(a)].name, m.geoms[static_cast<size_t>(b)].name})},
+                {"margin", p.margin},
+                {"contacts", cons ? cons->size() : 0}};
+            // No contact, and the object's box (its local box's corners, posed exactly) beyond the
+            // plane by at least the margin: right, without its vertices.
+            if (!deepest) {
+                Q lower;
+                for (int k = 0; k < 8; ++k) {
+                    Q x = c0;
+                    for (size_t j = 0; j < 3; ++j) x += w[j] * exact_from_double(local[O][(k >> j) & 1 ? j + 3 : j]);
+                    if (k == 0 || x < lower) lower = x;
+                }
+                if (sign_minus_sqrt(lower, margin - opt.tolerance.abs, N) >= 0) {
+                    ++judgements;
+                    pj["verdict"] = Json{{"said", "no contact"}, {"exact", "separated"}, {"right", true}};
+                    pj["signed_distance"] = Json{{"decided_by", "its box, beyond the plane by the margin"}};
+                    return pj;
+                }
+            }
+            if (!object_points[O]) object_points[O] = geom_points(m.geoms[O]).points;
+            Q least;
+            bool first = true;
+            for (const Vec3q& v : *object_points[O]) {
+                const Q x = w[0] * v[0] + w[1] * v[1] + w[2] * v[2] + c0;
+                if (first || x < least) least = x, first = false;
+            }
+            const int sign = sgn(least);
+            const Q E = least * least / N;  // S²
+            const Verdict exact = sign > 0 ? Verdict::Separated : sign == 0 ? Verdict::Touching : Verdict::Overlapping;
+            // A contact claims S < margin (+ LEN), none S >= margin (− LEN), as for two polyhedra.
+            const bool verdict_judged = deepest || !buffer_full;
+            const bool vright = deepest ? sign_minus_sqrt(least, margin + opt.tolerance.abs, N) < 0
+                                        : sign_minus_sqrt(least, margin - opt.tolerance.abs, N) >= 0;
+            judgements += verdict_judged;
+            pj["verdict"] = Json{{"said", deepest ? "contact" : "no contact"},
+                                 {"exact", verdict_name(exact)},
+                                 {"right", verdict_judged ? Json(vright) : Json(nullptr)}};
+            pj["signed_distance"] = Json{{"exact", signed_text(sign, E)}};
+            put_exact(pj["signed_distance"], "exact_squared", E);
+            if (!verdict_judged) {
+                pj["verdict"]["why"] = "MuJoCo's contact buffer was full at this state: its contacts were dropped";
+                ++verdicts_unjudged;
+            }
+            bool all_right = vright || !verdict_judged;
+            const std::string who = "WRONG  state " + std::to_string(f) + " (" + labels[f] + "): " + geom_label(m, a) +
+                                    " and " + geom_label(m, b) + ": ";
+            if (!all_right) {
+                ++wrong_verdicts;
+                wrong_list.push_back(Json{{"frame", f},
+                                          {"geom1", a},
+                                          {"geom2", b},
+                                          {"said", deepest ? "contact" : "no contact"},
+                                          {"exact", verdict_name(exact)},
+                                          {"signed_distance_m", signed_double(sign, E)},
+                                          {"margin", p.margin}});
+                text += who + (deepest ? "a contact" : "no contact") + " within the margin " + to_shortest(p.margin) +
+                        ", but the signed distance is ~" + to_shortest(signed_double(sign, E)) + " m (" +
+                        verdict_name(exact) + ")\n";
+            }
+            if (deepest) {
+                const bool finite = std::isfinite(deepest->dist);
+                const bool dright = finite && opt.tolerance.close_signed(exact_from_double(deepest->dist), sign, E);
+                const double err = finite ? signed_error(deepest->dist, sign, E) : INFINITY;
+                worst_dist = std::max(worst_dist, err);
+                ++judgements;
+                pj["dist"] = Json{{"said", number(deepest->dist)},
+                                  {"exact", signed_text(sign, E)},
+                                  {"error_m", number(err)},
+                                  {"right", dright}};
+                all_right = all_right && dright;
+                if (!dright)
+                    text += who + "dist " + to_shortest(deepest->dist) + ", exact ~" +
+                            to_shortest(signed_double(sign, E)) + " m (off by " + to_shortest(err) + " m)\n";
+                Json said =
+                    Json::array({number(deepest->frame[0]), number(deepest->frame[1]), number(deepest->frame[2])});
+                if (deepest->dist < 0 && sign < 0) {
+                    // Moving geom2 along the normal by the depth separates them only along +n from
+                    // the plane (the plane geom1) or −n (the plane geom2): the normal must be a
+                    // positive multiple of it, exactly.
+                    Vec3q u, d = n;
+                    bool known = true;
+                    for (size_t k = 0; k < 3; ++k) {
+                        known = known && std::isfinite(deepest->frame[k]);
+                        u[k] = known ? exact_from_double(deepest->frame[k]) : Q(0);
+                        if (!plane_first) d[k] = -d[k];
+                    }
+                    const bool parallel = known && u[1] * d[2] == u[2] * d[1] && u[2] * d[0] == u[0] * d[2] &&
+                                          u[0] * d[1] == u[1] * d[0] &&
+                                          sgn(u[0] * d[0] + u[1] * d[1] + u[2] * d[2]) > 0;
+                    ++judgements;
+                    pj["normal"] = Json{{"said", said}, {"right", parallel}};
+                    all_right = all_right && parallel;
+                    if (!parallel) text += who + "the normal is not the plane's\n";
+                } else {
+                    pj["normal"] = Json{{"said", said}};
+                }
+                // A penetrating contact's pos lies in both: within LEN of the half-space, and in
+                // the box (posed_box_side; a mesh's positions are not judged against a plane).
+                Json all_said = Json::array(), wrong_pos = Json::array();
+                long judged_pos = 0;
+                for (size_t k = 0; k < cons->size(); ++k) {
+                    const Contact& c = *(*cons)[k];
+                    all_said.push_back(Json::array({number(c.pos[0]), number(c.pos[1]), number(c.pos[2])}));
+                    if (!(c.dist < 0) || sign > 0 || m.geoms[O].type != kBox) continue;
+                    bool right = std::isfinite(c.pos[0]) && std::isfinite(c.pos[1]) && std::isfinite(c.pos[2]);
+                    if (right) {
+                        const Vec3q q{exact_from_double(c.pos[0]), exact_from_double(c.pos[1]),
+                                      exact_from_double(c.pos[2])};
+                        Q h = 0;
+                        for (size_t j = 0; j < 3; ++j) h += n[j] * (q[j] - exact_from_double(s.xpos[3 * P + j]));
+                        const BoxSide bs = posed_box_side(exact_box_of(ob, pose_of(s, ob)), q, opt.tolerance.abs);
+                        // Near a box's edge within the tolerance the fast path is unsure: that
+                        // position is left unjudged (counted), never called wrong.
+                        if (bs == BoxSide::Unsure) {
+                            ++positions_unjudged;
+                            continue;
+                        }
+                        right = sign_minus_sqrt(h, opt.tolerance.abs, N) <= 0 && bs != BoxSide::Farther;
+                    }
+                    ++judgements, ++judged_pos;
+                    if (right) continue;
+                    wrong_pos.push_back(k);
+                    text += who + "contact " + std::to_string(k) + "'s pos (" + to_shortest(c.pos[0]) + ", " +
+                            to_shortest(c.pos[1]) + ", " + to_shortest(c.pos[2]) + ") is not in both geoms\n";
+                }
+                pj["pos"] = Json{
+                    {"said", Json::array({number(deepest->pos[0]), number(deepest->pos[1]), number(deepest->pos[2])})},
+                    {"all_said", std::move(all_said)}};
+                if (judged_pos) {
+                    const bool pos_right = wrong_pos.empty();
+                    pj["pos"]["right"] = pos_right;
+                    if (!pos_right) pj["pos"]["wrong_contacts"] = std::move(wrong_pos);
+                    all_right = all_right && pos_right;
+                }
+            }
+            if (!all_right) res.wrong += 1;
+            if (opt.intended) {
+                // As written: the same half-space against the geom as written (a plane is its frame).
+                const Intended& iw = written[O];
+                if (!iw.points) {
+                    ++written_unjudged;
+                    pj["intended"] = Json{{"why", geom_label(m, ob) + ": " + iw.why_not}};
+                    return pj;
+                }
+                Q lw;
+                bool firstw = true;
+                for (const Vec3q& v : iw.points->points) {
+                    const Q x = w[0] * v[0] + w[1] * v[1] + w[2] * v[2] + c0;
+                    if (firstw || x < lw) lw = x, firstw = false;
+                }
+                const int sw = sgn(lw);
+                const Q Ew = lw * lw / N;
+                const bool vw = deepest ? sign_minus_sqrt(lw, margin + opt.tolerance.abs, N) < 0
+                                        : sign_minus_sqrt(lw, margin - opt.tolerance.abs, N) >= 0;
+                const bool vjudged = deepest || !buffer_full;
+                Json iwj{{"verdict", Json{{"exact", verdict_name(sw > 0    ? Verdict::Separated
+                                                                 : sw == 0 ? Verdict::Touching
+                                                                           : Verdict::Overlapping)},
+                                          {"right", vjudged ? Json(vw) : Json(nullptr)}}},
+                         {"signed_distance", Json{{"exact", signed_text(sw, Ew)}}}};
+                std::vector<std::string> wrong;
+                if (vjudged && !vw)
+                    wrong.push_back(std::string(deepest ? "a contact" : "no contact") + " within the margin " +
+                                    to_shortest(p.margin) + ", but the signed distance is ~" +
+                                    to_shortest(signed_double(sw, Ew)) + " m");
+                if (deepest) {
+                    const bool finite = std::isfinite(deepest->dist);
+                    const bool dright = finite && opt.tolerance.close_signed(exact_from_double(deepest->dist), sw, Ew);
+                    const double err = finite ? signed_error(deepest->dist, sw, Ew) : INFINITY;
+                    written_worst_dist = std::max(written_worst_dist, err);
+                    iwj["dist"] = Json{{"exact", signed_text(sw, Ew)}, {"error_m", number(err)}, {"right", dright}};
+                    if (!dright)
+                        wrong.push_back("dist " + to_shortest(deepest->dist) + ", exact ~" +
+                                        to_shortest(signed_double(sw, Ew)) + " m (off by " + to_shortest(err) + " m)");
+                }
+                if (!wrong.empty()) {
+                    ++written_wrong;
+                    for (const std::string& x : wrong)
+                        text += "AS WRITTEN  state " + std::to_string(f) + " (" + labels[f] + "): " + geom_label(m, a) +
+                                " and " + geom_label(m, b) + ": " + x + "\n";
+                }
+                pj["intended"] = std::move(iwj);
+            }
+            return pj;
+        };
         Json fp = Json::array();
         for (const Considered& p : pairs) {
             const Geom &ga = m.geoms[static_cast<size_t>(p.g1)], &gb = m.geoms[static_cast<size_t>(p.g2)];
             const auto cs = of.find({p.g1, p.g2});
             const size_t ncon = cs == of.end() ? 0 : cs->second.size();
             std::string why;
-            if (!judged_type(ga.type) || !judged_type(gb.type)) {
-                const Geom& g = judged_type(ga.type) ? gb : ga;
-                why = std::string(geom_type_name(g.type)) +
-                      (g.type == kSphere || g.type == kCapsule ? ": objects with a radius are not judged yet"
-                       : g.type == kPlane                      ? ": planes (half-spaces) are not judged yet"
-                                                               : ": not a polyhedron (judged: box and mesh geoms)");
+            // A plane against a box or a mesh: a half-space, judged below (plane_pair).
+            const bool plane_pair =
+                (ga.type == kPlane && judged_type(gb.type)) || (gb.type == kPlane && judged_type(ga.type));
+            if (ga.type == kPlane && gb.type == kPlane)
+                why = "two planes: MuJoCo 2.2.2 has no plane-plane collision";
+            else if (!plane_pair && (!judged_type(ga.type) || !judged_type(gb.type))) {
+                const Geom& g = judged_type(ga.type) || ga.type == kPlane ? gb : ga;
+                why = std::string(geom_type_name(g.type)) + (g.type == kSphere || g.type == kCapsule
+                                                                 ? ": objects with a radius are not judged yet"
+                                                                 : ": not a polyhedron (judged: box and mesh geoms)");
             }
             // The deepest contact speaks for the pair (a box's manifold holds a point per corner);
             // its geoms' order is the claim's: P1 = its geom1, its normal from geom1 to geom2.
@@ -574,6 +788,12 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
                 for (const Contact* c : cs->second)
                     if (!deepest || c->dist < deepest->dist || std::isnan(c->dist)) deepest = c;
             const int a = deepest ? deepest->g1 : p.g1, b = deepest ? deepest->g2 : p.g2;
+            if (plane_pair && why.empty() && (!finite_state(s, a) || !finite_state(s, b)))
+                why = "the geoms' poses are not finite at this state";
+            if (plane_pair && why.empty()) {
+                fp.push_back(judge_plane(a, b, p, cs == of.end() ? nullptr : &cs->second, deepest));
+                continue;
+            }
             PairEngine* pe = nullptr;
             if (why.empty()) {
                 pe = &engine_for(a, b);
@@ -823,6 +1043,7 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
                  {"contacts_outside_considered_pairs", contacts_outside},
                  {"verdicts_unjudged_buffer_full", verdicts_unjudged},
                  {"decided_by_boxes", decided_by_boxes},
+                 {"positions_unjudged", positions_unjudged},
                  {"mujoco_warnings", res.warnings.size()},
                  {"worst_dist_error_m", worst_dist},
                  {"wrong_verdicts", std::move(wrong_list)}};

@@ -163,3 +163,53 @@ BOOST_AUTO_TEST_CASE(held_arrays_that_do_not_fit) {
     refused(good, d, "contact[0].geom2");
     BOOST_CHECK_THROW(scalecert::judge_mujoco_held(good, {}), scalecert::InputError);
 }
+
+// plane.xml (planes are half-spaces: CLAIMS.md, "Engines' conventions"): the floor z <= 0, the
+// cube of half-extent 1/2 at z = 3/8 is 1/8 deep (S = −1/8 exactly), its normal is +z from the
+// floor, and each corner contact's pos (±1/2, ±1/2, −1/16) lies in both. Forged outputs through
+// the held arrays are judged wrong each for its own reason: a dist of −0.1, a normal tilted, a pos
+// above the floor.
+BOOST_AUTO_TEST_CASE(planes_by_hand_and_forged) {
+    Model w(kData + "plane.xml");
+    w.forward({0, 0, 0.375, 1, 0, 0, 0, 3, 0, -0.25, 1, 0, 0, 0});
+    const scalecert::MujocoHeldModel held = scalecert::mujoco_held(w.m);
+    const scalecert::MujocoHeldData state = scalecert::mujoco_held(w.m, w.d);
+    auto floor_cube = [](const nlohmann::json& j) {
+        for (const auto& p : j["frames"][0]["pairs"])
+            if (p["names"] == nlohmann::json::array({"floor", "cube"})) return p;
+        return nlohmann::json();
+    };
+    const nlohmann::json ok = floor_cube(nlohmann::json::parse(scalecert::judge_mujoco_held(held, {state}).json));
+    BOOST_TEST_REQUIRE(ok["contacts"].get<int>() == 4);
+    BOOST_TEST(ok["signed_distance"]["exact"] == "-0.125");
+    BOOST_TEST(ok["verdict"]["right"] == true);
+    BOOST_TEST(ok["dist"]["right"] == (ok["dist"]["said"].get<double>() == -0.125));
+    BOOST_TEST(ok["normal"]["right"] == (ok["normal"]["said"] == nlohmann::json::array({0.0, 0.0, 1.0})));
+    bool corners = true;
+    for (const auto& c : ok["pos"]["all_said"])
+        corners = corners && std::fabs(c[0].get<double>()) == 0.5 && std::fabs(c[1].get<double>()) == 0.5 &&
+                  c[2].get<double>() == -0.0625;
+    BOOST_TEST(ok["pos"]["right"] == corners);
+    size_t k = 0;  // the floor-cube contacts
+    while (k < state.contact.size() && state.contact[k].geom2 != 1 && state.contact[k].geom1 != 1) ++k;
+    BOOST_TEST_REQUIRE(k < state.contact.size());
+    auto forged = [&](auto change) {
+        scalecert::MujocoHeldData s = state;
+        for (auto& c : s.contact)
+            if (c.geom1 == state.contact[k].geom1 && c.geom2 == state.contact[k].geom2) change(c);
+        return floor_cube(nlohmann::json::parse(scalecert::judge_mujoco_held(held, {s}).json));
+    };
+    BOOST_TEST(forged([](scalecert::MujocoHeldContact& c) { c.dist = -0.1; })["dist"]["right"] == false);
+    BOOST_TEST(forged([](scalecert::MujocoHeldContact& c) { c.frame[0] = 1e-3; })["normal"]["right"] == false);
+    BOOST_TEST(forged([](scalecert::MujocoHeldContact& c) { c.pos[2] = 0.01; })["pos"]["right"] == false);
+    // The floor's normal reversed (from the cube into the floor): wrong.
+    BOOST_TEST(forged([](scalecert::MujocoHeldContact& c) { c.frame[2] = -1; })["normal"]["right"] == false);
+    // A contact said where the cube is 3/2 above the floor: the verdict is wrong.
+    w.forward({0, 0, 2, 1, 0, 0, 0, 3, 0, 1, 1, 0, 0, 0});
+    scalecert::MujocoHeldData far = scalecert::mujoco_held(w.m, w.d);
+    BOOST_TEST_REQUIRE(far.contact.empty());
+    far.contact.push_back(state.contact[k]);
+    const nlohmann::json f = floor_cube(nlohmann::json::parse(scalecert::judge_mujoco_held(held, {far}).json));
+    BOOST_TEST(f["verdict"]["right"] == false);
+    BOOST_TEST(f["signed_distance"]["exact"] == "1.5");
+}
