@@ -2,12 +2,8 @@
 // fcl_bullet.cpp), looked for in this order: $SCALECERT_FCL_BULLET_MODULE; the build tree's copy;
 // <executable's directory>/../<libdir>/scalecert/ (an installed command); the install prefix.
 #include "baselines/baselines.hpp"
+#include "io/module.hpp"
 
-#include <dlfcn.h>
-#include <unistd.h>
-
-#include <cstdlib>
-#include <filesystem>
 #include <mutex>
 #include <stdexcept>
 
@@ -29,29 +25,17 @@ const Module& module() {
     static std::once_flag once;
     static std::string error;
     std::call_once(once, [] {
-        std::vector<std::string> paths;
-        if (const char* e = std::getenv("SCALECERT_FCL_BULLET_MODULE")) paths.push_back(e);
-        paths.push_back(SCALECERT_FCL_BULLET_BUILD);
-        std::error_code ec;
-        const auto exe = std::filesystem::read_symlink("/proc/self/exe", ec);
-        if (!ec)
-            paths.push_back(
-                (exe.parent_path() / ".." / SCALECERT_LIBDIR / "scalecert" / "libscalecert_fcl_bullet.so").string());
-        paths.push_back(SCALECERT_FCL_BULLET_INSTALLED);
-        for (const std::string& p : paths) {
-            if (::access(p.c_str(), R_OK) != 0) continue;
-            void* h = ::dlopen(p.c_str(), RTLD_NOW | RTLD_LOCAL);
-            if (!h) {
-                error = dlerror();
-                continue;
-            }
-            mod.fcl = reinterpret_cast<MakeFcl>(::dlsym(h, "scalecert_make_fcl"));
-            mod.bullet = reinterpret_cast<MakeBullet>(::dlsym(h, "scalecert_make_bullet"));
-            mod.compound = reinterpret_cast<MakeCompound>(::dlsym(h, "scalecert_make_compound"));
-            if (mod.fcl && mod.bullet && mod.compound) return;
-            error = p + ": lacks the entry points";
+        const std::vector<void*> f =
+            open_module(module_paths("SCALECERT_FCL_BULLET_MODULE", SCALECERT_FCL_BULLET_BUILD, SCALECERT_LIBDIR,
+                                     "libscalecert_fcl_bullet.so", SCALECERT_FCL_BULLET_INSTALLED),
+                        {"scalecert_make_fcl", "scalecert_make_bullet", "scalecert_make_compound"}, &error);
+        if (f.empty()) {
+            if (error.empty()) error = "libscalecert_fcl_bullet.so not found (set SCALECERT_FCL_BULLET_MODULE)";
+            return;
         }
-        if (error.empty()) error = "libscalecert_fcl_bullet.so not found (set SCALECERT_FCL_BULLET_MODULE)";
+        mod.fcl = reinterpret_cast<MakeFcl>(f[0]);
+        mod.bullet = reinterpret_cast<MakeBullet>(f[1]);
+        mod.compound = reinterpret_cast<MakeCompound>(f[2]);
     });
     if (!mod.fcl || !mod.bullet || !mod.compound)
         throw std::runtime_error("the FCL/Bullet baselines cannot be loaded: " + error);

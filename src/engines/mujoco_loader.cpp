@@ -3,9 +3,9 @@
 // scalecert/ (an installed command); the install prefix.
 #include "engines/mujoco_held.hpp"
 #include "io/files.hpp"
+#include "io/module.hpp"
 #include "numeric/exact.hpp"
 
-#include <dlfcn.h>
 #include <unistd.h>
 
 #include <cstdlib>
@@ -31,29 +31,18 @@ const Module& module() {
     static std::once_flag once;
     static std::string error;
     std::call_once(once, [] {
-        std::vector<std::string> paths;
-        if (const char* e = std::getenv("SCALECERT_MUJOCO_MODULE")) paths.push_back(e);
 #ifdef SCALECERT_MUJOCO_BUILD
-        paths.push_back(SCALECERT_MUJOCO_BUILD);
+        const std::string built = SCALECERT_MUJOCO_BUILD;
+#else
+        const std::string built;
 #endif
-        std::error_code ec;
-        const auto exe = std::filesystem::read_symlink("/proc/self/exe", ec);
-        if (!ec)
-            paths.push_back(
-                (exe.parent_path() / ".." / SCALECERT_MUJOCO_LIBDIR / "scalecert" / "libscalecert_mujoco.so").string());
-        paths.push_back(SCALECERT_MUJOCO_INSTALLED);
-        for (const std::string& p : paths) {
-            if (::access(p.c_str(), R_OK) != 0) continue;
-            void* h = ::dlopen(p.c_str(), RTLD_NOW | RTLD_LOCAL);
-            if (!h) {
-                error = dlerror();
-                continue;
-            }
-            load = reinterpret_cast<LoadFn>(::dlsym(h, "scalecert_mujoco_load"));
-            mod.mesh_sources = reinterpret_cast<MeshSourcesFn>(::dlsym(h, "scalecert_mujoco_mesh_sources"));
-            if (load && mod.mesh_sources) return;
-            load = nullptr;
-            error = p + ": lacks the entry point";
+        const std::vector<void*> f = open_module(module_paths("SCALECERT_MUJOCO_MODULE", built, SCALECERT_MUJOCO_LIBDIR,
+                                                              "libscalecert_mujoco.so", SCALECERT_MUJOCO_INSTALLED),
+                                                 {"scalecert_mujoco_load", "scalecert_mujoco_mesh_sources"}, &error);
+        if (!f.empty()) {
+            load = reinterpret_cast<LoadFn>(f[0]);
+            mod.mesh_sources = reinterpret_cast<MeshSourcesFn>(f[1]);
+            return;
         }
         if (error.empty())
             error =

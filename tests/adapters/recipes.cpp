@@ -45,8 +45,8 @@ void say(const char* what, const scalecert::Analysis& a, const std::vector<scale
 }  // namespace
 
 int main(int argc, char** argv) {
-    const std::string path = argc > 1 ? argv[1] : std::string(SCALECERT_SOURCE_DIR) +
-                                                      "/certificates/scenes/compound/panda/finger.obj";
+    const std::string path =
+        argc > 1 ? argv[1] : std::string(SCALECERT_SOURCE_DIR) + "/certificates/scenes/compound/panda/finger.obj";
     std::ifstream in(path);
     std::vector<K::Point_3> pts;
     for (std::string line; std::getline(in, line);) {
@@ -72,8 +72,9 @@ int main(int argc, char** argv) {
     auto cube = std::make_shared<fcl::Boxd>(0.04, 0.04, 0.04);
     const scalecert::Analysis scene(scalecert::fcl_scene<double>(*finger, *cube));
     btConvexHullShape bfinger, bcube;
-    for (const auto& v : *verts) bfinger.addPoint(btVector3(static_cast<btScalar>(v[0]), static_cast<btScalar>(v[1]),
-                                                            static_cast<btScalar>(v[2])));
+    for (const auto& v : *verts)
+        bfinger.addPoint(
+            btVector3(static_cast<btScalar>(v[0]), static_cast<btScalar>(v[1]), static_cast<btScalar>(v[2])));
     for (int k = 0; k < 8; ++k)
         bcube.addPoint(btVector3(k & 1 ? 0.02f : -0.02f, k & 2 ? 0.02f : -0.02f, k & 4 ? 0.02f : -0.02f));
     bfinger.setMargin(0);
@@ -92,7 +93,8 @@ int main(int argc, char** argv) {
         fcl::DistanceRequestd dq(true);
         fcl::DistanceResultd dr;
         fcl::distance(&o1, &o2, dq, dr);
-        for (const auto& c : scalecert::fcl_claims(dq, dr, t1, t2)) (c.kind == scalecert::ClaimKind::Distance ? fd : fc).push_back(c);
+        for (const auto& c : scalecert::fcl_claims(dq, dr, t1, t2))
+            (c.kind == scalecert::ClaimKind::Distance ? fd : fc).push_back(c);
         fcl::CollisionRequestd cq(1, true);
         fcl::CollisionResultd cr;
         fcl::collide(&o1, &o2, cq, cr);
