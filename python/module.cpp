@@ -1360,27 +1360,39 @@ void bind_mujoco_and_testing(py::module_& m) {
         "mj_forward or mj_step (qpos, geom_xpos, geom_xmat, contact, ncon), or a list of them, one a state");
     py::module_ t =
         m.def_submodule("testing", "assertions for pytest: each raises AssertionError listing every wrong judgement");
+    // A MuJoCo gate's verdict: nothing judged fails, a wrong pair state fails listing each.
+    auto gate = [](const scalecert::MujocoJudgement& j, const py::handle& failures) {
+        if (j.judgements == 0) {  // a gate that checked nothing fails
+            PyErr_SetString(PyExc_AssertionError, ("scalecert: nothing of the model was judged:\n" + j.text).c_str());
+            throw py::error_already_set();
+        }
+        if (j.wrong_pairs == 0) return;
+        std::string msg = "scalecert: MuJoCo was wrong at " + std::to_string(j.wrong_pairs) + " pair state" +
+                          (j.wrong_pairs == 1 ? "" : "s") + ":\n" + j.text;
+        if (!failures.is_none())
+            msg += "reproducers (scalecert certify-fp replays them): " + path_arg(failures, "failures");
+        PyErr_SetString(PyExc_AssertionError, msg.c_str());
+        throw py::error_already_set();
+    };
     t.def(
         "assert_mujoco",
-        [](const py::handle& model, const py::handle& qpos, const py::handle& key, const py::handle& tolerance,
-           const py::handle& abs_tolerance, const py::handle& failures) {
-            const scalecert::MujocoJudgement j = mujoco_judgement(model, qpos, key, tolerance, abs_tolerance, failures);
-            if (j.judgements == 0) {  // a gate that checked nothing fails
-                PyErr_SetString(PyExc_AssertionError,
-                                ("scalecert: nothing of the model was judged:\n" + j.text).c_str());
-                throw py::error_already_set();
-            }
-            if (j.wrong_pairs == 0) return;
-            std::string msg = "scalecert: MuJoCo was wrong at " + std::to_string(j.wrong_pairs) + " pair state" +
-                              (j.wrong_pairs == 1 ? "" : "s") + ":\n" + j.text;
-            if (!failures.is_none())
-                msg += "reproducers (scalecert certify-fp replays them): " + path_arg(failures, "failures");
-            PyErr_SetString(PyExc_AssertionError, msg.c_str());
-            throw py::error_already_set();
+        [gate](const py::handle& model, const py::handle& qpos, const py::handle& key, const py::handle& tolerance,
+               const py::handle& abs_tolerance, const py::handle& failures) {
+            gate(mujoco_judgement(model, qpos, key, tolerance, abs_tolerance, failures), failures);
         },
         py::arg("model"), py::arg("qpos") = py::none(), py::arg("key") = py::none(), py::arg("tolerance") = 0,
         py::arg("abs_tolerance") = 0, py::arg("failures") = py::none(),
         "judge_mujoco, raising AssertionError with each wrong judgement when any is wrong");
+    t.def(
+        "assert_mujoco_held",
+        [gate](const py::handle& model, const py::handle& data, const py::handle& tolerance,
+               const py::handle& abs_tolerance, const py::handle& failures) {
+            gate(mujoco_held_judgement(model, data, tolerance, abs_tolerance, failures), failures);
+        },
+        py::arg("model"), py::arg("data"), py::arg("tolerance") = 0, py::arg("abs_tolerance") = 0,
+        py::arg("failures") = py::none(),
+        "judge_mujoco_held (the program's own MjModel and MjData), raising AssertionError with each wrong judgement "
+        "when any is wrong");
     t.def(
         "assert_claims",
         [](const py::handle& scene, const py::handle& claims, const py::handle& tolerance,

@@ -34,6 +34,20 @@ inline ::testing::AssertionResult MujocoIsRight(const std::string& model,
     return r;
 }
 
+// The same on what the program's own MuJoCo holds (scalecert/mujoco.hpp fills the arrays).
+inline ::testing::AssertionResult MujocoHeldIsRight(const MujocoHeldModel& model,
+                                                    const std::vector<MujocoHeldData>& data,
+                                                    const MujocoOptions& options = {}) {
+    const MujocoJudgement j = judge_mujoco_held(model, data, options);
+    if (j.judgements == 0)
+        return ::testing::AssertionFailure() << "scalecert: nothing of the model was judged:\n" << j.text;
+    if (j.wrong_pairs == 0) return ::testing::AssertionSuccess();
+    ::testing::AssertionResult r = ::testing::AssertionFailure();
+    r << "scalecert: MuJoCo was wrong at " << j.wrong_pairs << " pair state" << (j.wrong_pairs == 1 ? "" : "s") << ":\n"
+      << j.text;
+    return r;
+}
+
 // scalecert certify-fp: every claim right (a claims file's text, JSON or lines); else the failure
 // lists each wrong claim's line.
 inline ::testing::AssertionResult ClaimsAreRight(const Scene& scene, const std::string& claims,
@@ -58,5 +72,7 @@ inline ::testing::AssertionResult ClaimsAreRight(const Scene& scene, const std::
 
 #define EXPECT_MUJOCO_RIGHT(...) EXPECT_TRUE(::scalecert::testing::MujocoIsRight(__VA_ARGS__))
 #define ASSERT_MUJOCO_RIGHT(...) ASSERT_TRUE(::scalecert::testing::MujocoIsRight(__VA_ARGS__))
+#define EXPECT_MUJOCO_HELD_RIGHT(...) EXPECT_TRUE(::scalecert::testing::MujocoHeldIsRight(__VA_ARGS__))
+#define ASSERT_MUJOCO_HELD_RIGHT(...) ASSERT_TRUE(::scalecert::testing::MujocoHeldIsRight(__VA_ARGS__))
 #define EXPECT_CLAIMS_RIGHT(...) EXPECT_TRUE(::scalecert::testing::ClaimsAreRight(__VA_ARGS__))
 #define ASSERT_CLAIMS_RIGHT(...) ASSERT_TRUE(::scalecert::testing::ClaimsAreRight(__VA_ARGS__))

@@ -1040,6 +1040,11 @@ def test_judge_mujoco_held_reads_mujocos_own_arrays():
     assert r["summary"]["wrong_pairs"] == 1
     names = [p["names"] for p in r["frames"][0]["pairs"]]
     assert ["floor", "cube"] in names  # names from MjModel.names and name_geomadr
+    # The pytest gate on held arrays: right at 3/2 apart, wrong (naming the state) when touching.
+    import scalecert.testing as sct
+    sct.assert_mujoco_held(model, datas[0])
+    with pytest.raises(AssertionError, match=r"WRONG  state 0 \(data\[0\]\): 'floor' and 'cube'"):
+        sct.assert_mujoco_held(model, datas[1])
     # What does not fit MuJoCo's fields is an InputError naming the field.
     bad = lambda **kw: type(model)(**{**vars(model), **kw})
     for m, why in [(bad(geom_size=model.geom_size[:-1]), "geom_size"),
