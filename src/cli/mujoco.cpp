@@ -108,6 +108,13 @@ Command add_mujoco(CLI::App& app) {
             for (const std::string& w : r.warnings) ++said[w.substr(w.find(": ") + 2)];
             for (const auto& [w, n] : said)
                 internal::say_note("MuJoCo warned (" + std::to_string(n) + (n == 1 ? " state" : " states") + "): " + w);
+            if (r.report["summary"]["judgements"].get<long>() == 0)
+                internal::say_note("nothing of the model was judged (see 'unjudged'): exit 0 says nothing of MuJoCo");
+            if (!a->failures.empty() && r.wrong > 0)
+                internal::say_note(
+                    "wrote " + std::to_string(r.reproducers) + " of " + std::to_string(r.wrong) +
+                    " wrong pair states as reproducers to " + a->failures +
+                    (r.reproducers < r.wrong ? " (a pair with a plane has none: a scene has no half-spaces)" : ""));
             emit(a->json ? dump(r.report) : r.text, a->out);
             if (a->timing) {
                 char line[200];

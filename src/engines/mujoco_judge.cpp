@@ -1020,6 +1020,7 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
                     Json q = Json::array();
                     for (double x : states[f]) q.push_back(x);
                     about["qpos"] = std::move(q);
+                    ++res.reproducers;
                     write_files_atomically({{stem + ".scene.json", dump(scene)},
                                             {stem + ".claims.json",
                                              dump(Json{{"format", "scalecert-claims-1"}, {"claims", std::move(cl)}})},

@@ -75,6 +75,7 @@ void describe(const TypedClaim& c, const DepthJudged& d, const Judged& g, const 
         put_exact(o, "depth_squared_along_direction", d.along);
         o["direction_right"] = *d.direction_right;
         if (*d.value_right && !*d.direction_right) text += ", but the direction is wrong";
+        if (!*d.value_right && !*d.direction_right) text += ", and the direction is wrong too";
     }
 }
 
