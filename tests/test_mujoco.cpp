@@ -151,15 +151,25 @@ BOOST_AUTO_TEST_CASE(boxes_at_states_judged_by_hand) {
                 const bool up = n[0] == 0.0 && n[1] == 0.0 && n[2] == 1.0;
                 BOOST_TEST((*p)["normal"]["right"] == up, f);
                 right = right && up;
-                // Each contact's pos lies in both boxes: the cube [-1/4, 3/4] x [-1/2, 1/2] x
-                // [-1/8, 7/8] and the floor meet in [-1/4, 3/4] x [-1/2, 1/2] x [-1/8, 0].
-                bool inside = true;
-                for (const auto& c : (*p)["pos"]["all_said"]) {
-                    const double x = c[0], y = c[1], z = c[2];
-                    inside = inside && x >= -0.25 && x <= 0.75 && y >= -0.5 && y <= 0.5 && z >= -0.125 && z <= 0;
-                }
-                BOOST_TEST((*p)["pos"]["right"] == inside, f);
-                right = right && inside;
+                // Each contact's pos lies within |dist|/2 of both boxes: the cube [-1/4, 3/4] x
+                // [-1/2, 1/2] x [-1/8, 7/8] and the floor [-1, 1]^2 x [-1, 0] (axis-aligned, so the
+                // distance to each is the length of the clamping, exact in doubles here).
+                bool near = true;
+                const double r = std::fabs((*p)["dist"]["said"].get<double>()) / 2;
+                auto dist_to = [](const double (&lo)[3], const double (&hi)[3], const nlohmann::json& c) {
+                    double s = 0;
+                    for (int k = 0; k < 3; ++k) {
+                        const double x = c[k].get<double>(), e = x < lo[k] ? lo[k] - x : x > hi[k] ? x - hi[k] : 0;
+                        s += e * e;
+                    }
+                    return std::sqrt(s);
+                };
+                const double cube_lo[3] = {-0.25, -0.5, -0.125}, cube_hi[3] = {0.75, 0.5, 0.875},
+                             floor_lo[3] = {-1, -1, -1}, floor_hi[3] = {1, 1, 0};
+                for (const auto& c : (*p)["pos"]["all_said"])
+                    near = near && dist_to(cube_lo, cube_hi, c) <= r && dist_to(floor_lo, floor_hi, c) <= r;
+                BOOST_TEST((*p)["pos"]["right"] == near, f);
+                right = right && near;
             }
         }
         wrong_pairs += !right;

@@ -117,13 +117,16 @@ inline std::vector<Claim> bullet_claims(const btPersistentManifold& m) {
         return {v};
     }
     int deepest = 0;
-    for (int i = 1; i < m.getNumContacts(); ++i)
+    bool nan = false;
+    for (int i = 0; i < m.getNumContacts(); ++i) {
+        nan = nan || std::isnan(static_cast<double>(m.getContactPoint(i).getDistance()));
         if (m.getContactPoint(i).getDistance() < m.getContactPoint(deepest).getDistance()) deepest = i;
+    }
     const btManifoldPoint& p = m.getContactPoint(deepest);
     std::vector<Claim> out;
     Claim s = at;
     s.kind = ClaimKind::SignedDistance;
-    s.value = bullet_detail::number(p.getDistance(), s, "value");
+    s.value = bullet_detail::number(nan ? btScalar(NAN) : p.getDistance(), s, "value");
     out.push_back(s);
     if (p.getDistance() < 0) {
         Claim d = at;

@@ -95,10 +95,11 @@ Scene fcl_scene(const ::fcl::CollisionGeometry<S>& g1, const ::fcl::CollisionGeo
 }
 
 // fcl::collide's result (CLAIMS.md, "Engines' conventions", FCL): the verdict intersecting when it
-// found a collision, else not_overlapping; and each contact's penetration_depth with its normal
-// (from o1 to o2) as a penetration_depth claim. FCL 0.7's indep solver writes a convex pair's
-// depth negated: under GST_INDEP the depth claimed is its magnitude. Contact positions are not
-// claims.
+// found a collision, else not_overlapping; and the deepest contact's penetration_depth with its
+// normal (from o1 to o2) as a penetration_depth claim (a box pair's manifold has a contact per
+// corner, each with its own depth: the deepest is the pair's). FCL 0.7's indep solver writes a
+// convex pair's depth negated: under GST_INDEP the depth claimed is its magnitude. Contact
+// positions are not claims; a NaN depth anywhere is no answer.
 template <class S>
 std::vector<Claim> fcl_claims(const ::fcl::CollisionRequest<S>& request, const ::fcl::CollisionResult<S>& result,
                               const ::fcl::Transform3<S>& tf1, const ::fcl::Transform3<S>& tf2) {
@@ -107,16 +108,22 @@ std::vector<Claim> fcl_claims(const ::fcl::CollisionRequest<S>& request, const :
     v.kind = ClaimKind::Verdict;
     v.verdict = result.isCollision() ? ClaimedVerdict::Intersecting : ClaimedVerdict::NotOverlapping;
     out.push_back(v);
+    if (result.numContacts() == 0) return out;
+    auto depth_of = [&](size_t i) {
+        const double d = static_cast<double>(result.getContact(i).penetration_depth);
+        return request.gjk_solver_type == ::fcl::GST_INDEP ? std::fabs(d) : d;
+    };
+    size_t deepest = 0;
+    bool nan = false;
     for (size_t i = 0; i < result.numContacts(); ++i) {
-        const ::fcl::Contact<S>& k = result.getContact(i);
-        Claim c = fcl_detail::at(tf1, tf2);
-        c.kind = ClaimKind::PenetrationDepth;
-        double depth = static_cast<double>(k.penetration_depth);
-        if (request.gjk_solver_type == ::fcl::GST_INDEP) depth = std::fabs(depth);
-        c.value = fcl_detail::number(depth, c, "value");
-        c.direction = fcl_detail::point(k.normal, c, "direction");
-        out.push_back(c);
+        nan = nan || std::isnan(depth_of(i));
+        if (depth_of(i) > depth_of(deepest)) deepest = i;
     }
+    Claim c = fcl_detail::at(tf1, tf2);
+    c.kind = ClaimKind::PenetrationDepth;
+    c.value = fcl_detail::number(nan ? NAN : depth_of(deepest), c, "value");
+    c.direction = fcl_detail::point(result.getContact(deepest).normal, c, "direction");
+    out.push_back(c);
     return out;
 }
 

@@ -556,6 +556,43 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
             if (!e) e = exact_posed_box(m.geoms[static_cast<size_t>(g)], pose);
             return *e;
         };
+        // Whether the point q is within r of geom g: 1 yes, 0 no, −1 unsure (a mesh, or a box
+        // near an edge: posed_box_side); a plane is its half-space (CLAIMS.md, MuJoCo's planes).
+        auto near_geom = [&](int g, const Vec3q& q, const Q& r) -> int {
+            const Geom& geom = m.geoms[static_cast<size_t>(g)];
+            const size_t G = static_cast<size_t>(g);
+            if (geom.type == kBox) {
+                const BoxSide bs = posed_box_side(exact_box_of(g, pose_of(s, g)), q, r);
+                return bs == BoxSide::Farther ? 0 : bs == BoxSide::Unsure ? -1 : 1;
+            }
+            if (geom.type == kPlane) {
+                Q h = 0, N = 0;
+                for (size_t j = 0; j < 3; ++j) {
+                    const Q n = exact_from_double(s.xmat[9 * G + 3 * j + 2]);
+                    h += n * (q[j] - exact_from_double(s.xpos[3 * G + j]));
+                    N += n * n;
+                }
+                if (sgn(N) == 0) return -1;
+                return sign_minus_sqrt(h, r, N) <= 0 ? 1 : 0;
+            }
+            return -1;
+        };
+        // A contact's pos: within |dist|/2 + LEN of both geoms (1), not (0), or unjudged (−1).
+        auto position_near_both = [&](int a, int b, const Contact& c) -> int {
+            if (!std::isfinite(c.dist)) return -1;  // the dist is judged wrong already
+            if (!std::isfinite(c.pos[0]) || !std::isfinite(c.pos[1]) || !std::isfinite(c.pos[2])) return 0;
+            const Vec3q q{exact_from_double(c.pos[0]), exact_from_double(c.pos[1]), exact_from_double(c.pos[2])};
+            const Q r = abs(exact_from_double(c.dist)) / 2 + opt.tolerance.abs;
+            const int na = near_geom(a, q, r);
+            if (na == 0) return 0;
+            const int nb = near_geom(b, q, r);
+            if (nb == 0) return 0;
+            if (na < 0 || nb < 0) {
+                ++positions_unjudged;
+                return -1;
+            }
+            return 1;
+        };
         // A plane geom and a box or mesh geom (CLAIMS.md, "Engines' conventions", MuJoCo's planes):
         // the plane is the half-space n·(x − p0) <= 0, n its z-axis (column 2 of its frame), p0 its
         // origin; with m the least n·(v − p0) over the other geom's posed vertices v and N = |n|²,
@@ -675,34 +712,21 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
                 } else {
                     pj["normal"] = Json{{"said", said}};
                 }
-                // A penetrating contact's pos lies in both: within LEN of the half-space, and in
-                // the box (posed_box_side; a mesh's positions are not judged against a plane).
+                // Each contact's pos: within |dist|/2 (+ LEN) of the half-space and of the other
+                // geom (as for two polyhedra: position_near_both).
                 Json all_said = Json::array(), wrong_pos = Json::array();
                 long judged_pos = 0;
                 for (size_t k = 0; k < cons->size(); ++k) {
                     const Contact& c = *(*cons)[k];
                     all_said.push_back(Json::array({number(c.pos[0]), number(c.pos[1]), number(c.pos[2])}));
-                    if (!(c.dist < 0) || sign > 0 || m.geoms[O].type != kBox) continue;
-                    bool right = std::isfinite(c.pos[0]) && std::isfinite(c.pos[1]) && std::isfinite(c.pos[2]);
-                    if (right) {
-                        const Vec3q q{exact_from_double(c.pos[0]), exact_from_double(c.pos[1]),
-                                      exact_from_double(c.pos[2])};
-                        Q h = 0;
-                        for (size_t j = 0; j < 3; ++j) h += n[j] * (q[j] - exact_from_double(s.xpos[3 * P + j]));
-                        const BoxSide bs = posed_box_side(exact_box_of(ob, pose_of(s, ob)), q, opt.tolerance.abs);
-                        // Near a box's edge within the tolerance the fast path is unsure: that
-                        // position is left unjudged (counted), never called wrong.
-                        if (bs == BoxSide::Unsure) {
-                            ++positions_unjudged;
-                            continue;
-                        }
-                        right = sign_minus_sqrt(h, opt.tolerance.abs, N) <= 0 && bs != BoxSide::Farther;
-                    }
+                    const int verdict_of = position_near_both(a, b, c);
+                    if (verdict_of < 0) continue;
                     ++judgements, ++judged_pos;
-                    if (right) continue;
+                    if (verdict_of == 1) continue;
                     wrong_pos.push_back(k);
                     text += who + "contact " + std::to_string(k) + "'s pos (" + to_shortest(c.pos[0]) + ", " +
-                            to_shortest(c.pos[1]) + ", " + to_shortest(c.pos[2]) + ") is not in both geoms\n";
+                            to_shortest(c.pos[1]) + ", " + to_shortest(c.pos[2]) +
+                            ") is farther than |dist|/2 from a geom\n";
                 }
                 pj["pos"] = Json{
                     {"said", Json::array({number(deepest->pos[0]), number(deepest->pos[1]), number(deepest->pos[2])})},
@@ -923,9 +947,9 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
                 }
                 pj["pos"] = Json{
                     {"said", Json::array({number(deepest->pos[0]), number(deepest->pos[1]), number(deepest->pos[2])})}};
-                // Each penetrating contact's pos, the midpoint between the two geoms' deepest
-                // points, lies in both geoms (in their intersection, which is convex and holds
-                // both points): a witness_point claim. Separated contacts' pos are not judged.
+                // Each contact's pos (MuJoCo's midpoint between a point of each geom, |dist| apart)
+                // lies within |dist|/2 (+ LEN) of each geom: judged where both are boxes (or a
+                // plane), by near_geom; a position it is unsure of is left unjudged.
                 Json wrong_pos = Json::array(), all_said = Json::array();
                 for (const Contact* c : cs->second)
                     all_said.push_back(Json::array({number(c->pos[0]), number(c->pos[1]), number(c->pos[2])}));
@@ -933,36 +957,15 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
                 long judged_pos = 0;
                 for (size_t k = 0; k < cs->second.size(); ++k) {
                     const Contact& c = *cs->second[k];
-                    if (!(c.dist < 0) || ex.sign() > 0) continue;
-                    TypedClaim w = base;
-                    w.type = ClaimType::Witness;
-                    w.with_verdict = false;  // the signed distance above has it
-                    if (std::isfinite(c.pos[0]) && std::isfinite(c.pos[1]) && std::isfinite(c.pos[2]))
-                        w.point = {exact_from_double(c.pos[0]), exact_from_double(c.pos[1]),
-                                   exact_from_double(c.pos[2])};
-                    else
-                        w.no_answer = "point", w.no_answer_reason = "not a number";
+                    const int verdict_of = position_near_both(a, b, c);
+                    if (verdict_of < 0) continue;
                     ++judgements, ++judged_pos;
-                    // Two boxes: a point inside both is right, decided here exactly without the
-                    // claim rules' general membership (a point outside may still be within the
-                    // abs tolerance: the rules decide it).
-                    const Geom &g1 = m.geoms[static_cast<size_t>(a)], &g2 = m.geoms[static_cast<size_t>(b)];
-                    bool right = false, decided = false;
-                    if (w.no_answer.empty() && g1.type == kBox && g2.type == kBox) {
-                        const BoxSide s1 = posed_box_side(exact_box_of(a, *w.pose[0]), w.point, opt.tolerance.abs),
-                                      s2 = posed_box_side(exact_box_of(b, *w.pose[1]), w.point, opt.tolerance.abs);
-                        auto in = [](BoxSide s) { return s == BoxSide::Inside || s == BoxSide::Within; };
-                        decided = (in(s1) && in(s2)) || s1 == BoxSide::Farther || s2 == BoxSide::Farther;
-                        right = in(s1) && in(s2);
-                    }
-                    if (!decided) right = judge_claim(*pe->rules, w, 3, opt.model, nullptr).right;
-                    if (right) continue;
+                    if (verdict_of == 1) continue;
                     wrong_pos.push_back(k);
-                    claims.push_back(w);
                     text += "WRONG  state " + std::to_string(f) + " (" + labels[f] + "): " + geom_label(m, a) +
                             " and " + geom_label(m, b) + ": contact " + std::to_string(k) + "'s pos (" +
                             to_shortest(c.pos[0]) + ", " + to_shortest(c.pos[1]) + ", " + to_shortest(c.pos[2]) +
-                            ") is not in both geoms\n";
+                            ") is farther than |dist|/2 from a geom\n";
                 }
                 if (judged_pos) {
                     pj["pos"]["right"] = wrong_pos.empty();

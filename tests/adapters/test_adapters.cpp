@@ -141,6 +141,33 @@ BOOST_AUTO_TEST_CASE(fcl_at_a_turned_pose) {
     }
 }
 
+// A box pair's collide() gives a contact per corner, each with its own depth: the adapter claims
+// the deepest as the pair's depth (the others are shallower, not the pair's). Two unit boxes, P2
+// turned 0.02 rad about x at z = 0.9.
+BOOST_AUTO_TEST_CASE(fcl_box_manifold_claims_its_deepest_contact) {
+    auto box = std::make_shared<fcl::Boxd>(1, 1, 1);
+    fcl::Transform3d t1 = fcl::Transform3d::Identity(), t2 = moved(0, 0, 0.9);
+    t2.linear() = Eigen::AngleAxisd(0.02, Eigen::Vector3d::UnitX()).toRotationMatrix();
+    fcl::CollisionObjectd a(box, t1), b(box, t2);
+    fcl::CollisionRequestd cq(8, true);
+    fcl::CollisionResultd cr;
+    fcl::collide(&a, &b, cq, cr);
+    BOOST_TEST_REQUIRE(cr.numContacts() > 1u);
+    double deepest = 0;
+    for (size_t i = 0; i < cr.numContacts(); ++i) deepest = std::max(deepest, cr.getContact(i).penetration_depth);
+    const std::vector<scalecert::Claim> claims = scalecert::fcl_claims(cq, cr, t1, t2);
+    BOOST_TEST_REQUIRE(claims.size() == 2u);  // the verdict and one depth
+    BOOST_TEST((claims[1].value == scalecert::exact(deepest)));
+    // The exact depth is at most the lowest corner's depth along z, (c + s)/2 − 0.4 with c, s of
+    // 0.02 rad (a translation along z separates them by that much), and more than 0.
+    const scalecert::Judgements j = judge(scalecert::fcl_scene<double>(*box, *box), claims, R("1/1000000000"));
+    const double along_z = (t2.linear()(1, 1) + t2.linear()(2, 1)) / 2 - 0.4;
+    BOOST_TEST(j.items[1].exact > 0);
+    BOOST_TEST(j.items[1].exact <= along_z + 1e-15);
+    BOOST_TEST(*j.items[1].value_right == (std::fabs(deepest - j.items[1].exact) <= 1e-9));
+    BOOST_TEST(j.items[1].right == (*j.items[1].value_right && *j.items[1].direction_right));
+}
+
 // What the FCL adapter refuses (a sphere, a transform with a NaN) and what it judges wrong (a NaN
 // in a result: no answer).
 BOOST_AUTO_TEST_CASE(fcl_refusals_and_no_answers) {
