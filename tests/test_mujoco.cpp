@@ -156,7 +156,7 @@ BOOST_AUTO_TEST_CASE(boxes_at_states_judged_by_hand) {
                 // distance to each is the length of the clamping, exact in doubles here).
                 bool near = true;
                 const double r = std::fabs((*p)["dist"]["said"].get<double>()) / 2;
-                auto dist_to = [](const double (&lo)[3], const double (&hi)[3], const nlohmann::json& c) {
+                auto dist_to = [](const double(&lo)[3], const double(&hi)[3], const nlohmann::json& c) {
                     double s = 0;
                     for (int k = 0; k < 3; ++k) {
                         const double x = c[k].get<double>(), e = x < lo[k] ? lo[k] - x : x > hi[k] ? x - hi[k] : 0;

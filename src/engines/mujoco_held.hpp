@@ -54,6 +54,7 @@ struct State {
     std::vector<double> xpos, xmat;
     std::vector<Contact> contacts;
     std::vector<std::string> warnings;  // what MuJoCo warned of during the step
+    std::string error;                  // MuJoCo's error, when mj_forward failed ("" when it ran)
 };
 
 // A model loaded by MuJoCo; forward() sets qpos (nq numbers) and runs mj_forward, as a user's

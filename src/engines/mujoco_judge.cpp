@@ -26,6 +26,7 @@ namespace scalecert::internal::mj {
 namespace {
 constexpr int kDisableFilterParent = 1 << 9;  // mjDSBL_FILTERPARENT
 constexpr int kDisableContact = 1 << 4;       // mjDSBL_CONTACT
+constexpr int kDisableConstraint = 1 << 0;    // mjDSBL_CONSTRAINT: mj_collision runs no collision either
 constexpr int kEnableOverride = 1 << 0;       // mjENBL_OVERRIDE
 
 bool judged_type(int type) { return type == kBox || type == kMesh; }
@@ -34,6 +35,7 @@ bool judged_type(int type) { return type == kBox || type == kMesh; }
 Json number(double d) { return std::isfinite(d) ? Json(d) : Json(nullptr); }
 // A double (or a float's value) as a hex float in a JSON string: exact under every reading.
 Json hex(double d) {
+    if (!std::isfinite(d)) return Json(nullptr);  // no answer, as a claims file writes it
     char buf[64];
     std::snprintf(buf, sizeof buf, "%a", d);
     return Json(std::string(buf));
@@ -102,7 +104,7 @@ BoxSide posed_box_side(const ExactPosedBox& b, const Vec3q& p, const Q& len) {
 
 std::vector<Considered> considered_pairs(const ModelInfo& m) {
     std::map<std::pair<int, int>, Considered> out;
-    if (m.disableflags & kDisableContact) return {};
+    if (m.disableflags & (kDisableContact | kDisableConstraint)) return {};
     const bool override_margin = (m.enableflags & kEnableOverride) != 0;
     // An explicit <pair> replaces the pair the filters would give (MuJoCo 2.2.2 collides it once,
     // at the <pair>'s margin: two boxes 4 mm apart, a geom margin of 5 mm and a <pair> margin of 3 mm
@@ -282,6 +284,15 @@ Intended intended_geom(const Geom& g, const std::vector<MeshSource>& sources) {
     return out;
 }
 
+// A contact's normal, frame[0..2], exactly; none when MuJoCo gave no answer there (a NaN, an
+// infinity, or the zero vector): a penetrating contact's normal is then judged wrong.
+std::optional<Vec3q> normal_of(const Contact& c) {
+    for (int k = 0; k < 3; ++k)
+        if (!std::isfinite(c.frame[k])) return std::nullopt;
+    if (c.frame[0] == 0 && c.frame[1] == 0 && c.frame[2] == 0) return std::nullopt;
+    return Vec3q{exact_from_double(c.frame[0]), exact_from_double(c.frame[1]), exact_from_double(c.frame[2])};
+}
+
 // One ordered geom pair's engine: the scene of the two geoms in their own frames, and its rules.
 struct PairEngine {
     std::unique_ptr<SceneEngine> engine;
@@ -441,6 +452,12 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
         const Clock::time_point before = Clock::now();
         const State s = model.forward(states[f]);
         res.forward_seconds += std::chrono::duration<double>(Clock::now() - before).count();
+        if (!s.error.empty()) {
+            std::string e = s.error;
+            for (char& c : e)
+                if (c == '\n' || c == '\r') c = ' ';
+            throw InputError(labels[f] + ": MuJoCo failed in mj_forward: " + e);
+        }
         // MuJoCo drops contacts past its buffer (and warns): in such a state no contact says nothing.
         bool buffer_full = false;
         for (const std::string& w : s.warnings) {
@@ -525,17 +542,20 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
                     wrong.push_back("dist " + to_shortest(deepest->dist) + ", exact ~" +
                                     to_shortest(signed_double(ex.sign(), ex.exact_squared)) + " m (off by " +
                                     to_shortest(err) + " m)");
-                const Vec3q n{exact_from_double(deepest->frame[0]), exact_from_double(deepest->frame[1]),
-                              exact_from_double(deepest->frame[2])};
-                if (deepest->dist < 0 && ex.sign() < 0 && !(sgn(n[0]) == 0 && sgn(n[1]) == 0 && sgn(n[2]) == 0)) {
-                    TypedClaim d = base;
-                    d.type = ClaimType::Depth;
-                    d.value = exact_from_double(-deepest->dist);
-                    d.direction = n;
-                    const Judged nj = judge_claim(*we.rules, d, 2, opt.model, nullptr);
-                    const bool right = nj.get<DepthJudged>()->direction_right.value_or(false);
+                if (std::isfinite(deepest->dist) && deepest->dist < 0 && ex.sign() < 0) {
+                    const std::optional<Vec3q> n = normal_of(*deepest);
+                    bool right = false;
+                    if (n) {
+                        TypedClaim d = base;
+                        d.type = ClaimType::Depth;
+                        d.value = exact_from_double(-deepest->dist);
+                        d.direction = *n;
+                        right = judge_claim(*we.rules, d, 2, opt.model, nullptr)
+                                    .get<DepthJudged>()
+                                    ->direction_right.value_or(false);
+                    }
                     out["normal"] = Json{{"right", right}};
-                    if (!right) wrong.push_back("the normal does not attain the depth");
+                    if (!right) wrong.push_back(n ? "the normal does not attain the depth" : "the normal is no answer");
                 }
             } else if (deepest) {
                 out["dist"] = Json{{"right", false}};
@@ -576,6 +596,25 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
                 return sign_minus_sqrt(h, r, N) <= 0 ? 1 : 0;
             }
             return -1;
+        };
+        // Why geom g's frame at this state cannot be judged ("" when it can): a NaN or an infinity
+        // in it, a plane without a z-axis, a box's or mesh's singular frame (its geom flattened).
+        std::vector<std::optional<std::string>> frame_problems(m.geoms.size());
+        auto frame_problem = [&](int g) -> const std::string& {
+            const size_t G = static_cast<size_t>(g);
+            std::optional<std::string>& why = frame_problems[G];
+            if (why) return *why;
+            if (!finite_state(s, g))
+                why = "the geoms' poses are not finite at this state";
+            else if (m.geoms[G].type == kPlane)
+                why = s.xmat[9 * G + 2] == 0 && s.xmat[9 * G + 5] == 0 && s.xmat[9 * G + 8] == 0
+                          ? geom_label(m, g) + "'s frame has a zero z-axis at this state"
+                          : "";
+            else
+                why = judged_type(m.geoms[G].type) && pose_singular(pose_of(s, g))
+                          ? geom_label(m, g) + "'s frame is singular at this state"
+                          : "";
+            return *why;
         };
         // A contact's pos: within |dist|/2 + LEN of both geoms (1), not (0), or unjudged (−1).
         auto position_near_both = [&](int a, int b, const Contact& c) -> int {
@@ -812,8 +851,8 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
                 for (const Contact* c : cs->second)
                     if (!deepest || c->dist < deepest->dist || std::isnan(c->dist)) deepest = c;
             const int a = deepest ? deepest->g1 : p.g1, b = deepest ? deepest->g2 : p.g2;
-            if (plane_pair && why.empty() && (!finite_state(s, a) || !finite_state(s, b)))
-                why = "the geoms' poses are not finite at this state";
+            if (why.empty()) why = frame_problem(a);
+            if (why.empty()) why = frame_problem(b);
             if (plane_pair && why.empty()) {
                 fp.push_back(judge_plane(a, b, p, cs == of.end() ? nullptr : &cs->second, deepest));
                 continue;
@@ -841,8 +880,6 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
                 if (opt.intended) fp.back()["intended"] = judge_written(a, b, p, nullptr);
                 continue;
             }
-            if (why.empty() && (!finite_state(s, a) || !finite_state(s, b)))
-                why = "the geoms' poses are not finite at this state";
             if (!why.empty()) {
                 contacts_unjudged += static_cast<long>(ncon);
                 if (unjudged_why.emplace(std::make_pair(p.g1, p.g2), why).second)
@@ -921,20 +958,25 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
                             " and " + geom_label(m, b) + ": dist " + to_shortest(deepest->dist) + ", exact ~" +
                             to_shortest(signed_double(ex.sign(), ex.exact_squared)) + " m (off by " + to_shortest(err) +
                             " m)\n";
-                const Vec3q n{exact_from_double(deepest->frame[0]), exact_from_double(deepest->frame[1]),
-                              exact_from_double(deepest->frame[2])};
                 Json said =
                     Json::array({number(deepest->frame[0]), number(deepest->frame[1]), number(deepest->frame[2])});
-                if (deepest->dist < 0 && ex.sign() < 0 && !(sgn(n[0]) == 0 && sgn(n[1]) == 0 && sgn(n[2]) == 0)) {
+                if (std::isfinite(deepest->dist) && deepest->dist < 0 && ex.sign() < 0) {
                     // The normal of a penetrating contact: moving geom2 by the depth along it
-                    // separates the geoms (CLAIMS.md, penetration_depth's direction).
+                    // separates the geoms (CLAIMS.md, penetration_depth's direction); a NaN or
+                    // zero normal is no answer, wrong.
+                    const std::optional<Vec3q> n = normal_of(*deepest);
                     TypedClaim d = base;
                     d.type = ClaimType::Depth;
                     d.value = exact_from_double(-deepest->dist);
-                    d.direction = n;
-                    const Judged nj = judge_claim(*pe->rules, d, 2, opt.model, nullptr);
-                    const DepthJudged& dd = *nj.get<DepthJudged>();
-                    const bool right = dd.direction_right.value_or(false);
+                    if (n)
+                        d.direction = *n;
+                    else
+                        d.no_answer = "direction", d.no_answer_reason = "not a number, or the zero vector";
+                    bool right = false;
+                    if (n)
+                        right = judge_claim(*pe->rules, d, 2, opt.model, nullptr)
+                                    .get<DepthJudged>()
+                                    ->direction_right.value_or(false);
                     ++judgements;
                     pj["normal"] = Json{{"said", said}, {"right", right}};
                     all_right = all_right && right;

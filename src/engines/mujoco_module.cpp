@@ -8,6 +8,7 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <csetjmp>
 #include <cctype>
 #include <cstdlib>
 #include <cstdio>
@@ -26,9 +27,42 @@ void keep_warning(const char* msg) {
     if (g_warnings) g_warnings->push_back(msg);
 }
 
+// MuJoCo's errors (a stack overflow in mj_forward, an allocation that failed) would print, write
+// MUJOCO_LOG.TXT, wait for Enter and exit: here each MuJoCo call that can fail runs under
+// `guarded`, and the error jumps back to it with the message (only MuJoCo's C frames lie between).
+std::jmp_buf* g_jump = nullptr;
+std::string g_error;
+void on_error(const char* msg) {
+    g_error = msg ? msg : "MuJoCo failed";
+    if (g_jump) std::longjmp(*g_jump, 1);
+    std::fprintf(stderr, "scalecert: error: MuJoCo: %s\n", g_error.c_str());
+    std::_Exit(3);  // an error outside a guarded call: a bug of this module
+}
+// Runs f (a MuJoCo call); false with the error in *error when MuJoCo raised one.
+template <class F>
+bool guarded(F f, std::string* error) {
+    std::jmp_buf jump;
+    g_jump = &jump;
+    if (setjmp(jump) == 0) {
+        f();
+        g_jump = nullptr;
+        return true;
+    }
+    g_jump = nullptr;
+    *error = g_error;
+    return false;
+}
+void install_handlers() {
+    static std::once_flag once;
+    std::call_once(once, [] {
+        mju_user_warning = keep_warning;
+        mju_user_error = on_error;
+    });
+}
+
 class MujocoModel final : public Loaded {
   public:
-    MujocoModel(mjModel* m) : m_(m), d_(mj_makeData(m)) { read_info(); }
+    MujocoModel(mjModel* m, mjData* d) : m_(m), d_(d) { read_info(); }
     ~MujocoModel() override {
         mj_deleteData(d_);
         mj_deleteModel(m_);
@@ -39,8 +73,9 @@ class MujocoModel final : public Loaded {
         g_warnings = &s.warnings;
         mj_resetData(m_, d_);
         for (int k = 0; k < m_->nq; ++k) d_->qpos[k] = qpos[static_cast<size_t>(k)];
-        mj_forward(m_, d_);
+        const bool ran = guarded([this] { mj_forward(m_, d_); }, &s.error);
         g_warnings = nullptr;
+        if (!ran) return s;
         s.xpos.assign(d_->geom_xpos, d_->geom_xpos + 3 * m_->ngeom);
         s.xmat.assign(d_->geom_xmat, d_->geom_xmat + 9 * m_->ngeom);
         for (int i = 0; i < d_->ncon; ++i) {
@@ -116,7 +151,13 @@ mjModel* load_silenced(const char* path, char* err, int size) {
         ::dup2(null, 2);
         ::close(null);
     }
-    mjModel* m = mj_loadXML(path, nullptr, err, size);
+    mjModel* m = nullptr;
+    std::string failed;
+    install_handlers();
+    if (!guarded([&] { m = mj_loadXML(path, nullptr, err, size); }, &failed)) {
+        m = nullptr;
+        std::snprintf(err, static_cast<size_t>(size), "%s", failed.c_str());
+    }
     std::fflush(stdout);
     std::fflush(stderr);
     if (out >= 0) ::dup2(out, 1), ::close(out);
@@ -249,7 +290,9 @@ extern "C" __attribute__((visibility("default"))) bool scalecert_mujoco_mesh_sou
         return false;
     }
     const TempFile saved("");
-    const bool wrote = !saved.path.empty() && mj_saveLastXML(saved.path.c_str(), m, err, sizeof err);
+    bool wrote = false;
+    std::string failed;
+    if (!saved.path.empty()) guarded([&] { wrote = mj_saveLastXML(saved.path.c_str(), m, err, sizeof err); }, &failed);
     const std::string text = wrote ? read_text(saved.path) : "";
     out->assign(static_cast<size_t>(m->nmesh), MeshSource{});
     for (int k = 0; k < m->nmesh; ++k) {
@@ -345,13 +388,19 @@ extern "C" __attribute__((visibility("default"))) bool scalecert_mujoco_mesh_sou
 }
 
 extern "C" __attribute__((visibility("default"))) Loaded* scalecert_mujoco_load(const char* path, std::string* error) {
-    static std::once_flag once;
-    std::call_once(once, [] { mju_user_warning = keep_warning; });
+    install_handlers();
     char err[1000] = "";
     mjModel* m = load_silenced(path, err, sizeof err);
     if (!m) {
         *error = err[0] ? err : "MuJoCo could not load it";
         return nullptr;
     }
-    return new MujocoModel(m);
+    mjData* d = nullptr;
+    std::string failed;
+    if (!guarded([&] { d = mj_makeData(m); }, &failed) || !d) {
+        mj_deleteModel(m);
+        *error = failed.empty() ? "MuJoCo could not make its data" : failed;
+        return nullptr;
+    }
+    return new MujocoModel(m, d);
 }
