@@ -240,6 +240,37 @@ BOOST_AUTO_TEST_CASE(bad_input_is_one_line) {
       <geom type="mesh" mesh="m"/></worldbody></mujoco>)")
             .string(),
         "is not a regular file: MuJoCo would open it");
+    // Past the scan's reach before: a name with an XML character reference, a mesh in an
+    // <include> under the includer's meshdir, and <compiler strippath> (the name's last part).
+    const fs::path amp = workdir() / "a&b.stl", sub = workdir() / "sub", inc_fifo = sub / "f.stl";
+    fs::create_directories(sub);
+    fs::remove(amp);
+    fs::remove(inc_fifo);
+    BOOST_TEST_REQUIRE(::mkfifo(amp.c_str(), 0600) == 0);
+    BOOST_TEST_REQUIRE(::mkfifo(inc_fifo.c_str(), 0600) == 0);
+    bad(write("entity.xml", R"(<mujoco><asset><mesh name="m" file="a&amp;b.stl"/></asset><worldbody>
+      <geom type="mesh" mesh="m"/></worldbody></mujoco>)")
+            .string(),
+        "is not a regular file: MuJoCo would open it");
+    write("inc.xml", R"(<mujoco><asset><mesh name="m" file="f.stl"/></asset></mujoco>)");
+    bad(write("includer.xml", R"(<mujoco><compiler meshdir="sub"/><include file="inc.xml"/><worldbody>
+      <geom type="mesh" mesh="m"/></worldbody></mujoco>)")
+            .string(),
+        "is not a regular file: MuJoCo would open it");
+    bad(write("strip.xml", R"(<mujoco><compiler strippath="true"/><asset><mesh name="m" file="elsewhere/mesh.stl"/>
+      </asset><worldbody><geom type="mesh" mesh="m"/></worldbody></mujoco>)")
+            .string(),
+        "is not a regular file: MuJoCo would open it");
+    // MuJoCo's own error in mj_forward (its stack too small for the model): one line, exit 2.
+    bad(write("stack.xml", R"(<mujoco><size nstack="76"/><worldbody><geom type="box" size="1 1 1"/>
+      <body pos="0 0 3"><freejoint/><geom type="box" size="1 1 1"/></body></worldbody></mujoco>)")
+                .string() +
+            " --qpos " + write("stack.qpos", "0 0 1.5 1 0 0 0\n").string(),
+        "MuJoCo failed in mj_forward: Stack overflow");
+    // Outputs that would replace the model's own files are refused.
+    bad(boxes + " --qpos " + write("out.qpos", "0 0 2 1 0 0 0 5 0 0 1 0 0 0 -5 0 0 1 0 0 0\n").string() + " --out " +
+            (workdir() / "out.qpos").string(),
+        "an output names an input file");
     const fs::path fifo = workdir() / "model.fifo";
     fs::remove(fifo);
     BOOST_TEST_REQUIRE(::mkfifo(fifo.c_str(), 0600) == 0);
@@ -370,6 +401,20 @@ BOOST_AUTO_TEST_CASE(contact_points_against_posed_boxes_by_brute_force) {
         }
     }
     BOOST_TEST(decided > n * 9 / 10);  // the fast path decides nearly all
+}
+
+BOOST_AUTO_TEST_CASE(collision_disabled_by_the_constraint_flag) {
+    // <flag constraint="disable"/>: MuJoCo 2.2.2 runs no collision (mj_collision returns), so no
+    // pair is considered and the cube 1/8 into the floor is no wrong "no contact".
+    const Run r = run("mujoco " +
+                      write("noconstraint.xml", R"(<mujoco><option><flag constraint="disable"/></option>
+      <worldbody><geom name="floor" type="box" size="1 1 0.5" pos="0 0 -0.5"/><body pos="0 0 0.375"><freejoint/>
+      <geom name="cube" type="box" size="0.5 0.5 0.5"/></body></worldbody></mujoco>)")
+                          .string() +
+                      " --json");
+    BOOST_TEST(r.status == 0, r.err);
+    BOOST_TEST(nlohmann::json::parse(r.out)["summary"]["pairs_considered"] == 0);
+    BOOST_TEST(r.err.find("nothing of the model was judged") != std::string::npos, r.err);
 }
 
 BOOST_AUTO_TEST_CASE(planes_at_states_by_hand) {

@@ -95,7 +95,10 @@ Command add_mujoco(CLI::App& app) {
             const mj::ModelInfo& info = m->info();
             std::vector<std::string> labels;
             std::vector<std::vector<double>> given;
-            if (!a->qpos.empty()) given = read_states(a->qpos, labels);
+            if (!a->qpos.empty()) {
+                given = read_states(a->qpos, labels);
+                internal::note_inputs({a->qpos});  // --out QPOS would replace it
+            }
             if (a->key >= static_cast<int>(info.keys.size()))
                 throw InputError("--key " + std::to_string(a->key) + ": the model has " +
                                  std::to_string(info.keys.size()) +

@@ -68,8 +68,58 @@ namespace {
 // where MuJoCo looks (beside the model, under the compiler's meshdir, texturedir and assetdir) and
 // refused in one line where it is there and not a regular file. (A text scan, not an XML parse: a
 // name it reads too many only costs a stat.)
-void refuse_files_that_block(const std::string& path, int depth = 0) {
+// An attribute value with XML's character references decoded (&amp; &lt; &gt; &quot; &apos;,
+// &#N; and &#xN;), as MuJoCo's XML reader reads it.
+std::string xml_decoded(const std::string& v) {
+    std::string out;
+    for (size_t i = 0; i < v.size(); ++i) {
+        const size_t semi = v[i] == '&' ? v.find(';', i) : std::string::npos;
+        if (semi == std::string::npos || semi - i > 12) {
+            out += v[i];
+            continue;
+        }
+        const std::string name = v.substr(i + 1, semi - i - 1);
+        long code = -1;
+        if (name == "amp")
+            code = '&';
+        else if (name == "lt")
+            code = '<';
+        else if (name == "gt")
+            code = '>';
+        else if (name == "quot")
+            code = '"';
+        else if (name == "apos")
+            code = '\'';
+        else if (name.size() > 1 && name[0] == '#') {
+            char* end = nullptr;
+            code = name[1] == 'x' || name[1] == 'X' ? std::strtol(name.c_str() + 2, &end, 16)
+                                                    : std::strtol(name.c_str() + 1, &end, 10);
+            if (!end || *end) code = -1;
+        }
+        if (code < 0 || code > 0x10FFFF) {
+            out += v[i];
+            continue;
+        }
+        // UTF-8, as the file name's bytes.
+        if (code < 0x80)
+            out += static_cast<char>(code);
+        else if (code < 0x800)
+            out += static_cast<char>(0xC0 | (code >> 6)), out += static_cast<char>(0x80 | (code & 0x3F));
+        else if (code < 0x10000)
+            out += static_cast<char>(0xE0 | (code >> 12)), out += static_cast<char>(0x80 | ((code >> 6) & 0x3F)),
+                out += static_cast<char>(0x80 | (code & 0x3F));
+        else
+            out += static_cast<char>(0xF0 | (code >> 18)), out += static_cast<char>(0x80 | ((code >> 12) & 0x3F)),
+                out += static_cast<char>(0x80 | ((code >> 6) & 0x3F)), out += static_cast<char>(0x80 | (code & 0x3F));
+        i = semi;
+    }
+    return out;
+}
+
+void refuse_files_that_block(const std::string& path, int depth = 0,
+                             std::vector<std::filesystem::path> inherited = {}) {
     const std::string text = read_input(path, "model file", kMaxSceneBytes);
+    note_inputs({path});
     if (depth > 16) throw InputError(path + ": <include>s nested past 16 levels");
     const std::filesystem::path dir = std::filesystem::path(path).parent_path();
     // The next value of attribute `name` from `from` on: name, spaces, '=', spaces, then a value
@@ -86,26 +136,33 @@ void refuse_files_that_block(const std::string& path, int depth = 0) {
             const size_t e = text.find(text[i], i + 1);
             if (e == std::string::npos) return std::nullopt;
             at = e;
-            return text.substr(i + 1, e - i - 1);
+            return xml_decoded(text.substr(i + 1, e - i - 1));
         }
         return std::nullopt;
     };
-    std::vector<std::filesystem::path> dirs{dir};
+    // The folders a file may be looked for in: this file's, the compiler's (given here or by the
+    // model that includes this file), and, for <compiler strippath>, each name's last part too.
+    std::vector<std::filesystem::path> dirs = std::move(inherited);
+    dirs.push_back(dir);
     for (const char* d : {"meshdir", "texturedir", "assetdir"})
         for (size_t at = 0; auto v = attribute(d, at, at);) dirs.push_back(dir / *v);
     for (size_t at = 0; auto f = attribute("file", at, at);) {
+        std::vector<std::filesystem::path> candidates;
         for (const std::filesystem::path& d : dirs) {
-            const std::filesystem::path p =
-                std::filesystem::path(*f).is_absolute() ? std::filesystem::path(*f) : d / *f;
+            candidates.push_back(std::filesystem::path(*f).is_absolute() ? std::filesystem::path(*f) : d / *f);
+            candidates.push_back(d / std::filesystem::path(*f).filename());
+        }
+        for (const std::filesystem::path& p : candidates) {
             std::error_code ec;
             const auto st = std::filesystem::status(p, ec);
             if (ec || !std::filesystem::exists(st)) continue;
             if (!std::filesystem::is_regular_file(st))
                 throw InputError(path + ": " + in_quotes(*f) + " (" + p.string() +
                                  ") is not a regular file: MuJoCo would open it (only regular files are read)");
+            note_inputs({p.string()});  // an output naming it would replace the model's own file
             const size_t tag = text.rfind('<', at);
             if (tag != std::string::npos && text.compare(tag, 8, "<include") == 0)
-                refuse_files_that_block(p.string(), depth + 1);
+                refuse_files_that_block(p.string(), depth + 1, dirs);
         }
     }
 }
