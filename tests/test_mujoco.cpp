@@ -326,6 +326,25 @@ BOOST_AUTO_TEST_CASE(intended_judges_the_model_as_written) {
             said_why =
                 said_why || x["intended"]["why"].get<std::string>().find("written in the model") != std::string::npos;
     BOOST_TEST(said_why);
+    // Where the model written back is not the model (a scale MuJoCo writes to 6 digits) or the
+    // file is not what MuJoCo holds (a vertex no face uses, which MuJoCo drops), the pair is
+    // unjudged as written, and says why; never judged against the wrong geometry.
+    const std::string cube = (fs::path(kData) / "tenth_cube.obj").string();
+    auto written_why = [&](const std::string& name, const std::string& mesh) {
+        const fs::path x = write(name, R"(<mujoco><asset>)" + mesh + R"(</asset><worldbody>
+          <geom name="floor" type="box" size="1 1 0.5" pos="0 0 -0.5"/><body pos="0 0 0.1"><freejoint/>
+          <geom name="cube" type="mesh" mesh="c"/></body></worldbody></mujoco>)");
+        const Run w = run("mujoco " + x.string() + " --json --intended");
+        BOOST_TEST_REQUIRE((w.status == 0 || w.status == 1), w.err);
+        return nlohmann::json::parse(w.out)["frames"][0]["pairs"][0]["intended"]["why"].get<std::string>();
+    };
+    BOOST_TEST(written_why("scaled.xml", "<mesh name=\"c\" file=\"" + cube + "\" scale=\"1.0000001 1 1\"/>")
+                   .find("differ from the model's") != std::string::npos);
+    std::string extra = test::slurp(cube) + "v 5 5 5\n";
+    write("extra.obj", extra);
+    BOOST_TEST(
+        written_why("extra.xml", "<mesh name=\"c\" file=\"extra.obj\"/>").find("9 distinct vertices, MuJoCo holds 8") !=
+        std::string::npos);
 }
 
 BOOST_AUTO_TEST_CASE(contact_points_against_posed_boxes_by_brute_force) {

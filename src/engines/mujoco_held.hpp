@@ -78,6 +78,7 @@ struct MeshSource {
     double scale[3] = {1, 1, 1};
     double pos[3] = {0, 0, 0};
     double quat[4] = {1, 0, 0, 0};
+    long vertices = 0;    // how many distinct vertices MuJoCo holds for it
     std::string why_not;  // why the mesh has no source to judge against ("" when it has)
 };
 // The second entry point: the model's meshes by mesh id, or false with the reason in *error.

@@ -251,6 +251,18 @@ Intended intended_geom(const Geom& g, const std::vector<MeshSource>& sources) {
             out.why_not = "mesh '" + src.name + "': " + e.what();
             return out;
         }
+        // MuJoCo keeps the vertices its faces use (each once per face corner): a file with more
+        // distinct vertices than MuJoCo holds has ones MuJoCo dropped, and is not the geometry
+        // it collides.
+        std::vector<Vec3q> distinct = file;
+        std::sort(distinct.begin(), distinct.end());
+        distinct.erase(std::unique(distinct.begin(), distinct.end()), distinct.end());
+        if (static_cast<long>(distinct.size()) != src.vertices) {
+            out.why_not = "mesh '" + src.name + "': its file has " + std::to_string(distinct.size()) +
+                          " distinct vertices, MuJoCo holds " + std::to_string(src.vertices) +
+                          " (it drops vertices no face uses)";
+            return out;
+        }
         const Q w = exact_from_double(src.quat[0]), x = exact_from_double(src.quat[1]),
                 y = exact_from_double(src.quat[2]), z = exact_from_double(src.quat[3]);
         const Q R[3][3] = {{w * w + x * x - y * y - z * z, 2 * (x * y - w * z), 2 * (x * z + w * y)},

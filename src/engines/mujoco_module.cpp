@@ -13,7 +13,9 @@
 #include <cstdlib>
 #include <cstdio>
 #include <cstring>
+#include <array>
 #include <map>
+#include <set>
 #include <mutex>
 #include <sstream>
 
@@ -301,6 +303,11 @@ extern "C" __attribute__((visibility("default"))) bool scalecert_mujoco_mesh_sou
         (*out)[static_cast<size_t>(k)].why_not = "MuJoCo did not write the model back (mj_saveLastXML)";
     }
     const int nmesh = m->nmesh;
+    // Each mesh's float32 vertices as the model holds them: a probe must reproduce them exactly.
+    std::vector<std::vector<float>> held(static_cast<size_t>(nmesh));
+    for (int k = 0; k < nmesh; ++k)
+        held[static_cast<size_t>(k)].assign(m->mesh_vert + 3 * m->mesh_vertadr[k],
+                                            m->mesh_vert + 3 * (m->mesh_vertadr[k] + m->mesh_vertnum[k]));
     mj_deleteModel(m);
     if (!wrote) return true;
     // The mesh scale of each default class (a class takes its parent's unless it sets its own), the
@@ -382,6 +389,17 @@ extern "C" __attribute__((visibility("default"))) bool scalecert_mujoco_mesh_sou
         }
         for (int i = 0; i < 3; ++i) s.pos[i] = p->geom_pos[i];
         for (int i = 0; i < 4; ++i) s.quat[i] = p->geom_quat[i];
+        // The model written back rounds numbers (a scale to 6 digits), and its defaults may not be
+        // read back whole: the probe's vertices must be the model's, float for float.
+        const std::vector<float> probe_vertices(p->mesh_vert, p->mesh_vert + 3 * p->nmeshvert);
+        std::set<std::array<float, 3>> distinct;
+        for (size_t i = 0; i + 2 < held[k].size(); i += 3)
+            distinct.insert({held[k][i], held[k][i + 1], held[k][i + 2]});
+        s.vertices = static_cast<long>(distinct.size());
+        if (p->nmesh != 1 || probe_vertices != held[k])
+            s.why_not =
+                "MuJoCo's vertices for it alone differ from the model's (its scale or class, as MuJoCo writes "
+                "the model back, is not the model's exactly)";
         mj_deleteModel(p);
     }
     return true;
