@@ -1192,7 +1192,7 @@ std::vector<double> held_numbers(const py::handle& owner, const char* owner_name
         const py::object np = py::module_::import("numpy");
         const py::array a = np.attr("asarray")(owner.attr(name));
         const std::string kind = py::str(a.dtype().attr("kind"));
-        if (kind != "i" && kind != "u" && kind != "f" && kind != "b")
+        if (kind != "i" && kind != "u" && kind != "f")
             throw scalecert::InputError(what + ": expected numbers (dtype " + std::string(py::str(a.dtype())) + ")");
         const py::array_t<double, py::array::c_style | py::array::forcecast> d = np.attr("ravel")(a);
         return std::vector<double>(d.data(), d.data() + d.size());
@@ -1253,9 +1253,12 @@ scalecert::MujocoHeldModel held_model(const py::handle& m) {
     h.mesh_vertadr = held_ints(m, M, "mesh_vertadr");
     h.mesh_vertnum = held_ints(m, M, "mesh_vertnum");
     for (double x : held_doubles(m, M, "mesh_vert")) {
-        if (static_cast<double>(static_cast<float>(x)) != x)
-            throw scalecert::InputError("model.mesh_vert: " + std::to_string(x) +
+        if (static_cast<double>(static_cast<float>(x)) != x) {
+            char shown[40];
+            std::snprintf(shown, sizeof shown, "%.17g", x);
+            throw scalecert::InputError(std::string("model.mesh_vert: ") + shown +
                                         " is not a float32 (MuJoCo holds mesh vertices as float32)");
+        }
         h.mesh_vert.push_back(static_cast<float>(x));
     }
     h.pair_geom1 = held_ints(m, M, "pair_geom1");
@@ -1273,7 +1276,7 @@ scalecert::MujocoHeldModel held_model(const py::handle& m) {
     h.opt_o_margin = om[0];
     return h;
 }
-scalecert::MujocoHeldData held_data(const py::handle& d, const std::string& where) {
+scalecert::MujocoHeldData held_data(const py::handle& d, const std::string& where, long nconmax) {
     scalecert::MujocoHeldData h;
     const std::string D = where;
     h.qpos = held_doubles(d, D.c_str(), "qpos");
@@ -1309,6 +1312,7 @@ scalecert::MujocoHeldData held_data(const py::handle& d, const std::string& wher
         k.exclude = ex[i];
         h.contact.push_back(k);
     }
+    h.contact_buffer_full = nconmax > 0 && static_cast<long>(n) >= nconmax;
     return h;
 }
 // judge_mujoco_held's arguments: data one MjData-like object or a list of them.
@@ -1322,12 +1326,17 @@ scalecert::MujocoJudgement mujoco_held_judgement(const py::handle& model, const 
         o.failures = path_arg(failures, "failures");
         if (o.failures.empty()) throw scalecert::InputError("failures: an empty path (give None for no reproducers)");
     }
+    // MuJoCo's contact buffer (model.nconmax, where the model has it): a state that filled it
+    // dropped contacts.
+    const long nconmax = py::hasattr(model, "nconmax") ? held_int(model, "model", "nconmax") : 0;
     std::vector<scalecert::MujocoHeldData> states;
     if (py::isinstance<py::list>(data) || py::isinstance<py::tuple>(data)) {
         size_t i = 0;
-        for (const py::handle d : data) states.push_back(held_data(d, "data[" + std::to_string(i++) + "]"));
+        for (const py::handle d : data) states.push_back(held_data(d, "data[" + std::to_string(i++) + "]", nconmax));
+    } else if (py::hasattr(data, "qpos")) {
+        states.push_back(held_data(data, "data", nconmax));
     } else {
-        states.push_back(held_data(data, "data"));
+        throw scalecert::InputError("data: an MjData (or an object with its attributes), or a list or tuple of them");
     }
     return scalecert::judge_mujoco_held(held_model(model), states, o);
 }

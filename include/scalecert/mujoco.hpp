@@ -73,6 +73,7 @@ inline MujocoHeldData mujoco_held(const mjModel* m, const mjData* d) {
         o.exclude = c.exclude;
         h.contact.push_back(o);
     }
+    h.contact_buffer_full = m->nconmax > 0 && d->ncon >= m->nconmax;
     return h;
 }
 

@@ -351,6 +351,9 @@ struct MujocoHeldData {
     std::vector<double> qpos;                  // nq (for the report and the reproducers)
     std::vector<double> geom_xpos, geom_xmat;  // ngeom x 3, ngeom x 9
     std::vector<MujocoHeldContact> contact;    // the ncon contacts
+    // MuJoCo dropped contacts at this state (ncon reached nconmax): pairs without a contact are
+    // then not judged, as in judge_mujoco.
+    bool contact_buffer_full = false;
 };
 // Each data judged in turn, as judge_mujoco judges its states; `source` names the model in the
 // report and the reproducers. InputError when the arrays do not fit together (each named).

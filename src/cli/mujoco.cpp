@@ -108,7 +108,7 @@ Command add_mujoco(CLI::App& app) {
             const mj::MujocoResult r = mj::judge_states(*m, states, labels, opt);
             // MuJoCo's warnings, each once, with how often it was given.
             std::map<std::string, long> said;
-            for (const std::string& w : r.warnings) ++said[w.substr(w.find(": ") + 2)];
+            for (const std::string& w : r.warning_texts) ++said[w];
             for (const auto& [w, n] : said)
                 internal::say_note("MuJoCo warned (" + std::to_string(n) + (n == 1 ? " state" : " states") + "): " + w);
             if (r.report["summary"]["judgements"].get<long>() == 0)

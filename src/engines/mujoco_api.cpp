@@ -97,6 +97,9 @@ internal::mj::ModelInfo held_info(const MujocoHeldModel& m) {
         const std::string at = "[" + std::to_string(i) + "]";
         internal::mj::Geom o;
         o.name = m.geom_names.empty() ? "" : m.geom_names[i];
+        if (m.geom_type[i] < 0 || m.geom_type[i] > internal::mj::kMesh)
+            throw InputError("held model: geom_type" + at + " = " + std::to_string(m.geom_type[i]) +
+                             " is no MuJoCo 2.2.2 geom type (0 to 7)");
         o.type = m.geom_type[i];
         need_index(m.geom_bodyid[i], nbody, "geom_bodyid" + at);
         o.body = m.geom_bodyid[i];
@@ -159,6 +162,7 @@ MujocoJudgement judge_mujoco_held(const MujocoHeldModel& model, const std::vecto
             throw InputError(at + "geom_xpos and geom_xmat must hold 3 and 9 numbers a geom (" + std::to_string(ngeom) +
                              " geoms)");
         internal::mj::State s;
+        if (d.contact_buffer_full) s.warnings.push_back("the contact buffer is full (the program's data said so)");
         s.xpos = d.geom_xpos;
         s.xmat = d.geom_xmat;
         for (size_t k = 0; k < d.contact.size(); ++k) {

@@ -135,6 +135,9 @@ std::vector<Considered> considered_pairs(const ModelInfo& m) {
             const int b1 = std::min(ga.body, gb.body), b2 = std::max(ga.body, gb.body);
             if (excluded.count(((b1 + 1) << 16) | (b2 + 1)) || excluded.count(((b2 + 1) << 16) | (b1 + 1))) continue;
             add(a, b, override_margin ? m.o_margin : std::max(ga.margin, gb.margin), std::max(ga.gap, gb.gap), false);
+            if (out.size() > kMaxConsideredPairs)
+                throw InputError("more than " + std::to_string(kMaxConsideredPairs) +
+                                 " geom pairs to consider (the limit)");
         }
     std::vector<Considered> v;
     for (auto& [k, c] : out) v.push_back(c);
@@ -368,6 +371,10 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
     for (const Considered& p : pairs)
         judged_pairs += judged_type(m.geoms[static_cast<size_t>(p.g1)].type) &&
                         judged_type(m.geoms[static_cast<size_t>(p.g2)].type);
+    if (states.size() * std::max<size_t>(pairs.size(), 1) > kMaxPairStates)
+        throw InputError(opt.model + ": " + std::to_string(states.size()) + " states of " +
+                         std::to_string(pairs.size()) + " geom pairs, more than " + std::to_string(kMaxPairStates) +
+                         " pair states in one report (the limit): judge the states in parts");
     if (judged_pairs > kMaxJudgedGeomPairs)
         throw InputError(opt.model + ": " + std::to_string(judged_pairs) +
                          " geom pairs of boxes and meshes to judge, "
@@ -475,6 +482,7 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
         for (const std::string& w : s.warnings) {
             buffer_full = buffer_full || w.find("contact buffer is full") != std::string::npos;
             res.warnings.push_back(labels[f] + ": " + w);
+            res.warning_texts.push_back(w);
         }
         // The contacts of each pair, by their own order of the geoms.
         std::map<std::pair<int, int>, std::vector<const Contact*>> of;
@@ -1122,13 +1130,22 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
             "), judgements: " + std::to_string(judgements) + ", wrong: " + std::to_string(res.wrong) +
             " pair states (" + std::to_string(wrong_verdicts) + " verdicts), worst dist error " +
             to_shortest(worst_dist) + " m\n";
+    if (contacts_outside > 0)
+        text += "contacts MuJoCo reported for pairs it does not consider (a geom with itself, a filtered pair): " +
+                std::to_string(contacts_outside) + ", not judged\n";
     if (opt.intended)
         text += "as written (--intended): wrong: " + std::to_string(written_wrong) + " pair states" +
                 (written_unjudged ? " (" + std::to_string(written_unjudged) + " pair states unjudged)" : "") +
                 ", worst dist error " + to_shortest(written_worst_dist) + " m\n";
-    for (const Json& u : res.report["unjudged"])
+    // The unjudged pairs, the first 20 a line each (the JSON report has them all).
+    const Json& all_unjudged = res.report["unjudged"];
+    for (size_t i = 0; i < all_unjudged.size() && i < 20; ++i) {
+        const Json& u = all_unjudged[i];
         text += "unjudged: " + geom_label(m, u["geom1"].get<int>()) + " and " + geom_label(m, u["geom2"].get<int>()) +
                 ": " + u["why"].get<std::string>() + "\n";
+    }
+    if (all_unjudged.size() > 20)
+        text += "unjudged: " + std::to_string(all_unjudged.size() - 20) + " more pairs (--json lists them)\n";
     res.text = std::move(text);
     res.judge_seconds = std::chrono::duration<double>(Clock::now() - start).count() - res.forward_seconds;
     return res;

@@ -64,7 +64,8 @@ struct MujocoResult {
     double forward_seconds = 0, judge_seconds = 0;
     // What MuJoCo warned of, each after its state's label (the command says them on stderr).
     std::vector<std::string> warnings;
-    long reproducers = 0;  // pair states written to the failures folder (plane pairs have none)
+    std::vector<std::string> warning_texts;  // the same without the labels (labels hold ": " too)
+    long reproducers = 0;                    // pair states written to the failures folder (plane pairs have none)
 };
 MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>& states,
                           const std::vector<std::string>& labels, const MujocoOptions& opt);

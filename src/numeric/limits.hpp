@@ -28,5 +28,11 @@ constexpr double kMaxEdgePairs = 2e7;
 // Geom pairs scalecert mujoco judges (both geoms a box or a mesh): each keeps its own engine for
 // every state (about 35 KB each: 400 free boxes, 79,800 pairs, took 2.8 GB and 49 s a state).
 constexpr std::size_t kMaxJudgedGeomPairs = 20000;
+// Geom pairs scalecert mujoco considers (judged or not: each unjudged one is named in the report):
+// 1,000 spheres make 499,500, which took 724 MB before this limit.
+constexpr std::size_t kMaxConsideredPairs = 200000;
+// Pair states (states times considered pairs) in one report: each is a JSON entry of a few hundred
+// bytes (60,000 states of the gripper, 48 pairs a state, took 674 MB).
+constexpr std::size_t kMaxPairStates = 2000000;
 
 }  // namespace scalecert::internal

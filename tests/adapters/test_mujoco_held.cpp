@@ -162,6 +162,17 @@ BOOST_AUTO_TEST_CASE(held_arrays_that_do_not_fit) {
     d.contact.push_back({0, 77});
     refused(good, d, "contact[0].geom2");
     BOOST_CHECK_THROW(scalecert::judge_mujoco_held(good, {}), scalecert::InputError);
+    m = good;
+    m.geom_type[0] = 99;
+    refused(m, state, "geom_type[0] = 99");
+    // A state whose contact buffer was full: its pairs without a contact are not judged (the cube
+    // 1/8 into the floor with no contact said would be a wrong verdict otherwise).
+    w.forward({0.25, 0, 0.375, 1, 0, 0, 0, 5, 0, 0, 1, 0, 0, 0, -5, 0, 0, 1, 0, 0, 0});
+    scalecert::MujocoHeldData dropped = scalecert::mujoco_held(w.m, w.d);
+    dropped.contact.clear();
+    BOOST_TEST(scalecert::judge_mujoco_held(good, {dropped}).wrong_pairs == 1);
+    dropped.contact_buffer_full = true;
+    BOOST_TEST(scalecert::judge_mujoco_held(good, {dropped}).wrong_pairs == 0);
 }
 
 // plane.xml (planes are half-spaces: CLAIMS.md, "Engines' conventions"): the floor z <= 0, the
