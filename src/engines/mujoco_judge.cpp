@@ -366,7 +366,13 @@ double signed_error(double d, int s, const Q& E) {
 MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>& states,
                           const std::vector<std::string>& labels, const MujocoOptions& opt) {
     const ModelInfo& m = model.info();
-    const std::vector<Considered> pairs = considered_pairs(m);
+    const std::vector<Considered> pairs = [&] {
+        try {
+            return considered_pairs(m);
+        } catch (const InputError& e) {
+            throw InputError(opt.model + ": " + e.what());
+        }
+    }();
     size_t judged_pairs = 0;
     for (const Considered& p : pairs)
         judged_pairs += judged_type(m.geoms[static_cast<size_t>(p.g1)].type) &&
@@ -652,6 +658,51 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
             }
             return 1;
         };
+        // A contact's own dist: no contact is deeper than the pair (S <= d + LEN + tol·|S|), and
+        // each is within the margin (d < margin + LEN). A contact failing it is wrong, and its pos
+        // is not judged against that dist.
+        auto contact_dist_right = [&](const Contact& c, int sign, const Q& E, double margin) {
+            if (!std::isfinite(c.dist)) return false;
+            const Q d = exact_from_double(c.dist);
+            return sign_minus_sqrt(d + opt.tolerance.abs, sign - opt.tolerance.rel, E) >= 0 &&
+                   d < exact_from_double(margin) + opt.tolerance.abs;
+        };
+        // Every contact of a pair: its dist (contact_dist_right), then its pos (position_near_both);
+        // the report's "contacts" entry and the text's lines. Returns whether all are right.
+        auto judge_contacts = [&](int a, int b, const std::vector<const Contact*>& cons, int sign, const Q& E,
+                                  double margin, Json& pj, const std::string& who) {
+            Json all_said = Json::array(), wrong_pos = Json::array(), wrong_dist = Json::array();
+            long judged_pos = 0;
+            for (size_t k = 0; k < cons.size(); ++k) {
+                const Contact& c = *cons[k];
+                all_said.push_back(Json::array({number(c.pos[0]), number(c.pos[1]), number(c.pos[2])}));
+                ++judgements;
+                if (!contact_dist_right(c, sign, E, margin)) {
+                    wrong_dist.push_back(k);
+                    text += who + "contact " + std::to_string(k) + "'s dist " + to_shortest(c.dist) +
+                            " is not between the signed distance ~" + to_shortest(signed_double(sign, E)) +
+                            " m and the margin " + to_shortest(margin) + "\n";
+                    continue;
+                }
+                const int verdict_of = position_near_both(a, b, c);
+                if (verdict_of < 0) continue;
+                ++judgements, ++judged_pos;
+                if (verdict_of == 1) continue;
+                wrong_pos.push_back(k);
+                text += who + "contact " + std::to_string(k) + "'s pos (" + to_shortest(c.pos[0]) + ", " +
+                        to_shortest(c.pos[1]) + ", " + to_shortest(c.pos[2]) +
+                        ") is farther than |dist|/2 from a geom\n";
+            }
+            pj["pos"]["all_said"] = std::move(all_said);
+            const bool dists_right = wrong_dist.empty(), pos_right = wrong_pos.empty();
+            pj["contact_dists"] = Json{{"right", dists_right}};
+            if (!dists_right) pj["contact_dists"]["wrong_contacts"] = std::move(wrong_dist);
+            if (judged_pos) {
+                pj["pos"]["right"] = pos_right;
+                if (!pos_right) pj["pos"]["wrong_contacts"] = std::move(wrong_pos);
+            }
+            return dists_right && (judged_pos == 0 || pos_right);
+        };
         // A plane geom and a box or mesh geom (CLAIMS.md, "Engines' conventions", MuJoCo's planes):
         // the plane is the half-space n·(x − p0) <= 0, n its z-axis (column 2 of its frame), p0 its
         // origin; with m the least n·(v − p0) over the other geom's posed vertices v and N = |n|²,
@@ -771,31 +822,10 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
                 } else {
                     pj["normal"] = Json{{"said", said}};
                 }
-                // Each contact's pos: within |dist|/2 (+ LEN) of the half-space and of the other
-                // geom (as for two polyhedra: position_near_both).
-                Json all_said = Json::array(), wrong_pos = Json::array();
-                long judged_pos = 0;
-                for (size_t k = 0; k < cons->size(); ++k) {
-                    const Contact& c = *(*cons)[k];
-                    all_said.push_back(Json::array({number(c.pos[0]), number(c.pos[1]), number(c.pos[2])}));
-                    const int verdict_of = position_near_both(a, b, c);
-                    if (verdict_of < 0) continue;
-                    ++judgements, ++judged_pos;
-                    if (verdict_of == 1) continue;
-                    wrong_pos.push_back(k);
-                    text += who + "contact " + std::to_string(k) + "'s pos (" + to_shortest(c.pos[0]) + ", " +
-                            to_shortest(c.pos[1]) + ", " + to_shortest(c.pos[2]) +
-                            ") is farther than |dist|/2 from a geom\n";
-                }
                 pj["pos"] = Json{
-                    {"said", Json::array({number(deepest->pos[0]), number(deepest->pos[1]), number(deepest->pos[2])})},
-                    {"all_said", std::move(all_said)}};
-                if (judged_pos) {
-                    const bool pos_right = wrong_pos.empty();
-                    pj["pos"]["right"] = pos_right;
-                    if (!pos_right) pj["pos"]["wrong_contacts"] = std::move(wrong_pos);
-                    all_right = all_right && pos_right;
-                }
+                    {"said", Json::array({number(deepest->pos[0]), number(deepest->pos[1]), number(deepest->pos[2])})}};
+                // Each contact's dist and pos (judge_contacts), the half-space as a geom.
+                all_right = judge_contacts(a, b, *cons, sign, E, p.margin, pj, who) && all_right;
             }
             if (!all_right) res.wrong += 1;
             if (opt.intended) {
@@ -1009,31 +1039,11 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
                 }
                 pj["pos"] = Json{
                     {"said", Json::array({number(deepest->pos[0]), number(deepest->pos[1]), number(deepest->pos[2])})}};
-                // Each contact's pos (MuJoCo's midpoint between a point of each geom, |dist| apart)
-                // lies within |dist|/2 (+ LEN) of each geom: judged where both are boxes (or a
-                // plane), by near_geom; a position it is unsure of is left unjudged.
-                Json wrong_pos = Json::array(), all_said = Json::array();
-                for (const Contact* c : cs->second)
-                    all_said.push_back(Json::array({number(c->pos[0]), number(c->pos[1]), number(c->pos[2])}));
-                pj["pos"]["all_said"] = std::move(all_said);
-                long judged_pos = 0;
-                for (size_t k = 0; k < cs->second.size(); ++k) {
-                    const Contact& c = *cs->second[k];
-                    const int verdict_of = position_near_both(a, b, c);
-                    if (verdict_of < 0) continue;
-                    ++judgements, ++judged_pos;
-                    if (verdict_of == 1) continue;
-                    wrong_pos.push_back(k);
-                    text += "WRONG  state " + std::to_string(f) + " (" + labels[f] + "): " + geom_label(m, a) +
-                            " and " + geom_label(m, b) + ": contact " + std::to_string(k) + "'s pos (" +
-                            to_shortest(c.pos[0]) + ", " + to_shortest(c.pos[1]) + ", " + to_shortest(c.pos[2]) +
-                            ") is farther than |dist|/2 from a geom\n";
-                }
-                if (judged_pos) {
-                    pj["pos"]["right"] = wrong_pos.empty();
-                    if (!wrong_pos.empty()) pj["pos"]["wrong_contacts"] = std::move(wrong_pos);
-                    all_right = all_right && pj["pos"]["right"].get<bool>();
-                }
+                // Each contact's dist and pos (judge_contacts).
+                all_right = judge_contacts(a, b, cs->second, ex.sign(), ex.exact_squared, p.margin, pj,
+                                           "WRONG  state " + std::to_string(f) + " (" + labels[f] +
+                                               "): " + geom_label(m, a) + " and " + geom_label(m, b) + ": ") &&
+                            all_right;
             }
             if (!all_right) {
                 res.wrong += 1;

@@ -151,6 +151,8 @@ void refuse_files_that_block(const std::string& path, int depth = 0,
         for (const std::filesystem::path& d : dirs) {
             candidates.push_back(std::filesystem::path(*f).is_absolute() ? std::filesystem::path(*f) : d / *f);
             candidates.push_back(d / std::filesystem::path(*f).filename());
+            const size_t back = f->find_last_of("/\\");  // strippath cuts at either slash
+            if (back != std::string::npos) candidates.push_back(d / f->substr(back + 1));
         }
         for (const std::filesystem::path& p : candidates) {
             std::error_code ec;

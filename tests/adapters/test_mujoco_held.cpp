@@ -214,6 +214,16 @@ BOOST_AUTO_TEST_CASE(planes_by_hand_and_forged) {
     BOOST_TEST(forged([](scalecert::MujocoHeldContact& c) { c.frame[0] = 1e-3; })["normal"]["right"] == false);
     BOOST_TEST(forged([](scalecert::MujocoHeldContact& c) { c.pos[2] = 0.1; })["pos"]["right"] == false);
     BOOST_TEST(forged([](scalecert::MujocoHeldContact& c) { c.pos[2] = 0.0625; })["pos"]["right"] == true);
+    // A contact may not widen its own allowance: its dist must lie between the pair's signed
+    // distance and the margin (S = −1/8 <= d < 0), so a dist of +3 with a pos 3/2 above the floor
+    // is a wrong dist, not a right pos.
+    const nlohmann::json wide = forged([](scalecert::MujocoHeldContact& c) {
+        c.dist = 3;
+        c.pos = {0.5, 0.5, 1.5};
+    });
+    BOOST_TEST(wide["contact_dists"]["right"] == false);
+    BOOST_TEST(forged([](scalecert::MujocoHeldContact& c) { c.dist = -0.2; })["contact_dists"]["right"] == false);
+    BOOST_TEST(ok["contact_dists"]["right"] == true);
     // The floor's normal reversed (from the cube into the floor): wrong.
     BOOST_TEST(forged([](scalecert::MujocoHeldContact& c) { c.frame[2] = -1; })["normal"]["right"] == false);
     // A contact said where the cube is 3/2 above the floor: the verdict is wrong.
