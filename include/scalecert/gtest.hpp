@@ -19,11 +19,9 @@
 
 namespace scalecert::testing {
 
-// scalecert mujoco: every judgement right; else the failure lists each wrong one by its state.
-inline ::testing::AssertionResult MujocoIsRight(const std::string& model,
-                                                const std::vector<std::vector<double>>& qpos = {},
-                                                const MujocoOptions& options = {}) {
-    const MujocoJudgement j = judge_mujoco(model, qpos, options);
+// A MuJoCo judgement as a gate: nothing judged fails; else every judgement right, or the failure
+// lists each wrong one by its state (and where the reproducers are, when asked for).
+inline ::testing::AssertionResult MujocoGate(const MujocoJudgement& j, const MujocoOptions& options) {
     if (j.judgements == 0)
         return ::testing::AssertionFailure() << "scalecert: nothing of the model was judged:\n" << j.text;
     if (j.wrong_pairs == 0) return ::testing::AssertionSuccess();
@@ -34,18 +32,18 @@ inline ::testing::AssertionResult MujocoIsRight(const std::string& model,
     return r;
 }
 
+// scalecert mujoco: every judgement right; else the failure lists each wrong one by its state.
+inline ::testing::AssertionResult MujocoIsRight(const std::string& model,
+                                                const std::vector<std::vector<double>>& qpos = {},
+                                                const MujocoOptions& options = {}) {
+    return MujocoGate(judge_mujoco(model, qpos, options), options);
+}
+
 // The same on what the program's own MuJoCo holds (scalecert/mujoco.hpp fills the arrays).
 inline ::testing::AssertionResult MujocoHeldIsRight(const MujocoHeldModel& model,
                                                     const std::vector<MujocoHeldData>& data,
                                                     const MujocoOptions& options = {}) {
-    const MujocoJudgement j = judge_mujoco_held(model, data, options);
-    if (j.judgements == 0)
-        return ::testing::AssertionFailure() << "scalecert: nothing of the model was judged:\n" << j.text;
-    if (j.wrong_pairs == 0) return ::testing::AssertionSuccess();
-    ::testing::AssertionResult r = ::testing::AssertionFailure();
-    r << "scalecert: MuJoCo was wrong at " << j.wrong_pairs << " pair state" << (j.wrong_pairs == 1 ? "" : "s") << ":\n"
-      << j.text;
-    return r;
+    return MujocoGate(judge_mujoco_held(model, data, options), options);
 }
 
 // scalecert certify-fp: every claim right (a claims file's text, JSON or lines); else the failure

@@ -314,6 +314,24 @@ struct PairEngine {
     std::unique_ptr<ClaimRules> rules;
     std::string why_not;  // why the pair cannot be judged ("" when it can)
 };
+// Opens e on the scene of the two geoms' points (scaling ranges [1, 1]), `label` naming it in
+// messages; e.why_not says why when the engine refuses the scene.
+void open_pair(PairEngine& e, const PolyInput& p1, const PolyInput& p2, const std::string& label,
+               const Tolerance& tolerance) {
+    auto sc = std::make_shared<ExactScene>();
+    sc->P[0] = p1;
+    sc->P[1] = p2;
+    sc->lo[0] = sc->hi[0] = sc->lo[1] = sc->hi[1] = 1;
+    try {
+        finish_scene(*sc, label);
+        e.engine = open_engine(std::shared_ptr<const ExactScene>(sc), label);
+        e.engine->check();
+        e.rules = e.engine->rules(tolerance);
+    } catch (const InputError& x) {
+        e.engine.reset();
+        e.why_not = x.what();
+    }
+}
 
 // A rational r >= 0 as a decimal, exactly, where its denominator is 2^a 5^b (every dyadic number:
 // what doubles and floats make); else as p/q.
@@ -392,19 +410,8 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
         PairEngine& e = engines[{a, b}];
         if (e.engine || !e.why_not.empty()) return e;
         auto sc = std::make_shared<ExactScene>();
-        sc->P[0] = geom_points(m.geoms[static_cast<size_t>(a)]);
-        sc->P[1] = geom_points(m.geoms[static_cast<size_t>(b)]);
-        sc->lo[0] = sc->hi[0] = sc->lo[1] = sc->hi[1] = 1;
-        try {
-            finish_scene(*sc, geom_label(m, a) + " and " + geom_label(m, b));
-            e.engine =
-                open_engine(std::shared_ptr<const ExactScene>(sc), geom_label(m, a) + " and " + geom_label(m, b));
-            e.engine->check();
-            e.rules = e.engine->rules(opt.tolerance);
-        } catch (const InputError& x) {
-            e.engine.reset();
-            e.why_not = x.what();
-        }
+        open_pair(e, geom_points(m.geoms[static_cast<size_t>(a)]), geom_points(m.geoms[static_cast<size_t>(b)]),
+                  geom_label(m, a) + " and " + geom_label(m, b), opt.tolerance);
         return e;
     };
     // --intended: each judged geom as the model wrote it, its pair engines, and their counts.
@@ -424,20 +431,8 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
             e.why_not = geom_label(m, ia.points ? b : a) + ": " + (ia.points ? ib.why_not : ia.why_not);
             return e;
         }
-        auto sc = std::make_shared<ExactScene>();
-        sc->P[0] = *ia.points;
-        sc->P[1] = *ib.points;
-        sc->lo[0] = sc->hi[0] = sc->lo[1] = sc->hi[1] = 1;
-        try {
-            finish_scene(*sc, geom_label(m, a) + " and " + geom_label(m, b) + " as written");
-            e.engine = open_engine(std::shared_ptr<const ExactScene>(sc),
-                                   geom_label(m, a) + " and " + geom_label(m, b) + " as written");
-            e.engine->check();
-            e.rules = e.engine->rules(opt.tolerance);
-        } catch (const InputError& x) {
-            e.engine.reset();
-            e.why_not = x.what();
-        }
+        open_pair(e, *ia.points, *ib.points, geom_label(m, a) + " and " + geom_label(m, b) + " as written",
+                  opt.tolerance);
         return e;
     };
     if (!opt.failures.empty()) make_output_dir(opt.failures);
