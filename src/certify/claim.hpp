@@ -158,6 +158,9 @@ struct DepthJudged {
     std::optional<Q> exact_squared;  // none when separated
     Vec3z exact_direction{};
     Q along;  // the squared depth along the claimed direction
+    // The depth is root_sign·√exact_squared, plus R on objects with a radius (Judged::radii):
+    // there −1 when only the balls meet (R − D).
+    int root_sign = 1;
 };
 // The exact signed distance σ·√E: the distance when apart (σ = 1), 0 touching, minus the
 // penetration depth when overlapping (σ = −1).
@@ -165,10 +168,16 @@ struct SignedDistanceJudged {
     Verdict exact = Verdict::Separated;
     Q exact_squared;  // D² apart, P² overlapping, 0 touching
     int sign() const { return exact == Verdict::Separated ? 1 : exact == Verdict::Touching ? 0 : -1; }
+    // On objects with a radius (Judged::radii) the value is s·√E − R, with s and E the hulls'
+    // (s = root_sign; the verdict is then the objects').
+    std::optional<int> root_sign;
+    int root() const { return root_sign ? *root_sign : sign(); }
 };
 struct Judged {
     bool right = false;
     int part1 = -1, part2 = -1;
+    // On objects with a radius: ρ1·r1 and ρ2·r2 at the claim (CLAIMS.md, "Objects with a radius").
+    std::optional<std::array<Q, 2>> radii;
     // Nothing for a claim with no answer.
     std::variant<std::monostate, VerdictJudged, GrowthJudged, CurvePointJudged, SwitchPointJudged, CurveJudged,
                  PlaneJudged, WitnessJudged, DistanceJudged, DepthJudged, SignedDistanceJudged>
@@ -221,9 +230,13 @@ struct Tolerance {
     // A claimed signed distance c against the exact s·√E (s = 1, 0 or −1):
     // |c − s√E| ≤ abs + rel·√E.
     bool close_signed(const Q& c, int s, const Q& E) const;
+    // A claimed value c against the exact x = s·√E + k: |c − x| ≤ abs + rel·|x|.
+    bool close_value(const Q& c, int s, const Q& E, const Q& k) const;
 };
 // The sign of a − k·√E (E ≥ 0), exactly.
 int sign_minus_sqrt(const Q& a, const Q& k, const Q& E);
+// The sign of a + b·√A + c·√E (A, E ≥ 0), exactly.
+int sign_two_sqrts(const Q& a, const Q& b, const Q& A, const Q& c, const Q& E);
 
 // The rules of one kind of object, as every front end asks them (claims.cpp's formats, the C++
 // API): a judgement with its proof, the part pair a claim names, the certificate of the proofs.
@@ -240,6 +253,8 @@ class ClaimRules {
     // depth is not defined without one.
     virtual std::optional<std::array<int, 2>> part_pair(const std::optional<std::array<int, 2>>& given,
                                                         const std::string& where) const = 0;
+    // Why claims of kind t are not judged on these objects, in a reader's words; "" when they are.
+    virtual std::string refusal(ClaimType) const { return {}; }
     // The judgements certificate of these entries (FORMAT.md: kind judgements or compound_judgements).
     virtual std::string certificate(Json entries) const = 0;
     // How often the exact fallbacks ran {distances, depths}, for JSON reports; none where they do

@@ -582,6 +582,9 @@ Run run_claims(ClaimRules& rules, const std::string& claims, const std::string& 
         ClaimReader reader(name, opt.numbers, parts);
         for (size_t i = 0; i < root.find("claims")->items.size(); ++i) {
             const TypedClaim c = reader.read(root.find("claims")->items[i], i);
+            if (const std::string why = rules.refusal(c.type); !why.empty())
+                throw InputError(name + ": claims[" + std::to_string(i) + "].kind: " + in_quotes(type_name(c.type)) +
+                                 ": " + why);
             Json o;
             o["index"] = i;
             o["kind"] = type_name(c.type);
@@ -599,6 +602,9 @@ Run run_claims(ClaimRules& rules, const std::string& claims, const std::string& 
         for (std::string t; ls >> t;) w.push_back(t);
         if (w.empty()) continue;
         const TypedClaim c = read_line(w, opt.numbers, parts != nullptr, name + ": line " + std::to_string(no));
+        if (const std::string why = rules.refusal(c.type); !why.empty())
+            throw InputError(name + ": line " + std::to_string(no) + ": " +
+                             (c.type == ClaimType::Growth ? "growth" : "curve") + ": " + why);
         Json o;
         o["line"] = no;
         // The certificate's entries are numbered by line.

@@ -121,6 +121,13 @@ bool near_proof(const PointSets& S, int i, const Q& rho, const Vec3q& x, const Q
     return near;
 }
 
+ExactDistance point_to_body(const PointSets& S, int i, const Q& rho, const Vec3q& x) {
+    const std::optional<ProvedDistance> pd =
+        proved_distance(BodyAndPoint(S, i, x), rho, Q(1), std::numeric_limits<int>::max());
+    if (!pd) throw std::logic_error("point_to_body: the distance did not close");
+    return pd->d;
+}
+
 Json verdict_proof(const Model& m, const QueryAnswer& r) {
     return Json{{"verdict", verdict_name(r.verdict)}, {"certificate", query_certificate_json(m, r)}};
 }

@@ -27,6 +27,10 @@ std::optional<bool> membership_by_points(const PointSets& S, int i, const Q& rho
 // more than abs beyond the body's extent.
 bool near_proof(const PointSets& S, int i, const Q& rho, const Vec3q& x, const Q& abs, Json* proof);
 
+// The proved distance from x to P_i(ρ) (its rounds unbounded): p1 the body's nearest point, with
+// its weights w1; p2 = x.
+ExactDistance point_to_body(const PointSets& S, int i, const Q& rho, const Vec3q& x);
+
 // A verdict with its query certificate (on the model that proves it): {"verdict", "certificate"}.
 Json verdict_proof(const Model& m, const QueryAnswer& r);
 

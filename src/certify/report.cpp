@@ -38,6 +38,23 @@ void errors_sq(Json& o, const Q& claimed, const Q& E) {
     o["abs_error_double"] = std::fabs(d);
     o["rel_error_double"] = sgn(E) ? Json(relative_sqrt_error_rn(E, claimed)) : Json(nullptr);
 }
+double surd_rn(int s, const Q& E, const Q& k) {
+    if (s == 0 || sgn(E) == 0) return to_double_rn(k);
+    return s > 0 ? sqrt_minus_rn(E, Q(-k)) : -sqrt_minus_rn(E, k);
+}
+void errors_surd(Json& o, const Q& claimed, int s, const Q& E, const Q& k, const Q& R, const std::string& hulls_key) {
+    put_exact(o, "claimed", claimed);
+    put_exact(o, hulls_key, E);
+    put_exact(o, "radius_sum", R);
+    const double x = surd_rn(s, E, k);
+    o["exact_double"] = x;
+    o["abs_error_double"] = std::fabs(surd_rn(s, E, Q(k - claimed)));
+    o["rel_error_double"] = x != 0 ? Json(std::fabs(surd_rn(s, E, Q(k - claimed))) / std::fabs(x)) : Json(nullptr);
+}
+std::string radii_text(const Judged& g) {
+    const auto& m = *g.radii;
+    return "radii " + num(m[0]) + " + " + num(m[1]);
+}
 std::string at(const TypedClaim& c) {
     const char* posed = c.pose[0] && c.pose[1] ? " with P1 and P2 at poses"
                         : c.pose[0]            ? " with P1 at a pose"

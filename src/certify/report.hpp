@@ -18,6 +18,13 @@ void errors(Json& o, const Q& claimed, const Q& exact);
 // For a value whose exact square E is known: the error of the squares exactly, and |c − √E|
 // and its relative size as MPFR-rounded doubles.
 void errors_sq(Json& o, const Q& claimed, const Q& E);
+// s·√E + k as the nearest double (MPFR; display only).
+double surd_rn(int s, const Q& E, const Q& k);
+// On objects with a radius: a claimed value against the exact s·√E + k, with the hulls' E under
+// `hulls_key` and R = ρ1r1 + ρ2r2 (the errors as MPFR-rounded doubles).
+void errors_surd(Json& o, const Q& claimed, int s, const Q& E, const Q& k, const Q& R, const std::string& hulls_key);
+// "radii ρ1r1 + ρ2r2" for a text line (Judged::radii).
+std::string radii_text(const Judged& g);
 // (ρ1, ρ2), and which objects are at poses.
 std::string at(const TypedClaim& c);
 // The claim's rho1, rho2 (exact, with doubles) and its poses.

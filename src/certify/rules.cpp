@@ -95,6 +95,23 @@ bool Tolerance::close_signed(const Q& c, int s, const Q& E) const {
     return sign_minus_sqrt(c - abs, s + rel, E) <= 0 && sign_minus_sqrt(c + abs, s - rel, E) >= 0;
 }
 
+bool Tolerance::close_value(const Q& c, int s, const Q& E, const Q& k) const {
+    // σ the sign of x, |x| = σ·s·√E + σ·k; each side of |c − x| ≤ abs + rel·|x| one sign_minus_sqrt.
+    const int sigma = sign_minus_sqrt(k, Q(-s), E);
+    const Q rs = rel * sigma;
+    return sign_minus_sqrt(c - k - abs - rs * k, s * (1 + rs), E) <= 0 &&
+           sign_minus_sqrt(k - c - abs - rs * k, -s * (1 - rs), E) <= 0;
+}
+
+int sign_two_sqrts(const Q& a, const Q& b, const Q& A, const Q& c, const Q& E) {
+    const int su = sign_minus_sqrt(a, Q(-b), A);  // u = a + b√A
+    const int sv = sgn(E) == 0 ? 0 : sgn(c);      // v = c√E
+    if (su == 0 || sv == 0 || su == sv) return su != 0 ? su : sv;
+    // Opposite signs: the larger of |u|, |v|; u² − v² = a² + b²A − c²E + 2ab√A.
+    const int t = sign_minus_sqrt(a * a + b * b * A - c * c * E, Q(-2 * a * b), A);
+    return t == 0 ? 0 : t > 0 ? su : sv;
+}
+
 namespace {
 std::string ex(const Q& q) { return to_exact_string(q); }
 Json ex3(const Vec3q& v) { return Json::array({ex(v[0]), ex(v[1]), ex(v[2])}); }

@@ -460,6 +460,7 @@ std::optional<CompactScene> compact_from_off(const std::string path[2], const Q 
 
 std::optional<CompactScene> compact_scene(const ExactScene& sc) {
     if (sc.made_of_parts()) return std::nullopt;  // a compound is not one polyhedron
+    if (sc.rounded()) return std::nullopt;        // nor is an object with a radius
     CompactScene cs;
     for (int i = 0; i < 2; ++i) {
         auto p = int_points(sc.P[i].points);

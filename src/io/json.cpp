@@ -26,6 +26,8 @@ Json scene_json(const ExactScene& sc) {
         s[names[i]] =
             Json{{"vertices", verts},
                  {"seed", Json::array({to_exact_string(sd[0]), to_exact_string(sd[1]), to_exact_string(sd[2])})}};
+        // Objects with a radius carry it (both, on a scene where either has one > 0).
+        if (sc.rounded()) s[names[i]]["radius"] = to_exact_string(sc.P[i].radius);
     }
     s["I1"] = Json::array({to_exact_string(sc.lo[0]), to_exact_string(sc.hi[0])});
     s["I2"] = Json::array({to_exact_string(sc.lo[1]), to_exact_string(sc.hi[1])});

@@ -149,6 +149,72 @@ ExactScene parse_scene_text(const std::string& text, const std::string& name, co
                 r.fail(where, "missing field \"vertices\" (or \"mesh\", \"off\")");
             }
         };
+        // A shorthand in the object's frame (CLAIMS.md, "Objects with a radius"): "sphere": r (one
+        // point with radius r); "capsule": {"radius", "half_length"} (the segment from (0, 0, −h)
+        // to (0, 0, h) with radius r); "box": [hx, hy, hz] (its eight corners; a "radius" beside it
+        // rounds it). False when the object has none.
+        auto shape = [&](const Reader& rd, const JNode& o, const std::string& where, PolyInput& into) {
+            const JNode *sphere = o.find("sphere"), *capsule = o.find("capsule"), *box = o.find("box");
+            if (!sphere && !capsule && !box) return false;
+            if ((sphere != nullptr) + (capsule != nullptr) + (box != nullptr) + (o.find("vertices") != nullptr) +
+                    (o.find("mesh") != nullptr) + (o.find("off") != nullptr) >
+                1)
+                r.fail(where, "give one of \"vertices\", \"mesh\", \"off\", \"sphere\", \"capsule\" and \"box\"");
+            if (o.find("parts_from_groups"))
+                r.fail(where + ".parts_from_groups", "parts from groups need an OBJ \"mesh\"");
+            const Q zero(0);
+            if (sphere) {
+                if (o.find("radius")) r.fail(where + ".radius", "a sphere's radius is its \"sphere\" value");
+                into.radius = rd.number(*sphere, where + ".sphere");
+                into.radius_given = true;
+                if (sgn(into.radius) <= 0)
+                    r.fail(where + ".sphere",
+                           "a sphere's radius is > 0 (got " + in_quotes(to_exact_string(into.radius)) + ")");
+                into.points = {Vec3q{zero, zero, zero}};
+            } else if (capsule) {
+                const std::string w = where + ".capsule";
+                if (o.find("radius")) r.fail(where + ".radius", "a capsule's radius is its \"capsule\"'s \"radius\"");
+                if (capsule->kind != JNode::Object) r.fail(w, "expected {\"radius\": r, \"half_length\": h}");
+                only(*capsule, w, {"radius", "half_length"});
+                const JNode *rn = capsule->find("radius"), *hn = capsule->find("half_length");
+                if (!rn) r.fail(w, "missing field \"radius\"");
+                if (!hn) r.fail(w, "missing field \"half_length\"");
+                into.radius = rd.number(*rn, w + ".radius");
+                into.radius_given = true;
+                if (sgn(into.radius) <= 0)
+                    r.fail(w + ".radius",
+                           "a capsule's radius is > 0 (got " + in_quotes(to_exact_string(into.radius)) + ")");
+                const Q h = rd.number(*hn, w + ".half_length");
+                if (sgn(h) < 0)
+                    r.fail(w + ".half_length", "a half-length is >= 0 (got " + in_quotes(to_exact_string(h)) + ")");
+                into.points = {Vec3q{zero, zero, Q(-h)}};
+                if (sgn(h) > 0) into.points.push_back(Vec3q{zero, zero, h});
+            } else {
+                const std::string w = where + ".box";
+                if (box->kind != JNode::Array || box->items.size() != 3)
+                    r.fail(w, "expected the half-extents [hx, hy, hz]");
+                Q e[3];
+                for (size_t k = 0; k < 3; ++k) {
+                    e[k] = rd.number(box->items[k], w + "[" + std::to_string(k) + "]");
+                    if (sgn(e[k]) <= 0)
+                        r.fail(w + "[" + std::to_string(k) + "]",
+                               "a half-extent is > 0 (got " + in_quotes(to_exact_string(e[k])) + ")");
+                }
+                for (int c = 0; c < 8; ++c)
+                    into.points.push_back(
+                        Vec3q{c & 1 ? e[0] : Q(-e[0]), c & 2 ? e[1] : Q(-e[1]), c & 4 ? e[2] : Q(-e[2])});
+            }
+            return true;
+        };
+        // An object's "radius" beside its points (its shorthand's, for a sphere or a capsule).
+        auto radius = [&](const Reader& rd, const JNode& o, const std::string& where, PolyInput& into) {
+            const JNode* n = o.find("radius");
+            if (!n) return;
+            into.radius = rd.number(*n, where + ".radius");
+            into.radius_given = true;
+            if (sgn(into.radius) < 0)
+                r.fail(where + ".radius", "a radius is >= 0 (got " + in_quotes(to_exact_string(into.radius)) + ")");
+        };
         if (const JNode* parts = p->find("parts")) {
             only(*p, pname[i], {"parts", "seed", "pose", "numbers"});
             const Reader object_reader = reading(*p, pname[i], r);
@@ -193,7 +259,9 @@ ExactScene parse_scene_text(const std::string& text, const std::string& name, co
                 in.note += " (and " + std::to_string(merged - 1) + " more " + (merged == 2 ? "part" : "parts") +
                            " of " + pname[i] + " so read)";
         } else {
-            only(*p, pname[i], {"vertices", "off", "mesh", "seed", "parts_from_groups", "pose", "numbers"});
+            only(*p, pname[i],
+                 {"vertices", "off", "mesh", "sphere", "capsule", "box", "radius", "seed", "parts_from_groups", "pose",
+                  "numbers"});
             // An OBJ "mesh" as a compound: --parts-from-groups (which leaves other meshes, having no
             // groups, one convex object each), or this object's "parts_from_groups".
             const JNode* mesh = p->find("mesh");
@@ -218,7 +286,9 @@ ExactScene parse_scene_text(const std::string& text, const std::string& name, co
                     r.fail(w, "parts from groups need an OBJ \"mesh\" (" + in_quotes(mesh->text) +
                                   ": OFF, PLY and STL files have no groups)");
             }
-            body(reading(*p, pname[i], r), *p, pname[i], groups, in);
+            const Reader rd = reading(*p, pname[i], r);
+            if (!shape(rd, *p, pname[i], in)) body(rd, *p, pname[i], groups, in);
+            radius(rd, *p, pname[i], in);
         }
         if (const JNode* s = p->find("seed")) {
             in.seed = r.point(*s, std::string(pname[i]) + ".seed");
@@ -337,11 +407,17 @@ void check_scene(const ExactScene& sc, const std::string& name) {
                 throw InputError(name + ": " + part_label(i, sc.P[i], k) + ": fewer than 4 vertices (" +
                                  std::to_string(sc.P[i].parts[k].size()) + ")");
         const size_t n = sc.P[i].points.size();
-        if (n < 4) throw InputError(name + ": " + pname[i] + ": fewer than 4 vertices (" + std::to_string(n) + ")");
+        // With a radius > 0 one point will do (a sphere); without, the hull must have an interior.
+        if (n < 1 || (n < 4 && sgn(sc.P[i].radius) <= 0))
+            throw InputError(
+                name + ": " + pname[i] + ": fewer than 4 vertices (" + std::to_string(n) + ")" +
+                (sc.P[i].radius_given && n > 0 ? " and no radius > 0 (an object with one may have 1)" : ""));
         if (n > kMaxPoints)
             throw InputError(name + ": " + pname[i] + ": more than " + std::to_string(kMaxPoints) +
                              " points (the limit)");
     }
+    if (sc.rounded() && sc.made_of_parts())
+        throw InputError(name + ": an object made of parts beside an object with a radius is not judged yet");
     for (int i = 0; i < 2; ++i) {
         if (sgn(sc.lo[i]) <= 0)
             throw InputError(name + ": " + iname[i] + ": lo must be > 0 (got " + in_quotes(to_exact_string(sc.lo[i])) +

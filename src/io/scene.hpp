@@ -19,6 +19,11 @@ struct PolyInput {
     // The parts' names (a scene's part "name", an OBJ group's name): empty when no part has one,
     // else one a part, "" for a part without one. Distinct within the object.
     std::vector<std::string> part_names;
+    // The radius r >= 0 (CLAIMS.md, "Objects with a radius"): the object is every point within r of
+    // the hull of its points. radius_given: the scene gave one (a "radius", or a "sphere" or
+    // "capsule" shorthand, which carry theirs), even 0.
+    Q radius = 0;
+    bool radius_given = false;
     // A remark for the user, said once on stderr by the command (an OBJ mesh with several groups
     // read as one convex object); empty when there is none.
     std::string note;
@@ -48,6 +53,8 @@ struct ExactScene {
     std::array<long, 3> inexact_by_reading{};
     // An object given as parts (even of one): the scene is answered as objects made of parts.
     bool made_of_parts() const { return !P[0].parts.empty() || !P[1].parts.empty(); }
+    // An object with a radius > 0: the scene is answered by the rules of objects with a radius.
+    bool rounded() const { return sgn(P[0].radius) > 0 || sgn(P[1].radius) > 0; }
 };
 
 struct ReadOptions {

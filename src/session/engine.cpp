@@ -1,8 +1,10 @@
 #include "session/engine.hpp"
 
 #include "certify/certificate.hpp"
+#include "certify/rounded.hpp"
 #include "geometry/measures.hpp"
 
+#include <cmath>
 #include <optional>
 #include <stdexcept>
 
@@ -154,9 +156,77 @@ class PartsEngine final : public SceneEngine {
     std::optional<CompoundSession> session_;
 };
 
+// Two convex objects with radii (not both 0): verdicts and claims at any pair, from the hulls'
+// proved measures (rounded.hpp). Their touching set is curved: no curve, partition, region or
+// golden data yet, each refused in one line.
+class RoundedEngine final : public SceneEngine {
+  public:
+    explicit RoundedEngine(SceneSource src) : exact_(std::move(src.exact)), name_(std::move(src.name)) {}
+    void check() override { points(); }
+    std::shared_ptr<const CompactScene> compact() override { return nullptr; }
+    void prepare() override { points(); }
+    bool convex() const override { return false; }
+    Verdict verdict(const Q& r1, const Q& r2) override {
+        const RoundedPoints& S = points();
+        const auto [rank, flat] = S.difference_span(S);
+        return rounded_verdict(hull_measure(S, rank, flat, r1, r2),
+                               r1 * exact_->P[0].radius + r2 * exact_->P[1].radius);
+    }
+    scalecert::QueryResult query(const Q& r1, const Q& r2) override {
+        return {verdict(r1, r2), std::nullopt, std::nullopt};
+    }
+    std::string verdict_document(const Q&, const Q&) override { throw InputError(refused("a query's certificate")); }
+    std::string partition_document() override { throw InputError(refused("the partition")); }
+    std::vector<Verdict> classify(const std::vector<double>& rho1, const std::vector<double>& rho2, unsigned,
+                                  const std::string& source, std::optional<StageCounts>*) override {
+        std::vector<Verdict> out;
+        out.reserve(rho1.size());
+        for (size_t k = 0; k < rho1.size(); ++k) {
+            if (!(std::isfinite(rho1[k]) && rho1[k] > 0 && std::isfinite(rho2[k]) && rho2[k] > 0))
+                throw InputError(source + ": pair " + std::to_string(k) + ": scalings must be finite and > 0");
+            out.push_back(verdict(exact_from_double(rho1[k]), exact_from_double(rho2[k])));
+        }
+        return out;
+    }
+    std::pair<Q, Q> plane_extents(const Vec3q&, const Q&, const Q&) override {
+        throw InputError(name_ +
+                         ": objects with a radius reach past their hulls by ρ·r·|n| along a normal n, which is "
+                         "not rational: certify-fp's separating_plane judges planes on them");
+    }
+    std::unique_ptr<ClaimRules> rules(const Tolerance& tolerance) override {
+        points();
+        return std::make_unique<RoundedRules>(exact_, points_, tolerance);
+    }
+    GoldenAnswers golden(const GoldenPoints&) override { throw InputError(refused("golden data")); }
+    CompoundSession& region() override { throw InputError(refused("the region")); }
+    Session& convex_session(const std::string&) override {
+        throw InputError(refused("the touching curve (with its segments and the grid search)"));
+    }
+    const scalecert::Curve& curve(const std::string&) override { throw InputError(refused("the touching curve")); }
+
+  private:
+    const RoundedPoints& points() {
+        if (!points_) {
+            auto S = std::make_shared<const RoundedPoints>(*exact_, name_);
+            check_rounded(*exact_, *S, name_);
+            points_ = std::move(S);
+        }
+        return *points_;
+    }
+    std::string refused(const std::string& what) const {
+        return name_ + ": " + what +
+               " is not built for objects with a radius (their touching set is curved); query, classify and "
+               "certify-fp answer at any pair";
+    }
+    std::shared_ptr<const ExactScene> exact_;
+    std::string name_;
+    std::shared_ptr<const RoundedPoints> points_;
+};
+
 }  // namespace
 
 std::unique_ptr<SceneEngine> open_engine(SceneSource source) {
+    if (source.exact && source.exact->rounded()) return std::make_unique<RoundedEngine>(std::move(source));
     if (source.exact && source.exact->made_of_parts()) return std::make_unique<PartsEngine>(std::move(source));
     return std::make_unique<ConvexEngine>(std::move(source));
 }

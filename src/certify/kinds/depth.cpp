@@ -65,14 +65,28 @@ void describe(const TypedClaim& c, const DepthJudged& d, const Judged& g, const 
                (of.empty() ? "pair is" : "parts are") + " separated";
         return;
     }
-    errors_sq(o, c.value, *d.exact_squared);
+    if (g.radii) {
+        // R + s·√E: the hulls' depth plus R (s = 1), R (0), or R less the hulls' distance (−1).
+        const Q R = (*g.radii)[0] + (*g.radii)[1];
+        errors_surd(o, c.value, d.root_sign, *d.exact_squared, R, R,
+                    d.root_sign < 0 ? "hulls_squared_distance" : "hulls_squared_depth");
+        text = "penetration depth at " + at(c) + ": claimed " + num(c.value) + ", exact ~" +
+               dbl(surd_rn(d.root_sign, *d.exact_squared, R)) + " (the " + radii_text(g) +
+               (d.root_sign > 0   ? " plus the hulls' depth, squared " + num(*d.exact_squared)
+                : d.root_sign < 0 ? " less the hulls' distance, squared " + num(*d.exact_squared)
+                                  : ": the hulls touch") +
+               ")";
+    } else {
+        errors_sq(o, c.value, *d.exact_squared);
+        text = "penetration depth" + of + " at " + at(c) + ": claimed " + num(c.value) + ", exact squared " +
+               num(*d.exact_squared) + " (depth ~" + dbl(sqrt_minus_rn(*d.exact_squared, Q(0))) + ")";
+    }
     o["exact_direction"] =
         Json::array({d.exact_direction[0].get_str(), d.exact_direction[1].get_str(), d.exact_direction[2].get_str()});
     o["value_right"] = *d.value_right;
-    text = "penetration depth" + of + " at " + at(c) + ": claimed " + num(c.value) + ", exact squared " +
-           num(*d.exact_squared) + " (depth ~" + dbl(sqrt_minus_rn(*d.exact_squared, Q(0))) + ")";
     if (c.direction) {
-        put_exact(o, "depth_squared_along_direction", d.along);
+        // On objects with a radius, the hulls' (signed); the objects part after its root plus R.
+        put_exact(o, g.radii ? "hulls_depth_squared_along_direction" : "depth_squared_along_direction", d.along);
         o["direction_right"] = *d.direction_right;
         if (*d.value_right && !*d.direction_right) text += ", but the direction is wrong";
         if (!*d.value_right && !*d.direction_right) text += ", and the direction is wrong too";

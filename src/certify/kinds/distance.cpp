@@ -71,14 +71,26 @@ void PartsRules::judge_distance(const TypedClaim& c, Judged& g, Json* p) {
 void describe(const TypedClaim& c, const DistanceJudged& d, const Judged& g, const ExactScene* parts, Json& o,
               std::string& text) {
     put_rhos(o, c);
-    errors_sq(o, c.value, d.exact_squared);
-    put_point(o, "exact_closest_P1", d.exact_p1);
-    put_point(o, "exact_closest_P2", d.exact_p2);
+    if (g.radii) {
+        // √E − R apart (E the hulls' squared distance), else 0.
+        const Q R = (*g.radii)[0] + (*g.radii)[1];
+        const bool apart = d.exact_squared > R * R;
+        errors_surd(o, c.value, apart ? 1 : 0, d.exact_squared, apart ? Q(-R) : Q(0), R, "hulls_squared_distance");
+        put_point(o, "hulls_closest_P1", d.exact_p1);
+        put_point(o, "hulls_closest_P2", d.exact_p2);
+        text = "distance at " + at(c) + ": claimed " + num(c.value) + ", exact ~" +
+               dbl(surd_rn(apart ? 1 : 0, d.exact_squared, apart ? Q(-R) : Q(0))) + " (the hulls' squared distance " +
+               num(d.exact_squared) + " less the " + radii_text(g) + ")";
+    } else {
+        errors_sq(o, c.value, d.exact_squared);
+        put_point(o, "exact_closest_P1", d.exact_p1);
+        put_point(o, "exact_closest_P2", d.exact_p2);
+        text = "distance at " + at(c) + ": claimed " + num(c.value) + ", exact squared " + num(d.exact_squared) +
+               " (distance ~" + dbl(sqrt_minus_rn(d.exact_squared, Q(0))) +
+               (parts ? ", " + parts_named(*parts, g.part1, g.part2) : std::string()) + ")";
+    }
     if (parts) put_part_pair(o, "exact_pair", *parts, g.part1, g.part2);
     o["value_right"] = d.value_right;
-    text = "distance at " + at(c) + ": claimed " + num(c.value) + ", exact squared " + num(d.exact_squared) +
-           " (distance ~" + dbl(sqrt_minus_rn(d.exact_squared, Q(0))) +
-           (parts ? ", " + parts_named(*parts, g.part1, g.part2) : std::string()) + ")";
     if (c.closest) {
         if (parts) {
             o["closest_in_P1_part"] = part_or_false(d.in_part1);

@@ -37,8 +37,23 @@ void PartsRules::judge_plane(const TypedClaim& c, Judged& g, Json* p) {
     if (p) *p = Json::object();
 }
 
-void describe(const TypedClaim& c, const PlaneJudged& d, const Judged&, const ExactScene*, Json& o, std::string& text) {
+void describe(const TypedClaim& c, const PlaneJudged& d, const Judged& g, const ExactScene*, Json& o,
+              std::string& text) {
     put_rhos(o, c);
+    if (g.radii) {
+        // The hulls' extents; the objects reach ρr·|n| past them (|n| = √N).
+        const Q N = c.normal[0] * c.normal[0] + c.normal[1] * c.normal[1] + c.normal[2] * c.normal[2];
+        put_exact(o, "hulls_max_over_P1", d.c1);
+        put_exact(o, "hulls_min_over_P2", d.c2);
+        const double r1 = sqrt_minus_rn((*g.radii)[0] * (*g.radii)[0] * N, Q(0)),
+                     r2 = sqrt_minus_rn((*g.radii)[1] * (*g.radii)[1] * N, Q(0));
+        o["P1_beyond_hull_double"] = r1;
+        o["P2_beyond_hull_double"] = r2;
+        text = "plane at " + at(c) + ": P1 reaches " + num(d.c1) + " + ~" + dbl(r1) + ", P2 starts at " + num(d.c2) +
+               " - ~" + dbl(r2) + " (" + radii_text(g) + " times |n|)";
+        if (c.offset) text += ", offset " + num(*c.offset);
+        return;
+    }
     put_exact(o, "max_over_P1", d.c1);  // P1(ρ1) ⊆ {n·x ≤ c1}
     put_exact(o, "min_over_P2", d.c2);  // P2(ρ2) ⊆ {n·x ≥ c2}
     put_exact(o, "gap", d.c2 - d.c1);

@@ -42,9 +42,28 @@ void ConvexRules::Impl::signed_distance(const TypedClaim& c, Judged& g, Proof* p
     g.right = signed_distance_right(c, d.sign(), d.exact_squared, tol);
 }
 
-void describe(const TypedClaim& c, const SignedDistanceJudged& d, const Judged&, const ExactScene*, Json& o,
+void describe(const TypedClaim& c, const SignedDistanceJudged& d, const Judged& g, const ExactScene*, Json& o,
               std::string& text) {
     put_rhos(o, c);
+    if (g.radii) {
+        // s·√E − R: the hulls' signed distance less the radii.
+        const Q R = (*g.radii)[0] + (*g.radii)[1];
+        o["bound"] = bound_key(c.bound);
+        errors_surd(o, c.value, d.root(), d.exact_squared, Q(-R), R, "hulls_signed_squared");
+        o["hulls_sign"] = d.root();
+        o["exact_verdict"] = verdict_name(d.exact);
+        const std::string claimed = c.bound == TypedClaim::Bound::Value     ? "claimed " + num(c.value)
+                                    : c.bound == TypedClaim::Bound::AtLeast ? "claimed at least " + num(c.value)
+                                                                            : "claimed below " + num(c.value);
+        text = "signed distance at " + at(c) + ": " + claimed + ", exact ~" +
+               dbl(surd_rn(d.root(), d.exact_squared, Q(-R)), 17) + " (" + verdict_name(d.exact) + "; the hulls' " +
+               (d.root() > 0   ? "distance"
+                : d.root() < 0 ? "minus their depth"
+                               : "0 (touching)") +
+               (d.root() != 0 ? ", squared " + num(d.exact_squared) : std::string()) + ", less the " + radii_text(g) +
+               ")";
+        return;
+    }
     o["bound"] = bound_key(c.bound);
     put_exact(o, "claimed", c.value);
     o["exact_verdict"] = verdict_name(d.exact);

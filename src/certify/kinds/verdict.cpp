@@ -54,7 +54,8 @@ void describe(const TypedClaim& c, const VerdictJudged& d, const Judged& g, cons
     } else {
         o["claimed"] = claimed_name(c.verdict);
         o["exact"] = verdict_name(d.exact);
-        if (!c.posed()) put_exact(o, "rho2_minus_curve", d.rho2_minus_curve);  // no curve at a pose
+        // No curve at a pose, nor on objects with a radius.
+        if (!c.posed() && !g.radii) put_exact(o, "rho2_minus_curve", d.rho2_minus_curve);
     }
     text = "verdict at " + at(c) + ": claimed " + claimed_name(c.verdict) + ", exact " + verdict_name(d.exact);
 }
@@ -66,8 +67,8 @@ void describe_line(const TypedClaim& c, const VerdictJudged& d, const Judged& g,
     put_exact(o, "rho1", c.rho1);
     put_exact(o, "rho2", c.rho2);
     o["exact"] = e;
-    if (parts) {
-        put_part_pair(o, "pair", *parts, g.part1, g.part2);
+    if (parts || g.radii) {
+        if (parts) put_part_pair(o, "pair", *parts, g.part1, g.part2);
         text = "(" + num(c.rho1, 17) + ", " + num(c.rho2, 17) + ") claimed " + v + ": exact " + e;
     } else {
         put_exact(o, "rho2_minus_curve", d.rho2_minus_curve);

@@ -1,0 +1,90 @@
+// Objects with a radius (CLAIMS.md, "Objects with a radius"): each object is every point within
+// ρr of its scaled hull C(ρ), so the pair's signed distance is the hulls' signed distance s·√E
+// (measures.hpp) minus R = ρ1 r1 + ρ2 r2, and every claim kind at a pair is judged from the hulls'
+// proved measures and R, in squares with signs. The hulls may be flat: a sphere's is one point,
+// a capsule's two.
+#pragma once
+#include "certify/claim.hpp"
+#include "geometry/measures.hpp"
+#include "geometry/polyhedron.hpp"
+#include "io/scene.hpp"
+
+#include <memory>
+#include <optional>
+
+namespace scalecert::internal {
+
+// The points of two objects as the measures see them: an object whose points span 3 dimensions
+// is held as its exact polyhedron (support queries climb it), any other (a point, a segment, a
+// flat polygon) as its points, every one scanned.
+class RoundedPoints final : public PointSets {
+  public:
+    // Throws InputError after `name` when an object without a radius is flat.
+    RoundedPoints(const ExactScene& sc, const std::string& name);
+    Vec3q point(int i, int k) const override { return obj_[i].pts[static_cast<size_t>(k)]; }
+    D3 dpoint(int i, int k) const override { return obj_[i].dpts[static_cast<size_t>(k)]; }
+    const Vec3q& seed(int i) const override { return obj_[i].seed; }
+    const Z& scale(int i) const override { return obj_[i].scale; }
+    Vec3z zpoint(int i, int k) const override { return obj_[i].zpts[static_cast<size_t>(k)]; }
+    int argmax(int i, const Vec3z& n) const override;
+    int dargmax(int i, const D3& d) const override;
+    // The dimension of the hulls' Minkowski difference C1 − C2 in S (these points, or them at
+    // poses: the sum of the hulls' spans), and for a flat one a nonzero integer vector orthogonal to it.
+    std::pair<int, Vec3z> difference_span(const PointSets& S) const;
+    // Whether x is strictly inside object i's hull (false for a flat one).
+    bool strictly_inside(int i, const Vec3q& x) const;
+    // For x strictly inside object i's hull: Polyhedron::interior_weights.
+    std::vector<std::pair<int, Q>> interior_weights(int i, const Vec3q& x) const;
+
+  private:
+    struct Object {
+        std::vector<Vec3q> pts;
+        std::vector<Vec3z> zpts;
+        std::vector<D3> dpts;
+        Z scale;
+        Vec3q seed;
+        std::optional<Polyhedron> hull;  // when the points span 3 dimensions
+    };
+    Object obj_[2];
+    int rank_ = 0;
+    Vec3z flat_normal_{};
+};
+
+// The hulls' measure at (ρ1, ρ2) on S (RoundedPoints, or it at poses): apart, the proved
+// distance; meeting with C1 − C2 of full dimension, the depth (measured_depth); meeting with a
+// flat difference, touching (depth 0: `flat` is orthogonal to it, and h_M(±flat) = 0).
+MeasuredDepth hull_measure(const PointSets& S, int difference_rank, const Vec3z& flat, const Q& rho1, const Q& rho2);
+
+// The pair's state from the hulls' measure and R: hulls apart by √E, separated when E > R²,
+// touching when E = R², else overlapping; hulls that meet overlap when R > 0.
+Verdict rounded_verdict(const MeasuredDepth& hulls, const Q& R);
+// The hulls' signed distance as s·√E (s = 1 apart, 0 touching, −1 overlapping).
+std::pair<int, Q> hull_signed(const MeasuredDepth& hulls);
+
+// Checks an object with a radius the engine will judge: its seed in the interior of the object
+// (within less than r of the hull; without a radius, strictly inside its hull). InputError after `name`.
+void check_rounded(const ExactScene& sc, const RoundedPoints& S, const std::string& name);
+
+// The rules on two convex objects with radii (not both 0): the kinds at a pair and at poses
+// (verdict, separating_plane, witness_point, distance, penetration_depth, signed_distance).
+class RoundedRules final : public ClaimRules {
+  public:
+    RoundedRules(std::shared_ptr<const ExactScene> scene, std::shared_ptr<const RoundedPoints> points,
+                 const Tolerance& tolerance);
+    ~RoundedRules() override;
+    Judged judge(const TypedClaim& c, Proof* proof = nullptr) override;
+    const ExactScene* parts() const override { return nullptr; }
+    std::optional<std::array<int, 2>> part_pair(const std::optional<std::array<int, 2>>& given,
+                                                const std::string& where) const override;
+    std::string certificate(Json entries) const override;
+    std::string refusal(ClaimType t) const override;
+
+  private:
+    std::shared_ptr<const ExactScene> scene_;
+    std::shared_ptr<const RoundedPoints> points_;
+};
+
+// What the claim kinds of the curve say on objects with a radius (refusal's words).
+extern const char* const kRoundedKinds;
+
+}  // namespace scalecert::internal
