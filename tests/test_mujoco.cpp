@@ -177,9 +177,15 @@ BOOST_AUTO_TEST_CASE(boxes_at_states_judged_by_hand) {
     // The other judged pairs (floor-tet, cube-tet) are far apart at every state: right.
     BOOST_TEST(j["summary"]["wrong_pairs"] == wrong_pairs);
     BOOST_TEST(r.status == (wrong_pairs > 0 ? 1 : 0));
-    // The sphere is counted and named, never judged.
-    BOOST_TEST(j["summary"]["pairs_unjudged"] == 3);
-    BOOST_TEST(j["unjudged"][0]["why"] == "sphere: objects with a radius are not judged yet");
+    // The sphere of radius 1/4 at (−5, 0, 0) is judged too: 3.75 or more from the floor, the cube
+    // and the tet at every state, no contact, right.
+    BOOST_TEST(j["summary"]["pairs_unjudged"] == 0);
+    for (const auto& fr : j["frames"])
+        for (const auto& p : fr["pairs"])
+            if (p["names"][0] == "ball" || p["names"][1] == "ball") {
+                BOOST_TEST(p["verdict"]["exact"] == "separated");
+                BOOST_TEST(p["verdict"]["right"] == true);
+            }
     // Within --abs-tolerance 1e-9 a contact at S = 0 is right (0 < 0 + 1e-9), as is a dist within it.
     const Run t = run("mujoco " + kData + "boxes.xml --qpos " + kData + "boxes.qpos --json --abs-tolerance 1e-9");
     const auto k = nlohmann::json::parse(t.out);
@@ -460,4 +466,43 @@ BOOST_AUTO_TEST_CASE(planes_at_states_by_hand) {
     for (const auto& p : k["frames"][2]["pairs"])
         if (p["names"] == nlohmann::json::array({"floor", "cube"})) BOOST_TEST(p["verdict"]["right"] == true);
     BOOST_TEST(j["summary"]["pairs_unjudged"] == 0);  // planes are judged now
+}
+
+BOOST_AUTO_TEST_CASE(spheres_and_capsules_at_states_by_hand) {
+    // rounded.xml: the plane z = 0, the box [5/2, 7/2] x [-1/2, 1/2] x [0, 1], a sphere of radius
+    // 1/4 and a capsule of radius 1/8, half-length 1/2, upright (rounded.qpos, every number
+    // dyadic). State 0: the ball rests on the floor, S = 1/4 − 1/4 = 0; MuJoCo reports a contact at
+    // dist 0 with margin 0, which claims S < 0: wrong (right within --abs-tolerance, below).
+    // State 1: the ball's centre at 3/16, S = −1/16, its normal the plane's (0, 0, 1); the rod
+    // over the block, its axis's lower end at 1.609375 − 1/2 = 1 + 7/64, S = 7/64 − 1/8 = −1/64.
+    // State 2: the ball's centre 1/4 from the rod's axis, S = 1/4 − 1/4 − 1/8 = −1/8, along x.
+    // State 3: 1/2 from it, S = 1/8: no contact, right.
+    const Run r = run("mujoco " + kData + "rounded.xml --qpos " + kData + "rounded.qpos --json");
+    BOOST_TEST(r.status == 1);
+    const auto j = nlohmann::json::parse(r.out);
+    BOOST_TEST(j["summary"]["pairs_unjudged"] == 0);
+    BOOST_TEST(j["summary"]["wrong_pairs"] == 1);
+    auto pair = [&](size_t f, const std::string& a, const std::string& b) {
+        for (const auto& p : j["frames"][f]["pairs"])
+            if ((p["names"][0] == a && p["names"][1] == b) || (p["names"][0] == b && p["names"][1] == a)) return p;
+        BOOST_FAIL("no pair " + a + "-" + b);
+        return nlohmann::json();
+    };
+    BOOST_TEST(pair(0, "floor", "ball")["verdict"]["exact"] == "touching");
+    BOOST_TEST(pair(0, "floor", "ball")["verdict"]["right"] == false);
+    const auto b1 = pair(1, "floor", "ball");
+    BOOST_TEST(b1["signed_distance"]["exact"] == "-0.0625");
+    BOOST_TEST(b1["dist"]["right"] == true);
+    BOOST_TEST(b1["normal"]["right"] == true);
+    const auto r1 = pair(1, "rod", "block");
+    BOOST_TEST(r1["signed_distance"]["exact"] == "-0.015625");
+    BOOST_TEST(r1["signed_distance"]["radii"] == "1/8");
+    BOOST_TEST(r1["dist"]["right"] == true);
+    BOOST_TEST(r1["pos"]["right"] == true);
+    const auto r2 = pair(2, "ball", "rod");
+    BOOST_TEST(r2["signed_distance"]["exact"] == "-0.125");
+    BOOST_TEST(r2["normal"]["right"] == true);
+    BOOST_TEST(pair(3, "ball", "rod")["verdict"]["exact"] == "separated");
+    BOOST_TEST(run("mujoco " + kData + "rounded.xml --qpos " + kData + "rounded.qpos --abs-tolerance 1e-9").status ==
+               0);
 }

@@ -161,7 +161,7 @@ BOOST_AUTO_TEST_CASE(capsules_by_hand) {
 // and moved, every value unchanged.
 BOOST_AUTO_TEST_CASE(rounded_box_resting_on_a_box) {
     const std::string scene = R"({"P1": {"box": [1, 1, 1], "radius": "1/2"},
-        "P2": {"vertices": [[-1,-1,"3/2"],[1,-1,"3/2"],[-1,1,"3/2"],[1,1,"3/2"],[-1,-1,"7/2"],[1,-1,"7/2"],[-1,1,"7/2"],[1,1,"7/2"]]}})";
+        "P2": {"box": [1, 1, 1], "pose": [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, "5/2"]]}})";
     Case k = open_text(scene);
     BOOST_TEST(verdict_of(k, q(1), q(1)) == scalecert::Verdict::Touching);
     BOOST_TEST(verdict_of(k, q(1), q(1, 2)) == scalecert::Verdict::Separated);

@@ -977,10 +977,10 @@ def test_judge_mujoco_and_the_testing_helpers(tmp_path):
         scalecert.judge_mujoco(model, failures="")
     with pytest.raises(scalecert.InputError, match="scene: expected a scalecert.Scene"):
         sct.assert_claims(None, "1 1 separated\n")
-    # A gate that judged nothing fails: a model of two spheres (nothing judged yet), no claims.
-    spheres = tmp_path / "spheres.xml"
-    spheres.write_text('<mujoco><worldbody><geom type="sphere" size="1"/><body><freejoint/>'
-                       '<geom type="sphere" size="1"/></body></worldbody></mujoco>')
+    # A gate that judged nothing fails: a model of two cylinders (not judged), no claims.
+    spheres = tmp_path / "cylinders.xml"
+    spheres.write_text('<mujoco><worldbody><geom type="cylinder" size="1 1"/><body><freejoint/>'
+                       '<geom type="cylinder" size="1 1"/></body></worldbody></mujoco>')
     with pytest.raises(AssertionError, match="nothing of the model was judged"):
         sct.assert_mujoco(str(spheres))
     with pytest.raises(AssertionError, match="no claims to judge"):

@@ -29,7 +29,9 @@ constexpr int kDisableContact = 1 << 4;       // mjDSBL_CONTACT
 constexpr int kDisableConstraint = 1 << 0;    // mjDSBL_CONSTRAINT: mj_collision runs no collision either
 constexpr int kEnableOverride = 1 << 0;       // mjENBL_OVERRIDE
 
-bool judged_type(int type) { return type == kBox || type == kMesh; }
+bool judged_type(int type) { return type == kBox || type == kMesh || type == kSphere || type == kCapsule; }
+// A sphere's and a capsule's radius (size[0]); 0 for a polyhedron.
+double geom_radius(const Geom& g) { return g.type == kSphere || g.type == kCapsule ? g.size[0] : 0; }
 
 // A number written so that a JSON reader reading doubles (the default) gets d exactly.
 Json number(double d) { return std::isfinite(d) ? Json(d) : Json(nullptr); }
@@ -174,7 +176,15 @@ namespace {
 // The geom's points in its own frame, exactly as MuJoCo held them.
 PolyInput geom_points(const Geom& g) {
     PolyInput in;
-    if (g.type == kBox) {
+    if (g.type == kSphere || g.type == kCapsule) {
+        // The centre, or the axis from (0, 0, −h) to (0, 0, h), with the radius (CLAIMS.md,
+        // "Objects with a radius").
+        in.radius = exact_from_double(g.size[0]);
+        in.radius_given = true;
+        const Q h = g.type == kCapsule ? exact_from_double(g.size[1]) : Q(0);
+        in.points.push_back({Q(0), Q(0), Q(-h)});
+        if (sgn(h) > 0) in.points.push_back({Q(0), Q(0), h});
+    } else if (g.type == kBox) {
         for (int sx : {-1, 1})
             for (int sy : {-1, 1})
                 for (int sz : {-1, 1})
@@ -189,7 +199,11 @@ PolyInput geom_points(const Geom& g) {
 }
 Json geom_vertices_json(const Geom& g) {
     Json v = Json::array();
-    if (g.type == kBox) {
+    if (g.type == kSphere || g.type == kCapsule) {
+        const double h = g.type == kCapsule ? g.size[1] : 0;
+        v.push_back(Json::array({hex(0), hex(0), hex(-h)}));
+        if (h > 0) v.push_back(Json::array({hex(0), hex(0), hex(h)}));
+    } else if (g.type == kBox) {
         for (int sx : {-1, 1})
             for (int sy : {-1, 1})
                 for (int sz : {-1, 1})
@@ -235,8 +249,8 @@ struct Intended {
 };
 Intended intended_geom(const Geom& g, const std::vector<MeshSource>& sources) {
     Intended out;
-    if (g.type == kBox) {
-        out.points = geom_points(g);
+    if (g.type == kBox || g.type == kSphere || g.type == kCapsule) {
+        out.points = geom_points(g);  // their sizes are the doubles written
     } else if (g.type == kMesh) {
         if (g.mesh < 0 || static_cast<size_t>(g.mesh) >= sources.size()) {
             out.why_not = "its mesh is not among the model's";
@@ -291,6 +305,8 @@ Intended intended_geom(const Geom& g, const std::vector<MeshSource>& sources) {
             if (p[k] < lo) lo = p[k];
             if (p[k] > hi) hi = p[k];
         }
+        lo -= out.points->radius;  // a ball reaches r past the points
+        hi += out.points->radius;
         double l = lo.get_d(), h = hi.get_d();
         if (exact_from_double(l) > lo) l = std::nextafter(l, -INFINITY);
         if (exact_from_double(h) < hi) h = std::nextafter(h, INFINITY);
@@ -352,33 +368,42 @@ std::string exact_decimal(const Q& r) {
     return digits;
 }
 
-// s·√E as a decimal string: exact where E is a square of a rational (a finite decimal where the
-// root's denominator allows, else p/q), else 17 significant digits.
-std::string signed_text(int s, const Q& E) {
-    if (s == 0) return "0";
-    Z n = E.get_num(), d = E.get_den(), rn, rd;
+// An exact signed distance s·√E + k: the hulls' s·√E less the radii (k = −R; 0 for polyhedra).
+struct Signed {
+    int s = 0;
+    Q E, k;
+};
+Signed signed_of(const Judged& j) {
+    const SignedDistanceJudged& x = *j.get<SignedDistanceJudged>();
+    return {x.root(), x.exact_squared, j.radii ? Q(-((*j.radii)[0] + (*j.radii)[1])) : Q(0)};
+}
+// The sign of s·√E + k.
+int value_sign(const Signed& v) { return sign_minus_sqrt(v.k, Q(-v.s), v.E); }
+// s·√E + k − d as the nearest double (MPFR).
+double minus_rn(const Signed& v, const Q& d) {
+    if (v.s == 0 || sgn(v.E) == 0) return to_double_rn(v.k - d);
+    return v.s > 0 ? sqrt_minus_rn(v.E, Q(d - v.k)) : -sqrt_minus_rn(v.E, Q(v.k - d));
+}
+// The value as a decimal string: exact where √E is rational (a finite decimal where the
+// denominator allows, else p/q), else 17 significant digits.
+std::string signed_text(const Signed& v) {
+    if (v.s == 0) return sgn(v.k) == 0 ? "0" : (v.k < 0 ? "-" + exact_decimal(-v.k) : exact_decimal(v.k));
+    Z n = v.E.get_num(), d = v.E.get_den(), rn, rd;
     if (mpz_perfect_square_p(n.get_mpz_t()) && mpz_perfect_square_p(d.get_mpz_t())) {
         mpz_sqrt(rn.get_mpz_t(), n.get_mpz_t());
         mpz_sqrt(rd.get_mpz_t(), d.get_mpz_t());
         Q r(rn, rd);
         r.canonicalize();
-        return (s < 0 ? "-" : "") + exact_decimal(r);
+        const Q x = v.s * r + v.k;
+        return (x < 0 ? "-" : "") + exact_decimal(abs(x));
     }
-    const double v = sqrt_minus_rn(E, Q(0));
     char buf[64];
-    std::snprintf(buf, sizeof buf, "%.17g", s < 0 ? -v : v);
+    std::snprintf(buf, sizeof buf, "%.17g", minus_rn(v, Q(0)));
     return buf;
 }
-double signed_double(int s, const Q& E) {
-    const double v = sqrt_minus_rn(E, Q(0));
-    return s < 0 ? -v : v;
-}
-// |d − s√E|, correctly rounded (MPFR), for a finite d.
-double signed_error(double d, int s, const Q& E) {
-    if (s == 0) return std::fabs(d);
-    // s = 1: √E − d; s = −1: −(√E − (−d)).
-    return std::fabs(sqrt_minus_rn(E, exact_from_double(s > 0 ? d : -d)));
-}
+double signed_double(const Signed& v) { return minus_rn(v, Q(0)); }
+// |d − (s√E + k)|, correctly rounded (MPFR), for a finite d.
+double signed_error(double d, const Signed& v) { return std::fabs(minus_rn(v, exact_from_double(d))); }
 }  // namespace
 
 MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>& states,
@@ -446,6 +471,14 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
         if (geom.type == kBox)
             for (int k = 0; k < 3; ++k)
                 b[static_cast<size_t>(k)] = -geom.size[k], b[static_cast<size_t>(k) + 3] = geom.size[k];
+        if (geom.type == kSphere || geom.type == kCapsule) {
+            // The ball around the centre or the axis, each bound rounded outward.
+            const double r = geom.size[0], h = geom.type == kCapsule ? geom.size[1] : 0;
+            for (size_t k = 0; k < 3; ++k) {
+                const double e = k == 2 ? std::nextafter(h + r, INFINITY) : r;
+                b[k] = -e, b[k + 3] = e;
+            }
+        }
         for (size_t v = 0; v + 2 < geom.vertices.size(); v += 3)
             for (size_t k = 0; k < 3; ++k) {
                 b[k] = std::min(b[k], static_cast<double>(geom.vertices[v + k]));
@@ -542,27 +575,26 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
             verdict.value = exact_from_double(p.margin);
             const Judged vj = judge_claim(*we.rules, verdict, 0, opt.model, nullptr);
             const SignedDistanceJudged& ex = *vj.get<SignedDistanceJudged>();
+            const Signed S = signed_of(vj);
             const bool verdict_judged = deepest || !buffer_full;
             Json out{{"verdict", Json{{"exact", verdict_name(ex.exact)},
                                       {"right", verdict_judged ? Json(vj.right) : Json(nullptr)}}},
-                     {"signed_distance", Json{{"exact", signed_text(ex.sign(), ex.exact_squared)}}}};
+                     {"signed_distance", Json{{"exact", signed_text(S)}}}};
             std::vector<std::string> wrong;
             if (verdict_judged && !vj.right)
                 wrong.push_back(std::string(deepest ? "a contact" : "no contact") + " within the margin " +
                                 to_shortest(p.margin) + ", but the signed distance is ~" +
-                                to_shortest(signed_double(ex.sign(), ex.exact_squared)) + " m");
+                                to_shortest(signed_double(S)) + " m");
             if (deepest && std::isfinite(deepest->dist)) {
                 TypedClaim dist = base;
                 dist.value = exact_from_double(deepest->dist);
                 const Judged dj = judge_claim(*we.rules, dist, 1, opt.model, nullptr);
-                const double err = signed_error(deepest->dist, ex.sign(), ex.exact_squared);
+                const double err = signed_error(deepest->dist, S);
                 written_worst_dist = std::max(written_worst_dist, err);
-                out["dist"] = Json{
-                    {"exact", signed_text(ex.sign(), ex.exact_squared)}, {"error_m", number(err)}, {"right", dj.right}};
+                out["dist"] = Json{{"exact", signed_text(S)}, {"error_m", number(err)}, {"right", dj.right}};
                 if (!dj.right)
-                    wrong.push_back("dist " + to_shortest(deepest->dist) + ", exact ~" +
-                                    to_shortest(signed_double(ex.sign(), ex.exact_squared)) + " m (off by " +
-                                    to_shortest(err) + " m)");
+                    wrong.push_back("dist " + to_shortest(deepest->dist) + ", exact ~" + to_shortest(signed_double(S)) +
+                                    " m (off by " + to_shortest(err) + " m)");
                 if (std::isfinite(deepest->dist) && deepest->dist < 0 && ex.sign() < 0) {
                     const std::optional<Vec3q> n = normal_of(*deepest);
                     bool right = false;
@@ -605,6 +637,26 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
             if (geom.type == kBox) {
                 const BoxSide bs = posed_box_side(exact_box_of(g, pose_of(s, g)), q, r);
                 return bs == BoxSide::Farther ? 0 : bs == BoxSide::Unsure ? -1 : 1;
+            }
+            if (geom.type == kSphere || geom.type == kCapsule) {
+                // Within r + rad of the centre or the axis: the axis is the frame's z column
+                // (x = t + M·(0, 0, z), |z| <= h); the point-segment distance in rationals.
+                const Q rad = exact_from_double(geom.size[0]) + r;
+                const Q h = geom.type == kCapsule ? exact_from_double(geom.size[1]) : Q(0);
+                Vec3q a, u;
+                for (size_t k = 0; k < 3; ++k) {
+                    u[k] = exact_from_double(s.xmat[9 * G + 3 * k + 2]) * h;
+                    a[k] = exact_from_double(s.xpos[3 * G + k]) - u[k];
+                    u[k] *= 2;  // the segment from t − h·z to t + h·z
+                }
+                const Vec3q w{q[0] - a[0], q[1] - a[1], q[2] - a[2]};
+                const Q uu = u[0] * u[0] + u[1] * u[1] + u[2] * u[2];
+                Q f = sgn(uu) == 0 ? Q(0) : Q((w[0] * u[0] + w[1] * u[1] + w[2] * u[2]) / uu);
+                if (f < 0) f = 0;
+                if (f > 1) f = 1;
+                Q d2 = 0;
+                for (size_t k = 0; k < 3; ++k) d2 += (w[k] - f * u[k]) * (w[k] - f * u[k]);
+                return d2 <= rad * rad ? 1 : 0;
             }
             if (geom.type == kPlane) {
                 Q h = 0, N = 0;
@@ -656,26 +708,28 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
         // A contact's own dist: no contact is deeper than the pair (S <= d + LEN + tol·|S|), and
         // each is within the margin (d < margin + LEN). A contact failing it is wrong, and its pos
         // is not judged against that dist.
-        auto contact_dist_right = [&](const Contact& c, int sign, const Q& E, double margin) {
+        auto contact_dist_right = [&](const Contact& c, const Signed& v, double margin) {
             if (!std::isfinite(c.dist)) return false;
             const Q d = exact_from_double(c.dist);
-            return sign_minus_sqrt(d + opt.tolerance.abs, sign - opt.tolerance.rel, E) >= 0 &&
+            // S = s√E + k, |S| = σS: (k − d − LEN − rel·σ·k) + s(1 − rel·σ)√E <= 0.
+            const Q rs = opt.tolerance.rel * value_sign(v);
+            return sign_minus_sqrt(v.k - d - opt.tolerance.abs - rs * v.k, Q(-v.s * (1 - rs)), v.E) <= 0 &&
                    d < exact_from_double(margin) + opt.tolerance.abs;
         };
         // Every contact of a pair: its dist (contact_dist_right), then its pos (position_near_both);
         // the report's "contacts" entry and the text's lines. Returns whether all are right.
-        auto judge_contacts = [&](int a, int b, const std::vector<const Contact*>& cons, int sign, const Q& E,
-                                  double margin, Json& pj, const std::string& who) {
+        auto judge_contacts = [&](int a, int b, const std::vector<const Contact*>& cons, const Signed& v, double margin,
+                                  Json& pj, const std::string& who) {
             Json all_said = Json::array(), wrong_pos = Json::array(), wrong_dist = Json::array();
             long judged_pos = 0;
             for (size_t k = 0; k < cons.size(); ++k) {
                 const Contact& c = *cons[k];
                 all_said.push_back(Json::array({number(c.pos[0]), number(c.pos[1]), number(c.pos[2])}));
                 ++judgements;
-                if (!contact_dist_right(c, sign, E, margin)) {
+                if (!contact_dist_right(c, v, margin)) {
                     wrong_dist.push_back(k);
                     text += who + "contact " + std::to_string(k) + "'s dist " + to_shortest(c.dist) +
-                            " is not between the signed distance ~" + to_shortest(signed_double(sign, E)) +
+                            " is not between the signed distance ~" + to_shortest(signed_double(v)) +
                             " m and the margin " + to_shortest(margin) + "\n";
                     continue;
                 }
@@ -747,19 +801,23 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
                 const Q x = w[0] * v[0] + w[1] * v[1] + w[2] * v[2] + c0;
                 if (first || x < least) least = x, first = false;
             }
+            // S = m/√N − r, r the object's radius (a sphere's, a capsule's; 0 for a polyhedron).
             const int sign = sgn(least);
-            const Q E = least * least / N;  // S²
-            const Verdict exact = sign > 0 ? Verdict::Separated : sign == 0 ? Verdict::Touching : Verdict::Overlapping;
+            const Q rad = exact_from_double(geom_radius(m.geoms[O]));
+            const Signed S{sign, least * least / N, Q(-rad)};
+            const int vs = value_sign(S);
+            const Verdict exact = vs > 0 ? Verdict::Separated : vs == 0 ? Verdict::Touching : Verdict::Overlapping;
             // A contact claims S < margin (+ LEN), none S >= margin (− LEN), as for two polyhedra.
             const bool verdict_judged = deepest || !buffer_full;
-            const bool vright = deepest ? sign_minus_sqrt(least, margin + opt.tolerance.abs, N) < 0
-                                        : sign_minus_sqrt(least, margin - opt.tolerance.abs, N) >= 0;
+            const bool vright = deepest ? sign_minus_sqrt(least, margin + opt.tolerance.abs + rad, N) < 0
+                                        : sign_minus_sqrt(least, margin - opt.tolerance.abs + rad, N) >= 0;
             judgements += verdict_judged;
             pj["verdict"] = Json{{"said", deepest ? "contact" : "no contact"},
                                  {"exact", verdict_name(exact)},
                                  {"right", verdict_judged ? Json(vright) : Json(nullptr)}};
-            pj["signed_distance"] = Json{{"exact", signed_text(sign, E)}};
-            put_exact(pj["signed_distance"], "exact_squared", E);
+            pj["signed_distance"] = Json{{"exact", signed_text(S)}};
+            put_exact(pj["signed_distance"], "exact_squared", S.E);
+            if (sgn(rad) != 0) put_exact(pj["signed_distance"], "radii", rad);  // S = m/√N − radii
             if (!verdict_judged) {
                 pj["verdict"]["why"] = "MuJoCo's contact buffer was full at this state: its contacts were dropped";
                 ++verdicts_unjudged;
@@ -774,29 +832,30 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
                                           {"geom2", b},
                                           {"said", deepest ? "contact" : "no contact"},
                                           {"exact", verdict_name(exact)},
-                                          {"signed_distance_m", signed_double(sign, E)},
+                                          {"signed_distance_m", signed_double(S)},
                                           {"margin", p.margin}});
                 text += who + (deepest ? "a contact" : "no contact") + " within the margin " + to_shortest(p.margin) +
-                        ", but the signed distance is ~" + to_shortest(signed_double(sign, E)) + " m (" +
+                        ", but the signed distance is ~" + to_shortest(signed_double(S)) + " m (" +
                         verdict_name(exact) + ")\n";
             }
             if (deepest) {
                 const bool finite = std::isfinite(deepest->dist);
-                const bool dright = finite && opt.tolerance.close_signed(exact_from_double(deepest->dist), sign, E);
-                const double err = finite ? signed_error(deepest->dist, sign, E) : INFINITY;
+                const bool dright =
+                    finite && opt.tolerance.close_value(exact_from_double(deepest->dist), sign, S.E, S.k);
+                const double err = finite ? signed_error(deepest->dist, S) : INFINITY;
                 worst_dist = std::max(worst_dist, err);
                 ++judgements;
                 pj["dist"] = Json{{"said", number(deepest->dist)},
-                                  {"exact", signed_text(sign, E)},
+                                  {"exact", signed_text(S)},
                                   {"error_m", number(err)},
                                   {"right", dright}};
                 all_right = all_right && dright;
                 if (!dright)
-                    text += who + "dist " + to_shortest(deepest->dist) + ", exact ~" +
-                            to_shortest(signed_double(sign, E)) + " m (off by " + to_shortest(err) + " m)\n";
+                    text += who + "dist " + to_shortest(deepest->dist) + ", exact ~" + to_shortest(signed_double(S)) +
+                            " m (off by " + to_shortest(err) + " m)\n";
                 Json said =
                     Json::array({number(deepest->frame[0]), number(deepest->frame[1]), number(deepest->frame[2])});
-                if (deepest->dist < 0 && sign < 0) {
+                if (deepest->dist < 0 && vs < 0) {
                     // Moving geom2 along the normal by the depth separates them only along +n from
                     // the plane (the plane geom1) or −n (the plane geom2): the normal must be a
                     // positive multiple of it, exactly.
@@ -820,7 +879,7 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
                 pj["pos"] = Json{
                     {"said", Json::array({number(deepest->pos[0]), number(deepest->pos[1]), number(deepest->pos[2])})}};
                 // Each contact's dist and pos (judge_contacts), the half-space as a geom.
-                all_right = judge_contacts(a, b, *cons, sign, E, p.margin, pj, who) && all_right;
+                all_right = judge_contacts(a, b, *cons, S, p.margin, pj, who) && all_right;
             }
             if (!all_right) res.wrong += 1;
             if (opt.intended) {
@@ -837,30 +896,32 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
                     const Q x = w[0] * v[0] + w[1] * v[1] + w[2] * v[2] + c0;
                     if (firstw || x < lw) lw = x, firstw = false;
                 }
-                const int sw = sgn(lw);
-                const Q Ew = lw * lw / N;
-                const bool vw = deepest ? sign_minus_sqrt(lw, margin + opt.tolerance.abs, N) < 0
-                                        : sign_minus_sqrt(lw, margin - opt.tolerance.abs, N) >= 0;
+                const Q& radw = iw.points->radius;
+                const Signed Sw{sgn(lw), lw * lw / N, Q(-radw)};
+                const int sw = value_sign(Sw);
+                const bool vw = deepest ? sign_minus_sqrt(lw, margin + opt.tolerance.abs + radw, N) < 0
+                                        : sign_minus_sqrt(lw, margin - opt.tolerance.abs + radw, N) >= 0;
                 const bool vjudged = deepest || !buffer_full;
                 Json iwj{{"verdict", Json{{"exact", verdict_name(sw > 0    ? Verdict::Separated
                                                                  : sw == 0 ? Verdict::Touching
                                                                            : Verdict::Overlapping)},
                                           {"right", vjudged ? Json(vw) : Json(nullptr)}}},
-                         {"signed_distance", Json{{"exact", signed_text(sw, Ew)}}}};
+                         {"signed_distance", Json{{"exact", signed_text(Sw)}}}};
                 std::vector<std::string> wrong;
                 if (vjudged && !vw)
                     wrong.push_back(std::string(deepest ? "a contact" : "no contact") + " within the margin " +
                                     to_shortest(p.margin) + ", but the signed distance is ~" +
-                                    to_shortest(signed_double(sw, Ew)) + " m");
+                                    to_shortest(signed_double(Sw)) + " m");
                 if (deepest) {
                     const bool finite = std::isfinite(deepest->dist);
-                    const bool dright = finite && opt.tolerance.close_signed(exact_from_double(deepest->dist), sw, Ew);
-                    const double err = finite ? signed_error(deepest->dist, sw, Ew) : INFINITY;
+                    const bool dright =
+                        finite && opt.tolerance.close_value(exact_from_double(deepest->dist), Sw.s, Sw.E, Sw.k);
+                    const double err = finite ? signed_error(deepest->dist, Sw) : INFINITY;
                     written_worst_dist = std::max(written_worst_dist, err);
-                    iwj["dist"] = Json{{"exact", signed_text(sw, Ew)}, {"error_m", number(err)}, {"right", dright}};
+                    iwj["dist"] = Json{{"exact", signed_text(Sw)}, {"error_m", number(err)}, {"right", dright}};
                     if (!dright)
                         wrong.push_back("dist " + to_shortest(deepest->dist) + ", exact ~" +
-                                        to_shortest(signed_double(sw, Ew)) + " m (off by " + to_shortest(err) + " m)");
+                                        to_shortest(signed_double(Sw)) + " m (off by " + to_shortest(err) + " m)");
                 }
                 if (!wrong.empty()) {
                     ++written_wrong;
@@ -885,9 +946,8 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
                 why = "two planes: MuJoCo 2.2.2 has no plane-plane collision";
             else if (!plane_pair && (!judged_type(ga.type) || !judged_type(gb.type))) {
                 const Geom& g = judged_type(ga.type) || ga.type == kPlane ? gb : ga;
-                why = std::string(geom_type_name(g.type)) + (g.type == kSphere || g.type == kCapsule
-                                                                 ? ": objects with a radius are not judged yet"
-                                                                 : ": not a polyhedron (judged: box and mesh geoms)");
+                why =
+                    std::string(geom_type_name(g.type)) + ": not judged (judged: box, mesh, sphere and capsule geoms)";
             }
             // The deepest contact speaks for the pair (a box's manifold holds a point per corner);
             // its geoms' order is the claim's: P1 = its geom1, its normal from geom1 to geom2.
@@ -945,6 +1005,7 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
             verdict.value = exact_from_double(p.margin);
             const Judged vj = judge_claim(*pe->rules, verdict, 0, opt.model, nullptr);
             const SignedDistanceJudged& ex = *vj.get<SignedDistanceJudged>();
+            const Signed S = signed_of(vj);
             const bool verdict_judged = deepest || !buffer_full;
             const bool verdict_right = vj.right || !verdict_judged;
             judgements += verdict_judged;
@@ -957,8 +1018,9 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
                 {"verdict", Json{{"said", deepest ? "contact" : "no contact"},
                                  {"exact", verdict_name(ex.exact)},
                                  {"right", verdict_judged ? Json(vj.right) : Json(nullptr)}}},
-                {"signed_distance", Json{{"exact", signed_text(ex.sign(), ex.exact_squared)}}}};
+                {"signed_distance", Json{{"exact", signed_text(S)}}}};
             put_exact(pj["signed_distance"], "exact_squared", ex.exact_squared);
+            if (sgn(S.k) != 0) put_exact(pj["signed_distance"], "radii", Q(-S.k));  // S = s√E − radii
             if (!verdict_judged) {
                 pj["verdict"]["why"] = "MuJoCo's contact buffer was full at this state: its contacts were dropped";
                 ++verdicts_unjudged;
@@ -972,13 +1034,12 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
                                           {"geom2", b},
                                           {"said", deepest ? "contact" : "no contact"},
                                           {"exact", verdict_name(ex.exact)},
-                                          {"signed_distance_m", signed_double(ex.sign(), ex.exact_squared)},
+                                          {"signed_distance_m", signed_double(S)},
                                           {"margin", p.margin}});
                 text += "WRONG  state " + std::to_string(f) + " (" + labels[f] + "): " + geom_label(m, a) + " and " +
                         geom_label(m, b) + ": " + (deepest ? "a contact" : "no contact") + " within the margin " +
-                        to_shortest(p.margin) + ", but the signed distance is ~" +
-                        to_shortest(signed_double(ex.sign(), ex.exact_squared)) + " m (" + verdict_name(ex.exact) +
-                        ")\n";
+                        to_shortest(p.margin) + ", but the signed distance is ~" + to_shortest(signed_double(S)) +
+                        " m (" + verdict_name(ex.exact) + ")\n";
             }
             if (deepest) {
                 TypedClaim dist = base;
@@ -989,11 +1050,10 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
                     dist.no_answer = "value", dist.no_answer_reason = "not a number";
                 const Judged dj = judge_claim(*pe->rules, dist, 1, opt.model, nullptr);
                 ++judgements;
-                const double err =
-                    std::isfinite(deepest->dist) ? signed_error(deepest->dist, ex.sign(), ex.exact_squared) : INFINITY;
+                const double err = std::isfinite(deepest->dist) ? signed_error(deepest->dist, S) : INFINITY;
                 worst_dist = std::max(worst_dist, err);
                 pj["dist"] = Json{{"said", number(deepest->dist)},
-                                  {"exact", signed_text(ex.sign(), ex.exact_squared)},
+                                  {"exact", signed_text(S)},
                                   {"error_m", number(err)},
                                   {"right", dj.right}};
                 all_right = all_right && dj.right;
@@ -1001,8 +1061,7 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
                 if (!dj.right)
                     text += "WRONG  state " + std::to_string(f) + " (" + labels[f] + "): " + geom_label(m, a) +
                             " and " + geom_label(m, b) + ": dist " + to_shortest(deepest->dist) + ", exact ~" +
-                            to_shortest(signed_double(ex.sign(), ex.exact_squared)) + " m (off by " + to_shortest(err) +
-                            " m)\n";
+                            to_shortest(signed_double(S)) + " m (off by " + to_shortest(err) + " m)\n";
                 Json said =
                     Json::array({number(deepest->frame[0]), number(deepest->frame[1]), number(deepest->frame[2])});
                 if (std::isfinite(deepest->dist) && deepest->dist < 0 && ex.sign() < 0) {
@@ -1035,7 +1094,7 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
                 pj["pos"] = Json{
                     {"said", Json::array({number(deepest->pos[0]), number(deepest->pos[1]), number(deepest->pos[2])})}};
                 // Each contact's dist and pos (judge_contacts).
-                all_right = judge_contacts(a, b, cs->second, ex.sign(), ex.exact_squared, p.margin, pj,
+                all_right = judge_contacts(a, b, cs->second, S, p.margin, pj,
                                            "WRONG  state " + std::to_string(f) + " (" + labels[f] +
                                                "): " + geom_label(m, a) + " and " + geom_label(m, b) + ": ") &&
                             all_right;
@@ -1052,6 +1111,7 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
                     for (int i = 0; i < 2; ++i) {
                         const Geom& g = m.geoms[static_cast<size_t>(i ? b : a)];
                         scene[i ? "P2" : "P1"] = Json{{"vertices", geom_vertices_json(g)}};
+                        if (geom_radius(g) > 0) scene[i ? "P2" : "P1"]["radius"] = hex(geom_radius(g));
                     }
                     Json cl = Json::array();
                     for (const TypedClaim& c : claims) {
