@@ -395,8 +395,19 @@ std::array<std::optional<scalecert::Point>, 2> seeds_of(const py::handle& seeds,
 }
 
 PyScene make_scene(const py::handle& p1, const py::handle& p2, const py::handle& i1, const py::handle& i2,
-                   const py::handle& seeds, scalecert::Numbers numbers) {
+                   const py::handle& seeds, scalecert::Numbers numbers, const py::handle& radii = py::none()) {
     const auto s = seeds_of(seeds, numbers);
+    if (!radii.is_none()) {
+        // radii = (r1, r2): objects with a radius (a numpy pair, floats, Fractions, strings).
+        const py::list l = as_list(radii, "radii");
+        if (l.size() != 2) throw scalecert::InputError("radii: expected (r1, r2), each >= 0");
+        const std::array<scalecert::Rational, 2> r{rational(l[0], "radii[0]", numbers),
+                                                   rational(l[1], "radii[1]", numbers)};
+        return PyScene{
+            scalecert::Scene::with_radii(points(p1, "P1", numbers), points(p2, "P2", numbers), r,
+                                         interval(i1, "I1", numbers), interval(i2, "I2", numbers), s[0], s[1]),
+            nullptr, numbers};
+    }
     return PyScene{scalecert::Scene(points(p1, "P1", numbers), points(p2, "P2", numbers), interval(i1, "I1", numbers),
                                     interval(i2, "I2", numbers), s[0], s[1]),
                    nullptr, numbers};
@@ -454,11 +465,13 @@ py::dict certify_arrays(const CertifyFn& certify, const std::string& kind, const
                                                            {"penetration_depth", ClaimKind::PenetrationDepth},
                                                            {"verdict", ClaimKind::Verdict},
                                                            {"separating_plane", ClaimKind::SeparatingPlane},
-                                                           {"witness_point", ClaimKind::WitnessPoint}};
+                                                           {"witness_point", ClaimKind::WitnessPoint},
+                                                           {"signed_distance", ClaimKind::SignedDistance}};
     const auto k = kinds.find(kind);
     if (k == kinds.end())
-        throw scalecert::InputError("certify: unknown kind '" + kind +
-                                    "' (distance, penetration_depth, verdict, separating_plane, witness_point)");
+        throw scalecert::InputError(
+            "certify: unknown kind '" + kind +
+            "' (distance, penetration_depth, signed_distance, verdict, separating_plane, witness_point)");
     const py::list r1 = as_list(rho1, "rho1"), r2 = as_list(rho2, "rho2");
     const size_t n = r1.size();
     // An array argument with one row per claim, or none.
@@ -478,7 +491,8 @@ py::dict certify_arrays(const CertifyFn& certify, const std::string& kind, const
         throw scalecert::InputError("certify: rho2 has " + std::to_string(r2.size()) + " rows, rho1 has " +
                                     std::to_string(n));
     const ClaimKind ck = k->second;
-    const bool measure = ck == ClaimKind::Distance || ck == ClaimKind::PenetrationDepth;
+    const bool measure =
+        ck == ClaimKind::Distance || ck == ClaimKind::PenetrationDepth || ck == ClaimKind::SignedDistance;
     const auto values = rows(value, "value", measure);
     const auto cl = rows(closest, "closest", false), dir = rows(direction, "direction", false),
                nor = rows(normal, "normal", ck == ClaimKind::SeparatingPlane), off = rows(offset, "offset", false),
@@ -573,7 +587,7 @@ py::dict certify_arrays(const CertifyFn& certify, const std::string& kind, const
         j = certify(claims, opt);
     }
     py::module_ np = py::module_::import("numpy");
-    py::list right, exact, rel, vr, cr, dr, sq, ev, why, pairs, pair_names;
+    py::list right, exact, rel, vr, cr, dr, sq, rs, ev, why, pairs, pair_names;
     for (const scalecert::Judgement& g : j.items) {
         right.append(g.right);
         why.append(g.reason);
@@ -584,6 +598,7 @@ py::dict certify_arrays(const CertifyFn& certify, const std::string& kind, const
         cr.append(g.closest_right.value_or(false));
         dr.append(g.direction_right.value_or(false));
         if (fractions) sq.append(g.exact_squared ? fraction(*g.exact_squared) : py::object(py::none()));
+        if (fractions) rs.append(g.radius_sum ? fraction(*g.radius_sum) : py::object(py::none()));
         pairs.append(py::make_tuple(g.part1, g.part2));
         pair_names.append(py::make_tuple(g.part1_name, g.part2_name));
         if (g.exact_verdict) ev.append(scalecert::name(*g.exact_verdict));
@@ -598,8 +613,9 @@ py::dict certify_arrays(const CertifyFn& certify, const std::string& kind, const
     }
     if (cl) d["closest_right"] = np.attr("array")(cr, "dtype"_a = "bool");
     if (dir) d["direction_right"] = np.attr("array")(dr, "dtype"_a = "bool");
-    if (fractions && measure) d["exact_squared"] = sq;
-    if (ck == ClaimKind::Verdict) d["exact_verdict"] = ev;
+    if (fractions && measure) d["exact_squared"] = sq;  // on objects with a radius, the hulls'
+    if (fractions && measure) d["radius_sum"] = rs;     // R (None without radii): exact = ±√exact_squared − R
+    if (ck == ClaimKind::Verdict || ck == ClaimKind::SignedDistance) d["exact_verdict"] = ev;
     if (of_parts) {  // the part pair each exact answer rests on, (-1, -1) for none, and their names
         d["exact_parts"] = np.attr("array")(pairs, "dtype"_a = "int64").attr("reshape")(n, 2);
         d["exact_part_names"] = pair_names;
@@ -694,16 +710,18 @@ void bind_verdict(py::module_& m) {
 void bind_scene_construction(py::class_<PyScene>& scene) {
     scene
         .def(py::init([](const py::handle& p1, const py::handle& p2, const py::handle& i1, const py::handle& i2,
-                         const py::handle& seeds, const py::handle& numbers) {
-                 return make_scene(p1, p2, i1, i2, seeds, numbers_arg(numbers));
+                         const py::handle& seeds, const py::handle& numbers, const py::handle& radii) {
+                 return make_scene(p1, p2, i1, i2, seeds, numbers_arg(numbers), radii);
              }),
              py::arg("P1"), py::arg("P2"), py::arg("I1") = py::none(), py::arg("I2") = py::none(),
-             py::arg("seeds") = py::none(), py::arg("numbers") = "double",
+             py::arg("seeds") = py::none(), py::arg("numbers") = "double", py::arg("radii") = py::none(),
              "Two convex objects. Vertices as lists or numpy arrays of ints, Fractions, Decimals, decimal strings or "
              "floats; I1, I2 = (lo, hi), default (1, 1): no scaling; seeds = (s1, s2), default the means. A float is "
              "read as numbers says: "
              "'double' (its exact value), 'float32' (the float nearest it, as a float32 program holds it) or 'exact' "
-             "(its shortest decimal, as written: 0.1 is 1/10); str, Fraction, Decimal and int are exact always.")
+             "(its shortest decimal, as written: 0.1 is 1/10); str, Fraction, Decimal and int are exact always. "
+             "radii = (r1, r2), each >= 0: objects with a radius, every point within r of the hull of the vertices "
+             "(one vertex: a sphere; two: a capsule), judged at any pair (the curve is refused).")
         .def_static(
             "from_parts",
             [](const py::handle& p1, const py::handle& p2, const py::handle& i1, const py::handle& i2,
@@ -810,6 +828,10 @@ void bind_scene_contents(py::class_<PyScene>& scene) {
             "str, empty when there are none")
         .def("seeds",
              [](const PyScene& s) { return py::make_tuple(fractions(s.scene.seed(0)), fractions(s.scene.seed(1))); })
+        .def(
+            "radii",
+            [](const PyScene& s) { return py::make_tuple(fraction(s.scene.radius(0)), fraction(s.scene.radius(1))); },
+            "the objects' radii as Fractions (0 for an object without one)")
         .def(
             "json", [](const PyScene& s) { return s.scene.json(); }, "the scene file text, every number exact")
         .def(
@@ -948,7 +970,7 @@ void bind_scene_claims(py::class_<PyScene>& scene) {
                     [&a](const auto& c, const auto& o) { return a.certify(c, o); }, text_arg(kind, "kind"), rho1, rho2,
                     value, closest, direction, normal, offset, point_, verdict, tolerance, abs_tolerance,
                     flag_arg(certificate, "certificate"), flag_arg(fractions, "fractions"),
-                    numbers.is_none() ? s.numbers : numbers_arg(numbers), parts, pose1, pose2, !a.convex());
+                    numbers.is_none() ? s.numbers : numbers_arg(numbers), parts, pose1, pose2, !s.scene.convex());
             },
             py::arg("kind"), py::arg("rho1"), py::arg("rho2"), py::arg("value") = py::none(),
             py::arg("closest") = py::none(), py::arg("direction") = py::none(), py::arg("normal") = py::none(),

@@ -131,6 +131,34 @@ BOOST_AUTO_TEST_CASE(claimed_planes_are_checked_exactly) {
                }).find("normal is zero") != std::string::npos);
 }
 
+// Objects with a radius from code (CLAIMS.md, "Objects with a radius"): a capsule of radius 1/4
+// on the z axis from −1 to 1 and a sphere of radius 1/2 at (2, 0, 0): the sphere's centre is 2
+// from the axis, so the signed distance at (ρ1, ρ2) is 2 − ρ1/4 − ρ2/2: 5/4 at (1, 1), touching
+// at (4, 2), and −1/4 at (4, 5/2).
+BOOST_AUTO_TEST_CASE(objects_with_a_radius_from_code) {
+    const scalecert::Scene s = scalecert::Scene::with_radii({{R(0), R(0), R(-1)}, {R(0), R(0), R(1)}},
+                                                            {{R(2), R(0), R(0)}}, {R(1, 4), R(1, 2)});
+    BOOST_TEST(s.radius(0) == R(1, 4));
+    const scalecert::Analysis a(s);
+    BOOST_TEST((a.verdict(R(1), R(1)) == scalecert::Verdict::Separated));
+    BOOST_TEST((a.verdict(R(4), R(2)) == scalecert::Verdict::Touching));
+    BOOST_TEST((a.verdict(R(4), R(5, 2)) == scalecert::Verdict::Overlapping));
+    scalecert::Claim c;
+    c.kind = scalecert::ClaimKind::SignedDistance;
+    c.rho1 = R(4);
+    c.rho2 = R(5, 2);
+    c.value = R(-1, 4);
+    const scalecert::Judgements j = a.certify({c}, {});
+    BOOST_TEST(j.wrong == 0);
+    BOOST_TEST(*j.items[0].exact_squared == R(4));  // the hulls': the centre 2 from the axis
+    BOOST_TEST(*j.items[0].radius_sum == R(9, 4));
+    BOOST_TEST(j.items[0].exact == -0.25);
+    BOOST_TEST(error_of([&] { a.curve(); }).find("not built for objects with a radius") != std::string::npos);
+    BOOST_TEST(error_of([&] {
+                   scalecert::Scene::with_radii({{R(0), R(0), R(0)}}, {{R(2), R(0), R(0)}}, {R(-1), R(1)});
+               }).find("P1: radius: a radius is >= 0") != std::string::npos);
+}
+
 BOOST_AUTO_TEST_CASE(scenes_in_code_are_checked_like_scene_files) {
     BOOST_TEST(error_of([] { stacked(R(3), R(1, 2)); }) == "scene: I1: lo > hi");
     BOOST_TEST(error_of([] { stacked(R(0), R(1)); }) == "scene: I1: lo must be > 0 (got '0')");

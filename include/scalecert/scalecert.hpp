@@ -74,6 +74,13 @@ class Scene {
     // Two convex objects.
     Scene(std::vector<Point> p1, std::vector<Point> p2, Interval i1, Interval i2, std::optional<Point> seed1 = {},
           std::optional<Point> seed2 = {});
+    // Two convex objects with radii (certificates/CLAIMS.md, "Objects with a radius"): object i is
+    // every point within radii[i] >= 0 of the hull of its points, so one point with a radius is a
+    // sphere and two a capsule (with a radius > 0 the points may be flat). Verdicts and claims at
+    // any pair; the curve and what is built on it are refused (InputError).
+    static Scene with_radii(std::vector<Point> p1, std::vector<Point> p2, std::array<Rational, 2> radii,
+                            Interval i1 = {}, Interval i2 = {}, std::optional<Point> seed1 = {},
+                            std::optional<Point> seed2 = {});
     // Two objects made of parts: parts[i] is object i's parts, each a list of points.
     static Scene from_parts(std::vector<std::vector<Point>> parts1, std::vector<std::vector<Point>> parts2, Interval i1,
                             Interval i2, std::optional<Point> seed1 = {}, std::optional<Point> seed2 = {});
@@ -101,6 +108,7 @@ class Scene {
     // binary values other than as written); empty when there are none.
     std::vector<std::string> notes() const;
     const Point& seed(int i) const;
+    Rational radius(int i) const;  // 0 for an object without one
     Interval range(int i) const;
     std::string json() const;  // the scene file, every number exact
 
@@ -217,6 +225,9 @@ struct Judgement {
     // Distances, depths, signed distances (none: a depth claimed of a separated pair); a signed
     // distance's is D² apart, P² overlapping (its sign is exact_verdict's).
     std::optional<Rational> exact_squared;
+    // Objects with a radius (Scene::with_radii): exact_squared is the hulls' and radius_sum is
+    // R = ρ1 r1 + ρ2 r2, the exact value ±√exact_squared − R (a depth's R ∓ √exact_squared).
+    std::optional<Rational> radius_sum;
     double exact = 0;      // √exact_squared, correctly rounded (MPFR); a signed distance's with its sign
     double rel_error = 0;  // |value − exact| / |exact|, MPFR-rounded (0 when both are 0; inf when only exact is)
     std::optional<Verdict> exact_verdict;  // verdicts, signed distances

@@ -1071,3 +1071,37 @@ def test_the_pytest_gate_example_in_the_docs(tmp_path):
         namespace["test_my_claims"]()
     finally:
         os.chdir(cwd)
+
+
+def test_objects_with_a_radius(tmp_path):
+    # CLAIMS.md, "Objects with a radius": a sphere of radius 1 at 0 and one of radius 2 at
+    # (5, 0, 0); at (ρ1, ρ2) the signed distance is 5 − ρ1 − 2ρ2 (exact here, so no tolerance).
+    s = scalecert.Scene(np.zeros((1, 3)), np.array([[5.0, 0, 0]]), radii=np.array([1.0, 2.0]))
+    assert s.radii() == (F(1), F(2))
+    assert s.verdict(1, 1) == scalecert.Verdict.Separated
+    assert s.verdict(1, 2) == scalecert.Verdict.Touching
+    assert s.verdict(2, 2) == scalecert.Verdict.Overlapping
+    assert list(s.classify(np.array([1.0, 1, 2]), np.array([1.0, 2, 2]))) == [0, 1, 2]
+    r = s.certify("signed_distance", [1.0, 1, 2, 2], [1.0, 2, 2, 2], value=[2.0, 0, -1, -1.5], fractions=True)
+    assert list(r["right"]) == [True, True, True, False]
+    assert r["radius_sum"] == [F(3), F(5), F(6), F(6)]
+    assert r["exact_squared"][0] == F(25)  # the hulls' (the centres'), squared
+    assert list(r["exact"]) == [2.0, 0.0, -1.0, -1.0]
+    d = s.certify("penetration_depth", [2.0, 2.0], [2.0, 2.0], value=[1.0, 1.0], direction=[[1, 0, 0], [1, 1, 0]])
+    assert list(d["direction_right"]) == [True, False]  # 45° off, the balls part after 6 − 5/√2
+    # A capsule (two points, radius 1/4) crossing another at the origin: the hulls touch, depth 1/2.
+    c = scalecert.Scene([[0, 0, -1], [0, 0, 1]], [[-1, 0, 0], [1, 0, 0]], radii=("1/4", "1/4"))
+    assert list(c.certify("penetration_depth", [1.0], [1.0], value=[0.5])["right"]) == [True]
+    with pytest.raises(scalecert.InputError, match="the touching curve is not built for objects with a radius"):
+        s.curve()
+    with pytest.raises(scalecert.InputError, match="radius: a radius is >= 0"):
+        scalecert.Scene(np.zeros((1, 3)), [[5, 0, 0]], radii=(-1, 2))
+    with pytest.raises(scalecert.InputError, match="radii\\[0\\]: not a finite number"):
+        scalecert.Scene(np.zeros((1, 3)), [[5, 0, 0]], radii=(float("nan"), 2))
+    with pytest.raises(scalecert.InputError, match="radii: expected"):
+        scalecert.Scene(np.zeros((1, 3)), [[5, 0, 0]], radii=(1,))
+    with pytest.raises(scalecert.InputError, match="the seed is not within less than the radius"):
+        scalecert.Scene(np.zeros((1, 3)), [[5, 0, 0]], seeds=([1, 0, 0], None), radii=(1, 2))
+    # The scene file keeps the radii; read back, it is the same scene.
+    (tmp_path / "spheres.json").write_text(s.json())
+    assert scalecert.Scene.load(str(tmp_path / "spheres.json")).radii() == (F(1), F(2))

@@ -197,6 +197,14 @@ struct Judged {
         if (const auto* d = get<SignedDistanceJudged>()) return d->exact_squared;
         return std::nullopt;
     }
+    // A distance's, a depth's or a signed distance's exact value as s·√E + k: k = 0 on objects
+    // without a radius, else from the radii (CLAIMS.md, "Objects with a radius"); none for a
+    // separated pair's depth.
+    struct Surd {
+        int s;
+        Q E, k;
+    };
+    std::optional<Surd> exact_value() const;
     // The exact verdict a verdict, a witness or a separated depth states.
     std::optional<Verdict> exact_verdict() const {
         if (const auto* d = get<VerdictJudged>()) return d->exact;

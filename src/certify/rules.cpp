@@ -95,6 +95,20 @@ bool Tolerance::close_signed(const Q& c, int s, const Q& E) const {
     return sign_minus_sqrt(c - abs, s + rel, E) <= 0 && sign_minus_sqrt(c + abs, s - rel, E) >= 0;
 }
 
+std::optional<Judged::Surd> Judged::exact_value() const {
+    const Q R = radii ? Q((*radii)[0] + (*radii)[1]) : Q(0);
+    if (const auto* d = get<DistanceJudged>()) {
+        if (sgn(R) == 0) return Surd{1, d->exact_squared, Q(0)};
+        return d->exact_squared > R * R ? Surd{1, d->exact_squared, Q(-R)} : Surd{0, Q(0), Q(0)};
+    }
+    if (const auto* d = get<DepthJudged>()) {
+        if (!d->exact_squared) return std::nullopt;
+        return Surd{d->root_sign, *d->exact_squared, R};
+    }
+    if (const auto* d = get<SignedDistanceJudged>()) return Surd{d->root(), d->exact_squared, Q(-R)};
+    return std::nullopt;
+}
+
 bool Tolerance::close_value(const Q& c, int s, const Q& E, const Q& k) const {
     // σ the sign of x, |x| = σ·s·√E + σ·k; each side of |c − x| ≤ abs + rel·|x| one sign_minus_sqrt.
     const int sigma = sign_minus_sqrt(k, Q(-s), E);

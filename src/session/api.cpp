@@ -6,6 +6,7 @@
 #include "certify/certificate.hpp"
 #include "certify/claim.hpp"
 #include "certify/judgements.hpp"
+#include "certify/report.hpp"
 #include "certify/classify.hpp"
 #include "certify/golden.hpp"
 #include "geometry/measures.hpp"
@@ -79,7 +80,8 @@ void seed_and_range(internal::ExactScene& sc, int i, const std::optional<Point>&
 // validated); each object's note (a reader's remark) kept.
 internal::ExactScene convex_scene(std::vector<Point> p1, std::vector<Point> p2, const Interval& i1, const Interval& i2,
                                   const std::optional<Point>& seed1, const std::optional<Point>& seed2,
-                                  std::string note1 = {}, std::string note2 = {}) {
+                                  std::string note1 = {}, std::string note2 = {},
+                                  const std::array<Rational, 2>* radii = nullptr) {
     internal::ExactScene sc;
     std::vector<Point>* pts[2] = {&p1, &p2};
     const std::optional<Point>* seeds[2] = {&seed1, &seed2};
@@ -88,6 +90,15 @@ internal::ExactScene convex_scene(std::vector<Point> p1, std::vector<Point> p2, 
         for (Point& v : *pts[i]) v = canonical(std::move(v));
         sc.P[i].points = std::move(*pts[i]);
         seed_and_range(sc, i, *seeds[i], *ranges[i]);
+        if (radii) {
+            Rational r = (*radii)[static_cast<size_t>(i)];
+            r.canonicalize();
+            if (sgn(r) < 0)
+                throw InputError(std::string("scene: ") + (i ? "P2" : "P1") + ": radius: a radius is >= 0 (got " +
+                                 in_quotes(to_exact_string(r)) + ")");
+            sc.P[i].radius = r;
+            sc.P[i].radius_given = true;
+        }
     }
     sc.P[0].note = std::move(note1);
     sc.P[1].note = std::move(note2);
@@ -100,6 +111,12 @@ internal::ExactScene convex_scene(std::vector<Point> p1, std::vector<Point> p2, 
 Scene::Scene(std::vector<Point> p1, std::vector<Point> p2, Interval i1, Interval i2, std::optional<Point> seed1,
              std::optional<Point> seed2) {
     d_ = SceneAccess::validated(convex_scene(std::move(p1), std::move(p2), i1, i2, seed1, seed2), "scene");
+}
+
+Scene Scene::with_radii(std::vector<Point> p1, std::vector<Point> p2, std::array<Rational, 2> radii, Interval i1,
+                        Interval i2, std::optional<Point> seed1, std::optional<Point> seed2) {
+    return Scene(SceneAccess::validated(
+        convex_scene(std::move(p1), std::move(p2), i1, i2, seed1, seed2, {}, {}, &radii), "scene"));
 }
 
 struct Scene::Data {
@@ -282,6 +299,7 @@ std::vector<std::string> Scene::notes() const {
 const std::vector<Point>& Scene::points(int i) const { return d_->sc().P[i & 1].points; }
 const Point& Scene::seed(int i) const { return d_->sc().P[i & 1].seed; }
 Interval Scene::range(int i) const { return {d_->sc().lo[i & 1], d_->sc().hi[i & 1]}; }
+Rational Scene::radius(int i) const { return d_->sc().P[i & 1].radius; }
 std::string Scene::json() const { return dump(internal::scene_file_json(d_->sc())); }
 
 struct Analysis::Impl {
@@ -460,7 +478,15 @@ Judgement public_judgement(const internal::TypedClaim& c, const internal::Judged
         j.value_right = d->value_right;
         j.direction_right = d->direction_right;
     }
-    if (const std::optional<Q> e = g.exact_squared()) {
+    if (g.get<internal::SignedDistanceJudged>()) j.value_right = g.right;  // its one answer
+    if (const std::optional<internal::Judged::Surd> v = g.radii ? g.exact_value() : std::nullopt) {
+        // Objects with a radius: exact = s·√E + k, E the hulls' square.
+        j.exact_squared = v->E;
+        j.radius_sum = (*g.radii)[0] + (*g.radii)[1];
+        j.exact = internal::report_parts::surd_rn(v->s, v->E, v->k);
+        const double err = std::fabs(internal::report_parts::surd_rn(v->s, v->E, Q(v->k - c.value)));
+        j.rel_error = j.exact != 0 ? err / std::fabs(j.exact) : err == 0 ? 0.0 : INFINITY;
+    } else if (const std::optional<Q> e = g.exact_squared()) {
         j.exact_squared = *e;
         j.exact = sqrt_minus_rn(*e, Q(0));
         // A signed distance σ·√E: |value − σ√E| = |σ·value − √E| for σ = ±1 (E = 0 when σ = 0).
