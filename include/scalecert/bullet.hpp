@@ -10,16 +10,20 @@
 //
 // P1 is body 0 (A), P2 body 1 (B), each its shape in its own frame; every claim carries the two
 // world transforms as poses, their btScalars read exactly. btConvexHullShape (its points as
-// scaled, as Bullet collides them) and btBoxShape are judged, with a collision margin of 0: the
-// shape Bullet collides with a margin is inflated by it, an object with a radius, which is refused
-// (InputError) until objects with a radius are judged.
+// scaled), btBoxShape, btSphereShape and btCapsuleShape are judged, each inflated by its collision
+// margin as Bullet's manifolds and btGjkEpaSolver2::Penetration collide it (an object with a
+// radius: a hull's 0.04 by default; a box's margin lies inside its half-extents; a sphere's and a
+// capsule's margin is their radius). btGjkEpaSolver2::Distance ignores margins: judge its results
+// on bullet_scene(a, b, false).
 #pragma once
 #include "scalecert/scalecert.hpp"
 
 #include <BulletCollision/BroadphaseCollision/btBroadphaseProxy.h>
 #include <BulletCollision/CollisionDispatch/btCollisionObject.h>
 #include <BulletCollision/CollisionShapes/btBoxShape.h>
+#include <BulletCollision/CollisionShapes/btCapsuleShape.h>
 #include <BulletCollision/CollisionShapes/btConvexHullShape.h>
+#include <BulletCollision/CollisionShapes/btSphereShape.h>
 #include <BulletCollision/NarrowPhaseCollision/btGjkEpa2.h>
 #include <BulletCollision/NarrowPhaseCollision/btPersistentManifold.h>
 #include <LinearMath/btTransform.h>
@@ -59,14 +63,11 @@ inline Pose bullet_pose(const btTransform& tf) {
     return p;
 }
 
-// The points of a shape Bullet holds, in its own frame: a btConvexHullShape's points as scaled
-// (getScaledPoint, the btScalars Bullet collides), a btBoxShape's eight corners. A collision
-// margin other than 0, and other shapes, are refused in one line (InputError).
+// The points of a shape Bullet holds, in its own frame, without its margin: a btConvexHullShape's
+// points as scaled (getScaledPoint, the btScalars Bullet collides), a btBoxShape's eight corners
+// within its margin (getHalfExtentsWithoutMargin), a btSphereShape's centre, a btCapsuleShape's
+// axis (± getHalfHeight along its up axis). Other shapes are refused in one line (InputError).
 inline std::vector<Point> bullet_points(const btCollisionShape& shape) {
-    if (shape.getMargin() != 0)
-        throw InputError("bullet_points: collision margin " + std::to_string(static_cast<double>(shape.getMargin())) +
-                         ": Bullet collides the shape inflated by its margin, an object with a radius, which is not "
-                         "judged yet; setMargin(0) judges the shape itself");
     std::vector<Point> out;
     auto add = [&](const btVector3& v) {
         if (!std::isfinite(static_cast<double>(v.x())) || !std::isfinite(static_cast<double>(v.y())) ||
@@ -87,15 +88,37 @@ inline std::vector<Point> bullet_points(const btCollisionShape& shape) {
             add(btVector3(k & 1 ? h.x() : -h.x(), k & 2 ? h.y() : -h.y(), k & 4 ? h.z() : -h.z()));
         return out;
     }
+    case SPHERE_SHAPE_PROXYTYPE: add(btVector3(0, 0, 0)); return out;
+    case CAPSULE_SHAPE_PROXYTYPE: {
+        const auto& c = static_cast<const btCapsuleShape&>(shape);
+        btVector3 e(0, 0, 0);
+        e[c.getUpAxis()] = c.getHalfHeight();
+        add(-e);
+        if (c.getHalfHeight() != 0) add(e);
+        return out;
+    }
     default:
         throw InputError(std::string("bullet_points: Bullet shape ") + shape.getName() +
-                         " is not judged; btConvexHullShape and btBoxShape are");
+                         " is not judged; btConvexHullShape, btBoxShape, btSphereShape and btCapsuleShape are");
     }
 }
 
-// The scene of two shapes, each in its own frame (scaling ranges [1, 1]); of a manifold's bodies.
-inline Scene bullet_scene(const btCollisionShape& a, const btCollisionShape& b) {
-    return Scene(bullet_points(a), bullet_points(b), {}, {});
+// The radius Bullet collides around bullet_points: the collision margin (a sphere's and a
+// capsule's is its radius). InputError for a NaN, an infinity or a negative margin.
+inline Rational bullet_radius(const btCollisionShape& shape) {
+    const double m = static_cast<double>(shape.getMargin());
+    if (!std::isfinite(m) || m < 0)
+        throw InputError("bullet_radius: collision margin " + std::to_string(m) + " (expected a finite margin >= 0)");
+    return exact(m);
+}
+
+// The scene of two shapes, each in its own frame (scaling ranges [1, 1]): with `margins`, each
+// inflated by its margin (bullet_radius), as Bullet's manifolds and Penetration collide them;
+// without, the shapes btGjkEpaSolver2::Distance measures. Of a manifold's bodies, with margins.
+inline Scene bullet_scene(const btCollisionShape& a, const btCollisionShape& b, bool margins = true) {
+    const Rational r1 = margins ? bullet_radius(a) : Rational(0), r2 = margins ? bullet_radius(b) : Rational(0);
+    if (sgn(r1) == 0 && sgn(r2) == 0) return Scene(bullet_points(a), bullet_points(b), {}, {});
+    return Scene::with_radii(bullet_points(a), bullet_points(b), {r1, r2});
 }
 inline Scene bullet_scene(const btPersistentManifold& m) {
     return bullet_scene(*m.getBody0()->getCollisionShape(), *m.getBody1()->getCollisionShape());
@@ -138,9 +161,10 @@ inline std::vector<Claim> bullet_claims(const btPersistentManifold& m) {
     return out;
 }
 
-// btGjkEpaSolver2::Distance's result for shapes at transforms a, b: separated, a distance with
-// its witnesses as the closest points; penetrating, the verdict intersecting; a failure, no
-// answer (the verdict claim is judged wrong).
+// btGjkEpaSolver2::Distance's result for shapes at transforms a, b (on the shapes without their
+// margins: bullet_scene(a, b, false)): separated, a distance with its witnesses as the closest
+// points; penetrating, the verdict intersecting; a failure, no answer (the verdict claim is
+// judged wrong).
 inline std::vector<Claim> bullet_distance_claims(const btGjkEpaSolver2::sResults& r, const btTransform& a,
                                                  const btTransform& b) {
     Claim c;
@@ -159,7 +183,8 @@ inline std::vector<Claim> bullet_distance_claims(const btGjkEpaSolver2::sResults
     return {c};
 }
 
-// btGjkEpaSolver2::Penetration's result: penetrating, a penetration_depth of −distance in the
+// btGjkEpaSolver2::Penetration's result (with margins, its default): penetrating, a
+// penetration_depth of −distance in the
 // direction −normal (Bullet's normal points from B toward A); separated, the verdict
 // not_overlapping; a failure, no answer.
 inline std::vector<Claim> bullet_penetration_claims(const btGjkEpaSolver2::sResults& r, const btTransform& a,

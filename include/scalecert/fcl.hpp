@@ -9,8 +9,9 @@
 //   auto j = a.certify(scalecert::fcl_claims(req, res, o1.getTransform(), o2.getTransform()));
 //
 // P1 is the first object FCL was given, P2 the second, each in its own frame; every claim carries
-// the two transforms as poses, their doubles read exactly. Only fcl::Box and fcl::Convex are
-// judged; spheres, capsules and the other shapes with a radius are refused (InputError).
+// the two transforms as poses, their doubles read exactly. fcl::Box, fcl::Convex, fcl::Sphere and
+// fcl::Capsule are judged (the last two as objects with a radius); cylinders, cones and
+// ellipsoids are refused (InputError).
 #pragma once
 #include "scalecert/scalecert.hpp"
 
@@ -52,7 +53,8 @@ Pose fcl_pose(const ::fcl::Transform3<S>& tf) {
 }
 
 // The points of a geometry FCL holds, in its own frame: an fcl::Convex's vertices, an fcl::Box's
-// eight corners (±side/2). Other shapes are refused in one line (InputError).
+// eight corners (±side/2), an fcl::Sphere's centre, an fcl::Capsule's axis (0, 0, ±lz/2), the
+// last two with their radius (fcl_radius). Other shapes are refused in one line (InputError).
 template <class S>
 std::vector<Point> fcl_points(const ::fcl::CollisionGeometry<S>& g) {
     std::vector<Point> out;
@@ -74,24 +76,43 @@ std::vector<Point> fcl_points(const ::fcl::CollisionGeometry<S>& g) {
                 (k & 4 ? 0.5 : -0.5) * static_cast<double>(side[2]));
         return out;
     }
-    case ::fcl::GEOM_SPHERE:
-    case ::fcl::GEOM_CAPSULE:
+    case ::fcl::GEOM_SPHERE: add(0, 0, 0); return out;
+    case ::fcl::GEOM_CAPSULE: {
+        const double h = 0.5 * static_cast<double>(static_cast<const ::fcl::Capsule<S>&>(g).lz);  // exact
+        add(0, 0, -h);
+        if (h != 0) add(0, 0, h);
+        return out;
+    }
     case ::fcl::GEOM_CYLINDER:
     case ::fcl::GEOM_CONE:
     case ::fcl::GEOM_ELLIPSOID:
         throw InputError(
-            "fcl_points: FCL's round shapes (spheres, capsules, cylinders, cones, ellipsoids) are not "
-            "judged yet; fcl::Box and fcl::Convex are");
+            "fcl_points: FCL's cylinders, cones and ellipsoids are not judged; fcl::Box, fcl::Convex, fcl::Sphere "
+            "and fcl::Capsule are");
     default:
         throw InputError("fcl_points: FCL geometry of node type " + std::to_string(static_cast<int>(g.getNodeType())) +
-                         " is not a convex polytope; fcl::Box and fcl::Convex are judged");
+                         " is not judged; fcl::Box, fcl::Convex, fcl::Sphere and fcl::Capsule are");
     }
 }
 
-// The scene of the two geometries, each in its own frame (scaling ranges [1, 1]).
+// The radius around fcl_points that FCL collides: an fcl::Sphere's or fcl::Capsule's, else 0.
+template <class S>
+Rational fcl_radius(const ::fcl::CollisionGeometry<S>& g) {
+    double r = 0;
+    if (g.getNodeType() == ::fcl::GEOM_SPHERE) r = static_cast<double>(static_cast<const ::fcl::Sphere<S>&>(g).radius);
+    if (g.getNodeType() == ::fcl::GEOM_CAPSULE)
+        r = static_cast<double>(static_cast<const ::fcl::Capsule<S>&>(g).radius);
+    if (!std::isfinite(r)) throw InputError("fcl_radius: a radius that is a NaN or an infinity");
+    return exact(r);
+}
+
+// The scene of the two geometries, each in its own frame (scaling ranges [1, 1]); with a sphere or
+// a capsule, a scene of objects with a radius (Scene::with_radii).
 template <class S>
 Scene fcl_scene(const ::fcl::CollisionGeometry<S>& g1, const ::fcl::CollisionGeometry<S>& g2) {
-    return Scene(fcl_points(g1), fcl_points(g2), {}, {});
+    const Rational r1 = fcl_radius(g1), r2 = fcl_radius(g2);
+    if (sgn(r1) == 0 && sgn(r2) == 0) return Scene(fcl_points(g1), fcl_points(g2), {}, {});
+    return Scene::with_radii(fcl_points(g1), fcl_points(g2), {r1, r2});
 }
 
 // fcl::collide's result (CLAIMS.md, "Engines' conventions", FCL): the verdict intersecting when it

@@ -168,12 +168,12 @@ BOOST_AUTO_TEST_CASE(fcl_box_manifold_claims_its_deepest_contact) {
     BOOST_TEST(j.items[1].right == (*j.items[1].value_right && *j.items[1].direction_right));
 }
 
-// What the FCL adapter refuses (a sphere, a transform with a NaN) and what it judges wrong (a NaN
+// What the FCL adapter refuses (a cylinder, a transform with a NaN) and what it judges wrong (a NaN
 // in a result: no answer).
 BOOST_AUTO_TEST_CASE(fcl_refusals_and_no_answers) {
-    fcl::Sphered ball(1);
+    fcl::Cylinderd can(1, 2);
     const auto cube = fcl_cube();
-    BOOST_CHECK_THROW(scalecert::fcl_points<double>(ball), scalecert::InputError);
+    BOOST_CHECK_THROW(scalecert::fcl_points<double>(can), scalecert::InputError);
     fcl::Transform3d bad = moved(NAN, 0, 0);
     BOOST_CHECK_THROW(scalecert::fcl_pose(bad), scalecert::InputError);
     fcl::DistanceRequestd dq;
@@ -251,14 +251,116 @@ BOOST_AUTO_TEST_CASE(bullet_results_by_hand) {
     BOOST_TEST(j.items[0].right == (std::fabs(-r.distance - 0.25) <= 1e-6 && std::fabs(r.normal.x() + 1) <= 1e-6));
 }
 
-// Bullet's margin is refused until objects with a radius are judged; so is a sphere.
-BOOST_AUTO_TEST_CASE(bullet_refusals) {
+// Bullet's margins: a box's lies inside its half-extents (0.5 − 0.04), a sphere's is its radius; a
+// cylinder is refused.
+BOOST_AUTO_TEST_CASE(bullet_margins_and_refusals) {
     btBoxShape box(btVector3(0.5, 0.5, 0.5));  // Bullet's default margin, 0.04
-    btSphereShape ball(1);
-    BOOST_CHECK_THROW(scalecert::bullet_points(box), scalecert::InputError);
-    ball.setMargin(0);
-    BOOST_CHECK_THROW(scalecert::bullet_points(ball), scalecert::InputError);
-    box.setMargin(0);
     const std::vector<scalecert::Point> p = scalecert::bullet_points(box);
     BOOST_TEST(p.size() == 8u);
+    BOOST_TEST((p[7][0] == scalecert::exact(static_cast<double>(btScalar(0.5) - btScalar(0.04)))));
+    BOOST_TEST((scalecert::bullet_radius(box) == scalecert::exact(static_cast<double>(btScalar(0.04)))));
+    btSphereShape ball(1);
+    BOOST_TEST((scalecert::bullet_radius(ball) == 1));
+    BOOST_TEST(scalecert::bullet_points(ball).size() == 1u);
+    btCylinderShape can(btVector3(1, 1, 1));
+    BOOST_CHECK_THROW(scalecert::bullet_points(can), scalecert::InputError);
+}
+
+// Objects with a radius as FCL and Bullet collide them (CLAIMS.md, "Objects with a radius"): a
+// sphere of radius 1 at 0 and one of radius 2 on the x axis; a capsule of radius 1/4 and
+// half-length 1 along z against a unit cube; Bullet's hull cubes inflated by their default
+// margin. Each exact value is derived here, and each judgement is that the result lies within the
+// tolerance of it.
+BOOST_AUTO_TEST_CASE(round_shapes_by_hand) {
+    const R abs("1/1000000");
+    auto within = [](double said, double exact) { return std::fabs(said - exact) <= 1e-6; };
+    // FCL: at 5 apart the distance is 5 − 3 = 2; at 2.5 the depth is 1/2 along x.
+    auto one = std::make_shared<fcl::Sphered>(1), two = std::make_shared<fcl::Sphered>(2);
+    fcl::CollisionObjectd a(one, moved(0, 0, 0)), b(two, moved(5, 0, 0));
+    fcl::DistanceRequestd dq;
+    fcl::DistanceResultd dr;
+    fcl::distance(&a, &b, dq, dr);
+    const scalecert::Scene spheres = scalecert::fcl_scene<double>(*one, *two);
+    scalecert::Judgements j = judge(spheres, scalecert::fcl_claims(dq, dr, a.getTransform(), b.getTransform()), abs);
+    BOOST_TEST(j.items[0].exact == 2);
+    BOOST_TEST(j.items[0].right == within(dr.min_distance, 2));
+    b.setTransform(moved(2.5, 0, 0));
+    fcl::CollisionRequestd cq(1, true);
+    fcl::CollisionResultd cr;
+    fcl::collide(&a, &b, cq, cr);
+    BOOST_TEST_REQUIRE(cr.numContacts() > 0u);
+    j = judge(spheres, scalecert::fcl_claims(cq, cr, a.getTransform(), b.getTransform()), abs);
+    BOOST_TEST(j.items[0].right);  // intersecting
+    BOOST_TEST(j.items[1].exact == 0.5);
+    const auto& n = cr.getContact(0).normal;
+    BOOST_TEST(j.items[1].right == (within(cr.getContact(0).penetration_depth, 0.5) && within(n[0], 1) &&
+                                    within(n[1], 0) && within(n[2], 0)));
+    // An FCL capsule (radius 1/4, lz 2) against the unit cube centred at (0.7, 0, 0): its face
+    // x = 0.2 is 0.2 from the axis, so S = 0.2 − 0.25 = −0.05 (0.7 − 0.5 in doubles: exact to 1e-16).
+    auto cap = std::make_shared<fcl::Capsuled>(0.25, 2);
+    const auto cube = fcl_cube();
+    fcl::CollisionObjectd c(cap, moved(0, 0, 0)), d(cube, moved(0.7, 0, 0));
+    fcl::DistanceRequestd sq;
+    sq.enable_signed_distance = true;
+    fcl::DistanceResultd sr;
+    fcl::distance(&c, &d, sq, sr);
+    j = judge(scalecert::fcl_scene<double>(*cap, *cube),
+              scalecert::fcl_claims(sq, sr, c.getTransform(), d.getTransform()), abs);
+    BOOST_TEST(std::fabs(j.items[0].exact + 0.05) <= 1e-15);
+    BOOST_TEST(j.items[0].right == within(sr.min_distance, -0.05));
+
+    // Bullet: the two spheres 2.5 apart, a manifold of distance −1/2; two hull cubes with the default
+    // margin whose faces touch, inflated they overlap by twice the margin.
+    btSphereShape s1(1), s2(2);
+    btDefaultCollisionConfiguration cfg;
+    btCollisionDispatcher dispatcher(&cfg);
+    btDbvtBroadphase broadphase;
+    btCollisionWorld world(&dispatcher, &broadphase, &cfg);
+    btCollisionObject oa, ob;
+    oa.setCollisionShape(&s1);
+    ob.setCollisionShape(&s2);
+    oa.setWorldTransform(bt_moved(0, 0, 0));
+    ob.setWorldTransform(bt_moved(2.5, 0, 0));
+    world.addCollisionObject(&oa);
+    world.addCollisionObject(&ob);
+    world.performDiscreteCollisionDetection();
+    BOOST_TEST_REQUIRE(dispatcher.getNumManifolds() == 1);
+    const btPersistentManifold& m = *dispatcher.getManifoldByIndexInternal(0);
+    BOOST_TEST_REQUIRE(m.getNumContacts() > 0);
+    j = judge(scalecert::bullet_scene(m), scalecert::bullet_claims(m), abs);
+    BOOST_TEST(j.items[0].exact == -0.5);
+    BOOST_TEST(j.items[0].right == within(m.getContactPoint(0).getDistance(), -0.5));
+    world.removeCollisionObject(&oa);
+    world.removeCollisionObject(&ob);
+    auto hull = bullet_cube();
+    hull->setMargin(btScalar(0.04));
+    const double margin2 = 2 * static_cast<double>(btScalar(0.04));
+    btCollisionObject oc, od;
+    oc.setCollisionShape(hull.get());
+    od.setCollisionShape(hull.get());
+    oc.setWorldTransform(bt_moved(0, 0, 0));
+    od.setWorldTransform(bt_moved(1, 0, 0));
+    world.addCollisionObject(&oc);
+    world.addCollisionObject(&od);
+    world.performDiscreteCollisionDetection();
+    const btPersistentManifold& mh = *dispatcher.getManifoldByIndexInternal(0);
+    BOOST_TEST_REQUIRE(mh.getNumContacts() > 0);
+    j = judge(scalecert::bullet_scene(mh), scalecert::bullet_claims(mh), abs);
+    BOOST_TEST(j.items[0].exact == -margin2);
+    BOOST_TEST(j.items[0].right == within(mh.getContactPoint(0).getDistance(), -margin2));
+    world.removeCollisionObject(&oc);
+    world.removeCollisionObject(&od);
+    // btGjkEpaSolver2: Distance ignores the margins (the hulls 2 apart at x = 3), Penetration
+    // counts them (at x = 3/4 the depth is 1/4 + twice the margin).
+    btGjkEpaSolver2::sResults r;
+    const btTransform A = bt_moved(0, 0, 0), apart = bt_moved(3, 0, 0), deep = bt_moved(0.75f, 0, 0);
+    BOOST_TEST_REQUIRE(btGjkEpaSolver2::Distance(hull.get(), A, hull.get(), apart, btVector3(1, 0, 0), r));
+    j = judge(scalecert::bullet_scene(*hull, *hull, false), scalecert::bullet_distance_claims(r, A, apart), abs);
+    BOOST_TEST(j.items[0].exact == 2);
+    BOOST_TEST(j.items[0].right == within(r.distance, 2));
+    btGjkEpaSolver2::Penetration(hull.get(), A, hull.get(), deep, btVector3(1, 0, 0), r);
+    j = judge(scalecert::bullet_scene(*hull, *hull), scalecert::bullet_penetration_claims(r, A, deep), abs);
+    BOOST_TEST(std::fabs(j.items[0].exact - (0.25 + margin2)) <= 1e-15);
+    BOOST_TEST(j.items[0].right == (within(-r.distance, 0.25 + margin2) && within(r.normal.x(), -1) &&
+                                    within(r.normal.y(), 0) && within(r.normal.z(), 0)));
 }
