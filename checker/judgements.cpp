@@ -54,9 +54,6 @@ class Polytopes : public Bodies {
     const Scene& sc_;
 };
 
-Q reach_min(Context& cx, const Scene& sc, int i, const V3& n, const Q& rho) {
-    return -reach(cx, sc, i, {-n[0], -n[1], -n[2]}, rho);
-}
 // A curve proof: the exact curve over its window [a, b] (check_curve), 0 <= a < b.
 struct Window {
     CurveFacts f;
@@ -268,23 +265,6 @@ bool judge_at_poses(Context& cx, const Scene& sc, const Rules& R, const Judgemen
     check_claimed_verdict(cx, c, j.wc);
     const std::optional<Q> E = proved_depth(cx, posed, at(pr, "depth"), j.wp + ".depth", r1, r2);
     return verdict_right(c, !E ? "separated" : sgn(*E) == 0 ? "touching" : "overlapping");
-}
-
-// A distance proof {"squared", "P1", "P2"} (shape checked by the caller): p in P1(r1), q in
-// P2(r2), E = |q − p|², and when E > 0 no point of P1 beyond p along q − p nor of P2 before q.
-// Returns E, the exact squared distance.
-Q proved_distance_sq(Context& cx, const Scene& sc, const J& pr, const std::string& wp, const Q& r1, const Q& r2) {
-    const Q E = num(cx, at(pr, "squared"), wp + ".squared");
-    const V3 p = body_point(cx, sc, 0, r1, at(pr, "P1"), wp + ".P1"),
-             q = body_point(cx, sc, 1, r2, at(pr, "P2"), wp + ".P2");
-    cx.spend_ops(12, 2 * (vsize(p) + vsize(q)) + qsize(E));
-    const V3 u = sub(q, p);
-    cx.claim(dot(u, u) == E, wp + ".squared is |q − p|² of its closest points");
-    if (sgn(E) > 0) {
-        cx.claim(reach(cx, sc, 0, u, r1) == dot(u, p), wp + ": no point of P1 lies beyond p along q − p");
-        cx.claim(reach_min(cx, sc, 1, u, r2) == dot(u, q), wp + ": no point of P2 lies before q along q − p");
-    }
-    return E;
 }
 
 // A signed distance (CLAIMS.md): proved apart by a distance proof ({"distance": ...}, E > 0: s√E

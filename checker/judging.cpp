@@ -41,6 +41,25 @@ bool Rules::close_signed(Context& cx, const Q& c, int s, const Q& E) const {
     // c − abs − tol√E <= s√E <= c + abs + tol√E
     return sign_minus_sqrt(c - abs, s + tol, E) <= 0 && sign_minus_sqrt(c + abs, s - tol, E) >= 0;
 }
+bool Rules::close_value(Context& cx, const Q& c, int s, const Q& E, const Q& k) const {
+    cx.spend_ops(14, 2 * qsize(c) + qsize(E) + 2 * qsize(k) + 2 * qsize(tol) + 2 * qsize(abs));
+    // With σ the sign of x = k + s√E, |x| = σx, and |c − x| <= abs + tol·σx is two bounds on x,
+    // each of the form a + b√E <= 0 with t = tol·σ:
+    //   c − x <= abs + t·x:  (c − abs − (1 + t)k) − (1 + t)s√E <= 0
+    //   x − c <= abs + t·x:  ((1 − t)k − c − abs) + (1 − t)s√E <= 0
+    const Q t = tol * sign_minus_sqrt(k, Q(-s), E), up = 1 + t, down = 1 - t;
+    return sign_minus_sqrt(c - abs - up * k, up * s, E) <= 0 && sign_minus_sqrt(down * k - c - abs, -down * s, E) <= 0;
+}
+int sign_two_roots(const Q& a, const Q& b, const Q& A, const Q& c, const Q& E) {
+    const int u = sign_minus_sqrt(a, -b, A);  // the sign of u = a + b√A
+    const int v = sgn(E) == 0 ? 0 : sgn(c);   // the sign of v = c√E
+    if (u == 0) return v;
+    if (v == 0 || u == v) return u;
+    // Opposite signs: u + v has the sign of the larger in magnitude, and
+    // u² − v² = (a² + b²A − c²E) + 2ab√A.
+    const int d = sign_minus_sqrt(a * a + b * b * A - c * c * E, -2 * a * b, A);
+    return d == 0 ? 0 : d > 0 ? u : v;
+}
 bool Rules::within_abs(Context& cx, const Q& x, const Q& N) const {
     cx.spend_ops(6, qsize(x) + qsize(N) + 2 * qsize(abs));
     return sign_minus_sqrt(x, abs, N) <= 0;
@@ -101,6 +120,10 @@ Q reach(Context& cx, const Scene& sc, int i, const V3& n, const Q& rho) {
     Q h(sc.support_at(cx, i, u, best[0]), sc.Dj * L);
     h.canonicalize();
     return dot(n, sc.s[i]) + rho * h;
+}
+
+Q reach_min(Context& cx, const Scene& sc, int i, const V3& n, const Q& rho) {
+    return -reach(cx, sc, i, {-n[0], -n[1], -n[2]}, rho);
 }
 
 V3 body_point(Context& cx, const Scan& P, const V3& s, const Q& rho, const J& w, const std::string& where,
@@ -369,6 +392,21 @@ bool judge_depth(Context& cx, const Scene& sc, const Rules& R, const J& pr, cons
         right = right && R.within_above(cx, along, E);
     }
     return right;
+}
+
+// The closest points p, q and the slab between them (judging.hpp).
+Q proved_distance_sq(Context& cx, const Scene& sc, const J& pr, const std::string& wp, const Q& r1, const Q& r2) {
+    const Q E = num(cx, at(pr, "squared"), wp + ".squared");
+    const V3 p = body_point(cx, sc, 0, r1, at(pr, "P1"), wp + ".P1"),
+             q = body_point(cx, sc, 1, r2, at(pr, "P2"), wp + ".P2");
+    cx.spend_ops(12, 2 * (vsize(p) + vsize(q)) + qsize(E));
+    const V3 u = sub(q, p);
+    cx.claim(dot(u, u) == E, wp + ".squared is |q − p|² of its closest points");
+    if (sgn(E) > 0) {
+        cx.claim(reach(cx, sc, 0, u, r1) == dot(u, p), wp + ": no point of P1 lies beyond p along q − p");
+        cx.claim(reach_min(cx, sc, 1, u, r2) == dot(u, q), wp + ": no point of P2 lies before q along q − p");
+    }
+    return E;
 }
 
 }  // namespace scalecert_check

@@ -32,9 +32,13 @@ struct Rules {
     bool within_abs(Context& cx, const Q& x, const Q& N) const;
     // a signed length c against the exact s·√E (s = 1, 0 or −1): |c − s√E| <= abs + tol·√E
     bool close_signed(Context& cx, const Q& c, int s, const Q& E) const;
+    // a value c against the exact x = s·√E + k (s = 1, 0 or −1): |c − x| <= abs + tol·|x|
+    bool close_value(Context& cx, const Q& c, int s, const Q& E, const Q& k) const;
 };
 // The sign of a − k·√E (E >= 0), exactly.
 int sign_minus_sqrt(const Q& a, const Q& k, const Q& E);
+// The sign of a + b·√A + c·√E (A, E >= 0), exactly: by squaring with signs.
+int sign_two_roots(const Q& a, const Q& b, const Q& A, const Q& c, const Q& E);
 // The file's `tolerance` (an exact number >= 0) and its optional `abs_tolerance` (> 0).
 Rules read_rules(Context& cx, const J& c);
 // "N right, M wrong, tolerance T" for the line printed for a valid file. A long tolerance is
@@ -55,6 +59,8 @@ V3 nonzero_vector(Context& cx, const J& j, const std::string& where);
 // max over P_i(rho) of n·x, for a nonzero rational n: n·s_i + rho max_v n·(v − s_i), the maximum a
 // scan of every vertex of polyhedron i.
 Q reach(Context& cx, const Scene& sc, int i, const V3& n, const Q& rho);
+// min over P_i(rho) of n·x.
+Q reach_min(Context& cx, const Scene& sc, int i, const V3& n, const Q& rho);
 // s + rho (Σ w v − s) for weights over the vertices of a polytope P (combination()) scaled by rho
 // about s: a point of polyhedron i of a scene, or of a compound's part.
 V3 body_point(Context& cx, const Scan& P, const V3& s, const Q& rho, const J& w, const std::string& where,
@@ -152,6 +158,10 @@ struct Closest {
 };
 Closest closest_points(Context& cx, const Bodies& B, const Judgement& j, const Q& r1, const Q& r2);
 
+// A distance proof {"squared", "P1", "P2"} (its shape checked by the caller) on the two polytopes
+// of the scene at (r1, r2): p in P1(r1), q in P2(r2), E = |q − p|², and when E > 0 no point of P1
+// beyond p along q − p nor of P2 before q. Returns E, the exact squared distance.
+Q proved_distance_sq(Context& cx, const Scene& sc, const J& pr, const std::string& wp, const Q& r1, const Q& r2);
 // The depth a depth proof shows on the two polytopes of the scene at (r1, r2): none for a
 // separated pair (its proof a separating normal), 0 for a touching pair, else the squared depth
 // (FORMAT.md).
