@@ -138,20 +138,32 @@ std::shared_ptr<const Scan> Vertices::scan(Context& cx, const std::string& what)
     return std::make_shared<const Scan>(cx, std::move(ints_));
 }
 
-Scene read_scene(Context& cx, const J& j) {
+Scene read_scene(Context& cx, const J& j, bool radius) {
     shape(cx, j, "scene", {"P1", "P2", "I1", "I2"});
     Scene sc;
+    // Objects with a radius carry it both (a scene without one is read as it always was).
+    sc.rounded = radius && (at(j, "P1").contains("radius") || at(j, "P2").contains("radius"));
     for (int i = 0; i < 2; ++i) {
         const std::string w = std::string("scene.") + kPoly[i];
         const J& p = at(j, kPoly[i]);
-        shape(cx, p, w, {"vertices", "seed"});
+        if (sc.rounded) {
+            shape(cx, p, w, {"vertices", "seed", "radius"});
+            sc.r[i] = num(cx, at(p, "radius"), w + ".radius");
+            cx.claim(sgn(sc.r[i]) >= 0, w + ".radius is >= 0");
+        } else {
+            shape(cx, p, w, {"vertices", "seed"});
+        }
         const J& vs = at(p, "vertices");
         cx.claim(Vertices::is_list(cx, vs), w + ".vertices is a list");
         Vertices v(cx, vs, w + ".vertices");
-        cx.claim(v.size() >= 4, w + " has at least 4 vertices");
+        if (sgn(sc.r[i]) > 0)  // a sphere is one point, a capsule two
+            cx.claim(v.size() >= 1, w + " has at least 1 vertex");
+        else
+            cx.claim(v.size() >= 4, w + " has at least 4 vertices");
         sc.s[i] = point(cx, at(p, "seed"), w + ".seed");
         sc.scan[i] = v.scan(cx, kPoly[i]);
     }
+    if (sc.rounded) cx.claim(sgn(sc.r[0]) > 0 || sgn(sc.r[1]) > 0, "scene: a radius is > 0 (else it carries none)");
     sc.prepare(cx);
     read_ranges(cx, sc.lo, sc.hi, j);
     return sc;
@@ -270,7 +282,9 @@ Scene posed_scene(Context& cx, const Scene& sc, const std::array<std::optional<P
         out.s[i] = posed_point(sc.s[i], pose[i]);
         out.lo[i] = sc.lo[i];
         out.hi[i] = sc.hi[i];
+        out.r[i] = sc.r[i];  // a pose moves the hull: the ball stays a ball of the same radius
     }
+    out.rounded = sc.rounded;
     out.prepare(cx);
     return out;
 }
@@ -315,13 +329,15 @@ std::array<Q, 3> combination(Context& cx, const Scan& P, const J& w, const std::
 
 void check_seed_interior(Context& cx, const Scene& sc, const J& j) {
     shape(cx, j, "seed_interior", {"P1", "P2"});
-    for (int i = 0; i < 2; ++i) {
-        std::string w = std::string("seed_interior.") + kPoly[i];
-        std::vector<int> used;
-        cx.claim(combination(cx, *sc.scan[i], at(j, kPoly[i]), w, &used) == sc.sdv[i], w + " combines to the seed");
-        const bool spans = affine_dim(cx, sc, i, used) == 3;
-        cx.claim(spans, w + " uses vertices spanning 3 dimensions");
-    }
+    for (int i = 0; i < 2; ++i)
+        check_seed_weights(cx, sc, i, at(j, kPoly[i]), std::string("seed_interior.") + kPoly[i]);
+}
+
+void check_seed_weights(Context& cx, const Scene& sc, int i, const J& w, const std::string& where) {
+    std::vector<int> used;
+    cx.claim(combination(cx, *sc.scan[i], w, where, &used) == sc.sdv[i], where + " combines to the seed");
+    const bool spans = affine_dim(cx, sc, i, used) == 3;
+    cx.claim(spans, where + " uses vertices spanning 3 dimensions");
 }
 
 // The point is s + ρ Σ λ (v − s) on each side. With c = Σ λ X / D_i (combination()), the point

@@ -27,6 +27,10 @@ inline constexpr const char* kPoly[2] = {"P1", "P2"};
 struct Scene {
     V3 s[2];
     Q lo[2], hi[2];
+    // Objects with a radius (a judgements file only: FORMAT.md, "Objects with a radius"): object i
+    // is every point within r[i] of the hull of its vertices. rounded: the scene gives both radii.
+    bool rounded = false;
+    Q r[2];
     std::shared_ptr<const Scan> scan[2];  // (shared: a compound's pair scenes hold its parts' scans)
     mpz_class Dj = 1, E[2];               // D* and D*/D_i
     Z3 S[2], Delta;                       // D* s_i and D* (s2 − s1)
@@ -89,8 +93,10 @@ class Vertices {
 };
 
 // The scene object of a partition, a query answer or a judgements file: two polyhedra of at
-// least 4 vertices, their seeds, I1 and I2.
-Scene read_scene(Context& cx, const J& j);
+// least 4 vertices, their seeds, I1 and I2. With `radius` (a judgements file), the objects may
+// both carry a "radius" >= 0, one of them > 0; an object with a radius > 0 may have any number of
+// vertices from 1.
+Scene read_scene(Context& cx, const J& j, bool radius = false);
 // A pose [R | t] (three rows of four exact numbers): x -> R·x + t.
 using Pose = std::array<std::array<Q, 4>, 3>;
 // A claim's "pose1" and "pose2" (each three rows of four exact numbers, R nonsingular), and the
@@ -130,6 +136,8 @@ std::array<Q, 3> combination(Context& cx, const Scan& P, const J& w, const std::
                              std::vector<int>* used = nullptr);
 // The seed is a strictly positive combination of vertices that span 3 dimensions: interior.
 void check_seed_interior(Context& cx, const Scene& sc, const J& j);
+// The same for polyhedron i alone, its weights w named `where`.
+void check_seed_weights(Context& cx, const Scene& sc, int i, const J& w, const std::string& where);
 // A witness: a common point of P1(ρ1) and P2(ρ2). Returns (ρ1, ρ2); the vertices each side
 // weights are appended to used[0], used[1].
 P2 check_witness(Context& cx, const Scene& sc, const J& w, const std::string& where, std::vector<int>* used = nullptr);
