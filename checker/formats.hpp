@@ -1,7 +1,7 @@
 // The five kinds of certificate scalecert-check reads, one module each (certificates/FORMAT.md):
 //   partition.cpp            "Fields of a partition file", "Why a file that passes proves the partition"
 //   query.cpp                a query answer (the end of "Why a file that passes proves the partition")
-//   judgements.cpp           "A judgements file"
+//   judgements.cpp           "A judgements file" (rounded.cpp: its "Objects with a radius")
 //   compound_partition.cpp   "A compound partition"
 //   compound_judgements.cpp  "A compound judgements file"
 // Each takes the whole file's JSON value, checks every claim (Invalid at the first that fails,

@@ -2,12 +2,14 @@
 // judgements on two convex polytopes, each re-derived from its claim and its proof by CLAIMS.md's
 // rules and the file's tolerance; the file's "right" must be the judgement these rules give. The
 // scene and its seeds' interior weights are a partition's; a verdict's proof is a query answer's
-// certificate (query.cpp), a curve proof is a partition's curve over a window (curve.cpp).
+// certificate (query.cpp), a curve proof is a partition's curve over a window (curve.cpp). A scene
+// whose objects carry a radius is judged by rounded.cpp.
 #include "curve.hpp"
 #include "formats.hpp"
 #include "judging.hpp"
 #include "json.hpp"
 #include "numbers.hpp"
+#include "rounded.hpp"
 #include "scene.hpp"
 
 #include <algorithm>
@@ -389,10 +391,20 @@ bool judge(Context& cx, const Scene& sc, const Rules& R, const Judgement& j) {
 
 void check_judgements(Context& cx, const J& c) {
     shape(cx, c, "", {"format", "kind", "tolerance", "judgements", "seed_interior", "scene"}, {"abs_tolerance"});
-    const Scene sc = read_scene(cx, at(c, "scene"));
+    const Scene sc = read_scene(cx, at(c, "scene"), true);
+    const J& js = at(c, "judgements");
+    if (sc.rounded) {  // objects with a radius (rounded.cpp): the six kinds of a pair
+        check_rounded_seeds(cx, sc, at(c, "seed_interior"));
+        const Rules R = read_rules(cx, c);
+        const size_t rights = judge_all(
+            cx, js,
+            {"verdict", "separating_plane", "witness_point", "distance", "penetration_depth", "signed_distance"},
+            [&](const Judgement& j) { return judge_rounded(cx, sc, R, j); });
+        cx.summary = "; judgements on objects with a radius: " + judged(rights, js.size(), R);
+        return;
+    }
     check_seed_interior(cx, sc, at(c, "seed_interior"));
     const Rules R = read_rules(cx, c);
-    const J& js = at(c, "judgements");
     const size_t rights = judge_all(cx, js,
                                     {"verdict", "growth_distance", "separating_plane", "witness_point", "distance",
                                      "penetration_depth", "signed_distance", "curve", "switch_point", "curve_point"},

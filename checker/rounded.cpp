@@ -1,0 +1,215 @@
+// Judgements on objects with a radius (rounded.hpp): each proof is one about the hulls, in the
+// forms judgements.cpp checks (a distance proof, a depth proof), and each rule of CLAIMS.md's table
+// compares a number of the form a + b·√E (or with two roots) exactly, by squaring with signs.
+#include "rounded.hpp"
+
+#include "judging.hpp"
+#include "json.hpp"
+#include "numbers.hpp"
+#include "scene.hpp"
+
+#include <optional>
+
+namespace scalecert_check {
+namespace {
+// Is x in object i at rho: within m = rho·r_i of its scaled hull C_i(rho), or within abs more?
+// Proved by {"within": weights}, whose point p = s + rho (Σ w v − s) of the hull has |x − p| <= m;
+// at abs > 0 by {"near": weights}, |x − p| <= m + abs; or by {"out": n}, with
+// n·x − max over C_i(rho) of n·y > (m + abs)·|n|: every point of the hull is farther than m + abs
+// from x. Compared in squares (m + abs >= 0).
+bool in_object(Context& cx, const Scene& sc, int i, const Q& rho, const V3& x, const J& p, const std::string& where,
+               const Q& abs) {
+    const bool near = sgn(abs) > 0 && p.is_object() && p.contains("near");
+    cx.claim(p.is_object() && p.size() == 1 && (p.contains("within") || p.contains("out") || near),
+             where + (sgn(abs) > 0 ? " is {\"within\": weights}, {\"near\": weights} or {\"out\": normal}"
+                                   : " is {\"within\": weights} or {\"out\": normal}"));
+    const Q m = rho * sc.r[i];
+    if (p.contains("out")) {
+        const V3 n = normal(cx, at(p, "out"), where + ".out");
+        const Q h = reach(cx, sc, i, n, rho);
+        cx.spend_ops(12, 2 * vsize(n) + vsize(x) + qsize(h) + 2 * qsize(m) + 2 * qsize(abs));
+        cx.claim(sign_minus_sqrt(dot(n, x) - h, m + abs, dot(n, n)) > 0,
+                 where + ".out: the point lies more than rho·radius" + (sgn(abs) > 0 ? " + abs_tolerance" : "") +
+                     " beyond the hull's extent along the normal");
+        return false;
+    }
+    const char* key = near ? "near" : "within";
+    const V3 y = body_point(cx, sc, i, rho, at(p, key), where + "." + key);
+    const Q far = near ? m + abs : m;
+    cx.spend_ops(8, vsize(x) + vsize(y) + 2 * qsize(far));
+    const V3 d = sub(x, y);
+    cx.claim(dot(d, d) <= far * far, where + "." + key + " combines to a point within rho·radius" +
+                                         (near ? " + abs_tolerance" : "") + " of the point");
+    return true;
+}
+
+// The hulls' signed distance s·√E at (r1, r2) (s = 1 apart, 0 touching, −1 overlapping).
+struct Signed {
+    int s;
+    Q E;
+};
+// By the proof {"distance": a distance proof} of a squared distance E > 0 (apart), or {"depth": a
+// depth proof} of a touching pair (E = 0) or of an overlapping one (E the squared depth). A depth
+// proof's {"separated": n} shows the hulls apart but not how far, which the radii need: refused.
+Signed hulls(Context& cx, const Scene& sc, const J& pr, const std::string& wp, const Q& r1, const Q& r2) {
+    if (pr.contains("distance")) {
+        shape(cx, pr, wp, {"distance"});
+        const J& d = at(pr, "distance");
+        shape(cx, d, wp + ".distance", {"squared", "P1", "P2"});
+        const Q E = proved_distance_sq(cx, sc, d, wp + ".distance", r1, r2);
+        cx.claim(sgn(E) > 0, wp + ".distance proves the hulls apart (squared > 0)");
+        return {1, E};
+    }
+    shape(cx, pr, wp, {"depth"});
+    const J& d = at(pr, "depth");
+    cx.claim(!d.contains("separated"),
+             wp + ".depth is a touching or overlapping pair's (hulls apart take a distance proof: the radii need "
+                  "how far apart they are)");
+    const std::optional<Q> E = proved_depth(cx, sc, d, wp + ".depth", r1, r2);
+    return {sgn(*E) == 0 ? 0 : -1, *E};
+}
+
+// The pair's state: the objects are D − R apart, D = √E the hulls' distance. Hulls that meet make
+// the objects overlap, as R > 0 (a ball of radius > 0 about a common point lies in one object
+// and meets the other's interior).
+std::string pair_state(Context& cx, const Signed& h, const Q& R) {
+    if (h.s <= 0) return "overlapping";
+    cx.spend_ops(2, qsize(h.E) + 2 * qsize(R));
+    const int c = cmp(h.E, R * R);
+    return c > 0 ? "separated" : c == 0 ? "touching" : "overlapping";
+}
+}  // namespace
+
+void check_rounded_seeds(Context& cx, const Scene& sc, const J& j) {
+    shape(cx, j, "seed_interior", {"P1", "P2"});
+    for (int i = 0; i < 2; ++i) {
+        const std::string w = std::string("seed_interior.") + kPoly[i];
+        const J& p = at(j, kPoly[i]);
+        if (sgn(sc.r[i]) == 0) {  // a polyhedron
+            check_seed_weights(cx, sc, i, p, w);
+            continue;
+        }
+        // A point y of the hull with |s − y| < r: the ball of radius r − |s − y| about s lies in
+        // the object.
+        shape(cx, p, w, {"within"});
+        const V3 y = body_point(cx, sc, i, Q(1), at(p, "within"), w + ".within");
+        cx.spend_ops(8, vsize(y) + vsize(sc.s[i]) + 2 * qsize(sc.r[i]));
+        const V3 d = sub(sc.s[i], y);
+        cx.claim(dot(d, d) < sc.r[i] * sc.r[i],
+                 w + ".within combines to a point nearer the seed than the radius (the seed is interior)");
+    }
+}
+
+bool judge_rounded(Context& cx, const Scene& sc, const Rules& R, const Judgement& j) {
+    const J &cl = j.claim, &pr = j.proof;
+    const std::string &kind = j.kind, &wc = j.wc, &wp = j.wp;
+    // At poses: the same claim on the scene moved by them (the hulls move, the radii stay).
+    if (cl.contains("pose1") || cl.contains("pose2")) {
+        J bare;
+        const std::array<std::optional<Pose>, 2> pose = claim_poses(cx, cl, wc, bare);
+        const Scene posed = posed_scene(cx, sc, pose);
+        return judge_rounded(cx, posed, R, Judgement{bare, pr, kind, j.where, wc, wp});
+    }
+    if (kind == "verdict")
+        shape(cx, cl, wc, {"kind", "rho1", "rho2", "verdict"});
+    else if (kind == "separating_plane")
+        shape(cx, cl, wc, {"kind", "rho1", "rho2", "normal"}, {"offset"});
+    else if (kind == "witness_point")
+        shape(cx, cl, wc, {"kind", "rho1", "rho2", "point"});
+    else if (kind == "distance")
+        shape(cx, cl, wc, {"kind", "rho1", "rho2", "value"}, {"closest"});
+    else if (kind == "penetration_depth")
+        shape(cx, cl, wc, {"kind", "rho1", "rho2", "value"}, {"direction"});
+    else
+        shape(cx, cl, wc, {"kind", "rho1", "rho2"}, {"value", "at_least", "below"});
+    const Q r1 = positive(cx, cl, "rho1", wc), r2 = positive(cx, cl, "rho2", wc);
+    cx.spend_ops(3, qsize(r1) + qsize(r2) + qsize(sc.r[0]) + qsize(sc.r[1]));
+    const Q m1 = r1 * sc.r[0], m2 = r2 * sc.r[1], Rr = m1 + m2;  // the radii at (r1, r2), and R
+    const Q k = 1 + R.tol;
+
+    if (kind == "verdict") {
+        cx.claim(at(cl, "verdict").is_string(), wc + ".verdict is a string");
+        const std::string c = at(cl, "verdict").get<std::string>();
+        check_claimed_verdict(cx, c, wc);
+        return verdict_right(c, pair_state(cx, hulls(cx, sc, pr, wp, r1, r2), Rr));
+    }
+    if (kind == "separating_plane") {
+        // P1 reaches c1 + m1·|n|, P2 starts at c2 − m2·|n|, c1 and c2 the hulls' extents.
+        cx.claim(pr.empty(), wp + " is empty (the checker computes the extents)");
+        const V3 n = nonzero_vector(cx, at(cl, "normal"), wc + ".normal");
+        const Q c1 = reach(cx, sc, 0, n, r1), c2 = reach_min(cx, sc, 1, n, r2), N = dot(n, n);
+        std::optional<Q> o;
+        if (cl.contains("offset")) o = num(cx, at(cl, "offset"), wc + ".offset");
+        cx.spend_ops(12, 2 * (qsize(c1) + qsize(c2) + qsize(N) + qsize(Rr) + qsize(R.abs)) + (o ? qsize(*o) : 0));
+        if (sgn(R.abs) == 0) {  // strictly between
+            if (!o) return sign_minus_sqrt(c2 - c1, m1 + m2, N) > 0;
+            return sign_minus_sqrt(*o - c1, m1, N) > 0 && sign_minus_sqrt(c2 - *o, m2, N) > 0;
+        }
+        // Each object within abs·|n| of its side (with no offset: for some offset).
+        if (!o) return sign_minus_sqrt(c1 - c2, 2 * R.abs - m1 - m2, N) <= 0;
+        return sign_minus_sqrt(c1 - *o, R.abs - m1, N) <= 0 && sign_minus_sqrt(*o - c2, R.abs - m2, N) <= 0;
+    }
+    if (kind == "witness_point") {
+        shape(cx, pr, wp, {"P1", "P2"});
+        const V3 x = point(cx, at(cl, "point"), wc + ".point");
+        const bool in1 = in_object(cx, sc, 0, r1, x, at(pr, "P1"), wp + ".P1", R.abs),
+                   in2 = in_object(cx, sc, 1, r2, x, at(pr, "P2"), wp + ".P2", R.abs);
+        return in1 && in2;
+    }
+    if (kind == "distance") {
+        const bool closest = cl.contains("closest");
+        if (closest)
+            shape(cx, pr, wp, {"squared", "P1", "P2", "closest"});
+        else
+            shape(cx, pr, wp, {"squared", "P1", "P2"});
+        const Q c = num(cx, at(cl, "value"), wc + ".value");
+        const Q E = proved_distance_sq(cx, sc, pr, wp, r1, r2);
+        // The objects are √E − R apart when the hulls are farther apart than R, else they meet (0).
+        cx.spend_ops(2, qsize(E) + 2 * qsize(Rr));
+        const bool apart = E > Rr * Rr;
+        bool right = apart ? R.close_value(cx, c, 1, E, -Rr) : R.close_value(cx, c, 0, Q(0), Q(0));
+        if (!closest) return right;
+        const J& cp = at(cl, "closest");
+        cx.claim(cp.is_array() && cp.size() == 2, wc + ".closest is [point, point]");
+        const V3 a = point(cx, cp[0], wc + ".closest[0]"), b = point(cx, cp[1], wc + ".closest[1]");
+        const J& pc = at(pr, "closest");
+        shape(cx, pc, wp + ".closest", {"P1", "P2"});
+        const bool in1 = in_object(cx, sc, 0, r1, a, at(pc, "P1"), wp + ".closest.P1", R.abs),
+                   in2 = in_object(cx, sc, 1, r2, b, at(pc, "P2"), wp + ".closest.P2", R.abs);
+        cx.spend_ops(30, 2 * (vsize(a) + vsize(b) + qsize(E) + qsize(Rr) + qsize(k) + qsize(R.abs)));
+        const V3 ab = sub(b, a);
+        const Q x = dot(ab, ab);
+        // |b − a| <= k(√E − R) + 2·abs apart: (kR − 2·abs) + √x − k√E <= 0; <= 2·abs when they meet.
+        const bool near = apart ? sign_two_roots(k * Rr - 2 * R.abs, 1, x, -k, E) <= 0 : x <= 4 * R.abs * R.abs;
+        return right && in1 && in2 && near;
+    }
+    if (kind == "penetration_depth") {
+        const Q c = num(cx, at(cl, "value"), wc + ".value");
+        std::optional<V3> dir;
+        if (cl.contains("direction")) dir = nonzero_vector(cx, at(cl, "direction"), wc + ".direction");
+        const Signed h = hulls(cx, sc, pr, wp, r1, r2);
+        if (pair_state(cx, h, Rr) == "separated") return false;  // no depth
+        bool right = R.close_value(cx, c, -h.s, h.E, Rr);        // the depth R − s√E
+        if (dir) {
+            // Moved along u by t, P2 parts from P1 once t >= t(u) + R, t(u) = h_M(u)/|u| the hulls'
+            // signed extent (h_M(u) = g below): right when t(u) + R <= k·(R − s√E) + abs, that is
+            // (R − kR − abs) + sign(g)·√(g²/|u|²) + k·s·√E <= 0.
+            const V3& u = *dir;
+            const Q g = reach(cx, sc, 0, u, r1) - reach_min(cx, sc, 1, u, r2);
+            cx.spend_ops(30, 2 * (qsize(g) + vsize(u) + qsize(h.E) + qsize(Rr) + qsize(k) + qsize(R.abs)));
+            right = right && sign_two_roots(Rr - k * Rr - R.abs, sgn(g), g * g / dot(u, u), k * h.s, h.E) <= 0;
+        }
+        return right;
+    }
+    // signed_distance: x = s√E − R.
+    const int given = cl.contains("value") + cl.contains("at_least") + cl.contains("below");
+    cx.claim(given == 1, wc + " has one of value, at_least and below");
+    const std::string key = cl.contains("value") ? "value" : cl.contains("at_least") ? "at_least" : "below";
+    const Q c = num(cx, at(cl, key.c_str()), wc + "." + key);
+    const Signed h = hulls(cx, sc, pr, wp, r1, r2);
+    if (key == "value") return R.close_value(cx, c, h.s, h.E, -Rr);
+    cx.spend_ops(8, 2 * (qsize(c) + qsize(R.abs) + qsize(Rr)) + qsize(h.E));
+    if (key == "at_least") return sign_minus_sqrt(c - R.abs + Rr, h.s, h.E) <= 0;  // x >= c − abs
+    return sign_minus_sqrt(c + R.abs + Rr, h.s, h.E) > 0;                          // x < c + abs
+}
+}  // namespace scalecert_check
