@@ -167,7 +167,9 @@ bool judge_rounded(Context& cx, const Scene& sc, const Rules& R, const Judgement
         // The objects are √E − R apart when the hulls are farther apart than R, else they meet (0).
         cx.spend_ops(2, qsize(E) + 2 * qsize(Rr));
         const bool apart = E > Rr * Rr;
-        bool right = apart ? R.close_value(cx, c, 1, E, -Rr) : R.close_value(cx, c, 0, Q(0), Q(0));
+        // A length: at abs = 0 one below 0 is wrong, as on plain polyhedra.
+        bool right = (sgn(R.abs) > 0 || sgn(c) >= 0) &&
+                     (apart ? R.close_value(cx, c, 1, E, -Rr) : R.close_value(cx, c, 0, Q(0), Q(0)));
         if (!closest) return right;
         const J& cp = at(cl, "closest");
         cx.claim(cp.is_array() && cp.size() == 2, wc + ".closest is [point, point]");
@@ -189,7 +191,8 @@ bool judge_rounded(Context& cx, const Scene& sc, const Rules& R, const Judgement
         if (cl.contains("direction")) dir = nonzero_vector(cx, at(cl, "direction"), wc + ".direction");
         const Signed h = hulls(cx, sc, pr, wp, r1, r2);
         if (pair_state(cx, h, Rr) == "separated") return false;  // no depth
-        bool right = R.close_value(cx, c, -h.s, h.E, Rr);        // the depth R − s√E
+        // The depth R − s√E; a length: at abs = 0 one below 0 is wrong.
+        bool right = (sgn(R.abs) > 0 || sgn(c) >= 0) && R.close_value(cx, c, -h.s, h.E, Rr);
         if (dir) {
             // Moved along u by t, P2 parts from P1 once t >= t(u) + R, t(u) = h_M(u)/|u| the hulls'
             // signed extent (h_M(u) = g below): right when t(u) + R <= k·(R − s√E) + abs, that is

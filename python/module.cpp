@@ -594,7 +594,7 @@ py::dict certify_arrays(const CertifyFn& certify, const std::string& kind, const
         exact.append(g.exact_squared ? g.exact : NAN);
         rel.append(g.exact_squared ? g.rel_error : NAN);
         // (A depth claimed of a separated pair has no parts: each is wrong.)
-        vr.append(g.value_right.value_or(false));
+        vr.append(g.value_right.value_or(ck == ClaimKind::SignedDistance && g.right));  // its one answer
         cr.append(g.closest_right.value_or(false));
         dr.append(g.direction_right.value_or(false));
         if (fractions) sq.append(g.exact_squared ? fraction(*g.exact_squared) : py::object(py::none()));

@@ -122,8 +122,15 @@ std::pair<int, Vec3z> RoundedPoints::difference_span(const PointSets& S) const {
 
 MeasuredDepth hull_measure(const PointSets& S, int rank, const Vec3z& flat, const Q& rho1, const Q& rho2) {
     if (rank == 3) {
-        const std::optional<MeasuredDepth> md = measured_depth(S, rho1, rho2, kAll);
+        std::optional<MeasuredDepth> md = measured_depth(S, rho1, rho2, kAll);
         if (!md) throw std::logic_error("hull_measure: the depth did not close");
+        // Apart by a plane alone (the EPA's, when the doubles saw them meet): the radii need the
+        // hulls' distance, proved.
+        if (md->state == Verdict::Separated && md->distance.w1.empty()) {
+            const std::optional<ProvedDistance> pd = proved_distance(S, rho1, rho2, kAll);
+            if (!pd || sgn(pd->d.squared) <= 0) throw std::logic_error("hull_measure: a separating plane, no distance");
+            md->distance = pd->d;
+        }
         return *md;
     }
     const std::optional<ProvedDistance> pd = proved_distance(S, rho1, rho2, kAll);
@@ -295,8 +302,10 @@ Judged RoundedRules::judge(const TypedClaim& c, Proof* proof) {
         d.exact_p2 = e.p2;
         // √E − R when the objects are apart (E > R²), else 0.
         const bool apart = e.squared > R * R;
+        // A length: at LEN = 0 one below 0 is wrong, as on plain polyhedra (Tolerance::close_sq).
         d.value_right =
-            apart ? tol_.close_value(c.value, 1, e.squared, Q(-R)) : tol_.close_value(c.value, 0, Q(0), Q(0));
+            (sgn(tol_.abs) > 0 || sgn(c.value) >= 0) &&
+            (apart ? tol_.close_value(c.value, 1, e.squared, Q(-R)) : tol_.close_value(c.value, 0, Q(0), Q(0)));
         g.right = d.value_right;
         Json mp;
         if (c.closest) {
@@ -335,7 +344,7 @@ Judged RoundedRules::judge(const TypedClaim& c, Proof* proof) {
         d.root_sign = -s;
         d.exact_squared = E;
         d.exact_direction = md.normal;
-        d.value_right = tol_.close_value(c.value, -s, E, R);
+        d.value_right = (sgn(tol_.abs) > 0 || sgn(c.value) >= 0) && tol_.close_value(c.value, -s, E, R);
         g.right = *d.value_right;
         if (c.direction) {
             // Along u the objects part after t(u) + R, t(u) = h_M(u)/|u| the hulls' (signed): right

@@ -478,7 +478,6 @@ Judgement public_judgement(const internal::TypedClaim& c, const internal::Judged
         j.value_right = d->value_right;
         j.direction_right = d->direction_right;
     }
-    if (g.get<internal::SignedDistanceJudged>()) j.value_right = g.right;  // its one answer
     if (const std::optional<internal::Judged::Surd> v = g.radii ? g.exact_value() : std::nullopt) {
         // Objects with a radius: exact = s·√E + k, E the hulls' square.
         j.exact_squared = v->E;
