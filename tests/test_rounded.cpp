@@ -245,6 +245,11 @@ BOOST_AUTO_TEST_CASE(scenes_refused_in_one_line) {
                    .find("s.json: the partition is not built for objects "
                          "with a radius") != std::string::npos);
     BOOST_TEST(test::input_error([&] { e->curve("x"); }).find("curved") != std::string::npos);
+    // A query's certificate: a judgements file of its one verdict, the exact one (centres 0 apart:
+    // the spheres overlap).
+    const std::string doc = e->verdict_document(Q(1), Q(1));
+    BOOST_TEST(doc.find("\"verdict\": \"overlapping\"") != std::string::npos);
+    BOOST_TEST(doc.find("\"right\": true") != std::string::npos);
 }
 
 // ---- the brute force ---------------------------------------------------------------------------

@@ -938,9 +938,12 @@ void compound_api_costs() {
 }
 
 int checker_bench(int argc, char** argv);  // tools/bench_checker.cpp
+int round_bench(bool quick);               // tools/bench_round.cpp
 
 int main(int argc, char** argv) {
     if (argc > 1 && std::strcmp(argv[1], "--checker") == 0) return checker_bench(argc - 2, argv + 2);
+    if (argc > 1 && std::strcmp(argv[1], "--round") == 0)
+        return round_bench(argc > 2 && std::strcmp(argv[2], "--quick") == 0);
     bool quick = false, with_slow = false, sizes_only = false, queries_only = false, claims_only = false,
          compound_only = false;
     for (int i = 1; i < argc; ++i) {
@@ -963,7 +966,8 @@ int main(int argc, char** argv) {
         } else {
             std::fprintf(stderr,
                          "usage: scalecert-bench [--quick] [--sizes] [--queries] [--claims] [--compound] "
-                         "[--prism-claims] [--with-slow] | --checker [--timeout S] [--keep DIR] [CHECKER ...]\n");
+                         "[--prism-claims] [--with-slow] | --round [--quick] | --checker [--timeout S] [--keep DIR] "
+                         "[CHECKER ...]\n");
             return 2;
         }
     }

@@ -175,7 +175,22 @@ class RoundedEngine final : public SceneEngine {
     scalecert::QueryResult query(const Q& r1, const Q& r2) override {
         return {verdict(r1, r2), std::nullopt, std::nullopt};
     }
-    std::string verdict_document(const Q&, const Q&) override { throw InputError(refused("a query's certificate")); }
+    // A judgements file of one verdict claim, the exact verdict (FORMAT.md, "Objects with a radius").
+    std::string verdict_document(const Q& r1, const Q& r2) override {
+        points();
+        RoundedRules rules(exact_, points_, Tolerance{});
+        TypedClaim c;
+        c.type = ClaimType::Verdict;
+        c.rho1 = r1;
+        c.rho2 = r2;
+        const Verdict v = verdict(r1, r2);
+        c.verdict = v == Verdict::Separated  ? Claimed::Separated
+                    : v == Verdict::Touching ? Claimed::Touching
+                                             : Claimed::Overlapping;
+        Json entries = Json::array();
+        judge_claim(rules, c, 0, name_, &entries);
+        return rules.certificate(std::move(entries));
+    }
     std::string partition_document() override { throw InputError(refused("the partition")); }
     std::vector<Verdict> classify(const std::vector<double>& rho1, const std::vector<double>& rho2, unsigned,
                                   const std::string& source, std::optional<StageCounts>*) override {
