@@ -505,4 +505,20 @@ BOOST_AUTO_TEST_CASE(spheres_and_capsules_at_states_by_hand) {
     BOOST_TEST(pair(3, "ball", "rod")["verdict"]["exact"] == "separated");
     BOOST_TEST(run("mujoco " + kData + "rounded.xml --qpos " + kData + "rounded.qpos --abs-tolerance 1e-9").status ==
                0);
+    // A ball stays a ball whatever its frame (found by the hostile review): a wall x <= p0 turned
+    // from a plane, and a unit ball whose centre MuJoCo holds at 1 − 2^-53 under a rotated frame.
+    // MuJoCo holds n = (1 + 2^-52, 0, 0) and p0 = −(2^-54 + 2^-60), so S = −63·2^-60 < 0: "no
+    // contact" is wrong, however the ball is turned (a box posed through its frame falls short).
+    const fs::path wall = write("wall.xml", R"(<mujoco><option gravity="0 0 0"/><worldbody>
+      <geom name="wall" type="plane" size="10 10 0.1" pos="-5.637851296924623e-17 0 0"
+            quat="0.7071067811865476 0 0.7071067811865476 0"/>
+      <body name="ball" pos="3 0 0"><freejoint/><geom name="ball" type="sphere" size="1"/></body>
+    </worldbody></mujoco>)");
+    for (const char* q :
+         {"0.9999999999999999 0 0 0.9791266840921002 0.203250920044187 0 0\n", "0.9999999999999999 0 0 1 0 0 0\n"}) {
+        const Run w = run("mujoco " + wall.string() + " --qpos " + write("wall.qpos", q).string() + " --json");
+        BOOST_TEST(w.status == 1);
+        const auto wj = nlohmann::json::parse(w.out);
+        BOOST_TEST(wj["frames"][0]["pairs"][0]["verdict"]["exact"] == "overlapping");
+    }
 }

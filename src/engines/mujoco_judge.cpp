@@ -305,8 +305,6 @@ Intended intended_geom(const Geom& g, const std::vector<MeshSource>& sources) {
             if (p[k] < lo) lo = p[k];
             if (p[k] > hi) hi = p[k];
         }
-        lo -= out.points->radius;  // a ball reaches r past the points
-        hi += out.points->radius;
         double l = lo.get_d(), h = hi.get_d();
         if (exact_from_double(l) > lo) l = std::nextafter(l, -INFINITY);
         if (exact_from_double(h) < hi) h = std::nextafter(h, INFINITY);
@@ -472,12 +470,11 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
             for (int k = 0; k < 3; ++k)
                 b[static_cast<size_t>(k)] = -geom.size[k], b[static_cast<size_t>(k) + 3] = geom.size[k];
         if (geom.type == kSphere || geom.type == kCapsule) {
-            // The ball around the centre or the axis, each bound rounded outward.
-            const double r = geom.size[0], h = geom.type == kCapsule ? geom.size[1] : 0;
-            for (size_t k = 0; k < 3; ++k) {
-                const double e = k == 2 ? std::nextafter(h + r, INFINITY) : r;
-                b[k] = -e, b[k + 3] = e;
-            }
+            // The centre or the axis alone: the ball around it stays a ball of radius r in the world
+            // whatever the frame (a box posed through the frame need not hold it), so each test
+            // below widens its margin by the radii instead (round_margin).
+            const double h = geom.type == kCapsule ? geom.size[1] : 0;
+            for (size_t k = 0; k < 3; ++k) b[k] = k == 2 ? -h : 0, b[k + 3] = k == 2 ? h : 0;
         }
         for (size_t v = 0; v + 2 < geom.vertices.size(); v += 3)
             for (size_t k = 0; k < 3; ++k) {
@@ -485,6 +482,12 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
                 b[k + 3] = std::max(b[k + 3], static_cast<double>(geom.vertices[v + k]));
             }
     }
+    // The margin that two boxes of centres or axes (`local`) must clear for two geoms to clear m:
+    // m plus both radii, rounded up (two ulps cover the two additions' roundings).
+    auto round_margin = [&](int a, int b, double margin) {
+        const double r = geom_radius(m.geoms[static_cast<size_t>(a)]) + geom_radius(m.geoms[static_cast<size_t>(b)]);
+        return r == 0 ? margin : std::nextafter(std::nextafter(margin + r, INFINITY), INFINITY);
+    };
     long decided_by_boxes = 0;
     std::vector<std::optional<std::vector<Vec3q>>> object_points(m.geoms.size());  // for planes
     long positions_unjudged = 0;
@@ -563,7 +566,7 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
                     }
                     pb[i] = filter::posed_box(M, t, lo, hi);
                 }
-                if (filter::boxes_certainly_apart(pb[0], pb[1], p.margin))
+                if (filter::boxes_certainly_apart(pb[0], pb[1], round_margin(a, b, p.margin)))
                     return Json{{"verdict", Json{{"exact", "separated"}, {"right", true}}},
                                 {"signed_distance", Json{{"decided_by", "their boxes, more than the margin apart"}}}};
             }
@@ -787,7 +790,9 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
                     for (size_t j = 0; j < 3; ++j) x += w[j] * exact_from_double(local[O][(k >> j) & 1 ? j + 3 : j]);
                     if (k == 0 || x < lower) lower = x;
                 }
-                if (sign_minus_sqrt(lower, margin - opt.tolerance.abs, N) >= 0) {
+                // (A ball reaches r·√N past its centre or axis along n: the margin widens by r.)
+                if (sign_minus_sqrt(lower, margin - opt.tolerance.abs + exact_from_double(geom_radius(m.geoms[O])),
+                                    N) >= 0) {
                     ++judgements;
                     pj["verdict"] = Json{{"said", "no contact"}, {"exact", "separated"}, {"right", true}};
                     pj["signed_distance"] = Json{{"decided_by", "its box, beyond the plane by the margin"}};
@@ -970,7 +975,7 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
             // No contact, and the geoms' boxes more than the margin apart: right, without the
             // exact distance (filter 12).
             if (why.empty() && !deepest && finite_state(s, a) && finite_state(s, b) &&
-                filter::boxes_certainly_apart(box_of(a), box_of(b), p.margin)) {
+                filter::boxes_certainly_apart(box_of(a), box_of(b), round_margin(a, b, p.margin))) {
                 ++judgements;
                 ++decided_by_boxes;
                 fp.push_back(
