@@ -468,3 +468,41 @@ BOOST_AUTO_TEST_CASE(brute_force_in_rationals) {
     BOOST_TEST(right_count > 150);
     BOOST_TEST(judged - right_count > 150);
 }
+
+// Golden data on a curved touching set: the box [−1, 1]³ and a sphere of radius 1/2 centred at
+// (2, 2, 0), I1 = [1, 3/2], I2 = [1, 8]. The centre lies in an edge region of the box scaled by
+// ρ1 < 2, so the pair touches where ρ2/2 = √2·(2 − ρ1): a conic, not a line. Every sample's
+// `below` is separated and `above` is not, by that closed form in rationals ((ρ2/2)² against
+// 2(2 − ρ1)²), 2^-60 of I2 apart at most; every query's verdict agrees with it too.
+BOOST_AUTO_TEST_CASE(golden_samples_a_curved_touching_set) {
+    auto sc = std::make_shared<const ExactScene>(parse_scene_text(
+        R"({"P1": {"box": [1, 1, 1]}, "P2": {"sphere": "1/2", "pose": [[1,0,0,2],[0,1,0,2],[0,0,1,0]]},
+            "I1": [1, "3/2"], "I2": [1, 8]})",
+        "edge.json", "."));
+    const auto e = open_engine(sc, "edge.json");
+    GoldenPoints pts;
+    pts.verticals = 5;
+    pts.offsets = {4, 30, 52};
+    const GoldenAnswers g = e->golden(pts);
+    auto closed_form = [](const Q& r1, const Q& r2) {  // the brute verdict: (ρ2/2)² vs 2(2 − ρ1)²
+        const int c = cmp(r2 * r2 / 4, 2 * (2 - r1) * (2 - r1));
+        return c < 0    ? scalecert::Verdict::Separated
+               : c == 0 ? scalecert::Verdict::Touching
+                        : scalecert::Verdict::Overlapping;
+    };
+    BOOST_TEST_REQUIRE(g.curve["samples"].size() == 5u);
+    for (const auto& s : g.curve["samples"]) {
+        BOOST_TEST_REQUIRE(s["crosses"] == true);
+        const Q x = parse_exact(s["rho1"].get<std::string>()), a = parse_exact(s["below"].get<std::string>()),
+                b = parse_exact(s["above"].get<std::string>());
+        BOOST_TEST(closed_form(x, a) == scalecert::Verdict::Separated);
+        BOOST_TEST(closed_form(x, b) != scalecert::Verdict::Separated);
+        BOOST_TEST(b - a <= Q(7) / (Q(1) << 60));
+    }
+    BOOST_TEST(g.queries.size() > 20u);
+    for (const auto& q : g.queries)
+        BOOST_TEST(verdict_name(closed_form(parse_exact(q["rho1"].get<std::string>()),
+                                            parse_exact(q["rho2"].get<std::string>()))) ==
+                   q["verdict_at_doubles"].get<std::string>());
+    BOOST_TEST(g.csv.find("rho1,rho2,where,verdict_at_doubles,signed_distance\n") == 0);
+}

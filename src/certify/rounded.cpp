@@ -400,3 +400,113 @@ std::string RoundedRules::certificate(Json entries) const {
 }
 
 }  // namespace scalecert::internal
+
+namespace scalecert::internal {
+
+namespace {
+// The double nearest v, or its neighbour toward the inside of [lo, hi] when that one lies in it
+// and v's nearest does not.
+double double_within(const Q& v, const Q& lo, const Q& hi) {
+    double d = to_double_rn(v);
+    const Q e = exact_from_double(d);
+    if (e > hi || e < lo) {
+        const double n = std::nextafter(d, e > hi ? -HUGE_VAL : HUGE_VAL);
+        const Q m = exact_from_double(n);
+        if (lo <= m && m <= hi) d = n;
+    }
+    return d;
+}
+std::string fraction_columns(const Q& q) { return q.get_num().get_str() + "," + q.get_den().get_str(); }
+}  // namespace
+
+GoldenAnswers rounded_golden(const ExactScene& sc, const RoundedPoints& S, const GoldenPoints& points) {
+    validate(points);
+    const auto [rank, flat] = S.difference_span(S);
+    auto state = [&](const Q& r1, const Q& r2) {
+        const MeasuredDepth md = hull_measure(S, rank, flat, r1, r2);
+        const Q R = r1 * sc.P[0].radius + r2 * sc.P[1].radius;
+        const auto [s, E] = hull_signed(md);
+        return std::tuple<Verdict, int, Q, Q>{rounded_verdict(md, R), s, E, R};
+    };
+    const Q &lo1 = sc.lo[0], &hi1 = sc.hi[0], &lo2 = sc.lo[1], &hi2 = sc.hi[1];
+    Json samples = Json::array(), queries = Json::array();
+    std::string csv = "rho1,rho2,where,verdict_at_doubles,signed_distance\n";
+    std::string rcsv =
+        "rho1_num,rho1_den,rho2_num,rho2_den,where,verdict,hulls_sign,hulls_squared_num,hulls_squared_den,"
+        "radius_sum_num,radius_sum_den\n";
+    const int V = lo1 == hi1 ? 1 : points.verticals;
+    for (int k = 0; k < V; ++k) {
+        const Q x = V == 1 ? lo1 : Q(lo1 + (hi1 - lo1) * k / (V - 1));
+        Json sample{{"rho1", to_exact_string(x)}};
+        const Verdict at_lo = std::get<0>(state(x, lo2)), at_hi = std::get<0>(state(x, hi2));
+        if (at_lo != Verdict::Separated || at_hi == Verdict::Separated) {
+            // The set does not cross ρ1 × I2 inside it: say which side of it I2 lies.
+            sample["crosses"] = false;
+            sample["verdict_at_lo2"] = verdict_name(at_lo);
+            sample["verdict_at_hi2"] = verdict_name(at_hi);
+            samples.push_back(std::move(sample));
+            continue;
+        }
+        // Bisection: a separated, b not; 60 halvings of I2 (or the touching pair, found exactly).
+        Q a = lo2, b = hi2;
+        std::optional<Q> on;
+        for (int step = 0; step < 60 && !on; ++step) {
+            const Q m = (a + b) / 2;
+            const Verdict v = std::get<0>(state(x, m));
+            if (v == Verdict::Touching) on = m;
+            (v == Verdict::Separated ? a : b) = m;
+        }
+        sample["crosses"] = true;
+        sample["below"] = to_exact_string(a);  // separated
+        sample["above"] = to_exact_string(b);  // not separated
+        if (on) sample["touching"] = to_exact_string(*on);
+        const Q y = on ? *on : Q((a + b) / 2);
+        // The pairs near it: on it (the midpoint, or the touching pair), then 2^-k of each
+        // coordinate above, below, right and left, each in I1 × I2.
+        std::vector<std::pair<std::string, std::pair<Q, Q>>> near{{"on", {x, y}}};
+        for (int o : points.offsets) {
+            const std::string e = " 2^-" + std::to_string(o);
+            const Q dy = y / Q(Z(1) << o), dx = x / Q(Z(1) << o);
+            near.push_back({"above" + e, {x, y + dy}});
+            near.push_back({"below" + e, {x, y - dy}});
+            near.push_back({"right" + e, {x + dx, y}});
+            near.push_back({"left" + e, {x - dx, y}});
+        }
+        for (const auto& [where, p] : near) {
+            const auto& [qx, qy] = p;
+            if (qx < lo1 || qx > hi1 || qy < lo2 || qy > hi2) continue;
+            const double dx = double_within(qx, lo1, hi1), dy = double_within(qy, lo2, hi2);
+            const Q ex = exact_from_double(dx), ey = exact_from_double(dy);
+            const auto [v, s, E, R] = state(ex, ey);
+            const double value = s == 0 || sgn(E) == 0 ? to_double_rn(Q(-R))
+                                 : s > 0               ? sqrt_minus_rn(E, R)
+                                                       : -sqrt_minus_rn(E, Q(-R));
+            queries.push_back(Json{{"rho1", to_exact_string(ex)},
+                                   {"rho2", to_exact_string(ey)},
+                                   {"rho1_double", dx},
+                                   {"rho2_double", dy},
+                                   {"where", where},
+                                   {"near", to_exact_string(x)},
+                                   {"verdict_at_doubles", verdict_name(v)},
+                                   {"signed_distance", Json{{"hulls_sign", s},
+                                                            {"hulls_squared", to_exact_string(E)},
+                                                            {"radius_sum", to_exact_string(R)},
+                                                            {"value_double", value}}}});
+            char buf[160];
+            std::snprintf(buf, sizeof buf, "%.17g,%.17g,", dx, dy);
+            char val[40];
+            std::snprintf(val, sizeof val, "%.17g", value);
+            csv += std::string(buf) + where + "," + verdict_name(v) + "," + val + "\n";
+            rcsv += fraction_columns(ex) + "," + fraction_columns(ey) + "," + where + "," + verdict_name(v) + "," +
+                    std::to_string(s) + "," + fraction_columns(E) + "," + fraction_columns(R) + "\n";
+        }
+        samples.push_back(std::move(sample));
+    }
+    Json doc{{"format", "scalecert-2"},
+             {"kind", "touching_samples"},
+             {"scene", scene_json(sc)},
+             {"samples", std::move(samples)}};
+    return {std::move(doc), std::move(queries), std::move(csv), std::move(rcsv)};
+}
+
+}  // namespace scalecert::internal

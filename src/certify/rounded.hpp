@@ -5,6 +5,7 @@
 // a capsule's two.
 #pragma once
 #include "certify/claim.hpp"
+#include "certify/golden.hpp"
 #include "geometry/measures.hpp"
 #include "geometry/polyhedron.hpp"
 #include "io/scene.hpp"
@@ -83,6 +84,15 @@ class RoundedRules final : public ClaimRules {
     std::shared_ptr<const ExactScene> scene_;
     std::shared_ptr<const RoundedPoints> points_;
 };
+
+// Golden data on objects with a radius (golden.hpp): their touching set is curved, so it is
+// sampled, not drawn. At `verticals` values of ρ1 spread evenly over I1, where the set crosses
+// ρ1 × I2, bisection on ρ2 with exact verdicts gives an exact pair on each side of it (`below`
+// separated, `above` not), 2^-60 of I2 apart, or the touching pair itself when a midpoint hits it;
+// the pairs near each sample (its midpoint and the offsets 2^-k of each coordinate, in I1 × I2)
+// rounded to doubles, each with its exact verdict and signed distance s·√E − R (the hulls' s, E
+// and R exactly, the value as a rounded double). The document is the samples'.
+GoldenAnswers rounded_golden(const ExactScene& sc, const RoundedPoints& S, const GoldenPoints& points);
 
 // What the claim kinds of the curve say on objects with a radius (refusal's words).
 extern const char* const kRoundedKinds;

@@ -212,7 +212,7 @@ class RoundedEngine final : public SceneEngine {
         points();
         return std::make_unique<RoundedRules>(exact_, points_, tolerance);
     }
-    GoldenAnswers golden(const GoldenPoints&) override { throw InputError(refused("golden data")); }
+    GoldenAnswers golden(const GoldenPoints& p) override { return rounded_golden(*exact_, points(), p); }
     CompoundSession& region() override { throw InputError(refused("the region")); }
     Session& convex_session(const std::string&) override {
         throw InputError(refused("the touching curve (with its segments and the grid search)"));
