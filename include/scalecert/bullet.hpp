@@ -13,8 +13,9 @@
 // scaled), btBoxShape, btSphereShape and btCapsuleShape are judged, each inflated by its collision
 // margin as Bullet's manifolds and btGjkEpaSolver2::Penetration collide it (an object with a
 // radius: a hull's 0.04 by default; a box's margin lies inside its half-extents; a sphere's and a
-// capsule's margin is their radius). btGjkEpaSolver2::Distance ignores margins: judge its results
-// on bullet_scene(a, b, false).
+// capsule's margin is their radius), except two boxes in a manifold, which Bullet collides sharp
+// (bullet_scene(manifold)). btGjkEpaSolver2::Distance ignores margins: judge its results on
+// bullet_scene(a, b, false).
 #pragma once
 #include "scalecert/scalecert.hpp"
 
@@ -120,8 +121,26 @@ inline Scene bullet_scene(const btCollisionShape& a, const btCollisionShape& b, 
     if (sgn(r1) == 0 && sgn(r2) == 0) return Scene(bullet_points(a), bullet_points(b), {}, {});
     return Scene::with_radii(bullet_points(a), bullet_points(b), {r1, r2});
 }
+// A manifold's: Bullet's dispatcher collides two btBoxShapes by btBoxBoxCollisionAlgorithm, as
+// sharp boxes of their full half-extents (margin included, not rounded); every other pair as
+// bullet_scene(a, b) has it.
 inline Scene bullet_scene(const btPersistentManifold& m) {
-    return bullet_scene(*m.getBody0()->getCollisionShape(), *m.getBody1()->getCollisionShape());
+    const btCollisionShape &a = *m.getBody0()->getCollisionShape(), &b = *m.getBody1()->getCollisionShape();
+    if (a.getShapeType() != BOX_SHAPE_PROXYTYPE || b.getShapeType() != BOX_SHAPE_PROXYTYPE) return bullet_scene(a, b);
+    auto corners = [](const btBoxShape& s) {
+        const btVector3 h = s.getHalfExtentsWithMargin();
+        std::vector<Point> out;
+        for (int k = 0; k < 8; ++k) {
+            const btVector3 v(k & 1 ? h.x() : -h.x(), k & 2 ? h.y() : -h.y(), k & 4 ? h.z() : -h.z());
+            for (int i = 0; i < 3; ++i)
+                if (!std::isfinite(static_cast<double>(v[i])))
+                    throw InputError("bullet_scene: a box's half-extent is a NaN or an infinity");
+            out.push_back({exact(static_cast<double>(v.x())), exact(static_cast<double>(v.y())),
+                           exact(static_cast<double>(v.z()))});
+        }
+        return out;
+    };
+    return Scene(corners(static_cast<const btBoxShape&>(a)), corners(static_cast<const btBoxShape&>(b)), {}, {});
 }
 
 // A contact manifold (CLAIMS.md, "Engines' conventions", Bullet), at its bodies' world transforms:

@@ -951,8 +951,8 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
                 why = "two planes: MuJoCo 2.2.2 has no plane-plane collision";
             else if (!plane_pair && (!judged_type(ga.type) || !judged_type(gb.type))) {
                 const Geom& g = judged_type(ga.type) || ga.type == kPlane ? gb : ga;
-                why =
-                    std::string(geom_type_name(g.type)) + ": not judged (judged: box, mesh, sphere and capsule geoms)";
+                why = std::string(geom_type_name(g.type)) +
+                      ": not judged (judged: box, mesh, sphere, capsule and plane geoms)";
             }
             // The deepest contact speaks for the pair (a box's manifold holds a point per corner);
             // its geoms' order is the claim's: P1 = its geom1, its normal from geom1 to geom2.

@@ -264,6 +264,31 @@ BOOST_AUTO_TEST_CASE(bullet_margins_and_refusals) {
     BOOST_TEST(scalecert::bullet_points(ball).size() == 1u);
     btCylinderShape can(btVector3(1, 1, 1));
     BOOST_CHECK_THROW(scalecert::bullet_points(can), scalecert::InputError);
+    // Two btBoxShapes in a manifold are sharp boxes at their full half-extents (Bullet's box-box
+    // algorithm; found by the new-user review): corner to corner, 0.98 apart in x and y, they
+    // overlap by 0.02, where the boxes rounded by the margin would be √2·0.06 − 0.08 apart.
+    btDefaultCollisionConfiguration cfg;
+    btCollisionDispatcher dispatcher(&cfg);
+    btDbvtBroadphase broadphase;
+    btCollisionWorld world(&dispatcher, &broadphase, &cfg);
+    btCollisionObject oa, ob;
+    oa.setCollisionShape(&box);
+    ob.setCollisionShape(&box);
+    oa.setWorldTransform(bt_moved(0, 0, 0));
+    ob.setWorldTransform(bt_moved(0.98f, 0.98f, 0));
+    world.addCollisionObject(&oa);
+    world.addCollisionObject(&ob);
+    world.performDiscreteCollisionDetection();
+    BOOST_TEST_REQUIRE(dispatcher.getNumManifolds() == 1);
+    const btPersistentManifold& m = *dispatcher.getManifoldByIndexInternal(0);
+    BOOST_TEST_REQUIRE(m.getNumContacts() > 0);
+    const scalecert::Judgements j = judge(scalecert::bullet_scene(m), scalecert::bullet_claims(m), R("1/1000000"));
+    const double half = static_cast<double>(box.getHalfExtentsWithMargin().x());  // 0.46 + 0.04 in btScalars
+    const double overlap = 2 * half - static_cast<double>(btScalar(0.98f));
+    BOOST_TEST(std::fabs(j.items[0].exact + overlap) <= 1e-15);
+    BOOST_TEST(j.items[0].right == (std::fabs(m.getContactPoint(0).getDistance() + overlap) <= 1e-6));
+    world.removeCollisionObject(&oa);
+    world.removeCollisionObject(&ob);
 }
 
 // Objects with a radius as FCL and Bullet collide them (CLAIMS.md, "Objects with a radius"): a
