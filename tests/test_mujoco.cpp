@@ -136,11 +136,11 @@ BOOST_AUTO_TEST_CASE(boxes_at_states_judged_by_hand) {
         else
             BOOST_TEST((*p)["signed_distance"]["exact"] == exact[f], f);
         BOOST_TEST((*p)["verdict"]["exact"] == state[f], f);
-        // The judgements recomputed from what MuJoCo said, at tolerance 0: a contact claims S < 0
+        // The judgements recomputed from what MuJoCo said, at tolerance 0: a contact claims S <= 0
         // (the margin), none claims S >= 0; its dist claims S itself.
         const bool contact = (*p)["contacts"].get<int>() > 0;
-        BOOST_TEST((*p)["verdict"]["right"] == (contact ? value[f] < 0 : value[f] >= 0), f);
-        bool right = contact ? value[f] < 0 : value[f] >= 0;
+        BOOST_TEST((*p)["verdict"]["right"] == (contact ? value[f] <= 0 : value[f] >= 0), f);
+        bool right = contact ? value[f] <= 0 : value[f] >= 0;
         if (contact) {
             const double said = (*p)["dist"]["said"].get<double>();
             BOOST_TEST((*p)["dist"]["right"] == (said == value[f]), f);
@@ -186,7 +186,7 @@ BOOST_AUTO_TEST_CASE(boxes_at_states_judged_by_hand) {
                 BOOST_TEST(p["verdict"]["exact"] == "separated");
                 BOOST_TEST(p["verdict"]["right"] == true);
             }
-    // Within --abs-tolerance 1e-9 a contact at S = 0 is right (0 < 0 + 1e-9), as is a dist within it.
+    // Within --abs-tolerance 1e-9 a contact at S = 0 is right too, as is a dist within it.
     const Run t = run("mujoco " + kData + "boxes.xml --qpos " + kData + "boxes.qpos --json --abs-tolerance 1e-9");
     const auto k = nlohmann::json::parse(t.out);
     for (const auto& q : k["frames"][1]["pairs"])
@@ -446,7 +446,7 @@ BOOST_AUTO_TEST_CASE(planes_at_states_by_hand) {
     // plane.xml: the floor is the half-space z <= 0. plane.qpos: (0) the cube 3/2 above it, the tet
     // 1 above (no contacts: right); (1) the cube 1/8 deep (S = −1/8 exactly), the tet's lowest
     // vertex at z ≈ −1/4 (MuJoCo's float32 re-centred vertices: S within 10^-7 of −1/4); (2) the
-    // cube touching (S = 0: a contact there is wrong at tolerance 0, right within 1e-9).
+    // cube touching (S = 0 = the margin: a contact there is right, and so would be none).
     const std::string args = "mujoco " + kData + "plane.xml --qpos " + kData + "plane.qpos --json";
     const auto j = nlohmann::json::parse(run(args).out);
     auto pair = [&](size_t f, const char* other) {
@@ -461,7 +461,7 @@ BOOST_AUTO_TEST_CASE(planes_at_states_by_hand) {
     const double tet = std::stod(pair(1, "tet")["signed_distance"]["exact"].get<std::string>());
     BOOST_TEST(std::fabs(tet + 0.25) < 1e-7);
     BOOST_TEST(pair(2, "cube")["signed_distance"]["exact"] == "0");
-    BOOST_TEST(pair(2, "cube")["verdict"]["right"] == (pair(2, "cube")["contacts"].get<int>() == 0));
+    BOOST_TEST(pair(2, "cube")["verdict"]["right"] == true);
     const auto k = nlohmann::json::parse(run(args + " --abs-tolerance 1e-9").out);
     for (const auto& p : k["frames"][2]["pairs"])
         if (p["names"] == nlohmann::json::array({"floor", "cube"})) BOOST_TEST(p["verdict"]["right"] == true);
@@ -472,16 +472,16 @@ BOOST_AUTO_TEST_CASE(spheres_and_capsules_at_states_by_hand) {
     // rounded.xml: the plane z = 0, the box [5/2, 7/2] x [-1/2, 1/2] x [0, 1], a sphere of radius
     // 1/4 and a capsule of radius 1/8, half-length 1/2, upright (rounded.qpos, every number
     // dyadic). State 0: the ball rests on the floor, S = 1/4 − 1/4 = 0; MuJoCo reports a contact at
-    // dist 0 with margin 0, which claims S < 0: wrong (right within --abs-tolerance, below).
+    // dist 0 with margin 0, which claims S <= 0: right.
     // State 1: the ball's centre at 3/16, S = −1/16, its normal the plane's (0, 0, 1); the rod
     // over the block, its axis's lower end at 1.609375 − 1/2 = 1 + 7/64, S = 7/64 − 1/8 = −1/64.
     // State 2: the ball's centre 1/4 from the rod's axis, S = 1/4 − 1/4 − 1/8 = −1/8, along x.
     // State 3: 1/2 from it, S = 1/8: no contact, right.
     const Run r = run("mujoco " + kData + "rounded.xml --qpos " + kData + "rounded.qpos --json");
-    BOOST_TEST(r.status == 1);
+    BOOST_TEST(r.status == 0);
     const auto j = nlohmann::json::parse(r.out);
     BOOST_TEST(j["summary"]["pairs_unjudged"] == 0);
-    BOOST_TEST(j["summary"]["wrong_pairs"] == 1);
+    BOOST_TEST(j["summary"]["wrong_pairs"] == 0);
     auto pair = [&](size_t f, const std::string& a, const std::string& b) {
         for (const auto& p : j["frames"][f]["pairs"])
             if ((p["names"][0] == a && p["names"][1] == b) || (p["names"][0] == b && p["names"][1] == a)) return p;
@@ -489,7 +489,8 @@ BOOST_AUTO_TEST_CASE(spheres_and_capsules_at_states_by_hand) {
         return nlohmann::json();
     };
     BOOST_TEST(pair(0, "floor", "ball")["verdict"]["exact"] == "touching");
-    BOOST_TEST(pair(0, "floor", "ball")["verdict"]["right"] == false);
+    BOOST_TEST(pair(0, "floor", "ball")["verdict"]["right"] == true);
+    BOOST_TEST(pair(0, "floor", "ball")["dist"]["right"] == true);
     const auto b1 = pair(1, "floor", "ball");
     BOOST_TEST(b1["signed_distance"]["exact"] == "-0.0625");
     BOOST_TEST(b1["dist"]["right"] == true);

@@ -960,7 +960,7 @@ def test_judge_mujoco_and_the_testing_helpers(tmp_path):
     import scalecert.testing as sct  # the submodule imports by its dotted name too
     with pytest.raises(AssertionError, match="MuJoCo was wrong at .* pair state") as e:
         sct.assert_mujoco(model, qpos, failures=str(tmp_path / "repro"))
-    assert "WRONG  state 1 (qpos[1])" in str(e.value)
+    assert "WRONG  state 2 (qpos[2])" in str(e.value)  # MuJoCo's dist -1/16 where the depth is 1/8
     assert "reproducers" in str(e.value) and any((tmp_path / "repro").iterdir())
     sct.assert_mujoco(model, qpos[:1])  # 3/2 apart, no contact: right
     with pytest.raises(scalecert.InputError, match=r"qpos\[0\]: 2 numbers; the model's qpos has 21"):
@@ -1024,7 +1024,7 @@ def mujoco_arrays(model, qpos_file):
 def test_judge_mujoco_held_reads_mujocos_own_arrays():
     # The arrays a program holds in MuJoCo's Python bindings, read by their attribute names, judge
     # as the model file does at the same qpos: on boxes.xml (worked by hand in tests/test_mujoco.cpp:
-    # 3/2 apart, touching with a contact that is wrong at tolerance 0, 1/8 deep) and the finger.
+    # 3/2 apart, touching with a contact at S = 0 = the margin, 1/8 deep) and the finger.
     for name in ["boxes", "panda_finger_cube"]:
         xml, qpos = str(SRC / f"tests/data/mujoco/{name}.xml"), str(SRC / f"tests/data/mujoco/{name}.qpos")
         model, datas = mujoco_arrays(xml, qpos)
@@ -1034,17 +1034,20 @@ def test_judge_mujoco_held_reads_mujocos_own_arrays():
         assert held["summary"] == fromfile["summary"]
         assert [f["pairs"] for f in held["frames"]] == [f["pairs"] for f in fromfile["frames"]]
         assert held["summary"]["judgements"] > 0
-    # On boxes the touching state's contact is the one wrong pair state, named by its data index.
+    # On boxes the 1/8-deep state is the one wrong pair state (MuJoCo's dist is -1/16), named by its
+    # data index; the touching state's contact, at S = 0 = the margin, is right.
     model, datas = mujoco_arrays(str(SRC / "tests/data/mujoco/boxes.xml"), str(SRC / "tests/data/mujoco/boxes.qpos"))
-    r = scalecert.judge_mujoco_held(model, datas[1])
+    assert scalecert.judge_mujoco_held(model, datas[1])["summary"]["wrong_pairs"] == 0
+    r = scalecert.judge_mujoco_held(model, datas[2])
     assert r["summary"]["wrong_pairs"] == 1
     names = [p["names"] for p in r["frames"][0]["pairs"]]
     assert ["floor", "cube"] in names  # names from MjModel.names and name_geomadr
-    # The pytest gate on held arrays: right at 3/2 apart, wrong (naming the state) when touching.
+    # The pytest gate on held arrays: right at 3/2 apart and touching, wrong (naming the state) 1/8 deep.
     import scalecert.testing as sct
     sct.assert_mujoco_held(model, datas[0])
+    sct.assert_mujoco_held(model, datas[1])
     with pytest.raises(AssertionError, match=r"WRONG  state 0 \(data\[0\]\): 'floor' and 'cube'"):
-        sct.assert_mujoco_held(model, datas[1])
+        sct.assert_mujoco_held(model, datas[2])
     # What does not fit MuJoCo's fields is an InputError naming the field.
     bad = lambda **kw: type(model)(**{**vars(model), **kw})
     for m, why in [(bad(geom_size=model.geom_size[:-1]), "geom_size"),

@@ -61,7 +61,9 @@ struct TypedClaim {
     Q value = 0;                           // Growth, Distance, Depth, SignedDistance
     // SignedDistance: the value claimed is the signed distance, or a bound on it: at least the
     // value, or below it (what "no contact within the margin" and "a contact" say).
-    enum class Bound { Value, AtLeast, Below } bound = Bound::Value;
+    // AtMost (value or below it, never read from a claims file) is what a MuJoCo contact says of
+    // the margin: MuJoCo reports one at dist = margin, and says none there too (CLAIMS.md).
+    enum class Bound { Value, AtLeast, Below, AtMost } bound = Bound::Value;
     std::optional<std::array<Vec3q, 2>> closest;  // Distance: on P1, on P2
     std::optional<Vec3q> direction;               // Depth (nonzero)
     // Depth on objects made of parts: the part pair it speaks of (a contact), [P1 part, P2 part].

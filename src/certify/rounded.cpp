@@ -288,6 +288,7 @@ Judged RoundedRules::judge(const TypedClaim& c, Proof* proof) {
         case TypedClaim::Bound::Value: g.right = tol_.close_value(c.value, s, E, Q(-R)); break;
         case TypedClaim::Bound::AtLeast: g.right = sign_minus_sqrt(c.value - tol_.abs + R, Q(s), E) <= 0; break;
         case TypedClaim::Bound::Below: g.right = sign_minus_sqrt(c.value + tol_.abs + R, Q(s), E) > 0; break;
+        case TypedClaim::Bound::AtMost: g.right = sign_minus_sqrt(c.value + tol_.abs + R, Q(s), E) >= 0; break;
         }
         if (proof) proof->proof = hulls_proof(md, c);
         break;

@@ -205,6 +205,7 @@ Json exact_fields_json(const TypedClaim& c) {
     case ClaimType::SignedDistance:
         j[c.bound == TypedClaim::Bound::Value     ? "value"
           : c.bound == TypedClaim::Bound::AtLeast ? "at_least"
+          : c.bound == TypedClaim::Bound::AtMost  ? "at_most"
                                                   : "below"] = ex(c.value);
         break;
     default: break;

@@ -574,7 +574,7 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
             base.type = ClaimType::SignedDistance;
             base.pose = {pose_of(s, a), pose_of(s, b)};
             TypedClaim verdict = base;
-            verdict.bound = deepest ? TypedClaim::Bound::Below : TypedClaim::Bound::AtLeast;
+            verdict.bound = deepest ? TypedClaim::Bound::AtMost : TypedClaim::Bound::AtLeast;
             verdict.value = exact_from_double(p.margin);
             const Judged vj = judge_claim(*we.rules, verdict, 0, opt.model, nullptr);
             const SignedDistanceJudged& ex = *vj.get<SignedDistanceJudged>();
@@ -709,7 +709,7 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
             return 1;
         };
         // A contact's own dist: no contact is deeper than the pair (S <= d + LEN + tol·|S|), and
-        // each is within the margin (d < margin + LEN). A contact failing it is wrong, and its pos
+        // each is within the margin (d <= margin + LEN). A contact failing it is wrong, and its pos
         // is not judged against that dist.
         auto contact_dist_right = [&](const Contact& c, const Signed& v, double margin) {
             if (!std::isfinite(c.dist)) return false;
@@ -717,7 +717,7 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
             // S = s√E + k, |S| = σS: (k − d − LEN − rel·σ·k) + s(1 − rel·σ)√E <= 0.
             const Q rs = opt.tolerance.rel * value_sign(v);
             return sign_minus_sqrt(v.k - d - opt.tolerance.abs - rs * v.k, Q(-v.s * (1 - rs)), v.E) <= 0 &&
-                   d < exact_from_double(margin) + opt.tolerance.abs;
+                   d <= exact_from_double(margin) + opt.tolerance.abs;
         };
         // Every contact of a pair: its dist (contact_dist_right), then its pos (position_near_both);
         // the report's "contacts" entry and the text's lines. Returns whether all are right.
@@ -812,9 +812,9 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
             const Signed S{sign, least * least / N, Q(-rad)};
             const int vs = value_sign(S);
             const Verdict exact = vs > 0 ? Verdict::Separated : vs == 0 ? Verdict::Touching : Verdict::Overlapping;
-            // A contact claims S < margin (+ LEN), none S >= margin (− LEN), as for two polyhedra.
+            // A contact claims S <= margin (+ LEN), none S >= margin (− LEN), as for two polyhedra.
             const bool verdict_judged = deepest || !buffer_full;
-            const bool vright = deepest ? sign_minus_sqrt(least, margin + opt.tolerance.abs + rad, N) < 0
+            const bool vright = deepest ? sign_minus_sqrt(least, margin + opt.tolerance.abs + rad, N) <= 0
                                         : sign_minus_sqrt(least, margin - opt.tolerance.abs + rad, N) >= 0;
             judgements += verdict_judged;
             pj["verdict"] = Json{{"said", deepest ? "contact" : "no contact"},
@@ -904,7 +904,7 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
                 const Q& radw = iw.points->radius;
                 const Signed Sw{sgn(lw), lw * lw / N, Q(-radw)};
                 const int sw = value_sign(Sw);
-                const bool vw = deepest ? sign_minus_sqrt(lw, margin + opt.tolerance.abs + radw, N) < 0
+                const bool vw = deepest ? sign_minus_sqrt(lw, margin + opt.tolerance.abs + radw, N) <= 0
                                         : sign_minus_sqrt(lw, margin - opt.tolerance.abs + radw, N) >= 0;
                 const bool vjudged = deepest || !buffer_full;
                 Json iwj{{"verdict", Json{{"exact", verdict_name(sw > 0    ? Verdict::Separated
@@ -1006,7 +1006,7 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
             base.type = ClaimType::SignedDistance;
             base.pose = {pose_of(s, a), pose_of(s, b)};
             TypedClaim verdict = base;
-            verdict.bound = deepest ? TypedClaim::Bound::Below : TypedClaim::Bound::AtLeast;
+            verdict.bound = deepest ? TypedClaim::Bound::AtMost : TypedClaim::Bound::AtLeast;
             verdict.value = exact_from_double(p.margin);
             const Judged vj = judge_claim(*pe->rules, verdict, 0, opt.model, nullptr);
             const SignedDistanceJudged& ex = *vj.get<SignedDistanceJudged>();
@@ -1031,7 +1031,11 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
                 ++verdicts_unjudged;
             }
             bool all_right = verdict_right;
-            std::vector<TypedClaim> claims{verdict};
+            // The reproducer's claims: a contact's verdict there is "below" the margin, which a
+            // claims file holds (at_most is not one of its bounds), so it is kept only when it was
+            // judged wrong (S > margin: then below it is wrong too).
+            std::vector<TypedClaim> claims;
+            if (!vj.right || verdict.bound != TypedClaim::Bound::AtMost) claims.push_back(verdict);
             if (!verdict_right) {
                 ++wrong_verdicts;
                 wrong_list.push_back(Json{{"frame", f},
@@ -1124,7 +1128,7 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
                         if (c.type == ClaimType::SignedDistance) {
                             const char* key = c.bound == TypedClaim::Bound::Value     ? "value"
                                               : c.bound == TypedClaim::Bound::AtLeast ? "at_least"
-                                                                                      : "below";
+                                                                                      : "below";  // (AtMost too)
                             j[key] = c.bound == TypedClaim::Bound::Value ? hex(deepest->dist) : hex(p.margin);
                         } else if (c.type == ClaimType::Witness) {
                             // The point's rationals are doubles' exact values: get_d is exact.

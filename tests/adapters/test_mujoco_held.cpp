@@ -53,14 +53,16 @@ nlohmann::json unnamed(const std::string& report) {
 }  // namespace
 
 // boxes.xml (tests/test_mujoco.cpp works it out by hand): the cube 3/2 above the floor, then
-// touching it. MuJoCo reports a contact at exactly touching: at tolerance 0 that pair state alone
-// is wrong (S = 0 is not < 0), within 1e-9 it is right.
+// touching it, then 1/8 deep at (1/4, 0, 3/8). MuJoCo reports a contact at exactly touching, right
+// (S = 0 = the margin); 1/8 deep it says dist −1/16: that pair state alone is wrong, named by
+// its data index, and right within 1/16.
 BOOST_AUTO_TEST_CASE(boxes_by_hand_through_the_held_arrays) {
     Model w(kData + "boxes.xml");
     const std::vector<double> apart = {0, 0, 2, 1, 0, 0, 0, 5, 0, 0, 1, 0, 0, 0, -5, 0, 0, 1, 0, 0, 0},
-                              touching = {0, 0, 0.5, 1, 0, 0, 0, 5, 0, 0, 1, 0, 0, 0, -5, 0, 0, 1, 0, 0, 0};
+                              touching = {0, 0, 0.5, 1, 0, 0, 0, 5, 0, 0, 1, 0, 0, 0, -5, 0, 0, 1, 0, 0, 0},
+                              deep = {0.25, 0, 0.375, 1, 0, 0, 0, 5, 0, 0, 1, 0, 0, 0, -5, 0, 0, 1, 0, 0, 0};
     std::vector<scalecert::MujocoHeldData> states;
-    for (const auto& q : {apart, touching}) {
+    for (const auto& q : {apart, touching, deep}) {
         w.forward(q);
         states.push_back(scalecert::mujoco_held(w.m, w.d));
     }
@@ -69,12 +71,12 @@ BOOST_AUTO_TEST_CASE(boxes_by_hand_through_the_held_arrays) {
     const scalecert::MujocoHeldModel held = scalecert::mujoco_held(w.m);
     const scalecert::MujocoJudgement j = scalecert::judge_mujoco_held(held, states);
     BOOST_TEST(j.wrong_pairs == 1);
-    BOOST_TEST(j.text.find("data[1]") != std::string::npos, j.text);
+    BOOST_TEST(j.text.find("data[2]") != std::string::npos, j.text);
     scalecert::MujocoOptions o;
-    o.abs_tolerance = scalecert::parse_rational("1e-9");
+    o.abs_tolerance = scalecert::parse_rational("1/16");
     BOOST_TEST(scalecert::judge_mujoco_held(held, states, o).wrong_pairs == 0);
     // The same as the model-file route at the same states, judgement for judgement.
-    const scalecert::MujocoJudgement f = scalecert::judge_mujoco(kData + "boxes.xml", {apart, touching});
+    const scalecert::MujocoJudgement f = scalecert::judge_mujoco(kData + "boxes.xml", {apart, touching, deep});
     nlohmann::json a = unnamed(j.json), b = unnamed(f.json);
     BOOST_TEST(a["summary"] == b["summary"]);
     BOOST_TEST(a["frames"].size() == b["frames"].size());

@@ -1,8 +1,9 @@
 // scalecert/gtest.hpp as a user's GoogleTest program uses it. The ctest tests run it twice: the
 // Right.* tests must pass, and the Wrong.* tests must fail with the wrong judgements in the
 // message (tests/CMakeLists.txt matches them), derived by hand in tests/test_mujoco.cpp and
-// CLAIMS.md: MuJoCo 2.2.2 reports contacts for the touching cube of boxes.xml (state 1), and on
-// the stacked cubes (touching on rho1 + rho2 = 3) (2, 2) overlaps.
+// CLAIMS.md: MuJoCo 2.2.2 reports the cube of boxes.xml 1/8 deep at (1/4, 0, 3/8) with dist
+// −1/16 (state 2; its contact at touching, S = 0 = the margin, is right), and on the stacked cubes
+// (touching on rho1 + rho2 = 3) (2, 2) overlaps.
 #include <scalecert/gtest.hpp>
 
 #include <string>
@@ -12,6 +13,7 @@ namespace {
 const std::string kBoxes = std::string(SCALECERT_SOURCE_DIR) + "/tests/data/mujoco/boxes.xml";
 const std::vector<double> kApart = {0, 0, 2, 1, 0, 0, 0, 5, 0, 0, 1, 0, 0, 0, -5, 0, 0, 1, 0, 0, 0};
 const std::vector<double> kTouching = {0, 0, 0.5, 1, 0, 0, 0, 5, 0, 0, 1, 0, 0, 0, -5, 0, 0, 1, 0, 0, 0};
+const std::vector<double> kDeep = {0.25, 0, 0.375, 1, 0, 0, 0, 5, 0, 0, 1, 0, 0, 0, -5, 0, 0, 1, 0, 0, 0};
 // Two box geoms held by hand, as scalecert/mujoco.hpp would fill them: the floor [-1, 1]^2 x
 // [-1, 0] on the world body and a cube of half-extent 1/2 on body 1, its centre at z (3/2 apart
 // at z = 2). With a contact said, the pair claims to be closer than the margin 0.
@@ -43,6 +45,7 @@ scalecert::Scene stacked() {
 }  // namespace
 
 TEST(Right, MujocoApart) { EXPECT_MUJOCO_RIGHT(kBoxes, {kApart}); }
+TEST(Right, MujocoTouching) { EXPECT_MUJOCO_RIGHT(kBoxes, {kTouching}); }
 TEST(Right, MujocoTouchingWithinATolerance) {
     scalecert::MujocoOptions o;
     o.abs_tolerance = scalecert::parse_rational("1e-9");
@@ -51,6 +54,6 @@ TEST(Right, MujocoTouchingWithinATolerance) {
 TEST(Right, MujocoHeld) { EXPECT_MUJOCO_HELD_RIGHT(two_boxes(), {at_height(2, false)}); }
 TEST(Right, Claims) { EXPECT_CLAIMS_RIGHT(stacked(), "1 1 separated\n3/2 3/2 touching\n"); }
 
-TEST(Wrong, MujocoTouching) { EXPECT_MUJOCO_RIGHT(kBoxes, {kApart, kTouching}); }
+TEST(Wrong, MujocoDeep) { EXPECT_MUJOCO_RIGHT(kBoxes, {kApart, kDeep}); }
 TEST(Wrong, MujocoHeld) { EXPECT_MUJOCO_HELD_RIGHT(two_boxes(), {at_height(2, false), at_height(2, true)}); }
 TEST(Wrong, Claims) { EXPECT_CLAIMS_RIGHT(stacked(), "1 1 separated\n2 2 not_overlapping\n"); }

@@ -12,7 +12,10 @@ using namespace report_parts;
 
 namespace {
 const char* bound_key(TypedClaim::Bound b) {
-    return b == TypedClaim::Bound::Value ? "value" : b == TypedClaim::Bound::AtLeast ? "at_least" : "below";
+    return b == TypedClaim::Bound::Value     ? "value"
+           : b == TypedClaim::Bound::AtLeast ? "at_least"
+           : b == TypedClaim::Bound::AtMost  ? "at_most"
+                                             : "below";
 }
 }  // namespace
 
@@ -23,6 +26,7 @@ bool signed_distance_right(const TypedClaim& c, int s, const Q& E, const Toleran
     case TypedClaim::Bound::Value: return tol.close_signed(c.value, s, E);
     case TypedClaim::Bound::AtLeast: return sign_minus_sqrt(c.value - tol.abs, s, E) <= 0;
     case TypedClaim::Bound::Below: return sign_minus_sqrt(c.value + tol.abs, s, E) > 0;
+    case TypedClaim::Bound::AtMost: return sign_minus_sqrt(c.value + tol.abs, s, E) >= 0;
     }
     return false;
 }
@@ -54,6 +58,7 @@ void describe(const TypedClaim& c, const SignedDistanceJudged& d, const Judged& 
         o["exact_verdict"] = verdict_name(d.exact);
         const std::string claimed = c.bound == TypedClaim::Bound::Value     ? "claimed " + num(c.value)
                                     : c.bound == TypedClaim::Bound::AtLeast ? "claimed at least " + num(c.value)
+                                    : c.bound == TypedClaim::Bound::AtMost  ? "claimed at most " + num(c.value)
                                                                             : "claimed below " + num(c.value);
         text = "signed distance at " + at(c) + ": " + claimed + ", exact ~" +
                dbl(surd_rn(d.root(), d.exact_squared, Q(-R)), 17) + " (" + verdict_name(d.exact) + "; the hulls' " +
@@ -77,6 +82,7 @@ void describe(const TypedClaim& c, const SignedDistanceJudged& d, const Judged& 
                                 : std::fabs(sqrt_minus_rn(d.exact_squared, d.sign() > 0 ? c.value : Q(-c.value)));
     const std::string claimed = c.bound == TypedClaim::Bound::Value     ? "claimed " + num(c.value)
                                 : c.bound == TypedClaim::Bound::AtLeast ? "claimed at least " + num(c.value)
+                                : c.bound == TypedClaim::Bound::AtMost  ? "claimed at most " + num(c.value)
                                                                         : "claimed below " + num(c.value);
     text = "signed distance at " + at(c) + ": " + claimed + ", exact " +
            (d.sign() == 0 ? std::string("0 (touching)")
