@@ -782,8 +782,9 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
                 {"margin", p.margin},
                 {"contacts", cons ? cons->size() : 0}};
             // No contact, and the object's box (its local box's corners, posed exactly) beyond the
-            // plane by at least the margin: right, without its vertices.
-            if (!deepest) {
+            // plane by at least the margin: right, without its vertices (with --intended, judged
+            // below so that the pair is judged as written too).
+            if (!deepest && !opt.intended) {
                 Q lower;
                 for (int k = 0; k < 8; ++k) {
                     Q x = c0;
@@ -1031,6 +1032,9 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
                 ++verdicts_unjudged;
             }
             bool all_right = verdict_right;
+            // Whether a claim the reproducer holds (the verdict, dist, normal) is wrong: a pair
+            // state wrong only in its contacts' positions or secondary dists writes none.
+            bool claim_wrong = !verdict_right;
             // The reproducer's claims: a contact's verdict there is "below" the margin, which a
             // claims file holds (at_most is not one of its bounds), so it is kept only when it was
             // judged wrong (S > margin: then below it is wrong too).
@@ -1066,6 +1070,7 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
                                   {"error_m", number(err)},
                                   {"right", dj.right}};
                 all_right = all_right && dj.right;
+                claim_wrong = claim_wrong || !dj.right;
                 claims.push_back(dist);
                 if (!dj.right)
                     text += "WRONG  state " + std::to_string(f) + " (" + labels[f] + "): " + geom_label(m, a) +
@@ -1093,6 +1098,7 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
                     ++judgements;
                     pj["normal"] = Json{{"said", said}, {"right", right}};
                     all_right = all_right && right;
+                    claim_wrong = claim_wrong || !right;
                     claims.push_back(d);
                     if (!right)
                         text += "WRONG  state " + std::to_string(f) + " (" + labels[f] + "): " + geom_label(m, a) +
@@ -1110,7 +1116,7 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
             }
             if (!all_right) {
                 res.wrong += 1;
-                if (!opt.failures.empty()) {
+                if (!opt.failures.empty() && claim_wrong) {
                     // A reproducer: the two geoms as MuJoCo held them (a mesh's float32 vertices),
                     // and the claims at their poses, which certify-fp replays; every number a hex
                     // float in a JSON string, exact under every reading.
