@@ -416,6 +416,9 @@ void check_scene(const ExactScene& sc, const std::string& name) {
             throw InputError(name + ": " + pname[i] + ": more than " + std::to_string(kMaxPoints) +
                              " points (the limit)");
     }
+    for (int i = 0; i < 2; ++i)
+        if (sgn(sc.P[i].radius) > 0 && !sc.P[i].parts.empty())
+            throw InputError(name + ": " + pname[i] + ": an object made of parts with a radius is not judged yet");
     if (sc.rounded() && sc.made_of_parts())
         throw InputError(name + ": an object made of parts beside an object with a radius is not judged yet");
     for (int i = 0; i < 2; ++i) {
