@@ -795,6 +795,7 @@ MujocoResult judge_states(Loaded& model, const std::vector<std::vector<double>>&
                 if (sign_minus_sqrt(lower, margin - opt.tolerance.abs + exact_from_double(geom_radius(m.geoms[O])),
                                     N) >= 0) {
                     ++judgements;
+                    ++decided_by_boxes;
                     pj["verdict"] = Json{{"said", "no contact"}, {"exact", "separated"}, {"right", true}};
                     pj["signed_distance"] = Json{{"decided_by", "its box, beyond the plane by the margin"}};
                     return pj;
