@@ -422,9 +422,9 @@ std::string fraction_columns(const Q& q) { return q.get_num().get_str() + "," + 
 
 GoldenAnswers rounded_golden(const ExactScene& sc, const RoundedPoints& S, const GoldenPoints& points) {
     validate(points);
-    const auto [rank, flat] = S.difference_span(S);
+    const std::pair<int, Vec3z> span = S.difference_span(S);  // (a lambda may not capture a binding)
     auto state = [&](const Q& r1, const Q& r2) {
-        const MeasuredDepth md = hull_measure(S, rank, flat, r1, r2);
+        const MeasuredDepth md = hull_measure(S, span.first, span.second, r1, r2);
         const Q R = r1 * sc.P[0].radius + r2 * sc.P[1].radius;
         const auto [s, E] = hull_signed(md);
         return std::tuple<Verdict, int, Q, Q>{rounded_verdict(md, R), s, E, R};
