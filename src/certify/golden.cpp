@@ -45,15 +45,6 @@ std::vector<int> parse_offsets(const std::string& text) {
     return ks;
 }
 
-namespace {
-
-struct Rect {
-    Q lo[2], hi[2];
-    bool holds(const Q& x, const Q& y) const { return lo[0] <= x && x <= hi[0] && lo[1] <= y && y <= hi[1]; }
-};
-
-// The double nearest v, or its neighbour toward the inside when that one lies in [lo, hi] and v's
-// nearest does not (a pair in the rectangle stays there when a program rounds it).
 double double_in(const Q& v, const Q& lo, const Q& hi) {
     double d = to_double_rn(v);
     const Q e = exact_from_double(d);
@@ -64,6 +55,13 @@ double double_in(const Q& v, const Q& lo, const Q& hi) {
     }
     return d;
 }
+
+namespace {
+
+struct Rect {
+    Q lo[2], hi[2];
+    bool holds(const Q& x, const Q& y) const { return lo[0] <= x && x <= hi[0] && lo[1] <= y && y <= hi[1]; }
+};
 
 // The pairs near a sampled point (x, y) of the boundary, in the rectangle: on it, then for each k
 // above, below, right and left of it by 2^-k of its own coordinate.

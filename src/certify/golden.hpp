@@ -28,6 +28,9 @@ constexpr size_t kMaxGoldenOffsets = 20;
 constexpr int kMaxGoldenOffset = 1074;  // 2^-1074: the least positive double
 // InputError naming the bad value ("golden: --verticals ...").
 void validate(const GoldenPoints& p);
+// The double nearest v, or its neighbour toward the inside when that one lies in [lo, hi] and v's
+// nearest does not (a pair in the rectangle stays there when a program rounds it).
+double double_in(const Q& v, const Q& lo, const Q& hi);
 // "4,12,20" as offsets (InputError otherwise).
 std::vector<int> parse_offsets(const std::string& text);
 

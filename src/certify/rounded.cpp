@@ -405,18 +405,6 @@ std::string RoundedRules::certificate(Json entries) const {
 namespace scalecert::internal {
 
 namespace {
-// The double nearest v, or its neighbour toward the inside of [lo, hi] when that one lies in it
-// and v's nearest does not.
-double double_within(const Q& v, const Q& lo, const Q& hi) {
-    double d = to_double_rn(v);
-    const Q e = exact_from_double(d);
-    if (e > hi || e < lo) {
-        const double n = std::nextafter(d, e > hi ? -HUGE_VAL : HUGE_VAL);
-        const Q m = exact_from_double(n);
-        if (lo <= m && m <= hi) d = n;
-    }
-    return d;
-}
 std::string fraction_columns(const Q& q) { return q.get_num().get_str() + "," + q.get_den().get_str(); }
 }  // namespace
 
@@ -476,7 +464,7 @@ GoldenAnswers rounded_golden(const ExactScene& sc, const RoundedPoints& S, const
         for (const auto& [where, p] : near) {
             const auto& [qx, qy] = p;
             if (qx < lo1 || qx > hi1 || qy < lo2 || qy > hi2) continue;
-            const double dx = double_within(qx, lo1, hi1), dy = double_within(qy, lo2, hi2);
+            const double dx = double_in(qx, lo1, hi1), dy = double_in(qy, lo2, hi2);
             const Q ex = exact_from_double(dx), ey = exact_from_double(dy);
             const auto [v, s, E, R] = state(ex, ey);
             const double value = s == 0 || sgn(E) == 0 ? to_double_rn(Q(-R))
