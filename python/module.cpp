@@ -698,6 +698,35 @@ PyScene warn_notes(PyScene s) {
 
 namespace {
 
+// Scene.from_parts: P1, P2 lists of parts; radii = (radii1, radii2), each None or a radius a part.
+PyScene parts_scene(const py::handle& p1, const py::handle& p2, const py::handle& i1, const py::handle& i2,
+                    const py::handle& seeds, scalecert::Numbers numbers, const py::handle& radii) {
+    std::vector<std::vector<scalecert::Point>> parts[2];
+    std::array<std::vector<scalecert::Rational>, 2> part_radii;
+    const char* names[2] = {"P1", "P2"};
+    const py::handle ps[2] = {p1, p2};
+    for (int i = 0; i < 2; ++i) {
+        py::list l = as_list(ps[i], names[i]);
+        for (size_t k = 0; k < l.size(); ++k)
+            parts[i].push_back(points(l[k], std::string(names[i]) + "[" + std::to_string(k) + "]", numbers));
+    }
+    if (!radii.is_none()) {
+        const py::list l = as_list(radii, "radii");
+        if (l.size() != 2) throw scalecert::InputError("radii: expected (radii1, radii2), either None");
+        for (size_t i = 0; i < 2; ++i) {
+            if (l[i].is_none()) continue;
+            const std::string what = "radii[" + std::to_string(i) + "]";
+            const py::list r = as_list(l[i], what);
+            for (size_t k = 0; k < r.size(); ++k)
+                part_radii[i].push_back(rational(r[k], (what + "[" + std::to_string(k) + "]").c_str(), numbers));
+        }
+    }
+    const auto s = seeds_of(seeds, numbers);
+    return PyScene{scalecert::Scene::from_parts(std::move(parts[0]), std::move(parts[1]), interval(i1, "I1", numbers),
+                                                interval(i2, "I2", numbers), s[0], s[1], std::move(part_radii)),
+                   nullptr, numbers};
+}
+
 // The enum Verdict: classify()'s int8 codes, and query()'s verdict.
 void bind_verdict(py::module_& m) {
     py::enum_<scalecert::Verdict>(m, "Verdict", "classify() returns these as int8 codes")
@@ -725,27 +754,34 @@ void bind_scene_construction(py::class_<PyScene>& scene) {
         .def_static(
             "from_parts",
             [](const py::handle& p1, const py::handle& p2, const py::handle& i1, const py::handle& i2,
-               const py::handle& seeds, const py::handle& numbers_) {
-                const scalecert::Numbers numbers = numbers_arg(numbers_);
-                std::vector<std::vector<scalecert::Point>> parts[2];
-                const char* names[2] = {"P1", "P2"};
-                const py::handle ps[2] = {p1, p2};
-                for (int i = 0; i < 2; ++i) {
-                    py::list l = as_list(ps[i], names[i]);
-                    for (size_t k = 0; k < l.size(); ++k)
-                        parts[i].push_back(
-                            points(l[k], std::string(names[i]) + "[" + std::to_string(k) + "]", numbers));
-                }
-                const auto s = seeds_of(seeds, numbers);
-                return PyScene{
-                    scalecert::Scene::from_parts(std::move(parts[0]), std::move(parts[1]), interval(i1, "I1", numbers),
-                                                 interval(i2, "I2", numbers), s[0], s[1]),
-                    nullptr, numbers};
-            },
+               const py::handle& seeds, const py::handle& numbers_,
+               const py::handle& radii) { return parts_scene(p1, p2, i1, i2, seeds, numbers_arg(numbers_), radii); },
             py::arg("P1"), py::arg("P2"), py::arg("I1") = py::none(), py::arg("I2") = py::none(),
-            py::arg("seeds") = py::none(), py::arg("numbers") = "double",
+            py::arg("seeds") = py::none(), py::arg("numbers") = "double", py::arg("radii") = py::none(),
             "Two objects made of convex parts: P1, P2 lists of parts, each a list of vertices (numbers as for "
-            "Scene); seeds = (s1, s2), either may be None: the mean of all that object's vertices.")
+            "Scene); seeds = (s1, s2), either may be None: the mean of all that object's vertices. radii = "
+            "(radii1, radii2), either None: a radius >= 0 for each part of that object (a list or numpy array), "
+            "each part every point within its radius of its hull (one vertex: a sphere).")
+        .def_static(
+            "sphere_set",
+            [](const py::handle& centres, const py::handle& radii, const py::handle& other,
+               const py::handle& other_radius, const py::handle& i1, const py::handle& i2, const py::handle& seeds,
+               const py::handle& numbers_) {
+                // A part per centre (one point) with its radius, against one convex object.
+                const scalecert::Numbers numbers = numbers_arg(numbers_);
+                py::list spheres;
+                for (const py::handle c : as_list(centres, "centres")) spheres.append(py::make_tuple(c));
+                py::list others;
+                others.append(other);
+                py::list other_radii;
+                other_radii.append(other_radius);
+                return parts_scene(spheres, others, i1, i2, seeds, numbers, py::make_tuple(radii, other_radii));
+            },
+            py::arg("centres"), py::arg("radii"), py::arg("other"), py::arg("other_radius") = 0,
+            py::arg("I1") = py::none(), py::arg("I2") = py::none(), py::arg("seeds") = py::none(),
+            py::arg("numbers") = "double",
+            "A sphere set (centres: an n x 3 array, radii: n radii > 0), one object of n parts, against the convex "
+            "hull of `other`'s vertices with other_radius >= 0; the rest as for from_parts.")
         .def_static(
             "load",
             [](const py::handle& path, const py::handle& numbers_) {
@@ -833,6 +869,15 @@ void bind_scene_contents(py::class_<PyScene>& scene) {
             [](const PyScene& s) { return py::make_tuple(fraction(s.scene.radius(0)), fraction(s.scene.radius(1))); },
             "the objects' radii as Fractions (0 for an object without one)")
         .def(
+            "part_radii",
+            [](const PyScene& s, int i) {
+                if (i != 0 && i != 1) throw scalecert::InputError("part_radii: i is 0 (P1) or 1 (P2)");
+                py::list out;
+                for (size_t k = 0; k < s.scene.part_count(i); ++k) out.append(fraction(s.scene.part_radius(i, k)));
+                return out;
+            },
+            py::arg("i"), "object i's parts' radii as Fractions (0 for a part without one)")
+        .def(
             "json", [](const PyScene& s) { return s.scene.json(); }, "the scene file text, every number exact")
         .def(
             "curve", [](const PyScene& s) { return curve_dict(s.a().curve()); },
@@ -865,10 +910,17 @@ void bind_scene_answers(py::class_<PyScene>& scene) {
                                  py::arg("point") = fractions(q.common->point));
                 else
                     d["common_point"] = py::none();
-                d["certificate"] = json_loads(s.a().query_json(a, b));
+                // Parts with radii have no certificate yet: None.
+                bool radii_on_parts = false;
+                if (!s.scene.convex())
+                    for (int i = 0; i < 2 && !radii_on_parts; ++i)
+                        for (size_t k = 0; k < s.scene.part_count(i) && !radii_on_parts; ++k)
+                            radii_on_parts = sgn(s.scene.part_radius(i, k)) > 0;
+                d["certificate"] = radii_on_parts ? py::object(py::none()) : json_loads(s.a().query_json(a, b));
                 return d;
             },
-            py::arg("rho1"), py::arg("rho2"), "the exact verdict at (rho1, rho2) > 0, with its certificate")
+            py::arg("rho1"), py::arg("rho2"),
+            "the exact verdict at (rho1, rho2) > 0, with its certificate (None on parts with radii)")
         .def(
             "classify",
             [](const PyScene& s, const py::handle& r1, const py::handle& r2) {

@@ -225,18 +225,6 @@ BOOST_AUTO_TEST_CASE(scenes_refused_in_one_line) {
                    .find("P1: its points span no volume (they lie in a plane)") != std::string::npos);
     BOOST_TEST(err(R"({"P1": {"vertices": [[0,0,0],[1,0,0],[0,1,0]], "radius": 0}, "P2": {"sphere": 1}})")
                    .find("fewer than 4 vertices (3) and no radius > 0") != std::string::npos);
-    // Radii on parts, and parts beside a radius, are not read yet.
-    ReadOptions parts;
-    parts.allow_parts = true;
-    BOOST_TEST(test::input_error([&] {
-                   parse_scene_text(R"({"P1": {"parts": [{"vertices": [[0,0,0]], "radius": 1}]}, "P2": {"sphere": 1}})",
-                                    "s.json", ".", parts);
-               }).find("unknown field 'radius'") != std::string::npos);
-    BOOST_TEST(test::input_error([&] {
-                   parse_scene_text(R"({"P1": {"parts": [{"vertices": [[0,0,0],[1,0,0],[0,1,0],[0,0,1]]}]},
-                                        "P2": {"sphere": 1}})",
-                                    "s.json", ".", parts);
-               }).find("an object made of parts beside an object with a radius") != std::string::npos);
     // What is not built for them says so.
     auto sc = std::make_shared<const ExactScene>(
         parse_scene_text(R"({"P1": {"sphere": 1}, "P2": {"sphere": 1}})", "s.json", "."));

@@ -939,11 +939,14 @@ void compound_api_costs() {
 
 int checker_bench(int argc, char** argv);  // tools/bench_checker.cpp
 int round_bench(bool quick);               // tools/bench_round.cpp
+int robot_bench(bool quick);               // tools/bench_round.cpp
 
 int main(int argc, char** argv) {
     if (argc > 1 && std::strcmp(argv[1], "--checker") == 0) return checker_bench(argc - 2, argv + 2);
     if (argc > 1 && std::strcmp(argv[1], "--round") == 0)
         return round_bench(argc > 2 && std::strcmp(argv[2], "--quick") == 0);
+    if (argc > 1 && std::strcmp(argv[1], "--robot") == 0)
+        return robot_bench(argc > 2 && std::strcmp(argv[2], "--quick") == 0);
     bool quick = false, with_slow = false, sizes_only = false, queries_only = false, claims_only = false,
          compound_only = false;
     for (int i = 1; i < argc; ++i) {

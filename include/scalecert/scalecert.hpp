@@ -81,9 +81,13 @@ class Scene {
     static Scene with_radii(std::vector<Point> p1, std::vector<Point> p2, std::array<Rational, 2> radii,
                             Interval i1 = {}, Interval i2 = {}, std::optional<Point> seed1 = {},
                             std::optional<Point> seed2 = {});
-    // Two objects made of parts: parts[i] is object i's parts, each a list of points.
+    // Two objects made of parts: parts[i] is object i's parts, each a list of points. With
+    // part_radii[i] (empty, or a radius >= 0 for each of object i's parts), part k is every point
+    // within its radius of its hull: a part of one point with a radius is a sphere, so a robot of
+    // spheres is one object (CLAIMS.md, "Parts with radii"); a part with a radius > 0 may be flat.
     static Scene from_parts(std::vector<std::vector<Point>> parts1, std::vector<std::vector<Point>> parts2, Interval i1,
-                            Interval i2, std::optional<Point> seed1 = {}, std::optional<Point> seed2 = {});
+                            Interval i2, std::optional<Point> seed1 = {}, std::optional<Point> seed2 = {},
+                            std::array<std::vector<Rational>, 2> part_radii = {});
     // The scene file format ("vertices" or "parts"); its JSON numbers and its meshes' text numbers
     // read as `numbers` says (JSON strings exact always).
     static Scene load(const std::string& scene_json_path, Numbers numbers = Numbers::Double);
@@ -108,7 +112,8 @@ class Scene {
     // binary values other than as written); empty when there are none.
     std::vector<std::string> notes() const;
     const Point& seed(int i) const;
-    Rational radius(int i) const;  // 0 for an object without one
+    Rational radius(int i) const;                 // 0 for an object without one
+    Rational part_radius(int i, size_t k) const;  // part k's (a convex object's own for k = 0)
     Interval range(int i) const;
     std::string json() const;  // the scene file, every number exact
 

@@ -307,6 +307,7 @@ class PartsRules final : public ClaimRules {
     // Whether the type is judged on parts.
     static bool takes(ClaimType t);
     Judged judge(const TypedClaim& c, Proof* proof = nullptr) override;
+    std::string refusal(ClaimType t) const override;
     const ExactScene* parts() const override;
     std::optional<std::array<int, 2>> part_pair(const std::optional<std::array<int, 2>>& given,
                                                 const std::string& where) const override;
@@ -327,6 +328,10 @@ class PartsRules final : public ClaimRules {
     void judge_depth(const TypedClaim& c, Judged& g, Json* p);
     CompoundJudge& judge_;
 };
+
+// A part pair {part of P1, part of P2} checked against the objects' part counts: InputError after
+// `where` (".parts[k]") naming the part past them.
+void check_part_pair(const std::array<int, 2>& pair, const size_t counts[2], const std::string& where);
 
 // P1(ρ1) ⊆ {n·x ≤ c1} and P2(ρ2) ⊆ {n·x ≥ c2}: the plane n·x = offset (or, with none, some plane of
 // normal n) lies strictly between them.

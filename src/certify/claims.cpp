@@ -41,7 +41,7 @@ class ClaimReader {
   public:
     // parts: the scene of objects made of parts, or none for two convex objects.
     ClaimReader(const std::string& name, Numbers numbers, const ExactScene* parts)
-        : name_(name), numbers_(numbers), parts_(parts != nullptr) {
+        : name_(name), numbers_(numbers), parts_(parts != nullptr), rounded_(parts && parts->rounded()) {
         if (parts)
             for (int i = 0; i < 2; ++i) count_[i] = std::max<size_t>(1, parts->P[i].parts.size());
     }
@@ -51,16 +51,15 @@ class ClaimReader {
         if (claim.kind != JNode::Object) fail("", "expected an object with \"kind\"");
         const std::string kind = str(claim, "kind");
         const std::optional<ClaimType> t = type_of(kind);
-        if (parts_ && (!t || !PartsRules::takes(*t))) {
+        // On parts with radii a signed distance is a contact of one part pair, as a depth is.
+        if (parts_ && (!t || !(PartsRules::takes(*t) || (rounded_ && *t == ClaimType::SignedDistance)))) {
+            const std::string kinds = std::string("verdict, separating_plane, witness_point, distance") +
+                                      (rounded_ ? ", penetration_depth and signed_distance" : " and penetration_depth");
             if (t)
-                fail("kind",
-                     in_quotes(kind) +
-                         " is a claim on two convex objects; on objects made of parts certify-fp takes verdict, "
-                         "separating_plane, witness_point, distance and penetration_depth (the region and its "
-                         "growth set: scalecert region)");
-            fail("kind", "unknown kind " + in_quotes(kind) +
-                             " (on objects made of parts: verdict, separating_plane, witness_point, distance, "
-                             "penetration_depth)");
+                fail("kind", in_quotes(kind) +
+                                 " is a claim on two convex objects; on objects made of parts certify-fp " + "takes " +
+                                 kinds + " (the region and its growth set: scalecert region)");
+            fail("kind", "unknown kind " + in_quotes(kind) + " (on objects made of parts: " + kinds + ")");
         }
         if (!t)
             fail("kind", "unknown kind " + in_quotes(kind) +
@@ -144,8 +143,9 @@ class ClaimReader {
                     set_no_answer(c, "direction", "the zero vector");
             break;
         case ClaimType::SignedDistance: {
-            only(claim, {"kind", "rho1", "rho2", "value", "at_least", "below", "pose1", "pose2"});
+            only(claim, {"kind", "rho1", "rho2", "parts", "value", "at_least", "below", "pose1", "pose2"});
             pair_at(claim, c);
+            part_pair(claim, c);
             poses(claim, c);
             const JNode* v = claim.find("value");
             const JNode* lo = claim.find("at_least");
@@ -163,7 +163,7 @@ class ClaimReader {
   private:
     std::string name_, where_;
     Numbers numbers_;
-    bool parts_;
+    bool parts_, rounded_;      // objects made of parts, with radii
     size_t count_[2] = {1, 1};  // parts of P1 and of P2 (a convex object is one part)
 
     // "pose1", "pose2": the objects at poses, each three rows [r1, r2, r3, t] of numbers (read as
@@ -187,15 +187,17 @@ class ClaimReader {
         }
     }
 
-    // A depth's "parts": [k, j], the pair of parts it speaks of (a contact). Needed on objects made
-    // of parts, where the depth of the objects is not defined; on two convex objects only [0, 0].
+    // A depth's or a signed distance's "parts": [k, j], the pair of parts it speaks of (a contact).
+    // Needed on objects made of parts, where the depth of the objects is not defined; on two convex
+    // objects only [0, 0].
     void part_pair(const JNode& claim, TypedClaim& c) const {
         const JNode* n = claim.find("parts");
         if (!n) {
             if (parts_)
-                fail("parts",
-                     "missing: a penetration depth on objects made of parts is a contact of one part pair, "
-                     "\"parts\": [part of P1, part of P2] (numbered from 0)");
+                fail("parts", std::string("missing: a ") +
+                                  (c.type == ClaimType::Depth ? "penetration depth" : "signed distance") +
+                                  " on objects made of parts is a contact of one part pair, "
+                                  "\"parts\": [part of P1, part of P2] (numbered from 0)");
             return;
         }
         if (n->kind != JNode::Array || n->items.size() != 2)

@@ -49,41 +49,47 @@ std::vector<Vec3z> span_of(const PointSets& S, int i, size_t count) {
 }
 }  // namespace
 
-RoundedPoints::RoundedPoints(const ExactScene& sc, const std::string& name) {
-    std::vector<Vec3z> basis[2];
-    for (int i = 0; i < 2; ++i) {
-        Object& o = obj_[i];
-        const PolyInput& in = sc.P[i];
-        o.pts = in.points;
-        o.seed = in.seed;
-        o.scale = 1;
-        for (const Vec3q& v : o.pts)
-            for (const Q& c : v) lcm_into(o.scale, Z(c.get_den()));
-        o.zpts.reserve(o.pts.size());
-        o.dpts.reserve(o.pts.size());
-        for (const Vec3q& v : o.pts) {
-            o.zpts.push_back({over(v[0], o.scale), over(v[1], o.scale), over(v[2], o.scale)});
-            o.dpts.push_back({to_double_rn(v[0]), to_double_rn(v[1]), to_double_rn(v[2])});
-        }
-        basis[i] = span_of(*this, i, o.pts.size());
-        const std::string which = i == 0 ? "P1" : "P2";
-        if (basis[i].size() == 3)
-            o.hull.emplace(build_polyhedron(o.pts, name + ": " + which));
-        else if (sgn(in.radius) <= 0)
-            throw InputError(name + ": " + which + ": its points span no volume (they lie " +
-                             (basis[i].size() == 2   ? "in a plane"
-                              : basis[i].size() == 1 ? "on a line"
-                                                     : "at one point") +
-                             ") and it has no radius > 0");
+std::shared_ptr<const RoundedBody> rounded_body(const std::vector<Vec3q>& points, const Vec3q& seed, const Q& radius,
+                                                const std::string& label) {
+    auto o = std::make_shared<RoundedBody>();
+    o->pts = points;
+    o->seed = seed;
+    o->scale = 1;
+    for (const Vec3q& v : o->pts)
+        for (const Q& c : v) lcm_into(o->scale, Z(c.get_den()));
+    o->zpts.reserve(o->pts.size());
+    o->dpts.reserve(o->pts.size());
+    for (const Vec3q& v : o->pts) {
+        o->zpts.push_back({over(v[0], o->scale), over(v[1], o->scale), over(v[2], o->scale)});
+        o->dpts.push_back({to_double_rn(v[0]), to_double_rn(v[1]), to_double_rn(v[2])});
     }
-    std::vector<Vec3z> both = basis[0];
-    for (const Vec3z& v : basis[1]) extend_basis(both, v);
+    for (size_t k = 1; k < o->zpts.size() && o->basis.size() < 3; ++k)
+        extend_basis(o->basis, sub(o->zpts[k], o->zpts[0]));
+    if (o->basis.size() == 3)
+        o->hull.emplace(build_polyhedron(o->pts, label));
+    else if (sgn(radius) <= 0)
+        throw InputError(label + ": its points span no volume (they lie " +
+                         (o->basis.size() == 2   ? "in a plane"
+                          : o->basis.size() == 1 ? "on a line"
+                                                 : "at one point") +
+                         ") and it has no radius > 0");
+    return o;
+}
+
+RoundedPoints::RoundedPoints(const ExactScene& sc, const std::string& name)
+    : RoundedPoints(rounded_body(sc.P[0].points, sc.P[0].seed, sc.P[0].radius, name + ": P1"),
+                    rounded_body(sc.P[1].points, sc.P[1].seed, sc.P[1].radius, name + ": P2")) {}
+
+RoundedPoints::RoundedPoints(std::shared_ptr<const RoundedBody> a, std::shared_ptr<const RoundedBody> b)
+    : obj_{std::move(a), std::move(b)} {
+    std::vector<Vec3z> both = obj_[0]->basis;
+    for (const Vec3z& v : obj_[1]->basis) extend_basis(both, v);
     rank_ = static_cast<int>(both.size());
     if (rank_ < 3) flat_normal_ = orthogonal_to(both);
 }
 
 int RoundedPoints::argmax(int i, const Vec3z& n) const {
-    const Object& o = obj_[i];
+    const RoundedBody& o = *obj_[i];
     if (o.hull) return o.hull->argmax(n).front();
     int best = 0;
     Z bv = dotz(n, o.zpts[0]);
@@ -95,7 +101,7 @@ int RoundedPoints::argmax(int i, const Vec3z& n) const {
 }
 
 int RoundedPoints::dargmax(int i, const D3& d) const {
-    const Object& o = obj_[i];
+    const RoundedBody& o = *obj_[i];
     int best = 0;
     double bv = -INFINITY;
     auto consider = [&](int k) {
@@ -112,10 +118,10 @@ int RoundedPoints::dargmax(int i, const D3& d) const {
 
 std::pair<int, Vec3z> RoundedPoints::difference_span(const PointSets& S) const {
     if (&S == this) return {rank_, flat_normal_};
-    if (obj_[0].hull || obj_[1].hull) return {3, Vec3z{}};
+    if (obj_[0]->hull || obj_[1]->hull) return {3, Vec3z{}};
     // At poses the hulls turn apart: the span of the moved points.
-    std::vector<Vec3z> both = span_of(S, 0, obj_[0].pts.size());
-    for (const Vec3z& v : span_of(S, 1, obj_[1].pts.size())) extend_basis(both, v);
+    std::vector<Vec3z> both = span_of(S, 0, obj_[0]->pts.size());
+    for (const Vec3z& v : span_of(S, 1, obj_[1]->pts.size())) extend_basis(both, v);
     if (both.size() == 3) return {3, Vec3z{}};
     return {static_cast<int>(both.size()), orthogonal_to(both)};
 }
@@ -176,12 +182,12 @@ void check_rounded(const ExactScene& sc, const RoundedPoints& S, const std::stri
 }
 
 bool RoundedPoints::strictly_inside(int i, const Vec3q& x) const {
-    return obj_[i].hull && obj_[i].hull->strictly_inside(x);
+    return obj_[i]->hull && obj_[i]->hull->strictly_inside(x);
 }
 
 std::vector<std::pair<int, Q>> RoundedPoints::interior_weights(int i, const Vec3q& x) const {
-    if (!obj_[i].hull) throw std::logic_error("RoundedPoints::interior_weights: a flat object");
-    return obj_[i].hull->interior_weights(x);
+    if (!obj_[i]->hull) throw std::logic_error("RoundedPoints::interior_weights: a flat object");
+    return obj_[i]->hull->interior_weights(x);
 }
 
 // ---- the rules ---------------------------------------------------------------------------------
@@ -231,9 +237,8 @@ bool rounded_member(const PointSets& S, int i, const Q& rho, const Q& m, const V
     return false;
 }
 
-// A plane claim's rule on objects with a radius: the hulls' extents c1, c2 along n widened by
-// m1·|n| and m2·|n| (|n| = √N). Exact: strictly between them; within abs: each object within
-// abs·|n| of its side (no offset: c1 + m1|n| − (c2 − m2|n|) ≤ 2·abs·|n|).
+}  // namespace
+
 bool rounded_plane_right(const Tolerance& tol, const Q& c1, const Q& c2, const Q& m1, const Q& m2, const Vec3q& n,
                          const std::optional<Q>& offset) {
     const Q N = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
@@ -244,6 +249,8 @@ bool rounded_plane_right(const Tolerance& tol, const Q& c1, const Q& c2, const Q
     if (!offset) return sign_minus_sqrt(c1 - c2, 2 * tol.abs - m1 - m2, N) <= 0;
     return sign_minus_sqrt(c1 - *offset, tol.abs - m1, N) <= 0 && sign_minus_sqrt(*offset - c2, tol.abs - m2, N) <= 0;
 }
+
+namespace {
 // The proof of the hulls' signed distance: apart, their proved distance ({"distance": ...}, which
 // the verdict against R needs, not a separating plane alone); meeting, their depth proof.
 Json hulls_proof(const MeasuredDepth& md, const TypedClaim& c) {

@@ -15,18 +15,33 @@
 
 namespace scalecert::internal {
 
-// The points of two objects as the measures see them: an object whose points span 3 dimensions
-// is held as its exact polyhedron (support queries climb it), any other (a point, a segment, a
-// flat polygon) as its points, every one scanned.
+// One object's (or one part's) points as the measures see them, built once and shared by the
+// pairs it is in: points that span 3 dimensions are held as their exact polyhedron (support
+// queries climb it), any others (a point, a segment, a flat polygon) as points, every one scanned.
+struct RoundedBody {
+    std::vector<Vec3q> pts;
+    std::vector<Vec3z> zpts;  // pts · scale
+    std::vector<D3> dpts;
+    Z scale;
+    Vec3q seed;
+    std::optional<Polyhedron> hull;  // when the points span 3 dimensions
+    std::vector<Vec3z> basis;        // a basis of the span of the points' differences
+};
+// Throws InputError after `label` ("NAME: P1") when the points are flat and the radius is not > 0.
+std::shared_ptr<const RoundedBody> rounded_body(const std::vector<Vec3q>& points, const Vec3q& seed, const Q& radius,
+                                                const std::string& label);
+
+// The points of two objects (or parts) as the measures see them.
 class RoundedPoints final : public PointSets {
   public:
     // Throws InputError after `name` when an object without a radius is flat.
     RoundedPoints(const ExactScene& sc, const std::string& name);
-    Vec3q point(int i, int k) const override { return obj_[i].pts[static_cast<size_t>(k)]; }
-    D3 dpoint(int i, int k) const override { return obj_[i].dpts[static_cast<size_t>(k)]; }
-    const Vec3q& seed(int i) const override { return obj_[i].seed; }
-    const Z& scale(int i) const override { return obj_[i].scale; }
-    Vec3z zpoint(int i, int k) const override { return obj_[i].zpts[static_cast<size_t>(k)]; }
+    RoundedPoints(std::shared_ptr<const RoundedBody> a, std::shared_ptr<const RoundedBody> b);
+    Vec3q point(int i, int k) const override { return obj_[i]->pts[static_cast<size_t>(k)]; }
+    D3 dpoint(int i, int k) const override { return obj_[i]->dpts[static_cast<size_t>(k)]; }
+    const Vec3q& seed(int i) const override { return obj_[i]->seed; }
+    const Z& scale(int i) const override { return obj_[i]->scale; }
+    Vec3z zpoint(int i, int k) const override { return obj_[i]->zpts[static_cast<size_t>(k)]; }
     int argmax(int i, const Vec3z& n) const override;
     int dargmax(int i, const D3& d) const override;
     // The dimension of the hulls' Minkowski difference C1 − C2 in S (these points, or them at
@@ -37,16 +52,10 @@ class RoundedPoints final : public PointSets {
     // For x strictly inside object i's hull: Polyhedron::interior_weights.
     std::vector<std::pair<int, Q>> interior_weights(int i, const Vec3q& x) const;
 
+    const RoundedBody& body(int i) const { return *obj_[i]; }
+
   private:
-    struct Object {
-        std::vector<Vec3q> pts;
-        std::vector<Vec3z> zpts;
-        std::vector<D3> dpts;
-        Z scale;
-        Vec3q seed;
-        std::optional<Polyhedron> hull;  // when the points span 3 dimensions
-    };
-    Object obj_[2];
+    std::shared_ptr<const RoundedBody> obj_[2];
     int rank_ = 0;
     Vec3z flat_normal_{};
 };
@@ -61,6 +70,12 @@ MeasuredDepth hull_measure(const PointSets& S, int difference_rank, const Vec3z&
 Verdict rounded_verdict(const MeasuredDepth& hulls, const Q& R);
 // The hulls' signed distance as s·√E (s = 1 apart, 0 touching, −1 overlapping).
 std::pair<int, Q> hull_signed(const MeasuredDepth& hulls);
+
+// A plane claim's rule on objects with a radius: the hulls' extents c1, c2 along n widened by
+// m1·|n| and m2·|n| (|n| = √N). Exact: strictly between them; within abs: each object within
+// abs·|n| of its side (no offset: c1 + m1|n| − (c2 − m2|n|) ≤ 2·abs·|n|).
+bool rounded_plane_right(const Tolerance& tol, const Q& c1, const Q& c2, const Q& m1, const Q& m2, const Vec3q& n,
+                         const std::optional<Q>& offset);
 
 // Checks an object with a radius the engine will judge: its seed in the interior of the object
 // (within less than r of the hull; without a radius, strictly inside its hull). InputError after `name`.

@@ -226,15 +226,12 @@ std::string ConvexRules::certificate(Json entries) const {
     return judgements_text(impl_->models.document(), tol_.rel, tol_.abs, std::move(entries));
 }
 
-namespace {
-// A part pair {part of P1, part of P2} checked against the objects' part counts.
 void check_part_pair(const std::array<int, 2>& pair, const size_t counts[2], const std::string& where) {
     for (size_t k = 0; k < 2; ++k)
         if (pair[k] < 0 || static_cast<size_t>(pair[k]) >= counts[k])
             throw InputError(where + ".parts[" + std::to_string(k) + "]: P" + std::to_string(k + 1) + " has " +
                              std::to_string(counts[k]) + (counts[k] == 1 ? " part" : " parts") + " (numbered from 0)");
 }
-}  // namespace
 
 std::optional<std::array<int, 2>> ConvexRules::part_pair(const std::optional<std::array<int, 2>>& given,
                                                          const std::string& where) const {
@@ -338,6 +335,12 @@ CompoundJudge& PartsRules::posed(const std::array<std::optional<Pose>, 2>& pose)
         j = std::make_unique<CompoundJudge>(sc, "poses");
     }
     return *j;
+}
+
+std::string PartsRules::refusal(ClaimType t) const {
+    if (takes(t)) return {};
+    return "a claim on two convex objects; on objects made of parts certify-fp takes verdict, separating_plane, "
+           "witness_point, distance and penetration_depth (a signed distance: on parts with radii, of one part pair)";
 }
 
 bool PartsRules::takes(ClaimType t) {

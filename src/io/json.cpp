@@ -40,11 +40,16 @@ Json compound_scene_json(const ExactScene& sc, bool with_names) {
     for (int i = 0; i < 2; ++i) {
         const PolyInput& in = sc.P[i];
         Json parts = Json::array();
-        if (in.parts.empty()) parts.push_back(Json{{"vertices", points_json(in.points)}});
+        // Parts with radii carry them (every part, on a scene where some object has one > 0).
+        if (in.parts.empty()) {
+            parts.push_back(Json{{"vertices", points_json(in.points)}});
+            if (sc.rounded()) parts.back()["radius"] = to_exact_string(in.radius);
+        }
         for (size_t k = 0; k < in.parts.size(); ++k) {
             Json p;
             if (with_names && !part_name(in, k).empty()) p["name"] = part_name(in, k);
             p["vertices"] = points_json(in.parts[k]);
+            if (sc.rounded()) p["radius"] = to_exact_string(in.part_radius(k));
             parts.push_back(std::move(p));
         }
         s[names[i]] = Json{{"parts", parts},

@@ -215,10 +215,44 @@ ExactScene parse_scene_text(const std::string& text, const std::string& name, co
             if (sgn(into.radius) < 0)
                 r.fail(where + ".radius", "a radius is >= 0 (got " + in_quotes(to_exact_string(into.radius)) + ")");
         };
-        if (const JNode* parts = p->find("parts")) {
-            only(*p, pname[i], {"parts", "seed", "pose", "numbers"});
+        if (const JNode* spheres = p->find("spheres")) {
+            // A sphere set (CLAIMS.md, "Objects with a radius"): a part per centre, one point with
+            // its radius.
+            only(*p, pname[i], {"spheres", "seed", "pose", "numbers"});
+            const Reader rd = reading(*p, pname[i], r);
+            const std::string where = std::string(pname[i]) + ".spheres";
+            if (!opt.allow_parts)
+                r.fail(where, "a sphere set is an object made of parts, which `curve` and `grid` do not read");
+            if (spheres->kind != JNode::Object)
+                r.fail(where, "expected {\"centres\": [[x, y, z], ...], \"radii\": [r, ...]}");
+            only(*spheres, where, {"centres", "radii"});
+            const JNode *cs = spheres->find("centres"), *rs = spheres->find("radii");
+            if (!cs) r.fail(where, "missing field \"centres\"");
+            if (!rs) r.fail(where, "missing field \"radii\"");
+            if (cs->kind != JNode::Array || cs->items.empty())
+                r.fail(where + ".centres", "expected a nonempty list of points");
+            if (rs->kind != JNode::Array || rs->items.size() != cs->items.size())
+                r.fail(where + ".radii",
+                       "expected a list of " + std::to_string(cs->items.size()) + " radii (one a centre)");
+            if (cs->items.size() > kMaxParts)
+                r.fail(where + ".centres", "more than " + std::to_string(kMaxParts) + " spheres (the limit on parts)");
+            for (size_t k = 0; k < cs->items.size(); ++k) {
+                const Vec3q c = rd.point(cs->items[k], [&] { return where + ".centres[" + std::to_string(k) + "]"; });
+                const std::string wr = where + ".radii[" + std::to_string(k) + "]";
+                Q rk = rd.number(rs->items[k], wr);
+                if (sgn(rk) <= 0) r.fail(wr, "a sphere's radius is > 0 (got " + in_quotes(to_exact_string(rk)) + ")");
+                in.parts.push_back({c});
+                in.points.push_back(c);
+                in.part_radii.push_back(std::move(rk));
+            }
+        } else if (const JNode* parts = p->find("parts")) {
+            only(*p, pname[i], {"parts", "radius", "seed", "pose", "numbers"});
             const Reader object_reader = reading(*p, pname[i], r);
             const std::string where = std::string(pname[i]) + ".parts";
+            // The object's "radius" is each part's without its own.
+            PolyInput whole;
+            radius(object_reader, *p, pname[i], whole);
+            std::vector<Q> radii;
             if (!opt.allow_parts)
                 r.fail(where,
                        "an object made of parts is read by `scalecert region`, `query`, `partition`, `classify`, "
@@ -234,7 +268,7 @@ ExactScene parse_scene_text(const std::string& text, const std::string& name, co
                 const std::string w = where + "[" + std::to_string(k) + "]";
                 const JNode& part = parts->items[k];
                 if (part.kind != JNode::Object) r.fail(w, "expected an object with \"vertices\" or \"mesh\"");
-                only(part, w, {"name", "vertices", "off", "mesh", "numbers"});
+                only(part, w, {"name", "vertices", "off", "mesh", "sphere", "capsule", "box", "radius", "numbers"});
                 if (const JNode* n = part.find("name")) {
                     if (n->kind != JNode::String) r.fail(w + ".name", "expected a string (the part's name)");
                     if (n->text.empty())
@@ -246,7 +280,10 @@ ExactScene parse_scene_text(const std::string& text, const std::string& name, co
                     in.part_names[k] = n->text;
                 }
                 PolyInput one;
-                body(reading(part, w, object_reader), part, w, false, one, true);
+                const Reader part_reader = reading(part, w, object_reader);
+                if (!shape(part_reader, part, w, one)) body(part_reader, part, w, false, one, true);
+                radius(part_reader, part, w, one);
+                radii.push_back(one.radius_given ? one.radius : whole.radius);
                 // Said once per object, for the first such part.
                 if (!one.note.empty() && merged++ == 0) in.note = w + ": " + one.note;
                 in.parts.push_back(std::move(one.points));
@@ -255,6 +292,11 @@ ExactScene parse_scene_text(const std::string& text, const std::string& name, co
                 in.points.insert(in.points.end(), in.parts.back().begin(), in.parts.back().end());
             }
             if (!in.part_names.empty()) in.part_names.resize(in.parts.size());
+            for (const Q& x : radii)
+                if (sgn(x) > 0) {
+                    in.part_radii = std::move(radii);
+                    break;
+                }
             if (merged > 1)
                 in.note += " (and " + std::to_string(merged - 1) + " more " + (merged == 2 ? "part" : "parts") +
                            " of " + pname[i] + " so read)";
@@ -402,13 +444,15 @@ void check_scene(const ExactScene& sc, const std::string& name) {
     const char* pname[2] = {"P1", "P2"};
     const char* iname[2] = {"I1", "I2"};
     for (int i = 0; i < 2; ++i) {
+        // A part with a radius > 0 may be one point (a sphere).
         for (size_t k = 0; k < sc.P[i].parts.size(); ++k)
-            if (sc.P[i].parts[k].size() < 4)
+            if (sc.P[i].parts[k].empty() || (sc.P[i].parts[k].size() < 4 && sgn(sc.P[i].part_radius(k)) <= 0))
                 throw InputError(name + ": " + part_label(i, sc.P[i], k) + ": fewer than 4 vertices (" +
-                                 std::to_string(sc.P[i].parts[k].size()) + ")");
+                                 std::to_string(sc.P[i].parts[k].size()) + ")" +
+                                 (sc.P[i].parts[k].empty() ? "" : " and no radius > 0 (a part with one may have 1)"));
         const size_t n = sc.P[i].points.size();
         // With a radius > 0 one point will do (a sphere); without, the hull must have an interior.
-        if (n < 1 || (n < 4 && sgn(sc.P[i].radius) <= 0))
+        if (n < 1 || (n < 4 && !sc.P[i].has_radius()))
             throw InputError(
                 name + ": " + pname[i] + ": fewer than 4 vertices (" + std::to_string(n) + ")" +
                 (sc.P[i].radius_given && n > 0 ? " and no radius > 0 (an object with one may have 1)" : ""));
@@ -416,11 +460,6 @@ void check_scene(const ExactScene& sc, const std::string& name) {
             throw InputError(name + ": " + pname[i] + ": more than " + std::to_string(kMaxPoints) +
                              " points (the limit)");
     }
-    for (int i = 0; i < 2; ++i)
-        if (sgn(sc.P[i].radius) > 0 && !sc.P[i].parts.empty())
-            throw InputError(name + ": " + pname[i] + ": an object made of parts with a radius is not judged yet");
-    if (sc.rounded() && sc.made_of_parts())
-        throw InputError(name + ": an object made of parts beside an object with a radius is not judged yet");
     for (int i = 0; i < 2; ++i) {
         if (sgn(sc.lo[i]) <= 0)
             throw InputError(name + ": " + iname[i] + ": lo must be > 0 (got " + in_quotes(to_exact_string(sc.lo[i])) +

@@ -24,6 +24,18 @@ struct PolyInput {
     // "capsule" shorthand, which carry theirs), even 0.
     Q radius = 0;
     bool radius_given = false;
+    // An object made of parts with radii: part k is every point within part_radii[k] >= 0 of the
+    // hull of its points (a part's "radius", else its object's). Empty when no part has one > 0.
+    std::vector<Q> part_radii;
+    // Part k's radius (0 when it has none); a convex object, one part, has its radius.
+    Q part_radius(size_t k) const { return parts.empty() ? radius : part_radii.empty() ? Q(0) : part_radii[k]; }
+    // Some part (or the object) has a radius > 0.
+    bool has_radius() const {
+        if (sgn(radius) > 0) return true;
+        for (const Q& r : part_radii)
+            if (sgn(r) > 0) return true;
+        return false;
+    }
     // A remark for the user, said once on stderr by the command (an OBJ mesh with several groups
     // read as one convex object); empty when there is none.
     std::string note;
@@ -54,7 +66,7 @@ struct ExactScene {
     // An object given as parts (even of one): the scene is answered as objects made of parts.
     bool made_of_parts() const { return !P[0].parts.empty() || !P[1].parts.empty(); }
     // An object with a radius > 0: the scene is answered by the rules of objects with a radius.
-    bool rounded() const { return sgn(P[0].radius) > 0 || sgn(P[1].radius) > 0; }
+    bool rounded() const { return P[0].has_radius() || P[1].has_radius(); }
 };
 
 struct ReadOptions {

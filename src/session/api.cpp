@@ -167,7 +167,8 @@ std::shared_ptr<Scene::Data> SceneAccess::validated(internal::ExactScene sc, con
 }
 
 Scene Scene::from_parts(std::vector<std::vector<Point>> parts1, std::vector<std::vector<Point>> parts2, Interval i1,
-                        Interval i2, std::optional<Point> seed1, std::optional<Point> seed2) {
+                        Interval i2, std::optional<Point> seed1, std::optional<Point> seed2,
+                        std::array<std::vector<Rational>, 2> part_radii) {
     internal::ExactScene sc;
     std::vector<std::vector<Point>>* parts[2] = {&parts1, &parts2};
     const std::optional<Point>* seeds[2] = {&seed1, &seed2};
@@ -186,6 +187,19 @@ Scene Scene::from_parts(std::vector<std::vector<Point>> parts1, std::vector<std:
             sc.P[i].points.insert(sc.P[i].points.end(), part.begin(), part.end());
             sc.P[i].parts.push_back(std::move(part));
         }
+        std::vector<Rational>& radii = part_radii[static_cast<size_t>(i)];
+        if (!radii.empty() && radii.size() != sc.P[i].parts.size())
+            throw InputError("scene: " + name + ": " + std::to_string(radii.size()) + " radii for " +
+                             std::to_string(sc.P[i].parts.size()) + " parts (give one a part, or none)");
+        bool some = false;
+        for (size_t k = 0; k < radii.size(); ++k) {
+            radii[k] = canonical_q(std::move(radii[k]));
+            if (sgn(radii[k]) < 0)
+                throw InputError("scene: " + name + ": part " + std::to_string(k) + ": a radius is >= 0 (got " +
+                                 radii[k].get_str() + ")");
+            some = some || sgn(radii[k]) > 0;
+        }
+        if (some) sc.P[i].part_radii.assign(radii.begin(), radii.end());
         seed_and_range(sc, i, *seeds[i], *ranges[i]);
     }
     finish_scene(sc, "scene");
@@ -300,6 +314,12 @@ const std::vector<Point>& Scene::points(int i) const { return d_->sc().P[i & 1].
 const Point& Scene::seed(int i) const { return d_->sc().P[i & 1].seed; }
 Interval Scene::range(int i) const { return {d_->sc().lo[i & 1], d_->sc().hi[i & 1]}; }
 Rational Scene::radius(int i) const { return d_->sc().P[i & 1].radius; }
+Rational Scene::part_radius(int i, size_t k) const {
+    const internal::PolyInput& in = d_->sc().P[i & 1];
+    if (k >= std::max<size_t>(1, in.parts.size()))
+        throw InputError("scene: P" + std::to_string((i & 1) + 1) + " has no part " + std::to_string(k));
+    return in.part_radius(k);
+}
 std::string Scene::json() const { return dump(internal::scene_file_json(d_->sc())); }
 
 struct Analysis::Impl {
@@ -450,12 +470,18 @@ internal::TypedClaim typed_claim(const Claim& c, size_t i, const internal::Claim
         break;
     case ClaimKind::SignedDistance:
         t.type = ClaimType::SignedDistance;
+        // On parts: refused (no radii), or a contact of one part pair (radii).
+        if (const std::string why = rules.refusal(t.type); !why.empty())
+            throw InputError(where + ".kind: signed_distance: " + why);
+        t.parts = rules.part_pair(c.parts, where);
         t.value = canonical_q(c.value);
         t.bound = c.bound == SignedBound::AtLeast ? internal::TypedClaim::Bound::AtLeast
                   : c.bound == SignedBound::Below ? internal::TypedClaim::Bound::Below
                                                   : internal::TypedClaim::Bound::Value;
         break;
     }
+    if (const std::string why = rules.refusal(t.type); !why.empty())
+        throw InputError(where + ".kind: " + internal::type_name(t.type) + ": " + why);
     return t;
 }
 

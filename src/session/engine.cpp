@@ -2,6 +2,7 @@
 
 #include "certify/certificate.hpp"
 #include "certify/rounded.hpp"
+#include "certify/rounded_parts.hpp"
 #include "geometry/measures.hpp"
 
 #include <cmath>
@@ -238,9 +239,73 @@ class RoundedEngine final : public SceneEngine {
     std::shared_ptr<const RoundedPoints> points_;
 };
 
+// Objects made of parts with radii (a convex object beside them is one part): verdicts and claims
+// at any pair (rounded_parts.hpp); no curve, region, golden data or certificate yet, each refused
+// in one line.
+class RoundedPartsEngine final : public SceneEngine {
+  public:
+    explicit RoundedPartsEngine(SceneSource src) : exact_(std::move(src.exact)), name_(std::move(src.name)) {}
+    void check() override { judge(); }
+    std::shared_ptr<const CompactScene> compact() override { return nullptr; }
+    void prepare() override { judge(); }
+    bool convex() const override { return false; }
+    Verdict verdict(const Q& r1, const Q& r2) override { return judge().verdict(r1, r2).verdict; }
+    scalecert::QueryResult query(const Q& r1, const Q& r2) override {
+        return {verdict(r1, r2), std::nullopt, std::nullopt};
+    }
+    std::string verdict_document(const Q&, const Q&) override {
+        throw InputError(name_ +
+                         ": a verdict's certificate on objects made of parts with radii is not written yet "
+                         "(query without --json gives the exact verdict)");
+    }
+    std::string partition_document() override { throw InputError(refused("the partition")); }
+    std::vector<Verdict> classify(const std::vector<double>& rho1, const std::vector<double>& rho2, unsigned,
+                                  const std::string& source, std::optional<StageCounts>*) override {
+        std::vector<Verdict> out;
+        out.reserve(rho1.size());
+        for (size_t k = 0; k < rho1.size(); ++k) {
+            if (!(std::isfinite(rho1[k]) && rho1[k] > 0 && std::isfinite(rho2[k]) && rho2[k] > 0))
+                throw InputError(source + ": pair " + std::to_string(k) + ": scalings must be finite and > 0");
+            out.push_back(verdict(exact_from_double(rho1[k]), exact_from_double(rho2[k])));
+        }
+        return out;
+    }
+    std::pair<Q, Q> plane_extents(const Vec3q&, const Q&, const Q&) override {
+        throw InputError(name_ +
+                         ": objects with a radius reach past their hulls by ρ·r·|n| along a normal n, which is "
+                         "not rational: certify-fp's separating_plane judges planes on them");
+    }
+    std::unique_ptr<ClaimRules> rules(const Tolerance& tolerance) override {
+        judge();
+        return std::make_unique<RoundedPartsRules>(judge_, tolerance);
+    }
+    GoldenAnswers golden(const GoldenPoints&) override { throw InputError(refused("golden data")); }
+    CompoundSession& region() override { throw InputError(refused("the region")); }
+    Session& convex_session(const std::string&) override {
+        throw InputError(refused("the touching curve (with its segments and the grid search)"));
+    }
+    const scalecert::Curve& curve(const std::string&) override { throw InputError(refused("the touching curve")); }
+
+  private:
+    RoundedParts& judge() {
+        if (!judge_) judge_ = std::make_shared<RoundedParts>(*exact_, name_);
+        return *judge_;
+    }
+    std::string refused(const std::string& what) const {
+        return name_ + ": " + what +
+               " is not built for objects made of parts with radii; query, classify and certify-fp answer at any "
+               "pair";
+    }
+    std::shared_ptr<const ExactScene> exact_;
+    std::string name_;
+    std::shared_ptr<RoundedParts> judge_;
+};
+
 }  // namespace
 
 std::unique_ptr<SceneEngine> open_engine(SceneSource source) {
+    if (source.exact && source.exact->rounded() && source.exact->made_of_parts())
+        return std::make_unique<RoundedPartsEngine>(std::move(source));
     if (source.exact && source.exact->rounded()) return std::make_unique<RoundedEngine>(std::move(source));
     if (source.exact && source.exact->made_of_parts()) return std::make_unique<PartsEngine>(std::move(source));
     return std::make_unique<ConvexEngine>(std::move(source));

@@ -70,7 +70,7 @@ void describe(const TypedClaim& c, const DepthJudged& d, const Judged& g, const 
         const Q R = (*g.radii)[0] + (*g.radii)[1];
         errors_surd(o, c.value, d.root_sign, *d.exact_squared, R, R,
                     d.root_sign < 0 ? "hulls_squared_distance" : "hulls_squared_depth");
-        text = "penetration depth at " + at(c) + ": claimed " + num(c.value) + ", exact ~" +
+        text = "penetration depth" + of + " at " + at(c) + ": claimed " + num(c.value) + ", exact ~" +
                dbl(surd_rn(d.root_sign, *d.exact_squared, R), 17) + " (the " + radii_text(g) +
                (d.root_sign > 0   ? " plus the hulls' depth, squared " + num(*d.exact_squared)
                 : d.root_sign < 0 ? " less the hulls' distance, squared " + num(*d.exact_squared)

@@ -46,9 +46,15 @@ void ConvexRules::Impl::signed_distance(const TypedClaim& c, Judged& g, Proof* p
     g.right = signed_distance_right(c, d.sign(), d.exact_squared, tol);
 }
 
-void describe(const TypedClaim& c, const SignedDistanceJudged& d, const Judged& g, const ExactScene*, Json& o,
+void describe(const TypedClaim& c, const SignedDistanceJudged& d, const Judged& g, const ExactScene* parts, Json& o,
               std::string& text) {
     put_rhos(o, c);
+    // On parts with radii, the contact's part pair, named in the line.
+    std::string of;
+    if (parts && c.parts) {
+        put_part_pair(o, "parts", *parts, g.part1, g.part2);
+        of = " of " + parts_named(*parts, g.part1, g.part2);
+    }
     if (g.radii) {
         // s·√E − R: the hulls' signed distance less the radii.
         const Q R = (*g.radii)[0] + (*g.radii)[1];
@@ -60,7 +66,7 @@ void describe(const TypedClaim& c, const SignedDistanceJudged& d, const Judged& 
                                     : c.bound == TypedClaim::Bound::AtLeast ? "claimed at least " + num(c.value)
                                     : c.bound == TypedClaim::Bound::AtMost  ? "claimed at most " + num(c.value)
                                                                             : "claimed below " + num(c.value);
-        text = "signed distance at " + at(c) + ": " + claimed + ", exact ~" +
+        text = "signed distance" + of + " at " + at(c) + ": " + claimed + ", exact ~" +
                dbl(surd_rn(d.root(), d.exact_squared, Q(-R)), 17) + " (" + verdict_name(d.exact) + "; the hulls' " +
                (d.root() > 0   ? "distance"
                 : d.root() < 0 ? "minus their depth"
