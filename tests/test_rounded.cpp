@@ -533,6 +533,18 @@ BOOST_AUTO_TEST_CASE(growth_distances_by_hand) {
     BOOST_TEST(!growth_right(edge, exact_from_double(e + 1e-9)));
     Case exact_edge = open_text(at(2, 2, 0));  // no rational is it
     BOOST_TEST(!growth_right(exact_edge, exact_from_double(e)));
+    // The report: the exact value as text and as {a, b, c}, its double, the claim's error.
+    long wrong = 0;
+    const Json rep = Json::parse(certify_fp(*exact_edge.rules,
+                                            R"({"format": "scalecert-claims-1", "claims": [{"kind": "growth_distance",
+                   "value": "3/2"}]})",
+                                            "claims", scalecert::ClaimOptions{}, &wrong));
+    BOOST_TEST(wrong == 1);
+    const auto& o = rep["claims"][0];
+    BOOST_TEST(o["exact"] == "16/7 - 4/7*sqrt(2)");
+    BOOST_TEST(o["exact_surd"] == Json::parse(R"({"a": "16/7", "b": "-4/7", "c": "2"})"));
+    BOOST_TEST(std::fabs(o["exact_double"].get<double>() - e) < 1e-15);
+    BOOST_TEST(std::fabs(o["abs_error_double"].get<double>() - (1.5 - e)) < 1e-15);
     // Separated just below, overlapping just above, by the engine's own verdict.
     const Q below = exact_from_double(e * (1 - 1e-12)), above = exact_from_double(e * (1 + 1e-12));
     BOOST_TEST(verdict_of(edge, below, below) == scalecert::Verdict::Separated);
