@@ -393,13 +393,13 @@ void check_judgements(Context& cx, const J& c) {
     shape(cx, c, "", {"format", "kind", "tolerance", "judgements", "seed_interior", "scene"}, {"abs_tolerance"});
     const Scene sc = read_scene(cx, at(c, "scene"), true);
     const J& js = at(c, "judgements");
-    if (sc.rounded) {  // objects with a radius (rounded.cpp): the six kinds of a pair
+    if (sc.rounded) {  // objects with a radius (rounded.cpp): the six kinds of a pair, and the growth distance
         check_rounded_seeds(cx, sc, at(c, "seed_interior"));
         const Rules R = read_rules(cx, c);
-        const size_t rights = judge_all(
-            cx, js,
-            {"verdict", "separating_plane", "witness_point", "distance", "penetration_depth", "signed_distance"},
-            [&](const Judgement& j) { return judge_rounded(cx, sc, R, j); });
+        const size_t rights = judge_all(cx, js,
+                                        {"verdict", "separating_plane", "witness_point", "distance",
+                                         "penetration_depth", "signed_distance", "growth_distance"},
+                                        [&](const Judgement& j) { return judge_rounded(cx, sc, R, j); });
         cx.summary = "; judgements on objects with a radius: " + judged(rights, js.size(), R);
         return;
     }

@@ -78,6 +78,105 @@ std::string pair_state(Context& cx, const Signed& h, const Q& R) {
     const int c = cmp(h.E, R * R);
     return c > 0 ? "separated" : c == 0 ? "touching" : "overlapping";
 }
+
+// Numbers a + b√c of Q(√c), c the proof's natural number.
+struct Root {
+    Q a, b;
+};
+Root operator+(const Root& x, const Root& y) { return {x.a + y.a, x.b + y.b}; }
+Root operator-(const Root& x, const Root& y) { return {x.a - y.a, x.b - y.b}; }
+Root times(const Root& x, const Root& y, const Q& c) { return {x.a * y.a + x.b * y.b * c, x.a * y.b + x.b * y.a}; }
+int sign_of(const Root& x, const Q& c) { return sign_minus_sqrt(x.a, -x.b, c); }
+using RV = std::array<Root, 3>;
+
+// The growth distance ρ* (CLAIMS.md, "Objects with a radius"). The proof's `value` {a, b, c} is
+// ρ* = a + b√c (c a natural number, not a perfect square unless b = c = 0). ρ* = 0: the seeds
+// coincide. Else, with t = 1/ρ*, d = s2 − s1 and K = (C1 − s1) − (C2 − s2): `P1` and `P2` are
+// weights [k, a, b] (a + b√c >= 0, summing to 1) of points q1 of C1 and q2 of C2, so
+// q = (q1 − s1) − (q2 − s2) is a point of K; n = t·d − q has |n|² = (r1 + r2)², and every vertex
+// v of P1 has n·v <= n·q1 and every vertex w of P2 n·w >= n·q2, so K lies in n·k <= n·q: q is
+// the point of K nearest t·d, which is r1 + r2 from K. g(t) = dist(t·d, K) is convex with
+// g(0) < r1 + r2 (the seeds are interior: seed_interior), so t is the one t > 0 at which it
+// reaches r1 + r2: for ρ < ρ* the pair (ρ, ρ) is separated, at ρ* touching, beyond it overlapping.
+Root checked_growth(Context& cx, const Scene& sc, const J& pr, const std::string& wp, Q& c) {
+    shape(cx, pr, wp, {"value"}, {"P1", "P2"});
+    const J& v = at(pr, "value");
+    shape(cx, v, wp + ".value", {"a", "b", "c"});
+    const Root rho{num(cx, at(v, "a"), wp + ".value.a"), num(cx, at(v, "b"), wp + ".value.b")};
+    c = num(cx, at(v, "c"), wp + ".value.c");
+    cx.spend_ops(4, 2 * qsize(rho.a) + 2 * qsize(rho.b) + 2 * qsize(c));
+    cx.claim(sgn(c) >= 0 && c.get_den() == 1, wp + ".value.c is a natural number");
+    cx.claim((sgn(rho.b) == 0) == (sgn(c) == 0), wp + ".value: b and c are 0 together");
+    cx.claim(sgn(c) == 0 || !mpz_perfect_square_p(c.get_num_mpz_t()), wp + ".value.c is not a perfect square");
+    const V3 d = sub(sc.s[1], sc.s[0]);
+    if (sgn(rho.a) == 0 && sgn(rho.b) == 0) {
+        cx.claim(!nonzero(d), wp + ".value is 0 only where the seeds coincide");
+        cx.claim(!pr.contains("P1") && !pr.contains("P2"), wp + " of a growth distance 0 is its value alone");
+        return rho;
+    }
+    cx.claim(pr.contains("P1") && pr.contains("P2"), wp + " has P1 and P2 (the weights of the nearest point)");
+    cx.claim(nonzero(d), wp + ": the seeds differ (else the growth distance is 0)");
+    cx.claim(sign_of(rho, c) > 0, wp + ".value is > 0");
+    // t = 1/ρ* = (a − b√c)/(a² − b²c): c is no perfect square, so a² − b²c != 0.
+    const Q den = rho.a * rho.a - rho.b * rho.b * c;
+    const Root t{rho.a / den, -rho.b / den};
+    RV q1, q2;
+    for (int i = 0; i < 2; ++i) {
+        const std::string w = wp + "." + kPoly[i];
+        const J& ws = at(pr, kPoly[i]);
+        cx.claim(ws.is_array() && !ws.empty(), w + " is a nonempty list of [index, a, b]");
+        RV& o = i == 0 ? q1 : q2;
+        o = {Root{}, Root{}, Root{}};
+        Root sum{};
+        std::vector<bool> seen(sc.count(i), false);
+        for (size_t k = 0; k < ws.size(); ++k) {
+            const std::string wk = w + "[" + std::to_string(k) + "]";
+            const J& e = ws[k];
+            cx.claim(e.is_array() && e.size() == 3, wk + " is [index, a, b]");
+            const size_t idx = index(cx, e[0], sc.count(i), wk + "[0]");
+            cx.claim(!seen[idx], wk + "[0] is named once");
+            seen[idx] = true;
+            const Root x{num(cx, e[1], wk + "[1]"), num(cx, e[2], wk + "[2]")};
+            cx.spend_ops(12, 4 * (qsize(x.a) + qsize(x.b) + qsize(c)) + limbs(sc.scan[i]->D()));
+            cx.claim(sign_of(x, c) >= 0, wk + " is a weight >= 0");
+            sum = sum + x;
+            const Z3 X = sc.scan[i]->X(idx);
+            const Q D(sc.scan[i]->D());
+            for (int a = 0; a < 3; ++a) o[a] = o[a] + Root{x.a * X[a] / D, x.b * X[a] / D};
+        }
+        cx.claim(sum.a == 1 && sgn(sum.b) == 0, w + ": the weights sum to 1");
+    }
+    // n = t·d − q, q = (q1 − s1) − (q2 − s2).
+    RV n;
+    Root nn{};
+    for (int a = 0; a < 3; ++a) {
+        const Root qa = (q1[a] - Root{sc.s[0][a], Q(0)}) - (q2[a] - Root{sc.s[1][a], Q(0)});
+        n[a] = Root{t.a * d[a], t.b * d[a]} - qa;
+        nn = nn + times(n[a], n[a], c);
+    }
+    const Q R0 = sc.r[0] + sc.r[1];
+    cx.spend_ops(20, 4 * (qsize(nn.a) + qsize(nn.b) + qsize(R0)));
+    cx.claim(nn.a == R0 * R0 && sgn(nn.b) == 0, wp + ": |t·d − q|² is (r1 + r2)², t = 1/value");
+    // Every vertex on q's side: max over P1 of n·v is n·q1, min over P2 of n·w is n·q2 (in D_i·n·v).
+    for (int i = 0; i < 2; ++i) {
+        const Q D(sc.scan[i]->D());
+        Root h{};
+        const RV& qi = i == 0 ? q1 : q2;
+        for (int a = 0; a < 3; ++a) h = h + times(n[a], qi[a], c);
+        h = Root{h.a * D, h.b * D};
+        for (size_t k = 0; k < sc.count(i); ++k) {
+            const Z3 X = sc.scan[i]->X(k);
+            Root nx{};
+            for (int a = 0; a < 3; ++a) nx = nx + Root{n[a].a * X[a], n[a].b * X[a]};
+            cx.spend_ops(10, 2 * (qsize(nx.a) + qsize(nx.b) + qsize(h.a) + qsize(h.b) + qsize(c)));
+            const int s = sign_of(nx - h, c);
+            cx.claim(i == 0 ? s <= 0 : s >= 0,
+                     wp + "." + kPoly[i] + ": vertex " + std::to_string(k) +
+                         (i == 0 ? " lies beyond n·q1 along n = t·d − q" : " lies below n·q2 along n = t·d − q"));
+        }
+    }
+    return rho;
+}
 }  // namespace
 
 void check_rounded_seeds(Context& cx, const Scene& sc, const J& j) {
@@ -103,6 +202,15 @@ void check_rounded_seeds(Context& cx, const Scene& sc, const J& j) {
 bool judge_rounded(Context& cx, const Scene& sc, const Rules& R, const Judgement& j) {
     const J &cl = j.claim, &pr = j.proof;
     const std::string &kind = j.kind, &wc = j.wc, &wp = j.wp;
+    if (kind == "growth_distance") {  // a scaling: the relative tolerance alone
+        shape(cx, cl, wc, {"kind", "value"});
+        const Q claimed = num(cx, at(cl, "value"), wc + ".value");
+        cx.claim(sgn(claimed) >= 0, wc + ".value is >= 0");
+        Q c;
+        const Root rho = checked_growth(cx, sc, pr, wp, c);
+        const Rules rel{R.tol, Q(0)};
+        return rel.close_value(cx, claimed, sgn(rho.b), rho.b * rho.b * c, rho.a);
+    }
     // At poses: the same claim on the scene moved by them (the hulls move, the radii stay).
     if (cl.contains("pose1") || cl.contains("pose2")) {
         J bare;

@@ -457,6 +457,175 @@ BOOST_AUTO_TEST_CASE(brute_force_in_rationals) {
     BOOST_TEST(judged - right_count > 150);
 }
 
+// ---- growth distances ------------------------------------------------------------------------
+
+namespace {
+// The engine's ρ* = a + b√c, from a growth_distance claim's judgement.
+QuadSurd growth_of(Case& k) {
+    TypedClaim c;
+    c.type = ClaimType::Growth;
+    const Judged g = k.rules->judge(c);
+    BOOST_TEST_REQUIRE(g.get<GrowthJudged>());
+    BOOST_TEST_REQUIRE(g.get<GrowthJudged>()->surd.has_value());
+    return *g.get<GrowthJudged>()->surd;
+}
+bool growth_right(Case& k, const Q& v) {
+    TypedClaim c;
+    c.type = ClaimType::Growth;
+    c.value = v;
+    return k.rules->judge(c).right;
+}
+// The sign of a + b√c − x.
+int surd_minus(const QuadSurd& r, const Q& x) { return sign_minus_sqrt(Q(r.a - x), Q(-r.b), Q(r.c)); }
+}  // namespace
+
+// CLAIMS.md's growth distances by hand. Two unit spheres with centres (their seeds) 4 apart touch
+// when ρ + ρ = 4: ρ* = 2. The capsules along z 1 apart in x (radius 1/4) touch when ρ/2 = 1:
+// ρ* = 2. A sphere of radius 1/2 centred at (3, 0, 0) against the box [−1, 1]³ (seed 0): the face
+// region, 3 − ρ = ρ/2, ρ* = 2. At (2, 2, 0), the edge region: √2·(2 − ρ) = ρ/2, so
+// ρ* = 4√2/(1 + 2√2) = (16 − 4√2)/7. At (2, 2, 2), the vertex region: √3·(2 − ρ) = ρ/2, so
+// ρ* = 4√3/(1 + 2√3) = (24 − 4√3)/11. Spheres about one centre: ρ* = 0.
+BOOST_AUTO_TEST_CASE(growth_distances_by_hand) {
+    Case spheres = open_text(R"({"P1": {"sphere": 1}, "P2": {"sphere": 1, "pose": [[1,0,0,4],[0,1,0,0],[0,0,1,0]]}})");
+    QuadSurd r = growth_of(spheres);
+    BOOST_TEST(r.a == q(2));
+    BOOST_TEST(sgn(r.b) == 0);
+    BOOST_TEST(growth_right(spheres, q(2)));
+    BOOST_TEST(!growth_right(spheres, Q(2) + Q(1) / (Q(1) << 60)));
+
+    Case capsules = open_text(R"({"P1": {"capsule": {"radius": "1/4", "half_length": 1}},
+        "P2": {"capsule": {"radius": "1/4", "half_length": 1}, "pose": [[1,0,0,1],[0,1,0,0],[0,0,1,0]]}})");
+    r = growth_of(capsules);
+    BOOST_TEST((r.a == q(2) && sgn(r.b) == 0));
+
+    const std::string box = R"("P1": {"box": [1, 1, 1]})";
+    auto at = [&](int x, int y, int z) {
+        return "{" + box + R"(, "P2": {"sphere": "1/2", "pose": [[1,0,0,)" + std::to_string(x) + "],[0,1,0," +
+               std::to_string(y) + "],[0,0,1," + std::to_string(z) + "]]}}";
+    };
+    Case face = open_text(at(3, 0, 0));
+    r = growth_of(face);
+    BOOST_TEST((r.a == q(2) && sgn(r.b) == 0));
+    BOOST_TEST(verdict_of(face, q(2), q(2)) == scalecert::Verdict::Touching);
+
+    Tolerance rel;
+    rel.rel = Q(1) / (Q(1) << 50);
+    Case edge = open_text(at(2, 2, 0), rel);
+    r = growth_of(edge);
+    BOOST_TEST(r.a == q(16, 7));
+    BOOST_TEST(r.b == q(-4, 7));
+    BOOST_TEST(r.c == 2);
+    BOOST_TEST(surd_text(r) == "16/7 - 4/7*sqrt(2)");
+    const double e = (16 - 4 * std::sqrt(2.0)) / 7;
+    BOOST_TEST(growth_right(edge, exact_from_double(e)));
+    BOOST_TEST(!growth_right(edge, exact_from_double(e + 1e-9)));
+    Case exact_edge = open_text(at(2, 2, 0));  // no rational is it
+    BOOST_TEST(!growth_right(exact_edge, exact_from_double(e)));
+    // The report: the exact value as text and as {a, b, c}, its double, the claim's error.
+    long wrong = 0;
+    const Json rep = Json::parse(certify_fp(*exact_edge.rules,
+                                            R"({"format": "scalecert-claims-1", "claims": [{"kind": "growth_distance",
+                   "value": "3/2"}]})",
+                                            "claims", scalecert::ClaimOptions{}, &wrong));
+    BOOST_TEST(wrong == 1);
+    const auto& o = rep["claims"][0];
+    BOOST_TEST(o["exact"] == "16/7 - 4/7*sqrt(2)");
+    BOOST_TEST(o["exact_surd"] == Json::parse(R"({"a": "16/7", "b": "-4/7", "c": "2"})"));
+    BOOST_TEST(std::fabs(o["exact_double"].get<double>() - e) < 1e-15);
+    BOOST_TEST(std::fabs(o["abs_error_double"].get<double>() - (1.5 - e)) < 1e-15);
+    // Separated just below, overlapping just above, by the engine's own verdict.
+    const Q below = exact_from_double(e * (1 - 1e-12)), above = exact_from_double(e * (1 + 1e-12));
+    BOOST_TEST(verdict_of(edge, below, below) == scalecert::Verdict::Separated);
+    BOOST_TEST(verdict_of(edge, above, above) == scalecert::Verdict::Overlapping);
+
+    Case vertex = open_text(at(2, 2, 2), rel);
+    r = growth_of(vertex);
+    BOOST_TEST(r.a == q(24, 11));
+    BOOST_TEST(r.b == q(-4, 11));
+    BOOST_TEST(r.c == 3);
+    BOOST_TEST(growth_right(vertex, exact_from_double((24 - 4 * std::sqrt(3.0)) / 11)));
+
+    Case one_centre = open_text(R"({"P1": {"sphere": 1}, "P2": {"sphere": 2}})");
+    r = growth_of(one_centre);
+    BOOST_TEST((sgn(r.a) == 0 && sgn(r.b) == 0));
+    BOOST_TEST(growth_right(one_centre, q(0)));
+}
+
+// A brute force of growth distances that shares nothing with the engine. Random spheres (each
+// one point with a radius and a seed within it), capsules and rounded boxes at rational poses: by
+// exact bisection on the closed-form verdict at (ρ, ρ) (brute_hulls), ρ* lies in (lo, hi], a
+// separated pair and one that is not, hi − lo < 2^-40·hi. Two spheres with seeds off their centres
+// c_i: the centres at ρ are d + ρe apart (d = s2 − s1, e = (c2 − s2) − (c1 − s1)), so ρ* is the
+// one positive root of (|e|² − R0²)ρ² + 2(d·e)ρ + |d|² = 0 (|e| < R0), checked exactly in Q(√c).
+BOOST_AUTO_TEST_CASE(growth_distances_brute_force) {
+    std::mt19937_64 g(91);
+    std::uniform_int_distribution<int> kinds(0, 2), num(1, 8);
+    int irrational = 0;
+    for (int trial = 0; trial < 60; ++trial) {
+        Shape A, B;
+        A.kind = kinds(g);
+        B.kind = kinds(g);
+        if (A.kind == 2 && B.kind == 2) B.kind = 0;
+        if (A.kind != 0 && B.kind != 0 && (A.kind == 2 || B.kind == 2)) (A.kind == 2 ? B : A).kind = 0;
+        for (Shape* S : {&A, &B}) {
+            S->r = test::qc(num(g), 4);
+            S->h = test::qc(num(g) - 1, 2);
+            for (Q& e : S->e) e = test::qc(num(g), 2);
+            if (S->kind == 2 && trial % 3 == 0) S->r = 0;
+            random_pose(g, *S);
+        }
+        Case k = open_text("{\"P1\": " + A.json() + ", \"P2\": " + B.json() + "}");
+        const QuadSurd r = growth_of(k);
+        irrational += sgn(r.b) != 0;
+        auto separated = [&](const Q& rho) {
+            const auto [s, E] = brute_hulls(A, rho, B, rho);
+            const Q R = rho * (A.r + B.r);
+            return s > 0 && E > R * R;
+        };
+        Q lo = Q(1) / (Q(1) << 20), hi = 1;
+        BOOST_TEST_REQUIRE(separated(lo));
+        while (separated(hi)) hi *= 2;
+        while (hi - lo >= hi / (Q(1) << 40)) {
+            const Q m = (lo + hi) / 2;
+            (separated(m) ? lo : hi) = m;
+        }
+        BOOST_TEST(surd_minus(r, lo) > 0, "trial " << trial << ": " << surd_text(r));
+        BOOST_TEST(surd_minus(r, hi) <= 0, "trial " << trial << ": " << surd_text(r));
+    }
+    BOOST_TEST_MESSAGE("growth brute force: " << irrational << " of 60 irrational");
+    BOOST_TEST(irrational > 10);
+
+    std::uniform_int_distribution<int> coord(-8, 8);
+    for (int trial = 0; trial < 40; ++trial) {
+        Vec3q c[2], s[2];
+        Q rad[2];
+        for (int i = 0; i < 2; ++i) {
+            rad[i] = test::qc(num(g) + 4, 4);  // at least 5/4
+            for (int a = 0; a < 3; ++a) {
+                c[i][a] = test::qc(coord(g), 2) + (i ? 6 : 0);
+                s[i][a] = c[i][a] + test::qc(coord(g), 16);  // within √3/2 < 5/4 of the centre
+            }
+        }
+        auto v = [](const Vec3q& x) {
+            return "[\"" + to_exact_string(x[0]) + "\", \"" + to_exact_string(x[1]) + "\", \"" + to_exact_string(x[2]) +
+                   "\"]";
+        };
+        auto obj = [&](int i) {
+            return "{\"vertices\": [" + v(c[i]) + "], \"radius\": \"" + to_exact_string(rad[i]) +
+                   "\", \"seed\": " + v(s[i]) + "}";
+        };
+        Case k = open_text("{\"P1\": " + obj(0) + ", \"P2\": " + obj(1) + "}");
+        const QuadSurd r = growth_of(k);
+        const Vec3q d = minus(s[1], s[0]), e = minus(minus(c[1], s[1]), minus(c[0], s[0]));
+        const Q R0 = rad[0] + rad[1], A2 = dot(e, e) - R0 * R0, A1 = 2 * dot(d, e), A0 = dot(d, d);
+        // A2·ρ² + A1·ρ + A0 at ρ = a + b√c: (A2(a² + b²c) + A1 a + A0) + (2A2ab + A1 b)√c.
+        const Q cc(r.c);
+        const Q p0 = A2 * (r.a * r.a + r.b * r.b * cc) + A1 * r.a + A0, p1 = 2 * A2 * r.a * r.b + A1 * r.b;
+        BOOST_TEST((sgn(p0) == 0 && sgn(p1) == 0), "sphere trial " << trial << ": " << surd_text(r));
+        BOOST_TEST(surd_minus(r, Q(0)) > 0);
+    }
+}
+
 // Golden data on a curved touching set: the box [−1, 1]³ and a sphere of radius 1/2 centred at
 // (2, 2, 0), I1 = [1, 3/2], I2 = [1, 8]. The centre lies in an edge region of the box scaled by
 // ρ1 < 2, so the pair touches where ρ2/2 = √2·(2 − ρ1): a conic, not a line. Every sample's

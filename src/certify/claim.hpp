@@ -103,8 +103,16 @@ struct VerdictJudged {
     Verdict exact = Verdict::Separated;
     Q rho2_minus_curve;  // on convex objects: ρ2 − f(ρ1)
 };
+// A number a + b√c: a, b rational, c a natural number with no square factor below 2^10 and not a
+// perfect square; b = 0 and c = 0 when the number is rational.
+struct QuadSurd {
+    Q a, b;
+    Z c;
+};
 struct GrowthJudged {
     Q exact;  // ρ*
+    // On objects with a radius ρ* is a + b√c (`exact` unused).
+    std::optional<QuadSurd> surd;
 };
 struct CurvePointJudged {
     Q exact;  // f(ρ1)

@@ -10,8 +10,8 @@ namespace scalecert::internal {
 
 const char* const kRoundedKinds =
     "on objects with a radius certify-fp takes verdict, separating_plane, witness_point, distance, "
-    "penetration_depth and signed_distance, at pairs and at poses (their touching set is curved: the curve, its "
-    "points, switch points and growth distance are not judged yet)";
+    "penetration_depth and signed_distance, at pairs and at poses, and growth_distance (their touching set is "
+    "curved: the curve, its points and switch points are not judged yet)";
 
 namespace {
 constexpr int kAll = std::numeric_limits<int>::max();
@@ -204,7 +204,8 @@ std::string RoundedRules::refusal(ClaimType t) const {
     case ClaimType::Witness:
     case ClaimType::Distance:
     case ClaimType::Depth:
-    case ClaimType::SignedDistance: return {};
+    case ClaimType::SignedDistance:
+    case ClaimType::Growth: return {};
     default: return kRoundedKinds;
     }
 }
@@ -262,6 +263,21 @@ Json hulls_proof(const MeasuredDepth& md, const TypedClaim& c) {
 Judged RoundedRules::judge(const TypedClaim& c, Proof* proof) {
     Judged g;
     if (proof) proof->claim = exact_claim_json(c);
+    if (c.type == ClaimType::Growth) {
+        if (!c.no_answer.empty()) {
+            if (proof) proof->proof = Json{{"no_answer", c.no_answer}};
+            return g;
+        }
+        if (!growth_) growth_ = rounded_growth(*scene_, *points_);
+        const QuadSurd& x = growth_->rho;
+        auto& d = g.set<GrowthJudged>();
+        d.surd = x;
+        // ρ* = sgn(b)·√(b²c) + a against the claimed value, within REL (LEN applies to no scaling).
+        const Tolerance rel{tol_.rel, Q(0)};
+        g.right = rel.close_value(c.value, sgn(x.b), Q(x.b * x.b * Q(x.c)), x.a);
+        if (proof) proof->proof = growth_->proof;
+        return g;
+    }
     const Q m1 = c.rho1 * scene_->P[0].radius, m2 = c.rho2 * scene_->P[1].radius, R = m1 + m2;
     g.radii = std::array<Q, 2>{m1, m2};
     if (!c.no_answer.empty()) {

@@ -81,6 +81,24 @@ bool rounded_plane_right(const Tolerance& tol, const Q& c1, const Q& c2, const Q
 // (within less than r of the hull; without a radius, strictly inside its hull). InputError after `name`.
 void check_rounded(const ExactScene& sc, const RoundedPoints& S, const std::string& name);
 
+// A QuadSurd (claim.hpp) as {"a", "b", "c"}, each an exact string.
+Json surd_json(const QuadSurd& x);
+// "a + b*sqrt(c)" ("a" when b = 0).
+std::string surd_text(const QuadSurd& x);
+// The double nearest it (MPFR: display only).
+double surd_double(const QuadSurd& x);
+
+// The growth distance ρ* of two objects with a radius (CLAIMS.md, "Objects with a radius"): the
+// scaling ρ at which P1(ρ) and P2(ρ) touch, exactly, with its proof for the judgements file
+// (FORMAT.md): {"value": ρ*} when the seeds coincide (ρ* = 0), else {"value", "P1", "P2"}, the
+// weights in Q(√c) of a point q of K = (C1 − s1) − (C2 − s2) nearest t*·d (t* = 1/ρ*,
+// d = s2 − s1), |t*·d − q| = r1 + r2 and K on q's side of the plane through q normal to it.
+struct RoundedGrowth {
+    QuadSurd rho;
+    Json proof;
+};
+RoundedGrowth rounded_growth(const ExactScene& sc, const RoundedPoints& S);
+
 // The rules on two convex objects with radii (not both 0): the kinds at a pair and at poses
 // (verdict, separating_plane, witness_point, distance, penetration_depth, signed_distance).
 class RoundedRules final : public ClaimRules {
@@ -98,6 +116,7 @@ class RoundedRules final : public ClaimRules {
   private:
     std::shared_ptr<const ExactScene> scene_;
     std::shared_ptr<const RoundedPoints> points_;
+    std::optional<RoundedGrowth> growth_;  // found on the first growth_distance claim
 };
 
 // Golden data on objects with a radius (golden.hpp): their touching set is curved, so it is

@@ -129,10 +129,9 @@ BOOST_AUTO_TEST_CASE(spheres_are_valid_and_tampering_is_rejected) {
     f["judgements"][1]["proof"] = OJ::parse(R"({"depth": {"separated": ["1", "0", "0"]}})");
     rejected(f, "hulls apart take a distance proof", "depth {separated} in place of a distance");
     // Kinds of the curve are not judged on such a scene.
-    for (const char* claim :
-         {R"({"kind": "curve_point", "rho1": "1", "rho2": "2"})", R"({"kind": "growth_distance", "value": "5/3"})",
-          R"({"kind": "switch_point", "rho1": "1", "rho2": "2"})",
-          R"({"kind": "curve", "vertices": [["1", "2"], ["2", "3/2"]]})"}) {
+    for (const char* claim : {R"({"kind": "curve_point", "rho1": "1", "rho2": "2"})",
+                              R"({"kind": "switch_point", "rho1": "1", "rho2": "2"})",
+                              R"({"kind": "curve", "vertices": [["1", "2"], ["2", "3/2"]]})"}) {
         f = j;
         f["judgements"].push_back(
             OJ{{"index", 99}, {"claim", OJ::parse(claim)}, {"right", false}, {"proof", OJ::object()}});
@@ -142,6 +141,84 @@ BOOST_AUTO_TEST_CASE(spheres_are_valid_and_tampering_is_rejected) {
     OJ q = bundled("stacked_cubes");
     q["scene"]["P1"]["radius"] = "1";
     BOOST_TEST(checked(q).first == 1);
+}
+
+// Growth distances (CLAIMS.md, "Objects with a radius"): a sphere of radius 1/2 centred at
+// (2, 2, 0) beside the box [−1, 1]³ touches it at ρ* = (16 − 4√2)/7 (the edge region: √2·(2 − ρ) =
+// ρ/2); two unit spheres 4 apart at ρ* = 2. The proof: ρ* as {a, b, c}, weights in Q(√2) of the
+// nearest point of K on each object's vertices; every tamper of a, b, c, the sign, the feature and
+// the weights is rejected.
+BOOST_AUTO_TEST_CASE(growth_distances_are_checked_and_tampering_is_rejected) {
+    char near[40];
+    std::snprintf(near, sizeof near, "%.17g", (16 - 4 * std::sqrt(2.0)) / 7);
+    const std::string claims = std::string(R"({"kind": "growth_distance", "value": )") + near + R"(},
+     {"kind": "growth_distance", "value": 1.48},
+     {"kind": "verdict", "rho1": 1, "rho2": 1, "verdict": "separated"})";
+    const std::string scene = R"({"P1": {"box": [1, 1, 1]},
+      "P2": {"sphere": "1/2", "pose": [[1,0,0,2],[0,1,0,2],[0,0,1,0]]}, "I1": [1, 2], "I2": [1, 2]})";
+    const OJ exact = certificate(scene, claims, "growth_edge_exact");
+    BOOST_TEST(bits(rights(exact)) == "001");  // no rational is ρ*
+    const OJ j = certificate(scene, claims, "growth_edge", " --tolerance 1e-15");
+    BOOST_TEST(bits(rights(j)) == "101");
+    const OJ& pr = j["judgements"][0]["proof"];
+    BOOST_TEST(pr["value"] == OJ::parse(R"({"a": "16/7", "b": "-4/7", "c": "2"})"));
+    BOOST_TEST(pr["P1"].size() == 2u);  // an edge of the box
+    BOOST_TEST(pr["P2"].size() == 1u);  // the sphere's centre
+    mutate_and_report(j, "judgements on objects with a radius (growth distance)", false, true);
+
+    OJ f;
+    auto tamper = [&](const char* key, const char* value, const std::string& why) {
+        f = j;
+        f["judgements"][0]["proof"]["value"][key] = value;
+        rejected(f, why, std::string("value.") + key + " = " + value);
+    };
+    tamper("a", "17/7", "is (r1 + r2)²");
+    tamper("b", "-5/7", "is (r1 + r2)²");
+    // The other sign, (16 + 4√2)/7: its t is the conjugate root of the same quadratic, so |n|² holds,
+    // and the plane through q normal to n cuts the box.
+    tamper("b", "4/7", "lies beyond n·q1 along n");
+    tamper("c", "3", "is (r1 + r2)²");
+    tamper("c", "4", "value.c is not a perfect square");
+    tamper("c", "0", "b and c are 0 together");
+    f = j;
+    f["judgements"][0]["proof"]["value"] = OJ::parse(R"({"a": "0", "b": "0", "c": "0"})");
+    rejected(f, "value is 0 only where the seeds coincide", "rho* = 0");
+    f = j;
+    f["judgements"][0]["proof"]["value"] = OJ::parse(R"({"a": "-16/7", "b": "4/7", "c": "2"})");
+    rejected(f, "value is > 0", "rho* < 0");
+    // The feature: another vertex of the box in place of one of the edge's.
+    f = j;
+    OJ& w0 = f["judgements"][0]["proof"]["P1"][0][0];
+    w0 = (w0.get<int>() + 1) % 8 == f["judgements"][0]["proof"]["P1"][1][0].get<int>() ? (w0.get<int>() + 2) % 8
+                                                                                       : (w0.get<int>() + 1) % 8;
+    rejected(f, "is (r1 + r2)²", "another vertex");
+    // A weight below 0, weights not summing to 1, a vertex named twice.
+    f = j;
+    f["judgements"][0]["proof"]["P1"][0][1] = "-1";
+    rejected(f, "is a weight >= 0", "a negative weight");
+    f = j;
+    f["judgements"][0]["proof"]["P2"][0][1] = "1/2";
+    rejected(f, "the weights sum to 1", "weights summing to 1/2");
+    f = j;
+    f["judgements"][0]["proof"]["P1"][1][0] = f["judgements"][0]["proof"]["P1"][0][0];
+    rejected(f, "is named once", "a vertex twice");
+    // The scene's radius changed: the same proof no longer reaches r1 + r2.
+    f = j;
+    f["scene"]["P2"]["radius"] = "1";
+    rejected(f, "is (r1 + r2)²", "radius 1");
+    // `right` flipped.
+    f = j;
+    f["judgements"][1]["right"] = true;
+    rejected(f, "judgements[1].right must be", "right flipped");
+
+    // Two unit spheres 4 apart: ρ* = 2, rational.
+    const OJ two =
+        certificate(R"({"P1": {"sphere": 1}, "P2": {"sphere": 1, "pose": [[1,0,0,4],[0,1,0,0],[0,0,1,0]]}})",
+                    R"({"kind": "growth_distance", "value": 2}, {"kind": "growth_distance", "value": 2.0000001})",
+                    "growth_spheres");
+    BOOST_TEST(bits(rights(two)) == "10");
+    BOOST_TEST(two["judgements"][0]["proof"]["value"] == OJ::parse(R"({"a": "2", "b": "0", "c": "0"})"));
+    mutate_and_report(two, "judgements on objects with a radius (growth of spheres)", false, true);
 }
 
 BOOST_AUTO_TEST_CASE(capsules_parallel_skew_and_crossing_by_hand) {

@@ -1,6 +1,7 @@
 // Claims of the curve (CLAIMS.md, "Claims" and "Curve claims"), on two convex objects:
 // growth distances, curve points, switch points and whole curves; each rule and its report.
 #include "certify/report.hpp"
+#include "certify/rounded.hpp"
 #include "certify/rules_impl.hpp"
 
 namespace scalecert::internal {
@@ -18,8 +19,27 @@ void ConvexRules::Impl::growth(const TypedClaim& c, Judged& g, Proof* proof) {
     }
 }
 
+namespace {
+// On objects with a radius: the exact ρ* = a + b√c beside the claim, the errors as doubles.
+void surd_errors(Json& o, const Q& claimed, const QuadSurd& x) {
+    put_exact(o, "claimed", claimed);
+    o["exact"] = surd_text(x);
+    o["exact_surd"] = surd_json(x);
+    const double e = surd_double(x), err = std::fabs(surd_double({Q(x.a - claimed), x.b, x.c}));
+    o["exact_double"] = e;
+    o["abs_error_double"] = err;
+    o["rel_error_double"] = e != 0 ? Json(err / std::fabs(e)) : Json(nullptr);
+}
+}  // namespace
+
 void describe(const TypedClaim& c, const GrowthJudged& d, const Judged&, const ExactScene*, Json& o,
               std::string& text) {
+    if (d.surd) {
+        surd_errors(o, c.value, *d.surd);
+        text = "growth distance " + num(c.value) + ": exact " + surd_text(*d.surd) + " (~" +
+               dbl(surd_double(*d.surd), 17) + ")";
+        return;
+    }
     errors(o, c.value, d.exact);
     text = "growth distance " + num(c.value) + ": exact " + num(d.exact);
 }
@@ -265,6 +285,12 @@ void describe(const TypedClaim& c, const CurveJudged& d, const Judged&, const Ex
 void describe_line(const TypedClaim& c, const GrowthJudged& d, const Judged&, const ExactScene*,
                    const std::vector<std::string>& w, Json& o, std::string& text) {
     o["claim"] = "growth";
+    if (d.surd) {
+        surd_errors(o, c.value, *d.surd);
+        text =
+            "growth distance " + w[1] + ": exact " + surd_text(*d.surd) + " (~" + dbl(surd_double(*d.surd), 17) + ")";
+        return;
+    }
     put_exact(o, "claimed", c.value);
     put_exact(o, "exact", d.exact);
     text = "growth distance " + w[1] + ": exact " + num(d.exact, 17) + ", off by " + num(c.value - d.exact, 17);
