@@ -5,6 +5,7 @@
 #include "certify/claim.hpp"
 #include "certify/claims.hpp"
 #include "certify/classify.hpp"
+#include "certify/rounded.hpp"
 #include "files.hpp"
 #include "session/session.hpp"
 #include "support.hpp"
@@ -34,6 +35,7 @@ BOOST_AUTO_TEST_CASE(golden_data_is_deterministic_and_exact) {
         // Every golden verdict agrees with the brute-force classifier on the stored scene.
         ExactScene sc = load_scene((a / (fam + "-0.scene.json")).string());
         if (sc.P[0].points.size() > 20) continue;  // the brute force is quartic; near-spheres skip it
+        if (sc.rounded()) continue;                // objects with a radius: their own test below
         test::Brute brute(sc);
         auto j = nlohmann::json::parse(slurp(a / (fam + "-0.golden.json")));
         int checked = 0;
@@ -110,6 +112,35 @@ BOOST_AUTO_TEST_CASE(atlas_families_are_what_they_claim) {
             const Q eps(1, Z(1) << k);
             Rng g(7);
             const ExactScene sc = make_family_scene(a.family, eps, g);
+            if (sc.rounded()) {
+                // Objects with a radius: the hulls' signed distance s·√E and R = r1 + r2 at (1, 1),
+                // by the rounded engine; each family is built ε from touching.
+                BOOST_TEST_CONTEXT(a.family << " at 2^-" << k) {
+                    const RoundedPoints S(sc, "atlas");
+                    check_rounded(sc, S, "atlas");
+                    const auto [rank, flat] = S.difference_span(S);
+                    const MeasuredDepth md = hull_measure(S, rank, flat, Q(1), Q(1));
+                    const auto [sign, E] = hull_signed(md);
+                    const Q R = sc.P[0].radius + sc.P[1].radius;
+                    BOOST_TEST(sign == 1);
+                    if (a.family == "far-spheres") {
+                        // Centres 1 − ε apart (a rational unit vector times 1 − ε), radii 1/2 each:
+                        // ε deep, far from the origin.
+                        BOOST_TEST((R == 1 && E == (1 - eps) * (1 - eps)));
+                        BOOST_TEST(rounded_verdict(md, R) == Verdict::Overlapping);
+                        BOOST_TEST(abs(sc.P[0].points[0][0]) >= 1000000);
+                    } else {
+                        // The capsule's axis 1/2 + ε above the prism's top (capsule-hull); the cubes'
+                        // faces m1 + m2 + ε apart (margin-hulls); the sphere's centre r + ε from the
+                        // box's edge, (r + ε)(3/5, 0, 4/5) (sphere-box-edge): ε apart once inflated.
+                        BOOST_TEST(E == (R + eps) * (R + eps));
+                        BOOST_TEST(rounded_verdict(md, R) == Verdict::Separated);
+                        if (a.family == "capsule-hull") BOOST_TEST((R == Q(1, 2) && sgn(sc.P[0].radius) == 0));
+                        if (a.family == "sphere-box-edge") BOOST_TEST(sc.P[1].points.size() == 1u);
+                    }
+                }
+                continue;
+            }
             const Judged j = at_one(sc);
             BOOST_TEST_CONTEXT(a.family << " at 2^-" << k) {
                 if (a.family == "face-to-face") {
@@ -137,7 +168,74 @@ BOOST_AUTO_TEST_CASE(atlas_families_are_what_they_claim) {
             }
         }
     }
-    BOOST_TEST(seen.size() == 5u);
+    BOOST_TEST(seen.size() == 9u);
+}
+
+// The audit on objects with a radius: examples/spheres.json, a sphere of radius 1 at the origin and
+// one of radius 2 at (5, 0, 0), each scaled about its centre, over I1 = I2 = [1, 2]. By hand: they
+// touch where ρ1 + 2ρ2 = 5, are apart below and overlap above, so every vertical ρ1 = 1 + k/16
+// crosses the touching set at ρ2 = (5 − ρ1)/2 in (3/2, 2): 200 random pairs and 15 × 12 near it;
+// with by_distance 15 × 13 × 2 more. tests/data/commands/spheres_verdicts.py says that sum's
+// verdict in fractions: it must agree with the audit's exact verdicts at every pair. Each library's
+// wrong verdicts name the exact verdict the same sum gives, and none is wrong 2^-20 away from
+// the set. Spheres are FCL's and Bullet's own shapes: every library runs; the methods that read
+// polyhedra and the grid do not (not applicable).
+BOOST_AUTO_TEST_CASE(audit_on_objects_with_a_radius) {
+    const ExactScene s = load_scene(std::string(SCALECERT_SOURCE_DIR) + "/examples/spheres.json");
+    const std::string prog =
+        "/usr/bin/python3 " + std::string(SCALECERT_SOURCE_DIR) + "/tests/data/commands/spheres_verdicts.py";
+    const std::vector<std::string> methods{"libccd-gjk",    "libccd-mpr",         "fcl-gjk-libccd",
+                                           "fcl-gjk-indep", "bullet-gjk-epa",     "double-envelope",
+                                           "grid",          kCommandMethod + prog};
+    const std::vector<AuditRow> rows = audit_scene("spheres", s, Q(0), methods, {8}, true);
+    auto hand = [](double a, double b) {
+        const Q t = exact_from_double(a) + 2 * exact_from_double(b);
+        return t < 5 ? Verdict::Separated : t == 5 ? Verdict::Touching : Verdict::Overlapping;
+    };
+    BOOST_TEST_REQUIRE(rows.size() == 8u);  // the grid: one row
+    int ran = 0;
+    for (const AuditRow& r : rows) {
+        BOOST_TEST_CONTEXT(r.method) {
+            if (r.method == "double-envelope" || r.method == "grid") {
+                BOOST_TEST(r.not_run.rfind("not applicable: ", 0) == 0);
+                continue;
+            }
+            BOOST_TEST_REQUIRE(r.not_run.empty());
+            ++ran;
+            BOOST_TEST(r.queries == 200 + 15 * 12);
+            long near = 0;
+            for (const AuditRow::ByDistance& b : r.by_distance) near += b.pairs + b.touching;
+            BOOST_TEST(near == 15 * 13 * 2);
+            for (const AuditRow::Failure& f : r.failures) {
+                BOOST_TEST((f.exact == hand(f.rho1, f.rho2)));
+                BOOST_TEST(std::fabs(f.rho1 + 2 * f.rho2 - 5) < 5 * 0x1p-20);
+            }
+            if (r.method.rfind("command (", 0) == 0) {
+                BOOST_TEST(r.wrong() == 0);
+                for (const AuditRow::ByDistance& b : r.by_distance) BOOST_TEST(b.wrong == 0);
+            }
+        }
+    }
+    BOOST_TEST(ran == 6);
+}
+
+// FCL holds a sphere, a capsule and a hull without a radius, and no hull with one: on the atlas's
+// capsule-hull scene it runs, on margin-hulls (two boxes with radii) its rows say it does not apply;
+// libccd and Bullet run on both.
+BOOST_AUTO_TEST_CASE(fcl_is_not_applicable_to_hulls_with_a_radius) {
+    for (const std::string fam : {"capsule-hull", "margin-hulls"}) {
+        Rng g(3);
+        const ExactScene s = make_family_scene(fam, Q(1, 16), g);
+        const std::vector<AuditRow> rows =
+            audit_scene(fam, s, Q(1, 16), {"libccd-gjk", "fcl-gjk-libccd", "bullet-gjk-epa"}, {}, false);
+        BOOST_TEST_REQUIRE(rows.size() == 3u);
+        BOOST_TEST(rows[0].not_run.empty());
+        BOOST_TEST(rows[2].not_run.empty());
+        if (fam == "capsule-hull")
+            BOOST_TEST(rows[1].not_run.empty());
+        else
+            BOOST_TEST(rows[1].not_run.rfind("not applicable: FCL has no convex shape with a radius", 0) == 0);
+    }
 }
 
 BOOST_AUTO_TEST_CASE(small_audit_and_stability_sweep) {

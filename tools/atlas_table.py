@@ -17,7 +17,8 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import report  # noqa: E402 (its reading of an audit's rows, each field checked)
 
-CLASSES = ["face-to-face", "long-edge", "scaled", "touching", "decomposition-gap"]
+CLASSES = ["face-to-face", "long-edge", "scaled", "touching", "decomposition-gap", "capsule-hull", "far-spheres",
+           "margin-hulls", "sphere-box-edge"]
 
 
 def main():

@@ -309,7 +309,7 @@ for (const r of D.rows) {
                    r.not_run || r.seconds_per_query == null ? "" : (1e6 * r.seconds_per_query).toPrecision(3), r.not_run]) cell(tr, v);
 }
 // The atlas table: rows of the atlas's families, per class and method.
-const classes = ["face-to-face", "long-edge", "scaled", "touching", "decomposition-gap"];
+const classes = ["face-to-face", "long-edge", "scaled", "touching", "decomposition-gap", "capsule-hull", "far-spheres", "margin-hulls", "sphere-box-edge"];
 const atlas = {};
 for (const r of D.rows) {
   const cls = r.scene.replace(/-[0-9]+$/, "");

@@ -5,6 +5,7 @@
 
 #include "certify/certificate.hpp"
 #include "certify/region_certificate.hpp"
+#include "certify/rounded.hpp"
 #include "curve/closed_forms.hpp"
 #include "geometry/measures.hpp"
 #include "io/files.hpp"
@@ -553,13 +554,208 @@ std::vector<AuditRow> audit_convex(const std::string& name, const ExactScene& s,
     return rows;
 }
 
+// ---- Objects with a radius ----------------------------------------------------------------------
+
+// The objects as the floating-point methods see them (fp::RoundedFp): the nearest doubles, and
+// each object's shape decided exactly: its points one point (a sphere), on one line (a capsule
+// between the two extreme ones), else a hull; the faces of a hull spanning 3 dimensions.
+fp::RoundedFp rounded_fp(const ExactScene& s, const std::string& name, const MethodSettings& settings) {
+    const fp::FpScene f = fp::to_fp(s);
+    fp::RoundedFp r;
+    for (int i = 0; i < 2; ++i) {
+        fp::RoundedFp::Object& o = r.P[i];
+        const std::vector<Vec3q>& pts = s.P[i].points;
+        o.pts = f.P[i].pts;
+        o.seed = f.P[i].seed;
+        o.radius = to_double_rn(s.P[i].radius);
+        o.rounded = sgn(s.P[i].radius) > 0;
+        r.lo[i] = f.lo[i];
+        r.hi[i] = f.hi[i];
+        // The first point unlike pts[0], and whether every point lies on the line through both.
+        size_t other = 0;
+        for (size_t k = 1; k < pts.size() && !other; ++k)
+            if (pts[k] != pts[0]) other = k;
+        bool on_line = true;
+        const Vec3q d = other ? sub(pts[other], pts[0]) : Vec3q{Q(0), Q(0), Q(0)};
+        for (size_t k = 1; k < pts.size() && on_line && other; ++k) {
+            const Vec3q c = cross(d, sub(pts[k], pts[0]));
+            on_line = sgn(c[0]) == 0 && sgn(c[1]) == 0 && sgn(c[2]) == 0;
+        }
+        if (!other) {
+            o.shape = fp::RoundedFp::Shape::Sphere;
+        } else if (on_line) {
+            o.shape = fp::RoundedFp::Shape::Capsule;
+            size_t lo = 0, hi = 0;
+            for (size_t k = 1; k < pts.size(); ++k) {
+                if (dot(d, pts[k]) < dot(d, pts[lo])) lo = k;
+                if (dot(d, pts[k]) > dot(d, pts[hi])) hi = k;
+            }
+            o.ends = {static_cast<int>(lo), static_cast<int>(hi)};
+        } else {
+            bool flat = true;  // every point in the plane of pts[0], pts[other] and a third
+            Vec3q n{Q(0), Q(0), Q(0)};
+            for (size_t k = 1; k < pts.size() && flat; ++k) {
+                const Vec3q c = cross(d, sub(pts[k], pts[0]));
+                if (sgn(n[0]) == 0 && sgn(n[1]) == 0 && sgn(n[2]) == 0)
+                    n = c;
+                else
+                    flat = sgn(dot(n, sub(pts[k], pts[0]))) == 0;
+            }
+            if (!flat)
+                for (const Face& face : build_polyhedron(pts, name + ": " + (i ? "P2" : "P1")).faces)
+                    o.faces.push_back(face.verts);
+        }
+    }
+    r.settings = settings;
+    return r;
+}
+
+// The audit of objects with a radius. The exact verdicts are the rounded engine's
+// (rounded_verdict on hull_measure, exact at the doubles' values). The pairs: the 200 random
+// ones of the convex audit; and, since the touching set is curved, at 15 verticals ρ1 = x spread
+// over I1 where it crosses x × I2, bisection on ρ2 with exact verdicts (as rounded_golden) down to
+// 2^-60 of I2, or to the touching pair itself, gives y; the pairs (x, y(1 ± 2^-e)) for e = 8, 16, …,
+// 48 are judged, and with by_distance those at 2^-k, k = 4, 8, …, 52. The methods: libccd's GJK
+// and MPR (support inflated), FCL (spheres, capsules, hulls without a radius; elsewhere not
+// applicable), Bullet (margins), and the user's program; the others not applicable, and the grid
+// (one row). No distances or depths are compared.
+std::vector<AuditRow> audit_rounded(const std::string& name, const ExactScene& s, const Q& eps,
+                                    const std::vector<std::string>& methods, bool by_distance,
+                                    const MethodSettings& settings) {
+    using Clock = std::chrono::steady_clock;
+    if (s.made_of_parts()) throw InputError("objects made of parts with a radius are not audited");
+    const RoundedPoints S(s, name);
+    check_rounded(s, S, name);
+    const std::pair<int, Vec3z> span = S.difference_span(S);
+    auto exact_at = [&](const Q& a, const Q& b) {
+        return rounded_verdict(hull_measure(S, span.first, span.second, a, b), a * s.P[0].radius + b * s.P[1].radius);
+    };
+    const fp::RoundedFp f = rounded_fp(s, name, settings);
+    double extent = 0;
+    for (int i = 0; i < 2; ++i)
+        extent = std::max(extent, fp::scaled_extent(f.P[i].pts, f.P[i].seed, f.hi[i]) + f.hi[i] * f.P[i].radius);
+    const std::string beyond = beyond_doubles(extent);
+    std::vector<double> r1, r2;
+    Rng g(12345);
+    for (int k = 0; k < 200; ++k) {
+        r1.push_back(f.lo[0] + (f.hi[0] - f.lo[0]) * (g.next() >> 11) * 0x1.0p-53);
+        r2.push_back(f.lo[1] + (f.hi[1] - f.lo[1]) * (g.next() >> 11) * 0x1.0p-53);
+    }
+    // The touching set on each vertical that crosses it inside I2.
+    std::vector<std::pair<Q, Q>> on;
+    for (int k = 1; k < 16; ++k) {
+        Q x = s.lo[0] + (s.hi[0] - s.lo[0]) * Q(k, 16);
+        x.canonicalize();
+        if (exact_at(x, s.lo[1]) != Verdict::Separated || exact_at(x, s.hi[1]) == Verdict::Separated) continue;
+        Q a = s.lo[1], b = s.hi[1];
+        std::optional<Q> hit;
+        for (int step = 0; step < 60 && !hit; ++step) {
+            Q m = (a + b) / 2;
+            m.canonicalize();
+            const Verdict v = exact_at(x, m);
+            if (v == Verdict::Touching) hit = m;
+            (v == Verdict::Separated ? a : b) = m;
+        }
+        Q y = hit ? *hit : Q((a + b) / 2);
+        y.canonicalize();
+        on.push_back({x, y});
+    }
+    for (const auto& [x, y] : on)
+        for (int e : {8, 16, 24, 32, 40, 48})
+            for (int sg : {-1, 1}) {
+                r1.push_back(to_double_rn(x));
+                r2.push_back(to_double_rn(y + sg * y / Q(Z(1) << e)));
+            }
+    std::vector<Verdict> exact(r1.size());
+    for (size_t i = 0; i < r1.size(); ++i) exact[i] = exact_at(exact_from_double(r1[i]), exact_from_double(r2[i]));
+    DistancePairs near;
+    if (by_distance)
+        for (int k = 4; k <= 52; k += 4)
+            for (const auto& [x, y] : on)
+                for (int sg : {-1, 1}) {
+                    const double xd = to_double_rn(x), yd = to_double_rn(y + sg * y / Q(Z(1) << k));
+                    near.k.push_back(k);
+                    near.x.push_back(xd);
+                    near.y.push_back(yd);
+                    near.exact.push_back(exact_at(exact_from_double(xd), exact_from_double(yd)));
+                }
+    const std::string fcl_not = fp::rounded_fcl_why_not(f);
+    std::vector<AuditRow> rows;
+    for (const std::string& meth : methods) {
+        if (meth == "grid") {  // one row for every resolution
+            rows.push_back(not_run_row(name, "grid", eps, settings, false,
+                                       "not applicable: the touching set of objects with a radius is curved, with no "
+                                       "junctions or growth distance of a touching curve to compare"));
+            continue;
+        }
+        std::string why = beyond;
+        std::unique_ptr<fp::Method> mm;
+        auto t0 = Clock::now();
+        if (!why.empty()) {
+        } else if (meth.rfind(kCommandMethod, 0) == 0) {
+            std::vector<std::pair<double, double>> pairs;
+            for (size_t i = 0; i < r1.size(); ++i) pairs.push_back({r1[i], r2[i]});
+            for (size_t i = 0; i < near.x.size(); ++i) pairs.push_back({near.x[i], near.y[i]});
+            const std::string command = meth.substr(std::string(kCommandMethod).size());
+            auto cm = std::make_unique<CommandMethod>(command, s, pairs, settings.command_timeout);
+            if (!cm->failed.empty())
+                why = "--command: " + cm->failed;
+            else
+                mm = std::move(cm);
+        } else if (meth == "libccd-gjk" || meth == "libccd-mpr") {
+            mm = fp::make_rounded_libccd(f, meth == "libccd-mpr");
+        } else if (meth == "fcl-gjk-libccd" || meth == "fcl-gjk-indep") {
+            why = fcl_not;
+            if (why.empty()) mm = fp::make_rounded_fcl_bullet(f, meth == "fcl-gjk-libccd" ? 1 : 2);
+        } else if (meth == "bullet-gjk-epa") {
+            mm = fp::make_rounded_fcl_bullet(f, 0);
+        } else if (meth == "double-envelope" || meth == "paper-tritri") {
+            why = "not applicable: " + meth + " reads two polyhedra's " +
+                  (meth == "double-envelope" ? "contact lines" : "triangulated faces") +
+                  ", and objects with a radius are no polyhedra";
+        } else {
+            const std::vector<std::string> cn = fp::compound_method_names();
+            if (std::find(cn.begin(), cn.end(), meth) == cn.end())
+                throw InputError("--methods: unknown method " + in_quotes(meth));
+            why = "not applicable: " + meth + " audits objects made of parts";
+        }
+        if (!why.empty()) {
+            rows.push_back(not_run_row(name, meth, eps, settings, false, why));
+            continue;
+        }
+        const auto* cm = dynamic_cast<const CommandMethod*>(mm.get());
+        if (!cm) t0 = Clock::now();  // a library's time is its queries'; a program's its whole run
+        AuditRow r;
+        r.scene = name;
+        r.method = mm->name();
+        r.settings = fp::settings_of(meth, settings, false);
+        r.eps = eps;
+        if (cm) r.extra_claims = cm->extra_claims;
+        for (size_t i = 0; i < r1.size(); ++i) {
+            const int v = cm ? cm->said_at(i) : mm->classify(r1[i], r2[i]);
+            if (v == AuditRow::kSaidNoAnswer) {
+                auto [reason, claim] = cm->no_answer_at(i);
+                r.count_no_answer(r1[i], r2[i], exact[i], std::move(reason), std::move(claim));
+            } else {
+                r.count(r1[i], r2[i], v, exact[i]);
+            }
+        }
+        r.seconds_per_query = std::chrono::duration<double>(Clock::now() - t0).count() / static_cast<double>(r1.size());
+        if (by_distance)
+            wrong_by_distance(
+                [&](size_t i) { return cm ? cm->said_at(r1.size() + i) : mm->classify(near.x[i], near.y[i]); }, near,
+                r);
+        rows.push_back(r);
+    }
+    return rows;
+}
+
 }  // namespace
 
 std::vector<AuditRow> audit_scene(const std::string& name, const ExactScene& s, const Q& eps,
                                   const std::vector<std::string>& methods, const std::vector<int>& grid_ns,
                                   bool by_distance, bool measures, const MethodSettings& settings) {
-    if (s.rounded())
-        throw InputError("objects with a radius are not audited yet (certify-fp judges a program's claims on them)");
+    if (s.rounded()) return audit_rounded(name, s, eps, methods, by_distance, settings);
     const std::vector<std::string> cn = fp::compound_method_names();
     std::vector<std::string> convex, compound;
     for (const std::string& m : methods)

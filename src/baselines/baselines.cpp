@@ -131,6 +131,72 @@ std::unique_ptr<Method> make_double_envelope(const Model& m, const FpScene& s) {
 }
 
 namespace {
+// An object with a radius as libccd sees it: its scaled hull's support point, plus ρr along the
+// direction asked, normalised (the support of the hull ⊕ the ball of radius ρr).
+struct RoundedScaled {
+    const RoundedFp::Object* o;
+    double rho;
+};
+
+void rounded_support(const void* obj, const ccd_vec3_t* dir, ccd_vec3_t* out) {
+    const RoundedScaled& s = *static_cast<const RoundedScaled*>(obj);
+    const D3& c = s.o->seed;
+    double best = -INFINITY;
+    const D3* arg = &s.o->pts[0];
+    for (const D3& v : s.o->pts) {
+        const double d = dir->v[0] * v[0] + dir->v[1] * v[1] + dir->v[2] * v[2];
+        if (d > best) {
+            best = d;
+            arg = &v;
+        }
+    }
+    const double len = std::sqrt(dir->v[0] * dir->v[0] + dir->v[1] * dir->v[1] + dir->v[2] * dir->v[2]);
+    const double m = len > 0 ? s.rho * s.o->radius / len : 0;
+    for (int k = 0; k < 3; ++k) out->v[k] = c[k] + s.rho * ((*arg)[k] - c[k]) + m * dir->v[k];
+}
+
+void rounded_center(const void* obj, ccd_vec3_t* out) {
+    const RoundedScaled& s = *static_cast<const RoundedScaled*>(obj);
+    for (int k = 0; k < 3; ++k) out->v[k] = s.o->seed[k];
+}
+
+class RoundedLibccd : public Method {
+  public:
+    RoundedLibccd(const RoundedFp& s, bool mpr) : s_(s), mpr_(mpr) {}
+    std::string name() const override { return mpr_ ? "libccd-mpr" : "libccd-gjk"; }
+    int classify(double r1, double r2) const override {
+        RoundedScaled a{&s_.P[0], r1}, b{&s_.P[1], r2};
+        ccd_t ccd = ccd_settings(s_.settings);
+        ccd.support1 = ccd.support2 = rounded_support;
+        ccd.center1 = ccd.center2 = rounded_center;
+        const int hit = mpr_ ? ccdMPRIntersect(&a, &b, &ccd) : ccdGJKIntersect(&a, &b, &ccd);
+        return hit ? -1 : 1;
+    }
+
+  private:
+    RoundedFp s_;
+    bool mpr_;
+};
+}  // namespace
+
+std::unique_ptr<Method> make_rounded_libccd(const RoundedFp& s, bool mpr) {
+    return std::make_unique<RoundedLibccd>(s, mpr);
+}
+
+std::string rounded_fcl_why_not(const RoundedFp& s) {
+    for (int i = 0; i < 2; ++i) {
+        const RoundedFp::Object& o = s.P[i];
+        if (o.shape != RoundedFp::Shape::Hull || !o.rounded) continue;
+        return std::string(
+                   "not applicable: FCL has no convex shape with a radius (fcl::Convex has no margin, and "
+                   "FCL no Minkowski sum of shapes), and ") +
+               (i == 0 ? "P1" : "P2") + " is the hull of " + std::to_string(o.pts.size()) +
+               " points with a radius, neither a sphere nor a capsule";
+    }
+    return "";
+}
+
+namespace {
 using Factory = std::unique_ptr<Method> (*)(const Model&, const FpScene&);
 // Every method by name: make_method and method_names read the same table.
 const std::vector<std::pair<std::string, Factory>>& methods() {

@@ -143,6 +143,37 @@ std::vector<std::pair<std::string, double>> settings_of(const std::string& metho
 // GJK, 2 FCL with its own GJK.
 std::unique_ptr<Method> make_fcl_bullet_compound(const CompoundFp& s, int kind);
 
+// ---- Objects with a radius -------------------------------------------------------------------
+// Each object as doubles (CLAIMS.md, "Objects with a radius"): the hull of its points, scaled about
+// its seed by ρ, with every point within ρr of it. Its shape says how the libraries that have one
+// hold it: a sphere (its points one point), a capsule (its points on one line: the extreme two its
+// ends), or a hull (any other, with or without a radius). Shape and ends are decided exactly.
+struct RoundedFp {
+    enum class Shape { Sphere, Capsule, Hull };
+    struct Object {
+        std::vector<D3> pts;  // the nearest doubles
+        D3 seed;
+        double radius = 0;     // r's nearest double
+        bool rounded = false;  // r > 0 (decided exactly)
+        Shape shape = Shape::Hull;
+        std::array<int, 2> ends{};  // a sphere's point (both), a capsule's two ends
+        // A hull of points spanning 3 dimensions: its exact hull's faces (indices into pts).
+        std::vector<std::vector<int>> faces;
+    };
+    Object P[2];
+    double lo[2], hi[2];
+    MethodSettings settings;
+};
+// libccd's GJK and MPR on the objects, their support inflated as the engines collide them: the
+// scaled hull's support point plus ρr·d/|d| along the direction d asked (libccd's support callback).
+std::unique_ptr<Method> make_rounded_libccd(const RoundedFp& s, bool mpr);
+// The FCL and Bullet ones, from the module (fcl_bullet.cpp): kind 0 Bullet, 1 FCL with libccd's
+// GJK, 2 FCL with its own GJK. FCL only where each object is a sphere, a capsule or a hull
+// without a radius (rounded_fcl_why_not).
+std::unique_ptr<Method> make_rounded_fcl_bullet(const RoundedFp& s, int kind);
+// Why FCL cannot hold the objects ("" when it can): it has no convex shape with a radius.
+std::string rounded_fcl_why_not(const RoundedFp& s);
+
 // The paper's pipeline: classify an n × n grid over I1 × I2; in each column, the touching ρ2 is
 // estimated by `bisections` rounds of bisection between the last separated and the first
 // overlapping node, repeated `repeats` times from jittered brackets and averaged (Section 3.2).

@@ -9,12 +9,16 @@
 #include <BulletCollision/CollisionDispatch/btCollisionDispatcher.h>
 #include <BulletCollision/CollisionDispatch/btCollisionWorld.h>
 #include <BulletCollision/CollisionDispatch/btDefaultCollisionConfiguration.h>
+#include <BulletCollision/CollisionShapes/btCapsuleShape.h>
 #include <BulletCollision/CollisionShapes/btCompoundShape.h>
 #include <BulletCollision/CollisionShapes/btConvexHullShape.h>
+#include <BulletCollision/CollisionShapes/btSphereShape.h>
 #include <BulletCollision/NarrowPhaseCollision/btGjkEpa2.h>
 #include <fcl/broadphase/broadphase_dynamic_AABB_tree.h>
 #include <fcl/broadphase/default_broadphase_callbacks.h>
+#include <fcl/geometry/shape/capsule.h>
 #include <fcl/geometry/shape/convex.h>
+#include <fcl/geometry/shape/sphere.h>
 #include <fcl/narrowphase/collision.h>
 #include <fcl/narrowphase/distance.h>
 
@@ -406,6 +410,138 @@ class FclCompound : public Method {
     std::vector<std::shared_ptr<const std::vector<int>>> faces_[2];
 };
 
+// ---- Objects with a radius ----------------------------------------------------------------------
+
+// A sphere's centre or a capsule's ends at ρ: s + ρ(p − s).
+D3 scaled_point(const RoundedFp::Object& o, int k, double rho) {
+    const D3& p = o.pts[static_cast<size_t>(k)];
+    const D3& c = o.seed;
+    return {c[0] + rho * (p[0] - c[0]), c[1] + rho * (p[1] - c[1]), c[2] + rho * (p[2] - c[2])};
+}
+// A capsule's pose at ρ: its ends' midpoint, and the rotation taking z to its axis (FCL's capsule
+// and Bullet's btCapsuleShapeZ lie along z); its length |b − a|.
+struct CapsulePose {
+    Eigen::Vector3d centre;
+    Eigen::Quaterniond turn;
+    double length;
+};
+CapsulePose capsule_pose(const RoundedFp::Object& o, double rho) {
+    const D3 a = scaled_point(o, o.ends[0], rho), b = scaled_point(o, o.ends[1], rho);
+    const Eigen::Vector3d A(a[0], a[1], a[2]), B(b[0], b[1], b[2]);
+    return {(A + B) / 2, Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitZ(), B - A), (B - A).norm()};
+}
+
+// FCL on objects with a radius: fcl::Sphere (radius ρr, at the scaled point), fcl::Capsule (radius
+// ρr, between the scaled ends) and fcl::Convex for a hull without a radius (scaled as the convex
+// baseline scales it); collide() as on convex scenes. rounded_fcl_why_not says where it cannot.
+class RoundedFcl : public Method {
+  public:
+    RoundedFcl(const RoundedFp& s, fcl::GJKSolverType type) : s_(s), type_(type) {
+        for (int i = 0; i < 2; ++i) {
+            auto faces = std::make_shared<std::vector<int>>();
+            for (const std::vector<int>& f : s.P[i].faces) {
+                faces->push_back(static_cast<int>(f.size()));
+                faces->insert(faces->end(), f.begin(), f.end());
+            }
+            faces_[i] = faces;
+        }
+    }
+    std::string name() const override { return type_ == fcl::GST_LIBCCD ? "fcl-gjk-libccd" : "fcl-gjk-indep"; }
+    int classify(double r1, double r2) const override {
+        const std::unique_ptr<fcl::CollisionObjectd> a = object(0, r1), b = object(1, r2);
+        fcl::CollisionRequestd req;
+        req.gjk_solver_type = type_;
+        req.gjk_tolerance = s_.settings.fcl_gjk_tolerance;
+        fcl::CollisionResultd res;
+        fcl::collide(a.get(), b.get(), req, res);
+        return res.isCollision() ? -1 : 1;
+    }
+
+  private:
+    std::unique_ptr<fcl::CollisionObjectd> object(int i, double rho) const {
+        const RoundedFp::Object& o = s_.P[i];
+        fcl::Transform3d t = fcl::Transform3d::Identity();
+        if (o.shape == RoundedFp::Shape::Sphere) {
+            const D3 c = scaled_point(o, o.ends[0], rho);
+            t.translation() = fcl::Vector3d(c[0], c[1], c[2]);
+            return std::make_unique<fcl::CollisionObjectd>(std::make_shared<fcl::Sphered>(rho * o.radius), t);
+        }
+        if (o.shape == RoundedFp::Shape::Capsule) {
+            const CapsulePose p = capsule_pose(o, rho);
+            t.linear() = p.turn.toRotationMatrix();
+            t.translation() = p.centre;
+            return std::make_unique<fcl::CollisionObjectd>(std::make_shared<fcl::Capsuled>(rho * o.radius, p.length),
+                                                           t);
+        }
+        auto v = std::make_shared<std::vector<fcl::Vector3d>>();
+        const D3& c = o.seed;
+        for (const D3& p : o.pts)
+            v->emplace_back(c[0] + rho * (p[0] - c[0]), c[1] + rho * (p[1] - c[1]), c[2] + rho * (p[2] - c[2]));
+        return std::make_unique<fcl::CollisionObjectd>(
+            std::make_shared<fcl::Convexd>(v, static_cast<int>(o.faces.size()), faces_[i]), t);
+    }
+    RoundedFp s_;
+    fcl::GJKSolverType type_;
+    std::shared_ptr<const std::vector<int>> faces_[2];
+};
+
+// Bullet on objects with a radius: btSphereShape (radius ρr, at the scaled point), btCapsuleShapeZ
+// (radius ρr, between the scaled ends) and btConvexHullShape (points about the seed, local scaling
+// ρ) whose collision margin is ρr (--bullet-margin for a hull without a radius). Bullet inflates a
+// shape by its margin (a sphere's and a capsule's margin is their radius):
+// btGjkEpaSolver2::Distance measures the shapes without their margins, and, as Bullet's
+// btGjkPairDetector does, the two margins are taken off that distance. Separated when what is
+// left is > 0; GJK finding the shapes without margins meeting is a collision.
+class RoundedBullet : public Method {
+  public:
+    explicit RoundedBullet(const RoundedFp& s) : s_(s) {
+        for (int i = 0; i < 2; ++i) {
+            const D3& c = s.P[i].seed;
+            for (const D3& p : s.P[i].pts) hull_[i].addPoint(btVector3(p[0] - c[0], p[1] - c[1], p[2] - c[2]), false);
+            hull_[i].recalcLocalAabb();
+        }
+    }
+    std::string name() const override { return "bullet-gjk-epa"; }
+    int classify(double r1, double r2) const override {
+        Posed a = posed(0, r1), b = posed(1, r2);
+        btGjkEpaSolver2::sResults res;
+        const bool apart = btGjkEpaSolver2::Distance(a.shape, a.xf, b.shape, b.xf, btVector3(1, 0, 0), res);
+        return apart && res.distance - (a.shape->getMargin() + b.shape->getMargin()) > 0 ? 1 : -1;
+    }
+
+  private:
+    struct Posed {
+        const btConvexShape* shape;
+        btTransform xf;
+        std::unique_ptr<btConvexShape> own;
+    };
+    Posed posed(int i, double rho) const {
+        const RoundedFp::Object& o = s_.P[i];
+        Posed p;
+        p.xf.setIdentity();
+        if (o.shape == RoundedFp::Shape::Sphere) {
+            const D3 c = scaled_point(o, o.ends[0], rho);
+            p.own = std::make_unique<btSphereShape>(rho * o.radius);
+            p.xf.setOrigin(btVector3(c[0], c[1], c[2]));
+        } else if (o.shape == RoundedFp::Shape::Capsule) {
+            const CapsulePose c = capsule_pose(o, rho);
+            p.own = std::make_unique<btCapsuleShapeZ>(rho * o.radius, c.length);
+            p.xf.setOrigin(btVector3(c.centre[0], c.centre[1], c.centre[2]));
+            p.xf.setRotation(btQuaternion(c.turn.x(), c.turn.y(), c.turn.z(), c.turn.w()));
+        } else {
+            hull_[i].setLocalScaling(btVector3(rho, rho, rho));
+            hull_[i].setMargin(o.rounded ? rho * o.radius : s_.settings.bullet_margin);
+            p.xf.setOrigin(btVector3(o.seed[0], o.seed[1], o.seed[2]));
+            p.shape = &hull_[i];
+            return p;
+        }
+        p.shape = p.own.get();
+        return p;
+    }
+    RoundedFp s_;
+    mutable btConvexHullShape hull_[2];
+};
+
 }  // namespace
 
 std::unique_ptr<Method> make_compound_module(const CompoundFp& s, int kind) {
@@ -428,4 +564,10 @@ extern "C" __attribute__((visibility("default"))) scalecert::internal::fp::Metho
 extern "C" __attribute__((visibility("default"))) scalecert::internal::fp::Method* scalecert_make_compound(
     const scalecert::internal::fp::CompoundFp* s, int kind) {
     return scalecert::internal::fp::make_compound_module(*s, kind).release();
+}
+extern "C" __attribute__((visibility("default"))) scalecert::internal::fp::Method* scalecert_make_rounded(
+    const scalecert::internal::fp::RoundedFp* s, int kind) {
+    using namespace scalecert::internal::fp;
+    if (kind == 0) return new RoundedBullet(*s);
+    return new RoundedFcl(*s, kind == 1 ? fcl::GST_LIBCCD : fcl::GST_INDEP);
 }

@@ -56,7 +56,8 @@ const std::vector<std::string>& family_names() {
     static const std::vector<std::string> n{
         "random",          "parallel-faces", "nearly-equal-slopes", "nearly-parallel-edges", "vertex-vertex",
         "far-from-origin", "sliver",         "near-sphere",         "face-to-face",          "long-edge",
-        "scaled",          "touching",       "decomposition-gap"};
+        "scaled",          "touching",       "decomposition-gap",   "capsule-hull",          "far-spheres",
+        "margin-hulls",    "sphere-box-edge"};
     return n;
 }
 
@@ -68,7 +69,22 @@ const std::vector<AtlasClass>& atlas_classes() {
          "long edges against small depths (ratios 10^1 to 10^4): Jolt PR #2065, newton #3773"},
         {"scaled", {0, 5, 10, 15, 20}, "one scene at scales 2^10 to 2^-10 (about 10^3 to 10^-3): mujoco_warp #1430"},
         {"touching", {4, 16, 28, 40}, "bodies touching at (1, 1), tilted by an angle eps: drake #21234, drake #21673"},
-        {"decomposition-gap", {4, 16, 28, 40}, "two hulls of a cut cube, a gap eps apart along the cut: mujoco #3383"}};
+        {"decomposition-gap", {4, 16, 28, 40}, "two hulls of a cut cube, a gap eps apart along the cut: mujoco #3383"},
+        {"capsule-hull",
+         {4, 16, 28, 40},
+         "a capsule eps above a cylinder's polygon hull (a depth of 7.24732 m for a barely touching cylinder and "
+         "capsule): Jolt PR #2108"},
+        {"far-spheres",
+         {4, 16, 28, 40},
+         "two spheres eps deep in each other at coordinates near 10^6 (32-bit GJK missed spheres 0.063 m deep): "
+         "Genesis PR #2525"},
+        {"margin-hulls",
+         {4, 16, 28, 40},
+         "two boxes with margins (radii), eps apart once inflated (CCD distance biased by a margin/2 support): "
+         "mujoco_warp PR #1188"},
+        {"sphere-box-edge",
+         {4, 16, 28, 40},
+         "a sphere eps from a box's edge (margin plus gap culled a sphere 0.03 away): newton PR #2916"}};
     return a;
 }
 
@@ -91,6 +107,12 @@ std::string family_description(const std::string& name) {
     if (name == "touching") return "a box tilted by ε radians (in doubles) resting on a box: they touch at (1, 1)";
     if (name == "decomposition-gap")
         return "the two hulls of a cube cut by a random plane through its centre, moved ε apart along its normal";
+    if (name == "capsule-hull")
+        return "a capsule of radius 1/2 lying across the top of a cylinder's 12-sided polygon hull, eps above it";
+    if (name == "far-spheres")
+        return "two spheres of radius 1/2 near (10^6, -10^6, 10^6), their centres 1 - eps apart: eps deep";
+    if (name == "margin-hulls") return "a cube on a cube, each with a radius (a margin), eps apart once inflated";
+    if (name == "sphere-box-edge") return "a sphere beside a box's top edge, eps from it";
     throw InputError("--family: unknown family " + in_quotes(name));
 }
 
@@ -214,6 +236,57 @@ ExactScene make_family_scene(const std::string& name, const Q& eps, Rng& g) {
         }
         for (Vec3q& v : s.P[1].points)
             for (int k = 0; k < 3; ++k) v[k] += eps * n[k];
+    } else if (name == "capsule-hull") {
+        // A prism over 12 rational points of the unit circle (its inradius cos(atan(3/4)/2) > 0.94),
+        // z in [-1, 1]; a capsule of radius 1/2 along x, its axis 1/2 + ε above the top face and
+        // within the face's inscribed circle: ε apart at (1, 1).
+        const Q a = qc(3, 5), b = qc(4, 5);
+        for (const auto& [x, y] : std::vector<std::pair<Q, Q>>{{Q(1), Q(0)},
+                                                               {b, a},
+                                                               {a, b},
+                                                               {Q(0), Q(1)},
+                                                               {-a, b},
+                                                               {-b, a},
+                                                               {Q(-1), Q(0)},
+                                                               {-b, -a},
+                                                               {-a, -b},
+                                                               {Q(0), Q(-1)},
+                                                               {a, -b},
+                                                               {b, -a}})
+            for (int z : {-1, 1}) s.P[0].points.push_back({x, y, Q(z)});
+        const Q x0 = qc(g.uniform(-2, 2), 10), y0 = qc(g.uniform(-2, 2), 10), z0 = Q(1) + qc(1, 2) + eps;
+        s.P[1].points = {{x0 - qc(1, 2), y0, z0}, {x0 + qc(1, 2), y0, z0}};
+        s.P[1].radius = qc(1, 2);
+        s.P[1].radius_given = true;
+    } else if (name == "far-spheres") {
+        // Centres 1 − ε apart along a rational unit vector, radii 1/2: ε deep at (1, 1).
+        const Vec3q o{Q(g.uniform(1, 9) * 1000000), Q(-g.uniform(1, 9) * 1000000), Q(g.uniform(1, 9) * 1000000)};
+        const std::vector<Vec3q> units{
+            {qc(2, 3), qc(1, 3), qc(2, 3)}, {qc(3, 5), qc(4, 5), Q(0)}, {qc(1, 3), qc(-2, 3), qc(2, 3)}};
+        const Vec3q& u = units[static_cast<size_t>(g.uniform(0, 2))];
+        s.P[0].points = {o};
+        s.P[1].points = {{o[0] + (1 - eps) * u[0], o[1] + (1 - eps) * u[1], o[2] + (1 - eps) * u[2]}};
+        s.P[0].radius = s.P[1].radius = qc(1, 2);
+        s.P[0].radius_given = s.P[1].radius_given = true;
+    } else if (name == "margin-hulls") {
+        // Cubes of half side 1 with radii m1, m2; the upper one's bottom face m1 + m2 + ε above the
+        // lower one's top, shifted by at most 1/2 sideways: ε apart at (1, 1).
+        const Q m1 = qc(g.uniform(1, 4), 16), m2 = qc(g.uniform(1, 4), 16);
+        s.P[0].points = box(Q(1), Q(1), Q(1), v3(Q(0), Q(0), Q(0)));
+        s.P[1].points =
+            box(Q(1), Q(1), Q(1), v3(qc(g.uniform(-5, 5), 10), qc(g.uniform(-5, 5), 10), 2 + m1 + m2 + eps));
+        s.P[0].radius = m1;
+        s.P[1].radius = m2;
+        s.P[0].radius_given = s.P[1].radius_given = true;
+    } else if (name == "sphere-box-edge") {
+        // A box of half sides h; a sphere of radius r whose centre is (r + ε)(3/5, 0, 4/5) past the
+        // edge x = hx, z = hz, beside it (|y| < hy): its nearest point of the box is on that edge.
+        const Q hx = qc(g.uniform(5, 10), 10), hy = qc(g.uniform(5, 10), 10), hz = qc(g.uniform(5, 10), 10);
+        const Q r = qc(g.uniform(1, 4), 8), y = hy * qc(g.uniform(-9, 9), 10);
+        s.P[0].points = box(hx, hy, hz, v3(Q(0), Q(0), Q(0)));
+        s.P[1].points = {{hx + (r + eps) * qc(3, 5), y, hz + (r + eps) * qc(4, 5)}};
+        s.P[1].radius = r;
+        s.P[1].radius_given = true;
     } else {
         family_description(name);  // throws for unknown names
     }
