@@ -394,7 +394,7 @@ BOOST_AUTO_TEST_CASE(filters_skip_only_what_they_prove) {
         }
         const Q r1 = q(rho_of(p), 4), r2 = q(4 + p % 5, 4);
         // Every pair, exactly: the union's state and the least √E − R (compared exactly).
-        int state = -1, ba = -1, bb = -1;
+        int state = -1, ba = -1;
         RoundedParts::PairState best;
         for (int a = 0; a < static_cast<int>(J.parts(0)); ++a) {
             RoundedParts::PairState st = J.pair_state(a, 0, r1, r2, pose);
@@ -404,7 +404,7 @@ BOOST_AUTO_TEST_CASE(filters_skip_only_what_they_prove) {
             if (st.verdict != scalecert::Verdict::Separated) continue;
             if (ba < 0 ||
                 sign_two_sqrts(best.R - st.R, Q(1), st.hulls.distance.squared, Q(-1), best.hulls.distance.squared) < 0)
-                ba = a, bb = 0, best = std::move(st);
+                ba = a, best = std::move(st);
         }
         const scalecert::Verdict v = state < 0    ? scalecert::Verdict::Separated
                                      : state == 0 ? scalecert::Verdict::Touching

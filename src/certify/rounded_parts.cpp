@@ -1,6 +1,7 @@
 #include "certify/rounded_parts.hpp"
 
 #include "certify/judgements.hpp"
+#include "compound/region.hpp"
 #include "geometry/measures.hpp"
 
 #include <algorithm>
@@ -18,6 +19,10 @@ double dbl(const Q& q) { return to_double_rn(q); }
 }  // namespace
 
 RoundedParts::RoundedParts(const ExactScene& sc, const std::string& name) : sc_(sc), name_(name) {
+    const size_t m = std::max<size_t>(1, sc.P[0].parts.size()), n = std::max<size_t>(1, sc.P[1].parts.size());
+    if (m * n > kMaxPartPairs)
+        throw InputError(name + ": " + std::to_string(m) + " x " + std::to_string(n) + " part pairs, more than " +
+                         std::to_string(kMaxPartPairs) + " (the limit)");
     for (int i = 0; i < 2; ++i) {
         const PolyInput& in = sc_.P[i];
         const std::string which = i == 0 ? "P1" : "P2";
@@ -189,6 +194,14 @@ RoundedParts::Bounds RoundedParts::support_bounds(const Frame& F, int a, int b, 
     return out;
 }
 
+bool RoundedParts::scan(const Frame& F, int a, int b) {
+    const size_t n = F.off[0][static_cast<size_t>(a) + 1] - F.off[0][static_cast<size_t>(a)] +
+                     F.off[1][static_cast<size_t>(b) + 1] - F.off[1][static_cast<size_t>(b)];
+    if (scanned_ + n > kMaxScannedPoints) return false;
+    scanned_ += n;
+    return true;
+}
+
 void RoundedParts::count_exact() {
     ++counts_.exact;
     if (++exact_in_call_ > kMaxExactPartPairs)
@@ -211,6 +224,7 @@ RoundedParts::PairState RoundedParts::pair_state(int a, int b, const Q& rho1, co
 
 RoundedParts::Decided RoundedParts::verdict(const Q& rho1, const Q& rho2, const Poses& pose) {
     exact_in_call_ = 0;
+    scanned_ = 0;
     const Frame F = frame(pose);
     const double r1 = dbl(rho1), r2 = dbl(rho2);
     // The pairs the doubles cannot part, the deepest by their supports first (the likeliest to
@@ -226,7 +240,7 @@ RoundedParts::Decided RoundedParts::verdict(const Q& rho1, const Q& rho2, const 
                 ++counts_.boxed;
                 continue;
             }
-            const double lower = support_bounds(F, a, b, r1, r2).lower;
+            const double lower = scan(F, a, b) ? support_bounds(F, a, b, r1, r2).lower : -INFINITY;
             if (lower > 0) {
                 ++counts_.boxed;
                 continue;
@@ -248,6 +262,7 @@ RoundedParts::Decided RoundedParts::verdict(const Q& rho1, const Q& rho2, const 
 
 RoundedParts::Nearest RoundedParts::nearest(const Q& rho1, const Q& rho2, const Poses& pose) {
     exact_in_call_ = 0;
+    scanned_ = 0;
     const Frame F = frame(pose);
     const double r1 = dbl(rho1), r2 = dbl(rho2);
     // The pairs by the doubles' lower bound on their distance, nearest first.
@@ -274,7 +289,7 @@ RoundedParts::Nearest RoundedParts::nearest(const Q& rho1, const Q& rho2, const 
             counts_.boxed += static_cast<long>(cand.size() - k);
             break;
         }
-        const Bounds s = support_bounds(F, c.a, c.b, r1, r2);
+        const Bounds s = scan(F, c.a, c.b) ? support_bounds(F, c.a, c.b, r1, r2) : Bounds{};
         // Below 0 some pair meets: then the pairs apart (lower bound > 0) are not needed.
         upper = std::min(upper, std::max(s.upper, 0.0));
         open.push_back({std::max(c.gap, std::isnan(s.lower) ? -INFINITY : s.lower), c.a, c.b});

@@ -103,6 +103,11 @@ class RoundedParts {
     };
     static Bounds support_bounds(const Frame& F, int a, int b, double r1, double r2);
     void count_exact();  // InputError past kMaxExactPartPairs in one call
+    // Whether the supports of parts a and b may be scanned: at most kMaxScannedPoints points in one
+    // judgement (past it, pairs the boxes cannot part are judged exactly).
+    static constexpr size_t kMaxScannedPoints = 50000000;
+    size_t scanned_ = 0;
+    bool scan(const Frame& F, int a, int b);
 };
 
 // The rules on objects made of parts with radii: verdict, separating_plane, witness_point and
