@@ -159,6 +159,41 @@ BOOST_AUTO_TEST_CASE(objects_with_a_radius_from_code) {
                }).find("P1: radius: a radius is >= 0") != std::string::npos);
 }
 
+// A sphere set from code (CLAIMS.md, "Parts with radii"): balls of radius 1/2 at (0, 0, 0) and
+// (0, 0, 2) (seed (0, 0, 1)) against the box [3, 5] × [−1, 1] × [−1, 3] about (4, 0, 1). The
+// box's y and z ranges hold the balls' centres at every scaling here, so along x each ball
+// reaches ρ1/2 and the box starts at 4 − ρ2: 5/2 apart at (1, 1), touching at (2, 3).
+BOOST_AUTO_TEST_CASE(sphere_sets_from_code) {
+    std::vector<scalecert::Point> cube;
+    for (int k = 0; k < 8; ++k) cube.push_back({R(k & 1 ? 5 : 3), R(k & 2 ? 1 : -1), R(k & 4 ? 3 : -1)});
+    const scalecert::Scene s = scalecert::Scene::from_parts(
+        {{{R(0), R(0), R(0)}}, {{R(0), R(0), R(2)}}}, {cube}, {}, {}, scalecert::Point{R(0), R(0), R(1)},
+        scalecert::Point{R(4), R(0), R(1)}, {std::vector<scalecert::Rational>{R(1, 2), R(1, 2)}, {}});
+    BOOST_TEST(s.part_radius(0, 1) == R(1, 2));
+    BOOST_TEST(s.part_radius(1, 0) == R(0));
+    const scalecert::Analysis a(s);
+    BOOST_TEST((a.verdict(R(1), R(1)) == scalecert::Verdict::Separated));
+    BOOST_TEST((a.verdict(R(2), R(3)) == scalecert::Verdict::Touching));
+    scalecert::Claim d;
+    d.kind = scalecert::ClaimKind::Distance;
+    d.value = R(5, 2);
+    scalecert::Claim sd;
+    sd.kind = scalecert::ClaimKind::SignedDistance;
+    sd.value = R(5, 2);
+    sd.parts = std::array<int, 2>{1, 0};
+    const scalecert::Judgements j = a.certify({d, sd}, {});
+    BOOST_TEST(j.wrong == 0);
+    sd.parts.reset();  // the objects' signed distance is not one of convex objects
+    BOOST_TEST(error_of([&] { a.certify({sd}, {}); }).find("certify: claims[0].parts: missing") != std::string::npos);
+    // Without radii, a signed distance on parts is refused in one line.
+    const scalecert::Analysis plain(scalecert::Scene::from_parts({cube}, {box(0, 0, 6, 2, 2, 8)}, {}, {}));
+    BOOST_TEST(error_of([&] { plain.certify({sd}, {}); }).find("claims[0].kind: signed_distance") != std::string::npos);
+    BOOST_TEST(error_of([&] {
+                   scalecert::Scene::from_parts({{{R(0), R(0), R(0)}}}, {cube}, {}, {}, {}, {},
+                                                {std::vector<scalecert::Rational>{R(1), R(2)}, {}});
+               }).find("2 radii for 1 parts") != std::string::npos);
+}
+
 BOOST_AUTO_TEST_CASE(scenes_in_code_are_checked_like_scene_files) {
     BOOST_TEST(error_of([] { stacked(R(3), R(1, 2)); }) == "scene: I1: lo > hi");
     BOOST_TEST(error_of([] { stacked(R(0), R(1)); }) == "scene: I1: lo must be > 0 (got '0')");

@@ -1108,3 +1108,28 @@ def test_objects_with_a_radius(tmp_path):
     # The scene file keeps the radii; read back, it is the same scene.
     (tmp_path / "spheres.json").write_text(s.json())
     assert scalecert.Scene.load(str(tmp_path / "spheres.json")).radii() == (F(1), F(2))
+
+
+def test_sphere_sets(tmp_path):
+    # CLAIMS.md, "Parts with radii": spheres of radius 1 at 0 and 1/2 at (3, 0, 0) (seed 0) against
+    # the box [5, 7] x [-1, 1]^2 (seed its centre): along x the second sphere reaches 7ρ1/2 and the
+    # box starts at 6 − ρ2, so they touch at (10/7, 1) and are 3/2 apart at (1, 1).
+    box = [[x, y, z] for x in (5, 7) for y in (-1, 1) for z in (-1, 1)]
+    s = scalecert.Scene.sphere_set(np.array([[0.0, 0, 0], [3, 0, 0]]), np.array([1.0, 0.5]), box,
+                                   seeds=([0, 0, 0], [6, 0, 0]))
+    assert s.part_radii(0) == [F(1), F(1, 2)]
+    assert s.part_radii(1) == [F(0)]
+    assert s.verdict(1, 1) == scalecert.Verdict.Separated
+    assert s.verdict(F(10, 7), 1) == scalecert.Verdict.Touching
+    assert s.query(2, 1)["certificate"] is None  # no certificate on parts with radii yet
+    r = s.certify("distance", [1.0, 1.0], [1.0, 1.0], value=[1.5, 4.0])
+    assert list(r["right"]) == [True, False]
+    # The same scene from parts, a radius a part; its file reads back the same.
+    t = scalecert.Scene.from_parts([[[0, 0, 0]], [[3, 0, 0]]], [box], seeds=([0, 0, 0], [6, 0, 0]),
+                                   radii=([1, "1/2"], None))
+    (tmp_path / "set.json").write_text(t.json())
+    assert scalecert.Scene.load(str(tmp_path / "set.json")).part_radii(0) == [F(1), F(1, 2)]
+    with pytest.raises(scalecert.InputError, match="2 radii for 1 parts"):
+        scalecert.Scene.sphere_set([[0, 0, 0]], [1, 2], box)
+    with pytest.raises(scalecert.InputError, match="fewer than 4 vertices \\(1\\) and no radius > 0"):
+        scalecert.Scene.sphere_set([[0, 0, 0]], [0], box)
