@@ -427,3 +427,32 @@ BOOST_AUTO_TEST_CASE(filters_skip_only_what_they_prove) {
     BOOST_TEST(met > 5);
     BOOST_TEST(apart > 5);
 }
+
+// Golden data on the hand case (a_sphere_set_against_a_box_by_hand): the set crosses ρ1 × I2
+// where 7ρ1/2 = 6 − ρ2, a line here (the second sphere against the box's face), so every sample's
+// touching pair (found exactly at these dyadic ρ1) is (ρ1, 6 − 7ρ1/2), its pair (1, 0).
+BOOST_AUTO_TEST_CASE(golden_samples_on_parts) {
+    Opened k = open(R"({"P1": {"spheres": {"centres": [[0,0,0],[3,0,0]], "radii": [1, "1/2"]}, "seed": [0,0,0]},
+                        "P2": {"box": [1,1,1], "pose": [[1,0,0,6],[0,1,0,0],[0,0,1,0]]}, "I1": [1, 2], "I2": [1, 2]})");
+    const GoldenAnswers g = k.engine->golden(GoldenPoints{9, {4}});
+    int crossing = 0;
+    for (const Json& s : g.curve["samples"]) {
+        const Q x(s["rho1"].get<std::string>());
+        const Q y = 6 - Q(7, 2) * x;  // the touching ρ2
+        if (!s["crosses"].get<bool>()) {
+            BOOST_TEST((y < 1 || y > 2));
+            continue;
+        }
+        ++crossing;
+        BOOST_TEST(Q(s["touching"].get<std::string>()) == y);
+    }
+    BOOST_TEST(crossing == 2);  // ρ1 = 5/4 and 11/8 among 1, 9/8, ..., 2
+    for (const Json& q : g.queries) {
+        BOOST_TEST(q["pair_signed_distance"]["pair"] == Json::array({1, 0}));
+        const Q x(q["rho1"].get<std::string>()), y(q["rho2"].get<std::string>());
+        const Q gap = 6 - y - Q(7, 2) * x;  // the pair's signed distance, by hand
+        BOOST_TEST(q["verdict_at_doubles"] == (sgn(gap) > 0    ? "separated"
+                                               : sgn(gap) == 0 ? "touching"
+                                                               : "overlapping"));
+    }
+}

@@ -432,25 +432,35 @@ std::string fraction_columns(const Q& q) { return q.get_num().get_str() + "," + 
 }  // namespace
 
 GoldenAnswers rounded_golden(const ExactScene& sc, const RoundedPoints& S, const GoldenPoints& points) {
-    validate(points);
     const std::pair<int, Vec3z> span = S.difference_span(S);  // (a lambda may not capture a binding)
     auto state = [&](const Q& r1, const Q& r2) {
         const MeasuredDepth md = hull_measure(S, span.first, span.second, r1, r2);
         const Q R = r1 * sc.P[0].radius + r2 * sc.P[1].radius;
         const auto [s, E] = hull_signed(md);
-        return std::tuple<Verdict, int, Q, Q>{rounded_verdict(md, R), s, E, R};
+        return GoldenValue{rounded_verdict(md, R), s, E, R};
     };
+    return sampled_golden(
+        sc, [&](const Q& r1, const Q& r2) { return state(r1, r2).verdict; }, state, points);
+}
+
+GoldenAnswers sampled_golden(const ExactScene& sc, const std::function<Verdict(const Q&, const Q&)>& verdict,
+                             const std::function<GoldenValue(const Q&, const Q&)>& state, const GoldenPoints& points) {
+    validate(points);
+    const bool parts = sc.made_of_parts();
+    const char* value_key = parts ? "pair_signed_distance" : "signed_distance";
     const Q &lo1 = sc.lo[0], &hi1 = sc.hi[0], &lo2 = sc.lo[1], &hi2 = sc.hi[1];
     Json samples = Json::array(), queries = Json::array();
-    std::string csv = "rho1,rho2,where,verdict_at_doubles,signed_distance\n";
-    std::string rcsv =
-        "rho1_num,rho1_den,rho2_num,rho2_den,where,verdict,hulls_sign,hulls_squared_num,hulls_squared_den,"
-        "radius_sum_num,radius_sum_den\n";
+    std::string csv =
+        std::string("rho1,rho2,where,verdict_at_doubles,") + value_key + (parts ? ",part1,part2" : "") + "\n";
+    std::string rcsv = std::string(
+                           "rho1_num,rho1_den,rho2_num,rho2_den,where,verdict,hulls_sign,hulls_squared_num,"
+                           "hulls_squared_den,radius_sum_num,radius_sum_den") +
+                       (parts ? ",part1,part2" : "") + "\n";
     const int V = lo1 == hi1 ? 1 : points.verticals;
     for (int k = 0; k < V; ++k) {
         const Q x = V == 1 ? lo1 : Q(lo1 + (hi1 - lo1) * k / (V - 1));
         Json sample{{"rho1", to_exact_string(x)}};
-        const Verdict at_lo = std::get<0>(state(x, lo2)), at_hi = std::get<0>(state(x, hi2));
+        const Verdict at_lo = verdict(x, lo2), at_hi = verdict(x, hi2);
         if (at_lo != Verdict::Separated || at_hi == Verdict::Separated) {
             // The set does not cross ρ1 × I2 inside it: say which side of it I2 lies.
             sample["crosses"] = false;
@@ -464,7 +474,7 @@ GoldenAnswers rounded_golden(const ExactScene& sc, const RoundedPoints& S, const
         std::optional<Q> on;
         for (int step = 0; step < 60 && !on; ++step) {
             const Q m = (a + b) / 2;
-            const Verdict v = std::get<0>(state(x, m));
+            const Verdict v = verdict(x, m);
             if (v == Verdict::Touching) on = m;
             (v == Verdict::Separated ? a : b) = m;
         }
@@ -489,7 +499,10 @@ GoldenAnswers rounded_golden(const ExactScene& sc, const RoundedPoints& S, const
             if (qx < lo1 || qx > hi1 || qy < lo2 || qy > hi2) continue;
             const double dx = double_in(qx, lo1, hi1), dy = double_in(qy, lo2, hi2);
             const Q ex = exact_from_double(dx), ey = exact_from_double(dy);
-            const auto [v, s, E, R] = state(ex, ey);
+            const GoldenValue g = state(ex, ey);
+            const Verdict v = g.verdict;
+            const int s = g.s;
+            const Q &E = g.E, &R = g.R;
             const double value = s == 0 || sgn(E) == 0 ? to_double_rn(Q(-R))
                                  : s > 0               ? sqrt_minus_rn(E, R)
                                                        : -sqrt_minus_rn(E, Q(-R));
@@ -500,23 +513,25 @@ GoldenAnswers rounded_golden(const ExactScene& sc, const RoundedPoints& S, const
                                    {"where", where},
                                    {"near", to_exact_string(x)},
                                    {"verdict_at_doubles", verdict_name(v)},
-                                   {"signed_distance", Json{{"hulls_sign", s},
-                                                            {"hulls_squared", to_exact_string(E)},
-                                                            {"radius_sum", to_exact_string(R)},
-                                                            {"value_double", value}}}});
+                                   {value_key, Json{{"hulls_sign", s},
+                                                    {"hulls_squared", to_exact_string(E)},
+                                                    {"radius_sum", to_exact_string(R)},
+                                                    {"value_double", value}}}});
+            const std::string pair_columns = parts ? "," + std::to_string(g.a) + "," + std::to_string(g.b) : "";
+            if (parts) queries.back()[value_key]["pair"] = Json::array({g.a, g.b});
             char buf[160];
             std::snprintf(buf, sizeof buf, "%.17g,%.17g,", dx, dy);
             char val[40];
             std::snprintf(val, sizeof val, "%.17g", value);
-            csv += std::string(buf) + where + "," + verdict_name(v) + "," + val + "\n";
+            csv += std::string(buf) + where + "," + verdict_name(v) + "," + val + pair_columns + "\n";
             rcsv += fraction_columns(ex) + "," + fraction_columns(ey) + "," + where + "," + verdict_name(v) + "," +
-                    std::to_string(s) + "," + fraction_columns(E) + "," + fraction_columns(R) + "\n";
+                    std::to_string(s) + "," + fraction_columns(E) + "," + fraction_columns(R) + pair_columns + "\n";
         }
         samples.push_back(std::move(sample));
     }
     Json doc{{"format", "scalecert-2"},
              {"kind", "touching_samples"},
-             {"scene", scene_json(sc)},
+             {"scene", scene_file_json(sc)},
              {"samples", std::move(samples)}};
     return {std::move(doc), std::move(queries), std::move(csv), std::move(rcsv)};
 }

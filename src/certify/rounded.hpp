@@ -10,6 +10,7 @@
 #include "geometry/polyhedron.hpp"
 #include "io/scene.hpp"
 
+#include <functional>
 #include <memory>
 #include <optional>
 
@@ -127,6 +128,17 @@ class RoundedRules final : public ClaimRules {
 // rounded to doubles, each with its exact verdict and signed distance s·√E − R (the hulls' s, E
 // and R exactly, the value as a rounded double). The document is the samples'.
 GoldenAnswers rounded_golden(const ExactScene& sc, const RoundedPoints& S, const GoldenPoints& points);
+// The same sampling from any exact verdict and value: on objects made of parts with radii
+// (rounded_parts.hpp) the value is a pair's signed distance (`pair_signed_distance`, with the pair):
+// the nearest pair's when the objects are apart (their distance), else the pair deciding the verdict.
+struct GoldenValue {
+    Verdict verdict = Verdict::Separated;
+    int s = 0;
+    Q E, R;
+    int a = -1, b = -1;  // the pair, on parts
+};
+GoldenAnswers sampled_golden(const ExactScene& sc, const std::function<Verdict(const Q&, const Q&)>& verdict,
+                             const std::function<GoldenValue(const Q&, const Q&)>& state, const GoldenPoints& points);
 
 // What the claim kinds of the curve say on objects with a radius (refusal's words).
 extern const char* const kRoundedKinds;

@@ -239,9 +239,9 @@ class RoundedEngine final : public SceneEngine {
     std::shared_ptr<const RoundedPoints> points_;
 };
 
-// Objects made of parts with radii (a convex object beside them is one part): verdicts and claims
-// at any pair (rounded_parts.hpp); no curve, region, golden data or certificate yet, each refused
-// in one line.
+// Objects made of parts with radii (a convex object beside them is one part): verdicts, claims and
+// golden samples at any pair (rounded_parts.hpp); no curve, region or certificate yet, each
+// refused in one line.
 class RoundedPartsEngine final : public SceneEngine {
   public:
     explicit RoundedPartsEngine(SceneSource src) : exact_(std::move(src.exact)), name_(std::move(src.name)) {}
@@ -279,7 +279,26 @@ class RoundedPartsEngine final : public SceneEngine {
         judge();
         return std::make_unique<RoundedPartsRules>(judge_, tolerance);
     }
-    GoldenAnswers golden(const GoldenPoints&) override { throw InputError(refused("golden data")); }
+    GoldenAnswers golden(const GoldenPoints& points) override {
+        RoundedParts& J = judge();
+        return sampled_golden(
+            *exact_, [&J](const Q& r1, const Q& r2) { return J.verdict(r1, r2).verdict; },
+            [&J](const Q& r1, const Q& r2) {
+                // Apart: the nearest pair; else the pair deciding the verdict (its signed distance <= 0).
+                const RoundedParts::Decided d = J.verdict(r1, r2);
+                int a = d.a, b = d.b;
+                RoundedParts::PairState st;
+                if (d.verdict == Verdict::Separated) {
+                    RoundedParts::Nearest n = J.nearest(r1, r2);
+                    a = n.a, b = n.b, st = std::move(n.state);
+                } else {
+                    st = J.pair_state(a, b, r1, r2);
+                }
+                const auto [s, E] = hull_signed(st.hulls);
+                return GoldenValue{d.verdict, s, E, st.R, a, b};
+            },
+            points);
+    }
     CompoundSession& region() override { throw InputError(refused("the region")); }
     Session& convex_session(const std::string&) override {
         throw InputError(refused("the touching curve (with its segments and the grid search)"));
