@@ -9,6 +9,7 @@
 #include "json.hpp"
 #include "numbers.hpp"
 #include "parts.hpp"
+#include "rounded.hpp"
 
 #include <optional>
 
@@ -226,9 +227,15 @@ void check_compound_judgements(Context& cx, const J& c) {
     const CompoundScene cs = read_compound_scene(cx, at(c, "scene"));
     const Rules R = read_rules(cx, c);
     const J& js = at(c, "judgements");
+    // Parts with radii (rounded.cpp): each pair judged as two objects with a radius.
     const size_t rights =
-        judge_all(cx, js, {"verdict", "separating_plane", "witness_point", "distance", "penetration_depth"},
-                  [&](const Judgement& j) { return judge(cx, cs, R, j); });
+        cs.rounded()
+            ? judge_all(
+                  cx, js,
+                  {"verdict", "separating_plane", "witness_point", "distance", "penetration_depth", "signed_distance"},
+                  [&](const Judgement& j) { return judge_rounded_parts(cx, cs, R, j); })
+            : judge_all(cx, js, {"verdict", "separating_plane", "witness_point", "distance", "penetration_depth"},
+                        [&](const Judgement& j) { return judge(cx, cs, R, j); });
     cx.summary = "; compound judgements: " + judged(rights, js.size(), R) + "; " + std::to_string(cs.parts(0)) + " x " +
                  std::to_string(cs.parts(1)) + " part pairs";
 }

@@ -21,7 +21,19 @@ CompoundScene read_compound_scene(Context& cx, const J& sj) {
         auto obj = std::make_shared<CompoundObject>();
         for (size_t k = 0; k < parts.size(); ++k) {
             const std::string wk = w + ".parts[" + std::to_string(k) + "]";
-            shape(cx, parts[k], wk, {"vertices"});
+            shape(cx, parts[k], wk, {"vertices"}, {"radius"});
+            // Radii: on every part of both objects, or on none.
+            const bool first = i == 0 && k == 0;
+            if (first && parts[k].contains("radius")) cs.r[0].reserve(parts.size());
+            const bool rounded = first ? parts[k].contains("radius") : !cs.r[0].empty();
+            cx.claim(parts[k].contains("radius") == rounded,
+                     wk + (rounded ? " has a radius (every part has one when any has)"
+                                   : " has no radius (no part has one)"));
+            if (rounded) {
+                const Q r = num(cx, at(parts[k], "radius"), wk + ".radius");
+                cx.claim(sgn(r) >= 0, wk + ".radius is >= 0");
+                cs.r[i].push_back(r);
+            }
             const J& vs = at(parts[k], "vertices");
             cx.claim(Vertices::is_list(cx, vs) && Vertices::length(cx, vs) > 0, wk + ".vertices is a nonempty list");
             Vertices v(cx, vs, wk + ".vertices");
@@ -33,9 +45,10 @@ CompoundScene read_compound_scene(Context& cx, const J& sj) {
     }
     read_ranges(cx, cs.lo, cs.hi, sj);
     // Each part spans 3 dimensions, as scalecert requires of its input (the claims would hold for
-    // flat parts too: the file states a scene the engine reads).
+    // flat parts too: the file states a scene the engine reads); with a radius > 0 it may be flat.
     for (int i = 0; i < 2; ++i)
         for (size_t k = 0; k < cs.parts(i); ++k) {
+            if (cs.rounded() && sgn(cs.r[i][k]) > 0) continue;
             std::vector<int> idx(cs.part(i, k).size());
             std::iota(idx.begin(), idx.end(), 0);
             cx.claim(affine_dim(cx, cs.part(i, k), idx) == 3,
@@ -52,7 +65,9 @@ Scene CompoundScene::pair(Context& cx, size_t a, size_t b) const {
         sc.s[i] = s[i];
         sc.lo[i] = lo[i];
         sc.hi[i] = hi[i];
+        if (rounded()) sc.r[i] = r[i][k[i]];
     }
+    sc.rounded = rounded();
     sc.prepare(cx);
     return sc;
 }
@@ -129,6 +144,7 @@ Q CompoundScene::top(Context& cx, int i, const Z3& u, size_t first, size_t last)
 CompoundScene CompoundScene::posed(Context& cx, const std::array<std::optional<Pose>, 2>& pose) const {
     CompoundScene out;
     for (int i = 0; i < 2; ++i) {
+        out.r[i] = r[i];
         out.s[i] = posed_point(s[i], pose[i]);
         out.lo[i] = lo[i];
         out.hi[i] = hi[i];

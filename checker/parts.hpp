@@ -41,10 +41,14 @@ struct CompoundScene {
     V3 s[2];
     Q lo[2], hi[2];
     std::shared_ptr<const CompoundObject> obj[2];
+    // Parts with radii (FORMAT.md, "Parts with radii"): every part of both objects has one (>= 0),
+    // and part k of object i is every point within r[i][k] of its hull. Empty without radii.
+    std::vector<Q> r[2];
+    bool rounded() const { return !r[0].empty(); }
     size_t parts(int i) const { return obj[i]->part.size(); }
     const Scan& part(int i, size_t k) const { return *obj[i]->part[k]; }
-    // The convex scene of part a of P1 and part b of P2 (the objects' seeds, I1 and I2): one pair's
-    // claims are checked on it, over the pair's joint denominator (scene.hpp).
+    // The convex scene of part a of P1 and part b of P2 (the objects' seeds, I1 and I2; with radii,
+    // theirs): one pair's claims are checked on it, over the pair's joint denominator (scene.hpp).
     Scene pair(Context& cx, size_t a, size_t b) const;
     // max over the vertices v of parts first..last of object i of u·v, for an integer u: each
     // part's maximum u·X/D from its scan, compared across parts by cross-multiplication.

@@ -6,6 +6,7 @@
 #include "judging.hpp"
 #include "json.hpp"
 #include "numbers.hpp"
+#include "parts.hpp"
 #include "scene.hpp"
 
 #include <optional>
@@ -322,5 +323,251 @@ bool judge_rounded(Context& cx, const Scene& sc, const Rules& R, const Judgement
     cx.spend_ops(8, 2 * (qsize(c) + qsize(R.abs) + qsize(Rr)) + qsize(h.E));
     if (key == "at_least") return sign_minus_sqrt(c - R.abs + Rr, h.s, h.E) <= 0;  // x >= c − abs
     return sign_minus_sqrt(c + R.abs + Rr, h.s, h.E) > 0;                          // x < c + abs
+}
+
+namespace {
+// Part k of object i at rho, its box widened by rho·r_k: lo[3], hi[3], from the part's vertices'
+// extremes along the axes (a scan each).
+std::array<Q, 6> widened_box(Context& cx, const CompoundScene& cs, int i, size_t k, const Q& rho) {
+    std::array<Q, 6> b;
+    const Q m = rho * cs.r[i][k];
+    for (int a = 0; a < 3; ++a) {
+        Z3 u{0, 0, 0};
+        u[static_cast<size_t>(a)] = 1;
+        const Q hi = cs.top(cx, i, u, k, k);
+        u[static_cast<size_t>(a)] = -1;
+        const Q lo = -cs.top(cx, i, u, k, k);
+        const Q& s = cs.s[i][static_cast<size_t>(a)];
+        cx.spend_ops(8, 4 * (qsize(s) + qsize(rho) + qsize(m)) + qsize(hi) + qsize(lo));
+        b[static_cast<size_t>(a)] = s + rho * (lo - s) - m;
+        b[static_cast<size_t>(3 + a)] = s + rho * (hi - s) + m;
+    }
+    return b;
+}
+std::array<std::vector<std::array<Q, 6>>, 2> all_widened(Context& cx, const CompoundScene& cs, const Q& r1,
+                                                         const Q& r2) {
+    std::array<std::vector<std::array<Q, 6>>, 2> out;
+    for (int i = 0; i < 2; ++i)
+        for (size_t k = 0; k < cs.parts(i); ++k)
+            out[static_cast<size_t>(i)].push_back(widened_box(cx, cs, i, k, i ? r2 : r1));
+    return out;
+}
+// The squared distance between two boxes (0 when they meet): a lower bound on their parts'.
+Q gap_sq(Context& cx, const std::array<Q, 6>& A, const std::array<Q, 6>& B) {
+    Q g = 0;
+    for (size_t a = 0; a < 3; ++a) {
+        const Q d = B[a] > A[3 + a] ? Q(B[a] - A[3 + a]) : A[a] > B[3 + a] ? Q(A[a] - B[3 + a]) : Q(0);
+        cx.spend_ops(4, 4 * qsize(d));
+        g += d * d;
+    }
+    return g;
+}
+// {"pair": [a, b], "hulls": a hulls proof}: the pair and its hulls' signed distance at (r1, r2).
+struct PairProof {
+    size_t a, b;
+    Signed h;
+    Q R;
+};
+PairProof pair_proof(Context& cx, const CompoundScene& cs, const J& e, const std::string& w, const Q& r1, const Q& r2) {
+    shape(cx, e, w, {"pair", "hulls"});
+    const J& pj = at(e, "pair");
+    cx.claim(pj.is_array() && pj.size() == 2, w + ".pair is [P1 part, P2 part]");
+    const size_t a = index(cx, pj[0], cs.parts(0), w + ".pair[0]"), b = index(cx, pj[1], cs.parts(1), w + ".pair[1]");
+    const Scene sc = cs.pair(cx, a, b);
+    const Signed h = hulls(cx, sc, at(e, "hulls"), w + ".hulls", r1, r2);
+    cx.spend_ops(3, 2 * (qsize(r1) + qsize(r2)) + qsize(cs.r[0][a]) + qsize(cs.r[1][b]));
+    return {a, b, h, r1 * cs.r[0][a] + r2 * cs.r[1][b]};
+}
+// Is x in object i at rho? {"part": k, "within" or "near": weights} (in part k, by in_object), or
+// {"out": [for each part, {"out": normal}]} (in none).
+int member_of(Context& cx, const CompoundScene& cs, int i, const Q& rho, const V3& x, const J& p, const std::string& w,
+              const Q& abs) {
+    cx.claim(p.is_object(), w + " is an object");
+    if (p.contains("out")) {
+        shape(cx, p, w, {"out"});
+        const J& o = at(p, "out");
+        cx.claim(o.is_array() && o.size() == cs.parts(i), w + ".out has an entry for each part");
+        for (size_t k = 0; k < o.size(); ++k) {
+            const std::string wk = w + ".out[" + std::to_string(k) + "]";
+            cx.claim(o[k].is_object() && o[k].contains("out"), wk + " is {\"out\": normal}");
+            in_object(cx, i ? cs.pair(cx, 0, k) : cs.pair(cx, k, 0), i, rho, x, o[k], wk, abs);
+        }
+        return -1;
+    }
+    cx.claim(p.contains("part"), w + " has part (or out)");
+    const size_t k = index(cx, at(p, "part"), cs.parts(i), w + ".part");
+    J rest = p;
+    rest.erase("part");
+    cx.claim(!rest.contains("out"), w + " is in a part (within or near), not out");
+    in_object(cx, i ? cs.pair(cx, 0, k) : cs.pair(cx, k, 0), i, rho, x, rest, w, abs);
+    return static_cast<int>(k);
+}
+}  // namespace
+
+bool judge_rounded_parts(Context& cx, const CompoundScene& cs, const Rules& R, const Judgement& j) {
+    const J &cl = j.claim, &pr = j.proof;
+    const std::string &kind = j.kind, &wc = j.wc, &wp = j.wp;
+    if (kind == "penetration_depth" || kind == "signed_distance") {
+        // One part pair: the rule of two objects with a radius on its two parts (at the claim's poses).
+        cx.claim(cl.contains("parts"), wc + ".parts is present (a contact of one part pair)");
+        const J& pj = at(cl, "parts");
+        cx.claim(pj.is_array() && pj.size() == 2, wc + ".parts is [P1 part, P2 part]");
+        const size_t a = index(cx, pj[0], cs.parts(0), wc + ".parts[0]"),
+                     b = index(cx, pj[1], cs.parts(1), wc + ".parts[1]");
+        J bare = cl;
+        bare.erase("parts");
+        return judge_rounded(cx, cs.pair(cx, a, b), R, Judgement{bare, pr, kind, j.where, wc, wp});
+    }
+    if (cl.contains("pose1") || cl.contains("pose2")) {
+        J bare;
+        const std::array<std::optional<Pose>, 2> pose = claim_poses(cx, cl, wc, bare);
+        return judge_rounded_parts(cx, cs.posed(cx, pose), R, Judgement{bare, pr, kind, j.where, wc, wp});
+    }
+    if (kind == "verdict")
+        shape(cx, cl, wc, {"kind", "rho1", "rho2", "verdict"});
+    else if (kind == "separating_plane")
+        shape(cx, cl, wc, {"kind", "rho1", "rho2", "normal"}, {"offset"});
+    else if (kind == "witness_point")
+        shape(cx, cl, wc, {"kind", "rho1", "rho2", "point"});
+    else if (kind == "distance")
+        shape(cx, cl, wc, {"kind", "rho1", "rho2", "value"}, {"closest"});
+    else
+        cx.claim(false, wc + ".kind is verdict, separating_plane, witness_point, distance, penetration_depth or "
+                             "signed_distance (the claims on parts with radii)");
+    const Q r1 = positive(cx, cl, "rho1", wc), r2 = positive(cx, cl, "rho2", wc);
+    if (kind == "verdict") {
+        // Overlapping: one pair that overlaps. Separated or touching: every pair whose widened boxes
+        // meet listed, none overlapping (touching: one touching); the others apart by their boxes.
+        shape(cx, pr, wp, {"verdict", "pairs"});
+        cx.claim(at(pr, "verdict").is_string() && at(cl, "verdict").is_string(), wp + ": verdicts are strings");
+        const std::string c = at(cl, "verdict").get<std::string>(), v = at(pr, "verdict").get<std::string>();
+        check_claimed_verdict(cx, c, wc);
+        cx.claim(v == "separated" || v == "touching" || v == "overlapping",
+                 wp + ".verdict is separated, touching or overlapping");
+        const J& ps = at(pr, "pairs");
+        cx.claim(ps.is_array() && (v != "overlapping" || ps.size() == 1),
+                 wp + ".pairs is a list (one pair overlapping)");
+        std::vector<bool> listed(cs.parts(0) * cs.parts(1), false);
+        bool touching = false;
+        for (size_t e = 0; e < ps.size(); ++e) {
+            const std::string w = wp + ".pairs[" + std::to_string(e) + "]";
+            const PairProof p = pair_proof(cx, cs, ps[e], w, r1, r2);
+            const size_t at_ab = p.a * cs.parts(1) + p.b;
+            cx.claim(!listed[at_ab], w + ".pair is listed once");
+            listed[at_ab] = true;
+            const std::string st = pair_state(cx, p.h, p.R);
+            if (v == "overlapping") {
+                cx.claim(st == "overlapping", w + ": the pair overlaps");
+                continue;
+            }
+            cx.claim(st != "overlapping", w + ": the pair does not overlap");
+            cx.claim(v == "touching" || st == "separated", w + ": the pair is separated");
+            touching = touching || st == "touching";
+        }
+        if (v == "touching") cx.claim(touching, wp + ".pairs has a touching pair");
+        if (v != "overlapping") {
+            const auto boxes = all_widened(cx, cs, r1, r2);
+            for (size_t a = 0; a < cs.parts(0); ++a)
+                for (size_t b = 0; b < cs.parts(1); ++b) {
+                    if (listed[a * cs.parts(1) + b]) continue;
+                    cx.spend_ops(6, 0);
+                    cx.claim(sgn(gap_sq(cx, boxes[0][a], boxes[1][b])) > 0,
+                             wp + ": parts " + std::to_string(a) + " and " + std::to_string(b) +
+                                 ", not listed, have widened boxes apart");
+                }
+        }
+        return verdict_right(c, v);
+    }
+    if (kind == "separating_plane") {
+        // Right for every pair: each part of P1 reaches c1_a + m_a·|n|, each of P2 starts at
+        // c2_b − m_b·|n| (c the hulls' extents), compared pair by pair.
+        cx.claim(pr.empty(), wp + " is empty (the checker computes the extents)");
+        const V3 n = nonzero_vector(cx, at(cl, "normal"), wc + ".normal");
+        std::optional<Q> o;
+        if (cl.contains("offset")) o = num(cx, at(cl, "offset"), wc + ".offset");
+        const Q N = dot(n, n);
+        std::vector<std::array<Q, 2>> top(cs.parts(0)), bottom(cs.parts(1));  // {extent, rho·r}
+        for (size_t a = 0; a < cs.parts(0); ++a) top[a] = {reach(cx, cs.pair(cx, a, 0), 0, n, r1), r1 * cs.r[0][a]};
+        for (size_t b = 0; b < cs.parts(1); ++b)
+            bottom[b] = {reach_min(cx, cs.pair(cx, 0, b), 1, n, r2), r2 * cs.r[1][b]};
+        for (size_t a = 0; a < top.size(); ++a)
+            for (size_t b = 0; b < bottom.size(); ++b) {
+                const Q &c1 = top[a][0], &m1 = top[a][1], &c2 = bottom[b][0], &m2 = bottom[b][1];
+                cx.spend_ops(12, 2 * (qsize(c1) + qsize(c2) + qsize(N) + qsize(m1) + qsize(m2) + qsize(R.abs)) +
+                                     (o ? qsize(*o) : 0));
+                bool ok;
+                if (sgn(R.abs) == 0)
+                    ok = o ? sign_minus_sqrt(*o - c1, m1, N) > 0 && sign_minus_sqrt(c2 - *o, m2, N) > 0
+                           : sign_minus_sqrt(c2 - c1, m1 + m2, N) > 0;
+                else
+                    ok =
+                        o ? sign_minus_sqrt(c1 - *o, R.abs - m1, N) <= 0 && sign_minus_sqrt(*o - c2, R.abs - m2, N) <= 0
+                          : sign_minus_sqrt(c1 - c2, 2 * R.abs - m1 - m2, N) <= 0;
+                if (!ok) return false;
+            }
+        return true;
+    }
+    if (kind == "witness_point") {
+        shape(cx, pr, wp, {"P1", "P2"});
+        const V3 x = point(cx, at(cl, "point"), wc + ".point");
+        const int k1 = member_of(cx, cs, 0, r1, x, at(pr, "P1"), wp + ".P1", R.abs),
+                  k2 = member_of(cx, cs, 1, r2, x, at(pr, "P2"), wp + ".P2", R.abs);
+        return k1 >= 0 && k2 >= 0;
+    }
+    // distance: the nearest pair's √E − R, every other pair as far (by its hulls, or its widened
+    // boxes' distance √G); 0 when the pair meets.
+    const bool closest = cl.contains("closest");
+    const Q c = num(cx, at(cl, "value"), wc + ".value");
+    cx.claim(pr.is_object() && pr.contains("pair") && pr.contains("hulls"), wp + " has pair and hulls");
+    const PairProof best = pair_proof(cx, cs, J{{"pair", at(pr, "pair")}, {"hulls", at(pr, "hulls")}}, wp, r1, r2);
+    const bool apart = pair_state(cx, best.h, best.R) == "separated";
+    if (apart)
+        shape(cx, pr, wp, {"pair", "hulls", "others"}, {"closest"});
+    else
+        shape(cx, pr, wp, {"pair", "hulls"}, {"closest"});
+    cx.claim(closest == pr.contains("closest"), wp + ".closest is there exactly when the claim has closest points");
+    if (apart) {
+        const J& os = at(pr, "others");
+        cx.claim(os.is_array(), wp + ".others is a list");
+        std::vector<bool> listed(cs.parts(0) * cs.parts(1), false);
+        listed[best.a * cs.parts(1) + best.b] = true;
+        for (size_t e = 0; e < os.size(); ++e) {
+            const std::string w = wp + ".others[" + std::to_string(e) + "]";
+            const PairProof p = pair_proof(cx, cs, os[e], w, r1, r2);
+            cx.claim(!listed[p.a * cs.parts(1) + p.b], w + ".pair is listed once");
+            listed[p.a * cs.parts(1) + p.b] = true;
+            cx.spend_ops(30, 2 * (qsize(p.h.E) + qsize(best.h.E) + qsize(p.R) + qsize(best.R)));
+            // √E − R >= √E* − R*: (R* − R) + √E − √E* >= 0, the pair apart.
+            cx.claim(p.h.s > 0 && sign_two_roots(best.R - p.R, 1, p.h.E, -1, best.h.E) >= 0,
+                     w + ": the pair is at least as far apart as the nearest");
+        }
+        const auto boxes = all_widened(cx, cs, r1, r2);
+        for (size_t a = 0; a < cs.parts(0); ++a)
+            for (size_t b = 0; b < cs.parts(1); ++b) {
+                if (listed[a * cs.parts(1) + b]) continue;
+                const Q G = gap_sq(cx, boxes[0][a], boxes[1][b]);
+                cx.spend_ops(30, 2 * (qsize(G) + qsize(best.h.E) + qsize(best.R)));
+                cx.claim(sign_two_roots(best.R, 1, G, -1, best.h.E) >= 0,
+                         wp + ": parts " + std::to_string(a) + " and " + std::to_string(b) +
+                             ", not listed, have widened boxes at least the distance apart");
+            }
+    }
+    // A length: at abs = 0 one below 0 is wrong.
+    bool right = (sgn(R.abs) > 0 || sgn(c) >= 0) &&
+                 (apart ? R.close_value(cx, c, 1, best.h.E, -best.R) : R.close_value(cx, c, 0, Q(0), Q(0)));
+    if (!closest) return right;
+    const J& cp = at(cl, "closest");
+    cx.claim(cp.is_array() && cp.size() == 2, wc + ".closest is [point, point]");
+    const V3 a = point(cx, cp[0], wc + ".closest[0]"), b = point(cx, cp[1], wc + ".closest[1]");
+    const J& pc = at(pr, "closest");
+    shape(cx, pc, wp + ".closest", {"P1", "P2"});
+    const bool in1 = member_of(cx, cs, 0, r1, a, at(pc, "P1"), wp + ".closest.P1", R.abs) >= 0,
+               in2 = member_of(cx, cs, 1, r2, b, at(pc, "P2"), wp + ".closest.P2", R.abs) >= 0;
+    const Q k = 1 + R.tol;
+    cx.spend_ops(30, 2 * (vsize(a) + vsize(b) + qsize(best.h.E) + qsize(best.R) + qsize(k) + qsize(R.abs)));
+    const V3 ab = sub(b, a);
+    const Q x = dot(ab, ab);
+    const bool near = apart ? sign_two_roots(k * best.R - 2 * R.abs, 1, x, -k, best.h.E) <= 0 : x <= 4 * R.abs * R.abs;
+    return right && in1 && in2 && near;
 }
 }  // namespace scalecert_check

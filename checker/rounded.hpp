@@ -6,6 +6,7 @@
 
 namespace scalecert_check {
 struct Scene;
+struct CompoundScene;
 struct Rules;
 struct Judgement;
 
@@ -15,4 +16,7 @@ void check_rounded_seeds(Context& cx, const Scene& sc, const J& j);
 // One judgement of a verdict, separating_plane, witness_point, distance, penetration_depth or
 // signed_distance claim, at a pair or at poses: whether the claim is right by the rules.
 bool judge_rounded(Context& cx, const Scene& sc, const Rules& R, const Judgement& j);
+// One judgement on objects made of parts with radii (FORMAT.md, "Parts with radii"; CLAIMS.md,
+// "Parts with radii"): each pair of parts judged as two objects with a radius.
+bool judge_rounded_parts(Context& cx, const CompoundScene& cs, const Rules& R, const Judgement& j);
 }  // namespace scalecert_check

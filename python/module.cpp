@@ -503,10 +503,16 @@ py::dict certify_arrays(const CertifyFn& certify, const std::string& kind, const
         if (verdict.is_none()) throw scalecert::InputError("certify: verdict is required for kind 'verdict'");
         verdicts = py::isinstance<py::str>(verdict) ? py::list() : rows(verdict, "verdict", true);
     }
-    if ((cl && ck != ClaimKind::Distance) || ((dir || prs) && ck != ClaimKind::PenetrationDepth) ||
-        (nor && ck != ClaimKind::SeparatingPlane) || (off && ck != ClaimKind::SeparatingPlane) ||
-        (pts && ck != ClaimKind::WitnessPoint) || (values && !measure))
-        throw scalecert::InputError("certify: an argument that kind '" + kind + "' does not use");
+    // The first argument the kind does not use, named.
+    const char* unused = cl && ck != ClaimKind::Distance                                               ? "closest"
+                         : dir && ck != ClaimKind::PenetrationDepth                                    ? "direction"
+                         : prs && ck != ClaimKind::PenetrationDepth && ck != ClaimKind::SignedDistance ? "parts"
+                         : (nor || off) && ck != ClaimKind::SeparatingPlane ? (nor ? "normal" : "offset")
+                         : pts && ck != ClaimKind::WitnessPoint             ? "point"
+                         : values && !measure                               ? "value"
+                                                                            : nullptr;
+    if (unused)
+        throw scalecert::InputError(std::string("certify: ") + unused + ": kind '" + kind + "' does not use it");
     std::vector<scalecert::Claim> claims(n);
     for (size_t i = 0; i < n; ++i) {
         const std::string at = "[" + std::to_string(i) + "]";
@@ -910,17 +916,10 @@ void bind_scene_answers(py::class_<PyScene>& scene) {
                                  py::arg("point") = fractions(q.common->point));
                 else
                     d["common_point"] = py::none();
-                // Parts with radii have no certificate yet: None.
-                bool radii_on_parts = false;
-                if (!s.scene.convex())
-                    for (int i = 0; i < 2 && !radii_on_parts; ++i)
-                        for (size_t k = 0; k < s.scene.part_count(i) && !radii_on_parts; ++k)
-                            radii_on_parts = sgn(s.scene.part_radius(i, k)) > 0;
-                d["certificate"] = radii_on_parts ? py::object(py::none()) : json_loads(s.a().query_json(a, b));
+                d["certificate"] = json_loads(s.a().query_json(a, b));
                 return d;
             },
-            py::arg("rho1"), py::arg("rho2"),
-            "the exact verdict at (rho1, rho2) > 0, with its certificate (None on parts with radii)")
+            py::arg("rho1"), py::arg("rho2"), "the exact verdict at (rho1, rho2) > 0, with its certificate")
         .def(
             "classify",
             [](const PyScene& s, const py::handle& r1, const py::handle& r2) {

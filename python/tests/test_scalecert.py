@@ -1121,7 +1121,7 @@ def test_sphere_sets(tmp_path):
     assert s.part_radii(1) == [F(0)]
     assert s.verdict(1, 1) == scalecert.Verdict.Separated
     assert s.verdict(F(10, 7), 1) == scalecert.Verdict.Touching
-    assert s.query(2, 1)["certificate"] is None  # no certificate on parts with radii yet
+    assert s.query(2, 1)["certificate"]["kind"] == "compound_judgements"  # its one verdict, proved
     r = s.certify("distance", [1.0, 1.0], [1.0, 1.0], value=[1.5, 4.0])
     assert list(r["right"]) == [True, False]
     # The same scene from parts, a radius a part; its file reads back the same.
@@ -1133,3 +1133,16 @@ def test_sphere_sets(tmp_path):
         scalecert.Scene.sphere_set([[0, 0, 0]], [1, 2], box)
     with pytest.raises(scalecert.InputError, match="fewer than 4 vertices \\(1\\) and no radius > 0"):
         scalecert.Scene.sphere_set([[0, 0, 0]], [0], box)
+
+
+def test_sphere_set_signed_distances_of_part_pairs():
+    # The second sphere (radius 1/2 at (3, 0, 0)) is 3/2 from the box [5, 7] x [-1, 1]^2 at (1, 1),
+    # the first (radius 1 at 0) 4: a signed distance is one part pair's (CLAIMS.md, "Parts with radii").
+    box = [[x, y, z] for x in (5, 7) for y in (-1, 1) for z in (-1, 1)]
+    s = scalecert.Scene.sphere_set([[0, 0, 0], [3, 0, 0]], [1, 0.5], box, seeds=([0, 0, 0], [6, 0, 0]))
+    r = s.certify("signed_distance", [1.0, 1.0], [1.0, 1.0], value=[1.5, 4.0], parts=[[1, 0], [1, 0]])
+    assert list(r["right"]) == [True, False]
+    with pytest.raises(scalecert.InputError, match="parts: missing"):
+        s.certify("signed_distance", [1.0], [1.0], value=[1.5])
+    with pytest.raises(scalecert.InputError, match="certify: parts: kind 'distance' does not use it"):
+        s.certify("distance", [1.0], [1.0], value=[1.5], parts=[[1, 0]])

@@ -58,7 +58,9 @@ class ClaimReader {
             if (t)
                 fail("kind", in_quotes(kind) +
                                  " is a claim on two convex objects; on objects made of parts certify-fp " + "takes " +
-                                 kinds + " (the region and its growth set: scalecert region)");
+                                 kinds +
+                                 (rounded_ ? " (the region is not built for parts with radii)"
+                                           : " (the region and its growth set: scalecert region)"));
             fail("kind", "unknown kind " + in_quotes(kind) + " (on objects made of parts: " + kinds + ")");
         }
         if (!t)

@@ -217,10 +217,6 @@ std::optional<std::array<int, 2>> RoundedRules::part_pair(const std::optional<st
     return std::nullopt;
 }
 
-namespace {
-// Is x in object i at ρ (within m = ρr of its hull), or within abs of it (near)? Its proof:
-// {"within": weights} of the hull's point nearest x, {"near": the same}, or {"out": normal}, the
-// direction from that point to x.
 bool rounded_member(const PointSets& S, int i, const Q& rho, const Q& m, const Vec3q& x, const Tolerance& tol,
                     bool& near, Json* proof) {
     const ExactDistance d = point_to_body(S, i, rho, x);
@@ -238,8 +234,6 @@ bool rounded_member(const PointSets& S, int i, const Q& rho, const Q& m, const V
     return false;
 }
 
-}  // namespace
-
 bool rounded_plane_right(const Tolerance& tol, const Q& c1, const Q& c2, const Q& m1, const Q& m2, const Vec3q& n,
                          const std::optional<Q>& offset) {
     const Q N = n[0] * n[0] + n[1] * n[1] + n[2] * n[2];
@@ -251,13 +245,12 @@ bool rounded_plane_right(const Tolerance& tol, const Q& c1, const Q& c2, const Q
     return sign_minus_sqrt(c1 - *offset, tol.abs - m1, N) <= 0 && sign_minus_sqrt(*offset - c2, tol.abs - m2, N) <= 0;
 }
 
-namespace {
-// The proof of the hulls' signed distance: apart, their proved distance ({"distance": ...}, which
-// the verdict against R needs, not a separating plane alone); meeting, their depth proof.
-Json hulls_proof(const MeasuredDepth& md, const TypedClaim& c) {
-    return md.state == Verdict::Separated ? Json{{"distance", distance_proof(nullptr, md.distance, c.rho1, c.rho2)}}
-                                          : Json{{"depth", depth_proof(nullptr, md, c.rho1, c.rho2)}};
+Json rounded_hulls_proof(const MeasuredDepth& md, const Q& rho1, const Q& rho2) {
+    return md.state == Verdict::Separated ? Json{{"distance", distance_proof(nullptr, md.distance, rho1, rho2)}}
+                                          : Json{{"depth", depth_proof(nullptr, md, rho1, rho2)}};
 }
+namespace {
+Json hulls_proof(const MeasuredDepth& md, const TypedClaim& c) { return rounded_hulls_proof(md, c.rho1, c.rho2); }
 }  // namespace
 
 Judged RoundedRules::judge(const TypedClaim& c, Proof* proof) {

@@ -72,6 +72,16 @@ Verdict rounded_verdict(const MeasuredDepth& hulls, const Q& R);
 // The hulls' signed distance as s·√E (s = 1 apart, 0 touching, −1 overlapping).
 std::pair<int, Q> hull_signed(const MeasuredDepth& hulls);
 
+// Is x in object i of S at ρ (within m = ρr of its hull), or within tol.abs more (`near`)? Its
+// proof: {"within": weights} of the hull's point nearest x, {"near": the same}, or {"out":
+// normal}, the direction from that point to x.
+bool rounded_member(const PointSets& S, int i, const Q& rho, const Q& m, const Vec3q& x, const Tolerance& tol,
+                    bool& near, Json* proof);
+// The proof of a pair's hulls' signed distance: apart, their proved distance ({"distance": ...},
+// which the verdict against R needs, not a separating plane alone); meeting, their depth proof
+// ({"depth": ...}).
+Json rounded_hulls_proof(const MeasuredDepth& md, const Q& rho1, const Q& rho2);
+
 // A plane claim's rule on objects with a radius: the hulls' extents c1, c2 along n widened by
 // m1·|n| and m2·|n| (|n| = √N). Exact: strictly between them; within abs: each object within
 // abs·|n| of its side (no offset: c1 + m1|n| − (c2 − m2|n|) ≤ 2·abs·|n|).

@@ -1,6 +1,7 @@
 #include "certify/rounded_parts.hpp"
 
 #include "certify/judgements.hpp"
+#include "certify/region_certificate.hpp"
 #include "compound/region.hpp"
 #include "geometry/measures.hpp"
 
@@ -16,6 +17,16 @@ namespace {
 constexpr double kRel = 1e-14, kTiny = 1e-300;
 
 double dbl(const Q& q) { return to_double_rn(q); }
+
+// The filters' error bounds are relative, with kTiny for results that underflow: they hold when
+// every input (a point, a seed, a radius, a pose's entry, ρ, a tolerance) is 0 or a double well
+// inside the normal range, so that rounding it is a relative error; else the filters stand aside
+// and every pair is judged exactly.
+bool fits(const Q& q) {
+    if (sgn(q) == 0) return true;
+    const double x = std::abs(dbl(q));
+    return x >= 0x1p-500 && x <= 0x1p500;
+}
 }  // namespace
 
 RoundedParts::RoundedParts(const ExactScene& sc, const std::string& name) : sc_(sc), name_(name) {
@@ -43,10 +54,14 @@ RoundedParts::RoundedParts(const ExactScene& sc, const std::string& name) : sc_(
                 base_.pts[i].push_back(x);
                 for (int a = 0; a < 3; ++a) base_.pts_mag[i] = std::max(base_.pts_mag[i], std::abs(x[a]));
             }
+            for (const Vec3q& x : pts) base_.safe = base_.safe && fits(x[0]) && fits(x[1]) && fits(x[2]);
+            base_.safe = base_.safe && fits(r);
         }
         base_.off[i].push_back(base_.pts[i].size());
-        for (int a = 0; a < 3; ++a)
+        for (int a = 0; a < 3; ++a) {
             base_.seed[i][a] = dbl(in.seed[a]), base_.seed_mag[i][a] = std::abs(base_.seed[i][a]);
+            base_.safe = base_.safe && fits(in.seed[a]);
+        }
     }
 }
 
@@ -57,7 +72,10 @@ RoundedParts::Frame RoundedParts::frame(const Poses& pose) const {
         if (!pose[i]) continue;
         double m[3][4];
         for (int r = 0; r < 3; ++r)
-            for (int c = 0; c < 4; ++c) m[r][c] = dbl((*pose[i])[r][c]);
+            for (int c = 0; c < 4; ++c) {
+                m[r][c] = dbl((*pose[i])[r][c]);
+                F.safe = F.safe && fits((*pose[i])[r][c]);
+            }
         // A box of centre c and half-extents h moves into the box of centre R·c + t and
         // half-extents |R|·h; its magnitude |R|(|c| + h) + |t| bounds every term computed.
         for (auto& b : F.box[i]) {
@@ -122,6 +140,8 @@ bool RoundedParts::boxes_apart(const Frame& F, int a, int b, double r1, double r
     // Along each axis the widened box of part a at ρ1 is [s1 + ρ1(lo − s1) − ρ1·r, s1 + ρ1(hi − s1)
     // + ρ1·r]; the gap between two such intervals in doubles is within kRel of the sum of the
     // magnitudes of its terms (and kTiny) of the exact gap.
+    if (gap) *gap = 0;
+    if (!F.safe) return false;
     const auto& A = F.box[0][static_cast<size_t>(a)];
     const auto& B = F.box[1][static_cast<size_t>(b)];
     const double *s1 = F.seed[0], *s2 = F.seed[1];
@@ -144,6 +164,7 @@ bool RoundedParts::boxes_apart(const Frame& F, int a, int b, double r1, double r
 }
 
 RoundedParts::Bounds RoundedParts::support_bounds(const Frame& F, int a, int b, double r1, double r2) {
+    if (!F.safe) return {};
     const auto& A = F.box[0][static_cast<size_t>(a)];
     const auto& B = F.box[1][static_cast<size_t>(b)];
     const double *s1 = F.seed[0], *s2 = F.seed[1];
@@ -158,7 +179,8 @@ RoundedParts::Bounds RoundedParts::support_bounds(const Frame& F, int a, int b, 
     const double U = std::abs(u[0]) + std::abs(u[1]) + std::abs(u[2]),
                  len = std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
     Bounds out;
-    if (!(len > 0) || !std::isfinite(len)) return out;
+    // (Below 2^-450 the squares of u's coordinates may underflow, and |u| with them.)
+    if (!(len > 0x1p-450) || !std::isfinite(len)) return out;
     double hi = -INFINITY, lo = INFINITY;
     const D3 *pa = nullptr, *qb = nullptr;
     for (size_t k = F.off[0][static_cast<size_t>(a)]; k < F.off[0][static_cast<size_t>(a) + 1]; ++k) {
@@ -202,14 +224,30 @@ bool RoundedParts::scan(const Frame& F, int a, int b) {
     return true;
 }
 
-void RoundedParts::count_exact() {
+void RoundedParts::count_exact(int a, int b) {
     ++counts_.exact;
+    const double work = static_cast<double>(body_[0][static_cast<size_t>(a)]->pts.size() +
+                                            body_[1][static_cast<size_t>(b)]->pts.size());
+    work_in_call_ += work;
     if (++exact_in_call_ > kMaxExactPartPairs)
         throw InputError(name_ + ": more than " + std::to_string(kMaxExactPartPairs) +
-                         " part pairs whose boxes meet need an exact judgement (the limit for one judgement)");
+                         " part pairs need an exact judgement in one judgement (the limit)");
+    if (work_in_call_ > kMaxExactWork)
+        throw InputError(name_ + ": the part pairs one judgement judges exactly hold more than " +
+                         std::to_string(static_cast<long>(kMaxExactWork)) + " points in all (the limit)");
+    if (run_left_ >= 0 && --run_left_ < 0)
+        throw InputError(name_ + ": the claims need more than " + std::to_string(kMaxExactPartPairsInAll) +
+                         " exact part-pair judgements in all (the limit for one run of certify-fp)");
+}
+
+void RoundedParts::start_judgement() {
+    exact_in_call_ = 0;
+    work_in_call_ = 0;
+    scanned_ = 0;
 }
 
 RoundedParts::PairState RoundedParts::pair_state(int a, int b, const Q& rho1, const Q& rho2, const Poses& pose) {
+    count_exact(a, b);
     const std::shared_ptr<const RoundedPoints> S = pair(a, b);
     std::optional<PosedPoints> at;
     if (pose[0] || pose[1]) at.emplace(*S, pose);
@@ -223,9 +261,9 @@ RoundedParts::PairState RoundedParts::pair_state(int a, int b, const Q& rho1, co
 }
 
 RoundedParts::Decided RoundedParts::verdict(const Q& rho1, const Q& rho2, const Poses& pose) {
-    exact_in_call_ = 0;
-    scanned_ = 0;
-    const Frame F = frame(pose);
+    start_judgement();
+    Frame F = frame(pose);
+    F.safe = F.safe && fits(rho1) && fits(rho2);
     const double r1 = dbl(rho1), r2 = dbl(rho2);
     // The pairs the doubles cannot part, the deepest by their supports first (the likeliest to
     // overlap, which ends the search).
@@ -251,7 +289,6 @@ RoundedParts::Decided RoundedParts::verdict(const Q& rho1, const Q& rho2, const 
                      [](const Candidate& x, const Candidate& y) { return x.lower < y.lower; });
     Decided out;
     for (const Candidate& c : open) {
-        count_exact();
         const Verdict v = pair_state(c.a, c.b, rho1, rho2, pose).verdict;
         if (v == Verdict::Overlapping) return {v, c.a, c.b};
         // The first touching pair in the parts' order.
@@ -261,9 +298,9 @@ RoundedParts::Decided RoundedParts::verdict(const Q& rho1, const Q& rho2, const 
 }
 
 RoundedParts::Nearest RoundedParts::nearest(const Q& rho1, const Q& rho2, const Poses& pose) {
-    exact_in_call_ = 0;
-    scanned_ = 0;
-    const Frame F = frame(pose);
+    start_judgement();
+    Frame F = frame(pose);
+    F.safe = F.safe && fits(rho1) && fits(rho2);
     const double r1 = dbl(rho1), r2 = dbl(rho2);
     // The pairs by the doubles' lower bound on their distance, nearest first.
     struct Candidate {
@@ -303,7 +340,6 @@ RoundedParts::Nearest RoundedParts::nearest(const Q& rho1, const Q& rho2, const 
             counts_.boxed += static_cast<long>(open.size() - k);
             break;
         }
-        count_exact();
         PairState st = pair_state(c.a, c.b, rho1, rho2, pose);
         if (st.verdict != Verdict::Separated) return {c.a, c.b, std::move(st)};
         const Q& E = st.hulls.distance.squared;
@@ -312,10 +348,15 @@ RoundedParts::Nearest RoundedParts::nearest(const Q& rho1, const Q& rho2, const 
             const Q& E0 = best.state.hulls.distance.squared;
             if (sign_two_sqrts(best.state.R - st.R, Q(1), E, Q(-1), E0) >= 0) continue;
         }
-        const double u = std::sqrt(dbl(E)) * (1 + kRel) - dbl(st.R) * (1 - kRel) + kTiny;
-        if (!std::isnan(u)) upper = std::min(upper, u);
+        // √E − R in doubles, bounded above (E and R rounded relatively: within the normal range).
+        const double dE = dbl(E), dR = dbl(st.R);
+        if (fits(E) && fits(st.R)) {
+            const double u = std::sqrt(dE) * (1 + kRel) - dR * (1 - kRel) + kTiny;
+            if (!std::isnan(u)) upper = std::min(upper, u);
+        }
         best = {c.a, c.b, std::move(st)};
     }
+    if (best.a < 0) throw std::logic_error("RoundedParts::nearest: every pair was set aside");
     return best;
 }
 
@@ -325,12 +366,13 @@ int RoundedParts::locate(int i, const Q& rho, const Vec3q& x, const Q& abs, bool
     const Frame F = frame(pose);
     const double r = dbl(rho), ad = dbl(abs);
     const double xd[3] = {dbl(x[0]), dbl(x[1]), dbl(x[2])};
+    const bool filter = F.safe && fits(rho) && fits(abs) && fits(x[0]) && fits(x[1]) && fits(x[2]);
     for (size_t k = 0; k < parts(i); ++k) {
         // Outside the part's box widened by ρr + abs, by more than the doubles' error: out.
         const auto& B = F.box[i][k];
         const double *s = F.seed[i], *sm = F.seed_mag[i];
         bool out = false;
-        for (int a = 0; a < 3 && !out; ++a) {
+        for (int a = 0; a < 3 && filter && !out; ++a) {
             const double lo = s[a] + r * (B[a] - s[a]) - r * B[6] - ad,
                          hi = s[a] + r * (B[3 + a] - s[a]) + r * B[6] + ad;
             const double err = kRel * (sm[a] + r * (B[7 + a] + 2 * sm[a] + B[6]) + ad + std::abs(xd[a])) + kTiny;
@@ -351,6 +393,29 @@ int RoundedParts::locate(int i, const Q& rho, const Vec3q& x, const Q& abs, bool
     return first_near;
 }
 
+std::array<Q, 6> RoundedParts::widened_box(int i, size_t k, const Q& rho, const Poses& pose) const {
+    const std::shared_ptr<const RoundedPoints> S = i == 0 ? pair(static_cast<int>(k), 0) : pair(0, static_cast<int>(k));
+    std::optional<PosedPoints> at;
+    if (pose[0] || pose[1]) at.emplace(*S, pose);
+    const PointSets& P = at ? static_cast<const PointSets&>(*at) : *S;
+    std::array<Q, 6> b;
+    const int n = static_cast<int>(body_[i][k]->pts.size());
+    for (int j = 0; j < n; ++j) {
+        const Vec3q x = P.point(i, j);
+        for (int a = 0; a < 3; ++a) {
+            if (j == 0 || x[a] < b[a]) b[a] = x[a];
+            if (j == 0 || x[a] > b[3 + a]) b[3 + a] = x[a];
+        }
+    }
+    const Vec3q& s = P.seed(i);
+    const Q m = rho * radius_[i][k];
+    for (int a = 0; a < 3; ++a) {
+        b[a] = s[a] + rho * (b[a] - s[a]) - m;
+        b[3 + a] = s[a] + rho * (b[3 + a] - s[a]) + m;
+    }
+    return b;
+}
+
 Q RoundedParts::extent(int i, size_t k, const Vec3q& n, const Q& rho, const Poses& pose) const {
     const std::shared_ptr<const RoundedPoints> S = i == 0 ? pair(static_cast<int>(k), 0) : pair(0, static_cast<int>(k));
     std::optional<PosedPoints> at;
@@ -361,9 +426,79 @@ Q RoundedParts::extent(int i, size_t k, const Vec3q& n, const Q& rho, const Pose
 
 // ---- the rules ---------------------------------------------------------------------------------
 
+namespace {
+// The squared distance between two boxes lo[3], hi[3] (0 when they meet).
+Q box_gap_sq(const std::array<Q, 6>& A, const std::array<Q, 6>& B) {
+    Q g = 0;
+    for (int a = 0; a < 3; ++a) {
+        const Q d = B[a] > A[3 + a] ? Q(B[a] - A[3 + a]) : A[a] > B[3 + a] ? Q(A[a] - B[3 + a]) : Q(0);
+        g += d * d;
+    }
+    return g;
+}
+bool boxes_apart_exactly(const std::array<Q, 6>& A, const std::array<Q, 6>& B) {
+    for (int a = 0; a < 3; ++a)
+        if (B[a] > A[3 + a] || A[a] > B[3 + a]) return true;
+    return false;
+}
+// Every part's widened box at (ρ1, ρ2), exact.
+std::array<std::vector<std::array<Q, 6>>, 2> all_boxes(const RoundedParts& J, const Q& r1, const Q& r2,
+                                                       const RoundedParts::Poses& pose) {
+    std::array<std::vector<std::array<Q, 6>>, 2> out;
+    for (int i = 0; i < 2; ++i)
+        for (size_t k = 0; k < J.parts(i); ++k)
+            out[static_cast<size_t>(i)].push_back(J.widened_box(i, k, i ? r2 : r1, pose));
+    return out;
+}
+// A pair's entry in a proof: {"pair": [a, b], "hulls": its hulls' proof}, appended to `list`,
+// which may hold at most kMaxExactPartPairs (InputError past it, naming the scene).
+void add_pair(Json& list, int a, int b, const RoundedParts::PairState& st, const Q& r1, const Q& r2,
+              const std::string& name) {
+    if (list.size() >= static_cast<size_t>(kMaxExactPartPairs))
+        throw InputError(name + ": a proof would list more than " + std::to_string(kMaxExactPartPairs) +
+                         " part pairs whose widened boxes meet (the limit for one judgement)");
+    list.push_back(Json{{"pair", Json::array({a, b})}, {"hulls", rounded_hulls_proof(st.hulls, r1, r2)}});
+}
+// Is x in object i at ρ: the first part within ρr of it, else the first within abs more (`near`),
+// else −1 (as RoundedParts::locate), with its proof: {"part": k, "within" or "near": weights}, or
+// {"out": [each part's {"out": normal}]}.
+int member_proof(const RoundedParts& J, int i, const Q& rho, const Vec3q& x, const Tolerance& tol,
+                 const RoundedParts::Poses& pose, bool* near, Json* proof) {
+    int first_near = -1;
+    Json near_proof, outs = Json::array();
+    for (size_t k = 0; k < J.parts(i); ++k) {
+        const std::shared_ptr<const RoundedPoints> S =
+            i == 0 ? J.pair(static_cast<int>(k), 0) : J.pair(0, static_cast<int>(k));
+        std::optional<PosedPoints> at;
+        if (pose[0] || pose[1]) at.emplace(*S, pose);
+        bool nk = false;
+        Json pk;
+        const bool in =
+            rounded_member(at ? static_cast<const PointSets&>(*at) : *S, i, rho, rho * J.radius(i, k), x, tol, nk, &pk);
+        if (in && !nk) {
+            pk["part"] = static_cast<int>(k);
+            *proof = std::move(pk);
+            *near = false;
+            return static_cast<int>(k);
+        }
+        if (in && first_near < 0) {
+            first_near = static_cast<int>(k);
+            near_proof = std::move(pk);
+            near_proof["part"] = first_near;
+        }
+        if (!in) outs.push_back(std::move(pk));
+    }
+    *near = first_near >= 0;
+    *proof = first_near >= 0 ? std::move(near_proof) : Json{{"out", std::move(outs)}};
+    return first_near;
+}
+}  // namespace
+
 RoundedPartsRules::RoundedPartsRules(std::shared_ptr<RoundedParts> parts, const Tolerance& tolerance)
-    : ClaimRules(tolerance), parts_(std::move(parts)) {}
-RoundedPartsRules::~RoundedPartsRules() = default;
+    : ClaimRules(tolerance), parts_(std::move(parts)) {
+    parts_->start_run();
+}
+RoundedPartsRules::~RoundedPartsRules() { parts_->end_run(); }
 
 std::string RoundedPartsRules::refusal(ClaimType t) const {
     switch (t) {
@@ -390,10 +525,8 @@ std::optional<std::array<int, 2>> RoundedPartsRules::part_pair(const std::option
     return given;
 }
 
-std::string RoundedPartsRules::certificate(Json) const {
-    throw InputError(
-        "--certificate: certificates on objects made of parts with radii are not written yet "
-        "(certify-fp judges their claims without one)");
+std::string RoundedPartsRules::certificate(Json entries) const {
+    return compound_judgements_text(parts_->scene(), tol_.rel, tol_.abs, std::move(entries));
 }
 
 Judged RoundedPartsRules::judge(const TypedClaim& c, Proof* proof) {
@@ -404,6 +537,7 @@ Judged RoundedPartsRules::judge(const TypedClaim& c, Proof* proof) {
         return g;
     }
     RoundedParts& J = *parts_;
+    J.start_judgement();
     const RoundedParts::Poses& pose = c.pose;
     if (c.type == ClaimType::Depth || c.type == ClaimType::SignedDistance) {
         // One part pair, by the rules of two objects with a radius (at the claim's poses).
@@ -426,20 +560,39 @@ Judged RoundedPartsRules::judge(const TypedClaim& c, Proof* proof) {
         g.part1 = e.a;
         g.part2 = e.b;
         g.right = verdict_matches(c.verdict, d.exact);
-        break;
+        if (!proof) break;
+        // Overlapping: the pair that overlaps. Else every pair whose widened boxes meet (the
+        // others are apart by them).
+        Json pairs = Json::array();
+        if (e.verdict == Verdict::Overlapping) {
+            add_pair(pairs, e.a, e.b, J.pair_state(e.a, e.b, c.rho1, c.rho2, pose), c.rho1, c.rho2, J.name());
+        } else {
+            const auto boxes = all_boxes(J, c.rho1, c.rho2, pose);
+            for (int a = 0; a < static_cast<int>(J.parts(0)); ++a)
+                for (int b = 0; b < static_cast<int>(J.parts(1)); ++b)
+                    if (!boxes_apart_exactly(boxes[0][static_cast<size_t>(a)], boxes[1][static_cast<size_t>(b)]))
+                        add_pair(pairs, a, b, J.pair_state(a, b, c.rho1, c.rho2, pose), c.rho1, c.rho2, J.name());
+        }
+        proof->proof = Json{{"verdict", verdict_name(e.verdict)}, {"pairs", std::move(pairs)}};
+        return g;
     }
     case ClaimType::Witness: {
         auto& d = g.set<WitnessJudged>();
-        d.in_part1 = J.locate(0, c.rho1, c.point, tol_.abs, &d.near1, pose);
-        d.in_part2 = J.locate(1, c.rho2, c.point, tol_.abs, &d.near2, pose);
+        Json p1, p2;
+        d.in_part1 = proof ? member_proof(J, 0, c.rho1, c.point, tol_, pose, &d.near1, &p1)
+                           : J.locate(0, c.rho1, c.point, tol_.abs, &d.near1, pose);
+        d.in_part2 = proof ? member_proof(J, 1, c.rho2, c.point, tol_, pose, &d.near2, &p2)
+                           : J.locate(1, c.rho2, c.point, tol_.abs, &d.near2, pose);
+        if (proof) proof->proof = Json{{"P1", std::move(p1)}, {"P2", std::move(p2)}};
         d.in1 = d.in_part1 >= 0;
         d.in2 = d.in_part2 >= 0;
         if (c.with_verdict) d.exact_verdict = J.verdict(c.rho1, c.rho2, pose).verdict;
         g.right = d.in1 && d.in2;
-        break;
+        return g;
     }
     case ClaimType::Distance: {
         const RoundedParts::Nearest n = J.nearest(c.rho1, c.rho2, pose);
+        Json closest_proof;
         const ExactDistance& e = n.state.hulls.distance;
         const Q& R = n.state.R;
         auto& d = g.set<DistanceJudged>();
@@ -462,8 +615,12 @@ Judged RoundedPartsRules::judge(const TypedClaim& c, Proof* proof) {
             const auto& [p, q] = *c.closest;
             const Vec3q pq = sub(q, p);
             d.closest_squared = pq[0] * pq[0] + pq[1] * pq[1] + pq[2] * pq[2];
-            d.in_part1 = J.locate(0, c.rho1, p, tol_.abs, &d.near1, pose);
-            d.in_part2 = J.locate(1, c.rho2, q, tol_.abs, &d.near2, pose);
+            Json p1, p2;
+            d.in_part1 = proof ? member_proof(J, 0, c.rho1, p, tol_, pose, &d.near1, &p1)
+                               : J.locate(0, c.rho1, p, tol_.abs, &d.near1, pose);
+            d.in_part2 = proof ? member_proof(J, 1, c.rho2, q, tol_, pose, &d.near2, &p2)
+                               : J.locate(1, c.rho2, q, tol_.abs, &d.near2, pose);
+            if (proof) closest_proof = Json{{"P1", std::move(p1)}, {"P2", std::move(p2)}};
             d.in1 = d.in_part1 >= 0;
             d.in2 = d.in_part2 >= 0;
             // |q − p| ≤ (1 + rel)·(√E − R) + 2·abs apart; ≤ 2·abs when the objects meet.
@@ -474,7 +631,25 @@ Judged RoundedPartsRules::judge(const TypedClaim& c, Proof* proof) {
             d.closest_right = d.in1 && d.in2 && near_enough;
             g.right = g.right && *d.closest_right;
         }
-        break;
+        if (!proof) break;
+        // The nearest pair's hulls; apart, every other pair whose widened boxes lie nearer than
+        // the distance (√G < √E − R), each with its hulls (the others are as far by their boxes).
+        Json pr{{"pair", Json::array({n.a, n.b})}, {"hulls", rounded_hulls_proof(n.state.hulls, c.rho1, c.rho2)}};
+        if (apart) {
+            Json others = Json::array();
+            const auto boxes = all_boxes(J, c.rho1, c.rho2, pose);
+            for (int a = 0; a < static_cast<int>(J.parts(0)); ++a)
+                for (int b = 0; b < static_cast<int>(J.parts(1)); ++b) {
+                    if (a == n.a && b == n.b) continue;
+                    const Q G = box_gap_sq(boxes[0][static_cast<size_t>(a)], boxes[1][static_cast<size_t>(b)]);
+                    if (sign_two_sqrts(R, Q(1), G, Q(-1), e.squared) >= 0) continue;
+                    add_pair(others, a, b, J.pair_state(a, b, c.rho1, c.rho2, pose), c.rho1, c.rho2, J.name());
+                }
+            pr["others"] = std::move(others);
+        }
+        if (c.closest) pr["closest"] = std::move(closest_proof);
+        proof->proof = std::move(pr);
+        return g;
     }
     case ClaimType::Plane: {
         // Right when it is right for every pair: the part of P1 reaching farthest along n (its

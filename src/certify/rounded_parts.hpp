@@ -19,13 +19,19 @@ namespace scalecert::internal {
 
 // At most this many part pairs judged exactly in one judgement (their widened boxes meet): past
 // it the judgement is refused with one line (docs/manual.md, "Limits").
-constexpr long kMaxExactPartPairs = 1000000;
+constexpr long kMaxExactPartPairs = 100000;
+// At most this many points in all in the part pairs one judgement judges exactly (each exact pair
+// reads its two parts' points, a GJK's scans of them).
+constexpr double kMaxExactWork = 5e7;
+// At most this many part pairs judged exactly over one run of certify-fp (a rules object).
+constexpr long kMaxExactPartPairsInAll = 1000000;
 
 class RoundedParts {
   public:
     // Builds every part (InputError after `name` for a flat part without a radius).
     RoundedParts(const ExactScene& sc, const std::string& name);
     const ExactScene& scene() const { return sc_; }
+    const std::string& name() const { return name_; }
     size_t parts(int i) const { return body_[i].size(); }
     const Q& radius(int i, size_t k) const { return radius_[i][k]; }
     // Parts a of P1 and b of P2 as two objects with a radius.
@@ -61,8 +67,16 @@ class RoundedParts {
 
     // The first part of object i within ρ·r_k of x (or within abs more, `near`), −1 for none.
     int locate(int i, const Q& rho, const Vec3q& x, const Q& abs, bool* near, const Poses& pose = {}) const;
+    // Part k of object i's box at ρ (at the poses), widened by ρ·r_k: lo[3], hi[3], exact.
+    std::array<Q, 6> widened_box(int i, size_t k, const Q& rho, const Poses& pose = {}) const;
     // Part k of object i's hull's extent along n at ρ: max n·x for P1, min for P2.
     Q extent(int i, size_t k, const Vec3q& n, const Q& rho, const Poses& pose = {}) const;
+
+    // A judgement begins: its limits (kMaxExactPartPairs, kMaxExactWork) count from here.
+    void start_judgement();
+    // A run of claims begins (a rules object): at most kMaxExactPartPairsInAll exact pairs in it.
+    void start_run() { run_left_ = kMaxExactPartPairsInAll; }
+    void end_run() { run_left_ = -1; }
 
     // Pairs decided by their boxes, and judged exactly.
     struct Counts {
@@ -86,11 +100,14 @@ class RoundedParts {
         std::vector<D3> pts[2];
         std::vector<size_t> off[2];
         double pts_mag[2] = {0, 0};
+        bool safe = true;  // every input (and ρ) 0 or a double within [2^-500, 2^500]: else no filter decides
     };
     Frame base_;
     Frame frame(const Poses& pose) const;  // base_ moved by the poses
     Counts counts_;
     long exact_in_call_ = 0;
+    double work_in_call_ = 0;
+    long run_left_ = -1;  // exact pairs left in this run (−1: no run's limit)
     // Whether the widened boxes of parts a and b at (ρ1, ρ2) are apart along an axis (proved: the
     // gap in doubles exceeds its rounding error bound); `gap`, when given, gets a lower bound on
     // their Euclidean gap, so on the pair's distance.
@@ -102,7 +119,7 @@ class RoundedParts {
         double lower = -INFINITY, upper = INFINITY;
     };
     static Bounds support_bounds(const Frame& F, int a, int b, double r1, double r2);
-    void count_exact();  // InputError past kMaxExactPartPairs in one call
+    void count_exact(int a, int b);  // InputError past the limits above
     // Whether the supports of parts a and b may be scanned: at most kMaxScannedPoints points in one
     // judgement (past it, pairs the boxes cannot part are judged exactly).
     static constexpr size_t kMaxScannedPoints = 50000000;

@@ -203,6 +203,7 @@ Json exact_fields_json(const TypedClaim& c) {
         if (c.direction) j["direction"] = ex3(*c.direction);
         break;
     case ClaimType::SignedDistance:
+        if (c.parts) j["parts"] = Json::array({(*c.parts)[0], (*c.parts)[1]});
         j[c.bound == TypedClaim::Bound::Value     ? "value"
           : c.bound == TypedClaim::Bound::AtLeast ? "at_least"
           : c.bound == TypedClaim::Bound::AtMost  ? "at_most"

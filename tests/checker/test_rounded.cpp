@@ -436,6 +436,99 @@ BOOST_AUTO_TEST_CASE(absolute_tolerance_on_objects_with_a_radius) {
     rejected(f, "P1.out: the point lies more than rho·radius + abs_tolerance beyond", "out within a larger LEN");
 }
 
+// Parts with radii (CLAIMS.md, "Parts with radii"): spheres of radius 1 at 0 and 1/2 at (3, 0, 0)
+// (seed 0) against the box [5, 7] × [−1, 1]² about (6, 0, 0) (examples/sphere_set.json). Along x
+// the second sphere reaches 7ρ1/2 and the box starts at 6 − ρ2: touching at (10/7, 1), 3/2 apart
+// at (1, 1) (the first sphere 4), the second sphere 1 deep in the box at (2, 1) (depth 2).
+BOOST_AUTO_TEST_CASE(parts_with_radii_are_checked_and_tampering_is_rejected) {
+    const char* scene = R"({"P1": {"spheres": {"centres": [[0, 0, 0], [3, 0, 0]], "radii": [1, "1/2"]},
+        "seed": [0, 0, 0]}, "P2": {"box": [1, 1, 1], "pose": [[1, 0, 0, 6], [0, 1, 0, 0], [0, 0, 1, 0]]},
+        "I1": [1, 2], "I2": [1, 2]})";
+    const char* claims = R"(
+ {"kind": "verdict", "rho1": "10/7", "rho2": 1, "verdict": "touching"},
+ {"kind": "verdict", "rho1": 1, "rho2": 1, "verdict": "separated"},
+ {"kind": "verdict", "rho1": 2, "rho2": 1, "verdict": "separated"},
+ {"kind": "distance", "rho1": 1, "rho2": 1, "value": 1.5, "closest": [[3.5, 0, 0], [5, 0, 0]]},
+ {"kind": "distance", "rho1": 1, "rho2": 1, "value": 4},
+ {"kind": "distance", "rho1": 2, "rho2": 1, "value": 0},
+ {"kind": "witness_point", "rho1": 2, "rho2": 1, "point": [5, 0, 0]},
+ {"kind": "witness_point", "rho1": 1, "rho2": 1, "point": [5, 0, 0]},
+ {"kind": "signed_distance", "rho1": 1, "rho2": 1, "parts": [0, 0], "value": 4},
+ {"kind": "penetration_depth", "rho1": 2, "rho2": 1, "parts": [1, 0], "value": 2},
+ {"kind": "separating_plane", "rho1": 1, "rho2": 1, "normal": [1, 1, 0]},
+ {"kind": "separating_plane", "rho1": 1, "rho2": 1, "normal": [1, 2, 0]},
+ {"kind": "verdict", "rho1": 1, "rho2": 1, "verdict": "separated",
+  "pose2": [[0, 1, 0, 6], [-1, 0, 0, 0], [0, 0, 1, 0]]})";
+    const OJ j = certificate(scene, claims, "sphere_set");
+    BOOST_TEST(j["kind"] == "compound_judgements");
+    BOOST_TEST(bits(rights(j)) == "1101011011101");
+    BOOST_TEST(j["scene"]["P1"]["parts"][1]["radius"] == "1/2");
+    mutate_and_report(j, "judgements on parts with radii", false, true, true);
+    OJ f = j;
+    // The second sphere's radius 1/2 made 1: it overlaps the box at (10/7, 1).
+    f["scene"]["P1"]["parts"][1]["radius"] = "1";
+    rejected(f, "judgements[0].proof.pairs[0]: the pair does not overlap", "a part's radius changed");
+    f = j;
+    f["scene"]["P1"]["parts"][1].erase("radius");
+    rejected(f, "has a radius (every part has one when any has)", "one part without its radius");
+    // The touching verdict's pairs without its touching pair (1, 0): none touches; and said
+    // separated, that pair, left out, is not apart by its boxes (they touch at x = 5).
+    f = j;
+    f["judgements"][0]["proof"]["pairs"] = OJ::array();
+    rejected(f, "judgements[0].proof.pairs has a touching pair", "the touching pair left out");
+    f["judgements"][0]["proof"]["verdict"] = "separated";
+    f["judgements"][0]["right"] = false;
+    rejected(f, "parts 1 and 0, not listed, have widened boxes apart", "a meeting pair left out");
+    // The distance's nearest pair swapped for the first sphere (4 apart): the second, not listed
+    // and its boxes 3/2 apart, is nearer.
+    f = j;
+    f["judgements"][3]["proof"]["pair"] = OJ::array({0, 0});
+    f["judgements"][3]["proof"]["hulls"] = j["judgements"][8]["proof"];
+    rejected(f, "not listed, have widened boxes at least the distance apart", "the nearest pair swapped");
+    // A witness said to be in part 0 (the first sphere, 5 from it at ρ1 = 2... 2 units of radius).
+    f = j;
+    f["judgements"][6]["proof"]["P1"]["part"] = 0;
+    rejected(f, "within combines to a point within rho·radius of the point", "a witness in the wrong part");
+    for (size_t k = 0; k < 13; ++k) {
+        f = j;
+        f["judgements"][k]["right"] = !j["judgements"][k]["right"].get<bool>();
+        rejected(f, "judgements[" + std::to_string(k) + "].right must be", "right flipped");
+    }
+}
+
+// Random sphere sets against sphere sets and a rounded box, claims at pairs and at poses: every
+// certificate the engine writes passes the checker (certificate() requires it).
+BOOST_AUTO_TEST_CASE(random_sphere_sets_certify) {
+    std::mt19937_64 g(61);
+    std::uniform_int_distribution<int> c(-12, 12), r(1, 6), n(1, 6), rho(2, 8);
+    auto q = [](long p, long d) { return "\"" + std::to_string(p) + "/" + std::to_string(d) + "\""; };
+    for (int t = 0; t < 12; ++t) {
+        auto spheres = [&](int shift) {
+            std::string cs, rs;
+            const int m = n(g);
+            for (int k = 0; k < m; ++k) {
+                cs +=
+                    std::string(k ? ", " : "") + "[" + q(c(g) + shift, 4) + ", " + q(c(g), 4) + ", " + q(c(g), 4) + "]";
+                rs += std::string(k ? ", " : "") + q(r(g), 4);
+            }
+            return R"({"spheres": {"centres": [)" + cs + R"(], "radii": [)" + rs + "]}}";
+        };
+        const std::string other =
+            t % 2 ? spheres(12)
+                  : R"({"box": [1, 2, 1], "radius": "1/4", "pose": [[1, 0, 0, 3], [0, 1, 0, 0], [0, 0, 1, 0]]})";
+        const std::string scene = R"({"P1": )" + spheres(0) + R"(, "P2": )" + other + "}";
+        std::string claims;
+        for (int k = 0; k < 4; ++k) {
+            const std::string at = R"("rho1": )" + q(rho(g), 4) + R"(, "rho2": )" + q(rho(g), 4);
+            const std::string pose =
+                k % 2 ? R"(, "pose2": [[0, -1, 0, )" + q(c(g), 8) + R"(], [1, 0, 0, 0], [0, 0, 1, 0]])" : "";
+            claims += std::string(k ? ", " : "") + R"({"kind": "verdict", )" + at + R"(, "verdict": "separated")" +
+                      pose + R"(}, {"kind": "distance", )" + at + R"(, "value": 1)" + pose + "}";
+        }
+        certificate(scene, claims, "random_set_" + std::to_string(t));
+    }
+}
+
 BOOST_AUTO_TEST_CASE(signs_of_sums_of_roots_are_exact) {
     // a + b√A + c√E against exact values where A and E are squares (the roots rational), over
     // random small rationals, and by hand where they are not.

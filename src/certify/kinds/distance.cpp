@@ -80,7 +80,8 @@ void describe(const TypedClaim& c, const DistanceJudged& d, const Judged& g, con
         put_point(o, "hulls_closest_P2", d.exact_p2);
         text = "distance at " + at(c) + ": claimed " + num(c.value) + ", exact ~" +
                dbl(surd_rn(apart ? 1 : 0, d.exact_squared, apart ? Q(-R) : Q(0)), 17) +
-               " (the hulls' squared distance " + num(d.exact_squared) + " less the " + radii_text(g) + ")";
+               " (the hulls' distance, the square root of " + num(d.exact_squared) + ", less the " + radii_text(g) +
+               ")";
     } else {
         errors_sq(o, c.value, d.exact_squared);
         put_point(o, "exact_closest_P1", d.exact_p1);

@@ -69,7 +69,7 @@ void describe(const TypedClaim& c, const SignedDistanceJudged& d, const Judged& 
         text = "signed distance" + of + " at " + at(c) + ": " + claimed + ", exact ~" +
                dbl(surd_rn(d.root(), d.exact_squared, Q(-R)), 17) + " (" + verdict_name(d.exact) + "; the hulls' " +
                (d.root() > 0   ? "distance"
-                : d.root() < 0 ? "minus their depth"
+                : d.root() < 0 ? "depth, negated"
                                : "0 (touching)") +
                (d.root() != 0 ? ", squared " + num(d.exact_squared) : std::string()) + ", less the " + radii_text(g) +
                ")";
