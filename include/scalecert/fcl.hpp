@@ -17,6 +17,7 @@
 
 #include <fcl/fcl.h>
 
+#include <array>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -113,6 +114,36 @@ Scene fcl_scene(const ::fcl::CollisionGeometry<S>& g1, const ::fcl::CollisionGeo
     const Rational r1 = fcl_radius(g1), r2 = fcl_radius(g2);
     if (sgn(r1) == 0 && sgn(r2) == 0) return Scene(fcl_points(g1), fcl_points(g2), {}, {});
     return Scene::with_radii(fcl_points(g1), fcl_points(g2), {r1, r2});
+}
+
+// FCL collision objects as one object made of parts (certificates/CLAIMS.md, "Parts with radii"),
+// and others as the second: each object's geometry moved to its transform exactly (fcl_points
+// taken to R·v + t in rationals) with its radius (fcl_radius), so a robot of fcl::Sphere objects is
+// a sphere set. A broad-phase manager's answers are claims on it at (1, 1) without poses: collide's
+// (any contact) the verdict intersecting or not_overlapping, distance's (the least) a distance.
+template <class S>
+Scene fcl_parts_scene(const std::vector<const ::fcl::CollisionObject<S>*>& objects1,
+                      const std::vector<const ::fcl::CollisionObject<S>*>& objects2) {
+    std::vector<std::vector<Point>> parts[2];
+    std::array<std::vector<Rational>, 2> radii;
+    bool rounded = false;
+    const std::vector<const ::fcl::CollisionObject<S>*>* objects[2] = {&objects1, &objects2};
+    for (int i = 0; i < 2; ++i)
+        for (const ::fcl::CollisionObject<S>* o : *objects[i]) {
+            if (!o || !o->collisionGeometry()) throw InputError("fcl_parts_scene: an object without a geometry");
+            const Pose p = fcl_pose(o->getTransform());
+            std::vector<Point> moved;
+            for (const Point& v : fcl_points(*o->collisionGeometry())) {
+                Point w;
+                for (int r = 0; r < 3; ++r) w[r] = p[r][0] * v[0] + p[r][1] * v[1] + p[r][2] * v[2] + p[r][3];
+                moved.push_back(w);
+            }
+            parts[i].push_back(std::move(moved));
+            radii[i].push_back(fcl_radius(*o->collisionGeometry()));
+            rounded = rounded || sgn(radii[i].back()) > 0;
+        }
+    if (!rounded) radii = {};
+    return Scene::from_parts(std::move(parts[0]), std::move(parts[1]), {}, {}, {}, {}, std::move(radii));
 }
 
 // fcl::collide's result (CLAIMS.md, "Engines' conventions", FCL): the verdict intersecting when it

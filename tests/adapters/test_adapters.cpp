@@ -7,6 +7,8 @@
 
 #include <boost/test/unit_test.hpp>
 #include <btBulletCollisionCommon.h>
+#include <fcl/broadphase/broadphase_dynamic_AABB_tree.h>
+#include <fcl/broadphase/default_broadphase_callbacks.h>
 
 #include <cmath>
 #include <memory>
@@ -144,6 +146,56 @@ BOOST_AUTO_TEST_CASE(fcl_at_a_turned_pose) {
 // A box pair's collide() gives a contact per corner, each with its own depth: the adapter claims
 // the deepest as the pair's depth (the others are shallower, not the pair's). Two unit boxes, P2
 // turned 0.02 rad about x at z = 0.9.
+// A robot of three fcl::Sphere objects of radius 1/2 at x = 0, 1, 2 and a box of side 2 centred
+// at (4, 0, 0), in a DynamicAABBTree manager: the last sphere reaches 5/2 and the box starts at 3,
+// so they are 1/2 apart; moved to x = 4 − 1 − 1/4 the box is 1/4 deep in the last sphere.
+BOOST_AUTO_TEST_CASE(fcl_broad_phase_on_a_sphere_set_by_hand) {
+    std::vector<std::unique_ptr<fcl::CollisionObjectd>> spheres;
+    fcl::DynamicAABBTreeCollisionManagerd manager;
+    std::vector<const fcl::CollisionObjectd*> robot;
+    for (int k = 0; k < 3; ++k) {
+        fcl::Transform3d t = fcl::Transform3d::Identity();
+        t.translation() = fcl::Vector3d(k, 0, 0);
+        spheres.push_back(std::make_unique<fcl::CollisionObjectd>(std::make_shared<fcl::Sphered>(0.5), t));
+        manager.registerObject(spheres.back().get());
+        robot.push_back(spheres.back().get());
+    }
+    manager.setup();
+    fcl::Transform3d tb = fcl::Transform3d::Identity();
+    tb.translation() = fcl::Vector3d(4, 0, 0);
+    fcl::CollisionObjectd box(std::make_shared<fcl::Boxd>(2, 2, 2), tb);
+    auto judged = [&](double x) {
+        tb.translation() = fcl::Vector3d(x, 0, 0);
+        box.setTransform(tb);
+        box.computeAABB();
+        fcl::DefaultCollisionData<double> cd;
+        manager.collide(&box, &cd, fcl::DefaultCollisionFunction);
+        fcl::DefaultDistanceData<double> dd;
+        manager.distance(&box, &dd, fcl::DefaultDistanceFunction);
+        const scalecert::Scene s = scalecert::fcl_parts_scene<double>(robot, {&box});
+        BOOST_TEST(s.part_count(0) == 3u);
+        BOOST_TEST(s.part_radius(0, 2) == R(1, 2));
+        scalecert::Claim v;
+        v.kind = scalecert::ClaimKind::Verdict;
+        v.verdict = cd.result.isCollision() ? scalecert::ClaimedVerdict::Intersecting
+                                            : scalecert::ClaimedVerdict::NotOverlapping;
+        scalecert::Claim d;
+        d.kind = scalecert::ClaimKind::Distance;
+        d.value = scalecert::exact(std::max(0.0, dd.result.min_distance));
+        scalecert::ClaimOptions opt;
+        opt.tolerance = scalecert::parse_rational("1/1000000");
+        return scalecert::Analysis(s).certify({v, d}, opt);
+    };
+    const scalecert::Judgements apart = judged(4);
+    BOOST_TEST(apart.wrong == 0);
+    BOOST_TEST(apart.items[1].exact == 0.5);
+    BOOST_TEST(apart.items[1].part1 == 2);
+    const scalecert::Judgements deep = judged(2.75);
+    BOOST_TEST(deep.wrong == 0);
+    BOOST_TEST(deep.items[1].exact == 0.0);  // they meet
+    BOOST_TEST((*deep.items[0].exact_verdict == scalecert::Verdict::Overlapping));
+}
+
 BOOST_AUTO_TEST_CASE(fcl_box_manifold_claims_its_deepest_contact) {
     auto box = std::make_shared<fcl::Boxd>(1, 1, 1);
     fcl::Transform3d t1 = fcl::Transform3d::Identity(), t2 = moved(0, 0, 0.9);
