@@ -70,11 +70,13 @@ Signed hulls(Context& cx, const Scene& sc, const J& pr, const std::string& wp, c
     return {sgn(*E) == 0 ? 0 : -1, *E};
 }
 
-// The pair's state: the objects are D − R apart, D = √E the hulls' distance. Hulls that meet make
-// the objects overlap, as R > 0 (a ball of radius > 0 about a common point lies in one object
-// and meets the other's interior).
+// The pair's state: the objects are D − R apart, D = √E the hulls' distance. Hulls that overlap
+// make the objects overlap; hulls that touch make them overlap when R > 0 (a ball of radius > 0
+// about a common point lies in one object and meets the other's interior) and touch when R = 0
+// (two parts of radius 0).
 std::string pair_state(Context& cx, const Signed& h, const Q& R) {
-    if (h.s <= 0) return "overlapping";
+    if (h.s < 0 || (h.s == 0 && sgn(R) > 0)) return "overlapping";
+    if (h.s == 0) return "touching";
     cx.spend_ops(2, qsize(h.E) + 2 * qsize(R));
     const int c = cmp(h.E, R * R);
     return c > 0 ? "separated" : c == 0 ? "touching" : "overlapping";
@@ -362,6 +364,36 @@ Q gap_sq(Context& cx, const std::array<Q, 6>& A, const std::array<Q, 6>& B) {
     }
     return g;
 }
+// Every pair (a, b) not `listed` has widened boxes whose squared distance G passes ok(G), tested on
+// the objects' boxes (each the box of its parts' widened boxes) first, then on part a's box against
+// P2's, then on the pair's: a box holds its parts, so a farther box pair holds for every pair in
+// it (ok holds for any G' >= G when it holds for G). A failure names `where`, the pair and what
+// its boxes fail to be (`held`).
+template <class Ok>
+void unlisted_pairs(Context& cx, const CompoundScene& cs, const Q& r1, const Q& r2, const std::vector<bool>& listed,
+                    Ok ok, const std::string& where, const char* held) {
+    const auto boxes = all_widened(cx, cs, r1, r2);
+    std::array<Q, 6> whole[2];
+    for (int i = 0; i < 2; ++i) {
+        whole[i] = boxes[static_cast<size_t>(i)][0];
+        for (const auto& b : boxes[static_cast<size_t>(i)])
+            for (size_t a = 0; a < 3; ++a) {
+                if (b[a] < whole[i][a]) whole[i][a] = b[a];
+                if (b[3 + a] > whole[i][3 + a]) whole[i][3 + a] = b[3 + a];
+            }
+    }
+    if (ok(gap_sq(cx, whole[0], whole[1]))) return;
+    for (size_t a = 0; a < cs.parts(0); ++a) {
+        if (ok(gap_sq(cx, boxes[0][a], whole[1]))) continue;
+        for (size_t b = 0; b < cs.parts(1); ++b) {
+            if (listed[a * cs.parts(1) + b]) continue;
+            cx.claim(ok(gap_sq(cx, boxes[0][a], boxes[1][b])), where + ": parts " + std::to_string(a) + " and " +
+                                                                   std::to_string(b) +
+                                                                   ", not listed, have widened boxes " + held);
+        }
+    }
+}
+
 // {"pair": [a, b], "hulls": a hulls proof}: the pair and its hulls' signed distance at (r1, r2).
 struct PairProof {
     size_t a, b;
@@ -465,17 +497,9 @@ bool judge_rounded_parts(Context& cx, const CompoundScene& cs, const Rules& R, c
             touching = touching || st == "touching";
         }
         if (v == "touching") cx.claim(touching, wp + ".pairs has a touching pair");
-        if (v != "overlapping") {
-            const auto boxes = all_widened(cx, cs, r1, r2);
-            for (size_t a = 0; a < cs.parts(0); ++a)
-                for (size_t b = 0; b < cs.parts(1); ++b) {
-                    if (listed[a * cs.parts(1) + b]) continue;
-                    cx.spend_ops(6, 0);
-                    cx.claim(sgn(gap_sq(cx, boxes[0][a], boxes[1][b])) > 0,
-                             wp + ": parts " + std::to_string(a) + " and " + std::to_string(b) +
-                                 ", not listed, have widened boxes apart");
-                }
-        }
+        if (v != "overlapping")
+            unlisted_pairs(
+                cx, cs, r1, r2, listed, [](const Q& G) { return sgn(G) > 0; }, wp, "apart");
         return verdict_right(c, v);
     }
     if (kind == "separating_plane") {
@@ -541,16 +565,14 @@ bool judge_rounded_parts(Context& cx, const CompoundScene& cs, const Rules& R, c
             cx.claim(p.h.s > 0 && sign_two_roots(best.R - p.R, 1, p.h.E, -1, best.h.E) >= 0,
                      w + ": the pair is at least as far apart as the nearest");
         }
-        const auto boxes = all_widened(cx, cs, r1, r2);
-        for (size_t a = 0; a < cs.parts(0); ++a)
-            for (size_t b = 0; b < cs.parts(1); ++b) {
-                if (listed[a * cs.parts(1) + b]) continue;
-                const Q G = gap_sq(cx, boxes[0][a], boxes[1][b]);
+        // √G >= √E − R: R + √G − √E >= 0.
+        unlisted_pairs(
+            cx, cs, r1, r2, listed,
+            [&](const Q& G) {
                 cx.spend_ops(30, 2 * (qsize(G) + qsize(best.h.E) + qsize(best.R)));
-                cx.claim(sign_two_roots(best.R, 1, G, -1, best.h.E) >= 0,
-                         wp + ": parts " + std::to_string(a) + " and " + std::to_string(b) +
-                             ", not listed, have widened boxes at least the distance apart");
-            }
+                return sign_two_roots(best.R, 1, G, -1, best.h.E) >= 0;
+            },
+            wp, "at least the distance apart");
     }
     // A length: at abs = 0 one below 0 is wrong.
     bool right = (sgn(R.abs) > 0 || sgn(c) >= 0) &&

@@ -496,6 +496,26 @@ BOOST_AUTO_TEST_CASE(parts_with_radii_are_checked_and_tampering_is_rejected) {
     }
 }
 
+// Two parts of radius 0 (R = 0) sharing a face touch, as plain polytopes do (the second hostile
+// review's forgery): the cube [0, 1]³ (beside a ball of radius 1 at (−5, 0, 0)) against the cube
+// [1, 2] × [0, 1]² at (1, 1). The engine's certificate passes; the verdict said overlapping, with
+// the touching pair as its proof, is rejected.
+BOOST_AUTO_TEST_CASE(parts_of_radius_zero_touch) {
+    const char* placed = R"({"P1": {"parts": [
+        {"vertices": [[0,0,0],[1,0,0],[0,1,0],[1,1,0],[0,0,1],[1,0,1],[0,1,1],[1,1,1]], "radius": 0},
+        {"vertices": [[-5,0,0]], "radius": 1}], "seed": [0, 0, 0]},
+      "P2": {"parts": [{"vertices": [[1,0,0],[2,0,0],[1,1,0],[2,1,0],[1,0,1],[2,0,1],[1,1,1],[2,1,1]]}],
+             "seed": [2, 0, 0]}})";
+    const OJ j =
+        certificate(placed, R"({"kind": "verdict", "rho1": 1, "rho2": 1, "verdict": "touching"})", "radius_zero_touch");
+    BOOST_TEST(bits(rights(j)) == "1");
+    BOOST_TEST(j["judgements"][0]["proof"]["verdict"] == "touching");
+    OJ f = j;
+    f["judgements"][0]["claim"]["verdict"] = "overlapping";
+    f["judgements"][0]["proof"]["verdict"] = "overlapping";
+    rejected(f, "judgements[0].proof.pairs[0]: the pair overlaps", "touching parts of radius 0 said to overlap");
+}
+
 // Random sphere sets against sphere sets and a rounded box, claims at pairs and at poses: every
 // certificate the engine writes passes the checker (certificate() requires it).
 BOOST_AUTO_TEST_CASE(random_sphere_sets_certify) {
