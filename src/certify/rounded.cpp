@@ -102,6 +102,23 @@ int RoundedPoints::argmax(int i, const Vec3z& n) const {
 
 int RoundedPoints::dargmax(int i, const D3& d) const {
     const RoundedBody& o = *obj_[i];
+    if (o.hull) {
+        // A hill climb over the hull's vertex graph in doubles (a guess for the double GJK, which
+        // the exact stages check): from the cube map's vertex, to any neighbour higher along d.
+        const Polyhedron& P = *o.hull;
+        auto along = [&](int k) {
+            const auto& x = P.dpts[static_cast<size_t>(k)];
+            return d[0] * x[0] + d[1] * x[1] + d[2] * x[2];
+        };
+        int cur = P.start_vertex({d[0], d[1], d[2]});
+        double cv = along(cur);
+        for (bool moved = true; moved;) {
+            moved = false;
+            for (int nb : P.adj[static_cast<size_t>(cur)])
+                if (const double v = along(nb); v > cv) cv = v, cur = nb, moved = true;
+        }
+        return cur;
+    }
     int best = 0;
     double bv = -INFINITY;
     auto consider = [&](int k) {
@@ -109,10 +126,7 @@ int RoundedPoints::dargmax(int i, const D3& d) const {
         const double t = d[0] * x[0] + d[1] * x[1] + d[2] * x[2];
         if (t > bv) bv = t, best = k;
     };
-    if (o.hull)
-        for (int v : o.hull->vertices) consider(v);
-    else
-        for (size_t k = 0; k < o.dpts.size(); ++k) consider(static_cast<int>(k));
+    for (size_t k = 0; k < o.dpts.size(); ++k) consider(static_cast<int>(k));
     return best;
 }
 
