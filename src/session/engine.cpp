@@ -157,6 +157,39 @@ class PartsEngine final : public SceneEngine {
     std::optional<CompoundSession> session_;
 };
 
+// The engines of objects with a radius, each verdict at its own exact pair: one judgements file
+// of a verdict claim, the exact verdict, by `rules`.
+std::string one_verdict_document(ClaimRules& rules, const Q& r1, const Q& r2, Verdict v, const std::string& name) {
+    TypedClaim c;
+    c.type = ClaimType::Verdict;
+    c.rho1 = r1;
+    c.rho2 = r2;
+    c.verdict = v == Verdict::Separated  ? Claimed::Separated
+                : v == Verdict::Touching ? Claimed::Touching
+                                         : Claimed::Overlapping;
+    Json entries = Json::array();
+    judge_claim(rules, c, 0, name, &entries);
+    return rules.certificate(std::move(entries));
+}
+// classify: each pair's doubles at their exact values (finite and > 0), one verdict a pair.
+template <class F>
+std::vector<Verdict> classify_each(const std::vector<double>& rho1, const std::vector<double>& rho2,
+                                   const std::string& source, F verdict) {
+    std::vector<Verdict> out;
+    out.reserve(rho1.size());
+    for (size_t k = 0; k < rho1.size(); ++k) {
+        if (!(std::isfinite(rho1[k]) && rho1[k] > 0 && std::isfinite(rho2[k]) && rho2[k] > 0))
+            throw InputError(source + ": pair " + std::to_string(k) + ": scalings must be finite and > 0");
+        out.push_back(verdict(exact_from_double(rho1[k]), exact_from_double(rho2[k])));
+    }
+    return out;
+}
+[[noreturn]] void refuse_rounded_plane(const std::string& name) {
+    throw InputError(name +
+                     ": objects with a radius reach past their hulls by ρ·r·|n| along a normal n, which is "
+                     "not rational: certify-fp's separating_plane judges planes on them");
+}
+
 // Two convex objects with radii (not both 0): verdicts and claims at any pair, from the hulls'
 // proved measures (rounded.hpp). Their touching set is curved: no curve, partition, region or
 // golden data yet, each refused in one line.
@@ -180,35 +213,14 @@ class RoundedEngine final : public SceneEngine {
     std::string verdict_document(const Q& r1, const Q& r2) override {
         points();
         RoundedRules rules(exact_, points_, Tolerance{});
-        TypedClaim c;
-        c.type = ClaimType::Verdict;
-        c.rho1 = r1;
-        c.rho2 = r2;
-        const Verdict v = verdict(r1, r2);
-        c.verdict = v == Verdict::Separated  ? Claimed::Separated
-                    : v == Verdict::Touching ? Claimed::Touching
-                                             : Claimed::Overlapping;
-        Json entries = Json::array();
-        judge_claim(rules, c, 0, name_, &entries);
-        return rules.certificate(std::move(entries));
+        return one_verdict_document(rules, r1, r2, verdict(r1, r2), name_);
     }
     std::string partition_document() override { throw InputError(refused("the partition")); }
     std::vector<Verdict> classify(const std::vector<double>& rho1, const std::vector<double>& rho2, unsigned,
                                   const std::string& source, std::optional<StageCounts>*) override {
-        std::vector<Verdict> out;
-        out.reserve(rho1.size());
-        for (size_t k = 0; k < rho1.size(); ++k) {
-            if (!(std::isfinite(rho1[k]) && rho1[k] > 0 && std::isfinite(rho2[k]) && rho2[k] > 0))
-                throw InputError(source + ": pair " + std::to_string(k) + ": scalings must be finite and > 0");
-            out.push_back(verdict(exact_from_double(rho1[k]), exact_from_double(rho2[k])));
-        }
-        return out;
+        return classify_each(rho1, rho2, source, [this](const Q& r1, const Q& r2) { return verdict(r1, r2); });
     }
-    std::pair<Q, Q> plane_extents(const Vec3q&, const Q&, const Q&) override {
-        throw InputError(name_ +
-                         ": objects with a radius reach past their hulls by ρ·r·|n| along a normal n, which is "
-                         "not rational: certify-fp's separating_plane judges planes on them");
-    }
+    std::pair<Q, Q> plane_extents(const Vec3q&, const Q&, const Q&) override { refuse_rounded_plane(name_); }
     std::unique_ptr<ClaimRules> rules(const Tolerance& tolerance) override {
         points();
         return std::make_unique<RoundedRules>(exact_, points_, tolerance);
@@ -257,35 +269,14 @@ class RoundedPartsEngine final : public SceneEngine {
     std::string verdict_document(const Q& r1, const Q& r2) override {
         judge();
         RoundedPartsRules rules(judge_, Tolerance{});
-        TypedClaim c;
-        c.type = ClaimType::Verdict;
-        c.rho1 = r1;
-        c.rho2 = r2;
-        const Verdict v = verdict(r1, r2);
-        c.verdict = v == Verdict::Separated  ? Claimed::Separated
-                    : v == Verdict::Touching ? Claimed::Touching
-                                             : Claimed::Overlapping;
-        Json entries = Json::array();
-        judge_claim(rules, c, 0, name_, &entries);
-        return rules.certificate(std::move(entries));
+        return one_verdict_document(rules, r1, r2, verdict(r1, r2), name_);
     }
     std::string partition_document() override { throw InputError(refused("the partition")); }
     std::vector<Verdict> classify(const std::vector<double>& rho1, const std::vector<double>& rho2, unsigned,
                                   const std::string& source, std::optional<StageCounts>*) override {
-        std::vector<Verdict> out;
-        out.reserve(rho1.size());
-        for (size_t k = 0; k < rho1.size(); ++k) {
-            if (!(std::isfinite(rho1[k]) && rho1[k] > 0 && std::isfinite(rho2[k]) && rho2[k] > 0))
-                throw InputError(source + ": pair " + std::to_string(k) + ": scalings must be finite and > 0");
-            out.push_back(verdict(exact_from_double(rho1[k]), exact_from_double(rho2[k])));
-        }
-        return out;
+        return classify_each(rho1, rho2, source, [this](const Q& r1, const Q& r2) { return verdict(r1, r2); });
     }
-    std::pair<Q, Q> plane_extents(const Vec3q&, const Q&, const Q&) override {
-        throw InputError(name_ +
-                         ": objects with a radius reach past their hulls by ρ·r·|n| along a normal n, which is "
-                         "not rational: certify-fp's separating_plane judges planes on them");
-    }
+    std::pair<Q, Q> plane_extents(const Vec3q&, const Q&, const Q&) override { refuse_rounded_plane(name_); }
     std::unique_ptr<ClaimRules> rules(const Tolerance& tolerance) override {
         judge();
         return std::make_unique<RoundedPartsRules>(judge_, tolerance);
